@@ -1,0 +1,170 @@
+# links1: one Makefile builds the firmware (three arithmetics), the host tools
+# and the tests.  Each directory adds its sources in its own module.mk; this
+# file holds the toolchains, the flags and the rules that turn lists into files.
+#
+#   make            firmware variants + host tools
+#   make run        render the default scene (installs missing packages first)
+#   make test       every test; last line "N passed, N failed"
+#   make bench      benchmarks (speed lives here, never in tests)
+#   make V=1        show full command lines
+#   make LIBC=newlib  link the firmware against newlib instead of picolibc
+
+.DEFAULT_GOAL := all
+SHELL := /bin/bash
+
+V ?= 0
+Q := $(if $(filter 1,$(V)),,@)
+# $(call say,TAG,target): one quiet line per step unless V=1
+say = $(if $(Q),@printf '  %-6s %s\n' '$(1)' '$(2)';)
+
+B := build
+LIBC ?= picolibc
+# Firmware goes to build/ with picolibc, build/newlib/ with newlib.
+FWB := $(B)$(if $(filter newlib,$(LIBC)),/newlib)
+
+# ---------------------------------------------------------------- host side
+HOST_CC ?= cc
+HOST_WARN := -Wall -Wextra -Werror
+HOST_CFLAGS := -std=gnu11 -O2 -g $(HOST_WARN) -I. -MMD -MP -ffp-contract=off
+SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+HOST_LIBS := -lm
+
+# Arithmetic selection for shared code (fixed/ and render/):
+#   double: host reference; float: hardware or software float; fixed: fixed point.
+ARITH_DEF_double := -DLINKS1_NUM_DOUBLE
+ARITH_DEF_float  := -DLINKS1_NUM_FLOAT
+ARITH_DEF_fixed  := -DLINKS1_NUM_FIXED
+
+# ------------------------------------------------------------- firmware side
+ARM_CC := arm-none-eabi-gcc
+ARM_CPU := -mcpu=cortex-a15 -mthumb
+FW_FLOAT_ABI_float := -mfpu=vfpv4 -mfloat-abi=hard
+FW_FLOAT_ABI_soft  := -mfloat-abi=soft
+FW_FLOAT_ABI_fixed := -mfloat-abi=soft
+FW_ARITH_float := float
+FW_ARITH_soft  := float
+FW_ARITH_fixed := fixed
+FW_VARIANTS := float soft fixed
+
+ifeq ($(LIBC),picolibc)
+LIBC_SPECS := --specs=picolibc.specs
+else ifeq ($(LIBC),newlib)
+LIBC_SPECS := --specs=nano.specs
+else
+$(error LIBC must be picolibc or newlib, not '$(LIBC)')
+endif
+
+FW_CFLAGS := -std=gnu11 -O2 -g $(HOST_WARN) -I. -MMD -MP $(ARM_CPU) \
+	-ffreestanding -ffunction-sections -fdata-sections -ffp-contract=off \
+	-fno-common -DLINKS1_FIRMWARE $(LIBC_SPECS)
+FW_LDFLAGS := -nostartfiles -Wl,--gc-sections -Wl,--no-warn-rwx-segments \
+	-Tlinker/virt-memory.ld -Tlinker/sections.ld $(LIBC_SPECS)
+FW_LIBS := -lc -lgcc
+
+# ----------------------------------------------------------- module lists
+# FW_SRCS:     firmware-only sources (.c and .S): boot, kernel, drivers, roles
+# SHARED_SRCS: sources built for both firmware and host, once per arithmetic
+#              (proto/, fixed/, render/): they know nothing of cores or drivers
+# HOST_TOOLS:  host programs; for each NAME, NAME_SRCS lists its own sources
+#              and NAME_ARITH the arithmetic of the shared code it links
+# HOST_TESTS:  host unit tests, built with ASan+UBSan, same NAME_SRCS/NAME_ARITH
+# BOARD_TESTS: scripts under tests/board run by the test runner
+FW_SRCS :=
+SHARED_SRCS :=
+HOST_TOOLS :=
+HOST_TESTS :=
+BOARD_TESTS :=
+BENCHES :=
+
+include $(wildcard */module.mk */*/module.mk)
+
+# ------------------------------------------------------------ firmware rules
+# $(1) = variant (float|soft|fixed)
+define fw_variant
+FW_OBJS_$(1) := $$(patsubst %,$(B)/fw-$(1)-$(LIBC)/%.o,$$(FW_SRCS) $$(SHARED_SRCS))
+FW_ELF_$(1) := $(FWB)/links1-$(1).elf
+
+$(B)/fw-$(1)-$(LIBC)/%.c.o: %.c
+	$$(call say,CC,$$@)
+	$(Q)mkdir -p $$(@D)
+	$(Q)$(ARM_CC) $(FW_CFLAGS) $(FW_FLOAT_ABI_$(1)) $(ARITH_DEF_$(FW_ARITH_$(1))) \
+		-DLINKS1_VARIANT='"$(1)"' -c $$< -o $$@
+
+$(B)/fw-$(1)-$(LIBC)/%.S.o: %.S
+	$$(call say,AS,$$@)
+	$(Q)mkdir -p $$(@D)
+	$(Q)$(ARM_CC) $(FW_CFLAGS) $(FW_FLOAT_ABI_$(1)) $(ARITH_DEF_$(FW_ARITH_$(1))) -c $$< -o $$@
+
+$$(FW_ELF_$(1)): $$(FW_OBJS_$(1)) linker/sections.ld linker/virt-memory.ld
+	$$(call say,LD,$$@)
+	$(Q)$(ARM_CC) $(FW_CFLAGS) $(FW_FLOAT_ABI_$(1)) $(FW_LDFLAGS) \
+		$$(FW_OBJS_$(1)) $(FW_LIBS) -Wl,-Map=$$@.map -o $$@
+
+-include $$(FW_OBJS_$(1):.o=.d)
+FIRMWARE += $$(FW_ELF_$(1))
+endef
+
+FIRMWARE :=
+ifneq ($(strip $(FW_SRCS)),)
+$(foreach v,$(FW_VARIANTS),$(eval $(call fw_variant,$(v))))
+endif
+
+# --------------------------------------------------------------- host rules
+# Shared and host sources compile once per (arithmetic, plain|san) into
+# build/host-<arith>[-san]/.
+define host_objdir
+$(B)/host-$(1)$(2)/%.c.o: %.c
+	$$(call say,HOSTCC,$$@)
+	$(Q)mkdir -p $$(@D)
+	$(Q)$(HOST_CC) $(HOST_CFLAGS) $(ARITH_DEF_$(1)) $(if $(2),$(SAN_FLAGS)) -c $$< -o $$@
+endef
+$(foreach a,double float fixed,$(eval $(call host_objdir,$(a),))$(eval $(call host_objdir,$(a),-san)))
+
+# $(1) = program name, $(2) = output dir suffix ('' or -san), $(3) = output path
+define host_prog
+$(1)_OBJS := $$(patsubst %,$(B)/host-$$($(1)_ARITH)$(2)/%.o,$$($(1)_SRCS) $$(SHARED_SRCS))
+$(3): $$($(1)_OBJS)
+	$$(call say,HOSTLD,$$@)
+	$(Q)mkdir -p $$(@D)
+	$(Q)$(HOST_CC) $(HOST_CFLAGS) $(if $(2),$(SAN_FLAGS)) $$($(1)_OBJS) $$($(1)_LIBS) $(HOST_LIBS) -o $$@
+-include $$($(1)_OBJS:.o=.d)
+endef
+$(foreach t,$(HOST_TOOLS),$(eval $(call host_prog,$(t),,$(B)/$(t))))
+$(foreach t,$(HOST_TESTS),$(eval $(call host_prog,$(t),-san,$(B)/tests/$(t))))
+
+HOST_TOOL_BINS := $(addprefix $(B)/,$(HOST_TOOLS))
+HOST_TEST_BINS := $(addprefix $(B)/tests/,$(HOST_TESTS))
+
+# ---------------------------------------------------------------- targets
+.PHONY: all firmware host-tools deps run test test-host test-board bench clean
+
+all: firmware host-tools
+firmware: $(FIRMWARE)
+host-tools: $(HOST_TOOL_BINS)
+
+deps:
+	$(Q)bash host-tools/install-deps.sh
+
+run: deps
+	$(Q)$(MAKE) --no-print-directory all
+	$(Q)bash host-tools/make-run.sh
+
+test: deps
+	$(Q)$(MAKE) --no-print-directory all $(HOST_TEST_BINS)
+	$(Q)HOST_TESTS="$(HOST_TEST_BINS)" BOARD_TESTS="$(BOARD_TESTS)" FW_DIR=$(FWB) \
+		bash tests/run.sh
+
+# Host tests only: no emulator needed.
+test-host: $(HOST_TEST_BINS)
+	$(Q)HOST_TESTS="$(HOST_TEST_BINS)" BOARD_TESTS= bash tests/run.sh
+
+# Board tests only, against the already built firmware.
+test-board: all
+	$(Q)HOST_TESTS= BOARD_TESTS="$(BOARD_TESTS)" FW_DIR=$(FWB) bash tests/run.sh
+
+bench: deps
+	$(Q)$(MAKE) --no-print-directory all
+	$(Q)for b in $(BENCHES); do bash $$b || exit 1; done
+
+clean:
+	rm -rf $(B)

@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# install-deps.sh: makes sure the Debian packages links1 needs are present.
+# As root it installs what is missing with apt-get; otherwise it prints the
+# exact command to run and fails.
+set -eu
+need_pkgs=(make gcc libc6-dev libpng-dev gcc-arm-none-eabi picolibc-arm-none-eabi
+           libnewlib-arm-none-eabi qemu-system-arm povray python3)
+missing=()
+for p in "${need_pkgs[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" ||
+        missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+if [ "$(id -u)" -ne 0 ]; then
+    echo "links1: missing Debian packages: ${missing[*]}" >&2
+    echo "links1: install them with:" >&2
+    echo "    sudo apt-get update && sudo apt-get install -y ${missing[*]}" >&2
+    exit 1
+fi
+echo "links1: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq
+apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null

@@ -1,0 +1,131 @@
+/* hostlink.c: frame encoder, streaming decoder and payload encodings of the
+ * host link (see hostlink.h).  Used by the firmware and by the host tool. */
+#include "proto/hostlink.h"
+
+#include <string.h>
+
+#include "proto/crc32.h"
+#include "proto/wire.h"
+
+size_t link_frame_encode(uint8_t *out, size_t cap, uint8_t type, uint8_t flags,
+                         uint16_t seq, const void *payload, size_t len)
+{
+    size_t total = LINK_HEADER_SIZE + len + LINK_CRC_SIZE;
+    if (len > LINK_MAX_PAYLOAD || cap < total)
+        return 0;
+    out[0] = LINK_SYNC0;
+    out[1] = LINK_SYNC1;
+    out[2] = type;
+    out[3] = flags;
+    wire_put_u16(out + 4, seq);
+    wire_put_u16(out + 6, (uint16_t)len);
+    if (len)
+        memcpy(out + LINK_HEADER_SIZE, payload, len);
+    wire_put_u32(out + LINK_HEADER_SIZE + len,
+                 crc32(out + 2, LINK_HEADER_SIZE - 2 + len));
+    return total;
+}
+
+void link_decoder_init(struct link_decoder *d)
+{
+    memset(d, 0, sizeof *d);
+}
+
+/* Drops the first byte of the partial frame and rescans the rest for sync,
+ * so a corrupted header never hides a good frame that starts inside it. */
+static void decoder_resync(struct link_decoder *d)
+{
+    size_t i;
+    for (i = 1; i < d->have; i++) {
+        if (d->buf[i] == LINK_SYNC0 && (i + 1 == d->have || d->buf[i + 1] == LINK_SYNC1))
+            break;
+    }
+    d->stats.junk_bytes += (uint32_t)i;
+    memmove(d->buf, d->buf + i, d->have - i);
+    d->have -= i;
+}
+
+int link_decoder_push(struct link_decoder *d, uint8_t b, struct link_frame *f)
+{
+    d->buf[d->have++] = b;
+    for (;;) {
+        if (d->have >= 1 && d->buf[0] != LINK_SYNC0) {
+            decoder_resync(d);
+            continue;
+        }
+        if (d->have >= 2 && d->buf[1] != LINK_SYNC1) {
+            decoder_resync(d);
+            continue;
+        }
+        if (d->have < LINK_HEADER_SIZE)
+            return 0;
+        uint16_t len = wire_get_u16(d->buf + 6);
+        if (len > LINK_MAX_PAYLOAD) {
+            d->stats.bad_length++;
+            decoder_resync(d);
+            continue;
+        }
+        size_t total = LINK_HEADER_SIZE + (size_t)len + LINK_CRC_SIZE;
+        if (d->have < total)
+            return 0;
+        uint32_t want = wire_get_u32(d->buf + LINK_HEADER_SIZE + len);
+        if (crc32(d->buf + 2, LINK_HEADER_SIZE - 2 + (size_t)len) != want) {
+            d->stats.crc_errors++;
+            decoder_resync(d);
+            continue;
+        }
+        /* A good frame: deliver it.  The buffer is reused from the next push. */
+        f->type = d->buf[2];
+        f->flags = d->buf[3];
+        f->seq = wire_get_u16(d->buf + 4);
+        f->length = len;
+        f->payload = d->buf + LINK_HEADER_SIZE;
+        if (d->seq_known && f->seq != d->next_seq)
+            d->stats.seq_gaps++;
+        d->seq_known = 1;
+        d->next_seq = (uint16_t)(f->seq + 1);
+        d->stats.frames++;
+        d->have = 0;
+        return 1;
+    }
+}
+
+void link_hello_put(uint8_t *p, const struct link_hello *h)
+{
+    wire_put_u16(p, h->core);
+    wire_put_u8(p + 2, h->role);
+    wire_put_u8(p + 3, h->variant);
+    wire_put_u32(p + 4, h->mpidr);
+    wire_put_u16(p + 8, h->ncores);
+    wire_put_u16(p + 10, h->reserved);
+}
+
+void link_hello_get(const uint8_t *p, struct link_hello *h)
+{
+    h->core = wire_get_u16(p);
+    h->role = wire_get_u8(p + 2);
+    h->variant = wire_get_u8(p + 3);
+    h->mpidr = wire_get_u32(p + 4);
+    h->ncores = wire_get_u16(p + 8);
+    h->reserved = wire_get_u16(p + 10);
+}
+
+void link_fault_put(uint8_t *p, const struct link_fault *f)
+{
+    wire_put_u16(p, f->core);
+    wire_put_u8(p + 2, f->role);
+    wire_put_u8(p + 3, f->kind);
+    wire_put_u32(p + 4, f->addr);
+    wire_put_u32(p + 8, f->pc);
+    wire_put_u32(p + 12, f->status);
+}
+
+void link_fault_get(const uint8_t *p, struct link_fault *f)
+{
+    f->core = wire_get_u16(p);
+    f->role = wire_get_u8(p + 2);
+    f->kind = wire_get_u8(p + 3);
+    f->addr = wire_get_u32(p + 4);
+    f->pc = wire_get_u32(p + 8);
+    f->status = wire_get_u32(p + 12);
+}

@@ -1,0 +1,138 @@
+/* hostlink.h: the framed protocol between the host tool and the board over
+ * the PL011 UART.  One definition for both sides.
+ *
+ * Every byte on the line belongs to a frame, so log text and data share the
+ * one line without ambiguity:
+ *
+ *   offset  size  field
+ *   0       2     sync: 'L' '1'
+ *   2       1     type    (enum link_type)
+ *   3       1     flags   (LINK_FLAG_*)
+ *   4       2     seq     sender's frame counter, +1 per frame, wraps at 2^16
+ *   6       2     length  payload bytes, 0..LINK_MAX_PAYLOAD
+ *   8       len   payload (fields little-endian, see proto/wire.h)
+ *   8+len   4     crc32 of bytes 2 .. 8+len-1 (type through payload)
+ *
+ * Each direction numbers its own frames.  A receiver that sees a gap or a
+ * repeat in seq, or a bad CRC, counts it and reports it (struct link_stats);
+ * the emulated line itself never drops bytes, so any such count is a bug.
+ * After a bad frame the decoder resynchronises on the next 'L' '1'.
+ */
+#ifndef LINKS1_PROTO_HOSTLINK_H
+#define LINKS1_PROTO_HOSTLINK_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define LINK_SYNC0 'L'
+#define LINK_SYNC1 '1'
+#define LINK_HEADER_SIZE 8
+#define LINK_CRC_SIZE 4
+#define LINK_MAX_PAYLOAD 2048
+#define LINK_MAX_FRAME (LINK_HEADER_SIZE + LINK_MAX_PAYLOAD + LINK_CRC_SIZE)
+
+enum link_type {
+    LINK_LOG = 1,    /* board -> host: log text, UTF-8, no terminator */
+    LINK_HELLO = 2,  /* board -> host: a unit computer reports in (link_hello) */
+    LINK_FAULT = 3,  /* board -> host: a core faulted and halted (link_fault) */
+    LINK_CMD = 4,    /* host -> board: a command (u16 enum link_cmd, then args) */
+    LINK_RESULT = 5, /* board -> host: a command's result (u16 cmd, i16 status, text) */
+    LINK_DATA = 6,   /* either way: a chunk of a bulk transfer */
+    LINK_ACK = 7,    /* either way: u16 seq of the last DATA frame taken in */
+};
+
+/* LINK_CMD payload: u16 enum link_cmd, then that command's arguments
+ * (little-endian).  The board answers every command with one LINK_RESULT:
+ * u16 cmd, i16 status (0 = success, negative = error), then the command's
+ * result fields or, on error, text naming the problem.  Later issues add the
+ * render commands after these. */
+enum link_cmd {
+    CMD_STATUS = 1,      /* -> u16 ncores, u16 units reported in */
+    CMD_LINE_PING = 2,   /* ping-pong over every serial line -> u32 lines ok */
+    CMD_IMSU_TEST = 3,   /* swap both ways + broadcast, checksummed -> u32 blocks ok */
+    CMD_LINE_STRESS = 4, /* u32 MiB through the inter-unit lines -> u64 bytes, u32 errors */
+    CMD_LINK_SINK = 5,   /* host sends DATA frames; board checks -> u64 bytes, u32 crc */
+    CMD_LINK_SOURCE = 6, /* u32 bytes: board sends DATA frames of a known pattern */
+    CMD_FAULT_INJECT = 7,/* u16 core, u8 kind: that core executes the fault */
+    CMD_SHUTDOWN = 8,    /* board powers off (PSCI SYSTEM_OFF) */
+};
+
+enum link_flag {
+    LINK_FLAG_LAST = 1u << 0, /* DATA: the last chunk of a transfer */
+};
+
+/* Roles of the unit computers, by core number: 0 DM, 1 RC, 2.. NCs. */
+enum unit_role { ROLE_DM = 0, ROLE_RC = 1, ROLE_NC = 2 };
+
+/* LINK_HELLO payload */
+#define LINK_HELLO_SIZE 12
+struct link_hello {
+    uint16_t core;    /* core number, 0 .. ncores-1 */
+    uint8_t role;     /* enum unit_role */
+    uint8_t variant;  /* arithmetic: 0 float, 1 soft, 2 fixed */
+    uint32_t mpidr;   /* the core's MPIDR */
+    uint16_t ncores;  /* cores on the board */
+    uint16_t reserved;
+};
+
+/* LINK_FAULT payload: fixed part, then the text of what happened. */
+#define LINK_FAULT_FIXED_SIZE 16
+enum link_fault_kind {
+    FAULT_UNDEF = 1,          /* undefined instruction */
+    FAULT_PREFETCH_ABORT = 2, /* instruction fetch abort */
+    FAULT_DATA_ABORT = 3,     /* data abort */
+    FAULT_PANIC = 4,          /* software panic (kernel or driver check) */
+};
+struct link_fault {
+    uint16_t core;
+    uint8_t role;
+    uint8_t kind;   /* enum link_fault_kind */
+    uint32_t addr;  /* faulting instruction (undef/prefetch) or data address */
+    uint32_t pc;    /* pc at the fault */
+    uint32_t status;/* DFSR/IFSR, or 0 */
+};
+
+/* ---- framing ---- */
+
+/* Writes one frame into out (capacity cap); returns its size, or 0 if the
+ * payload is too long or out too small. */
+size_t link_frame_encode(uint8_t *out, size_t cap, uint8_t type, uint8_t flags,
+                         uint16_t seq, const void *payload, size_t len);
+
+/* Streaming decoder: push bytes one at a time as they arrive. */
+struct link_stats {
+    uint32_t frames;    /* good frames delivered */
+    uint32_t crc_errors;/* frames dropped for a bad CRC */
+    uint32_t bad_length;/* headers with length > LINK_MAX_PAYLOAD */
+    uint32_t junk_bytes;/* bytes skipped while looking for sync */
+    uint32_t seq_gaps;  /* frames whose seq was not last+1 */
+};
+
+struct link_decoder {
+    uint8_t buf[LINK_MAX_FRAME]; /* the frame being assembled */
+    size_t have;                 /* bytes of it so far */
+    int seq_known;               /* a frame has been seen, next_seq is valid */
+    uint16_t next_seq;           /* seq expected next */
+    struct link_stats stats;
+};
+
+/* A decoded frame; payload points into the decoder and is valid until the
+ * next push. */
+struct link_frame {
+    uint8_t type, flags;
+    uint16_t seq, length;
+    const uint8_t *payload;
+};
+
+void link_decoder_init(struct link_decoder *d);
+
+/* Returns 1 and fills *f when b completes a good frame, else 0. */
+int link_decoder_push(struct link_decoder *d, uint8_t b, struct link_frame *f);
+
+/* ---- payload encodings ---- */
+void link_hello_put(uint8_t *p, const struct link_hello *h);
+void link_hello_get(const uint8_t *p, struct link_hello *h);
+void link_fault_put(uint8_t *p, const struct link_fault *f);
+void link_fault_get(const uint8_t *p, struct link_fault *f);
+
+#endif

@@ -1,0 +1,45 @@
+/* Host tests of the CRC-32 used by frames and compiled scenes. */
+#include <string.h>
+
+#include "proto/crc32.h"
+#include "tests/check.h"
+
+static void crc32_check_value(void)
+{
+    CHECK_EQ_INT(crc32("123456789", 9), 0xCBF43926u);
+    CHECK_EQ_INT(crc32("", 0), 0);
+    CHECK_EQ_INT(crc32("a", 1), 0xE8B7BE43u);
+}
+
+static void crc32_incremental_matches_one_shot(void)
+{
+    const char *s = "The quick brown fox jumps over the lazy dog";
+    size_t n = strlen(s);
+    uint32_t whole = crc32(s, n);
+    CHECK_EQ_INT(whole, 0x414FA339u);
+    for (size_t cut = 0; cut <= n; cut++)
+        CHECK_EQ_INT(crc32_update(crc32(s, cut), s + cut, n - cut), whole);
+}
+
+static void crc32_detects_single_bit_flips(void)
+{
+    unsigned char buf[64];
+    for (int i = 0; i < 64; i++)
+        buf[i] = (unsigned char)(i * 37 + 11);
+    uint32_t ref = crc32(buf, sizeof buf);
+    int missed = 0;
+    for (int bit = 0; bit < 64 * 8; bit++) {
+        buf[bit / 8] ^= (unsigned char)(1u << (bit % 8));
+        missed += crc32(buf, sizeof buf) == ref;
+        buf[bit / 8] ^= (unsigned char)(1u << (bit % 8));
+    }
+    CHECK_EQ_INT(missed, 0);
+}
+
+int main(void)
+{
+    RUN(crc32_check_value);
+    RUN(crc32_incremental_matches_one_shot);
+    RUN(crc32_detects_single_bit_flips);
+    return check_exit();
+}
