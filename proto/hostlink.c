@@ -47,6 +47,14 @@ static void decoder_resync(struct link_decoder *d)
 
 int link_decoder_push(struct link_decoder *d, uint8_t b, struct link_frame *f)
 {
+    if (d->delivered) {
+        /* The last frame's payload had to stay valid until this push; now drop
+         * it, keeping any bytes after it (a frame recovered by a resync can be
+         * followed by bytes of the next one). */
+        memmove(d->buf, d->buf + d->delivered, d->have - d->delivered);
+        d->have -= d->delivered;
+        d->delivered = 0;
+    }
     d->buf[d->have++] = b;
     for (;;) {
         if (d->have >= 1 && d->buf[0] != LINK_SYNC0) {
@@ -85,7 +93,7 @@ int link_decoder_push(struct link_decoder *d, uint8_t b, struct link_frame *f)
         d->seq_known = 1;
         d->next_seq = (uint16_t)(f->seq + 1);
         d->stats.frames++;
-        d->have = 0;
+        d->delivered = total;
         return 1;
     }
 }

@@ -61,6 +61,19 @@ enum link_flag {
     LINK_FLAG_LAST = 1u << 0, /* DATA: the last chunk of a transfer */
 };
 
+/* LINK_RESULT status values (i16).  Every error result carries text naming
+ * the problem after the status. */
+enum link_status {
+    LINK_OK = 0,
+    LINK_ERR_UNKNOWN_CMD = -1, /* command number not in enum link_cmd */
+    LINK_ERR_BAD_ARGS = -2,    /* payload too short/long or an argument out of range */
+    LINK_ERR_BAD_FRAME = -3,   /* a frame was dropped (bad CRC, bad length, seq gap);
+                                * sent with cmd 0 as soon as the board sees it */
+    LINK_ERR_TIMEOUT = -4,     /* a unit computer did not answer in time */
+    LINK_ERR_CHECK = -5,       /* data arrived but a checksum/sequence check failed */
+    LINK_ERR_PROTOCOL = -6,    /* unexpected frame during a transfer */
+};
+
 /* Roles of the unit computers, by core number: 0 DM, 1 RC, 2.. NCs. */
 enum unit_role { ROLE_DM = 0, ROLE_RC = 1, ROLE_NC = 2 };
 
@@ -92,6 +105,37 @@ struct link_fault {
     uint32_t status;/* DFSR/IFSR, or 0 */
 };
 
+/* ---- bulk transfers and the link tests ----
+ *
+ * A transfer is a run of LINK_DATA frames, each carrying 1..LINK_DATA_CHUNK
+ * payload bytes, the last one flagged LINK_FLAG_LAST.  The receiver answers
+ * every DATA frame it has taken in with a LINK_ACK whose payload is that
+ * frame's u16 seq.  The sender keeps at most LINK_DATA_WINDOW DATA frames
+ * unacknowledged: an ACK for seq s acknowledges every DATA frame up to s, so
+ * the receiver never has to hold more than the window, and a slow receiver
+ * slows the sender instead of losing bytes.
+ *
+ * CMD_LINK_SINK (no arguments): the host then sends one transfer of the
+ * pattern below; after its LAST frame the board answers LINK_RESULT with
+ * u64 bytes received, u32 crc32 of them.
+ * CMD_LINK_SOURCE (u32 bytes): the board sends one transfer of that many
+ * pattern bytes, then LINK_RESULT with u64 bytes sent, u32 crc32 of them.
+ */
+#define LINK_DATA_CHUNK 1024
+#define LINK_DATA_WINDOW 4
+#define LINK_ACK_SIZE 2
+#define LINK_CMD_FIXED_SIZE 2    /* u16 enum link_cmd */
+#define LINK_RESULT_FIXED_SIZE 4 /* u16 cmd, i16 status */
+
+/* Byte i of the link tests' known pattern.  A hash of the offset rather than
+ * a counter, so a chunk that is lost, repeated or delivered out of order
+ * changes the bytes (and their CRC), not only the count. */
+static inline uint8_t link_pattern_byte(uint32_t i)
+{
+    uint32_t x = i * 2654435761u;
+    return (uint8_t)((x >> 24) ^ i);
+}
+
 /* ---- framing ---- */
 
 /* Writes one frame into out (capacity cap); returns its size, or 0 if the
@@ -111,6 +155,9 @@ struct link_stats {
 struct link_decoder {
     uint8_t buf[LINK_MAX_FRAME]; /* the frame being assembled */
     size_t have;                 /* bytes of it so far */
+    size_t delivered;            /* bytes of buf that made the frame last delivered;
+                                    bytes after them (found while resynchronising)
+                                    are kept for the next push */
     int seq_known;               /* a frame has been seen, next_seq is valid */
     uint16_t next_seq;           /* seq expected next */
     struct link_stats stats;

@@ -1,0 +1,83 @@
+/* boot.c: the first C code.  Core 0 brings up the shared pieces, counts
+ * the cores, and wakes the others with PSCI CPU_ON; every core then sets up
+ * its own state and starts its unit computer's program. */
+#include <stdint.h>
+
+#include "drivers/imsu/imsu.h"
+#include "drivers/serial/line.h"
+#include "drivers/serial/uart.h"
+#include "kernel/arch.h"
+#include "kernel/cpu.h"
+#include "kernel/gic.h"
+#include "kernel/kmem.h"
+#include "kernel/klog.h"
+#include "kernel/memlayout.h"
+#include "kernel/panic.h"
+#include "kernel/param.h"
+#include "roles/unit.h"
+
+void boot_main(void) __attribute__((noreturn));
+void boot_secondary(void) __attribute__((noreturn));
+
+/* boot/start.S */
+int psci_call(uint32_t fn, uint32_t a1, uint32_t a2, uint32_t a3);
+void secondary_entry(void);
+
+/* The linker script and param.h must agree on what C sizes arrays by. */
+static void boot_check_layout(void)
+{
+    if (LINKER_VALUE(LINKS1_MAX_CORES) != MAX_CORES)
+        panic("layout: linker MAX_CORES %u != param.h MAX_CORES %u",
+              (unsigned)LINKER_VALUE(LINKS1_MAX_CORES), (unsigned)MAX_CORES);
+    if (LINKER_VALUE(LINKS1_LINE_RING) != LINE_RING_SIZE)
+        panic("layout: linker line ring %u != param.h LINE_RING_SIZE %u",
+              (unsigned)LINKER_VALUE(LINKS1_LINE_RING), (unsigned)LINE_RING_SIZE);
+}
+
+/* Cores on the board: PSCI AFFINITY_INFO answers INVALID_PARAMETERS for an
+ * MPIDR that does not exist, so the count is known before any core wakes
+ * and every core reads the same board_ncores. */
+static uint32_t boot_count_cores(void)
+{
+    uint32_t n = 1;
+    while (n < MAX_CORES &&
+           psci_call(PSCI_AFFINITY_INFO, cpu_mpidr_of_core(n), 0, 0) >= 0)
+        n++;
+    return n;
+}
+
+void boot_main(void)
+{
+    cpu_init(0);
+    boot_check_layout();
+    gic_dist_init();   // interrupt distributor
+    gic_cpu_init();    // this core's redistributor and CPU interface
+    uart_init();       // host link receive ring and interrupt
+    uint32_t n = boot_count_cores();
+    if (n < MIN_CORES)
+        panic("the board has %u core(s); links1 needs at least %u (DM, RC, one NC)",
+              (unsigned)n, (unsigned)MIN_CORES);
+    board_ncores = n;
+    kmem_init(0, n);   // the DM's private memory
+    line_init_all(n);  // serial line rings DM<->RC, RC<->NCs
+    imsu_init_all(n);  // IMSU block pair and broadcast block
+    /* Everything above is in memory before any other core can look. */
+    arch_dsb();
+    for (uint32_t k = 1; k < n; k++) {
+        int r = psci_call(PSCI_CPU_ON, cpu_mpidr_of_core(k),
+                          (uint32_t)(uintptr_t)secondary_entry, k);
+        if (r != PSCI_RET_SUCCESS)
+            klog("PSCI CPU_ON of core %u (mpidr 0x%x) failed: %d", (unsigned)k,
+                 (unsigned)cpu_mpidr_of_core(k), r);
+    }
+    unit_start();
+}
+
+void boot_secondary(void)
+{
+    uint32_t core = cpu_core_from_mpidr(arch_read_mpidr());
+    cpu_init(core);
+    kmem_init(core, board_ncores); // this unit computer's private memory
+    gic_cpu_init();                // redistributor and CPU interface
+    unit_start();
+}

@@ -1,0 +1,22 @@
+/* hostlink_tx.h: frames from the board to the host (proto/hostlink.h).
+ *
+ * Any core may send; one spinlock keeps each frame whole on the line and
+ * numbers the frames in the order they go out. */
+#ifndef LINKS1_DRIVERS_SERIAL_HOSTLINK_TX_H
+#define LINKS1_DRIVERS_SERIAL_HOSTLINK_TX_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* Sends one frame; returns its seq.  Panics if len > LINK_MAX_PAYLOAD. */
+uint16_t hostlink_send(uint8_t type, uint8_t flags, const void *payload, size_t len);
+/* LINK_RESULT: u16 cmd, i16 status, then n bytes of fields. */
+void hostlink_result(uint16_t cmd, int16_t status, const void *fields, size_t n);
+/* LINK_RESULT with a negative status and text naming the problem. */
+void hostlink_error(uint16_t cmd, int16_t status, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+/* For the fault path: if this core faulted in the middle of a frame, drop
+ * the lock (the host's decoder resynchronises on the next frame). */
+void hostlink_unlock_for_fault(void);
+
+#endif

@@ -1,0 +1,58 @@
+/* line.h: the inter-unit serial lines of LINKS-1: point-to-point message
+ * channels DM<->RC and RC<->each NC.
+ *
+ * A line is two single-producer single-consumer rings in shared memory
+ * (carved by linker/virt-memory.ld), one per direction, plus a doorbell:
+ * the SGI_DOORBELL interrupt to the other end.  To avoid an interrupt per
+ * message, a receiver that finds its ring empty (or a sender that finds it
+ * full) raises a "waiting" flag before it sleeps, and the other end rings
+ * the doorbell only when it sees the flag.  Both sides put a full barrier
+ * between their ring update and their look at the other's flag, so one of
+ * the two always sees the other: no wake-up is lost.
+ *
+ * Every message carries a per-direction sequence number (set by the line)
+ * and a crc32 of its payload (drivers/serial/linemsg.h); the receiver checks
+ * both, so a lost, repeated, reordered or damaged message is reported, not
+ * passed on silently.
+ *
+ * Calls name the other end by core number; a core may only use lines it
+ * is an end of.  Each direction has one sender task and one receiver task. */
+#ifndef LINKS1_DRIVERS_SERIAL_LINE_H
+#define LINKS1_DRIVERS_SERIAL_LINE_H
+
+#include <stdint.h>
+
+#include "drivers/serial/linemsg.h"
+
+enum line_status {
+    LINE_OK = 0,
+    LINE_ERR_NO_LINE = -1, /* no line between this core and that one */
+    LINE_ERR_FULL = -2,    /* try_send: no room now */
+    LINE_ERR_EMPTY = -3,   /* try_recv: nothing there */
+    LINE_ERR_TIMEOUT = -4, /* blocking call: deadline passed */
+    LINE_ERR_TOO_LONG = -5,/* payload longer than LINE_MAX_PAYLOAD */
+    LINE_ERR_CHECK = -6,   /* received, but its crc32 did not match */
+    LINE_ERR_SEQ = -7,     /* received, but not the sequence number expected */
+};
+
+/* Core 0, before waking the others: sets up every line of the board. */
+void line_init_all(uint32_t ncores);
+/* Number of lines on the board (ncores - 1). */
+uint32_t line_count(void);
+
+int line_try_send(uint32_t peer, struct line_msg *m);
+int line_try_recv(uint32_t peer, struct line_msg *m);
+/* Blocking forms: wait (sleeping) until done or deadline (ticks, 0 = none). */
+int line_send(uint32_t peer, struct line_msg *m, uint64_t deadline);
+int line_recv(uint32_t peer, struct line_msg *m, uint64_t deadline);
+
+/* For a task serving several lines at once: raise the waiting flag for a
+ * direction, then tell whether it is ready already (a message to take, or
+ * room for a message of len payload bytes).  If none is ready, task_wait()
+ * with a mark taken before the calls sleeps until a doorbell. */
+int line_recv_ready_arm(uint32_t peer);
+int line_send_ready_arm(uint32_t peer, uint32_t len);
+
+const char *line_strerror(int status);
+
+#endif

@@ -1,0 +1,104 @@
+/* uart.c: PL011 driver (see uart.h). */
+#include "drivers/serial/uart.h"
+
+#include "kernel/arch.h"
+#include "kernel/gic.h"
+#include "kernel/memlayout.h"
+#include "kernel/param.h"
+#include "kernel/ringbuf.h"
+#include "kernel/spinlock.h"
+
+/* PL011 registers and bits. */
+#define UART_DR(b) ((b) + 0x000u)
+#define UART_FR(b) ((b) + 0x018u)
+#define UART_FR_BUSY (1u << 3)
+#define UART_FR_RXFE (1u << 4)
+#define UART_FR_TXFF (1u << 5)
+#define UART_LCR_H(b) ((b) + 0x02Cu)
+#define UART_LCR_H_FEN (1u << 4)
+#define UART_LCR_H_WLEN_8 (3u << 5)
+#define UART_CR(b) ((b) + 0x030u)
+#define UART_CR_UARTEN (1u << 0)
+#define UART_CR_TXE (1u << 8)
+#define UART_CR_RXE (1u << 9)
+#define UART_IMSC(b) ((b) + 0x038u)
+#define UART_ICR(b) ((b) + 0x044u)
+#define UART_INT_RX (1u << 4)
+#define UART_INT_RT (1u << 6) /* receive timeout: FIFO not empty, line idle */
+#define UART_INT_ALL 0x7FFu
+#define UART_DR_DATA_MASK 0xFFu
+
+/* The UART's own core: its interrupt goes there and only it reads. */
+#define UART_RX_CORE 0
+
+static uint8_t uart_rx_storage[UART_RX_RING_SIZE];
+static struct ringbuf uart_rx_ring;
+static volatile int uart_rx_masked;  /* 1 while receive is paused (ring full) */
+static uint32_t uart_rx_pause_count; /* times it was paused */
+
+void uart_init(void)
+{
+    uintptr_t b = UART0_BASE;
+    ringbuf_init(&uart_rx_ring, uart_rx_storage, sizeof uart_rx_storage);
+    mmio_write32(UART_CR(b), 0);
+    mmio_write32(UART_ICR(b), UART_INT_ALL);
+    mmio_write32(UART_LCR_H(b), UART_LCR_H_FEN | UART_LCR_H_WLEN_8);
+    mmio_write32(UART_IMSC(b), UART_INT_RX | UART_INT_RT);
+    mmio_write32(UART_CR(b), UART_CR_UARTEN | UART_CR_TXE | UART_CR_RXE);
+    gic_route_spi(UART0_INTID, UART_RX_CORE);
+}
+
+void uart_irq(void)
+{
+    uintptr_t b = UART0_BASE;
+    while (!(mmio_read32(UART_FR(b)) & UART_FR_RXFE)) {
+        if (ringbuf_free(&uart_rx_ring) == 0) {
+            /* Full: leave the rest in the FIFO (and QEMU's chardev) and
+             * stop interrupting until the reader makes room. */
+            mmio_write32(UART_IMSC(b), 0);
+            uart_rx_masked = 1;
+            uart_rx_pause_count++;
+            break;
+        }
+        ringbuf_put_byte(&uart_rx_ring,
+                         (uint8_t)(mmio_read32(UART_DR(b)) & UART_DR_DATA_MASK));
+    }
+    mmio_write32(UART_ICR(b), UART_INT_RX | UART_INT_RT);
+}
+
+uint32_t uart_rx_read(uint8_t *out, uint32_t max)
+{
+    uint32_t n = ringbuf_get_some(&uart_rx_ring, out, max);
+    if (n && uart_rx_masked) {
+        /* The handler runs on this core: masking interrupts orders our
+         * unmask against it. */
+        irq_push_off();
+        uart_rx_masked = 0;
+        mmio_write32(UART_IMSC(UART0_BASE), UART_INT_RX | UART_INT_RT);
+        irq_pop_off();
+    }
+    return n;
+}
+
+uint32_t uart_rx_pending(void)
+{
+    return ringbuf_used(&uart_rx_ring);
+}
+
+uint32_t uart_rx_pauses(void)
+{
+    return uart_rx_pause_count;
+}
+
+void uart_putc(uint8_t c)
+{
+    while (mmio_read32(UART_FR(UART0_BASE)) & UART_FR_TXFF)
+        ;
+    mmio_write32(UART_DR(UART0_BASE), c);
+}
+
+void uart_tx_drain(void)
+{
+    while (mmio_read32(UART_FR(UART0_BASE)) & UART_FR_BUSY)
+        ;
+}

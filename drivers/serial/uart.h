@@ -1,0 +1,30 @@
+/* uart.h: the PL011 UART that carries the host link.
+ *
+ * Receive is interrupt driven: the handler (on core 0, where the UART's
+ * interrupt is routed) moves bytes from the 16-byte FIFO into a ring of
+ * UART_RX_RING_SIZE bytes.  When the ring is full the handler masks the
+ * receive interrupt instead of dropping bytes: the FIFO then fills, QEMU
+ * stops taking bytes from the chardev and the host's writes wait.  Taking
+ * bytes out of the ring unmasks it again.  Transmit is polled; callers
+ * serialise whole frames (drivers/serial/hostlink_tx.h). */
+#ifndef LINKS1_DRIVERS_SERIAL_UART_H
+#define LINKS1_DRIVERS_SERIAL_UART_H
+
+#include <stdint.h>
+
+/* Core 0, once: line settings, FIFOs, receive interrupt routed to core 0. */
+void uart_init(void);
+/* The UART's interrupt (kernel/irq.c). */
+void uart_irq(void);
+/* Takes up to max received bytes; returns how many (0 if none yet). */
+uint32_t uart_rx_read(uint8_t *out, uint32_t max);
+/* Bytes waiting in the receive ring. */
+uint32_t uart_rx_pending(void);
+/* Times the ring filled and receive was paused (statistics). */
+uint32_t uart_rx_pauses(void);
+/* Sends one byte (waits while the transmit FIFO is full). */
+void uart_putc(uint8_t c);
+/* Waits until everything written has left the transmitter. */
+void uart_tx_drain(void);
+
+#endif

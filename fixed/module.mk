@@ -1,0 +1,11 @@
+# fixed/: the renderer's number type num_t (double, float or fixed point).
+SHARED_SRCS += fixed/num.c
+
+# Number tests, once per arithmetic.
+HOST_TESTS += test_num_double test_num_float test_num_fixed
+test_num_double_SRCS := tests/host/test_num.c
+test_num_double_ARITH := double
+test_num_float_SRCS := tests/host/test_num.c
+test_num_float_ARITH := float
+test_num_fixed_SRCS := tests/host/test_num.c
+test_num_fixed_ARITH := fixed

@@ -1,0 +1,136 @@
+/* fixed/num.c: the num_t operations too long to inline (fixed point), and
+ * num_len3 for every build. */
+#include "fixed/num.h"
+
+#if defined(LINKS1_NUM_FIXED)
+
+/* floor(sqrt(n)) for any 64-bit n, one result bit per step: no division,
+ * no floating point, the same steps for every input. */
+static uint64_t num__isqrt64(uint64_t n)
+{
+    uint64_t root = 0;
+    uint64_t bit = (uint64_t)1 << 62;
+    while (bit > n)
+        bit >>= 2;
+    while (bit) {
+        if (n >= root + bit) {
+            n -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
+        }
+        bit >>= 2;
+    }
+    return root;
+}
+
+/* sqrt of a value given with 2*NUM_FRAC_BITS fraction bits, rounded to
+ * nearest: r = floor(sqrt(n)); round up when n > r^2 + r, i.e. when
+ * sqrt(n) > r + 1/2. */
+static num_t num__sqrt_wide(uint64_t n)
+{
+    uint64_t r = num__isqrt64(n);
+    if (n - r * r > r)
+        r++;
+    if (r > (uint64_t)NUM_RAW_MAX)
+        return NUM_RAW_SAT;
+    return (num_t)r;
+}
+
+num_t num_div(num_t a, num_t b)
+{
+    if (num_is_sat(a) || num_is_sat(b) || b == 0)
+        return num__sticky(a, b);
+    int negative = (a < 0) != (b < 0);
+    /* magnitudes in 64 bits: |INT32_MIN| is never an input, but the
+     * unsigned form keeps even that defined */
+    uint64_t ua = (uint64_t)(a < 0 ? -(int64_t)a : a) << NUM_FRAC_BITS;
+    uint64_t ub = (uint64_t)(b < 0 ? -(int64_t)b : b);
+    uint64_t q = (ua + ub / 2) / ub;
+    if (q > (uint64_t)NUM_RAW_MAX)
+        return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
+    return negative ? -(num_t)q : (num_t)q;
+}
+
+num_t num_sqrt(num_t a)
+{
+    if (a == NUM_RAW_SAT)
+        return NUM_RAW_SAT;
+    if (a <= 0) /* includes -marker: square roots of small negative
+                   rounding residue are meant to be 0 */
+        return a == -NUM_RAW_SAT ? NUM_RAW_SAT : 0;
+    return num__sqrt_wide((uint64_t)a << NUM_FRAC_BITS);
+}
+
+num_t num_dot3(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz)
+{
+    if (num_is_sat(ax) || num_is_sat(ay) || num_is_sat(az) ||
+        num_is_sat(bx) || num_is_sat(by) || num_is_sat(bz))
+        return NUM_RAW_SAT;
+    /* Each product is below 2^62; dropping 2 of its 32 fraction bits keeps
+     * the sum of three below 2^63, far below the final rounding. */
+    int64_t s = ((int64_t)ax * bx) / 4 + ((int64_t)ay * by) / 4 +
+                ((int64_t)az * bz) / 4;
+    return num__from_wide(num__round_shift(s, NUM_FRAC_BITS - 2));
+}
+
+num_t num_len3(num_t x, num_t y, num_t z)
+{
+    if (num_is_sat(x) || num_is_sat(y) || num_is_sat(z))
+        return NUM_RAW_SAT;
+    /* three squares below 2^62 each: the unsigned sum cannot wrap */
+    uint64_t s = (uint64_t)((int64_t)x * x) + (uint64_t)((int64_t)y * y) +
+                 (uint64_t)((int64_t)z * z);
+    return num__sqrt_wide(s);
+}
+
+/* a^n for |a| <= 1 with Q30 intermediates: every value stays within
+ * [-1, 1], so a Q30 x Q30 product (< 2^60) fits an int64. */
+num_t num_pow_int_fixed_unit(num_t a, uint32_t n)
+{
+    const int wide = 30;
+    int64_t base = (int64_t)a * ((int64_t)1 << (wide - NUM_FRAC_BITS));
+    int64_t r = (int64_t)1 << wide;
+    while (n) {
+        if (n & 1u)
+            r = num__round_shift(r * base, wide);
+        n >>= 1;
+        if (n)
+            base = num__round_shift(base * base, wide);
+    }
+    return (num_t)num__round_shift(r, wide - NUM_FRAC_BITS);
+}
+
+num_t num_from_f32_bits(uint32_t bits)
+{
+    int negative = (bits >> 31) != 0;
+    int32_t exponent = (int32_t)((bits >> 23) & 0xffu);
+    uint32_t mantissa = bits & 0x7fffffu;
+    if (exponent == 0xff) /* infinity or NaN */
+        return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
+    if (exponent == 0) /* zero or subnormal: far below one step */
+        return 0;
+    mantissa |= 0x800000u;
+    /* value = mantissa * 2^(exponent - 150); raw = value * 2^NUM_FRAC_BITS */
+    int32_t shift = exponent - 150 + NUM_FRAC_BITS;
+    uint64_t raw;
+    if (shift >= 0) {
+        if (shift > 31)
+            return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
+        raw = (uint64_t)mantissa << shift;
+    } else {
+        if (-shift > 40)
+            return 0;
+        /* round to nearest, halves away from zero */
+        raw = ((uint64_t)mantissa + ((uint64_t)1 << (-shift - 1))) >> -shift;
+    }
+    if (raw > (uint64_t)NUM_RAW_MAX)
+        return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
+    return negative ? -(num_t)raw : (num_t)raw;
+}
+
+#else
+
+num_t num_len3(num_t x, num_t y, num_t z) { return num_sqrt(num_dot3(x, y, z, x, y, z)); }
+
+#endif

@@ -1,0 +1,287 @@
+/* fixed/num.h: the renderer's one number type, num_t, and every operation on it.
+ *
+ * The Makefile passes exactly one of
+ *   LINKS1_NUM_DOUBLE  num_t = double (the host reference)
+ *   LINKS1_NUM_FLOAT   num_t = float  (VFP on the board, or soft float)
+ *   LINKS1_NUM_FIXED   num_t = int32_t fixed point, pure integer code
+ * and the same renderer source builds in each.  The renderer never uses a
+ * C operator on num_t: always num_add(), num_mul(), num_lt()...
+ *
+ * Bit-for-bit equality between host and board (same arithmetic): the IEEE
+ * builds use only + - * / and sqrt (all correctly rounded), compiled with
+ * -ffp-contract=off so no fused multiply-add sneaks in; the fixed build is
+ * integer code whose results do not depend on the compiler.
+ *
+ * Fixed format (docs/fixed-point.md says why): signed Q15.16 in an int32_t,
+ * value = raw / 2^NUM_FRAC_BITS.  Range +-32767.99998, step 1/65536.
+ *
+ * Overflow, fixed build: every operation that can overflow SATURATES to a
+ * reserved marker, +NUM_RAW_SAT or -NUM_RAW_SAT (= +-INT32_MAX).  Those two
+ * raw values are never produced by an in-range result (valid results lie in
+ * [-(INT32_MAX-1), INT32_MAX-1]; INT32_MIN is never produced), so a marker
+ * cannot be confused with a real value, and the marker is sticky: any
+ * operation given a marker returns a marker.  num_is_sat() tells; the
+ * renderer checks it where results are used (hit distances, pixel colours)
+ * and counts pixels with lost precision.  In the IEEE builds the markers are
+ * infinities and NaNs, and num_is_sat() is "not finite".
+ * Underflow (a result smaller than one step) rounds to 0 silently.
+ */
+#ifndef LINKS1_FIXED_NUM_H
+#define LINKS1_FIXED_NUM_H
+
+#include <stdint.h>
+#include <string.h>
+
+#if defined(LINKS1_NUM_DOUBLE) + defined(LINKS1_NUM_FLOAT) + defined(LINKS1_NUM_FIXED) != 1
+#error "define exactly one of LINKS1_NUM_DOUBLE, LINKS1_NUM_FLOAT, LINKS1_NUM_FIXED"
+#endif
+
+/* Scene coordinates (world and eye) must stay within +-NUM_COORD_LIMIT in
+ * every build so the fixed build keeps room for sums and products of a few
+ * coordinates (lengths and dot products use 64-bit intermediates). */
+#define NUM_COORD_LIMIT 1000
+
+#if defined(LINKS1_NUM_FIXED)
+/* ------------------------------------------------------------ fixed point */
+typedef int32_t num_t;
+
+#define NUM_FRAC_BITS 16
+#define NUM_ONE_RAW ((int32_t)1 << NUM_FRAC_BITS)
+#define NUM_RAW_SAT INT32_MAX         /* saturation marker magnitude */
+#define NUM_RAW_MAX (INT32_MAX - 1)   /* largest valid magnitude */
+#define NUM_NAME "fixed"
+
+/* Literal constant: rounded at compile time, no floating point at run time. */
+#define NUM_C(x)                                                              \
+    ((num_t)((x) >= 0 ? (x) * (double)NUM_ONE_RAW + 0.5                       \
+                      : (x) * (double)NUM_ONE_RAW - 0.5))
+#define NUM_EPSILON ((num_t)1) /* one step */
+
+static inline int num_is_sat(num_t a) { return a == NUM_RAW_SAT || a == -NUM_RAW_SAT; }
+
+/* Clamp a wide result into range; out of range becomes the marker. */
+static inline num_t num__from_wide(int64_t r)
+{
+    if (r > NUM_RAW_MAX)
+        return NUM_RAW_SAT;
+    if (r < -NUM_RAW_MAX)
+        return -NUM_RAW_SAT;
+    return (num_t)r;
+}
+
+/* Marker result for an operation given a marker; sign is that of the product
+ * of the signs (0 counts as +). */
+static inline num_t num__sticky(num_t a, num_t b)
+{
+    return ((a < 0) != (b < 0)) ? -NUM_RAW_SAT : NUM_RAW_SAT;
+}
+
+/* saturates */
+static inline num_t num_add(num_t a, num_t b)
+{
+    if (num_is_sat(a) || num_is_sat(b))
+        return num_is_sat(a) ? a : b;
+    return num__from_wide((int64_t)a + b);
+}
+
+/* saturates */
+static inline num_t num_sub(num_t a, num_t b)
+{
+    if (num_is_sat(a) || num_is_sat(b))
+        return num_is_sat(a) ? a : -b;
+    return num__from_wide((int64_t)a - b);
+}
+
+/* exact (the marker negates to the other marker) */
+static inline num_t num_neg(num_t a) { return -a; }
+static inline num_t num_abs(num_t a) { return a < 0 ? -a : a; }
+
+/* Round-to-nearest (halves away from zero) shift of a 64-bit product. */
+static inline int64_t num__round_shift(int64_t p, int bits)
+{
+    int64_t half = (int64_t)1 << (bits - 1);
+    if (p >= 0)
+        return (p + half) >> bits;
+    return -((-p + half) >> bits);
+}
+
+/* saturates; rounds to nearest */
+static inline num_t num_mul(num_t a, num_t b)
+{
+    if (num_is_sat(a) || num_is_sat(b))
+        return num__sticky(a, b);
+    return num__from_wide(num__round_shift((int64_t)a * b, NUM_FRAC_BITS));
+}
+
+num_t num_div(num_t a, num_t b);  /* saturates; x/0 is a marker; rounds */
+num_t num_sqrt(num_t a);          /* exact rounding; a < 0 gives 0 */
+num_t num_dot3(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz);
+                                  /* one rounding at the end; saturates */
+num_t num_from_f32_bits(uint32_t bits); /* integer decode; saturates;
+                                           NaN/inf give a marker */
+
+/* saturates */
+static inline num_t num_from_int(int32_t i)
+{
+    return num__from_wide((int64_t)i * NUM_ONE_RAW);
+}
+
+/* floor(a) as an integer; markers give +-INT32_MAX >> NUM_FRAC_BITS */
+static inline int32_t num_floor_int(num_t a) { return a >> NUM_FRAC_BITS; }
+
+/* a * i for a small integer i; saturates */
+static inline num_t num_mul_int(num_t a, int32_t i)
+{
+    if (num_is_sat(a))
+        return num__sticky(a, i);
+    return num__from_wide((int64_t)a * i);
+}
+
+static inline int num_lt(num_t a, num_t b) { return a < b; }
+static inline int num_le(num_t a, num_t b) { return a <= b; }
+static inline int num_gt(num_t a, num_t b) { return a > b; }
+static inline int num_ge(num_t a, num_t b) { return a >= b; }
+static inline int num_eq(num_t a, num_t b) { return a == b; }
+
+/* 8-bit channel: clamp to [0,1], round(a * 255). */
+static inline uint8_t num_to_u8(num_t a)
+{
+    if (a <= 0)
+        return 0;
+    if (a >= NUM_ONE_RAW)
+        return 255;
+    return (uint8_t)(((int64_t)a * 255 + NUM_ONE_RAW / 2) >> NUM_FRAC_BITS);
+}
+
+/* For tests and host tools only. */
+static inline double num_to_double(num_t a) { return (double)a / NUM_ONE_RAW; }
+static inline num_t num_from_double(double d)
+{
+    double r = d * NUM_ONE_RAW;
+    if (!(r < (double)NUM_RAW_MAX + 0.5)) /* also catches NaN */
+        return NUM_RAW_SAT;
+    if (r <= -(double)NUM_RAW_MAX - 0.5)
+        return -NUM_RAW_SAT;
+    return (num_t)(r >= 0 ? r + 0.5 : r - 0.5);
+}
+
+#else
+/* ------------------------------------------------------------ IEEE builds */
+#if defined(LINKS1_NUM_DOUBLE)
+typedef double num_t;
+#define NUM_NAME "double"
+#define NUM_C(x) ((num_t)(x))
+#define NUM_EPSILON ((num_t)1e-12)
+static inline num_t num_sqrt(num_t a) { return a > 0 ? __builtin_sqrt(a) : 0; }
+#else
+typedef float num_t;
+#define NUM_NAME "float"
+#define NUM_C(x) ((num_t)(x))
+#define NUM_EPSILON ((num_t)1e-6f)
+static inline num_t num_sqrt(num_t a) { return a > 0 ? __builtin_sqrtf(a) : 0; }
+#endif
+
+/* Not finite: an overflow, a division by zero or an invalid operation. */
+static inline int num_is_sat(num_t a) { return !(a - a == 0); }
+
+static inline num_t num_add(num_t a, num_t b) { return a + b; }
+static inline num_t num_sub(num_t a, num_t b) { return a - b; }
+static inline num_t num_neg(num_t a) { return -a; }
+static inline num_t num_abs(num_t a) { return a < 0 ? -a : a; }
+static inline num_t num_mul(num_t a, num_t b) { return a * b; }
+static inline num_t num_div(num_t a, num_t b) { return a / b; }
+static inline num_t num_mul_int(num_t a, int32_t i) { return a * (num_t)i; }
+
+/* Left to right, no fused multiply-add: the same bits on host and board. */
+static inline num_t num_dot3(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz)
+{
+    num_t s = ax * bx;
+    s = s + ay * by;
+    return s + az * bz;
+}
+
+static inline num_t num_from_int(int32_t i) { return (num_t)i; }
+static inline num_t num_from_f32_bits(uint32_t bits)
+{
+    float f;
+    memcpy(&f, &bits, sizeof f);
+    return (num_t)f;
+}
+
+/* floor as an integer; callers keep |a| < 2^31 */
+static inline int32_t num_floor_int(num_t a)
+{
+    int32_t i = (int32_t)a;
+    return ((num_t)i > a) ? i - 1 : i;
+}
+
+static inline int num_lt(num_t a, num_t b) { return a < b; }
+static inline int num_le(num_t a, num_t b) { return a <= b; }
+static inline int num_gt(num_t a, num_t b) { return a > b; }
+static inline int num_ge(num_t a, num_t b) { return a >= b; }
+static inline int num_eq(num_t a, num_t b) { return a == b; }
+
+static inline uint8_t num_to_u8(num_t a)
+{
+    if (!(a > 0)) /* also NaN */
+        return 0;
+    if (a >= 1)
+        return 255;
+    return (uint8_t)(int32_t)(a * (num_t)255 + (num_t)0.5);
+}
+
+static inline double num_to_double(num_t a) { return (double)a; }
+static inline num_t num_from_double(double d) { return (num_t)d; }
+#endif
+
+/* ----------------------------------------------- built from the above */
+#define NUM_ZERO NUM_C(0)
+#define NUM_ONE NUM_C(1)
+#define NUM_HALF NUM_C(0.5)
+
+static inline num_t num_from_float(float f)
+{
+    uint32_t bits;
+    memcpy(&bits, &f, sizeof bits);
+    return num_from_f32_bits(bits);
+}
+
+/* 1/a; saturates (fixed) or infinite (IEEE) for a == 0 */
+static inline num_t num_recip(num_t a) { return num_div(NUM_ONE, a); }
+static inline num_t num_min(num_t a, num_t b) { return num_lt(b, a) ? b : a; }
+static inline num_t num_max(num_t a, num_t b) { return num_gt(b, a) ? b : a; }
+static inline num_t num_clamp01(num_t a) { return num_min(num_max(a, NUM_ZERO), NUM_ONE); }
+static inline num_t num_lerp(num_t a, num_t b, num_t t)
+{
+    return num_add(a, num_mul(num_sub(b, a), t));
+}
+
+/* a^n by repeated squaring, n >= 0 (0^0 = 1): the highlight's cos^n with no
+ * libm pow().  Same operation order in every build.  The fixed build keeps
+ * 30 fraction bits between the steps when |a| <= 1 (the cos^n case), so
+ * the rounding of each squaring does not pile up over large n. */
+#if defined(LINKS1_NUM_FIXED)
+num_t num_pow_int_fixed_unit(num_t a, uint32_t n);
+#endif
+static inline num_t num_pow_int(num_t a, uint32_t n)
+{
+#if defined(LINKS1_NUM_FIXED)
+    if (a <= NUM_ONE_RAW && a >= -NUM_ONE_RAW)
+        return num_pow_int_fixed_unit(a, n);
+#endif
+    num_t r = NUM_ONE;
+    while (n) {
+        if (n & 1u)
+            r = num_mul(r, a);
+        n >>= 1;
+        if (n)
+            a = num_mul(a, a);
+    }
+    return r;
+}
+
+/* |(x, y, z)|: fixed uses one 64-bit sum of squares, so it does not overflow
+ * before the length itself does. */
+num_t num_len3(num_t x, num_t y, num_t z);
+
+#endif

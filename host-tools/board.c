@@ -1,0 +1,557 @@
+/* board.c: start QEMU, frame I/O with the board, stop QEMU (see board.h). */
+#include "host-tools/board.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <poll.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/prctl.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#include "proto/wire.h"
+
+long long board_now_ms(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (long long)ts.tv_sec * 1000 + ts.tv_nsec / 1000000;
+}
+
+const char *board_role_name(int core)
+{
+    return core == ROLE_DM ? "DM" : core == ROLE_RC ? "RC" : "NC";
+}
+
+/* ------------------------------------------------------------ QEMU process */
+
+/* In the child: QEMU must not outlive the tool, whatever ends the tool. */
+static void qemu_child_exec(struct board *b, int qemu_fd)
+{
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    fcntl(qemu_fd, F_SETFD, 0); /* keep QEMU's end open across exec */
+
+    char smp[32], mem[32], chardev[64], plugin[4200];
+    snprintf(smp, sizeof smp, "%d", b->opts.ncores);
+    snprintf(mem, sizeof mem, "%dM", b->opts.ram_mb);
+    snprintf(chardev, sizeof chardev, "socket,id=link,fd=%d", qemu_fd);
+    const char *qemu = getenv("QEMU");
+    if (!qemu || !*qemu)
+        qemu = "qemu-system-arm";
+    const char *argv[40];
+    int n = 0;
+    argv[n++] = qemu;
+    argv[n++] = "-M";
+    argv[n++] = "virt,gic-version=3";
+    argv[n++] = "-cpu";
+    argv[n++] = "cortex-a15";
+    argv[n++] = "-smp";
+    argv[n++] = smp;
+    argv[n++] = "-m";
+    argv[n++] = mem;
+    argv[n++] = "-display";
+    argv[n++] = "none";
+    argv[n++] = "-nodefaults";
+    argv[n++] = "-no-reboot"; /* a reset request ends the run instead of looping */
+    argv[n++] = "-chardev";
+    argv[n++] = chardev;
+    argv[n++] = "-serial";
+    argv[n++] = "chardev:link";
+    argv[n++] = "-kernel";
+    argv[n++] = b->firmware;
+    if (b->opts.insn_count_out) {
+        const char *so = getenv("LINKS1_INSN_PLUGIN");
+        char self[PATH_MAX];
+        if (!so || !*so) {
+            ssize_t len = readlink("/proc/self/exe", self, sizeof self - 1);
+            self[len > 0 ? len : 0] = 0;
+            char *slash = strrchr(self, '/');
+            if (slash)
+                *slash = 0;
+            snprintf(plugin, sizeof plugin, "%s/insn-count.so,out=%s", self,
+                     b->opts.insn_count_out);
+        } else {
+            snprintf(plugin, sizeof plugin, "%s,out=%s", so, b->opts.insn_count_out);
+        }
+        argv[n++] = "-plugin";
+        argv[n++] = plugin;
+    }
+    argv[n] = NULL;
+    execvp(qemu, (char *const *)argv);
+    fprintf(stderr, "links1: cannot run %s: %s (install qemu-system-arm, or set $QEMU)\n",
+            qemu, strerror(errno));
+    _exit(127);
+}
+
+int board_start(struct board *b, const struct board_opts *o)
+{
+    memset(b, 0, sizeof *b);
+    b->opts = *o;
+    b->fd = -1;
+    link_decoder_init(&b->dec);
+    if (board_find_firmware(o, b->firmware, sizeof b->firmware) < 0)
+        return -1;
+    if (o->ncores < BOARD_MIN_CORES || o->ncores > BOARD_MAX_CORES) {
+        fprintf(stderr, "links1: %d cores: the board needs %d..%d\n", o->ncores,
+                BOARD_MIN_CORES, BOARD_MAX_CORES);
+        return -1;
+    }
+    /* A write to a socket QEMU has closed must fail with EPIPE, not kill us. */
+    signal(SIGPIPE, SIG_IGN);
+    int sv[2];
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) < 0) {
+        fprintf(stderr, "links1: socketpair: %s\n", strerror(errno));
+        return -1;
+    }
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid < 0) {
+        fprintf(stderr, "links1: fork: %s\n", strerror(errno));
+        close(sv[0]);
+        close(sv[1]);
+        return -1;
+    }
+    if (pid == 0)
+        qemu_child_exec(b, sv[1]);
+    close(sv[1]);
+    b->qemu_pid = pid;
+    b->fd = sv[0];
+    fcntl(b->fd, F_SETFL, fcntl(b->fd, F_GETFL) | O_NONBLOCK);
+    if (!o->quiet)
+        printf("links1: booting %s on %d cores (DM, RC, %d NCs), QEMU pid %d\n",
+               b->firmware, o->ncores, o->ncores - 2, (int)pid);
+    return 0;
+}
+
+/* Waits up to timeout_ms for QEMU to exit; returns 1 once reaped. */
+static int qemu_reap(struct board *b, int timeout_ms)
+{
+    long long end = board_now_ms() + timeout_ms;
+    while (b->qemu_pid) {
+        pid_t r = waitpid(b->qemu_pid, &b->qemu_status, WNOHANG);
+        if (r == b->qemu_pid || (r < 0 && errno == ECHILD)) {
+            b->qemu_pid = 0;
+            break;
+        }
+        if (board_now_ms() >= end)
+            return 0;
+        usleep(10000);
+    }
+    return 1;
+}
+
+static void qemu_describe_exit(const struct board *b, char *out, size_t cap)
+{
+    int st = b->qemu_status;
+    if (WIFEXITED(st))
+        snprintf(out, cap, "QEMU exited with status %d", WEXITSTATUS(st));
+    else if (WIFSIGNALED(st))
+        snprintf(out, cap, "QEMU was killed by signal %d", WTERMSIG(st));
+    else
+        snprintf(out, cap, "QEMU stopped (wait status 0x%x)", st);
+}
+
+/* ------------------------------------------------------- incoming frames */
+
+static void print_log_text(const uint8_t *p, size_t n)
+{
+    /* One output line per board line, so board text never runs into ours. */
+    size_t start = 0;
+    for (size_t i = 0; i <= n; i++) {
+        if (i == n || p[i] == '\n') {
+            if (i > start || i < n)
+                printf("board: %.*s\n", (int)(i - start), (const char *)p + start);
+            start = i + 1;
+        }
+    }
+}
+
+static void handle_hello(struct board *b, const struct link_frame *f)
+{
+    struct link_hello h;
+    if (f->length < LINK_HELLO_SIZE) {
+        fprintf(stderr, "links1: HELLO frame of %u bytes, want %d\n", f->length,
+                LINK_HELLO_SIZE);
+        b->hello_errors++;
+        return;
+    }
+    link_hello_get(f->payload, &h);
+    int expect_role = h.core >= ROLE_NC ? ROLE_NC : h.core;
+    const char *problem = NULL;
+    char why[160];
+    if (h.core >= b->opts.ncores) {
+        snprintf(why, sizeof why, "core number out of range (board has %d cores)",
+                 b->opts.ncores);
+        problem = why;
+    } else if (h.role != expect_role) {
+        snprintf(why, sizeof why, "role %u, want %d (%s)", h.role, expect_role,
+                 board_role_name(h.core));
+        problem = why;
+    } else if (h.ncores != b->opts.ncores) {
+        snprintf(why, sizeof why, "says the board has %u cores, QEMU was given %d",
+                 h.ncores, b->opts.ncores);
+        problem = why;
+    } else if (h.variant != board_arith_code(b->opts.arith)) {
+        snprintf(why, sizeof why, "runs arithmetic variant %u, want %d (%s)", h.variant,
+                 board_arith_code(b->opts.arith), b->opts.arith);
+        problem = why;
+    } else if (b->reported[h.core]) {
+        problem = "reported in twice";
+    }
+    if (problem) {
+        fprintf(stderr, "links1: bad report-in from core %u: %s\n", h.core, problem);
+        b->hello_errors++;
+        return;
+    }
+    b->reported[h.core] = 1;
+    b->reported_count++;
+    if (!b->opts.quiet)
+        printf("core %u %s reported in (mpidr 0x%08x)\n", h.core, board_role_name(h.core),
+               h.mpidr);
+}
+
+static const char *fault_kind_name(unsigned kind)
+{
+    switch (kind) {
+    case FAULT_UNDEF: return "undefined instruction";
+    case FAULT_PREFETCH_ABORT: return "prefetch abort";
+    case FAULT_DATA_ABORT: return "data abort";
+    case FAULT_PANIC: return "panic";
+    default: return "unknown fault kind";
+    }
+}
+
+static void handle_fault(struct board *b, const struct link_frame *f)
+{
+    struct link_fault ft;
+    if (f->length < LINK_FAULT_FIXED_SIZE) {
+        fprintf(stderr, "links1: FAULT frame of %u bytes, want at least %d\n", f->length,
+                LINK_FAULT_FIXED_SIZE);
+        memset(&ft, 0, sizeof ft);
+        ft.core = UINT16_MAX;
+    } else {
+        link_fault_get(f->payload, &ft);
+    }
+    if (b->nfaults < BOARD_MAX_FAULTS)
+        b->faults[b->nfaults] = ft;
+    b->nfaults++;
+    int textlen = f->length > LINK_FAULT_FIXED_SIZE ? f->length - LINK_FAULT_FIXED_SIZE : 0;
+    printf("core %u %s FAULT: %s at 0x%08x (pc 0x%08x, status 0x%08x)%s%.*s\n", ft.core,
+           ft.role == ROLE_DM ? "DM" : ft.role == ROLE_RC ? "RC" : "NC",
+           fault_kind_name(ft.kind), ft.addr, ft.pc, ft.status, textlen ? ": " : "", textlen,
+           (const char *)f->payload + LINK_FAULT_FIXED_SIZE);
+}
+
+/* Returns 0, or -1 when the queue is full (the board broke the window). */
+static int handle_frame(struct board *b, const struct link_frame *f)
+{
+    switch (f->type) {
+    case LINK_LOG:
+        if (!b->opts.quiet)
+            print_log_text(f->payload, f->length);
+        return 0;
+    case LINK_HELLO:
+        handle_hello(b, f);
+        return 0;
+    case LINK_FAULT:
+        handle_fault(b, f);
+        return 0;
+    default:
+        break;
+    }
+    if (b->queued >= BOARD_FRAME_QUEUE) {
+        fprintf(stderr, "links1: %d frames from the board wait unread (frame type %u "
+                "arrived): more than a transfer window, the board is not waiting for ACKs\n",
+                BOARD_FRAME_QUEUE, f->type);
+        return -1;
+    }
+    struct board_frame *q = &b->queue[b->queued++];
+    q->type = f->type;
+    q->flags = f->flags;
+    q->seq = f->seq;
+    q->length = f->length;
+    memcpy(q->payload, f->payload, f->length);
+    return 0;
+}
+
+/* The socket reached end-of-file or failed: QEMU is gone. */
+static int board_lost(struct board *b, const char *why)
+{
+    char desc[96];
+    if (b->fd >= 0) {
+        close(b->fd);
+        b->fd = -1;
+    }
+    if (b->stopping)
+        return -1; /* the shutdown we asked for */
+    if (qemu_reap(b, BOARD_TERM_WAIT_MS))
+        qemu_describe_exit(b, desc, sizeof desc);
+    else
+        snprintf(desc, sizeof desc, "QEMU (pid %d) is still running", (int)b->qemu_pid);
+    fprintf(stderr, "links1: the board stopped talking (%s): %s\n", why, desc);
+    return -1;
+}
+
+/* Reads what is available now and handles every completed frame. */
+static int board_read_available(struct board *b)
+{
+    uint8_t buf[BOARD_READ_CHUNK];
+    for (;;) {
+        ssize_t n = read(b->fd, buf, sizeof buf);
+        if (n == 0)
+            return board_lost(b, "end of the UART socket");
+        if (n < 0) {
+            if (errno == EINTR)
+                continue;
+            if (errno == EAGAIN || errno == EWOULDBLOCK)
+                return 0;
+            return board_lost(b, strerror(errno));
+        }
+        for (ssize_t i = 0; i < n; i++) {
+            struct link_frame f;
+            if (link_decoder_push(&b->dec, buf[i], &f) && handle_frame(b, &f) < 0)
+                return -1;
+        }
+        fflush(stdout);
+    }
+}
+
+int board_pump(struct board *b, int timeout_ms)
+{
+    if (b->fd < 0)
+        return -1;
+    struct pollfd p = {.fd = b->fd, .events = POLLIN};
+    int r = poll(&p, 1, timeout_ms < 0 ? 0 : timeout_ms);
+    if (r < 0 && errno != EINTR) {
+        fprintf(stderr, "links1: poll: %s\n", strerror(errno));
+        return -1;
+    }
+    if (r > 0)
+        return board_read_available(b);
+    return 0;
+}
+
+static void print_missing_cores(const struct board *b)
+{
+    fprintf(stderr, "links1: %d of %d unit computers did not report in:",
+            b->opts.ncores - b->reported_count, b->opts.ncores);
+    int shown = 0;
+    for (int k = 0; k < b->opts.ncores; k++) {
+        if (b->reported[k])
+            continue;
+        int e = k;
+        while (e + 1 < b->opts.ncores && !b->reported[e + 1])
+            e++;
+        fprintf(stderr, "%s core %d", shown ? "," : "", k);
+        if (e > k)
+            fprintf(stderr, "-%d", e);
+        fprintf(stderr, " (%s%s)", board_role_name(k), e > k ? "s" : "");
+        shown = 1;
+        k = e;
+    }
+    fprintf(stderr, "\n");
+}
+
+int board_wait_reported(struct board *b, int timeout_ms)
+{
+    long long end = board_now_ms() + timeout_ms;
+    while (b->reported_count < b->opts.ncores && b->hello_errors == 0) {
+        long long left = end - board_now_ms();
+        if (left <= 0) {
+            print_missing_cores(b);
+            fprintf(stderr, "links1: (waited %d s; --timeout S waits longer)\n",
+                    timeout_ms / 1000);
+            return -1;
+        }
+        if (board_pump(b, (int)left) < 0) {
+            print_missing_cores(b);
+            return -1;
+        }
+    }
+    if (b->hello_errors) {
+        fprintf(stderr, "links1: %d bad report-in frame(s)\n", b->hello_errors);
+        return -1;
+    }
+    return 0;
+}
+
+/* ------------------------------------------------------- outgoing frames */
+
+static int write_all(struct board *b, const uint8_t *p, size_t n, int timeout_ms)
+{
+    long long end = board_now_ms() + timeout_ms;
+    while (n) {
+        if (b->fd < 0)
+            return -1;
+        ssize_t w = write(b->fd, p, n);
+        if (w > 0) {
+            p += w;
+            n -= (size_t)w;
+            continue;
+        }
+        if (w < 0 && errno != EAGAIN && errno != EWOULDBLOCK && errno != EINTR)
+            return board_lost(b, strerror(errno));
+        /* The board is not taking bytes: keep reading what it sends meanwhile,
+         * so neither side can block the other. */
+        long long left = end - board_now_ms();
+        if (left <= 0) {
+            fprintf(stderr, "links1: the board took no input for %d ms\n", timeout_ms);
+            return -1;
+        }
+        struct pollfd pf = {.fd = b->fd, .events = POLLIN | POLLOUT};
+        if (poll(&pf, 1, (int)left) > 0 && (pf.revents & (POLLIN | POLLHUP)) &&
+            board_read_available(b) < 0)
+            return -1;
+    }
+    return 0;
+}
+
+int board_send(struct board *b, uint8_t type, uint8_t flags, const void *payload,
+               size_t len)
+{
+    uint8_t frame[LINK_MAX_FRAME];
+    uint16_t seq = b->tx_seq;
+    size_t n = link_frame_encode(frame, sizeof frame, type, flags, seq, payload, len);
+    if (n == 0) {
+        fprintf(stderr, "links1: frame payload of %zu bytes is over the %d-byte limit\n",
+                len, LINK_MAX_PAYLOAD);
+        return -1;
+    }
+    if (write_all(b, frame, n, BOARD_FRAME_TIMEOUT_MS) < 0)
+        return -1;
+    b->tx_seq++;
+    return seq;
+}
+
+int board_send_cmd(struct board *b, uint16_t cmd, const void *args, size_t len)
+{
+    uint8_t p[LINK_MAX_PAYLOAD];
+    if (len > sizeof p - LINK_CMD_FIXED_SIZE) {
+        fprintf(stderr, "links1: command %u: %zu bytes of arguments is too many\n", cmd, len);
+        return -1;
+    }
+    wire_put_u16(p, cmd);
+    if (len)
+        memcpy(p + LINK_CMD_FIXED_SIZE, args, len);
+    return board_send(b, LINK_CMD, 0, p, LINK_CMD_FIXED_SIZE + len) < 0 ? -1 : 0;
+}
+
+int board_wait_frame(struct board *b, uint8_t type, int timeout_ms,
+                     struct board_frame *out, const char *what)
+{
+    long long end = board_now_ms() + timeout_ms;
+    for (;;) {
+        for (int i = 0; i < b->queued; i++) {
+            if (b->queue[i].type != type)
+                continue;
+            *out = b->queue[i];
+            memmove(&b->queue[i], &b->queue[i + 1],
+                    (size_t)(b->queued - i - 1) * sizeof b->queue[0]);
+            b->queued--;
+            return 0;
+        }
+        long long left = end - board_now_ms();
+        if (left <= 0) {
+            fprintf(stderr, "links1: no %s from the board within %d ms\n", what, timeout_ms);
+            return -1;
+        }
+        if (board_pump(b, (int)left) < 0) {
+            fprintf(stderr, "links1: gave up waiting for %s\n", what);
+            return -1;
+        }
+    }
+}
+
+int board_wait_result(struct board *b, uint16_t cmd, int timeout_ms,
+                      struct board_frame *out, int *status,
+                      const uint8_t **fields, size_t *nfields)
+{
+    char what[64];
+    snprintf(what, sizeof what, "result of command %u", cmd);
+    if (board_wait_frame(b, LINK_RESULT, timeout_ms, out, what) < 0)
+        return -1;
+    if (out->length < LINK_RESULT_FIXED_SIZE) {
+        fprintf(stderr, "links1: RESULT frame of %u bytes, want at least %d\n", out->length,
+                LINK_RESULT_FIXED_SIZE);
+        return -1;
+    }
+    uint16_t got = wire_get_u16(out->payload);
+    if (got != cmd) {
+        fprintf(stderr, "links1: waited for the result of command %u, got one for %u\n",
+                cmd, got);
+        return -1;
+    }
+    *status = (int16_t)wire_get_u16(out->payload + 2);
+    *fields = out->payload + LINK_RESULT_FIXED_SIZE;
+    *nfields = out->length - LINK_RESULT_FIXED_SIZE;
+    return 0;
+}
+
+uint32_t board_link_errors(const struct board *b)
+{
+    const struct link_stats *s = &b->dec.stats;
+    return s->crc_errors + s->bad_length + s->junk_bytes + s->seq_gaps;
+}
+
+uint32_t board_report_link_errors(const struct board *b)
+{
+    const struct link_stats *s = &b->dec.stats;
+    uint32_t n = board_link_errors(b);
+    if (n)
+        fprintf(stderr, "links1: link errors from the board: %u bad CRC, %u bad length, "
+                "%u junk bytes, %u seq gaps (in %u good frames)\n", s->crc_errors,
+                s->bad_length, s->junk_bytes, s->seq_gaps, s->frames);
+    return n;
+}
+
+/* ------------------------------------------------------------------ stop */
+
+int board_stop(struct board *b)
+{
+    if (!b->qemu_pid) {
+        if (b->fd >= 0)
+            close(b->fd);
+        b->fd = -1;
+        return 0;
+    }
+    b->stopping = 1;
+    if (b->fd >= 0 && board_send_cmd(b, CMD_SHUTDOWN, NULL, 0) == 0) {
+        /* Drain what the board still says (its result, last logs) until the
+         * socket closes because QEMU exited. */
+        long long end = board_now_ms() + BOARD_SHUTDOWN_WAIT_MS;
+        while (b->fd >= 0 && board_now_ms() < end) {
+            if (board_pump(b, (int)(end - board_now_ms())) < 0)
+                break;
+            b->queued = 0; /* nothing waits for these any more */
+        }
+    }
+    if (b->fd >= 0) {
+        close(b->fd);
+        b->fd = -1;
+    }
+    if (qemu_reap(b, b->qemu_pid ? 500 : 0)) {
+        if (WIFEXITED(b->qemu_status) && WEXITSTATUS(b->qemu_status) == 0)
+            return 0;
+        char desc[96];
+        qemu_describe_exit(b, desc, sizeof desc);
+        fprintf(stderr, "links1: at shutdown %s\n", desc);
+        return -1;
+    }
+    fprintf(stderr, "links1: the board did not power off within %d ms of the shutdown "
+            "command; stopping QEMU (pid %d) with SIGTERM\n", BOARD_SHUTDOWN_WAIT_MS,
+            (int)b->qemu_pid);
+    kill(b->qemu_pid, SIGTERM);
+    if (qemu_reap(b, BOARD_TERM_WAIT_MS))
+        return 1;
+    fprintf(stderr, "links1: QEMU ignored SIGTERM for %d ms; killing it\n",
+            BOARD_TERM_WAIT_MS);
+    kill(b->qemu_pid, SIGKILL);
+    qemu_reap(b, BOARD_TERM_WAIT_MS);
+    return 1;
+}

@@ -1,0 +1,134 @@
+/* board_opts.c: the board options every board subcommand takes, and where
+ * the firmware ELF is found (see board.h). */
+#include "host-tools/board.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+const char board_opts_usage[] =
+    "  --smp N          cores on the board: DM, RC and N-2 NCs (3..256, default 10)\n"
+    "  --arith A        firmware arithmetic: float, soft or fixed (default float)\n"
+    "  --firmware ELF   firmware to boot (default: links1-<arith>.elf in $FW_DIR,\n"
+    "                   else next to this program)\n"
+    "  --timeout S      seconds to wait for every unit computer to report in (default 60)\n"
+    "  --ram MB         board memory (default 512)\n"
+    "  --quiet          do not print the board's log and report-in lines\n";
+
+static const char *const arith_names[] = {"float", "soft", "fixed"};
+
+int board_arith_code(const char *arith)
+{
+    for (int i = 0; i < (int)(sizeof arith_names / sizeof arith_names[0]); i++)
+        if (strcmp(arith, arith_names[i]) == 0)
+            return i;
+    return -1;
+}
+
+void board_opts_init(struct board_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->ncores = BOARD_DEFAULT_CORES;
+    o->arith = "float";
+    o->ram_mb = BOARD_DEFAULT_RAM_MB;
+    o->timeout_s = BOARD_DEFAULT_TIMEOUT_S;
+}
+
+/* Parses argv[*i + 1] as an integer in [lo, hi] for option name. */
+static int parse_int_arg(int argc, char **argv, int *i, int lo, int hi, int *out)
+{
+    const char *name = argv[*i];
+    if (*i + 1 >= argc) {
+        fprintf(stderr, "links1: %s needs a value\n", name);
+        return -1;
+    }
+    char *end;
+    errno = 0;
+    long v = strtol(argv[*i + 1], &end, 10);
+    if (errno || end == argv[*i + 1] || *end || v < lo || v > hi) {
+        fprintf(stderr, "links1: %s '%s': want a whole number from %d to %d\n", name,
+                argv[*i + 1], lo, hi);
+        return -1;
+    }
+    *out = (int)v;
+    *i += 1;
+    return 1;
+}
+
+int board_parse_opt(struct board_opts *o, int argc, char **argv, int *i)
+{
+    const char *a = argv[*i];
+    if (strcmp(a, "--smp") == 0)
+        return parse_int_arg(argc, argv, i, BOARD_MIN_CORES, BOARD_MAX_CORES, &o->ncores);
+    if (strcmp(a, "--timeout") == 0)
+        return parse_int_arg(argc, argv, i, 1, BOARD_MAX_TIMEOUT_S, &o->timeout_s);
+    if (strcmp(a, "--ram") == 0)
+        return parse_int_arg(argc, argv, i, BOARD_MIN_RAM_MB, BOARD_MAX_RAM_MB, &o->ram_mb);
+    if (strcmp(a, "--quiet") == 0) {
+        o->quiet = 1;
+        return 1;
+    }
+    if (strcmp(a, "--arith") == 0 || strcmp(a, "--firmware") == 0) {
+        if (*i + 1 >= argc) {
+            fprintf(stderr, "links1: %s needs a value\n", a);
+            return -1;
+        }
+        const char *v = argv[++*i];
+        if (a[2] == 'f') {
+            o->firmware = v;
+        } else if (board_arith_code(v) < 0) {
+            fprintf(stderr, "links1: --arith '%s': want float, soft or fixed\n", v);
+            return -1;
+        } else {
+            o->arith = v;
+        }
+        return 1;
+    }
+    return 0;
+}
+
+static int file_readable(const char *path)
+{
+    return access(path, R_OK) == 0;
+}
+
+int board_find_firmware(const struct board_opts *o, char *out, size_t cap)
+{
+    if (o->firmware) {
+        if (!file_readable(o->firmware)) {
+            fprintf(stderr, "links1: firmware %s: %s\n", o->firmware, strerror(errno));
+            return -1;
+        }
+        snprintf(out, cap, "%s", o->firmware);
+        return 0;
+    }
+    const char *fw_dir = getenv("FW_DIR");
+    if (fw_dir && *fw_dir) {
+        snprintf(out, cap, "%s/links1-%s.elf", fw_dir, o->arith);
+        if (file_readable(out))
+            return 0;
+        fprintf(stderr, "links1: firmware %s not found ($FW_DIR is set; run make, or "
+                "give --firmware ELF)\n", out);
+        return -1;
+    }
+    char self[PATH_MAX];
+    ssize_t n = readlink("/proc/self/exe", self, sizeof self - 1);
+    if (n <= 0) {
+        fprintf(stderr, "links1: cannot find this program's directory: %s\n", strerror(errno));
+        return -1;
+    }
+    self[n] = 0;
+    char *slash = strrchr(self, '/');
+    if (slash)
+        *slash = 0;
+    snprintf(out, cap, "%s/links1-%s.elf", self, o->arith);
+    if (file_readable(out))
+        return 0;
+    fprintf(stderr, "links1: firmware %s not found (run make, set $FW_DIR, or give "
+            "--firmware ELF)\n", out);
+    return -1;
+}
+

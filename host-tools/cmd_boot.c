@@ -1,0 +1,73 @@
+/* cmd_boot.c: `links1 boot`: boot the board, show every unit computer
+ * reporting in, shut it down cleanly; optionally count guest instructions. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "host-tools/board.h"
+#include "host-tools/insn_report.h"
+#include "host-tools/links1_cmds.h"
+
+static void boot_usage(FILE *out)
+{
+    fprintf(out, "usage: links1 boot [options]\n"
+                 "Boots the board, prints its log and every unit computer reporting in,\n"
+                 "then shuts it down.  Exits non-zero naming the cores that did not report.\n"
+                 "options:\n%s"
+                 "  --count-insns    count guest instructions per core (TCG plugin\n"
+                 "                   insn-count.so next to this program) and print them\n",
+                 board_opts_usage);
+}
+
+int cmd_boot(int argc, char **argv)
+{
+    struct board_opts o;
+    int count_insns = 0;
+    board_opts_init(&o);
+    for (int i = 1; i < argc; i++) {
+        int r = board_parse_opt(&o, argc, argv, &i);
+        if (r < 0)
+            return 2;
+        if (r)
+            continue;
+        if (strcmp(argv[i], "--count-insns") == 0) {
+            count_insns = 1;
+        } else if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+            boot_usage(stdout);
+            return 0;
+        } else {
+            fprintf(stderr, "links1 boot: unknown option '%s'\n", argv[i]);
+            boot_usage(stderr);
+            return 2;
+        }
+    }
+    char insn_path[] = "/tmp/links1-insns-XXXXXX";
+    if (count_insns) {
+        int fd = mkstemp(insn_path);
+        if (fd < 0) {
+            perror("links1: temporary file for instruction counts");
+            return 1;
+        }
+        close(fd);
+        o.insn_count_out = insn_path;
+    }
+    struct board b;
+    int rc = 1;
+    if (board_start(&b, &o) == 0 && board_wait_reported(&b, o.timeout_s * 1000) == 0) {
+        printf("links1: all %d unit computers reported in: DM, RC and %d NCs\n", o.ncores,
+               o.ncores - 2);
+        rc = 0;
+    }
+    int stop = board_stop(&b);
+    if (board_report_link_errors(&b))
+        rc = 1;
+    if (stop < 0)
+        rc = 1;
+    if (count_insns) {
+        if (insn_report_print(insn_path, o.ncores) < 0)
+            rc = 1;
+        unlink(insn_path);
+    }
+    return rc;
+}

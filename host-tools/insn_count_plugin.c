@@ -1,0 +1,129 @@
+/* insn_count_plugin.c: a QEMU TCG plugin that counts the guest instructions
+ * each emulated core executes, for deterministic cost figures (wall-clock
+ * time on a shared host cannot show a many-core speed-up).
+ *
+ *   qemu-system-arm ... -plugin build/insn-count.so,out=FILE
+ *
+ * At exit it writes one line "vcpu K INSNS" per vCPU to FILE (or to QEMU's
+ * log when out= is not given).  Counting is per translated block: when a
+ * block runs, its instruction count is added to the running vCPU's total.  A
+ * block left early by an exception is counted whole, so counts of faulting
+ * code are a slight over-estimate; a core asleep in WFI counts nothing.
+ */
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "host-tools/links1_params.h"
+
+/* ---- QEMU 7.2 plugin API, version 1 ----
+ * Debian ships no qemu-plugin.h, so the few types and functions used here
+ * are declared from the documented API.  QEMU resolves the functions when it
+ * loads the plugin. */
+#define PLUGIN_EXPORT __attribute__((visibility("default")))
+typedef uint64_t qemu_plugin_id_t;
+struct qemu_plugin_tb;
+typedef struct qemu_info_t {
+    const char *target_name;
+    struct {
+        int min;
+        int cur;
+    } version;
+    bool system_emulation;
+    union {
+        struct {
+            int smp_vcpus;
+            int max_vcpus;
+        } system;
+    };
+} qemu_info_t;
+enum qemu_plugin_cb_flags {
+    QEMU_PLUGIN_CB_NO_REGS,
+    QEMU_PLUGIN_CB_R_REGS,
+    QEMU_PLUGIN_CB_RW_REGS,
+};
+typedef void (*qemu_plugin_vcpu_tb_trans_cb_t)(qemu_plugin_id_t id, struct qemu_plugin_tb *tb);
+typedef void (*qemu_plugin_vcpu_udata_cb_t)(unsigned int vcpu_index, void *userdata);
+typedef void (*qemu_plugin_udata_cb_t)(qemu_plugin_id_t id, void *userdata);
+void qemu_plugin_register_vcpu_tb_trans_cb(qemu_plugin_id_t id,
+                                           qemu_plugin_vcpu_tb_trans_cb_t cb);
+void qemu_plugin_register_vcpu_tb_exec_cb(struct qemu_plugin_tb *tb,
+                                          qemu_plugin_vcpu_udata_cb_t cb,
+                                          enum qemu_plugin_cb_flags flags, void *userdata);
+size_t qemu_plugin_tb_n_insns(const struct qemu_plugin_tb *tb);
+void qemu_plugin_register_atexit_cb(qemu_plugin_id_t id, qemu_plugin_udata_cb_t cb,
+                                    void *userdata);
+void qemu_plugin_outs(const char *string);
+
+PLUGIN_EXPORT int qemu_plugin_version = 1;
+
+/* ---- the counter ---- */
+
+static uint64_t insn_count[INSN_COUNT_MAX_VCPUS]; /* per vCPU index */
+static int insn_count_vcpus;                       /* vCPUs on the board */
+static char insn_count_out[4096];                  /* output file, or "" */
+
+/* Runs on the vCPU's own thread.  Each slot has one writer, but the add is
+ * atomic anyway so a reader at exit never sees a torn value. */
+static void insn_count_tb_exec(unsigned int vcpu, void *n_insns)
+{
+    if (vcpu < INSN_COUNT_MAX_VCPUS)
+        __atomic_fetch_add(&insn_count[vcpu], (uint64_t)(uintptr_t)n_insns, __ATOMIC_RELAXED);
+}
+
+static void insn_count_tb_trans(qemu_plugin_id_t id, struct qemu_plugin_tb *tb)
+{
+    (void)id;
+    size_t n = qemu_plugin_tb_n_insns(tb);
+    qemu_plugin_register_vcpu_tb_exec_cb(tb, insn_count_tb_exec, QEMU_PLUGIN_CB_NO_REGS,
+                                         (void *)(uintptr_t)n);
+}
+
+static void insn_count_atexit(qemu_plugin_id_t id, void *userdata)
+{
+    (void)id;
+    (void)userdata;
+    char line[64];
+    FILE *f = insn_count_out[0] ? fopen(insn_count_out, "w") : NULL;
+    if (insn_count_out[0] && !f) {
+        qemu_plugin_outs("insn-count: cannot open the out= file\n");
+        return;
+    }
+    for (int k = 0; k < insn_count_vcpus; k++) {
+        snprintf(line, sizeof line, "vcpu %d %llu\n", k,
+                 (unsigned long long)__atomic_load_n(&insn_count[k], __ATOMIC_RELAXED));
+        if (f)
+            fputs(line, f);
+        else
+            qemu_plugin_outs(line);
+    }
+    if (f)
+        fclose(f);
+}
+
+PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_t *info,
+                                      int argc, char **argv)
+{
+    if (!info->system_emulation) {
+        qemu_plugin_outs("insn-count: only system emulation is supported\n");
+        return -1;
+    }
+    insn_count_vcpus = info->system.max_vcpus;
+    if (insn_count_vcpus > INSN_COUNT_MAX_VCPUS) {
+        qemu_plugin_outs("insn-count: more vCPUs than INSN_COUNT_MAX_VCPUS\n");
+        return -1;
+    }
+    for (int i = 0; i < argc; i++) {
+        if (strncmp(argv[i], "out=", 4) == 0 && strlen(argv[i] + 4) < sizeof insn_count_out) {
+            strcpy(insn_count_out, argv[i] + 4);
+        } else {
+            qemu_plugin_outs("insn-count: the only argument is out=FILE\n");
+            return -1;
+        }
+    }
+    qemu_plugin_register_vcpu_tb_trans_cb(id, insn_count_tb_trans);
+    qemu_plugin_register_atexit_cb(id, insn_count_atexit, NULL);
+    return 0;
+}

@@ -1,0 +1,118 @@
+/* link_transfer.c: pattern transfers both ways over the host link. */
+#include "host-tools/link_transfer.h"
+
+#include <stdio.h>
+
+#include "proto/crc32.h"
+#include "proto/wire.h"
+
+/* seq a is at or before seq b in 16-bit wrapping order. */
+static int seq_not_after(uint16_t a, uint16_t b)
+{
+    return (uint16_t)(b - a) < 0x8000u;
+}
+
+/* Waits for one ACK and drops every in-flight seq it covers. */
+static int take_ack(struct board *b, uint16_t *inflight, int *n)
+{
+    struct board_frame f;
+    if (board_wait_frame(b, LINK_ACK, BOARD_FRAME_TIMEOUT_MS, &f, "ACK of a DATA frame") < 0)
+        return -1;
+    if (f.length != LINK_ACK_SIZE) {
+        fprintf(stderr, "links1: ACK frame of %u bytes, want %d\n", f.length, LINK_ACK_SIZE);
+        return -1;
+    }
+    uint16_t acked = wire_get_u16(f.payload);
+    int drop = 0;
+    while (drop < *n && seq_not_after(inflight[drop], acked))
+        drop++;
+    if (drop == 0) {
+        fprintf(stderr, "links1: ACK for seq %u, but the oldest DATA frame in flight is "
+                "seq %u\n", acked, *n ? inflight[0] : 0);
+        return -1;
+    }
+    for (int i = drop; i < *n; i++)
+        inflight[i - drop] = inflight[i];
+    *n -= drop;
+    return 0;
+}
+
+int link_transfer_send_pattern(struct board *b, uint32_t total, uint32_t *crc)
+{
+    uint16_t inflight[LINK_DATA_WINDOW];
+    int n = 0;
+    uint8_t chunk[LINK_DATA_CHUNK];
+    uint32_t c = 0;
+    if (total == 0) {
+        fprintf(stderr, "links1: a transfer carries at least one byte\n");
+        return -1;
+    }
+    for (uint32_t off = 0; off < total;) {
+        uint32_t len = total - off < LINK_DATA_CHUNK ? total - off : LINK_DATA_CHUNK;
+        for (uint32_t i = 0; i < len; i++)
+            chunk[i] = link_pattern_byte(off + i);
+        c = crc32_update(c, chunk, len);
+        while (n >= LINK_DATA_WINDOW)
+            if (take_ack(b, inflight, &n) < 0)
+                return -1;
+        int last = off + len == total;
+        int seq = board_send(b, LINK_DATA, last ? LINK_FLAG_LAST : 0, chunk, len);
+        if (seq < 0)
+            return -1;
+        inflight[n++] = (uint16_t)seq;
+        off += len;
+    }
+    while (n > 0)
+        if (take_ack(b, inflight, &n) < 0)
+            return -1;
+    *crc = c;
+    return 0;
+}
+
+int link_transfer_receive_pattern(struct board *b, uint64_t *bytes, uint32_t *crc)
+{
+    uint64_t off = 0;
+    uint32_t c = 0;
+    int have_prev = 0;
+    uint16_t prev = 0;
+    for (;;) {
+        struct board_frame f;
+        if (board_wait_frame(b, LINK_DATA, BOARD_FRAME_TIMEOUT_MS, &f, "DATA frame") < 0) {
+            fprintf(stderr, "links1: the transfer stopped after %llu bytes\n",
+                    (unsigned long long)off);
+            return -1;
+        }
+        if (have_prev && (f.seq == prev || !seq_not_after(prev, f.seq))) {
+            fprintf(stderr, "links1: DATA frame seq %u after seq %u at byte %llu: "
+                    "repeated or out of order\n", f.seq, prev, (unsigned long long)off);
+            return -1;
+        }
+        have_prev = 1;
+        prev = f.seq;
+        if (f.length == 0) {
+            fprintf(stderr, "links1: empty DATA frame (seq %u) at byte %llu\n", f.seq,
+                    (unsigned long long)off);
+            return -1;
+        }
+        for (uint32_t i = 0; i < f.length; i++) {
+            uint8_t want = link_pattern_byte((uint32_t)(off + i));
+            if (f.payload[i] != want) {
+                fprintf(stderr, "links1: byte %llu of the board's transfer is 0x%02x, "
+                        "the pattern says 0x%02x (DATA seq %u)\n",
+                        (unsigned long long)(off + i), f.payload[i], want, f.seq);
+                return -1;
+            }
+        }
+        c = crc32_update(c, f.payload, f.length);
+        off += f.length;
+        uint8_t ack[LINK_ACK_SIZE];
+        wire_put_u16(ack, f.seq);
+        if (board_send(b, LINK_ACK, 0, ack, sizeof ack) < 0)
+            return -1;
+        if (f.flags & LINK_FLAG_LAST)
+            break;
+    }
+    *bytes = off;
+    *crc = c;
+    return 0;
+}

@@ -1,0 +1,10 @@
+/* links1_cmds.h: the board subcommands of `links1`.  Each takes the
+ * arguments after its name (argv[0] is the subcommand's name) and returns the
+ * process exit status. */
+#ifndef LINKS1_HOST_CMDS_H
+#define LINKS1_HOST_CMDS_H
+
+int cmd_boot(int argc, char **argv);     /* links1 boot: boot, report in, shut down */
+int cmd_selftest(int argc, char **argv); /* links1 selftest NAME...: board checks */
+
+#endif

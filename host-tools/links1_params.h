@@ -1,0 +1,58 @@
+/* links1_params.h: every limit and default of the host tool in one place. */
+#ifndef LINKS1_HOST_PARAMS_H
+#define LINKS1_HOST_PARAMS_H
+
+/* The board: core 0 DM, core 1 RC, cores 2.. NCs.  At least one NC; at most
+ * the 254 NCs LINKS-1 was designed for. */
+#define BOARD_MIN_CORES 3
+#define BOARD_MAX_CORES 256
+#define BOARD_DEFAULT_CORES 10
+#define BOARD_DEFAULT_RAM_MB 512
+#define BOARD_MIN_RAM_MB 64
+#define BOARD_MAX_RAM_MB 2048 /* the virt board's 32-bit RAM window below 4 GiB */
+
+/* Default seconds to wait for every unit computer to report in.  256 cores
+ * start one after another under emulation on two host cores, so this is
+ * generous. */
+#define BOARD_DEFAULT_TIMEOUT_S 60
+#define BOARD_MAX_TIMEOUT_S 3600
+
+/* Milliseconds to wait for one answer frame (a command's result, a DATA or
+ * ACK frame of a transfer) before calling the board unresponsive. */
+#define BOARD_FRAME_TIMEOUT_MS 20000
+/* Long commands (the inter-unit stress run) get this many ms per MiB. */
+#define BOARD_STRESS_MS_PER_MIB 4000
+
+/* Clean stop: wait this long for QEMU to exit after CMD_SHUTDOWN, then send
+ * SIGTERM and wait again, and only then SIGKILL. */
+#define BOARD_SHUTDOWN_WAIT_MS 5000
+#define BOARD_TERM_WAIT_MS 3000
+
+/* Frames other than LOG/HELLO/FAULT wait here until someone asks for them;
+ * a transfer keeps at most LINK_DATA_WINDOW DATA frames in flight, so a
+ * full queue means the board broke the window. */
+#define BOARD_FRAME_QUEUE 32
+/* Faults remembered for the caller to check (all are printed). */
+#define BOARD_MAX_FAULTS 64
+/* Bytes read from the link per read() call. */
+#define BOARD_READ_CHUNK 4096
+
+/* Link tests: bytes each way through the host link, MiB through the
+ * inter-unit lines (issue minimums: 8 MiB and 64 MiB). */
+#define SELFTEST_LINK_BYTES (8u << 20)
+#define SELFTEST_STRESS_MIB 64u
+/* Most a selftest run accepts, so a typo cannot start an hours-long run. */
+#define SELFTEST_MAX_STRESS_MIB 4096u
+#define SELFTEST_MAX_LINK_BYTES (1024u << 20)
+/* Checks named in one selftest run, and the size of a check's one-line verdict. */
+#define SELFTEST_MAX_RUN 16
+#define SELFTEST_WHY_SIZE 512
+/* Idle test: settle after report-in, then measure QEMU's CPU time. */
+#define SELFTEST_IDLE_SETTLE_MS 1000
+#define SELFTEST_IDLE_SECONDS 5
+#define SELFTEST_IDLE_MAX_PERCENT 15.0
+
+/* The instruction-counting plugin's per-vCPU table. */
+#define INSN_COUNT_MAX_VCPUS BOARD_MAX_CORES
+
+#endif

@@ -1,0 +1,25 @@
+# host-tools/: the links1 host tool, the instruction-counting QEMU plugin,
+# `make run`'s script.  (host-tools/scene/ adds its own sources.)
+HOST_TOOLS += links1
+links1_SRCS := host-tools/links1.c host-tools/board.c host-tools/board_opts.c \
+	host-tools/cmd_boot.c host-tools/cmd_selftest.c host-tools/selftest_checks.c \
+	host-tools/selftest_link.c host-tools/link_transfer.c host-tools/insn_report.c
+links1_ARITH := double
+
+# The TCG plugin is loaded into QEMU: a plain shared object, no sanitizers.
+INSN_PLUGIN := $(B)/insn-count.so
+$(INSN_PLUGIN): host-tools/insn_count_plugin.c
+	$(call say,HOSTSO,$@)
+	$(Q)mkdir -p $(@D)
+	$(Q)$(HOST_CC) $(HOST_CFLAGS) -fPIC -shared -fvisibility=hidden $< -o $@
+-include $(INSN_PLUGIN:.so=.d)
+host-tools: $(INSN_PLUGIN)
+
+# Host unit tests of the link framing and message encodings.
+HOST_TESTS += test_hostlink
+test_hostlink_SRCS := tests/host/test_hostlink.c
+test_hostlink_ARITH := double
+HOST_TESTS += test_hostlink_msgs
+test_hostlink_msgs_SRCS := tests/host/test_hostlink_msgs.c host-tools/board.c \
+	host-tools/board_opts.c
+test_hostlink_msgs_ARITH := double

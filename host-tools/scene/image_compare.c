@@ -1,0 +1,137 @@
+/* image_compare.c: `links1 compare A B`: how far two renderings of a scene
+ * are apart, per channel, and whether enough pixels agree.
+ *
+ * Silhouette mask (--silhouette): a pixel is left out when its 3x3
+ * neighbourhood in A (the reference) crosses an edge, i.e. some neighbour
+ * differs from it by more than COMPARE_EDGE_STEP in some channel.  Object
+ * outlines (and hard shadow outlines) are where two renderers that sample
+ * one ray per pixel disagree by a whole pixel's worth of coverage, so the
+ * accuracy of the shading is judged away from them.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "host-tools/scene/image_io.h"
+#include "host-tools/scene/scene_cmds.h"
+
+#define COMPARE_EDGE_STEP 24     /* /255: a jump this large between neighbours is an edge */
+#define COMPARE_HIST_BUCKETS 8   /* differences 0..6 one by one, then "7 or more" */
+
+static int compare_is_edge(const struct image *a, int x, int y)
+{
+    const uint8_t *c = a->rgb + 3 * ((size_t)y * (size_t)a->width + (size_t)x);
+    for (int dy = -1; dy <= 1; dy++) {
+        for (int dx = -1; dx <= 1; dx++) {
+            int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= a->width || ny >= a->height)
+                continue;
+            const uint8_t *n = a->rgb + 3 * ((size_t)ny * (size_t)a->width + (size_t)nx);
+            for (int k = 0; k < 3; k++)
+                if (abs((int)n[k] - (int)c[k]) > COMPARE_EDGE_STEP)
+                    return 1;
+        }
+    }
+    return 0;
+}
+
+static int compare_usage(void)
+{
+    fprintf(stderr, "usage: links1 compare A.png B.png [--within K] [--min-fraction F] "
+                    "[--silhouette [--max-masked F]]\n"
+                    "  exit 0 when at least F (default 0.99) of the compared pixels have every\n"
+                    "  channel within K/255 (default 1); --silhouette leaves out the pixels\n"
+                    "  next to an edge of A, and fails if more than F of all pixels are left out\n");
+    return 2;
+}
+
+int scene_cmd_compare(int argc, char **argv)
+{
+    argc--, argv++; /* argv[0] is the subcommand's name */
+    const char *pa = NULL, *pb = NULL;
+    int within = 1, silhouette = 0;
+    double min_fraction = 0.99, max_masked = 1.0;
+    for (int i = 0; i < argc; i++) {
+        if (strcmp(argv[i], "--within") == 0 && i + 1 < argc) {
+            within = atoi(argv[++i]);
+        } else if (strcmp(argv[i], "--min-fraction") == 0 && i + 1 < argc) {
+            min_fraction = atof(argv[++i]);
+        } else if (strcmp(argv[i], "--max-masked") == 0 && i + 1 < argc) {
+            max_masked = atof(argv[++i]);
+        } else if (strcmp(argv[i], "--silhouette") == 0) {
+            silhouette = 1;
+        } else if (argv[i][0] != '-' && !pa) {
+            pa = argv[i];
+        } else if (argv[i][0] != '-' && !pb) {
+            pb = argv[i];
+        } else {
+            return compare_usage();
+        }
+    }
+    if (!pa || !pb || within < 0 || within > 255)
+        return compare_usage();
+    struct image a, b;
+    char err[512];
+    if (image_read(pa, &a, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 compare: %s\n", err);
+        return 2;
+    }
+    if (image_read(pb, &b, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 compare: %s\n", err);
+        image_free(&a);
+        return 2;
+    }
+    if (a.width != b.width || a.height != b.height) {
+        fprintf(stderr, "links1 compare: %s is %dx%d but %s is %dx%d\n", pa, a.width, a.height,
+                pb, b.width, b.height);
+        image_free(&a);
+        image_free(&b);
+        return 2;
+    }
+    long hist[3][COMPARE_HIST_BUCKETS];
+    memset(hist, 0, sizeof hist);
+    long compared = 0, masked = 0, good = 0;
+    int worst = 0;
+    for (int y = 0; y < a.height; y++) {
+        for (int x = 0; x < a.width; x++) {
+            if (silhouette && compare_is_edge(&a, x, y)) {
+                masked++;
+                continue;
+            }
+            size_t o = 3 * ((size_t)y * (size_t)a.width + (size_t)x);
+            int ok = 1;
+            for (int k = 0; k < 3; k++) {
+                int d = abs((int)a.rgb[o + k] - (int)b.rgb[o + k]);
+                hist[k][d < COMPARE_HIST_BUCKETS - 1 ? d : COMPARE_HIST_BUCKETS - 1]++;
+                if (d > within)
+                    ok = 0;
+                if (d > worst)
+                    worst = d;
+            }
+            compared++;
+            good += ok;
+        }
+    }
+    double fraction = compared ? (double)good / (double)compared : 0;
+    printf("compare %s %s: %dx%d, %ld pixels compared, %ld masked (silhouette)\n", pa, pb,
+           a.width, a.height, compared, masked);
+    printf("  |difference|/255:");
+    for (int d = 0; d < COMPARE_HIST_BUCKETS; d++)
+        printf(d < COMPARE_HIST_BUCKETS - 1 ? "%8d" : "%7d+", d);
+    printf("\n");
+    for (int k = 0; k < 3; k++) {
+        printf("  %-17s", k == 0 ? "red" : k == 1 ? "green" : "blue");
+        for (int d = 0; d < COMPARE_HIST_BUCKETS; d++)
+            printf("%8ld", hist[k][d]);
+        printf("\n");
+    }
+    printf("  within %d/255 on every channel: %.4f%% (need %.4f%%), largest difference %d\n",
+           within, 100.0 * fraction, 100.0 * min_fraction, worst);
+    double masked_fraction = (double)masked / ((double)a.width * (double)a.height);
+    if (masked_fraction > max_masked)
+        printf("  too many pixels masked: %.2f%% (at most %.2f%% allowed)\n",
+               100.0 * masked_fraction, 100.0 * max_masked);
+    image_free(&a);
+    image_free(&b);
+    return fraction >= min_fraction && compared > 0 && masked_fraction <= max_masked ? 0 : 1;
+}

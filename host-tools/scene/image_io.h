@@ -1,0 +1,22 @@
+/* image_io.h: 8-bit RGB images on the host: PNG through libpng, binary PPM
+ * (P6) by hand.  Pixels are row-major, top row first, 3 bytes per pixel. */
+#ifndef LINKS1_HOST_IMAGE_IO_H
+#define LINKS1_HOST_IMAGE_IO_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#define IMAGE_MAX_SIDE 16384 /* refuse larger files rather than allocate blindly */
+
+struct image {
+    int width, height;
+    uint8_t *rgb;           /* width * height * 3 bytes, malloc'ed */
+};
+
+/* Each returns 0, or -1 with a message naming the file and the problem. */
+int image_read(const char *path, struct image *img, char *err, size_t errlen);
+int image_write_png(const char *path, const struct image *img, char *err, size_t errlen);
+int image_write_ppm(const char *path, const struct image *img, char *err, size_t errlen);
+void image_free(struct image *img);
+
+#endif

@@ -1,0 +1,50 @@
+# host-tools/scene/: the text scene format, its compiler, the host reference
+# renderer and the POV-Ray exporter.
+#
+# The loader of the compiled form is shared code (the board's DM runs it).
+SHARED_SRCS += render/scene_load.c
+
+# Sources of the scene subcommands of `links1` (compile, ref, export-pov,
+# compare); the links1 tool adds them to its own sources and SCENE_CMD_LIBS
+# to its libraries.
+SCENE_CMD_SRCS := host-tools/scene/scene_cmds.c host-tools/scene/scene_lex.c \
+	host-tools/scene/scene_parse.c host-tools/scene/scene_math.c \
+	host-tools/scene/scene_compile.c host-tools/scene/scene_pov.c \
+	host-tools/scene/image_io.c host-tools/scene/image_compare.c
+SCENE_CMD_LIBS := -lpng
+
+# The host reference renderer, one executable per arithmetic of the shared
+# renderer; `links1 ref --arith A` runs the one asked for.
+SCENE_REF_SRCS := host-tools/scene/ref_main.c host-tools/scene/scene_lex.c \
+	host-tools/scene/scene_parse.c host-tools/scene/scene_math.c \
+	host-tools/scene/scene_compile.c host-tools/scene/image_io.c
+HOST_TOOLS += links1-ref-double links1-ref-float links1-ref-fixed
+links1-ref-double_SRCS := $(SCENE_REF_SRCS)
+links1-ref-double_ARITH := double
+links1-ref-double_LIBS := -lpng
+links1-ref-float_SRCS := $(SCENE_REF_SRCS)
+links1-ref-float_ARITH := float
+links1-ref-float_LIBS := -lpng
+links1-ref-fixed_SRCS := $(SCENE_REF_SRCS)
+links1-ref-fixed_ARITH := fixed
+links1-ref-fixed_LIBS := -lpng
+
+# Host tests of the format, the parser and the loader (ASan + UBSan).
+HOST_TESTS += test_scene_load test_scene_parse
+test_scene_load_SRCS := tests/host/test_scene_load.c host-tools/scene/scene_lex.c \
+	host-tools/scene/scene_parse.c host-tools/scene/scene_math.c \
+	host-tools/scene/scene_compile.c host-tools/scene/image_io.c
+test_scene_load_ARITH := double
+test_scene_load_LIBS := -lpng
+test_scene_parse_SRCS := tests/host/test_scene_parse.c host-tools/scene/scene_lex.c \
+	host-tools/scene/scene_parse.c host-tools/scene/scene_math.c \
+	host-tools/scene/scene_compile.c host-tools/scene/image_io.c
+test_scene_parse_ARITH := double
+test_scene_parse_LIBS := -lpng
+
+# The scene subcommands are part of the links1 tool (host-tools/module.mk).
+links1_SRCS += $(SCENE_CMD_SRCS)
+links1_LIBS += $(SCENE_CMD_LIBS)
+
+# Image tests: POV-Ray agreement and arithmetic accuracy.
+BOARD_TESTS += tests/images/pov.sh

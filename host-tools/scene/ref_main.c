@@ -1,0 +1,189 @@
+/* ref_main.c: links1-ref-<arith>, the host reference renderer, built once per
+ * arithmetic of the shared renderer (double, float, fixed).  `links1 ref`
+ * runs the one asked for; it can also be run alone:
+ *
+ *   links1-ref-double SCENE(.scn|.l1s) -o OUT.png [--ppm] [--frame N]
+ *
+ * A text scene is compiled in memory first, so the host goes through the
+ * same compiled form and the same loader (render/scene_load.c) as the board.
+ */
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "host-tools/scene/image_io.h"
+#include "host-tools/scene/scene_desc.h"
+#include "render/render.h"
+#include "render/scene_load.h"
+
+#define REF_ARENA_START (64u * 1024u * 1024u)  /* first arena tried */
+#define REF_ARENA_MAX (1024u * 1024u * 1024u)  /* largest arena tried */
+
+static int ref_usage(void)
+{
+    fprintf(stderr, "usage: links1-ref-%s SCENE(.scn|.l1s) -o OUT.png [--ppm] [--frame N]\n",
+            NUM_NAME);
+    return 2;
+}
+
+static int ref_ends_with(const char *s, const char *suffix)
+{
+    size_t n = strlen(s), k = strlen(suffix);
+    return n >= k && strcmp(s + n - k, suffix) == 0;
+}
+
+/* The compiled bytes of a scene file: read as is (.l1s) or compiled from
+ * text.  0, or -1 with err. */
+static int ref_scene_bytes(const char *path, uint8_t **buf, size_t *len, char *err,
+                           size_t errlen)
+{
+    if (!ref_ends_with(path, ".l1s")) {
+        struct sd_scene s;
+        if (sd_parse_file(path, &s, err, errlen) != 0)
+            return -1;
+        int rc = sd_compile(&s, buf, len, err, errlen);
+        sd_free(&s);
+        return rc;
+    }
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        return -1;
+    }
+    *buf = malloc(SCN_MAX_SIZE + 1);
+    *len = *buf ? fread(*buf, 1, SCN_MAX_SIZE + 1, f) : 0;
+    fclose(f);
+    if (!*buf || *len > SCN_MAX_SIZE) {
+        snprintf(err, errlen, "%s: %s", path,
+                 *buf ? "larger than a compiled scene may be" : "out of memory");
+        free(*buf);
+        *buf = NULL;
+        return -1;
+    }
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    const char *in = NULL, *out = NULL;
+    int ppm = 0;
+    long frame = 0;
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "-o") == 0 && i + 1 < argc) {
+            out = argv[++i];
+        } else if (strcmp(argv[i], "--ppm") == 0) {
+            ppm = 1;
+        } else if (strcmp(argv[i], "--frame") == 0 && i + 1 < argc) {
+            char *end;
+            frame = strtol(argv[++i], &end, 10);
+            if (*end || frame < 0) {
+                fprintf(stderr, "links1-ref: --frame wants a frame number, not '%s'\n",
+                        argv[i]);
+                return 2;
+            }
+        } else if (argv[i][0] != '-' && !in) {
+            in = argv[i];
+        } else {
+            fprintf(stderr, "links1-ref: unknown argument '%s'\n", argv[i]);
+            return ref_usage();
+        }
+    }
+    if (!in || !out)
+        return ref_usage();
+    if (!ppm && ref_ends_with(out, ".ppm"))
+        ppm = 1;
+
+    char err[SD_ERR_MAX];
+    uint8_t *bytes = NULL;
+    size_t len = 0;
+    if (ref_scene_bytes(in, &bytes, &len, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 ref: %s\n", err);
+        return 1;
+    }
+    /* Grow the arena until the scene and its prepared frame fit. */
+    size_t size = REF_ARENA_START;
+    void *mem = NULL;
+    scene_t scene;
+    render_frame_t *frame_data = NULL;
+    for (;;) {
+        free(mem);
+        mem = malloc(size);
+        if (!mem) {
+            fprintf(stderr, "links1 ref: out of memory (%zu bytes)\n", size);
+            free(bytes);
+            return 1;
+        }
+        arena_t arena;
+        arena_init(&arena, mem, size);
+        scene_load_error_t lerr;
+        scene_load_status_t ls = scene_load(bytes, len, &arena, &scene, &lerr);
+        render_status_t rs = RENDER_OK;
+        if (ls == SCENE_LOAD_OK) {
+            if ((uint32_t)frame >= scene.frame_count) {
+                fprintf(stderr, "links1 ref: %s: frame %ld, the scene has %u frames\n", in,
+                        frame, (unsigned)scene.frame_count);
+                free(mem);
+                free(bytes);
+                return 1;
+            }
+            rs = render_prepare(&scene, (uint32_t)frame, &arena, &frame_data);
+        }
+        if ((ls == SCENE_LOAD_ERR_ARENA || rs == RENDER_ERR_ARENA) && size < REF_ARENA_MAX) {
+            size *= 2;
+            continue;
+        }
+        if (ls != SCENE_LOAD_OK) {
+            fprintf(stderr, "links1 ref: %s: %s: %s\n", in, scene_load_status_name(ls),
+                    lerr.message);
+            free(mem);
+            free(bytes);
+            return 1;
+        }
+        if (rs != RENDER_OK) {
+            fprintf(stderr, "links1 ref: %s: %s\n", in, render_status_name(rs));
+            free(mem);
+            free(bytes);
+            return 1;
+        }
+        break;
+    }
+    struct image img = {scene.width, scene.height, NULL};
+    img.rgb = malloc((size_t)img.width * (size_t)img.height * 3);
+    rgb8_t *row = malloc(sizeof *row * (size_t)img.width);
+    if (!img.rgb || !row) {
+        fprintf(stderr, "links1 ref: out of memory for the image\n");
+        return 1;
+    }
+    render_ctx_t ctx;
+    render_ctx_init(&ctx, frame_data);
+    for (uint32_t y = 0; y < scene.height; y++) {
+        render_span(&ctx, y, 0, scene.width, row);
+        for (int x = 0; x < img.width; x++) {
+            uint8_t *px = img.rgb + 3 * ((size_t)y * (size_t)img.width + (size_t)x);
+            px[0] = row[x].r;
+            px[1] = row[x].g;
+            px[2] = row[x].b;
+        }
+    }
+    int rc = ppm ? image_write_ppm(out, &img, err, sizeof err)
+                 : image_write_png(out, &img, err, sizeof err);
+    if (rc != 0)
+        fprintf(stderr, "links1 ref: %s\n", err);
+    else
+        fprintf(stderr,
+                "links1 ref (%s): %s frame %ld, %dx%d -> %s; rays: %llu primary, %llu "
+                "shadow, %llu reflection, %llu refraction, %llu transmission; "
+                "%u pixels lost precision\n",
+                NUM_NAME, in, frame, img.width, img.height, out,
+                (unsigned long long)ctx.stats.primary, (unsigned long long)ctx.stats.shadow,
+                (unsigned long long)ctx.stats.reflection,
+                (unsigned long long)ctx.stats.refraction,
+                (unsigned long long)ctx.stats.transmission,
+                (unsigned)ctx.stats.precision_lost_pixels);
+    free(row);
+    image_free(&img);
+    free(mem);
+    free(bytes);
+    return rc != 0;
+}

@@ -1,0 +1,238 @@
+/* scene_compile.c: struct sd_scene into the compiled form of
+ * proto/scene_format.h.  Angles become the cosines, tangent and quaternions
+ * the board needs; everything else is copied field by field through
+ * proto/wire.h. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "host-tools/scene/scene_desc.h"
+#include "proto/crc32.h"
+#include "proto/wire.h"
+
+#define COMPILE_PI 3.14159265358979323846
+
+struct compile_section {
+    int kind;
+    uint32_t count, record;  /* records, bytes per record */
+    uint32_t offset;         /* filled in by the layout */
+};
+
+static void compile_vec3(uint8_t *p, const double v[3])
+{
+    for (int i = 0; i < 3; i++)
+        wire_put_f32(p + 4 * i, (float)v[i]);
+}
+
+static void compile_view(const struct sd_scene *s, uint8_t *p)
+{
+    const struct sd_view *v = &s->view;
+    compile_vec3(p + SCN_VIEW_EYE, v->eye);
+    compile_vec3(p + SCN_VIEW_LOOK_AT, v->look_at);
+    compile_vec3(p + SCN_VIEW_UP, v->up);
+    /* fov is horizontal (as POV-Ray's angle); the renderer wants the
+     * vertical half-angle's tangent. */
+    double tan_x = tan(v->fov * COMPILE_PI / 360.0);
+    wire_put_f32(p + SCN_VIEW_TAN_HALF_FOV_Y, (float)(tan_x * v->height / v->width));
+    wire_put_u16(p + SCN_VIEW_WIDTH, (uint16_t)v->width);
+    wire_put_u16(p + SCN_VIEW_HEIGHT, (uint16_t)v->height);
+    compile_vec3(p + SCN_VIEW_BACKGROUND, v->background);
+    wire_put_u16(p + SCN_VIEW_MAX_DEPTH, (uint16_t)v->max_depth);
+    wire_put_u16(p + SCN_VIEW_FLAGS, (uint16_t)v->flags);
+    wire_put_u32(p + SCN_VIEW_FRAMES, (uint32_t)v->frames);
+}
+
+static void compile_light(const struct sd_light *l, uint8_t *p)
+{
+    wire_put_u32(p + SCN_LIGHT_KIND, (uint32_t)l->kind);
+    compile_vec3(p + SCN_LIGHT_COLOUR, l->colour);
+    compile_vec3(p + SCN_LIGHT_POSITION, l->position);
+    compile_vec3(p + SCN_LIGHT_DIRECTION, l->direction);
+    double inner = 1, outer = 0;
+    if (l->kind == SCN_LIGHT_SPOT) {
+        inner = cos(l->cone * COMPILE_PI / 180.0);
+        outer = cos((l->cone + l->falloff) * COMPILE_PI / 180.0);
+    }
+    wire_put_f32(p + SCN_LIGHT_COS_INNER, (float)inner);
+    wire_put_f32(p + SCN_LIGHT_COS_OUTER, (float)outer);
+}
+
+static uint16_t compile_index(int i) { return i < 0 ? SCN_NO_INDEX : (uint16_t)i; }
+
+static void compile_material(const struct sd_material *m, uint8_t *p)
+{
+    compile_vec3(p + SCN_MAT_COLOUR, m->colour);
+    wire_put_f32(p + SCN_MAT_DIC, (float)m->dic);
+    wire_put_f32(p + SCN_MAT_DRC, (float)m->drc);
+    wire_put_f32(p + SCN_MAT_SRC, (float)m->src);
+    wire_put_f32(p + SCN_MAT_TRC, (float)m->trc);
+    wire_put_f32(p + SCN_MAT_FRESNEL, (float)m->fresnel);
+    wire_put_f32(p + SCN_MAT_IOR, (float)m->ior);
+    wire_put_u16(p + SCN_MAT_PHONG, (uint16_t)m->phong);
+    wire_put_u16(p + SCN_MAT_COLOUR_MAP, compile_index(m->colour_map));
+    wire_put_u16(p + SCN_MAT_BUMP_MAP, compile_index(m->bump_map));
+}
+
+static size_t compile_map_bytes(const struct sd_map *m)
+{
+    size_t bpt = m->kind == SCN_MAP_COLOUR ? SCN_MAP_COLOUR_BYTES : SCN_MAP_BUMP_BYTES;
+    return (size_t)m->width * (size_t)m->height * bpt;
+}
+
+static void compile_cluster(const struct sd_cluster *c, uint8_t *p)
+{
+    wire_put_u16(p + SCN_CLUSTER_PARENT, compile_index(c->parent));
+    wire_put_u16(p + SCN_CLUSTER_KEY_COUNT, (uint16_t)c->key_count);
+    wire_put_u32(p + SCN_CLUSTER_KEY_FIRST, (uint32_t)(c->key_count ? c->key_first : 0));
+    for (int i = 0; i < 12; i++)
+        wire_put_f32(p + SCN_CLUSTER_MATRIX + 4 * i, (float)c->m[i]);
+}
+
+static void compile_prim(const struct sd_prim *pr, uint8_t *p)
+{
+    wire_put_u16(p + SCN_PRIM_KIND, (uint16_t)pr->kind);
+    wire_put_u16(p + SCN_PRIM_MATERIAL, (uint16_t)pr->material);
+    wire_put_u16(p + SCN_PRIM_CLUSTER, (uint16_t)pr->cluster);
+    if (pr->kind == SCN_PRIM_DENSITY) {
+        wire_put_u32(p + SCN_PRIM_FIRST, (uint32_t)pr->first);
+        wire_put_u32(p + SCN_PRIM_COUNT, (uint32_t)pr->count);
+    }
+    for (int i = 0; i < SCN_PRIM_MAX_VALUES; i++)
+        wire_put_f32(p + SCN_PRIM_VALUES + 4 * i, (float)pr->v[i]);
+}
+
+static void compile_key(const struct sd_key *k, uint8_t *p)
+{
+    double q[4];
+    sd_euler_quat(k->rotate, q);
+    wire_put_u32(p + SCN_KEY_FRAME, (uint32_t)k->frame);
+    compile_vec3(p + SCN_KEY_TRANSLATE, k->translate);
+    for (int i = 0; i < 4; i++)
+        wire_put_f32(p + SCN_KEY_ROTATION + 4 * i, (float)q[i]);
+    compile_vec3(p + SCN_KEY_SCALE, k->scale);
+}
+
+int sd_compile(const struct sd_scene *s, uint8_t **out, size_t *len, char *err, size_t errlen)
+{
+    *out = NULL;
+    *len = 0;
+    size_t texel_bytes = 0;
+    for (int i = 0; i < s->n_maps; i++)
+        texel_bytes += compile_map_bytes(&s->maps[i]);
+    if (texel_bytes > SCN_MAX_TEXEL_BYTES) {
+        snprintf(err, errlen, "maps hold %zu texel bytes, more than the %u allowed",
+                 texel_bytes, SCN_MAX_TEXEL_BYTES);
+        return -1;
+    }
+    struct compile_section all[SCN_SEC_COUNT] = {
+        {SCN_SEC_VIEW, 1, SCN_VIEW_SIZE, 0},
+        {SCN_SEC_LIGHTS, (uint32_t)s->n_lights, SCN_LIGHT_SIZE, 0},
+        {SCN_SEC_MATERIALS, (uint32_t)s->n_materials, SCN_MAT_SIZE, 0},
+        {SCN_SEC_MAPS, (uint32_t)s->n_maps, SCN_MAP_SIZE, 0},
+        {SCN_SEC_TEXELS, (uint32_t)texel_bytes, 1, 0},
+        {SCN_SEC_CLUSTERS, (uint32_t)s->n_clusters, SCN_CLUSTER_SIZE, 0},
+        {SCN_SEC_PRIMS, (uint32_t)s->n_prims, SCN_PRIM_SIZE, 0},
+        {SCN_SEC_COMPONENTS, (uint32_t)s->n_components, SCN_COMPONENT_SIZE, 0},
+        {SCN_SEC_KEYS, (uint32_t)s->n_keys, SCN_KEY_SIZE, 0},
+    };
+    /* Layout: header, table of the non-empty sections, then their bodies. */
+    struct compile_section used[SCN_SEC_COUNT];
+    int n = 0;
+    for (int i = 0; i < SCN_SEC_COUNT; i++)
+        if (all[i].count > 0)
+            used[n++] = all[i];
+    size_t pos = SCN_HEADER_SIZE + (size_t)n * SCN_SECENT_SIZE;
+    for (int i = 0; i < n; i++) {
+        pos = (pos + SCN_SECTION_ALIGN - 1) & ~(size_t)(SCN_SECTION_ALIGN - 1);
+        used[i].offset = (uint32_t)pos;
+        pos += (size_t)used[i].count * used[i].record;
+    }
+    size_t total = (pos + SCN_SECTION_ALIGN - 1) & ~(size_t)(SCN_SECTION_ALIGN - 1);
+    if (total > SCN_MAX_SIZE) {
+        snprintf(err, errlen, "compiled scene is %zu bytes, more than the %u allowed", total,
+                 SCN_MAX_SIZE);
+        return -1;
+    }
+    uint8_t *b = calloc(1, total);
+    if (!b) {
+        snprintf(err, errlen, "out of memory compiling the scene");
+        return -1;
+    }
+    for (int i = 0; i < n; i++) {
+        uint8_t *e = b + SCN_HEADER_SIZE + i * SCN_SECENT_SIZE;
+        wire_put_u32(e + SCN_SECENT_KIND, (uint32_t)used[i].kind);
+        wire_put_u32(e + SCN_SECENT_OFFSET, used[i].offset);
+        wire_put_u32(e + SCN_SECENT_BYTES, used[i].count * used[i].record);
+        wire_put_u32(e + SCN_SECENT_COUNT, used[i].count);
+        uint8_t *p = b + used[i].offset;
+        switch (used[i].kind) {
+        case SCN_SEC_VIEW:
+            compile_view(s, p);
+            break;
+        case SCN_SEC_LIGHTS:
+            for (int k = 0; k < s->n_lights; k++)
+                compile_light(&s->lights[k], p + k * SCN_LIGHT_SIZE);
+            break;
+        case SCN_SEC_MATERIALS:
+            for (int k = 0; k < s->n_materials; k++)
+                compile_material(&s->materials[k], p + k * SCN_MAT_SIZE);
+            break;
+        case SCN_SEC_MAPS: {
+            uint32_t first = 0;
+            for (int k = 0; k < s->n_maps; k++) {
+                const struct sd_map *m = &s->maps[k];
+                uint8_t *r = p + k * SCN_MAP_SIZE;
+                wire_put_u16(r + SCN_MAP_KIND, (uint16_t)m->kind);
+                wire_put_u16(r + SCN_MAP_WIDTH, (uint16_t)m->width);
+                wire_put_u16(r + SCN_MAP_HEIGHT, (uint16_t)m->height);
+                wire_put_u32(r + SCN_MAP_FIRST, first);
+                wire_put_f32(r + SCN_MAP_REPEAT_U, (float)m->repeat_u);
+                wire_put_f32(r + SCN_MAP_REPEAT_V, (float)m->repeat_v);
+                wire_put_f32(r + SCN_MAP_BUMP_DEPTH, (float)m->bump_depth);
+                first += (uint32_t)compile_map_bytes(m);
+            }
+            break;
+        }
+        case SCN_SEC_TEXELS:
+            for (int k = 0; k < s->n_maps; k++) {
+                size_t mb = compile_map_bytes(&s->maps[k]);
+                memcpy(p, s->maps[k].texels, mb);
+                p += mb;
+            }
+            break;
+        case SCN_SEC_CLUSTERS:
+            for (int k = 0; k < s->n_clusters; k++)
+                compile_cluster(&s->clusters[k], p + k * SCN_CLUSTER_SIZE);
+            break;
+        case SCN_SEC_PRIMS:
+            for (int k = 0; k < s->n_prims; k++)
+                compile_prim(&s->prims[k], p + (size_t)k * SCN_PRIM_SIZE);
+            break;
+        case SCN_SEC_COMPONENTS:
+            for (int k = 0; k < s->n_components; k++) {
+                const struct sd_component *c = &s->components[k];
+                uint8_t *r = p + (size_t)k * SCN_COMPONENT_SIZE;
+                compile_vec3(r + SCN_COMPONENT_CENTRE, c->centre);
+                wire_put_f32(r + SCN_COMPONENT_RADIUS, (float)c->radius);
+                wire_put_f32(r + SCN_COMPONENT_WEIGHT, (float)c->weight);
+            }
+            break;
+        case SCN_SEC_KEYS:
+            for (int k = 0; k < s->n_keys; k++)
+                compile_key(&s->keys[k], p + (size_t)k * SCN_KEY_SIZE);
+            break;
+        }
+    }
+    b[SCN_HDR_MAGIC + 0] = SCN_MAGIC_0;
+    b[SCN_HDR_MAGIC + 1] = SCN_MAGIC_1;
+    b[SCN_HDR_MAGIC + 2] = SCN_MAGIC_2;
+    b[SCN_HDR_MAGIC + 3] = SCN_MAGIC_3;
+    wire_put_u16(b + SCN_HDR_VERSION, SCN_VERSION);
+    wire_put_u16(b + SCN_HDR_SECTIONS, (uint16_t)n);
+    wire_put_u32(b + SCN_HDR_TOTAL, (uint32_t)total);
+    wire_put_u32(b + SCN_HDR_CRC, crc32(b + SCN_CRC_START, total - SCN_CRC_START));
+    *out = b;
+    *len = total;
+    return 0;
+}

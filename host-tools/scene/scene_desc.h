@@ -1,0 +1,119 @@
+/* scene_desc.h: a scene as the host tools hold it between the text form
+ * (scene_parse.c) and the outputs: the compiled form (scene_compile.c) and
+ * POV-Ray (scene_pov.c).  It mirrors proto/scene_format.h record for record,
+ * in double precision, with names kept for error messages.
+ */
+#ifndef LINKS1_HOST_SCENE_DESC_H
+#define LINKS1_HOST_SCENE_DESC_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "proto/scene_format.h"
+
+struct sd_view {
+    double eye[3], look_at[3], up[3];
+    double fov;             /* horizontal, degrees */
+    int width, height;
+    double background[3];
+    int max_depth;
+    unsigned flags;         /* SCN_OPT_* */
+    int frames;
+};
+
+struct sd_light {
+    int kind;               /* enum scn_light_kind */
+    double colour[3], position[3], direction[3];
+    double cone, falloff;   /* degrees */
+};
+
+struct sd_material {
+    char name[SCN_MAX_NAME];
+    double colour[3], dic, drc;
+    double src, trc;        /* at normal incidence */
+    double fresnel;         /* 0 = constant src/trc */
+    double ior;
+    int phong;
+    int colour_map, bump_map; /* map index or -1 */
+};
+
+struct sd_map {
+    char name[SCN_MAX_NAME];
+    int kind;               /* enum scn_map_kind */
+    int width, height;
+    uint8_t *texels;        /* width * height * bytes per texel, malloc'ed */
+    double repeat_u, repeat_v, bump_depth;
+};
+
+struct sd_key {
+    int frame;
+    double translate[3], rotate[3], scale[3]; /* rotate: degrees about x, y, z */
+};
+
+struct sd_cluster {
+    char name[SCN_MAX_NAME];
+    int parent;             /* -1 for the root */
+    double m[12];           /* 3x4 row-major, cluster -> parent */
+    int key_first, key_count;
+};
+
+struct sd_component {
+    double centre[3], radius, weight;
+};
+
+struct sd_prim {
+    int kind;               /* enum scn_prim_kind */
+    int material, cluster;
+    double v[SCN_PRIM_MAX_VALUES]; /* as in proto/scene_format.h */
+    int first, count;       /* DENSITY: into components[] */
+};
+
+struct sd_scene {
+    struct sd_view view;
+    struct sd_light lights[SCN_MAX_LIGHTS];
+    int n_lights;
+    struct sd_material *materials;
+    int n_materials;
+    struct sd_map maps[SCN_MAX_MAPS];
+    int n_maps;
+    struct sd_cluster *clusters;
+    int n_clusters;
+    struct sd_prim *prims;
+    int n_prims;
+    struct sd_component *components;
+    int n_components;
+    struct sd_key *keys;
+    int n_keys;
+};
+
+#define SD_ERR_MAX 512 /* room for "file:line:col: message" */
+
+/* Parses the text scene at path into *s.  On failure returns -1 with
+ * "file:line:col: what is wrong" in err and *s empty. */
+int sd_parse_file(const char *path, struct sd_scene *s, char *err, size_t errlen);
+int sd_parse_text(const char *name, const char *text, struct sd_scene *s,
+                  char *err, size_t errlen);
+void sd_free(struct sd_scene *s);
+
+/* The compiled form in a malloc'ed buffer (*out, *len); -1 with err if the
+ * scene exceeds a limit of the format. */
+int sd_compile(const struct sd_scene *s, uint8_t **out, size_t *len,
+               char *err, size_t errlen);
+
+/* The POV-Ray 3.7 form of frame `frame`; -1 with err naming what POV-Ray
+ * cannot carry when strict is set (otherwise such parts are approximated
+ * and listed as comments in the output). */
+int sd_export_pov(const struct sd_scene *s, int frame, int strict,
+                  const char *path, char *err, size_t errlen);
+
+/* Keyframe placement K(frame) of cluster c as a 3x4 matrix (identity when
+ * it has no keys), interpolated as the renderer does (render/scene.h). */
+void sd_key_matrix(const struct sd_scene *s, int c, int frame, double k[12]);
+/* The 3x4 product a * b (apply b, then a). */
+void sd_mat_mul(const double a[12], const double b[12], double out[12]);
+/* Unit quaternion (w, x, y, z) of rotations about x, then y, then z (degrees). */
+void sd_euler_quat(const double deg[3], double q[4]);
+/* 3x4 rotation matrix of a unit quaternion. */
+void sd_quat_matrix(const double q[4], double m[12]);
+
+#endif

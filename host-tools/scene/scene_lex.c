@@ -1,0 +1,176 @@
+/* scene_lex.c: tokenizer of the text scene format (see scene_lex.h). */
+#include "host-tools/scene/scene_lex.h"
+
+#include <ctype.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+void lex_init(struct lex *lx, const char *file, const char *text, jmp_buf *fail,
+              char *err, size_t errlen)
+{
+    memset(lx, 0, sizeof *lx);
+    lx->file = file;
+    lx->text = text;
+    lx->line = 1;
+    lx->col = 1;
+    lx->fail = fail;
+    lx->err = err;
+    lx->errlen = errlen;
+}
+
+void lex_error(struct lex *lx, const char *fmt, ...)
+{
+    int n = snprintf(lx->err, lx->errlen, "%s:%d:%d: ", lx->file, lx->tok_line,
+                     lx->tok_col);
+    if (n >= 0 && (size_t)n < lx->errlen) {
+        va_list ap;
+        va_start(ap, fmt);
+        vsnprintf(lx->err + n, lx->errlen - (size_t)n, fmt, ap);
+        va_end(ap);
+    }
+    longjmp(*lx->fail, 1);
+}
+
+static int lex_peekc(const struct lex *lx) { return (unsigned char)lx->text[lx->pos]; }
+
+static void lex_advance(struct lex *lx)
+{
+    if (lx->text[lx->pos] == '\n') {
+        lx->line++;
+        lx->col = 1;
+    } else {
+        lx->col++;
+    }
+    lx->pos++;
+}
+
+static void lex_skip_space(struct lex *lx)
+{
+    for (;;) {
+        int c = lex_peekc(lx);
+        if (c == '#') {
+            while (lex_peekc(lx) && lex_peekc(lx) != '\n')
+                lex_advance(lx);
+        } else if (c && isspace(c)) {
+            lex_advance(lx);
+        } else {
+            return;
+        }
+    }
+}
+
+static void lex_take(struct lex *lx, size_t *n)
+{
+    if (*n + 1 >= sizeof lx->tok)
+        lex_error(lx, "token longer than %d characters", LEX_TOKEN_MAX - 1);
+    lx->tok[(*n)++] = (char)lex_peekc(lx);
+    lex_advance(lx);
+}
+
+void lex_next(struct lex *lx)
+{
+    lex_skip_space(lx);
+    lx->tok_line = lx->line;
+    lx->tok_col = lx->col;
+    size_t n = 0;
+    int c = lex_peekc(lx);
+    if (c == 0) {
+        lx->kind = LEX_END;
+        strcpy(lx->tok, "end of file");
+        return;
+    }
+    if (c == '{' || c == '}') {
+        lx->kind = c == '{' ? LEX_OPEN : LEX_CLOSE;
+        lex_take(lx, &n);
+    } else if (isalpha(c) || c == '_') {
+        lx->kind = LEX_WORD;
+        while (isalnum(lex_peekc(lx)) || strchr("_.-", lex_peekc(lx)) != NULL)
+            if (lex_peekc(lx))
+                lex_take(lx, &n);
+    } else if (isdigit(c) || c == '-' || c == '+' || c == '.') {
+        lx->kind = LEX_NUMBER;
+        while (lex_peekc(lx) && !isspace(lex_peekc(lx)) &&
+               strchr("{}#\"", lex_peekc(lx)) == NULL)
+            lex_take(lx, &n);
+        lx->tok[n] = 0;
+        char *end;
+        lx->num = strtod(lx->tok, &end);
+        if (*end != 0 || end == lx->tok)
+            lex_error(lx, "'%s' is not a number", lx->tok);
+        if (!isfinite(lx->num))
+            lex_error(lx, "'%s' is not a finite number", lx->tok);
+    } else if (c == '"') {
+        lx->kind = LEX_STRING;
+        lex_advance(lx);
+        while (lex_peekc(lx) != '"') {
+            if (lex_peekc(lx) == 0 || lex_peekc(lx) == '\n')
+                lex_error(lx, "string not closed on its line");
+            lex_take(lx, &n);
+        }
+        lex_advance(lx);
+    } else {
+        lex_error(lx, "unexpected character '%c'", c);
+    }
+    lx->tok[n] = 0;
+}
+
+int lex_is_word(const struct lex *lx, const char *w)
+{
+    return lx->kind == LEX_WORD && strcmp(lx->tok, w) == 0;
+}
+
+void lex_expect(struct lex *lx, enum lex_kind kind, const char *what)
+{
+    if (lx->kind != kind)
+        lex_error(lx, "expected %s, found '%s'", what, lx->tok);
+    lex_next(lx);
+}
+
+double lex_number(struct lex *lx, const char *what)
+{
+    if (lx->kind != LEX_NUMBER)
+        lex_error(lx, "expected a number (%s), found '%s'", what, lx->tok);
+    double v = lx->num;
+    lex_next(lx);
+    return v;
+}
+
+double lex_number_in(struct lex *lx, const char *what, double lo, double hi)
+{
+    if (lx->kind == LEX_NUMBER && (lx->num < lo || lx->num > hi))
+        lex_error(lx, "%s must be %g..%g, not %s", what, lo, hi, lx->tok);
+    return lex_number(lx, what);
+}
+
+int lex_int(struct lex *lx, const char *what, int lo, int hi)
+{
+    if (lx->kind != LEX_NUMBER)
+        lex_error(lx, "expected an integer (%s), found '%s'", what, lx->tok);
+    double v = lx->num;
+    if (v != floor(v))
+        lex_error(lx, "%s must be a whole number, not %s", what, lx->tok);
+    if (v < lo || v > hi)
+        lex_error(lx, "%s must be %d..%d, not %s", what, lo, hi, lx->tok);
+    lex_next(lx);
+    return (int)v;
+}
+
+void lex_vec3(struct lex *lx, const char *what, double v[3])
+{
+    for (int i = 0; i < 3; i++)
+        v[i] = lex_number(lx, what);
+}
+
+void lex_word(struct lex *lx, const char *what, char *out, size_t outlen)
+{
+    if (lx->kind != LEX_WORD)
+        lex_error(lx, "expected %s, found '%s'", what, lx->tok);
+    if (strlen(lx->tok) >= outlen)
+        lex_error(lx, "%s '%s' is longer than %zu characters", what, lx->tok,
+                  outlen - 1);
+    strcpy(out, lx->tok);
+    lex_next(lx);
+}

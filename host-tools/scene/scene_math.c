@@ -1,0 +1,108 @@
+/* scene_math.c: the host's 3x4 matrices and quaternions for scene files:
+ * composing transform statements, turning Euler angles into the quaternions
+ * the board interpolates (it has no trigonometry), and evaluating keyframes
+ * for outputs that need a fixed frame (POV-Ray). */
+#include <math.h>
+#include <string.h>
+
+#include "host-tools/scene/scene_desc.h"
+
+#define SD_PI 3.14159265358979323846
+
+void sd_mat_mul(const double a[12], const double b[12], double out[12])
+{
+    for (int r = 0; r < 3; r++) {
+        for (int c = 0; c < 4; c++) {
+            double v = c == 3 ? a[r * 4 + 3] : 0;
+            for (int k = 0; k < 3; k++)
+                v += a[r * 4 + k] * b[k * 4 + c];
+            out[r * 4 + c] = v;
+        }
+    }
+}
+
+/* q = a * b (apply b, then a) */
+static void sd_quat_mul(const double a[4], const double b[4], double q[4])
+{
+    q[0] = a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3];
+    q[1] = a[0] * b[1] + a[1] * b[0] + a[2] * b[3] - a[3] * b[2];
+    q[2] = a[0] * b[2] - a[1] * b[3] + a[2] * b[0] + a[3] * b[1];
+    q[3] = a[0] * b[3] + a[1] * b[2] - a[2] * b[1] + a[3] * b[0];
+}
+
+void sd_euler_quat(const double deg[3], double q[4])
+{
+    double axis[3][4];
+    for (int i = 0; i < 3; i++) {
+        double h = deg[i] * SD_PI / 360.0; /* half angle, radians */
+        memset(axis[i], 0, sizeof axis[i]);
+        axis[i][0] = cos(h);
+        axis[i][1 + i] = sin(h);
+    }
+    double zy[4];
+    sd_quat_mul(axis[2], axis[1], zy);
+    sd_quat_mul(zy, axis[0], q); /* x first, then y, then z */
+}
+
+void sd_quat_matrix(const double q[4], double m[12])
+{
+    double w = q[0], x = q[1], y = q[2], z = q[3];
+    double r[12] = {
+        1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y), 0,
+        2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x), 0,
+        2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y), 0,
+    };
+    memcpy(m, r, sizeof r);
+}
+
+static void sd_key_trs(const struct sd_key *k, double t[3], double q[4], double s[3])
+{
+    memcpy(t, k->translate, 3 * sizeof *t);
+    memcpy(s, k->scale, 3 * sizeof *s);
+    sd_euler_quat(k->rotate, q);
+}
+
+void sd_key_matrix(const struct sd_scene *s, int c, int frame, double k[12])
+{
+    const struct sd_cluster *cl = &s->clusters[c];
+    double t[3], q[4], sc[3];
+    memset(k, 0, 12 * sizeof *k);
+    k[0] = k[5] = k[10] = 1;
+    if (cl->key_count == 0)
+        return;
+    const struct sd_key *keys = s->keys + cl->key_first;
+    int n = cl->key_count;
+    if (frame <= keys[0].frame) {
+        sd_key_trs(&keys[0], t, q, sc);
+    } else if (frame >= keys[n - 1].frame) {
+        sd_key_trs(&keys[n - 1], t, q, sc);
+    } else {
+        int i = 0;
+        while (keys[i + 1].frame <= frame)
+            i++;
+        double a = (double)(frame - keys[i].frame) / (keys[i + 1].frame - keys[i].frame);
+        double t1[3], q1[4], s1[3];
+        sd_key_trs(&keys[i], t, q, sc);
+        sd_key_trs(&keys[i + 1], t1, q1, s1);
+        /* normalised linear interpolation along the shorter arc */
+        double dot = q[0] * q1[0] + q[1] * q1[1] + q[2] * q1[2] + q[3] * q1[3];
+        double sign = dot < 0 ? -1 : 1, len = 0;
+        for (int j = 0; j < 4; j++) {
+            q[j] = q[j] * (1 - a) + sign * q1[j] * a;
+            len += q[j] * q[j];
+        }
+        for (int j = 0; j < 4; j++)
+            q[j] /= sqrt(len);
+        for (int j = 0; j < 3; j++) {
+            t[j] = t[j] * (1 - a) + t1[j] * a;
+            sc[j] = sc[j] * (1 - a) + s1[j] * a;
+        }
+    }
+    double r[12];
+    sd_quat_matrix(q, r);
+    for (int row = 0; row < 3; row++) {
+        for (int col = 0; col < 3; col++)
+            k[row * 4 + col] = r[row * 4 + col] * sc[col];
+        k[row * 4 + 3] = t[row];
+    }
+}

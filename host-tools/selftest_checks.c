@@ -1,0 +1,160 @@
+/* selftest_checks.c: the command checks of `links1 selftest`: status,
+ * serial-line ping, IMSU, inter-unit stress, fault injection. */
+#include <stdio.h>
+#include <string.h>
+
+#include "host-tools/selftest.h"
+#include "proto/wire.h"
+
+int selftest_command(struct board *b, uint16_t cmd, const void *args, size_t len,
+                     int timeout_ms, size_t min_fields, struct board_frame *r,
+                     const uint8_t **fields, char *why, size_t cap)
+{
+    int status;
+    size_t n;
+    if (board_send_cmd(b, cmd, args, len) < 0) {
+        snprintf(why, cap, "could not send command %u", cmd);
+        return -1;
+    }
+    if (board_wait_result(b, cmd, timeout_ms, r, &status, fields, &n) < 0) {
+        snprintf(why, cap, "no valid result for command %u", cmd);
+        return -1;
+    }
+    if (status < 0) {
+        snprintf(why, cap, "the board answered status %d: %.*s", status, (int)n,
+                 (const char *)*fields);
+        return -1;
+    }
+    if (n < min_fields) {
+        snprintf(why, cap, "result of command %u has %zu bytes of fields, want %zu", cmd, n,
+                 min_fields);
+        return -1;
+    }
+    return 0;
+}
+
+int selftest_status(struct board *b, const struct selftest_args *a, char *why, size_t cap)
+{
+    (void)a;
+    struct board_frame r;
+    const uint8_t *f;
+    if (selftest_command(b, CMD_STATUS, NULL, 0, BOARD_FRAME_TIMEOUT_MS, 4, &r, &f, why,
+                         cap) < 0)
+        return -1;
+    unsigned ncores = wire_get_u16(f), units = wire_get_u16(f + 2);
+    snprintf(why, cap, "board reports %u cores, %u unit computers reported in", ncores, units);
+    return ncores == (unsigned)b->opts.ncores && units == ncores ? 0 : -1;
+}
+
+int selftest_ping(struct board *b, const struct selftest_args *a, char *why, size_t cap)
+{
+    (void)a;
+    struct board_frame r;
+    const uint8_t *f;
+    if (selftest_command(b, CMD_LINE_PING, NULL, 0, BOARD_FRAME_TIMEOUT_MS, 4, &r, &f, why,
+                         cap) < 0)
+        return -1;
+    /* One line DM-RC plus one RC-NC line per NC. */
+    uint32_t want = (uint32_t)b->opts.ncores - 1, ok = wire_get_u32(f);
+    snprintf(why, cap, "%u of %u serial lines answered the ping", ok, want);
+    return ok == want ? 0 : -1;
+}
+
+int selftest_imsu(struct board *b, const struct selftest_args *a, char *why, size_t cap)
+{
+    (void)a;
+    struct board_frame r;
+    const uint8_t *f;
+    if (selftest_command(b, CMD_IMSU_TEST, NULL, 0, BOARD_FRAME_TIMEOUT_MS, 4, &r, &f, why,
+                         cap) < 0)
+        return -1;
+    uint32_t blocks = wire_get_u32(f);
+    snprintf(why, cap, "%u IMSU blocks swapped or broadcast with matching checksums", blocks);
+    return blocks > 0 ? 0 : -1;
+}
+
+int selftest_stress(struct board *b, const struct selftest_args *a, char *why, size_t cap)
+{
+    struct board_frame r;
+    const uint8_t *f;
+    uint8_t arg[4];
+    wire_put_u32(arg, a->stress_mib);
+    int timeout = BOARD_FRAME_TIMEOUT_MS + (int)a->stress_mib * BOARD_STRESS_MS_PER_MIB;
+    if (selftest_command(b, CMD_LINE_STRESS, arg, sizeof arg, timeout, 12, &r, &f, why,
+                         cap) < 0)
+        return -1;
+    uint64_t bytes = wire_get_u64(f);
+    uint32_t errors = wire_get_u32(f + 8);
+    snprintf(why, cap, "%llu bytes (%.1f MiB) through the inter-unit lines, %u errors",
+             (unsigned long long)bytes, (double)bytes / (1 << 20), errors);
+    return bytes >= ((uint64_t)a->stress_mib << 20) && errors == 0 ? 0 : -1;
+}
+
+/* Waits for a FAULT frame after the first `before` faults; returns its index. */
+static int wait_new_fault(struct board *b, int before, int timeout_ms)
+{
+    long long end = board_now_ms() + timeout_ms;
+    while (b->nfaults <= before) {
+        long long left = end - board_now_ms();
+        if (left <= 0 || board_pump(b, (int)left) < 0)
+            return -1;
+    }
+    return before;
+}
+
+int selftest_fault(struct board *b, const struct selftest_args *a, char *why, size_t cap)
+{
+    struct board_frame r;
+    const uint8_t *f;
+    uint8_t arg[3];
+    int before = b->nfaults;
+    wire_put_u16(arg, (uint16_t)a->fault_core);
+    wire_put_u8(arg + 2, FAULT_UNDEF);
+    if (selftest_command(b, CMD_FAULT_INJECT, arg, sizeof arg, BOARD_FRAME_TIMEOUT_MS, 0, &r,
+                         &f, why, cap) < 0)
+        return -1;
+    int k = wait_new_fault(b, before, BOARD_FRAME_TIMEOUT_MS);
+    if (k < 0 || k >= BOARD_MAX_FAULTS) {
+        snprintf(why, cap, "no fault report from core %d within %d ms", a->fault_core,
+                 BOARD_FRAME_TIMEOUT_MS);
+        return -1;
+    }
+    const struct link_fault *ft = &b->faults[k];
+    int want_role = a->fault_core >= ROLE_NC ? ROLE_NC : a->fault_core;
+    if (ft->core != a->fault_core || ft->role != want_role || ft->kind != FAULT_UNDEF ||
+        ft->addr == 0) {
+        snprintf(why, cap, "fault report says core %u role %u kind %u at 0x%08x; want core "
+                 "%d role %d kind %d (undefined instruction) at a non-zero address",
+                 ft->core, ft->role, ft->kind, ft->addr, a->fault_core, want_role,
+                 FAULT_UNDEF);
+        return -1;
+    }
+    /* The rest of the board must still answer: status, then a ping over
+     * every serial line but the faulted NC's. */
+    char sub[SELFTEST_WHY_SIZE / 2];
+    if (selftest_command(b, CMD_STATUS, NULL, 0, BOARD_FRAME_TIMEOUT_MS, 4, &r, &f, sub,
+                         sizeof sub) < 0) {
+        snprintf(why, cap, "after the fault, status failed: %s", sub);
+        return -1;
+    }
+    int status;
+    size_t n;
+    if (board_send_cmd(b, CMD_LINE_PING, NULL, 0) < 0 ||
+        board_wait_result(b, CMD_LINE_PING, BOARD_FRAME_TIMEOUT_MS, &r, &status, &f, &n) < 0 ||
+        n < 4) {
+        snprintf(why, cap, "after the fault on core %d the board did not answer a ping",
+                 a->fault_core);
+        return -1;
+    }
+    uint32_t ok = wire_get_u32(f), want = (uint32_t)b->opts.ncores - 2;
+    if (a->fault_core < ROLE_NC || ok != want) {
+        snprintf(why, cap, "core %d reported the fault at 0x%08x, then %u serial lines "
+                 "answered, want %u (all but the faulted NC's)", a->fault_core, ft->addr,
+                 ok, want);
+        return -1;
+    }
+    snprintf(why, cap, "core %d NC reported the undefined instruction at 0x%08x; the other "
+             "%d cores still answer (%u lines ok)", a->fault_core, ft->addr,
+             b->opts.ncores - 1, ok);
+    return 0;
+}

@@ -1,0 +1,54 @@
+/* kmem.c: per-unit-computer private memory (see kmem.h). */
+#include "kernel/kmem.h"
+
+#include "kernel/cpu.h"
+#include "kernel/memlayout.h"
+#include "kernel/panic.h"
+
+/* NC shares are whole multiples of this, so each starts page aligned. */
+#define KMEM_NC_SHARE_ALIGN (64u * 1024u)
+
+void kmem_init(uint32_t core, uint32_t ncores)
+{
+    struct cpu *c = cpu_of(core);
+    if (core == 0) {
+        c->mem_base = (uint8_t *)__dm_private_start;
+        c->mem_size = LINKER_VALUE(LINKS1_DM_PRIVATE);
+    } else if (core == 1) {
+        c->mem_base = (uint8_t *)__rc_private_start;
+        c->mem_size = LINKER_VALUE(LINKS1_RC_PRIVATE);
+    } else {
+        uint32_t ncs = ncores - FIRST_NC;
+        size_t pool = (size_t)(__nc_pool_end - __nc_pool_start);
+        size_t share = (pool / ncs) & ~(size_t)(KMEM_NC_SHARE_ALIGN - 1);
+        c->mem_base = (uint8_t *)__nc_pool_start + share * (core - FIRST_NC);
+        c->mem_size = share;
+    }
+    c->mem_used = 0;
+    c->mem_high = 0;
+}
+
+void *kmem_alloc(size_t n, const char *what)
+{
+    struct cpu *c = mycpu();
+    size_t need = (n + 7u) & ~(size_t)7u;
+    if (need > c->mem_size - c->mem_used)
+        panic("kmem: %s %u out of private memory for %s: asked %u bytes, %u of %u left",
+              cpu_role_name(c->role), (unsigned)c->core, what, (unsigned)n,
+              (unsigned)(c->mem_size - c->mem_used), (unsigned)c->mem_size);
+    void *p = c->mem_base + c->mem_used;
+    c->mem_used += need;
+    if (c->mem_used > c->mem_high)
+        c->mem_high = c->mem_used;
+    return p;
+}
+
+size_t kmem_size(void)
+{
+    return mycpu()->mem_size;
+}
+
+size_t kmem_high_water(void)
+{
+    return mycpu()->mem_high;
+}

@@ -1,0 +1,21 @@
+/* ktime.h: time from the ARM generic timer (CNTPCT, CNTFRQ) and the
+ * per-core timer interrupt that wakes a sleeping core at a deadline. */
+#ifndef LINKS1_KERNEL_KTIME_H
+#define LINKS1_KERNEL_KTIME_H
+
+#include <stdint.h>
+
+/* Ticks of the system counter since reset (monotonic, same on every core). */
+uint64_t ktime_now(void);
+uint64_t ktime_ms_to_ticks(uint32_t ms);
+uint32_t ktime_ticks_to_ms(uint64_t ticks);
+/* now + ms, as a deadline for task_wait and friends. */
+uint64_t ktime_deadline_ms(uint32_t ms);
+/* 1 once deadline (non-zero) has passed. */
+int ktime_passed(uint64_t deadline);
+/* Makes this core's timer interrupt fire at deadline (0: no interrupt). */
+void ktime_arm(uint64_t deadline);
+/* Timer interrupt: masks the timer until the next ktime_arm. */
+void ktime_irq(void);
+
+#endif

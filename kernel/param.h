@@ -1,0 +1,56 @@
+/* param.h: every limit of the firmware in one place.
+ *
+ * Memory sizes that the linker carves (stacks, line rings, IMSU blocks,
+ * private memory) are defined once in linker/virt-memory.ld and reached
+ * through kernel/memlayout.h; the values here are the ones C needs at
+ * compile time.  kernel_check_layout() compares the two at boot. */
+#ifndef LINKS1_KERNEL_PARAM_H
+#define LINKS1_KERNEL_PARAM_H
+
+/* Cores (= unit computers): DM + RC + up to 254 NCs, as LINKS-1 was designed.
+ * Must equal LINKS1_MAX_CORES in linker/virt-memory.ld. */
+#define MAX_CORES 256
+#define MIN_CORES 3 /* DM, RC and at least one NC */
+#define FIRST_NC 2  /* core number of the first NC */
+
+/* Cores per GICv3 affinity cluster on the virt board: core k has
+ * MPIDR.Aff0 = k % CORES_PER_CLUSTER, Aff1 = k / CORES_PER_CLUSTER. */
+#define CORES_PER_CLUSTER 16
+
+/* Cooperative tasks per core, and the stack each task gets from its unit
+ * computer's private memory. */
+#define TASKS_PER_CORE 4
+#define TASK_STACK_SIZE (16 * 1024)
+#define TASK_NAME_MAX 16
+
+/* Host UART receive ring: must hold a full window of host DATA frames
+ * (LINK_DATA_WINDOW frames of LINK_DATA_CHUNK bytes) plus a command. */
+#define UART_RX_RING_SIZE (16 * 1024)
+
+/* Frames the DM's link receiver may queue for the command task (bytes of
+ * queued frame records, power of two). */
+#define DM_FRAME_QUEUE_SIZE (32 * 1024)
+
+/* Inter-unit serial lines: one ring per direction per line, power of two.
+ * Must equal LINKS1_LINE_RING in linker/virt-memory.ld. */
+#define LINE_RING_SIZE (8 * 1024)
+/* Largest payload of one inter-unit message. */
+#define LINE_MAX_PAYLOAD 1024
+
+/* Log text of one LINK_LOG frame / one panic message. */
+#define KLOG_MAX 200
+
+/* Timeouts (milliseconds of the generic timer). */
+#define PING_TIMEOUT_MS 2000      /* one ping-pong round over all lines */
+#define REPLY_TIMEOUT_MS 10000    /* a unit computer answering a request */
+#define STRESS_STALL_MS 10000     /* a stress run making no progress at all */
+#define LINK_ACK_TIMEOUT_MS 20000 /* the host acknowledging DATA */
+#define HELLO_WAIT_MS 30000       /* all units reporting in */
+
+/* IMSU self-test sizes: the pair test moves this much each way, the
+ * broadcast test this much to every NC (a slice of the carved blocks, so a
+ * 254-NC board finishes in seconds). */
+#define IMSU_TEST_PAIR_BYTES (1024 * 1024)
+#define IMSU_TEST_BCAST_BYTES (256 * 1024)
+
+#endif

@@ -1,0 +1,87 @@
+/* spinlock.c: named, owner-checked spinlocks (see spinlock.h). */
+#include "kernel/spinlock.h"
+
+#include "kernel/arch.h"
+#include "kernel/cpu.h"
+#include "kernel/panic.h"
+
+void spin_init(struct spinlock *l, const char *name)
+{
+    l->locked = 0;
+    l->name = name;
+    l->owner = SPIN_NO_OWNER;
+}
+
+int spin_holding(const struct spinlock *l)
+{
+    return l->locked && l->owner == (int)mycpu()->core;
+}
+
+void spin_lock(struct spinlock *l)
+{
+    irq_push_off();
+    if (spin_holding(l))
+        panic("spin_lock: lock '%s' already held by this core", l->name);
+    /* The exchange is an acquire: nothing inside the critical section can
+     * be seen by other cores before the lock is ours. */
+    while (__atomic_exchange_n(&l->locked, 1u, __ATOMIC_ACQUIRE) != 0) {
+        /* Another core holds it: wait for its SEV instead of hammering the
+         * line (a held lock is held for a few microseconds at most). */
+        while (__atomic_load_n(&l->locked, __ATOMIC_RELAXED) != 0)
+            arch_wfe();
+    }
+    l->owner = (int)mycpu()->core;
+    mycpu()->locks_held++;
+}
+
+void spin_unlock(struct spinlock *l)
+{
+    if (!spin_holding(l))
+        panic("spin_unlock: lock '%s' not held by this core (owner %d)", l->name,
+              l->owner);
+    l->owner = SPIN_NO_OWNER;
+    mycpu()->locks_held--;
+    /* Release: every write of the critical section is visible before the
+     * lock reads free.  The DSB completes the store before SEV wakes the
+     * cores waiting in WFE. */
+    __atomic_store_n(&l->locked, 0u, __ATOMIC_RELEASE);
+    arch_dsb();
+    arch_sev();
+    irq_pop_off();
+}
+
+int spin_force_release_if_mine(struct spinlock *l)
+{
+    if (!spin_holding(l))
+        return 0;
+    l->owner = SPIN_NO_OWNER;
+    mycpu()->locks_held--;
+    __atomic_store_n(&l->locked, 0u, __ATOMIC_RELEASE);
+    arch_dsb();
+    arch_sev();
+    return 1;
+}
+
+void irq_push_off(void)
+{
+    int enabled = (arch_read_cpsr() & ARCH_CPSR_I) == 0;
+    arch_irq_disable();
+    struct cpu *c = mycpu();
+    if (c->irq_depth == 0)
+        c->irq_were_enabled = enabled;
+    c->irq_depth++;
+}
+
+void irq_pop_off(void)
+{
+    struct cpu *c = mycpu();
+    if (arch_read_cpsr() & ARCH_CPSR_I) {
+        if (c->irq_depth < 1)
+            panic("irq_pop_off: not pushed");
+        c->irq_depth--;
+        if (c->irq_depth == 0 && c->irq_were_enabled)
+            arch_irq_enable();
+    } else {
+        panic("irq_pop_off: interrupts enabled inside a push_off section");
+    }
+}

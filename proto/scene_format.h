@@ -1,0 +1,226 @@
+/* scene_format.h: the compiled scene (".l1s"), the form a scene is uploaded
+ * in to the board's DM.  One definition for the host compiler
+ * (host-tools/scene/) and the loader (render/scene_load.c).
+ *
+ * Every field is little-endian and read with proto/wire.h, never by casting
+ * the buffer to a struct; reals are IEEE 754 binary32 bit patterns.
+ *
+ *   offset  size  field
+ *   0       4     magic   "L1SC"
+ *   4       2     version SCN_VERSION; any other value is refused
+ *   6       2     section count, 1..SCN_SEC_COUNT
+ *   8       4     total size in bytes (header + table + sections)
+ *   12      4     crc32 (proto/crc32.h) of bytes 16 .. total size - 1
+ *   16      16*n  section table: per section u32 kind, u32 offset (from the
+ *                 start of the file, 4-byte aligned), u32 size in bytes,
+ *                 u32 record count; size must equal count * record size
+ *   ...           section bodies
+ *
+ * Each kind appears at most once.  VIEW and CLUSTERS are required (cluster 0
+ * is the scene's root); the others may be absent, meaning zero records.
+ *
+ * The hierarchy: every cluster names its parent by index, and a parent's
+ * index is always smaller than its child's, so the tree is acyclic by
+ * construction and the loader checks it with one comparison per cluster.
+ * Primitives name the cluster they belong to and are given in that
+ * cluster's coordinates.  A cluster's placement in its parent is
+ * K(frame) * M: M is its static 3x4 matrix, K the transform interpolated
+ * from its keyframes (identity when it has none).
+ */
+#ifndef LINKS1_PROTO_SCENE_FORMAT_H
+#define LINKS1_PROTO_SCENE_FORMAT_H
+
+/* ------------------------------------------------------------ the limits */
+#define SCN_MAX_SIZE (16u * 1024u * 1024u) /* whole compiled scene, bytes */
+#define SCN_MAX_WIDTH 1024                 /* the frame memory is 1024x1024 */
+#define SCN_MAX_HEIGHT 1024
+#define SCN_MAX_LIGHTS 3 /* LINKS-1 scenes use up to three light sources */
+#define SCN_MAX_MATERIALS 1024
+#define SCN_MAX_MAPS 16
+#define SCN_MAX_MAP_SIDE 1024              /* texels per map row or column */
+#define SCN_MAX_TEXEL_BYTES (4u * 1024u * 1024u) /* over all maps */
+#define SCN_MAX_CLUSTERS 65535             /* 16-bit indices, 0xffff = none */
+#define SCN_MAX_CLUSTER_NESTING 32         /* clusters below the root */
+#define SCN_MAX_PRIMS 262144
+#define SCN_MAX_DENSITY_COMPONENTS 64      /* components of one density sphere */
+#define SCN_MAX_COMPONENTS 65536           /* density components, all prims */
+#define SCN_MAX_KEYS 65536                 /* keyframes over all clusters */
+#define SCN_MAX_CLUSTER_KEYS 65535         /* keyframes of one cluster */
+#define SCN_MAX_FRAMES 100000              /* frames of one animation */
+#define SCN_MAX_DEPTH 16                   /* ray recursion depth */
+#define SCN_MAX_PHONG 1024                 /* highlight exponent n */
+#define SCN_MAX_IOR 10.0f                  /* index of refraction */
+#define SCN_MAX_COORD 1000.0f /* |coordinate|, |matrix entry|, |weight|: the
+                                      fixed build's NUM_COORD_LIMIT */
+#define SCN_MAX_REPEAT 1.0e4f              /* map repeats along u or v */
+#define SCN_MAX_INTENSITY 100.0f           /* a light's colour channel */
+#define SCN_MIN_FOV 0.1                    /* degrees (text form) */
+#define SCN_MAX_FOV 170.0
+#define SCN_MAX_SPOT_ANGLE 89.0            /* cone + falloff, degrees (text form) */
+#define SCN_MAX_NAME 32                    /* names in the text form, with NUL */
+
+/* ---------------------------------------------------------------- header */
+#define SCN_MAGIC_0 'L'
+#define SCN_MAGIC_1 '1'
+#define SCN_MAGIC_2 'S'
+#define SCN_MAGIC_3 'C'
+#define SCN_VERSION 1
+#define SCN_HEADER_SIZE 16
+#define SCN_HDR_MAGIC 0
+#define SCN_HDR_VERSION 4
+#define SCN_HDR_SECTIONS 6
+#define SCN_HDR_TOTAL 8
+#define SCN_HDR_CRC 12
+#define SCN_CRC_START 16 /* the CRC covers everything after the header */
+
+#define SCN_SECENT_SIZE 16
+#define SCN_SECENT_KIND 0
+#define SCN_SECENT_OFFSET 4
+#define SCN_SECENT_BYTES 8
+#define SCN_SECENT_COUNT 12
+#define SCN_SECTION_ALIGN 4
+
+enum scn_section {
+    SCN_SEC_VIEW = 1,      /* exactly one record: camera, image, options */
+    SCN_SEC_LIGHTS = 2,    /* up to SCN_MAX_LIGHTS records */
+    SCN_SEC_MATERIALS = 3,
+    SCN_SEC_MAPS = 4,      /* map descriptors; texels live in TEXELS */
+    SCN_SEC_TEXELS = 5,    /* bytes, all maps, record size 1 */
+    SCN_SEC_CLUSTERS = 6,  /* record 0 is the root */
+    SCN_SEC_PRIMS = 7,
+    SCN_SEC_COMPONENTS = 8, /* density components, all density spheres */
+    SCN_SEC_KEYS = 9,      /* keyframes, grouped per cluster, frames rising */
+};
+#define SCN_SEC_COUNT 9 /* kinds are 1..SCN_SEC_COUNT */
+
+/* The board has no trigonometry: every angle is turned into the cosine,
+ * tangent or quaternion the renderer needs by the host compiler. */
+
+/* --------------------------------------------------------- VIEW record */
+#define SCN_VIEW_SIZE 64
+#define SCN_VIEW_EYE 0          /* 3 x f32 */
+#define SCN_VIEW_LOOK_AT 12     /* 3 x f32, != eye */
+#define SCN_VIEW_UP 24          /* 3 x f32, not parallel to look_at - eye */
+#define SCN_VIEW_TAN_HALF_FOV_Y 36 /* f32 > 0: tan(vertical field of view / 2) */
+#define SCN_VIEW_WIDTH 40       /* u16: 1..SCN_MAX_WIDTH pixels */
+#define SCN_VIEW_HEIGHT 42      /* u16: 1..SCN_MAX_HEIGHT pixels */
+#define SCN_VIEW_BACKGROUND 44  /* 3 x f32 0..1, colour of rays that hit nothing */
+#define SCN_VIEW_MAX_DEPTH 56   /* u16: 0..SCN_MAX_DEPTH */
+#define SCN_VIEW_FLAGS 58       /* u16: SCN_OPT_* */
+#define SCN_VIEW_FRAMES 60      /* u32: frames of the animation, 1 = still */
+#define SCN_MAX_TAN_HALF_FOV 100.0f
+
+/* Render options.  REFRACTIONLESS: past max_depth, transmission continues
+ * along the straight ray (the paper's 4.5).  The NO_* switches turn a
+ * speed-up or shadows off, for measurement only. */
+#define SCN_OPT_REFRACTIONLESS 0x0001u
+#define SCN_OPT_NO_BOUNDS 0x0002u
+#define SCN_OPT_NO_HIERARCHY 0x0004u
+#define SCN_OPT_NO_SHADOWS 0x0008u
+#define SCN_OPT_KNOWN 0x000fu
+
+/* ------------------------------------------------------- LIGHTS record */
+#define SCN_LIGHT_SIZE 48
+#define SCN_LIGHT_KIND 0        /* u32: enum scn_light_kind */
+#define SCN_LIGHT_COLOUR 4      /* 3 x f32, L_i, 0..SCN_MAX_INTENSITY */
+#define SCN_LIGHT_POSITION 16   /* 3 x f32, world, point and spot */
+#define SCN_LIGHT_DIRECTION 28  /* 3 x f32 non-zero, the way the light travels;
+                                   parallel and spot (cone axis) */
+#define SCN_LIGHT_COS_INNER 40  /* f32: spot, cos of the full-intensity half-angle */
+#define SCN_LIGHT_COS_OUTER 44  /* f32: spot, cos where it reaches 0, < cos_inner */
+
+enum scn_light_kind {
+    SCN_LIGHT_PARALLEL = 1,
+    SCN_LIGHT_POINT = 2,
+    SCN_LIGHT_SPOT = 3,
+};
+
+/* ---------------------------------------------------- MATERIALS record */
+#define SCN_MAT_SIZE 48
+#define SCN_MAT_COLOUR 0        /* 3 x f32, F, each 0..1 */
+#define SCN_MAT_DIC 12          /* f32 0..1: ambient coefficient (per light) */
+#define SCN_MAT_DRC 16          /* f32 0..1: diffuse coefficient */
+#define SCN_MAT_SRC 20          /* f32 0..1: reflection coefficient at normal incidence */
+#define SCN_MAT_TRC 24          /* f32 0..1: transmissivity at normal incidence */
+#define SCN_MAT_FRESNEL 28      /* f32 0..1: weight of the angle dependence;
+                                   0 = constant src and trc */
+#define SCN_MAT_IOR 32          /* f32 1..SCN_MAX_IOR */
+#define SCN_MAT_PHONG 36        /* u16: n of cos^n, 0..SCN_MAX_PHONG, 0 = no highlight */
+#define SCN_MAT_COLOUR_MAP 38   /* u16: map index (a COLOUR map) or SCN_NO_INDEX */
+#define SCN_MAT_BUMP_MAP 40     /* u16: map index (a BUMP map) or SCN_NO_INDEX */
+#define SCN_MAT_RESERVED 42     /* 6 bytes: 0 */
+#define SCN_NO_INDEX 0xffffu    /* "no map", "no parent" */
+
+/* ------------------------------------------------------------ MAPS record */
+#define SCN_MAP_SIZE 24
+#define SCN_MAP_KIND 0          /* u16: enum scn_map_kind */
+#define SCN_MAP_WIDTH 2         /* u16: 1..SCN_MAX_MAP_SIDE */
+#define SCN_MAP_HEIGHT 4        /* u16: 1..SCN_MAX_MAP_SIDE */
+#define SCN_MAP_RESERVED 6      /* u16: 0 */
+#define SCN_MAP_FIRST 8         /* u32: first byte in TEXELS */
+#define SCN_MAP_REPEAT_U 12     /* f32 > 0: tiles across u */
+#define SCN_MAP_REPEAT_V 16     /* f32 > 0: tiles across v */
+#define SCN_MAP_BUMP_DEPTH 20   /* f32 >= 0: bump tilt per unit slope */
+
+/* COLOUR: 3 bytes per texel (R, G, B).  BUMP: 1 byte per texel, a height
+ * whose gradient tilts the normal.  Row-major, row 0 at v = 0. */
+enum scn_map_kind {
+    SCN_MAP_COLOUR = 1,
+    SCN_MAP_BUMP = 2,
+};
+#define SCN_MAP_COLOUR_BYTES 3
+#define SCN_MAP_BUMP_BYTES 1
+
+/* ------------------------------------------------------- CLUSTERS record */
+#define SCN_CLUSTER_SIZE 60
+#define SCN_CLUSTER_PARENT 0    /* u16: parent index, < own; SCN_NO_INDEX for 0 only */
+#define SCN_CLUSTER_KEY_COUNT 2 /* u16: its keyframes, 0 = static */
+#define SCN_CLUSTER_KEY_FIRST 4 /* u32: its first keyframe in KEYS */
+#define SCN_CLUSTER_MATRIX 8    /* 12 x f32: rows of the 3x4 child -> parent matrix */
+#define SCN_CLUSTER_RESERVED 56 /* u32: 0 */
+
+/* ---------------------------------------------------------- PRIMS record */
+#define SCN_PRIM_SIZE 76
+#define SCN_PRIM_KIND 0         /* u16: enum scn_prim_kind */
+#define SCN_PRIM_MATERIAL 2     /* u16: material index */
+#define SCN_PRIM_CLUSTER 4      /* u16: the cluster it belongs to */
+#define SCN_PRIM_RESERVED 6     /* u16: 0 */
+#define SCN_PRIM_FIRST 8        /* u32: DENSITY: first component in COMPONENTS */
+#define SCN_PRIM_COUNT 12       /* u32: DENSITY: components, 1..SCN_MAX_DENSITY_COMPONENTS */
+#define SCN_PRIM_VALUES 16      /* SCN_PRIM_MAX_VALUES x f32, unused ones 0 */
+#define SCN_PRIM_MAX_VALUES 15
+
+/* Values of each kind, in the cluster's coordinates:
+ *   TRIANGLE  v0, v1, v2 (3 each), then u0, u1, u2, then v0, v1, v2 (map coords)
+ *   ELLIPSOID centre (3), semi-axes (3, each > 0)
+ *   BOX       centre (3), half edge lengths (3, each > 0)
+ *   DENSITY   threshold (> 0); first/count name its components
+ */
+enum scn_prim_kind {
+    SCN_PRIM_TRIANGLE = 1,
+    SCN_PRIM_ELLIPSOID = 2,
+    SCN_PRIM_BOX = 3,
+    SCN_PRIM_DENSITY = 4,
+};
+#define SCN_TRIANGLE_VALUES 15
+#define SCN_ELLIPSOID_VALUES 6
+#define SCN_BOX_VALUES 6
+#define SCN_DENSITY_VALUES 1
+
+/* ------------------------------------------------- COMPONENTS record */
+#define SCN_COMPONENT_SIZE 20
+#define SCN_COMPONENT_CENTRE 0  /* 3 x f32 */
+#define SCN_COMPONENT_RADIUS 12 /* f32 > 0: d */
+#define SCN_COMPONENT_WEIGHT 16 /* f32 != 0: b (negative carves) */
+
+/* ----------------------------------------------------------- KEYS record */
+#define SCN_KEY_SIZE 44
+#define SCN_KEY_FRAME 0         /* u32: frame number, rising within a cluster */
+#define SCN_KEY_TRANSLATE 4     /* 3 x f32 */
+#define SCN_KEY_ROTATION 16     /* 4 x f32: unit quaternion w, x, y, z */
+#define SCN_KEY_SCALE 32        /* 3 x f32, each non-zero */
+#define SCN_QUAT_NORM_TOLERANCE 1.0e-3f /* |q| must be within 1 +- this */
+/* K = translate * rotate * scale; between keys the renderer interpolates
+ * (render/scene.h). */
+
+#endif

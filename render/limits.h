@@ -1,0 +1,39 @@
+/* render/limits.h: every limit of the renderer, in one place.
+ *
+ * The scene compiler checks a scene against these before it is uploaded, and
+ * render_prepare() checks them again so a bad scene fails with a named limit
+ * instead of reading out of bounds.
+ */
+#ifndef LINKS1_RENDER_LIMITS_H
+#define LINKS1_RENDER_LIMITS_H
+
+#define RENDER_MAX_WIDTH 1024         /* frame memory: 1024x1024 pixels */
+#define RENDER_MAX_HEIGHT 1024
+#define RENDER_MAX_LIGHTS 8           /* the paper used up to 3 */
+#define RENDER_MAX_DEPTH 16           /* reflection/refraction recursion */
+#define RENDER_MAX_CLUSTER_DEPTH 32   /* nesting of clusters below the root */
+#define RENDER_MAX_TRANSPARENT 16     /* transmission buffer: objects crossed
+                                         by one refractionless straight ray */
+#define RENDER_MAX_DENSITY_COMPONENTS 64 /* components of one density sphere */
+#define RENDER_MAX_PHONG_N 1024       /* highlight sharpness exponent */
+#define RENDER_MAX_MAP_SIZE 1024      /* texels along one side of a map */
+
+/* Density-sphere root finder: fixed iteration counts keep every build and
+ * every core on exactly the same path. */
+#define RENDER_DENSITY_SAMPLES 24     /* march steps to bracket a root */
+#define RENDER_DENSITY_BISECTIONS 24  /* bisection steps once bracketed */
+
+
+
+/* Tolerances, in scene units (fixed-point step is 1/65536 = 1.5e-5). */
+#define RENDER_RAY_EPSILON_VALUE 2e-3   /* secondary rays start this far from
+                                           the surface so they do not hit it
+                                           again through rounding */
+#define RENDER_BOUNDS_PAD_VALUE 1e-3    /* boxes grow by this so rounding
+                                           never makes them cut a surface */
+#define RENDER_EDGE_TOLERANCE_VALUE 1e-5 /* triangle edge slack: no cracks
+                                           between triangles sharing an edge */
+#define RENDER_NEAR_PLANE_VALUE 1e-2    /* boxes reaching nearer than this to
+                                           the eye plane project to the whole
+                                           screen */
+#endif

@@ -1,0 +1,13 @@
+# render/: the ray tracer, built for every arithmetic; it knows nothing of
+# cores, drivers or messages.
+SHARED_SRCS += render/arena.c render/xform.c render/prim.c render/prepare.c \
+	render/shade.c render/maps.c render/trace.c
+
+# Renderer tests, once per arithmetic.
+HOST_TESTS += test_prim_double test_prim_float test_prim_fixed
+test_prim_double_SRCS := tests/host/test_prim.c
+test_prim_double_ARITH := double
+test_prim_float_SRCS := tests/host/test_prim.c
+test_prim_float_ARITH := float
+test_prim_fixed_SRCS := tests/host/test_prim.c
+test_prim_fixed_ARITH := fixed

@@ -1,0 +1,442 @@
+/* render/prepare.c: the DM's preprocessing (paper, section 4).
+ *
+ * For one frame: evaluate each cluster's keys, compose transforms down the
+ * tree, map every primitive and light to eye coordinates, compute each
+ * cluster's bounding box and screen rectangle, and group children and
+ * primitives by cluster.  Inverse maps are composed from the inverses of
+ * each level (rather than inverting the composed map) to keep precision.
+ */
+#include "render/prim.h"
+#include "render/vec3.h"
+
+#define PREP_BOUNDS_PAD NUM_C(RENDER_BOUNDS_PAD_VALUE)
+#define PREP_NEAR NUM_C(RENDER_NEAR_PLANE_VALUE)
+
+const char *render_status_name(render_status_t status)
+{
+    switch (status) {
+    case RENDER_OK: return "ok";
+    case RENDER_ERR_ARENA: return "render arena too small for the frame";
+    case RENDER_ERR_SIZE: return "image size outside 1..RENDER_MAX_WIDTH x 1..RENDER_MAX_HEIGHT";
+    case RENDER_ERR_LIGHTS: return "more lights than RENDER_MAX_LIGHTS";
+    case RENDER_ERR_DEPTH: return "max_depth above RENDER_MAX_DEPTH";
+    case RENDER_ERR_CLUSTER: return "bad cluster parent, or nesting deeper than RENDER_MAX_CLUSTER_DEPTH";
+    case RENDER_ERR_PRIM: return "primitive with a bad kind, cluster or material index";
+    case RENDER_ERR_DENSITY: return "density sphere components out of range or above RENDER_MAX_DENSITY_COMPONENTS";
+    case RENDER_ERR_MAP: return "material map index, kind or size invalid (RENDER_MAX_MAP_SIZE)";
+    case RENDER_ERR_KEY: return "cluster keys outside the scene's key array";
+    case RENDER_ERR_CAMERA: return "camera eye equals look_at, or up is parallel to the view";
+    case RENDER_ERR_SINGULAR: return "a cluster transform cannot be inverted";
+    }
+    return "unknown render status";
+}
+
+static aabb_t prep_aabb_empty(void)
+{
+    aabb_t b;
+    b.lo = vec3_make(NUM_ONE, NUM_ONE, NUM_ONE);
+    b.hi = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    return b;
+}
+
+static int prep_aabb_is_empty(const aabb_t *b) { return num_gt(b->lo.x, b->hi.x); }
+
+static void prep_aabb_add_box(aabb_t *b, const aabb_t *o)
+{
+    if (prep_aabb_is_empty(o))
+        return;
+    if (prep_aabb_is_empty(b)) {
+        *b = *o;
+        return;
+    }
+    b->lo = vec3_make(num_min(b->lo.x, o->lo.x), num_min(b->lo.y, o->lo.y), num_min(b->lo.z, o->lo.z));
+    b->hi = vec3_make(num_max(b->hi.x, o->hi.x), num_max(b->hi.y, o->hi.y), num_max(b->hi.z, o->hi.z));
+}
+
+/* Box of centre c with half extents e, grown by the pad. */
+static aabb_t prep_aabb_around(vec3_t c, vec3_t e)
+{
+    e = vec3_add(e, vec3_make(PREP_BOUNDS_PAD, PREP_BOUNDS_PAD, PREP_BOUNDS_PAD));
+    aabb_t b = {vec3_sub(c, e), vec3_add(c, e)};
+    return b;
+}
+
+/* Half extents of the image of the unit sphere (round=1) or the cube
+ * [-1,1]^3 (round=0) under the 3x3 matrix m. */
+static vec3_t prep_extent(const num_t m[3][3], int round)
+{
+    num_t e[3];
+    for (int i = 0; i < 3; i++)
+        e[i] = round ? num_len3(m[i][0], m[i][1], m[i][2])
+                     : num_add(num_add(num_abs(m[i][0]), num_abs(m[i][1])), num_abs(m[i][2]));
+    return vec3_make(e[0], e[1], e[2]);
+}
+
+/* Rows of the 3x3 part of to_eye, columns scaled by s. */
+static void prep_scaled_linear(const xform_t *to_eye, vec3_t s, num_t out[3][3])
+{
+    for (int i = 0; i < 3; i++) {
+        out[i][0] = num_mul(to_eye->m[i][0], s.x);
+        out[i][1] = num_mul(to_eye->m[i][1], s.y);
+        out[i][2] = num_mul(to_eye->m[i][2], s.z);
+    }
+}
+
+/* Keyframed TRS of a cluster at frame f (identity without keys). */
+static xform_t prep_key_xform(const scene_t *s, const scene_cluster_t *c, uint32_t f)
+{
+    if (c->key_count == 0)
+        return xform_identity();
+    const scene_key_t *k = &s->keys[c->first_key];
+    uint32_t n = c->key_count;
+    const scene_key_t *a = &k[0], *b = &k[0];
+    num_t w = NUM_ZERO;
+    if (f >= k[n - 1].frame) {
+        a = b = &k[n - 1];
+    } else if (f > k[0].frame) {
+        uint32_t i = 0;
+        while (i + 1 < n && k[i + 1].frame <= f)
+            i++;
+        a = &k[i];
+        b = &k[i + 1];
+        w = num_div(num_from_int((int32_t)(f - a->frame)), num_from_int((int32_t)(b->frame - a->frame)));
+    }
+    vec3_t t = vec3_add(a->translate, vec3_scale(vec3_sub(b->translate, a->translate), w));
+    vec3_t sc = vec3_add(a->scale, vec3_scale(vec3_sub(b->scale, a->scale), w));
+    /* nlerp along the shorter arc */
+    num_t bw = b->rot_w, bx = b->rot_x, by = b->rot_y, bz = b->rot_z;
+    num_t dot = num_add(num_dot3(a->rot_x, a->rot_y, a->rot_z, bx, by, bz), num_mul(a->rot_w, bw));
+    if (num_lt(dot, NUM_ZERO)) {
+        bw = num_neg(bw);
+        bx = num_neg(bx);
+        by = num_neg(by);
+        bz = num_neg(bz);
+    }
+    num_t qw = num_lerp(a->rot_w, bw, w), qx = num_lerp(a->rot_x, bx, w);
+    num_t qy = num_lerp(a->rot_y, by, w), qz = num_lerp(a->rot_z, bz, w);
+    num_t len = num_sqrt(num_add(num_dot3(qx, qy, qz, qx, qy, qz), num_mul(qw, qw)));
+    if (num_gt(len, NUM_ZERO)) {
+        qw = num_div(qw, len);
+        qx = num_div(qx, len);
+        qy = num_div(qy, len);
+        qz = num_div(qz, len);
+    }
+    return xform_from_trs(t, qw, qx, qy, qz, sc);
+}
+
+/* World -> eye and its inverse from the camera. */
+static render_status_t prep_camera(const scene_t *s, xform_t *world_to_eye, xform_t *eye_to_world)
+{
+    const scene_camera_t *c = &s->camera;
+    vec3_t f = vec3_normalize(vec3_sub(c->look_at, c->eye));
+    if (!num_gt(vec3_length(f), NUM_HALF))
+        return RENDER_ERR_CAMERA;
+    vec3_t r = vec3_normalize(vec3_cross(c->up, f)); /* left-handed: x right */
+    if (!num_gt(vec3_length(r), NUM_HALF))
+        return RENDER_ERR_CAMERA;
+    vec3_t u = vec3_cross(f, r);
+    vec3_t rows[3] = {r, u, f};
+    for (int i = 0; i < 3; i++) {
+        world_to_eye->m[i][0] = rows[i].x;
+        world_to_eye->m[i][1] = rows[i].y;
+        world_to_eye->m[i][2] = rows[i].z;
+        world_to_eye->m[i][3] = num_neg(vec3_dot(rows[i], c->eye));
+        eye_to_world->m[0][i] = rows[i].x;
+        eye_to_world->m[1][i] = rows[i].y;
+        eye_to_world->m[2][i] = rows[i].z;
+    }
+    eye_to_world->m[0][3] = c->eye.x;
+    eye_to_world->m[1][3] = c->eye.y;
+    eye_to_world->m[2][3] = c->eye.z;
+    return RENDER_OK;
+}
+
+static render_status_t prep_check(const scene_t *s)
+{
+    if (s->width < 1 || s->width > RENDER_MAX_WIDTH || s->height < 1 || s->height > RENDER_MAX_HEIGHT)
+        return RENDER_ERR_SIZE;
+    if (s->light_count > RENDER_MAX_LIGHTS)
+        return RENDER_ERR_LIGHTS;
+    if (s->options.max_depth > RENDER_MAX_DEPTH)
+        return RENDER_ERR_DEPTH;
+    if (s->cluster_count < 1 || s->clusters[0].parent != SCENE_NONE)
+        return RENDER_ERR_CLUSTER;
+    for (uint32_t i = 0; i < s->cluster_count; i++) {
+        const scene_cluster_t *c = &s->clusters[i];
+        if (i > 0 && c->parent >= i)
+            return RENDER_ERR_CLUSTER;
+        if ((uint64_t)c->first_key + c->key_count > s->key_count)
+            return RENDER_ERR_KEY;
+    }
+    for (uint32_t i = 0; i < s->material_count; i++) {
+        const scene_material_t *m = &s->materials[i];
+        uint16_t maps[2] = {m->colour_map, m->bump_map};
+        for (int k = 0; k < 2; k++) {
+            if (maps[k] == SCENE_NONE)
+                continue;
+            if (maps[k] >= s->map_count)
+                return RENDER_ERR_MAP;
+            const scene_map_t *map = &s->maps[maps[k]];
+            if (map->kind != (k == 0 ? SCENE_MAP_COLOUR : SCENE_MAP_BUMP) || !map->texels ||
+                map->width < 1 || map->width > RENDER_MAX_MAP_SIZE || map->height < 1 ||
+                map->height > RENDER_MAX_MAP_SIZE)
+                return RENDER_ERR_MAP;
+        }
+    }
+    for (uint32_t i = 0; i < s->prim_count; i++) {
+        const scene_prim_t *p = &s->prims[i];
+        if (p->kind > SCENE_PRIM_DENSITY || p->cluster >= s->cluster_count ||
+            p->material >= s->material_count)
+            return RENDER_ERR_PRIM;
+        if (p->kind == SCENE_PRIM_DENSITY &&
+            (p->shape.density.count < 1 || p->shape.density.count > RENDER_MAX_DENSITY_COMPONENTS ||
+             (uint64_t)p->shape.density.first + p->shape.density.count > s->density_component_count))
+            return RENDER_ERR_DENSITY;
+    }
+    return RENDER_OK;
+}
+
+/* Eye-space form of one primitive; to_eye/from_eye map its cluster. */
+static void prep_prim(const scene_prim_t *sp, uint32_t index, const scene_t *s, const xform_t *to_eye,
+                      const xform_t *from_eye, render_prim_t *p)
+{
+    num_t lin[3][3];
+    p->kind = sp->kind;
+    p->material = sp->material;
+    p->index = index;
+    switch (sp->kind) {
+    case SCENE_PRIM_TRIANGLE: {
+        vec3_t v[3];
+        aabb_t b = prep_aabb_empty();
+        for (int k = 0; k < 3; k++) {
+            v[k] = xform_point(to_eye, sp->shape.triangle.v[k]);
+            aabb_t one = prep_aabb_around(v[k], vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO));
+            prep_aabb_add_box(&b, &one);
+            p->tex_u[k] = sp->shape.triangle.tex_u[k];
+            p->tex_v[k] = sp->shape.triangle.tex_v[k];
+        }
+        p->v0 = v[0];
+        p->e1 = vec3_sub(v[1], v[0]);
+        p->e2 = vec3_sub(v[2], v[0]);
+        p->normal = vec3_normalize(vec3_cross(vec3_normalize(p->e1), vec3_normalize(p->e2)));
+        p->edge_n1 = vec3_normalize(vec3_cross(p->e2, p->normal));
+        p->edge_n2 = vec3_normalize(vec3_cross(p->normal, p->e1));
+        p->height1 = vec3_dot(p->e1, p->edge_n1);
+        p->height2 = vec3_dot(p->e2, p->edge_n2);
+        p->bounds = b;
+        break;
+    }
+    case SCENE_PRIM_ELLIPSOID:
+    case SCENE_PRIM_BOX: {
+        int round = sp->kind == SCENE_PRIM_ELLIPSOID;
+        vec3_t c = round ? sp->shape.ellipsoid.centre : sp->shape.box.centre;
+        vec3_t r = round ? sp->shape.ellipsoid.radius : sp->shape.box.half;
+        /* local = diag(1/r) * (cluster point - c) */
+        xform_t shape = xform_identity();
+        num_t rr[3] = {r.x, r.y, r.z}, cc[3] = {c.x, c.y, c.z};
+        for (int i = 0; i < 3; i++) {
+            shape.m[i][i] = num_recip(rr[i]);
+            shape.m[i][3] = num_neg(num_div(cc[i], rr[i]));
+        }
+        p->to_local = xform_compose(&shape, from_eye);
+        prep_scaled_linear(to_eye, r, lin);
+        p->bounds = prep_aabb_around(xform_point(to_eye, c), prep_extent(lin, round));
+        break;
+    }
+    default: { /* SCENE_PRIM_DENSITY */
+        p->to_local = *from_eye;
+        p->components = &s->density_components[sp->shape.density.first];
+        p->component_count = sp->shape.density.count;
+        p->threshold = sp->shape.density.threshold;
+        aabb_t b = prep_aabb_empty();
+        for (uint16_t k = 0; k < p->component_count; k++) {
+            num_t d = p->components[k].radius;
+            prep_scaled_linear(to_eye, vec3_make(d, d, d), lin);
+            aabb_t one = prep_aabb_around(xform_point(to_eye, p->components[k].centre), prep_extent(lin, 1));
+            prep_aabb_add_box(&b, &one);
+        }
+        p->bounds = b;
+        break;
+    }
+    }
+}
+
+static num_t prep_project(num_t v, num_t z, num_t half, uint16_t size)
+{
+    /* pixel coordinate whose centre the eye ray through (v/z) passes:
+     * ((v/z)/half + 1) * size/2 - 1/2 */
+    num_t s = num_div(num_div(v, z), half);
+    return num_sub(num_mul(num_add(s, NUM_ONE), num_mul_int(NUM_HALF, size)), NUM_HALF);
+}
+
+static void prep_screen_rect(const render_frame_t *f, render_cluster_t *c)
+{
+    const aabb_t *b = &c->own_bounds;
+    if (prep_aabb_is_empty(b)) {
+        c->screen_x0 = c->screen_y0 = 1;
+        c->screen_x1 = c->screen_y1 = 0;
+        return;
+    }
+    c->screen_x0 = 0;
+    c->screen_y0 = 0;
+    c->screen_x1 = f->width - 1;
+    c->screen_y1 = f->height - 1;
+    if (num_lt(b->lo.z, PREP_NEAR))
+        return; /* reaches behind the eye: whole screen */
+    num_t x0 = NUM_ZERO, x1 = NUM_ZERO, y0 = NUM_ZERO, y1 = NUM_ZERO;
+    for (int k = 0; k < 8; k++) {
+        num_t x = (k & 1) ? b->hi.x : b->lo.x;
+        num_t y = (k & 2) ? b->hi.y : b->lo.y;
+        num_t z = (k & 4) ? b->hi.z : b->lo.z;
+        num_t px = prep_project(x, z, f->screen_half_w, f->width);
+        /* image rows grow downwards while eye y grows upwards */
+        num_t py = num_sub(num_from_int(f->height - 1), prep_project(y, z, f->screen_half_h, f->height));
+        if (num_is_sat(px) || num_is_sat(py))
+            return;
+        x0 = k ? num_min(x0, px) : px;
+        x1 = k ? num_max(x1, px) : px;
+        y0 = k ? num_min(y0, py) : py;
+        y1 = k ? num_max(y1, py) : py;
+    }
+    /* one pixel of margin either side keeps it conservative under rounding */
+    int32_t ix0 = num_floor_int(x0) - 1, ix1 = num_floor_int(x1) + 2;
+    int32_t iy0 = num_floor_int(y0) - 1, iy1 = num_floor_int(y1) + 2;
+    c->screen_x0 = ix0 < 0 ? 0 : ix0;
+    c->screen_y0 = iy0 < 0 ? 0 : iy0;
+    c->screen_x1 = ix1 > f->width - 1 ? f->width - 1 : ix1;
+    c->screen_y1 = iy1 > f->height - 1 ? f->height - 1 : iy1;
+}
+
+static void prep_lights(const scene_t *s, const xform_t *world_to_eye, render_frame_t *f)
+{
+    f->light_count = s->light_count;
+    for (uint16_t i = 0; i < s->light_count; i++) {
+        const scene_light_t *l = &s->lights[i];
+        render_light_t *e = &f->lights[i];
+        e->kind = l->kind;
+        e->intensity = l->intensity;
+        e->position = xform_point(world_to_eye, l->position);
+        vec3_t dir = vec3_normalize(xform_dir(world_to_eye, l->direction));
+        e->to_light = vec3_neg(dir);
+        e->axis = dir;
+        e->cos_inner = l->cos_inner;
+        e->cos_outer = l->cos_outer;
+    }
+}
+
+/* Group items by owner with a counting sort (stable: ascending index). */
+static void prep_group_children(const scene_t *s, render_frame_t *f)
+{
+    for (uint32_t i = 1; i < s->cluster_count; i++)
+        f->clusters[s->clusters[i].parent].child_count++;
+    uint32_t at = 0;
+    for (uint32_t i = 0; i < s->cluster_count; i++) {
+        f->clusters[i].first_child = at;
+        at += f->clusters[i].child_count;
+        f->clusters[i].child_count = 0;
+    }
+    for (uint32_t i = 1; i < s->cluster_count; i++) {
+        render_cluster_t *p = &f->clusters[s->clusters[i].parent];
+        f->child_list[p->first_child + p->child_count++] = (uint16_t)i;
+    }
+}
+
+static void prep_group_prims(const scene_t *s, render_frame_t *f)
+{
+    for (uint32_t i = 0; i < s->prim_count; i++)
+        f->clusters[s->prims[i].cluster].prim_count++;
+    uint32_t at = 0;
+    for (uint32_t i = 0; i < s->cluster_count; i++) {
+        f->clusters[i].first_prim = at;
+        at += f->clusters[i].prim_count;
+        f->clusters[i].prim_count = 0;
+    }
+    for (uint32_t i = 0; i < s->prim_count; i++) {
+        render_cluster_t *c = &f->clusters[s->prims[i].cluster];
+        f->prim_list[c->first_prim + c->prim_count++] = i;
+    }
+}
+
+render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *arena, render_frame_t **out)
+{
+    *out = NULL;
+    render_status_t st = prep_check(s);
+    if (st != RENDER_OK)
+        return st;
+    render_frame_t *f = ARENA_NEW_ARRAY(arena, render_frame_t, 1);
+    if (!f)
+        return RENDER_ERR_ARENA;
+    f->clusters = ARENA_NEW_ARRAY(arena, render_cluster_t, s->cluster_count);
+    f->child_list = ARENA_NEW_ARRAY(arena, uint16_t, s->cluster_count);
+    f->prims = ARENA_NEW_ARRAY(arena, render_prim_t, s->prim_count ? s->prim_count : 1);
+    f->prim_list = ARENA_NEW_ARRAY(arena, uint32_t, s->prim_count ? s->prim_count : 1);
+    if (!f->clusters || !f->child_list || !f->prims || !f->prim_list)
+        return RENDER_ERR_ARENA;
+    f->scene = s;
+    f->frame_index = frame_index;
+    f->options = s->options;
+    f->width = s->width;
+    f->height = s->height;
+    f->cluster_count = s->cluster_count;
+    f->prim_count = s->prim_count;
+    f->screen_half_h = s->camera.tan_half_fov_y;
+    f->screen_half_w = num_div(num_mul_int(s->camera.tan_half_fov_y, s->width), num_from_int(s->height));
+
+    /* scratch: per-cluster maps, released before returning */
+    size_t mark = arena->used;
+    xform_t *to_eye = ARENA_NEW_ARRAY(arena, xform_t, s->cluster_count);
+    xform_t *from_eye = ARENA_NEW_ARRAY(arena, xform_t, s->cluster_count);
+    uint8_t *depth = ARENA_NEW_ARRAY(arena, uint8_t, s->cluster_count);
+    if (!to_eye || !from_eye || !depth)
+        return RENDER_ERR_ARENA;
+
+    xform_t world_to_eye, eye_to_world;
+    st = prep_camera(s, &world_to_eye, &eye_to_world);
+    if (st != RENDER_OK)
+        return st;
+    for (uint32_t i = 0; i < s->cluster_count; i++) {
+        const scene_cluster_t *c = &s->clusters[i];
+        xform_t key = prep_key_xform(s, c, frame_index);
+        xform_t key_inv, local_inv;
+        if (!xform_invert(&key, &key_inv) || !xform_invert(&c->local, &local_inv))
+            return RENDER_ERR_SINGULAR;
+        xform_t to_parent = xform_compose(&key, &c->local);
+        xform_t from_parent = xform_compose(&local_inv, &key_inv);
+        const xform_t *parent_to_eye = i == 0 ? &world_to_eye : &to_eye[c->parent];
+        const xform_t *eye_to_parent = i == 0 ? &eye_to_world : &from_eye[c->parent];
+        depth[i] = i == 0 ? 0 : (uint8_t)(depth[c->parent] + 1);
+        if (depth[i] > RENDER_MAX_CLUSTER_DEPTH)
+            return RENDER_ERR_CLUSTER;
+        to_eye[i] = xform_compose(parent_to_eye, &to_parent);
+        from_eye[i] = xform_compose(&from_parent, eye_to_parent);
+        if (xform_is_sat(&to_eye[i]) || xform_is_sat(&from_eye[i]))
+            f->precision_lost = 1;
+    }
+    for (uint32_t i = 0; i < s->prim_count; i++) {
+        const scene_prim_t *sp = &s->prims[i];
+        prep_prim(sp, i, s, &to_eye[sp->cluster], &from_eye[sp->cluster], &f->prims[i]);
+        if (vec3_is_sat(f->prims[i].bounds.lo) || vec3_is_sat(f->prims[i].bounds.hi))
+            f->precision_lost = 1;
+    }
+    arena_release_to(arena, mark);
+
+    prep_group_children(s, f);
+    prep_group_prims(s, f);
+    for (uint32_t i = 0; i < s->cluster_count; i++) {
+        f->clusters[i].own_bounds = prep_aabb_empty();
+        f->clusters[i].bounds = prep_aabb_empty();
+    }
+    for (uint32_t i = 0; i < s->prim_count; i++)
+        prep_aabb_add_box(&f->clusters[s->prims[i].cluster].own_bounds, &f->prims[i].bounds);
+    /* children have larger indices than parents: one backward pass */
+    for (uint32_t i = s->cluster_count; i-- > 0;) {
+        render_cluster_t *c = &f->clusters[i];
+        prep_aabb_add_box(&c->bounds, &c->own_bounds);
+        if (i > 0)
+            prep_aabb_add_box(&f->clusters[s->clusters[i].parent].bounds, &c->bounds);
+        prep_screen_rect(f, c);
+    }
+    prep_lights(s, &world_to_eye, f);
+    *out = f;
+    return RENDER_OK;
+}

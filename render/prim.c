@@ -1,0 +1,369 @@
+/* render/prim.c: intersection and surface details of the four primitives.
+ * The methods are described in docs/renderer.md. */
+#include "render/prim.h"
+
+#include "render/vec3.h"
+
+#define PRIM_EDGE_TOL NUM_C(RENDER_EDGE_TOLERANCE_VALUE)
+
+/* Pick the nearest of two roots t0 <= t1 above tmin; 0 if neither. */
+static int prim_pick_root(num_t t0, num_t t1, num_t tmin, num_t tmax, num_t *t_out)
+{
+    num_t t;
+    if (num_gt(t0, tmin))
+        t = t0;
+    else if (num_gt(t1, tmin))
+        t = t1;
+    else
+        return 0;
+    if (num_is_sat(t) || num_gt(t, tmax))
+        return 0;
+    *t_out = t;
+    return 1;
+}
+
+/* ------------------------------------------------------------- triangle */
+
+static int prim_triangle_bary(const render_prim_t *p, vec3_t point, num_t *beta, num_t *gamma)
+{
+    vec3_t w = vec3_sub(point, p->v0);
+    *beta = num_div(vec3_dot(w, p->edge_n1), p->height1);
+    *gamma = num_div(vec3_dot(w, p->edge_n2), p->height2);
+    return !num_is_sat(*beta) && !num_is_sat(*gamma);
+}
+
+static int prim_triangle_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin,
+                                   num_t tmax, num_t *t_out)
+{
+    num_t denom = vec3_dot(ray->dir, p->normal);
+    if (num_eq(denom, NUM_ZERO)) /* ray in the triangle's plane: grazing */
+        return 0;
+    num_t t = num_div(vec3_dot(vec3_sub(p->v0, ray->origin), p->normal), denom);
+    if (num_is_sat(t) || !num_gt(t, tmin) || num_gt(t, tmax))
+        return 0;
+    num_t beta, gamma;
+    if (!prim_triangle_bary(p, vec3_madd(ray->origin, ray->dir, t), &beta, &gamma))
+        return 0;
+    if (num_lt(beta, num_neg(PRIM_EDGE_TOL)) || num_lt(gamma, num_neg(PRIM_EDGE_TOL)) ||
+        num_gt(num_add(beta, gamma), num_add(NUM_ONE, PRIM_EDGE_TOL)))
+        return 0;
+    *t_out = t;
+    return 1;
+}
+
+static void prim_triangle_surface(const render_prim_t *p, hit_t *hit)
+{
+    num_t beta, gamma;
+    prim_triangle_bary(p, hit->point, &beta, &gamma);
+    num_t alpha = num_sub(NUM_ONE, num_add(beta, gamma));
+    hit->normal = p->normal;
+    hit->tangent = vec3_normalize(p->e1);
+    hit->u = num_add(num_add(num_mul(alpha, p->tex_u[0]), num_mul(beta, p->tex_u[1])),
+                     num_mul(gamma, p->tex_u[2]));
+    hit->v = num_add(num_add(num_mul(alpha, p->tex_v[0]), num_mul(beta, p->tex_v[1])),
+                     num_mul(gamma, p->tex_v[2]));
+}
+
+/* ------------------------------------------------------------ ellipsoid */
+
+/* The ray in the unit sphere's space, written o' + s*dn with dn a unit
+ * vector and s = t * len.  The closest approach to the centre is found
+ * first, so no squared coordinate of a far origin is ever formed. */
+static int prim_ellipsoid_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin,
+                                    num_t tmax, num_t *t_out)
+{
+    vec3_t o = xform_point(&p->to_local, ray->origin);
+    vec3_t d = xform_dir(&p->to_local, ray->dir);
+    num_t len = vec3_length(d);
+    if (vec3_is_sat(o) || num_is_sat(len) || !num_gt(len, NUM_ZERO))
+        return 0;
+    vec3_t dn = vec3_scale(d, num_recip(len));
+    num_t tc = num_neg(vec3_dot(o, dn));
+    vec3_t c = vec3_madd(o, dn, tc); /* closest point to the centre */
+    if (num_gt(num_abs(c.x), NUM_ONE) || num_gt(num_abs(c.y), NUM_ONE) ||
+        num_gt(num_abs(c.z), NUM_ONE))
+        return 0;
+    num_t h2 = num_sub(NUM_ONE, vec3_dot(c, c));
+    if (num_lt(h2, NUM_ZERO))
+        return 0;
+    num_t h = num_sqrt(h2);
+    num_t t0 = num_div(num_sub(tc, h), len);
+    num_t t1 = num_div(num_add(tc, h), len);
+    return prim_pick_root(t0, t1, tmin, tmax, t_out);
+}
+
+/* Pseudo-angle of (x, z) in [0, 4): monotonic in the true angle, exact at
+ * the axes, and needs no trigonometry (the board has no atan2). */
+static num_t prim_pseudo_angle(num_t x, num_t z)
+{
+    num_t ax = num_abs(x), az = num_abs(z);
+    num_t sum = num_add(ax, az);
+    if (!num_gt(sum, NUM_ZERO))
+        return NUM_ZERO;
+    num_t f = num_div(az, sum); /* 0 on the x axis, 1 on the z axis */
+    if (num_ge(x, NUM_ZERO))
+        return num_ge(z, NUM_ZERO) ? f : num_sub(NUM_C(4), f);
+    return num_ge(z, NUM_ZERO) ? num_sub(NUM_C(2), f) : num_add(NUM_C(2), f);
+}
+
+/* Tangent from a local-space hint: mapped to eye space by the transposed
+ * inverse (exact for rotations and uniform scales, a fair direction
+ * otherwise), then made perpendicular to the normal. */
+static vec3_t prim_tangent(const xform_t *to_local, vec3_t hint_local, vec3_t normal)
+{
+    vec3_t h = xform_dir_transposed(to_local, hint_local);
+    h = vec3_sub(h, vec3_scale(normal, vec3_dot(normal, h)));
+    vec3_t t = vec3_normalize(h);
+    if (!num_gt(vec3_length(t), NUM_HALF)) { /* hint along the normal */
+        vec3_t any = num_gt(num_abs(normal.x), NUM_HALF) ? vec3_make(NUM_ZERO, NUM_ONE, NUM_ZERO)
+                                                        : vec3_make(NUM_ONE, NUM_ZERO, NUM_ZERO);
+        t = vec3_normalize(vec3_cross(any, normal));
+    }
+    return t;
+}
+
+static void prim_ellipsoid_surface(const render_prim_t *p, hit_t *hit)
+{
+    vec3_t q = xform_point(&p->to_local, hit->point);
+    hit->normal = vec3_normalize(xform_dir_transposed(&p->to_local, q));
+    hit->tangent = prim_tangent(&p->to_local, vec3_make(num_neg(q.z), NUM_ZERO, q.x), hit->normal);
+    hit->u = num_mul(prim_pseudo_angle(q.x, q.z), NUM_C(0.25));
+    hit->v = num_clamp01(num_mul(num_add(q.y, NUM_ONE), NUM_HALF));
+}
+
+/* ------------------------------------------------------------------ box */
+
+/* Slab test along one axis of [-1,1]; narrows [*tnear, *tfar]. */
+static int prim_slab(num_t o, num_t d, num_t lo, num_t hi, num_t *tnear, num_t *tfar)
+{
+    if (num_eq(d, NUM_ZERO))
+        return !num_lt(o, lo) && !num_gt(o, hi);
+    num_t t1 = num_div(num_sub(lo, o), d);
+    num_t t2 = num_div(num_sub(hi, o), d);
+    if (num_gt(t1, t2)) {
+        num_t s = t1;
+        t1 = t2;
+        t2 = s;
+    }
+    /* a saturated t compares as the most extreme value: the right answer
+     * for a ray nearly parallel to the slab */
+    *tnear = num_max(*tnear, t1);
+    *tfar = num_min(*tfar, t2);
+    return !num_gt(*tnear, *tfar);
+}
+
+/* Interval of t where the ray is inside [-1,1]^3 in local space; t is the
+ * same in both spaces because the map is affine and d is not renormalised. */
+static int prim_box_interval(const render_prim_t *p, const ray_t *ray, num_t *tnear, num_t *tfar)
+{
+    vec3_t o = xform_point(&p->to_local, ray->origin);
+    vec3_t d = xform_dir(&p->to_local, ray->dir);
+    if (vec3_is_sat(o) || vec3_is_sat(d))
+        return 0;
+    *tnear = num_neg(NUM_C(32767));
+    *tfar = NUM_C(32767);
+    for (int axis = 0; axis < 3; axis++)
+        if (!prim_slab(vec3_get(o, axis), vec3_get(d, axis), num_neg(NUM_ONE), NUM_ONE, tnear, tfar))
+            return 0;
+    return 1;
+}
+
+static int prim_box_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin, num_t tmax,
+                              num_t *t_out)
+{
+    num_t tnear, tfar;
+    if (!prim_box_interval(p, ray, &tnear, &tfar))
+        return 0;
+    return prim_pick_root(tnear, tfar, tmin, tmax, t_out);
+}
+
+static void prim_box_surface(const render_prim_t *p, hit_t *hit)
+{
+    vec3_t q = xform_point(&p->to_local, hit->point);
+    int axis = 0;
+    if (num_gt(num_abs(q.y), num_abs(vec3_get(q, axis))))
+        axis = 1;
+    if (num_gt(num_abs(q.z), num_abs(vec3_get(q, axis))))
+        axis = 2;
+    vec3_t n_local = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    vec3_set(&n_local, axis, num_lt(vec3_get(q, axis), NUM_ZERO) ? num_neg(NUM_ONE) : NUM_ONE);
+    hit->normal = vec3_normalize(xform_dir_transposed(&p->to_local, n_local));
+    /* face coordinates: the next two axes in cyclic order */
+    int ua = (axis + 1) % 3, va = (axis + 2) % 3;
+    vec3_t hint = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    vec3_set(&hint, ua, NUM_ONE);
+    hit->tangent = prim_tangent(&p->to_local, hint, hit->normal);
+    hit->u = num_clamp01(num_mul(num_add(vec3_get(q, ua), NUM_ONE), NUM_HALF));
+    hit->v = num_clamp01(num_mul(num_add(vec3_get(q, va), NUM_ONE), NUM_HALF));
+}
+
+/* -------------------------------------------------------- density sphere */
+
+num_t density_field(num_t r2, num_t radius, num_t weight)
+{
+    num_t d2 = num_mul(radius, radius);
+    if (!num_lt(r2, d2))
+        return NUM_ZERO;
+    num_t q = num_div(r2, d2); /* (r/d)^2 in [0,1) */
+    if (!num_gt(num_mul_int(q, 9), NUM_ONE)) /* r <= d/3 */
+        return num_mul(weight, num_sub(NUM_ONE, num_mul_int(q, 3)));
+    num_t x = num_sub(NUM_ONE, num_sqrt(q)); /* 1 - r/d */
+    return num_mul(num_mul(weight, NUM_C(1.5)), num_mul(x, x));
+}
+
+/* Sum of fields minus the threshold at local point q: > 0 inside. */
+static num_t prim_density_excess(const render_prim_t *p, vec3_t q)
+{
+    num_t sum = num_neg(p->threshold);
+    for (uint16_t k = 0; k < p->component_count; k++) {
+        const scene_density_component_t *c = &p->components[k];
+        vec3_t r = vec3_sub(q, c->centre);
+        sum = num_add(sum, density_field(vec3_dot(r, r), c->radius, c->weight));
+    }
+    return sum;
+}
+
+/* Root finder (docs/renderer.md): the field is zero outside every
+ * component sphere, so the surface lies in [lo, hi], the union of the
+ * spheres' t-intervals beyond tmin.  That span is sampled at
+ * RENDER_DENSITY_SAMPLES equal steps; the first sign change of the excess
+ * is bisected RENDER_DENSITY_BISECTIONS times.  Fixed counts: the same
+ * steps in every build, and a result independent of tmax. */
+static int prim_density_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin,
+                                  num_t tmax, num_t *t_out)
+{
+    vec3_t o = xform_point(&p->to_local, ray->origin);
+    vec3_t d = xform_dir(&p->to_local, ray->dir);
+    num_t len = vec3_length(d);
+    if (vec3_is_sat(o) || num_is_sat(len) || !num_gt(len, NUM_ZERO))
+        return 0;
+    vec3_t dn = vec3_scale(d, num_recip(len));
+    int any = 0;
+    num_t lo = NUM_ZERO, hi = NUM_ZERO;
+    for (uint16_t k = 0; k < p->component_count; k++) {
+        const scene_density_component_t *c = &p->components[k];
+        vec3_t oc = vec3_sub(o, c->centre);
+        num_t tc = num_neg(vec3_dot(oc, dn));
+        vec3_t close = vec3_madd(oc, dn, tc);
+        num_t r = c->radius;
+        if (num_gt(num_abs(close.x), r) || num_gt(num_abs(close.y), r) || num_gt(num_abs(close.z), r))
+            continue;
+        num_t h2 = num_sub(num_mul(r, r), vec3_dot(close, close));
+        if (num_lt(h2, NUM_ZERO))
+            continue;
+        num_t h = num_sqrt(h2);
+        num_t t0 = num_div(num_sub(tc, h), len), t1 = num_div(num_add(tc, h), len);
+        if (num_is_sat(t0) || num_is_sat(t1) || !num_gt(t1, tmin))
+            continue;
+        lo = any ? num_min(lo, t0) : t0;
+        hi = any ? num_max(hi, t1) : t1;
+        any = 1;
+    }
+    if (!any)
+        return 0;
+    lo = num_max(lo, tmin);
+    num_t step = num_div(num_sub(hi, lo), num_from_int(RENDER_DENSITY_SAMPLES));
+    num_t prev_t = lo;
+    num_t f0 = prim_density_excess(p, xform_point(&p->to_local, vec3_madd(ray->origin, ray->dir, lo)));
+    int inside = num_gt(f0, NUM_ZERO); /* a ray from inside looks for the exit */
+    for (int i = 1; i <= RENDER_DENSITY_SAMPLES; i++) {
+        num_t t = i == RENDER_DENSITY_SAMPLES ? hi : num_add(lo, num_mul_int(step, i));
+        num_t f = prim_density_excess(p, xform_point(&p->to_local, vec3_madd(ray->origin, ray->dir, t)));
+        if (num_gt(f, NUM_ZERO) != inside) {
+            num_t a = prev_t, b = t;
+            for (int j = 0; j < RENDER_DENSITY_BISECTIONS; j++) {
+                num_t m = num_mul(num_add(a, b), NUM_HALF);
+                num_t fm = prim_density_excess(p, xform_point(&p->to_local, vec3_madd(ray->origin, ray->dir, m)));
+                if (num_gt(fm, NUM_ZERO) == inside)
+                    a = m;
+                else
+                    b = m;
+            }
+            num_t root = num_mul(num_add(a, b), NUM_HALF);
+            if (!num_gt(root, tmin) || num_gt(root, tmax) || num_is_sat(root))
+                return 0;
+            *t_out = root;
+            return 1;
+        }
+        prev_t = t;
+    }
+    return 0;
+}
+
+/* Outward normal = minus the field gradient; each component adds
+ * -df/dr * (q - c)/r, with df/dr = -6br/d^2 inside d/3 and
+ * -3b(1 - r/d)/d beyond. */
+static void prim_density_surface(const render_prim_t *p, hit_t *hit)
+{
+    vec3_t q = xform_point(&p->to_local, hit->point);
+    vec3_t g = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    for (uint16_t k = 0; k < p->component_count; k++) {
+        const scene_density_component_t *c = &p->components[k];
+        vec3_t r = vec3_sub(q, c->centre);
+        num_t r2 = vec3_dot(r, r);
+        num_t d2 = num_mul(c->radius, c->radius);
+        if (!num_lt(r2, d2))
+            continue;
+        num_t scale; /* -df/dr / r */
+        if (!num_gt(num_mul_int(r2, 9), d2)) {
+            scale = num_div(num_mul_int(c->weight, 6), d2);
+        } else {
+            num_t rl = num_sqrt(r2);
+            num_t x = num_sub(NUM_ONE, num_div(rl, c->radius));
+            scale = num_div(num_mul(num_mul_int(c->weight, 3), x), num_mul(c->radius, rl));
+        }
+        g = vec3_madd(g, r, scale);
+    }
+    hit->normal = vec3_normalize(xform_dir_transposed(&p->to_local, g));
+    hit->tangent = prim_tangent(&p->to_local, vec3_make(NUM_ONE, NUM_ZERO, NUM_ZERO), hit->normal);
+    vec3_t n = hit->normal; /* map like an ellipsoid, by normal direction */
+    hit->u = num_mul(prim_pseudo_angle(n.x, n.z), NUM_C(0.25));
+    hit->v = num_clamp01(num_mul(num_add(n.y, NUM_ONE), NUM_HALF));
+}
+
+/* ------------------------------------------------------------- dispatch */
+
+int prim_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin, num_t tmax, num_t *t_out)
+{
+    switch (p->kind) {
+    case SCENE_PRIM_TRIANGLE:
+        return prim_triangle_intersect(p, ray, tmin, tmax, t_out);
+    case SCENE_PRIM_ELLIPSOID:
+        return prim_ellipsoid_intersect(p, ray, tmin, tmax, t_out);
+    case SCENE_PRIM_BOX:
+        return prim_box_intersect(p, ray, tmin, tmax, t_out);
+    case SCENE_PRIM_DENSITY:
+        return prim_density_intersect(p, ray, tmin, tmax, t_out);
+    default:
+        return 0;
+    }
+}
+
+void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit)
+{
+    hit->point = vec3_madd(ray->origin, ray->dir, hit->t);
+    switch (p->kind) {
+    case SCENE_PRIM_TRIANGLE:
+        prim_triangle_surface(p, hit);
+        break;
+    case SCENE_PRIM_ELLIPSOID:
+        prim_ellipsoid_surface(p, hit);
+        break;
+    case SCENE_PRIM_BOX:
+        prim_box_surface(p, hit);
+        break;
+    default:
+        prim_density_surface(p, hit);
+        break;
+    }
+}
+
+int aabb_hit(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax)
+{
+    num_t tnear = tmin, tfar = tmax;
+    for (int axis = 0; axis < 3; axis++)
+        if (!prim_slab(vec3_get(ray->origin, axis), vec3_get(ray->dir, axis),
+                       vec3_get(b->lo, axis), vec3_get(b->hi, axis), &tnear, &tfar))
+            return 0;
+    return 1;
+}

@@ -1,0 +1,43 @@
+/* render/prim.h: ray-primitive intersection and surface details.
+ *
+ * A ray is o + t*d in eye coordinates with d of unit length, so t is a
+ * distance.  prim_intersect finds only the distance (all a shadow ray
+ * needs); prim_surface then fills normal and map coordinates for the one
+ * hit that is shaded.  prim_intersect's answer never depends on tmax except
+ * for the final "t <= tmax" check, so the nearest hit is the same whatever
+ * order primitives are tested in and whatever boxes were skipped.
+ */
+#ifndef LINKS1_RENDER_PRIM_H
+#define LINKS1_RENDER_PRIM_H
+
+#include "render/render.h"
+
+typedef struct {
+    vec3_t origin;
+    vec3_t dir;      /* unit length */
+} ray_t;
+
+typedef struct {
+    num_t t;         /* distance along the ray */
+    uint32_t prim;   /* index into frame->prims */
+    vec3_t point;    /* eye-space hit point */
+    vec3_t normal;   /* unit outward geometric normal (may face the ray or not) */
+    vec3_t tangent;  /* unit, perpendicular to normal, along increasing u */
+    num_t u, v;      /* map coordinates, u and v in [0,1] */
+} hit_t;
+
+/* Nearest t with tmin < t <= tmax where the ray meets the surface; 1 if
+ * found (and *t_out set), 0 otherwise.  Rays starting inside a closed
+ * primitive find the exit point. */
+int prim_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin, num_t tmax, num_t *t_out);
+
+/* Fill hit->point, normal, tangent, u, v for hit->t on primitive p. */
+void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit);
+
+/* Ray-box test: 1 if the ray meets box b at some t in [tmin, tmax]. */
+int aabb_hit(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax);
+
+/* LINKS-1 density field of one component at squared distance r2. */
+num_t density_field(num_t r2, num_t radius, num_t weight);
+
+#endif

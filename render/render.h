@@ -1,0 +1,160 @@
+/* render/render.h: what the host tool and the board's DM and NCs call.
+ *
+ *   DM:  render_prepare(scene, frame_index, arena, &frame)
+ *        evaluates keyframes, maps everything to world then eye coordinates,
+ *        computes every cluster's bounding box and screen rectangle.
+ *   NC:  render_ctx_init(&ctx, frame); then per pixel
+ *        render_pixel(&ctx, x, y)            full traversal, or
+ *        render_pixel_clipped(&ctx, x, y, list, n)
+ *                                            primary ray tests only the
+ *                                            listed clusters (screen clipping)
+ *        ctx.stats counts rays and pixels whose precision was lost.
+ *
+ * No global or static mutable state anywhere in render/ and fixed/: every
+ * core may run these at once on shared memory.  A prepared frame is read-only
+ * once render_prepare returns; each core keeps its own render_ctx_t.
+ */
+#ifndef LINKS1_RENDER_RENDER_H
+#define LINKS1_RENDER_RENDER_H
+
+#include <stdint.h>
+
+#include "fixed/num.h"
+#include "render/arena.h"
+#include "render/scene.h"
+
+typedef struct {
+    uint8_t r, g, b;
+} rgb8_t;
+
+/* Axis-aligned box; empty when lo.x > hi.x. */
+typedef struct {
+    vec3_t lo, hi;
+} aabb_t;
+
+/* A light in eye coordinates. */
+typedef struct {
+    uint8_t kind;        /* enum scene_light_kind */
+    rgb_t intensity;
+    vec3_t position;     /* POINT, SPOT */
+    vec3_t to_light;     /* PARALLEL: unit vector towards the light */
+    vec3_t axis;         /* SPOT: unit cone axis, away from the light */
+    num_t cos_inner, cos_outer;
+} render_light_t;
+
+/* A primitive in eye coordinates. */
+typedef struct {
+    uint8_t kind;        /* enum scene_prim_kind */
+    uint16_t material;
+    uint32_t index;      /* its index in scene->prims: breaks ties between
+                            equal hit distances the same way in every order */
+    aabb_t bounds;       /* eye-space box around it */
+    /* ELLIPSOID: eye -> unit sphere; BOX: eye -> [-1,1]^3;
+     * DENSITY: eye -> the cluster's coordinates (components live there). */
+    xform_t to_local;
+    /* TRIANGLE: eye-space vertex 0, edges to vertices 1 and 2, unit normal */
+    vec3_t v0, e1, e2, normal;
+    /* TRIANGLE barycentrics of a point w = p - v0 in the plane:
+     * beta = (w . edge_n1) / height1, gamma = (w . edge_n2) / height2, with
+     * edge_n1 the unit in-plane normal of e2 and height1 = e1 . edge_n1
+     * (likewise for e1).  Unit vectors and heights rather than one scaled
+     * vector keep the fixed build precise on very large or small triangles. */
+    vec3_t edge_n1, edge_n2;
+    num_t height1, height2;
+    num_t tex_u[3], tex_v[3];
+    /* DENSITY */
+    const scene_density_component_t *components;
+    uint16_t component_count;
+    num_t threshold;
+} render_prim_t;
+
+/* A cluster in eye coordinates. */
+typedef struct {
+    aabb_t bounds;        /* around everything below it (prims and clusters) */
+    aabb_t own_bounds;    /* around its own primitives only */
+    /* Projected own_bounds, in pixels, inclusive and widened by one pixel so
+     * that it is conservative; x0 > x1 when it has no primitives.  Covers the
+     * whole screen when the box reaches behind the eye plane. */
+    int32_t screen_x0, screen_y0, screen_x1, screen_y1;
+    uint32_t first_child, child_count; /* into frame->child_list */
+    uint32_t first_prim, prim_count;   /* into frame->prim_list */
+} render_cluster_t;
+
+typedef struct {
+    const scene_t *scene;
+    uint32_t frame_index;
+    render_options_t options;      /* copied from the scene; callers may
+                                      change it before rendering */
+    uint16_t width, height;
+    num_t screen_half_w, screen_half_h; /* eye-space half extents at z = 1 */
+    uint16_t light_count;
+    render_light_t lights[RENDER_MAX_LIGHTS];
+    uint16_t cluster_count;
+    render_cluster_t *clusters;    /* index = scene cluster index */
+    uint16_t *child_list;          /* cluster indices, grouped by parent */
+    uint32_t prim_count;
+    render_prim_t *prims;          /* index = scene prim index */
+    uint32_t *prim_list;           /* prim indices, grouped by cluster */
+    uint8_t precision_lost;        /* 1 if preparing hit a fixed-point
+                                      saturation (boxes are then unreliable) */
+} render_frame_t;
+
+typedef struct {
+    uint64_t primary;       /* camera rays */
+    uint64_t shadow;        /* rays towards lights */
+    uint64_t reflection;
+    uint64_t refraction;
+    uint64_t transmission;  /* straight refractionless rays past max depth */
+    uint64_t box_tests;     /* bounding-box tests */
+    uint64_t prim_tests;    /* primitive intersection tests */
+    uint32_t precision_lost_pixels; /* pixels where a saturated value reached
+                                       a hit distance or a colour */
+} render_stats_t;
+
+typedef struct {
+    const render_frame_t *frame;
+    render_stats_t stats;
+    uint8_t pixel_lost;     /* set while tracing one pixel */
+} render_ctx_t;
+
+typedef enum {
+    RENDER_OK = 0,
+    RENDER_ERR_ARENA,        /* the arena is too small for the frame */
+    RENDER_ERR_SIZE,         /* width/height out of 1..RENDER_MAX_* */
+    RENDER_ERR_LIGHTS,       /* more than RENDER_MAX_LIGHTS lights */
+    RENDER_ERR_DEPTH,        /* max_depth above RENDER_MAX_DEPTH */
+    RENDER_ERR_CLUSTER,      /* bad parent index or nesting > RENDER_MAX_CLUSTER_DEPTH */
+    RENDER_ERR_PRIM,         /* bad kind, cluster or material index */
+    RENDER_ERR_DENSITY,      /* component range outside the scene's array,
+                                or more than RENDER_MAX_DENSITY_COMPONENTS */
+    RENDER_ERR_MAP,          /* bad map index/kind/size */
+    RENDER_ERR_KEY,          /* key range outside the scene's array */
+    RENDER_ERR_CAMERA,       /* eye == look_at, or up parallel to the view */
+    RENDER_ERR_SINGULAR,     /* a transform that cannot be inverted */
+} render_status_t;
+
+/* A constant string naming the status, for error messages. */
+const char *render_status_name(render_status_t status);
+
+/* Prepare frame frame_index of the scene: every allocation comes from arena,
+ * *out points into it.  The scene must stay alive and unchanged while the
+ * frame is used. */
+render_status_t render_prepare(const scene_t *scene, uint32_t frame_index,
+                               arena_t *arena, render_frame_t **out);
+
+void render_ctx_init(render_ctx_t *ctx, const render_frame_t *frame);
+
+/* Colour of pixel (x, y), y = 0 the top row. */
+rgb8_t render_pixel(render_ctx_t *ctx, uint32_t x, uint32_t y);
+
+/* Same, with the primary ray testing only the clusters listed (their own
+ * primitives, not their children): the NC's X-clipped candidates.  Gives
+ * the same colour as render_pixel when the list holds every cluster whose
+ * screen rectangle contains the pixel. */
+rgb8_t render_pixel_clipped(render_ctx_t *ctx, uint32_t x, uint32_t y,
+                            const uint16_t *clusters, uint32_t count);
+
+/* Pixels x0..x1-1 of row y into out[0..x1-x0-1]. */
+void render_span(render_ctx_t *ctx, uint32_t y, uint32_t x0, uint32_t x1, rgb8_t *out);
+
+#endif

@@ -1,0 +1,205 @@
+/* render/scene.h: the in-memory scene the renderer works on.
+ *
+ * The loader (render/scene_load.c) fills a scene_t from the compiled binary
+ * scene; render_prepare() (render/render.h) turns it into a prepared frame in
+ * eye coordinates.  Every array is a pointer into memory the caller provides
+ * (an arena); the renderer never writes to a scene_t.
+ *
+ * Conventions used by every field below:
+ * - Coordinates are left-handed, as in POV-Ray: x right, y up, z forward.
+ *   Units are arbitrary "scene units"; the fixed-point build requires every
+ *   world and eye coordinate to stay within +-NUM_COORD_LIMIT (fixed/num.h).
+ * - Colours and intensities are linear RGB in num_t, 1 = full scale; the
+ *   final pixel is clamped to [0,1] and scaled to 0..255.
+ * - Indices are 0-based; "none" is the constant SCENE_NONE.
+ */
+#ifndef LINKS1_RENDER_SCENE_H
+#define LINKS1_RENDER_SCENE_H
+
+#include <stdint.h>
+
+#include "fixed/num.h"
+#include "render/limits.h"
+
+#define SCENE_NONE 0xffffu /* "no map", "no parent" in 16-bit index fields */
+
+typedef struct {
+    num_t x, y, z;
+} vec3_t;
+
+typedef struct {
+    num_t r, g, b;
+} rgb_t;
+
+/* Affine map p' = m[.][0..2] * p + m[.][3], row-major (3 rows of 4). */
+typedef struct {
+    num_t m[3][4];
+} xform_t;
+
+/* Pinhole camera, fixed for the whole animation.  Pixel (x, y), with y = 0
+ * the top row, looks through the point at screen coordinates
+ *   sx = (2(x + 1/2)/width  - 1) * tan_half_fov_y * width/height
+ *   sy = (1 - 2(y + 1/2)/height) * tan_half_fov_y
+ * i.e. the eye-space direction (sx, sy, 1). */
+typedef struct {
+    vec3_t eye;           /* world position of the eye */
+    vec3_t look_at;       /* world point seen at the image centre; != eye */
+    vec3_t up;            /* world "up" hint; not parallel to look_at - eye */
+    num_t tan_half_fov_y; /* tan(vertical field of view / 2), > 0; the host
+                             compiler computes it (no tan() on the board) */
+} scene_camera_t;
+
+enum scene_light_kind {
+    SCENE_LIGHT_PARALLEL = 0, /* directional: no position, no falloff */
+    SCENE_LIGHT_POINT = 1,    /* point: no distance falloff (as in the paper) */
+    SCENE_LIGHT_SPOT = 2,     /* point with a cone and a smooth edge */
+};
+
+/* Lights live in world coordinates and do not animate. */
+typedef struct {
+    uint8_t kind;      /* enum scene_light_kind */
+    rgb_t intensity;   /* L_i per channel, >= 0, 1 = full */
+    vec3_t position;   /* POINT, SPOT: world position */
+    vec3_t direction;  /* PARALLEL: direction the light travels (from the
+                          light into the scene); SPOT: cone axis, pointing
+                          away from the light.  Need not be unit length. */
+    num_t cos_inner;   /* SPOT: cos of the half-angle of full intensity */
+    num_t cos_outer;   /* SPOT: cos of the half-angle where it reaches 0;
+                          cos_outer < cos_inner; smoothstep in between */
+} scene_light_t;
+
+/* Surface properties, the parameters of the paper's Fig. 5. */
+typedef struct {
+    rgb_t colour;      /* F: object colour, 0..1 per channel; multiplies
+                          ambient, diffuse and transmitted light */
+    num_t dic;         /* ambient coefficient (per light, unshadowed), 0..1 */
+    num_t drc;         /* diffuse coefficient (shadowed light), 0..1 */
+    num_t src;         /* reflection coefficient at normal incidence, 0..1 */
+    num_t trc;         /* transmissivity at normal incidence, 0..1;
+                          src + trc <= 1 keeps energy */
+    num_t fresnel;     /* 0..1: weight of the angle dependence of src/trc;
+                          0 = constant src/trc (see docs/renderer.md) */
+    num_t ior;         /* index of refraction, >= 1; 1 = no bending */
+    uint16_t phong_n;  /* highlight sharpness n of cos^n, 0..RENDER_MAX_PHONG_N;
+                          0 = no highlight */
+    uint16_t colour_map; /* index into scene maps (kind COLOUR) or SCENE_NONE */
+    uint16_t bump_map;   /* index into scene maps (kind BUMP) or SCENE_NONE */
+} scene_material_t;
+
+enum scene_map_kind {
+    SCENE_MAP_COLOUR = 0, /* texels: 3 bytes R,G,B per texel, 0..255 */
+    SCENE_MAP_BUMP = 1,   /* texels: 1 byte height per texel, 0..255; the
+                             normal is tilted by the height gradient */
+};
+
+/* A 2-D array mapped onto surfaces through (u, v) in [0,1) (repeated). */
+typedef struct {
+    uint8_t kind;          /* enum scene_map_kind */
+    uint16_t width;        /* texels, 1..RENDER_MAX_MAP_SIZE */
+    uint16_t height;       /* texels, 1..RENDER_MAX_MAP_SIZE */
+    const uint8_t *texels; /* row-major, row 0 at v = 0, width*height*bpp */
+    num_t repeat_u;        /* tiles across u in [0,1), > 0 (1 = once) */
+    num_t repeat_v;        /* tiles across v in [0,1), > 0 */
+    num_t bump_depth;      /* BUMP: >= 0; the normal n becomes
+                              normalize(n - bump_depth*(su*T + sv*B)) with
+                              su, sv = (difference of the two neighbouring
+                              texels' heights) / (2*255) along u and v */
+} scene_map_t;
+
+/* One animation key of a cluster: translation, rotation (unit quaternion,
+ * computed by the host compiler since the board has no trig) and scale.
+ * Between keys, translate/scale interpolate linearly and the quaternion by
+ * normalised linear interpolation; before the first/after the last key the
+ * end key holds. */
+typedef struct {
+    uint32_t frame;     /* frame number of this key; keys sorted ascending */
+    vec3_t translate;
+    num_t rot_w, rot_x, rot_y, rot_z; /* unit quaternion */
+    vec3_t scale;       /* per-axis scale, non-zero */
+} scene_key_t;
+
+/* A node of the object hierarchy.  cluster 0 is the root (the scene).
+ * child -> parent transform for frame f = K(f) * local, where K(f) is the
+ * keyframed TRS (translate * rotate * scale) or identity without keys. */
+typedef struct {
+    uint16_t parent;    /* index of the parent cluster, < own index;
+                           SCENE_NONE for cluster 0 only */
+    xform_t local;      /* child -> parent affine map, invertible */
+    uint32_t first_key; /* first key in scene keys */
+    uint16_t key_count; /* 0 = static */
+} scene_cluster_t;
+
+enum scene_prim_kind {
+    SCENE_PRIM_TRIANGLE = 0,
+    SCENE_PRIM_ELLIPSOID = 1,
+    SCENE_PRIM_BOX = 2,
+    SCENE_PRIM_DENSITY = 3,
+};
+
+/* One LINKS-1 density field component: weight b, radius d.  Field at
+ * distance r: b(1 - 3r^2/d^2) for r <= d/3; (3b/2)(1 - r/d)^2 for
+ * d/3 <= r <= d; 0 beyond. */
+typedef struct {
+    vec3_t centre;      /* in the cluster's coordinates */
+    num_t radius;       /* d > 0 */
+    num_t weight;       /* b; may be negative (a component that carves) */
+} scene_density_component_t;
+
+/* A primitive, in the coordinates of its cluster. */
+typedef struct {
+    uint8_t kind;       /* enum scene_prim_kind */
+    uint16_t cluster;   /* owning cluster */
+    uint16_t material;  /* index into scene materials */
+    union {
+        struct {
+            vec3_t v[3];   /* vertices; front face is either side */
+            num_t tex_u[3]; /* map coordinate u per vertex */
+            num_t tex_v[3]; /* map coordinate v per vertex */
+        } triangle;
+        struct {
+            vec3_t centre;
+            vec3_t radius; /* semi-axes along the cluster's x, y, z, > 0;
+                              rotate it with the cluster transform */
+        } ellipsoid;
+        struct {
+            vec3_t centre;
+            vec3_t half;   /* half edge lengths along x, y, z, > 0 */
+        } box;
+        struct {
+            uint32_t first;    /* first component in density_components */
+            uint16_t count;    /* 1..RENDER_MAX_DENSITY_COMPONENTS */
+            num_t threshold;   /* surface: sum of fields == threshold, > 0 */
+        } density;
+    } shape;
+} scene_prim_t;
+
+/* Switches for measurement; every combination gives a correct image and the
+ * speed-ups (hierarchy, bounds) give the same image on or off. */
+typedef struct {
+    uint8_t max_depth;      /* reflection/refraction depth, 0..RENDER_MAX_DEPTH;
+                               primary ray = depth 0 */
+    uint8_t refractionless; /* 1: past max_depth, transmission goes straight
+                               through the remaining transparent objects */
+    uint8_t use_bounds;     /* 1: test bounding boxes before contents */
+    uint8_t use_hierarchy;  /* 1: walk the cluster tree; 0: flat list */
+    uint8_t shadows;        /* 1: shadow rays; 0: every light unshadowed */
+} render_options_t;
+
+typedef struct {
+    uint16_t width, height;    /* image size, 1..RENDER_MAX_WIDTH/HEIGHT */
+    uint32_t frame_count;      /* frames of the animation, >= 1 */
+    scene_camera_t camera;
+    rgb_t background;          /* colour of rays that hit nothing */
+    render_options_t options;
+
+    const scene_light_t *lights;         uint16_t light_count;
+    const scene_material_t *materials;   uint16_t material_count;
+    const scene_map_t *maps;             uint16_t map_count;
+    const scene_cluster_t *clusters;     uint16_t cluster_count;
+    const scene_key_t *keys;             uint32_t key_count;
+    const scene_prim_t *prims;           uint32_t prim_count;
+    const scene_density_component_t *density_components;
+    uint32_t density_component_count;
+} scene_t;
+
+#endif

@@ -1,0 +1,709 @@
+/* render/scene_load.c: checks a compiled scene and builds a scene_t from it
+ * (see scene_load.h and proto/scene_format.h).
+ *
+ * Reals are checked on their binary32 bit patterns with integer compares
+ * (finite, sign, range), so the check is the same, exact, in every
+ * arithmetic, and the fixed build does no floating point at all.  Values
+ * then enter num_t through num_from_f32_bits.
+ */
+#include "render/scene_load.h"
+
+#include "proto/crc32.h"
+#include "proto/scene_format.h"
+#include "proto/wire.h"
+
+#define LOAD_NO_NUMBER (-1L - 0x7fffffffL) /* "no number in this message part" */
+#define LOAD_F32_EXP_MASK 0x7f800000u
+#define LOAD_F32_SIGN 0x80000000u
+
+struct load_section {
+    int present;
+    uint32_t offset, count;
+};
+
+struct load {
+    const uint8_t *buf;
+    uint32_t total;
+    struct load_section sec[SCN_SEC_COUNT + 1]; /* by kind */
+    scene_load_error_t *err;
+};
+
+/* ------------------------------------------------------------ messages */
+
+static void load_msg_str(char *m, size_t *n, const char *s)
+{
+    while (*s && *n + 1 < SCENE_LOAD_MSG_MAX)
+        m[(*n)++] = *s++;
+    m[*n] = 0;
+}
+
+static void load_msg_num(char *m, size_t *n, long v)
+{
+    char d[24];
+    int k = 0;
+    unsigned long u = v < 0 ? 0ul - (unsigned long)v : (unsigned long)v;
+    do {
+        d[k++] = (char)('0' + u % 10);
+        u /= 10;
+    } while (u);
+    if (v < 0)
+        d[k++] = '-';
+    char out[24];
+    for (int i = 0; i < k; i++)
+        out[i] = d[k - 1 - i];
+    out[k] = 0;
+    load_msg_str(m, n, out);
+}
+
+/* "a na b nb c": parts with LOAD_NO_NUMBER or NULL are left out. */
+static scene_load_status_t load_fail(struct load *L, scene_load_status_t st, const char *a,
+                                     long na, const char *b, long nb, const char *c)
+{
+    char *m = L->err->message;
+    size_t n = 0;
+    m[0] = 0;
+    L->err->status = st;
+    if (a)
+        load_msg_str(m, &n, a);
+    if (na != LOAD_NO_NUMBER)
+        load_msg_num(m, &n, na);
+    if (b)
+        load_msg_str(m, &n, b);
+    if (nb != LOAD_NO_NUMBER)
+        load_msg_num(m, &n, nb);
+    if (c)
+        load_msg_str(m, &n, c);
+    return st;
+}
+
+/* "<what> <i>: <problem>" */
+static scene_load_status_t load_bad(struct load *L, scene_load_status_t st, const char *what,
+                                    uint32_t i, const char *problem)
+{
+    char part[SCENE_LOAD_MSG_MAX];
+    size_t n = 0;
+    part[0] = 0;
+    load_msg_str(part, &n, ": ");
+    load_msg_str(part, &n, problem);
+    return load_fail(L, st, what, (long)i, part, LOAD_NO_NUMBER, NULL);
+}
+
+#define LOAD_TRY(x)                                                          \
+    do {                                                                     \
+        scene_load_status_t st_ = (x);                                       \
+        if (st_ != SCENE_LOAD_OK)                                            \
+            return st_;                                                      \
+    } while (0)
+
+/* ------------------------------------------------------- reals as bits */
+
+static uint32_t load_bits_of(float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, sizeof u); /* a constant: folded, no float arithmetic */
+    return u;
+}
+
+static int load_finite(uint32_t bits) { return (bits & LOAD_F32_EXP_MASK) != LOAD_F32_EXP_MASK; }
+
+/* An unsigned key that orders finite binary32 values as the reals do. */
+static uint32_t load_order_key(uint32_t bits)
+{
+    return (bits & LOAD_F32_SIGN) ? ~bits : bits | LOAD_F32_SIGN;
+}
+
+/* lo <= v <= hi, v finite */
+static int load_in(uint32_t bits, float lo, float hi)
+{
+    uint32_t k = load_order_key(bits);
+    return load_finite(bits) && k >= load_order_key(load_bits_of(lo)) &&
+           k <= load_order_key(load_bits_of(hi));
+}
+
+/* 0 < v <= hi, v finite */
+static int load_pos(uint32_t bits, float hi)
+{
+    return load_finite(bits) && !(bits & LOAD_F32_SIGN) && bits != 0 &&
+           bits <= load_bits_of(hi);
+}
+
+static int load_zero(uint32_t bits) { return (bits & ~LOAD_F32_SIGN) == 0; }
+
+static num_t load_num(const uint8_t *p) { return num_from_f32_bits(wire_get_u32(p)); }
+
+static vec3_t load_vec3(const uint8_t *p)
+{
+    vec3_t v = {load_num(p), load_num(p + 4), load_num(p + 8)};
+    return v;
+}
+
+static rgb_t load_rgb(const uint8_t *p)
+{
+    rgb_t c = {load_num(p), load_num(p + 4), load_num(p + 8)};
+    return c;
+}
+
+/* n consecutive reals at p, each within +-SCN_MAX_COORD */
+static int load_coords(const uint8_t *p, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (!load_in(wire_get_u32(p + 4 * i), -SCN_MAX_COORD, SCN_MAX_COORD))
+            return 0;
+    return 1;
+}
+
+static int load_units(const uint8_t *p, int n, float hi)
+{
+    for (int i = 0; i < n; i++)
+        if (!load_in(wire_get_u32(p + 4 * i), 0.0f, hi))
+            return 0;
+    return 1;
+}
+
+/* ------------------------------------------------- header and sections */
+
+static const uint32_t load_record_size[SCN_SEC_COUNT + 1] = {
+    [SCN_SEC_VIEW] = SCN_VIEW_SIZE,         [SCN_SEC_LIGHTS] = SCN_LIGHT_SIZE,
+    [SCN_SEC_MATERIALS] = SCN_MAT_SIZE,     [SCN_SEC_MAPS] = SCN_MAP_SIZE,
+    [SCN_SEC_TEXELS] = 1,                   [SCN_SEC_CLUSTERS] = SCN_CLUSTER_SIZE,
+    [SCN_SEC_PRIMS] = SCN_PRIM_SIZE,        [SCN_SEC_COMPONENTS] = SCN_COMPONENT_SIZE,
+    [SCN_SEC_KEYS] = SCN_KEY_SIZE,
+};
+
+static const uint32_t load_count_limit[SCN_SEC_COUNT + 1] = {
+    [SCN_SEC_VIEW] = 1,                         [SCN_SEC_LIGHTS] = SCN_MAX_LIGHTS,
+    [SCN_SEC_MATERIALS] = SCN_MAX_MATERIALS,    [SCN_SEC_MAPS] = SCN_MAX_MAPS,
+    [SCN_SEC_TEXELS] = SCN_MAX_TEXEL_BYTES,     [SCN_SEC_CLUSTERS] = SCN_MAX_CLUSTERS,
+    [SCN_SEC_PRIMS] = SCN_MAX_PRIMS,            [SCN_SEC_COMPONENTS] = SCN_MAX_COMPONENTS,
+    [SCN_SEC_KEYS] = SCN_MAX_KEYS,
+};
+
+static scene_load_status_t load_header(struct load *L, size_t len)
+{
+    const uint8_t *b = L->buf;
+    if (len < SCN_HEADER_SIZE)
+        return load_fail(L, SCENE_LOAD_ERR_TRUNCATED, "scene of ", (long)len,
+                         " bytes is shorter than its header", LOAD_NO_NUMBER, NULL);
+    if (b[0] != SCN_MAGIC_0 || b[1] != SCN_MAGIC_1 || b[2] != SCN_MAGIC_2 ||
+        b[3] != SCN_MAGIC_3)
+        return load_fail(L, SCENE_LOAD_ERR_MAGIC, "not a compiled scene (magic is not L1SC)",
+                         LOAD_NO_NUMBER, NULL, LOAD_NO_NUMBER, NULL);
+    uint16_t version = wire_get_u16(b + SCN_HDR_VERSION);
+    if (version != SCN_VERSION)
+        return load_fail(L, SCENE_LOAD_ERR_VERSION, "format version ", version,
+                         " (this loader reads version ", SCN_VERSION, ")");
+    uint32_t total = wire_get_u32(b + SCN_HDR_TOTAL);
+    if (total > SCN_MAX_SIZE)
+        return load_fail(L, SCENE_LOAD_ERR_SIZE, "total size ", (long)total,
+                         " is over the limit of ", (long)SCN_MAX_SIZE, " bytes");
+    if (total > len)
+        return load_fail(L, SCENE_LOAD_ERR_TRUNCATED, "scene truncated: header says ",
+                         (long)total, " bytes, got ", (long)len, NULL);
+    if (total != len)
+        return load_fail(L, SCENE_LOAD_ERR_SIZE, "header says ", (long)total,
+                         " bytes but the scene is ", (long)len, " bytes");
+    uint16_t nsec = wire_get_u16(b + SCN_HDR_SECTIONS);
+    if (nsec < 1 || nsec > SCN_SEC_COUNT)
+        return load_fail(L, SCENE_LOAD_ERR_SECTION, "section count ", nsec,
+                         " is not 1..", SCN_SEC_COUNT, NULL);
+    uint32_t table_end = SCN_HEADER_SIZE + (uint32_t)nsec * SCN_SECENT_SIZE;
+    if (table_end > total)
+        return load_fail(L, SCENE_LOAD_ERR_SIZE, "total size ", (long)total,
+                         " cannot hold the section table of ", nsec, " entries");
+    L->total = total;
+    uint32_t crc = crc32(b + SCN_CRC_START, total - SCN_CRC_START);
+    if (crc != wire_get_u32(b + SCN_HDR_CRC))
+        return load_fail(L, SCENE_LOAD_ERR_CRC, "checksum mismatch: the scene is corrupt",
+                         LOAD_NO_NUMBER, NULL, LOAD_NO_NUMBER, NULL);
+    /* The table: kinds known and unique, bodies inside the file, after the
+     * table, aligned, not overlapping, size = count * record size. */
+    uint32_t lo[SCN_SEC_COUNT], hi[SCN_SEC_COUNT];
+    for (uint32_t i = 0; i < nsec; i++) {
+        const uint8_t *e = b + SCN_HEADER_SIZE + i * SCN_SECENT_SIZE;
+        uint32_t kind = wire_get_u32(e + SCN_SECENT_KIND);
+        uint32_t off = wire_get_u32(e + SCN_SECENT_OFFSET);
+        uint32_t bytes = wire_get_u32(e + SCN_SECENT_BYTES);
+        uint32_t count = wire_get_u32(e + SCN_SECENT_COUNT);
+        if (kind < 1 || kind > SCN_SEC_COUNT)
+            return load_fail(L, SCENE_LOAD_ERR_SECTION, "section entry ", (long)i,
+                             ": unknown kind ", (long)kind, NULL);
+        if (L->sec[kind].present)
+            return load_fail(L, SCENE_LOAD_ERR_SECTION, "section kind ", (long)kind,
+                             " appears twice", LOAD_NO_NUMBER, NULL);
+        if (off % SCN_SECTION_ALIGN != 0 || off < table_end || off > total ||
+            bytes > total - off)
+            return load_fail(L, SCENE_LOAD_ERR_SECTION, "section kind ", (long)kind,
+                             ": body outside the file (offset ", (long)off, ")");
+        if (count > load_count_limit[kind])
+            return load_fail(L, SCENE_LOAD_ERR_LIMIT, "section kind ", (long)kind,
+                             ": record count over its limit of ",
+                             (long)load_count_limit[kind], NULL);
+        if ((uint64_t)count * load_record_size[kind] != bytes)
+            return load_fail(L, SCENE_LOAD_ERR_SECTION, "section kind ", (long)kind,
+                             ": size is not count * record size ",
+                             (long)load_record_size[kind], NULL);
+        for (uint32_t j = 0; j < i; j++)
+            if (off < hi[j] && lo[j] < off + bytes)
+                return load_fail(L, SCENE_LOAD_ERR_SECTION, "section kind ", (long)kind,
+                                 " overlaps another section", LOAD_NO_NUMBER, NULL);
+        lo[i] = off;
+        hi[i] = off + bytes;
+        L->sec[kind].present = 1;
+        L->sec[kind].offset = off;
+        L->sec[kind].count = count;
+    }
+    if (!L->sec[SCN_SEC_VIEW].present || L->sec[SCN_SEC_VIEW].count != 1)
+        return load_fail(L, SCENE_LOAD_ERR_MISSING, "the view section is missing",
+                         LOAD_NO_NUMBER, NULL, LOAD_NO_NUMBER, NULL);
+    if (!L->sec[SCN_SEC_CLUSTERS].present || L->sec[SCN_SEC_CLUSTERS].count < 1)
+        return load_fail(L, SCENE_LOAD_ERR_MISSING, "the cluster section (root) is missing",
+                         LOAD_NO_NUMBER, NULL, LOAD_NO_NUMBER, NULL);
+    return SCENE_LOAD_OK;
+}
+
+static const uint8_t *load_rec(const struct load *L, int kind, uint32_t i)
+{
+    return L->buf + L->sec[kind].offset + i * load_record_size[kind];
+}
+
+/* ------------------------------------------------------------ records */
+
+static scene_load_status_t load_view(struct load *L, scene_t *s)
+{
+    const uint8_t *p = load_rec(L, SCN_SEC_VIEW, 0);
+    uint16_t w = wire_get_u16(p + SCN_VIEW_WIDTH), h = wire_get_u16(p + SCN_VIEW_HEIGHT);
+    uint16_t depth = wire_get_u16(p + SCN_VIEW_MAX_DEPTH);
+    uint16_t flags = wire_get_u16(p + SCN_VIEW_FLAGS);
+    uint32_t frames = wire_get_u32(p + SCN_VIEW_FRAMES);
+    if (w < 1 || w > SCN_MAX_WIDTH || h < 1 || h > SCN_MAX_HEIGHT)
+        return load_fail(L, SCENE_LOAD_ERR_LIMIT, "image size ", w, "x", h,
+                         " outside 1..1024 per side");
+    if (depth > SCN_MAX_DEPTH)
+        return load_fail(L, SCENE_LOAD_ERR_LIMIT, "max depth ", depth, " over the limit of ",
+                         SCN_MAX_DEPTH, NULL);
+    if (flags & ~SCN_OPT_KNOWN)
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "unknown option flags ", flags, NULL,
+                         LOAD_NO_NUMBER, NULL);
+    if (frames < 1 || frames > SCN_MAX_FRAMES)
+        return load_fail(L, SCENE_LOAD_ERR_LIMIT, "frame count ", (long)frames, " not 1..",
+                         SCN_MAX_FRAMES, NULL);
+    if (!load_coords(p + SCN_VIEW_EYE, 9))
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "camera: a coordinate is not finite or "
+                         "beyond the coordinate limit", LOAD_NO_NUMBER, NULL, LOAD_NO_NUMBER,
+                         NULL);
+    if (!load_pos(wire_get_u32(p + SCN_VIEW_TAN_HALF_FOV_Y), SCN_MAX_TAN_HALF_FOV))
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "camera: field of view out of range",
+                         LOAD_NO_NUMBER, NULL, LOAD_NO_NUMBER, NULL);
+    if (!load_units(p + SCN_VIEW_BACKGROUND, 3, 1.0f))
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "background colour not within 0..1",
+                         LOAD_NO_NUMBER, NULL, LOAD_NO_NUMBER, NULL);
+    s->width = w;
+    s->height = h;
+    s->frame_count = frames;
+    s->camera.eye = load_vec3(p + SCN_VIEW_EYE);
+    s->camera.look_at = load_vec3(p + SCN_VIEW_LOOK_AT);
+    s->camera.up = load_vec3(p + SCN_VIEW_UP);
+    s->camera.tan_half_fov_y = load_num(p + SCN_VIEW_TAN_HALF_FOV_Y);
+    s->background = load_rgb(p + SCN_VIEW_BACKGROUND);
+    s->options.max_depth = (uint8_t)depth;
+    s->options.refractionless = (flags & SCN_OPT_REFRACTIONLESS) != 0;
+    s->options.use_bounds = (flags & SCN_OPT_NO_BOUNDS) == 0;
+    s->options.use_hierarchy = (flags & SCN_OPT_NO_HIERARCHY) == 0;
+    s->options.shadows = (flags & SCN_OPT_NO_SHADOWS) == 0;
+    /* eye == look_at and up parallel to the view are refused by
+     * render_prepare (RENDER_ERR_CAMERA), which does that geometry anyway. */
+    return SCENE_LOAD_OK;
+}
+
+static scene_load_status_t load_lights(struct load *L, scene_light_t *out)
+{
+    for (uint32_t i = 0; i < L->sec[SCN_SEC_LIGHTS].count; i++) {
+        const uint8_t *p = load_rec(L, SCN_SEC_LIGHTS, i);
+        uint32_t kind = wire_get_u32(p + SCN_LIGHT_KIND);
+        if (kind < SCN_LIGHT_PARALLEL || kind > SCN_LIGHT_SPOT)
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "light ", i, "unknown kind");
+        if (!load_units(p + SCN_LIGHT_COLOUR, 3, SCN_MAX_INTENSITY))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "light ", i, "colour out of range");
+        if (!load_coords(p + SCN_LIGHT_POSITION, 6))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "light ", i,
+                            "position or direction out of range");
+        const uint8_t *d = p + SCN_LIGHT_DIRECTION;
+        if (kind != SCN_LIGHT_POINT && load_zero(wire_get_u32(d)) &&
+            load_zero(wire_get_u32(d + 4)) && load_zero(wire_get_u32(d + 8)))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "light ", i, "direction is zero");
+        uint32_t ci = wire_get_u32(p + SCN_LIGHT_COS_INNER);
+        uint32_t co = wire_get_u32(p + SCN_LIGHT_COS_OUTER);
+        if (!load_in(ci, -1.0f, 1.0f) || !load_in(co, -1.0f, 1.0f) ||
+            (kind == SCN_LIGHT_SPOT && load_order_key(co) >= load_order_key(ci)))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "light ", i,
+                            "cone cosines not -1..1 with outer < inner");
+        scene_light_t *l = &out[i];
+        l->kind = kind == SCN_LIGHT_PARALLEL ? SCENE_LIGHT_PARALLEL
+                  : kind == SCN_LIGHT_POINT  ? SCENE_LIGHT_POINT
+                                             : SCENE_LIGHT_SPOT;
+        l->intensity = load_rgb(p + SCN_LIGHT_COLOUR);
+        l->position = load_vec3(p + SCN_LIGHT_POSITION);
+        l->direction = load_vec3(d);
+        l->cos_inner = num_from_f32_bits(ci);
+        l->cos_outer = num_from_f32_bits(co);
+    }
+    return SCENE_LOAD_OK;
+}
+
+static scene_load_status_t load_maps(struct load *L, scene_map_t *out, uint8_t *texels)
+{
+    uint32_t n_texels = L->sec[SCN_SEC_TEXELS].present ? L->sec[SCN_SEC_TEXELS].count : 0;
+    const uint8_t *src = L->sec[SCN_SEC_TEXELS].present ? load_rec(L, SCN_SEC_TEXELS, 0) : 0;
+    for (uint32_t i = 0; i < L->sec[SCN_SEC_MAPS].count; i++) {
+        const uint8_t *p = load_rec(L, SCN_SEC_MAPS, i);
+        uint16_t kind = wire_get_u16(p + SCN_MAP_KIND);
+        uint16_t w = wire_get_u16(p + SCN_MAP_WIDTH), h = wire_get_u16(p + SCN_MAP_HEIGHT);
+        uint32_t first = wire_get_u32(p + SCN_MAP_FIRST);
+        if (kind != SCN_MAP_COLOUR && kind != SCN_MAP_BUMP)
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "map ", i, "unknown kind");
+        if (wire_get_u16(p + SCN_MAP_RESERVED) != 0)
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "map ", i, "reserved field not zero");
+        if (w < 1 || w > SCN_MAX_MAP_SIDE || h < 1 || h > SCN_MAX_MAP_SIDE)
+            return load_bad(L, SCENE_LOAD_ERR_LIMIT, "map ", i, "size outside 1..1024");
+        uint32_t bytes = (uint32_t)w * h *
+                         (kind == SCN_MAP_COLOUR ? SCN_MAP_COLOUR_BYTES : SCN_MAP_BUMP_BYTES);
+        if (first > n_texels || bytes > n_texels - first)
+            return load_bad(L, SCENE_LOAD_ERR_INDEX, "map ", i,
+                            "texels outside the texel section");
+        if (!load_pos(wire_get_u32(p + SCN_MAP_REPEAT_U), SCN_MAX_REPEAT) ||
+            !load_pos(wire_get_u32(p + SCN_MAP_REPEAT_V), SCN_MAX_REPEAT))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "map ", i, "repeat not > 0 and finite");
+        if (!load_in(wire_get_u32(p + SCN_MAP_BUMP_DEPTH), 0.0f, SCN_MAX_COORD))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "map ", i, "bump depth out of range");
+        scene_map_t *m = &out[i];
+        m->kind = kind == SCN_MAP_COLOUR ? SCENE_MAP_COLOUR : SCENE_MAP_BUMP;
+        m->width = w;
+        m->height = h;
+        m->texels = texels + first;
+        m->repeat_u = load_num(p + SCN_MAP_REPEAT_U);
+        m->repeat_v = load_num(p + SCN_MAP_REPEAT_V);
+        m->bump_depth = load_num(p + SCN_MAP_BUMP_DEPTH);
+    }
+    if (n_texels)
+        memcpy(texels, src, n_texels);
+    return SCENE_LOAD_OK;
+}
+
+static scene_load_status_t load_materials(struct load *L, const scene_map_t *maps,
+                                          scene_material_t *out)
+{
+    uint32_t n_maps = L->sec[SCN_SEC_MAPS].count;
+    for (uint32_t i = 0; i < L->sec[SCN_SEC_MATERIALS].count; i++) {
+        const uint8_t *p = load_rec(L, SCN_SEC_MATERIALS, i);
+        if (!load_units(p + SCN_MAT_COLOUR, 8, 1.0f))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "material ", i,
+                            "colour, dic, drc, src, trc or fresnel not within 0..1");
+        if (!load_in(wire_get_u32(p + SCN_MAT_IOR), 1.0f, SCN_MAX_IOR))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "material ", i, "ior not within 1..10");
+        uint16_t phong = wire_get_u16(p + SCN_MAT_PHONG);
+        if (phong > SCN_MAX_PHONG)
+            return load_bad(L, SCENE_LOAD_ERR_LIMIT, "material ", i, "phong n over 1024");
+        for (int r = 0; r < 6; r++)
+            if (p[SCN_MAT_RESERVED + r] != 0)
+                return load_bad(L, SCENE_LOAD_ERR_VALUE, "material ", i,
+                                "reserved bytes not zero");
+        uint16_t cmap = wire_get_u16(p + SCN_MAT_COLOUR_MAP);
+        uint16_t bmap = wire_get_u16(p + SCN_MAT_BUMP_MAP);
+        if (cmap != SCN_NO_INDEX && (cmap >= n_maps || maps[cmap].kind != SCENE_MAP_COLOUR))
+            return load_bad(L, SCENE_LOAD_ERR_INDEX, "material ", i,
+                            "colour map index out of range or not a colour map");
+        if (bmap != SCN_NO_INDEX && (bmap >= n_maps || maps[bmap].kind != SCENE_MAP_BUMP))
+            return load_bad(L, SCENE_LOAD_ERR_INDEX, "material ", i,
+                            "bump map index out of range or not a bump map");
+        scene_material_t *m = &out[i];
+        m->colour = load_rgb(p + SCN_MAT_COLOUR);
+        m->dic = load_num(p + SCN_MAT_DIC);
+        m->drc = load_num(p + SCN_MAT_DRC);
+        m->src = load_num(p + SCN_MAT_SRC);
+        m->trc = load_num(p + SCN_MAT_TRC);
+        m->fresnel = load_num(p + SCN_MAT_FRESNEL);
+        m->ior = load_num(p + SCN_MAT_IOR);
+        m->phong_n = phong;
+        m->colour_map = cmap == SCN_NO_INDEX ? SCENE_NONE : cmap;
+        m->bump_map = bmap == SCN_NO_INDEX ? SCENE_NONE : bmap;
+        if (num_gt(num_add(m->src, m->trc), num_add(NUM_ONE, NUM_C(0.001))))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "material ", i, "src + trc over 1");
+    }
+    return SCENE_LOAD_OK;
+}
+
+static scene_load_status_t load_keys(struct load *L, scene_key_t *out)
+{
+    for (uint32_t i = 0; i < L->sec[SCN_SEC_KEYS].count; i++) {
+        const uint8_t *p = load_rec(L, SCN_SEC_KEYS, i);
+        if (!load_coords(p + SCN_KEY_TRANSLATE, 3) || !load_coords(p + SCN_KEY_SCALE, 3))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "key ", i, "value out of range");
+        if (wire_get_u32(p + SCN_KEY_FRAME) >= SCN_MAX_FRAMES)
+            return load_bad(L, SCENE_LOAD_ERR_LIMIT, "key ", i, "frame number over the limit");
+        for (int k = 0; k < 4; k++)
+            if (!load_in(wire_get_u32(p + SCN_KEY_ROTATION + 4 * k), -1.0f, 1.0f))
+                return load_bad(L, SCENE_LOAD_ERR_VALUE, "key ", i,
+                                "quaternion component not within -1..1");
+        for (int k = 0; k < 3; k++)
+            if (load_zero(wire_get_u32(p + SCN_KEY_SCALE + 4 * k)))
+                return load_bad(L, SCENE_LOAD_ERR_VALUE, "key ", i, "scale is zero");
+        scene_key_t *k = &out[i];
+        k->frame = wire_get_u32(p + SCN_KEY_FRAME);
+        k->translate = load_vec3(p + SCN_KEY_TRANSLATE);
+        k->rot_w = load_num(p + SCN_KEY_ROTATION);
+        k->rot_x = load_num(p + SCN_KEY_ROTATION + 4);
+        k->rot_y = load_num(p + SCN_KEY_ROTATION + 8);
+        k->rot_z = load_num(p + SCN_KEY_ROTATION + 12);
+        k->scale = load_vec3(p + SCN_KEY_SCALE);
+        num_t norm2 = num_add(num_dot3(k->rot_w, k->rot_x, k->rot_y, k->rot_w, k->rot_x,
+                                       k->rot_y),
+                              num_mul(k->rot_z, k->rot_z));
+        num_t tol = NUM_C(2 * SCN_QUAT_NORM_TOLERANCE);
+        if (num_lt(norm2, num_sub(NUM_ONE, tol)) || num_gt(norm2, num_add(NUM_ONE, tol)))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "key ", i, "rotation is not a unit quaternion");
+    }
+    return SCENE_LOAD_OK;
+}
+
+/* Parents come before children, nesting is bounded, key ranges are inside
+ * the key section and their frames rise: the tree is acyclic by the first
+ * rule alone. */
+static scene_load_status_t load_clusters(struct load *L, const scene_key_t *keys,
+                                         scene_cluster_t *out, uint8_t *nesting)
+{
+    uint32_t n_keys = L->sec[SCN_SEC_KEYS].present ? L->sec[SCN_SEC_KEYS].count : 0;
+    for (uint32_t i = 0; i < L->sec[SCN_SEC_CLUSTERS].count; i++) {
+        const uint8_t *p = load_rec(L, SCN_SEC_CLUSTERS, i);
+        uint16_t parent = wire_get_u16(p + SCN_CLUSTER_PARENT);
+        uint16_t kc = wire_get_u16(p + SCN_CLUSTER_KEY_COUNT);
+        uint32_t kf = wire_get_u32(p + SCN_CLUSTER_KEY_FIRST);
+        if (i == 0 ? parent != SCN_NO_INDEX : parent >= i)
+            return load_bad(L, SCENE_LOAD_ERR_TREE, "cluster ", i,
+                            i == 0 ? "the root has a parent"
+                                   : "parent index not below its own (cycle or forward link)");
+        nesting[i] = i == 0 ? 0 : (uint8_t)(nesting[parent] + 1);
+        if (nesting[i] > SCN_MAX_CLUSTER_NESTING)
+            return load_bad(L, SCENE_LOAD_ERR_TREE, "cluster ", i, "nested deeper than 32");
+        if (kf > n_keys || kc > n_keys - kf)
+            return load_bad(L, SCENE_LOAD_ERR_INDEX, "cluster ", i,
+                            "key range outside the key section");
+        for (uint32_t k = 1; k < kc; k++)
+            if (keys[kf + k].frame <= keys[kf + k - 1].frame)
+                return load_bad(L, SCENE_LOAD_ERR_TREE, "cluster ", i,
+                                "key frames do not rise");
+        if (!load_coords(p + SCN_CLUSTER_MATRIX, 12))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "cluster ", i,
+                            "matrix entry not finite or beyond the coordinate limit");
+        if (wire_get_u32(p + SCN_CLUSTER_RESERVED) != 0)
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "cluster ", i, "reserved field not zero");
+        scene_cluster_t *c = &out[i];
+        c->parent = i == 0 ? SCENE_NONE : parent;
+        for (int r = 0; r < 3; r++)
+            for (int k = 0; k < 4; k++)
+                c->local.m[r][k] = load_num(p + SCN_CLUSTER_MATRIX + 4 * (r * 4 + k));
+        c->first_key = kf;
+        c->key_count = kc;
+    }
+    return SCENE_LOAD_OK;
+}
+
+static scene_load_status_t load_components(struct load *L, scene_density_component_t *out)
+{
+    uint32_t n = L->sec[SCN_SEC_COMPONENTS].present ? L->sec[SCN_SEC_COMPONENTS].count : 0;
+    for (uint32_t i = 0; i < n; i++) {
+        const uint8_t *p = load_rec(L, SCN_SEC_COMPONENTS, i);
+        uint32_t weight = wire_get_u32(p + SCN_COMPONENT_WEIGHT);
+        if (!load_coords(p + SCN_COMPONENT_CENTRE, 3) ||
+            !load_pos(wire_get_u32(p + SCN_COMPONENT_RADIUS), SCN_MAX_COORD) ||
+            !load_coords(p + SCN_COMPONENT_WEIGHT, 1) || load_zero(weight))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "density component ", i,
+                            "centre, radius (> 0) or weight (non-zero) out of range");
+        out[i].centre = load_vec3(p + SCN_COMPONENT_CENTRE);
+        out[i].radius = load_num(p + SCN_COMPONENT_RADIUS);
+        out[i].weight = num_from_f32_bits(weight);
+    }
+    return SCENE_LOAD_OK;
+}
+
+static const int load_prim_values[] = {
+    [SCN_PRIM_TRIANGLE] = SCN_TRIANGLE_VALUES, [SCN_PRIM_ELLIPSOID] = SCN_ELLIPSOID_VALUES,
+    [SCN_PRIM_BOX] = SCN_BOX_VALUES,           [SCN_PRIM_DENSITY] = SCN_DENSITY_VALUES,
+};
+
+static scene_load_status_t load_prims(struct load *L, scene_prim_t *out)
+{
+    uint32_t n_mat = L->sec[SCN_SEC_MATERIALS].count;
+    uint32_t n_clu = L->sec[SCN_SEC_CLUSTERS].count;
+    uint32_t n_comp = L->sec[SCN_SEC_COMPONENTS].present ? L->sec[SCN_SEC_COMPONENTS].count : 0;
+    for (uint32_t i = 0; i < L->sec[SCN_SEC_PRIMS].count; i++) {
+        const uint8_t *p = load_rec(L, SCN_SEC_PRIMS, i);
+        uint16_t kind = wire_get_u16(p + SCN_PRIM_KIND);
+        uint16_t mat = wire_get_u16(p + SCN_PRIM_MATERIAL);
+        uint16_t clu = wire_get_u16(p + SCN_PRIM_CLUSTER);
+        uint32_t first = wire_get_u32(p + SCN_PRIM_FIRST);
+        uint32_t count = wire_get_u32(p + SCN_PRIM_COUNT);
+        const uint8_t *v = p + SCN_PRIM_VALUES;
+        if (kind < SCN_PRIM_TRIANGLE || kind > SCN_PRIM_DENSITY)
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i, "unknown kind");
+        if (mat >= n_mat)
+            return load_bad(L, SCENE_LOAD_ERR_INDEX, "prim ", i, "material index out of range");
+        if (clu >= n_clu)
+            return load_bad(L, SCENE_LOAD_ERR_INDEX, "prim ", i, "cluster index out of range");
+        if (wire_get_u16(p + SCN_PRIM_RESERVED) != 0)
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i, "reserved field not zero");
+        int nv = load_prim_values[kind];
+        if (!load_coords(v, nv))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
+                            "a value is not finite or beyond the coordinate limit");
+        for (int k = nv; k < SCN_PRIM_MAX_VALUES; k++)
+            if (wire_get_u32(v + 4 * k) != 0)
+                return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i, "unused value not zero");
+        if (kind != SCN_PRIM_DENSITY && (first != 0 || count != 0))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
+                            "component range on a primitive that is not a density sphere");
+        scene_prim_t *o = &out[i];
+        o->cluster = clu;
+        o->material = mat;
+        switch (kind) {
+        case SCN_PRIM_TRIANGLE:
+            o->kind = SCENE_PRIM_TRIANGLE;
+            for (int k = 0; k < 3; k++) {
+                o->shape.triangle.v[k] = load_vec3(v + 12 * k);
+                o->shape.triangle.tex_u[k] = load_num(v + 36 + 4 * k);
+                o->shape.triangle.tex_v[k] = load_num(v + 48 + 4 * k);
+            }
+            break;
+        case SCN_PRIM_ELLIPSOID:
+        case SCN_PRIM_BOX:
+            for (int k = 3; k < 6; k++)
+                if (!load_pos(wire_get_u32(v + 4 * k), SCN_MAX_COORD))
+                    return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
+                                    "a semi-axis or half edge is not > 0");
+            if (kind == SCN_PRIM_ELLIPSOID) {
+                o->kind = SCENE_PRIM_ELLIPSOID;
+                o->shape.ellipsoid.centre = load_vec3(v);
+                o->shape.ellipsoid.radius = load_vec3(v + 12);
+            } else {
+                o->kind = SCENE_PRIM_BOX;
+                o->shape.box.centre = load_vec3(v);
+                o->shape.box.half = load_vec3(v + 12);
+            }
+            break;
+        default: /* SCN_PRIM_DENSITY */
+            if (!load_pos(wire_get_u32(v), SCN_MAX_COORD))
+                return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i, "threshold is not > 0");
+            if (count < 1 || count > SCN_MAX_DENSITY_COMPONENTS)
+                return load_bad(L, SCENE_LOAD_ERR_LIMIT, "prim ", i,
+                                "component count not 1..64");
+            if (first > n_comp || count > n_comp - first)
+                return load_bad(L, SCENE_LOAD_ERR_INDEX, "prim ", i,
+                                "components outside the component section");
+            o->kind = SCENE_PRIM_DENSITY;
+            o->shape.density.first = first;
+            o->shape.density.count = (uint16_t)count;
+            o->shape.density.threshold = load_num(v);
+            break;
+        }
+    }
+    return SCENE_LOAD_OK;
+}
+
+/* ---------------------------------------------------------------- entry */
+
+#define LOAD_ALLOC(arena, type, n) ARENA_NEW_ARRAY((arena), type, (n) ? (n) : 1)
+
+scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, scene_t *out,
+                               scene_load_error_t *err)
+{
+    struct load L;
+    memset(&L, 0, sizeof L);
+    L.buf = buf;
+    L.err = err;
+    err->status = SCENE_LOAD_OK;
+    err->message[0] = 0;
+    memset(out, 0, sizeof *out);
+    LOAD_TRY(load_header(&L, buf ? len : 0));
+
+    uint32_t n_light = L.sec[SCN_SEC_LIGHTS].count, n_mat = L.sec[SCN_SEC_MATERIALS].count;
+    uint32_t n_map = L.sec[SCN_SEC_MAPS].count, n_tex = L.sec[SCN_SEC_TEXELS].count;
+    uint32_t n_clu = L.sec[SCN_SEC_CLUSTERS].count, n_prim = L.sec[SCN_SEC_PRIMS].count;
+    uint32_t n_comp = L.sec[SCN_SEC_COMPONENTS].count, n_key = L.sec[SCN_SEC_KEYS].count;
+    size_t mark = arena->used;
+    scene_light_t *lights = LOAD_ALLOC(arena, scene_light_t, n_light);
+    scene_material_t *mats = LOAD_ALLOC(arena, scene_material_t, n_mat);
+    scene_map_t *maps = LOAD_ALLOC(arena, scene_map_t, n_map);
+    uint8_t *texels = LOAD_ALLOC(arena, uint8_t, n_tex);
+    scene_cluster_t *clusters = LOAD_ALLOC(arena, scene_cluster_t, n_clu);
+    scene_prim_t *prims = LOAD_ALLOC(arena, scene_prim_t, n_prim);
+    scene_density_component_t *comps = LOAD_ALLOC(arena, scene_density_component_t, n_comp);
+    scene_key_t *keys = LOAD_ALLOC(arena, scene_key_t, n_key);
+    size_t scratch = arena->used;
+    uint8_t *nesting = LOAD_ALLOC(arena, uint8_t, n_clu); /* scratch, released below */
+    if (!lights || !mats || !maps || !texels || !clusters || !prims || !comps || !keys ||
+        !nesting) {
+        size_t need = arena->failed_request;
+        arena_release_to(arena, mark);
+        return load_fail(&L, SCENE_LOAD_ERR_ARENA, "arena too small for the scene: ",
+                         (long)(arena->size - mark), " bytes free, a request of ", (long)need,
+                         " bytes failed");
+    }
+    scene_load_status_t st = load_view(&L, out);
+    if (st == SCENE_LOAD_OK)
+        st = load_lights(&L, lights);
+    if (st == SCENE_LOAD_OK)
+        st = load_maps(&L, maps, texels);
+    if (st == SCENE_LOAD_OK)
+        st = load_materials(&L, maps, mats);
+    if (st == SCENE_LOAD_OK)
+        st = load_keys(&L, keys);
+    if (st == SCENE_LOAD_OK)
+        st = load_clusters(&L, keys, clusters, nesting);
+    if (st == SCENE_LOAD_OK)
+        st = load_components(&L, comps);
+    if (st == SCENE_LOAD_OK)
+        st = load_prims(&L, prims);
+    if (st == SCENE_LOAD_OK && n_light == 0)
+        st = load_fail(&L, SCENE_LOAD_ERR_MISSING, "the scene has no light", LOAD_NO_NUMBER,
+                       NULL, LOAD_NO_NUMBER, NULL);
+    if (st != SCENE_LOAD_OK) {
+        arena_release_to(arena, mark);
+        memset(out, 0, sizeof *out);
+        return st;
+    }
+    arena_release_to(arena, scratch);
+    out->lights = lights;
+    out->light_count = (uint16_t)n_light;
+    out->materials = mats;
+    out->material_count = (uint16_t)n_mat;
+    out->maps = maps;
+    out->map_count = (uint16_t)n_map;
+    out->clusters = clusters;
+    out->cluster_count = (uint16_t)n_clu;
+    out->keys = keys;
+    out->key_count = n_key;
+    out->prims = prims;
+    out->prim_count = n_prim;
+    out->density_components = comps;
+    out->density_component_count = n_comp;
+    return SCENE_LOAD_OK;
+}
+
+const char *scene_load_status_name(scene_load_status_t status)
+{
+    switch (status) {
+    case SCENE_LOAD_OK: return "ok";
+    case SCENE_LOAD_ERR_TRUNCATED: return "truncated";
+    case SCENE_LOAD_ERR_MAGIC: return "bad magic";
+    case SCENE_LOAD_ERR_VERSION: return "unsupported version";
+    case SCENE_LOAD_ERR_SIZE: return "bad size";
+    case SCENE_LOAD_ERR_CRC: return "checksum mismatch";
+    case SCENE_LOAD_ERR_SECTION: return "bad section table";
+    case SCENE_LOAD_ERR_MISSING: return "missing section";
+    case SCENE_LOAD_ERR_LIMIT: return "over a limit";
+    case SCENE_LOAD_ERR_INDEX: return "index out of range";
+    case SCENE_LOAD_ERR_VALUE: return "bad value";
+    case SCENE_LOAD_ERR_TREE: return "bad cluster tree";
+    case SCENE_LOAD_ERR_ARENA: return "arena too small";
+    }
+    return "unknown status";
+}

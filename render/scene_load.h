@@ -1,0 +1,53 @@
+/* render/scene_load.h: the compiled scene (proto/scene_format.h) into the
+ * renderer's scene_t (render/scene.h).
+ *
+ * Runs on the board's DM and on the host, in every arithmetic: no malloc,
+ * no stdio, no mutable globals.  Everything it builds comes from the arena
+ * the caller gives; the input buffer is not referenced afterwards.  Nothing
+ * is trusted: sizes, CRC, section bounds, every count against its limit,
+ * every index, every real (finite, within range), the cluster tree.  On
+ * failure the arena is left as it was and the error names the problem.
+ */
+#ifndef LINKS1_RENDER_SCENE_LOAD_H
+#define LINKS1_RENDER_SCENE_LOAD_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "render/arena.h"
+#include "render/scene.h"
+
+typedef enum {
+    SCENE_LOAD_OK = 0,
+    SCENE_LOAD_ERR_TRUNCATED,   /* buffer shorter than the header or its total size */
+    SCENE_LOAD_ERR_MAGIC,       /* not "L1SC" */
+    SCENE_LOAD_ERR_VERSION,     /* a version this loader does not read */
+    SCENE_LOAD_ERR_SIZE,        /* total size wrong, too small or over SCN_MAX_SIZE */
+    SCENE_LOAD_ERR_CRC,         /* body checksum mismatch */
+    SCENE_LOAD_ERR_SECTION,     /* bad section table: kind, duplicate, bounds,
+                                   alignment, overlap, size vs count */
+    SCENE_LOAD_ERR_MISSING,     /* a required section is absent */
+    SCENE_LOAD_ERR_LIMIT,       /* a count or size over its SCN_MAX_* limit */
+    SCENE_LOAD_ERR_INDEX,       /* an index out of range or of the wrong kind */
+    SCENE_LOAD_ERR_VALUE,       /* a real not finite or out of range, a bad
+                                   enum, a non-zero reserved field */
+    SCENE_LOAD_ERR_TREE,        /* cluster tree: parent order, nesting, keys */
+    SCENE_LOAD_ERR_ARENA,       /* the arena cannot hold the scene */
+} scene_load_status_t;
+
+#define SCENE_LOAD_MSG_MAX 120
+
+typedef struct {
+    scene_load_status_t status;
+    char message[SCENE_LOAD_MSG_MAX]; /* e.g. "prim 12: material 9 of 4" */
+} scene_load_error_t;
+
+/* Checks buf[0..len) and builds *out from arena memory.  len must be the
+ * exact size of the compiled scene. */
+scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena,
+                               scene_t *out, scene_load_error_t *err);
+
+/* A constant string naming the status. */
+const char *scene_load_status_name(scene_load_status_t status);
+
+#endif

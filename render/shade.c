@@ -1,0 +1,89 @@
+/* render/shade.c: the terms of the paper's Fig. 5 (see shade.h). */
+#include "render/shade.h"
+
+#include "render/vec3.h"
+
+/* Parallel lights are "infinitely" far: shadow rays stop here instead. */
+#define SHADE_PARALLEL_DISTANCE NUM_C(4 * NUM_COORD_LIMIT)
+
+void shade_src_trc(const scene_material_t *m, num_t cos_theta, num_t *src, num_t *trc)
+{
+    num_t c = num_clamp01(cos_theta);
+    num_t s = num_mul(m->fresnel, num_pow_int(num_sub(NUM_ONE, c), 5));
+    *src = num_add(m->src, num_mul(num_sub(NUM_ONE, m->src), s));
+    *trc = num_mul(m->trc, num_sub(NUM_ONE, s));
+}
+
+num_t shade_spot_falloff(num_t cos_angle, num_t cos_outer, num_t cos_inner)
+{
+    if (!num_gt(cos_angle, cos_outer))
+        return NUM_ZERO;
+    if (!num_lt(cos_angle, cos_inner))
+        return NUM_ONE;
+    num_t x = num_div(num_sub(cos_angle, cos_outer), num_sub(cos_inner, cos_outer));
+    x = num_clamp01(x);
+    return num_mul(num_mul(x, x), num_sub(NUM_C(3), num_mul_int(x, 2)));
+}
+
+int shade_light_at(const render_light_t *l, vec3_t point, vec3_t *to_light, num_t *distance,
+                   rgb_t *intensity)
+{
+    *intensity = l->intensity;
+    if (l->kind == SCENE_LIGHT_PARALLEL) {
+        *to_light = l->to_light;
+        *distance = SHADE_PARALLEL_DISTANCE;
+        return 1;
+    }
+    vec3_t v = vec3_sub(l->position, point);
+    num_t dist = vec3_length(v);
+    if (!num_gt(dist, NUM_ZERO) || num_is_sat(dist))
+        return 0;
+    *to_light = vec3_scale(v, num_recip(dist));
+    *distance = dist;
+    if (l->kind == SCENE_LIGHT_SPOT) {
+        num_t k = shade_spot_falloff(num_neg(vec3_dot(*to_light, l->axis)), l->cos_outer, l->cos_inner);
+        if (!num_gt(k, NUM_ZERO))
+            return 0;
+        *intensity = rgb_scale(l->intensity, k);
+    }
+    return 1;
+}
+
+rgb_t shade_light_term(const scene_material_t *m, rgb_t colour, vec3_t n, vec3_t view,
+                       vec3_t to_light, rgb_t unshadowed, rgb_t shadowed, num_t src_theta)
+{
+    /* ambient: dic F L_i, whatever lies between point and light */
+    rgb_t out = rgb_scale(rgb_mul(colour, unshadowed), m->dic);
+    num_t cos_i = vec3_dot(n, to_light);
+    if (!num_gt(cos_i, NUM_ZERO))
+        return out;
+    /* diffuse: drc cos(th_i) F S_i */
+    out = rgb_add(out, rgb_scale(rgb_mul(colour, shadowed), num_mul(m->drc, cos_i)));
+    if (m->phong_n == 0)
+        return out;
+    /* highlight: cos^n of the angle between the mirrored light and the
+     * direction back to the viewer, times src(th) */
+    vec3_t mirrored = vec3_sub(vec3_scale(n, num_mul_int(cos_i, 2)), to_light);
+    num_t cos_r = num_neg(vec3_dot(mirrored, view));
+    if (!num_gt(cos_r, NUM_ZERO))
+        return out;
+    num_t k = num_mul(num_pow_int(num_min(cos_r, NUM_ONE), m->phong_n), src_theta);
+    return rgb_add(out, rgb_scale(shadowed, k));
+}
+
+vec3_t shade_reflect(vec3_t d, vec3_t n)
+{
+    return vec3_normalize(vec3_sub(d, vec3_scale(n, num_mul_int(vec3_dot(d, n), 2))));
+}
+
+int shade_refract(vec3_t d, vec3_t n, num_t eta, vec3_t *out)
+{
+    num_t cos_i = num_clamp01(num_neg(vec3_dot(d, n)));
+    num_t sin2 = num_sub(NUM_ONE, num_mul(cos_i, cos_i));
+    num_t k = num_sub(NUM_ONE, num_mul(num_mul(eta, eta), sin2));
+    if (num_lt(k, NUM_ZERO))
+        return 0;
+    num_t along_n = num_sub(num_mul(eta, cos_i), num_sqrt(k));
+    *out = vec3_normalize(vec3_add(vec3_scale(d, eta), vec3_scale(n, along_n)));
+    return 1;
+}

@@ -1,0 +1,406 @@
+/* render/trace.c: nearest-hit search, shadows, recursion and pixels.
+ *
+ * trace_nearest() finds the nearest hit through the cluster tree (or a flat
+ * list), testing bounding boxes first when enabled.  Ties between equal
+ * distances go to the lower primitive index, so the answer does not depend
+ * on the order things are tested in: hierarchy and boxes on or off, or the
+ * NC's screen-clipped list, give the same image.  Products over several
+ * objects (shadow transmittance) are taken in primitive-index order for the
+ * same reason.
+ */
+#include "render/maps.h"
+#include "render/prim.h"
+#include "render/shade.h"
+#include "render/vec3.h"
+
+#define TRACE_EPSILON NUM_C(RENDER_RAY_EPSILON_VALUE)
+#define TRACE_FAR NUM_C(4 * NUM_COORD_LIMIT) /* beyond everything */
+
+enum trace_kind { TRACE_PRIMARY, TRACE_REFLECTION, TRACE_REFRACTION };
+
+typedef struct {
+    int found;
+    num_t t;
+    uint32_t prim;
+} nearest_t;
+
+/* Crossings of one straight ray: each primitive once, at its first t. */
+typedef struct {
+    uint32_t count;
+    int overflow;    /* more transparent objects than the buffer holds */
+    int opaque;      /* an opaque object was crossed (shadow use only) */
+    num_t t[RENDER_MAX_TRANSPARENT];
+    uint32_t prim[RENDER_MAX_TRANSPARENT];
+} crossings_t;
+
+static const scene_material_t *trace_material(const render_ctx_t *ctx, uint32_t prim)
+{
+    return &ctx->frame->scene->materials[ctx->frame->prims[prim].material];
+}
+
+/* ------------------------------------------------------------ traversal */
+
+/* Callback-free traversal: mode NEAREST keeps the nearest hit; mode
+ * COLLECT records every primitive crossed in (tmin, tmax]. */
+enum trace_mode { TRACE_NEAREST, TRACE_COLLECT_SHADOW, TRACE_COLLECT_STRAIGHT };
+
+typedef struct {
+    render_ctx_t *ctx;
+    const ray_t *ray;
+    num_t tmin, tmax;
+    enum trace_mode mode;
+    nearest_t nearest;
+    crossings_t *cross;
+} trace_walk_t;
+
+static void trace_record(trace_walk_t *w, uint32_t prim, num_t t)
+{
+    crossings_t *c = w->cross;
+    if (w->mode == TRACE_COLLECT_SHADOW) {
+        if (!num_gt(trace_material(w->ctx, prim)->trc, NUM_ZERO)) {
+            c->opaque = 1;
+            return;
+        }
+        if (c->count == RENDER_MAX_TRANSPARENT) {
+            c->overflow = 1;
+            return;
+        }
+        c->prim[c->count] = prim;
+        c->t[c->count++] = t;
+        return;
+    }
+    /* straight ray: keep the nearest RENDER_MAX_TRANSPARENT, sorted by
+     * (t, prim) with an insertion step */
+    uint32_t n = c->count;
+    if (n == RENDER_MAX_TRANSPARENT) {
+        c->overflow = 1;
+        num_t lt = c->t[n - 1];
+        if (num_gt(t, lt) || (num_eq(t, lt) && prim > c->prim[n - 1]))
+            return;
+        n--;
+    }
+    uint32_t i = n;
+    while (i > 0 && (num_lt(t, c->t[i - 1]) || (num_eq(t, c->t[i - 1]) && prim < c->prim[i - 1]))) {
+        c->t[i] = c->t[i - 1];
+        c->prim[i] = c->prim[i - 1];
+        i--;
+    }
+    c->t[i] = t;
+    c->prim[i] = prim;
+    c->count = n + 1;
+}
+
+static void trace_test_prim(trace_walk_t *w, uint32_t prim)
+{
+    const render_prim_t *p = &w->ctx->frame->prims[prim];
+    num_t tmax = w->mode == TRACE_NEAREST && w->nearest.found ? w->nearest.t : w->tmax;
+    num_t t;
+    w->ctx->stats.prim_tests++;
+    if (!prim_intersect(p, w->ray, w->tmin, tmax, &t))
+        return;
+    if (w->mode != TRACE_NEAREST) {
+        trace_record(w, prim, t);
+        return;
+    }
+    if (!w->nearest.found || num_lt(t, w->nearest.t) || (num_eq(t, w->nearest.t) && prim < w->nearest.prim)) {
+        w->nearest.found = 1;
+        w->nearest.t = t;
+        w->nearest.prim = prim;
+    }
+}
+
+static int trace_box(trace_walk_t *w, const aabb_t *b)
+{
+    if (!w->ctx->frame->options.use_bounds)
+        return 1;
+    w->ctx->stats.box_tests++;
+    num_t tmax = w->mode == TRACE_NEAREST && w->nearest.found ? w->nearest.t : w->tmax;
+    return aabb_hit(b, w->ray, w->tmin, tmax);
+}
+
+static void trace_own_prims(trace_walk_t *w, const render_cluster_t *c)
+{
+    const render_frame_t *f = w->ctx->frame;
+    for (uint32_t k = 0; k < c->prim_count; k++) {
+        uint32_t prim = f->prim_list[c->first_prim + k];
+        /* in a flat walk the primitive's own box stands in for the tree */
+        if (!f->options.use_hierarchy && !trace_box(w, &f->prims[prim].bounds))
+            continue;
+        trace_test_prim(w, prim);
+    }
+}
+
+static void trace_cluster(trace_walk_t *w, uint32_t index)
+{
+    const render_frame_t *f = w->ctx->frame;
+    const render_cluster_t *c = &f->clusters[index];
+    if (!trace_box(w, &c->bounds))
+        return;
+    trace_own_prims(w, c);
+    for (uint32_t k = 0; k < c->child_count; k++)
+        trace_cluster(w, f->child_list[c->first_child + k]);
+}
+
+static void trace_walk(trace_walk_t *w, const uint16_t *clip, uint32_t clip_count)
+{
+    const render_frame_t *f = w->ctx->frame;
+    if (clip) {
+        for (uint32_t k = 0; k < clip_count; k++) {
+            const render_cluster_t *c = &f->clusters[clip[k]];
+            if (!trace_box(w, &c->own_bounds))
+                continue;
+            trace_own_prims(w, c);
+        }
+    } else if (f->options.use_hierarchy) {
+        trace_cluster(w, 0);
+    } else {
+        for (uint32_t prim = 0; prim < f->prim_count; prim++)
+            if (trace_box(w, &f->prims[prim].bounds))
+                trace_test_prim(w, prim);
+    }
+}
+
+static int trace_nearest(render_ctx_t *ctx, const ray_t *ray, num_t tmin, const uint16_t *clip,
+                         uint32_t clip_count, hit_t *hit)
+{
+    trace_walk_t w = {ctx, ray, tmin, TRACE_FAR, TRACE_NEAREST, {0, NUM_ZERO, 0}, NULL};
+    trace_walk(&w, clip, clip_count);
+    if (!w.nearest.found)
+        return 0;
+    hit->t = w.nearest.t;
+    hit->prim = w.nearest.prim;
+    prim_surface(&ctx->frame->prims[hit->prim], ray, hit);
+    if (vec3_is_sat(hit->normal) || vec3_is_sat(hit->point))
+        ctx->pixel_lost = 1;
+    return 1;
+}
+
+/* ------------------------------------------------------------- shading */
+
+/* Colour F at the hit (material colour times colour map) and the shading
+ * normal (bump map applied). */
+static void trace_surface_look(const render_ctx_t *ctx, const hit_t *hit, const scene_material_t *m,
+                               rgb_t *colour, vec3_t *normal)
+{
+    const scene_t *s = ctx->frame->scene;
+    *colour = m->colour;
+    if (m->colour_map != SCENE_NONE)
+        *colour = rgb_mul(*colour, map_colour(&s->maps[m->colour_map], hit->u, hit->v));
+    *normal = hit->normal;
+    if (m->bump_map != SCENE_NONE)
+        *normal = map_bump(&s->maps[m->bump_map], hit->u, hit->v, hit->normal, hit->tangent);
+}
+
+/* Fraction of light i that reaches origin along dir over distance:
+ * the product of trc(th) F of every object crossed, in primitive order. */
+static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t distance)
+{
+    rgb_t pass = rgb_make(NUM_ONE, NUM_ONE, NUM_ONE);
+    if (!ctx->frame->options.shadows)
+        return pass;
+    ctx->stats.shadow++;
+    ray_t ray = {origin, dir};
+    crossings_t cross;
+    cross.count = 0;
+    cross.overflow = 0;
+    cross.opaque = 0;
+    trace_walk_t w = {ctx, &ray, TRACE_EPSILON, distance, TRACE_COLLECT_SHADOW, {0, NUM_ZERO, 0}, &cross};
+    trace_walk(&w, NULL, 0);
+    if (cross.opaque || cross.overflow)
+        return rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    /* primitive order: sort the few indices */
+    for (uint32_t i = 1; i < cross.count; i++)
+        for (uint32_t j = i; j > 0 && cross.prim[j] < cross.prim[j - 1]; j--) {
+            uint32_t p = cross.prim[j];
+            num_t t = cross.t[j];
+            cross.prim[j] = cross.prim[j - 1];
+            cross.t[j] = cross.t[j - 1];
+            cross.prim[j - 1] = p;
+            cross.t[j - 1] = t;
+        }
+    for (uint32_t i = 0; i < cross.count; i++) {
+        hit_t hit;
+        hit.t = cross.t[i];
+        hit.prim = cross.prim[i];
+        prim_surface(&ctx->frame->prims[hit.prim], &ray, &hit);
+        const scene_material_t *m = trace_material(ctx, hit.prim);
+        rgb_t colour;
+        vec3_t n;
+        trace_surface_look(ctx, &hit, m, &colour, &n);
+        num_t src, trc;
+        shade_src_trc(m, num_abs(vec3_dot(n, dir)), &src, &trc);
+        pass = rgb_mul(pass, rgb_scale(colour, trc));
+    }
+    return pass;
+}
+
+/* Sum over lights of Fig. 5's per-light terms at a hit. */
+static rgb_t trace_lights(render_ctx_t *ctx, const hit_t *hit, const scene_material_t *m, rgb_t colour,
+                          vec3_t n, vec3_t view, num_t src)
+{
+    const render_frame_t *f = ctx->frame;
+    rgb_t sum = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    vec3_t origin = vec3_madd(hit->point, n, TRACE_EPSILON);
+    for (uint16_t i = 0; i < f->light_count; i++) {
+        vec3_t to_light;
+        num_t distance;
+        rgb_t unshadowed;
+        if (!shade_light_at(&f->lights[i], hit->point, &to_light, &distance, &unshadowed))
+            continue;
+        rgb_t shadowed = unshadowed;
+        if (num_gt(vec3_dot(n, to_light), NUM_ZERO))
+            shadowed = rgb_mul(unshadowed, trace_shadow(ctx, origin, to_light, distance));
+        sum = rgb_add(sum, shade_light_term(m, colour, n, view, to_light, unshadowed, shadowed, src));
+    }
+    return sum;
+}
+
+static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int depth, const uint16_t *clip,
+                       uint32_t clip_count);
+
+/* Refractionless transmission past the depth limit: the straight ray
+ * registers every object it crosses (the transmission buffer, nearest
+ * first); each adds its local shading weighted by the transmittance so
+ * far, until an opaque one or the background ends the ray. */
+static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray)
+{
+    ctx->stats.transmission++;
+    crossings_t cross;
+    cross.count = 0;
+    cross.overflow = 0;
+    cross.opaque = 0;
+    trace_walk_t w = {ctx, ray, TRACE_EPSILON, TRACE_FAR, TRACE_COLLECT_STRAIGHT, {0, NUM_ZERO, 0}, &cross};
+    trace_walk(&w, NULL, 0);
+    rgb_t sum = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    rgb_t weight = rgb_make(NUM_ONE, NUM_ONE, NUM_ONE);
+    for (uint32_t i = 0; i < cross.count; i++) {
+        hit_t hit;
+        hit.t = cross.t[i];
+        hit.prim = cross.prim[i];
+        prim_surface(&ctx->frame->prims[hit.prim], ray, &hit);
+        const scene_material_t *m = trace_material(ctx, hit.prim);
+        rgb_t colour;
+        vec3_t n;
+        trace_surface_look(ctx, &hit, m, &colour, &n);
+        if (num_gt(vec3_dot(ray->dir, n), NUM_ZERO))
+            n = vec3_neg(n);
+        num_t src, trc;
+        shade_src_trc(m, num_neg(vec3_dot(ray->dir, n)), &src, &trc);
+        sum = rgb_add(sum, rgb_mul(weight, trace_lights(ctx, &hit, m, colour, n, ray->dir, src)));
+        if (!num_gt(trc, NUM_ZERO))
+            return sum;
+        weight = rgb_mul(weight, rgb_scale(colour, trc));
+    }
+    if (cross.overflow) /* the objects past the buffer are unknown: stop dark */
+        return sum;
+    return rgb_add(sum, rgb_mul(weight, ctx->frame->scene->background));
+}
+
+static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, int depth)
+{
+    const render_frame_t *f = ctx->frame;
+    const scene_material_t *m = trace_material(ctx, hit->prim);
+    rgb_t colour;
+    vec3_t n;
+    trace_surface_look(ctx, hit, m, &colour, &n);
+    int entering = num_lt(vec3_dot(ray->dir, n), NUM_ZERO);
+    if (!entering)
+        n = vec3_neg(n); /* shade the side the ray arrives on */
+    num_t cos_theta = num_neg(vec3_dot(ray->dir, n));
+    num_t src, trc;
+    shade_src_trc(m, cos_theta, &src, &trc);
+    rgb_t out = trace_lights(ctx, hit, m, colour, n, ray->dir, src);
+
+    int can_recurse = depth < f->options.max_depth;
+    rgb_t reflected = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    int have_reflected = 0;
+    vec3_t outside = vec3_madd(hit->point, n, TRACE_EPSILON);
+    if (num_gt(src, NUM_ZERO) && can_recurse) {
+        ray_t r = {outside, shade_reflect(ray->dir, n)};
+        ctx->stats.reflection++;
+        reflected = trace_ray(ctx, &r, NUM_ZERO, depth + 1, NULL, 0);
+        have_reflected = 1;
+        out = rgb_add(out, rgb_scale(reflected, src));
+    }
+    if (num_gt(trc, NUM_ZERO)) {
+        rgb_t through = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+        vec3_t inside = vec3_madd(hit->point, n, num_neg(TRACE_EPSILON));
+        if (can_recurse) {
+            num_t eta = entering ? num_recip(m->ior) : m->ior;
+            vec3_t dir;
+            if (shade_refract(ray->dir, n, eta, &dir)) {
+                ray_t r = {inside, dir};
+                ctx->stats.refraction++;
+                through = trace_ray(ctx, &r, NUM_ZERO, depth + 1, NULL, 0);
+            } else { /* total internal reflection: the light stays inside */
+                if (!have_reflected) {
+                    ray_t r = {outside, shade_reflect(ray->dir, n)};
+                    ctx->stats.reflection++;
+                    reflected = trace_ray(ctx, &r, NUM_ZERO, depth + 1, NULL, 0);
+                }
+                through = reflected;
+            }
+        } else if (f->options.refractionless) {
+            ray_t r = {inside, ray->dir};
+            through = trace_straight(ctx, &r);
+        }
+        out = rgb_add(out, rgb_scale(rgb_mul(colour, through), trc));
+    }
+    if (rgb_is_sat(out))
+        ctx->pixel_lost = 1;
+    return out;
+}
+
+static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int depth, const uint16_t *clip,
+                       uint32_t clip_count)
+{
+    hit_t hit;
+    if (!trace_nearest(ctx, ray, tmin, clip, clip_count, &hit))
+        return ctx->frame->scene->background;
+    return trace_shade(ctx, ray, &hit, depth);
+}
+
+/* --------------------------------------------------------------- pixels */
+
+void render_ctx_init(render_ctx_t *ctx, const render_frame_t *frame)
+{
+    memset(ctx, 0, sizeof *ctx);
+    ctx->frame = frame;
+}
+
+static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const uint16_t *clip,
+                                uint32_t clip_count)
+{
+    const render_frame_t *f = ctx->frame;
+    /* through the pixel centre: screen coordinates in [-1, 1] scaled by
+     * the half extents of the view at z = 1 */
+    num_t sx = num_sub(num_div(num_from_int((int32_t)(2 * x + 1)), num_from_int(f->width)), NUM_ONE);
+    num_t sy = num_sub(NUM_ONE, num_div(num_from_int((int32_t)(2 * y + 1)), num_from_int(f->height)));
+    ray_t ray;
+    ray.origin = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    ray.dir = vec3_normalize(vec3_make(num_mul(sx, f->screen_half_w), num_mul(sy, f->screen_half_h), NUM_ONE));
+    ctx->pixel_lost = 0;
+    ctx->stats.primary++;
+    rgb_t c = trace_ray(ctx, &ray, NUM_ZERO, 0, clip, clip_count);
+    if (ctx->pixel_lost || rgb_is_sat(c))
+        ctx->stats.precision_lost_pixels++;
+    rgb8_t out = {num_to_u8(c.r), num_to_u8(c.g), num_to_u8(c.b)};
+    return out;
+}
+
+rgb8_t render_pixel(render_ctx_t *ctx, uint32_t x, uint32_t y)
+{
+    return render_pixel_impl(ctx, x, y, NULL, 0);
+}
+
+rgb8_t render_pixel_clipped(render_ctx_t *ctx, uint32_t x, uint32_t y, const uint16_t *clusters, uint32_t count)
+{
+    uint16_t none = 0; /* a non-NULL empty list: clipping that kept nothing */
+    return render_pixel_impl(ctx, x, y, clusters ? clusters : &none, clusters ? count : 0);
+}
+
+void render_span(render_ctx_t *ctx, uint32_t y, uint32_t x0, uint32_t x1, rgb8_t *out)
+{
+    for (uint32_t x = x0; x < x1; x++)
+        out[x - x0] = render_pixel(ctx, x, y);
+}

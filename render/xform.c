@@ -1,0 +1,108 @@
+/* render/xform.c: affine maps: apply, compose, invert, build from keys. */
+#include "render/vec3.h"
+
+xform_t xform_identity(void)
+{
+    xform_t m;
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 4; c++)
+            m.m[r][c] = r == c ? NUM_ONE : NUM_ZERO;
+    return m;
+}
+
+vec3_t xform_dir(const xform_t *m, vec3_t d)
+{
+    return vec3_make(num_dot3(m->m[0][0], m->m[0][1], m->m[0][2], d.x, d.y, d.z),
+                     num_dot3(m->m[1][0], m->m[1][1], m->m[1][2], d.x, d.y, d.z),
+                     num_dot3(m->m[2][0], m->m[2][1], m->m[2][2], d.x, d.y, d.z));
+}
+
+vec3_t xform_point(const xform_t *m, vec3_t p)
+{
+    vec3_t d = xform_dir(m, p);
+    return vec3_make(num_add(d.x, m->m[0][3]), num_add(d.y, m->m[1][3]), num_add(d.z, m->m[2][3]));
+}
+
+vec3_t xform_dir_transposed(const xform_t *m, vec3_t d)
+{
+    return vec3_make(num_dot3(m->m[0][0], m->m[1][0], m->m[2][0], d.x, d.y, d.z),
+                     num_dot3(m->m[0][1], m->m[1][1], m->m[2][1], d.x, d.y, d.z),
+                     num_dot3(m->m[0][2], m->m[1][2], m->m[2][2], d.x, d.y, d.z));
+}
+
+xform_t xform_compose(const xform_t *a, const xform_t *b)
+{
+    xform_t r;
+    for (int i = 0; i < 3; i++) {
+        for (int j = 0; j < 4; j++)
+            r.m[i][j] = num_dot3(a->m[i][0], a->m[i][1], a->m[i][2],
+                                 b->m[0][j], b->m[1][j], b->m[2][j]);
+        r.m[i][3] = num_add(r.m[i][3], a->m[i][3]);
+    }
+    return r;
+}
+
+int xform_is_sat(const xform_t *m)
+{
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 4; c++)
+            if (num_is_sat(m->m[r][c]))
+                return 1;
+    return 0;
+}
+
+/* Cofactor inverse.  The determinant is divided out of each cofactor
+ * separately (cofactor / det), not through 1/det, which would lose the
+ * fixed build's precision for large determinants. */
+int xform_invert(const xform_t *m, xform_t *out)
+{
+    const num_t(*a)[4] = m->m;
+    num_t c00 = num_sub(num_mul(a[1][1], a[2][2]), num_mul(a[1][2], a[2][1]));
+    num_t c01 = num_sub(num_mul(a[1][2], a[2][0]), num_mul(a[1][0], a[2][2]));
+    num_t c02 = num_sub(num_mul(a[1][0], a[2][1]), num_mul(a[1][1], a[2][0]));
+    num_t det = num_dot3(a[0][0], a[0][1], a[0][2], c00, c01, c02);
+    if (num_is_sat(det) || num_eq(det, NUM_ZERO))
+        return 0;
+    num_t inv[3][3];
+    inv[0][0] = c00;
+    inv[1][0] = c01;
+    inv[2][0] = c02;
+    inv[0][1] = num_sub(num_mul(a[0][2], a[2][1]), num_mul(a[0][1], a[2][2]));
+    inv[1][1] = num_sub(num_mul(a[0][0], a[2][2]), num_mul(a[0][2], a[2][0]));
+    inv[2][1] = num_sub(num_mul(a[0][1], a[2][0]), num_mul(a[0][0], a[2][1]));
+    inv[0][2] = num_sub(num_mul(a[0][1], a[1][2]), num_mul(a[0][2], a[1][1]));
+    inv[1][2] = num_sub(num_mul(a[0][2], a[1][0]), num_mul(a[0][0], a[1][2]));
+    inv[2][2] = num_sub(num_mul(a[0][0], a[1][1]), num_mul(a[0][1], a[1][0]));
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            out->m[r][c] = num_div(inv[r][c], det);
+    vec3_t t = vec3_make(a[0][3], a[1][3], a[2][3]);
+    vec3_t it = xform_dir(out, t);
+    out->m[0][3] = num_neg(it.x);
+    out->m[1][3] = num_neg(it.y);
+    out->m[2][3] = num_neg(it.z);
+    return !xform_is_sat(out);
+}
+
+xform_t xform_from_trs(vec3_t t, num_t w, num_t x, num_t y, num_t z, vec3_t s)
+{
+    /* rotation matrix of a unit quaternion */
+    num_t two = NUM_C(2);
+    num_t xx = num_mul(x, x), yy = num_mul(y, y), zz = num_mul(z, z);
+    num_t xy = num_mul(x, y), xz = num_mul(x, z), yz = num_mul(y, z);
+    num_t wx = num_mul(w, x), wy = num_mul(w, y), wz = num_mul(w, z);
+    num_t r[3][3] = {
+        {num_sub(NUM_ONE, num_mul(two, num_add(yy, zz))), num_mul(two, num_sub(xy, wz)), num_mul(two, num_add(xz, wy))},
+        {num_mul(two, num_add(xy, wz)), num_sub(NUM_ONE, num_mul(two, num_add(xx, zz))), num_mul(two, num_sub(yz, wx))},
+        {num_mul(two, num_sub(xz, wy)), num_mul(two, num_add(yz, wx)), num_sub(NUM_ONE, num_mul(two, num_add(xx, yy)))},
+    };
+    num_t sc[3] = {s.x, s.y, s.z};
+    xform_t m;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++)
+            m.m[i][j] = num_mul(r[i][j], sc[j]);
+    m.m[0][3] = t.x;
+    m.m[1][3] = t.y;
+    m.m[2][3] = t.z;
+    return m;
+}

@@ -1,0 +1,248 @@
+/* rc.c: the root computer (RC) program.  For this stage it carries out the
+ * DM's bring-up requests over its lines to the NCs and the IMSUs. */
+#include <stdint.h>
+
+#include "drivers/imsu/imsu.h"
+#include "drivers/serial/line.h"
+#include "kernel/cpu.h"
+#include "kernel/klog.h"
+#include "kernel/ktime.h"
+#include "kernel/panic.h"
+#include "proto/crc32.h"
+#include "proto/wire.h"
+#include "roles/selftest.h"
+#include "roles/unit.h"
+#include "roles/unitmsg.h"
+
+#define RC_CORE 1
+#define RC_DM 0
+
+static void rc_send(uint32_t peer, struct line_msg *m)
+{
+    int r = line_send(peer, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
+    if (r != LINE_OK)
+        klog("send of message type %u to core %u failed: %s", (unsigned)m->type,
+             (unsigned)peer, line_strerror(r));
+}
+
+static void rc_ping_ncs(struct line_msg *m)
+{
+    uint32_t n = board_ncores, ok = 0, first_bad = 0xFFFFFFFFu;
+    uint64_t deadline = ktime_deadline_ms(PING_TIMEOUT_MS);
+    for (uint32_t k = FIRST_NC; k < n; k++) {
+        msg_set(m, MSG_PING, 4);
+        wire_put_u32(m->payload, k);
+        line_send(k, m, deadline);
+    }
+    for (uint32_t k = FIRST_NC; k < n; k++) {
+        int r = selftest_recv_type(k, MSG_PONG, m, deadline);
+        if (r == LINE_OK && wire_get_u32(m->payload) == k)
+            ok++;
+        else if (first_bad == 0xFFFFFFFFu)
+            first_bad = k;
+    }
+    msg_set(m, MSG_PING_NCS_DONE, 12);
+    wire_put_u32(m->payload, ok);
+    wire_put_u32(m->payload + 4, n - FIRST_NC);
+    wire_put_u32(m->payload + 8, first_bad);
+    rc_send(RC_DM, m);
+}
+
+/* The DM swapped a block to us: check it, show that misuse is refused,
+ * write our answer into it and swap it back. */
+static void rc_imsu_pair(struct line_msg *m)
+{
+    struct imsu_pair *p = &imsu_dm_rc;
+    uint32_t bytes = wire_get_u32(m->payload);
+    uint32_t want = wire_get_u32(m->payload + 4);
+    uint32_t seed = wire_get_u32(m->payload + 8);
+    uint32_t misuse_failed = 0;
+    int status = 0;
+    if (bytes > p->size)
+        bytes = (uint32_t)p->size;
+    int held = imsu_held(p, RC_CORE);
+    uint32_t got = crc32(imsu_read_block(p, RC_CORE), bytes);
+    uint8_t *w;
+    if (imsu_write_begin(p, RC_CORE, 1 - held, &w) != IMSU_ERR_NOT_HOLDER) {
+        misuse_failed++;
+        imsu_write_end(p, RC_CORE);
+    }
+    int r = imsu_write_begin(p, RC_CORE, held, &w);
+    uint32_t mine = 0;
+    if (r != IMSU_OK) {
+        status = r;
+    } else {
+        selftest_fill(w, bytes, seed, 0);
+        mine = crc32(w, bytes);
+        /* Still inside the write: the DM's swap must be refused now. */
+        msg_set(m, MSG_IMSU_MIDWRITE, 0);
+        rc_send(RC_DM, m);
+        r = selftest_recv_type(RC_DM, MSG_IMSU_MIDWRITE_SEEN, m,
+                               ktime_deadline_ms(REPLY_TIMEOUT_MS));
+        if (r != LINE_OK || (int32_t)wire_get_u32(m->payload) != IMSU_ERR_PEER_WRITING)
+            misuse_failed++;
+        imsu_write_end(p, RC_CORE);
+        r = imsu_swap(p, RC_CORE);
+        if (r != IMSU_OK)
+            status = r;
+    }
+    msg_set(m, MSG_IMSU_PAIR_DONE, 16);
+    wire_put_u32(m->payload, (uint32_t)status);
+    wire_put_u32(m->payload + 4, mine);
+    wire_put_u32(m->payload + 8, misuse_failed);
+    wire_put_u32(m->payload + 12, got == want);
+    rc_send(RC_DM, m);
+}
+
+static void rc_imsu_bcast(struct line_msg *m)
+{
+    struct imsu_bcast *b = &imsu_rc_ncs;
+    uint32_t bytes = wire_get_u32(m->payload);
+    uint32_t seed = wire_get_u32(m->payload + 4);
+    uint32_t misuse_failed = 0, ok = 0, n = board_ncores;
+    if (bytes > b->size)
+        bytes = (uint32_t)b->size;
+    uint8_t *w;
+    int r = imsu_bcast_write_begin(b, RC_CORE, &w);
+    if (r != IMSU_OK)
+        panic("IMSU broadcast: the RC cannot write its own block: %s", imsu_strerror(r));
+    selftest_fill(w, bytes, seed, 0);
+    uint32_t crc = crc32(w, bytes);
+    imsu_bcast_write_end(b, RC_CORE);
+    uint32_t gen = b->generation;
+    /* A write while someone reads must be refused. */
+    const uint8_t *rd;
+    uint32_t g;
+    if (imsu_bcast_read_begin(b, RC_CORE, &rd, &g) == IMSU_OK) {
+        if (imsu_bcast_write_begin(b, RC_CORE, &w) != IMSU_ERR_READERS_ACTIVE) {
+            misuse_failed++;
+            imsu_bcast_write_end(b, RC_CORE);
+        }
+        imsu_bcast_read_end(b, RC_CORE);
+    } else {
+        misuse_failed++;
+    }
+    uint64_t deadline = ktime_deadline_ms(REPLY_TIMEOUT_MS);
+    for (uint32_t k = FIRST_NC; k < n; k++) {
+        msg_set(m, MSG_BCAST_READ, 4);
+        wire_put_u32(m->payload, bytes);
+        line_send(k, m, deadline);
+    }
+    for (uint32_t k = FIRST_NC; k < n; k++) {
+        if (selftest_recv_type(k, MSG_BCAST_READ_DONE, m, deadline) != LINE_OK)
+            continue;
+        if (wire_get_u32(m->payload) == IMSU_OK && wire_get_u32(m->payload + 4) == crc &&
+            wire_get_u32(m->payload + 8) == gen)
+            ok++;
+        if ((int32_t)wire_get_u32(m->payload + 12) != IMSU_ERR_NOT_HOLDER)
+            misuse_failed++;
+    }
+    msg_set(m, MSG_IMSU_BCAST_DONE, 12);
+    wire_put_u32(m->payload, ok);
+    wire_put_u32(m->payload + 4, n - FIRST_NC);
+    wire_put_u32(m->payload + 8, misuse_failed);
+    rc_send(RC_DM, m);
+}
+
+static void rc_stress(struct line_msg *m)
+{
+    static struct stress_stream s[2 * MAX_CORES];
+    uint32_t msgs = wire_get_u32(m->payload);
+    uint32_t n = 0, skipped = 0;
+    stress_stream_init(&s[n++], RC_DM, 0, msgs);
+    stress_stream_init(&s[n++], RC_DM, 1, msgs);
+    for (uint32_t k = FIRST_NC; k < board_ncores; k++) {
+        if (unit_is_halted(k)) {
+            skipped++;
+            continue;
+        }
+        msg_set(m, MSG_STRESS, 4);
+        wire_put_u32(m->payload, msgs);
+        rc_send(k, m);
+        stress_stream_init(&s[n++], k, 0, msgs);
+        stress_stream_init(&s[n++], k, 1, msgs);
+    }
+    if (stress_run(s, n) != 0)
+        klog("stress: stalled: some line stopped moving");
+    uint64_t bytes = 0;
+    uint32_t errors = 0;
+    for (uint32_t i = 0; i < n; i++) {
+        if (!s[i].sending) {
+            bytes += s[i].bytes;
+            errors += s[i].errors + s[i].left;
+        }
+    }
+    uint64_t deadline = ktime_deadline_ms(REPLY_TIMEOUT_MS);
+    for (uint32_t k = FIRST_NC; k < board_ncores; k++) {
+        if (unit_is_halted(k))
+            continue;
+        if (selftest_recv_type(k, MSG_STRESS_REPORT, m, deadline) != LINE_OK) {
+            errors++;
+            continue;
+        }
+        bytes += wire_get_u64(m->payload);
+        errors += wire_get_u32(m->payload + 8);
+    }
+    msg_set(m, MSG_STRESS_REPORT, 16);
+    wire_put_u64(m->payload, bytes);
+    wire_put_u32(m->payload + 8, errors);
+    wire_put_u32(m->payload + 12, skipped);
+    rc_send(RC_DM, m);
+}
+
+static void rc_fault(struct line_msg *m)
+{
+    uint16_t core = wire_get_u16(m->payload);
+    uint8_t kind = wire_get_u8(m->payload + 2);
+    if (core == RC_CORE) {
+        msg_set(m, MSG_FAULT_ACK, 4);
+        wire_put_u32(m->payload, 0);
+        rc_send(RC_DM, m);
+        selftest_fault_now(kind);
+        return;
+    }
+    int r = line_send(core, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
+    if (r == LINE_OK)
+        r = selftest_recv_type(core, MSG_FAULT_ACK, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
+    msg_set(m, MSG_FAULT_ACK, 4);
+    wire_put_u32(m->payload, (uint32_t)r);
+    rc_send(RC_DM, m);
+}
+
+void rc_main(void *arg)
+{
+    (void)arg;
+    static struct line_msg msg;
+    struct line_msg *m = &msg;
+    for (;;) {
+        int r = line_recv(RC_DM, m, 0);
+        if (r != LINE_OK) {
+            klog("line from DM: %s", line_strerror(r));
+            continue;
+        }
+        switch (m->type) {
+        case MSG_PING:
+            m->type = MSG_PONG;
+            rc_send(RC_DM, m);
+            break;
+        case MSG_PING_NCS:
+            rc_ping_ncs(m);
+            break;
+        case MSG_IMSU_PAIR:
+            rc_imsu_pair(m);
+            break;
+        case MSG_IMSU_BCAST:
+            rc_imsu_bcast(m);
+            break;
+        case MSG_STRESS:
+            rc_stress(m);
+            break;
+        case MSG_FAULT:
+            rc_fault(m);
+            break;
+        default:
+            klog("unexpected message type %u from the DM", (unsigned)m->type);
+            break;
+        }
+    }
+}

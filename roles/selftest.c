@@ -1,0 +1,168 @@
+/* selftest.c: test patterns, stress streams, faults on purpose. */
+#include "roles/selftest.h"
+
+#include <string.h>
+
+#include "drivers/serial/line.h"
+#include "kernel/cpu.h"
+#include "kernel/klog.h"
+#include "kernel/ktime.h"
+#include "kernel/memlayout.h"
+#include "kernel/panic.h"
+#include "kernel/task.h"
+#include "proto/hostlink.h"
+#include "roles/unitmsg.h"
+
+/* A cheap mix of (seed, seq, word index): every word of every message of
+ * every stream differs, so a lost, repeated or misplaced message shows. */
+static uint32_t selftest_word(uint32_t seed, uint32_t seq, uint32_t j)
+{
+    uint32_t x = seed * 0x9E3779B1u ^ seq * 0x85EBCA77u ^ j * 0x27D4EB2Fu;
+    return x ^ (x >> 15);
+}
+
+void selftest_fill(uint8_t *p, size_t n, uint32_t seed, uint32_t seq)
+{
+    for (uint32_t j = 0; j < n / 4; j++) {
+        uint32_t w = selftest_word(seed, seq, j);
+        memcpy(p + 4u * j, &w, 4);
+    }
+}
+
+uint32_t selftest_check(const uint8_t *p, size_t n, uint32_t seed, uint32_t seq)
+{
+    uint32_t bad = 0;
+    for (uint32_t j = 0; j < n / 4; j++) {
+        uint32_t w;
+        memcpy(&w, p + 4u * j, 4);
+        bad += w != selftest_word(seed, seq, j);
+    }
+    return bad;
+}
+
+void msg_set(struct line_msg *m, uint16_t type, uint16_t len)
+{
+    m->type = type;
+    m->len = len;
+}
+
+void stress_stream_init(struct stress_stream *s, uint32_t peer, int sending,
+                        uint32_t msgs)
+{
+    s->peer = peer;
+    s->sending = sending;
+    s->left = msgs;
+    s->seq = 0;
+    s->bytes = 0;
+    s->errors = 0;
+}
+
+/* The seed of the stream from core a to core b. */
+static uint32_t stress_seed(uint32_t from, uint32_t to)
+{
+    return (from << 16) ^ to ^ 0x5EED0000u;
+}
+
+/* One step of one stream; returns 1 if a message moved. */
+static int stress_step(struct stress_stream *s, struct line_msg *m)
+{
+    uint32_t me = mycpu()->core;
+    if (s->sending) {
+        if (!line_send_ready_arm(s->peer, LINE_MAX_PAYLOAD))
+            return 0;
+        msg_set(m, MSG_STRESS_DATA, LINE_MAX_PAYLOAD);
+        selftest_fill(m->payload, LINE_MAX_PAYLOAD, stress_seed(me, s->peer), s->seq);
+        if (line_try_send(s->peer, m) != LINE_OK)
+            return 0;
+    } else {
+        int r = line_try_recv(s->peer, m);
+        if (r == LINE_ERR_EMPTY)
+            return 0;
+        if (r != LINE_OK || m->type != MSG_STRESS_DATA || m->len != LINE_MAX_PAYLOAD ||
+            selftest_check(m->payload, m->len, stress_seed(s->peer, me), s->seq) != 0)
+            s->errors++;
+    }
+    s->seq++;
+    s->left--;
+    s->bytes += LINE_MAX_PAYLOAD;
+    return 1;
+}
+
+int stress_run(struct stress_stream *s, uint32_t n)
+{
+    static struct line_msg msg[MAX_CORES]; /* one scratch message per core */
+    struct line_msg *m = &msg[mycpu()->core];
+    uint64_t stall = ktime_ms_to_ticks(STRESS_STALL_MS);
+    uint64_t last = ktime_now();
+    for (;;) {
+        uint32_t active = 0, moved = 0;
+        for (uint32_t i = 0; i < n; i++) {
+            if (!s[i].left)
+                continue;
+            active++;
+            /* A few messages per stream per pass keeps every line busy. */
+            for (int k = 0; k < 4 && s[i].left; k++) {
+                if (!stress_step(&s[i], m))
+                    break;
+                moved++;
+            }
+        }
+        if (!active)
+            return 0;
+        if (moved) {
+            last = ktime_now();
+            continue;
+        }
+        uint32_t mark = task_event_mark();
+        int ready = 0;
+        for (uint32_t i = 0; i < n && !ready; i++) {
+            if (!s[i].left)
+                continue;
+            ready = s[i].sending ? line_send_ready_arm(s[i].peer, LINE_MAX_PAYLOAD)
+                                 : line_recv_ready_arm(s[i].peer);
+        }
+        if (ready)
+            continue;
+        if (ktime_now() - last >= stall)
+            return -1;
+        task_wait(mark, last + stall);
+    }
+}
+
+void selftest_fault_now(uint8_t kind)
+{
+    switch (kind) {
+    case FAULT_UNDEF:
+        __asm__ volatile("udf #0");
+        break;
+    case FAULT_DATA_ABORT:
+        (void)*(volatile uint32_t *)UNMAPPED_VIRT;
+        break;
+    case FAULT_PREFETCH_ABORT: {
+        /* Thumb bit set so the branch itself is legal; the fetch faults. */
+        void (*fn)(void) = (void (*)(void))(uintptr_t)(UNMAPPED_VIRT | 1u);
+        fn();
+        break;
+    }
+    case FAULT_PANIC:
+        panic("fault injected by the host (CMD_FAULT_INJECT)");
+    }
+}
+
+int selftest_recv_type(uint32_t peer, uint16_t type, struct line_msg *m,
+                       uint64_t deadline)
+{
+    for (;;) {
+        int r = line_recv(peer, m, deadline);
+        if (r == LINE_ERR_TIMEOUT || r == LINE_ERR_NO_LINE)
+            return r;
+        if (r != LINE_OK) {
+            klog("line from core %u: %s", (unsigned)peer, line_strerror(r));
+            return r;
+        }
+        if (m->type == type)
+            return LINE_OK;
+        klog("dropped message type %u from core %u while waiting for type %u",
+             (unsigned)m->type, (unsigned)peer, (unsigned)type);
+    }
+}

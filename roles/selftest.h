@@ -1,0 +1,46 @@
+/* selftest.h: the pieces of the bring-up tests the roles share: test
+ * patterns, the inter-unit stress streams, and faults on purpose. */
+#ifndef LINKS1_ROLES_SELFTEST_H
+#define LINKS1_ROLES_SELFTEST_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "drivers/serial/linemsg.h"
+
+/* Fills / checks n bytes (a multiple of 4) with the pattern of (seed, seq);
+ * check returns the number of words that differ. */
+void selftest_fill(uint8_t *p, size_t n, uint32_t seed, uint32_t seq);
+uint32_t selftest_check(const uint8_t *p, size_t n, uint32_t seed, uint32_t seq);
+
+/* One stress stream: messages to send to, or receive from, one peer. */
+struct stress_stream {
+    uint32_t peer;      /* the other core */
+    int sending;        /* 1 send, 0 receive */
+    uint32_t left;      /* messages still to go */
+    uint32_t seq;       /* next message number (pattern and order check) */
+    uint64_t bytes;     /* payload bytes moved (received ones checked) */
+    uint32_t errors;    /* bad crc, wrong order, wrong content, wrong type */
+};
+
+void stress_stream_init(struct stress_stream *s, uint32_t peer, int sending,
+                        uint32_t msgs);
+/* Steps every stream with non-blocking line calls until all are done,
+ * sleeping on the doorbell when none can move.  Returns 0, or -1 if nothing
+ * moved for STRESS_STALL_MS (a peer died): the streams say how far they got. */
+int stress_run(struct stress_stream *s, uint32_t n);
+
+/* Makes this core fault now with enum link_fault_kind kind; returns only
+ * for an unknown kind. */
+void selftest_fault_now(uint8_t kind);
+
+/* Small helpers for message payloads. */
+void msg_set(struct line_msg *m, uint16_t type, uint16_t len);
+
+/* Receives from peer until a message of the given type comes (others are
+ * logged and dropped: late answers of an earlier, timed-out request).
+ * Returns LINE_OK or the line error (LINE_ERR_TIMEOUT at deadline). */
+int selftest_recv_type(uint32_t peer, uint16_t type, struct line_msg *m,
+                       uint64_t deadline);
+
+#endif

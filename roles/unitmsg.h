@@ -1,0 +1,31 @@
+/* unitmsg.h: what the unit computers say to each other over the serial
+ * lines (struct line_msg.type) and the payload of each (little-endian,
+ * proto/wire.h).  Later issues add the rendering messages after these. */
+#ifndef LINKS1_ROLES_UNITMSG_H
+#define LINKS1_ROLES_UNITMSG_H
+
+enum unit_msg {
+    MSG_PING = 1,            /* u32 token: answer MSG_PONG with the same token */
+    MSG_PONG = 2,            /* u32 token */
+    MSG_PING_NCS = 3,        /* DM->RC: ping every NC -> MSG_PING_NCS_DONE */
+    MSG_PING_NCS_DONE = 4,   /* u32 NCs answering, u32 NCs, u32 first silent core or ~0 */
+    MSG_IMSU_PAIR = 5,       /* DM->RC: you hold my block now: u32 bytes, u32 crc,
+                              * u32 seed for your answer */
+    MSG_IMSU_MIDWRITE = 6,   /* RC->DM: I am inside a write: try to swap now */
+    MSG_IMSU_MIDWRITE_SEEN = 7, /* DM->RC: i32 what my swap attempt returned */
+    MSG_IMSU_PAIR_DONE = 8,  /* RC->DM: i32 status, u32 crc of what I wrote, text */
+    MSG_IMSU_BCAST = 9,      /* DM->RC: broadcast test: u32 bytes, u32 seed */
+    MSG_IMSU_BCAST_DONE = 10,/* RC->DM: u32 NCs with the right data, u32 NCs,
+                              * u32 misuse checks failed */
+    MSG_BCAST_READ = 11,     /* RC->NC: read the broadcast block: u32 bytes */
+    MSG_BCAST_READ_DONE = 12,/* NC->RC: i32 read status, u32 crc, u32 generation,
+                              * i32 status of a forbidden write attempt */
+    MSG_STRESS = 13,         /* DM->RC, RC->NC: u32 messages per stream */
+    MSG_STRESS_DATA = 14,    /* a stress message: generated payload */
+    MSG_STRESS_REPORT = 15,  /* u64 bytes received and checked, u32 errors,
+                              * u32 lines skipped (halted NCs) */
+    MSG_FAULT = 16,          /* u16 core, u8 kind: that core faults on purpose */
+    MSG_FAULT_ACK = 17,      /* i32 status: 0 = the target is about to fault */
+};
+
+#endif

@@ -1,0 +1,152 @@
+/* Host tests of the host-link message encodings: HELLO and FAULT payloads
+ * (proto/hostlink.c) and the host tool's CMD and RESULT frames
+ * (host-tools/board.c), each pinned to a literal byte string so that host
+ * and firmware cannot drift apart unnoticed. */
+#include <string.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include "host-tools/board.h"
+#include "proto/hostlink.h"
+#include "tests/check.h"
+
+static void msg_hello_layout_and_round_trip(void)
+{
+    struct link_hello h = {.core = 0x0105, .role = ROLE_NC, .variant = 1,
+                           .mpidr = 0x80000105u, .ncores = 0x010a, .reserved = 0};
+    static const uint8_t want[LINK_HELLO_SIZE] = {0x05, 0x01, 0x02, 0x01, 0x05, 0x01,
+                                                  0x00, 0x80, 0x0a, 0x01, 0x00, 0x00};
+    uint8_t p[LINK_HELLO_SIZE + 1];
+    p[LINK_HELLO_SIZE] = 0xee;
+    link_hello_put(p, &h);
+    CHECK(memcmp(p, want, sizeof want) == 0);
+    CHECK_EQ_INT(p[LINK_HELLO_SIZE], 0xee); /* nothing written past the payload */
+    struct link_hello g;
+    link_hello_get(want, &g);
+    CHECK_EQ_INT(g.core, h.core);
+    CHECK_EQ_INT(g.role, h.role);
+    CHECK_EQ_INT(g.variant, h.variant);
+    CHECK_EQ_INT(g.mpidr, h.mpidr);
+    CHECK_EQ_INT(g.ncores, h.ncores);
+}
+
+static void msg_fault_layout_and_round_trip(void)
+{
+    struct link_fault f = {.core = 7, .role = ROLE_NC, .kind = FAULT_UNDEF,
+                           .addr = 0x40012344u, .pc = 0x40012348u, .status = 0x0000000du};
+    static const uint8_t want[LINK_FAULT_FIXED_SIZE] = {
+        0x07, 0x00, 0x02, 0x01, 0x44, 0x23, 0x01, 0x40,
+        0x48, 0x23, 0x01, 0x40, 0x0d, 0x00, 0x00, 0x00};
+    uint8_t p[LINK_FAULT_FIXED_SIZE];
+    link_fault_put(p, &f);
+    CHECK(memcmp(p, want, sizeof want) == 0);
+    struct link_fault g;
+    link_fault_get(want, &g);
+    CHECK_EQ_INT(g.core, 7);
+    CHECK_EQ_INT(g.role, ROLE_NC);
+    CHECK_EQ_INT(g.kind, FAULT_UNDEF);
+    CHECK_EQ_INT(g.addr, 0x40012344u);
+    CHECK_EQ_INT(g.pc, 0x40012348u);
+    CHECK_EQ_INT(g.status, 13);
+}
+
+/* A board session with no QEMU: the tool's end of a socketpair, the test
+ * playing the board on the other end. */
+static int fake_session(struct board *b, int *peer)
+{
+    int sv[2];
+    if (socketpair(AF_UNIX, SOCK_STREAM, 0, sv) < 0)
+        return -1;
+    memset(b, 0, sizeof *b);
+    board_opts_init(&b->opts);
+    b->opts.quiet = 1;
+    link_decoder_init(&b->dec);
+    b->fd = sv[0];
+    *peer = sv[1];
+    return 0;
+}
+
+static void msg_cmd_frame_bytes_are_pinned(void)
+{
+    struct board b;
+    int peer;
+    CHECK(fake_session(&b, &peer) == 0);
+    uint8_t args[4] = {64, 0, 0, 0};
+    CHECK_EQ_INT(board_send_cmd(&b, CMD_LINE_STRESS, args, sizeof args), 0);
+    /* 'L' '1', type 4 (CMD), flags 0, seq 0, length 6, cmd 4, u32 64, crc32. */
+    static const uint8_t want[] = {'L', '1', 4, 0, 0, 0, 6, 0, 4, 0, 64, 0, 0, 0,
+                                   0xa0, 0xdb, 0x8b, 0x2c};
+    uint8_t got[64];
+    ssize_t n = read(peer, got, sizeof got);
+    CHECK_EQ_INT(n, sizeof want);
+    CHECK(n == sizeof want && memcmp(got, want, sizeof want) == 0);
+    CHECK_EQ_INT(b.tx_seq, 1);
+    close(peer);
+    close(b.fd);
+}
+
+static void msg_result_frame_is_parsed(void)
+{
+    struct board b;
+    int peer;
+    CHECK(fake_session(&b, &peer) == 0);
+    uint8_t frame[64], payload[16] = {2, 0, 0xfd, 0xff}; /* cmd 2, status -3 */
+    memcpy(payload + 4, "no line", 7);
+    size_t n = link_frame_encode(frame, sizeof frame, LINK_RESULT, 0, 0, payload, 11);
+    CHECK(write(peer, frame, n) == (ssize_t)n);
+    struct board_frame r;
+    int status = 0;
+    const uint8_t *fields = NULL;
+    size_t nf = 0;
+    CHECK_EQ_INT(board_wait_result(&b, CMD_LINE_PING, 2000, &r, &status, &fields, &nf), 0);
+    CHECK_EQ_INT(status, -3);
+    CHECK_EQ_INT(nf, 7);
+    CHECK(fields && memcmp(fields, "no line", 7) == 0);
+    /* A result for another command than the one awaited is an error. */
+    n = link_frame_encode(frame, sizeof frame, LINK_RESULT, 0, 1, payload, 4);
+    CHECK(write(peer, frame, n) == (ssize_t)n);
+    CHECK_EQ_INT(board_wait_result(&b, CMD_STATUS, 2000, &r, &status, &fields, &nf), -1);
+    close(peer);
+    close(b.fd);
+}
+
+static void msg_hello_and_fault_are_recorded(void)
+{
+    struct board b;
+    int peer;
+    CHECK(fake_session(&b, &peer) == 0);
+    b.opts.ncores = 3;
+    uint8_t frame[64], p[LINK_FAULT_FIXED_SIZE + 4];
+    struct link_hello h = {.core = 2, .role = ROLE_NC, .variant = 0, .ncores = 3};
+    link_hello_put(p, &h);
+    size_t n = link_frame_encode(frame, sizeof frame, LINK_HELLO, 0, 0, p, LINK_HELLO_SIZE);
+    CHECK(write(peer, frame, n) == (ssize_t)n);
+    h.core = 1; /* core 1 claiming to be an NC: a wrong role */
+    link_hello_put(p, &h);
+    n = link_frame_encode(frame, sizeof frame, LINK_HELLO, 0, 1, p, LINK_HELLO_SIZE);
+    CHECK(write(peer, frame, n) == (ssize_t)n);
+    struct link_fault f = {.core = 2, .role = ROLE_NC, .kind = FAULT_UNDEF, .addr = 0x40001000};
+    link_fault_put(p, &f);
+    memcpy(p + LINK_FAULT_FIXED_SIZE, "udf!", 4);
+    n = link_frame_encode(frame, sizeof frame, LINK_FAULT, 0, 2, p, sizeof p);
+    CHECK(write(peer, frame, n) == (ssize_t)n);
+    for (int i = 0; i < 20 && b.nfaults == 0; i++)
+        board_pump(&b, 100);
+    CHECK_EQ_INT(b.reported_count, 1);
+    CHECK_EQ_INT(b.reported[2], 1);
+    CHECK_EQ_INT(b.hello_errors, 1);
+    CHECK_EQ_INT(b.nfaults, 1);
+    CHECK_EQ_INT(b.faults[0].addr, 0x40001000u);
+    close(peer);
+    close(b.fd);
+}
+
+int main(void)
+{
+    RUN(msg_hello_layout_and_round_trip);
+    RUN(msg_fault_layout_and_round_trip);
+    RUN(msg_cmd_frame_bytes_are_pinned);
+    RUN(msg_result_frame_is_parsed);
+    RUN(msg_hello_and_fault_are_recorded);
+    return check_exit();
+}

@@ -1,0 +1,276 @@
+/* test_prim.c: every primitive against hand-computed hits, misses, grazing
+ * rays, rays from inside, normals and transformed instances.  Built for
+ * double, float and fixed; TOL is each arithmetic's expected error on
+ * distances of about 10 scene units. */
+#include "render/prim.h"
+#include "tests/check.h"
+#include "tests/host/test_render_scene.h"
+
+#if defined(LINKS1_NUM_FIXED)
+#define TOL 2e-3
+#elif defined(LINKS1_NUM_FLOAT)
+#define TOL 5e-5
+#else
+#define TOL 1e-9
+#endif
+/* The density root finder stops after RENDER_DENSITY_BISECTIONS halvings of
+ * one of RENDER_DENSITY_SAMPLES steps: about 1e-8 of a span of a few units. */
+#define TOL_DENSITY (TOL > 1e-7 ? TOL : 1e-7)
+
+static test_scene_t ts;
+
+static ray_t ray_of(double ox, double oy, double oz, double dx, double dy, double dz)
+{
+    ray_t r = {ts_v(ox, oy, oz), vec3_normalize(ts_v(dx, dy, dz))};
+    return r;
+}
+
+/* Distance of the first hit of prim 0 beyond tmin, or -1 for a miss. */
+static double hit_t_of(const render_frame_t *f, uint32_t prim, ray_t r, double tmin, double tmax)
+{
+    num_t t;
+    if (!prim_intersect(&f->prims[prim], &r, num_from_double(tmin), num_from_double(tmax), &t))
+        return -1;
+    return num_to_double(t);
+}
+
+static hit_t surface_of(const render_frame_t *f, uint32_t prim, ray_t r)
+{
+    hit_t h;
+    memset(&h, 0, sizeof h);
+    num_t t = NUM_ZERO;
+    prim_intersect(&f->prims[prim], &r, NUM_ZERO, num_from_double(1000), &t);
+    h.t = t;
+    h.prim = prim;
+    prim_surface(&f->prims[prim], &r, &h);
+    return h;
+}
+
+#define CHECK_VEC(v, wx, wy, wz, tol)                                                             \
+    do {                                                                                          \
+        CHECK_NEAR(num_to_double((v).x), (wx), (tol));                                            \
+        CHECK_NEAR(num_to_double((v).y), (wy), (tol));                                            \
+        CHECK_NEAR(num_to_double((v).z), (wz), (tol));                                            \
+    } while (0)
+
+static void test_triangle(void)
+{
+    ts_init(&ts, 8, 8);
+    ts_triangle(&ts, 0, 0, ts_v(0, 0, 5), ts_v(1, 0, 5), ts_v(0, 1, 5));
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0.25, 0.25, 0, 0, 0, 1), 0, 100), 5.0, TOL);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0.8, 0.8, 0, 0, 0, 1), 0, 100), -1, 0);   /* outside edge */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(-0.1, 0.5, 0, 0, 0, 1), 0, 100), -1, 0);  /* outside edge */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0.5, 0.5, 0, 0, 0, 1), 0, 100), 5.0, TOL); /* on the edge */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(-1, 0.2, 5, 1, 0, 0), 0, 100), -1, 0);    /* in its plane */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0.25, 0.25, 0, 0, 0, 1), 0, 4.9), -1, 0); /* beyond tmax */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0.25, 0.25, 10, 0, 0, 1), 0, 100), -1, 0); /* behind */
+    /* oblique from the back side: (0.2,0.2,10) towards (0.2,0.2,5) + (0,0,-1)... */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0.2, 0.2 + 3, 9, 0, -3, -4), 0, 100), 5.0, TOL);
+    hit_t h = surface_of(f, 0, ray_of(0.25, 0.5, 0, 0, 0, 1));
+    CHECK_VEC(h.normal, 0, 0, 1, TOL); /* e1 x e2 */
+    CHECK_NEAR(num_to_double(h.u), 0.25, TOL); /* tex (0,0) (1,0) (0,1) */
+    CHECK_NEAR(num_to_double(h.v), 0.5, TOL);
+    CHECK_VEC(h.tangent, 1, 0, 0, TOL);
+}
+
+static void test_triangle_large(void)
+{
+    /* a floor 1600 units across: the fixed build must not overflow */
+    ts_init(&ts, 8, 8);
+    ts_triangle(&ts, 0, 0, ts_v(-800, -1, -100), ts_v(800, -1, -100), ts_v(0, -1, 900));
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    /* from the origin down 45 degrees: y = -1 at t = sqrt(2) */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 0, 0, -1, 1), 0, 1000), sqrt(2.0), TOL);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 0, 0, -1, 800), 0, 2000), sqrt(1.0 + 800.0 * 800.0), TOL * 400);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 0, 0, 1, 1), 0, 1000), -1, 0);
+}
+
+static void test_ellipsoid(void)
+{
+    ts_init(&ts, 8, 8);
+    ts_ellipsoid(&ts, 0, 0, ts_v(0, 0, 10), ts_v(2, 1, 1));
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 0, 0, 0, 1), 0, 100), 9.0, TOL);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(-10, 0, 10, 1, 0, 0), 0, 100), 8.0, TOL);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 1.01, 0, 0, 0, 1), 0, 100), -1, 0);    /* just above */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(-10, 1.001, 10, 1, 0, 0), 0, 100), -1, 0); /* grazing miss */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 10, 1, 0, 0), 0, 100), 2.0, TOL);    /* from inside */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 20, 0, 0, 1), 0, 100), -1, 0);       /* behind */
+    hit_t h = surface_of(f, 0, ray_of(0, 0, 0, 0, 0, 1));
+    CHECK_VEC(h.normal, 0, 0, -1, TOL);
+    /* at (1, sqrt(.75), 10): gradient (x/4, y, 0) normalised */
+    double y = sqrt(0.75), len = sqrt(0.25 * 0.25 + 0.75);
+    h = surface_of(f, 0, ray_of(1, 5, 10, 0, -1, 0));
+    CHECK_NEAR(num_to_double(h.t), 5 - y, TOL);
+    CHECK_VEC(h.normal, 0.25 / len, y / len, 0, TOL);
+    /* map coordinates: the front (-z) pole is pseudo-angle 3 -> u = 0.75,
+     * and the equator v = 0.5 */
+    h = surface_of(f, 0, ray_of(0, 0, 0, 0, 0, 1));
+    CHECK_NEAR(num_to_double(h.u), 0.75, TOL);
+    CHECK_NEAR(num_to_double(h.v), 0.5, TOL);
+}
+
+static void test_ellipsoid_transformed(void)
+{
+    /* radius (2,1,1) turned 90 degrees about z: long axis along y */
+    ts_init(&ts, 8, 8);
+    uint16_t c = ts_cluster(&ts, 0, ts_rotate_z(0, 1, 0, 0, 10));
+    ts_ellipsoid(&ts, c, 0, ts_v(0, 0, 0), ts_v(2, 1, 1));
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 0, 0, 0, 1), 0, 100), 9.0, TOL);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, -10, 10, 0, 1, 0), 0, 100), 8.0, TOL);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(-10, 0, 10, 1, 0, 0), 0, 100), 9.0, TOL);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(1.5, 0, 0, 0, 0, 1), 0, 100), -1, 0);
+    hit_t h = surface_of(f, 0, ray_of(0, -10, 10, 0, 1, 0));
+    CHECK_VEC(h.normal, 0, -1, 0, TOL);
+    /* box of the cluster: y from -2 to 2 */
+    CHECK_NEAR(num_to_double(f->clusters[c].bounds.lo.y), -2.0, 0.01);
+    CHECK_NEAR(num_to_double(f->clusters[c].bounds.hi.x), 1.0, 0.01);
+}
+
+static void test_box(void)
+{
+    ts_init(&ts, 8, 8);
+    ts_box(&ts, 0, 0, ts_v(0, 0, 10), ts_v(1, 2, 3));
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 0, 0, 0, 1), 0, 100), 7.0, TOL);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 10, 0, 1, 0), 0, 100), 2.0, TOL); /* from inside */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(1.01, 0, 0, 0, 0, 1), 0, 100), -1, 0);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 2.5, 0, 0, 0, 1), 0, 100), -1, 0);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(-10, 0, 10, 1, 0, 0), 0, 100), 9.0, TOL);
+    /* diagonal through the corner region: enters the z face at x=0.5 */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0.5 - 0.07, 0, 7 - 0.7, 0.7, 0, 7), 0, 100), sqrt(0.49 + 49) * 0.1, TOL);
+    hit_t h = surface_of(f, 0, ray_of(0, 0, 0, 0, 0, 1));
+    CHECK_VEC(h.normal, 0, 0, -1, TOL);
+    CHECK_NEAR(num_to_double(h.u), 0.5, TOL); /* face centre */
+    CHECK_NEAR(num_to_double(h.v), 0.5, TOL);
+    h = surface_of(f, 0, ray_of(0, 0, 10, 0, 1, 0));
+    CHECK_VEC(h.normal, 0, 1, 0, TOL);
+}
+
+static void test_box_rotated(void)
+{
+    /* unit cube turned 45 degrees about z: corner at x = -sqrt(2) */
+    double c = sqrt(0.5);
+    ts_init(&ts, 8, 8);
+    uint16_t k = ts_cluster(&ts, 0, ts_rotate_z(c, c, 0, 0, 10));
+    ts_box(&ts, k, 0, ts_v(0, 0, 0), ts_v(1, 1, 1));
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(-10, 0.2, 10, 1, 0, 0), 0, 100), 10 - sqrt(2.0) + 0.2, TOL);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 1.5, 0, 0, 0, 1), 0, 100), -1, 0);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 1.3, 0, 0, 0, 1), 0, 100), 9.0, TOL);
+    hit_t h = surface_of(f, 0, ray_of(-10, 0.2, 10, 1, 0, 0));
+    CHECK_VEC(h.normal, -c, c, 0, TOL); /* the upper-left face */
+}
+
+static void test_density_field(void)
+{
+    num_t d = num_from_double(3), b = num_from_double(2);
+    /* r = 0: b; r = 1 = d/3: b(1 - 1/3) = 4/3, (3b/2)(2/3)^2 = 4/3 too */
+    CHECK_NEAR(num_to_double(density_field(NUM_ZERO, d, b)), 2.0, TOL);
+    CHECK_NEAR(num_to_double(density_field(num_from_double(1), d, b)), 4.0 / 3, TOL);
+    CHECK_NEAR(num_to_double(density_field(num_from_double(0.25), d, b)), 2 * (1 - 0.75 / 9), TOL);
+    CHECK_NEAR(num_to_double(density_field(num_from_double(4), d, b)), 3 * (1 - 2.0 / 3) * (1 - 2.0 / 3), TOL);
+    CHECK_NEAR(num_to_double(density_field(num_from_double(9), d, b)), 0.0, 0);
+    CHECK_NEAR(num_to_double(density_field(num_from_double(100), d, b)), 0.0, 0);
+}
+
+static void test_density(void)
+{
+    /* one component d = 3, b = 1, threshold 0.5: 1.5(1 - r/3)^2 = 0.5 at
+     * r = 3(1 - 1/sqrt 3) */
+    const double one[1][5] = {{0, 0, 10, 3, 1}};
+    double r = 3 * (1 - 1 / sqrt(3.0));
+    ts_init(&ts, 8, 8);
+    ts_density(&ts, 0, 0, 0.5, 1, one);
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 0, 0, 0, 1), 0, 100), 10 - r, TOL_DENSITY);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 10, 1, 0, 0), 0, 100), r, TOL_DENSITY);   /* from inside */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 2, 0, 0, 0, 1), 0, 100), -1, 0);     /* in the field, outside */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 4, 0, 0, 0, 1), 0, 100), -1, 0);     /* outside the field */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 0, 0, 0, 1), 0, 8), -1, 0);       /* beyond tmax */
+    hit_t h = surface_of(f, 0, ray_of(0, 0, 0, 0, 0, 1));
+    CHECK_VEC(h.normal, 0, 0, -1, TOL_DENSITY);
+    h = surface_of(f, 0, ray_of(0, -10, 10, 0, 1, 0));
+    CHECK_VEC(h.normal, 0, -1, 0, TOL_DENSITY);
+
+    /* two equal components 2 apart: on the axis between them each gives
+     * 1.5(1 - 1/3)^2 = 2/3 at the midpoint, sum 4/3 > 0.5, so the blob is
+     * joined; along x through the centres the surface is at x = -(1+r). */
+    const double two[2][5] = {{-1, 0, 10, 3, 1}, {1, 0, 10, 3, 1}};
+    ts_init(&ts, 8, 8);
+    ts_density(&ts, 0, 0, 0.5, 2, two);
+    f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    /* at x = -(1 + s) the far component (distance 2 + s) adds to the near
+     * one: solve 1.5(1-s/3)^2 + 1.5(1-(2+s)/3)^2 = 0.5 numerically */
+    double lo = 0, hi = 3;
+    for (int i = 0; i < 200; i++) {
+        double s = (lo + hi) / 2;
+        double a = 1 - s / 3, b = 1 - (2 + s) / 3;
+        double fsum = 1.5 * a * a + (b > 0 ? 1.5 * b * b : 0);
+        if (fsum > 0.5)
+            lo = s;
+        else
+            hi = s;
+    }
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(-10, 0, 10, 1, 0, 0), 0, 100), 10 - 1 - lo, TOL_DENSITY);
+    /* the joint is solid: a ray along z through x = 0 hits */
+    CHECK(hit_t_of(f, 0, ray_of(0, 0, 0, 0, 0, 1), 0, 100) > 0);
+}
+
+static void test_aabb(void)
+{
+    aabb_t b = {ts_v(-1, -1, 4), ts_v(1, 1, 6)};
+    ray_t r = ray_of(0, 0, 0, 0, 0, 1);
+    CHECK(aabb_hit(&b, &r, NUM_ZERO, num_from_double(100)));
+    CHECK(!aabb_hit(&b, &r, NUM_ZERO, num_from_double(3.9)));   /* ends before */
+    CHECK(!aabb_hit(&b, &r, num_from_double(6.1), num_from_double(100))); /* starts after */
+    r = ray_of(0, 2, 0, 0, 0, 1);
+    CHECK(!aabb_hit(&b, &r, NUM_ZERO, num_from_double(100)));   /* parallel, outside */
+    r = ray_of(0, 0, 5, 1, 0, 0);
+    CHECK(aabb_hit(&b, &r, NUM_ZERO, num_from_double(100)));    /* from inside */
+    r = ray_of(0, 0, 0, 1e-5, 1e-5, 1);
+    CHECK(aabb_hit(&b, &r, NUM_ZERO, num_from_double(100)));    /* nearly parallel */
+    r = ray_of(-3, 0, 5, 1, 1, 0);
+    CHECK(!aabb_hit(&b, &r, NUM_ZERO, num_from_double(100)));   /* misses the corner */
+}
+
+int main(void)
+{
+    printf("# num_t = %s\n", NUM_NAME);
+    RUN(test_triangle);
+    RUN(test_triangle_large);
+    RUN(test_ellipsoid);
+    RUN(test_ellipsoid_transformed);
+    RUN(test_box);
+    RUN(test_box_rotated);
+    RUN(test_density_field);
+    RUN(test_density);
+    RUN(test_aabb);
+    return check_exit();
+}

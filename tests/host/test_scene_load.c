@@ -1,0 +1,447 @@
+/* test_scene_load.c: the compiled scene format and its loader: a round trip
+ * through text -> compiled form -> scene_t, and every kind of corruption
+ * (truncation at every length, each header field, flipped bits, bad
+ * indices) refused with the right error. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "host-tools/scene/scene_desc.h"
+#include "proto/crc32.h"
+#include "proto/wire.h"
+#include "render/scene_load.h"
+#include "tests/check.h"
+
+#define ARENA_BYTES (4u * 1024u * 1024u)
+
+static const char *scene_text =
+    "camera { eye 0 1 -5 look_at 0 0 0 up 0 1 0 fov 60 }\n"
+    "resolution 64 48\n"
+    "background 0.1 0.2 0.3\n"
+    "options { max_depth 4 shadows off }\n"
+    "animation { frames 3 }\n"
+    "light point { colour 1 0.5 0.25 position 1 2 3 }\n"
+    "light spot { position 0 5 0 at 0 0 0 cone 20 falloff 10 }\n"
+    "map tiles colour { size 2 1 texels 1 0 0  0 0 1 repeat 4 2 }\n"
+    "map bumps bump { size 1 2 texels 0 1 depth 0.5 }\n"
+    "material a { colour 0.5 0.6 0.7 dic 0.1 drc 0.8 src 0.2 trc 0.3 fresnel 0.5 ior 1.5 "
+    "phong 20 colour_map tiles bump_map bumps }\n"
+    "material b { colour 1 1 1 }\n"
+    "use b\n"
+    "box { min -1 -1 -1 max 1 0 3 }\n"
+    "cluster c1 { translate 1 2 3\n"
+    "  key 0 { translate 0 0 0 }\n"
+    "  key 2 { rotate 0 90 0 scale 2 }\n"
+    "  sphere { material a centre 0 0 0 radius 0.5 }\n"
+    "  cluster c2 { scale 2\n"
+    "    triangle { v 0 0 0 v 1 0 0 v 0 1 0 uv 0 0 uv 1 0 uv 0 1 }\n"
+    "    density { threshold 0.5 component 0 0 0 1 1 component 1 0 0 1 -0.5 }\n"
+    "    ellipsoid { centre 1 1 1 radii 1 2 3 }\n"
+    "  }\n"
+    "}\n";
+
+static uint8_t *compiled(size_t *len)
+{
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    uint8_t *buf = NULL;
+    if (sd_parse_text("t.scn", scene_text, &s, err, sizeof err) != 0) {
+        printf("parse failed: %s\n", err);
+        return NULL;
+    }
+    if (sd_compile(&s, &buf, len, err, sizeof err) != 0)
+        printf("compile failed: %s\n", err);
+    sd_free(&s);
+    return buf;
+}
+
+static scene_load_status_t try_load(const uint8_t *buf, size_t len, scene_load_error_t *e)
+{
+    static uint8_t mem[ARENA_BYTES];
+    arena_t arena;
+    scene_t s;
+    arena_init(&arena, mem, sizeof mem);
+    scene_load_status_t st = scene_load(buf, len, &arena, &s, e);
+    if (st != SCENE_LOAD_OK && arena.used != 0)
+        printf("arena not released after a failed load\n");
+    return st;
+}
+
+/* Recomputes the CRC so a deliberate field change reaches the field checks. */
+static void fix_crc(uint8_t *b, size_t len)
+{
+    wire_put_u32(b + SCN_HDR_CRC, crc32(b + SCN_CRC_START, len - SCN_CRC_START));
+}
+
+/* Offset of the section of a kind, via the table. */
+static uint32_t section_offset(const uint8_t *b, int kind)
+{
+    int n = wire_get_u16(b + SCN_HDR_SECTIONS);
+    for (int i = 0; i < n; i++) {
+        const uint8_t *e = b + SCN_HEADER_SIZE + i * SCN_SECENT_SIZE;
+        if ((int)wire_get_u32(e + SCN_SECENT_KIND) == kind)
+            return wire_get_u32(e + SCN_SECENT_OFFSET);
+    }
+    return 0;
+}
+
+static void test_round_trip(void)
+{
+    size_t len;
+    uint8_t *b = compiled(&len);
+    CHECK(b != NULL);
+    if (!b)
+        return;
+    static uint8_t mem[ARENA_BYTES];
+    arena_t arena;
+    arena_init(&arena, mem, sizeof mem);
+    scene_t s;
+    scene_load_error_t e;
+    CHECK_EQ_INT(scene_load(b, len, &arena, &s, &e), SCENE_LOAD_OK);
+    CHECK_EQ_INT(s.width, 64);
+    CHECK_EQ_INT(s.height, 48);
+    CHECK_EQ_INT(s.frame_count, 3);
+    CHECK_EQ_INT(s.options.max_depth, 4);
+    CHECK_EQ_INT(s.options.shadows, 0);
+    CHECK_EQ_INT(s.options.refractionless, 1);
+    CHECK_EQ_INT(s.options.use_bounds, 1);
+    CHECK_NEAR(num_to_double(s.background.b), 0.3, 1e-6);
+    /* fov 60 horizontal, 64x48: tan(30 deg) * 48/64 */
+    CHECK_NEAR(num_to_double(s.camera.tan_half_fov_y), 0.57735026919 * 0.75, 1e-6);
+    CHECK_EQ_INT(s.light_count, 2);
+    CHECK_EQ_INT(s.lights[0].kind, SCENE_LIGHT_POINT);
+    CHECK_NEAR(num_to_double(s.lights[0].intensity.g), 0.5, 1e-7);
+    CHECK_NEAR(num_to_double(s.lights[0].position.z), 3, 1e-7);
+    CHECK_EQ_INT(s.lights[1].kind, SCENE_LIGHT_SPOT);
+    CHECK_NEAR(num_to_double(s.lights[1].direction.y), -5, 1e-6);
+    CHECK_NEAR(num_to_double(s.lights[1].cos_inner), 0.93969262, 1e-6);
+    CHECK_NEAR(num_to_double(s.lights[1].cos_outer), 0.86602540, 1e-6);
+    CHECK_EQ_INT(s.map_count, 2);
+    CHECK_EQ_INT(s.maps[0].kind, SCENE_MAP_COLOUR);
+    CHECK_EQ_INT(s.maps[0].width, 2);
+    CHECK_EQ_INT(s.maps[0].texels[0], 255);
+    CHECK_EQ_INT(s.maps[0].texels[5], 255);
+    CHECK_EQ_INT(s.maps[0].texels[3], 0);
+    CHECK_NEAR(num_to_double(s.maps[0].repeat_u), 4, 0);
+    CHECK_EQ_INT(s.maps[1].kind, SCENE_MAP_BUMP);
+    CHECK_EQ_INT(s.maps[1].texels[1], 255);
+    CHECK_NEAR(num_to_double(s.maps[1].bump_depth), 0.5, 0);
+    CHECK_EQ_INT(s.material_count, 2);
+    CHECK_NEAR(num_to_double(s.materials[0].ior), 1.5, 0);
+    CHECK_NEAR(num_to_double(s.materials[0].fresnel), 0.5, 0);
+    CHECK_EQ_INT(s.materials[0].phong_n, 20);
+    CHECK_EQ_INT(s.materials[0].colour_map, 0);
+    CHECK_EQ_INT(s.materials[0].bump_map, 1);
+    CHECK_EQ_INT(s.materials[1].colour_map, SCENE_NONE);
+    CHECK_EQ_INT(s.cluster_count, 3);
+    CHECK_EQ_INT(s.clusters[0].parent, SCENE_NONE);
+    CHECK_EQ_INT(s.clusters[1].parent, 0);
+    CHECK_EQ_INT(s.clusters[2].parent, 1);
+    CHECK_NEAR(num_to_double(s.clusters[1].local.m[1][3]), 2, 0);
+    CHECK_NEAR(num_to_double(s.clusters[2].local.m[2][2]), 2, 0);
+    CHECK_EQ_INT(s.clusters[1].key_count, 2);
+    CHECK_EQ_INT(s.key_count, 2);
+    CHECK_EQ_INT(s.keys[1].frame, 2);
+    /* rotate 0 90 0: quaternion (cos 45, 0, sin 45, 0) */
+    CHECK_NEAR(num_to_double(s.keys[1].rot_w), 0.70710678, 1e-6);
+    CHECK_NEAR(num_to_double(s.keys[1].rot_y), 0.70710678, 1e-6);
+    CHECK_NEAR(num_to_double(s.keys[1].scale.z), 2, 0);
+    CHECK_EQ_INT(s.prim_count, 5);
+    CHECK_EQ_INT(s.prims[0].kind, SCENE_PRIM_BOX);
+    CHECK_NEAR(num_to_double(s.prims[0].shape.box.centre.z), 1, 0);
+    CHECK_NEAR(num_to_double(s.prims[0].shape.box.half.z), 2, 0);
+    CHECK_EQ_INT(s.prims[0].material, 1);
+    CHECK_EQ_INT(s.prims[1].kind, SCENE_PRIM_ELLIPSOID);
+    CHECK_EQ_INT(s.prims[1].material, 0);
+    CHECK_EQ_INT(s.prims[1].cluster, 1);
+    CHECK_EQ_INT(s.prims[2].kind, SCENE_PRIM_TRIANGLE);
+    CHECK_EQ_INT(s.prims[2].cluster, 2);
+    CHECK_NEAR(num_to_double(s.prims[2].shape.triangle.v[1].x), 1, 0);
+    CHECK_NEAR(num_to_double(s.prims[2].shape.triangle.tex_v[2]), 1, 0);
+    CHECK_EQ_INT(s.prims[3].kind, SCENE_PRIM_DENSITY);
+    CHECK_EQ_INT(s.prims[3].shape.density.count, 2);
+    CHECK_NEAR(num_to_double(s.prims[3].shape.density.threshold), 0.5, 0);
+    CHECK_EQ_INT(s.density_component_count, 2);
+    CHECK_NEAR(num_to_double(s.density_components[1].weight), -0.5, 0);
+    CHECK_NEAR(num_to_double(s.prims[4].shape.ellipsoid.radius.z), 3, 0);
+    free(b);
+}
+
+/* Cut the file at every length: each is refused (truncated, or a size
+ * mismatch for the cut that leaves the header), never read out of bounds. */
+static void test_truncation_every_length(void)
+{
+    size_t len;
+    uint8_t *b = compiled(&len);
+    if (!b)
+        return;
+    int bad = 0;
+    for (size_t n = 0; n < len; n++) {
+        uint8_t *cut = malloc(n ? n : 1); /* exact size: ASan catches overreads */
+        memcpy(cut, b, n);
+        scene_load_error_t e;
+        scene_load_status_t st = try_load(n ? cut : NULL, n, &e);
+        if (st != SCENE_LOAD_ERR_TRUNCATED && !bad++)
+            printf("length %zu: status %d (%s)\n", n, st, e.message);
+        free(cut);
+    }
+    CHECK_EQ_INT(bad, 0);
+    free(b);
+}
+
+static void test_header_fields(void)
+{
+    size_t len;
+    uint8_t *b = compiled(&len);
+    if (!b)
+        return;
+    uint8_t *c = malloc(len);
+    scene_load_error_t e;
+
+    memcpy(c, b, len);
+    c[1] = 'X';
+    CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_MAGIC);
+
+    memcpy(c, b, len);
+    wire_put_u16(c + SCN_HDR_VERSION, SCN_VERSION + 1);
+    CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_VERSION);
+    CHECK(strstr(e.message, "version 2") != NULL);
+
+    memcpy(c, b, len);
+    wire_put_u32(c + SCN_HDR_TOTAL, (uint32_t)len - 4);
+    CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_SIZE);
+
+    memcpy(c, b, len);
+    wire_put_u32(c + SCN_HDR_TOTAL, SCN_MAX_SIZE + 1);
+    CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_SIZE);
+
+    memcpy(c, b, len);
+    wire_put_u32(c + SCN_HDR_CRC, wire_get_u32(c + SCN_HDR_CRC) ^ 1);
+    CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_CRC);
+
+    memcpy(c, b, len);
+    wire_put_u16(c + SCN_HDR_SECTIONS, 0);
+    CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_SECTION);
+
+    memcpy(c, b, len);
+    wire_put_u16(c + SCN_HDR_SECTIONS, SCN_SEC_COUNT + 1);
+    CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_SECTION);
+    free(c);
+    free(b);
+}
+
+/* Every single-bit flip anywhere in the file is refused. */
+static void test_every_bit_flip(void)
+{
+    size_t len;
+    uint8_t *b = compiled(&len);
+    if (!b)
+        return;
+    int accepted = 0;
+    for (size_t i = 0; i < len * 8; i++) {
+        b[i / 8] ^= (uint8_t)(1u << (i % 8));
+        scene_load_error_t e;
+        if (try_load(b, len, &e) == SCENE_LOAD_OK && !accepted++)
+            printf("flip of bit %zu accepted\n", i);
+        b[i / 8] ^= (uint8_t)(1u << (i % 8));
+    }
+    CHECK_EQ_INT(accepted, 0);
+    free(b);
+}
+
+/* Section table damage, with the CRC fixed so the table checks are reached. */
+static void test_section_table(void)
+{
+    size_t len;
+    uint8_t *b = compiled(&len);
+    if (!b)
+        return;
+    uint8_t *c = malloc(len);
+    uint8_t *e0 = c + SCN_HEADER_SIZE; /* first entry: the VIEW section */
+    scene_load_error_t e;
+
+    memcpy(c, b, len);
+    wire_put_u32(e0 + SCN_SECENT_KIND, 99);
+    fix_crc(c, len);
+    CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_SECTION);
+
+    memcpy(c, b, len);
+    wire_put_u32(e0 + SCN_SECENT_KIND, SCN_SEC_CLUSTERS); /* duplicate kind */
+    fix_crc(c, len);
+    CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_SECTION);
+
+    memcpy(c, b, len);
+    wire_put_u32(e0 + SCN_SECENT_OFFSET, (uint32_t)len - 8); /* runs past the end */
+    fix_crc(c, len);
+    CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_SECTION);
+
+    memcpy(c, b, len);
+    wire_put_u32(e0 + SCN_SECENT_OFFSET, 0xfffffff0u); /* offset + size wraps */
+    fix_crc(c, len);
+    CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_SECTION);
+
+    memcpy(c, b, len);
+    wire_put_u32(e0 + SCN_SECENT_OFFSET, wire_get_u32(e0 + SCN_SECENT_OFFSET) + 2);
+    fix_crc(c, len);
+    CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_SECTION); /* misaligned */
+
+    memcpy(c, b, len);
+    wire_put_u32(e0 + SCN_SECENT_COUNT, 2); /* a second view: over its limit of 1 */
+    fix_crc(c, len);
+    CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_LIMIT);
+
+    memcpy(c, b, len);
+    wire_put_u32(e0 + SCN_SECENT_BYTES, SCN_VIEW_SIZE - 4); /* size not count * record */
+    fix_crc(c, len);
+    CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_SECTION);
+
+    memcpy(c, b, len);
+    wire_put_u32(e0 + SCN_SECENT_OFFSET, wire_get_u32(e0 + SCN_SECENT_OFFSET + SCN_SECENT_SIZE));
+    fix_crc(c, len);
+    CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_SECTION); /* overlap */
+
+    memcpy(c, b, len);
+    wire_put_u32(e0 + SCN_SECENT_OFFSET, 0); /* inside the header */
+    fix_crc(c, len);
+    CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_SECTION);
+    free(c);
+    free(b);
+}
+
+/* A field of one record changed (CRC fixed): the right error, naming it. */
+static void expect_field(const uint8_t *b, size_t len, int kind, uint32_t rec_off,
+                         uint32_t value, int bytes, scene_load_status_t want, const char *words)
+{
+    uint8_t *c = malloc(len);
+    memcpy(c, b, len);
+    uint8_t *p = c + section_offset(c, kind) + rec_off;
+    if (bytes == 2)
+        wire_put_u16(p, (uint16_t)value);
+    else
+        wire_put_u32(p, value);
+    fix_crc(c, len);
+    scene_load_error_t e;
+    scene_load_status_t st = try_load(c, len, &e);
+    if (st != want || strstr(e.message, words) == NULL) {
+        char m[256];
+        snprintf(m, sizeof m, "kind %d offset %u: status %d '%s', want %d with '%s'", kind,
+                 rec_off, st, e.message, want, words);
+        check_fail(__FILE__, __LINE__, m);
+    }
+    free(c);
+}
+
+static uint32_t f32_bits(float f)
+{
+    uint32_t u;
+    memcpy(&u, &f, sizeof u);
+    return u;
+}
+
+static void test_bad_indices_and_values(void)
+{
+    size_t len;
+    uint8_t *b = compiled(&len);
+    if (!b)
+        return;
+    const uint32_t P = SCN_PRIM_SIZE, C = SCN_CLUSTER_SIZE;
+    expect_field(b, len, SCN_SEC_PRIMS, SCN_PRIM_MATERIAL, 2, 2, SCENE_LOAD_ERR_INDEX,
+                 "prim 0: material");
+    expect_field(b, len, SCN_SEC_PRIMS, P + SCN_PRIM_CLUSTER, 3, 2, SCENE_LOAD_ERR_INDEX,
+                 "prim 1: cluster");
+    expect_field(b, len, SCN_SEC_PRIMS, P + SCN_PRIM_KIND, 9, 2, SCENE_LOAD_ERR_VALUE,
+                 "prim 1: unknown kind");
+    expect_field(b, len, SCN_SEC_PRIMS, 3 * P + SCN_PRIM_COUNT, 3, 4, SCENE_LOAD_ERR_INDEX,
+                 "prim 3: components outside");
+    expect_field(b, len, SCN_SEC_PRIMS, 3 * P + SCN_PRIM_COUNT, 0, 4, SCENE_LOAD_ERR_LIMIT,
+                 "prim 3: component count");
+    expect_field(b, len, SCN_SEC_PRIMS, 4 * P + SCN_PRIM_VALUES + 20, f32_bits(-1.0f), 4,
+                 SCENE_LOAD_ERR_VALUE, "prim 4: a semi-axis");
+    expect_field(b, len, SCN_SEC_PRIMS, 2 * P + SCN_PRIM_VALUES, 0x7fc00000u, 4,
+                 SCENE_LOAD_ERR_VALUE, "prim 2: a value is not finite");
+    expect_field(b, len, SCN_SEC_PRIMS, 2 * P + SCN_PRIM_VALUES, f32_bits(2000.0f), 4,
+                 SCENE_LOAD_ERR_VALUE, "prim 2: a value");
+    expect_field(b, len, SCN_SEC_PRIMS, 0 * P + SCN_PRIM_VALUES + 4 * 10, f32_bits(1.0f), 4,
+                 SCENE_LOAD_ERR_VALUE, "unused value");
+    /* the tree: a cycle (parent not below), the root with a parent */
+    expect_field(b, len, SCN_SEC_CLUSTERS, C + SCN_CLUSTER_PARENT, 2, 2, SCENE_LOAD_ERR_TREE,
+                 "cluster 1: parent");
+    expect_field(b, len, SCN_SEC_CLUSTERS, 2 * C + SCN_CLUSTER_PARENT, 2, 2,
+                 SCENE_LOAD_ERR_TREE, "cluster 2: parent");
+    expect_field(b, len, SCN_SEC_CLUSTERS, SCN_CLUSTER_PARENT, 0, 2, SCENE_LOAD_ERR_TREE,
+                 "cluster 0: the root");
+    expect_field(b, len, SCN_SEC_CLUSTERS, C + SCN_CLUSTER_KEY_COUNT, 3, 2,
+                 SCENE_LOAD_ERR_INDEX, "cluster 1: key range");
+    expect_field(b, len, SCN_SEC_CLUSTERS, C + SCN_CLUSTER_MATRIX, 0xff800000u, 4,
+                 SCENE_LOAD_ERR_VALUE, "cluster 1: matrix");
+    expect_field(b, len, SCN_SEC_KEYS, SCN_KEY_SIZE + SCN_KEY_FRAME, 0, 4,
+                 SCENE_LOAD_ERR_TREE, "key frames do not rise");
+    expect_field(b, len, SCN_SEC_KEYS, SCN_KEY_ROTATION, f32_bits(0.5f), 4,
+                 SCENE_LOAD_ERR_VALUE, "unit quaternion");
+    expect_field(b, len, SCN_SEC_MATERIALS, SCN_MAT_COLOUR_MAP, 1, 2, SCENE_LOAD_ERR_INDEX,
+                 "material 0: colour map");
+    expect_field(b, len, SCN_SEC_MATERIALS, SCN_MAT_BUMP_MAP, 7, 2, SCENE_LOAD_ERR_INDEX,
+                 "material 0: bump map");
+    expect_field(b, len, SCN_SEC_MATERIALS, SCN_MAT_DRC, f32_bits(1.5f), 4,
+                 SCENE_LOAD_ERR_VALUE, "material 0: colour, dic, drc");
+    expect_field(b, len, SCN_SEC_MATERIALS, SCN_MAT_TRC, f32_bits(0.9f), 4,
+                 SCENE_LOAD_ERR_VALUE, "src + trc");
+    expect_field(b, len, SCN_SEC_MATERIALS, SCN_MAT_IOR, f32_bits(0.5f), 4,
+                 SCENE_LOAD_ERR_VALUE, "ior");
+    expect_field(b, len, SCN_SEC_MATERIALS, SCN_MAT_PHONG, 5000, 2, SCENE_LOAD_ERR_LIMIT,
+                 "phong");
+    expect_field(b, len, SCN_SEC_MAPS, SCN_MAP_WIDTH, 3, 2, SCENE_LOAD_ERR_INDEX,
+                 "map 0: texels outside");
+    expect_field(b, len, SCN_SEC_MAPS, SCN_MAP_WIDTH, 0, 2, SCENE_LOAD_ERR_LIMIT, "map 0: size");
+    expect_field(b, len, SCN_SEC_MAPS, SCN_MAP_KIND, 7, 2, SCENE_LOAD_ERR_VALUE,
+                 "map 0: unknown kind");
+    expect_field(b, len, SCN_SEC_MAPS, SCN_MAP_REPEAT_U, 0, 4, SCENE_LOAD_ERR_VALUE,
+                 "map 0: repeat");
+    expect_field(b, len, SCN_SEC_LIGHTS, SCN_LIGHT_KIND, 0, 4, SCENE_LOAD_ERR_VALUE,
+                 "light 0: unknown kind");
+    expect_field(b, len, SCN_SEC_LIGHTS, SCN_LIGHT_COLOUR, f32_bits(-1.0f), 4,
+                 SCENE_LOAD_ERR_VALUE, "light 0: colour");
+    expect_field(b, len, SCN_SEC_LIGHTS, SCN_LIGHT_SIZE + SCN_LIGHT_COS_OUTER,
+                 f32_bits(0.99f), 4, SCENE_LOAD_ERR_VALUE, "light 1: cone");
+    expect_field(b, len, SCN_SEC_VIEW, SCN_VIEW_WIDTH, 1025, 2, SCENE_LOAD_ERR_LIMIT,
+                 "image size 1025x48");
+    expect_field(b, len, SCN_SEC_VIEW, SCN_VIEW_MAX_DEPTH, 17, 2, SCENE_LOAD_ERR_LIMIT,
+                 "max depth 17");
+    expect_field(b, len, SCN_SEC_VIEW, SCN_VIEW_FLAGS, 0x100, 2, SCENE_LOAD_ERR_VALUE,
+                 "option flags");
+    expect_field(b, len, SCN_SEC_VIEW, SCN_VIEW_FRAMES, 0, 4, SCENE_LOAD_ERR_LIMIT,
+                 "frame count 0");
+    expect_field(b, len, SCN_SEC_VIEW, SCN_VIEW_TAN_HALF_FOV_Y, f32_bits(-0.5f), 4,
+                 SCENE_LOAD_ERR_VALUE, "field of view");
+    expect_field(b, len, SCN_SEC_COMPONENTS, SCN_COMPONENT_RADIUS, 0, 4, SCENE_LOAD_ERR_VALUE,
+                 "density component 0");
+    free(b);
+}
+
+static void test_small_arena(void)
+{
+    size_t len;
+    uint8_t *b = compiled(&len);
+    if (!b)
+        return;
+    static uint8_t mem[256];
+    arena_t arena;
+    arena_init(&arena, mem, sizeof mem);
+    scene_t s;
+    scene_load_error_t e;
+    CHECK_EQ_INT(scene_load(b, len, &arena, &s, &e), SCENE_LOAD_ERR_ARENA);
+    CHECK(strstr(e.message, "arena too small") != NULL);
+    CHECK_EQ_INT(arena.used, 0);
+    free(b);
+}
+
+int main(void)
+{
+    RUN(test_round_trip);
+    RUN(test_truncation_every_length);
+    RUN(test_header_fields);
+    RUN(test_every_bit_flip);
+    RUN(test_section_table);
+    RUN(test_bad_indices_and_values);
+    RUN(test_small_arena);
+    return check_exit();
+}

@@ -1,0 +1,147 @@
+/* test_scene_parse.c: the text scene format: what it accepts, and that
+ * every mistake is reported as file:line:col with what is wrong. */
+#include <stdlib.h>
+#include <string.h>
+
+#include "host-tools/scene/scene_desc.h"
+#include "tests/check.h"
+
+#define HEAD "light point { position 0 5 0 }\nmaterial m { }\n"
+
+/* Parses text; returns 0 on success, else checks the message starts with
+ * "t.scn:LINE:COL: " and contains words. */
+static void expect_error(const char *text, int line, int col, const char *words,
+                         const char *file, int at)
+{
+    struct sd_scene s;
+    char err[SD_ERR_MAX], want[64];
+    if (sd_parse_text("t.scn", text, &s, err, sizeof err) == 0) {
+        sd_free(&s);
+        check_fail(file, at, "parse succeeded, an error was expected");
+        return;
+    }
+    snprintf(want, sizeof want, "t.scn:%d:%d: ", line, col);
+    if (strncmp(err, want, strlen(want)) != 0 || strstr(err, words) == NULL) {
+        char m[SD_ERR_MAX + 128];
+        snprintf(m, sizeof m, "got '%s', want '%s...%s'", err, want, words);
+        check_fail(file, at, m);
+    }
+    CHECK_EQ_INT(s.n_prims + s.n_materials + s.n_clusters + s.n_maps, 0);
+}
+#define EXPECT_ERROR(text, line, col, words) expect_error(text, line, col, words, __FILE__, __LINE__)
+
+static void test_minimal_scene_and_defaults(void)
+{
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    int rc = sd_parse_text("t.scn", HEAD "sphere { material m radius 1 }\n", &s, err, sizeof err);
+    CHECK_EQ_INT(rc, 0);
+    if (rc)
+        return;
+    CHECK_EQ_INT(s.view.width, 320);
+    CHECK_EQ_INT(s.view.height, 240);
+    CHECK_EQ_INT(s.view.max_depth, 5);
+    CHECK_EQ_INT(s.view.flags, SCN_OPT_REFRACTIONLESS);
+    CHECK_EQ_INT(s.n_prims, 1);
+    CHECK_EQ_INT(s.n_clusters, 1);
+    CHECK_NEAR(s.materials[0].drc, 0.9, 0);
+    sd_free(&s);
+}
+
+static void test_transforms_compose_in_order(void)
+{
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    /* scale 2 then translate 1 0 0: the point (1,0,0) lands on (3,0,0);
+     * rotate 0 0 90 then sends x to y. */
+    int rc = sd_parse_text("t.scn",
+                           HEAD "cluster a { scale 2 translate 1 0 0 rotate 0 0 90\n"
+                                " box { material m min 0 0 0 max 1 1 1 } }\n",
+                           &s, err, sizeof err);
+    CHECK_EQ_INT(rc, 0);
+    if (rc)
+        return;
+    const double *m = s.clusters[1].m;
+    double p[3];
+    for (int r = 0; r < 3; r++)
+        p[r] = m[r * 4 + 0] * 1 + m[r * 4 + 3];
+    CHECK_NEAR(p[0], 0, 1e-12);
+    CHECK_NEAR(p[1], 3, 1e-12);
+    CHECK_NEAR(p[2], 0, 1e-12);
+    sd_free(&s);
+}
+
+static void test_keyframe_interpolation(void)
+{
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    int rc = sd_parse_text("t.scn",
+                           HEAD "animation { frames 5 }\n"
+                                "cluster a { key 0 { translate 0 0 0 } key 4 { translate 8 0 0 "
+                                "rotate 0 90 0 }\n sphere { material m radius 1 } }\n",
+                           &s, err, sizeof err);
+    CHECK_EQ_INT(rc, 0);
+    if (rc)
+        return;
+    double k[12];
+    sd_key_matrix(&s, 1, 2, k);
+    CHECK_NEAR(k[3], 4, 1e-12);
+    /* halfway rotation about y: 45 degrees */
+    CHECK_NEAR(k[0], 0.70710678, 1e-6);
+    CHECK_NEAR(k[2], 0.70710678, 1e-6);
+    sd_key_matrix(&s, 1, 9, k); /* after the last key: held */
+    CHECK_NEAR(k[3], 8, 1e-12);
+    sd_free(&s);
+}
+
+static void test_errors_name_line_and_column(void)
+{
+    EXPECT_ERROR(HEAD "sphere { material m radius -1 }\n", 3, 28, "radius must be");
+    EXPECT_ERROR(HEAD "sphere { material x radius 1 }\n", 3, 19, "no material named 'x'");
+    EXPECT_ERROR(HEAD "sphere { radius 1 }\n", 3, 1, "sphere has no material");
+    EXPECT_ERROR(HEAD "box { material m min 0 0 0 max 1 0 1 }\n", 3, 38, "axis y");
+    EXPECT_ERROR(HEAD "triangle { material m v 0 0 0 v 1 1 1 v 2 2 2 }\n", 3, 47, "degenerate");
+    EXPECT_ERROR(HEAD "resolution 2000 10\n", 3, 12, "width must be 1..1024");
+    EXPECT_ERROR(HEAD "camera { eye 0 0 0 look_at 0 0 0 }\n", 3, 34, "same point");
+    EXPECT_ERROR(HEAD "camera { up 0 0 1 }\n", 3, 19, "parallel");
+    EXPECT_ERROR(HEAD "frobnicate 3\n", 3, 1, "unknown statement 'frobnicate'");
+    EXPECT_ERROR(HEAD "cluster a { box { material m min 0 0 0 max 1 1 1 }\n", 4, 1,
+                 "end of file inside cluster 'a'");
+    EXPECT_ERROR(HEAD "sphere { material m radius 1x }\n", 3, 28, "'1x' is not a number");
+    EXPECT_ERROR("light point { position 0 5 0 }\nlight point { position 0 5 0 }\n"
+                 "light point { position 0 5 0 }\nlight point { position 0 5 0 }\n",
+                 4, 1, "more than 3 lights");
+    EXPECT_ERROR(HEAD "material m { }\n", 3, 10, "a second material named 'm'");
+    EXPECT_ERROR(HEAD "material g { src 0.7 trc 0.5 }\n", 3, 30, "src + trc");
+    EXPECT_ERROR(HEAD "map t colour { size 2 2 texels 1 1 1 }\n", 3, 38, "3 texel values, 12");
+    EXPECT_ERROR(HEAD "map t bump { size 1 1 texels 0.5 }\nmaterial n { colour_map t }\n", 4,
+                 25, "not a colour map");
+    EXPECT_ERROR(HEAD "map t colour { image \"missing.png\" }\n", 3, 22, "missing.png");
+    EXPECT_ERROR(HEAD "cluster a { key 3 { } key 2 { } }\n", 3, 27, "must rise");
+    EXPECT_ERROR(HEAD "light spot { position 0 0 0 direction 0 -1 0 }\n", 3, 46,
+                 "needs a cone");
+    EXPECT_ERROR(HEAD "density { material m threshold 1 }\n", 3, 34, "at least one component");
+    EXPECT_ERROR(HEAD "sphere { material m radius 1 } \"open\n", 3, 32, "string not closed");
+    EXPECT_ERROR("material m { }\nsphere { material m radius 1 }\n", 3, 1, "no light");
+}
+
+static void test_deep_nesting_refused(void)
+{
+    char text[4096] = HEAD;
+    for (int i = 0; i <= SCN_MAX_CLUSTER_NESTING; i++)
+        strcat(text, "cluster c { ");
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    CHECK(sd_parse_text("t.scn", text, &s, err, sizeof err) != 0);
+    CHECK(strstr(err, "nested deeper than 32") != NULL);
+}
+
+int main(void)
+{
+    RUN(test_minimal_scene_and_defaults);
+    RUN(test_transforms_compose_in_order);
+    RUN(test_keyframe_interpolation);
+    RUN(test_errors_name_line_and_column);
+    RUN(test_deep_nesting_refused);
+    return check_exit();
+}
