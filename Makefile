@@ -58,7 +58,7 @@ FW_CFLAGS := -std=gnu11 -O2 -g $(HOST_WARN) -I. -MMD -MP $(ARM_CPU) \
 	-ffreestanding -ffunction-sections -fdata-sections -ffp-contract=off \
 	-fno-common -DLINKS1_FIRMWARE $(LIBC_SPECS)
 FW_LDFLAGS := -nostartfiles -Wl,--gc-sections -Wl,--no-warn-rwx-segments \
-	-Tlinker/virt-memory.ld -Tlinker/sections.ld $(LIBC_SPECS)
+	-Tlinker/virt-memory.ld -Tlinker/sections.ld
 FW_LIBS := -lc -lgcc
 
 # ----------------------------------------------------------- module lists

@@ -37,10 +37,10 @@ _start:
     bne park                    @ only core 0 starts here (see BOARD-NOTES)
     ldr r1, =__bss_start        @ clear .bss (8-byte aligned, linker-checked)
     ldr r2, =__bss_end
-    mov r3, #0
     mov r4, #0
+    mov r5, #0
 1:  cmp r1, r2
-    strdlo r3, r4, [r1], #8
+    strdlo r4, r5, [r1], #8
     blo 1b
     blx boot_main               @ C, never returns
     b park

@@ -12,8 +12,10 @@
  * -ffp-contract=off so no fused multiply-add sneaks in; the fixed build is
  * integer code whose results do not depend on the compiler.
  *
- * Fixed format (docs/fixed-point.md says why): signed Q15.16 in an int32_t,
- * value = raw / 2^NUM_FRAC_BITS.  Range +-32767.99998, step 1/65536.
+ * Fixed format (docs/fixed-point.md says why): signed Q12.19 in an int32_t,
+ * value = raw / 2^NUM_FRAC_BITS: 1 sign bit, 12 integer bits, 19 fraction
+ * bits.  Range +-4095.999998, step 2^-19 (1.9e-6).  Every routine is written
+ * for any NUM_FRAC_BITS from 8 to 24.
  *
  * Overflow, fixed build: every operation that can overflow SATURATES to a
  * reserved marker, +NUM_RAW_SAT or -NUM_RAW_SAT (= +-INT32_MAX).  Those two
@@ -37,16 +39,26 @@
 #endif
 
 /* Scene coordinates (world and eye) must stay within +-NUM_COORD_LIMIT in
- * every build so the fixed build keeps room for sums and products of a few
- * coordinates (lengths and dot products use 64-bit intermediates). */
+ * every build so the fixed build keeps room for sums of a few coordinates
+ * (lengths and dot products use 64-bit intermediates).  NUM_FAR, the
+ * distance treated as "beyond everything", is 4 NUM_COORD_LIMIT and must
+ * stay below the fixed range (4096). */
 #define NUM_COORD_LIMIT 1000
+#define NUM_FAR NUM_C(4 * NUM_COORD_LIMIT)
 
 #if defined(LINKS1_NUM_FIXED)
 /* ------------------------------------------------------------ fixed point */
 typedef int32_t num_t;
 
-#define NUM_FRAC_BITS 16
+#ifndef NUM_FRAC_BITS /* overridable to measure other formats */
+#define NUM_FRAC_BITS 19
+#endif
+#if NUM_FRAC_BITS < 8 || NUM_FRAC_BITS > 24
+#error "NUM_FRAC_BITS must be 8..24"
+#endif
 #define NUM_ONE_RAW ((int32_t)1 << NUM_FRAC_BITS)
+#define NUM_INT_MAX ((int32_t)(INT32_MAX >> NUM_FRAC_BITS)) /* largest whole value */
+_Static_assert(4 * NUM_COORD_LIMIT < NUM_INT_MAX, "NUM_FAR must fit the fixed format");
 #define NUM_RAW_SAT INT32_MAX         /* saturation marker magnitude */
 #define NUM_RAW_MAX (INT32_MAX - 1)   /* largest valid magnitude */
 #define NUM_NAME "fixed"
@@ -126,6 +138,20 @@ static inline num_t num_from_int(int32_t i)
     return num__from_wide((int64_t)i * NUM_ONE_RAW);
 }
 
+/* num/den for integers, rounded; saturates (den == 0 gives a marker) */
+static inline num_t num_from_ratio(int32_t num, int32_t den)
+{
+    if (den == 0)
+        return num < 0 ? -NUM_RAW_SAT : NUM_RAW_SAT;
+    int negative = (num < 0) != (den < 0);
+    uint64_t un = (uint64_t)(num < 0 ? -(int64_t)num : num) << NUM_FRAC_BITS;
+    uint64_t ud = (uint64_t)(den < 0 ? -(int64_t)den : den);
+    uint64_t q = (un + ud / 2) / ud;
+    if (q > (uint64_t)NUM_RAW_MAX)
+        return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
+    return negative ? -(num_t)q : (num_t)q;
+}
+
 /* floor(a) as an integer; markers give +-INT32_MAX >> NUM_FRAC_BITS */
 static inline int32_t num_floor_int(num_t a) { return a >> NUM_FRAC_BITS; }
 
@@ -201,6 +227,8 @@ static inline num_t num_dot3(num_t ax, num_t ay, num_t az, num_t bx, num_t by, n
 }
 
 static inline num_t num_from_int(int32_t i) { return (num_t)i; }
+/* num/den, one rounding; den == 0 gives an infinity or NaN */
+static inline num_t num_from_ratio(int32_t num, int32_t den) { return (num_t)num / (num_t)den; }
 static inline num_t num_from_f32_bits(uint32_t bits)
 {
     float f;

@@ -23,3 +23,9 @@ HOST_TESTS += test_hostlink_msgs
 test_hostlink_msgs_SRCS := tests/host/test_hostlink_msgs.c host-tools/board.c \
 	host-tools/board_opts.c
 test_hostlink_msgs_ARITH := double
+
+# Board tests (tests/board/lib.sh is their shared helper, not a test).
+BOARD_TESTS += tests/board/boot_smp.sh tests/board/channels.sh tests/board/idle66.sh \
+	tests/board/fault.sh
+
+BENCHES += tests/bench/bench_boot.sh

@@ -25,7 +25,17 @@
 
 
 
-/* Tolerances, in scene units (fixed-point step is 1/65536 = 1.5e-5). */
+/* Stack a tracing core needs (render_pixel and everything below it),
+ * measured with arm-none-eabi-gcc 12 -O2 -fstack-usage (float and fixed
+ * builds): about 0.6 KiB per level of reflection/refraction depth (the
+ * recursion) plus the deepest leaf (lights, shadow walk through up to
+ * RENDER_MAX_CLUSTER_DEPTH clusters, a primitive test). */
+#define RENDER_STACK_PER_DEPTH 640
+#define RENDER_STACK_BASE 4096
+#define RENDER_STACK_BYTES(max_depth) \
+    (RENDER_STACK_BASE + RENDER_STACK_PER_DEPTH * ((max_depth) + 1))
+
+/* Tolerances, in scene units (the fixed-point step is 2^-19 = 1.9e-6). */
 #define RENDER_RAY_EPSILON_VALUE 2e-3   /* secondary rays start this far from
                                            the surface so they do not hit it
                                            again through rounding */

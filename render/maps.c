@@ -22,7 +22,7 @@ static int32_t map_wrap(int32_t i, uint16_t size)
     return r < 0 ? r + size : r;
 }
 
-static num_t map_byte(uint8_t b) { return num_div(num_from_int(b), num_from_int(255)); }
+static num_t map_byte(uint8_t b) { return num_from_ratio(b, 255); }
 
 rgb_t map_colour(const scene_map_t *m, num_t u, num_t v)
 {
@@ -60,9 +60,8 @@ vec3_t map_bump(const scene_map_t *m, num_t u, num_t v, vec3_t n, vec3_t tangent
         x++;
     if (num_ge(wy, NUM_HALF))
         y++;
-    num_t scale = num_from_int(2 * 255);
-    num_t su = num_div(num_from_int(map_height(m, x + 1, y) - map_height(m, x - 1, y)), scale);
-    num_t sv = num_div(num_from_int(map_height(m, x, y + 1) - map_height(m, x, y - 1)), scale);
+    num_t su = num_from_ratio(map_height(m, x + 1, y) - map_height(m, x - 1, y), 2 * 255);
+    num_t sv = num_from_ratio(map_height(m, x, y + 1) - map_height(m, x, y - 1), 2 * 255);
     vec3_t b = vec3_cross(n, tangent);
     vec3_t tilt = vec3_add(vec3_scale(tangent, su), vec3_scale(b, sv));
     return vec3_normalize(vec3_sub(n, vec3_scale(tilt, m->bump_depth)));

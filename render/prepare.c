@@ -99,7 +99,7 @@ static xform_t prep_key_xform(const scene_t *s, const scene_cluster_t *c, uint32
             i++;
         a = &k[i];
         b = &k[i + 1];
-        w = num_div(num_from_int((int32_t)(f - a->frame)), num_from_int((int32_t)(b->frame - a->frame)));
+        w = num_from_ratio((int32_t)(f - a->frame), (int32_t)(b->frame - a->frame));
     }
     vec3_t t = vec3_add(a->translate, vec3_scale(vec3_sub(b->translate, a->translate), w));
     vec3_t sc = vec3_add(a->scale, vec3_scale(vec3_sub(b->scale, a->scale), w));
@@ -380,7 +380,7 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     f->cluster_count = s->cluster_count;
     f->prim_count = s->prim_count;
     f->screen_half_h = s->camera.tan_half_fov_y;
-    f->screen_half_w = num_div(num_mul_int(s->camera.tan_half_fov_y, s->width), num_from_int(s->height));
+    f->screen_half_w = num_mul(s->camera.tan_half_fov_y, num_from_ratio(s->width, s->height));
 
     /* scratch: per-cluster maps, released before returning */
     size_t mark = arena->used;

@@ -160,8 +160,8 @@ static int prim_box_interval(const render_prim_t *p, const ray_t *ray, num_t *tn
     vec3_t d = xform_dir(&p->to_local, ray->dir);
     if (vec3_is_sat(o) || vec3_is_sat(d))
         return 0;
-    *tnear = num_neg(NUM_C(32767));
-    *tfar = NUM_C(32767);
+    *tnear = num_neg(NUM_FAR);
+    *tfar = NUM_FAR;
     for (int axis = 0; axis < 3; axis++)
         if (!prim_slab(vec3_get(o, axis), vec3_get(d, axis), num_neg(NUM_ONE), NUM_ONE, tnear, tfar))
             return 0;

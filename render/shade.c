@@ -4,7 +4,7 @@
 #include "render/vec3.h"
 
 /* Parallel lights are "infinitely" far: shadow rays stop here instead. */
-#define SHADE_PARALLEL_DISTANCE NUM_C(4 * NUM_COORD_LIMIT)
+#define SHADE_PARALLEL_DISTANCE NUM_FAR
 
 void shade_src_trc(const scene_material_t *m, num_t cos_theta, num_t *src, num_t *trc)
 {

@@ -14,7 +14,7 @@
 #include "render/vec3.h"
 
 #define TRACE_EPSILON NUM_C(RENDER_RAY_EPSILON_VALUE)
-#define TRACE_FAR NUM_C(4 * NUM_COORD_LIMIT) /* beyond everything */
+#define TRACE_FAR NUM_FAR /* beyond everything */
 
 enum trace_kind { TRACE_PRIMARY, TRACE_REFLECTION, TRACE_REFRACTION };
 
@@ -374,8 +374,8 @@ static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const
     const render_frame_t *f = ctx->frame;
     /* through the pixel centre: screen coordinates in [-1, 1] scaled by
      * the half extents of the view at z = 1 */
-    num_t sx = num_sub(num_div(num_from_int((int32_t)(2 * x + 1)), num_from_int(f->width)), NUM_ONE);
-    num_t sy = num_sub(NUM_ONE, num_div(num_from_int((int32_t)(2 * y + 1)), num_from_int(f->height)));
+    num_t sx = num_sub(num_from_ratio((int32_t)(2 * x + 1), f->width), NUM_ONE);
+    num_t sy = num_sub(NUM_ONE, num_from_ratio((int32_t)(2 * y + 1), f->height));
     ray_t ray;
     ray.origin = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     ray.dir = vec3_normalize(vec3_make(num_mul(sx, f->screen_half_w), num_mul(sy, f->screen_half_h), NUM_ONE));

@@ -4,20 +4,22 @@
 # The loader of the compiled form is shared code (the board's DM runs it).
 SHARED_SRCS += render/scene_load.c
 
+# The text form: tokenizer, parser, transforms, compiler, image files.
+SCENE_TEXT_SRCS := host-tools/scene/scene_lex.c host-tools/scene/scene_parse.c \
+	host-tools/scene/scene_parse_looks.c host-tools/scene/scene_parse_objects.c \
+	host-tools/scene/scene_math.c host-tools/scene/scene_compile.c \
+	host-tools/scene/image_io.c
+
 # Sources of the scene subcommands of `links1` (compile, ref, export-pov,
 # compare); the links1 tool adds them to its own sources and SCENE_CMD_LIBS
 # to its libraries.
-SCENE_CMD_SRCS := host-tools/scene/scene_cmds.c host-tools/scene/scene_lex.c \
-	host-tools/scene/scene_parse.c host-tools/scene/scene_math.c \
-	host-tools/scene/scene_compile.c host-tools/scene/scene_pov.c \
-	host-tools/scene/image_io.c host-tools/scene/image_compare.c
+SCENE_CMD_SRCS := host-tools/scene/scene_cmds.c host-tools/scene/scene_pov.c \
+	host-tools/scene/image_compare.c $(SCENE_TEXT_SRCS)
 SCENE_CMD_LIBS := -lpng
 
 # The host reference renderer, one executable per arithmetic of the shared
 # renderer; `links1 ref --arith A` runs the one asked for.
-SCENE_REF_SRCS := host-tools/scene/ref_main.c host-tools/scene/scene_lex.c \
-	host-tools/scene/scene_parse.c host-tools/scene/scene_math.c \
-	host-tools/scene/scene_compile.c host-tools/scene/image_io.c
+SCENE_REF_SRCS := host-tools/scene/ref_main.c $(SCENE_TEXT_SRCS)
 HOST_TOOLS += links1-ref-double links1-ref-float links1-ref-fixed
 links1-ref-double_SRCS := $(SCENE_REF_SRCS)
 links1-ref-double_ARITH := double
@@ -31,14 +33,10 @@ links1-ref-fixed_LIBS := -lpng
 
 # Host tests of the format, the parser and the loader (ASan + UBSan).
 HOST_TESTS += test_scene_load test_scene_parse
-test_scene_load_SRCS := tests/host/test_scene_load.c host-tools/scene/scene_lex.c \
-	host-tools/scene/scene_parse.c host-tools/scene/scene_math.c \
-	host-tools/scene/scene_compile.c host-tools/scene/image_io.c
+test_scene_load_SRCS := tests/host/test_scene_load.c $(SCENE_TEXT_SRCS)
 test_scene_load_ARITH := double
 test_scene_load_LIBS := -lpng
-test_scene_parse_SRCS := tests/host/test_scene_parse.c host-tools/scene/scene_lex.c \
-	host-tools/scene/scene_parse.c host-tools/scene/scene_math.c \
-	host-tools/scene/scene_compile.c host-tools/scene/image_io.c
+test_scene_parse_SRCS := tests/host/test_scene_parse.c $(SCENE_TEXT_SRCS)
 test_scene_parse_ARITH := double
 test_scene_parse_LIBS := -lpng
 
@@ -47,4 +45,19 @@ links1_SRCS += $(SCENE_CMD_SRCS)
 links1_LIBS += $(SCENE_CMD_LIBS)
 
 # Image tests: POV-Ray agreement and arithmetic accuracy.
-BOARD_TESTS += tests/images/pov.sh
+BOARD_TESTS += tests/images/scenes.sh tests/images/pov.sh tests/images/accuracy.sh
+
+HOST_TESTS += test_scene_image
+test_scene_image_SRCS := tests/host/test_scene_image.c host-tools/scene/image_io.c \
+	host-tools/scene/image_compare.c
+test_scene_image_ARITH := double
+test_scene_image_LIBS := -lpng
+
+# The loader once more in the other two arithmetics it runs in on the board.
+HOST_TESTS += test_scene_load_float test_scene_load_fixed
+test_scene_load_float_SRCS := $(test_scene_load_SRCS)
+test_scene_load_float_ARITH := float
+test_scene_load_float_LIBS := -lpng
+test_scene_load_fixed_SRCS := $(test_scene_load_SRCS)
+test_scene_load_fixed_ARITH := fixed
+test_scene_load_fixed_LIBS := -lpng

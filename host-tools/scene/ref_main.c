@@ -2,7 +2,10 @@
  * arithmetic of the shared renderer (double, float, fixed).  `links1 ref`
  * runs the one asked for; it can also be run alone:
  *
- *   links1-ref-double SCENE(.scn|.l1s) -o OUT.png [--ppm] [--frame N]
+ *   links1-ref-double SCENE(.scn|.l1s) -o OUT.png [--ppm] [--frame N | --frames A:B]
+ *
+ * --frames writes one image per frame, the number before the extension
+ * (out-0000.png, out-0001.png, ...).
  *
  * A text scene is compiled in memory first, so the host goes through the
  * same compiled form and the same loader (render/scene_load.c) as the board.
@@ -22,7 +25,9 @@
 
 static int ref_usage(void)
 {
-    fprintf(stderr, "usage: links1-ref-%s SCENE(.scn|.l1s) -o OUT.png [--ppm] [--frame N]\n",
+    fprintf(stderr, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [--arith double|float|soft|"
+                    "fixed] [--ppm] [--frame N | --frames FIRST:LAST]\n"
+                    "  (this is the %s build)\n",
             NUM_NAME);
     return 2;
 }
@@ -64,101 +69,76 @@ static int ref_scene_bytes(const char *path, uint8_t **buf, size_t *len, char *e
     return 0;
 }
 
-int main(int argc, char **argv)
+/* The arena with the loaded scene in it: grown until the scene and one
+ * prepared frame fit.  *mark is where the frame's memory starts. */
+static int ref_load(const char *in, const uint8_t *bytes, size_t len, void **mem,
+                    arena_t *arena, size_t *mark, scene_t *scene)
 {
-    const char *in = NULL, *out = NULL;
-    int ppm = 0;
-    long frame = 0;
-    for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "-o") == 0 && i + 1 < argc) {
-            out = argv[++i];
-        } else if (strcmp(argv[i], "--ppm") == 0) {
-            ppm = 1;
-        } else if (strcmp(argv[i], "--frame") == 0 && i + 1 < argc) {
-            char *end;
-            frame = strtol(argv[++i], &end, 10);
-            if (*end || frame < 0) {
-                fprintf(stderr, "links1-ref: --frame wants a frame number, not '%s'\n",
-                        argv[i]);
-                return 2;
-            }
-        } else if (argv[i][0] != '-' && !in) {
-            in = argv[i];
-        } else {
-            fprintf(stderr, "links1-ref: unknown argument '%s'\n", argv[i]);
-            return ref_usage();
-        }
-    }
-    if (!in || !out)
-        return ref_usage();
-    if (!ppm && ref_ends_with(out, ".ppm"))
-        ppm = 1;
-
-    char err[SD_ERR_MAX];
-    uint8_t *bytes = NULL;
-    size_t len = 0;
-    if (ref_scene_bytes(in, &bytes, &len, err, sizeof err) != 0) {
-        fprintf(stderr, "links1 ref: %s\n", err);
-        return 1;
-    }
-    /* Grow the arena until the scene and its prepared frame fit. */
-    size_t size = REF_ARENA_START;
-    void *mem = NULL;
-    scene_t scene;
-    render_frame_t *frame_data = NULL;
-    for (;;) {
-        free(mem);
-        mem = malloc(size);
-        if (!mem) {
-            fprintf(stderr, "links1 ref: out of memory (%zu bytes)\n", size);
-            free(bytes);
-            return 1;
-        }
-        arena_t arena;
-        arena_init(&arena, mem, size);
+    for (size_t size = REF_ARENA_START; size <= REF_ARENA_MAX; size *= 2) {
+        free(*mem);
+        *mem = malloc(size);
+        if (!*mem)
+            break;
+        arena_init(arena, *mem, size);
         scene_load_error_t lerr;
-        scene_load_status_t ls = scene_load(bytes, len, &arena, &scene, &lerr);
-        render_status_t rs = RENDER_OK;
-        if (ls == SCENE_LOAD_OK) {
-            if ((uint32_t)frame >= scene.frame_count) {
-                fprintf(stderr, "links1 ref: %s: frame %ld, the scene has %u frames\n", in,
-                        frame, (unsigned)scene.frame_count);
-                free(mem);
-                free(bytes);
-                return 1;
-            }
-            rs = render_prepare(&scene, (uint32_t)frame, &arena, &frame_data);
-        }
-        if ((ls == SCENE_LOAD_ERR_ARENA || rs == RENDER_ERR_ARENA) && size < REF_ARENA_MAX) {
-            size *= 2;
+        scene_load_status_t ls = scene_load(bytes, len, arena, scene, &lerr);
+        if (ls == SCENE_LOAD_ERR_ARENA)
             continue;
-        }
         if (ls != SCENE_LOAD_OK) {
             fprintf(stderr, "links1 ref: %s: %s: %s\n", in, scene_load_status_name(ls),
                     lerr.message);
-            free(mem);
-            free(bytes);
-            return 1;
+            return -1;
         }
+        *mark = arena->used;
+        render_frame_t *frame;
+        render_status_t rs = render_prepare(scene, 0, arena, &frame);
+        if (rs == RENDER_ERR_ARENA)
+            continue;
         if (rs != RENDER_OK) {
             fprintf(stderr, "links1 ref: %s: %s\n", in, render_status_name(rs));
-            free(mem);
-            free(bytes);
-            return 1;
+            return -1;
         }
-        break;
+        arena_release_to(arena, *mark);
+        return 0;
     }
-    struct image img = {scene.width, scene.height, NULL};
+    fprintf(stderr, "links1 ref: %s: no arena up to %u bytes holds the scene\n", in,
+            REF_ARENA_MAX);
+    return -1;
+}
+
+/* out with the frame number before the extension: "a.png", 7 -> "a-0007.png" */
+static void ref_frame_path(const char *out, long frame, char *buf, size_t n)
+{
+    const char *dot = strrchr(out, '.');
+    const char *slash = strrchr(out, '/');
+    if (!dot || (slash && dot < slash))
+        dot = out + strlen(out);
+    snprintf(buf, n, "%.*s-%04ld%s", (int)(dot - out), out, frame, dot);
+}
+
+static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena,
+                            size_t mark, long frame, const char *out, int ppm)
+{
+    arena_release_to(arena, mark);
+    render_frame_t *frame_data;
+    render_status_t rs = render_prepare(scene, (uint32_t)frame, arena, &frame_data);
+    if (rs != RENDER_OK) {
+        fprintf(stderr, "links1 ref: %s frame %ld: %s\n", in, frame, render_status_name(rs));
+        return -1;
+    }
+    struct image img = {scene->width, scene->height, NULL};
     img.rgb = malloc((size_t)img.width * (size_t)img.height * 3);
     rgb8_t *row = malloc(sizeof *row * (size_t)img.width);
     if (!img.rgb || !row) {
         fprintf(stderr, "links1 ref: out of memory for the image\n");
-        return 1;
+        free(row);
+        image_free(&img);
+        return -1;
     }
     render_ctx_t ctx;
     render_ctx_init(&ctx, frame_data);
-    for (uint32_t y = 0; y < scene.height; y++) {
-        render_span(&ctx, y, 0, scene.width, row);
+    for (uint32_t y = 0; y < scene->height; y++) {
+        render_span(&ctx, y, 0, scene->width, row);
         for (int x = 0; x < img.width; x++) {
             uint8_t *px = img.rgb + 3 * ((size_t)y * (size_t)img.width + (size_t)x);
             px[0] = row[x].r;
@@ -166,6 +146,7 @@ int main(int argc, char **argv)
             px[2] = row[x].b;
         }
     }
+    char err[SD_ERR_MAX];
     int rc = ppm ? image_write_ppm(out, &img, err, sizeof err)
                  : image_write_png(out, &img, err, sizeof err);
     if (rc != 0)
@@ -183,6 +164,81 @@ int main(int argc, char **argv)
                 (unsigned)ctx.stats.precision_lost_pixels);
     free(row);
     image_free(&img);
+    return rc;
+}
+
+/* "N" or "A:B" (inclusive); 0 or -1 */
+static int ref_parse_frames(const char *arg, long *first, long *last)
+{
+    char *end;
+    *first = strtol(arg, &end, 10);
+    if (end == arg || *first < 0)
+        return -1;
+    *last = *first;
+    if (*end == ':') {
+        const char *b = end + 1;
+        *last = strtol(b, &end, 10);
+        if (end == b || *last < *first)
+            return -1;
+    }
+    return *end ? -1 : 0;
+}
+
+int main(int argc, char **argv)
+{
+    const char *in = NULL, *out = NULL;
+    int ppm = 0, many = 0;
+    long first = 0, last = 0;
+    for (int i = 1; i < argc; i++) {
+        if (strcmp(argv[i], "-o") == 0 && i + 1 < argc) {
+            out = argv[++i];
+        } else if (strcmp(argv[i], "--ppm") == 0) {
+            ppm = 1;
+        } else if ((strcmp(argv[i], "--frame") == 0 || strcmp(argv[i], "--frames") == 0) &&
+                   i + 1 < argc) {
+            many = argv[i][7] == 's';
+            if (ref_parse_frames(argv[++i], &first, &last) != 0 || (!many && first != last)) {
+                fprintf(stderr, "links1 ref: %s wants %s, not '%s'\n", argv[i - 1],
+                        many ? "FIRST:LAST" : "a frame number", argv[i]);
+                return 2;
+            }
+        } else if (argv[i][0] != '-' && !in) {
+            in = argv[i];
+        } else {
+            fprintf(stderr, "links1 ref: unknown argument '%s'\n", argv[i]);
+            return ref_usage();
+        }
+    }
+    if (!in || !out)
+        return ref_usage();
+    if (!ppm && ref_ends_with(out, ".ppm"))
+        ppm = 1;
+
+    char err[SD_ERR_MAX];
+    uint8_t *bytes = NULL;
+    size_t len = 0;
+    if (ref_scene_bytes(in, &bytes, &len, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 ref: %s\n", err);
+        return 1;
+    }
+    void *mem = NULL;
+    arena_t arena;
+    size_t mark;
+    scene_t scene;
+    int rc = ref_load(in, bytes, len, &mem, &arena, &mark, &scene);
+    if (rc == 0 && (uint32_t)last >= scene.frame_count) {
+        fprintf(stderr, "links1 ref: %s: frame %ld, the scene has %u frames (0..%u)\n", in,
+                last, (unsigned)scene.frame_count, (unsigned)scene.frame_count - 1);
+        rc = -1;
+    }
+    for (long f = first; rc == 0 && f <= last; f++) {
+        char path[4096];
+        if (many)
+            ref_frame_path(out, f, path, sizeof path);
+        else
+            snprintf(path, sizeof path, "%s", out);
+        rc = ref_render_frame(in, &scene, &arena, mark, f, path, ppm);
+    }
     free(mem);
     free(bytes);
     return rc != 0;

@@ -8,6 +8,13 @@
 #include "host-tools/scene/scene_desc.h"
 
 #define SD_PI 3.14159265358979323846
+/* sin and cos of whole right angles come out as 1e-16 or so instead of 0;
+ * they are snapped to 0 so "rotate 0 90 0" maps axes onto axes exactly in
+ * every arithmetic (a 1e-16 direction component is not a value the float
+ * and fixed builds can carry the way double does). */
+#define SD_SNAP 1e-12
+
+static double sd_snap(double v) { return fabs(v) < SD_SNAP ? 0 : v; }
 
 void sd_mat_mul(const double a[12], const double b[12], double out[12])
 {
@@ -36,8 +43,8 @@ void sd_euler_quat(const double deg[3], double q[4])
     for (int i = 0; i < 3; i++) {
         double h = deg[i] * SD_PI / 360.0; /* half angle, radians */
         memset(axis[i], 0, sizeof axis[i]);
-        axis[i][0] = cos(h);
-        axis[i][1 + i] = sin(h);
+        axis[i][0] = sd_snap(cos(h));
+        axis[i][1 + i] = sd_snap(sin(h));
     }
     double zy[4];
     sd_quat_mul(axis[2], axis[1], zy);
@@ -52,7 +59,8 @@ void sd_quat_matrix(const double q[4], double m[12])
         2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x), 0,
         2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y), 0,
     };
-    memcpy(m, r, sizeof r);
+    for (int i = 0; i < 12; i++)
+        m[i] = sd_snap(r[i]);
 }
 
 static void sd_key_trs(const struct sd_key *k, double t[3], double q[4], double s[3])

@@ -1,5 +1,6 @@
 /* scene_parse.c: the text scene format (docs/scene-format.md) into a
- * struct sd_scene.  Every statement is checked as it is read, so the error
+ * struct sd_scene: the shared helpers, the global statements, clusters and
+ * the entry points.  Every statement is checked as it is read, so the error
  * names the line and column of the offending token; on error the partly
  * built scene is freed and the caller gets an empty one.
  */
@@ -9,29 +10,11 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "host-tools/scene/image_io.h"
-#include "host-tools/scene/scene_desc.h"
-#include "host-tools/scene/scene_lex.h"
-
-#define PARSE_MAX_FILE (64u * 1024u * 1024u) /* text scenes larger are refused */
-#define PARSE_DEFAULT_WIDTH 320
-#define PARSE_DEFAULT_HEIGHT 240
-#define PARSE_DEFAULT_FOV 45.0
-#define PARSE_DEFAULT_DEPTH 5
-#define PARSE_DEFAULT_FALLOFF 5.0 /* degrees of a spotlight's soft edge */
-#define PARSE_MIN_TRIANGLE_AREA 1e-12
-
-struct parser {
-    struct lex lx;
-    struct sd_scene *s;
-    char dir[1024];         /* directory of the scene file, for map images */
-    int cap_materials, cap_clusters, cap_prims, cap_components, cap_keys;
-    int seen_camera, seen_resolution, seen_options, seen_animation;
-};
+#include "host-tools/scene/scene_parse.h"
 
 /* ------------------------------------------------------------- helpers */
 
-static void *parse_grow(struct parser *p, void *arr, int *cap, int n, size_t elem,
+void *parse_grow(struct parser *p, void *arr, int *cap, int n, size_t elem,
                         int limit, const char *what)
 {
     if (n >= limit)
@@ -46,19 +29,19 @@ static void *parse_grow(struct parser *p, void *arr, int *cap, int n, size_t ele
     return na;
 }
 
-static void parse_coord3(struct parser *p, const char *what, double v[3])
+void parse_coord3(struct parser *p, const char *what, double v[3])
 {
     for (int i = 0; i < 3; i++)
         v[i] = lex_number_in(&p->lx, what, -SCN_MAX_COORD, SCN_MAX_COORD);
 }
 
-static void parse_unit3(struct parser *p, const char *what, double v[3])
+void parse_unit3(struct parser *p, const char *what, double v[3])
 {
     for (int i = 0; i < 3; i++)
         v[i] = lex_number_in(&p->lx, what, 0, 1);
 }
 
-static int parse_on_off(struct parser *p, const char *what)
+int parse_on_off(struct parser *p, const char *what)
 {
     int v;
     if (lex_is_word(&p->lx, "on"))
@@ -71,21 +54,21 @@ static int parse_on_off(struct parser *p, const char *what)
     return v;
 }
 
-static void parse_open(struct parser *p, const char *stmt)
+void parse_open(struct parser *p, const char *stmt)
 {
     if (p->lx.kind != LEX_OPEN)
         lex_error(&p->lx, "expected '{' after %s, found '%s'", stmt, p->lx.tok);
     lex_next(&p->lx);
 }
 
-static void parse_unknown(struct parser *p, const char *block)
+void parse_unknown(struct parser *p, const char *block)
 {
     lex_error(&p->lx, "unknown %s property '%s'", block, p->lx.tok);
 }
 
-static int parse_len3_zero(const double v[3]) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
+int parse_len3_zero(const double v[3]) { return v[0] == 0 && v[1] == 0 && v[2] == 0; }
 
-static int parse_find_material(const struct sd_scene *s, const char *name)
+int parse_find_material(const struct sd_scene *s, const char *name)
 {
     for (int i = 0; i < s->n_materials; i++)
         if (strcmp(s->materials[i].name, name) == 0)
@@ -93,7 +76,7 @@ static int parse_find_material(const struct sd_scene *s, const char *name)
     return -1;
 }
 
-static int parse_find_map(const struct sd_scene *s, const char *name)
+int parse_find_map(const struct sd_scene *s, const char *name)
 {
     for (int i = 0; i < s->n_maps; i++)
         if (strcmp(s->maps[i].name, name) == 0)
@@ -101,7 +84,7 @@ static int parse_find_map(const struct sd_scene *s, const char *name)
     return -1;
 }
 
-static int parse_material_ref(struct parser *p)
+int parse_material_ref(struct parser *p)
 {
     if (p->lx.kind != LEX_WORD)
         lex_error(&p->lx, "expected a material name, found '%s'", p->lx.tok);
@@ -283,477 +266,6 @@ static void parse_light(struct parser *p)
         lex_error(&p->lx, "cone + falloff is %g degrees, more than %g", l.cone + l.falloff,
                   SCN_MAX_SPOT_ANGLE);
     s->lights[s->n_lights++] = l;
-    lex_next(&p->lx);
-}
-
-static void parse_map_image(struct parser *p, struct sd_map *m)
-{
-    if (p->lx.kind != LEX_STRING)
-        lex_error(&p->lx, "expected a file name in quotes, found '%s'", p->lx.tok);
-    char path[2048];
-    if (p->lx.tok[0] == '/')
-        snprintf(path, sizeof path, "%s", p->lx.tok);
-    else
-        snprintf(path, sizeof path, "%s%s", p->dir, p->lx.tok);
-    struct image img;
-    char ierr[SD_ERR_MAX];
-    if (image_read(path, &img, ierr, sizeof ierr) != 0)
-        lex_error(&p->lx, "map image: %s", ierr);
-    if (img.width > SCN_MAX_MAP_SIDE || img.height > SCN_MAX_MAP_SIDE) {
-        image_free(&img);
-        lex_error(&p->lx, "map image %s is %dx%d, more than %d texels a side", path,
-                  img.width, img.height, SCN_MAX_MAP_SIDE);
-    }
-    size_t n = (size_t)img.width * (size_t)img.height;
-    free(m->texels);
-    m->width = img.width;
-    m->height = img.height;
-    if (m->kind == SCN_MAP_COLOUR) {
-        m->texels = img.rgb; /* same layout: 3 bytes per texel, top row = v 0 */
-        return;
-    }
-    /* A bump map's height is the image's luminance (Rec. 601 weights). */
-    m->texels = malloc(n);
-    if (!m->texels) {
-        image_free(&img);
-        lex_error(&p->lx, "out of memory reading %s", path);
-    }
-    for (size_t i = 0; i < n; i++) {
-        const uint8_t *px = img.rgb + 3 * i;
-        m->texels[i] = (uint8_t)((299u * px[0] + 587u * px[1] + 114u * px[2] + 500u) / 1000u);
-    }
-    image_free(&img);
-}
-
-static void parse_map_texels(struct parser *p, struct sd_map *m, int bpt)
-{
-    if (m->width == 0)
-        lex_error(&p->lx, "give 'size W H' before 'texels'");
-    size_t n = (size_t)m->width * (size_t)m->height * (size_t)bpt;
-    free(m->texels);
-    m->texels = malloc(n);
-    if (!m->texels)
-        lex_error(&p->lx, "out of memory reading texels");
-    for (size_t i = 0; i < n; i++) {
-        if (p->lx.kind != LEX_NUMBER)
-            lex_error(&p->lx, "map has %zu texel values, %zu needed (width*height*%d)", i, n,
-                      bpt);
-        double v = lex_number_in(&p->lx, "texel value", 0, 1);
-        m->texels[i] = (uint8_t)lround(v * 255.0);
-    }
-    if (p->lx.kind == LEX_NUMBER)
-        lex_error(&p->lx, "more texel values than width*height*%d = %zu", bpt, n);
-}
-
-static void parse_map(struct parser *p)
-{
-    struct sd_scene *s = p->s;
-    if (s->n_maps >= SCN_MAX_MAPS)
-        lex_error(&p->lx, "more than %d maps", SCN_MAX_MAPS);
-    lex_next(&p->lx);
-    struct sd_map *m = &s->maps[s->n_maps];
-    memset(m, 0, sizeof *m);
-    if (p->lx.kind == LEX_WORD && parse_find_map(s, p->lx.tok) >= 0)
-        lex_error(&p->lx, "a second map named '%s'", p->lx.tok);
-    lex_word(&p->lx, "a map name", m->name, sizeof m->name);
-    s->n_maps++; /* counted now so sd_free releases its texels on error */
-    if (lex_is_word(&p->lx, "colour") || lex_is_word(&p->lx, "color"))
-        m->kind = SCN_MAP_COLOUR;
-    else if (lex_is_word(&p->lx, "bump"))
-        m->kind = SCN_MAP_BUMP;
-    else
-        lex_error(&p->lx, "map kind must be colour or bump, not '%s'", p->lx.tok);
-    int bpt = m->kind == SCN_MAP_COLOUR ? SCN_MAP_COLOUR_BYTES : SCN_MAP_BUMP_BYTES;
-    lex_next(&p->lx);
-    m->repeat_u = m->repeat_v = 1;
-    m->bump_depth = m->kind == SCN_MAP_BUMP ? 1 : 0;
-    parse_open(p, "map");
-    while (p->lx.kind != LEX_CLOSE) {
-        if (lex_is_word(&p->lx, "size")) {
-            lex_next(&p->lx);
-            if (m->texels)
-                lex_error(&p->lx, "size after the texels");
-            m->width = lex_int(&p->lx, "map width", 1, SCN_MAX_MAP_SIDE);
-            m->height = lex_int(&p->lx, "map height", 1, SCN_MAX_MAP_SIDE);
-        } else if (lex_is_word(&p->lx, "texels")) {
-            lex_next(&p->lx);
-            parse_map_texels(p, m, bpt);
-        } else if (lex_is_word(&p->lx, "image")) {
-            lex_next(&p->lx);
-            parse_map_image(p, m);
-            lex_next(&p->lx);
-        } else if (lex_is_word(&p->lx, "repeat")) {
-            lex_next(&p->lx);
-            m->repeat_u = lex_number_in(&p->lx, "repeat u", 1e-3, SCN_MAX_REPEAT);
-            m->repeat_v = lex_number_in(&p->lx, "repeat v", 1e-3, SCN_MAX_REPEAT);
-        } else if (lex_is_word(&p->lx, "depth") && m->kind == SCN_MAP_BUMP) {
-            lex_next(&p->lx);
-            m->bump_depth = lex_number_in(&p->lx, "bump depth", 0, SCN_MAX_COORD);
-        } else {
-            parse_unknown(p, m->kind == SCN_MAP_BUMP ? "bump map" : "colour map");
-        }
-    }
-    if (!m->texels)
-        lex_error(&p->lx, "map '%s' has no texels (give 'texels' or 'image')", m->name);
-    lex_next(&p->lx);
-}
-
-static void parse_material(struct parser *p)
-{
-    struct sd_scene *s = p->s;
-    lex_next(&p->lx);
-    s->materials = parse_grow(p, s->materials, &p->cap_materials, s->n_materials,
-                              sizeof *s->materials, SCN_MAX_MATERIALS, "materials");
-    struct sd_material m;
-    memset(&m, 0, sizeof m);
-    if (p->lx.kind == LEX_WORD && parse_find_material(s, p->lx.tok) >= 0)
-        lex_error(&p->lx, "a second material named '%s'", p->lx.tok);
-    lex_word(&p->lx, "a material name", m.name, sizeof m.name);
-    m.colour[0] = m.colour[1] = m.colour[2] = 1;
-    m.dic = 0.1;
-    m.drc = 0.9;
-    m.ior = 1;
-    m.colour_map = m.bump_map = -1;
-    parse_open(p, "material");
-    while (p->lx.kind != LEX_CLOSE) {
-        if (lex_is_word(&p->lx, "colour") || lex_is_word(&p->lx, "color")) {
-            lex_next(&p->lx);
-            parse_unit3(p, "colour", m.colour);
-        } else if (lex_is_word(&p->lx, "dic")) {
-            lex_next(&p->lx);
-            m.dic = lex_number_in(&p->lx, "dic", 0, 1);
-        } else if (lex_is_word(&p->lx, "drc")) {
-            lex_next(&p->lx);
-            m.drc = lex_number_in(&p->lx, "drc", 0, 1);
-        } else if (lex_is_word(&p->lx, "src")) {
-            lex_next(&p->lx);
-            m.src = lex_number_in(&p->lx, "src", 0, 1);
-        } else if (lex_is_word(&p->lx, "trc")) {
-            lex_next(&p->lx);
-            m.trc = lex_number_in(&p->lx, "trc", 0, 1);
-        } else if (lex_is_word(&p->lx, "fresnel")) {
-            lex_next(&p->lx);
-            m.fresnel = lex_number_in(&p->lx, "fresnel", 0, 1);
-        } else if (lex_is_word(&p->lx, "constant")) {
-            lex_next(&p->lx);
-            m.fresnel = 0;
-        } else if (lex_is_word(&p->lx, "phong")) {
-            lex_next(&p->lx);
-            m.phong = lex_int(&p->lx, "phong", 0, SCN_MAX_PHONG);
-        } else if (lex_is_word(&p->lx, "ior")) {
-            lex_next(&p->lx);
-            m.ior = lex_number_in(&p->lx, "ior", 1, SCN_MAX_IOR);
-        } else if (lex_is_word(&p->lx, "colour_map") || lex_is_word(&p->lx, "color_map") ||
-                   lex_is_word(&p->lx, "bump_map")) {
-            int bump = lex_is_word(&p->lx, "bump_map");
-            lex_next(&p->lx);
-            int i = p->lx.kind == LEX_WORD ? parse_find_map(s, p->lx.tok) : -1;
-            if (i < 0)
-                lex_error(&p->lx, "no map named '%s' (define it before use)", p->lx.tok);
-            if (s->maps[i].kind != (bump ? SCN_MAP_BUMP : SCN_MAP_COLOUR))
-                lex_error(&p->lx, "map '%s' is not a %s map", p->lx.tok,
-                          bump ? "bump" : "colour");
-            *(bump ? &m.bump_map : &m.colour_map) = i;
-            lex_next(&p->lx);
-        } else {
-            parse_unknown(p, "material");
-        }
-    }
-    if (m.src + m.trc > 1 + 1e-9)
-        lex_error(&p->lx, "material '%s': src + trc = %g is more than 1", m.name,
-                  m.src + m.trc);
-    s->materials[s->n_materials++] = m;
-    lex_next(&p->lx);
-}
-
-/* ----------------------------------------------------------- transforms */
-
-static void parse_apply(double m[12], const double t[12])
-{
-    double r[12];
-    sd_mat_mul(t, m, r);
-    memcpy(m, r, sizeof r);
-}
-
-/* translate / rotate / scale / matrix statements, applied in order. */
-static int parse_transform(struct parser *p, double m[12])
-{
-    double t[12] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
-    if (lex_is_word(&p->lx, "translate")) {
-        lex_next(&p->lx);
-        double v[3];
-        parse_coord3(p, "translate", v);
-        t[3] = v[0], t[7] = v[1], t[11] = v[2];
-    } else if (lex_is_word(&p->lx, "rotate")) {
-        lex_next(&p->lx);
-        double deg[3], q[4];
-        for (int i = 0; i < 3; i++)
-            deg[i] = lex_number_in(&p->lx, "rotate (degrees)", -3600, 3600);
-        sd_euler_quat(deg, q);
-        sd_quat_matrix(q, t);
-    } else if (lex_is_word(&p->lx, "scale")) {
-        lex_next(&p->lx);
-        double v[3];
-        v[0] = lex_number_in(&p->lx, "scale", -SCN_MAX_COORD, SCN_MAX_COORD);
-        if (p->lx.kind == LEX_NUMBER) {
-            v[1] = lex_number_in(&p->lx, "scale", -SCN_MAX_COORD, SCN_MAX_COORD);
-            v[2] = lex_number_in(&p->lx, "scale", -SCN_MAX_COORD, SCN_MAX_COORD);
-        } else {
-            v[1] = v[2] = v[0];
-        }
-        if (v[0] == 0 || v[1] == 0 || v[2] == 0)
-            lex_error(&p->lx, "a scale factor is zero");
-        t[0] = v[0], t[5] = v[1], t[10] = v[2];
-    } else if (lex_is_word(&p->lx, "matrix")) {
-        lex_next(&p->lx);
-        for (int i = 0; i < 12; i++)
-            t[i] = lex_number_in(&p->lx, "matrix entry", -SCN_MAX_COORD, SCN_MAX_COORD);
-        double det = t[0] * (t[5] * t[10] - t[6] * t[9]) - t[1] * (t[4] * t[10] - t[6] * t[8]) +
-                     t[2] * (t[4] * t[9] - t[5] * t[8]);
-        if (fabs(det) < 1e-12)
-            lex_error(&p->lx, "matrix is not invertible (determinant %g)", det);
-    } else {
-        return 0;
-    }
-    parse_apply(m, t);
-    for (int i = 0; i < 12; i++)
-        if (fabs(m[i]) > SCN_MAX_COORD)
-            lex_error(&p->lx, "the combined transform has an entry beyond %g",
-                      (double)SCN_MAX_COORD);
-    return 1;
-}
-
-static void parse_key(struct parser *p, int c)
-{
-    struct sd_scene *s = p->s;
-    struct sd_cluster *cl = &s->clusters[c];
-    lex_next(&p->lx);
-    struct sd_key k;
-    memset(&k, 0, sizeof k);
-    k.scale[0] = k.scale[1] = k.scale[2] = 1;
-    if (cl->key_count > 0 && p->lx.kind == LEX_NUMBER &&
-        p->lx.num <= s->keys[s->n_keys - 1].frame)
-        lex_error(&p->lx, "key frames of a cluster must rise (frame %s after %d)", p->lx.tok,
-                  s->keys[s->n_keys - 1].frame);
-    k.frame = lex_int(&p->lx, "key frame", 0, SCN_MAX_FRAMES - 1);
-    if (cl->key_count > 0 && cl->key_first + cl->key_count != s->n_keys)
-        lex_error(&p->lx, "keys of a cluster must come before its child clusters");
-    if (cl->key_count >= SCN_MAX_CLUSTER_KEYS)
-        lex_error(&p->lx, "more than %d keys in one cluster", SCN_MAX_CLUSTER_KEYS);
-    parse_open(p, "key");
-    while (p->lx.kind != LEX_CLOSE) {
-        if (lex_is_word(&p->lx, "translate")) {
-            lex_next(&p->lx);
-            parse_coord3(p, "translate", k.translate);
-        } else if (lex_is_word(&p->lx, "rotate")) {
-            lex_next(&p->lx);
-            for (int i = 0; i < 3; i++)
-                k.rotate[i] = lex_number_in(&p->lx, "rotate (degrees)", -3600, 3600);
-        } else if (lex_is_word(&p->lx, "scale")) {
-            lex_next(&p->lx);
-            k.scale[0] = lex_number_in(&p->lx, "scale", -SCN_MAX_COORD, SCN_MAX_COORD);
-            if (p->lx.kind == LEX_NUMBER) {
-                k.scale[1] = lex_number_in(&p->lx, "scale", -SCN_MAX_COORD, SCN_MAX_COORD);
-                k.scale[2] = lex_number_in(&p->lx, "scale", -SCN_MAX_COORD, SCN_MAX_COORD);
-            } else {
-                k.scale[1] = k.scale[2] = k.scale[0];
-            }
-            if (k.scale[0] == 0 || k.scale[1] == 0 || k.scale[2] == 0)
-                lex_error(&p->lx, "a scale factor is zero");
-        } else {
-            parse_unknown(p, "key");
-        }
-    }
-    s->keys = parse_grow(p, s->keys, &p->cap_keys, s->n_keys, sizeof *s->keys, SCN_MAX_KEYS,
-                         "keys");
-    cl = &s->clusters[c];
-    if (cl->key_count == 0)
-        cl->key_first = s->n_keys;
-    s->keys[s->n_keys++] = k;
-    cl->key_count++;
-    lex_next(&p->lx);
-}
-
-/* ----------------------------------------------------------- primitives */
-
-/* The 'material NAME' every primitive block may hold. */
-static int parse_prim_material(struct parser *p, struct sd_prim *pr)
-{
-    if (lex_is_word(&p->lx, "material")) {
-        lex_next(&p->lx);
-        pr->material = parse_material_ref(p);
-        return 1;
-    }
-    return 0;
-}
-
-static void parse_triangle(struct parser *p, struct sd_prim *pr)
-{
-    int nv = 0, nuv = 0;
-    double *v = pr->v;
-    /* default map coordinates: (0,0), (1,0), (0,1) */
-    v[10] = 1;
-    v[14] = 1;
-    while (p->lx.kind != LEX_CLOSE) {
-        if (parse_prim_material(p, pr))
-            continue;
-        if (lex_is_word(&p->lx, "v")) {
-            if (nv == 3)
-                lex_error(&p->lx, "a triangle has three vertices");
-            lex_next(&p->lx);
-            parse_coord3(p, "vertex", v + 3 * nv++);
-        } else if (lex_is_word(&p->lx, "uv")) {
-            if (nuv == 3)
-                lex_error(&p->lx, "a triangle has three uv pairs");
-            lex_next(&p->lx);
-            v[9 + nuv] = lex_number_in(&p->lx, "u", -SCN_MAX_COORD, SCN_MAX_COORD);
-            v[12 + nuv] = lex_number_in(&p->lx, "v", -SCN_MAX_COORD, SCN_MAX_COORD);
-            nuv++;
-        } else {
-            parse_unknown(p, "triangle");
-        }
-    }
-    if (nv != 3)
-        lex_error(&p->lx, "triangle has %d vertices, needs 3", nv);
-    if (nuv != 0 && nuv != 3)
-        lex_error(&p->lx, "triangle has %d uv pairs, needs 0 or 3", nuv);
-    double e1[3], e2[3], c[3];
-    for (int i = 0; i < 3; i++)
-        e1[i] = v[3 + i] - v[i], e2[i] = v[6 + i] - v[i];
-    c[0] = e1[1] * e2[2] - e1[2] * e2[1];
-    c[1] = e1[2] * e2[0] - e1[0] * e2[2];
-    c[2] = e1[0] * e2[1] - e1[1] * e2[0];
-    if (sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) < PARSE_MIN_TRIANGLE_AREA)
-        lex_error(&p->lx, "degenerate triangle (its vertices are on one line)");
-}
-
-static void parse_ellipsoid(struct parser *p, struct sd_prim *pr, int sphere)
-{
-    int have_r = 0;
-    while (p->lx.kind != LEX_CLOSE) {
-        if (parse_prim_material(p, pr))
-            continue;
-        if (lex_is_word(&p->lx, "centre") || lex_is_word(&p->lx, "center")) {
-            lex_next(&p->lx);
-            parse_coord3(p, "centre", pr->v);
-        } else if (sphere && lex_is_word(&p->lx, "radius")) {
-            lex_next(&p->lx);
-            pr->v[3] = pr->v[4] = pr->v[5] =
-                lex_number_in(&p->lx, "radius", 1e-6, SCN_MAX_COORD);
-            have_r = 1;
-        } else if (!sphere && lex_is_word(&p->lx, "radii")) {
-            lex_next(&p->lx);
-            for (int i = 0; i < 3; i++)
-                pr->v[3 + i] = lex_number_in(&p->lx, "radius", 1e-6, SCN_MAX_COORD);
-            have_r = 1;
-        } else {
-            parse_unknown(p, sphere ? "sphere" : "ellipsoid");
-        }
-    }
-    if (!have_r)
-        lex_error(&p->lx, "%s needs %s", sphere ? "sphere" : "ellipsoid",
-                  sphere ? "a radius" : "radii");
-}
-
-static void parse_box(struct parser *p, struct sd_prim *pr)
-{
-    double lo[3], hi[3];
-    int have = 0;
-    while (p->lx.kind != LEX_CLOSE) {
-        if (parse_prim_material(p, pr))
-            continue;
-        if (lex_is_word(&p->lx, "min")) {
-            lex_next(&p->lx);
-            parse_coord3(p, "min", lo);
-            have |= 1;
-        } else if (lex_is_word(&p->lx, "max")) {
-            lex_next(&p->lx);
-            parse_coord3(p, "max", hi);
-            have |= 2;
-        } else {
-            parse_unknown(p, "box");
-        }
-    }
-    if (have != 3)
-        lex_error(&p->lx, "box needs min and max corners");
-    for (int i = 0; i < 3; i++) {
-        if (!(hi[i] > lo[i]))
-            lex_error(&p->lx, "box max must exceed min on every axis (axis %c)", "xyz"[i]);
-        pr->v[i] = (lo[i] + hi[i]) / 2;
-        pr->v[3 + i] = (hi[i] - lo[i]) / 2;
-    }
-}
-
-static void parse_density(struct parser *p, struct sd_prim *pr)
-{
-    struct sd_scene *s = p->s;
-    int have_t = 0;
-    pr->first = s->n_components;
-    while (p->lx.kind != LEX_CLOSE) {
-        if (parse_prim_material(p, pr))
-            continue;
-        if (lex_is_word(&p->lx, "threshold")) {
-            lex_next(&p->lx);
-            pr->v[0] = lex_number_in(&p->lx, "threshold", 1e-6, SCN_MAX_COORD);
-            have_t = 1;
-        } else if (lex_is_word(&p->lx, "component")) {
-            lex_next(&p->lx);
-            if (pr->count >= SCN_MAX_DENSITY_COMPONENTS)
-                lex_error(&p->lx, "more than %d components", SCN_MAX_DENSITY_COMPONENTS);
-            struct sd_component c;
-            parse_coord3(p, "component centre", c.centre);
-            c.radius = lex_number_in(&p->lx, "component radius", 1e-6, SCN_MAX_COORD);
-            if (p->lx.kind == LEX_NUMBER && p->lx.num == 0)
-                lex_error(&p->lx, "component weight is zero");
-            c.weight = lex_number_in(&p->lx, "component weight", -SCN_MAX_COORD, SCN_MAX_COORD);
-            s->components = parse_grow(p, s->components, &p->cap_components, s->n_components,
-                                       sizeof *s->components, SCN_MAX_COMPONENTS,
-                                       "density components");
-            s->components[s->n_components++] = c;
-            pr->count++;
-        } else {
-            parse_unknown(p, "density");
-        }
-    }
-    if (!have_t)
-        lex_error(&p->lx, "density needs a threshold");
-    if (pr->count == 0)
-        lex_error(&p->lx, "density needs at least one component");
-}
-
-static void parse_prim(struct parser *p, int cluster, int material)
-{
-    struct sd_scene *s = p->s;
-    struct sd_prim pr;
-    memset(&pr, 0, sizeof pr);
-    pr.cluster = cluster;
-    pr.material = material;
-    char kind[LEX_TOKEN_MAX];
-    strcpy(kind, p->lx.tok);
-    int line = p->lx.tok_line, col = p->lx.tok_col;
-    lex_next(&p->lx);
-    parse_open(p, kind);
-    if (strcmp(kind, "triangle") == 0) {
-        pr.kind = SCN_PRIM_TRIANGLE;
-        parse_triangle(p, &pr);
-    } else if (strcmp(kind, "ellipsoid") == 0 || strcmp(kind, "sphere") == 0) {
-        pr.kind = SCN_PRIM_ELLIPSOID;
-        parse_ellipsoid(p, &pr, kind[0] == 's');
-    } else if (strcmp(kind, "box") == 0) {
-        pr.kind = SCN_PRIM_BOX;
-        parse_box(p, &pr);
-    } else {
-        pr.kind = SCN_PRIM_DENSITY;
-        parse_density(p, &pr);
-    }
-    if (pr.material < 0) {
-        p->lx.tok_line = line, p->lx.tok_col = col;
-        lex_error(&p->lx, "%s has no material ('material NAME' inside, or 'use NAME' "
-                          "before it)", kind);
-    }
-    s->prims = parse_grow(p, s->prims, &p->cap_prims, s->n_prims, sizeof *s->prims,
-                          SCN_MAX_PRIMS, "primitives");
-    s->prims[s->n_prims++] = pr;
     lex_next(&p->lx);
 }
 

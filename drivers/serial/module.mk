@@ -1,0 +1,7 @@
+# drivers/serial/: PL011 host UART, host-link transmit, inter-unit lines.
+FW_SRCS += drivers/serial/uart.c drivers/serial/hostlink_tx.c \
+	drivers/serial/line.c drivers/serial/linemsg.c
+
+HOST_TESTS += test_linemsg
+test_linemsg_SRCS := tests/host/test_linemsg.c drivers/serial/linemsg.c
+test_linemsg_ARITH := double

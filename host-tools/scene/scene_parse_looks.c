@@ -1,0 +1,190 @@
+/* scene_parse_looks.c: the map and material statements of the text scene
+ * format (docs/scene-format.md). */
+#include <errno.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "host-tools/scene/image_io.h"
+#include "host-tools/scene/scene_parse.h"
+
+static void parse_map_image(struct parser *p, struct sd_map *m)
+{
+    if (p->lx.kind != LEX_STRING)
+        lex_error(&p->lx, "expected a file name in quotes, found '%s'", p->lx.tok);
+    char path[2048];
+    if (p->lx.tok[0] == '/')
+        snprintf(path, sizeof path, "%s", p->lx.tok);
+    else
+        snprintf(path, sizeof path, "%s%s", p->dir, p->lx.tok);
+    struct image img;
+    char ierr[SD_ERR_MAX];
+    if (image_read(path, &img, ierr, sizeof ierr) != 0)
+        lex_error(&p->lx, "map image: %s", ierr);
+    if (img.width > SCN_MAX_MAP_SIDE || img.height > SCN_MAX_MAP_SIDE) {
+        image_free(&img);
+        lex_error(&p->lx, "map image %s is %dx%d, more than %d texels a side", path,
+                  img.width, img.height, SCN_MAX_MAP_SIDE);
+    }
+    size_t n = (size_t)img.width * (size_t)img.height;
+    free(m->texels);
+    m->width = img.width;
+    m->height = img.height;
+    if (m->kind == SCN_MAP_COLOUR) {
+        m->texels = img.rgb; /* same layout: 3 bytes per texel, top row = v 0 */
+        return;
+    }
+    /* A bump map's height is the image's luminance (Rec. 601 weights). */
+    m->texels = malloc(n);
+    if (!m->texels) {
+        image_free(&img);
+        lex_error(&p->lx, "out of memory reading %s", path);
+    }
+    for (size_t i = 0; i < n; i++) {
+        const uint8_t *px = img.rgb + 3 * i;
+        m->texels[i] = (uint8_t)((299u * px[0] + 587u * px[1] + 114u * px[2] + 500u) / 1000u);
+    }
+    image_free(&img);
+}
+
+static void parse_map_texels(struct parser *p, struct sd_map *m, int bpt)
+{
+    if (m->width == 0)
+        lex_error(&p->lx, "give 'size W H' before 'texels'");
+    size_t n = (size_t)m->width * (size_t)m->height * (size_t)bpt;
+    free(m->texels);
+    m->texels = malloc(n);
+    if (!m->texels)
+        lex_error(&p->lx, "out of memory reading texels");
+    for (size_t i = 0; i < n; i++) {
+        if (p->lx.kind != LEX_NUMBER)
+            lex_error(&p->lx, "map has %zu texel values, %zu needed (width*height*%d)", i, n,
+                      bpt);
+        double v = lex_number_in(&p->lx, "texel value", 0, 1);
+        m->texels[i] = (uint8_t)lround(v * 255.0);
+    }
+    if (p->lx.kind == LEX_NUMBER)
+        lex_error(&p->lx, "more texel values than width*height*%d = %zu", bpt, n);
+}
+
+void parse_map(struct parser *p)
+{
+    struct sd_scene *s = p->s;
+    if (s->n_maps >= SCN_MAX_MAPS)
+        lex_error(&p->lx, "more than %d maps", SCN_MAX_MAPS);
+    lex_next(&p->lx);
+    struct sd_map *m = &s->maps[s->n_maps];
+    memset(m, 0, sizeof *m);
+    if (p->lx.kind == LEX_WORD && parse_find_map(s, p->lx.tok) >= 0)
+        lex_error(&p->lx, "a second map named '%s'", p->lx.tok);
+    lex_word(&p->lx, "a map name", m->name, sizeof m->name);
+    s->n_maps++; /* counted now so sd_free releases its texels on error */
+    if (lex_is_word(&p->lx, "colour") || lex_is_word(&p->lx, "color"))
+        m->kind = SCN_MAP_COLOUR;
+    else if (lex_is_word(&p->lx, "bump"))
+        m->kind = SCN_MAP_BUMP;
+    else
+        lex_error(&p->lx, "map kind must be colour or bump, not '%s'", p->lx.tok);
+    int bpt = m->kind == SCN_MAP_COLOUR ? SCN_MAP_COLOUR_BYTES : SCN_MAP_BUMP_BYTES;
+    lex_next(&p->lx);
+    m->repeat_u = m->repeat_v = 1;
+    m->bump_depth = m->kind == SCN_MAP_BUMP ? 1 : 0;
+    parse_open(p, "map");
+    while (p->lx.kind != LEX_CLOSE) {
+        if (lex_is_word(&p->lx, "size")) {
+            lex_next(&p->lx);
+            if (m->texels)
+                lex_error(&p->lx, "size after the texels");
+            m->width = lex_int(&p->lx, "map width", 1, SCN_MAX_MAP_SIDE);
+            m->height = lex_int(&p->lx, "map height", 1, SCN_MAX_MAP_SIDE);
+        } else if (lex_is_word(&p->lx, "texels")) {
+            lex_next(&p->lx);
+            parse_map_texels(p, m, bpt);
+        } else if (lex_is_word(&p->lx, "image")) {
+            lex_next(&p->lx);
+            parse_map_image(p, m);
+            lex_next(&p->lx);
+        } else if (lex_is_word(&p->lx, "repeat")) {
+            lex_next(&p->lx);
+            m->repeat_u = lex_number_in(&p->lx, "repeat u", 1e-3, SCN_MAX_REPEAT);
+            m->repeat_v = lex_number_in(&p->lx, "repeat v", 1e-3, SCN_MAX_REPEAT);
+        } else if (lex_is_word(&p->lx, "depth") && m->kind == SCN_MAP_BUMP) {
+            lex_next(&p->lx);
+            m->bump_depth = lex_number_in(&p->lx, "bump depth", 0, SCN_MAX_COORD);
+        } else {
+            parse_unknown(p, m->kind == SCN_MAP_BUMP ? "bump map" : "colour map");
+        }
+    }
+    if (!m->texels)
+        lex_error(&p->lx, "map '%s' has no texels (give 'texels' or 'image')", m->name);
+    lex_next(&p->lx);
+}
+
+void parse_material(struct parser *p)
+{
+    struct sd_scene *s = p->s;
+    lex_next(&p->lx);
+    s->materials = parse_grow(p, s->materials, &p->cap_materials, s->n_materials,
+                              sizeof *s->materials, SCN_MAX_MATERIALS, "materials");
+    struct sd_material m;
+    memset(&m, 0, sizeof m);
+    if (p->lx.kind == LEX_WORD && parse_find_material(s, p->lx.tok) >= 0)
+        lex_error(&p->lx, "a second material named '%s'", p->lx.tok);
+    lex_word(&p->lx, "a material name", m.name, sizeof m.name);
+    m.colour[0] = m.colour[1] = m.colour[2] = 1;
+    m.dic = 0.1;
+    m.drc = 0.9;
+    m.ior = 1;
+    m.colour_map = m.bump_map = -1;
+    parse_open(p, "material");
+    while (p->lx.kind != LEX_CLOSE) {
+        if (lex_is_word(&p->lx, "colour") || lex_is_word(&p->lx, "color")) {
+            lex_next(&p->lx);
+            parse_unit3(p, "colour", m.colour);
+        } else if (lex_is_word(&p->lx, "dic")) {
+            lex_next(&p->lx);
+            m.dic = lex_number_in(&p->lx, "dic", 0, 1);
+        } else if (lex_is_word(&p->lx, "drc")) {
+            lex_next(&p->lx);
+            m.drc = lex_number_in(&p->lx, "drc", 0, 1);
+        } else if (lex_is_word(&p->lx, "src")) {
+            lex_next(&p->lx);
+            m.src = lex_number_in(&p->lx, "src", 0, 1);
+        } else if (lex_is_word(&p->lx, "trc")) {
+            lex_next(&p->lx);
+            m.trc = lex_number_in(&p->lx, "trc", 0, 1);
+        } else if (lex_is_word(&p->lx, "fresnel")) {
+            lex_next(&p->lx);
+            m.fresnel = lex_number_in(&p->lx, "fresnel", 0, 1);
+        } else if (lex_is_word(&p->lx, "constant")) {
+            lex_next(&p->lx);
+            m.fresnel = 0;
+        } else if (lex_is_word(&p->lx, "phong")) {
+            lex_next(&p->lx);
+            m.phong = lex_int(&p->lx, "phong", 0, SCN_MAX_PHONG);
+        } else if (lex_is_word(&p->lx, "ior")) {
+            lex_next(&p->lx);
+            m.ior = lex_number_in(&p->lx, "ior", 1, SCN_MAX_IOR);
+        } else if (lex_is_word(&p->lx, "colour_map") || lex_is_word(&p->lx, "color_map") ||
+                   lex_is_word(&p->lx, "bump_map")) {
+            int bump = lex_is_word(&p->lx, "bump_map");
+            lex_next(&p->lx);
+            int i = p->lx.kind == LEX_WORD ? parse_find_map(s, p->lx.tok) : -1;
+            if (i < 0)
+                lex_error(&p->lx, "no map named '%s' (define it before use)", p->lx.tok);
+            if (s->maps[i].kind != (bump ? SCN_MAP_BUMP : SCN_MAP_COLOUR))
+                lex_error(&p->lx, "map '%s' is not a %s map", p->lx.tok,
+                          bump ? "bump" : "colour");
+            *(bump ? &m.bump_map : &m.colour_map) = i;
+            lex_next(&p->lx);
+        } else {
+            parse_unknown(p, "material");
+        }
+    }
+    if (m.src + m.trc > 1 + 1e-9)
+        lex_error(&p->lx, "material '%s': src + trc = %g is more than 1", m.name,
+                  m.src + m.trc);
+    s->materials[s->n_materials++] = m;
+    lex_next(&p->lx);
+}

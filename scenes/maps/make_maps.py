@@ -1,0 +1,48 @@
+#!/usr/bin/env python3
+"""make_maps.py: writes the image maps the scenes use (8-bit RGB PNG, no
+gamma chunk: the values are linear, as the renderer reads them).
+Run from this directory: python3 make_maps.py"""
+import math
+import struct
+import zlib
+
+
+def write_png(path, width, height, pixel):
+    rows = b""
+    for y in range(height):
+        rows += b"\x00" + b"".join(bytes(pixel(x, y)) for x in range(width))
+
+    def chunk(kind, data):
+        return (struct.pack(">I", len(data)) + kind + data +
+                struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff))
+
+    with open(path, "wb") as f:
+        f.write(b"\x89PNG\r\n\x1a\n")
+        f.write(chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)))
+        f.write(chunk(b"IDAT", zlib.compress(rows, 9)))
+        f.write(chunk(b"IEND", b""))
+
+
+def checker(x, y):
+    # 8x8 squares of 8 texels: edges stay sharp under bilinear filtering
+    light = ((x // 8) + (y // 8)) % 2 == 0
+    return (230, 220, 190) if light else (120, 30, 30)
+
+
+def dimples(x, y):
+    # a grid of round dimples, one per 16 texels, as a height field
+    h = 0.5 + 0.5 * math.cos(2 * math.pi * x / 16) * math.cos(2 * math.pi * y / 16)
+    g = int(round(255 * h))
+    return (g, g, g)
+
+
+def bricks(x, y):
+    row = y // 8
+    shift = 8 if row % 2 else 0
+    mortar = y % 8 == 0 or (x + shift) % 16 == 0
+    return (200, 200, 190) if mortar else (150 + (row * 37) % 40, 60, 40)
+
+
+write_png("checker.png", 64, 64, checker)
+write_png("dimples.png", 64, 64, dimples)
+write_png("bricks.png", 64, 64, bricks)

@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# bench_boot.sh: guest instructions each core executes for one idle boot
+# (report-in, then shutdown), counted exactly by the TCG plugin
+# build/insn-count.so.  Deterministic work, unlike wall-clock time on shared
+# host cores.
+set -eu
+cd "$(dirname "$0")/../.."
+SMP=${SMP:-10}
+echo "bench_boot: links1 boot --smp $SMP --count-insns"
+build/links1 boot --smp "$SMP" --quiet --count-insns

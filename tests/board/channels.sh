@@ -1,0 +1,9 @@
+#!/usr/bin/env bash
+# The LINKS-1 channels on a 10-core board, in one boot: status, ping-pong over
+# every serial line, IMSU swap and broadcast, 64 MiB through the inter-unit
+# lines, 8 MiB each way through the host link (no byte lost, duplicated or
+# reordered).
+. "$(dirname "$0")/lib.sh"
+board_ready channels_status channels_ping channels_imsu channels_stress \
+    channels_link-sink channels_link-source || exit 0
+board_selftest channels --smp 10 status ping imsu stress link-sink link-source

@@ -1,0 +1,417 @@
+/* test_render.c: whole pixels through render_prepare and render_pixel:
+ * hand-computed colours, shadows (opaque and tinted), mirror, refraction
+ * and refractionless transmission, keyframes, limits, the precision flag,
+ * and the speed-ups (hierarchy, boxes, screen clipping) giving the same
+ * image bit for bit. */
+#include <stdlib.h>
+
+#include "render/prim.h"
+#include "tests/check.h"
+#include "tests/host/test_render_scene.h"
+
+#define N(x) num_from_double(x)
+
+static test_scene_t ts;
+
+static scene_material_t mat(double r, double g, double b, double dic, double drc)
+{
+    scene_material_t m;
+    memset(&m, 0, sizeof m);
+    m.colour = ts_rgb(r, g, b);
+    m.dic = N(dic);
+    m.drc = N(drc);
+    m.ior = NUM_ONE;
+    m.colour_map = m.bump_map = SCENE_NONE;
+    return m;
+}
+
+/* A wall facing the camera at z = 10, two triangles wide enough to fill
+ * the view (camera at the origin, tan(fov/2) = 0.5). */
+static void wall(uint16_t cluster, uint16_t material, double z)
+{
+    ts_triangle(&ts, cluster, material, ts_v(-20, -20, z), ts_v(20, -20, z), ts_v(-20, 20, z));
+    ts_triangle(&ts, cluster, material, ts_v(20, -20, z), ts_v(20, 20, z), ts_v(-20, 20, z));
+}
+
+static rgb8_t centre_pixel(render_frame_t *f)
+{
+    render_ctx_t ctx;
+    render_ctx_init(&ctx, f);
+    return render_pixel(&ctx, f->width / 2, f->height / 2);
+}
+
+static void test_diffuse_wall(void)
+{
+    /* parallel light along the view: cos = 1; I = (dic + drc) F L */
+    ts_init(&ts, 9, 9);
+    uint16_t m = ts_material(&ts, mat(1, 0.6, 0, 0.2, 0.4));
+    wall(0, m, 10);
+    scene_light_t *l = ts_light(&ts, SCENE_LIGHT_PARALLEL, ts_rgb(1, 1, 1));
+    l->direction = ts_v(0, 0, 1);
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    rgb8_t p = centre_pixel(f);
+    CHECK_EQ_INT(p.r, 153); /* 0.6 * 255 */
+    CHECK_EQ_INT(p.g, 92);  /* 0.36 * 255 = 91.8 */
+    CHECK_EQ_INT(p.b, 0);
+    /* two lights: ambient from each (the paper has no global ambient) */
+    l = ts_light(&ts, SCENE_LIGHT_PARALLEL, ts_rgb(0.4, 0.4, 0.4));
+    l->direction = ts_v(0, 0, -1); /* from behind the wall: ambient only */
+    f = ts_prepare(&ts);
+    p = centre_pixel(f);
+    CHECK_EQ_INT(p.r, 173); /* (0.6 + 0.2 * 0.4) * 255 = 173.4 */
+}
+
+static void test_shadows(void)
+{
+    /* wall lit head-on; a small box between the light and the wall's centre */
+    ts_init(&ts, 9, 9);
+    uint16_t wm = ts_material(&ts, mat(1, 1, 1, 0.2, 0.6));
+    wall(0, wm, 10);
+    scene_material_t glass = mat(1, 0, 0, 0, 0);
+    glass.trc = N(0.5);
+    uint16_t bm = ts_material(&ts, glass);
+    ts_box(&ts, 0, bm, ts_v(0, 0, 8), ts_v(0.5, 0.5, 0.5));
+    scene_light_t *l = ts_light(&ts, SCENE_LIGHT_POINT, ts_rgb(1, 1, 1));
+    l->position = ts_v(0, 0, 0.1);
+    /* look at the wall from the side so the box does not hide it */
+    ts.scene.camera.eye = ts_v(0, 30, 9.5);
+    ts.scene.camera.look_at = ts_v(0, 0, 10);
+    ts.scene.camera.up = ts_v(0, 0, 1);
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    /* tinted shadow: light through the box = L * trc * F = (0.5, 0, 0);
+     * wall = 0.2 (ambient, unshadowed) + 0.6 * cos * shadowed light */
+    rgb8_t p = centre_pixel(f);
+    CHECK_EQ_INT(p.g, 51); /* 0.2 * 255: green light blocked */
+    CHECK(p.r > 51 + 60);   /* red passes at half strength */
+    /* opaque box: ambient only */
+    ts.materials[bm].trc = NUM_ZERO;
+    f = ts_prepare(&ts);
+    p = centre_pixel(f);
+    CHECK_EQ_INT(p.r, 51);
+    CHECK_EQ_INT(p.g, 51);
+    /* shadows switched off: full diffuse */
+    ts.scene.options.shadows = 0;
+    f = ts_prepare(&ts);
+    p = centre_pixel(f);
+    CHECK(p.g > 51 + 100);
+}
+
+static void test_mirror(void)
+{
+    /* a mirror facing the camera reflects the background back */
+    ts_init(&ts, 9, 9);
+    scene_material_t mirror = mat(1, 1, 1, 0, 0);
+    mirror.src = N(0.5);
+    wall(0, ts_material(&ts, mirror), 10);
+    ts.scene.background = ts_rgb(0, 0, 1);
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    rgb8_t p = centre_pixel(f);
+    CHECK_EQ_INT(p.b, 128); /* 0.5 * 255 = 127.5 */
+    CHECK_EQ_INT(p.r, 0);
+    /* depth 0: no reflection rays at all */
+    ts.scene.options.max_depth = 0;
+    f = ts_prepare(&ts);
+    p = centre_pixel(f);
+    CHECK_EQ_INT(p.b, 0);
+}
+
+static void glass_pane_scene(void)
+{
+    ts_init(&ts, 9, 9);
+    uint16_t back = ts_material(&ts, mat(0, 1, 0, 0.5, 0.5));
+    wall(0, back, 20);
+    scene_material_t glass = mat(1, 1, 1, 0, 0);
+    glass.trc = NUM_ONE;
+    glass.ior = N(1.5);
+    ts_box(&ts, 0, ts_material(&ts, glass), ts_v(0, 0, 10), ts_v(5, 5, 0.5));
+    scene_light_t *l = ts_light(&ts, SCENE_LIGHT_PARALLEL, ts_rgb(1, 1, 1));
+    l->direction = ts_v(0, 1, 0); /* from above: the wall is lit edge-on */
+    l = ts_light(&ts, SCENE_LIGHT_PARALLEL, ts_rgb(1, 1, 1));
+    l->direction = ts_v(0, 0, 1);
+    ts.scene.options.shadows = 0; /* so the glass does not shade the wall */
+}
+
+static void test_refraction(void)
+{
+    /* straight through a clear pane at normal incidence: the wall's colour
+     * (ambient 0.5 * 2 lights, diffuse 0.5 from the front light) */
+    glass_pane_scene();
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    rgb8_t p = centre_pixel(f);
+    CHECK(p.g >= 254);
+    CHECK_EQ_INT(p.r, 0);
+    /* depth 1: the ray inside the pane cannot leave; without
+     * refractionless transmission the glass goes dark */
+    ts.scene.options.max_depth = 1;
+    ts.scene.options.refractionless = 0;
+    f = ts_prepare(&ts);
+    CHECK_EQ_INT(centre_pixel(f).g, 0);
+    /* with it, the straight ray reaches the wall: the same colour */
+    ts.scene.options.refractionless = 1;
+    f = ts_prepare(&ts);
+    CHECK(centre_pixel(f).g >= 254);
+    /* depth 0: the transmission buffer holds both pane faces */
+    ts.scene.options.max_depth = 0;
+    f = ts_prepare(&ts);
+    render_ctx_t ctx;
+    render_ctx_init(&ctx, f);
+    rgb8_t q = render_pixel(&ctx, 4, 4);
+    CHECK(q.g >= 254);
+    CHECK_EQ_INT(ctx.stats.transmission, 1);
+    CHECK_EQ_INT(ctx.stats.refraction, 0);
+}
+
+/* A scene with nesting, every primitive kind and transparency. */
+static void busy_scene(void)
+{
+    ts_init(&ts, 40, 30);
+    uint16_t floor = ts_material(&ts, mat(0.8, 0.8, 0.6, 0.2, 0.7));
+    scene_material_t shiny = mat(0.9, 0.2, 0.2, 0.1, 0.6);
+    shiny.src = N(0.3);
+    shiny.phong_n = 20;
+    shiny.fresnel = N(0.5);
+    uint16_t red = ts_material(&ts, shiny);
+    scene_material_t glass = mat(0.9, 1, 0.9, 0.05, 0.1);
+    glass.trc = N(0.8);
+    glass.src = N(0.1);
+    glass.ior = N(1.3);
+    glass.fresnel = NUM_ONE;
+    uint16_t clear = ts_material(&ts, glass);
+    ts_triangle(&ts, 0, floor, ts_v(-50, -2, -5), ts_v(50, -2, -5), ts_v(0, -2, 80));
+    uint16_t group = ts_cluster(&ts, 0, ts_translate(0, 0, 12));
+    uint16_t inner = ts_cluster(&ts, group, ts_rotate_z(sqrt(0.5), sqrt(0.5), 2, 0, 0));
+    ts_box(&ts, inner, red, ts_v(0, 0, 0), ts_v(1, 1, 1));
+    ts_ellipsoid(&ts, group, clear, ts_v(-2, 0, -3), ts_v(1.5, 1, 1));
+    const double blob[3][5] = {{-3, 1, 4, 2, 1}, {-2, 1.5, 4, 2, 1}, {-2.5, 0.5, 4.5, 1.5, 0.8}};
+    uint16_t deep = ts_cluster(&ts, inner, ts_translate(0, 2, 0));
+    ts_density(&ts, deep, red, 0.5, 3, blob);
+    scene_light_t *l = ts_light(&ts, SCENE_LIGHT_POINT, ts_rgb(0.8, 0.8, 0.8));
+    l->position = ts_v(5, 10, 0);
+    l = ts_light(&ts, SCENE_LIGHT_SPOT, ts_rgb(0.6, 0.6, 0.9));
+    l->position = ts_v(-5, 8, 8);
+    l->direction = ts_v(0.3, -1, 0.3);
+    l->cos_inner = N(0.9);
+    l->cos_outer = N(0.7);
+    ts.scene.camera.eye = ts_v(0, 3, -2);
+    ts.scene.camera.look_at = ts_v(0, 0, 12);
+}
+
+static rgb8_t *render_all(render_frame_t *f, render_stats_t *stats)
+{
+    rgb8_t *img = calloc((size_t)f->width * f->height, sizeof *img);
+    render_ctx_t ctx;
+    render_ctx_init(&ctx, f);
+    for (uint32_t y = 0; y < f->height; y++)
+        render_span(&ctx, y, 0, f->width, img + (size_t)y * f->width);
+    if (stats)
+        *stats = ctx.stats;
+    return img;
+}
+
+static void test_speedups_same_image(void)
+{
+    busy_scene();
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    render_stats_t ref_stats;
+    rgb8_t *ref = render_all(f, &ref_stats);
+    size_t n = (size_t)f->width * f->height, lit = 0;
+    for (size_t i = 0; i < n; i++)
+        lit += ref[i].r || ref[i].g || ref[i].b;
+    CHECK(lit > n / 2); /* the scene is on screen */
+    CHECK(ref_stats.shadow > 0 && ref_stats.reflection > 0 && ref_stats.refraction > 0);
+    for (int mode = 1; mode < 4; mode++) {
+        f->options.use_hierarchy = (mode & 1) == 0;
+        f->options.use_bounds = (mode & 2) == 0;
+        render_stats_t st;
+        rgb8_t *img = render_all(f, &st);
+        CHECK(memcmp(img, ref, n * sizeof *img) == 0);
+        if (!f->options.use_bounds) /* boxes only ever save work */
+            CHECK(st.prim_tests >= ref_stats.prim_tests);
+        free(img);
+    }
+    /* screen clipping for primary rays: only clusters whose rectangle
+     * holds the pixel; same colours */
+    f->options.use_hierarchy = 1;
+    f->options.use_bounds = 1;
+    render_ctx_t ctx;
+    render_ctx_init(&ctx, f);
+    int same = 1;
+    for (uint32_t y = 0; y < f->height; y++)
+        for (uint32_t x = 0; x < f->width; x++) {
+            uint16_t list[TS_MAX];
+            uint32_t count = 0;
+            for (uint16_t c = 0; c < f->cluster_count; c++) {
+                const render_cluster_t *k = &f->clusters[c];
+                if ((int32_t)x >= k->screen_x0 && (int32_t)x <= k->screen_x1 && (int32_t)y >= k->screen_y0 &&
+                    (int32_t)y <= k->screen_y1)
+                    list[count++] = c;
+            }
+            rgb8_t p = render_pixel_clipped(&ctx, x, y, list, count);
+            rgb8_t q = ref[(size_t)y * f->width + x];
+            same &= p.r == q.r && p.g == q.g && p.b == q.b;
+        }
+    CHECK(same);
+    free(ref);
+}
+
+static void test_screen_rect(void)
+{
+    /* a unit box at z = 10 straight ahead, 100x100 pixels, tan = 0.5: the
+     * view is 10 units wide at z = 10, the box 2 units: pixels 40..60 */
+    ts_init(&ts, 100, 100);
+    uint16_t c = ts_cluster(&ts, 0, ts_translate(0, 0, 10));
+    ts_box(&ts, c, 0, ts_v(0, 0, 0), ts_v(1, 1, 1));
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    const render_cluster_t *k = &f->clusters[c];
+    /* the front face projects to 40..60, the near corners (z = 9) slightly
+     * wider: 1/9 * 10 = 1.11 units -> 38.9..61.1; plus one pixel margin */
+    CHECK(k->screen_x0 >= 35 && k->screen_x0 <= 39);
+    CHECK(k->screen_x1 >= 60 && k->screen_x1 <= 64);
+    CHECK(k->screen_y0 >= 35 && k->screen_y0 <= 39);
+    CHECK(k->screen_x1 - k->screen_x0 == k->screen_y1 - k->screen_y0);
+    CHECK(f->clusters[0].screen_x0 > f->clusters[0].screen_x1); /* root: no prims */
+}
+
+static void test_keyframes(void)
+{
+    ts_init(&ts, 8, 8);
+    uint16_t c = ts_cluster(&ts, 0, xform_identity());
+    ts.clusters[c].first_key = 0;
+    ts.clusters[c].key_count = 2;
+    ts.scene.key_count = 2;
+    scene_key_t *k = ts.keys;
+    k[0].frame = 0;
+    k[0].translate = ts_v(0, 0, 10);
+    k[0].rot_w = NUM_ONE;
+    k[0].scale = ts_v(1, 1, 1);
+    k[1].frame = 10;
+    k[1].translate = ts_v(10, 0, 10);
+    k[1].rot_w = N(sqrt(0.5)); /* 90 degrees about z */
+    k[1].rot_z = N(sqrt(0.5));
+    k[1].scale = ts_v(1, 1, 1);
+    ts_ellipsoid(&ts, c, 0, ts_v(0, 0, 0), ts_v(2, 1, 1));
+    render_frame_t *f = NULL;
+    arena_reset(&ts.arena);
+    CHECK_EQ_INT(render_prepare(&ts.scene, 5, &ts.arena, &f), RENDER_OK);
+    if (!f)
+        return;
+    /* frame 5: halfway, x = 5, turned 45 degrees: the long axis along
+     * (1,1)/sqrt2; the ray along x at y = 0 through the centre meets it where
+     * x'^2/4 + y'^2 = 1 with x' = y' = s/sqrt2: s = sqrt(8/5) */
+    ray_t r = {ts_v(-5, 0, 10), ts_v(1, 0, 0)};
+    num_t t;
+    CHECK(prim_intersect(&f->prims[0], &r, NUM_ZERO, N(100), &t));
+    CHECK_NEAR(num_to_double(t), 10 - sqrt(8.0 / 5), 3e-3);
+    /* past the last key the last key holds */
+    arena_reset(&ts.arena);
+    CHECK_EQ_INT(render_prepare(&ts.scene, 99, &ts.arena, &f), RENDER_OK);
+    r.origin = ts_v(10, -10, 10);
+    r.dir = ts_v(0, 1, 0);
+    CHECK(prim_intersect(&f->prims[0], &r, NUM_ZERO, N(100), &t));
+    CHECK_NEAR(num_to_double(t), 8, 3e-3); /* long axis now along y */
+}
+
+static void test_limits_and_errors(void)
+{
+    render_frame_t *f;
+    uint8_t small[64];
+    arena_t tiny;
+    busy_scene();
+    arena_init(&tiny, small, sizeof small);
+    CHECK_EQ_INT(render_prepare(&ts.scene, 0, &tiny, &f), RENDER_ERR_ARENA);
+    CHECK(tiny.failed_request > 0);
+    busy_scene();
+    ts.scene.light_count = RENDER_MAX_LIGHTS + 1;
+    CHECK_EQ_INT(render_prepare(&ts.scene, 0, &ts.arena, &f), RENDER_ERR_LIGHTS);
+    busy_scene();
+    ts.clusters[2].parent = 2; /* its own parent */
+    CHECK_EQ_INT(render_prepare(&ts.scene, 0, &ts.arena, &f), RENDER_ERR_CLUSTER);
+    busy_scene();
+    ts.prims[1].material = 99;
+    CHECK_EQ_INT(render_prepare(&ts.scene, 0, &ts.arena, &f), RENDER_ERR_PRIM);
+    busy_scene();
+    ts.scene.camera.look_at = ts.scene.camera.eye;
+    CHECK_EQ_INT(render_prepare(&ts.scene, 0, &ts.arena, &f), RENDER_ERR_CAMERA);
+    busy_scene();
+    ts.scene.width = RENDER_MAX_WIDTH + 1;
+    CHECK_EQ_INT(render_prepare(&ts.scene, 0, &ts.arena, &f), RENDER_ERR_SIZE);
+    busy_scene();
+    ts.clusters[1].local.m[0][0] = NUM_ZERO; /* singular */
+    ts.clusters[1].local.m[1][1] = NUM_ZERO;
+    CHECK_EQ_INT(render_prepare(&ts.scene, 0, &ts.arena, &f), RENDER_ERR_SINGULAR);
+    busy_scene();
+    ts.materials[1].colour_map = 3;
+    CHECK_EQ_INT(render_prepare(&ts.scene, 0, &ts.arena, &f), RENDER_ERR_MAP);
+    CHECK(render_status_name(RENDER_ERR_MAP)[0] != 0);
+    /* nesting deeper than the limit */
+    ts_init(&ts, 8, 8);
+    uint16_t parent = 0;
+    for (int i = 0; i <= RENDER_MAX_CLUSTER_DEPTH; i++)
+        parent = ts_cluster(&ts, parent, xform_identity());
+    CHECK_EQ_INT(render_prepare(&ts.scene, 0, &ts.arena, &f), RENDER_ERR_CLUSTER);
+}
+
+static void test_precision_flag(void)
+{
+    /* lights so bright that the sum of terms leaves the fixed range: the
+     * fixed build must say so; the IEEE builds have the range */
+    ts_init(&ts, 5, 5);
+    wall(0, ts_material(&ts, mat(1, 1, 1, 1, 1)), 10);
+    for (int i = 0; i < 2; i++) {
+        scene_light_t *l = ts_light(&ts, SCENE_LIGHT_PARALLEL, ts_rgb(1500, 1500, 1500));
+        l->direction = ts_v(0, 0, 1);
+    }
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    render_stats_t st;
+    rgb8_t *img = render_all(f, &st);
+    CHECK_EQ_INT(img[12].r, 255);
+#if defined(LINKS1_NUM_FIXED)
+    CHECK_EQ_INT(st.precision_lost_pixels, 25);
+#else
+    CHECK_EQ_INT(st.precision_lost_pixels, 0);
+#endif
+    free(img);
+    /* a normal scene loses nothing */
+    busy_scene();
+    f = ts_prepare(&ts);
+    img = render_all(f, &st);
+    CHECK_EQ_INT(st.precision_lost_pixels, 0);
+    CHECK(!f->precision_lost);
+    free(img);
+}
+
+int main(void)
+{
+    printf("# num_t = %s\n", NUM_NAME);
+    RUN(test_diffuse_wall);
+    RUN(test_shadows);
+    RUN(test_mirror);
+    RUN(test_refraction);
+    RUN(test_speedups_same_image);
+    RUN(test_screen_rect);
+    RUN(test_keyframes);
+    RUN(test_limits_and_errors);
+    RUN(test_precision_flag);
+    return check_exit();
+}
