@@ -97,6 +97,7 @@ $(B)/fw-$(1)-$(LIBC)/%.S.o: %.S
 
 $$(FW_ELF_$(1)): $$(FW_OBJS_$(1)) linker/sections.ld linker/virt-memory.ld
 	$$(call say,LD,$$@)
+	$(Q)mkdir -p $$(@D)
 	$(Q)$(ARM_CC) $(FW_CFLAGS) $(FW_FLOAT_ABI_$(1)) $(FW_LDFLAGS) \
 		$$(FW_OBJS_$(1)) $(FW_LIBS) -Wl,-Map=$$@.map -o $$@
 

@@ -319,6 +319,8 @@ static int board_read_available(struct board *b)
                 return -1;
         }
         fflush(stdout);
+        if ((size_t)n < sizeof buf)
+            return 0; /* drained: no need for a read that says EAGAIN */
     }
 }
 
@@ -332,8 +334,14 @@ int board_pump(struct board *b, int timeout_ms)
         fprintf(stderr, "links1: poll: %s\n", strerror(errno));
         return -1;
     }
-    if (r > 0)
+    if (r > 0) {
+        /* QEMU writes the UART to the socket one byte at a time; a short
+         * pause lets a batch gather, so a fast stream costs one read per
+         * batch instead of a wake-up per byte (host CPU QEMU needs). */
+        struct timespec batch = {0, BOARD_READ_BATCH_US * 1000L};
+        nanosleep(&batch, NULL);
         return board_read_available(b);
+    }
     return 0;
 }
 
@@ -341,18 +349,19 @@ static void print_missing_cores(const struct board *b)
 {
     fprintf(stderr, "links1: %d of %d unit computers did not report in:",
             b->opts.ncores - b->reported_count, b->opts.ncores);
-    int shown = 0;
+    const char *sep = "";
     for (int k = 0; k < b->opts.ncores; k++) {
         if (b->reported[k])
             continue;
+        /* A run of silent cores, never spanning two roles. */
         int e = k;
-        while (e + 1 < b->opts.ncores && !b->reported[e + 1])
+        while (k >= ROLE_NC && e + 1 < b->opts.ncores && !b->reported[e + 1])
             e++;
-        fprintf(stderr, "%s core %d", shown ? "," : "", k);
         if (e > k)
-            fprintf(stderr, "-%d", e);
-        fprintf(stderr, " (%s%s)", board_role_name(k), e > k ? "s" : "");
-        shown = 1;
+            fprintf(stderr, "%s cores %d-%d (NCs)", sep, k, e);
+        else
+            fprintf(stderr, "%s core %d (%s)", sep, k, board_role_name(k));
+        sep = ",";
         k = e;
     }
     fprintf(stderr, "\n");

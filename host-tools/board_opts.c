@@ -95,6 +95,21 @@ static int file_readable(const char *path)
     return access(path, R_OK) == 0;
 }
 
+/* QEMU boots anything given to -kernel (a non-ELF file as a raw image that
+ * then never reports in), so check the ELF magic first. */
+static int firmware_is_elf(const char *path)
+{
+    unsigned char magic[4] = {0};
+    FILE *f = fopen(path, "rb");
+    size_t n = f ? fread(magic, 1, sizeof magic, f) : 0;
+    if (f)
+        fclose(f);
+    if (n == sizeof magic && memcmp(magic, "\177ELF", 4) == 0)
+        return 1;
+    fprintf(stderr, "links1: firmware %s is not an ELF file\n", path);
+    return 0;
+}
+
 int board_find_firmware(const struct board_opts *o, char *out, size_t cap)
 {
     if (o->firmware) {
@@ -103,13 +118,13 @@ int board_find_firmware(const struct board_opts *o, char *out, size_t cap)
             return -1;
         }
         snprintf(out, cap, "%s", o->firmware);
-        return 0;
+        return firmware_is_elf(out) ? 0 : -1;
     }
     const char *fw_dir = getenv("FW_DIR");
     if (fw_dir && *fw_dir) {
         snprintf(out, cap, "%s/links1-%s.elf", fw_dir, o->arith);
         if (file_readable(out))
-            return 0;
+            return firmware_is_elf(out) ? 0 : -1;
         fprintf(stderr, "links1: firmware %s not found ($FW_DIR is set; run make, or "
                 "give --firmware ELF)\n", out);
         return -1;
@@ -126,7 +141,7 @@ int board_find_firmware(const struct board_opts *o, char *out, size_t cap)
         *slash = 0;
     snprintf(out, cap, "%s/links1-%s.elf", self, o->arith);
     if (file_readable(out))
-        return 0;
+        return firmware_is_elf(out) ? 0 : -1;
     fprintf(stderr, "links1: firmware %s not found (run make, set $FW_DIR, or give "
             "--firmware ELF)\n", out);
     return -1;

@@ -22,15 +22,17 @@ static int take_ack(struct board *b, uint16_t *inflight, int *n)
         fprintf(stderr, "links1: ACK frame of %u bytes, want %d\n", f.length, LINK_ACK_SIZE);
         return -1;
     }
+    /* An ACK names one DATA frame in flight and covers it and all before. */
     uint16_t acked = wire_get_u16(f.payload);
     int drop = 0;
-    while (drop < *n && seq_not_after(inflight[drop], acked))
+    while (drop < *n && inflight[drop] != acked)
         drop++;
-    if (drop == 0) {
-        fprintf(stderr, "links1: ACK for seq %u, but the oldest DATA frame in flight is "
-                "seq %u\n", acked, *n ? inflight[0] : 0);
+    if (drop == *n) {
+        fprintf(stderr, "links1: ACK for seq %u, which is not a DATA frame in flight "
+                "(oldest in flight: seq %u)\n", acked, *n ? inflight[0] : 0);
         return -1;
     }
+    drop++;
     for (int i = drop; i < *n; i++)
         inflight[i - drop] = inflight[i];
     *n -= drop;

@@ -34,8 +34,10 @@
 #define BOARD_FRAME_QUEUE 32
 /* Faults remembered for the caller to check (all are printed). */
 #define BOARD_MAX_FAULTS 64
-/* Bytes read from the link per read() call. */
+/* Bytes read from the link per read() call, and the pause (microseconds)
+ * after a wake-up that lets bytes gather before reading. */
 #define BOARD_READ_CHUNK 4096
+#define BOARD_READ_BATCH_US 200
 
 /* Link tests: bytes each way through the host link, MiB through the
  * inter-unit lines (issue minimums: 8 MiB and 64 MiB). */

@@ -23,6 +23,11 @@ HOST_TESTS += test_hostlink_msgs
 test_hostlink_msgs_SRCS := tests/host/test_hostlink_msgs.c host-tools/board.c \
 	host-tools/board_opts.c
 test_hostlink_msgs_ARITH := double
+HOST_TESTS += test_hostlink_transfer
+test_hostlink_transfer_SRCS := tests/host/test_hostlink_transfer.c host-tools/board.c \
+	host-tools/board_opts.c host-tools/link_transfer.c
+test_hostlink_transfer_ARITH := double
+test_hostlink_transfer_LIBS := -lpthread
 
 # Board tests (tests/board/lib.sh is their shared helper, not a test).
 BOARD_TESTS += tests/board/boot_smp.sh tests/board/channels.sh tests/board/idle66.sh \

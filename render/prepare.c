@@ -281,6 +281,12 @@ static void prep_screen_rect(const render_frame_t *f, render_cluster_t *c)
     c->screen_y0 = 0;
     c->screen_x1 = f->width - 1;
     c->screen_y1 = f->height - 1;
+    if (num_lt(b->hi.z, NUM_ZERO)) { /* wholly behind the eye: primary rays
+                                        (z grows along them) never reach it */
+        c->screen_x0 = c->screen_y0 = 1;
+        c->screen_x1 = c->screen_y1 = 0;
+        return;
+    }
     if (num_lt(b->lo.z, PREP_NEAR))
         return; /* reaches behind the eye: whole screen */
     num_t x0 = NUM_ZERO, x1 = NUM_ZERO, y0 = NUM_ZERO, y1 = NUM_ZERO;
@@ -355,6 +361,19 @@ static void prep_group_prims(const scene_t *s, render_frame_t *f)
         render_cluster_t *c = &f->clusters[s->prims[i].cluster];
         f->prim_list[c->first_prim + c->prim_count++] = i;
     }
+}
+
+/* Keep in step with the allocations of render_prepare below: every array
+ * plus the worst alignment padding of each (64 bytes is the most the
+ * arena pads). */
+size_t render_prepare_bytes(const scene_t *s)
+{
+    size_t prims = s->prim_count ? s->prim_count : 1;
+    size_t n = sizeof(render_frame_t) + sizeof(render_cluster_t) * (size_t)s->cluster_count +
+               sizeof(uint16_t) * (size_t)s->cluster_count + sizeof(render_prim_t) * prims +
+               sizeof(uint32_t) * prims;
+    size_t scratch = (2 * sizeof(xform_t) + 1) * (size_t)s->cluster_count;
+    return n + scratch + 8 * 64;
 }
 
 render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *arena, render_frame_t **out)

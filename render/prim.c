@@ -199,7 +199,7 @@ static void prim_box_surface(const render_prim_t *p, hit_t *hit)
 
 /* -------------------------------------------------------- density sphere */
 
-num_t density_field(num_t r2, num_t radius, num_t weight)
+num_t prim_density_field(num_t r2, num_t radius, num_t weight)
 {
     num_t d2 = num_mul(radius, radius);
     if (!num_lt(r2, d2))
@@ -218,7 +218,7 @@ static num_t prim_density_excess(const render_prim_t *p, vec3_t q)
     for (uint16_t k = 0; k < p->component_count; k++) {
         const scene_density_component_t *c = &p->components[k];
         vec3_t r = vec3_sub(q, c->centre);
-        sum = num_add(sum, density_field(vec3_dot(r, r), c->radius, c->weight));
+        sum = num_add(sum, prim_density_field(vec3_dot(r, r), c->radius, c->weight));
     }
     return sum;
 }
@@ -358,7 +358,7 @@ void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit)
     }
 }
 
-int aabb_hit(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax)
+int prim_aabb_hit(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax)
 {
     num_t tnear = tmin, tfar = tmax;
     for (int axis = 0; axis < 3; axis++)

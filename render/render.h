@@ -17,6 +17,7 @@
 #ifndef LINKS1_RENDER_RENDER_H
 #define LINKS1_RENDER_RENDER_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 #include "fixed/num.h"
@@ -73,8 +74,9 @@ typedef struct {
     aabb_t bounds;        /* around everything below it (prims and clusters) */
     aabb_t own_bounds;    /* around its own primitives only */
     /* Projected own_bounds, in pixels, inclusive and widened by one pixel so
-     * that it is conservative; x0 > x1 when it has no primitives.  Covers the
-     * whole screen when the box reaches behind the eye plane. */
+     * that it is conservative; x0 > x1 (empty) when it has no primitives or
+     * lies wholly behind the eye.  Covers the whole screen when the box
+     * straddles the eye plane. */
     int32_t screen_x0, screen_y0, screen_x1, screen_y1;
     uint32_t first_child, child_count; /* into frame->child_list */
     uint32_t first_prim, prim_count;   /* into frame->prim_list */
@@ -141,6 +143,11 @@ const char *render_status_name(render_status_t status);
  * frame is used. */
 render_status_t render_prepare(const scene_t *scene, uint32_t frame_index,
                                arena_t *arena, render_frame_t **out);
+
+/* Arena bytes render_prepare needs for this scene, at most (frame, arrays,
+ * scratch and alignment): what a unit computer must set aside.  Rendering
+ * itself allocates nothing (stack: RENDER_STACK_BYTES in limits.h). */
+size_t render_prepare_bytes(const scene_t *scene);
 
 void render_ctx_init(render_ctx_t *ctx, const render_frame_t *frame);
 

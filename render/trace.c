@@ -115,7 +115,7 @@ static int trace_box(trace_walk_t *w, const aabb_t *b)
         return 1;
     w->ctx->stats.box_tests++;
     num_t tmax = w->mode == TRACE_NEAREST && w->nearest.found ? w->nearest.t : w->tmax;
-    return aabb_hit(b, w->ray, w->tmin, tmax);
+    return prim_aabb_hit(b, w->ray, w->tmin, tmax);
 }
 
 static void trace_own_prims(trace_walk_t *w, const render_cluster_t *c)

@@ -31,8 +31,10 @@ static void unit_report_in(void)
                            (uint16_t)board_ncores, 0};
     uint8_t p[LINK_HELLO_SIZE];
     link_hello_put(p, &h);
-    hostlink_send(LINK_HELLO, 0, p, sizeof p);
+    /* Marked before sending: a host that has the HELLO may ask CMD_STATUS
+     * at once, and must find this core counted. */
     c->reported = 1;
+    hostlink_send(LINK_HELLO, 0, p, sizeof p);
 }
 
 void unit_start(void)

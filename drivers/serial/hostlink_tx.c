@@ -17,8 +17,7 @@ static uint16_t hostlink_tx_seq; /* next frame's seq; guarded by the lock */
 
 static void hostlink_put_bytes(const uint8_t *p, size_t n)
 {
-    for (size_t i = 0; i < n; i++)
-        uart_putc(p[i]);
+    uart_write(p, n);
 }
 
 uint16_t hostlink_send(uint8_t type, uint8_t flags, const void *payload, size_t len)

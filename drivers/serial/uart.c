@@ -14,6 +14,8 @@
 #define UART_FR_BUSY (1u << 3)
 #define UART_FR_RXFE (1u << 4)
 #define UART_FR_TXFF (1u << 5)
+#define UART_FR_TXFE (1u << 7)
+#define UART_FIFO_DEPTH 16u
 #define UART_LCR_H(b) ((b) + 0x02Cu)
 #define UART_LCR_H_FEN (1u << 4)
 #define UART_LCR_H_WLEN_8 (3u << 5)
@@ -48,7 +50,10 @@ void uart_init(void)
     gic_route_spi(UART0_INTID, UART_RX_CORE);
 }
 
-void uart_irq(void)
+/* Moves received bytes from the FIFO into the ring until the FIFO is empty
+ * or the ring is full (then receive interrupts are masked).  Runs with
+ * interrupts masked on the UART's core. */
+static void uart_rx_drain(void)
 {
     uintptr_t b = UART0_BASE;
     while (!(mmio_read32(UART_FR(b)) & UART_FR_RXFE)) {
@@ -63,18 +68,31 @@ void uart_irq(void)
         ringbuf_put_byte(&uart_rx_ring,
                          (uint8_t)(mmio_read32(UART_DR(b)) & UART_DR_DATA_MASK));
     }
-    mmio_write32(UART_ICR(b), UART_INT_RX | UART_INT_RT);
+}
+
+void uart_irq(void)
+{
+    /* Clear first, then drain: a byte that arrives after the FIFO reads
+     * empty raises the interrupt again.  Clearing after the drain could
+     * swallow the interrupt of a byte that came in between, and QEMU's
+     * PL011 raises it only when the FIFO goes from empty to non-empty. */
+    mmio_write32(UART_ICR(UART0_BASE), UART_INT_RX | UART_INT_RT);
+    uart_rx_drain();
 }
 
 uint32_t uart_rx_read(uint8_t *out, uint32_t max)
 {
     uint32_t n = ringbuf_get_some(&uart_rx_ring, out, max);
     if (n && uart_rx_masked) {
-        /* The handler runs on this core: masking interrupts orders our
-         * unmask against it. */
+        /* The handler runs on this core: masking interrupts orders us
+         * against it.  Bytes left in the FIFO while paused raise no new
+         * interrupt, so take them here before unmasking. */
         irq_push_off();
         uart_rx_masked = 0;
-        mmio_write32(UART_IMSC(UART0_BASE), UART_INT_RX | UART_INT_RT);
+        mmio_write32(UART_ICR(UART0_BASE), UART_INT_RX | UART_INT_RT);
+        uart_rx_drain();
+        if (!uart_rx_masked)
+            mmio_write32(UART_IMSC(UART0_BASE), UART_INT_RX | UART_INT_RT);
         irq_pop_off();
     }
     return n;
@@ -95,6 +113,22 @@ void uart_putc(uint8_t c)
     while (mmio_read32(UART_FR(UART0_BASE)) & UART_FR_TXFF)
         ;
     mmio_write32(UART_DR(UART0_BASE), c);
+}
+
+void uart_write(const uint8_t *p, size_t n)
+{
+    /* Once the FIFO reads empty it takes UART_FIFO_DEPTH bytes without
+     * further polling: one status read per 16 bytes instead of per byte
+     * (each register access is a trip into the emulator). */
+    while (n) {
+        while (!(mmio_read32(UART_FR(UART0_BASE)) & UART_FR_TXFE))
+            ;
+        size_t k = n < UART_FIFO_DEPTH ? n : UART_FIFO_DEPTH;
+        for (size_t i = 0; i < k; i++)
+            mmio_write32(UART_DR(UART0_BASE), p[i]);
+        p += k;
+        n -= k;
+    }
 }
 
 void uart_tx_drain(void)

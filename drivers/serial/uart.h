@@ -10,6 +10,7 @@
 #ifndef LINKS1_DRIVERS_SERIAL_UART_H
 #define LINKS1_DRIVERS_SERIAL_UART_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 /* Core 0, once: line settings, FIFOs, receive interrupt routed to core 0. */
@@ -24,6 +25,8 @@ uint32_t uart_rx_pending(void);
 uint32_t uart_rx_pauses(void);
 /* Sends one byte (waits while the transmit FIFO is full). */
 void uart_putc(uint8_t c);
+/* Sends n bytes, filling the transmit FIFO a burst at a time. */
+void uart_write(const uint8_t *p, size_t n);
 /* Waits until everything written has left the transmitter. */
 void uart_tx_drain(void);
 

@@ -186,12 +186,12 @@ static void test_density_field(void)
 {
     num_t d = num_from_double(3), b = num_from_double(2);
     /* r = 0: b; r = 1 = d/3: b(1 - 1/3) = 4/3, (3b/2)(2/3)^2 = 4/3 too */
-    CHECK_NEAR(num_to_double(density_field(NUM_ZERO, d, b)), 2.0, TOL);
-    CHECK_NEAR(num_to_double(density_field(num_from_double(1), d, b)), 4.0 / 3, TOL);
-    CHECK_NEAR(num_to_double(density_field(num_from_double(0.25), d, b)), 2 * (1 - 0.75 / 9), TOL);
-    CHECK_NEAR(num_to_double(density_field(num_from_double(4), d, b)), 3 * (1 - 2.0 / 3) * (1 - 2.0 / 3), TOL);
-    CHECK_NEAR(num_to_double(density_field(num_from_double(9), d, b)), 0.0, 0);
-    CHECK_NEAR(num_to_double(density_field(num_from_double(100), d, b)), 0.0, 0);
+    CHECK_NEAR(num_to_double(prim_density_field(NUM_ZERO, d, b)), 2.0, TOL);
+    CHECK_NEAR(num_to_double(prim_density_field(num_from_double(1), d, b)), 4.0 / 3, TOL);
+    CHECK_NEAR(num_to_double(prim_density_field(num_from_double(0.25), d, b)), 2 * (1 - 0.75 / 9), TOL);
+    CHECK_NEAR(num_to_double(prim_density_field(num_from_double(4), d, b)), 3 * (1 - 2.0 / 3) * (1 - 2.0 / 3), TOL);
+    CHECK_NEAR(num_to_double(prim_density_field(num_from_double(9), d, b)), 0.0, 0);
+    CHECK_NEAR(num_to_double(prim_density_field(num_from_double(100), d, b)), 0.0, 0);
 }
 
 static void test_density(void)
@@ -247,17 +247,17 @@ static void test_aabb(void)
 {
     aabb_t b = {ts_v(-1, -1, 4), ts_v(1, 1, 6)};
     ray_t r = ray_of(0, 0, 0, 0, 0, 1);
-    CHECK(aabb_hit(&b, &r, NUM_ZERO, num_from_double(100)));
-    CHECK(!aabb_hit(&b, &r, NUM_ZERO, num_from_double(3.9)));   /* ends before */
-    CHECK(!aabb_hit(&b, &r, num_from_double(6.1), num_from_double(100))); /* starts after */
+    CHECK(prim_aabb_hit(&b, &r, NUM_ZERO, num_from_double(100)));
+    CHECK(!prim_aabb_hit(&b, &r, NUM_ZERO, num_from_double(3.9)));   /* ends before */
+    CHECK(!prim_aabb_hit(&b, &r, num_from_double(6.1), num_from_double(100))); /* starts after */
     r = ray_of(0, 2, 0, 0, 0, 1);
-    CHECK(!aabb_hit(&b, &r, NUM_ZERO, num_from_double(100)));   /* parallel, outside */
+    CHECK(!prim_aabb_hit(&b, &r, NUM_ZERO, num_from_double(100)));   /* parallel, outside */
     r = ray_of(0, 0, 5, 1, 0, 0);
-    CHECK(aabb_hit(&b, &r, NUM_ZERO, num_from_double(100)));    /* from inside */
+    CHECK(prim_aabb_hit(&b, &r, NUM_ZERO, num_from_double(100)));    /* from inside */
     r = ray_of(0, 0, 0, 1e-5, 1e-5, 1);
-    CHECK(aabb_hit(&b, &r, NUM_ZERO, num_from_double(100)));    /* nearly parallel */
+    CHECK(prim_aabb_hit(&b, &r, NUM_ZERO, num_from_double(100)));    /* nearly parallel */
     r = ray_of(-3, 0, 5, 1, 1, 0);
-    CHECK(!aabb_hit(&b, &r, NUM_ZERO, num_from_double(100)));   /* misses the corner */
+    CHECK(!prim_aabb_hit(&b, &r, NUM_ZERO, num_from_double(100)));   /* misses the corner */
 }
 
 int main(void)

@@ -288,6 +288,43 @@ static void test_screen_rect(void)
     CHECK(k->screen_y0 >= 35 && k->screen_y0 <= 39);
     CHECK(k->screen_x1 - k->screen_x0 == k->screen_y1 - k->screen_y0);
     CHECK(f->clusters[0].screen_x0 > f->clusters[0].screen_x1); /* root: no prims */
+    /* behind the eye: empty; straddling the eye plane: the whole screen */
+    ts.clusters[c].local = ts_translate(0, 0, -10);
+    f = ts_prepare(&ts);
+    CHECK(f->clusters[c].screen_x0 > f->clusters[c].screen_x1);
+    ts.clusters[c].local = ts_translate(3, 0, 0);
+    f = ts_prepare(&ts);
+    CHECK_EQ_INT(f->clusters[c].screen_x0, 0);
+    CHECK_EQ_INT(f->clusters[c].screen_x1, 99);
+    CHECK_EQ_INT(f->clusters[c].screen_y1, 99);
+}
+
+static void test_tie_break(void)
+{
+    /* two coincident walls, red (lower index) and green: every traversal
+     * mode shows red, whichever order it tests them in */
+    ts_init(&ts, 6, 6);
+    uint16_t green = ts_material(&ts, mat(0, 1, 0, 1, 0));
+    uint16_t red = ts_material(&ts, mat(1, 0, 0, 1, 0));
+    uint16_t late = ts_cluster(&ts, 0, xform_identity());
+    wall(late, red, 10);   /* prims 0, 1 in a child cluster */
+    wall(0, green, 10);    /* prims 2, 3 in the root: tested first in the tree */
+    scene_light_t *l = ts_light(&ts, SCENE_LIGHT_PARALLEL, ts_rgb(1, 1, 1));
+    l->direction = ts_v(0, 0, 1);
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    for (int mode = 0; mode < 4; mode++) {
+        f->options.use_hierarchy = (mode & 1) == 0;
+        f->options.use_bounds = (mode & 2) == 0;
+        rgb8_t *img = render_all(f, NULL);
+        int all_red = 1;
+        for (int i = 0; i < 36; i++)
+            all_red &= img[i].r == 255 && img[i].g == 0;
+        CHECK(all_red);
+        free(img);
+    }
 }
 
 static void test_keyframes(void)
@@ -338,6 +375,16 @@ static void test_limits_and_errors(void)
     arena_init(&tiny, small, sizeof small);
     CHECK_EQ_INT(render_prepare(&ts.scene, 0, &tiny, &f), RENDER_ERR_ARENA);
     CHECK(tiny.failed_request > 0);
+    /* the announced size is enough, half of it is not */
+    busy_scene();
+    size_t need = render_prepare_bytes(&ts.scene);
+    static uint8_t exact[1 << 16];
+    CHECK(need <= sizeof exact);
+    arena_init(&tiny, exact, need);
+    CHECK_EQ_INT(render_prepare(&ts.scene, 0, &tiny, &f), RENDER_OK);
+    CHECK(tiny.high_water <= need);
+    arena_init(&tiny, exact, need / 2);
+    CHECK_EQ_INT(render_prepare(&ts.scene, 0, &tiny, &f), RENDER_ERR_ARENA);
     busy_scene();
     ts.scene.light_count = RENDER_MAX_LIGHTS + 1;
     CHECK_EQ_INT(render_prepare(&ts.scene, 0, &ts.arena, &f), RENDER_ERR_LIGHTS);
@@ -410,6 +457,7 @@ int main(void)
     RUN(test_refraction);
     RUN(test_speedups_same_image);
     RUN(test_screen_rect);
+    RUN(test_tie_break);
     RUN(test_keyframes);
     RUN(test_limits_and_errors);
     RUN(test_precision_flag);
