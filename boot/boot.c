@@ -14,13 +14,13 @@
 #include "kernel/memlayout.h"
 #include "kernel/panic.h"
 #include "kernel/param.h"
+#include "kernel/psci.h"
 #include "roles/unit.h"
 
 void boot_main(void) __attribute__((noreturn));
 void boot_secondary(void) __attribute__((noreturn));
 
-/* boot/start.S */
-int psci_call(uint32_t fn, uint32_t a1, uint32_t a2, uint32_t a3);
+/* boot/start.S: where the other cores begin. */
 void secondary_entry(void);
 
 /* The linker script and param.h must agree on what C sizes arrays by. */

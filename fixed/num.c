@@ -5,13 +5,15 @@
 #if defined(LINKS1_NUM_FIXED)
 
 /* floor(sqrt(n)) for any 64-bit n, one result bit per step: no division,
- * no floating point, the same steps for every input. */
+ * no floating point, exact. */
 static uint64_t num__isqrt64(uint64_t n)
 {
+    if (n == 0)
+        return 0;
     uint64_t root = 0;
-    uint64_t bit = (uint64_t)1 << 62;
-    while (bit > n)
-        bit >>= 2;
+    /* start at the highest even bit position not above n's top bit: the
+     * answer has half as many bits as n, so small inputs take few steps */
+    uint64_t bit = (uint64_t)1 << ((63 - __builtin_clzll(n)) & ~1);
     while (bit) {
         if (n >= root + bit) {
             n -= root + bit;

@@ -159,127 +159,6 @@ static void qemu_describe_exit(const struct board *b, char *out, size_t cap)
 
 /* ------------------------------------------------------- incoming frames */
 
-static void print_log_text(const uint8_t *p, size_t n)
-{
-    /* One output line per board line, so board text never runs into ours. */
-    size_t start = 0;
-    for (size_t i = 0; i <= n; i++) {
-        if (i == n || p[i] == '\n') {
-            if (i > start || i < n)
-                printf("board: %.*s\n", (int)(i - start), (const char *)p + start);
-            start = i + 1;
-        }
-    }
-}
-
-static void handle_hello(struct board *b, const struct link_frame *f)
-{
-    struct link_hello h;
-    if (f->length < LINK_HELLO_SIZE) {
-        fprintf(stderr, "links1: HELLO frame of %u bytes, want %d\n", f->length,
-                LINK_HELLO_SIZE);
-        b->hello_errors++;
-        return;
-    }
-    link_hello_get(f->payload, &h);
-    int expect_role = h.core >= ROLE_NC ? ROLE_NC : h.core;
-    const char *problem = NULL;
-    char why[160];
-    if (h.core >= b->opts.ncores) {
-        snprintf(why, sizeof why, "core number out of range (board has %d cores)",
-                 b->opts.ncores);
-        problem = why;
-    } else if (h.role != expect_role) {
-        snprintf(why, sizeof why, "role %u, want %d (%s)", h.role, expect_role,
-                 board_role_name(h.core));
-        problem = why;
-    } else if (h.ncores != b->opts.ncores) {
-        snprintf(why, sizeof why, "says the board has %u cores, QEMU was given %d",
-                 h.ncores, b->opts.ncores);
-        problem = why;
-    } else if (h.variant != board_arith_code(b->opts.arith)) {
-        snprintf(why, sizeof why, "runs arithmetic variant %u, want %d (%s)", h.variant,
-                 board_arith_code(b->opts.arith), b->opts.arith);
-        problem = why;
-    } else if (b->reported[h.core]) {
-        problem = "reported in twice";
-    }
-    if (problem) {
-        fprintf(stderr, "links1: bad report-in from core %u: %s\n", h.core, problem);
-        b->hello_errors++;
-        return;
-    }
-    b->reported[h.core] = 1;
-    b->reported_count++;
-    if (!b->opts.quiet)
-        printf("core %u %s reported in (mpidr 0x%08x)\n", h.core, board_role_name(h.core),
-               h.mpidr);
-}
-
-static const char *fault_kind_name(unsigned kind)
-{
-    switch (kind) {
-    case FAULT_UNDEF: return "undefined instruction";
-    case FAULT_PREFETCH_ABORT: return "prefetch abort";
-    case FAULT_DATA_ABORT: return "data abort";
-    case FAULT_PANIC: return "panic";
-    default: return "unknown fault kind";
-    }
-}
-
-static void handle_fault(struct board *b, const struct link_frame *f)
-{
-    struct link_fault ft;
-    if (f->length < LINK_FAULT_FIXED_SIZE) {
-        fprintf(stderr, "links1: FAULT frame of %u bytes, want at least %d\n", f->length,
-                LINK_FAULT_FIXED_SIZE);
-        memset(&ft, 0, sizeof ft);
-        ft.core = UINT16_MAX;
-    } else {
-        link_fault_get(f->payload, &ft);
-    }
-    if (b->nfaults < BOARD_MAX_FAULTS)
-        b->faults[b->nfaults] = ft;
-    b->nfaults++;
-    int textlen = f->length > LINK_FAULT_FIXED_SIZE ? f->length - LINK_FAULT_FIXED_SIZE : 0;
-    printf("core %u %s FAULT: %s at 0x%08x (pc 0x%08x, status 0x%08x)%s%.*s\n", ft.core,
-           ft.role == ROLE_DM ? "DM" : ft.role == ROLE_RC ? "RC" : "NC",
-           fault_kind_name(ft.kind), ft.addr, ft.pc, ft.status, textlen ? ": " : "", textlen,
-           (const char *)f->payload + LINK_FAULT_FIXED_SIZE);
-}
-
-/* Returns 0, or -1 when the queue is full (the board broke the window). */
-static int handle_frame(struct board *b, const struct link_frame *f)
-{
-    switch (f->type) {
-    case LINK_LOG:
-        if (!b->opts.quiet)
-            print_log_text(f->payload, f->length);
-        return 0;
-    case LINK_HELLO:
-        handle_hello(b, f);
-        return 0;
-    case LINK_FAULT:
-        handle_fault(b, f);
-        return 0;
-    default:
-        break;
-    }
-    if (b->queued >= BOARD_FRAME_QUEUE) {
-        fprintf(stderr, "links1: %d frames from the board wait unread (frame type %u "
-                "arrived): more than a transfer window, the board is not waiting for ACKs\n",
-                BOARD_FRAME_QUEUE, f->type);
-        return -1;
-    }
-    struct board_frame *q = &b->queue[b->queued++];
-    q->type = f->type;
-    q->flags = f->flags;
-    q->seq = f->seq;
-    q->length = f->length;
-    memcpy(q->payload, f->payload, f->length);
-    return 0;
-}
-
 /* The socket reached end-of-file or failed: QEMU is gone. */
 static int board_lost(struct board *b, const char *why)
 {
@@ -315,7 +194,7 @@ static int board_read_available(struct board *b)
         }
         for (ssize_t i = 0; i < n; i++) {
             struct link_frame f;
-            if (link_decoder_push(&b->dec, buf[i], &f) && handle_frame(b, &f) < 0)
+            if (link_decoder_push(&b->dec, buf[i], &f) && board_handle_frame(b, &f) < 0)
                 return -1;
         }
         fflush(stdout);

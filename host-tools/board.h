@@ -115,6 +115,11 @@ uint32_t board_report_link_errors(const struct board *b);
  * twice and after QEMU died. */
 int board_stop(struct board *b);
 
+/* Handles one decoded frame (used by the reader in board.c): prints LOG,
+ * checks and records HELLO, prints and records FAULT, queues the rest.
+ * Returns 0, or -1 when the queue is full (the board broke the window). */
+int board_handle_frame(struct board *b, const struct link_frame *f);
+
 /* Milliseconds on the monotonic clock. */
 long long board_now_ms(void);
 

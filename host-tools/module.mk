@@ -1,7 +1,8 @@
 # host-tools/: the links1 host tool, the instruction-counting QEMU plugin,
 # `make run`'s script.  (host-tools/scene/ adds its own sources.)
 HOST_TOOLS += links1
-links1_SRCS := host-tools/links1.c host-tools/board.c host-tools/board_opts.c \
+links1_SRCS := host-tools/links1.c host-tools/board.c host-tools/board_frames.c \
+	host-tools/board_opts.c \
 	host-tools/cmd_boot.c host-tools/cmd_selftest.c host-tools/selftest_checks.c \
 	host-tools/selftest_link.c host-tools/link_transfer.c host-tools/insn_report.c
 links1_ARITH := double
@@ -21,11 +22,11 @@ test_hostlink_SRCS := tests/host/test_hostlink.c
 test_hostlink_ARITH := double
 HOST_TESTS += test_hostlink_msgs
 test_hostlink_msgs_SRCS := tests/host/test_hostlink_msgs.c host-tools/board.c \
-	host-tools/board_opts.c
+	host-tools/board_frames.c host-tools/board_opts.c
 test_hostlink_msgs_ARITH := double
 HOST_TESTS += test_hostlink_transfer
 test_hostlink_transfer_SRCS := tests/host/test_hostlink_transfer.c host-tools/board.c \
-	host-tools/board_opts.c host-tools/link_transfer.c
+	host-tools/board_frames.c host-tools/board_opts.c host-tools/link_transfer.c
 test_hostlink_transfer_ARITH := double
 test_hostlink_transfer_LIBS := -lpthread
 

@@ -11,6 +11,8 @@
  * Must equal LINKS1_MAX_CORES in linker/virt-memory.ld. */
 #define MAX_CORES 256
 #define MIN_CORES 3 /* DM, RC and at least one NC */
+#define DM_CORE 0   /* core number of the DM */
+#define RC_CORE 1   /* core number of the RC */
 #define FIRST_NC 2  /* core number of the first NC */
 
 /* Cores per GICv3 affinity cluster on the virt board: core k has
@@ -52,5 +54,8 @@
  * 254-NC board finishes in seconds). */
 #define IMSU_TEST_PAIR_BYTES (1024 * 1024)
 #define IMSU_TEST_BCAST_BYTES (256 * 1024)
+
+/* Largest CMD_LINE_STRESS run the DM accepts (MiB). */
+#define STRESS_MAX_MIB 4096
 
 #endif

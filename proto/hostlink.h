@@ -96,6 +96,10 @@ enum link_fault_kind {
     FAULT_DATA_ABORT = 3,     /* data abort */
     FAULT_PANIC = 4,          /* software panic (kernel or driver check) */
 };
+/* CMD_FAULT_INJECT kinds beyond enum link_fault_kind: kernel checks that
+ * must panic (reported as FAULT_PANIC, the text naming the lock). */
+#define FAULT_INJECT_LOCK_TWICE 0x10  /* take a spinlock this core holds */
+#define FAULT_INJECT_UNLOCK_FREE 0x11 /* release a spinlock nobody holds */
 struct link_fault {
     uint16_t core;
     uint8_t role;

@@ -25,3 +25,6 @@ test_render_float_SRCS := tests/host/test_render.c
 test_render_float_ARITH := float
 test_render_fixed_SRCS := tests/host/test_render.c
 test_render_fixed_ARITH := fixed
+
+# Host speed per arithmetic (wall clock: `make bench`, never a test).
+BENCHES += render/bench-host.sh

@@ -22,7 +22,7 @@ const char *render_status_name(render_status_t status)
     case RENDER_ERR_DEPTH: return "max_depth above RENDER_MAX_DEPTH";
     case RENDER_ERR_CLUSTER: return "bad cluster parent, or nesting deeper than RENDER_MAX_CLUSTER_DEPTH";
     case RENDER_ERR_PRIM: return "primitive with a bad kind, cluster or material index";
-    case RENDER_ERR_DENSITY: return "density sphere components out of range or above RENDER_MAX_DENSITY_COMPONENTS";
+    case RENDER_ERR_DENSITY: return "density sphere: components out of range or above RENDER_MAX_DENSITY_COMPONENTS, or threshold <= 0";
     case RENDER_ERR_MAP: return "material map index, kind or size invalid (RENDER_MAX_MAP_SIZE)";
     case RENDER_ERR_KEY: return "cluster keys outside the scene's key array";
     case RENDER_ERR_CAMERA: return "camera eye equals look_at, or up is parallel to the view";
@@ -190,6 +190,7 @@ static render_status_t prep_check(const scene_t *s)
             return RENDER_ERR_PRIM;
         if (p->kind == SCENE_PRIM_DENSITY &&
             (p->shape.density.count < 1 || p->shape.density.count > RENDER_MAX_DENSITY_COMPONENTS ||
+             !num_gt(p->shape.density.threshold, NUM_ZERO) || /* the root finder needs > 0 */
              (uint64_t)p->shape.density.first + p->shape.density.count > s->density_component_count))
             return RENDER_ERR_DENSITY;
     }
@@ -197,7 +198,7 @@ static render_status_t prep_check(const scene_t *s)
 }
 
 /* Eye-space form of one primitive; to_eye/from_eye map its cluster. */
-static void prep_prim(const scene_prim_t *sp, uint32_t index, const scene_t *s, const xform_t *to_eye,
+static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame_t *f, const xform_t *to_eye,
                       const xform_t *from_eye, render_prim_t *p)
 {
     num_t lin[3][3];
@@ -245,7 +246,8 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const scene_t *s, 
     }
     default: { /* SCENE_PRIM_DENSITY */
         p->to_local = *from_eye;
-        p->components = &s->density_components[sp->shape.density.first];
+        p->components = &f->scene->density_components[sp->shape.density.first];
+        p->inv_radius2 = &f->density_inv_radius2[sp->shape.density.first];
         p->component_count = sp->shape.density.count;
         p->threshold = sp->shape.density.threshold;
         aabb_t b = prep_aabb_empty();
@@ -369,11 +371,12 @@ static void prep_group_prims(const scene_t *s, render_frame_t *f)
 size_t render_prepare_bytes(const scene_t *s)
 {
     size_t prims = s->prim_count ? s->prim_count : 1;
+    size_t comps = s->density_component_count ? s->density_component_count : 1;
     size_t n = sizeof(render_frame_t) + sizeof(render_cluster_t) * (size_t)s->cluster_count +
                sizeof(uint16_t) * (size_t)s->cluster_count + sizeof(render_prim_t) * prims +
-               sizeof(uint32_t) * prims;
+               sizeof(uint32_t) * prims + sizeof(num_t) * comps;
     size_t scratch = (2 * sizeof(xform_t) + 1) * (size_t)s->cluster_count;
-    return n + scratch + 8 * 64;
+    return n + scratch + 12 * 64; /* 9 allocations, each padded at most 64 */
 }
 
 render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *arena, render_frame_t **out)
@@ -389,8 +392,16 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     f->child_list = ARENA_NEW_ARRAY(arena, uint16_t, s->cluster_count);
     f->prims = ARENA_NEW_ARRAY(arena, render_prim_t, s->prim_count ? s->prim_count : 1);
     f->prim_list = ARENA_NEW_ARRAY(arena, uint32_t, s->prim_count ? s->prim_count : 1);
-    if (!f->clusters || !f->child_list || !f->prims || !f->prim_list)
+    uint32_t ncomp = s->density_component_count;
+    f->density_inv_radius2 = ARENA_NEW_ARRAY(arena, num_t, ncomp ? ncomp : 1);
+    if (!f->clusters || !f->child_list || !f->prims || !f->prim_list || !f->density_inv_radius2)
         return RENDER_ERR_ARENA;
+    /* (1/d)/d rather than 1/(d*d): d*d of a small radius would keep few
+     * significant bits in fixed point */
+    for (uint32_t k = 0; k < ncomp; k++) {
+        num_t d = s->density_components[k].radius;
+        f->density_inv_radius2[k] = num_div(num_recip(d), d);
+    }
     f->scene = s;
     f->frame_index = frame_index;
     f->options = s->options;
@@ -433,7 +444,7 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     }
     for (uint32_t i = 0; i < s->prim_count; i++) {
         const scene_prim_t *sp = &s->prims[i];
-        prep_prim(sp, i, s, &to_eye[sp->cluster], &from_eye[sp->cluster], &f->prims[i]);
+        prep_prim(sp, i, f, &to_eye[sp->cluster], &from_eye[sp->cluster], &f->prims[i]);
         if (vec3_is_sat(f->prims[i].bounds.lo) || vec3_is_sat(f->prims[i].bounds.hi))
             f->precision_lost = 1;
     }

@@ -199,12 +199,11 @@ static void prim_box_surface(const render_prim_t *p, hit_t *hit)
 
 /* -------------------------------------------------------- density sphere */
 
-num_t prim_density_field(num_t r2, num_t radius, num_t weight)
+num_t prim_density_field(num_t r2, num_t inv_radius2, num_t weight)
 {
-    num_t d2 = num_mul(radius, radius);
-    if (!num_lt(r2, d2))
+    num_t q = num_mul(r2, inv_radius2); /* (r/d)^2; a saturated r2 stays huge */
+    if (!num_lt(q, NUM_ONE))
         return NUM_ZERO;
-    num_t q = num_div(r2, d2); /* (r/d)^2 in [0,1) */
     if (!num_gt(num_mul_int(q, 9), NUM_ONE)) /* r <= d/3 */
         return num_mul(weight, num_sub(NUM_ONE, num_mul_int(q, 3)));
     num_t x = num_sub(NUM_ONE, num_sqrt(q)); /* 1 - r/d */
@@ -218,7 +217,7 @@ static num_t prim_density_excess(const render_prim_t *p, vec3_t q)
     for (uint16_t k = 0; k < p->component_count; k++) {
         const scene_density_component_t *c = &p->components[k];
         vec3_t r = vec3_sub(q, c->centre);
-        sum = num_add(sum, prim_density_field(vec3_dot(r, r), c->radius, c->weight));
+        sum = num_add(sum, prim_density_field(vec3_dot(r, r), p->inv_radius2[k], c->weight));
     }
     return sum;
 }
@@ -300,13 +299,13 @@ static void prim_density_surface(const render_prim_t *p, hit_t *hit)
     for (uint16_t k = 0; k < p->component_count; k++) {
         const scene_density_component_t *c = &p->components[k];
         vec3_t r = vec3_sub(q, c->centre);
-        num_t r2 = vec3_dot(r, r);
-        num_t d2 = num_mul(c->radius, c->radius);
-        if (!num_lt(r2, d2))
+        num_t q = num_mul(vec3_dot(r, r), p->inv_radius2[k]); /* (r/d)^2 */
+        if (!num_lt(q, NUM_ONE))
             continue;
+        num_t r2 = vec3_dot(r, r);
         num_t scale; /* -df/dr / r */
-        if (!num_gt(num_mul_int(r2, 9), d2)) {
-            scale = num_div(num_mul_int(c->weight, 6), d2);
+        if (!num_gt(num_mul_int(q, 9), NUM_ONE)) {
+            scale = num_mul(num_mul_int(c->weight, 6), p->inv_radius2[k]);
         } else {
             num_t rl = num_sqrt(r2);
             num_t x = num_sub(NUM_ONE, num_div(rl, c->radius));

@@ -37,7 +37,8 @@ void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit);
 /* Ray-box test: 1 if the ray meets box b at some t in [tmin, tmax]. */
 int prim_aabb_hit(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax);
 
-/* LINKS-1 density field of one component at squared distance r2. */
-num_t prim_density_field(num_t r2, num_t radius, num_t weight);
+/* LINKS-1 density field of one component of weight b at squared distance
+ * r2, given inv_radius2 = 1/d^2. */
+num_t prim_density_field(num_t r2, num_t inv_radius2, num_t weight);
 
 #endif

@@ -13,6 +13,10 @@
  * No global or static mutable state anywhere in render/ and fixed/: every
  * core may run these at once on shared memory.  A prepared frame is read-only
  * once render_prepare returns; each core keeps its own render_ctx_t.
+ * Memory: render_prepare_bytes(scene) of arena for the DM's frame; tracing
+ * allocates nothing but needs RENDER_STACK_BYTES(max_depth) of stack
+ * (render/limits.h).  Same scene, same arithmetic: the same pixels on any
+ * core, in any traversal mode (docs/renderer.md).
  */
 #ifndef LINKS1_RENDER_RENDER_H
 #define LINKS1_RENDER_RENDER_H
@@ -65,6 +69,7 @@ typedef struct {
     num_t tex_u[3], tex_v[3];
     /* DENSITY */
     const scene_density_component_t *components;
+    const num_t *inv_radius2;  /* 1/d^2 of each component, by render_prepare */
     uint16_t component_count;
     num_t threshold;
 } render_prim_t;
@@ -97,6 +102,8 @@ typedef struct {
     uint32_t prim_count;
     render_prim_t *prims;          /* index = scene prim index */
     uint32_t *prim_list;           /* prim indices, grouped by cluster */
+    num_t *density_inv_radius2;    /* 1/d^2 per scene density component:
+                                      the field then needs no division */
     uint8_t precision_lost;        /* 1 if preparing hit a fixed-point
                                       saturation (boxes are then unreliable) */
 } render_frame_t;
@@ -128,7 +135,8 @@ typedef enum {
     RENDER_ERR_CLUSTER,      /* bad parent index or nesting > RENDER_MAX_CLUSTER_DEPTH */
     RENDER_ERR_PRIM,         /* bad kind, cluster or material index */
     RENDER_ERR_DENSITY,      /* component range outside the scene's array,
-                                or more than RENDER_MAX_DENSITY_COMPONENTS */
+                                more than RENDER_MAX_DENSITY_COMPONENTS, or
+                                a threshold <= 0 */
     RENDER_ERR_MAP,          /* bad map index/kind/size */
     RENDER_ERR_KEY,          /* key range outside the scene's array */
     RENDER_ERR_CAMERA,       /* eye == look_at, or up parallel to the view */

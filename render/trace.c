@@ -90,9 +90,18 @@ static void trace_record(trace_walk_t *w, uint32_t prim, num_t t)
     c->count = n + 1;
 }
 
+/* A shadow ray that met an opaque object is done: its answer is 0
+ * whatever else it would cross. */
+static int trace_walk_done(const trace_walk_t *w)
+{
+    return w->mode == TRACE_COLLECT_SHADOW && w->cross->opaque;
+}
+
 static void trace_test_prim(trace_walk_t *w, uint32_t prim)
 {
     const render_prim_t *p = &w->ctx->frame->prims[prim];
+    if (trace_walk_done(w))
+        return;
     num_t tmax = w->mode == TRACE_NEAREST && w->nearest.found ? w->nearest.t : w->tmax;
     num_t t;
     w->ctx->stats.prim_tests++;
@@ -134,7 +143,7 @@ static void trace_cluster(trace_walk_t *w, uint32_t index)
 {
     const render_frame_t *f = w->ctx->frame;
     const render_cluster_t *c = &f->clusters[index];
-    if (!trace_box(w, &c->bounds))
+    if (trace_walk_done(w) || !trace_box(w, &c->bounds))
         return;
     trace_own_prims(w, c);
     for (uint32_t k = 0; k < c->child_count; k++)

@@ -18,6 +18,8 @@
 #include "kernel/kmem.h"
 #include "kernel/klog.h"
 #include "kernel/ktime.h"
+#include "kernel/memlayout.h"
+#include "kernel/psci.h"
 #include "kernel/ringbuf.h"
 #include "kernel/task.h"
 #include "proto/crc32.h"
@@ -27,13 +29,8 @@
 #include "roles/unit.h"
 #include "roles/unitmsg.h"
 
-#define DM_CORE 0
-#define DM_RC 1
 /* Queued frame record: u8 type, u8 flags, u16 seq, u16 length, payload. */
 #define DM_REC_HEADER 6
-#define PSCI_SYSTEM_OFF_FN 0x84000008u
-
-int psci_call(uint32_t fn, uint32_t a1, uint32_t a2, uint32_t a3);
 
 struct dm_frame {
     uint8_t type, flags;
@@ -135,10 +132,10 @@ static int dm_next_frame(uint64_t deadline)
 
 static int dm_rc_request(struct line_msg *m, uint16_t answer_type, uint32_t timeout_ms)
 {
-    int r = line_send(DM_RC, m, ktime_deadline_ms(timeout_ms));
+    int r = line_send(RC_CORE, m, ktime_deadline_ms(timeout_ms));
     if (r != LINE_OK)
         return r;
-    return selftest_recv_type(DM_RC, answer_type, m, ktime_deadline_ms(timeout_ms));
+    return selftest_recv_type(RC_CORE, answer_type, m, ktime_deadline_ms(timeout_ms));
 }
 
 static void dm_cmd_status(uint16_t cmd)
@@ -273,8 +270,6 @@ static void dm_cmd_imsu_test(uint16_t cmd)
     hostlink_result(cmd, LINK_OK, f, sizeof f);
 }
 
-#define DM_STRESS_MAX_MIB 4096u
-
 static void dm_cmd_line_stress(uint16_t cmd)
 {
     if (dm_frame.length < 2 + 4) {
@@ -283,9 +278,9 @@ static void dm_cmd_line_stress(uint16_t cmd)
         return;
     }
     uint32_t mib = wire_get_u32(dm_frame.payload + 2);
-    if (mib == 0 || mib > DM_STRESS_MAX_MIB) {
+    if (mib == 0 || mib > STRESS_MAX_MIB) {
         hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_LINE_STRESS: %u MiB is outside 1..%u",
-                       (unsigned)mib, (unsigned)DM_STRESS_MAX_MIB);
+                       (unsigned)mib, (unsigned)STRESS_MAX_MIB);
         return;
     }
     /* Both directions of every live line carry an equal share. */
@@ -299,16 +294,16 @@ static void dm_cmd_line_stress(uint16_t cmd)
     struct line_msg *m = &dm_msg;
     msg_set(m, MSG_STRESS, 4);
     wire_put_u32(m->payload, msgs);
-    int r = line_send(DM_RC, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
+    int r = line_send(RC_CORE, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
     if (r != LINE_OK) {
         hostlink_error(cmd, LINK_ERR_TIMEOUT, "stress: cannot reach the RC (%s)", line_strerror(r));
         return;
     }
     struct stress_stream s[2];
-    stress_stream_init(&s[0], DM_RC, 1, msgs);
-    stress_stream_init(&s[1], DM_RC, 0, msgs);
+    stress_stream_init(&s[0], RC_CORE, 1, msgs);
+    stress_stream_init(&s[1], RC_CORE, 0, msgs);
     int stalled = stress_run(s, 2);
-    r = selftest_recv_type(DM_RC, MSG_STRESS_REPORT, m, ktime_deadline_ms(STRESS_STALL_MS * 2));
+    r = selftest_recv_type(RC_CORE, MSG_STRESS_REPORT, m, ktime_deadline_ms(STRESS_STALL_MS * 2));
     if (r != LINE_OK) {
         hostlink_error(cmd, LINK_ERR_TIMEOUT, "stress: no report from the RC (%s)",
                        line_strerror(r));
@@ -438,9 +433,9 @@ static void dm_cmd_fault_inject(uint16_t cmd)
     }
     uint16_t core = wire_get_u16(dm_frame.payload + 2);
     uint8_t kind = wire_get_u8(dm_frame.payload + 4);
-    if (core >= board_ncores || kind < FAULT_UNDEF || kind > FAULT_PANIC) {
+    if (core >= board_ncores || !selftest_fault_kind_valid(kind)) {
         hostlink_error(cmd, LINK_ERR_BAD_ARGS,
-                       "CMD_FAULT_INJECT: core %u (board has %u) or kind %u (1..4) out of range",
+                       "CMD_FAULT_INJECT: core %u (board has %u) or kind %u (1..4, 0x10, 0x11) out of range",
                        (unsigned)core, (unsigned)board_ncores, (unsigned)kind);
         return;
     }
@@ -473,7 +468,7 @@ static void dm_cmd_shutdown(uint16_t cmd)
 {
     hostlink_result(cmd, LINK_OK, NULL, 0);
     uart_tx_drain();
-    psci_call(PSCI_SYSTEM_OFF_FN, 0, 0, 0);
+    psci_call(PSCI_SYSTEM_OFF, 0, 0, 0);
     hostlink_error(cmd, LINK_ERR_PROTOCOL, "PSCI SYSTEM_OFF returned");
 }
 

@@ -13,11 +13,10 @@
 #include "roles/unit.h"
 #include "roles/unitmsg.h"
 
-#define NC_RC 1 /* the RC's core: an NC's only line */
 
 static void nc_send(struct line_msg *m)
 {
-    int r = line_send(NC_RC, m, 0);
+    int r = line_send(RC_CORE, m, 0);
     if (r != LINE_OK)
         klog("send to RC failed: %s", line_strerror(r));
 }
@@ -52,8 +51,8 @@ static void nc_stress(struct line_msg *m)
 {
     uint32_t msgs = wire_get_u32(m->payload);
     struct stress_stream s[2];
-    stress_stream_init(&s[0], NC_RC, 0, msgs);
-    stress_stream_init(&s[1], NC_RC, 1, msgs);
+    stress_stream_init(&s[0], RC_CORE, 0, msgs);
+    stress_stream_init(&s[1], RC_CORE, 1, msgs);
     if (stress_run(s, 2) != 0)
         klog("stress: stalled with %u to receive, %u to send", (unsigned)s[0].left,
              (unsigned)s[1].left);
@@ -70,7 +69,7 @@ void nc_main(void *arg)
     static struct line_msg msgs[MAX_CORES];
     struct line_msg *m = &msgs[mycpu()->core];
     for (;;) {
-        int r = line_recv(NC_RC, m, 0);
+        int r = line_recv(RC_CORE, m, 0);
         if (r != LINE_OK) {
             klog("line from RC: %s", line_strerror(r));
             continue;

@@ -14,8 +14,6 @@
 #include "roles/unit.h"
 #include "roles/unitmsg.h"
 
-#define RC_CORE 1
-#define RC_DM 0
 
 static void rc_send(uint32_t peer, struct line_msg *m)
 {
@@ -45,7 +43,7 @@ static void rc_ping_ncs(struct line_msg *m)
     wire_put_u32(m->payload, ok);
     wire_put_u32(m->payload + 4, n - FIRST_NC);
     wire_put_u32(m->payload + 8, first_bad);
-    rc_send(RC_DM, m);
+    rc_send(DM_CORE, m);
 }
 
 /* The DM swapped a block to us: check it, show that misuse is refused,
@@ -76,8 +74,8 @@ static void rc_imsu_pair(struct line_msg *m)
         mine = crc32(w, bytes);
         /* Still inside the write: the DM's swap must be refused now. */
         msg_set(m, MSG_IMSU_MIDWRITE, 0);
-        rc_send(RC_DM, m);
-        r = selftest_recv_type(RC_DM, MSG_IMSU_MIDWRITE_SEEN, m,
+        rc_send(DM_CORE, m);
+        r = selftest_recv_type(DM_CORE, MSG_IMSU_MIDWRITE_SEEN, m,
                                ktime_deadline_ms(REPLY_TIMEOUT_MS));
         if (r != LINE_OK || (int32_t)wire_get_u32(m->payload) != IMSU_ERR_PEER_WRITING)
             misuse_failed++;
@@ -91,7 +89,7 @@ static void rc_imsu_pair(struct line_msg *m)
     wire_put_u32(m->payload + 4, mine);
     wire_put_u32(m->payload + 8, misuse_failed);
     wire_put_u32(m->payload + 12, got == want);
-    rc_send(RC_DM, m);
+    rc_send(DM_CORE, m);
 }
 
 static void rc_imsu_bcast(struct line_msg *m)
@@ -141,7 +139,7 @@ static void rc_imsu_bcast(struct line_msg *m)
     wire_put_u32(m->payload, ok);
     wire_put_u32(m->payload + 4, n - FIRST_NC);
     wire_put_u32(m->payload + 8, misuse_failed);
-    rc_send(RC_DM, m);
+    rc_send(DM_CORE, m);
 }
 
 static void rc_stress(struct line_msg *m)
@@ -149,8 +147,8 @@ static void rc_stress(struct line_msg *m)
     static struct stress_stream s[2 * MAX_CORES];
     uint32_t msgs = wire_get_u32(m->payload);
     uint32_t n = 0, skipped = 0;
-    stress_stream_init(&s[n++], RC_DM, 0, msgs);
-    stress_stream_init(&s[n++], RC_DM, 1, msgs);
+    stress_stream_init(&s[n++], DM_CORE, 0, msgs);
+    stress_stream_init(&s[n++], DM_CORE, 1, msgs);
     for (uint32_t k = FIRST_NC; k < board_ncores; k++) {
         if (unit_is_halted(k)) {
             skipped++;
@@ -187,7 +185,7 @@ static void rc_stress(struct line_msg *m)
     wire_put_u64(m->payload, bytes);
     wire_put_u32(m->payload + 8, errors);
     wire_put_u32(m->payload + 12, skipped);
-    rc_send(RC_DM, m);
+    rc_send(DM_CORE, m);
 }
 
 static void rc_fault(struct line_msg *m)
@@ -197,7 +195,7 @@ static void rc_fault(struct line_msg *m)
     if (core == RC_CORE) {
         msg_set(m, MSG_FAULT_ACK, 4);
         wire_put_u32(m->payload, 0);
-        rc_send(RC_DM, m);
+        rc_send(DM_CORE, m);
         selftest_fault_now(kind);
         return;
     }
@@ -206,7 +204,7 @@ static void rc_fault(struct line_msg *m)
         r = selftest_recv_type(core, MSG_FAULT_ACK, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
     msg_set(m, MSG_FAULT_ACK, 4);
     wire_put_u32(m->payload, (uint32_t)r);
-    rc_send(RC_DM, m);
+    rc_send(DM_CORE, m);
 }
 
 void rc_main(void *arg)
@@ -215,7 +213,7 @@ void rc_main(void *arg)
     static struct line_msg msg;
     struct line_msg *m = &msg;
     for (;;) {
-        int r = line_recv(RC_DM, m, 0);
+        int r = line_recv(DM_CORE, m, 0);
         if (r != LINE_OK) {
             klog("line from DM: %s", line_strerror(r));
             continue;
@@ -223,7 +221,7 @@ void rc_main(void *arg)
         switch (m->type) {
         case MSG_PING:
             m->type = MSG_PONG;
-            rc_send(RC_DM, m);
+            rc_send(DM_CORE, m);
             break;
         case MSG_PING_NCS:
             rc_ping_ncs(m);

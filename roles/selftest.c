@@ -9,6 +9,7 @@
 #include "kernel/ktime.h"
 #include "kernel/memlayout.h"
 #include "kernel/panic.h"
+#include "kernel/spinlock.h"
 #include "kernel/task.h"
 #include "proto/hostlink.h"
 #include "roles/unitmsg.h"
@@ -111,6 +112,7 @@ int stress_run(struct stress_stream *s, uint32_t n)
             return 0;
         if (moved) {
             last = ktime_now();
+            task_yield(); /* let this core's other tasks (the DM's link) run */
             continue;
         }
         uint32_t mark = task_event_mark();
@@ -127,6 +129,12 @@ int stress_run(struct stress_stream *s, uint32_t n)
             return -1;
         task_wait(mark, last + stall);
     }
+}
+
+int selftest_fault_kind_valid(uint8_t kind)
+{
+    return (kind >= FAULT_UNDEF && kind <= FAULT_PANIC) || kind == FAULT_INJECT_LOCK_TWICE ||
+           kind == FAULT_INJECT_UNLOCK_FREE;
 }
 
 void selftest_fault_now(uint8_t kind)
@@ -146,7 +154,21 @@ void selftest_fault_now(uint8_t kind)
     }
     case FAULT_PANIC:
         panic("fault injected by the host (CMD_FAULT_INJECT)");
+    case FAULT_INJECT_LOCK_TWICE: {
+        struct spinlock l;
+        spin_init(&l, "selftest_twice");
+        spin_lock(&l);
+        spin_lock(&l); /* must panic: this core holds it */
+        break;
     }
+    case FAULT_INJECT_UNLOCK_FREE: {
+        struct spinlock l;
+        spin_init(&l, "selftest_free");
+        spin_unlock(&l); /* must panic: nobody holds it */
+        break;
+    }
+    }
+    panic("selftest_fault_now: kind %u did not fault", (unsigned)kind);
 }
 
 int selftest_recv_type(uint32_t peer, uint16_t type, struct line_msg *m,

@@ -30,9 +30,11 @@ void stress_stream_init(struct stress_stream *s, uint32_t peer, int sending,
  * moved for STRESS_STALL_MS (a peer died): the streams say how far they got. */
 int stress_run(struct stress_stream *s, uint32_t n);
 
-/* Makes this core fault now with enum link_fault_kind kind; returns only
- * for an unknown kind. */
-void selftest_fault_now(uint8_t kind);
+/* Makes this core fault now with enum link_fault_kind kind, or one of the
+ * FAULT_INJECT_* spinlock misuses; never returns. */
+void selftest_fault_now(uint8_t kind) __attribute__((noreturn));
+/* 1 if kind is one selftest_fault_now knows. */
+int selftest_fault_kind_valid(uint8_t kind);
 
 /* Small helpers for message payloads. */
 void msg_set(struct line_msg *m, uint16_t type, uint16_t len);

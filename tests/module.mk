@@ -2,3 +2,18 @@
 HOST_TESTS += test_crc32
 test_crc32_SRCS := tests/host/test_crc32.c
 test_crc32_ARITH := double
+
+# RC area schedules (roles/areas.c): pure, so tested on the host.
+HOST_TESTS += test_areas
+test_areas_SRCS := tests/host/test_areas.c roles/areas.c
+test_areas_ARITH := double
+
+# Data collector FIFO, frame memory and fw_cfg/ramfb formats
+# (drivers/framemem/): the hardware-free parts, tested on the host.
+HOST_TESTS += test_framemem test_fwcfg
+test_framemem_SRCS := tests/host/test_framemem.c drivers/framemem/fm.c \
+	drivers/framemem/dc_ring.c
+test_framemem_ARITH := double
+test_framemem_LIBS := -lpthread
+test_fwcfg_SRCS := tests/host/test_fwcfg.c drivers/framemem/fwcfg_format.c
+test_fwcfg_ARITH := double

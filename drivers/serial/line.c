@@ -37,9 +37,9 @@ void line_init_all(uint32_t ncores)
               (unsigned)(__lines_end - __lines_start));
     for (uint32_t i = 0; i < n; i++) {
         struct line *l = &lines[i];
-        /* Line 0: DM(0)<->RC(1); line i: RC(1)<->NC core i+1. */
-        l->end[0] = i == 0 ? 0 : 1;
-        l->end[1] = i == 0 ? 1 : i + 1;
+        /* Line 0: DM<->RC; line i: RC<->NC core i+1. */
+        l->end[0] = i == 0 ? DM_CORE : RC_CORE;
+        l->end[1] = i == 0 ? RC_CORE : i + 1;
         for (int d = 0; d < 2; d++) {
             uint8_t *mem = (uint8_t *)__lines_start + (2u * i + (uint32_t)d) * LINE_RING_SIZE;
             ringbuf_init(&l->dir[d].ring, mem, LINE_RING_SIZE);
@@ -63,11 +63,11 @@ static int line_dirs(uint32_t peer, struct line_dir **out, struct line_dir **in)
 {
     uint32_t me = mycpu()->core;
     uint32_t idx;
-    if ((me == 0 && peer == 1) || (me == 1 && peer == 0))
+    if ((me == DM_CORE && peer == RC_CORE) || (me == RC_CORE && peer == DM_CORE))
         idx = 0;
-    else if (me == 1 && peer >= FIRST_NC && peer < board_ncores)
+    else if (me == RC_CORE && peer >= FIRST_NC && peer < board_ncores)
         idx = peer - 1;
-    else if (peer == 1 && me >= FIRST_NC)
+    else if (peer == RC_CORE && me >= FIRST_NC)
         idx = me - 1;
     else
         return LINE_ERR_NO_LINE;

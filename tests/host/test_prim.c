@@ -184,7 +184,7 @@ static void test_box_rotated(void)
 
 static void test_density_field(void)
 {
-    num_t d = num_from_double(3), b = num_from_double(2);
+    num_t d = num_from_double(1.0 / 9), b = num_from_double(2); /* 1/d^2 for d = 3 */
     /* r = 0: b; r = 1 = d/3: b(1 - 1/3) = 4/3, (3b/2)(2/3)^2 = 4/3 too */
     CHECK_NEAR(num_to_double(prim_density_field(NUM_ZERO, d, b)), 2.0, TOL);
     CHECK_NEAR(num_to_double(prim_density_field(num_from_double(1), d, b)), 4.0 / 3, TOL);

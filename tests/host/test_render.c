@@ -405,6 +405,9 @@ static void test_limits_and_errors(void)
     ts.clusters[1].local.m[1][1] = NUM_ZERO;
     CHECK_EQ_INT(render_prepare(&ts.scene, 0, &ts.arena, &f), RENDER_ERR_SINGULAR);
     busy_scene();
+    ts.prims[ts.scene.prim_count - 1].shape.density.threshold = NUM_ZERO;
+    CHECK_EQ_INT(render_prepare(&ts.scene, 0, &ts.arena, &f), RENDER_ERR_DENSITY);
+    busy_scene();
     ts.materials[1].colour_map = 3;
     CHECK_EQ_INT(render_prepare(&ts.scene, 0, &ts.arena, &f), RENDER_ERR_MAP);
     CHECK(render_status_name(RENDER_ERR_MAP)[0] != 0);

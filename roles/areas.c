@@ -1,0 +1,239 @@
+/* areas.c: the RC's screen-area schedules (see areas.h, docs/areas.md). */
+#include "roles/areas.h"
+
+#include <stddef.h>
+#include <string.h>
+
+/* floor(sqrt(v)), bit by bit: exact for any 64-bit v, no floating point (the
+ * fixed-point firmware has none to spare). */
+static uint64_t areas_isqrt(uint64_t v)
+{
+    uint64_t root = 0;
+    uint64_t bit = 1ull << 62;
+    while (bit > v)
+        bit >>= 2;
+    while (bit != 0) {
+        if (v >= root + bit) {
+            v -= root + bit;
+            root = (root >> 1) + bit;
+        } else {
+            root >>= 1;
+        }
+        bit >>= 2;
+    }
+    return root;
+}
+
+static uint32_t areas_clamp(uint32_t v, uint32_t lo, uint32_t hi)
+{
+    return v < lo ? lo : (v > hi ? hi : v);
+}
+
+static uint32_t areas_dist(uint32_t a, uint32_t b)
+{
+    return a > b ? a - b : b - a;
+}
+
+/* Bands of scanlines for a grid of k areas on a width x height screen.
+ * Square-ish areas need bands of about sqrt(k * height / width); a band count
+ * that divides k gives every band the same number of areas (the paper's
+ * 32x32 grid), so the nearest divisor is taken when it is within a factor 2
+ * of the ideal (on a tie the larger: wider areas clip better in Y), else
+ * the ideal itself with bands of k/bands areas rounded up or down.
+ * Bounds: every band at least one scanline (bands <= height), no band with
+ * more areas than pixels across (bands >= k / width). */
+static uint32_t areas_grid_bands(uint32_t width, uint32_t height, uint32_t k)
+{
+    uint32_t lo = (uint32_t)(((uint64_t)k + width - 1) / width);
+    uint32_t hi = k < height ? k : height;
+    uint64_t want = (uint64_t)k * height; /* ideal^2 * width */
+    uint32_t r0 = (uint32_t)areas_isqrt(want / width);
+    /* Round to the nearer of r0 and r0 + 1 by comparing squares. */
+    uint64_t below = want - (uint64_t)r0 * r0 * width;
+    uint64_t above = (uint64_t)(r0 + 1) * (r0 + 1) * width - want;
+    if (above < below)
+        r0++;
+    r0 = areas_clamp(r0, lo, hi);
+
+    uint32_t best = 0;
+    for (uint32_t r = lo; r <= hi; r++)
+        if (k % r == 0 && (best == 0 || areas_dist(r, r0) <= areas_dist(best, r0)))
+            best = r;
+    if (best != 0 && 2 * best >= r0 && best <= 2 * r0)
+        return best;
+    return r0;
+}
+
+/* Smallest divisor of width that is >= want (want <= width), so that a
+ * scanline cut in pieces of that width has no short leftover piece. */
+static uint32_t areas_piece_width(uint32_t width, uint32_t want)
+{
+    uint32_t d = want == 0 ? 1 : want;
+    while (width % d != 0)
+        d++;
+    return d;
+}
+
+int areas_init(struct areas *s, enum areas_mode mode, uint32_t width, uint32_t height,
+               uint32_t ncs, uint32_t k)
+{
+    memset(s, 0, sizeof *s);
+    if (mode != AREAS_STATIC && mode != AREAS_DYNAMIC && mode != AREAS_DECREASING)
+        return AREAS_ERR_MODE;
+    if (width == 0 || height == 0 || width > AREAS_MAX_DIM || height > AREAS_MAX_DIM)
+        return AREAS_ERR_SIZE;
+    if (ncs == 0)
+        return AREAS_ERR_NCS;
+
+    uint32_t pixels = width * height; /* <= 2^24 by AREAS_MAX_DIM */
+    s->mode = mode;
+    s->width = width;
+    s->height = height;
+    s->ncs = ncs;
+    s->k = mode == AREAS_STATIC ? ncs : (k == 0 ? AREAS_DEFAULT_K : k);
+    if (s->k > pixels)
+        s->k = pixels;
+    s->pixels_left = pixels;
+    if (mode == AREAS_DECREASING)
+        s->min_pixels = (pixels + s->k - 1) / s->k;
+    else
+        s->bands = areas_grid_bands(width, height, s->k);
+    return AREAS_OK;
+}
+
+/* Area col of band: bands split the scanlines and each band's share of the k
+ * areas evenly, cutting at floor(total * i / parts). */
+static int areas_next_grid(struct areas *s, struct area *a)
+{
+    if (s->band >= s->bands)
+        return 0;
+    uint32_t b = s->band;
+    uint32_t first = (uint32_t)((uint64_t)s->k * b / s->bands);
+    uint32_t in_band = (uint32_t)((uint64_t)s->k * (b + 1) / s->bands) - first;
+    uint32_t y0 = s->height * b / s->bands;
+    uint32_t y1 = s->height * (b + 1) / s->bands;
+    uint32_t x0 = s->width * s->col / in_band;
+    uint32_t x1 = s->width * (s->col + 1) / in_band;
+    a->x = x0;
+    a->y = y0;
+    a->w = x1 - x0;
+    a->h = y1 - y0;
+    if (++s->col == in_band) {
+        s->col = 0;
+        s->band++;
+    }
+    return 1;
+}
+
+/* Guided self-scheduling in two shapes.  The target size t never grows
+ * (pixels_left only shrinks), so neither do the areas:
+ *   - at a scanline start with t >= width: floor(t / width) whole scanlines;
+ *   - at a scanline start with t < width: the scanline is cut into pieces of
+ *     the smallest divisor of width >= t, all equally wide; the width is
+ *     chosen only at scanline starts, so a scanline never ends on a short
+ *     piece that a wider one would follow. */
+static int areas_next_decreasing(struct areas *s, struct area *a)
+{
+    if (s->pixels_left == 0)
+        return 0;
+    uint64_t share = (uint64_t)AREAS_GUIDED_FACTOR * s->ncs;
+    uint32_t t = (uint32_t)((s->pixels_left + share - 1) / share);
+    if (t < s->min_pixels)
+        t = s->min_pixels;
+
+    if (s->next_x == 0 && t >= s->width) {
+        uint32_t lines = t / s->width;
+        uint32_t left = s->height - s->next_y;
+        if (lines > left)
+            lines = left;
+        a->x = 0;
+        a->y = s->next_y;
+        a->w = s->width;
+        a->h = lines;
+        s->next_y += lines;
+        s->pixels_left -= lines * s->width;
+        return 1;
+    }
+    if (s->next_x == 0)
+        s->piece = areas_piece_width(s->width, t);
+    a->x = s->next_x;
+    a->y = s->next_y;
+    a->w = s->piece;
+    a->h = 1;
+    s->pixels_left -= s->piece;
+    s->next_x += s->piece;
+    if (s->next_x == s->width) {
+        s->next_x = 0;
+        s->next_y++;
+    }
+    return 1;
+}
+
+int areas_next(struct areas *s, struct area *a)
+{
+    int got = s->mode == AREAS_DECREASING ? areas_next_decreasing(s, a)
+                                          : areas_next_grid(s, a);
+    s->handed += (uint32_t)got;
+    return got;
+}
+
+uint32_t areas_count(const struct areas *s)
+{
+    if (s->mode != AREAS_DECREASING)
+        return s->k;
+    /* No closed form: replay the schedule from its start. */
+    struct areas replay;
+    struct area a;
+    uint32_t n = 0;
+    if (areas_init(&replay, s->mode, s->width, s->height, s->ncs, s->k) != AREAS_OK)
+        return 0;
+    while (areas_next(&replay, &a))
+        n++;
+    return n;
+}
+
+uint32_t areas_handed(const struct areas *s)
+{
+    return s->handed;
+}
+
+static const char *const areas_mode_names[] = {
+    [AREAS_STATIC] = "static",
+    [AREAS_DYNAMIC] = "dynamic",
+    [AREAS_DECREASING] = "decreasing",
+};
+
+const char *areas_mode_name(enum areas_mode mode)
+{
+    if ((unsigned)mode >= sizeof areas_mode_names / sizeof areas_mode_names[0])
+        return "unknown";
+    return areas_mode_names[mode];
+}
+
+int areas_mode_parse(const char *name, enum areas_mode *mode)
+{
+    for (size_t i = 0; i < sizeof areas_mode_names / sizeof areas_mode_names[0]; i++) {
+        if (strcmp(name, areas_mode_names[i]) == 0) {
+            *mode = (enum areas_mode)i;
+            return AREAS_OK;
+        }
+    }
+    return AREAS_ERR_MODE;
+}
+
+const char *areas_strerror(int status)
+{
+    switch (status) {
+    case AREAS_OK:
+        return "ok";
+    case AREAS_ERR_MODE:
+        return "unknown balancing mode (want static, dynamic or decreasing)";
+    case AREAS_ERR_SIZE:
+        _Static_assert(AREAS_MAX_DIM == 4096u, "update the message below");
+        return "screen width and height must be 1..4096 (AREAS_MAX_DIM)";
+    case AREAS_ERR_NCS:
+        return "at least one NC is needed";
+    default:
+        return "unknown areas error";
+    }
+}

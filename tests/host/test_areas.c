@@ -1,0 +1,271 @@
+/* test_areas.c: the RC's area schedules cover the screen exactly once,
+ * stay inside it, have the sizes each schedule promises, and decreasing
+ * areas never grow. */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "roles/areas.h"
+#include "tests/check.h"
+
+/* Summary of one schedule run by areas_walk. */
+struct walk {
+    uint32_t areas;        /* areas handed out */
+    uint32_t min_px, max_px; /* smallest and largest area, pixels */
+    uint32_t first_px, last_px;
+    int grew;              /* an area larger than the one before */
+    struct area first, last;
+};
+
+/* Runs a schedule to its end and checks the invariants every mode keeps:
+ * each area non-empty and inside the screen, every pixel covered exactly
+ * once, areas_count and areas_handed agreeing with what came out.  Returns
+ * 0 if the schedule could not start. */
+static int areas_walk(enum areas_mode mode, uint32_t w, uint32_t h, uint32_t ncs,
+                      uint32_t k, struct walk *out)
+{
+    struct areas s;
+    struct area a;
+    char what[160];
+    int rc = areas_init(&s, mode, w, h, ncs, k);
+    snprintf(what, sizeof what, "%s %ux%u ncs=%u k=%u: init %s", areas_mode_name(mode), w,
+             h, ncs, k, areas_strerror(rc));
+    if (rc != AREAS_OK) {
+        check_fail(__FILE__, __LINE__, what);
+        return 0;
+    }
+    uint8_t *seen = calloc((size_t)w * h, 1);
+    memset(out, 0, sizeof *out);
+    out->min_px = UINT32_MAX;
+    int bad_rect = 0, overlap = 0;
+    uint32_t prev = UINT32_MAX;
+    while (areas_next(&s, &a)) {
+        uint32_t px = a.w * a.h;
+        if (a.w == 0 || a.h == 0 || a.x >= w || a.y >= h || a.w > w - a.x ||
+            a.h > h - a.y) {
+            bad_rect = 1;
+            break;
+        }
+        for (uint32_t y = a.y; y < a.y + a.h; y++)
+            for (uint32_t x = a.x; x < a.x + a.w; x++)
+                if (seen[(size_t)y * w + x]++)
+                    overlap = 1;
+        if (out->areas == 0) {
+            out->first = a;
+            out->first_px = px;
+        }
+        out->last = a;
+        out->last_px = px;
+        if (px > prev)
+            out->grew = 1;
+        prev = px;
+        if (px < out->min_px)
+            out->min_px = px;
+        if (px > out->max_px)
+            out->max_px = px;
+        out->areas++;
+    }
+    int holes = 0;
+    for (size_t i = 0; i < (size_t)w * h; i++)
+        if (seen[i] == 0)
+            holes = 1;
+    free(seen);
+    if (bad_rect || overlap || holes || areas_count(&s) != out->areas ||
+        areas_handed(&s) != out->areas || areas_next(&s, &a) != 0) {
+        snprintf(what, sizeof what,
+                 "%s %ux%u ncs=%u k=%u: outside=%d overlap=%d holes=%d count=%u walked=%u",
+                 areas_mode_name(mode), w, h, ncs, k, bad_rect, overlap, holes,
+                 areas_count(&s), out->areas);
+        check_fail(__FILE__, __LINE__, what);
+    }
+    return 1;
+}
+
+static const uint32_t sizes[][2] = {
+    {1, 1},   {1, 7},    {7, 1},    {2, 2},     {3, 5},    {17, 13},
+    {13, 17}, {97, 3},   {3, 97},   {509, 1},   {1, 509},  {64, 64},
+    {320, 200}, {511, 479}, {512, 480}, {640, 480}, {1024, 1024}, {4096, 2},
+};
+#define NSIZES (sizeof sizes / sizeof sizes[0])
+static const uint32_t ncs_list[] = {1, 2, 3, 8, 64, 254};
+#define NNCS (sizeof ncs_list / sizeof ncs_list[0])
+static const uint32_t k_list[] = {0, 1, 7, 64, 1024, 2400, 1u << 22};
+#define NK (sizeof k_list / sizeof k_list[0])
+
+/* Static: one area per NC (fewer only when the screen has fewer pixels). */
+static void test_static_covers_one_area_per_nc(void)
+{
+    struct walk wk;
+    for (size_t i = 0; i < NSIZES; i++)
+        for (size_t j = 0; j < NNCS; j++) {
+            uint32_t w = sizes[i][0], h = sizes[i][1], n = ncs_list[j];
+            if (!areas_walk(AREAS_STATIC, w, h, n, 0, &wk))
+                continue;
+            uint32_t want = n < w * h ? n : w * h;
+            CHECK_EQ_INT(wk.areas, want);
+        }
+}
+
+/* Dynamic: exactly k areas (k = 0 is the default), clamped to the pixels. */
+static void test_dynamic_covers_k_areas(void)
+{
+    struct walk wk;
+    for (size_t i = 0; i < NSIZES; i++)
+        for (size_t j = 0; j < NK; j++) {
+            uint32_t w = sizes[i][0], h = sizes[i][1];
+            uint32_t k = k_list[j] == 0 ? AREAS_DEFAULT_K : k_list[j];
+            if (!areas_walk(AREAS_DYNAMIC, w, h, 8, k_list[j], &wk))
+                continue;
+            CHECK_EQ_INT(wk.areas, k < w * h ? k : w * h);
+        }
+}
+
+/* The paper's grids on 512x480: 64 = 8x8 areas of 64x60, 1024 = 32x32 of
+ * 16x15, all equal. */
+static void test_dynamic_paper_grids_are_equal(void)
+{
+    struct walk wk;
+    if (areas_walk(AREAS_DYNAMIC, 512, 480, 64, 64, &wk)) {
+        CHECK_EQ_INT(wk.first.w, 64);
+        CHECK_EQ_INT(wk.first.h, 60);
+        CHECK_EQ_INT(wk.min_px, wk.max_px);
+    }
+    if (areas_walk(AREAS_DYNAMIC, 512, 480, 64, 1024, &wk)) {
+        CHECK_EQ_INT(wk.first.w, 16);
+        CHECK_EQ_INT(wk.first.h, 15);
+        CHECK_EQ_INT(wk.min_px, wk.max_px);
+        CHECK_EQ_INT(wk.last.x, 496);
+        CHECK_EQ_INT(wk.last.y, 465);
+    }
+}
+
+/* Grid areas are nearly equal: the largest at most twice the smallest once
+ * areas are a few pixels each, and raster order (first at the origin). */
+static void test_grid_areas_nearly_equal(void)
+{
+    struct walk wk;
+    for (size_t i = 0; i < NSIZES; i++) {
+        uint32_t w = sizes[i][0], h = sizes[i][1];
+        if (!areas_walk(AREAS_DYNAMIC, w, h, 1, 64, &wk))
+            continue;
+        CHECK(wk.first.x == 0 && wk.first.y == 0);
+        if ((uint64_t)w * h >= 64 * 16 && w >= 8 && h >= 8)
+            CHECK(wk.max_px <= 2 * wk.min_px);
+    }
+}
+
+/* Decreasing: full coverage for every size, NC count and bound; sizes never
+ * grow; no area below the k-grid's area size. */
+static void test_decreasing_never_grows(void)
+{
+    struct walk wk;
+    for (size_t i = 0; i < NSIZES; i++)
+        for (size_t j = 0; j < NNCS; j++)
+            for (size_t m = 0; m < NK; m++) {
+                uint32_t w = sizes[i][0], h = sizes[i][1];
+                if ((uint64_t)w * h > 300000 && m % 3 != 0)
+                    continue; /* big screens: a subset keeps the test quick */
+                if (!areas_walk(AREAS_DECREASING, w, h, ncs_list[j], k_list[m], &wk))
+                    continue;
+                if (wk.grew) {
+                    char msg[120];
+                    snprintf(msg, sizeof msg, "%ux%u ncs=%u k=%u: an area grew", w, h,
+                             ncs_list[j], k_list[m]);
+                    check_fail(__FILE__, __LINE__, msg);
+                }
+                uint32_t k = k_list[m] == 0 ? AREAS_DEFAULT_K : k_list[m];
+                if (k > w * h)
+                    k = w * h;
+                uint32_t floor_px = (w * h + k - 1) / k;
+                /* Pieces of a scanline are at least floor_px wide, and
+                 * bands at least a scanline, when a scanline holds
+                 * floor_px. */
+                if (floor_px <= w)
+                    CHECK(wk.min_px >= floor_px);
+            }
+}
+
+/* The paper's case, 512x480 with 64 NCs and 1024-area bound: starts with
+ * bands of whole scanlines, shrinks to pieces of one scanline no smaller
+ * than a 16x15 grid area, in more areas than NCs and fewer than the grid. */
+static void test_decreasing_paper_case(void)
+{
+    struct walk wk;
+    if (!areas_walk(AREAS_DECREASING, 512, 480, 64, 1024, &wk))
+        return;
+    /* 245760 px / (2 * 64) = 1920 px = 3.75 scanlines -> 3 whole scanlines */
+    CHECK_EQ_INT(wk.first.w, 512);
+    CHECK_EQ_INT(wk.first.h, 3);
+    /* bound 240 px: pieces are 256 px, the smallest divisor of 512 >= 240 */
+    CHECK_EQ_INT(wk.last.w, 256);
+    CHECK_EQ_INT(wk.last.h, 1);
+    CHECK_EQ_INT(wk.min_px, 256);
+    CHECK(wk.areas > 64 && wk.areas < 1024);
+}
+
+/* More NCs than scanlines: the schedules still cut the screen (pieces of
+ * scanlines), and a single pixel is one area whatever the NC count. */
+static void test_more_ncs_than_scanlines(void)
+{
+    struct walk wk;
+    if (areas_walk(AREAS_STATIC, 100, 3, 64, 0, &wk)) {
+        CHECK_EQ_INT(wk.areas, 64);
+        CHECK(wk.max_px <= 2 * wk.min_px);
+    }
+    if (areas_walk(AREAS_DECREASING, 100, 3, 254, 1u << 22, &wk)) {
+        CHECK_EQ_INT(wk.areas, 300); /* bound 1 px, pieces of 1 px */
+        CHECK_EQ_INT(wk.first.h, 1);
+    }
+    for (int mode = AREAS_STATIC; mode <= AREAS_DECREASING; mode++)
+        if (areas_walk((enum areas_mode)mode, 1, 1, 254, 0, &wk))
+            CHECK_EQ_INT(wk.areas, 1);
+}
+
+/* A prime width has no divisor to cut scanlines by: decreasing falls back
+ * to whole scanlines instead of one-pixel areas. */
+static void test_decreasing_prime_width_uses_whole_scanlines(void)
+{
+    struct walk wk;
+    if (areas_walk(AREAS_DECREASING, 509, 480, 64, 1024, &wk)) {
+        CHECK_EQ_INT(wk.min_px, 509);
+        CHECK_EQ_INT(wk.last.w, 509);
+    }
+}
+
+static void test_bad_arguments_are_refused(void)
+{
+    struct areas s;
+    CHECK_EQ_INT(areas_init(&s, (enum areas_mode)3, 10, 10, 1, 0), AREAS_ERR_MODE);
+    CHECK_EQ_INT(areas_init(&s, AREAS_DYNAMIC, 0, 10, 1, 0), AREAS_ERR_SIZE);
+    CHECK_EQ_INT(areas_init(&s, AREAS_DYNAMIC, 10, 0, 1, 0), AREAS_ERR_SIZE);
+    CHECK_EQ_INT(areas_init(&s, AREAS_DYNAMIC, AREAS_MAX_DIM + 1, 10, 1, 0), AREAS_ERR_SIZE);
+    CHECK_EQ_INT(areas_init(&s, AREAS_STATIC, 10, 10, 0, 0), AREAS_ERR_NCS);
+    CHECK(strstr(areas_strerror(AREAS_ERR_NCS), "NC") != NULL);
+}
+
+static void test_mode_names_round_trip(void)
+{
+    enum areas_mode m;
+    for (int i = AREAS_STATIC; i <= AREAS_DECREASING; i++) {
+        CHECK_EQ_INT(areas_mode_parse(areas_mode_name((enum areas_mode)i), &m), AREAS_OK);
+        CHECK_EQ_INT(m, i);
+    }
+    CHECK_EQ_INT(areas_mode_parse("guided", &m), AREAS_ERR_MODE);
+    CHECK(strcmp(areas_mode_name(AREAS_DECREASING), "decreasing") == 0);
+}
+
+int main(void)
+{
+    RUN(test_static_covers_one_area_per_nc);
+    RUN(test_dynamic_covers_k_areas);
+    RUN(test_dynamic_paper_grids_are_equal);
+    RUN(test_grid_areas_nearly_equal);
+    RUN(test_decreasing_never_grows);
+    RUN(test_decreasing_paper_case);
+    RUN(test_more_ncs_than_scanlines);
+    RUN(test_decreasing_prime_width_uses_whole_scanlines);
+    RUN(test_bad_arguments_are_refused);
+    RUN(test_mode_names_round_trip);
+    return check_exit();
+}
