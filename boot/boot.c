@@ -8,6 +8,7 @@
 #include "drivers/serial/uart.h"
 #include "kernel/arch.h"
 #include "kernel/cpu.h"
+#include "kernel/fdt.h"
 #include "kernel/gic.h"
 #include "kernel/kmem.h"
 #include "kernel/klog.h"
@@ -34,6 +35,26 @@ static void boot_check_layout(void)
               (unsigned)LINKER_VALUE(LINKS1_LINE_RING), (unsigned)LINE_RING_SIZE);
 }
 
+/* The linker script carved memory up to __nc_pool_end: refuse to run on a
+ * board given less RAM (QEMU's -m), with the numbers, rather than fault
+ * later on a missing address. */
+static void boot_check_ram(void)
+{
+    uint64_t base = 0, size = 0;
+    int r = fdt_find_memory((const uint8_t *)DTB_BASE, DTB_MAX_SIZE, &base, &size);
+    if (r != FDT_OK) {
+        klog("cannot check the board's RAM size: %s at 0x%08x", fdt_strerror(r),
+             (unsigned)DTB_BASE);
+        return;
+    }
+    uint64_t need_end = (uintptr_t)__nc_pool_end;
+    if (base != RAM_BASE || base + size < need_end)
+        panic("the board has %u MiB of RAM at 0x%08x; links1 needs %u MiB from 0x%08x "
+              "(qemu -m %u)",
+              (unsigned)(size >> 20), (unsigned)base, (unsigned)((need_end - RAM_BASE) >> 20),
+              (unsigned)RAM_BASE, (unsigned)((need_end - RAM_BASE) >> 20));
+}
+
 /* Cores on the board: PSCI AFFINITY_INFO answers INVALID_PARAMETERS for an
  * MPIDR that does not exist, so the count is known before any core wakes
  * and every core reads the same board_ncores. */
@@ -53,6 +74,7 @@ void boot_main(void)
     gic_dist_init();   // interrupt distributor
     gic_cpu_init();    // this core's redistributor and CPU interface
     uart_init();       // host link receive ring and interrupt
+    boot_check_ram();  // QEMU gave the memory the linker script carved
     uint32_t n = boot_count_cores();
     if (n < MIN_CORES)
         panic("the board has %u core(s); links1 needs at least %u (DM, RC, one NC)",

@@ -92,13 +92,13 @@ vec_irq:
     pop {r0-r3, r12, lr}
     rfeia sp!
 
-/* void ctx_switch(struct task_ctx *from, struct task_ctx *to)
+/* void task_switch_context(struct task_ctx *from, struct task_ctx *to)
  * Saves the callee-saved registers of the running code in *from and
- * resumes *to where it last called ctx_switch (or at its entry). */
+ * resumes *to where it last called task_switch_context (or at its entry). */
     .text
-    .global ctx_switch
-    .type ctx_switch, %function
-ctx_switch:
+    .global task_switch_context
+    .type task_switch_context, %function
+task_switch_context:
     stmia r0, {r4-r11}
     str sp, [r0, #32]
     str lr, [r0, #36]

@@ -32,7 +32,7 @@ const char *board_role_name(int core)
 /* ------------------------------------------------------------ QEMU process */
 
 /* In the child: QEMU must not outlive the tool, whatever ends the tool. */
-static void qemu_child_exec(struct board *b, int qemu_fd)
+static void board_qemu_exec(struct board *b, int qemu_fd)
 {
     prctl(PR_SET_PDEATHSIG, SIGTERM);
     fcntl(qemu_fd, F_SETFD, 0); /* keep QEMU's end open across exec */
@@ -118,7 +118,7 @@ int board_start(struct board *b, const struct board_opts *o)
         return -1;
     }
     if (pid == 0)
-        qemu_child_exec(b, sv[1]);
+        board_qemu_exec(b, sv[1]);
     close(sv[1]);
     b->qemu_pid = pid;
     b->fd = sv[0];
@@ -130,7 +130,7 @@ int board_start(struct board *b, const struct board_opts *o)
 }
 
 /* Waits up to timeout_ms for QEMU to exit; returns 1 once reaped. */
-static int qemu_reap(struct board *b, int timeout_ms)
+static int board_qemu_reap(struct board *b, int timeout_ms)
 {
     long long end = board_now_ms() + timeout_ms;
     while (b->qemu_pid) {
@@ -146,7 +146,7 @@ static int qemu_reap(struct board *b, int timeout_ms)
     return 1;
 }
 
-static void qemu_describe_exit(const struct board *b, char *out, size_t cap)
+static void board_qemu_exit_text(const struct board *b, char *out, size_t cap)
 {
     int st = b->qemu_status;
     if (WIFEXITED(st))
@@ -169,8 +169,8 @@ static int board_lost(struct board *b, const char *why)
     }
     if (b->stopping)
         return -1; /* the shutdown we asked for */
-    if (qemu_reap(b, BOARD_TERM_WAIT_MS))
-        qemu_describe_exit(b, desc, sizeof desc);
+    if (board_qemu_reap(b, BOARD_TERM_WAIT_MS))
+        board_qemu_exit_text(b, desc, sizeof desc);
     else
         snprintf(desc, sizeof desc, "QEMU (pid %d) is still running", (int)b->qemu_pid);
     fprintf(stderr, "links1: the board stopped talking (%s): %s\n", why, desc);
@@ -224,7 +224,7 @@ int board_pump(struct board *b, int timeout_ms)
     return 0;
 }
 
-static void print_missing_cores(const struct board *b)
+static void board_print_missing(const struct board *b)
 {
     fprintf(stderr, "links1: %d of %d unit computers did not report in:",
             b->opts.ncores - b->reported_count, b->opts.ncores);
@@ -252,13 +252,13 @@ int board_wait_reported(struct board *b, int timeout_ms)
     while (b->reported_count < b->opts.ncores && b->hello_errors == 0) {
         long long left = end - board_now_ms();
         if (left <= 0) {
-            print_missing_cores(b);
-            fprintf(stderr, "links1: (waited %d s; --timeout S waits longer)\n",
-                    timeout_ms / 1000);
+            board_print_missing(b);
+            fprintf(stderr, "links1: (waited %.1f s; --timeout S waits longer)\n",
+                    timeout_ms / 1000.0);
             return -1;
         }
         if (board_pump(b, (int)left) < 0) {
-            print_missing_cores(b);
+            board_print_missing(b);
             return -1;
         }
     }
@@ -271,7 +271,7 @@ int board_wait_reported(struct board *b, int timeout_ms)
 
 /* ------------------------------------------------------- outgoing frames */
 
-static int write_all(struct board *b, const uint8_t *p, size_t n, int timeout_ms)
+static int board_write_all(struct board *b, const uint8_t *p, size_t n, int timeout_ms)
 {
     long long end = board_now_ms() + timeout_ms;
     while (n) {
@@ -311,7 +311,7 @@ int board_send(struct board *b, uint8_t type, uint8_t flags, const void *payload
                 len, LINK_MAX_PAYLOAD);
         return -1;
     }
-    if (write_all(b, frame, n, BOARD_FRAME_TIMEOUT_MS) < 0)
+    if (board_write_all(b, frame, n, BOARD_FRAME_TIMEOUT_MS) < 0)
         return -1;
     b->tx_seq++;
     return seq;
@@ -384,7 +384,8 @@ int board_wait_result(struct board *b, uint16_t cmd, int timeout_ms,
 uint32_t board_link_errors(const struct board *b)
 {
     const struct link_stats *s = &b->dec.stats;
-    return s->crc_errors + s->bad_length + s->junk_bytes + s->seq_gaps;
+    return s->crc_errors + s->bad_length + s->junk_bytes + s->seq_gaps +
+           b->host_frames_dropped;
 }
 
 uint32_t board_report_link_errors(const struct board *b)
@@ -392,9 +393,10 @@ uint32_t board_report_link_errors(const struct board *b)
     const struct link_stats *s = &b->dec.stats;
     uint32_t n = board_link_errors(b);
     if (n)
-        fprintf(stderr, "links1: link errors from the board: %u bad CRC, %u bad length, "
-                "%u junk bytes, %u seq gaps (in %u good frames)\n", s->crc_errors,
-                s->bad_length, s->junk_bytes, s->seq_gaps, s->frames);
+        fprintf(stderr, "links1: link errors: from the board %u bad CRC, %u bad length, "
+                "%u junk bytes, %u seq gaps (in %u good frames); %u frames from the host "
+                "dropped by the board\n", s->crc_errors, s->bad_length, s->junk_bytes,
+                s->seq_gaps, s->frames, b->host_frames_dropped);
     return n;
 }
 
@@ -423,11 +425,11 @@ int board_stop(struct board *b)
         close(b->fd);
         b->fd = -1;
     }
-    if (qemu_reap(b, b->qemu_pid ? 500 : 0)) {
+    if (board_qemu_reap(b, b->qemu_pid ? 500 : 0)) {
         if (WIFEXITED(b->qemu_status) && WEXITSTATUS(b->qemu_status) == 0)
             return 0;
         char desc[96];
-        qemu_describe_exit(b, desc, sizeof desc);
+        board_qemu_exit_text(b, desc, sizeof desc);
         fprintf(stderr, "links1: at shutdown %s\n", desc);
         return -1;
     }
@@ -435,11 +437,11 @@ int board_stop(struct board *b)
             "command; stopping QEMU (pid %d) with SIGTERM\n", BOARD_SHUTDOWN_WAIT_MS,
             (int)b->qemu_pid);
     kill(b->qemu_pid, SIGTERM);
-    if (qemu_reap(b, BOARD_TERM_WAIT_MS))
+    if (board_qemu_reap(b, BOARD_TERM_WAIT_MS))
         return 1;
     fprintf(stderr, "links1: QEMU ignored SIGTERM for %d ms; killing it\n",
             BOARD_TERM_WAIT_MS);
     kill(b->qemu_pid, SIGKILL);
-    qemu_reap(b, BOARD_TERM_WAIT_MS);
+    board_qemu_reap(b, BOARD_TERM_WAIT_MS);
     return 1;
 }

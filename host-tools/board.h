@@ -55,6 +55,8 @@ struct board {
     struct board_frame queue[BOARD_FRAME_QUEUE]; /* RESULT/DATA/ACK not yet taken */
     int queued;
     int stopping;               /* 1 during board_stop: end-of-file is expected */
+    uint32_t host_frames_dropped; /* board's reports (RESULT for cmd 0) of frames
+                                     from the host it dropped */
 };
 
 /* Fills o with the defaults (BOARD_DEFAULT_*). */
@@ -104,7 +106,8 @@ int board_wait_result(struct board *b, uint16_t cmd, int timeout_ms,
  * printed, others queued).  Returns 0, or -1 if the board stopped. */
 int board_pump(struct board *b, int timeout_ms);
 
-/* Link errors seen so far (bad CRC, bad length, seq gaps, junk bytes). */
+/* Link errors seen so far, both ways: frames from the board with a bad CRC
+ * or length, seq gaps or junk, and frames from the host the board dropped. */
 uint32_t board_link_errors(const struct board *b);
 /* Prints the decoder's counters when any is non-zero; returns that count. */
 uint32_t board_report_link_errors(const struct board *b);
@@ -119,6 +122,9 @@ int board_stop(struct board *b);
  * checks and records HELLO, prints and records FAULT, queues the rest.
  * Returns 0, or -1 when the queue is full (the board broke the window). */
 int board_handle_frame(struct board *b, const struct link_frame *f);
+
+/* Name of a LINK_RESULT status ("timeout", ...). */
+const char *board_status_name(int status);
 
 /* Milliseconds on the monotonic clock. */
 long long board_now_ms(void);

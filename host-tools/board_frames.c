@@ -5,8 +5,9 @@
 #include <string.h>
 
 #include "host-tools/board.h"
+#include "proto/wire.h"
 
-static void print_log_text(const uint8_t *p, size_t n)
+static void board_print_log(const uint8_t *p, size_t n)
 {
     /* One output line per board line, so board text never runs into ours. */
     size_t start = 0;
@@ -19,7 +20,7 @@ static void print_log_text(const uint8_t *p, size_t n)
     }
 }
 
-static void handle_hello(struct board *b, const struct link_frame *f)
+static void board_on_hello(struct board *b, const struct link_frame *f)
 {
     struct link_hello h;
     if (f->length < LINK_HELLO_SIZE) {
@@ -63,7 +64,7 @@ static void handle_hello(struct board *b, const struct link_frame *f)
                h.mpidr);
 }
 
-static const char *fault_kind_name(unsigned kind)
+static const char *board_fault_kind_name(unsigned kind)
 {
     switch (kind) {
     case FAULT_UNDEF: return "undefined instruction";
@@ -74,7 +75,7 @@ static const char *fault_kind_name(unsigned kind)
     }
 }
 
-static void handle_fault(struct board *b, const struct link_frame *f)
+static void board_on_fault(struct board *b, const struct link_frame *f)
 {
     struct link_fault ft;
     if (f->length < LINK_FAULT_FIXED_SIZE) {
@@ -91,7 +92,7 @@ static void handle_fault(struct board *b, const struct link_frame *f)
     int textlen = f->length > LINK_FAULT_FIXED_SIZE ? f->length - LINK_FAULT_FIXED_SIZE : 0;
     printf("core %u %s FAULT: %s at 0x%08x (pc 0x%08x, status 0x%08x)%s%.*s\n", ft.core,
            ft.role == ROLE_DM ? "DM" : ft.role == ROLE_RC ? "RC" : "NC",
-           fault_kind_name(ft.kind), ft.addr, ft.pc, ft.status, textlen ? ": " : "", textlen,
+           board_fault_kind_name(ft.kind), ft.addr, ft.pc, ft.status, textlen ? ": " : "", textlen,
            (const char *)f->payload + LINK_FAULT_FIXED_SIZE);
 }
 
@@ -100,16 +101,28 @@ int board_handle_frame(struct board *b, const struct link_frame *f)
     switch (f->type) {
     case LINK_LOG:
         if (!b->opts.quiet)
-            print_log_text(f->payload, f->length);
+            board_print_log(f->payload, f->length);
         return 0;
     case LINK_HELLO:
-        handle_hello(b, f);
+        board_on_hello(b, f);
         return 0;
     case LINK_FAULT:
-        handle_fault(b, f);
+        board_on_fault(b, f);
         return 0;
     default:
         break;
+    }
+    if (f->type == LINK_RESULT && f->length >= LINK_RESULT_FIXED_SIZE &&
+        wire_get_u16(f->payload) == 0) {
+        /* Not an answer: the board reports at once a frame from us it had to
+         * drop (cmd 0, LINK_ERR_BAD_FRAME). */
+        b->host_frames_dropped++;
+        fprintf(stderr, "links1: the board dropped a frame from the host (status %d, %s): "
+                "%.*s\n", (int16_t)wire_get_u16(f->payload + 2),
+                board_status_name((int16_t)wire_get_u16(f->payload + 2)),
+                f->length - LINK_RESULT_FIXED_SIZE,
+                (const char *)f->payload + LINK_RESULT_FIXED_SIZE);
+        return 0;
     }
     if (b->queued >= BOARD_FRAME_QUEUE) {
         fprintf(stderr, "links1: %d frames from the board wait unread (frame type %u "
@@ -124,4 +137,18 @@ int board_handle_frame(struct board *b, const struct link_frame *f)
     q->length = f->length;
     memcpy(q->payload, f->payload, f->length);
     return 0;
+}
+
+const char *board_status_name(int status)
+{
+    switch (status) {
+    case LINK_OK: return "ok";
+    case LINK_ERR_UNKNOWN_CMD: return "unknown command";
+    case LINK_ERR_BAD_ARGS: return "bad arguments";
+    case LINK_ERR_BAD_FRAME: return "dropped frame";
+    case LINK_ERR_TIMEOUT: return "timeout";
+    case LINK_ERR_CHECK: return "check failed";
+    case LINK_ERR_PROTOCOL: return "protocol error";
+    default: return "unknown status";
+    }
 }

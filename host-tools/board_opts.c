@@ -18,12 +18,12 @@ const char board_opts_usage[] =
     "  --ram MB         board memory (default 512)\n"
     "  --quiet          do not print the board's log and report-in lines\n";
 
-static const char *const arith_names[] = {"float", "soft", "fixed"};
+static const char *const board_arith_names[] = {"float", "soft", "fixed"};
 
 int board_arith_code(const char *arith)
 {
-    for (int i = 0; i < (int)(sizeof arith_names / sizeof arith_names[0]); i++)
-        if (strcmp(arith, arith_names[i]) == 0)
+    for (int i = 0; i < (int)(sizeof board_arith_names / sizeof board_arith_names[0]); i++)
+        if (strcmp(arith, board_arith_names[i]) == 0)
             return i;
     return -1;
 }
@@ -38,7 +38,7 @@ void board_opts_init(struct board_opts *o)
 }
 
 /* Parses argv[*i + 1] as an integer in [lo, hi] for option name. */
-static int parse_int_arg(int argc, char **argv, int *i, int lo, int hi, int *out)
+static int board_parse_int(int argc, char **argv, int *i, int lo, int hi, int *out)
 {
     const char *name = argv[*i];
     if (*i + 1 >= argc) {
@@ -62,11 +62,11 @@ int board_parse_opt(struct board_opts *o, int argc, char **argv, int *i)
 {
     const char *a = argv[*i];
     if (strcmp(a, "--smp") == 0)
-        return parse_int_arg(argc, argv, i, BOARD_MIN_CORES, BOARD_MAX_CORES, &o->ncores);
+        return board_parse_int(argc, argv, i, BOARD_MIN_CORES, BOARD_MAX_CORES, &o->ncores);
     if (strcmp(a, "--timeout") == 0)
-        return parse_int_arg(argc, argv, i, 1, BOARD_MAX_TIMEOUT_S, &o->timeout_s);
+        return board_parse_int(argc, argv, i, 1, BOARD_MAX_TIMEOUT_S, &o->timeout_s);
     if (strcmp(a, "--ram") == 0)
-        return parse_int_arg(argc, argv, i, BOARD_MIN_RAM_MB, BOARD_MAX_RAM_MB, &o->ram_mb);
+        return board_parse_int(argc, argv, i, BOARD_MIN_RAM_MB, BOARD_MAX_RAM_MB, &o->ram_mb);
     if (strcmp(a, "--quiet") == 0) {
         o->quiet = 1;
         return 1;
@@ -90,14 +90,14 @@ int board_parse_opt(struct board_opts *o, int argc, char **argv, int *i)
     return 0;
 }
 
-static int file_readable(const char *path)
+static int board_file_readable(const char *path)
 {
     return access(path, R_OK) == 0;
 }
 
 /* QEMU boots anything given to -kernel (a non-ELF file as a raw image that
  * then never reports in), so check the ELF magic first. */
-static int firmware_is_elf(const char *path)
+static int board_firmware_is_elf(const char *path)
 {
     unsigned char magic[4] = {0};
     FILE *f = fopen(path, "rb");
@@ -113,18 +113,18 @@ static int firmware_is_elf(const char *path)
 int board_find_firmware(const struct board_opts *o, char *out, size_t cap)
 {
     if (o->firmware) {
-        if (!file_readable(o->firmware)) {
+        if (!board_file_readable(o->firmware)) {
             fprintf(stderr, "links1: firmware %s: %s\n", o->firmware, strerror(errno));
             return -1;
         }
         snprintf(out, cap, "%s", o->firmware);
-        return firmware_is_elf(out) ? 0 : -1;
+        return board_firmware_is_elf(out) ? 0 : -1;
     }
     const char *fw_dir = getenv("FW_DIR");
     if (fw_dir && *fw_dir) {
         snprintf(out, cap, "%s/links1-%s.elf", fw_dir, o->arith);
-        if (file_readable(out))
-            return firmware_is_elf(out) ? 0 : -1;
+        if (board_file_readable(out))
+            return board_firmware_is_elf(out) ? 0 : -1;
         fprintf(stderr, "links1: firmware %s not found ($FW_DIR is set; run make, or "
                 "give --firmware ELF)\n", out);
         return -1;
@@ -140,8 +140,8 @@ int board_find_firmware(const struct board_opts *o, char *out, size_t cap)
     if (slash)
         *slash = 0;
     snprintf(out, cap, "%s/links1-%s.elf", self, o->arith);
-    if (file_readable(out))
-        return firmware_is_elf(out) ? 0 : -1;
+    if (board_file_readable(out))
+        return board_firmware_is_elf(out) ? 0 : -1;
     fprintf(stderr, "links1: firmware %s not found (run make, set $FW_DIR, or give "
             "--firmware ELF)\n", out);
     return -1;

@@ -9,7 +9,7 @@
 #include "host-tools/insn_report.h"
 #include "host-tools/links1_cmds.h"
 
-static void boot_usage(FILE *out)
+static void cmd_boot_usage(FILE *out)
 {
     fprintf(out, "usage: links1 boot [options]\n"
                  "Boots the board, prints its log and every unit computer reporting in,\n"
@@ -34,11 +34,11 @@ int cmd_boot(int argc, char **argv)
         if (strcmp(argv[i], "--count-insns") == 0) {
             count_insns = 1;
         } else if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
-            boot_usage(stdout);
+            cmd_boot_usage(stdout);
             return 0;
         } else {
             fprintf(stderr, "links1 boot: unknown option '%s'\n", argv[i]);
-            boot_usage(stderr);
+            cmd_boot_usage(stderr);
             return 2;
         }
     }

@@ -50,7 +50,7 @@ static const struct selftest *selftest_find(const char *name)
 }
 
 /* Parses an unsigned option value in [lo, hi]. */
-static int parse_u32(const char *opt, const char *s, unsigned long lo, unsigned long hi,
+static int selftest_parse_u32(const char *opt, const char *s, unsigned long lo, unsigned long hi,
                      uint32_t *out)
 {
     char *end;
@@ -88,9 +88,9 @@ static int selftest_parse(int argc, char **argv, struct board_opts *o,
             }
             i++;
             if (s[2] == 'm' && s[3] == 'i' &&
-                parse_u32(s, val, 1, SELFTEST_MAX_STRESS_MIB, &a->stress_mib) < 0)
+                selftest_parse_u32(s, val, 1, SELFTEST_MAX_STRESS_MIB, &a->stress_mib) < 0)
                 return -1;
-            if (s[2] == 'b' && parse_u32(s, val, 1, SELFTEST_MAX_LINK_BYTES, &a->link_bytes) < 0)
+            if (s[2] == 'b' && selftest_parse_u32(s, val, 1, SELFTEST_MAX_LINK_BYTES, &a->link_bytes) < 0)
                 return -1;
             if (s[2] == 'm' && s[3] == 'a') {
                 char *end;
@@ -112,7 +112,7 @@ static int selftest_parse(int argc, char **argv, struct board_opts *o,
             }
             if (t->fn == selftest_fault) {
                 uint32_t core;
-                if (!val || parse_u32("fault CORE", val, 0, BOARD_MAX_CORES - 1, &core) < 0) {
+                if (!val || selftest_parse_u32("fault CORE", val, 0, BOARD_MAX_CORES - 1, &core) < 0) {
                     fprintf(stderr, "links1 selftest: fault needs the core to fault\n");
                     return -1;
                 }

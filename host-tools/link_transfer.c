@@ -7,13 +7,13 @@
 #include "proto/wire.h"
 
 /* seq a is at or before seq b in 16-bit wrapping order. */
-static int seq_not_after(uint16_t a, uint16_t b)
+static int link_transfer_seq_not_after(uint16_t a, uint16_t b)
 {
     return (uint16_t)(b - a) < 0x8000u;
 }
 
 /* Waits for one ACK and drops every in-flight seq it covers. */
-static int take_ack(struct board *b, uint16_t *inflight, int *n)
+static int link_transfer_take_ack(struct board *b, uint16_t *inflight, int *n)
 {
     struct board_frame f;
     if (board_wait_frame(b, LINK_ACK, BOARD_FRAME_TIMEOUT_MS, &f, "ACK of a DATA frame") < 0)
@@ -55,7 +55,7 @@ int link_transfer_send_pattern(struct board *b, uint32_t total, uint32_t *crc)
             chunk[i] = link_pattern_byte(off + i);
         c = crc32_update(c, chunk, len);
         while (n >= LINK_DATA_WINDOW)
-            if (take_ack(b, inflight, &n) < 0)
+            if (link_transfer_take_ack(b, inflight, &n) < 0)
                 return -1;
         int last = off + len == total;
         int seq = board_send(b, LINK_DATA, last ? LINK_FLAG_LAST : 0, chunk, len);
@@ -65,7 +65,7 @@ int link_transfer_send_pattern(struct board *b, uint32_t total, uint32_t *crc)
         off += len;
     }
     while (n > 0)
-        if (take_ack(b, inflight, &n) < 0)
+        if (link_transfer_take_ack(b, inflight, &n) < 0)
             return -1;
     *crc = c;
     return 0;
@@ -84,7 +84,7 @@ int link_transfer_receive_pattern(struct board *b, uint64_t *bytes, uint32_t *cr
                     (unsigned long long)off);
             return -1;
         }
-        if (have_prev && (f.seq == prev || !seq_not_after(prev, f.seq))) {
+        if (have_prev && (f.seq == prev || !link_transfer_seq_not_after(prev, f.seq))) {
             fprintf(stderr, "links1: DATA frame seq %u after seq %u at byte %llu: "
                     "repeated or out of order\n", f.seq, prev, (unsigned long long)off);
             return -1;

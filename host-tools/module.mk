@@ -29,6 +29,10 @@ test_hostlink_transfer_SRCS := tests/host/test_hostlink_transfer.c host-tools/bo
 	host-tools/board_frames.c host-tools/board_opts.c host-tools/link_transfer.c
 test_hostlink_transfer_ARITH := double
 test_hostlink_transfer_LIBS := -lpthread
+HOST_TESTS += test_hostlink_session
+test_hostlink_session_SRCS := tests/host/test_hostlink_session.c host-tools/board.c \
+	host-tools/board_frames.c host-tools/board_opts.c
+test_hostlink_session_ARITH := double
 
 # Board tests (tests/board/lib.sh is their shared helper, not a test).
 BOARD_TESTS += tests/board/boot_smp.sh tests/board/channels.sh tests/board/idle66.sh \

@@ -22,7 +22,8 @@ int selftest_command(struct board *b, uint16_t cmd, const void *args, size_t len
         return -1;
     }
     if (status < 0) {
-        snprintf(why, cap, "the board answered status %d: %.*s", status, (int)n,
+        snprintf(why, cap, "the board answered status %d (%s): %.*s", status,
+                 board_status_name(status), (int)n,
                  (const char *)*fields);
         return -1;
     }
@@ -92,7 +93,7 @@ int selftest_stress(struct board *b, const struct selftest_args *a, char *why, s
 }
 
 /* Waits for a FAULT frame after the first `before` faults; returns its index. */
-static int wait_new_fault(struct board *b, int before, int timeout_ms)
+static int selftest_wait_new_fault(struct board *b, int before, int timeout_ms)
 {
     long long end = board_now_ms() + timeout_ms;
     while (b->nfaults <= before) {
@@ -114,7 +115,7 @@ int selftest_fault(struct board *b, const struct selftest_args *a, char *why, si
     if (selftest_command(b, CMD_FAULT_INJECT, arg, sizeof arg, BOARD_FRAME_TIMEOUT_MS, 0, &r,
                          &f, why, cap) < 0)
         return -1;
-    int k = wait_new_fault(b, before, BOARD_FRAME_TIMEOUT_MS);
+    int k = selftest_wait_new_fault(b, before, BOARD_FRAME_TIMEOUT_MS);
     if (k < 0 || k >= BOARD_MAX_FAULTS) {
         snprintf(why, cap, "no fault report from core %d within %d ms", a->fault_core,
                  BOARD_FRAME_TIMEOUT_MS);

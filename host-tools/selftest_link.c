@@ -26,8 +26,10 @@ int selftest_link_sink(struct board *b, const struct selftest_args *a, char *why
         return -1;
     }
     if (status < 0 || n < 12) {
-        snprintf(why, cap, "the board answered status %d (%zu bytes): %.*s", status, n,
-                 (int)n, (const char *)f);
+        snprintf(why, cap, "the board answered status %d (%s): %.*s", status,
+                 board_status_name(status), status < 0 ? (int)n : 0, (const char *)f);
+        if (status >= 0)
+            snprintf(why, cap, "result has %zu bytes of fields, want 12", n);
         return -1;
     }
     uint64_t got = wire_get_u64(f);
@@ -61,8 +63,10 @@ int selftest_link_source(struct board *b, const struct selftest_args *a, char *w
         return -1;
     }
     if (status < 0 || n < 12) {
-        snprintf(why, cap, "the board answered status %d (%zu bytes): %.*s", status, n,
-                 (int)n, (const char *)f);
+        snprintf(why, cap, "the board answered status %d (%s): %.*s", status,
+                 board_status_name(status), status < 0 ? (int)n : 0, (const char *)f);
+        if (status >= 0)
+            snprintf(why, cap, "result has %zu bytes of fields, want 12", n);
         return -1;
     }
     uint64_t said = wire_get_u64(f);
@@ -74,7 +78,7 @@ int selftest_link_source(struct board *b, const struct selftest_args *a, char *w
 }
 
 /* QEMU's user+system CPU time in clock ticks, from /proc/PID/stat. */
-static long long qemu_cpu_ticks(pid_t pid)
+static long long selftest_qemu_cpu_ticks(pid_t pid)
 {
     char path[64], buf[4096];
     snprintf(path, sizeof path, "/proc/%d/stat", (int)pid);
@@ -94,7 +98,7 @@ static long long qemu_cpu_ticks(pid_t pid)
 }
 
 /* Keeps reading the link (logs, faults) for ms milliseconds. */
-static int pump_for(struct board *b, int ms)
+static int selftest_pump_for(struct board *b, int ms)
 {
     long long end = board_now_ms() + ms;
     for (long long left = ms; left > 0; left = end - board_now_ms())
@@ -105,16 +109,16 @@ static int pump_for(struct board *b, int ms)
 
 int selftest_idle(struct board *b, const struct selftest_args *a, char *why, size_t cap)
 {
-    if (pump_for(b, SELFTEST_IDLE_SETTLE_MS) < 0) {
+    if (selftest_pump_for(b, SELFTEST_IDLE_SETTLE_MS) < 0) {
         snprintf(why, cap, "the board stopped while settling");
         return -1;
     }
-    long long t0 = board_now_ms(), c0 = qemu_cpu_ticks(b->qemu_pid);
-    if (c0 < 0 || pump_for(b, SELFTEST_IDLE_SECONDS * 1000) < 0) {
+    long long t0 = board_now_ms(), c0 = selftest_qemu_cpu_ticks(b->qemu_pid);
+    if (c0 < 0 || selftest_pump_for(b, SELFTEST_IDLE_SECONDS * 1000) < 0) {
         snprintf(why, cap, "cannot read QEMU's CPU time (pid %d)", (int)b->qemu_pid);
         return -1;
     }
-    long long t1 = board_now_ms(), c1 = qemu_cpu_ticks(b->qemu_pid);
+    long long t1 = board_now_ms(), c1 = selftest_qemu_cpu_ticks(b->qemu_pid);
     if (c1 < 0) {
         snprintf(why, cap, "cannot read QEMU's CPU time (pid %d)", (int)b->qemu_pid);
         return -1;

@@ -10,6 +10,11 @@
 #include "kernel/kfmt.h"
 #include "proto/hostlink.h"
 
+/* boot/vectors.S passes the kind as a number. */
+_Static_assert(FAULT_UNDEF == 1 && FAULT_PREFETCH_ABORT == 2 && FAULT_DATA_ABORT == 3 &&
+                   FAULT_PANIC == 4,
+               "boot/vectors.S fault kinds differ from enum link_fault_kind");
+
 /* Set once per core: a fault while reporting a fault halts silently
  * rather than recursing. */
 static volatile uint8_t fault_in_progress[MAX_CORES];

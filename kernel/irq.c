@@ -1,12 +1,11 @@
 /* irq.c: the IRQ dispatcher every core runs (called by boot/vectors.S). */
+#include "kernel/irq.h"
+
 #include "drivers/serial/uart.h"
 #include "kernel/cpu.h"
 #include "kernel/gic.h"
-#include "kernel/klog.h"
 #include "kernel/ktime.h"
 #include "kernel/memlayout.h"
-
-void irq_dispatch(void);
 
 void irq_dispatch(void)
 {

@@ -55,6 +55,10 @@
 
 /* RAM and the first-level LPAE blocks. */
 #define RAM_BASE 0x40000000u
+/* QEMU's device tree sits at the start of RAM; linker/virt-memory.ld keeps
+ * this much free for it. */
+#define DTB_BASE RAM_BASE
+#define DTB_MAX_SIZE 0x00100000u
 #define MMU_BLOCK_SIZE 0x40000000u  /* 1 GiB first-level block */
 #define UNMAPPED_VIRT 0x80000000u   /* the block left invalid on purpose */
 

@@ -29,6 +29,10 @@
  * (LINK_DATA_WINDOW frames of LINK_DATA_CHUNK bytes) plus a command. */
 #define UART_RX_RING_SIZE (16 * 1024)
 
+/* While the UART is polled (bulk uploads), how often the reader looks;
+ * the 16-byte FIFO must not sit full for long. */
+#define UART_RX_POLL_US 50
+
 /* Frames the DM's link receiver may queue for the command task (bytes of
  * queued frame records, power of two). */
 #define DM_FRAME_QUEUE_SIZE (32 * 1024)

@@ -9,9 +9,6 @@
 #include "kernel/ktime.h"
 #include "kernel/panic.h"
 
-/* Called by task_entry_trampoline when a task's function returns. */
-void task_exit_current(void) __attribute__((noreturn));
-
 int task_create(const char *name, void (*fn)(void *), void *arg)
 {
     struct cpu *c = mycpu();
@@ -60,7 +57,7 @@ void task_exit_current(void)
     struct cpu *c = mycpu();
     struct task *t = task_current(c);
     t->state = TASK_DONE;
-    ctx_switch(&t->ctx, &c->sched_ctx);
+    task_switch_context(&t->ctx, &c->sched_ctx);
     panic("task_exit_current: a finished task was resumed");
 }
 
@@ -70,7 +67,7 @@ void task_yield(void)
     struct task *t = task_current(c);
     if (!t)
         return;
-    ctx_switch(&t->ctx, &c->sched_ctx);
+    task_switch_context(&t->ctx, &c->sched_ctx);
 }
 
 uint32_t task_event_mark(void)
@@ -124,7 +121,7 @@ void task_wait(uint32_t mark, uint64_t deadline)
     t->wait_mark = mark;
     t->deadline = deadline;
     t->state = TASK_WAITING;
-    ctx_switch(&t->ctx, &c->sched_ctx);
+    task_switch_context(&t->ctx, &c->sched_ctx);
 }
 
 void task_schedule_forever(void)
@@ -138,7 +135,7 @@ void task_schedule_forever(void)
                 continue;
             t->state = TASK_RUNNABLE;
             c->current = i;
-            ctx_switch(&c->sched_ctx, &t->ctx);
+            task_switch_context(&c->sched_ctx, &t->ctx);
             c->current = -1;
             ran = 1;
         }

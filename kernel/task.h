@@ -21,7 +21,7 @@
 
 #include "kernel/param.h"
 
-/* Registers a task keeps across ctx_switch (callee-saved, AAPCS). */
+/* Registers a task keeps across task_switch_context (callee-saved, AAPCS). */
 struct task_ctx {
     uint32_t r4_r11[8];
     uint32_t sp;
@@ -64,8 +64,11 @@ void task_schedule_forever(void) __attribute__((noreturn));
 /* Name of the running task, or "boot". */
 const char *task_current_name(void);
 
-/* boot/switch.S */
-void ctx_switch(struct task_ctx *from, struct task_ctx *to);
+/* boot/vectors.S: saves the running context in from, resumes to. */
+void task_switch_context(struct task_ctx *from, struct task_ctx *to);
+/* boot/vectors.S: first code of a new task; calls fn(arg), then
+ * task_exit_current(), which marks the task done and never returns. */
 void task_entry_trampoline(void);
+void task_exit_current(void) __attribute__((noreturn));
 
 #endif

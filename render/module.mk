@@ -28,3 +28,18 @@ test_render_fixed_ARITH := fixed
 
 # Host speed per arithmetic (wall clock: `make bench`, never a test).
 BENCHES += render/bench-host.sh
+
+# Blobs that travel through the IMSU (load + prepare into one block,
+# relocation after a copy) and the NC's screen clipping.
+SHARED_SRCS += render/relocate.c render/blob.c render/clip.c
+
+# Blob relocation and screen clipping tests, once per arithmetic; they
+# compile the scenes of scenes/ with the host scene compiler.
+HOST_TESTS += test_blob_double test_blob_float test_blob_fixed
+HOST_TESTS += test_clip_double test_clip_float test_clip_fixed
+$(foreach a,double float fixed,$(eval test_blob_$(a)_SRCS = tests/host/test_blob.c $$(SCENE_TEXT_SRCS)))
+$(foreach a,double float fixed,$(eval test_blob_$(a)_ARITH := $(a)))
+$(foreach a,double float fixed,$(eval test_blob_$(a)_LIBS := -lpng))
+$(foreach a,double float fixed,$(eval test_clip_$(a)_SRCS = tests/host/test_clip.c $$(SCENE_TEXT_SRCS)))
+$(foreach a,double float fixed,$(eval test_clip_$(a)_ARITH := $(a)))
+$(foreach a,double float fixed,$(eval test_clip_$(a)_LIBS := -lpng))

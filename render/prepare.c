@@ -27,6 +27,8 @@ const char *render_status_name(render_status_t status)
     case RENDER_ERR_KEY: return "cluster keys outside the scene's key array";
     case RENDER_ERR_CAMERA: return "camera eye equals look_at, or up is parallel to the view";
     case RENDER_ERR_SINGULAR: return "a cluster transform cannot be inverted";
+    case RENDER_ERR_RELOCATE: return "a pointer of the blob lies outside it (not self-contained), or a bad base";
+    case RENDER_ERR_AREA: return "area empty or not inside the screen";
     }
     return "unknown render status";
 }

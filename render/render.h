@@ -67,9 +67,13 @@ typedef struct {
     vec3_t edge_n1, edge_n2;
     num_t height1, height2;
     num_t tex_u[3], tex_v[3];
-    /* DENSITY */
-    const scene_density_component_t *components;
-    const num_t *inv_radius2;  /* 1/d^2 of each component, by render_prepare */
+    /* DENSITY.  Pointer fields: render_relocate (render/relocate.c) moves
+     * each one; a new pointer field must be added there too. */
+    const scene_density_component_t *components; /* -> scene density_components;
+                                                    NULL unless DENSITY */
+    const num_t *inv_radius2;  /* -> frame density_inv_radius2: 1/d^2 of each
+                                  component, by render_prepare; NULL unless
+                                  DENSITY */
     uint16_t component_count;
     num_t threshold;
 } render_prim_t;
@@ -87,8 +91,11 @@ typedef struct {
     uint32_t first_prim, prim_count;   /* into frame->prim_list */
 } render_cluster_t;
 
+/* Pointer fields (marked "reloc"): render_relocate (render/relocate.c)
+ * moves each one when a blob is copied; a new pointer field must be added
+ * there too (test_relocate_no_stale_pointer catches one that is not). */
 typedef struct {
-    const scene_t *scene;
+    const scene_t *scene;          /* reloc */
     uint32_t frame_index;
     render_options_t options;      /* copied from the scene; callers may
                                       change it before rendering */
@@ -97,12 +104,12 @@ typedef struct {
     uint16_t light_count;
     render_light_t lights[RENDER_MAX_LIGHTS];
     uint16_t cluster_count;
-    render_cluster_t *clusters;    /* index = scene cluster index */
-    uint16_t *child_list;          /* cluster indices, grouped by parent */
+    render_cluster_t *clusters;    /* reloc; index = scene cluster index */
+    uint16_t *child_list;          /* reloc; cluster indices, grouped by parent */
     uint32_t prim_count;
-    render_prim_t *prims;          /* index = scene prim index */
-    uint32_t *prim_list;           /* prim indices, grouped by cluster */
-    num_t *density_inv_radius2;    /* 1/d^2 per scene density component:
+    render_prim_t *prims;          /* reloc; index = scene prim index */
+    uint32_t *prim_list;           /* reloc; prim indices, grouped by cluster */
+    num_t *density_inv_radius2;    /* reloc; 1/d^2 per scene density component:
                                       the field then needs no division */
     uint8_t precision_lost;        /* 1 if preparing hit a fixed-point
                                       saturation (boxes are then unreliable) */
@@ -116,12 +123,20 @@ typedef struct {
     uint64_t transmission;  /* straight refractionless rays past max depth */
     uint64_t box_tests;     /* bounding-box tests */
     uint64_t prim_tests;    /* primitive intersection tests */
+    uint64_t primary_box_tests;  /* the part of box_tests made by camera
+                                    rays' nearest-hit search */
+    uint64_t primary_prim_tests; /* the part of prim_tests made by it:
+                                    what screen clipping cuts down */
     uint32_t precision_lost_pixels; /* pixels where a saturated value reached
                                        a hit distance or a colour */
 } render_stats_t;
 
 typedef struct {
     const render_frame_t *frame;
+    render_options_t options; /* copied from frame->options by
+                                 render_ctx_init: one core may switch a
+                                 speed-up off without writing the shared
+                                 frame */
     render_stats_t stats;
     uint8_t pixel_lost;     /* set while tracing one pixel */
 } render_ctx_t;
@@ -141,6 +156,9 @@ typedef enum {
     RENDER_ERR_KEY,          /* key range outside the scene's array */
     RENDER_ERR_CAMERA,       /* eye == look_at, or up parallel to the view */
     RENDER_ERR_SINGULAR,     /* a transform that cannot be inverted */
+    RENDER_ERR_RELOCATE,     /* a pointer of a blob lies outside the blob
+                                (not self-contained), or a bad base */
+    RENDER_ERR_AREA,         /* an area empty or not inside the screen */
 } render_status_t;
 
 /* A constant string naming the status, for error messages. */

@@ -97,7 +97,7 @@ typedef struct {
     uint8_t kind;          /* enum scene_map_kind */
     uint16_t width;        /* texels, 1..RENDER_MAX_MAP_SIZE */
     uint16_t height;       /* texels, 1..RENDER_MAX_MAP_SIZE */
-    const uint8_t *texels; /* row-major, row 0 at v = 0, width*height*bpp */
+    const uint8_t *texels; /* reloc (render/relocate.c); row-major, row 0 at v = 0, width*height*bpp */
     num_t repeat_u;        /* tiles across u in [0,1), > 0 (1 = once) */
     num_t repeat_v;        /* tiles across v in [0,1), > 0 */
     num_t bump_depth;      /* BUMP: >= 0; the normal n becomes
@@ -185,6 +185,9 @@ typedef struct {
     uint8_t shadows;        /* 1: shadow rays; 0: every light unshadowed */
 } render_options_t;
 
+/* The arrays (marked "reloc") are the scene's pointer fields:
+ * render_relocate (render/relocate.c) moves each one when a blob is copied
+ * to another address; a new pointer field must be added there too. */
 typedef struct {
     uint16_t width, height;    /* image size, 1..RENDER_MAX_WIDTH/HEIGHT */
     uint32_t frame_count;      /* frames of the animation, >= 1 */
@@ -192,13 +195,13 @@ typedef struct {
     rgb_t background;          /* colour of rays that hit nothing */
     render_options_t options;
 
-    const scene_light_t *lights;         uint16_t light_count;
-    const scene_material_t *materials;   uint16_t material_count;
-    const scene_map_t *maps;             uint16_t map_count;
-    const scene_cluster_t *clusters;     uint16_t cluster_count;
-    const scene_key_t *keys;             uint32_t key_count;
-    const scene_prim_t *prims;           uint32_t prim_count;
-    const scene_density_component_t *density_components;
+    const scene_light_t *lights;         uint16_t light_count;    /* reloc */
+    const scene_material_t *materials;   uint16_t material_count; /* reloc */
+    const scene_map_t *maps;             uint16_t map_count;      /* reloc */
+    const scene_cluster_t *clusters;     uint16_t cluster_count;  /* reloc */
+    const scene_key_t *keys;             uint32_t key_count;      /* reloc */
+    const scene_prim_t *prims;           uint32_t prim_count;     /* reloc */
+    const scene_density_component_t *density_components;          /* reloc */
     uint32_t density_component_count;
 } scene_t;
 

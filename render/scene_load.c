@@ -688,6 +688,45 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
     return SCENE_LOAD_OK;
 }
 
+scene_load_status_t scene_load_shape(const uint8_t *buf, size_t len, scene_t *shape,
+                                     uint32_t *texel_bytes, scene_load_error_t *err)
+{
+    struct load L;
+    memset(&L, 0, sizeof L);
+    L.buf = buf;
+    L.err = err;
+    err->status = SCENE_LOAD_OK;
+    err->message[0] = 0;
+    memset(shape, 0, sizeof *shape);
+    *texel_bytes = 0;
+    LOAD_TRY(load_header(&L, buf ? len : 0));
+    shape->light_count = (uint16_t)L.sec[SCN_SEC_LIGHTS].count;
+    shape->material_count = (uint16_t)L.sec[SCN_SEC_MATERIALS].count;
+    shape->map_count = (uint16_t)L.sec[SCN_SEC_MAPS].count;
+    shape->cluster_count = (uint16_t)L.sec[SCN_SEC_CLUSTERS].count;
+    shape->key_count = L.sec[SCN_SEC_KEYS].count;
+    shape->prim_count = L.sec[SCN_SEC_PRIMS].count;
+    shape->density_component_count = L.sec[SCN_SEC_COMPONENTS].count;
+    *texel_bytes = L.sec[SCN_SEC_TEXELS].count;
+    return SCENE_LOAD_OK;
+}
+
+/* Keep in step with the allocations of scene_load above: each array (at
+ * least one element), the nesting scratch, each padded by at most 64. */
+size_t scene_load_bytes(const scene_t *shape, uint32_t texel_bytes)
+{
+#define LOAD_BYTES(type, n) (sizeof(type) * (size_t)((n) ? (n) : 1))
+    return LOAD_BYTES(scene_light_t, shape->light_count) +
+           LOAD_BYTES(scene_material_t, shape->material_count) +
+           LOAD_BYTES(scene_map_t, shape->map_count) + LOAD_BYTES(uint8_t, texel_bytes) +
+           LOAD_BYTES(scene_cluster_t, shape->cluster_count) +
+           LOAD_BYTES(scene_prim_t, shape->prim_count) +
+           LOAD_BYTES(scene_density_component_t, shape->density_component_count) +
+           LOAD_BYTES(scene_key_t, shape->key_count) + LOAD_BYTES(uint8_t, shape->cluster_count) +
+           9 * 64;
+#undef LOAD_BYTES
+}
+
 const char *scene_load_status_name(scene_load_status_t status)
 {
     switch (status) {

@@ -47,6 +47,16 @@ typedef struct {
 scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena,
                                scene_t *out, scene_load_error_t *err);
 
+/* Checks the header and section table of buf[0..len) (CRC included, not
+ * the records) and fills the counts of *shape (every pointer NULL, every
+ * other field 0) and the texel bytes of all maps, so memory can be sized
+ * before loading: scene_load_bytes and render_prepare_bytes (render.h). */
+scene_load_status_t scene_load_shape(const uint8_t *buf, size_t len, scene_t *shape,
+                                     uint32_t *texel_bytes, scene_load_error_t *err);
+
+/* Arena bytes scene_load needs at most for a scene of this shape. */
+size_t scene_load_bytes(const scene_t *shape, uint32_t texel_bytes);
+
 /* A constant string naming the status. */
 const char *scene_load_status_name(scene_load_status_t status);
 

@@ -120,7 +120,7 @@ static void trace_test_prim(trace_walk_t *w, uint32_t prim)
 
 static int trace_box(trace_walk_t *w, const aabb_t *b)
 {
-    if (!w->ctx->frame->options.use_bounds)
+    if (!w->ctx->options.use_bounds)
         return 1;
     w->ctx->stats.box_tests++;
     num_t tmax = w->mode == TRACE_NEAREST && w->nearest.found ? w->nearest.t : w->tmax;
@@ -133,7 +133,7 @@ static void trace_own_prims(trace_walk_t *w, const render_cluster_t *c)
     for (uint32_t k = 0; k < c->prim_count; k++) {
         uint32_t prim = f->prim_list[c->first_prim + k];
         /* in a flat walk the primitive's own box stands in for the tree */
-        if (!f->options.use_hierarchy && !trace_box(w, &f->prims[prim].bounds))
+        if (!w->ctx->options.use_hierarchy && !trace_box(w, &f->prims[prim].bounds))
             continue;
         trace_test_prim(w, prim);
     }
@@ -160,7 +160,7 @@ static void trace_walk(trace_walk_t *w, const uint16_t *clip, uint32_t clip_coun
                 continue;
             trace_own_prims(w, c);
         }
-    } else if (f->options.use_hierarchy) {
+    } else if (w->ctx->options.use_hierarchy) {
         trace_cluster(w, 0);
     } else {
         for (uint32_t prim = 0; prim < f->prim_count; prim++)
@@ -205,7 +205,7 @@ static void trace_surface_look(const render_ctx_t *ctx, const hit_t *hit, const 
 static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t distance)
 {
     rgb_t pass = rgb_make(NUM_ONE, NUM_ONE, NUM_ONE);
-    if (!ctx->frame->options.shadows)
+    if (!ctx->options.shadows)
         return pass;
     ctx->stats.shadow++;
     ray_t ray = {origin, dir};
@@ -307,7 +307,6 @@ static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray)
 
 static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, int depth)
 {
-    const render_frame_t *f = ctx->frame;
     const scene_material_t *m = trace_material(ctx, hit->prim);
     rgb_t colour;
     vec3_t n;
@@ -320,7 +319,7 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, 
     shade_src_trc(m, cos_theta, &src, &trc);
     rgb_t out = trace_lights(ctx, hit, m, colour, n, ray->dir, src);
 
-    int can_recurse = depth < f->options.max_depth;
+    int can_recurse = depth < ctx->options.max_depth;
     rgb_t reflected = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     int have_reflected = 0;
     vec3_t outside = vec3_madd(hit->point, n, TRACE_EPSILON);
@@ -349,7 +348,7 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, 
                 }
                 through = reflected;
             }
-        } else if (f->options.refractionless) {
+        } else if (ctx->options.refractionless) {
             ray_t r = {inside, ray->dir};
             through = trace_straight(ctx, &r);
         }
@@ -375,6 +374,7 @@ void render_ctx_init(render_ctx_t *ctx, const render_frame_t *frame)
 {
     memset(ctx, 0, sizeof *ctx);
     ctx->frame = frame;
+    ctx->options = frame->options;
 }
 
 static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const uint16_t *clip,
@@ -390,7 +390,14 @@ static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const
     ray.dir = vec3_normalize(vec3_make(num_mul(sx, f->screen_half_w), num_mul(sy, f->screen_half_h), NUM_ONE));
     ctx->pixel_lost = 0;
     ctx->stats.primary++;
-    rgb_t c = trace_ray(ctx, &ray, NUM_ZERO, 0, clip, clip_count);
+    /* trace_ray at depth 0, split so the camera ray's own search is
+     * counted apart from the secondary rays of its shading */
+    uint64_t boxes = ctx->stats.box_tests, prims = ctx->stats.prim_tests;
+    hit_t hit;
+    int found = trace_nearest(ctx, &ray, NUM_ZERO, clip, clip_count, &hit);
+    ctx->stats.primary_box_tests += ctx->stats.box_tests - boxes;
+    ctx->stats.primary_prim_tests += ctx->stats.prim_tests - prims;
+    rgb_t c = found ? trace_shade(ctx, &ray, &hit, 0) : f->scene->background;
     if (ctx->pixel_lost || rgb_is_sat(c))
         ctx->stats.precision_lost_pixels++;
     rgb8_t out = {num_to_u8(c.r), num_to_u8(c.g), num_to_u8(c.b)};

@@ -39,7 +39,7 @@ static void nc_bcast_read(struct line_msg *m)
     int forbidden = imsu_bcast_write_begin(&imsu_rc_ncs, me, &w);
     if (forbidden == IMSU_OK)
         imsu_bcast_write_end(&imsu_rc_ncs, me);
-    msg_set(m, MSG_BCAST_READ_DONE, 16);
+    selftest_msg_set(m, MSG_BCAST_READ_DONE, 16);
     wire_put_u32(m->payload, (uint32_t)st);
     wire_put_u32(m->payload + 4, crc);
     wire_put_u32(m->payload + 8, gen);
@@ -50,13 +50,13 @@ static void nc_bcast_read(struct line_msg *m)
 static void nc_stress(struct line_msg *m)
 {
     uint32_t msgs = wire_get_u32(m->payload);
-    struct stress_stream s[2];
-    stress_stream_init(&s[0], RC_CORE, 0, msgs);
-    stress_stream_init(&s[1], RC_CORE, 1, msgs);
-    if (stress_run(s, 2) != 0)
+    struct selftest_stream s[2];
+    selftest_stream_init(&s[0], RC_CORE, 0, msgs);
+    selftest_stream_init(&s[1], RC_CORE, 1, msgs);
+    if (selftest_stress_run(s, 2) != 0)
         klog("stress: stalled with %u to receive, %u to send", (unsigned)s[0].left,
              (unsigned)s[1].left);
-    msg_set(m, MSG_STRESS_REPORT, 16);
+    selftest_msg_set(m, MSG_STRESS_REPORT, 16);
     wire_put_u64(m->payload, s[0].bytes);
     wire_put_u32(m->payload + 8, s[0].errors + s[0].left);
     wire_put_u32(m->payload + 12, 0);
@@ -87,7 +87,7 @@ void nc_main(void *arg)
             break;
         case MSG_FAULT: {
             uint8_t kind = wire_get_u8(m->payload + 2);
-            msg_set(m, MSG_FAULT_ACK, 4);
+            selftest_msg_set(m, MSG_FAULT_ACK, 4);
             wire_put_u32(m->payload, 0);
             nc_send(m);
             selftest_fault_now(kind);

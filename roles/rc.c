@@ -28,7 +28,7 @@ static void rc_ping_ncs(struct line_msg *m)
     uint32_t n = board_ncores, ok = 0, first_bad = 0xFFFFFFFFu;
     uint64_t deadline = ktime_deadline_ms(PING_TIMEOUT_MS);
     for (uint32_t k = FIRST_NC; k < n; k++) {
-        msg_set(m, MSG_PING, 4);
+        selftest_msg_set(m, MSG_PING, 4);
         wire_put_u32(m->payload, k);
         line_send(k, m, deadline);
     }
@@ -39,7 +39,7 @@ static void rc_ping_ncs(struct line_msg *m)
         else if (first_bad == 0xFFFFFFFFu)
             first_bad = k;
     }
-    msg_set(m, MSG_PING_NCS_DONE, 12);
+    selftest_msg_set(m, MSG_PING_NCS_DONE, 12);
     wire_put_u32(m->payload, ok);
     wire_put_u32(m->payload + 4, n - FIRST_NC);
     wire_put_u32(m->payload + 8, first_bad);
@@ -73,7 +73,7 @@ static void rc_imsu_pair(struct line_msg *m)
         selftest_fill(w, bytes, seed, 0);
         mine = crc32(w, bytes);
         /* Still inside the write: the DM's swap must be refused now. */
-        msg_set(m, MSG_IMSU_MIDWRITE, 0);
+        selftest_msg_set(m, MSG_IMSU_MIDWRITE, 0);
         rc_send(DM_CORE, m);
         r = selftest_recv_type(DM_CORE, MSG_IMSU_MIDWRITE_SEEN, m,
                                ktime_deadline_ms(REPLY_TIMEOUT_MS));
@@ -84,7 +84,7 @@ static void rc_imsu_pair(struct line_msg *m)
         if (r != IMSU_OK)
             status = r;
     }
-    msg_set(m, MSG_IMSU_PAIR_DONE, 16);
+    selftest_msg_set(m, MSG_IMSU_PAIR_DONE, 16);
     wire_put_u32(m->payload, (uint32_t)status);
     wire_put_u32(m->payload + 4, mine);
     wire_put_u32(m->payload + 8, misuse_failed);
@@ -122,7 +122,7 @@ static void rc_imsu_bcast(struct line_msg *m)
     }
     uint64_t deadline = ktime_deadline_ms(REPLY_TIMEOUT_MS);
     for (uint32_t k = FIRST_NC; k < n; k++) {
-        msg_set(m, MSG_BCAST_READ, 4);
+        selftest_msg_set(m, MSG_BCAST_READ, 4);
         wire_put_u32(m->payload, bytes);
         line_send(k, m, deadline);
     }
@@ -135,7 +135,7 @@ static void rc_imsu_bcast(struct line_msg *m)
         if ((int32_t)wire_get_u32(m->payload + 12) != IMSU_ERR_NOT_HOLDER)
             misuse_failed++;
     }
-    msg_set(m, MSG_IMSU_BCAST_DONE, 12);
+    selftest_msg_set(m, MSG_IMSU_BCAST_DONE, 12);
     wire_put_u32(m->payload, ok);
     wire_put_u32(m->payload + 4, n - FIRST_NC);
     wire_put_u32(m->payload + 8, misuse_failed);
@@ -144,23 +144,23 @@ static void rc_imsu_bcast(struct line_msg *m)
 
 static void rc_stress(struct line_msg *m)
 {
-    static struct stress_stream s[2 * MAX_CORES];
+    static struct selftest_stream s[2 * MAX_CORES];
     uint32_t msgs = wire_get_u32(m->payload);
     uint32_t n = 0, skipped = 0;
-    stress_stream_init(&s[n++], DM_CORE, 0, msgs);
-    stress_stream_init(&s[n++], DM_CORE, 1, msgs);
+    selftest_stream_init(&s[n++], DM_CORE, 0, msgs);
+    selftest_stream_init(&s[n++], DM_CORE, 1, msgs);
     for (uint32_t k = FIRST_NC; k < board_ncores; k++) {
         if (unit_is_halted(k)) {
             skipped++;
             continue;
         }
-        msg_set(m, MSG_STRESS, 4);
+        selftest_msg_set(m, MSG_STRESS, 4);
         wire_put_u32(m->payload, msgs);
         rc_send(k, m);
-        stress_stream_init(&s[n++], k, 0, msgs);
-        stress_stream_init(&s[n++], k, 1, msgs);
+        selftest_stream_init(&s[n++], k, 0, msgs);
+        selftest_stream_init(&s[n++], k, 1, msgs);
     }
-    if (stress_run(s, n) != 0)
+    if (selftest_stress_run(s, n) != 0)
         klog("stress: stalled: some line stopped moving");
     uint64_t bytes = 0;
     uint32_t errors = 0;
@@ -181,7 +181,7 @@ static void rc_stress(struct line_msg *m)
         bytes += wire_get_u64(m->payload);
         errors += wire_get_u32(m->payload + 8);
     }
-    msg_set(m, MSG_STRESS_REPORT, 16);
+    selftest_msg_set(m, MSG_STRESS_REPORT, 16);
     wire_put_u64(m->payload, bytes);
     wire_put_u32(m->payload + 8, errors);
     wire_put_u32(m->payload + 12, skipped);
@@ -193,7 +193,7 @@ static void rc_fault(struct line_msg *m)
     uint16_t core = wire_get_u16(m->payload);
     uint8_t kind = wire_get_u8(m->payload + 2);
     if (core == RC_CORE) {
-        msg_set(m, MSG_FAULT_ACK, 4);
+        selftest_msg_set(m, MSG_FAULT_ACK, 4);
         wire_put_u32(m->payload, 0);
         rc_send(DM_CORE, m);
         selftest_fault_now(kind);
@@ -202,7 +202,7 @@ static void rc_fault(struct line_msg *m)
     int r = line_send(core, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
     if (r == LINE_OK)
         r = selftest_recv_type(core, MSG_FAULT_ACK, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
-    msg_set(m, MSG_FAULT_ACK, 4);
+    selftest_msg_set(m, MSG_FAULT_ACK, 4);
     wire_put_u32(m->payload, (uint32_t)r);
     rc_send(DM_CORE, m);
 }

@@ -41,13 +41,13 @@ uint32_t selftest_check(const uint8_t *p, size_t n, uint32_t seed, uint32_t seq)
     return bad;
 }
 
-void msg_set(struct line_msg *m, uint16_t type, uint16_t len)
+void selftest_msg_set(struct line_msg *m, uint16_t type, uint16_t len)
 {
     m->type = type;
     m->len = len;
 }
 
-void stress_stream_init(struct stress_stream *s, uint32_t peer, int sending,
+void selftest_stream_init(struct selftest_stream *s, uint32_t peer, int sending,
                         uint32_t msgs)
 {
     s->peer = peer;
@@ -59,20 +59,20 @@ void stress_stream_init(struct stress_stream *s, uint32_t peer, int sending,
 }
 
 /* The seed of the stream from core a to core b. */
-static uint32_t stress_seed(uint32_t from, uint32_t to)
+static uint32_t selftest_stress_seed(uint32_t from, uint32_t to)
 {
     return (from << 16) ^ to ^ 0x5EED0000u;
 }
 
 /* One step of one stream; returns 1 if a message moved. */
-static int stress_step(struct stress_stream *s, struct line_msg *m)
+static int selftest_stress_step(struct selftest_stream *s, struct line_msg *m)
 {
     uint32_t me = mycpu()->core;
     if (s->sending) {
         if (!line_send_ready_arm(s->peer, LINE_MAX_PAYLOAD))
             return 0;
-        msg_set(m, MSG_STRESS_DATA, LINE_MAX_PAYLOAD);
-        selftest_fill(m->payload, LINE_MAX_PAYLOAD, stress_seed(me, s->peer), s->seq);
+        selftest_msg_set(m, MSG_STRESS_DATA, LINE_MAX_PAYLOAD);
+        selftest_fill(m->payload, LINE_MAX_PAYLOAD, selftest_stress_seed(me, s->peer), s->seq);
         if (line_try_send(s->peer, m) != LINE_OK)
             return 0;
     } else {
@@ -80,7 +80,7 @@ static int stress_step(struct stress_stream *s, struct line_msg *m)
         if (r == LINE_ERR_EMPTY)
             return 0;
         if (r != LINE_OK || m->type != MSG_STRESS_DATA || m->len != LINE_MAX_PAYLOAD ||
-            selftest_check(m->payload, m->len, stress_seed(s->peer, me), s->seq) != 0)
+            selftest_check(m->payload, m->len, selftest_stress_seed(s->peer, me), s->seq) != 0)
             s->errors++;
     }
     s->seq++;
@@ -89,7 +89,7 @@ static int stress_step(struct stress_stream *s, struct line_msg *m)
     return 1;
 }
 
-int stress_run(struct stress_stream *s, uint32_t n)
+int selftest_stress_run(struct selftest_stream *s, uint32_t n)
 {
     static struct line_msg msg[MAX_CORES]; /* one scratch message per core */
     struct line_msg *m = &msg[mycpu()->core];
@@ -103,7 +103,7 @@ int stress_run(struct stress_stream *s, uint32_t n)
             active++;
             /* A few messages per stream per pass keeps every line busy. */
             for (int k = 0; k < 4 && s[i].left; k++) {
-                if (!stress_step(&s[i], m))
+                if (!selftest_stress_step(&s[i], m))
                     break;
                 moved++;
             }

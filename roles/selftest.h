@@ -14,7 +14,7 @@ void selftest_fill(uint8_t *p, size_t n, uint32_t seed, uint32_t seq);
 uint32_t selftest_check(const uint8_t *p, size_t n, uint32_t seed, uint32_t seq);
 
 /* One stress stream: messages to send to, or receive from, one peer. */
-struct stress_stream {
+struct selftest_stream {
     uint32_t peer;      /* the other core */
     int sending;        /* 1 send, 0 receive */
     uint32_t left;      /* messages still to go */
@@ -23,12 +23,12 @@ struct stress_stream {
     uint32_t errors;    /* bad crc, wrong order, wrong content, wrong type */
 };
 
-void stress_stream_init(struct stress_stream *s, uint32_t peer, int sending,
+void selftest_stream_init(struct selftest_stream *s, uint32_t peer, int sending,
                         uint32_t msgs);
 /* Steps every stream with non-blocking line calls until all are done,
  * sleeping on the doorbell when none can move.  Returns 0, or -1 if nothing
  * moved for STRESS_STALL_MS (a peer died): the streams say how far they got. */
-int stress_run(struct stress_stream *s, uint32_t n);
+int selftest_stress_run(struct selftest_stream *s, uint32_t n);
 
 /* Makes this core fault now with enum link_fault_kind kind, or one of the
  * FAULT_INJECT_* spinlock misuses; never returns. */
@@ -37,7 +37,7 @@ void selftest_fault_now(uint8_t kind) __attribute__((noreturn));
 int selftest_fault_kind_valid(uint8_t kind);
 
 /* Small helpers for message payloads. */
-void msg_set(struct line_msg *m, uint16_t type, uint16_t len);
+void selftest_msg_set(struct line_msg *m, uint16_t type, uint16_t len);
 
 /* Receives from peer until a message of the given type comes (others are
  * logged and dropped: late answers of an earlier, timed-out request).

@@ -12,7 +12,7 @@ test_areas_ARITH := double
 # (drivers/framemem/): the hardware-free parts, tested on the host.
 HOST_TESTS += test_framemem test_fwcfg
 test_framemem_SRCS := tests/host/test_framemem.c drivers/framemem/fm.c \
-	drivers/framemem/dc_ring.c
+	drivers/framemem/dc_ring.c drivers/framemem/dc_selftest_pattern.c
 test_framemem_ARITH := double
 test_framemem_LIBS := -lpthread
 test_fwcfg_SRCS := tests/host/test_fwcfg.c drivers/framemem/fwcfg_format.c

@@ -22,6 +22,7 @@ void fm_clear(struct fm *fm)
 {
     memset(fm->pixels, 0, fm_bytes(fm));
     fm->runs_written = 0;
+    fm->pixels_written = 0;
     fm->runs_refused = 0;
 }
 
@@ -39,6 +40,7 @@ int fm_write_run(struct fm *fm, uint32_t x, uint32_t y, const uint32_t *px, uint
     }
     memcpy(&fm->pixels[(size_t)y * fm->width + x], px, (size_t)n * sizeof *px);
     fm->runs_written++;
+    fm->pixels_written += n;
     return FM_OK;
 }
 

@@ -30,6 +30,8 @@ struct fm {
     uint32_t *pixels; /* row-major, stride = width pixels */
     uint32_t width, height;
     uint32_t runs_written;  /* runs stored since fm_init/fm_clear */
+    uint32_t pixels_written;/* their pixels (a frame is complete when this
+                             * reaches width * height, areas never overlap) */
     uint32_t runs_refused;  /* runs refused with FM_ERR_BOUNDS */
 };
 

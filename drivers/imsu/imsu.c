@@ -1,21 +1,6 @@
-/* imsu.c: memory swapping unit (see imsu.h for the rules and ordering). */
+/* imsu.c: memory swapping unit (see imsu.h for the rules and ordering).
+ * No hardware access beyond the spinlock: the host tests build it. */
 #include "drivers/imsu/imsu.h"
-
-#include "kernel/memlayout.h"
-#include "kernel/panic.h"
-
-struct imsu_pair imsu_dm_rc;
-struct imsu_bcast imsu_rc_ncs;
-
-void imsu_init_all(uint32_t ncores)
-{
-    (void)ncores;
-    size_t pair = LINKER_VALUE(LINKS1_IMSU_PAIR_BLOCK);
-    imsu_pair_init(&imsu_dm_rc, "DM-RC", 0, 1, (uint8_t *)__imsu_pair_start,
-                   (uint8_t *)__imsu_pair_start + pair, pair);
-    imsu_bcast_init(&imsu_rc_ncs, 1, (uint8_t *)__imsu_bcast_start,
-                    LINKER_VALUE(LINKS1_IMSU_BCAST_BLOCK));
-}
 
 void imsu_pair_init(struct imsu_pair *p, const char *name, uint32_t core_a,
                     uint32_t core_b, uint8_t *block_a, uint8_t *block_b, size_t size)

@@ -37,6 +37,7 @@ static uint8_t uart_rx_storage[UART_RX_RING_SIZE];
 static struct ringbuf uart_rx_ring;
 static volatile int uart_rx_masked;  /* 1 while receive is paused (ring full) */
 static uint32_t uart_rx_pause_count; /* times it was paused */
+static volatile int uart_rx_polling; /* 1: interrupts off, uart_rx_read polls */
 
 void uart_init(void)
 {
@@ -80,8 +81,28 @@ void uart_irq(void)
     uart_rx_drain();
 }
 
+void uart_rx_set_polling(int on)
+{
+    irq_push_off();
+    uart_rx_polling = on;
+    if (on) {
+        mmio_write32(UART_IMSC(UART0_BASE), 0);
+    } else {
+        mmio_write32(UART_ICR(UART0_BASE), UART_INT_RX | UART_INT_RT);
+        uart_rx_drain();
+        if (!uart_rx_masked)
+            mmio_write32(UART_IMSC(UART0_BASE), UART_INT_RX | UART_INT_RT);
+    }
+    irq_pop_off();
+}
+
 uint32_t uart_rx_read(uint8_t *out, uint32_t max)
 {
+    if (uart_rx_polling && !uart_rx_masked) {
+        irq_push_off();
+        uart_rx_drain();
+        irq_pop_off();
+    }
     uint32_t n = ringbuf_get_some(&uart_rx_ring, out, max);
     if (n && uart_rx_masked) {
         /* The handler runs on this core: masking interrupts orders us
@@ -91,11 +112,16 @@ uint32_t uart_rx_read(uint8_t *out, uint32_t max)
         uart_rx_masked = 0;
         mmio_write32(UART_ICR(UART0_BASE), UART_INT_RX | UART_INT_RT);
         uart_rx_drain();
-        if (!uart_rx_masked)
+        if (!uart_rx_masked && !uart_rx_polling)
             mmio_write32(UART_IMSC(UART0_BASE), UART_INT_RX | UART_INT_RT);
         irq_pop_off();
     }
     return n;
+}
+
+int uart_rx_is_polling(void)
+{
+    return uart_rx_polling;
 }
 
 uint32_t uart_rx_pending(void)

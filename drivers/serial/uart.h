@@ -17,6 +17,13 @@
 void uart_init(void);
 /* The UART's interrupt (kernel/irq.c). */
 void uart_irq(void);
+/* Bulk mode for long host uploads: with on = 1 the receive interrupt stays
+ * off and uart_rx_read() moves what the FIFO holds itself; the reader
+ * calls it every UART_RX_POLL_US.  Each received byte then costs two
+ * register reads instead of an interrupt's six register accesses and two
+ * changes of the interrupt line. */
+void uart_rx_set_polling(int on);
+int uart_rx_is_polling(void);
 /* Takes up to max received bytes; returns how many (0 if none yet). */
 uint32_t uart_rx_read(uint8_t *out, uint32_t max);
 /* Bytes waiting in the receive ring. */

@@ -27,13 +27,13 @@ WAIT_S = 30
 
 
 class Board:
-    def __init__(self, elf, smp):
+    def __init__(self, elf, smp, ram_mb=512):
         self.sock, theirs = socket.socketpair()
         # QEMU's own messages go to a file, shown only when the board dies.
         self.qemu_err = tempfile.TemporaryFile()
         self.qemu = subprocess.Popen(
             ["qemu-system-arm", "-M", "virt,gic-version=3", "-cpu", "cortex-a15",
-             "-smp", str(smp), "-m", "512", "-nographic", "-monitor", "none",
+             "-smp", str(smp), "-m", str(ram_mb), "-nographic", "-monitor", "none",
              "-kernel", elf, "-chardev", "socket,id=link,fd=%d" % theirs.fileno(),
              "-serial", "chardev:link"],
             pass_fds=[theirs.fileno()], stdout=subprocess.DEVNULL,
@@ -207,11 +207,28 @@ def fault_checks(b, smp):
           "got status %d '%s'" % (st, text(rest)))
 
 
+def small_ram_check(elf):
+    """A board with less RAM than the linker script carved is refused at
+    boot with a fault naming both sizes, not left to crash later."""
+    b = Board(elf, 3, ram_mb=256)
+    try:
+        b.wait_faults(1)
+        core, role, kind, addr, pc, status, ftext = b.faults[0]
+        check("fw_small_ram_refused", core == 0 and kind == FAULT_PANIC and
+              "256 MiB" in ftext and "needs 512 MiB" in ftext and not b.hellos,
+              "fault core %d kind %d '%s', %d hellos" % (core, kind, ftext, len(b.hellos)))
+    except (TimeoutError, EOFError, RuntimeError) as e:
+        check("fw_small_ram_refused", False, str(e))
+    finally:
+        b.stop()
+
+
 def main():
     elf, smp = sys.argv[1], int(sys.argv[2])
     if not os.path.exists(elf):
         print("FAIL fw_board: firmware %s is not built (run make)" % elf)
         return 1
+    small_ram_check(elf)
     b = Board(elf, smp)
     try:
         b.wait_hellos(smp)

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
-# Firmware checks on a 10-core board that need deliberately bad frames:
-# damaged frames, unknown commands and malformed payloads get a negative
-# LINK_RESULT naming the problem and the board keeps running; data abort,
-# prefetch abort and panic on three NCs are reported with core, role, kind
-# and address while the other unit computers keep answering.
+# Firmware checks that need what the links1 tool never does on purpose: a
+# board given too little RAM is refused at boot with both sizes named; on a
+# 10-core board damaged frames, unknown commands and malformed payloads get
+# a negative LINK_RESULT naming the problem and the board keeps running;
+# data abort, prefetch abort, panic and both spinlock misuses on five NCs
+# are reported with core, role, kind and address while the others keep
+# answering.
 set -u
 cd "$(dirname "$0")/../.."
 FW_DIR=${FW_DIR:-build}

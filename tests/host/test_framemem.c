@@ -9,6 +9,7 @@
 #include <time.h>
 
 #include "drivers/framemem/dc_ring.h"
+#include "drivers/framemem/dc_selftest.h"
 #include "drivers/framemem/fm.h"
 #include "tests/check.h"
 
@@ -60,6 +61,7 @@ static void test_fm_runs_and_bounds(void)
     CHECK_EQ_INT(fm_write_run(&fm, 0, 1024, run, 1), FM_ERR_BOUNDS);
     CHECK_EQ_INT(fm_write_run(&fm, UINT32_MAX, 0, run, 2), FM_ERR_BOUNDS);
     CHECK_EQ_INT(fm.runs_written, 2);
+    CHECK_EQ_INT(fm.pixels_written, 5);
     CHECK_EQ_INT(fm.runs_refused, 3);
     uint8_t rgb[12];
     CHECK_EQ_INT(fm_read_rgb(&fm, 1020, 1023, 4, rgb), FM_OK);
@@ -69,6 +71,7 @@ static void test_fm_runs_and_bounds(void)
     fm_clear(&fm);
     CHECK_EQ_INT(fm_get(&fm, 1023, 1023), 0);
     CHECK_EQ_INT(fm.runs_written, 0);
+    CHECK_EQ_INT(fm.pixels_written, 0);
     free(mem);
 }
 
@@ -276,6 +279,28 @@ static void test_ring_many_producers(void)
     CHECK(st.ring.full_waits > 0); /* the small FIFO did fill */
 }
 
+/* The board self-test's pattern: 24-bit pixels, no two alike in the
+ * largest frame (so a run stored anywhere but its place would show). */
+static void test_selftest_pattern_is_unique(void)
+{
+    uint8_t *seen = calloc(1u << 21, 1); /* one bit per 24-bit colour */
+    uint32_t dup = 0, wide = 0;
+    for (uint32_t y = 0; y < FM_MAX_HEIGHT; y++)
+        for (uint32_t x = 0; x < FM_MAX_WIDTH; x++) {
+            uint32_t p = dc_selftest_pixel(x, y);
+            if (p > 0x00FFFFFFu) {
+                wide++;
+                continue;
+            }
+            if (seen[p >> 3] & (1u << (p & 7)))
+                dup++;
+            seen[p >> 3] |= (uint8_t)(1u << (p & 7));
+        }
+    free(seen);
+    CHECK_EQ_INT(wide, 0);
+    CHECK_EQ_INT(dup, 0);
+}
+
 int main(void)
 {
     RUN(test_pack_round_trip);
@@ -285,5 +310,6 @@ int main(void)
     RUN(test_ring_order_full_empty);
     RUN(test_ring_wait_flags);
     RUN(test_ring_many_producers);
+    RUN(test_selftest_pattern_is_unique);
     return check_exit();
 }

@@ -112,6 +112,33 @@ static void msg_result_frame_is_parsed(void)
     close(b.fd);
 }
 
+/* A RESULT for cmd 0 is the board reporting a frame from the host it
+ * dropped: counted as a link error, never taken as a command's answer. */
+static void msg_dropped_frame_report_is_counted(void)
+{
+    struct board b;
+    int peer;
+    CHECK(fake_session(&b, &peer) == 0);
+    uint8_t frame[64], p[16] = {0, 0, 0xfd, 0xff}; /* cmd 0, LINK_ERR_BAD_FRAME */
+    memcpy(p + 4, "seq gap", 7);
+    size_t n = link_frame_encode(frame, sizeof frame, LINK_RESULT, 0, 0, p, 11);
+    CHECK(write(peer, frame, n) == (ssize_t)n);
+    uint8_t answer[8] = {2, 0, 0, 0, 9, 0, 0, 0}; /* cmd 2 ok, u32 9 */
+    n = link_frame_encode(frame, sizeof frame, LINK_RESULT, 0, 1, answer, sizeof answer);
+    CHECK(write(peer, frame, n) == (ssize_t)n);
+    struct board_frame r;
+    int status = -1;
+    const uint8_t *fields = NULL;
+    size_t nf = 0;
+    CHECK_EQ_INT(board_wait_result(&b, CMD_LINE_PING, 2000, &r, &status, &fields, &nf), 0);
+    CHECK_EQ_INT(status, 0);
+    CHECK_EQ_INT(nf, 4);
+    CHECK_EQ_INT(b.host_frames_dropped, 1);
+    CHECK_EQ_INT(board_link_errors(&b), 1);
+    close(peer);
+    close(b.fd);
+}
+
 static void msg_hello_and_fault_are_recorded(void)
 {
     struct board b;
@@ -149,6 +176,7 @@ int main(void)
     RUN(msg_fault_layout_and_round_trip);
     RUN(msg_cmd_frame_bytes_are_pinned);
     RUN(msg_result_frame_is_parsed);
+    RUN(msg_dropped_frame_report_is_counted);
     RUN(msg_hello_and_fault_are_recorded);
     return check_exit();
 }

@@ -1,0 +1,103 @@
+/* dc.c: the board's data collector (see dc.h). */
+#include "drivers/framemem/dc.h"
+
+#include "kernel/cpu.h"
+#include "kernel/gic.h"
+#include "kernel/ktime.h"
+#include "kernel/panic.h"
+#include "kernel/task.h"
+
+/* One DC on the board, shared by every core: the FIFO's slots live in the
+ * image, not in any unit computer's private memory. */
+static struct dc_slot dc_slots[DC_RING_SLOTS];
+static struct dc_ring dc_ring;
+static uint32_t dc_consumer;
+
+void dc_init(uint32_t consumer_core)
+{
+    int rc = dc_ring_init(&dc_ring, dc_slots, DC_RING_SLOTS);
+    if (rc != DC_OK)
+        panic("dc_init: %s", dc_strerror(rc));
+    dc_consumer = consumer_core;
+}
+
+void dc_push(struct dc_run *run)
+{
+    struct cpu *c = mycpu();
+    if (c->core == dc_consumer)
+        panic("dc_push on the collecting core %u: it would wait for itself",
+              (unsigned)c->core);
+    run->producer = (uint16_t)c->core;
+    for (;;) {
+        uint32_t mark = task_event_mark(); /* before looking: no lost wake-up */
+        int wake;
+        int rc = dc_ring_try_push(&dc_ring, run, &wake);
+        if (rc == DC_OK) {
+            if (wake)
+                gic_send_sgi(dc_consumer, SGI_DOORBELL);
+            return;
+        }
+        if (rc != DC_ERR_FULL)
+            panic("dc_push from core %u: %s", (unsigned)c->core, dc_strerror(rc));
+        if (dc_ring_producer_arm(&dc_ring, c->core))
+            continue; /* a slot came free meanwhile */
+        task_wait(mark, 0);
+    }
+}
+
+int dc_push_span(uint32_t x, uint32_t y, const uint8_t *rgb, uint32_t n)
+{
+    struct dc_run run;
+    if (n == 0 || x >= FM_MAX_WIDTH || y >= FM_MAX_HEIGHT)
+        return DC_ERR_RUN;
+    while (n > 0) {
+        uint32_t take = n < DC_RUN_MAX_PIXELS ? n : DC_RUN_MAX_PIXELS;
+        int rc = dc_run_pack(&run, x, y, rgb, take);
+        if (rc != DC_OK)
+            return rc; /* x ran past FM_MAX_WIDTH: the rest is refused */
+        dc_push(&run);
+        x += take;
+        rgb += 3 * take;
+        n -= take;
+    }
+    return DC_OK;
+}
+
+static void dc_wake_producer(uint32_t core, void *ctx)
+{
+    (void)ctx;
+    gic_send_sgi(core, SGI_DOORBELL);
+}
+
+uint32_t dc_collect(struct fm *fm, uint32_t max_runs)
+{
+    static struct dc_run run; /* consumer only; keeps 264 bytes off the stack */
+    uint32_t taken = 0;
+    while (taken < max_runs && dc_ring_try_pop(&dc_ring, &run) == DC_OK) {
+        (void)fm_write_run(fm, run.x, run.y, run.px, run.n); /* refusals counted */
+        taken++;
+    }
+    if (taken)
+        dc_ring_wake_producers(&dc_ring, dc_wake_producer, NULL);
+    return taken;
+}
+
+uint32_t dc_collect_wait(struct fm *fm, uint64_t deadline)
+{
+    for (;;) {
+        uint32_t mark = task_event_mark();
+        uint32_t n = dc_collect(fm, UINT32_MAX);
+        if (n)
+            return n;
+        if (dc_ring_consumer_arm(&dc_ring))
+            continue;
+        if (ktime_passed(deadline))
+            return 0;
+        task_wait(mark, deadline);
+    }
+}
+
+uint32_t dc_full_waits(void)
+{
+    return __atomic_load_n(&dc_ring.full_waits, __ATOMIC_RELAXED);
+}

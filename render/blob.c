@@ -1,0 +1,187 @@
+/* render/blob.c: scene + prepared frame in one self-contained block (see
+ * blob.h). */
+#include "render/blob.h"
+
+#include "render/scene_load.h"
+
+/* ------------------------------------------------------------ messages */
+
+typedef struct {
+    render_blob_error_t *err;
+    size_t len;
+} blob_msg_t;
+
+static void blob_msg_str(blob_msg_t *m, const char *s)
+{
+    while (s && *s && m->len + 1 < RENDER_BLOB_MSG_MAX)
+        m->err->message[m->len++] = *s++;
+    m->err->message[m->len] = 0;
+}
+
+static void blob_msg_num(blob_msg_t *m, uint64_t v)
+{
+    char d[24];
+    int k = 0;
+    do {
+        d[k++] = (char)('0' + v % 10);
+        v /= 10;
+    } while (v);
+    char s[24];
+    for (int i = 0; i < k; i++)
+        s[i] = d[k - 1 - i];
+    s[k] = 0;
+    blob_msg_str(m, s);
+}
+
+/* Sets the status and starts the message with text. */
+static blob_msg_t blob_fail(render_blob_error_t *err, render_blob_status_t st, const char *text)
+{
+    blob_msg_t m = {err, 0};
+    err->status = st;
+    err->message[0] = 0;
+    blob_msg_str(&m, text);
+    return m;
+}
+
+static void blob_ok(render_blob_error_t *err)
+{
+    err->status = RENDER_BLOB_OK;
+    err->message[0] = 0;
+}
+
+static int blob_aligned(const void *block)
+{
+    return block && (uintptr_t)block % RENDER_RELOCATE_ALIGN == 0;
+}
+
+/* ----------------------------------------------------------------- API */
+
+render_blob_status_t render_blob_bytes(const uint8_t *compiled, size_t len, size_t *bytes,
+                                       render_blob_error_t *err)
+{
+    scene_t shape;
+    uint32_t texel_bytes;
+    scene_load_error_t lerr;
+    *bytes = 0;
+    blob_ok(err);
+    if (scene_load_shape(compiled, len, &shape, &texel_bytes, &lerr) != SCENE_LOAD_OK) {
+        blob_msg_t m = blob_fail(err, RENDER_BLOB_ERR_LOAD, "scene refused: ");
+        blob_msg_str(&m, lerr.message);
+        return err->status;
+    }
+    /* the header first (alignment of the block start: none), then the
+     * loader's arrays, then the frame with its scratch */
+    *bytes = sizeof(render_blob_t) + scene_load_bytes(&shape, texel_bytes) +
+             render_prepare_bytes(&shape);
+    return RENDER_BLOB_OK;
+}
+
+render_blob_status_t render_blob_build(const uint8_t *compiled, size_t len, uint32_t frame_index,
+                                       void *block, size_t size, const char *limit_name,
+                                       render_blob_t **out, render_blob_error_t *err)
+{
+    size_t need;
+    *out = NULL;
+    if (!blob_aligned(block)) {
+        blob_fail(err, RENDER_BLOB_ERR_BLOCK, "blob block NULL or not aligned to RENDER_RELOCATE_ALIGN");
+        return err->status;
+    }
+    if (render_blob_bytes(compiled, len, &need, err) != RENDER_BLOB_OK)
+        return err->status;
+    if (need > size) {
+        blob_msg_t m = blob_fail(err, RENDER_BLOB_ERR_TOO_BIG, "the scene needs ");
+        blob_msg_num(&m, need);
+        blob_msg_str(&m, " bytes, more than the ");
+        blob_msg_num(&m, size);
+        blob_msg_str(&m, " bytes of ");
+        blob_msg_str(&m, limit_name ? limit_name : "the block");
+        return err->status;
+    }
+    arena_t arena;
+    arena_init(&arena, block, size);
+    render_blob_t *blob = ARENA_NEW_ARRAY(&arena, render_blob_t, 1);
+    scene_load_error_t lerr;
+    if (!blob || scene_load(compiled, len, &arena, &blob->scene, &lerr) != SCENE_LOAD_OK) {
+        blob_msg_t m = blob_fail(err, RENDER_BLOB_ERR_LOAD, "scene refused: ");
+        blob_msg_str(&m, blob ? lerr.message : "no room for the blob header");
+        return err->status;
+    }
+    render_frame_t *frame;
+    render_status_t st = render_prepare(&blob->scene, frame_index, &arena, &frame);
+    if (st != RENDER_OK) {
+        blob_msg_t m = blob_fail(err, RENDER_BLOB_ERR_PREPARE, "frame ");
+        blob_msg_num(&m, frame_index);
+        blob_msg_str(&m, ": ");
+        blob_msg_str(&m, render_status_name(st));
+        return err->status;
+    }
+    blob->magic = RENDER_BLOB_MAGIC;
+    blob->frame_index = frame_index;
+    blob->home = (uintptr_t)block;
+    blob->bytes = arena.used;
+    blob->frame = frame;
+    *out = blob;
+    return RENDER_BLOB_OK;
+}
+
+/* The header at block, if it is one that fits in size bytes. */
+static render_blob_t *blob_header(const void *block, size_t size, render_blob_error_t *err)
+{
+    if (!blob_aligned(block)) {
+        blob_fail(err, RENDER_BLOB_ERR_BLOCK, "blob block NULL or not aligned to RENDER_RELOCATE_ALIGN");
+        return NULL;
+    }
+    render_blob_t *blob = (render_blob_t *)(uintptr_t)block;
+    if (size < sizeof *blob || blob->magic != RENDER_BLOB_MAGIC) {
+        blob_fail(err, RENDER_BLOB_ERR_NOT_BLOB, "no blob in the block (magic)");
+        return NULL;
+    }
+    if (blob->bytes < sizeof *blob || blob->bytes > size) {
+        blob_msg_t m = blob_fail(err, RENDER_BLOB_ERR_NOT_BLOB, "the blob's ");
+        blob_msg_num(&m, blob->bytes);
+        blob_msg_str(&m, " bytes do not fit the block of ");
+        blob_msg_num(&m, size);
+        return NULL;
+    }
+    return blob;
+}
+
+render_blob_status_t render_blob_relocate(void *block, size_t size, render_blob_t **out,
+                                          render_blob_error_t *err)
+{
+    *out = NULL;
+    blob_ok(err);
+    render_blob_t *blob = blob_header(block, size, err);
+    if (!blob)
+        return err->status;
+    uintptr_t home = blob->home;
+    /* old addresses of the header's scene and frame pointer targets */
+    const scene_t *scene = (const scene_t *)(home + offsetof(render_blob_t, scene));
+    render_frame_t *frame = blob->frame;
+    const char *bad;
+    if (render_relocate(block, blob->bytes, home, &scene, &frame, &bad) != RENDER_OK) {
+        blob_msg_t m = blob_fail(err, RENDER_BLOB_ERR_RELOCATE, "blob not self-contained: ");
+        blob_msg_str(&m, bad);
+        return err->status;
+    }
+    blob->frame = frame;
+    blob->home = (uintptr_t)block;
+    *out = blob;
+    return RENDER_BLOB_OK;
+}
+
+render_blob_status_t render_blob_open(const void *block, size_t size, const render_blob_t **out,
+                                      render_blob_error_t *err)
+{
+    *out = NULL;
+    blob_ok(err);
+    const render_blob_t *blob = blob_header(block, size, err);
+    if (!blob)
+        return err->status;
+    if (blob->home != (uintptr_t)block) {
+        blob_fail(err, RENDER_BLOB_ERR_NOT_BLOB, "the blob was built elsewhere and not relocated here");
+        return err->status;
+    }
+    *out = blob;
+    return RENDER_BLOB_OK;
+}

@@ -1,0 +1,87 @@
+/* render/blob.h: a loaded scene and one prepared frame in one block of
+ * memory, holding no pointer outside itself: the unit that travels through
+ * the IMSU.
+ *
+ *   DM: render_blob_bytes() to refuse a scene too big for the block, then
+ *       render_blob_build() into its IMSU block (scene_load + render_prepare
+ *       into one arena at the block's start); the IMSU swap hands the block
+ *       to the RC at the same address.
+ *   RC: copies blob->bytes bytes into the broadcast block, then
+ *       render_blob_relocate() there once (every pointer moved by the
+ *       distance between the blocks).
+ *   NC: render_blob_open() on the broadcast block (read-only), then
+ *       render_ctx_init(&ctx, blob->frame) and render_area() (render/clip.h).
+ *
+ *   block: | render_blob_t | scene arrays (scene_load) | frame (render_prepare) |
+ *          ^ home                                        bytes in use ^
+ *
+ * No malloc, no stdio, no mutable globals: runs on the board and the host.
+ */
+#ifndef LINKS1_RENDER_BLOB_H
+#define LINKS1_RENDER_BLOB_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "render/relocate.h"
+#include "render/render.h"
+
+#define RENDER_BLOB_MAGIC 0x4c42314cu /* "L1BL" in memory, little-endian */
+#define RENDER_BLOB_MSG_MAX 160
+
+typedef struct {
+    uint32_t magic;        /* RENDER_BLOB_MAGIC once built */
+    uint32_t frame_index;  /* the frame prepared */
+    uintptr_t home;        /* address of the block the pointers are valid at */
+    size_t bytes;          /* bytes in use from the block's start: what a
+                              copy must take */
+    scene_t scene;         /* the loaded scene; its arrays are in the block */
+    render_frame_t *frame; /* reloc; the prepared frame, in the block */
+} render_blob_t;
+
+typedef enum {
+    RENDER_BLOB_OK = 0,
+    RENDER_BLOB_ERR_TOO_BIG,  /* the scene needs more bytes than the block */
+    RENDER_BLOB_ERR_LOAD,     /* the compiled scene was refused (scene_load) */
+    RENDER_BLOB_ERR_PREPARE,  /* render_prepare failed */
+    RENDER_BLOB_ERR_BLOCK,    /* block NULL or not aligned to RENDER_RELOCATE_ALIGN */
+    RENDER_BLOB_ERR_NOT_BLOB, /* no blob in the block (magic), it overruns the
+                                 block, or (open) it is not relocated there */
+    RENDER_BLOB_ERR_RELOCATE, /* a pointer outside the blob (render_relocate) */
+} render_blob_status_t;
+
+typedef struct {
+    render_blob_status_t status;
+    char message[RENDER_BLOB_MSG_MAX]; /* e.g. "the scene needs 812544 bytes,
+                                          more than the 524288 bytes of
+                                          IMSU_BLOCK_BYTES" */
+} render_blob_error_t;
+
+/* Bytes a blob of this compiled scene needs at most (header, loaded scene,
+ * prepared frame, scratch and alignment), from its header and section
+ * table alone; any frame of the animation fits in it. */
+render_blob_status_t render_blob_bytes(const uint8_t *compiled, size_t len, size_t *bytes,
+                                       render_blob_error_t *err);
+
+/* Loads the compiled scene and prepares frame_index into block[0..size),
+ * which must be aligned to RENDER_RELOCATE_ALIGN.  A scene whose
+ * render_blob_bytes exceeds size is refused before anything is written,
+ * with RENDER_BLOB_ERR_TOO_BIG and a message naming limit_name (the caller's
+ * name for the block's size, e.g. "IMSU_BLOCK_BYTES"; NULL: "the block").
+ * *out = the blob at the block's start. */
+render_blob_status_t render_blob_build(const uint8_t *compiled, size_t len, uint32_t frame_index,
+                                       void *block, size_t size, const char *limit_name,
+                                       render_blob_t **out, render_blob_error_t *err);
+
+/* After a byte copy of a blob (its first blob->bytes bytes) to block:
+ * moves every pointer from the address it was built at (blob->home) to
+ * block, and sets home.  Leaves the copy untouched on failure. */
+render_blob_status_t render_blob_relocate(void *block, size_t size, render_blob_t **out,
+                                          render_blob_error_t *err);
+
+/* Checks that block holds a blob valid at this address (magic, home,
+ * bytes within size): what an NC does before reading it. */
+render_blob_status_t render_blob_open(const void *block, size_t size, const render_blob_t **out,
+                                      render_blob_error_t *err);
+
+#endif

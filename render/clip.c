@@ -1,0 +1,148 @@
+/* render/clip.c: Y and X screen clipping and the NC's area loop (see
+ * clip.h).  Integer compares on the DM's screen rectangles only. */
+#include "render/clip.h"
+
+#include <string.h>
+
+size_t render_clip_bytes(const render_frame_t *frame)
+{
+    /* ylist and xlist, one entry per cluster each */
+    return 2 * sizeof(uint16_t) * (size_t)frame->cluster_count;
+}
+
+render_status_t render_clip_init(render_clip_t *clip, const render_frame_t *frame, void *memory,
+                                 size_t bytes)
+{
+    memset(clip, 0, sizeof *clip);
+    if (!memory || (uintptr_t)memory % _Alignof(uint16_t) != 0 || bytes < render_clip_bytes(frame))
+        return RENDER_ERR_ARENA;
+    clip->frame = frame;
+    clip->ylist = memory;
+    clip->xlist = clip->ylist + frame->cluster_count;
+    clip->x = -1;
+    return RENDER_OK;
+}
+
+/* Cluster a goes before cluster b in a Y list. */
+static int clip_before(const render_cluster_t *cl, uint16_t a, uint16_t b)
+{
+    return cl[a].screen_x0 < cl[b].screen_x0 || (cl[a].screen_x0 == cl[b].screen_x0 && a < b);
+}
+
+/* Bottom-up merge sort of ylist by (screen_x0, index), xlist as scratch:
+ * n log n compares even for the thousands of clusters of a city. */
+static void clip_sort(render_clip_t *clip)
+{
+    const render_cluster_t *cl = clip->frame->clusters;
+    uint32_t n = clip->ycount;
+    uint16_t *src = clip->ylist, *dst = clip->xlist;
+    for (uint32_t width = 1; width < n; width *= 2) {
+        for (uint32_t lo = 0; lo < n; lo += 2 * width) {
+            uint32_t mid = lo + width < n ? lo + width : n;
+            uint32_t hi = lo + 2 * width < n ? lo + 2 * width : n;
+            uint32_t i = lo, j = mid, k = lo;
+            while (i < mid && j < hi)
+                dst[k++] = clip_before(cl, src[j], src[i]) ? src[j++] : src[i++];
+            while (i < mid)
+                dst[k++] = src[i++];
+            while (j < hi)
+                dst[k++] = src[j++];
+        }
+        uint16_t *t = src;
+        src = dst;
+        dst = t;
+    }
+    if (src != clip->ylist)
+        memcpy(clip->ylist, src, n * sizeof *src);
+}
+
+static void clip_x_restart(render_clip_t *clip)
+{
+    clip->xcount = 0;
+    clip->next = 0;
+    clip->x = -1;
+}
+
+uint32_t render_clip_y(render_clip_t *clip, const render_area_t *area, int all)
+{
+    const render_frame_t *f = clip->frame;
+    /* the area in signed pixels, inclusive, like the rectangles */
+    int32_t ax0 = (int32_t)area->x, ax1 = (int32_t)(area->x + area->w) - 1;
+    int32_t ay0 = (int32_t)area->y, ay1 = (int32_t)(area->y + area->h) - 1;
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < f->cluster_count; i++) {
+        const render_cluster_t *c = &f->clusters[i];
+        if (c->screen_x0 > c->screen_x1 || c->screen_y0 > c->screen_y1)
+            continue; /* no primitives, or wholly behind the eye */
+        if (!all && (c->screen_y1 < ay0 || c->screen_y0 > ay1 || c->screen_x1 < ax0 || c->screen_x0 > ax1))
+            continue;
+        clip->ylist[n++] = (uint16_t)i;
+    }
+    clip->ycount = n;
+    clip->y_kept += n;
+    clip_sort(clip);
+    clip_x_restart(clip);
+    return n;
+}
+
+uint32_t render_clip_x(render_clip_t *clip, int32_t x)
+{
+    const render_cluster_t *cl = clip->frame->clusters;
+    if (x < clip->x)
+        clip_x_restart(clip);
+    clip->x = x;
+    /* drop the clusters x has passed; the rest keep their order */
+    uint32_t k = 0;
+    for (uint32_t i = 0; i < clip->xcount; i++)
+        if (cl[clip->xlist[i]].screen_x1 >= x)
+            clip->xlist[k++] = clip->xlist[i];
+    /* take in those starting at or before x: the sort lets the scan stop
+     * at the first one starting right of x */
+    uint32_t next = clip->next;
+    while (next < clip->ycount && cl[clip->ylist[next]].screen_x0 <= x) {
+        uint16_t c = clip->ylist[next++];
+        if (cl[c].screen_x1 < x)
+            continue;
+        uint32_t j = k++;
+        while (j > 0 && num_lt(cl[c].own_bounds.lo.z, cl[clip->xlist[j - 1]].own_bounds.lo.z)) {
+            clip->xlist[j] = clip->xlist[j - 1];
+            j--;
+        }
+        clip->xlist[j] = c;
+    }
+    clip->next = next;
+    clip->xcount = k;
+    clip->x_kept += k;
+    return k;
+}
+
+render_status_t render_area(render_ctx_t *ctx, render_clip_t *clip, const render_area_t *area,
+                            const render_clip_options_t *opt, rgb8_t *out)
+{
+    const render_frame_t *f = ctx->frame;
+    if (area->w == 0 || area->h == 0 || area->x >= f->width || area->w > f->width - area->x ||
+        area->y >= f->height || area->h > f->height - area->y)
+        return RENDER_ERR_AREA;
+    int clipping = opt->y_clip || opt->x_clip;
+    if (clipping) {
+        if (clip->frame != f)
+            return RENDER_ERR_AREA;
+        render_clip_y(clip, area, !opt->y_clip);
+    }
+    for (uint32_t py = area->y; py < area->y + area->h; py++) {
+        rgb8_t *row = out + (size_t)(py - area->y) * area->w;
+        for (uint32_t px = area->x; px < area->x + area->w; px++) {
+            rgb8_t c;
+            if (!clipping) {
+                c = render_pixel(ctx, px, py);
+            } else if (opt->x_clip) {
+                uint32_t n = render_clip_x(clip, (int32_t)px);
+                c = render_pixel_clipped(ctx, px, py, clip->xlist, n);
+            } else {
+                c = render_pixel_clipped(ctx, px, py, clip->ylist, clip->ycount);
+            }
+            row[px - area->x] = c;
+        }
+    }
+    return RENDER_OK;
+}

@@ -1,0 +1,197 @@
+/* dm_checks.c: the DM's side of the bring-up checks over the serial lines
+ * and the IMSUs (CMD_LINE_PING, CMD_IMSU_TEST, CMD_LINE_STRESS). */
+#include <stdint.h>
+
+#include "drivers/imsu/imsu.h"
+#include "drivers/serial/hostlink_tx.h"
+#include "drivers/serial/line.h"
+#include "drivers/serial/uart.h"
+#include "kernel/cpu.h"
+#include "kernel/ktime.h"
+#include "proto/crc32.h"
+#include "proto/hostlink.h"
+#include "proto/wire.h"
+#include "roles/dm.h"
+#include "roles/selftest.h"
+#include "roles/unit.h"
+#include "roles/unitmsg.h"
+
+void dm_cmd_line_ping(uint16_t cmd)
+{
+    struct line_msg *m = &dm_msg;
+    uint32_t total = line_count(), ok = 0;
+    selftest_msg_set(m, MSG_PING, 4);
+    wire_put_u32(m->payload, 0xD0D0u);
+    int r = dm_rc_request(m, MSG_PONG, PING_TIMEOUT_MS);
+    if (r != LINE_OK || wire_get_u32(m->payload) != 0xD0D0u) {
+        hostlink_error(cmd, LINK_ERR_TIMEOUT, "line DM<->RC: no pong (%s)", line_strerror(r));
+        return;
+    }
+    ok++;
+    selftest_msg_set(m, MSG_PING_NCS, 0);
+    r = dm_rc_request(m, MSG_PING_NCS_DONE, PING_TIMEOUT_MS + REPLY_TIMEOUT_MS);
+    if (r != LINE_OK) {
+        hostlink_error(cmd, LINK_ERR_TIMEOUT, "RC did not report its NC pings (%s)",
+                       line_strerror(r));
+        return;
+    }
+    ok += wire_get_u32(m->payload);
+    uint32_t first_bad = wire_get_u32(m->payload + 8);
+    if (ok != total) {
+        hostlink_error(cmd, LINK_ERR_TIMEOUT,
+                       "%u of %u serial lines answered; first silent: RC<->core %u",
+                       (unsigned)ok, (unsigned)total, (unsigned)first_bad);
+        return;
+    }
+    uint8_t f[8];
+    wire_put_u32(f, ok);
+    wire_put_u32(f + 4, total);
+    hostlink_result(cmd, LINK_OK, f, sizeof f);
+}
+
+/* IMSU pair both ways (with misuse checks), then the broadcast block. */
+void dm_cmd_imsu_test(uint16_t cmd)
+{
+    struct imsu_pair *p = &imsu_dm_rc;
+    struct line_msg *m = &dm_msg;
+    const uint32_t bytes = IMSU_TEST_PAIR_BYTES;
+    const uint32_t seed_out = 0xA11CE000u + p->swaps, seed_back = 0xB0B00000u + p->swaps;
+    uint32_t blocks_ok = 0, misuse_failed = 0;
+
+    int held = imsu_held(p, DM_CORE);
+    uint8_t *w;
+    int r = imsu_write_begin(p, DM_CORE, held, &w);
+    if (r != IMSU_OK) {
+        hostlink_error(cmd, LINK_ERR_CHECK, "IMSU: DM cannot write its own block: %s",
+                       imsu_strerror(r));
+        return;
+    }
+    selftest_fill(w, bytes, seed_out, 0);
+    uint32_t crc_out = crc32(w, bytes);
+    imsu_write_end(p, DM_CORE);
+    r = imsu_swap(p, DM_CORE);
+    if (r != IMSU_OK) {
+        hostlink_error(cmd, LINK_ERR_CHECK, "IMSU: swap DM->RC refused: %s", imsu_strerror(r));
+        return;
+    }
+    /* The block went to the RC: writing it now must be refused. */
+    if (imsu_write_begin(p, DM_CORE, held, &w) != IMSU_ERR_NOT_HOLDER) {
+        misuse_failed++;
+        imsu_write_end(p, DM_CORE);
+    }
+    selftest_msg_set(m, MSG_IMSU_PAIR, 12);
+    wire_put_u32(m->payload, bytes);
+    wire_put_u32(m->payload + 4, crc_out);
+    wire_put_u32(m->payload + 8, seed_back);
+    r = dm_rc_request(m, MSG_IMSU_MIDWRITE, REPLY_TIMEOUT_MS);
+    if (r != LINE_OK) {
+        hostlink_error(cmd, LINK_ERR_TIMEOUT, "IMSU: RC did not start its write (%s)",
+                       line_strerror(r));
+        return;
+    }
+    /* The RC is inside its write: our swap must be refused. */
+    int swap_st = imsu_swap(p, DM_CORE);
+    selftest_msg_set(m, MSG_IMSU_MIDWRITE_SEEN, 4);
+    wire_put_u32(m->payload, (uint32_t)swap_st);
+    r = dm_rc_request(m, MSG_IMSU_PAIR_DONE, REPLY_TIMEOUT_MS);
+    if (r != LINE_OK) {
+        hostlink_error(cmd, LINK_ERR_TIMEOUT, "IMSU: RC did not finish the pair test (%s)",
+                       line_strerror(r));
+        return;
+    }
+    int32_t rc_status = (int32_t)wire_get_u32(m->payload);
+    uint32_t crc_back = wire_get_u32(m->payload + 4);
+    misuse_failed += wire_get_u32(m->payload + 8);
+    blocks_ok += wire_get_u32(m->payload + 12); /* RC saw our block intact */
+    if (rc_status != IMSU_OK) {
+        hostlink_error(cmd, LINK_ERR_CHECK, "IMSU: RC side failed: %s", imsu_strerror(rc_status));
+        return;
+    }
+    const uint8_t *back = imsu_read_block(p, DM_CORE);
+    if (imsu_held(p, DM_CORE) == held && crc32(back, bytes) == crc_back &&
+        selftest_check(back, bytes, seed_back, 0) == 0)
+        blocks_ok++;
+
+    selftest_msg_set(m, MSG_IMSU_BCAST, 8);
+    wire_put_u32(m->payload, IMSU_TEST_BCAST_BYTES);
+    wire_put_u32(m->payload + 4, seed_out ^ 0xCA57u);
+    r = dm_rc_request(m, MSG_IMSU_BCAST_DONE, REPLY_TIMEOUT_MS * 2);
+    if (r != LINE_OK) {
+        hostlink_error(cmd, LINK_ERR_TIMEOUT, "IMSU: RC did not finish the broadcast (%s)",
+                       line_strerror(r));
+        return;
+    }
+    uint32_t ncs_ok = wire_get_u32(m->payload), ncs = wire_get_u32(m->payload + 4);
+    misuse_failed += wire_get_u32(m->payload + 8);
+    blocks_ok += ncs_ok;
+    uint32_t expected = 2 + ncs;
+    if (blocks_ok != expected || misuse_failed) {
+        hostlink_error(cmd, LINK_ERR_CHECK,
+                       "IMSU: %u of %u blocks arrived intact (pair both ways + %u NC reads); "
+                       "%u misuse checks not refused",
+                       (unsigned)blocks_ok, (unsigned)expected, (unsigned)ncs,
+                       (unsigned)misuse_failed);
+        return;
+    }
+    uint8_t f[8];
+    wire_put_u32(f, blocks_ok);
+    wire_put_u32(f + 4, expected);
+    hostlink_result(cmd, LINK_OK, f, sizeof f);
+}
+
+void dm_cmd_line_stress(uint16_t cmd)
+{
+    if (dm_frame.length < 2 + 4) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_LINE_STRESS needs u32 MiB (4 bytes), got %u",
+                       (unsigned)(dm_frame.length - 2));
+        return;
+    }
+    uint32_t mib = wire_get_u32(dm_frame.payload + 2);
+    if (mib == 0 || mib > STRESS_MAX_MIB) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_LINE_STRESS: %u MiB is outside 1..%u",
+                       (unsigned)mib, (unsigned)STRESS_MAX_MIB);
+        return;
+    }
+    /* Both directions of every live line carry an equal share. */
+    uint32_t live = line_count();
+    for (uint32_t k = FIRST_NC; k < board_ncores; k++)
+        live -= (uint32_t)unit_is_halted(k);
+    uint64_t total = (uint64_t)mib << 20;
+    uint64_t per_stream = (total + 2u * live - 1) / (2u * live);
+    uint32_t msgs = (uint32_t)((per_stream + LINE_MAX_PAYLOAD - 1) / LINE_MAX_PAYLOAD);
+
+    struct line_msg *m = &dm_msg;
+    selftest_msg_set(m, MSG_STRESS, 4);
+    wire_put_u32(m->payload, msgs);
+    int r = line_send(RC_CORE, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
+    if (r != LINE_OK) {
+        hostlink_error(cmd, LINK_ERR_TIMEOUT, "stress: cannot reach the RC (%s)", line_strerror(r));
+        return;
+    }
+    struct selftest_stream s[2];
+    selftest_stream_init(&s[0], RC_CORE, 1, msgs);
+    selftest_stream_init(&s[1], RC_CORE, 0, msgs);
+    int stalled = selftest_stress_run(s, 2);
+    r = selftest_recv_type(RC_CORE, MSG_STRESS_REPORT, m, ktime_deadline_ms(STRESS_STALL_MS * 2));
+    if (r != LINE_OK) {
+        hostlink_error(cmd, LINK_ERR_TIMEOUT, "stress: no report from the RC (%s)",
+                       line_strerror(r));
+        return;
+    }
+    uint64_t bytes = s[1].bytes + wire_get_u64(m->payload);
+    uint32_t errors = s[1].errors + s[1].left + wire_get_u32(m->payload + 8);
+    uint32_t skipped = wire_get_u32(m->payload + 12);
+    if (errors || stalled || bytes < total) {
+        hostlink_error(cmd, LINK_ERR_CHECK,
+                       "stress: %u errors, %u KiB of %u KiB checked%s",
+                       (unsigned)errors, (unsigned)(bytes >> 10), (unsigned)(total >> 10),
+                       stalled ? ", a line stalled" : "");
+        return;
+    }
+    uint8_t f[16];
+    wire_put_u64(f, bytes);
+    wire_put_u32(f + 8, errors);
+    wire_put_u32(f + 12, skipped);
+    hostlink_result(cmd, LINK_OK, f, sizeof f);
+}
+

@@ -1,0 +1,295 @@
+/* test_blob.c: a scene + frame blob built in one block (the DM's job),
+ * copied to another address and relocated (the RC's broadcast), renders
+ * exactly as the original even once the original is overwritten and freed;
+ * no pointer into the old block survives; pointers outside the blob, blocks
+ * too small and corrupt blobs are refused with a message naming why. */
+#include "tests/check.h"
+#include "render/scene_load.h"
+#include "tests/host/test_blob_util.h"
+
+#define TB_GARBAGE 0xA5 /* what the original block is overwritten with */
+
+static uint32_t tb_frame_of(const char *name)
+{
+    return strcmp(name, "anim") == 0 ? 2 : 0; /* half way through its keys */
+}
+
+/* Aligned pointer-sized words of block[0..bytes) whose value lies in
+ * [lo, lo + span): pointers into that range (or, very unlikely, a number
+ * that looks like one). */
+static size_t tb_words_into(const void *block, size_t bytes, uintptr_t lo, size_t span)
+{
+    const uint8_t *b = block;
+    size_t n = 0;
+    for (size_t at = 0; at + sizeof(uintptr_t) <= bytes; at += sizeof(uintptr_t)) {
+        uintptr_t v;
+        memcpy(&v, b + at, sizeof v);
+        n += v >= lo && v - lo < span;
+    }
+    return n;
+}
+
+/* The forgotten-field test: build in A, copy to B, relocate B, wreck and
+ * free A, render every pixel from B.  A pointer render_relocate missed
+ * still names A: ASan stops on the read, and without ASan the 0xA5 bytes
+ * change the image. */
+static void test_relocated_copy_renders_same(void)
+{
+    for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
+        size_t size;
+        render_blob_t *a = tb_blob(tb_scenes[s], tb_frame_of(tb_scenes[s]), &size);
+        CHECK(a != NULL);
+        if (!a)
+            continue;
+        const render_frame_t *fa = a->frame;
+        size_t n = (size_t)fa->width * fa->height;
+        rgb8_t *before = tb_render_plain(fa, NULL);
+
+        void *b = tb_block(size);
+        memcpy(b, a, a->bytes);
+        render_blob_t *rb;
+        render_blob_error_t err;
+        CHECK_EQ_INT(render_blob_relocate(b, size, &rb, &err), RENDER_BLOB_OK);
+        memset(a, TB_GARBAGE, size);
+        free(a);
+        if (rb) {
+            CHECK(rb == b && rb->home == (uintptr_t)b);
+            CHECK((const void *)rb->frame->scene == (const void *)&rb->scene);
+            rgb8_t *after = tb_render_plain(rb->frame, NULL);
+            if (!tb_same(before, after, n))
+                printf("%s: the relocated copy renders differently\n", tb_scenes[s]);
+            CHECK(tb_same(before, after, n));
+            free(after);
+        }
+        free(before);
+        free(b);
+    }
+}
+
+/* Also catches pointers rendering never reads: after relocation no word
+ * of the copy points into the original, and exactly as many point into
+ * the copy as pointed into the original before. */
+static void test_relocate_no_stale_pointer(void)
+{
+    for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
+        size_t size;
+        render_blob_t *a = tb_blob(tb_scenes[s], tb_frame_of(tb_scenes[s]), &size);
+        CHECK(a != NULL);
+        if (!a)
+            continue;
+        size_t inside_a = tb_words_into(a, a->bytes, (uintptr_t)a, a->bytes);
+        /* scene: 7 arrays; frame: scene and 5 arrays; header: home, frame */
+        CHECK(inside_a >= 7 + 6 + 2);
+        void *b = tb_block(size);
+        memcpy(b, a, a->bytes);
+        render_blob_t *rb;
+        render_blob_error_t err;
+        CHECK_EQ_INT(render_blob_relocate(b, size, &rb, &err), RENDER_BLOB_OK);
+        CHECK_EQ_INT(tb_words_into(b, a->bytes, (uintptr_t)a, a->bytes), 0);
+        CHECK_EQ_INT(tb_words_into(b, a->bytes, (uintptr_t)b, a->bytes), inside_a);
+        /* relocating where it already is changes nothing */
+        uint8_t *again = malloc(a->bytes);
+        memcpy(again, b, a->bytes);
+        CHECK_EQ_INT(render_blob_relocate(b, size, &rb, &err), RENDER_BLOB_OK);
+        CHECK(memcmp(again, b, a->bytes) == 0);
+        free(again);
+        free(a);
+        free(b);
+    }
+}
+
+/* A frame prepared in the block from a scene loaded elsewhere is not
+ * self-contained: refused, naming the field, the copy untouched. */
+static void test_relocate_refuses_outside_pointers(void)
+{
+    size_t len;
+    uint8_t *buf = tb_compile("demo", &len);
+    CHECK(buf != NULL);
+    if (!buf)
+        return;
+    static _Alignas(RENDER_RELOCATE_ALIGN) uint8_t scene_mem[1 << 20];
+    arena_t scene_arena;
+    arena_init(&scene_arena, scene_mem, sizeof scene_mem);
+    scene_t scene;
+    scene_load_error_t lerr;
+    CHECK_EQ_INT(scene_load(buf, len, &scene_arena, &scene, &lerr), SCENE_LOAD_OK);
+    size_t size = render_prepare_bytes(&scene);
+    uint8_t *a = tb_block(size), *b = tb_block(size);
+    arena_t arena;
+    arena_init(&arena, a, size);
+    render_frame_t *frame;
+    CHECK_EQ_INT(render_prepare(&scene, 0, &arena, &frame), RENDER_OK);
+    memcpy(b, a, arena.used);
+    uint8_t *saved = malloc(arena.used);
+    memcpy(saved, b, arena.used);
+    const char *bad = NULL;
+    render_frame_t *moved = frame;
+    CHECK_EQ_INT(render_relocate(b, arena.used, (uintptr_t)a, NULL, &moved, &bad), RENDER_ERR_RELOCATE);
+    CHECK(bad && strcmp(bad, "frame.scene") == 0);
+    CHECK(moved == frame);
+    CHECK(memcmp(saved, b, arena.used) == 0);
+
+    /* the scene alone in its own arena relocates; a frame pointer given
+     * with a scene that is not its own is refused */
+    const scene_t *sp = &scene;
+    CHECK_EQ_INT(render_relocate(scene_mem, sizeof scene_mem, (uintptr_t)scene_mem, &sp, NULL, &bad),
+                 RENDER_ERR_RELOCATE); /* scene_t itself is on the stack */
+    CHECK(bad && strcmp(bad, "scene") == 0);
+
+    /* a base not aligned to RENDER_RELOCATE_ALIGN */
+    CHECK_EQ_INT(render_relocate(b + 8, arena.used - 8, (uintptr_t)a, NULL, &moved, &bad),
+                 RENDER_ERR_RELOCATE);
+    CHECK(bad && strstr(bad, "RENDER_RELOCATE_ALIGN") != NULL);
+    free(saved);
+    free(a);
+    free(b);
+    free(buf);
+}
+
+/* Fields bent outside a complete blob, one at a time: each is refused with
+ * its own name and the copy left as it was. */
+static void test_relocate_names_each_bad_field(void)
+{
+    size_t size;
+    render_blob_t *a = tb_blob("demo", 0, &size);
+    CHECK(a != NULL);
+    if (!a)
+        return;
+    uint8_t *b = tb_block(size);
+    render_blob_t *bb = (render_blob_t *)b;
+    uintptr_t outside = (uintptr_t)a + a->bytes + 64; /* just past the blob */
+    struct {
+        const char *field;
+        size_t offset; /* of the pointer field, from the blob's start */
+    } cases[8];
+    int n = 0;
+    const render_frame_t *f = a->frame;
+    uint32_t dens = 0;
+    while (dens < f->prim_count && f->prims[dens].kind != SCENE_PRIM_DENSITY)
+        dens++;
+    CHECK(dens < f->prim_count && a->scene.map_count > 0);
+#define TB_CASE(name, ptr_lvalue) \
+    (cases[n].field = (name), cases[n++].offset = (size_t)((const uint8_t *)&(ptr_lvalue) - (const uint8_t *)a))
+    TB_CASE("scene.prims", a->scene.prims);
+    TB_CASE("scene.maps[].texels", a->scene.maps[0].texels);
+    TB_CASE("frame.clusters", f->clusters);
+    TB_CASE("frame.density_inv_radius2", f->density_inv_radius2);
+    if (dens < f->prim_count) {
+        TB_CASE("frame.prims[].components", f->prims[dens].components);
+        TB_CASE("frame.prims[].inv_radius2", f->prims[dens].inv_radius2);
+    }
+    TB_CASE("frame", a->frame);
+#undef TB_CASE
+    for (int i = 0; i < n; i++) {
+        memcpy(b, a, a->bytes);
+        memcpy(b + cases[i].offset, &outside, sizeof outside);
+        uint8_t *saved = malloc(a->bytes);
+        memcpy(saved, b, a->bytes);
+        render_blob_t *rb;
+        render_blob_error_t err;
+        CHECK_EQ_INT(render_blob_relocate(b, size, &rb, &err), RENDER_BLOB_ERR_RELOCATE);
+        if (!strstr(err.message, cases[i].field))
+            printf("bent %s, message: %s\n", cases[i].field, err.message);
+        CHECK(strstr(err.message, cases[i].field) != NULL);
+        CHECK(memcmp(saved, b, a->bytes) == 0);
+        CHECK(rb == NULL);
+        free(saved);
+    }
+    /* a count that would take an array past the blob's end */
+    memcpy(b, a, a->bytes);
+    bb->scene.prim_count = 0x7fffffffu;
+    render_blob_t *rb;
+    render_blob_error_t err;
+    CHECK_EQ_INT(render_blob_relocate(b, size, &rb, &err), RENDER_BLOB_ERR_RELOCATE);
+    CHECK(strstr(err.message, "scene.prims") != NULL);
+    free(a);
+    free(b);
+}
+
+/* The DM's size check: the bound fits every frame, one byte less is
+ * refused before anything is written, with the numbers and the limit's
+ * name. */
+static void test_blob_size_bound(void)
+{
+    size_t len, need;
+    render_blob_error_t err;
+    const char *names[] = {"demo", "city", "anim"};
+    for (int s = 0; s < 3; s++) {
+        uint8_t *buf = tb_compile(names[s], &len);
+        CHECK(buf != NULL);
+        if (!buf)
+            continue;
+        CHECK_EQ_INT(render_blob_bytes(buf, len, &need, &err), RENDER_BLOB_OK);
+        uint8_t *block = tb_block(need + RENDER_RELOCATE_ALIGN);
+        render_blob_t *blob;
+        for (uint32_t frame = 0; frame < 4; frame++) {
+            CHECK_EQ_INT(render_blob_build(buf, len, frame, block, need, "NC_MEMORY", &blob, &err),
+                         RENDER_BLOB_OK);
+            CHECK(blob && blob->bytes <= need && blob->frame_index == frame);
+        }
+        memset(block, 0x5a, need);
+        CHECK_EQ_INT(render_blob_build(buf, len, 0, block, need - 1, "IMSU_BLOCK_BYTES", &blob, &err),
+                     RENDER_BLOB_ERR_TOO_BIG);
+        char want[80];
+        snprintf(want, sizeof want, "needs %zu bytes, more than the %zu bytes of IMSU_BLOCK_BYTES", need,
+                 need - 1);
+        if (!strstr(err.message, want))
+            printf("message: %s\n", err.message);
+        CHECK(strstr(err.message, want) != NULL);
+        CHECK(blob == NULL && block[0] == 0x5a && block[need - 1] == 0x5a);
+        free(block);
+        free(buf);
+    }
+}
+
+/* Builds that fail for other reasons name them. */
+static void test_blob_errors(void)
+{
+    size_t len, need;
+    render_blob_error_t err;
+    render_blob_t *blob;
+    const render_blob_t *cblob;
+    uint8_t *buf = tb_compile("glass", &len);
+    CHECK(buf != NULL);
+    if (!buf)
+        return;
+    CHECK_EQ_INT(render_blob_bytes(buf, len, &need, &err), RENDER_BLOB_OK);
+    uint8_t *block = tb_block(need + RENDER_RELOCATE_ALIGN);
+    /* misaligned block */
+    CHECK_EQ_INT(render_blob_build(buf, len, 0, block + 4, need, NULL, &blob, &err), RENDER_BLOB_ERR_BLOCK);
+    /* corrupt scene: the loader's own message comes through */
+    buf[len - 1] ^= 1;
+    CHECK_EQ_INT(render_blob_build(buf, len, 0, block, need, NULL, &blob, &err), RENDER_BLOB_ERR_LOAD);
+    CHECK(strstr(err.message, "checksum") != NULL);
+    CHECK_EQ_INT(render_blob_bytes(buf, len, &need, &err), RENDER_BLOB_ERR_LOAD);
+    buf[len - 1] ^= 1;
+    CHECK_EQ_INT(render_blob_bytes(buf, len, &need, &err), RENDER_BLOB_OK);
+    /* open: at home fine; a copy not relocated, garbage, a short block refused */
+    CHECK_EQ_INT(render_blob_build(buf, len, 0, block, need, NULL, &blob, &err), RENDER_BLOB_OK);
+    CHECK_EQ_INT(render_blob_open(block, need, &cblob, &err), RENDER_BLOB_OK);
+    CHECK(cblob == (const render_blob_t *)block);
+    uint8_t *copy = tb_block(need);
+    memcpy(copy, block, blob->bytes);
+    CHECK_EQ_INT(render_blob_open(copy, need, &cblob, &err), RENDER_BLOB_ERR_NOT_BLOB);
+    CHECK(strstr(err.message, "not relocated") != NULL);
+    CHECK_EQ_INT(render_blob_open(block, blob->bytes - 1, &cblob, &err), RENDER_BLOB_ERR_NOT_BLOB);
+    memset(copy, 0, need);
+    CHECK_EQ_INT(render_blob_open(copy, need, &cblob, &err), RENDER_BLOB_ERR_NOT_BLOB);
+    CHECK(strstr(err.message, "magic") != NULL);
+    render_blob_t *rb;
+    CHECK_EQ_INT(render_blob_relocate(copy, need, &rb, &err), RENDER_BLOB_ERR_NOT_BLOB);
+    free(copy);
+    free(block);
+    free(buf);
+}
+
+int main(void)
+{
+    RUN(test_relocated_copy_renders_same);
+    RUN(test_relocate_no_stale_pointer);
+    RUN(test_relocate_refuses_outside_pointers);
+    RUN(test_relocate_names_each_bad_field);
+    RUN(test_blob_size_bound);
+    RUN(test_blob_errors);
+    return check_exit();
+}

@@ -1,0 +1,92 @@
+/* test_blob_util.h: what the blob and clipping tests share: the scenes of
+ * scenes/ compiled in memory, blocks aligned like the board's, and whole
+ * images rendered the plain way (render_span) for reference. */
+#ifndef LINKS1_TEST_BLOB_UTIL_H
+#define LINKS1_TEST_BLOB_UTIL_H
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "host-tools/scene/scene_desc.h"
+#include "render/blob.h"
+#include "render/clip.h"
+
+/* The scenes every test here runs over: the demo and the paper-like ones. */
+static const char *const tb_scenes[] = {"demo", "city", "glass", "molecule", "anim"};
+#define TB_SCENE_COUNT (sizeof tb_scenes / sizeof tb_scenes[0])
+
+/* scenes/NAME.scn compiled; NULL (and a line saying why) on failure. */
+static inline uint8_t *tb_compile(const char *name, size_t *len)
+{
+    char path[128], err[SD_ERR_MAX];
+    struct sd_scene s;
+    uint8_t *buf = NULL;
+    snprintf(path, sizeof path, "scenes/%s.scn", name);
+    if (sd_parse_file(path, &s, err, sizeof err) != 0) {
+        printf("cannot parse %s: %s\n", path, err);
+        return NULL;
+    }
+    if (sd_compile(&s, &buf, len, err, sizeof err) != 0)
+        printf("cannot compile %s: %s\n", path, err);
+    sd_free(&s);
+    return buf;
+}
+
+/* A zeroed block of at least size bytes, aligned like an IMSU block. */
+static inline void *tb_block(size_t size)
+{
+    size_t rounded = (size + RENDER_RELOCATE_ALIGN - 1) / RENDER_RELOCATE_ALIGN * RENDER_RELOCATE_ALIGN;
+    void *p = aligned_alloc(RENDER_RELOCATE_ALIGN, rounded ? rounded : RENDER_RELOCATE_ALIGN);
+    if (p)
+        memset(p, 0, rounded);
+    return p;
+}
+
+/* Scene NAME as a blob of frame_index in a new block of exactly
+ * render_blob_bytes; NULL on any failure (printed). */
+static inline render_blob_t *tb_blob(const char *name, uint32_t frame_index, size_t *block_size)
+{
+    size_t len, need;
+    render_blob_error_t err;
+    render_blob_t *blob = NULL;
+    uint8_t *buf = tb_compile(name, &len);
+    if (!buf)
+        return NULL;
+    if (render_blob_bytes(buf, len, &need, &err) == RENDER_BLOB_OK) {
+        void *block = tb_block(need);
+        if (render_blob_build(buf, len, frame_index, block, need, "the test block", &blob, &err) !=
+            RENDER_BLOB_OK) {
+            printf("%s: %s\n", name, err.message);
+            free(block);
+        }
+    } else {
+        printf("%s: %s\n", name, err.message);
+    }
+    free(buf);
+    *block_size = need;
+    return blob;
+}
+
+/* Every pixel of the frame through render_span (full tree walk). */
+static inline rgb8_t *tb_render_plain(const render_frame_t *f, render_stats_t *stats)
+{
+    rgb8_t *img = calloc((size_t)f->width * f->height, sizeof *img);
+    render_ctx_t ctx;
+    render_ctx_init(&ctx, f);
+    for (uint32_t y = 0; y < f->height; y++)
+        render_span(&ctx, y, 0, f->width, img + (size_t)y * f->width);
+    if (stats)
+        *stats = ctx.stats;
+    return img;
+}
+
+static inline int tb_same(const rgb8_t *a, const rgb8_t *b, size_t n)
+{
+    for (size_t i = 0; i < n; i++)
+        if (a[i].r != b[i].r || a[i].g != b[i].g || a[i].b != b[i].b)
+            return 0;
+    return 1;
+}
+
+#endif

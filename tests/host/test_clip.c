@@ -1,0 +1,310 @@
+/* test_clip.c: the NC's screen clipping.  The Y list is exactly the
+ * clusters whose rectangle meets the area, sorted by (screen_x0, index);
+ * the X list at each pixel exactly those of the Y list holding its x;
+ * rendering areas with clipping gives the image of the plain full walk bit
+ * for bit, with fewer primary-ray tests; each speed-up switched off gives
+ * the same image. */
+#include "tests/check.h"
+#include "tests/host/test_blob_util.h"
+
+#define TC_TILE 16 /* side of the square areas the whole-image tests use */
+
+typedef struct {
+    render_blob_t *blob;
+    const render_frame_t *f;
+    void *clip_mem;
+    render_clip_t clip;
+} tc_scene_t;
+
+static int tc_open(tc_scene_t *t, const char *name)
+{
+    size_t size;
+    memset(t, 0, sizeof *t);
+    t->blob = tb_blob(name, strcmp(name, "anim") == 0 ? 2 : 0, &size);
+    if (!t->blob)
+        return 0;
+    t->f = t->blob->frame;
+    size_t bytes = render_clip_bytes(t->f);
+    t->clip_mem = malloc(bytes);
+    return render_clip_init(&t->clip, t->f, t->clip_mem, bytes) == RENDER_OK;
+}
+
+static void tc_close(tc_scene_t *t)
+{
+    free(t->blob);
+    free(t->clip_mem);
+}
+
+static int tc_meets(const render_cluster_t *c, const render_area_t *a)
+{
+    return c->screen_x0 <= c->screen_x1 && c->screen_y0 <= c->screen_y1 &&
+           c->screen_x1 >= (int32_t)a->x && c->screen_x0 <= (int32_t)(a->x + a->w - 1) &&
+           c->screen_y1 >= (int32_t)a->y && c->screen_y0 <= (int32_t)(a->y + a->h - 1);
+}
+
+/* Brute force: every cluster tested, then an insertion sort. */
+static uint32_t tc_brute_y(const render_frame_t *f, const render_area_t *a, uint16_t *out)
+{
+    uint32_t n = 0;
+    for (uint32_t i = 0; i < f->cluster_count; i++) {
+        if (!tc_meets(&f->clusters[i], a))
+            continue;
+        uint32_t j = n++;
+        while (j > 0 && f->clusters[out[j - 1]].screen_x0 > f->clusters[i].screen_x0) {
+            out[j] = out[j - 1];
+            j--;
+        }
+        out[j] = (uint16_t)i;
+    }
+    return n;
+}
+
+/* Areas the way the RC cuts screens: the whole screen, single scanlines,
+ * pieces of one scanline, square tiles. */
+static uint32_t tc_areas(const render_frame_t *f, render_area_t *out, uint32_t max)
+{
+    uint32_t n = 0, W = f->width, H = f->height;
+    out[n++] = (render_area_t){0, 0, W, H};
+    for (uint32_t y = 0; y < H && n < max; y += 7)
+        out[n++] = (render_area_t){0, y, W, 1};
+    for (uint32_t x = 0; x < W && n < max; x += 40)
+        out[n++] = (render_area_t){x, H / 2, W - x < 40 ? W - x : 40, 1};
+    for (uint32_t y = 0; y < H; y += 32)
+        for (uint32_t x = 0; x < W && n < max; x += 32)
+            out[n++] = (render_area_t){x, y, W - x < 32 ? W - x : 32, H - y < 32 ? H - y : 32};
+    return n;
+}
+
+#define TC_MAX_AREAS 256
+
+static void test_clip_y_matches_brute_force(void)
+{
+    for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
+        tc_scene_t t;
+        CHECK(tc_open(&t, tb_scenes[s]));
+        if (!t.blob)
+            continue;
+        render_area_t areas[TC_MAX_AREAS];
+        uint32_t na = tc_areas(t.f, areas, TC_MAX_AREAS);
+        uint16_t *want = malloc(sizeof *want * t.f->cluster_count);
+        int exact = 1, sorted = 1, some_cut = 0;
+        for (uint32_t i = 0; i < na; i++) {
+            uint32_t n = render_clip_y(&t.clip, &areas[i], 0);
+            uint32_t m = tc_brute_y(t.f, &areas[i], want);
+            exact &= n == m && memcmp(t.clip.ylist, want, n * sizeof *want) == 0;
+            for (uint32_t k = 1; k < n; k++) {
+                const render_cluster_t *p = &t.f->clusters[t.clip.ylist[k - 1]];
+                const render_cluster_t *q = &t.f->clusters[t.clip.ylist[k]];
+                sorted &= p->screen_x0 < q->screen_x0 ||
+                          (p->screen_x0 == q->screen_x0 && t.clip.ylist[k - 1] < t.clip.ylist[k]);
+            }
+            some_cut |= n < render_clip_y(&t.clip, &areas[i], 1);
+        }
+        if (!exact || !sorted)
+            printf("%s: Y list differs from brute force\n", tb_scenes[s]);
+        CHECK(exact);
+        CHECK(sorted);
+        CHECK(some_cut); /* Y clipping leaves clusters out somewhere */
+        free(want);
+        tc_close(&t);
+    }
+}
+
+/* At every pixel of every area, raster order: the X list holds exactly the
+ * Y-list clusters whose X range holds x, each once. */
+static void test_clip_x_matches_brute_force(void)
+{
+    for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
+        tc_scene_t t;
+        CHECK(tc_open(&t, tb_scenes[s]));
+        if (!t.blob)
+            continue;
+        const render_cluster_t *cl = t.f->clusters;
+        uint8_t *mark = calloc(t.f->cluster_count, 1);
+        render_area_t areas[TC_MAX_AREAS];
+        uint32_t na = tc_areas(t.f, areas, TC_MAX_AREAS);
+        int exact = 1;
+        uint64_t checked = 0;
+        for (uint32_t i = 0; i < na; i++) {
+            const render_area_t *a = &areas[i];
+            render_clip_y(&t.clip, a, 0);
+            for (uint32_t y = a->y; y < a->y + a->h; y++)
+                for (uint32_t x = a->x; x < a->x + a->w; x++) {
+                    uint32_t n = render_clip_x(&t.clip, (int32_t)x);
+                    uint32_t want = 0;
+                    for (uint32_t k = 0; k < t.clip.ycount; k++) {
+                        uint16_t c = t.clip.ylist[k];
+                        want += cl[c].screen_x0 <= (int32_t)x && cl[c].screen_x1 >= (int32_t)x;
+                    }
+                    uint32_t good = 0;
+                    for (uint32_t k = 0; k < n; k++) {
+                        uint16_t c = t.clip.xlist[k];
+                        good += !mark[c] && cl[c].screen_x0 <= (int32_t)x && cl[c].screen_x1 >= (int32_t)x;
+                        mark[c] = 1;
+                    }
+                    for (uint32_t k = 0; k < n; k++)
+                        mark[t.clip.xlist[k]] = 0;
+                    exact &= n == want && good == n;
+                    checked++;
+                }
+        }
+        /* going backwards restarts the window and still answers right */
+        render_area_t whole = {0, 0, t.f->width, t.f->height};
+        render_clip_y(&t.clip, &whole, 0);
+        for (int32_t x = t.f->width - 1; x >= 0; x -= 13) {
+            uint32_t n = render_clip_x(&t.clip, x), want = 0;
+            for (uint32_t k = 0; k < t.clip.ycount; k++)
+                want += cl[t.clip.ylist[k]].screen_x0 <= x && cl[t.clip.ylist[k]].screen_x1 >= x;
+            exact &= n == want;
+        }
+        if (!exact)
+            printf("%s: X list differs from brute force\n", tb_scenes[s]);
+        CHECK(exact);
+        CHECK(checked > (uint64_t)t.f->width * t.f->height);
+        free(mark);
+        tc_close(&t);
+    }
+}
+
+/* The whole image by areas of TC_TILE x TC_TILE through render_area. */
+static rgb8_t *tc_render_areas(tc_scene_t *t, const render_options_t *options,
+                               const render_clip_options_t *opt, render_stats_t *stats)
+{
+    const render_frame_t *f = t->f;
+    rgb8_t *img = calloc((size_t)f->width * f->height, sizeof *img);
+    rgb8_t tile[TC_TILE * TC_TILE];
+    render_ctx_t ctx;
+    render_ctx_init(&ctx, f);
+    ctx.options = *options;
+    for (uint32_t y = 0; y < f->height; y += TC_TILE)
+        for (uint32_t x = 0; x < f->width; x += TC_TILE) {
+            render_area_t a = {x, y, f->width - x < TC_TILE ? f->width - x : TC_TILE,
+                               f->height - y < TC_TILE ? f->height - y : TC_TILE};
+            CHECK_EQ_INT(render_area(&ctx, &t->clip, &a, opt, tile), RENDER_OK);
+            for (uint32_t r = 0; r < a.h; r++)
+                memcpy(img + (size_t)(y + r) * f->width + x, tile + r * a.w, a.w * sizeof *tile);
+        }
+    *stats = ctx.stats;
+    return img;
+}
+
+static void test_clipped_render_same_image(void)
+{
+    for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
+        tc_scene_t t;
+        CHECK(tc_open(&t, tb_scenes[s]));
+        if (!t.blob)
+            continue;
+        size_t n = (size_t)t.f->width * t.f->height;
+        render_stats_t plain_stats, clip_stats;
+        rgb8_t *plain = tb_render_plain(t.f, &plain_stats);
+        render_clip_options_t both = {1, 1};
+        rgb8_t *clipped = tc_render_areas(&t, &t.f->options, &both, &clip_stats);
+        if (!tb_same(plain, clipped, n))
+            printf("%s: clipped image differs\n", tb_scenes[s]);
+        CHECK(tb_same(plain, clipped, n));
+        /* the same rays; fewer tests on the camera rays, none elsewhere */
+        CHECK_EQ_INT(clip_stats.primary, plain_stats.primary);
+        CHECK_EQ_INT(clip_stats.shadow, plain_stats.shadow);
+        CHECK(clip_stats.primary_prim_tests < plain_stats.primary_prim_tests);
+        CHECK_EQ_INT(clip_stats.prim_tests - clip_stats.primary_prim_tests,
+                     plain_stats.prim_tests - plain_stats.primary_prim_tests);
+        printf("%s: primary prim tests %llu clipped, %llu plain; primary box tests %llu, %llu\n",
+               tb_scenes[s], (unsigned long long)clip_stats.primary_prim_tests,
+               (unsigned long long)plain_stats.primary_prim_tests,
+               (unsigned long long)clip_stats.primary_box_tests,
+               (unsigned long long)plain_stats.primary_box_tests);
+        free(plain);
+        free(clipped);
+        tc_close(&t);
+    }
+}
+
+/* Y clipping, X clipping, bounding boxes, hierarchy: each off alone, and
+ * all off, give the image of all on. */
+static void test_area_switches_same_image(void)
+{
+    const char *names[] = {"demo", "city"};
+    for (int s = 0; s < 2; s++) {
+        tc_scene_t t;
+        CHECK(tc_open(&t, names[s]));
+        if (!t.blob)
+            continue;
+        size_t n = (size_t)t.f->width * t.f->height;
+        render_options_t on = t.f->options;
+        on.use_bounds = on.use_hierarchy = 1;
+        render_clip_options_t both = {1, 1};
+        render_stats_t ref_stats, st;
+        rgb8_t *ref = tc_render_areas(&t, &on, &both, &ref_stats);
+        for (int off = 0; off < 5; off++) {
+            render_options_t o = on;
+            render_clip_options_t c = both;
+            if (off == 0 || off == 4)
+                c.y_clip = 0;
+            if (off == 1 || off == 4)
+                c.x_clip = 0;
+            if (off == 2 || off == 4)
+                o.use_bounds = 0;
+            if (off == 3 || off == 4)
+                o.use_hierarchy = 0;
+            uint64_t y_kept = t.clip.y_kept, x_kept = t.clip.x_kept;
+            rgb8_t *img = tc_render_areas(&t, &o, &c, &st);
+            if (!tb_same(ref, img, n))
+                printf("%s: switch set %d changes the image\n", names[s], off);
+            CHECK(tb_same(ref, img, n));
+            /* each switch does something measurable */
+            if (off == 0)
+                CHECK(t.clip.y_kept - y_kept > ref_stats.primary / n); /* all kept */
+            if (off == 0 || off == 1)
+                CHECK(st.primary_prim_tests > ref_stats.primary_prim_tests);
+            if (off == 1)
+                CHECK_EQ_INT(t.clip.x_kept, x_kept); /* no X clipping done */
+            if (off == 2)
+                CHECK(st.box_tests == 0 && st.prim_tests > ref_stats.prim_tests);
+            if (off == 4)
+                CHECK(st.primary_prim_tests > ref_stats.primary_prim_tests);
+            free(img);
+        }
+        free(ref);
+        tc_close(&t);
+    }
+}
+
+/* Memory is what render_clip_bytes says; bad areas are refused. */
+static void test_clip_memory_and_errors(void)
+{
+    tc_scene_t t;
+    CHECK(tc_open(&t, "molecule"));
+    if (!t.blob)
+        return;
+    size_t bytes = render_clip_bytes(t.f);
+    CHECK_EQ_INT(bytes, 2 * sizeof(uint16_t) * t.f->cluster_count);
+    render_clip_t c;
+    uint16_t *mem = malloc(bytes + 2);
+    CHECK_EQ_INT(render_clip_init(&c, t.f, mem, bytes - 1), RENDER_ERR_ARENA);
+    CHECK_EQ_INT(render_clip_init(&c, t.f, (uint8_t *)mem + 1, bytes), RENDER_ERR_ARENA);
+    CHECK_EQ_INT(render_clip_init(&c, t.f, mem, bytes), RENDER_OK);
+    render_ctx_t ctx;
+    render_ctx_init(&ctx, t.f);
+    render_clip_options_t both = {1, 1};
+    rgb8_t px[4];
+    uint32_t W = t.f->width, H = t.f->height;
+    render_area_t bad[] = {{0, 0, 0, 1}, {0, 0, 1, 0}, {W, 0, 1, 1}, {W - 1, 0, 2, 1}, {0, H - 1, 1, 2}};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++)
+        CHECK_EQ_INT(render_area(&ctx, &c, &bad[i], &both, px), RENDER_ERR_AREA);
+    render_area_t corner = {W - 2, H - 2, 2, 2};
+    CHECK_EQ_INT(render_area(&ctx, &c, &corner, &both, px), RENDER_OK);
+    CHECK(render_status_name(RENDER_ERR_AREA)[0] != 0);
+    free(mem);
+    tc_close(&t);
+}
+
+int main(void)
+{
+    RUN(test_clip_y_matches_brute_force);
+    RUN(test_clip_x_matches_brute_force);
+    RUN(test_clipped_render_same_image);
+    RUN(test_area_switches_same_image);
+    RUN(test_clip_memory_and_errors);
+    return check_exit();
+}
