@@ -51,7 +51,6 @@
 #define REPLY_TIMEOUT_MS 10000    /* a unit computer answering a request */
 #define STRESS_STALL_MS 10000     /* a stress run making no progress at all */
 #define LINK_ACK_TIMEOUT_MS 20000 /* the host acknowledging DATA */
-#define HELLO_WAIT_MS 30000       /* all units reporting in */
 
 /* IMSU self-test sizes: the pair test moves this much each way, the
  * broadcast test this much to every NC (a slice of the carved blocks, so a

@@ -97,7 +97,11 @@ uint32_t render_clip_x(render_clip_t *clip, int32_t x)
         if (cl[clip->xlist[i]].screen_x1 >= x)
             clip->xlist[k++] = clip->xlist[i];
     /* take in those starting at or before x: the sort lets the scan stop
-     * at the first one starting right of x */
+     * at the first one starting right of x.  Each enters the list in
+     * order of its box's near z (then arrival): the primary ray meets the
+     * nearest clusters first, so its nearest hit so far rejects the boxes
+     * behind it sooner (fewer primitive tests, same image: ties never
+     * depend on order, see trace.c) */
     uint32_t next = clip->next;
     while (next < clip->ycount && cl[clip->ylist[next]].screen_x0 <= x) {
         uint16_t c = clip->ylist[next++];

@@ -9,7 +9,9 @@
  *   X clipping, per pixel: of those, the clusters whose [screen_x0,
  *     screen_x1] holds the pixel's x.  Integer compares only; along a row
  *     the sort makes it a moving window: clusters enter when x reaches
- *     their screen_x0 and leave once x passes their screen_x1.
+ *     their screen_x0 and leave once x passes their screen_x1.  Entering
+ *     clusters are kept in order of their box's near depth, so the primary
+ *     ray finds near hits first and rejects the boxes behind them.
  * The primary ray then tests only those clusters' own primitives
  * (render_pixel_clipped); secondary rays use the whole hierarchy.  The
  * image is the same bit for bit with clipping on or off.
@@ -35,8 +37,9 @@ typedef struct {
     const render_frame_t *frame;
     uint16_t *ylist;      /* Y-clipped clusters, sorted by (screen_x0, index) */
     uint32_t ycount;
-    uint16_t *xlist;      /* X-clipped: those of ylist whose X range holds x;
-                             also the merge sort's scratch */
+    uint16_t *xlist;      /* X-clipped: those of ylist whose X range holds x,
+                             nearest own box (own_bounds.lo.z) first; also
+                             the merge sort's scratch */
     uint32_t xcount;
     uint32_t next;        /* ylist[next..] start right of x */
     int32_t x;            /* x of the last X clipping; -1 after Y clipping */
