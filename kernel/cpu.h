@@ -8,6 +8,7 @@
 
 #include "kernel/arch.h"
 #include "kernel/param.h"
+#include "kernel/spinlock.h"
 #include "kernel/task.h"
 
 struct cpu {
@@ -20,6 +21,8 @@ struct cpu {
     int irq_depth;             /* nesting of irq_push_off() */
     int irq_were_enabled;      /* IRQ state before the outermost push_off */
     int locks_held;            /* spinlocks held now (checked by task_wait) */
+    struct spinlock *held[LOCKS_HELD_MAX]; /* those locks, innermost last, so
+                                * a faulting core can drop them all */
     volatile uint32_t events;  /* bumped by every interrupt taken here and
                                 * by task_signal_local(); tasks wait on it */
     uintptr_t gicr;            /* virtual address of this core's redistributor */

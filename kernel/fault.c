@@ -8,6 +8,7 @@
 #include "kernel/arch.h"
 #include "kernel/cpu.h"
 #include "kernel/kfmt.h"
+#include "kernel/spinlock.h"
 #include "proto/hostlink.h"
 
 /* boot/vectors.S passes the kind as a number. */
@@ -39,9 +40,12 @@ static void fault_report(uint32_t kind, uint32_t addr, uint32_t pc, uint32_t sta
         cpu_halt_forever();
     fault_in_progress[core] = 1;
     uint8_t role = cpu_role_of_core(core);
-    if (c)
+    if (c) {
         c->halted = 1;
-    hostlink_unlock_for_fault();
+        /* Drop what this core held (the link's transmit lock among them):
+         * it will never release them otherwise. */
+        spin_release_all_mine();
+    }
 
     uint8_t p[LINK_FAULT_FIXED_SIZE + KLOG_MAX];
     struct link_fault f = {(uint16_t)core, role, (uint8_t)kind, addr, pc, status};

@@ -19,6 +19,9 @@
  * MPIDR.Aff0 = k % CORES_PER_CLUSTER, Aff1 = k / CORES_PER_CLUSTER. */
 #define CORES_PER_CLUSTER 16
 
+/* Spinlocks one core may hold at once (nesting depth). */
+#define LOCKS_HELD_MAX 8
+
 /* Cooperative tasks per core, and the stack each task gets from its unit
  * computer's private memory. */
 #define TASKS_PER_CORE 4

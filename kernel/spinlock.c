@@ -30,8 +30,25 @@ void spin_lock(struct spinlock *l)
         while (__atomic_load_n(&l->locked, __ATOMIC_RELAXED) != 0)
             arch_wfe();
     }
-    l->owner = (int)mycpu()->core;
-    mycpu()->locks_held++;
+    struct cpu *c = mycpu();
+    if (c->locks_held >= LOCKS_HELD_MAX)
+        panic("spin_lock: '%s' would be lock %d held at once by this core (max %d)",
+              l->name, c->locks_held + 1, LOCKS_HELD_MAX);
+    l->owner = (int)c->core;
+    c->held[c->locks_held++] = l;
+}
+
+/* Forgets l in this core's list of held locks. */
+static void spin_forget(struct cpu *c, struct spinlock *l)
+{
+    for (int i = c->locks_held - 1; i >= 0; i--) {
+        if (c->held[i] == l) {
+            for (int j = i; j + 1 < c->locks_held; j++)
+                c->held[j] = c->held[j + 1];
+            c->locks_held--;
+            return;
+        }
+    }
 }
 
 void spin_unlock(struct spinlock *l)
@@ -40,7 +57,7 @@ void spin_unlock(struct spinlock *l)
         panic("spin_unlock: lock '%s' not held by this core (owner %d)", l->name,
               l->owner);
     l->owner = SPIN_NO_OWNER;
-    mycpu()->locks_held--;
+    spin_forget(mycpu(), l);
     /* Release: every write of the critical section is visible before the
      * lock reads free.  The DSB completes the store before SEV wakes the
      * cores waiting in WFE. */
@@ -50,16 +67,19 @@ void spin_unlock(struct spinlock *l)
     irq_pop_off();
 }
 
-int spin_force_release_if_mine(struct spinlock *l)
+int spin_release_all_mine(void)
 {
-    if (!spin_holding(l))
-        return 0;
-    l->owner = SPIN_NO_OWNER;
-    mycpu()->locks_held--;
-    __atomic_store_n(&l->locked, 0u, __ATOMIC_RELEASE);
+    struct cpu *c = mycpu();
+    int n = 0;
+    while (c->locks_held > 0) {
+        struct spinlock *l = c->held[--c->locks_held];
+        l->owner = SPIN_NO_OWNER;
+        __atomic_store_n(&l->locked, 0u, __ATOMIC_RELEASE);
+        n++;
+    }
     arch_dsb();
     arch_sev();
-    return 1;
+    return n;
 }
 
 void irq_push_off(void)

@@ -25,9 +25,10 @@ void spin_lock(struct spinlock *l);
 void spin_unlock(struct spinlock *l);
 /* 1 if this core holds l. */
 int spin_holding(const struct spinlock *l);
-/* For the fault path only: drops l if this core holds it, so a core that
- * faults while sending can still report.  Returns 1 if it did. */
-int spin_force_release_if_mine(struct spinlock *l);
+/* For the fault path only: drops every lock this core holds, so a core
+ * that faults inside a critical section can still report and the other
+ * cores are not left waiting on it forever.  Returns how many. */
+int spin_release_all_mine(void);
 
 /* Interrupt masking that nests: the outermost irq_pop_off restores the
  * state the outermost irq_push_off found. */

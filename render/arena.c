@@ -14,8 +14,8 @@ void arena_init(arena_t *a, void *memory, size_t size)
 
 void *arena_alloc(arena_t *a, size_t size, size_t align)
 {
-    if (align == 0 || (align & (align - 1)) != 0 || align > 64)
-        align = 64; /* a bad alignment request still gets a safe one */
+    if (align == 0 || (align & (align - 1)) != 0 || align > ARENA_MAX_ALIGN)
+        align = ARENA_MAX_ALIGN; /* a bad alignment request still gets a safe one */
     if (!a->base) {
         if (!a->failed_request)
             a->failed_request = size ? size : 1;

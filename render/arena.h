@@ -20,7 +20,11 @@ typedef struct {
 } arena_t;
 
 void arena_init(arena_t *a, void *memory, size_t size);
-/* size bytes aligned to align (a power of two, <= 64); zero-filled.
+/* The largest alignment arena_alloc gives, and so the most padding one
+ * allocation can cost: what memory bounds add per allocation. */
+#define ARENA_MAX_ALIGN 64
+
+/* size bytes aligned to align (a power of two, <= ARENA_MAX_ALIGN); zero-filled.
  * NULL when the arena is exhausted (and failed_request is set). */
 void *arena_alloc(arena_t *a, size_t size, size_t align);
 /* Forget every allocation made after mark = a->used was taken. */

@@ -119,6 +119,7 @@ render_blob_status_t render_blob_build(const uint8_t *compiled, size_t len, uint
     blob->frame_index = frame_index;
     blob->home = (uintptr_t)block;
     blob->bytes = arena.used;
+    blob->peak = arena.high_water;
     blob->frame = frame;
     *out = blob;
     return RENDER_BLOB_OK;

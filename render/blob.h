@@ -35,6 +35,9 @@ typedef struct {
     uintptr_t home;        /* address of the block the pointers are valid at */
     size_t bytes;          /* bytes in use from the block's start: what a
                               copy must take */
+    size_t peak;           /* most bytes of the block the build used at
+                              once (scratch included): the DM's high-water
+                              mark for this frame */
     scene_t scene;         /* the loaded scene; its arrays are in the block */
     render_frame_t *frame; /* reloc; the prepared frame, in the block */
 } render_blob_t;

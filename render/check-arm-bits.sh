@@ -5,7 +5,9 @@
 # Renders the demo and paper-like scenes (96x72) with tests/host/test_render_bits.c
 # built for the host (float, fixed) and for cortex-a15 bare metal (float with
 # VFP, soft float, fixed; picolibc, semihosting under qemu-system-arm), and
-# compares the CRC-32 of every image.  Prints PASS/FAIL lines.
+# compares the CRC-32 of every image; also that each scene copied to another
+# block, relocated and rendered by areas with screen clipping (the board's
+# way) gives the same CRC.  Prints PASS/FAIL lines.
 set -u
 cd "$(dirname "$0")/.."
 out=build/arm-bits
@@ -22,7 +24,8 @@ scenes="demo glass molecule city"
     echo "};"
 } >"$out/bits_scenes.h"
 srcs="tests/host/test_render_bits.c fixed/num.c render/arena.c render/xform.c render/prim.c
-      render/prepare.c render/shade.c render/maps.c render/trace.c render/scene_load.c proto/crc32.c"
+      render/prepare.c render/shade.c render/maps.c render/trace.c render/scene_load.c proto/crc32.c
+      render/relocate.c render/clip.c"
 common="-std=gnu11 -O2 -I. -I$out -ffp-contract=off"
 cc $common -DLINKS1_NUM_FLOAT $srcs -lm -o "$out/host-float" || exit 1
 cc $common -DLINKS1_NUM_FIXED $srcs -lm -o "$out/host-fixed" || exit 1
@@ -47,6 +50,15 @@ for v in float soft fixed; do
             echo "PASS arm_bits_${v}_$s"
         else
             echo "FAIL arm_bits_${v}_$s: host '$want', arm '$got'"
+        fi
+        # relocated copy rendered by clipped areas: the same CRC as the
+        # host's plain render
+        crc_want=$(echo "$want" | sed -n 's/.* crc \([0-9a-f]*\) .*/\1/p')
+        area=$(grep " $s/area " "$out/arm-$v.txt" | sed -n 's/.* crc \([0-9a-f]*\) .*/\1/p')
+        if [ -n "$crc_want" ] && [ "$crc_want" = "$area" ]; then
+            echo "PASS arm_bits_area_${v}_$s"
+        else
+            echo "FAIL arm_bits_area_${v}_$s: host plain crc '$crc_want', arm relocated+clipped '$area'"
         fi
     done
 done

@@ -43,3 +43,9 @@ $(foreach a,double float fixed,$(eval test_blob_$(a)_LIBS := -lpng))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_SRCS = tests/host/test_clip.c $$(SCENE_TEXT_SRCS)))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_ARITH := $(a)))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_LIBS := -lpng))
+
+# Work counted per speed-up (Table 2 of the paper), a host program.
+HOST_TOOLS += render-clip-stats
+render-clip-stats_SRCS = render/clip_stats_main.c $(SCENE_TEXT_SRCS)
+render-clip-stats_ARITH := float
+render-clip-stats_LIBS := -lpng

@@ -378,7 +378,7 @@ size_t render_prepare_bytes(const scene_t *s)
                sizeof(uint16_t) * (size_t)s->cluster_count + sizeof(render_prim_t) * prims +
                sizeof(uint32_t) * prims + sizeof(num_t) * comps;
     size_t scratch = (2 * sizeof(xform_t) + 1) * (size_t)s->cluster_count;
-    return n + scratch + 12 * 64; /* 9 allocations, each padded at most 64 */
+    return n + scratch + 12 * ARENA_MAX_ALIGN; /* 9 allocations, each padded at most that */
 }
 
 render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *arena, render_frame_t **out)

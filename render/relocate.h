@@ -22,7 +22,7 @@
 
 /* Both bases must be aligned to this (the arena's largest alignment), so
  * every structure stays as aligned in the copy as in the original. */
-#define RENDER_RELOCATE_ALIGN 64
+#define RENDER_RELOCATE_ALIGN ARENA_MAX_ALIGN
 
 /* After memcpy(new_base, (void *)old_base, size): rewrites the pointers of
  * the scene *scene and the frame *frame (old addresses, either may be NULL;

@@ -9,6 +9,10 @@
  *                                            primary ray tests only the
  *                                            listed clusters (screen clipping)
  *        ctx.stats counts rays and pixels whose precision was lost.
+ *        render_area (render/clip.h) does an NC's whole area: Y clipping
+ *        once, X clipping per pixel, render_pixel_clipped.
+ *   The DM's scene and frame travel as one relocatable block:
+ *        render/blob.h (build, size bound, relocate after a copy).
  *
  * No global or static mutable state anywhere in render/ and fixed/: every
  * core may run these at once on shared memory.  A prepared frame is read-only

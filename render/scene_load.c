@@ -712,7 +712,8 @@ scene_load_status_t scene_load_shape(const uint8_t *buf, size_t len, scene_t *sh
 }
 
 /* Keep in step with the allocations of scene_load above: each array (at
- * least one element), the nesting scratch, each padded by at most 64. */
+ * least one element), the nesting scratch, each padded by at most
+ * ARENA_MAX_ALIGN. */
 size_t scene_load_bytes(const scene_t *shape, uint32_t texel_bytes)
 {
 #define LOAD_BYTES(type, n) (sizeof(type) * (size_t)((n) ? (n) : 1))
@@ -723,7 +724,7 @@ size_t scene_load_bytes(const scene_t *shape, uint32_t texel_bytes)
            LOAD_BYTES(scene_prim_t, shape->prim_count) +
            LOAD_BYTES(scene_density_component_t, shape->density_component_count) +
            LOAD_BYTES(scene_key_t, shape->key_count) + LOAD_BYTES(uint8_t, shape->cluster_count) +
-           9 * 64;
+           9 * ARENA_MAX_ALIGN;
 #undef LOAD_BYTES
 }
 

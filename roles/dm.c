@@ -143,14 +143,14 @@ static void dm_cmd_status(uint16_t cmd)
 }
 static void dm_cmd_fault_inject(uint16_t cmd)
 {
-    if (dm_frame.length < 2 + 3) {
+    if (dm_frame.length < LINK_CMD_FIXED_SIZE + 3) {
         hostlink_error(cmd, LINK_ERR_BAD_ARGS,
                        "CMD_FAULT_INJECT needs u16 core, u8 kind (3 bytes), got %u",
-                       (unsigned)(dm_frame.length - 2));
+                       (unsigned)(dm_frame.length - LINK_CMD_FIXED_SIZE));
         return;
     }
-    uint16_t core = wire_get_u16(dm_frame.payload + 2);
-    uint8_t kind = wire_get_u8(dm_frame.payload + 4);
+    uint16_t core = wire_get_u16(dm_frame.payload + LINK_CMD_FIXED_SIZE);
+    uint8_t kind = wire_get_u8(dm_frame.payload + LINK_CMD_FIXED_SIZE + 2);
     if (core >= board_ncores || !selftest_fault_kind_valid(kind)) {
         hostlink_error(cmd, LINK_ERR_BAD_ARGS,
                        "CMD_FAULT_INJECT: core %u (board has %u) or kind %u (1..4, 0x10, 0x11) out of range",

@@ -25,6 +25,23 @@ int dm_next_frame(uint64_t deadline);
 /* Sends m to the RC and waits for its answer of answer_type into m. */
 int dm_rc_request(struct line_msg *m, uint16_t answer_type, uint32_t timeout_ms);
 
+/* Bulk transfers over the host link with DATA/ACK flow control
+ * (proto/hostlink.h), for the link tests and for later uploads (scenes)
+ * and downloads (frames).  On failure they have already sent the command's
+ * error LINK_RESULT, naming the problem, and return its negative status;
+ * on success the caller sends the result.
+ *
+ * Receive: hands each chunk to fn (offset = bytes before it); a non-zero
+ * return refuses the transfer (the rest is still taken and ACKed, then
+ * LINK_ERR_CHECK returned; fn must have reported why, or the caller does).
+ * Send: fn fills each chunk of n bytes at offset; total bytes in all. */
+typedef int (*dm_chunk_in_fn)(void *ctx, const uint8_t *data, uint32_t n, uint64_t offset);
+typedef void (*dm_chunk_out_fn)(void *ctx, uint8_t *data, uint32_t n, uint32_t offset);
+int dm_transfer_receive(uint16_t cmd, dm_chunk_in_fn fn, void *ctx, uint64_t *bytes,
+                        uint32_t *crc);
+int dm_transfer_send(uint16_t cmd, dm_chunk_out_fn fn, void *ctx, uint32_t total,
+                     uint32_t *crc);
+
 /* Command handlers: each answers with one LINK_RESULT. */
 void dm_cmd_line_ping(uint16_t cmd);
 void dm_cmd_imsu_test(uint16_t cmd);

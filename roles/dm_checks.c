@@ -141,12 +141,12 @@ void dm_cmd_imsu_test(uint16_t cmd)
 
 void dm_cmd_line_stress(uint16_t cmd)
 {
-    if (dm_frame.length < 2 + 4) {
+    if (dm_frame.length < LINK_CMD_FIXED_SIZE + 4) {
         hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_LINE_STRESS needs u32 MiB (4 bytes), got %u",
-                       (unsigned)(dm_frame.length - 2));
+                       (unsigned)(dm_frame.length - LINK_CMD_FIXED_SIZE));
         return;
     }
-    uint32_t mib = wire_get_u32(dm_frame.payload + 2);
+    uint32_t mib = wire_get_u32(dm_frame.payload + LINK_CMD_FIXED_SIZE);
     if (mib == 0 || mib > STRESS_MAX_MIB) {
         hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_LINE_STRESS: %u MiB is outside 1..%u",
                        (unsigned)mib, (unsigned)STRESS_MAX_MIB);

@@ -16,26 +16,27 @@
 #include "roles/unit.h"
 #include "roles/unitmsg.h"
 
-/* Host -> board bulk transfer: ACK every DATA frame, check the pattern. */
-static void dm_link_sink(uint16_t cmd)
+/* One host -> board transfer (see dm.h). */
+static int dm_transfer_receive_polled(uint16_t cmd, dm_chunk_in_fn fn, void *ctx,
+                                      uint64_t *bytes_out, uint32_t *crc_out)
 {
     uint64_t bytes = 0;
-    uint32_t crc = 0, differ = 0, errors_before = dm_link_errors;
+    uint32_t crc = 0, errors_before = dm_link_errors;
+    int refused = 0; /* fn refused a chunk: take the rest, report at the end */
     for (;;) {
         if (dm_next_frame(ktime_deadline_ms(LINK_ACK_TIMEOUT_MS)) != 0) {
-            hostlink_error(cmd, LINK_ERR_TIMEOUT,
-                           "sink: no DATA frame for %u ms after %u bytes",
+            hostlink_error(cmd, LINK_ERR_TIMEOUT, "transfer: no DATA frame for %u ms after %u bytes",
                            (unsigned)LINK_ACK_TIMEOUT_MS, (unsigned)bytes);
-            return;
+            return LINK_ERR_TIMEOUT;
         }
         if (dm_frame.type != LINK_DATA) {
             hostlink_error(cmd, LINK_ERR_PROTOCOL,
-                           "sink: frame type %u in the middle of a transfer, after %u bytes",
+                           "transfer: frame type %u in the middle of a transfer, after %u bytes",
                            (unsigned)dm_frame.type, (unsigned)bytes);
-            return;
+            return LINK_ERR_PROTOCOL;
         }
-        for (uint32_t i = 0; i < dm_frame.length; i++)
-            differ += dm_frame.payload[i] != link_pattern_byte((uint32_t)bytes + i);
+        if (!refused && fn(ctx, dm_frame.payload, dm_frame.length, bytes) != 0)
+            refused = 1;
         crc = crc32_update(crc, dm_frame.payload, dm_frame.length);
         bytes += dm_frame.length;
         uint8_t ack[LINK_ACK_SIZE];
@@ -45,43 +46,36 @@ static void dm_link_sink(uint16_t cmd)
             break;
     }
     uint32_t dropped = dm_link_errors - errors_before;
-    if (differ || dropped) {
-        hostlink_error(cmd, LINK_ERR_CHECK,
-                       "sink: %u bytes, %u differ from the pattern, %u frames dropped, crc 0x%08x",
-                       (unsigned)bytes, (unsigned)differ, (unsigned)dropped, (unsigned)crc);
-        return;
+    if (dropped) {
+        hostlink_error(cmd, LINK_ERR_CHECK, "transfer: %u frames dropped on the way in (%u bytes)",
+                       (unsigned)dropped, (unsigned)bytes);
+        return LINK_ERR_CHECK;
     }
-    uint8_t f[16];
-    wire_put_u64(f, bytes);
-    wire_put_u32(f + 8, crc);
-    wire_put_u32(f + 12, differ);
-    hostlink_result(cmd, LINK_OK, f, sizeof f);
+    *bytes_out = bytes;
+    *crc_out = crc;
+    return refused ? LINK_ERR_CHECK : LINK_OK;
 }
 
-void dm_cmd_link_sink(uint16_t cmd)
+int dm_transfer_receive(uint16_t cmd, dm_chunk_in_fn fn, void *ctx, uint64_t *bytes,
+                        uint32_t *crc)
 {
+    /* Polled receive for the length of the upload (docs/firmware.md). */
     uart_rx_set_polling(1);
-    dm_link_sink(cmd);
+    int r = dm_transfer_receive_polled(cmd, fn, ctx, bytes, crc);
     uart_rx_set_polling(0);
+    return r;
 }
 
-/* Board -> host bulk transfer with at most LINK_DATA_WINDOW frames unACKed. */
-void dm_cmd_link_source(uint16_t cmd)
+int dm_transfer_send(uint16_t cmd, dm_chunk_out_fn fn, void *ctx, uint32_t total,
+                     uint32_t *crc_out)
 {
-    if (dm_frame.length < 2 + 4) {
-        hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_LINK_SOURCE needs u32 bytes (4 bytes), got %u",
-                       (unsigned)(dm_frame.length - 2));
-        return;
-    }
-    uint32_t total = wire_get_u32(dm_frame.payload + 2);
-    uint16_t inflight[LINK_DATA_WINDOW];
-    uint32_t head = 0, count = 0, sent = 0, crc = 0;
     static uint8_t chunk[LINK_DATA_CHUNK];
+    uint16_t inflight[LINK_DATA_WINDOW]; /* seqs of DATA frames not yet ACKed */
+    uint32_t head = 0, count = 0, sent = 0, crc = 0;
     while (sent < total || count) {
         if (sent < total && count < LINK_DATA_WINDOW) {
             uint32_t n = total - sent < LINK_DATA_CHUNK ? total - sent : LINK_DATA_CHUNK;
-            for (uint32_t i = 0; i < n; i++)
-                chunk[i] = link_pattern_byte(sent + i);
+            fn(ctx, chunk, n, sent);
             crc = crc32_update(crc, chunk, n);
             uint8_t flags = sent + n == total ? LINK_FLAG_LAST : 0;
             inflight[(head + count) % LINK_DATA_WINDOW] = hostlink_send(LINK_DATA, flags, chunk, n);
@@ -91,15 +85,15 @@ void dm_cmd_link_source(uint16_t cmd)
         }
         /* Window full (or all sent): wait for an ACK. */
         if (dm_next_frame(ktime_deadline_ms(LINK_ACK_TIMEOUT_MS)) != 0) {
-            hostlink_error(cmd, LINK_ERR_TIMEOUT, "source: no ACK for %u ms, %u frames unACKed",
+            hostlink_error(cmd, LINK_ERR_TIMEOUT, "transfer: no ACK for %u ms, %u frames unACKed",
                            (unsigned)LINK_ACK_TIMEOUT_MS, (unsigned)count);
-            return;
+            return LINK_ERR_TIMEOUT;
         }
         if (dm_frame.type != LINK_ACK || dm_frame.length < LINK_ACK_SIZE) {
             hostlink_error(cmd, LINK_ERR_PROTOCOL,
-                           "source: expected an ACK, got frame type %u (%u bytes)",
+                           "transfer: expected an ACK, got frame type %u (%u bytes)",
                            (unsigned)dm_frame.type, (unsigned)dm_frame.length);
-            return;
+            return LINK_ERR_PROTOCOL;
         }
         /* An ACK covers every DATA frame up to the seq it names. */
         uint16_t acked = wire_get_u16(dm_frame.payload);
@@ -107,16 +101,67 @@ void dm_cmd_link_source(uint16_t cmd)
         while (k < count && inflight[(head + k) % LINK_DATA_WINDOW] != acked)
             k++;
         if (k == count) {
-            hostlink_error(cmd, LINK_ERR_PROTOCOL, "source: ACK for seq %u, which is not in flight",
-                           (unsigned)acked);
-            return;
+            hostlink_error(cmd, LINK_ERR_PROTOCOL,
+                           "transfer: ACK for seq %u, which is not in flight", (unsigned)acked);
+            return LINK_ERR_PROTOCOL;
         }
         head = (head + k + 1) % LINK_DATA_WINDOW;
         count -= k + 1;
     }
+    *crc_out = crc;
+    return LINK_OK;
+}
+
+/* ---- the link tests: the known pattern each way ---- */
+
+/* Counts the bytes of a chunk that differ from link_pattern_byte(). */
+static int dm_sink_check(void *ctx, const uint8_t *data, uint32_t n, uint64_t offset)
+{
+    uint32_t *differ = ctx;
+    for (uint32_t i = 0; i < n; i++)
+        *differ += data[i] != link_pattern_byte((uint32_t)offset + i);
+    return 0;
+}
+
+void dm_cmd_link_sink(uint16_t cmd)
+{
+    uint64_t bytes = 0;
+    uint32_t crc = 0, differ = 0;
+    if (dm_transfer_receive(cmd, dm_sink_check, &differ, &bytes, &crc) != LINK_OK)
+        return;
+    if (differ) {
+        hostlink_error(cmd, LINK_ERR_CHECK,
+                       "sink: %u of %u bytes differ from the pattern, crc 0x%08x",
+                       (unsigned)differ, (unsigned)bytes, (unsigned)crc);
+        return;
+    }
+    uint8_t f[16];
+    wire_put_u64(f, bytes);
+    wire_put_u32(f + 8, crc);
+    wire_put_u32(f + 12, differ);
+    hostlink_result(cmd, LINK_OK, f, sizeof f);
+}
+
+static void dm_source_fill(void *ctx, uint8_t *data, uint32_t n, uint32_t offset)
+{
+    (void)ctx;
+    for (uint32_t i = 0; i < n; i++)
+        data[i] = link_pattern_byte(offset + i);
+}
+
+void dm_cmd_link_source(uint16_t cmd)
+{
+    if (dm_frame.length < LINK_CMD_FIXED_SIZE + 4) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_LINK_SOURCE needs u32 bytes (4 bytes), got %u",
+                       (unsigned)(dm_frame.length - LINK_CMD_FIXED_SIZE));
+        return;
+    }
+    uint32_t total = wire_get_u32(dm_frame.payload + LINK_CMD_FIXED_SIZE);
+    uint32_t crc = 0;
+    if (dm_transfer_send(cmd, dm_source_fill, NULL, total, &crc) != LINK_OK)
+        return;
     uint8_t f[12];
     wire_put_u64(f, total);
     wire_put_u32(f + 8, crc);
     hostlink_result(cmd, LINK_OK, f, sizeof f);
 }
-

@@ -71,8 +71,3 @@ void hostlink_error(uint16_t cmd, int16_t status, const char *fmt, ...)
         n = (int)sizeof text - 1;
     hostlink_result(cmd, status, text, (size_t)n);
 }
-
-void hostlink_unlock_for_fault(void)
-{
-    spin_force_release_if_mine(&hostlink_tx_lock);
-}

@@ -1,7 +1,9 @@
 /* hostlink_tx.h: frames from the board to the host (proto/hostlink.h).
  *
  * Any core may send; one spinlock keeps each frame whole on the line and
- * numbers the frames in the order they go out. */
+ * numbers the frames in the order they go out.  A core that faults in the
+ * middle of a frame drops the lock (kernel/fault.c); the host's decoder
+ * counts the cut frame and resynchronises on the next one. */
 #ifndef LINKS1_DRIVERS_SERIAL_HOSTLINK_TX_H
 #define LINKS1_DRIVERS_SERIAL_HOSTLINK_TX_H
 
@@ -15,8 +17,5 @@ void hostlink_result(uint16_t cmd, int16_t status, const void *fields, size_t n)
 /* LINK_RESULT with a negative status and text naming the problem. */
 void hostlink_error(uint16_t cmd, int16_t status, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)));
-/* For the fault path: if this core faulted in the middle of a frame, drop
- * the lock (the host's decoder resynchronises on the next frame). */
-void hostlink_unlock_for_fault(void);
 
 #endif

@@ -129,8 +129,7 @@ static void test_relocate_refuses_outside_pointers(void)
     CHECK(moved == frame);
     CHECK(memcmp(saved, b, arena.used) == 0);
 
-    /* the scene alone in its own arena relocates; a frame pointer given
-     * with a scene that is not its own is refused */
+    /* a scene_t outside the range (here on the stack) is refused */
     const scene_t *sp = &scene;
     CHECK_EQ_INT(render_relocate(scene_mem, sizeof scene_mem, (uintptr_t)scene_mem, &sp, NULL, &bad),
                  RENDER_ERR_RELOCATE); /* scene_t itself is on the stack */
@@ -195,6 +194,17 @@ static void test_relocate_names_each_bad_field(void)
         CHECK(rb == NULL);
         free(saved);
     }
+    /* a frame given with a scene that is not its own */
+    memcpy(b, a, a->bytes);
+    const scene_t *other = (const scene_t *)(uintptr_t)a->frame;
+    render_frame_t *frame = a->frame;
+    const char *bad;
+    CHECK_EQ_INT(render_relocate(b, a->bytes, (uintptr_t)a, &other, &frame, &bad), RENDER_ERR_RELOCATE);
+    CHECK(bad && strstr(bad, "not the scene given") != NULL);
+    /* the blob's own scene and frame given directly: fine */
+    const scene_t *own = &a->scene;
+    CHECK_EQ_INT(render_relocate(b, a->bytes, (uintptr_t)a, &own, &frame, &bad), RENDER_OK);
+    CHECK((const uint8_t *)own == b + offsetof(render_blob_t, scene) && frame->scene == own);
     /* a count that would take an array past the blob's end */
     memcpy(b, a, a->bytes);
     bb->scene.prim_count = 0x7fffffffu;
@@ -225,7 +235,7 @@ static void test_blob_size_bound(void)
         for (uint32_t frame = 0; frame < 4; frame++) {
             CHECK_EQ_INT(render_blob_build(buf, len, frame, block, need, "NC_MEMORY", &blob, &err),
                          RENDER_BLOB_OK);
-            CHECK(blob && blob->bytes <= need && blob->frame_index == frame);
+            CHECK(blob && blob->bytes <= blob->peak && blob->peak <= need && blob->frame_index == frame);
         }
         memset(block, 0x5a, need);
         CHECK_EQ_INT(render_blob_build(buf, len, 0, block, need - 1, "IMSU_BLOCK_BYTES", &blob, &err),
