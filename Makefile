@@ -59,7 +59,8 @@ FW_CFLAGS := -std=gnu11 -O2 -g $(HOST_WARN) -I. -MMD -MP $(ARM_CPU) \
 	-fno-common -DLINKS1_FIRMWARE $(LIBC_SPECS)
 FW_LDFLAGS := -nostartfiles -Wl,--gc-sections -Wl,--no-warn-rwx-segments \
 	-Tlinker/virt-memory.ld -Tlinker/sections.ld
-FW_LIBS := -lc -lgcc
+# -lm: newlib keeps sqrtf and friends there (picolibc has them in libc too).
+FW_LIBS := -lm -lc -lgcc
 
 # ----------------------------------------------------------- module lists
 # FW_SRCS:     firmware-only sources (.c and .S): boot, kernel, drivers, roles

@@ -56,8 +56,15 @@ static void board_qemu_exec(struct board *b, int qemu_fd)
     argv[n++] = "-m";
     argv[n++] = mem;
     argv[n++] = "-display";
-    argv[n++] = "none";
+    /* --view: the frame memory shown live through ramfb in QEMU's display
+     * ($LINKS1_DISPLAY, default gtk). */
+    const char *display = getenv("LINKS1_DISPLAY");
+    argv[n++] = !b->opts.view ? "none" : display && *display ? display : "gtk";
     argv[n++] = "-nodefaults";
+    if (b->opts.view) {
+        argv[n++] = "-device";
+        argv[n++] = "ramfb";
+    }
     argv[n++] = "-no-reboot"; /* a reset request ends the run instead of looping */
     argv[n++] = "-chardev";
     argv[n++] = chardev;

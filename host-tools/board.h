@@ -30,6 +30,7 @@ struct board_opts {
     int timeout_s;          /* report-in timeout */
     const char *insn_count_out; /* non-NULL: load the counting plugin, write here */
     int quiet;              /* 1: do not print LOG/HELLO lines (faults always) */
+    int view;               /* 1: -device ramfb and a display (links1 render --view) */
 };
 
 /* A frame copied out of the decoder, valid as long as the caller keeps it. */

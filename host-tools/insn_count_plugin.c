@@ -9,6 +9,8 @@
  * block runs, its instruction count is added to the running vCPU's total.  A
  * block left early by an exception is counted whole, so counts of faulting
  * code are a slight over-estimate; a core asleep in WFI counts nothing.
+ * A core that executes the marker of proto/insn_mark.h starts again from
+ * zero (the rest of that block goes uncounted: a few instructions).
  */
 #include <stdbool.h>
 #include <stddef.h>
@@ -17,6 +19,7 @@
 #include <string.h>
 
 #include "host-tools/links1_params.h"
+#include "proto/insn_mark.h"
 
 /* ---- QEMU 7.2 plugin API, version 1 ----
  * Debian ships no qemu-plugin.h, so the few types and functions used here
@@ -56,6 +59,13 @@ size_t qemu_plugin_tb_n_insns(const struct qemu_plugin_tb *tb);
 void qemu_plugin_register_atexit_cb(qemu_plugin_id_t id, qemu_plugin_udata_cb_t cb,
                                     void *userdata);
 void qemu_plugin_outs(const char *string);
+struct qemu_plugin_insn;
+struct qemu_plugin_insn *qemu_plugin_tb_get_insn(const struct qemu_plugin_tb *tb, size_t idx);
+const void *qemu_plugin_insn_data(const struct qemu_plugin_insn *insn);
+size_t qemu_plugin_insn_size(const struct qemu_plugin_insn *insn);
+void qemu_plugin_register_vcpu_insn_exec_cb(struct qemu_plugin_insn *insn,
+                                            qemu_plugin_vcpu_udata_cb_t cb,
+                                            enum qemu_plugin_cb_flags flags, void *userdata);
 
 PLUGIN_EXPORT int qemu_plugin_version = 1;
 
@@ -73,10 +83,31 @@ static void insn_count_tb_exec(unsigned int vcpu, void *n_insns)
         __atomic_fetch_add(&insn_count[vcpu], (uint64_t)(uintptr_t)n_insns, __ATOMIC_RELAXED);
 }
 
+/* The "count from here" marker (proto/insn_mark.h) ran on this vCPU. */
+static void insn_count_mark(unsigned int vcpu, void *userdata)
+{
+    (void)userdata;
+    if (vcpu < INSN_COUNT_MAX_VCPUS)
+        __atomic_store_n(&insn_count[vcpu], 0, __ATOMIC_RELAXED);
+}
+
+static int insn_count_is_mark(const struct qemu_plugin_insn *insn)
+{
+    const uint8_t *b = qemu_plugin_insn_data(insn);
+    return qemu_plugin_insn_size(insn) == 4 &&
+           (b[0] | b[1] << 8) == INSN_MARK_THUMB_HW0 && (b[2] | b[3] << 8) == INSN_MARK_THUMB_HW1;
+}
+
 static void insn_count_tb_trans(qemu_plugin_id_t id, struct qemu_plugin_tb *tb)
 {
     (void)id;
     size_t n = qemu_plugin_tb_n_insns(tb);
+    for (size_t i = 0; i < n; i++) {
+        struct qemu_plugin_insn *insn = qemu_plugin_tb_get_insn(tb, i);
+        if (insn_count_is_mark(insn))
+            qemu_plugin_register_vcpu_insn_exec_cb(insn, insn_count_mark,
+                                                   QEMU_PLUGIN_CB_NO_REGS, NULL);
+    }
     qemu_plugin_register_vcpu_tb_exec_cb(tb, insn_count_tb_exec, QEMU_PLUGIN_CB_NO_REGS,
                                          (void *)(uintptr_t)n);
 }

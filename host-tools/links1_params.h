@@ -54,6 +54,15 @@
 #define SELFTEST_IDLE_SECONDS 5
 #define SELFTEST_IDLE_MAX_PERCENT 15.0
 
+/* links1 render: NCs when --ncs is not given (a 10-core board), and the
+ * most milliseconds the board may stay silent while a frame renders (no
+ * progress frame, no result) before the host gives up: one area of a big
+ * scene on one NC can take minutes under emulation. */
+#define RENDER_DEFAULT_NCS 8
+#define RENDER_SILENCE_MS (20 * 60 * 1000)
+/* How often the terminal's progress line is redrawn at most. */
+#define RENDER_PROGRESS_REDRAW_MS 250
+
 /* The instruction-counting plugin's per-vCPU table. */
 #define INSN_COUNT_MAX_VCPUS BOARD_MAX_CORES
 

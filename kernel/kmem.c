@@ -52,3 +52,23 @@ size_t kmem_high_water(void)
 {
     return mycpu()->mem_high;
 }
+
+size_t kmem_mark(void)
+{
+    return mycpu()->mem_used;
+}
+
+void kmem_release_to(size_t mark)
+{
+    struct cpu *c = mycpu();
+    if (mark > c->mem_used)
+        panic("kmem: release to %u, but only %u bytes are in use", (unsigned)mark,
+              (unsigned)c->mem_used);
+    c->mem_used = mark;
+}
+
+size_t kmem_free(void)
+{
+    struct cpu *c = mycpu();
+    return c->mem_size - c->mem_used;
+}

@@ -16,5 +16,12 @@ void *kmem_alloc(size_t n, const char *what);
 /* Bytes of this core's region, and the most ever in use. */
 size_t kmem_size(void);
 size_t kmem_high_water(void);
+/* Per-scene memory: kmem_mark() is the bytes in use now; kmem_release_to()
+ * gives back everything allocated after that mark (a new scene replaces the
+ * old one's buffers).  The high-water mark keeps counting across. */
+size_t kmem_mark(void);
+void kmem_release_to(size_t mark);
+/* Bytes still free in this core's region. */
+size_t kmem_free(void);
 
 #endif

@@ -64,4 +64,19 @@
 /* Largest CMD_LINE_STRESS run the DM accepts (MiB). */
 #define STRESS_MAX_MIB 4096
 
+/* Rendering pipeline (roles/gigs.h).  The RC tells the DM (and the DM the
+ * host) how far a frame is at most this often. */
+#define GIGS_PROGRESS_MS 200
+/* How often a waiting RC looks whether an NC halted (a fault), and how
+ * often its collector looks whether the frame was abandoned. */
+#define GIGS_WATCH_MS 1000
+/* Stack the NC's rendering needs besides RENDER_STACK_BYTES(max_depth):
+ * render_area's frame and the NC's own calls. */
+#define GIGS_NC_STACK_MARGIN 1024
+/* K, the area count the RC's schedule works with when the host asks for 0:
+ * with the decreasing schedule (the host's default) the best measured on
+ * 64 NCs (docs/RESULTS.md, "GIGS pipeline"); also the paper's best simple
+ * dynamic count (Fig. 10). */
+#define GIGS_DEFAULT_AREAS 1024
+
 #endif

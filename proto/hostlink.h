@@ -39,6 +39,7 @@ enum link_type {
     LINK_RESULT = 5, /* board -> host: a command's result (u16 cmd, i16 status, text) */
     LINK_DATA = 6,   /* either way: a chunk of a bulk transfer */
     LINK_ACK = 7,    /* either way: u16 seq of the last DATA frame taken in */
+    LINK_PROGRESS = 8, /* board -> host: rendering progress (proto/render_link.h) */
 };
 
 /* LINK_CMD payload: u16 enum link_cmd, then that command's arguments
@@ -55,6 +56,13 @@ enum link_cmd {
     CMD_LINK_SOURCE = 6, /* u32 bytes: board sends DATA frames of a known pattern */
     CMD_FAULT_INJECT = 7,/* u16 core, u8 kind: that core executes the fault */
     CMD_SHUTDOWN = 8,    /* board powers off (PSCI SYSTEM_OFF) */
+    /* Rendering (arguments and results in proto/render_link.h): */
+    CMD_SCENE_LOAD = 9,  /* u32 bytes, then one DATA transfer of the compiled
+                          * scene -> struct link_scene_info */
+    CMD_RENDER = 10,     /* struct link_render_args; LINK_PROGRESS frames while
+                          * it renders -> struct link_render_stats */
+    CMD_FRAME_PULL = 11, /* board sends the frame memory as one DATA transfer
+                          * (rows of r,g,b bytes) -> u16 width, u16 height, u32 crc */
 };
 
 enum link_flag {

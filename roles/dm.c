@@ -26,6 +26,7 @@
 #include "proto/hostlink.h"
 #include "proto/wire.h"
 #include "roles/dm.h"
+#include "roles/gigs.h"
 #include "roles/selftest.h"
 #include "roles/unit.h"
 #include "roles/unitmsg.h"
@@ -207,6 +208,9 @@ static void dm_command(void)
     case CMD_LINK_SOURCE: dm_cmd_link_source(cmd); break;
     case CMD_FAULT_INJECT: dm_cmd_fault_inject(cmd); break;
     case CMD_SHUTDOWN: dm_cmd_shutdown(cmd); break;
+    case CMD_SCENE_LOAD: dm_cmd_scene_load(cmd); break;
+    case CMD_RENDER: dm_cmd_render(cmd); break;
+    case CMD_FRAME_PULL: dm_cmd_frame_pull(cmd); break;
     default:
         hostlink_error(cmd, LINK_ERR_UNKNOWN_CMD, "unknown command %u", (unsigned)cmd);
         break;

@@ -9,6 +9,7 @@
 #include "kernel/klog.h"
 #include "proto/crc32.h"
 #include "proto/wire.h"
+#include "roles/gigs.h"
 #include "roles/selftest.h"
 #include "roles/unit.h"
 #include "roles/unitmsg.h"
@@ -84,6 +85,9 @@ void nc_main(void *arg)
             break;
         case MSG_STRESS:
             nc_stress(m);
+            break;
+        case MSG_NC_START:
+            nc_render_frame(m);
             break;
         case MSG_FAULT: {
             uint8_t kind = wire_get_u8(m->payload + 2);

@@ -8,8 +8,10 @@
 #include "kernel/klog.h"
 #include "kernel/ktime.h"
 #include "kernel/panic.h"
+#include "kernel/task.h"
 #include "proto/crc32.h"
 #include "proto/wire.h"
+#include "roles/gigs.h"
 #include "roles/selftest.h"
 #include "roles/unit.h"
 #include "roles/unitmsg.h"
@@ -212,6 +214,7 @@ void rc_main(void *arg)
     (void)arg;
     static struct line_msg msg;
     struct line_msg *m = &msg;
+    task_create("rcdc", rc_collect_task, NULL); /* the data collector */
     for (;;) {
         int r = line_recv(DM_CORE, m, 0);
         if (r != LINE_OK) {
@@ -237,6 +240,9 @@ void rc_main(void *arg)
             break;
         case MSG_FAULT:
             rc_fault(m);
+            break;
+        case MSG_RENDER_FRAME:
+            rc_render_frame(m);
             break;
         default:
             klog("unexpected message type %u from the DM", (unsigned)m->type);

@@ -26,6 +26,22 @@ enum unit_msg {
                               * u32 lines skipped (halted NCs) */
     MSG_FAULT = 16,          /* u16 core, u8 kind: that core faults on purpose */
     MSG_FAULT_ACK = 17,      /* i32 status: 0 = the target is about to fault */
+    /* Rendering (roles/gigs.h; roles/dm_render.c, rc_render.c, nc_render.c): */
+    MSG_RENDER_FRAME = 18,   /* DM->RC: the prepared frame is in the IMSU block
+                              * just swapped to you: u32 frame, u8 balance,
+                              * u8 flags (LINK_RENDER_*), u16 0, u32 areas K */
+    MSG_RENDER_PROGRESS = 19,/* RC->DM: u32 areas done, u32 areas total */
+    MSG_RENDER_DONE = 20,    /* RC->DM: i32 status; 0: gigs_frame_result
+                              * (GIGS_RESULT_SIZE); else text naming the problem */
+    MSG_NC_START = 21,       /* RC->NC: the frame is in the broadcast block:
+                              * u8 flags, u32 pixels of the largest area */
+    MSG_NC_AREA = 22,        /* RC->NC: u32 x, y, w, h: render this area */
+    MSG_NC_STOP = 23,        /* RC->NC: no more areas: let go of the block */
+    MSG_NC_REQ = 24,         /* NC->RC: i32 status: 0 = next area please (the
+                              * last one's pixels are in the DC); < 0: this NC
+                              * cannot render, text follows */
+    MSG_NC_STOPPED = 25,     /* NC->RC: u32 private high-water mark, then the
+                              * frame's render stats (GIGS_STATS_SIZE) */
 };
 
 #endif

@@ -17,3 +17,21 @@ test_framemem_ARITH := double
 test_framemem_LIBS := -lpthread
 test_fwcfg_SRCS := tests/host/test_fwcfg.c drivers/framemem/fwcfg_format.c
 test_fwcfg_ARITH := double
+
+# The rendering pipeline on the board (links1 render): images equal to the
+# host build, speed-ups off, an animation, refused scenes.  The full grid
+# (64 NCs too, every mode x arithmetic x scene) is `make test-full`.
+BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
+	tests/board/render_anim.sh tests/board/render_refuse.sh
+RENDER_FULL_TESTS := tests/board/render_grid_full.sh
+
+.PHONY: test-full
+test-full: deps
+	$(Q)$(MAKE) --no-print-directory all
+	$(Q)HOST_TESTS= BOARD_TESTS="$(RENDER_FULL_TESTS)" FW_DIR=$(FWB) bash tests/run.sh
+BENCHES += tests/bench/bench_render.sh
+
+# Encodings of the rendering commands and the NC statistics the RC sums.
+HOST_TESTS += test_render_link
+test_render_link_SRCS := tests/host/test_render_link.c
+test_render_link_ARITH := float

@@ -26,7 +26,7 @@
 static int ref_usage(void)
 {
     fprintf(stderr, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [--arith double|float|soft|"
-                    "fixed] [--ppm] [--frame N | --frames FIRST:LAST]\n"
+                    "fixed] [--ppm] [--size WxH] [--frame N | --frames FIRST:LAST]\n"
                     "  (this is the %s build)\n",
             NUM_NAME);
     return 2;
@@ -41,12 +41,16 @@ static int ref_ends_with(const char *s, const char *suffix)
 /* The compiled bytes of a scene file: read as is (.l1s) or compiled from
  * text.  0, or -1 with err. */
 static int ref_scene_bytes(const char *path, uint8_t **buf, size_t *len, char *err,
-                           size_t errlen)
+                           size_t errlen, int width, int height)
 {
     if (!ref_ends_with(path, ".l1s")) {
         struct sd_scene s;
         if (sd_parse_file(path, &s, err, errlen) != 0)
             return -1;
+        if (width) { /* --size: the same scene at another resolution */
+            s.view.width = width;
+            s.view.height = height;
+        }
         int rc = sd_compile(&s, buf, len, err, errlen);
         sd_free(&s);
         return rc;
@@ -187,13 +191,20 @@ static int ref_parse_frames(const char *arg, long *first, long *last)
 int main(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL;
-    int ppm = 0, many = 0;
+    int ppm = 0, many = 0, width = 0, height = 0;
     long first = 0, last = 0;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "-o") == 0 && i + 1 < argc) {
             out = argv[++i];
         } else if (strcmp(argv[i], "--ppm") == 0) {
             ppm = 1;
+        } else if (strcmp(argv[i], "--size") == 0 && i + 1 < argc) {
+            if (sscanf(argv[++i], "%dx%d", &width, &height) != 2 || width < 1 || height < 1 ||
+                width > RENDER_MAX_WIDTH || height > RENDER_MAX_HEIGHT) {
+                fprintf(stderr, "links1 ref: --size wants WxH within %dx%d, not '%s'\n",
+                        RENDER_MAX_WIDTH, RENDER_MAX_HEIGHT, argv[i]);
+                return 2;
+            }
         } else if ((strcmp(argv[i], "--frame") == 0 || strcmp(argv[i], "--frames") == 0) &&
                    i + 1 < argc) {
             many = argv[i][7] == 's';
@@ -217,7 +228,7 @@ int main(int argc, char **argv)
     char err[SD_ERR_MAX];
     uint8_t *bytes = NULL;
     size_t len = 0;
-    if (ref_scene_bytes(in, &bytes, &len, err, sizeof err) != 0) {
+    if (ref_scene_bytes(in, &bytes, &len, err, sizeof err, width, height) != 0) {
         fprintf(stderr, "links1 ref: %s\n", err);
         return 1;
     }

@@ -1,0 +1,27 @@
+/* render_session.h: the rendering commands of the host link, host side
+ * (proto/render_link.h): upload a compiled scene, render a frame while
+ * showing progress, pull the frame memory.  Each returns 0, or -1 after
+ * printing what went wrong (the board's own text when it refused). */
+#ifndef LINKS1_HOST_RENDER_SESSION_H
+#define LINKS1_HOST_RENDER_SESSION_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "host-tools/board.h"
+#include "host-tools/scene/image_io.h"
+#include "proto/render_link.h"
+
+/* CMD_SCENE_LOAD and the scene's bytes as one DATA transfer. */
+int render_session_load(struct board *b, const uint8_t *scene, size_t len,
+                        struct link_scene_info *info);
+
+/* CMD_RENDER; with progress set, a progress line on stderr (areas done of
+ * total, elapsed, estimate) while the board renders. */
+int render_session_frame(struct board *b, const struct link_render_args *a, int progress,
+                         struct link_render_stats *stats);
+
+/* CMD_FRAME_PULL into img (malloc'ed; image_free it). */
+int render_session_pull(struct board *b, struct image *img);
+
+#endif

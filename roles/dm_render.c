@@ -1,0 +1,331 @@
+/* dm_render.c: the DM's part of rendering (roles/gigs.h): it keeps the
+ * compiled scene, prepares each frame (render_blob_build: hierarchy, world
+ * and eye coordinates, boxes, screen rectangles) in the IMSU block it
+ * holds, swaps it to the RC, relays progress, and streams the frame memory
+ * back to the host. */
+#include <stdint.h>
+#include <string.h>
+
+#include "drivers/imsu/imsu.h"
+#include "drivers/serial/hostlink_tx.h"
+#include "drivers/serial/line.h"
+#include "kernel/cpu.h"
+#include "kernel/kfmt.h"
+#include "kernel/kmem.h"
+#include "kernel/ktime.h"
+#include "kernel/task.h"
+#include "proto/hostlink.h"
+#include "proto/insn_mark.h"
+#include "proto/render_link.h"
+#include "proto/scene_format.h"
+#include "proto/wire.h"
+#include "render/blob.h"
+#include "render/limits.h"
+#include "roles/dm.h"
+#include "roles/gigs.h"
+#include "roles/unitmsg.h"
+
+/* The scene the host loaded; len 0 = none. */
+static struct {
+    uint8_t *compiled;    /* the compiled scene, in DM private memory */
+    uint32_t len;
+    size_t mark;          /* kmem mark before it: a new scene starts here */
+    int marked;
+    uint16_t width, height;
+    uint32_t frames;
+    uint32_t blob_bytes;  /* render_blob_bytes bound */
+    int32_t prepared;     /* frame prepared in the block the DM holds, or -1 */
+    uint32_t prepare_ms;  /* what preparing it took */
+} dm_scene;
+
+static const char dm_blob_limit_name[] = "LINKS1_IMSU_PAIR_BLOCK";
+
+/* The renderer's messages may already say "scene refused: "; said once. */
+static const char *dm_refusal(const char *message)
+{
+    static const char prefix[] = "scene refused: ";
+    return strncmp(message, prefix, sizeof prefix - 1) == 0 ? message + sizeof prefix - 1
+                                                           : message;
+}
+
+/* Receiving the compiled scene. */
+struct dm_scene_rx {
+    uint8_t *buf;
+    uint32_t cap;
+    char why[RENDER_BLOB_MSG_MAX];
+};
+
+static int dm_scene_chunk(void *ctx, const uint8_t *data, uint32_t n, uint64_t offset)
+{
+    struct dm_scene_rx *rx = ctx;
+    if (offset + n > rx->cap) {
+        kfmt_snprintf(rx->why, sizeof rx->why,
+                      "the scene is longer than the %u bytes CMD_SCENE_LOAD announced",
+                      (unsigned)rx->cap);
+        return -1;
+    }
+    memcpy(rx->buf + offset, data, n);
+    return 0;
+}
+
+/* Builds frame into the block the DM holds; 0, or -1 with err filled. */
+static int dm_prepare(uint32_t frame, render_blob_error_t *err)
+{
+    struct imsu_pair *p = &imsu_dm_rc;
+    uint8_t *block;
+    int r = imsu_write_begin(p, DM_CORE, imsu_held(p, DM_CORE), &block);
+    if (r != IMSU_OK) {
+        err->status = RENDER_BLOB_ERR_BLOCK;
+        kfmt_snprintf(err->message, sizeof err->message, "IMSU %s: %s", p->name,
+                      imsu_strerror(r));
+        return -1;
+    }
+    uint64_t t0 = ktime_now();
+    render_blob_t *blob;
+    render_blob_status_t st = render_blob_build(dm_scene.compiled, dm_scene.len, frame, block,
+                                                p->size, dm_blob_limit_name, &blob, err);
+    imsu_write_end(p, DM_CORE);
+    dm_scene.prepared = st == RENDER_BLOB_OK ? (int32_t)frame : -1;
+    dm_scene.prepare_ms = ktime_ticks_to_ms(ktime_now() - t0);
+    return st == RENDER_BLOB_OK ? 0 : -1;
+}
+
+/* The checks a scene must pass before anything renders, past the loader's:
+ * the NCs' stack for its recursion depth. */
+static int dm_scene_fits_units(uint16_t cmd)
+{
+    const render_blob_t *blob = (const render_blob_t *)imsu_read_block(&imsu_dm_rc, DM_CORE);
+    uint32_t depth = blob->scene.options.max_depth;
+    if (RENDER_STACK_BYTES(depth) + GIGS_NC_STACK_MARGIN > TASK_STACK_SIZE) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS,
+                       "scene refused: max_depth %u needs %u bytes of NC stack, more than "
+                       "TASK_STACK_SIZE (%u bytes)",
+                       (unsigned)depth, (unsigned)(RENDER_STACK_BYTES(depth) + GIGS_NC_STACK_MARGIN),
+                       (unsigned)TASK_STACK_SIZE);
+        return -1;
+    }
+    return 0;
+}
+
+void dm_cmd_scene_load(uint16_t cmd)
+{
+    if (dm_frame.length < LINK_CMD_FIXED_SIZE + LINK_SCENE_LOAD_ARGS_SIZE) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_SCENE_LOAD needs u32 bytes (4 bytes), got %u",
+                       (unsigned)(dm_frame.length - LINK_CMD_FIXED_SIZE));
+        return;
+    }
+    uint32_t len = wire_get_u32(dm_frame.payload + LINK_CMD_FIXED_SIZE);
+    /* The old scene goes first: its memory holds the new one. */
+    if (!dm_scene.marked) {
+        insn_mark_count_from_here(); /* benchmarks count from the first scene */
+        dm_scene.mark = kmem_mark();
+        dm_scene.marked = 1;
+    }
+    kmem_release_to(dm_scene.mark);
+    dm_scene.len = 0;
+    dm_scene.prepared = -1;
+    struct dm_scene_rx rx = {NULL, 0, ""};
+    size_t room = kmem_free();
+    if (len == 0 || len > SCN_MAX_SIZE || len > room)
+        kfmt_snprintf(rx.why, sizeof rx.why,
+                      "a compiled scene of %u bytes: must be 1..SCN_MAX_SIZE (%u) and fit the "
+                      "DM's free private memory (%u bytes)",
+                      (unsigned)len, (unsigned)SCN_MAX_SIZE, (unsigned)room);
+    else
+        rx = (struct dm_scene_rx){kmem_alloc(len, "compiled scene"), len, ""};
+    uint64_t got = 0;
+    uint32_t crc = 0;
+    int r = dm_transfer_receive(cmd, dm_scene_chunk, &rx, &got, &crc);
+    if (r != LINK_OK && r != LINK_ERR_CHECK)
+        return; /* the transfer already answered */
+    if (rx.why[0] == 0 && got != len)
+        kfmt_snprintf(rx.why, sizeof rx.why, "received %u bytes, CMD_SCENE_LOAD announced %u",
+                      (unsigned)got, (unsigned)len);
+    if (rx.why[0]) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS, "scene refused: %s", rx.why);
+        return;
+    }
+    /* The size bound from the header alone, then a full build of frame 0:
+     * the loader's checks and render_prepare's. */
+    render_blob_error_t err;
+    size_t bound = 0;
+    if (render_blob_bytes(rx.buf, len, &bound, &err) != RENDER_BLOB_OK) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS, "scene refused: %s", dm_refusal(err.message));
+        return;
+    }
+    dm_scene.compiled = rx.buf;
+    dm_scene.len = len;
+    if (dm_prepare(0, &err) != 0) {
+        dm_scene.len = 0;
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS, "scene refused: %s", dm_refusal(err.message));
+        return;
+    }
+    if (dm_scene_fits_units(cmd) != 0) {
+        dm_scene.len = 0;
+        return;
+    }
+    const render_blob_t *blob = (const render_blob_t *)imsu_read_block(&imsu_dm_rc, DM_CORE);
+    dm_scene.width = blob->scene.width;
+    dm_scene.height = blob->scene.height;
+    dm_scene.frames = blob->scene.frame_count;
+    dm_scene.blob_bytes = (uint32_t)bound;
+    struct link_scene_info info = {dm_scene.width, dm_scene.height, dm_scene.frames, len,
+                                   (uint32_t)bound, (uint32_t)imsu_dm_rc.size};
+    uint8_t f[LINK_SCENE_INFO_SIZE];
+    link_scene_info_put(f, &info);
+    hostlink_result(cmd, LINK_OK, f, sizeof f);
+}
+
+/* Relays the RC's progress until MSG_RENDER_DONE arrives in m. */
+static int dm_await_frame(uint32_t frame, struct line_msg *m)
+{
+    for (;;) {
+        int r = line_recv(RC_CORE, m, 0);
+        if (r != LINE_OK)
+            return r;
+        if (m->type == MSG_RENDER_DONE)
+            return LINE_OK;
+        if (m->type != MSG_RENDER_PROGRESS)
+            continue;
+        struct link_progress g = {frame, wire_get_u32(m->payload), wire_get_u32(m->payload + 4)};
+        uint8_t p[LINK_PROGRESS_SIZE];
+        link_progress_put(p, &g);
+        hostlink_send(LINK_PROGRESS, 0, p, sizeof p);
+    }
+}
+
+static void dm_render_result(uint16_t cmd, uint32_t frame, uint32_t prepare_ms,
+                             const struct line_msg *m)
+{
+    const uint8_t *q = m->payload + 4;
+    struct link_render_stats s;
+    memset(&s, 0, sizeof s);
+    s.frame = frame;
+    s.ncs = wire_get_u32(q);
+    s.areas = wire_get_u32(q + 4);
+    s.render_ms = wire_get_u32(q + 8);
+    s.rc_high = wire_get_u32(q + 12);
+    s.nc_high_max = wire_get_u32(q + 16);
+    s.nc_private = wire_get_u32(q + 20);
+    s.blob_bytes = wire_get_u32(q + 24);
+    s.dc_full_waits = wire_get_u32(q + 28);
+    render_stats_t rs;
+    memset(&rs, 0, sizeof rs);
+    gigs_stats_add(&rs, q + GIGS_RESULT_FIXED);
+    s.prepare_ms = prepare_ms;
+    s.primary = rs.primary;
+    s.shadow = rs.shadow;
+    s.reflection = rs.reflection;
+    s.refraction = rs.refraction;
+    s.transmission = rs.transmission;
+    s.box_tests = rs.box_tests;
+    s.prim_tests = rs.prim_tests;
+    s.primary_prim_tests = rs.primary_prim_tests;
+    s.precision_lost_pixels = rs.precision_lost_pixels;
+    s.dm_high = (uint32_t)kmem_high_water();
+    uint8_t f[LINK_RENDER_STATS_SIZE];
+    link_render_stats_put(f, &s);
+    hostlink_result(cmd, LINK_OK, f, sizeof f);
+}
+
+void dm_cmd_render(uint16_t cmd)
+{
+    if (dm_frame.length < LINK_CMD_FIXED_SIZE + LINK_RENDER_ARGS_SIZE) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_RENDER needs %u bytes of arguments, got %u",
+                       (unsigned)LINK_RENDER_ARGS_SIZE,
+                       (unsigned)(dm_frame.length - LINK_CMD_FIXED_SIZE));
+        return;
+    }
+    struct link_render_args a;
+    link_render_args_get(dm_frame.payload + LINK_CMD_FIXED_SIZE, &a);
+    if (dm_scene.len == 0) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_RENDER: no scene loaded (CMD_SCENE_LOAD first)");
+        return;
+    }
+    if (a.frame >= dm_scene.frames || a.balance > LINK_BALANCE_DECREASING ||
+        (a.flags & ~LINK_RENDER_FLAGS_ALL)) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS,
+                       "CMD_RENDER: frame %u (scene has %u), balance %u (0..2) or flags 0x%x "
+                       "out of range",
+                       (unsigned)a.frame, (unsigned)dm_scene.frames, (unsigned)a.balance,
+                       (unsigned)a.flags);
+        return;
+    }
+    render_blob_error_t err;
+    uint32_t prepare_ms = 0;
+    if (dm_scene.prepared != (int32_t)a.frame) {
+        if (dm_prepare(a.frame, &err) != 0) {
+            hostlink_error(cmd, LINK_ERR_CHECK, "frame %u: %s", (unsigned)a.frame, err.message);
+            return;
+        }
+        prepare_ms = dm_scene.prepare_ms;
+    }
+    int r = imsu_swap(&imsu_dm_rc, DM_CORE);
+    if (r != IMSU_OK) {
+        hostlink_error(cmd, LINK_ERR_CHECK, "IMSU swap to the RC: %s", imsu_strerror(r));
+        return;
+    }
+    dm_scene.prepared = -1; /* the block the DM holds now is the RC's old one */
+    struct line_msg *m = &dm_msg;
+    m->type = MSG_RENDER_FRAME;
+    m->len = 12;
+    wire_put_u32(m->payload, a.frame);
+    wire_put_u8(m->payload + 4, a.balance);
+    wire_put_u8(m->payload + 5, a.flags);
+    wire_put_u16(m->payload + 6, 0);
+    wire_put_u32(m->payload + 8, a.areas ? a.areas : GIGS_DEFAULT_AREAS);
+    r = line_send(RC_CORE, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
+    if (r != LINE_OK) {
+        hostlink_error(cmd, LINK_ERR_TIMEOUT, "CMD_RENDER: the RC did not take the frame (%s)",
+                       line_strerror(r));
+        return;
+    }
+    /* Pipelining: the next frame is prepared while this one renders.  An
+     * error here is reported when that frame is asked for. */
+    if ((a.flags & LINK_RENDER_PREPARE_NEXT) && a.frame + 1 < dm_scene.frames)
+        (void)dm_prepare(a.frame + 1, &err);
+    r = dm_await_frame(a.frame, m);
+    if (r != LINE_OK) {
+        hostlink_error(cmd, LINK_ERR_TIMEOUT, "CMD_RENDER: line from the RC: %s",
+                       line_strerror(r));
+        return;
+    }
+    int32_t status = (int32_t)wire_get_u32(m->payload);
+    if (status != LINK_OK) {
+        hostlink_error(cmd, (int16_t)status, "frame %u: %.*s", (unsigned)a.frame,
+                       (int)(m->len - 4), (const char *)m->payload + 4);
+        return;
+    }
+    dm_render_result(cmd, a.frame, prepare_ms, m);
+}
+
+static void dm_frame_fill(void *ctx, uint8_t *data, uint32_t n, uint32_t offset)
+{
+    const struct fm *fm = ctx;
+    /* offset and n are whole bytes; pixels are 3 bytes: go pixel by pixel
+     * over the ones this chunk touches. */
+    for (uint32_t i = 0; i < n; i++) {
+        uint32_t b = offset + i, px = b / 3;
+        uint32_t v = fm->pixels[px];
+        uint32_t c = b % 3;
+        data[i] = c == 0 ? fm_red(v) : c == 1 ? fm_green(v) : fm_blue(v);
+    }
+}
+
+void dm_cmd_frame_pull(uint16_t cmd)
+{
+    const struct fm *fm = rc_render_fm();
+    if (!fm) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_FRAME_PULL: no frame rendered yet");
+        return;
+    }
+    uint32_t total = fm->width * fm->height * 3;
+    uint32_t crc = 0;
+    if (dm_transfer_send(cmd, dm_frame_fill, (void *)fm, total, &crc) != LINK_OK)
+        return;
+    uint8_t f[LINK_FRAME_INFO_SIZE];
+    wire_put_u16(f, (uint16_t)fm->width);
+    wire_put_u16(f + 2, (uint16_t)fm->height);
+    wire_put_u32(f + 4, crc);
+    hostlink_result(cmd, LINK_OK, f, sizeof f);
+}

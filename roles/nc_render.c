@@ -1,0 +1,167 @@
+/* nc_render.c: the NC's part of rendering (roles/gigs.h): per area from
+ * the RC, Y clipping, X clipping and tracing (render_area), then the rows
+ * into the data collector FIFO.  Its working set (clip lists and one
+ * area's pixels) comes from its private memory, sized by the scene and the
+ * schedule's largest area. */
+#include <stdint.h>
+#include <string.h>
+
+#include "drivers/framemem/dc.h"
+#include "drivers/imsu/imsu.h"
+#include "drivers/serial/line.h"
+#include "kernel/cpu.h"
+#include "kernel/kfmt.h"
+#include "kernel/klog.h"
+#include "kernel/kmem.h"
+#include "proto/hostlink.h"
+#include "proto/insn_mark.h"
+#include "proto/render_link.h"
+#include "proto/wire.h"
+#include "render/blob.h"
+#include "render/clip.h"
+#include "roles/gigs.h"
+#include "roles/unitmsg.h"
+
+/* Per-NC state: each NC's own slot, indexed by core. */
+struct nc_job {
+    render_ctx_t ctx;
+    render_clip_t clip;
+    render_clip_options_t opt;
+    rgb8_t *pixels;     /* the largest area's pixels */
+    size_t mark;        /* kmem mark before the frame's working set */
+    int marked;
+    int counting;       /* the plugin counts this NC from its first frame */
+};
+static struct nc_job nc_jobs[MAX_CORES];
+
+static void nc_send(struct line_msg *m)
+{
+    int r = line_send(RC_CORE, m, 0);
+    if (r != LINE_OK)
+        klog("render: send to the RC: %s", line_strerror(r));
+}
+
+/* MSG_NC_REQ with status 0, or a negative status and text. */
+static void nc_request(struct line_msg *m, int32_t status, const char *why)
+{
+    m->type = MSG_NC_REQ;
+    wire_put_u32(m->payload, (uint32_t)status);
+    uint32_t n = why ? (uint32_t)strlen(why) : 0;
+    memcpy(m->payload + 4, why, n);
+    m->len = (uint16_t)(4 + n);
+    nc_send(m);
+}
+
+/* Opens the broadcast frame and sets aside the working set; 0, or -1 with
+ * why filled (the broadcast read is ended again then). */
+static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, char *why, size_t cap)
+{
+    uint32_t me = mycpu()->core;
+    const uint8_t *block;
+    uint32_t gen;
+    int r = imsu_bcast_read_begin(&imsu_rc_ncs, me, &block, &gen);
+    if (r != IMSU_OK) {
+        kfmt_snprintf(why, cap, "broadcast block: %s", imsu_strerror(r));
+        return -1;
+    }
+    const render_blob_t *blob;
+    render_blob_error_t err;
+    if (render_blob_open(block, imsu_rc_ncs.size, &blob, &err) != RENDER_BLOB_OK) {
+        kfmt_snprintf(why, cap, "broadcast block: %s", err.message);
+        imsu_bcast_read_end(&imsu_rc_ncs, me);
+        return -1;
+    }
+    if (!job->marked) {
+        job->mark = kmem_mark();
+        job->marked = 1;
+    }
+    kmem_release_to(job->mark);
+    size_t clip_bytes = (render_clip_bytes(blob->frame) + 7u) & ~(size_t)7u;
+    size_t pixel_bytes = (size_t)largest * sizeof(rgb8_t);
+    if (clip_bytes + pixel_bytes + 16 > kmem_free()) {
+        kfmt_snprintf(why, cap, "working set of %u bytes (clip lists %u, area of %u pixels) "
+                      "exceeds its %u free bytes of private memory",
+                      (unsigned)(clip_bytes + pixel_bytes), (unsigned)clip_bytes,
+                      (unsigned)largest, (unsigned)kmem_free());
+        imsu_bcast_read_end(&imsu_rc_ncs, me);
+        return -1;
+    }
+    void *clip_mem = kmem_alloc(clip_bytes, "clip lists");
+    job->pixels = kmem_alloc(pixel_bytes ? pixel_bytes : 1, "area pixels");
+    render_clip_init(&job->clip, blob->frame, clip_mem, clip_bytes);
+    render_ctx_init(&job->ctx, blob->frame);
+    job->ctx.options.use_bounds = !(flags & LINK_RENDER_NO_BBOX);
+    job->ctx.options.use_hierarchy = !(flags & LINK_RENDER_NO_HIERARCHY);
+    job->opt.y_clip = !(flags & LINK_RENDER_NO_YCLIP);
+    job->opt.x_clip = !(flags & LINK_RENDER_NO_XCLIP);
+    return 0;
+}
+
+/* Renders one area and pushes its rows into the DC. */
+static int nc_area(struct nc_job *job, const struct line_msg *m, char *why, size_t cap)
+{
+    render_area_t a = {wire_get_u32(m->payload), wire_get_u32(m->payload + 4),
+                       wire_get_u32(m->payload + 8), wire_get_u32(m->payload + 12)};
+    render_status_t st = render_area(&job->ctx, &job->clip, &a, &job->opt, job->pixels);
+    if (st != RENDER_OK) {
+        kfmt_snprintf(why, cap, "area %ux%u at (%u,%u): %s", (unsigned)a.w, (unsigned)a.h,
+                      (unsigned)a.x, (unsigned)a.y, render_status_name(st));
+        return -1;
+    }
+    for (uint32_t r = 0; r < a.h; r++) {
+        const rgb8_t *row = job->pixels + (size_t)r * a.w;
+        if (dc_push_span(a.x, a.y + r, (const uint8_t *)row, a.w) != DC_OK) {
+            kfmt_snprintf(why, cap, "data collector refused row %u of an area at x %u",
+                          (unsigned)(a.y + r), (unsigned)a.x);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+_Static_assert(sizeof(rgb8_t) == 3, "the DC takes rows of packed r,g,b bytes");
+
+void nc_render_frame(struct line_msg *m)
+{
+    uint32_t me = mycpu()->core;
+    struct nc_job *job = &nc_jobs[me];
+    if (!job->counting) {
+        job->counting = 1;
+        insn_mark_count_from_here(); /* benchmarks count rendering, not boot */
+    }
+    uint8_t flags = wire_get_u8(m->payload);
+    uint32_t largest = wire_get_u32(m->payload + 1);
+    char why[LINE_MAX_PAYLOAD / 4];
+    int ok = nc_setup(job, flags, largest, why, sizeof why) == 0;
+    int reading = ok; /* inside the broadcast read */
+    nc_request(m, ok ? 0 : LINK_ERR_CHECK, ok ? NULL : why);
+    for (;;) {
+        int r = line_recv(RC_CORE, m, 0);
+        if (r != LINE_OK) {
+            klog("render: line from the RC: %s", line_strerror(r));
+            continue;
+        }
+        if (m->type == MSG_NC_STOP)
+            break;
+        if (m->type != MSG_NC_AREA || !ok) {
+            klog("render: unexpected message %u from the RC", (unsigned)m->type);
+            continue;
+        }
+        if (nc_area(job, m, why, sizeof why) != 0) {
+            ok = 0;
+            nc_request(m, LINK_ERR_CHECK, why);
+        } else {
+            nc_request(m, 0, NULL);
+        }
+    }
+    if (reading)
+        imsu_bcast_read_end(&imsu_rc_ncs, me);
+    m->type = MSG_NC_STOPPED;
+    m->len = 4 + GIGS_STATS_SIZE;
+    wire_put_u32(m->payload, (uint32_t)kmem_high_water());
+    if (reading)
+        gigs_stats_put(m->payload + 4, &job->ctx.stats);
+    else
+        memset(m->payload + 4, 0, GIGS_STATS_SIZE);
+    nc_send(m);
+}

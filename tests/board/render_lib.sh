@@ -1,0 +1,61 @@
+# tests/board/render_lib.sh: helpers of the rendering board tests (sourced
+# after lib.sh, not run).  Images are compared byte for byte as PPM: the
+# board must give exactly what the host build of the same arithmetic gives.
+RENDER_TMP=$(mktemp -d /tmp/links1-render-test.XXXXXX)
+trap 'rm -rf "$RENDER_TMP"' EXIT
+
+# render_ref SCENE ARITH SIZE [FRAMES]: path of the host reference image
+# (made once per scene, arithmetic, size and frames).  soft is the float build.
+render_ref() {
+    local scene=$1 arith=$2 size=$3 frames=${4:-}
+    local build=$arith
+    [ "$arith" = soft ] && build=float
+    local out="$RENDER_TMP/ref-$(basename "$scene" .scn)-$build-$size${frames:+-f}.ppm"
+    if [ ! -e "$out.done" ]; then
+        "$LINKS1" ref "$scene" -o "$out" --arith "$build" --size "$size" \
+            ${frames:+--frames "$frames"} >"$out.log" 2>&1 && touch "$out.done"
+    fi
+    echo "$out"
+}
+
+# render_same NAME REF OUT: PASS when OUT equals REF byte for byte.
+render_same() {
+    local name=$1 ref=$2 out=$3
+    if [ ! -s "$ref" ]; then
+        echo "FAIL $name: no host reference image $ref"
+    elif [ ! -s "$out" ]; then
+        echo "FAIL $name: the board wrote no image $out"
+    elif cmp -s "$ref" "$out"; then
+        echo "PASS $name"
+    else
+        echo "FAIL $name: the board's image differs from the host build's ($("$LINKS1" compare "$ref" "$out" 2>&1 | grep -m1 'largest difference' | sed 's/.*largest/largest/'))"
+    fi
+}
+
+# render_board NAME OUT [links1 render args...]: runs the board; on a
+# non-zero exit prints FAIL with the tool's last error line and returns 1.
+render_board() {
+    local name=$1 out=$2; shift 2
+    local log="$RENDER_TMP/$name.log" rc
+    timeout "$BOARD_RUN_LIMIT_S" "$LINKS1" render --quiet "$@" >"$log" 2>&1
+    rc=$?
+    echo "--- $LINKS1 render --quiet $* (exit $rc)"
+    sed 's/^/    /' "$log"
+    if [ $rc -ne 0 ]; then
+        echo "FAIL $name: links1 render exited $rc: $(grep 'links1' "$log" | tail -n 1)"
+        return 1
+    fi
+    return 0
+}
+
+# render_grid_one SCENE ARITH NCS MODE SIZE: one cell of the grid.
+render_grid_one() {
+    local scene=$1 arith=$2 ncs=$3 mode=$4 size=$5
+    local name="render_$(basename "$scene" .scn)_${arith}_${ncs}nc_$mode"
+    local out="$RENDER_TMP/$name.ppm"
+    local ref
+    ref=$(render_ref "$scene" "$arith" "$size")
+    render_board "$name" "$out" "$scene" -o "$out" --arith "$arith" --ncs "$ncs" \
+        --balance "$mode" --size "$size" || return 0
+    render_same "$name" "$ref" "$out"
+}
