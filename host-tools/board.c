@@ -65,6 +65,15 @@ static void board_qemu_exec(struct board *b, int qemu_fd)
         argv[n++] = "-device";
         argv[n++] = "ramfb";
     }
+    /* $LINKS1_MONITOR=PATH: QEMU's human monitor on a unix socket, e.g. for
+     * `screendump` of the ramfb view while a frame renders. */
+    const char *monitor = getenv("LINKS1_MONITOR");
+    char monitor_arg[PATH_MAX + 40];
+    if (monitor && *monitor) {
+        snprintf(monitor_arg, sizeof monitor_arg, "unix:%s,server=on,wait=off", monitor);
+        argv[n++] = "-monitor";
+        argv[n++] = monitor_arg;
+    }
     argv[n++] = "-no-reboot"; /* a reset request ends the run instead of looping */
     argv[n++] = "-chardev";
     argv[n++] = chardev;
