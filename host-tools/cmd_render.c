@@ -16,6 +16,7 @@
 #include "host-tools/links1_cmds.h"
 #include "host-tools/render_session.h"
 #include "host-tools/scene/image_io.h"
+#include "host-tools/scene/cli_args.h"
 #include "host-tools/scene/scene_desc.h"
 #include "kernel/param.h"
 #include "roles/areas.h"
@@ -65,23 +66,6 @@ static void render_usage(FILE *out)
             "  --timeout S      seconds to wait for every unit computer to report in\n"
             "  --firmware ELF   firmware to boot; --ram MB; --quiet\n",
             RENDER_DEFAULT_NCS, GIGS_DEFAULT_AREAS);
-}
-
-/* "N" or "A:B"; 0 or -1 */
-static int render_parse_frames(const char *arg, long *first, long *last)
-{
-    char *end;
-    *first = strtol(arg, &end, 10);
-    if (end == arg || *first < 0)
-        return -1;
-    *last = *first;
-    if (*end == ':') {
-        const char *b = end + 1;
-        *last = strtol(b, &end, 10);
-        if (end == b || *last < *first)
-            return -1;
-    }
-    return *end ? -1 : 0;
 }
 
 static int render_parse_long(const char *opt, const char *arg, long lo, long hi, long *v)
@@ -145,7 +129,7 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
             i++;
         } else if ((strcmp(a, "--frame") == 0 || strcmp(a, "--frames") == 0) && v) {
             o->many = a[7] == 's';
-            if (render_parse_frames(v, &o->first, &o->last) != 0 ||
+            if (cli_parse_frames(v, &o->first, &o->last) != 0 ||
                 (!o->many && o->first != o->last)) {
                 fprintf(stderr, "links1 render: %s wants %s, not '%s'\n", a,
                         o->many ? "FIRST:LAST" : "a frame number", v);
@@ -153,8 +137,7 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
             }
             i++;
         } else if (strcmp(a, "--size") == 0 && v) {
-            if (sscanf(v, "%dx%d", &o->width, &o->height) != 2 || o->width < 1 ||
-                o->height < 1 || o->width > 1024 || o->height > 1024) {
+            if (cli_parse_size(v, &o->width, &o->height) != 0) {
                 fprintf(stderr, "links1 render: --size wants WxH, each 1..1024, not '%s'\n", v);
                 return -1;
             }

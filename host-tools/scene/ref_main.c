@@ -16,6 +16,7 @@
 #include <string.h>
 
 #include "host-tools/scene/image_io.h"
+#include "host-tools/scene/cli_args.h"
 #include "host-tools/scene/scene_desc.h"
 #include "render/render.h"
 #include "render/scene_load.h"
@@ -171,23 +172,6 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     return rc;
 }
 
-/* "N" or "A:B" (inclusive); 0 or -1 */
-static int ref_parse_frames(const char *arg, long *first, long *last)
-{
-    char *end;
-    *first = strtol(arg, &end, 10);
-    if (end == arg || *first < 0)
-        return -1;
-    *last = *first;
-    if (*end == ':') {
-        const char *b = end + 1;
-        *last = strtol(b, &end, 10);
-        if (end == b || *last < *first)
-            return -1;
-    }
-    return *end ? -1 : 0;
-}
-
 int main(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL;
@@ -199,8 +183,7 @@ int main(int argc, char **argv)
         } else if (strcmp(argv[i], "--ppm") == 0) {
             ppm = 1;
         } else if (strcmp(argv[i], "--size") == 0 && i + 1 < argc) {
-            if (sscanf(argv[++i], "%dx%d", &width, &height) != 2 || width < 1 || height < 1 ||
-                width > RENDER_MAX_WIDTH || height > RENDER_MAX_HEIGHT) {
+            if (cli_parse_size(argv[++i], &width, &height) != 0) {
                 fprintf(stderr, "links1 ref: --size wants WxH within %dx%d, not '%s'\n",
                         RENDER_MAX_WIDTH, RENDER_MAX_HEIGHT, argv[i]);
                 return 2;
@@ -208,7 +191,7 @@ int main(int argc, char **argv)
         } else if ((strcmp(argv[i], "--frame") == 0 || strcmp(argv[i], "--frames") == 0) &&
                    i + 1 < argc) {
             many = argv[i][7] == 's';
-            if (ref_parse_frames(argv[++i], &first, &last) != 0 || (!many && first != last)) {
+            if (cli_parse_frames(argv[++i], &first, &last) != 0 || (!many && first != last)) {
                 fprintf(stderr, "links1 ref: %s wants %s, not '%s'\n", argv[i - 1],
                         many ? "FIRST:LAST" : "a frame number", argv[i]);
                 return 2;
