@@ -32,6 +32,11 @@ int selftest_command(struct board *b, uint16_t cmd, const void *args, size_t len
                      int timeout_ms, size_t min_fields, struct board_frame *r,
                      const uint8_t **fields, char *why, size_t cap);
 
+/* The waiting half of selftest_command, for a command already sent (the
+ * bulk transfers move their data between the command and its result). */
+int selftest_result(struct board *b, uint16_t cmd, int timeout_ms, size_t min_fields,
+                    struct board_frame *r, const uint8_t **fields, char *why, size_t cap);
+
 selftest_fn selftest_status, selftest_ping, selftest_imsu, selftest_stress,
     selftest_link_sink, selftest_link_source, selftest_fault, selftest_idle;
 

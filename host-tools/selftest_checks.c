@@ -11,12 +11,18 @@ int selftest_command(struct board *b, uint16_t cmd, const void *args, size_t len
                      int timeout_ms, size_t min_fields, struct board_frame *r,
                      const uint8_t **fields, char *why, size_t cap)
 {
-    int status;
-    size_t n;
     if (board_send_cmd(b, cmd, args, len) < 0) {
         snprintf(why, cap, "could not send command %u", cmd);
         return -1;
     }
+    return selftest_result(b, cmd, timeout_ms, min_fields, r, fields, why, cap);
+}
+
+int selftest_result(struct board *b, uint16_t cmd, int timeout_ms, size_t min_fields,
+                    struct board_frame *r, const uint8_t **fields, char *why, size_t cap)
+{
+    int status;
+    size_t n;
     if (board_wait_result(b, cmd, timeout_ms, r, &status, fields, &n) < 0) {
         snprintf(why, cap, "no valid result for command %u", cmd);
         return -1;

@@ -11,8 +11,6 @@
 int selftest_link_sink(struct board *b, const struct selftest_args *a, char *why, size_t cap)
 {
     uint32_t crc;
-    int status;
-    size_t n;
     struct board_frame r;
     const uint8_t *f;
     long long t0 = board_now_ms();
@@ -21,17 +19,8 @@ int selftest_link_sink(struct board *b, const struct selftest_args *a, char *why
         snprintf(why, cap, "sending %u bytes to the board failed", a->link_bytes);
         return -1;
     }
-    if (board_wait_result(b, CMD_LINK_SINK, BOARD_FRAME_TIMEOUT_MS, &r, &status, &f, &n) < 0) {
-        snprintf(why, cap, "no result after sending %u bytes", a->link_bytes);
+    if (selftest_result(b, CMD_LINK_SINK, BOARD_FRAME_TIMEOUT_MS, 12, &r, &f, why, cap) < 0)
         return -1;
-    }
-    if (status < 0 || n < 12) {
-        snprintf(why, cap, "the board answered status %d (%s): %.*s", status,
-                 board_status_name(status), status < 0 ? (int)n : 0, (const char *)f);
-        if (status >= 0)
-            snprintf(why, cap, "result has %zu bytes of fields, want 12", n);
-        return -1;
-    }
     uint64_t got = wire_get_u64(f);
     uint32_t got_crc = wire_get_u32(f + 8);
     double secs = (double)(board_now_ms() - t0) / 1000.0;
@@ -46,8 +35,6 @@ int selftest_link_source(struct board *b, const struct selftest_args *a, char *w
     uint8_t arg[4];
     uint64_t bytes;
     uint32_t crc;
-    int status;
-    size_t n;
     struct board_frame r;
     const uint8_t *f;
     long long t0 = board_now_ms();
@@ -58,17 +45,8 @@ int selftest_link_source(struct board *b, const struct selftest_args *a, char *w
         return -1;
     }
     double secs = (double)(board_now_ms() - t0) / 1000.0;
-    if (board_wait_result(b, CMD_LINK_SOURCE, BOARD_FRAME_TIMEOUT_MS, &r, &status, &f, &n) < 0) {
-        snprintf(why, cap, "no result after the transfer");
+    if (selftest_result(b, CMD_LINK_SOURCE, BOARD_FRAME_TIMEOUT_MS, 12, &r, &f, why, cap) < 0)
         return -1;
-    }
-    if (status < 0 || n < 12) {
-        snprintf(why, cap, "the board answered status %d (%s): %.*s", status,
-                 board_status_name(status), status < 0 ? (int)n : 0, (const char *)f);
-        if (status >= 0)
-            snprintf(why, cap, "result has %zu bytes of fields, want 12", n);
-        return -1;
-    }
     uint64_t said = wire_get_u64(f);
     uint32_t said_crc = wire_get_u32(f + 8);
     snprintf(why, cap, "received %llu bytes crc 0x%08x, all the pattern in order; board "
