@@ -44,6 +44,10 @@ FW_FLOAT_ABI_fixed := -mfloat-abi=soft
 FW_ARITH_float := float
 FW_ARITH_soft  := float
 FW_ARITH_fixed := fixed
+# The firmware's arithmetic code (proto/arith.h), sent in its LINK_HELLO.
+FW_CODE_float := ARITH_FLOAT
+FW_CODE_soft  := ARITH_SOFT
+FW_CODE_fixed := ARITH_FIXED
 FW_VARIANTS := float soft fixed
 
 ifeq ($(LIBC),picolibc)
@@ -58,7 +62,7 @@ FW_CFLAGS := -std=gnu11 -O2 -g $(HOST_WARN) -I. -MMD -MP $(ARM_CPU) \
 	-ffreestanding -ffunction-sections -fdata-sections -ffp-contract=off \
 	-fno-common -DLINKS1_FIRMWARE $(LIBC_SPECS)
 FW_LDFLAGS := -nostartfiles -Wl,--gc-sections -Wl,--no-warn-rwx-segments \
-	-Tlinker/virt-memory.ld -Tlinker/sections.ld
+	-T$(B)/linker/virt-memory.ld -Tlinker/sections.ld
 # -lm: newlib keeps sqrtf and friends there (picolibc has them in libc too).
 FW_LIBS := -lm -lc -lgcc
 
@@ -89,14 +93,14 @@ $(B)/fw-$(1)-$(LIBC)/%.c.o: %.c
 	$$(call say,CC,$$@)
 	$(Q)mkdir -p $$(@D)
 	$(Q)$(ARM_CC) $(FW_CFLAGS) $(FW_FLOAT_ABI_$(1)) $(ARITH_DEF_$(FW_ARITH_$(1))) \
-		-DLINKS1_VARIANT='"$(1)"' -c $$< -o $$@
+		-DLINKS1_ARITH=$(FW_CODE_$(1)) -c $$< -o $$@
 
 $(B)/fw-$(1)-$(LIBC)/%.S.o: %.S
 	$$(call say,AS,$$@)
 	$(Q)mkdir -p $$(@D)
 	$(Q)$(ARM_CC) $(FW_CFLAGS) $(FW_FLOAT_ABI_$(1)) $(ARITH_DEF_$(FW_ARITH_$(1))) -c $$< -o $$@
 
-$$(FW_ELF_$(1)): $$(FW_OBJS_$(1)) linker/sections.ld linker/virt-memory.ld
+$$(FW_ELF_$(1)): $$(FW_OBJS_$(1)) linker/sections.ld $(B)/linker/virt-memory.ld
 	$$(call say,LD,$$@)
 	$(Q)mkdir -p $$(@D)
 	$(Q)$(ARM_CC) $(FW_CFLAGS) $(FW_FLOAT_ABI_$(1)) $(FW_LDFLAGS) \
@@ -105,6 +109,12 @@ $$(FW_ELF_$(1)): $$(FW_OBJS_$(1)) linker/sections.ld linker/virt-memory.ld
 -include $$(FW_OBJS_$(1):.o=.d)
 FIRMWARE += $$(FW_ELF_$(1))
 endef
+
+# The memory map takes the sizes C also needs from kernel/param.h.
+$(B)/linker/virt-memory.ld: linker/virt-memory.ld kernel/param.h proto/units.h
+	$(call say,CPP,$@)
+	$(Q)mkdir -p $(@D)
+	$(Q)$(ARM_CC) -E -P -x c -I. $< -o $@
 
 FIRMWARE :=
 ifneq ($(strip $(FW_SRCS)),)

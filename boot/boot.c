@@ -24,17 +24,6 @@ void boot_secondary(void) __attribute__((noreturn));
 /* boot/start.S: where the other cores begin. */
 void secondary_entry(void);
 
-/* The linker script and param.h must agree on what C sizes arrays by. */
-static void boot_check_layout(void)
-{
-    if (LINKER_VALUE(LINKS1_MAX_CORES) != MAX_CORES)
-        panic("layout: linker MAX_CORES %u != param.h MAX_CORES %u",
-              (unsigned)LINKER_VALUE(LINKS1_MAX_CORES), (unsigned)MAX_CORES);
-    if (LINKER_VALUE(LINKS1_LINE_RING) != LINE_RING_SIZE)
-        panic("layout: linker line ring %u != param.h LINE_RING_SIZE %u",
-              (unsigned)LINKER_VALUE(LINKS1_LINE_RING), (unsigned)LINE_RING_SIZE);
-}
-
 /* The linker script carved memory up to __nc_pool_end: refuse to run on a
  * board given less RAM (QEMU's -m), with the numbers, rather than fault
  * later on a missing address. */
@@ -61,7 +50,7 @@ static void boot_check_ram(void)
 static uint32_t boot_count_cores(void)
 {
     uint32_t n = 1;
-    while (n < MAX_CORES &&
+    while (n < UNITS_MAX_CORES &&
            psci_call(PSCI_AFFINITY_INFO, cpu_mpidr_of_core(n), 0, 0) >= 0)
         n++;
     return n;
@@ -70,15 +59,14 @@ static uint32_t boot_count_cores(void)
 void boot_main(void)
 {
     cpu_init(0);
-    boot_check_layout();
     gic_dist_init();   // interrupt distributor
     gic_cpu_init();    // this core's redistributor and CPU interface
     uart_init();       // host link receive ring and interrupt
     boot_check_ram();  // QEMU gave the memory the linker script carved
     uint32_t n = boot_count_cores();
-    if (n < MIN_CORES)
+    if (n < UNITS_MIN_CORES)
         panic("the board has %u core(s); links1 needs at least %u (DM, RC, one NC)",
-              (unsigned)n, (unsigned)MIN_CORES);
+              (unsigned)n, (unsigned)UNITS_MIN_CORES);
     board_ncores = n;
     kmem_init(0, n);   // the DM's private memory
     line_init_all(n);  // serial line rings DM<->RC, RC<->NCs

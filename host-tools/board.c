@@ -113,9 +113,9 @@ int board_start(struct board *b, const struct board_opts *o)
     link_decoder_init(&b->dec);
     if (board_find_firmware(o, b->firmware, sizeof b->firmware) < 0)
         return -1;
-    if (o->ncores < BOARD_MIN_CORES || o->ncores > BOARD_MAX_CORES) {
+    if (o->ncores < UNITS_MIN_CORES || o->ncores > UNITS_MAX_CORES) {
         fprintf(stderr, "links1: %d cores: the board needs %d..%d\n", o->ncores,
-                BOARD_MIN_CORES, BOARD_MAX_CORES);
+                UNITS_MIN_CORES, UNITS_MAX_CORES);
         return -1;
     }
     /* A write to a socket QEMU has closed must fail with EPIPE, not kill us. */

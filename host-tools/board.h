@@ -49,7 +49,7 @@ struct board {
     struct link_decoder dec;    /* board -> host frames */
     uint16_t tx_seq;            /* host -> board frame counter */
     int reported_count;         /* distinct cores that sent HELLO */
-    uint8_t reported[BOARD_MAX_CORES]; /* 1 once core k sent HELLO */
+    uint8_t reported[UNITS_MAX_CORES]; /* 1 once core k sent HELLO */
     int hello_errors;           /* HELLOs with a wrong role/ncores/variant/core */
     struct link_fault faults[BOARD_MAX_FAULTS];
     int nfaults;                /* faults seen (only the first BOARD_MAX_FAULTS kept) */
@@ -130,8 +130,8 @@ const char *board_status_name(int status);
 /* Milliseconds on the monotonic clock. */
 long long board_now_ms(void);
 
-/* The HELLO variant code of an arithmetic name (0 float, 1 soft, 2 fixed),
- * or -1 for an unknown name. */
+/* The code (proto/arith.h) of an arithmetic the board runs, by name, or -1
+ * for a name that is not one of them. */
 int board_arith_code(const char *arith);
 
 /* Role name of core k ("DM", "RC", "NC"). */

@@ -9,6 +9,8 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "proto/arith.h"
+
 const char board_opts_usage[] =
     "  --smp N          cores on the board: DM, RC and N-2 NCs (3..256, default 10)\n"
     "  --arith A        firmware arithmetic: float, soft or fixed (default float)\n"
@@ -18,14 +20,10 @@ const char board_opts_usage[] =
     "  --ram MB         board memory (default 512)\n"
     "  --quiet          do not print the board's log and report-in lines\n";
 
-static const char *const board_arith_names[] = {"float", "soft", "fixed"};
-
 int board_arith_code(const char *arith)
 {
-    for (int i = 0; i < (int)(sizeof board_arith_names / sizeof board_arith_names[0]); i++)
-        if (strcmp(arith, board_arith_names[i]) == 0)
-            return i;
-    return -1;
+    int a = arith_from_name(arith);
+    return arith_on_board(a) ? a : -1;
 }
 
 void board_opts_init(struct board_opts *o)
@@ -62,7 +60,7 @@ int board_parse_opt(struct board_opts *o, int argc, char **argv, int *i)
 {
     const char *a = argv[*i];
     if (strcmp(a, "--smp") == 0)
-        return board_parse_int(argc, argv, i, BOARD_MIN_CORES, BOARD_MAX_CORES, &o->ncores);
+        return board_parse_int(argc, argv, i, UNITS_MIN_CORES, UNITS_MAX_CORES, &o->ncores);
     if (strcmp(a, "--timeout") == 0)
         return board_parse_int(argc, argv, i, 1, BOARD_MAX_TIMEOUT_S, &o->timeout_s);
     if (strcmp(a, "--ram") == 0)

@@ -18,8 +18,7 @@
 #include "host-tools/scene/image_io.h"
 #include "host-tools/scene/cli_args.h"
 #include "host-tools/scene/scene_desc.h"
-#include "kernel/param.h"
-#include "roles/areas.h"
+#include "proto/areas.h"
 
 #define RENDER_MAX_JOBS 16 /* SCENE -o OUT pairs in one run */
 
@@ -65,7 +64,7 @@ static void render_usage(FILE *out)
             "  --count-insns    count guest instructions per core and print them\n"
             "  --timeout S      seconds to wait for every unit computer to report in\n"
             "  --firmware ELF   firmware to boot; --ram MB; --quiet\n",
-            RENDER_DEFAULT_NCS, GIGS_DEFAULT_AREAS);
+            RENDER_DEFAULT_NCS, AREAS_DEFAULT_K);
 }
 
 static int render_parse_long(const char *opt, const char *arg, long lo, long hi, long *v)
@@ -109,7 +108,7 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
             }
             o->jobs[o->njobs - 1].out = argv[++i];
         } else if (strcmp(a, "--ncs") == 0 && v) {
-            if (render_parse_long(a, v, 1, BOARD_MAX_CORES - 2, &n) < 0)
+            if (render_parse_long(a, v, 1, UNITS_MAX_CORES - 2, &n) < 0)
                 return -1;
             o->board.ncores = (int)n + 2;
             i++;

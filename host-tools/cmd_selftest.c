@@ -112,7 +112,7 @@ static int selftest_parse(int argc, char **argv, struct board_opts *o,
             }
             if (t->fn == selftest_fault) {
                 uint32_t core;
-                if (!val || selftest_parse_u32("fault CORE", val, 0, BOARD_MAX_CORES - 1, &core) < 0) {
+                if (!val || selftest_parse_u32("fault CORE", val, 0, UNITS_MAX_CORES - 1, &core) < 0) {
                     fprintf(stderr, "links1 selftest: fault needs the core to fault\n");
                     return -1;
                 }

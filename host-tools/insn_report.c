@@ -10,8 +10,8 @@
 
 int insn_report_print(const char *path, int ncores)
 {
-    static uint64_t count[BOARD_MAX_CORES];
-    static uint8_t seen[BOARD_MAX_CORES];
+    static uint64_t count[UNITS_MAX_CORES];
+    static uint8_t seen[UNITS_MAX_CORES];
     FILE *f = fopen(path, "r");
     if (!f) {
         fprintf(stderr, "links1: instruction counts %s: %s (did QEMU exit before the "
@@ -23,7 +23,7 @@ int insn_report_print(const char *path, int ncores)
     uint64_t n;
     int lines = 0;
     while (fscanf(f, " vcpu %u %" SCNu64, &vcpu, &n) == 2) {
-        if (vcpu < BOARD_MAX_CORES) {
+        if (vcpu < UNITS_MAX_CORES) {
             count[vcpu] = n;
             seen[vcpu] = 1;
         }

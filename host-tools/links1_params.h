@@ -2,10 +2,9 @@
 #ifndef LINKS1_HOST_PARAMS_H
 #define LINKS1_HOST_PARAMS_H
 
-/* The board: core 0 DM, core 1 RC, cores 2.. NCs.  At least one NC; at most
- * the 254 NCs LINKS-1 was designed for. */
-#define BOARD_MIN_CORES 3
-#define BOARD_MAX_CORES 256
+/* The board's core counts (UNITS_MIN_CORES..UNITS_MAX_CORES) are the
+ * firmware's own, in proto/units.h. */
+#include "proto/units.h"
 #define BOARD_DEFAULT_CORES 10
 #define BOARD_DEFAULT_RAM_MB 512
 #define BOARD_MIN_RAM_MB 64
@@ -64,6 +63,6 @@
 #define RENDER_PROGRESS_REDRAW_MS 250
 
 /* The instruction-counting plugin's per-vCPU table. */
-#define INSN_COUNT_MAX_VCPUS BOARD_MAX_CORES
+#define INSN_COUNT_MAX_VCPUS UNITS_MAX_CORES
 
 #endif

@@ -5,7 +5,7 @@ links1_SRCS := host-tools/links1.c host-tools/board.c host-tools/board_frames.c 
 	host-tools/board_opts.c \
 	host-tools/cmd_boot.c host-tools/cmd_selftest.c host-tools/selftest_checks.c \
 	host-tools/selftest_link.c host-tools/link_transfer.c host-tools/insn_report.c
-links1_SRCS += host-tools/cmd_render.c host-tools/render_session.c roles/areas.c
+links1_SRCS += host-tools/cmd_render.c host-tools/render_session.c
 links1_ARITH := double
 
 # The TCG plugin is loaded into QEMU: a plain shared object, no sanitizers.

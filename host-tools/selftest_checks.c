@@ -46,12 +46,14 @@ int selftest_status(struct board *b, const struct selftest_args *a, char *why, s
     (void)a;
     struct board_frame r;
     const uint8_t *f;
-    if (selftest_command(b, CMD_STATUS, NULL, 0, BOARD_FRAME_TIMEOUT_MS, 4, &r, &f, why,
-                         cap) < 0)
+    if (selftest_command(b, CMD_STATUS, NULL, 0, BOARD_FRAME_TIMEOUT_MS,
+                         LINK_STATUS_RESULT_SIZE, &r, &f, why, cap) < 0)
         return -1;
-    unsigned ncores = wire_get_u16(f), units = wire_get_u16(f + 2);
-    snprintf(why, cap, "board reports %u cores, %u unit computers reported in", ncores, units);
-    return ncores == (unsigned)b->opts.ncores && units == ncores ? 0 : -1;
+    struct link_status_result st;
+    link_status_result_get(f, &st);
+    snprintf(why, cap, "board reports %u cores, %u unit computers reported in", st.ncores,
+             st.reported);
+    return st.ncores == b->opts.ncores && st.reported == st.ncores ? 0 : -1;
 }
 
 int selftest_ping(struct board *b, const struct selftest_args *a, char *why, size_t cap)
@@ -59,13 +61,15 @@ int selftest_ping(struct board *b, const struct selftest_args *a, char *why, siz
     (void)a;
     struct board_frame r;
     const uint8_t *f;
-    if (selftest_command(b, CMD_LINE_PING, NULL, 0, BOARD_FRAME_TIMEOUT_MS, 4, &r, &f, why,
-                         cap) < 0)
+    if (selftest_command(b, CMD_LINE_PING, NULL, 0, BOARD_FRAME_TIMEOUT_MS,
+                         LINK_COUNT_RESULT_SIZE, &r, &f, why, cap) < 0)
         return -1;
     /* One line DM-RC plus one RC-NC line per NC. */
-    uint32_t want = (uint32_t)b->opts.ncores - 1, ok = wire_get_u32(f);
-    snprintf(why, cap, "%u of %u serial lines answered the ping", ok, want);
-    return ok == want ? 0 : -1;
+    struct link_count_result c;
+    link_count_result_get(f, &c);
+    uint32_t want = (uint32_t)b->opts.ncores - 1;
+    snprintf(why, cap, "%u of %u serial lines answered the ping", c.ok, want);
+    return c.ok == want && c.total == want ? 0 : -1;
 }
 
 int selftest_imsu(struct board *b, const struct selftest_args *a, char *why, size_t cap)
@@ -73,12 +77,14 @@ int selftest_imsu(struct board *b, const struct selftest_args *a, char *why, siz
     (void)a;
     struct board_frame r;
     const uint8_t *f;
-    if (selftest_command(b, CMD_IMSU_TEST, NULL, 0, BOARD_FRAME_TIMEOUT_MS, 4, &r, &f, why,
-                         cap) < 0)
+    if (selftest_command(b, CMD_IMSU_TEST, NULL, 0, BOARD_FRAME_TIMEOUT_MS,
+                         LINK_COUNT_RESULT_SIZE, &r, &f, why, cap) < 0)
         return -1;
-    uint32_t blocks = wire_get_u32(f);
-    snprintf(why, cap, "%u IMSU blocks swapped or broadcast with matching checksums", blocks);
-    return blocks > 0 ? 0 : -1;
+    struct link_count_result c;
+    link_count_result_get(f, &c);
+    snprintf(why, cap, "%u of %u IMSU blocks swapped or broadcast with matching checksums",
+             c.ok, c.total);
+    return c.ok > 0 && c.ok == c.total ? 0 : -1;
 }
 
 int selftest_stress(struct board *b, const struct selftest_args *a, char *why, size_t cap)
@@ -88,14 +94,14 @@ int selftest_stress(struct board *b, const struct selftest_args *a, char *why, s
     uint8_t arg[4];
     wire_put_u32(arg, a->stress_mib);
     int timeout = BOARD_FRAME_TIMEOUT_MS + (int)a->stress_mib * BOARD_STRESS_MS_PER_MIB;
-    if (selftest_command(b, CMD_LINE_STRESS, arg, sizeof arg, timeout, 12, &r, &f, why,
-                         cap) < 0)
+    if (selftest_command(b, CMD_LINE_STRESS, arg, sizeof arg, timeout,
+                         LINK_STRESS_RESULT_SIZE, &r, &f, why, cap) < 0)
         return -1;
-    uint64_t bytes = wire_get_u64(f);
-    uint32_t errors = wire_get_u32(f + 8);
+    struct link_stress_result st;
+    link_stress_result_get(f, &st);
     snprintf(why, cap, "%llu bytes (%.1f MiB) through the inter-unit lines, %u errors",
-             (unsigned long long)bytes, (double)bytes / (1 << 20), errors);
-    return bytes >= ((uint64_t)a->stress_mib << 20) && errors == 0 ? 0 : -1;
+             (unsigned long long)st.bytes, (double)st.bytes / (1 << 20), st.errors);
+    return st.bytes >= ((uint64_t)a->stress_mib << 20) && st.errors == 0 ? 0 : -1;
 }
 
 /* Waits for a FAULT frame after the first `before` faults; returns its index. */
@@ -140,8 +146,8 @@ int selftest_fault(struct board *b, const struct selftest_args *a, char *why, si
     /* The rest of the board must still answer: status, then a ping over
      * every serial line but the faulted NC's. */
     char sub[SELFTEST_WHY_SIZE / 2];
-    if (selftest_command(b, CMD_STATUS, NULL, 0, BOARD_FRAME_TIMEOUT_MS, 4, &r, &f, sub,
-                         sizeof sub) < 0) {
+    if (selftest_command(b, CMD_STATUS, NULL, 0, BOARD_FRAME_TIMEOUT_MS,
+                         LINK_STATUS_RESULT_SIZE, &r, &f, sub, sizeof sub) < 0) {
         snprintf(why, cap, "after the fault, status failed: %s", sub);
         return -1;
     }
@@ -149,7 +155,7 @@ int selftest_fault(struct board *b, const struct selftest_args *a, char *why, si
     size_t n;
     if (board_send_cmd(b, CMD_LINE_PING, NULL, 0) < 0 ||
         board_wait_result(b, CMD_LINE_PING, BOARD_FRAME_TIMEOUT_MS, &r, &status, &f, &n) < 0 ||
-        n < 4) {
+        (status >= 0 && n < LINK_COUNT_RESULT_SIZE)) {
         snprintf(why, cap, "after the fault on core %d the board did not answer a ping",
                  a->fault_core);
         return -1;
@@ -160,8 +166,11 @@ int selftest_fault(struct board *b, const struct selftest_args *a, char *why, si
     uint32_t want = (uint32_t)b->opts.ncores - 2, ok = 0;
     char counted[48];
     snprintf(counted, sizeof counted, "%u of %u ", want, want + 1);
-    if (status >= 0)
-        ok = wire_get_u32(f);
+    if (status >= 0) {
+        struct link_count_result c;
+        link_count_result_get(f, &c);
+        ok = c.ok;
+    }
     else if (memmem(f, n, counted, strlen(counted)))
         ok = want;
     if (a->fault_core < ROLE_NC || ok != want) {

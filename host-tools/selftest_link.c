@@ -19,15 +19,18 @@ int selftest_link_sink(struct board *b, const struct selftest_args *a, char *why
         snprintf(why, cap, "sending %u bytes to the board failed", a->link_bytes);
         return -1;
     }
-    if (selftest_result(b, CMD_LINK_SINK, BOARD_FRAME_TIMEOUT_MS, 12, &r, &f, why, cap) < 0)
+    if (selftest_result(b, CMD_LINK_SINK, BOARD_FRAME_TIMEOUT_MS, LINK_TRANSFER_RESULT_SIZE,
+                        &r, &f, why, cap) < 0)
         return -1;
-    uint64_t got = wire_get_u64(f);
-    uint32_t got_crc = wire_get_u32(f + 8);
+    struct link_transfer_result res;
+    link_transfer_result_get(f, &res);
+    uint64_t got = res.bytes;
+    uint32_t got_crc = res.crc;
     double secs = (double)(board_now_ms() - t0) / 1000.0;
     snprintf(why, cap, "sent %u bytes crc 0x%08x; board took %llu bytes crc 0x%08x "
              "(%.0f KiB/s)", a->link_bytes, crc, (unsigned long long)got, got_crc,
              secs > 0 ? a->link_bytes / 1024.0 / secs : 0.0);
-    return got == a->link_bytes && got_crc == crc ? 0 : -1;
+    return got == a->link_bytes && got_crc == crc && res.differ == 0 ? 0 : -1;
 }
 
 int selftest_link_source(struct board *b, const struct selftest_args *a, char *why, size_t cap)
@@ -45,10 +48,13 @@ int selftest_link_source(struct board *b, const struct selftest_args *a, char *w
         return -1;
     }
     double secs = (double)(board_now_ms() - t0) / 1000.0;
-    if (selftest_result(b, CMD_LINK_SOURCE, BOARD_FRAME_TIMEOUT_MS, 12, &r, &f, why, cap) < 0)
+    if (selftest_result(b, CMD_LINK_SOURCE, BOARD_FRAME_TIMEOUT_MS, LINK_TRANSFER_RESULT_SIZE,
+                        &r, &f, why, cap) < 0)
         return -1;
-    uint64_t said = wire_get_u64(f);
-    uint32_t said_crc = wire_get_u32(f + 8);
+    struct link_transfer_result res;
+    link_transfer_result_get(f, &res);
+    uint64_t said = res.bytes;
+    uint32_t said_crc = res.crc;
     snprintf(why, cap, "received %llu bytes crc 0x%08x, all the pattern in order; board "
              "says it sent %llu bytes crc 0x%08x (%.0f KiB/s)", (unsigned long long)bytes,
              crc, (unsigned long long)said, said_crc, secs > 0 ? bytes / 1024.0 / secs : 0.0);

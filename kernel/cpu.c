@@ -5,7 +5,7 @@
 
 #include "proto/hostlink.h"
 
-struct cpu cpus[MAX_CORES];
+struct cpu cpus[UNITS_MAX_CORES];
 volatile uint32_t board_ncores;
 
 /* The virt board puts 16 cores in each GICv3 cluster: Aff0 = k % 16,

@@ -38,7 +38,7 @@ struct cpu {
     char logbuf[KLOG_MAX];     /* klog() formats here (owner core only) */
 };
 
-extern struct cpu cpus[MAX_CORES];
+extern struct cpu cpus[UNITS_MAX_CORES];
 
 /* Number of cores on the board; set by core 0 before any other core runs. */
 extern volatile uint32_t board_ncores;

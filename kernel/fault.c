@@ -18,7 +18,7 @@ _Static_assert(FAULT_UNDEF == 1 && FAULT_PREFETCH_ABORT == 2 && FAULT_DATA_ABORT
 
 /* Set once per core: a fault while reporting a fault halts silently
  * rather than recursing. */
-static volatile uint8_t fault_in_progress[MAX_CORES];
+static volatile uint8_t fault_in_progress[UNITS_MAX_CORES];
 
 static const char *fault_kind_name(uint32_t kind)
 {
@@ -36,7 +36,7 @@ static void fault_report(uint32_t kind, uint32_t addr, uint32_t pc, uint32_t sta
 {
     struct cpu *c = mycpu();
     uint32_t core = c ? c->core : cpu_core_from_mpidr(arch_read_mpidr());
-    if (core >= MAX_CORES || fault_in_progress[core])
+    if (core >= UNITS_MAX_CORES || fault_in_progress[core])
         cpu_halt_forever();
     fault_in_progress[core] = 1;
     uint8_t role = cpu_role_of_core(core);

@@ -18,10 +18,10 @@ void kmem_init(uint32_t core, uint32_t ncores)
         c->mem_base = (uint8_t *)__rc_private_start;
         c->mem_size = LINKER_VALUE(LINKS1_RC_PRIVATE);
     } else {
-        uint32_t ncs = ncores - FIRST_NC;
+        uint32_t ncs = ncores - UNITS_FIRST_NC;
         size_t pool = (size_t)(__nc_pool_end - __nc_pool_start);
         size_t share = (pool / ncs) & ~(size_t)(KMEM_NC_SHARE_ALIGN - 1);
-        c->mem_base = (uint8_t *)__nc_pool_start + share * (core - FIRST_NC);
+        c->mem_base = (uint8_t *)__nc_pool_start + share * (core - UNITS_FIRST_NC);
         c->mem_size = share;
     }
     c->mem_used = 0;

@@ -3,17 +3,14 @@
  * Memory sizes that the linker carves (stacks, line rings, IMSU blocks,
  * private memory) are defined once in linker/virt-memory.ld and reached
  * through kernel/memlayout.h; the values here are the ones C needs at
- * compile time.  kernel_check_layout() compares the two at boot. */
+ * compile time, and the linker script includes this file for them (so it
+ * must hold #defines only). */
 #ifndef LINKS1_KERNEL_PARAM_H
 #define LINKS1_KERNEL_PARAM_H
 
-/* Cores (= unit computers): DM + RC + up to 254 NCs, as LINKS-1 was designed.
- * Must equal LINKS1_MAX_CORES in linker/virt-memory.ld. */
-#define MAX_CORES 256
-#define MIN_CORES 3 /* DM, RC and at least one NC */
-#define DM_CORE 0   /* core number of the DM */
-#define RC_CORE 1   /* core number of the RC */
-#define FIRST_NC 2  /* core number of the first NC */
+/* Cores (= unit computers) and their roles: proto/units.h, shared with the
+ * linker script and the host tools. */
+#include "proto/units.h"
 
 /* Cores per GICv3 affinity cluster on the virt board: core k has
  * MPIDR.Aff0 = k % CORES_PER_CLUSTER, Aff1 = k / CORES_PER_CLUSTER. */
@@ -41,7 +38,7 @@
 #define DM_FRAME_QUEUE_SIZE (32 * 1024)
 
 /* Inter-unit serial lines: one ring per direction per line, power of two.
- * Must equal LINKS1_LINE_RING in linker/virt-memory.ld. */
+ * The linker script carves the rings with this size. */
 #define LINE_RING_SIZE (8 * 1024)
 /* Largest payload of one inter-unit message. */
 #define LINE_MAX_PAYLOAD 1024
@@ -73,10 +70,4 @@
 /* Stack the NC's rendering needs besides RENDER_STACK_BYTES(max_depth):
  * render_area's frame and the NC's own calls. */
 #define GIGS_NC_STACK_MARGIN 1024
-/* K, the area count the RC's schedule works with when the host asks for 0:
- * with the decreasing schedule (the host's default) the best measured on
- * 64 NCs (docs/RESULTS.md, "GIGS pipeline"); also the paper's best simple
- * dynamic count (Fig. 10). */
-#define GIGS_DEFAULT_AREAS 1024
-
 #endif

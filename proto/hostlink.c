@@ -137,3 +137,57 @@ void link_fault_get(const uint8_t *p, struct link_fault *f)
     f->pc = wire_get_u32(p + 8);
     f->status = wire_get_u32(p + 12);
 }
+
+void link_status_result_put(uint8_t *p, const struct link_status_result *r)
+{
+    wire_put_u16(p, r->ncores);
+    wire_put_u16(p + 2, r->reported);
+    wire_put_u16(p + 4, r->halted);
+}
+
+void link_status_result_get(const uint8_t *p, struct link_status_result *r)
+{
+    r->ncores = wire_get_u16(p);
+    r->reported = wire_get_u16(p + 2);
+    r->halted = wire_get_u16(p + 4);
+}
+
+void link_count_result_put(uint8_t *p, const struct link_count_result *r)
+{
+    wire_put_u32(p, r->ok);
+    wire_put_u32(p + 4, r->total);
+}
+
+void link_count_result_get(const uint8_t *p, struct link_count_result *r)
+{
+    r->ok = wire_get_u32(p);
+    r->total = wire_get_u32(p + 4);
+}
+
+void link_stress_result_put(uint8_t *p, const struct link_stress_result *r)
+{
+    wire_put_u64(p, r->bytes);
+    wire_put_u32(p + 8, r->errors);
+    wire_put_u32(p + 12, r->skipped);
+}
+
+void link_stress_result_get(const uint8_t *p, struct link_stress_result *r)
+{
+    r->bytes = wire_get_u64(p);
+    r->errors = wire_get_u32(p + 8);
+    r->skipped = wire_get_u32(p + 12);
+}
+
+void link_transfer_result_put(uint8_t *p, const struct link_transfer_result *r)
+{
+    wire_put_u64(p, r->bytes);
+    wire_put_u32(p + 8, r->crc);
+    wire_put_u32(p + 12, r->differ);
+}
+
+void link_transfer_result_get(const uint8_t *p, struct link_transfer_result *r)
+{
+    r->bytes = wire_get_u64(p);
+    r->crc = wire_get_u32(p + 8);
+    r->differ = wire_get_u32(p + 12);
+}

@@ -48,12 +48,13 @@ enum link_type {
  * result fields or, on error, text naming the problem.  Later issues add the
  * render commands after these. */
 enum link_cmd {
-    CMD_STATUS = 1,      /* -> u16 ncores, u16 units reported in */
-    CMD_LINE_PING = 2,   /* ping-pong over every serial line -> u32 lines ok */
-    CMD_IMSU_TEST = 3,   /* swap both ways + broadcast, checksummed -> u32 blocks ok */
-    CMD_LINE_STRESS = 4, /* u32 MiB through the inter-unit lines -> u64 bytes, u32 errors */
-    CMD_LINK_SINK = 5,   /* host sends DATA frames; board checks -> u64 bytes, u32 crc */
-    CMD_LINK_SOURCE = 6, /* u32 bytes: board sends DATA frames of a known pattern */
+    CMD_STATUS = 1,      /* -> struct link_status_result */
+    CMD_LINE_PING = 2,   /* ping-pong over every serial line -> link_count_result */
+    CMD_IMSU_TEST = 3,   /* swap both ways + broadcast, checksummed -> link_count_result */
+    CMD_LINE_STRESS = 4, /* u32 MiB through the inter-unit lines -> link_stress_result */
+    CMD_LINK_SINK = 5,   /* host sends DATA frames; board checks -> link_transfer_result */
+    CMD_LINK_SOURCE = 6, /* u32 bytes: board sends DATA frames of a known pattern
+                          * -> link_transfer_result */
     CMD_FAULT_INJECT = 7,/* u16 core, u8 kind: that core executes the fault */
     CMD_SHUTDOWN = 8,    /* board powers off (PSCI SYSTEM_OFF) */
     /* Rendering (arguments and results in proto/render_link.h): */
@@ -90,7 +91,7 @@ enum unit_role { ROLE_DM = 0, ROLE_RC = 1, ROLE_NC = 2 };
 struct link_hello {
     uint16_t core;    /* core number, 0 .. ncores-1 */
     uint8_t role;     /* enum unit_role */
-    uint8_t variant;  /* arithmetic: 0 float, 1 soft, 2 fixed */
+    uint8_t variant;  /* the build's arithmetic: enum links1_arith (proto/arith.h) */
     uint32_t mpidr;   /* the core's MPIDR */
     uint16_t ncores;  /* cores on the board */
     uint16_t reserved;
@@ -147,6 +148,49 @@ static inline uint8_t link_pattern_byte(uint32_t i)
     uint32_t x = i * 2654435761u;
     return (uint8_t)((x >> 24) ^ i);
 }
+
+/* ---- command results ----
+ * The fields of a successful LINK_RESULT, after u16 cmd and i16 status.  The
+ * board writes them with the _put functions, the host reads them with _get. */
+
+/* CMD_STATUS: u16 cores on the board, u16 reported in, u16 halted (faulted). */
+#define LINK_STATUS_RESULT_SIZE 6
+struct link_status_result {
+    uint16_t ncores, reported, halted;
+};
+
+/* CMD_LINE_PING (serial lines) and CMD_IMSU_TEST (IMSU blocks): u32 how many
+ * passed, u32 how many were tried.  Both answer an error when ok != total. */
+#define LINK_COUNT_RESULT_SIZE 8
+struct link_count_result {
+    uint32_t ok, total;
+};
+
+/* CMD_LINE_STRESS: u64 bytes checked, u32 errors, u32 messages of other
+ * kinds skipped on the way. */
+#define LINK_STRESS_RESULT_SIZE 16
+struct link_stress_result {
+    uint64_t bytes;
+    uint32_t errors, skipped;
+};
+
+/* CMD_LINK_SINK and CMD_LINK_SOURCE: u64 bytes moved, u32 crc32 of them,
+ * u32 bytes that differ from link_pattern_byte (the sink's check; the
+ * source sends the pattern, so 0). */
+#define LINK_TRANSFER_RESULT_SIZE 16
+struct link_transfer_result {
+    uint64_t bytes;
+    uint32_t crc, differ;
+};
+
+void link_status_result_put(uint8_t *p, const struct link_status_result *r);
+void link_status_result_get(const uint8_t *p, struct link_status_result *r);
+void link_count_result_put(uint8_t *p, const struct link_count_result *r);
+void link_count_result_get(const uint8_t *p, struct link_count_result *r);
+void link_stress_result_put(uint8_t *p, const struct link_stress_result *r);
+void link_stress_result_get(const uint8_t *p, struct link_stress_result *r);
+void link_transfer_result_put(uint8_t *p, const struct link_transfer_result *r);
+void link_transfer_result_get(const uint8_t *p, struct link_transfer_result *r);
 
 /* ---- framing ---- */
 

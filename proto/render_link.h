@@ -38,7 +38,7 @@ enum link_render_flag {
 };
 #define LINK_RENDER_FLAGS_ALL 0x1Fu
 
-/* Balancing modes: the values of roles/areas.h enum areas_mode. */
+/* Balancing modes: the values of proto/areas.h enum areas_mode. */
 enum link_balance { LINK_BALANCE_STATIC = 0, LINK_BALANCE_DYNAMIC = 1, LINK_BALANCE_DECREASING = 2 };
 
 /* CMD_RENDER arguments. */

@@ -129,17 +129,17 @@ int dm_next_frame(uint64_t deadline)
 
 int dm_rc_request(struct line_msg *m, uint16_t answer_type, uint32_t timeout_ms)
 {
-    int r = line_send(RC_CORE, m, ktime_deadline_ms(timeout_ms));
+    int r = line_send(UNITS_RC_CORE, m, ktime_deadline_ms(timeout_ms));
     if (r != LINE_OK)
         return r;
-    return selftest_recv_type(RC_CORE, answer_type, m, ktime_deadline_ms(timeout_ms));
+    return selftest_recv_type(UNITS_RC_CORE, answer_type, m, ktime_deadline_ms(timeout_ms));
 }
 static void dm_cmd_status(uint16_t cmd)
 {
-    uint8_t f[6];
-    wire_put_u16(f, (uint16_t)board_ncores);
-    wire_put_u16(f + 2, (uint16_t)unit_reported_count());
-    wire_put_u16(f + 4, (uint16_t)unit_halted_count());
+    struct link_status_result r = {(uint16_t)board_ncores, (uint16_t)unit_reported_count(),
+                                   (uint16_t)unit_halted_count()};
+    uint8_t f[LINK_STATUS_RESULT_SIZE];
+    link_status_result_put(f, &r);
     hostlink_result(cmd, LINK_OK, f, sizeof f);
 }
 static void dm_cmd_fault_inject(uint16_t cmd)
@@ -163,7 +163,7 @@ static void dm_cmd_fault_inject(uint16_t cmd)
                        (unsigned)core);
         return;
     }
-    if (core == DM_CORE) {
+    if (core == UNITS_DM_CORE) {
         hostlink_result(cmd, LINK_OK, NULL, 0);
         selftest_fault_now(kind);
         return;

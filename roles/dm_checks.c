@@ -16,6 +16,15 @@
 #include "roles/unit.h"
 #include "roles/unitmsg.h"
 
+/* The success result of the ping and IMSU checks: ok of total passed. */
+static void dm_count_result(uint16_t cmd, uint32_t ok, uint32_t total)
+{
+    struct link_count_result r = {ok, total};
+    uint8_t f[LINK_COUNT_RESULT_SIZE];
+    link_count_result_put(f, &r);
+    hostlink_result(cmd, LINK_OK, f, sizeof f);
+}
+
 void dm_cmd_line_ping(uint16_t cmd)
 {
     struct line_msg *m = &dm_msg;
@@ -43,10 +52,7 @@ void dm_cmd_line_ping(uint16_t cmd)
                        (unsigned)ok, (unsigned)total, (unsigned)first_bad);
         return;
     }
-    uint8_t f[8];
-    wire_put_u32(f, ok);
-    wire_put_u32(f + 4, total);
-    hostlink_result(cmd, LINK_OK, f, sizeof f);
+    dm_count_result(cmd, ok, total);
 }
 
 /* IMSU pair both ways (with misuse checks), then the broadcast block. */
@@ -58,9 +64,9 @@ void dm_cmd_imsu_test(uint16_t cmd)
     const uint32_t seed_out = 0xA11CE000u + p->swaps, seed_back = 0xB0B00000u + p->swaps;
     uint32_t blocks_ok = 0, misuse_failed = 0;
 
-    int held = imsu_held(p, DM_CORE);
+    int held = imsu_held(p, UNITS_DM_CORE);
     uint8_t *w;
-    int r = imsu_write_begin(p, DM_CORE, held, &w);
+    int r = imsu_write_begin(p, UNITS_DM_CORE, held, &w);
     if (r != IMSU_OK) {
         hostlink_error(cmd, LINK_ERR_CHECK, "IMSU: DM cannot write its own block: %s",
                        imsu_strerror(r));
@@ -68,16 +74,16 @@ void dm_cmd_imsu_test(uint16_t cmd)
     }
     selftest_fill(w, bytes, seed_out, 0);
     uint32_t crc_out = crc32(w, bytes);
-    imsu_write_end(p, DM_CORE);
-    r = imsu_swap(p, DM_CORE);
+    imsu_write_end(p, UNITS_DM_CORE);
+    r = imsu_swap(p, UNITS_DM_CORE);
     if (r != IMSU_OK) {
         hostlink_error(cmd, LINK_ERR_CHECK, "IMSU: swap DM->RC refused: %s", imsu_strerror(r));
         return;
     }
     /* The block went to the RC: writing it now must be refused. */
-    if (imsu_write_begin(p, DM_CORE, held, &w) != IMSU_ERR_NOT_HOLDER) {
+    if (imsu_write_begin(p, UNITS_DM_CORE, held, &w) != IMSU_ERR_NOT_HOLDER) {
         misuse_failed++;
-        imsu_write_end(p, DM_CORE);
+        imsu_write_end(p, UNITS_DM_CORE);
     }
     selftest_msg_set(m, MSG_IMSU_PAIR, 12);
     wire_put_u32(m->payload, bytes);
@@ -90,7 +96,7 @@ void dm_cmd_imsu_test(uint16_t cmd)
         return;
     }
     /* The RC is inside its write: our swap must be refused. */
-    int swap_st = imsu_swap(p, DM_CORE);
+    int swap_st = imsu_swap(p, UNITS_DM_CORE);
     selftest_msg_set(m, MSG_IMSU_MIDWRITE_SEEN, 4);
     wire_put_u32(m->payload, (uint32_t)swap_st);
     r = dm_rc_request(m, MSG_IMSU_PAIR_DONE, REPLY_TIMEOUT_MS);
@@ -107,8 +113,8 @@ void dm_cmd_imsu_test(uint16_t cmd)
         hostlink_error(cmd, LINK_ERR_CHECK, "IMSU: RC side failed: %s", imsu_strerror(rc_status));
         return;
     }
-    const uint8_t *back = imsu_read_block(p, DM_CORE);
-    if (imsu_held(p, DM_CORE) == held && crc32(back, bytes) == crc_back &&
+    const uint8_t *back = imsu_read_block(p, UNITS_DM_CORE);
+    if (imsu_held(p, UNITS_DM_CORE) == held && crc32(back, bytes) == crc_back &&
         selftest_check(back, bytes, seed_back, 0) == 0)
         blocks_ok++;
 
@@ -133,10 +139,7 @@ void dm_cmd_imsu_test(uint16_t cmd)
                        (unsigned)misuse_failed);
         return;
     }
-    uint8_t f[8];
-    wire_put_u32(f, blocks_ok);
-    wire_put_u32(f + 4, expected);
-    hostlink_result(cmd, LINK_OK, f, sizeof f);
+    dm_count_result(cmd, blocks_ok, expected);
 }
 
 void dm_cmd_line_stress(uint16_t cmd)
@@ -154,7 +157,7 @@ void dm_cmd_line_stress(uint16_t cmd)
     }
     /* Both directions of every live line carry an equal share. */
     uint32_t live = line_count();
-    for (uint32_t k = FIRST_NC; k < board_ncores; k++)
+    for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++)
         live -= (uint32_t)unit_is_halted(k);
     uint64_t total = (uint64_t)mib << 20;
     uint64_t per_stream = (total + 2u * live - 1) / (2u * live);
@@ -163,16 +166,16 @@ void dm_cmd_line_stress(uint16_t cmd)
     struct line_msg *m = &dm_msg;
     selftest_msg_set(m, MSG_STRESS, 4);
     wire_put_u32(m->payload, msgs);
-    int r = line_send(RC_CORE, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
+    int r = line_send(UNITS_RC_CORE, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
     if (r != LINE_OK) {
         hostlink_error(cmd, LINK_ERR_TIMEOUT, "stress: cannot reach the RC (%s)", line_strerror(r));
         return;
     }
     struct selftest_stream s[2];
-    selftest_stream_init(&s[0], RC_CORE, 1, msgs);
-    selftest_stream_init(&s[1], RC_CORE, 0, msgs);
+    selftest_stream_init(&s[0], UNITS_RC_CORE, 1, msgs);
+    selftest_stream_init(&s[1], UNITS_RC_CORE, 0, msgs);
     int stalled = selftest_stress_run(s, 2);
-    r = selftest_recv_type(RC_CORE, MSG_STRESS_REPORT, m, ktime_deadline_ms(STRESS_STALL_MS * 2));
+    r = selftest_recv_type(UNITS_RC_CORE, MSG_STRESS_REPORT, m, ktime_deadline_ms(STRESS_STALL_MS * 2));
     if (r != LINE_OK) {
         hostlink_error(cmd, LINK_ERR_TIMEOUT, "stress: no report from the RC (%s)",
                        line_strerror(r));
@@ -188,10 +191,9 @@ void dm_cmd_line_stress(uint16_t cmd)
                        stalled ? ", a line stalled" : "");
         return;
     }
-    uint8_t f[16];
-    wire_put_u64(f, bytes);
-    wire_put_u32(f + 8, errors);
-    wire_put_u32(f + 12, skipped);
+    struct link_stress_result res = {bytes, errors, skipped};
+    uint8_t f[LINK_STRESS_RESULT_SIZE];
+    link_stress_result_put(f, &res);
     hostlink_result(cmd, LINK_OK, f, sizeof f);
 }
 

@@ -14,6 +14,7 @@
 #include "kernel/kmem.h"
 #include "kernel/ktime.h"
 #include "kernel/task.h"
+#include "proto/areas.h"
 #include "proto/hostlink.h"
 #include "proto/insn_mark.h"
 #include "proto/render_link.h"
@@ -73,7 +74,7 @@ static int dm_prepare(uint32_t frame, render_blob_error_t *err)
 {
     struct imsu_pair *p = &imsu_dm_rc;
     uint8_t *block;
-    int r = imsu_write_begin(p, DM_CORE, imsu_held(p, DM_CORE), &block);
+    int r = imsu_write_begin(p, UNITS_DM_CORE, imsu_held(p, UNITS_DM_CORE), &block);
     if (r != IMSU_OK) {
         err->status = RENDER_BLOB_ERR_BLOCK;
         kfmt_snprintf(err->message, sizeof err->message, "IMSU %s: %s", p->name,
@@ -84,7 +85,7 @@ static int dm_prepare(uint32_t frame, render_blob_error_t *err)
     render_blob_t *blob;
     render_blob_status_t st = render_blob_build(dm_scene.compiled, dm_scene.len, frame, block,
                                                 p->size, dm_blob_limit_name, &blob, err);
-    imsu_write_end(p, DM_CORE);
+    imsu_write_end(p, UNITS_DM_CORE);
     dm_scene.prepared = st == RENDER_BLOB_OK ? (int32_t)frame : -1;
     dm_scene.prepare_ms = ktime_ticks_to_ms(ktime_now() - t0);
     return st == RENDER_BLOB_OK ? 0 : -1;
@@ -94,7 +95,7 @@ static int dm_prepare(uint32_t frame, render_blob_error_t *err)
  * the NCs' stack for its recursion depth. */
 static int dm_scene_fits_units(uint16_t cmd)
 {
-    const render_blob_t *blob = (const render_blob_t *)imsu_read_block(&imsu_dm_rc, DM_CORE);
+    const render_blob_t *blob = (const render_blob_t *)imsu_read_block(&imsu_dm_rc, UNITS_DM_CORE);
     uint32_t depth = blob->scene.options.max_depth;
     if (RENDER_STACK_BYTES(depth) + GIGS_NC_STACK_MARGIN > TASK_STACK_SIZE) {
         hostlink_error(cmd, LINK_ERR_BAD_ARGS,
@@ -164,7 +165,7 @@ void dm_cmd_scene_load(uint16_t cmd)
         dm_scene.len = 0;
         return;
     }
-    const render_blob_t *blob = (const render_blob_t *)imsu_read_block(&imsu_dm_rc, DM_CORE);
+    const render_blob_t *blob = (const render_blob_t *)imsu_read_block(&imsu_dm_rc, UNITS_DM_CORE);
     dm_scene.width = blob->scene.width;
     dm_scene.height = blob->scene.height;
     dm_scene.frames = blob->scene.frame_count;
@@ -180,7 +181,7 @@ void dm_cmd_scene_load(uint16_t cmd)
 static int dm_await_frame(uint32_t frame, struct line_msg *m)
 {
     for (;;) {
-        int r = line_recv(RC_CORE, m, 0);
+        int r = line_recv(UNITS_RC_CORE, m, 0);
         if (r != LINE_OK)
             return r;
         if (m->type == MSG_RENDER_DONE)
@@ -260,7 +261,7 @@ void dm_cmd_render(uint16_t cmd)
         }
         prepare_ms = dm_scene.prepare_ms;
     }
-    int r = imsu_swap(&imsu_dm_rc, DM_CORE);
+    int r = imsu_swap(&imsu_dm_rc, UNITS_DM_CORE);
     if (r != IMSU_OK) {
         hostlink_error(cmd, LINK_ERR_CHECK, "IMSU swap to the RC: %s", imsu_strerror(r));
         return;
@@ -273,8 +274,8 @@ void dm_cmd_render(uint16_t cmd)
     wire_put_u8(m->payload + 4, a.balance);
     wire_put_u8(m->payload + 5, a.flags);
     wire_put_u16(m->payload + 6, 0);
-    wire_put_u32(m->payload + 8, a.areas ? a.areas : GIGS_DEFAULT_AREAS);
-    r = line_send(RC_CORE, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
+    wire_put_u32(m->payload + 8, a.areas ? a.areas : AREAS_DEFAULT_K);
+    r = line_send(UNITS_RC_CORE, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
     if (r != LINE_OK) {
         hostlink_error(cmd, LINK_ERR_TIMEOUT, "CMD_RENDER: the RC did not take the frame (%s)",
                        line_strerror(r));

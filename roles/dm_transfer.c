@@ -115,6 +115,15 @@ int dm_transfer_send(uint16_t cmd, dm_chunk_out_fn fn, void *ctx, uint32_t total
 /* ---- the link tests: the known pattern each way ---- */
 
 /* Counts the bytes of a chunk that differ from link_pattern_byte(). */
+/* The success result of the sink and source checks. */
+static void dm_transfer_result(uint16_t cmd, uint64_t bytes, uint32_t crc, uint32_t differ)
+{
+    struct link_transfer_result r = {bytes, crc, differ};
+    uint8_t f[LINK_TRANSFER_RESULT_SIZE];
+    link_transfer_result_put(f, &r);
+    hostlink_result(cmd, LINK_OK, f, sizeof f);
+}
+
 static int dm_sink_check(void *ctx, const uint8_t *data, uint32_t n, uint64_t offset)
 {
     uint32_t *differ = ctx;
@@ -135,11 +144,7 @@ void dm_cmd_link_sink(uint16_t cmd)
                        (unsigned)differ, (unsigned)bytes, (unsigned)crc);
         return;
     }
-    uint8_t f[16];
-    wire_put_u64(f, bytes);
-    wire_put_u32(f + 8, crc);
-    wire_put_u32(f + 12, differ);
-    hostlink_result(cmd, LINK_OK, f, sizeof f);
+    dm_transfer_result(cmd, bytes, crc, differ);
 }
 
 static void dm_source_fill(void *ctx, uint8_t *data, uint32_t n, uint32_t offset)
@@ -160,8 +165,5 @@ void dm_cmd_link_source(uint16_t cmd)
     uint32_t crc = 0;
     if (dm_transfer_send(cmd, dm_source_fill, NULL, total, &crc) != LINK_OK)
         return;
-    uint8_t f[12];
-    wire_put_u64(f, total);
-    wire_put_u32(f + 8, crc);
-    hostlink_result(cmd, LINK_OK, f, sizeof f);
+    dm_transfer_result(cmd, total, crc, 0);
 }

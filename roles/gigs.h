@@ -10,7 +10,7 @@
  *                                 while k renders (the paper's pipelining)
  *   RC: copies the blob into the broadcast block and relocates it there (the
  *       broadcast), MSG_NC_START to every NC, then one area per MSG_NC_REQ
- *       (roles/areas.h schedule) until none is left; collects the DC FIFO
+ *       (proto/areas.h schedule) until none is left; collects the DC FIFO
  *       into the frame memory in a second task; MSG_RENDER_PROGRESS and
  *       MSG_RENDER_DONE to the DM
  *   NC: Y clipping, X clipping and tracing of each area (render_area), its

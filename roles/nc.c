@@ -17,7 +17,7 @@
 
 static void nc_send(struct line_msg *m)
 {
-    int r = line_send(RC_CORE, m, 0);
+    int r = line_send(UNITS_RC_CORE, m, 0);
     if (r != LINE_OK)
         klog("send to RC failed: %s", line_strerror(r));
 }
@@ -52,8 +52,8 @@ static void nc_stress(struct line_msg *m)
 {
     uint32_t msgs = wire_get_u32(m->payload);
     struct selftest_stream s[2];
-    selftest_stream_init(&s[0], RC_CORE, 0, msgs);
-    selftest_stream_init(&s[1], RC_CORE, 1, msgs);
+    selftest_stream_init(&s[0], UNITS_RC_CORE, 0, msgs);
+    selftest_stream_init(&s[1], UNITS_RC_CORE, 1, msgs);
     if (selftest_stress_run(s, 2) != 0)
         klog("stress: stalled with %u to receive, %u to send", (unsigned)s[0].left,
              (unsigned)s[1].left);
@@ -67,10 +67,10 @@ static void nc_stress(struct line_msg *m)
 void nc_main(void *arg)
 {
     (void)arg;
-    static struct line_msg msgs[MAX_CORES];
+    static struct line_msg msgs[UNITS_MAX_CORES];
     struct line_msg *m = &msgs[mycpu()->core];
     for (;;) {
-        int r = line_recv(RC_CORE, m, 0);
+        int r = line_recv(UNITS_RC_CORE, m, 0);
         if (r != LINE_OK) {
             klog("line from RC: %s", line_strerror(r));
             continue;

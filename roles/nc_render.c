@@ -32,11 +32,11 @@ struct nc_job {
     int marked;
     int counting;       /* the plugin counts this NC from its first frame */
 };
-static struct nc_job nc_jobs[MAX_CORES];
+static struct nc_job nc_jobs[UNITS_MAX_CORES];
 
 static void nc_send(struct line_msg *m)
 {
-    int r = line_send(RC_CORE, m, 0);
+    int r = line_send(UNITS_RC_CORE, m, 0);
     if (r != LINE_OK)
         klog("render: send to the RC: %s", line_strerror(r));
 }
@@ -136,7 +136,7 @@ void nc_render_frame(struct line_msg *m)
     int reading = ok; /* inside the broadcast read */
     nc_request(m, ok ? 0 : LINK_ERR_CHECK, ok ? NULL : why);
     for (;;) {
-        int r = line_recv(RC_CORE, m, 0);
+        int r = line_recv(UNITS_RC_CORE, m, 0);
         if (r != LINE_OK) {
             klog("render: line from the RC: %s", line_strerror(r));
             continue;

@@ -29,12 +29,12 @@ static void rc_ping_ncs(struct line_msg *m)
 {
     uint32_t n = board_ncores, ok = 0, first_bad = 0xFFFFFFFFu;
     uint64_t deadline = ktime_deadline_ms(PING_TIMEOUT_MS);
-    for (uint32_t k = FIRST_NC; k < n; k++) {
+    for (uint32_t k = UNITS_FIRST_NC; k < n; k++) {
         selftest_msg_set(m, MSG_PING, 4);
         wire_put_u32(m->payload, k);
         line_send(k, m, deadline);
     }
-    for (uint32_t k = FIRST_NC; k < n; k++) {
+    for (uint32_t k = UNITS_FIRST_NC; k < n; k++) {
         int r = selftest_recv_type(k, MSG_PONG, m, deadline);
         if (r == LINE_OK && wire_get_u32(m->payload) == k)
             ok++;
@@ -43,9 +43,9 @@ static void rc_ping_ncs(struct line_msg *m)
     }
     selftest_msg_set(m, MSG_PING_NCS_DONE, 12);
     wire_put_u32(m->payload, ok);
-    wire_put_u32(m->payload + 4, n - FIRST_NC);
+    wire_put_u32(m->payload + 4, n - UNITS_FIRST_NC);
     wire_put_u32(m->payload + 8, first_bad);
-    rc_send(DM_CORE, m);
+    rc_send(UNITS_DM_CORE, m);
 }
 
 /* The DM swapped a block to us: check it, show that misuse is refused,
@@ -60,14 +60,14 @@ static void rc_imsu_pair(struct line_msg *m)
     int status = 0;
     if (bytes > p->size)
         bytes = (uint32_t)p->size;
-    int held = imsu_held(p, RC_CORE);
-    uint32_t got = crc32(imsu_read_block(p, RC_CORE), bytes);
+    int held = imsu_held(p, UNITS_RC_CORE);
+    uint32_t got = crc32(imsu_read_block(p, UNITS_RC_CORE), bytes);
     uint8_t *w;
-    if (imsu_write_begin(p, RC_CORE, 1 - held, &w) != IMSU_ERR_NOT_HOLDER) {
+    if (imsu_write_begin(p, UNITS_RC_CORE, 1 - held, &w) != IMSU_ERR_NOT_HOLDER) {
         misuse_failed++;
-        imsu_write_end(p, RC_CORE);
+        imsu_write_end(p, UNITS_RC_CORE);
     }
-    int r = imsu_write_begin(p, RC_CORE, held, &w);
+    int r = imsu_write_begin(p, UNITS_RC_CORE, held, &w);
     uint32_t mine = 0;
     if (r != IMSU_OK) {
         status = r;
@@ -76,13 +76,13 @@ static void rc_imsu_pair(struct line_msg *m)
         mine = crc32(w, bytes);
         /* Still inside the write: the DM's swap must be refused now. */
         selftest_msg_set(m, MSG_IMSU_MIDWRITE, 0);
-        rc_send(DM_CORE, m);
-        r = selftest_recv_type(DM_CORE, MSG_IMSU_MIDWRITE_SEEN, m,
+        rc_send(UNITS_DM_CORE, m);
+        r = selftest_recv_type(UNITS_DM_CORE, MSG_IMSU_MIDWRITE_SEEN, m,
                                ktime_deadline_ms(REPLY_TIMEOUT_MS));
         if (r != LINE_OK || (int32_t)wire_get_u32(m->payload) != IMSU_ERR_PEER_WRITING)
             misuse_failed++;
-        imsu_write_end(p, RC_CORE);
-        r = imsu_swap(p, RC_CORE);
+        imsu_write_end(p, UNITS_RC_CORE);
+        r = imsu_swap(p, UNITS_RC_CORE);
         if (r != IMSU_OK)
             status = r;
     }
@@ -91,7 +91,7 @@ static void rc_imsu_pair(struct line_msg *m)
     wire_put_u32(m->payload + 4, mine);
     wire_put_u32(m->payload + 8, misuse_failed);
     wire_put_u32(m->payload + 12, got == want);
-    rc_send(DM_CORE, m);
+    rc_send(UNITS_DM_CORE, m);
 }
 
 static void rc_imsu_bcast(struct line_msg *m)
@@ -103,32 +103,32 @@ static void rc_imsu_bcast(struct line_msg *m)
     if (bytes > b->size)
         bytes = (uint32_t)b->size;
     uint8_t *w;
-    int r = imsu_bcast_write_begin(b, RC_CORE, &w);
+    int r = imsu_bcast_write_begin(b, UNITS_RC_CORE, &w);
     if (r != IMSU_OK)
         panic("IMSU broadcast: the RC cannot write its own block: %s", imsu_strerror(r));
     selftest_fill(w, bytes, seed, 0);
     uint32_t crc = crc32(w, bytes);
-    imsu_bcast_write_end(b, RC_CORE);
+    imsu_bcast_write_end(b, UNITS_RC_CORE);
     uint32_t gen = b->generation;
     /* A write while someone reads must be refused. */
     const uint8_t *rd;
     uint32_t g;
-    if (imsu_bcast_read_begin(b, RC_CORE, &rd, &g) == IMSU_OK) {
-        if (imsu_bcast_write_begin(b, RC_CORE, &w) != IMSU_ERR_READERS_ACTIVE) {
+    if (imsu_bcast_read_begin(b, UNITS_RC_CORE, &rd, &g) == IMSU_OK) {
+        if (imsu_bcast_write_begin(b, UNITS_RC_CORE, &w) != IMSU_ERR_READERS_ACTIVE) {
             misuse_failed++;
-            imsu_bcast_write_end(b, RC_CORE);
+            imsu_bcast_write_end(b, UNITS_RC_CORE);
         }
-        imsu_bcast_read_end(b, RC_CORE);
+        imsu_bcast_read_end(b, UNITS_RC_CORE);
     } else {
         misuse_failed++;
     }
     uint64_t deadline = ktime_deadline_ms(REPLY_TIMEOUT_MS);
-    for (uint32_t k = FIRST_NC; k < n; k++) {
+    for (uint32_t k = UNITS_FIRST_NC; k < n; k++) {
         selftest_msg_set(m, MSG_BCAST_READ, 4);
         wire_put_u32(m->payload, bytes);
         line_send(k, m, deadline);
     }
-    for (uint32_t k = FIRST_NC; k < n; k++) {
+    for (uint32_t k = UNITS_FIRST_NC; k < n; k++) {
         if (selftest_recv_type(k, MSG_BCAST_READ_DONE, m, deadline) != LINE_OK)
             continue;
         if (wire_get_u32(m->payload) == IMSU_OK && wire_get_u32(m->payload + 4) == crc &&
@@ -139,19 +139,19 @@ static void rc_imsu_bcast(struct line_msg *m)
     }
     selftest_msg_set(m, MSG_IMSU_BCAST_DONE, 12);
     wire_put_u32(m->payload, ok);
-    wire_put_u32(m->payload + 4, n - FIRST_NC);
+    wire_put_u32(m->payload + 4, n - UNITS_FIRST_NC);
     wire_put_u32(m->payload + 8, misuse_failed);
-    rc_send(DM_CORE, m);
+    rc_send(UNITS_DM_CORE, m);
 }
 
 static void rc_stress(struct line_msg *m)
 {
-    static struct selftest_stream s[2 * MAX_CORES];
+    static struct selftest_stream s[2 * UNITS_MAX_CORES];
     uint32_t msgs = wire_get_u32(m->payload);
     uint32_t n = 0, skipped = 0;
-    selftest_stream_init(&s[n++], DM_CORE, 0, msgs);
-    selftest_stream_init(&s[n++], DM_CORE, 1, msgs);
-    for (uint32_t k = FIRST_NC; k < board_ncores; k++) {
+    selftest_stream_init(&s[n++], UNITS_DM_CORE, 0, msgs);
+    selftest_stream_init(&s[n++], UNITS_DM_CORE, 1, msgs);
+    for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
         if (unit_is_halted(k)) {
             skipped++;
             continue;
@@ -173,7 +173,7 @@ static void rc_stress(struct line_msg *m)
         }
     }
     uint64_t deadline = ktime_deadline_ms(REPLY_TIMEOUT_MS);
-    for (uint32_t k = FIRST_NC; k < board_ncores; k++) {
+    for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
         if (unit_is_halted(k))
             continue;
         if (selftest_recv_type(k, MSG_STRESS_REPORT, m, deadline) != LINE_OK) {
@@ -187,17 +187,17 @@ static void rc_stress(struct line_msg *m)
     wire_put_u64(m->payload, bytes);
     wire_put_u32(m->payload + 8, errors);
     wire_put_u32(m->payload + 12, skipped);
-    rc_send(DM_CORE, m);
+    rc_send(UNITS_DM_CORE, m);
 }
 
 static void rc_fault(struct line_msg *m)
 {
     uint16_t core = wire_get_u16(m->payload);
     uint8_t kind = wire_get_u8(m->payload + 2);
-    if (core == RC_CORE) {
+    if (core == UNITS_RC_CORE) {
         selftest_msg_set(m, MSG_FAULT_ACK, 4);
         wire_put_u32(m->payload, 0);
-        rc_send(DM_CORE, m);
+        rc_send(UNITS_DM_CORE, m);
         selftest_fault_now(kind);
         return;
     }
@@ -206,7 +206,7 @@ static void rc_fault(struct line_msg *m)
         r = selftest_recv_type(core, MSG_FAULT_ACK, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
     selftest_msg_set(m, MSG_FAULT_ACK, 4);
     wire_put_u32(m->payload, (uint32_t)r);
-    rc_send(DM_CORE, m);
+    rc_send(UNITS_DM_CORE, m);
 }
 
 void rc_main(void *arg)
@@ -216,7 +216,7 @@ void rc_main(void *arg)
     struct line_msg *m = &msg;
     task_create("rcdc", rc_collect_task, NULL); /* the data collector */
     for (;;) {
-        int r = line_recv(DM_CORE, m, 0);
+        int r = line_recv(UNITS_DM_CORE, m, 0);
         if (r != LINE_OK) {
             klog("line from DM: %s", line_strerror(r));
             continue;
@@ -224,7 +224,7 @@ void rc_main(void *arg)
         switch (m->type) {
         case MSG_PING:
             m->type = MSG_PONG;
-            rc_send(DM_CORE, m);
+            rc_send(UNITS_DM_CORE, m);
             break;
         case MSG_PING_NCS:
             rc_ping_ncs(m);

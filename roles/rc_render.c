@@ -19,7 +19,7 @@
 #include "proto/insn_mark.h"
 #include "proto/wire.h"
 #include "render/blob.h"
-#include "roles/areas.h"
+#include "proto/areas.h"
 #include "roles/gigs.h"
 #include "roles/unit.h"
 #include "roles/unitmsg.h"
@@ -43,7 +43,7 @@ enum rc_nc_state { RC_NC_IDLE = 0, RC_NC_BUSY, RC_NC_STOPPING, RC_NC_STOPPED };
 struct rc_run {
     struct areas sched;
     uint32_t total, done, ncs;
-    uint8_t state[MAX_CORES];
+    uint8_t state[UNITS_MAX_CORES];
     render_stats_t stats;
     uint32_t nc_high_max, nc_private;
     int32_t status;                /* first error, LINK_OK if none */
@@ -135,7 +135,7 @@ static void rc_progress(const struct rc_run *run, struct line_msg *m)
     m->len = 8;
     wire_put_u32(m->payload, run->done);
     wire_put_u32(m->payload + 4, run->total);
-    line_send(DM_CORE, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
+    line_send(UNITS_DM_CORE, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
 }
 
 /* Serves every NC's line until all have stopped and (unless a problem
@@ -148,7 +148,7 @@ static void rc_serve(struct rc_run *run, struct line_msg *m)
     for (;;) {
         uint32_t mark = task_event_mark();
         int busy = 0, moved = 0;
-        for (uint32_t k = FIRST_NC; k < board_ncores; k++) {
+        for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
             if (run->state[k] == RC_NC_STOPPED)
                 continue;
             busy = 1;
@@ -196,7 +196,7 @@ static uint32_t rc_largest_area(const struct areas *sched)
  * broadcast block, relocated there.  0, or -1 with run->why set. */
 static int rc_broadcast(struct rc_run *run, const render_blob_t **out)
 {
-    const render_blob_t *src = (const render_blob_t *)imsu_read_block(&imsu_dm_rc, RC_CORE);
+    const render_blob_t *src = (const render_blob_t *)imsu_read_block(&imsu_dm_rc, UNITS_RC_CORE);
     struct imsu_bcast *b = &imsu_rc_ncs;
     if (src->magic != RENDER_BLOB_MAGIC || src->bytes > b->size) {
         rc_fail(run, LINK_ERR_CHECK, "the IMSU block holds no blob, or %u bytes, more than the "
@@ -204,7 +204,7 @@ static int rc_broadcast(struct rc_run *run, const render_blob_t **out)
         return -1;
     }
     uint8_t *w;
-    int r = imsu_bcast_write_begin(b, RC_CORE, &w);
+    int r = imsu_bcast_write_begin(b, UNITS_RC_CORE, &w);
     if (r != IMSU_OK) {
         rc_fail(run, LINK_ERR_CHECK, "broadcast block: IMSU error %d (%u)", (uint32_t)r, 0);
         return -1;
@@ -213,7 +213,7 @@ static int rc_broadcast(struct rc_run *run, const render_blob_t **out)
     render_blob_t *blob;
     render_blob_error_t err;
     render_blob_status_t st = render_blob_relocate(w, b->size, &blob, &err);
-    imsu_bcast_write_end(b, RC_CORE);
+    imsu_bcast_write_end(b, UNITS_RC_CORE);
     if (st != RENDER_BLOB_OK) {
         run->status = LINK_ERR_CHECK;
         kfmt_snprintf(run->why, sizeof run->why, "broadcast: %s", err.message);
@@ -276,7 +276,7 @@ static void rc_done(struct rc_run *run, struct line_msg *m, uint32_t render_ms, 
         gigs_stats_put(q + GIGS_RESULT_FIXED, &run->stats);
         m->len = 4 + GIGS_RESULT_SIZE;
     }
-    int r = line_send(DM_CORE, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
+    int r = line_send(UNITS_DM_CORE, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
     if (r != LINE_OK)
         klog("render: the DM did not take the result: %s", line_strerror(r));
 }
@@ -294,7 +294,7 @@ void rc_render_frame(struct line_msg *m)
     uint32_t k = wire_get_u32(m->payload + 8);
     memset(&run, 0, sizeof run);
     run.status = LINK_OK;
-    run.ncs = board_ncores - FIRST_NC;
+    run.ncs = board_ncores - UNITS_FIRST_NC;
     uint64_t t0 = ktime_now();
     const render_blob_t *blob = NULL;
     uint32_t blob_bytes = 0;
@@ -310,10 +310,10 @@ void rc_render_frame(struct line_msg *m)
         rc_frame_memory(&run, blob->scene.width, blob->scene.height) == 0) {
         run.total = areas_count(&run.sched);
         uint32_t largest = rc_largest_area(&run.sched);
-        dc_init(RC_CORE); /* nobody pushes between frames */
+        dc_init(UNITS_RC_CORE); /* nobody pushes between frames */
         rc_frame.active = 1;
         task_signal_local(); /* the collector starts */
-        for (uint32_t nc = FIRST_NC; nc < board_ncores; nc++) {
+        for (uint32_t nc = UNITS_FIRST_NC; nc < board_ncores; nc++) {
             m->type = MSG_NC_START;
             m->len = 5;
             wire_put_u8(m->payload, flags);
@@ -322,7 +322,7 @@ void rc_render_frame(struct line_msg *m)
             rc_send_nc(nc, m);
         }
         /* The NCs' share of the pool is the same for each (kernel/kmem.c). */
-        run.nc_private = (uint32_t)cpu_of(FIRST_NC)->mem_size;
+        run.nc_private = (uint32_t)cpu_of(UNITS_FIRST_NC)->mem_size;
         rc_serve(&run, m);
         rc_frame.active = 0;
         task_signal_local();

@@ -91,7 +91,7 @@ static int selftest_stress_step(struct selftest_stream *s, struct line_msg *m)
 
 int selftest_stress_run(struct selftest_stream *s, uint32_t n)
 {
-    static struct line_msg msg[MAX_CORES]; /* one scratch message per core */
+    static struct line_msg msg[UNITS_MAX_CORES]; /* one scratch message per core */
     struct line_msg *m = &msg[mycpu()->core];
     uint64_t stall = ktime_ms_to_ticks(STRESS_STALL_MS);
     uint64_t last = ktime_now();

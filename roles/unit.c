@@ -1,33 +1,20 @@
 /* unit.c: a unit computer reports in and starts its role's tasks. */
 #include "roles/unit.h"
 
-#include <string.h>
-
 #include "drivers/serial/hostlink_tx.h"
 #include "kernel/cpu.h"
 #include "kernel/task.h"
+#include "proto/arith.h"
 #include "proto/hostlink.h"
 
-#ifndef LINKS1_VARIANT
-#define LINKS1_VARIANT "unknown"
+#ifndef LINKS1_ARITH
+#error "the Makefile names the firmware's arithmetic: -DLINKS1_ARITH=ARITH_..."
 #endif
-
-/* The arithmetic variant of this build, as LINK_HELLO numbers it. */
-static uint8_t unit_variant(void)
-{
-    if (strcmp(LINKS1_VARIANT, "float") == 0)
-        return 0;
-    if (strcmp(LINKS1_VARIANT, "soft") == 0)
-        return 1;
-    if (strcmp(LINKS1_VARIANT, "fixed") == 0)
-        return 2;
-    return 0xFF;
-}
 
 static void unit_report_in(void)
 {
     struct cpu *c = mycpu();
-    struct link_hello h = {(uint16_t)c->core, c->role, unit_variant(), c->mpidr,
+    struct link_hello h = {(uint16_t)c->core, c->role, LINKS1_ARITH, c->mpidr,
                            (uint16_t)board_ncores, 0};
     uint8_t p[LINK_HELLO_SIZE];
     link_hello_put(p, &h);

@@ -3,9 +3,9 @@ HOST_TESTS += test_crc32
 test_crc32_SRCS := tests/host/test_crc32.c
 test_crc32_ARITH := double
 
-# RC area schedules (roles/areas.c): pure, so tested on the host.
+# RC area schedules (proto/areas.c): pure, so tested on the host.
 HOST_TESTS += test_areas
-test_areas_SRCS := tests/host/test_areas.c roles/areas.c
+test_areas_SRCS := tests/host/test_areas.c
 test_areas_ARITH := double
 
 # Data collector FIFO, frame memory and fw_cfg/ramfb formats

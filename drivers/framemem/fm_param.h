@@ -19,7 +19,7 @@
 #define DC_RING_SLOTS 256u
 
 /* Producers are named by core number, below this bound (kernel/param.h
- * MAX_CORES; the host tests use thread numbers). */
+ * UNITS_MAX_CORES; the host tests use thread numbers). */
 #define DC_MAX_PRODUCERS 256u
 
 /* fw_cfg file directory entries read before giving up on finding a file

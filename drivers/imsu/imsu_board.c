@@ -12,9 +12,9 @@ void imsu_init_all(uint32_t ncores)
 {
     (void)ncores;
     size_t pair = LINKER_VALUE(LINKS1_IMSU_PAIR_BLOCK);
-    imsu_pair_init(&imsu_dm_rc, "DM-RC", DM_CORE, RC_CORE, (uint8_t *)__imsu_pair_start,
+    imsu_pair_init(&imsu_dm_rc, "DM-RC", UNITS_DM_CORE, UNITS_RC_CORE, (uint8_t *)__imsu_pair_start,
                    (uint8_t *)__imsu_pair_start + pair, pair);
-    imsu_bcast_init(&imsu_rc_ncs, RC_CORE, (uint8_t *)__imsu_bcast_start,
+    imsu_bcast_init(&imsu_rc_ncs, UNITS_RC_CORE, (uint8_t *)__imsu_bcast_start,
                     LINKER_VALUE(LINKS1_IMSU_BCAST_BLOCK));
 }
 

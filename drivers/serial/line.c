@@ -25,7 +25,7 @@ struct line {
     struct line_dir dir[2];   /* dir[i] carries end[i] -> end[1 - i] */
 };
 
-static struct line lines[MAX_CORES - 1];
+static struct line lines[UNITS_MAX_CORES - 1];
 static uint32_t lines_used;
 
 void line_init_all(uint32_t ncores)
@@ -38,8 +38,8 @@ void line_init_all(uint32_t ncores)
     for (uint32_t i = 0; i < n; i++) {
         struct line *l = &lines[i];
         /* Line 0: DM<->RC; line i: RC<->NC core i+1. */
-        l->end[0] = i == 0 ? DM_CORE : RC_CORE;
-        l->end[1] = i == 0 ? RC_CORE : i + 1;
+        l->end[0] = i == 0 ? UNITS_DM_CORE : UNITS_RC_CORE;
+        l->end[1] = i == 0 ? UNITS_RC_CORE : i + 1;
         for (int d = 0; d < 2; d++) {
             uint8_t *mem = (uint8_t *)__lines_start + (2u * i + (uint32_t)d) * LINE_RING_SIZE;
             ringbuf_init(&l->dir[d].ring, mem, LINE_RING_SIZE);
@@ -63,11 +63,11 @@ static int line_dirs(uint32_t peer, struct line_dir **out, struct line_dir **in)
 {
     uint32_t me = mycpu()->core;
     uint32_t idx;
-    if ((me == DM_CORE && peer == RC_CORE) || (me == RC_CORE && peer == DM_CORE))
+    if ((me == UNITS_DM_CORE && peer == UNITS_RC_CORE) || (me == UNITS_RC_CORE && peer == UNITS_DM_CORE))
         idx = 0;
-    else if (me == RC_CORE && peer >= FIRST_NC && peer < board_ncores)
+    else if (me == UNITS_RC_CORE && peer >= UNITS_FIRST_NC && peer < board_ncores)
         idx = peer - 1;
-    else if (peer == RC_CORE && me >= FIRST_NC)
+    else if (peer == UNITS_RC_CORE && me >= UNITS_FIRST_NC)
         idx = me - 1;
     else
         return LINE_ERR_NO_LINE;

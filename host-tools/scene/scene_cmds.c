@@ -9,6 +9,7 @@
 
 #include "host-tools/scene/scene_cmds.h"
 #include "host-tools/scene/scene_desc.h"
+#include "proto/arith.h"
 
 /* Finds "SCENE -o OUT" among the arguments; extra flags are left to the
  * caller through *rest.  0, or -1 after printing the usage. */
@@ -131,13 +132,13 @@ int scene_cmd_ref(int argc, char **argv)
     }
     args[n] = NULL;
     const char *build = arith;
-    if (strcmp(arith, "soft") == 0) {
+    int code = arith_from_name(arith);
+    if (code == ARITH_SOFT) {
         /* Software float differs from hardware float only in who executes
          * the IEEE operations; on the host both are the float build. */
         fprintf(stderr, "links1 ref: --arith soft on the host is the float build\n");
         build = "float";
-    } else if (strcmp(arith, "double") != 0 && strcmp(arith, "float") != 0 &&
-               strcmp(arith, "fixed") != 0) {
+    } else if (code < 0) {
         fprintf(stderr, "links1 ref: --arith must be double, float, soft or fixed, not '%s'\n",
                 arith);
         return 2;

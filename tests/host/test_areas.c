@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "roles/areas.h"
+#include "proto/areas.h"
 #include "tests/check.h"
 
 /* Summary of one schedule run by areas_walk. */

@@ -21,17 +21,19 @@
  * in raster order (top band first, left to right).
  *
  * Pure computation: no globals, no hardware, no allocation, so the same
- * file runs on the RC and in the host tests. */
-#ifndef LINKS1_ROLES_AREAS_H
-#define LINKS1_ROLES_AREAS_H
+ * file runs on the RC, in the host tool and in the host tests. */
+#ifndef LINKS1_PROTO_AREAS_H
+#define LINKS1_PROTO_AREAS_H
 
 #include <stdint.h>
 
 /* Largest screen side.  The frame memory stops at 1024x1024; this bound
  * only keeps every pixel count of a schedule well inside 32 bits. */
 #define AREAS_MAX_DIM 4096u
-/* Areas of the k-area grid when the caller passes k = 0: the paper's best
- * simple-dynamic count on 512x480 with 64 NCs (Fig. 10). */
+/* Areas of the k-area grid when the caller passes k = 0 (the host's
+ * --areas default too): the paper's best simple-dynamic count on 512x480
+ * with 64 NCs (Fig. 10), and the best measured with the decreasing
+ * schedule on 64 NCs (docs/RESULTS.md, "GIGS pipeline"). */
 #define AREAS_DEFAULT_K 1024u
 /* Guided self-scheduling divisor: an area takes 1/(factor * ncs) of what is
  * left.  1 gives the first NCs so much that the last areas cannot even the

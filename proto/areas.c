@@ -1,5 +1,5 @@
 /* areas.c: the RC's screen-area schedules (see areas.h, docs/areas.md). */
-#include "roles/areas.h"
+#include "proto/areas.h"
 
 #include <stddef.h>
 #include <string.h>
