@@ -39,4 +39,4 @@ test_hostlink_session_ARITH := double
 BOARD_TESTS += tests/board/boot_smp.sh tests/board/channels.sh tests/board/idle66.sh \
 	tests/board/fault.sh
 
-BENCHES += tests/bench/bench_boot.sh
+BENCHES += tests/bench/bench_boot.sh tests/bench/bench_channels.sh
