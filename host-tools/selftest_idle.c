@@ -120,6 +120,14 @@ int selftest_idle(struct board *b, const struct selftest_args *a, char *why, siz
         snprintf(why, cap, "the samples span only %.2f s", span_s);
         return -1;
     }
+    /* Every core ran its boot: a count of 0 means the counts are not real. */
+    for (int k = 0; k < b->opts.ncores; k++) {
+        if (s1.count[k] == 0) {
+            snprintf(why, cap, "core %d has counted no instruction since boot: the "
+                     "counting plugin's samples are not the board's", k);
+            return -1;
+        }
+    }
     int worst = 0, busy = 0;
     double worst_rate = -1, total = 0;
     for (int k = 0; k < b->opts.ncores; k++) {
@@ -134,9 +142,10 @@ int selftest_idle(struct board *b, const struct selftest_args *a, char *why, siz
         }
         busy += rate > a->max_insns;
     }
-    snprintf(why, cap, "%d idle cores retired %.0f guest instructions in %.1f s; most core "
-             "%d %s: %.0f per second (limit %u)%s", b->opts.ncores, total, span_s, worst,
-             board_role_name(worst), worst_rate, a->max_insns,
+    snprintf(why, cap, "%d idle cores retired %.0f guest instructions in %.1f s (%.0f "
+             "since boot on core %d); most core %d %s: %.0f per second (limit %u)%s",
+             b->opts.ncores, total, span_s, (double)s1.count[b->opts.ncores - 1],
+             b->opts.ncores - 1, worst, board_role_name(worst), worst_rate, a->max_insns,
              busy ? "; a core that should sleep keeps running" : "");
     if (busy)
         snprintf(why + strlen(why), cap - strlen(why), " (%d cores over the limit)", busy);
