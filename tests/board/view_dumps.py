@@ -22,19 +22,26 @@ import time
 WAIT_FOR_SOCKET_S = 60
 
 
+def read_to_prompt(s):
+    got = b""
+    while not got.endswith(b"(qemu) "):
+        chunk = s.recv(4096)
+        if not chunk:
+            raise ConnectionError("the monitor closed")
+        got += chunk
+    return got
+
+
 def monitor_command(path, line):
+    """Runs one monitor command and returns when QEMU has done it (its
+    prompt is back)."""
     s = socket.socket(socket.AF_UNIX)
     try:
+        s.settimeout(60)
         s.connect(path)
-        s.settimeout(30)
-        s.recv(4096)  # the monitor's banner and prompt
+        read_to_prompt(s)  # the banner
         s.sendall(line.encode() + b"\n")
-        got = b""
-        while not got.endswith(b"(qemu) "):  # the prompt after the answer
-            chunk = s.recv(4096)
-            if not chunk:
-                break
-            got += chunk
+        read_to_prompt(s)
     finally:
         s.close()
 
@@ -51,10 +58,13 @@ def grab(path, out_dir, finished_path):
     while True:
         try:
             monitor_command(path, "screendump " + target)
+        except OSError:
+            return  # QEMU has gone: the run is over
+        try:
             with open(target, "rb") as f:
                 data = f.read()
         except OSError:
-            return  # QEMU has gone: the run is over
+            continue  # nothing shown yet (before the firmware set up ramfb)
         if data != last:
             os.rename(target, os.path.join(out_dir, "dump-%05d.ppm" % n))
             n += 1
