@@ -74,11 +74,14 @@ FW_LIBS := -lm -lc -lgcc
 #              and NAME_ARITH the arithmetic of the shared code it links
 # HOST_TESTS:  host unit tests, built with ASan+UBSan, same NAME_SRCS/NAME_ARITH
 # BOARD_TESTS: scripts under tests/board run by the test runner
+# BOARD_PROGS: host programs a board test script runs (same NAME_SRCS and
+#              NAME_ARITH; built with ASan+UBSan into build/tests/ by `make`)
 FW_SRCS :=
 SHARED_SRCS :=
 HOST_TOOLS :=
 HOST_TESTS :=
 BOARD_TESTS :=
+BOARD_PROGS :=
 BENCHES :=
 
 include $(wildcard */module.mk */*/module.mk)
@@ -143,16 +146,18 @@ $(3): $$($(1)_OBJS)
 endef
 $(foreach t,$(HOST_TOOLS),$(eval $(call host_prog,$(t),,$(B)/$(t))))
 $(foreach t,$(HOST_TESTS),$(eval $(call host_prog,$(t),-san,$(B)/tests/$(t))))
+$(foreach t,$(BOARD_PROGS),$(eval $(call host_prog,$(t),-san,$(B)/tests/$(t))))
 
 HOST_TOOL_BINS := $(addprefix $(B)/,$(HOST_TOOLS))
 HOST_TEST_BINS := $(addprefix $(B)/tests/,$(HOST_TESTS))
+BOARD_PROG_BINS := $(addprefix $(B)/tests/,$(BOARD_PROGS))
 
 # ---------------------------------------------------------------- targets
 .PHONY: all firmware host-tools deps run test test-host test-board bench clean
 
 all: firmware host-tools
 firmware: $(FIRMWARE)
-host-tools: $(HOST_TOOL_BINS)
+host-tools: $(HOST_TOOL_BINS) $(BOARD_PROG_BINS)
 
 deps:
 	$(Q)bash host-tools/install-deps.sh

@@ -31,19 +31,31 @@ const char *board_role_name(int core)
 
 /* ------------------------------------------------------------ QEMU process */
 
+/* The emulator: $QEMU, else qemu-system-arm from $PATH. */
+static const char *board_qemu_binary(void)
+{
+    const char *qemu = getenv("QEMU");
+    return qemu && *qemu ? qemu : "qemu-system-arm";
+}
+
+static void board_qemu_exec_failed(const char *qemu)
+{
+    fprintf(stderr, "links1: cannot run %s: %s (install qemu-system-arm, or set $QEMU)\n",
+            qemu, strerror(errno));
+    _exit(127);
+}
+
 /* In the child: QEMU must not outlive the tool, whatever ends the tool. */
 static void board_qemu_exec(struct board *b, int qemu_fd)
 {
     prctl(PR_SET_PDEATHSIG, SIGTERM);
     fcntl(qemu_fd, F_SETFD, 0); /* keep QEMU's end open across exec */
 
-    char smp[32], mem[32], chardev[64], plugin[4200];
+    char smp[32], mem[32], chardev[64], plugin[3 * PATH_MAX];
     snprintf(smp, sizeof smp, "%d", b->opts.ncores);
     snprintf(mem, sizeof mem, "%dM", b->opts.ram_mb);
     snprintf(chardev, sizeof chardev, "socket,id=link,fd=%d", qemu_fd);
-    const char *qemu = getenv("QEMU");
-    if (!qemu || !*qemu)
-        qemu = "qemu-system-arm";
+    const char *qemu = board_qemu_binary();
     const char *argv[40];
     int n = 0;
     argv[n++] = qemu;
@@ -81,28 +93,76 @@ static void board_qemu_exec(struct board *b, int qemu_fd)
     argv[n++] = "chardev:link";
     argv[n++] = "-kernel";
     argv[n++] = b->firmware;
-    if (b->opts.insn_count_out) {
+    if (b->opts.insn_count_out || b->opts.insn_series_out) {
         const char *so = getenv("LINKS1_INSN_PLUGIN");
-        char self[PATH_MAX];
+        char self[PATH_MAX], args[2 * PATH_MAX];
         if (!so || !*so) {
             ssize_t len = readlink("/proc/self/exe", self, sizeof self - 1);
             self[len > 0 ? len : 0] = 0;
             char *slash = strrchr(self, '/');
             if (slash)
                 *slash = 0;
-            snprintf(plugin, sizeof plugin, "%s/insn-count.so,out=%s", self,
-                     b->opts.insn_count_out);
+            snprintf(plugin, sizeof plugin, "%s/insn-count.so", self);
         } else {
-            snprintf(plugin, sizeof plugin, "%s,out=%s", so, b->opts.insn_count_out);
+            snprintf(plugin, sizeof plugin, "%s", so);
         }
+        if (b->opts.insn_count_out)
+            snprintf(args, sizeof args, ",out=%s", b->opts.insn_count_out);
+        else
+            args[0] = 0;
+        if (b->opts.insn_series_out)
+            snprintf(args + strlen(args), sizeof args - strlen(args), ",series=%s,every=%d",
+                     b->opts.insn_series_out, b->opts.insn_series_ms);
+        snprintf(plugin + strlen(plugin), sizeof plugin - strlen(plugin), "%s", args);
         argv[n++] = "-plugin";
         argv[n++] = plugin;
     }
     argv[n] = NULL;
     execvp(qemu, (char *const *)argv);
-    fprintf(stderr, "links1: cannot run %s: %s (install qemu-system-arm, or set $QEMU)\n",
-            qemu, strerror(errno));
-    _exit(127);
+    board_qemu_exec_failed(qemu);
+}
+
+int board_run_semihost(const char *elf, int ram_mb)
+{
+    if (access(elf, R_OK) < 0) {
+        fprintf(stderr, "links1: program %s: %s\n", elf, strerror(errno));
+        return -1;
+    }
+    char mem[32];
+    snprintf(mem, sizeof mem, "%dM", ram_mb);
+    const char *qemu = board_qemu_binary();
+    /* One core of the plain virt board; the program's semihosted console
+     * is QEMU's stdio chardev, so its output is our stdout. */
+    const char *argv[] = {qemu, "-M", "virt", "-cpu", "cortex-a15", "-m", mem,
+                          "-display", "none", "-nodefaults", "-no-reboot",
+                          "-chardev", "stdio,id=semihost,signal=off",
+                          "-semihosting-config", "enable=on,target=native,chardev=semihost",
+                          "-kernel", elf, NULL};
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid < 0) {
+        fprintf(stderr, "links1: fork: %s\n", strerror(errno));
+        return -1;
+    }
+    if (pid == 0) {
+        prctl(PR_SET_PDEATHSIG, SIGTERM);
+        int null = open("/dev/null", O_RDONLY);
+        if (null >= 0)
+            dup2(null, 0); /* the program reads nothing; keep a terminal cooked */
+        execvp(qemu, (char *const *)argv);
+        board_qemu_exec_failed(qemu);
+    }
+    int st;
+    while (waitpid(pid, &st, 0) < 0) {
+        if (errno != EINTR) {
+            fprintf(stderr, "links1: waitpid: %s\n", strerror(errno));
+            return -1;
+        }
+    }
+    if (WIFEXITED(st))
+        return WEXITSTATUS(st);
+    fprintf(stderr, "links1: QEMU was killed by signal %d\n", WTERMSIG(st));
+    return -1;
 }
 
 int board_start(struct board *b, const struct board_opts *o)
@@ -331,6 +391,15 @@ int board_send(struct board *b, uint8_t type, uint8_t flags, const void *payload
         return -1;
     b->tx_seq++;
     return seq;
+}
+
+int board_send_raw(struct board *b, const void *bytes, size_t n)
+{
+    if (b->fd < 0) {
+        fprintf(stderr, "links1: the board's link is closed\n");
+        return -1;
+    }
+    return board_write_all(b, bytes, n, BOARD_FRAME_TIMEOUT_MS);
 }
 
 int board_send_cmd(struct board *b, uint16_t cmd, const void *args, size_t len)

@@ -29,6 +29,9 @@ struct board_opts {
     int ram_mb;             /* -m */
     int timeout_s;          /* report-in timeout */
     const char *insn_count_out; /* non-NULL: load the counting plugin, write here */
+    const char *insn_series_out; /* non-NULL: the counting plugin appends a line of
+                                    every core's count here every insn_series_ms */
+    int insn_series_ms;
     int quiet;              /* 1: do not print LOG/HELLO lines (faults always) */
     int view;               /* 1: -device ramfb and a display (links1 render --view) */
 };
@@ -58,6 +61,9 @@ struct board {
     int stopping;               /* 1 during board_stop: end-of-file is expected */
     uint32_t host_frames_dropped; /* board's reports (RESULT for cmd 0) of frames
                                      from the host it dropped */
+    int host_drop_status;       /* status of the last such report */
+    char host_drop_text[LINK_MAX_PAYLOAD + 1]; /* and its text */
+    char fault_text[BOARD_MAX_FAULTS][BOARD_FAULT_TEXT]; /* text of each kept fault */
 };
 
 /* Fills o with the defaults (BOARD_DEFAULT_*). */
@@ -80,6 +86,12 @@ int board_find_firmware(const struct board_opts *o, char *out, size_t cap);
 /* Starts QEMU.  Returns 0, or -1 after printing why. */
 int board_start(struct board *b, const struct board_opts *o);
 
+/* Runs a semihosting program (not the firmware: one core, no link) on the
+ * plain virt board, its console output on our stdout, until it ends the
+ * emulator (semihosting SYS_EXIT).  Returns QEMU's exit status, or -1 after
+ * printing why. */
+int board_run_semihost(const char *elf, int ram_mb);
+
 /* Waits until every core has sent HELLO.  Returns 0, or -1 after printing
  * the missing cores (timeout) or why the board stopped. */
 int board_wait_reported(struct board *b, int timeout_ms);
@@ -87,6 +99,12 @@ int board_wait_reported(struct board *b, int timeout_ms);
 /* Sends one frame; returns its seq, or -1 after printing why. */
 int board_send(struct board *b, uint8_t type, uint8_t flags, const void *payload,
                size_t len);
+
+/* Writes bytes to the board's UART as they are: no framing, tx_seq
+ * untouched.  For tests that must send damaged frames (encode one with
+ * link_frame_encode, then spoil a byte).  Returns 0, or -1 after printing
+ * why. */
+int board_send_raw(struct board *b, const void *bytes, size_t n);
 
 /* Sends LINK_CMD cmd with args (len bytes, may be 0). */
 int board_send_cmd(struct board *b, uint16_t cmd, const void *args, size_t len);

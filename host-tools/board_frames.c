@@ -86,10 +86,13 @@ static void board_on_fault(struct board *b, const struct link_frame *f)
     } else {
         link_fault_get(f->payload, &ft);
     }
-    if (b->nfaults < BOARD_MAX_FAULTS)
-        b->faults[b->nfaults] = ft;
-    b->nfaults++;
     int textlen = f->length > LINK_FAULT_FIXED_SIZE ? f->length - LINK_FAULT_FIXED_SIZE : 0;
+    if (b->nfaults < BOARD_MAX_FAULTS) {
+        b->faults[b->nfaults] = ft;
+        snprintf(b->fault_text[b->nfaults], BOARD_FAULT_TEXT, "%.*s", textlen,
+                 (const char *)f->payload + LINK_FAULT_FIXED_SIZE);
+    }
+    b->nfaults++;
     printf("core %u %s FAULT: %s at 0x%08x (pc 0x%08x, status 0x%08x)%s%.*s\n", ft.core,
            ft.role == ROLE_DM ? "DM" : ft.role == ROLE_RC ? "RC" : "NC",
            board_fault_kind_name(ft.kind), ft.addr, ft.pc, ft.status, textlen ? ": " : "", textlen,
@@ -117,11 +120,13 @@ int board_handle_frame(struct board *b, const struct link_frame *f)
         /* Not an answer: the board reports at once a frame from us it had to
          * drop (cmd 0, LINK_ERR_BAD_FRAME). */
         b->host_frames_dropped++;
+        b->host_drop_status = (int16_t)wire_get_u16(f->payload + 2);
+        snprintf(b->host_drop_text, sizeof b->host_drop_text, "%.*s",
+                 f->length - LINK_RESULT_FIXED_SIZE,
+                 (const char *)f->payload + LINK_RESULT_FIXED_SIZE);
         fprintf(stderr, "links1: the board dropped a frame from the host (status %d, %s): "
-                "%.*s\n", (int16_t)wire_get_u16(f->payload + 2),
-                board_status_name((int16_t)wire_get_u16(f->payload + 2)),
-                f->length - LINK_RESULT_FIXED_SIZE,
-                (const char *)f->payload + LINK_RESULT_FIXED_SIZE);
+                "%s\n", b->host_drop_status, board_status_name(b->host_drop_status),
+                b->host_drop_text);
         return 0;
     }
     if (b->queued >= BOARD_FRAME_QUEUE) {

@@ -11,12 +11,22 @@
  * code are a slight over-estimate; a core asleep in WFI counts nothing.
  * A core that executes the marker of proto/insn_mark.h starts again from
  * zero (the rest of that block goes uncounted: a few instructions).
+ *
+ * With series=FILE,every=MS a thread of the plugin also appends, every MS
+ * milliseconds while QEMU runs, one line "at T C0 C1 ... CN-1": T the
+ * host's CLOCK_MONOTONIC in milliseconds, Ck vCPU k's count then.  Without
+ * icount QEMU runs the guest's generic timer from that same clock, so the
+ * difference of two lines is what each core retired over that span of guest
+ * time (links1 selftest idle reads it while the board runs).
  */
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
+#include <pthread.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "host-tools/links1_params.h"
 #include "proto/insn_mark.h"
@@ -134,6 +144,40 @@ static void insn_count_atexit(qemu_plugin_id_t id, void *userdata)
         fclose(f);
 }
 
+/* ---- the series thread ---- */
+
+static char insn_series_out[4096]; /* series file, or "" */
+static long insn_series_ms;        /* its period */
+
+static void *insn_series_thread(void *arg)
+{
+    (void)arg;
+    static char line[INSN_COUNT_MAX_VCPUS * 22 + 32];
+    FILE *f = fopen(insn_series_out, "w");
+    if (!f) {
+        qemu_plugin_outs("insn-count: cannot open the series= file\n");
+        return NULL;
+    }
+    struct timespec period = {insn_series_ms / 1000, (insn_series_ms % 1000) * 1000000L};
+    for (;;) {
+        struct timespec now;
+        clock_gettime(CLOCK_MONOTONIC, &now);
+        size_t n = (size_t)snprintf(line, sizeof line, "at %lld",
+                                    (long long)now.tv_sec * 1000 + now.tv_nsec / 1000000);
+        for (int k = 0; k < insn_count_vcpus && n < sizeof line; k++)
+            n += (size_t)snprintf(line + n, sizeof line - n, " %llu",
+                                  (unsigned long long)__atomic_load_n(&insn_count[k],
+                                                                      __ATOMIC_RELAXED));
+        if (n < sizeof line - 1) {
+            line[n++] = '\n';
+            fwrite(line, 1, n, f);
+            fflush(f); /* a reader sees whole lines only */
+        }
+        nanosleep(&period, NULL);
+    }
+    return NULL;
+}
+
 PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_t *info,
                                       int argc, char **argv)
 {
@@ -149,10 +193,24 @@ PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_t *in
     for (int i = 0; i < argc; i++) {
         if (strncmp(argv[i], "out=", 4) == 0 && strlen(argv[i] + 4) < sizeof insn_count_out) {
             strcpy(insn_count_out, argv[i] + 4);
+        } else if (strncmp(argv[i], "series=", 7) == 0 &&
+                   strlen(argv[i] + 7) < sizeof insn_series_out) {
+            strcpy(insn_series_out, argv[i] + 7);
+        } else if (strncmp(argv[i], "every=", 6) == 0 && atol(argv[i] + 6) > 0) {
+            insn_series_ms = atol(argv[i] + 6);
         } else {
-            qemu_plugin_outs("insn-count: the only argument is out=FILE\n");
+            qemu_plugin_outs("insn-count: arguments are out=FILE, series=FILE, every=MS\n");
             return -1;
         }
+    }
+    if (insn_series_out[0]) {
+        pthread_t th;
+        if (insn_series_ms <= 0 ||
+            pthread_create(&th, NULL, insn_series_thread, NULL) != 0) {
+            qemu_plugin_outs("insn-count: series=FILE needs every=MS, and a thread\n");
+            return -1;
+        }
+        pthread_detach(th);
     }
     qemu_plugin_register_vcpu_tb_trans_cb(id, insn_count_tb_trans);
     qemu_plugin_register_atexit_cb(id, insn_count_atexit, NULL);

@@ -33,6 +33,8 @@
 #define BOARD_FRAME_QUEUE 32
 /* Faults remembered for the caller to check (all are printed). */
 #define BOARD_MAX_FAULTS 64
+/* Bytes of each remembered fault's text kept (with the terminator). */
+#define BOARD_FAULT_TEXT 256
 /* Bytes read from the link per read() call, and the pause (microseconds)
  * after a wake-up that lets bytes gather before reading. */
 #define BOARD_READ_CHUNK 4096
@@ -48,10 +50,17 @@
 /* Checks named in one selftest run, and the size of a check's one-line verdict. */
 #define SELFTEST_MAX_RUN 16
 #define SELFTEST_WHY_SIZE 512
-/* Idle test: settle after report-in, then measure QEMU's CPU time. */
+/* Idle test: settle after report-in, then count each core's guest
+ * instructions over a span (samples from the counting plugin every
+ * SAMPLE_MS; the sample after the span may come this much LATE at most).
+ * An idle core sleeps in WFI and retires nothing; a spinning one retires
+ * millions per second even on a loaded host. */
 #define SELFTEST_IDLE_SETTLE_MS 1000
 #define SELFTEST_IDLE_SECONDS 5
-#define SELFTEST_IDLE_MAX_PERCENT 15.0
+#define SELFTEST_IDLE_SAMPLE_MS 200
+#define SELFTEST_IDLE_LATE_MS 20000
+#define SELFTEST_IDLE_MAX_INSNS 10000u /* per idle core per second */
+#define SELFTEST_MAX_IDLE_INSNS 1000000000u /* most --max-insns accepts */
 
 /* links1 render: NCs when --ncs is not given (a 10-core board), and the
  * most milliseconds the board may stay silent while a frame renders (no

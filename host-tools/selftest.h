@@ -12,7 +12,8 @@
 struct selftest_args {
     uint32_t stress_mib;  /* stress: MiB through the inter-unit lines */
     uint32_t link_bytes;  /* link-sink / link-source: bytes each way */
-    double max_percent;   /* idle: most host CPU QEMU may use */
+    uint32_t max_insns;   /* idle: most instructions per second an idle core
+                             may retire */
     int fault_core;       /* fault: the core that executes the fault */
 };
 
@@ -36,6 +37,11 @@ int selftest_command(struct board *b, uint16_t cmd, const void *args, size_t len
  * bulk transfers move their data between the command and its result). */
 int selftest_result(struct board *b, uint16_t cmd, int timeout_ms, size_t min_fields,
                     struct board_frame *r, const uint8_t **fields, char *why, size_t cap);
+
+/* The idle check needs the board started with the counting plugin's
+ * series: sets o to write it to a new temporary file named in path (the
+ * caller unlinks it).  Returns 0, or -1 after printing why. */
+int selftest_idle_prepare(struct board_opts *o, char *path, size_t cap);
 
 selftest_fn selftest_status, selftest_ping, selftest_imsu, selftest_stress,
     selftest_link_sink, selftest_link_source, selftest_fault, selftest_idle;

@@ -60,7 +60,8 @@
 #define DTB_BASE RAM_BASE
 #define DTB_MAX_SIZE 0x00100000u
 #define MMU_BLOCK_SIZE 0x40000000u  /* 1 GiB first-level block */
-#define UNMAPPED_VIRT 0x80000000u   /* the block left invalid on purpose */
+/* UNMAPPED_VIRT, the block left invalid on purpose: proto/board_map.h. */
+#include "proto/board_map.h"
 
 /* Generic timer: non-secure physical timer PPI. */
 #define TIMER_INTID 30u

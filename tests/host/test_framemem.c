@@ -244,6 +244,13 @@ static void test_ring_many_producers(void)
         args[i].id = ids[i];
         pthread_create(&th[i], NULL, stress_producer, &args[i]);
     }
+    /* The consumer takes nothing until a producer has found the FIFO full
+     * and armed its wait, so the full-FIFO path (wait, then be woken by a
+     * pop) runs every time, not only when thread scheduling happens to let
+     * the producers get ahead. */
+    int filled = wait_for_change(&st.ring.full_waits, 0);
+    CHECK_EQ_INT(filled, 0);
+    st.stuck = filled != 0;
     uint32_t next[DC_MAX_PRODUCERS] = {0};
     uint32_t got = 0, bad = 0;
     while (got < STRESS_PRODUCERS * STRESS_RUNS && !st.stuck) {
@@ -276,7 +283,7 @@ static void test_ring_many_producers(void)
         CHECK_EQ_INT(next[ids[i]], STRESS_RUNS);
     struct dc_run extra;
     CHECK_EQ_INT(dc_ring_try_pop(&st.ring, &extra), DC_ERR_EMPTY);
-    CHECK(st.ring.full_waits > 0); /* the small FIFO did fill */
+    CHECK(st.ring.full_waits > 0); /* the small FIFO filled and producers waited */
 }
 
 /* The board self-test's pattern: 24-bit pixels, no two alike in the

@@ -1,6 +1,6 @@
 /* test_render_bits.c: one CRC-32 line per rendered image, so the same
  * renderer built for the host and for the board's CPU (run under QEMU with
- * semihosting) can be compared bit for bit.  render/check-arm-bits.sh builds
+ * semihosting) can be compared bit for bit.  tests/bench/check_arm_bits.sh builds
  * it with the compiled scenes embedded (bits_scenes.h, generated) and
  * compares the lines.  Images are rendered at BITS_WIDTH x BITS_HEIGHT (the
  * scene's camera, a smaller frame) to keep emulated runs short.  Each scene

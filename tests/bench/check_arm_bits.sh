@@ -1,15 +1,16 @@
 #!/usr/bin/env bash
-# render/check-arm-bits.sh: the renderer on the board's CPU gives the same
+# tests/bench/check_arm_bits.sh: the renderer on the board's CPU gives the same
 # image bits as the host build of the same arithmetic.
 #
 # Renders the demo and paper-like scenes (96x72) with tests/host/test_render_bits.c
 # built for the host (float, fixed) and for cortex-a15 bare metal (float with
-# VFP, soft float, fixed; picolibc, semihosting under qemu-system-arm), and
+# VFP, soft float, fixed; picolibc, semihosting, run by `links1 semihost`), and
 # compares the CRC-32 of every image; also that each scene copied to another
 # block, relocated and rendered by areas with screen clipping (the board's
-# way) gives the same CRC.  Prints PASS/FAIL lines.
+# way) gives the same CRC.  Prints PASS/FAIL lines.  A reproduce command
+# (docs/RESULTS.md), not part of `make test`.
 set -u
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 out=build/arm-bits
 mkdir -p "$out"
 make -s --no-print-directory build/links1 || exit 1
@@ -41,8 +42,7 @@ $arm -mfloat-abi=soft -DLINKS1_NUM_FIXED $srcs -o "$out/arm-fixed.elf" || exit 1
 for v in float soft fixed; do
     ref=float
     [ $v = fixed ] && ref=fixed
-    timeout 600 qemu-system-arm -M virt -cpu cortex-a15 -m 512 -nographic -semihosting \
-        -kernel "$out/arm-$v.elf" </dev/null >"$out/arm-$v.txt" 2>&1
+    timeout 600 build/links1 semihost "$out/arm-$v.elf" >"$out/arm-$v.txt" 2>&1
     for s in $scenes; do
         want=$(grep " $s " "$out/host-$ref.txt")
         got=$(grep " $s " "$out/arm-$v.txt")
