@@ -31,6 +31,10 @@ test_hostlink_transfer_SRCS := tests/host/test_hostlink_transfer.c host-tools/bo
 	host-tools/link_transfer.c
 test_hostlink_transfer_ARITH := double
 test_hostlink_transfer_LIBS := -lpthread
+# The argument reader of every command and the board options.
+HOST_TESTS += test_cli_opt
+test_cli_opt_SRCS := tests/host/test_cli_opt.c host-tools/board_opts.c host-tools/cli_opt.c
+test_cli_opt_ARITH := double
 HOST_TESTS += test_hostlink_session
 test_hostlink_session_SRCS := tests/host/test_hostlink_session.c host-tools/board.c \
 	host-tools/board_frames.c host-tools/board_opts.c host-tools/cli_opt.c

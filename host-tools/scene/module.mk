@@ -40,6 +40,12 @@ test_scene_parse_SRCS := tests/host/test_scene_parse.c $(SCENE_TEXT_SRCS)
 test_scene_parse_ARITH := double
 test_scene_parse_LIBS := -lpng
 
+# How ref and render both read a scene file (scene_file.c).
+HOST_TESTS += test_scene_file
+test_scene_file_SRCS := tests/host/test_scene_file.c $(SCENE_TEXT_SRCS)
+test_scene_file_ARITH := double
+test_scene_file_LIBS := -lpng
+
 # The scene subcommands are part of the links1 tool (host-tools/module.mk).
 links1_SRCS += $(SCENE_CMD_SRCS)
 links1_LIBS += $(SCENE_CMD_LIBS)
