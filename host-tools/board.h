@@ -19,6 +19,7 @@
 #include <stdint.h>
 #include <sys/types.h>
 
+#include "host-tools/cli_opt.h"
 #include "host-tools/links1_params.h"
 #include "proto/hostlink.h"
 
@@ -69,11 +70,29 @@ struct board {
 /* Fills o with the defaults (BOARD_DEFAULT_*). */
 void board_opts_init(struct board_opts *o);
 
-/* Parses one board option at argv[*i] (--smp, --arith, --firmware,
- * --timeout, --ram, --quiet), advancing *i past its value.  Returns 1 when
- * it took the option, 0 when argv[*i] is not a board option, -1 after
- * printing what is wrong with it. */
-int board_parse_opt(struct board_opts *o, int argc, char **argv, int *i);
+/* The board options every board subcommand takes (--smp, --arith,
+ * --firmware, --timeout, --ram, --quiet): entries for the subcommand's
+ * getopt_long table, and their codes. */
+enum board_opt_code {
+    BOARD_OPT_SMP = CLI_BOARD_CODES,
+    BOARD_OPT_ARITH,
+    BOARD_OPT_FIRMWARE,
+    BOARD_OPT_TIMEOUT,
+    BOARD_OPT_RAM,
+    BOARD_OPT_QUIET,
+};
+#define BOARD_LONG_OPTIONS                                       \
+    {"smp", required_argument, NULL, BOARD_OPT_SMP},             \
+    {"arith", required_argument, NULL, BOARD_OPT_ARITH},         \
+    {"firmware", required_argument, NULL, BOARD_OPT_FIRMWARE},   \
+    {"timeout", required_argument, NULL, BOARD_OPT_TIMEOUT},     \
+    {"ram", required_argument, NULL, BOARD_OPT_RAM},             \
+    {"quiet", no_argument, NULL, BOARD_OPT_QUIET}
+
+/* Takes the board option cli_next() returned as code into o.  Returns 1
+ * when it took it, 0 when code is not a board option, -1 after printing
+ * what is wrong with its value. */
+int board_opt(struct board_opts *o, const struct cli *c, int code);
 
 /* The usage lines of the board options, for each subcommand's --help. */
 extern const char board_opts_usage[];

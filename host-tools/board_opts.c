@@ -35,54 +35,25 @@ void board_opts_init(struct board_opts *o)
     o->timeout_s = BOARD_DEFAULT_TIMEOUT_S;
 }
 
-/* Parses argv[*i + 1] as an integer in [lo, hi] for option name. */
-static int board_parse_int(int argc, char **argv, int *i, int lo, int hi, int *out)
+int board_opt(struct board_opts *o, const struct cli *c, int code)
 {
-    const char *name = argv[*i];
-    if (*i + 1 >= argc) {
-        fprintf(stderr, "links1: %s needs a value\n", name);
-        return -1;
-    }
-    char *end;
-    errno = 0;
-    long v = strtol(argv[*i + 1], &end, 10);
-    if (errno || end == argv[*i + 1] || *end || v < lo || v > hi) {
-        fprintf(stderr, "links1: %s '%s': want a whole number from %d to %d\n", name,
-                argv[*i + 1], lo, hi);
-        return -1;
-    }
-    *out = (int)v;
-    *i += 1;
-    return 1;
-}
-
-int board_parse_opt(struct board_opts *o, int argc, char **argv, int *i)
-{
-    const char *a = argv[*i];
-    if (strcmp(a, "--smp") == 0)
-        return board_parse_int(argc, argv, i, UNITS_MIN_CORES, UNITS_MAX_CORES, &o->ncores);
-    if (strcmp(a, "--timeout") == 0)
-        return board_parse_int(argc, argv, i, 1, BOARD_MAX_TIMEOUT_S, &o->timeout_s);
-    if (strcmp(a, "--ram") == 0)
-        return board_parse_int(argc, argv, i, BOARD_MIN_RAM_MB, BOARD_MAX_RAM_MB, &o->ram_mb);
-    if (strcmp(a, "--quiet") == 0) {
+    switch (code) {
+    case BOARD_OPT_SMP:
+        return cli_int(c, UNITS_MIN_CORES, UNITS_MAX_CORES, &o->ncores) < 0 ? -1 : 1;
+    case BOARD_OPT_TIMEOUT:
+        return cli_int(c, 1, BOARD_MAX_TIMEOUT_S, &o->timeout_s) < 0 ? -1 : 1;
+    case BOARD_OPT_RAM:
+        return cli_int(c, BOARD_MIN_RAM_MB, BOARD_MAX_RAM_MB, &o->ram_mb) < 0 ? -1 : 1;
+    case BOARD_OPT_QUIET:
         o->quiet = 1;
         return 1;
-    }
-    if (strcmp(a, "--arith") == 0 || strcmp(a, "--firmware") == 0) {
-        if (*i + 1 >= argc) {
-            fprintf(stderr, "links1: %s needs a value\n", a);
-            return -1;
-        }
-        const char *v = argv[++*i];
-        if (a[2] == 'f') {
-            o->firmware = v;
-        } else if (board_arith_code(v) < 0) {
-            fprintf(stderr, "links1: --arith '%s': want float, soft or fixed\n", v);
-            return -1;
-        } else {
-            o->arith = v;
-        }
+    case BOARD_OPT_FIRMWARE:
+        o->firmware = c->arg;
+        return 1;
+    case BOARD_OPT_ARITH:
+        if (board_arith_code(c->arg) < 0)
+            return cli_bad_value(c, "float, soft or fixed");
+        o->arith = c->arg;
         return 1;
     }
     return 0;

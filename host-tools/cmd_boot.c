@@ -2,7 +2,6 @@
  * reporting in, shut it down cleanly; optionally count guest instructions. */
 #include <stdio.h>
 #include <stdlib.h>
-#include <string.h>
 #include <unistd.h>
 
 #include "host-tools/board.h"
@@ -20,24 +19,36 @@ static void cmd_boot_usage(FILE *out)
                  board_opts_usage);
 }
 
+enum { BOOT_OPT_COUNT_INSNS = CLI_OWN_CODES };
+
+static const struct option boot_options[] = {
+    BOARD_LONG_OPTIONS,
+    {"count-insns", no_argument, NULL, BOOT_OPT_COUNT_INSNS},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0},
+};
+
 int cmd_boot(int argc, char **argv)
 {
     struct board_opts o;
     int count_insns = 0;
     board_opts_init(&o);
-    for (int i = 1; i < argc; i++) {
-        int r = board_parse_opt(&o, argc, argv, &i);
+    struct cli c;
+    cli_init(&c, "links1 boot", argc, argv, "h", boot_options);
+    for (int code; (code = cli_next(&c)) != -1;) {
+        int r = board_opt(&o, &c, code);
         if (r < 0)
             return 2;
         if (r)
             continue;
-        if (strcmp(argv[i], "--count-insns") == 0) {
+        if (code == BOOT_OPT_COUNT_INSNS) {
             count_insns = 1;
-        } else if (strcmp(argv[i], "--help") == 0 || strcmp(argv[i], "-h") == 0) {
+        } else if (code == 'h') {
             cmd_boot_usage(stdout);
             return 0;
         } else {
-            fprintf(stderr, "links1 boot: unknown option '%s'\n", argv[i]);
+            if (code == CLI_OPERAND)
+                fprintf(stderr, "links1 boot: unexpected argument '%s'\n", c.arg);
             cmd_boot_usage(stderr);
             return 2;
         }

@@ -5,7 +5,6 @@
  * one-line summary per frame.  Several SCENE -o OUT pairs render one after
  * another on the same board; a scene the board refuses is reported and the
  * next one still renders (the exit status is then 1). */
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,12 +17,15 @@
 #include "host-tools/scene/image_io.h"
 #include "host-tools/scene/cli_args.h"
 #include "host-tools/scene/scene_desc.h"
+#include "host-tools/scene/scene_file.h"
 #include "proto/areas.h"
 
 #define RENDER_MAX_JOBS 16 /* SCENE -o OUT pairs in one run */
 
 struct render_job {
     const char *scene, *out;
+    uint8_t *bytes; /* the compiled scene, read before the board boots */
+    size_t len;
 };
 
 struct render_opts {
@@ -33,9 +35,7 @@ struct render_opts {
     struct link_render_args args;
     long first, last;   /* frames; last < 0: only frame first */
     int many;           /* --frames: one image per frame, numbered */
-    int width, height;  /* --size, 0 = the scene's */
-    int max_depth;      /* --max-depth, -1 = the scene's */
-    int refractionless; /* --refractionless on|off: 1 / 0, -1 = the scene's */
+    struct scene_file_opts scene; /* --size, --max-depth, --refractionless */
     int ppm, count_insns;
 };
 
@@ -67,17 +67,131 @@ static void render_usage(FILE *out)
             RENDER_DEFAULT_NCS, AREAS_DEFAULT_K);
 }
 
-static int render_parse_long(const char *opt, const char *arg, long lo, long hi, long *v)
+enum render_opt_code {
+    RENDER_OPT_NCS = CLI_OWN_CODES,
+    RENDER_OPT_BALANCE,
+    RENDER_OPT_AREAS,
+    RENDER_OPT_FRAME,
+    RENDER_OPT_FRAMES,
+    RENDER_OPT_SIZE,
+    RENDER_OPT_MAX_DEPTH,
+    RENDER_OPT_REFRACTIONLESS,
+    RENDER_OPT_NO_YCLIP,
+    RENDER_OPT_NO_XCLIP,
+    RENDER_OPT_NO_BBOX,
+    RENDER_OPT_NO_HIERARCHY,
+    RENDER_OPT_VIEW,
+    RENDER_OPT_PPM,
+    RENDER_OPT_COUNT_INSNS,
+};
+
+static const struct option render_options[] = {
+    BOARD_LONG_OPTIONS,
+    {"ncs", required_argument, NULL, RENDER_OPT_NCS},
+    {"balance", required_argument, NULL, RENDER_OPT_BALANCE},
+    {"areas", required_argument, NULL, RENDER_OPT_AREAS},
+    {"frame", required_argument, NULL, RENDER_OPT_FRAME},
+    {"frames", required_argument, NULL, RENDER_OPT_FRAMES},
+    {"size", required_argument, NULL, RENDER_OPT_SIZE},
+    {"max-depth", required_argument, NULL, RENDER_OPT_MAX_DEPTH},
+    {"refractionless", required_argument, NULL, RENDER_OPT_REFRACTIONLESS},
+    {"no-yclip", no_argument, NULL, RENDER_OPT_NO_YCLIP},
+    {"no-xclip", no_argument, NULL, RENDER_OPT_NO_XCLIP},
+    {"no-bbox", no_argument, NULL, RENDER_OPT_NO_BBOX},
+    {"no-hierarchy", no_argument, NULL, RENDER_OPT_NO_HIERARCHY},
+    {"view", no_argument, NULL, RENDER_OPT_VIEW},
+    {"ppm", no_argument, NULL, RENDER_OPT_PPM},
+    {"count-insns", no_argument, NULL, RENDER_OPT_COUNT_INSNS},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0},
+};
+
+/* A scene named on the command line, or the -o OUT of the last one. */
+static int render_add_job(struct render_opts *o, int code, const char *arg)
 {
-    char *end;
-    errno = 0;
-    *v = strtol(arg, &end, 10);
-    if (errno || end == arg || *end || *v < lo || *v > hi) {
-        fprintf(stderr, "links1 render: %s wants a number in %ld..%ld, not '%s'\n", opt, lo, hi,
-                arg);
+    if (code == 'o') {
+        if (o->njobs == 0 || o->jobs[o->njobs - 1].out) {
+            fprintf(stderr, "links1 render: -o %s: name the scene before its output\n", arg);
+            return -1;
+        }
+        o->jobs[o->njobs - 1].out = arg;
+        return 0;
+    }
+    if (o->njobs == RENDER_MAX_JOBS) {
+        fprintf(stderr, "links1 render: %s: at most %d scenes in one run\n", arg,
+                RENDER_MAX_JOBS);
         return -1;
     }
+    o->jobs[o->njobs++] = (struct render_job){arg, NULL, NULL, 0};
     return 0;
+}
+
+/* One option of render's own (not a board option, not a scene or -o). */
+static int render_take(struct render_opts *o, const struct cli *c, int code)
+{
+    long n;
+    enum areas_mode m;
+    switch (code) {
+    case BOARD_OPT_SMP:
+        fprintf(stderr, "links1 render: --smp: give the node computers with --ncs N instead "
+                "(the board has N + 2 cores)\n");
+        return -1;
+    case RENDER_OPT_NCS:
+        if (cli_long(c, 10, 1, UNITS_MAX_CORES - 2, &n) < 0)
+            return -1;
+        o->board.ncores = (int)n + 2;
+        return 0;
+    case RENDER_OPT_BALANCE:
+        if (areas_mode_parse(c->arg, &m) != AREAS_OK)
+            return cli_bad_value(c, "static, dynamic or decreasing");
+        o->args.balance = (uint8_t)m;
+        return 0;
+    case RENDER_OPT_AREAS:
+        if (cli_long(c, 10, 1, 1 << 20, &n) < 0)
+            return -1;
+        o->args.areas = (uint32_t)n;
+        return 0;
+    case RENDER_OPT_FRAME:
+    case RENDER_OPT_FRAMES:
+        o->many = code == RENDER_OPT_FRAMES;
+        if (cli_parse_frames(c->arg, &o->first, &o->last) != 0 ||
+            (!o->many && o->first != o->last))
+            return cli_bad_value(c, o->many ? "FIRST:LAST" : "a frame number");
+        return 0;
+    case RENDER_OPT_SIZE:
+        if (cli_parse_size(c->arg, &o->scene.width, &o->scene.height) != 0)
+            return cli_bad_value(c, cli_size_want());
+        return 0;
+    case RENDER_OPT_MAX_DEPTH:
+        return cli_int(c, 0, SCN_MAX_DEPTH, &o->scene.max_depth);
+    case RENDER_OPT_REFRACTIONLESS:
+        if (strcmp(c->arg, "on") != 0 && strcmp(c->arg, "off") != 0)
+            return cli_bad_value(c, "on or off");
+        o->scene.refractionless = strcmp(c->arg, "on") == 0;
+        return 0;
+    case RENDER_OPT_NO_YCLIP:
+        o->args.flags |= LINK_RENDER_NO_YCLIP;
+        return 0;
+    case RENDER_OPT_NO_XCLIP:
+        o->args.flags |= LINK_RENDER_NO_XCLIP;
+        return 0;
+    case RENDER_OPT_NO_BBOX:
+        o->args.flags |= LINK_RENDER_NO_BBOX;
+        return 0;
+    case RENDER_OPT_NO_HIERARCHY:
+        o->args.flags |= LINK_RENDER_NO_HIERARCHY;
+        return 0;
+    case RENDER_OPT_VIEW:
+        o->board.view = 1;
+        return 0;
+    case RENDER_OPT_PPM:
+        o->ppm = 1;
+        return 0;
+    case RENDER_OPT_COUNT_INSNS:
+        o->count_insns = 1;
+        return 0;
+    }
+    return -1; /* CLI_BAD: reported already */
 }
 
 /* Returns 0, 1 (--help shown) or -1 (bad option, printed). */
@@ -88,87 +202,21 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
     o->board.ncores = RENDER_DEFAULT_NCS + 2;
     o->args.balance = LINK_BALANCE_DECREASING;
     o->last = -1;
-    o->max_depth = -1;
-    o->refractionless = -1;
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
-        long n;
-        int r = strcmp(a, "--smp") ? board_parse_opt(&o->board, argc, argv, &i) : 0;
-        if (r < 0)
-            return -1;
-        if (r)
-            continue;
-        if (strcmp(a, "--help") == 0 || strcmp(a, "-h") == 0) {
+    scene_file_opts_init(&o->scene);
+    struct cli c;
+    cli_init(&c, "links1 render", argc, argv, "o:h", render_options);
+    for (int code; (code = cli_next(&c)) != -1;) {
+        int r = code == BOARD_OPT_SMP ? 0 : board_opt(&o->board, &c, code);
+        if (r == 0 && code == 'h') {
             render_usage(stdout);
             return 1;
-        } else if (strcmp(a, "-o") == 0 && v) {
-            if (o->njobs == 0 || o->jobs[o->njobs - 1].out) {
-                fprintf(stderr, "links1 render: -o %s: name the scene before its output\n", v);
-                return -1;
-            }
-            o->jobs[o->njobs - 1].out = argv[++i];
-        } else if (strcmp(a, "--ncs") == 0 && v) {
-            if (render_parse_long(a, v, 1, UNITS_MAX_CORES - 2, &n) < 0)
-                return -1;
-            o->board.ncores = (int)n + 2;
-            i++;
-        } else if (strcmp(a, "--balance") == 0 && v) {
-            enum areas_mode m;
-            if (areas_mode_parse(v, &m) != AREAS_OK) {
-                fprintf(stderr, "links1 render: --balance wants static, dynamic or decreasing, "
-                        "not '%s'\n", v);
-                return -1;
-            }
-            o->args.balance = (uint8_t)m;
-            i++;
-        } else if (strcmp(a, "--areas") == 0 && v) {
-            if (render_parse_long(a, v, 1, 1 << 20, &n) < 0)
-                return -1;
-            o->args.areas = (uint32_t)n;
-            i++;
-        } else if ((strcmp(a, "--frame") == 0 || strcmp(a, "--frames") == 0) && v) {
-            o->many = a[7] == 's';
-            if (cli_parse_frames(v, &o->first, &o->last) != 0 ||
-                (!o->many && o->first != o->last)) {
-                fprintf(stderr, "links1 render: %s wants %s, not '%s'\n", a,
-                        o->many ? "FIRST:LAST" : "a frame number", v);
-                return -1;
-            }
-            i++;
-        } else if (strcmp(a, "--size") == 0 && v) {
-            if (cli_parse_size(v, &o->width, &o->height) != 0) {
-                fprintf(stderr, "links1 render: --size wants WxH, each 1..1024, not '%s'\n", v);
-                return -1;
-            }
-            i++;
-        } else if (strcmp(a, "--max-depth") == 0 && v) {
-            if (render_parse_long(a, v, 0, SCN_MAX_DEPTH, &n) < 0)
-                return -1;
-            o->max_depth = (int)n;
-            i++;
-        } else if (strcmp(a, "--refractionless") == 0 && v &&
-                   (strcmp(v, "on") == 0 || strcmp(v, "off") == 0)) {
-            o->refractionless = strcmp(v, "on") == 0;
-            i++;
-        } else if (strcmp(a, "--no-yclip") == 0) {
-            o->args.flags |= LINK_RENDER_NO_YCLIP;
-        } else if (strcmp(a, "--no-xclip") == 0) {
-            o->args.flags |= LINK_RENDER_NO_XCLIP;
-        } else if (strcmp(a, "--no-bbox") == 0) {
-            o->args.flags |= LINK_RENDER_NO_BBOX;
-        } else if (strcmp(a, "--no-hierarchy") == 0) {
-            o->args.flags |= LINK_RENDER_NO_HIERARCHY;
-        } else if (strcmp(a, "--view") == 0) {
-            o->board.view = 1;
-        } else if (strcmp(a, "--ppm") == 0) {
-            o->ppm = 1;
-        } else if (strcmp(a, "--count-insns") == 0) {
-            o->count_insns = 1;
-        } else if (a[0] != '-' && o->njobs < RENDER_MAX_JOBS) {
-            o->jobs[o->njobs++] = (struct render_job){a, NULL};
-        } else {
-            fprintf(stderr, "links1 render: unknown or incomplete option '%s'\n", a);
-            render_usage(stderr);
+        }
+        if (r == 0)
+            r = code == 'o' || code == CLI_OPERAND ? render_add_job(o, code, c.arg)
+                                                   : render_take(o, &c, code);
+        if (r < 0) {
+            if (code == CLI_BAD)
+                render_usage(stderr);
             return -1;
         }
     }
@@ -185,69 +233,26 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
     return 0;
 }
 
-static int render_ends_with(const char *s, const char *suffix)
+/* Every scene's compiled bytes, before the board boots.  0, or -1 after
+ * printing why a scene cannot be read or compiled. */
+static void render_free_scenes(struct render_opts *o)
 {
-    size_t n = strlen(s), k = strlen(suffix);
-    return n >= k && strcmp(s + n - k, suffix) == 0;
+    for (int j = 0; j < o->njobs; j++)
+        free(o->jobs[j].bytes);
 }
 
-/* The compiled scene: a .l1s file as is, a text scene compiled here (at
- * --size when given).  0, or -1 after printing why. */
-static int render_scene_bytes(const struct render_opts *o, const char *path, uint8_t **buf,
-                              size_t *len)
+static int render_read_scenes(struct render_opts *o)
 {
-    char err[SD_ERR_MAX];
-    if (!render_ends_with(path, ".l1s")) {
-        struct sd_scene s;
-        if (sd_parse_file(path, &s, err, sizeof err) != 0) {
+    for (int j = 0; j < o->njobs; j++) {
+        char err[SD_ERR_MAX];
+        struct render_job *job = &o->jobs[j];
+        if (scene_file_bytes(job->scene, &o->scene, &job->bytes, &job->len, err,
+                             sizeof err) != 0) {
             fprintf(stderr, "links1 render: %s\n", err);
             return -1;
         }
-        if (o->width) {
-            s.view.width = o->width;
-            s.view.height = o->height;
-        }
-        if (o->max_depth >= 0)
-            s.view.max_depth = o->max_depth;
-        if (o->refractionless >= 0)
-            s.view.flags = o->refractionless ? s.view.flags | SCN_OPT_REFRACTIONLESS
-                                             : s.view.flags & ~SCN_OPT_REFRACTIONLESS;
-        int rc = sd_compile(&s, buf, len, err, sizeof err);
-        sd_free(&s);
-        if (rc != 0)
-            fprintf(stderr, "links1 render: %s: %s\n", path, err);
-        return rc;
-    }
-    if (o->width || o->max_depth >= 0 || o->refractionless >= 0) {
-        fprintf(stderr, "links1 render: %s: --size, --max-depth and --refractionless need a text "
-                "scene, not a compiled one\n", path);
-        return -1;
-    }
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        fprintf(stderr, "links1 render: %s: %s\n", path, strerror(errno));
-        return -1;
-    }
-    *buf = malloc(SCN_MAX_SIZE + 1);
-    *len = *buf ? fread(*buf, 1, SCN_MAX_SIZE + 1, f) : 0;
-    fclose(f);
-    if (!*buf || *len > SCN_MAX_SIZE || *len == 0) {
-        fprintf(stderr, "links1 render: %s: %s\n", path,
-                !*buf ? "out of memory" : *len ? "larger than a compiled scene may be" : "empty");
-        free(*buf);
-        return -1;
     }
     return 0;
-}
-
-/* out with the frame number before the extension: "a.png", 7 -> "a-0007.png" */
-static void render_frame_path(const char *out, long frame, char *buf, size_t n)
-{
-    const char *dot = strrchr(out, '.');
-    const char *slash = strrchr(out, '/');
-    if (!dot || (slash && dot < slash))
-        dot = out + strlen(out);
-    snprintf(buf, n, "%.*s-%04ld%s", (int)(dot - out), out, frame, dot);
 }
 
 static void render_summary(const char *path, const struct link_render_stats *s,
@@ -271,13 +276,8 @@ static void render_summary(const char *path, const struct link_render_stats *s,
 /* One scene on the running board: upload, every frame asked for. */
 static int render_job(struct board *b, const struct render_opts *o, const struct render_job *j)
 {
-    uint8_t *bytes = NULL;
-    size_t len = 0;
-    if (render_scene_bytes(o, j->scene, &bytes, &len) != 0)
-        return -1;
     struct link_scene_info info;
-    int rc = render_session_load(b, bytes, len, &info);
-    free(bytes);
+    int rc = render_session_load(b, j->bytes, j->len, &info);
     if (rc != 0) {
         fprintf(stderr, "links1 render: %s was not loaded\n", j->scene);
         return -1;
@@ -292,7 +292,7 @@ static int render_job(struct board *b, const struct render_opts *o, const struct
                 j->scene, last, info.frames, info.frames - 1);
         return -1;
     }
-    int ppm = o->ppm || render_ends_with(j->out, ".ppm");
+    int ppm = o->ppm || scene_file_ends_with(j->out, ".ppm");
     for (long f = first; f <= last; f++) {
         struct link_render_args a = o->args;
         a.frame = (uint32_t)f;
@@ -305,7 +305,7 @@ static int render_job(struct board *b, const struct render_opts *o, const struct
             return -1;
         char path[4096], err[SD_ERR_MAX];
         if (o->many)
-            render_frame_path(j->out, f, path, sizeof path);
+            scene_file_frame_path(j->out, f, path, sizeof path);
         else
             snprintf(path, sizeof path, "%s", j->out);
         rc = ppm ? image_write_ppm(path, &img, err, sizeof err)
@@ -327,11 +327,16 @@ int cmd_render(int argc, char **argv)
     int r = render_parse(&o, argc, argv);
     if (r != 0)
         return r > 0 ? 0 : 2;
+    if (render_read_scenes(&o) != 0) {
+        render_free_scenes(&o);
+        return 1;
+    }
     char insn_path[] = "/tmp/links1-insns-XXXXXX";
     if (o.count_insns) {
         int fd = mkstemp(insn_path);
         if (fd < 0) {
             perror("links1: temporary file for instruction counts");
+            render_free_scenes(&o);
             return 1;
         }
         close(fd);
@@ -359,5 +364,6 @@ int cmd_render(int argc, char **argv)
             rc = 1;
         unlink(insn_path);
     }
+    render_free_scenes(&o);
     return rc;
 }

@@ -2,7 +2,6 @@
  * every unit computer to report in, then runs each named check in order and
  * prints "selftest NAME: ok: ..." or "selftest NAME: FAILED: why".  The
  * board tests in tests/board/ are built on these lines. */
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -51,19 +50,37 @@ static const struct selftest *selftest_find(const char *name)
     return NULL;
 }
 
-/* Parses an unsigned option value in [lo, hi]. */
-static int selftest_parse_u32(const char *opt, const char *s, unsigned long lo, unsigned long hi,
-                     uint32_t *out)
+enum { SELFTEST_OPT_MIB = CLI_OWN_CODES, SELFTEST_OPT_BYTES, SELFTEST_OPT_MAX_INSNS };
+
+static const struct option selftest_options[] = {
+    BOARD_LONG_OPTIONS,
+    {"mib", required_argument, NULL, SELFTEST_OPT_MIB},
+    {"bytes", required_argument, NULL, SELFTEST_OPT_BYTES},
+    {"max-insns", required_argument, NULL, SELFTEST_OPT_MAX_INSNS},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0},
+};
+
+/* A check named on the command line (with its CORE for fault) onto run. */
+static int selftest_add(struct cli *c, struct selftest_args *a, const struct selftest **run,
+                        int *nrun)
 {
-    char *end;
-    errno = 0;
-    unsigned long v = strtoul(s, &end, 0);
-    if (errno || end == s || *end || v < lo || v > hi || s[0] == '-') {
-        fprintf(stderr, "links1 selftest: %s '%s': want a number from %lu to %lu\n", opt, s,
-                lo, hi);
+    const struct selftest *t = selftest_find(c->arg);
+    if (!t) {
+        fprintf(stderr, "links1 selftest: no check named '%s' (see --help)\n", c->arg);
         return -1;
     }
-    *out = (uint32_t)v;
+    if (t->fn == selftest_fault) {
+        long core;
+        if (cli_operand_value(c) < 0 || cli_long(c, 0, 0, UNITS_MAX_CORES - 1, &core) < 0)
+            return -1;
+        a->fault_core = (int)core;
+    }
+    if (*nrun >= SELFTEST_MAX_RUN) {
+        fprintf(stderr, "links1 selftest: at most %d checks per run\n", SELFTEST_MAX_RUN);
+        return -1;
+    }
+    run[(*nrun)++] = t;
     return 0;
 }
 
@@ -71,56 +88,32 @@ static int selftest_parse_u32(const char *opt, const char *s, unsigned long lo, 
 static int selftest_parse(int argc, char **argv, struct board_opts *o,
                           struct selftest_args *a, const struct selftest **run, int *nrun)
 {
-    for (int i = 1; i < argc; i++) {
-        int r = board_parse_opt(o, argc, argv, &i);
+    struct cli c;
+    cli_init(&c, "links1 selftest", argc, argv, "h", selftest_options);
+    for (int code; (code = cli_next(&c)) != -1;) {
+        int r = code == CLI_BAD ? -1 : board_opt(o, &c, code);
+        long v;
         if (r < 0)
             return -1;
         if (r)
             continue;
-        const char *s = argv[i];
-        const char *val = i + 1 < argc ? argv[i + 1] : NULL;
-        if (strcmp(s, "--help") == 0 || strcmp(s, "-h") == 0) {
+        if (code == 'h') {
             selftest_usage(stdout);
             exit(0);
-        } else if (strcmp(s, "--mib") == 0 || strcmp(s, "--bytes") == 0 ||
-                   strcmp(s, "--max-insns") == 0) {
-            if (!val) {
-                fprintf(stderr, "links1 selftest: %s needs a value\n", s);
+        } else if (code == SELFTEST_OPT_MIB) {
+            if (cli_long(&c, 0, 1, SELFTEST_MAX_STRESS_MIB, &v) < 0)
                 return -1;
-            }
-            i++;
-            if (s[2] == 'm' && s[3] == 'i' &&
-                selftest_parse_u32(s, val, 1, SELFTEST_MAX_STRESS_MIB, &a->stress_mib) < 0)
+            a->stress_mib = (uint32_t)v;
+        } else if (code == SELFTEST_OPT_BYTES) {
+            if (cli_long(&c, 0, 1, SELFTEST_MAX_LINK_BYTES, &v) < 0)
                 return -1;
-            if (s[2] == 'b' && selftest_parse_u32(s, val, 1, SELFTEST_MAX_LINK_BYTES, &a->link_bytes) < 0)
+            a->link_bytes = (uint32_t)v;
+        } else if (code == SELFTEST_OPT_MAX_INSNS) {
+            if (cli_long(&c, 0, 1, SELFTEST_MAX_IDLE_INSNS, &v) < 0)
                 return -1;
-            if (s[2] == 'm' && s[3] == 'a' &&
-                selftest_parse_u32(s, val, 1, SELFTEST_MAX_IDLE_INSNS, &a->max_insns) < 0)
-                return -1;
-        } else if (s[0] == '-') {
-            fprintf(stderr, "links1 selftest: unknown option '%s'\n", s);
+            a->max_insns = (uint32_t)v;
+        } else if (code != CLI_OPERAND || selftest_add(&c, a, run, nrun) < 0) {
             return -1;
-        } else {
-            const struct selftest *t = selftest_find(s);
-            if (!t) {
-                fprintf(stderr, "links1 selftest: no check named '%s' (see --help)\n", s);
-                return -1;
-            }
-            if (t->fn == selftest_fault) {
-                uint32_t core;
-                if (!val || selftest_parse_u32("fault CORE", val, 0, UNITS_MAX_CORES - 1, &core) < 0) {
-                    fprintf(stderr, "links1 selftest: fault needs the core to fault\n");
-                    return -1;
-                }
-                a->fault_core = (int)core;
-                i++;
-            }
-            if (*nrun >= SELFTEST_MAX_RUN) {
-                fprintf(stderr, "links1 selftest: at most %d checks per run\n",
-                        SELFTEST_MAX_RUN);
-                return -1;
-            }
-            run[(*nrun)++] = t;
         }
     }
     if (*nrun == 0) {

@@ -1,8 +1,10 @@
 # host-tools/: the links1 host tool, the instruction-counting QEMU plugin,
 # `make run`'s script.  (host-tools/scene/ adds its own sources.)
 HOST_TOOLS += links1
-links1_SRCS := host-tools/links1.c host-tools/board.c host-tools/board_frames.c \
-	host-tools/board_opts.c \
+# The launcher: every program that starts a board links these.
+BOARD_LAUNCHER_SRCS := host-tools/board.c host-tools/board_frames.c \
+	host-tools/board_opts.c host-tools/cli_opt.c
+links1_SRCS := host-tools/links1.c $(BOARD_LAUNCHER_SRCS) \
 	host-tools/cmd_boot.c host-tools/cmd_selftest.c host-tools/selftest_checks.c \
 	host-tools/selftest_link.c host-tools/link_transfer.c host-tools/insn_report.c \
 	host-tools/cmd_semihost.c host-tools/selftest_idle.c
@@ -23,18 +25,26 @@ HOST_TESTS += test_hostlink
 test_hostlink_SRCS := tests/host/test_hostlink.c
 test_hostlink_ARITH := double
 HOST_TESTS += test_hostlink_msgs
-test_hostlink_msgs_SRCS := tests/host/test_hostlink_msgs.c host-tools/board.c \
-	host-tools/board_frames.c host-tools/board_opts.c
+test_hostlink_msgs_SRCS := tests/host/test_hostlink_msgs.c $(BOARD_LAUNCHER_SRCS)
 test_hostlink_msgs_ARITH := double
 HOST_TESTS += test_hostlink_transfer
-test_hostlink_transfer_SRCS := tests/host/test_hostlink_transfer.c host-tools/board.c \
-	host-tools/board_frames.c host-tools/board_opts.c host-tools/link_transfer.c
+test_hostlink_transfer_SRCS := tests/host/test_hostlink_transfer.c $(BOARD_LAUNCHER_SRCS) \
+	host-tools/link_transfer.c
 test_hostlink_transfer_ARITH := double
 test_hostlink_transfer_LIBS := -lpthread
+# The argument reader of every command and the board options.
+HOST_TESTS += test_cli_opt
+test_cli_opt_SRCS := tests/host/test_cli_opt.c host-tools/board_opts.c host-tools/cli_opt.c
+test_cli_opt_ARITH := double
 HOST_TESTS += test_hostlink_session
-test_hostlink_session_SRCS := tests/host/test_hostlink_session.c host-tools/board.c \
-	host-tools/board_frames.c host-tools/board_opts.c
+test_hostlink_session_SRCS := tests/host/test_hostlink_session.c $(BOARD_LAUNCHER_SRCS)
 test_hostlink_session_ARITH := double
+
+# Work counted per speed-up (Table 2 of the paper): build/render-clip-stats.
+HOST_TOOLS += render-clip-stats
+render-clip-stats_SRCS = host-tools/clip_stats_main.c host-tools/cli_opt.c $(SCENE_TEXT_SRCS)
+render-clip-stats_ARITH := float
+render-clip-stats_LIBS := -lpng
 
 # Board tests (tests/board/lib.sh is their shared helper, not a test).
 BOARD_TESTS += tests/board/boot_smp.sh tests/board/channels.sh tests/board/idle66.sh \

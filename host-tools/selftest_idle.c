@@ -35,7 +35,7 @@ int selftest_idle_prepare(struct board_opts *o, char *path, size_t cap)
 /* One line of the series: its time and every core's count. */
 struct idle_sample {
     long long at_ms;
-    uint64_t count[BOARD_MAX_CORES];
+    uint64_t count[UNITS_MAX_CORES];
 };
 
 /* Parses "at T C0 ... CN-1"; 0, or -1 for a line that is not whole. */

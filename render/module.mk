@@ -26,9 +26,6 @@ test_render_float_ARITH := float
 test_render_fixed_SRCS := tests/host/test_render.c
 test_render_fixed_ARITH := fixed
 
-# Host speed per arithmetic (wall clock: `make bench`, never a test).
-BENCHES += render/bench-host.sh
-
 # Blobs that travel through the IMSU (load + prepare into one block,
 # relocation after a copy) and the NC's screen clipping.
 SHARED_SRCS += render/relocate.c render/blob.c render/clip.c
@@ -43,9 +40,3 @@ $(foreach a,double float fixed,$(eval test_blob_$(a)_LIBS := -lpng))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_SRCS = tests/host/test_clip.c $$(SCENE_TEXT_SRCS)))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_ARITH := $(a)))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_LIBS := -lpng))
-
-# Work counted per speed-up (Table 2 of the paper), a host program.
-HOST_TOOLS += render-clip-stats
-render-clip-stats_SRCS = render/clip_stats_main.c $(SCENE_TEXT_SRCS)
-render-clip-stats_ARITH := float
-render-clip-stats_LIBS := -lpng

@@ -6,6 +6,5 @@ FW_SRCS += roles/unit.c roles/dm.c roles/dm_checks.c roles/dm_transfer.c roles/r
 BOARD_TESTS += tests/board/fw_board.sh tests/board/fw_smp256.sh tests/board/fw_variants.sh
 # fw_board.sh's checks: damaged frames, bad commands, injected faults.
 BOARD_PROGS += fw_board_check
-fw_board_check_SRCS := tests/board/fw_board_check.c host-tools/board.c \
-	host-tools/board_frames.c host-tools/board_opts.c
+fw_board_check_SRCS = tests/board/fw_board_check.c $(BOARD_LAUNCHER_SRCS)
 fw_board_check_ARITH := double

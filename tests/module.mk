@@ -29,6 +29,8 @@ RENDER_FULL_TESTS := tests/board/render_grid_full.sh
 test-full: deps
 	$(Q)$(MAKE) --no-print-directory all
 	$(Q)HOST_TESTS= BOARD_TESTS="$(RENDER_FULL_TESTS)" FW_DIR=$(FWB) bash tests/run.sh
+# Host speed per arithmetic (wall clock, never a test), then the board's.
+BENCHES += tests/bench/bench_host.sh
 BENCHES += tests/bench/bench_render.sh tests/bench/bench_arith.sh
 
 # Encodings of the rendering commands and the NC statistics the RC sums.

@@ -31,3 +31,10 @@ int cli_parse_size(const char *arg, int *width, int *height)
         return -1;
     return 0;
 }
+
+const char *cli_size_want(void)
+{
+    static char want[48];
+    snprintf(want, sizeof want, "WxH within %dx%d", RENDER_MAX_WIDTH, RENDER_MAX_HEIGHT);
+    return want;
+}

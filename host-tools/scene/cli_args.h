@@ -10,4 +10,7 @@ int cli_parse_frames(const char *arg, long *first, long *last);
  * (the frame memory).  Returns 0, or -1 when arg is not of that form. */
 int cli_parse_size(const char *arg, int *width, int *height);
 
+/* What cli_parse_size wants, for the error message: "WxH within 1024x1024". */
+const char *cli_size_want(void);
+
 #endif

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "host-tools/cli_opt.h"
 #include "host-tools/scene/image_io.h"
 #include "host-tools/scene/scene_cmds.h"
 
@@ -35,41 +36,62 @@ static int compare_is_edge(const struct image *a, int x, int y)
     return 0;
 }
 
-static int compare_usage(void)
+static int compare_usage(FILE *out)
 {
-    fprintf(stderr, "usage: links1 compare A.png B.png [--within K] [--min-fraction F] "
+    fprintf(out, "usage: links1 compare A.png B.png [--within K] [--min-fraction F] "
                     "[--silhouette [--max-masked F]]\n"
                     "  exit 0 when at least F (default 0.99) of the compared pixels have every\n"
                     "  channel within K/255 (default 1); --silhouette leaves out the pixels\n"
                     "  next to an edge of A, and fails if more than F of all pixels are left out\n");
-    return 2;
+    return out == stdout ? 0 : 2;
 }
+
+enum { COMPARE_OPT_WITHIN = CLI_OWN_CODES, COMPARE_OPT_MIN_FRACTION, COMPARE_OPT_MAX_MASKED,
+       COMPARE_OPT_SILHOUETTE };
+
+static const struct option compare_options[] = {
+    {"within", required_argument, NULL, COMPARE_OPT_WITHIN},
+    {"min-fraction", required_argument, NULL, COMPARE_OPT_MIN_FRACTION},
+    {"max-masked", required_argument, NULL, COMPARE_OPT_MAX_MASKED},
+    {"silhouette", no_argument, NULL, COMPARE_OPT_SILHOUETTE},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0},
+};
 
 int scene_cmd_compare(int argc, char **argv)
 {
-    argc--, argv++; /* argv[0] is the subcommand's name */
     const char *pa = NULL, *pb = NULL;
     int within = 1, silhouette = 0;
     double min_fraction = 0.99, max_masked = 1.0;
-    for (int i = 0; i < argc; i++) {
-        if (strcmp(argv[i], "--within") == 0 && i + 1 < argc) {
-            within = atoi(argv[++i]);
-        } else if (strcmp(argv[i], "--min-fraction") == 0 && i + 1 < argc) {
-            min_fraction = atof(argv[++i]);
-        } else if (strcmp(argv[i], "--max-masked") == 0 && i + 1 < argc) {
-            max_masked = atof(argv[++i]);
-        } else if (strcmp(argv[i], "--silhouette") == 0) {
+    struct cli c;
+    cli_init(&c, "links1 compare", argc, argv, "h", compare_options);
+    for (int code; (code = cli_next(&c)) != -1;) {
+        int bad = 0;
+        if (code == 'h') {
+            compare_usage(stdout);
+            return 0;
+        } else if (code == COMPARE_OPT_WITHIN) {
+            bad = cli_int(&c, 0, 255, &within);
+        } else if (code == COMPARE_OPT_MIN_FRACTION) {
+            bad = cli_double(&c, 0, 0, 1, NULL, &min_fraction);
+        } else if (code == COMPARE_OPT_MAX_MASKED) {
+            bad = cli_double(&c, 0, 0, 1, NULL, &max_masked);
+        } else if (code == COMPARE_OPT_SILHOUETTE) {
             silhouette = 1;
-        } else if (argv[i][0] != '-' && !pa) {
-            pa = argv[i];
-        } else if (argv[i][0] != '-' && !pb) {
-            pb = argv[i];
+        } else if (code == CLI_OPERAND && (!pa || !pb)) {
+            *(pa ? &pb : &pa) = c.arg;
         } else {
-            return compare_usage();
+            if (code == CLI_OPERAND)
+                fprintf(stderr, "links1 compare: two images, not also '%s'\n", c.arg);
+            bad = -1;
         }
+        if (bad)
+            return compare_usage(stderr);
     }
-    if (!pa || !pb || within < 0 || within > 255)
-        return compare_usage();
+    if (!pa || !pb) {
+        fprintf(stderr, "links1 compare: name two images\n");
+        return compare_usage(stderr);
+    }
     struct image a, b;
     char err[512];
     if (image_read(pa, &a, err, sizeof err) != 0) {

@@ -8,7 +8,7 @@ SHARED_SRCS += render/scene_load.c
 SCENE_TEXT_SRCS := host-tools/scene/scene_lex.c host-tools/scene/scene_parse.c \
 	host-tools/scene/scene_parse_looks.c host-tools/scene/scene_parse_objects.c \
 	host-tools/scene/scene_math.c host-tools/scene/scene_compile.c \
-	host-tools/scene/image_io.c host-tools/scene/cli_args.c
+	host-tools/scene/image_io.c host-tools/scene/cli_args.c host-tools/scene/scene_file.c
 
 # Sources of the scene subcommands of `links1` (compile, ref, export-pov,
 # compare); the links1 tool adds them to its own sources and SCENE_CMD_LIBS
@@ -19,7 +19,7 @@ SCENE_CMD_LIBS := -lpng
 
 # The host reference renderer, one executable per arithmetic of the shared
 # renderer; `links1 ref --arith A` runs the one asked for.
-SCENE_REF_SRCS := host-tools/scene/ref_main.c $(SCENE_TEXT_SRCS)
+SCENE_REF_SRCS := host-tools/scene/ref_main.c host-tools/cli_opt.c $(SCENE_TEXT_SRCS)
 HOST_TOOLS += links1-ref-double links1-ref-float links1-ref-fixed
 links1-ref-double_SRCS := $(SCENE_REF_SRCS)
 links1-ref-double_ARITH := double
@@ -40,6 +40,12 @@ test_scene_parse_SRCS := tests/host/test_scene_parse.c $(SCENE_TEXT_SRCS)
 test_scene_parse_ARITH := double
 test_scene_parse_LIBS := -lpng
 
+# How ref and render both read a scene file (scene_file.c).
+HOST_TESTS += test_scene_file
+test_scene_file_SRCS := tests/host/test_scene_file.c $(SCENE_TEXT_SRCS)
+test_scene_file_ARITH := double
+test_scene_file_LIBS := -lpng
+
 # The scene subcommands are part of the links1 tool (host-tools/module.mk).
 links1_SRCS += $(SCENE_CMD_SRCS)
 links1_LIBS += $(SCENE_CMD_LIBS)
@@ -49,7 +55,7 @@ BOARD_TESTS += tests/images/scenes.sh tests/images/pov.sh tests/images/accuracy.
 
 HOST_TESTS += test_scene_image
 test_scene_image_SRCS := tests/host/test_scene_image.c host-tools/scene/image_io.c \
-	host-tools/scene/image_compare.c
+	host-tools/scene/image_compare.c host-tools/cli_opt.c
 test_scene_image_ARITH := double
 test_scene_image_LIBS := -lpng
 

@@ -10,7 +10,6 @@
  * A text scene is compiled in memory first, so the host goes through the
  * same compiled form and the same loader (render/scene_load.c) as the board.
  */
-#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,60 +17,21 @@
 #include "host-tools/scene/image_io.h"
 #include "host-tools/scene/cli_args.h"
 #include "host-tools/scene/scene_desc.h"
+#include "host-tools/scene/scene_file.h"
+#include "host-tools/scene/ref_opts.h"
 #include "render/render.h"
 #include "render/scene_load.h"
 
 #define REF_ARENA_START (64u * 1024u * 1024u)  /* first arena tried */
 #define REF_ARENA_MAX (1024u * 1024u * 1024u)  /* largest arena tried */
 
-static int ref_usage(void)
+static int ref_usage(FILE *out, int status)
 {
-    fprintf(stderr, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [--arith double|float|soft|"
-                    "fixed] [--ppm] [--size WxH] [--frame N | --frames FIRST:LAST]\n"
-                    "  (this is the %s build)\n",
+    fprintf(out, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [--arith double|float|soft|"
+                 "fixed] [--ppm] [--size WxH] [--frame N | --frames FIRST:LAST]\n"
+                 "  (this is the %s build)\n",
             NUM_NAME);
-    return 2;
-}
-
-static int ref_ends_with(const char *s, const char *suffix)
-{
-    size_t n = strlen(s), k = strlen(suffix);
-    return n >= k && strcmp(s + n - k, suffix) == 0;
-}
-
-/* The compiled bytes of a scene file: read as is (.l1s) or compiled from
- * text.  0, or -1 with err. */
-static int ref_scene_bytes(const char *path, uint8_t **buf, size_t *len, char *err,
-                           size_t errlen, int width, int height)
-{
-    if (!ref_ends_with(path, ".l1s")) {
-        struct sd_scene s;
-        if (sd_parse_file(path, &s, err, errlen) != 0)
-            return -1;
-        if (width) { /* --size: the same scene at another resolution */
-            s.view.width = width;
-            s.view.height = height;
-        }
-        int rc = sd_compile(&s, buf, len, err, errlen);
-        sd_free(&s);
-        return rc;
-    }
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        return -1;
-    }
-    *buf = malloc(SCN_MAX_SIZE + 1);
-    *len = *buf ? fread(*buf, 1, SCN_MAX_SIZE + 1, f) : 0;
-    fclose(f);
-    if (!*buf || *len > SCN_MAX_SIZE) {
-        snprintf(err, errlen, "%s: %s", path,
-                 *buf ? "larger than a compiled scene may be" : "out of memory");
-        free(*buf);
-        *buf = NULL;
-        return -1;
-    }
-    return 0;
+    return status;
 }
 
 /* The arena with the loaded scene in it: grown until the scene and one
@@ -109,16 +69,6 @@ static int ref_load(const char *in, const uint8_t *bytes, size_t len, void **mem
     fprintf(stderr, "links1 ref: %s: no arena up to %u bytes holds the scene\n", in,
             REF_ARENA_MAX);
     return -1;
-}
-
-/* out with the frame number before the extension: "a.png", 7 -> "a-0007.png" */
-static void ref_frame_path(const char *out, long frame, char *buf, size_t n)
-{
-    const char *dot = strrchr(out, '.');
-    const char *slash = strrchr(out, '/');
-    if (!dot || (slash && dot < slash))
-        dot = out + strlen(out);
-    snprintf(buf, n, "%.*s-%04ld%s", (int)(dot - out), out, frame, dot);
 }
 
 static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena,
@@ -172,46 +122,79 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     return rc;
 }
 
-int main(int argc, char **argv)
+static const struct option ref_options[] = {
+    REF_LONG_OPTIONS,
+    {NULL, 0, NULL, 0},
+};
+
+struct ref_args {
+    const char *in, *out;
+    int ppm, many;
+    long first, last;
+    struct scene_file_opts scene;
+};
+
+/* 0, 1 (--help shown) or -1 (bad arguments, reported). */
+static int ref_parse(int argc, char **argv, struct ref_args *a)
 {
-    const char *in = NULL, *out = NULL;
-    int ppm = 0, many = 0, width = 0, height = 0;
-    long first = 0, last = 0;
-    for (int i = 1; i < argc; i++) {
-        if (strcmp(argv[i], "-o") == 0 && i + 1 < argc) {
-            out = argv[++i];
-        } else if (strcmp(argv[i], "--ppm") == 0) {
-            ppm = 1;
-        } else if (strcmp(argv[i], "--size") == 0 && i + 1 < argc) {
-            if (cli_parse_size(argv[++i], &width, &height) != 0) {
-                fprintf(stderr, "links1 ref: --size wants WxH within %dx%d, not '%s'\n",
-                        RENDER_MAX_WIDTH, RENDER_MAX_HEIGHT, argv[i]);
-                return 2;
+    memset(a, 0, sizeof *a);
+    scene_file_opts_init(&a->scene);
+    struct cli c;
+    cli_init(&c, "links1 ref", argc, argv, REF_SHORT_OPTIONS, ref_options);
+    for (int code; (code = cli_next(&c)) != -1;) {
+        switch (code) {
+        case 'o':
+            a->out = c.arg;
+            break;
+        case 'h':
+            return 1;
+        case REF_OPT_PPM:
+            a->ppm = 1;
+            break;
+        case REF_OPT_SIZE:
+            if (cli_parse_size(c.arg, &a->scene.width, &a->scene.height) != 0)
+                return cli_bad_value(&c, cli_size_want());
+            break;
+        case REF_OPT_FRAME:
+        case REF_OPT_FRAMES:
+            a->many = code == REF_OPT_FRAMES;
+            if (cli_parse_frames(c.arg, &a->first, &a->last) != 0 ||
+                (!a->many && a->first != a->last))
+                return cli_bad_value(&c, a->many ? "FIRST:LAST" : "a frame number");
+            break;
+        case CLI_OPERAND:
+            if (!a->in) {
+                a->in = c.arg;
+                break;
             }
-        } else if ((strcmp(argv[i], "--frame") == 0 || strcmp(argv[i], "--frames") == 0) &&
-                   i + 1 < argc) {
-            many = argv[i][7] == 's';
-            if (cli_parse_frames(argv[++i], &first, &last) != 0 || (!many && first != last)) {
-                fprintf(stderr, "links1 ref: %s wants %s, not '%s'\n", argv[i - 1],
-                        many ? "FIRST:LAST" : "a frame number", argv[i]);
-                return 2;
-            }
-        } else if (argv[i][0] != '-' && !in) {
-            in = argv[i];
-        } else {
-            fprintf(stderr, "links1 ref: unknown argument '%s'\n", argv[i]);
-            return ref_usage();
+            fprintf(stderr, "links1 ref: one scene at a time, not also '%s'\n", c.arg);
+            return -1;
+        default:
+            return -1;
         }
     }
-    if (!in || !out)
-        return ref_usage();
-    if (!ppm && ref_ends_with(out, ".ppm"))
-        ppm = 1;
+    if (!a->in || !a->out) {
+        fprintf(stderr, "links1 ref: %s\n", !a->in ? "no SCENE given" : "no -o OUT given");
+        return -1;
+    }
+    if (!a->ppm && scene_file_ends_with(a->out, ".ppm"))
+        a->ppm = 1;
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    struct ref_args a;
+    int r = ref_parse(argc, argv, &a);
+    if (r != 0)
+        return r > 0 ? ref_usage(stdout, 0) : ref_usage(stderr, 2);
+    const char *in = a.in, *out = a.out;
+    long first = a.first, last = a.last;
 
     char err[SD_ERR_MAX];
     uint8_t *bytes = NULL;
     size_t len = 0;
-    if (ref_scene_bytes(in, &bytes, &len, err, sizeof err, width, height) != 0) {
+    if (scene_file_bytes(in, &a.scene, &bytes, &len, err, sizeof err) != 0) {
         fprintf(stderr, "links1 ref: %s\n", err);
         return 1;
     }
@@ -227,11 +210,11 @@ int main(int argc, char **argv)
     }
     for (long f = first; rc == 0 && f <= last; f++) {
         char path[4096];
-        if (many)
-            ref_frame_path(out, f, path, sizeof path);
+        if (a.many)
+            scene_file_frame_path(out, f, path, sizeof path);
         else
             snprintf(path, sizeof path, "%s", out);
-        rc = ref_render_frame(in, &scene, &arena, mark, f, path, ppm);
+        rc = ref_render_frame(in, &scene, &arena, mark, f, path, a.ppm);
     }
     free(mem);
     free(bytes);

@@ -7,24 +7,44 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "host-tools/cli_opt.h"
+#include "host-tools/scene/ref_opts.h"
 #include "host-tools/scene/scene_cmds.h"
 #include "host-tools/scene/scene_desc.h"
 #include "proto/arith.h"
 
-/* Finds "SCENE -o OUT" among the arguments; extra flags are left to the
- * caller through *rest.  0, or -1 after printing the usage. */
-static int cmd_in_out(int argc, char **argv, const char *usage, const char **in,
-                      const char **out)
+enum { SCENE_OPT_FRAME = CLI_OWN_CODES, SCENE_OPT_STRICT };
+
+/* Reads "SCENE -o OUT" and the options of a scene command: each option of
+ * longs other than -o and --help goes to take (when given).  0, 1 (--help
+ * shown) or -1 (bad arguments, reported with the usage). */
+static int scene_cmd_args(struct cli *c, const char *usage, const char **in, const char **out,
+                          int (*take)(struct cli *c, int code, void *ctx), void *ctx)
 {
     *in = *out = NULL;
-    for (int i = 0; i < argc; i++) {
-        if (strcmp(argv[i], "-o") == 0 && i + 1 < argc)
-            *out = argv[++i];
-        else if (argv[i][0] != '-' && !*in)
-            *in = argv[i];
+    for (int code; (code = cli_next(c)) != -1;) {
+        int bad = 0;
+        if (code == 'h') {
+            printf("usage: %s\n", usage);
+            return 1;
+        } else if (code == 'o') {
+            *out = c->arg;
+        } else if (code == CLI_OPERAND && !*in) {
+            *in = c->arg;
+        } else if (code == CLI_OPERAND) {
+            fprintf(stderr, "%s: one scene at a time, not also '%s'\n", c->prog, c->arg);
+            bad = 1;
+        } else {
+            bad = code == CLI_BAD || !take || take(c, code, ctx) < 0;
+        }
+        if (bad) {
+            fprintf(stderr, "usage: %s\n", usage);
+            return -1;
+        }
     }
     if (!*in || !*out) {
-        fprintf(stderr, "usage: %s\n", usage);
+        fprintf(stderr, "%s: %s\nusage: %s\n", c->prog, !*in ? "no SCENE given" : "no -o OUT given",
+                usage);
         return -1;
     }
     return 0;
@@ -52,12 +72,19 @@ static int cmd_write_file(const char *path, const void *data, size_t len)
     return 0;
 }
 
+static const struct option compile_options[] = {
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0},
+};
+
 int scene_cmd_compile(int argc, char **argv)
 {
-    argc--, argv++; /* argv[0] is the subcommand's name */
     const char *in, *out;
-    if (cmd_in_out(argc, argv, "links1 compile SCENE.scn -o OUT.l1s", &in, &out))
-        return 2;
+    struct cli c;
+    cli_init(&c, "links1 compile", argc, argv, "o:h", compile_options);
+    int r = scene_cmd_args(&c, "links1 compile SCENE.scn -o OUT.l1s", &in, &out, NULL, NULL);
+    if (r != 0)
+        return r > 0 ? 0 : 2;
     struct sd_scene s;
     char err[SD_ERR_MAX];
     if (sd_parse_file(in, &s, err, sizeof err) != 0) {
@@ -79,20 +106,38 @@ int scene_cmd_compile(int argc, char **argv)
     return rc ? 1 : 0;
 }
 
+static const struct option export_pov_options[] = {
+    {"frame", required_argument, NULL, SCENE_OPT_FRAME},
+    {"strict", no_argument, NULL, SCENE_OPT_STRICT},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0},
+};
+
+struct export_pov_args {
+    int strict, frame;
+};
+
+static int export_pov_take(struct cli *c, int code, void *ctx)
+{
+    struct export_pov_args *a = ctx;
+    if (code == SCENE_OPT_STRICT) {
+        a->strict = 1;
+        return 0;
+    }
+    return code == SCENE_OPT_FRAME ? cli_int(c, 0, SCN_MAX_FRAMES - 1, &a->frame) : -1;
+}
+
 int scene_cmd_export_pov(int argc, char **argv)
 {
-    argc--, argv++; /* argv[0] is the subcommand's name */
     const char *in, *out;
-    if (cmd_in_out(argc, argv,
-                   "links1 export-pov SCENE.scn -o OUT.pov [--frame N] [--strict]", &in, &out))
-        return 2;
-    int strict = 0, frame = 0;
-    for (int i = 0; i < argc; i++) {
-        if (strcmp(argv[i], "--strict") == 0)
-            strict = 1;
-        else if (strcmp(argv[i], "--frame") == 0 && i + 1 < argc)
-            frame = atoi(argv[++i]);
-    }
+    struct export_pov_args a = {0, 0};
+    struct cli c;
+    cli_init(&c, "links1 export-pov", argc, argv, "o:h", export_pov_options);
+    int r = scene_cmd_args(&c, "links1 export-pov SCENE.scn -o OUT.pov [--frame N] [--strict]",
+                           &in, &out, export_pov_take, &a);
+    if (r != 0)
+        return r > 0 ? 0 : 2;
+    int strict = a.strict, frame = a.frame;
     struct sd_scene s;
     char err[SD_ERR_MAX];
     if (sd_parse_file(in, &s, err, sizeof err) != 0) {
@@ -116,37 +161,56 @@ int scene_cmd_export_pov(int argc, char **argv)
     return 0;
 }
 
-/* links1 ref: runs links1-ref-<arith> from the directory of this program. */
+static const struct option ref_cmd_options[] = {
+    REF_LONG_OPTIONS,
+    {"arith", required_argument, NULL, REF_OPT_ARITH},
+    {NULL, 0, NULL, 0},
+};
+
+/* links1 ref: runs links1-ref-<arith> from the directory of this program
+ * with every argument but --arith A (ref_main.c checks their values). */
 int scene_cmd_ref(int argc, char **argv)
 {
-    argc--, argv++; /* argv[0] is the subcommand's name */
     const char *arith = "double";
-    char *args[64];
+    char **args = calloc((size_t)argc + 2, sizeof *args);
+    if (!args) {
+        fprintf(stderr, "links1 ref: out of memory\n");
+        return 1;
+    }
     int n = 1;
-    for (int i = 0; i < argc; i++) {
-        if (strcmp(argv[i], "--arith") == 0 && i + 1 < argc) {
-            arith = argv[++i];
-        } else if (n < 62) {
-            args[n++] = argv[i];
+    struct cli c;
+    cli_init(&c, "links1 ref", argc, argv, REF_SHORT_OPTIONS, ref_cmd_options);
+    for (int from = 1, code; (code = cli_next(&c)) != -1; from = optind) {
+        if (code == CLI_BAD) {
+            fprintf(stderr, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [options] "
+                            "(links1 ref --help)\n");
+            free(args);
+            return 2;
         }
+        if (code == REF_OPT_ARITH)
+            arith = c.arg;
+        else /* the words of this option, as written (a "--" before an operand too) */
+            for (int k = from; k < optind; k++)
+                args[n++] = argv[k];
     }
     args[n] = NULL;
     const char *build = arith;
-    int code = arith_from_name(arith);
-    if (code == ARITH_SOFT) {
+    int arith_code = arith_from_name(arith);
+    if (arith_code == ARITH_SOFT) {
         /* Software float differs from hardware float only in who executes
          * the IEEE operations; on the host both are the float build. */
         fprintf(stderr, "links1 ref: --arith soft on the host is the float build\n");
         build = "float";
-    } else if (code < 0) {
-        fprintf(stderr, "links1 ref: --arith must be double, float, soft or fixed, not '%s'\n",
-                arith);
+    } else if (arith_code < 0) {
+        fprintf(stderr, "links1 ref: --arith '%s': want double, float, soft or fixed\n", arith);
+        free(args);
         return 2;
     }
     char self[PATH_MAX];
     ssize_t k = readlink("/proc/self/exe", self, sizeof self - 1);
     if (k < 0) {
         fprintf(stderr, "links1 ref: cannot find my own directory: %s\n", strerror(errno));
+        free(args);
         return 1;
     }
     self[k] = 0;
@@ -159,5 +223,6 @@ int scene_cmd_ref(int argc, char **argv)
     execv(prog, args);
     fprintf(stderr, "links1 ref: cannot run %s: %s (build it with make)\n", prog,
             strerror(errno));
+    free(args);
     return 1;
 }

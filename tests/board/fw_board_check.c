@@ -169,13 +169,13 @@ static void bad_input_checks(struct board *b, int smp)
             has(&a, "outside a transfer"), "got status %d '%s'", a.status, a.text);
 
     command(b, CMD_STATUS, NULL, 0, FW_CHECK_WAIT_MS, &a);
-    int ok = a.status == 0 && a.n >= 6;
-    unsigned ncores = ok ? wire_get_u16(a.fields) : 0;
-    unsigned reported = ok ? wire_get_u16(a.fields + 2) : 0;
-    unsigned halted = ok ? wire_get_u16(a.fields + 4) : 0;
-    verdict("fw_runs_after_bad_input", ok && ncores == (unsigned)smp &&
-            reported == (unsigned)smp && halted == 0,
-            "status %d, %u cores, %u reported, %u halted", a.status, ncores, reported, halted);
+    struct link_status_result st = {0, 0, 0};
+    int ok = a.status == 0 && a.n >= LINK_STATUS_RESULT_SIZE;
+    if (ok)
+        link_status_result_get(a.fields, &st);
+    verdict("fw_runs_after_bad_input", ok && st.ncores == smp && st.reported == smp &&
+            st.halted == 0, "status %d, %u cores, %u reported, %u halted", a.status,
+            st.ncores, st.reported, st.halted);
 }
 
 struct fault_case {
@@ -198,6 +198,7 @@ static void fault_checks(struct board *b, int smp)
         {6, FAULT_INJECT_UNLOCK_FREE, FAULT_PANIC, "unlock_free", "'selftest_free' not held"},
     };
     const int ncases = (int)(sizeof cases / sizeof cases[0]);
+    struct link_status_result st;
     struct answer a;
     uint8_t args[3];
     char name[64];
@@ -224,7 +225,11 @@ static void fault_checks(struct board *b, int smp)
     }
 
     command(b, CMD_STATUS, NULL, 0, FW_CHECK_WAIT_MS, &a);
-    int halted = a.status == 0 && a.n >= 6 ? wire_get_u16(a.fields + 4) : -1;
+    int halted = -1;
+    if (a.status == 0 && a.n >= LINK_STATUS_RESULT_SIZE) {
+        link_status_result_get(a.fields, &st);
+        halted = st.halted;
+    }
     verdict("fw_fault_status_counts_halted", halted == ncases, "status %d, %d halted",
             a.status, halted);
 
@@ -247,7 +252,7 @@ static void small_ram_check(const struct board_opts *base)
 {
     struct board_opts o = *base;
     struct board b;
-    o.ncores = BOARD_MIN_CORES;
+    o.ncores = UNITS_MIN_CORES;
     o.ram_mb = FW_CHECK_SMALL_RAM_MB;
     if (board_start(&b, &o) < 0) {
         verdict("fw_small_ram_refused", 0, "the board did not start");
@@ -280,8 +285,8 @@ int main(int argc, char **argv)
     o.firmware = argv[1];
     o.ncores = atoi(argv[2]);
     /* Five NCs fault: cores 2..6, and one more must be left to answer. */
-    if (o.ncores < 8 || o.ncores > BOARD_MAX_CORES) {
-        fprintf(stderr, "fw_board_check: SMP %s: want 8..%d cores\n", argv[2], BOARD_MAX_CORES);
+    if (o.ncores < 8 || o.ncores > UNITS_MAX_CORES) {
+        fprintf(stderr, "fw_board_check: SMP %s: want 8..%d cores\n", argv[2], UNITS_MAX_CORES);
         return 2;
     }
     small_ram_check(&o);

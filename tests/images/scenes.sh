@@ -62,3 +62,21 @@ elif [[ "$msg" == *"POV-Ray cannot render this scene the same way"* ]]; then
 else
     echo "FAIL export_pov_strict_refuses: message '$msg'"
 fi
+
+# An empty compiled scene: links1 ref and links1 render (before any board
+# boots) refuse it with the same message, and write nothing.
+empty="$out/empty.l1s"
+: >"$empty"
+rm -f "$out"/empty-*.png
+ref_msg=$(build/links1 ref "$empty" -o "$out/empty-ref.png" 2>&1)
+ref_rc=$?
+render_msg=$(build/links1 render "$empty" -o "$out/empty-render.png" 2>&1)
+render_rc=$?
+want="$empty: empty file, not a compiled scene"
+if [ $ref_rc -ne 0 ] && [ $render_rc -ne 0 ] && [ "$ref_msg" = "links1 ref: $want" ] &&
+   [ "$render_msg" = "links1 render: $want" ] && ! compgen -G "$out/empty-*.png" >/dev/null; then
+    echo "PASS empty_l1s_refused_by_ref_and_render"
+else
+    echo "FAIL empty_l1s_refused_by_ref_and_render: ref (status $ref_rc) '$ref_msg'," \
+         "render (status $render_rc) '$render_msg'"
+fi

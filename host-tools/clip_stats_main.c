@@ -1,4 +1,4 @@
-/* render/clip_stats_main.c: the host program `build/render-clip-stats`:
+/* clip_stats_main.c: the host program `build/render-clip-stats`:
  * how much each speed-up of section 4 cuts the work of a frame, counted
  * (not timed) by the renderer's statistics, in the spirit of the paper's
  * Table 2.  Host only (stdio, malloc); not part of the shared renderer.
@@ -14,6 +14,8 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "host-tools/cli_opt.h"
+#include "host-tools/scene/cli_args.h"
 #include "host-tools/scene/scene_desc.h"
 #include "render/blob.h"
 #include "render/clip.h"
@@ -30,40 +32,71 @@ static int stats_fail(const char *what, const char *why)
     return 1;
 }
 
+enum { STATS_OPT_AREA = CLI_OWN_CODES };
+
+static const struct option stats_options[] = {
+    {"area", required_argument, NULL, STATS_OPT_AREA},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0},
+};
+
+static int stats_usage(FILE *out, int status)
+{
+    fprintf(out, "usage: render-clip-stats SCENE.scn [--area WxH]\n");
+    return status;
+}
+
 int main(int argc, char **argv)
 {
-    unsigned aw = 32, ah = 4;
-    if (argc != 2 && !(argc == 4 && strcmp(argv[2], "--area") == 0 &&
-                       sscanf(argv[3], "%ux%u", &aw, &ah) == 2 && aw > 0 && ah > 0)) {
-        fprintf(stderr, "usage: render-clip-stats SCENE.scn [--area WxH]\n");
-        return 2;
+    int area_w = 32, area_h = 4;
+    const char *in = NULL;
+    struct cli c;
+    cli_init(&c, "render-clip-stats", argc, argv, "h", stats_options);
+    for (int code; (code = cli_next(&c)) != -1;) {
+        if (code == 'h')
+            return stats_usage(stdout, 0);
+        if (code == STATS_OPT_AREA && cli_parse_size(c.arg, &area_w, &area_h) != 0) {
+            cli_bad_value(&c, cli_size_want());
+            return stats_usage(stderr, 2);
+        }
+        if (code == CLI_OPERAND && in) {
+            fprintf(stderr, "render-clip-stats: one scene at a time, not also '%s'\n", c.arg);
+            return stats_usage(stderr, 2);
+        }
+        if (code == CLI_OPERAND)
+            in = c.arg;
+        else if (code != STATS_OPT_AREA)
+            return stats_usage(stderr, 2);
     }
+    if (!in)
+        return stats_usage(stderr, 2);
+    unsigned aw = (unsigned)area_w, ah = (unsigned)area_h;
     char err[SD_ERR_MAX];
     struct sd_scene sd;
     uint8_t *buf;
     size_t len, need;
-    if (sd_parse_file(argv[1], &sd, err, sizeof err) != 0)
-        return stats_fail(argv[1], err);
+    if (sd_parse_file(in, &sd, err, sizeof err) != 0)
+        return stats_fail(in, err);
     if (sd_compile(&sd, &buf, &len, err, sizeof err) != 0)
-        return stats_fail(argv[1], err);
+        return stats_fail(in, err);
     sd_free(&sd);
     render_blob_error_t berr;
     render_blob_t *blob;
     if (render_blob_bytes(buf, len, &need, &berr) != RENDER_BLOB_OK)
-        return stats_fail(argv[1], berr.message);
+        return stats_fail(in, berr.message);
     void *block = aligned_alloc(RENDER_RELOCATE_ALIGN, (need + 63) / 64 * 64);
     if (!block || render_blob_build(buf, len, 0, block, need, "host memory", &blob, &berr) != RENDER_BLOB_OK)
-        return stats_fail(argv[1], block ? berr.message : "out of memory");
+        return stats_fail(in, block ? berr.message : "out of memory");
     const render_frame_t *f = blob->frame;
     size_t pixels = (size_t)f->width * f->height, clip_bytes = render_clip_bytes(f);
     void *clip_mem = malloc(clip_bytes);
     rgb8_t *img[STATS_SETTINGS], *tile = malloc(sizeof *tile * aw * ah);
     render_clip_t clip;
     if (!clip_mem || !tile || render_clip_init(&clip, f, clip_mem, clip_bytes) != RENDER_OK)
-        return stats_fail(argv[1], "out of memory");
+        return stats_fail(in, "out of memory");
     unsigned areas = ((f->width + aw - 1) / aw) * ((f->height + ah - 1) / ah);
     printf("%s: %ux%u, %u clusters, %u primitives, %u areas of %ux%u, blob %zu bytes (peak %zu, bound %zu), NC working set %zu bytes\n",
-           argv[1], f->width, f->height, f->cluster_count, f->prim_count, areas, aw, ah, blob->bytes,
+           in, f->width, f->height, f->cluster_count, f->prim_count, areas, aw, ah, blob->bytes,
            blob->peak, need, clip_bytes);
     printf("%-20s %14s %14s %14s %14s %10s %10s\n", "setting", "primary boxes", "primary prims",
            "all boxes", "all prims", "Y kept/area", "X kept/px");
@@ -80,7 +113,7 @@ int main(int argc, char **argv)
             for (uint32_t x = 0; x < f->width; x += aw) {
                 render_area_t a = {x, y, f->width - x < aw ? f->width - x : aw, f->height - y < ah ? f->height - y : ah};
                 if (render_area(&ctx, &clip, &a, &opt, tile) != RENDER_OK)
-                    return stats_fail(argv[1], "render_area refused an area");
+                    return stats_fail(in, "render_area refused an area");
                 for (uint32_t r = 0; r < a.h; r++)
                     memcpy(img[s] + (size_t)(y + r) * f->width + x, tile + r * a.w, a.w * sizeof *tile);
             }
@@ -102,6 +135,6 @@ int main(int argc, char **argv)
     free(block);
     free(buf);
     if (!same)
-        return stats_fail(argv[1], "a speed-up changed the image");
+        return stats_fail(in, "a speed-up changed the image");
     return 0;
 }

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# render/bench-host.sh: speed of the renderer on the host, per arithmetic:
+# bench_host.sh: speed of the renderer on the host, per arithmetic:
 # rays per second (primary + shadow + reflection + refraction +
 # transmission, as counted by the renderer) on the demo and paper-like
 # scenes with `links1 ref`.  Wall-clock time: a benchmark, not a test.
 set -eu
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 make -s --no-print-directory build/links1 build/links1-ref-double build/links1-ref-float \
     build/links1-ref-fixed
 out=build/bench-host

@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# fixed/measure-formats.sh: how many fraction bits the fixed format needs.
+# measure_formats.sh: how many fraction bits the fixed format needs.
 # Builds the host reference renderer in fixed point with NUM_FRAC_BITS = each
 # argument (default 16 17 18 19) into build/fixed-formats/, renders the demo
 # and paper-like scenes and compares each with the double reference:
 # pixels within 2/255 on every channel (issue 3 asks for 99%).
 set -eu
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 bits=${*:-16 17 18 19}
 out=build/fixed-formats
 mkdir -p "$out"

@@ -1,0 +1,25 @@
+/* ref_opts.h: the options of the host reference renderer (ref_main.c).
+ * `links1 ref` (scene_cmds.c) reads the same table plus --arith, takes
+ * --arith out and runs links1-ref-<arith> with the rest. */
+#ifndef LINKS1_HOST_SCENE_REF_OPTS_H
+#define LINKS1_HOST_SCENE_REF_OPTS_H
+
+#include "host-tools/cli_opt.h"
+
+enum ref_opt_code {
+    REF_OPT_PPM = CLI_OWN_CODES,
+    REF_OPT_SIZE,
+    REF_OPT_FRAME,
+    REF_OPT_FRAMES,
+    REF_OPT_ARITH, /* links1 ref only */
+};
+
+#define REF_SHORT_OPTIONS "o:h"
+#define REF_LONG_OPTIONS                                  \
+    {"ppm", no_argument, NULL, REF_OPT_PPM},              \
+    {"size", required_argument, NULL, REF_OPT_SIZE},      \
+    {"frame", required_argument, NULL, REF_OPT_FRAME},    \
+    {"frames", required_argument, NULL, REF_OPT_FRAMES},  \
+    {"help", no_argument, NULL, 'h'}
+
+#endif

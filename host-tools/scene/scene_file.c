@@ -1,0 +1,94 @@
+/* scene_file.c: see scene_file.h. */
+#include "host-tools/scene/scene_file.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "host-tools/scene/scene_desc.h"
+
+void scene_file_opts_init(struct scene_file_opts *o)
+{
+    o->width = o->height = 0;
+    o->max_depth = -1;
+    o->refractionless = -1;
+}
+
+int scene_file_ends_with(const char *s, const char *suffix)
+{
+    size_t n = strlen(s), k = strlen(suffix);
+    return n >= k && strcmp(s + n - k, suffix) == 0;
+}
+
+static int scene_file_compile(const char *path, const struct scene_file_opts *o, uint8_t **buf,
+                              size_t *len, char *err, size_t errlen)
+{
+    struct sd_scene s;
+    if (sd_parse_file(path, &s, err, errlen) != 0)
+        return -1;
+    if (o->width) {
+        s.view.width = o->width;
+        s.view.height = o->height;
+    }
+    if (o->max_depth >= 0)
+        s.view.max_depth = o->max_depth;
+    if (o->refractionless >= 0)
+        s.view.flags = o->refractionless ? s.view.flags | SCN_OPT_REFRACTIONLESS
+                                         : s.view.flags & ~SCN_OPT_REFRACTIONLESS;
+    char why[SD_ERR_MAX];
+    int rc = sd_compile(&s, buf, len, why, sizeof why);
+    sd_free(&s);
+    if (rc != 0)
+        snprintf(err, errlen, "%s: %s", path, why);
+    return rc;
+}
+
+static int scene_file_read(const char *path, uint8_t **buf, size_t *len, char *err,
+                           size_t errlen)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f) {
+        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        return -1;
+    }
+    *buf = malloc(SCN_MAX_SIZE + 1);
+    *len = *buf ? fread(*buf, 1, SCN_MAX_SIZE + 1, f) : 0;
+    fclose(f);
+    const char *why = !*buf ? "out of memory"
+                      : *len > SCN_MAX_SIZE ? "larger than a compiled scene may be"
+                      : *len == 0 ? "empty file, not a compiled scene"
+                      : NULL;
+    if (why) {
+        snprintf(err, errlen, "%s: %s", path, why);
+        free(*buf);
+        *buf = NULL;
+        return -1;
+    }
+    return 0;
+}
+
+int scene_file_bytes(const char *path, const struct scene_file_opts *o, uint8_t **buf,
+                     size_t *len, char *err, size_t errlen)
+{
+    *buf = NULL;
+    *len = 0;
+    if (!scene_file_ends_with(path, ".l1s"))
+        return scene_file_compile(path, o, buf, len, err, errlen);
+    const char *change = o->width ? "--size" : o->max_depth >= 0 ? "--max-depth"
+                         : o->refractionless >= 0 ? "--refractionless" : NULL;
+    if (change) {
+        snprintf(err, errlen, "%s: %s needs a text scene, not a compiled one", path, change);
+        return -1;
+    }
+    return scene_file_read(path, buf, len, err, errlen);
+}
+
+void scene_file_frame_path(const char *out, long frame, char *buf, size_t n)
+{
+    const char *dot = strrchr(out, '.');
+    const char *slash = strrchr(out, '/');
+    if (!dot || (slash && dot < slash))
+        dot = out + strlen(out);
+    snprintf(buf, n, "%.*s-%04ld%s", (int)(dot - out), out, frame, dot);
+}

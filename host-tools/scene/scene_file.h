@@ -1,0 +1,33 @@
+/* scene_file.h: a scene file as `links1 ref` and `links1 render` take it
+ * (a text scene, compiled here, or an already compiled .l1s file) and the
+ * names of their per-frame output files. */
+#ifndef LINKS1_HOST_SCENE_FILE_H
+#define LINKS1_HOST_SCENE_FILE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+/* Changes to a text scene before it is compiled. */
+struct scene_file_opts {
+    int width, height;  /* --size WxH; 0: the scene's */
+    int max_depth;      /* --max-depth D; -1: the scene's */
+    int refractionless; /* --refractionless on|off: 1 or 0; -1: the scene's */
+};
+
+/* No changes: the scene as written. */
+void scene_file_opts_init(struct scene_file_opts *o);
+
+/* 1 when s ends with suffix. */
+int scene_file_ends_with(const char *s, const char *suffix);
+
+/* The compiled bytes of the scene at path (malloc'ed into *buf, *len): a
+ * file ending in .l1s read as is (refused when empty, over SCN_MAX_SIZE, or
+ * when o asks for a change), any other compiled from text with o's changes.
+ * 0, or -1 with err saying why ("PATH: why"). */
+int scene_file_bytes(const char *path, const struct scene_file_opts *o, uint8_t **buf,
+                     size_t *len, char *err, size_t errlen);
+
+/* out with the frame number before its extension: "a.png", 7 -> "a-0007.png". */
+void scene_file_frame_path(const char *out, long frame, char *buf, size_t n);
+
+#endif

@@ -1,0 +1,190 @@
+/* test_cli_opt.c: the argument reader every links1 command uses
+ * (host-tools/cli_opt.c) and the board options (board_opt): operands keep
+ * their place among options, "--" ends the options, and every bad option or
+ * value is refused with a message naming it. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "host-tools/board.h"
+#include "host-tools/cli_opt.h"
+#include "tests/check.h"
+
+enum { T_SIZE = CLI_OWN_CODES, T_PPM, T_FRAME, T_FRAMES };
+
+static const struct option t_options[] = {
+    BOARD_LONG_OPTIONS,
+    {"size", required_argument, NULL, T_SIZE},
+    {"ppm", no_argument, NULL, T_PPM},
+    {"frame", required_argument, NULL, T_FRAME},
+    {"frames", required_argument, NULL, T_FRAMES},
+    {NULL, 0, NULL, 0},
+};
+
+/* Runs cli_next over argv (NULL-terminated) until the end or the first
+ * CLI_BAD; the codes go to codes (with operands and values in args), what
+ * was printed on stderr to msg.  Returns the number of codes. */
+static int t_read(char **argv, int *codes, const char **args, char *msg, size_t msglen)
+{
+    int argc = 0;
+    while (argv[argc])
+        argc++;
+    fflush(stderr);
+    FILE *tmp = tmpfile();
+    int saved = dup(2);
+    dup2(fileno(tmp), 2);
+    struct cli c;
+    cli_init(&c, "links1 test", argc, argv, "o:h", t_options);
+    int n = 0;
+    for (int code; (code = cli_next(&c)) != -1;) {
+        codes[n] = code;
+        args[n++] = c.arg;
+        if (code == CLI_BAD)
+            break;
+    }
+    fflush(stderr);
+    dup2(saved, 2);
+    close(saved);
+    rewind(tmp);
+    size_t k = fread(msg, 1, msglen - 1, tmp);
+    msg[k] = 0;
+    fclose(tmp);
+    return n;
+}
+
+static void test_operands_keep_their_place(void)
+{
+    char *argv[] = {"render", "a.scn", "-o", "a.png", "--ppm", "b.scn", "-ob.png",
+                    "--size=40x30", "--", "--c.scn", NULL};
+    int codes[16];
+    const char *args[16];
+    char msg[256];
+    int n = t_read(argv, codes, args, msg, sizeof msg);
+    CHECK_EQ_INT(n, 7);
+    CHECK(codes[0] == CLI_OPERAND && strcmp(args[0], "a.scn") == 0);
+    CHECK(codes[1] == 'o' && strcmp(args[1], "a.png") == 0);
+    CHECK(codes[2] == T_PPM);
+    CHECK(codes[3] == CLI_OPERAND && strcmp(args[3], "b.scn") == 0);
+    CHECK(codes[4] == 'o' && strcmp(args[4], "b.png") == 0);
+    CHECK(codes[5] == T_SIZE && strcmp(args[5], "40x30") == 0);
+    CHECK(codes[6] == CLI_OPERAND && strcmp(args[6], "--c.scn") == 0);
+    CHECK(msg[0] == 0);
+}
+
+/* Expects argv to end in CLI_BAD with a message containing want. */
+static int t_refused(char **argv, const char *want)
+{
+    int codes[16];
+    const char *args[16];
+    char msg[256];
+    int n = t_read(argv, codes, args, msg, sizeof msg);
+    if (n > 0 && codes[n - 1] == CLI_BAD && strstr(msg, want))
+        return 1;
+    printf("  (got: %s)\n", msg);
+    return 0;
+}
+
+static void test_bad_options_named(void)
+{
+    char *unknown[] = {"x", "a", "--sise", "3", NULL};
+    CHECK(t_refused(unknown, "links1 test: unknown option '--sise'"));
+    char *short_unknown[] = {"x", "-x", NULL};
+    CHECK(t_refused(short_unknown, "links1 test: unknown option '-x'"));
+    char *missing[] = {"x", "a", "--size", NULL};
+    CHECK(t_refused(missing, "links1 test: --size needs a value"));
+    char *missing_short[] = {"x", "a", "-o", NULL};
+    CHECK(t_refused(missing_short, "links1 test: -o needs a value"));
+    char *no_value[] = {"x", "--ppm=1", NULL};
+    CHECK(t_refused(no_value, "links1 test: --ppm takes no value"));
+    char *ambiguous[] = {"x", "--fr", "1", NULL};
+    CHECK(t_refused(ambiguous, "'--fr' is ambiguous: it could be --frame --frames"));
+}
+
+/* Runs board_opt on the one option in argv; returns its result, message in msg. */
+static int t_board(char **argv, struct board_opts *o, char *msg, size_t msglen)
+{
+    int argc = 0;
+    while (argv[argc])
+        argc++;
+    fflush(stderr);
+    FILE *tmp = tmpfile();
+    int saved = dup(2);
+    dup2(fileno(tmp), 2);
+    struct cli c;
+    cli_init(&c, "links1 test", argc, argv, "o:h", t_options);
+    int code = cli_next(&c);
+    int r = board_opt(o, &c, code);
+    fflush(stderr);
+    dup2(saved, 2);
+    close(saved);
+    rewind(tmp);
+    size_t k = fread(msg, 1, msglen - 1, tmp);
+    msg[k] = 0;
+    fclose(tmp);
+    return r;
+}
+
+static void test_board_options(void)
+{
+    struct board_opts o;
+    char msg[256];
+    board_opts_init(&o);
+    char *smp[] = {"x", "--smp", "66", NULL};
+    CHECK_EQ_INT(t_board(smp, &o, msg, sizeof msg), 1);
+    CHECK_EQ_INT(o.ncores, 66);
+    char *arith[] = {"x", "--arith=fixed", NULL};
+    CHECK_EQ_INT(t_board(arith, &o, msg, sizeof msg), 1);
+    CHECK(strcmp(o.arith, "fixed") == 0);
+    char *quiet[] = {"x", "--quiet", NULL};
+    CHECK_EQ_INT(t_board(quiet, &o, msg, sizeof msg), 1);
+    CHECK_EQ_INT(o.quiet, 1);
+    char *own[] = {"x", "--ppm", NULL};
+    CHECK_EQ_INT(t_board(own, &o, msg, sizeof msg), 0);
+    char *few[] = {"x", "--smp", "2", NULL};
+    CHECK_EQ_INT(t_board(few, &o, msg, sizeof msg), -1);
+    CHECK(strstr(msg, "--smp '2': want a whole number from 3 to 256") != NULL);
+    char *junk[] = {"x", "--ram", "12x", NULL};
+    CHECK_EQ_INT(t_board(junk, &o, msg, sizeof msg), -1);
+    CHECK(strstr(msg, "--ram '12x': want a whole number") != NULL);
+    char *bad_arith[] = {"x", "--arith", "quad", NULL};
+    CHECK_EQ_INT(t_board(bad_arith, &o, msg, sizeof msg), -1);
+    CHECK(strstr(msg, "--arith 'quad': want float, soft or fixed") != NULL);
+    CHECK_EQ_INT(o.ncores, 66); /* refused values change nothing */
+    CHECK(strcmp(o.arith, "fixed") == 0);
+}
+
+static void test_numbers(void)
+{
+    struct cli c;
+    char *argv[] = {"x", "--size", "0x20", NULL};
+    cli_init(&c, "links1 test", 3, argv, "", t_options);
+    CHECK_EQ_INT(cli_next(&c), T_SIZE);
+    long v = 0;
+    CHECK_EQ_INT(cli_long(&c, 0, 1, 100, &v), 0);
+    CHECK_EQ_INT(v, 32);
+    double d = 0;
+    fflush(stderr);
+    int saved = dup(2);
+    FILE *null = fopen("/dev/null", "w");
+    dup2(fileno(null), 2);
+    CHECK_EQ_INT(cli_long(&c, 10, 1, 100, &v), -1); /* "0x20" is no base-10 number */
+    CHECK_EQ_INT(cli_double(&c, 0, 1, 1e6, NULL, &d), 0);
+    c.arg = "0";
+    CHECK_EQ_INT(cli_double(&c, 0, 1, 1e6, "a positive number", &d), -1);
+    c.arg = "nan";
+    CHECK_EQ_INT(cli_double(&c, 0, 0, 1, NULL, &d), -1);
+    fflush(stderr);
+    dup2(saved, 2);
+    close(saved);
+    fclose(null);
+}
+
+int main(void)
+{
+    RUN(test_operands_keep_their_place);
+    RUN(test_bad_options_named);
+    RUN(test_board_options);
+    RUN(test_numbers);
+    return check_exit();
+}
