@@ -6,6 +6,7 @@
 #   make run        render the default scene (installs missing packages first)
 #   make test       every test; last line "N passed, N failed"
 #   make bench      benchmarks (speed lives here, never in tests)
+#   make fuzz       each libFuzzer harness for FUZZ_SECONDS (default 600)
 #   make V=1        show full command lines
 #   make LIBC=newlib  link the firmware against newlib instead of picolibc
 
@@ -83,6 +84,7 @@ HOST_TESTS :=
 BOARD_TESTS :=
 BOARD_PROGS :=
 BENCHES :=
+FUZZERS :=
 
 include $(wildcard */module.mk */*/module.mk)
 
@@ -148,12 +150,37 @@ $(foreach t,$(HOST_TOOLS),$(eval $(call host_prog,$(t),,$(B)/$(t))))
 $(foreach t,$(HOST_TESTS),$(eval $(call host_prog,$(t),-san,$(B)/tests/$(t))))
 $(foreach t,$(BOARD_PROGS),$(eval $(call host_prog,$(t),-san,$(B)/tests/$(t))))
 
+# ---------------------------------------------------------------- fuzzing
+# libFuzzer harnesses (tests/fuzz/): Debian's clang, with ASan and UBSan.
+# Their objects go to build/fuzz-<arith>/, the harnesses to build/fuzz/.
+FUZZ_CC ?= clang
+FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
+FUZZ_SECONDS ?= 600
+define fuzz_objdir
+$(B)/fuzz-$(1)/%.c.o: %.c
+	$$(call say,FUZZCC,$$@)
+	$(Q)mkdir -p $$(@D)
+	$(Q)$(FUZZ_CC) $(HOST_CFLAGS) $(ARITH_DEF_$(1)) $(FUZZ_SAN) -fsanitize=fuzzer-no-link \
+		-c $$< -o $$@
+endef
+$(foreach a,double float fixed,$(eval $(call fuzz_objdir,$(a))))
+define fuzz_prog
+$(1)_OBJS := $$(patsubst %,$(B)/fuzz-$$($(1)_ARITH)/%.o,$$($(1)_SRCS) $$(SHARED_SRCS))
+$(B)/fuzz/$(1): $$($(1)_OBJS)
+	$$(call say,FUZZLD,$$@)
+	$(Q)mkdir -p $$(@D)
+	$(Q)$(FUZZ_CC) $(FUZZ_SAN) -fsanitize=fuzzer $$($(1)_OBJS) $$($(1)_LIBS) $(HOST_LIBS) -o $$@
+-include $$($(1)_OBJS:.o=.d)
+endef
+$(foreach t,$(FUZZERS),$(eval $(call fuzz_prog,$(t))))
+FUZZ_BINS := $(addprefix $(B)/fuzz/,$(FUZZERS))
+
 HOST_TOOL_BINS := $(addprefix $(B)/,$(HOST_TOOLS))
 HOST_TEST_BINS := $(addprefix $(B)/tests/,$(HOST_TESTS))
 BOARD_PROG_BINS := $(addprefix $(B)/tests/,$(BOARD_PROGS))
 
 # ---------------------------------------------------------------- targets
-.PHONY: all firmware host-tools deps run test test-host test-board bench clean
+.PHONY: all firmware host-tools deps run test test-host test-board bench clean fuzz fuzz-build
 
 all: firmware host-tools
 firmware: $(FIRMWARE)
@@ -167,7 +194,7 @@ run: deps
 	$(Q)bash host-tools/make-run.sh
 
 test: deps
-	$(Q)$(MAKE) --no-print-directory all $(HOST_TEST_BINS)
+	$(Q)$(MAKE) --no-print-directory all $(HOST_TEST_BINS) $(FUZZ_BINS)
 	$(Q)HOST_TESTS="$(HOST_TEST_BINS)" BOARD_TESTS="$(BOARD_TESTS)" FW_DIR=$(FWB) \
 		bash tests/run.sh
 
@@ -176,12 +203,18 @@ test-host: $(HOST_TEST_BINS)
 	$(Q)HOST_TESTS="$(HOST_TEST_BINS)" BOARD_TESTS= bash tests/run.sh
 
 # Board tests only, against the already built firmware.
-test-board: all
+test-board: all $(FUZZ_BINS)
 	$(Q)HOST_TESTS= BOARD_TESTS="$(BOARD_TESTS)" FW_DIR=$(FWB) bash tests/run.sh
 
 bench: deps
 	$(Q)$(MAKE) --no-print-directory all
 	$(Q)for b in $(BENCHES); do bash $$b || exit 1; done
+
+# The fuzz harnesses; `make fuzz` runs each for FUZZ_SECONDS (tests/fuzz/run.sh).
+fuzz-build: $(FUZZ_BINS)
+fuzz: deps
+	$(Q)$(MAKE) --no-print-directory fuzz-build
+	$(Q)rc=0; for f in $(FUZZERS); do bash tests/fuzz/run.sh $$f $(FUZZ_SECONDS) || rc=1; done; exit $$rc
 
 clean:
 	rm -rf $(B)

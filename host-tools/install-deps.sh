@@ -4,7 +4,10 @@
 # exact command to run and fails.
 set -eu
 need_pkgs=(make gcc libc6-dev libpng-dev gcc-arm-none-eabi picolibc-arm-none-eabi
-           libnewlib-arm-none-eabi qemu-system-arm povray python3)
+           libnewlib-arm-none-eabi qemu-system-arm povray python3
+           clang libclang-rt-dev)
+# clang: the fuzz harnesses (tests/fuzz/); libclang-rt-dev holds libFuzzer's
+# and the sanitizers' runtimes, which clang only recommends.
 missing=()
 for p in "${need_pkgs[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" ||

@@ -228,9 +228,10 @@ const char *areas_strerror(int status)
         return "ok";
     case AREAS_ERR_MODE:
         return "unknown balancing mode (want static, dynamic or decreasing)";
-    case AREAS_ERR_SIZE:
+    case AREAS_ERR_SIZE: { /* a block: a label takes no declaration before C23 */
         _Static_assert(AREAS_MAX_DIM == 4096u, "update the message below");
         return "screen width and height must be 1..4096 (AREAS_MAX_DIM)";
+    }
     case AREAS_ERR_NCS:
         return "at least one NC is needed";
     default:

@@ -1,0 +1,38 @@
+# tests/fuzz/: libFuzzer harnesses (clang -fsanitize=fuzzer,address,undefined),
+# one small C file each, and their seed corpora in tests/fuzz/corpus/NAME/.
+# For each NAME in FUZZERS: NAME_SRCS (its own sources; the shared code is
+# added), NAME_ARITH (the arithmetic of the shared code), NAME_LIBS.
+#   make fuzz                 each harness FUZZ_SECONDS (default 600) in turn
+#   tests/fuzz/smoke.sh       a short fixed run of each (part of make test)
+
+# The compiled-form loader and the DM's build of a frame from it, in the
+# board's main arithmetic.
+FUZZERS += fuzz_scene_load
+fuzz_scene_load_SRCS = tests/fuzz/fuzz_scene_load.c
+fuzz_scene_load_ARITH := float
+
+# The text scene format: tokenizer, parser, compiler, then the loader.
+FUZZERS += fuzz_scene_text
+fuzz_scene_text_SRCS = tests/fuzz/fuzz_scene_text.c $(SCENE_TEXT_SRCS)
+fuzz_scene_text_ARITH := double
+fuzz_scene_text_LIBS := -lpng
+
+# The host-link frame decoder (both sides), the host's frame handling and
+# the payload getters.
+FUZZERS += fuzz_hostlink
+fuzz_hostlink_SRCS = tests/fuzz/fuzz_hostlink.c $(BOARD_LAUNCHER_SRCS)
+fuzz_hostlink_ARITH := double
+
+# Image files read as colour and bump maps, then traced.
+FUZZERS += fuzz_image_map
+fuzz_image_map_SRCS = tests/fuzz/fuzz_image_map.c $(SCENE_TEXT_SRCS)
+fuzz_image_map_ARITH := float
+fuzz_image_map_LIBS := -lpng
+
+# A short run of each harness over its corpus (no board needed).
+BOARD_TESTS += tests/fuzz/smoke.sh
+
+# Writes fuzz_hostlink's seed frames (with the one encoder).
+BOARD_PROGS += seed_frames
+seed_frames_SRCS := tests/fuzz/seed_frames.c
+seed_frames_ARITH := double

@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# tests/fuzz/smoke.sh: a short fixed run of each fuzz harness (no board):
+# first every seed of tests/fuzz/corpus/NAME (the regression inputs of the
+# crashes found so far among them), then FUZZ_SMOKE_RUNS mutated inputs from
+# a fixed seed.  PASS when the harness ends without a crash, a leak or a
+# sanitizer report.
+set -u
+cd "$(dirname "$0")/../.."
+runs=${FUZZ_SMOKE_RUNS:-2000}
+names=$(sed -n 's/^FUZZERS += //p' tests/fuzz/module.mk)
+for name in $names; do
+    bin=build/fuzz/$name
+    if [ ! -x "$bin" ]; then
+        echo "FAIL fuzz_smoke_$name: $bin is missing (make fuzz-build)"
+        continue
+    fi
+    seeds=tests/fuzz/corpus/$name
+    nseeds=$(ls "$seeds" 2>/dev/null | wc -l)
+    if [ "$nseeds" -eq 0 ]; then
+        echo "FAIL fuzz_smoke_$name: no seed corpus in $seeds"
+        continue
+    fi
+    work=$(mktemp -d)
+    art=$(mktemp -d)
+    log=build/test-logs/fuzz_smoke_$name.fuzz.log
+    mkdir -p build/test-logs
+    cp "$seeds"/* "$work"/
+    ASAN_OPTIONS=detect_leaks=1 "$bin" -seed=1 -runs="$runs" -timeout=20 \
+        -rss_limit_mb=2560 -close_fd_mask=3 -artifact_prefix="$art/" "$work" >"$log" 2>&1
+    rc=$?
+    done_line=$(grep -E '^Done [0-9]+ runs' "$log" | tail -1)
+    if [ $rc -eq 0 ] && [ -n "$done_line" ] && [ -z "$(ls "$art")" ]; then
+        echo "PASS fuzz_smoke_$name ($nseeds seeds; $done_line)"
+    else
+        echo "FAIL fuzz_smoke_$name: exit $rc, $(ls "$art" | head -3 | tr '\n' ' ')" \
+            "$(grep -E 'ERROR|runtime error' "$log" | head -2 | tr '\n' ' ') (log $log)"
+    fi
+    rm -rf "$work" "$art"
+done
