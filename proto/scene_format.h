@@ -58,6 +58,12 @@
 #define SCN_MAX_FOV 170.0
 #define SCN_MAX_SPOT_ANGLE 89.0            /* cone + falloff, degrees (text form) */
 #define SCN_MAX_NAME 32                    /* names in the text form, with NUL */
+#define SCN_MIN_TRIANGLE_HEIGHT 1.0e-4 /* each height of a triangle (distance of a
+                                      vertex from the opposite edge), text form;
+                                      the loader refuses under 1/8 of it, which
+                                      leaves room for rounding to binary32 and
+                                      for the fixed build's step (2^-19) */
+#define SCN_LOAD_MIN_TRIANGLE_HEIGHT (SCN_MIN_TRIANGLE_HEIGHT / 8)
 
 /* ---------------------------------------------------------------- header */
 #define SCN_MAGIC_0 'L'

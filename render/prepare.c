@@ -11,6 +11,7 @@
 
 #define PREP_BOUNDS_PAD NUM_C(RENDER_BOUNDS_PAD_VALUE)
 #define PREP_NEAR NUM_C(RENDER_NEAR_PLANE_VALUE)
+#define PREP_PIXEL_LIMIT num_from_int(2 * RENDER_MAX_WIDTH) /* beyond any screen */
 
 const char *render_status_name(render_status_t status)
 {
@@ -303,6 +304,10 @@ static void prep_screen_rect(const render_frame_t *f, render_cluster_t *c)
         num_t py = num_sub(num_from_int(f->height - 1), prep_project(y, z, f->screen_half_h, f->height));
         if (num_is_sat(px) || num_is_sat(py))
             return;
+        /* A corner far off the screen (a huge eye-space box): clamped to
+         * the screen below either way, and too large for an int as it is. */
+        px = num_min(num_max(px, num_neg(PREP_PIXEL_LIMIT)), PREP_PIXEL_LIMIT);
+        py = num_min(num_max(py, num_neg(PREP_PIXEL_LIMIT)), PREP_PIXEL_LIMIT);
         x0 = k ? num_min(x0, px) : px;
         x1 = k ? num_max(x1, px) : px;
         y0 = k ? num_min(y0, py) : py;

@@ -11,6 +11,7 @@
 #include "proto/crc32.h"
 #include "proto/scene_format.h"
 #include "proto/wire.h"
+#include "render/vec3.h"
 
 #define LOAD_NO_NUMBER (-1L - 0x7fffffffL) /* "no number in this message part" */
 #define LOAD_F32_EXP_MASK 0x7f800000u
@@ -525,6 +526,21 @@ static scene_load_status_t load_components(struct load *L, scene_density_compone
     return SCENE_LOAD_OK;
 }
 
+/* A triangle with a height under SCN_LOAD_MIN_TRIANGLE_HEIGHT: the
+ * renderer divides by its heights.  With s the sine of the angle at v0,
+ * the heights over the edges at v0 are |e2| s and |e1| s, and the third is
+ * at least half the smaller of them.  Unit vectors keep every product
+ * within the fixed build's range. */
+static int load_sliver(const vec3_t v[3])
+{
+    vec3_t e1 = vec3_sub(v[1], v[0]), e2 = vec3_sub(v[2], v[0]);
+    vec3_t u1 = vec3_normalize(e1), u2 = vec3_normalize(e2);
+    num_t l1 = vec3_dot(e1, u1), l2 = vec3_dot(e2, u2);
+    num_t sine = vec3_length(vec3_cross(u1, u2));
+    num_t h = num_mul(num_lt(l1, l2) ? l1 : l2, sine);
+    return num_lt(h, NUM_C(SCN_LOAD_MIN_TRIANGLE_HEIGHT));
+}
+
 static const int load_prim_values[] = {
     [SCN_PRIM_TRIANGLE] = SCN_TRIANGLE_VALUES, [SCN_PRIM_ELLIPSOID] = SCN_ELLIPSOID_VALUES,
     [SCN_PRIM_BOX] = SCN_BOX_VALUES,           [SCN_PRIM_DENSITY] = SCN_DENSITY_VALUES,
@@ -572,6 +588,10 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out)
                 o->shape.triangle.tex_u[k] = load_num(v + 36 + 4 * k);
                 o->shape.triangle.tex_v[k] = load_num(v + 48 + 4 * k);
             }
+            if (load_sliver(o->shape.triangle.v))
+                return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
+                                "degenerate or sliver triangle (a height under "
+                                "SCN_MIN_TRIANGLE_HEIGHT / 8)");
             break;
         case SCN_PRIM_ELLIPSOID:
         case SCN_PRIM_BOX:

@@ -165,8 +165,20 @@ static void parse_triangle(struct parser *p, struct sd_prim *pr)
     c[0] = e1[1] * e2[2] - e1[2] * e2[1];
     c[1] = e1[2] * e2[0] - e1[0] * e2[2];
     c[2] = e1[0] * e2[1] - e1[1] * e2[0];
-    if (sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) < PARSE_MIN_TRIANGLE_AREA)
+    /* Each height is twice the area over its base: the smallest stands on
+     * the longest edge. */
+    double area2 = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]), longest = 0;
+    for (int k = 0; k < 3; k++) {
+        const double *a = v + 3 * k, *b = v + 3 * ((k + 1) % 3);
+        double d = sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
+                        (b[2] - a[2]) * (b[2] - a[2]));
+        longest = d > longest ? d : longest;
+    }
+    if (area2 < PARSE_MIN_TRIANGLE_AREA)
         lex_error(&p->lx, "degenerate triangle (its vertices are on one line)");
+    if (area2 < SCN_MIN_TRIANGLE_HEIGHT * longest)
+        lex_error(&p->lx, "degenerate triangle: a sliver whose smallest height is %g, under "
+                  "SCN_MIN_TRIANGLE_HEIGHT (%g)", area2 / longest, SCN_MIN_TRIANGLE_HEIGHT);
 }
 
 static void parse_ellipsoid(struct parser *p, struct sd_prim *pr, int sphere)
