@@ -87,9 +87,10 @@ void lex_next(struct lex *lx)
         lex_take(lx, &n);
     } else if (isalpha(c) || c == '_') {
         lx->kind = LEX_WORD;
-        while (isalnum(lex_peekc(lx)) || strchr("_.-", lex_peekc(lx)) != NULL)
-            if (lex_peekc(lx))
-                lex_take(lx, &n);
+        /* (strchr finds the terminating NUL too: the end of the text is
+         * tested first, or a word at the very end never ends) */
+        while (lex_peekc(lx) && (isalnum(lex_peekc(lx)) || strchr("_.-", lex_peekc(lx))))
+            lex_take(lx, &n);
     } else if (isdigit(c) || c == '-' || c == '+' || c == '.') {
         lx->kind = LEX_NUMBER;
         while (lex_peekc(lx) && !isspace(lex_peekc(lx)) &&
