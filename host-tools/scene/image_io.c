@@ -53,7 +53,8 @@ static int image_read_png(FILE *f, const char *path, struct image *img, char *er
     png_structp png =
         png_create_read_struct(PNG_LIBPNG_VER_STRING, perr, image_png_error, image_png_warning);
     png_infop info = png ? png_create_info_struct(png) : NULL;
-    uint8_t **rows = NULL;
+    /* volatile: it is set after setjmp and freed after the longjmp back */
+    uint8_t **volatile rows = NULL;
     if (!png || !info) {
         snprintf(err, errlen, "%s: out of memory", path);
         png_destroy_read_struct(&png, &info, NULL);

@@ -23,18 +23,19 @@ export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 # -close_fd_mask=3: the code's own prints are not wanted; libFuzzer and the
 # sanitizers still report on a copy of stderr.
+start=$SECONDS
 "$bin" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2560 -print_final_stats=1 \
     -close_fd_mask=3 -artifact_prefix="$crashes/" "$work" >"$log" 2>&1
 rc=$?
+wall=$((SECONDS - start))
 execs=$(sed -n 's/^stat::number_of_executed_units: *//p' "$log" | tail -1)
-time=$(sed -n 's/^Done [0-9]* runs in \([0-9]*\) second.*/\1/p' "$log" | tail -1)
 last=$(grep -E '^#[0-9]+' "$log" | tail -1)
 cov=$(echo "$last" | sed -n 's/.* cov: \([0-9]*\).*/\1/p')
 ft=$(echo "$last" | sed -n 's/.* ft: \([0-9]*\).*/\1/p')
 corp=$(echo "$last" | sed -n 's/.* corp: \([0-9]*\).*/\1/p')
 ncrash=$(find "$crashes" -type f \( -name 'crash-*' -o -name 'leak-*' -o -name 'timeout-*' \
     -o -name 'oom-*' \) -newer "$bin" | wc -l)
-echo "fuzz $name: ${execs:-?} executions in ${time:-$seconds} s, coverage ${cov:-?} edges" \
+echo "fuzz $name: ${execs:-?} executions in $wall s, coverage ${cov:-?} edges" \
     "(${ft:-?} features), corpus ${corp:-?}, crashes $ncrash (log $log)"
 if [ "$rc" -ne 0 ]; then
     grep -E '^(==[0-9]+==ERROR|SUMMARY|.*runtime error)' "$log" | head -5 | sed 's/^/    /'
