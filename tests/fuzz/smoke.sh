@@ -6,23 +6,24 @@
 # sanitizer report.
 set -u
 cd "$(dirname "$0")/../.."
-runs=${FUZZ_SMOKE_RUNS:-2000}
+runs=${FUZZ_SMOKE_RUNS:-10000}
 names=$(sed -n 's/^FUZZERS += //p' tests/fuzz/module.mk)
 for name in $names; do
+    check=fuzz_smoke_${name#fuzz_}
     bin=build/fuzz/$name
     if [ ! -x "$bin" ]; then
-        echo "FAIL fuzz_smoke_$name: $bin is missing (make fuzz-build)"
+        echo "FAIL $check: $bin is missing (make fuzz-build)"
         continue
     fi
     seeds=tests/fuzz/corpus/$name
     nseeds=$(ls "$seeds" 2>/dev/null | wc -l)
     if [ "$nseeds" -eq 0 ]; then
-        echo "FAIL fuzz_smoke_$name: no seed corpus in $seeds"
+        echo "FAIL $check: no seed corpus in $seeds"
         continue
     fi
     work=$(mktemp -d)
     art=$(mktemp -d)
-    log=build/test-logs/fuzz_smoke_$name.fuzz.log
+    log=build/test-logs/$check.fuzz.log
     mkdir -p build/test-logs
     cp "$seeds"/* "$work"/
     ASAN_OPTIONS=detect_leaks=1 "$bin" -seed=1 -runs="$runs" -timeout=20 \
@@ -30,9 +31,9 @@ for name in $names; do
     rc=$?
     done_line=$(grep -E '^Done [0-9]+ runs' "$log" | tail -1)
     if [ $rc -eq 0 ] && [ -n "$done_line" ] && [ -z "$(ls "$art")" ]; then
-        echo "PASS fuzz_smoke_$name ($nseeds seeds; $done_line)"
+        echo "PASS $check ($nseeds seeds; $done_line)"
     else
-        echo "FAIL fuzz_smoke_$name: exit $rc, $(ls "$art" | head -3 | tr '\n' ' ')" \
+        echo "FAIL $check: exit $rc, $(ls "$art" | head -3 | tr '\n' ' ')" \
             "$(grep -E 'ERROR|runtime error' "$log" | head -2 | tr '\n' ' ') (log $log)"
     fi
     rm -rf "$work" "$art"
