@@ -17,9 +17,9 @@ void image_free(struct image *img)
     img->width = img->height = 0;
 }
 
-static int image_alloc(struct image *img, int w, int h)
+static int image_alloc(struct image *img, int w, int h, int max_side)
 {
-    if (w <= 0 || h <= 0 || w > IMAGE_MAX_SIDE || h > IMAGE_MAX_SIDE)
+    if (w <= 0 || h <= 0 || w > max_side || h > max_side)
         return -1;
     img->rgb = malloc((size_t)w * (size_t)h * 3);
     if (!img->rgb)
@@ -46,8 +46,8 @@ static void image_png_warning(png_structp png, png_const_charp msg)
 /* The low-level API, with no gamma handling at all: the 8-bit values are
  * taken as stored (POV-Ray's files carry a gAMA chunk that the simplified
  * API would "correct"; maps and frames here are linear values). */
-static int image_read_png(FILE *f, const char *path, struct image *img, char *err,
-                          size_t errlen)
+static int image_read_png(FILE *f, const char *path, int max_side, struct image *img,
+                          char *err, size_t errlen)
 {
     char perr[IMAGE_ERR_ROOM] = "";
     png_structp png =
@@ -82,8 +82,10 @@ static int image_read_png(FILE *f, const char *path, struct image *img, char *er
     }
     png_read_update_info(png, info);
     if (png_get_rowbytes(png, info) != (size_t)w * 3 ||
-        image_alloc(img, (int)w, (int)h) != 0) {
-        snprintf(err, errlen, "%s: %ux%u image is too large or of an unusual layout", path, w, h);
+        w > (png_uint_32)max_side || h > (png_uint_32)max_side ||
+        image_alloc(img, (int)w, (int)h, max_side) != 0) {
+        snprintf(err, errlen, "%s: %ux%u image is larger than %d a side or of an unusual layout",
+                 path, w, h, max_side);
         png_destroy_read_struct(&png, &info, NULL);
         return -1;
     }
@@ -123,8 +125,8 @@ static int image_ppm_number(FILE *f, int *out)
     return digits > 0 ? 0 : -1; /* the one white space after it is consumed */
 }
 
-static int image_read_ppm(FILE *f, const char *path, struct image *img, char *err,
-                          size_t errlen)
+static int image_read_ppm(FILE *f, const char *path, int max_side, struct image *img,
+                          char *err, size_t errlen)
 {
     int w, h, maxval;
     if (image_ppm_number(f, &w) || image_ppm_number(f, &h) ||
@@ -132,8 +134,8 @@ static int image_read_ppm(FILE *f, const char *path, struct image *img, char *er
         snprintf(err, errlen, "%s: bad P6 header (want width, height, 255)", path);
         return -1;
     }
-    if (image_alloc(img, w, h) != 0) {
-        snprintf(err, errlen, "%s: %dx%d image is too large", path, w, h);
+    if (image_alloc(img, w, h, max_side) != 0) {
+        snprintf(err, errlen, "%s: %dx%d image is larger than %d a side", path, w, h, max_side);
         return -1;
     }
     size_t n = (size_t)w * (size_t)h * 3;
@@ -147,6 +149,11 @@ static int image_read_ppm(FILE *f, const char *path, struct image *img, char *er
 
 int image_read(const char *path, struct image *img, char *err, size_t errlen)
 {
+    return image_read_max(path, IMAGE_MAX_SIDE, img, err, errlen);
+}
+
+int image_read_max(const char *path, int max_side, struct image *img, char *err, size_t errlen)
+{
     memset(img, 0, sizeof *img);
     FILE *f = fopen(path, "rb");
     if (!f) {
@@ -157,10 +164,10 @@ int image_read(const char *path, struct image *img, char *err, size_t errlen)
     size_t got = fread(magic, 1, 2, f);
     int rc;
     if (got == 2 && magic[0] == 'P' && magic[1] == '6') {
-        rc = image_read_ppm(f, path, img, err, errlen);
+        rc = image_read_ppm(f, path, max_side, img, err, errlen);
     } else {
         rewind(f);
-        rc = image_read_png(f, path, img, err, errlen);
+        rc = image_read_png(f, path, max_side, img, err, errlen);
     }
     fclose(f);
     return rc;

@@ -15,6 +15,10 @@ struct image {
 
 /* Each returns 0, or -1 with a message naming the file and the problem. */
 int image_read(const char *path, struct image *img, char *err, size_t errlen);
+/* Same, refusing an image wider or taller than max_side (<= IMAGE_MAX_SIDE)
+ * from its header, before any pixel is allocated or read. */
+int image_read_max(const char *path, int max_side, struct image *img, char *err,
+                   size_t errlen);
 int image_write_png(const char *path, const struct image *img, char *err, size_t errlen);
 int image_write_ppm(const char *path, const struct image *img, char *err, size_t errlen);
 void image_free(struct image *img);

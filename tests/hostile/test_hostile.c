@@ -6,7 +6,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
+#include "host-tools/scene/image_io.h"
 #include "host-tools/scene/scene_desc.h"
 #include "render/blob.h"
 #include "render/scene_load.h"
@@ -140,6 +142,32 @@ static void check_nesting_text(void)
           "rc %d, \"%s\"", rc, err);
 }
 
+/* A map image one texel wider than SCN_MAX_MAP_SIDE, refused from its
+ * header. */
+static void check_map_image_text(void)
+{
+    char dir[] = "/tmp/links1-hostile.XXXXXX", path[64], scene[64], text[512];
+    struct image img = {1025, 2, calloc(1025 * 2, 3)};
+    char err[SD_ERR_MAX] = "";
+    int rc = -1;
+    if (img.rgb && mkdtemp(dir)) {
+        snprintf(path, sizeof path, "%s/wide.png", dir);
+        snprintf(scene, sizeof scene, "%s/wide.scn", dir);
+        snprintf(text, sizeof text, HEAD "map w colour { image \"wide.png\" }\n" BALL);
+        struct sd_scene s;
+        if (image_write_png(path, &img, err, sizeof err) == 0) {
+            rc = sd_parse_text(scene, text, &s, err, sizeof err);
+            if (rc == 0)
+                sd_free(&s);
+        }
+        remove(path);
+        rmdir(dir);
+    }
+    free(img.rgb);
+    verdict(rc != 0 && strstr(err, "1025x2 image is larger than 1024 a side"),
+            "hostile_text_map_image_too_big", "rc %d, \"%s\"", rc, err);
+}
+
 int main(void)
 {
     struct hostile_scene base;
@@ -178,6 +206,7 @@ int main(void)
               t->expect);
     }
     check_nesting_text();
+    check_map_image_text();
     free(block);
     free(base.buf);
     return failures ? 1 : 0;
