@@ -194,6 +194,30 @@ static int over_frames(struct hostile_scene *h)
     return refix(h);
 }
 
+static int over_total_size(struct hostile_scene *h)
+{
+    wire_put_u32(h->buf + SCN_HDR_TOTAL, SCN_MAX_SIZE + 1);
+    return refix(h);
+}
+
+static int over_density_components(struct hostile_scene *h)
+{
+    uint8_t *p = prim_of(h, SCN_PRIM_DENSITY);
+    if (!p)
+        return -1;
+    wire_put_u32(p + SCN_PRIM_COUNT, SCN_MAX_DENSITY_COMPONENTS + 1);
+    return refix(h);
+}
+
+static int over_phong(struct hostile_scene *h)
+{
+    uint8_t *p = rec(h, SCN_SEC_MATERIALS, SCN_MAT_SIZE, 0);
+    if (!p)
+        return -1;
+    wire_put_u16(p + SCN_MAT_PHONG, SCN_MAX_PHONG + 1);
+    return refix(h);
+}
+
 /* The last cluster (a child of the root) hung below the deepest one. */
 static int nesting(struct hostile_scene *h)
 {
@@ -346,6 +370,10 @@ const struct hostile_class hostile_classes[] = {
     {"over_image_size", "image size 1025x24 outside 1..1024", over_image_size},
     {"over_depth", "max depth 17 over the limit of 16", over_depth},
     {"over_frames", "frame count 100001 not 1..100000", over_frames},
+    {"over_total_size", "total size 16777217 is over the limit of 16777216 bytes",
+     over_total_size},
+    {"over_density_components", "prim 2: component count not 1..64", over_density_components},
+    {"over_phong", "material 0: phong n over 1024", over_phong},
     {"nesting", "cluster 33: nested deeper than 32", nesting},
     {"forward_parent", "cluster 1: parent index not below its own", forward_parent},
     {"overlap", "overlaps another section", overlap},
