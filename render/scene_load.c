@@ -107,9 +107,13 @@ static uint32_t load_bits_of(float f)
 
 static int load_finite(uint32_t bits) { return (bits & LOAD_F32_EXP_MASK) != LOAD_F32_EXP_MASK; }
 
-/* An unsigned key that orders finite binary32 values as the reals do. */
+/* An unsigned key that orders finite binary32 values as the reals do;
+ * -0 and +0 are the same real (the compiler writes -0 for a "-0." it
+ * read, which is within 0..1). */
 static uint32_t load_order_key(uint32_t bits)
 {
+    if (bits == LOAD_F32_SIGN)
+        bits = 0;
     return (bits & LOAD_F32_SIGN) ? ~bits : bits | LOAD_F32_SIGN;
 }
 
