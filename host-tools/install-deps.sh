@@ -4,7 +4,7 @@
 # exact command to run and fails.
 set -eu
 need_pkgs=(make gcc libc6-dev libpng-dev gcc-arm-none-eabi picolibc-arm-none-eabi
-           libnewlib-arm-none-eabi qemu-system-arm povray python3)
+           libnewlib-arm-none-eabi qemu-system-arm povray python3 libassimp-dev)
 missing=()
 for p in "${need_pkgs[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" ||

@@ -16,6 +16,19 @@
 
 static double sd_snap(double v) { return fabs(v) < SD_SNAP ? 0 : v; }
 
+#define SD_MIN_TRIANGLE_AREA 1e-12 /* |e1 x e2|, twice the area */
+
+int sd_triangle_degenerate(const double v[9])
+{
+    double e1[3], e2[3], c[3];
+    for (int i = 0; i < 3; i++)
+        e1[i] = v[3 + i] - v[i], e2[i] = v[6 + i] - v[i];
+    c[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    c[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    c[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    return !(sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) >= SD_MIN_TRIANGLE_AREA);
+}
+
 void sd_mat_mul(const double a[12], const double b[12], double out[12])
 {
     for (int r = 0; r < 3; r++) {

@@ -17,7 +17,6 @@
 #define PARSE_DEFAULT_FOV 45.0
 #define PARSE_DEFAULT_DEPTH 5
 #define PARSE_DEFAULT_FALLOFF 5.0 /* degrees of a spotlight's soft edge */
-#define PARSE_MIN_TRIANGLE_AREA 1e-12
 #define PARSE_DIR_MAX 1024        /* directory part of a scene file's path */
 
 struct parser {
@@ -48,5 +47,6 @@ int parse_transform(struct parser *p, double m[12]); /* scene_parse_objects.c;
                                                        0 if not a transform */
 void parse_key(struct parser *p, int cluster);
 void parse_prim(struct parser *p, int cluster, int material);
+void parse_model(struct parser *p, int cluster, int nesting); /* scene_parse_model.c */
 
 #endif

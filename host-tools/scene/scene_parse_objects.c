@@ -159,13 +159,7 @@ static void parse_triangle(struct parser *p, struct sd_prim *pr)
         lex_error(&p->lx, "triangle has %d vertices, needs 3", nv);
     if (nuv != 0 && nuv != 3)
         lex_error(&p->lx, "triangle has %d uv pairs, needs 0 or 3", nuv);
-    double e1[3], e2[3], c[3];
-    for (int i = 0; i < 3; i++)
-        e1[i] = v[3 + i] - v[i], e2[i] = v[6 + i] - v[i];
-    c[0] = e1[1] * e2[2] - e1[2] * e2[1];
-    c[1] = e1[2] * e2[0] - e1[0] * e2[2];
-    c[2] = e1[0] * e2[1] - e1[1] * e2[0];
-    if (sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) < PARSE_MIN_TRIANGLE_AREA)
+    if (sd_triangle_degenerate(v))
         lex_error(&p->lx, "degenerate triangle (its vertices are on one line)");
 }
 
