@@ -8,6 +8,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <strings.h>
 
 #include "host-tools/scene/model.h"
 #include "proto/scene_format.h"
@@ -160,6 +161,13 @@ static void model_copy_material(struct model_material *d, const struct aiMateria
         model_name(d->name, &s);
     d->shininess_strength = 1;
     d->opacity = 1;
+    /* A material the library made up for a file without one (STL, PLY,
+     * OBJ without MTL): white and fully specular there; the scene's
+     * defaults here. */
+    if (!d->name[0] || strcmp(d->name, AI_DEFAULT_MATERIAL_NAME) == 0) {
+        snprintf(d->name, sizeof d->name, "default");
+        return;
+    }
     if (model_colour(a, AI_MATKEY_COLOR_DIFFUSE, d->diffuse) ||
         model_colour(a, AI_MATKEY_BASE_COLOR, d->diffuse))
         d->have |= MODEL_HAVE_DIFFUSE;
@@ -186,19 +194,25 @@ static void model_copy_material(struct model_material *d, const struct aiMateria
     }
 }
 
-static void model_copy_camera(struct model *m, const struct aiScene *sc)
+/* The first camera.  Its position is relative to the node of its name;
+ * the glTF 2 reader also copies that node's translation into it, where the
+ * format puts a camera at its node's origin, so there it is left out.
+ * mHorizontalFOV is taken as the full angle, as the readers fill it. */
+static void model_copy_camera(struct model *m, const struct aiScene *sc, int gltf)
 {
     const struct aiCamera *c = sc->mCameras[0];
+    struct aiVector3D pos = c->mPosition;
+    if (gltf)
+        pos.x = pos.y = pos.z = 0;
     const struct aiNode *n = model_find_node(sc->mRootNode, &c->mName);
     struct aiMatrix4x4 w = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
     if (n)
         model_world(n, &w);
-    struct aiVector3D at = {c->mPosition.x + c->mLookAt.x, c->mPosition.y + c->mLookAt.y,
-                            c->mPosition.z + c->mLookAt.z};
-    model_xform(&w, &c->mPosition, 1, m->camera.eye);
+    struct aiVector3D at = {pos.x + c->mLookAt.x, pos.y + c->mLookAt.y, pos.z + c->mLookAt.z};
+    model_xform(&w, &pos, 1, m->camera.eye);
     model_xform(&w, &at, 1, m->camera.look_at);
     model_xform(&w, &c->mUp, 0, m->camera.up);
-    m->camera.fov = 2 * c->mHorizontalFOV * 180 / M_PI;
+    m->camera.fov = c->mHorizontalFOV * 180 / M_PI;
     m->camera.aspect = c->mAspect;
     m->have_camera = 1;
 }
@@ -232,7 +246,7 @@ static void model_copy_lights(struct model *m, const struct aiScene *sc)
     }
 }
 
-static int model_copy(struct model *m, const struct aiScene *sc)
+static int model_copy(struct model *m, const struct aiScene *sc, int gltf)
 {
     int nodes = 0, refs = 0;
     model_count(sc->mRootNode, &nodes, &refs);
@@ -250,9 +264,15 @@ static int model_copy(struct model *m, const struct aiScene *sc)
     for (unsigned i = 0; i < sc->mNumMaterials; i++, m->n_materials++)
         model_copy_material(&m->materials[i], sc->mMaterials[i]);
     if (sc->mNumCameras > 0)
-        model_copy_camera(m, sc);
+        model_copy_camera(m, sc, gltf);
     model_copy_lights(m, sc);
     return 0;
+}
+
+static int model_is_gltf(const char *path)
+{
+    const char *dot = strrchr(path, '.');
+    return dot && (strcasecmp(dot, ".gltf") == 0 || strcasecmp(dot, ".glb") == 0);
 }
 
 int model_load(const char *path, struct model *m, char *err, size_t errlen)
@@ -270,7 +290,7 @@ int model_load(const char *path, struct model *m, char *err, size_t errlen)
         snprintf(err, errlen, "%s: the model library read it only in part (incomplete scene)",
                  path);
         rc = -1;
-    } else if (model_copy(m, sc) != 0) {
+    } else if (model_copy(m, sc, model_is_gltf(path)) != 0) {
         snprintf(err, errlen, "%s: out of memory copying the model", path);
         rc = -1;
     }

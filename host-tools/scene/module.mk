@@ -76,3 +76,10 @@ test_scene_load_float_LIBS := $(SCENE_TEXT_LIBS)
 test_scene_load_fixed_SRCS := $(test_scene_load_SRCS)
 test_scene_load_fixed_ARITH := fixed
 test_scene_load_fixed_LIBS := $(SCENE_TEXT_LIBS)
+
+# Models made elsewhere: each format, the material mapping, bad models,
+# the model statement (tests/models/).
+HOST_TESTS += test_scene_import
+test_scene_import_SRCS := tests/host/test_scene_import.c $(SCENE_TEXT_SRCS)
+test_scene_import_ARITH := double
+test_scene_import_LIBS := $(SCENE_TEXT_LIBS)

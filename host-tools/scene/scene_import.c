@@ -120,11 +120,12 @@ static int imp_place(struct imp *im)
         } else {
             memcpy(im->world[k], n->m, sizeof im->world[k]);
         }
-        if (im->o->nesting + 1 + depth[k] > SCN_MAX_CLUSTER_NESTING) {
+        int nest = im->o->nesting + 1 + depth[k];
+        if (nest > SCN_MAX_CLUSTER_NESTING) {
             free(depth);
             return imp_fail(im, "node '%s' is nested %d deep, more than the %d clusters may "
                                 "nest",
-                            n->name, im->o->nesting + 1 + depth[k], SCN_MAX_CLUSTER_NESTING);
+                            n->name, nest, SCN_MAX_CLUSTER_NESTING);
         }
         for (int i = 0; i < 12; i++) {
             if ((i % 4) != 3 && fabs(n->m[i]) > SCN_MAX_COORD) {
