@@ -216,22 +216,31 @@ static void write_3ds(const char *path)
     fclose(f);
 }
 
+/* tests/models/tetra.3ds is what write_3ds writes (3DS has no text form). */
 static void test_3ds(void)
 {
     char path[] = "/tmp/links1-test-import-XXXXXX.3ds";
     close(mkstemps(path, 4));
     write_3ds(path);
+    char a[512], b[512];
+    FILE *fa = fopen(path, "rb"), *fb = fopen(MODELS "tetra.3ds", "rb");
+    size_t na = fa ? fread(a, 1, sizeof a, fa) : 0, nb = fb ? fread(b, 1, sizeof b, fb) : 1;
+    CHECK(na > 0 && na == nb && memcmp(a, b, na) == 0);
+    if (fa)
+        fclose(fa);
+    if (fb)
+        fclose(fb);
+    unlink(path);
     struct sd_scene s;
     struct model m;
     char err[SD_ERR_MAX] = "";
-    CHECK(import(path, 0, &s, &res, &m, err, sizeof err) == 0);
+    CHECK(import(MODELS "tetra.3ds", 0, &s, &res, &m, err, sizeof err) == 0);
     if (err[0])
         printf("  %s\n", err);
     CHECK_EQ_INT(res.triangles, 4);
     const struct sd_material *red = material(&s, "red");
     CHECK(red && fabs(red->drc - 0.8) < 1e-6 && fabs(red->colour[1] - 0.25) < 1e-6);
     sd_free(&s), model_free(&m);
-    unlink(path);
 }
 
 /* The import written as text reads back to the same scene. */
