@@ -1,7 +1,8 @@
 /* scene_parse.h: the parser's state and the pieces its files share
  * (scene_parse.c: helpers, global statements, clusters, entry points;
  * scene_parse_looks.c: maps and materials; scene_parse_objects.c:
- * transforms, keys and primitives).  Private to the parser.
+ * transforms, keys and primitives; scene_parse_model.c: the model
+ * statement).  Private to the parser.
  */
 #ifndef LINKS1_HOST_SCENE_PARSE_H
 #define LINKS1_HOST_SCENE_PARSE_H
