@@ -5,7 +5,7 @@
 
 #include "drivers/serial/hostlink_tx.h"
 #include "kernel/cpu.h"
-#include "kernel/kfmt.h"
+#include "proto/textfmt.h"
 #include "proto/hostlink.h"
 
 void klog(const char *fmt, ...)
@@ -13,11 +13,11 @@ void klog(const char *fmt, ...)
     struct cpu *c = mycpu();
     /* Formatted in the core's own buffer: klog is never called from an
      * interrupt handler, so one buffer per core suffices. */
-    int n = kfmt_snprintf(c->logbuf, sizeof c->logbuf, "core %u %s: ",
-                          (unsigned)c->core, cpu_role_name(c->role));
+    int n = fmt_snprintf(c->logbuf, sizeof c->logbuf, "core %u %s: ",
+                         (unsigned)c->core, cpu_role_name(c->role));
     va_list ap;
     va_start(ap, fmt);
-    int m = kfmt_vsnprintf(c->logbuf + n, sizeof c->logbuf - (size_t)n, fmt, ap);
+    int m = fmt_vsnprintf(c->logbuf + n, sizeof c->logbuf - (size_t)n, fmt, ap);
     va_end(ap);
     size_t len = (size_t)n + (size_t)m;
     if (len >= sizeof c->logbuf)

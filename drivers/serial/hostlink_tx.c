@@ -4,12 +4,12 @@
 #include <stdarg.h>
 
 #include "drivers/serial/uart.h"
-#include "kernel/kfmt.h"
 #include "kernel/param.h"
 #include "kernel/panic.h"
 #include "kernel/spinlock.h"
 #include "proto/crc32.h"
 #include "proto/hostlink.h"
+#include "proto/textfmt.h"
 #include "proto/wire.h"
 
 static struct spinlock hostlink_tx_lock = SPINLOCK_INIT("hostlink_tx");
@@ -65,7 +65,7 @@ void hostlink_error(uint16_t cmd, int16_t status, const char *fmt, ...)
     char text[KLOG_MAX];
     va_list ap;
     va_start(ap, fmt);
-    int n = kfmt_vsnprintf(text, sizeof text, fmt, ap);
+    int n = fmt_vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
     if (n >= (int)sizeof text)
         n = (int)sizeof text - 1;
