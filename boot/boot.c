@@ -4,6 +4,7 @@
 #include <stdint.h>
 
 #include "drivers/imsu/imsu.h"
+#include "drivers/serial/hostlink_tx.h"
 #include "drivers/serial/line.h"
 #include "drivers/serial/uart.h"
 #include "kernel/arch.h"
@@ -12,10 +13,12 @@
 #include "kernel/gic.h"
 #include "kernel/kmem.h"
 #include "kernel/klog.h"
+#include "kernel/ktime.h"
 #include "kernel/memlayout.h"
 #include "kernel/panic.h"
 #include "kernel/param.h"
 #include "kernel/psci.h"
+#include "kernel/task.h"
 #include "roles/unit.h"
 
 void boot_main(void) __attribute__((noreturn));
@@ -67,13 +70,38 @@ static uint32_t boot_count_cores(void)
     return n;
 }
 
+/* Sleeps until core k has booted (cpu_boot_done rings this core's
+ * doorbell) or halted.  One core at a time: the cores report in one after
+ * the other, so none waits for the host link, and the work of a boot is
+ * the same every time.  A core slower than BOOT_CORE_WAIT_MS only loses
+ * its turn: the next one starts anyway. */
+static void boot_wait_core(uint32_t k)
+{
+    const struct cpu *c = cpu_of(k);
+    uint64_t deadline = ktime_deadline_ms(BOOT_CORE_WAIT_MS);
+    for (;;) {
+        uint32_t mark = task_event_mark();
+        if (c->boot_done || c->halted)
+            return;
+        if (ktime_passed(deadline)) {
+            klog("core %u has not booted within %u ms; starting the next core",
+                 (unsigned)k, (unsigned)BOOT_CORE_WAIT_MS);
+            return;
+        }
+        task_wait(mark, deadline);
+    }
+}
+
 void boot_main(void)
 {
     cpu_init(0);
+    uart_init();         // PL011 on: the host link transmits from here
+    hostlink_tx_init();  // log sink: klog, panics and faults reach the host
     boot_check_layout();
-    gic_dist_init();   // interrupt distributor
-    gic_cpu_init();    // this core's redistributor and CPU interface
-    uart_init();       // host link receive ring and interrupt
+    gic_dist_init();     // interrupt distributor
+    gic_cpu_init();      // this core's redistributor and CPU interface
+    ktime_init();        // timer interrupt handler
+    uart_rx_start();     // host link receive interrupt
     boot_check_ram();  // QEMU gave the memory the linker script carved
     uint32_t n = boot_count_cores();
     if (n < MIN_CORES)
@@ -91,6 +119,8 @@ void boot_main(void)
         if (r != PSCI_RET_SUCCESS)
             klog("PSCI CPU_ON of core %u (mpidr 0x%x) failed: %d", (unsigned)k,
                  (unsigned)cpu_mpidr_of_core(k), r);
+        else
+            boot_wait_core(k);
     }
     unit_start();
 }
@@ -99,7 +129,8 @@ void boot_secondary(void)
 {
     uint32_t core = cpu_core_from_mpidr(arch_read_mpidr());
     cpu_init(core);
+    gic_cpu_init();                // redistributor and CPU interface: doorbells
+                                   // wake this core from here (spinlock.h)
     kmem_init(core, board_ncores); // this unit computer's private memory
-    gic_cpu_init();                // redistributor and CPU interface
     unit_start();
 }

@@ -1,15 +1,15 @@
-/* fault.c: panics and CPU exceptions end here: report on the host link,
- * then halt this core only (see panic.h). */
+/* fault.c: panics and CPU exceptions end here: report through the log sink
+ * (kernel/klog.h), then halt this core only (see panic.h). */
 #include "kernel/panic.h"
 
 #include <stdarg.h>
 
-#include "drivers/serial/hostlink_tx.h"
 #include "kernel/arch.h"
 #include "kernel/cpu.h"
-#include "proto/textfmt.h"
+#include "kernel/klog.h"
 #include "kernel/spinlock.h"
 #include "proto/hostlink.h"
+#include "proto/textfmt.h"
 
 /* boot/vectors.S passes the kind as a number. */
 _Static_assert(FAULT_UNDEF == 1 && FAULT_PREFETCH_ABORT == 2 && FAULT_DATA_ABORT == 3 &&
@@ -53,7 +53,7 @@ static void fault_report(uint32_t kind, uint32_t addr, uint32_t pc, uint32_t sta
     int n = fmt_snprintf((char *)p + LINK_FAULT_FIXED_SIZE, KLOG_MAX, "%s", text);
     if (n >= KLOG_MAX)
         n = KLOG_MAX - 1;
-    hostlink_send(LINK_FAULT, 0, p, LINK_FAULT_FIXED_SIZE + (size_t)n);
+    klog_emit(LINK_FAULT, p, LINK_FAULT_FIXED_SIZE + (size_t)n);
 
     char line[KLOG_MAX];
     n = fmt_snprintf(line, sizeof line,
@@ -62,7 +62,7 @@ static void fault_report(uint32_t kind, uint32_t addr, uint32_t pc, uint32_t sta
                      (unsigned)pc, (unsigned)addr, (unsigned)status, text);
     if (n >= (int)sizeof line)
         n = (int)sizeof line - 1;
-    hostlink_send(LINK_LOG, 0, line, (size_t)n);
+    klog_emit(LINK_LOG, line, (size_t)n);
 }
 
 void panic(const char *fmt, ...)

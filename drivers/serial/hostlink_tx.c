@@ -4,6 +4,7 @@
 #include <stdarg.h>
 
 #include "drivers/serial/uart.h"
+#include "kernel/klog.h"
 #include "kernel/param.h"
 #include "kernel/panic.h"
 #include "kernel/spinlock.h"
@@ -70,4 +71,15 @@ void hostlink_error(uint16_t cmd, int16_t status, const char *fmt, ...)
     if (n >= (int)sizeof text)
         n = (int)sizeof text - 1;
     hostlink_result(cmd, status, text, (size_t)n);
+}
+
+/* The kernel's log sink: klog lines and fault reports. */
+static void hostlink_log_sink(uint8_t type, const void *payload, size_t len)
+{
+    hostlink_send(type, 0, payload, len);
+}
+
+void hostlink_tx_init(void)
+{
+    klog_set_sink(hostlink_log_sink);
 }
