@@ -70,17 +70,28 @@ static uint32_t boot_count_cores(void)
     return n;
 }
 
-/* Sleeps until core k has booted (cpu_boot_done rings this core's
- * doorbell) or halted.  One core at a time: the cores report in one after
- * the other, so none waits for the host link, and the work of a boot is
- * the same every time.  A core slower than BOOT_CORE_WAIT_MS only loses
- * its turn: the next one starts anyway. */
-static void boot_wait_core(uint32_t k)
+/* Starts core k and sleeps until it has booted (cpu_boot_done rings this
+ * core's doorbell) or halted.  One core at a time: the cores report in one
+ * after the other, so none waits for the host link, and the work of a boot
+ * is the same every time.  The mark is taken before CPU_ON and the first
+ * wait is unconditional, so this core does the same whether the doorbell
+ * comes before or after it looks.  A core slower than BOOT_CORE_WAIT_MS
+ * only loses its turn: the next one starts anyway. */
+static void boot_start_core(uint32_t k)
 {
     const struct cpu *c = cpu_of(k);
     uint64_t deadline = ktime_deadline_ms(BOOT_CORE_WAIT_MS);
+    uint32_t mark = task_event_mark();
+    int r = psci_call(PSCI_CPU_ON, cpu_mpidr_of_core(k), (uint32_t)(uintptr_t)secondary_entry,
+                      k);
+    if (r != PSCI_RET_SUCCESS) {
+        klog("PSCI CPU_ON of core %u (mpidr 0x%x) failed: %d", (unsigned)k,
+             (unsigned)cpu_mpidr_of_core(k), r);
+        return;
+    }
     for (;;) {
-        uint32_t mark = task_event_mark();
+        task_wait(mark, deadline);
+        mark = task_event_mark();
         if (c->boot_done || c->halted)
             return;
         if (ktime_passed(deadline)) {
@@ -88,7 +99,6 @@ static void boot_wait_core(uint32_t k)
                  (unsigned)k, (unsigned)BOOT_CORE_WAIT_MS);
             return;
         }
-        task_wait(mark, deadline);
     }
 }
 
@@ -102,26 +112,19 @@ void boot_main(void)
     gic_cpu_init();      // this core's redistributor and CPU interface
     ktime_init();        // timer interrupt handler
     uart_rx_start();     // host link receive interrupt
-    boot_check_ram();  // QEMU gave the memory the linker script carved
+    boot_check_ram();    // QEMU gave the memory the linker script carved
     uint32_t n = boot_count_cores();
     if (n < MIN_CORES)
         panic("the board has %u core(s); links1 needs at least %u (DM, RC, one NC)",
               (unsigned)n, (unsigned)MIN_CORES);
     board_ncores = n;
-    kmem_init(0, n);   // the DM's private memory
-    line_init_all(n);  // serial line rings DM<->RC, RC<->NCs
-    imsu_init_all(n);  // IMSU block pair and broadcast block
+    kmem_init(0, n);     // the DM's private memory
+    line_init_all(n);    // serial line rings DM<->RC, RC<->NCs
+    imsu_init_all(n);    // IMSU block pair and broadcast block
     /* Everything above is in memory before any other core can look. */
     arch_dsb();
-    for (uint32_t k = 1; k < n; k++) {
-        int r = psci_call(PSCI_CPU_ON, cpu_mpidr_of_core(k),
-                          (uint32_t)(uintptr_t)secondary_entry, k);
-        if (r != PSCI_RET_SUCCESS)
-            klog("PSCI CPU_ON of core %u (mpidr 0x%x) failed: %d", (unsigned)k,
-                 (unsigned)cpu_mpidr_of_core(k), r);
-        else
-            boot_wait_core(k);
-    }
+    for (uint32_t k = 1; k < n; k++)
+        boot_start_core(k);
     unit_start();
 }
 

@@ -9,3 +9,6 @@ test_ringbuf_SRCS := tests/host/test_ringbuf.c kernel/ringbuf.c
 test_ringbuf_ARITH := double
 test_fdt_SRCS := tests/host/test_fdt.c kernel/fdt.c
 test_fdt_ARITH := double
+
+# Idle boots do the same work every time: no core waits by looping.
+BOARD_TESTS += tests/board/idle_insns.sh
