@@ -1,4 +1,5 @@
-# proto/: wire and file formats shared by the firmware and the host tools.
+# proto/: wire and file formats, and the text formatter, shared by the
+# firmware and the host tools.
 SHARED_SRCS += proto/crc32.c proto/hostlink.c proto/textfmt.c
 
 # The shared formatter against the host's snprintf.
