@@ -38,6 +38,7 @@ struct render_opts {
     int max_depth;      /* --max-depth, -1 = the scene's */
     int refractionless; /* --refractionless on|off: 1 / 0, -1 = the scene's */
     int ppm, count_insns;
+    int no_auto_hierarchy; /* --no-auto-hierarchy (text scenes) */
 };
 
 static void render_usage(FILE *out)
@@ -60,6 +61,7 @@ static void render_usage(FILE *out)
             "                   override the scene's recursion depth / transmission past it\n"
             "  --no-yclip --no-xclip --no-bbox --no-hierarchy\n"
             "                   switch a speed-up off (the image stays the same)\n"
+            "  --no-auto-hierarchy  compile without the automatic hierarchy (text scenes)\n"
             "  --view           show the frame memory live (-device ramfb, a display)\n"
             "  --ppm            write PPM (also chosen by an OUT ending in .ppm)\n"
             "  --count-insns    count guest instructions per core and print them\n"
@@ -159,6 +161,8 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
             o->args.flags |= LINK_RENDER_NO_BBOX;
         } else if (strcmp(a, "--no-hierarchy") == 0) {
             o->args.flags |= LINK_RENDER_NO_HIERARCHY;
+        } else if (strcmp(a, "--no-auto-hierarchy") == 0) {
+            o->no_auto_hierarchy = 1;
         } else if (strcmp(a, "--view") == 0) {
             o->board.view = 1;
         } else if (strcmp(a, "--ppm") == 0) {
@@ -210,6 +214,8 @@ static int render_scene_bytes(const struct render_opts *o, const char *path, uin
         }
         if (o->max_depth >= 0)
             s.view.max_depth = o->max_depth;
+        if (o->no_auto_hierarchy)
+            s.no_auto_hierarchy = 1;
         if (o->refractionless >= 0)
             s.view.flags = o->refractionless ? s.view.flags | SCN_OPT_REFRACTIONLESS
                                              : s.view.flags & ~SCN_OPT_REFRACTIONLESS;
@@ -219,8 +225,9 @@ static int render_scene_bytes(const struct render_opts *o, const char *path, uin
             fprintf(stderr, "links1 render: %s: %s\n", path, err);
         return rc;
     }
-    if (o->width || o->max_depth >= 0 || o->refractionless >= 0) {
-        fprintf(stderr, "links1 render: %s: --size, --max-depth and --refractionless need a text "
+    if (o->width || o->max_depth >= 0 || o->refractionless >= 0 || o->no_auto_hierarchy) {
+        fprintf(stderr, "links1 render: %s: --size, --max-depth, --refractionless and "
+                "--no-auto-hierarchy need a text "
                 "scene, not a compiled one\n", path);
         return -1;
     }

@@ -357,12 +357,19 @@ void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit)
     }
 }
 
-int prim_aabb_hit(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax)
+int prim_aabb_entry(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax, num_t *entry)
 {
     num_t tnear = tmin, tfar = tmax;
     for (int axis = 0; axis < 3; axis++)
         if (!prim_slab(vec3_get(ray->origin, axis), vec3_get(ray->dir, axis),
                        vec3_get(b->lo, axis), vec3_get(b->hi, axis), &tnear, &tfar))
             return 0;
+    *entry = tnear;
     return 1;
+}
+
+int prim_aabb_hit(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax)
+{
+    num_t entry;
+    return prim_aabb_entry(b, ray, tmin, tmax, &entry);
 }

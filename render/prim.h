@@ -36,6 +36,8 @@ void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit);
 
 /* Ray-box test: 1 if the ray meets box b at some t in [tmin, tmax]. */
 int prim_aabb_hit(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax);
+/* The same, with *entry the t where the ray enters the box (>= tmin). */
+int prim_aabb_entry(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax, num_t *entry);
 
 /* LINKS-1 density field of one component of weight b at squared distance
  * r2, given inv_radius2 = 1/d^2. */

@@ -7,7 +7,7 @@ SHARED_SRCS += render/scene_load.c
 # The text form: tokenizer, parser, transforms, compiler, image files.
 SCENE_TEXT_SRCS := host-tools/scene/scene_lex.c host-tools/scene/scene_parse.c \
 	host-tools/scene/scene_parse_looks.c host-tools/scene/scene_parse_objects.c \
-	host-tools/scene/scene_math.c host-tools/scene/scene_compile.c \
+	host-tools/scene/scene_math.c host-tools/scene/scene_compile.c host-tools/scene/scene_bvh.c \
 	host-tools/scene/image_io.c host-tools/scene/cli_args.c
 
 # Sources of the scene subcommands of `links1` (compile, ref, export-pov,

@@ -28,6 +28,7 @@ static int ref_usage(void)
 {
     fprintf(stderr, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [--arith double|float|soft|"
                     "fixed] [--ppm] [--size WxH] [--frame N | --frames FIRST:LAST]\n"
+                    "  [--no-auto-hierarchy]\n"
                     "  (this is the %s build)\n",
             NUM_NAME);
     return 2;
@@ -42,12 +43,14 @@ static int ref_ends_with(const char *s, const char *suffix)
 /* The compiled bytes of a scene file: read as is (.l1s) or compiled from
  * text.  0, or -1 with err. */
 static int ref_scene_bytes(const char *path, uint8_t **buf, size_t *len, char *err,
-                           size_t errlen, int width, int height)
+                           size_t errlen, int width, int height, int no_auto_hierarchy)
 {
     if (!ref_ends_with(path, ".l1s")) {
         struct sd_scene s;
         if (sd_parse_file(path, &s, err, errlen) != 0)
             return -1;
+        if (no_auto_hierarchy)
+            s.no_auto_hierarchy = 1;
         if (width) { /* --size: the same scene at another resolution */
             s.view.width = width;
             s.view.height = height;
@@ -175,13 +178,15 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
 int main(int argc, char **argv)
 {
     const char *in = NULL, *out = NULL;
-    int ppm = 0, many = 0, width = 0, height = 0;
+    int ppm = 0, many = 0, width = 0, height = 0, no_auto_hierarchy = 0;
     long first = 0, last = 0;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "-o") == 0 && i + 1 < argc) {
             out = argv[++i];
         } else if (strcmp(argv[i], "--ppm") == 0) {
             ppm = 1;
+        } else if (strcmp(argv[i], "--no-auto-hierarchy") == 0) {
+            no_auto_hierarchy = 1;
         } else if (strcmp(argv[i], "--size") == 0 && i + 1 < argc) {
             if (cli_parse_size(argv[++i], &width, &height) != 0) {
                 fprintf(stderr, "links1 ref: --size wants WxH within %dx%d, not '%s'\n",
@@ -211,7 +216,7 @@ int main(int argc, char **argv)
     char err[SD_ERR_MAX];
     uint8_t *bytes = NULL;
     size_t len = 0;
-    if (ref_scene_bytes(in, &bytes, &len, err, sizeof err, width, height) != 0) {
+    if (ref_scene_bytes(in, &bytes, &len, err, sizeof err, width, height, no_auto_hierarchy) != 0) {
         fprintf(stderr, "links1 ref: %s\n", err);
         return 1;
     }
