@@ -61,3 +61,16 @@ test_scene_load_float_LIBS := -lpng
 test_scene_load_fixed_SRCS := $(test_scene_load_SRCS)
 test_scene_load_fixed_ARITH := fixed
 test_scene_load_fixed_LIBS := -lpng
+
+# The automatic hierarchy: tree invariants and the same image on and off,
+# in each arithmetic of the shared renderer.
+HOST_TESTS += test_auto_hierarchy_double test_auto_hierarchy_float test_auto_hierarchy_fixed
+test_auto_hierarchy_double_SRCS := tests/host/test_auto_hierarchy.c $(SCENE_TEXT_SRCS)
+test_auto_hierarchy_double_ARITH := double
+test_auto_hierarchy_double_LIBS := -lpng
+test_auto_hierarchy_float_SRCS := tests/host/test_auto_hierarchy.c $(SCENE_TEXT_SRCS)
+test_auto_hierarchy_float_ARITH := float
+test_auto_hierarchy_float_LIBS := -lpng
+test_auto_hierarchy_fixed_SRCS := tests/host/test_auto_hierarchy.c $(SCENE_TEXT_SRCS)
+test_auto_hierarchy_fixed_ARITH := fixed
+test_auto_hierarchy_fixed_LIBS := -lpng
