@@ -1,8 +1,9 @@
 /* spd_dbs.c: the databases, from the descriptions published with the
  * Standard Procedural Databases (Eric Haines, 1987).  Counts, for size s:
  *   balls   sphereflake: a sphere and nine children a third its size,
- *           recursively, s + 1 levels below the root: (9^(s+2) - 1) / 8
- *           spheres (91 at s = 1, 7,381 at s = 4) on a ground square
+ *           recursively, s levels below the root: (9^(s+1) - 1) / 8
+ *           spheres (10, 91, 820, 7,381 at s = 1..4; with the ground,
+ *           SPD's 7,382 objects at its default size 4) on a ground square
  *   tetra   Sierpinski tetrahedron, s levels: 4^s tetrahedra, 4^(s+1)
  *           triangles (16,384 at s = 6)
  *   mount   fractal mountain, midpoint displacement s times: 2 * 4^s
@@ -82,7 +83,7 @@ void spd_balls(struct spd_out *o, int size, int width, int height)
     spd_material(o, "floor", (const double[3]){1, 0.75, 0.33}, 0.8, 0, 0, 0, 1);
     spd_material(o, "ball", (const double[3]){1, 0.9, 0.7}, 0.5, 0.5, 3, 0, 1);
     ground(o, "floor", 12, -0.5);
-    flake(o, (const double[3]){0, 0, 0}, 0.5, (const double[3]){0, 0, 1}, size + 1);
+    flake(o, (const double[3]){0, 0, 0}, 0.5, (const double[3]){0, 0, 1}, size);
 }
 
 /* --------------------------------------------------------------- tetra */
