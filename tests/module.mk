@@ -30,7 +30,7 @@ RENDER_FULL_TESTS := tests/board/render_grid_full.sh
 test-full: deps
 	$(Q)$(MAKE) --no-print-directory all
 	$(Q)HOST_TESTS= BOARD_TESTS="$(RENDER_FULL_TESTS)" FW_DIR=$(FWB) bash tests/run.sh
-BENCHES += tests/bench/bench_render.sh tests/bench/bench_arith.sh
+BENCHES += tests/bench/bench_render.sh tests/bench/bench_arith.sh tests/bench/bench_scale.sh
 
 # Encodings of the rendering commands and the NC statistics the RC sums.
 HOST_TESTS += test_render_link

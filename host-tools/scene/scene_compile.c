@@ -152,8 +152,10 @@ static int compile_form(const struct sd_scene *s, uint8_t **out, size_t *len, ch
     }
     size_t total = (pos + SCN_SECTION_ALIGN - 1) & ~(size_t)(SCN_SECTION_ALIGN - 1);
     if (total > SCN_MAX_SIZE) {
-        snprintf(err, errlen, "compiled scene is %zu bytes, more than the %u allowed", total,
-                 SCN_MAX_SIZE);
+        snprintf(err, errlen,
+                 "compiled scene is %zu bytes (%d clusters, %d primitives), more than "
+                 "SCN_MAX_SIZE (%u bytes)",
+                 total, s->n_clusters, s->n_prims, SCN_MAX_SIZE);
         return -1;
     }
     uint8_t *b = calloc(1, total);

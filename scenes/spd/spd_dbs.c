@@ -107,9 +107,10 @@ static void tetra(struct spd_out *o, const double (*v)[3], int level)
 
 void spd_tetra(struct spd_out *o, int size, int width, int height)
 {
-    const double from[3] = {1.7, -3.2, 1.6}, at[3] = {0, 0, -0.05}, up[3] = {0, 0, 1};
+    const double from[3] = {1.2, -2.2, 1.1}, at[3] = {0, 0, -0.05}, up[3] = {0, 0, 1};
     spd_view(o, from, at, up, 45, width, height, sky);
-    spd_light(o, (const double[3]){1.85, -2.0, 3.35}, 1);
+    spd_light(o, (const double[3]){1.85, -2.0, 3.35}, 0.8);
+    spd_light(o, (const double[3]){-2.5, -3.0, 0.5}, 0.5);
     spd_material(o, "tetra", (const double[3]){1, 0.2, 0.2}, 0.8, 0, 0, 0, 1);
     const double s = 1 / sqrt(2.0);
     double v[4][3] = {{0, -s, -0.5}, {0, s, -0.5}, {-s, 0, 0.5}, {s, 0, 0.5}};
@@ -203,7 +204,7 @@ static void ring(struct spd_out *o, const double c[3], double r, double t)
 void spd_rings(struct spd_out *o, int size, int width, int height)
 {
     double span = 2.5 * size;
-    const double from[3] = {-span * 0.9, -span * 1.6, span * 1.1};
+    const double from[3] = {-span * 0.55, -span * 1.0, span * 0.75};
     const double at[3] = {0, 0, 0.5}, up[3] = {0, 0, 1};
     spd_view(o, from, at, up, 40, width, height, sky);
     spd_light(o, (const double[3]){-3 * span, -2 * span, 4 * span}, 0.6);
