@@ -168,13 +168,16 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
         fprintf(stderr,
                 "links1 ref (%s): %s frame %ld, %dx%d -> %s; rays: %llu primary, %llu "
                 "shadow, %llu reflection, %llu refraction, %llu transmission; "
-                "%u pixels lost precision; traced in %.3f s\n",
+                "%u pixels lost precision; %llu box tests, %llu primitive tests; traced in "
+                "%.3f s\n",
                 NUM_NAME, in, frame, img.width, img.height, out,
                 (unsigned long long)ctx.stats.primary, (unsigned long long)ctx.stats.shadow,
                 (unsigned long long)ctx.stats.reflection,
                 (unsigned long long)ctx.stats.refraction,
                 (unsigned long long)ctx.stats.transmission,
-                (unsigned)ctx.stats.precision_lost_pixels, secs);
+                (unsigned)ctx.stats.precision_lost_pixels,
+                (unsigned long long)ctx.stats.box_tests, (unsigned long long)ctx.stats.prim_tests,
+                secs);
     free(row);
     image_free(&img);
     return rc;

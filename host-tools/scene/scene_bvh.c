@@ -7,8 +7,10 @@
  * BVH_BINS - 1 planes between bins on the three axes the one with the least
  *   C_node + C_prim * (A_left * n_left + A_right * n_right) / A_node
  * wins (A: box surface area, n: primitives on each side).  A node becomes a
- * leaf when it holds at most BVH_LEAF_MIN primitives, or at most leaf_max
- * and no split is cheaper than testing them all (C_prim * n).  A node whose
+ * leaf when it holds at most leaf_min primitives (2), or at most leaf_max
+ * (8) and no split is cheaper than testing them all (C_prim * n).  When the
+ * clusters would pass SCN_MAX_CLUSTERS (16-bit indices), the tree is built
+ * again with both bounds grown by half, while leaf_min <= BVH_LEAF_MIN_TOP.  A node whose
  * centroids all coincide, or that is too near the nesting limit for the
  * heuristic's possibly lopsided splits, is split at the median centroid on
  * its longest axis instead: that tree is balanced, so it fits the remaining
@@ -27,9 +29,10 @@
 #include <string.h>
 
 #define BVH_BINS 16
-#define BVH_LEAF_MIN 2      /* never split this few */
-#define BVH_LEAF_MAX 8      /* first try: always split more than this */
-#define BVH_LEAF_MAX_TOP 64 /* last try when the clusters do not fit */
+#define BVH_LEAF_MIN 2      /* first try: never split this few ... */
+#define BVH_LEAF_MAX 8      /* ... and always split more than this */
+#define BVH_LEAF_MIN_TOP 32 /* last try when the clusters do not fit (both
+                               grown by half from one try to the next) */
 #define BVH_COST_NODE 1.0   /* one box test ... */
 #define BVH_COST_PRIM 2.0   /* ... against one primitive test */
 
@@ -44,7 +47,7 @@ struct bvh_build {
     struct sd_cluster *clusters; /* grows */
     int n_clusters, cap_clusters;
     int *prim_cluster;           /* new cluster of each primitive */
-    int leaf_max;
+    int leaf_min, leaf_max;
     struct bvh_build_stats *stats;
 };
 
@@ -225,7 +228,7 @@ static int bvh_split(struct bvh_build *b, int node, struct bvh_item *it, int n, 
 {
     if (depth > b->stats->depth)
         b->stats->depth = depth;
-    if (n <= BVH_LEAF_MIN || depth_left == 0) {
+    if (n <= b->leaf_min || depth_left == 0) {
         bvh_leaf(b, node, it, n);
         return 0;
     }
@@ -287,10 +290,11 @@ static void bvh_nesting(const struct sd_scene *s, int *nest)
         nest[i] = i == 0 || s->clusters[i].parent < 0 ? 0 : nest[s->clusters[i].parent] + 1;
 }
 
-static int bvh_try(struct bvh_build *b, const int *nest, int leaf_max)
+static int bvh_try(struct bvh_build *b, const int *nest, int leaf_min)
 {
     const struct sd_scene *s = b->in;
-    b->leaf_max = leaf_max;
+    b->leaf_min = leaf_min;
+    b->leaf_max = leaf_min * (BVH_LEAF_MAX / BVH_LEAF_MIN);
     b->n_clusters = s->n_clusters;
     memcpy(b->clusters, s->clusters, (size_t)s->n_clusters * sizeof *s->clusters);
     memset(b->stats, 0, sizeof *b->stats);
@@ -355,16 +359,20 @@ int sd_auto_hierarchy(const struct sd_scene *s, struct sd_cluster **clusters, in
     }
     bvh_nesting(s, nest);
     int rc = -1;
-    /* a larger leaf needs fewer clusters: widen until they fit */
-    for (int leaf_max = BVH_LEAF_MAX; rc != 0 && leaf_max <= BVH_LEAF_MAX_TOP; leaf_max *= 2)
-        rc = bvh_try(&b, nest, leaf_max);
+    /* larger leaves need fewer clusters: widen until they fit */
+    int tried = 0;
+    for (int leaf_min = BVH_LEAF_MIN; rc != 0 && leaf_min <= BVH_LEAF_MIN_TOP;
+         leaf_min += (leaf_min + 1) / 2) { /* 2, 3, 5, 8, 12, 18, 27 */
+        rc = bvh_try(&b, nest, leaf_min);
+        tried = leaf_min;
+    }
     free(nest);
     if (rc != 0) {
         snprintf(err, errlen,
                  "automatic hierarchy: %d primitives need more than SCN_MAX_CLUSTERS (%d) "
-                 "clusters even with leaves of %d; split the scene or turn "
+                 "clusters even with leaves of %d or more; split the scene or turn "
                  "auto_hierarchy off",
-                 s->n_prims, SCN_MAX_CLUSTERS, BVH_LEAF_MAX_TOP);
+                 s->n_prims, SCN_MAX_CLUSTERS, tried);
         free(b.clusters);
         return -1;
     }
