@@ -31,7 +31,8 @@
  * recursion) plus the deepest leaf (lights, shadow walk through up to
  * RENDER_MAX_CLUSTER_DEPTH clusters, a primitive test). */
 #define RENDER_STACK_PER_DEPTH 640
-#define RENDER_STACK_BASE 4096
+#define RENDER_STACK_BASE 4352 /* 4096, plus 8 bytes a level for the
+                                  near-first walk of 32 nested clusters */
 #define RENDER_STACK_BYTES(max_depth) \
     (RENDER_STACK_BASE + RENDER_STACK_PER_DEPTH * ((max_depth) + 1))
 
