@@ -29,18 +29,24 @@ trap 'rm -rf "$TMP"' EXIT
 
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
-# spheres N OUT: N random spheres in one cluster, about as dense at every N
+# spheres N OUT: N spheres in one cluster, a jittered sqrt(N) x sqrt(N)
+# sheet seen from above at a slant: at every N the sheet fills the view and
+# covers about the same part of it, so the rays are alike and only the
+# search for the nearest hit grows with N
 spheres() {
     awk -v n="$1" -v size="$SIZE" 'BEGIN {
         split(size, wh, "x"); srand(11)
-        print "camera { eye 0 3 -26  look_at 0 0 0  up 0 1 0  fov 50 }"
+        print "camera { eye 0 14 -13  look_at 0 0 0  up 0 1 0  fov 60 }"
         printf "resolution %d %d\nbackground 0.1 0.1 0.2\n", wh[1], wh[2]
         print "light point { colour 0.8 0.8 0.8  position 10 20 -15 }"
         print "material m { colour 0.9 0.5 0.3  dic 0.15 drc 0.75  src 0.2  phong 20 }"
-        r = 0.9 * (100 / n) ^ (1 / 3)
+        side = int(sqrt(n)); if (side * side < n) side++
+        step = 24 / side; r = 0.45 * step
         for (i = 0; i < n; i++)
-            printf "sphere { material m  centre %.4f %.4f %.4f  radius %.4f }\n",
-                   16 * rand() - 8, 16 * rand() - 8, 16 * rand() - 8, r
+            printf "sphere { material m  centre %.5f %.5f %.5f  radius %.5f }\n",
+                   (i % side + 0.5) * step - 12 + (rand() - 0.5) * 0.2 * step,
+                   (rand() - 0.5) * step,
+                   (int(i / side) + 0.5) * step - 12 + (rand() - 0.5) * 0.2 * step, r
     }' >"$2"
 }
 
@@ -55,7 +61,9 @@ host() {
     done | median >"$TMP/t"
     rays=$(sed -n 's/.*rays: \([0-9]*\) primary, \([0-9]*\) shadow, \([0-9]*\) reflection, \([0-9]*\) refraction, \([0-9]*\) transmission.*/\1 \2 \3 \4 \5/p' "$log" |
            awk '{ print $1 + $2 + $3 + $4 + $5 }')
-    awk -v t="$(cat "$TMP/t")" -v r="$rays" 'BEGIN { printf "%.0f %d %.3f\n", t * 1e9 / r, r, t }'
+    tests=$(sed -n 's/.* \([0-9]*\) box tests, \([0-9]*\) primitive tests.*/\1 \2/p' "$log")
+    awk -v t="$(cat "$TMP/t")" -v r="$rays" -v bt="${tests% *}" -v pt="${tests#* }" \
+        'BEGIN { printf "%.0f %d %.3f %.1f %.1f\n", t * 1e9 / r, r, t, bt / r, pt / r }'
 }
 
 # pov SCENE: POV-Ray's median trace time, seconds
@@ -87,33 +95,33 @@ board() {
 
 echo "### Cost per ray, one flat cluster of n spheres (host float, $SIZE, median of $RUNS)"
 echo
-echo "| n | ns/ray, automatic hierarchy | ns/ray, off | rays |"
-echo "|---|---|---|---|"
+echo "| n | ns/ray, automatic hierarchy | box + primitive tests/ray | ns/ray, off | tests/ray, off | rays |"
+echo "|---|---|---|---|---|---|"
 ns="100 1000 10000 100000"
 [ "$QUICK" = 1 ] && ns="100 1000 10000"
 for n in $ns; do
     spheres "$n" "$TMP/s.scn"
-    read -r on rays _ < <(host "$TMP/s.scn")
-    off=-
-    [ "$n" -le 1000 ] && read -r off _ _ < <(host "$TMP/s.scn" --no-auto-hierarchy)
-    echo "| $n | $on | $off | $rays |"
+    read -r on rays _ bt pt < <(host "$TMP/s.scn")
+    off=- obt=- opt=-
+    [ "$n" -le 1000 ] && read -r off _ _ obt opt < <(host "$TMP/s.scn" --no-auto-hierarchy)
+    echo "| $n | $on | $bt + $pt | $off | $obt + $opt | $rays |"
 done
 echo
 echo "### SPD scenes: host float ns/ray ($SIZE), board NC insns/ray ($BSIZE, 8 NCs), POV-Ray 3.7 (-A +WT1)"
 echo
-echo "| scene | objects | host ns/ray | host trace s | POV-Ray trace s | links1 / POV-Ray | board NC insns/ray (image vs host) |"
-echo "|---|---|---|---|---|---|---|"
+echo "| scene | objects | host ns/ray | box + primitive tests/ray | host trace s | POV-Ray trace s | links1 / POV-Ray | board NC insns/ray (image vs host) |"
+echo "|---|---|---|---|---|---|---|---|"
 dbs="balls-1 balls-2 balls-3 balls-4 tetra-1 tetra-2 tetra-3 tetra-4 tetra-5 tetra-6 mount-6"
 for db in $dbs; do
     scene="$TMP/$db.scn"
     "$SPD" "${db%-*}" "${db#*-}" -o "$scene" --size "$SIZE" 2>"$TMP/spd.log"
     objs=$(sed -n 's/.*: \([0-9]*\) spheres, \([0-9]*\) triangles/\1 + \2/p' "$TMP/spd.log" | bc)
-    read -r ns _ t < <(host "$scene")
+    read -r ns _ t bt ptests < <(host "$scene")
     pt=$(pov "$scene")
     ratio=$(awk -v a="$t" -v b="$pt" 'BEGIN { if (b + 0 > 0) printf "%.2f", a / b; else print "-" }')
     b=-
     if [ "$QUICK" != 1 ] || [ "$objs" -lt 5000 ]; then b=$(board "$scene"); fi
-    echo "| $db | $objs | $ns | $t | $pt | $ratio | $b |"
+    echo "| $db | $objs | $ns | $bt + $ptests | $t | $pt | $ratio | $b |"
 done
 echo
 echo "### Build time of the automatic hierarchy (links1 compile, median of $RUNS, on minus off)"
