@@ -8,8 +8,8 @@
  *     several scenes (spheres, a mesh, a moving keyframed cluster, nested
  *     author clusters), through both the full tree walk and the NC's
  *     clipped area loop;
- *   - a scene that would need more clusters than the format holds is
- *     refused, naming the limit.
+ *   - a scene that would need more clusters than the format holds, or
+ *     more bytes, is refused, naming the limit and the count.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -348,6 +348,42 @@ static void test_cluster_limit_named(void)
     free(s.clusters);
 }
 
+/* a scene whose compiled form with its tree passes SCN_MAX_SIZE: refused
+ * by the compiler, naming the limit and the counts */
+static void test_size_limit_named(void)
+{
+    struct sd_scene s;
+    memset(&s, 0, sizeof s);
+    s.n_clusters = 1;
+    s.clusters = calloc(1, sizeof *s.clusters);
+    s.clusters[0].parent = -1;
+    s.clusters[0].m[0] = s.clusters[0].m[5] = s.clusters[0].m[10] = 1;
+    s.n_materials = 1;
+    s.materials = calloc(1, sizeof *s.materials);
+    s.view.width = s.view.height = 16;
+    s.view.fov = 45;
+    s.view.frames = 1;
+    s.n_prims = 200000; /* 15.2 MB of records, then the tree's clusters */
+    s.prims = calloc((size_t)s.n_prims, sizeof *s.prims);
+    rnd_state = 3;
+    for (int i = 0; i < s.n_prims; i++) {
+        s.prims[i].kind = SCN_PRIM_ELLIPSOID;
+        for (int k = 0; k < 3; k++) {
+            s.prims[i].v[k] = rnd(-50, 50);
+            s.prims[i].v[3 + k] = 0.1;
+        }
+    }
+    uint8_t *buf = NULL;
+    size_t len = 0;
+    char err[SD_ERR_MAX] = "";
+    CHECK_EQ_INT(sd_compile(&s, &buf, &len, err, sizeof err), -1);
+    CHECK(buf == NULL);
+    CHECK(strstr(err, "SCN_MAX_SIZE") != NULL && strstr(err, "200000 primitives") != NULL);
+    free(s.prims);
+    free(s.materials);
+    free(s.clusters);
+}
+
 int main(void)
 {
     printf("# arithmetic: %s\n", NUM_NAME);
@@ -356,5 +392,6 @@ int main(void)
     RUN(test_same_image_keyframed_nested);
     RUN(test_nesting_limit_kept);
     RUN(test_cluster_limit_named);
+    RUN(test_size_limit_named);
     return check_exit();
 }
