@@ -41,7 +41,7 @@ $arm -mfloat-abi=soft -DLINKS1_NUM_FIXED $srcs -o "$out/arm-fixed.elf" || exit 1
 for v in float soft fixed; do
     ref=float
     [ $v = fixed ] && ref=fixed
-    timeout 600 qemu-system-arm -M virt -cpu cortex-a15 -m 512 -nographic -semihosting \
+    timeout 600 qemu-system-arm -M virt -cpu cortex-a15 -m 512 -nodefaults -nographic -semihosting \
         -kernel "$out/arm-$v.elf" </dev/null >"$out/arm-$v.txt" 2>&1
     for s in $scenes; do
         want=$(grep " $s " "$out/host-$ref.txt")

@@ -51,6 +51,7 @@ typedef struct {
     enum trace_mode mode;
     nearest_t nearest;
     crossings_t *cross;
+    aabb_ray_t box_ray; /* the ray's reciprocals for box tests */
 } trace_walk_t;
 
 static void trace_record(trace_walk_t *w, uint32_t prim, num_t t)
@@ -127,7 +128,7 @@ static int trace_box_entry(trace_walk_t *w, const aabb_t *b, num_t *entry)
         return 1;
     w->ctx->stats.box_tests++;
     num_t tmax = w->mode == TRACE_NEAREST && w->nearest.found ? w->nearest.t : w->tmax;
-    return prim_aabb_entry(b, w->ray, w->tmin, tmax, entry);
+    return prim_aabb_entry_ray(b, w->ray, &w->box_ray, w->tmin, tmax, entry);
 }
 
 static int trace_box(trace_walk_t *w, const aabb_t *b)
@@ -192,6 +193,7 @@ static void trace_cluster(trace_walk_t *w, uint32_t index)
 static void trace_walk(trace_walk_t *w, const uint16_t *clip, uint32_t clip_count)
 {
     const render_frame_t *f = w->ctx->frame;
+    prim_aabb_ray(w->ray, &w->box_ray);
     if (clip) {
         for (uint32_t k = 0; k < clip_count; k++) {
             const render_cluster_t *c = &f->clusters[clip[k]];
@@ -212,7 +214,7 @@ static void trace_walk(trace_walk_t *w, const uint16_t *clip, uint32_t clip_coun
 static int trace_nearest(render_ctx_t *ctx, const ray_t *ray, num_t tmin, const uint16_t *clip,
                          uint32_t clip_count, hit_t *hit)
 {
-    trace_walk_t w = {ctx, ray, tmin, TRACE_FAR, TRACE_NEAREST, {0, NUM_ZERO, 0}, NULL};
+    trace_walk_t w = {ctx, ray, tmin, TRACE_FAR, TRACE_NEAREST, {0, NUM_ZERO, 0}, NULL, {{0}, {0}}};
     trace_walk(&w, clip, clip_count);
     if (!w.nearest.found)
         return 0;
@@ -253,7 +255,7 @@ static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t di
     cross.count = 0;
     cross.overflow = 0;
     cross.opaque = 0;
-    trace_walk_t w = {ctx, &ray, TRACE_EPSILON, distance, TRACE_COLLECT_SHADOW, {0, NUM_ZERO, 0}, &cross};
+    trace_walk_t w = {ctx, &ray, TRACE_EPSILON, distance, TRACE_COLLECT_SHADOW, {0, NUM_ZERO, 0}, &cross, {{0}, {0}}};
     trace_walk(&w, NULL, 0);
     if (cross.opaque || cross.overflow)
         return rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
@@ -311,6 +313,8 @@ static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int dept
  * registers every object it crosses (the transmission buffer, nearest
  * first); each adds its local shading weighted by the transmittance so
  * far, until an opaque one or the background ends the ray. */
+__attribute__((noinline)) /* its buffers stay out of trace_shade's frame,
+                             which every recursion level pays for */
 static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray)
 {
     ctx->stats.transmission++;
@@ -318,7 +322,7 @@ static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray)
     cross.count = 0;
     cross.overflow = 0;
     cross.opaque = 0;
-    trace_walk_t w = {ctx, ray, TRACE_EPSILON, TRACE_FAR, TRACE_COLLECT_STRAIGHT, {0, NUM_ZERO, 0}, &cross};
+    trace_walk_t w = {ctx, ray, TRACE_EPSILON, TRACE_FAR, TRACE_COLLECT_STRAIGHT, {0, NUM_ZERO, 0}, &cross, {{0}, {0}}};
     trace_walk(&w, NULL, 0);
     rgb_t sum = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     rgb_t weight = rgb_make(NUM_ONE, NUM_ONE, NUM_ONE);

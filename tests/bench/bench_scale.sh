@@ -23,7 +23,7 @@ SIZE=${BENCH_SIZE:-320x240}
 BSIZE=${BENCH_BOARD_SIZE:-160x120}
 QUICK=${BENCH_QUICK:-0}
 LIMIT_S=${BENCH_RUN_LIMIT_S:-1800}
-make -s --no-print-directory build/links1 build/links1-ref-float build/links1-spd
+make -s --no-print-directory build/links1 build/links1-ref-float build/links1-spd >&2
 TMP=$(mktemp -d /tmp/links1-bench-scale.XXXXXX)
 trap 'rm -rf "$TMP"' EXIT
 
