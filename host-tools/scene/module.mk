@@ -12,7 +12,7 @@ SCENE_MODEL_SRCS := host-tools/scene/model_assimp.c host-tools/scene/scene_impor
 # The text form: tokenizer, parser, transforms, compiler, image files.
 SCENE_TEXT_SRCS := host-tools/scene/scene_lex.c host-tools/scene/scene_parse.c \
 	host-tools/scene/scene_parse_looks.c host-tools/scene/scene_parse_objects.c \
-	host-tools/scene/scene_math.c host-tools/scene/scene_compile.c \
+	host-tools/scene/scene_math.c host-tools/scene/scene_compile.c host-tools/scene/scene_bvh.c \
 	host-tools/scene/image_io.c host-tools/scene/cli_args.c host-tools/scene/scene_file.c \
 	$(SCENE_MODEL_SRCS)
 # Programs that read text scenes link these: the `model` statement reads
@@ -84,3 +84,10 @@ HOST_TESTS += test_scene_import
 test_scene_import_SRCS := tests/host/test_scene_import.c $(SCENE_TEXT_SRCS)
 test_scene_import_ARITH := double
 test_scene_import_LIBS := $(SCENE_TEXT_LIBS)
+
+# The automatic hierarchy: tree invariants and the same image on and off,
+# in each arithmetic of the shared renderer.
+HOST_TESTS += test_auto_hierarchy_double test_auto_hierarchy_float test_auto_hierarchy_fixed
+$(foreach a,double float fixed,$(eval test_auto_hierarchy_$(a)_SRCS = tests/host/test_auto_hierarchy.c $$(SCENE_TEXT_SRCS)))
+$(foreach a,double float fixed,$(eval test_auto_hierarchy_$(a)_ARITH := $(a)))
+$(foreach a,double float fixed,$(eval test_auto_hierarchy_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))

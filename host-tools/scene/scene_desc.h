@@ -84,6 +84,9 @@ struct sd_scene {
     int n_components;
     struct sd_key *keys;
     int n_keys;
+    int no_auto_hierarchy;  /* 1: sd_compile keeps the author's clusters
+                               as they are (scene_bvh.h); text form
+                               `options { auto_hierarchy off }` */
 };
 
 #define SD_ERR_MAX 512 /* room for "file:line:col: message" */
@@ -98,7 +101,8 @@ void sd_free(struct sd_scene *s);
 void sd_view_defaults(struct sd_view *v);
 
 /* The compiled form in a malloc'ed buffer (*out, *len); -1 with err if the
- * scene exceeds a limit of the format. */
+ * scene exceeds a limit of the format.  Unless s->no_auto_hierarchy, big
+ * clusters are split into a bounding volume hierarchy first (scene_bvh.h). */
 int sd_compile(const struct sd_scene *s, uint8_t **out, size_t *len,
                char *err, size_t errlen);
 
