@@ -4,6 +4,7 @@
 #include <stdint.h>
 
 #include "drivers/imsu/imsu.h"
+#include "drivers/serial/hostlink_tx.h"
 #include "drivers/serial/line.h"
 #include "drivers/serial/uart.h"
 #include "kernel/arch.h"
@@ -12,10 +13,12 @@
 #include "kernel/gic.h"
 #include "kernel/kmem.h"
 #include "kernel/klog.h"
+#include "kernel/ktime.h"
 #include "kernel/memlayout.h"
 #include "kernel/panic.h"
 #include "kernel/param.h"
 #include "kernel/psci.h"
+#include "kernel/task.h"
 #include "roles/unit.h"
 
 void boot_main(void) __attribute__((noreturn));
@@ -56,30 +59,60 @@ static uint32_t boot_count_cores(void)
     return n;
 }
 
+/* Starts core k and sleeps until it has booted (cpu_boot_done rings this
+ * core's doorbell) or halted.  One core at a time: the cores report in one
+ * after the other, so none waits for the host link, and the work of a boot
+ * is the same every time.  The mark is taken before CPU_ON and the first
+ * wait is unconditional, so this core does the same whether the doorbell
+ * comes before or after it looks.  A core slower than BOOT_CORE_WAIT_MS
+ * only loses its turn: the next one starts anyway. */
+static void boot_start_core(uint32_t k)
+{
+    const struct cpu *c = cpu_of(k);
+    uint64_t deadline = ktime_deadline_ms(BOOT_CORE_WAIT_MS);
+    uint32_t mark = task_event_mark();
+    int r = psci_call(PSCI_CPU_ON, cpu_mpidr_of_core(k), (uint32_t)(uintptr_t)secondary_entry,
+                      k);
+    if (r != PSCI_RET_SUCCESS) {
+        klog("PSCI CPU_ON of core %u (mpidr 0x%x) failed: %d", (unsigned)k,
+             (unsigned)cpu_mpidr_of_core(k), r);
+        return;
+    }
+    for (;;) {
+        task_wait(mark, deadline);
+        mark = task_event_mark();
+        if (c->boot_done || c->halted)
+            return;
+        if (ktime_passed(deadline)) {
+            klog("core %u has not booted within %u ms; starting the next core",
+                 (unsigned)k, (unsigned)BOOT_CORE_WAIT_MS);
+            return;
+        }
+    }
+}
+
 void boot_main(void)
 {
     cpu_init(0);
-    gic_dist_init();   // interrupt distributor
-    gic_cpu_init();    // this core's redistributor and CPU interface
-    uart_init();       // host link receive ring and interrupt
-    boot_check_ram();  // QEMU gave the memory the linker script carved
+    uart_init();         // PL011 on: the host link transmits from here
+    hostlink_tx_init();  // log sink: klog, panics and faults reach the host
+    gic_dist_init();     // interrupt distributor
+    gic_cpu_init();      // this core's redistributor and CPU interface
+    ktime_init();        // timer interrupt handler
+    uart_rx_start();     // host link receive interrupt
+    boot_check_ram();    // QEMU gave the memory the linker script carved
     uint32_t n = boot_count_cores();
     if (n < UNITS_MIN_CORES)
         panic("the board has %u core(s); links1 needs at least %u (DM, RC, one NC)",
               (unsigned)n, (unsigned)UNITS_MIN_CORES);
     board_ncores = n;
-    kmem_init(0, n);   // the DM's private memory
-    line_init_all(n);  // serial line rings DM<->RC, RC<->NCs
-    imsu_init_all(n);  // IMSU block pair and broadcast block
+    kmem_init(0, n);     // the DM's private memory
+    line_init_all(n);    // serial line rings DM<->RC, RC<->NCs
+    imsu_init_all(n);    // IMSU block pair and broadcast block
     /* Everything above is in memory before any other core can look. */
     arch_dsb();
-    for (uint32_t k = 1; k < n; k++) {
-        int r = psci_call(PSCI_CPU_ON, cpu_mpidr_of_core(k),
-                          (uint32_t)(uintptr_t)secondary_entry, k);
-        if (r != PSCI_RET_SUCCESS)
-            klog("PSCI CPU_ON of core %u (mpidr 0x%x) failed: %d", (unsigned)k,
-                 (unsigned)cpu_mpidr_of_core(k), r);
-    }
+    for (uint32_t k = 1; k < n; k++)
+        boot_start_core(k);
     unit_start();
 }
 
@@ -87,7 +120,8 @@ void boot_secondary(void)
 {
     uint32_t core = cpu_core_from_mpidr(arch_read_mpidr());
     cpu_init(core);
+    gic_cpu_init();                // redistributor and CPU interface: doorbells
+                                   // wake this core from here (spinlock.h)
     kmem_init(core, board_ncores); // this unit computer's private memory
-    gic_cpu_init();                // redistributor and CPU interface
     unit_start();
 }

@@ -9,3 +9,10 @@ test_num_float_SRCS := tests/host/test_num.c
 test_num_float_ARITH := float
 test_num_fixed_SRCS := tests/host/test_num.c
 test_num_fixed_ARITH := fixed
+
+# The one integer square root (fixed point's num_sqrt, the RC's area
+# schedules), checked against its definition.
+SHARED_SRCS += fixed/isqrt.c
+HOST_TESTS += test_isqrt
+test_isqrt_SRCS := tests/host/test_isqrt.c
+test_isqrt_ARITH := double

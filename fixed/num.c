@@ -2,36 +2,16 @@
  * num_len3 for every build. */
 #include "fixed/num.h"
 
-#if defined(LINKS1_NUM_FIXED)
+#include "fixed/isqrt.h"
 
-/* floor(sqrt(n)) for any 64-bit n, one result bit per step: no division,
- * no floating point, exact. */
-static uint64_t num__isqrt64(uint64_t n)
-{
-    if (n == 0)
-        return 0;
-    uint64_t root = 0;
-    /* start at the highest even bit position not above n's top bit: the
-     * answer has half as many bits as n, so small inputs take few steps */
-    uint64_t bit = (uint64_t)1 << ((63 - __builtin_clzll(n)) & ~1);
-    while (bit) {
-        if (n >= root + bit) {
-            n -= root + bit;
-            root = (root >> 1) + bit;
-        } else {
-            root >>= 1;
-        }
-        bit >>= 2;
-    }
-    return root;
-}
+#if defined(LINKS1_NUM_FIXED)
 
 /* sqrt of a value given with 2*NUM_FRAC_BITS fraction bits, rounded to
  * nearest: r = floor(sqrt(n)); round up when n > r^2 + r, i.e. when
  * sqrt(n) > r + 1/2. */
 static num_t num__sqrt_wide(uint64_t n)
 {
-    uint64_t r = num__isqrt64(n);
+    uint64_t r = isqrt_u64(n);
     if (n - r * r > r)
         r++;
     if (r > (uint64_t)NUM_RAW_MAX)

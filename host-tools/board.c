@@ -165,12 +165,24 @@ int board_run_semihost(const char *elf, int ram_mb)
     return -1;
 }
 
-int board_start(struct board *b, const struct board_opts *o)
+static void board_init(struct board *b, const struct board_opts *o)
 {
     memset(b, 0, sizeof *b);
     b->opts = *o;
     b->fd = -1;
     link_decoder_init(&b->dec);
+}
+
+void board_attach(struct board *b, const struct board_opts *o, int fd)
+{
+    board_init(b, o);
+    b->fd = fd;
+    fcntl(b->fd, F_SETFL, fcntl(b->fd, F_GETFL) | O_NONBLOCK);
+}
+
+int board_start(struct board *b, const struct board_opts *o)
+{
+    board_init(b, o);
     if (board_find_firmware(o, b->firmware, sizeof b->firmware) < 0)
         return -1;
     if (o->ncores < UNITS_MIN_CORES || o->ncores > UNITS_MAX_CORES) {
@@ -196,9 +208,8 @@ int board_start(struct board *b, const struct board_opts *o)
     if (pid == 0)
         board_qemu_exec(b, sv[1]);
     close(sv[1]);
+    board_attach(b, o, sv[0]);
     b->qemu_pid = pid;
-    b->fd = sv[0];
-    fcntl(b->fd, F_SETFL, fcntl(b->fd, F_GETFL) | O_NONBLOCK);
     if (!o->quiet)
         printf("links1: booting %s on %d cores (DM, RC, %d NCs), QEMU pid %d\n",
                b->firmware, o->ncores, o->ncores - 2, (int)pid);

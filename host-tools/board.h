@@ -105,6 +105,10 @@ int board_find_firmware(const struct board_opts *o, char *out, size_t cap);
 /* Starts QEMU.  Returns 0, or -1 after printing why. */
 int board_start(struct board *b, const struct board_opts *o);
 
+/* A session on an already open link fd (no QEMU: the host tests play the
+ * board on the other end of a socketpair); board_start uses it too. */
+void board_attach(struct board *b, const struct board_opts *o, int fd);
+
 /* Runs a semihosting program (not the firmware: one core, no link) on the
  * plain virt board, its console output on our stdout, until it ends the
  * emulator (semihosting SYS_EXIT).  Returns QEMU's exit status, or -1 after

@@ -59,6 +59,7 @@ static void render_usage(FILE *out)
             "                   override the scene's recursion depth / transmission past it\n"
             "  --no-yclip --no-xclip --no-bbox --no-hierarchy\n"
             "                   switch a speed-up off (the image stays the same)\n"
+            "  --no-auto-hierarchy  compile without the automatic hierarchy (text scenes)\n"
             "  --view           show the frame memory live (-device ramfb, a display)\n"
             "  --ppm            write PPM (also chosen by an OUT ending in .ppm)\n"
             "  --count-insns    count guest instructions per core and print them\n"
@@ -80,6 +81,7 @@ enum render_opt_code {
     RENDER_OPT_NO_XCLIP,
     RENDER_OPT_NO_BBOX,
     RENDER_OPT_NO_HIERARCHY,
+    RENDER_OPT_NO_AUTO_HIERARCHY,
     RENDER_OPT_VIEW,
     RENDER_OPT_PPM,
     RENDER_OPT_COUNT_INSNS,
@@ -99,6 +101,7 @@ static const struct option render_options[] = {
     {"no-xclip", no_argument, NULL, RENDER_OPT_NO_XCLIP},
     {"no-bbox", no_argument, NULL, RENDER_OPT_NO_BBOX},
     {"no-hierarchy", no_argument, NULL, RENDER_OPT_NO_HIERARCHY},
+    {"no-auto-hierarchy", no_argument, NULL, RENDER_OPT_NO_AUTO_HIERARCHY},
     {"view", no_argument, NULL, RENDER_OPT_VIEW},
     {"ppm", no_argument, NULL, RENDER_OPT_PPM},
     {"count-insns", no_argument, NULL, RENDER_OPT_COUNT_INSNS},
@@ -180,6 +183,9 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
         return 0;
     case RENDER_OPT_NO_HIERARCHY:
         o->args.flags |= LINK_RENDER_NO_HIERARCHY;
+        return 0;
+    case RENDER_OPT_NO_AUTO_HIERARCHY:
+        o->scene.no_auto_hierarchy = 1;
         return 0;
     case RENDER_OPT_VIEW:
         o->board.view = 1;

@@ -4,7 +4,7 @@
 # exact command to run and fails.
 set -eu
 need_pkgs=(make gcc libc6-dev libpng-dev gcc-arm-none-eabi picolibc-arm-none-eabi
-           libnewlib-arm-none-eabi qemu-system-arm povray python3
+           libnewlib-arm-none-eabi qemu-system-arm povray python3 libassimp-dev
            clang libclang-rt-dev)
 # clang: the fuzz harnesses (tests/fuzz/); libclang-rt-dev holds libFuzzer's
 # and the sanitizers' runtimes, which clang only recommends.

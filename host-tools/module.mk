@@ -44,7 +44,7 @@ test_hostlink_session_ARITH := double
 HOST_TOOLS += render-clip-stats
 render-clip-stats_SRCS = host-tools/clip_stats_main.c host-tools/cli_opt.c $(SCENE_TEXT_SRCS)
 render-clip-stats_ARITH := float
-render-clip-stats_LIBS := -lpng
+render-clip-stats_LIBS = $(SCENE_TEXT_LIBS)
 
 # Board tests (tests/board/lib.sh is their shared helper, not a test).
 BOARD_TESTS += tests/board/boot_smp.sh tests/board/channels.sh tests/board/idle66.sh \

@@ -3,6 +3,7 @@
 
 #include <string.h>
 
+#include "kernel/gic.h"
 #include "proto/hostlink.h"
 
 struct cpu cpus[UNITS_MAX_CORES];
@@ -50,4 +51,12 @@ void cpu_init(uint32_t core)
     c->role = cpu_role_of_core(core);
     c->current = -1;
     arch_write_tpidrprw((uintptr_t)c);
+}
+
+void cpu_boot_done(void)
+{
+    struct cpu *c = mycpu();
+    c->boot_done = 1;
+    if (c->core != UNITS_DM_CORE)
+        gic_send_sgi(UNITS_DM_CORE, SGI_DOORBELL); /* after the store: the DSB in it */
 }

@@ -18,6 +18,7 @@ struct cpu {
     volatile uint8_t started;  /* 1 once the core runs its role program */
     volatile uint8_t reported; /* 1 once its LINK_HELLO went out */
     volatile uint8_t halted;   /* 1 once it faulted and stopped for good */
+    volatile uint8_t boot_done; /* 1 once booted and idle (cpu_boot_done) */
     int irq_depth;             /* nesting of irq_push_off() */
     int irq_were_enabled;      /* IRQ state before the outermost push_off */
     int locks_held;            /* spinlocks held now (checked by task_wait) */
@@ -26,8 +27,10 @@ struct cpu {
     volatile uint32_t events;  /* bumped by every interrupt taken here and
                                 * by task_signal_local(); tasks wait on it */
     uintptr_t gicr;            /* virtual address of this core's redistributor */
+    volatile uint8_t gic_ready; /* 1 once an SGI can wake this core (gic_cpu_init) */
     uint64_t irqs_taken;       /* interrupts handled (statistics) */
     uint64_t sleeps;           /* times the scheduler slept in WFI */
+    uint64_t lock_sleeps;      /* times a lock wait slept in WFI */
     struct task tasks[TASKS_PER_CORE]; /* this core's tasks */
     int current;               /* index in tasks of the running task, -1 none */
     struct task_ctx sched_ctx; /* the scheduler's own context */
@@ -63,5 +66,11 @@ const char *cpu_role_name(uint8_t role);
 
 /* Fills cpus[core] and points TPIDRPRW at it; first thing each core does in C. */
 void cpu_init(uint32_t core);
+/* This core's boot is over: it reported in, started its tasks and for the
+ * first time has nothing to do (task_schedule_forever calls this).  Tells
+ * core 0, which starts the next core only then (boot/boot.c): no two cores
+ * report in at once, none waits for the host link's lock, and the work of
+ * an idle boot is the same every time. */
+void cpu_boot_done(void);
 
 #endif

@@ -1,15 +1,15 @@
-/* fault.c: panics and CPU exceptions end here: report on the host link,
- * then halt this core only (see panic.h). */
+/* fault.c: panics and CPU exceptions end here: report through the log sink
+ * (kernel/klog.h), then halt this core only (see panic.h). */
 #include "kernel/panic.h"
 
 #include <stdarg.h>
 
-#include "drivers/serial/hostlink_tx.h"
 #include "kernel/arch.h"
 #include "kernel/cpu.h"
-#include "kernel/kfmt.h"
+#include "kernel/klog.h"
 #include "kernel/spinlock.h"
 #include "proto/hostlink.h"
+#include "proto/textfmt.h"
 
 /* boot/vectors.S passes the kind as a number. */
 _Static_assert(FAULT_UNDEF == 1 && FAULT_PREFETCH_ABORT == 2 && FAULT_DATA_ABORT == 3 &&
@@ -50,19 +50,19 @@ static void fault_report(uint32_t kind, uint32_t addr, uint32_t pc, uint32_t sta
     uint8_t p[LINK_FAULT_FIXED_SIZE + KLOG_MAX];
     struct link_fault f = {(uint16_t)core, role, (uint8_t)kind, addr, pc, status};
     link_fault_put(p, &f);
-    int n = kfmt_snprintf((char *)p + LINK_FAULT_FIXED_SIZE, KLOG_MAX, "%s", text);
+    int n = fmt_snprintf((char *)p + LINK_FAULT_FIXED_SIZE, KLOG_MAX, "%s", text);
     if (n >= KLOG_MAX)
         n = KLOG_MAX - 1;
-    hostlink_send(LINK_FAULT, 0, p, LINK_FAULT_FIXED_SIZE + (size_t)n);
+    klog_emit(LINK_FAULT, p, LINK_FAULT_FIXED_SIZE + (size_t)n);
 
     char line[KLOG_MAX];
-    n = kfmt_snprintf(line, sizeof line,
-                      "core %u %s halted: %s at pc 0x%08x, address 0x%08x, status 0x%x: %s",
-                      (unsigned)core, cpu_role_name(role), fault_kind_name(kind),
-                      (unsigned)pc, (unsigned)addr, (unsigned)status, text);
+    n = fmt_snprintf(line, sizeof line,
+                     "core %u %s halted: %s at pc 0x%08x, address 0x%08x, status 0x%x: %s",
+                     (unsigned)core, cpu_role_name(role), fault_kind_name(kind),
+                     (unsigned)pc, (unsigned)addr, (unsigned)status, text);
     if (n >= (int)sizeof line)
         n = (int)sizeof line - 1;
-    hostlink_send(LINK_LOG, 0, line, (size_t)n);
+    klog_emit(LINK_LOG, line, (size_t)n);
 }
 
 void panic(const char *fmt, ...)
@@ -71,7 +71,7 @@ void panic(const char *fmt, ...)
     char text[KLOG_MAX];
     va_list ap;
     va_start(ap, fmt);
-    kfmt_vsnprintf(text, sizeof text, fmt, ap);
+    fmt_vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
     uint32_t pc = (uint32_t)(uintptr_t)__builtin_return_address(0);
     fault_report(FAULT_PANIC, 0, pc, 0, text);
@@ -90,11 +90,11 @@ void fault_from_exception(uint32_t kind, const uint32_t *regs, uint32_t pc, uint
     }
     char text[KLOG_MAX];
     /* regs: r0..r12 as the vector pushed them. */
-    kfmt_snprintf(text, sizeof text,
-                  "%s in task '%s' (cpsr 0x%x, r0 0x%x, r1 0x%x, r2 0x%x)",
-                  fault_kind_name(kind), mycpu() ? task_current_name() : "boot",
-                  (unsigned)spsr, (unsigned)regs[0], (unsigned)regs[1],
-                  (unsigned)regs[2]);
+    fmt_snprintf(text, sizeof text,
+                 "%s in task '%s' (cpsr 0x%x, r0 0x%x, r1 0x%x, r2 0x%x)",
+                 fault_kind_name(kind), mycpu() ? task_current_name() : "boot",
+                 (unsigned)spsr, (unsigned)regs[0], (unsigned)regs[1],
+                 (unsigned)regs[2]);
     fault_report(kind, addr, pc, status, text);
     cpu_halt_forever();
 }

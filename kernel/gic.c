@@ -28,6 +28,7 @@
 #define GICR_SGI_OFFSET 0x10000u
 #define GICR_IGROUPR0 (GICR_SGI_OFFSET + 0x0080u)
 #define GICR_ISENABLER0 (GICR_SGI_OFFSET + 0x0100u)
+#define GICR_ICPENDR0 (GICR_SGI_OFFSET + 0x0280u)
 #define GICR_IPRIORITYR(n) (GICR_SGI_OFFSET + 0x0400u + (n))
 
 #define GIC_PRIORITY_DEFAULT 0x80u
@@ -71,6 +72,12 @@ static uintptr_t gic_find_redist(uintptr_t base, uint32_t size, uint32_t aff)
 void gic_cpu_init(void)
 {
     struct cpu *c = mycpu();
+    /* System registers first: from here this core can ring doorbells, so
+     * a panic below still wakes the cores waiting for the link's lock. */
+    arch_write_icc_sre(arch_read_icc_sre() | ICC_SRE_SRE);
+    if (!(arch_read_icc_sre() & ICC_SRE_SRE))
+        panic("gic: core %u cannot use the GICv3 system register interface",
+              (unsigned)c->core);
     uint32_t aff = c->mpidr & 0x00FFFFFFu;
     uintptr_t rd = gic_find_redist(GICR_LOW_BASE, GICR_LOW_SIZE, aff);
     if (!rd)
@@ -85,21 +92,19 @@ void gic_cpu_init(void)
                  mmio_read32(rd + GICR_WAKER) & ~GICR_WAKER_PROCESSOR_SLEEP);
     while (mmio_read32(rd + GICR_WAKER) & GICR_WAKER_CHILDREN_ASLEEP)
         ;
-    /* SGIs and PPIs: Group 1, default priority; enable the doorbell and
-     * the timer. */
+    /* SGIs and PPIs: Group 1, default priority; enable the doorbell, the
+     * lock turn and the timer. */
     mmio_write32(rd + GICR_IGROUPR0, 0xFFFFFFFFu);
     for (uint32_t i = 0; i < 32; i += 4)
         mmio_write32(rd + GICR_IPRIORITYR(i), GIC_PRIORITY_DEFAULT * 0x01010101u);
-    mmio_write32(rd + GICR_ISENABLER0, (1u << SGI_DOORBELL) | (1u << TIMER_INTID));
+    mmio_write32(rd + GICR_ISENABLER0,
+                 (1u << SGI_DOORBELL) | (1u << SGI_LOCK_TURN) | (1u << TIMER_INTID));
 
-    /* CPU interface: system registers on, all priorities, Group 1 on. */
-    arch_write_icc_sre(arch_read_icc_sre() | ICC_SRE_SRE);
-    if (!(arch_read_icc_sre() & ICC_SRE_SRE))
-        panic("gic: core %u cannot use the GICv3 system register interface",
-              (unsigned)c->core);
+    /* CPU interface: all priorities, Group 1 on. */
     arch_write_icc_pmr(GIC_PMR_ALLOW_ALL);
     arch_write_icc_bpr1(0);
     arch_write_icc_igrpen1(1);
+    c->gic_ready = 1; /* a doorbell now wakes this core from WFI */
 }
 
 void gic_route_spi(uint32_t intid, uint32_t core)
@@ -131,6 +136,11 @@ void gic_send_sgi(uint32_t core, uint32_t intid)
      * before the receiver can take the interrupt. */
     arch_dsb();
     arch_write_icc_sgi1r(v);
+}
+
+void gic_clear_sgi(uint32_t intid)
+{
+    mmio_write32(mycpu()->gicr + GICR_ICPENDR0, 1u << intid);
 }
 
 uint32_t gic_ack(void)

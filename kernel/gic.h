@@ -9,6 +9,9 @@
 
 /* Software-generated interrupts the kernel uses. */
 #define SGI_DOORBELL 1 /* "look at your lines / IMSU": wakes a sleeping core */
+/* "your turn for the lock" (kernel/spinlock.c): wakes a core asleep for a
+ * lock.  Not an event for the core's tasks (they wait for doorbells). */
+#define SGI_LOCK_TURN 2
 
 #define GIC_INTID_SPURIOUS_MIN 1020u /* IAR values >= this are not interrupts */
 
@@ -22,6 +25,8 @@ void gic_cpu_init(void);
 void gic_route_spi(uint32_t intid, uint32_t core);
 /* Sends SGI intid to one core. */
 void gic_send_sgi(uint32_t core, uint32_t intid);
+/* Drops SGI intid if it is pending on this core (it was seen otherwise). */
+void gic_clear_sgi(uint32_t intid);
 uint32_t gic_ack(void);
 void gic_eoi(uint32_t intid);
 

@@ -1,11 +1,30 @@
-/* irq.c: the IRQ dispatcher every core runs (called by boot/vectors.S). */
+/* irq.c: the IRQ dispatcher every core runs (called by boot/vectors.S) and
+ * the handler table drivers fill in (see irq.h). */
 #include "kernel/irq.h"
 
-#include "drivers/serial/uart.h"
 #include "kernel/cpu.h"
 #include "kernel/gic.h"
-#include "kernel/ktime.h"
-#include "kernel/memlayout.h"
+#include "kernel/panic.h"
+#include "kernel/param.h"
+
+struct irq_entry {
+    irq_handler_fn fn; /* NULL: nothing to do but count the event */
+    void *arg;
+};
+
+/* Written by core 0 before the other cores start; read-only after. */
+static struct irq_entry irq_table[IRQ_MAX];
+
+void irq_register(uint32_t intid, irq_handler_fn fn, void *arg)
+{
+    if (intid >= IRQ_MAX)
+        panic("irq_register: interrupt %u is beyond the table's %u entries", (unsigned)intid,
+              (unsigned)IRQ_MAX);
+    if (irq_table[intid].fn)
+        panic("irq_register: interrupt %u already has a handler", (unsigned)intid);
+    irq_table[intid].arg = arg;
+    irq_table[intid].fn = fn;
+}
 
 void irq_dispatch(void)
 {
@@ -14,14 +33,11 @@ void irq_dispatch(void)
         uint32_t id = gic_ack();
         if (id >= GIC_INTID_SPURIOUS_MIN)
             break;
-        if (id == TIMER_INTID)
-            ktime_irq();
-        else if (id == UART0_INTID)
-            uart_irq();
-        /* SGI_DOORBELL needs no work here: the event count below is what
-         * wakes the waiting tasks, which then look at their lines. */
+        if (id < IRQ_MAX && irq_table[id].fn)
+            irq_table[id].fn(irq_table[id].arg);
         gic_eoi(id);
         c->irqs_taken++;
-        c->events++;
+        if (id != SGI_LOCK_TURN) /* only the lock waiter cares for that one */
+            c->events++;
     }
 }

@@ -1,7 +1,11 @@
 /* ktime.c: the generic timer (non-secure physical timer, PPI 30). */
 #include "kernel/ktime.h"
 
+#include <stddef.h>
+
 #include "kernel/arch.h"
+#include "kernel/irq.h"
+#include "kernel/memlayout.h"
 
 uint64_t ktime_now(void)
 {
@@ -38,9 +42,16 @@ void ktime_arm(uint64_t deadline)
     arch_write_cntp_ctl(CNTP_CTL_ENABLE);
 }
 
-void ktime_irq(void)
+/* The timer's interrupt. */
+static void ktime_irq(void *arg)
 {
+    (void)arg;
     /* The timer's output stays asserted while CVAL <= count: mask it, or
      * the interrupt would fire again at once.  Whoever waits rearms it. */
     arch_write_cntp_ctl(CNTP_CTL_ENABLE | CNTP_CTL_IMASK);
+}
+
+void ktime_init(void)
+{
+    irq_register(TIMER_INTID, ktime_irq, NULL);
 }

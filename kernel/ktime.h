@@ -15,7 +15,8 @@ uint64_t ktime_deadline_ms(uint32_t ms);
 int ktime_passed(uint64_t deadline);
 /* Makes this core's timer interrupt fire at deadline (0: no interrupt). */
 void ktime_arm(uint64_t deadline);
-/* Timer interrupt: masks the timer until the next ktime_arm. */
-void ktime_irq(void);
+/* Core 0, once: registers the timer interrupt's handler, which masks the
+ * timer until the next ktime_arm. */
+void ktime_init(void);
 
 #endif

@@ -1,8 +1,8 @@
 /* panic.h: stopping one core loudly.
  *
- * panic() and the fault handlers report on the host link (a LINK_FAULT
- * frame with core, role, kind, address and pc, then a readable LINK_LOG
- * line), mark the core halted and stop it in WFI with interrupts masked.
+ * panic() and the fault handlers report through the log sink (kernel/klog.h;
+ * a LINK_FAULT frame with core, role, kind, address and pc, then a
+ * readable LINK_LOG line), mark the core halted and stop it in WFI with interrupts masked.
  * The other cores keep running. */
 #ifndef LINKS1_KERNEL_PANIC_H
 #define LINKS1_KERNEL_PANIC_H

@@ -16,6 +16,10 @@
  * MPIDR.Aff0 = k % CORES_PER_CLUSTER, Aff1 = k / CORES_PER_CLUSTER. */
 #define CORES_PER_CLUSTER 16
 
+/* Interrupt ids the handler table covers (kernel/irq.h): the 16 SGIs,
+ * 16 PPIs (the timer is 30) and the first 32 SPIs (the UART is 33). */
+#define IRQ_MAX 64
+
 /* Spinlocks one core may hold at once (nesting depth). */
 #define LOCKS_HELD_MAX 8
 
@@ -47,6 +51,7 @@
 #define KLOG_MAX 200
 
 /* Timeouts (milliseconds of the generic timer). */
+#define BOOT_CORE_WAIT_MS 2000    /* core 0 waiting for one core to boot */
 #define PING_TIMEOUT_MS 2000      /* one ping-pong round over all lines */
 #define REPLY_TIMEOUT_MS 10000    /* a unit computer answering a request */
 #define STRESS_STALL_MS 10000     /* a stress run making no progress at all */

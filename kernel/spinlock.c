@@ -3,39 +3,86 @@
 
 #include "kernel/arch.h"
 #include "kernel/cpu.h"
+#include "kernel/gic.h"
 #include "kernel/panic.h"
 
 void spin_init(struct spinlock *l, const char *name)
 {
-    l->locked = 0;
+    l->next = 0;
+    l->serving = 0;
     l->name = name;
     l->owner = SPIN_NO_OWNER;
+    for (int i = 0; i < UNITS_MAX_CORES; i++)
+        l->sleeper[i] = 0;
 }
 
 int spin_holding(const struct spinlock *l)
 {
-    return l->locked && l->owner == (int)mycpu()->core;
+    /* Only the holder writes its own number here. */
+    return l->owner == (int)mycpu()->core;
+}
+
+/* Sleeps until ticket t is served.  The sleeper slot is written before
+ * serving is looked at, and the releaser writes serving before it looks at
+ * the slot; with a full barrier on each side, either this core sees its
+ * turn or the releaser sees this core and rings its doorbell. */
+static void spin_wait_turn(struct spinlock *l, uint32_t t, struct cpu *c)
+{
+    volatile uint16_t *slot = &l->sleeper[t % UNITS_MAX_CORES];
+    *slot = (uint16_t)(c->core + 1);
+    __atomic_thread_fence(__ATOMIC_SEQ_CST);
+    /* Interrupts stay deliverable while asleep if the caller had them on
+     * and this is its only lock: no handler takes a lock (spinlock.h). */
+    int window = c->irq_depth == 1 && c->irq_were_enabled;
+    int slept = 0;
+    while (__atomic_load_n(&l->serving, __ATOMIC_ACQUIRE) != t) {
+        if (!c->gic_ready)
+            continue; /* no SGI can reach this core yet: look again */
+        slept = 1;
+        c->lock_sleeps++;
+        arch_wfi(); /* masked, a pending interrupt still ends it */
+        if (window) {
+            arch_irq_enable(); /* the pending interrupt is taken here */
+            arch_irq_disable();
+        }
+    }
+    *slot = 0;
+    /* The turn was seen: its SGI, still pending if interrupts stayed
+     * masked, has nothing more to say. */
+    if (slept)
+        gic_clear_sgi(SGI_LOCK_TURN);
 }
 
 void spin_lock(struct spinlock *l)
 {
     irq_push_off();
+    struct cpu *c = mycpu();
     if (spin_holding(l))
         panic("spin_lock: lock '%s' already held by this core", l->name);
-    /* The exchange is an acquire: nothing inside the critical section can
-     * be seen by other cores before the lock is ours. */
-    while (__atomic_exchange_n(&l->locked, 1u, __ATOMIC_ACQUIRE) != 0) {
-        /* Another core holds it: wait for its SEV instead of hammering the
-         * line (a held lock is held for a few microseconds at most). */
-        while (__atomic_load_n(&l->locked, __ATOMIC_RELAXED) != 0)
-            arch_wfe();
-    }
-    struct cpu *c = mycpu();
     if (c->locks_held >= LOCKS_HELD_MAX)
         panic("spin_lock: '%s' would be lock %d held at once by this core (max %d)",
               l->name, c->locks_held + 1, LOCKS_HELD_MAX);
+    /* The ticket is an acquire: nothing inside the critical section can be
+     * seen by other cores before the lock is ours. */
+    uint32_t t = __atomic_fetch_add(&l->next, 1u, __ATOMIC_ACQ_REL);
+    if (__atomic_load_n(&l->serving, __ATOMIC_ACQUIRE) != t)
+        spin_wait_turn(l, t, c);
     l->owner = (int)c->core;
     c->held[c->locks_held++] = l;
+}
+
+/* Serves the next ticket and wakes the core asleep for it, if any. */
+static void spin_pass_on(struct spinlock *l)
+{
+    l->owner = SPIN_NO_OWNER;
+    uint32_t t = l->serving + 1u;
+    /* Release: every write of the critical section is visible before the
+     * next ticket reads served. */
+    __atomic_store_n(&l->serving, t, __ATOMIC_RELEASE);
+    __atomic_thread_fence(__ATOMIC_SEQ_CST);
+    uint16_t sleeper = l->sleeper[t % UNITS_MAX_CORES];
+    if (sleeper)
+        gic_send_sgi((uint32_t)sleeper - 1u, SGI_LOCK_TURN);
 }
 
 /* Forgets l in this core's list of held locks. */
@@ -56,14 +103,8 @@ void spin_unlock(struct spinlock *l)
     if (!spin_holding(l))
         panic("spin_unlock: lock '%s' not held by this core (owner %d)", l->name,
               l->owner);
-    l->owner = SPIN_NO_OWNER;
     spin_forget(mycpu(), l);
-    /* Release: every write of the critical section is visible before the
-     * lock reads free.  The DSB completes the store before SEV wakes the
-     * cores waiting in WFE. */
-    __atomic_store_n(&l->locked, 0u, __ATOMIC_RELEASE);
-    arch_dsb();
-    arch_sev();
+    spin_pass_on(l);
     irq_pop_off();
 }
 
@@ -72,13 +113,9 @@ int spin_release_all_mine(void)
     struct cpu *c = mycpu();
     int n = 0;
     while (c->locks_held > 0) {
-        struct spinlock *l = c->held[--c->locks_held];
-        l->owner = SPIN_NO_OWNER;
-        __atomic_store_n(&l->locked, 0u, __ATOMIC_RELEASE);
+        spin_pass_on(c->held[--c->locks_held]);
         n++;
     }
-    arch_dsb();
-    arch_sev();
     return n;
 }
 

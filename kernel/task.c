@@ -153,7 +153,10 @@ void task_schedule_forever(void)
         int ready = 0;
         for (int i = 0; i < TASKS_PER_CORE; i++)
             ready |= task_ready(c, &c->tasks[i]);
-        if (!ready)
+        if (!ready) {
+            if (!c->boot_done)
+                cpu_boot_done(); /* first time idle: the next core may boot */
             task_idle(c, mark, earliest);
+        }
     }
 }

@@ -4,25 +4,7 @@
 #include <stddef.h>
 #include <string.h>
 
-/* floor(sqrt(v)), bit by bit: exact for any 64-bit v, no floating point (the
- * fixed-point firmware has none to spare). */
-static uint64_t areas_isqrt(uint64_t v)
-{
-    uint64_t root = 0;
-    uint64_t bit = 1ull << 62;
-    while (bit > v)
-        bit >>= 2;
-    while (bit != 0) {
-        if (v >= root + bit) {
-            v -= root + bit;
-            root = (root >> 1) + bit;
-        } else {
-            root >>= 1;
-        }
-        bit >>= 2;
-    }
-    return root;
-}
+#include "fixed/isqrt.h"
 
 static uint32_t areas_clamp(uint32_t v, uint32_t lo, uint32_t hi)
 {
@@ -47,7 +29,7 @@ static uint32_t areas_grid_bands(uint32_t width, uint32_t height, uint32_t k)
     uint32_t lo = (uint32_t)(((uint64_t)k + width - 1) / width);
     uint32_t hi = k < height ? k : height;
     uint64_t want = (uint64_t)k * height; /* ideal^2 * width */
-    uint32_t r0 = (uint32_t)areas_isqrt(want / width);
+    uint32_t r0 = (uint32_t)isqrt_u64(want / width);
     /* Round to the nearer of r0 and r0 + 1 by comparing squares. */
     uint64_t below = want - (uint64_t)r0 * r0 * width;
     uint64_t above = (uint64_t)(r0 + 1) * (r0 + 1) * width - want;

@@ -1,3 +1,9 @@
 # proto/: what the firmware and the host tools share: wire and file formats,
-# result layouts, the arithmetic codes, the core counts, the area schedules.
-SHARED_SRCS += proto/crc32.c proto/hostlink.c proto/arith.c proto/areas.c
+# result layouts, the arithmetic codes, the core counts, the area schedules,
+# the text formatter.
+SHARED_SRCS += proto/crc32.c proto/hostlink.c proto/arith.c proto/areas.c proto/textfmt.c
+
+# The shared formatter against the host's snprintf.
+HOST_TESTS += test_textfmt
+test_textfmt_SRCS := tests/host/test_textfmt.c
+test_textfmt_ARITH := double

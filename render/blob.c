@@ -2,45 +2,23 @@
  * blob.h). */
 #include "render/blob.h"
 
+#include <stdarg.h>
+
+#include "proto/textfmt.h"
 #include "render/scene_load.h"
 
 /* ------------------------------------------------------------ messages */
 
-typedef struct {
-    render_blob_error_t *err;
-    size_t len;
-} blob_msg_t;
-
-static void blob_msg_str(blob_msg_t *m, const char *s)
+/* Sets the status and the message (cut to RENDER_BLOB_MSG_MAX - 1). */
+static void blob_fail(render_blob_error_t *err, render_blob_status_t st, const char *fmt, ...)
+    __attribute__((format(printf, 3, 4)));
+static void blob_fail(render_blob_error_t *err, render_blob_status_t st, const char *fmt, ...)
 {
-    while (s && *s && m->len + 1 < RENDER_BLOB_MSG_MAX)
-        m->err->message[m->len++] = *s++;
-    m->err->message[m->len] = 0;
-}
-
-static void blob_msg_num(blob_msg_t *m, uint64_t v)
-{
-    char d[24];
-    int k = 0;
-    do {
-        d[k++] = (char)('0' + v % 10);
-        v /= 10;
-    } while (v);
-    char s[24];
-    for (int i = 0; i < k; i++)
-        s[i] = d[k - 1 - i];
-    s[k] = 0;
-    blob_msg_str(m, s);
-}
-
-/* Sets the status and starts the message with text. */
-static blob_msg_t blob_fail(render_blob_error_t *err, render_blob_status_t st, const char *text)
-{
-    blob_msg_t m = {err, 0};
+    va_list ap;
+    va_start(ap, fmt);
+    fmt_vsnprintf(err->message, sizeof err->message, fmt, ap);
+    va_end(ap);
     err->status = st;
-    err->message[0] = 0;
-    blob_msg_str(&m, text);
-    return m;
 }
 
 static void blob_ok(render_blob_error_t *err)
@@ -65,8 +43,7 @@ render_blob_status_t render_blob_bytes(const uint8_t *compiled, size_t len, size
     *bytes = 0;
     blob_ok(err);
     if (scene_load_shape(compiled, len, &shape, &texel_bytes, &lerr) != SCENE_LOAD_OK) {
-        blob_msg_t m = blob_fail(err, RENDER_BLOB_ERR_LOAD, "scene refused: ");
-        blob_msg_str(&m, lerr.message);
+        blob_fail(err, RENDER_BLOB_ERR_LOAD, "scene refused: %s", lerr.message);
         return err->status;
     }
     /* the header first (alignment of the block start: none), then the
@@ -83,18 +60,16 @@ render_blob_status_t render_blob_build(const uint8_t *compiled, size_t len, uint
     size_t need;
     *out = NULL;
     if (!blob_aligned(block)) {
-        blob_fail(err, RENDER_BLOB_ERR_BLOCK, "blob block NULL or not aligned to RENDER_RELOCATE_ALIGN");
+        blob_fail(err, RENDER_BLOB_ERR_BLOCK,
+                  "blob block NULL or not aligned to RENDER_RELOCATE_ALIGN");
         return err->status;
     }
     if (render_blob_bytes(compiled, len, &need, err) != RENDER_BLOB_OK)
         return err->status;
     if (need > size) {
-        blob_msg_t m = blob_fail(err, RENDER_BLOB_ERR_TOO_BIG, "the scene needs ");
-        blob_msg_num(&m, need);
-        blob_msg_str(&m, " bytes, more than the ");
-        blob_msg_num(&m, size);
-        blob_msg_str(&m, " bytes of ");
-        blob_msg_str(&m, limit_name ? limit_name : "the block");
+        blob_fail(err, RENDER_BLOB_ERR_TOO_BIG,
+                  "the scene needs %zu bytes, more than the %zu bytes of %s", need, size,
+                  limit_name ? limit_name : "the block");
         return err->status;
     }
     arena_t arena;
@@ -102,17 +77,15 @@ render_blob_status_t render_blob_build(const uint8_t *compiled, size_t len, uint
     render_blob_t *blob = ARENA_NEW_ARRAY(&arena, render_blob_t, 1);
     scene_load_error_t lerr;
     if (!blob || scene_load(compiled, len, &arena, &blob->scene, &lerr) != SCENE_LOAD_OK) {
-        blob_msg_t m = blob_fail(err, RENDER_BLOB_ERR_LOAD, "scene refused: ");
-        blob_msg_str(&m, blob ? lerr.message : "no room for the blob header");
+        blob_fail(err, RENDER_BLOB_ERR_LOAD, "scene refused: %s",
+                  blob ? lerr.message : "no room for the blob header");
         return err->status;
     }
     render_frame_t *frame;
     render_status_t st = render_prepare(&blob->scene, frame_index, &arena, &frame);
     if (st != RENDER_OK) {
-        blob_msg_t m = blob_fail(err, RENDER_BLOB_ERR_PREPARE, "frame ");
-        blob_msg_num(&m, frame_index);
-        blob_msg_str(&m, ": ");
-        blob_msg_str(&m, render_status_name(st));
+        blob_fail(err, RENDER_BLOB_ERR_PREPARE, "frame %lu: %s", (unsigned long)frame_index,
+                  render_status_name(st));
         return err->status;
     }
     blob->magic = RENDER_BLOB_MAGIC;
@@ -129,7 +102,8 @@ render_blob_status_t render_blob_build(const uint8_t *compiled, size_t len, uint
 static render_blob_t *blob_header(const void *block, size_t size, render_blob_error_t *err)
 {
     if (!blob_aligned(block)) {
-        blob_fail(err, RENDER_BLOB_ERR_BLOCK, "blob block NULL or not aligned to RENDER_RELOCATE_ALIGN");
+        blob_fail(err, RENDER_BLOB_ERR_BLOCK,
+                  "blob block NULL or not aligned to RENDER_RELOCATE_ALIGN");
         return NULL;
     }
     render_blob_t *blob = (render_blob_t *)(uintptr_t)block;
@@ -138,10 +112,8 @@ static render_blob_t *blob_header(const void *block, size_t size, render_blob_er
         return NULL;
     }
     if (blob->bytes < sizeof *blob || blob->bytes > size) {
-        blob_msg_t m = blob_fail(err, RENDER_BLOB_ERR_NOT_BLOB, "the blob's ");
-        blob_msg_num(&m, blob->bytes);
-        blob_msg_str(&m, " bytes do not fit the block of ");
-        blob_msg_num(&m, size);
+        blob_fail(err, RENDER_BLOB_ERR_NOT_BLOB, "the blob's %zu bytes do not fit the block of %zu",
+                  blob->bytes, size);
         return NULL;
     }
     return blob;
@@ -161,8 +133,7 @@ render_blob_status_t render_blob_relocate(void *block, size_t size, render_blob_
     render_frame_t *frame = blob->frame;
     const char *bad;
     if (render_relocate(block, blob->bytes, home, &scene, &frame, &bad) != RENDER_OK) {
-        blob_msg_t m = blob_fail(err, RENDER_BLOB_ERR_RELOCATE, "blob not self-contained: ");
-        blob_msg_str(&m, bad);
+        blob_fail(err, RENDER_BLOB_ERR_RELOCATE, "blob not self-contained: %s", bad);
         return err->status;
     }
     blob->frame = frame;
@@ -180,7 +151,8 @@ render_blob_status_t render_blob_open(const void *block, size_t size, const rend
     if (!blob)
         return err->status;
     if (blob->home != (uintptr_t)block) {
-        blob_fail(err, RENDER_BLOB_ERR_NOT_BLOB, "the blob was built elsewhere and not relocated here");
+        blob_fail(err, RENDER_BLOB_ERR_NOT_BLOB,
+                  "the blob was built elsewhere and not relocated here");
         return err->status;
     }
     *out = blob;

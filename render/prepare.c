@@ -154,6 +154,18 @@ static render_status_t prep_camera(const scene_t *s, xform_t *world_to_eye, xfor
     return RENDER_OK;
 }
 
+/* No keys and the identity matrix: the cluster only groups. */
+static int prep_is_plain(const scene_cluster_t *c)
+{
+    if (c->key_count != 0)
+        return 0;
+    for (int r = 0; r < 3; r++)
+        for (int k = 0; k < 4; k++)
+            if (!num_eq(c->local.m[r][k], r == k ? NUM_ONE : NUM_ZERO))
+                return 0;
+    return 1;
+}
+
 static render_status_t prep_check(const scene_t *s)
 {
     if (s->width < 1 || s->width > RENDER_MAX_WIDTH || s->height < 1 || s->height > RENDER_MAX_HEIGHT)
@@ -433,6 +445,17 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
         return st;
     for (uint32_t i = 0; i < s->cluster_count; i++) {
         const scene_cluster_t *c = &s->clusters[i];
+        if (i > 0 && prep_is_plain(c)) { /* e.g. a node of the automatic
+                                            hierarchy: exactly its parent's
+                                            maps, so its primitives come out
+                                            bit for bit as in the parent */
+            depth[i] = (uint8_t)(depth[c->parent] + 1);
+            if (depth[i] > RENDER_MAX_CLUSTER_DEPTH)
+                return RENDER_ERR_CLUSTER;
+            to_eye[i] = to_eye[c->parent];
+            from_eye[i] = from_eye[c->parent];
+            continue;
+        }
         xform_t key = prep_key_xform(s, c, frame_index);
         xform_t key_inv, local_inv;
         if (!xform_invert(&key, &key_inv) || !xform_invert(&c->local, &local_inv))

@@ -357,12 +357,66 @@ void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit)
     }
 }
 
-int prim_aabb_hit(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax)
+int prim_aabb_entry(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax, num_t *entry)
 {
     num_t tnear = tmin, tfar = tmax;
     for (int axis = 0; axis < 3; axis++)
         if (!prim_slab(vec3_get(ray->origin, axis), vec3_get(ray->dir, axis),
                        vec3_get(b->lo, axis), vec3_get(b->hi, axis), &tnear, &tfar))
             return 0;
+    *entry = tnear;
     return 1;
+}
+
+void prim_aabb_ray(const ray_t *ray, aabb_ray_t *r)
+{
+    (void)ray; /* the fixed build divides on every axis */
+    for (int axis = 0; axis < 3; axis++) {
+        r->inv[axis] = NUM_ZERO;
+        r->use_div[axis] = 1;
+#if !defined(LINKS1_NUM_FIXED)
+        num_t d = vec3_get(ray->dir, axis);
+        if (!num_eq(d, NUM_ZERO)) {
+            num_t inv = num_recip(d);
+            if (num_lt(num_abs(inv), NUM_FAR)) {
+                r->inv[axis] = inv;
+                r->use_div[axis] = 0;
+            }
+        }
+#endif
+    }
+}
+
+int prim_aabb_entry_ray(const aabb_t *b, const ray_t *ray, const aabb_ray_t *r, num_t tmin,
+                        num_t tmax, num_t *entry)
+{
+    num_t tnear = tmin, tfar = tmax;
+    for (int axis = 0; axis < 3; axis++) {
+        num_t o = vec3_get(ray->origin, axis);
+        num_t lo = vec3_get(b->lo, axis), hi = vec3_get(b->hi, axis);
+        if (r->use_div[axis]) {
+            if (!prim_slab(o, vec3_get(ray->dir, axis), lo, hi, &tnear, &tfar))
+                return 0;
+            continue;
+        }
+        num_t t1 = num_mul(num_sub(lo, o), r->inv[axis]);
+        num_t t2 = num_mul(num_sub(hi, o), r->inv[axis]);
+        if (num_gt(t1, t2)) {
+            num_t t = t1;
+            t1 = t2;
+            t2 = t;
+        }
+        tnear = num_max(tnear, t1);
+        tfar = num_min(tfar, t2);
+        if (num_gt(tnear, tfar))
+            return 0;
+    }
+    *entry = tnear;
+    return 1;
+}
+
+int prim_aabb_hit(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax)
+{
+    num_t entry;
+    return prim_aabb_entry(b, ray, tmin, tmax, &entry);
 }

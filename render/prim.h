@@ -36,6 +36,22 @@ void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit);
 
 /* Ray-box test: 1 if the ray meets box b at some t in [tmin, tmax]. */
 int prim_aabb_hit(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax);
+/* The same, with *entry the t where the ray enters the box (>= tmin). */
+int prim_aabb_entry(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax, num_t *entry);
+
+/* A ray's reciprocal direction for many box tests: in float and double a
+ * product replaces each slab's division (its rounding, well below
+ * RENDER_BOUNDS_PAD_VALUE at any coordinate in range, never makes a padded
+ * box miss a surface it holds); the fixed build keeps the exact divisions,
+ * as its reciprocals would be too coarse far from the eye. */
+typedef struct {
+    num_t inv[3];
+    uint8_t use_div[3]; /* 1: divide on this axis (fixed, or d = 0 or tiny) */
+} aabb_ray_t;
+void prim_aabb_ray(const ray_t *ray, aabb_ray_t *r);
+/* prim_aabb_entry with r from prim_aabb_ray(ray). */
+int prim_aabb_entry_ray(const aabb_t *b, const ray_t *ray, const aabb_ray_t *r, num_t tmin,
+                        num_t tmax, num_t *entry);
 
 /* LINKS-1 density field of one component of weight b at squared distance
  * r2, given inv_radius2 = 1/d^2. */

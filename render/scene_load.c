@@ -8,12 +8,14 @@
  */
 #include "render/scene_load.h"
 
+#include <stdarg.h>
+
 #include "proto/crc32.h"
 #include "proto/scene_format.h"
+#include "proto/textfmt.h"
 #include "proto/wire.h"
 #include "render/vec3.h"
 
-#define LOAD_NO_NUMBER (-1L - 0x7fffffffL) /* "no number in this message part" */
 #define LOAD_F32_EXP_MASK 0x7f800000u
 #define LOAD_F32_SIGN 0x80000000u
 
@@ -31,62 +33,25 @@ struct load {
 
 /* ------------------------------------------------------------ messages */
 
-static void load_msg_str(char *m, size_t *n, const char *s)
+/* Sets the status and the message (cut to SCENE_LOAD_MSG_MAX - 1). */
+static scene_load_status_t load_fail(struct load *L, scene_load_status_t st, const char *fmt,
+                                     ...) __attribute__((format(printf, 3, 4)));
+static scene_load_status_t load_fail(struct load *L, scene_load_status_t st, const char *fmt,
+                                     ...)
 {
-    while (*s && *n + 1 < SCENE_LOAD_MSG_MAX)
-        m[(*n)++] = *s++;
-    m[*n] = 0;
-}
-
-static void load_msg_num(char *m, size_t *n, long v)
-{
-    char d[24];
-    int k = 0;
-    unsigned long u = v < 0 ? 0ul - (unsigned long)v : (unsigned long)v;
-    do {
-        d[k++] = (char)('0' + u % 10);
-        u /= 10;
-    } while (u);
-    if (v < 0)
-        d[k++] = '-';
-    char out[24];
-    for (int i = 0; i < k; i++)
-        out[i] = d[k - 1 - i];
-    out[k] = 0;
-    load_msg_str(m, n, out);
-}
-
-/* "a na b nb c": parts with LOAD_NO_NUMBER or NULL are left out. */
-static scene_load_status_t load_fail(struct load *L, scene_load_status_t st, const char *a,
-                                     long na, const char *b, long nb, const char *c)
-{
-    char *m = L->err->message;
-    size_t n = 0;
-    m[0] = 0;
+    va_list ap;
+    va_start(ap, fmt);
+    fmt_vsnprintf(L->err->message, sizeof L->err->message, fmt, ap);
+    va_end(ap);
     L->err->status = st;
-    if (a)
-        load_msg_str(m, &n, a);
-    if (na != LOAD_NO_NUMBER)
-        load_msg_num(m, &n, na);
-    if (b)
-        load_msg_str(m, &n, b);
-    if (nb != LOAD_NO_NUMBER)
-        load_msg_num(m, &n, nb);
-    if (c)
-        load_msg_str(m, &n, c);
     return st;
 }
 
-/* "<what> <i>: <problem>" */
+/* "<what><i>: <problem>" */
 static scene_load_status_t load_bad(struct load *L, scene_load_status_t st, const char *what,
                                     uint32_t i, const char *problem)
 {
-    char part[SCENE_LOAD_MSG_MAX];
-    size_t n = 0;
-    part[0] = 0;
-    load_msg_str(part, &n, ": ");
-    load_msg_str(part, &n, problem);
-    return load_fail(L, st, what, (long)i, part, LOAD_NO_NUMBER, NULL);
+    return load_fail(L, st, "%s%lu: %s", what, (unsigned long)i, problem);
 }
 
 #define LOAD_TRY(x)                                                          \
@@ -187,39 +152,39 @@ static scene_load_status_t load_header(struct load *L, size_t len)
 {
     const uint8_t *b = L->buf;
     if (len < SCN_HEADER_SIZE)
-        return load_fail(L, SCENE_LOAD_ERR_TRUNCATED, "scene of ", (long)len,
-                         " bytes is shorter than its header", LOAD_NO_NUMBER, NULL);
+        return load_fail(L, SCENE_LOAD_ERR_TRUNCATED,
+                         "scene of %ld bytes is shorter than its header", (long)len);
     if (b[0] != SCN_MAGIC_0 || b[1] != SCN_MAGIC_1 || b[2] != SCN_MAGIC_2 ||
         b[3] != SCN_MAGIC_3)
-        return load_fail(L, SCENE_LOAD_ERR_MAGIC, "not a compiled scene (magic is not L1SC)",
-                         LOAD_NO_NUMBER, NULL, LOAD_NO_NUMBER, NULL);
+        return load_fail(L, SCENE_LOAD_ERR_MAGIC, "not a compiled scene (magic is not L1SC)");
     uint16_t version = wire_get_u16(b + SCN_HDR_VERSION);
     if (version != SCN_VERSION)
-        return load_fail(L, SCENE_LOAD_ERR_VERSION, "format version ", version,
-                         " (this loader reads version ", SCN_VERSION, ")");
+        return load_fail(L, SCENE_LOAD_ERR_VERSION,
+                         "format version %ld (this loader reads version %ld)", (long)version,
+                         (long)SCN_VERSION);
     uint32_t total = wire_get_u32(b + SCN_HDR_TOTAL);
     if (total > SCN_MAX_SIZE)
-        return load_fail(L, SCENE_LOAD_ERR_SIZE, "total size ", (long)total,
-                         " is over the limit of ", (long)SCN_MAX_SIZE, " bytes");
+        return load_fail(L, SCENE_LOAD_ERR_SIZE, "total size %ld is over the limit of %ld bytes",
+                         (long)total, (long)SCN_MAX_SIZE);
     if (total > len)
-        return load_fail(L, SCENE_LOAD_ERR_TRUNCATED, "scene truncated: header says ",
-                         (long)total, " bytes, got ", (long)len, NULL);
+        return load_fail(L, SCENE_LOAD_ERR_TRUNCATED,
+                         "scene truncated: header says %ld bytes, got %ld", (long)total, (long)len);
     if (total != len)
-        return load_fail(L, SCENE_LOAD_ERR_SIZE, "header says ", (long)total,
-                         " bytes but the scene is ", (long)len, " bytes");
+        return load_fail(L, SCENE_LOAD_ERR_SIZE, "header says %ld bytes but the scene is %ld bytes",
+                         (long)total, (long)len);
     uint16_t nsec = wire_get_u16(b + SCN_HDR_SECTIONS);
     if (nsec < 1 || nsec > SCN_SEC_COUNT)
-        return load_fail(L, SCENE_LOAD_ERR_SECTION, "section count ", nsec,
-                         " is not 1..", SCN_SEC_COUNT, NULL);
+        return load_fail(L, SCENE_LOAD_ERR_SECTION, "section count %ld is not 1..%ld", (long)nsec,
+                         (long)SCN_SEC_COUNT);
     uint32_t table_end = SCN_HEADER_SIZE + (uint32_t)nsec * SCN_SECENT_SIZE;
     if (table_end > total)
-        return load_fail(L, SCENE_LOAD_ERR_SIZE, "total size ", (long)total,
-                         " cannot hold the section table of ", nsec, " entries");
+        return load_fail(L, SCENE_LOAD_ERR_SIZE,
+                         "total size %ld cannot hold the section table of %ld entries",
+                         (long)total, (long)nsec);
     L->total = total;
     uint32_t crc = crc32(b + SCN_CRC_START, total - SCN_CRC_START);
     if (crc != wire_get_u32(b + SCN_HDR_CRC))
-        return load_fail(L, SCENE_LOAD_ERR_CRC, "checksum mismatch: the scene is corrupt",
-                         LOAD_NO_NUMBER, NULL, LOAD_NO_NUMBER, NULL);
+        return load_fail(L, SCENE_LOAD_ERR_CRC, "checksum mismatch: the scene is corrupt");
     /* The table: kinds known and unique, bodies inside the file, after the
      * table, aligned, not overlapping, size = count * record size. */
     uint32_t lo[SCN_SEC_COUNT], hi[SCN_SEC_COUNT];
@@ -230,27 +195,25 @@ static scene_load_status_t load_header(struct load *L, size_t len)
         uint32_t bytes = wire_get_u32(e + SCN_SECENT_BYTES);
         uint32_t count = wire_get_u32(e + SCN_SECENT_COUNT);
         if (kind < 1 || kind > SCN_SEC_COUNT)
-            return load_fail(L, SCENE_LOAD_ERR_SECTION, "section entry ", (long)i,
-                             ": unknown kind ", (long)kind, NULL);
+            return load_fail(L, SCENE_LOAD_ERR_SECTION, "section entry %ld: unknown kind %ld",
+                             (long)i, (long)kind);
         if (L->sec[kind].present)
-            return load_fail(L, SCENE_LOAD_ERR_SECTION, "section kind ", (long)kind,
-                             " appears twice", LOAD_NO_NUMBER, NULL);
+            return load_fail(L, SCENE_LOAD_ERR_SECTION, "section kind %ld appears twice",
+                             (long)kind);
         if (off % SCN_SECTION_ALIGN != 0 || off < table_end || off > total ||
             bytes > total - off)
-            return load_fail(L, SCENE_LOAD_ERR_SECTION, "section kind ", (long)kind,
-                             ": body outside the file (offset ", (long)off, ")");
+            return load_fail(L, SCENE_LOAD_ERR_SECTION, "section kind %ld: body outside the file "
+                             "(offset %ld)", (long)kind, (long)off);
         if (count > load_count_limit[kind])
-            return load_fail(L, SCENE_LOAD_ERR_LIMIT, "section kind ", (long)kind,
-                             ": record count over its limit of ",
-                             (long)load_count_limit[kind], NULL);
+            return load_fail(L, SCENE_LOAD_ERR_LIMIT, "section kind %ld: record count over its "
+                             "limit of %ld", (long)kind, (long)load_count_limit[kind]);
         if ((uint64_t)count * load_record_size[kind] != bytes)
-            return load_fail(L, SCENE_LOAD_ERR_SECTION, "section kind ", (long)kind,
-                             ": size is not count * record size ",
-                             (long)load_record_size[kind], NULL);
+            return load_fail(L, SCENE_LOAD_ERR_SECTION, "section kind %ld: size is not count * "
+                             "record size %ld", (long)kind, (long)load_record_size[kind]);
         for (uint32_t j = 0; j < i; j++)
             if (off < hi[j] && lo[j] < off + bytes)
-                return load_fail(L, SCENE_LOAD_ERR_SECTION, "section kind ", (long)kind,
-                                 " overlaps another section", LOAD_NO_NUMBER, NULL);
+                return load_fail(L, SCENE_LOAD_ERR_SECTION,
+                                 "section kind %ld overlaps another section", (long)kind);
         lo[i] = off;
         hi[i] = off + bytes;
         L->sec[kind].present = 1;
@@ -258,11 +221,9 @@ static scene_load_status_t load_header(struct load *L, size_t len)
         L->sec[kind].count = count;
     }
     if (!L->sec[SCN_SEC_VIEW].present || L->sec[SCN_SEC_VIEW].count != 1)
-        return load_fail(L, SCENE_LOAD_ERR_MISSING, "the view section is missing",
-                         LOAD_NO_NUMBER, NULL, LOAD_NO_NUMBER, NULL);
+        return load_fail(L, SCENE_LOAD_ERR_MISSING, "the view section is missing");
     if (!L->sec[SCN_SEC_CLUSTERS].present || L->sec[SCN_SEC_CLUSTERS].count < 1)
-        return load_fail(L, SCENE_LOAD_ERR_MISSING, "the cluster section (root) is missing",
-                         LOAD_NO_NUMBER, NULL, LOAD_NO_NUMBER, NULL);
+        return load_fail(L, SCENE_LOAD_ERR_MISSING, "the cluster section (root) is missing");
     return SCENE_LOAD_OK;
 }
 
@@ -281,27 +242,23 @@ static scene_load_status_t load_view(struct load *L, scene_t *s)
     uint16_t flags = wire_get_u16(p + SCN_VIEW_FLAGS);
     uint32_t frames = wire_get_u32(p + SCN_VIEW_FRAMES);
     if (w < 1 || w > SCN_MAX_WIDTH || h < 1 || h > SCN_MAX_HEIGHT)
-        return load_fail(L, SCENE_LOAD_ERR_LIMIT, "image size ", w, "x", h,
-                         " outside 1..1024 per side");
+        return load_fail(L, SCENE_LOAD_ERR_LIMIT, "image size %ldx%ld outside 1..1024 per side",
+                         (long)w, (long)h);
     if (depth > SCN_MAX_DEPTH)
-        return load_fail(L, SCENE_LOAD_ERR_LIMIT, "max depth ", depth, " over the limit of ",
-                         SCN_MAX_DEPTH, NULL);
+        return load_fail(L, SCENE_LOAD_ERR_LIMIT, "max depth %ld over the limit of %ld",
+                         (long)depth, (long)SCN_MAX_DEPTH);
     if (flags & ~SCN_OPT_KNOWN)
-        return load_fail(L, SCENE_LOAD_ERR_VALUE, "unknown option flags ", flags, NULL,
-                         LOAD_NO_NUMBER, NULL);
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "unknown option flags %ld", (long)flags);
     if (frames < 1 || frames > SCN_MAX_FRAMES)
-        return load_fail(L, SCENE_LOAD_ERR_LIMIT, "frame count ", (long)frames, " not 1..",
-                         SCN_MAX_FRAMES, NULL);
+        return load_fail(L, SCENE_LOAD_ERR_LIMIT, "frame count %ld not 1..%ld", (long)frames,
+                         (long)SCN_MAX_FRAMES);
     if (!load_coords(p + SCN_VIEW_EYE, 9))
-        return load_fail(L, SCENE_LOAD_ERR_VALUE, "camera: a coordinate is not finite or "
-                         "beyond the coordinate limit", LOAD_NO_NUMBER, NULL, LOAD_NO_NUMBER,
-                         NULL);
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "camera: a coordinate is not finite or beyond "
+                         "the coordinate limit");
     if (!load_pos(wire_get_u32(p + SCN_VIEW_TAN_HALF_FOV_Y), SCN_MAX_TAN_HALF_FOV))
-        return load_fail(L, SCENE_LOAD_ERR_VALUE, "camera: field of view out of range",
-                         LOAD_NO_NUMBER, NULL, LOAD_NO_NUMBER, NULL);
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "camera: field of view out of range");
     if (!load_units(p + SCN_VIEW_BACKGROUND, 3, 1.0f))
-        return load_fail(L, SCENE_LOAD_ERR_VALUE, "background colour not within 0..1",
-                         LOAD_NO_NUMBER, NULL, LOAD_NO_NUMBER, NULL);
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "background colour not within 0..1");
     s->width = w;
     s->height = h;
     s->frame_count = frames;
@@ -465,7 +422,8 @@ static scene_load_status_t load_keys(struct load *L, scene_key_t *out)
                               num_mul(k->rot_z, k->rot_z));
         num_t tol = NUM_C(2 * SCN_QUAT_NORM_TOLERANCE);
         if (num_lt(norm2, num_sub(NUM_ONE, tol)) || num_gt(norm2, num_add(NUM_ONE, tol)))
-            return load_bad(L, SCENE_LOAD_ERR_VALUE, "key ", i, "rotation is not a unit quaternion");
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "key ", i,
+                            "rotation is not a unit quaternion");
     }
     return SCENE_LOAD_OK;
 }
@@ -667,9 +625,8 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
         !nesting) {
         size_t need = arena->failed_request;
         arena_release_to(arena, mark);
-        return load_fail(&L, SCENE_LOAD_ERR_ARENA, "arena too small for the scene: ",
-                         (long)(arena->size - mark), " bytes free, a request of ", (long)need,
-                         " bytes failed");
+        return load_fail(&L, SCENE_LOAD_ERR_ARENA, "arena too small for the scene: %ld bytes free, "
+                         "a request of %ld bytes failed", (long)(arena->size - mark), (long)need);
     }
     scene_load_status_t st = load_view(&L, out);
     if (st == SCENE_LOAD_OK)
@@ -687,8 +644,7 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
     if (st == SCENE_LOAD_OK)
         st = load_prims(&L, prims);
     if (st == SCENE_LOAD_OK && n_light == 0)
-        st = load_fail(&L, SCENE_LOAD_ERR_MISSING, "the scene has no light", LOAD_NO_NUMBER,
-                       NULL, LOAD_NO_NUMBER, NULL);
+        st = load_fail(&L, SCENE_LOAD_ERR_MISSING, "the scene has no light");
     if (st != SCENE_LOAD_OK) {
         arena_release_to(arena, mark);
         memset(out, 0, sizeof *out);

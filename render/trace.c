@@ -51,6 +51,7 @@ typedef struct {
     enum trace_mode mode;
     nearest_t nearest;
     crossings_t *cross;
+    aabb_ray_t box_ray; /* the ray's reciprocals for box tests */
 } trace_walk_t;
 
 static void trace_record(trace_walk_t *w, uint32_t prim, num_t t)
@@ -118,13 +119,29 @@ static void trace_test_prim(trace_walk_t *w, uint32_t prim)
     }
 }
 
-static int trace_box(trace_walk_t *w, const aabb_t *b)
+/* Box test against the nearest hit so far; *entry the t where the ray
+ * enters the box (tmin when bounds are off). */
+static int trace_box_entry(trace_walk_t *w, const aabb_t *b, num_t *entry)
 {
+    *entry = w->tmin;
     if (!w->ctx->options.use_bounds)
         return 1;
     w->ctx->stats.box_tests++;
     num_t tmax = w->mode == TRACE_NEAREST && w->nearest.found ? w->nearest.t : w->tmax;
-    return prim_aabb_hit(b, w->ray, w->tmin, tmax);
+    return prim_aabb_entry_ray(b, w->ray, &w->box_ray, w->tmin, tmax, entry);
+}
+
+static int trace_box(trace_walk_t *w, const aabb_t *b)
+{
+    num_t entry;
+    return trace_box_entry(w, b, &entry);
+}
+
+/* A box entered at t can still hold a hit: not past the nearest so far
+ * (equal t may still win the tie on the primitive index). */
+static int trace_still_open(const trace_walk_t *w, num_t entry)
+{
+    return w->mode != TRACE_NEAREST || !w->nearest.found || !num_gt(entry, w->nearest.t);
 }
 
 static void trace_own_prims(trace_walk_t *w, const render_cluster_t *c)
@@ -139,20 +156,44 @@ static void trace_own_prims(trace_walk_t *w, const render_cluster_t *c)
     }
 }
 
+/* Everything below cluster index, whose box the ray has already passed.
+ * Two children (a node of the automatic hierarchy, docs/scene-format.md)
+ * are visited nearer box first; the farther one is skipped when its entry
+ * lies beyond the nearest hit found in the nearer. */
 static void trace_cluster(trace_walk_t *w, uint32_t index)
 {
     const render_frame_t *f = w->ctx->frame;
     const render_cluster_t *c = &f->clusters[index];
-    if (trace_walk_done(w) || !trace_box(w, &c->bounds))
-        return;
     trace_own_prims(w, c);
+    const uint16_t *kids = &f->child_list[c->first_child];
+    if (c->child_count == 2) {
+        uint32_t a = kids[0], b = kids[1];
+        num_t ta, tb;
+        int ha = !trace_walk_done(w) && trace_box_entry(w, &f->clusters[a].bounds, &ta);
+        int hb = !trace_walk_done(w) && trace_box_entry(w, &f->clusters[b].bounds, &tb);
+        if (ha && hb && num_lt(tb, ta)) {
+            uint32_t k = a;
+            num_t t = ta;
+            a = b, ta = tb;
+            b = k, tb = t;
+        } else if (!ha) {
+            a = b, ta = tb, ha = hb, hb = 0;
+        }
+        if (ha)
+            trace_cluster(w, a);
+        if (hb && !trace_walk_done(w) && trace_still_open(w, tb))
+            trace_cluster(w, b);
+        return;
+    }
     for (uint32_t k = 0; k < c->child_count; k++)
-        trace_cluster(w, f->child_list[c->first_child + k]);
+        if (!trace_walk_done(w) && trace_box(w, &f->clusters[kids[k]].bounds))
+            trace_cluster(w, kids[k]);
 }
 
 static void trace_walk(trace_walk_t *w, const uint16_t *clip, uint32_t clip_count)
 {
     const render_frame_t *f = w->ctx->frame;
+    prim_aabb_ray(w->ray, &w->box_ray);
     if (clip) {
         for (uint32_t k = 0; k < clip_count; k++) {
             const render_cluster_t *c = &f->clusters[clip[k]];
@@ -161,7 +202,8 @@ static void trace_walk(trace_walk_t *w, const uint16_t *clip, uint32_t clip_coun
             trace_own_prims(w, c);
         }
     } else if (w->ctx->options.use_hierarchy) {
-        trace_cluster(w, 0);
+        if (trace_box(w, &f->clusters[0].bounds))
+            trace_cluster(w, 0);
     } else {
         for (uint32_t prim = 0; prim < f->prim_count; prim++)
             if (trace_box(w, &f->prims[prim].bounds))
@@ -172,7 +214,7 @@ static void trace_walk(trace_walk_t *w, const uint16_t *clip, uint32_t clip_coun
 static int trace_nearest(render_ctx_t *ctx, const ray_t *ray, num_t tmin, const uint16_t *clip,
                          uint32_t clip_count, hit_t *hit)
 {
-    trace_walk_t w = {ctx, ray, tmin, TRACE_FAR, TRACE_NEAREST, {0, NUM_ZERO, 0}, NULL};
+    trace_walk_t w = {ctx, ray, tmin, TRACE_FAR, TRACE_NEAREST, {0, NUM_ZERO, 0}, NULL, {{0}, {0}}};
     trace_walk(&w, clip, clip_count);
     if (!w.nearest.found)
         return 0;
@@ -213,7 +255,7 @@ static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t di
     cross.count = 0;
     cross.overflow = 0;
     cross.opaque = 0;
-    trace_walk_t w = {ctx, &ray, TRACE_EPSILON, distance, TRACE_COLLECT_SHADOW, {0, NUM_ZERO, 0}, &cross};
+    trace_walk_t w = {ctx, &ray, TRACE_EPSILON, distance, TRACE_COLLECT_SHADOW, {0, NUM_ZERO, 0}, &cross, {{0}, {0}}};
     trace_walk(&w, NULL, 0);
     if (cross.opaque || cross.overflow)
         return rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
@@ -271,6 +313,8 @@ static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int dept
  * registers every object it crosses (the transmission buffer, nearest
  * first); each adds its local shading weighted by the transmittance so
  * far, until an opaque one or the background ends the ray. */
+__attribute__((noinline)) /* its buffers stay out of trace_shade's frame,
+                             which every recursion level pays for */
 static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray)
 {
     ctx->stats.transmission++;
@@ -278,7 +322,7 @@ static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray)
     cross.count = 0;
     cross.overflow = 0;
     cross.opaque = 0;
-    trace_walk_t w = {ctx, ray, TRACE_EPSILON, TRACE_FAR, TRACE_COLLECT_STRAIGHT, {0, NUM_ZERO, 0}, &cross};
+    trace_walk_t w = {ctx, ray, TRACE_EPSILON, TRACE_FAR, TRACE_COLLECT_STRAIGHT, {0, NUM_ZERO, 0}, &cross, {{0}, {0}}};
     trace_walk(&w, NULL, 0);
     rgb_t sum = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     rgb_t weight = rgb_make(NUM_ONE, NUM_ONE, NUM_ONE);

@@ -10,7 +10,6 @@
 #include "drivers/serial/hostlink_tx.h"
 #include "drivers/serial/line.h"
 #include "kernel/cpu.h"
-#include "kernel/kfmt.h"
 #include "kernel/kmem.h"
 #include "kernel/ktime.h"
 #include "kernel/task.h"
@@ -19,6 +18,7 @@
 #include "proto/insn_mark.h"
 #include "proto/render_link.h"
 #include "proto/scene_format.h"
+#include "proto/textfmt.h"
 #include "proto/wire.h"
 #include "render/blob.h"
 #include "render/limits.h"
@@ -60,9 +60,9 @@ static int dm_scene_chunk(void *ctx, const uint8_t *data, uint32_t n, uint64_t o
 {
     struct dm_scene_rx *rx = ctx;
     if (offset + n > rx->cap) {
-        kfmt_snprintf(rx->why, sizeof rx->why,
-                      "the scene is longer than the %u bytes CMD_SCENE_LOAD announced",
-                      (unsigned)rx->cap);
+        fmt_snprintf(rx->why, sizeof rx->why,
+                     "the scene is longer than the %u bytes CMD_SCENE_LOAD announced",
+                     (unsigned)rx->cap);
         return -1;
     }
     memcpy(rx->buf + offset, data, n);
@@ -77,8 +77,8 @@ static int dm_prepare(uint32_t frame, render_blob_error_t *err)
     int r = imsu_write_begin(p, UNITS_DM_CORE, imsu_held(p, UNITS_DM_CORE), &block);
     if (r != IMSU_OK) {
         err->status = RENDER_BLOB_ERR_BLOCK;
-        kfmt_snprintf(err->message, sizeof err->message, "IMSU %s: %s", p->name,
-                      imsu_strerror(r));
+        fmt_snprintf(err->message, sizeof err->message, "IMSU %s: %s", p->name,
+                     imsu_strerror(r));
         return -1;
     }
     uint64_t t0 = ktime_now();
@@ -128,10 +128,10 @@ void dm_cmd_scene_load(uint16_t cmd)
     struct dm_scene_rx rx = {NULL, 0, ""};
     size_t room = kmem_free();
     if (len == 0 || len > SCN_MAX_SIZE || len > room)
-        kfmt_snprintf(rx.why, sizeof rx.why,
-                      "a compiled scene of %u bytes: must be 1..SCN_MAX_SIZE (%u) and fit the "
-                      "DM's free private memory (%u bytes)",
-                      (unsigned)len, (unsigned)SCN_MAX_SIZE, (unsigned)room);
+        fmt_snprintf(rx.why, sizeof rx.why,
+                     "a compiled scene of %u bytes: must be 1..SCN_MAX_SIZE (%u) and fit the "
+                     "DM's free private memory (%u bytes)",
+                     (unsigned)len, (unsigned)SCN_MAX_SIZE, (unsigned)room);
     else
         rx = (struct dm_scene_rx){kmem_alloc(len, "compiled scene"), len, ""};
     uint64_t got = 0;
@@ -140,8 +140,8 @@ void dm_cmd_scene_load(uint16_t cmd)
     if (r != LINK_OK && r != LINK_ERR_CHECK)
         return; /* the transfer already answered */
     if (rx.why[0] == 0 && got != len)
-        kfmt_snprintf(rx.why, sizeof rx.why, "received %u bytes, CMD_SCENE_LOAD announced %u",
-                      (unsigned)got, (unsigned)len);
+        fmt_snprintf(rx.why, sizeof rx.why, "received %u bytes, CMD_SCENE_LOAD announced %u",
+                     (unsigned)got, (unsigned)len);
     if (rx.why[0]) {
         hostlink_error(cmd, LINK_ERR_BAD_ARGS, "scene refused: %s", rx.why);
         return;

@@ -10,12 +10,12 @@
 #include "drivers/imsu/imsu.h"
 #include "drivers/serial/line.h"
 #include "kernel/cpu.h"
-#include "kernel/kfmt.h"
 #include "kernel/klog.h"
 #include "kernel/kmem.h"
 #include "proto/hostlink.h"
 #include "proto/insn_mark.h"
 #include "proto/render_link.h"
+#include "proto/textfmt.h"
 #include "proto/wire.h"
 #include "render/blob.h"
 #include "render/clip.h"
@@ -61,13 +61,13 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, char *w
     uint32_t gen;
     int r = imsu_bcast_read_begin(&imsu_rc_ncs, me, &block, &gen);
     if (r != IMSU_OK) {
-        kfmt_snprintf(why, cap, "broadcast block: %s", imsu_strerror(r));
+        fmt_snprintf(why, cap, "broadcast block: %s", imsu_strerror(r));
         return -1;
     }
     const render_blob_t *blob;
     render_blob_error_t err;
     if (render_blob_open(block, imsu_rc_ncs.size, &blob, &err) != RENDER_BLOB_OK) {
-        kfmt_snprintf(why, cap, "broadcast block: %s", err.message);
+        fmt_snprintf(why, cap, "broadcast block: %s", err.message);
         imsu_bcast_read_end(&imsu_rc_ncs, me);
         return -1;
     }
@@ -79,10 +79,10 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, char *w
     size_t clip_bytes = (render_clip_bytes(blob->frame) + 7u) & ~(size_t)7u;
     size_t pixel_bytes = (size_t)largest * sizeof(rgb8_t);
     if (clip_bytes + pixel_bytes + 16 > kmem_free()) {
-        kfmt_snprintf(why, cap, "working set of %u bytes (clip lists %u, area of %u pixels) "
-                      "exceeds its %u free bytes of private memory",
-                      (unsigned)(clip_bytes + pixel_bytes), (unsigned)clip_bytes,
-                      (unsigned)largest, (unsigned)kmem_free());
+        fmt_snprintf(why, cap, "working set of %u bytes (clip lists %u, area of %u pixels) "
+                     "exceeds its %u free bytes of private memory",
+                     (unsigned)(clip_bytes + pixel_bytes), (unsigned)clip_bytes,
+                     (unsigned)largest, (unsigned)kmem_free());
         imsu_bcast_read_end(&imsu_rc_ncs, me);
         return -1;
     }
@@ -104,15 +104,15 @@ static int nc_area(struct nc_job *job, const struct line_msg *m, char *why, size
                        wire_get_u32(m->payload + 8), wire_get_u32(m->payload + 12)};
     render_status_t st = render_area(&job->ctx, &job->clip, &a, &job->opt, job->pixels);
     if (st != RENDER_OK) {
-        kfmt_snprintf(why, cap, "area %ux%u at (%u,%u): %s", (unsigned)a.w, (unsigned)a.h,
-                      (unsigned)a.x, (unsigned)a.y, render_status_name(st));
+        fmt_snprintf(why, cap, "area %ux%u at (%u,%u): %s", (unsigned)a.w, (unsigned)a.h,
+                     (unsigned)a.x, (unsigned)a.y, render_status_name(st));
         return -1;
     }
     for (uint32_t r = 0; r < a.h; r++) {
         const rgb8_t *row = job->pixels + (size_t)r * a.w;
         if (dc_push_span(a.x, a.y + r, (const uint8_t *)row, a.w) != DC_OK) {
-            kfmt_snprintf(why, cap, "data collector refused row %u of an area at x %u",
-                          (unsigned)(a.y + r), (unsigned)a.x);
+            fmt_snprintf(why, cap, "data collector refused row %u of an area at x %u",
+                         (unsigned)(a.y + r), (unsigned)a.x);
             return -1;
         }
     }

@@ -10,13 +10,13 @@
 #include "drivers/imsu/imsu.h"
 #include "drivers/serial/line.h"
 #include "kernel/cpu.h"
-#include "kernel/kfmt.h"
 #include "kernel/klog.h"
 #include "kernel/kmem.h"
 #include "kernel/ktime.h"
 #include "kernel/task.h"
 #include "proto/hostlink.h"
 #include "proto/insn_mark.h"
+#include "proto/textfmt.h"
 #include "proto/wire.h"
 #include "render/blob.h"
 #include "proto/areas.h"
@@ -78,7 +78,7 @@ static void rc_fail(struct rc_run *run, int32_t status, const char *fmt, uint32_
     if (run->status != LINK_OK)
         return;
     run->status = status;
-    kfmt_snprintf(run->why, sizeof run->why, fmt, (unsigned)a, (unsigned)b);
+    fmt_snprintf(run->why, sizeof run->why, fmt, (unsigned)a, (unsigned)b);
 }
 
 static void rc_send_nc(uint32_t nc, struct line_msg *m)
@@ -107,8 +107,8 @@ static void rc_on_nc(struct rc_run *run, uint32_t nc, struct line_msg *m)
     int32_t st = (int32_t)wire_get_u32(m->payload);
     if (st != 0 && run->status == LINK_OK) {
         run->status = st;
-        kfmt_snprintf(run->why, sizeof run->why, "NC %u: %.*s", (unsigned)nc,
-                      (int)(m->len - 4), (const char *)m->payload + 4);
+        fmt_snprintf(run->why, sizeof run->why, "NC %u: %.*s", (unsigned)nc,
+                     (int)(m->len - 4), (const char *)m->payload + 4);
     }
     if (run->state[nc] == RC_NC_BUSY)
         run->done++;
@@ -216,7 +216,7 @@ static int rc_broadcast(struct rc_run *run, const render_blob_t **out)
     imsu_bcast_write_end(b, UNITS_RC_CORE);
     if (st != RENDER_BLOB_OK) {
         run->status = LINK_ERR_CHECK;
-        kfmt_snprintf(run->why, sizeof run->why, "broadcast: %s", err.message);
+        fmt_snprintf(run->why, sizeof run->why, "broadcast: %s", err.message);
         return -1;
     }
     *out = blob;

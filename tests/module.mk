@@ -22,7 +22,8 @@ test_fwcfg_ARITH := double
 # host build, speed-ups off, an animation, refused scenes.  The full grid
 # (64 NCs too, every mode x arithmetic x scene) is `make test-full`.
 BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
-	tests/board/render_anim.sh tests/board/render_refuse.sh tests/board/render_view.sh
+	tests/board/render_anim.sh tests/board/render_refuse.sh tests/board/render_view.sh \
+	tests/board/render_spd.sh
 RENDER_FULL_TESTS := tests/board/render_grid_full.sh
 
 .PHONY: test-full
@@ -31,7 +32,7 @@ test-full: deps
 	$(Q)HOST_TESTS= BOARD_TESTS="$(RENDER_FULL_TESTS)" FW_DIR=$(FWB) bash tests/run.sh
 # Host speed per arithmetic (wall clock, never a test), then the board's.
 BENCHES += tests/bench/bench_host.sh
-BENCHES += tests/bench/bench_render.sh tests/bench/bench_arith.sh
+BENCHES += tests/bench/bench_render.sh tests/bench/bench_arith.sh tests/bench/bench_scale.sh
 
 # Encodings of the rendering commands and the NC statistics the RC sums.
 HOST_TESTS += test_render_link

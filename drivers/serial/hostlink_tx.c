@@ -4,12 +4,13 @@
 #include <stdarg.h>
 
 #include "drivers/serial/uart.h"
-#include "kernel/kfmt.h"
+#include "kernel/klog.h"
 #include "kernel/param.h"
 #include "kernel/panic.h"
 #include "kernel/spinlock.h"
 #include "proto/crc32.h"
 #include "proto/hostlink.h"
+#include "proto/textfmt.h"
 #include "proto/wire.h"
 
 static struct spinlock hostlink_tx_lock = SPINLOCK_INIT("hostlink_tx");
@@ -65,9 +66,20 @@ void hostlink_error(uint16_t cmd, int16_t status, const char *fmt, ...)
     char text[KLOG_MAX];
     va_list ap;
     va_start(ap, fmt);
-    int n = kfmt_vsnprintf(text, sizeof text, fmt, ap);
+    int n = fmt_vsnprintf(text, sizeof text, fmt, ap);
     va_end(ap);
     if (n >= (int)sizeof text)
         n = (int)sizeof text - 1;
     hostlink_result(cmd, status, text, (size_t)n);
+}
+
+/* The kernel's log sink: klog lines and fault reports. */
+static void hostlink_log_sink(uint8_t type, const void *payload, size_t len)
+{
+    hostlink_send(type, 0, payload, len);
+}
+
+void hostlink_tx_init(void)
+{
+    klog_set_sink(hostlink_log_sink);
 }

@@ -10,6 +10,10 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* Core 0 at boot, once the UART transmits (uart_init): registers the host
+ * link as the kernel's log sink (kernel/klog.h), so klog lines, panics and
+ * faults go out as LINK_LOG and LINK_FAULT frames. */
+void hostlink_tx_init(void);
 /* Sends one frame; returns its seq.  Panics if len > LINK_MAX_PAYLOAD. */
 uint16_t hostlink_send(uint8_t type, uint8_t flags, const void *payload, size_t len);
 /* LINK_RESULT: u16 cmd, i16 status, then n bytes of fields. */

@@ -1,8 +1,11 @@
 /* uart.c: PL011 driver (see uart.h). */
 #include "drivers/serial/uart.h"
 
+#include <stddef.h>
+
 #include "kernel/arch.h"
 #include "kernel/gic.h"
+#include "kernel/irq.h"
 #include "kernel/memlayout.h"
 #include "kernel/param.h"
 #include "kernel/ringbuf.h"
@@ -48,6 +51,13 @@ void uart_init(void)
     mmio_write32(UART_LCR_H(b), UART_LCR_H_FEN | UART_LCR_H_WLEN_8);
     mmio_write32(UART_IMSC(b), UART_INT_RX | UART_INT_RT);
     mmio_write32(UART_CR(b), UART_CR_UARTEN | UART_CR_TXE | UART_CR_RXE);
+}
+
+static void uart_irq(void *arg);
+
+void uart_rx_start(void)
+{
+    irq_register(UART0_INTID, uart_irq, NULL);
     gic_route_spi(UART0_INTID, UART_RX_CORE);
 }
 
@@ -71,8 +81,10 @@ static void uart_rx_drain(void)
     }
 }
 
-void uart_irq(void)
+/* The receive interrupt (registered by uart_rx_start). */
+static void uart_irq(void *arg)
 {
+    (void)arg;
     /* Clear first, then drain: a byte that arrives after the FIFO reads
      * empty raises the interrupt again.  Clearing after the drain could
      * swallow the interrupt of a byte that came in between, and QEMU's

@@ -13,10 +13,12 @@
 #include <stddef.h>
 #include <stdint.h>
 
-/* Core 0, once: line settings, FIFOs, receive interrupt routed to core 0. */
+/* Core 0, once, first thing: line settings, FIFOs, transmit and receive
+ * on.  Needs no GIC, so the host link can carry the earliest panics. */
 void uart_init(void);
-/* The UART's interrupt (kernel/irq.c). */
-void uart_irq(void);
+/* Core 0, once the GIC is up: registers the receive interrupt's handler
+ * (kernel/irq.h) and routes the interrupt to core 0. */
+void uart_rx_start(void);
 /* Bulk mode for long host uploads: with on = 1 the receive interrupt stays
  * off and uart_rx_read() moves what the FIFO holds itself; the reader
  * calls it every UART_RX_POLL_US.  Each received byte then costs two

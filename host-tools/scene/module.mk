@@ -4,18 +4,27 @@
 # The loader of the compiled form is shared code (the board's DM runs it).
 SHARED_SRCS += render/scene_load.c
 
+# Models made elsewhere into scene records (`links1 import`, `model`).
+SCENE_MODEL_SRCS := host-tools/scene/model_assimp.c host-tools/scene/scene_import.c \
+	host-tools/scene/scene_import_view.c host-tools/scene/scene_map_image.c \
+	host-tools/scene/scene_write.c host-tools/scene/scene_parse_model.c
+
 # The text form: tokenizer, parser, transforms, compiler, image files.
 SCENE_TEXT_SRCS := host-tools/scene/scene_lex.c host-tools/scene/scene_parse.c \
 	host-tools/scene/scene_parse_looks.c host-tools/scene/scene_parse_objects.c \
-	host-tools/scene/scene_math.c host-tools/scene/scene_compile.c \
-	host-tools/scene/image_io.c host-tools/scene/cli_args.c host-tools/scene/scene_file.c
+	host-tools/scene/scene_math.c host-tools/scene/scene_compile.c host-tools/scene/scene_bvh.c \
+	host-tools/scene/image_io.c host-tools/scene/cli_args.c host-tools/scene/scene_file.c \
+	$(SCENE_MODEL_SRCS)
+# Programs that read text scenes link these: the `model` statement reads
+# model files through libassimp (model_assimp.c, the only file that knows it).
+SCENE_TEXT_LIBS := -lpng -lassimp
 
 # Sources of the scene subcommands of `links1` (compile, ref, export-pov,
 # compare); the links1 tool adds them to its own sources and SCENE_CMD_LIBS
 # to its libraries.
 SCENE_CMD_SRCS := host-tools/scene/scene_cmds.c host-tools/scene/scene_pov.c \
-	host-tools/scene/image_compare.c $(SCENE_TEXT_SRCS)
-SCENE_CMD_LIBS := -lpng
+	host-tools/scene/image_compare.c host-tools/scene/import_cmd.c $(SCENE_TEXT_SRCS)
+SCENE_CMD_LIBS := $(SCENE_TEXT_LIBS)
 
 # The host reference renderer, one executable per arithmetic of the shared
 # renderer; `links1 ref --arith A` runs the one asked for.
@@ -23,35 +32,36 @@ SCENE_REF_SRCS := host-tools/scene/ref_main.c host-tools/cli_opt.c $(SCENE_TEXT_
 HOST_TOOLS += links1-ref-double links1-ref-float links1-ref-fixed
 links1-ref-double_SRCS := $(SCENE_REF_SRCS)
 links1-ref-double_ARITH := double
-links1-ref-double_LIBS := -lpng
+links1-ref-double_LIBS := $(SCENE_TEXT_LIBS)
 links1-ref-float_SRCS := $(SCENE_REF_SRCS)
 links1-ref-float_ARITH := float
-links1-ref-float_LIBS := -lpng
+links1-ref-float_LIBS := $(SCENE_TEXT_LIBS)
 links1-ref-fixed_SRCS := $(SCENE_REF_SRCS)
 links1-ref-fixed_ARITH := fixed
-links1-ref-fixed_LIBS := -lpng
+links1-ref-fixed_LIBS := $(SCENE_TEXT_LIBS)
 
 # Host tests of the format, the parser and the loader (ASan + UBSan).
 HOST_TESTS += test_scene_load test_scene_parse
 test_scene_load_SRCS := tests/host/test_scene_load.c $(SCENE_TEXT_SRCS)
 test_scene_load_ARITH := double
-test_scene_load_LIBS := -lpng
+test_scene_load_LIBS := $(SCENE_TEXT_LIBS)
 test_scene_parse_SRCS := tests/host/test_scene_parse.c $(SCENE_TEXT_SRCS)
 test_scene_parse_ARITH := double
-test_scene_parse_LIBS := -lpng
+test_scene_parse_LIBS := $(SCENE_TEXT_LIBS)
 
 # How ref and render both read a scene file (scene_file.c).
 HOST_TESTS += test_scene_file
 test_scene_file_SRCS := tests/host/test_scene_file.c $(SCENE_TEXT_SRCS)
 test_scene_file_ARITH := double
-test_scene_file_LIBS := -lpng
+test_scene_file_LIBS := $(SCENE_TEXT_LIBS)
 
 # The scene subcommands are part of the links1 tool (host-tools/module.mk).
 links1_SRCS += $(SCENE_CMD_SRCS)
 links1_LIBS += $(SCENE_CMD_LIBS)
 
 # Image tests: POV-Ray agreement and arithmetic accuracy.
-BOARD_TESTS += tests/images/scenes.sh tests/images/pov.sh tests/images/accuracy.sh
+BOARD_TESTS += tests/images/scenes.sh tests/images/pov.sh tests/images/accuracy.sh \
+	tests/images/import.sh tests/board/render_import.sh
 
 HOST_TESTS += test_scene_image
 test_scene_image_SRCS := tests/host/test_scene_image.c host-tools/scene/image_io.c \
@@ -63,7 +73,21 @@ test_scene_image_LIBS := -lpng
 HOST_TESTS += test_scene_load_float test_scene_load_fixed
 test_scene_load_float_SRCS := $(test_scene_load_SRCS)
 test_scene_load_float_ARITH := float
-test_scene_load_float_LIBS := -lpng
+test_scene_load_float_LIBS := $(SCENE_TEXT_LIBS)
 test_scene_load_fixed_SRCS := $(test_scene_load_SRCS)
 test_scene_load_fixed_ARITH := fixed
-test_scene_load_fixed_LIBS := -lpng
+test_scene_load_fixed_LIBS := $(SCENE_TEXT_LIBS)
+
+# Models made elsewhere: each format, the material mapping, bad models,
+# the model statement (tests/models/).
+HOST_TESTS += test_scene_import
+test_scene_import_SRCS := tests/host/test_scene_import.c $(SCENE_TEXT_SRCS)
+test_scene_import_ARITH := double
+test_scene_import_LIBS := $(SCENE_TEXT_LIBS)
+
+# The automatic hierarchy: tree invariants and the same image on and off,
+# in each arithmetic of the shared renderer.
+HOST_TESTS += test_auto_hierarchy_double test_auto_hierarchy_float test_auto_hierarchy_fixed
+$(foreach a,double float fixed,$(eval test_auto_hierarchy_$(a)_SRCS = tests/host/test_auto_hierarchy.c $$(SCENE_TEXT_SRCS)))
+$(foreach a,double float fixed,$(eval test_auto_hierarchy_$(a)_ARITH := $(a)))
+$(foreach a,double float fixed,$(eval test_auto_hierarchy_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))

@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 
 #include "host-tools/scene/image_io.h"
 #include "host-tools/scene/cli_args.h"
@@ -29,6 +30,7 @@ static int ref_usage(FILE *out, int status)
 {
     fprintf(out, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [--arith double|float|soft|"
                  "fixed] [--ppm] [--size WxH] [--frame N | --frames FIRST:LAST]\n"
+                 "  [--no-auto-hierarchy]\n"
                  "  (this is the %s build)\n",
             NUM_NAME);
     return status;
@@ -92,6 +94,8 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     }
     render_ctx_t ctx;
     render_ctx_init(&ctx, frame_data);
+    struct timespec t0, t1; /* tracing only: make bench's ns per ray */
+    clock_gettime(CLOCK_MONOTONIC, &t0);
     for (uint32_t y = 0; y < scene->height; y++) {
         render_span(&ctx, y, 0, scene->width, row);
         for (int x = 0; x < img.width; x++) {
@@ -101,6 +105,8 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
             px[2] = row[x].b;
         }
     }
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    double secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
     char err[SD_ERR_MAX];
     int rc = ppm ? image_write_ppm(out, &img, err, sizeof err)
                  : image_write_png(out, &img, err, sizeof err);
@@ -110,13 +116,16 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
         fprintf(stderr,
                 "links1 ref (%s): %s frame %ld, %dx%d -> %s; rays: %llu primary, %llu "
                 "shadow, %llu reflection, %llu refraction, %llu transmission; "
-                "%u pixels lost precision\n",
+                "%u pixels lost precision; %llu box tests, %llu primitive tests; traced in "
+                "%.3f s\n",
                 NUM_NAME, in, frame, img.width, img.height, out,
                 (unsigned long long)ctx.stats.primary, (unsigned long long)ctx.stats.shadow,
                 (unsigned long long)ctx.stats.reflection,
                 (unsigned long long)ctx.stats.refraction,
                 (unsigned long long)ctx.stats.transmission,
-                (unsigned)ctx.stats.precision_lost_pixels);
+                (unsigned)ctx.stats.precision_lost_pixels,
+                (unsigned long long)ctx.stats.box_tests, (unsigned long long)ctx.stats.prim_tests,
+                secs);
     free(row);
     image_free(&img);
     return rc;
@@ -150,6 +159,9 @@ static int ref_parse(int argc, char **argv, struct ref_args *a)
             return 1;
         case REF_OPT_PPM:
             a->ppm = 1;
+            break;
+        case REF_OPT_NO_AUTO_HIERARCHY:
+            a->scene.no_auto_hierarchy = 1;
             break;
         case REF_OPT_SIZE:
             if (cli_parse_size(c.arg, &a->scene.width, &a->scene.height) != 0)

@@ -11,6 +11,7 @@ enum ref_opt_code {
     REF_OPT_SIZE,
     REF_OPT_FRAME,
     REF_OPT_FRAMES,
+    REF_OPT_NO_AUTO_HIERARCHY,
     REF_OPT_ARITH, /* links1 ref only */
 };
 
@@ -20,6 +21,7 @@ enum ref_opt_code {
     {"size", required_argument, NULL, REF_OPT_SIZE},      \
     {"frame", required_argument, NULL, REF_OPT_FRAME},    \
     {"frames", required_argument, NULL, REF_OPT_FRAMES},  \
+    {"no-auto-hierarchy", no_argument, NULL, REF_OPT_NO_AUTO_HIERARCHY}, \
     {"help", no_argument, NULL, 'h'}
 
 #endif

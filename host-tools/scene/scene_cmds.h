@@ -8,5 +8,6 @@ int scene_cmd_compile(int argc, char **argv);    /* links1 compile SCENE -o OUT.
 int scene_cmd_ref(int argc, char **argv);        /* links1 ref SCENE -o OUT.png [--arith A] */
 int scene_cmd_export_pov(int argc, char **argv); /* links1 export-pov SCENE -o OUT.pov */
 int scene_cmd_compare(int argc, char **argv);    /* links1 compare A.png B.png [...] */
+int scene_cmd_import(int argc, char **argv);     /* links1 import MODEL -o SCENE.scn [...] */
 
 #endif

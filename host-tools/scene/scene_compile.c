@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "host-tools/scene/scene_bvh.h"
 #include "host-tools/scene/scene_desc.h"
 #include "proto/crc32.h"
 #include "proto/wire.h"
@@ -113,7 +114,8 @@ static void compile_key(const struct sd_key *k, uint8_t *p)
     compile_vec3(p + SCN_KEY_SCALE, k->scale);
 }
 
-int sd_compile(const struct sd_scene *s, uint8_t **out, size_t *len, char *err, size_t errlen)
+static int compile_form(const struct sd_scene *s, uint8_t **out, size_t *len, char *err,
+                        size_t errlen)
 {
     *out = NULL;
     *len = 0;
@@ -150,8 +152,10 @@ int sd_compile(const struct sd_scene *s, uint8_t **out, size_t *len, char *err, 
     }
     size_t total = (pos + SCN_SECTION_ALIGN - 1) & ~(size_t)(SCN_SECTION_ALIGN - 1);
     if (total > SCN_MAX_SIZE) {
-        snprintf(err, errlen, "compiled scene is %zu bytes, more than the %u allowed", total,
-                 SCN_MAX_SIZE);
+        snprintf(err, errlen,
+                 "compiled scene is %zu bytes (%d clusters, %d primitives), more than "
+                 "SCN_MAX_SIZE (%u bytes)",
+                 total, s->n_clusters, s->n_prims, SCN_MAX_SIZE);
         return -1;
     }
     uint8_t *b = calloc(1, total);
@@ -235,4 +239,33 @@ int sd_compile(const struct sd_scene *s, uint8_t **out, size_t *len, char *err, 
     *out = b;
     *len = total;
     return 0;
+}
+
+int sd_compile(const struct sd_scene *s, uint8_t **out, size_t *len, char *err, size_t errlen)
+{
+    *out = NULL;
+    *len = 0;
+    if (s->no_auto_hierarchy || s->n_prims == 0)
+        return compile_form(s, out, len, err, errlen);
+    /* the same scene with the tree's clusters and the primitives moved
+     * into its leaves; everything else shared */
+    struct sd_scene t = *s;
+    int *prim_cluster = malloc((size_t)s->n_prims * sizeof *prim_cluster);
+    struct sd_prim *prims = malloc((size_t)s->n_prims * sizeof *prims);
+    struct bvh_build_stats stats;
+    int rc = -1;
+    if (!prim_cluster || !prims)
+        snprintf(err, errlen, "out of memory compiling the scene");
+    else if (sd_auto_hierarchy(s, &t.clusters, &t.n_clusters, prim_cluster, &stats, err, errlen) == 0) {
+        for (int i = 0; i < s->n_prims; i++) {
+            prims[i] = s->prims[i];
+            prims[i].cluster = prim_cluster[i];
+        }
+        t.prims = prims;
+        rc = compile_form(&t, out, len, err, errlen);
+        free(t.clusters);
+    }
+    free(prims);
+    free(prim_cluster);
+    return rc;
 }

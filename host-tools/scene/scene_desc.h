@@ -84,6 +84,9 @@ struct sd_scene {
     int n_components;
     struct sd_key *keys;
     int n_keys;
+    int no_auto_hierarchy;  /* 1: sd_compile keeps the author's clusters
+                               as they are (scene_bvh.h); text form
+                               `options { auto_hierarchy off }` */
 };
 
 #define SD_ERR_MAX 512 /* room for "file:line:col: message" */
@@ -94,9 +97,12 @@ int sd_parse_file(const char *path, struct sd_scene *s, char *err, size_t errlen
 int sd_parse_text(const char *name, const char *text, struct sd_scene *s,
                   char *err, size_t errlen);
 void sd_free(struct sd_scene *s);
+/* The view of a scene that sets none: camera, size, depth, options. */
+void sd_view_defaults(struct sd_view *v);
 
 /* The compiled form in a malloc'ed buffer (*out, *len); -1 with err if the
- * scene exceeds a limit of the format. */
+ * scene exceeds a limit of the format.  Unless s->no_auto_hierarchy, big
+ * clusters are split into a bounding volume hierarchy first (scene_bvh.h). */
 int sd_compile(const struct sd_scene *s, uint8_t **out, size_t *len,
                char *err, size_t errlen);
 
@@ -109,6 +115,13 @@ int sd_export_pov(const struct sd_scene *s, int frame, int strict,
 /* Keyframe placement K(frame) of cluster c as a 3x4 matrix (identity when
  * it has no keys), interpolated as the renderer does (render/scene.h). */
 void sd_key_matrix(const struct sd_scene *s, int c, int frame, double k[12]);
+/* 1 when the triangle v0 v1 v2 (9 values) has its vertices on one line
+ * (twice its area below 1e-12) or is a sliver (a height under
+ * SCN_MIN_TRIANGLE_HEIGHT); the parser refuses it, an import drops it. */
+int sd_triangle_degenerate(const double v[9]);
+/* The smallest height of a triangle (a vertex's distance from the opposite
+ * edge); a triangle under SCN_MIN_TRIANGLE_HEIGHT is degenerate (a sliver). */
+double sd_triangle_min_height(const double v[9]);
 /* The 3x4 product a * b (apply b, then a). */
 void sd_mat_mul(const double a[12], const double b[12], double out[12]);
 /* Unit quaternion (w, x, y, z) of rotations about x, then y, then z (degrees). */

@@ -16,6 +16,39 @@
 
 static double sd_snap(double v) { return fabs(v) < SD_SNAP ? 0 : v; }
 
+#define SD_MIN_TRIANGLE_AREA 1e-12 /* |e1 x e2|, twice the area */
+
+int sd_triangle_degenerate(const double v[9])
+{
+    double e1[3], e2[3], c[3];
+    for (int i = 0; i < 3; i++)
+        e1[i] = v[3 + i] - v[i], e2[i] = v[6 + i] - v[i];
+    c[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    c[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    c[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    return !(sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) >= SD_MIN_TRIANGLE_AREA) ||
+           !(sd_triangle_min_height(v) >= SCN_MIN_TRIANGLE_HEIGHT);
+}
+
+double sd_triangle_min_height(const double v[9])
+{
+    /* each height is twice the area over its base: the smallest stands on
+     * the longest edge */
+    double e1[3], e2[3], c[3], longest = 0;
+    for (int i = 0; i < 3; i++)
+        e1[i] = v[3 + i] - v[i], e2[i] = v[6 + i] - v[i];
+    c[0] = e1[1] * e2[2] - e1[2] * e2[1];
+    c[1] = e1[2] * e2[0] - e1[0] * e2[2];
+    c[2] = e1[0] * e2[1] - e1[1] * e2[0];
+    for (int k = 0; k < 3; k++) {
+        const double *a = v + 3 * k, *b = v + 3 * ((k + 1) % 3);
+        double d = sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
+                        (b[2] - a[2]) * (b[2] - a[2]));
+        longest = d > longest ? d : longest;
+    }
+    return longest > 0 ? sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) / longest : 0;
+}
+
 void sd_mat_mul(const double a[12], const double b[12], double out[12])
 {
     for (int r = 0; r < 3; r++) {

@@ -160,6 +160,10 @@ static void parse_options(struct parser *p)
             bit = SCN_OPT_NO_HIERARCHY, inverted = 1;
         } else if (lex_is_word(&p->lx, "shadows")) {
             bit = SCN_OPT_NO_SHADOWS, inverted = 1;
+        } else if (lex_is_word(&p->lx, "auto_hierarchy")) { /* compiler only */
+            lex_next(&p->lx);
+            p->s->no_auto_hierarchy = !parse_on_off(p, "auto_hierarchy");
+            continue;
         } else {
             parse_unknown(p, "options");
         }
@@ -316,6 +320,8 @@ static void parse_cluster_body(struct parser *p, int c, int material, int nestin
                    lex_is_word(lx, "sphere") || lex_is_word(lx, "box") ||
                    lex_is_word(lx, "density")) {
             parse_prim(p, c, material);
+        } else if (lex_is_word(lx, "model")) {
+            parse_model(p, c, nesting);
         } else if (lex_is_word(lx, "cluster")) {
             lex_next(lx);
             char name[SCN_MAX_NAME];
@@ -365,7 +371,7 @@ static int parse_global(struct parser *p)
 
 /* ---------------------------------------------------------------- entry */
 
-static void parse_defaults(struct sd_view *v)
+void sd_view_defaults(struct sd_view *v)
 {
     v->eye[2] = -5;
     v->up[1] = 1;
@@ -397,7 +403,7 @@ int sd_parse_text(const char *name, const char *text, struct sd_scene *s, char *
         sd_free(s);
         return -1;
     }
-    parse_defaults(&s->view);
+    sd_view_defaults(&s->view);
     lex_next(&p->lx);
     parse_new_cluster(p, "root", -1);
     parse_cluster_body(p, 0, -1, 0);

@@ -1,7 +1,8 @@
 /* scene_parse.h: the parser's state and the pieces its files share
  * (scene_parse.c: helpers, global statements, clusters, entry points;
  * scene_parse_looks.c: maps and materials; scene_parse_objects.c:
- * transforms, keys and primitives).  Private to the parser.
+ * transforms, keys and primitives; scene_parse_model.c: the model
+ * statement).  Private to the parser.
  */
 #ifndef LINKS1_HOST_SCENE_PARSE_H
 #define LINKS1_HOST_SCENE_PARSE_H
@@ -17,7 +18,6 @@
 #define PARSE_DEFAULT_FOV 45.0
 #define PARSE_DEFAULT_DEPTH 5
 #define PARSE_DEFAULT_FALLOFF 5.0 /* degrees of a spotlight's soft edge */
-#define PARSE_MIN_TRIANGLE_AREA 1e-12
 #define PARSE_DIR_MAX 1024        /* directory part of a scene file's path */
 
 struct parser {
@@ -48,5 +48,6 @@ int parse_transform(struct parser *p, double m[12]); /* scene_parse_objects.c;
                                                        0 if not a transform */
 void parse_key(struct parser *p, int cluster);
 void parse_prim(struct parser *p, int cluster, int material);
+void parse_model(struct parser *p, int cluster, int nesting); /* scene_parse_model.c */
 
 #endif

@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "host-tools/scene/image_io.h"
+#include "host-tools/scene/scene_import.h"
 #include "host-tools/scene/scene_parse.h"
 
 static void parse_map_image(struct parser *p, struct sd_map *m)
@@ -18,31 +18,9 @@ static void parse_map_image(struct parser *p, struct sd_map *m)
         snprintf(path, sizeof path, "%s", p->lx.tok);
     else
         snprintf(path, sizeof path, "%s%s", p->dir, p->lx.tok);
-    struct image img;
     char ierr[SD_ERR_MAX];
-    /* A map's side limit is checked on the file's header: a small file
-     * claiming a huge image costs nothing. */
-    if (image_read_max(path, SCN_MAX_MAP_SIDE, &img, ierr, sizeof ierr) != 0)
-        lex_error(&p->lx, "map image: %s (SCN_MAX_MAP_SIDE)", ierr);
-    size_t n = (size_t)img.width * (size_t)img.height;
-    free(m->texels);
-    m->width = img.width;
-    m->height = img.height;
-    if (m->kind == SCN_MAP_COLOUR) {
-        m->texels = img.rgb; /* same layout: 3 bytes per texel, top row = v 0 */
-        return;
-    }
-    /* A bump map's height is the image's luminance (Rec. 601 weights). */
-    m->texels = malloc(n);
-    if (!m->texels) {
-        image_free(&img);
-        lex_error(&p->lx, "out of memory reading %s", path);
-    }
-    for (size_t i = 0; i < n; i++) {
-        const uint8_t *px = img.rgb + 3 * i;
-        m->texels[i] = (uint8_t)((299u * px[0] + 587u * px[1] + 114u * px[2] + 500u) / 1000u);
-    }
-    image_free(&img);
+    if (sd_map_read_image(m, path, ierr, sizeof ierr) != 0)
+        lex_error(&p->lx, "map image: %s", ierr);
 }
 
 static void parse_map_texels(struct parser *p, struct sd_map *m, int bpt)

@@ -159,26 +159,13 @@ static void parse_triangle(struct parser *p, struct sd_prim *pr)
         lex_error(&p->lx, "triangle has %d vertices, needs 3", nv);
     if (nuv != 0 && nuv != 3)
         lex_error(&p->lx, "triangle has %d uv pairs, needs 0 or 3", nuv);
-    double e1[3], e2[3], c[3];
-    for (int i = 0; i < 3; i++)
-        e1[i] = v[3 + i] - v[i], e2[i] = v[6 + i] - v[i];
-    c[0] = e1[1] * e2[2] - e1[2] * e2[1];
-    c[1] = e1[2] * e2[0] - e1[0] * e2[2];
-    c[2] = e1[0] * e2[1] - e1[1] * e2[0];
-    /* Each height is twice the area over its base: the smallest stands on
-     * the longest edge. */
-    double area2 = sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]), longest = 0;
-    for (int k = 0; k < 3; k++) {
-        const double *a = v + 3 * k, *b = v + 3 * ((k + 1) % 3);
-        double d = sqrt((b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1]) +
-                        (b[2] - a[2]) * (b[2] - a[2]));
-        longest = d > longest ? d : longest;
-    }
-    if (area2 < PARSE_MIN_TRIANGLE_AREA)
+    if (sd_triangle_degenerate(v)) {
+        double h = sd_triangle_min_height(v);
+        if (h > 0)
+            lex_error(&p->lx, "degenerate triangle: a sliver whose smallest height is %g, under "
+                      "SCN_MIN_TRIANGLE_HEIGHT (%g)", h, SCN_MIN_TRIANGLE_HEIGHT);
         lex_error(&p->lx, "degenerate triangle (its vertices are on one line)");
-    if (area2 < SCN_MIN_TRIANGLE_HEIGHT * longest)
-        lex_error(&p->lx, "degenerate triangle: a sliver whose smallest height is %g, under "
-                  "SCN_MIN_TRIANGLE_HEIGHT (%g)", area2 / longest, SCN_MIN_TRIANGLE_HEIGHT);
+    }
 }
 
 static void parse_ellipsoid(struct parser *p, struct sd_prim *pr, int sphere)

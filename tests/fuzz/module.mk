@@ -15,7 +15,7 @@ fuzz_scene_load_ARITH := float
 FUZZERS += fuzz_scene_text
 fuzz_scene_text_SRCS = tests/fuzz/fuzz_scene_text.c $(SCENE_TEXT_SRCS)
 fuzz_scene_text_ARITH := double
-fuzz_scene_text_LIBS := -lpng
+fuzz_scene_text_LIBS = $(SCENE_TEXT_LIBS)
 
 # The host-link frame decoder (both sides), the host's frame handling and
 # the payload getters.
@@ -27,7 +27,7 @@ fuzz_hostlink_ARITH := double
 FUZZERS += fuzz_image_map
 fuzz_image_map_SRCS = tests/fuzz/fuzz_image_map.c $(SCENE_TEXT_SRCS)
 fuzz_image_map_ARITH := float
-fuzz_image_map_LIBS := -lpng
+fuzz_image_map_LIBS = $(SCENE_TEXT_LIBS)
 
 # A short run of each harness over its corpus (no board needed).
 BOARD_TESTS += tests/fuzz/smoke.sh

@@ -10,6 +10,7 @@
 #include "host-tools/board.h"
 #include "proto/hostlink.h"
 #include "tests/check.h"
+#include "tests/host/fake_board.h"
 
 static void msg_hello_layout_and_round_trip(void)
 {
@@ -49,23 +50,6 @@ static void msg_fault_layout_and_round_trip(void)
     CHECK_EQ_INT(g.addr, 0x40012344u);
     CHECK_EQ_INT(g.pc, 0x40012348u);
     CHECK_EQ_INT(g.status, 13);
-}
-
-/* A board session with no QEMU: the tool's end of a socketpair, the test
- * playing the board on the other end. */
-static int fake_session(struct board *b, int *peer)
-{
-    int sv[2];
-    if (socketpair(AF_UNIX, SOCK_STREAM, 0, sv) < 0)
-        return -1;
-    memset(b, 0, sizeof *b);
-    board_opts_init(&b->opts);
-    b->opts.quiet = 1;
-    link_decoder_init(&b->dec);
-    b->fd = sv[0];
-    fcntl(b->fd, F_SETFL, O_NONBLOCK); /* as board_start leaves it */
-    *peer = sv[1];
-    return 0;
 }
 
 static void msg_cmd_frame_bytes_are_pinned(void)

@@ -12,21 +12,7 @@
 #include "proto/crc32.h"
 #include "proto/wire.h"
 #include "tests/check.h"
-
-static int fake_session(struct board *b, int *peer)
-{
-    int sv[2];
-    if (socketpair(AF_UNIX, SOCK_STREAM, 0, sv) < 0)
-        return -1;
-    memset(b, 0, sizeof *b);
-    board_opts_init(&b->opts);
-    b->opts.quiet = 1;
-    link_decoder_init(&b->dec);
-    b->fd = sv[0];
-    fcntl(b->fd, F_SETFL, O_NONBLOCK);
-    *peer = sv[1];
-    return 0;
-}
+#include "tests/host/fake_board.h"
 
 /* ---- host -> board: a fake board that ACKs only when the window is full */
 

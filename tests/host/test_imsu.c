@@ -12,24 +12,23 @@ static int test_locks_held; /* must be back to 0 after every IMSU call */
 
 void spin_init(struct spinlock *l, const char *name)
 {
-    l->locked = 0;
     l->name = name;
     l->owner = SPIN_NO_OWNER;
 }
 
 void spin_lock(struct spinlock *l)
 {
-    if (l->locked)
+    if (l->owner != SPIN_NO_OWNER)
         check_fail(__FILE__, __LINE__, "spin_lock of a held lock");
-    l->locked = 1;
+    l->owner = 0;
     test_locks_held++;
 }
 
 void spin_unlock(struct spinlock *l)
 {
-    if (!l->locked)
+    if (l->owner == SPIN_NO_OWNER)
         check_fail(__FILE__, __LINE__, "spin_unlock of a free lock");
-    l->locked = 0;
+    l->owner = SPIN_NO_OWNER;
     test_locks_held--;
 }
 

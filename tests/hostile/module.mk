@@ -7,11 +7,11 @@ HOSTILE_SRCS := tests/hostile/hostile.c
 HOST_TESTS += test_hostile
 test_hostile_SRCS = tests/hostile/test_hostile.c $(HOSTILE_SRCS) $(SCENE_TEXT_SRCS)
 test_hostile_ARITH := float
-test_hostile_LIBS := -lpng
+test_hostile_LIBS = $(SCENE_TEXT_LIBS)
 
 BOARD_PROGS += make_hostile
 make_hostile_SRCS = tests/hostile/make_hostile.c $(HOSTILE_SRCS) $(SCENE_TEXT_SRCS)
 make_hostile_ARITH := double
-make_hostile_LIBS := -lpng
+make_hostile_LIBS = $(SCENE_TEXT_LIBS)
 
 BOARD_TESTS += tests/board/render_hostile.sh

@@ -1,0 +1,62 @@
+/* scene_import.h: models made elsewhere (model.h) into a scene
+ * (scene_desc.h), for `links1 import` and the `model` statement of the text
+ * form.  The mapping, field by field, is in docs/import.md.
+ *
+ * The model's right-handed coordinates become the scene's left-handed ones
+ * by negating z (vertices, node transforms, camera and lights), which
+ * leaves the picture as the model's author saw it.
+ */
+#ifndef LINKS1_HOST_SCENE_IMPORT_H
+#define LINKS1_HOST_SCENE_IMPORT_H
+
+#include <stdio.h>
+
+#include "host-tools/scene/model.h"
+#include "host-tools/scene/scene_desc.h"
+
+#define IMPORT_FIT_EXTENT 100.0 /* --fit: the largest |coordinate| becomes this */
+#define IMPORT_PATH_MAX 2048
+
+struct import_opts {
+    int fit;           /* scale a model beyond +-SCN_MAX_COORD into range */
+    int material;      /* every triangle gets this scene material; -1: the model's */
+    int nesting;       /* depth of the parent cluster below the root */
+    const char *fit_hint; /* how the user asks for fit, for the refusal: "--fit" */
+};
+
+struct import_result {
+    int triangles;     /* placed */
+    int degenerate;    /* dropped: vertices on one line */
+    int other;         /* points and lines left out */
+    int clusters, materials, maps;
+    double scale;      /* 1, or the --fit factor */
+    double lo[3], hi[3]; /* extent of the placed model in its parent cluster */
+    char map_image[SCN_MAX_MAPS][IMPORT_PATH_MAX]; /* texture file of each map
+                                                      the import added (by scene map index) */
+};
+
+/* Adds the model's nodes as clusters under cluster parent of s, its
+ * triangles, and (when o->material < 0) its materials and texture maps.
+ * model_dir ends in '/' or is "" and locates texture files.  0, or -1 with
+ * err saying what is wrong with the model (s then as before the call). */
+int scene_import_model(struct sd_scene *s, int parent, const struct model *m,
+                       const char *model_dir, const struct import_opts *o,
+                       struct import_result *r, char *err, size_t errlen);
+
+/* The model's camera and lights into s (a scene being made from the model
+ * alone), in scene coordinates scaled as r->scale.  camera_auto frames a
+ * model without a camera and adds a light to one without lights.  Notes
+ * (lights left out, clamped) go to warn.  0, or -1 with err. */
+int scene_import_view(struct sd_scene *s, const struct model *m, const struct import_result *r,
+                      int camera_auto, FILE *warn, char *err, size_t errlen);
+
+/* Reads the image at path into map m (its kind set): the RGB bytes of a
+ * colour map, the luminance of a bump map.  0, or -1 with err. */
+int sd_map_read_image(struct sd_map *m, const char *path, char *err, size_t errlen);
+
+/* Writes s as text that sd_parse_text reads back to the same scene.
+ * map_image[i], when not NULL or "", is written as map i's image file
+ * instead of its texels.  0, or -1 (a write error). */
+int sd_write_text(const struct sd_scene *s, const char *const *map_image, FILE *f);
+
+#endif

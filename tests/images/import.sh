@@ -1,0 +1,89 @@
+#!/usr/bin/env bash
+# tests/images/import.sh: `links1 import` of each model format in
+# tests/models/ writes a scene that `links1 ref` renders, with the model in
+# the picture; refused models leave no scene behind and name the problem.
+# Prints "PASS import_NAME" / "FAIL import_NAME: why".
+set -u
+cd "$(dirname "$0")/../.."
+out=build/test-images/import
+rm -rf "$out"
+mkdir -p "$out"
+
+# covered PPM: how many pixels differ from the top-left one (the background).
+covered() {
+    python3 -c 'import sys
+d = open(sys.argv[1], "rb").read()
+parts = d.split(maxsplit=4)
+w, h = int(parts[1]), int(parts[2])
+px = parts[4][-w * h * 3:]
+bg = px[:3]
+print(sum(1 for i in range(0, len(px), 3) if px[i:i + 3] != bg))' "$1"
+}
+
+# import_renders NAME MODEL [import options]: import, ref at 80x60, and
+# at least 2% of the picture is the model.
+import_renders() {
+    local name=$1 model=$2; shift 2
+    local scn="$out/$name.scn" img="$out/$name.ppm" err n
+    if ! err=$(build/links1 import "$model" -o "$scn" "$@" 2>&1); then
+        echo "FAIL import_$name: import: $err"
+    elif ! err=$(build/links1 ref "$scn" -o "$img" --size 80x60 2>&1); then
+        echo "FAIL import_$name: ref: $err"
+    elif n=$(covered "$img") && [ "$n" -lt 96 ]; then
+        echo "FAIL import_$name: only $n of 4800 pixels show the model"
+    else
+        echo "PASS import_$name"
+    fi
+}
+
+import_renders obj_mtl tests/models/cube.obj --camera auto
+import_renders gltf2 tests/models/plate.gltf
+import_renders ply tests/models/tetra.ply --camera auto
+import_renders stl tests/models/pyramid.stl --camera auto
+import_renders collada tests/models/tower.dae
+import_renders 3ds tests/models/tetra.3ds --camera auto
+import_renders fit tests/models/huge.obj --fit --camera auto
+
+# The textures of the OBJ's material are named relative to the scene.
+if grep -q 'image "[^"]*tex.ppm"' "$out/obj_mtl.scn" 2>/dev/null; then
+    echo "PASS import_texture_named"
+else
+    echo "FAIL import_texture_named: no map image tex.ppm in $out/obj_mtl.scn"
+fi
+
+# import_refused NAME WANT MODEL [options]: exit 1 (2 for a bad option),
+# WANT in the message, no scene.
+import_refused() {
+    local name=$1 want=$2 model=$3; shift 3
+    local want_rc=1
+    [[ $name == bad_option* ]] && want_rc=2
+    local scn="$out/refused-$name.scn" err rc
+    err=$(build/links1 import "$model" -o "$scn" "$@" 2>&1)
+    rc=$?
+    if [ $rc -ne $want_rc ]; then
+        echo "FAIL import_refuses_$name: exit $rc, not $want_rc ($err)"
+    elif ! grep -qF -- "$want" <<<"$err"; then
+        echo "FAIL import_refuses_$name: the message does not say '$want': $err"
+    elif ls "$out"/refused-"$name".scn* >/dev/null 2>&1; then
+        echo "FAIL import_refuses_$name: a scene file was left behind"
+    else
+        echo "PASS import_refuses_$name"
+    fi
+}
+
+import_refused library "bad_syntax.gltf: the model library cannot read it" \
+    tests/models/bad_syntax.gltf --camera auto
+import_refused nonfinite "vertex 2 is not finite" tests/models/nonfinite.obj --camera auto
+import_refused missing_texture "no_such_texture.png" tests/models/missing_tex.obj --camera auto
+import_refused extent "spans x -2500..2500" tests/models/huge.obj --camera auto
+import_refused no_camera "no camera (--camera auto frames it)" tests/models/tetra.ply
+import_refused bad_option_camera "--camera 'front': want auto" tests/models/tetra.ply --camera front
+
+# Degenerate triangles are dropped and counted, not fatal.
+if err=$(build/links1 import tests/models/degenerate.obj -o "$out/degenerate.scn" \
+        --camera auto 2>&1) && grep -q "2 degenerate triangles dropped" <<<"$err" &&
+   [ "$(grep -c '^ *triangle' "$out/degenerate.scn")" -eq 2 ]; then
+    echo "PASS import_degenerate_dropped"
+else
+    echo "FAIL import_degenerate_dropped: $err"
+fi
