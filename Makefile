@@ -14,6 +14,9 @@
 SHELL := /bin/bash
 
 V ?= 0
+# The builds that `make run`, `make test` and friends start use every host
+# core (JOBS=-j1 to build one file at a time).
+JOBS ?= -j$(shell nproc 2>/dev/null || echo 2)
 Q := $(if $(filter 1,$(V)),,@)
 # $(call say,TAG,target): one quiet line per step unless V=1
 say = $(if $(Q),@printf '  %-6s %s\n' '$(1)' '$(2)';)
@@ -190,11 +193,11 @@ deps:
 	$(Q)bash host-tools/install-deps.sh
 
 run: deps
-	$(Q)$(MAKE) --no-print-directory all
+	$(Q)$(MAKE) $(JOBS) --no-print-directory all
 	$(Q)bash host-tools/make-run.sh
 
 test: deps
-	$(Q)$(MAKE) --no-print-directory all $(HOST_TEST_BINS) $(FUZZ_BINS)
+	$(Q)$(MAKE) $(JOBS) --no-print-directory all $(HOST_TEST_BINS) $(FUZZ_BINS)
 	$(Q)HOST_TESTS="$(HOST_TEST_BINS)" BOARD_TESTS="$(BOARD_TESTS)" FW_DIR=$(FWB) \
 		bash tests/run.sh
 
@@ -207,13 +210,13 @@ test-board: all $(FUZZ_BINS)
 	$(Q)HOST_TESTS= BOARD_TESTS="$(BOARD_TESTS)" FW_DIR=$(FWB) bash tests/run.sh
 
 bench: deps
-	$(Q)$(MAKE) --no-print-directory all
+	$(Q)$(MAKE) $(JOBS) --no-print-directory all
 	$(Q)for b in $(BENCHES); do bash $$b || exit 1; done
 
 # The fuzz harnesses; `make fuzz` runs each for FUZZ_SECONDS (tests/fuzz/run.sh).
 fuzz-build: $(FUZZ_BINS)
 fuzz: deps
-	$(Q)$(MAKE) --no-print-directory fuzz-build
+	$(Q)$(MAKE) $(JOBS) --no-print-directory fuzz-build
 	$(Q)rc=0; for f in $(FUZZERS); do bash tests/fuzz/run.sh $$f $(FUZZ_SECONDS) || rc=1; done; exit $$rc
 
 clean:

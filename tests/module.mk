@@ -28,7 +28,7 @@ RENDER_FULL_TESTS := tests/board/render_grid_full.sh
 
 .PHONY: test-full
 test-full: deps
-	$(Q)$(MAKE) --no-print-directory all
+	$(Q)$(MAKE) $(JOBS) --no-print-directory all
 	$(Q)HOST_TESTS= BOARD_TESTS="$(RENDER_FULL_TESTS)" FW_DIR=$(FWB) bash tests/run.sh
 # Host speed per arithmetic (wall clock, never a test), then the board's.
 BENCHES += tests/bench/bench_host.sh
