@@ -1,4 +1,5 @@
 /* board.c: start QEMU, frame I/O with the board, stop QEMU (see board.h). */
+#define _GNU_SOURCE /* memfd_create */
 #include "host-tools/board.h"
 
 #include <errno.h>
@@ -9,12 +10,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 #include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
 
+#include "proto/board_map.h"
 #include "proto/wire.h"
 
 long long board_now_ms(void)
@@ -51,16 +54,22 @@ static void board_qemu_exec(struct board *b, int qemu_fd)
     prctl(PR_SET_PDEATHSIG, SIGTERM);
     fcntl(qemu_fd, F_SETFD, 0); /* keep QEMU's end open across exec */
 
-    char smp[32], mem[32], chardev[64], plugin[3 * PATH_MAX];
+    char smp[32], mem[32], chardev[64], plugin[3 * PATH_MAX], ram[128];
     snprintf(smp, sizeof smp, "%d", b->opts.ncores);
     snprintf(mem, sizeof mem, "%dM", b->opts.ram_mb);
     snprintf(chardev, sizeof chardev, "socket,id=link,fd=%d", qemu_fd);
+    /* The RAM is our memfd, shared: QEMU opens it again through /proc. */
+    fcntl(b->ram_fd, F_SETFD, 0);
+    snprintf(ram, sizeof ram, "memory-backend-file,id=ram,size=%dM,mem-path=/proc/self/fd/%d,"
+             "share=on", b->opts.ram_mb, b->ram_fd);
     const char *qemu = board_qemu_binary();
     const char *argv[40];
     int n = 0;
     argv[n++] = qemu;
     argv[n++] = "-M";
-    argv[n++] = "virt,gic-version=3";
+    argv[n++] = "virt,gic-version=3,memory-backend=ram";
+    argv[n++] = "-object";
+    argv[n++] = ram;
     argv[n++] = "-cpu";
     argv[n++] = "cortex-a15";
     argv[n++] = "-smp";
@@ -170,14 +179,49 @@ static void board_init(struct board *b, const struct board_opts *o)
     memset(b, 0, sizeof *b);
     b->opts = *o;
     b->fd = -1;
+    b->ram_fd = -1;
     link_decoder_init(&b->dec);
+}
+
+/* The board's RAM as a memfd, mapped here (proto/board_map.h). */
+static int board_ram_create(struct board *b)
+{
+    b->ram_size = (size_t)b->opts.ram_mb << 20;
+    b->ram_fd = memfd_create("links1-board-ram", MFD_CLOEXEC);
+    if (b->ram_fd < 0 || ftruncate(b->ram_fd, (off_t)b->ram_size) < 0) {
+        fprintf(stderr, "links1: the board's %d MiB of shared RAM: %s\n", b->opts.ram_mb,
+                strerror(errno));
+        return -1;
+    }
+    void *p = mmap(NULL, b->ram_size, PROT_READ | PROT_WRITE, MAP_SHARED, b->ram_fd, 0);
+    if (p == MAP_FAILED) {
+        fprintf(stderr, "links1: mapping the board's RAM: %s\n", strerror(errno));
+        return -1;
+    }
+    b->ram = p;
+    return 0;
+}
+
+static void board_ram_release(struct board *b)
+{
+    if (b->ram)
+        munmap(b->ram, b->ram_size);
+    if (b->ram_fd >= 0)
+        close(b->ram_fd);
+    b->ram = NULL;
+    b->ram_fd = -1;
+}
+
+static void board_take_fd(struct board *b, int fd)
+{
+    b->fd = fd;
+    fcntl(b->fd, F_SETFL, fcntl(b->fd, F_GETFL) | O_NONBLOCK);
 }
 
 void board_attach(struct board *b, const struct board_opts *o, int fd)
 {
     board_init(b, o);
-    b->fd = fd;
-    fcntl(b->fd, F_SETFL, fcntl(b->fd, F_GETFL) | O_NONBLOCK);
+    board_take_fd(b, fd);
 }
 
 int board_start(struct board *b, const struct board_opts *o)
@@ -188,6 +232,10 @@ int board_start(struct board *b, const struct board_opts *o)
     if (o->ncores < UNITS_MIN_CORES || o->ncores > UNITS_MAX_CORES) {
         fprintf(stderr, "links1: %d cores: the board needs %d..%d\n", o->ncores,
                 UNITS_MIN_CORES, UNITS_MAX_CORES);
+        return -1;
+    }
+    if (board_ram_create(b) < 0) {
+        board_ram_release(b);
         return -1;
     }
     /* A write to a socket QEMU has closed must fail with EPIPE, not kill us. */
@@ -208,7 +256,7 @@ int board_start(struct board *b, const struct board_opts *o)
     if (pid == 0)
         board_qemu_exec(b, sv[1]);
     close(sv[1]);
-    board_attach(b, o, sv[0]);
+    board_take_fd(b, sv[0]);
     b->qemu_pid = pid;
     if (!o->quiet)
         printf("links1: booting %s on %d cores (DM, RC, %d NCs), QEMU pid %d\n",
@@ -426,13 +474,28 @@ int board_send_cmd(struct board *b, uint16_t cmd, const void *args, size_t len)
     return board_send(b, LINK_CMD, 0, p, LINK_CMD_FIXED_SIZE + len) < 0 ? -1 : 0;
 }
 
+void board_unget_frame(struct board *b, const struct board_frame *f)
+{
+    if (b->queued == BOARD_FRAME_QUEUE)
+        b->queued--; /* cannot happen: the frame was just taken from it */
+    memmove(&b->queue[1], &b->queue[0], (size_t)b->queued * sizeof b->queue[0]);
+    b->queue[0] = *f;
+    b->queued++;
+}
+
 int board_wait_frame(struct board *b, uint8_t type, int timeout_ms,
                      struct board_frame *out, const char *what)
+{
+    return board_wait_frame_of(b, 1u << type, timeout_ms, out, what);
+}
+
+int board_wait_frame_of(struct board *b, uint32_t mask, int timeout_ms,
+                        struct board_frame *out, const char *what)
 {
     long long end = board_now_ms() + timeout_ms;
     for (;;) {
         for (int i = 0; i < b->queued; i++) {
-            if (b->queue[i].type != type)
+            if (b->queue[i].type >= 32 || !(mask & (1u << b->queue[i].type)))
                 continue;
             *out = b->queue[i];
             memmove(&b->queue[i], &b->queue[i + 1],
@@ -498,7 +561,16 @@ uint32_t board_report_link_errors(const struct board *b)
 
 /* ------------------------------------------------------------------ stop */
 
+static int board_stop_qemu(struct board *b);
+
 int board_stop(struct board *b)
+{
+    int r = board_stop_qemu(b);
+    board_ram_release(b);
+    return r;
+}
+
+static int board_stop_qemu(struct board *b)
 {
     if (!b->qemu_pid) {
         if (b->fd >= 0)

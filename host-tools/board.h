@@ -35,6 +35,8 @@ struct board_opts {
     int insn_series_ms;
     int quiet;              /* 1: do not print LOG/HELLO lines (faults always) */
     int view;               /* 1: -device ramfb and a display (links1 render --view) */
+    int link;               /* bulk bytes: LINK_PATH_SHARED (--link fast, the
+                               default) or LINK_PATH_SERIAL (--link serial) */
 };
 
 /* A frame copied out of the decoder, valid as long as the caller keeps it. */
@@ -50,6 +52,10 @@ struct board {
     pid_t qemu_pid;             /* 0 once reaped */
     int qemu_status;            /* waitpid status once reaped */
     int fd;                     /* our end of the UART socket, -1 when closed */
+    int ram_fd;                 /* the board's RAM (memfd), -1 when none */
+    uint8_t *ram;               /* ... mapped here: byte k is guest address
+                                   BOARD_RAM_BASE + k (NULL when none) */
+    size_t ram_size;
     struct link_decoder dec;    /* board -> host frames */
     uint16_t tx_seq;            /* host -> board frame counter */
     int reported_count;         /* distinct cores that sent HELLO */
@@ -71,7 +77,7 @@ struct board {
 void board_opts_init(struct board_opts *o);
 
 /* The board options every board subcommand takes (--smp, --arith,
- * --firmware, --timeout, --ram, --quiet): entries for the subcommand's
+ * --firmware, --timeout, --ram, --quiet, --link): entries for the subcommand's
  * getopt_long table, and their codes. */
 enum board_opt_code {
     BOARD_OPT_SMP = CLI_BOARD_CODES,
@@ -80,6 +86,7 @@ enum board_opt_code {
     BOARD_OPT_TIMEOUT,
     BOARD_OPT_RAM,
     BOARD_OPT_QUIET,
+    BOARD_OPT_LINK,
 };
 #define BOARD_LONG_OPTIONS                                       \
     {"smp", required_argument, NULL, BOARD_OPT_SMP},             \
@@ -87,7 +94,8 @@ enum board_opt_code {
     {"firmware", required_argument, NULL, BOARD_OPT_FIRMWARE},   \
     {"timeout", required_argument, NULL, BOARD_OPT_TIMEOUT},     \
     {"ram", required_argument, NULL, BOARD_OPT_RAM},             \
-    {"quiet", no_argument, NULL, BOARD_OPT_QUIET}
+    {"quiet", no_argument, NULL, BOARD_OPT_QUIET},               \
+    {"link", required_argument, NULL, BOARD_OPT_LINK}
 
 /* Takes the board option cli_next() returned as code into o.  Returns 1
  * when it took it, 0 when code is not a board option, -1 after printing
@@ -102,7 +110,8 @@ extern const char board_opts_usage[];
  * Returns 0, or -1 after printing where it looked. */
 int board_find_firmware(const struct board_opts *o, char *out, size_t cap);
 
-/* Starts QEMU.  Returns 0, or -1 after printing why. */
+/* Starts QEMU, its RAM a memfd mapped here too (b->ram: the shared-memory
+ * path of proto/hostlink.h).  Returns 0, or -1 after printing why. */
 int board_start(struct board *b, const struct board_opts *o);
 
 /* A session on an already open link fd (no QEMU: the host tests play the
@@ -136,6 +145,14 @@ int board_send_cmd(struct board *b, uint16_t cmd, const void *args, size_t len);
  * filled, or -1 after printing what did not come (what names it). */
 int board_wait_frame(struct board *b, uint8_t type, int timeout_ms,
                      struct board_frame *out, const char *what);
+
+/* Waits for the next queued frame of any type in mask (bit 1 << type). */
+int board_wait_frame_of(struct board *b, uint32_t mask, int timeout_ms,
+                        struct board_frame *out, const char *what);
+
+/* Puts a frame taken by board_wait_frame* back at the head of the queue,
+ * for the caller that waits for it next. */
+void board_unget_frame(struct board *b, const struct board_frame *f);
 
 /* Waits for the LINK_RESULT of cmd; checks its size and cmd field.  On
  * success *status is the board's status, *fields and *nfields its result bytes

@@ -18,7 +18,9 @@ const char board_opts_usage[] =
     "                   else next to this program)\n"
     "  --timeout S      seconds to wait for every unit computer to report in (default 60)\n"
     "  --ram MB         board memory (default 512)\n"
-    "  --quiet          do not print the board's log and report-in lines\n";
+    "  --quiet          do not print the board's log and report-in lines\n"
+    "  --link L         bulk bytes through shared memory (fast, default) or the\n"
+    "                   serial link (serial); commands and results always go serially\n";
 
 int board_arith_code(const char *arith)
 {
@@ -33,6 +35,7 @@ void board_opts_init(struct board_opts *o)
     o->arith = "float";
     o->ram_mb = BOARD_DEFAULT_RAM_MB;
     o->timeout_s = BOARD_DEFAULT_TIMEOUT_S;
+    o->link = LINK_PATH_SHARED;
 }
 
 int board_opt(struct board_opts *o, const struct cli *c, int code)
@@ -46,6 +49,11 @@ int board_opt(struct board_opts *o, const struct cli *c, int code)
         return cli_int(c, BOARD_MIN_RAM_MB, BOARD_MAX_RAM_MB, &o->ram_mb) < 0 ? -1 : 1;
     case BOARD_OPT_QUIET:
         o->quiet = 1;
+        return 1;
+    case BOARD_OPT_LINK:
+        if (strcmp(c->arg, "fast") != 0 && strcmp(c->arg, "serial") != 0)
+            return cli_bad_value(c, "fast or serial");
+        o->link = strcmp(c->arg, "fast") == 0 ? LINK_PATH_SHARED : LINK_PATH_SERIAL;
         return 1;
     case BOARD_OPT_FIRMWARE:
         o->firmware = c->arg;

@@ -64,6 +64,8 @@ static void render_usage(FILE *out)
             "  --ppm            write PPM (also chosen by an OUT ending in .ppm)\n"
             "  --count-insns    count guest instructions per core and print them\n"
             "  --timeout S      seconds to wait for every unit computer to report in\n"
+            "  --link L         bulk bytes (scene up, frame down) through shared memory\n"
+            "                   (fast, default) or the serial link (serial)\n"
             "  --firmware ELF   firmware to boot; --ram MB; --quiet\n",
             RENDER_DEFAULT_NCS, AREAS_DEFAULT_K);
 }
@@ -262,14 +264,16 @@ static int render_read_scenes(struct render_opts *o)
 }
 
 static void render_summary(const char *path, const struct link_render_stats *s,
-                           const struct image *img, uint8_t balance, double seconds)
+                           const struct image *img, uint8_t balance, double seconds,
+                           long long upload_ms, long long pull_ms)
 {
     printf("links1 render: frame %u %dx%d -> %s: %u NCs, %u areas (%s), %.1f s "
-           "(board: prepare %u ms, render %u ms); rays %llu primary, %llu shadow, "
+           "(board: prepare %u ms, render %u ms; upload %lld ms, pull %lld ms); rays %llu primary, %llu shadow, "
            "%llu reflection, %llu refraction, %llu transmission; tests %llu box, %llu primitive "
            "(%llu by primary rays); %u pixels lost precision; memory high-water DM %u, RC %u, NC %u of %u bytes\n",
            s->frame, img->width, img->height, path, s->ncs, s->areas,
            areas_mode_name((enum areas_mode)balance), seconds, s->prepare_ms, s->render_ms,
+           upload_ms, pull_ms,
            (unsigned long long)s->primary, (unsigned long long)s->shadow,
            (unsigned long long)s->reflection, (unsigned long long)s->refraction,
            (unsigned long long)s->transmission, (unsigned long long)s->box_tests,
@@ -283,7 +287,8 @@ static void render_summary(const char *path, const struct link_render_stats *s,
 static int render_job(struct board *b, const struct render_opts *o, const struct render_job *j)
 {
     struct link_scene_info info;
-    int rc = render_session_load(b, j->bytes, j->len, &info);
+    long long upload_ms = 0, pull_ms = 0;
+    int rc = render_session_load(b, j->bytes, j->len, &info, &upload_ms);
     if (rc != 0) {
         fprintf(stderr, "links1 render: %s was not loaded\n", j->scene);
         return -1;
@@ -307,7 +312,7 @@ static int render_job(struct board *b, const struct render_opts *o, const struct
         long long t0 = board_now_ms();
         struct link_render_stats s;
         struct image img = {0, 0, NULL};
-        if (render_session_frame(b, &a, isatty(2), &s) != 0 || render_session_pull(b, &img) != 0)
+        if (render_session_frame(b, &a, isatty(2), &s) != 0 || render_session_pull(b, &img, &pull_ms) != 0)
             return -1;
         char path[4096], err[SD_ERR_MAX];
         if (o->many)
@@ -321,7 +326,9 @@ static int render_job(struct board *b, const struct render_opts *o, const struct
             image_free(&img);
             return -1;
         }
-        render_summary(path, &s, &img, a.balance, (double)(board_now_ms() - t0) / 1000.0);
+        /* The scene's upload time is told with its first frame. */
+        render_summary(path, &s, &img, a.balance, (double)(board_now_ms() - t0) / 1000.0,
+                       f == first ? upload_ms : 0, pull_ms);
         image_free(&img);
     }
     return 0;

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "host-tools/link_shared.h"
 #include "proto/crc32.h"
 #include "proto/wire.h"
 
@@ -51,13 +52,9 @@ static int render_session_result(struct board *b, uint16_t cmd, const char *what
     return 0;
 }
 
-int render_session_load(struct board *b, const uint8_t *scene, size_t len,
-                        struct link_scene_info *info)
+/* The scene's bytes as one DATA transfer (the serial path). */
+static int render_session_load_serial(struct board *b, const uint8_t *scene, size_t len)
 {
-    uint8_t args[LINK_SCENE_LOAD_ARGS_SIZE];
-    wire_put_u32(args, (uint32_t)len);
-    if (board_send_cmd(b, CMD_SCENE_LOAD, args, sizeof args) < 0)
-        return -1;
     uint16_t inflight[LINK_DATA_WINDOW];
     int n = 0;
     for (size_t off = 0; off < len;) {
@@ -74,6 +71,25 @@ int render_session_load(struct board *b, const uint8_t *scene, size_t len,
     while (n > 0)
         if (render_session_take_ack(b, inflight, &n) < 0)
             return -1;
+    return 0;
+}
+
+int render_session_load(struct board *b, const uint8_t *scene, size_t len,
+                        struct link_scene_info *info, long long *upload_ms)
+{
+    uint8_t args[LINK_SCENE_LOAD_ARGS_SIZE + 1];
+    wire_put_u32(args, (uint32_t)len);
+    args[LINK_SCENE_LOAD_ARGS_SIZE] = (uint8_t)b->opts.link;
+    long long t0 = board_now_ms();
+    if (board_send_cmd(b, CMD_SCENE_LOAD, args, sizeof args) < 0)
+        return -1;
+    /* On the shared path a refusal comes instead of the offer (r = 1): the
+     * result below prints it. */
+    int r = b->opts.link == LINK_PATH_SHARED ? link_shared_send(b, scene, len)
+                                             : render_session_load_serial(b, scene, len);
+    if (r < 0)
+        return -1;
+    *upload_ms = board_now_ms() - t0;
     struct board_frame f;
     const uint8_t *fields;
     size_t nf;
@@ -167,40 +183,80 @@ int render_session_frame(struct board *b, const struct link_render_args *a, int 
     }
 }
 
-int render_session_pull(struct board *b, struct image *img)
+/* The frame memory as one DATA transfer of r,g,b bytes into *buf; *have
+ * bytes with CRC *crc. */
+static int render_session_pull_serial(struct board *b, uint8_t **buf, size_t *have,
+                                      uint32_t *crc)
 {
-    if (board_send_cmd(b, CMD_FRAME_PULL, NULL, 0) < 0)
-        return -1;
-    size_t cap = 0, have = 0;
-    uint8_t *buf = NULL;
-    uint32_t crc = 0;
+    size_t cap = 0;
     for (;;) {
         struct board_frame f;
-        if (board_wait_frame(b, LINK_DATA, BOARD_FRAME_TIMEOUT_MS, &f, "frame memory DATA") < 0) {
-            free(buf);
+        if (board_wait_frame(b, LINK_DATA, BOARD_FRAME_TIMEOUT_MS, &f, "frame memory DATA") < 0)
             return -1;
-        }
-        if (have + f.length > cap) {
+        if (*have + f.length > cap) {
             cap = cap ? 2 * cap + f.length : 1u << 20;
-            uint8_t *nb = realloc(buf, cap);
+            uint8_t *nb = realloc(*buf, cap);
             if (!nb) {
                 fprintf(stderr, "links1: out of memory for the frame\n");
-                free(buf);
                 return -1;
             }
-            buf = nb;
+            *buf = nb;
         }
-        memcpy(buf + have, f.payload, f.length);
-        have += f.length;
-        crc = crc32_update(crc, f.payload, f.length);
+        memcpy(*buf + *have, f.payload, f.length);
+        *have += f.length;
+        *crc = crc32_update(*crc, f.payload, f.length);
         uint8_t ack[LINK_ACK_SIZE];
         wire_put_u16(ack, f.seq);
-        if (board_send(b, LINK_ACK, 0, ack, sizeof ack) < 0) {
-            free(buf);
+        if (board_send(b, LINK_ACK, 0, ack, sizeof ack) < 0)
             return -1;
-        }
         if (f.flags & LINK_FLAG_LAST)
-            break;
+            return 0;
+    }
+}
+
+/* The frame memory read where it lies in the board's RAM, one u32 word per
+ * pixel, into *buf as r,g,b bytes.  r = 1: the board answered instead. */
+static int render_session_pull_shared(struct board *b, uint8_t **buf, size_t *words,
+                                      uint32_t *crc)
+{
+    struct link_bulk k;
+    const uint8_t *data;
+    int r = link_shared_receive(b, &k, &data);
+    if (r != 0)
+        return r;
+    if (k.length % LINK_FRAME_WORD_SIZE) {
+        fprintf(stderr, "links1: frame pull: %u bytes of frame memory, not whole pixels\n",
+                k.length);
+        return -1;
+    }
+    size_t px = k.length / LINK_FRAME_WORD_SIZE;
+    *buf = malloc(px ? px * 3 : 1);
+    if (!*buf) {
+        fprintf(stderr, "links1: out of memory for the frame\n");
+        return -1;
+    }
+    for (size_t i = 0; i < px; i++)
+        link_frame_word_rgb(data + i * LINK_FRAME_WORD_SIZE, *buf + i * 3);
+    *words = k.length;
+    *crc = k.crc;
+    return 0;
+}
+
+int render_session_pull(struct board *b, struct image *img, long long *pull_ms)
+{
+    int shared = b->opts.link == LINK_PATH_SHARED;
+    uint8_t arg = (uint8_t)b->opts.link;
+    long long t0 = board_now_ms();
+    if (board_send_cmd(b, CMD_FRAME_PULL, &arg, sizeof arg) < 0)
+        return -1;
+    uint8_t *buf = NULL;
+    size_t have = 0; /* bytes as the board sent them */
+    uint32_t crc = 0;
+    int r = shared ? render_session_pull_shared(b, &buf, &have, &crc)
+                   : render_session_pull_serial(b, &buf, &have, &crc);
+    if (r < 0) {
+        free(buf);
+        return -1;
     }
     struct board_frame f;
     const uint8_t *fields;
@@ -211,7 +267,8 @@ int render_session_pull(struct board *b, struct image *img)
         return -1;
     }
     int w = wire_get_u16(fields), h = wire_get_u16(fields + 2);
-    if ((size_t)w * (size_t)h * 3 != have || wire_get_u32(fields + 4) != crc) {
+    size_t per_px = shared ? LINK_FRAME_WORD_SIZE : 3;
+    if ((size_t)w * (size_t)h * per_px != have || wire_get_u32(fields + 4) != crc) {
         fprintf(stderr, "links1: frame pull: %zu bytes with crc 0x%08x, the board says %dx%d "
                 "pixels with crc 0x%08x\n", have, crc, w, h, wire_get_u32(fields + 4));
         free(buf);
@@ -220,5 +277,6 @@ int render_session_pull(struct board *b, struct image *img)
     img->width = w;
     img->height = h;
     img->rgb = buf;
+    *pull_ms = board_now_ms() - t0;
     return 0;
 }

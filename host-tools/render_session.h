@@ -12,16 +12,19 @@
 #include "host-tools/scene/image_io.h"
 #include "proto/render_link.h"
 
-/* CMD_SCENE_LOAD and the scene's bytes as one DATA transfer. */
+/* CMD_SCENE_LOAD and the scene's bytes, on the path b->opts.link names
+ * (the shared RAM, or one DATA transfer).  *upload_ms: from the command to
+ * the board's ACK of the last bytes (before its checks of the scene). */
 int render_session_load(struct board *b, const uint8_t *scene, size_t len,
-                        struct link_scene_info *info);
+                        struct link_scene_info *info, long long *upload_ms);
 
 /* CMD_RENDER; with progress set, a progress line on stderr (areas done of
  * total, elapsed, estimate) while the board renders. */
 int render_session_frame(struct board *b, const struct link_render_args *a, int progress,
                          struct link_render_stats *stats);
 
-/* CMD_FRAME_PULL into img (malloc'ed; image_free it). */
-int render_session_pull(struct board *b, struct image *img);
+/* CMD_FRAME_PULL on the path b->opts.link names, into img (malloc'ed;
+ * image_free it); *pull_ms: from the command to the checked result. */
+int render_session_pull(struct board *b, struct image *img, long long *pull_ms);
 
 #endif

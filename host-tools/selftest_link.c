@@ -1,11 +1,64 @@
 /* selftest_link.c: the host-link checks of `links1 selftest` (pattern
  * transfers both ways). */
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
+#include "host-tools/link_shared.h"
 #include "host-tools/link_transfer.h"
 #include "host-tools/selftest.h"
+#include "proto/crc32.h"
 #include "proto/wire.h"
+
+/* The pattern into the board's shared RAM (CMD_LINK_SINK: u8 path, u32
+ * bytes); *crc of what was put there. */
+static int selftest_link_sink_shared(struct board *b, uint32_t total, uint32_t *crc)
+{
+    uint8_t arg[5];
+    arg[0] = LINK_PATH_SHARED;
+    wire_put_u32(arg + 1, total);
+    uint8_t *pattern = malloc(total ? total : 1);
+    if (!pattern) {
+        fprintf(stderr, "links1: out of memory for %u pattern bytes\n", total);
+        return -1;
+    }
+    for (uint32_t i = 0; i < total; i++)
+        pattern[i] = link_pattern_byte(i);
+    *crc = crc32(pattern, total);
+    int r = board_send_cmd(b, CMD_LINK_SINK, arg, sizeof arg);
+    if (r == 0)
+        r = link_shared_send(b, pattern, total);
+    free(pattern);
+    return r; /* 1: the board refused; selftest_result shows why */
+}
+
+/* The pattern read from the board's shared RAM after CMD_LINK_SOURCE. */
+static int selftest_link_source_shared(struct board *b, uint64_t *bytes, uint32_t *crc,
+                                       char *why, size_t cap)
+{
+    struct link_bulk k;
+    const uint8_t *data;
+    int r = link_shared_receive(b, &k, &data);
+    if (r < 0) {
+        snprintf(why, cap, "reading the pattern from the board's shared RAM failed");
+        return -1;
+    }
+    if (r > 0) {
+        *bytes = 0;
+        *crc = 0;
+        return 0; /* the board's reason comes with its result */
+    }
+    for (uint32_t i = 0; i < k.length; i++) {
+        if (data[i] != link_pattern_byte(i)) {
+            snprintf(why, cap, "byte %u of the board's shared bytes is 0x%02x, the pattern "
+                     "says 0x%02x", i, data[i], link_pattern_byte(i));
+            return -1;
+        }
+    }
+    *bytes = k.length;
+    *crc = k.crc;
+    return 0;
+}
 
 int selftest_link_sink(struct board *b, const struct selftest_args *a, char *why, size_t cap)
 {
@@ -13,8 +66,14 @@ int selftest_link_sink(struct board *b, const struct selftest_args *a, char *why
     struct board_frame r;
     const uint8_t *f;
     long long t0 = board_now_ms();
-    if (board_send_cmd(b, CMD_LINK_SINK, NULL, 0) < 0 ||
-        link_transfer_send_pattern(b, a->link_bytes, &crc) < 0) {
+    if (b->opts.link == LINK_PATH_SHARED) {
+        if (selftest_link_sink_shared(b, a->link_bytes, &crc) < 0) {
+            snprintf(why, cap, "putting %u bytes into the board's shared RAM failed",
+                     a->link_bytes);
+            return -1;
+        }
+    } else if (board_send_cmd(b, CMD_LINK_SINK, NULL, 0) < 0 ||
+               link_transfer_send_pattern(b, a->link_bytes, &crc) < 0) {
         snprintf(why, cap, "sending %u bytes to the board failed", a->link_bytes);
         return -1;
     }
@@ -34,14 +93,19 @@ int selftest_link_sink(struct board *b, const struct selftest_args *a, char *why
 
 int selftest_link_source(struct board *b, const struct selftest_args *a, char *why, size_t cap)
 {
-    uint8_t arg[4];
+    uint8_t arg[5];
     uint64_t bytes;
     uint32_t crc;
     struct board_frame r;
     const uint8_t *f;
     long long t0 = board_now_ms();
     wire_put_u32(arg, a->link_bytes);
-    if (board_send_cmd(b, CMD_LINK_SOURCE, arg, sizeof arg) < 0 ||
+    arg[4] = (uint8_t)b->opts.link;
+    if (b->opts.link == LINK_PATH_SHARED) {
+        if (board_send_cmd(b, CMD_LINK_SOURCE, arg, sizeof arg) < 0 ||
+            selftest_link_source_shared(b, &bytes, &crc, why, cap) < 0)
+            return -1;
+    } else if (board_send_cmd(b, CMD_LINK_SOURCE, arg, sizeof arg) < 0 ||
         link_transfer_receive_pattern(b, &bytes, &crc) < 0) {
         snprintf(why, cap, "receiving %u pattern bytes from the board failed", a->link_bytes);
         return -1;

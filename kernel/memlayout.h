@@ -38,6 +38,9 @@
 #ifndef LINKS1_KERNEL_MEMLAYOUT_H
 #define LINKS1_KERNEL_MEMLAYOUT_H
 
+/* UNMAPPED_VIRT and BOARD_RAM_BASE, which the host tools know too. */
+#include "proto/board_map.h"
+
 /* Devices (physical = virtual below 1 GiB). */
 #define UART0_BASE 0x09000000u
 #define UART0_INTID 33u /* SPI 1 */
@@ -54,14 +57,12 @@
 #define GICR_HIGH_VIRT 0xC0000000u
 
 /* RAM and the first-level LPAE blocks. */
-#define RAM_BASE 0x40000000u
+#define RAM_BASE BOARD_RAM_BASE /* proto/board_map.h */
 /* QEMU's device tree sits at the start of RAM; linker/virt-memory.ld keeps
  * this much free for it. */
 #define DTB_BASE RAM_BASE
 #define DTB_MAX_SIZE 0x00100000u
 #define MMU_BLOCK_SIZE 0x40000000u  /* 1 GiB first-level block */
-/* UNMAPPED_VIRT, the block left invalid on purpose: proto/board_map.h. */
-#include "proto/board_map.h"
 
 /* Generic timer: non-secure physical timer PPI. */
 #define TIMER_INTID 30u

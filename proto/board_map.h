@@ -9,4 +9,10 @@
  * fault report from them names this address. */
 #define UNMAPPED_VIRT 0x80000000u
 
+/* The board's RAM starts here (physical = virtual).  The host tool backs
+ * the whole RAM with a shared file (QEMU's memory-backend-file, share=on)
+ * and maps it too: byte k of that file is guest address BOARD_RAM_BASE + k,
+ * which is what a LINK_BULK offset (proto/hostlink.h) counts from. */
+#define BOARD_RAM_BASE 0x40000000u
+
 #endif

@@ -191,3 +191,17 @@ void link_transfer_result_get(const uint8_t *p, struct link_transfer_result *r)
     r->crc = wire_get_u32(p + 8);
     r->differ = wire_get_u32(p + 12);
 }
+
+void link_bulk_put(uint8_t *p, const struct link_bulk *k)
+{
+    wire_put_u32(p, k->offset);
+    wire_put_u32(p + 4, k->length);
+    wire_put_u32(p + 8, k->crc);
+}
+
+void link_bulk_get(const uint8_t *p, struct link_bulk *k)
+{
+    k->offset = wire_get_u32(p);
+    k->length = wire_get_u32(p + 4);
+    k->crc = wire_get_u32(p + 8);
+}

@@ -40,6 +40,7 @@ enum link_type {
     LINK_DATA = 6,   /* either way: a chunk of a bulk transfer */
     LINK_ACK = 7,    /* either way: u16 seq of the last DATA frame taken in */
     LINK_PROGRESS = 8, /* board -> host: rendering progress (proto/render_link.h) */
+    LINK_BULK = 9,   /* either way: bulk bytes in the board's shared RAM (link_bulk) */
 };
 
 /* LINK_CMD payload: u16 enum link_cmd, then that command's arguments
@@ -64,6 +65,13 @@ enum link_cmd {
                           * it renders -> struct link_render_stats */
     CMD_FRAME_PULL = 11, /* board sends the frame memory as one DATA transfer
                           * (rows of r,g,b bytes) -> u16 width, u16 height, u32 crc */
+};
+/* CMD_LINK_SINK, CMD_LINK_SOURCE, CMD_SCENE_LOAD and CMD_FRAME_PULL take one
+ * more optional u8 after their arguments: the path of their bulk bytes
+ * (absent = LINK_PATH_SERIAL).  See "the shared-memory path" below. */
+enum link_path {
+    LINK_PATH_SERIAL = 0, /* LINK_DATA frames with LINK_ACK flow control */
+    LINK_PATH_SHARED = 1, /* the board's RAM, shared with the host (LINK_BULK) */
 };
 
 enum link_flag {
@@ -148,6 +156,39 @@ static inline uint8_t link_pattern_byte(uint32_t i)
     uint32_t x = i * 2654435761u;
     return (uint8_t)((x >> 24) ^ i);
 }
+
+/* ---- the shared-memory path (LINK_PATH_SHARED) ----
+ *
+ * The host tool backs the board's whole RAM with a file it maps too
+ * (proto/board_map.h: file offset = guest address - BOARD_RAM_BASE).  Bulk
+ * bytes then move as one memcpy on the host; only a LINK_BULK frame saying
+ * where they are crosses the serial link, and the CRC-32 checks stay:
+ *
+ *   offset  size  field
+ *   0       4     offset   bytes from BOARD_RAM_BASE
+ *   4       4     length   bytes
+ *   8       4     crc      CRC-32 of those bytes (0 in an offer)
+ *
+ * Host -> board (CMD_LINK_SINK, CMD_SCENE_LOAD): the board answers the
+ * command with a LINK_BULK offer (offset, room in bytes, crc 0) of memory it
+ * set aside, or at once with an error LINK_RESULT when it cannot take the
+ * bytes.  The host writes its bytes there and sends LINK_BULK (offset,
+ * length <= room, crc); the board checks the offset, the length and the CRC
+ * of what it finds, answers LINK_ACK with that frame's seq (the bytes are on
+ * the board), and then the command's LINK_RESULT as on the serial path.
+ *
+ * Board -> host (CMD_LINK_SOURCE, CMD_FRAME_PULL): the board sends LINK_BULK
+ * (offset, length, crc) of bytes already in its RAM, then the command's
+ * LINK_RESULT.  They stay valid until the host's next command.  The frame
+ * memory is sent as it is held, one little-endian u32 0x00RRGGBB per pixel,
+ * row after row (proto/render_link.h link_frame_word_rgb), and the crc of
+ * CMD_FRAME_PULL's result is then the CRC-32 of those words. */
+#define LINK_BULK_SIZE 12
+struct link_bulk {
+    uint32_t offset, length, crc;
+};
+void link_bulk_put(uint8_t *p, const struct link_bulk *k);
+void link_bulk_get(const uint8_t *p, struct link_bulk *k);
 
 /* ---- command results ----
  * The fields of a successful LINK_RESULT, after u16 cmd and i16 status.  The

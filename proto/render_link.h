@@ -76,8 +76,22 @@ struct link_render_stats {
     uint32_t dc_full_waits;     /* times an NC found the DC FIFO full */
 };
 
-/* CMD_FRAME_PULL result. */
+/* CMD_FRAME_PULL result: u16 width, u16 height, u32 crc (of the r,g,b
+ * bytes on the serial path, of the frame memory's words on the shared
+ * path). */
 #define LINK_FRAME_INFO_SIZE 8
+/* Bytes per pixel of the frame memory as the shared path carries it. */
+#define LINK_FRAME_WORD_SIZE 4
+
+/* One pixel of the frame memory on the shared path (a little-endian u32
+ * 0x00RRGGBB) into r, g, b bytes. */
+static inline void link_frame_word_rgb(const uint8_t *word, uint8_t *rgb)
+{
+    uint32_t v = wire_get_u32(word);
+    rgb[0] = (uint8_t)(v >> 16);
+    rgb[1] = (uint8_t)(v >> 8);
+    rgb[2] = (uint8_t)v;
+}
 
 static inline void link_scene_info_put(uint8_t *p, const struct link_scene_info *s)
 {

@@ -116,6 +116,9 @@ void dm_cmd_scene_load(uint16_t cmd)
         return;
     }
     uint32_t len = wire_get_u32(dm_frame.payload + LINK_CMD_FIXED_SIZE);
+    int path = dm_bulk_path(cmd, LINK_SCENE_LOAD_ARGS_SIZE);
+    if (path < 0)
+        return;
     /* The old scene goes first: its memory holds the new one. */
     if (!dm_scene.marked) {
         insn_mark_count_from_here(); /* benchmarks count from the first scene */
@@ -136,9 +139,22 @@ void dm_cmd_scene_load(uint16_t cmd)
         rx = (struct dm_scene_rx){kmem_alloc(len, "compiled scene"), len, ""};
     uint64_t got = 0;
     uint32_t crc = 0;
-    int r = dm_transfer_receive(cmd, dm_scene_chunk, &rx, &got, &crc);
-    if (r != LINK_OK && r != LINK_ERR_CHECK)
-        return; /* the transfer already answered */
+    if (path == LINK_PATH_SHARED) {
+        /* The host writes the scene straight into its buffer; refused
+         * before the offer when it cannot be taken. */
+        if (rx.why[0]) {
+            hostlink_error(cmd, LINK_ERR_BAD_ARGS, "scene refused: %s", rx.why);
+            return;
+        }
+        uint32_t n = 0;
+        if (dm_bulk_receive(cmd, rx.buf, len, &n, &crc) != LINK_OK)
+            return; /* the shared path already answered */
+        got = n;
+    } else {
+        int r = dm_transfer_receive(cmd, dm_scene_chunk, &rx, &got, &crc);
+        if (r != LINK_OK && r != LINK_ERR_CHECK)
+            return; /* the transfer already answered */
+    }
     if (rx.why[0] == 0 && got != len)
         fmt_snprintf(rx.why, sizeof rx.why, "received %u bytes, CMD_SCENE_LOAD announced %u",
                      (unsigned)got, (unsigned)len);
@@ -320,10 +336,18 @@ void dm_cmd_frame_pull(uint16_t cmd)
         hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_FRAME_PULL: no frame rendered yet");
         return;
     }
-    uint32_t total = fm->width * fm->height * 3;
-    uint32_t crc = 0;
-    if (dm_transfer_send(cmd, dm_frame_fill, (void *)fm, total, &crc) != LINK_OK)
+    int path = dm_bulk_path(cmd, 0);
+    if (path < 0)
         return;
+    uint32_t crc = 0;
+    if (path == LINK_PATH_SHARED) {
+        /* The frame memory as it is: the host reads it where it lies. */
+        crc = dm_bulk_send(fm->pixels, (uint32_t)fm_bytes(fm));
+    } else {
+        uint32_t total = fm->width * fm->height * 3;
+        if (dm_transfer_send(cmd, dm_frame_fill, (void *)fm, total, &crc) != LINK_OK)
+            return;
+    }
     uint8_t f[LINK_FRAME_INFO_SIZE];
     wire_put_u16(f, (uint16_t)fm->width);
     wire_put_u16(f + 2, (uint16_t)fm->height);

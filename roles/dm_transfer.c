@@ -7,6 +7,7 @@
 #include "drivers/serial/line.h"
 #include "drivers/serial/uart.h"
 #include "kernel/cpu.h"
+#include "kernel/kmem.h"
 #include "kernel/ktime.h"
 #include "proto/crc32.h"
 #include "proto/hostlink.h"
@@ -132,8 +133,49 @@ static int dm_sink_check(void *ctx, const uint8_t *data, uint32_t n, uint64_t of
     return 0;
 }
 
+/* CMD_LINK_SINK on the shared path: u8 path, u32 bytes.  The pattern goes
+ * into DM private memory given back at the end. */
+static void dm_link_sink_shared(uint16_t cmd)
+{
+    if (dm_frame.length < LINK_CMD_FIXED_SIZE + 5) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_LINK_SINK on the shared path needs u8 "
+                       "path, u32 bytes (5 bytes), got %u",
+                       (unsigned)(dm_frame.length - LINK_CMD_FIXED_SIZE));
+        return;
+    }
+    uint32_t want = wire_get_u32(dm_frame.payload + LINK_CMD_FIXED_SIZE + 1);
+    if (want == 0 || want > (kmem_free() & ~(size_t)7)) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS, "sink: %u bytes: must be 1..%u (the DM's free "
+                       "private memory)", (unsigned)want, (unsigned)kmem_free());
+        return;
+    }
+    size_t mark = kmem_mark();
+    uint8_t *buf = kmem_alloc(want, "link sink");
+    uint32_t len = 0, crc = 0, differ = 0;
+    int r = dm_bulk_receive(cmd, buf, want, &len, &crc);
+    if (r == LINK_OK)
+        dm_sink_check(&differ, buf, len, 0);
+    kmem_release_to(mark);
+    if (r != LINK_OK)
+        return;
+    if (differ) {
+        hostlink_error(cmd, LINK_ERR_CHECK,
+                       "sink: %u of %u bytes differ from the pattern, crc 0x%08x",
+                       (unsigned)differ, (unsigned)len, (unsigned)crc);
+        return;
+    }
+    dm_transfer_result(cmd, len, crc, differ);
+}
+
 void dm_cmd_link_sink(uint16_t cmd)
 {
+    int path = dm_bulk_path(cmd, 0);
+    if (path < 0)
+        return;
+    if (path == LINK_PATH_SHARED) {
+        dm_link_sink_shared(cmd);
+        return;
+    }
     uint64_t bytes = 0;
     uint32_t crc = 0, differ = 0;
     if (dm_transfer_receive(cmd, dm_sink_check, &differ, &bytes, &crc) != LINK_OK)
@@ -162,8 +204,25 @@ void dm_cmd_link_source(uint16_t cmd)
         return;
     }
     uint32_t total = wire_get_u32(dm_frame.payload + LINK_CMD_FIXED_SIZE);
-    uint32_t crc = 0;
-    if (dm_transfer_send(cmd, dm_source_fill, NULL, total, &crc) != LINK_OK)
+    int path = dm_bulk_path(cmd, 4);
+    if (path < 0)
         return;
+    uint32_t crc = 0;
+    if (path == LINK_PATH_SHARED) {
+        /* The pattern in DM private memory, given back at once: nothing
+         * else allocates before the host's next command. */
+        if (total == 0 || total > (kmem_free() & ~(size_t)7)) {
+            hostlink_error(cmd, LINK_ERR_BAD_ARGS, "source: %u bytes: must be 1..%u (the "
+                           "DM's free private memory)", (unsigned)total, (unsigned)kmem_free());
+            return;
+        }
+        size_t mark = kmem_mark();
+        uint8_t *buf = kmem_alloc(total, "link source");
+        dm_source_fill(NULL, buf, total, 0);
+        crc = dm_bulk_send(buf, total);
+        kmem_release_to(mark);
+    } else if (dm_transfer_send(cmd, dm_source_fill, NULL, total, &crc) != LINK_OK) {
+        return;
+    }
     dm_transfer_result(cmd, total, crc, 0);
 }
