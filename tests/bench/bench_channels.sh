@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # bench_channels.sh: the channels' speed on a 10-core board, one boot:
 # 64 MiB through the inter-unit serial lines, 8 MiB each way through the
-# host link.  Wall-clock figures: the selftest lines print KiB/s.
+# host link's serial path (tests/bench/bench_link.sh: the fast path).
+# Wall-clock figures: the selftest lines print KiB/s.
 set -eu
 cd "$(dirname "$0")/../.."
-echo "bench_channels: links1 selftest --smp 10 --mib 64 --bytes 8388608 stress link-sink link-source"
-build/links1 selftest --smp 10 --quiet --mib 64 --bytes $((8 << 20)) stress link-sink link-source
+echo "bench_channels: links1 selftest --smp 10 --link serial --mib 64 --bytes 8388608 stress link-sink link-source"
+build/links1 selftest --smp 10 --link serial --quiet --mib 64 --bytes $((8 << 20)) stress link-sink link-source

@@ -52,6 +52,24 @@ static void msg_fault_layout_and_round_trip(void)
     CHECK_EQ_INT(g.status, 13);
 }
 
+/* LINK_BULK: offset, length, crc, each a little-endian u32. */
+static void msg_bulk_layout_and_round_trip(void)
+{
+    struct link_bulk k = {.offset = 0x03812340u, .length = 0x00300000u, .crc = 0xcbf43926u};
+    static const uint8_t want[LINK_BULK_SIZE] = {
+        0x40, 0x23, 0x81, 0x03, 0x00, 0x00, 0x30, 0x00, 0x26, 0x39, 0xf4, 0xcb};
+    uint8_t p[LINK_BULK_SIZE + 1];
+    p[LINK_BULK_SIZE] = 0xee;
+    link_bulk_put(p, &k);
+    CHECK(memcmp(p, want, sizeof want) == 0);
+    CHECK_EQ_INT(p[LINK_BULK_SIZE], 0xee);
+    struct link_bulk g;
+    link_bulk_get(want, &g);
+    CHECK_EQ_INT(g.offset, k.offset);
+    CHECK_EQ_INT(g.length, k.length);
+    CHECK_EQ_INT(g.crc, k.crc);
+}
+
 static void msg_cmd_frame_bytes_are_pinned(void)
 {
     struct board b;
@@ -158,6 +176,7 @@ int main(void)
 {
     RUN(msg_hello_layout_and_round_trip);
     RUN(msg_fault_layout_and_round_trip);
+    RUN(msg_bulk_layout_and_round_trip);
     RUN(msg_cmd_frame_bytes_are_pinned);
     RUN(msg_result_frame_is_parsed);
     RUN(msg_dropped_frame_report_is_counted);
