@@ -50,4 +50,4 @@ render-clip-stats_LIBS = $(SCENE_TEXT_LIBS)
 BOARD_TESTS += tests/board/boot_smp.sh tests/board/channels.sh tests/board/idle66.sh \
 	tests/board/fault.sh
 
-BENCHES += tests/bench/bench_boot.sh tests/bench/bench_channels.sh
+BENCHES += tests/bench/bench_boot.sh tests/bench/bench_channels.sh tests/bench/bench_link.sh
