@@ -48,20 +48,33 @@ static void board_qemu_exec_failed(const char *qemu)
     _exit(127);
 }
 
-/* In the child: QEMU must not outlive the tool, whatever ends the tool. */
+/* In the child.  A board of this tool's own (qemu_fd >= 0, the UART on a
+ * socket pair, the RAM our memfd) must not outlive the tool, whatever ends
+ * the tool; a named board (qemu_fd < 0: the UART a listening socket, the RAM
+ * a file, both in its state directory) runs on in a session of its own. */
 static void board_qemu_exec(struct board *b, int qemu_fd)
 {
-    prctl(PR_SET_PDEATHSIG, SIGTERM);
-    fcntl(qemu_fd, F_SETFD, 0); /* keep QEMU's end open across exec */
-
-    char smp[32], mem[32], chardev[64], plugin[3 * PATH_MAX], ram[128];
+    char smp[32], mem[32], chardev[PATH_MAX + 64], plugin[3 * PATH_MAX], ram[PATH_MAX + 96];
     snprintf(smp, sizeof smp, "%d", b->opts.ncores);
     snprintf(mem, sizeof mem, "%dM", b->opts.ram_mb);
-    snprintf(chardev, sizeof chardev, "socket,id=link,fd=%d", qemu_fd);
-    /* The RAM is our memfd, shared: QEMU opens it again through /proc. */
-    fcntl(b->ram_fd, F_SETFD, 0);
-    snprintf(ram, sizeof ram, "memory-backend-file,id=ram,size=%dM,mem-path=/proc/self/fd/%d,"
-             "share=on", b->opts.ram_mb, b->ram_fd);
+    if (qemu_fd >= 0) {
+        prctl(PR_SET_PDEATHSIG, SIGTERM);
+        fcntl(qemu_fd, F_SETFD, 0); /* keep QEMU's end open across exec */
+        snprintf(chardev, sizeof chardev, "socket,id=link,fd=%d", qemu_fd);
+        /* The RAM is our memfd, shared: QEMU opens it again through /proc. */
+        fcntl(b->ram_fd, F_SETFD, 0);
+        snprintf(ram, sizeof ram, "memory-backend-file,id=ram,size=%dM,"
+                 "mem-path=/proc/self/fd/%d,share=on", b->opts.ram_mb, b->ram_fd);
+    } else {
+        setsid();
+        board_named_redirect(b);
+        /* wait=on: the guest starts only once `board start` is connected,
+         * so no report-in is lost. */
+        snprintf(chardev, sizeof chardev, "socket,id=link,path=%s/%s,server=on,wait=on",
+                 b->state_dir, BOARD_STATE_SOCKET);
+        snprintf(ram, sizeof ram, "memory-backend-file,id=ram,size=%dM,mem-path=%s/%s,share=on",
+                 b->opts.ram_mb, b->state_dir, BOARD_STATE_RAM);
+    }
     const char *qemu = board_qemu_binary();
     const char *argv[40];
     int n = 0;
@@ -180,6 +193,7 @@ static void board_init(struct board *b, const struct board_opts *o)
     b->opts = *o;
     b->fd = -1;
     b->ram_fd = -1;
+    b->lock_fd = -1;
     link_decoder_init(&b->dec);
 }
 
@@ -264,6 +278,60 @@ int board_start(struct board *b, const struct board_opts *o)
     return 0;
 }
 
+int board_start_named(struct board *b, const struct board_opts *o, const char *name,
+                      int timeout_ms)
+{
+    board_init(b, o);
+    b->named = 1;
+    if (board_find_firmware(o, b->firmware, sizeof b->firmware) < 0)
+        return -1;
+    if (o->ncores < UNITS_MIN_CORES || o->ncores > UNITS_MAX_CORES) {
+        fprintf(stderr, "links1: %d cores: the board needs %d..%d\n", o->ncores,
+                UNITS_MIN_CORES, UNITS_MAX_CORES);
+        return -1;
+    }
+    if (board_named_prepare(b, name) < 0) {
+        if (b->lock_fd >= 0)
+            board_named_abandon(b);
+        b->state_dir[0] = 0;
+        board_stop(b);
+        return -1;
+    }
+    if (board_named_map_ram(b, 1) < 0) {
+        board_named_abandon(b);
+        board_stop(b);
+        return -1;
+    }
+    signal(SIGPIPE, SIG_IGN);
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid < 0) {
+        fprintf(stderr, "links1: fork: %s\n", strerror(errno));
+        board_named_abandon(b);
+        board_stop(b);
+        return -1;
+    }
+    if (pid == 0)
+        board_qemu_exec(b, -1);
+    b->qemu_pid = pid;
+    int fd = board_named_started(b, timeout_ms);
+    if (fd < 0) {
+        board_named_abandon(b);
+        board_stop(b);
+        return -1;
+    }
+    board_take_fd(b, fd);
+    if (!o->quiet)
+        printf("links1: booting %s on %d cores (DM, RC, %d NCs) as board %s, QEMU pid %d\n",
+               b->firmware, o->ncores, o->ncores - 2, name, (int)pid);
+    if (board_wait_reported(b, timeout_ms) < 0) {
+        board_named_abandon(b);
+        board_stop(b);
+        return -1;
+    }
+    return 0;
+}
+
 /* Waits up to timeout_ms for QEMU to exit; returns 1 once reaped. */
 static int board_qemu_reap(struct board *b, int timeout_ms)
 {
@@ -304,7 +372,9 @@ static int board_lost(struct board *b, const char *why)
     }
     if (b->stopping)
         return -1; /* the shutdown we asked for */
-    if (board_qemu_reap(b, BOARD_TERM_WAIT_MS))
+    if (b->named && !b->qemu_pid)
+        snprintf(desc, sizeof desc, "the named board's QEMU closed the link or ended");
+    else if (board_qemu_reap(b, BOARD_TERM_WAIT_MS))
         board_qemu_exit_text(b, desc, sizeof desc);
     else
         snprintf(desc, sizeof desc, "QEMU (pid %d) is still running", (int)b->qemu_pid);
@@ -565,8 +635,20 @@ static int board_stop_qemu(struct board *b);
 
 int board_stop(struct board *b)
 {
-    int r = board_stop_qemu(b);
+    int r = 0;
+    if (b->named) {
+        /* A named board runs on: only this session ends. */
+        if (b->fd >= 0)
+            close(b->fd);
+        b->fd = -1;
+        b->qemu_pid = 0;
+    } else {
+        r = board_stop_qemu(b);
+    }
     board_ram_release(b);
+    if (b->lock_fd >= 0)
+        close(b->lock_fd);
+    b->lock_fd = -1;
     return r;
 }
 

@@ -71,6 +71,10 @@ struct board {
     int host_drop_status;       /* status of the last such report */
     char host_drop_text[LINK_MAX_PAYLOAD + 1]; /* and its text */
     char fault_text[BOARD_MAX_FAULTS][BOARD_FAULT_TEXT]; /* text of each kept fault */
+    int named;                  /* 1: a named board (board_named.c), which runs
+                                   on after this session */
+    char state_dir[4096];       /* a named board's state directory */
+    int lock_fd;                /* a named board's lock, held by this session */
 };
 
 /* Fills o with the defaults (BOARD_DEFAULT_*). */
@@ -176,6 +180,49 @@ uint32_t board_report_link_errors(const struct board *b);
  * the command, 1 when it had to be signalled, -1 on error.  Safe to call
  * twice and after QEMU died. */
 int board_stop(struct board *b);
+
+/* ---- named boards (host-tools/board_named.c) ----
+ * `links1 board start --name NAME` leaves a board running for later
+ * sessions (`links1 render --board NAME`).  Its state directory
+ * ($LINKS1_BOARDS, else /dev/shm/links1-UID, else /tmp/links1-UID, then
+ * NAME/) holds QEMU's pid and the board's shape (BOARD_STATE_INFO), the
+ * UART as a listening socket, the shared RAM file, QEMU's own output and a
+ * lock that one session at a time holds.  A board whose QEMU is gone leaves
+ * a stale directory: found, reported and removed by start, stop and list. */
+#define BOARD_STATE_INFO "board"
+#define BOARD_STATE_SOCKET "link.sock"
+#define BOARD_STATE_RAM "ram"
+#define BOARD_STATE_LOG "qemu.log"
+#define BOARD_STATE_LOCK "lock"
+#define BOARD_DEFAULT_NAME "default"
+
+/* Starts QEMU as the named board and waits for every unit computer to
+ * report in; the board then runs on without this tool.  0, or -1 after
+ * printing why (a board of that name already running, QEMU failing). */
+int board_start_named(struct board *b, const struct board_opts *o, const char *name,
+                      int timeout_ms);
+/* A session on the named board: maps its RAM, connects to its UART, opens
+ * the session (LINK_FLAG_SESSION) and checks that every unit computer is up.
+ * o gives quiet and link; the shape comes from the board.  0, or -1 after
+ * printing why. */
+int board_connect(struct board *b, const struct board_opts *o, const char *name);
+/* Shuts the named board down and removes its state.  0, or -1. */
+int board_stop_named(const char *name);
+/* Prints every named board: running (pid, cores) or stale (then removed).
+ * Returns the number running. */
+int board_list_named(void);
+/* board_start_named's steps (board.c starts the process between them):
+ * the state directory made, a stale one removed, the lock taken; the record
+ * written and the UART socket connected (returns its fd); everything undone
+ * after a failure. */
+int board_named_prepare(struct board *b, const char *name);
+int board_named_started(struct board *b, int timeout_ms);
+void board_named_abandon(struct board *b);
+/* In QEMU's child process: its output into the state directory. */
+void board_named_redirect(const struct board *b);
+/* The named board's RAM file mapped into b (board_start_named creates it
+ * with create = 1).  0, or -1 after printing why. */
+int board_named_map_ram(struct board *b, int create);
 
 /* Handles one decoded frame (used by the reader in board.c): prints LOG,
  * checks and records HELLO, prints and records FAULT, queues the rest.

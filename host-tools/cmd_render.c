@@ -37,6 +37,7 @@ struct render_opts {
     int many;           /* --frames: one image per frame, numbered */
     struct scene_file_opts scene; /* --size, --max-depth, --refractionless */
     int ppm, count_insns;
+    const char *board_name; /* --board NAME: a running named board */
 };
 
 static void render_usage(FILE *out)
@@ -64,6 +65,8 @@ static void render_usage(FILE *out)
             "  --ppm            write PPM (also chosen by an OUT ending in .ppm)\n"
             "  --count-insns    count guest instructions per core and print them\n"
             "  --timeout S      seconds to wait for every unit computer to report in\n"
+            "  --board NAME     render on the running board NAME (links1 board start); its\n"
+            "                   cores and arithmetic are the board's\n"
             "  --link L         bulk bytes (scene up, frame down) through shared memory\n"
             "                   (fast, default) or the serial link (serial)\n"
             "  --firmware ELF   firmware to boot; --ram MB; --quiet\n",
@@ -87,6 +90,7 @@ enum render_opt_code {
     RENDER_OPT_VIEW,
     RENDER_OPT_PPM,
     RENDER_OPT_COUNT_INSNS,
+    RENDER_OPT_BOARD,
 };
 
 static const struct option render_options[] = {
@@ -107,6 +111,7 @@ static const struct option render_options[] = {
     {"view", no_argument, NULL, RENDER_OPT_VIEW},
     {"ppm", no_argument, NULL, RENDER_OPT_PPM},
     {"count-insns", no_argument, NULL, RENDER_OPT_COUNT_INSNS},
+    {"board", required_argument, NULL, RENDER_OPT_BOARD},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -198,6 +203,9 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
     case RENDER_OPT_COUNT_INSNS:
         o->count_insns = 1;
         return 0;
+    case RENDER_OPT_BOARD:
+        o->board_name = c->arg;
+        return 0;
     }
     return -1; /* CLI_BAD: reported already */
 }
@@ -230,6 +238,11 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
     }
     if (o->njobs == 0) {
         render_usage(stderr);
+        return -1;
+    }
+    if (o->board_name && (o->count_insns || o->board.view)) {
+        fprintf(stderr, "links1 render: --count-insns and --view need a board of this "
+                "command's own, not --board %s\n", o->board_name);
         return -1;
     }
     for (int j = 0; j < o->njobs; j++) {
@@ -357,8 +370,10 @@ int cmd_render(int argc, char **argv)
     }
     struct board b;
     int rc = 1;
-    if (board_start(&b, &o.board) == 0 &&
-        board_wait_reported(&b, o.board.timeout_s * 1000) == 0) {
+    int up = o.board_name ? board_connect(&b, &o.board, o.board_name)
+                          : board_start(&b, &o.board) == 0 ?
+                                board_wait_reported(&b, o.board.timeout_s * 1000) : -1;
+    if (up == 0) {
         rc = 0;
         for (int j = 0; j < o.njobs; j++)
             if (render_job(&b, &o, &o.jobs[j]) != 0)

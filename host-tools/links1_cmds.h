@@ -9,5 +9,6 @@ int cmd_selftest(int argc, char **argv); /* links1 selftest NAME...: board check
 
 int cmd_render(int argc, char **argv);   /* links1 render SCENE -o OUT: render on the board */
 int cmd_semihost(int argc, char **argv); /* links1 semihost ELF: a semihosting program */
+int cmd_board(int argc, char **argv);    /* links1 board start|stop|list: named boards */
 
 #endif

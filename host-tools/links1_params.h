@@ -22,6 +22,10 @@
 /* Long commands (the inter-unit stress run) get this many ms per MiB. */
 #define BOARD_STRESS_MS_PER_MIB 4000
 
+/* A session on a named board waits this long for the board's first answer
+ * (it may be finishing a command of a session that went away). */
+#define BOARD_SESSION_WAIT_MS 60000
+
 /* Clean stop: wait this long for QEMU to exit after CMD_SHUTDOWN, then send
  * SIGTERM and wait again, and only then SIGKILL. */
 #define BOARD_SHUTDOWN_WAIT_MS 5000

@@ -88,7 +88,7 @@ int link_decoder_push(struct link_decoder *d, uint8_t b, struct link_frame *f)
         f->seq = wire_get_u16(d->buf + 4);
         f->length = len;
         f->payload = d->buf + LINK_HEADER_SIZE;
-        if (d->seq_known && f->seq != d->next_seq)
+        if (d->seq_known && f->seq != d->next_seq && !(f->flags & LINK_FLAG_SESSION))
             d->stats.seq_gaps++;
         d->seq_known = 1;
         d->next_seq = (uint16_t)(f->seq + 1);

@@ -76,6 +76,9 @@ enum link_path {
 
 enum link_flag {
     LINK_FLAG_LAST = 1u << 0, /* DATA: the last chunk of a transfer */
+    LINK_FLAG_SESSION = 1u << 1, /* any frame: the sender starts its numbering
+                                  * again here (a new host session on a board
+                                  * left running); no seq gap is counted */
 };
 
 /* LINK_RESULT status values (i16).  Every error result carries text naming

@@ -104,9 +104,25 @@ static void dm_hostrx(void *arg)
     }
 }
 
+static int dm_frame_held; /* 1: dm_frame is to be taken again */
+
+int dm_session_interrupts(uint16_t cmd)
+{
+    if (!(dm_frame.flags & LINK_FLAG_SESSION))
+        return 0;
+    dm_frame_held = 1;
+    hostlink_error(cmd, LINK_ERR_PROTOCOL, "transfer: a new host session began (the host of "
+                   "this transfer went away)");
+    return 1;
+}
+
 /* Takes the next queued frame into dm_frame; 0, or -1 at deadline. */
 int dm_next_frame(uint64_t deadline)
 {
+    if (dm_frame_held) {
+        dm_frame_held = 0;
+        return 0;
+    }
     uint8_t hdr[DM_REC_HEADER];
     for (;;) {
         uint32_t mark = task_event_mark();

@@ -22,6 +22,10 @@ extern uint32_t dm_link_errors;   /* host -> board frames dropped so far */
 
 /* Takes the next queued host frame into dm_frame; 0, or -1 at deadline. */
 int dm_next_frame(uint64_t deadline);
+/* In a transfer: when dm_frame opens a new host session (LINK_FLAG_SESSION:
+ * the transfer's host went away), answers cmd's error, keeps the frame for
+ * the next dm_next_frame and returns 1; else 0. */
+int dm_session_interrupts(uint16_t cmd);
 /* Sends m to the RC and waits for its answer of answer_type into m. */
 int dm_rc_request(struct line_msg *m, uint16_t answer_type, uint32_t timeout_ms);
 

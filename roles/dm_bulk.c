@@ -49,6 +49,8 @@ int dm_bulk_receive(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t *len, ui
                        "%u ms after the offer", (unsigned)LINK_ACK_TIMEOUT_MS);
         return LINK_ERR_TIMEOUT;
     }
+    if (dm_session_interrupts(cmd))
+        return LINK_ERR_PROTOCOL;
     if (dm_frame.type != LINK_BULK || dm_frame.length < LINK_BULK_SIZE) {
         hostlink_error(cmd, LINK_ERR_PROTOCOL, "shared path: expected LINK_BULK, got frame "
                        "type %u (%u bytes)", (unsigned)dm_frame.type, (unsigned)dm_frame.length);

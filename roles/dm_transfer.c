@@ -30,6 +30,8 @@ static int dm_transfer_receive_polled(uint16_t cmd, dm_chunk_in_fn fn, void *ctx
                            (unsigned)LINK_ACK_TIMEOUT_MS, (unsigned)bytes);
             return LINK_ERR_TIMEOUT;
         }
+        if (dm_session_interrupts(cmd))
+            return LINK_ERR_PROTOCOL;
         if (dm_frame.type != LINK_DATA) {
             hostlink_error(cmd, LINK_ERR_PROTOCOL,
                            "transfer: frame type %u in the middle of a transfer, after %u bytes",
@@ -90,6 +92,8 @@ int dm_transfer_send(uint16_t cmd, dm_chunk_out_fn fn, void *ctx, uint32_t total
                            (unsigned)LINK_ACK_TIMEOUT_MS, (unsigned)count);
             return LINK_ERR_TIMEOUT;
         }
+        if (dm_session_interrupts(cmd))
+            return LINK_ERR_PROTOCOL;
         if (dm_frame.type != LINK_ACK || dm_frame.length < LINK_ACK_SIZE) {
             hostlink_error(cmd, LINK_ERR_PROTOCOL,
                            "transfer: expected an ACK, got frame type %u (%u bytes)",

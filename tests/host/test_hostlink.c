@@ -197,6 +197,25 @@ static void frame_seq_gap_counted(void)
     CHECK_EQ_INT(d.stats.seq_gaps, 2);
 }
 
+/* A frame flagged LINK_FLAG_SESSION starts the numbering again: no gap is
+ * counted at it, and the frames after it follow from its seq. */
+static void frame_session_restarts_seq(void)
+{
+    static const uint16_t seqs[] = {40, 41, 0, 1, 2, 9};
+    static const uint8_t flags[] = {0, 0, LINK_FLAG_SESSION, 0, 0, 0};
+    struct link_decoder d;
+    link_decoder_init(&d);
+    int k = 0;
+    for (size_t i = 0; i < sizeof seqs / sizeof seqs[0]; i++) {
+        uint8_t f[32];
+        size_t n = link_frame_encode(f, sizeof f, LINK_CMD, flags[i], seqs[i], "s", 1);
+        k = push_all(&d, f, n, k);
+    }
+    CHECK_EQ_INT(k, 6);
+    /* 41 -> 0 is a new session, 2 -> 9 is a gap. */
+    CHECK_EQ_INT(d.stats.seq_gaps, 1);
+}
+
 /* Many frames of assorted sizes back to back, handed to the decoder in
  * chunks of random sizes; every frame comes out intact and in order. */
 static void frame_stream_split_at_random_boundaries(void)
@@ -242,6 +261,7 @@ int main(void)
     RUN(frame_bad_crc_counted);
     RUN(frame_bad_length_counted);
     RUN(frame_seq_gap_counted);
+    RUN(frame_session_restarts_seq);
     RUN(frame_stream_split_at_random_boundaries);
     return check_exit();
 }
