@@ -194,6 +194,7 @@ static void board_init(struct board *b, const struct board_opts *o)
     b->fd = -1;
     b->ram_fd = -1;
     b->lock_fd = -1;
+    b->started_ms = board_now_ms();
     link_decoder_init(&b->dec);
 }
 
@@ -471,6 +472,9 @@ int board_wait_reported(struct board *b, int timeout_ms)
         fprintf(stderr, "links1: %d bad report-in frame(s)\n", b->hello_errors);
         return -1;
     }
+    if (!b->opts.quiet)
+        printf("links1: board up: %d unit computers in %.1f s\n", b->opts.ncores,
+               (double)(board_now_ms() - b->started_ms) / 1000.0);
     return 0;
 }
 

@@ -33,7 +33,9 @@ struct board_opts {
     const char *insn_series_out; /* non-NULL: the counting plugin appends a line of
                                     every core's count here every insn_series_ms */
     int insn_series_ms;
-    int quiet;              /* 1: do not print LOG/HELLO lines (faults always) */
+    int quiet;              /* 1: do not print LOG lines or the board-up line
+                               (faults always) */
+    int verbose;            /* 1: a line per unit computer reporting in */
     int view;               /* 1: -device ramfb and a display (links1 render --view) */
     int link;               /* bulk bytes: LINK_PATH_SHARED (--link fast, the
                                default) or LINK_PATH_SERIAL (--link serial) */
@@ -75,13 +77,14 @@ struct board {
                                    on after this session */
     char state_dir[4096];       /* a named board's state directory */
     int lock_fd;                /* a named board's lock, held by this session */
+    long long started_ms;       /* board_now_ms() when QEMU was started */
 };
 
 /* Fills o with the defaults (BOARD_DEFAULT_*). */
 void board_opts_init(struct board_opts *o);
 
 /* The board options every board subcommand takes (--smp, --arith,
- * --firmware, --timeout, --ram, --quiet, --link): entries for the subcommand's
+ * --firmware, --timeout, --ram, --quiet, --link, --verbose): entries for the subcommand's
  * getopt_long table, and their codes. */
 enum board_opt_code {
     BOARD_OPT_SMP = CLI_BOARD_CODES,
@@ -91,6 +94,7 @@ enum board_opt_code {
     BOARD_OPT_RAM,
     BOARD_OPT_QUIET,
     BOARD_OPT_LINK,
+    BOARD_OPT_VERBOSE,
 };
 #define BOARD_LONG_OPTIONS                                       \
     {"smp", required_argument, NULL, BOARD_OPT_SMP},             \
@@ -99,7 +103,8 @@ enum board_opt_code {
     {"timeout", required_argument, NULL, BOARD_OPT_TIMEOUT},     \
     {"ram", required_argument, NULL, BOARD_OPT_RAM},             \
     {"quiet", no_argument, NULL, BOARD_OPT_QUIET},               \
-    {"link", required_argument, NULL, BOARD_OPT_LINK}
+    {"link", required_argument, NULL, BOARD_OPT_LINK},           \
+    {"verbose", no_argument, NULL, BOARD_OPT_VERBOSE}
 
 /* Takes the board option cli_next() returned as code into o.  Returns 1
  * when it took it, 0 when code is not a board option, -1 after printing
@@ -128,8 +133,9 @@ void board_attach(struct board *b, const struct board_opts *o, int fd);
  * printing why. */
 int board_run_semihost(const char *elf, int ram_mb);
 
-/* Waits until every core has sent HELLO.  Returns 0, or -1 after printing
- * the missing cores (timeout) or why the board stopped. */
+/* Waits until every core has sent HELLO, then (unless quiet) prints one line
+ * "board up: N unit computers in T s".  Returns 0, or -1 after printing the
+ * missing cores (timeout) or why the board stopped. */
 int board_wait_reported(struct board *b, int timeout_ms);
 
 /* Sends one frame; returns its seq, or -1 after printing why. */

@@ -59,7 +59,7 @@ static void board_on_hello(struct board *b, const struct link_frame *f)
     }
     b->reported[h.core] = 1;
     b->reported_count++;
-    if (!b->opts.quiet)
+    if (b->opts.verbose)
         printf("core %u %s reported in (mpidr 0x%08x)\n", h.core, board_role_name(h.core),
                h.mpidr);
 }

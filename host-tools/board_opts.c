@@ -18,7 +18,8 @@ const char board_opts_usage[] =
     "                   else next to this program)\n"
     "  --timeout S      seconds to wait for every unit computer to report in (default 60)\n"
     "  --ram MB         board memory (default 512)\n"
-    "  --quiet          do not print the board's log and report-in lines\n"
+    "  --quiet          do not print the board's log or the board-up line\n"
+    "  --verbose        print each unit computer reporting in\n"
     "  --link L         bulk bytes through shared memory (fast, default) or the\n"
     "                   serial link (serial); commands and results always go serially\n";
 
@@ -49,6 +50,9 @@ int board_opt(struct board_opts *o, const struct cli *c, int code)
         return cli_int(c, BOARD_MIN_RAM_MB, BOARD_MAX_RAM_MB, &o->ram_mb) < 0 ? -1 : 1;
     case BOARD_OPT_QUIET:
         o->quiet = 1;
+        return 1;
+    case BOARD_OPT_VERBOSE:
+        o->verbose = 1;
         return 1;
     case BOARD_OPT_LINK:
         if (strcmp(c->arg, "fast") != 0 && strcmp(c->arg, "serial") != 0)

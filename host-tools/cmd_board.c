@@ -63,12 +63,10 @@ static int cmd_board_start(int argc, char **argv)
         }
     }
     struct board b;
-    long long t0 = board_now_ms();
     if (board_start_named(&b, &o, name, o.timeout_s * 1000) < 0)
         return 1;
-    printf("links1: board %s up: %d unit computers in %.1f s (QEMU pid %d); "
-           "`links1 render --board %s ...`, `links1 board stop %s`\n", name, o.ncores,
-           (double)(board_now_ms() - t0) / 1000.0, (int)b.qemu_pid, name, name);
+    printf("links1: board %s runs on (QEMU pid %d): `links1 render --board %s ...`, "
+           "`links1 board stop %s`\n", name, (int)b.qemu_pid, name, name);
     int rc = board_report_link_errors(&b) ? 1 : 0;
     if (b.nfaults)
         rc = 1;

@@ -66,8 +66,9 @@ int cmd_boot(int argc, char **argv)
     struct board b;
     int rc = 1;
     if (board_start(&b, &o) == 0 && board_wait_reported(&b, o.timeout_s * 1000) == 0) {
-        printf("links1: all %d unit computers reported in: DM, RC and %d NCs\n", o.ncores,
-               o.ncores - 2);
+        if (o.quiet) /* else board_wait_reported said "board up" */
+            printf("links1: all %d unit computers reported in: DM, RC and %d NCs\n", o.ncores,
+                   o.ncores - 2);
         rc = 0;
     }
     int stop = board_stop(&b);

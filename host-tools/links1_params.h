@@ -74,6 +74,8 @@
 #define RENDER_SILENCE_MS (20 * 60 * 1000)
 /* How often the terminal's progress line is redrawn at most. */
 #define RENDER_PROGRESS_REDRAW_MS 250
+/* Characters of the progress line's bar. */
+#define RENDER_PROGRESS_BAR 30
 
 /* The instruction-counting plugin's per-vCPU table. */
 #define INSN_COUNT_MAX_VCPUS UNITS_MAX_CORES

@@ -115,12 +115,28 @@ static int render_session_take(struct board *b, struct board_frame *out)
     return 0;
 }
 
+/* The progress line: a bar of the pixels in the frame memory, and the time
+ * left estimated from them.  Pixels, not areas: with decreasing areas the
+ * first few areas hold most of the pixels, so areas done says far too
+ * little of the work done. */
 static void render_session_show(const struct link_progress *g, long long t0, int final)
 {
     double s = (double)(board_now_ms() - t0) / 1000.0;
-    double left = g->areas_done ? s * (g->areas_total - g->areas_done) / g->areas_done : 0;
-    fprintf(stderr, "\rframe %u: %u of %u areas, %.1f s elapsed, about %.1f s left   %s",
-            g->frame, g->areas_done, g->areas_total, s, left, final ? "\n" : "");
+    double part = g->pixels_total ? (double)g->pixels_done / g->pixels_total : 0;
+    char bar[RENDER_PROGRESS_BAR + 1];
+    int full = (int)(part * RENDER_PROGRESS_BAR);
+    for (int i = 0; i < RENDER_PROGRESS_BAR; i++)
+        bar[i] = i < full ? '#' : '.';
+    bar[RENDER_PROGRESS_BAR] = 0;
+    char left[48];
+    if (final || part >= 1)
+        snprintf(left, sizeof left, "done");
+    else if (g->pixels_done)
+        snprintf(left, sizeof left, "about %.1f s left", s * (1 - part) / part);
+    else
+        snprintf(left, sizeof left, "time left unknown yet");
+    fprintf(stderr, "\rframe %u [%s] %3.0f%%, %u of %u areas, %.1f s, %s   %s", g->frame, bar,
+            100 * part, g->areas_done, g->areas_total, s, left, final ? "\n" : "");
     fflush(stderr);
 }
 
@@ -132,7 +148,7 @@ int render_session_frame(struct board *b, const struct link_render_args *a, int 
     if (board_send_cmd(b, CMD_RENDER, args, sizeof args) < 0)
         return -1;
     long long t0 = board_now_ms(), heard = t0, drawn = 0;
-    struct link_progress last = {a->frame, 0, 0};
+    struct link_progress last = {a->frame, 0, 0, 0, 0};
     for (;;) {
         struct board_frame f;
         if (!render_session_take(b, &f)) {
@@ -163,7 +179,7 @@ int render_session_frame(struct board *b, const struct link_render_args *a, int 
                     a->frame, f.type);
             return -1;
         }
-        if (progress && last.areas_total)
+        if (progress && last.pixels_total)
             render_session_show(&last, t0, 1);
         int status = (int16_t)wire_get_u16(f.payload + 2);
         const uint8_t *fields = f.payload + LINK_RESULT_FIXED_SIZE;

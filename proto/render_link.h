@@ -52,11 +52,13 @@ struct link_render_args {
 };
 
 /* LINK_PROGRESS payload. */
-#define LINK_PROGRESS_SIZE 12
+#define LINK_PROGRESS_SIZE 20
 struct link_progress {
     uint32_t frame;
     uint32_t areas_done;  /* areas finished (their pixels sent to the DC) */
     uint32_t areas_total; /* areas of this frame's schedule */
+    uint32_t pixels_done; /* pixels in the frame memory */
+    uint32_t pixels_total;/* pixels of the frame */
 };
 
 /* CMD_RENDER result. */
@@ -133,12 +135,16 @@ static inline void link_progress_put(uint8_t *p, const struct link_progress *g)
     wire_put_u32(p, g->frame);
     wire_put_u32(p + 4, g->areas_done);
     wire_put_u32(p + 8, g->areas_total);
+    wire_put_u32(p + 12, g->pixels_done);
+    wire_put_u32(p + 16, g->pixels_total);
 }
 static inline void link_progress_get(const uint8_t *p, struct link_progress *g)
 {
     g->frame = wire_get_u32(p);
     g->areas_done = wire_get_u32(p + 4);
     g->areas_total = wire_get_u32(p + 8);
+    g->pixels_done = wire_get_u32(p + 12);
+    g->pixels_total = wire_get_u32(p + 16);
 }
 
 static inline void link_render_stats_put(uint8_t *p, const struct link_render_stats *s)

@@ -204,7 +204,8 @@ static int dm_await_frame(uint32_t frame, struct line_msg *m)
             return LINE_OK;
         if (m->type != MSG_RENDER_PROGRESS)
             continue;
-        struct link_progress g = {frame, wire_get_u32(m->payload), wire_get_u32(m->payload + 4)};
+        struct link_progress g = {frame, wire_get_u32(m->payload), wire_get_u32(m->payload + 4),
+                                  wire_get_u32(m->payload + 8), wire_get_u32(m->payload + 12)};
         uint8_t p[LINK_PROGRESS_SIZE];
         link_progress_put(p, &g);
         hostlink_send(LINK_PROGRESS, 0, p, sizeof p);

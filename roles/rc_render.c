@@ -132,9 +132,11 @@ static void rc_on_nc(struct rc_run *run, uint32_t nc, struct line_msg *m)
 static void rc_progress(const struct rc_run *run, struct line_msg *m)
 {
     m->type = MSG_RENDER_PROGRESS;
-    m->len = 8;
+    m->len = 16;
     wire_put_u32(m->payload, run->done);
     wire_put_u32(m->payload + 4, run->total);
+    wire_put_u32(m->payload + 8, rc_frame.fm.pixels_written);
+    wire_put_u32(m->payload + 12, rc_frame.pixels);
     line_send(UNITS_DM_CORE, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
 }
 
@@ -144,7 +146,7 @@ static void rc_progress(const struct rc_run *run, struct line_msg *m)
 static void rc_serve(struct rc_run *run, struct line_msg *m)
 {
     uint64_t next_progress = ktime_deadline_ms(GIGS_PROGRESS_MS);
-    uint32_t reported = 0;
+    uint32_t reported = 0, reported_px = 0;
     for (;;) {
         uint32_t mark = task_event_mark();
         int busy = 0, moved = 0;
@@ -168,9 +170,11 @@ static void rc_serve(struct rc_run *run, struct line_msg *m)
         int pixels_in = rc_frame.filled || run->status != LINK_OK;
         if (!busy && pixels_in)
             return;
-        if (run->done != reported && ktime_passed(next_progress)) {
+        if ((run->done != reported || rc_frame.fm.pixels_written != reported_px) &&
+            ktime_passed(next_progress)) {
             rc_progress(run, m);
             reported = run->done;
+            reported_px = rc_frame.fm.pixels_written;
             next_progress = ktime_deadline_ms(GIGS_PROGRESS_MS);
         }
         if (moved)

@@ -30,7 +30,8 @@ enum unit_msg {
     MSG_RENDER_FRAME = 18,   /* DM->RC: the prepared frame is in the IMSU block
                               * just swapped to you: u32 frame, u8 balance,
                               * u8 flags (LINK_RENDER_*), u16 0, u32 areas K */
-    MSG_RENDER_PROGRESS = 19,/* RC->DM: u32 areas done, u32 areas total */
+    MSG_RENDER_PROGRESS = 19,/* RC->DM: u32 areas done, u32 areas total, u32 pixels
+                              * in the frame memory, u32 pixels of the frame */
     MSG_RENDER_DONE = 20,    /* RC->DM: i32 status; 0: gigs_frame_result
                               * (GIGS_RESULT_SIZE); else text naming the problem */
     MSG_NC_START = 21,       /* RC->NC: the frame is in the broadcast block:

@@ -84,7 +84,7 @@ int main(int argc, char **argv)
     save(dir, "transfer");
 
     /* rendering: progress, the scene info and the render statistics */
-    struct link_progress g = {0, 3, 16};
+    struct link_progress g = {0, 3, 16, 4800, 76800};
     link_progress_put(p, &g);
     add(LINK_PROGRESS, 0, p, LINK_PROGRESS_SIZE);
     wire_put_u16(p, CMD_SCENE_LOAD);

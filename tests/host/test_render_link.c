@@ -55,11 +55,13 @@ static void render_link_info_and_progress_round_trip(void)
     CHECK(i.width == j.width && i.height == j.height && i.frames == j.frames &&
           i.compiled_bytes == j.compiled_bytes && i.blob_bytes == j.blob_bytes &&
           i.blob_limit == j.blob_limit);
-    struct link_progress g = {3, 17, 368}, h;
+    struct link_progress g = {3, 17, 368, 70000, 76800}, h;
     uint8_t pb[LINK_PROGRESS_SIZE];
     link_progress_put(pb, &g);
     link_progress_get(pb, &h);
     CHECK(g.frame == h.frame && g.areas_done == h.areas_done && g.areas_total == h.areas_total);
+    CHECK(g.pixels_done == h.pixels_done && g.pixels_total == h.pixels_total);
+    CHECK_EQ_INT(wire_get_u32(pb + 12), 70000); /* pixels after the areas */
 }
 
 /* The RC sums each NC's statistics: two NCs' messages add field by field. */
