@@ -183,7 +183,7 @@ HOST_TEST_BINS := $(addprefix $(B)/tests/,$(HOST_TESTS))
 BOARD_PROG_BINS := $(addprefix $(B)/tests/,$(BOARD_PROGS))
 
 # ---------------------------------------------------------------- targets
-.PHONY: all firmware host-tools deps run test test-host test-board bench clean fuzz fuzz-build
+.PHONY: all firmware host-tools deps run gdb test test-host test-board bench clean fuzz fuzz-build
 
 all: firmware host-tools
 firmware: $(FIRMWARE)
@@ -195,6 +195,12 @@ deps:
 run: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all
 	$(Q)bash host-tools/make-run.sh
+
+# The board halted under QEMU's gdb stub, gdb-multiarch attached with the
+# firmware's symbols (GDB_PORT, GDB_NCS, GDB_ARITH, GDB_ARGS; docs/firmware.md).
+gdb: deps
+	$(Q)$(MAKE) $(JOBS) --no-print-directory all
+	$(Q)FW_DIR=$(FWB) bash host-tools/make-gdb.sh
 
 test: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all $(HOST_TEST_BINS) $(FUZZ_BINS)

@@ -108,6 +108,14 @@ static void board_qemu_exec(struct board *b, int qemu_fd)
         argv[n++] = "-monitor";
         argv[n++] = monitor_arg;
     }
+    char gdb[48];
+    if (b->opts.gdb_port) {
+        /* Halted at the first instruction until the debugger continues. */
+        snprintf(gdb, sizeof gdb, "tcp:127.0.0.1:%d", b->opts.gdb_port);
+        argv[n++] = "-gdb";
+        argv[n++] = gdb;
+        argv[n++] = "-S";
+    }
     argv[n++] = "-no-reboot"; /* a reset request ends the run instead of looping */
     argv[n++] = "-chardev";
     argv[n++] = chardev;

@@ -36,6 +36,8 @@ struct board_opts {
     int quiet;              /* 1: do not print LOG lines or the board-up line
                                (faults always) */
     int verbose;            /* 1: a line per unit computer reporting in */
+    int gdb_port;           /* non-zero: QEMU's gdb stub on 127.0.0.1:gdb_port,
+                               every core halted until the debugger continues */
     int view;               /* 1: -device ramfb and a display (links1 render --view) */
     int link;               /* bulk bytes: LINK_PATH_SHARED (--link fast, the
                                default) or LINK_PATH_SERIAL (--link serial) */
@@ -84,7 +86,7 @@ struct board {
 void board_opts_init(struct board_opts *o);
 
 /* The board options every board subcommand takes (--smp, --arith,
- * --firmware, --timeout, --ram, --quiet, --link, --verbose): entries for the subcommand's
+ * --firmware, --timeout, --ram, --quiet, --link, --verbose, --gdb): entries for the subcommand's
  * getopt_long table, and their codes. */
 enum board_opt_code {
     BOARD_OPT_SMP = CLI_BOARD_CODES,
@@ -95,6 +97,7 @@ enum board_opt_code {
     BOARD_OPT_QUIET,
     BOARD_OPT_LINK,
     BOARD_OPT_VERBOSE,
+    BOARD_OPT_GDB,
 };
 #define BOARD_LONG_OPTIONS                                       \
     {"smp", required_argument, NULL, BOARD_OPT_SMP},             \
@@ -104,7 +107,8 @@ enum board_opt_code {
     {"ram", required_argument, NULL, BOARD_OPT_RAM},             \
     {"quiet", no_argument, NULL, BOARD_OPT_QUIET},               \
     {"link", required_argument, NULL, BOARD_OPT_LINK},           \
-    {"verbose", no_argument, NULL, BOARD_OPT_VERBOSE}
+    {"verbose", no_argument, NULL, BOARD_OPT_VERBOSE},           \
+    {"gdb", required_argument, NULL, BOARD_OPT_GDB}
 
 /* Takes the board option cli_next() returned as code into o.  Returns 1
  * when it took it, 0 when code is not a board option, -1 after printing

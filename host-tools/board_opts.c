@@ -20,6 +20,7 @@ const char board_opts_usage[] =
     "  --ram MB         board memory (default 512)\n"
     "  --quiet          do not print the board's log or the board-up line\n"
     "  --verbose        print each unit computer reporting in\n"
+    "  --gdb PORT       start halted, QEMU's gdb stub on 127.0.0.1:PORT (make gdb)\n"
     "  --link L         bulk bytes through shared memory (fast, default) or the\n"
     "                   serial link (serial); commands and results always go serially\n";
 
@@ -54,6 +55,8 @@ int board_opt(struct board_opts *o, const struct cli *c, int code)
     case BOARD_OPT_VERBOSE:
         o->verbose = 1;
         return 1;
+    case BOARD_OPT_GDB:
+        return cli_int(c, 1, 65535, &o->gdb_port) < 0 ? -1 : 1;
     case BOARD_OPT_LINK:
         if (strcmp(c->arg, "fast") != 0 && strcmp(c->arg, "serial") != 0)
             return cli_bad_value(c, "fast or serial");
