@@ -32,6 +32,11 @@ test_hostlink_transfer_SRCS := tests/host/test_hostlink_transfer.c $(BOARD_LAUNC
 	host-tools/link_transfer.c
 test_hostlink_transfer_ARITH := double
 test_hostlink_transfer_LIBS := -lpthread
+# The host side of the shared-memory path against a fake board and RAM.
+HOST_TESTS += test_link_shared
+test_link_shared_SRCS := tests/host/test_link_shared.c $(BOARD_LAUNCHER_SRCS) \
+	host-tools/link_shared.c
+test_link_shared_ARITH := double
 # The argument reader of every command and the board options.
 HOST_TESTS += test_cli_opt
 test_cli_opt_SRCS := tests/host/test_cli_opt.c host-tools/board_opts.c host-tools/cli_opt.c
