@@ -13,6 +13,7 @@
 #include "host-tools/board.h"
 #include "host-tools/insn_report.h"
 #include "host-tools/links1_cmds.h"
+#include "host-tools/render_faults.h"
 #include "host-tools/render_session.h"
 #include "host-tools/scene/image_io.h"
 #include "host-tools/scene/cli_args.h"
@@ -37,6 +38,10 @@ struct render_opts {
     int many;           /* --frames: one image per frame, numbered */
     struct scene_file_opts scene; /* --size, --max-depth, --refractionless */
     int ppm, count_insns;
+    unsigned inject, inject_seed; /* --inject-faults K[:SEED] */
+    uint8_t inject_kind;          /* --inject-kind */
+    uint8_t plan[LINK_INJECT_SIZE(LINK_INJECT_MAX)];
+    uint32_t plan_len;            /* 0 once sent (the first frame only) */
 };
 
 static void render_usage(FILE *out)
@@ -63,6 +68,9 @@ static void render_usage(FILE *out)
             "  --view           show the frame memory live (-device ramfb, a display)\n"
             "  --ppm            write PPM (also chosen by an OUT ending in .ppm)\n"
             "  --count-insns    count guest instructions per core and print them\n"
+            "  --inject-faults K[:SEED]  test hook: K random NCs (fewer than --ncs) fail at\n"
+            "                   random points of the first frame; the frame still completes\n"
+            "  --inject-kind KIND  undef, abort, hang, silent or mixed (default mixed)\n"
             "  --timeout S      seconds to wait for every unit computer to report in\n"
             "  --firmware ELF   firmware to boot; --ram MB; --quiet\n",
             RENDER_DEFAULT_NCS, AREAS_DEFAULT_K);
@@ -85,6 +93,8 @@ enum render_opt_code {
     RENDER_OPT_VIEW,
     RENDER_OPT_PPM,
     RENDER_OPT_COUNT_INSNS,
+    RENDER_OPT_INJECT_FAULTS,
+    RENDER_OPT_INJECT_KIND,
 };
 
 static const struct option render_options[] = {
@@ -105,6 +115,8 @@ static const struct option render_options[] = {
     {"view", no_argument, NULL, RENDER_OPT_VIEW},
     {"ppm", no_argument, NULL, RENDER_OPT_PPM},
     {"count-insns", no_argument, NULL, RENDER_OPT_COUNT_INSNS},
+    {"inject-faults", required_argument, NULL, RENDER_OPT_INJECT_FAULTS},
+    {"inject-kind", required_argument, NULL, RENDER_OPT_INJECT_KIND},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -196,6 +208,14 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
     case RENDER_OPT_COUNT_INSNS:
         o->count_insns = 1;
         return 0;
+    case RENDER_OPT_INJECT_FAULTS:
+        if (render_faults_parse(c->arg, &o->inject, &o->inject_seed) != 0)
+            return cli_bad_value(c, "K[:SEED], K at most LINK_INJECT_MAX (128)");
+        return 0;
+    case RENDER_OPT_INJECT_KIND:
+        if (render_faults_kind_parse(c->arg, &o->inject_kind) != 0)
+            return cli_bad_value(c, "undef, abort, hang, silent or mixed");
+        return 0;
     }
     return -1; /* CLI_BAD: reported already */
 }
@@ -236,6 +256,14 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
             return -1;
         }
     }
+    unsigned ncs = (unsigned)o->board.ncores - UNITS_FIRST_NC;
+    if (o->inject >= ncs && o->inject) {
+        fprintf(stderr, "links1 render: --inject-faults %u: at most %u of the %u NCs may fail "
+                "(one must be left)\n", o->inject, ncs - 1, ncs);
+        return -1;
+    }
+    if (o->inject)
+        o->plan_len = render_faults_plan(o->inject, o->inject_seed, o->inject_kind, ncs, o->plan);
     return 0;
 }
 
@@ -280,7 +308,7 @@ static void render_summary(const char *path, const struct link_render_stats *s,
 }
 
 /* One scene on the running board: upload, every frame asked for. */
-static int render_job(struct board *b, const struct render_opts *o, const struct render_job *j)
+static int render_job(struct board *b, struct render_opts *o, const struct render_job *j)
 {
     struct link_scene_info info;
     int rc = render_session_load(b, j->bytes, j->len, &info);
@@ -306,9 +334,16 @@ static int render_job(struct board *b, const struct render_opts *o, const struct
             a.flags |= LINK_RENDER_PREPARE_NEXT;
         long long t0 = board_now_ms();
         struct link_render_stats s;
+        struct link_render_fails fails;
         struct image img = {0, 0, NULL};
-        if (render_session_frame(b, &a, isatty(2), &s) != 0 || render_session_pull(b, &img) != 0)
+        if (o->plan_len)
+            render_faults_print_plan(stdout, o->plan);
+        uint32_t plan_len = o->plan_len;
+        o->plan_len = 0; /* the first frame only */
+        if (render_session_frame(b, &a, isatty(2), o->plan, plan_len, &s, &fails) != 0 ||
+            render_session_pull(b, &img) != 0)
             return -1;
+        render_faults_print(stdout, a.frame, &fails);
         char path[4096], err[SD_ERR_MAX];
         if (o->many)
             scene_file_frame_path(j->out, f, path, sizeof path);
@@ -361,9 +396,18 @@ int cmd_render(int argc, char **argv)
         rc = 1;
     if (board_report_link_errors(&b))
         rc = 1;
-    if (b.nfaults) {
-        fprintf(stderr, "links1 render: %d unit computer(s) faulted\n", b.nfaults);
+    /* An NC that faulted is left out and its areas drawn by others (the
+     * frames above say so); a DM or RC fault ends the run. */
+    int unit_faults = 0;
+    for (int i = 0; i < b.nfaults && i < BOARD_MAX_FAULTS; i++)
+        unit_faults += b.faults[i].role != ROLE_NC;
+    if (b.nfaults > BOARD_MAX_FAULTS || unit_faults) {
+        fprintf(stderr, "links1 render: %d unit computer(s) faulted, %d of them DM or RC\n",
+                b.nfaults, unit_faults);
         rc = 1;
+    } else if (b.nfaults) {
+        printf("links1 render: %d NC(s) faulted; the frames were finished without them\n",
+               b.nfaults);
     }
     if (o.count_insns) {
         if (insn_report_print(insn_path, o.board.ncores) < 0)

@@ -224,10 +224,24 @@ static void dm_render_result(uint16_t cmd, uint32_t frame, uint32_t prepare_ms,
     s.primary_prim_tests = rs.primary_prim_tests;
     s.precision_lost_pixels = rs.precision_lost_pixels;
     s.dm_high = (uint32_t)kmem_high_water();
-    uint8_t f[LINK_RENDER_STATS_SIZE];
+    uint8_t f[LINK_RENDER_STATS_SIZE + LINK_RENDER_FAILS_SIZE(LINK_REISSUE_LIST_MAX)];
     link_render_stats_put(f, &s);
-    hostlink_result(cmd, LINK_OK, f, sizeof f);
+    /* What the frame lost and got back: passed on as the RC wrote it. */
+    uint32_t extra = m->len > 4 + GIGS_RESULT_SIZE ? m->len - 4 - GIGS_RESULT_SIZE : 0;
+    if (extra > sizeof f - LINK_RENDER_STATS_SIZE)
+        extra = sizeof f - LINK_RENDER_STATS_SIZE;
+    memcpy(f + LINK_RENDER_STATS_SIZE, q + GIGS_RESULT_SIZE, extra);
+    hostlink_result(cmd, LINK_OK, f, LINK_RENDER_STATS_SIZE + extra);
 }
+
+_Static_assert(12 + LINK_INJECT_SIZE(LINK_INJECT_MAX) <= LINE_MAX_PAYLOAD,
+               "a full fault plan must fit MSG_RENDER_FRAME");
+_Static_assert(4 + GIGS_RESULT_SIZE + LINK_RENDER_FAILS_SIZE(LINK_REISSUE_LIST_MAX) <=
+                   LINE_MAX_PAYLOAD,
+               "the failures must fit MSG_RENDER_DONE");
+_Static_assert(LINK_RESULT_FIXED_SIZE + LINK_RENDER_STATS_SIZE +
+                   LINK_RENDER_FAILS_SIZE(LINK_REISSUE_LIST_MAX) <= LINK_MAX_PAYLOAD,
+               "the failures must fit the CMD_RENDER result");
 
 void dm_cmd_render(uint16_t cmd)
 {
@@ -239,6 +253,17 @@ void dm_cmd_render(uint16_t cmd)
     }
     struct link_render_args a;
     link_render_args_get(dm_frame.payload + LINK_CMD_FIXED_SIZE, &a);
+    /* The test hook's fault plan, if any, goes to the RC as it came. */
+    const uint8_t *plan = dm_frame.payload + LINK_CMD_FIXED_SIZE + LINK_RENDER_ARGS_SIZE;
+    uint32_t plan_bytes = dm_frame.length - LINK_CMD_FIXED_SIZE - LINK_RENDER_ARGS_SIZE;
+    if (plan_bytes && (plan_bytes < LINK_INJECT_FIXED_SIZE || plan[0] > LINK_INJECT_MAX ||
+                       plan_bytes != (uint32_t)LINK_INJECT_SIZE(plan[0]))) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS,
+                       "CMD_RENDER: a fault plan of %u bytes: want 2 + 6 per entry, at most "
+                       "LINK_INJECT_MAX (%u) entries",
+                       (unsigned)plan_bytes, (unsigned)LINK_INJECT_MAX);
+        return;
+    }
     if (dm_scene.len == 0) {
         hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_RENDER: no scene loaded (CMD_SCENE_LOAD first)");
         return;
@@ -269,7 +294,8 @@ void dm_cmd_render(uint16_t cmd)
     dm_scene.prepared = -1; /* the block the DM holds now is the RC's old one */
     struct line_msg *m = &dm_msg;
     m->type = MSG_RENDER_FRAME;
-    m->len = 12;
+    m->len = (uint16_t)(12 + plan_bytes);
+    memcpy(m->payload + 12, plan, plan_bytes);
     wire_put_u32(m->payload, a.frame);
     wire_put_u8(m->payload + 4, a.balance);
     wire_put_u8(m->payload + 5, a.flags);

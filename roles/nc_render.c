@@ -12,6 +12,8 @@
 #include "kernel/cpu.h"
 #include "kernel/klog.h"
 #include "kernel/kmem.h"
+#include "kernel/panic.h"
+#include "kernel/task.h"
 #include "proto/hostlink.h"
 #include "proto/insn_mark.h"
 #include "proto/render_link.h"
@@ -20,6 +22,7 @@
 #include "render/blob.h"
 #include "render/clip.h"
 #include "roles/gigs.h"
+#include "roles/selftest.h"
 #include "roles/unitmsg.h"
 
 /* Per-NC state: each NC's own slot, indexed by core. */
@@ -97,18 +100,45 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, char *w
     return 0;
 }
 
-/* Renders one area and pushes its rows into the DC. */
+/* The test hook's failure (proto/render_link.h, enum link_inject_kind):
+ * this NC fails as a real one would, and says nothing about it. */
+static void nc_fail_on_purpose(uint8_t kind)
+{
+    switch (kind) {
+    case LINK_INJECT_UNDEF:
+        selftest_fault_now(FAULT_UNDEF);
+        break;
+    case LINK_INJECT_DATA_ABORT:
+        selftest_fault_now(FAULT_DATA_ABORT);
+        break;
+    case LINK_INJECT_HANG:
+        cpu_halt_forever(); /* interrupts off, halted word not set */
+    case LINK_INJECT_SILENT:
+        for (;;)
+            task_wait(task_event_mark(), 0);
+    }
+    klog("render: unknown fault kind %u injected: ignored", (unsigned)kind);
+}
+
+/* Renders one area and pushes its rows into the DC.  A fault planned for
+ * this area (MSG_NC_AREA of 20 bytes) comes after pushing that many rows. */
 static int nc_area(struct nc_job *job, const struct line_msg *m, char *why, size_t cap)
 {
     render_area_t a = {wire_get_u32(m->payload), wire_get_u32(m->payload + 4),
                        wire_get_u32(m->payload + 8), wire_get_u32(m->payload + 12)};
+    uint8_t inject = m->len >= 20 ? wire_get_u8(m->payload + 16) : 0;
+    uint32_t inject_row = m->len >= 20 ? wire_get_u16(m->payload + 18) : 0;
     render_status_t st = render_area(&job->ctx, &job->clip, &a, &job->opt, job->pixels);
     if (st != RENDER_OK) {
         fmt_snprintf(why, cap, "area %ux%u at (%u,%u): %s", (unsigned)a.w, (unsigned)a.h,
                      (unsigned)a.x, (unsigned)a.y, render_status_name(st));
         return -1;
     }
-    for (uint32_t r = 0; r < a.h; r++) {
+    for (uint32_t r = 0; r <= a.h; r++) {
+        if (inject && r == inject_row)
+            nc_fail_on_purpose(inject);
+        if (r == a.h)
+            break;
         const rgb8_t *row = job->pixels + (size_t)r * a.w;
         if (dc_push_span(a.x, a.y + r, (const uint8_t *)row, a.w) != DC_OK) {
             fmt_snprintf(why, cap, "data collector refused row %u of an area at x %u",
@@ -141,6 +171,8 @@ void nc_render_frame(struct line_msg *m)
             klog("render: line from the RC: %s", line_strerror(r));
             continue;
         }
+        if (m->type == MSG_NC_STOP && m->len >= 1)
+            nc_fail_on_purpose(wire_get_u8(m->payload)); /* the test hook */
         if (m->type == MSG_NC_STOP)
             break;
         if (m->type != MSG_NC_AREA || !ok) {
