@@ -23,7 +23,7 @@ test_fwcfg_ARITH := double
 # (64 NCs too, every mode x arithmetic x scene) is `make test-full`.
 BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
 	tests/board/render_anim.sh tests/board/render_refuse.sh tests/board/render_view.sh \
-	tests/board/render_spd.sh
+	tests/board/render_spd.sh tests/board/render_faults.sh tests/board/render_faults_silent.sh
 RENDER_FULL_TESTS := tests/board/render_grid_full.sh
 
 .PHONY: test-full
@@ -36,5 +36,5 @@ BENCHES += tests/bench/bench_render.sh tests/bench/bench_arith.sh tests/bench/be
 
 # Encodings of the rendering commands and the NC statistics the RC sums.
 HOST_TESTS += test_render_link
-test_render_link_SRCS := tests/host/test_render_link.c
+test_render_link_SRCS := tests/host/test_render_link.c host-tools/render_faults.c
 test_render_link_ARITH := float
