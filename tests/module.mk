@@ -24,7 +24,7 @@ test_fwcfg_ARITH := double
 BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
 	tests/board/render_anim.sh tests/board/render_refuse.sh tests/board/render_view.sh \
 	tests/board/render_spd.sh tests/board/render_faults.sh tests/board/render_faults_silent.sh
-RENDER_FULL_TESTS := tests/board/render_grid_full.sh
+RENDER_FULL_TESTS := tests/board/render_grid_full.sh tests/board/render_faults_full.sh
 
 .PHONY: test-full
 test-full: deps
