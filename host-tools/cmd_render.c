@@ -42,6 +42,9 @@ struct render_opts {
     uint8_t inject_kind;          /* --inject-kind */
     uint8_t plan[LINK_INJECT_SIZE(LINK_INJECT_MAX)];
     uint32_t plan_len;            /* 0 once sent (the first frame only) */
+    int unit_fault_core;          /* --inject-unit-fault: DM or RC core, -1: none */
+    long unit_fault_frame;
+    int resume;                   /* --resume: frames already written are kept */
 };
 
 static void render_usage(FILE *out)
@@ -71,6 +74,10 @@ static void render_usage(FILE *out)
             "  --inject-faults K[:SEED]  test hook: K random NCs (fewer than --ncs) fail at\n"
             "                   random points of the first frame; the frame still completes\n"
             "  --inject-kind KIND  undef, abort, hang, silent or mixed (default mixed)\n"
+            "  --inject-unit-fault dm|rc:FRAME  test hook: the DM or the RC faults while\n"
+            "                   frame FRAME renders (the run ends; see --resume)\n"
+            "  --resume         with --frames: keep the frames already written and render\n"
+            "                   the others, from the first not yet written\n"
             "  --timeout S      seconds to wait for every unit computer to report in\n"
             "  --firmware ELF   firmware to boot; --ram MB; --quiet\n",
             RENDER_DEFAULT_NCS, AREAS_DEFAULT_K);
@@ -95,6 +102,8 @@ enum render_opt_code {
     RENDER_OPT_COUNT_INSNS,
     RENDER_OPT_INJECT_FAULTS,
     RENDER_OPT_INJECT_KIND,
+    RENDER_OPT_INJECT_UNIT_FAULT,
+    RENDER_OPT_RESUME,
 };
 
 static const struct option render_options[] = {
@@ -117,6 +126,8 @@ static const struct option render_options[] = {
     {"count-insns", no_argument, NULL, RENDER_OPT_COUNT_INSNS},
     {"inject-faults", required_argument, NULL, RENDER_OPT_INJECT_FAULTS},
     {"inject-kind", required_argument, NULL, RENDER_OPT_INJECT_KIND},
+    {"inject-unit-fault", required_argument, NULL, RENDER_OPT_INJECT_UNIT_FAULT},
+    {"resume", no_argument, NULL, RENDER_OPT_RESUME},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -216,6 +227,19 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
         if (render_faults_kind_parse(c->arg, &o->inject_kind) != 0)
             return cli_bad_value(c, "undef, abort, hang, silent or mixed");
         return 0;
+    case RENDER_OPT_INJECT_UNIT_FAULT: {
+        char *end = NULL;
+        int dm = strncmp(c->arg, "dm:", 3) == 0, rc = strncmp(c->arg, "rc:", 3) == 0;
+        long f = (dm || rc) ? strtol(c->arg + 3, &end, 10) : -1;
+        if ((!dm && !rc) || end == c->arg + 3 || *end || f < 0)
+            return cli_bad_value(c, "dm:FRAME or rc:FRAME");
+        o->unit_fault_core = dm ? UNITS_DM_CORE : UNITS_RC_CORE;
+        o->unit_fault_frame = f;
+        return 0;
+    }
+    case RENDER_OPT_RESUME:
+        o->resume = 1;
+        return 0;
     }
     return -1; /* CLI_BAD: reported already */
 }
@@ -228,6 +252,7 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
     o->board.ncores = RENDER_DEFAULT_NCS + 2;
     o->args.balance = LINK_BALANCE_DECREASING;
     o->last = -1;
+    o->unit_fault_core = -1;
     scene_file_opts_init(&o->scene);
     struct cli c;
     cli_init(&c, "links1 render", argc, argv, "o:h", render_options);
@@ -255,6 +280,10 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
             fprintf(stderr, "links1 render: %s has no -o OUT\n", o->jobs[j].scene);
             return -1;
         }
+    }
+    if (o->resume && !o->many) {
+        fprintf(stderr, "links1 render: --resume goes with --frames A:B\n");
+        return -1;
     }
     unsigned ncs = (unsigned)o->board.ncores - UNITS_FIRST_NC;
     if (o->inject >= ncs && o->inject) {
@@ -307,6 +336,31 @@ static void render_summary(const char *path, const struct link_render_stats *s,
     fflush(stdout);
 }
 
+/* The fault plan of frame f into plan (the test hooks): the NCs' on the
+ * first frame rendered, the DM's or RC's on its frame.  Returns its bytes
+ * (0: none). */
+static uint32_t render_frame_plan(struct render_opts *o, long f,
+                                  uint8_t plan[LINK_INJECT_SIZE(LINK_INJECT_MAX + 1)])
+{
+    uint32_t n = 0;
+    if (o->plan_len) {
+        render_faults_print_plan(stdout, o->plan);
+        n = o->plan[0];
+        memcpy(plan, o->plan, o->plan_len);
+        o->plan_len = 0; /* the first frame only */
+    }
+    if (o->unit_fault_core >= 0 && f == o->unit_fault_frame) {
+        struct link_inject e = {(uint16_t)o->unit_fault_core, LINK_INJECT_UNDEF, 0, 1};
+        link_inject_put(plan + LINK_INJECT_SIZE(n), &e);
+        n++;
+        printf("links1 render: fault plan: the %s faults during frame %ld\n",
+               o->unit_fault_core == UNITS_DM_CORE ? "DM" : "RC", f);
+    }
+    plan[0] = (uint8_t)n;
+    plan[1] = 0;
+    return n ? LINK_INJECT_SIZE(n) : 0;
+}
+
 /* One scene on the running board: upload, every frame asked for. */
 static int render_job(struct board *b, struct render_opts *o, const struct render_job *j)
 {
@@ -328,6 +382,15 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
     }
     int ppm = o->ppm || scene_file_ends_with(j->out, ".ppm");
     for (long f = first; f <= last; f++) {
+        char path[4096], tmp[4096 + 16], err[SD_ERR_MAX];
+        if (o->many)
+            scene_file_frame_path(j->out, f, path, sizeof path);
+        else
+            snprintf(path, sizeof path, "%s", j->out);
+        if (o->resume && access(path, F_OK) == 0) {
+            printf("links1 render: frame %ld: %s is there already (--resume): kept\n", f, path);
+            continue;
+        }
         struct link_render_args a = o->args;
         a.frame = (uint32_t)f;
         if (f < last)
@@ -336,21 +399,21 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         struct link_render_stats s;
         struct link_render_fails fails;
         struct image img = {0, 0, NULL};
-        if (o->plan_len)
-            render_faults_print_plan(stdout, o->plan);
-        uint32_t plan_len = o->plan_len;
-        o->plan_len = 0; /* the first frame only */
-        if (render_session_frame(b, &a, isatty(2), o->plan, plan_len, &s, &fails) != 0 ||
+        uint8_t plan[LINK_INJECT_SIZE(LINK_INJECT_MAX + 1)];
+        uint32_t plan_len = render_frame_plan(o, f, plan);
+        if (render_session_frame(b, &a, isatty(2), plan, plan_len, &s, &fails) != 0 ||
             render_session_pull(b, &img) != 0)
             return -1;
         render_faults_print(stdout, a.frame, &fails);
-        char path[4096], err[SD_ERR_MAX];
-        if (o->many)
-            scene_file_frame_path(j->out, f, path, sizeof path);
-        else
-            snprintf(path, sizeof path, "%s", j->out);
-        rc = ppm ? image_write_ppm(path, &img, err, sizeof err)
-                 : image_write_png(path, &img, err, sizeof err);
+        /* Written whole or not at all: a run that dies leaves no half
+         * frame for --resume to keep. */
+        snprintf(tmp, sizeof tmp, "%s.part", path);
+        rc = ppm ? image_write_ppm(tmp, &img, err, sizeof err)
+                 : image_write_png(tmp, &img, err, sizeof err);
+        if (rc == 0 && rename(tmp, path) != 0) {
+            snprintf(err, sizeof err, "cannot rename the written frame to %.400s", path);
+            rc = -1;
+        }
         if (rc != 0) {
             fprintf(stderr, "links1 render: %s\n", err);
             image_free(&img);
@@ -388,9 +451,14 @@ int cmd_render(int argc, char **argv)
     if (board_start(&b, &o.board) == 0 &&
         board_wait_reported(&b, o.board.timeout_s * 1000) == 0) {
         rc = 0;
-        for (int j = 0; j < o.njobs; j++)
-            if (render_job(&b, &o, &o.jobs[j]) != 0)
-                rc = 1;
+        for (int j = 0; j < o.njobs; j++) {
+            if (render_job(&b, &o, &o.jobs[j]) == 0)
+                continue;
+            rc = 1;
+            if (render_faults_unit_down(b.faults, b.nfaults < BOARD_MAX_FAULTS
+                                                      ? b.nfaults : BOARD_MAX_FAULTS) >= 0)
+                break; /* no scene renders on a board without its DM or RC */
+        }
     }
     if (board_stop(&b) < 0)
         rc = 1;
@@ -402,8 +470,15 @@ int cmd_render(int argc, char **argv)
     for (int i = 0; i < b.nfaults && i < BOARD_MAX_FAULTS; i++)
         unit_faults += b.faults[i].role != ROLE_NC;
     if (b.nfaults > BOARD_MAX_FAULTS || unit_faults) {
-        fprintf(stderr, "links1 render: %d unit computer(s) faulted, %d of them DM or RC\n",
-                b.nfaults, unit_faults);
+        int down = render_faults_unit_down(b.faults, b.nfaults < BOARD_MAX_FAULTS
+                                                         ? b.nfaults : BOARD_MAX_FAULTS);
+        fprintf(stderr, "links1 render: %d unit computer(s) faulted, %d of them DM or RC", b.nfaults,
+                unit_faults);
+        if (down >= 0)
+            fprintf(stderr, ": the %s (core %u) failed, the board could not go on; the frames "
+                    "written are whole, and --resume renders the rest on a new board",
+                    b.faults[down].role == ROLE_DM ? "DM" : "RC", b.faults[down].core);
+        fprintf(stderr, "\n");
         rc = 1;
     } else if (b.nfaults) {
         printf("links1 render: %d NC(s) faulted; the frames were finished without them\n",

@@ -128,3 +128,11 @@ void render_faults_print(FILE *out, uint32_t frame, const struct link_render_fai
         fprintf(out, "; %u NC(s) out since earlier frames", f->failed_before);
     fprintf(out, "\n");
 }
+
+int render_faults_unit_down(const struct link_fault *faults, int n)
+{
+    for (int i = 0; i < n; i++)
+        if (faults[i].role == ROLE_DM || faults[i].role == ROLE_RC)
+            return i;
+    return -1;
+}

@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <stdio.h>
 
+#include "proto/hostlink.h"
 #include "proto/render_link.h"
 
 /* --inject-kind: one kind for every failing NC, or 0 for a random one each. */
@@ -25,6 +26,10 @@ uint32_t render_faults_plan(unsigned k, unsigned seed, uint8_t kind, unsigned nc
                             uint8_t out[LINK_INJECT_SIZE(LINK_INJECT_MAX)]);
 /* Prints the plan, one line. */
 void render_faults_print_plan(FILE *out, const uint8_t *plan);
+
+/* The first of n faults the board reported that is the DM's or the RC's
+ * (the board cannot render on then), or -1. */
+int render_faults_unit_down(const struct link_fault *faults, int n);
 
 /* Prints "NCs failed: ...; areas re-issued: ..." for a frame that lost
  * any NC; nothing otherwise. */

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "host-tools/render_faults.h"
 #include "proto/crc32.h"
 #include "proto/wire.h"
 
@@ -134,6 +135,14 @@ int render_session_frame(struct board *b, const struct link_render_args *a, int 
             if (board_pump(b, RENDER_PROGRESS_REDRAW_MS) < 0) {
                 fprintf(stderr, "\nlinks1: frame %u: the board stopped while rendering\n",
                         a->frame);
+                return -1;
+            }
+            int down = render_faults_unit_down(b->faults, b->nfaults < BOARD_MAX_FAULTS
+                                                              ? b->nfaults : BOARD_MAX_FAULTS);
+            if (down >= 0) {
+                fprintf(stderr, "\nlinks1: frame %u: the %s (core %u) failed while rendering\n",
+                        a->frame, b->faults[down].role == ROLE_DM ? "DM" : "RC",
+                        b->faults[down].core);
                 return -1;
             }
             continue;

@@ -24,6 +24,8 @@
 #include "render/limits.h"
 #include "roles/dm.h"
 #include "roles/gigs.h"
+#include "roles/selftest.h"
+#include "roles/unit.h"
 #include "roles/unitmsg.h"
 
 /* The scene the host loaded; len 0 = none. */
@@ -177,11 +179,16 @@ void dm_cmd_scene_load(uint16_t cmd)
     hostlink_result(cmd, LINK_OK, f, sizeof f);
 }
 
-/* Relays the RC's progress until MSG_RENDER_DONE arrives in m. */
+/* Relays the RC's progress until MSG_RENDER_DONE arrives in m.  Looks
+ * every GIGS_WATCH_MS whether the RC halted (LINE_ERR_NO_LINE then). */
 static int dm_await_frame(uint32_t frame, struct line_msg *m)
 {
     for (;;) {
-        int r = line_recv(UNITS_RC_CORE, m, 0);
+        int r = line_recv(UNITS_RC_CORE, m, ktime_deadline_ms(GIGS_WATCH_MS));
+        if (r == LINE_ERR_TIMEOUT && !unit_is_halted(UNITS_RC_CORE))
+            continue;
+        if (r == LINE_ERR_TIMEOUT)
+            return LINE_ERR_NO_LINE;
         if (r != LINE_OK)
             return r;
         if (m->type == MSG_RENDER_DONE)
@@ -311,7 +318,19 @@ void dm_cmd_render(uint16_t cmd)
      * error here is reported when that frame is asked for. */
     if ((a.flags & LINK_RENDER_PREPARE_NEXT) && a.frame + 1 < dm_scene.frames)
         (void)dm_prepare(a.frame + 1, &err);
+    /* The test hook: the DM's own planned failure, while the RC renders. */
+    for (uint32_t i = 0; i < (plan_bytes ? plan[0] : 0u); i++) {
+        struct link_inject e;
+        link_inject_get(plan + LINK_INJECT_FIXED_SIZE + i * LINK_INJECT_ENTRY_SIZE, &e);
+        if (e.core == UNITS_DM_CORE)
+            selftest_fail_on_purpose(e.kind);
+    }
     r = dm_await_frame(a.frame, m);
+    if (r == LINE_ERR_NO_LINE) {
+        hostlink_error(cmd, LINK_ERR_TIMEOUT, "frame %u: the RC (core %u) halted with a fault: "
+                       "the board cannot render on", (unsigned)a.frame, (unsigned)UNITS_RC_CORE);
+        return;
+    }
     if (r != LINE_OK) {
         hostlink_error(cmd, LINK_ERR_TIMEOUT, "CMD_RENDER: line from the RC: %s",
                        line_strerror(r));

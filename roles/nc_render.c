@@ -12,8 +12,6 @@
 #include "kernel/cpu.h"
 #include "kernel/klog.h"
 #include "kernel/kmem.h"
-#include "kernel/panic.h"
-#include "kernel/task.h"
 #include "proto/hostlink.h"
 #include "proto/insn_mark.h"
 #include "proto/render_link.h"
@@ -36,6 +34,7 @@ struct nc_job {
     int counting;       /* the plugin counts this NC from its first frame */
 };
 static struct nc_job nc_jobs[UNITS_MAX_CORES];
+volatile uint32_t gigs_nc_progress[UNITS_MAX_CORES];
 
 static void nc_send(struct line_msg *m)
 {
@@ -97,27 +96,8 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, char *w
     job->ctx.options.use_hierarchy = !(flags & LINK_RENDER_NO_HIERARCHY);
     job->opt.y_clip = !(flags & LINK_RENDER_NO_YCLIP);
     job->opt.x_clip = !(flags & LINK_RENDER_NO_XCLIP);
+    job->opt.progress = &gigs_nc_progress[mycpu()->core];
     return 0;
-}
-
-/* The test hook's failure (proto/render_link.h, enum link_inject_kind):
- * this NC fails as a real one would, and says nothing about it. */
-static void nc_fail_on_purpose(uint8_t kind)
-{
-    switch (kind) {
-    case LINK_INJECT_UNDEF:
-        selftest_fault_now(FAULT_UNDEF);
-        break;
-    case LINK_INJECT_DATA_ABORT:
-        selftest_fault_now(FAULT_DATA_ABORT);
-        break;
-    case LINK_INJECT_HANG:
-        cpu_halt_forever(); /* interrupts off, halted word not set */
-    case LINK_INJECT_SILENT:
-        for (;;)
-            task_wait(task_event_mark(), 0);
-    }
-    klog("render: unknown fault kind %u injected: ignored", (unsigned)kind);
 }
 
 /* Renders one area and pushes its rows into the DC.  A fault planned for
@@ -136,7 +116,7 @@ static int nc_area(struct nc_job *job, const struct line_msg *m, char *why, size
     }
     for (uint32_t r = 0; r <= a.h; r++) {
         if (inject && r == inject_row)
-            nc_fail_on_purpose(inject);
+            selftest_fail_on_purpose(inject);
         if (r == a.h)
             break;
         const rgb8_t *row = job->pixels + (size_t)r * a.w;
@@ -172,7 +152,7 @@ void nc_render_frame(struct line_msg *m)
             continue;
         }
         if (m->type == MSG_NC_STOP && m->len >= 1)
-            nc_fail_on_purpose(wire_get_u8(m->payload)); /* the test hook */
+            selftest_fail_on_purpose(wire_get_u8(m->payload)); /* the test hook */
         if (m->type == MSG_NC_STOP)
             break;
         if (m->type != MSG_NC_AREA || !ok) {

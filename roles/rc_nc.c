@@ -16,6 +16,7 @@
 #include "proto/wire.h"
 #include "roles/gigs.h"
 #include "roles/rc_run.h"
+#include "roles/selftest.h"
 #include "roles/unit.h"
 #include "roles/unitmsg.h"
 
@@ -53,8 +54,11 @@ void rc_nc_begin(struct rc_run *run, const uint8_t *plan, uint32_t n)
     for (uint32_t i = 0; i < n; i++) {
         struct link_inject e;
         link_inject_get(plan + i * LINK_INJECT_ENTRY_SIZE, &e);
-        if (e.core >= UNITS_FIRST_NC && e.core < board_ncores && !rc_nc_gone[e.core] &&
-            e.kind >= 1 && e.kind <= LINK_INJECT_KINDS)
+        if (e.kind < 1 || e.kind > LINK_INJECT_KINDS || e.core == UNITS_DM_CORE)
+            continue; /* the DM's is the DM's */
+        if (e.core == UNITS_RC_CORE)
+            run->self_inject = e;
+        else if (e.core < board_ncores && !rc_nc_gone[e.core])
             run->nc[e.core].inject = e;
         else
             klog("render: fault plan entry %u (core %u, kind %u) ignored", (unsigned)i,
@@ -107,11 +111,18 @@ static void rc_nc_lost(struct rc_run *run, uint32_t k, int by_watchdog)
     n->state = RC_NC_STOPPED;
 }
 
-/* 1 if NC n has been silent longer than the watchdog allows. */
-static int rc_nc_overdue(const struct rc_run *run, const struct rc_nc *n)
+/* 1 if NC k has been silent longer than the watchdog allows: past its
+ * deadline, and its progress word still for GIGS_WATCH_FLOOR_MS. */
+static int rc_nc_overdue(struct rc_run *run, uint32_t k)
 {
+    struct rc_nc *n = &run->nc[k];
     uint64_t now = ktime_now(), allow;
-    if (now <= n->since)
+    uint32_t p = gigs_nc_progress[k];
+    if (p != n->progress || n->moved < n->since) {
+        n->progress = p;
+        n->moved = now;
+    }
+    if (now <= n->since || now - n->moved <= ktime_ms_to_ticks(GIGS_WATCH_FLOOR_MS))
         return 0;
     switch (n->state) {
     case RC_NC_BUSY:
@@ -233,6 +244,8 @@ static void rc_nc_dispatch(struct rc_run *run, struct line_msg *m)
 
 int rc_nc_poll(struct rc_run *run, struct line_msg *m)
 {
+    if (run->self_inject.kind && run->done >= run->self_inject.area)
+        selftest_fail_on_purpose(run->self_inject.kind); /* the test hook */
     int moved = 0;
     for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
         struct rc_nc *n = &run->nc[k];
@@ -247,7 +260,7 @@ int rc_nc_poll(struct rc_run *run, struct line_msg *m)
             moved = 1;
             continue;
         }
-        if (rc_nc_overdue(run, n))
+        if (rc_nc_overdue(run, k))
             rc_nc_lost(run, k, 1);
     }
     rc_nc_dispatch(run, m);

@@ -6,8 +6,10 @@
  * kernel/fault.c, which the RC reads) or when the watchdog finds it silent
  * too long: holding an area for GIGS_WATCH_FACTOR times the area's
  * expected time plus GIGS_WATCH_FLOOR_MS, or not answering a start or a
- * stop within GIGS_WATCH_FLOOR_MS.  A failed NC is out for good: its broadcast
- * read is ended for it, the DC drops its later runs, the RC never writes to
+ * stop within GIGS_WATCH_FLOOR_MS, and in either case its progress word
+ * (gigs_nc_progress, +1 per pixel) standing still for GIGS_WATCH_FLOOR_MS:
+ * an area that costs more than expected is no failure while its pixels
+ * come.  A failed NC is out for good: its broadcast read is ended for it, the DC drops its later runs, the RC never writes to
  * it again, and the area it held goes to the next NC that asks.  An NC that
  * asks while nothing is left waits (parked) until the last busy NC is done:
  * an area may still come back. */
@@ -35,6 +37,8 @@ struct rc_nc {
     uint8_t state;       /* enum rc_nc_state */
     struct area area;    /* the area it holds (BUSY) */
     uint64_t since;      /* ticks: when it got its area, start or stop */
+    uint32_t progress;   /* its progress word when last looked at */
+    uint64_t moved;      /* ticks: when that word last changed */
     uint32_t given;      /* areas it got in this frame */
     struct link_inject inject; /* a planned failure (kind 0: none) */
 };
@@ -49,6 +53,8 @@ struct rc_run {
     render_stats_t stats;
     uint32_t nc_high_max, nc_private;
     struct link_render_fails fails;
+    struct link_inject self_inject; /* the RC's own planned failure (kind 0: none):
+                                     * once inject.area areas are done */
     int32_t status;                /* first error, LINK_OK if none */
     char why[LINE_MAX_PAYLOAD - 4];
 };
