@@ -40,8 +40,9 @@ struct render_opts {
     int ppm, count_insns;
     unsigned inject, inject_seed; /* --inject-faults K[:SEED] */
     uint8_t inject_kind;          /* --inject-kind */
-    uint8_t plan[LINK_INJECT_SIZE(LINK_INJECT_MAX)];
-    uint32_t plan_len;            /* 0 once sent (the first frame only) */
+    unsigned inject_every;        /* --inject-every F: K more every F frames */
+    uint8_t inject_taken[LINK_CORE_MAP_SIZE]; /* NCs already planned to fail */
+    long frames_done;             /* frames rendered in this run */
     int unit_fault_core;          /* --inject-unit-fault: DM or RC core, -1: none */
     long unit_fault_frame;
     int resume;                   /* --resume: frames already written are kept */
@@ -74,6 +75,7 @@ static void render_usage(FILE *out)
             "  --inject-faults K[:SEED]  test hook: K random NCs (fewer than --ncs) fail at\n"
             "                   random points of the first frame; the frame still completes\n"
             "  --inject-kind KIND  undef, abort, hang, silent or mixed (default mixed)\n"
+            "  --inject-every F K more NCs fail every F frames (of the NCs left)\n"
             "  --inject-unit-fault dm|rc:FRAME  test hook: the DM or the RC faults while\n"
             "                   frame FRAME renders (the run ends; see --resume)\n"
             "  --resume         with --frames: keep the frames already written and render\n"
@@ -103,6 +105,7 @@ enum render_opt_code {
     RENDER_OPT_INJECT_FAULTS,
     RENDER_OPT_INJECT_KIND,
     RENDER_OPT_INJECT_UNIT_FAULT,
+    RENDER_OPT_INJECT_EVERY,
     RENDER_OPT_RESUME,
 };
 
@@ -127,6 +130,7 @@ static const struct option render_options[] = {
     {"inject-faults", required_argument, NULL, RENDER_OPT_INJECT_FAULTS},
     {"inject-kind", required_argument, NULL, RENDER_OPT_INJECT_KIND},
     {"inject-unit-fault", required_argument, NULL, RENDER_OPT_INJECT_UNIT_FAULT},
+    {"inject-every", required_argument, NULL, RENDER_OPT_INJECT_EVERY},
     {"resume", no_argument, NULL, RENDER_OPT_RESUME},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
@@ -240,6 +244,11 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
     case RENDER_OPT_RESUME:
         o->resume = 1;
         return 0;
+    case RENDER_OPT_INJECT_EVERY:
+        if (cli_long(c, 10, 1, 1 << 20, &n) < 0)
+            return -1;
+        o->inject_every = (unsigned)n;
+        return 0;
     }
     return -1; /* CLI_BAD: reported already */
 }
@@ -291,8 +300,6 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
                 "(one must be left)\n", o->inject, ncs - 1, ncs);
         return -1;
     }
-    if (o->inject)
-        o->plan_len = render_faults_plan(o->inject, o->inject_seed, o->inject_kind, ncs, o->plan);
     return 0;
 }
 
@@ -337,17 +344,20 @@ static void render_summary(const char *path, const struct link_render_stats *s,
 }
 
 /* The fault plan of frame f into plan (the test hooks): the NCs' on the
- * first frame rendered, the DM's or RC's on its frame.  Returns its bytes
+ * first frame rendered (and every --inject-every frames), the DM's or RC's
+ * on its frame.  Returns its bytes
  * (0: none). */
 static uint32_t render_frame_plan(struct render_opts *o, long f,
                                   uint8_t plan[LINK_INJECT_SIZE(LINK_INJECT_MAX + 1)])
 {
     uint32_t n = 0;
-    if (o->plan_len) {
-        render_faults_print_plan(stdout, o->plan);
-        n = o->plan[0];
-        memcpy(plan, o->plan, o->plan_len);
-        o->plan_len = 0; /* the first frame only */
+    long k = o->frames_done++;
+    if (o->inject && (o->inject_every ? k % o->inject_every == 0 : k == 0)) {
+        unsigned ncs = (unsigned)o->board.ncores - UNITS_FIRST_NC;
+        render_faults_plan(o->inject, o->inject_seed + (unsigned)k, o->inject_kind, ncs,
+                           o->inject_taken, plan);
+        render_faults_print_plan(stdout, plan);
+        n = plan[0];
     }
     if (o->unit_fault_core >= 0 && f == o->unit_fault_frame) {
         struct link_inject e = {(uint16_t)o->unit_fault_core, LINK_INJECT_UNDEF, 0, 1};

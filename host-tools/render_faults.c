@@ -61,16 +61,22 @@ static uint32_t render_faults_next(uint32_t *s)
 }
 
 uint32_t render_faults_plan(unsigned k, unsigned seed, uint8_t kind, unsigned ncs,
+                            uint8_t taken[LINK_CORE_MAP_SIZE],
                             uint8_t out[LINK_INJECT_SIZE(LINK_INJECT_MAX)])
 {
     uint16_t cores[UNITS_MAX_CORES];
     uint32_t s = seed * 2654435761u + 0x9E3779B9u;
     if (s == 0)
         s = 1;
-    for (unsigned i = 0; i < ncs; i++)
-        cores[i] = (uint16_t)(UNITS_FIRST_NC + i);
+    unsigned left = 0;
+    for (unsigned i = 0; i < ncs && i < UNITS_MAX_CORES - UNITS_FIRST_NC; i++)
+        if (!link_core_map_has(taken, UNITS_FIRST_NC + i))
+            cores[left++] = (uint16_t)(UNITS_FIRST_NC + i);
     if (k > LINK_INJECT_MAX)
         k = LINK_INJECT_MAX;
+    if (k + 1 > left)
+        k = left ? left - 1 : 0;
+    ncs = left;
     out[0] = (uint8_t)k;
     out[1] = 0;
     for (unsigned i = 0; i < k; i++) {
@@ -78,6 +84,7 @@ uint32_t render_faults_plan(unsigned k, unsigned seed, uint8_t kind, unsigned nc
         uint16_t c = cores[j];
         cores[j] = cores[i];
         cores[i] = c;
+        link_core_map_set(taken, c);
         struct link_inject e;
         e.core = c;
         e.kind = kind != RENDER_FAULTS_MIXED ? kind

@@ -19,10 +19,13 @@ int render_faults_parse(const char *arg, unsigned *k, unsigned *seed);
 int render_faults_kind_parse(const char *name, uint8_t *kind);
 const char *render_faults_kind_name(uint8_t kind);
 
-/* The plan for k of the NCs 2..ncs+1 (k < ncs): LINK_INJECT_SIZE(k) bytes
- * into out.  Each failing NC, its point in the frame and (for kind
- * RENDER_FAULTS_MIXED) its kind are drawn from seed.  Returns the bytes. */
+/* The plan for k of the NCs 2..ncs+1 not marked in the core map taken
+ * (then marked there): LINK_INJECT_SIZE(k) bytes into out.  Each failing
+ * NC, its point in the frame and (for kind RENDER_FAULTS_MIXED) its kind
+ * are drawn from seed.  Fewer than k when fewer than k + 1 are left (one
+ * must stay).  Returns the bytes. */
 uint32_t render_faults_plan(unsigned k, unsigned seed, uint8_t kind, unsigned ncs,
+                            uint8_t taken[LINK_CORE_MAP_SIZE],
                             uint8_t out[LINK_INJECT_SIZE(LINK_INJECT_MAX)]);
 /* Prints the plan, one line. */
 void render_faults_print_plan(FILE *out, const uint8_t *plan);

@@ -132,8 +132,10 @@ static void render_link_inject_round_trip(void)
 static void render_faults_plan_distinct(void)
 {
     uint8_t p[LINK_INJECT_SIZE(LINK_INJECT_MAX)], q[sizeof p];
+    uint8_t taken[LINK_CORE_MAP_SIZE] = {0}, none[LINK_CORE_MAP_SIZE];
     unsigned ncs = 64, k = 63;
-    CHECK_EQ_INT(render_faults_plan(k, 5, RENDER_FAULTS_MIXED, ncs, p), LINK_INJECT_SIZE(k));
+    CHECK_EQ_INT(render_faults_plan(k, 5, RENDER_FAULTS_MIXED, ncs, taken, p),
+                 LINK_INJECT_SIZE(k));
     CHECK_EQ_INT(p[0], k);
     int seen[UNITS_MAX_CORES] = {0}, kinds[LINK_INJECT_KINDS + 1] = {0};
     for (unsigned i = 0; i < k; i++) {
@@ -148,12 +150,29 @@ static void render_faults_plan_distinct(void)
         CHECK(seen[c] <= 1);
     for (unsigned kd = 1; kd <= LINK_INJECT_KINDS; kd++)
         CHECK(kinds[kd] > 0); /* 63 draws: every kind comes up */
-    render_faults_plan(k, 5, RENDER_FAULTS_MIXED, ncs, q);
+    /* All but one are taken now: no more may fail. */
+    CHECK_EQ_INT(render_faults_plan(1, 5, RENDER_FAULTS_MIXED, ncs, taken, q),
+                 LINK_INJECT_SIZE(0));
+    memset(none, 0, sizeof none);
+    render_faults_plan(k, 5, RENDER_FAULTS_MIXED, ncs, none, q);
     CHECK(memcmp(p, q, LINK_INJECT_SIZE(k)) == 0);
-    render_faults_plan(k, 6, RENDER_FAULTS_MIXED, ncs, q);
+    memset(none, 0, sizeof none);
+    render_faults_plan(k, 6, RENDER_FAULTS_MIXED, ncs, none, q);
     CHECK(memcmp(p, q, LINK_INJECT_SIZE(k)) != 0);
-    render_faults_plan(1, 9, LINK_INJECT_HANG, 2, q);
+    memset(none, 0, sizeof none);
+    render_faults_plan(1, 9, LINK_INJECT_HANG, 2, none, q);
     CHECK_EQ_INT(q[LINK_INJECT_FIXED_SIZE + 2], LINK_INJECT_HANG);
+    /* Taken NCs are not planned again: 10 NCs, 3 then 3 then 3, all apart. */
+    memset(none, 0, sizeof none);
+    int hit[UNITS_MAX_CORES] = {0};
+    for (unsigned round = 0; round < 4; round++) {
+        uint32_t bytes = render_faults_plan(3, round, RENDER_FAULTS_MIXED, 10, none, q);
+        CHECK_EQ_INT(bytes, LINK_INJECT_SIZE(round < 3 ? 3 : 0));
+        for (unsigned i = 0; i < q[0]; i++)
+            hit[wire_get_u16(q + LINK_INJECT_FIXED_SIZE + i * LINK_INJECT_ENTRY_SIZE)]++;
+    }
+    for (unsigned c = 0; c < UNITS_MAX_CORES; c++)
+        CHECK(hit[c] <= 1);
     unsigned kk, seed;
     CHECK_EQ_INT(render_faults_parse("3:17", &kk, &seed), 0);
     CHECK(kk == 3 && seed == 17);
