@@ -46,6 +46,8 @@ void rc_nc_begin(struct rc_run *run, const uint8_t *plan, uint32_t n)
         if (rc_nc_gone[k]) {
             run->nc[k].state = RC_NC_OUT;
             run->fails.failed_before++;
+            /* One given up while only slow may have begun a read since. */
+            (void)imsu_bcast_read_abandon(&imsu_rc_ncs, k);
         } else {
             run->nc[k].state = RC_NC_IDLE;
             run->ncs++;
