@@ -106,7 +106,7 @@ int main(int argc, char **argv)
         render_ctx_init(&ctx, f);
         ctx.options.use_bounds = s >= 1;
         ctx.options.use_hierarchy = s >= 2;
-        render_clip_options_t opt = {s >= 3, s >= 4};
+        render_clip_options_t opt = {s >= 3, s >= 4, NULL};
         uint64_t y0 = clip.y_kept, x0 = clip.x_kept;
         img[s] = malloc(sizeof *img[s] * pixels);
         for (uint32_t y = 0; y < f->height; y += ah)

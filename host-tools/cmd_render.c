@@ -13,6 +13,7 @@
 #include "host-tools/board.h"
 #include "host-tools/insn_report.h"
 #include "host-tools/links1_cmds.h"
+#include "host-tools/render_faults.h"
 #include "host-tools/render_session.h"
 #include "host-tools/scene/image_io.h"
 #include "host-tools/scene/cli_args.h"
@@ -38,6 +39,14 @@ struct render_opts {
     struct scene_file_opts scene; /* --size, --max-depth, --refractionless */
     int ppm, count_insns;
     const char *board_name; /* --board NAME: a running named board */
+    unsigned inject, inject_seed; /* --inject-faults K[:SEED] */
+    uint8_t inject_kind;          /* --inject-kind */
+    unsigned inject_every;        /* --inject-every F: K more every F frames */
+    uint8_t inject_taken[LINK_CORE_MAP_SIZE]; /* NCs already planned to fail */
+    long frames_done;             /* frames rendered in this run */
+    int unit_fault_core;          /* --inject-unit-fault: DM or RC core, -1: none */
+    long unit_fault_frame;
+    int resume;                   /* --resume: frames already written are kept */
 };
 
 static void render_usage(FILE *out)
@@ -64,6 +73,14 @@ static void render_usage(FILE *out)
             "  --view           show the frame memory live (-device ramfb, a display)\n"
             "  --ppm            write PPM (also chosen by an OUT ending in .ppm)\n"
             "  --count-insns    count guest instructions per core and print them\n"
+            "  --inject-faults K[:SEED]  test hook: K random NCs (fewer than --ncs) fail at\n"
+            "                   random points of the first frame; the frame still completes\n"
+            "  --inject-kind KIND  undef, abort, hang, silent or mixed (default mixed)\n"
+            "  --inject-every F K more NCs fail every F frames (of the NCs left)\n"
+            "  --inject-unit-fault dm|rc:FRAME  test hook: the DM or the RC faults while\n"
+            "                   frame FRAME renders (the run ends; see --resume)\n"
+            "  --resume         with --frames: keep the frames already written and render\n"
+            "                   the others, from the first not yet written\n"
             "  --timeout S      seconds to wait for every unit computer to report in\n"
             "  --board NAME     render on the running board NAME (links1 board start); its\n"
             "                   cores and arithmetic are the board's\n"
@@ -91,6 +108,11 @@ enum render_opt_code {
     RENDER_OPT_PPM,
     RENDER_OPT_COUNT_INSNS,
     RENDER_OPT_BOARD,
+    RENDER_OPT_INJECT_FAULTS,
+    RENDER_OPT_INJECT_KIND,
+    RENDER_OPT_INJECT_UNIT_FAULT,
+    RENDER_OPT_INJECT_EVERY,
+    RENDER_OPT_RESUME,
 };
 
 static const struct option render_options[] = {
@@ -112,6 +134,11 @@ static const struct option render_options[] = {
     {"ppm", no_argument, NULL, RENDER_OPT_PPM},
     {"count-insns", no_argument, NULL, RENDER_OPT_COUNT_INSNS},
     {"board", required_argument, NULL, RENDER_OPT_BOARD},
+    {"inject-faults", required_argument, NULL, RENDER_OPT_INJECT_FAULTS},
+    {"inject-kind", required_argument, NULL, RENDER_OPT_INJECT_KIND},
+    {"inject-unit-fault", required_argument, NULL, RENDER_OPT_INJECT_UNIT_FAULT},
+    {"inject-every", required_argument, NULL, RENDER_OPT_INJECT_EVERY},
+    {"resume", no_argument, NULL, RENDER_OPT_RESUME},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -206,6 +233,32 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
     case RENDER_OPT_BOARD:
         o->board_name = c->arg;
         return 0;
+    case RENDER_OPT_INJECT_FAULTS:
+        if (render_faults_parse(c->arg, &o->inject, &o->inject_seed) != 0)
+            return cli_bad_value(c, "K[:SEED], K at most LINK_INJECT_MAX (128)");
+        return 0;
+    case RENDER_OPT_INJECT_KIND:
+        if (render_faults_kind_parse(c->arg, &o->inject_kind) != 0)
+            return cli_bad_value(c, "undef, abort, hang, silent or mixed");
+        return 0;
+    case RENDER_OPT_INJECT_UNIT_FAULT: {
+        char *end = NULL;
+        int dm = strncmp(c->arg, "dm:", 3) == 0, rc = strncmp(c->arg, "rc:", 3) == 0;
+        long f = (dm || rc) ? strtol(c->arg + 3, &end, 10) : -1;
+        if ((!dm && !rc) || end == c->arg + 3 || *end || f < 0)
+            return cli_bad_value(c, "dm:FRAME or rc:FRAME");
+        o->unit_fault_core = dm ? UNITS_DM_CORE : UNITS_RC_CORE;
+        o->unit_fault_frame = f;
+        return 0;
+    }
+    case RENDER_OPT_RESUME:
+        o->resume = 1;
+        return 0;
+    case RENDER_OPT_INJECT_EVERY:
+        if (cli_long(c, 10, 1, 1 << 20, &n) < 0)
+            return -1;
+        o->inject_every = (unsigned)n;
+        return 0;
     }
     return -1; /* CLI_BAD: reported already */
 }
@@ -218,6 +271,7 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
     o->board.ncores = RENDER_DEFAULT_NCS + 2;
     o->args.balance = LINK_BALANCE_DECREASING;
     o->last = -1;
+    o->unit_fault_core = -1;
     scene_file_opts_init(&o->scene);
     struct cli c;
     cli_init(&c, "links1 render", argc, argv, "o:h", render_options);
@@ -250,6 +304,16 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
             fprintf(stderr, "links1 render: %s has no -o OUT\n", o->jobs[j].scene);
             return -1;
         }
+    }
+    if (o->resume && !o->many) {
+        fprintf(stderr, "links1 render: --resume goes with --frames A:B\n");
+        return -1;
+    }
+    unsigned ncs = (unsigned)o->board.ncores - UNITS_FIRST_NC;
+    if (o->inject >= ncs && o->inject) {
+        fprintf(stderr, "links1 render: --inject-faults %u: at most %u of the %u NCs may fail "
+                "(one must be left)\n", o->inject, ncs - 1, ncs);
+        return -1;
     }
     return 0;
 }
@@ -296,8 +360,36 @@ static void render_summary(const char *path, const struct link_render_stats *s,
     fflush(stdout);
 }
 
+/* The fault plan of frame f into plan (the test hooks): the NCs' on the
+ * first frame rendered (and every --inject-every frames), the DM's or RC's
+ * on its frame.  Returns its bytes
+ * (0: none). */
+static uint32_t render_frame_plan(struct render_opts *o, long f,
+                                  uint8_t plan[LINK_INJECT_SIZE(LINK_INJECT_MAX + 1)])
+{
+    uint32_t n = 0;
+    long k = o->frames_done++;
+    if (o->inject && (o->inject_every ? k % o->inject_every == 0 : k == 0)) {
+        unsigned ncs = (unsigned)o->board.ncores - UNITS_FIRST_NC;
+        render_faults_plan(o->inject, o->inject_seed + (unsigned)k, o->inject_kind, ncs,
+                           o->inject_taken, plan);
+        render_faults_print_plan(stdout, plan);
+        n = plan[0];
+    }
+    if (o->unit_fault_core >= 0 && f == o->unit_fault_frame) {
+        struct link_inject e = {(uint16_t)o->unit_fault_core, LINK_INJECT_UNDEF, 0, 1};
+        link_inject_put(plan + LINK_INJECT_SIZE(n), &e);
+        n++;
+        printf("links1 render: fault plan: the %s faults during frame %ld\n",
+               o->unit_fault_core == UNITS_DM_CORE ? "DM" : "RC", f);
+    }
+    plan[0] = (uint8_t)n;
+    plan[1] = 0;
+    return n ? LINK_INJECT_SIZE(n) : 0;
+}
+
 /* One scene on the running board: upload, every frame asked for. */
-static int render_job(struct board *b, const struct render_opts *o, const struct render_job *j)
+static int render_job(struct board *b, struct render_opts *o, const struct render_job *j)
 {
     struct link_scene_info info;
     long long upload_ms = 0, pull_ms = 0;
@@ -318,22 +410,38 @@ static int render_job(struct board *b, const struct render_opts *o, const struct
     }
     int ppm = o->ppm || scene_file_ends_with(j->out, ".ppm");
     for (long f = first; f <= last; f++) {
+        char path[4096], tmp[4096 + 16], err[SD_ERR_MAX];
+        if (o->many)
+            scene_file_frame_path(j->out, f, path, sizeof path);
+        else
+            snprintf(path, sizeof path, "%s", j->out);
+        if (o->resume && access(path, F_OK) == 0) {
+            printf("links1 render: frame %ld: %s is there already (--resume): kept\n", f, path);
+            continue;
+        }
         struct link_render_args a = o->args;
         a.frame = (uint32_t)f;
         if (f < last)
             a.flags |= LINK_RENDER_PREPARE_NEXT;
         long long t0 = board_now_ms();
         struct link_render_stats s;
+        struct link_render_fails fails;
         struct image img = {0, 0, NULL};
-        if (render_session_frame(b, &a, isatty(2), &s) != 0 || render_session_pull(b, &img, &pull_ms) != 0)
+        uint8_t plan[LINK_INJECT_SIZE(LINK_INJECT_MAX + 1)];
+        uint32_t plan_len = render_frame_plan(o, f, plan);
+        if (render_session_frame(b, &a, isatty(2), plan, plan_len, &s, &fails) != 0 ||
+            render_session_pull(b, &img, &pull_ms) != 0)
             return -1;
-        char path[4096], err[SD_ERR_MAX];
-        if (o->many)
-            scene_file_frame_path(j->out, f, path, sizeof path);
-        else
-            snprintf(path, sizeof path, "%s", j->out);
-        rc = ppm ? image_write_ppm(path, &img, err, sizeof err)
-                 : image_write_png(path, &img, err, sizeof err);
+        render_faults_print(stdout, a.frame, &fails);
+        /* Written whole or not at all: a run that dies leaves no half
+         * frame for --resume to keep. */
+        snprintf(tmp, sizeof tmp, "%s.part", path);
+        rc = ppm ? image_write_ppm(tmp, &img, err, sizeof err)
+                 : image_write_png(tmp, &img, err, sizeof err);
+        if (rc == 0 && rename(tmp, path) != 0) {
+            snprintf(err, sizeof err, "cannot rename the written frame to %.400s", path);
+            rc = -1;
+        }
         if (rc != 0) {
             fprintf(stderr, "links1 render: %s\n", err);
             image_free(&img);
@@ -375,17 +483,38 @@ int cmd_render(int argc, char **argv)
                                 board_wait_reported(&b, o.board.timeout_s * 1000) : -1;
     if (up == 0) {
         rc = 0;
-        for (int j = 0; j < o.njobs; j++)
-            if (render_job(&b, &o, &o.jobs[j]) != 0)
-                rc = 1;
+        for (int j = 0; j < o.njobs; j++) {
+            if (render_job(&b, &o, &o.jobs[j]) == 0)
+                continue;
+            rc = 1;
+            if (render_faults_unit_down(b.faults, b.nfaults < BOARD_MAX_FAULTS
+                                                      ? b.nfaults : BOARD_MAX_FAULTS) >= 0)
+                break; /* no scene renders on a board without its DM or RC */
+        }
     }
     if (board_stop(&b) < 0)
         rc = 1;
     if (board_report_link_errors(&b))
         rc = 1;
-    if (b.nfaults) {
-        fprintf(stderr, "links1 render: %d unit computer(s) faulted\n", b.nfaults);
+    /* An NC that faulted is left out and its areas drawn by others (the
+     * frames above say so); a DM or RC fault ends the run. */
+    int unit_faults = 0;
+    for (int i = 0; i < b.nfaults && i < BOARD_MAX_FAULTS; i++)
+        unit_faults += b.faults[i].role != ROLE_NC;
+    if (b.nfaults > BOARD_MAX_FAULTS || unit_faults) {
+        int down = render_faults_unit_down(b.faults, b.nfaults < BOARD_MAX_FAULTS
+                                                         ? b.nfaults : BOARD_MAX_FAULTS);
+        fprintf(stderr, "links1 render: %d unit computer(s) faulted, %d of them DM or RC", b.nfaults,
+                unit_faults);
+        if (down >= 0)
+            fprintf(stderr, ": the %s (core %u) failed, the board could not go on; the frames "
+                    "written are whole, and --resume renders the rest on a new board",
+                    b.faults[down].role == ROLE_DM ? "DM" : "RC", b.faults[down].core);
+        fprintf(stderr, "\n");
         rc = 1;
+    } else if (b.nfaults) {
+        printf("links1 render: %d NC(s) faulted; the frames were finished without them\n",
+               b.nfaults);
     }
     if (o.count_insns) {
         if (insn_report_print(insn_path, o.board.ncores) < 0)

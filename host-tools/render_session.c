@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "host-tools/link_shared.h"
+#include "host-tools/render_faults.h"
 #include "proto/crc32.h"
 #include "proto/wire.h"
 
@@ -141,11 +142,17 @@ static void render_session_show(const struct link_progress *g, long long t0, int
 }
 
 int render_session_frame(struct board *b, const struct link_render_args *a, int progress,
-                         struct link_render_stats *stats)
+                         const uint8_t *plan, size_t plan_len, struct link_render_stats *stats,
+                         struct link_render_fails *fails)
 {
-    uint8_t args[LINK_RENDER_ARGS_SIZE];
+    uint8_t args[LINK_RENDER_ARGS_SIZE + LINK_INJECT_SIZE(LINK_INJECT_MAX)];
     link_render_args_put(args, a);
-    if (board_send_cmd(b, CMD_RENDER, args, sizeof args) < 0)
+    if (plan_len > sizeof args - LINK_RENDER_ARGS_SIZE)
+        plan_len = 0;
+    if (plan_len)
+        memcpy(args + LINK_RENDER_ARGS_SIZE, plan, plan_len);
+    memset(fails, 0, sizeof *fails);
+    if (board_send_cmd(b, CMD_RENDER, args, LINK_RENDER_ARGS_SIZE + plan_len) < 0)
         return -1;
     long long t0 = board_now_ms(), heard = t0, drawn = 0;
     struct link_progress last = {a->frame, 0, 0, 0, 0};
@@ -160,6 +167,14 @@ int render_session_frame(struct board *b, const struct link_render_args *a, int 
             if (board_pump(b, RENDER_PROGRESS_REDRAW_MS) < 0) {
                 fprintf(stderr, "\nlinks1: frame %u: the board stopped while rendering\n",
                         a->frame);
+                return -1;
+            }
+            int down = render_faults_unit_down(b->faults, b->nfaults < BOARD_MAX_FAULTS
+                                                              ? b->nfaults : BOARD_MAX_FAULTS);
+            if (down >= 0) {
+                fprintf(stderr, "\nlinks1: frame %u: the %s (core %u) failed while rendering\n",
+                        a->frame, b->faults[down].role == ROLE_DM ? "DM" : "RC",
+                        b->faults[down].core);
                 return -1;
             }
             continue;
@@ -195,6 +210,13 @@ int render_session_frame(struct board *b, const struct link_render_args *a, int 
             return -1;
         }
         link_render_stats_get(fields, stats);
+        if (n > LINK_RENDER_STATS_SIZE &&
+            link_render_fails_get(fields + LINK_RENDER_STATS_SIZE,
+                                  (uint32_t)(n - LINK_RENDER_STATS_SIZE), fails) != 0) {
+            fprintf(stderr, "links1: frame %u: the failure report of %zu bytes is cut short\n",
+                    a->frame, n - LINK_RENDER_STATS_SIZE);
+            return -1;
+        }
         return 0;
     }
 }

@@ -19,9 +19,12 @@ int render_session_load(struct board *b, const uint8_t *scene, size_t len,
                         struct link_scene_info *info, long long *upload_ms);
 
 /* CMD_RENDER; with progress set, a progress line on stderr (areas done of
- * total, elapsed, estimate) while the board renders. */
+ * total, elapsed, estimate) while the board renders.  plan: plan_len bytes
+ * of fault plan (proto/render_link.h) sent after the arguments, or NULL.
+ * fails: what the frame lost and got back (all 0 if nothing). */
 int render_session_frame(struct board *b, const struct link_render_args *a, int progress,
-                         struct link_render_stats *stats);
+                         const uint8_t *plan, size_t plan_len, struct link_render_stats *stats,
+                         struct link_render_fails *fails);
 
 /* CMD_FRAME_PULL on the path b->opts.link names, into img (malloc'ed;
  * image_free it); *pull_ms: from the command to the checked result. */

@@ -75,4 +75,14 @@
 /* Stack the NC's rendering needs besides RENDER_STACK_BYTES(max_depth):
  * render_area's frame and the NC's own calls. */
 #define GIGS_NC_STACK_MARGIN 1024
+/* The RC's watchdog over each NC (roles/rc_nc.c): an NC that holds an
+ * area longer than GIGS_WATCH_FACTOR times the area's expected time (its
+ * pixels times the slowest time per pixel of an area finished this frame)
+ * plus GIGS_WATCH_FLOOR_MS, or that does not answer a start or stop within
+ * GIGS_WATCH_FLOOR_MS, and whose progress word (+1 per pixel) has stood
+ * still for GIGS_WATCH_FLOOR_MS, has failed; its area goes to another NC.
+ * The floor covers an emulated core that the host did not run for a while. */
+#define GIGS_WATCH_FACTOR 4
+#define GIGS_WATCH_FLOOR_MS 3000
+#define GIGS_WATCH_FIRST_MS 20000 /* an area before any area finished */
 #endif

@@ -12,6 +12,7 @@
 
 #include <stdint.h>
 
+#include "proto/units.h"
 #include "proto/wire.h"
 
 /* CMD_SCENE_LOAD arguments: u32 bytes of the compiled scene that follow. */
@@ -50,6 +51,133 @@ struct link_render_args {
     uint32_t areas;   /* K: areas of the dynamic grid / smallest-area bound of
                          the decreasing schedule; 0 = the board's default */
 };
+
+/* CMD_RENDER may carry, after its LINK_RENDER_ARGS_SIZE bytes, a fault
+ * plan (a test hook, `links1 render --inject-faults`): u8 count, u8 0, then
+ * count entries of LINK_INJECT_ENTRY_SIZE.  Entry i makes NC core fail
+ * while it holds its area-th area of the frame, after pushing row * (h + 1)
+ * / 256 of the area's h rows (0: before any), or when told to stop if it
+ * gets fewer areas.  The RC carries the plan out by marking the messages it
+ * sends; it learns of the failure only as it would of a real one. */
+enum link_inject_kind {
+    LINK_INJECT_UNDEF = 1,      /* executes an undefined instruction */
+    LINK_INJECT_DATA_ABORT = 2, /* loads from an unmapped address */
+    LINK_INJECT_HANG = 3,       /* interrupts off, halts without a word */
+    LINK_INJECT_SILENT = 4,     /* stops answering, interrupts on */
+};
+#define LINK_INJECT_KINDS 4
+#define LINK_INJECT_MAX 128 /* entries in one plan */
+#define LINK_INJECT_FIXED_SIZE 2
+#define LINK_INJECT_ENTRY_SIZE 6
+#define LINK_INJECT_SIZE(n) (LINK_INJECT_FIXED_SIZE + (n) * LINK_INJECT_ENTRY_SIZE)
+struct link_inject {
+    uint16_t core;
+    uint8_t kind; /* enum link_inject_kind */
+    uint8_t row;  /* 0..255: how far into the area */
+    uint16_t area;/* the NC's how-manieth area of the frame (0 = its first) */
+};
+
+static inline void link_inject_put(uint8_t *p, const struct link_inject *e)
+{
+    wire_put_u16(p, e->core);
+    wire_put_u8(p + 2, e->kind);
+    wire_put_u8(p + 3, e->row);
+    wire_put_u16(p + 4, e->area);
+}
+static inline void link_inject_get(const uint8_t *p, struct link_inject *e)
+{
+    e->core = wire_get_u16(p);
+    e->kind = wire_get_u8(p + 2);
+    e->row = wire_get_u8(p + 3);
+    e->area = wire_get_u16(p + 4);
+}
+
+/* What the frame lost and got back: may follow the CMD_RENDER result's
+ * LINK_RENDER_STATS_SIZE bytes (and the RC's MSG_RENDER_DONE, which the DM
+ * passes on).  u16 NCs failed in this frame, u16 areas re-issued, u16 NCs
+ * failed before (left out of this frame), u16 0, a bitmap of the cores that
+ * failed in this frame, a bitmap of those of them the watchdog caught (the
+ * rest halted with a fault), then min(re-issued, LINK_REISSUE_LIST_MAX)
+ * entries: u16 core that failed, u16 x, y, w, h of its area. */
+#define LINK_CORE_MAP_SIZE (UNITS_MAX_CORES / 8)
+#define LINK_REISSUE_LIST_MAX 48
+#define LINK_REISSUE_ENTRY_SIZE 10
+#define LINK_RENDER_FAILS_FIXED (8 + 2 * LINK_CORE_MAP_SIZE)
+#define LINK_RENDER_FAILS_SIZE(n) (LINK_RENDER_FAILS_FIXED + (n) * LINK_REISSUE_ENTRY_SIZE)
+struct link_render_fails {
+    uint16_t failed, reissued, failed_before;
+    uint8_t failed_map[LINK_CORE_MAP_SIZE];
+    uint8_t watchdog_map[LINK_CORE_MAP_SIZE];
+    struct link_reissue {
+        uint16_t core, x, y, w, h;
+    } area[LINK_REISSUE_LIST_MAX];
+};
+
+static inline int link_core_map_has(const uint8_t *map, uint32_t core)
+{
+    return core < UNITS_MAX_CORES && (map[core / 8] >> (core % 8)) & 1u;
+}
+static inline void link_core_map_set(uint8_t *map, uint32_t core)
+{
+    if (core < UNITS_MAX_CORES)
+        map[core / 8] = (uint8_t)(map[core / 8] | (1u << (core % 8)));
+}
+
+/* Bytes link_render_fails_put writes. */
+static inline uint32_t link_render_fails_size(const struct link_render_fails *f)
+{
+    uint32_t n = f->reissued < LINK_REISSUE_LIST_MAX ? f->reissued : LINK_REISSUE_LIST_MAX;
+    return LINK_RENDER_FAILS_SIZE(n);
+}
+static inline uint32_t link_render_fails_put(uint8_t *p, const struct link_render_fails *f)
+{
+    wire_put_u16(p, f->failed);
+    wire_put_u16(p + 2, f->reissued);
+    wire_put_u16(p + 4, f->failed_before);
+    wire_put_u16(p + 6, 0);
+    for (uint32_t i = 0; i < LINK_CORE_MAP_SIZE; i++) {
+        p[8 + i] = f->failed_map[i];
+        p[8 + LINK_CORE_MAP_SIZE + i] = f->watchdog_map[i];
+    }
+    uint32_t n = f->reissued < LINK_REISSUE_LIST_MAX ? f->reissued : LINK_REISSUE_LIST_MAX;
+    uint8_t *q = p + LINK_RENDER_FAILS_FIXED;
+    for (uint32_t i = 0; i < n; i++, q += LINK_REISSUE_ENTRY_SIZE) {
+        const struct link_reissue *a = &f->area[i];
+        wire_put_u16(q, a->core);
+        wire_put_u16(q + 2, a->x);
+        wire_put_u16(q + 4, a->y);
+        wire_put_u16(q + 6, a->w);
+        wire_put_u16(q + 8, a->h);
+    }
+    return LINK_RENDER_FAILS_SIZE(n);
+}
+/* 0, or -1 if len bytes cannot hold what the header announces. */
+static inline int link_render_fails_get(const uint8_t *p, uint32_t len,
+                                        struct link_render_fails *f)
+{
+    if (len < LINK_RENDER_FAILS_FIXED)
+        return -1;
+    f->failed = wire_get_u16(p);
+    f->reissued = wire_get_u16(p + 2);
+    f->failed_before = wire_get_u16(p + 4);
+    for (uint32_t i = 0; i < LINK_CORE_MAP_SIZE; i++) {
+        f->failed_map[i] = p[8 + i];
+        f->watchdog_map[i] = p[8 + LINK_CORE_MAP_SIZE + i];
+    }
+    uint32_t n = f->reissued < LINK_REISSUE_LIST_MAX ? f->reissued : LINK_REISSUE_LIST_MAX;
+    if (len < LINK_RENDER_FAILS_SIZE(n))
+        return -1;
+    const uint8_t *q = p + LINK_RENDER_FAILS_FIXED;
+    for (uint32_t i = 0; i < n; i++, q += LINK_REISSUE_ENTRY_SIZE) {
+        struct link_reissue *a = &f->area[i];
+        a->core = wire_get_u16(q);
+        a->x = wire_get_u16(q + 2);
+        a->y = wire_get_u16(q + 4);
+        a->w = wire_get_u16(q + 6);
+        a->h = wire_get_u16(q + 8);
+    }
+    return 0;
+}
 
 /* LINK_PROGRESS payload. */
 #define LINK_PROGRESS_SIZE 20

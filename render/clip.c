@@ -146,6 +146,8 @@ render_status_t render_area(render_ctx_t *ctx, render_clip_t *clip, const render
                 c = render_pixel_clipped(ctx, px, py, clip->ylist, clip->ycount);
             }
             row[px - area->x] = c;
+            if (opt->progress)
+                *opt->progress += 1;
         }
     }
     return RENDER_OK;

@@ -54,6 +54,8 @@ typedef struct {
     uint8_t y_clip; /* 1: Y clipping per area; 0: every cluster with a
                        rectangle, sorted the same way */
     uint8_t x_clip; /* 1: X clipping per pixel; 0: the whole Y list */
+    volatile uint32_t *progress; /* if set, +1 per pixel done: whoever watches
+                                    for a stalled renderer reads it */
 } render_clip_options_t;
 
 /* Working-set bytes an NC needs for this frame's clipping. */

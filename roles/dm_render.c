@@ -24,6 +24,8 @@
 #include "render/limits.h"
 #include "roles/dm.h"
 #include "roles/gigs.h"
+#include "roles/selftest.h"
+#include "roles/unit.h"
 #include "roles/unitmsg.h"
 
 /* The scene the host loaded; len 0 = none. */
@@ -193,11 +195,16 @@ void dm_cmd_scene_load(uint16_t cmd)
     hostlink_result(cmd, LINK_OK, f, sizeof f);
 }
 
-/* Relays the RC's progress until MSG_RENDER_DONE arrives in m. */
+/* Relays the RC's progress until MSG_RENDER_DONE arrives in m.  Looks
+ * every GIGS_WATCH_MS whether the RC halted (LINE_ERR_NO_LINE then). */
 static int dm_await_frame(uint32_t frame, struct line_msg *m)
 {
     for (;;) {
-        int r = line_recv(UNITS_RC_CORE, m, 0);
+        int r = line_recv(UNITS_RC_CORE, m, ktime_deadline_ms(GIGS_WATCH_MS));
+        if (r == LINE_ERR_TIMEOUT && !unit_is_halted(UNITS_RC_CORE))
+            continue;
+        if (r == LINE_ERR_TIMEOUT)
+            return LINE_ERR_NO_LINE;
         if (r != LINE_OK)
             return r;
         if (m->type == MSG_RENDER_DONE)
@@ -241,10 +248,24 @@ static void dm_render_result(uint16_t cmd, uint32_t frame, uint32_t prepare_ms,
     s.primary_prim_tests = rs.primary_prim_tests;
     s.precision_lost_pixels = rs.precision_lost_pixels;
     s.dm_high = (uint32_t)kmem_high_water();
-    uint8_t f[LINK_RENDER_STATS_SIZE];
+    uint8_t f[LINK_RENDER_STATS_SIZE + LINK_RENDER_FAILS_SIZE(LINK_REISSUE_LIST_MAX)];
     link_render_stats_put(f, &s);
-    hostlink_result(cmd, LINK_OK, f, sizeof f);
+    /* What the frame lost and got back: passed on as the RC wrote it. */
+    uint32_t extra = m->len > 4 + GIGS_RESULT_SIZE ? m->len - 4 - GIGS_RESULT_SIZE : 0;
+    if (extra > sizeof f - LINK_RENDER_STATS_SIZE)
+        extra = sizeof f - LINK_RENDER_STATS_SIZE;
+    memcpy(f + LINK_RENDER_STATS_SIZE, q + GIGS_RESULT_SIZE, extra);
+    hostlink_result(cmd, LINK_OK, f, LINK_RENDER_STATS_SIZE + extra);
 }
+
+_Static_assert(12 + LINK_INJECT_SIZE(LINK_INJECT_MAX) <= LINE_MAX_PAYLOAD,
+               "a full fault plan must fit MSG_RENDER_FRAME");
+_Static_assert(4 + GIGS_RESULT_SIZE + LINK_RENDER_FAILS_SIZE(LINK_REISSUE_LIST_MAX) <=
+                   LINE_MAX_PAYLOAD,
+               "the failures must fit MSG_RENDER_DONE");
+_Static_assert(LINK_RESULT_FIXED_SIZE + LINK_RENDER_STATS_SIZE +
+                   LINK_RENDER_FAILS_SIZE(LINK_REISSUE_LIST_MAX) <= LINK_MAX_PAYLOAD,
+               "the failures must fit the CMD_RENDER result");
 
 void dm_cmd_render(uint16_t cmd)
 {
@@ -256,6 +277,17 @@ void dm_cmd_render(uint16_t cmd)
     }
     struct link_render_args a;
     link_render_args_get(dm_frame.payload + LINK_CMD_FIXED_SIZE, &a);
+    /* The test hook's fault plan, if any, goes to the RC as it came. */
+    const uint8_t *plan = dm_frame.payload + LINK_CMD_FIXED_SIZE + LINK_RENDER_ARGS_SIZE;
+    uint32_t plan_bytes = dm_frame.length - LINK_CMD_FIXED_SIZE - LINK_RENDER_ARGS_SIZE;
+    if (plan_bytes && (plan_bytes < LINK_INJECT_FIXED_SIZE || plan[0] > LINK_INJECT_MAX ||
+                       plan_bytes != (uint32_t)LINK_INJECT_SIZE(plan[0]))) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS,
+                       "CMD_RENDER: a fault plan of %u bytes: want 2 + 6 per entry, at most "
+                       "LINK_INJECT_MAX (%u) entries",
+                       (unsigned)plan_bytes, (unsigned)LINK_INJECT_MAX);
+        return;
+    }
     if (dm_scene.len == 0) {
         hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_RENDER: no scene loaded (CMD_SCENE_LOAD first)");
         return;
@@ -286,7 +318,8 @@ void dm_cmd_render(uint16_t cmd)
     dm_scene.prepared = -1; /* the block the DM holds now is the RC's old one */
     struct line_msg *m = &dm_msg;
     m->type = MSG_RENDER_FRAME;
-    m->len = 12;
+    m->len = (uint16_t)(12 + plan_bytes);
+    memcpy(m->payload + 12, plan, plan_bytes);
     wire_put_u32(m->payload, a.frame);
     wire_put_u8(m->payload + 4, a.balance);
     wire_put_u8(m->payload + 5, a.flags);
@@ -302,7 +335,19 @@ void dm_cmd_render(uint16_t cmd)
      * error here is reported when that frame is asked for. */
     if ((a.flags & LINK_RENDER_PREPARE_NEXT) && a.frame + 1 < dm_scene.frames)
         (void)dm_prepare(a.frame + 1, &err);
+    /* The test hook: the DM's own planned failure, while the RC renders. */
+    for (uint32_t i = 0; i < (plan_bytes ? plan[0] : 0u); i++) {
+        struct link_inject e;
+        link_inject_get(plan + LINK_INJECT_FIXED_SIZE + i * LINK_INJECT_ENTRY_SIZE, &e);
+        if (e.core == UNITS_DM_CORE)
+            selftest_fail_on_purpose(e.kind);
+    }
     r = dm_await_frame(a.frame, m);
+    if (r == LINE_ERR_NO_LINE) {
+        hostlink_error(cmd, LINK_ERR_TIMEOUT, "frame %u: the RC (core %u) halted with a fault: "
+                       "the board cannot render on", (unsigned)a.frame, (unsigned)UNITS_RC_CORE);
+        return;
+    }
     if (r != LINE_OK) {
         hostlink_error(cmd, LINK_ERR_TIMEOUT, "CMD_RENDER: line from the RC: %s",
                        line_strerror(r));

@@ -71,6 +71,11 @@ void rc_collect_task(void *arg);
  * MSG_RENDER_FRAME: the line's message order makes the pixels visible. */
 const struct fm *rc_render_fm(void);
 
+/* Each NC's progress word: +1 per pixel it renders (render_clip_options_t
+ * progress), read by the RC's watchdog (roles/rc_nc.c), which gives up an
+ * NC only when its word has also stood still for GIGS_WATCH_FLOOR_MS. */
+extern volatile uint32_t gigs_nc_progress[UNITS_MAX_CORES];
+
 /* NC: renders areas until MSG_NC_STOP (m holds MSG_NC_START). */
 void nc_render_frame(struct line_msg *m);
 

@@ -1,6 +1,6 @@
 # roles/: the programs of the unit computers (DM, RC, NC).
 FW_SRCS += roles/unit.c roles/dm.c roles/dm_checks.c roles/dm_transfer.c roles/dm_bulk.c roles/rc.c roles/nc.c roles/selftest.c \
-	roles/dm_render.c roles/rc_render.c roles/nc_render.c
+	roles/dm_render.c roles/rc_render.c roles/rc_nc.c roles/nc_render.c
 
 # Board tests of the firmware (tests/board/fw_*.sh).
 BOARD_TESTS += tests/board/fw_board.sh tests/board/fw_smp256.sh tests/board/fw_variants.sh

@@ -20,6 +20,7 @@
 #include "render/blob.h"
 #include "render/clip.h"
 #include "roles/gigs.h"
+#include "roles/selftest.h"
 #include "roles/unitmsg.h"
 
 /* Per-NC state: each NC's own slot, indexed by core. */
@@ -33,6 +34,7 @@ struct nc_job {
     int counting;       /* the plugin counts this NC from its first frame */
 };
 static struct nc_job nc_jobs[UNITS_MAX_CORES];
+volatile uint32_t gigs_nc_progress[UNITS_MAX_CORES];
 
 static void nc_send(struct line_msg *m)
 {
@@ -94,21 +96,29 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, char *w
     job->ctx.options.use_hierarchy = !(flags & LINK_RENDER_NO_HIERARCHY);
     job->opt.y_clip = !(flags & LINK_RENDER_NO_YCLIP);
     job->opt.x_clip = !(flags & LINK_RENDER_NO_XCLIP);
+    job->opt.progress = &gigs_nc_progress[mycpu()->core];
     return 0;
 }
 
-/* Renders one area and pushes its rows into the DC. */
+/* Renders one area and pushes its rows into the DC.  A fault planned for
+ * this area (MSG_NC_AREA of 20 bytes) comes after pushing that many rows. */
 static int nc_area(struct nc_job *job, const struct line_msg *m, char *why, size_t cap)
 {
     render_area_t a = {wire_get_u32(m->payload), wire_get_u32(m->payload + 4),
                        wire_get_u32(m->payload + 8), wire_get_u32(m->payload + 12)};
+    uint8_t inject = m->len >= 20 ? wire_get_u8(m->payload + 16) : 0;
+    uint32_t inject_row = m->len >= 20 ? wire_get_u16(m->payload + 18) : 0;
     render_status_t st = render_area(&job->ctx, &job->clip, &a, &job->opt, job->pixels);
     if (st != RENDER_OK) {
         fmt_snprintf(why, cap, "area %ux%u at (%u,%u): %s", (unsigned)a.w, (unsigned)a.h,
                      (unsigned)a.x, (unsigned)a.y, render_status_name(st));
         return -1;
     }
-    for (uint32_t r = 0; r < a.h; r++) {
+    for (uint32_t r = 0; r <= a.h; r++) {
+        if (inject && r == inject_row)
+            selftest_fail_on_purpose(inject);
+        if (r == a.h)
+            break;
         const rgb8_t *row = job->pixels + (size_t)r * a.w;
         if (dc_push_span(a.x, a.y + r, (const uint8_t *)row, a.w) != DC_OK) {
             fmt_snprintf(why, cap, "data collector refused row %u of an area at x %u",
@@ -141,6 +151,8 @@ void nc_render_frame(struct line_msg *m)
             klog("render: line from the RC: %s", line_strerror(r));
             continue;
         }
+        if (m->type == MSG_NC_STOP && m->len >= 1)
+            selftest_fail_on_purpose(wire_get_u8(m->payload)); /* the test hook */
         if (m->type == MSG_NC_STOP)
             break;
         if (m->type != MSG_NC_AREA || !ok) {

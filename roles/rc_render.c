@@ -21,6 +21,7 @@
 #include "render/blob.h"
 #include "proto/areas.h"
 #include "roles/gigs.h"
+#include "roles/rc_run.h"
 #include "roles/unit.h"
 #include "roles/unitmsg.h"
 
@@ -30,31 +31,23 @@ static struct {
     int have_fm;         /* fm holds a finished frame (for CMD_FRAME_PULL) */
     uint32_t pixels;     /* pixels of the frame */
     volatile int active; /* the collector should fill fm */
-    volatile int filled; /* the collector saw every pixel arrive */
+    volatile int finishing; /* no NC will push again: take the rest */
+    volatile int filled; /* the collector took the rest */
+    uint32_t given_up;   /* DC positions a failed NC claimed, never filled */
     size_t mark;         /* kmem mark before the frame's memory */
     int marked;
     int ramfb_absent;    /* no -device ramfb: not asked again */
     uint32_t shown_w, shown_h; /* the size ramfb was last told (0: never) */
 } rc_frame;
 
-/* Per-NC state of the area hand-out. */
-enum rc_nc_state { RC_NC_IDLE = 0, RC_NC_BUSY, RC_NC_STOPPING, RC_NC_STOPPED };
-
-struct rc_run {
-    struct areas sched;
-    uint32_t total, done, ncs;
-    uint8_t state[UNITS_MAX_CORES];
-    render_stats_t stats;
-    uint32_t nc_high_max, nc_private;
-    int32_t status;                /* first error, LINK_OK if none */
-    char why[LINE_MAX_PAYLOAD - 4];
-};
-
 const struct fm *rc_render_fm(void)
 {
     return rc_frame.have_fm ? &rc_frame.fm : NULL;
 }
 
+/* Collects the DC into the frame memory while the frame is active; once
+ * the area task says no NC will push again, takes what is left (giving up
+ * what a failed NC claimed and never filled) and says so. */
 void rc_collect_task(void *arg)
 {
     (void)arg;
@@ -64,69 +57,14 @@ void rc_collect_task(void *arg)
             task_wait(mark, 0);
             continue;
         }
-        while (rc_frame.active &&
-               rc_frame.fm.pixels_written + rc_frame.fm.runs_refused < rc_frame.pixels)
-            dc_collect_wait(&rc_frame.fm, ktime_deadline_ms(GIGS_WATCH_MS));
-        rc_frame.filled = 1;
-        task_signal_local(); /* the area task waits for this */
+        if (rc_frame.finishing) {
+            rc_frame.given_up = dc_collect_final(&rc_frame.fm);
+            rc_frame.filled = 1;
+            task_signal_local(); /* the area task waits for this */
+            continue;
+        }
+        dc_collect_until(&rc_frame.fm, ktime_deadline_ms(GIGS_WATCH_MS), &rc_frame.finishing);
     }
-}
-
-__attribute__((format(printf, 3, 0)))
-static void rc_fail(struct rc_run *run, int32_t status, const char *fmt, uint32_t a, uint32_t b)
-{
-    if (run->status != LINK_OK)
-        return;
-    run->status = status;
-    fmt_snprintf(run->why, sizeof run->why, fmt, (unsigned)a, (unsigned)b);
-}
-
-static void rc_send_nc(uint32_t nc, struct line_msg *m)
-{
-    int r = line_send(nc, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
-    if (r != LINE_OK)
-        klog("render: send of message %u to NC %u: %s", (unsigned)m->type, (unsigned)nc,
-             line_strerror(r));
-}
-
-/* Answers one NC's message: the next area, or stop. */
-static void rc_on_nc(struct rc_run *run, uint32_t nc, struct line_msg *m)
-{
-    if (m->type == MSG_NC_STOPPED) {
-        run->state[nc] = RC_NC_STOPPED;
-        uint32_t high = wire_get_u32(m->payload);
-        if (high > run->nc_high_max)
-            run->nc_high_max = high;
-        gigs_stats_add(&run->stats, m->payload + 4);
-        return;
-    }
-    if (m->type != MSG_NC_REQ) {
-        klog("render: unexpected message %u from NC %u", (unsigned)m->type, (unsigned)nc);
-        return;
-    }
-    int32_t st = (int32_t)wire_get_u32(m->payload);
-    if (st != 0 && run->status == LINK_OK) {
-        run->status = st;
-        fmt_snprintf(run->why, sizeof run->why, "NC %u: %.*s", (unsigned)nc,
-                     (int)(m->len - 4), (const char *)m->payload + 4);
-    }
-    if (run->state[nc] == RC_NC_BUSY)
-        run->done++;
-    struct area a;
-    if (run->status == LINK_OK && areas_next(&run->sched, &a)) {
-        m->type = MSG_NC_AREA;
-        m->len = 16;
-        wire_put_u32(m->payload, a.x);
-        wire_put_u32(m->payload + 4, a.y);
-        wire_put_u32(m->payload + 8, a.w);
-        wire_put_u32(m->payload + 12, a.h);
-        run->state[nc] = RC_NC_BUSY;
-    } else {
-        m->type = MSG_NC_STOP;
-        m->len = 0;
-        run->state[nc] = RC_NC_STOPPING;
-    }
-    rc_send_nc(nc, m);
 }
 
 static void rc_progress(const struct rc_run *run, struct line_msg *m)
@@ -135,41 +73,33 @@ static void rc_progress(const struct rc_run *run, struct line_msg *m)
     m->len = 16;
     wire_put_u32(m->payload, run->done);
     wire_put_u32(m->payload + 4, run->total);
-    wire_put_u32(m->payload + 8, rc_frame.fm.pixels_written);
+    /* Rows a failed NC sent are written again by the NC given its area:
+     * the count may pass the frame's pixels. */
+    uint32_t written = rc_frame.fm.pixels_written;
+    wire_put_u32(m->payload + 8, written < rc_frame.pixels ? written : rc_frame.pixels);
     wire_put_u32(m->payload + 12, rc_frame.pixels);
     line_send(UNITS_DM_CORE, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
 }
 
-/* Serves every NC's line until all have stopped and (unless a problem
- * stopped the frame) every pixel is in the frame memory.  Sleeps between
- * messages; wakes at least every GIGS_WATCH_MS to look for halted NCs. */
+/* Serves every NC's line until all have stopped or failed, then (unless a
+ * problem stopped the frame) until the collector has taken every pixel.
+ * Sleeps between messages; wakes at least every GIGS_WATCH_MS to look for
+ * failed NCs. */
 static void rc_serve(struct rc_run *run, struct line_msg *m)
 {
     uint64_t next_progress = ktime_deadline_ms(GIGS_PROGRESS_MS);
     uint32_t reported = 0, reported_px = 0;
     for (;;) {
         uint32_t mark = task_event_mark();
-        int busy = 0, moved = 0;
-        for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
-            if (run->state[k] == RC_NC_STOPPED)
-                continue;
-            busy = 1;
-            if (unit_is_halted(k)) {
-                rc_fail(run, LINK_ERR_TIMEOUT, "NC %u halted (fault) during the frame; %u areas "
-                        "were done", k, run->done);
-                run->state[k] = RC_NC_STOPPED;
-                continue;
+        int moved = rc_nc_poll(run, m);
+        if (rc_nc_all_stopped(run)) {
+            if (!rc_frame.finishing) {
+                rc_frame.finishing = 1;
+                task_signal_local();
             }
-            if (!line_recv_ready_arm(k))
-                continue;
-            if (line_try_recv(k, m) == LINE_OK) {
-                rc_on_nc(run, k, m);
-                moved = 1;
-            }
+            if (rc_frame.filled || run->status != LINK_OK)
+                return;
         }
-        int pixels_in = rc_frame.filled || run->status != LINK_OK;
-        if (!busy && pixels_in)
-            return;
         if ((run->done != reported || rc_frame.fm.pixels_written != reported_px) &&
             ktime_passed(next_progress)) {
             rc_progress(run, m);
@@ -259,7 +189,9 @@ static int rc_frame_memory(struct rc_run *run, uint32_t w, uint32_t h)
         rc_frame.shown_h = h;
     }
     rc_frame.pixels = w * h;
+    rc_frame.finishing = 0;
     rc_frame.filled = 0;
+    rc_frame.given_up = 0;
     return 0;
 }
 
@@ -278,7 +210,8 @@ static void rc_done(struct rc_run *run, struct line_msg *m, uint32_t render_ms, 
         for (int i = 0; i < 8; i++)
             wire_put_u32(q + 4 * i, v[i]);
         gigs_stats_put(q + GIGS_RESULT_FIXED, &run->stats);
-        m->len = 4 + GIGS_RESULT_SIZE;
+        m->len = (uint16_t)(4 + GIGS_RESULT_SIZE +
+                            link_render_fails_put(q + GIGS_RESULT_SIZE, &run->fails));
     }
     int r = line_send(UNITS_DM_CORE, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
     if (r != LINE_OK)
@@ -298,11 +231,17 @@ void rc_render_frame(struct line_msg *m)
     uint32_t k = wire_get_u32(m->payload + 8);
     memset(&run, 0, sizeof run);
     run.status = LINK_OK;
-    run.ncs = board_ncores - UNITS_FIRST_NC;
+    uint32_t planned = m->len >= 12 + LINK_INJECT_FIXED_SIZE ? wire_get_u8(m->payload + 12) : 0;
+    if (12u + LINK_INJECT_SIZE(planned) > m->len)
+        planned = 0; /* the DM checked it: cannot happen */
+    rc_nc_begin(&run, m->payload + 12 + LINK_INJECT_FIXED_SIZE, planned);
+    if (run.ncs == 0)
+        rc_fail(&run, LINK_ERR_CHECK, "all %u NCs failed in earlier frames; %u are left",
+                board_ncores - UNITS_FIRST_NC, 0);
     uint64_t t0 = ktime_now();
     const render_blob_t *blob = NULL;
     uint32_t blob_bytes = 0;
-    if (rc_broadcast(&run, &blob) == 0) {
+    if (run.status == LINK_OK && rc_broadcast(&run, &blob) == 0) {
         blob_bytes = (uint32_t)blob->bytes;
         int r = areas_init(&run.sched, (enum areas_mode)balance, blob->scene.width,
                            blob->scene.height, run.ncs, k);
@@ -317,17 +256,19 @@ void rc_render_frame(struct line_msg *m)
         dc_init(UNITS_RC_CORE); /* nobody pushes between frames */
         rc_frame.active = 1;
         task_signal_local(); /* the collector starts */
-        for (uint32_t nc = UNITS_FIRST_NC; nc < board_ncores; nc++) {
-            m->type = MSG_NC_START;
-            m->len = 5;
-            wire_put_u8(m->payload, flags);
-            wire_put_u32(m->payload + 1, largest);
-            run.state[nc] = RC_NC_IDLE;
-            rc_send_nc(nc, m);
-        }
+        rc_nc_start(&run, m, flags, largest);
         /* The NCs' share of the pool is the same for each (kernel/kmem.c). */
         run.nc_private = (uint32_t)cpu_of(UNITS_FIRST_NC)->mem_size;
         rc_serve(&run, m);
+        /* Every area was drawn by an NC that then asked for more: its
+         * pixels are all here, some twice when a failed NC had sent part
+         * of an area (the same pixels: the frame is the same). */
+        if (run.status == LINK_OK && rc_frame.fm.pixels_written < rc_frame.pixels)
+            rc_fail(&run, LINK_ERR_CHECK, "the frame memory holds %u of the frame's %u pixels",
+                    rc_frame.fm.pixels_written, rc_frame.pixels);
+        if (rc_frame.given_up)
+            klog("render: %u data collector runs claimed by failed NCs were given up",
+                 (unsigned)rc_frame.given_up);
         rc_frame.active = 0;
         task_signal_local();
         rc_frame.have_fm = run.status == LINK_OK;

@@ -12,6 +12,7 @@
 #include "kernel/spinlock.h"
 #include "kernel/task.h"
 #include "proto/hostlink.h"
+#include "proto/render_link.h"
 #include "roles/unitmsg.h"
 
 /* A cheap mix of (seed, seq, word index): every word of every message of
@@ -169,6 +170,22 @@ void selftest_fault_now(uint8_t kind)
     }
     }
     panic("selftest_fault_now: kind %u did not fault", (unsigned)kind);
+}
+
+void selftest_fail_on_purpose(uint8_t kind)
+{
+    switch (kind) {
+    case LINK_INJECT_UNDEF:
+        selftest_fault_now(FAULT_UNDEF);
+    case LINK_INJECT_DATA_ABORT:
+        selftest_fault_now(FAULT_DATA_ABORT);
+    case LINK_INJECT_HANG:
+        cpu_halt_forever(); /* interrupts off, halted word not set */
+    case LINK_INJECT_SILENT:
+        for (;;)
+            task_wait(task_event_mark(), 0);
+    }
+    klog("unknown failure kind %u injected: ignored", (unsigned)kind);
 }
 
 int selftest_recv_type(uint32_t peer, uint16_t type, struct line_msg *m,

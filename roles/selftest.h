@@ -33,6 +33,10 @@ int selftest_stress_run(struct selftest_stream *s, uint32_t n);
 /* Makes this core fault now with enum link_fault_kind kind, or one of the
  * FAULT_INJECT_* spinlock misuses; never returns. */
 void selftest_fault_now(uint8_t kind) __attribute__((noreturn));
+/* The failure of the render test hook (proto/render_link.h, enum
+ * link_inject_kind): this core fails as a real one would and says nothing
+ * about it; returns only for an unknown kind (logged). */
+void selftest_fail_on_purpose(uint8_t kind);
 /* 1 if kind is one selftest_fault_now knows. */
 int selftest_fault_kind_valid(uint8_t kind);
 

@@ -24,8 +24,9 @@ test_fwcfg_ARITH := double
 BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
 	tests/board/render_anim.sh tests/board/render_refuse.sh tests/board/render_view.sh \
 	tests/board/render_spd.sh tests/board/render_link.sh tests/board/board_named.sh \
-	tests/board/render_progress.sh
-RENDER_FULL_TESTS := tests/board/render_grid_full.sh
+	tests/board/render_progress.sh tests/board/render_faults.sh tests/board/render_faults_silent.sh \
+	tests/board/render_resume.sh
+RENDER_FULL_TESTS := tests/board/render_grid_full.sh tests/board/render_faults_full.sh
 
 .PHONY: test-full
 test-full: deps
@@ -34,8 +35,10 @@ test-full: deps
 # Host speed per arithmetic (wall clock, never a test), then the board's.
 BENCHES += tests/bench/bench_host.sh
 BENCHES += tests/bench/bench_render.sh tests/bench/bench_arith.sh tests/bench/bench_scale.sh
+# Issue 12: failed NCs (the time a failure costs a frame), the long soak run.
+BENCHES += tests/bench/bench_faults.sh tests/bench/bench_soak.sh
 
 # Encodings of the rendering commands and the NC statistics the RC sums.
 HOST_TESTS += test_render_link
-test_render_link_SRCS := tests/host/test_render_link.c
+test_render_link_SRCS := tests/host/test_render_link.c host-tools/render_faults.c
 test_render_link_ARITH := float

@@ -12,6 +12,8 @@
 static struct dc_slot dc_slots[DC_RING_SLOTS];
 static struct dc_ring dc_ring;
 static uint32_t dc_consumer;
+/* Producers whose runs the consumer drops (set by the consumer only). */
+static uint8_t dc_ignored[DC_MAX_PRODUCERS];
 
 void dc_init(uint32_t consumer_core)
 {
@@ -74,7 +76,8 @@ uint32_t dc_collect(struct fm *fm, uint32_t max_runs)
     static struct dc_run run; /* consumer only; keeps 264 bytes off the stack */
     uint32_t taken = 0;
     while (taken < max_runs && dc_ring_try_pop(&dc_ring, &run) == DC_OK) {
-        (void)fm_write_run(fm, run.x, run.y, run.px, run.n); /* refusals counted */
+        if (run.producer >= DC_MAX_PRODUCERS || !dc_ignored[run.producer])
+            (void)fm_write_run(fm, run.x, run.y, run.px, run.n); /* refusals counted */
         taken++;
     }
     if (taken)
@@ -95,6 +98,40 @@ uint32_t dc_collect_wait(struct fm *fm, uint64_t deadline)
             return 0;
         task_wait(mark, deadline);
     }
+}
+
+uint32_t dc_collect_until(struct fm *fm, uint64_t deadline, const volatile int *stop)
+{
+    for (;;) {
+        uint32_t mark = task_event_mark();
+        uint32_t n = dc_collect(fm, UINT32_MAX);
+        if (n)
+            return n;
+        if (*stop)
+            return 0;
+        if (dc_ring_consumer_arm(&dc_ring))
+            continue;
+        if (ktime_passed(deadline))
+            return 0;
+        task_wait(mark, deadline);
+    }
+}
+
+uint32_t dc_collect_final(struct fm *fm)
+{
+    uint32_t skipped = 0;
+    for (;;) {
+        dc_collect(fm, UINT32_MAX);
+        if (!dc_ring_skip_abandoned(&dc_ring))
+            return skipped;
+        skipped++;
+    }
+}
+
+void dc_ignore_producer(uint32_t producer)
+{
+    if (producer < DC_MAX_PRODUCERS)
+        dc_ignored[producer] = 1;
 }
 
 uint32_t dc_full_waits(void)

@@ -40,6 +40,17 @@ uint32_t dc_collect(struct fm *fm, uint32_t max_runs);
  * run came or deadline (ticks, 0 = none) passed; 0 = deadline passed. */
 uint32_t dc_collect_wait(struct fm *fm, uint64_t deadline);
 
+/* Consumer: like dc_collect_wait, but also returns (0) once *stop is
+ * nonzero, checked whenever the core wakes (the setter signals it). */
+uint32_t dc_collect_until(struct fm *fm, uint64_t deadline, const volatile int *stop);
+/* Consumer, once no producer will push again: takes every published run
+ * and gives up positions a failed producer claimed but never published;
+ * returns how many it gave up. */
+uint32_t dc_collect_final(struct fm *fm);
+/* From now on runs that producer pushes are dropped by the consumer (a
+ * producer given up for failed: its area is drawn again by another). */
+void dc_ignore_producer(uint32_t producer);
+
 /* Times a producer found the FIFO full and had to wait (statistics). */
 uint32_t dc_full_waits(void);
 

@@ -122,6 +122,19 @@ int dc_ring_consumer_arm(struct dc_ring *r)
     return 0;
 }
 
+int dc_ring_skip_abandoned(struct dc_ring *r)
+{
+    uint32_t pos = r->tail;
+    if (pos == __atomic_load_n(&r->head, __ATOMIC_ACQUIRE))
+        return 0;
+    struct dc_slot *slot = &r->slots[pos & r->mask];
+    if (__atomic_load_n(&slot->seq, __ATOMIC_ACQUIRE) == pos + 1)
+        return 0; /* published: dc_ring_try_pop takes it */
+    __atomic_store_n(&slot->seq, pos + r->mask + 1, __ATOMIC_RELEASE);
+    r->tail = pos + 1;
+    return 1;
+}
+
 uint32_t dc_ring_wake_producers(struct dc_ring *r, void (*wake)(uint32_t id, void *ctx),
                                 void *ctx)
 {

@@ -88,6 +88,12 @@ int dc_ring_consumer_arm(struct dc_ring *r);
 uint32_t dc_ring_wake_producers(struct dc_ring *r, void (*wake)(uint32_t id, void *ctx),
                                 void *ctx);
 
+/* Consumer, once no producer will push again (each has stopped or failed):
+ * if the oldest claimed position was never published (its producer failed
+ * between claiming and publishing), gives it up so the positions after it
+ * can be taken, and returns 1; 0 if there is none to give up. */
+int dc_ring_skip_abandoned(struct dc_ring *r);
+
 /* Fills run from n r,g,b byte triples (the renderer's rgb8_t array). */
 int dc_run_pack(struct dc_run *run, uint32_t x, uint32_t y, const uint8_t *rgb, uint32_t n);
 

@@ -2,6 +2,8 @@
  * No hardware access beyond the spinlock: the host tests build it. */
 #include "drivers/imsu/imsu.h"
 
+#include <string.h>
+
 void imsu_pair_init(struct imsu_pair *p, const char *name, uint32_t core_a,
                     uint32_t core_b, uint8_t *block_a, uint8_t *block_b, size_t size)
 {
@@ -105,6 +107,7 @@ void imsu_bcast_init(struct imsu_bcast *b, uint32_t writer, uint8_t *block, size
     b->writer = writer;
     b->writing = 0;
     b->readers = 0;
+    memset(b->reads, 0, sizeof b->reads);
     b->generation = 0;
 }
 
@@ -145,13 +148,15 @@ int imsu_bcast_write_end(struct imsu_bcast *b, uint32_t core)
 int imsu_bcast_read_begin(struct imsu_bcast *b, uint32_t core, const uint8_t **out,
                           uint32_t *generation)
 {
-    (void)core;
     spin_lock(&b->lock);
     int r = IMSU_OK;
-    if (b->writing)
+    if (core >= UNITS_MAX_CORES)
+        r = IMSU_ERR_NOT_SIDE;
+    else if (b->writing)
         r = IMSU_ERR_WRITER_ACTIVE;
     else {
         b->readers++;
+        b->reads[core]++;
         *out = b->block;
         *generation = b->generation;
     }
@@ -161,15 +166,28 @@ int imsu_bcast_read_begin(struct imsu_bcast *b, uint32_t core, const uint8_t **o
 
 int imsu_bcast_read_end(struct imsu_bcast *b, uint32_t core)
 {
-    (void)core;
     spin_lock(&b->lock);
     int r = IMSU_OK;
-    if (b->readers == 0)
+    if (core >= UNITS_MAX_CORES || b->reads[core] == 0)
         r = IMSU_ERR_NOT_READING;
-    else
+    else {
         b->readers--;
+        b->reads[core]--;
+    }
     spin_unlock(&b->lock);
     return r;
+}
+
+uint32_t imsu_bcast_read_abandon(struct imsu_bcast *b, uint32_t core)
+{
+    if (core >= UNITS_MAX_CORES)
+        return 0;
+    spin_lock(&b->lock);
+    uint32_t n = b->reads[core];
+    b->readers -= n;
+    b->reads[core] = 0;
+    spin_unlock(&b->lock);
+    return n;
 }
 
 const char *imsu_strerror(int status)

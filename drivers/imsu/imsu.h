@@ -33,6 +33,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "kernel/param.h"
 #include "kernel/spinlock.h"
 
 enum imsu_status {
@@ -66,7 +67,8 @@ struct imsu_bcast {
     size_t size;
     uint32_t writer;        /* the one core that writes */
     uint8_t writing;        /* writer inside a write */
-    uint32_t readers;       /* cores inside a read */
+    uint32_t readers;       /* reads in progress */
+    uint8_t reads[UNITS_MAX_CORES]; /* of them, by each core */
     uint32_t generation;    /* finished writes */
 };
 
@@ -93,6 +95,10 @@ int imsu_bcast_write_end(struct imsu_bcast *b, uint32_t core);
 int imsu_bcast_read_begin(struct imsu_bcast *b, uint32_t core, const uint8_t **out,
                           uint32_t *generation);
 int imsu_bcast_read_end(struct imsu_bcast *b, uint32_t core);
+/* Ends every read a core left open because it failed (the RC, for an NC
+ * it gave up on): the next broadcast write is not refused for it.
+ * Returns how many reads it ended. */
+uint32_t imsu_bcast_read_abandon(struct imsu_bcast *b, uint32_t core);
 
 const char *imsu_strerror(int status);
 

@@ -59,3 +59,40 @@ render_grid_one() {
         --balance "$mode" --size "$size" || return 0
     render_same "$name" "$ref" "$out"
 }
+
+# render_faults_one NAME SCENE SIZE NCS K SEED KIND: renders with K of NCS
+# NCs failing (links1 render --inject-faults K:SEED --inject-kind KIND) and
+# checks the image equals the host build's (float), the summary names K
+# failed NCs, each caught the way its kind is (a fault or the watchdog),
+# and lists the re-issued areas it counts.
+render_faults_one() {
+    local name=$1 scene=$2 size=$3 ncs=$4 k=$5 seed=$6 kind=$7
+    local out="$RENDER_TMP/$name.ppm" log="$RENDER_TMP/$name.log"
+    local ref
+    ref=$(render_ref "$scene" float "$size")
+    render_board "$name" "$out" "$scene" -o "$out" --ncs "$ncs" --size "$size" \
+        --inject-faults "$k:$seed" --inject-kind "$kind" || return 0
+    render_same "$name" "$ref" "$out"
+    local line failed caught want
+    line=$(grep -m1 'failed during the frame' "$log")
+    failed=$(echo "$line" | sed -n 's/.*frame [0-9]*: \([0-9]*\) NC(s) failed.*/\1/p')
+    case $kind in
+    undef | abort) want=fault ;;
+    hang | silent) want=watchdog ;;
+    *) want='fault\|watchdog' ;;
+    esac
+    caught=$(echo "$line" | grep -o "NC [0-9]* ($want)" | wc -l)
+    local planned reissued listed
+    planned=$(grep -m1 'fault plan' "$log" | grep -o 'NC [0-9]*' | sort | tr '\n' ' ')
+    reissued=$(echo "$line" | sed -n 's/.*; \([0-9]*\) area(s) re-issued.*/\1/p')
+    listed=$(echo "$line" | grep -o 'from NC [0-9]*' | wc -l)
+    # The board lists at most LINK_REISSUE_LIST_MAX (48) of them.
+    [ -n "$reissued" ] && [ "$reissued" -gt 48 ] && [ "$listed" = 48 ] && listed=$reissued
+    if [ "$failed" = "$k" ] && [ "$caught" = "$k" ] &&
+        [ "$(echo "$line" | grep -o 'NC [0-9]* (' | sed 's/ (//' | sort | tr '\n' ' ')" = "$planned" ] &&
+        [ -n "$reissued" ] && [ "$listed" = "$reissued" ]; then
+        echo "PASS ${name}_summary"
+    else
+        echo "FAIL ${name}_summary: want $k NCs ($planned) caught by $want and the re-issued areas listed; got: ${line:-no failure line}"
+    fi
+}

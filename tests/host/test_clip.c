@@ -198,7 +198,7 @@ static void test_clipped_render_same_image(void)
         size_t n = (size_t)t.f->width * t.f->height;
         render_stats_t plain_stats, clip_stats;
         rgb8_t *plain = tb_render_plain(t.f, &plain_stats);
-        render_clip_options_t both = {1, 1};
+        render_clip_options_t both = {1, 1, NULL};
         rgb8_t *clipped = tc_render_areas(&t, &t.f->options, &both, &clip_stats);
         if (!tb_same(plain, clipped, n))
             printf("%s: clipped image differs\n", tb_scenes[s]);
@@ -234,7 +234,7 @@ static void test_area_switches_same_image(void)
         size_t n = (size_t)t.f->width * t.f->height;
         render_options_t on = t.f->options;
         on.use_bounds = on.use_hierarchy = 1;
-        render_clip_options_t both = {1, 1};
+        render_clip_options_t both = {1, 1, NULL};
         render_stats_t ref_stats, st;
         rgb8_t *ref = tc_render_areas(&t, &on, &both, &ref_stats);
         for (int off = 0; off < 5; off++) {
@@ -288,7 +288,7 @@ static void test_clip_memory_and_errors(void)
     CHECK_EQ_INT(render_clip_init(&c, t.f, mem, bytes), RENDER_OK);
     render_ctx_t ctx;
     render_ctx_init(&ctx, t.f);
-    render_clip_options_t both = {1, 1};
+    render_clip_options_t both = {1, 1, NULL};
     rgb8_t px[4];
     uint32_t W = t.f->width, H = t.f->height;
     render_area_t bad[] = {{0, 0, 0, 1}, {0, 0, 1, 0}, {W, 0, 1, 1}, {W - 1, 0, 2, 1}, {0, H - 1, 1, 2}};

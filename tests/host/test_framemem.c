@@ -135,6 +135,35 @@ static void test_ring_order_full_empty(void)
     CHECK_EQ_INT(dc_ring_try_push(&r, &in, &wake), DC_ERR_RUN);
 }
 
+/* A producer that failed between claiming a position and publishing it:
+ * the consumer stops there until it gives the position up, then takes the
+ * runs after it; nothing is given up while the oldest run is published. */
+static void test_ring_skip_abandoned(void)
+{
+    struct dc_slot slots[4];
+    struct dc_ring r;
+    struct dc_run a = make_run(2, 0, 3), c = make_run(4, 2, 5), out;
+    int wake;
+    dc_ring_init(&r, slots, 4);
+    CHECK_EQ_INT(dc_ring_skip_abandoned(&r), 0); /* empty */
+    CHECK_EQ_INT(dc_ring_try_push(&r, &a, &wake), DC_OK);
+    CHECK_EQ_INT(dc_ring_skip_abandoned(&r), 0); /* published */
+    r.head++; /* producer 3 claims position 1 and fails */
+    CHECK_EQ_INT(dc_ring_try_push(&r, &c, &wake), DC_OK);
+    CHECK_EQ_INT(dc_ring_try_pop(&r, &out), DC_OK);
+    CHECK_EQ_INT(out.producer, 2);
+    CHECK_EQ_INT(dc_ring_try_pop(&r, &out), DC_ERR_EMPTY);
+    CHECK_EQ_INT(dc_ring_skip_abandoned(&r), 1);
+    CHECK_EQ_INT(dc_ring_try_pop(&r, &out), DC_OK);
+    CHECK_EQ_INT(out.producer, 4);
+    CHECK(memcmp(out.px, c.px, c.n * sizeof(uint32_t)) == 0);
+    CHECK_EQ_INT(dc_ring_skip_abandoned(&r), 0);
+    /* The given-up slot is free for the next lap: four more pushes fit. */
+    for (uint32_t i = 0; i < 4; i++)
+        CHECK_EQ_INT(dc_ring_try_push(&r, &a, &wake), DC_OK);
+    CHECK_EQ_INT(dc_ring_try_push(&r, &a, &wake), DC_ERR_FULL);
+}
+
 static void count_wake(uint32_t id, void *ctx)
 {
     ((uint32_t *)ctx)[id]++;
@@ -316,6 +345,7 @@ int main(void)
     RUN(test_run_pack_from_rgb_bytes);
     RUN(test_ring_order_full_empty);
     RUN(test_ring_wait_flags);
+    RUN(test_ring_skip_abandoned);
     RUN(test_ring_many_producers);
     RUN(test_selftest_pattern_is_unique);
     return check_exit();

@@ -105,6 +105,16 @@ static void test_broadcast_rules(void)
     CHECK_EQ_INT(imsu_bcast_write_end(&b, RC), IMSU_OK);
     CHECK_EQ_INT(b.generation, 2);
     CHECK_EQ_INT(imsu_bcast_write_end(&b, RC), IMSU_ERR_NOT_WRITING);
+    /* A reader that failed mid-read: the RC ends its read, and only its. */
+    CHECK_EQ_INT(imsu_bcast_read_begin(&b, NC, &r, &gen), IMSU_OK);
+    CHECK_EQ_INT(imsu_bcast_read_begin(&b, NC + 1, &r, &gen), IMSU_OK);
+    CHECK_EQ_INT(imsu_bcast_read_abandon(&b, NC), 1);
+    CHECK_EQ_INT(imsu_bcast_read_abandon(&b, NC), 0);
+    CHECK_EQ_INT(imsu_bcast_read_end(&b, NC), IMSU_ERR_NOT_READING);
+    CHECK_EQ_INT(imsu_bcast_write_begin(&b, RC, &w), IMSU_ERR_READERS_ACTIVE);
+    CHECK_EQ_INT(imsu_bcast_read_end(&b, NC + 1), IMSU_OK);
+    CHECK_EQ_INT(imsu_bcast_write_begin(&b, RC, &w), IMSU_OK);
+    CHECK_EQ_INT(imsu_bcast_write_end(&b, RC), IMSU_OK);
     CHECK_EQ_INT(test_locks_held, 0);
 }
 

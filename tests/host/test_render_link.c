@@ -2,6 +2,7 @@
  * and of the NC statistics the RC sums (roles/gigs.h). */
 #include <string.h>
 
+#include "host-tools/render_faults.h"
 #include "proto/render_link.h"
 #include "roles/gigs.h"
 #include "tests/check.h"
@@ -82,11 +83,122 @@ static void gigs_stats_sum_of_two(void)
           sum.primary_prim_tests == 909 && sum.precision_lost_pixels == 1010);
 }
 
+/* The failure report: counts, both maps and the listed areas come back;
+ * a report cut short is refused; the list stops at LINK_REISSUE_LIST_MAX
+ * while the count goes on. */
+static void render_link_fails_round_trip(void)
+{
+    struct link_render_fails f, g;
+    memset(&f, 0, sizeof f);
+    f.failed = 2;
+    f.reissued = 1;
+    f.failed_before = 3;
+    link_core_map_set(f.failed_map, 2);
+    link_core_map_set(f.failed_map, 255);
+    link_core_map_set(f.watchdog_map, 255);
+    link_core_map_set(f.watchdog_map, 256); /* out of range: ignored */
+    f.area[0] = (struct link_reissue){255, 10, 20, 30, 40};
+    uint8_t buf[LINK_RENDER_FAILS_SIZE(LINK_REISSUE_LIST_MAX) + 1];
+    uint32_t n = link_render_fails_put(buf, &f);
+    CHECK_EQ_INT(n, LINK_RENDER_FAILS_SIZE(1));
+    CHECK_EQ_INT(n, link_render_fails_size(&f));
+    memset(&g, 0xEE, sizeof g);
+    CHECK_EQ_INT(link_render_fails_get(buf, n, &g), 0);
+    CHECK(g.failed == 2 && g.reissued == 1 && g.failed_before == 3);
+    CHECK(link_core_map_has(g.failed_map, 2) && link_core_map_has(g.failed_map, 255));
+    CHECK(!link_core_map_has(g.failed_map, 3) && !link_core_map_has(g.watchdog_map, 2));
+    CHECK(link_core_map_has(g.watchdog_map, 255) && !link_core_map_has(g.watchdog_map, 256));
+    CHECK(g.area[0].core == 255 && g.area[0].x == 10 && g.area[0].y == 20 &&
+          g.area[0].w == 30 && g.area[0].h == 40);
+    CHECK_EQ_INT(link_render_fails_get(buf, n - 1, &g), -1);
+    CHECK_EQ_INT(link_render_fails_get(buf, LINK_RENDER_FAILS_FIXED - 1, &g), -1);
+    f.reissued = LINK_REISSUE_LIST_MAX + 5;
+    CHECK_EQ_INT(link_render_fails_put(buf, &f), LINK_RENDER_FAILS_SIZE(LINK_REISSUE_LIST_MAX));
+    CHECK_EQ_INT(link_render_fails_get(buf, sizeof buf - 1, &g), 0);
+    CHECK_EQ_INT(g.reissued, LINK_REISSUE_LIST_MAX + 5);
+}
+
+static void render_link_inject_round_trip(void)
+{
+    struct link_inject e = {253, LINK_INJECT_SILENT, 200, 0x1234}, d;
+    uint8_t buf[LINK_INJECT_ENTRY_SIZE + 1];
+    buf[LINK_INJECT_ENTRY_SIZE] = 0x5A;
+    link_inject_put(buf, &e);
+    CHECK_EQ_INT(buf[LINK_INJECT_ENTRY_SIZE], 0x5A);
+    link_inject_get(buf, &d);
+    CHECK(d.core == 253 && d.kind == LINK_INJECT_SILENT && d.row == 200 && d.area == 0x1234);
+}
+
+/* The host's plan: K distinct NCs of the board, kinds in range, the same
+ * plan for the same seed, another for another seed. */
+static void render_faults_plan_distinct(void)
+{
+    uint8_t p[LINK_INJECT_SIZE(LINK_INJECT_MAX)], q[sizeof p];
+    uint8_t taken[LINK_CORE_MAP_SIZE] = {0}, none[LINK_CORE_MAP_SIZE];
+    unsigned ncs = 64, k = 63;
+    CHECK_EQ_INT(render_faults_plan(k, 5, RENDER_FAULTS_MIXED, ncs, taken, p),
+                 LINK_INJECT_SIZE(k));
+    CHECK_EQ_INT(p[0], k);
+    int seen[UNITS_MAX_CORES] = {0}, kinds[LINK_INJECT_KINDS + 1] = {0};
+    for (unsigned i = 0; i < k; i++) {
+        struct link_inject e;
+        link_inject_get(p + LINK_INJECT_FIXED_SIZE + i * LINK_INJECT_ENTRY_SIZE, &e);
+        CHECK(e.core >= UNITS_FIRST_NC && e.core < UNITS_FIRST_NC + ncs);
+        CHECK(e.kind >= 1 && e.kind <= LINK_INJECT_KINDS);
+        seen[e.core]++;
+        kinds[e.kind]++;
+    }
+    for (unsigned c = 0; c < UNITS_MAX_CORES; c++)
+        CHECK(seen[c] <= 1);
+    for (unsigned kd = 1; kd <= LINK_INJECT_KINDS; kd++)
+        CHECK(kinds[kd] > 0); /* 63 draws: every kind comes up */
+    /* All but one are taken now: no more may fail. */
+    CHECK_EQ_INT(render_faults_plan(1, 5, RENDER_FAULTS_MIXED, ncs, taken, q),
+                 LINK_INJECT_SIZE(0));
+    memset(none, 0, sizeof none);
+    render_faults_plan(k, 5, RENDER_FAULTS_MIXED, ncs, none, q);
+    CHECK(memcmp(p, q, LINK_INJECT_SIZE(k)) == 0);
+    memset(none, 0, sizeof none);
+    render_faults_plan(k, 6, RENDER_FAULTS_MIXED, ncs, none, q);
+    CHECK(memcmp(p, q, LINK_INJECT_SIZE(k)) != 0);
+    memset(none, 0, sizeof none);
+    render_faults_plan(1, 9, LINK_INJECT_HANG, 2, none, q);
+    CHECK_EQ_INT(q[LINK_INJECT_FIXED_SIZE + 2], LINK_INJECT_HANG);
+    /* Taken NCs are not planned again: 10 NCs, 3 then 3 then 3, all apart. */
+    memset(none, 0, sizeof none);
+    int hit[UNITS_MAX_CORES] = {0};
+    for (unsigned round = 0; round < 4; round++) {
+        uint32_t bytes = render_faults_plan(3, round, RENDER_FAULTS_MIXED, 10, none, q);
+        CHECK_EQ_INT(bytes, LINK_INJECT_SIZE(round < 3 ? 3 : 0));
+        for (unsigned i = 0; i < q[0]; i++)
+            hit[wire_get_u16(q + LINK_INJECT_FIXED_SIZE + i * LINK_INJECT_ENTRY_SIZE)]++;
+    }
+    for (unsigned c = 0; c < UNITS_MAX_CORES; c++)
+        CHECK(hit[c] <= 1);
+    unsigned kk, seed;
+    CHECK_EQ_INT(render_faults_parse("3:17", &kk, &seed), 0);
+    CHECK(kk == 3 && seed == 17);
+    CHECK_EQ_INT(render_faults_parse("2", &kk, &seed), 0);
+    CHECK(kk == 2);
+    CHECK_EQ_INT(render_faults_parse("2:", &kk, &seed), -1);
+    CHECK_EQ_INT(render_faults_parse("x", &kk, &seed), -1);
+    CHECK_EQ_INT(render_faults_parse("999", &kk, &seed), -1);
+    uint8_t kind;
+    CHECK_EQ_INT(render_faults_kind_parse("silent", &kind), 0);
+    CHECK_EQ_INT(kind, LINK_INJECT_SILENT);
+    CHECK_EQ_INT(render_faults_kind_parse("mixed", &kind), 0);
+    CHECK_EQ_INT(kind, RENDER_FAULTS_MIXED);
+    CHECK_EQ_INT(render_faults_kind_parse("boom", &kind), -1);
+}
+
 int main(void)
 {
     RUN(render_link_stats_round_trip);
     RUN(render_link_args_round_trip);
     RUN(render_link_info_and_progress_round_trip);
     RUN(gigs_stats_sum_of_two);
+    RUN(render_link_fails_round_trip);
+    RUN(render_link_inject_round_trip);
+    RUN(render_faults_plan_distinct);
     return check_exit();
 }

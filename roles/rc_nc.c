@@ -1,0 +1,281 @@
+/* rc_nc.c: the RC's side of the NCs while a frame renders (rc_run.h): it
+ * answers their area requests, notices the ones that fail (a fault, or the
+ * watchdog) and hands their areas to others, and carries out the test
+ * hook's fault plan by marking the messages it sends. */
+#include <stdint.h>
+#include <string.h>
+
+#include "drivers/framemem/dc.h"
+#include "drivers/imsu/imsu.h"
+#include "drivers/serial/line.h"
+#include "kernel/cpu.h"
+#include "kernel/klog.h"
+#include "kernel/ktime.h"
+#include "proto/hostlink.h"
+#include "proto/textfmt.h"
+#include "proto/wire.h"
+#include "roles/gigs.h"
+#include "roles/rc_run.h"
+#include "roles/selftest.h"
+#include "roles/unit.h"
+#include "roles/unitmsg.h"
+
+/* NCs given up for failed since the board started: out of later frames. */
+static uint8_t rc_nc_gone[UNITS_MAX_CORES];
+
+void rc_fail(struct rc_run *run, int32_t status, const char *fmt, uint32_t a, uint32_t b)
+{
+    if (run->status != LINK_OK)
+        return;
+    run->status = status;
+    fmt_snprintf(run->why, sizeof run->why, fmt, (unsigned)a, (unsigned)b);
+}
+
+static void rc_nc_send(uint32_t nc, struct line_msg *m)
+{
+    int r = line_send(nc, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
+    if (r != LINE_OK)
+        klog("render: send of message %u to NC %u: %s", (unsigned)m->type, (unsigned)nc,
+             line_strerror(r));
+}
+
+void rc_nc_begin(struct rc_run *run, const uint8_t *plan, uint32_t n)
+{
+    run->ncs = 0;
+    for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
+        if (rc_nc_gone[k]) {
+            run->nc[k].state = RC_NC_OUT;
+            run->fails.failed_before++;
+            /* One given up while only slow may have begun a read since. */
+            (void)imsu_bcast_read_abandon(&imsu_rc_ncs, k);
+        } else {
+            run->nc[k].state = RC_NC_IDLE;
+            run->ncs++;
+        }
+    }
+    for (uint32_t i = 0; i < n; i++) {
+        struct link_inject e;
+        link_inject_get(plan + i * LINK_INJECT_ENTRY_SIZE, &e);
+        if (e.kind < 1 || e.kind > LINK_INJECT_KINDS || e.core == UNITS_DM_CORE)
+            continue; /* the DM's is the DM's */
+        if (e.core == UNITS_RC_CORE)
+            run->self_inject = e;
+        else if (e.core < board_ncores && !rc_nc_gone[e.core])
+            run->nc[e.core].inject = e;
+        else
+            klog("render: fault plan entry %u (core %u, kind %u) ignored", (unsigned)i,
+                 (unsigned)e.core, (unsigned)e.kind);
+    }
+}
+
+void rc_nc_start(struct rc_run *run, struct line_msg *m, uint8_t flags, uint32_t largest)
+{
+    for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
+        if (run->nc[k].state == RC_NC_OUT)
+            continue;
+        m->type = MSG_NC_START;
+        m->len = 5;
+        wire_put_u8(m->payload, flags);
+        wire_put_u32(m->payload + 1, largest);
+        run->nc[k].since = ktime_now();
+        rc_nc_send(k, m);
+    }
+}
+
+/* NC k failed: out for good; the area it held goes back to be handed out. */
+static void rc_nc_lost(struct rc_run *run, uint32_t k, int by_watchdog)
+{
+    if (k >= UNITS_MAX_CORES)
+        return;
+    struct rc_nc *n = &run->nc[k];
+    rc_nc_gone[k] = 1;
+    dc_ignore_producer(k);
+    (void)imsu_bcast_read_abandon(&imsu_rc_ncs, k);
+    struct link_render_fails *f = &run->fails;
+    f->failed++;
+    link_core_map_set(f->failed_map, k);
+    if (by_watchdog)
+        link_core_map_set(f->watchdog_map, k);
+    if (n->state == RC_NC_BUSY) {
+        run->again[run->nagain++] = n->area;
+        if (f->reissued < LINK_REISSUE_LIST_MAX)
+            f->area[f->reissued] = (struct link_reissue){(uint16_t)k, (uint16_t)n->area.x,
+                                                         (uint16_t)n->area.y, (uint16_t)n->area.w,
+                                                         (uint16_t)n->area.h};
+        f->reissued++;
+        klog("render: NC %u %s; its area %ux%u at (%u,%u) goes to another NC", (unsigned)k,
+             by_watchdog ? "stopped answering" : "halted with a fault", (unsigned)n->area.w,
+             (unsigned)n->area.h, (unsigned)n->area.x, (unsigned)n->area.y);
+    } else {
+        klog("render: NC %u %s (it held no area)", (unsigned)k,
+             by_watchdog ? "stopped answering" : "halted with a fault");
+    }
+    n->state = RC_NC_STOPPED;
+}
+
+/* 1 if NC k has been silent longer than the watchdog allows: past its
+ * deadline, and its progress word still for GIGS_WATCH_FLOOR_MS. */
+static int rc_nc_overdue(struct rc_run *run, uint32_t k)
+{
+    struct rc_nc *n = &run->nc[k];
+    uint64_t now = ktime_now(), allow;
+    uint32_t p = gigs_nc_progress[k];
+    if (p != n->progress || n->moved < n->since) {
+        n->progress = p;
+        n->moved = now;
+    }
+    if (now <= n->since || now - n->moved <= ktime_ms_to_ticks(GIGS_WATCH_FLOOR_MS))
+        return 0;
+    switch (n->state) {
+    case RC_NC_BUSY:
+        if (run->slow_pixels == 0) {
+            allow = ktime_ms_to_ticks(GIGS_WATCH_FIRST_MS);
+        } else {
+            uint64_t pixels = (uint64_t)n->area.w * n->area.h;
+            allow = GIGS_WATCH_FACTOR * run->slow_ticks * pixels / run->slow_pixels +
+                    ktime_ms_to_ticks(GIGS_WATCH_FLOOR_MS);
+        }
+        break;
+    case RC_NC_IDLE:
+        allow = ktime_ms_to_ticks(GIGS_WATCH_FIRST_MS);
+        break;
+    case RC_NC_STOPPING:
+        allow = ktime_ms_to_ticks(GIGS_WATCH_FLOOR_MS);
+        break;
+    default:
+        return 0; /* parked: waiting for the RC */
+    }
+    return now - n->since > allow;
+}
+
+/* One message from NC k. */
+static void rc_nc_message(struct rc_run *run, uint32_t k, struct line_msg *m)
+{
+    struct rc_nc *n = &run->nc[k];
+    if (m->type == MSG_NC_STOPPED) {
+        n->state = RC_NC_STOPPED;
+        uint32_t high = wire_get_u32(m->payload);
+        if (high > run->nc_high_max)
+            run->nc_high_max = high;
+        gigs_stats_add(&run->stats, m->payload + 4);
+        return;
+    }
+    if (m->type != MSG_NC_REQ || (n->state != RC_NC_IDLE && n->state != RC_NC_BUSY)) {
+        klog("render: unexpected message %u from NC %u", (unsigned)m->type, (unsigned)k);
+        return;
+    }
+    int32_t st = (int32_t)wire_get_u32(m->payload);
+    if (st != 0 && run->status == LINK_OK) {
+        run->status = st;
+        fmt_snprintf(run->why, sizeof run->why, "NC %u: %.*s", (unsigned)k,
+                     (int)(m->len - 4), (const char *)m->payload + 4);
+    }
+    if (n->state == RC_NC_BUSY) {
+        run->done++;
+        uint64_t ticks = ktime_now() - n->since;
+        uint64_t pixels = (uint64_t)n->area.w * n->area.h;
+        if (run->slow_pixels == 0 || ticks * run->slow_pixels > run->slow_ticks * pixels) {
+            run->slow_ticks = ticks;
+            run->slow_pixels = pixels;
+        }
+    }
+    n->state = RC_NC_PARKED;
+}
+
+/* Gives parked NC k the next area (one taken back first); 0 if none is left. */
+static int rc_nc_give(struct rc_run *run, uint32_t k, struct line_msg *m)
+{
+    struct rc_nc *n = &run->nc[k];
+    struct area a;
+    if (run->nagain)
+        a = run->again[--run->nagain];
+    else if (!areas_next(&run->sched, &a))
+        return 0;
+    m->type = MSG_NC_AREA;
+    m->len = 16;
+    wire_put_u32(m->payload, a.x);
+    wire_put_u32(m->payload + 4, a.y);
+    wire_put_u32(m->payload + 8, a.w);
+    wire_put_u32(m->payload + 12, a.h);
+    if (n->inject.kind && n->given == n->inject.area) {
+        m->len = 20;
+        wire_put_u8(m->payload + 16, n->inject.kind);
+        wire_put_u8(m->payload + 17, 0);
+        wire_put_u16(m->payload + 18, (uint16_t)(n->inject.row * (a.h + 1) / 256));
+    }
+    n->given++;
+    n->area = a;
+    n->state = RC_NC_BUSY;
+    n->since = ktime_now();
+    rc_nc_send(k, m);
+    return 1;
+}
+
+static void rc_nc_stop(struct rc_run *run, uint32_t k, struct line_msg *m)
+{
+    struct rc_nc *n = &run->nc[k];
+    m->type = MSG_NC_STOP;
+    m->len = 0;
+    if (n->inject.kind && n->given <= n->inject.area) {
+        m->len = 4; /* it got fewer areas than the plan: it fails now */
+        wire_put_u8(m->payload, n->inject.kind);
+        wire_put_u8(m->payload + 1, 0);
+        wire_put_u16(m->payload + 2, 0);
+    }
+    n->state = RC_NC_STOPPING;
+    n->since = ktime_now();
+    rc_nc_send(k, m);
+}
+
+/* Areas to parked NCs; once none is busy and none is left, stops them. */
+static void rc_nc_dispatch(struct rc_run *run, struct line_msg *m)
+{
+    int working = 0;
+    for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
+        struct rc_nc *n = &run->nc[k];
+        if (n->state == RC_NC_PARKED && run->status == LINK_OK)
+            (void)rc_nc_give(run, k, m);
+        working |= n->state == RC_NC_BUSY || n->state == RC_NC_IDLE;
+    }
+    if (working && run->status == LINK_OK)
+        return;
+    for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++)
+        if (run->nc[k].state == RC_NC_PARKED)
+            rc_nc_stop(run, k, m);
+}
+
+int rc_nc_poll(struct rc_run *run, struct line_msg *m)
+{
+    if (run->self_inject.kind && run->done >= run->self_inject.area)
+        selftest_fail_on_purpose(run->self_inject.kind); /* the test hook */
+    int moved = 0;
+    for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
+        struct rc_nc *n = &run->nc[k];
+        if (n->state == RC_NC_OUT || n->state == RC_NC_STOPPED)
+            continue;
+        if (unit_is_halted(k)) {
+            rc_nc_lost(run, k, 0);
+            continue;
+        }
+        if (line_recv_ready_arm(k) && line_try_recv(k, m) == LINE_OK) {
+            rc_nc_message(run, k, m);
+            moved = 1;
+            continue;
+        }
+        if (rc_nc_overdue(run, k))
+            rc_nc_lost(run, k, 1);
+    }
+    rc_nc_dispatch(run, m);
+    if (rc_nc_all_stopped(run) && run->done < run->total)
+        rc_fail(run, LINK_ERR_TIMEOUT, "every NC failed; %u of %u areas were done", run->done,
+                run->total);
+    return moved;
+}
+
+int rc_nc_all_stopped(const struct rc_run *run)
+{
+    for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++)
+        if (run->nc[k].state != RC_NC_OUT && run->nc[k].state != RC_NC_STOPPED)
+            return 0;
+    return 1;
+}

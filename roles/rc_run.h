@@ -1,0 +1,76 @@
+/* rc_run.h: the RC's state of one frame's area hand-out, shared by
+ * rc_render.c (the frame) and rc_nc.c (the NCs: areas, failures, the
+ * watchdog).  Private to the RC.
+ *
+ * An NC fails when it halts with a fault (its core's halted word, set by
+ * kernel/fault.c, which the RC reads) or when the watchdog finds it silent
+ * too long: holding an area for GIGS_WATCH_FACTOR times the area's
+ * expected time plus GIGS_WATCH_FLOOR_MS, or not answering a start or a
+ * stop within GIGS_WATCH_FLOOR_MS, and in either case its progress word
+ * (gigs_nc_progress, +1 per pixel) standing still for GIGS_WATCH_FLOOR_MS:
+ * an area that costs more than expected is no failure while its pixels
+ * come.  A failed NC is out for good: its broadcast read is ended for it, the DC drops its later runs, the RC never writes to
+ * it again, and the area it held goes to the next NC that asks.  An NC that
+ * asks while nothing is left waits (parked) until the last busy NC is done:
+ * an area may still come back. */
+#ifndef LINKS1_ROLES_RC_RUN_H
+#define LINKS1_ROLES_RC_RUN_H
+
+#include <stdint.h>
+
+#include "drivers/serial/linemsg.h"
+#include "kernel/param.h"
+#include "proto/areas.h"
+#include "proto/render_link.h"
+#include "render/render.h"
+
+enum rc_nc_state {
+    RC_NC_OUT = 0,  /* not in this frame (failed before) */
+    RC_NC_IDLE,     /* started, no request yet */
+    RC_NC_BUSY,     /* holds an area */
+    RC_NC_PARKED,   /* asked while nothing was left */
+    RC_NC_STOPPING, /* told to stop */
+    RC_NC_STOPPED,  /* stopped, or failed in this frame */
+};
+
+struct rc_nc {
+    uint8_t state;       /* enum rc_nc_state */
+    struct area area;    /* the area it holds (BUSY) */
+    uint64_t since;      /* ticks: when it got its area, start or stop */
+    uint32_t progress;   /* its progress word when last looked at */
+    uint64_t moved;      /* ticks: when that word last changed */
+    uint32_t given;      /* areas it got in this frame */
+    struct link_inject inject; /* a planned failure (kind 0: none) */
+};
+
+struct rc_run {
+    struct areas sched;
+    uint32_t total, done, ncs;
+    struct rc_nc nc[UNITS_MAX_CORES];
+    struct area again[UNITS_MAX_CORES]; /* areas taken back from failed NCs */
+    uint32_t nagain;
+    uint64_t slow_ticks, slow_pixels; /* the slowest finished area per pixel */
+    render_stats_t stats;
+    uint32_t nc_high_max, nc_private;
+    struct link_render_fails fails;
+    struct link_inject self_inject; /* the RC's own planned failure (kind 0: none):
+                                     * once inject.area areas are done */
+    int32_t status;                /* first error, LINK_OK if none */
+    char why[LINE_MAX_PAYLOAD - 4];
+};
+
+/* Records the first error of the frame (fmt takes two unsigned). */
+void rc_fail(struct rc_run *run, int32_t status, const char *fmt, uint32_t a, uint32_t b);
+
+/* Marks the NCs that failed before as out, counts the rest into run->ncs,
+ * and takes the fault plan (LINK_INJECT_SIZE(n) bytes at plan, n may be 0). */
+void rc_nc_begin(struct rc_run *run, const uint8_t *plan, uint32_t n);
+/* Sends MSG_NC_START (flags, largest area) to every NC in the frame. */
+void rc_nc_start(struct rc_run *run, struct line_msg *m, uint8_t flags, uint32_t largest);
+/* One pass over the NCs: failures, messages, areas handed out or stops.
+ * Returns 1 if any message moved. */
+int rc_nc_poll(struct rc_run *run, struct line_msg *m);
+/* 1 once every NC of the frame has stopped or failed. */
+int rc_nc_all_stopped(const struct rc_run *run);
+
+#endif
