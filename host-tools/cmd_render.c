@@ -14,6 +14,7 @@
 #include "host-tools/insn_report.h"
 #include "host-tools/links1_cmds.h"
 #include "host-tools/render_session.h"
+#include "host-tools/trace_file.h"
 #include "host-tools/scene/image_io.h"
 #include "host-tools/scene/cli_args.h"
 #include "host-tools/scene/scene_desc.h"
@@ -37,6 +38,8 @@ struct render_opts {
     int many;           /* --frames: one image per frame, numbered */
     struct scene_file_opts scene; /* --size, --max-depth, --refractionless */
     int ppm, count_insns;
+    const char *trace;  /* --trace FILE */
+    uint32_t traced_w, traced_h, traced_bytes; /* the traced frame's size, broadcast */
 };
 
 static void render_usage(FILE *out)
@@ -63,6 +66,8 @@ static void render_usage(FILE *out)
             "  --view           show the frame memory live (-device ramfb, a display)\n"
             "  --ppm            write PPM (also chosen by an OUT ending in .ppm)\n"
             "  --count-insns    count guest instructions per core and print them\n"
+            "  --trace FILE     write the frame's per-area and per-pixel instruction costs\n"
+            "                   (one scene, one frame; the input of links1 replay)\n"
             "  --timeout S      seconds to wait for every unit computer to report in\n"
             "  --firmware ELF   firmware to boot; --ram MB; --quiet\n",
             RENDER_DEFAULT_NCS, AREAS_DEFAULT_K);
@@ -85,6 +90,7 @@ enum render_opt_code {
     RENDER_OPT_VIEW,
     RENDER_OPT_PPM,
     RENDER_OPT_COUNT_INSNS,
+    RENDER_OPT_TRACE,
 };
 
 static const struct option render_options[] = {
@@ -105,6 +111,7 @@ static const struct option render_options[] = {
     {"view", no_argument, NULL, RENDER_OPT_VIEW},
     {"ppm", no_argument, NULL, RENDER_OPT_PPM},
     {"count-insns", no_argument, NULL, RENDER_OPT_COUNT_INSNS},
+    {"trace", required_argument, NULL, RENDER_OPT_TRACE},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -196,6 +203,10 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
     case RENDER_OPT_COUNT_INSNS:
         o->count_insns = 1;
         return 0;
+    case RENDER_OPT_TRACE:
+        o->trace = c->arg;
+        o->args.flags |= LINK_RENDER_TRACE;
+        return 0;
     }
     return -1; /* CLI_BAD: reported already */
 }
@@ -235,6 +246,11 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
             fprintf(stderr, "links1 render: %s has no -o OUT\n", o->jobs[j].scene);
             return -1;
         }
+    }
+    if (o->trace && (o->njobs > 1 || o->many)) {
+        fprintf(stderr, "links1 render: --trace records one frame of one scene: give one SCENE "
+                "and no --frames\n");
+        return -1;
     }
     return 0;
 }
@@ -280,7 +296,7 @@ static void render_summary(const char *path, const struct link_render_stats *s,
 }
 
 /* One scene on the running board: upload, every frame asked for. */
-static int render_job(struct board *b, const struct render_opts *o, const struct render_job *j)
+static int render_job(struct board *b, struct render_opts *o, const struct render_job *j)
 {
     struct link_scene_info info;
     int rc = render_session_load(b, j->bytes, j->len, &info);
@@ -322,9 +338,35 @@ static int render_job(struct board *b, const struct render_opts *o, const struct
             return -1;
         }
         render_summary(path, &s, &img, a.balance, (double)(board_now_ms() - t0) / 1000.0);
+        o->traced_w = (uint32_t)img.width;
+        o->traced_h = (uint32_t)img.height;
+        o->traced_bytes = s.blob_bytes;
         image_free(&img);
     }
     return 0;
+}
+
+/* The trace of the one frame rendered, from the plugin's marks. */
+static int render_write_trace(const struct render_opts *o, const char *marks_path)
+{
+    struct trace t;
+    char err[TRACE_ERR_MAX];
+    uint32_t ncs = (uint32_t)o->board.ncores - 2;
+    if (trace_decode_marks(marks_path, o->traced_w, o->traced_h, ncs, &t, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 render: --trace %s: %s\n", o->trace, err);
+        return -1;
+    }
+    t.balance = o->args.balance;
+    t.k = o->args.areas;
+    t.flags = o->args.flags & ~(uint32_t)LINK_RENDER_TRACE;
+    t.broadcast_bytes = o->traced_bytes;
+    int rc = trace_write(o->trace, &t, err, sizeof err);
+    if (rc != 0)
+        fprintf(stderr, "links1 render: --trace: %s\n", err);
+    else
+        printf("links1 render: trace of %u areas written to %s\n", (unsigned)t.nareas, o->trace);
+    trace_free(&t);
+    return rc;
 }
 
 int cmd_render(int argc, char **argv)
@@ -336,6 +378,17 @@ int cmd_render(int argc, char **argv)
     if (render_read_scenes(&o) != 0) {
         render_free_scenes(&o);
         return 1;
+    }
+    char marks_path[] = "/tmp/links1-marks-XXXXXX";
+    if (o.trace) {
+        int fd = mkstemp(marks_path);
+        if (fd < 0) {
+            perror("links1: temporary file for the trace marks");
+            render_free_scenes(&o);
+            return 1;
+        }
+        close(fd);
+        o.board.insn_trace_out = marks_path;
     }
     char insn_path[] = "/tmp/links1-insns-XXXXXX";
     if (o.count_insns) {
@@ -369,6 +422,11 @@ int cmd_render(int argc, char **argv)
         if (insn_report_print(insn_path, o.board.ncores) < 0)
             rc = 1;
         unlink(insn_path);
+    }
+    if (o.trace) {
+        if (rc == 0 && render_write_trace(&o, marks_path) != 0)
+            rc = 1;
+        unlink(marks_path);
     }
     render_free_scenes(&o);
     return rc;

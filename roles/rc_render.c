@@ -16,6 +16,7 @@
 #include "kernel/task.h"
 #include "proto/hostlink.h"
 #include "proto/insn_mark.h"
+#include "proto/render_link.h"
 #include "proto/textfmt.h"
 #include "proto/wire.h"
 #include "render/blob.h"
@@ -47,6 +48,9 @@ struct rc_run {
     render_stats_t stats;
     uint32_t nc_high_max, nc_private;
     int32_t status;                /* first error, LINK_OK if none */
+    int trace;                     /* LINK_RENDER_TRACE: write trace marks */
+    int handed;                    /* the last message served handed out ... */
+    struct area last;              /* ... this area */
     char why[LINE_MAX_PAYLOAD - 4];
 };
 
@@ -92,6 +96,7 @@ static void rc_send_nc(uint32_t nc, struct line_msg *m)
 /* Answers one NC's message: the next area, or stop. */
 static void rc_on_nc(struct rc_run *run, uint32_t nc, struct line_msg *m)
 {
+    run->handed = 0;
     if (m->type == MSG_NC_STOPPED) {
         run->state[nc] = RC_NC_STOPPED;
         uint32_t high = wire_get_u32(m->payload);
@@ -121,6 +126,8 @@ static void rc_on_nc(struct rc_run *run, uint32_t nc, struct line_msg *m)
         wire_put_u32(m->payload + 8, a.w);
         wire_put_u32(m->payload + 12, a.h);
         run->state[nc] = RC_NC_BUSY;
+        run->handed = 1;
+        run->last = a;
     } else {
         m->type = MSG_NC_STOP;
         m->len = 0;
@@ -160,9 +167,21 @@ static void rc_serve(struct rc_run *run, struct line_msg *m)
             }
             if (!line_recv_ready_arm(k))
                 continue;
+            if (run->trace)
+                insn_mark_trace_span_begin();
             if (line_try_recv(k, m) == LINE_OK) {
                 rc_on_nc(run, k, m);
                 moved = 1;
+            } else {
+                run->handed = 0;
+            }
+            if (run->trace) {
+                /* The message served: from NC k, and the area it got. */
+                insn_mark_trace_span_end();
+                insn_mark_trace_bits(k, 16);
+                insn_mark_trace_bits((uint32_t)run->handed, 1);
+                insn_mark_trace_bits(run->handed ? run->last.x : 0, 16);
+                insn_mark_trace_bits(run->handed ? run->last.y : 0, 16);
             }
         }
         int pixels_in = rc_frame.filled || run->status != LINK_OK;
@@ -295,10 +314,16 @@ void rc_render_frame(struct line_msg *m)
     memset(&run, 0, sizeof run);
     run.status = LINK_OK;
     run.ncs = board_ncores - UNITS_FIRST_NC;
+    run.trace = (flags & LINK_RENDER_TRACE) != 0;
     uint64_t t0 = ktime_now();
     const render_blob_t *blob = NULL;
     uint32_t blob_bytes = 0;
-    if (rc_broadcast(&run, &blob) == 0) {
+    if (run.trace)
+        insn_mark_trace_span_begin();
+    int bcast = rc_broadcast(&run, &blob);
+    if (run.trace)
+        insn_mark_trace_span_end();
+    if (bcast == 0) {
         blob_bytes = (uint32_t)blob->bytes;
         int r = areas_init(&run.sched, (enum areas_mode)balance, blob->scene.width,
                            blob->scene.height, run.ncs, k);
