@@ -38,3 +38,8 @@ BENCHES += tests/bench/bench_render.sh tests/bench/bench_arith.sh tests/bench/be
 HOST_TESTS += test_render_link
 test_render_link_SRCS := tests/host/test_render_link.c
 test_render_link_ARITH := float
+
+# Frame traces (links1 render --trace) and their replay on equal-speed units.
+HOST_TESTS += test_trace
+test_trace_SRCS := tests/host/test_trace.c host-tools/trace_file.c host-tools/replay.c
+test_trace_ARITH := double
