@@ -60,6 +60,7 @@ static void render_usage(FILE *out)
             "  --size WxH       render at this size instead of the scene's (text scenes)\n"
             "  --max-depth D    --refractionless on|off\n"
             "                   override the scene's recursion depth / transmission past it\n"
+            "  --refraction on|off  off: transmitted rays never bend, at any depth\n"
             "  --no-yclip --no-xclip --no-bbox --no-hierarchy\n"
             "                   switch a speed-up off (the image stays the same)\n"
             "  --no-auto-hierarchy  compile without the automatic hierarchy (text scenes)\n"
@@ -82,6 +83,7 @@ enum render_opt_code {
     RENDER_OPT_SIZE,
     RENDER_OPT_MAX_DEPTH,
     RENDER_OPT_REFRACTIONLESS,
+    RENDER_OPT_REFRACTION,
     RENDER_OPT_NO_YCLIP,
     RENDER_OPT_NO_XCLIP,
     RENDER_OPT_NO_BBOX,
@@ -103,6 +105,7 @@ static const struct option render_options[] = {
     {"size", required_argument, NULL, RENDER_OPT_SIZE},
     {"max-depth", required_argument, NULL, RENDER_OPT_MAX_DEPTH},
     {"refractionless", required_argument, NULL, RENDER_OPT_REFRACTIONLESS},
+    {"refraction", required_argument, NULL, RENDER_OPT_REFRACTION},
     {"no-yclip", no_argument, NULL, RENDER_OPT_NO_YCLIP},
     {"no-xclip", no_argument, NULL, RENDER_OPT_NO_XCLIP},
     {"no-bbox", no_argument, NULL, RENDER_OPT_NO_BBOX},
@@ -178,6 +181,11 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
         if (strcmp(c->arg, "on") != 0 && strcmp(c->arg, "off") != 0)
             return cli_bad_value(c, "on or off");
         o->scene.refractionless = strcmp(c->arg, "on") == 0;
+        return 0;
+    case RENDER_OPT_REFRACTION:
+        if (strcmp(c->arg, "on") != 0 && strcmp(c->arg, "off") != 0)
+            return cli_bad_value(c, "on or off");
+        o->scene.refraction = strcmp(c->arg, "on") == 0;
         return 0;
     case RENDER_OPT_NO_YCLIP:
         o->args.flags |= LINK_RENDER_NO_YCLIP;

@@ -23,7 +23,7 @@ test_fwcfg_ARITH := double
 # (64 NCs too, every mode x arithmetic x scene) is `make test-full`.
 BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
 	tests/board/render_anim.sh tests/board/render_refuse.sh tests/board/render_view.sh \
-	tests/board/render_spd.sh tests/board/render_trace.sh
+	tests/board/render_spd.sh tests/board/render_trace.sh tests/board/render_refraction.sh
 RENDER_FULL_TESTS := tests/board/render_grid_full.sh
 
 .PHONY: test-full
