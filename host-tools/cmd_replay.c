@@ -35,11 +35,17 @@ static void replay_usage(FILE *out)
             "  --mips R         instructions per microsecond of every unit (default %.1f)\n"
             "  --line-us U      latency of one serial-line message (default %.0f)\n"
             "  --byte-us B      microseconds per byte on a line (default %.1f: 19,200 baud)\n"
-            "  --prefetch       an NC asks for its next area when it starts one\n"
+            "  --prefetch       an NC asks for its next area one round trip before it\n"
+            "                   expects to finish the current one\n"
+            "  --guided F       decreasing: each area takes 1/(F * NCs) of what is left\n"
+            "                   (default %u)\n"
+            "  --pipelined      the DM prepared the frame during the previous one: the\n"
+            "                   frame starts at the RC's broadcast\n"
             "  --as-recorded    each NC gets the areas the board gave it, in its order\n"
             "  --per-nc         also print each NC's instructions\n"
             "  --check          check that the replay is a legal handout of the schedule\n",
-            REPLAY_DEFAULT_MIPS, REPLAY_DEFAULT_LINE_US, REPLAY_DEFAULT_BYTE_US);
+            REPLAY_DEFAULT_MIPS, REPLAY_DEFAULT_LINE_US, REPLAY_DEFAULT_BYTE_US,
+            AREAS_GUIDED_FACTOR);
 }
 
 enum replay_opt_code {
@@ -50,6 +56,8 @@ enum replay_opt_code {
     REPLAY_OPT_LINE_US,
     REPLAY_OPT_BYTE_US,
     REPLAY_OPT_PREFETCH,
+    REPLAY_OPT_GUIDED,
+    REPLAY_OPT_PIPELINED,
     REPLAY_OPT_AS_RECORDED,
     REPLAY_OPT_PER_NC,
     REPLAY_OPT_CHECK,
@@ -63,6 +71,8 @@ static const struct option replay_options[] = {
     {"line-us", required_argument, NULL, REPLAY_OPT_LINE_US},
     {"byte-us", required_argument, NULL, REPLAY_OPT_BYTE_US},
     {"prefetch", no_argument, NULL, REPLAY_OPT_PREFETCH},
+    {"guided", required_argument, NULL, REPLAY_OPT_GUIDED},
+    {"pipelined", no_argument, NULL, REPLAY_OPT_PIPELINED},
     {"as-recorded", no_argument, NULL, REPLAY_OPT_AS_RECORDED},
     {"per-nc", no_argument, NULL, REPLAY_OPT_PER_NC},
     {"check", no_argument, NULL, REPLAY_OPT_CHECK},
@@ -121,6 +131,14 @@ static int replay_take(struct replay_opts *o, const struct cli *c, int code)
         return cli_double(c, 0, 0, 1e9, "microseconds, 0 or more", &o->cfg.byte_us);
     case REPLAY_OPT_PREFETCH:
         o->cfg.prefetch = 1;
+        return 0;
+    case REPLAY_OPT_GUIDED:
+        if (cli_long(c, 10, 1, AREAS_MAX_GUIDED_FACTOR, &n) < 0)
+            return -1;
+        o->cfg.guided = (uint32_t)n;
+        return 0;
+    case REPLAY_OPT_PIPELINED:
+        o->cfg.pipelined = 1;
         return 0;
     case REPLAY_OPT_AS_RECORDED:
         o->cfg.as_recorded = 1;

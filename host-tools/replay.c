@@ -136,6 +136,8 @@ int replay_run(const struct trace *t, const struct replay_cfg *c, struct replay_
     src.as_recorded = c->as_recorded;
     int st = areas_init(&src.sched, c->as_recorded ? AREAS_STATIC : c->balance, t->width,
                         t->height, c->ncs, c->k);
+    if (st == AREAS_OK && c->guided)
+        st = areas_set_guided_factor(&src.sched, c->guided);
     if (st != AREAS_OK)
         return replay_fail(err, cap, "area schedule: %s", areas_strerror(st));
     struct replay_pricer p;
@@ -173,7 +175,7 @@ int replay_run(const struct trace *t, const struct replay_cfg *c, struct replay_
             src.list[t->areas[i].nc][t->areas[i].order] = i;
     }
     double us_per = 1.0 / c->mips; /* microseconds per instruction */
-    double t0 = (double)(t->dm_prepare + t->rc_broadcast) * us_per;
+    double t0 = (double)((c->pipelined ? 0 : t->dm_prepare) + t->rc_broadcast) * us_per;
     for (uint32_t n = 0; n < c->ncs; n++) {
         uint64_t setup = c->as_recorded ? t->nc_setup[n] : p.setup_mean;
         r->nc_setup_end[n] = busy_until[n] = t0 + (double)setup * us_per;
@@ -220,7 +222,14 @@ int replay_run(const struct trace *t, const struct replay_cfg *c, struct replay_
         busy_until[nc] = end;
         computing[nc] += end - start;
         r->nc_insns[nc] += insns;
-        sent[nc] = c->prefetch ? start : end;
+        if (c->prefetch) {
+            /* One round trip before the area's end, never before its start. */
+            double lead = replay_line(c, REPLAY_REQUEST_BYTES) + replay_line(c, REPLAY_ANSWER_BYTES) +
+                          (double)p.rc_mean * us_per;
+            sent[nc] = end - lead > start ? end - lead : start;
+        } else {
+            sent[nc] = end;
+        }
         pending[nc] = sent[nc] + replay_line(c, REPLAY_REQUEST_BYTES);
     }
     double frame = t0;
@@ -266,7 +275,8 @@ int replay_check_legal(const struct trace *t, const struct replay_cfg *c,
     }
     struct areas sched;
     if (!c->as_recorded &&
-        areas_init(&sched, c->balance, t->width, t->height, c->ncs, c->k) != AREAS_OK) {
+        (areas_init(&sched, c->balance, t->width, t->height, c->ncs, c->k) != AREAS_OK ||
+         (c->guided && areas_set_guided_factor(&sched, c->guided) != AREAS_OK))) {
         rc = replay_fail(err, cap, "bad schedule");
         goto out;
     }

@@ -8,8 +8,10 @@
  *   - The RC serves one request at a time, in the order they arrive, and
  *     answers with the schedule's next area (or stop).
  *   - An NC computes its area, then asks again; with prefetch it asks for
- *     the next area as soon as it starts one, so the answer is there when
- *     it finishes.
+ *     the next area one round trip (both lines and the RC's mean service)
+ *     before it expects to finish the current one, never before it starts
+ *     it: an NC knows how many of the area's pixels are left, and the
+ *     replay takes its estimate of the time they need as exact.
  * An area the trace holds costs exactly what the board counted.  Any
  * other area is priced from the trace's per-pixel costs, plus the set-up
  * of the traced area holding its first pixel and the push of that traced
@@ -37,7 +39,10 @@ struct replay_cfg {
     enum areas_mode balance;
     uint32_t k;           /* --areas (0: AREAS_DEFAULT_K) */
     double mips, line_us, byte_us;
-    int prefetch;         /* ask for the next area on starting one */
+    int prefetch;         /* ask for the next area a round trip before the end */
+    uint32_t guided;      /* decreasing: the guided factor (0: AREAS_GUIDED_FACTOR) */
+    int pipelined;        /* the DM prepared the frame while the previous one
+                             rendered: the frame starts at the broadcast */
     int as_recorded;      /* hand each NC the areas the board gave it, in
                              its order (ncs must be the trace's) */
 };

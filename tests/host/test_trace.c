@@ -176,7 +176,8 @@ static void test_static_replay_is_exact(void)
     for (uint32_t i = 0; i < t.nareas; i++)
         board[t.areas[i].nc] += t.areas[i].total;
     for (int as_recorded = 0; as_recorded <= 1; as_recorded++) {
-        struct replay_cfg c = {8, AREAS_STATIC, 0, 1.0, 1000, 520.8, 0, as_recorded};
+        struct replay_cfg c = {.ncs = 8, .balance = AREAS_STATIC, .mips = 1.0, .line_us = 1000,
+                              .byte_us = 520.8, .as_recorded = as_recorded};
         struct replay_result r;
         CHECK_EQ_INT(replay_run(&t, &c, &r, err, sizeof err), 0);
         CHECK_EQ_INT(r.nareas, 8);
@@ -211,8 +212,11 @@ static void test_dynamic_replay_is_legal(void)
     for (int mode = AREAS_DYNAMIC; mode <= AREAS_DECREASING; mode++)
         for (size_t i = 0; i < sizeof ncs / sizeof ncs[0]; i++)
             for (int pre = 0; pre <= 1; pre++) {
-                struct replay_cfg c = {ncs[i], (enum areas_mode)mode, 256, 1.0, 1000, 520.8,
-                                       pre, 0};
+                struct replay_cfg c = {.ncs = ncs[i], .balance = (enum areas_mode)mode,
+                                       .k = 256, .mips = 1.0, .line_us = 1000,
+                                       .byte_us = 520.8, .prefetch = pre,
+                                       .guided = mode == AREAS_DECREASING ? 1u + (uint32_t)i : 0,
+                                       .pipelined = pre};
                 struct replay_result r;
                 CHECK_EQ_INT(replay_run(&t, &c, &r, err, sizeof err), 0);
                 int ok = replay_check_legal(&t, &c, &r, err, sizeof err);
@@ -240,7 +244,7 @@ static void test_dynamic_replay_is_legal(void)
                 replay_free(&r);
             }
     /* One NC replayed on one NC: the frame is its work plus the lines. */
-    struct replay_cfg c1 = {1, AREAS_DYNAMIC, 64, 2.0, 0, 0, 0, 0};
+    struct replay_cfg c1 = {.ncs = 1, .balance = AREAS_DYNAMIC, .k = 64, .mips = 2.0};
     struct replay_result r1;
     CHECK_EQ_INT(replay_run(&t, &c1, &r1, err, sizeof err), 0);
     uint64_t all = t.dm_prepare + t.rc_broadcast + t.nc_setup[0];
@@ -257,7 +261,7 @@ static void test_replay_refuses_bad_settings(void)
     char err[TRACE_ERR_MAX];
     make_trace(&t, AREAS_STATIC, 8, 8, 2, 0);
     struct replay_result r;
-    struct replay_cfg c = {0, AREAS_DYNAMIC, 4, 1.0, 0, 0, 0, 0};
+    struct replay_cfg c = {.ncs = 0, .balance = AREAS_DYNAMIC, .k = 4, .mips = 1.0};
     CHECK(replay_run(&t, &c, &r, err, sizeof err) != 0 && strstr(err, "NC count"));
     c.ncs = 2;
     c.mips = 0;
@@ -266,6 +270,10 @@ static void test_replay_refuses_bad_settings(void)
     c.ncs = 3;
     c.as_recorded = 1;
     CHECK(replay_run(&t, &c, &r, err, sizeof err) != 0 && strstr(err, "as-recorded"));
+    c.as_recorded = 0;
+    c.balance = AREAS_DECREASING;
+    c.guided = AREAS_MAX_GUIDED_FACTOR + 1;
+    CHECK(replay_run(&t, &c, &r, err, sizeof err) != 0 && strstr(err, "guided factor"));
     trace_free(&t);
 }
 
