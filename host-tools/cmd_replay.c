@@ -41,6 +41,7 @@ static void replay_usage(FILE *out)
             "                   (default %u)\n"
             "  --pipelined      the DM prepared the frame during the previous one: the\n"
             "                   frame starts at the RC's broadcast\n"
+            "  --first-in-broadcast  the RC puts each NC's first area into the broadcast\n"
             "  --as-recorded    each NC gets the areas the board gave it, in its order\n"
             "  --per-nc         also print each NC's instructions\n"
             "  --check          check that the replay is a legal handout of the schedule\n",
@@ -58,6 +59,7 @@ enum replay_opt_code {
     REPLAY_OPT_PREFETCH,
     REPLAY_OPT_GUIDED,
     REPLAY_OPT_PIPELINED,
+    REPLAY_OPT_FIRST_IN_BROADCAST,
     REPLAY_OPT_AS_RECORDED,
     REPLAY_OPT_PER_NC,
     REPLAY_OPT_CHECK,
@@ -73,6 +75,7 @@ static const struct option replay_options[] = {
     {"prefetch", no_argument, NULL, REPLAY_OPT_PREFETCH},
     {"guided", required_argument, NULL, REPLAY_OPT_GUIDED},
     {"pipelined", no_argument, NULL, REPLAY_OPT_PIPELINED},
+    {"first-in-broadcast", no_argument, NULL, REPLAY_OPT_FIRST_IN_BROADCAST},
     {"as-recorded", no_argument, NULL, REPLAY_OPT_AS_RECORDED},
     {"per-nc", no_argument, NULL, REPLAY_OPT_PER_NC},
     {"check", no_argument, NULL, REPLAY_OPT_CHECK},
@@ -139,6 +142,9 @@ static int replay_take(struct replay_opts *o, const struct cli *c, int code)
         return 0;
     case REPLAY_OPT_PIPELINED:
         o->cfg.pipelined = 1;
+        return 0;
+    case REPLAY_OPT_FIRST_IN_BROADCAST:
+        o->cfg.first_in_broadcast = 1;
         return 0;
     case REPLAY_OPT_AS_RECORDED:
         o->cfg.as_recorded = 1;

@@ -184,6 +184,59 @@ int replay_run(const struct trace *t, const struct replay_cfg *c, struct replay_
         pending[n] = sent[n] + replay_line(c, REPLAY_REQUEST_BYTES);
     }
     double rc_free = t0, rc_busy = 0;
+    if (c->first_in_broadcast) {
+        /* The RC takes each NC's first area from the schedule before the
+         * broadcast goes out; the NCs start on it after their set-up. */
+        struct area *first = calloc(c->ncs, sizeof *first);
+        uint64_t *first_insns = calloc(c->ncs, sizeof *first_insns);
+        int *first_exact = calloc(c->ncs, sizeof *first_exact);
+        int *have = calloc(c->ncs, sizeof *have);
+        if (!first || !first_insns || !first_exact || !have) {
+            free(first);
+            free(first_insns);
+            free(first_exact);
+            free(have);
+            replay_fail(err, cap, "out of memory");
+            goto out;
+        }
+        for (uint32_t n = 0; n < c->ncs; n++) {
+            uint64_t rc_insns = p.rc_mean;
+            have[n] = replay_next(&src, n, &first[n]);
+            if (have[n])
+                first_insns[n] = replay_price(&p, &first[n], &first_exact[n], &rc_insns);
+            rc_free += (double)rc_insns * us_per;
+        }
+        rc_busy += rc_free - t0;
+        for (uint32_t n = 0; n < c->ncs; n++) {
+            double shift = rc_free - t0;
+            r->nc_setup_end[n] += shift;
+            busy_until[n] += shift;
+            if (!have[n]) {
+                pending[n] = INFINITY;
+                continue;
+            }
+            double start = busy_until[n], end = start + (double)first_insns[n] * us_per;
+            struct replay_area *ra = &r->areas[r->nareas++];
+            *ra = (struct replay_area){first[n].x, first[n].y, first[n].w, first[n].h, n,
+                                       first_insns[n], first_exact[n], 1, t0, t0, rc_free,
+                                       start, end};
+            r->exact += (uint32_t)first_exact[n];
+            busy_until[n] = end;
+            computing[n] += end - start;
+            r->nc_insns[n] += first_insns[n];
+            sent[n] = end;
+            if (c->prefetch) {
+                double lead = replay_line(c, REPLAY_REQUEST_BYTES) +
+                              replay_line(c, REPLAY_ANSWER_BYTES) + (double)p.rc_mean * us_per;
+                sent[n] = end - lead > start ? end - lead : start;
+            }
+            pending[n] = sent[n] + replay_line(c, REPLAY_REQUEST_BYTES);
+        }
+        free(first);
+        free(first_insns);
+        free(first_exact);
+        free(have);
+    }
     for (;;) {
         uint32_t nc = 0;
         double first = INFINITY;
@@ -216,8 +269,8 @@ int replay_run(const struct trace *t, const struct replay_cfg *c, struct replay_
         double start = arrive > busy_until[nc] ? arrive : busy_until[nc];
         double end = start + (double)insns * us_per;
         struct replay_area *ra = &r->areas[r->nareas++];
-        *ra = (struct replay_area){a.x, a.y, a.w, a.h, nc, insns, exact, sent[nc], s, e, start,
-                                   end};
+        *ra = (struct replay_area){a.x, a.y, a.w, a.h, nc, insns, exact, 0, sent[nc], s, e,
+                                   start, end};
         r->exact += (uint32_t)exact;
         busy_until[nc] = end;
         computing[nc] += end - start;
@@ -287,6 +340,7 @@ int replay_check_legal(const struct trace *t, const struct replay_cfg *c,
     }
     for (uint32_t n2 = 0; n2 < c->ncs; n2++)
         last_end[n2] = last_start[n2] = r->nc_setup_end[n2];
+    /* Requests the RC served: each starts after the one before it ended. */
     double rc_free = 0;
     for (uint32_t i = 0; i < r->nareas && rc == 0; i++) {
         const struct replay_area *a = &r->areas[i];
@@ -300,10 +354,17 @@ int replay_check_legal(const struct trace *t, const struct replay_cfg *c,
             rc = replay_fail(err, cap, "area %" PRIu32 " went to NC %" PRIu32, i, a->nc);
             break;
         }
-        double line_req = replay_line(c, REPLAY_REQUEST_BYTES);
-        double line_ans = replay_line(c, REPLAY_ANSWER_BYTES);
+        double line_req = a->in_broadcast ? 0 : replay_line(c, REPLAY_REQUEST_BYTES);
+        double line_ans = a->in_broadcast ? 0 : replay_line(c, REPLAY_ANSWER_BYTES);
         double asked_after = c->prefetch ? last_start[a->nc] : last_end[a->nc];
-        if (a->request_sent + eps < asked_after)
+        if (a->in_broadcast && (!c->first_in_broadcast || i >= c->ncs || a->nc != i))
+            rc = replay_fail(err, cap, "area %" PRIu32 " came with the broadcast, but it is "
+                             "not NC %" PRIu32 "'s first", i, a->nc);
+        else if (a->in_broadcast && a->start + eps < a->serve_end)
+            rc = replay_fail(err, cap, "area %" PRIu32 ": started before the broadcast", i);
+        else if (a->in_broadcast)
+            ; /* no request, no line */
+        else if (a->request_sent + eps < asked_after)
             rc = replay_fail(err, cap, "area %" PRIu32 ": NC %" PRIu32 " asked before it %s "
                              "its previous area", i, a->nc, c->prefetch ? "started" : "finished");
         else if (a->serve_start + eps < a->request_sent + line_req)

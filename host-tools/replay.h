@@ -43,6 +43,8 @@ struct replay_cfg {
     uint32_t guided;      /* decreasing: the guided factor (0: AREAS_GUIDED_FACTOR) */
     int pipelined;        /* the DM prepared the frame while the previous one
                              rendered: the frame starts at the broadcast */
+    int first_in_broadcast; /* the RC puts each NC's first area into the
+                             broadcast: no first request */
     int as_recorded;      /* hand each NC the areas the board gave it, in
                              its order (ncs must be the trace's) */
 };
@@ -53,6 +55,7 @@ struct replay_area {
     uint32_t nc;
     uint64_t insns;        /* the NC's instructions for it */
     int exact;             /* 1: the trace holds this area */
+    int in_broadcast;      /* 1: an NC's first area, sent with the broadcast */
     double request_sent;   /* the NC sent the request that got it */
     double serve_start, serve_end; /* the RC serving that request */
     double start, end;     /* the NC computing it */

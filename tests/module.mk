@@ -23,7 +23,8 @@ test_fwcfg_ARITH := double
 # (64 NCs too, every mode x arithmetic x scene) is `make test-full`.
 BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
 	tests/board/render_anim.sh tests/board/render_refuse.sh tests/board/render_view.sh \
-	tests/board/render_spd.sh tests/board/render_trace.sh tests/board/render_refraction.sh
+	tests/board/render_spd.sh tests/board/render_trace.sh tests/board/render_refraction.sh \
+	tests/board/figures_small.sh
 RENDER_FULL_TESTS := tests/board/render_grid_full.sh
 
 .PHONY: test-full
@@ -43,3 +44,10 @@ test_render_link_ARITH := float
 HOST_TESTS += test_trace
 test_trace_SRCS := tests/host/test_trace.c host-tools/trace_file.c host-tools/replay.c
 test_trace_ARITH := double
+BENCHES += tests/bench/bench_figures.sh
+
+# The paper's figures and tables (tests/bench/figures.sh) into docs/figures.
+.PHONY: figures
+figures: deps
+	$(Q)$(MAKE) $(JOBS) --no-print-directory all
+	$(Q)FW_DIR=$(FWB) bash tests/bench/figures.sh

@@ -216,7 +216,7 @@ static void test_dynamic_replay_is_legal(void)
                                        .k = 256, .mips = 1.0, .line_us = 1000,
                                        .byte_us = 520.8, .prefetch = pre,
                                        .guided = mode == AREAS_DECREASING ? 1u + (uint32_t)i : 0,
-                                       .pipelined = pre};
+                                       .pipelined = pre, .first_in_broadcast = (int)(i % 2)};
                 struct replay_result r;
                 CHECK_EQ_INT(replay_run(&t, &c, &r, err, sizeof err), 0);
                 int ok = replay_check_legal(&t, &c, &r, err, sizeof err);
@@ -228,18 +228,20 @@ static void test_dynamic_replay_is_legal(void)
                     sum += r.nc_insns[n];
                 CHECK(sum > 0);
                 CHECK(r.busy > 0 && r.busy <= 1.0);
-                if (r.nareas > 2 && ncs[i] > 1) {
+                uint32_t j = r.nareas - 1; /* the last area: a served request */
+                if (r.nareas > c.ncs + 1 && ncs[i] > 1) {
                     /* The RC serving two at once, an area given twice. */
                     struct replay_result bad = r;
-                    double keep = r.areas[1].serve_start;
-                    r.areas[1].serve_start = r.areas[0].serve_start - 1;
+                    double keep = r.areas[j].serve_start;
+                    r.areas[j].serve_start = r.areas[j - 1].serve_start - 1;
                     CHECK(replay_check_legal(&t, &c, &bad, err, sizeof err) != 0);
-                    r.areas[1].serve_start = keep;
-                    struct replay_area a2 = r.areas[2];
-                    r.areas[2].x = r.areas[1].x;
-                    r.areas[2].y = r.areas[1].y;
+                    r.areas[j].serve_start = keep;
+                    struct replay_area a2 = r.areas[j];
+                    r.areas[j].x = r.areas[j - 1].x;
+                    r.areas[j].y = r.areas[j - 1].y;
                     CHECK(replay_check_legal(&t, &c, &bad, err, sizeof err) != 0);
-                    r.areas[2] = a2;
+                    r.areas[j] = a2;
+                    CHECK_EQ_INT(replay_check_legal(&t, &c, &bad, err, sizeof err), 0);
                 }
                 replay_free(&r);
             }
