@@ -29,6 +29,14 @@ struct render_job {
     size_t len;
 };
 
+/* Where a render command's wall time goes, ms, and QEMU's host CPU time
+ * while the board rendered (for the host cores' use). */
+struct render_wall {
+    long long boot, upload, frame, pull, write, shutdown, total;
+    long long board_prepare, board_render;
+    long long render_cpu; /* QEMU's user + system ms during the frames */
+};
+
 struct render_opts {
     struct board_opts board;
     struct render_job jobs[RENDER_MAX_JOBS];
@@ -39,6 +47,7 @@ struct render_opts {
     struct scene_file_opts scene; /* --size, --max-depth, --refractionless */
     int ppm, count_insns;
     const char *trace;  /* --trace FILE */
+    struct render_wall wall; /* where the command's wall time went */
     uint32_t traced_w, traced_h, traced_bytes; /* the traced frame's size, broadcast */
 };
 
@@ -303,11 +312,33 @@ static void render_summary(const char *path, const struct link_render_stats *s,
     fflush(stdout);
 }
 
+/* QEMU's user + system CPU time so far, ms (/proc/PID/stat), or -1. */
+static long long render_qemu_cpu_ms(pid_t pid)
+{
+    char path[64], buf[1024];
+    snprintf(path, sizeof path, "/proc/%d/stat", (int)pid);
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return -1;
+    size_t n = fread(buf, 1, sizeof buf - 1, f);
+    fclose(f);
+    buf[n] = 0;
+    const char *p = strrchr(buf, ')'); /* the command name may hold spaces */
+    unsigned long long ut = 0, st = 0;
+    if (!p || sscanf(p + 2, "%*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %llu %llu", &ut,
+                     &st) != 2)
+        return -1;
+    long hz = sysconf(_SC_CLK_TCK);
+    return hz > 0 ? (long long)((ut + st) * 1000ull / (unsigned long long)hz) : -1;
+}
+
 /* One scene on the running board: upload, every frame asked for. */
 static int render_job(struct board *b, struct render_opts *o, const struct render_job *j)
 {
     struct link_scene_info info;
+    long long t_load = board_now_ms();
     int rc = render_session_load(b, j->bytes, j->len, &info);
+    o->wall.upload += board_now_ms() - t_load;
     if (rc != 0) {
         fprintf(stderr, "links1 render: %s was not loaded\n", j->scene);
         return -1;
@@ -329,10 +360,21 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         if (f < last)
             a.flags |= LINK_RENDER_PREPARE_NEXT;
         long long t0 = board_now_ms();
+        long long cpu0 = render_qemu_cpu_ms(b->qemu_pid);
         struct link_render_stats s;
         struct image img = {0, 0, NULL};
-        if (render_session_frame(b, &a, isatty(2), &s) != 0 || render_session_pull(b, &img) != 0)
+        if (render_session_frame(b, &a, isatty(2), &s) != 0)
             return -1;
+        long long t1 = board_now_ms(), cpu1 = render_qemu_cpu_ms(b->qemu_pid);
+        o->wall.frame += t1 - t0;
+        o->wall.board_prepare += s.prepare_ms;
+        o->wall.board_render += s.render_ms;
+        if (cpu0 >= 0 && cpu1 >= 0)
+            o->wall.render_cpu += cpu1 - cpu0;
+        if (render_session_pull(b, &img) != 0)
+            return -1;
+        long long t2 = board_now_ms();
+        o->wall.pull += t2 - t1;
         char path[4096], err[SD_ERR_MAX];
         if (o->many)
             scene_file_frame_path(j->out, f, path, sizeof path);
@@ -345,6 +387,7 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
             image_free(&img);
             return -1;
         }
+        o->wall.write += board_now_ms() - t2;
         render_summary(path, &s, &img, a.balance, (double)(board_now_ms() - t0) / 1000.0);
         o->traced_w = (uint32_t)img.width;
         o->traced_h = (uint32_t)img.height;
@@ -352,6 +395,18 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         image_free(&img);
     }
     return 0;
+}
+
+/* One line accounting for the command's wall time (bench_wallclock.sh). */
+static void render_print_wall(const struct render_wall *w)
+{
+    long long other = w->total - w->boot - w->upload - w->frame - w->pull - w->write - w->shutdown;
+    printf("links1 render: wall %lld ms: boot %lld, upload %lld, frames %lld (board: prepare "
+           "%lld, render %lld), pull %lld, write %lld, shutdown %lld, other %lld; QEMU CPU "
+           "while rendering %lld ms (%.2f host cores)\n",
+           w->total, w->boot, w->upload, w->frame, w->board_prepare, w->board_render, w->pull,
+           w->write, w->shutdown, other, w->render_cpu,
+           w->frame > 0 ? (double)w->render_cpu / (double)w->frame : 0.0);
 }
 
 /* The trace of the one frame rendered, from the plugin's marks. */
@@ -411,15 +466,22 @@ int cmd_render(int argc, char **argv)
     }
     struct board b;
     int rc = 1;
+    long long t_start = board_now_ms();
     if (board_start(&b, &o.board) == 0 &&
         board_wait_reported(&b, o.board.timeout_s * 1000) == 0) {
+        o.wall.boot = board_now_ms() - t_start;
         rc = 0;
         for (int j = 0; j < o.njobs; j++)
             if (render_job(&b, &o, &o.jobs[j]) != 0)
                 rc = 1;
     }
+    long long t_stop = board_now_ms();
     if (board_stop(&b) < 0)
         rc = 1;
+    o.wall.shutdown = board_now_ms() - t_stop;
+    o.wall.total = board_now_ms() - t_start;
+    if (rc == 0)
+        render_print_wall(&o.wall);
     if (board_report_link_errors(&b))
         rc = 1;
     if (b.nfaults) {

@@ -51,3 +51,4 @@ BENCHES += tests/bench/bench_figures.sh
 figures: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all
 	$(Q)FW_DIR=$(FWB) bash tests/bench/figures.sh
+BENCHES += tests/bench/bench_wallclock.sh

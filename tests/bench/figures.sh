@@ -27,6 +27,8 @@ else
     K10="64 128 256 512 1024 2048 4096 8192 16384" T2SPD="tetra 5" SIZE2=128x96 SIZE3=256x240
     T2K="2400 480"
 fi
+SIZE2=${FIG_T2_SIZE:-$SIZE2}
+PARTS=" ${FIG_PARTS:-7 10 2 3} " # which figures to make
 # The tuned replay (docs/RESULTS.md): decreasing areas, an NC asking for its
 # next area a round trip before it finishes, the DM preparing the frame
 # while the previous one renders; per NC count the best smallest-area bound
@@ -62,6 +64,7 @@ nc_max() { sed -nE 's/.*max ([0-9]+),.*/\1/p' "$1"; }
 field() { awk -v k="$1" '$1 == "ncs" { for (i = 1; i < NF; i++) if ($i == k) print $(i + 1) }'; }
 
 # ---- Fig. 7: speed-up against NCs ----
+if [[ $PARTS == *" 7 "* ]]; then
 echo "figures: Fig. 7 (demo.scn $SIZE7)"
 T7="$TMP/fig7.trace"
 declare -A BOARD_S
@@ -130,8 +133,10 @@ plot x title "linear" with lines dt 2 lc rgb "gray", \
 64 63.07
 e
 GP
+fi
 
 # ---- Fig. 10: simple dynamic balancing, 64 NCs, shadows off ----
+if [[ $PARTS == *" 10 "* ]]; then
 echo "figures: Fig. 10 (demo.scn, shadows off, $SIZE10)"
 sed 's/^options {/options { shadows off/' scenes/demo.scn >"$TMP/noshadow.scn"
 ln -sfn "$PWD/scenes/maps" "$TMP/maps" # the scene's image maps, by relative path
@@ -170,8 +175,10 @@ set xlabel "areas"; set ylabel "frame time, s (units at 1 MIPS)"
 set logscale x 2; set grid; set key top right
 plot "$OUT/fig10.dat" using 1:2 title "replay" with linespoints pt 7
 GP
+fi
 
 # ---- Table 2: the speed-ups one by one, 16 NCs ----
+if [[ $PARTS == *" 2 "* ]]; then
 echo "figures: Table 2 (SPD $T2SPD, $SIZE2)"
 "$SPD" $T2SPD -o "$TMP/t2.scn" --size "$SIZE2" >"$TMP/spd.log" 2>&1 || fail "links1-spd $T2SPD"
 prims=$(sed -nE 's/.*: ([0-9]+) spheres, ([0-9]+) triangles.*/\1 spheres, \2 triangles/p' "$TMP/spd.log")
@@ -203,8 +210,10 @@ for row in "${rows[@]}"; do
         'BEGIN { printf "| %s | %.1f | %.1fx | %.1f | %.1fx |\n", n, a / 1000, na / a, b / 1000, nb / b }' \
         >>"$OUT/table2.md"
 done
+fi
 
 # ---- Table 3: refracting against refractionless transmission ----
+if [[ $PARTS == *" 3 "* ]]; then
 echo "figures: Table 3 (glass.scn, $SIZE3)"
 {
     echo "Table 3: glass.scn at $SIZE3, its own depth (max_depth 6), 16 NCs, decreasing"
@@ -226,6 +235,7 @@ for mode in on off; do
         'BEGIN { printf "| %s | %.1f | %.1f | %s |\n", n, ms / 1000, t / 1e6, r }' >>"$OUT/table3.md"
 done
 awk -v a="$ms_on" -v b="$ms_off" 'BEGIN { printf "\nRefracting takes %.2fx the time of never bending (the paper: 212 s against 82 s, 2.6x).\n", a / b }' >>"$OUT/table3.md"
+fi
 for f in fig7.png fig10.png fig7.md fig10.md table2.md table3.md; do
     [ -s "$OUT/$f" ] || fail "$OUT/$f was not written"
 done
