@@ -192,8 +192,8 @@ set -- $T2K
     echo "previous frame (trace: links1 render T2.scn --ncs 2 SWITCHES --trace T; replay:"
     echo "links1 replay T --ncs 16 --balance dynamic --areas K --pipelined)."
     echo
-    echo "| speed-ups | $1 areas: frame s | vs none | $2 areas: frame s | vs none |"
-    echo "|---|---|---|---|---|"
+    echo "| speed-ups | board: NC instructions (M) | $1 areas: frame s | vs none | $2 areas: frame s | vs none |"
+    echo "|---|---|---|---|---|---|"
 } >"$OUT/table2.md"
 none1= none2=
 r=0
@@ -206,8 +206,9 @@ for row in "${rows[@]}"; do
         >"$TMP/r2b.txt" || fail "replay table 2"
     a=$(field frame_ms <"$TMP/r2a.txt") b=$(field frame_ms <"$TMP/r2b.txt")
     [ -z "$none1" ] && none1=$a none2=$b
-    awk -v n="${row%%|*}" -v a="$a" -v b="$b" -v na="$none1" -v nb="$none2" \
-        'BEGIN { printf "| %s | %.1f | %.1fx | %.1f | %.1fx |\n", n, a / 1000, na / a, b / 1000, nb / b }' \
+    insns=$(awk '$1 == "area" { s += $15 } END { printf "%.1f", s / 1e6 }' "$TMP/t2-$r.trace")
+    awk -v n="${row%%|*}" -v a="$a" -v b="$b" -v na="$none1" -v nb="$none2" -v m="$insns" \
+        'BEGIN { printf "| %s | %s | %.1f | %.1fx | %.1f | %.1fx |\n", n, m, a / 1000, na / a, b / 1000, nb / b }' \
         >>"$OUT/table2.md"
 done
 fi
