@@ -25,7 +25,10 @@ for n in 1 2; do
     for r in $(seq "$RUNS"); do
         timeout 900 "$LINKS1" render --quiet scenes/demo.scn --size "$SIZE" --ncs "$n" \
             -o "$TMP/out.ppm" >"$TMP/log" 2>&1 || { echo "bench_wallclock: render failed:" >&2; tail -3 "$TMP/log" >&2; exit 1; }
-        grep 'links1 render: wall' "$TMP/log" | sed -E 's/.*wall ([0-9]+) ms: boot ([0-9]+), upload ([0-9]+), frames ([0-9]+) \(board: prepare ([0-9]+), render ([0-9]+)\), pull ([0-9]+), write ([0-9]+), shutdown ([0-9]+), other ([-0-9]+); QEMU CPU while rendering ([0-9]+) ms \(([0-9.]+) host cores\)/\1 \2 \3 \4 \7 \8 \9 \12/' >>"$TMP/lines"
+        # The numbers of the wall line in order: total, boot, upload, frames,
+        # prepare, render, pull, write, shutdown, other, QEMU CPU ms, cores.
+        grep 'links1 render: wall' "$TMP/log" | sed 's/^links1 render: //' | grep -o '[-0-9.]\+' |
+            tr '\n' ' ' | awk '{ print $1, $2, $3, $4, $7, $8, $9, $12 }' >>"$TMP/lines"
     done
     row="| $n"
     for c in 1 2 3 4 5 6 7 8; do
