@@ -32,7 +32,6 @@
  * (header, x, y, w, h), the sizes of the board's own messages. */
 #define REPLAY_REQUEST_BYTES 16u
 #define REPLAY_ANSWER_BYTES 28u
-#define REPLAY_STOP_BYTES 12u
 
 struct replay_cfg {
     uint32_t ncs;
