@@ -123,7 +123,7 @@ static void board_qemu_exec(struct board *b, int qemu_fd)
     argv[n++] = "chardev:link";
     argv[n++] = "-kernel";
     argv[n++] = b->firmware;
-    if (b->opts.insn_count_out || b->opts.insn_series_out) {
+    if (b->opts.insn_count_out || b->opts.insn_series_out || b->opts.insn_trace_out) {
         const char *so = getenv("LINKS1_INSN_PLUGIN");
         char self[PATH_MAX], args[2 * PATH_MAX];
         if (!so || !*so) {
@@ -143,6 +143,9 @@ static void board_qemu_exec(struct board *b, int qemu_fd)
         if (b->opts.insn_series_out)
             snprintf(args + strlen(args), sizeof args - strlen(args), ",series=%s,every=%d",
                      b->opts.insn_series_out, b->opts.insn_series_ms);
+        if (b->opts.insn_trace_out)
+            snprintf(args + strlen(args), sizeof args - strlen(args), ",trace=%s",
+                     b->opts.insn_trace_out);
         snprintf(plugin + strlen(plugin), sizeof plugin - strlen(plugin), "%s", args);
         argv[n++] = "-plugin";
         argv[n++] = plugin;

@@ -33,6 +33,8 @@ struct board_opts {
     const char *insn_series_out; /* non-NULL: the counting plugin appends a line of
                                     every core's count here every insn_series_ms */
     int insn_series_ms;
+    const char *insn_trace_out; /* non-NULL: the counting plugin writes every trace
+                                   mark here (proto/insn_mark.h) */
     int quiet;              /* 1: do not print LOG lines or the board-up line
                                (faults always) */
     int verbose;            /* 1: a line per unit computer reporting in */

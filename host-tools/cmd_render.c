@@ -15,6 +15,7 @@
 #include "host-tools/links1_cmds.h"
 #include "host-tools/render_faults.h"
 #include "host-tools/render_session.h"
+#include "host-tools/trace_file.h"
 #include "host-tools/scene/image_io.h"
 #include "host-tools/scene/cli_args.h"
 #include "host-tools/scene/scene_desc.h"
@@ -27,6 +28,14 @@ struct render_job {
     const char *scene, *out;
     uint8_t *bytes; /* the compiled scene, read before the board boots */
     size_t len;
+};
+
+/* Where a render command's wall time goes, ms, and QEMU's host CPU time
+ * while the board rendered (for the host cores' use). */
+struct render_wall {
+    long long boot, upload, frame, pull, write, shutdown, total;
+    long long board_prepare, board_render;
+    long long render_cpu; /* QEMU's user + system ms during the frames */
 };
 
 struct render_opts {
@@ -47,6 +56,9 @@ struct render_opts {
     int unit_fault_core;          /* --inject-unit-fault: DM or RC core, -1: none */
     long unit_fault_frame;
     int resume;                   /* --resume: frames already written are kept */
+    const char *trace;  /* --trace FILE */
+    struct render_wall wall; /* where the command's wall time went */
+    uint32_t traced_w, traced_h, traced_bytes; /* the traced frame's size, broadcast */
 };
 
 static void render_usage(FILE *out)
@@ -67,6 +79,7 @@ static void render_usage(FILE *out)
             "  --size WxH       render at this size instead of the scene's (text scenes)\n"
             "  --max-depth D    --refractionless on|off\n"
             "                   override the scene's recursion depth / transmission past it\n"
+            "  --refraction on|off  off: transmitted rays never bend, at any depth\n"
             "  --no-yclip --no-xclip --no-bbox --no-hierarchy\n"
             "                   switch a speed-up off (the image stays the same)\n"
             "  --no-auto-hierarchy  compile without the automatic hierarchy (text scenes)\n"
@@ -81,6 +94,8 @@ static void render_usage(FILE *out)
             "                   frame FRAME renders (the run ends; see --resume)\n"
             "  --resume         with --frames: keep the frames already written and render\n"
             "                   the others, from the first not yet written\n"
+            "  --trace FILE     write the frame's per-area and per-pixel instruction costs\n"
+            "                   (one scene, one frame; the input of links1 replay)\n"
             "  --timeout S      seconds to wait for every unit computer to report in\n"
             "  --board NAME     render on the running board NAME (links1 board start); its\n"
             "                   cores and arithmetic are the board's\n"
@@ -99,6 +114,7 @@ enum render_opt_code {
     RENDER_OPT_SIZE,
     RENDER_OPT_MAX_DEPTH,
     RENDER_OPT_REFRACTIONLESS,
+    RENDER_OPT_REFRACTION,
     RENDER_OPT_NO_YCLIP,
     RENDER_OPT_NO_XCLIP,
     RENDER_OPT_NO_BBOX,
@@ -113,6 +129,7 @@ enum render_opt_code {
     RENDER_OPT_INJECT_UNIT_FAULT,
     RENDER_OPT_INJECT_EVERY,
     RENDER_OPT_RESUME,
+    RENDER_OPT_TRACE,
 };
 
 static const struct option render_options[] = {
@@ -125,6 +142,7 @@ static const struct option render_options[] = {
     {"size", required_argument, NULL, RENDER_OPT_SIZE},
     {"max-depth", required_argument, NULL, RENDER_OPT_MAX_DEPTH},
     {"refractionless", required_argument, NULL, RENDER_OPT_REFRACTIONLESS},
+    {"refraction", required_argument, NULL, RENDER_OPT_REFRACTION},
     {"no-yclip", no_argument, NULL, RENDER_OPT_NO_YCLIP},
     {"no-xclip", no_argument, NULL, RENDER_OPT_NO_XCLIP},
     {"no-bbox", no_argument, NULL, RENDER_OPT_NO_BBOX},
@@ -139,6 +157,7 @@ static const struct option render_options[] = {
     {"inject-unit-fault", required_argument, NULL, RENDER_OPT_INJECT_UNIT_FAULT},
     {"inject-every", required_argument, NULL, RENDER_OPT_INJECT_EVERY},
     {"resume", no_argument, NULL, RENDER_OPT_RESUME},
+    {"trace", required_argument, NULL, RENDER_OPT_TRACE},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -206,6 +225,11 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
             return cli_bad_value(c, "on or off");
         o->scene.refractionless = strcmp(c->arg, "on") == 0;
         return 0;
+    case RENDER_OPT_REFRACTION:
+        if (strcmp(c->arg, "on") != 0 && strcmp(c->arg, "off") != 0)
+            return cli_bad_value(c, "on or off");
+        o->scene.refraction = strcmp(c->arg, "on") == 0;
+        return 0;
     case RENDER_OPT_NO_YCLIP:
         o->args.flags |= LINK_RENDER_NO_YCLIP;
         return 0;
@@ -258,6 +282,10 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
         if (cli_long(c, 10, 1, 1 << 20, &n) < 0)
             return -1;
         o->inject_every = (unsigned)n;
+        return 0;
+    case RENDER_OPT_TRACE:
+        o->trace = c->arg;
+        o->args.flags |= LINK_RENDER_TRACE;
         return 0;
     }
     return -1; /* CLI_BAD: reported already */
@@ -313,6 +341,11 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
     if (o->inject >= ncs && o->inject) {
         fprintf(stderr, "links1 render: --inject-faults %u: at most %u of the %u NCs may fail "
                 "(one must be left)\n", o->inject, ncs - 1, ncs);
+        return -1;
+    }
+    if (o->trace && (o->njobs > 1 || o->many)) {
+        fprintf(stderr, "links1 render: --trace records one frame of one scene: give one SCENE "
+                "and no --frames\n");
         return -1;
     }
     return 0;
@@ -388,12 +421,33 @@ static uint32_t render_frame_plan(struct render_opts *o, long f,
     return n ? LINK_INJECT_SIZE(n) : 0;
 }
 
+/* QEMU's user + system CPU time so far, ms (/proc/PID/stat), or -1. */
+static long long render_qemu_cpu_ms(pid_t pid)
+{
+    char path[64], buf[1024];
+    snprintf(path, sizeof path, "/proc/%d/stat", (int)pid);
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return -1;
+    size_t n = fread(buf, 1, sizeof buf - 1, f);
+    fclose(f);
+    buf[n] = 0;
+    const char *p = strrchr(buf, ')'); /* the command name may hold spaces */
+    unsigned long long ut = 0, st = 0;
+    if (!p || sscanf(p + 2, "%*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %llu %llu", &ut,
+                     &st) != 2)
+        return -1;
+    long hz = sysconf(_SC_CLK_TCK);
+    return hz > 0 ? (long long)((ut + st) * 1000ull / (unsigned long long)hz) : -1;
+}
+
 /* One scene on the running board: upload, every frame asked for. */
 static int render_job(struct board *b, struct render_opts *o, const struct render_job *j)
 {
     struct link_scene_info info;
     long long upload_ms = 0, pull_ms = 0;
     int rc = render_session_load(b, j->bytes, j->len, &info, &upload_ms);
+    o->wall.upload += upload_ms;
     if (rc != 0) {
         fprintf(stderr, "links1 render: %s was not loaded\n", j->scene);
         return -1;
@@ -424,14 +478,24 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         if (f < last)
             a.flags |= LINK_RENDER_PREPARE_NEXT;
         long long t0 = board_now_ms();
+        long long cpu0 = render_qemu_cpu_ms(b->qemu_pid);
         struct link_render_stats s;
         struct link_render_fails fails;
         struct image img = {0, 0, NULL};
         uint8_t plan[LINK_INJECT_SIZE(LINK_INJECT_MAX + 1)];
         uint32_t plan_len = render_frame_plan(o, f, plan);
-        if (render_session_frame(b, &a, isatty(2), plan, plan_len, &s, &fails) != 0 ||
-            render_session_pull(b, &img, &pull_ms) != 0)
+        if (render_session_frame(b, &a, isatty(2), plan, plan_len, &s, &fails) != 0)
             return -1;
+        long long t1 = board_now_ms(), cpu1 = render_qemu_cpu_ms(b->qemu_pid);
+        o->wall.frame += t1 - t0;
+        o->wall.board_prepare += s.prepare_ms;
+        o->wall.board_render += s.render_ms;
+        if (cpu0 >= 0 && cpu1 >= 0)
+            o->wall.render_cpu += cpu1 - cpu0;
+        if (render_session_pull(b, &img, &pull_ms) != 0)
+            return -1;
+        long long t2 = board_now_ms();
+        o->wall.pull += t2 - t1;
         render_faults_print(stdout, a.frame, &fails);
         /* Written whole or not at all: a run that dies leaves no half
          * frame for --resume to keep. */
@@ -447,12 +511,51 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
             image_free(&img);
             return -1;
         }
+        o->wall.write += board_now_ms() - t2;
         /* The scene's upload time is told with its first frame. */
         render_summary(path, &s, &img, a.balance, (double)(board_now_ms() - t0) / 1000.0,
                        f == first ? upload_ms : 0, pull_ms);
+        o->traced_w = (uint32_t)img.width;
+        o->traced_h = (uint32_t)img.height;
+        o->traced_bytes = s.blob_bytes;
         image_free(&img);
     }
     return 0;
+}
+
+/* One line accounting for the command's wall time (bench_wallclock.sh). */
+static void render_print_wall(const struct render_wall *w)
+{
+    long long other = w->total - w->boot - w->upload - w->frame - w->pull - w->write - w->shutdown;
+    printf("links1 render: wall %lld ms: boot %lld, upload %lld, frames %lld (board: prepare "
+           "%lld, render %lld), pull %lld, write %lld, shutdown %lld, other %lld; QEMU CPU "
+           "while rendering %lld ms (%.2f host cores)\n",
+           w->total, w->boot, w->upload, w->frame, w->board_prepare, w->board_render, w->pull,
+           w->write, w->shutdown, other, w->render_cpu,
+           w->frame > 0 ? (double)w->render_cpu / (double)w->frame : 0.0);
+}
+
+/* The trace of the one frame rendered, from the plugin's marks. */
+static int render_write_trace(const struct render_opts *o, const char *marks_path)
+{
+    struct trace t;
+    char err[TRACE_ERR_MAX];
+    uint32_t ncs = (uint32_t)o->board.ncores - 2;
+    if (trace_decode_marks(marks_path, o->traced_w, o->traced_h, ncs, &t, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 render: --trace %s: %s\n", o->trace, err);
+        return -1;
+    }
+    t.balance = o->args.balance;
+    t.k = o->args.areas;
+    t.flags = o->args.flags & ~(uint32_t)LINK_RENDER_TRACE;
+    t.broadcast_bytes = o->traced_bytes;
+    int rc = trace_write(o->trace, &t, err, sizeof err);
+    if (rc != 0)
+        fprintf(stderr, "links1 render: --trace: %s\n", err);
+    else
+        printf("links1 render: trace of %u areas written to %s\n", (unsigned)t.nareas, o->trace);
+    trace_free(&t);
+    return rc;
 }
 
 int cmd_render(int argc, char **argv)
@@ -464,6 +567,17 @@ int cmd_render(int argc, char **argv)
     if (render_read_scenes(&o) != 0) {
         render_free_scenes(&o);
         return 1;
+    }
+    char marks_path[] = "/tmp/links1-marks-XXXXXX";
+    if (o.trace) {
+        int fd = mkstemp(marks_path);
+        if (fd < 0) {
+            perror("links1: temporary file for the trace marks");
+            render_free_scenes(&o);
+            return 1;
+        }
+        close(fd);
+        o.board.insn_trace_out = marks_path;
     }
     char insn_path[] = "/tmp/links1-insns-XXXXXX";
     if (o.count_insns) {
@@ -478,10 +592,12 @@ int cmd_render(int argc, char **argv)
     }
     struct board b;
     int rc = 1;
+    long long t_start = board_now_ms();
     int up = o.board_name ? board_connect(&b, &o.board, o.board_name)
                           : board_start(&b, &o.board) == 0 ?
                                 board_wait_reported(&b, o.board.timeout_s * 1000) : -1;
     if (up == 0) {
+        o.wall.boot = board_now_ms() - t_start;
         rc = 0;
         for (int j = 0; j < o.njobs; j++) {
             if (render_job(&b, &o, &o.jobs[j]) == 0)
@@ -492,8 +608,13 @@ int cmd_render(int argc, char **argv)
                 break; /* no scene renders on a board without its DM or RC */
         }
     }
+    long long t_stop = board_now_ms();
     if (board_stop(&b) < 0)
         rc = 1;
+    o.wall.shutdown = board_now_ms() - t_stop;
+    o.wall.total = board_now_ms() - t_start;
+    if (rc == 0)
+        render_print_wall(&o.wall);
     if (board_report_link_errors(&b))
         rc = 1;
     /* An NC that faulted is left out and its areas drawn by others (the
@@ -520,6 +641,11 @@ int cmd_render(int argc, char **argv)
         if (insn_report_print(insn_path, o.board.ncores) < 0)
             rc = 1;
         unlink(insn_path);
+    }
+    if (o.trace) {
+        if (rc == 0 && render_write_trace(&o, marks_path) != 0)
+            rc = 1;
+        unlink(marks_path);
     }
     render_free_scenes(&o);
     return rc;

@@ -18,6 +18,14 @@
  * icount QEMU runs the guest's generic timer from that same clock, so the
  * difference of two lines is what each core retired over that span of guest
  * time (links1 selftest idle reads it while the board runs).
+ *
+ * With trace=FILE every trace mark of proto/insn_mark.h a core executes is
+ * kept, in order, with the core's count then; at exit FILE gets one line
+ * "K KIND COUNT" per mark (vCPU K, enum insn_mark_trace_kind), vCPU by
+ * vCPU.  Counts are taken at block entry, so a mark's count includes the
+ * rest of its block; the difference of two marks' counts is exact to
+ * within the blocks they sit in, and differences of successive marks add
+ * up to the difference of the first and last (links1 render --trace).
  */
 #include <stdbool.h>
 #include <stddef.h>
@@ -101,11 +109,63 @@ static void insn_count_mark(unsigned int vcpu, void *userdata)
         __atomic_store_n(&insn_count[vcpu], 0, __ATOMIC_RELAXED);
 }
 
-static int insn_count_is_mark(const struct qemu_plugin_insn *insn)
+/* The halfword after 0xF3AF of a 4-byte hint, or 0 for any other insn. */
+static unsigned insn_count_hint_hw1(const struct qemu_plugin_insn *insn)
 {
     const uint8_t *b = qemu_plugin_insn_data(insn);
-    return qemu_plugin_insn_size(insn) == 4 &&
-           (b[0] | b[1] << 8) == INSN_MARK_THUMB_HW0 && (b[2] | b[3] << 8) == INSN_MARK_THUMB_HW1;
+    if (qemu_plugin_insn_size(insn) != 4 || (unsigned)(b[0] | b[1] << 8) != INSN_MARK_THUMB_HW0)
+        return 0;
+    return (unsigned)(b[2] | b[3] << 8);
+}
+
+/* ---- the trace ---- */
+
+struct insn_trace_event {
+    uint64_t count;
+    uint8_t kind;
+};
+struct insn_trace_log {
+    struct insn_trace_event *ev;
+    size_t n, cap;
+};
+static struct insn_trace_log insn_trace[INSN_COUNT_MAX_VCPUS]; /* each written by its vCPU's thread only */
+static char insn_trace_out[4096];   /* trace file, or "" */
+static int insn_trace_oom;          /* an append found no memory */
+
+static void insn_count_trace(unsigned int vcpu, void *kind)
+{
+    if (vcpu >= INSN_COUNT_MAX_VCPUS)
+        return;
+    struct insn_trace_log *t = &insn_trace[vcpu];
+    if (t->n == t->cap) {
+        size_t cap = t->cap ? 2 * t->cap : 4096;
+        struct insn_trace_event *ev = realloc(t->ev, cap * sizeof *ev);
+        if (!ev) {
+            __atomic_store_n(&insn_trace_oom, 1, __ATOMIC_RELAXED);
+            return;
+        }
+        t->ev = ev;
+        t->cap = cap;
+    }
+    t->ev[t->n].count = __atomic_load_n(&insn_count[vcpu], __ATOMIC_RELAXED);
+    t->ev[t->n].kind = (uint8_t)(uintptr_t)kind;
+    t->n++;
+}
+
+static void insn_trace_write(void)
+{
+    FILE *f = fopen(insn_trace_out, "w");
+    if (!f) {
+        qemu_plugin_outs("insn-count: cannot open the trace= file\n");
+        return;
+    }
+    if (insn_trace_oom)
+        fputs("oom\n", f); /* the reader refuses the trace */
+    for (int k = 0; k < insn_count_vcpus; k++)
+        for (size_t i = 0; i < insn_trace[k].n; i++)
+            fprintf(f, "%d %u %llu\n", k, (unsigned)insn_trace[k].ev[i].kind,
+                    (unsigned long long)insn_trace[k].ev[i].count);
+    fclose(f);
 }
 
 static void insn_count_tb_trans(qemu_plugin_id_t id, struct qemu_plugin_tb *tb)
@@ -114,9 +174,15 @@ static void insn_count_tb_trans(qemu_plugin_id_t id, struct qemu_plugin_tb *tb)
     size_t n = qemu_plugin_tb_n_insns(tb);
     for (size_t i = 0; i < n; i++) {
         struct qemu_plugin_insn *insn = qemu_plugin_tb_get_insn(tb, i);
-        if (insn_count_is_mark(insn))
+        unsigned hw1 = insn_count_hint_hw1(insn);
+        if (hw1 == INSN_MARK_THUMB_HW1)
             qemu_plugin_register_vcpu_insn_exec_cb(insn, insn_count_mark,
                                                    QEMU_PLUGIN_CB_NO_REGS, NULL);
+        else if (insn_trace_out[0] && hw1 >= INSN_MARK_TRACE_HW1_BASE &&
+                 hw1 < INSN_MARK_TRACE_HW1_BASE + INSN_TRACE_KINDS)
+            qemu_plugin_register_vcpu_insn_exec_cb(
+                insn, insn_count_trace, QEMU_PLUGIN_CB_NO_REGS,
+                (void *)(uintptr_t)(hw1 - INSN_MARK_TRACE_HW1_BASE));
     }
     qemu_plugin_register_vcpu_tb_exec_cb(tb, insn_count_tb_exec, QEMU_PLUGIN_CB_NO_REGS,
                                          (void *)(uintptr_t)n);
@@ -126,6 +192,10 @@ static void insn_count_atexit(qemu_plugin_id_t id, void *userdata)
 {
     (void)id;
     (void)userdata;
+    if (insn_trace_out[0])
+        insn_trace_write();
+    if (!insn_count_out[0] && insn_trace_out[0])
+        return;
     char line[64];
     FILE *f = insn_count_out[0] ? fopen(insn_count_out, "w") : NULL;
     if (insn_count_out[0] && !f) {
@@ -196,10 +266,13 @@ PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_t *in
         } else if (strncmp(argv[i], "series=", 7) == 0 &&
                    strlen(argv[i] + 7) < sizeof insn_series_out) {
             strcpy(insn_series_out, argv[i] + 7);
+        } else if (strncmp(argv[i], "trace=", 6) == 0 &&
+                   strlen(argv[i] + 6) < sizeof insn_trace_out) {
+            strcpy(insn_trace_out, argv[i] + 6);
         } else if (strncmp(argv[i], "every=", 6) == 0 && atol(argv[i] + 6) > 0) {
             insn_series_ms = atol(argv[i] + 6);
         } else {
-            qemu_plugin_outs("insn-count: arguments are out=FILE, series=FILE, every=MS\n");
+            qemu_plugin_outs("insn-count: arguments are out=FILE, series=FILE, every=MS, trace=FILE\n");
             return -1;
         }
     }

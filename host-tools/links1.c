@@ -17,6 +17,7 @@ static const struct links1_cmd links1_cmds[] = {
     {"selftest", cmd_selftest, "boot the board and run board checks (ping, imsu, ...)"},
     {"render", cmd_render, "render a scene on the board (links1 render --help)"},
     {"board", cmd_board, "start, stop or list boards that keep running between commands"},
+    {"replay", cmd_replay, "replay a traced frame on equal-speed unit computers"},
     {"semihost", cmd_semihost, "run a semihosting program on the board's CPU (one core)"},
     {"compile", scene_cmd_compile, "compile a text scene into the form uploaded to the board"},
     {"ref", scene_cmd_ref, "render a scene on the host (--arith double|float|soft|fixed)"},

@@ -8,6 +8,7 @@ int cmd_boot(int argc, char **argv);     /* links1 boot: boot, report in, shut d
 int cmd_selftest(int argc, char **argv); /* links1 selftest NAME...: board checks */
 
 int cmd_render(int argc, char **argv);   /* links1 render SCENE -o OUT: render on the board */
+int cmd_replay(int argc, char **argv);   /* links1 replay TRACE --ncs LIST: equal-speed units */
 int cmd_semihost(int argc, char **argv); /* links1 semihost ELF: a semihosting program */
 int cmd_board(int argc, char **argv);    /* links1 board start|stop|list: named boards */
 

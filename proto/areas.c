@@ -76,6 +76,7 @@ int areas_init(struct areas *s, enum areas_mode mode, uint32_t width, uint32_t h
     if (s->k > pixels)
         s->k = pixels;
     s->pixels_left = pixels;
+    s->factor = AREAS_GUIDED_FACTOR;
     if (mode == AREAS_DECREASING)
         s->min_pixels = (pixels + s->k - 1) / s->k;
     else
@@ -118,7 +119,7 @@ static int areas_next_decreasing(struct areas *s, struct area *a)
 {
     if (s->pixels_left == 0)
         return 0;
-    uint64_t share = (uint64_t)AREAS_GUIDED_FACTOR * s->ncs;
+    uint64_t share = (uint64_t)s->factor * s->ncs;
     uint32_t t = (uint32_t)((s->pixels_left + share - 1) / share);
     if (t < s->min_pixels)
         t = s->min_pixels;
@@ -151,6 +152,14 @@ static int areas_next_decreasing(struct areas *s, struct area *a)
     return 1;
 }
 
+int areas_set_guided_factor(struct areas *s, uint32_t factor)
+{
+    if (factor < 1 || factor > AREAS_MAX_GUIDED_FACTOR || s->handed != 0)
+        return AREAS_ERR_FACTOR;
+    s->factor = factor;
+    return AREAS_OK;
+}
+
 int areas_next(struct areas *s, struct area *a)
 {
     int got = s->mode == AREAS_DECREASING ? areas_next_decreasing(s, a)
@@ -169,6 +178,7 @@ uint32_t areas_count(const struct areas *s)
     uint32_t n = 0;
     if (areas_init(&replay, s->mode, s->width, s->height, s->ncs, s->k) != AREAS_OK)
         return 0;
+    replay.factor = s->factor;
     while (areas_next(&replay, &a))
         n++;
     return n;
@@ -216,6 +226,11 @@ const char *areas_strerror(int status)
     }
     case AREAS_ERR_NCS:
         return "at least one NC is needed";
+    case AREAS_ERR_FACTOR: {
+        _Static_assert(AREAS_MAX_GUIDED_FACTOR == 64u, "update the message below");
+        return "the guided factor must be 1..64 (AREAS_MAX_GUIDED_FACTOR), set before the "
+               "first area";
+    }
     default:
         return "unknown areas error";
     }

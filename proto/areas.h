@@ -39,6 +39,7 @@
  * left.  1 gives the first NCs so much that the last areas cannot even the
  * finish; 2 leaves half the screen to balance with smaller areas. */
 #define AREAS_GUIDED_FACTOR 2u
+#define AREAS_MAX_GUIDED_FACTOR 64u
 
 enum areas_mode {
     AREAS_STATIC = 0,
@@ -51,6 +52,7 @@ enum areas_status {
     AREAS_ERR_MODE = -1,   /* not one of enum areas_mode */
     AREAS_ERR_SIZE = -2,   /* width or height 0 or above AREAS_MAX_DIM */
     AREAS_ERR_NCS = -3,    /* no NC */
+    AREAS_ERR_FACTOR = -4, /* guided factor not 1..AREAS_MAX_GUIDED_FACTOR, or set late */
 };
 
 struct area {
@@ -75,6 +77,7 @@ struct areas {
     uint32_t piece;         /* piece width while scanline next_y is cut */
     uint32_t pixels_left;   /* pixels not yet handed out */
     uint32_t handed;        /* areas handed out so far */
+    uint32_t factor;        /* guided divisor (AREAS_GUIDED_FACTOR unless set) */
 };
 
 /* Starts a schedule for a width x height screen shared by ncs NCs.  k is
@@ -84,6 +87,10 @@ struct areas {
  * Returns AREAS_OK or an enum areas_status error, leaving *s unusable. */
 int areas_init(struct areas *s, enum areas_mode mode, uint32_t width, uint32_t height,
                uint32_t ncs, uint32_t k);
+/* Sets the decreasing schedule's guided divisor (an area takes 1/(factor *
+ * ncs) of what is left; 1..AREAS_MAX_GUIDED_FACTOR) before its first area;
+ * AREAS_OK, or AREAS_ERR_FACTOR (the schedule is left as it was). */
+int areas_set_guided_factor(struct areas *s, uint32_t factor);
 /* Writes the next area and returns 1, or returns 0 once the screen is all
  * handed out. */
 int areas_next(struct areas *s, struct area *a);

@@ -36,8 +36,10 @@ enum link_render_flag {
     LINK_RENDER_NO_BBOX = 1u << 2,
     LINK_RENDER_NO_HIERARCHY = 1u << 3,
     LINK_RENDER_PREPARE_NEXT = 1u << 4, /* pipelining of animations */
+    LINK_RENDER_TRACE = 1u << 5,        /* RC and NCs write trace marks
+                                           (proto/insn_mark.h, docs/trace.md) */
 };
-#define LINK_RENDER_FLAGS_ALL 0x1Fu
+#define LINK_RENDER_FLAGS_ALL 0x3Fu
 
 /* Balancing modes: the values of proto/areas.h enum areas_mode. */
 enum link_balance { LINK_BALANCE_STATIC = 0, LINK_BALANCE_DYNAMIC = 1, LINK_BALANCE_DECREASING = 2 };

@@ -117,13 +117,16 @@ enum scn_section {
 #define SCN_MAX_TAN_HALF_FOV 100.0f
 
 /* Render options.  REFRACTIONLESS: past max_depth, transmission continues
- * along the straight ray (the paper's 4.5).  The NO_* switches turn a
- * speed-up or shadows off, for measurement only. */
+ * along the straight ray (the paper's 4.5).  NO_REFRACTION: transmission
+ * never bends, at any depth: every transmitted ray goes straight on (the
+ * paper's Table 3).  The other NO_* switches turn a speed-up or shadows
+ * off, for measurement only. */
 #define SCN_OPT_REFRACTIONLESS 0x0001u
 #define SCN_OPT_NO_BOUNDS 0x0002u
 #define SCN_OPT_NO_HIERARCHY 0x0004u
 #define SCN_OPT_NO_SHADOWS 0x0008u
-#define SCN_OPT_KNOWN 0x000fu
+#define SCN_OPT_NO_REFRACTION 0x0010u
+#define SCN_OPT_KNOWN 0x001fu
 
 /* ------------------------------------------------------- LIGHTS record */
 #define SCN_LIGHT_SIZE 48

@@ -123,6 +123,13 @@ uint32_t render_clip_x(render_clip_t *clip, int32_t x)
 render_status_t render_area(render_ctx_t *ctx, render_clip_t *clip, const render_area_t *area,
                             const render_clip_options_t *opt, rgb8_t *out)
 {
+    return render_area_marked(ctx, clip, area, opt, out, NULL);
+}
+
+render_status_t render_area_marked(render_ctx_t *ctx, render_clip_t *clip,
+                                   const render_area_t *area, const render_clip_options_t *opt,
+                                   rgb8_t *out, void (*mark)(void))
+{
     const render_frame_t *f = ctx->frame;
     if (area->w == 0 || area->h == 0 || area->x >= f->width || area->w > f->width - area->x ||
         area->y >= f->height || area->h > f->height - area->y)
@@ -133,6 +140,8 @@ render_status_t render_area(render_ctx_t *ctx, render_clip_t *clip, const render
             return RENDER_ERR_AREA;
         render_clip_y(clip, area, !opt->y_clip);
     }
+    if (mark)
+        mark();
     for (uint32_t py = area->y; py < area->y + area->h; py++) {
         rgb8_t *row = out + (size_t)(py - area->y) * area->w;
         for (uint32_t px = area->x; px < area->x + area->w; px++) {
@@ -148,6 +157,8 @@ render_status_t render_area(render_ctx_t *ctx, render_clip_t *clip, const render
             row[px - area->x] = c;
             if (opt->progress)
                 *opt->progress += 1;
+            if (mark)
+                mark();
         }
     }
     return RENDER_OK;

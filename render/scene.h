@@ -183,6 +183,9 @@ typedef struct {
     uint8_t use_bounds;     /* 1: test bounding boxes before contents */
     uint8_t use_hierarchy;  /* 1: walk the cluster tree; 0: flat list */
     uint8_t shadows;        /* 1: shadow rays; 0: every light unshadowed */
+    uint8_t refraction;     /* 1: transmitted rays bend (Snell) within
+                               max_depth; 0: they never bend, at any depth:
+                               transmission goes straight through */
 } render_options_t;
 
 /* The arrays (marked "reloc") are the scene's pointer fields:

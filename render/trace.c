@@ -377,7 +377,10 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, 
     if (num_gt(trc, NUM_ZERO)) {
         rgb_t through = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
         vec3_t inside = vec3_madd(hit->point, n, num_neg(TRACE_EPSILON));
-        if (can_recurse) {
+        if (!ctx->options.refraction) { /* never bends: straight through, any depth */
+            ray_t r = {inside, ray->dir};
+            through = trace_straight(ctx, &r);
+        } else if (can_recurse) {
             num_t eta = entering ? num_recip(m->ior) : m->ior;
             vec3_t dir;
             if (shade_refract(ray->dir, n, eta, &dir)) {

@@ -85,8 +85,10 @@ static int dm_prepare(uint32_t frame, render_blob_error_t *err)
     }
     uint64_t t0 = ktime_now();
     render_blob_t *blob;
+    insn_mark_trace_span_begin(); /* the preprocessing of one frame (docs/trace.md) */
     render_blob_status_t st = render_blob_build(dm_scene.compiled, dm_scene.len, frame, block,
                                                 p->size, dm_blob_limit_name, &blob, err);
+    insn_mark_trace_span_end();
     imsu_write_end(p, UNITS_DM_CORE);
     dm_scene.prepared = st == RENDER_BLOB_OK ? (int32_t)frame : -1;
     dm_scene.prepare_ms = ktime_ticks_to_ms(ktime_now() - t0);

@@ -32,6 +32,7 @@ struct nc_job {
     size_t mark;        /* kmem mark before the frame's working set */
     int marked;
     int counting;       /* the plugin counts this NC from its first frame */
+    int trace;          /* LINK_RENDER_TRACE: write trace marks */
 };
 static struct nc_job nc_jobs[UNITS_MAX_CORES];
 volatile uint32_t gigs_nc_progress[UNITS_MAX_CORES];
@@ -100,15 +101,30 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, char *w
     return 0;
 }
 
+static void nc_trace_pixel(void)
+{
+    insn_mark_trace_pixel();
+}
+
 /* Renders one area and pushes its rows into the DC.  A fault planned for
- * this area (MSG_NC_AREA of 20 bytes) comes after pushing that many rows. */
+ * this area (MSG_NC_AREA of 20 bytes) comes after pushing that many rows.
+ * Traced: the area's x, y, w, h (16 bits each), then marks at its start,
+ * after its set-up and each pixel, and at its end. */
 static int nc_area(struct nc_job *job, const struct line_msg *m, char *why, size_t cap)
 {
     render_area_t a = {wire_get_u32(m->payload), wire_get_u32(m->payload + 4),
                        wire_get_u32(m->payload + 8), wire_get_u32(m->payload + 12)};
     uint8_t inject = m->len >= 20 ? wire_get_u8(m->payload + 16) : 0;
     uint32_t inject_row = m->len >= 20 ? wire_get_u16(m->payload + 18) : 0;
-    render_status_t st = render_area(&job->ctx, &job->clip, &a, &job->opt, job->pixels);
+    if (job->trace) {
+        insn_mark_trace_bits(a.x, 16);
+        insn_mark_trace_bits(a.y, 16);
+        insn_mark_trace_bits(a.w, 16);
+        insn_mark_trace_bits(a.h, 16);
+        insn_mark_trace_area_begin();
+    }
+    render_status_t st = render_area_marked(&job->ctx, &job->clip, &a, &job->opt, job->pixels,
+                                            job->trace ? nc_trace_pixel : NULL);
     if (st != RENDER_OK) {
         fmt_snprintf(why, cap, "area %ux%u at (%u,%u): %s", (unsigned)a.w, (unsigned)a.h,
                      (unsigned)a.x, (unsigned)a.y, render_status_name(st));
@@ -126,6 +142,8 @@ static int nc_area(struct nc_job *job, const struct line_msg *m, char *why, size
             return -1;
         }
     }
+    if (job->trace)
+        insn_mark_trace_area_end();
     return 0;
 }
 
@@ -142,7 +160,12 @@ void nc_render_frame(struct line_msg *m)
     uint8_t flags = wire_get_u8(m->payload);
     uint32_t largest = wire_get_u32(m->payload + 1);
     char why[LINE_MAX_PAYLOAD / 4];
+    job->trace = (flags & LINK_RENDER_TRACE) != 0;
+    if (job->trace)
+        insn_mark_trace_span_begin();
     int ok = nc_setup(job, flags, largest, why, sizeof why) == 0;
+    if (job->trace)
+        insn_mark_trace_span_end();
     int reading = ok; /* inside the broadcast read */
     nc_request(m, ok ? 0 : LINK_ERR_CHECK, ok ? NULL : why);
     for (;;) {

@@ -12,6 +12,7 @@
 #include "kernel/klog.h"
 #include "kernel/ktime.h"
 #include "proto/hostlink.h"
+#include "proto/insn_mark.h"
 #include "proto/textfmt.h"
 #include "proto/wire.h"
 #include "roles/gigs.h"
@@ -227,14 +228,39 @@ static void rc_nc_stop(struct rc_run *run, uint32_t k, struct line_msg *m)
     rc_nc_send(k, m);
 }
 
+/* Traced (docs/trace.md): after the span of serving NC k, the NC, whether
+ * it got an area, and the area's x and y. */
+static void rc_nc_trace_served(const struct rc_run *run, uint32_t k, int handed)
+{
+    insn_mark_trace_span_end();
+    insn_mark_trace_bits(k, 16);
+    insn_mark_trace_bits((uint32_t)handed, 1);
+    insn_mark_trace_bits(handed ? run->nc[k].area.x : 0, 16);
+    insn_mark_trace_bits(handed ? run->nc[k].area.y : 0, 16);
+}
+
+/* 1 if an area is left to give (one taken back, or the schedule's next). */
+static int rc_nc_area_left(const struct rc_run *run)
+{
+    struct areas peek = run->sched;
+    struct area a;
+    return run->nagain > 0 || areas_next(&peek, &a);
+}
+
 /* Areas to parked NCs; once none is busy and none is left, stops them. */
 static void rc_nc_dispatch(struct rc_run *run, struct line_msg *m)
 {
     int working = 0;
     for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
         struct rc_nc *n = &run->nc[k];
-        if (n->state == RC_NC_PARKED && run->status == LINK_OK)
-            (void)rc_nc_give(run, k, m);
+        if (n->state == RC_NC_PARKED && run->status == LINK_OK && rc_nc_area_left(run)) {
+            /* An NC that waited while every area was out gets one taken back. */
+            if (run->trace)
+                insn_mark_trace_span_begin();
+            int handed = rc_nc_give(run, k, m);
+            if (run->trace)
+                rc_nc_trace_served(run, k, handed);
+        }
         working |= n->state == RC_NC_BUSY || n->state == RC_NC_IDLE;
     }
     if (working && run->status == LINK_OK)
@@ -257,10 +283,21 @@ int rc_nc_poll(struct rc_run *run, struct line_msg *m)
             rc_nc_lost(run, k, 0);
             continue;
         }
-        if (line_recv_ready_arm(k) && line_try_recv(k, m) == LINE_OK) {
-            rc_nc_message(run, k, m);
-            moved = 1;
-            continue;
+        if (line_recv_ready_arm(k)) {
+            /* A request is answered at once (the area, or parked). */
+            if (run->trace)
+                insn_mark_trace_span_begin();
+            int got = line_try_recv(k, m) == LINE_OK, handed = 0;
+            if (got) {
+                rc_nc_message(run, k, m);
+                if (n->state == RC_NC_PARKED && run->status == LINK_OK)
+                    handed = rc_nc_give(run, k, m);
+                moved = 1;
+            }
+            if (run->trace)
+                rc_nc_trace_served(run, k, handed);
+            if (got)
+                continue;
         }
         if (rc_nc_overdue(run, k))
             rc_nc_lost(run, k, 1);

@@ -241,7 +241,16 @@ void rc_render_frame(struct line_msg *m)
     uint64_t t0 = ktime_now();
     const render_blob_t *blob = NULL;
     uint32_t blob_bytes = 0;
-    if (run.status == LINK_OK && rc_broadcast(&run, &blob) == 0) {
+    run.trace = (flags & LINK_RENDER_TRACE) != 0;
+    int bcast = -1;
+    if (run.status == LINK_OK) {
+        if (run.trace)
+            insn_mark_trace_span_begin();
+        bcast = rc_broadcast(&run, &blob);
+        if (run.trace)
+            insn_mark_trace_span_end();
+    }
+    if (bcast == 0) {
         blob_bytes = (uint32_t)blob->bytes;
         int r = areas_init(&run.sched, (enum areas_mode)balance, blob->scene.width,
                            blob->scene.height, run.ncs, k);

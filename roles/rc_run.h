@@ -56,6 +56,7 @@ struct rc_run {
     struct link_inject self_inject; /* the RC's own planned failure (kind 0: none):
                                      * once inject.area areas are done */
     int32_t status;                /* first error, LINK_OK if none */
+    int trace;                     /* LINK_RENDER_TRACE: write trace marks */
     char why[LINE_MAX_PAYLOAD - 4];
 };
 

@@ -25,7 +25,8 @@ BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
 	tests/board/render_anim.sh tests/board/render_refuse.sh tests/board/render_view.sh \
 	tests/board/render_spd.sh tests/board/render_link.sh tests/board/board_named.sh \
 	tests/board/render_progress.sh tests/board/render_faults.sh tests/board/render_faults_silent.sh \
-	tests/board/render_resume.sh
+	tests/board/render_resume.sh \
+	tests/board/render_trace.sh tests/board/render_refraction.sh tests/board/figures_small.sh
 RENDER_FULL_TESTS := tests/board/render_grid_full.sh tests/board/render_faults_full.sh
 
 .PHONY: test-full
@@ -42,3 +43,16 @@ BENCHES += tests/bench/bench_faults.sh tests/bench/bench_soak.sh
 HOST_TESTS += test_render_link
 test_render_link_SRCS := tests/host/test_render_link.c host-tools/render_faults.c
 test_render_link_ARITH := float
+
+# Frame traces (links1 render --trace) and their replay on equal-speed units.
+HOST_TESTS += test_trace
+test_trace_SRCS := tests/host/test_trace.c host-tools/trace_file.c host-tools/replay.c
+test_trace_ARITH := double
+BENCHES += tests/bench/bench_figures.sh
+
+# The paper's figures and tables (tests/bench/figures.sh) into docs/figures.
+.PHONY: figures
+figures: deps
+	$(Q)$(MAKE) $(JOBS) --no-print-directory all
+	$(Q)FW_DIR=$(FWB) bash tests/bench/figures.sh
+BENCHES += tests/bench/bench_wallclock.sh

@@ -30,7 +30,7 @@ static int ref_usage(FILE *out, int status)
 {
     fprintf(out, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [--arith double|float|soft|"
                  "fixed] [--ppm] [--size WxH] [--frame N | --frames FIRST:LAST]\n"
-                 "  [--no-auto-hierarchy]\n"
+                 "  [--no-auto-hierarchy] [--refraction on|off]\n"
                  "  (this is the %s build)\n",
             NUM_NAME);
     return status;
@@ -162,6 +162,11 @@ static int ref_parse(int argc, char **argv, struct ref_args *a)
             break;
         case REF_OPT_NO_AUTO_HIERARCHY:
             a->scene.no_auto_hierarchy = 1;
+            break;
+        case REF_OPT_REFRACTION:
+            if (strcmp(c.arg, "on") != 0 && strcmp(c.arg, "off") != 0)
+                return cli_bad_value(&c, "on or off");
+            a->scene.refraction = strcmp(c.arg, "on") == 0;
             break;
         case REF_OPT_SIZE:
             if (cli_parse_size(c.arg, &a->scene.width, &a->scene.height) != 0)

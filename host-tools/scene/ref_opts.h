@@ -12,6 +12,7 @@ enum ref_opt_code {
     REF_OPT_FRAME,
     REF_OPT_FRAMES,
     REF_OPT_NO_AUTO_HIERARCHY,
+    REF_OPT_REFRACTION,
     REF_OPT_ARITH, /* links1 ref only */
 };
 
@@ -22,6 +23,7 @@ enum ref_opt_code {
     {"frame", required_argument, NULL, REF_OPT_FRAME},    \
     {"frames", required_argument, NULL, REF_OPT_FRAMES},  \
     {"no-auto-hierarchy", no_argument, NULL, REF_OPT_NO_AUTO_HIERARCHY}, \
+    {"refraction", required_argument, NULL, REF_OPT_REFRACTION}, \
     {"help", no_argument, NULL, 'h'}
 
 #endif

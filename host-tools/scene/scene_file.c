@@ -13,6 +13,7 @@ void scene_file_opts_init(struct scene_file_opts *o)
     o->width = o->height = 0;
     o->max_depth = -1;
     o->refractionless = -1;
+    o->refraction = -1;
     o->no_auto_hierarchy = 0;
 }
 
@@ -39,6 +40,9 @@ static int scene_file_compile(const char *path, const struct scene_file_opts *o,
     if (o->refractionless >= 0)
         s.view.flags = o->refractionless ? s.view.flags | SCN_OPT_REFRACTIONLESS
                                          : s.view.flags & ~SCN_OPT_REFRACTIONLESS;
+    if (o->refraction >= 0)
+        s.view.flags = o->refraction ? s.view.flags & ~SCN_OPT_NO_REFRACTION
+                                     : s.view.flags | SCN_OPT_NO_REFRACTION;
     char why[SD_ERR_MAX];
     int rc = sd_compile(&s, buf, len, why, sizeof why);
     sd_free(&s);
@@ -80,6 +84,7 @@ int scene_file_bytes(const char *path, const struct scene_file_opts *o, uint8_t 
         return scene_file_compile(path, o, buf, len, err, errlen);
     const char *change = o->width ? "--size" : o->max_depth >= 0 ? "--max-depth"
                          : o->refractionless >= 0 ? "--refractionless"
+                         : o->refraction >= 0 ? "--refraction"
                          : o->no_auto_hierarchy ? "--no-auto-hierarchy" : NULL;
     if (change) {
         snprintf(err, errlen, "%s: %s needs a text scene, not a compiled one", path, change);

@@ -158,6 +158,8 @@ static void parse_options(struct parser *p)
             bit = SCN_OPT_NO_BOUNDS, inverted = 1;
         } else if (lex_is_word(&p->lx, "hierarchy")) {
             bit = SCN_OPT_NO_HIERARCHY, inverted = 1;
+        } else if (lex_is_word(&p->lx, "refraction")) {
+            bit = SCN_OPT_NO_REFRACTION, inverted = 1;
         } else if (lex_is_word(&p->lx, "shadows")) {
             bit = SCN_OPT_NO_SHADOWS, inverted = 1;
         } else if (lex_is_word(&p->lx, "auto_hierarchy")) { /* compiler only */

@@ -244,6 +244,39 @@ static void test_bad_arguments_are_refused(void)
     CHECK(strstr(areas_strerror(AREAS_ERR_NCS), "NC") != NULL);
 }
 
+/* A larger guided factor gives smaller first areas, still covering the
+ * screen once; the factor is refused out of range or after the first area. */
+static void test_guided_factor(void)
+{
+    struct areas s;
+    struct area a;
+    uint32_t first[3] = {0};
+    const uint32_t f[3] = {1, 2, 8};
+    for (int i = 0; i < 3; i++) {
+        CHECK_EQ_INT(areas_init(&s, AREAS_DECREASING, 512, 480, 64, 16384), AREAS_OK);
+        CHECK_EQ_INT(areas_set_guided_factor(&s, f[i]), AREAS_OK);
+        uint32_t n = areas_count(&s), pixels = 0, walked = 0;
+        CHECK(areas_next(&s, &a));
+        first[i] = a.w * a.h;
+        pixels += a.w * a.h;
+        walked++;
+        while (areas_next(&s, &a)) {
+            pixels += a.w * a.h;
+            walked++;
+        }
+        CHECK_EQ_INT(pixels, 512 * 480);
+        CHECK_EQ_INT(walked, n);
+    }
+    CHECK(first[0] > first[1] && first[1] > first[2]);
+    CHECK_EQ_INT(first[1], 3 * 512); /* the default: test_decreasing_paper_case's */
+    CHECK_EQ_INT(areas_init(&s, AREAS_DECREASING, 512, 480, 64, 1024), AREAS_OK);
+    CHECK_EQ_INT(areas_set_guided_factor(&s, 0), AREAS_ERR_FACTOR);
+    CHECK_EQ_INT(areas_set_guided_factor(&s, AREAS_MAX_GUIDED_FACTOR + 1), AREAS_ERR_FACTOR);
+    areas_next(&s, &a);
+    CHECK_EQ_INT(areas_set_guided_factor(&s, 4), AREAS_ERR_FACTOR);
+    CHECK(strstr(areas_strerror(AREAS_ERR_FACTOR), "guided") != NULL);
+}
+
 static void test_mode_names_round_trip(void)
 {
     enum areas_mode m;
@@ -266,6 +299,7 @@ int main(void)
     RUN(test_more_ncs_than_scanlines);
     RUN(test_decreasing_prime_width_uses_whole_scanlines);
     RUN(test_bad_arguments_are_refused);
+    RUN(test_guided_factor);
     RUN(test_mode_names_round_trip);
     return check_exit();
 }

@@ -173,6 +173,42 @@ static void test_refraction(void)
     CHECK_EQ_INT(ctx.stats.refraction, 0);
 }
 
+static void test_refraction_off(void)
+{
+    /* refraction off: transmission never bends, at any depth.  At depth 1
+     * without refractionless transmission a refracted ray is lost inside
+     * the pane (dark, test_refraction); a straight one reaches the wall,
+     * and no ray is refracted at all. */
+    glass_pane_scene();
+    ts.scene.options.max_depth = 1;
+    ts.scene.options.refractionless = 0;
+    ts.scene.options.refraction = 0;
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    render_ctx_t ctx;
+    render_ctx_init(&ctx, f);
+    rgb8_t p = render_pixel(&ctx, 4, 4);
+    CHECK(p.g >= 254);
+    CHECK_EQ_INT(ctx.stats.refraction, 0);
+    CHECK_EQ_INT(ctx.stats.transmission, 1);
+    /* at the full depth too: straight, never refracted */
+    ts.scene.options.max_depth = 4;
+    f = ts_prepare(&ts);
+    render_ctx_init(&ctx, f);
+    p = render_pixel(&ctx, 4, 4);
+    CHECK(p.g >= 254);
+    CHECK_EQ_INT(ctx.stats.refraction, 0);
+    CHECK_EQ_INT(ctx.stats.transmission, 1);
+    /* and refracting, the same depth traces refracted rays */
+    ts.scene.options.refraction = 1;
+    f = ts_prepare(&ts);
+    render_ctx_init(&ctx, f);
+    render_pixel(&ctx, 4, 4);
+    CHECK(ctx.stats.refraction > 0);
+}
+
 /* A scene with nesting, every primitive kind and transparency. */
 static void busy_scene(void)
 {
@@ -458,6 +494,7 @@ int main(void)
     RUN(test_shadows);
     RUN(test_mirror);
     RUN(test_refraction);
+    RUN(test_refraction_off);
     RUN(test_speedups_same_image);
     RUN(test_screen_rect);
     RUN(test_tie_break);

@@ -56,6 +56,7 @@ static inline void ts_init(test_scene_t *t, uint16_t width, uint16_t height)
     s->options.use_bounds = 1;
     s->options.use_hierarchy = 1;
     s->options.shadows = 1;
+    s->options.refraction = 1;
     s->lights = t->lights;
     s->materials = t->materials;
     s->maps = t->maps;

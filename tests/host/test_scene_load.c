@@ -112,6 +112,7 @@ static void test_round_trip(void)
     CHECK_EQ_INT(s.options.max_depth, 4);
     CHECK_EQ_INT(s.options.shadows, 0);
     CHECK_EQ_INT(s.options.refractionless, 1);
+    CHECK_EQ_INT(s.options.refraction, 1);
     CHECK_EQ_INT(s.options.use_bounds, 1);
     CHECK_NEAR(num_to_double(s.background.b), 0.3, VAL_TOL);
     /* fov 60 horizontal, 64x48: tan(30 deg) * 48/64 */

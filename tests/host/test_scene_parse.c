@@ -48,6 +48,27 @@ static void test_minimal_scene_and_defaults(void)
     sd_free(&s);
 }
 
+static void test_refraction_option(void)
+{
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    int rc = sd_parse_text("t.scn", HEAD "options { refraction off }\nsphere { material m radius 1 }\n", &s,
+                           err, sizeof err);
+    CHECK_EQ_INT(rc, 0);
+    if (rc)
+        return;
+    CHECK_EQ_INT(s.view.flags, SCN_OPT_REFRACTIONLESS | SCN_OPT_NO_REFRACTION);
+    sd_free(&s);
+    rc = sd_parse_text("t.scn", HEAD "options { refraction on }\nsphere { material m radius 1 }\n", &s,
+                       err, sizeof err);
+    CHECK_EQ_INT(rc, 0);
+    if (rc)
+        return;
+    CHECK_EQ_INT(s.view.flags, SCN_OPT_REFRACTIONLESS);
+    sd_free(&s);
+    EXPECT_ERROR(HEAD "options { refraction maybe }\n", 3, 22, "on");
+}
+
 static void test_transforms_compose_in_order(void)
 {
     struct sd_scene s;
@@ -139,6 +160,7 @@ static void test_deep_nesting_refused(void)
 int main(void)
 {
     RUN(test_minimal_scene_and_defaults);
+    RUN(test_refraction_option);
     RUN(test_transforms_compose_in_order);
     RUN(test_keyframe_interpolation);
     RUN(test_errors_name_line_and_column);

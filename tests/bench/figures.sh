@@ -1,0 +1,244 @@
+#!/usr/bin/env bash
+# figures.sh: the paper's figures and tables on equal-speed unit computers
+# (docs/RESULTS.md, "The paper's figures"): each from board runs traced with
+# links1 render --trace and replayed with links1 replay.  Writes into
+# FIG_OUT (default docs/figures): fig7.png, fig10.png (gnuplot), and
+# fig7.md, fig10.md, table2.md, table3.md (the numbers, with the commands).
+#
+#   make figures                         # the full size (also in make bench)
+#   FIG_SMALL=1 FIG_OUT=DIR bash tests/bench/figures.sh   # the reduced run
+#
+# The full size: demo.scn at 512x480 (Fig. 7: the board at 1..254 NCs, the
+# replay at 1..254), demo.scn with shadows off at 512x480 (Fig. 10), SPD
+# tetra 5 (4,096 triangles) at 128x96 (Table 2), glass.scn at 256x240
+# (Table 3).  FIG_SMALL=1 shrinks every size and NC list (well under 30 s).
+set -u
+cd "$(dirname "$0")/../.."
+LINKS1=${LINKS1:-build/links1}
+SPD=${SPD:-build/links1-spd}
+export FW_DIR=${FW_DIR:-build}
+OUT=${FIG_OUT:-docs/figures}
+LIMIT_S=${FIG_RUN_LIMIT_S:-1800}
+if [ "${FIG_SMALL:-0}" = 1 ]; then
+    SIZE7=64x48 BOARD7="1 2 4" REPLAY7=1,2,4,8,16,64,254 SIZE10=64x48 K10="16 64 256 1024"
+    T2SPD="tetra 2" SIZE2=32x24 SIZE3=48x36 T2K="480 96"
+else
+    SIZE7=512x480 BOARD7="1 2 4 8 16 32 64 128 254" REPLAY7=1,2,4,8,16,32,64,128,254 SIZE10=512x480
+    K10="64 128 256 512 1024 2048 4096 8192 16384" T2SPD="tetra 5" SIZE2=128x96 SIZE3=256x240
+    T2K="2400 480"
+fi
+SIZE2=${FIG_T2_SIZE:-$SIZE2}
+PARTS=" ${FIG_PARTS:-7 10 2 3} " # which figures to make
+# The tuned replay (docs/RESULTS.md): decreasing areas, an NC asking for its
+# next area a round trip before it finishes, the DM preparing the frame
+# while the previous one renders; per NC count the best smallest-area bound
+# K and guided factor G of these (finer final areas pay off until the RC's
+# service time limits them).
+TUNED=(--balance decreasing --prefetch --pipelined)
+TUNED_K="4096 8192 16384 32768" TUNED_G="2 3 4"
+[ "${FIG_SMALL:-0}" = 1 ] && TUNED_K=4096 TUNED_G="2 3"
+mkdir -p "$OUT"
+# FIG_KEEP=DIR keeps the traces and logs there.
+if [ -n "${FIG_KEEP:-}" ]; then
+    TMP=$FIG_KEEP
+    mkdir -p "$TMP"
+else
+    TMP=$(mktemp -d /tmp/links1-figures.XXXXXX)
+    trap 'rm -rf "$TMP"' EXIT
+fi
+fail() { echo "figures: $*" >&2; exit 1; }
+
+# board LOG links1-render-args...: one board run; exits on failure.  With
+# FIG_REUSE=1 and FIG_KEEP, a run whose log is there already is not repeated
+# (its trace is kept next to it).
+board() {
+    local log=$1; shift
+    [ "${FIG_REUSE:-0}" = 1 ] && [ -n "${FIG_KEEP:-}" ] && grep -q 'trace of\|NCs total' "$log" \
+        2>/dev/null && return 0
+    timeout "$LIMIT_S" "$LINKS1" render --quiet "$@" >"$log" 2>&1 ||
+        fail "links1 render $* failed: $(tail -n 3 "$log")"
+}
+nc_total() { sed -nE 's/.*NCs total ([0-9]+).*/\1/p' "$1"; }
+nc_max() { sed -nE 's/.*max ([0-9]+),.*/\1/p' "$1"; }
+# field NAME: the value after NAME on replay lines, one per line.
+field() { awk -v k="$1" '$1 == "ncs" { for (i = 1; i < NF; i++) if ($i == k) print $(i + 1) }'; }
+
+# ---- Fig. 7: speed-up against NCs ----
+if [[ $PARTS == *" 7 "* ]]; then
+echo "figures: Fig. 7 (demo.scn $SIZE7)"
+T7="$TMP/fig7.trace"
+declare -A BOARD_S
+one=
+for n in $BOARD7; do
+    args=(scenes/demo.scn --size "$SIZE7" --ncs "$n" --count-insns -o "$TMP/f7.ppm")
+    [ "$n" = 1 ] && args+=(--trace "$T7")
+    board "$TMP/b7-$n.log" "${args[@]}"
+    [ -z "$one" ] && one=$(nc_total "$TMP/b7-$n.log")
+    BOARD_S[$n]=$(awk -v a="$one" -v b="$(nc_max "$TMP/b7-$n.log")" 'BEGIN { printf "%.2f", a / b }')
+done
+"$LINKS1" replay "$T7" --ncs "$REPLAY7" >"$TMP/r7-default.txt" || fail "replay (defaults)"
+# Tuned: per NC count, the best of TUNED_K x TUNED_G.
+: >"$TMP/r7-tuned.txt"
+for n in ${REPLAY7//,/ }; do
+    bestline=
+    for k in $TUNED_K; do
+        for g in $TUNED_G; do
+            line=$("$LINKS1" replay "$T7" --ncs "$n" "${TUNED[@]}" --areas "$k" --guided "$g" |
+                grep '^ncs') || fail "replay (tuned) $n NCs"
+            line="$line K $k G $g"
+            if [ -z "$bestline" ] || awk -v a="$(echo "$line" | field frame_ms)" \
+                -v b="$(echo "$bestline" | field frame_ms)" 'BEGIN { exit !(a < b) }'; then
+                bestline=$line
+            fi
+        done
+    done
+    echo "$bestline" >>"$TMP/r7-tuned.txt"
+done
+paste <(field ncs <"$TMP/r7-default.txt") <(field speed-up <"$TMP/r7-default.txt") \
+    <(field speed-up <"$TMP/r7-tuned.txt") <(field busy <"$TMP/r7-tuned.txt") \
+    <(field frame_ms <"$TMP/r7-tuned.txt") <(field K <"$TMP/r7-tuned.txt") \
+    <(field G <"$TMP/r7-tuned.txt") >"$TMP/r7.tsv"
+{
+    echo "# ncs board replay-default replay-tuned"
+    while read -r n sd st busy ms k g; do
+        echo "$n ${BOARD_S[$n]:-NaN} $sd $st"
+    done <"$TMP/r7.tsv"
+} >"$OUT/fig7.dat"
+{
+    echo "Fig. 7: speed-up over 1 NC, demo.scn at $SIZE7 (one trace: links1 render scenes/demo.scn"
+    echo "--size $SIZE7 --ncs 1 --count-insns --trace T; the board's other NC counts the same"
+    echo "without --trace; replay: links1 replay T --ncs N, and tuned: links1 replay T --ncs N"
+    echo "${TUNED[*]} --areas K --guided G)."
+    echo
+    echo "| NCs | board (1-NC total / largest NC) | replay, board's schedule | replay, tuned | tuned: K, G | tuned: NCs busy | tuned: frame s at 1 MIPS |"
+    echo "|---|---|---|---|---|---|---|"
+    while read -r n sd st busy ms k g; do
+        echo "| $n | ${BOARD_S[$n]:--} | $sd | $st | $k, $g | $busy | $(awk -v m="$ms" 'BEGIN { printf "%.1f", m / 1000 }') |"
+    done <"$TMP/r7.tsv"
+    echo
+    sed -n 1p "$TMP/r7-tuned.txt"
+} >"$OUT/fig7.md"
+gnuplot <<GP || fail "gnuplot fig7"
+set terminal pngcairo size 800,560
+set output "$OUT/fig7.png"
+set title "Fig. 7: speed-up against NCs (demo.scn $SIZE7)"
+set xlabel "NCs"; set ylabel "speed-up over 1 NC"
+set logscale xy 2; set key top left; set grid
+set xrange [0.8:320]; set yrange [0.8:320]
+plot x title "linear" with lines dt 2 lc rgb "gray", \
+     "$OUT/fig7.dat" using 1:2 title "board (largest NC's instructions)" with linespoints pt 7, \
+     "$OUT/fig7.dat" using 1:3 title "replay, the board's schedule" with linespoints pt 5, \
+     "$OUT/fig7.dat" using 1:4 title "replay, tuned schedule + prefetch" with linespoints pt 9, \
+     "-" using 1:2 title "LINKS-1 (paper): 63.07x at 64" with points pt 3 ps 2 lc rgb "red"
+64 63.07
+e
+GP
+fi
+
+# ---- Fig. 10: simple dynamic balancing, 64 NCs, shadows off ----
+if [[ $PARTS == *" 10 "* ]]; then
+echo "figures: Fig. 10 (demo.scn, shadows off, $SIZE10)"
+sed 's/^options {/options { shadows off/' scenes/demo.scn >"$TMP/noshadow.scn"
+ln -sfn "$PWD/scenes/maps" "$TMP/maps" # the scene's image maps, by relative path
+grep -q 'shadows off' "$TMP/noshadow.scn" || fail "no options block in demo.scn to turn shadows off"
+T10="$TMP/fig10.trace"
+board "$TMP/b10.log" "$TMP/noshadow.scn" --size "$SIZE10" --ncs 2 --balance dynamic --areas 1024 \
+    --trace "$T10" -o "$TMP/f10.ppm"
+: >"$TMP/r10.txt"
+for k in $K10; do
+    "$LINKS1" replay "$T10" --ncs 64 --balance dynamic --areas "$k" >>"$TMP/r10.txt" ||
+        fail "replay fig10 K=$k"
+done
+paste <(field areas <"$TMP/r10.txt") <(field frame_ms <"$TMP/r10.txt") \
+    <(field busy <"$TMP/r10.txt") <(field rc_busy <"$TMP/r10.txt") >"$TMP/r10.tsv"
+best=$(sort -g -k2 "$TMP/r10.tsv" | head -1)
+first=$(head -1 "$TMP/r10.tsv")
+awk '{ printf "%s %.3f\n", $1, $2 / 1000 }' "$TMP/r10.tsv" >"$OUT/fig10.dat"
+{
+    echo "Fig. 10: simple dynamic balancing on 64 NCs, demo.scn with shadows off at $SIZE10"
+    echo "(trace: links1 render NOSHADOW.scn --size $SIZE10 --ncs 2 --balance dynamic --areas 1024"
+    echo "--trace T; replay: links1 replay T --ncs 64 --balance dynamic --areas K)."
+    echo
+    echo "| areas | frame s at 1 MIPS | NCs busy | RC busy |"
+    echo "|---|---|---|---|"
+    awk '{ printf "| %s | %.1f | %s | %s |\n", $1, $2 / 1000, $3, $4 }' "$TMP/r10.tsv"
+    echo
+    echo "Best at $(echo "$best" | cut -f1) areas, $(awk -v a="$(echo "$first" | cut -f2)" \
+        -v b="$(echo "$best" | cut -f2)" 'BEGIN { printf "%.2f", a / b }')x faster than at" \
+        "$(echo "$first" | cut -f1) areas (the paper: best at 1,024, about 2x over 64)."
+} >"$OUT/fig10.md"
+gnuplot <<GP || fail "gnuplot fig10"
+set terminal pngcairo size 800,560
+set output "$OUT/fig10.png"
+set title "Fig. 10: simple dynamic balancing, 64 NCs (demo.scn, shadows off, $SIZE10)"
+set xlabel "areas"; set ylabel "frame time, s (units at 1 MIPS)"
+set logscale x 2; set grid; set key top right
+plot "$OUT/fig10.dat" using 1:2 title "replay" with linespoints pt 7
+GP
+fi
+
+# ---- Table 2: the speed-ups one by one, 16 NCs ----
+if [[ $PARTS == *" 2 "* ]]; then
+echo "figures: Table 2 (SPD $T2SPD, $SIZE2)"
+"$SPD" $T2SPD -o "$TMP/t2.scn" --size "$SIZE2" >"$TMP/spd.log" 2>&1 || fail "links1-spd $T2SPD"
+prims=$(sed -nE 's/.*: ([0-9]+) spheres, ([0-9]+) triangles.*/\1 spheres, \2 triangles/p' "$TMP/spd.log")
+rows=("none|--no-bbox --no-hierarchy --no-yclip --no-xclip"
+      "bounding boxes only|--no-hierarchy --no-yclip --no-xclip"
+      "+ hierarchy|--no-yclip --no-xclip" "+ Y clipping|--no-xclip" "+ X clipping (all)|")
+set -- $T2K
+{
+    echo "Table 2: SPD $T2SPD ($prims, the compiler's automatic hierarchy) at $SIZE2,"
+    echo "16 NCs, simple dynamic balancing; frame s at 1 MIPS, the DM preparing during the"
+    echo "previous frame (trace: links1 render T2.scn --ncs 2 SWITCHES --trace T; replay:"
+    echo "links1 replay T --ncs 16 --balance dynamic --areas K --pipelined)."
+    echo
+    echo "| speed-ups | board: NC instructions (M) | $1 areas: frame s | vs none | $2 areas: frame s | vs none |"
+    echo "|---|---|---|---|---|---|"
+} >"$OUT/table2.md"
+none1= none2=
+r=0
+for row in "${rows[@]}"; do
+    r=$((r + 1))
+    board "$TMP/b2-$r.log" "$TMP/t2.scn" --ncs 2 ${row#*|} --trace "$TMP/t2-$r.trace" -o "$TMP/t2.ppm"
+    "$LINKS1" replay "$TMP/t2-$r.trace" --ncs 16 --balance dynamic --areas "$1" --pipelined \
+        >"$TMP/r2a.txt" || fail "replay table 2"
+    "$LINKS1" replay "$TMP/t2-$r.trace" --ncs 16 --balance dynamic --areas "$2" --pipelined \
+        >"$TMP/r2b.txt" || fail "replay table 2"
+    a=$(field frame_ms <"$TMP/r2a.txt") b=$(field frame_ms <"$TMP/r2b.txt")
+    [ -z "$none1" ] && none1=$a none2=$b
+    insns=$(awk '$1 == "area" { s += $15 } END { printf "%.1f", s / 1e6 }' "$TMP/t2-$r.trace")
+    awk -v n="${row%%|*}" -v a="$a" -v b="$b" -v na="$none1" -v nb="$none2" -v m="$insns" \
+        'BEGIN { printf "| %s | %s | %.1f | %.1fx | %.1f | %.1fx |\n", n, m, a / 1000, na / a, b / 1000, nb / b }' \
+        >>"$OUT/table2.md"
+done
+fi
+
+# ---- Table 3: refracting against refractionless transmission ----
+if [[ $PARTS == *" 3 "* ]]; then
+echo "figures: Table 3 (glass.scn, $SIZE3)"
+{
+    echo "Table 3: glass.scn at $SIZE3, its own depth (max_depth 6), 16 NCs, decreasing"
+    echo "balancing; frame s at 1 MIPS (trace: links1 render scenes/glass.scn --size $SIZE3 --ncs 2"
+    echo "[--refraction off] --trace T; replay: links1 replay T --ncs 16 --pipelined)."
+    echo
+    echo "| transmission | frame s | NC instructions (M) | refracted rays |"
+    echo "|---|---|---|---|"
+} >"$OUT/table3.md"
+for mode in on off; do
+    board "$TMP/b3-$mode.log" scenes/glass.scn --size "$SIZE3" --ncs 2 --refraction "$mode" \
+        --count-insns --trace "$TMP/t3-$mode.trace" -o "$TMP/t3.ppm"
+    "$LINKS1" replay "$TMP/t3-$mode.trace" --ncs 16 --pipelined >"$TMP/r3.txt" || fail "replay table 3"
+    ms=$(field frame_ms <"$TMP/r3.txt")
+    eval "ms_$mode=$ms"
+    awk -v n="$([ $mode = on ] && echo refracting || echo 'never bending (--refraction off)')" \
+        -v ms="$ms" -v t="$(nc_total "$TMP/b3-$mode.log")" \
+        -v r="$(grep -o '[0-9]* refraction,' "$TMP/b3-$mode.log" | grep -o '[0-9]*')" \
+        'BEGIN { printf "| %s | %.1f | %.1f | %s |\n", n, ms / 1000, t / 1e6, r }' >>"$OUT/table3.md"
+done
+awk -v a="$ms_on" -v b="$ms_off" 'BEGIN { printf "\nRefracting takes %.2fx the time of never bending (the paper: 212 s against 82 s, 2.6x).\n", a / b }' >>"$OUT/table3.md"
+fi
+for f in fig7.png fig10.png fig7.md fig10.md table2.md table3.md; do
+    [ -s "$OUT/$f" ] || fail "$OUT/$f was not written"
+done
+echo "figures: written to $OUT"
+cat "$OUT/fig7.md" "$OUT/fig10.md" "$OUT/table2.md" "$OUT/table3.md"

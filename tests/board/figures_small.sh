@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# make figures end to end at a reduced size (tests/bench/figures.sh with
+# FIG_SMALL=1): every chart and table is written, the charts are PNG, the
+# replay's speed-ups are there for every NC count, and refracting costs
+# more than never bending.
+. "$(dirname "$0")/lib.sh"
+board_ready figures_small || exit 0
+out=$(mktemp -d /tmp/links1-figures-small.XXXXXX)
+trap 'rm -rf "$out"' EXIT
+if ! FIG_SMALL=1 FIG_OUT="$out" FIG_RUN_LIMIT_S="$BOARD_RUN_LIMIT_S" \
+    bash tests/bench/figures.sh >"$out/log" 2>&1; then
+    echo "FAIL figures_small: $(tail -n 2 "$out/log" | tr '\n' ' ')"
+    exit 0
+fi
+echo "PASS figures_small"
+bad=
+for f in fig7.png fig10.png; do
+    [ "$(head -c 8 "$out/$f" | od -An -tx1 | tr -d ' \n')" = 89504e470d0a1a0a ] || bad="$bad $f"
+done
+[ -z "$bad" ] && echo "PASS figures_small_png" || echo "FAIL figures_small_png: not PNG:$bad"
+# fig7.dat: one row per replayed NC count (7), replay speed-ups positive,
+# the 1-NC row exactly 1.
+rows=$(grep -vc '^#' "$out/fig7.dat")
+if [ "$rows" = 7 ] && awk '!/^#/ { if (!($3 > 0 && $4 > 0)) bad = 1; if ($1 == 1 && ($3 != 1 || $4 != 1)) bad = 1 } END { exit bad }' "$out/fig7.dat"; then
+    echo "PASS figures_small_fig7_rows"
+else
+    echo "FAIL figures_small_fig7_rows: $(tr '\n' ';' <"$out/fig7.dat")"
+fi
+if grep -Eq 'Refracting takes [0-9.]+x' "$out/table3.md" &&
+    awk '/Refracting takes/ { v = $3 + 0 } END { exit !(v > 1) }' "$out/table3.md"; then
+    echo "PASS figures_small_table3_refraction_costs_more"
+else
+    echo "FAIL figures_small_table3_refraction_costs_more: $(tail -n 1 "$out/table3.md")"
+fi

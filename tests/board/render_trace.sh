@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# links1 render --trace on the board, then links1 replay of the trace:
+#  - the traced image is the host build's (tracing changes no pixel);
+#  - the marks account for the NCs' work: each NC's areas in the trace add
+#    up to at least 98% of what the plugin counted on that NC for the frame;
+#  - replayed with static balancing on the board's NC count, the per-NC
+#    instructions are the board's, exactly (as a set: which NC drew which
+#    static area depends on timing on the board, and in the replay);
+#  - replayed with dynamic and decreasing balancing on other NC counts, the
+#    handout is legal (links1 replay --check).
+. "$(dirname "$0")/lib.sh"
+. "$(dirname "$0")/render_lib.sh"
+board_ready render_trace || exit 0
+SIZE=64x48
+ref=$(render_ref scenes/demo.scn float $SIZE)
+out="$RENDER_TMP/trace.ppm"
+tr="$RENDER_TMP/demo.trace"
+if render_board render_trace "$out" scenes/demo.scn -o "$out" --ncs 4 --size $SIZE \
+    --balance static --count-insns --trace "$tr"; then
+    render_same render_trace_image "$ref" "$out"
+    log="$RENDER_TMP/render_trace.log"
+    # Per NC: the plugin's count (cores 2..5) and the trace's area totals.
+    board=$(awk '$1 == "core" && $3 == "NC" { print $4 }' "$log")
+    traced=$(awk '$1 == "area" { s[$7] += $15 } END { for (n = 0; n < 4; n++) print s[n] + 0 }' "$tr")
+    if [ "$(echo "$board" | wc -l)" = 4 ] &&
+        paste <(echo "$board") <(echo "$traced") |
+        awk '{ if ($2 <= 0 || $2 > $1 || $2 < 0.98 * $1) bad = 1 } END { exit bad }'; then
+        echo "PASS render_trace_covers_nc_work"
+    else
+        echo "FAIL render_trace_covers_nc_work: plugin per NC '$(echo $board)', trace per NC '$(echo $traced)'"
+    fi
+    rep="$RENDER_TMP/replay.txt"
+    if "$LINKS1" replay "$tr" --ncs 4 --balance static --per-nc --check >"$rep" 2>&1 &&
+        [ "$(awk '$1 == "nc" && $3 == "insns" { print $4 }' "$rep" | sort -n)" = \
+          "$(echo "$traced" | sort -n)" ] && grep -q 'exact 4/4' "$rep"; then
+        echo "PASS render_trace_static_replay_exact"
+    else
+        echo "FAIL render_trace_static_replay_exact: board per NC '$(echo $traced)'; replay: $(tr '\n' ' ' <"$rep")"
+    fi
+    legal=1
+    for bal in dynamic decreasing; do
+        "$LINKS1" replay "$tr" --ncs 1,3,16 --balance $bal --areas 64 --check >"$rep" 2>&1 &&
+            [ "$(grep -c 'legal handout' "$rep")" = 3 ] || legal=0
+    done
+    "$LINKS1" replay "$tr" --ncs 5 --balance decreasing --prefetch --check >"$rep" 2>&1 &&
+        grep -q 'legal handout' "$rep" || legal=0
+    if [ $legal = 1 ]; then
+        echo "PASS render_trace_dynamic_replay_legal"
+    else
+        echo "FAIL render_trace_dynamic_replay_legal: $(tr '\n' ' ' <"$rep")"
+    fi
+fi

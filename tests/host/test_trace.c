@@ -1,0 +1,298 @@
+/* test_trace.c: trace files (host-tools/trace_file.h) round-trip and are
+ * refused when damaged; the replay (host-tools/replay.h) gives each NC
+ * exactly the board's instructions under static balancing, and a legal
+ * handout of the schedule under dynamic and decreasing balancing. */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "host-tools/replay.h"
+#include "host-tools/trace_file.h"
+#include "proto/areas.h"
+#include "tests/check.h"
+
+static uint32_t test_rand_state = 12345;
+static uint32_t test_rand(void)
+{
+    test_rand_state = test_rand_state * 1103515245u + 12345u;
+    return test_rand_state >> 8;
+}
+
+/* A trace as the board would leave it: the schedule's areas handed out
+ * round robin over ncs NCs, random per-pixel, set-up and push costs. */
+static void make_trace(struct trace *t, enum areas_mode mode, uint32_t w, uint32_t h,
+                       uint32_t ncs, uint32_t k)
+{
+    memset(t, 0, sizeof *t);
+    t->width = w;
+    t->height = h;
+    t->ncs = ncs;
+    t->balance = (uint32_t)mode;
+    t->k = k;
+    t->dm_prepare = 400000 + test_rand() % 1000;
+    t->rc_broadcast = 80000 + test_rand() % 1000;
+    t->broadcast_bytes = 20000;
+    t->rc_other = 5000;
+    t->nc_setup = calloc(ncs, sizeof *t->nc_setup);
+    for (uint32_t i = 0; i < ncs; i++)
+        t->nc_setup[i] = 966;
+    t->pixel = calloc((size_t)w * h, sizeof *t->pixel);
+    for (size_t p = 0; p < (size_t)w * h; p++)
+        t->pixel[p] = 1000 + test_rand() % 50000;
+    struct areas s;
+    struct area a;
+    areas_init(&s, mode, w, h, ncs, k);
+    t->nareas = areas_count(&s);
+    t->areas = calloc(t->nareas, sizeof *t->areas);
+    uint32_t *order = calloc(ncs, sizeof *order);
+    for (uint32_t i = 0; areas_next(&s, &a); i++) {
+        struct trace_area *ta = &t->areas[i];
+        ta->x = a.x;
+        ta->y = a.y;
+        ta->w = a.w;
+        ta->h = a.h;
+        ta->nc = i % ncs;
+        ta->order = order[ta->nc]++;
+        ta->handout = i;
+        ta->setup = 200 + test_rand() % 300;
+        ta->push = 40ull * a.w * a.h;
+        ta->rc = 1557;
+        ta->total = ta->setup + ta->push + trace_pixels_sum(t, a.x, a.y, a.w, a.h);
+    }
+    free(order);
+}
+
+static int same_trace(const struct trace *a, const struct trace *b)
+{
+    if (a->width != b->width || a->height != b->height || a->ncs != b->ncs ||
+        a->balance != b->balance || a->k != b->k || a->flags != b->flags ||
+        a->dm_prepare != b->dm_prepare || a->rc_broadcast != b->rc_broadcast ||
+        a->broadcast_bytes != b->broadcast_bytes || a->rc_other != b->rc_other ||
+        a->nareas != b->nareas)
+        return 0;
+    if (memcmp(a->nc_setup, b->nc_setup, a->ncs * sizeof *a->nc_setup) != 0 ||
+        memcmp(a->pixel, b->pixel, (size_t)a->width * a->height * sizeof *a->pixel) != 0)
+        return 0;
+    for (uint32_t i = 0; i < a->nareas; i++)
+        if (memcmp(&a->areas[i], &b->areas[i], sizeof a->areas[i]) != 0)
+            return 0;
+    return 1;
+}
+
+static char test_dir[] = "/tmp/links1-test-trace-XXXXXX";
+
+static void test_trace_round_trips(void)
+{
+    struct trace t, back;
+    char err[TRACE_ERR_MAX], path[128];
+    snprintf(path, sizeof path, "%s/rt.trace", test_dir);
+    make_trace(&t, AREAS_DECREASING, 37, 23, 3, 64);
+    CHECK_EQ_INT(trace_check(&t, err, sizeof err), 0);
+    CHECK_EQ_INT(trace_write(path, &t, err, sizeof err), 0);
+    int r = trace_read(path, &back, err, sizeof err);
+    if (r != 0)
+        printf("  %s\n", err);
+    CHECK_EQ_INT(r, 0);
+    CHECK(r == 0 && same_trace(&t, &back));
+    if (r == 0)
+        trace_free(&back);
+    trace_free(&t);
+}
+
+/* Writes t with one line replaced (or cut after it) and expects the reader
+ * to refuse it with a message holding want. */
+static void expect_refused(const struct trace *t, const char *prefix, const char *repl,
+                           const char *want)
+{
+    char err[TRACE_ERR_MAX], path[128], bad[128];
+    snprintf(path, sizeof path, "%s/good.trace", test_dir);
+    snprintf(bad, sizeof bad, "%s/bad.trace", test_dir);
+    trace_write(path, t, err, sizeof err);
+    FILE *in = fopen(path, "r"), *out = fopen(bad, "w");
+    char line[1 << 16];
+    int done = 0;
+    while (in && out && fgets(line, sizeof line, in)) {
+        if (!done && strncmp(line, prefix, strlen(prefix)) == 0) {
+            done = 1;
+            if (!repl)
+                break;
+            fputs(repl, out);
+            continue;
+        }
+        fputs(line, out);
+    }
+    if (in)
+        fclose(in);
+    if (out)
+        fclose(out);
+    CHECK(done);
+    struct trace back;
+    int r = trace_read(bad, &back, err, sizeof err);
+    CHECK(r != 0);
+    if (r == 0) {
+        trace_free(&back);
+        return;
+    }
+    if (!strstr(err, want)) {
+        char m[400];
+        snprintf(m, sizeof m, "message '%s' does not name '%s'", err, want);
+        check_fail(__FILE__, __LINE__, m);
+    }
+}
+
+static void test_damaged_traces_are_refused(void)
+{
+    struct trace t;
+    make_trace(&t, AREAS_DYNAMIC, 16, 8, 2, 4); /* 4 areas of 4x8 */
+    expect_refused(&t, "links1-trace", "links1-trace 9\n", "version");
+    expect_refused(&t, "row 5", NULL, "want 'row Y'");
+    expect_refused(&t, "area 4 0 4 8", "area 2 0 4 8 nc 1 order 0 setup 1 push 1 total 2 rc 1\n",
+                   "overlaps");
+    expect_refused(&t, "area 0 0 4 8", "area 0 0 4 8 nc 0 order 0 setup 1 push 1 total 2 rc 1\n",
+                   "is not its total");
+    expect_refused(&t, "area 0 0 4 8", "area 0 0 4 8 nc 7 order 0 setup 1 push 1 total 2 rc 1\n",
+                   "NC 7");
+    expect_refused(&t, "end", NULL, "want 'end'");
+    expect_refused(&t, "run ", "run ncs 2 balance guided k 4 flags 0\n", "balance mode");
+    trace_free(&t);
+}
+
+static int cmp_u64(const void *a, const void *b)
+{
+    uint64_t x = *(const uint64_t *)a, y = *(const uint64_t *)b;
+    return x < y ? -1 : x > y;
+}
+
+/* Static balancing: timing decides only which NC gets which area; the
+ * per-NC instructions are the board's, exactly. */
+static void test_static_replay_is_exact(void)
+{
+    struct trace t;
+    char err[TRACE_ERR_MAX];
+    make_trace(&t, AREAS_STATIC, 64, 48, 8, 0);
+    uint64_t board[8] = {0};
+    for (uint32_t i = 0; i < t.nareas; i++)
+        board[t.areas[i].nc] += t.areas[i].total;
+    for (int as_recorded = 0; as_recorded <= 1; as_recorded++) {
+        struct replay_cfg c = {.ncs = 8, .balance = AREAS_STATIC, .mips = 1.0, .line_us = 1000,
+                              .byte_us = 520.8, .as_recorded = as_recorded};
+        struct replay_result r;
+        CHECK_EQ_INT(replay_run(&t, &c, &r, err, sizeof err), 0);
+        CHECK_EQ_INT(r.nareas, 8);
+        CHECK_EQ_INT(r.exact, 8);
+        uint64_t got[8], want[8];
+        memcpy(got, r.nc_insns, sizeof got);
+        memcpy(want, board, sizeof want);
+        if (as_recorded) {
+            for (int n = 0; n < 8; n++)
+                CHECK_EQ_INT(got[n], want[n]);
+        } else {
+            qsort(got, 8, sizeof got[0], cmp_u64);
+            qsort(want, 8, sizeof want[0], cmp_u64);
+            for (int n = 0; n < 8; n++)
+                CHECK_EQ_INT(got[n], want[n]);
+        }
+        CHECK_EQ_INT(replay_check_legal(&t, &c, &r, err, sizeof err), 0);
+        replay_free(&r);
+    }
+    trace_free(&t);
+}
+
+/* Dynamic and decreasing, any NC count, with and without prefetching: the
+ * replay hands out the schedule's areas once each, legally; and a
+ * tampered replay is caught. */
+static void test_dynamic_replay_is_legal(void)
+{
+    struct trace t;
+    char err[TRACE_ERR_MAX];
+    make_trace(&t, AREAS_DYNAMIC, 64, 48, 4, 64);
+    const uint32_t ncs[] = {1, 2, 3, 7, 16, 64};
+    for (int mode = AREAS_DYNAMIC; mode <= AREAS_DECREASING; mode++)
+        for (size_t i = 0; i < sizeof ncs / sizeof ncs[0]; i++)
+            for (int pre = 0; pre <= 1; pre++) {
+                struct replay_cfg c = {.ncs = ncs[i], .balance = (enum areas_mode)mode,
+                                       .k = 256, .mips = 1.0, .line_us = 1000,
+                                       .byte_us = 520.8, .prefetch = pre,
+                                       .guided = mode == AREAS_DECREASING ? 1u + (uint32_t)i : 0,
+                                       .pipelined = pre, .first_in_broadcast = (int)(i % 2)};
+                struct replay_result r;
+                CHECK_EQ_INT(replay_run(&t, &c, &r, err, sizeof err), 0);
+                int ok = replay_check_legal(&t, &c, &r, err, sizeof err);
+                if (ok != 0)
+                    printf("  ncs %u mode %d prefetch %d: %s\n", ncs[i], mode, pre, err);
+                CHECK_EQ_INT(ok, 0);
+                uint64_t sum = 0;
+                for (uint32_t n = 0; n < c.ncs; n++)
+                    sum += r.nc_insns[n];
+                CHECK(sum > 0);
+                CHECK(r.busy > 0 && r.busy <= 1.0);
+                uint32_t j = r.nareas - 1; /* the last area: a served request */
+                if (r.nareas > c.ncs + 1 && ncs[i] > 1) {
+                    /* The RC serving two at once, an area given twice. */
+                    struct replay_result bad = r;
+                    double keep = r.areas[j].serve_start;
+                    r.areas[j].serve_start = r.areas[j - 1].serve_start - 1;
+                    CHECK(replay_check_legal(&t, &c, &bad, err, sizeof err) != 0);
+                    r.areas[j].serve_start = keep;
+                    struct replay_area a2 = r.areas[j];
+                    r.areas[j].x = r.areas[j - 1].x;
+                    r.areas[j].y = r.areas[j - 1].y;
+                    CHECK(replay_check_legal(&t, &c, &bad, err, sizeof err) != 0);
+                    r.areas[j] = a2;
+                    CHECK_EQ_INT(replay_check_legal(&t, &c, &bad, err, sizeof err), 0);
+                }
+                replay_free(&r);
+            }
+    /* One NC replayed on one NC: the frame is its work plus the lines. */
+    struct replay_cfg c1 = {.ncs = 1, .balance = AREAS_DYNAMIC, .k = 64, .mips = 2.0};
+    struct replay_result r1;
+    CHECK_EQ_INT(replay_run(&t, &c1, &r1, err, sizeof err), 0);
+    uint64_t all = t.dm_prepare + t.rc_broadcast + t.nc_setup[0];
+    for (uint32_t i = 0; i < t.nareas; i++)
+        all += t.areas[i].total + t.areas[i].rc;
+    CHECK_NEAR(r1.frame_us, (double)all / 2.0, 1e-3);
+    replay_free(&r1);
+    trace_free(&t);
+}
+
+static void test_replay_refuses_bad_settings(void)
+{
+    struct trace t;
+    char err[TRACE_ERR_MAX];
+    make_trace(&t, AREAS_STATIC, 8, 8, 2, 0);
+    struct replay_result r;
+    struct replay_cfg c = {.ncs = 0, .balance = AREAS_DYNAMIC, .k = 4, .mips = 1.0};
+    CHECK(replay_run(&t, &c, &r, err, sizeof err) != 0 && strstr(err, "NC count"));
+    c.ncs = 2;
+    c.mips = 0;
+    CHECK(replay_run(&t, &c, &r, err, sizeof err) != 0 && strstr(err, "--mips"));
+    c.mips = 1;
+    c.ncs = 3;
+    c.as_recorded = 1;
+    CHECK(replay_run(&t, &c, &r, err, sizeof err) != 0 && strstr(err, "as-recorded"));
+    c.as_recorded = 0;
+    c.balance = AREAS_DECREASING;
+    c.guided = AREAS_MAX_GUIDED_FACTOR + 1;
+    CHECK(replay_run(&t, &c, &r, err, sizeof err) != 0 && strstr(err, "guided factor"));
+    trace_free(&t);
+}
+
+int main(void)
+{
+    if (!mkdtemp(test_dir)) {
+        perror("mkdtemp");
+        return 1;
+    }
+    RUN(test_trace_round_trips);
+    RUN(test_damaged_traces_are_refused);
+    RUN(test_static_replay_is_exact);
+    RUN(test_dynamic_replay_is_legal);
+    RUN(test_replay_refuses_bad_settings);
+    char cmd[160];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", test_dir);
+    if (system(cmd) != 0)
+        printf("FAIL cleanup: %s\n", cmd);
+    return check_exit();
+}
