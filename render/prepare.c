@@ -174,7 +174,7 @@ static render_status_t prep_check(const scene_t *s)
         return RENDER_ERR_LIGHTS;
     if (s->options.max_depth > RENDER_MAX_DEPTH)
         return RENDER_ERR_DEPTH;
-    if (s->cluster_count < 1 || s->clusters[0].parent != SCENE_NONE)
+    if (s->cluster_count < 1 || s->clusters[0].parent != SCENE_NO_CLUSTER)
         return RENDER_ERR_CLUSTER;
     for (uint32_t i = 0; i < s->cluster_count; i++) {
         const scene_cluster_t *c = &s->clusters[i];
@@ -364,7 +364,7 @@ static void prep_group_children(const scene_t *s, render_frame_t *f)
     }
     for (uint32_t i = 1; i < s->cluster_count; i++) {
         render_cluster_t *p = &f->clusters[s->clusters[i].parent];
-        f->child_list[p->first_child + p->child_count++] = (uint16_t)i;
+        f->child_list[p->first_child + p->child_count++] = i;
     }
 }
 
@@ -392,7 +392,7 @@ size_t render_prepare_bytes(const scene_t *s)
     size_t prims = s->prim_count ? s->prim_count : 1;
     size_t comps = s->density_component_count ? s->density_component_count : 1;
     size_t n = sizeof(render_frame_t) + sizeof(render_cluster_t) * (size_t)s->cluster_count +
-               sizeof(uint16_t) * (size_t)s->cluster_count + sizeof(render_prim_t) * prims +
+               sizeof(uint32_t) * (size_t)s->cluster_count + sizeof(render_prim_t) * prims +
                sizeof(uint32_t) * prims + sizeof(num_t) * comps;
     size_t scratch = (2 * sizeof(xform_t) + 1) * (size_t)s->cluster_count;
     return n + scratch + 12 * ARENA_MAX_ALIGN; /* 9 allocations, each padded at most that */
@@ -408,7 +408,7 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     if (!f)
         return RENDER_ERR_ARENA;
     f->clusters = ARENA_NEW_ARRAY(arena, render_cluster_t, s->cluster_count);
-    f->child_list = ARENA_NEW_ARRAY(arena, uint16_t, s->cluster_count);
+    f->child_list = ARENA_NEW_ARRAY(arena, uint32_t, s->cluster_count);
     f->prims = ARENA_NEW_ARRAY(arena, render_prim_t, s->prim_count ? s->prim_count : 1);
     f->prim_list = ARENA_NEW_ARRAY(arena, uint32_t, s->prim_count ? s->prim_count : 1);
     uint32_t ncomp = s->density_component_count;

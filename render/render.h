@@ -107,9 +107,9 @@ typedef struct {
     num_t screen_half_w, screen_half_h; /* eye-space half extents at z = 1 */
     uint16_t light_count;
     render_light_t lights[RENDER_MAX_LIGHTS];
-    uint16_t cluster_count;
+    uint32_t cluster_count;
     render_cluster_t *clusters;    /* reloc; index = scene cluster index */
-    uint16_t *child_list;          /* reloc; cluster indices, grouped by parent */
+    uint32_t *child_list;          /* reloc; cluster indices, grouped by parent */
     uint32_t prim_count;
     render_prim_t *prims;          /* reloc; index = scene prim index */
     uint32_t *prim_list;           /* reloc; prim indices, grouped by cluster */
@@ -189,7 +189,7 @@ rgb8_t render_pixel(render_ctx_t *ctx, uint32_t x, uint32_t y);
  * the same colour as render_pixel when the list holds every cluster whose
  * screen rectangle contains the pixel. */
 rgb8_t render_pixel_clipped(render_ctx_t *ctx, uint32_t x, uint32_t y,
-                            const uint16_t *clusters, uint32_t count);
+                            const uint32_t *clusters, uint32_t count);
 
 /* Pixels x0..x1-1 of row y into out[0..x1-x0-1]. */
 void render_span(render_ctx_t *ctx, uint32_t y, uint32_t x0, uint32_t x1, rgb8_t *out);

@@ -83,8 +83,8 @@ static size_t compile_map_bytes(const struct sd_map *m)
 
 static void compile_cluster(const struct sd_cluster *c, uint8_t *p)
 {
-    wire_put_u16(p + SCN_CLUSTER_PARENT, compile_index(c->parent));
-    wire_put_u16(p + SCN_CLUSTER_KEY_COUNT, (uint16_t)c->key_count);
+    wire_put_u32(p + SCN_CLUSTER_PARENT, c->parent < 0 ? SCN_NO_CLUSTER : (uint32_t)c->parent);
+    wire_put_u32(p + SCN_CLUSTER_KEY_COUNT, (uint32_t)c->key_count);
     wire_put_u32(p + SCN_CLUSTER_KEY_FIRST, (uint32_t)(c->key_count ? c->key_first : 0));
     for (int i = 0; i < 12; i++)
         wire_put_f32(p + SCN_CLUSTER_MATRIX + 4 * i, (float)c->m[i]);
@@ -94,7 +94,7 @@ static void compile_prim(const struct sd_prim *pr, uint8_t *p)
 {
     wire_put_u16(p + SCN_PRIM_KIND, (uint16_t)pr->kind);
     wire_put_u16(p + SCN_PRIM_MATERIAL, (uint16_t)pr->material);
-    wire_put_u16(p + SCN_PRIM_CLUSTER, (uint16_t)pr->cluster);
+    wire_put_u32(p + SCN_PRIM_CLUSTER, (uint32_t)pr->cluster);
     if (pr->kind == SCN_PRIM_DENSITY) {
         wire_put_u32(p + SCN_PRIM_FIRST, (uint32_t)pr->first);
         wire_put_u32(p + SCN_PRIM_COUNT, (uint32_t)pr->count);
