@@ -31,7 +31,8 @@
 #define LINKS1_PROTO_SCENE_FORMAT_H
 
 /* ------------------------------------------------------------ the limits */
-#define SCN_MAX_SIZE (16u * 1024u * 1024u) /* whole compiled scene, bytes */
+#define SCN_MAX_SIZE (64u * 1024u * 1024u) /* whole compiled scene, bytes; the
+                                              DM keeps it in its private memory */
 #define SCN_MAX_WIDTH 1024                 /* the frame memory is 1024x1024 */
 #define SCN_MAX_HEIGHT 1024
 #define SCN_MAX_LIGHTS 3 /* LINKS-1 scenes use up to three light sources */
@@ -42,7 +43,7 @@
 #define SCN_MAX_CLUSTERS 1048576           /* 32-bit indices; the board's memory
                                               is the tighter bound (blob.h) */
 #define SCN_MAX_CLUSTER_NESTING 32         /* clusters below the root */
-#define SCN_MAX_PRIMS 262144
+#define SCN_MAX_PRIMS 1048576 /* the board's IMSU block is the tighter bound */
 #define SCN_MAX_DENSITY_COMPONENTS 64      /* components of one density sphere */
 #define SCN_MAX_COMPONENTS 65536           /* density components, all prims */
 #define SCN_MAX_KEYS 65536                 /* keyframes over all clusters */

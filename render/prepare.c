@@ -387,15 +387,20 @@ static void prep_group_prims(const scene_t *s, render_frame_t *f)
 /* Keep in step with the allocations of render_prepare below: every array
  * plus the worst alignment padding of each (64 bytes is the most the
  * arena pads). */
-size_t render_prepare_bytes(const scene_t *s)
+size_t render_prepare_bytes_layout(const scene_t *s, const render_layout_t *lay)
 {
     size_t prims = s->prim_count ? s->prim_count : 1;
     size_t comps = s->density_component_count ? s->density_component_count : 1;
-    size_t n = sizeof(render_frame_t) + sizeof(render_cluster_t) * (size_t)s->cluster_count +
-               sizeof(uint32_t) * (size_t)s->cluster_count + sizeof(render_prim_t) * prims +
-               sizeof(uint32_t) * prims + sizeof(num_t) * comps;
-    size_t scratch = (2 * sizeof(xform_t) + 1) * (size_t)s->cluster_count;
+    size_t n = lay->frame + lay->frame_cluster * (size_t)s->cluster_count +
+               sizeof(uint32_t) * (size_t)s->cluster_count + lay->frame_prim * prims +
+               sizeof(uint32_t) * prims + lay->num * comps;
+    size_t scratch = (2 * lay->xform + 1) * (size_t)s->cluster_count;
     return n + scratch + 12 * ARENA_MAX_ALIGN; /* 9 allocations, each padded at most that */
+}
+
+size_t render_prepare_bytes(const scene_t *s)
+{
+    return render_prepare_bytes_layout(s, &render_layout_native);
 }
 
 render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *arena, render_frame_t **out)

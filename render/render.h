@@ -30,6 +30,7 @@
 
 #include "fixed/num.h"
 #include "render/arena.h"
+#include "render/layout.h"
 #include "render/scene.h"
 
 typedef struct {
@@ -178,6 +179,8 @@ render_status_t render_prepare(const scene_t *scene, uint32_t frame_index,
  * scratch and alignment): what a unit computer must set aside.  Rendering
  * itself allocates nothing (stack: RENDER_STACK_BYTES in limits.h). */
 size_t render_prepare_bytes(const scene_t *scene);
+/* The same with another machine's record sizes (render/layout.h). */
+size_t render_prepare_bytes_layout(const scene_t *scene, const render_layout_t *layout);
 
 void render_ctx_init(render_ctx_t *ctx, const render_frame_t *frame);
 

@@ -690,18 +690,24 @@ scene_load_status_t scene_load_shape(const uint8_t *buf, size_t len, scene_t *sh
 /* Keep in step with the allocations of scene_load above: each array (at
  * least one element), the nesting scratch, each padded by at most
  * ARENA_MAX_ALIGN. */
-size_t scene_load_bytes(const scene_t *shape, uint32_t texel_bytes)
+size_t scene_load_bytes_layout(const scene_t *shape, uint32_t texel_bytes,
+                               const render_layout_t *lay)
 {
-#define LOAD_BYTES(type, n) (sizeof(type) * (size_t)((n) ? (n) : 1))
-    return LOAD_BYTES(scene_light_t, shape->light_count) +
-           LOAD_BYTES(scene_material_t, shape->material_count) +
-           LOAD_BYTES(scene_map_t, shape->map_count) + LOAD_BYTES(uint8_t, texel_bytes) +
-           LOAD_BYTES(scene_cluster_t, shape->cluster_count) +
-           LOAD_BYTES(scene_prim_t, shape->prim_count) +
-           LOAD_BYTES(scene_density_component_t, shape->density_component_count) +
-           LOAD_BYTES(scene_key_t, shape->key_count) + LOAD_BYTES(uint8_t, shape->cluster_count) +
+#define LOAD_BYTES(size, n) ((size) * (size_t)((n) ? (n) : 1))
+    return LOAD_BYTES(lay->light, shape->light_count) +
+           LOAD_BYTES(lay->material, shape->material_count) +
+           LOAD_BYTES(lay->map, shape->map_count) + LOAD_BYTES(1, texel_bytes) +
+           LOAD_BYTES(lay->cluster, shape->cluster_count) +
+           LOAD_BYTES(lay->prim, shape->prim_count) +
+           LOAD_BYTES(lay->component, shape->density_component_count) +
+           LOAD_BYTES(lay->key, shape->key_count) + LOAD_BYTES(1, shape->cluster_count) +
            9 * ARENA_MAX_ALIGN;
 #undef LOAD_BYTES
+}
+
+size_t scene_load_bytes(const scene_t *shape, uint32_t texel_bytes)
+{
+    return scene_load_bytes_layout(shape, texel_bytes, &render_layout_native);
 }
 
 const char *scene_load_status_name(scene_load_status_t status)
