@@ -33,6 +33,7 @@ test-full: deps
 # Host speed per arithmetic (wall clock, never a test), then the board's.
 BENCHES += tests/bench/bench_host.sh
 BENCHES += tests/bench/bench_render.sh tests/bench/bench_arith.sh tests/bench/bench_scale.sh
+BENCHES += tests/bench/bench_big.sh
 
 # Encodings of the rendering commands and the NC statistics the RC sums.
 HOST_TESTS += test_render_link

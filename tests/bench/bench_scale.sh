@@ -4,15 +4,17 @@
 #   1. one flat cluster of n random spheres, n = 100 .. 100,000: host ns per
 #      ray (links1 ref --arith float, tracing time only) with the automatic
 #      hierarchy on, and off up to 1,000 (it grows linearly beyond);
-#   2. the SPD scenes (links1-spd) balls 1-4, tetra 1-6 and mount 6 (a
-#      mesh of 8,192 triangles): host ns/ray, board NC instructions per ray
+#   2. the SPD scenes (links1-spd) balls 1-4, tetra 1-6, mount 6 (a
+#      mesh of 8,192 triangles) and the teapot at sizes 2 and 4 (4,160 and
+#      16,384 triangles with the floor): host ns/ray, board NC instructions per ray
 #      (links1 render --count-insns, float, 8 NCs: all NCs' instructions over
 #      the rays the host counts for the same image), and POV-Ray 3.7's trace
 #      time on the same scene through links1 export-pov;
 #   3. the hierarchy's build time against n (links1 compile, on minus off).
 # Host figures are medians of BENCH_RUNS runs (default 3).  Sizes:
 # BENCH_SIZE (default 320x240) on the host and POV-Ray, BENCH_BOARD_SIZE
-# (default 160x120) on the board.  BENCH_QUICK=1 skips the largest cases.
+# (default 160x120) on the board.  BENCH_QUICK=1 skips the largest cases;
+# BENCH_SCALE_PARTS (default "1 2 3") picks the tables.
 set -u
 cd "$(dirname "$0")/../.."
 LINKS1=${LINKS1:-build/links1}
@@ -23,6 +25,8 @@ SIZE=${BENCH_SIZE:-320x240}
 BSIZE=${BENCH_BOARD_SIZE:-160x120}
 QUICK=${BENCH_QUICK:-0}
 LIMIT_S=${BENCH_RUN_LIMIT_S:-1800}
+PARTS=${BENCH_SCALE_PARTS:-1 2 3}
+part() { case " $PARTS " in *" $1 "*) return 0 ;; esac; return 1; }
 make -s --no-print-directory build/links1 build/links1-ref-float build/links1-spd >&2
 TMP=$(mktemp -d /tmp/links1-bench-scale.XXXXXX)
 trap 'rm -rf "$TMP"' EXIT
@@ -93,6 +97,7 @@ board() {
         awk -v r="$rays" -v s="$same" '{ printf "%.0f (%s)\n", $1 / r, s }'
 }
 
+if part 1; then
 echo "### Cost per ray, one flat cluster of n spheres (host float, $SIZE, median of $RUNS)"
 echo
 echo "| n | ns/ray, automatic hierarchy | box + primitive tests/ray | ns/ray, off | tests/ray, off | rays |"
@@ -107,11 +112,13 @@ for n in $ns; do
     echo "| $n | $on | $bt + $pt | $off | $obt + $opt | $rays |"
 done
 echo
+fi
+if part 2; then
 echo "### SPD scenes: host float ns/ray ($SIZE), board NC insns/ray ($BSIZE, 8 NCs), POV-Ray 3.7 (-A +WT1)"
 echo
 echo "| scene | objects | host ns/ray | box + primitive tests/ray | host trace s | POV-Ray trace s | links1 / POV-Ray | board NC insns/ray (image vs host) |"
 echo "|---|---|---|---|---|---|---|---|"
-dbs="balls-1 balls-2 balls-3 balls-4 tetra-1 tetra-2 tetra-3 tetra-4 tetra-5 tetra-6 mount-6"
+dbs="balls-1 balls-2 balls-3 balls-4 tetra-1 tetra-2 tetra-3 tetra-4 tetra-5 tetra-6 mount-6 teapot-2 teapot-4"
 for db in $dbs; do
     scene="$TMP/$db.scn"
     "$SPD" "${db%-*}" "${db#*-}" -o "$scene" --size "$SIZE" 2>"$TMP/spd.log"
@@ -124,6 +131,8 @@ for db in $dbs; do
     echo "| $db | $objs | $ns | $bt + $ptests | $t | $pt | $ratio | $b |"
 done
 echo
+fi
+part 3 || exit 0
 echo "### Build time of the automatic hierarchy (links1 compile, median of $RUNS, on minus off)"
 echo
 echo "| n spheres | compile s, on | compile s, off | build s |"
