@@ -14,7 +14,8 @@
 # Host figures are medians of BENCH_RUNS runs (default 3).  Sizes:
 # BENCH_SIZE (default 320x240) on the host and POV-Ray, BENCH_BOARD_SIZE
 # (default 160x120) on the board.  BENCH_QUICK=1 skips the largest cases;
-# BENCH_SCALE_PARTS (default "1 2 3") picks the tables.
+# BENCH_SCALE_PARTS (default "1 2 3") picks the tables, BENCH_SCALE_DBS the
+# SPD scenes of the second.
 set -u
 cd "$(dirname "$0")/../.."
 LINKS1=${LINKS1:-build/links1}
@@ -118,7 +119,7 @@ echo "### SPD scenes: host float ns/ray ($SIZE), board NC insns/ray ($BSIZE, 8 N
 echo
 echo "| scene | objects | host ns/ray | box + primitive tests/ray | host trace s | POV-Ray trace s | links1 / POV-Ray | board NC insns/ray (image vs host) |"
 echo "|---|---|---|---|---|---|---|---|"
-dbs="balls-1 balls-2 balls-3 balls-4 tetra-1 tetra-2 tetra-3 tetra-4 tetra-5 tetra-6 mount-6 teapot-2 teapot-4"
+dbs=${BENCH_SCALE_DBS:-"balls-1 balls-2 balls-3 balls-4 tetra-1 tetra-2 tetra-3 tetra-4 tetra-5 tetra-6 mount-6 teapot-2 teapot-4"}
 for db in $dbs; do
     scene="$TMP/$db.scn"
     "$SPD" "${db%-*}" "${db#*-}" -o "$scene" --size "$SIZE" 2>"$TMP/spd.log"
