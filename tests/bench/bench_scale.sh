@@ -144,7 +144,7 @@ done
 echo
 fi
 part 3 || exit 0
-echo "### Build time of the automatic hierarchy (links1 compile, median of $RUNS, on minus off)"
+echo "### Build time of the automatic hierarchy (links1 compile, median of $RUNS, on minus off, ${BENCH_CLOCK:-cpu} time)"
 echo
 echo "| n spheres | compile s, on | compile s, off | build s |"
 echo "|---|---|---|---|"
@@ -155,11 +155,14 @@ for n in $ns; do
     { echo "options { auto_hierarchy off }"; cat "$TMP/s.scn"; } >"$TMP/s-off.scn"
     for v in s s-off; do
         for _ in $(seq "$RUNS"); do
-            s0=$(date +%s.%N)
-            "$LINKS1" compile "$TMP/$v.scn" -o "$TMP/$v.l1s" >/dev/null 2>&1 ||
-                echo "bench_scale: compile of $n spheres failed" >&2
-            s1=$(date +%s.%N)
-            awk -v a="$s0" -v b="$s1" 'BEGIN { printf "%.3f\n", b - a }'
+            if [ "$CLOCK_FIELD" = 1 ]; then
+                TIMEFORMAT=%R
+            else
+                TIMEFORMAT='%U %S' # user + system CPU seconds
+            fi
+            { time "$LINKS1" compile "$TMP/$v.scn" -o "$TMP/$v.l1s" >/dev/null 2>&1 ||
+                echo "bench_scale: compile of $n spheres failed" >&2; } 2>&1 |
+                awk '{ printf "%.3f\n", $1 + $2 }'
         done | median >"$TMP/$v.t"
     done
     awk -v n="$n" -v a="$(cat "$TMP/s.t")" -v b="$(cat "$TMP/s-off.t")" \
