@@ -119,7 +119,7 @@ FIRMWARE += $$(FW_ELF_$(1))
 endef
 
 # The memory map takes the sizes C also needs from kernel/param.h.
-$(B)/linker/virt-memory.ld: linker/virt-memory.ld kernel/param.h proto/units.h
+$(B)/linker/virt-memory.ld: linker/virt-memory.ld kernel/param.h proto/units.h proto/board_map.h
 	$(call say,CPP,$@)
 	$(Q)mkdir -p $(@D)
 	$(Q)$(ARM_CC) -E -P -x c -I. $< -o $@

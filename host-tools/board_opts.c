@@ -17,7 +17,7 @@ const char board_opts_usage[] =
     "  --firmware ELF   firmware to boot (default: links1-<arith>.elf in $FW_DIR,\n"
     "                   else next to this program)\n"
     "  --timeout S      seconds to wait for every unit computer to report in (default 60)\n"
-    "  --ram MB         board memory (default 512)\n"
+    "  --ram MB         board memory (default 1024, what the firmware carves)\n"
     "  --quiet          do not print the board's log or the board-up line\n"
     "  --verbose        print each unit computer reporting in\n"
     "  --gdb PORT       start halted, QEMU's gdb stub on 127.0.0.1:PORT (make gdb)\n"

@@ -4,9 +4,10 @@
 
 /* The board's core counts (UNITS_MIN_CORES..UNITS_MAX_CORES) are the
  * firmware's own, in proto/units.h. */
+#include "proto/board_map.h"
 #include "proto/units.h"
 #define BOARD_DEFAULT_CORES 10
-#define BOARD_DEFAULT_RAM_MB 512
+#define BOARD_DEFAULT_RAM_MB BOARD_RAM_MB /* what the firmware carves */
 #define BOARD_MIN_RAM_MB 64
 #define BOARD_MAX_RAM_MB 2048 /* the virt board's 32-bit RAM window below 4 GiB */
 

@@ -36,10 +36,10 @@ static int render_session_take_ack(struct board *b, uint16_t *inflight, int *n)
  * board's text otherwise. */
 static int render_session_result(struct board *b, uint16_t cmd, const char *what,
                                  struct board_frame *f, const uint8_t **fields, size_t *n,
-                                 size_t want)
+                                 size_t want, int timeout_ms)
 {
     int status;
-    if (board_wait_result(b, cmd, BOARD_FRAME_TIMEOUT_MS, f, &status, fields, n) < 0)
+    if (board_wait_result(b, cmd, timeout_ms, f, &status, fields, n) < 0)
         return -1;
     if (status != LINK_OK) {
         fprintf(stderr, "links1: %s: the board says: %.*s (%s)\n", what, (int)*n,
@@ -94,8 +94,10 @@ int render_session_load(struct board *b, const uint8_t *scene, size_t len,
     struct board_frame f;
     const uint8_t *fields;
     size_t nf;
+    /* the DM answers once it has loaded the scene and prepared frame 0: a
+     * big scene keeps it silent as long as preparing a frame may */
     if (render_session_result(b, CMD_SCENE_LOAD, "scene upload", &f, &fields, &nf,
-                              LINK_SCENE_INFO_SIZE) < 0)
+                              LINK_SCENE_INFO_SIZE, RENDER_SILENCE_MS) < 0)
         return -1;
     link_scene_info_get(fields, info);
     return 0;
@@ -300,7 +302,7 @@ int render_session_pull(struct board *b, struct image *img, long long *pull_ms)
     const uint8_t *fields;
     size_t nf;
     if (render_session_result(b, CMD_FRAME_PULL, "frame pull", &f, &fields, &nf,
-                              LINK_FRAME_INFO_SIZE) < 0) {
+                              LINK_FRAME_INFO_SIZE, BOARD_FRAME_TIMEOUT_MS) < 0) {
         free(buf);
         return -1;
     }

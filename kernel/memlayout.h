@@ -1,5 +1,5 @@
 /* memlayout.h: the address map of QEMU's virt board (QEMU 7.2,
- * -M virt,gic-version=3 -cpu cortex-a15 -m 512) as links1 uses it.
+ * -M virt,gic-version=3 -cpu cortex-a15 -m 1024) as links1 uses it.
  *
  *   physical                          virtual (LPAE identity map + window)
  *   0x00000000 +-------------------+  0x00000000  1 GiB block, Device-nGnRE
@@ -13,8 +13,8 @@
  *   0x41000000 | STACKS: per core SVC/IRQ/ABT/UND stacks
  *   0x41400000 | LINES: inter-unit serial line rings
  *   0x41800000 | IMSU: DM<->RC block pair, RC->NC broadcast block
- *   0x43800000 | PRIVATE: DM, RC, then the NC pool shared out per NC
- *   0x60000000 +-------------------+  (end of 512 MiB RAM)
+ *   0x62800000 | PRIVATE: DM, RC, then the NC pool shared out per NC
+ *   0x80000000 +-------------------+  (end of 1 GiB RAM)
  *                                     0x80000000  1 GiB unmapped: any access
  *                                                 faults (fault tests use it)
  *   0x40_0000_0000 second redistributor region (cores 123..)

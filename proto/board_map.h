@@ -14,5 +14,20 @@
  * and maps it too: byte k of that file is guest address BOARD_RAM_BASE + k,
  * which is what a LINK_BULK offset (proto/hostlink.h) counts from. */
 #define BOARD_RAM_BASE 0x40000000u
+/* The board's RAM and the blocks carved from it that the host must know
+ * too: the host compiler refuses a scene whose prepared frame would not fit
+ * an IMSU block (host-tools/scene/scene_board.c) before any upload.  The
+ * linker script (linker/virt-memory.ld) carves them from these values. */
+#define BOARD_RAM_MB 1024 /* -m: the whole 1 GiB Normal-memory block of the
+                             MMU map (kernel/memlayout.h) */
+/* Each of the two DM<->RC blocks and the RC->NC broadcast block: the most a
+ * scene's blob (render/blob.h: loaded scene + prepared frame + scratch)
+ * may take.  QEMU backs only the pages a scene writes, so a small scene
+ * costs the host no more than before. */
+#define BOARD_IMSU_BLOCK_BYTES (176 * 1024 * 1024)
+#define BOARD_IMSU_BLOCK_NAME "LINKS1_IMSU_PAIR_BLOCK"
+/* The DM's private memory: the compiled scene as uploaded, the host frame
+ * queue and its tasks' stacks (at least SCN_MAX_SIZE plus 16 MiB). */
+#define BOARD_DM_PRIVATE_BYTES (96 * 1024 * 1024)
 
 #endif

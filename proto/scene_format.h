@@ -31,7 +31,8 @@
 #define LINKS1_PROTO_SCENE_FORMAT_H
 
 /* ------------------------------------------------------------ the limits */
-#define SCN_MAX_SIZE (16u * 1024u * 1024u) /* whole compiled scene, bytes */
+#define SCN_MAX_SIZE (64u * 1024u * 1024u) /* whole compiled scene, bytes; the
+                                              DM keeps it in its private memory */
 #define SCN_MAX_WIDTH 1024                 /* the frame memory is 1024x1024 */
 #define SCN_MAX_HEIGHT 1024
 #define SCN_MAX_LIGHTS 3 /* LINKS-1 scenes use up to three light sources */
@@ -39,9 +40,10 @@
 #define SCN_MAX_MAPS 16
 #define SCN_MAX_MAP_SIDE 1024              /* texels per map row or column */
 #define SCN_MAX_TEXEL_BYTES (4u * 1024u * 1024u) /* over all maps */
-#define SCN_MAX_CLUSTERS 65535             /* 16-bit indices, 0xffff = none */
+#define SCN_MAX_CLUSTERS 1048576           /* 32-bit indices; the board's memory
+                                              is the tighter bound (blob.h) */
 #define SCN_MAX_CLUSTER_NESTING 32         /* clusters below the root */
-#define SCN_MAX_PRIMS 262144
+#define SCN_MAX_PRIMS 1048576 /* the board's IMSU block is the tighter bound */
 #define SCN_MAX_DENSITY_COMPONENTS 64      /* components of one density sphere */
 #define SCN_MAX_COMPONENTS 65536           /* density components, all prims */
 #define SCN_MAX_KEYS 65536                 /* keyframes over all clusters */
@@ -70,7 +72,7 @@
 #define SCN_MAGIC_1 '1'
 #define SCN_MAGIC_2 'S'
 #define SCN_MAGIC_3 'C'
-#define SCN_VERSION 1
+#define SCN_VERSION 2 /* 2: 32-bit cluster indices */
 #define SCN_HEADER_SIZE 16
 #define SCN_HDR_MAGIC 0
 #define SCN_HDR_VERSION 4
@@ -158,7 +160,8 @@ enum scn_light_kind {
 #define SCN_MAT_COLOUR_MAP 38   /* u16: map index (a COLOUR map) or SCN_NO_INDEX */
 #define SCN_MAT_BUMP_MAP 40     /* u16: map index (a BUMP map) or SCN_NO_INDEX */
 #define SCN_MAT_RESERVED 42     /* 6 bytes: 0 */
-#define SCN_NO_INDEX 0xffffu    /* "no map", "no parent" */
+#define SCN_NO_INDEX 0xffffu    /* "no map" */
+#define SCN_NO_CLUSTER 0xffffffffu /* "no parent" (cluster 0 only) */
 
 /* ------------------------------------------------------------ MAPS record */
 #define SCN_MAP_SIZE 24
@@ -182,18 +185,17 @@ enum scn_map_kind {
 
 /* ------------------------------------------------------- CLUSTERS record */
 #define SCN_CLUSTER_SIZE 60
-#define SCN_CLUSTER_PARENT 0    /* u16: parent index, < own; SCN_NO_INDEX for 0 only */
-#define SCN_CLUSTER_KEY_COUNT 2 /* u16: its keyframes, 0 = static */
+#define SCN_CLUSTER_PARENT 0    /* u32: parent index, < own; SCN_NO_CLUSTER for 0 only */
 #define SCN_CLUSTER_KEY_FIRST 4 /* u32: its first keyframe in KEYS */
 #define SCN_CLUSTER_MATRIX 8    /* 12 x f32: rows of the 3x4 child -> parent matrix */
-#define SCN_CLUSTER_RESERVED 56 /* u32: 0 */
+#define SCN_CLUSTER_KEY_COUNT 56 /* u32: its keyframes, 0 = static, at most
+                                   SCN_MAX_CLUSTER_KEYS */
 
 /* ---------------------------------------------------------- PRIMS record */
 #define SCN_PRIM_SIZE 76
 #define SCN_PRIM_KIND 0         /* u16: enum scn_prim_kind */
 #define SCN_PRIM_MATERIAL 2     /* u16: material index */
-#define SCN_PRIM_CLUSTER 4      /* u16: the cluster it belongs to */
-#define SCN_PRIM_RESERVED 6     /* u16: 0 */
+#define SCN_PRIM_CLUSTER 4      /* u32: the cluster it belongs to */
 #define SCN_PRIM_FIRST 8        /* u32: DENSITY: first component in COMPONENTS */
 #define SCN_PRIM_COUNT 12       /* u32: DENSITY: components, 1..SCN_MAX_DENSITY_COMPONENTS */
 #define SCN_PRIM_VALUES 16      /* SCN_PRIM_MAX_VALUES x f32, unused ones 0 */

@@ -37,6 +37,13 @@ static int blob_aligned(const void *block)
 render_blob_status_t render_blob_bytes(const uint8_t *compiled, size_t len, size_t *bytes,
                                        render_blob_error_t *err)
 {
+    return render_blob_bytes_layout(compiled, len, &render_layout_native, bytes, err);
+}
+
+render_blob_status_t render_blob_bytes_layout(const uint8_t *compiled, size_t len,
+                                              const render_layout_t *layout, size_t *bytes,
+                                              render_blob_error_t *err)
+{
     scene_t shape;
     uint32_t texel_bytes;
     scene_load_error_t lerr;
@@ -48,8 +55,8 @@ render_blob_status_t render_blob_bytes(const uint8_t *compiled, size_t len, size
     }
     /* the header first (alignment of the block start: none), then the
      * loader's arrays, then the frame with its scratch */
-    *bytes = sizeof(render_blob_t) + scene_load_bytes(&shape, texel_bytes) +
-             render_prepare_bytes(&shape);
+    *bytes = layout->blob + scene_load_bytes_layout(&shape, texel_bytes, layout) +
+             render_prepare_bytes_layout(&shape, layout);
     return RENDER_BLOB_OK;
 }
 

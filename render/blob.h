@@ -65,6 +65,11 @@ typedef struct {
  * table alone; any frame of the animation fits in it. */
 render_blob_status_t render_blob_bytes(const uint8_t *compiled, size_t len, size_t *bytes,
                                        render_blob_error_t *err);
+/* The same bound for a machine with other record sizes: with
+ * &render_layout_board, what the board's DM will need (render/layout.h). */
+render_blob_status_t render_blob_bytes_layout(const uint8_t *compiled, size_t len,
+                                              const render_layout_t *layout, size_t *bytes,
+                                              render_blob_error_t *err);
 
 /* Loads the compiled scene and prepares frame_index into block[0..size),
  * which must be aligned to RENDER_RELOCATE_ALIGN.  A scene whose

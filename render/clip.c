@@ -7,14 +7,14 @@
 size_t render_clip_bytes(const render_frame_t *frame)
 {
     /* ylist and xlist, one entry per cluster each */
-    return 2 * sizeof(uint16_t) * (size_t)frame->cluster_count;
+    return 2 * sizeof(uint32_t) * (size_t)frame->cluster_count;
 }
 
 render_status_t render_clip_init(render_clip_t *clip, const render_frame_t *frame, void *memory,
                                  size_t bytes)
 {
     memset(clip, 0, sizeof *clip);
-    if (!memory || (uintptr_t)memory % _Alignof(uint16_t) != 0 || bytes < render_clip_bytes(frame))
+    if (!memory || (uintptr_t)memory % _Alignof(uint32_t) != 0 || bytes < render_clip_bytes(frame))
         return RENDER_ERR_ARENA;
     clip->frame = frame;
     clip->ylist = memory;
@@ -24,7 +24,7 @@ render_status_t render_clip_init(render_clip_t *clip, const render_frame_t *fram
 }
 
 /* Cluster a goes before cluster b in a Y list. */
-static int clip_before(const render_cluster_t *cl, uint16_t a, uint16_t b)
+static int clip_before(const render_cluster_t *cl, uint32_t a, uint32_t b)
 {
     return cl[a].screen_x0 < cl[b].screen_x0 || (cl[a].screen_x0 == cl[b].screen_x0 && a < b);
 }
@@ -35,7 +35,7 @@ static void clip_sort(render_clip_t *clip)
 {
     const render_cluster_t *cl = clip->frame->clusters;
     uint32_t n = clip->ycount;
-    uint16_t *src = clip->ylist, *dst = clip->xlist;
+    uint32_t *src = clip->ylist, *dst = clip->xlist;
     for (uint32_t width = 1; width < n; width *= 2) {
         for (uint32_t lo = 0; lo < n; lo += 2 * width) {
             uint32_t mid = lo + width < n ? lo + width : n;
@@ -48,7 +48,7 @@ static void clip_sort(render_clip_t *clip)
             while (j < hi)
                 dst[k++] = src[j++];
         }
-        uint16_t *t = src;
+        uint32_t *t = src;
         src = dst;
         dst = t;
     }
@@ -76,7 +76,7 @@ uint32_t render_clip_y(render_clip_t *clip, const render_area_t *area, int all)
             continue; /* no primitives, or wholly behind the eye */
         if (!all && (c->screen_y1 < ay0 || c->screen_y0 > ay1 || c->screen_x1 < ax0 || c->screen_x0 > ax1))
             continue;
-        clip->ylist[n++] = (uint16_t)i;
+        clip->ylist[n++] = i;
     }
     clip->ycount = n;
     clip->y_kept += n;
@@ -104,7 +104,7 @@ uint32_t render_clip_x(render_clip_t *clip, int32_t x)
      * depend on order, see trace.c) */
     uint32_t next = clip->next;
     while (next < clip->ycount && cl[clip->ylist[next]].screen_x0 <= x) {
-        uint16_t c = clip->ylist[next++];
+        uint32_t c = clip->ylist[next++];
         if (cl[c].screen_x1 < x)
             continue;
         uint32_t j = k++;

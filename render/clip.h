@@ -35,9 +35,9 @@ typedef struct {
 
 typedef struct {
     const render_frame_t *frame;
-    uint16_t *ylist;      /* Y-clipped clusters, sorted by (screen_x0, index) */
+    uint32_t *ylist;      /* Y-clipped clusters, sorted by (screen_x0, index) */
     uint32_t ycount;
-    uint16_t *xlist;      /* X-clipped: those of ylist whose X range holds x,
+    uint32_t *xlist;      /* X-clipped: those of ylist whose X range holds x,
                              nearest own box (own_bounds.lo.z) first; also
                              the merge sort's scratch */
     uint32_t xcount;
@@ -61,7 +61,7 @@ typedef struct {
 /* Working-set bytes an NC needs for this frame's clipping. */
 size_t render_clip_bytes(const render_frame_t *frame);
 
-/* Sets up clipping for frame in memory[0..bytes) (2-byte aligned);
+/* Sets up clipping for frame in memory[0..bytes) (4-byte aligned);
  * RENDER_ERR_ARENA when bytes < render_clip_bytes(frame). */
 render_status_t render_clip_init(render_clip_t *clip, const render_frame_t *frame, void *memory,
                                  size_t bytes);

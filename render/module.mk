@@ -28,7 +28,7 @@ test_render_fixed_ARITH := fixed
 
 # Blobs that travel through the IMSU (load + prepare into one block,
 # relocation after a copy) and the NC's screen clipping.
-SHARED_SRCS += render/relocate.c render/blob.c render/clip.c
+SHARED_SRCS += render/relocate.c render/blob.c render/clip.c render/layout.c
 
 # Blob relocation and screen clipping tests, once per arithmetic; they
 # compile the scenes of scenes/ with the host scene compiler.

@@ -174,7 +174,7 @@ static render_status_t prep_check(const scene_t *s)
         return RENDER_ERR_LIGHTS;
     if (s->options.max_depth > RENDER_MAX_DEPTH)
         return RENDER_ERR_DEPTH;
-    if (s->cluster_count < 1 || s->clusters[0].parent != SCENE_NONE)
+    if (s->cluster_count < 1 || s->clusters[0].parent != SCENE_NO_CLUSTER)
         return RENDER_ERR_CLUSTER;
     for (uint32_t i = 0; i < s->cluster_count; i++) {
         const scene_cluster_t *c = &s->clusters[i];
@@ -364,7 +364,7 @@ static void prep_group_children(const scene_t *s, render_frame_t *f)
     }
     for (uint32_t i = 1; i < s->cluster_count; i++) {
         render_cluster_t *p = &f->clusters[s->clusters[i].parent];
-        f->child_list[p->first_child + p->child_count++] = (uint16_t)i;
+        f->child_list[p->first_child + p->child_count++] = i;
     }
 }
 
@@ -387,15 +387,20 @@ static void prep_group_prims(const scene_t *s, render_frame_t *f)
 /* Keep in step with the allocations of render_prepare below: every array
  * plus the worst alignment padding of each (64 bytes is the most the
  * arena pads). */
-size_t render_prepare_bytes(const scene_t *s)
+size_t render_prepare_bytes_layout(const scene_t *s, const render_layout_t *lay)
 {
     size_t prims = s->prim_count ? s->prim_count : 1;
     size_t comps = s->density_component_count ? s->density_component_count : 1;
-    size_t n = sizeof(render_frame_t) + sizeof(render_cluster_t) * (size_t)s->cluster_count +
-               sizeof(uint16_t) * (size_t)s->cluster_count + sizeof(render_prim_t) * prims +
-               sizeof(uint32_t) * prims + sizeof(num_t) * comps;
-    size_t scratch = (2 * sizeof(xform_t) + 1) * (size_t)s->cluster_count;
+    size_t n = lay->frame + lay->frame_cluster * (size_t)s->cluster_count +
+               sizeof(uint32_t) * (size_t)s->cluster_count + lay->frame_prim * prims +
+               sizeof(uint32_t) * prims + lay->num * comps;
+    size_t scratch = (2 * lay->xform + 1) * (size_t)s->cluster_count;
     return n + scratch + 12 * ARENA_MAX_ALIGN; /* 9 allocations, each padded at most that */
+}
+
+size_t render_prepare_bytes(const scene_t *s)
+{
+    return render_prepare_bytes_layout(s, &render_layout_native);
 }
 
 render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *arena, render_frame_t **out)
@@ -408,7 +413,7 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     if (!f)
         return RENDER_ERR_ARENA;
     f->clusters = ARENA_NEW_ARRAY(arena, render_cluster_t, s->cluster_count);
-    f->child_list = ARENA_NEW_ARRAY(arena, uint16_t, s->cluster_count);
+    f->child_list = ARENA_NEW_ARRAY(arena, uint32_t, s->cluster_count);
     f->prims = ARENA_NEW_ARRAY(arena, render_prim_t, s->prim_count ? s->prim_count : 1);
     f->prim_list = ARENA_NEW_ARRAY(arena, uint32_t, s->prim_count ? s->prim_count : 1);
     uint32_t ncomp = s->density_component_count;

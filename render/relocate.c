@@ -76,7 +76,7 @@ static void reloc_scene(reloc_t *r, scene_t *s)
 static void reloc_frame(reloc_t *r, render_frame_t *f, const scene_t *s)
 {
     render_cluster_t *clusters = RELOC(r, f->clusters, f->cluster_count, "frame.clusters");
-    uint16_t *child_list = RELOC(r, f->child_list, f->cluster_count, "frame.child_list");
+    uint32_t *child_list = RELOC(r, f->child_list, f->cluster_count, "frame.child_list");
     render_prim_t *prims = RELOC(r, f->prims, f->prim_count, "frame.prims");
     uint32_t *prim_list = RELOC(r, f->prim_list, f->prim_count, "frame.prim_list");
     num_t *inv_radius2 =

@@ -30,6 +30,7 @@
 
 #include "fixed/num.h"
 #include "render/arena.h"
+#include "render/layout.h"
 #include "render/scene.h"
 
 typedef struct {
@@ -107,9 +108,9 @@ typedef struct {
     num_t screen_half_w, screen_half_h; /* eye-space half extents at z = 1 */
     uint16_t light_count;
     render_light_t lights[RENDER_MAX_LIGHTS];
-    uint16_t cluster_count;
+    uint32_t cluster_count;
     render_cluster_t *clusters;    /* reloc; index = scene cluster index */
-    uint16_t *child_list;          /* reloc; cluster indices, grouped by parent */
+    uint32_t *child_list;          /* reloc; cluster indices, grouped by parent */
     uint32_t prim_count;
     render_prim_t *prims;          /* reloc; index = scene prim index */
     uint32_t *prim_list;           /* reloc; prim indices, grouped by cluster */
@@ -178,6 +179,8 @@ render_status_t render_prepare(const scene_t *scene, uint32_t frame_index,
  * scratch and alignment): what a unit computer must set aside.  Rendering
  * itself allocates nothing (stack: RENDER_STACK_BYTES in limits.h). */
 size_t render_prepare_bytes(const scene_t *scene);
+/* The same with another machine's record sizes (render/layout.h). */
+size_t render_prepare_bytes_layout(const scene_t *scene, const render_layout_t *layout);
 
 void render_ctx_init(render_ctx_t *ctx, const render_frame_t *frame);
 
@@ -189,7 +192,7 @@ rgb8_t render_pixel(render_ctx_t *ctx, uint32_t x, uint32_t y);
  * the same colour as render_pixel when the list holds every cluster whose
  * screen rectangle contains the pixel. */
 rgb8_t render_pixel_clipped(render_ctx_t *ctx, uint32_t x, uint32_t y,
-                            const uint16_t *clusters, uint32_t count);
+                            const uint32_t *clusters, uint32_t count);
 
 /* Pixels x0..x1-1 of row y into out[0..x1-x0-1]. */
 void render_span(render_ctx_t *ctx, uint32_t y, uint32_t x0, uint32_t x1, rgb8_t *out);

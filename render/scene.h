@@ -21,7 +21,8 @@
 #include "fixed/num.h"
 #include "render/limits.h"
 
-#define SCENE_NONE 0xffffu /* "no map", "no parent" in 16-bit index fields */
+#define SCENE_NONE 0xffffu /* "no map" in 16-bit index fields */
+#define SCENE_NO_CLUSTER 0xffffffffu /* "no parent": cluster 0 only */
 
 typedef struct {
     num_t x, y, z;
@@ -122,11 +123,11 @@ typedef struct {
  * child -> parent transform for frame f = K(f) * local, where K(f) is the
  * keyframed TRS (translate * rotate * scale) or identity without keys. */
 typedef struct {
-    uint16_t parent;    /* index of the parent cluster, < own index;
-                           SCENE_NONE for cluster 0 only */
+    uint32_t parent;    /* index of the parent cluster, < own index;
+                           SCENE_NO_CLUSTER for cluster 0 only */
     xform_t local;      /* child -> parent affine map, invertible */
     uint32_t first_key; /* first key in scene keys */
-    uint16_t key_count; /* 0 = static */
+    uint32_t key_count; /* 0 = static */
 } scene_cluster_t;
 
 enum scene_prim_kind {
@@ -148,8 +149,8 @@ typedef struct {
 /* A primitive, in the coordinates of its cluster. */
 typedef struct {
     uint8_t kind;       /* enum scene_prim_kind */
-    uint16_t cluster;   /* owning cluster */
     uint16_t material;  /* index into scene materials */
+    uint32_t cluster;   /* owning cluster */
     union {
         struct {
             vec3_t v[3];   /* vertices; front face is either side */
@@ -201,7 +202,7 @@ typedef struct {
     const scene_light_t *lights;         uint16_t light_count;    /* reloc */
     const scene_material_t *materials;   uint16_t material_count; /* reloc */
     const scene_map_t *maps;             uint16_t map_count;      /* reloc */
-    const scene_cluster_t *clusters;     uint16_t cluster_count;  /* reloc */
+    const scene_cluster_t *clusters;     uint32_t cluster_count;  /* reloc */
     const scene_key_t *keys;             uint32_t key_count;      /* reloc */
     const scene_prim_t *prims;           uint32_t prim_count;     /* reloc */
     const scene_density_component_t *density_components;          /* reloc */

@@ -438,17 +438,17 @@ static scene_load_status_t load_clusters(struct load *L, const scene_key_t *keys
     uint32_t n_keys = L->sec[SCN_SEC_KEYS].present ? L->sec[SCN_SEC_KEYS].count : 0;
     for (uint32_t i = 0; i < L->sec[SCN_SEC_CLUSTERS].count; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_CLUSTERS, i);
-        uint16_t parent = wire_get_u16(p + SCN_CLUSTER_PARENT);
-        uint16_t kc = wire_get_u16(p + SCN_CLUSTER_KEY_COUNT);
+        uint32_t parent = wire_get_u32(p + SCN_CLUSTER_PARENT);
+        uint32_t kc = wire_get_u32(p + SCN_CLUSTER_KEY_COUNT);
         uint32_t kf = wire_get_u32(p + SCN_CLUSTER_KEY_FIRST);
-        if (i == 0 ? parent != SCN_NO_INDEX : parent >= i)
+        if (i == 0 ? parent != SCN_NO_CLUSTER : parent >= i)
             return load_bad(L, SCENE_LOAD_ERR_TREE, "cluster ", i,
                             i == 0 ? "the root has a parent"
                                    : "parent index not below its own (cycle or forward link)");
         nesting[i] = i == 0 ? 0 : (uint8_t)(nesting[parent] + 1);
         if (nesting[i] > SCN_MAX_CLUSTER_NESTING)
             return load_bad(L, SCENE_LOAD_ERR_TREE, "cluster ", i, "nested deeper than 32");
-        if (kf > n_keys || kc > n_keys - kf)
+        if (kf > n_keys || kc > n_keys - kf || kc > SCN_MAX_CLUSTER_KEYS)
             return load_bad(L, SCENE_LOAD_ERR_INDEX, "cluster ", i,
                             "key range outside the key section");
         for (uint32_t k = 1; k < kc; k++)
@@ -458,10 +458,8 @@ static scene_load_status_t load_clusters(struct load *L, const scene_key_t *keys
         if (!load_coords(p + SCN_CLUSTER_MATRIX, 12))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "cluster ", i,
                             "matrix entry not finite or beyond the coordinate limit");
-        if (wire_get_u32(p + SCN_CLUSTER_RESERVED) != 0)
-            return load_bad(L, SCENE_LOAD_ERR_VALUE, "cluster ", i, "reserved field not zero");
         scene_cluster_t *c = &out[i];
-        c->parent = i == 0 ? SCENE_NONE : parent;
+        c->parent = i == 0 ? SCENE_NO_CLUSTER : parent;
         for (int r = 0; r < 3; r++)
             for (int k = 0; k < 4; k++)
                 c->local.m[r][k] = load_num(p + SCN_CLUSTER_MATRIX + 4 * (r * 4 + k));
@@ -518,7 +516,7 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out)
         const uint8_t *p = load_rec(L, SCN_SEC_PRIMS, i);
         uint16_t kind = wire_get_u16(p + SCN_PRIM_KIND);
         uint16_t mat = wire_get_u16(p + SCN_PRIM_MATERIAL);
-        uint16_t clu = wire_get_u16(p + SCN_PRIM_CLUSTER);
+        uint32_t clu = wire_get_u32(p + SCN_PRIM_CLUSTER);
         uint32_t first = wire_get_u32(p + SCN_PRIM_FIRST);
         uint32_t count = wire_get_u32(p + SCN_PRIM_COUNT);
         const uint8_t *v = p + SCN_PRIM_VALUES;
@@ -528,8 +526,6 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out)
             return load_bad(L, SCENE_LOAD_ERR_INDEX, "prim ", i, "material index out of range");
         if (clu >= n_clu)
             return load_bad(L, SCENE_LOAD_ERR_INDEX, "prim ", i, "cluster index out of range");
-        if (wire_get_u16(p + SCN_PRIM_RESERVED) != 0)
-            return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i, "reserved field not zero");
         int nv = load_prim_values[kind];
         if (!load_coords(v, nv))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
@@ -659,7 +655,7 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
     out->maps = maps;
     out->map_count = (uint16_t)n_map;
     out->clusters = clusters;
-    out->cluster_count = (uint16_t)n_clu;
+    out->cluster_count = n_clu;
     out->keys = keys;
     out->key_count = n_key;
     out->prims = prims;
@@ -684,7 +680,7 @@ scene_load_status_t scene_load_shape(const uint8_t *buf, size_t len, scene_t *sh
     shape->light_count = (uint16_t)L.sec[SCN_SEC_LIGHTS].count;
     shape->material_count = (uint16_t)L.sec[SCN_SEC_MATERIALS].count;
     shape->map_count = (uint16_t)L.sec[SCN_SEC_MAPS].count;
-    shape->cluster_count = (uint16_t)L.sec[SCN_SEC_CLUSTERS].count;
+    shape->cluster_count = L.sec[SCN_SEC_CLUSTERS].count;
     shape->key_count = L.sec[SCN_SEC_KEYS].count;
     shape->prim_count = L.sec[SCN_SEC_PRIMS].count;
     shape->density_component_count = L.sec[SCN_SEC_COMPONENTS].count;
@@ -695,18 +691,24 @@ scene_load_status_t scene_load_shape(const uint8_t *buf, size_t len, scene_t *sh
 /* Keep in step with the allocations of scene_load above: each array (at
  * least one element), the nesting scratch, each padded by at most
  * ARENA_MAX_ALIGN. */
-size_t scene_load_bytes(const scene_t *shape, uint32_t texel_bytes)
+size_t scene_load_bytes_layout(const scene_t *shape, uint32_t texel_bytes,
+                               const render_layout_t *lay)
 {
-#define LOAD_BYTES(type, n) (sizeof(type) * (size_t)((n) ? (n) : 1))
-    return LOAD_BYTES(scene_light_t, shape->light_count) +
-           LOAD_BYTES(scene_material_t, shape->material_count) +
-           LOAD_BYTES(scene_map_t, shape->map_count) + LOAD_BYTES(uint8_t, texel_bytes) +
-           LOAD_BYTES(scene_cluster_t, shape->cluster_count) +
-           LOAD_BYTES(scene_prim_t, shape->prim_count) +
-           LOAD_BYTES(scene_density_component_t, shape->density_component_count) +
-           LOAD_BYTES(scene_key_t, shape->key_count) + LOAD_BYTES(uint8_t, shape->cluster_count) +
+#define LOAD_BYTES(size, n) ((size) * (size_t)((n) ? (n) : 1))
+    return LOAD_BYTES(lay->light, shape->light_count) +
+           LOAD_BYTES(lay->material, shape->material_count) +
+           LOAD_BYTES(lay->map, shape->map_count) + LOAD_BYTES(1, texel_bytes) +
+           LOAD_BYTES(lay->cluster, shape->cluster_count) +
+           LOAD_BYTES(lay->prim, shape->prim_count) +
+           LOAD_BYTES(lay->component, shape->density_component_count) +
+           LOAD_BYTES(lay->key, shape->key_count) + LOAD_BYTES(1, shape->cluster_count) +
            9 * ARENA_MAX_ALIGN;
 #undef LOAD_BYTES
+}
+
+size_t scene_load_bytes(const scene_t *shape, uint32_t texel_bytes)
+{
+    return scene_load_bytes_layout(shape, texel_bytes, &render_layout_native);
 }
 
 const char *scene_load_status_name(scene_load_status_t status)

@@ -15,6 +15,7 @@
 #include <stdint.h>
 
 #include "render/arena.h"
+#include "render/layout.h"
 #include "render/scene.h"
 
 typedef enum {
@@ -54,8 +55,11 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena,
 scene_load_status_t scene_load_shape(const uint8_t *buf, size_t len, scene_t *shape,
                                      uint32_t *texel_bytes, scene_load_error_t *err);
 
-/* Arena bytes scene_load needs at most for a scene of this shape. */
+/* Arena bytes scene_load needs at most for a scene of this shape; the
+ * _layout form with another machine's record sizes (render/layout.h). */
 size_t scene_load_bytes(const scene_t *shape, uint32_t texel_bytes);
+size_t scene_load_bytes_layout(const scene_t *shape, uint32_t texel_bytes,
+                               const render_layout_t *layout);
 
 /* A constant string naming the status. */
 const char *scene_load_status_name(scene_load_status_t status);

@@ -165,7 +165,7 @@ static void trace_cluster(trace_walk_t *w, uint32_t index)
     const render_frame_t *f = w->ctx->frame;
     const render_cluster_t *c = &f->clusters[index];
     trace_own_prims(w, c);
-    const uint16_t *kids = &f->child_list[c->first_child];
+    const uint32_t *kids = &f->child_list[c->first_child];
     if (c->child_count == 2) {
         uint32_t a = kids[0], b = kids[1];
         num_t ta, tb;
@@ -190,7 +190,7 @@ static void trace_cluster(trace_walk_t *w, uint32_t index)
             trace_cluster(w, kids[k]);
 }
 
-static void trace_walk(trace_walk_t *w, const uint16_t *clip, uint32_t clip_count)
+static void trace_walk(trace_walk_t *w, const uint32_t *clip, uint32_t clip_count)
 {
     const render_frame_t *f = w->ctx->frame;
     prim_aabb_ray(w->ray, &w->box_ray);
@@ -211,7 +211,7 @@ static void trace_walk(trace_walk_t *w, const uint16_t *clip, uint32_t clip_coun
     }
 }
 
-static int trace_nearest(render_ctx_t *ctx, const ray_t *ray, num_t tmin, const uint16_t *clip,
+static int trace_nearest(render_ctx_t *ctx, const ray_t *ray, num_t tmin, const uint32_t *clip,
                          uint32_t clip_count, hit_t *hit)
 {
     trace_walk_t w = {ctx, ray, tmin, TRACE_FAR, TRACE_NEAREST, {0, NUM_ZERO, 0}, NULL, {{0}, {0}}};
@@ -306,7 +306,7 @@ static rgb_t trace_lights(render_ctx_t *ctx, const hit_t *hit, const scene_mater
     return sum;
 }
 
-static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int depth, const uint16_t *clip,
+static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int depth, const uint32_t *clip,
                        uint32_t clip_count);
 
 /* Refractionless transmission past the depth limit: the straight ray
@@ -406,7 +406,7 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, 
     return out;
 }
 
-static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int depth, const uint16_t *clip,
+static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int depth, const uint32_t *clip,
                        uint32_t clip_count)
 {
     hit_t hit;
@@ -424,7 +424,7 @@ void render_ctx_init(render_ctx_t *ctx, const render_frame_t *frame)
     ctx->options = frame->options;
 }
 
-static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const uint16_t *clip,
+static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const uint32_t *clip,
                                 uint32_t clip_count)
 {
     const render_frame_t *f = ctx->frame;
@@ -456,9 +456,9 @@ rgb8_t render_pixel(render_ctx_t *ctx, uint32_t x, uint32_t y)
     return render_pixel_impl(ctx, x, y, NULL, 0);
 }
 
-rgb8_t render_pixel_clipped(render_ctx_t *ctx, uint32_t x, uint32_t y, const uint16_t *clusters, uint32_t count)
+rgb8_t render_pixel_clipped(render_ctx_t *ctx, uint32_t x, uint32_t y, const uint32_t *clusters, uint32_t count)
 {
-    uint16_t none = 0; /* a non-NULL empty list: clipping that kept nothing */
+    uint32_t none = 0; /* a non-NULL empty list: clipping that kept nothing */
     return render_pixel_impl(ctx, x, y, clusters ? clusters : &none, clusters ? count : 0);
 }
 

@@ -14,6 +14,7 @@
 #include "kernel/ktime.h"
 #include "kernel/task.h"
 #include "proto/areas.h"
+#include "proto/board_map.h"
 #include "proto/hostlink.h"
 #include "proto/insn_mark.h"
 #include "proto/render_link.h"
@@ -41,7 +42,7 @@ static struct {
     uint32_t prepare_ms;  /* what preparing it took */
 } dm_scene;
 
-static const char dm_blob_limit_name[] = "LINKS1_IMSU_PAIR_BLOCK";
+static const char dm_blob_limit_name[] = BOARD_IMSU_BLOCK_NAME;
 
 /* The renderer's messages may already say "scene refused: "; said once. */
 static const char *dm_refusal(const char *message)

@@ -13,6 +13,7 @@ SCENE_MODEL_SRCS := host-tools/scene/model_assimp.c host-tools/scene/scene_impor
 SCENE_TEXT_SRCS := host-tools/scene/scene_lex.c host-tools/scene/scene_parse.c \
 	host-tools/scene/scene_parse_looks.c host-tools/scene/scene_parse_objects.c \
 	host-tools/scene/scene_math.c host-tools/scene/scene_compile.c host-tools/scene/scene_bvh.c \
+	host-tools/scene/scene_board.c \
 	host-tools/scene/image_io.c host-tools/scene/cli_args.c host-tools/scene/scene_file.c \
 	$(SCENE_MODEL_SRCS)
 # Programs that read text scenes link these: the `model` statement reads

@@ -9,7 +9,7 @@
  * wins (A: box surface area, n: primitives on each side).  A node becomes a
  * leaf when it holds at most leaf_min primitives (2), or at most leaf_max
  * (8) and no split is cheaper than testing them all (C_prim * n).  When the
- * clusters would pass SCN_MAX_CLUSTERS (16-bit indices), the tree is built
+ * clusters would pass SCN_MAX_CLUSTERS, the tree is built
  * again with both bounds grown by half, while leaf_min <= BVH_LEAF_MIN_TOP.  A node whose
  * centroids all coincide, or that is too near the nesting limit for the
  * heuristic's possibly lopsided splits, is split at the median centroid on

@@ -10,6 +10,7 @@
 #include "host-tools/cli_opt.h"
 #include "host-tools/scene/ref_opts.h"
 #include "host-tools/scene/scene_cmds.h"
+#include "host-tools/scene/scene_board.h"
 #include "host-tools/scene/scene_desc.h"
 #include "proto/arith.h"
 
@@ -100,9 +101,12 @@ int scene_cmd_compile(int argc, char **argv)
         return 1;
     }
     rc = cmd_write_file(out, buf, len);
+    struct sd_board_bytes b;
+    if (rc == 0 && sd_board_bytes(buf, len, &b, err, sizeof err) == 0)
+        printf("%s: %zu bytes (%u primitives, %u clusters); on the board: blob %zu bytes of "
+               "%zu, NC clip lists %zu bytes\n",
+               out, len, b.prims, b.clusters, b.blob, SD_BOARD_BLOB_LIMIT, b.nc_working);
     free(buf);
-    if (rc == 0)
-        printf("%s: %zu bytes\n", out, len);
     return rc ? 1 : 0;
 }
 

@@ -7,8 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "host-tools/scene/scene_board.h"
 #include "host-tools/scene/scene_bvh.h"
 #include "host-tools/scene/scene_desc.h"
+#include "proto/board_map.h"
 #include "proto/crc32.h"
 #include "proto/wire.h"
 
@@ -83,8 +85,8 @@ static size_t compile_map_bytes(const struct sd_map *m)
 
 static void compile_cluster(const struct sd_cluster *c, uint8_t *p)
 {
-    wire_put_u16(p + SCN_CLUSTER_PARENT, compile_index(c->parent));
-    wire_put_u16(p + SCN_CLUSTER_KEY_COUNT, (uint16_t)c->key_count);
+    wire_put_u32(p + SCN_CLUSTER_PARENT, c->parent < 0 ? SCN_NO_CLUSTER : (uint32_t)c->parent);
+    wire_put_u32(p + SCN_CLUSTER_KEY_COUNT, (uint32_t)c->key_count);
     wire_put_u32(p + SCN_CLUSTER_KEY_FIRST, (uint32_t)(c->key_count ? c->key_first : 0));
     for (int i = 0; i < 12; i++)
         wire_put_f32(p + SCN_CLUSTER_MATRIX + 4 * i, (float)c->m[i]);
@@ -94,7 +96,7 @@ static void compile_prim(const struct sd_prim *pr, uint8_t *p)
 {
     wire_put_u16(p + SCN_PRIM_KIND, (uint16_t)pr->kind);
     wire_put_u16(p + SCN_PRIM_MATERIAL, (uint16_t)pr->material);
-    wire_put_u16(p + SCN_PRIM_CLUSTER, (uint16_t)pr->cluster);
+    wire_put_u32(p + SCN_PRIM_CLUSTER, (uint32_t)pr->cluster);
     if (pr->kind == SCN_PRIM_DENSITY) {
         wire_put_u32(p + SCN_PRIM_FIRST, (uint32_t)pr->first);
         wire_put_u32(p + SCN_PRIM_COUNT, (uint32_t)pr->count);
@@ -241,12 +243,26 @@ static int compile_form(const struct sd_scene *s, uint8_t **out, size_t *len, ch
     return 0;
 }
 
+/* The compiled form, refused when the board could not hold it. */
+static int compile_checked(const struct sd_scene *s, uint8_t **out, size_t *len, char *err,
+                           size_t errlen)
+{
+    if (compile_form(s, out, len, err, errlen) != 0)
+        return -1;
+    if (sd_board_check(*out, *len, SD_BOARD_BLOB_LIMIT, err, errlen) == 0)
+        return 0;
+    free(*out);
+    *out = NULL;
+    *len = 0;
+    return -1;
+}
+
 int sd_compile(const struct sd_scene *s, uint8_t **out, size_t *len, char *err, size_t errlen)
 {
     *out = NULL;
     *len = 0;
     if (s->no_auto_hierarchy || s->n_prims == 0)
-        return compile_form(s, out, len, err, errlen);
+        return compile_checked(s, out, len, err, errlen);
     /* the same scene with the tree's clusters and the primitives moved
      * into its leaves; everything else shared */
     struct sd_scene t = *s;
@@ -262,7 +278,7 @@ int sd_compile(const struct sd_scene *s, uint8_t **out, size_t *len, char *err, 
             prims[i].cluster = prim_cluster[i];
         }
         t.prims = prims;
-        rc = compile_form(&t, out, len, err, errlen);
+        rc = compile_checked(&t, out, len, err, errlen);
         free(t.clusters);
     }
     free(prims);

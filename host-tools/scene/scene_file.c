@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "host-tools/scene/scene_board.h"
 #include "host-tools/scene/scene_desc.h"
 
 void scene_file_opts_init(struct scene_file_opts *o)
@@ -90,7 +91,16 @@ int scene_file_bytes(const char *path, const struct scene_file_opts *o, uint8_t 
         snprintf(err, errlen, "%s: %s needs a text scene, not a compiled one", path, change);
         return -1;
     }
-    return scene_file_read(path, buf, len, err, errlen);
+    if (scene_file_read(path, buf, len, err, errlen) != 0)
+        return -1;
+    char why[SD_ERR_MAX];
+    if (sd_board_check(*buf, *len, SD_BOARD_BLOB_LIMIT, why, sizeof why) == 0)
+        return 0;
+    snprintf(err, errlen, "%s: %s", path, why);
+    free(*buf);
+    *buf = NULL;
+    *len = 0;
+    return -1;
 }
 
 void scene_file_frame_path(const char *out, long frame, char *buf, size_t n)

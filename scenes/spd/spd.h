@@ -14,9 +14,13 @@
 
 #define SPD_SIDES 12 /* facets around a cylinder or cone */
 
+/* SPD's background colour */
+extern const double spd_sky[3];
+
 struct spd_out {
     FILE *f;
     long spheres, triangles; /* written so far */
+    long dropped;            /* degenerate triangles left out */
 };
 
 /* camera at from looking at `at`, up, full angle (degrees) */
@@ -41,5 +45,6 @@ void spd_mount(struct spd_out *o, int size, int width, int height);
 void spd_rings(struct spd_out *o, int size, int width, int height);
 void spd_tree(struct spd_out *o, int size, int width, int height);
 void spd_gears(struct spd_out *o, int size, int width, int height);
+void spd_teapot(struct spd_out *o, int size, int width, int height);
 
 #endif

@@ -26,7 +26,6 @@
 
 #define PI 3.14159265358979323846
 
-static const double sky[3] = {0.078, 0.361, 0.753};
 
 static void ground(struct spd_out *o, const char *mat, double half, double z)
 {
@@ -76,7 +75,7 @@ static void flake(struct spd_out *o, const double c[3], double r, const double d
 void spd_balls(struct spd_out *o, int size, int width, int height)
 {
     const double from[3] = {2.1, 1.3, 1.7}, at[3] = {0, 0, 0}, up[3] = {0, 0, 1};
-    spd_view(o, from, at, up, 45, width, height, sky);
+    spd_view(o, from, at, up, 45, width, height, spd_sky);
     const double l[3][3] = {{4, 3, 2}, {1, -4, 4}, {-3, 1, 5}};
     for (int i = 0; i < 3; i++)
         spd_light(o, l[i], 1 / sqrt(3.0));
@@ -108,7 +107,7 @@ static void tetra(struct spd_out *o, const double (*v)[3], int level)
 void spd_tetra(struct spd_out *o, int size, int width, int height)
 {
     const double from[3] = {1.2, -2.2, 1.1}, at[3] = {0, 0, -0.05}, up[3] = {0, 0, 1};
-    spd_view(o, from, at, up, 45, width, height, sky);
+    spd_view(o, from, at, up, 45, width, height, spd_sky);
     spd_light(o, (const double[3]){1.85, -2.0, 3.35}, 0.8);
     spd_light(o, (const double[3]){-2.5, -3.0, 0.5}, 0.5);
     spd_material(o, "tetra", (const double[3]){1, 0.2, 0.2}, 0.8, 0, 0, 0, 1);
@@ -135,7 +134,7 @@ static double hash_unit(uint32_t a, uint32_t b, uint32_t seed)
 void spd_mount(struct spd_out *o, int size, int width, int height)
 {
     const double from[3] = {-1.0, -8.8, 3.5}, at[3] = {0, 0, 0.4}, up[3] = {0, 0, 1};
-    spd_view(o, from, at, up, 25, width, height, sky);
+    spd_view(o, from, at, up, 25, width, height, spd_sky);
     spd_light(o, (const double[3]){-100, -100, 200}, 1);
     spd_material(o, "rock", (const double[3]){1, 0.5, 0.2}, 0.9, 0, 0, 0, 1);
     spd_material(o, "glass", (const double[3]){1, 1, 1}, 0.1, 0.2, 30, 0.75, 1.5);
@@ -206,7 +205,7 @@ void spd_rings(struct spd_out *o, int size, int width, int height)
     double span = 2.5 * size;
     const double from[3] = {-span * 0.55, -span * 1.0, span * 0.75};
     const double at[3] = {0, 0, 0.5}, up[3] = {0, 0, 1};
-    spd_view(o, from, at, up, 40, width, height, sky);
+    spd_view(o, from, at, up, 40, width, height, spd_sky);
     spd_light(o, (const double[3]){-3 * span, -2 * span, 4 * span}, 0.6);
     spd_light(o, (const double[3]){2 * span, -3 * span, 3 * span}, 0.5);
     spd_material(o, "floor", (const double[3]){0.9, 0.9, 0.9}, 0.8, 0, 0, 0, 1);
@@ -250,7 +249,7 @@ static void branch(struct spd_out *o, const double base[3], const double dir[3],
 void spd_tree(struct spd_out *o, int size, int width, int height)
 {
     const double from[3] = {4.5, -7.5, 2.6}, at[3] = {0, 0, 2.0}, up[3] = {0, 0, 1};
-    spd_view(o, from, at, up, 45, width, height, sky);
+    spd_view(o, from, at, up, 45, width, height, spd_sky);
     spd_light(o, (const double[3]){-5, -6, 10}, 0.8);
     spd_light(o, (const double[3]){6, -2, 4}, 0.4);
     spd_material(o, "floor", (const double[3]){0.4, 0.6, 0.3}, 0.8, 0, 0, 0, 1);
@@ -292,7 +291,7 @@ void spd_gears(struct spd_out *o, int size, int width, int height)
     double span = 2.0 * size;
     const double from[3] = {-span * 0.6, -span * 1.5, span * 1.3};
     const double at[3] = {0, 0, 0}, up[3] = {0, 0, 1};
-    spd_view(o, from, at, up, 40, width, height, sky);
+    spd_view(o, from, at, up, 40, width, height, spd_sky);
     spd_light(o, (const double[3]){-2 * span, -3 * span, 5 * span}, 0.7);
     spd_light(o, (const double[3]){3 * span, -span, 2 * span}, 0.4);
     spd_material(o, "floor", (const double[3]){0.8, 0.8, 0.8}, 0.5, 0.5, 40, 0, 1);

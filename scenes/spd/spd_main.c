@@ -2,10 +2,13 @@
  *
  *   links1-spd NAME SIZE -o OUT.scn [--size WxH]
  *
- * NAME: balls, tetra, mount, rings, tree or gears (spd_dbs.c); SIZE from 1
- * to each database's largest, the last whose scene compiles within the
- * format's limits (checked: balls 5 = 66,430 spheres ... gears 20 =
- * 102,402 triangles).  The default image is 512x512, as in the originals.
+ * NAME: balls, tetra, mount, rings, tree, gears (spd_dbs.c) or teapot
+ * (spd_teapot.c); SIZE from 1 to each database's largest, the last whose
+ * scene the compiler accepts for the board (its prepared frame within an
+ * IMSU block; checked: tetra 8 = 262,144 triangles, rings 15 = 345,602
+ * triangles and 14,400 spheres, gears 38 = 369,666 triangles, teapot 16 =
+ * 261,760 triangles; balls stops at 5 = 66,430 spheres, mount at 8).
+ * The default image is 512x512, as in the originals.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -20,8 +23,9 @@ struct spd_db {
 };
 
 static const struct spd_db spd_dbs[] = {
-    {"balls", spd_balls, 5}, {"tetra", spd_tetra, 7}, {"mount", spd_mount, 8},
-    {"rings", spd_rings, 10}, {"tree", spd_tree, 12}, {"gears", spd_gears, 20},
+    {"balls", spd_balls, 5}, {"tetra", spd_tetra, 8}, {"mount", spd_mount, 8},
+    {"rings", spd_rings, 15}, {"tree", spd_tree, 14}, {"gears", spd_gears, 38},
+    {"teapot", spd_teapot, 16},
 };
 #define SPD_DB_COUNT (sizeof spd_dbs / sizeof spd_dbs[0])
 
@@ -74,7 +78,7 @@ int main(int argc, char **argv)
                 size_arg);
         return 2;
     }
-    struct spd_out o = {fopen(out, "w"), 0, 0};
+    struct spd_out o = {fopen(out, "w"), 0, 0, 0};
     if (!o.f) {
         perror(out);
         return 1;
@@ -86,7 +90,10 @@ int main(int argc, char **argv)
         perror(out);
         return 1;
     }
-    fprintf(stderr, "links1-spd: %s %ld -> %s: %ld spheres, %ld triangles\n", name, size, out,
+    fprintf(stderr, "links1-spd: %s %ld -> %s: %ld spheres, %ld triangles", name, size, out,
             o.spheres, o.triangles);
+    if (o.dropped)
+        fprintf(stderr, " (%ld degenerate ones left out)", o.dropped);
+    fprintf(stderr, "\n");
     return 0;
 }

@@ -1,9 +1,13 @@
 /* spd_out.c: writing SPD's shapes as a links1 text scene (see spd.h). */
 #include <math.h>
+#include <stdlib.h>
 
+#include "host-tools/scene/scene_desc.h"
 #include "scenes/spd/spd.h"
 
 #define SPD_PI 3.14159265358979323846
+
+const double spd_sky[3] = {0.078, 0.361, 0.753};
 
 /* SPD's right-handed world into the renderer's left-handed one */
 static void spd_p(struct spd_out *o, const char *what, const double v[3])
@@ -53,9 +57,29 @@ void spd_sphere(struct spd_out *o, const char *mat, const double c[3], double r)
     o->spheres++;
 }
 
+/* v as the scene file will hold it (spd_p's digits) */
+static void spd_as_written(const double v[3], double out[3])
+{
+    char t[32];
+    for (int k = 0; k < 3; k++) {
+        snprintf(t, sizeof t, "%.6g", v[k]);
+        out[k] = strtod(t, NULL);
+    }
+}
+
 void spd_triangle(struct spd_out *o, const char *mat, const double a[3], const double b[3],
                   const double c[3])
 {
+    /* a triangle the scene parser would refuse as degenerate (a fine
+     * tessellation's slivers near a pole) is left out */
+    double w[9];
+    spd_as_written(a, w);
+    spd_as_written(b, w + 3);
+    spd_as_written(c, w + 6);
+    if (sd_triangle_degenerate(w)) {
+        o->dropped++;
+        return;
+    }
     fprintf(o->f, "triangle { material %s", mat);
     spd_p(o, "v", a);
     spd_p(o, "v", b);

@@ -4,15 +4,19 @@
 #   1. one flat cluster of n random spheres, n = 100 .. 100,000: host ns per
 #      ray (links1 ref --arith float, tracing time only) with the automatic
 #      hierarchy on, and off up to 1,000 (it grows linearly beyond);
-#   2. the SPD scenes (links1-spd) balls 1-4, tetra 1-6 and mount 6 (a
-#      mesh of 8,192 triangles): host ns/ray, board NC instructions per ray
+#   2. the SPD scenes (links1-spd) balls 1-4, tetra 1-6, mount 6 (a
+#      mesh of 8,192 triangles) and the teapot at sizes 2 and 4 (4,160 and
+#      16,384 triangles with the floor): host ns/ray, board NC instructions per ray
 #      (links1 render --count-insns, float, 8 NCs: all NCs' instructions over
 #      the rays the host counts for the same image), and POV-Ray 3.7's trace
 #      time on the same scene through links1 export-pov;
 #   3. the hierarchy's build time against n (links1 compile, on minus off).
-# Host figures are medians of BENCH_RUNS runs (default 3).  Sizes:
+# Host figures are medians of BENCH_RUNS runs (default 3) of the tracing's
+# CPU time (BENCH_CLOCK=wall: its wall-clock time).  Sizes:
 # BENCH_SIZE (default 320x240) on the host and POV-Ray, BENCH_BOARD_SIZE
-# (default 160x120) on the board.  BENCH_QUICK=1 skips the largest cases.
+# (default 160x120) on the board.  BENCH_QUICK=1 skips the largest cases;
+# BENCH_SCALE_PARTS (default "1 2 3") picks the tables, BENCH_SCALE_DBS the
+# SPD scenes of the second.
 set -u
 cd "$(dirname "$0")/../.."
 LINKS1=${LINKS1:-build/links1}
@@ -23,6 +27,12 @@ SIZE=${BENCH_SIZE:-320x240}
 BSIZE=${BENCH_BOARD_SIZE:-160x120}
 QUICK=${BENCH_QUICK:-0}
 LIMIT_S=${BENCH_RUN_LIMIT_S:-1800}
+PARTS=${BENCH_SCALE_PARTS:-1 2 3}
+# host times: the tracing's CPU time (BENCH_CLOCK=cpu, default: other
+# engineers' boards on the same 2 cores inflate it far less) or wall time
+CLOCK_FIELD=2
+[ "${BENCH_CLOCK:-cpu}" = wall ] && CLOCK_FIELD=1
+part() { case " $PARTS " in *" $1 "*) return 0 ;; esac; return 1; }
 make -s --no-print-directory build/links1 build/links1-ref-float build/links1-spd >&2
 TMP=$(mktemp -d /tmp/links1-bench-scale.XXXXXX)
 trap 'rm -rf "$TMP"' EXIT
@@ -57,7 +67,7 @@ host() {
     for _ in $(seq "$RUNS"); do
         "$LINKS1" ref "$scene" -o "$TMP/ref.ppm" --arith float "$@" >"$log" 2>&1 ||
             { echo "bench_scale: links1 ref $scene failed: $(tail -n 1 "$log")" >&2; exit 1; }
-        sed -n 's/.*traced in \([0-9.]*\) s.*/\1/p' "$log"
+        sed -n 's/.*traced in \([0-9.]*\) s (\([0-9.]*\) s CPU).*/\'"$CLOCK_FIELD"'/p' "$log"
     done | median >"$TMP/t"
     rays=$(sed -n 's/.*rays: \([0-9]*\) primary, \([0-9]*\) shadow, \([0-9]*\) reflection, \([0-9]*\) refraction, \([0-9]*\) transmission.*/\1 \2 \3 \4 \5/p' "$log" |
            awk '{ print $1 + $2 + $3 + $4 + $5 }')
@@ -66,13 +76,18 @@ host() {
         'BEGIN { printf "%.0f %d %.3f %.1f %.1f\n", t * 1e9 / r, r, t, bt / r, pt / r }'
 }
 
-# pov SCENE: POV-Ray's median trace time, seconds
+# pov SCENE: POV-Ray's median trace time, seconds (its CPU-seconds, or with
+# BENCH_CLOCK=wall the wall time it prints)
 pov() {
     "$LINKS1" export-pov "$1" -o "$TMP/p.pov" >/dev/null 2>&1 || { echo "-"; return; }
     local w=${SIZE%x*} h=${SIZE#*x}
     for _ in $(seq "$RUNS"); do
         povray -D +I"$TMP/p.pov" +O"$TMP/p.png" +W"$w" +H"$h" -A +WT1 2>&1 |
-            sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p'
+            if [ "$CLOCK_FIELD" = 1 ]; then
+                sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p'
+            else
+                grep -A1 'Trace Time:' | sed -n 's/.*with \([0-9.]*\) CPU-seconds.*/\1/p'
+            fi
     done | median
 }
 
@@ -93,6 +108,7 @@ board() {
         awk -v r="$rays" -v s="$same" '{ printf "%.0f (%s)\n", $1 / r, s }'
 }
 
+if part 1; then
 echo "### Cost per ray, one flat cluster of n spheres (host float, $SIZE, median of $RUNS)"
 echo
 echo "| n | ns/ray, automatic hierarchy | box + primitive tests/ray | ns/ray, off | tests/ray, off | rays |"
@@ -107,11 +123,13 @@ for n in $ns; do
     echo "| $n | $on | $bt + $pt | $off | $obt + $opt | $rays |"
 done
 echo
+fi
+if part 2; then
 echo "### SPD scenes: host float ns/ray ($SIZE), board NC insns/ray ($BSIZE, 8 NCs), POV-Ray 3.7 (-A +WT1)"
 echo
 echo "| scene | objects | host ns/ray | box + primitive tests/ray | host trace s | POV-Ray trace s | links1 / POV-Ray | board NC insns/ray (image vs host) |"
 echo "|---|---|---|---|---|---|---|---|"
-dbs="balls-1 balls-2 balls-3 balls-4 tetra-1 tetra-2 tetra-3 tetra-4 tetra-5 tetra-6 mount-6"
+dbs=${BENCH_SCALE_DBS:-"balls-1 balls-2 balls-3 balls-4 tetra-1 tetra-2 tetra-3 tetra-4 tetra-5 tetra-6 mount-6 teapot-2 teapot-4"}
 for db in $dbs; do
     scene="$TMP/$db.scn"
     "$SPD" "${db%-*}" "${db#*-}" -o "$scene" --size "$SIZE" 2>"$TMP/spd.log"
@@ -124,7 +142,9 @@ for db in $dbs; do
     echo "| $db | $objs | $ns | $bt + $ptests | $t | $pt | $ratio | $b |"
 done
 echo
-echo "### Build time of the automatic hierarchy (links1 compile, median of $RUNS, on minus off)"
+fi
+part 3 || exit 0
+echo "### Build time of the automatic hierarchy (links1 compile, median of $RUNS, on minus off, ${BENCH_CLOCK:-cpu} time)"
 echo
 echo "| n spheres | compile s, on | compile s, off | build s |"
 echo "|---|---|---|---|"
@@ -135,11 +155,14 @@ for n in $ns; do
     { echo "options { auto_hierarchy off }"; cat "$TMP/s.scn"; } >"$TMP/s-off.scn"
     for v in s s-off; do
         for _ in $(seq "$RUNS"); do
-            s0=$(date +%s.%N)
-            "$LINKS1" compile "$TMP/$v.scn" -o "$TMP/$v.l1s" >/dev/null 2>&1 ||
-                echo "bench_scale: compile of $n spheres failed" >&2
-            s1=$(date +%s.%N)
-            awk -v a="$s0" -v b="$s1" 'BEGIN { printf "%.3f\n", b - a }'
+            if [ "$CLOCK_FIELD" = 1 ]; then
+                TIMEFORMAT=%R
+            else
+                TIMEFORMAT='%U %S' # user + system CPU seconds
+            fi
+            { time "$LINKS1" compile "$TMP/$v.scn" -o "$TMP/$v.l1s" >/dev/null 2>&1 ||
+                echo "bench_scale: compile of $n spheres failed" >&2; } 2>&1 |
+                awk '{ printf "%.3f\n", $1 + $2 }'
         done | median >"$TMP/$v.t"
     done
     awk -v n="$n" -v a="$(cat "$TMP/s.t")" -v b="$(cat "$TMP/s-off.t")" \

@@ -15,7 +15,13 @@ if [ ! -s "$RENDER_TMP/classes.txt" ]; then
     echo "FAIL render_hostile: $MAKE_HOSTILE did not write the hostile scenes (run make)"
     exit 0
 fi
-while IFS=$'\t' read -r name expect; do names+=("$name"); done <"$RENDER_TMP/classes.txt"
+# working_set (a prepared frame over the DM's block) is the host's alone
+# now: the board's blocks hold 176 MiB, and a scene that needs more is
+# refused by the compiler before any upload (render_refuse.sh); the DM's
+# own check of the bound is test_hostile's and test_blob's.
+while IFS=$'\t' read -r name expect; do
+    [ "$name" = working_set ] || names+=("$name")
+done <"$RENDER_TMP/classes.txt"
 checks=()
 for n in "${names[@]}"; do checks+=("render_hostile_$n" "render_hostile_${n}_next"); done
 board_ready "${checks[@]}" || exit 0

@@ -2,8 +2,9 @@
 # Scenes the DM must refuse, on a board that keeps running:
 #  - a damaged compiled scene: refused with the loader's reason, and the
 #    next scene uploaded to the same board renders, equal to the host build;
-#  - a scene whose prepared frame exceeds the IMSU block: refused with a
-#    message naming the limit (LINKS1_IMSU_PAIR_BLOCK).
+#  - a scene whose prepared frame exceeds the IMSU block: refused by the
+#    host compiler before the upload, naming the limit
+#    (LINKS1_IMSU_PAIR_BLOCK) and the counts.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
 board_ready render_refuse_bad render_refuse_next render_refuse_too_big || exit 0
@@ -27,16 +28,18 @@ else
 fi
 render_same render_refuse_next "$ref" "$RENDER_TMP/next.ppm"
 
-# About 32000 small triangles: 2.4 MB compiled, more than 8 MiB prepared.
+# 700,000 small spheres without the automatic hierarchy: 53 MB compiled
+# (within SCN_MAX_SIZE), 190 MB prepared on the board, more than an IMSU
+# block: refused by the compiler before anything is uploaded, naming the
+# limit (the DM's own check of the same bound: test_blob).
 python3 - "$RENDER_TMP/big.scn" <<'PY'
 import sys
 out = ["camera { eye 0 3 -6  look_at 0 0 0  up 0 1 0  fov 50 }", "resolution 32 24",
+       "options { auto_hierarchy off }",
        "light parallel { colour 0.6 0.6 0.6  direction -1 -1.5 1 }",
        "material grass { colour 0.3 0.6 0.3 dic 0.25 drc 0.7 }"]
-for i in range(32000):
-    x, z = (i % 200) * 0.05 - 5, (i // 200) * 0.05 - 4
-    out.append("triangle { material grass  v %.2f 0 %.2f  v %.2f 0 %.2f  v %.2f 0.02 %.2f }"
-               % (x, z, x + 0.05, z, x, z + 0.05))
+for i in range(700000):
+    out.append("sphere { material grass centre %d 0 %d radius 0.4 }" % (i % 1000 - 500, i // 1000))
 open(sys.argv[1], "w").write("\n".join(out) + "\n")
 PY
 log="$RENDER_TMP/big.log"
@@ -44,8 +47,9 @@ timeout "$BOARD_RUN_LIMIT_S" "$LINKS1" render --quiet --ncs 1 "$RENDER_TMP/big.s
     -o "$RENDER_TMP/big.ppm" >"$log" 2>&1
 rc=$?
 echo "--- links1 render big.scn (exit $rc)"; sed 's/^/    /' "$log"
-if [ $rc -eq 1 ] && grep -q 'scene refused: .*LINKS1_IMSU_PAIR_BLOCK' "$log"; then
+if [ $rc -ne 0 ] && grep -q 'board memory .*(700000 primitives, 1 clusters).*LINKS1_IMSU_PAIR_BLOCK' "$log" &&
+    ! grep -q 'scene upload' "$log"; then
     echo "PASS render_refuse_too_big"
 else
-    echo "FAIL render_refuse_too_big: exit $rc (want 1) or the refusal does not name LINKS1_IMSU_PAIR_BLOCK"
+    echo "FAIL render_refuse_too_big: exit $rc (want non-zero) or the compiler's refusal does not name LINKS1_IMSU_PAIR_BLOCK and the count"
 fi

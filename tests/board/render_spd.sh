@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# The Standard Procedural Databases (links1-spd, scenes/spd/) at their small
+# The Standard Procedural Databases (links1-spd, scenes/spd/; the teapot
+# at size 1, 1,120 triangles) at their small
 # sizes: each generated scene compiles (with its automatic hierarchy) and
 # renders on the board exactly as the host build renders it, and the host
 # image is the same with the automatic hierarchy off.  96x72 on 4 NCs, one
@@ -10,7 +11,7 @@ SPD="$(dirname "$LINKS1")/links1-spd"
 board_ready render_spd || exit 0
 SIZE=96x72
 i=0
-for db in "balls 2" "tetra 2" "mount 2" "rings 1" "tree 3" "gears 1"; do
+for db in "balls 2" "tetra 2" "mount 2" "rings 1" "tree 3" "gears 1" "teapot 1"; do
     set -- $db
     arith=$(echo float fixed soft | cut -d' ' -f$((i % 3 + 1)))
     i=$((i + 1))

@@ -16,7 +16,7 @@
 #include "render/blob.h"
 #include "render/scene_load.h"
 
-#define FUZZ_BLOCK (8u * 1024u * 1024u) /* the DM's IMSU block (LINKS1_IMSU_PAIR_BLOCK) */
+#define FUZZ_BLOCK (8u * 1024u * 1024u) /* a DM block for the fuzzer's small inputs (the board's: BOARD_IMSU_BLOCK_BYTES) */
 
 static uint8_t *fuzz_block(int which)
 {

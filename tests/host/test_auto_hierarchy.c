@@ -8,13 +8,16 @@
  *     several scenes (spheres, a mesh, a moving keyframed cluster, nested
  *     author clusters), through both the full tree walk and the NC's
  *     clipped area loop;
- *   - a scene that would need more clusters than the format holds, or
- *     more bytes, is refused, naming the limit and the count.
+ *   - a scene that would need more clusters than the format holds, more
+ *     bytes, or more of the board's memory than an IMSU block, is refused,
+ *     naming the limit and the count (and one exactly at the board's
+ *     limit passes).
  */
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
+#include "host-tools/scene/scene_board.h"
 #include "host-tools/scene/scene_bvh.h"
 #include "host-tools/scene/scene_desc.h"
 #include "render/clip.h"
@@ -342,47 +345,99 @@ static void test_cluster_limit_named(void)
     struct bvh_build_stats st;
     char err[SD_ERR_MAX] = "";
     CHECK_EQ_INT(sd_auto_hierarchy(&s, &cl, &n, pc, &st, err, sizeof err), -1);
-    CHECK(strstr(err, "SCN_MAX_CLUSTERS") != NULL && strstr(err, "65535") != NULL &&
+    CHECK(strstr(err, "SCN_MAX_CLUSTERS") != NULL && strstr(err, "1048576") != NULL &&
           strstr(err, "20000") != NULL);
     free(pc);
     free(s.prims);
     free(s.clusters);
 }
 
-/* a scene whose compiled form with its tree passes SCN_MAX_SIZE: refused
- * by the compiler, naming the limit and the counts */
+/* n small ellipsoids in one cluster, nothing else: a scene for the
+ * compiler's limits */
+static void flat_ellipsoids(struct sd_scene *s, int n, int no_tree)
+{
+    memset(s, 0, sizeof *s);
+    s->n_clusters = 1;
+    s->clusters = calloc(1, sizeof *s->clusters);
+    s->clusters[0].parent = -1;
+    s->clusters[0].m[0] = s->clusters[0].m[5] = s->clusters[0].m[10] = 1;
+    s->n_materials = 1;
+    s->materials = calloc(1, sizeof *s->materials);
+    s->view.width = s->view.height = 16;
+    s->view.fov = 45;
+    s->view.frames = 1;
+    s->no_auto_hierarchy = no_tree;
+    s->n_prims = n;
+    s->prims = calloc((size_t)n, sizeof *s->prims);
+    rnd_state = 3;
+    for (int i = 0; i < n; i++) {
+        s->prims[i].kind = SCN_PRIM_ELLIPSOID;
+        for (int k = 0; k < 3; k++) {
+            s->prims[i].v[k] = rnd(-50, 50);
+            s->prims[i].v[3 + k] = 0.1;
+        }
+    }
+}
+
+static void free_flat(struct sd_scene *s)
+{
+    free(s->prims);
+    free(s->materials);
+    free(s->clusters);
+}
+
+/* a scene whose compiled form passes SCN_MAX_SIZE: refused by the
+ * compiler, naming the limit and the counts */
 static void test_size_limit_named(void)
 {
     struct sd_scene s;
-    memset(&s, 0, sizeof s);
-    s.n_clusters = 1;
-    s.clusters = calloc(1, sizeof *s.clusters);
-    s.clusters[0].parent = -1;
-    s.clusters[0].m[0] = s.clusters[0].m[5] = s.clusters[0].m[10] = 1;
-    s.n_materials = 1;
-    s.materials = calloc(1, sizeof *s.materials);
-    s.view.width = s.view.height = 16;
-    s.view.fov = 45;
-    s.view.frames = 1;
-    s.n_prims = 200000; /* 15.2 MB of records, then the tree's clusters */
-    s.prims = calloc((size_t)s.n_prims, sizeof *s.prims);
-    rnd_state = 3;
-    for (int i = 0; i < s.n_prims; i++) {
-        s.prims[i].kind = SCN_PRIM_ELLIPSOID;
-        for (int k = 0; k < 3; k++) {
-            s.prims[i].v[k] = rnd(-50, 50);
-            s.prims[i].v[3 + k] = 0.1;
-        }
-    }
+    flat_ellipsoids(&s, 900000, 1); /* 68.4 MB of records */
     uint8_t *buf = NULL;
     size_t len = 0;
     char err[SD_ERR_MAX] = "";
     CHECK_EQ_INT(sd_compile(&s, &buf, &len, err, sizeof err), -1);
     CHECK(buf == NULL);
-    CHECK(strstr(err, "SCN_MAX_SIZE") != NULL && strstr(err, "200000 primitives") != NULL);
-    free(s.prims);
-    free(s.materials);
-    free(s.clusters);
+    CHECK(strstr(err, "SCN_MAX_SIZE") != NULL && strstr(err, "900000 primitives") != NULL);
+    free_flat(&s);
+}
+
+/* The board's memory: a scene whose prepared frame needs exactly the
+ * limit's bytes passes, one byte less refuses it naming the limit, the
+ * bytes and the counts; a scene too big for the board's IMSU block is
+ * refused by the compiler itself. */
+static void test_board_limit_named(void)
+{
+    struct sd_scene s;
+    flat_ellipsoids(&s, 5000, 0);
+    uint8_t *buf = NULL;
+    size_t len = 0;
+    char err[SD_ERR_MAX] = "";
+    CHECK_EQ_INT(sd_compile(&s, &buf, &len, err, sizeof err), 0);
+    struct sd_board_bytes b;
+    CHECK_EQ_INT(sd_board_bytes(buf, len, &b, err, sizeof err), 0);
+    CHECK_EQ_INT(b.prims, 5000);
+    CHECK(b.clusters > 1000 && b.blob > 5000u * (RENDER_BOARD_PRIM + RENDER_BOARD_FRAME_PRIM));
+    CHECK_EQ_INT(b.nc_working, 2 * sizeof(uint32_t) * b.clusters);
+    CHECK_EQ_INT(sd_board_check(buf, len, b.blob, err, sizeof err), 0);
+    err[0] = 0;
+    CHECK_EQ_INT(sd_board_check(buf, len, b.blob - 1, err, sizeof err), -1);
+    char want[64];
+    snprintf(want, sizeof want, "needs %zu bytes", b.blob);
+    CHECK(strstr(err, want) != NULL && strstr(err, BOARD_IMSU_BLOCK_NAME) != NULL &&
+          strstr(err, "5000 primitives") != NULL);
+    free(buf);
+    free_flat(&s);
+
+    /* 700,000 primitives without a tree: 190 MB on the board, over the
+     * 176 MiB of an IMSU block; the compiled form (53 MB) is within
+     * SCN_MAX_SIZE */
+    flat_ellipsoids(&s, 700000, 1);
+    err[0] = 0;
+    CHECK_EQ_INT(sd_compile(&s, &buf, &len, err, sizeof err), -1);
+    CHECK(buf == NULL);
+    CHECK(strstr(err, BOARD_IMSU_BLOCK_NAME) != NULL && strstr(err, "700000 primitives") != NULL &&
+          strstr(err, "more than the 184549376 bytes") != NULL);
+    free_flat(&s);
 }
 #endif
 
@@ -396,6 +451,7 @@ int main(void)
 #if defined(LINKS1_NUM_DOUBLE) /* the compiler alone: once is enough */
     RUN(test_cluster_limit_named);
     RUN(test_size_limit_named);
+    RUN(test_board_limit_named);
 #endif
     return check_exit();
 }

@@ -43,7 +43,7 @@ static int tc_meets(const render_cluster_t *c, const render_area_t *a)
 }
 
 /* Brute force: every cluster tested, then an insertion sort. */
-static uint32_t tc_brute_y(const render_frame_t *f, const render_area_t *a, uint16_t *out)
+static uint32_t tc_brute_y(const render_frame_t *f, const render_area_t *a, uint32_t *out)
 {
     uint32_t n = 0;
     for (uint32_t i = 0; i < f->cluster_count; i++) {
@@ -54,7 +54,7 @@ static uint32_t tc_brute_y(const render_frame_t *f, const render_area_t *a, uint
             out[j] = out[j - 1];
             j--;
         }
-        out[j] = (uint16_t)i;
+        out[j] = i;
     }
     return n;
 }
@@ -86,7 +86,7 @@ static void test_clip_y_matches_brute_force(void)
             continue;
         render_area_t areas[TC_MAX_AREAS];
         uint32_t na = tc_areas(t.f, areas, TC_MAX_AREAS);
-        uint16_t *want = malloc(sizeof *want * t.f->cluster_count);
+        uint32_t *want = malloc(sizeof *want * t.f->cluster_count);
         int exact = 1, sorted = 1, some_cut = 0;
         for (uint32_t i = 0; i < na; i++) {
             uint32_t n = render_clip_y(&t.clip, &areas[i], 0);
@@ -133,12 +133,12 @@ static void test_clip_x_matches_brute_force(void)
                     uint32_t n = render_clip_x(&t.clip, (int32_t)x);
                     uint32_t want = 0;
                     for (uint32_t k = 0; k < t.clip.ycount; k++) {
-                        uint16_t c = t.clip.ylist[k];
+                        uint32_t c = t.clip.ylist[k];
                         want += cl[c].screen_x0 <= (int32_t)x && cl[c].screen_x1 >= (int32_t)x;
                     }
                     uint32_t good = 0;
                     for (uint32_t k = 0; k < n; k++) {
-                        uint16_t c = t.clip.xlist[k];
+                        uint32_t c = t.clip.xlist[k];
                         good += !mark[c] && cl[c].screen_x0 <= (int32_t)x && cl[c].screen_x1 >= (int32_t)x;
                         mark[c] = 1;
                     }
@@ -280,9 +280,9 @@ static void test_clip_memory_and_errors(void)
     if (!t.blob)
         return;
     size_t bytes = render_clip_bytes(t.f);
-    CHECK_EQ_INT(bytes, 2 * sizeof(uint16_t) * t.f->cluster_count);
+    CHECK_EQ_INT(bytes, 2 * sizeof(uint32_t) * t.f->cluster_count);
     render_clip_t c;
-    uint16_t *mem = malloc(bytes + 2);
+    uint32_t *mem = malloc(bytes + 4);
     CHECK_EQ_INT(render_clip_init(&c, t.f, mem, bytes - 1), RENDER_ERR_ARENA);
     CHECK_EQ_INT(render_clip_init(&c, t.f, (uint8_t *)mem + 1, bytes), RENDER_ERR_ARENA);
     CHECK_EQ_INT(render_clip_init(&c, t.f, mem, bytes), RENDER_OK);

@@ -289,9 +289,9 @@ static void test_speedups_same_image(void)
     int same = 1;
     for (uint32_t y = 0; y < f->height; y++)
         for (uint32_t x = 0; x < f->width; x++) {
-            uint16_t list[TS_MAX];
+            uint32_t list[TS_MAX];
             uint32_t count = 0;
-            for (uint16_t c = 0; c < f->cluster_count; c++) {
+            for (uint32_t c = 0; c < f->cluster_count; c++) {
                 const render_cluster_t *k = &f->clusters[c];
                 if ((int32_t)x >= k->screen_x0 && (int32_t)x <= k->screen_x1 && (int32_t)y >= k->screen_y0 &&
                     (int32_t)y <= k->screen_y1)

@@ -64,7 +64,7 @@ static inline void ts_init(test_scene_t *t, uint16_t width, uint16_t height)
     s->keys = t->keys;
     s->prims = t->prims;
     s->density_components = t->comps;
-    t->clusters[0].parent = SCENE_NONE;
+    t->clusters[0].parent = SCENE_NO_CLUSTER;
     t->clusters[0].local = xform_identity();
     s->cluster_count = 1;
     scene_material_t *m = &t->materials[0];

@@ -143,7 +143,7 @@ static void test_round_trip(void)
     CHECK_EQ_INT(s.materials[0].bump_map, 1);
     CHECK_EQ_INT(s.materials[1].colour_map, SCENE_NONE);
     CHECK_EQ_INT(s.cluster_count, 3);
-    CHECK_EQ_INT(s.clusters[0].parent, SCENE_NONE);
+    CHECK(s.clusters[0].parent == SCENE_NO_CLUSTER);
     CHECK_EQ_INT(s.clusters[1].parent, 0);
     CHECK_EQ_INT(s.clusters[2].parent, 1);
     CHECK_NEAR(num_to_double(s.clusters[1].local.m[1][3]), 2, 0);
@@ -356,7 +356,7 @@ static void test_bad_indices_and_values(void)
     const uint32_t P = SCN_PRIM_SIZE, C = SCN_CLUSTER_SIZE;
     expect_field(b, len, SCN_SEC_PRIMS, SCN_PRIM_MATERIAL, 2, 2, SCENE_LOAD_ERR_INDEX,
                  "prim 0: material");
-    expect_field(b, len, SCN_SEC_PRIMS, P + SCN_PRIM_CLUSTER, 3, 2, SCENE_LOAD_ERR_INDEX,
+    expect_field(b, len, SCN_SEC_PRIMS, P + SCN_PRIM_CLUSTER, 3, 4, SCENE_LOAD_ERR_INDEX,
                  "prim 1: cluster");
     expect_field(b, len, SCN_SEC_PRIMS, P + SCN_PRIM_KIND, 9, 2, SCENE_LOAD_ERR_VALUE,
                  "prim 1: unknown kind");
@@ -373,13 +373,13 @@ static void test_bad_indices_and_values(void)
     expect_field(b, len, SCN_SEC_PRIMS, 0 * P + SCN_PRIM_VALUES + 4 * 10, f32_bits(1.0f), 4,
                  SCENE_LOAD_ERR_VALUE, "unused value");
     /* the tree: a cycle (parent not below), the root with a parent */
-    expect_field(b, len, SCN_SEC_CLUSTERS, C + SCN_CLUSTER_PARENT, 2, 2, SCENE_LOAD_ERR_TREE,
+    expect_field(b, len, SCN_SEC_CLUSTERS, C + SCN_CLUSTER_PARENT, 2, 4, SCENE_LOAD_ERR_TREE,
                  "cluster 1: parent");
-    expect_field(b, len, SCN_SEC_CLUSTERS, 2 * C + SCN_CLUSTER_PARENT, 2, 2,
+    expect_field(b, len, SCN_SEC_CLUSTERS, 2 * C + SCN_CLUSTER_PARENT, 2, 4,
                  SCENE_LOAD_ERR_TREE, "cluster 2: parent");
-    expect_field(b, len, SCN_SEC_CLUSTERS, SCN_CLUSTER_PARENT, 0, 2, SCENE_LOAD_ERR_TREE,
+    expect_field(b, len, SCN_SEC_CLUSTERS, SCN_CLUSTER_PARENT, 0, 4, SCENE_LOAD_ERR_TREE,
                  "cluster 0: the root");
-    expect_field(b, len, SCN_SEC_CLUSTERS, C + SCN_CLUSTER_KEY_COUNT, 3, 2,
+    expect_field(b, len, SCN_SEC_CLUSTERS, C + SCN_CLUSTER_KEY_COUNT, 3, 4,
                  SCENE_LOAD_ERR_INDEX, "cluster 1: key range");
     expect_field(b, len, SCN_SEC_CLUSTERS, C + SCN_CLUSTER_MATRIX, 0xff800000u, 4,
                  SCENE_LOAD_ERR_VALUE, "cluster 1: matrix");

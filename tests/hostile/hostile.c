@@ -224,7 +224,7 @@ static int nesting(struct hostile_scene *h)
     uint8_t *p = rec(h, SCN_SEC_CLUSTERS, SCN_CLUSTER_SIZE, HOSTILE_NESTING + 1);
     if (!p)
         return -1;
-    wire_put_u16(p + SCN_CLUSTER_PARENT, HOSTILE_NESTING);
+    wire_put_u32(p + SCN_CLUSTER_PARENT, HOSTILE_NESTING);
     return refix(h);
 }
 
@@ -233,7 +233,7 @@ static int forward_parent(struct hostile_scene *h)
     uint8_t *p = rec(h, SCN_SEC_CLUSTERS, SCN_CLUSTER_SIZE, 1);
     if (!p)
         return -1;
-    wire_put_u16(p + SCN_CLUSTER_PARENT, 2);
+    wire_put_u32(p + SCN_CLUSTER_PARENT, 2);
     return refix(h);
 }
 
@@ -363,14 +363,14 @@ const struct hostile_class hostile_classes[] = {
     {"over_materials", "section kind 3: record count over its limit of 1024", over_materials},
     {"over_maps", "section kind 4: record count over its limit of 16", over_maps},
     {"over_texels", "section kind 5: record count over its limit of 4194304", over_texels},
-    {"over_clusters", "section kind 6: record count over its limit of 65535", over_clusters},
-    {"over_prims", "section kind 7: record count over its limit of 262144", over_prims},
+    {"over_clusters", "section kind 6: record count over its limit of 1048576", over_clusters},
+    {"over_prims", "section kind 7: record count over its limit of 1048576", over_prims},
     {"over_components", "section kind 8: record count over its limit of 65536", over_components},
     {"over_keys", "section kind 9: record count over its limit of 65536", over_keys},
     {"over_image_size", "image size 1025x24 outside 1..1024", over_image_size},
     {"over_depth", "max depth 17 over the limit of 16", over_depth},
     {"over_frames", "frame count 100001 not 1..100000", over_frames},
-    {"over_total_size", "total size 16777217 is over the limit of 16777216 bytes",
+    {"over_total_size", "total size 67108865 is over the limit of 67108864 bytes",
      over_total_size},
     {"over_density_components", "prim 2: component count not 1..64", over_density_components},
     {"over_phong", "material 0: phong n over 1024", over_phong},
@@ -380,7 +380,7 @@ const struct hostile_class hostile_classes[] = {
     {"outside", "section kind 9: body outside the file", outside},
     {"truncated", "scene truncated: header says", truncated},
     {"crc_mismatch", "checksum mismatch", crc_mismatch},
-    {"wrong_version", "format version 2 (this loader reads version 1)", wrong_version},
+    {"wrong_version", "format version 3 (this loader reads version 2)", wrong_version},
     {"zero_box", "prim 0: a semi-axis or half edge is not > 0", zero_box},
     {"degenerate_triangle", "prim 1: degenerate or sliver triangle", degenerate_triangle},
     {"sliver_triangle", "prim 1: degenerate or sliver triangle", sliver_triangle},
