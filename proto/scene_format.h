@@ -70,7 +70,7 @@
 #define SCN_MAGIC_1 '1'
 #define SCN_MAGIC_2 'S'
 #define SCN_MAGIC_3 'C'
-#define SCN_VERSION 1
+#define SCN_VERSION 2 /* 2: VIEW carries min_weight */
 #define SCN_HEADER_SIZE 16
 #define SCN_HDR_MAGIC 0
 #define SCN_HDR_VERSION 4
@@ -103,7 +103,7 @@ enum scn_section {
  * tangent or quaternion the renderer needs by the host compiler. */
 
 /* --------------------------------------------------------- VIEW record */
-#define SCN_VIEW_SIZE 64
+#define SCN_VIEW_SIZE 68
 #define SCN_VIEW_EYE 0          /* 3 x f32 */
 #define SCN_VIEW_LOOK_AT 12     /* 3 x f32, != eye */
 #define SCN_VIEW_UP 24          /* 3 x f32, not parallel to look_at - eye */
@@ -114,7 +114,11 @@ enum scn_section {
 #define SCN_VIEW_MAX_DEPTH 56   /* u16: 0..SCN_MAX_DEPTH */
 #define SCN_VIEW_FLAGS 58       /* u16: SCN_OPT_* */
 #define SCN_VIEW_FRAMES 60      /* u32: frames of the animation, 1 = still */
+#define SCN_VIEW_MIN_WEIGHT 64  /* f32 0..1: adaptive depth; a ray whose weight
+                                   (product of src and trc along its path) falls
+                                   below it is not traced; 0 = depth limit only */
 #define SCN_MAX_TAN_HALF_FOV 100.0f
+#define SCN_DEFAULT_MIN_WEIGHT (1.0 / 512) /* text form's default (Hall and Greenberg 1983) */
 
 /* Render options.  REFRACTIONLESS: past max_depth, transmission continues
  * along the straight ray (the paper's 4.5).  The NO_* switches turn a

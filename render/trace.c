@@ -306,8 +306,7 @@ static rgb_t trace_lights(render_ctx_t *ctx, const hit_t *hit, const scene_mater
     return sum;
 }
 
-static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int depth, const uint16_t *clip,
-                       uint32_t clip_count);
+static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int depth, num_t weight);
 
 /* Refractionless transmission past the depth limit: the straight ray
  * registers every object it crosses (the transmission buffer, nearest
@@ -349,7 +348,17 @@ static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray)
     return rgb_add(sum, rgb_mul(weight, ctx->frame->scene->background));
 }
 
-static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, int depth)
+/* Adaptive depth: a secondary ray of weight w (the product of src and trc
+ * along its path) is traced only while w >= min_weight; min_weight 0 keeps
+ * every ray max_depth allows. */
+static int trace_worth(const render_ctx_t *ctx, num_t weight)
+{
+    return !num_lt(weight, ctx->options.min_weight);
+}
+
+/* weight: the product of src and trc along the path of the ray that made
+ * this hit (1 for a camera ray). */
+static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, int depth, num_t weight)
 {
     const scene_material_t *m = trace_material(ctx, hit->prim);
     rgb_t colour;
@@ -364,35 +373,41 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, 
     rgb_t out = trace_lights(ctx, hit, m, colour, n, ray->dir, src);
 
     int can_recurse = depth < ctx->options.max_depth;
+    /* Where a refracted ray would go, or total internal reflection: then
+     * the mirrored ray carries the transmitted share too, and its weight
+     * is the sum of both. */
+    vec3_t refracted_dir;
+    int refracts = 0, tir = 0;
+    if (num_gt(trc, NUM_ZERO) && can_recurse) {
+        refracts = shade_refract(ray->dir, n, entering ? num_recip(m->ior) : m->ior, &refracted_dir);
+        tir = !refracts;
+    }
+    num_t w_mirror = num_mul(weight, tir ? num_add(src, trc) : src);
     rgb_t reflected = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
-    int have_reflected = 0;
     vec3_t outside = vec3_madd(hit->point, n, TRACE_EPSILON);
-    if (num_gt(src, NUM_ZERO) && can_recurse) {
+    int mirror = can_recurse && (num_gt(src, NUM_ZERO) || tir);
+    if (mirror && !trace_worth(ctx, w_mirror)) {
+        ctx->stats.weight_cut++; /* too faint to matter: not traced */
+    } else if (mirror) {
         ray_t r = {outside, shade_reflect(ray->dir, n)};
         ctx->stats.reflection++;
-        reflected = trace_ray(ctx, &r, NUM_ZERO, depth + 1, NULL, 0);
-        have_reflected = 1;
-        out = rgb_add(out, rgb_scale(reflected, src));
+        reflected = trace_ray(ctx, &r, NUM_ZERO, depth + 1, w_mirror);
+        if (num_gt(src, NUM_ZERO))
+            out = rgb_add(out, rgb_scale(reflected, src));
     }
     if (num_gt(trc, NUM_ZERO)) {
         rgb_t through = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
         vec3_t inside = vec3_madd(hit->point, n, num_neg(TRACE_EPSILON));
-        if (can_recurse) {
-            num_t eta = entering ? num_recip(m->ior) : m->ior;
-            vec3_t dir;
-            if (shade_refract(ray->dir, n, eta, &dir)) {
-                ray_t r = {inside, dir};
-                ctx->stats.refraction++;
-                through = trace_ray(ctx, &r, NUM_ZERO, depth + 1, NULL, 0);
-            } else { /* total internal reflection: the light stays inside */
-                if (!have_reflected) {
-                    ray_t r = {outside, shade_reflect(ray->dir, n)};
-                    ctx->stats.reflection++;
-                    reflected = trace_ray(ctx, &r, NUM_ZERO, depth + 1, NULL, 0);
-                }
-                through = reflected;
-            }
-        } else if (ctx->options.refractionless) {
+        num_t w_trc = num_mul(weight, trc);
+        if (tir) { /* total internal reflection: the light stays inside */
+            through = reflected;
+        } else if (refracts && !trace_worth(ctx, w_trc)) {
+            ctx->stats.weight_cut++;
+        } else if (refracts) {
+            ray_t r = {inside, refracted_dir};
+            ctx->stats.refraction++;
+            through = trace_ray(ctx, &r, NUM_ZERO, depth + 1, w_trc);
+        } else if (!can_recurse && ctx->options.refractionless) {
             ray_t r = {inside, ray->dir};
             through = trace_straight(ctx, &r);
         }
@@ -403,13 +418,12 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, 
     return out;
 }
 
-static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int depth, const uint16_t *clip,
-                       uint32_t clip_count)
+static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int depth, num_t weight)
 {
     hit_t hit;
-    if (!trace_nearest(ctx, ray, tmin, clip, clip_count, &hit))
+    if (!trace_nearest(ctx, ray, tmin, NULL, 0, &hit))
         return ctx->frame->scene->background;
-    return trace_shade(ctx, ray, &hit, depth);
+    return trace_shade(ctx, ray, &hit, depth, weight);
 }
 
 /* --------------------------------------------------------------- pixels */
@@ -441,7 +455,7 @@ static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const
     int found = trace_nearest(ctx, &ray, NUM_ZERO, clip, clip_count, &hit);
     ctx->stats.primary_box_tests += ctx->stats.box_tests - boxes;
     ctx->stats.primary_prim_tests += ctx->stats.prim_tests - prims;
-    rgb_t c = found ? trace_shade(ctx, &ray, &hit, 0) : f->scene->background;
+    rgb_t c = found ? trace_shade(ctx, &ray, &hit, 0, NUM_ONE) : f->scene->background;
     if (ctx->pixel_lost || rgb_is_sat(c))
         ctx->stats.precision_lost_pixels++;
     rgb8_t out = {num_to_u8(c.r), num_to_u8(c.g), num_to_u8(c.b)};

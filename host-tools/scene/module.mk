@@ -60,7 +60,7 @@ links1_SRCS += $(SCENE_CMD_SRCS)
 links1_LIBS += $(SCENE_CMD_LIBS)
 
 # Image tests: POV-Ray agreement and arithmetic accuracy.
-BOARD_TESTS += tests/images/scenes.sh tests/images/pov.sh tests/images/accuracy.sh \
+BOARD_TESTS += tests/images/scenes.sh tests/images/pov.sh tests/images/accuracy.sh tests/images/adaptive.sh \
 	tests/images/import.sh tests/board/render_import.sh
 
 HOST_TESTS += test_scene_image

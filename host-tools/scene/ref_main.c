@@ -30,7 +30,7 @@ static int ref_usage(FILE *out, int status)
 {
     fprintf(out, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [--arith double|float|soft|"
                  "fixed] [--ppm] [--size WxH] [--frame N | --frames FIRST:LAST]\n"
-                 "  [--no-auto-hierarchy]\n"
+                 "  [--no-auto-hierarchy] [--max-depth D] [--min-weight W]\n"
                  "  (this is the %s build)\n",
             NUM_NAME);
     return status;
@@ -115,7 +115,8 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     else
         fprintf(stderr,
                 "links1 ref (%s): %s frame %ld, %dx%d -> %s; rays: %llu primary, %llu "
-                "shadow, %llu reflection, %llu refraction, %llu transmission; "
+                "shadow, %llu reflection, %llu refraction, %llu transmission, %llu cut by "
+                "weight; "
                 "%u pixels lost precision; %llu box tests, %llu primitive tests; traced in "
                 "%.3f s\n",
                 NUM_NAME, in, frame, img.width, img.height, out,
@@ -123,6 +124,7 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
                 (unsigned long long)ctx.stats.reflection,
                 (unsigned long long)ctx.stats.refraction,
                 (unsigned long long)ctx.stats.transmission,
+                (unsigned long long)ctx.stats.weight_cut,
                 (unsigned)ctx.stats.precision_lost_pixels,
                 (unsigned long long)ctx.stats.box_tests, (unsigned long long)ctx.stats.prim_tests,
                 secs);
@@ -162,6 +164,14 @@ static int ref_parse(int argc, char **argv, struct ref_args *a)
             break;
         case REF_OPT_NO_AUTO_HIERARCHY:
             a->scene.no_auto_hierarchy = 1;
+            break;
+        case REF_OPT_MAX_DEPTH:
+            if (cli_int(&c, 0, SCN_MAX_DEPTH, &a->scene.max_depth) < 0)
+                return -1;
+            break;
+        case REF_OPT_MIN_WEIGHT:
+            if (cli_double(&c, 0, 0, 1, NULL, &a->scene.min_weight) < 0)
+                return -1;
             break;
         case REF_OPT_SIZE:
             if (cli_parse_size(c.arg, &a->scene.width, &a->scene.height) != 0)

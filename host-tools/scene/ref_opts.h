@@ -12,6 +12,8 @@ enum ref_opt_code {
     REF_OPT_FRAME,
     REF_OPT_FRAMES,
     REF_OPT_NO_AUTO_HIERARCHY,
+    REF_OPT_MAX_DEPTH,
+    REF_OPT_MIN_WEIGHT,
     REF_OPT_ARITH, /* links1 ref only */
 };
 
@@ -22,6 +24,8 @@ enum ref_opt_code {
     {"frame", required_argument, NULL, REF_OPT_FRAME},    \
     {"frames", required_argument, NULL, REF_OPT_FRAMES},  \
     {"no-auto-hierarchy", no_argument, NULL, REF_OPT_NO_AUTO_HIERARCHY}, \
+    {"max-depth", required_argument, NULL, REF_OPT_MAX_DEPTH}, \
+    {"min-weight", required_argument, NULL, REF_OPT_MIN_WEIGHT}, \
     {"help", no_argument, NULL, 'h'}
 
 #endif

@@ -152,6 +152,10 @@ static void parse_options(struct parser *p)
             lex_next(&p->lx);
             v->max_depth = lex_int(&p->lx, "max_depth", 0, SCN_MAX_DEPTH);
             continue;
+        } else if (lex_is_word(&p->lx, "min_weight")) {
+            lex_next(&p->lx);
+            v->min_weight = lex_number_in(&p->lx, "min_weight", 0, 1);
+            continue;
         } else if (lex_is_word(&p->lx, "refractionless")) {
             bit = SCN_OPT_REFRACTIONLESS;
         } else if (lex_is_word(&p->lx, "bounds")) {
@@ -379,6 +383,7 @@ void sd_view_defaults(struct sd_view *v)
     v->width = PARSE_DEFAULT_WIDTH;
     v->height = PARSE_DEFAULT_HEIGHT;
     v->max_depth = PARSE_DEFAULT_DEPTH;
+    v->min_weight = SCN_DEFAULT_MIN_WEIGHT;
     v->flags = SCN_OPT_REFRACTIONLESS;
     v->frames = 1;
 }
