@@ -127,7 +127,9 @@ enum scn_section {
 #define SCN_OPT_NO_BOUNDS 0x0002u
 #define SCN_OPT_NO_HIERARCHY 0x0004u
 #define SCN_OPT_NO_SHADOWS 0x0008u
-#define SCN_OPT_KNOWN 0x000fu
+#define SCN_OPT_MARK_LOST 0x0010u /* pixels that lost precision painted
+                                     RENDER_LOST_COLOUR (--mark-lost) */
+#define SCN_OPT_KNOWN 0x001fu
 
 /* ------------------------------------------------------- LIGHTS record */
 #define SCN_LIGHT_SIZE 48

@@ -183,6 +183,8 @@ typedef struct {
     uint8_t use_bounds;     /* 1: test bounding boxes before contents */
     uint8_t use_hierarchy;  /* 1: walk the cluster tree; 0: flat list */
     uint8_t shadows;        /* 1: shadow rays; 0: every light unshadowed */
+    uint8_t mark_lost;      /* 1: a pixel that lost precision is painted
+                               RENDER_LOST_COLOUR instead */
     num_t min_weight;       /* adaptive depth, 0..1: a reflected or refracted
                                ray whose weight (the product of src and trc
                                along its path) falls below it is not traced;

@@ -275,6 +275,7 @@ static scene_load_status_t load_view(struct load *L, scene_t *s)
     s->options.use_bounds = (flags & SCN_OPT_NO_BOUNDS) == 0;
     s->options.use_hierarchy = (flags & SCN_OPT_NO_HIERARCHY) == 0;
     s->options.shadows = (flags & SCN_OPT_NO_SHADOWS) == 0;
+    s->options.mark_lost = (flags & SCN_OPT_MARK_LOST) != 0;
     /* eye == look_at and up parallel to the view are refused by
      * render_prepare (RENDER_ERR_CAMERA), which does that geometry anyway. */
     return SCENE_LOAD_OK;

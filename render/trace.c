@@ -108,6 +108,8 @@ static void trace_test_prim(trace_walk_t *w, uint32_t prim)
     w->ctx->stats.prim_tests++;
     if (!prim_intersect(p, w->ray, w->tmin, tmax, &t))
         return;
+    if (p->imprecise && w->mode != TRACE_NEAREST)
+        w->ctx->pixel_lost = 1; /* a shadow or straight ray crossed it */
     if (w->mode != TRACE_NEAREST) {
         trace_record(w, prim, t);
         return;
@@ -221,7 +223,7 @@ static int trace_nearest(render_ctx_t *ctx, const ray_t *ray, num_t tmin, const 
     hit->t = w.nearest.t;
     hit->prim = w.nearest.prim;
     prim_surface(&ctx->frame->prims[hit->prim], ray, hit);
-    if (vec3_is_sat(hit->normal) || vec3_is_sat(hit->point))
+    if (vec3_is_sat(hit->normal) || vec3_is_sat(hit->point) || ctx->frame->prims[hit->prim].imprecise)
         ctx->pixel_lost = 1;
     return 1;
 }
@@ -446,7 +448,7 @@ static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const
     ray_t ray;
     ray.origin = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     ray.dir = vec3_normalize(vec3_make(num_mul(sx, f->screen_half_w), num_mul(sy, f->screen_half_h), NUM_ONE));
-    ctx->pixel_lost = 0;
+    ctx->pixel_lost = f->precision_lost; /* preparing lost it: every pixel */
     ctx->stats.primary++;
     /* trace_ray at depth 0, split so the camera ray's own search is
      * counted apart from the secondary rays of its shading */
@@ -456,8 +458,11 @@ static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const
     ctx->stats.primary_box_tests += ctx->stats.box_tests - boxes;
     ctx->stats.primary_prim_tests += ctx->stats.prim_tests - prims;
     rgb_t c = found ? trace_shade(ctx, &ray, &hit, 0, NUM_ONE) : f->scene->background;
-    if (ctx->pixel_lost || rgb_is_sat(c))
+    if (ctx->pixel_lost || rgb_is_sat(c)) {
         ctx->stats.precision_lost_pixels++;
+        if (ctx->options.mark_lost)
+            return RENDER_LOST_COLOUR;
+    }
     rgb8_t out = {num_to_u8(c.r), num_to_u8(c.g), num_to_u8(c.b)};
     return out;
 }

@@ -67,7 +67,7 @@ HOST_TESTS += test_scene_image
 test_scene_image_SRCS := tests/host/test_scene_image.c host-tools/scene/image_io.c \
 	host-tools/scene/image_compare.c host-tools/cli_opt.c
 test_scene_image_ARITH := double
-test_scene_image_LIBS := -lpng
+test_scene_image_LIBS := -lpng -lm
 
 # The loader once more in the other two arithmetics it runs in on the board.
 HOST_TESTS += test_scene_load_float test_scene_load_fixed

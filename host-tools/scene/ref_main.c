@@ -20,6 +20,7 @@
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_file.h"
 #include "host-tools/scene/ref_opts.h"
+#include "render/precision.h"
 #include "render/render.h"
 #include "render/scene_load.h"
 
@@ -31,6 +32,7 @@ static int ref_usage(FILE *out, int status)
     fprintf(out, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [--arith double|float|soft|"
                  "fixed] [--ppm] [--size WxH] [--frame N | --frames FIRST:LAST]\n"
                  "  [--no-auto-hierarchy] [--max-depth D] [--min-weight W]\n"
+                 "  [--mark-lost]  (paint pixels that lost precision magenta)\n"
                  "  (this is the %s build)\n",
             NUM_NAME);
     return status;
@@ -61,6 +63,12 @@ static int ref_load(const char *in, const uint8_t *bytes, size_t len, void **mem
         render_status_t rs = render_prepare(scene, 0, arena, &frame);
         if (rs == RENDER_ERR_ARENA)
             continue;
+        if (rs == RENDER_ERR_EXTENT) {
+            char why[256];
+            precision_extent_message(frame, why, sizeof why);
+            fprintf(stderr, "links1 ref: %s: %s\n", in, why);
+            return -1;
+        }
         if (rs != RENDER_OK) {
             fprintf(stderr, "links1 ref: %s: %s\n", in, render_status_name(rs));
             return -1;
@@ -164,6 +172,9 @@ static int ref_parse(int argc, char **argv, struct ref_args *a)
             break;
         case REF_OPT_NO_AUTO_HIERARCHY:
             a->scene.no_auto_hierarchy = 1;
+            break;
+        case REF_OPT_MARK_LOST:
+            a->scene.mark_lost = 1;
             break;
         case REF_OPT_MAX_DEPTH:
             if (cli_int(&c, 0, SCN_MAX_DEPTH, &a->scene.max_depth) < 0)

@@ -15,6 +15,7 @@ void scene_file_opts_init(struct scene_file_opts *o)
     o->min_weight = -1;
     o->refractionless = -1;
     o->no_auto_hierarchy = 0;
+    o->mark_lost = 0;
 }
 
 int scene_file_ends_with(const char *s, const char *suffix)
@@ -39,6 +40,8 @@ static int scene_file_compile(const char *path, const struct scene_file_opts *o,
         s.view.min_weight = o->min_weight;
     if (o->no_auto_hierarchy)
         s.no_auto_hierarchy = 1;
+    if (o->mark_lost)
+        s.view.flags |= SCN_OPT_MARK_LOST;
     if (o->refractionless >= 0)
         s.view.flags = o->refractionless ? s.view.flags | SCN_OPT_REFRACTIONLESS
                                          : s.view.flags & ~SCN_OPT_REFRACTIONLESS;
@@ -84,7 +87,8 @@ int scene_file_bytes(const char *path, const struct scene_file_opts *o, uint8_t 
     const char *change = o->width ? "--size" : o->max_depth >= 0 ? "--max-depth"
                          : o->min_weight >= 0 ? "--min-weight"
                          : o->refractionless >= 0 ? "--refractionless"
-                         : o->no_auto_hierarchy ? "--no-auto-hierarchy" : NULL;
+                         : o->no_auto_hierarchy ? "--no-auto-hierarchy"
+                         : o->mark_lost ? "--mark-lost" : NULL;
     if (change) {
         snprintf(err, errlen, "%s: %s needs a text scene, not a compiled one", path, change);
         return -1;

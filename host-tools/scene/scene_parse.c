@@ -164,6 +164,8 @@ static void parse_options(struct parser *p)
             bit = SCN_OPT_NO_HIERARCHY, inverted = 1;
         } else if (lex_is_word(&p->lx, "shadows")) {
             bit = SCN_OPT_NO_SHADOWS, inverted = 1;
+        } else if (lex_is_word(&p->lx, "mark_lost")) {
+            bit = SCN_OPT_MARK_LOST;
         } else if (lex_is_word(&p->lx, "auto_hierarchy")) { /* compiler only */
             lex_next(&p->lx);
             p->s->no_auto_hierarchy = !parse_on_off(p, "auto_hierarchy");
