@@ -5,9 +5,10 @@
 set -eu
 need_pkgs=(make gcc libc6-dev libpng-dev gcc-arm-none-eabi picolibc-arm-none-eabi
            libnewlib-arm-none-eabi qemu-system-arm povray python3 libassimp-dev
-           clang libclang-rt-dev)
+           clang libclang-rt-dev gnuplot-nox)
 # clang: the fuzz harnesses (tests/fuzz/); libclang-rt-dev holds libFuzzer's
 # and the sanitizers' runtimes, which clang only recommends.
+# gnuplot-nox: the charts of make sweeps and make figures (PNG).
 missing=()
 for p in "${need_pkgs[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" ||

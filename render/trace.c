@@ -232,16 +232,22 @@ static int trace_nearest(render_ctx_t *ctx, const ray_t *ray, num_t tmin, const 
 
 /* Colour F at the hit (material colour times colour map) and the shading
  * normal (bump map applied). */
-static void trace_surface_look(const render_ctx_t *ctx, const hit_t *hit, const scene_material_t *m,
+static void trace_surface_look(render_ctx_t *ctx, const hit_t *hit, const scene_material_t *m,
                                rgb_t *colour, vec3_t *normal)
 {
     const scene_t *s = ctx->frame->scene;
     *colour = m->colour;
-    if (m->colour_map != SCENE_NONE)
+    if (m->colour_map != SCENE_NONE) {
         *colour = rgb_mul(*colour, map_colour(&s->maps[m->colour_map], hit->u, hit->v));
+        if (map_imprecise(&s->maps[m->colour_map]))
+            ctx->pixel_lost = 1;
+    }
     *normal = hit->normal;
-    if (m->bump_map != SCENE_NONE)
+    if (m->bump_map != SCENE_NONE) {
         *normal = map_bump(&s->maps[m->bump_map], hit->u, hit->v, hit->normal, hit->tangent);
+        if (map_imprecise(&s->maps[m->bump_map]))
+            ctx->pixel_lost = 1;
+    }
 }
 
 /* Fraction of light i that reaches origin along dir over distance:
