@@ -20,7 +20,9 @@
 
 /* Density-sphere root finder: fixed iteration counts keep every build and
  * every core on exactly the same path. */
+#ifndef RENDER_DENSITY_SAMPLES /* overridable to measure (tests/sweeps/pareto.sh) */
 #define RENDER_DENSITY_SAMPLES 24     /* march steps to bracket a root */
+#endif
 #define RENDER_DENSITY_BISECTIONS 24  /* bisection steps once bracketed */
 
 

@@ -68,6 +68,10 @@ static num_t precision_hit_error(const render_prim_t *p, num_t extent, num_t *le
             return NUM_FAR;
         num_t steps = num_add(num_add(num_ulp(row[0]), num_ulp(row[1])), num_ulp(row[2]));
         num_t local = num_add(num_mul(len, extent), num_abs(row[3]));
+        if (num_is_sat(num_mul_int(local, 2))) /* local coordinates near the
+                                                   range: the primitive test
+                                                   saturates and misses */
+            return NUM_FAR;
         num_t err = num_add(num_mul(steps, extent), num_add(num_ulp(row[3]), num_ulp(local)));
         err = num_div(num_mul(err, NUM_HALF), len);
         if (num_is_sat(err))

@@ -111,7 +111,7 @@ for entry in "${families[@]}"; do
                     'BEGIN { printf "%.4f", u * (t - l) / t }')
                 inner=$("$LINKS1" compare "$same" "$marked" --within 2 --min-fraction 0 --flagged \
                     --silhouette 2>&1 | sed -nE 's/.*on every channel: ([0-9.]+)% .*/\1/p')
-                inner=$(awk -v w="${inner:-0}" 'BEGIN { printf "%.4f", 100 - w }')
+                inner=$(awk -v w="$inner" 'BEGIN { if (w == "") print "-"; else printf "%.4f", 100 - w }')
             fi
             printf '%s\t%s\t%s\tok\t%s\t%s\t%s\t%s\t%s\t%s\n' "$family" "$knob" "$arith" "$b1" "$b2" \
                 "$psnr" "${lost:-0}" "$unflagged" "$inner" >>"$tsv"
