@@ -11,3 +11,9 @@ sweeps: deps
 	$(Q)mkdir -p docs/figures && cp $(B)/sweeps/sweep-*.png docs/figures/ && \
 		cp $(B)/sweeps/breaks.md docs/figures/sweep-breaks.md && \
 		cp $(B)/sweeps/sweep.tsv docs/figures/sweep.tsv
+
+# make figures: the Pareto chart of speed against accuracy (pareto.sh).
+figures: deps
+	$(Q)$(MAKE) $(JOBS) --no-print-directory all
+	$(Q)bash tests/sweeps/pareto.sh --out $(B)/pareto
+	$(Q)mkdir -p docs/figures && cp $(B)/pareto/pareto.png $(B)/pareto/pareto.tsv docs/figures/
