@@ -106,10 +106,13 @@ static void trace_test_prim(trace_walk_t *w, uint32_t prim)
     num_t tmax = w->mode == TRACE_NEAREST && w->nearest.found ? w->nearest.t : w->tmax;
     num_t t;
     w->ctx->stats.prim_tests++;
+    /* an imprecise primitive may be missed wrongly: a ray that meets its
+     * box (whatever was found before: the same in every traversal mode)
+     * loses precision */
+    if (p->imprecise && prim_aabb_hit(&p->bounds, w->ray, w->tmin, w->tmax))
+        w->ctx->pixel_lost = 1;
     if (!prim_intersect(p, w->ray, w->tmin, tmax, &t))
         return;
-    if (p->imprecise && w->mode != TRACE_NEAREST)
-        w->ctx->pixel_lost = 1; /* a shadow or straight ray crossed it */
     if (w->mode != TRACE_NEAREST) {
         trace_record(w, prim, t);
         return;
