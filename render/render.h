@@ -134,8 +134,6 @@ typedef struct {
     uint64_t reflection;
     uint64_t refraction;
     uint64_t transmission;  /* straight refractionless rays past max depth */
-    uint64_t weight_cut;    /* reflected or refracted rays not traced: their
-                               weight fell below min_weight (adaptive depth) */
     uint64_t box_tests;     /* bounding-box tests */
     uint64_t prim_tests;    /* primitive intersection tests */
     uint64_t primary_box_tests;  /* the part of box_tests made by camera
@@ -146,6 +144,9 @@ typedef struct {
                                        a hit distance or a colour, whose frame
                                        lost precision in preparing, or whose
                                        rays met an imprecise primitive */
+    uint64_t weight_cut;    /* reflected or refracted rays not traced: their
+                               weight fell below min_weight (adaptive depth);
+                               host only, not summed over the serial lines */
 } render_stats_t;
 
 typedef struct {
