@@ -68,6 +68,9 @@ _Static_assert(4 * NUM_COORD_LIMIT < NUM_INT_MAX, "NUM_FAR must fit the fixed fo
     ((num_t)((x) >= 0 ? (x) * (double)NUM_ONE_RAW + 0.5                       \
                       : (x) * (double)NUM_ONE_RAW - 0.5))
 #define NUM_EPSILON ((num_t)1) /* one step */
+/* Spacing of representable values near a: half of it is the most one
+ * rounding changes a result (error estimates, render/prepare.c). */
+static inline num_t num_ulp(num_t a) { (void)a; return NUM_EPSILON; }
 
 static inline int num_is_sat(num_t a) { return a == NUM_RAW_SAT || a == -NUM_RAW_SAT; }
 
@@ -198,17 +201,22 @@ typedef double num_t;
 #define NUM_NAME "double"
 #define NUM_C(x) ((num_t)(x))
 #define NUM_EPSILON ((num_t)1e-12)
+#define NUM__REL_STEP 0x1p-52 /* spacing relative to the value */
 static inline num_t num_sqrt(num_t a) { return a > 0 ? __builtin_sqrt(a) : 0; }
 #else
 typedef float num_t;
 #define NUM_NAME "float"
 #define NUM_C(x) ((num_t)(x))
 #define NUM_EPSILON ((num_t)1e-6f)
+#define NUM__REL_STEP 0x1p-23f
 static inline num_t num_sqrt(num_t a) { return a > 0 ? __builtin_sqrtf(a) : 0; }
 #endif
 
 /* Not finite: an overflow, a division by zero or an invalid operation. */
 static inline int num_is_sat(num_t a) { return !(a - a == 0); }
+
+/* Spacing of representable values near a (at most; normal numbers). */
+static inline num_t num_ulp(num_t a) { return (a < 0 ? -a : a) * NUM__REL_STEP; }
 
 static inline num_t num_add(num_t a, num_t b) { return a + b; }
 static inline num_t num_sub(num_t a, num_t b) { return a - b; }

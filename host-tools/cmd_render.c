@@ -80,6 +80,9 @@ static void render_usage(FILE *out)
             "  --max-depth D    --refractionless on|off\n"
             "                   override the scene's recursion depth / transmission past it\n"
             "  --refraction on|off  off: transmitted rays never bend, at any depth\n"
+            "  --min-weight W   adaptive depth: rays whose weight (product of src and trc)\n"
+            "                   falls below W are not traced (0..1; scenes default 1/512)\n"
+            "  --mark-lost      paint pixels that lost precision magenta (text scenes)\n"
             "  --no-yclip --no-xclip --no-bbox --no-hierarchy\n"
             "                   switch a speed-up off (the image stays the same)\n"
             "  --no-auto-hierarchy  compile without the automatic hierarchy (text scenes)\n"
@@ -113,6 +116,8 @@ enum render_opt_code {
     RENDER_OPT_FRAMES,
     RENDER_OPT_SIZE,
     RENDER_OPT_MAX_DEPTH,
+    RENDER_OPT_MIN_WEIGHT,
+    RENDER_OPT_MARK_LOST,
     RENDER_OPT_REFRACTIONLESS,
     RENDER_OPT_REFRACTION,
     RENDER_OPT_NO_YCLIP,
@@ -141,6 +146,8 @@ static const struct option render_options[] = {
     {"frames", required_argument, NULL, RENDER_OPT_FRAMES},
     {"size", required_argument, NULL, RENDER_OPT_SIZE},
     {"max-depth", required_argument, NULL, RENDER_OPT_MAX_DEPTH},
+    {"min-weight", required_argument, NULL, RENDER_OPT_MIN_WEIGHT},
+    {"mark-lost", no_argument, NULL, RENDER_OPT_MARK_LOST},
     {"refractionless", required_argument, NULL, RENDER_OPT_REFRACTIONLESS},
     {"refraction", required_argument, NULL, RENDER_OPT_REFRACTION},
     {"no-yclip", no_argument, NULL, RENDER_OPT_NO_YCLIP},
@@ -220,6 +227,11 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
         return 0;
     case RENDER_OPT_MAX_DEPTH:
         return cli_int(c, 0, SCN_MAX_DEPTH, &o->scene.max_depth);
+    case RENDER_OPT_MIN_WEIGHT:
+        return cli_double(c, 0, 0, 1, NULL, &o->scene.min_weight);
+    case RENDER_OPT_MARK_LOST:
+        o->scene.mark_lost = 1;
+        return 0;
     case RENDER_OPT_REFRACTIONLESS:
         if (strcmp(c->arg, "on") != 0 && strcmp(c->arg, "off") != 0)
             return cli_bad_value(c, "on or off");

@@ -6,7 +6,7 @@ set -eu
 need_pkgs=(make gcc libc6-dev libpng-dev gcc-arm-none-eabi picolibc-arm-none-eabi
            libnewlib-arm-none-eabi qemu-system-arm povray python3 libassimp-dev
            clang libclang-rt-dev gdb-multiarch gnuplot-nox)
-# gnuplot-nox: the charts of `make figures` (tests/bench/figures.sh), PNG without X.
+# gnuplot-nox: the charts of `make figures` and `make sweeps`, PNG without X.
 # clang: the fuzz harnesses (tests/fuzz/); libclang-rt-dev holds libFuzzer's
 # and the sanitizers' runtimes, which clang only recommends.  gdb-multiarch:
 # `make gdb`.

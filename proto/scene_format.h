@@ -72,7 +72,7 @@
 #define SCN_MAGIC_1 '1'
 #define SCN_MAGIC_2 'S'
 #define SCN_MAGIC_3 'C'
-#define SCN_VERSION 2 /* 2: 32-bit cluster indices */
+#define SCN_VERSION 3 /* 2: 32-bit cluster indices; 3: VIEW carries min_weight */
 #define SCN_HEADER_SIZE 16
 #define SCN_HDR_MAGIC 0
 #define SCN_HDR_VERSION 4
@@ -105,7 +105,7 @@ enum scn_section {
  * tangent or quaternion the renderer needs by the host compiler. */
 
 /* --------------------------------------------------------- VIEW record */
-#define SCN_VIEW_SIZE 64
+#define SCN_VIEW_SIZE 68
 #define SCN_VIEW_EYE 0          /* 3 x f32 */
 #define SCN_VIEW_LOOK_AT 12     /* 3 x f32, != eye */
 #define SCN_VIEW_UP 24          /* 3 x f32, not parallel to look_at - eye */
@@ -116,7 +116,11 @@ enum scn_section {
 #define SCN_VIEW_MAX_DEPTH 56   /* u16: 0..SCN_MAX_DEPTH */
 #define SCN_VIEW_FLAGS 58       /* u16: SCN_OPT_* */
 #define SCN_VIEW_FRAMES 60      /* u32: frames of the animation, 1 = still */
+#define SCN_VIEW_MIN_WEIGHT 64  /* f32 0..1: adaptive depth; a ray whose weight
+                                   (product of src and trc along its path) falls
+                                   below it is not traced; 0 = depth limit only */
 #define SCN_MAX_TAN_HALF_FOV 100.0f
+#define SCN_DEFAULT_MIN_WEIGHT (1.0 / 512) /* text form's default (Hall and Greenberg 1983) */
 
 /* Render options.  REFRACTIONLESS: past max_depth, transmission continues
  * along the straight ray (the paper's 4.5).  NO_REFRACTION: transmission
@@ -128,7 +132,9 @@ enum scn_section {
 #define SCN_OPT_NO_HIERARCHY 0x0004u
 #define SCN_OPT_NO_SHADOWS 0x0008u
 #define SCN_OPT_NO_REFRACTION 0x0010u
-#define SCN_OPT_KNOWN 0x001fu
+#define SCN_OPT_MARK_LOST 0x0020u /* pixels that lost precision painted
+                                     RENDER_LOST_COLOUR (--mark-lost) */
+#define SCN_OPT_KNOWN 0x003fu
 
 /* ------------------------------------------------------- LIGHTS record */
 #define SCN_LIGHT_SIZE 48

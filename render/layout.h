@@ -32,7 +32,7 @@ typedef struct {
 } render_layout_t;
 
 /* The board's record sizes, in the order of render_layout_t. */
-#define RENDER_BOARD_BLOB 148
+#define RENDER_BOARD_BLOB 152
 #define RENDER_BOARD_LIGHT 48
 #define RENDER_BOARD_MATERIAL 44
 #define RENDER_BOARD_MAP 24
@@ -40,9 +40,9 @@ typedef struct {
 #define RENDER_BOARD_PRIM 68
 #define RENDER_BOARD_COMPONENT 20
 #define RENDER_BOARD_KEY 44
-#define RENDER_BOARD_FRAME 544
+#define RENDER_BOARD_FRAME 552
 #define RENDER_BOARD_FRAME_CLUSTER 80
-#define RENDER_BOARD_FRAME_PRIM 200
+#define RENDER_BOARD_FRAME_PRIM 204
 #define RENDER_BOARD_NUM 4
 #define RENDER_BOARD_XFORM 48
 

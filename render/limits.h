@@ -20,7 +20,9 @@
 
 /* Density-sphere root finder: fixed iteration counts keep every build and
  * every core on exactly the same path. */
+#ifndef RENDER_DENSITY_SAMPLES /* overridable to measure (tests/sweeps/pareto.sh) */
 #define RENDER_DENSITY_SAMPLES 24     /* march steps to bracket a root */
+#endif
 #define RENDER_DENSITY_BISECTIONS 24  /* bisection steps once bracketed */
 
 
@@ -49,4 +51,17 @@
 #define RENDER_NEAR_PLANE_VALUE 1e-2    /* boxes reaching nearer than this to
                                            the eye plane project to the whole
                                            screen */
+
+/* Precision (docs/renderer.md, "Precision never fails silently"). */
+#define RENDER_MIN_SPAN_VALUE 1.0       /* a scene spans at least this: 500 ray
+                                           offsets; smaller scenes are refused
+                                           (RENDER_ERR_EXTENT) */
+#define RENDER_INVERSE_TOLERANCE_VALUE 1e-3 /* |M * M^-1 - I| of a cluster map
+                                           beyond this: RENDER_ERR_SCALE */
+#define RENDER_MAP_TEXEL_TOLERANCE_VALUE (1.0 / 32) /* map lookups: render/maps.h */
+#define RENDER_LOST_TOLERANCE_VALUE 5e-2 /* a primitive whose estimated hit
+                                           point error exceeds this, in scene
+                                           units, is imprecise; so is one whose
+                                           error across its flattest side
+                                           exceeds half the ray offset */
 #endif

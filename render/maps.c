@@ -66,3 +66,12 @@ vec3_t map_bump(const scene_map_t *m, num_t u, num_t v, vec3_t n, vec3_t tangent
     vec3_t tilt = vec3_add(vec3_scale(tangent, su), vec3_scale(b, sv));
     return vec3_normalize(vec3_sub(n, vec3_scale(tilt, m->bump_depth)));
 }
+
+int map_imprecise(const scene_map_t *m)
+{
+    num_t step = num_mul_int(num_ulp(NUM_ONE), 8);
+    num_t side = num_from_int(m->width > m->height ? m->width : m->height);
+    num_t repeat = num_max(m->repeat_u, m->repeat_v);
+    num_t texels = num_mul(num_mul(step, repeat), side);
+    return num_is_sat(texels) || num_gt(texels, NUM_C(RENDER_MAP_TEXEL_TOLERANCE_VALUE));
+}

@@ -4,6 +4,12 @@
 
 #include "render/render.h"
 
+/* 1 when rounding of a map coordinate (about 8 steps of the arithmetic at
+ * 1), times the repeats and the map's size, can move a lookup by more than
+ * RENDER_MAP_TEXEL_TOLERANCE_VALUE texels: a pixel that uses it counts as
+ * lost precision. */
+int map_imprecise(const scene_map_t *m);
+
 /* Bilinear colour at (u, v), repeated repeat_u x repeat_v times over [0,1). */
 rgb_t map_colour(const scene_map_t *m, num_t u, num_t v);
 

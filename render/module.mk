@@ -1,7 +1,7 @@
 # render/: the ray tracer, built for every arithmetic; it knows nothing of
 # cores, drivers or messages.
 SHARED_SRCS += render/arena.c render/xform.c render/prim.c render/prepare.c \
-	render/shade.c render/maps.c render/trace.c
+	render/shade.c render/maps.c render/trace.c render/precision.c
 
 # Renderer tests, once per arithmetic.
 HOST_TESTS += test_prim_double test_prim_float test_prim_fixed

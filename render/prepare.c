@@ -6,6 +6,7 @@
  * primitives by cluster.  Inverse maps are composed from the inverses of
  * each level (rather than inverting the composed map) to keep precision.
  */
+#include "render/precision.h"
 #include "render/prim.h"
 #include "render/vec3.h"
 
@@ -30,6 +31,8 @@ const char *render_status_name(render_status_t status)
     case RENDER_ERR_SINGULAR: return "a cluster transform cannot be inverted";
     case RENDER_ERR_RELOCATE: return "a pointer of the blob lies outside it (not self-contained), or a bad base";
     case RENDER_ERR_AREA: return "area empty or not inside the screen";
+    case RENDER_ERR_EXTENT: return "the scene spans less than 1 unit (RENDER_MIN_SPAN_VALUE, 500 times the ray offset of 0.002): its detail is below what the renderer resolves; scale it up";
+    case RENDER_ERR_SCALE: return "a cluster transform scales beyond what the arithmetic can invert (it is not exactly singular: scale the scene instead of the cluster, or use another arithmetic)";
     }
     return "unknown render status";
 }
@@ -448,6 +451,8 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     st = prep_camera(s, &world_to_eye, &eye_to_world);
     if (st != RENDER_OK)
         return st;
+    if (xform_is_sat(&world_to_eye) || xform_is_sat(&eye_to_world))
+        f->precision_lost = 1;
     for (uint32_t i = 0; i < s->cluster_count; i++) {
         const scene_cluster_t *c = &s->clusters[i];
         if (i > 0 && prep_is_plain(c)) { /* e.g. a node of the automatic
@@ -463,8 +468,11 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
         }
         xform_t key = prep_key_xform(s, c, frame_index);
         xform_t key_inv, local_inv;
-        if (!xform_invert(&key, &key_inv) || !xform_invert(&c->local, &local_inv))
-            return RENDER_ERR_SINGULAR;
+        st = precision_invert(&key, &key_inv);
+        if (st == RENDER_OK)
+            st = precision_invert(&c->local, &local_inv);
+        if (st != RENDER_OK)
+            return st;
         xform_t to_parent = xform_compose(&key, &c->local);
         xform_t from_parent = xform_compose(&local_inv, &key_inv);
         const xform_t *parent_to_eye = i == 0 ? &world_to_eye : &to_eye[c->parent];
@@ -503,5 +511,5 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     }
     prep_lights(s, &world_to_eye, f);
     *out = f;
-    return RENDER_OK;
+    return precision_check(f);
 }

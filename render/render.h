@@ -37,6 +37,9 @@ typedef struct {
     uint8_t r, g, b;
 } rgb8_t;
 
+/* The warning colour of options.mark_lost: magenta. */
+#define RENDER_LOST_COLOUR ((rgb8_t){255, 0, 255})
+
 /* Axis-aligned box; empty when lo.x > hi.x. */
 typedef struct {
     vec3_t lo, hi;
@@ -81,6 +84,10 @@ typedef struct {
                                   DENSITY */
     uint16_t component_count;
     num_t threshold;
+    uint8_t imprecise;   /* 1: render_prepare estimates that rounding in its
+                            to_local map can move a hit point by more than
+                            RENDER_LOST_TOLERANCE_VALUE: pixels that see it
+                            count as lost precision */
 } render_prim_t;
 
 /* A cluster in eye coordinates. */
@@ -116,8 +123,10 @@ typedef struct {
     uint32_t *prim_list;           /* reloc; prim indices, grouped by cluster */
     num_t *density_inv_radius2;    /* reloc; 1/d^2 per scene density component:
                                       the field then needs no division */
-    uint8_t precision_lost;        /* 1 if preparing hit a fixed-point
-                                      saturation (boxes are then unreliable) */
+    uint8_t precision_lost;        /* 1 if preparing hit a saturation (camera,
+                                      cluster maps, boxes): every pixel then
+                                      counts as lost precision */
+    num_t span;                    /* largest side of the scene's eye-space box */
 } render_frame_t;
 
 typedef struct {
@@ -133,7 +142,12 @@ typedef struct {
     uint64_t primary_prim_tests; /* the part of prim_tests made by it:
                                     what screen clipping cuts down */
     uint32_t precision_lost_pixels; /* pixels where a saturated value reached
-                                       a hit distance or a colour */
+                                       a hit distance or a colour, whose frame
+                                       lost precision in preparing, or whose
+                                       rays met an imprecise primitive */
+    uint64_t weight_cut;    /* reflected or refracted rays not traced: their
+                               weight fell below min_weight (adaptive depth);
+                               host only, not summed over the serial lines */
 } render_stats_t;
 
 typedef struct {
@@ -164,6 +178,13 @@ typedef enum {
     RENDER_ERR_RELOCATE,     /* a pointer of a blob lies outside the blob
                                 (not self-contained), or a bad base */
     RENDER_ERR_AREA,         /* an area empty or not inside the screen */
+    RENDER_ERR_EXTENT,       /* the scene spans less than RENDER_MIN_SPAN_VALUE:
+                                its detail is finer than the ray offset and
+                                the arithmetic resolve (render_prepare then
+                                still sets *out, for frame->span only) */
+    RENDER_ERR_SCALE,        /* a cluster transform scales so little (or so
+                                much) that the arithmetic cannot invert it
+                                to RENDER_INVERSE_TOLERANCE_VALUE */
 } render_status_t;
 
 /* A constant string naming the status, for error messages. */

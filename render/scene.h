@@ -187,6 +187,12 @@ typedef struct {
     uint8_t refraction;     /* 1: transmitted rays bend (Snell) within
                                max_depth; 0: they never bend, at any depth:
                                transmission goes straight through */
+    uint8_t mark_lost;      /* 1: a pixel that lost precision is painted
+                               RENDER_LOST_COLOUR instead */
+    num_t min_weight;       /* adaptive depth, 0..1: a reflected or refracted
+                               ray whose weight (the product of src and trc
+                               along its path) falls below it is not traced;
+                               0 = max_depth alone decides */
 } render_options_t;
 
 /* The arrays (marked "reloc") are the scene's pointer fields:

@@ -259,6 +259,8 @@ static scene_load_status_t load_view(struct load *L, scene_t *s)
         return load_fail(L, SCENE_LOAD_ERR_VALUE, "camera: field of view out of range");
     if (!load_units(p + SCN_VIEW_BACKGROUND, 3, 1.0f))
         return load_fail(L, SCENE_LOAD_ERR_VALUE, "background colour not within 0..1");
+    if (!load_units(p + SCN_VIEW_MIN_WEIGHT, 1, 1.0f))
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "min_weight not within 0..1");
     s->width = w;
     s->height = h;
     s->frame_count = frames;
@@ -268,11 +270,13 @@ static scene_load_status_t load_view(struct load *L, scene_t *s)
     s->camera.tan_half_fov_y = load_num(p + SCN_VIEW_TAN_HALF_FOV_Y);
     s->background = load_rgb(p + SCN_VIEW_BACKGROUND);
     s->options.max_depth = (uint8_t)depth;
+    s->options.min_weight = load_num(p + SCN_VIEW_MIN_WEIGHT);
     s->options.refractionless = (flags & SCN_OPT_REFRACTIONLESS) != 0;
     s->options.use_bounds = (flags & SCN_OPT_NO_BOUNDS) == 0;
     s->options.use_hierarchy = (flags & SCN_OPT_NO_HIERARCHY) == 0;
     s->options.shadows = (flags & SCN_OPT_NO_SHADOWS) == 0;
     s->options.refraction = (flags & SCN_OPT_NO_REFRACTION) == 0;
+    s->options.mark_lost = (flags & SCN_OPT_MARK_LOST) != 0;
     /* eye == look_at and up parallel to the view are refused by
      * render_prepare (RENDER_ERR_CAMERA), which does that geometry anyway. */
     return SCENE_LOAD_OK;

@@ -106,6 +106,11 @@ static void trace_test_prim(trace_walk_t *w, uint32_t prim)
     num_t tmax = w->mode == TRACE_NEAREST && w->nearest.found ? w->nearest.t : w->tmax;
     num_t t;
     w->ctx->stats.prim_tests++;
+    /* an imprecise primitive may be missed wrongly: a ray that meets its
+     * box (whatever was found before: the same in every traversal mode)
+     * loses precision */
+    if (p->imprecise && prim_aabb_hit(&p->bounds, w->ray, w->tmin, w->tmax))
+        w->ctx->pixel_lost = 1;
     if (!prim_intersect(p, w->ray, w->tmin, tmax, &t))
         return;
     if (w->mode != TRACE_NEAREST) {
@@ -221,7 +226,7 @@ static int trace_nearest(render_ctx_t *ctx, const ray_t *ray, num_t tmin, const 
     hit->t = w.nearest.t;
     hit->prim = w.nearest.prim;
     prim_surface(&ctx->frame->prims[hit->prim], ray, hit);
-    if (vec3_is_sat(hit->normal) || vec3_is_sat(hit->point))
+    if (vec3_is_sat(hit->normal) || vec3_is_sat(hit->point) || ctx->frame->prims[hit->prim].imprecise)
         ctx->pixel_lost = 1;
     return 1;
 }
@@ -230,16 +235,22 @@ static int trace_nearest(render_ctx_t *ctx, const ray_t *ray, num_t tmin, const 
 
 /* Colour F at the hit (material colour times colour map) and the shading
  * normal (bump map applied). */
-static void trace_surface_look(const render_ctx_t *ctx, const hit_t *hit, const scene_material_t *m,
+static void trace_surface_look(render_ctx_t *ctx, const hit_t *hit, const scene_material_t *m,
                                rgb_t *colour, vec3_t *normal)
 {
     const scene_t *s = ctx->frame->scene;
     *colour = m->colour;
-    if (m->colour_map != SCENE_NONE)
+    if (m->colour_map != SCENE_NONE) {
         *colour = rgb_mul(*colour, map_colour(&s->maps[m->colour_map], hit->u, hit->v));
+        if (map_imprecise(&s->maps[m->colour_map]))
+            ctx->pixel_lost = 1;
+    }
     *normal = hit->normal;
-    if (m->bump_map != SCENE_NONE)
+    if (m->bump_map != SCENE_NONE) {
         *normal = map_bump(&s->maps[m->bump_map], hit->u, hit->v, hit->normal, hit->tangent);
+        if (map_imprecise(&s->maps[m->bump_map]))
+            ctx->pixel_lost = 1;
+    }
 }
 
 /* Fraction of light i that reaches origin along dir over distance:
@@ -306,8 +317,7 @@ static rgb_t trace_lights(render_ctx_t *ctx, const hit_t *hit, const scene_mater
     return sum;
 }
 
-static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int depth, const uint32_t *clip,
-                       uint32_t clip_count);
+static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int depth, num_t weight);
 
 /* Refractionless transmission past the depth limit: the straight ray
  * registers every object it crosses (the transmission buffer, nearest
@@ -349,7 +359,17 @@ static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray)
     return rgb_add(sum, rgb_mul(weight, ctx->frame->scene->background));
 }
 
-static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, int depth)
+/* Adaptive depth: a secondary ray of weight w (the product of src and trc
+ * along its path) is traced only while w >= min_weight; min_weight 0 keeps
+ * every ray max_depth allows. */
+static int trace_worth(const render_ctx_t *ctx, num_t weight)
+{
+    return !num_lt(weight, ctx->options.min_weight);
+}
+
+/* weight: the product of src and trc along the path of the ray that made
+ * this hit (1 for a camera ray). */
+static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, int depth, num_t weight)
 {
     const scene_material_t *m = trace_material(ctx, hit->prim);
     rgb_t colour;
@@ -364,38 +384,44 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, 
     rgb_t out = trace_lights(ctx, hit, m, colour, n, ray->dir, src);
 
     int can_recurse = depth < ctx->options.max_depth;
+    /* Where a refracted ray would go, or total internal reflection: then
+     * the mirrored ray carries the transmitted share too, and its weight
+     * is the sum of both. */
+    vec3_t refracted_dir;
+    int refracts = 0, tir = 0;
+    if (num_gt(trc, NUM_ZERO) && can_recurse && ctx->options.refraction) {
+        refracts = shade_refract(ray->dir, n, entering ? num_recip(m->ior) : m->ior, &refracted_dir);
+        tir = !refracts;
+    }
+    num_t w_mirror = num_mul(weight, tir ? num_add(src, trc) : src);
     rgb_t reflected = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
-    int have_reflected = 0;
     vec3_t outside = vec3_madd(hit->point, n, TRACE_EPSILON);
-    if (num_gt(src, NUM_ZERO) && can_recurse) {
+    int mirror = can_recurse && (num_gt(src, NUM_ZERO) || tir);
+    if (mirror && !trace_worth(ctx, w_mirror)) {
+        ctx->stats.weight_cut++; /* too faint to matter: not traced */
+    } else if (mirror) {
         ray_t r = {outside, shade_reflect(ray->dir, n)};
         ctx->stats.reflection++;
-        reflected = trace_ray(ctx, &r, NUM_ZERO, depth + 1, NULL, 0);
-        have_reflected = 1;
-        out = rgb_add(out, rgb_scale(reflected, src));
+        reflected = trace_ray(ctx, &r, NUM_ZERO, depth + 1, w_mirror);
+        if (num_gt(src, NUM_ZERO))
+            out = rgb_add(out, rgb_scale(reflected, src));
     }
     if (num_gt(trc, NUM_ZERO)) {
         rgb_t through = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
         vec3_t inside = vec3_madd(hit->point, n, num_neg(TRACE_EPSILON));
+        num_t w_trc = num_mul(weight, trc);
         if (!ctx->options.refraction) { /* never bends: straight through, any depth */
             ray_t r = {inside, ray->dir};
             through = trace_straight(ctx, &r);
-        } else if (can_recurse) {
-            num_t eta = entering ? num_recip(m->ior) : m->ior;
-            vec3_t dir;
-            if (shade_refract(ray->dir, n, eta, &dir)) {
-                ray_t r = {inside, dir};
-                ctx->stats.refraction++;
-                through = trace_ray(ctx, &r, NUM_ZERO, depth + 1, NULL, 0);
-            } else { /* total internal reflection: the light stays inside */
-                if (!have_reflected) {
-                    ray_t r = {outside, shade_reflect(ray->dir, n)};
-                    ctx->stats.reflection++;
-                    reflected = trace_ray(ctx, &r, NUM_ZERO, depth + 1, NULL, 0);
-                }
-                through = reflected;
-            }
-        } else if (ctx->options.refractionless) {
+        } else if (tir) { /* total internal reflection: the light stays inside */
+            through = reflected;
+        } else if (refracts && !trace_worth(ctx, w_trc)) {
+            ctx->stats.weight_cut++;
+        } else if (refracts) {
+            ray_t r = {inside, refracted_dir};
+            ctx->stats.refraction++;
+            through = trace_ray(ctx, &r, NUM_ZERO, depth + 1, w_trc);
+        } else if (!can_recurse && ctx->options.refractionless) {
             ray_t r = {inside, ray->dir};
             through = trace_straight(ctx, &r);
         }
@@ -406,13 +432,12 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, 
     return out;
 }
 
-static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int depth, const uint32_t *clip,
-                       uint32_t clip_count)
+static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int depth, num_t weight)
 {
     hit_t hit;
-    if (!trace_nearest(ctx, ray, tmin, clip, clip_count, &hit))
+    if (!trace_nearest(ctx, ray, tmin, NULL, 0, &hit))
         return ctx->frame->scene->background;
-    return trace_shade(ctx, ray, &hit, depth);
+    return trace_shade(ctx, ray, &hit, depth, weight);
 }
 
 /* --------------------------------------------------------------- pixels */
@@ -435,7 +460,7 @@ static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const
     ray_t ray;
     ray.origin = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     ray.dir = vec3_normalize(vec3_make(num_mul(sx, f->screen_half_w), num_mul(sy, f->screen_half_h), NUM_ONE));
-    ctx->pixel_lost = 0;
+    ctx->pixel_lost = f->precision_lost; /* preparing lost it: every pixel */
     ctx->stats.primary++;
     /* trace_ray at depth 0, split so the camera ray's own search is
      * counted apart from the secondary rays of its shading */
@@ -444,9 +469,12 @@ static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const
     int found = trace_nearest(ctx, &ray, NUM_ZERO, clip, clip_count, &hit);
     ctx->stats.primary_box_tests += ctx->stats.box_tests - boxes;
     ctx->stats.primary_prim_tests += ctx->stats.prim_tests - prims;
-    rgb_t c = found ? trace_shade(ctx, &ray, &hit, 0) : f->scene->background;
-    if (ctx->pixel_lost || rgb_is_sat(c))
+    rgb_t c = found ? trace_shade(ctx, &ray, &hit, 0, NUM_ONE) : f->scene->background;
+    if (ctx->pixel_lost || rgb_is_sat(c)) {
         ctx->stats.precision_lost_pixels++;
+        if (ctx->options.mark_lost)
+            return RENDER_LOST_COLOUR;
+    }
     rgb8_t out = {num_to_u8(c.r), num_to_u8(c.g), num_to_u8(c.b)};
     return out;
 }

@@ -51,9 +51,12 @@ test_trace_SRCS := tests/host/test_trace.c host-tools/trace_file.c host-tools/re
 test_trace_ARITH := double
 BENCHES += tests/bench/bench_figures.sh
 
-# The paper's figures and tables (tests/bench/figures.sh) into docs/figures.
+# make figures: the paper's figures and tables (tests/bench/figures.sh) and
+# the chart of speed against accuracy (tests/sweeps/pareto.sh) into docs/figures.
 .PHONY: figures
 figures: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all
 	$(Q)FW_DIR=$(FWB) bash tests/bench/figures.sh
+	$(Q)bash tests/sweeps/pareto.sh --out $(B)/pareto
+	$(Q)mkdir -p docs/figures && cp $(B)/pareto/pareto.png $(B)/pareto/pareto.tsv docs/figures/
 BENCHES += tests/bench/bench_wallclock.sh

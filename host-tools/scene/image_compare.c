@@ -7,7 +7,13 @@
  * outlines (and hard shadow outlines) are where two renderers that sample
  * one ray per pixel disagree by a whole pixel's worth of coverage, so the
  * accuracy of the shading is judged away from them.
+ *
+ * Flagged pixels (--flagged): B was rendered with --mark-lost; its pixels
+ * painted RENDER_LOST_COLOUR are counted apart and left out, so "every
+ * other pixel within K" checks that no wrong pixel went unflagged.
+ * Every run prints the PSNR over the compared pixels.
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,6 +21,7 @@
 #include "host-tools/cli_opt.h"
 #include "host-tools/scene/image_io.h"
 #include "host-tools/scene/scene_cmds.h"
+#include "render/render.h"
 
 #define COMPARE_EDGE_STEP 24     /* /255: a jump this large between neighbours is an edge */
 #define COMPARE_HIST_BUCKETS 8   /* differences 0..6 one by one, then "7 or more" */
@@ -39,21 +46,23 @@ static int compare_is_edge(const struct image *a, int x, int y)
 static int compare_usage(FILE *out)
 {
     fprintf(out, "usage: links1 compare A.png B.png [--within K] [--min-fraction F] "
-                    "[--silhouette [--max-masked F]]\n"
+                    "[--silhouette [--max-masked F]] [--flagged]\n"
                     "  exit 0 when at least F (default 0.99) of the compared pixels have every\n"
                     "  channel within K/255 (default 1); --silhouette leaves out the pixels\n"
-                    "  next to an edge of A, and fails if more than F of all pixels are left out\n");
+                    "  next to an edge of A, and fails if more than F of all pixels are left out;\n"
+                    "  --flagged leaves out the pixels of B painted the --mark-lost colour\n");
     return out == stdout ? 0 : 2;
 }
 
 enum { COMPARE_OPT_WITHIN = CLI_OWN_CODES, COMPARE_OPT_MIN_FRACTION, COMPARE_OPT_MAX_MASKED,
-       COMPARE_OPT_SILHOUETTE };
+       COMPARE_OPT_SILHOUETTE, COMPARE_OPT_FLAGGED };
 
 static const struct option compare_options[] = {
     {"within", required_argument, NULL, COMPARE_OPT_WITHIN},
     {"min-fraction", required_argument, NULL, COMPARE_OPT_MIN_FRACTION},
     {"max-masked", required_argument, NULL, COMPARE_OPT_MAX_MASKED},
     {"silhouette", no_argument, NULL, COMPARE_OPT_SILHOUETTE},
+    {"flagged", no_argument, NULL, COMPARE_OPT_FLAGGED},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -61,7 +70,7 @@ static const struct option compare_options[] = {
 int scene_cmd_compare(int argc, char **argv)
 {
     const char *pa = NULL, *pb = NULL;
-    int within = 1, silhouette = 0;
+    int within = 1, silhouette = 0, flagged_out = 0;
     double min_fraction = 0.99, max_masked = 1.0;
     struct cli c;
     cli_init(&c, "links1 compare", argc, argv, "h", compare_options);
@@ -78,6 +87,8 @@ int scene_cmd_compare(int argc, char **argv)
             bad = cli_double(&c, 0, 0, 1, NULL, &max_masked);
         } else if (code == COMPARE_OPT_SILHOUETTE) {
             silhouette = 1;
+        } else if (code == COMPARE_OPT_FLAGGED) {
+            flagged_out = 1;
         } else if (code == CLI_OPERAND && (!pa || !pb)) {
             *(pa ? &pb : &pa) = c.arg;
         } else {
@@ -112,8 +123,10 @@ int scene_cmd_compare(int argc, char **argv)
     }
     long hist[3][COMPARE_HIST_BUCKETS];
     memset(hist, 0, sizeof hist);
-    long compared = 0, masked = 0, good = 0;
+    long compared = 0, masked = 0, good = 0, flagged = 0;
+    double sq = 0;
     int worst = 0;
+    const rgb8_t lost = RENDER_LOST_COLOUR;
     for (int y = 0; y < a.height; y++) {
         for (int x = 0; x < a.width; x++) {
             if (silhouette && compare_is_edge(&a, x, y)) {
@@ -121,9 +134,15 @@ int scene_cmd_compare(int argc, char **argv)
                 continue;
             }
             size_t o = 3 * ((size_t)y * (size_t)a.width + (size_t)x);
+            if (flagged_out && b.rgb[o] == lost.r && b.rgb[o + 1] == lost.g &&
+                b.rgb[o + 2] == lost.b) {
+                flagged++;
+                continue;
+            }
             int ok = 1;
             for (int k = 0; k < 3; k++) {
                 int d = abs((int)a.rgb[o + k] - (int)b.rgb[o + k]);
+                sq += (double)d * d;
                 hist[k][d < COMPARE_HIST_BUCKETS - 1 ? d : COMPARE_HIST_BUCKETS - 1]++;
                 if (d > within)
                     ok = 0;
@@ -149,6 +168,11 @@ int scene_cmd_compare(int argc, char **argv)
     }
     printf("  within %d/255 on every channel: %.4f%% (need %.4f%%), largest difference %d\n",
            within, 100.0 * fraction, 100.0 * min_fraction, worst);
+    double mse = compared ? sq / (3.0 * (double)compared) : 0;
+    printf("  PSNR %.2f dB (99 = identical)%s", mse > 0 ? 10.0 * log10(255.0 * 255.0 / mse) : 99.0,
+           flagged_out ? "" : "\n");
+    if (flagged_out)
+        printf("; %ld pixels flagged (the --mark-lost colour in B), left out\n", flagged);
     double masked_fraction = (double)masked / ((double)a.width * (double)a.height);
     if (masked_fraction > max_masked)
         printf("  too many pixels masked: %.2f%% (at most %.2f%% allowed)\n",

@@ -61,14 +61,14 @@ links1_SRCS += $(SCENE_CMD_SRCS)
 links1_LIBS += $(SCENE_CMD_LIBS)
 
 # Image tests: POV-Ray agreement and arithmetic accuracy.
-BOARD_TESTS += tests/images/scenes.sh tests/images/pov.sh tests/images/accuracy.sh \
+BOARD_TESTS += tests/images/scenes.sh tests/images/pov.sh tests/images/accuracy.sh tests/images/adaptive.sh \
 	tests/images/import.sh tests/board/render_import.sh
 
 HOST_TESTS += test_scene_image
 test_scene_image_SRCS := tests/host/test_scene_image.c host-tools/scene/image_io.c \
 	host-tools/scene/image_compare.c host-tools/cli_opt.c
 test_scene_image_ARITH := double
-test_scene_image_LIBS := -lpng
+test_scene_image_LIBS := -lpng -lm
 
 # The loader once more in the other two arithmetics it runs in on the board.
 HOST_TESTS += test_scene_load_float test_scene_load_fixed

@@ -20,6 +20,7 @@
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_file.h"
 #include "host-tools/scene/ref_opts.h"
+#include "render/precision.h"
 #include "render/render.h"
 #include "render/scene_load.h"
 
@@ -30,7 +31,8 @@ static int ref_usage(FILE *out, int status)
 {
     fprintf(out, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [--arith double|float|soft|"
                  "fixed] [--ppm] [--size WxH] [--frame N | --frames FIRST:LAST]\n"
-                 "  [--no-auto-hierarchy] [--refraction on|off]\n"
+                 "  [--no-auto-hierarchy] [--refraction on|off] [--max-depth D] [--min-weight W]\n"
+                 "  [--mark-lost]  (paint pixels that lost precision magenta)\n"
                  "  (this is the %s build)\n",
             NUM_NAME);
     return status;
@@ -61,6 +63,12 @@ static int ref_load(const char *in, const uint8_t *bytes, size_t len, void **mem
         render_status_t rs = render_prepare(scene, 0, arena, &frame);
         if (rs == RENDER_ERR_ARENA)
             continue;
+        if (rs == RENDER_ERR_EXTENT) {
+            char why[256];
+            precision_extent_message(frame, why, sizeof why);
+            fprintf(stderr, "links1 ref: %s: %s\n", in, why);
+            return -1;
+        }
         if (rs != RENDER_OK) {
             fprintf(stderr, "links1 ref: %s: %s\n", in, render_status_name(rs));
             return -1;
@@ -120,7 +128,8 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     else
         fprintf(stderr,
                 "links1 ref (%s): %s frame %ld, %dx%d -> %s; rays: %llu primary, %llu "
-                "shadow, %llu reflection, %llu refraction, %llu transmission; "
+                "shadow, %llu reflection, %llu refraction, %llu transmission, %llu cut by "
+                "weight; "
                 "%u pixels lost precision; %llu box tests, %llu primitive tests; traced in "
                 "%.3f s (%.3f s CPU)\n",
                 NUM_NAME, in, frame, img.width, img.height, out,
@@ -128,6 +137,7 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
                 (unsigned long long)ctx.stats.reflection,
                 (unsigned long long)ctx.stats.refraction,
                 (unsigned long long)ctx.stats.transmission,
+                (unsigned long long)ctx.stats.weight_cut,
                 (unsigned)ctx.stats.precision_lost_pixels,
                 (unsigned long long)ctx.stats.box_tests, (unsigned long long)ctx.stats.prim_tests,
                 secs, cpu);
@@ -172,6 +182,17 @@ static int ref_parse(int argc, char **argv, struct ref_args *a)
             if (strcmp(c.arg, "on") != 0 && strcmp(c.arg, "off") != 0)
                 return cli_bad_value(&c, "on or off");
             a->scene.refraction = strcmp(c.arg, "on") == 0;
+            break;
+        case REF_OPT_MARK_LOST:
+            a->scene.mark_lost = 1;
+            break;
+        case REF_OPT_MAX_DEPTH:
+            if (cli_int(&c, 0, SCN_MAX_DEPTH, &a->scene.max_depth) < 0)
+                return -1;
+            break;
+        case REF_OPT_MIN_WEIGHT:
+            if (cli_double(&c, 0, 0, 1, NULL, &a->scene.min_weight) < 0)
+                return -1;
             break;
         case REF_OPT_SIZE:
             if (cli_parse_size(c.arg, &a->scene.width, &a->scene.height) != 0)

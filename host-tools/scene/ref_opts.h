@@ -13,6 +13,9 @@ enum ref_opt_code {
     REF_OPT_FRAMES,
     REF_OPT_NO_AUTO_HIERARCHY,
     REF_OPT_REFRACTION,
+    REF_OPT_MAX_DEPTH,
+    REF_OPT_MIN_WEIGHT,
+    REF_OPT_MARK_LOST,
     REF_OPT_ARITH, /* links1 ref only */
 };
 
@@ -24,6 +27,9 @@ enum ref_opt_code {
     {"frames", required_argument, NULL, REF_OPT_FRAMES},  \
     {"no-auto-hierarchy", no_argument, NULL, REF_OPT_NO_AUTO_HIERARCHY}, \
     {"refraction", required_argument, NULL, REF_OPT_REFRACTION}, \
+    {"max-depth", required_argument, NULL, REF_OPT_MAX_DEPTH}, \
+    {"min-weight", required_argument, NULL, REF_OPT_MIN_WEIGHT}, \
+    {"mark-lost", no_argument, NULL, REF_OPT_MARK_LOST}, \
     {"help", no_argument, NULL, 'h'}
 
 #endif

@@ -44,6 +44,7 @@ static void compile_view(const struct sd_scene *s, uint8_t *p)
     wire_put_u16(p + SCN_VIEW_MAX_DEPTH, (uint16_t)v->max_depth);
     wire_put_u16(p + SCN_VIEW_FLAGS, (uint16_t)v->flags);
     wire_put_u32(p + SCN_VIEW_FRAMES, (uint32_t)v->frames);
+    wire_put_f32(p + SCN_VIEW_MIN_WEIGHT, (float)v->min_weight);
 }
 
 static void compile_light(const struct sd_light *l, uint8_t *p)

@@ -17,6 +17,7 @@ struct sd_view {
     int width, height;
     double background[3];
     int max_depth;
+    double min_weight;      /* adaptive depth: 0..1, 0 = off */
     unsigned flags;         /* SCN_OPT_* */
     int frames;
 };

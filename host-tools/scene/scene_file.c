@@ -13,9 +13,11 @@ void scene_file_opts_init(struct scene_file_opts *o)
 {
     o->width = o->height = 0;
     o->max_depth = -1;
+    o->min_weight = -1;
     o->refractionless = -1;
     o->refraction = -1;
     o->no_auto_hierarchy = 0;
+    o->mark_lost = 0;
 }
 
 int scene_file_ends_with(const char *s, const char *suffix)
@@ -36,8 +38,12 @@ static int scene_file_compile(const char *path, const struct scene_file_opts *o,
     }
     if (o->max_depth >= 0)
         s.view.max_depth = o->max_depth;
+    if (o->min_weight >= 0)
+        s.view.min_weight = o->min_weight;
     if (o->no_auto_hierarchy)
         s.no_auto_hierarchy = 1;
+    if (o->mark_lost)
+        s.view.flags |= SCN_OPT_MARK_LOST;
     if (o->refractionless >= 0)
         s.view.flags = o->refractionless ? s.view.flags | SCN_OPT_REFRACTIONLESS
                                          : s.view.flags & ~SCN_OPT_REFRACTIONLESS;
@@ -84,9 +90,11 @@ int scene_file_bytes(const char *path, const struct scene_file_opts *o, uint8_t 
     if (!scene_file_ends_with(path, ".l1s"))
         return scene_file_compile(path, o, buf, len, err, errlen);
     const char *change = o->width ? "--size" : o->max_depth >= 0 ? "--max-depth"
+                         : o->min_weight >= 0 ? "--min-weight"
                          : o->refractionless >= 0 ? "--refractionless"
                          : o->refraction >= 0 ? "--refraction"
-                         : o->no_auto_hierarchy ? "--no-auto-hierarchy" : NULL;
+                         : o->no_auto_hierarchy ? "--no-auto-hierarchy"
+                         : o->mark_lost ? "--mark-lost" : NULL;
     if (change) {
         snprintf(err, errlen, "%s: %s needs a text scene, not a compiled one", path, change);
         return -1;

@@ -152,6 +152,10 @@ static void parse_options(struct parser *p)
             lex_next(&p->lx);
             v->max_depth = lex_int(&p->lx, "max_depth", 0, SCN_MAX_DEPTH);
             continue;
+        } else if (lex_is_word(&p->lx, "min_weight")) {
+            lex_next(&p->lx);
+            v->min_weight = lex_number_in(&p->lx, "min_weight", 0, 1);
+            continue;
         } else if (lex_is_word(&p->lx, "refractionless")) {
             bit = SCN_OPT_REFRACTIONLESS;
         } else if (lex_is_word(&p->lx, "bounds")) {
@@ -162,6 +166,8 @@ static void parse_options(struct parser *p)
             bit = SCN_OPT_NO_REFRACTION, inverted = 1;
         } else if (lex_is_word(&p->lx, "shadows")) {
             bit = SCN_OPT_NO_SHADOWS, inverted = 1;
+        } else if (lex_is_word(&p->lx, "mark_lost")) {
+            bit = SCN_OPT_MARK_LOST;
         } else if (lex_is_word(&p->lx, "auto_hierarchy")) { /* compiler only */
             lex_next(&p->lx);
             p->s->no_auto_hierarchy = !parse_on_off(p, "auto_hierarchy");
@@ -381,6 +387,7 @@ void sd_view_defaults(struct sd_view *v)
     v->width = PARSE_DEFAULT_WIDTH;
     v->height = PARSE_DEFAULT_HEIGHT;
     v->max_depth = PARSE_DEFAULT_DEPTH;
+    v->min_weight = SCN_DEFAULT_MIN_WEIGHT;
     v->flags = SCN_OPT_REFRACTIONLESS;
     v->frames = 1;
 }

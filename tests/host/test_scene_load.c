@@ -214,7 +214,9 @@ static void test_header_fields(void)
     memcpy(c, b, len);
     wire_put_u16(c + SCN_HDR_VERSION, SCN_VERSION + 1);
     CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_VERSION);
-    CHECK(strstr(e.message, "version 2") != NULL);
+    char want[48];
+    snprintf(want, sizeof want, "reads version %d", SCN_VERSION);
+    CHECK(strstr(e.message, want) != NULL);
 
     memcpy(c, b, len);
     wire_put_u32(c + SCN_HDR_TOTAL, (uint32_t)len - 4);

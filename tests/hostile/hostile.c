@@ -176,6 +176,15 @@ static int over_image_size(struct hostile_scene *h)
     return refix(h);
 }
 
+static int bad_min_weight(struct hostile_scene *h)
+{
+    uint8_t *p = rec(h, SCN_SEC_VIEW, SCN_VIEW_SIZE, 0);
+    if (!p)
+        return -1;
+    wire_put_f32(p + SCN_VIEW_MIN_WEIGHT, 1.5f);
+    return refix(h);
+}
+
 static int over_depth(struct hostile_scene *h)
 {
     uint8_t *p = rec(h, SCN_SEC_VIEW, SCN_VIEW_SIZE, 0);
@@ -380,7 +389,8 @@ const struct hostile_class hostile_classes[] = {
     {"outside", "section kind 9: body outside the file", outside},
     {"truncated", "scene truncated: header says", truncated},
     {"crc_mismatch", "checksum mismatch", crc_mismatch},
-    {"wrong_version", "format version 3 (this loader reads version 2)", wrong_version},
+    {"wrong_version", "format version 4 (this loader reads version 3)", wrong_version},
+    {"bad_min_weight", "min_weight not within 0..1", bad_min_weight},
     {"zero_box", "prim 0: a semi-axis or half edge is not > 0", zero_box},
     {"degenerate_triangle", "prim 1: degenerate or sliver triangle", degenerate_triangle},
     {"sliver_triangle", "prim 1: degenerate or sliver triangle", sliver_triangle},

@@ -1,0 +1,123 @@
+/* render/precision.c: see precision.h. */
+#include "render/precision.h"
+
+#include "proto/textfmt.h"
+#include "render/vec3.h"
+
+#define PRECISION_INVERSE_TOL NUM_C(RENDER_INVERSE_TOLERANCE_VALUE)
+#define PRECISION_LOST_TOL NUM_C(RENDER_LOST_TOLERANCE_VALUE)
+#define PRECISION_MIN_SPAN NUM_C(RENDER_MIN_SPAN_VALUE)
+#define PRECISION_ACNE_TOL NUM_C(RENDER_RAY_EPSILON_VALUE / 2)
+
+/* Largest |(m * inv)[i][j] - identity| over the 3x3 part. */
+static num_t precision_residual(const xform_t *m, const xform_t *inv)
+{
+    xform_t p = xform_compose(m, inv);
+    num_t worst = NUM_ZERO;
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 3; j++) {
+            num_t e = num_abs(num_sub(p.m[i][j], i == j ? NUM_ONE : NUM_ZERO));
+            if (num_is_sat(e))
+                return e;
+            worst = num_max(worst, e);
+        }
+    return worst;
+}
+
+/* With every row scaled to unit length the map is invertible: only its
+ * scale was beyond the arithmetic. */
+static int precision_rows_independent(const xform_t *m)
+{
+    xform_t u = *m;
+    for (int i = 0; i < 3; i++) {
+        num_t len = num_len3(m->m[i][0], m->m[i][1], m->m[i][2]);
+        if (!num_gt(len, NUM_ZERO) || num_is_sat(len))
+            return 0;
+        for (int j = 0; j < 4; j++)
+            u.m[i][j] = j < 3 ? num_div(m->m[i][j], len) : NUM_ZERO;
+    }
+    xform_t inv;
+    return xform_invert(&u, &inv);
+}
+
+render_status_t precision_invert(const xform_t *m, xform_t *inv)
+{
+    if (!xform_invert(m, inv))
+        return precision_rows_independent(m) ? RENDER_ERR_SCALE : RENDER_ERR_SINGULAR;
+    num_t r = precision_residual(m, inv);
+    if (num_is_sat(r) || num_gt(r, PRECISION_INVERSE_TOL))
+        return RENDER_ERR_SCALE;
+    return RENDER_OK;
+}
+
+/* Estimated distance, in scene units, by which rounding in p's to_local
+ * map moves a point at most |extent| from the eye: per local axis, half a
+ * step of each entry times the extent plus half a step of the result,
+ * over the row's length (local units per scene unit).  *least is the
+ * smallest over the axes: the error across the flattest side, where a
+ * secondary ray starting RENDER_RAY_EPSILON_VALUE off the surface would
+ * hit it again (shadow acne); the largest moves a hit along a surface. */
+static num_t precision_hit_error(const render_prim_t *p, num_t extent, num_t *least)
+{
+    num_t worst = NUM_ZERO;
+    *least = NUM_FAR;
+    for (int i = 0; i < 3; i++) {
+        const num_t *row = p->to_local.m[i];
+        num_t len = num_len3(row[0], row[1], row[2]);
+        if (!num_gt(len, NUM_ZERO) || num_is_sat(len))
+            return NUM_FAR;
+        num_t steps = num_add(num_add(num_ulp(row[0]), num_ulp(row[1])), num_ulp(row[2]));
+        num_t local = num_add(num_mul(len, extent), num_abs(row[3]));
+        if (num_is_sat(num_mul_int(local, 2))) /* local coordinates near the
+                                                   range: the primitive test
+                                                   saturates and misses */
+            return NUM_FAR;
+        num_t err = num_add(num_mul(steps, extent), num_add(num_ulp(row[3]), num_ulp(local)));
+        err = num_div(num_mul(err, NUM_HALF), len);
+        if (num_is_sat(err))
+            return NUM_FAR;
+        worst = num_max(worst, err);
+        *least = num_min(*least, err);
+    }
+    return worst;
+}
+
+render_status_t precision_check(render_frame_t *f)
+{
+    f->span = NUM_ZERO;
+    if (f->prim_count == 0)
+        return RENDER_OK;
+    const aabb_t *b = &f->clusters[0].bounds;
+    num_t extent = NUM_ZERO;
+    for (int axis = 0; axis < 3; axis++) {
+        num_t lo = vec3_get(b->lo, axis), hi = vec3_get(b->hi, axis);
+        f->span = num_max(f->span, num_sub(hi, lo));
+        extent = num_max(extent, num_max(num_abs(lo), num_abs(hi)));
+    }
+    if (num_is_sat(f->span) || num_is_sat(extent))
+        f->precision_lost = 1;
+    for (uint32_t i = 0; i < f->prim_count; i++) {
+        render_prim_t *p = &f->prims[i];
+        num_t least, worst = precision_hit_error(p, extent, &least);
+        p->imprecise = p->kind != SCENE_PRIM_TRIANGLE &&
+                       (num_gt(worst, PRECISION_LOST_TOL) || num_gt(least, PRECISION_ACNE_TOL));
+    }
+    return num_lt(f->span, PRECISION_MIN_SPAN) ? RENDER_ERR_EXTENT : RENDER_OK;
+}
+
+void precision_extent_message(const render_frame_t *f, char *out, size_t cap)
+{
+    /* the span in thousandths (it is below RENDER_MIN_SPAN_VALUE, 1) */
+    int32_t milli = num_floor_int(num_add(num_mul_int(f->span, 1000), NUM_HALF));
+    char what[48];
+#if defined(LINKS1_NUM_FIXED)
+    fmt_snprintf(what, sizeof what, "fixed Q%d.%d resolves 2^-%d", 31 - NUM_FRAC_BITS,
+                 NUM_FRAC_BITS, NUM_FRAC_BITS);
+#else
+    fmt_snprintf(what, sizeof what, "%s resolves 2^-%d of a value", NUM_NAME,
+                 (int)sizeof(num_t) == 8 ? 52 : 23);
+#endif
+    fmt_snprintf(out, cap, "scene spans %ld.%03ld; %s, but secondary rays start %s from a "
+                 "surface, so a scene needs a span of at least %s (RENDER_MIN_SPAN_VALUE): "
+                 "scale it up", (long)(milli / 1000), (long)(milli % 1000), what, "0.002", "1");
+}

@@ -1,0 +1,26 @@
+/* render/precision.h: render_prepare's guards against a wrong image that
+ * looks right (docs/renderer.md, "Precision never fails silently").
+ *
+ *   precision_invert   a cluster map's inverse, refused when the arithmetic
+ *                      cannot form it to RENDER_INVERSE_TOLERANCE_VALUE
+ *                      (RENDER_ERR_SCALE) or it is singular
+ *   precision_check    the scene's span (RENDER_ERR_EXTENT under
+ *                      RENDER_MIN_SPAN_VALUE) and each primitive's estimated
+ *                      hit error (render_prim_t.imprecise)
+ */
+#ifndef LINKS1_RENDER_PRECISION_H
+#define LINKS1_RENDER_PRECISION_H
+
+#include "render/render.h"
+
+render_status_t precision_invert(const xform_t *m, xform_t *inv);
+
+/* After the boxes are known: sets frame->span and every prim's imprecise
+ * flag; RENDER_ERR_EXTENT when the scene is too small. */
+render_status_t precision_check(render_frame_t *f);
+
+/* The message of RENDER_ERR_EXTENT with the numbers: the scene's span,
+ * what the arithmetic resolves and the span needed. */
+void precision_extent_message(const render_frame_t *f, char *out, size_t cap);
+
+#endif

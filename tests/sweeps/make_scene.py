@@ -1,0 +1,165 @@
+#!/usr/bin/env python3
+"""make_scene.py FAMILY KNOB [--size WxH]: one scene of a sweep family, as
+scene text on stdout.  Each family varies one knob; the rest of the scene
+stays the same (docs/RESULTS.md, "Where each method fails").
+
+  scale   three shapes on a floor, every length times KNOB (1e-3..1e3);
+          the image should not change
+  cluster_scale  the same, the objects in one cluster scaled by KNOB
+  grazing        a floor seen KNOB degrees above it (90..0.1)
+  coincident     a plate KNOB above the floor (1e-1..1e-6)
+  thin_triangles triangles KNOB times longer than wide
+  tir_chain      glass spheres in a row, max_depth KNOB (total internal
+                 reflection inside them)
+  ellipsoid_ratio an ellipsoid with axes KNOB : 1 : 1
+  map_repeat     colour and bump maps repeated KNOB times
+Map paths are relative to the repository (run it from there, or set MAPS).
+"""
+import os
+import sys
+
+
+def scale_scene(s, w, h):
+    def v(*xs):
+        return " ".join("%.9g" % (x * s) for x in xs)
+    return f"""# sweep family scale, knob {s:g}: three shapes on a floor, every length x {s:g}
+camera {{ eye {v(0, 2.5, -7)}  look_at {v(0, 0.8, 0)}  up 0 1 0  fov 50 }}
+resolution {w} {h}
+background 0.1 0.12 0.2
+options {{ max_depth 3  refractionless on }}
+light point {{ colour 0.7 0.7 0.65  position {v(4, 8, -5)} }}
+light parallel {{ colour 0.25 0.25 0.3  direction 0.4 -1 0.5 }}
+material floor {{ colour 0.8 0.8 0.75  dic 0.25 drc 0.7  src 0.1 }}
+material red   {{ colour 0.9 0.2 0.15  dic 0.15 drc 0.75  src 0.2  phong 40 }}
+material green {{ colour 0.2 0.8 0.3  dic 0.15 drc 0.75  phong 20 }}
+material blue  {{ colour 0.2 0.35 0.9  dic 0.15 drc 0.7  src 0.3  phong 60 }}
+box {{ material floor  min {v(-6, -0.5, -4)}  max {v(6, 0, 8)} }}
+sphere {{ material red  centre {v(-1.6, 0.8, 0.5)}  radius {v(0.8)} }}
+box {{ material green  min {v(-0.3, 0, 1.2)}  max {v(1.1, 1.4, 2.4)} }}
+ellipsoid {{ material blue  centre {v(1.9, 0.6, -0.3)}  radii {v(0.5, 0.6, 0.9)} }}
+"""
+
+
+def cluster_scale_scene(s, w, h):
+    """The same scene with its objects in one cluster scaled by s (the
+    camera and lights scaled by hand): the arithmetic must invert it."""
+    text = scale_scene(1, w, h)
+    head, body = text.split("box {", 1)
+    def v(*xs):
+        return " ".join("%.9g" % (x * s) for x in xs)
+    head = head.replace("eye 0 2.5 -7  look_at 0 0.8 0", f"eye {v(0, 2.5, -7)}  look_at {v(0, 0.8, 0)}")
+    head = head.replace("position 4 8 -5", f"position {v(4, 8, -5)}")
+    head = head.replace("every length x 1", f"in a cluster scaled by {s:g}")
+    return head + "cluster all {\n  scale %.9g\n  box {" % s + body + "}\n"
+
+
+COMMON = """background 0.1 0.12 0.2
+light point {{ colour 0.7 0.7 0.65  position 4 8 -5 }}
+light parallel {{ colour 0.25 0.25 0.3  direction 0.4 -1 0.5 }}
+material floor {{ colour 0.8 0.8 0.75  dic 0.25 drc 0.7  src 0.1 }}
+material red   {{ colour 0.9 0.2 0.15  dic 0.15 drc 0.75  src 0.2  phong 40 }}
+material green {{ colour 0.2 0.8 0.3  dic 0.15 drc 0.75  phong 20 }}
+material glass {{ colour 0.9 0.95 1  dic 0.02 drc 0.05  src 0.1 trc 0.85  fresnel 0.6  ior 1.5  phong 60 }}
+resolution {w} {h}
+"""
+
+
+def grazing_scene(deg, w, h):
+    """The eye looks at a floor from deg degrees above it (90 .. 0.1)."""
+    import math
+    a = math.radians(deg)
+    eye = (0, 12 * math.sin(a), -12 * math.cos(a))
+    return f"""# sweep family grazing, knob {deg:g}: a floor seen {deg:g} degrees above it
+camera {{ eye {eye[0]:.9g} {eye[1]:.9g} {eye[2]:.9g}  look_at 0 0 0  up 0 1 0  fov 40 }}
+options {{ max_depth 3 }}
+""" + COMMON.format(w=w, h=h) + """box { material floor  min -40 -1 -40  max 40 0 40 }
+sphere { material red  centre 0 0.5 0  radius 0.5 }
+"""
+
+
+def coincident_scene(gap, w, h):
+    """A thin plate floats gap above the floor: near-coincident surfaces."""
+    return f"""# sweep family coincident, knob {gap:g}: a plate {gap:g} above the floor
+camera {{ eye 0 3 -6  look_at 0 0 0.5  up 0 1 0  fov 50 }}
+options {{ max_depth 2 }}
+""" + COMMON.format(w=w, h=h) + f"""box {{ material floor  min -6 -0.5 -4  max 6 0 8 }}
+box {{ material green  min -1.5 {gap:.9g} -1  max 1.5 {gap + 0.05:.9g} 2 }}
+sphere {{ material red  centre 1.5 {gap + 0.05 + 0.6:.9g} 0  radius 0.6 }}
+"""
+
+
+def thin_triangle_scene(aspect, w, h):
+    """A fan of triangles aspect times longer than wide."""
+    out = [f"""# sweep family thin_triangles, knob {aspect:g}: triangles {aspect:g} times longer than wide
+camera {{ eye 0 3 -6  look_at 0 0.5 0.5  up 0 1 0  fov 50 }}
+options {{ max_depth 2 }}
+""" + COMMON.format(w=w, h=h) + "box { material floor  min -6 -0.5 -4  max 6 0 8 }\n"]
+    width = 3.0 / aspect  # each triangle: this wide at its base, 3 long
+    n = max(1, min(48, int(aspect)))
+    for i in range(n):
+        x0 = -1.5 + 3.0 * i / n
+        out.append(f"triangle {{ material red  v {x0:.9g} 0.01 -0.5  v {x0 + width:.9g} 0.01 -0.5  "
+                   f"v {x0 + width / 2:.9g} 2 2 }}\n")
+    return "".join(out)
+
+
+def tir_chain_scene(depth, w, h):
+    """A row of glass spheres seen through each other; max_depth = knob."""
+    d = int(depth)
+    return f"""# sweep family tir_chain, knob {d}: glass spheres in a row, max_depth {d}
+camera {{ eye 0 1.2 -6  look_at 0 0.8 2  up 0 1 0  fov 40 }}
+options {{ max_depth {d}  refractionless on }}
+""" + COMMON.format(w=w, h=h) + "box { material floor  min -6 -0.5 -4  max 6 0 12 }\n" + "".join(
+        f"sphere {{ material glass  centre {0.15 * k:.9g} 0.9 {1.5 * k:.9g}  radius 0.8 }}\n" for k in range(6)
+    ) + "box { material red  min -1 0 9  max 1 2 9.5 }\n"
+
+
+def ellipsoid_ratio_scene(ratio, w, h):
+    """An ellipsoid whose axes are ratio : 1 : 1 (the long one fixed)."""
+    r = 2.0 / ratio
+    return f"""# sweep family ellipsoid_ratio, knob {ratio:g}: axes 2 : {r:.3g} : {r:.3g}
+camera {{ eye 0 2 -6  look_at 0 0.6 0  up 0 1 0  fov 45 }}
+options {{ max_depth 2 }}
+""" + COMMON.format(w=w, h=h) + f"""box {{ material floor  min -6 -0.5 -4  max 6 0 8 }}
+cluster e {{
+  rotate 0 0 20
+  translate 0 1 0
+  ellipsoid {{ material red  centre 0 0 0  radii 2 {r:.9g} {max(r, 0.3):.9g} }}
+}}
+"""
+
+
+def map_repeat_scene(rep, w, h):
+    """A checker colour map and a bump map repeated rep times on a floor."""
+    return f"""# sweep family map_repeat, knob {rep:g}: maps repeated {rep:g} times
+camera {{ eye 0 3 -6  look_at 0 0 1  up 0 1 0  fov 50 }}
+options {{ max_depth 1 }}
+map checker colour {{ image "{MAPS}/checker.png"  repeat {rep:.9g} {rep:.9g} }}
+map dimples bump {{ image "{MAPS}/dimples.png"  repeat {rep:.9g} {rep:.9g}  depth 1 }}
+material mapped {{ colour 1 1 1  dic 0.25 drc 0.7  colour_map checker  bump_map dimples }}
+""" + COMMON.format(w=w, h=h) + """box { material mapped  min -6 -0.5 -4  max 6 0 8 }
+"""
+
+
+MAPS = "scenes/maps"
+FAMILIES = {"scale": scale_scene, "cluster_scale": cluster_scale_scene, "grazing": grazing_scene,
+            "coincident": coincident_scene, "thin_triangles": thin_triangle_scene,
+            "tir_chain": tir_chain_scene, "ellipsoid_ratio": ellipsoid_ratio_scene,
+            "map_repeat": map_repeat_scene}
+
+
+def main():
+    args = sys.argv[1:]
+    w, h = 160, 120
+    if "--size" in args:
+        i = args.index("--size")
+        w, h = (int(x) for x in args[i + 1].split("x"))
+        del args[i:i + 2]
+    if len(args) != 2 or args[0] not in FAMILIES:
+        sys.exit("usage: make_scene.py FAMILY KNOB [--size WxH]; families: " + " ".join(FAMILIES))
+    global MAPS
+    MAPS = os.path.abspath(os.environ.get("MAPS", "scenes/maps"))
+    sys.stdout.write(FAMILIES[args[0]](float(args[1]), w, h))
+
+
+main()

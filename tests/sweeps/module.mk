@@ -1,0 +1,13 @@
+# tests/sweeps/: where each arithmetic breaks (scene families of
+# make_scene.py, sweep.sh) and the speed-against-accuracy chart (pareto.sh).
+# make test runs the sweeps at reduced size: every wrong pixel flagged.
+BOARD_TESTS += tests/sweeps/flagged.sh
+
+# make sweeps: the full sweeps; tables and charts into docs/figures/.
+.PHONY: sweeps
+sweeps: deps
+	$(Q)$(MAKE) $(JOBS) --no-print-directory all
+	$(Q)bash tests/sweeps/sweep.sh --out $(B)/sweeps
+	$(Q)mkdir -p docs/figures && cp $(B)/sweeps/sweep-*.png docs/figures/ && \
+		cp $(B)/sweeps/breaks.md docs/figures/sweep-breaks.md && \
+		cp $(B)/sweeps/sweep.tsv docs/figures/sweep.tsv

@@ -1,0 +1,166 @@
+#!/usr/bin/env bash
+# tests/sweeps/sweep.sh: where each arithmetic breaks (docs/RESULTS.md).
+#
+#   bash tests/sweeps/sweep.sh [--quick] [--out DIR]
+#
+# For every scene family of make_scene.py, each knob value and each
+# arithmetic (double, float = soft on the host, fixed), renders the scene
+# with links1 ref (plainly and with --mark-lost) and compares:
+#   error  against the double build at the same knob (for scale and
+#          cluster_scale against the double build at knob 1: the image
+#          should not change): share of pixels beyond 2/255, PSNR;
+#   flags  against the double build at the same knob with --flagged: the
+#          share of pixels beyond 2/255 that were NOT painted as lost, of
+#          all pixels and of those off the outlines (--silhouette: an edge
+#          moved by less than a pixel flips the pixels along it, in any
+#          arithmetic; docs/RESULTS.md).
+# A refused scene is a result too (the refusal names the reason).
+# Writes DIR/sweep.tsv (one line per family, knob, arithmetic), DIR/breaks.md
+# (the knob where each arithmetic first has more than 1% of pixels beyond
+# 2/255, or is refused) and, with gnuplot, DIR/sweep-FAMILY.png.
+# --quick: 64x48 pixels, fewer knobs, flags only (make test:
+# tests/sweeps/flagged.sh).
+set -u
+cd "$(dirname "$0")/../.."
+LINKS1=${LINKS1:-build/links1}
+out=build/sweeps size=160x120 quick=0
+while [ $# -gt 0 ]; do
+    case $1 in
+        --quick) quick=1 size=64x48 ;;
+        --out) out=$2; shift ;;
+        *) echo "usage: sweep.sh [--quick] [--out DIR]" >&2; exit 2 ;;
+    esac
+    shift
+done
+mkdir -p "$out/work"
+tsv=$out/sweep.tsv
+
+# family "knobs, easiest first" "x axis label" logscale(0/1)
+families=(
+    "scale|1 3 10 20 30 100 300|scene scale|1"
+    "scale_down|1 0.3 0.1 0.05 0.03 0.01 0.001|scene scale|1"
+    "cluster_scale|1 0.3 0.1 0.03 0.01 0.001|cluster scale|1"
+    "grazing|45 20 10 5 2 1 0.5 0.2 0.1|degrees above the floor|1"
+    "coincident|0.1 0.01 0.003 0.001 0.0003 0.0001 0.00001|gap|1"
+    "thin_triangles|10 100 1000 3000 10000 30000|length / width|1"
+    "tir_chain|1 2 3 4 6 8 12 16|max_depth|0"
+    "ellipsoid_ratio|1 10 100 300 1000 3000|axis ratio|1"
+    "map_repeat|1 10 100 1000 3000 10000|repeats|1"
+)
+if [ $quick = 1 ]; then
+    families=(
+        "scale|1 30 100|scene scale|1"
+        "scale_down|1 0.03|scene scale|1"
+        "cluster_scale|1 0.01|cluster scale|1"
+        "grazing|10 0.5|degrees above the floor|1"
+        "coincident|0.01 0.0001|gap|1"
+        "thin_triangles|100 10000|length / width|1"
+        "tir_chain|2 8|max_depth|0"
+        "ellipsoid_ratio|10 1000|axis ratio|1"
+        "map_repeat|10 3000|repeats|1"
+    )
+fi
+
+# field N of the compare summary: "PCT|PSNR" (PCT beyond K/255)
+measure() { # REF IMG K [--flagged]
+    local r
+    r=$("$LINKS1" compare "$1" "$2" --within "$3" --min-fraction 0 ${4:-} 2>&1)
+    local within psnr
+    within=$(echo "$r" | sed -nE 's/.*on every channel: ([0-9.]+)%.*/\1/p')
+    psnr=$(echo "$r" | sed -nE 's/.*PSNR ([0-9.]+) dB.*/\1/p')
+    awk -v w="${within:-0}" -v p="${psnr:-0}" 'BEGIN { printf "%.4f|%s", 100 - w, p }'
+}
+
+printf 'family\tknob\tarith\tstatus\tbeyond1_pct\tbeyond2_pct\tpsnr_db\tlost_pixels\tunflagged_beyond2_pct\tunflagged_off_outline\n' >"$tsv"
+for entry in "${families[@]}"; do
+    IFS='|' read -r family knobs _ _ <<<"$entry"
+    gen=$family
+    [ "$family" = scale_down ] && gen=scale
+    for knob in $knobs; do
+        scn=$out/work/$family-$knob.scn
+        python3 tests/sweeps/make_scene.py "$gen" "$knob" --size "$size" >"$scn" || exit 1
+        same=$out/work/$family-$knob-double.png
+        "$LINKS1" ref "$scn" --arith double -o "$same" >/dev/null 2>&1 || rm -f "$same"
+        ref=$same
+        if [ "$gen" = scale ] || [ "$gen" = cluster_scale ]; then
+            ref=$out/work/$family-1-double.png
+        fi
+        for arith in double float fixed; do
+            img=$out/work/$family-$knob-$arith-plain.png
+            marked=$out/work/$family-$knob-$arith-marked.png
+            log=$out/work/$family-$knob-$arith.log
+            [ $quick = 1 ] && img=$marked # the flags only: one render
+            if ! "$LINKS1" ref "$scn" --arith $arith -o "$img" $([ $quick = 1 ] && echo --mark-lost) \
+                    >"$log" 2>&1; then
+                why=$(tail -n 1 "$log" | sed 's/^links1 ref: [^:]*: //' | tr '\t' ' ')
+                printf '%s\t%s\t%s\trefused: %s\t\t\t\t\t\t\n' "$family" "$knob" "$arith" "$why" >>"$tsv"
+                continue
+            fi
+            lost=$(grep -o '[0-9]* pixels lost' "$log" | grep -o '^[0-9]*')
+            [ $quick = 1 ] || "$LINKS1" ref "$scn" --arith $arith --mark-lost -o "$marked" >/dev/null 2>&1
+            b1=- b2=- psnr=- unflagged=- inner=-
+            if [ -f "$ref" ] && [ $quick = 0 ]; then
+                IFS='|' read -r b1 _ < <(measure "$ref" "$img" 1)
+                IFS='|' read -r b2 psnr < <(measure "$ref" "$img" 2)
+            fi
+            if [ -f "$same" ]; then
+                IFS='|' read -r unflagged _ < <(measure "$same" "$marked" 2 --flagged)
+                # the share of all pixels, not of the unflagged ones
+                total=$(("${size%x*}" * "${size#*x}"))
+                unflagged=$(awk -v u="$unflagged" -v l="${lost:-0}" -v t="$total" \
+                    'BEGIN { printf "%.4f", u * (t - l) / t }')
+                inner=$("$LINKS1" compare "$same" "$marked" --within 2 --min-fraction 0 --flagged \
+                    --silhouette 2>&1 | sed -nE 's/.*on every channel: ([0-9.]+)% .*/\1/p')
+                inner=$(awk -v w="$inner" 'BEGIN { if (w == "") print "-"; else printf "%.4f", 100 - w }')
+            fi
+            printf '%s\t%s\t%s\tok\t%s\t%s\t%s\t%s\t%s\t%s\n' "$family" "$knob" "$arith" "$b1" "$b2" \
+                "$psnr" "${lost:-0}" "$unflagged" "$inner" >>"$tsv"
+        done
+    done
+done
+
+# breaking points
+{
+    echo "| family | double | float (and soft) | fixed |"
+    echo "|---|---|---|---|"
+    for entry in "${families[@]}"; do
+        IFS='|' read -r family _ label _ <<<"$entry"
+        row="| $family ($label) |"
+        for arith in double float fixed; do
+            cell=$(awk -F'\t' -v f="$family" -v a="$arith" '
+                $1 == f && $3 == a && !done {
+                    if ($4 ~ /^refused/) { print "refused at " $2; done = 1 }
+                    else if ($6 != "-" && $6 + 0 > 1) { print $2 " (" $6 "% beyond 2/255)"; done = 1 }
+                }
+                END { if (!done) print "holds" }' "$tsv")
+            row="$row $cell |"
+        done
+        echo "$row"
+    done
+} >"$out/breaks.md"
+
+if command -v gnuplot >/dev/null; then
+    for entry in "${families[@]}"; do
+        IFS='|' read -r family _ label logx <<<"$entry"
+        for arith in double float fixed; do
+            awk -F'\t' -v f="$family" -v a="$arith" '$1 == f && $3 == a && $4 == "ok" && $6 != "-" { print $2, $6, $9 }' \
+                "$tsv" >"$out/work/$family-$arith.dat"
+        done
+        gnuplot <<GP
+set terminal pngcairo size 560,360 font ",9" noenhanced
+set output "$out/sweep-$family.png"
+set title "$family: pixels beyond 2/255 of the double reference"
+set xlabel "$label"
+set ylabel "% of pixels"
+$( [ "$logx" = 1 ] && echo "set logscale x" )
+set key top left
+set grid
+plot "$out/work/$family-double.dat" using 1:2 with linespoints title "double", \
+     "$out/work/$family-float.dat" using 1:2 with linespoints title "float / soft", \
+     "$out/work/$family-fixed.dat" using 1:2 with linespoints title "fixed Q12.19", \
+     "$out/work/$family-fixed.dat" using 1:3 with points pt 6 title "fixed: unflagged", \
+     1 with lines dt 2 lc rgb "grey" title "1% (breaks)"
+GP
+    done
+fi
+echo "sweep: $tsv, $out/breaks.md"
