@@ -275,29 +275,52 @@ static int model_is_gltf(const char *path)
     return dot && (strcasecmp(dot, ".gltf") == 0 || strcasecmp(dot, ".glb") == 0);
 }
 
-int model_load(const char *path, struct model *m, char *err, size_t errlen)
+/* What the library read (sc, or NULL when it refused: its message) into *m;
+ * name names the model in err. */
+static int model_take(const struct aiScene *sc, const char *name, int gltf, struct model *m,
+                      char *err, size_t errlen)
 {
     memset(m, 0, sizeof *m);
-    const struct aiScene *sc = aiImportFile(path, MODEL_AI_FLAGS);
     if (!sc) {
         const char *why = aiGetErrorString();
-        snprintf(err, errlen, "%s: the model library cannot read it: %s", path,
+        snprintf(err, errlen, "%s: the model library cannot read it: %s", name,
                  why && why[0] ? why : "no reason given");
         return -1;
     }
     int rc = 0;
     if (!sc->mRootNode || (sc->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
         snprintf(err, errlen, "%s: the model library read it only in part (incomplete scene)",
-                 path);
+                 name);
         rc = -1;
-    } else if (model_copy(m, sc, model_is_gltf(path)) != 0) {
-        snprintf(err, errlen, "%s: out of memory copying the model", path);
+    } else if (model_copy(m, sc, gltf) != 0) {
+        snprintf(err, errlen, "%s: out of memory copying the model", name);
         rc = -1;
     }
     aiReleaseImport(sc);
     if (rc != 0)
         model_free(m);
     return rc;
+}
+
+int model_load(const char *path, struct model *m, char *err, size_t errlen)
+{
+    return model_take(aiImportFile(path, MODEL_AI_FLAGS), path, model_is_gltf(path), m, err,
+                      errlen);
+}
+
+int model_load_memory(const void *data, size_t size, const char *hint, struct model *m,
+                      char *err, size_t errlen)
+{
+    char name[32];
+    snprintf(name, sizeof name, "(memory).%s", hint);
+    if (size == 0 || size > MODEL_MEMORY_MAX) {
+        memset(m, 0, sizeof *m);
+        snprintf(err, errlen, "%s: %zu bytes, not 1 to %u", name, size, MODEL_MEMORY_MAX);
+        return -1;
+    }
+    const struct aiScene *sc =
+        aiImportFileFromMemory(data, (unsigned)size, MODEL_AI_FLAGS, hint);
+    return model_take(sc, name, model_is_gltf(name), m, err, errlen);
 }
 
 void model_free(struct model *m)

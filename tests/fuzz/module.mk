@@ -36,3 +36,10 @@ BOARD_TESTS += tests/fuzz/smoke.sh
 BOARD_PROGS += seed_frames
 seed_frames_SRCS := tests/fuzz/seed_frames.c
 seed_frames_ARITH := double
+
+# Model files through libassimp from memory, then the project's importer,
+# the text writer and parser, the compiler, the loader and a few pixels.
+FUZZERS += fuzz_import
+fuzz_import_SRCS = tests/fuzz/fuzz_import.c $(SCENE_TEXT_SRCS)
+fuzz_import_ARITH := float
+fuzz_import_LIBS = $(SCENE_TEXT_LIBS)
