@@ -25,6 +25,7 @@ struct model_mesh {
     int n_vertices;
     double *pos;            /* 3 per vertex */
     double *uv;             /* 2 per vertex, NULL when the mesh has none */
+    double *nrm;            /* vertex normals, 3 per vertex, NULL when none */
     int n_triangles;
     int *idx;               /* 3 vertex indices per triangle */
     int n_other;            /* points, lines: not triangles, left out */

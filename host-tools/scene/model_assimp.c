@@ -97,11 +97,12 @@ static int model_copy_mesh(struct model_mesh *d, const struct aiMesh *a)
     d->n_vertices = (int)a->mNumVertices;
     d->pos = malloc(sizeof *d->pos * 3 * (a->mNumVertices + 1));
     d->uv = a->mTextureCoords[0] ? malloc(sizeof *d->uv * 2 * (a->mNumVertices + 1)) : NULL;
+    d->nrm = a->mNormals ? malloc(sizeof *d->nrm * 3 * (a->mNumVertices + 1)) : NULL;
     int n_tri = 0;
     for (unsigned f = 0; f < a->mNumFaces; f++)
         n_tri += a->mFaces[f].mNumIndices == 3;
     d->idx = malloc(sizeof *d->idx * 3 * (size_t)(n_tri + 1));
-    if (!d->pos || !d->idx || (a->mTextureCoords[0] && !d->uv))
+    if (!d->pos || !d->idx || (a->mTextureCoords[0] && !d->uv) || (a->mNormals && !d->nrm))
         return -1;
     for (unsigned v = 0; v < a->mNumVertices; v++) {
         d->pos[3 * v] = a->mVertices[v].x;
@@ -110,6 +111,11 @@ static int model_copy_mesh(struct model_mesh *d, const struct aiMesh *a)
         if (d->uv) {
             d->uv[2 * v] = a->mTextureCoords[0][v].x;
             d->uv[2 * v + 1] = a->mTextureCoords[0][v].y;
+        }
+        if (d->nrm) {
+            d->nrm[3 * v] = a->mNormals[v].x;
+            d->nrm[3 * v + 1] = a->mNormals[v].y;
+            d->nrm[3 * v + 2] = a->mNormals[v].z;
         }
     }
     for (unsigned f = 0; f < a->mNumFaces; f++) {
@@ -328,6 +334,7 @@ void model_free(struct model *m)
     for (int i = 0; i < m->n_meshes; i++) {
         free(m->meshes[i].pos);
         free(m->meshes[i].uv);
+        free(m->meshes[i].nrm);
         free(m->meshes[i].idx);
     }
     free(m->nodes);

@@ -3,13 +3,13 @@
  * libassimp reads from memory with that format as its hint
  * (model_load_memory), then the project's own import code takes it as
  * `links1 import` does: scene_import_model into a fresh scene (the model's
- * materials and textures, or one scene material, `fit` on or off),
- * scene_import_view (the camera, or `--camera auto`), the
+ * materials and textures, or one scene material, `fit` and `smooth` on or
+ * off), scene_import_view (the camera, or `--camera auto`), the
  * scene written as text and read back (sd_write_text, sd_parse_text), then
  * compiled, loaded and prepared as the DM does, and a few pixels traced.
  *
  * First byte: bits 0-2 the format (FUZZ_FORMATS), bit 3 fit, bit 4 one
- * scene material instead of the model's, bit 6 camera auto
+ * scene material instead of the model's, bit 5 smooth, bit 6 camera auto
  * (always taken for a model without a camera, to reach the tracing).
  * Textures are looked for in tests/models/ (run from the repository's top);
  * inputs naming "..", "/dev/" or "/proc/" are skipped, so the fuzzer reads
@@ -112,7 +112,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         s.materials[0].colour_map = s.materials[0].bump_map = -1;
         s.n_materials = 1;
     }
-    struct import_opts o = {(opt & 8) != 0, one_material ? 0 : -1, 0, "fit"};
+    struct import_opts o = {(opt & 8) != 0, one_material ? 0 : -1, 0, "fit", (opt & 0x20) != 0};
     int rc = scene_import_model(&s, 0, &m, "tests/models/", &o, r, err, sizeof err);
     if (rc == 0)
         rc = scene_import_view(&s, &m, r, (opt & 0x40) || !m.have_camera, notes, err,
