@@ -20,6 +20,7 @@ fi
 mkdir -p "$work" "$crashes"
 [ -d "$seeds" ] && cp -n "$seeds"/* "$work"/ 2>/dev/null
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1}"
+export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$PWD/tests/fuzz/lsan-assimp.supp}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
 # -close_fd_mask=3: the code's own prints are not wanted; libFuzzer and the
 # sanitizers still report on a copy of stderr.

@@ -26,7 +26,7 @@ for name in $names; do
     log=build/test-logs/$check.fuzz.log
     mkdir -p build/test-logs
     cp "$seeds"/* "$work"/
-    ASAN_OPTIONS=detect_leaks=1 "$bin" -seed=1 -runs="$runs" -timeout=20 \
+    LSAN_OPTIONS=suppressions=$PWD/tests/fuzz/lsan-assimp.supp ASAN_OPTIONS=detect_leaks=1 "$bin" -seed=1 -runs="$runs" -timeout=20 \
         -rss_limit_mb=2560 -close_fd_mask=3 -artifact_prefix="$art/" "$work" >"$log" 2>&1
     rc=$?
     done_line=$(grep -E '^Done [0-9]+ runs' "$log" | tail -1)
