@@ -208,8 +208,7 @@ static render_status_t prep_check(const scene_t *s)
              !num_gt(p->shape.density.threshold, NUM_ZERO) || /* the root finder needs > 0 */
              (uint64_t)p->shape.density.first + p->shape.density.count > s->density_component_count))
             return RENDER_ERR_DENSITY;
-        if (p->kind == SCENE_PRIM_TRIANGLE && p->shape.triangle.normals != SCENE_FLAT &&
-            p->shape.triangle.normals >= s->normals_count)
+        if (p->kind == SCENE_PRIM_TRIANGLE && p->shape.triangle.smooth > s->normals_count)
             return RENDER_ERR_PRIM;
     }
     return RENDER_OK;
@@ -241,8 +240,8 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
         p->normal = vec3_normalize(vec3_cross(vec3_normalize(p->e1), vec3_normalize(p->e2)));
         /* smooth: the vertex normals by the inverse transpose of to_eye */
         p->normals = NULL;
-        if (sp->shape.triangle.normals != SCENE_FLAT) {
-            uint32_t j = sp->shape.triangle.normals;
+        if (sp->shape.triangle.smooth) {
+            uint32_t j = sp->shape.triangle.smooth - 1;
             for (int k = 0; k < 3; k++)
                 f->normals[j].n[k] =
                     vec3_normalize(xform_dir_transposed(from_eye, f->scene->normals[j].n[k]));

@@ -91,7 +91,7 @@ static void reloc_frame(reloc_t *r, render_frame_t *f, const scene_t *s)
         const scene_density_component_t *comps =
             RELOC(r, p->components, p->component_count, "frame.prims[].components");
         const num_t *inv = RELOC(r, p->inv_radius2, p->component_count, "frame.prims[].inv_radius2");
-        const scene_normals_t *nrm = RELOC(r, p->normals, 1, "frame.prims[].normals");
+        const scene_normals_t *nrm = RELOC(r, p->normals, p->normals ? 1 : 0, "frame.prims[].normals");
         if (r->write && !r->bad) {
             p->normals = nrm;
             p->components = comps;

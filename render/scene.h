@@ -22,7 +22,6 @@
 #include "render/limits.h"
 
 #define SCENE_NONE 0xffffu /* "no map", "no parent" in 16-bit index fields */
-#define SCENE_FLAT 0xffffffffu /* a triangle without vertex normals */
 
 typedef struct {
     num_t x, y, z;
@@ -162,9 +161,9 @@ typedef struct {
             vec3_t v[3];   /* vertices; front face is either side */
             num_t tex_u[3]; /* map coordinate u per vertex */
             num_t tex_v[3]; /* map coordinate v per vertex */
-            uint32_t normals; /* its vertex normals in scene normals (a
-                                 smooth triangle, beyond the paper), or
-                                 SCENE_FLAT */
+            uint32_t smooth; /* 0: flat (the paper's); k > 0: a smooth
+                                triangle (beyond the paper), its vertex
+                                normals are scene normals[k - 1] */
         } triangle;
         struct {
             vec3_t centre;

@@ -550,7 +550,7 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out)
                 o->shape.triangle.tex_u[k] = load_num(v + 36 + 4 * k);
                 o->shape.triangle.tex_v[k] = load_num(v + 48 + 4 * k);
             }
-            o->shape.triangle.normals = SCENE_FLAT;
+            o->shape.triangle.smooth = 0;
             if (load_sliver(o->shape.triangle.v))
                 return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
                                 "degenerate or sliver triangle (a height under "
@@ -619,7 +619,7 @@ static scene_load_status_t load_normals(struct load *L, scene_prim_t *prims,
                 return load_bad(L, SCENE_LOAD_ERR_VALUE, "normals ", i,
                                 "a normal is not of unit length");
         }
-        prims[prim].shape.triangle.normals = i;
+        prims[prim].shape.triangle.smooth = i + 1;
     }
     return SCENE_LOAD_OK;
 }
