@@ -281,6 +281,51 @@ static int model_is_gltf(const char *path)
     return dot && (strcasecmp(dot, ".gltf") == 0 || strcasecmp(dot, ".glb") == 0);
 }
 
+/* libassimp 5.2's PLY reader loops without end (allocating) on a header
+ * line of the wrong shape, e.g. `property float x outer loop`
+ * (tests/fuzz/corpus/fuzz_import/regress-assimp-ply-hang), so a PLY
+ * header is checked first: every `element` line has 3 words, every
+ * `property` line 3 (TYPE NAME) or 5 (list COUNT ITEM NAME).  0, or -1
+ * with the line in err. */
+#define MODEL_PLY_HEADER_MAX 65536
+static int model_ply_header_ok(const char *data, size_t size, const char *name, char *err,
+                               size_t errlen)
+{
+    if (size < 4 || memcmp(data, "ply", 3) != 0 || (data[3] != '\n' && data[3] != '\r'))
+        return 0;
+    if (size > MODEL_PLY_HEADER_MAX)
+        size = MODEL_PLY_HEADER_MAX;
+    for (size_t at = 0; at < size;) {
+        size_t end = at;
+        while (end < size && data[end] != '\n')
+            end++;
+        char line[256];
+        size_t n = end - at < sizeof line - 1 ? end - at : sizeof line - 1;
+        memcpy(line, data + at, n);
+        line[n] = 0;
+        at = end + 1;
+        char w[6][16];
+        int words = sscanf(line, "%15s %15s %15s %15s %15s %15s", w[0], w[1], w[2], w[3], w[4],
+                           w[5]);
+        if (words >= 1 && strcmp(w[0], "end_header") == 0)
+            return 0;
+        int want = words < 1                        ? words
+                   : strcmp(w[0], "element") == 0  ? 3
+                   : strcmp(w[0], "property") == 0 ? (words >= 2 && !strcmp(w[1], "list") ? 5 : 3)
+                                                   : words;
+        if (words != want) {
+            for (char *c = line; *c; c++)
+                if ((unsigned char)*c < ' ' || (unsigned char)*c > '~')
+                    *c = '?';
+            snprintf(err, errlen, "%s: a PLY header line of the wrong shape, refused before "
+                                  "the model library reads it: '%.60s'",
+                     name, line);
+            return -1;
+        }
+    }
+    return 0;
+}
+
 /* What the library read (sc, or NULL when it refused: its message) into *m;
  * name names the model in err. */
 static int model_take(const struct aiScene *sc, const char *name, int gltf, struct model *m,
@@ -310,6 +355,15 @@ static int model_take(const struct aiScene *sc, const char *name, int gltf, stru
 
 int model_load(const char *path, struct model *m, char *err, size_t errlen)
 {
+    memset(m, 0, sizeof *m);
+    FILE *f = fopen(path, "rb");
+    if (f) {
+        static char head[MODEL_PLY_HEADER_MAX];
+        size_t n = fread(head, 1, sizeof head, f);
+        fclose(f);
+        if (model_ply_header_ok(head, n, path, err, errlen) != 0)
+            return -1;
+    }
     return model_take(aiImportFile(path, MODEL_AI_FLAGS), path, model_is_gltf(path), m, err,
                       errlen);
 }
@@ -324,6 +378,8 @@ int model_load_memory(const void *data, size_t size, const char *hint, struct mo
         snprintf(err, errlen, "%s: %zu bytes, not 1 to %u", name, size, MODEL_MEMORY_MAX);
         return -1;
     }
+    if (model_ply_header_ok(data, size, name, err, errlen) != 0)
+        return -1;
     const struct aiScene *sc =
         aiImportFileFromMemory(data, (unsigned)size, MODEL_AI_FLAGS, hint);
     return model_take(sc, name, model_is_gltf(name), m, err, errlen);

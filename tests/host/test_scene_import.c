@@ -362,6 +362,31 @@ static void test_bad_out_of_range_and_fit(void)
     sd_free(&s), model_free(&m);
 }
 
+/* A PLY header line of the wrong shape, on which libassimp 5.2 loops
+ * without end, is refused before the library sees it (file and memory). */
+static void test_bad_ply_header(void)
+{
+    const char *ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x outer loop\n"
+                      "property float y\nproperty float z\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+    const char *path = "build/test-logs/bad_header.ply";
+    FILE *f = fopen(path, "w");
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    fputs(ply, f);
+    fclose(f);
+    struct model m;
+    char err[SD_ERR_MAX] = "";
+    CHECK(model_load(path, &m, err, sizeof err) != 0);
+    CHECK(strstr(err, "bad_header.ply: a PLY header line of the wrong shape") &&
+          strstr(err, "'property float x outer loop'"));
+    CHECK(model_load_memory(ply, strlen(ply), "ply", &m, err, sizeof err) != 0);
+    CHECK(strstr(err, "'property float x outer loop'") != NULL);
+    CHECK(model_load("tests/models/tetra.ply", &m, err, sizeof err) == 0);
+    model_free(&m);
+    remove(path);
+}
+
 /* ------------------------------------------------------ the model statement */
 
 static void test_model_statement(void)
@@ -414,6 +439,7 @@ int main(void)
     RUN(test_bad_missing_texture);
     RUN(test_bad_over_the_triangle_limit);
     RUN(test_bad_out_of_range_and_fit);
+    RUN(test_bad_ply_header);
     RUN(test_model_statement);
     return check_exit();
 }
