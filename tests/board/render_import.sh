@@ -20,7 +20,7 @@ for spec in "cube tests/models/cube.obj --camera auto" "tower tests/models/tower
     ariths="float fixed"
     if [ "$name" = ball ]; then
         ariths="float soft fixed"
-        if ! grep -Eq '^ *triangle .*( n( +[-0-9.e]+){3}){3}' "$scn"; then
+        if ! grep -Eq '^ *triangle .*( +n( +[-0-9.e]+){3}){3}' "$scn"; then
             echo "FAIL render_import_ball_smooth: the imported scene has no vertex normals"
             continue
         fi
