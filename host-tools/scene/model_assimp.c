@@ -282,11 +282,12 @@ static int model_is_gltf(const char *path)
 }
 
 /* libassimp 5.2's PLY reader loops without end (allocating) on a header
- * line of the wrong shape, e.g. `property float x outer loop`
- * (tests/fuzz/corpus/fuzz_import/regress-assimp-ply-hang), so a PLY
- * header is checked first: every `element` line has 3 words, every
- * `property` line 3 (TYPE NAME) or 5 (list COUNT ITEM NAME).  0, or -1
- * with the line in err. */
+ * line it does not expect, e.g. `property float x outer loop` or a word
+ * that is no keyword (tests/fuzz/corpus/fuzz_import/regress-assimp-ply-*),
+ * so a PLY header is checked first: it ends in `end_header` within 64 KiB,
+ * and every line before is `format F V`, `comment ...`, `obj_info ...`,
+ * `element NAME COUNT`, `property TYPE NAME` or
+ * `property list COUNT_TYPE ITEM_TYPE NAME`.  0, or -1 with the line in err. */
 #define MODEL_PLY_HEADER_MAX 65536
 static int model_ply_header_ok(const char *data, size_t size, const char *name, char *err,
                                size_t errlen)
@@ -295,7 +296,10 @@ static int model_ply_header_ok(const char *data, size_t size, const char *name, 
         return 0;
     if (size > MODEL_PLY_HEADER_MAX)
         size = MODEL_PLY_HEADER_MAX;
-    for (size_t at = 0; at < size;) {
+    size_t at = 4;
+    while (at < size && (data[at] == '\n' || data[at] == '\r'))
+        at++;
+    while (at < size) {
         size_t end = at;
         while (end < size && data[end] != '\n')
             end++;
@@ -309,21 +313,24 @@ static int model_ply_header_ok(const char *data, size_t size, const char *name, 
                            w[5]);
         if (words >= 1 && strcmp(w[0], "end_header") == 0)
             return 0;
-        int want = words < 1                        ? words
-                   : strcmp(w[0], "element") == 0  ? 3
-                   : strcmp(w[0], "property") == 0 ? (words >= 2 && !strcmp(w[1], "list") ? 5 : 3)
-                                                   : words;
-        if (words != want) {
+        int ok = words >= 1 && (!strcmp(w[0], "comment") || !strcmp(w[0], "obj_info") ||
+                                (!strcmp(w[0], "format") && words == 3) ||
+                                (!strcmp(w[0], "element") && words == 3) ||
+                                (!strcmp(w[0], "property") &&
+                                 words == (words >= 2 && !strcmp(w[1], "list") ? 5 : 3)));
+        if (!ok) {
             for (char *c = line; *c; c++)
                 if ((unsigned char)*c < ' ' || (unsigned char)*c > '~')
                     *c = '?';
-            snprintf(err, errlen, "%s: a PLY header line of the wrong shape, refused before "
-                                  "the model library reads it: '%.60s'",
+            snprintf(err, errlen, "%s: a PLY header line the model library cannot take, "
+                                  "refused before it reads the file: '%.60s'",
                      name, line);
             return -1;
         }
     }
-    return 0;
+    snprintf(err, errlen, "%s: a PLY header without end_header in its first %d bytes", name,
+             MODEL_PLY_HEADER_MAX);
+    return -1;
 }
 
 /* What the library read (sc, or NULL when it refused: its message) into *m;
