@@ -292,13 +292,13 @@ static int model_is_gltf(const char *path)
 static int model_ply_header_ok(const char *data, size_t size, const char *name, char *err,
                                size_t errlen)
 {
-    if (size < 4 || memcmp(data, "ply", 3) != 0 || (data[3] != '\n' && data[3] != '\r'))
-        return 0;
+    if (size < 3 || strncasecmp(data, "ply", 3) != 0)
+        return 0; /* the reader takes a file that begins so as PLY */
     if (size > MODEL_PLY_HEADER_MAX)
         size = MODEL_PLY_HEADER_MAX;
-    size_t at = 4;
-    while (at < size && (data[at] == '\n' || data[at] == '\r'))
-        at++;
+    size_t at = 3;
+    while (at < size && data[at] != '\n')
+        at++; /* the rest of the magic line */
     while (at < size) {
         size_t end = at;
         while (end < size && data[end] != '\n')
