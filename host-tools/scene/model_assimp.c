@@ -299,6 +299,7 @@ static int model_ply_header_ok(const char *data, size_t size, const char *name, 
     size_t at = 3;
     while (at < size && data[at] != '\n')
         at++; /* the rest of the magic line */
+    at++;
     while (at < size) {
         size_t end = at;
         while (end < size && data[end] != '\n')
@@ -313,7 +314,7 @@ static int model_ply_header_ok(const char *data, size_t size, const char *name, 
                            w[5]);
         if (words >= 1 && strcmp(w[0], "end_header") == 0)
             return 0;
-        int ok = words >= 1 && (!strcmp(w[0], "comment") || !strcmp(w[0], "obj_info") ||
+        int ok = words <= 0 || (!strcmp(w[0], "comment") || !strcmp(w[0], "obj_info") ||
                                 (!strcmp(w[0], "format") && words == 3) ||
                                 (!strcmp(w[0], "element") && words == 3) ||
                                 (!strcmp(w[0], "property") &&

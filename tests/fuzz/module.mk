@@ -43,3 +43,6 @@ FUZZERS += fuzz_import
 fuzz_import_SRCS = tests/fuzz/fuzz_import.c $(SCENE_TEXT_SRCS)
 fuzz_import_ARITH := float
 fuzz_import_LIBS = $(SCENE_TEXT_LIBS)
+# about 70 inputs a second (the library, then a whole compile and trace):
+# the smoke run takes fewer
+fuzz_import_SMOKE_RUNS := 1500
