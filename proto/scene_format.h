@@ -98,8 +98,9 @@ enum scn_section {
     SCN_SEC_PRIMS = 7,
     SCN_SEC_COMPONENTS = 8, /* density components, all density spheres */
     SCN_SEC_KEYS = 9,      /* keyframes, grouped per cluster, frames rising */
+    SCN_SEC_NORMALS = 10,  /* vertex normals of smooth triangles, prims rising */
 };
-#define SCN_SEC_COUNT 9 /* kinds are 1..SCN_SEC_COUNT */
+#define SCN_SEC_COUNT 10 /* kinds are 1..SCN_SEC_COUNT */
 
 /* The board has no trigonometry: every angle is turned into the cosine,
  * tangent or quaternion the renderer needs by the host compiler. */
@@ -229,6 +230,18 @@ enum scn_prim_kind {
 #define SCN_COMPONENT_CENTRE 0  /* 3 x f32 */
 #define SCN_COMPONENT_RADIUS 12 /* f32 > 0: d */
 #define SCN_COMPONENT_WEIGHT 16 /* f32 != 0: b (negative carves) */
+
+/* -------------------------------------------------------- NORMALS record */
+/* A smooth triangle (`model { smooth on }`, beyond the paper, whose
+ * triangles are flat): the unit normals at its three vertices, which the
+ * renderer interpolates across it.  Only smooth triangles have one, so a
+ * flat triangle costs SCN_PRIM_SIZE = 76 bytes and a smooth one
+ * 76 + SCN_NORMALS_SIZE = 116.  Records name their triangle, in rising
+ * prim order, at most one per triangle. */
+#define SCN_NORMALS_SIZE 40
+#define SCN_NORMALS_PRIM 0      /* u32: index of a TRIANGLE in PRIMS */
+#define SCN_NORMALS_N 4         /* 9 x f32: n0, n1, n2 in the cluster's coordinates */
+#define SCN_NORMAL_LENGTH_TOLERANCE 1.0e-3f /* each |n| within 1 +- this */
 
 /* ----------------------------------------------------------- KEYS record */
 #define SCN_KEY_SIZE 44

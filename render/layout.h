@@ -29,22 +29,24 @@ typedef struct {
     size_t frame_prim;    /* render_prim_t */
     size_t num;           /* num_t */
     size_t xform;         /* xform_t */
+    size_t normals;       /* scene_normals_t */
 } render_layout_t;
 
 /* The board's record sizes, in the order of render_layout_t. */
-#define RENDER_BOARD_BLOB 152
+#define RENDER_BOARD_BLOB 160
 #define RENDER_BOARD_LIGHT 48
 #define RENDER_BOARD_MATERIAL 44
 #define RENDER_BOARD_MAP 24
 #define RENDER_BOARD_CLUSTER 60
-#define RENDER_BOARD_PRIM 68
+#define RENDER_BOARD_PRIM 72
 #define RENDER_BOARD_COMPONENT 20
 #define RENDER_BOARD_KEY 44
-#define RENDER_BOARD_FRAME 552
+#define RENDER_BOARD_FRAME 556
 #define RENDER_BOARD_FRAME_CLUSTER 80
-#define RENDER_BOARD_FRAME_PRIM 204
+#define RENDER_BOARD_FRAME_PRIM 208
 #define RENDER_BOARD_NUM 4
 #define RENDER_BOARD_XFORM 48
+#define RENDER_BOARD_NORMALS 36
 
 extern const render_layout_t render_layout_native;
 extern const render_layout_t render_layout_board;

@@ -211,6 +211,8 @@ static render_status_t prep_check(const scene_t *s)
              !num_gt(p->shape.density.threshold, NUM_ZERO) || /* the root finder needs > 0 */
              (uint64_t)p->shape.density.first + p->shape.density.count > s->density_component_count))
             return RENDER_ERR_DENSITY;
+        if (p->kind == SCENE_PRIM_TRIANGLE && p->shape.triangle.smooth > s->normals_count)
+            return RENDER_ERR_PRIM;
     }
     return RENDER_OK;
 }
@@ -221,6 +223,7 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
 {
     num_t lin[3][3];
     p->kind = sp->kind;
+    p->normals = NULL; /* flat, unless a smooth triangle below */
     p->material = sp->material;
     p->index = index;
     switch (sp->kind) {
@@ -238,6 +241,15 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
         p->e1 = vec3_sub(v[1], v[0]);
         p->e2 = vec3_sub(v[2], v[0]);
         p->normal = vec3_normalize(vec3_cross(vec3_normalize(p->e1), vec3_normalize(p->e2)));
+        /* smooth: the vertex normals by the inverse transpose of to_eye */
+        p->normals = NULL;
+        if (sp->shape.triangle.smooth) {
+            uint32_t j = sp->shape.triangle.smooth - 1;
+            for (int k = 0; k < 3; k++)
+                f->normals[j].n[k] =
+                    vec3_normalize(xform_dir_transposed(from_eye, f->scene->normals[j].n[k]));
+            p->normals = &f->normals[j];
+        }
         p->edge_n1 = vec3_normalize(vec3_cross(p->e2, p->normal));
         p->edge_n2 = vec3_normalize(vec3_cross(p->normal, p->e1));
         p->height1 = vec3_dot(p->e1, p->edge_n1);
@@ -394,11 +406,12 @@ size_t render_prepare_bytes_layout(const scene_t *s, const render_layout_t *lay)
 {
     size_t prims = s->prim_count ? s->prim_count : 1;
     size_t comps = s->density_component_count ? s->density_component_count : 1;
+    size_t normals = s->normals_count ? s->normals_count : 1;
     size_t n = lay->frame + lay->frame_cluster * (size_t)s->cluster_count +
                sizeof(uint32_t) * (size_t)s->cluster_count + lay->frame_prim * prims +
-               sizeof(uint32_t) * prims + lay->num * comps;
+               sizeof(uint32_t) * prims + lay->num * comps + lay->normals * normals;
     size_t scratch = (2 * lay->xform + 1) * (size_t)s->cluster_count;
-    return n + scratch + 12 * ARENA_MAX_ALIGN; /* 9 allocations, each padded at most that */
+    return n + scratch + 13 * ARENA_MAX_ALIGN; /* 10 allocations, each padded at most that */
 }
 
 size_t render_prepare_bytes(const scene_t *s)
@@ -421,7 +434,9 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     f->prim_list = ARENA_NEW_ARRAY(arena, uint32_t, s->prim_count ? s->prim_count : 1);
     uint32_t ncomp = s->density_component_count;
     f->density_inv_radius2 = ARENA_NEW_ARRAY(arena, num_t, ncomp ? ncomp : 1);
-    if (!f->clusters || !f->child_list || !f->prims || !f->prim_list || !f->density_inv_radius2)
+    f->normals = ARENA_NEW_ARRAY(arena, scene_normals_t, s->normals_count ? s->normals_count : 1);
+    if (!f->clusters || !f->child_list || !f->prims || !f->prim_list || !f->density_inv_radius2 ||
+        !f->normals)
         return RENDER_ERR_ARENA;
     /* (1/d)/d rather than 1/(d*d): d*d of a small radius would keep few
      * significant bits in fixed point */

@@ -57,6 +57,16 @@ static void prim_triangle_surface(const render_prim_t *p, hit_t *hit)
     prim_triangle_bary(p, hit->point, &beta, &gamma);
     num_t alpha = num_sub(NUM_ONE, num_add(beta, gamma));
     hit->normal = p->normal;
+    if (p->normals) {
+        /* smooth (beyond the paper): the vertex normals interpolated, on
+         * the side of the plane's normal, which the tracer turns to the ray */
+        const vec3_t *n = p->normals->n;
+        vec3_t s = vec3_add(vec3_add(vec3_scale(n[0], alpha), vec3_scale(n[1], beta)),
+                            vec3_scale(n[2], gamma));
+        s = vec3_normalize(s);
+        if (!vec3_is_sat(s) && num_gt(vec3_length(s), NUM_C(0.5f)))
+            hit->normal = num_lt(vec3_dot(s, p->normal), NUM_ZERO) ? vec3_neg(s) : s;
+    }
     hit->tangent = vec3_normalize(p->e1);
     hit->u = num_add(num_add(num_mul(alpha, p->tex_u[0]), num_mul(beta, p->tex_u[1])),
                      num_mul(gamma, p->tex_u[2]));

@@ -51,6 +51,7 @@ static void reloc_scene(reloc_t *r, scene_t *s)
     scene_prim_t *prims = RELOC(r, s->prims, s->prim_count, "scene.prims");
     scene_density_component_t *comps =
         RELOC(r, s->density_components, s->density_component_count, "scene.density_components");
+    scene_normals_t *normals = RELOC(r, s->normals, s->normals_count, "scene.normals");
     if (r->bad)
         return;
     for (uint32_t i = 0; i < s->map_count; i++) {
@@ -69,6 +70,7 @@ static void reloc_scene(reloc_t *r, scene_t *s)
     s->keys = keys;
     s->prims = prims;
     s->density_components = comps;
+    s->normals = normals;
 }
 
 /* f and s are the copy's frame and scene; f->scene is rewritten by the
@@ -81,6 +83,7 @@ static void reloc_frame(reloc_t *r, render_frame_t *f, const scene_t *s)
     uint32_t *prim_list = RELOC(r, f->prim_list, f->prim_count, "frame.prim_list");
     num_t *inv_radius2 =
         RELOC(r, f->density_inv_radius2, s->density_component_count, "frame.density_inv_radius2");
+    scene_normals_t *normals = RELOC(r, f->normals, s->normals_count, "frame.normals");
     if (r->bad)
         return;
     for (uint32_t i = 0; i < f->prim_count; i++) {
@@ -88,7 +91,9 @@ static void reloc_frame(reloc_t *r, render_frame_t *f, const scene_t *s)
         const scene_density_component_t *comps =
             RELOC(r, p->components, p->component_count, "frame.prims[].components");
         const num_t *inv = RELOC(r, p->inv_radius2, p->component_count, "frame.prims[].inv_radius2");
+        const scene_normals_t *nrm = RELOC(r, p->normals, p->normals ? 1 : 0, "frame.prims[].normals");
         if (r->write && !r->bad) {
+            p->normals = nrm;
             p->components = comps;
             p->inv_radius2 = inv;
         }
@@ -100,6 +105,7 @@ static void reloc_frame(reloc_t *r, render_frame_t *f, const scene_t *s)
     f->prims = prims;
     f->prim_list = prim_list;
     f->density_inv_radius2 = inv_radius2;
+    f->normals = normals;
 }
 
 /* One pass over everything reachable from scene and frame (old

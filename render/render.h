@@ -75,6 +75,9 @@ typedef struct {
     vec3_t edge_n1, edge_n2;
     num_t height1, height2;
     num_t tex_u[3], tex_v[3];
+    const scene_normals_t *normals; /* reloc; TRIANGLE: -> its eye-space vertex
+                                       normals in frame normals (a smooth
+                                       triangle), NULL when flat */
     /* DENSITY.  Pointer fields: render_relocate (render/relocate.c) moves
      * each one; a new pointer field must be added there too. */
     const scene_density_component_t *components; /* -> scene density_components;
@@ -123,6 +126,8 @@ typedef struct {
     uint32_t *prim_list;           /* reloc; prim indices, grouped by cluster */
     num_t *density_inv_radius2;    /* reloc; 1/d^2 per scene density component:
                                       the field then needs no division */
+    scene_normals_t *normals;      /* reloc; the scene's smooth-triangle
+                                      normals in eye space, unit length */
     uint8_t precision_lost;        /* 1 if preparing hit a saturation (camera,
                                       cluster maps, boxes): every pixel then
                                       counts as lost precision */

@@ -146,6 +146,12 @@ typedef struct {
     num_t weight;       /* b; may be negative (a component that carves) */
 } scene_density_component_t;
 
+/* The unit normals at a smooth triangle's vertices, in its cluster's
+ * coordinates. */
+typedef struct {
+    vec3_t n[3];
+} scene_normals_t;
+
 /* A primitive, in the coordinates of its cluster. */
 typedef struct {
     uint8_t kind;       /* enum scene_prim_kind */
@@ -156,6 +162,9 @@ typedef struct {
             vec3_t v[3];   /* vertices; front face is either side */
             num_t tex_u[3]; /* map coordinate u per vertex */
             num_t tex_v[3]; /* map coordinate v per vertex */
+            uint32_t smooth; /* 0: flat (the paper's); k > 0: a smooth
+                                triangle (beyond the paper), its vertex
+                                normals are scene normals[k - 1] */
         } triangle;
         struct {
             vec3_t centre;
@@ -213,6 +222,7 @@ typedef struct {
     const scene_prim_t *prims;           uint32_t prim_count;     /* reloc */
     const scene_density_component_t *density_components;          /* reloc */
     uint32_t density_component_count;
+    const scene_normals_t *normals;      uint32_t normals_count;  /* reloc */
 } scene_t;
 
 #endif

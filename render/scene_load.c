@@ -137,7 +137,7 @@ static const uint32_t load_record_size[SCN_SEC_COUNT + 1] = {
     [SCN_SEC_MATERIALS] = SCN_MAT_SIZE,     [SCN_SEC_MAPS] = SCN_MAP_SIZE,
     [SCN_SEC_TEXELS] = 1,                   [SCN_SEC_CLUSTERS] = SCN_CLUSTER_SIZE,
     [SCN_SEC_PRIMS] = SCN_PRIM_SIZE,        [SCN_SEC_COMPONENTS] = SCN_COMPONENT_SIZE,
-    [SCN_SEC_KEYS] = SCN_KEY_SIZE,
+    [SCN_SEC_KEYS] = SCN_KEY_SIZE,          [SCN_SEC_NORMALS] = SCN_NORMALS_SIZE,
 };
 
 static const uint32_t load_count_limit[SCN_SEC_COUNT + 1] = {
@@ -145,7 +145,7 @@ static const uint32_t load_count_limit[SCN_SEC_COUNT + 1] = {
     [SCN_SEC_MATERIALS] = SCN_MAX_MATERIALS,    [SCN_SEC_MAPS] = SCN_MAX_MAPS,
     [SCN_SEC_TEXELS] = SCN_MAX_TEXEL_BYTES,     [SCN_SEC_CLUSTERS] = SCN_MAX_CLUSTERS,
     [SCN_SEC_PRIMS] = SCN_MAX_PRIMS,            [SCN_SEC_COMPONENTS] = SCN_MAX_COMPONENTS,
-    [SCN_SEC_KEYS] = SCN_MAX_KEYS,
+    [SCN_SEC_KEYS] = SCN_MAX_KEYS,              [SCN_SEC_NORMALS] = SCN_MAX_PRIMS,
 };
 
 static scene_load_status_t load_header(struct load *L, size_t len)
@@ -551,6 +551,7 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out)
                 o->shape.triangle.tex_u[k] = load_num(v + 36 + 4 * k);
                 o->shape.triangle.tex_v[k] = load_num(v + 48 + 4 * k);
             }
+            o->shape.triangle.smooth = 0;
             if (load_sliver(o->shape.triangle.v))
                 return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
                                 "degenerate or sliver triangle (a height under "
@@ -591,6 +592,39 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out)
     return SCENE_LOAD_OK;
 }
 
+/* The vertex normals of smooth triangles: each record names a triangle,
+ * later than the one before, and holds three unit normals. */
+static scene_load_status_t load_normals(struct load *L, scene_prim_t *prims,
+                                        scene_normals_t *out)
+{
+    uint32_t n = L->sec[SCN_SEC_NORMALS].present ? L->sec[SCN_SEC_NORMALS].count : 0;
+    uint32_t n_prim = L->sec[SCN_SEC_PRIMS].present ? L->sec[SCN_SEC_PRIMS].count : 0;
+    const num_t lo = NUM_C(1.0f - SCN_NORMAL_LENGTH_TOLERANCE);
+    const num_t hi = NUM_C(1.0f + SCN_NORMAL_LENGTH_TOLERANCE);
+    for (uint32_t i = 0; i < n; i++) {
+        const uint8_t *p = load_rec(L, SCN_SEC_NORMALS, i);
+        uint32_t prim = wire_get_u32(p + SCN_NORMALS_PRIM);
+        if (prim >= n_prim)
+            return load_bad(L, SCENE_LOAD_ERR_INDEX, "normals ", i, "prim index out of range");
+        if (i > 0 && prim <= wire_get_u32(load_rec(L, SCN_SEC_NORMALS, i - 1) + SCN_NORMALS_PRIM))
+            return load_bad(L, SCENE_LOAD_ERR_INDEX, "normals ", i,
+                            "prim index not above the previous record's");
+        if (prims[prim].kind != SCENE_PRIM_TRIANGLE)
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "normals ", i, "prim is not a triangle");
+        if (!load_coords(p + SCN_NORMALS_N, 9))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "normals ", i, "a value is not finite");
+        for (int k = 0; k < 3; k++) {
+            out[i].n[k] = load_vec3(p + SCN_NORMALS_N + 12 * k);
+            num_t len = vec3_length(out[i].n[k]);
+            if (num_lt(len, lo) || num_gt(len, hi))
+                return load_bad(L, SCENE_LOAD_ERR_VALUE, "normals ", i,
+                                "a normal is not of unit length");
+        }
+        prims[prim].shape.triangle.smooth = i + 1;
+    }
+    return SCENE_LOAD_OK;
+}
+
 /* ---------------------------------------------------------------- entry */
 
 #define LOAD_ALLOC(arena, type, n) ARENA_NEW_ARRAY((arena), type, (n) ? (n) : 1)
@@ -611,6 +645,7 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
     uint32_t n_map = L.sec[SCN_SEC_MAPS].count, n_tex = L.sec[SCN_SEC_TEXELS].count;
     uint32_t n_clu = L.sec[SCN_SEC_CLUSTERS].count, n_prim = L.sec[SCN_SEC_PRIMS].count;
     uint32_t n_comp = L.sec[SCN_SEC_COMPONENTS].count, n_key = L.sec[SCN_SEC_KEYS].count;
+    uint32_t n_nrm = L.sec[SCN_SEC_NORMALS].count;
     size_t mark = arena->used;
     scene_light_t *lights = LOAD_ALLOC(arena, scene_light_t, n_light);
     scene_material_t *mats = LOAD_ALLOC(arena, scene_material_t, n_mat);
@@ -620,10 +655,11 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
     scene_prim_t *prims = LOAD_ALLOC(arena, scene_prim_t, n_prim);
     scene_density_component_t *comps = LOAD_ALLOC(arena, scene_density_component_t, n_comp);
     scene_key_t *keys = LOAD_ALLOC(arena, scene_key_t, n_key);
+    scene_normals_t *normals = LOAD_ALLOC(arena, scene_normals_t, n_nrm);
     size_t scratch = arena->used;
     uint8_t *nesting = LOAD_ALLOC(arena, uint8_t, n_clu); /* scratch, released below */
     if (!lights || !mats || !maps || !texels || !clusters || !prims || !comps || !keys ||
-        !nesting) {
+        !normals || !nesting) {
         size_t need = arena->failed_request;
         arena_release_to(arena, mark);
         return load_fail(&L, SCENE_LOAD_ERR_ARENA, "arena too small for the scene: %ld bytes free, "
@@ -644,6 +680,8 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
         st = load_components(&L, comps);
     if (st == SCENE_LOAD_OK)
         st = load_prims(&L, prims);
+    if (st == SCENE_LOAD_OK)
+        st = load_normals(&L, prims, normals);
     if (st == SCENE_LOAD_OK && n_light == 0)
         st = load_fail(&L, SCENE_LOAD_ERR_MISSING, "the scene has no light");
     if (st != SCENE_LOAD_OK) {
@@ -666,6 +704,8 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
     out->prim_count = n_prim;
     out->density_components = comps;
     out->density_component_count = n_comp;
+    out->normals = normals;
+    out->normals_count = n_nrm;
     return SCENE_LOAD_OK;
 }
 
@@ -688,6 +728,7 @@ scene_load_status_t scene_load_shape(const uint8_t *buf, size_t len, scene_t *sh
     shape->key_count = L.sec[SCN_SEC_KEYS].count;
     shape->prim_count = L.sec[SCN_SEC_PRIMS].count;
     shape->density_component_count = L.sec[SCN_SEC_COMPONENTS].count;
+    shape->normals_count = L.sec[SCN_SEC_NORMALS].count;
     *texel_bytes = L.sec[SCN_SEC_TEXELS].count;
     return SCENE_LOAD_OK;
 }
@@ -705,8 +746,9 @@ size_t scene_load_bytes_layout(const scene_t *shape, uint32_t texel_bytes,
            LOAD_BYTES(lay->cluster, shape->cluster_count) +
            LOAD_BYTES(lay->prim, shape->prim_count) +
            LOAD_BYTES(lay->component, shape->density_component_count) +
-           LOAD_BYTES(lay->key, shape->key_count) + LOAD_BYTES(1, shape->cluster_count) +
-           9 * ARENA_MAX_ALIGN;
+           LOAD_BYTES(lay->key, shape->key_count) +
+           LOAD_BYTES(lay->normals, shape->normals_count) +
+           LOAD_BYTES(1, shape->cluster_count) + 10 * ARENA_MAX_ALIGN;
 #undef LOAD_BYTES
 }
 

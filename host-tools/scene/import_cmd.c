@@ -1,4 +1,4 @@
-/* import_cmd.c: `links1 import MODEL -o SCENE.scn [--fit] [--camera auto]`:
+/* import_cmd.c: `links1 import MODEL -o SCENE.scn [--fit] [--camera auto] [--smooth]`:
  * a model made elsewhere into a text scene (docs/import.md).  The scene is
  * written to a temporary file, read back and compiled before it takes
  * SCENE's name, so a refused model leaves no output at all. */
@@ -13,20 +13,21 @@
 #include "host-tools/scene/scene_cmds.h"
 #include "host-tools/scene/scene_import.h"
 
-enum { IMPORT_OPT_FIT = CLI_OWN_CODES, IMPORT_OPT_CAMERA };
+enum { IMPORT_OPT_FIT = CLI_OWN_CODES, IMPORT_OPT_CAMERA, IMPORT_OPT_SMOOTH };
 
-#define IMPORT_USAGE "links1 import MODEL -o SCENE.scn [--fit] [--camera auto]"
+#define IMPORT_USAGE "links1 import MODEL -o SCENE.scn [--fit] [--camera auto] [--smooth]"
 
 static const struct option import_options[] = {
     {"fit", no_argument, NULL, IMPORT_OPT_FIT},
     {"camera", required_argument, NULL, IMPORT_OPT_CAMERA},
+    {"smooth", no_argument, NULL, IMPORT_OPT_SMOOTH},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
 
 struct import_args {
     const char *model, *out;
-    int fit, camera_auto;
+    int fit, camera_auto, smooth;
 };
 
 static int import_args(int argc, char **argv, struct import_args *a)
@@ -41,6 +42,8 @@ static int import_args(int argc, char **argv, struct import_args *a)
             a->out = c.arg;
         } else if (code == IMPORT_OPT_FIT) {
             a->fit = 1;
+        } else if (code == IMPORT_OPT_SMOOTH) {
+            a->smooth = 1;
         } else if (code == IMPORT_OPT_CAMERA && strcmp(c.arg, "auto") == 0) {
             a->camera_auto = 1;
         } else if (code == IMPORT_OPT_CAMERA) {
@@ -141,7 +144,7 @@ static int import_write(const struct sd_scene *s, const char *const *maps, const
 
 int scene_cmd_import(int argc, char **argv)
 {
-    struct import_args a = {NULL, NULL, 0, 0};
+    struct import_args a = {NULL, NULL, 0, 0, 0};
     int r0 = import_args(argc, argv, &a);
     if (r0 != 0)
         return r0 > 0 ? 0 : 2;
@@ -169,7 +172,7 @@ int scene_cmd_import(int argc, char **argv)
     s.n_clusters = 1;
     char dir[IMPORT_PATH_MAX];
     import_dir(a.model, dir, sizeof dir);
-    struct import_opts o = {a.fit, -1, 0, "--fit"};
+    struct import_opts o = {a.fit, -1, 0, "--fit", a.smooth};
     int rc = scene_import_model(&s, 0, &m, dir, &o, r, err, sizeof err);
     if (rc == 0)
         rc = scene_import_view(&s, &m, r, a.camera_auto, stderr, err, sizeof err);
@@ -195,6 +198,10 @@ int scene_cmd_import(int argc, char **argv)
             fprintf(stderr, "links1 import: %s: %d degenerate triangle%s dropped, %d points "
                             "or lines left out\n",
                     a.model, r->degenerate, r->degenerate == 1 ? "" : "s", r->other);
+        if (r->flat)
+            fprintf(stderr, "links1 import: %s: --smooth, but %d of its %d triangles have no "
+                            "vertex normals in the file: they are flat\n",
+                    a.model, r->flat, r->triangles);
         printf("%s: %d triangles in %d clusters, %d materials, %d maps", a.out, r->triangles,
                r->clusters, r->materials, r->maps);
         if (r->scale != 1)

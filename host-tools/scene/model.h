@@ -25,6 +25,7 @@ struct model_mesh {
     int n_vertices;
     double *pos;            /* 3 per vertex */
     double *uv;             /* 2 per vertex, NULL when the mesh has none */
+    double *nrm;            /* vertex normals, 3 per vertex, NULL when none */
     int n_triangles;
     int *idx;               /* 3 vertex indices per triangle */
     int n_other;            /* points, lines: not triangles, left out */
@@ -85,6 +86,12 @@ struct model {
 /* Reads the model at path into *m.  0, or -1 with "PATH: why" in err (the
  * library's own message when it refuses the file) and *m empty. */
 int model_load(const char *path, struct model *m, char *err, size_t errlen);
+/* The same from size bytes in memory; hint is the format's file extension
+ * ("obj", "ply", "stl", "gltf", ...).  A file an OBJ or glTF names (its
+ * MTL, buffers) is still read from the disk. */
+#define MODEL_MEMORY_MAX (64u * 1024u * 1024u)
+int model_load_memory(const void *data, size_t size, const char *hint, struct model *m,
+                      char *err, size_t errlen);
 void model_free(struct model *m);
 
 #endif

@@ -97,11 +97,12 @@ static int model_copy_mesh(struct model_mesh *d, const struct aiMesh *a)
     d->n_vertices = (int)a->mNumVertices;
     d->pos = malloc(sizeof *d->pos * 3 * (a->mNumVertices + 1));
     d->uv = a->mTextureCoords[0] ? malloc(sizeof *d->uv * 2 * (a->mNumVertices + 1)) : NULL;
+    d->nrm = a->mNormals ? malloc(sizeof *d->nrm * 3 * (a->mNumVertices + 1)) : NULL;
     int n_tri = 0;
     for (unsigned f = 0; f < a->mNumFaces; f++)
         n_tri += a->mFaces[f].mNumIndices == 3;
     d->idx = malloc(sizeof *d->idx * 3 * (size_t)(n_tri + 1));
-    if (!d->pos || !d->idx || (a->mTextureCoords[0] && !d->uv))
+    if (!d->pos || !d->idx || (a->mTextureCoords[0] && !d->uv) || (a->mNormals && !d->nrm))
         return -1;
     for (unsigned v = 0; v < a->mNumVertices; v++) {
         d->pos[3 * v] = a->mVertices[v].x;
@@ -110,6 +111,11 @@ static int model_copy_mesh(struct model_mesh *d, const struct aiMesh *a)
         if (d->uv) {
             d->uv[2 * v] = a->mTextureCoords[0][v].x;
             d->uv[2 * v + 1] = a->mTextureCoords[0][v].y;
+        }
+        if (d->nrm) {
+            d->nrm[3 * v] = a->mNormals[v].x;
+            d->nrm[3 * v + 1] = a->mNormals[v].y;
+            d->nrm[3 * v + 2] = a->mNormals[v].z;
         }
     }
     for (unsigned f = 0; f < a->mNumFaces; f++) {
@@ -275,23 +281,78 @@ static int model_is_gltf(const char *path)
     return dot && (strcasecmp(dot, ".gltf") == 0 || strcasecmp(dot, ".glb") == 0);
 }
 
-int model_load(const char *path, struct model *m, char *err, size_t errlen)
+/* libassimp 5.2's PLY reader loops without end (allocating) on a header
+ * line it does not expect, e.g. `property float x outer loop` or a word
+ * that is no keyword (tests/fuzz/corpus/fuzz_import/regress-assimp-ply-*),
+ * so a PLY header is checked first: it ends in `end_header` within 64 KiB,
+ * and every line before is `format F V`, `comment ...`, `obj_info ...`,
+ * `element NAME COUNT`, `property TYPE NAME` or
+ * `property list COUNT_TYPE ITEM_TYPE NAME`.  0, or -1 with the line in err. */
+#define MODEL_PLY_HEADER_MAX 65536
+static int model_ply_header_ok(const char *data, size_t size, const char *name, char *err,
+                               size_t errlen)
+{
+    if (size < 3 || strncasecmp(data, "ply", 3) != 0)
+        return 0; /* the reader takes a file that begins so as PLY */
+    if (size > MODEL_PLY_HEADER_MAX)
+        size = MODEL_PLY_HEADER_MAX;
+    size_t at = 3;
+    while (at < size && data[at] != '\n')
+        at++; /* the rest of the magic line */
+    at++;
+    while (at < size) {
+        size_t end = at;
+        while (end < size && data[end] != '\n')
+            end++;
+        char line[256];
+        size_t n = end - at < sizeof line - 1 ? end - at : sizeof line - 1;
+        memcpy(line, data + at, n);
+        line[n] = 0;
+        at = end + 1;
+        char w[6][16];
+        int words = sscanf(line, "%15s %15s %15s %15s %15s %15s", w[0], w[1], w[2], w[3], w[4],
+                           w[5]);
+        if (words >= 1 && strcmp(w[0], "end_header") == 0)
+            return 0;
+        int ok = words <= 0 || (!strcmp(w[0], "comment") || !strcmp(w[0], "obj_info") ||
+                                (!strcmp(w[0], "format") && words == 3) ||
+                                (!strcmp(w[0], "element") && words == 3) ||
+                                (!strcmp(w[0], "property") &&
+                                 words == (words >= 2 && !strcmp(w[1], "list") ? 5 : 3)));
+        if (!ok) {
+            for (char *c = line; *c; c++)
+                if ((unsigned char)*c < ' ' || (unsigned char)*c > '~')
+                    *c = '?';
+            snprintf(err, errlen, "%s: a PLY header line the model library cannot take, "
+                                  "refused before it reads the file: '%.60s'",
+                     name, line);
+            return -1;
+        }
+    }
+    snprintf(err, errlen, "%s: a PLY header without end_header in its first %d bytes", name,
+             MODEL_PLY_HEADER_MAX);
+    return -1;
+}
+
+/* What the library read (sc, or NULL when it refused: its message) into *m;
+ * name names the model in err. */
+static int model_take(const struct aiScene *sc, const char *name, int gltf, struct model *m,
+                      char *err, size_t errlen)
 {
     memset(m, 0, sizeof *m);
-    const struct aiScene *sc = aiImportFile(path, MODEL_AI_FLAGS);
     if (!sc) {
         const char *why = aiGetErrorString();
-        snprintf(err, errlen, "%s: the model library cannot read it: %s", path,
+        snprintf(err, errlen, "%s: the model library cannot read it: %s", name,
                  why && why[0] ? why : "no reason given");
         return -1;
     }
     int rc = 0;
     if (!sc->mRootNode || (sc->mFlags & AI_SCENE_FLAGS_INCOMPLETE)) {
         snprintf(err, errlen, "%s: the model library read it only in part (incomplete scene)",
-                 path);
+                 name);
         rc = -1;
-    } else if (model_copy(m, sc, model_is_gltf(path)) != 0) {
-        snprintf(err, errlen, "%s: out of memory copying the model", path);
+    } else if (model_copy(m, sc, gltf) != 0) {
+        snprintf(err, errlen, "%s: out of memory copying the model", name);
         rc = -1;
     }
     aiReleaseImport(sc);
@@ -300,11 +361,44 @@ int model_load(const char *path, struct model *m, char *err, size_t errlen)
     return rc;
 }
 
+int model_load(const char *path, struct model *m, char *err, size_t errlen)
+{
+    memset(m, 0, sizeof *m);
+    FILE *f = fopen(path, "rb");
+    if (f) {
+        static char head[MODEL_PLY_HEADER_MAX];
+        size_t n = fread(head, 1, sizeof head, f);
+        fclose(f);
+        if (model_ply_header_ok(head, n, path, err, errlen) != 0)
+            return -1;
+    }
+    return model_take(aiImportFile(path, MODEL_AI_FLAGS), path, model_is_gltf(path), m, err,
+                      errlen);
+}
+
+int model_load_memory(const void *data, size_t size, const char *hint, struct model *m,
+                      char *err, size_t errlen)
+{
+    char name[32];
+    snprintf(name, sizeof name, "(memory).%s", hint);
+    if (size == 0 || size > MODEL_MEMORY_MAX) {
+        memset(m, 0, sizeof *m);
+        snprintf(err, errlen, "%s: %zu bytes, not 1 to %u", name, size, MODEL_MEMORY_MAX);
+        return -1;
+    }
+    if (model_ply_header_ok(data, size, name, err, errlen) != 0)
+        return -1;
+    const struct aiScene *sc =
+        aiImportFileFromMemory(data, (unsigned)size, MODEL_AI_FLAGS, hint);
+    return model_take(sc, name, model_is_gltf(name), m, err, errlen);
+}
+
 void model_free(struct model *m)
 {
     for (int i = 0; i < m->n_meshes; i++) {
         free(m->meshes[i].pos);
         free(m->meshes[i].uv);
+        free(m->meshes[i].nrm);
         free(m->meshes[i].idx);
     }
     free(m->nodes);

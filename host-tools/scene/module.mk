@@ -92,3 +92,9 @@ HOST_TESTS += test_auto_hierarchy_double test_auto_hierarchy_float test_auto_hie
 $(foreach a,double float fixed,$(eval test_auto_hierarchy_$(a)_SRCS = tests/host/test_auto_hierarchy.c $$(SCENE_TEXT_SRCS)))
 $(foreach a,double float fixed,$(eval test_auto_hierarchy_$(a)_ARITH := $(a)))
 $(foreach a,double float fixed,$(eval test_auto_hierarchy_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
+
+# Smooth triangles (`model { smooth on }`), each arithmetic.
+HOST_TESTS += test_smooth_double test_smooth_float test_smooth_fixed
+$(foreach a,double float fixed,$(eval test_smooth_$(a)_SRCS = tests/host/test_smooth.c $$(SCENE_TEXT_SRCS)))
+$(foreach a,double float fixed,$(eval test_smooth_$(a)_ARITH := $(a)))
+$(foreach a,double float fixed,$(eval test_smooth_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))

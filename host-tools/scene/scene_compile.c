@@ -130,6 +130,9 @@ static int compile_form(const struct sd_scene *s, uint8_t **out, size_t *len, ch
                  texel_bytes, SCN_MAX_TEXEL_BYTES);
         return -1;
     }
+    uint32_t n_smooth = 0;
+    for (int i = 0; i < s->n_prims; i++)
+        n_smooth += s->prims[i].kind == SCN_PRIM_TRIANGLE && s->prims[i].smooth;
     struct compile_section all[SCN_SEC_COUNT] = {
         {SCN_SEC_VIEW, 1, SCN_VIEW_SIZE, 0},
         {SCN_SEC_LIGHTS, (uint32_t)s->n_lights, SCN_LIGHT_SIZE, 0},
@@ -140,6 +143,7 @@ static int compile_form(const struct sd_scene *s, uint8_t **out, size_t *len, ch
         {SCN_SEC_PRIMS, (uint32_t)s->n_prims, SCN_PRIM_SIZE, 0},
         {SCN_SEC_COMPONENTS, (uint32_t)s->n_components, SCN_COMPONENT_SIZE, 0},
         {SCN_SEC_KEYS, (uint32_t)s->n_keys, SCN_KEY_SIZE, 0},
+        {SCN_SEC_NORMALS, n_smooth, SCN_NORMALS_SIZE, 0},
     };
     /* Layout: header, table of the non-empty sections, then their bodies. */
     struct compile_section used[SCN_SEC_COUNT];
@@ -228,6 +232,17 @@ static int compile_form(const struct sd_scene *s, uint8_t **out, size_t *len, ch
         case SCN_SEC_KEYS:
             for (int k = 0; k < s->n_keys; k++)
                 compile_key(&s->keys[k], p + (size_t)k * SCN_KEY_SIZE);
+            break;
+        case SCN_SEC_NORMALS:
+            for (int k = 0; k < s->n_prims; k++) {
+                const struct sd_prim *pr = &s->prims[k];
+                if (pr->kind != SCN_PRIM_TRIANGLE || !pr->smooth)
+                    continue;
+                wire_put_u32(p + SCN_NORMALS_PRIM, (uint32_t)k);
+                for (int j = 0; j < 9; j++)
+                    wire_put_f32(p + SCN_NORMALS_N + 4 * j, (float)pr->n[j]);
+                p += SCN_NORMALS_SIZE;
+            }
             break;
         }
     }

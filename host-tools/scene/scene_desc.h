@@ -67,6 +67,8 @@ struct sd_prim {
     int material, cluster;
     double v[SCN_PRIM_MAX_VALUES]; /* as in proto/scene_format.h */
     int first, count;       /* DENSITY: into components[] */
+    int smooth;             /* TRIANGLE: 1 with vertex normals n (beyond the paper) */
+    double n[9];            /* smooth: unit normals at v0, v1, v2, cluster coordinates */
 };
 
 struct sd_scene {

@@ -68,6 +68,25 @@ static void imp_triangle(const struct model_mesh *me, int t, double scale, doubl
     }
 }
 
+/* The model's normals at triangle t's vertices in the scene's coordinates
+ * (z negated), unit length; 0 when the mesh has none or one of them is
+ * zero or not finite (the triangle is then flat). */
+static int imp_normals(const struct model_mesh *me, int t, double n[9])
+{
+    if (!me->nrm)
+        return 0;
+    for (int j = 0; j < 3; j++) {
+        const double *a = me->nrm + 3 * me->idx[3 * t + j];
+        double len = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+        if (!isfinite(len) || !(len > 1e-6))
+            return 0;
+        n[3 * j] = a[0] / len;
+        n[3 * j + 1] = a[1] / len;
+        n[3 * j + 2] = -a[2] / len;
+    }
+    return 1;
+}
+
 /* Nodes, meshes and indices hold together and every number is finite. */
 static int imp_check_structure(struct imp *im)
 {
@@ -429,6 +448,11 @@ static int imp_commit(struct imp *im, struct sd_scene *s, int parent, struct sd_
                     /* the model's v runs up the image, the scene's down it */
                     pr.v[9 + jj] = me->uv ? me->uv[2 * vi] : jj == 1;
                     pr.v[12 + jj] = me->uv ? 1 - me->uv[2 * vi + 1] : jj == 2;
+                }
+                if (im->o->smooth) {
+                    pr.smooth = imp_normals(me, t, pr.n);
+                    im->r->smooth += pr.smooth;
+                    im->r->flat += !pr.smooth;
                 }
                 s->prims[s->n_prims++] = pr;
             }

@@ -22,12 +22,17 @@ struct import_opts {
     int material;      /* every triangle gets this scene material; -1: the model's */
     int nesting;       /* depth of the parent cluster below the root */
     const char *fit_hint; /* how the user asks for fit, for the refusal: "--fit" */
+    int smooth;        /* 1: triangles carry the model's vertex normals
+                          (beyond the paper); meshes without them stay flat */
 };
 
 struct import_result {
     int triangles;     /* placed */
     int degenerate;    /* dropped: vertices on one line */
     int other;         /* points and lines left out */
+    int smooth;        /* placed with vertex normals (opts smooth) */
+    int flat;          /* opts smooth, but flat: the mesh has no normals,
+                          or one of the three is zero or not finite */
     int clusters, materials, maps;
     double scale;      /* 1, or the --fit factor */
     double lo[3], hi[3]; /* extent of the placed model in its parent cluster */

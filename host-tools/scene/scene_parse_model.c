@@ -2,7 +2,7 @@
  * (docs/scene-format.md): a model file's nodes, triangles and materials
  * placed in the cluster the statement stands in (scene_import.h).
  *
- *   model { file "bison.obj"  material m  fit on }
+ *   model { file "bison.obj"  material m  fit on  smooth on }
  */
 #include <stdio.h>
 #include <string.h>
@@ -14,7 +14,7 @@ void parse_model(struct parser *p, int cluster, int nesting)
 {
     int line = p->lx.tok_line, col = p->lx.tok_col;
     char file[LEX_TOKEN_MAX] = "";
-    struct import_opts o = {0, -1, nesting, "'fit on'"};
+    struct import_opts o = {0, -1, nesting, "'fit on'", 0};
     lex_next(&p->lx);
     parse_open(p, "model");
     while (p->lx.kind != LEX_CLOSE) {
@@ -30,6 +30,9 @@ void parse_model(struct parser *p, int cluster, int nesting)
         } else if (lex_is_word(&p->lx, "fit")) {
             lex_next(&p->lx);
             o.fit = parse_on_off(p, "fit");
+        } else if (lex_is_word(&p->lx, "smooth")) {
+            lex_next(&p->lx);
+            o.smooth = parse_on_off(p, "smooth");
         } else {
             parse_unknown(p, "model");
         }
@@ -63,5 +66,9 @@ void parse_model(struct parser *p, int cluster, int nesting)
                         "lines left out\n",
                 p->lx.file, line, col, path, r.degenerate, r.degenerate == 1 ? "" : "s",
                 r.other);
+    if (r.flat)
+        fprintf(stderr, "%s:%d:%d: model %s: smooth on, but %d of its %d triangles have no "
+                        "vertex normals in the file: they are flat\n",
+                p->lx.file, line, col, path, r.flat, r.triangles);
     lex_next(&p->lx);
 }

@@ -129,9 +129,20 @@ static int parse_prim_material(struct parser *p, struct sd_prim *pr)
     return 0;
 }
 
+/* A vertex normal of a smooth triangle, made unit length. */
+static void parse_vertex_normal(struct parser *p, double n[3])
+{
+    parse_coord3(p, "vertex normal", n);
+    double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (!(len > 1e-6))
+        lex_error(&p->lx, "a vertex normal of length %g: it has no direction", len);
+    for (int i = 0; i < 3; i++)
+        n[i] /= len;
+}
+
 static void parse_triangle(struct parser *p, struct sd_prim *pr)
 {
-    int nv = 0, nuv = 0;
+    int nv = 0, nuv = 0, nn = 0;
     double *v = pr->v;
     /* default map coordinates: (0,0), (1,0), (0,1) */
     v[10] = 1;
@@ -151,6 +162,11 @@ static void parse_triangle(struct parser *p, struct sd_prim *pr)
             v[9 + nuv] = lex_number_in(&p->lx, "u", -SCN_MAX_COORD, SCN_MAX_COORD);
             v[12 + nuv] = lex_number_in(&p->lx, "v", -SCN_MAX_COORD, SCN_MAX_COORD);
             nuv++;
+        } else if (lex_is_word(&p->lx, "n")) {
+            if (nn == 3)
+                lex_error(&p->lx, "a triangle has three vertex normals");
+            lex_next(&p->lx);
+            parse_vertex_normal(p, pr->n + 3 * nn++);
         } else {
             parse_unknown(p, "triangle");
         }
@@ -159,6 +175,9 @@ static void parse_triangle(struct parser *p, struct sd_prim *pr)
         lex_error(&p->lx, "triangle has %d vertices, needs 3", nv);
     if (nuv != 0 && nuv != 3)
         lex_error(&p->lx, "triangle has %d uv pairs, needs 0 or 3", nuv);
+    if (nn != 0 && nn != 3)
+        lex_error(&p->lx, "triangle has %d vertex normals, needs 0 (flat) or 3 (smooth)", nn);
+    pr->smooth = nn == 3;
     if (sd_triangle_degenerate(v)) {
         double h = sd_triangle_min_height(v);
         if (h > 0)

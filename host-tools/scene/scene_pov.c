@@ -109,13 +109,17 @@ static void pov_prim(FILE *f, const struct sd_scene *s, const struct sd_prim *p,
     const double *v = p->v;
     switch (p->kind) {
     case SCN_PRIM_TRIANGLE:
-        fprintf(f, "triangle { ");
-        pov_vec(f, v);
-        fprintf(f, ", ");
-        pov_vec(f, v + 3);
-        fprintf(f, ", ");
-        pov_vec(f, v + 6);
-        fprintf(f, "\n");
+        /* a smooth triangle: POV-Ray's smooth_triangle, each vertex with
+         * its normal */
+        fprintf(f, p->smooth ? "smooth_triangle { " : "triangle { ");
+        for (int j = 0; j < 3; j++) {
+            pov_vec(f, v + 3 * j);
+            if (p->smooth) {
+                fprintf(f, ", ");
+                pov_vec(f, p->n + 3 * j);
+            }
+            fprintf(f, j < 2 ? ", " : "\n");
+        }
         break;
     case SCN_PRIM_ELLIPSOID:
         fprintf(f, "sphere { <0, 0, 0>, 1 scale ");

@@ -120,6 +120,8 @@ static void wr_prim(FILE *f, const struct sd_scene *s, const struct sd_prim *p, 
             wr_vec(f, " uv", v + 9 + j, 1);
             wr_num(f, v[12 + j]);
         }
+        for (int j = 0; p->smooth && j < 3; j++)
+            wr_vec(f, " n", p->n + 3 * j, 3);
         break;
     case SCN_PRIM_ELLIPSOID:
         fprintf(f, "ellipsoid { material %s", mat);

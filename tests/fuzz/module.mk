@@ -36,3 +36,18 @@ BOARD_TESTS += tests/fuzz/smoke.sh
 BOARD_PROGS += seed_frames
 seed_frames_SRCS := tests/fuzz/seed_frames.c
 seed_frames_ARITH := double
+
+# Model files through libassimp from memory, then the project's importer,
+# the text writer and parser, the compiler, the loader and a few pixels.
+FUZZERS += fuzz_import
+fuzz_import_SRCS = tests/fuzz/fuzz_import.c $(SCENE_TEXT_SRCS)
+fuzz_import_ARITH := float
+fuzz_import_LIBS = $(SCENE_TEXT_LIBS)
+# about 70 inputs a second (the library, then a whole compile and trace):
+# the smoke run takes fewer.  From seed 1 the mutations reach one of
+# libassimp's own crashes after about 1190 inputs; the smoke run stops
+# short of that (the 10-minute run goes past them, see RESULTS)
+fuzz_import_SMOKE_RUNS := 1000
+# libassimp 5.2 itself aborts or loops on some inputs (tests/fuzz/assimp-crashes/):
+# the long run goes on past them in fork mode, keeping each input
+fuzz_import_RUN_FLAGS := -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1
