@@ -57,3 +57,8 @@ BOARD_TESTS += tests/board/boot_smp.sh tests/board/channels.sh tests/board/idle6
 	tests/board/fault.sh
 
 BENCHES += tests/bench/bench_boot.sh tests/bench/bench_channels.sh tests/bench/bench_link.sh
+
+# Stop-and-wait retransmission of the host link through --link-noise's damage.
+HOST_TESTS += test_link_arq
+test_link_arq_SRCS := tests/host/test_link_arq.c host-tools/link_noise.c
+test_link_arq_ARITH := double
