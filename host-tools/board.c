@@ -1,6 +1,7 @@
 /* board.c: start QEMU, frame I/O with the board, stop QEMU (see board.h). */
 #define _GNU_SOURCE /* memfd_create */
 #include "host-tools/board.h"
+#include "host-tools/link_relay.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -247,6 +248,27 @@ void board_attach(struct board *b, const struct board_opts *o, int fd)
     board_take_fd(b, fd);
 }
 
+/* --link-noise: a relay between our end (returned) and QEMU's socket. */
+static int board_noise_relay(const struct board_opts *o, int qemu_side)
+{
+    int rv[2];
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, rv) < 0) {
+        fprintf(stderr, "links1: socketpair: %s\n", strerror(errno));
+        close(qemu_side);
+        return -1;
+    }
+    if (link_relay_start(rv[1], qemu_side, o->link_noise, o->link_noise_seed) < 0) {
+        close(rv[0]);
+        close(rv[1]);
+        close(qemu_side);
+        return -1;
+    }
+    if (!o->quiet)
+        printf("links1: link noise %g per byte each way (seed %llu)\n", o->link_noise,
+               (unsigned long long)o->link_noise_seed);
+    return rv[0];
+}
+
 int board_start(struct board *b, const struct board_opts *o)
 {
     board_init(b, o);
@@ -279,8 +301,13 @@ int board_start(struct board *b, const struct board_opts *o)
     if (pid == 0)
         board_qemu_exec(b, sv[1]);
     close(sv[1]);
-    board_take_fd(b, sv[0]);
     b->qemu_pid = pid;
+    int tool_fd = sv[0];
+    if (o->link_noise_on && (tool_fd = board_noise_relay(o, sv[0])) < 0) {
+        board_stop(b);
+        return -1;
+    }
+    board_take_fd(b, tool_fd);
     if (!o->quiet)
         printf("links1: booting %s on %d cores (DM, RC, %d NCs), QEMU pid %d\n",
                b->firmware, o->ncores, o->ncores - 2, (int)pid);
@@ -292,6 +319,11 @@ int board_start_named(struct board *b, const struct board_opts *o, const char *n
 {
     board_init(b, o);
     b->named = 1;
+    if (o->link_noise_on) {
+        fprintf(stderr, "links1: --link-noise works on a board the command starts and "
+                "stops, not a named board\n");
+        return -1;
+    }
     if (board_find_firmware(o, b->firmware, sizeof b->firmware) < 0)
         return -1;
     if (o->ncores < UNITS_MIN_CORES || o->ncores > UNITS_MAX_CORES) {

@@ -41,6 +41,10 @@ struct board_opts {
     int view;               /* 1: -device ramfb and a display (links1 render --view) */
     int link;               /* bulk bytes: LINK_PATH_SHARED (--link fast, the
                                default) or LINK_PATH_SERIAL (--link serial) */
+    int link_noise_on;      /* --link-noise RATE[:SEED] given: a noisy relay
+                               between us and QEMU (host-tools/link_relay.h) */
+    double link_noise;      /* its damage events per byte, each way */
+    uint64_t link_noise_seed;
 };
 
 /* A frame copied out of the decoder, valid as long as the caller keeps it. */
@@ -86,7 +90,7 @@ struct board {
 void board_opts_init(struct board_opts *o);
 
 /* The board options every board subcommand takes (--smp, --arith,
- * --firmware, --timeout, --ram, --quiet, --link, --verbose, --gdb): entries for the subcommand's
+ * --firmware, --timeout, --ram, --quiet, --link, --verbose, --gdb, --link-noise): entries for the subcommand's
  * getopt_long table, and their codes. */
 enum board_opt_code {
     BOARD_OPT_SMP = CLI_BOARD_CODES,
@@ -98,6 +102,7 @@ enum board_opt_code {
     BOARD_OPT_LINK,
     BOARD_OPT_VERBOSE,
     BOARD_OPT_GDB,
+    BOARD_OPT_LINK_NOISE,
 };
 #define BOARD_LONG_OPTIONS                                       \
     {"smp", required_argument, NULL, BOARD_OPT_SMP},             \
@@ -108,7 +113,8 @@ enum board_opt_code {
     {"quiet", no_argument, NULL, BOARD_OPT_QUIET},               \
     {"link", required_argument, NULL, BOARD_OPT_LINK},           \
     {"verbose", no_argument, NULL, BOARD_OPT_VERBOSE},           \
-    {"gdb", required_argument, NULL, BOARD_OPT_GDB}
+    {"gdb", required_argument, NULL, BOARD_OPT_GDB},             \
+    {"link-noise", required_argument, NULL, BOARD_OPT_LINK_NOISE}
 
 /* Takes the board option cli_next() returned as code into o.  Returns 1
  * when it took it, 0 when code is not a board option, -1 after printing

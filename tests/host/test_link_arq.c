@@ -4,11 +4,15 @@
  * byte pipes, stepped on a virtual clock.  Every run must either deliver
  * every message bit-exact, in order, exactly once, or end with the sender
  * giving up, having delivered an exact prefix: never wrong data. */
+#include <poll.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include "host-tools/link_noise.h"
+#include "host-tools/link_relay.h"
 #include "proto/link_arq.h"
 #include "proto/wire.h"
 #include "tests/check.h"
@@ -334,6 +338,80 @@ static void noise_parse_rate_and_seed(void)
     CHECK(strstr(why, "SEED") != NULL);
 }
 
+/* Writes n pattern bytes into a and reads what arrives at b (until n bytes
+ * or 0.3 s of silence); returns the bytes read into got. */
+static size_t relay_pass(int a, int b, size_t n, uint8_t *got, size_t cap)
+{
+    size_t put = 0, have = 0;
+    while (have < cap) {
+        struct pollfd p[2] = {{a, put < n ? POLLOUT : 0, 0}, {b, POLLIN, 0}};
+        if (poll(p, 2, 300) <= 0)
+            break;
+        if (p[0].revents & POLLOUT) {
+            uint8_t chunk[4096];
+            size_t k = n - put < sizeof chunk ? n - put : sizeof chunk;
+            for (size_t i = 0; i < k; i++)
+                chunk[i] = sim_byte((uint32_t)(put + i));
+            ssize_t w = write(a, chunk, k);
+            if (w > 0)
+                put += (size_t)w;
+        }
+        if (p[1].revents & POLLIN) {
+            ssize_t r = read(b, got + have, cap - have);
+            if (r <= 0)
+                break;
+            have += (size_t)r;
+        }
+        if (put == n && have >= n && n > 0 && have == cap)
+            break;
+    }
+    return have;
+}
+
+static void relay_passes_bytes_and_ends_with_either_side(void)
+{
+    int tool[2], qemu[2];
+    CHECK(socketpair(AF_UNIX, SOCK_STREAM, 0, tool) == 0);
+    CHECK(socketpair(AF_UNIX, SOCK_STREAM, 0, qemu) == 0);
+    CHECK_EQ_INT(link_relay_start(tool[1], qemu[0], 0, 1), 0);
+    size_t n = 1u << 20;
+    uint8_t *got = malloc(n);
+    CHECK_EQ_INT(relay_pass(tool[0], qemu[1], n, got, n), n);
+    int same = 1;
+    for (size_t i = 0; i < n; i++)
+        same &= got[i] == sim_byte((uint32_t)i);
+    CHECK(same);
+    CHECK_EQ_INT(relay_pass(qemu[1], tool[0], n, got, n), n);
+    close(qemu[1]); /* QEMU ends: the tool reads end-of-file */
+    uint8_t c;
+    struct pollfd p = {tool[0], POLLIN, 0};
+    CHECK(poll(&p, 1, 2000) == 1);
+    CHECK_EQ_INT(read(tool[0], &c, 1), 0);
+    close(tool[0]);
+    free(got);
+}
+
+static void relay_damages_at_its_rate(void)
+{
+    int tool[2], qemu[2];
+    CHECK(socketpair(AF_UNIX, SOCK_STREAM, 0, tool) == 0);
+    CHECK(socketpair(AF_UNIX, SOCK_STREAM, 0, qemu) == 0);
+    CHECK_EQ_INT(link_relay_start(tool[1], qemu[0], 1e-2, 7), 0);
+    size_t n = 1u << 18;
+    uint8_t *got = malloc(2 * n);
+    size_t k = relay_pass(tool[0], qemu[1], n, got, 2 * n);
+    /* Drops and additions nearly balance; count the bytes that differ in
+     * place up to the first length change instead: some must. */
+    size_t differ = 0;
+    for (size_t i = 0; i < k && i < n; i++)
+        differ += got[i] != sim_byte((uint32_t)i);
+    CHECK(k > n - n / 50 && k < n + n / 50);
+    CHECK(differ > 0);
+    close(qemu[1]);
+    close(tool[0]);
+    free(got);
+}
+
 int main(void)
 {
     RUN(arq_receiver_takes_once_and_naks_others);
@@ -345,5 +423,7 @@ int main(void)
     RUN(arq_sequence_wraps);
     RUN(noise_counts_each_kind_near_rate);
     RUN(noise_parse_rate_and_seed);
+    RUN(relay_passes_bytes_and_ends_with_either_side);
+    RUN(relay_damages_at_its_rate);
     return check_exit();
 }
