@@ -603,10 +603,29 @@ int board_wait_frame(struct board *b, uint8_t type, int timeout_ms,
     return board_wait_frame_of(b, 1u << type, timeout_ms, out, what);
 }
 
+uint32_t board_frames_lost(const struct board *b)
+{
+    const struct link_stats *s = &b->dec.stats;
+    return s->crc_errors + s->bad_length + s->seq_gaps + b->host_frames_dropped;
+}
+
+int board_check_lost(const struct board *b, uint32_t before, const char *what)
+{
+    if (board_frames_lost(b) == before)
+        return 0;
+    const struct link_stats *s = &b->dec.stats;
+    fprintf(stderr, "links1: the host link lost a frame while waiting for %s (from the board: "
+            "%u bad CRC, %u bad length, %u seq gaps; %u frames from the host dropped by the "
+            "board): the link does not retransmit, so the wait ends here\n", what,
+            s->crc_errors, s->bad_length, s->seq_gaps, b->host_frames_dropped);
+    return -1;
+}
+
 int board_wait_frame_of(struct board *b, uint32_t mask, int timeout_ms,
                         struct board_frame *out, const char *what)
 {
     long long end = board_now_ms() + timeout_ms;
+    uint32_t lost = board_frames_lost(b);
     for (;;) {
         for (int i = 0; i < b->queued; i++) {
             if (b->queue[i].type >= 32 || !(mask & (1u << b->queue[i].type)))
@@ -617,6 +636,10 @@ int board_wait_frame_of(struct board *b, uint32_t mask, int timeout_ms,
             b->queued--;
             return 0;
         }
+        /* Not here, and the link lost a frame since the wait began: it may
+         * have been this one. */
+        if (board_check_lost(b, lost, what) < 0)
+            return -1;
         long long left = end - board_now_ms();
         if (left <= 0) {
             fprintf(stderr, "links1: no %s from the board within %d ms\n", what, timeout_ms);

@@ -177,6 +177,15 @@ void board_unget_frame(struct board *b, const struct board_frame *f);
 /* Waits for the LINK_RESULT of cmd; checks its size and cmd field.  On
  * success *status is the board's status, *fields and *nfields its result bytes
  * (pointing into out).  Returns 0, or -1 after printing why. */
+/* Frames the link lost so far: from the board (bad CRC or length, seq
+ * gaps) and from the host (the board's reports of dropping one). */
+uint32_t board_frames_lost(const struct board *b);
+
+/* 0 while board_frames_lost is still before; else -1 after printing that
+ * the wait for what ends on a lost frame (a frame waited for may be the
+ * one lost: an error now rather than a wait until a timeout or wrong data). */
+int board_check_lost(const struct board *b, uint32_t before, const char *what);
+
 int board_wait_result(struct board *b, uint16_t cmd, int timeout_ms,
                       struct board_frame *out, int *status,
                       const uint8_t **fields, size_t *nfields);
