@@ -25,7 +25,7 @@ BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
 	tests/board/render_anim.sh tests/board/render_refuse.sh tests/board/render_view.sh \
 	tests/board/render_spd.sh tests/board/render_link.sh tests/board/board_named.sh \
 	tests/board/render_progress.sh tests/board/render_faults.sh tests/board/render_faults_silent.sh \
-	tests/board/render_resume.sh
+	tests/board/render_resume.sh tests/board/render_link_noise.sh
 RENDER_FULL_TESTS := tests/board/render_grid_full.sh tests/board/render_faults_full.sh
 
 .PHONY: test-full
