@@ -62,5 +62,11 @@ BENCHES += tests/bench/bench_boot.sh tests/bench/bench_channels.sh tests/bench/b
 
 # Stop-and-wait retransmission of the host link through --link-noise's damage.
 HOST_TESTS += test_link_arq
-test_link_arq_SRCS := tests/host/test_link_arq.c host-tools/link_noise.c host-tools/link_relay.c
+test_link_arq_SRCS := tests/host/test_link_arq.c host-tools/link_noise.c host-tools/link_relay.c \
+	host-tools/link_arq_sim.c
 test_link_arq_ARITH := double
+# The retransmission's goodput through simulated noise (make bench).
+HOST_TOOLS += bench-link-arq
+bench-link-arq_SRCS := host-tools/arq_bench_main.c host-tools/link_arq_sim.c \
+	host-tools/link_noise.c
+bench-link-arq_ARITH := double

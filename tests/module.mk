@@ -37,6 +37,7 @@ BENCHES += tests/bench/bench_host.sh
 BENCHES += tests/bench/bench_render.sh tests/bench/bench_arith.sh tests/bench/bench_scale.sh
 # Issue 12: failed NCs (the time a failure costs a frame), the long soak run.
 BENCHES += tests/bench/bench_faults.sh tests/bench/bench_soak.sh
+BENCHES += tests/bench/bench_link_noise.sh
 
 # Encodings of the rendering commands and the NC statistics the RC sums.
 HOST_TESTS += test_render_link
