@@ -15,7 +15,8 @@
  *
  * Each direction numbers its own frames.  A receiver that sees a gap or a
  * repeat in seq, or a bad CRC, counts it and reports it (struct link_stats);
- * the emulated line itself never drops bytes, so any such count is a bug.
+ * the emulated line itself never drops bytes, so any such count is a bug
+ * (or the damage of the --link-noise test hook, docs/host-link.md).
  * After a bad frame the decoder resynchronises on the next 'L' '1'.
  */
 #ifndef LINKS1_PROTO_HOSTLINK_H
