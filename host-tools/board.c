@@ -1,6 +1,7 @@
 /* board.c: start QEMU, frame I/O with the board, stop QEMU (see board.h). */
 #define _GNU_SOURCE /* memfd_create */
 #include "host-tools/board.h"
+#include "host-tools/link_relay.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -250,6 +251,27 @@ void board_attach(struct board *b, const struct board_opts *o, int fd)
     board_take_fd(b, fd);
 }
 
+/* --link-noise: a relay between our end (returned) and QEMU's socket. */
+static int board_noise_relay(const struct board_opts *o, int qemu_side)
+{
+    int rv[2];
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, rv) < 0) {
+        fprintf(stderr, "links1: socketpair: %s\n", strerror(errno));
+        close(qemu_side);
+        return -1;
+    }
+    if (link_relay_start(rv[1], qemu_side, o->link_noise, o->link_noise_seed) < 0) {
+        close(rv[0]);
+        close(rv[1]);
+        close(qemu_side);
+        return -1;
+    }
+    if (!o->quiet)
+        printf("links1: link noise %g per byte each way (seed %llu)\n", o->link_noise,
+               (unsigned long long)o->link_noise_seed);
+    return rv[0];
+}
+
 int board_start(struct board *b, const struct board_opts *o)
 {
     board_init(b, o);
@@ -282,8 +304,13 @@ int board_start(struct board *b, const struct board_opts *o)
     if (pid == 0)
         board_qemu_exec(b, sv[1]);
     close(sv[1]);
-    board_take_fd(b, sv[0]);
     b->qemu_pid = pid;
+    int tool_fd = sv[0];
+    if (o->link_noise_on && (tool_fd = board_noise_relay(o, sv[0])) < 0) {
+        board_stop(b);
+        return -1;
+    }
+    board_take_fd(b, tool_fd);
     if (!o->quiet)
         printf("links1: booting %s on %d cores (DM, RC, %d NCs), QEMU pid %d\n",
                b->firmware, o->ncores, o->ncores - 2, (int)pid);
@@ -295,6 +322,11 @@ int board_start_named(struct board *b, const struct board_opts *o, const char *n
 {
     board_init(b, o);
     b->named = 1;
+    if (o->link_noise_on) {
+        fprintf(stderr, "links1: --link-noise works on a board the command starts and "
+                "stops, not a named board\n");
+        return -1;
+    }
     if (board_find_firmware(o, b->firmware, sizeof b->firmware) < 0)
         return -1;
     if (o->ncores < UNITS_MIN_CORES || o->ncores > UNITS_MAX_CORES) {
@@ -574,10 +606,29 @@ int board_wait_frame(struct board *b, uint8_t type, int timeout_ms,
     return board_wait_frame_of(b, 1u << type, timeout_ms, out, what);
 }
 
+uint32_t board_frames_lost(const struct board *b)
+{
+    const struct link_stats *s = &b->dec.stats;
+    return s->crc_errors + s->bad_length + s->seq_gaps + b->host_frames_dropped;
+}
+
+int board_check_lost(const struct board *b, uint32_t before, const char *what)
+{
+    if (board_frames_lost(b) == before)
+        return 0;
+    const struct link_stats *s = &b->dec.stats;
+    fprintf(stderr, "links1: the host link lost a frame while waiting for %s (from the board: "
+            "%u bad CRC, %u bad length, %u seq gaps; %u frames from the host dropped by the "
+            "board): the link does not retransmit, so the wait ends here\n", what,
+            s->crc_errors, s->bad_length, s->seq_gaps, b->host_frames_dropped);
+    return -1;
+}
+
 int board_wait_frame_of(struct board *b, uint32_t mask, int timeout_ms,
                         struct board_frame *out, const char *what)
 {
     long long end = board_now_ms() + timeout_ms;
+    uint32_t lost = board_frames_lost(b);
     for (;;) {
         for (int i = 0; i < b->queued; i++) {
             if (b->queue[i].type >= 32 || !(mask & (1u << b->queue[i].type)))
@@ -588,6 +639,10 @@ int board_wait_frame_of(struct board *b, uint32_t mask, int timeout_ms,
             b->queued--;
             return 0;
         }
+        /* Not here, and the link lost a frame since the wait began: it may
+         * have been this one. */
+        if (board_check_lost(b, lost, what) < 0)
+            return -1;
         long long left = end - board_now_ms();
         if (left <= 0) {
             fprintf(stderr, "links1: no %s from the board within %d ms\n", what, timeout_ms);

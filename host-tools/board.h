@@ -43,6 +43,10 @@ struct board_opts {
     int view;               /* 1: -device ramfb and a display (links1 render --view) */
     int link;               /* bulk bytes: LINK_PATH_SHARED (--link fast, the
                                default) or LINK_PATH_SERIAL (--link serial) */
+    int link_noise_on;      /* --link-noise RATE[:SEED] given: a noisy relay
+                               between us and QEMU (host-tools/link_relay.h) */
+    double link_noise;      /* its damage events per byte, each way */
+    uint64_t link_noise_seed;
 };
 
 /* A frame copied out of the decoder, valid as long as the caller keeps it. */
@@ -88,7 +92,7 @@ struct board {
 void board_opts_init(struct board_opts *o);
 
 /* The board options every board subcommand takes (--smp, --arith,
- * --firmware, --timeout, --ram, --quiet, --link, --verbose, --gdb): entries for the subcommand's
+ * --firmware, --timeout, --ram, --quiet, --link, --verbose, --gdb, --link-noise): entries for the subcommand's
  * getopt_long table, and their codes. */
 enum board_opt_code {
     BOARD_OPT_SMP = CLI_BOARD_CODES,
@@ -100,6 +104,7 @@ enum board_opt_code {
     BOARD_OPT_LINK,
     BOARD_OPT_VERBOSE,
     BOARD_OPT_GDB,
+    BOARD_OPT_LINK_NOISE,
 };
 #define BOARD_LONG_OPTIONS                                       \
     {"smp", required_argument, NULL, BOARD_OPT_SMP},             \
@@ -110,7 +115,8 @@ enum board_opt_code {
     {"quiet", no_argument, NULL, BOARD_OPT_QUIET},               \
     {"link", required_argument, NULL, BOARD_OPT_LINK},           \
     {"verbose", no_argument, NULL, BOARD_OPT_VERBOSE},           \
-    {"gdb", required_argument, NULL, BOARD_OPT_GDB}
+    {"gdb", required_argument, NULL, BOARD_OPT_GDB},             \
+    {"link-noise", required_argument, NULL, BOARD_OPT_LINK_NOISE}
 
 /* Takes the board option cli_next() returned as code into o.  Returns 1
  * when it took it, 0 when code is not a board option, -1 after printing
@@ -173,6 +179,15 @@ void board_unget_frame(struct board *b, const struct board_frame *f);
 /* Waits for the LINK_RESULT of cmd; checks its size and cmd field.  On
  * success *status is the board's status, *fields and *nfields its result bytes
  * (pointing into out).  Returns 0, or -1 after printing why. */
+/* Frames the link lost so far: from the board (bad CRC or length, seq
+ * gaps) and from the host (the board's reports of dropping one). */
+uint32_t board_frames_lost(const struct board *b);
+
+/* 0 while board_frames_lost is still before; else -1 after printing that
+ * the wait for what ends on a lost frame (a frame waited for may be the
+ * one lost: an error now rather than a wait until a timeout or wrong data). */
+int board_check_lost(const struct board *b, uint32_t before, const char *what);
+
 int board_wait_result(struct board *b, uint16_t cmd, int timeout_ms,
                       struct board_frame *out, int *status,
                       const uint8_t **fields, size_t *nfields);

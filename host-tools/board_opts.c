@@ -9,6 +9,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "host-tools/link_noise.h"
 #include "proto/arith.h"
 
 const char board_opts_usage[] =
@@ -22,7 +23,9 @@ const char board_opts_usage[] =
     "  --verbose        print each unit computer reporting in\n"
     "  --gdb PORT       start halted, QEMU's gdb stub on 127.0.0.1:PORT (make gdb)\n"
     "  --link L         bulk bytes through shared memory (fast, default) or the\n"
-    "                   serial link (serial); commands and results always go serially\n";
+    "                   serial link (serial); commands and results always go serially\n"
+    "  --link-noise RATE[:SEED]  test hook: a relay flips, drops, duplicates and\n"
+    "                   inserts bytes at RATE per byte both ways (boards this command starts)\n";
 
 int board_arith_code(const char *arith)
 {
@@ -62,6 +65,15 @@ int board_opt(struct board_opts *o, const struct cli *c, int code)
             return cli_bad_value(c, "fast or serial");
         o->link = strcmp(c->arg, "fast") == 0 ? LINK_PATH_SHARED : LINK_PATH_SERIAL;
         return 1;
+    case BOARD_OPT_LINK_NOISE: {
+        char why[200];
+        if (link_noise_parse(c->arg, &o->link_noise, &o->link_noise_seed, why, sizeof why) < 0) {
+            fprintf(stderr, "%s: %s %s\n", c->prog, c->name, why);
+            return -1;
+        }
+        o->link_noise_on = 1;
+        return 1;
+    }
     case BOARD_OPT_FIRMWARE:
         o->firmware = c->arg;
         return 1;

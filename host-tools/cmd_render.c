@@ -334,8 +334,8 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
         render_usage(stderr);
         return -1;
     }
-    if (o->board_name && (o->count_insns || o->board.view)) {
-        fprintf(stderr, "links1 render: --count-insns and --view need a board of this "
+    if (o->board_name && (o->count_insns || o->board.view || o->board.link_noise_on)) {
+        fprintf(stderr, "links1 render: --count-insns, --view and --link-noise need a board of this "
                 "command's own, not --board %s\n", o->board_name);
         return -1;
     }

@@ -3,7 +3,8 @@
 HOST_TOOLS += links1
 # The launcher: every program that starts a board links these.
 BOARD_LAUNCHER_SRCS := host-tools/board.c host-tools/board_frames.c \
-	host-tools/board_opts.c host-tools/cli_opt.c host-tools/board_named.c
+	host-tools/board_opts.c host-tools/cli_opt.c host-tools/board_named.c \
+	host-tools/link_noise.c host-tools/link_relay.c
 links1_SRCS := host-tools/links1.c $(BOARD_LAUNCHER_SRCS) \
 	host-tools/cmd_boot.c host-tools/cmd_selftest.c host-tools/selftest_checks.c \
 	host-tools/selftest_link.c host-tools/link_transfer.c host-tools/link_shared.c host-tools/insn_report.c \
@@ -41,7 +42,8 @@ test_link_shared_SRCS := tests/host/test_link_shared.c $(BOARD_LAUNCHER_SRCS) \
 test_link_shared_ARITH := double
 # The argument reader of every command and the board options.
 HOST_TESTS += test_cli_opt
-test_cli_opt_SRCS := tests/host/test_cli_opt.c host-tools/board_opts.c host-tools/cli_opt.c
+test_cli_opt_SRCS := tests/host/test_cli_opt.c host-tools/board_opts.c host-tools/cli_opt.c \
+	host-tools/link_noise.c
 test_cli_opt_ARITH := double
 HOST_TESTS += test_hostlink_session
 test_hostlink_session_SRCS := tests/host/test_hostlink_session.c $(BOARD_LAUNCHER_SRCS)
@@ -58,3 +60,14 @@ BOARD_TESTS += tests/board/boot_smp.sh tests/board/channels.sh tests/board/idle6
 	tests/board/fault.sh
 
 BENCHES += tests/bench/bench_boot.sh tests/bench/bench_channels.sh tests/bench/bench_link.sh
+
+# Stop-and-wait retransmission of the host link through --link-noise's damage.
+HOST_TESTS += test_link_arq
+test_link_arq_SRCS := tests/host/test_link_arq.c host-tools/link_noise.c host-tools/link_relay.c \
+	host-tools/link_arq_sim.c
+test_link_arq_ARITH := double
+# The retransmission's goodput through simulated noise (make bench).
+HOST_TOOLS += bench-link-arq
+bench-link-arq_SRCS := host-tools/arq_bench_main.c host-tools/link_arq_sim.c \
+	host-tools/link_noise.c
+bench-link-arq_ARITH := double

@@ -45,17 +45,9 @@ static void decoder_resync(struct link_decoder *d)
     d->have -= i;
 }
 
-int link_decoder_push(struct link_decoder *d, uint8_t b, struct link_frame *f)
+/* Delivers the frame at the start of the buffer, if one is complete and good. */
+static int decoder_scan(struct link_decoder *d, struct link_frame *f)
 {
-    if (d->delivered) {
-        /* The last frame's payload had to stay valid until this push; now drop
-         * it, keeping any bytes after it (a frame recovered by a resync can be
-         * followed by bytes of the next one). */
-        memmove(d->buf, d->buf + d->delivered, d->have - d->delivered);
-        d->have -= d->delivered;
-        d->delivered = 0;
-    }
-    d->buf[d->have++] = b;
     for (;;) {
         if (d->have >= 1 && d->buf[0] != LINK_SYNC0) {
             decoder_resync(d);
@@ -96,6 +88,35 @@ int link_decoder_push(struct link_decoder *d, uint8_t b, struct link_frame *f)
         d->delivered = total;
         return 1;
     }
+}
+
+/* The last frame's payload had to stay valid until now; drop it, keeping any
+ * bytes after it (a frame recovered by a resync can be followed by bytes of
+ * the next one). */
+static void decoder_drop_delivered(struct link_decoder *d)
+{
+    if (d->delivered) {
+        memmove(d->buf, d->buf + d->delivered, d->have - d->delivered);
+        d->have -= d->delivered;
+        d->delivered = 0;
+    }
+}
+
+int link_decoder_push(struct link_decoder *d, uint8_t b, struct link_frame *f)
+{
+    decoder_drop_delivered(d);
+    d->buf[d->have++] = b;
+    return decoder_scan(d, f);
+}
+
+int link_decoder_unstick(struct link_decoder *d, struct link_frame *f)
+{
+    decoder_drop_delivered(d);
+    if (d->have == 0)
+        return 0;
+    d->stats.stalls++;
+    decoder_resync(d);
+    return decoder_scan(d, f);
 }
 
 void link_hello_put(uint8_t *p, const struct link_hello *h)

@@ -15,7 +15,8 @@
  *
  * Each direction numbers its own frames.  A receiver that sees a gap or a
  * repeat in seq, or a bad CRC, counts it and reports it (struct link_stats);
- * the emulated line itself never drops bytes, so any such count is a bug.
+ * the emulated line itself never drops bytes, so any such count is a bug
+ * (or the damage of the --link-noise test hook, docs/host-link.md).
  * After a bad frame the decoder resynchronises on the next 'L' '1'.
  */
 #ifndef LINKS1_PROTO_HOSTLINK_H
@@ -250,6 +251,7 @@ struct link_stats {
     uint32_t bad_length;/* headers with length > LINK_MAX_PAYLOAD */
     uint32_t junk_bytes;/* bytes skipped while looking for sync */
     uint32_t seq_gaps;  /* frames whose seq was not last+1 */
+    uint32_t stalls;    /* partial frames given up by link_decoder_unstick */
 };
 
 struct link_decoder {
@@ -275,6 +277,13 @@ void link_decoder_init(struct link_decoder *d);
 
 /* Returns 1 and fills *f when b completes a good frame, else 0. */
 int link_decoder_push(struct link_decoder *d, uint8_t b, struct link_frame *f);
+
+/* For a receiver whose line went quiet in the middle of a frame (a damaged
+ * length field makes the decoder wait for bytes that never come): gives up
+ * the partial frame's first byte and rescans the rest for sync.  Returns 1
+ * and fills *f when a good frame was waiting behind it, else 0.  Call it
+ * again until it returns 0 and no partial frame is left (d->have). */
+int link_decoder_unstick(struct link_decoder *d, struct link_frame *f);
 
 /* ---- payload encodings ---- */
 void link_hello_put(uint8_t *p, const struct link_hello *h);

@@ -1,7 +1,7 @@
 # proto/: what the firmware and the host tools share: wire and file formats,
 # result layouts, the arithmetic codes, the core counts, the area schedules,
 # the text formatter.
-SHARED_SRCS += proto/crc32.c proto/hostlink.c proto/arith.c proto/areas.c proto/textfmt.c
+SHARED_SRCS += proto/crc32.c proto/hostlink.c proto/link_arq.c proto/arith.c proto/areas.c proto/textfmt.c
 
 # The shared formatter against the host's snprintf.
 HOST_TESTS += test_textfmt

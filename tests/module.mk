@@ -25,7 +25,7 @@ BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
 	tests/board/render_anim.sh tests/board/render_refuse.sh tests/board/render_view.sh \
 	tests/board/render_spd.sh tests/board/render_link.sh tests/board/board_named.sh \
 	tests/board/render_progress.sh tests/board/render_faults.sh tests/board/render_faults_silent.sh \
-	tests/board/render_resume.sh \
+	tests/board/render_resume.sh tests/board/render_link_noise.sh \
 	tests/board/render_trace.sh tests/board/render_refraction.sh tests/board/figures_small.sh
 RENDER_FULL_TESTS := tests/board/render_grid_full.sh tests/board/render_faults_full.sh
 
@@ -39,6 +39,7 @@ BENCHES += tests/bench/bench_render.sh tests/bench/bench_arith.sh tests/bench/be
 # Issue 12: failed NCs (the time a failure costs a frame), the long soak run.
 BENCHES += tests/bench/bench_faults.sh tests/bench/bench_soak.sh
 BENCHES += tests/bench/bench_big.sh
+BENCHES += tests/bench/bench_link_noise.sh
 
 # Encodings of the rendering commands and the NC statistics the RC sums.
 HOST_TESTS += test_render_link

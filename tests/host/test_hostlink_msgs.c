@@ -141,6 +141,35 @@ static void msg_dropped_frame_report_is_counted(void)
     close(b.fd);
 }
 
+/* A frame lost while the host waits (the board's report of one it
+ * dropped, or a damaged frame from the board) ends the wait at once with an
+ * error: the link does not retransmit, and the frame waited for may be the
+ * one lost. */
+static void msg_lost_frame_ends_the_wait(void)
+{
+    for (int kind = 0; kind < 2; kind++) {
+        struct board b;
+        int peer;
+        CHECK(fake_session(&b, &peer) == 0);
+        uint8_t frame[64], p[16] = {0, 0, 0xfd, 0xff}; /* cmd 0, LINK_ERR_BAD_FRAME */
+        memcpy(p + 4, "bad CRC", 7);
+        size_t n = link_frame_encode(frame, sizeof frame, LINK_RESULT, 0, 0, p, 11);
+        if (kind == 1)
+            frame[9] ^= 0x10; /* the report itself damaged: a bad CRC here */
+        CHECK(write(peer, frame, n) == (ssize_t)n);
+        struct board_frame r;
+        int status = -1;
+        const uint8_t *fields = NULL;
+        size_t nf = 0;
+        long long t0 = board_now_ms();
+        CHECK_EQ_INT(board_wait_result(&b, CMD_LINE_PING, 5000, &r, &status, &fields, &nf), -1);
+        CHECK(board_now_ms() - t0 < 2000);
+        CHECK_EQ_INT(board_frames_lost(&b), 1);
+        close(peer);
+        close(b.fd);
+    }
+}
+
 static void msg_hello_and_fault_are_recorded(void)
 {
     struct board b;
@@ -180,6 +209,7 @@ int main(void)
     RUN(msg_cmd_frame_bytes_are_pinned);
     RUN(msg_result_frame_is_parsed);
     RUN(msg_dropped_frame_report_is_counted);
+    RUN(msg_lost_frame_ends_the_wait);
     RUN(msg_hello_and_fault_are_recorded);
     return check_exit();
 }
