@@ -253,13 +253,16 @@ static void rc_nc_dispatch(struct rc_run *run, struct line_msg *m)
     int working = 0;
     for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
         struct rc_nc *n = &run->nc[k];
-        if (n->state == RC_NC_PARKED && run->status == LINK_OK && rc_nc_area_left(run)) {
-            /* An NC that waited while every area was out gets one taken back. */
-            if (run->trace)
+        /* An NC that waited while every area was out gets one taken back.
+         * Traced, only a hand-out is a record (a parked NC is looked at on
+         * every pass). */
+        if (n->state == RC_NC_PARKED && run->status == LINK_OK) {
+            if (!run->trace) {
+                (void)rc_nc_give(run, k, m);
+            } else if (rc_nc_area_left(run)) {
                 insn_mark_trace_span_begin();
-            int handed = rc_nc_give(run, k, m);
-            if (run->trace)
-                rc_nc_trace_served(run, k, handed);
+                rc_nc_trace_served(run, k, rc_nc_give(run, k, m));
+            }
         }
         working |= n->state == RC_NC_BUSY || n->state == RC_NC_IDLE;
     }

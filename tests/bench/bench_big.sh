@@ -5,8 +5,7 @@
 # board, each NC's clip lists), rendered on the board (links1 render
 # --arith float --ncs 8 --count-insns at BENCH_BIG_SIZE, default 160x120)
 # and on the host (links1 ref --arith float), the two images compared.
-# One run each; prints a markdown table.  Takes many minutes: most of it is
-# the upload over the emulated serial link.
+# One run each; prints a markdown table.  Takes many minutes.
 set -u
 cd "$(dirname "$0")/../.."
 LINKS1=${LINKS1:-build/links1}
