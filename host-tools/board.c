@@ -208,6 +208,11 @@ static void board_init(struct board *b, const struct board_opts *o)
     b->lock_fd = -1;
     b->started_ms = board_now_ms();
     link_decoder_init(&b->dec);
+    /* We number our frames from 0; the board's numbering is learnt from its
+     * first frame, except on a board we boot (board_start: from 0). */
+    link_arq_store_init(&b->arq_tx, 0);
+    link_arq_rx_init(&b->arq_rx);
+    b->arq_heard_ms = b->started_ms;
 }
 
 /* The board's RAM as a memfd, mapped here (proto/board_map.h). */
@@ -275,6 +280,7 @@ static int board_noise_relay(const struct board_opts *o, int qemu_side)
 int board_start(struct board *b, const struct board_opts *o)
 {
     board_init(b, o);
+    b->arq_rx.known = 1; /* the board we boot numbers its frames from 0 */
     if (board_find_firmware(o, b->firmware, sizeof b->firmware) < 0)
         return -1;
     if (o->ncores < UNITS_MIN_CORES || o->ncores > UNITS_MAX_CORES) {
@@ -321,6 +327,7 @@ int board_start_named(struct board *b, const struct board_opts *o, const char *n
                       int timeout_ms)
 {
     board_init(b, o);
+    b->arq_rx.known = 1; /* the board we boot numbers its frames from 0 */
     b->named = 1;
     if (o->link_noise_on) {
         fprintf(stderr, "links1: --link-noise works on a board the command starts and "
@@ -426,6 +433,125 @@ static int board_lost(struct board *b, const char *why)
     return -1;
 }
 
+/* ---- the retransmission (proto/link_arq.h, go-back-N) ---- */
+
+static int board_write_all(struct board *b, const uint8_t *p, size_t n, int timeout_ms);
+
+/* The retransmission gives up: every wait from now on fails. */
+static int board_arq_give_up(struct board *b, const char *why)
+{
+    if (!b->arq_failed)
+        fprintf(stderr, "links1: the host link gave up: %s (noise on the link: %u bad CRC, "
+                "%u bad length, %u junk bytes from the board; %u frames from the host "
+                "dropped by the board)\n", why, b->dec.stats.crc_errors,
+                b->dec.stats.bad_length, b->dec.stats.junk_bytes, b->host_frames_dropped);
+    b->arq_failed = 1;
+    return -1;
+}
+
+static int board_send_nak(struct board *b, uint8_t flags)
+{
+    uint8_t f[LINK_HEADER_SIZE + LINK_ACK_SIZE + LINK_CRC_SIZE];
+    size_t n = link_arq_nak_encode(f, sizeof f, flags, b->arq_rx.expect);
+    return board_write_all(b, f, n, BOARD_FRAME_TIMEOUT_MS);
+}
+
+/* The board's frame we expect was lost (a gap, a damaged frame): ask for it,
+ * at most once per LINK_ARQ_NAK_MS, and give up after LINK_ARQ_MAX_ASKS
+ * asks in a row. */
+static int board_arq_lost(struct board *b)
+{
+    b->arq_armed = 1;
+    if (!b->arq_rx.known)
+        return 0; /* the board's numbering is not known yet: nothing to name */
+    if (!link_arq_nak_due(&b->arq_nak, b->arq_rx.expect, (uint64_t)board_now_ms(),
+                          LINK_ARQ_NAK_MS))
+        return 0;
+    if (b->arq_nak.tries > LINK_ARQ_MAX_ASKS) {
+        char why[96];
+        snprintf(why, sizeof why, "frame %u from the board did not come through whole after "
+                 "%d requests", b->arq_rx.expect, LINK_ARQ_MAX_ASKS);
+        return board_arq_give_up(b, why);
+    }
+    return board_send_nak(b, 0);
+}
+
+/* A LINK_NAK from the board: our frames from the seq it names, sent again. */
+static int board_arq_nak_in(struct board *b, const struct link_frame *f)
+{
+    b->arq_armed = 1;
+    if (f->length < LINK_ACK_SIZE)
+        return 0;
+    uint16_t from = wire_get_u16(f->payload);
+    char why[96];
+    if (f->flags & LINK_FLAG_GONE) {
+        snprintf(why, sizeof why, "the board no longer holds its frame %u that we asked for",
+                 from);
+        return board_arq_give_up(b, why);
+    }
+    int span = link_arq_store_span(&b->arq_tx, from);
+    if (span < 0) {
+        snprintf(why, sizeof why, "the board asked for our frame %u, no longer held", from);
+        board_send_nak(b, LINK_FLAG_GONE);
+        return board_arq_give_up(b, why);
+    }
+    span = link_arq_store_resend_count(&b->arq_tx, from, span);
+    for (int i = 0; i < span; i++) {
+        uint8_t frame[LINK_MAX_FRAME];
+        size_t n = link_arq_store_get(&b->arq_tx, (uint16_t)(from + i), frame, sizeof frame);
+        if (board_write_all(b, frame, n, BOARD_FRAME_TIMEOUT_MS) < 0)
+            return -1;
+        b->arq_resends++;
+    }
+    return 0;
+}
+
+/* A good frame from the board: NAKs answered, numbered frames handled in
+ * seq order only, each once. */
+static int board_arq_frame(struct board *b, const struct link_frame *f)
+{
+    b->arq_heard_ms = board_now_ms();
+    b->arq_polls = 0;
+    if (f->type == LINK_NAK)
+        return board_arq_nak_in(b, f);
+    switch (link_arq_rx_take(&b->arq_rx, f)) {
+    case LINK_ARQ_NEW:
+        return board_handle_frame(b, f);
+    case LINK_ARQ_DUP:
+        b->arq_dups++;
+        return 0;
+    default:
+        return board_arq_lost(b);
+    }
+}
+
+/* Nothing heard for LINK_ARQ_POLL_MS on a link seen damaged: a partial frame
+ * is given up, and a poll asks the board to send again what we lack and to
+ * name what it lacks. */
+static int board_arq_poll(struct board *b)
+{
+    struct link_frame f;
+    while (b->dec.have) {
+        if (link_decoder_unstick(&b->dec, &f) && board_arq_frame(b, &f) < 0)
+            return -1;
+    }
+    b->arq_heard_ms = board_now_ms();
+    if (!b->arq_rx.known)
+        return 0; /* the first good frame sets the numbering */
+    if (++b->arq_polls > LINK_ARQ_MAX_TRIES) {
+        char why[96];
+        snprintf(why, sizeof why, "%d polls over %d s brought no frame from the board",
+                 LINK_ARQ_MAX_TRIES, LINK_ARQ_MAX_TRIES * LINK_ARQ_POLL_MS / 1000);
+        return board_arq_give_up(b, why);
+    }
+    return board_send_nak(b, LINK_FLAG_POLL);
+}
+
+int board_arq_failed(const struct board *b)
+{
+    return b->arq_failed;
+}
+
 /* Reads what is available now and handles every completed frame. */
 static int board_read_available(struct board *b)
 {
@@ -443,7 +569,14 @@ static int board_read_available(struct board *b)
         }
         for (ssize_t i = 0; i < n; i++) {
             struct link_frame f;
-            if (link_decoder_push(&b->dec, buf[i], &f) && board_handle_frame(b, &f) < 0)
+            const struct link_stats *s = &b->dec.stats;
+            uint32_t damaged = s->crc_errors + s->bad_length, junk = s->junk_bytes;
+            int got = link_decoder_push(&b->dec, buf[i], &f);
+            if (s->crc_errors + s->bad_length != damaged && board_arq_lost(b) < 0)
+                return -1;
+            if (s->junk_bytes != junk)
+                b->arq_armed = 1;
+            if (got && board_arq_frame(b, &f) < 0)
                 return -1;
         }
         fflush(stdout);
@@ -454,10 +587,16 @@ static int board_read_available(struct board *b)
 
 int board_pump(struct board *b, int timeout_ms)
 {
-    if (b->fd < 0)
+    if (b->fd < 0 || b->arq_failed)
         return -1;
+    int wait = timeout_ms < 0 ? 0 : timeout_ms;
+    if (b->arq_armed) {
+        long long due = b->arq_heard_ms + LINK_ARQ_POLL_MS - board_now_ms();
+        if (due < wait)
+            wait = due < 0 ? 0 : (int)due;
+    }
     struct pollfd p = {.fd = b->fd, .events = POLLIN};
-    int r = poll(&p, 1, timeout_ms < 0 ? 0 : timeout_ms);
+    int r = poll(&p, 1, wait);
     if (r < 0 && errno != EINTR) {
         fprintf(stderr, "links1: poll: %s\n", strerror(errno));
         return -1;
@@ -468,8 +607,12 @@ int board_pump(struct board *b, int timeout_ms)
          * batch instead of a wake-up per byte (host CPU QEMU needs). */
         struct timespec batch = {0, BOARD_READ_BATCH_US * 1000L};
         nanosleep(&batch, NULL);
-        return board_read_available(b);
+        if (board_read_available(b) < 0)
+            return -1;
     }
+    if (b->arq_armed && board_now_ms() - b->arq_heard_ms >= LINK_ARQ_POLL_MS &&
+        board_arq_poll(b) < 0)
+        return -1;
     return 0;
 }
 
@@ -557,7 +700,8 @@ int board_send(struct board *b, uint8_t type, uint8_t flags, const void *payload
 {
     uint8_t frame[LINK_MAX_FRAME];
     uint16_t seq = b->tx_seq;
-    size_t n = link_frame_encode(frame, sizeof frame, type, flags, seq, payload, len);
+    b->arq_tx.next_seq = seq; /* kept for resending (proto/link_arq.h) */
+    size_t n = link_arq_store_frame(&b->arq_tx, frame, sizeof frame, type, flags, payload, len);
     if (n == 0) {
         fprintf(stderr, "links1: frame payload of %zu bytes is over the %d-byte limit\n",
                 len, LINK_MAX_PAYLOAD);
@@ -606,29 +750,10 @@ int board_wait_frame(struct board *b, uint8_t type, int timeout_ms,
     return board_wait_frame_of(b, 1u << type, timeout_ms, out, what);
 }
 
-uint32_t board_frames_lost(const struct board *b)
-{
-    const struct link_stats *s = &b->dec.stats;
-    return s->crc_errors + s->bad_length + s->seq_gaps + b->host_frames_dropped;
-}
-
-int board_check_lost(const struct board *b, uint32_t before, const char *what)
-{
-    if (board_frames_lost(b) == before)
-        return 0;
-    const struct link_stats *s = &b->dec.stats;
-    fprintf(stderr, "links1: the host link lost a frame while waiting for %s (from the board: "
-            "%u bad CRC, %u bad length, %u seq gaps; %u frames from the host dropped by the "
-            "board): the link does not retransmit, so the wait ends here\n", what,
-            s->crc_errors, s->bad_length, s->seq_gaps, b->host_frames_dropped);
-    return -1;
-}
-
 int board_wait_frame_of(struct board *b, uint32_t mask, int timeout_ms,
                         struct board_frame *out, const char *what)
 {
     long long end = board_now_ms() + timeout_ms;
-    uint32_t lost = board_frames_lost(b);
     for (;;) {
         for (int i = 0; i < b->queued; i++) {
             if (b->queue[i].type >= 32 || !(mask & (1u << b->queue[i].type)))
@@ -639,10 +764,6 @@ int board_wait_frame_of(struct board *b, uint32_t mask, int timeout_ms,
             b->queued--;
             return 0;
         }
-        /* Not here, and the link lost a frame since the wait began: it may
-         * have been this one. */
-        if (board_check_lost(b, lost, what) < 0)
-            return -1;
         long long left = end - board_now_ms();
         if (left <= 0) {
             fprintf(stderr, "links1: no %s from the board within %d ms\n", what, timeout_ms);
@@ -694,8 +815,9 @@ uint32_t board_report_link_errors(const struct board *b)
     if (n)
         fprintf(stderr, "links1: link errors: from the board %u bad CRC, %u bad length, "
                 "%u junk bytes, %u seq gaps (in %u good frames); %u frames from the host "
-                "dropped by the board\n", s->crc_errors, s->bad_length, s->junk_bytes,
-                s->seq_gaps, s->frames, b->host_frames_dropped);
+                "dropped by the board; %u of our frames sent again, %u of the board's taken "
+                "twice and dropped\n", s->crc_errors, s->bad_length, s->junk_bytes,
+                s->seq_gaps, s->frames, b->host_frames_dropped, b->arq_resends, b->arq_dups);
     return n;
 }
 

@@ -22,6 +22,7 @@
 #include "host-tools/cli_opt.h"
 #include "host-tools/links1_params.h"
 #include "proto/hostlink.h"
+#include "proto/link_arq.h"
 
 struct board_opts {
     int ncores;             /* -smp */
@@ -68,6 +69,16 @@ struct board {
     size_t ram_size;
     struct link_decoder dec;    /* board -> host frames */
     uint16_t tx_seq;            /* host -> board frame counter */
+    /* The retransmission (proto/link_arq.h, go-back-N; host-tools/board.c): */
+    struct link_arq_store arq_tx; /* our numbered frames, kept for resending */
+    struct link_arq_rx arq_rx;  /* the board's frames, taken in seq order */
+    struct link_arq_nak arq_nak;/* our NAKs' rate limit and give-up count */
+    long long arq_heard_ms;     /* when the last good frame came */
+    int arq_armed;              /* the link was seen damaged: poll when silent */
+    int arq_polls;              /* polls in a row with no frame heard */
+    int arq_failed;             /* the retransmission gave up: every wait fails */
+    uint32_t arq_resends;       /* our frames sent again */
+    uint32_t arq_dups;          /* board frames dropped as taken already */
     int reported_count;         /* distinct cores that sent HELLO */
     uint8_t reported[UNITS_MAX_CORES]; /* 1 once core k sent HELLO */
     int hello_errors;           /* HELLOs with a wrong role/ncores/variant/core */
@@ -179,15 +190,6 @@ void board_unget_frame(struct board *b, const struct board_frame *f);
 /* Waits for the LINK_RESULT of cmd; checks its size and cmd field.  On
  * success *status is the board's status, *fields and *nfields its result bytes
  * (pointing into out).  Returns 0, or -1 after printing why. */
-/* Frames the link lost so far: from the board (bad CRC or length, seq
- * gaps) and from the host (the board's reports of dropping one). */
-uint32_t board_frames_lost(const struct board *b);
-
-/* 0 while board_frames_lost is still before; else -1 after printing that
- * the wait for what ends on a lost frame (a frame waited for may be the
- * one lost: an error now rather than a wait until a timeout or wrong data). */
-int board_check_lost(const struct board *b, uint32_t before, const char *what);
-
 int board_wait_result(struct board *b, uint16_t cmd, int timeout_ms,
                       struct board_frame *out, int *status,
                       const uint8_t **fields, size_t *nfields);
@@ -197,10 +199,14 @@ int board_wait_result(struct board *b, uint16_t cmd, int timeout_ms,
 int board_pump(struct board *b, int timeout_ms);
 
 /* Link errors seen so far, both ways: frames from the board with a bad CRC
- * or length, seq gaps or junk, and frames from the host the board dropped. */
+ * or length, seq gaps or junk, and frames from the host the board dropped.
+ * The retransmission repairs them; board_arq_failed says when it could not. */
 uint32_t board_link_errors(const struct board *b);
-/* Prints the decoder's counters when any is non-zero; returns that count. */
+/* Prints the decoder's counters (and the frames sent again) when any is
+ * non-zero; returns that count. */
 uint32_t board_report_link_errors(const struct board *b);
+/* 1 once the retransmission gave up (an error was printed naming the frame). */
+int board_arq_failed(const struct board *b);
 
 /* Shuts the board down: CMD_SHUTDOWN, wait for QEMU to exit, SIGTERM, and
  * SIGKILL only as a last resort.  Returns 0 when QEMU exited by itself after

@@ -158,7 +158,6 @@ int render_session_frame(struct board *b, const struct link_render_args *a, int 
         return -1;
     long long t0 = board_now_ms(), heard = t0, drawn = 0;
     struct link_progress last = {a->frame, 0, 0, 0, 0};
-    uint32_t lost = board_frames_lost(b);
     for (;;) {
         struct board_frame f;
         if (!render_session_take(b, &f)) {
@@ -167,10 +166,6 @@ int render_session_frame(struct board *b, const struct link_render_args *a, int 
                         "(RENDER_SILENCE_MS)\n", a->frame, RENDER_SILENCE_MS / 1000);
                 return -1;
             }
-            /* No result yet, and a frame was lost since the command: it
-             * may have been the command or its result. */
-            if (board_check_lost(b, lost, "the render result") < 0)
-                return -1;
             if (board_pump(b, RENDER_PROGRESS_REDRAW_MS) < 0) {
                 fprintf(stderr, "\nlinks1: frame %u: the board stopped while rendering\n",
                         a->frame);

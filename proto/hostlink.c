@@ -80,10 +80,12 @@ static int decoder_scan(struct link_decoder *d, struct link_frame *f)
         f->seq = wire_get_u16(d->buf + 4);
         f->length = len;
         f->payload = d->buf + LINK_HEADER_SIZE;
-        if (d->seq_known && f->seq != d->next_seq && !(f->flags & LINK_FLAG_SESSION))
-            d->stats.seq_gaps++;
-        d->seq_known = 1;
-        d->next_seq = (uint16_t)(f->seq + 1);
+        if (f->type != LINK_NAK) { /* unnumbered */
+            if (d->seq_known && f->seq != d->next_seq && !(f->flags & LINK_FLAG_SESSION))
+                d->stats.seq_gaps++;
+            d->seq_known = 1;
+            d->next_seq = (uint16_t)(f->seq + 1);
+        }
         d->stats.frames++;
         d->delivered = total;
         return 1;

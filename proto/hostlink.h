@@ -13,10 +13,12 @@
  *   8       len   payload (fields little-endian, see proto/wire.h)
  *   8+len   4     crc32 of bytes 2 .. 8+len-1 (type through payload)
  *
- * Each direction numbers its own frames.  A receiver that sees a gap or a
- * repeat in seq, or a bad CRC, counts it and reports it (struct link_stats);
- * the emulated line itself never drops bytes, so any such count is a bug
- * (or the damage of the --link-noise test hook, docs/host-link.md).
+ * Each direction numbers its own frames (LINK_NAK, unnumbered, excepted).  A
+ * receiver that sees a gap or a repeat in seq, or a bad CRC, counts it
+ * (struct link_stats) and asks for the frames again (proto/link_arq.h: every
+ * frame is kept for resending, go-back-N); the emulated line itself never
+ * drops bytes, so any such count is the damage of the --link-noise test hook
+ * (docs/host-link.md) or a bug.
  * After a bad frame the decoder resynchronises on the next 'L' '1'.
  */
 #ifndef LINKS1_PROTO_HOSTLINK_H
@@ -42,6 +44,8 @@ enum link_type {
     LINK_ACK = 7,    /* either way: u16 seq of the last DATA frame taken in */
     LINK_PROGRESS = 8, /* board -> host: rendering progress (proto/render_link.h) */
     LINK_BULK = 9,   /* either way: bulk bytes in the board's shared RAM (link_bulk) */
+    LINK_NAK = 10,   /* either way, unnumbered: the retransmission's request, u16 seq
+                      * the receiver expects next (proto/link_arq.h) */
 };
 
 /* LINK_CMD payload: u16 enum link_cmd, then that command's arguments
@@ -80,6 +84,10 @@ enum link_flag {
     LINK_FLAG_SESSION = 1u << 1, /* any frame: the sender starts its numbering
                                   * again here (a new host session on a board
                                   * left running); no seq gap is counted */
+    LINK_FLAG_POLL = 1u << 2,    /* LINK_NAK: the sender heard nothing for a while;
+                                  * answer with a LINK_NAK naming your own expected seq */
+    LINK_FLAG_GONE = 1u << 3,    /* LINK_NAK: the seq asked for is no longer held
+                                  * for resending: the link gives up */
 };
 
 /* LINK_RESULT status values (i16).  Every error result carries text naming

@@ -1,7 +1,10 @@
 /* dm.c: the data manipulator (DM) program: the unit computer that talks to
  * the host.  Two cooperative tasks:
- *   "hostrx"  drains the UART receive ring through the frame decoder and
- *             queues whole frames (reporting dropped frames at once);
+ *   "hostrx"  drains the UART receive ring through the frame decoder, takes
+ *             the host's frames in seq order only and queues them
+ *             (reporting dropped frames at once and asking for them again
+ *             with LINK_NAK), and answers the host's LINK_NAKs by sending
+ *             the board's frames again (proto/link_arq.h, go-back-N);
  *   "dmcmd"   takes queued frames and carries out the host's commands,
  *             asking the RC (and through it the NCs) over the serial lines.
  * A full queue stops hostrx, which stops draining the UART ring, which
@@ -24,6 +27,7 @@
 #include "kernel/task.h"
 #include "proto/crc32.h"
 #include "proto/hostlink.h"
+#include "proto/link_arq.h"
 #include "proto/wire.h"
 #include "roles/dm.h"
 #include "roles/gigs.h"
@@ -40,13 +44,17 @@ struct dm_frame dm_frame;            /* the frame dmcmd works on */
 struct line_msg dm_msg;              /* the DM's line message buffer */
 uint32_t dm_link_errors;             /* frames dropped so far (host -> board) */
 static uint64_t dm_poll_ticks;       /* UART_RX_POLL_US in timer ticks */
+/* The host's frames are taken in seq order: it numbers from 0 at our boot,
+ * or from a frame flagged LINK_FLAG_SESSION. */
+static struct link_arq_rx dm_arq_rx = {1, 0};
+static struct link_arq_nak dm_nak;   /* our NAKs' rate limit */
 
 /* ------------------------------------------------------------ hostrx */
 
 static uint32_t dm_decoder_errors(void)
 {
     const struct link_stats *s = &dm_dec.stats;
-    return s->crc_errors + s->bad_length + s->seq_gaps;
+    return s->crc_errors + s->bad_length; /* gaps: dm_host_frame NAKs them */
 }
 
 static void dm_queue_frame(const struct link_frame *f)
@@ -70,37 +78,95 @@ static void dm_queue_frame(const struct link_frame *f)
     task_signal_local();
 }
 
+/* Asks the host for the frame we expect, at most once per LINK_ARQ_NAK_MS. */
+static void dm_nak_expected(void)
+{
+    uint64_t now = ktime_ticks_to_ms(ktime_now());
+    if (link_arq_nak_due(&dm_nak, dm_arq_rx.expect, now, LINK_ARQ_NAK_MS))
+        hostlink_send_nak(0, dm_arq_rx.expect);
+}
+
+/* A good frame from the host: a NAK is answered here, a numbered frame is
+ * queued if it is the one expected, dropped if taken already, and NAKed if
+ * it comes after a gap. */
+static void dm_host_frame(const struct link_frame *f)
+{
+    if (f->type == LINK_NAK) {
+        if (f->length < LINK_ACK_SIZE || (f->flags & LINK_FLAG_GONE))
+            return; /* the host gives up on its own */
+        hostlink_resend_from(wire_get_u16(f->payload));
+        if (f->flags & LINK_FLAG_POLL)
+            hostlink_send_nak(0, dm_arq_rx.expect);
+        return;
+    }
+    switch (link_arq_rx_take(&dm_arq_rx, f)) {
+    case LINK_ARQ_NEW: dm_queue_frame(f); break;
+    case LINK_ARQ_DUP: break;
+    default: dm_nak_expected(); break;
+    }
+}
+
+/* Feeds one byte to the decoder; reports and NAKs a damaged frame. */
+static void dm_host_byte(uint8_t b)
+{
+    struct link_frame f;
+    uint32_t before = dm_decoder_errors();
+    int got = link_decoder_push(&dm_dec, b, &f);
+    uint32_t after = dm_decoder_errors();
+    if (after != before) {
+        dm_link_errors += after - before;
+        const struct link_stats *s = &dm_dec.stats;
+        hostlink_error(0, LINK_ERR_BAD_FRAME,
+                       "host link: frame dropped or missing (bad CRC %u, bad length %u, "
+                       "seq gaps %u so far)",
+                       (unsigned)s->crc_errors, (unsigned)s->bad_length,
+                       (unsigned)s->seq_gaps);
+        dm_nak_expected();
+    }
+    if (got)
+        dm_host_frame(&f);
+}
+
+/* The line went quiet in the middle of a frame: give the partial frame up
+ * (its length field may have been damaged) and ask for it again. */
+static void dm_host_unstick(void)
+{
+    struct link_frame f;
+    while (dm_dec.have) {
+        if (link_decoder_unstick(&dm_dec, &f))
+            dm_host_frame(&f);
+    }
+    dm_nak_expected();
+}
+
 static void dm_hostrx(void *arg)
 {
     (void)arg;
     uint8_t buf[256];
-    struct link_frame f;
     link_decoder_init(&dm_dec);
+    uint64_t stall_ticks = ktime_ms_to_ticks(LINK_ARQ_STALL_MS), last_byte = ktime_now();
     for (;;) {
         uint32_t mark = task_event_mark();
         uint32_t n = uart_rx_read(buf, sizeof buf);
         if (n == 0) {
+            /* A partial frame that got no byte for LINK_ARQ_STALL_MS is
+             * given up (a damaged length field). */
+            uint64_t now = ktime_now();
+            if (dm_dec.have && now - last_byte >= stall_ticks) {
+                dm_host_unstick();
+                continue;
+            }
             /* Polled (bulk upload): look again soon; otherwise the
-             * receive interrupt wakes us. */
-            task_wait(mark, uart_rx_is_polling() ? ktime_now() + dm_poll_ticks : 0);
+             * receive interrupt wakes us, or the partial frame's stall. */
+            uint64_t until = uart_rx_is_polling() ? now + dm_poll_ticks : 0;
+            if (dm_dec.have && (until == 0 || until > last_byte + stall_ticks))
+                until = last_byte + stall_ticks;
+            task_wait(mark, until);
             continue;
         }
-        for (uint32_t i = 0; i < n; i++) {
-            uint32_t before = dm_decoder_errors();
-            int got = link_decoder_push(&dm_dec, buf[i], &f);
-            uint32_t after = dm_decoder_errors();
-            if (after != before) {
-                dm_link_errors += after - before;
-                const struct link_stats *s = &dm_dec.stats;
-                hostlink_error(0, LINK_ERR_BAD_FRAME,
-                               "host link: frame dropped or missing (bad CRC %u, bad length %u, "
-                               "seq gaps %u so far)",
-                               (unsigned)s->crc_errors, (unsigned)s->bad_length,
-                               (unsigned)s->seq_gaps);
-            }
-            if (got)
-                dm_queue_frame(&f);
-        }
+        last_byte = ktime_now();
+        for (uint32_t i = 0; i < n; i++)
+            dm_host_byte(buf[i]);
     }
 }
 

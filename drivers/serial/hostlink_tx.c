@@ -10,42 +10,62 @@
 #include "kernel/spinlock.h"
 #include "proto/crc32.h"
 #include "proto/hostlink.h"
+#include "proto/link_arq.h"
 #include "proto/textfmt.h"
 #include "proto/wire.h"
 
 static struct spinlock hostlink_tx_lock = SPINLOCK_INIT("hostlink_tx");
-static uint16_t hostlink_tx_seq; /* next frame's seq; guarded by the lock */
-
-static void hostlink_put_bytes(const uint8_t *p, size_t n)
-{
-    uart_write(p, n);
-}
+/* Guarded by the lock: the frames kept for resending (their seqs number
+ * every frame, from 0 at boot), the frame being written, the resend count. */
+static struct link_arq_store hostlink_store;
+static uint8_t hostlink_frame[LINK_MAX_FRAME];
+static uint32_t hostlink_resent;
 
 uint16_t hostlink_send(uint8_t type, uint8_t flags, const void *payload, size_t len)
 {
     if (len > LINK_MAX_PAYLOAD)
         panic("hostlink_send: payload of %u bytes exceeds LINK_MAX_PAYLOAD %u",
               (unsigned)len, (unsigned)LINK_MAX_PAYLOAD);
-    uint8_t hdr[LINK_HEADER_SIZE];
-    hdr[0] = LINK_SYNC0;
-    hdr[1] = LINK_SYNC1;
-    hdr[2] = type;
-    hdr[3] = flags;
-    wire_put_u16(hdr + 6, (uint16_t)len);
     spin_lock(&hostlink_tx_lock);
-    uint16_t seq = hostlink_tx_seq++;
-    wire_put_u16(hdr + 4, seq);
-    /* The CRC covers type through payload, computed as the bytes go out
-     * so no frame-sized buffer is needed. */
-    uint32_t crc = crc32_update(0, hdr + 2, LINK_HEADER_SIZE - 2);
-    crc = crc32_update(crc, payload, len);
-    uint8_t tail[LINK_CRC_SIZE];
-    wire_put_u32(tail, crc);
-    hostlink_put_bytes(hdr, sizeof hdr);
-    hostlink_put_bytes(payload, len);
-    hostlink_put_bytes(tail, sizeof tail);
+    uint16_t seq = hostlink_store.next_seq;
+    size_t n = link_arq_store_frame(&hostlink_store, hostlink_frame, sizeof hostlink_frame,
+                                    type, flags, payload, len);
+    uart_write(hostlink_frame, n);
     spin_unlock(&hostlink_tx_lock);
     return seq;
+}
+
+void hostlink_send_nak(uint8_t flags, uint16_t expect)
+{
+    uint8_t f[LINK_HEADER_SIZE + LINK_ACK_SIZE + LINK_CRC_SIZE];
+    size_t n = link_arq_nak_encode(f, sizeof f, flags, expect);
+    spin_lock(&hostlink_tx_lock);
+    uart_write(f, n);
+    spin_unlock(&hostlink_tx_lock);
+}
+
+int hostlink_resend_from(uint16_t from)
+{
+    spin_lock(&hostlink_tx_lock);
+    int span = link_arq_store_span(&hostlink_store, from);
+    if (span > 0)
+        span = link_arq_store_resend_count(&hostlink_store, from, span);
+    for (int i = 0; i < span; i++) {
+        size_t n = link_arq_store_get(&hostlink_store, (uint16_t)(from + i), hostlink_frame,
+                                      sizeof hostlink_frame);
+        uart_write(hostlink_frame, n);
+    }
+    if (span > 0)
+        hostlink_resent += (uint32_t)span;
+    spin_unlock(&hostlink_tx_lock);
+    if (span < 0)
+        hostlink_send_nak(LINK_FLAG_GONE, from);
+    return span;
+}
+
+uint32_t hostlink_resends(void)
+{
+    return hostlink_resent;
 }
 
 void hostlink_result(uint16_t cmd, int16_t status, const void *fields, size_t n)

@@ -115,9 +115,10 @@ static void bad_input_checks(struct board *b, int smp)
     uint8_t frame[LINK_MAX_FRAME], args[8];
     uint32_t before;
 
-    /* A frame whose CRC is wrong: dropped and reported at once. */
+    /* A frame whose CRC is wrong: dropped and reported at once (and asked
+     * for again: its seq stays the next one, proto/link_arq.h). */
     wire_put_u16(args, CMD_STATUS);
-    size_t n = link_frame_encode(frame, sizeof frame, LINK_CMD, 0, b->tx_seq++, args,
+    size_t n = link_frame_encode(frame, sizeof frame, LINK_CMD, 0, b->tx_seq, args,
                                  LINK_CMD_FIXED_SIZE);
     frame[n - 1] ^= 1;
     before = b->host_frames_dropped;

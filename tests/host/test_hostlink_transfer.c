@@ -156,12 +156,16 @@ static void transfer_receive_clean(void)
     CHECK_EQ_INT(crc, crc32(all, sizeof all));
 }
 
-static void transfer_receive_catches_damage(void)
+static void transfer_receive_repeat_and_damage(void)
 {
     uint64_t bytes;
     uint32_t crc;
-    CHECK_EQ_INT(source_run(SOURCE_REPEAT, &bytes, &crc), -1);
-    CHECK_EQ_INT(source_run(SOURCE_SWAP, &bytes, &crc), -1);
+    /* A frame repeated with its seq is dropped by the retransmission
+     * (proto/link_arq.h): the transfer is exact.  (Frames out of order are
+     * held back and asked for again: test_hostlink_msgs.) */
+    CHECK_EQ_INT(source_run(SOURCE_REPEAT, &bytes, &crc), 0);
+    CHECK_EQ_INT(bytes, 8 * LINK_DATA_CHUNK);
+    /* Data wrong under a good CRC is the pattern check's to catch. */
     CHECK_EQ_INT(source_run(SOURCE_FLIP_BYTE, &bytes, &crc), -1);
 }
 
@@ -170,6 +174,6 @@ int main(void)
     RUN(transfer_send_respects_window);
     RUN(transfer_send_rejects_stray_ack);
     RUN(transfer_receive_clean);
-    RUN(transfer_receive_catches_damage);
+    RUN(transfer_receive_repeat_and_damage);
     return check_exit();
 }

@@ -239,6 +239,85 @@ static void relay_damages_at_its_rate(void)
     free(got);
 }
 
+
+/* ---- go-back-N: the store of frames kept for resending, the NAK limit ---- */
+
+static void arq_store_keeps_frames_until_pushed_out(void)
+{
+    static struct link_arq_store st;
+    link_arq_store_init(&st, 65530); /* seqs wrap on the way */
+    uint8_t out[LINK_MAX_FRAME], got[LINK_MAX_FRAME], payload[1000];
+    for (int k = 0; k < 300; k++) {
+        memset(payload, k, sizeof payload);
+        size_t len = (size_t)(k % 7) * 150 + 1;
+        size_t n = link_arq_store_frame(&st, out, sizeof out, LINK_DATA, 0, payload, len);
+        CHECK_EQ_INT(n, LINK_HEADER_SIZE + len + LINK_CRC_SIZE);
+        /* The newest frame reads back byte for byte. */
+        CHECK_EQ_INT(link_arq_store_get(&st, (uint16_t)(65530 + k), got, sizeof got), n);
+        CHECK(memcmp(got, out, n) == 0);
+    }
+    uint16_t next = (uint16_t)(65530 + 300);
+    CHECK_EQ_INT(st.next_seq, next);
+    CHECK_EQ_INT(link_arq_store_span(&st, next), 0);      /* nothing to resend */
+    CHECK_EQ_INT(link_arq_store_span(&st, (uint16_t)(next - 5)), 5);
+    CHECK_EQ_INT(link_arq_store_span(&st, (uint16_t)(next + 3)), -1); /* never sent */
+    CHECK_EQ_INT(link_arq_store_span(&st, 65530), -1);   /* pushed out (256 frames kept) */
+    /* Bytes: 64 KiB hold only the newest ~140 of these frames. */
+    int held = 0;
+    for (int k = 1; k <= 256; k++)
+        held += link_arq_store_get(&st, (uint16_t)(next - k), got, sizeof got) > 0;
+    CHECK(held > 100 && held < 256);
+    CHECK_EQ_INT(link_arq_store_span(&st, (uint16_t)(next - held)), held);
+    CHECK_EQ_INT(link_arq_store_span(&st, (uint16_t)(next - held - 1)), -1);
+    /* A resend stops after the frame that reaches LINK_ARQ_RESEND_BYTES. */
+    int k = link_arq_store_resend_count(&st, (uint16_t)(next - held), held);
+    CHECK(k > 0 && k < held);
+    size_t bytes = 0;
+    for (int i = 0; i < k; i++)
+        bytes += link_arq_store_get(&st, (uint16_t)(next - held + i), got, sizeof got);
+    CHECK(bytes >= LINK_ARQ_RESEND_BYTES);
+    CHECK(bytes - link_arq_store_get(&st, (uint16_t)(next - held + k - 1), got, sizeof got) <
+          LINK_ARQ_RESEND_BYTES);
+}
+
+static void arq_nak_is_rate_limited_and_counted(void)
+{
+    struct link_arq_nak n = {0};
+    CHECK_EQ_INT(link_arq_nak_due(&n, 7, 1000, LINK_ARQ_NAK_MS), 1);
+    CHECK_EQ_INT(link_arq_nak_due(&n, 7, 1000 + LINK_ARQ_NAK_MS - 1, LINK_ARQ_NAK_MS), 0);
+    CHECK_EQ_INT(link_arq_nak_due(&n, 7, 1000 + LINK_ARQ_NAK_MS, LINK_ARQ_NAK_MS), 1);
+    CHECK_EQ_INT(n.tries, 2);
+    CHECK_EQ_INT(link_arq_nak_due(&n, 8, 1000 + LINK_ARQ_NAK_MS, LINK_ARQ_NAK_MS), 1);
+    CHECK_EQ_INT(n.tries, 1); /* a new seq: counted afresh */
+    uint8_t f[32];
+    size_t len = link_arq_nak_encode(f, sizeof f, LINK_FLAG_POLL, 0x1234);
+    struct link_decoder d;
+    link_decoder_init(&d);
+    struct link_frame fr;
+    int got = 0;
+    for (size_t i = 0; i < len; i++)
+        got |= link_decoder_push(&d, f[i], &fr);
+    CHECK(got);
+    CHECK_EQ_INT(fr.type, LINK_NAK);
+    CHECK_EQ_INT(fr.flags, LINK_FLAG_POLL);
+    CHECK_EQ_INT(wire_get_u16(fr.payload), 0x1234);
+}
+
+static void arq_rx_drops_everything_behind(void)
+{
+    struct link_arq_rx r;
+    link_arq_rx_init(&r);
+    struct link_frame f = {.type = LINK_DATA, .seq = 100};
+    CHECK_EQ_INT(link_arq_rx_take(&r, &f), LINK_ARQ_NEW);
+    f.seq = 101;
+    CHECK_EQ_INT(link_arq_rx_take(&r, &f), LINK_ARQ_NEW);
+    f.seq = 90; /* an old frame sent again */
+    CHECK_EQ_INT(link_arq_rx_take(&r, &f), LINK_ARQ_DUP);
+    f.seq = 104; /* after a gap */
+    CHECK_EQ_INT(link_arq_rx_take(&r, &f), LINK_ARQ_OTHER);
+    CHECK_EQ_INT(r.expect, 102);
+}
+
 int main(void)
 {
     RUN(arq_receiver_takes_once_and_naks_others);
@@ -252,5 +331,8 @@ int main(void)
     RUN(noise_parse_rate_and_seed);
     RUN(relay_passes_bytes_and_ends_with_either_side);
     RUN(relay_damages_at_its_rate);
+    RUN(arq_store_keeps_frames_until_pushed_out);
+    RUN(arq_nak_is_rate_limited_and_counted);
+    RUN(arq_rx_drops_everything_behind);
     return check_exit();
 }
