@@ -79,6 +79,11 @@ struct board {
     int arq_failed;             /* the retransmission gave up: every wait fails */
     uint32_t arq_resends;       /* our frames sent again */
     uint32_t arq_dups;          /* board frames dropped as taken already */
+    int arq_writing;            /* inside a frame's write: NAKs and resends wait */
+    int arq_resend_due;         /* a resend from arq_resend_from waits for the write */
+    uint16_t arq_resend_from;
+    int arq_nak_due;            /* a NAK (flags arq_nak_flags + 1) waits for the write */
+    uint8_t arq_nak_flags;
     int reported_count;         /* distinct cores that sent HELLO */
     uint8_t reported[UNITS_MAX_CORES]; /* 1 once core k sent HELLO */
     int hello_errors;           /* HELLOs with a wrong role/ncores/variant/core */

@@ -30,10 +30,10 @@ struct relay {
  * end of that side. */
 static int relay_fill(struct relay_dir *d)
 {
-    if (d->head == d->tail)
-        d->head = d->tail = 0;
-    if (RELAY_BUF - d->tail < 2 * RELAY_READ)
+    /* One read's worth in the relay at a time, like a line, not a queue. */
+    if (d->head != d->tail)
         return 0;
+    d->head = d->tail = 0;
     uint8_t in[RELAY_READ];
     ssize_t n = read(d->from, in, sizeof in);
     if (n == 0)

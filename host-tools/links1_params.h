@@ -43,6 +43,9 @@
 /* Bytes read from the link per read() call, and the pause (microseconds)
  * after a wake-up that lets bytes gather before reading. */
 #define BOARD_READ_CHUNK 4096
+/* --link-noise: the send buffer of each socket towards the board around the
+ * relay (the kernel doubles it). */
+#define BOARD_RELAY_SNDBUF 4096
 #define BOARD_READ_BATCH_US 200
 
 /* Link tests: bytes each way through the host link, MiB through the

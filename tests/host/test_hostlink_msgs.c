@@ -183,6 +183,7 @@ static void msg_damaged_frame_is_asked_for_again(void)
     struct board b;
     int peer;
     CHECK(fake_session(&b, &peer) == 0);
+    b.arq_rx.known = 1; /* a board booted by us: its frames from seq 0 */
     uint8_t frame[64], answer[8] = {2, 0, 0, 0, 9, 0, 0, 0}; /* cmd 2 ok, u32 9 */
     size_t n = link_frame_encode(frame, sizeof frame, LINK_RESULT, 0, 0, answer, sizeof answer);
     frame[9] ^= 0x10;
