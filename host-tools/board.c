@@ -546,9 +546,10 @@ static int board_arq_frame(struct board *b, const struct link_frame *f)
     }
 }
 
-/* Nothing heard for LINK_ARQ_POLL_MS on a link seen damaged: a partial frame
- * is given up, and a poll asks the board to send again what we lack and to
- * name what it lacks. */
+/* Nothing heard for LINK_ARQ_POLL_MS on a link seen damaged: our partial
+ * frame is given up, the board's is completed by LINK_ARQ_FLUSH_BYTES zero
+ * bytes, and a poll asks the board to send again what we lack and to name
+ * what it lacks. */
 static int board_arq_poll(struct board *b)
 {
     struct link_frame f;
@@ -565,6 +566,9 @@ static int board_arq_poll(struct board *b)
                  LINK_ARQ_MAX_TRIES, LINK_ARQ_MAX_TRIES * LINK_ARQ_POLL_MS / 1000);
         return board_arq_give_up(b, why);
     }
+    static const uint8_t zeros[LINK_ARQ_FLUSH_BYTES];
+    if (board_write_all(b, zeros, sizeof zeros, BOARD_FRAME_TIMEOUT_MS) < 0)
+        return -1;
     return board_send_nak(b, LINK_FLAG_POLL);
 }
 

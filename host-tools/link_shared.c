@@ -65,27 +65,46 @@ int link_shared_send(struct board *b, const void *data, size_t len)
                 k.length, len);
         return link_shared_cancel(b, k.offset);
     }
-    memcpy(b->ram + k.offset, data, len);
-    struct link_bulk done = {k.offset, (uint32_t)len, crc32(data, len)};
-    uint8_t p[LINK_BULK_SIZE];
-    link_bulk_put(p, &done);
-    int seq = board_send(b, LINK_BULK, 0, p, sizeof p);
-    if (seq < 0)
-        return -1;
-    struct board_frame f;
-    if (board_wait_frame_of(b, (1u << LINK_ACK) | (1u << LINK_RESULT), BOARD_FRAME_TIMEOUT_MS,
-                            &f, "ACK of the shared-memory bytes") < 0)
-        return -1;
-    if (f.type == LINK_RESULT) {
-        board_unget_frame(b, &f); /* the board refused them: its reason follows */
-        return 1;
+    for (int t = 1;; t++) {
+        memcpy(b->ram + k.offset, data, len);
+        struct link_bulk done = {k.offset, (uint32_t)len, crc32(data, len)};
+        uint8_t p[LINK_BULK_SIZE];
+        link_bulk_put(p, &done);
+        int seq = board_send(b, LINK_BULK, 0, p, sizeof p);
+        if (seq < 0)
+            return -1;
+        struct board_frame f;
+        if (board_wait_frame_of(b, (1u << LINK_ACK) | (1u << LINK_RESULT) | (1u << LINK_BULK),
+                                BOARD_FRAME_TIMEOUT_MS, &f,
+                                "ACK of the shared-memory bytes") < 0)
+            return -1;
+        if (f.type == LINK_RESULT) {
+            board_unget_frame(b, &f); /* the board refused them: its reason follows */
+            return 1;
+        }
+        if (f.type == LINK_BULK) {
+            /* The bytes the board found did not have our CRC: it offers the
+             * same memory again (proto/hostlink.h, LINK_BULK_TRIES). */
+            struct link_bulk again;
+            link_bulk_get(f.payload, &again);
+            if (f.length != LINK_BULK_SIZE || again.offset != k.offset ||
+                again.length != k.length || t >= LINK_BULK_TRIES) {
+                fprintf(stderr, "links1: the board offered shared memory again (try %d of %d) "
+                        "at 0x%x, %u bytes\n", t + 1, LINK_BULK_TRIES, again.offset,
+                        again.length);
+                return link_shared_cancel(b, again.offset);
+            }
+            fprintf(stderr, "links1: the board found other bytes than ours in shared memory: "
+                    "copying them again (try %d of %d)\n", t + 1, LINK_BULK_TRIES);
+            continue;
+        }
+        if (f.length != LINK_ACK_SIZE || wire_get_u16(f.payload) != (uint16_t)seq) {
+            fprintf(stderr, "links1: ACK of the shared-memory bytes: %u bytes naming seq %u, "
+                    "want seq %d\n", f.length, f.length >= 2 ? wire_get_u16(f.payload) : 0, seq);
+            return -1;
+        }
+        return 0;
     }
-    if (f.length != LINK_ACK_SIZE || wire_get_u16(f.payload) != (uint16_t)seq) {
-        fprintf(stderr, "links1: ACK of the shared-memory bytes: %u bytes naming seq %u, "
-                "want seq %d\n", f.length, f.length >= 2 ? wire_get_u16(f.payload) : 0, seq);
-        return -1;
-    }
-    return 0;
 }
 
 int link_shared_receive(struct board *b, struct link_bulk *k, const uint8_t **data)
@@ -97,7 +116,7 @@ int link_shared_receive(struct board *b, struct link_bulk *k, const uint8_t **da
     if (c != k->crc) {
         fprintf(stderr, "links1: %u bytes at offset 0x%x of the board's RAM have crc 0x%08x, "
                 "the board says 0x%08x\n", k->length, k->offset, c, k->crc);
-        return -1;
+        return -2;
     }
     *data = b->ram + k->offset;
     return 0;

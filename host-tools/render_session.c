@@ -287,13 +287,27 @@ int render_session_pull(struct board *b, struct image *img, long long *pull_ms)
     int shared = b->opts.link == LINK_PATH_SHARED;
     uint8_t arg = (uint8_t)b->opts.link;
     long long t0 = board_now_ms();
-    if (board_send_cmd(b, CMD_FRAME_PULL, &arg, sizeof arg) < 0)
-        return -1;
     uint8_t *buf = NULL;
     size_t have = 0; /* bytes as the board sent them */
     uint32_t crc = 0;
-    int r = shared ? render_session_pull_shared(b, &buf, &have, &crc)
+    int r;
+    for (int t = 1;; t++) {
+        if (board_send_cmd(b, CMD_FRAME_PULL, &arg, sizeof arg) < 0)
+            return -1;
+        r = shared ? render_session_pull_shared(b, &buf, &have, &crc)
                    : render_session_pull_serial(b, &buf, &have, &crc);
+        if (r != -2 || t == LINK_BULK_TRIES)
+            break;
+        /* The shared bytes did not have the board's CRC: its result, then
+         * the pull again (proto/hostlink.h, LINK_BULK_TRIES). */
+        struct board_frame f;
+        const uint8_t *fields;
+        size_t nf;
+        if (render_session_result(b, CMD_FRAME_PULL, "frame pull", &f, &fields, &nf,
+                                  LINK_FRAME_INFO_SIZE, BOARD_FRAME_TIMEOUT_MS) < 0)
+            return -1;
+        fprintf(stderr, "links1: frame pull: again (try %d of %d)\n", t + 1, LINK_BULK_TRIES);
+    }
     if (r < 0) {
         free(buf);
         return -1;

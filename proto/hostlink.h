@@ -187,15 +187,22 @@ static inline uint8_t link_pattern_byte(uint32_t i)
  * bytes.  The host writes its bytes there and sends LINK_BULK (offset,
  * length <= room, crc); the board checks the offset, the length and the CRC
  * of what it finds, answers LINK_ACK with that frame's seq (the bytes are on
- * the board), and then the command's LINK_RESULT as on the serial path.
+ * the board), and then the command's LINK_RESULT as on the serial path.  When
+ * the CRC does not match, the board offers the same memory again (a new
+ * LINK_BULK offer) and the host copies its bytes again, up to LINK_BULK_TRIES
+ * offers in all; then the board answers an error.
  *
  * Board -> host (CMD_LINK_SOURCE, CMD_FRAME_PULL): the board sends LINK_BULK
  * (offset, length, crc) of bytes already in its RAM, then the command's
  * LINK_RESULT.  They stay valid until the host's next command.  The frame
  * memory is sent as it is held, one little-endian u32 0x00RRGGBB per pixel,
  * row after row (proto/render_link.h link_frame_word_rgb), and the crc of
- * CMD_FRAME_PULL's result is then the CRC-32 of those words. */
+ * CMD_FRAME_PULL's result is then the CRC-32 of those words.  When the bytes
+ * the host finds do not have the CRC, the host sends CMD_FRAME_PULL again, up
+ * to LINK_BULK_TRIES times in all (the frame memory is unchanged until the
+ * next CMD_RENDER). */
 #define LINK_BULK_SIZE 12
+#define LINK_BULK_TRIES 3
 struct link_bulk {
     uint32_t offset, length, crc;
 };

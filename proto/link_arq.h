@@ -105,7 +105,8 @@ size_t link_arq_answer_encode(uint8_t *out, size_t cap, uint8_t type, uint16_t f
  * hears nothing for LINK_ARQ_POLL_MS sends LINK_NAK flagged LINK_FLAG_POLL:
  * the other side resends from the seq named and answers with a LINK_NAK of
  * its own expected seq, so a lost last frame in either direction is sent
- * again.  A NAK for a seq the sender no longer holds is answered with
+ * again.  Only the host polls, and only once it has seen damage, so a clean
+ * link never carries a poll.  A NAK for a seq the sender no longer holds is answered with
  * LINK_NAK flagged LINK_FLAG_GONE: the transfer ends with an error.  Frames
  * are CRC-checked and taken once each in order, so the layers above see
  * the exact stream or an error, never wrong data, and a repeated command is
@@ -123,10 +124,12 @@ size_t link_arq_answer_encode(uint8_t *out, size_t cap, uint8_t type, uint16_t f
                                 * up (~5 s): a 1 KiB frame crosses whole at 1e-3 per
                                 * byte a third of the time, so 48 fail once in ~1e9 */
 #define LINK_ARQ_POLL_MS 250   /* a waiting side's silence before it polls */
-#define LINK_ARQ_STALL_MS 150  /* a partial frame this long without a byte is given
-                                * up (link_decoder_unstick); less than the poll, whose
-                                * bytes would otherwise keep it waiting, and long
-                                * enough that a busy emulator's pause is no stall */
+#define LINK_ARQ_FLUSH_BYTES LINK_MAX_FRAME /* zero bytes the host sends before a
+                                * poll: they complete a partial frame whose damaged
+                                * length field keeps the board's decoder waiting (it
+                                * then fails its CRC and is asked for again); the
+                                * board needs no timer, so a busy emulator's pause is
+                                * never taken for a stall */
 
 struct link_arq_store {
     uint8_t bytes[LINK_ARQ_STORE_BYTES]; /* frames, one after another, wrapping */

@@ -127,44 +127,22 @@ static void dm_host_byte(uint8_t b)
         dm_host_frame(&f);
 }
 
-/* The line went quiet in the middle of a frame: give the partial frame up
- * (its length field may have been damaged) and ask for it again. */
-static void dm_host_unstick(void)
-{
-    struct link_frame f;
-    while (dm_dec.have) {
-        if (link_decoder_unstick(&dm_dec, &f))
-            dm_host_frame(&f);
-    }
-    dm_nak_expected();
-}
-
 static void dm_hostrx(void *arg)
 {
     (void)arg;
     uint8_t buf[256];
     link_decoder_init(&dm_dec);
-    uint64_t stall_ticks = ktime_ms_to_ticks(LINK_ARQ_STALL_MS), last_byte = ktime_now();
     for (;;) {
         uint32_t mark = task_event_mark();
         uint32_t n = uart_rx_read(buf, sizeof buf);
         if (n == 0) {
-            /* A partial frame that got no byte for LINK_ARQ_STALL_MS is
-             * given up (a damaged length field). */
-            uint64_t now = ktime_now();
-            if (dm_dec.have && now - last_byte >= stall_ticks) {
-                dm_host_unstick();
-                continue;
-            }
             /* Polled (bulk upload): look again soon; otherwise the
-             * receive interrupt wakes us, or the partial frame's stall. */
-            uint64_t until = uart_rx_is_polling() ? now + dm_poll_ticks : 0;
-            if (dm_dec.have && (until == 0 || until > last_byte + stall_ticks))
-                until = last_byte + stall_ticks;
-            task_wait(mark, until);
+             * receive interrupt wakes us.  (A partial frame whose length
+             * field was damaged is completed by the zero bytes the host
+             * sends before a poll: proto/link_arq.h.) */
+            task_wait(mark, uart_rx_is_polling() ? ktime_now() + dm_poll_ticks : 0);
             continue;
         }
-        last_byte = ktime_now();
         for (uint32_t i = 0; i < n; i++)
             dm_host_byte(buf[i]);
     }

@@ -41,7 +41,10 @@ static void dm_bulk_frame(const void *buf, uint32_t len, uint32_t crc)
     hostlink_send(LINK_BULK, 0, p, sizeof p);
 }
 
-int dm_bulk_receive(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t *len, uint32_t *crc)
+/* One offer of buf and the host's answer; LINK_ERR_CHECK (not yet answered)
+ * when the bytes found do not have the host's CRC. */
+static int dm_bulk_take(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t *len, uint32_t *crc,
+                        int last_try)
 {
     dm_bulk_frame(buf, room, 0);
     if (dm_next_frame(ktime_deadline_ms(LINK_ACK_TIMEOUT_MS)) != 0) {
@@ -66,9 +69,12 @@ int dm_bulk_receive(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t *len, ui
     }
     uint32_t c = crc32(buf, k.length);
     if (c != k.crc) {
+        if (!last_try)
+            return LINK_ERR_CHECK; /* offered again */
         hostlink_error(cmd, LINK_ERR_CHECK, "shared path: %u bytes at offset 0x%x have crc "
-                       "0x%08x, the host says 0x%08x", (unsigned)k.length, (unsigned)k.offset,
-                       (unsigned)c, (unsigned)k.crc);
+                       "0x%08x, the host says 0x%08x (%u offers)", (unsigned)k.length,
+                       (unsigned)k.offset, (unsigned)c, (unsigned)k.crc,
+                       (unsigned)LINK_BULK_TRIES);
         return LINK_ERR_CHECK;
     }
     uint8_t ack[LINK_ACK_SIZE];
@@ -77,6 +83,16 @@ int dm_bulk_receive(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t *len, ui
     *len = k.length;
     *crc = c;
     return LINK_OK;
+}
+
+int dm_bulk_receive(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t *len, uint32_t *crc)
+{
+    /* Bytes whose CRC fails are offered for again (proto/hostlink.h). */
+    for (int t = 1;; t++) {
+        int r = dm_bulk_take(cmd, buf, room, len, crc, t == LINK_BULK_TRIES);
+        if (r != LINK_ERR_CHECK || t == LINK_BULK_TRIES)
+            return r;
+    }
 }
 
 uint32_t dm_bulk_send(const void *buf, uint32_t len)

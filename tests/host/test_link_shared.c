@@ -148,11 +148,39 @@ static void shared_receive_checks_crc(void)
     const uint8_t *data = NULL;
     CHECK_EQ_INT(link_shared_receive(&b, &k, &data), 0);
     CHECK(data == ram + 0x100 && k.length == 5000 && k.crc == good);
-    CHECK_EQ_INT(link_shared_receive(&b, &k, &data), -1); /* wrong CRC */
+    CHECK_EQ_INT(link_shared_receive(&b, &k, &data), -2); /* wrong CRC: the pull again */
     CHECK_EQ_INT(link_shared_receive(&b, &k, &data), -1); /* outside the RAM */
     b.ram = NULL;
     board_stop(&b);
     close(peer);
+}
+
+/* The board found other bytes than the host's CRC says and offers the same
+ * memory again: the host copies them again and sends a new LINK_BULK. */
+static void shared_send_copies_again_on_a_new_offer(void)
+{
+    static uint8_t ram[RAM_SIZE];
+    struct board b;
+    int peer;
+    session(&b, &peer, ram);
+    uint8_t data[2000];
+    for (size_t i = 0; i < sizeof data; i++)
+        data[i] = link_pattern_byte((uint32_t)i + 5);
+    peer_bulk(peer, 0x8000, 4096, 0); /* the offer */
+    peer_bulk(peer, 0x8000, 4096, 0); /* and again: the CRC failed */
+    uint8_t ack[LINK_ACK_SIZE];
+    wire_put_u16(ack, 1); /* the host's second BULK */
+    peer_send(peer, LINK_ACK, ack, sizeof ack);
+    CHECK_EQ_INT(link_shared_send(&b, data, sizeof data), 0);
+    CHECK(memcmp(ram + 0x8000, data, sizeof data) == 0);
+    struct link_bulk k1, k2;
+    CHECK_EQ_INT(peer_read_bulk(peer, &k1), 0);
+    CHECK_EQ_INT(peer_read_bulk(peer, &k2), 0);
+    CHECK_EQ_INT(k2.offset, 0x8000);
+    CHECK_EQ_INT(k2.length, sizeof data);
+    CHECK_EQ_INT(k2.crc, crc32(data, sizeof data));
+    close(peer);
+    close(b.fd);
 }
 
 int main(void)
@@ -161,5 +189,6 @@ int main(void)
     RUN(shared_send_cancels_offer_outside_ram);
     RUN(shared_send_leaves_refusal_for_caller);
     RUN(shared_receive_checks_crc);
+    RUN(shared_send_copies_again_on_a_new_offer);
     return check_exit();
 }
