@@ -1,7 +1,9 @@
 /* Host tests of the host-link message encodings: HELLO and FAULT payloads
  * (proto/hostlink.c) and the host tool's CMD and RESULT frames
  * (host-tools/board.c), each pinned to a literal byte string so that host
- * and firmware cannot drift apart unnoticed. */
+ * and firmware cannot drift apart unnoticed; and the host's side of the
+ * retransmission (proto/link_arq.h): a damaged or missing frame asked for
+ * with LINK_NAK, a silent board polled, our frames resent on the board's NAK. */
 #include <fcntl.h>
 #include <poll.h>
 #include <string.h>
