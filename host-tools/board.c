@@ -511,6 +511,15 @@ static int board_arq_nak_in(struct board *b, const struct link_frame *f)
         return board_arq_give_up(b, why);
     }
     int span = link_arq_store_span(&b->arq_tx, from);
+    if (span > 0) {
+        b->arq_asked = b->arq_asked && b->arq_asked_from == from ? b->arq_asked + 1 : 1;
+        b->arq_asked_from = from;
+        if (b->arq_asked > LINK_ARQ_MAX_ASKS) {
+            snprintf(why, sizeof why, "our frame %u did not reach the board whole after %d "
+                     "resends", from, LINK_ARQ_MAX_ASKS);
+            return board_arq_give_up(b, why);
+        }
+    }
     if (span < 0) {
         snprintf(why, sizeof why, "the board asked for our frame %u, no longer held", from);
         board_send_nak(b, LINK_FLAG_GONE);

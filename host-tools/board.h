@@ -84,6 +84,8 @@ struct board {
     uint16_t arq_resend_from;
     int arq_nak_due;            /* a NAK (flags arq_nak_flags + 1) waits for the write */
     uint8_t arq_nak_flags;
+    uint16_t arq_asked_from;    /* the seq the board's NAKs last named */
+    int arq_asked;              /* NAKs in a row for it (LINK_ARQ_MAX_ASKS) */
     int reported_count;         /* distinct cores that sent HELLO */
     uint8_t reported[UNITS_MAX_CORES]; /* 1 once core k sent HELLO */
     int hello_errors;           /* HELLOs with a wrong role/ncores/variant/core */

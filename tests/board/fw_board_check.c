@@ -169,6 +169,26 @@ static void bad_input_checks(struct board *b, int smp)
     verdict("fw_data_outside_transfer", a.status == LINK_ERR_PROTOCOL &&
             has(&a, "outside a transfer"), "got status %d '%s'", a.status, a.text);
 
+    /* The same command frame twice (a resend whose first copy got
+     * through): carried out once, the repeat dropped by its seq
+     * (proto/link_arq.h). */
+    wire_put_u16(args, CMD_STATUS);
+    int seq = board_send(b, LINK_CMD, 0, args, LINK_CMD_FIXED_SIZE);
+    n = link_frame_encode(frame, sizeof frame, LINK_CMD, 0, (uint16_t)seq, args,
+                          LINK_CMD_FIXED_SIZE);
+    board_send_raw(b, frame, n);
+    struct board_frame r;
+    int status = -1;
+    const uint8_t *fields;
+    size_t nf;
+    int first = board_wait_result(b, CMD_STATUS, FW_CHECK_WAIT_MS, &r, &status, &fields, &nf);
+    board_pump(b, 500); /* a second answer would be here by now */
+    int more = 0;
+    for (int i = 0; i < b->queued; i++)
+        more += b->queue[i].type == LINK_RESULT;
+    verdict("fw_duplicate_command_once", seq >= 0 && first == 0 && status == 0 && more == 0,
+            "first answer %d (status %d), %d more results", first, status, more);
+
     command(b, CMD_STATUS, NULL, 0, FW_CHECK_WAIT_MS, &a);
     struct link_status_result st = {0, 0, 0};
     int ok = a.status == 0 && a.n >= LINK_STATUS_RESULT_SIZE;

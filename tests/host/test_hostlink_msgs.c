@@ -278,6 +278,29 @@ static void msg_board_nak_gets_our_frames_again(void)
     close(b.fd);
 }
 
+/* A frame of ours the board keeps asking for: the host gives up after
+ * LINK_ARQ_MAX_ASKS resends, with an error, rather than resending forever. */
+static void msg_host_gives_up_on_a_frame_that_never_arrives(void)
+{
+    struct board b;
+    int peer;
+    CHECK(fake_session(&b, &peer) == 0);
+    CHECK_EQ_INT(board_send_cmd(&b, CMD_STATUS, NULL, 0), 0);
+    uint8_t nak[16];
+    size_t n = link_arq_nak_encode(nak, sizeof nak, 0, 0);
+    for (int i = 0; i < LINK_ARQ_MAX_ASKS; i++)
+        CHECK(write(peer, nak, n) == (ssize_t)n);
+    for (int i = 0; i < 10; i++)
+        board_pump(&b, 20);
+    CHECK_EQ_INT(board_arq_failed(&b), 0);
+    CHECK_EQ_INT(b.arq_resends, LINK_ARQ_MAX_ASKS);
+    CHECK(write(peer, nak, n) == (ssize_t)n);
+    board_pump(&b, 100);
+    CHECK_EQ_INT(board_arq_failed(&b), 1);
+    close(peer);
+    close(b.fd);
+}
+
 static void msg_hello_and_fault_are_recorded(void)
 {
     struct board b;
@@ -320,6 +343,7 @@ int main(void)
     RUN(msg_damaged_frame_is_asked_for_again);
     RUN(msg_gap_is_asked_for_and_silence_polled);
     RUN(msg_board_nak_gets_our_frames_again);
+    RUN(msg_host_gives_up_on_a_frame_that_never_arrives);
     RUN(msg_hello_and_fault_are_recorded);
     return check_exit();
 }
