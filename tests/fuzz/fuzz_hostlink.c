@@ -9,7 +9,9 @@
  * Checked besides memory safety: every delivered frame re-encodes to a
  * frame a fresh decoder delivers unchanged, and every getter followed by
  * its put gives back the bytes it read (where the record has no reserved
- * or padding bytes). */
+ * or padding bytes).  The retransmission (proto/link_arq.c) sees each
+ * frame too: the receiver's verdict takes seqs in order only, and each
+ * frame kept for resending reads back byte for byte while it is held. */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -17,6 +19,7 @@
 
 #include "host-tools/board.h"
 #include "proto/hostlink.h"
+#include "proto/link_arq.h"
 #include "proto/render_link.h"
 
 static struct link_decoder dec;
@@ -89,8 +92,35 @@ static void fuzz_reencode(const struct link_frame *f)
         abort();
 }
 
+static struct link_arq_store store;
+static struct link_arq_rx rx;
+
+/* The frame as the retransmission sees it: the verdict, and a copy kept. */
+static void fuzz_arq(const struct link_frame *f)
+{
+    uint16_t expect = rx.expect;
+    int known = rx.known;
+    enum link_arq_verdict v = link_arq_rx_take(&rx, f);
+    if (v == LINK_ARQ_NEW && known && !(f->flags & LINK_FLAG_SESSION) && f->seq != expect)
+        abort(); /* taken out of order */
+    if (v != LINK_ARQ_NEW && rx.expect != expect)
+        abort();
+    static uint8_t out[LINK_MAX_FRAME], back[LINK_MAX_FRAME];
+    uint16_t seq = store.next_seq;
+    size_t n = link_arq_store_frame(&store, out, sizeof out, f->type, f->flags, f->payload,
+                                    f->length);
+    if (n == 0 || link_arq_store_get(&store, seq, back, sizeof back) != n ||
+        memcmp(out, back, n) != 0 || link_arq_store_span(&store, seq) != 1)
+        abort();
+    int span = link_arq_store_span(&store, f->seq);
+    if (span > 0 && link_arq_store_resend_count(&store, f->seq, span) < 1)
+        abort();
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
+    link_arq_store_init(&store, size > 1 ? (uint16_t)(data[1] << 8) : 0);
+    link_arq_rx_init(&rx);
     link_decoder_init(&dec);
     memset(&board, 0, sizeof board);
     board_opts_init(&board.opts);
@@ -104,6 +134,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
             abort();
         fuzz_reencode(&f);
         fuzz_getters(&f);
+        fuzz_arq(&f);
         if (board_handle_frame(&board, &f) != 0)
             board.queued = 0; /* the queue is full: the host gives up; start again */
     }
