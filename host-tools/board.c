@@ -212,7 +212,8 @@ static void board_init(struct board *b, const struct board_opts *o)
      * first frame, except on a board we boot (board_start: from 0). */
     link_arq_store_init(&b->arq_tx, 0);
     link_arq_rx_init(&b->arq_rx);
-    b->arq_heard_ms = b->started_ms;
+    b->arq_heard_ms = b->arq_byte_ms = b->started_ms;
+    b->arq_naks_heard = 1;
 }
 
 /* The board's RAM as a memfd, mapped here (proto/board_map.h). */
@@ -492,24 +493,33 @@ static int board_arq_lost(struct board *b)
     return board_send_nak(b, 0);
 }
 
+static int board_arq_resend(struct board *b, uint16_t from);
+
 /* A LINK_NAK from the board: our frames from the seq it names, sent again. */
 static int board_arq_nak_in(struct board *b, const struct link_frame *f)
 {
     b->arq_armed = 1;
-    if (f->length < LINK_ACK_SIZE)
+    if (f->length < LINK_ACK_SIZE || !b->arq_naks_heard)
         return 0;
     uint16_t from = wire_get_u16(f->payload);
-    if (b->arq_writing) { /* resent after the frame being written */
-        b->arq_resend_due = 1;
-        b->arq_resend_from = from;
-        return 0;
-    }
     char why[96];
     if (f->flags & LINK_FLAG_GONE) {
         snprintf(why, sizeof why, "the board no longer holds its frame %u that we asked for",
                  from);
         return board_arq_give_up(b, why);
     }
+    if (b->arq_writing) { /* resent after the frame being written */
+        b->arq_resend_due = 1;
+        b->arq_resend_from = from;
+        return 0;
+    }
+    return board_arq_resend(b, from);
+}
+
+/* Our kept frames from seq from on, sent again (up to LINK_ARQ_RESEND_BYTES). */
+static int board_arq_resend(struct board *b, uint16_t from)
+{
+    char why[96];
     int span = link_arq_store_span(&b->arq_tx, from);
     if (span > 0) {
         b->arq_asked = b->arq_asked && b->arq_asked_from == from ? b->arq_asked + 1 : 1;
@@ -601,6 +611,7 @@ static int board_read_available(struct board *b)
                 return 0;
             return board_lost(b, strerror(errno));
         }
+        b->arq_byte_ms = board_now_ms();
         for (ssize_t i = 0; i < n; i++) {
             struct link_frame f;
             const struct link_stats *s = &b->dec.stats;
@@ -624,8 +635,10 @@ int board_pump(struct board *b, int timeout_ms)
     if (b->fd < 0 || b->arq_failed)
         return -1;
     int wait = timeout_ms < 0 ? 0 : timeout_ms;
-    if (b->arq_armed) {
-        long long due = b->arq_heard_ms + LINK_ARQ_POLL_MS - board_now_ms();
+    if (b->arq_armed || b->dec.have) {
+        long long due = b->arq_armed ? b->arq_heard_ms + LINK_ARQ_POLL_MS
+                                     : b->arq_byte_ms + LINK_ARQ_STALL_MS;
+        due -= board_now_ms();
         if (due < wait)
             wait = due < 0 ? 0 : (int)due;
     }
@@ -644,8 +657,12 @@ int board_pump(struct board *b, int timeout_ms)
         if (board_read_available(b) < 0)
             return -1;
     }
-    if (b->arq_armed && board_now_ms() - b->arq_heard_ms >= LINK_ARQ_POLL_MS &&
-        board_arq_poll(b) < 0)
+    /* A partial frame that waits long for its bytes is damage no frame
+     * showed (its length field spoilt): the link is then polled too. */
+    long long quiet = board_now_ms() - b->arq_heard_ms;
+    if (!b->arq_armed && b->dec.have && board_now_ms() - b->arq_byte_ms >= LINK_ARQ_STALL_MS)
+        b->arq_armed = 1;
+    if (b->arq_armed && quiet >= LINK_ARQ_POLL_MS && board_arq_poll(b) < 0)
         return -1;
     return 0;
 }
@@ -712,12 +729,7 @@ static int board_write_all(struct board *b, const uint8_t *p, size_t n, int time
     while (r == 0 && !b->arq_writing && (b->arq_resend_due || b->arq_nak_due)) {
         if (b->arq_resend_due) {
             b->arq_resend_due = 0;
-            uint8_t nak[LINK_HEADER_SIZE + LINK_ACK_SIZE + LINK_CRC_SIZE];
-            size_t len = link_arq_nak_encode(nak, sizeof nak, 0, b->arq_resend_from);
-            struct link_frame f = {.type = LINK_NAK, .length = LINK_ACK_SIZE,
-                                   .payload = nak + LINK_HEADER_SIZE};
-            (void)len;
-            r = board_arq_nak_in(b, &f);
+            r = board_arq_resend(b, b->arq_resend_from);
         } else {
             b->arq_nak_due = 0;
             r = board_send_nak(b, b->arq_nak_flags);

@@ -74,9 +74,13 @@ struct board {
     struct link_arq_rx arq_rx;  /* the board's frames, taken in seq order */
     struct link_arq_nak arq_nak;/* our NAKs' rate limit and give-up count */
     long long arq_heard_ms;     /* when the last good frame came */
+    long long arq_byte_ms;      /* when the last byte came */
     int arq_armed;              /* the link was seen damaged: poll when silent */
     int arq_polls;              /* polls in a row with no frame heard */
     int arq_failed;             /* the retransmission gave up: every wait fails */
+    int arq_naks_heard;         /* 1: the board's NAKs name our numbering (0 while a
+                                   session on a board left running opens: a NAK
+                                   then may name an earlier session's seq) */
     uint32_t arq_resends;       /* our frames sent again */
     uint32_t arq_dups;          /* board frames dropped as taken already */
     int arq_writing;            /* inside a frame's write: NAKs and resends wait */

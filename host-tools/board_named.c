@@ -305,6 +305,7 @@ static int board_named_session(struct board *b, const char *name)
                     name, r.reported, r.ncores, r.halted, b->opts.ncores, name);
             return -1;
         }
+        b->arq_naks_heard = 1;
         break;
     }
     const struct link_stats *s = &b->dec.stats;
@@ -352,6 +353,7 @@ int board_connect(struct board *b, const struct board_opts *o, const char *name)
     snprintf(arith, sizeof arith, "%s", info.arith);
     bo.arith = arith;
     board_attach(b, &bo, fd);
+    b->arq_naks_heard = 0; /* until the board answers the session */
     b->named = 1;
     b->lock_fd = lock;
     snprintf(b->state_dir, sizeof b->state_dir, "%s", dir);

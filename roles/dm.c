@@ -106,13 +106,18 @@ static void dm_host_frame(const struct link_frame *f)
     }
 }
 
-/* Feeds one byte to the decoder; reports and NAKs a damaged frame. */
+/* Feeds one byte to the decoder; reports and NAKs a damaged frame, and NAKs
+ * junk. */
 static void dm_host_byte(uint8_t b)
 {
     struct link_frame f;
-    uint32_t before = dm_decoder_errors();
+    uint32_t before = dm_decoder_errors(), junk = dm_dec.stats.junk_bytes;
     int got = link_decoder_push(&dm_dec, b, &f);
     uint32_t after = dm_decoder_errors();
+    /* Junk is what is left of a frame whose sync was damaged: maybe the
+     * host's last frame, which no later frame would show missing. */
+    if (dm_dec.stats.junk_bytes != junk)
+        dm_nak_expected();
     if (after != before) {
         dm_link_errors += after - before;
         const struct link_stats *s = &dm_dec.stats;

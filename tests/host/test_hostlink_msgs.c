@@ -301,6 +301,37 @@ static void msg_host_gives_up_on_a_frame_that_never_arrives(void)
     close(b.fd);
 }
 
+/* A frame whose length field was spoilt keeps the decoder waiting with no
+ * damage shown: after LINK_ARQ_STALL_MS without a byte the host gives the
+ * partial frame up and polls (after zero bytes that would complete the
+ * board's own such frame). */
+static void msg_stalled_partial_frame_leads_to_a_poll(void)
+{
+    struct board b;
+    int peer;
+    CHECK(fake_session(&b, &peer) == 0);
+    b.arq_rx.known = 1;
+    uint8_t frame[64], answer[8] = {2, 0, 0, 0, 9, 0, 0, 0};
+    size_t n = link_frame_encode(frame, sizeof frame, LINK_RESULT, 0, 0, answer, sizeof answer);
+    wire_put_u16(frame + 6, 2000); /* the length field spoilt */
+    CHECK(write(peer, frame, n) == (ssize_t)n);
+    long long t0 = board_now_ms();
+    while (board_now_ms() - t0 < LINK_ARQ_STALL_MS - 300)
+        board_pump(&b, 50);
+    struct board_frame got[4];
+    CHECK_EQ_INT(peer_frames(peer, 50, got, 4), 0); /* nothing yet */
+    while (board_now_ms() - t0 < LINK_ARQ_STALL_MS + 300)
+        board_pump(&b, 50);
+    CHECK(peer_frames(peer, 200, got, 4) >= 1);
+    CHECK_EQ_INT(got[0].type, LINK_NAK);
+    CHECK(got[0].flags & LINK_FLAG_POLL);
+    CHECK_EQ_INT(wire_get_u16(got[0].payload), 0);
+    CHECK_EQ_INT(b.dec.have, 0);
+    CHECK_EQ_INT(b.dec.stats.stalls, 1);
+    close(peer);
+    close(b.fd);
+}
+
 static void msg_hello_and_fault_are_recorded(void)
 {
     struct board b;
@@ -344,6 +375,7 @@ int main(void)
     RUN(msg_gap_is_asked_for_and_silence_polled);
     RUN(msg_board_nak_gets_our_frames_again);
     RUN(msg_host_gives_up_on_a_frame_that_never_arrives);
+    RUN(msg_stalled_partial_frame_leads_to_a_poll);
     RUN(msg_hello_and_fault_are_recorded);
     return check_exit();
 }
