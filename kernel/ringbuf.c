@@ -1,6 +1,7 @@
 /* ringbuf.c: the SPSC byte ring (see ringbuf.h for the memory ordering). */
 #include "kernel/ringbuf.h"
 
+#include "kernel/kcopy.h"
 
 int ringbuf_init(struct ringbuf *r, uint8_t *buf, uint32_t size)
 {
@@ -25,38 +26,22 @@ uint32_t ringbuf_free(const struct ringbuf *r)
     return r->size - ringbuf_used(r);
 }
 
-/* Copies n bytes, a word at a time while both ends are word-aligned: the
- * board's C library copies byte by byte, and the lines' messages are mostly
- * whole words (the RC pays for every copy of an area request). */
-static void ringbuf_copy(uint8_t *dst, const uint8_t *src, uint32_t n)
-{
-    if ((((uintptr_t)dst | (uintptr_t)src) & 3u) == 0) {
-        for (; n >= 4; n -= 4, dst += 4, src += 4) {
-            uint32_t w;
-            __builtin_memcpy(&w, src, 4);
-            __builtin_memcpy(dst, &w, 4);
-        }
-    }
-    while (n--)
-        *dst++ = *src++;
-}
-
 /* Copies n bytes between the ring at index pos (mod size) and flat memory,
  * in at most two pieces around the wrap. */
 static void ringbuf_copy_in(struct ringbuf *r, uint32_t pos, const uint8_t *src, uint32_t n)
 {
     uint32_t off = pos & (r->size - 1);
     uint32_t first = r->size - off < n ? r->size - off : n;
-    ringbuf_copy(r->buf + off, src, first);
-    ringbuf_copy(r->buf, src + first, n - first);
+    kcopy(r->buf + off, src, first);
+    kcopy(r->buf, src + first, n - first);
 }
 
 static void ringbuf_copy_out(const struct ringbuf *r, uint32_t pos, uint8_t *dst, uint32_t n)
 {
     uint32_t off = pos & (r->size - 1);
     uint32_t first = r->size - off < n ? r->size - off : n;
-    ringbuf_copy(dst, r->buf + off, first);
-    ringbuf_copy(dst + first, r->buf, n - first);
+    kcopy(dst, r->buf + off, first);
+    kcopy(dst + first, r->buf, n - first);
 }
 
 int ringbuf_put(struct ringbuf *r, const void *data, uint32_t n)

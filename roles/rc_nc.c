@@ -216,16 +216,16 @@ static int rc_nc_give(struct rc_run *run, uint32_t k, struct line_msg *m)
     else if (!areas_next(&run->sched, &a))
         return 0;
     m->type = MSG_NC_AREA;
-    m->len = 16;
-    wire_put_u32(m->payload, a.x);
-    wire_put_u32(m->payload + 4, a.y);
-    wire_put_u32(m->payload + 8, a.w);
-    wire_put_u32(m->payload + 12, a.h);
+    m->len = MSG_NC_AREA_SIZE;
+    wire_put_u16(m->payload, (uint16_t)a.x);
+    wire_put_u16(m->payload + 2, (uint16_t)a.y);
+    wire_put_u16(m->payload + 4, (uint16_t)a.w);
+    wire_put_u16(m->payload + 6, (uint16_t)a.h);
     if (n->inject.kind && n->given == n->inject.area) {
-        m->len = 20;
-        wire_put_u8(m->payload + 16, n->inject.kind);
-        wire_put_u8(m->payload + 17, 0);
-        wire_put_u16(m->payload + 18, (uint16_t)(n->inject.row * (a.h + 1) / 256));
+        m->len = MSG_NC_AREA_INJECT_SIZE;
+        wire_put_u8(m->payload + 8, n->inject.kind);
+        wire_put_u8(m->payload + 9, 0);
+        wire_put_u16(m->payload + 10, (uint16_t)(n->inject.row * (a.h + 1) / 256));
     }
     n->given++;
     n->area = a;
