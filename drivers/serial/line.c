@@ -26,6 +26,7 @@ struct line {
 };
 
 static struct line lines[UNITS_MAX_CORES - 1];
+static uint32_t lines_used;
 
 /* Per receiving core, one bit per sending core: set by the sender after
  * each message, taken by a receiver that serves many lines (the RC) so
@@ -42,7 +43,6 @@ static uint32_t line_pending[UNITS_MAX_CORES][LINE_PENDING_WORDS];
 _Static_assert(LINEMSG_HEADER_SIZE % 4 == 0 && LINE_MAX_PAYLOAD % 4 == 0 &&
                    LINE_RING_SIZE % 4 == 0,
                "line records are whole words");
-static uint32_t lines_used;
 
 void line_init_all(uint32_t ncores)
 {
