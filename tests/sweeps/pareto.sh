@@ -14,11 +14,11 @@
 # instructions per pixel (links1 render --count-insns, the TCG plugin; the
 # sum over the NCs, which does not depend on how the areas were shared
 # out), one run (it varies by a few instructions per pixel between runs),
-# for every configuration the
-# board's firmware runs: float (VFP) and soft at every depth, adaptive on
-# and off, refraction off, and fixed Q12.19 (the only fixed format the
-# firmware is built with) at depth 5; no double and no density-step
-# variants on the board.  Error: PSNR against the reference, share of
+# for every configuration the board runs: float (VFP) and soft at every
+# depth, adaptive on and off, refraction off, fixed Q12.19 at depth 5, and
+# the other fixed formats at depth 5 with firmware built by this script
+# into DIR/fw-qF (make B=DIR/fw-qF FW_EXTRA_CFLAGS=-DNUM_FRAC_BITS=F, never
+# the default build); no double and no density-step variants on the board.  Error: PSNR against the reference, share of
 # pixels beyond 1/255 and 2/255; a board image is also checked to be the
 # host image of the same arithmetic, byte for byte.  The Pareto front (no
 # other point both cheaper and closer) is marked on each chart.  Writes
@@ -142,6 +142,11 @@ bconfigs+=("float d$dm adaptive, refraction off|float|--max-depth $dm --refracti
 bconfigs+=("fixed Q12.19 d$dm adaptive|fixed|--max-depth $dm|fixed Q12.19 d$dm adaptive")
 [ "$SMALL" = 1 ] ||
     bconfigs+=("fixed Q12.19 d$dm fixed cutoff|fixed|--max-depth $dm --min-weight 0|fixed Q12.19 d$dm fixed cutoff")
+for f in $FRACS; do # firmware with another fixed format, in this script's own build dir
+    fw=$out/fw-q$f
+    make -s --no-print-directory B="$fw" FW_EXTRA_CFLAGS=-DNUM_FRAC_BITS=$f "$fw/links1-fixed.elf"
+    bconfigs+=("fixed Q$((31 - f)).$f d5 adaptive|fixed|--max-depth 5 --firmware $fw/links1-fixed.elf|fixed Q$((31 - f)).$f d5 adaptive")
+done
 
 printf 'config\tnc_insns_per_pixel\tpsnr_db\tbeyond1_pct\tbeyond2_pct\tarith\tsame_as_host\tfront\n' \
     >"$out/pareto-board.raw"
@@ -176,7 +181,7 @@ for a in float soft fixed; do
         >"$out/board-$a.dat"
 done
 awk -F'\t' 'NR > 1 && $8 == "yes" { print $2, $3 }' "$out/pareto-board.tsv" >"$out/board-front.dat"
-awk -F'\t' 'NR > 1 { n = $1; sub(/^(float|soft|fixed Q12.19) /, "", n); gsub(/ /, "_", n);
+awk -F'\t' 'NR > 1 { n = $1; sub(/^(float|soft|fixed) /, "", n); gsub(/ /, "_", n);
     print $2, $3, n }' "$out/pareto-board.tsv" >"$out/board-labels.dat"
 if command -v gnuplot >/dev/null; then
     gnuplot <<GP
@@ -196,7 +201,7 @@ set title "demo.scn $SIZE on the board ($NCS NCs): NC instructions per pixel aga
 set xlabel "NC guest instructions per pixel (sum over the NCs, TCG plugin)"
 plot "$out/board-float.dat" using 1:2 with points pt 7 ps 0.9 title "float (VFP)", \
      "$out/board-soft.dat" using 1:2 with points pt 5 ps 0.9 title "soft float", \
-     "$out/board-fixed.dat" using 1:2 with points pt 9 ps 1.1 title "fixed Q12.19", \
+     "$out/board-fixed.dat" using 1:2 with points pt 9 ps 1.1 title "fixed point (Q12.19, and the other formats' firmware)", \
      "$out/board-front.dat" using 1:2 with linespoints lw 2 pt 6 ps 1.5 title "Pareto front", \
      "$out/board-labels.dat" using 1:2:3 with labels font ",7" offset 0,0.7 notitle
 GP
