@@ -213,8 +213,10 @@ int model_child_load(const char *path, model_loader_fn load, const struct model_
     if (g.timed_out || g.too_big || late || g.read_errno || !WIFEXITED(st) ||
         WEXITSTATUS(st) != 0 || g.len == 0) {
         child_judge(path, st, &g, lim, late, err, errlen);
-    } else if (g.buf[0] == 'E') {
+    } else if (g.buf[0] == 'E' && g.len > 1) {
         child_message(g.buf + 1, g.len - 1, err, errlen);
+    } else if (g.buf[0] == 'E') {
+        snprintf(err, errlen, "%s: the model library refused it without saying why", path);
     } else if (g.buf[0] != 'M') {
         snprintf(err, errlen, "%s: the model library handed back malformed data (it began "
                               "with byte %u)", path, g.buf[0]);

@@ -229,6 +229,14 @@ static int load_refuse(const char *path, struct model *m, char *err, size_t errl
     return -1;
 }
 
+static int load_refuse_silently(const char *path, struct model *m, char *err, size_t errlen)
+{
+    (void)path, (void)errlen;
+    memset(m, 0, sizeof *m);
+    err[0] = 0;
+    return -1;
+}
+
 /* A model whose second node's parent is itself. */
 static int load_forward_parent(const char *path, struct model *m, char *err, size_t errlen)
 {
@@ -270,6 +278,8 @@ static void test_children_that_fail(void)
          MODELS "cube.obj: the model library handed back more than 1000 bytes (stopped)"},
         {"refusal", load_refuse, {20000, MODEL_CHILD_MAX_BYTES},
          MODELS "cube.obj: refused ? here"},
+        {"silent refusal", load_refuse_silently, {20000, MODEL_CHILD_MAX_BYTES},
+         MODELS "cube.obj: the model library refused it without saying why"},
         {"parent", load_forward_parent, {20000, MODEL_CHILD_MAX_BYTES},
          MODELS "cube.obj: the model library handed back malformed data (node 1: parent 1, "
                 "not -1 to 0)"},
