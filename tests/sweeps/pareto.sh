@@ -21,17 +21,26 @@
 # the default build); no double and no density-step variants on the board.  Error: PSNR against the reference, share of
 # pixels beyond 1/255 and 2/255; a board image is also checked to be the
 # host image of the same arithmetic, byte for byte.  The Pareto front (no
-# other point both cheaper and closer) is marked on each chart.  Writes
+# other point both cheaper and closer) is marked on each chart; the board's
+# chart also marks the front of an NC without an FPU (soft and fixed).  Writes
 # DIR/pareto.tsv and DIR/pareto.png (host), DIR/pareto-board.tsv and
 # DIR/pareto-board.png (board).
-#   bash tests/sweeps/pareto.sh [--out DIR]
+#   bash tests/sweeps/pareto.sh [--out DIR] [--charts-only]
+#     (--charts-only: the fronts and charts again from DIR/*.raw, nothing run)
 #   PARETO_SMALL=1 bash tests/sweeps/pareto.sh --out DIR   # the reduced run
 #     (tests/board/pareto_small.sh: 40x30, one run, depth 2 only; on the
 #     board float, soft and fixed adaptive and float with refraction off)
 set -eu
 cd "$(dirname "$0")/../.."
 out=build/pareto
-[ "${1:-}" = --out ] && out=$2
+CHARTS_ONLY=0
+while [ $# -gt 0 ]; do
+    case $1 in
+    --out) out=$2; shift 2 ;;
+    --charts-only) CHARTS_ONLY=1; shift ;;
+    *) echo "usage: pareto.sh [--out DIR] [--charts-only]" >&2; exit 2 ;;
+    esac
+done
 SMALL=${PARETO_SMALL:-0}
 if [ "$SMALL" = 1 ]; then
     SIZE=${SIZE:-40x30} RUNS=${RUNS:-1} DEPTHS=2 FRACS= STEPS=
@@ -43,6 +52,17 @@ NCS=${PARETO_NCS:-4}
 LIMIT_S=${PARETO_RUN_LIMIT_S:-900}
 export FW_DIR=${FW_DIR:-build}
 scene=scenes/demo.scn
+# front RAW TSV: RAW sorted by cost (column 2), the last column "yes"
+# on the front: closer (column 3, PSNR) than every cheaper point
+front() {
+    {
+        head -n 1 "$1"
+        tail -n +2 "$1" | sort -t$'\t' -k2,2g -k3,3gr |
+            awk -F'\t' -v OFS='\t' '{ $NF = ($3 + 0 > best) ? "yes" : ""; if ($3 + 0 > best) best = $3 + 0; print }'
+    } >"$2"
+}
+
+if [ "$CHARTS_ONLY" = 0 ]; then # measure; --charts-only redraws from DIR/*.raw
 mkdir -p "$out/bin"
 make -s --no-print-directory build/links1 build/links1-ref-double build/links1-ref-float \
     build/links1-ref-fixed
@@ -76,16 +96,6 @@ errors() {
     psnr=$(echo "$c2" | sed -nE 's/.*PSNR ([0-9.]+) dB.*/\1/p')
     awk -v q="$psnr" -v w1="$w1" -v w2="$w2" \
         'BEGIN { printf "%s\t%.3f\t%.3f", q, 100 - w1, 100 - w2 }'
-}
-
-# front RAW TSV COLS: RAW sorted by cost (column 2), the last column "yes"
-# on the front: closer (column 3, PSNR) than every cheaper point
-front() {
-    {
-        head -n 1 "$1"
-        tail -n +2 "$1" | sort -t$'\t' -k2,2g -k3,3gr |
-            awk -F'\t' -v OFS='\t' '{ $NF = ($3 + 0 > best) ? "yes" : ""; if ($3 + 0 > best) best = $3 + 0; print }'
-    } >"$2"
 }
 
 # ------------------------------------------------------------------ host
@@ -124,7 +134,6 @@ for c in "${configs[@]}"; do
     awk -v n="$name" -v s="$secs" -v p="$pixels" -v e="$err" -v l="$lost" \
         'BEGIN { printf "%s\t%.0f\t%s\t%s\t\n", n, s * 1e9 / p, e, l }' >>"$out/pareto.raw"
 done
-front "$out/pareto.raw" "$out/pareto.tsv"
 
 # ----------------------------------------------------------------- board
 # name|arithmetic|arguments|the host configuration whose image it must be
@@ -170,7 +179,15 @@ for c in "${bconfigs[@]}"; do
     awk -v n="$name" -v t="$total" -v p="$pixels" -v e="$err" -v a="$arith" -v s="$same" \
         'BEGIN { printf "%s\t%.0f\t%s\t%s\t%s\t\n", n, t / p, e, a, s }' >>"$out/pareto-board.raw"
 done
-front "$out/pareto-board.raw" "$out/pareto-board.tsv"
+fi
+pixels=$(( ${SIZE%x*} * ${SIZE#*x} ))
+front "$out/pareto.raw" "$out/pareto.tsv"
+# the board's front, and the front of the NCs without an FPU (soft, fixed)
+front "$out/pareto-board.raw" "$out/pareto-board.sorted"
+awk -F'\t' -v OFS='\t' 'NR == 1 { print $0, "front_no_fpu"; next }
+    { f = ""; if ($6 != "float" && $3 + 0 > best) { f = "yes"; best = $3 + 0 } print $0, f }' \
+    "$out/pareto-board.sorted" >"$out/pareto-board.tsv"
+rm -f "$out/pareto-board.sorted"
 
 # ---------------------------------------------------------------- charts
 awk -F'\t' 'NR > 1 { print $2, $3 }' "$out/pareto.tsv" >"$out/all.dat"
@@ -181,7 +198,9 @@ for a in float soft fixed; do
         >"$out/board-$a.dat"
 done
 awk -F'\t' 'NR > 1 && $8 == "yes" { print $2, $3 }' "$out/pareto-board.tsv" >"$out/board-front.dat"
-awk -F'\t' 'NR > 1 { n = $1; sub(/^(float|soft|fixed) /, "", n); gsub(/ /, "_", n);
+awk -F'\t' 'NR > 1 && $9 == "yes" { print $2, $3 }' "$out/pareto-board.tsv" >"$out/board-front-nofpu.dat"
+# labels on the fronts' points only (the table has them all)
+awk -F'\t' 'NR > 1 && ($8 == "yes" || $9 == "yes") { n = $1; sub(/^(float|soft|fixed) /, "", n); gsub(/ /, "_", n);
     print $2, $3, n }' "$out/pareto-board.tsv" >"$out/board-labels.dat"
 if command -v gnuplot >/dev/null; then
     gnuplot <<GP
@@ -203,6 +222,7 @@ plot "$out/board-float.dat" using 1:2 with points pt 7 ps 0.9 title "float (VFP)
      "$out/board-soft.dat" using 1:2 with points pt 5 ps 0.9 title "soft float", \
      "$out/board-fixed.dat" using 1:2 with points pt 9 ps 1.1 title "fixed point (Q12.19, and the other formats' firmware)", \
      "$out/board-front.dat" using 1:2 with linespoints lw 2 pt 6 ps 1.5 title "Pareto front", \
+     "$out/board-front-nofpu.dat" using 1:2 with linespoints lw 2 dt 2 pt 6 ps 1.5 title "Pareto front without an FPU (soft, fixed)", \
      "$out/board-labels.dat" using 1:2:3 with labels font ",7" offset 0,0.7 notitle
 GP
 fi
