@@ -65,6 +65,9 @@ endif
 FW_CFLAGS := -std=gnu11 -O2 -g $(HOST_WARN) -I. -MMD -MP $(ARM_CPU) \
 	-ffreestanding -ffunction-sections -fdata-sections -ffp-contract=off \
 	-fno-common -DLINKS1_FIRMWARE $(LIBC_SPECS)
+# FW_EXTRA_CFLAGS: constants overridden for a measurement (pareto.sh builds
+# fixed-point formats into a build directory of its own with B=DIR).
+FW_CFLAGS += $(FW_EXTRA_CFLAGS)
 FW_LDFLAGS := -nostartfiles -Wl,--gc-sections -Wl,--no-warn-rwx-segments \
 	-T$(B)/linker/virt-memory.ld -Tlinker/sections.ld
 # -lm: newlib keeps sqrtf and friends there (picolibc has them in libc too).

@@ -58,6 +58,7 @@ BENCHES += tests/bench/bench_figures.sh
 figures: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all
 	$(Q)FW_DIR=$(FWB) bash tests/bench/figures.sh
-	$(Q)bash tests/sweeps/pareto.sh --out $(B)/pareto
-	$(Q)mkdir -p docs/figures && cp $(B)/pareto/pareto.png $(B)/pareto/pareto.tsv docs/figures/
+	$(Q)FW_DIR=$(FWB) bash tests/sweeps/pareto.sh --out $(B)/pareto
+	$(Q)mkdir -p docs/figures && cp $(B)/pareto/pareto.png $(B)/pareto/pareto.tsv \
+		$(B)/pareto/pareto-board.png $(B)/pareto/pareto-board.tsv docs/figures/
 BENCHES += tests/bench/bench_wallclock.sh

@@ -5,7 +5,8 @@
 SHARED_SRCS += render/scene_load.c
 
 # Models made elsewhere into scene records (`links1 import`, `model`).
-SCENE_MODEL_SRCS := host-tools/scene/model_assimp.c host-tools/scene/scene_import.c \
+SCENE_MODEL_SRCS := host-tools/scene/model_assimp.c host-tools/scene/model_child.c \
+	host-tools/scene/model_wire.c host-tools/scene/scene_import.c \
 	host-tools/scene/scene_import_view.c host-tools/scene/scene_map_image.c \
 	host-tools/scene/scene_write.c host-tools/scene/scene_parse_model.c
 
@@ -98,3 +99,12 @@ HOST_TESTS += test_smooth_double test_smooth_float test_smooth_fixed
 $(foreach a,double float fixed,$(eval test_smooth_$(a)_SRCS = tests/host/test_smooth.c $$(SCENE_TEXT_SRCS)))
 $(foreach a,double float fixed,$(eval test_smooth_$(a)_ARITH := $(a)))
 $(foreach a,double float fixed,$(eval test_smooth_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
+
+# The model library in a child process: the same models as in this
+# process, the wire form cut and damaged, children that crash, abort, exit
+# badly, hang, send too much or send a malformed model, and libassimp's own
+# crashes (tests/fuzz/assimp-crashes/).
+HOST_TESTS += test_model_child
+test_model_child_SRCS := tests/host/test_model_child.c $(SCENE_TEXT_SRCS)
+test_model_child_ARITH := double
+test_model_child_LIBS := $(SCENE_TEXT_LIBS)

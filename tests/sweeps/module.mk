@@ -2,6 +2,8 @@
 # make_scene.py, sweep.sh) and the speed-against-accuracy chart (pareto.sh).
 # make test runs the sweeps at reduced size: every wrong pixel flagged.
 BOARD_TESTS += tests/sweeps/flagged.sh
+# and the Pareto chart at reduced size: both charts, board points exact.
+BOARD_TESTS += tests/sweeps/pareto_small.sh
 
 # make sweeps: the full sweeps; tables and charts into docs/figures/.
 .PHONY: sweeps
