@@ -275,7 +275,7 @@ static void test_clip_y_tree_walk_random_areas(void)
 }
 
 /* At every pixel of every area, raster order: the X list holds exactly the
- * Y-list clusters whose X range holds x, each once. */
+ * Y-list clusters whose X range holds x, each once, nearest own box first. */
 static void test_clip_x_matches_brute_force(void)
 {
     for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
@@ -287,7 +287,7 @@ static void test_clip_x_matches_brute_force(void)
         uint8_t *mark = calloc(t.f->cluster_count, 1);
         render_area_t areas[TC_MAX_AREAS];
         uint32_t na = tc_areas(t.f, areas, TC_MAX_AREAS);
-        int exact = 1;
+        int exact = 1, z_sorted = 1;
         uint64_t checked = 0;
         for (uint32_t i = 0; i < na; i++) {
             const render_area_t *a = &areas[i];
@@ -308,6 +308,10 @@ static void test_clip_x_matches_brute_force(void)
                     }
                     for (uint32_t k = 0; k < n; k++)
                         mark[t.clip.xlist[k]] = 0;
+                    /* nearest own box first */
+                    for (uint32_t k = 1; k < n; k++)
+                        z_sorted &= !num_lt(cl[t.clip.xlist[k]].own_bounds.lo.z,
+                                            cl[t.clip.xlist[k - 1]].own_bounds.lo.z);
                     exact &= n == want && good == n;
                     checked++;
                 }
@@ -324,6 +328,7 @@ static void test_clip_x_matches_brute_force(void)
         if (!exact)
             printf("%s: X list differs from brute force\n", tb_scenes[s]);
         CHECK(exact);
+        CHECK(z_sorted);
         CHECK(checked > (uint64_t)t.f->width * t.f->height);
         free(mark);
         tc_close(&t);
