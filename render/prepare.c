@@ -349,6 +349,25 @@ static void prep_screen_rect(const render_frame_t *f, render_cluster_t *c)
     c->screen_y1 = iy1 > f->height - 1 ? f->height - 1 : iy1;
 }
 
+/* Grows c's tree rectangle to hold the rectangle (x0, y0)-(x1, y1), which
+ * is ignored when empty (x0 > x1 or y0 > y1). */
+static void prep_tree_rect_add(render_cluster_t *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
+{
+    if (x0 > x1 || y0 > y1)
+        return;
+    if (c->tree_x0 > c->tree_x1 || c->tree_y0 > c->tree_y1) {
+        c->tree_x0 = x0;
+        c->tree_y0 = y0;
+        c->tree_x1 = x1;
+        c->tree_y1 = y1;
+        return;
+    }
+    c->tree_x0 = x0 < c->tree_x0 ? x0 : c->tree_x0;
+    c->tree_y0 = y0 < c->tree_y0 ? y0 : c->tree_y0;
+    c->tree_x1 = x1 > c->tree_x1 ? x1 : c->tree_x1;
+    c->tree_y1 = y1 > c->tree_y1 ? y1 : c->tree_y1;
+}
+
 static void prep_lights(const scene_t *s, const xform_t *world_to_eye, render_frame_t *f)
 {
     f->light_count = s->light_count;
@@ -516,13 +535,21 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     }
     for (uint32_t i = 0; i < s->prim_count; i++)
         prep_aabb_add_box(&f->clusters[s->prims[i].cluster].own_bounds, &f->prims[i].bounds);
+    for (uint32_t i = 0; i < s->cluster_count; i++) {
+        f->clusters[i].tree_x0 = f->clusters[i].tree_y0 = 1;
+        f->clusters[i].tree_x1 = f->clusters[i].tree_y1 = 0;
+    }
     /* children have larger indices than parents: one backward pass */
     for (uint32_t i = s->cluster_count; i-- > 0;) {
         render_cluster_t *c = &f->clusters[i];
         prep_aabb_add_box(&c->bounds, &c->own_bounds);
-        if (i > 0)
-            prep_aabb_add_box(&f->clusters[s->clusters[i].parent].bounds, &c->bounds);
         prep_screen_rect(f, c);
+        prep_tree_rect_add(c, c->screen_x0, c->screen_y0, c->screen_x1, c->screen_y1);
+        if (i > 0) {
+            render_cluster_t *p = &f->clusters[s->clusters[i].parent];
+            prep_aabb_add_box(&p->bounds, &c->bounds);
+            prep_tree_rect_add(p, c->tree_x0, c->tree_y0, c->tree_x1, c->tree_y1);
+        }
     }
     prep_lights(s, &world_to_eye, f);
     *out = f;

@@ -102,6 +102,11 @@ typedef struct {
      * lies wholly behind the eye.  Covers the whole screen when the box
      * straddles the eye plane. */
     int32_t screen_x0, screen_y0, screen_x1, screen_y1;
+    /* The smallest rectangle holding the screen rectangles of this cluster
+     * and of every cluster below it (empty, x0 > x1, when all of them are):
+     * Y clipping skips a whole subtree whose tree rectangle misses the
+     * area (render/clip.c). */
+    int32_t tree_x0, tree_y0, tree_x1, tree_y1;
     uint32_t first_child, child_count; /* into frame->child_list */
     uint32_t first_prim, prim_count;   /* into frame->prim_list */
 } render_cluster_t;

@@ -48,7 +48,7 @@ test_render_link_ARITH := float
 
 # Frame traces (links1 render --trace) and their replay on equal-speed units.
 HOST_TESTS += test_trace
-test_trace_SRCS := tests/host/test_trace.c host-tools/trace_file.c host-tools/replay.c
+test_trace_SRCS := tests/host/test_trace.c host-tools/trace_file.c host-tools/trace_scale.c host-tools/replay.c
 test_trace_ARITH := double
 BENCHES += tests/bench/bench_figures.sh
 
