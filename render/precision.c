@@ -5,9 +5,9 @@
 #include "render/vec3.h"
 
 #define PRECISION_INVERSE_TOL NUM_C(RENDER_INVERSE_TOLERANCE_VALUE)
-#define PRECISION_LOST_TOL NUM_C(RENDER_LOST_TOLERANCE_VALUE)
-#define PRECISION_MIN_SPAN NUM_C(RENDER_MIN_SPAN_VALUE)
-#define PRECISION_ACNE_TOL NUM_C(RENDER_RAY_EPSILON_VALUE / 2)
+#define PRECISION_LOST_TOL(s) scene_tolerance((s), NUM_C(RENDER_LOST_TOLERANCE_VALUE))
+#define PRECISION_MIN_SPAN(s) scene_tolerance((s), NUM_C(RENDER_MIN_SPAN_VALUE))
+#define PRECISION_ACNE_TOL(s) scene_tolerance((s), NUM_C(RENDER_RAY_EPSILON_VALUE / 2))
 
 /* Largest |(m * inv)[i][j] - identity| over the 3x3 part. */
 static num_t precision_residual(const xform_t *m, const xform_t *inv)
@@ -96,20 +96,59 @@ render_status_t precision_check(render_frame_t *f)
     }
     if (num_is_sat(f->span) || num_is_sat(extent))
         f->precision_lost = 1;
+    num_t lost_tol = PRECISION_LOST_TOL(f->scene), acne_tol = PRECISION_ACNE_TOL(f->scene);
     for (uint32_t i = 0; i < f->prim_count; i++) {
         render_prim_t *p = &f->prims[i];
         num_t least, worst = precision_hit_error(p, extent, &least);
         p->imprecise = p->kind != SCENE_PRIM_TRIANGLE &&
-                       (num_gt(worst, PRECISION_LOST_TOL) || num_gt(least, PRECISION_ACNE_TOL));
+                       (num_gt(worst, lost_tol) || num_gt(least, acne_tol));
     }
-    return num_lt(f->span, PRECISION_MIN_SPAN) ? RENDER_ERR_EXTENT : RENDER_OK;
+    return num_lt(f->span, PRECISION_MIN_SPAN(f->scene)) ? RENDER_ERR_EXTENT : RENDER_OK;
+}
+
+/* "d.dde-N" (or "ddd.d" and the like): three significant digits of v,
+ * a length in the scene's stored units, given in the scene text's units
+ * (v * 2^-unit_exp), with integer steps only */
+static void precision_fmt_len(const scene_t *s, num_t v, char *out, size_t cap)
+{
+    num_t x = num_scale2(num_abs(v), -s->unit_exp);
+    int dec = 0;
+    if (num_is_sat(x) || !num_gt(x, NUM_ZERO)) {
+        fmt_snprintf(out, cap, num_is_sat(x) ? "(out of range)" : "0");
+        return;
+    }
+    while (num_lt(x, NUM_C(100)) && dec < 12) { /* to 3 digits before the point */
+        x = num_mul_int(x, 10);
+        dec++;
+    }
+    int32_t digits = num_floor_int(num_add(x, NUM_HALF));
+    while (digits >= 1000) { /* a large length: whole units are enough */
+        digits /= 10;
+        dec--;
+    }
+    if (dec == 0) { /* 100 .. 999: plain */
+        fmt_snprintf(out, cap, "%ld", (long)digits);
+        return;
+    }
+    if (dec == 1 || dec == 2) { /* 1 .. 99.9 */
+        fmt_snprintf(out, cap, dec == 1 ? "%ld.%01ld" : "%ld.%02ld", (long)(digits / (dec == 1 ? 10 : 100)),
+                     (long)(digits % (dec == 1 ? 10 : 100)));
+        return;
+    }
+    if (dec < 0) {
+        fmt_snprintf(out, cap, "%ld.%02lde%d", (long)(digits / 100), (long)(digits % 100), 2 - dec);
+        return;
+    }
+    fmt_snprintf(out, cap, "%ld.%02lde-%d", (long)(digits / 100), (long)(digits % 100), dec - 2);
 }
 
 void precision_extent_message(const render_frame_t *f, char *out, size_t cap)
 {
-    /* the span in thousandths (it is below RENDER_MIN_SPAN_VALUE, 1) */
-    int32_t milli = num_floor_int(num_add(num_mul_int(f->span, 1000), NUM_HALF));
-    char what[48];
+    const scene_t *s = f->scene;
+    char span[24], need[24], offset[24], what[48];
+    precision_fmt_len(s, f->span, span, sizeof span);
+    precision_fmt_len(s, PRECISION_MIN_SPAN(s), need, sizeof need);
+    precision_fmt_len(s, f->ray_epsilon, offset, sizeof offset);
 #if defined(LINKS1_NUM_FIXED)
     fmt_snprintf(what, sizeof what, "fixed Q%d.%d resolves 2^-%d", 31 - NUM_FRAC_BITS,
                  NUM_FRAC_BITS, NUM_FRAC_BITS);
@@ -117,7 +156,9 @@ void precision_extent_message(const render_frame_t *f, char *out, size_t cap)
     fmt_snprintf(what, sizeof what, "%s resolves 2^-%d of a value", NUM_NAME,
                  (int)sizeof(num_t) == 8 ? 52 : 23);
 #endif
-    fmt_snprintf(out, cap, "scene spans %ld.%03ld; %s, but secondary rays start %s from a "
-                 "surface, so a scene needs a span of at least %s (RENDER_MIN_SPAN_VALUE): "
-                 "scale it up", (long)(milli / 1000), (long)(milli % 1000), what, "0.002", "1");
+    fmt_snprintf(out, cap, "scene spans %s; %s after scaling the scene by 2^%ld, but secondary "
+                 "rays start %s from a surface (scaled to the scene's largest length), so a "
+                 "scene needs a span of at least %s (RENDER_MIN_SPAN_VALUE): its clusters "
+                 "shrink it below its own coordinates; scale the coordinates instead",
+                 span, what, (long)s->unit_exp, offset, need);
 }

@@ -132,6 +132,8 @@ typedef struct {
                                       cluster maps, boxes): every pixel then
                                       counts as lost precision */
     num_t span;                    /* largest side of the scene's eye-space box */
+    num_t ray_epsilon;             /* RENDER_RAY_EPSILON_VALUE scaled to the
+                                      scene (scene_tolerance) */
 } render_frame_t;
 
 typedef struct {
