@@ -106,40 +106,46 @@ render_status_t precision_check(render_frame_t *f)
     return num_lt(f->span, PRECISION_MIN_SPAN(f->scene)) ? RENDER_ERR_EXTENT : RENDER_OK;
 }
 
-/* "d.dde-N" (or "ddd.d" and the like): three significant digits of v,
- * a length in the scene's stored units, given in the scene text's units
- * (v * 2^-unit_exp), with integer steps only */
+/* Three significant digits of v, a length in the scene's stored units,
+ * given in the scene text's units (v * 2^-unit_exp): "0.122", "12.3",
+ * "1.5e-07"; integer steps only (the fixed build has no floating point) */
 static void precision_fmt_len(const scene_t *s, num_t v, char *out, size_t cap)
 {
     num_t x = num_scale2(num_abs(v), -s->unit_exp);
-    int dec = 0;
+    int dec = 0; /* x = digits / 10^dec */
     if (num_is_sat(x) || !num_gt(x, NUM_ZERO)) {
         fmt_snprintf(out, cap, num_is_sat(x) ? "(out of range)" : "0");
         return;
     }
-    while (num_lt(x, NUM_C(100)) && dec < 12) { /* to 3 digits before the point */
+    while (num_lt(x, NUM_C(100)) && dec < 12) {
         x = num_mul_int(x, 10);
         dec++;
     }
     int32_t digits = num_floor_int(num_add(x, NUM_HALF));
-    while (digits >= 1000) { /* a large length: whole units are enough */
+    while (digits >= 1000 && dec > 0) {
+        digits = (digits + 5) / 10;
+        dec--;
+    }
+    while (dec > 0 && digits % 10 == 0) { /* no trailing zeros */
         digits /= 10;
         dec--;
     }
-    if (dec == 0) { /* 100 .. 999: plain */
-        fmt_snprintf(out, cap, "%ld", (long)digits);
+    if (dec <= 5) { /* down to 0.001: plain */
+        int32_t p10 = 1;
+        for (int i = 0; i < dec; i++)
+            p10 *= 10;
+        fmt_snprintf(out, cap, dec ? "%ld.%0*ld" : "%ld", (long)(digits / p10), dec,
+                     (long)(digits % p10));
         return;
     }
-    if (dec == 1 || dec == 2) { /* 1 .. 99.9 */
-        fmt_snprintf(out, cap, dec == 1 ? "%ld.%01ld" : "%ld.%02ld", (long)(digits / (dec == 1 ? 10 : 100)),
-                     (long)(digits % (dec == 1 ? 10 : 100)));
-        return;
+    int e = 0; /* digits to one before the point */
+    int32_t p10 = 1;
+    while (digits / p10 >= 10) {
+        p10 *= 10;
+        e++;
     }
-    if (dec < 0) {
-        fmt_snprintf(out, cap, "%ld.%02lde%d", (long)(digits / 100), (long)(digits % 100), 2 - dec);
-        return;
-    }
-    fmt_snprintf(out, cap, "%ld.%02lde-%d", (long)(digits / 100), (long)(digits % 100), dec - 2);
+    fmt_snprintf(out, cap, "%ld.%0*lde-%d", (long)(digits / p10), e, (long)(digits % p10),
+                 dec - e);
 }
 
 void precision_extent_message(const render_frame_t *f, char *out, size_t cap)
@@ -156,9 +162,8 @@ void precision_extent_message(const render_frame_t *f, char *out, size_t cap)
     fmt_snprintf(what, sizeof what, "%s resolves 2^-%d of a value", NUM_NAME,
                  (int)sizeof(num_t) == 8 ? 52 : 23);
 #endif
-    fmt_snprintf(out, cap, "scene spans %s; %s after scaling the scene by 2^%ld, but secondary "
-                 "rays start %s from a surface (scaled to the scene's largest length), so a "
-                 "scene needs a span of at least %s (RENDER_MIN_SPAN_VALUE): its clusters "
-                 "shrink it below its own coordinates; scale the coordinates instead",
+    fmt_snprintf(out, cap, "scene spans %s; %s (lengths scaled by 2^%ld), but secondary rays "
+                 "start %s from a surface, so a scene needs a span of at least %s: its clusters "
+                 "shrink it below its coordinates; scale those instead",
                  span, what, (long)s->unit_exp, offset, need);
 }

@@ -34,8 +34,7 @@ want() { # NAME FAMILY KNOB ARITH TEXT
         *) echo "FAIL $1: '$status' does not say '$5'" ;;
     esac
 }
-want refuse_span_double scale_down 0.03 double "scene spans 0.362; double resolves 2^-52"
-want refuse_span_fixed scale_down 0.03 fixed \
-    "scene spans 0.362; fixed Q12.19 resolves 2^-19, but secondary rays start 0.002 from a surface, so a scene needs a span of at least 1"
+want refuse_span_double cluster_scale 0.01 double \
+    "scene spans 0.122; double resolves 2^-52 of a value (lengths scaled by 2^1), but secondary rays start 0.002 from a surface, so a scene needs a span of at least 1"
 want refuse_cluster_scale_fixed cluster_scale 0.01 fixed \
     "a cluster transform scales beyond what the arithmetic can invert"
