@@ -73,7 +73,10 @@
                                            scenes are refused (RENDER_ERR_EXTENT) */
 #define RENDER_INVERSE_TOLERANCE_VALUE 1e-3 /* |M * M^-1 - I| of a cluster map
                                            beyond this: RENDER_ERR_SCALE */
-#define RENDER_MAP_TEXEL_TOLERANCE_VALUE (1.0 / 32) /* map lookups: render/maps.h */
+#define RENDER_MAP_TEXEL_TOLERANCE_VALUE (1.0 / 64) /* map lookups: render/maps.h;
+                                           a bilinear colour moves by at most
+                                           this times a full-scale step between
+                                           texels: under 2/255 */
 #define RENDER_LOST_TOLERANCE_VALUE 5e-2 /* a primitive whose estimated hit
                                            point error exceeds this, in scene
                                            units, is imprecise; so is one whose

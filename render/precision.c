@@ -57,10 +57,13 @@ render_status_t precision_invert(const xform_t *m, xform_t *inv)
  * smallest over the axes: the error across the flattest side, where a
  * secondary ray starting RENDER_RAY_EPSILON_VALUE off the surface would
  * hit it again (shadow acne); the largest moves a hit along a surface. */
-static num_t precision_hit_error(const render_prim_t *p, num_t extent, num_t *least)
+static num_t precision_hit_error(const render_prim_t *p, num_t extent, num_t *least,
+                                 num_t *local_worst)
 {
     num_t worst = NUM_ZERO;
     *least = NUM_FAR;
+    *local_worst = NUM_FAR;
+    num_t local_max = NUM_ZERO;
     for (int i = 0; i < 3; i++) {
         const num_t *row = p->to_local.m[i];
         num_t len = num_len3(row[0], row[1], row[2]);
@@ -73,13 +76,31 @@ static num_t precision_hit_error(const render_prim_t *p, num_t extent, num_t *le
                                                    saturates and misses */
             return NUM_FAR;
         num_t err = num_add(num_mul(steps, extent), num_add(num_ulp(row[3]), num_ulp(local)));
-        err = num_div(num_mul(err, NUM_HALF), len);
+        err = num_mul(err, NUM_HALF);
+        local_max = num_max(local_max, err);
+        err = num_div(err, len);
         if (num_is_sat(err))
             return NUM_FAR;
         worst = num_max(worst, err);
         *least = num_min(*least, err);
     }
+    *local_worst = local_max;
     return worst;
+}
+
+/* A triangle's map coordinates: u = u0 + beta (u1 - u0) + gamma (u2 - u0),
+ * each barycentric a distance in the plane over a height, the point off by
+ * a few steps of the arithmetic at the scene's extent. */
+static num_t precision_triangle_uv_error(const render_prim_t *p, num_t extent)
+{
+    num_t height = num_min(num_abs(p->height1), num_abs(p->height2));
+    num_t bary = num_div(num_mul_int(num_ulp(extent), 4), height);
+    num_t spread = NUM_ZERO;
+    for (int k = 1; k < 3; k++)
+        spread = num_add(spread, num_max(num_abs(num_sub(p->tex_u[k], p->tex_u[0])),
+                                         num_abs(num_sub(p->tex_v[k], p->tex_v[0]))));
+    num_t err = num_mul(bary, spread);
+    return num_is_sat(err) || num_is_sat(bary) ? NUM_FAR : err;
 }
 
 render_status_t precision_check(render_frame_t *f)
@@ -99,9 +120,19 @@ render_status_t precision_check(render_frame_t *f)
     num_t lost_tol = PRECISION_LOST_TOL(f->scene), acne_tol = PRECISION_ACNE_TOL(f->scene);
     for (uint32_t i = 0; i < f->prim_count; i++) {
         render_prim_t *p = &f->prims[i];
-        num_t least, worst = precision_hit_error(p, extent, &least);
+        num_t least, local, worst = precision_hit_error(p, extent, &least, &local);
         p->imprecise = p->kind != SCENE_PRIM_TRIANGLE &&
                        (num_gt(worst, lost_tol) || num_gt(least, acne_tol));
+        /* map coordinates (render/prim.c): a box face's are (q + 1) / 2 of
+         * a local coordinate q, an ellipsoid's a pseudo-angle / 4 and
+         * (n.y + 1) / 2 of its unit sphere's point, a density sphere's come
+         * from its normal (not estimated) */
+        switch (p->kind) {
+        case SCENE_PRIM_TRIANGLE: p->uv_error = precision_triangle_uv_error(p, extent); break;
+        case SCENE_PRIM_BOX: p->uv_error = num_mul(local, NUM_HALF); break;
+        case SCENE_PRIM_ELLIPSOID: p->uv_error = local; break;
+        default: p->uv_error = NUM_ZERO; break;
+        }
     }
     return num_lt(f->span, PRECISION_MIN_SPAN(f->scene)) ? RENDER_ERR_EXTENT : RENDER_OK;
 }

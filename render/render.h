@@ -91,6 +91,8 @@ typedef struct {
                             to_local map can move a hit point by more than
                             RENDER_LOST_TOLERANCE_VALUE: pixels that see it
                             count as lost precision */
+    num_t uv_error;      /* render_prepare's estimate of the rounding error
+                            of a hit's map coordinates u, v (render/maps.h) */
 } render_prim_t;
 
 /* A cluster in eye coordinates. */

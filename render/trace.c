@@ -238,16 +238,18 @@ static void trace_surface_look(render_ctx_t *ctx, const hit_t *hit, const scene_
                                rgb_t *colour, vec3_t *normal)
 {
     const scene_t *s = ctx->frame->scene;
+    num_t uv_error = ctx->frame->prims[hit->prim].uv_error;
     *colour = m->colour;
     if (m->colour_map != SCENE_NONE) {
         *colour = rgb_mul(*colour, map_colour(&s->maps[m->colour_map], hit->u, hit->v));
-        if (map_imprecise(&s->maps[m->colour_map]))
+        if (map_imprecise(&s->maps[m->colour_map], uv_error))
             ctx->pixel_lost = 1;
     }
     *normal = hit->normal;
     if (m->bump_map != SCENE_NONE) {
-        *normal = map_bump(&s->maps[m->bump_map], hit->u, hit->v, hit->normal, hit->tangent);
-        if (map_imprecise(&s->maps[m->bump_map]))
+        const scene_map_t *b = &s->maps[m->bump_map];
+        *normal = map_bump(b, hit->u, hit->v, hit->normal, hit->tangent);
+        if (map_bump_uncertain(b, hit->u, hit->v, uv_error))
             ctx->pixel_lost = 1;
     }
 }
