@@ -29,7 +29,7 @@ const char *render_status_name(render_status_t status)
     case RENDER_ERR_SINGULAR: return "a cluster transform cannot be inverted";
     case RENDER_ERR_RELOCATE: return "a pointer of the blob lies outside it (not self-contained), or a bad base";
     case RENDER_ERR_AREA: return "area empty or not inside the screen";
-    case RENDER_ERR_EXTENT: return "the scene spans less than 1 unit (RENDER_MIN_SPAN_VALUE, 500 times the ray offset of 0.002): its detail is below what the renderer resolves; scale it up";
+    case RENDER_ERR_EXTENT: return "the scene spans less than RENDER_MIN_SPAN_VALUE (500 ray offsets; both scaled with a scene whose largest length is under 1/2): its clusters shrink it below its own coordinates; scale those instead";
     case RENDER_ERR_SCALE: return "a cluster transform scales beyond what the arithmetic can invert (it is not exactly singular: scale the scene instead of the cluster, or use another arithmetic)";
     }
     return "unknown render status";

@@ -187,10 +187,10 @@ typedef enum {
     RENDER_ERR_RELOCATE,     /* a pointer of a blob lies outside the blob
                                 (not self-contained), or a bad base */
     RENDER_ERR_AREA,         /* an area empty or not inside the screen */
-    RENDER_ERR_EXTENT,       /* the scene spans less than RENDER_MIN_SPAN_VALUE:
-                                its detail is finer than the ray offset and
-                                the arithmetic resolve (render_prepare then
-                                still sets *out, for frame->span only) */
+    RENDER_ERR_EXTENT,       /* the scene spans less than RENDER_MIN_SPAN_VALUE
+                                (times 2^tol_exp, scene.h): its detail is
+                                finer than the ray offset (render_prepare
+                                then still sets *out, for frame->span only) */
     RENDER_ERR_SCALE,        /* a cluster transform scales so little (or so
                                 much) that the arithmetic cannot invert it
                                 to RENDER_INVERSE_TOLERANCE_VALUE */
