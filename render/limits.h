@@ -75,8 +75,8 @@
                                            beyond this: RENDER_ERR_SCALE */
 #define RENDER_MAP_TEXEL_TOLERANCE_VALUE (1.0 / 64) /* map lookups: render/maps.h;
                                            a bilinear colour moves by at most
-                                           this times a full-scale step between
-                                           texels: under 2/255 */
+                                           this times the step between two
+                                           texels: 4/255 at a full-scale step */
 #define RENDER_LOST_TOLERANCE_VALUE 5e-2 /* a primitive whose estimated hit
                                            point error exceeds this, in scene
                                            units, is imprecise; so is one whose
