@@ -1,7 +1,8 @@
 # tests/sweeps/: where each arithmetic breaks (scene families of
 # make_scene.py, sweep.sh) and the speed-against-accuracy chart (pareto.sh).
-# make test runs the sweeps at reduced size: every wrong pixel flagged.
-BOARD_TESTS += tests/sweeps/flagged.sh
+# make test runs the sweeps at reduced size: every wrong pixel flagged; and
+# the scale family gives the same image at every scale (scale_same.sh).
+BOARD_TESTS += tests/sweeps/flagged.sh tests/sweeps/scale_same.sh
 # and the Pareto chart at reduced size: both charts, board points exact.
 BOARD_TESTS += tests/sweeps/pareto_small.sh
 
