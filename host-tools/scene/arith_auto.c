@@ -242,17 +242,25 @@ static int auto_measure_image(const struct auto_run *r, struct auto_cand *c)
         auto_last_line(log, c->why, sizeof c->why);
         return st > 0 ? 0 : -1;
     }
-    if (auto_host_render(r, c->build, 1, mimg, mlog, sizeof mimg) != 0)
+    /* a compiled scene cannot be marked: its flagged pixels go unchecked
+     * and count as missing the target */
+    int compiled = scene_file_ends_with(r->path, ".l1s");
+    if (!compiled && auto_host_render(r, c->build, 1, mimg, mlog, sizeof mimg) != 0) {
+        auto_last_line(mlog, c->why, sizeof c->why);
+        fprintf(stderr, "%s: --arith auto: %s\n", r->prog, c->why);
         return -1;
+    }
     double lost = auto_log_number(log, " pixels lost precision", 0);
     struct image a, m;
     if (lost < 0 || auto_read(img, &a, &r->ref) != 0)
         return -1;
-    if (auto_read(mimg, &m, &r->ref) != 0) {
+    if (auto_read(compiled ? img : mimg, &m, &r->ref) != 0) {
         image_free(&a);
         return -1;
     }
     auto_error(&r->ref, &a, &m, c);
+    if (compiled && lost > 0)
+        c->psnr_flagged = 0;
     c->lost = (unsigned)lost;
     c->measured = 1;
     image_free(&a);
@@ -370,8 +378,9 @@ static void auto_print(const struct auto_run *r, const struct auto_cand *c, int 
         else if (c[i].psnr < o->target_db)
             printf("%.1f dB", c[i].psnr);
         else if (c[i].psnr_flagged < o->target_db)
-            printf("%.1f dB, %u flagged pixels at %.1f dB", c[i].psnr, c[i].lost,
-                   c[i].psnr_flagged);
+            printf(c[i].psnr_flagged > 0 ? "%.1f dB, %u flagged pixels at %.1f dB"
+                                         : "%.1f dB, %u flagged pixels (unchecked in a compiled scene)",
+                   c[i].psnr, c[i].lost, c[i].psnr_flagged);
         else
             printf("%.1f dB%s", c[i].psnr, c[i].lost ? " (flagged pixels within target)" : "");
         if (c[i].cost >= 0)
@@ -410,8 +419,8 @@ static int auto_choose(struct auto_run *r, struct auto_cand *c, int n)
             memcpy(c[i].arith, keep.arith, sizeof keep.arith);
             c[i].cost = -1;
         } else if (auto_measure_image(r, &c[i]) != 0) {
-            fprintf(stderr, "%s: --arith auto: the %s pre-render failed (%s/%s.log)\n", r->prog,
-                    c[i].label, r->tmp, c[i].build);
+            fprintf(stderr, "%s: --arith auto: the %s pre-render failed\n", r->prog,
+                    c[i].label);
             return -2;
         }
     }

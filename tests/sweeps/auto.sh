@@ -13,9 +13,12 @@
 # Writes DIR/auto.tsv and prints the summary: scenes where the pick keeps
 # TARGET dB, and the largest cost of the pick over the best.
 #   bash tests/sweeps/auto.sh [--out DIR]
+# (LINKS1=DIR/links1 FW_DIR=DIR: a copy of build/ that no rebuild touches
+# while it runs.)
 set -u
 cd "$(dirname "$0")/../.."
 LINKS1=${LINKS1:-build/links1}
+BIN=$(dirname "$LINKS1") # links1-ref-* next to it
 export FW_DIR=${FW_DIR:-build}
 SIZE=${SIZE:-160x120}
 TARGET=${TARGET:-40}
@@ -28,7 +31,7 @@ tsv=$out/auto.tsv
 # label|host build|firmware whose cost it takes
 cands=("float|float|float" "soft|float|soft" "fixed Q12.19|fixed|fixed")
 for f in 18 16 14; do
-    [ -x "build/links1-ref-fixed$f" ] && cands+=("fixed Q$((31 - f)).$f|fixed$f|fixed")
+    [ -x "$BIN/links1-ref-fixed$f" ] && cands+=("fixed Q$((31 - f)).$f|fixed$f|fixed")
 done
 
 psnr() { # REF IMG
@@ -65,7 +68,7 @@ for entry in "${families[@]}"; do
             IFS='|' read -r label build fw <<<"$c"
             img=$out/work/$build.png
             [ -f "$img.done" ] || {
-                "build/links1-ref-$build" "$scn" -o "$img" >/dev/null 2>&1 && touch "$img.done"
+                "$BIN/links1-ref-$build" "$scn" -o "$img" >/dev/null 2>&1 && touch "$img.done"
             }
             p[$label]=$([ -f "$img.done" ] && psnr "$ref" "$img" || echo refused)
             if [ "${p[$label]}" != refused ] && awk -v q="${p[$label]}" -v t="$TARGET" 'BEGIN { exit !(q >= t) }' &&
