@@ -10,7 +10,8 @@
 #          take the fixed firmware's count), measured for every firmware
 #          that has a candidate at or above TARGET dB
 #   best   the cheapest candidate at or above TARGET dB at SIZE
-# Writes DIR/auto.tsv and prints the summary: scenes where the pick keeps
+# Writes DIR/auto.tsv and DIR/auto.md (the table of docs/RESULTS.md) and
+# prints the summary: scenes where the pick keeps
 # TARGET dB, and the largest cost of the pick over the best.
 #   bash tests/sweeps/auto.sh [--out DIR]
 # (LINKS1=DIR/links1 FW_DIR=DIR: a copy of build/ that no rebuild touches
@@ -135,3 +136,14 @@ for fpu in vfp none; do
             f, n, refused, picks, below, t, nopick, missed, t, t, worst, where
     }' "$tsv"
 done
+
+# the table of docs/RESULTS.md
+awk -F'\t' 'BEGIN {
+    print "| family | knob | VFP: pick, PSNR, NC insns/pixel, pick / best | no FPU: pick | PSNR | NC insns/pixel | best at 40 dB (insns/pixel) | pick / best |"
+    print "|---|---|---|---|---|---|---|---|"
+}
+NR > 1 && $4 ~ /^refused/ { if ($3 == "vfp") print "| " $1 " | " $2 " | refused by every build ||||||"; next }
+NR > 1 && $3 == "vfp" { v = $4 ", " $5 " dB, " $6 ", " $10 "x"; next }
+NR > 1 { printf "| %s | %s | %s | %s | %s | %s | %s (%s) | %s |\n", $1, $2, v, $4, $5, $6, $7, $9, $10 }' \
+    "$tsv" >"$out/auto.md"
+echo "auto: $tsv, $out/auto.md"

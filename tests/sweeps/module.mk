@@ -18,4 +18,5 @@ sweeps: deps
 sweeps-auto: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all
 	$(Q)bash tests/sweeps/auto.sh --out $(B)/sweeps-auto
-	$(Q)mkdir -p docs/figures && cp $(B)/sweeps-auto/auto.tsv docs/figures/sweep-auto.tsv
+	$(Q)mkdir -p docs/figures && cp $(B)/sweeps-auto/auto.tsv docs/figures/sweep-auto.tsv && \
+		cp $(B)/sweeps-auto/auto.md docs/figures/sweep-auto.md
