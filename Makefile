@@ -38,6 +38,8 @@ HOST_LIBS := -lm
 ARITH_DEF_double := -DLINKS1_NUM_DOUBLE
 ARITH_DEF_float  := -DLINKS1_NUM_FLOAT
 ARITH_DEF_fixed  := -DLINKS1_NUM_FIXED
+# Modules may add more (HOST_EXTRA_ARITHS, each with its ARITH_DEF_<name>).
+HOST_EXTRA_ARITHS :=
 
 # ------------------------------------------------------------- firmware side
 ARM_CC := arm-none-eabi-gcc
@@ -141,7 +143,7 @@ $(B)/host-$(1)$(2)/%.c.o: %.c
 	$(Q)mkdir -p $$(@D)
 	$(Q)$(HOST_CC) $(HOST_CFLAGS) $(ARITH_DEF_$(1)) $(if $(2),$(SAN_FLAGS)) -c $$< -o $$@
 endef
-$(foreach a,double float fixed,$(eval $(call host_objdir,$(a),))$(eval $(call host_objdir,$(a),-san)))
+$(foreach a,double float fixed $(HOST_EXTRA_ARITHS),$(eval $(call host_objdir,$(a),))$(eval $(call host_objdir,$(a),-san)))
 
 # $(1) = program name, $(2) = output dir suffix ('' or -san), $(3) = output path
 define host_prog

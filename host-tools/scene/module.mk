@@ -25,6 +25,7 @@ SCENE_TEXT_LIBS := -lpng -lassimp
 # compare); the links1 tool adds them to its own sources and SCENE_CMD_LIBS
 # to its libraries.
 SCENE_CMD_SRCS := host-tools/scene/scene_cmds.c host-tools/scene/scene_pov.c \
+	host-tools/scene/arith_auto.c \
 	host-tools/scene/image_compare.c host-tools/scene/import_cmd.c $(SCENE_TEXT_SRCS)
 SCENE_CMD_LIBS := $(SCENE_TEXT_LIBS)
 
@@ -41,6 +42,16 @@ links1-ref-float_LIBS := $(SCENE_TEXT_LIBS)
 links1-ref-fixed_SRCS := $(SCENE_REF_SRCS)
 links1-ref-fixed_ARITH := fixed
 links1-ref-fixed_LIBS := $(SCENE_TEXT_LIBS)
+# The same renderer in other fixed formats (links1-ref-fixedN: Q(31-N).N),
+# candidates of `links1 ref --arith auto` (arith_auto.c finds them next to
+# links1; the board's firmware stays Q12.19, fixed/num.h's default).
+REF_FIXED_BITS := 14 16 18
+HOST_EXTRA_ARITHS += $(addprefix fixed,$(REF_FIXED_BITS))
+$(foreach f,$(REF_FIXED_BITS),$(eval ARITH_DEF_fixed$(f) := -DLINKS1_NUM_FIXED -DNUM_FRAC_BITS=$(f)))
+$(foreach f,$(REF_FIXED_BITS),$(eval HOST_TOOLS += links1-ref-fixed$(f)))
+$(foreach f,$(REF_FIXED_BITS),$(eval links1-ref-fixed$(f)_SRCS = $$(SCENE_REF_SRCS)))
+$(foreach f,$(REF_FIXED_BITS),$(eval links1-ref-fixed$(f)_ARITH := fixed$(f)))
+$(foreach f,$(REF_FIXED_BITS),$(eval links1-ref-fixed$(f)_LIBS = $$(SCENE_TEXT_LIBS)))
 
 # Host tests of the format, the parser and the loader (ASan + UBSan).
 HOST_TESTS += test_scene_load test_scene_parse

@@ -14,3 +14,12 @@ sweeps: deps
 	$(Q)mkdir -p docs/figures && cp $(B)/sweeps/sweep-*.png docs/figures/ && \
 		cp $(B)/sweeps/breaks.md docs/figures/sweep-breaks.md && \
 		cp $(B)/sweeps/sweep.tsv docs/figures/sweep.tsv
+
+# make sweeps-auto: --arith auto on every sweep scene against the cheapest
+# candidate that keeps 40 dB (tests/sweeps/auto.sh; about 45 minutes).
+.PHONY: sweeps-auto
+sweeps-auto: deps
+	$(Q)$(MAKE) $(JOBS) --no-print-directory all
+	$(Q)bash tests/sweeps/auto.sh --out $(B)/sweeps-auto
+	$(Q)mkdir -p docs/figures && cp $(B)/sweeps-auto/auto.tsv docs/figures/sweep-auto.tsv && \
+		cp $(B)/sweeps-auto/auto.md docs/figures/sweep-auto.md
