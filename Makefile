@@ -38,6 +38,8 @@ HOST_LIBS := -lm
 ARITH_DEF_double := -DLINKS1_NUM_DOUBLE
 ARITH_DEF_float  := -DLINKS1_NUM_FLOAT
 ARITH_DEF_fixed  := -DLINKS1_NUM_FIXED
+# Modules may add more (HOST_EXTRA_ARITHS, each with its ARITH_DEF_<name>).
+HOST_EXTRA_ARITHS :=
 
 # ------------------------------------------------------------- firmware side
 ARM_CC := arm-none-eabi-gcc
@@ -65,6 +67,9 @@ endif
 FW_CFLAGS := -std=gnu11 -O2 -g $(HOST_WARN) -I. -MMD -MP $(ARM_CPU) \
 	-ffreestanding -ffunction-sections -fdata-sections -ffp-contract=off \
 	-fno-common -DLINKS1_FIRMWARE $(LIBC_SPECS)
+# FW_EXTRA_CFLAGS: constants overridden for a measurement (pareto.sh builds
+# fixed-point formats into a build directory of its own with B=DIR).
+FW_CFLAGS += $(FW_EXTRA_CFLAGS)
 FW_LDFLAGS := -nostartfiles -Wl,--gc-sections -Wl,--no-warn-rwx-segments \
 	-T$(B)/linker/virt-memory.ld -Tlinker/sections.ld
 # -lm: newlib keeps sqrtf and friends there (picolibc has them in libc too).
@@ -138,7 +143,7 @@ $(B)/host-$(1)$(2)/%.c.o: %.c
 	$(Q)mkdir -p $$(@D)
 	$(Q)$(HOST_CC) $(HOST_CFLAGS) $(ARITH_DEF_$(1)) $(if $(2),$(SAN_FLAGS)) -c $$< -o $$@
 endef
-$(foreach a,double float fixed,$(eval $(call host_objdir,$(a),))$(eval $(call host_objdir,$(a),-san)))
+$(foreach a,double float fixed $(HOST_EXTRA_ARITHS),$(eval $(call host_objdir,$(a),))$(eval $(call host_objdir,$(a),-san)))
 
 # $(1) = program name, $(2) = output dir suffix ('' or -san), $(3) = output path
 define host_prog

@@ -158,6 +158,16 @@ static inline num_t num_from_ratio(int32_t num, int32_t den)
 /* floor(a) as an integer; markers give +-INT32_MAX >> NUM_FRAC_BITS */
 static inline int32_t num_floor_int(num_t a) { return a >> NUM_FRAC_BITS; }
 
+/* a * 2^e: a shift, rounded to nearest when e < 0; saturates */
+static inline num_t num_scale2(num_t a, int e)
+{
+    if (num_is_sat(a) || a == 0)
+        return a;
+    if (e >= 0)
+        return e > 31 ? num__sticky(a, 1) : num__from_wide((int64_t)a * ((int64_t)1 << e));
+    return e < -62 ? 0 : (num_t)num__round_shift(a, -e);
+}
+
 /* a * i for a small integer i; saturates */
 static inline num_t num_mul_int(num_t a, int32_t i)
 {
@@ -268,6 +278,17 @@ static inline uint8_t num_to_u8(num_t a)
 
 static inline double num_to_double(num_t a) { return (double)a; }
 static inline num_t num_from_double(double d) { return (num_t)d; }
+
+/* a * 2^e, exact (barring overflow and underflow): multiplications by 2
+ * or 1/2, no libm ldexp */
+static inline num_t num_scale2(num_t a, int e)
+{
+    for (; e > 0; e--)
+        a = a * (num_t)2;
+    for (; e < 0; e++)
+        a = a * (num_t)0.5;
+    return a;
+}
 #endif
 
 /* ----------------------------------------------- built from the above */

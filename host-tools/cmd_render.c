@@ -16,6 +16,7 @@
 #include "host-tools/render_faults.h"
 #include "host-tools/render_session.h"
 #include "host-tools/trace_file.h"
+#include "host-tools/scene/arith_auto.h"
 #include "host-tools/scene/image_io.h"
 #include "host-tools/scene/cli_args.h"
 #include "host-tools/scene/scene_desc.h"
@@ -57,6 +58,8 @@ struct render_opts {
     long unit_fault_frame;
     int resume;                   /* --resume: frames already written are kept */
     const char *trace;  /* --trace FILE */
+    int arith_auto, fpu; /* --arith auto, --fpu vfp|none (-1: not given) */
+    double target_db;    /* --target-db D (-1: not given) */
     struct render_wall wall; /* where the command's wall time went */
     uint32_t traced_w, traced_h, traced_bytes; /* the traced frame's size, broadcast */
 };
@@ -69,7 +72,10 @@ static void render_usage(FILE *out)
             "after another on the same board.\n"
             "options:\n"
             "  --ncs N          node computers (1..254, default %d)\n"
-            "  --arith A        float, soft or fixed (default float)\n"
+            "  --arith A        float, soft or fixed (default float); auto: the cheapest that\n"
+            "                   keeps --target-db D (default 40) dB against double on a\n"
+            "                   low-resolution pre-render, for a unit computer with VFP or,\n"
+            "                   with --fpu none, without (docs/renderer.md)\n"
             "  --balance M      static, dynamic or decreasing (default decreasing)\n"
             "  --areas K        areas of the dynamic grid, smallest-area bound of decreasing\n"
             "                   (default %d)\n"
@@ -135,6 +141,8 @@ enum render_opt_code {
     RENDER_OPT_INJECT_EVERY,
     RENDER_OPT_RESUME,
     RENDER_OPT_TRACE,
+    RENDER_OPT_FPU,
+    RENDER_OPT_TARGET_DB,
 };
 
 static const struct option render_options[] = {
@@ -165,6 +173,8 @@ static const struct option render_options[] = {
     {"inject-every", required_argument, NULL, RENDER_OPT_INJECT_EVERY},
     {"resume", no_argument, NULL, RENDER_OPT_RESUME},
     {"trace", required_argument, NULL, RENDER_OPT_TRACE},
+    {"fpu", required_argument, NULL, RENDER_OPT_FPU},
+    {"target-db", required_argument, NULL, RENDER_OPT_TARGET_DB},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -299,8 +309,53 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
         o->trace = c->arg;
         o->args.flags |= LINK_RENDER_TRACE;
         return 0;
+    case RENDER_OPT_FPU:
+        if ((o->fpu = arith_auto_fpu(c->arg)) < 0)
+            return cli_bad_value(c, "vfp or none");
+        return 0;
+    case RENDER_OPT_TARGET_DB:
+        return cli_double(c, 0, 1, 99, NULL, &o->target_db);
     }
     return -1; /* CLI_BAD: reported already */
+}
+
+/* --arith auto chooses the firmware for one scene of a board of its own. */
+static int render_auto_check(const struct render_opts *o)
+{
+    if (!o->arith_auto) {
+        if (o->fpu >= 0 || o->target_db >= 0) {
+            fprintf(stderr, "links1 render: --fpu and --target-db go with --arith auto\n");
+            return -1;
+        }
+        return 0;
+    }
+    const char *why = o->njobs > 1 ? "one SCENE (it chooses per scene)"
+                      : o->board_name ? "a board of its own, not --board"
+                      : o->board.firmware ? "no --firmware (it chooses the firmware)"
+                      : NULL;
+    if (why)
+        fprintf(stderr, "links1 render: --arith auto takes %s\n", why);
+    return why ? -1 : 0;
+}
+
+/* --arith auto: the pre-render and the pick, into o->board.arith. */
+static int render_auto_pick(struct render_opts *o)
+{
+    static struct arith_auto_choice pick;
+    struct arith_auto_words w;
+    arith_auto_scene_words(&o->scene, o->first, &w);
+    struct arith_auto_opts ao = {
+        .fpu = o->fpu < 0 ? 1 : o->fpu,
+        .target_db = o->target_db < 0 ? ARITH_AUTO_TARGET_DB : o->target_db,
+        .target = ARITH_AUTO_BOARD,
+        .width = o->scene.width,
+        .height = o->scene.height,
+        .words = w.words,
+    };
+    if (arith_auto_pick("links1 render", o->jobs[0].scene, &ao, &pick) != 0)
+        return -1;
+    o->board.arith = pick.arith;
+    return 0;
 }
 
 /* Returns 0, 1 (--help shown) or -1 (bad option, printed). */
@@ -312,11 +367,17 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
     o->args.balance = LINK_BALANCE_DECREASING;
     o->last = -1;
     o->unit_fault_core = -1;
+    o->fpu = -1;
+    o->target_db = -1;
     scene_file_opts_init(&o->scene);
     struct cli c;
     cli_init(&c, "links1 render", argc, argv, "o:h", render_options);
     for (int code; (code = cli_next(&c)) != -1;) {
-        int r = code == BOARD_OPT_SMP ? 0 : board_opt(&o->board, &c, code);
+        o->arith_auto |= code == BOARD_OPT_ARITH && strcmp(c.arg, "auto") == 0;
+        int auto_arith = code == BOARD_OPT_ARITH && o->arith_auto;
+        int r = code == BOARD_OPT_SMP || auto_arith ? 0 : board_opt(&o->board, &c, code);
+        if (auto_arith)
+            continue;
         if (r == 0 && code == 'h') {
             render_usage(stdout);
             return 1;
@@ -345,6 +406,8 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
             return -1;
         }
     }
+    if (render_auto_check(o) != 0)
+        return -1;
     if (o->resume && !o->many) {
         fprintf(stderr, "links1 render: --resume goes with --frames A:B\n");
         return -1;
@@ -576,7 +639,7 @@ int cmd_render(int argc, char **argv)
     int r = render_parse(&o, argc, argv);
     if (r != 0)
         return r > 0 ? 0 : 2;
-    if (render_read_scenes(&o) != 0) {
+    if (render_read_scenes(&o) != 0 || (o.arith_auto && render_auto_pick(&o) != 0)) {
         render_free_scenes(&o);
         return 1;
     }

@@ -18,6 +18,7 @@ struct replay_opts {
     int ncounts;
     struct replay_cfg cfg;
     int have_balance, have_k, per_nc, check;
+    uint32_t scale;
 };
 
 static void replay_usage(FILE *out)
@@ -44,7 +45,10 @@ static void replay_usage(FILE *out)
             "  --first-in-broadcast  the RC puts each NC's first area into the broadcast\n"
             "  --as-recorded    each NC gets the areas the board gave it, in its order\n"
             "  --per-nc         also print each NC's instructions\n"
-            "  --check          check that the replay is a legal handout of the schedule\n",
+            "  --check          check that the replay is a legal handout of the schedule\n"
+            "  --scale F        price the frame at F times the traced width and height,\n"
+            "                   each pixel at its traced pixel's instructions (a frame\n"
+            "                   traced at a reduced size)\n",
             REPLAY_DEFAULT_MIPS, REPLAY_DEFAULT_LINE_US, REPLAY_DEFAULT_BYTE_US,
             AREAS_GUIDED_FACTOR);
 }
@@ -63,6 +67,7 @@ enum replay_opt_code {
     REPLAY_OPT_AS_RECORDED,
     REPLAY_OPT_PER_NC,
     REPLAY_OPT_CHECK,
+    REPLAY_OPT_SCALE,
 };
 
 static const struct option replay_options[] = {
@@ -79,6 +84,7 @@ static const struct option replay_options[] = {
     {"as-recorded", no_argument, NULL, REPLAY_OPT_AS_RECORDED},
     {"per-nc", no_argument, NULL, REPLAY_OPT_PER_NC},
     {"check", no_argument, NULL, REPLAY_OPT_CHECK},
+    {"scale", required_argument, NULL, REPLAY_OPT_SCALE},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -155,6 +161,11 @@ static int replay_take(struct replay_opts *o, const struct cli *c, int code)
     case REPLAY_OPT_CHECK:
         o->check = 1;
         return 0;
+    case REPLAY_OPT_SCALE:
+        if (cli_long(c, 10, 1, 64, &n) < 0)
+            return -1;
+        o->scale = (uint32_t)n;
+        return 0;
     }
     return -1;
 }
@@ -163,6 +174,7 @@ static int replay_take(struct replay_opts *o, const struct cli *c, int code)
 static int replay_parse(struct replay_opts *o, int argc, char **argv)
 {
     memset(o, 0, sizeof *o);
+    o->scale = 1;
     o->cfg.mips = REPLAY_DEFAULT_MIPS;
     o->cfg.line_us = REPLAY_DEFAULT_LINE_US;
     o->cfg.byte_us = REPLAY_DEFAULT_BYTE_US;
@@ -199,10 +211,18 @@ int cmd_replay(int argc, char **argv)
         fprintf(stderr, "links1 replay: %s\n", err);
         return 1;
     }
+    if (trace_scale(&t, o.scale, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 replay: %s: %s\n", o.file, err);
+        trace_free(&t);
+        return 1;
+    }
     if (!o.have_balance)
         o.cfg.balance = (enum areas_mode)t.balance;
     if (!o.have_k)
         o.cfg.k = t.k;
+    if (o.scale > 1)
+        printf("scaled %ux: each pixel of the %ux%u frame priced at its traced pixel's\n",
+               (unsigned)o.scale, (unsigned)t.width, (unsigned)t.height);
     printf("trace %s: %ux%u, %u areas on %u NCs (%s); DM %llu, RC broadcast %llu insns; "
            "%u bytes broadcast\n", o.file, (unsigned)t.width, (unsigned)t.height,
            (unsigned)t.nareas, (unsigned)t.ncs, areas_mode_name((enum areas_mode)t.balance),

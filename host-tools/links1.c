@@ -20,7 +20,7 @@ static const struct links1_cmd links1_cmds[] = {
     {"replay", cmd_replay, "replay a traced frame on equal-speed unit computers"},
     {"semihost", cmd_semihost, "run a semihosting program on the board's CPU (one core)"},
     {"compile", scene_cmd_compile, "compile a text scene into the form uploaded to the board"},
-    {"ref", scene_cmd_ref, "render a scene on the host (--arith double|float|soft|fixed)"},
+    {"ref", scene_cmd_ref, "render a scene on the host (--arith double|float|soft|fixed|auto)"},
     {"import", scene_cmd_import, "a model (OBJ, glTF, PLY, STL, Collada, 3DS, ...) into a scene"},
     {"export-pov", scene_cmd_export_pov, "write a scene for POV-Ray 3.7"},
     {"compare", scene_cmd_compare, "compare two images pixel by pixel"},

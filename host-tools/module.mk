@@ -10,7 +10,7 @@ links1_SRCS := host-tools/links1.c $(BOARD_LAUNCHER_SRCS) \
 	host-tools/selftest_link.c host-tools/link_transfer.c host-tools/link_shared.c host-tools/insn_report.c \
 	host-tools/cmd_semihost.c host-tools/selftest_idle.c
 links1_SRCS += host-tools/cmd_render.c host-tools/render_session.c host-tools/cmd_board.c \
-	host-tools/render_faults.c host-tools/trace_file.c host-tools/trace_decode.c host-tools/replay.c \
+	host-tools/render_faults.c host-tools/trace_file.c host-tools/trace_scale.c host-tools/trace_decode.c host-tools/replay.c \
 	host-tools/cmd_replay.c
 links1_ARITH := double
 

@@ -31,7 +31,7 @@
 /* Bytes on the line: a request (12-byte header, status) and an answer
  * (header, x, y, w, h), the sizes of the board's own messages. */
 #define REPLAY_REQUEST_BYTES 16u
-#define REPLAY_ANSWER_BYTES 28u
+#define REPLAY_ANSWER_BYTES 20u /* u16 x, y, w, h (roles/unitmsg.h) */
 
 struct replay_cfg {
     uint32_t ncs;

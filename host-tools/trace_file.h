@@ -61,6 +61,15 @@ int trace_check(const struct trace *t, char *err, size_t cap);
 /* Sum of the area's pixels in the trace. */
 uint64_t trace_pixels_sum(const struct trace *t, uint32_t x, uint32_t y, uint32_t w, uint32_t h);
 
+/* Prices the same frame at f times the width and height (host-tools/
+ * trace_scale.c): pixel (x, y) costs what traced pixel (x / f, y / f) did;
+ * each area covers the f x f blocks of its pixels, with its set-up and
+ * RC serving as traced and its push times f * f.  The frame's DM, RC and
+ * NC set-ups stay.  For a row traced at a reduced size (links1 replay
+ * --scale).  0, or -1 with err filled (t unchanged when the size is
+ * refused). */
+int trace_scale(struct trace *t, uint32_t f, char *err, size_t cap);
+
 /* Builds t from the plugin's trace= file (proto/insn_mark.h marks: core 0
  * the DM, core 1 the RC, cores 2.. the NCs) for a frame of width x height
  * on ncs NCs.  The caller sets balance, k, flags and broadcast_bytes

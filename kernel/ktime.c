@@ -14,7 +14,12 @@ uint64_t ktime_now(void)
 
 uint64_t ktime_ms_to_ticks(uint32_t ms)
 {
-    return (uint64_t)arch_read_cntfrq() * ms / 1000u;
+    uint32_t frq = arch_read_cntfrq();
+    /* A whole number of ticks per millisecond (QEMU's 62.5 MHz) needs no
+     * 64-bit division, which the CPU does in a long library routine. */
+    if (frq % 1000u == 0)
+        return (uint64_t)(frq / 1000u) * ms;
+    return (uint64_t)frq * ms / 1000u;
 }
 
 uint32_t ktime_ticks_to_ms(uint64_t ticks)

@@ -1,7 +1,7 @@
 /* ringbuf.c: the SPSC byte ring (see ringbuf.h for the memory ordering). */
 #include "kernel/ringbuf.h"
 
-#include <string.h>
+#include "kernel/kcopy.h"
 
 int ringbuf_init(struct ringbuf *r, uint8_t *buf, uint32_t size)
 {
@@ -32,16 +32,16 @@ static void ringbuf_copy_in(struct ringbuf *r, uint32_t pos, const uint8_t *src,
 {
     uint32_t off = pos & (r->size - 1);
     uint32_t first = r->size - off < n ? r->size - off : n;
-    memcpy(r->buf + off, src, first);
-    memcpy(r->buf, src + first, n - first);
+    kcopy(r->buf + off, src, first);
+    kcopy(r->buf, src + first, n - first);
 }
 
 static void ringbuf_copy_out(const struct ringbuf *r, uint32_t pos, uint8_t *dst, uint32_t n)
 {
     uint32_t off = pos & (r->size - 1);
     uint32_t first = r->size - off < n ? r->size - off : n;
-    memcpy(dst, r->buf + off, first);
-    memcpy(dst + first, r->buf, n - first);
+    kcopy(dst, r->buf + off, first);
+    kcopy(dst + first, r->buf, n - first);
 }
 
 int ringbuf_put(struct ringbuf *r, const void *data, uint32_t n)
@@ -53,6 +53,18 @@ int ringbuf_put(struct ringbuf *r, const void *data, uint32_t n)
     ringbuf_copy_in(r, head, data, n);
     /* Release: the bytes are in place before the consumer can see them. */
     __atomic_store_n(&r->head, head + n, __ATOMIC_RELEASE);
+    return 0;
+}
+
+int ringbuf_put2(struct ringbuf *r, const void *a, uint32_t na, const void *b, uint32_t nb)
+{
+    uint32_t head = r->head;
+    uint32_t tail = __atomic_load_n(&r->tail, __ATOMIC_ACQUIRE);
+    if (r->size - (head - tail) < na || r->size - (head - tail) - na < nb)
+        return -1;
+    ringbuf_copy_in(r, head, a, na);
+    ringbuf_copy_in(r, head + na, b, nb);
+    __atomic_store_n(&r->head, head + na + nb, __ATOMIC_RELEASE);
     return 0;
 }
 
@@ -78,6 +90,17 @@ int ringbuf_get(struct ringbuf *r, void *out, uint32_t n)
     /* Release: we are done reading the bytes before the producer may
      * overwrite them. */
     __atomic_store_n(&r->tail, r->tail + n, __ATOMIC_RELEASE);
+    return 0;
+}
+
+int ringbuf_get_after(struct ringbuf *r, uint32_t skip, void *out, uint32_t n)
+{
+    uint32_t tail = r->tail;
+    uint32_t head = __atomic_load_n(&r->head, __ATOMIC_ACQUIRE);
+    if (head - tail < skip || head - tail - skip < n)
+        return -1;
+    ringbuf_copy_out(r, tail + skip, out, n);
+    __atomic_store_n(&r->tail, tail + skip + n, __ATOMIC_RELEASE);
     return 0;
 }
 

@@ -29,10 +29,17 @@ uint32_t ringbuf_used(const struct ringbuf *r);
 uint32_t ringbuf_free(const struct ringbuf *r);
 /* Copies n bytes in; 0, or -1 (nothing written) if fewer than n are free. */
 int ringbuf_put(struct ringbuf *r, const void *data, uint32_t n);
+/* Puts one record of two pieces (na bytes at a, then nb at b) without
+ * joining them first; 0, or -1 (nothing written) if fewer than na + nb are
+ * free. */
+int ringbuf_put2(struct ringbuf *r, const void *a, uint32_t na, const void *b, uint32_t nb);
 /* Copies n bytes out; 0, or -1 (nothing taken) if fewer than n are there. */
 int ringbuf_get(struct ringbuf *r, void *out, uint32_t n);
 /* Copies n bytes out without taking them; 0 or -1 as ringbuf_get. */
 int ringbuf_peek(const struct ringbuf *r, void *out, uint32_t n);
+/* Takes skip + n bytes, copying out only the last n (the first skip were
+ * read with ringbuf_peek); 0, or -1 (nothing taken) if fewer are there. */
+int ringbuf_get_after(struct ringbuf *r, uint32_t skip, void *out, uint32_t n);
 /* Producer side, for byte streams: puts one byte; 0, or -1 if full. */
 int ringbuf_put_byte(struct ringbuf *r, uint8_t b);
 /* Takes up to max bytes; returns how many. */

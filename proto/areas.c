@@ -119,8 +119,10 @@ static int areas_next_decreasing(struct areas *s, struct area *a)
 {
     if (s->pixels_left == 0)
         return 0;
+    /* ceil(pixels_left / share) in 32 bits (pixels_left < 2^25): the RC
+     * computes it per request, and a 64-bit division is a long routine. */
     uint64_t share = (uint64_t)s->factor * s->ncs;
-    uint32_t t = (uint32_t)((s->pixels_left + share - 1) / share);
+    uint32_t t = share >= s->pixels_left ? 1u : (s->pixels_left - 1u) / (uint32_t)share + 1u;
     if (t < s->min_pixels)
         t = s->min_pixels;
 

@@ -17,6 +17,20 @@ uint32_t crc32_update(uint32_t crc, const void *data, size_t len)
 {
     const uint8_t *p = data;
     crc = ~crc;
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    /* Four bytes per load: the first byte is the word's low byte, so xoring
+     * the word in and taking four table steps is the four byte steps (the
+     * serial lines check every message, the RC's requests included). */
+    for (; len >= 4 && ((uintptr_t)p & 3u) == 0; len -= 4, p += 4) {
+        uint32_t w;
+        __builtin_memcpy(&w, p, 4);
+        crc ^= w;
+        crc = crc32_table[crc & 0xFFu] ^ (crc >> 8);
+        crc = crc32_table[crc & 0xFFu] ^ (crc >> 8);
+        crc = crc32_table[crc & 0xFFu] ^ (crc >> 8);
+        crc = crc32_table[crc & 0xFFu] ^ (crc >> 8);
+    }
+#endif
     while (len--)
         crc = crc32_table[(crc ^ *p++) & 0xFFu] ^ (crc >> 8);
     return ~crc;

@@ -63,20 +63,58 @@ static void clip_x_restart(render_clip_t *clip)
     clip->x = -1;
 }
 
+/* The area in signed pixels, inclusive, like the rectangles. */
+typedef struct {
+    int32_t x0, y0, x1, y1;
+} clip_rect_t;
+
+/* Rectangle (x0, y0)-(x1, y1) is not empty and meets a. */
+static int clip_meets(int32_t x0, int32_t y0, int32_t x1, int32_t y1, const clip_rect_t *a)
+{
+    return x0 <= x1 && y0 <= y1 && x1 >= a->x0 && x0 <= a->x1 && y1 >= a->y0 && y0 <= a->y1;
+}
+
+/* The clusters whose rectangle meets a, into ylist (in no particular
+ * order): a walk down the tree from the root that skips every subtree
+ * whose tree rectangle misses a, so its cost follows the clusters near the
+ * area rather than the scene's size.  xlist is the walk's stack: each
+ * cluster is pushed at most once. */
+static uint32_t clip_walk(render_clip_t *clip, const clip_rect_t *a)
+{
+    const render_frame_t *f = clip->frame;
+    const render_cluster_t *cl = f->clusters;
+    uint32_t *stack = clip->xlist, top = 0, n = 0;
+    if (f->cluster_count > 0 && clip_meets(cl[0].tree_x0, cl[0].tree_y0, cl[0].tree_x1, cl[0].tree_y1, a))
+        stack[top++] = 0;
+    while (top > 0) {
+        uint32_t i = stack[--top];
+        const render_cluster_t *c = &cl[i];
+        if (clip_meets(c->screen_x0, c->screen_y0, c->screen_x1, c->screen_y1, a))
+            clip->ylist[n++] = i;
+        const uint32_t *kids = &f->child_list[c->first_child];
+        for (uint32_t k = 0; k < c->child_count; k++) {
+            const render_cluster_t *d = &cl[kids[k]];
+            if (clip_meets(d->tree_x0, d->tree_y0, d->tree_x1, d->tree_y1, a))
+                stack[top++] = kids[k];
+        }
+    }
+    return n;
+}
+
 uint32_t render_clip_y(render_clip_t *clip, const render_area_t *area, int all)
 {
     const render_frame_t *f = clip->frame;
-    /* the area in signed pixels, inclusive, like the rectangles */
-    int32_t ax0 = (int32_t)area->x, ax1 = (int32_t)(area->x + area->w) - 1;
-    int32_t ay0 = (int32_t)area->y, ay1 = (int32_t)(area->y + area->h) - 1;
     uint32_t n = 0;
-    for (uint32_t i = 0; i < f->cluster_count; i++) {
-        const render_cluster_t *c = &f->clusters[i];
-        if (c->screen_x0 > c->screen_x1 || c->screen_y0 > c->screen_y1)
-            continue; /* no primitives, or wholly behind the eye */
-        if (!all && (c->screen_y1 < ay0 || c->screen_y0 > ay1 || c->screen_x1 < ax0 || c->screen_x0 > ax1))
-            continue;
-        clip->ylist[n++] = i;
+    if (all) {
+        for (uint32_t i = 0; i < f->cluster_count; i++) {
+            const render_cluster_t *c = &f->clusters[i];
+            if (c->screen_x0 <= c->screen_x1 && c->screen_y0 <= c->screen_y1)
+                clip->ylist[n++] = i; /* else no primitives, or wholly behind the eye */
+        }
+    } else {
+        clip_rect_t a = {(int32_t)area->x, (int32_t)area->y, (int32_t)(area->x + area->w) - 1,
+                         (int32_t)(area->y + area->h) - 1};
+        n = clip_walk(clip, &a);
     }
     clip->ycount = n;
     clip->y_kept += n;

@@ -5,7 +5,10 @@
  * screen rectangle (render_cluster_t.screen_*, inclusive, conservative).
  * An NC given an area:
  *   Y clipping, once per area: keeps the clusters whose rectangle meets the
- *     area's scanlines (and columns), sorted by screen_x0 (ties: index);
+ *     area's scanlines (and columns), sorted by screen_x0 (ties: index).
+ *     It walks down the hierarchy and skips each subtree whose tree
+ *     rectangle (render_cluster_t.tree_*) misses the area, so it costs
+ *     about the clusters near the area, not every cluster of the scene;
  *   X clipping, per pixel: of those, the clusters whose [screen_x0,
  *     screen_x1] holds the pixel's x.  Integer compares only; along a row
  *     the sort makes it a moving window: clusters enter when x reaches

@@ -52,13 +52,31 @@
                                            the eye plane project to the whole
                                            screen */
 
+/* Scaled to the scene (docs/renderer.md, "Lengths scaled to the scene"):
+ * the loader multiplies every length by the power of two 2^unit_exp that
+ * brings the scene's largest |length| into [2^RENDER_NORM_EXP,
+ * 2^(RENDER_NORM_EXP+1)); every tolerance above, given in scene units, is
+ * scaled the same way, so the IEEE builds give the same bits as unscaled.
+ * A scene whose largest |length| is under 1 has its tolerances scaled too,
+ * by 2^tol_exp, the power of two that brings that length into the same
+ * octave: it renders as its enlarged copy would. */
+#ifndef RENDER_NORM_EXP /* overridable to measure (docs/RESULTS.md) */
+#define RENDER_NORM_EXP 3
+#endif
+#define RENDER_NORM_EXP_MIN (-24) /* 2^unit_exp and 2^tol_exp stay within */
+#define RENDER_NORM_EXP_MAX 40
+
 /* Precision (docs/renderer.md, "Precision never fails silently"). */
-#define RENDER_MIN_SPAN_VALUE 1.0       /* a scene spans at least this: 500 ray
-                                           offsets; smaller scenes are refused
-                                           (RENDER_ERR_EXTENT) */
+#define RENDER_MIN_SPAN_VALUE 1.0       /* a scene spans at least this, in
+                                           tolerance units (scene units times
+                                           2^tol_exp): 500 ray offsets; smaller
+                                           scenes are refused (RENDER_ERR_EXTENT) */
 #define RENDER_INVERSE_TOLERANCE_VALUE 1e-3 /* |M * M^-1 - I| of a cluster map
                                            beyond this: RENDER_ERR_SCALE */
-#define RENDER_MAP_TEXEL_TOLERANCE_VALUE (1.0 / 32) /* map lookups: render/maps.h */
+#define RENDER_MAP_TEXEL_TOLERANCE_VALUE (1.0 / 64) /* map lookups: render/maps.h;
+                                           a bilinear colour moves by at most
+                                           this times the step between two
+                                           texels: 4/255 at a full-scale step */
 #define RENDER_LOST_TOLERANCE_VALUE 5e-2 /* a primitive whose estimated hit
                                            point error exceeds this, in scene
                                            units, is imprecise; so is one whose

@@ -67,11 +67,29 @@ vec3_t map_bump(const scene_map_t *m, num_t u, num_t v, vec3_t n, vec3_t tangent
     return vec3_normalize(vec3_sub(n, vec3_scale(tilt, m->bump_depth)));
 }
 
-int map_imprecise(const scene_map_t *m)
+num_t map_texel_error(const scene_map_t *m, num_t uv_error)
 {
-    num_t step = num_mul_int(num_ulp(NUM_ONE), 8);
+    num_t step = num_add(num_mul_int(num_ulp(NUM_ONE), 8), uv_error);
     num_t side = num_from_int(m->width > m->height ? m->width : m->height);
     num_t repeat = num_max(m->repeat_u, m->repeat_v);
-    num_t texels = num_mul(num_mul(step, repeat), side);
+    return num_mul(num_mul(step, repeat), side);
+}
+
+int map_imprecise(const scene_map_t *m, num_t uv_error)
+{
+    num_t texels = map_texel_error(m, uv_error);
     return num_is_sat(texels) || num_gt(texels, NUM_C(RENDER_MAP_TEXEL_TOLERANCE_VALUE));
+}
+
+int map_bump_uncertain(const scene_map_t *m, num_t u, num_t v, num_t uv_error)
+{
+    num_t texels = map_texel_error(m, uv_error);
+    if (num_is_sat(texels) || !num_lt(texels, NUM_HALF))
+        return 1;
+    int32_t x, y;
+    num_t wx, wy;
+    map_axis(u, m->repeat_u, m->width, &x, &wx);
+    map_axis(v, m->repeat_v, m->height, &y, &wy);
+    return num_lt(num_abs(num_sub(wx, NUM_HALF)), texels) ||
+           num_lt(num_abs(num_sub(wy, NUM_HALF)), texels);
 }

@@ -5,9 +5,9 @@
 #include "render/vec3.h"
 
 #define PRECISION_INVERSE_TOL NUM_C(RENDER_INVERSE_TOLERANCE_VALUE)
-#define PRECISION_LOST_TOL NUM_C(RENDER_LOST_TOLERANCE_VALUE)
-#define PRECISION_MIN_SPAN NUM_C(RENDER_MIN_SPAN_VALUE)
-#define PRECISION_ACNE_TOL NUM_C(RENDER_RAY_EPSILON_VALUE / 2)
+#define PRECISION_LOST_TOL(s) scene_tolerance((s), NUM_C(RENDER_LOST_TOLERANCE_VALUE))
+#define PRECISION_MIN_SPAN(s) scene_tolerance((s), NUM_C(RENDER_MIN_SPAN_VALUE))
+#define PRECISION_ACNE_TOL(s) scene_tolerance((s), NUM_C(RENDER_RAY_EPSILON_VALUE / 2))
 
 /* Largest |(m * inv)[i][j] - identity| over the 3x3 part. */
 static num_t precision_residual(const xform_t *m, const xform_t *inv)
@@ -57,10 +57,13 @@ render_status_t precision_invert(const xform_t *m, xform_t *inv)
  * smallest over the axes: the error across the flattest side, where a
  * secondary ray starting RENDER_RAY_EPSILON_VALUE off the surface would
  * hit it again (shadow acne); the largest moves a hit along a surface. */
-static num_t precision_hit_error(const render_prim_t *p, num_t extent, num_t *least)
+static num_t precision_hit_error(const render_prim_t *p, num_t extent, num_t *least,
+                                 num_t *local_worst)
 {
     num_t worst = NUM_ZERO;
     *least = NUM_FAR;
+    *local_worst = NUM_FAR;
+    num_t local_max = NUM_ZERO;
     for (int i = 0; i < 3; i++) {
         const num_t *row = p->to_local.m[i];
         num_t len = num_len3(row[0], row[1], row[2]);
@@ -73,13 +76,31 @@ static num_t precision_hit_error(const render_prim_t *p, num_t extent, num_t *le
                                                    saturates and misses */
             return NUM_FAR;
         num_t err = num_add(num_mul(steps, extent), num_add(num_ulp(row[3]), num_ulp(local)));
-        err = num_div(num_mul(err, NUM_HALF), len);
+        err = num_mul(err, NUM_HALF);
+        local_max = num_max(local_max, err);
+        err = num_div(err, len);
         if (num_is_sat(err))
             return NUM_FAR;
         worst = num_max(worst, err);
         *least = num_min(*least, err);
     }
+    *local_worst = local_max;
     return worst;
+}
+
+/* A triangle's map coordinates: u = u0 + beta (u1 - u0) + gamma (u2 - u0),
+ * each barycentric a distance in the plane over a height, the point off by
+ * a few steps of the arithmetic at the scene's extent. */
+static num_t precision_triangle_uv_error(const render_prim_t *p, num_t extent)
+{
+    num_t height = num_min(num_abs(p->height1), num_abs(p->height2));
+    num_t bary = num_div(num_mul_int(num_ulp(extent), 4), height);
+    num_t spread = NUM_ZERO;
+    for (int k = 1; k < 3; k++)
+        spread = num_add(spread, num_max(num_abs(num_sub(p->tex_u[k], p->tex_u[0])),
+                                         num_abs(num_sub(p->tex_v[k], p->tex_v[0]))));
+    num_t err = num_mul(bary, spread);
+    return num_is_sat(err) || num_is_sat(bary) ? NUM_FAR : err;
 }
 
 render_status_t precision_check(render_frame_t *f)
@@ -96,20 +117,75 @@ render_status_t precision_check(render_frame_t *f)
     }
     if (num_is_sat(f->span) || num_is_sat(extent))
         f->precision_lost = 1;
+    num_t lost_tol = PRECISION_LOST_TOL(f->scene), acne_tol = PRECISION_ACNE_TOL(f->scene);
     for (uint32_t i = 0; i < f->prim_count; i++) {
         render_prim_t *p = &f->prims[i];
-        num_t least, worst = precision_hit_error(p, extent, &least);
+        num_t least, local, worst = precision_hit_error(p, extent, &least, &local);
         p->imprecise = p->kind != SCENE_PRIM_TRIANGLE &&
-                       (num_gt(worst, PRECISION_LOST_TOL) || num_gt(least, PRECISION_ACNE_TOL));
+                       (num_gt(worst, lost_tol) || num_gt(least, acne_tol));
+        /* map coordinates (render/prim.c): a box face's are (q + 1) / 2 of
+         * a local coordinate q, an ellipsoid's a pseudo-angle / 4 and
+         * (n.y + 1) / 2 of its unit sphere's point, a density sphere's come
+         * from its normal (not estimated) */
+        switch (p->kind) {
+        case SCENE_PRIM_TRIANGLE: p->uv_error = precision_triangle_uv_error(p, extent); break;
+        case SCENE_PRIM_BOX: p->uv_error = num_mul(local, NUM_HALF); break;
+        case SCENE_PRIM_ELLIPSOID: p->uv_error = local; break;
+        default: p->uv_error = NUM_ZERO; break;
+        }
     }
-    return num_lt(f->span, PRECISION_MIN_SPAN) ? RENDER_ERR_EXTENT : RENDER_OK;
+    return num_lt(f->span, PRECISION_MIN_SPAN(f->scene)) ? RENDER_ERR_EXTENT : RENDER_OK;
+}
+
+/* Three significant digits of v, a length in the scene's stored units,
+ * given in the scene text's units (v * 2^-unit_exp): "0.122", "12.3",
+ * "1.5e-07"; integer steps only (the fixed build has no floating point) */
+static void precision_fmt_len(const scene_t *s, num_t v, char *out, size_t cap)
+{
+    num_t x = num_scale2(num_abs(v), -s->unit_exp);
+    int dec = 0; /* x = digits / 10^dec */
+    if (num_is_sat(x) || !num_gt(x, NUM_ZERO)) {
+        fmt_snprintf(out, cap, num_is_sat(x) ? "(out of range)" : "0");
+        return;
+    }
+    while (num_lt(x, NUM_C(100)) && dec < 12) {
+        x = num_mul_int(x, 10);
+        dec++;
+    }
+    int32_t digits = num_floor_int(num_add(x, NUM_HALF));
+    while (digits >= 1000 && dec > 0) {
+        digits = (digits + 5) / 10;
+        dec--;
+    }
+    while (dec > 0 && digits % 10 == 0) { /* no trailing zeros */
+        digits /= 10;
+        dec--;
+    }
+    if (dec <= 5) { /* down to 0.001: plain */
+        int32_t p10 = 1;
+        for (int i = 0; i < dec; i++)
+            p10 *= 10;
+        fmt_snprintf(out, cap, dec ? "%ld.%0*ld" : "%ld", (long)(digits / p10), dec,
+                     (long)(digits % p10));
+        return;
+    }
+    int e = 0; /* digits to one before the point */
+    int32_t p10 = 1;
+    while (digits / p10 >= 10) {
+        p10 *= 10;
+        e++;
+    }
+    fmt_snprintf(out, cap, "%ld.%0*lde-%d", (long)(digits / p10), e, (long)(digits % p10),
+                 dec - e);
 }
 
 void precision_extent_message(const render_frame_t *f, char *out, size_t cap)
 {
-    /* the span in thousandths (it is below RENDER_MIN_SPAN_VALUE, 1) */
-    int32_t milli = num_floor_int(num_add(num_mul_int(f->span, 1000), NUM_HALF));
-    char what[48];
+    const scene_t *s = f->scene;
+    char span[24], need[24], offset[24], what[48];
+    precision_fmt_len(s, f->span, span, sizeof span);
+    precision_fmt_len(s, PRECISION_MIN_SPAN(s), need, sizeof need);
+    precision_fmt_len(s, f->ray_epsilon, offset, sizeof offset);
 #if defined(LINKS1_NUM_FIXED)
     fmt_snprintf(what, sizeof what, "fixed Q%d.%d resolves 2^-%d", 31 - NUM_FRAC_BITS,
                  NUM_FRAC_BITS, NUM_FRAC_BITS);
@@ -117,7 +193,8 @@ void precision_extent_message(const render_frame_t *f, char *out, size_t cap)
     fmt_snprintf(what, sizeof what, "%s resolves 2^-%d of a value", NUM_NAME,
                  (int)sizeof(num_t) == 8 ? 52 : 23);
 #endif
-    fmt_snprintf(out, cap, "scene spans %ld.%03ld; %s, but secondary rays start %s from a "
-                 "surface, so a scene needs a span of at least %s (RENDER_MIN_SPAN_VALUE): "
-                 "scale it up", (long)(milli / 1000), (long)(milli % 1000), what, "0.002", "1");
+    fmt_snprintf(out, cap, "scene spans %s; %s (lengths scaled by 2^%ld), but secondary rays "
+                 "start %s from a surface, so a scene needs a span of at least %s: its clusters "
+                 "shrink it below its coordinates; scale those instead",
+                 span, what, (long)s->unit_exp, offset, need);
 }

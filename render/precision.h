@@ -16,7 +16,7 @@
 render_status_t precision_invert(const xform_t *m, xform_t *inv);
 
 /* After the boxes are known: sets frame->span and every prim's imprecise
- * flag; RENDER_ERR_EXTENT when the scene is too small. */
+ * flag and uv_error; RENDER_ERR_EXTENT when the scene is too small. */
 render_status_t precision_check(render_frame_t *f);
 
 /* The message of RENDER_ERR_EXTENT with the numbers: the scene's span,

@@ -10,8 +10,6 @@
 #include "render/prim.h"
 #include "render/vec3.h"
 
-#define PREP_BOUNDS_PAD NUM_C(RENDER_BOUNDS_PAD_VALUE)
-#define PREP_NEAR NUM_C(RENDER_NEAR_PLANE_VALUE)
 #define PREP_PIXEL_LIMIT num_from_int(2 * RENDER_MAX_WIDTH) /* beyond any screen */
 
 const char *render_status_name(render_status_t status)
@@ -31,7 +29,7 @@ const char *render_status_name(render_status_t status)
     case RENDER_ERR_SINGULAR: return "a cluster transform cannot be inverted";
     case RENDER_ERR_RELOCATE: return "a pointer of the blob lies outside it (not self-contained), or a bad base";
     case RENDER_ERR_AREA: return "area empty or not inside the screen";
-    case RENDER_ERR_EXTENT: return "the scene spans less than 1 unit (RENDER_MIN_SPAN_VALUE, 500 times the ray offset of 0.002): its detail is below what the renderer resolves; scale it up";
+    case RENDER_ERR_EXTENT: return "the scene spans less than RENDER_MIN_SPAN_VALUE (500 ray offsets; both scaled with a scene whose largest length is under 1/2): its clusters shrink it below its own coordinates; scale those instead";
     case RENDER_ERR_SCALE: return "a cluster transform scales beyond what the arithmetic can invert (it is not exactly singular: scale the scene instead of the cluster, or use another arithmetic)";
     }
     return "unknown render status";
@@ -59,10 +57,11 @@ static void prep_aabb_add_box(aabb_t *b, const aabb_t *o)
     b->hi = vec3_make(num_max(b->hi.x, o->hi.x), num_max(b->hi.y, o->hi.y), num_max(b->hi.z, o->hi.z));
 }
 
-/* Box of centre c with half extents e, grown by the pad. */
-static aabb_t prep_aabb_around(vec3_t c, vec3_t e)
+/* Box of centre c with half extents e, grown by the pad
+ * (RENDER_BOUNDS_PAD_VALUE scaled to the scene). */
+static aabb_t prep_aabb_around(vec3_t c, vec3_t e, num_t pad)
 {
-    e = vec3_add(e, vec3_make(PREP_BOUNDS_PAD, PREP_BOUNDS_PAD, PREP_BOUNDS_PAD));
+    e = vec3_add(e, vec3_make(pad, pad, pad));
     aabb_t b = {vec3_sub(c, e), vec3_add(c, e)};
     return b;
 }
@@ -222,6 +221,7 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
                       const xform_t *from_eye, render_prim_t *p)
 {
     num_t lin[3][3];
+    num_t pad = scene_tolerance(f->scene, NUM_C(RENDER_BOUNDS_PAD_VALUE));
     p->kind = sp->kind;
     p->normals = NULL; /* flat, unless a smooth triangle below */
     p->material = sp->material;
@@ -232,7 +232,7 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
         aabb_t b = prep_aabb_empty();
         for (int k = 0; k < 3; k++) {
             v[k] = xform_point(to_eye, sp->shape.triangle.v[k]);
-            aabb_t one = prep_aabb_around(v[k], vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO));
+            aabb_t one = prep_aabb_around(v[k], vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), pad);
             prep_aabb_add_box(&b, &one);
             p->tex_u[k] = sp->shape.triangle.tex_u[k];
             p->tex_v[k] = sp->shape.triangle.tex_v[k];
@@ -271,7 +271,7 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
         }
         p->to_local = xform_compose(&shape, from_eye);
         prep_scaled_linear(to_eye, r, lin);
-        p->bounds = prep_aabb_around(xform_point(to_eye, c), prep_extent(lin, round));
+        p->bounds = prep_aabb_around(xform_point(to_eye, c), prep_extent(lin, round), pad);
         break;
     }
     default: { /* SCENE_PRIM_DENSITY */
@@ -284,7 +284,7 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
         for (uint16_t k = 0; k < p->component_count; k++) {
             num_t d = p->components[k].radius;
             prep_scaled_linear(to_eye, vec3_make(d, d, d), lin);
-            aabb_t one = prep_aabb_around(xform_point(to_eye, p->components[k].centre), prep_extent(lin, 1));
+            aabb_t one = prep_aabb_around(xform_point(to_eye, p->components[k].centre), prep_extent(lin, 1), pad);
             prep_aabb_add_box(&b, &one);
         }
         p->bounds = b;
@@ -319,7 +319,7 @@ static void prep_screen_rect(const render_frame_t *f, render_cluster_t *c)
         c->screen_x1 = c->screen_y1 = 0;
         return;
     }
-    if (num_lt(b->lo.z, PREP_NEAR))
+    if (num_lt(b->lo.z, scene_tolerance(f->scene, NUM_C(RENDER_NEAR_PLANE_VALUE))))
         return; /* reaches behind the eye: whole screen */
     num_t x0 = NUM_ZERO, x1 = NUM_ZERO, y0 = NUM_ZERO, y1 = NUM_ZERO;
     for (int k = 0; k < 8; k++) {
@@ -347,6 +347,25 @@ static void prep_screen_rect(const render_frame_t *f, render_cluster_t *c)
     c->screen_y0 = iy0 < 0 ? 0 : iy0;
     c->screen_x1 = ix1 > f->width - 1 ? f->width - 1 : ix1;
     c->screen_y1 = iy1 > f->height - 1 ? f->height - 1 : iy1;
+}
+
+/* Grows c's tree rectangle to hold the rectangle (x0, y0)-(x1, y1), which
+ * is ignored when empty (x0 > x1 or y0 > y1). */
+static void prep_tree_rect_add(render_cluster_t *c, int32_t x0, int32_t y0, int32_t x1, int32_t y1)
+{
+    if (x0 > x1 || y0 > y1)
+        return;
+    if (c->tree_x0 > c->tree_x1 || c->tree_y0 > c->tree_y1) {
+        c->tree_x0 = x0;
+        c->tree_y0 = y0;
+        c->tree_x1 = x1;
+        c->tree_y1 = y1;
+        return;
+    }
+    c->tree_x0 = x0 < c->tree_x0 ? x0 : c->tree_x0;
+    c->tree_y0 = y0 < c->tree_y0 ? y0 : c->tree_y0;
+    c->tree_x1 = x1 > c->tree_x1 ? x1 : c->tree_x1;
+    c->tree_y1 = y1 > c->tree_y1 ? y1 : c->tree_y1;
 }
 
 static void prep_lights(const scene_t *s, const xform_t *world_to_eye, render_frame_t *f)
@@ -451,6 +470,7 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     f->height = s->height;
     f->cluster_count = s->cluster_count;
     f->prim_count = s->prim_count;
+    f->ray_epsilon = scene_tolerance(s, NUM_C(RENDER_RAY_EPSILON_VALUE));
     f->screen_half_h = s->camera.tan_half_fov_y;
     f->screen_half_w = num_mul(s->camera.tan_half_fov_y, num_from_ratio(s->width, s->height));
 
@@ -516,13 +536,21 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     }
     for (uint32_t i = 0; i < s->prim_count; i++)
         prep_aabb_add_box(&f->clusters[s->prims[i].cluster].own_bounds, &f->prims[i].bounds);
+    for (uint32_t i = 0; i < s->cluster_count; i++) {
+        f->clusters[i].tree_x0 = f->clusters[i].tree_y0 = 1;
+        f->clusters[i].tree_x1 = f->clusters[i].tree_y1 = 0;
+    }
     /* children have larger indices than parents: one backward pass */
     for (uint32_t i = s->cluster_count; i-- > 0;) {
         render_cluster_t *c = &f->clusters[i];
         prep_aabb_add_box(&c->bounds, &c->own_bounds);
-        if (i > 0)
-            prep_aabb_add_box(&f->clusters[s->clusters[i].parent].bounds, &c->bounds);
         prep_screen_rect(f, c);
+        prep_tree_rect_add(c, c->screen_x0, c->screen_y0, c->screen_x1, c->screen_y1);
+        if (i > 0) {
+            render_cluster_t *p = &f->clusters[s->clusters[i].parent];
+            prep_aabb_add_box(&p->bounds, &c->bounds);
+            prep_tree_rect_add(p, c->tree_x0, c->tree_y0, c->tree_x1, c->tree_y1);
+        }
     }
     prep_lights(s, &world_to_eye, f);
     *out = f;

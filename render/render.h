@@ -91,6 +91,8 @@ typedef struct {
                             to_local map can move a hit point by more than
                             RENDER_LOST_TOLERANCE_VALUE: pixels that see it
                             count as lost precision */
+    num_t uv_error;      /* render_prepare's estimate of the rounding error
+                            of a hit's map coordinates u, v (render/maps.h) */
 } render_prim_t;
 
 /* A cluster in eye coordinates. */
@@ -102,6 +104,11 @@ typedef struct {
      * lies wholly behind the eye.  Covers the whole screen when the box
      * straddles the eye plane. */
     int32_t screen_x0, screen_y0, screen_x1, screen_y1;
+    /* The smallest rectangle holding the screen rectangles of this cluster
+     * and of every cluster below it (empty, x0 > x1, when all of them are):
+     * Y clipping skips a whole subtree whose tree rectangle misses the
+     * area (render/clip.c). */
+    int32_t tree_x0, tree_y0, tree_x1, tree_y1;
     uint32_t first_child, child_count; /* into frame->child_list */
     uint32_t first_prim, prim_count;   /* into frame->prim_list */
 } render_cluster_t;
@@ -132,6 +139,8 @@ typedef struct {
                                       cluster maps, boxes): every pixel then
                                       counts as lost precision */
     num_t span;                    /* largest side of the scene's eye-space box */
+    num_t ray_epsilon;             /* RENDER_RAY_EPSILON_VALUE scaled to the
+                                      scene (scene_tolerance) */
 } render_frame_t;
 
 typedef struct {
@@ -183,10 +192,10 @@ typedef enum {
     RENDER_ERR_RELOCATE,     /* a pointer of a blob lies outside the blob
                                 (not self-contained), or a bad base */
     RENDER_ERR_AREA,         /* an area empty or not inside the screen */
-    RENDER_ERR_EXTENT,       /* the scene spans less than RENDER_MIN_SPAN_VALUE:
-                                its detail is finer than the ray offset and
-                                the arithmetic resolve (render_prepare then
-                                still sets *out, for frame->span only) */
+    RENDER_ERR_EXTENT,       /* the scene spans less than RENDER_MIN_SPAN_VALUE
+                                (times 2^tol_exp, scene.h): its detail is
+                                finer than the ray offset (render_prepare
+                                then still sets *out, for frame->span only) */
     RENDER_ERR_SCALE,        /* a cluster transform scales so little (or so
                                 much) that the arithmetic cannot invert it
                                 to RENDER_INVERSE_TOLERANCE_VALUE */

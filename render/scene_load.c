@@ -29,6 +29,7 @@ struct load {
     uint32_t total;
     struct load_section sec[SCN_SEC_COUNT + 1]; /* by kind */
     scene_load_error_t *err;
+    int unit_exp; /* lengths enter num_t times 2^unit_exp (load_len) */
 };
 
 /* ------------------------------------------------------------ messages */
@@ -104,6 +105,33 @@ static num_t load_num(const uint8_t *p) { return num_from_f32_bits(wire_get_u32(
 static vec3_t load_vec3(const uint8_t *p)
 {
     vec3_t v = {load_num(p), load_num(p + 4), load_num(p + 8)};
+    return v;
+}
+
+/* binary32 bits times 2^e, by the exponent field: exact; zeros, subnormals
+ * and results under the smallest normal give a zero of the same sign */
+static uint32_t load_scale_bits(uint32_t bits, int e)
+{
+    int32_t exp = (int32_t)((bits & LOAD_F32_EXP_MASK) >> 23);
+    if (exp == 0 || exp == 255)
+        return exp == 0 ? (bits & LOAD_F32_SIGN) : bits;
+    exp += e;
+    if (exp <= 0)
+        return bits & LOAD_F32_SIGN;
+    if (exp >= 255) /* not reached: unit_exp brings the largest length to 2^4 */
+        return (bits & LOAD_F32_SIGN) | LOAD_F32_EXP_MASK;
+    return (bits & ~LOAD_F32_EXP_MASK) | ((uint32_t)exp << 23);
+}
+
+/* A length: scaled to the scene (scene_t.unit_exp). */
+static num_t load_len(const struct load *L, const uint8_t *p)
+{
+    return num_from_f32_bits(load_scale_bits(wire_get_u32(p), L->unit_exp));
+}
+
+static vec3_t load_lvec3(const struct load *L, const uint8_t *p)
+{
+    vec3_t v = {load_len(L, p), load_len(L, p + 4), load_len(L, p + 8)};
     return v;
 }
 
@@ -264,8 +292,8 @@ static scene_load_status_t load_view(struct load *L, scene_t *s)
     s->width = w;
     s->height = h;
     s->frame_count = frames;
-    s->camera.eye = load_vec3(p + SCN_VIEW_EYE);
-    s->camera.look_at = load_vec3(p + SCN_VIEW_LOOK_AT);
+    s->camera.eye = load_lvec3(L, p + SCN_VIEW_EYE);
+    s->camera.look_at = load_lvec3(L, p + SCN_VIEW_LOOK_AT);
     s->camera.up = load_vec3(p + SCN_VIEW_UP);
     s->camera.tan_half_fov_y = load_num(p + SCN_VIEW_TAN_HALF_FOV_Y);
     s->background = load_rgb(p + SCN_VIEW_BACKGROUND);
@@ -309,7 +337,7 @@ static scene_load_status_t load_lights(struct load *L, scene_light_t *out)
                   : kind == SCN_LIGHT_POINT  ? SCENE_LIGHT_POINT
                                              : SCENE_LIGHT_SPOT;
         l->intensity = load_rgb(p + SCN_LIGHT_COLOUR);
-        l->position = load_vec3(p + SCN_LIGHT_POSITION);
+        l->position = load_lvec3(L, p + SCN_LIGHT_POSITION);
         l->direction = load_vec3(d);
         l->cos_inner = num_from_f32_bits(ci);
         l->cos_outer = num_from_f32_bits(co);
@@ -416,7 +444,7 @@ static scene_load_status_t load_keys(struct load *L, scene_key_t *out)
                 return load_bad(L, SCENE_LOAD_ERR_VALUE, "key ", i, "scale is zero");
         scene_key_t *k = &out[i];
         k->frame = wire_get_u32(p + SCN_KEY_FRAME);
-        k->translate = load_vec3(p + SCN_KEY_TRANSLATE);
+        k->translate = load_lvec3(L, p + SCN_KEY_TRANSLATE);
         k->rot_w = load_num(p + SCN_KEY_ROTATION);
         k->rot_x = load_num(p + SCN_KEY_ROTATION + 4);
         k->rot_y = load_num(p + SCN_KEY_ROTATION + 8);
@@ -466,7 +494,8 @@ static scene_load_status_t load_clusters(struct load *L, const scene_key_t *keys
         c->parent = i == 0 ? SCENE_NO_CLUSTER : parent;
         for (int r = 0; r < 3; r++)
             for (int k = 0; k < 4; k++)
-                c->local.m[r][k] = load_num(p + SCN_CLUSTER_MATRIX + 4 * (r * 4 + k));
+                c->local.m[r][k] = k == 3 ? load_len(L, p + SCN_CLUSTER_MATRIX + 4 * (r * 4 + k))
+                                          : load_num(p + SCN_CLUSTER_MATRIX + 4 * (r * 4 + k));
         c->first_key = kf;
         c->key_count = kc;
     }
@@ -484,8 +513,8 @@ static scene_load_status_t load_components(struct load *L, scene_density_compone
             !load_coords(p + SCN_COMPONENT_WEIGHT, 1) || load_zero(weight))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "density component ", i,
                             "centre, radius (> 0) or weight (non-zero) out of range");
-        out[i].centre = load_vec3(p + SCN_COMPONENT_CENTRE);
-        out[i].radius = load_num(p + SCN_COMPONENT_RADIUS);
+        out[i].centre = load_lvec3(L, p + SCN_COMPONENT_CENTRE);
+        out[i].radius = load_len(L, p + SCN_COMPONENT_RADIUS);
         out[i].weight = num_from_f32_bits(weight);
     }
     return SCENE_LOAD_OK;
@@ -496,14 +525,14 @@ static scene_load_status_t load_components(struct load *L, scene_density_compone
  * the heights over the edges at v0 are |e2| s and |e1| s, and the third is
  * at least half the smaller of them.  Unit vectors keep every product
  * within the fixed build's range. */
-static int load_sliver(const vec3_t v[3])
+static int load_sliver(const vec3_t v[3], int unit_exp)
 {
     vec3_t e1 = vec3_sub(v[1], v[0]), e2 = vec3_sub(v[2], v[0]);
     vec3_t u1 = vec3_normalize(e1), u2 = vec3_normalize(e2);
     num_t l1 = vec3_dot(e1, u1), l2 = vec3_dot(e2, u2);
     num_t sine = vec3_length(vec3_cross(u1, u2));
     num_t h = num_mul(num_lt(l1, l2) ? l1 : l2, sine);
-    return num_lt(h, NUM_C(SCN_LOAD_MIN_TRIANGLE_HEIGHT));
+    return num_lt(h, num_scale2(NUM_C(SCN_LOAD_MIN_TRIANGLE_HEIGHT), unit_exp));
 }
 
 static const int load_prim_values[] = {
@@ -547,12 +576,12 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out)
         case SCN_PRIM_TRIANGLE:
             o->kind = SCENE_PRIM_TRIANGLE;
             for (int k = 0; k < 3; k++) {
-                o->shape.triangle.v[k] = load_vec3(v + 12 * k);
+                o->shape.triangle.v[k] = load_lvec3(L, v + 12 * k);
                 o->shape.triangle.tex_u[k] = load_num(v + 36 + 4 * k);
                 o->shape.triangle.tex_v[k] = load_num(v + 48 + 4 * k);
             }
             o->shape.triangle.smooth = 0;
-            if (load_sliver(o->shape.triangle.v))
+            if (load_sliver(o->shape.triangle.v, L->unit_exp))
                 return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
                                 "degenerate or sliver triangle (a height under "
                                 "SCN_MIN_TRIANGLE_HEIGHT / 8)");
@@ -565,12 +594,12 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out)
                                     "a semi-axis or half edge is not > 0");
             if (kind == SCN_PRIM_ELLIPSOID) {
                 o->kind = SCENE_PRIM_ELLIPSOID;
-                o->shape.ellipsoid.centre = load_vec3(v);
-                o->shape.ellipsoid.radius = load_vec3(v + 12);
+                o->shape.ellipsoid.centre = load_lvec3(L, v);
+                o->shape.ellipsoid.radius = load_lvec3(L, v + 12);
             } else {
                 o->kind = SCENE_PRIM_BOX;
-                o->shape.box.centre = load_vec3(v);
-                o->shape.box.half = load_vec3(v + 12);
+                o->shape.box.centre = load_lvec3(L, v);
+                o->shape.box.half = load_lvec3(L, v + 12);
             }
             break;
         default: /* SCN_PRIM_DENSITY */
@@ -625,6 +654,58 @@ static scene_load_status_t load_normals(struct load *L, scene_prim_t *prims,
     return SCENE_LOAD_OK;
 }
 
+/* ------------------------------------------------- scaled to the scene */
+
+/* The binary32 exponent field of the largest |length| among n reals at p
+ * (0 for none); not-finite values are left to the checks that follow. */
+static int32_t load_max_exp(const uint8_t *p, int n, int32_t most)
+{
+    for (int i = 0; i < n; i++) {
+        uint32_t bits = wire_get_u32(p + 4 * i);
+        int32_t exp = (int32_t)((bits & LOAD_F32_EXP_MASK) >> 23);
+        if (exp != 255 && exp > most)
+            most = exp;
+    }
+    return most;
+}
+
+/* unit_exp and tol_exp (scene.h): from the exponent of the largest
+ * |length| the scene holds, before any value enters num_t. */
+static void load_scale(struct load *L, scene_t *s)
+{
+    int32_t most = load_max_exp(load_rec(L, SCN_SEC_VIEW, 0) + SCN_VIEW_EYE, 6, 0);
+    for (uint32_t i = 0; i < L->sec[SCN_SEC_LIGHTS].count; i++) {
+        const uint8_t *p = load_rec(L, SCN_SEC_LIGHTS, i);
+        if (wire_get_u32(p + SCN_LIGHT_KIND) != SCN_LIGHT_PARALLEL)
+            most = load_max_exp(p + SCN_LIGHT_POSITION, 3, most);
+    }
+    for (uint32_t i = 0; i < L->sec[SCN_SEC_KEYS].count; i++)
+        most = load_max_exp(load_rec(L, SCN_SEC_KEYS, i) + SCN_KEY_TRANSLATE, 3, most);
+    for (uint32_t i = 0; i < L->sec[SCN_SEC_CLUSTERS].count; i++)
+        for (int r = 0; r < 3; r++)
+            most = load_max_exp(load_rec(L, SCN_SEC_CLUSTERS, i) + SCN_CLUSTER_MATRIX +
+                                    4 * (4 * r + 3), 1, most);
+    for (uint32_t i = 0; i < L->sec[SCN_SEC_COMPONENTS].count; i++)
+        most = load_max_exp(load_rec(L, SCN_SEC_COMPONENTS, i) + SCN_COMPONENT_CENTRE, 4, most);
+    for (uint32_t i = 0; i < L->sec[SCN_SEC_PRIMS].count; i++) {
+        const uint8_t *p = load_rec(L, SCN_SEC_PRIMS, i);
+        uint16_t kind = wire_get_u16(p + SCN_PRIM_KIND);
+        int n = kind == SCN_PRIM_TRIANGLE ? 9 : kind == SCN_PRIM_DENSITY ? 0 : 6;
+        most = load_max_exp(p + SCN_PRIM_VALUES, n, most);
+    }
+    int e = 0, t = 0;
+    if (most != 0) {
+        int32_t mag = most - 127; /* the largest |length| is in [2^mag, 2^(mag+1)) */
+        e = RENDER_NORM_EXP - mag;
+        t = mag < -1 ? mag - RENDER_NORM_EXP : 0; /* under 1/2: refused before */
+    }
+    e = e < RENDER_NORM_EXP_MIN ? RENDER_NORM_EXP_MIN : e > RENDER_NORM_EXP_MAX ? RENDER_NORM_EXP_MAX : e;
+    t = t < RENDER_NORM_EXP_MIN ? RENDER_NORM_EXP_MIN : t;
+    L->unit_exp = e;
+    s->unit_exp = e;
+    s->tol_exp = t;
+}
+
 /* ---------------------------------------------------------------- entry */
 
 #define LOAD_ALLOC(arena, type, n) ARENA_NEW_ARRAY((arena), type, (n) ? (n) : 1)
@@ -665,6 +746,7 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
         return load_fail(&L, SCENE_LOAD_ERR_ARENA, "arena too small for the scene: %ld bytes free, "
                          "a request of %ld bytes failed", (long)(arena->size - mark), (long)need);
     }
+    load_scale(&L, out);
     scene_load_status_t st = load_view(&L, out);
     if (st == SCENE_LOAD_OK)
         st = load_lights(&L, lights);

@@ -13,7 +13,6 @@
 #include "render/shade.h"
 #include "render/vec3.h"
 
-#define TRACE_EPSILON NUM_C(RENDER_RAY_EPSILON_VALUE)
 #define TRACE_FAR NUM_FAR /* beyond everything */
 
 enum trace_kind { TRACE_PRIMARY, TRACE_REFLECTION, TRACE_REFRACTION };
@@ -239,16 +238,18 @@ static void trace_surface_look(render_ctx_t *ctx, const hit_t *hit, const scene_
                                rgb_t *colour, vec3_t *normal)
 {
     const scene_t *s = ctx->frame->scene;
+    num_t uv_error = ctx->frame->prims[hit->prim].uv_error;
     *colour = m->colour;
     if (m->colour_map != SCENE_NONE) {
         *colour = rgb_mul(*colour, map_colour(&s->maps[m->colour_map], hit->u, hit->v));
-        if (map_imprecise(&s->maps[m->colour_map]))
+        if (map_imprecise(&s->maps[m->colour_map], uv_error))
             ctx->pixel_lost = 1;
     }
     *normal = hit->normal;
     if (m->bump_map != SCENE_NONE) {
-        *normal = map_bump(&s->maps[m->bump_map], hit->u, hit->v, hit->normal, hit->tangent);
-        if (map_imprecise(&s->maps[m->bump_map]))
+        const scene_map_t *b = &s->maps[m->bump_map];
+        *normal = map_bump(b, hit->u, hit->v, hit->normal, hit->tangent);
+        if (map_bump_uncertain(b, hit->u, hit->v, uv_error))
             ctx->pixel_lost = 1;
     }
 }
@@ -266,7 +267,7 @@ static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t di
     cross.count = 0;
     cross.overflow = 0;
     cross.opaque = 0;
-    trace_walk_t w = {ctx, &ray, TRACE_EPSILON, distance, TRACE_COLLECT_SHADOW, {0, NUM_ZERO, 0}, &cross, {{0}, {0}}};
+    trace_walk_t w = {ctx, &ray, ctx->frame->ray_epsilon, distance, TRACE_COLLECT_SHADOW, {0, NUM_ZERO, 0}, &cross, {{0}, {0}}};
     trace_walk(&w, NULL, 0);
     if (cross.opaque || cross.overflow)
         return rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
@@ -302,7 +303,7 @@ static rgb_t trace_lights(render_ctx_t *ctx, const hit_t *hit, const scene_mater
 {
     const render_frame_t *f = ctx->frame;
     rgb_t sum = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
-    vec3_t origin = vec3_madd(hit->point, n, TRACE_EPSILON);
+    vec3_t origin = vec3_madd(hit->point, n, ctx->frame->ray_epsilon);
     for (uint16_t i = 0; i < f->light_count; i++) {
         vec3_t to_light;
         num_t distance;
@@ -332,7 +333,7 @@ static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray)
     cross.count = 0;
     cross.overflow = 0;
     cross.opaque = 0;
-    trace_walk_t w = {ctx, ray, TRACE_EPSILON, TRACE_FAR, TRACE_COLLECT_STRAIGHT, {0, NUM_ZERO, 0}, &cross, {{0}, {0}}};
+    trace_walk_t w = {ctx, ray, ctx->frame->ray_epsilon, TRACE_FAR, TRACE_COLLECT_STRAIGHT, {0, NUM_ZERO, 0}, &cross, {{0}, {0}}};
     trace_walk(&w, NULL, 0);
     rgb_t sum = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     rgb_t weight = rgb_make(NUM_ONE, NUM_ONE, NUM_ONE);
@@ -395,7 +396,7 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, 
     }
     num_t w_mirror = num_mul(weight, tir ? num_add(src, trc) : src);
     rgb_t reflected = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
-    vec3_t outside = vec3_madd(hit->point, n, TRACE_EPSILON);
+    vec3_t outside = vec3_madd(hit->point, n, ctx->frame->ray_epsilon);
     int mirror = can_recurse && (num_gt(src, NUM_ZERO) || tir);
     if (mirror && !trace_worth(ctx, w_mirror)) {
         ctx->stats.weight_cut++; /* too faint to matter: not traced */
@@ -408,7 +409,7 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, 
     }
     if (num_gt(trc, NUM_ZERO)) {
         rgb_t through = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
-        vec3_t inside = vec3_madd(hit->point, n, num_neg(TRACE_EPSILON));
+        vec3_t inside = vec3_madd(hit->point, n, num_neg(ctx->frame->ray_epsilon));
         num_t w_trc = num_mul(weight, trc);
         if (!ctx->options.refraction) { /* never bends: straight through, any depth */
             ray_t r = {inside, ray->dir};

@@ -107,15 +107,16 @@ static void nc_trace_pixel(void)
 }
 
 /* Renders one area and pushes its rows into the DC.  A fault planned for
- * this area (MSG_NC_AREA of 20 bytes) comes after pushing that many rows.
+ * this area (MSG_NC_AREA of MSG_NC_AREA_INJECT_SIZE bytes) comes after pushing that many rows.
  * Traced: the area's x, y, w, h (16 bits each), then marks at its start,
  * after its set-up and each pixel, and at its end. */
 static int nc_area(struct nc_job *job, const struct line_msg *m, char *why, size_t cap)
 {
-    render_area_t a = {wire_get_u32(m->payload), wire_get_u32(m->payload + 4),
-                       wire_get_u32(m->payload + 8), wire_get_u32(m->payload + 12)};
-    uint8_t inject = m->len >= 20 ? wire_get_u8(m->payload + 16) : 0;
-    uint32_t inject_row = m->len >= 20 ? wire_get_u16(m->payload + 18) : 0;
+    render_area_t a = {wire_get_u16(m->payload), wire_get_u16(m->payload + 2),
+                       wire_get_u16(m->payload + 4), wire_get_u16(m->payload + 6)};
+    int planned = m->len >= MSG_NC_AREA_INJECT_SIZE;
+    uint8_t inject = planned ? wire_get_u8(m->payload + 8) : 0;
+    uint32_t inject_row = planned ? wire_get_u16(m->payload + 10) : 0;
     if (job->trace) {
         insn_mark_trace_bits(a.x, 16);
         insn_mark_trace_bits(a.y, 16);

@@ -34,23 +34,38 @@ void rc_fail(struct rc_run *run, int32_t status, const char *fmt, uint32_t a, ui
 
 static void rc_nc_send(uint32_t nc, struct line_msg *m)
 {
-    int r = line_send(nc, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
+    /* Nearly always there is room: the deadline is worked out only when
+     * there is none (the RC pays this per area request). */
+    int r = line_try_send(nc, m);
+    if (r == LINE_ERR_FULL)
+        r = line_send(nc, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
     if (r != LINE_OK)
         klog("render: send of message %u to NC %u: %s", (unsigned)m->type, (unsigned)nc,
              line_strerror(r));
 }
 
+/* NC k goes to state s; the counts per state follow. */
+static void rc_nc_set(struct rc_run *run, uint32_t k, enum rc_nc_state s)
+{
+    struct rc_nc *n = &run->nc[k];
+    run->in_state[n->state]--;
+    run->in_state[s]++;
+    n->state = (uint8_t)s;
+}
+
 void rc_nc_begin(struct rc_run *run, const uint8_t *plan, uint32_t n)
 {
     run->ncs = 0;
+    memset(run->in_state, 0, sizeof run->in_state);
+    run->in_state[RC_NC_OUT] = board_ncores - UNITS_FIRST_NC;
     for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
+        run->nc[k].state = RC_NC_OUT;
         if (rc_nc_gone[k]) {
-            run->nc[k].state = RC_NC_OUT;
             run->fails.failed_before++;
             /* One given up while only slow may have begun a read since. */
             (void)imsu_bcast_read_abandon(&imsu_rc_ncs, k);
         } else {
-            run->nc[k].state = RC_NC_IDLE;
+            rc_nc_set(run, k, RC_NC_IDLE);
             run->ncs++;
         }
     }
@@ -71,6 +86,10 @@ void rc_nc_begin(struct rc_run *run, const uint8_t *plan, uint32_t n)
 
 void rc_nc_start(struct rc_run *run, struct line_msg *m, uint8_t flags, uint32_t largest)
 {
+    /* What the pending map holds from before the frame is stale: every
+     * line is looked at once below. */
+    for (uint32_t w = 0; w < LINE_PENDING_WORDS; w++)
+        (void)line_pending_take(w);
     for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
         if (run->nc[k].state == RC_NC_OUT)
             continue;
@@ -80,7 +99,11 @@ void rc_nc_start(struct rc_run *run, struct line_msg *m, uint8_t flags, uint32_t
         wire_put_u32(m->payload + 1, largest);
         run->nc[k].since = ktime_now();
         rc_nc_send(k, m);
+        /* Its doorbell armed; a message there already is looked at. */
+        if (line_recv_ready_arm(k))
+            line_pending_mark(k);
     }
+    run->next_scan = ktime_deadline_ms(GIGS_WATCH_MS);
 }
 
 /* NC k failed: out for good; the area it held goes back to be handed out. */
@@ -111,7 +134,7 @@ static void rc_nc_lost(struct rc_run *run, uint32_t k, int by_watchdog)
         klog("render: NC %u %s (it held no area)", (unsigned)k,
              by_watchdog ? "stopped answering" : "halted with a fault");
     }
-    n->state = RC_NC_STOPPED;
+    rc_nc_set(run, k, RC_NC_STOPPED);
 }
 
 /* 1 if NC k has been silent longer than the watchdog allows: past its
@@ -154,7 +177,7 @@ static void rc_nc_message(struct rc_run *run, uint32_t k, struct line_msg *m)
 {
     struct rc_nc *n = &run->nc[k];
     if (m->type == MSG_NC_STOPPED) {
-        n->state = RC_NC_STOPPED;
+        rc_nc_set(run, k, RC_NC_STOPPED);
         uint32_t high = wire_get_u32(m->payload);
         if (high > run->nc_high_max)
             run->nc_high_max = high;
@@ -180,7 +203,7 @@ static void rc_nc_message(struct rc_run *run, uint32_t k, struct line_msg *m)
             run->slow_pixels = pixels;
         }
     }
-    n->state = RC_NC_PARKED;
+    rc_nc_set(run, k, RC_NC_PARKED);
 }
 
 /* Gives parked NC k the next area (one taken back first); 0 if none is left. */
@@ -193,20 +216,20 @@ static int rc_nc_give(struct rc_run *run, uint32_t k, struct line_msg *m)
     else if (!areas_next(&run->sched, &a))
         return 0;
     m->type = MSG_NC_AREA;
-    m->len = 16;
-    wire_put_u32(m->payload, a.x);
-    wire_put_u32(m->payload + 4, a.y);
-    wire_put_u32(m->payload + 8, a.w);
-    wire_put_u32(m->payload + 12, a.h);
+    m->len = MSG_NC_AREA_SIZE;
+    wire_put_u16(m->payload, (uint16_t)a.x);
+    wire_put_u16(m->payload + 2, (uint16_t)a.y);
+    wire_put_u16(m->payload + 4, (uint16_t)a.w);
+    wire_put_u16(m->payload + 6, (uint16_t)a.h);
     if (n->inject.kind && n->given == n->inject.area) {
-        m->len = 20;
-        wire_put_u8(m->payload + 16, n->inject.kind);
-        wire_put_u8(m->payload + 17, 0);
-        wire_put_u16(m->payload + 18, (uint16_t)(n->inject.row * (a.h + 1) / 256));
+        m->len = MSG_NC_AREA_INJECT_SIZE;
+        wire_put_u8(m->payload + 8, n->inject.kind);
+        wire_put_u8(m->payload + 9, 0);
+        wire_put_u16(m->payload + 10, (uint16_t)(n->inject.row * (a.h + 1) / 256));
     }
     n->given++;
     n->area = a;
-    n->state = RC_NC_BUSY;
+    rc_nc_set(run, k, RC_NC_BUSY);
     n->since = ktime_now();
     rc_nc_send(k, m);
     return 1;
@@ -223,7 +246,7 @@ static void rc_nc_stop(struct rc_run *run, uint32_t k, struct line_msg *m)
         wire_put_u8(m->payload + 1, 0);
         wire_put_u16(m->payload + 2, 0);
     }
-    n->state = RC_NC_STOPPING;
+    rc_nc_set(run, k, RC_NC_STOPPING);
     n->since = ktime_now();
     rc_nc_send(k, m);
 }
@@ -247,30 +270,77 @@ static int rc_nc_area_left(const struct rc_run *run)
     return run->nagain > 0 || areas_next(&peek, &a);
 }
 
-/* Areas to parked NCs; once none is busy and none is left, stops them. */
+/* Areas to parked NCs; once none is busy and none is left, stops them.
+ * Looks at every NC only while some are parked (the frame's end). */
 static void rc_nc_dispatch(struct rc_run *run, struct line_msg *m)
 {
-    int working = 0;
-    for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
-        struct rc_nc *n = &run->nc[k];
-        /* An NC that waited while every area was out gets one taken back.
-         * Traced, only a hand-out is a record (a parked NC is looked at on
-         * every pass). */
-        if (n->state == RC_NC_PARKED && run->status == LINK_OK) {
+    if (run->in_state[RC_NC_PARKED] == 0)
+        return;
+    if (run->status == LINK_OK && rc_nc_area_left(run)) {
+        for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
+            /* An NC that waited while every area was out gets one taken
+             * back.  Traced, only a hand-out is a record. */
+            if (run->nc[k].state != RC_NC_PARKED || !rc_nc_area_left(run))
+                continue;
             if (!run->trace) {
                 (void)rc_nc_give(run, k, m);
-            } else if (rc_nc_area_left(run)) {
+            } else {
                 insn_mark_trace_span_begin();
                 rc_nc_trace_served(run, k, rc_nc_give(run, k, m));
             }
         }
-        working |= n->state == RC_NC_BUSY || n->state == RC_NC_IDLE;
     }
-    if (working && run->status == LINK_OK)
+    if (run->in_state[RC_NC_BUSY] + run->in_state[RC_NC_IDLE] && run->status == LINK_OK)
         return;
     for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++)
         if (run->nc[k].state == RC_NC_PARKED)
             rc_nc_stop(run, k, m);
+}
+
+/* NC k's line has a message (its pending bit): one is served, the request
+ * answered at once (the area, or parked), and the line armed again.
+ * Returns 1 if a message moved. */
+static int rc_nc_serve(struct rc_run *run, uint32_t k, struct line_msg *m)
+{
+    struct rc_nc *n = &run->nc[k];
+    if (n->state == RC_NC_OUT || n->state == RC_NC_STOPPED)
+        return 0; /* failed: its line is not read again */
+    if (unit_is_halted(k)) {
+        rc_nc_lost(run, k, 0);
+        return 0;
+    }
+    if (run->trace)
+        insn_mark_trace_span_begin();
+    int got = line_try_recv(k, m) == LINE_OK, handed = 0;
+    if (got) {
+        rc_nc_message(run, k, m);
+        if (n->state == RC_NC_PARKED && run->status == LINK_OK)
+            handed = rc_nc_give(run, k, m);
+    }
+    /* A second message there already is served in the next pass. */
+    if (line_recv_ready_arm(k))
+        line_pending_mark(k);
+    if (run->trace)
+        rc_nc_trace_served(run, k, handed);
+    return got;
+}
+
+/* The watchdog: every NC that halted or is overdue has failed.  An NC with
+ * a message waiting is served first (and its line is marked, in case its
+ * pending bit was missed). */
+static void rc_nc_scan(struct rc_run *run)
+{
+    for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
+        struct rc_nc *n = &run->nc[k];
+        if (n->state == RC_NC_OUT || n->state == RC_NC_STOPPED)
+            continue;
+        if (unit_is_halted(k))
+            rc_nc_lost(run, k, 0);
+        else if (line_recv_ready_arm(k))
+            line_pending_mark(k);
+        else if (rc_nc_overdue(run, k))
+            rc_nc_lost(run, k, 1);
+    }
 }
 
 int rc_nc_poll(struct rc_run *run, struct line_msg *m)
@@ -278,32 +348,19 @@ int rc_nc_poll(struct rc_run *run, struct line_msg *m)
     if (run->self_inject.kind && run->done >= run->self_inject.area)
         selftest_fail_on_purpose(run->self_inject.kind); /* the test hook */
     int moved = 0;
-    for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
-        struct rc_nc *n = &run->nc[k];
-        if (n->state == RC_NC_OUT || n->state == RC_NC_STOPPED)
-            continue;
-        if (unit_is_halted(k)) {
-            rc_nc_lost(run, k, 0);
-            continue;
+    uint32_t words = (board_ncores + 31u) / 32u;
+    for (uint32_t w = 0; w < words; w++) {
+        uint32_t bits = line_pending_take(w);
+        while (bits) {
+            uint32_t k = 32u * w + (uint32_t)__builtin_ctz(bits);
+            bits &= bits - 1u;
+            if (k >= UNITS_FIRST_NC && k < board_ncores)
+                moved |= rc_nc_serve(run, k, m);
         }
-        if (line_recv_ready_arm(k)) {
-            /* A request is answered at once (the area, or parked). */
-            if (run->trace)
-                insn_mark_trace_span_begin();
-            int got = line_try_recv(k, m) == LINE_OK, handed = 0;
-            if (got) {
-                rc_nc_message(run, k, m);
-                if (n->state == RC_NC_PARKED && run->status == LINK_OK)
-                    handed = rc_nc_give(run, k, m);
-                moved = 1;
-            }
-            if (run->trace)
-                rc_nc_trace_served(run, k, handed);
-            if (got)
-                continue;
-        }
-        if (rc_nc_overdue(run, k))
-            rc_nc_lost(run, k, 1);
+    }
+    if (ktime_passed(run->next_scan)) {
+        rc_nc_scan(run);
+        run->next_scan = ktime_deadline_ms(GIGS_WATCH_MS);
     }
     rc_nc_dispatch(run, m);
     if (rc_nc_all_stopped(run) && run->done < run->total)
@@ -314,8 +371,6 @@ int rc_nc_poll(struct rc_run *run, struct line_msg *m)
 
 int rc_nc_all_stopped(const struct rc_run *run)
 {
-    for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++)
-        if (run->nc[k].state != RC_NC_OUT && run->nc[k].state != RC_NC_STOPPED)
-            return 0;
-    return 1;
+    return run->in_state[RC_NC_OUT] + run->in_state[RC_NC_STOPPED] ==
+           board_ncores - UNITS_FIRST_NC;
 }

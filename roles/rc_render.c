@@ -10,6 +10,7 @@
 #include "drivers/imsu/imsu.h"
 #include "drivers/serial/line.h"
 #include "kernel/cpu.h"
+#include "kernel/kcopy.h"
 #include "kernel/klog.h"
 #include "kernel/kmem.h"
 #include "kernel/ktime.h"
@@ -143,7 +144,7 @@ static int rc_broadcast(struct rc_run *run, const render_blob_t **out)
         rc_fail(run, LINK_ERR_CHECK, "broadcast block: IMSU error %d (%u)", (uint32_t)r, 0);
         return -1;
     }
-    memcpy(w, src, src->bytes);
+    kcopy(w, src, src->bytes); /* a word at a time: serial work before any NC starts */
     render_blob_t *blob;
     render_blob_error_t err;
     render_blob_status_t st = render_blob_relocate(w, b->size, &blob, &err);

@@ -31,6 +31,7 @@ enum rc_nc_state {
     RC_NC_PARKED,   /* asked while nothing was left */
     RC_NC_STOPPING, /* told to stop */
     RC_NC_STOPPED,  /* stopped, or failed in this frame */
+    RC_NC_STATES,
 };
 
 struct rc_nc {
@@ -47,6 +48,8 @@ struct rc_run {
     struct areas sched;
     uint32_t total, done, ncs;
     struct rc_nc nc[UNITS_MAX_CORES];
+    uint32_t in_state[RC_NC_STATES]; /* NCs in each state: O(1) checks per pass */
+    uint64_t next_scan;              /* ticks: the watchdog's next look at every NC */
     struct area again[UNITS_MAX_CORES]; /* areas taken back from failed NCs */
     uint32_t nagain;
     uint64_t slow_ticks, slow_pixels; /* the slowest finished area per pixel */
@@ -68,8 +71,10 @@ void rc_fail(struct rc_run *run, int32_t status, const char *fmt, uint32_t a, ui
 void rc_nc_begin(struct rc_run *run, const uint8_t *plan, uint32_t n);
 /* Sends MSG_NC_START (flags, largest area) to every NC in the frame. */
 void rc_nc_start(struct rc_run *run, struct line_msg *m, uint8_t flags, uint32_t largest);
-/* One pass over the NCs: failures, messages, areas handed out or stops.
- * Returns 1 if any message moved. */
+/* One pass: the messages of the NCs whose lines have some (the line
+ * driver's pending map, not a look at every line), areas handed out or
+ * stops; every GIGS_WATCH_MS, the watchdog's look at every NC.  Returns 1
+ * if any message moved. */
 int rc_nc_poll(struct rc_run *run, struct line_msg *m);
 /* 1 once every NC of the frame has stopped or failed. */
 int rc_nc_all_stopped(const struct rc_run *run);

@@ -36,7 +36,9 @@ enum unit_msg {
                               * (GIGS_RESULT_SIZE); else text naming the problem */
     MSG_NC_START = 21,       /* RC->NC: the frame is in the broadcast block:
                               * u8 flags, u32 pixels of the largest area */
-    MSG_NC_AREA = 22,        /* RC->NC: u32 x, y, w, h: render this area */
+    MSG_NC_AREA = 22,        /* RC->NC: u16 x, y, w, h: render this area
+                              * (MSG_NC_AREA_SIZE); a planned failure adds u8
+                              * kind, u8 0, u16 row (MSG_NC_AREA_INJECT_SIZE) */
     MSG_NC_STOP = 23,        /* RC->NC: no more areas: let go of the block */
     MSG_NC_REQ = 24,         /* NC->RC: i32 status: 0 = next area please (the
                               * last one's pixels are in the DC); < 0: this NC
@@ -44,5 +46,10 @@ enum unit_msg {
     MSG_NC_STOPPED = 25,     /* NC->RC: u32 private high-water mark, then the
                               * frame's render stats (GIGS_STATS_SIZE) */
 };
+
+/* MSG_NC_AREA's payload: four u16 (areas.h: sides <= AREAS_MAX_DIM), half
+ * of four u32: the RC checksums and copies it once per area request. */
+#define MSG_NC_AREA_SIZE 8
+#define MSG_NC_AREA_INJECT_SIZE 12
 
 #endif

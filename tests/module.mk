@@ -26,7 +26,8 @@ BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
 	tests/board/render_spd.sh tests/board/render_link.sh tests/board/board_named.sh \
 	tests/board/render_progress.sh tests/board/render_faults.sh tests/board/render_faults_silent.sh \
 	tests/board/render_resume.sh tests/board/render_link_noise.sh \
-	tests/board/render_trace.sh tests/board/render_refraction.sh tests/board/figures_small.sh
+	tests/board/render_trace.sh tests/board/render_refraction.sh tests/board/figures_small.sh \
+	tests/board/render_scaled.sh tests/board/render_auto.sh
 RENDER_FULL_TESTS := tests/board/render_grid_full.sh tests/board/render_faults_full.sh
 
 .PHONY: test-full
@@ -39,6 +40,8 @@ BENCHES += tests/bench/bench_render.sh tests/bench/bench_arith.sh tests/bench/be
 # Issue 12: failed NCs (the time a failure costs a frame), the long soak run.
 BENCHES += tests/bench/bench_faults.sh tests/bench/bench_soak.sh
 BENCHES += tests/bench/bench_big.sh
+# The board cost model --arith auto does not use: work counts against NC instructions.
+BENCHES += tests/bench/arith_cost_fit.sh
 BENCHES += tests/bench/bench_link_noise.sh
 
 # Encodings of the rendering commands and the NC statistics the RC sums.
@@ -48,7 +51,7 @@ test_render_link_ARITH := float
 
 # Frame traces (links1 render --trace) and their replay on equal-speed units.
 HOST_TESTS += test_trace
-test_trace_SRCS := tests/host/test_trace.c host-tools/trace_file.c host-tools/replay.c
+test_trace_SRCS := tests/host/test_trace.c host-tools/trace_file.c host-tools/trace_scale.c host-tools/replay.c
 test_trace_ARITH := double
 BENCHES += tests/bench/bench_figures.sh
 
@@ -58,6 +61,7 @@ BENCHES += tests/bench/bench_figures.sh
 figures: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all
 	$(Q)FW_DIR=$(FWB) bash tests/bench/figures.sh
-	$(Q)bash tests/sweeps/pareto.sh --out $(B)/pareto
-	$(Q)mkdir -p docs/figures && cp $(B)/pareto/pareto.png $(B)/pareto/pareto.tsv docs/figures/
+	$(Q)FW_DIR=$(FWB) bash tests/sweeps/pareto.sh --out $(B)/pareto
+	$(Q)mkdir -p docs/figures && cp $(B)/pareto/pareto.png $(B)/pareto/pareto.tsv \
+		$(B)/pareto/pareto-board.png $(B)/pareto/pareto-board.tsv docs/figures/
 BENCHES += tests/bench/bench_wallclock.sh

@@ -28,6 +28,22 @@ struct line {
 static struct line lines[UNITS_MAX_CORES - 1];
 static uint32_t lines_used;
 
+/* Per receiving core, one bit per sending core: set by the sender after
+ * each message, taken by a receiver that serves many lines (the RC) so
+ * that it looks only at the lines that sent. */
+static uint32_t line_pending[UNITS_MAX_CORES][LINE_PENDING_WORDS];
+
+/* Bytes a message of len payload bytes takes in the ring: header and
+ * payload padded to whole words, so every message starts word-aligned and
+ * the ring copies it a word at a time.  The padding is whatever follows
+ * the payload in the sender's struct line_msg (payload[] holds
+ * LINE_MAX_PAYLOAD bytes, a multiple of 4). */
+#define LINE_PADDED(len) (((uint32_t)(len) + 3u) & ~3u)
+#define LINE_RECORD_SIZE(len) (LINEMSG_HEADER_SIZE + LINE_PADDED(len))
+_Static_assert(LINEMSG_HEADER_SIZE % 4 == 0 && LINE_MAX_PAYLOAD % 4 == 0 &&
+                   LINE_RING_SIZE % 4 == 0,
+               "line records are whole words");
+
 void line_init_all(uint32_t ncores)
 {
     uint32_t n = ncores - 1;
@@ -61,17 +77,14 @@ uint32_t line_count(void)
 /* The direction this core sends on (out) and receives on (in) towards peer. */
 static int line_dirs(uint32_t peer, struct line_dir **out, struct line_dir **in)
 {
+    _Static_assert(UNITS_DM_CORE == 0 && UNITS_RC_CORE == 1 && UNITS_FIRST_NC == 2,
+                   "line i joins the RC and core i + 1, line 0 the DM");
     uint32_t me = mycpu()->core;
-    uint32_t idx;
-    if ((me == UNITS_DM_CORE && peer == UNITS_RC_CORE) || (me == UNITS_RC_CORE && peer == UNITS_DM_CORE))
-        idx = 0;
-    else if (me == UNITS_RC_CORE && peer >= UNITS_FIRST_NC && peer < board_ncores)
-        idx = peer - 1;
-    else if (peer == UNITS_RC_CORE && me >= UNITS_FIRST_NC)
-        idx = me - 1;
-    else
+    /* Every line has the RC at one end; x is the other end. */
+    uint32_t x = me == UNITS_RC_CORE ? peer : (peer == UNITS_RC_CORE ? me : UNITS_RC_CORE);
+    if (x == UNITS_RC_CORE || x >= board_ncores)
         return LINE_ERR_NO_LINE;
-    struct line *l = &lines[idx];
+    struct line *l = &lines[x == UNITS_DM_CORE ? 0 : x - 1];
     int mine = l->end[0] == me ? 0 : 1;
     *out = &l->dir[mine];
     *in = &l->dir[1 - mine];
@@ -85,14 +98,17 @@ int line_try_send(uint32_t peer, struct line_msg *m)
         return LINE_ERR_NO_LINE;
     if (m->len > LINE_MAX_PAYLOAD)
         return LINE_ERR_TOO_LONG;
-    if (ringbuf_free(&out->ring) < LINEMSG_HEADER_SIZE + (uint32_t)m->len)
+    if (ringbuf_free(&out->ring) < LINE_RECORD_SIZE(m->len))
         return LINE_ERR_FULL;
-    uint8_t buf[LINEMSG_MAX_SIZE];
+    _Alignas(4) uint8_t hdr[LINEMSG_HEADER_SIZE]; /* word copies into the ring */
     m->seq = out->send_seq;
-    size_t n = linemsg_encode(buf, sizeof buf, m);
-    if (ringbuf_put(&out->ring, buf, (uint32_t)n) != 0)
+    linemsg_put_header(hdr, m);
+    /* The payload goes into the ring from m itself: one copy. */
+    if (ringbuf_put2(&out->ring, hdr, sizeof hdr, m->payload, LINE_PADDED(m->len)) != 0)
         panic("line_try_send: ring to core %u lost its free space", (unsigned)peer);
     out->send_seq++;
+    uint32_t me = mycpu()->core;
+    __atomic_fetch_or(&line_pending[peer][me / 32u], 1u << (me % 32u), __ATOMIC_RELEASE);
     /* Full barrier: the new head is visible before we read the flag (the
      * receiver raises its flag, barriers, then re-reads head). */
     arch_dmb();
@@ -108,17 +124,18 @@ int line_try_recv(uint32_t peer, struct line_msg *m)
     struct line_dir *out, *in;
     if (line_dirs(peer, &out, &in) != LINE_OK)
         return LINE_ERR_NO_LINE;
-    uint8_t buf[LINEMSG_MAX_SIZE];
-    if (ringbuf_peek(&in->ring, buf, LINEMSG_HEADER_SIZE) != 0)
+    _Alignas(4) uint8_t hdr[LINEMSG_HEADER_SIZE]; /* word copies into the ring */
+    if (ringbuf_peek(&in->ring, hdr, LINEMSG_HEADER_SIZE) != 0)
         return LINE_ERR_EMPTY;
-    int total = linemsg_total_size(buf);
-    if (total < 0)
+    if (linemsg_total_size(hdr) < 0)
         panic("line from core %u: header announces a message longer than %u bytes",
               (unsigned)peer, (unsigned)LINE_MAX_PAYLOAD);
-    /* The sender puts whole messages, so the rest is there already. */
-    if (ringbuf_get(&in->ring, buf, (uint32_t)total) != 0)
+    uint32_t check = linemsg_get_header(hdr, m);
+    /* The sender puts whole messages, so the rest is there already; the
+     * payload comes out of the ring straight into m. */
+    if (ringbuf_get_after(&in->ring, LINEMSG_HEADER_SIZE, m->payload, LINE_PADDED(m->len)) != 0)
         panic("line from core %u: half a message in the ring", (unsigned)peer);
-    int st = linemsg_decode(buf, (size_t)total, m);
+    int st = linemsg_check_payload(m, check);
     arch_dmb(); /* our tail is visible before we read the sender's flag */
     if (in->writer_waiting) {
         in->writer_waiting = 0;
@@ -155,7 +172,21 @@ int line_send_ready_arm(uint32_t peer, uint32_t len)
         return 0;
     out->writer_waiting = 1;
     arch_dmb(); /* flag visible before we look at tail again */
-    return ringbuf_free(&out->ring) >= LINEMSG_HEADER_SIZE + len;
+    return ringbuf_free(&out->ring) >= LINE_RECORD_SIZE(len);
+}
+
+uint32_t line_pending_take(uint32_t word)
+{
+    if (word >= LINE_PENDING_WORDS)
+        return 0;
+    return __atomic_exchange_n(&line_pending[mycpu()->core][word], 0, __ATOMIC_ACQUIRE);
+}
+
+void line_pending_mark(uint32_t peer)
+{
+    if (peer < UNITS_MAX_CORES)
+        __atomic_fetch_or(&line_pending[mycpu()->core][peer / 32u], 1u << (peer % 32u),
+                          __ATOMIC_RELAXED);
 }
 
 int line_send(uint32_t peer, struct line_msg *m, uint64_t deadline)

@@ -53,6 +53,16 @@ int line_recv(uint32_t peer, struct line_msg *m, uint64_t deadline);
 int line_recv_ready_arm(uint32_t peer);
 int line_send_ready_arm(uint32_t peer, uint32_t len);
 
+/* For a task that serves many lines without looking at each (the RC and
+ * its NCs): every message sent sets the sender's bit in the receiver's
+ * pending map.  line_pending_take(w) returns and clears the bits of senders
+ * 32w..32w+31 (a bit: look at that line; it may hold more than one message,
+ * or none if it was taken by other calls); line_pending_mark(peer) sets a
+ * bit again, for a line still holding messages after one was taken. */
+#define LINE_PENDING_WORDS ((UNITS_MAX_CORES + 31u) / 32u)
+uint32_t line_pending_take(uint32_t word);
+void line_pending_mark(uint32_t peer);
+
 const char *line_strerror(int status);
 
 #endif

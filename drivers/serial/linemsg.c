@@ -6,15 +6,33 @@
 #include "proto/crc32.h"
 #include "proto/wire.h"
 
+void linemsg_put_header(uint8_t *hdr, const struct line_msg *m)
+{
+    wire_put_u16(hdr, m->type);
+    wire_put_u16(hdr + 2, m->len);
+    wire_put_u32(hdr + 4, m->seq);
+    wire_put_u32(hdr + 8, crc32(m->payload, m->len));
+}
+
+uint32_t linemsg_get_header(const uint8_t *hdr, struct line_msg *m)
+{
+    m->type = wire_get_u16(hdr);
+    m->len = wire_get_u16(hdr + 2);
+    m->seq = wire_get_u32(hdr + 4);
+    return wire_get_u32(hdr + 8);
+}
+
+int linemsg_check_payload(const struct line_msg *m, uint32_t check)
+{
+    return crc32(m->payload, m->len) == check ? LINEMSG_OK : LINEMSG_ERR_CHECK;
+}
+
 size_t linemsg_encode(uint8_t *out, size_t cap, const struct line_msg *m)
 {
     size_t total = LINEMSG_HEADER_SIZE + (size_t)m->len;
     if (m->len > LINE_MAX_PAYLOAD || cap < total)
         return 0;
-    wire_put_u16(out, m->type);
-    wire_put_u16(out + 2, m->len);
-    wire_put_u32(out + 4, m->seq);
-    wire_put_u32(out + 8, crc32(m->payload, m->len));
+    linemsg_put_header(out, m);
     memcpy(out + LINEMSG_HEADER_SIZE, m->payload, m->len);
     return total;
 }
@@ -36,13 +54,9 @@ int linemsg_decode(const uint8_t *in, size_t n, struct line_msg *m)
         return total;
     if (n < (size_t)total)
         return LINEMSG_ERR_SHORT;
-    m->type = wire_get_u16(in);
-    m->len = wire_get_u16(in + 2);
-    m->seq = wire_get_u32(in + 4);
+    uint32_t check = linemsg_get_header(in, m);
     memcpy(m->payload, in + LINEMSG_HEADER_SIZE, m->len);
-    if (crc32(m->payload, m->len) != wire_get_u32(in + 8))
-        return LINEMSG_ERR_CHECK;
-    return LINEMSG_OK;
+    return linemsg_check_payload(m, check);
 }
 
 const char *linemsg_strerror(int status)

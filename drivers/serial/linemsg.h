@@ -34,6 +34,15 @@ enum linemsg_status {
     LINEMSG_ERR_CHECK = -3,    /* payload does not match its crc32 */
 };
 
+/* The header alone, for a line that copies the payload itself: writes m's
+ * type, len, seq and the payload's crc32 at hdr (m->len <=
+ * LINE_MAX_PAYLOAD). */
+void linemsg_put_header(uint8_t *hdr, const struct line_msg *m);
+/* Reads a header (its len checked with linemsg_total_size) into m's type,
+ * len and seq; returns the crc32 it announces for the payload. */
+uint32_t linemsg_get_header(const uint8_t *hdr, struct line_msg *m);
+/* LINEMSG_OK if m's payload has crc32 check, else LINEMSG_ERR_CHECK. */
+int linemsg_check_payload(const struct line_msg *m, uint32_t check);
 /* Encodes m into out; returns the bytes written, or 0 if m->len is too
  * long or cap too small. */
 size_t linemsg_encode(uint8_t *out, size_t cap, const struct line_msg *m);

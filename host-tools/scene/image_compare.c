@@ -8,6 +8,11 @@
  * one ray per pixel disagree by a whole pixel's worth of coverage, so the
  * accuracy of the shading is judged away from them.
  *
+ * Moved pixels (--moved): a pixel of B beyond K of A's that lies within K,
+ * on every channel, of one pixel of A's 3x3 neighbourhood is left out: the
+ * value a surface, a shadow or texel edge or an object thinner than a
+ * pixel moved by less than a pixel gives, whatever the contrast.
+ *
  * Flagged pixels (--flagged): B was rendered with --mark-lost; its pixels
  * painted RENDER_LOST_COLOUR are counted apart and left out, so "every
  * other pixel within K" checks that no wrong pixel went unflagged.
@@ -43,19 +48,41 @@ static int compare_is_edge(const struct image *a, int x, int y)
     return 0;
 }
 
+/* B's pixel at (x, y) is within k of some pixel of A's 3x3 neighbourhood. */
+static int compare_is_moved(const struct image *a, const uint8_t *b, int x, int y, int k)
+{
+    for (int dy = -1; dy <= 1; dy++) {
+        for (int dx = -1; dx <= 1; dx++) {
+            int nx = x + dx, ny = y + dy;
+            if (nx < 0 || ny < 0 || nx >= a->width || ny >= a->height)
+                continue;
+            const uint8_t *n = a->rgb + 3 * ((size_t)ny * (size_t)a->width + (size_t)nx);
+            int near = 1;
+            for (int c = 0; c < 3; c++)
+                if (abs((int)n[c] - (int)b[c]) > k)
+                    near = 0;
+            if (near)
+                return 1;
+        }
+    }
+    return 0;
+}
+
 static int compare_usage(FILE *out)
 {
     fprintf(out, "usage: links1 compare A.png B.png [--within K] [--min-fraction F] "
-                    "[--silhouette [--max-masked F]] [--flagged]\n"
+                    "[--silhouette [--max-masked F]] [--moved] [--flagged]\n"
                     "  exit 0 when at least F (default 0.99) of the compared pixels have every\n"
                     "  channel within K/255 (default 1); --silhouette leaves out the pixels\n"
                     "  next to an edge of A, and fails if more than F of all pixels are left out;\n"
+                    "  --moved leaves out the pixels of B within K of a pixel next to them in A\n"
+                    "  (an edge or a thin object moved by less than a pixel);\n"
                     "  --flagged leaves out the pixels of B painted the --mark-lost colour\n");
     return out == stdout ? 0 : 2;
 }
 
 enum { COMPARE_OPT_WITHIN = CLI_OWN_CODES, COMPARE_OPT_MIN_FRACTION, COMPARE_OPT_MAX_MASKED,
-       COMPARE_OPT_SILHOUETTE, COMPARE_OPT_FLAGGED };
+       COMPARE_OPT_SILHOUETTE, COMPARE_OPT_FLAGGED, COMPARE_OPT_MOVED };
 
 static const struct option compare_options[] = {
     {"within", required_argument, NULL, COMPARE_OPT_WITHIN},
@@ -63,6 +90,7 @@ static const struct option compare_options[] = {
     {"max-masked", required_argument, NULL, COMPARE_OPT_MAX_MASKED},
     {"silhouette", no_argument, NULL, COMPARE_OPT_SILHOUETTE},
     {"flagged", no_argument, NULL, COMPARE_OPT_FLAGGED},
+    {"moved", no_argument, NULL, COMPARE_OPT_MOVED},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -70,7 +98,7 @@ static const struct option compare_options[] = {
 int scene_cmd_compare(int argc, char **argv)
 {
     const char *pa = NULL, *pb = NULL;
-    int within = 1, silhouette = 0, flagged_out = 0;
+    int within = 1, silhouette = 0, flagged_out = 0, moved_out = 0;
     double min_fraction = 0.99, max_masked = 1.0;
     struct cli c;
     cli_init(&c, "links1 compare", argc, argv, "h", compare_options);
@@ -89,6 +117,8 @@ int scene_cmd_compare(int argc, char **argv)
             silhouette = 1;
         } else if (code == COMPARE_OPT_FLAGGED) {
             flagged_out = 1;
+        } else if (code == COMPARE_OPT_MOVED) {
+            moved_out = 1;
         } else if (code == CLI_OPERAND && (!pa || !pb)) {
             *(pa ? &pb : &pa) = c.arg;
         } else {
@@ -123,7 +153,7 @@ int scene_cmd_compare(int argc, char **argv)
     }
     long hist[3][COMPARE_HIST_BUCKETS];
     memset(hist, 0, sizeof hist);
-    long compared = 0, masked = 0, good = 0, flagged = 0;
+    long compared = 0, masked = 0, good = 0, flagged = 0, moved = 0;
     double sq = 0;
     int worst = 0;
     const rgb8_t lost = RENDER_LOST_COLOUR;
@@ -138,6 +168,16 @@ int scene_cmd_compare(int argc, char **argv)
                 b.rgb[o + 2] == lost.b) {
                 flagged++;
                 continue;
+            }
+            if (moved_out) {
+                int off = 0;
+                for (int k = 0; k < 3; k++)
+                    if (abs((int)a.rgb[o + k] - (int)b.rgb[o + k]) > within)
+                        off = 1;
+                if (off && compare_is_moved(&a, b.rgb + o, x, y, within)) {
+                    moved++;
+                    continue;
+                }
             }
             int ok = 1;
             for (int k = 0; k < 3; k++) {
@@ -154,8 +194,11 @@ int scene_cmd_compare(int argc, char **argv)
         }
     }
     double fraction = compared ? (double)good / (double)compared : 0;
-    printf("compare %s %s: %dx%d, %ld pixels compared, %ld masked (silhouette)\n", pa, pb,
+    printf("compare %s %s: %dx%d, %ld pixels compared, %ld masked (silhouette)", pa, pb,
            a.width, a.height, compared, masked);
+    if (moved_out)
+        printf(", %ld moved", moved);
+    printf("\n");
     printf("  |difference|/255:");
     for (int d = 0; d < COMPARE_HIST_BUCKETS; d++)
         printf(d < COMPARE_HIST_BUCKETS - 1 ? "%8d" : "%7d+", d);

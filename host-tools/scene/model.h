@@ -1,6 +1,7 @@
 /* model.h: a 3-D model read from a file made elsewhere (OBJ+MTL, glTF 2,
  * PLY, STL, Collada, 3DS, ...), as plain data.  model_assimp.c fills it
- * through libassimp and is the only file that knows assimp; scene_import.c
+ * through libassimp and is the only file that knows assimp (model_load runs
+ * it in a child process: model_child.c, model_wire.c); scene_import.c
  * turns it into scene records.  Everything here is as the file has it:
  * right-handed coordinates, assimp's units, nothing checked yet.
  */
@@ -84,11 +85,18 @@ struct model {
 };
 
 /* Reads the model at path into *m.  0, or -1 with "PATH: why" in err (the
- * library's own message when it refuses the file) and *m empty. */
+ * library's own message when it refuses the file) and *m empty.  The
+ * library reads the file in a child process (model_child.c): a crash,
+ * abort or endless loop in it ends in a message naming what happened,
+ * never in the end of the program. */
 int model_load(const char *path, struct model *m, char *err, size_t errlen);
-/* The same from size bytes in memory; hint is the format's file extension
- * ("obj", "ply", "stl", "gltf", ...).  A file an OBJ or glTF names (its
- * MTL, buffers) is still read from the disk. */
+/* The same in this process (model_assimp.c; what model_load's child runs):
+ * the library's crashes are the program's. */
+int model_assimp_load(const char *path, struct model *m, char *err, size_t errlen);
+/* model_assimp_load from size bytes in memory, in this process (the fuzz
+ * harness); hint is the format's file extension ("obj", "ply", "stl",
+ * "gltf", ...).  A file an OBJ or glTF names (its MTL, buffers) is still
+ * read from the disk. */
 #define MODEL_MEMORY_MAX (64u * 1024u * 1024u)
 int model_load_memory(const void *data, size_t size, const char *hint, struct model *m,
                       char *err, size_t errlen);

@@ -1,6 +1,8 @@
-/* model_assimp.c: model_load through libassimp (model.h).  The only file of
- * links1 that includes assimp: it copies what the library read into plain
- * arrays and checks nothing beyond what it must to copy safely. */
+/* model_assimp.c: model_assimp_load and model_load_memory through
+ * libassimp (model.h); model_load runs model_assimp_load in a child
+ * (model_child.c).  The only file of links1 that includes assimp: it
+ * copies what the library read into plain arrays and checks nothing beyond
+ * what it must to copy safely. */
 #include <assimp/cimport.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
@@ -361,7 +363,7 @@ static int model_take(const struct aiScene *sc, const char *name, int gltf, stru
     return rc;
 }
 
-int model_load(const char *path, struct model *m, char *err, size_t errlen)
+int model_assimp_load(const char *path, struct model *m, char *err, size_t errlen)
 {
     memset(m, 0, sizeof *m);
     FILE *f = fopen(path, "rb");

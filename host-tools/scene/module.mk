@@ -5,7 +5,8 @@
 SHARED_SRCS += render/scene_load.c
 
 # Models made elsewhere into scene records (`links1 import`, `model`).
-SCENE_MODEL_SRCS := host-tools/scene/model_assimp.c host-tools/scene/scene_import.c \
+SCENE_MODEL_SRCS := host-tools/scene/model_assimp.c host-tools/scene/model_child.c \
+	host-tools/scene/model_wire.c host-tools/scene/scene_import.c \
 	host-tools/scene/scene_import_view.c host-tools/scene/scene_map_image.c \
 	host-tools/scene/scene_write.c host-tools/scene/scene_parse_model.c
 
@@ -24,6 +25,7 @@ SCENE_TEXT_LIBS := -lpng -lassimp
 # compare); the links1 tool adds them to its own sources and SCENE_CMD_LIBS
 # to its libraries.
 SCENE_CMD_SRCS := host-tools/scene/scene_cmds.c host-tools/scene/scene_pov.c \
+	host-tools/scene/arith_auto.c \
 	host-tools/scene/image_compare.c host-tools/scene/import_cmd.c $(SCENE_TEXT_SRCS)
 SCENE_CMD_LIBS := $(SCENE_TEXT_LIBS)
 
@@ -40,6 +42,16 @@ links1-ref-float_LIBS := $(SCENE_TEXT_LIBS)
 links1-ref-fixed_SRCS := $(SCENE_REF_SRCS)
 links1-ref-fixed_ARITH := fixed
 links1-ref-fixed_LIBS := $(SCENE_TEXT_LIBS)
+# The same renderer in other fixed formats (links1-ref-fixedN: Q(31-N).N),
+# candidates of `links1 ref --arith auto` (arith_auto.c finds them next to
+# links1; the board's firmware stays Q12.19, fixed/num.h's default).
+REF_FIXED_BITS := 14 16 18
+HOST_EXTRA_ARITHS += $(addprefix fixed,$(REF_FIXED_BITS))
+$(foreach f,$(REF_FIXED_BITS),$(eval ARITH_DEF_fixed$(f) := -DLINKS1_NUM_FIXED -DNUM_FRAC_BITS=$(f)))
+$(foreach f,$(REF_FIXED_BITS),$(eval HOST_TOOLS += links1-ref-fixed$(f)))
+$(foreach f,$(REF_FIXED_BITS),$(eval links1-ref-fixed$(f)_SRCS = $$(SCENE_REF_SRCS)))
+$(foreach f,$(REF_FIXED_BITS),$(eval links1-ref-fixed$(f)_ARITH := fixed$(f)))
+$(foreach f,$(REF_FIXED_BITS),$(eval links1-ref-fixed$(f)_LIBS = $$(SCENE_TEXT_LIBS)))
 
 # Host tests of the format, the parser and the loader (ASan + UBSan).
 HOST_TESTS += test_scene_load test_scene_parse
@@ -98,3 +110,12 @@ HOST_TESTS += test_smooth_double test_smooth_float test_smooth_fixed
 $(foreach a,double float fixed,$(eval test_smooth_$(a)_SRCS = tests/host/test_smooth.c $$(SCENE_TEXT_SRCS)))
 $(foreach a,double float fixed,$(eval test_smooth_$(a)_ARITH := $(a)))
 $(foreach a,double float fixed,$(eval test_smooth_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
+
+# The model library in a child process: the same models as in this
+# process, the wire form cut and damaged, children that crash, abort, exit
+# badly, hang, send too much or send a malformed model, and libassimp's own
+# crashes (tests/fuzz/assimp-crashes/).
+HOST_TESTS += test_model_child
+test_model_child_SRCS := tests/host/test_model_child.c $(SCENE_TEXT_SRCS)
+test_model_child_ARITH := double
+test_model_child_LIBS := $(SCENE_TEXT_LIBS)

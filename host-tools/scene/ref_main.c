@@ -30,9 +30,13 @@
 static int ref_usage(FILE *out, int status)
 {
     fprintf(out, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [--arith double|float|soft|"
-                 "fixed] [--ppm] [--size WxH] [--frame N | --frames FIRST:LAST]\n"
-                 "  [--no-auto-hierarchy] [--refraction on|off] [--max-depth D] [--min-weight W]\n"
+                 "fixed|auto] [--ppm] [--size WxH] [--frame N | --frames FIRST:LAST]\n"
+                 "  [--no-auto-hierarchy] [--refraction on|off] [--refractionless on|off]\n"
+                 "  [--max-depth D] [--min-weight W]\n"
                  "  [--mark-lost]  (paint pixels that lost precision magenta)\n"
+                 "  --arith auto [--fpu vfp|none] [--target-db D]: the cheapest arithmetic of a\n"
+                 "  unit computer with VFP (or none) that keeps D dB (default 40) against double,\n"
+                 "  judged from a low-resolution pre-render (docs/renderer.md)\n"
                  "  (this is the %s build)\n",
             NUM_NAME);
     return status;
@@ -182,6 +186,11 @@ static int ref_parse(int argc, char **argv, struct ref_args *a)
             if (strcmp(c.arg, "on") != 0 && strcmp(c.arg, "off") != 0)
                 return cli_bad_value(&c, "on or off");
             a->scene.refraction = strcmp(c.arg, "on") == 0;
+            break;
+        case REF_OPT_REFRACTIONLESS:
+            if (strcmp(c.arg, "on") != 0 && strcmp(c.arg, "off") != 0)
+                return cli_bad_value(&c, "on or off");
+            a->scene.refractionless = strcmp(c.arg, "on") == 0;
             break;
         case REF_OPT_MARK_LOST:
             a->scene.mark_lost = 1;

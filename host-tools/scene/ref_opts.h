@@ -16,7 +16,10 @@ enum ref_opt_code {
     REF_OPT_MAX_DEPTH,
     REF_OPT_MIN_WEIGHT,
     REF_OPT_MARK_LOST,
-    REF_OPT_ARITH, /* links1 ref only */
+    REF_OPT_REFRACTIONLESS,
+    REF_OPT_ARITH, /* links1 ref only, with the two below */
+    REF_OPT_FPU,
+    REF_OPT_TARGET_DB,
 };
 
 #define REF_SHORT_OPTIONS "o:h"
@@ -30,6 +33,7 @@ enum ref_opt_code {
     {"max-depth", required_argument, NULL, REF_OPT_MAX_DEPTH}, \
     {"min-weight", required_argument, NULL, REF_OPT_MIN_WEIGHT}, \
     {"mark-lost", no_argument, NULL, REF_OPT_MARK_LOST}, \
+    {"refractionless", required_argument, NULL, REF_OPT_REFRACTIONLESS}, \
     {"help", no_argument, NULL, 'h'}
 
 #endif

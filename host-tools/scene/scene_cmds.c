@@ -8,6 +8,8 @@
 #include <unistd.h>
 
 #include "host-tools/cli_opt.h"
+#include "host-tools/scene/arith_auto.h"
+#include "host-tools/scene/cli_args.h"
 #include "host-tools/scene/ref_opts.h"
 #include "host-tools/scene/scene_cmds.h"
 #include "host-tools/scene/scene_board.h"
@@ -165,64 +167,142 @@ int scene_cmd_export_pov(int argc, char **argv)
     return 0;
 }
 
-static const struct option ref_cmd_options[] = {
-    REF_LONG_OPTIONS,
-    {"arith", required_argument, NULL, REF_OPT_ARITH},
-    {NULL, 0, NULL, 0},
-};
-
-/* links1 ref: runs links1-ref-<arith> from the directory of this program
- * with every argument but --arith A (ref_main.c checks their values). */
-int scene_cmd_ref(int argc, char **argv)
+int scene_ref_program(const char *build, char *out, size_t cap)
 {
-    const char *arith = "double";
-    char **args = calloc((size_t)argc + 2, sizeof *args);
-    if (!args) {
-        fprintf(stderr, "links1 ref: out of memory\n");
-        return 1;
-    }
-    int n = 1;
-    struct cli c;
-    cli_init(&c, "links1 ref", argc, argv, REF_SHORT_OPTIONS, ref_cmd_options);
-    for (int from = 1, code; (code = cli_next(&c)) != -1; from = optind) {
-        if (code == CLI_BAD) {
-            fprintf(stderr, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [options] "
-                            "(links1 ref --help)\n");
-            free(args);
-            return 2;
-        }
-        if (code == REF_OPT_ARITH)
-            arith = c.arg;
-        else /* the words of this option, as written (a "--" before an operand too) */
-            for (int k = from; k < optind; k++)
-                args[n++] = argv[k];
-    }
-    args[n] = NULL;
-    const char *build = arith;
-    int arith_code = arith_from_name(arith);
-    if (arith_code == ARITH_SOFT) {
-        /* Software float differs from hardware float only in who executes
-         * the IEEE operations; on the host both are the float build. */
-        fprintf(stderr, "links1 ref: --arith soft on the host is the float build\n");
-        build = "float";
-    } else if (arith_code < 0) {
-        fprintf(stderr, "links1 ref: --arith '%s': want double, float, soft or fixed\n", arith);
-        free(args);
-        return 2;
-    }
     char self[PATH_MAX];
     ssize_t k = readlink("/proc/self/exe", self, sizeof self - 1);
     if (k < 0) {
-        fprintf(stderr, "links1 ref: cannot find my own directory: %s\n", strerror(errno));
-        free(args);
-        return 1;
+        fprintf(stderr, "links1: cannot find my own directory: %s\n", strerror(errno));
+        return -1;
     }
     self[k] = 0;
     char *slash = strrchr(self, '/');
     if (slash)
         slash[1] = 0;
+    snprintf(out, cap, "%slinks1-ref-%s", self, build);
+    return 0;
+}
+
+static const struct option ref_cmd_options[] = {
+    REF_LONG_OPTIONS,
+    {"arith", required_argument, NULL, REF_OPT_ARITH},
+    {"fpu", required_argument, NULL, REF_OPT_FPU},
+    {"target-db", required_argument, NULL, REF_OPT_TARGET_DB},
+    {NULL, 0, NULL, 0},
+};
+
+/* links1 ref: runs links1-ref-<arith> from the directory of this program
+ * with every argument but --arith A (ref_main.c checks their values);
+ * --arith auto first chooses the build (arith_auto.c). */
+int scene_cmd_ref(int argc, char **argv)
+{
+    const char *arith = "double";
+    char **args = calloc((size_t)argc + 2, sizeof *args);
+    const char **words = calloc((size_t)argc + 4, sizeof *words); /* the pre-render's */
+    if (!args || !words) {
+        fprintf(stderr, "links1 ref: out of memory\n");
+        free(args);
+        free(words);
+        return 1;
+    }
+    int n = 1, nw = 0, fpu = -1, bad = 0;
+    double target = -1;
+    struct arith_auto_opts ao = {.fpu = 1, .target_db = ARITH_AUTO_TARGET_DB,
+                                 .target = ARITH_AUTO_HOST};
+    const char *scene = NULL;
+    char first[24];
+    struct cli c;
+    cli_init(&c, "links1 ref", argc, argv, REF_SHORT_OPTIONS, ref_cmd_options);
+    for (int from = 1, code; !bad && (code = cli_next(&c)) != -1; from = optind) {
+        long f0, f1;
+        switch (code) {
+        case CLI_BAD:
+            bad = 1;
+            continue;
+        case REF_OPT_ARITH:
+            arith = c.arg;
+            continue;
+        case REF_OPT_FPU:
+            if ((fpu = arith_auto_fpu(c.arg)) < 0)
+                bad = cli_bad_value(&c, "vfp or none") < 0;
+            continue;
+        case REF_OPT_TARGET_DB:
+            bad = cli_double(&c, 0, 1, 99, NULL, &target) < 0;
+            continue;
+        case CLI_OPERAND:
+            scene = scene ? scene : c.arg;
+            break;
+        case REF_OPT_SIZE:
+            cli_parse_size(c.arg, &ao.width, &ao.height); /* ref_main.c reports bad ones */
+            break;
+        case REF_OPT_FRAMES: /* the pre-render: the first frame */
+            if (cli_parse_frames(c.arg, &f0, &f1) == 0) {
+                snprintf(first, sizeof first, "%ld", f0);
+                words[nw++] = "--frame";
+                words[nw++] = first;
+            }
+            break;
+        case REF_OPT_MAX_DEPTH:
+        case REF_OPT_MIN_WEIGHT:
+        case REF_OPT_REFRACTION:
+        case REF_OPT_REFRACTIONLESS:
+        case REF_OPT_NO_AUTO_HIERARCHY:
+        case REF_OPT_FRAME:
+            for (int k = from; k < optind; k++)
+                words[nw++] = argv[k];
+            break;
+        }
+        /* the words of this option, as written (a "--" before an operand too) */
+        for (int k = from; k < optind; k++)
+            args[n++] = argv[k];
+    }
+    args[n] = NULL;
+    words[nw] = NULL;
+    int is_auto = strcmp(arith, "auto") == 0;
+    if (!bad && !is_auto && (fpu >= 0 || target >= 0)) {
+        fprintf(stderr, "links1 ref: --fpu and --target-db go with --arith auto\n");
+        bad = 1;
+    }
+    if (bad) {
+        fprintf(stderr, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [options] "
+                        "(links1 ref --help)\n");
+        free(args);
+        free(words);
+        return 2;
+    }
+    struct arith_auto_choice pick;
+    if (is_auto && scene) {
+        ao.fpu = fpu < 0 ? 1 : fpu;
+        ao.target_db = target < 0 ? ARITH_AUTO_TARGET_DB : target;
+        ao.words = words;
+        if (arith_auto_pick("links1 ref", scene, &ao, &pick) != 0) {
+            free(args);
+            free(words);
+            return 1;
+        }
+        arith = pick.build;
+    }
+    free(words);
+    const char *build = arith;
+    int arith_code = is_auto ? ARITH_FIXED : arith_from_name(arith); /* a build, by name */
+    if (is_auto && !scene) {
+        build = "double"; /* it says what is missing */
+    } else if (arith_code == ARITH_SOFT) {
+        /* Software float differs from hardware float only in who executes
+         * the IEEE operations; on the host both are the float build. */
+        fprintf(stderr, "links1 ref: --arith soft on the host is the float build\n");
+        build = "float";
+    } else if (arith_code < 0) {
+        fprintf(stderr, "links1 ref: --arith '%s': want double, float, soft, fixed or auto\n",
+                arith);
+        free(args);
+        return 2;
+    }
     char prog[PATH_MAX + 32];
-    snprintf(prog, sizeof prog, "%slinks1-ref-%s", self, build);
+    if (scene_ref_program(build, prog, sizeof prog) != 0) {
+        free(args);
+        return 1;
+    }
     args[0] = prog;
     execv(prog, args);
     fprintf(stderr, "links1 ref: cannot run %s: %s (build it with make)\n", prog,

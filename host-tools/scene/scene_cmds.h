@@ -4,10 +4,15 @@
 #ifndef LINKS1_HOST_SCENE_CMDS_H
 #define LINKS1_HOST_SCENE_CMDS_H
 
+#include <stddef.h>
+
 int scene_cmd_compile(int argc, char **argv);    /* links1 compile SCENE -o OUT.l1s */
 int scene_cmd_ref(int argc, char **argv);        /* links1 ref SCENE -o OUT.png [--arith A] */
 int scene_cmd_export_pov(int argc, char **argv); /* links1 export-pov SCENE -o OUT.pov */
 int scene_cmd_compare(int argc, char **argv);    /* links1 compare A.png B.png [...] */
+/* The path of links1-ref-<build> next to this program into out; 0, or -1
+ * after printing why. */
+int scene_ref_program(const char *build, char *out, size_t cap);
 int scene_cmd_import(int argc, char **argv);     /* links1 import MODEL -o SCENE.scn [...] */
 
 #endif

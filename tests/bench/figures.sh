@@ -10,7 +10,8 @@
 #
 # The full size: demo.scn at 512x480 (Fig. 7: the board at 1..254 NCs, the
 # replay at 1..254), demo.scn with shadows off at 512x480 (Fig. 10), SPD
-# tetra 5 (4,096 triangles) at 128x96 (Table 2), glass.scn at 256x240
+# tetra 5 (4,096 triangles) at 256x240 (Table 2; the rows without the hierarchy
+# traced at 64x60 and scaled), glass.scn at 256x240
 # (Table 3).  FIG_SMALL=1 shrinks every size and NC list (well under 30 s).
 set -u
 cd "$(dirname "$0")/../.."
@@ -21,13 +22,14 @@ OUT=${FIG_OUT:-docs/figures}
 LIMIT_S=${FIG_RUN_LIMIT_S:-1800}
 if [ "${FIG_SMALL:-0}" = 1 ]; then
     SIZE7=64x48 BOARD7="1 2 4" REPLAY7=1,2,4,8,16,64,254 SIZE10=64x48 K10="16 64 256 1024"
-    T2SPD="tetra 2" SIZE2=32x24 SIZE3=48x36 T2K="480 96"
+    T2SPD="tetra 2" SIZE2=32x24 SIZE2LOW=16x12 SIZE3=48x36 T2K="480 96"
 else
     SIZE7=512x480 BOARD7="1 2 4 8 16 32 64 128 254" REPLAY7=1,2,4,8,16,32,64,128,254 SIZE10=512x480
-    K10="64 128 256 512 1024 2048 4096 8192 16384" T2SPD="tetra 5" SIZE2=128x96 SIZE3=256x240
+    K10="64 128 256 512 1024 2048 4096 8192 16384" T2SPD="tetra 5" SIZE2=256x240 SIZE2LOW=64x60
+    SIZE3=256x240
     T2K="2400 480"
 fi
-SIZE2=${FIG_T2_SIZE:-$SIZE2}
+SIZE2=${FIG_T2_SIZE:-$SIZE2} SIZE2LOW=${FIG_T2_LOW:-$SIZE2LOW}
 PARTS=" ${FIG_PARTS:-7 10 2 3} " # which figures to make
 # The tuned replay (docs/RESULTS.md): decreasing areas, an NC asking for its
 # next area a round trip before it finishes, the DM preparing the frame
@@ -178,9 +180,21 @@ GP
 fi
 
 # ---- Table 2: the speed-ups one by one, 16 NCs ----
+# A row without screen clipping has no per-area set-up: one trace (dynamic,
+# the first K) prices both K from its pixels.  A row with clipping is traced
+# once per K with that grid, so every replayed area, set-up included, is
+# one the board drew (the replay's "exact" count).  The rows without the
+# hierarchy (hours of emulation at full size) are traced at SIZE2LOW, the
+# same camera, and replayed with --scale F: each pixel of the full frame
+# costs what its traced pixel did (docs/trace.md).
 if [[ $PARTS == *" 2 "* ]]; then
-echo "figures: Table 2 (SPD $T2SPD, $SIZE2)"
+echo "figures: Table 2 (SPD $T2SPD, $SIZE2; rows without the hierarchy at $SIZE2LOW)"
+W2=${SIZE2%x*} H2=${SIZE2#*x} WL=${SIZE2LOW%x*} HL=${SIZE2LOW#*x}
+SCALE2=$((W2 / WL))
+[ $((WL * SCALE2)) = "$W2" ] && [ $((HL * SCALE2)) = "$H2" ] ||
+    fail "Table 2: $SIZE2 is not $SIZE2LOW times a whole number"
 "$SPD" $T2SPD -o "$TMP/t2.scn" --size "$SIZE2" >"$TMP/spd.log" 2>&1 || fail "links1-spd $T2SPD"
+"$SPD" $T2SPD -o "$TMP/t2low.scn" --size "$SIZE2LOW" >"$TMP/spd.log" 2>&1 || fail "links1-spd $T2SPD"
 prims=$(sed -nE 's/.*: ([0-9]+) spheres, ([0-9]+) triangles.*/\1 spheres, \2 triangles/p' "$TMP/spd.log")
 rows=("none|--no-bbox --no-hierarchy --no-yclip --no-xclip"
       "bounding boxes only|--no-hierarchy --no-yclip --no-xclip"
@@ -189,25 +203,41 @@ set -- $T2K
 {
     echo "Table 2: SPD $T2SPD ($prims, the compiler's automatic hierarchy) at $SIZE2,"
     echo "16 NCs, simple dynamic balancing; frame s at 1 MIPS, the DM preparing during the"
-    echo "previous frame (trace: links1 render T2.scn --ncs 2 SWITCHES --trace T; replay:"
-    echo "links1 replay T --ncs 16 --balance dynamic --areas K --pipelined)."
+    echo "previous frame (trace: links1 render T2.scn --ncs 2 SWITCHES --balance dynamic --areas K"
+    echo "--trace T, rows without clipping once with K = $1, the others once per K; replay:"
+    echo "links1 replay T --ncs 16 --balance dynamic --areas K --pipelined).  Rows marked * were"
+    echo "traced at $SIZE2LOW and replayed with --scale $SCALE2 (each pixel priced at its traced"
+    echo "pixel's instructions; their NC instructions are the scaled frame's)."
     echo
-    echo "| speed-ups | board: NC instructions (M) | $1 areas: frame s | vs none | $2 areas: frame s | vs none |"
+    echo "| speed-ups | NC instructions (M) | $1 areas: frame s | vs none | $2 areas: frame s | vs none |"
     echo "|---|---|---|---|---|---|"
 } >"$OUT/table2.md"
 none1= none2=
 r=0
 for row in "${rows[@]}"; do
     r=$((r + 1))
-    board "$TMP/b2-$r.log" "$TMP/t2.scn" --ncs 2 ${row#*|} --trace "$TMP/t2-$r.trace" -o "$TMP/t2.ppm"
-    "$LINKS1" replay "$TMP/t2-$r.trace" --ncs 16 --balance dynamic --areas "$1" --pipelined \
+    sw=${row#*|} name=${row%%|*} scn="$TMP/t2.scn" scale=1
+    if [[ $sw == *--no-hierarchy* ]]; then
+        scn="$TMP/t2low.scn" scale=$SCALE2 name="$name *"
+    fi
+    ta="$TMP/t2-$r-$1.trace" tb="$TMP/t2-$r-$2.trace"
+    board "$TMP/b2-$r-$1.log" "$scn" --ncs 2 $sw --balance dynamic --areas "$1" --trace "$ta" \
+        -o "$TMP/t2.ppm"
+    if [[ $sw == *--no-yclip*--no-xclip* ]]; then
+        tb=$ta
+    else
+        board "$TMP/b2-$r-$2.log" "$scn" --ncs 2 $sw --balance dynamic --areas "$2" \
+            --trace "$tb" -o "$TMP/t2.ppm"
+    fi
+    "$LINKS1" replay "$ta" --scale $scale --ncs 16 --balance dynamic --areas "$1" --pipelined \
         >"$TMP/r2a.txt" || fail "replay table 2"
-    "$LINKS1" replay "$TMP/t2-$r.trace" --ncs 16 --balance dynamic --areas "$2" --pipelined \
+    "$LINKS1" replay "$tb" --scale $scale --ncs 16 --balance dynamic --areas "$2" --pipelined \
         >"$TMP/r2b.txt" || fail "replay table 2"
     a=$(field frame_ms <"$TMP/r2a.txt") b=$(field frame_ms <"$TMP/r2b.txt")
     [ -z "$none1" ] && none1=$a none2=$b
-    insns=$(awk '$1 == "area" { s += $15 } END { printf "%.1f", s / 1e6 }' "$TMP/t2-$r.trace")
-    awk -v n="${row%%|*}" -v a="$a" -v b="$b" -v na="$none1" -v nb="$none2" -v m="$insns" \
+    insns=$(awk -v s=$scale '$1 == "area" { u += $11; t += $15 - $11 }
+        END { printf "%.1f", (u + t * s * s) / 1e6 }' "$ta")
+    awk -v n="$name" -v a="$a" -v b="$b" -v na="$none1" -v nb="$none2" -v m="$insns" \
         'BEGIN { printf "| %s | %s | %.1f | %.1fx | %.1f | %.1fx |\n", n, m, a / 1000, na / a, b / 1000, nb / b }' \
         >>"$OUT/table2.md"
 done

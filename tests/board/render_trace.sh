@@ -7,11 +7,16 @@
 #    instructions are the board's, exactly (as a set: which NC drew which
 #    static area depends on timing on the board, and in the replay);
 #  - replayed with dynamic and decreasing balancing on other NC counts, the
-#    handout is legal (links1 replay --check).
+#    handout is legal (links1 replay --check);
+#  - the RC's instructions to serve each request are in the trace: every
+#    area has its own figure, above zero and below RC_REQUEST_MAX (the cheap
+#    request path of issue 10: about 900; 1,700 before it), and the RC's
+#    traced spans add up to no more than the plugin counted on the RC.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
 board_ready render_trace || exit 0
 SIZE=64x48
+RC_REQUEST_MAX=1300
 ref=$(render_ref scenes/demo.scn float $SIZE)
 out="$RENDER_TMP/trace.ppm"
 tr="$RENDER_TMP/demo.trace"
@@ -28,6 +33,17 @@ if render_board render_trace "$out" scenes/demo.scn -o "$out" --ncs 4 --size $SI
         echo "PASS render_trace_covers_nc_work"
     else
         echo "FAIL render_trace_covers_nc_work: plugin per NC '$(echo $board)', trace per NC '$(echo $traced)'"
+    fi
+    rc_board=$(awk '$1 == "core" && $3 == "RC" { print $4 }' "$log")
+    rc_check=$(awk -v max=$RC_REQUEST_MAX -v board="$rc_board" '
+        $1 == "area" { n++; s += $NF; if ($(NF - 1) != "rc" || $NF <= 0 || $NF > max) bad++ }
+        $1 == "broadcast" { s += $NF } $1 == "rc_other" { s += $2 }
+        END { printf "%d areas, %d out of (0, %d], RC spans %d of the plugin'"'"'s %s", n, bad, max, s, board
+              exit !(n > 0 && bad == 0 && board != "" && s <= board) }' "$tr")
+    if [ $? = 0 ]; then
+        echo "PASS render_trace_rc_per_request: $rc_check"
+    else
+        echo "FAIL render_trace_rc_per_request: $rc_check"
     fi
     rep="$RENDER_TMP/replay.txt"
     if "$LINKS1" replay "$tr" --ncs 4 --balance static --per-nc --check >"$rep" 2>&1 &&

@@ -3,7 +3,9 @@
  * the X list at each pixel exactly those of the Y list holding its x;
  * rendering areas with clipping gives the image of the plain full walk bit
  * for bit, with fewer primary-ray tests; each speed-up switched off gives
- * the same image. */
+ * the same image.  The Y list's walk down the tree (pruned by each
+ * cluster's tree rectangle) equals the old walk over every cluster on
+ * random areas, also on a scene of thousands of clusters. */
 #include "tests/check.h"
 #include "tests/host/test_blob_util.h"
 
@@ -110,8 +112,170 @@ static void test_clip_y_matches_brute_force(void)
     }
 }
 
+/* A scene of n small triangles scattered in front of the eye, a few
+ * straddling the eye plane and a few behind it, in one author cluster the
+ * compiler splits into a deep automatic hierarchy (thousands of clusters). */
+static char *tc_scatter_text(uint32_t n, uint32_t seed)
+{
+    size_t cap = 256 + (size_t)n * 160, len = 0;
+    char *t = malloc(cap);
+    len += (size_t)snprintf(t + len, cap - len,
+                            "camera { eye 0 0 -10  look_at 0 0 0  up 0 1 0  fov 60 }\n"
+                            "resolution 96 72\nbackground 0 0 0\n"
+                            "light point { colour 1 1 1  position 5 10 -10 }\n"
+                            "material a { colour 0.8 0.6 0.4  dic 0.2 drc 0.8 }\n"
+                            "cluster cloud { rotate 10 20 0\n");
+    uint32_t r = seed;
+    for (uint32_t i = 0; i < n; i++) {
+        double v[9];
+        for (int k = 0; k < 9; k++) {
+            r = r * 1103515245u + 12345u;
+            double u = ((r >> 8) & 0xffff) / 65535.0;
+            v[k] = k < 3 ? (k == 2 ? -14 + 30 * u : -8 + 16 * u) : v[k % 3] + 0.6 * (u - 0.5);
+        }
+        len += (size_t)snprintf(t + len, cap - len,
+                                "triangle { material a  v %.3f %.3f %.3f  v %.3f %.3f %.3f  v %.3f %.3f %.3f }\n",
+                                v[0], v[1], v[2], v[3], v[4], v[5], v[6], v[7], v[8]);
+    }
+    snprintf(t + len, cap - len, "}\n");
+    return t;
+}
+
+/* The scattered scene compiled as a blob, in t (as tc_open). */
+static int tc_open_scatter(tc_scene_t *t, uint32_t n, uint32_t seed)
+{
+    char err[SD_ERR_MAX];
+    struct sd_scene s;
+    uint8_t *buf = NULL;
+    size_t len, need;
+    render_blob_error_t be;
+    memset(t, 0, sizeof *t);
+    char *text = tc_scatter_text(n, seed);
+    int ok = sd_parse_text("scatter.scn", text, &s, err, sizeof err) == 0;
+    free(text);
+    if (!ok) {
+        printf("scatter: %s\n", err);
+        return 0;
+    }
+    ok = sd_compile(&s, &buf, &len, err, sizeof err) == 0;
+    sd_free(&s);
+    if (ok && render_blob_bytes(buf, len, &need, &be) == RENDER_BLOB_OK) {
+        void *block = tb_block(need);
+        if (render_blob_build(buf, len, 0, block, need, "the test block", &t->blob, &be) != RENDER_BLOB_OK)
+            free(block);
+    }
+    free(buf);
+    if (!t->blob)
+        return 0;
+    t->f = t->blob->frame;
+    size_t bytes = render_clip_bytes(t->f);
+    t->clip_mem = malloc(bytes);
+    return render_clip_init(&t->clip, t->f, t->clip_mem, bytes) == RENDER_OK;
+}
+
+/* Each cluster's tree rectangle is exactly the union of the screen
+ * rectangles of it and every cluster below it (empty when they all are). */
+static int tc_tree_rects_exact(const render_frame_t *f)
+{
+    uint32_t n = f->cluster_count;
+    int32_t *u = malloc(4 * sizeof *u * n);
+    uint32_t *parent = malloc(sizeof *parent * n);
+    for (uint32_t i = 0; i < n; i++) {
+        u[4 * i] = u[4 * i + 1] = 1;
+        u[4 * i + 2] = u[4 * i + 3] = 0;
+        parent[i] = UINT32_MAX;
+    }
+    for (uint32_t i = 0; i < n; i++)
+        for (uint32_t k = 0; k < f->clusters[i].child_count; k++)
+            parent[f->child_list[f->clusters[i].first_child + k]] = i;
+    for (uint32_t i = 0; i < n; i++) {
+        const render_cluster_t *c = &f->clusters[i];
+        if (c->screen_x0 > c->screen_x1 || c->screen_y0 > c->screen_y1)
+            continue;
+        for (uint32_t a = i; a != UINT32_MAX; a = parent[a]) {
+            int32_t *r = &u[4 * a];
+            int empty = r[0] > r[2];
+            r[0] = empty || c->screen_x0 < r[0] ? c->screen_x0 : r[0];
+            r[1] = empty || c->screen_y0 < r[1] ? c->screen_y0 : r[1];
+            r[2] = empty || c->screen_x1 > r[2] ? c->screen_x1 : r[2];
+            r[3] = empty || c->screen_y1 > r[3] ? c->screen_y1 : r[3];
+        }
+    }
+    int same = 1;
+    for (uint32_t i = 0; i < n; i++) {
+        const render_cluster_t *c = &f->clusters[i];
+        int want_empty = u[4 * i] > u[4 * i + 2];
+        int got_empty = c->tree_x0 > c->tree_x1 || c->tree_y0 > c->tree_y1;
+        same &= want_empty == got_empty;
+        if (!want_empty)
+            same &= c->tree_x0 == u[4 * i] && c->tree_y0 == u[4 * i + 1] &&
+                    c->tree_x1 == u[4 * i + 2] && c->tree_y1 == u[4 * i + 3];
+    }
+    free(u);
+    free(parent);
+    return same;
+}
+
+/* The tree walk of Y clipping (pruned by tree rectangles) gives exactly
+ * the list of the old walk over every cluster (tc_brute_y) on random
+ * areas of every shape, on the scenes of scenes/ and on scattered
+ * triangles with thousands of clusters; and the deep scene's hierarchy
+ * has clusters whose tree rectangle misses some areas, so the walk does
+ * prune there. */
+static void test_clip_y_tree_walk_random_areas(void)
+{
+    uint32_t rs = 12345u;
+    for (size_t s = 0; s < TB_SCENE_COUNT + 2; s++) {
+        tc_scene_t t;
+        const char *name = s < TB_SCENE_COUNT ? tb_scenes[s] : s == TB_SCENE_COUNT ? "scatter 3000" : "scatter 200";
+        int ok = s < TB_SCENE_COUNT ? tc_open(&t, name) : tc_open_scatter(&t, s == TB_SCENE_COUNT ? 3000 : 200, 7u + (uint32_t)s);
+        CHECK(ok);
+        if (!t.blob)
+            continue;
+        const render_frame_t *f = t.f;
+        if (s == TB_SCENE_COUNT)
+            CHECK(f->cluster_count > 1000);
+        CHECK(tc_tree_rects_exact(f));
+        uint32_t *want = malloc(sizeof *want * f->cluster_count);
+        int exact = 1, pruned = 0;
+        for (uint32_t i = 0; i < 2000; i++) {
+            uint32_t v[4];
+            for (int k = 0; k < 4; k++) {
+                rs = rs * 1664525u + 1013904223u;
+                v[k] = rs >> 8;
+            }
+            render_area_t a;
+            /* small areas mostly, like the RC's finest grids; some big */
+            uint32_t maxw = i % 8 == 0 ? f->width : 1 + f->width / 16;
+            uint32_t maxh = i % 8 == 0 ? f->height : 1 + f->height / 16;
+            a.w = 1 + v[0] % maxw;
+            a.h = 1 + v[1] % maxh;
+            a.x = v[2] % (f->width - a.w + 1);
+            a.y = v[3] % (f->height - a.h + 1);
+            uint32_t n = render_clip_y(&t.clip, &a, 0);
+            uint32_t m = tc_brute_y(f, &a, want);
+            int same = n == m && memcmp(t.clip.ylist, want, n * sizeof *want) == 0;
+            if (!same && exact)
+                printf("%s: area %ux%u at (%u,%u): tree walk %u clusters, old walk %u\n", name, a.w, a.h,
+                       a.x, a.y, n, m);
+            exact &= same;
+            for (uint32_t c = 1; c < f->cluster_count && !pruned; c++) {
+                const render_cluster_t *k = &f->clusters[c];
+                pruned |= k->child_count > 0 && k->tree_x0 <= k->tree_x1 &&
+                          (k->tree_x1 < (int32_t)a.x || k->tree_x0 > (int32_t)(a.x + a.w - 1) ||
+                           k->tree_y1 < (int32_t)a.y || k->tree_y0 > (int32_t)(a.y + a.h - 1));
+            }
+        }
+        CHECK(exact);
+        if (s == TB_SCENE_COUNT)
+            CHECK(pruned); /* whole subtrees off the area: the walk skips them */
+        free(want);
+        tc_close(&t);
+    }
+}
+
 /* At every pixel of every area, raster order: the X list holds exactly the
- * Y-list clusters whose X range holds x, each once. */
+ * Y-list clusters whose X range holds x, each once, nearest own box first. */
 static void test_clip_x_matches_brute_force(void)
 {
     for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
@@ -123,7 +287,7 @@ static void test_clip_x_matches_brute_force(void)
         uint8_t *mark = calloc(t.f->cluster_count, 1);
         render_area_t areas[TC_MAX_AREAS];
         uint32_t na = tc_areas(t.f, areas, TC_MAX_AREAS);
-        int exact = 1;
+        int exact = 1, z_sorted = 1;
         uint64_t checked = 0;
         for (uint32_t i = 0; i < na; i++) {
             const render_area_t *a = &areas[i];
@@ -144,6 +308,10 @@ static void test_clip_x_matches_brute_force(void)
                     }
                     for (uint32_t k = 0; k < n; k++)
                         mark[t.clip.xlist[k]] = 0;
+                    /* nearest own box first */
+                    for (uint32_t k = 1; k < n; k++)
+                        z_sorted &= !num_lt(cl[t.clip.xlist[k]].own_bounds.lo.z,
+                                            cl[t.clip.xlist[k - 1]].own_bounds.lo.z);
                     exact &= n == want && good == n;
                     checked++;
                 }
@@ -160,6 +328,7 @@ static void test_clip_x_matches_brute_force(void)
         if (!exact)
             printf("%s: X list differs from brute force\n", tb_scenes[s]);
         CHECK(exact);
+        CHECK(z_sorted);
         CHECK(checked > (uint64_t)t.f->width * t.f->height);
         free(mark);
         tc_close(&t);
@@ -304,6 +473,7 @@ static void test_clip_memory_and_errors(void)
 int main(void)
 {
     RUN(test_clip_y_matches_brute_force);
+    RUN(test_clip_y_tree_walk_random_areas);
     RUN(test_clip_x_matches_brute_force);
     RUN(test_clipped_render_same_image);
     RUN(test_area_switches_same_image);

@@ -89,6 +89,34 @@ static void test_get_some_and_long_stream(void)
     CHECK_EQ_INT(ringbuf_get_some(&r, out, 10), 0);
 }
 
+/* A record of two pieces in, then out skipping a peeked header: all or
+ * nothing, across the wrap, word-aligned or not. */
+static void test_put2_and_get_after(void)
+{
+    _Alignas(4) uint8_t mem[32];
+    _Alignas(4) uint8_t hdr[4] = {'h', 'd', 'r', '!'}, out[32], body[24];
+    struct ringbuf r;
+    for (int i = 0; i < 24; i++)
+        body[i] = (uint8_t)('a' + i);
+    ringbuf_init(&r, mem, sizeof mem);
+    CHECK(ringbuf_put2(&r, hdr, 4, body, 24) == 0);
+    CHECK(ringbuf_put2(&r, hdr, 4, body, 1) == -1); /* 4 free: nothing written */
+    CHECK_EQ_INT(ringbuf_used(&r), 28);
+    CHECK(ringbuf_get_after(&r, 4, out, 25) == -1);  /* only 24 after the header */
+    CHECK(ringbuf_peek(&r, out, 4) == 0 && memcmp(out, hdr, 4) == 0);
+    CHECK(ringbuf_get_after(&r, 4, out, 24) == 0 && memcmp(out, body, 24) == 0);
+    CHECK_EQ_INT(ringbuf_used(&r), 0);
+    /* head and tail at 28: the next record wraps inside its body. */
+    CHECK(ringbuf_put2(&r, hdr, 4, body, 20) == 0);
+    CHECK(ringbuf_get_after(&r, 4, out, 20) == 0 && memcmp(out, body, 20) == 0);
+    /* Odd sizes: the byte-by-byte path, then the ring no longer aligned. */
+    CHECK(ringbuf_put2(&r, hdr + 1, 3, body + 1, 5) == 0);
+    CHECK(ringbuf_get_after(&r, 3, out + 1, 5) == 0 && memcmp(out + 1, body + 1, 5) == 0);
+    CHECK(ringbuf_put2(&r, hdr, 4, body, 24) == 0);
+    CHECK(ringbuf_get(&r, out, 28) == 0 && memcmp(out, hdr, 4) == 0 &&
+          memcmp(out + 4, body, 24) == 0);
+}
+
 int main(void)
 {
     RUN(test_init_rejects_bad_sizes);
@@ -96,5 +124,6 @@ int main(void)
     RUN(test_wraps_around_the_end);
     RUN(test_indices_wrap_at_2_to_32);
     RUN(test_get_some_and_long_stream);
+    RUN(test_put2_and_get_after);
     return check_exit();
 }

@@ -2,6 +2,7 @@
  * through text -> compiled form -> scene_t, and every kind of corruption
  * (truncation at every length, each header field, flipped bits, bad
  * indices) refused with the right error. */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -93,6 +94,9 @@ static uint32_t section_offset(const uint8_t *b, int kind)
     return 0;
 }
 
+/* A length of the scene in the scene text's units (scene_t.unit_exp). */
+#define LEN(s, v) ldexp(num_to_double(v), -(s)->unit_exp)
+
 static void test_round_trip(void)
 {
     size_t len;
@@ -110,6 +114,11 @@ static void test_round_trip(void)
     CHECK_EQ_INT(s.height, 48);
     CHECK_EQ_INT(s.frame_count, 3);
     CHECK_EQ_INT(s.options.max_depth, 4);
+    /* lengths scaled to the scene: the largest, 5 (eye, spot light), is
+     * stored as 10, in [2^RENDER_NORM_EXP, 2^(RENDER_NORM_EXP+1)) */
+    CHECK_EQ_INT(s.unit_exp, RENDER_NORM_EXP - 2);
+    CHECK_EQ_INT(s.tol_exp, 0);
+    CHECK_NEAR(num_to_double(s.camera.eye.z), -5.0 * (1 << s.unit_exp), 0);
     CHECK_EQ_INT(s.options.shadows, 0);
     CHECK_EQ_INT(s.options.refractionless, 1);
     CHECK_EQ_INT(s.options.refraction, 1);
@@ -120,7 +129,7 @@ static void test_round_trip(void)
     CHECK_EQ_INT(s.light_count, 2);
     CHECK_EQ_INT(s.lights[0].kind, SCENE_LIGHT_POINT);
     CHECK_NEAR(num_to_double(s.lights[0].intensity.g), 0.5, VAL_TOL);
-    CHECK_NEAR(num_to_double(s.lights[0].position.z), 3, VAL_TOL);
+    CHECK_NEAR(LEN(&s, s.lights[0].position.z), 3, VAL_TOL);
     CHECK_EQ_INT(s.lights[1].kind, SCENE_LIGHT_SPOT);
     CHECK_NEAR(num_to_double(s.lights[1].direction.y), -5, VAL_TOL);
     CHECK_NEAR(num_to_double(s.lights[1].cos_inner), 0.93969262, VAL_TOL);
@@ -146,7 +155,7 @@ static void test_round_trip(void)
     CHECK(s.clusters[0].parent == SCENE_NO_CLUSTER);
     CHECK_EQ_INT(s.clusters[1].parent, 0);
     CHECK_EQ_INT(s.clusters[2].parent, 1);
-    CHECK_NEAR(num_to_double(s.clusters[1].local.m[1][3]), 2, 0);
+    CHECK_NEAR(LEN(&s, s.clusters[1].local.m[1][3]), 2, 0);
     CHECK_NEAR(num_to_double(s.clusters[2].local.m[2][2]), 2, 0);
     CHECK_EQ_INT(s.clusters[1].key_count, 2);
     CHECK_EQ_INT(s.key_count, 2);
@@ -157,22 +166,22 @@ static void test_round_trip(void)
     CHECK_NEAR(num_to_double(s.keys[1].scale.z), 2, 0);
     CHECK_EQ_INT(s.prim_count, 5);
     CHECK_EQ_INT(s.prims[0].kind, SCENE_PRIM_BOX);
-    CHECK_NEAR(num_to_double(s.prims[0].shape.box.centre.z), 1, 0);
-    CHECK_NEAR(num_to_double(s.prims[0].shape.box.half.z), 2, 0);
+    CHECK_NEAR(LEN(&s, s.prims[0].shape.box.centre.z), 1, 0);
+    CHECK_NEAR(LEN(&s, s.prims[0].shape.box.half.z), 2, 0);
     CHECK_EQ_INT(s.prims[0].material, 1);
     CHECK_EQ_INT(s.prims[1].kind, SCENE_PRIM_ELLIPSOID);
     CHECK_EQ_INT(s.prims[1].material, 0);
     CHECK_EQ_INT(s.prims[1].cluster, 1);
     CHECK_EQ_INT(s.prims[2].kind, SCENE_PRIM_TRIANGLE);
     CHECK_EQ_INT(s.prims[2].cluster, 2);
-    CHECK_NEAR(num_to_double(s.prims[2].shape.triangle.v[1].x), 1, 0);
+    CHECK_NEAR(LEN(&s, s.prims[2].shape.triangle.v[1].x), 1, 0);
     CHECK_NEAR(num_to_double(s.prims[2].shape.triangle.tex_v[2]), 1, 0);
     CHECK_EQ_INT(s.prims[3].kind, SCENE_PRIM_DENSITY);
     CHECK_EQ_INT(s.prims[3].shape.density.count, 2);
     CHECK_NEAR(num_to_double(s.prims[3].shape.density.threshold), 0.5, 0);
     CHECK_EQ_INT(s.density_component_count, 2);
     CHECK_NEAR(num_to_double(s.density_components[1].weight), -0.5, 0);
-    CHECK_NEAR(num_to_double(s.prims[4].shape.ellipsoid.radius.z), 3, 0);
+    CHECK_NEAR(LEN(&s, s.prims[4].shape.ellipsoid.radius.z), 3, 0);
     free(b);
 }
 

@@ -1,7 +1,8 @@
 /* test_trace.c: trace files (host-tools/trace_file.h) round-trip and are
  * refused when damaged; the replay (host-tools/replay.h) gives each NC
  * exactly the board's instructions under static balancing, and a legal
- * handout of the schedule under dynamic and decreasing balancing. */
+ * handout of the schedule under dynamic and decreasing balancing; a trace
+ * scaled to a larger size (trace_scale) keeps its costs per pixel block. */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -257,6 +258,55 @@ static void test_dynamic_replay_is_legal(void)
     trace_free(&t);
 }
 
+/* trace_scale: a trace priced at f times the size keeps each pixel's
+ * cost over its f x f block, each area's set-up and RC serving, f * f its
+ * push; the result passes trace_check (areas cover the screen once, totals
+ * add up); a scale past the largest screen is refused, naming it. */
+static void test_trace_scale(void)
+{
+    struct trace t, s;
+    make_trace(&t, AREAS_DYNAMIC, 16, 12, 3, 24);
+    s = t; /* a deep copy */
+    s.nc_setup = malloc(t.ncs * sizeof *s.nc_setup);
+    s.areas = malloc(t.nareas * sizeof *s.areas);
+    s.pixel = malloc(16 * 12 * sizeof *s.pixel);
+    memcpy(s.nc_setup, t.nc_setup, t.ncs * sizeof *s.nc_setup);
+    memcpy(s.areas, t.areas, t.nareas * sizeof *s.areas);
+    memcpy(s.pixel, t.pixel, 16 * 12 * sizeof *s.pixel);
+    char err[TRACE_ERR_MAX];
+    CHECK_EQ_INT(trace_scale(&s, 3, err, sizeof err), 0);
+    CHECK_EQ_INT(s.width, 48);
+    CHECK_EQ_INT(s.height, 36);
+    CHECK_EQ_INT(s.nareas, t.nareas);
+    CHECK(trace_pixels_sum(&s, 0, 0, 48, 36) == 9 * trace_pixels_sum(&t, 0, 0, 16, 12));
+    int same = 1;
+    for (uint32_t y = 0; y < 36; y++)
+        for (uint32_t x = 0; x < 48; x++)
+            same &= s.pixel[y * 48 + x] == t.pixel[(y / 3) * 16 + x / 3];
+    for (uint32_t i = 0; i < t.nareas; i++) {
+        const struct trace_area *a = &t.areas[i], *b = &s.areas[i];
+        same &= b->x == 3 * a->x && b->y == 3 * a->y && b->w == 3 * a->w && b->h == 3 * a->h;
+        same &= b->setup == a->setup && b->rc == a->rc && b->push == 9 * a->push && b->nc == a->nc;
+        same &= b->total == a->setup + 9 * (a->total - a->setup);
+    }
+    CHECK(same);
+    CHECK(s.dm_prepare == t.dm_prepare && s.rc_broadcast == t.rc_broadcast);
+    /* a replay of the scaled trace on a grid of its own is a legal handout */
+    struct replay_cfg c = {.ncs = 4, .balance = AREAS_DYNAMIC, .k = 96, .mips = 1, .line_us = 1000,
+                           .byte_us = 520.8};
+    struct replay_result r;
+    CHECK_EQ_INT(replay_run(&s, &c, &r, err, sizeof err), 0);
+    CHECK_EQ_INT(replay_check_legal(&s, &c, &r, err, sizeof err), 0);
+    replay_free(&r);
+    CHECK_EQ_INT(trace_scale(&t, 1, err, sizeof err), 0);
+    CHECK_EQ_INT(t.width, 16);
+    CHECK_EQ_INT(trace_scale(&t, AREAS_MAX_DIM, err, sizeof err), -1);
+    CHECK(strstr(err, "scale") != NULL);
+    CHECK_EQ_INT(t.width, 16);
+    trace_free(&t);
+    trace_free(&s);
+}
+
 static void test_replay_refuses_bad_settings(void)
 {
     struct trace t;
@@ -290,6 +340,7 @@ int main(void)
     RUN(test_static_replay_is_exact);
     RUN(test_dynamic_replay_is_legal);
     RUN(test_replay_refuses_bad_settings);
+    RUN(test_trace_scale);
     char cmd[160];
     snprintf(cmd, sizeof cmd, "rm -rf %s", test_dir);
     if (system(cmd) != 0)

@@ -1,7 +1,10 @@
 # tests/sweeps/: where each arithmetic breaks (scene families of
 # make_scene.py, sweep.sh) and the speed-against-accuracy chart (pareto.sh).
-# make test runs the sweeps at reduced size: every wrong pixel flagged.
-BOARD_TESTS += tests/sweeps/flagged.sh
+# make test runs the sweeps at reduced size: every wrong pixel flagged; and
+# the scale family gives the same image at every scale (scale_same.sh).
+BOARD_TESTS += tests/sweeps/flagged.sh tests/sweeps/scale_same.sh
+# and the Pareto chart at reduced size: both charts, board points exact.
+BOARD_TESTS += tests/sweeps/pareto_small.sh
 
 # make sweeps: the full sweeps; tables and charts into docs/figures/.
 .PHONY: sweeps
@@ -11,3 +14,12 @@ sweeps: deps
 	$(Q)mkdir -p docs/figures && cp $(B)/sweeps/sweep-*.png docs/figures/ && \
 		cp $(B)/sweeps/breaks.md docs/figures/sweep-breaks.md && \
 		cp $(B)/sweeps/sweep.tsv docs/figures/sweep.tsv
+
+# make sweeps-auto: --arith auto on every sweep scene against the cheapest
+# candidate that keeps 40 dB (tests/sweeps/auto.sh; about 45 minutes).
+.PHONY: sweeps-auto
+sweeps-auto: deps
+	$(Q)$(MAKE) $(JOBS) --no-print-directory all
+	$(Q)bash tests/sweeps/auto.sh --out $(B)/sweeps-auto
+	$(Q)mkdir -p docs/figures && cp $(B)/sweeps-auto/auto.tsv docs/figures/sweep-auto.tsv && \
+		cp $(B)/sweeps-auto/auto.md docs/figures/sweep-auto.md

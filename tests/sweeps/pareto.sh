@@ -7,19 +7,62 @@
 # max_depth 8 and adaptive depth off.  Configurations: the arithmetic
 # (double, float = soft on the host, fixed with every fraction-bit count
 # that builds, 12..19), max_depth 1..8, adaptive depth on (min_weight 1/512)
-# and off, density root-finder steps 8..64 (RENDER_DENSITY_SAMPLES).
-# Cost: host ns per pixel of tracing ("traced in" of links1 ref), the median
-# of RUNS (default 3) runs.  Error: PSNR against the reference, share of
-# pixels beyond 1/255 and 2/255.  The Pareto front (no other point both
-# cheaper and closer) is marked.  Writes DIR/pareto.tsv and DIR/pareto.png.
-#   bash tests/sweeps/pareto.sh [--out DIR]
+# and off, density root-finder steps 8..64 (RENDER_DENSITY_SAMPLES),
+# refraction off (transmitted rays never bend).
+# Cost on the host: ns per pixel of tracing ("traced in" of links1 ref), the
+# median of RUNS (default 3) runs.  Cost on the board: the NCs' guest
+# instructions per pixel (links1 render --count-insns, the TCG plugin; the
+# sum over the NCs, which does not depend on how the areas were shared
+# out), one run (it varies by a few instructions per pixel between runs),
+# for every configuration the board runs: float (VFP) and soft at every
+# depth, adaptive on and off, refraction off, fixed Q12.19 at depth 5, and
+# the other fixed formats at depth 5 with firmware built by this script
+# into DIR/fw-qF (make B=DIR/fw-qF FW_EXTRA_CFLAGS=-DNUM_FRAC_BITS=F, never
+# the default build); no double and no density-step variants on the board.  Error: PSNR against the reference, share of
+# pixels beyond 1/255 and 2/255; a board image is also checked to be the
+# host image of the same arithmetic, byte for byte.  The Pareto front (no
+# other point both cheaper and closer) is marked on each chart; the board's
+# chart also marks the front of an NC without an FPU (soft and fixed).  Writes
+# DIR/pareto.tsv and DIR/pareto.png (host), DIR/pareto-board.tsv and
+# DIR/pareto-board.png (board).
+#   bash tests/sweeps/pareto.sh [--out DIR] [--charts-only]
+#     (--charts-only: the fronts and charts again from DIR/*.raw, nothing run)
+#   PARETO_SMALL=1 bash tests/sweeps/pareto.sh --out DIR   # the reduced run
+#     (tests/board/pareto_small.sh: 40x30, one run, depth 2 only; on the
+#     board float, soft and fixed adaptive and float with refraction off)
 set -eu
 cd "$(dirname "$0")/../.."
 out=build/pareto
-[ "${1:-}" = --out ] && out=$2
-SIZE=${SIZE:-160x120}
-RUNS=${RUNS:-3}
+CHARTS_ONLY=0
+while [ $# -gt 0 ]; do
+    case $1 in
+    --out) out=$2; shift 2 ;;
+    --charts-only) CHARTS_ONLY=1; shift ;;
+    *) echo "usage: pareto.sh [--out DIR] [--charts-only]" >&2; exit 2 ;;
+    esac
+done
+SMALL=${PARETO_SMALL:-0}
+if [ "$SMALL" = 1 ]; then
+    SIZE=${SIZE:-40x30} RUNS=${RUNS:-1} DEPTHS=2 FRACS= STEPS=
+else
+    SIZE=${SIZE:-160x120} RUNS=${RUNS:-3} DEPTHS="1 2 3 4 5 6 8" FRACS="12 13 14 15 16 17 18"
+    STEPS="8 16 32 64"
+fi
+NCS=${PARETO_NCS:-4}
+LIMIT_S=${PARETO_RUN_LIMIT_S:-900}
+export FW_DIR=${FW_DIR:-build}
 scene=scenes/demo.scn
+# front RAW TSV: RAW sorted by cost (column 2), the last column "yes"
+# on the front: closer (column 3, PSNR) than every cheaper point
+front() {
+    {
+        head -n 1 "$1"
+        tail -n +2 "$1" | sort -t$'\t' -k2,2g -k3,3gr |
+            awk -F'\t' -v OFS='\t' '{ $NF = ($3 + 0 > best) ? "yes" : ""; if ($3 + 0 > best) best = $3 + 0; print }'
+    } >"$2"
+}
+
+if [ "$CHARTS_ONLY" = 0 ]; then # measure; --charts-only redraws from DIR/*.raw
 mkdir -p "$out/bin"
 make -s --no-print-directory build/links1 build/links1-ref-double build/links1-ref-float \
     build/links1-ref-fixed
@@ -33,34 +76,53 @@ variant() {
     [ -x "$out/bin/$name" ] ||
         cc -std=gnu11 -O2 -I. -ffp-contract=off "$@" $srcs $libs -lpng -lm -o "$out/bin/$name"
 }
-for f in 12 13 14 15 16 17 18; do variant fixed-$f -DLINKS1_NUM_FIXED -DNUM_FRAC_BITS=$f; done
-for s in 8 16 32 64; do variant float-steps$s -DLINKS1_NUM_FLOAT -DRENDER_DENSITY_SAMPLES=$s; done
+for f in $FRACS; do variant fixed-$f -DLINKS1_NUM_FIXED -DNUM_FRAC_BITS=$f; done
+for s in $STEPS; do variant float-steps$s -DLINKS1_NUM_FLOAT -DRENDER_DENSITY_SAMPLES=$s; done
 
 ref=$out/reference.png
 build/links1-ref-double "$scene" --size "$SIZE" --max-depth 8 --min-weight 0 -o "$ref" >/dev/null 2>&1
+pixels=$(( ${SIZE%x*} * ${SIZE#*x} ))
 
+# image NAME: the file of configuration NAME's image
+image() { echo "$out/$(echo "$1" | tr ' ,.' '___').png"; }
+
+# errors IMG: "PSNR<TAB>beyond 1/255 %<TAB>beyond 2/255 %" against the reference
+errors() {
+    local c1 c2 w1 w2 psnr
+    c1=$(build/links1 compare "$ref" "$1" --within 1 --min-fraction 0)
+    c2=$(build/links1 compare "$ref" "$1" --within 2 --min-fraction 0)
+    w1=$(echo "$c1" | sed -nE 's/.*on every channel: ([0-9.]+)%.*/\1/p')
+    w2=$(echo "$c2" | sed -nE 's/.*on every channel: ([0-9.]+)%.*/\1/p')
+    psnr=$(echo "$c2" | sed -nE 's/.*PSNR ([0-9.]+) dB.*/\1/p')
+    awk -v q="$psnr" -v w1="$w1" -v w2="$w2" \
+        'BEGIN { printf "%s\t%.3f\t%.3f", q, 100 - w1, 100 - w2 }'
+}
+
+# ------------------------------------------------------------------ host
 # name|program|arguments
 configs=()
-for d in 1 2 3 4 5 6 8; do
+for d in $DEPTHS; do
     configs+=("float d$d adaptive|build/links1-ref-float|--max-depth $d")
     configs+=("float d$d fixed cutoff|build/links1-ref-float|--max-depth $d --min-weight 0")
 done
-configs+=("double d5 adaptive|build/links1-ref-double|--max-depth 5")
-configs+=("double d5 fixed cutoff|build/links1-ref-double|--max-depth 5 --min-weight 0")
-configs+=("fixed Q12.19 d5 adaptive|build/links1-ref-fixed|--max-depth 5")
-configs+=("fixed Q12.19 d5 fixed cutoff|build/links1-ref-fixed|--max-depth 5 --min-weight 0")
-for f in 12 13 14 15 16 17 18; do
+dm=5
+[ "$SMALL" = 1 ] && dm=2
+configs+=("float d$dm adaptive, refraction off|build/links1-ref-float|--max-depth $dm --refraction off")
+configs+=("double d$dm adaptive|build/links1-ref-double|--max-depth $dm")
+configs+=("double d$dm fixed cutoff|build/links1-ref-double|--max-depth $dm --min-weight 0")
+configs+=("fixed Q12.19 d$dm adaptive|build/links1-ref-fixed|--max-depth $dm")
+configs+=("fixed Q12.19 d$dm fixed cutoff|build/links1-ref-fixed|--max-depth $dm --min-weight 0")
+for f in $FRACS; do
     configs+=("fixed Q$((31 - f)).$f d5 adaptive|$out/bin/fixed-$f|--max-depth 5")
 done
-for s in 8 16 32 64; do
+for s in $STEPS; do
     configs+=("float d5 adaptive, $s density steps|$out/bin/float-steps$s|--max-depth 5")
 done
 
-pixels=$(( ${SIZE%x*} * ${SIZE#*x} ))
 printf 'config\tns_per_pixel\tpsnr_db\tbeyond1_pct\tbeyond2_pct\tlost_pixels\tfront\n' >"$out/pareto.raw"
 for c in "${configs[@]}"; do
     IFS='|' read -r name prog args <<<"$c"
-    img=$out/$(echo "$name" | tr ' ,.' '___').png
+    img=$(image "$name")
     times=()
     for ((r = 0; r < RUNS; r++)); do
         log=$("$prog" "$scene" --size "$SIZE" $args -o "$img" 2>&1)
@@ -68,24 +130,78 @@ for c in "${configs[@]}"; do
     done
     secs=$(printf '%s\n' "${times[@]}" | sort -g | sed -n "$(( (RUNS + 1) / 2 ))p")
     lost=$(echo "$log" | grep -o '[0-9]* pixels lost' | grep -o '^[0-9]*')
-    c1=$(build/links1 compare "$ref" "$img" --within 1 --min-fraction 0)
-    c2=$(build/links1 compare "$ref" "$img" --within 2 --min-fraction 0)
-    w1=$(echo "$c1" | sed -nE 's/.*on every channel: ([0-9.]+)%.*/\1/p')
-    w2=$(echo "$c2" | sed -nE 's/.*on every channel: ([0-9.]+)%.*/\1/p')
-    psnr=$(echo "$c2" | sed -nE 's/.*PSNR ([0-9.]+) dB.*/\1/p')
-    awk -v n="$name" -v s="$secs" -v p="$pixels" -v q="$psnr" -v w1="$w1" -v w2="$w2" -v l="$lost" \
-        'BEGIN { printf "%s\t%.0f\t%s\t%.3f\t%.3f\t%s\t\n", n, s * 1e9 / p, q, 100 - w1, 100 - w2, l }' \
-        >>"$out/pareto.raw"
+    err=$(errors "$img")
+    awk -v n="$name" -v s="$secs" -v p="$pixels" -v e="$err" -v l="$lost" \
+        'BEGIN { printf "%s\t%.0f\t%s\t%s\t\n", n, s * 1e9 / p, e, l }' >>"$out/pareto.raw"
 done
-# the front: sorted by cost, a point is on it when it is closer than every cheaper one
-{
-    head -n 1 "$out/pareto.raw"
-    tail -n +2 "$out/pareto.raw" | sort -t$'\t' -k2,2g -k3,3gr |
-        awk -F'\t' -v OFS='\t' '{ $7 = ($3 + 0 > best) ? "yes" : ""; if ($3 + 0 > best) best = $3 + 0; print }'
-} >"$out/pareto.tsv"
+
+# ----------------------------------------------------------------- board
+# name|arithmetic|arguments|the host configuration whose image it must be
+bconfigs=()
+for d in $DEPTHS; do
+    for a in float soft; do
+        bconfigs+=("$a d$d adaptive|$a|--max-depth $d|float d$d adaptive")
+        [ "$SMALL" = 1 ] ||
+            bconfigs+=("$a d$d fixed cutoff|$a|--max-depth $d --min-weight 0|float d$d fixed cutoff")
+    done
+done
+bconfigs+=("float d$dm adaptive, refraction off|float|--max-depth $dm --refraction off|float d$dm adaptive, refraction off")
+[ "$SMALL" = 1 ] ||
+    bconfigs+=("soft d$dm adaptive, refraction off|soft|--max-depth $dm --refraction off|float d$dm adaptive, refraction off")
+bconfigs+=("fixed Q12.19 d$dm adaptive|fixed|--max-depth $dm|fixed Q12.19 d$dm adaptive")
+[ "$SMALL" = 1 ] ||
+    bconfigs+=("fixed Q12.19 d$dm fixed cutoff|fixed|--max-depth $dm --min-weight 0|fixed Q12.19 d$dm fixed cutoff")
+for f in $FRACS; do # firmware with another fixed format, in this script's own build dir
+    fw=$out/fw-q$f
+    make -s --no-print-directory B="$fw" FW_EXTRA_CFLAGS=-DNUM_FRAC_BITS=$f "$fw/links1-fixed.elf"
+    bconfigs+=("fixed Q$((31 - f)).$f d5 adaptive|fixed|--max-depth 5 --firmware $fw/links1-fixed.elf|fixed Q$((31 - f)).$f d5 adaptive")
+done
+
+printf 'config\tnc_insns_per_pixel\tpsnr_db\tbeyond1_pct\tbeyond2_pct\tarith\tsame_as_host\tfront\n' \
+    >"$out/pareto-board.raw"
+for c in "${bconfigs[@]}"; do
+    IFS='|' read -r name arith args host <<<"$c"
+    img="$out/board-$(basename "$(image "$name")")"
+    log="$img.log"
+    if ! timeout "$LIMIT_S" build/links1 render --quiet --count-insns "$scene" --arith "$arith" \
+        --ncs "$NCS" --size "$SIZE" $args -o "$img" >"$log" 2>&1; then
+        echo "pareto: links1 render $name failed: $(tail -n 1 "$log")" >&2
+        exit 1
+    fi
+    total=$(grep -o 'NCs total [0-9]*' "$log" | grep -o '[0-9]*$' || true)
+    if [ -z "$total" ]; then
+        echo "pareto: no instruction counts in $log" >&2
+        exit 1
+    fi
+    same=no
+    cmp -s "$img" "$(image "$host")" && same=yes
+    err=$(errors "$img")
+    awk -v n="$name" -v t="$total" -v p="$pixels" -v e="$err" -v a="$arith" -v s="$same" \
+        'BEGIN { printf "%s\t%.0f\t%s\t%s\t%s\t\n", n, t / p, e, a, s }' >>"$out/pareto-board.raw"
+done
+fi
+pixels=$(( ${SIZE%x*} * ${SIZE#*x} ))
+front "$out/pareto.raw" "$out/pareto.tsv"
+# the board's front, and the front of the NCs without an FPU (soft, fixed)
+front "$out/pareto-board.raw" "$out/pareto-board.sorted"
+awk -F'\t' -v OFS='\t' 'NR == 1 { print $0, "front_no_fpu"; next }
+    { f = ""; if ($6 != "float" && $3 + 0 > best) { f = "yes"; best = $3 + 0 } print $0, f }' \
+    "$out/pareto-board.sorted" >"$out/pareto-board.tsv"
+rm -f "$out/pareto-board.sorted"
+
+# ---------------------------------------------------------------- charts
 awk -F'\t' 'NR > 1 { print $2, $3 }' "$out/pareto.tsv" >"$out/all.dat"
 awk -F'\t' 'NR > 1 && $7 == "yes" { print $2, $3 }' "$out/pareto.tsv" >"$out/front.dat"
 awk -F'\t' 'NR > 1 { gsub(/ /, "_", $1); print $2, $3, $1 }' "$out/pareto.tsv" >"$out/labels.dat"
+for a in float soft fixed; do
+    awk -F'\t' -v a=$a 'NR > 1 && $6 == a { print $2, $3 }' "$out/pareto-board.tsv" \
+        >"$out/board-$a.dat"
+done
+awk -F'\t' 'NR > 1 && $8 == "yes" { print $2, $3 }' "$out/pareto-board.tsv" >"$out/board-front.dat"
+awk -F'\t' 'NR > 1 && $9 == "yes" { print $2, $3 }' "$out/pareto-board.tsv" >"$out/board-front-nofpu.dat"
+# labels on the fronts' points only (the table has them all)
+awk -F'\t' 'NR > 1 && ($8 == "yes" || $9 == "yes") { n = $1; sub(/^(float|soft|fixed) /, "", n); gsub(/ /, "_", n);
+    print $2, $3, n }' "$out/pareto-board.tsv" >"$out/board-labels.dat"
 if command -v gnuplot >/dev/null; then
     gnuplot <<GP
 set terminal pngcairo size 900,560 font ",9" noenhanced
@@ -99,6 +215,17 @@ set key bottom right
 plot "$out/all.dat" using 1:2 with points pt 7 ps 0.8 title "configuration", \
      "$out/front.dat" using 1:2 with linespoints lw 2 pt 6 ps 1.5 title "Pareto front", \
      "$out/labels.dat" using 1:2:3 with labels font ",7" offset 0,0.7 notitle
+set output "$out/pareto-board.png"
+set title "demo.scn $SIZE on the board ($NCS NCs): NC instructions per pixel against PSNR (same reference)"
+set xlabel "NC guest instructions per pixel (sum over the NCs, TCG plugin)"
+plot "$out/board-float.dat" using 1:2 with points pt 7 ps 0.9 title "float (VFP)", \
+     "$out/board-soft.dat" using 1:2 with points pt 5 ps 0.9 title "soft float", \
+     "$out/board-fixed.dat" using 1:2 with points pt 9 ps 1.1 title "fixed point (Q12.19, and the other formats' firmware)", \
+     "$out/board-front.dat" using 1:2 with linespoints lw 2 pt 6 ps 1.5 title "Pareto front", \
+     "$out/board-front-nofpu.dat" using 1:2 with linespoints lw 2 dt 2 pt 6 ps 1.5 title "Pareto front without an FPU (soft, fixed)", \
+     "$out/board-labels.dat" using 1:2:3 with labels font ",7" offset 0,0.7 notitle
 GP
 fi
 column -t -s$'\t' "$out/pareto.tsv"
+echo
+column -t -s$'\t' "$out/pareto-board.tsv"

@@ -1,0 +1,67 @@
+/* arith_auto.h: `--arith auto` of `links1 ref` and `links1 render`: for one
+ * scene, the cheapest arithmetic and format the unit computer can run that
+ * keeps the target PSNR, judged from a low-resolution pre-render
+ * (docs/renderer.md, "--arith auto").
+ *
+ *   error  each candidate's host build against the double build, both at
+ *          the pre-render size: PSNR over the image, and PSNR over the
+ *          pixels it flagged as lost precision (--mark-lost), which must
+ *          meet the target on their own
+ *   cost   NC guest instructions per pixel of the same pre-render on the
+ *          board (links1 render --count-insns) with the candidate's
+ *          firmware; the host's fixed formats other than the board's
+ *          Q12.19 run the same code with other shift counts and take the
+ *          fixed firmware's count
+ *   pick   the cheapest candidate that meets the target; among those
+ *          within ARITH_AUTO_TIE of the cheapest, the most accurate */
+#ifndef LINKS1_HOST_SCENE_ARITH_AUTO_H
+#define LINKS1_HOST_SCENE_ARITH_AUTO_H
+
+#include <stddef.h>
+
+#define ARITH_AUTO_TARGET_DB 40.0   /* --target-db default */
+#define ARITH_AUTO_PIXELS 3072      /* the pre-render has at most this many pixels (64x48) */
+#define ARITH_AUTO_TIE 0.01         /* costs this close count as equal */
+#define ARITH_AUTO_NCS 2            /* NCs of the board pre-render (the count is their sum) */
+
+enum arith_auto_target {
+    ARITH_AUTO_HOST,  /* links1 ref: every host build (fixed formats of links1-ref-fixedN) */
+    ARITH_AUTO_BOARD, /* links1 render: board firmware only */
+};
+
+struct arith_auto_opts {
+    int fpu;              /* 1: the unit computer has VFP (float a candidate); 0: none */
+    double target_db;
+    enum arith_auto_target target;
+    int width, height;    /* the render's size (--size), 0: the scene's */
+    const char *const *words; /* options both links1-ref-* and links1 render take
+                                 (--max-depth, --frame, ...), NULL-terminated */
+};
+
+struct arith_auto_choice {
+    char build[24];   /* the host build: links1-ref-<build> */
+    char arith[8];    /* the board firmware of the same bits: float, soft or fixed */
+    char label[24];   /* "fixed Q12.19", "soft", ... */
+};
+
+/* The options of a scene (scene_file.h) and its first frame as words for
+ * opts.words, stored in w. */
+struct arith_auto_words {
+    const char *words[16];
+    char depth[16], weight[32], frame[24];
+};
+struct scene_file_opts;
+void arith_auto_scene_words(const struct scene_file_opts *so, long frame,
+                            struct arith_auto_words *w);
+
+/* "--fpu vfp|none": 1, 0, or -1 for another word. */
+int arith_auto_fpu(const char *word);
+
+/* Chooses for the scene at path; prints the candidates and the pick (two
+ * lines on stdout, prefixed by prog).  0, or -1 after printing why
+ * (the double build refuses the scene, no candidate meets the target,
+ * a pre-render failed). */
+int arith_auto_pick(const char *prog, const char *path, const struct arith_auto_opts *o,
+                    struct arith_auto_choice *out);
+
+#endif

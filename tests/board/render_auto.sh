@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# --arith auto (host-tools/scene/arith_auto.c) on two sweep scenes at 48x36:
+#   scale 1   fixed Q12.19 keeps 40 dB: a unit computer without an FPU
+#             gets the fixed firmware (cheaper than soft float on the
+#             board), and the board's image equals the fixed host build
+#   scale 30  fixed point loses the shadows (about 30 dB): without an FPU
+#             the pick is soft float, with VFP float; each board image
+#             equals the host build of the pick
+# and the pick is explained (candidates with PSNR and cost, the reason);
+# bad uses are refused with the reason named.
+. "$(dirname "$0")/lib.sh"
+. "$(dirname "$0")/render_lib.sh"
+board_ready render_auto || exit 0
+SIZE=48x36
+easy=$RENDER_TMP/scale1.scn hard=$RENDER_TMP/scale30.scn
+python3 tests/sweeps/make_scene.py scale 1 --size $SIZE >"$easy"
+python3 tests/sweeps/make_scene.py scale 30 --size $SIZE >"$hard"
+
+# auto_case NAME SCENE FPU WANT_LABEL WANT_FIRMWARE
+auto_case() {
+    local name=$1 scene=$2 fpu=$3 want=$4 fw=$5
+    local out=$RENDER_TMP/$name.ppm log=$RENDER_TMP/$name.log
+    render_board "$name" "$out" "$scene" -o "$out" --arith auto --fpu "$fpu" --ncs 2 || return 0
+    local picked
+    picked=$(sed -nE 's/.*--arith auto picks (.*): the cheapest that keeps 40.0 dB.*/\1/p' "$log")
+    if [ "$picked" = "$want" ] && grep -qE "pre-render [0-9]+x[0-9]+ against double\): .* dB" "$log"; then
+        echo "PASS ${name}_picks (${picked}: $(grep -o 'insns/pixel' "$log" | wc -l) costs measured)"
+    else
+        echo "FAIL ${name}_picks: picked '${picked}', want '$want' with the candidates listed"
+    fi
+    render_same "${name}_board_is_host" "$(render_ref "$scene" "$fw" $SIZE)" "$out"
+}
+auto_case render_auto_fixed_suffices "$easy" none "fixed Q12.19" fixed
+auto_case render_auto_fixed_fails "$hard" none soft soft
+auto_case render_auto_fixed_fails_vfp "$hard" vfp float float
+
+# The fixed pick says why: fixed reached the target and soft costs more.
+log=$RENDER_TMP/render_auto_fixed_suffices.log
+if grep -qE 'soft [0-9.]+ dB, [0-9]+ insns/pixel; fixed Q12.19 [0-9.]+ dB, [0-9]+ insns/pixel' "$log" &&
+    grep -qE 'the next arithmetic that keeps it costs 1\.[0-9]+x' "$log"; then
+    echo "PASS render_auto_says_why"
+else
+    echo "FAIL render_auto_says_why: $(grep 'arith auto' "$log" | tr '\n' ' ')"
+fi
+
+# links1 ref --arith auto chooses among the host builds and renders with the pick.
+if "$LINKS1" ref "$easy" --arith auto --fpu none -o "$RENDER_TMP/ref-auto.ppm" \
+        >"$RENDER_TMP/ref-auto.log" 2>&1 &&
+    grep -q 'picks fixed Q12.19' "$RENDER_TMP/ref-auto.log" &&
+    grep -q 'fixed Q1[3-9]\.' "$RENDER_TMP/ref-auto.log"; then
+    render_same render_auto_ref_picks_fixed "$(render_ref "$easy" fixed $SIZE)" "$RENDER_TMP/ref-auto.ppm"
+else
+    echo "FAIL render_auto_ref_picks_fixed: $(tail -n 3 "$RENDER_TMP/ref-auto.log" | tr '\n' ' ')"
+fi
+
+# refused: a target nothing reaches (map repeats: float 61 dB, fixed 32 dB), two scenes, --fpu without auto
+refused() { # NAME WANT args...
+    local name=$1 want=$2; shift 2
+    local msg rc
+    msg=$(timeout 120 "$LINKS1" "$@" 2>&1)
+    rc=$?
+    if [ $rc -ne 0 ] && [[ $msg == *"$want"* ]]; then
+        echo "PASS $name"
+    else
+        echo "FAIL $name: exit $rc, '$(echo "$msg" | tail -n 1)' does not say '$want'"
+    fi
+}
+python3 tests/sweeps/make_scene.py map_repeat 1000 --size $SIZE >"$RENDER_TMP/maps.scn"
+refused render_auto_refuses_unreachable "no arithmetic of a unit computer without an FPU keeps 70.0 dB" \
+    ref "$RENDER_TMP/maps.scn" -o "$RENDER_TMP/x.ppm" --arith auto --fpu none --target-db 70
+refused render_auto_refuses_two_scenes "--arith auto takes one SCENE" \
+    render "$easy" -o "$RENDER_TMP/x.ppm" "$hard" -o "$RENDER_TMP/y.ppm" --arith auto
+refused render_auto_fpu_needs_auto "--fpu and --target-db go with --arith auto" \
+    render "$easy" -o "$RENDER_TMP/x.ppm" --fpu none
+refused render_auto_bad_fpu "--fpu 'arm': want vfp or none" \
+    ref "$easy" -o "$RENDER_TMP/x.ppm" --arith auto --fpu arm

@@ -1,0 +1,149 @@
+#!/usr/bin/env bash
+# tests/sweeps/auto.sh: `--arith auto` on every sweep scene (docs/RESULTS.md,
+# "--arith auto on the sweep scenes").  For each scene of families.sh at
+# SIZE (default 160x120) and each unit computer (--fpu vfp, --fpu none):
+#   pick   what `links1 ref --arith auto` chose from its pre-render
+#   truth  every candidate rendered at SIZE by its host build, PSNR against
+#          the double build of the same scene; cost: NC instructions per
+#          pixel of the same render on the board (links1 render
+#          --count-insns, 2 NCs; the host's fixed formats other than Q12.19
+#          take the fixed firmware's count), measured for every firmware
+#          that has a candidate at or above TARGET dB
+#   best   the cheapest candidate at or above TARGET dB at SIZE
+# Writes DIR/auto.tsv and DIR/auto.md (the table of docs/RESULTS.md) and
+# prints the summary: scenes where the pick keeps
+# TARGET dB, and the largest cost of the pick over the best.
+#   bash tests/sweeps/auto.sh [--out DIR]
+# (LINKS1=DIR/links1 FW_DIR=DIR: a copy of build/ that no rebuild touches
+# while it runs.)
+set -u
+cd "$(dirname "$0")/../.."
+LINKS1=${LINKS1:-build/links1}
+BIN=$(dirname "$LINKS1") # links1-ref-* next to it
+export FW_DIR=${FW_DIR:-build}
+SIZE=${SIZE:-160x120}
+TARGET=${TARGET:-40}
+out=build/sweeps-auto
+[ "${1:-}" = --out ] && out=$2
+mkdir -p "$out/work"
+tsv=$out/auto.tsv
+. tests/sweeps/families.sh
+
+# label|host build|firmware whose cost it takes
+cands=("float|float|float" "soft|float|soft" "fixed Q12.19|fixed|fixed")
+for f in 18 16 14; do
+    [ -x "$BIN/links1-ref-fixed$f" ] && cands+=("fixed Q$((31 - f)).$f|fixed$f|fixed")
+done
+
+psnr() { # REF IMG
+    "$LINKS1" compare "$1" "$2" --min-fraction 0 2>&1 | sed -nE 's/.*PSNR ([0-9.]+) dB.*/\1/p'
+}
+board_cost() { # SCENE FIRMWARE: NC instructions per pixel
+    local log=$out/work/board.log
+    timeout 900 "$LINKS1" render "$1" --arith "$2" --ncs 2 --count-insns --quiet \
+        -o "$out/work/board.png" >"$log" 2>&1 || { echo -; return; }
+    local total
+    total=$(grep -o 'NCs total [0-9]*' "$log" | grep -o '[0-9]*$')
+    awk -v t="$total" -v s="$SIZE" 'BEGIN { split(s, d, "x"); printf "%.0f", t / (d[1] * d[2]) }'
+}
+
+printf 'family\tknob\tfpu\tpick\tpick_psnr\tpick_cost\tbest\tbest_psnr\tbest_cost\tpick_over_best\tcandidates\n' >"$tsv"
+for entry in "${families[@]}"; do
+    IFS='|' read -r family knobs _ _ <<<"$entry"
+    gen=$family
+    [ "$family" = scale_down ] && gen=scale
+    for knob in $knobs; do
+        scn=$out/work/$family-$knob.scn
+        python3 tests/sweeps/make_scene.py "$gen" "$knob" --size "$SIZE" >"$scn" || exit 1
+        ref=$out/work/double.png
+        if ! "$LINKS1" ref "$scn" --arith double -o "$ref" >"$out/work/double.log" 2>&1; then
+            for fpu in vfp none; do
+                printf '%s\t%s\t%s\trefused in every arithmetic\t\t\t\t\t\t\t\n' "$family" "$knob" \
+                    "$fpu" >>"$tsv"
+            done
+            continue
+        fi
+        # every candidate's PSNR at SIZE; the cost of each firmware needed
+        declare -A p=() cost=()
+        for c in "${cands[@]}"; do
+            IFS='|' read -r label build fw <<<"$c"
+            img=$out/work/$build.png
+            [ -f "$img.done" ] || {
+                "$BIN/links1-ref-$build" "$scn" -o "$img" >/dev/null 2>&1 && touch "$img.done"
+            }
+            p[$label]=$([ -f "$img.done" ] && psnr "$ref" "$img" || echo refused)
+            if [ "${p[$label]}" != refused ] && awk -v q="${p[$label]}" -v t="$TARGET" 'BEGIN { exit !(q >= t) }' &&
+                [ -z "${cost[$fw]:-}" ]; then
+                cost[$fw]=$(board_cost "$scn" "$fw")
+            fi
+        done
+        rm -f "$out"/work/*.png.done
+        for fpu in vfp none; do
+            log=$out/work/auto-$fpu.log
+            pick=-
+            if "$LINKS1" ref "$scn" --arith auto --fpu "$fpu" --target-db "$TARGET" \
+                    -o "$out/work/auto.png" >"$log" 2>&1; then
+                pick=$(sed -nE 's/.*--arith auto picks (.*): the cheapest.*/\1/p' "$log")
+            fi
+            best=- list=
+            for c in "${cands[@]}"; do
+                IFS='|' read -r label _ fw <<<"$c"
+                [ "$fpu" = none ] && [ "$label" = float ] && continue
+                list="$list$label ${p[$label]} dB ${cost[$fw]:--}; "
+                if awk -v q="${p[$label]}" -v t="$TARGET" 'BEGIN { exit !(q != "refused" && q >= t) }' &&
+                    [ "${cost[$fw]:--}" != - ]; then
+                    if [ "$best" = - ] || [ "${cost[$fw]}" -lt "$bestc" ] ||
+                        { [ "${cost[$fw]}" -eq "$bestc" ] &&
+                          awk -v a="${p[$label]}" -v b="${p[$best]}" 'BEGIN { exit !(a > b) }'; }; then
+                        best=$label bestc=${cost[$fw]}
+                    fi
+                fi
+            done
+            pfw=-
+            for c in "${cands[@]}"; do
+                IFS='|' read -r label _ fw <<<"$c"
+                [ "$label" = "$pick" ] && pfw=$fw
+            done
+            pc=-
+            if [ "$pfw" != - ]; then
+                [ -z "${cost[$pfw]:-}" ] && cost[$pfw]=$(board_cost "$scn" "$pfw")
+                pc=${cost[$pfw]}
+            fi
+            ratio=$(awk -v a="$pc" -v b="${bestc:-}" -v best="$best" \
+                'BEGIN { if (a == "-" || best == "-") print "-"; else printf "%.2f", a / b }')
+            [ "$pick" = - ] && pick="none: $(tail -n 1 "$log" | sed 's/.*--arith auto: //')"
+            printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$family" "$knob" "$fpu" "$pick" \
+                "${p[$pick]:--}" "$pc" "$best" "${p[$best]:--}" "${bestc:--}" "$ratio" "$list" >>"$tsv"
+            bestc=
+        done
+        unset p cost
+    done
+done
+
+# summary: per unit computer, scenes with a pick, picks below TARGET, the worst ratio
+for fpu in vfp none; do
+    awk -F'\t' -v f="$fpu" -v t="$TARGET" 'NR > 1 && $3 == f {
+        n++
+        if ($4 ~ /^refused/) { refused++; next }
+        if ($4 ~ /^none/) { nopick++; if ($7 != "-") missed++; next }
+        picks++
+        if ($5 + 0 < t) below++
+        if ($10 != "-" && $10 + 0 > worst) { worst = $10 + 0; where = $1 " " $2 }
+        if ($7 == "-") nobest++
+    }
+    END {
+        printf "auto --fpu %s: %d scenes; %d refused in every arithmetic; %d picks, %d of them below %s dB at full size; %d scenes without a pick (%d where some candidate reaches %s dB at full size); pick over the cheapest at %s dB: at most %.2fx (%s)\n",
+            f, n, refused, picks, below, t, nopick, missed, t, t, worst, where
+    }' "$tsv"
+done
+
+# the table of docs/RESULTS.md
+awk -F'\t' 'BEGIN {
+    print "| family | knob | VFP: pick, PSNR, NC insns/pixel, pick / best | no FPU: pick | PSNR | NC insns/pixel | best at 40 dB (insns/pixel) | pick / best |"
+    print "|---|---|---|---|---|---|---|---|"
+}
+NR > 1 && $4 ~ /^refused/ { if ($3 == "vfp") print "| " $1 " | " $2 " | refused by every build ||||||"; next }
+NR > 1 && $3 == "vfp" { v = $4 ", " $5 " dB, " $6 ", " $10 "x"; next }
+NR > 1 { printf "| %s | %s | %s | %s | %s | %s | %s (%s) | %s |\n", $1, $2, v, $4, $5, $6, $7, $9, $10 }' \
+    "$tsv" >"$out/auto.md"
+echo "auto: $tsv, $out/auto.md"
