@@ -478,7 +478,7 @@ static int board_send_nak(struct board *b, uint8_t flags)
  * asks in a row. */
 static int board_arq_lost(struct board *b)
 {
-    b->arq_armed = 1;
+    b->arq_armed = b->arq_damage_seen = b->arq_gap = 1;
     if (!b->arq_rx.known)
         return 0; /* the board's numbering is not known yet: nothing to name */
     if (!link_arq_nak_due(&b->arq_nak, b->arq_rx.expect, (uint64_t)board_now_ms(),
@@ -495,13 +495,25 @@ static int board_arq_lost(struct board *b)
 
 static int board_arq_resend(struct board *b, uint16_t from);
 
-/* A LINK_NAK from the board: our frames from the seq it names, sent again. */
-static int board_arq_nak_in(struct board *b, const struct link_frame *f)
+/* A LINK_NAK from the board: our frames from the seq it names, sent again.
+ * One naming our next frame says the board lacks nothing of ours (its
+ * answer to a poll, or to the junk of our poll's zero bytes): the link is
+ * back in step when it answers our poll and we lack nothing either, and
+ * polling stops. */
+static int board_arq_nak_in(struct board *b, const struct link_frame *f, int polled)
 {
-    b->arq_armed = 1;
-    if (f->length < LINK_ACK_SIZE || !b->arq_naks_heard)
+    if (f->length < LINK_ACK_SIZE || !b->arq_naks_heard) {
+        b->arq_armed = 1;
         return 0;
+    }
     uint16_t from = wire_get_u16(f->payload);
+    if (!(f->flags & LINK_FLAG_GONE) && from == b->arq_tx.next_seq && !b->arq_writing) {
+        /* (the decoder still holds this frame: bytes past it are partial) */
+        if (polled && !b->arq_gap && b->dec.have <= b->dec.delivered)
+            b->arq_armed = 0;
+        return 0;
+    }
+    b->arq_armed = b->arq_damage_seen = 1;
     char why[96];
     if (f->flags & LINK_FLAG_GONE) {
         snprintf(why, sizeof why, "the board no longer holds its frame %u that we asked for",
@@ -550,12 +562,14 @@ static int board_arq_resend(struct board *b, uint16_t from)
  * seq order only, each once. */
 static int board_arq_frame(struct board *b, const struct link_frame *f)
 {
+    int polled = b->arq_polls > 0;
     b->arq_heard_ms = board_now_ms();
     b->arq_polls = 0;
     if (f->type == LINK_NAK)
-        return board_arq_nak_in(b, f);
+        return board_arq_nak_in(b, f, polled);
     switch (link_arq_rx_take(&b->arq_rx, f)) {
     case LINK_ARQ_NEW:
+        b->arq_gap = 0;
         return board_handle_frame(b, f);
     case LINK_ARQ_DUP:
         b->arq_dups++;
@@ -620,7 +634,7 @@ static int board_read_available(struct board *b)
             if (s->crc_errors + s->bad_length != damaged && board_arq_lost(b) < 0)
                 return -1;
             if (s->junk_bytes != junk)
-                b->arq_armed = 1;
+                b->arq_armed = b->arq_damage_seen = 1;
             if (got && board_arq_frame(b, &f) < 0)
                 return -1;
         }
@@ -630,6 +644,13 @@ static int board_read_available(struct board *b)
     }
 }
 
+/* How long a partial frame may wait for its next byte before it counts as
+ * damage: long on a link never seen damaged. */
+static long long board_arq_stall_ms(const struct board *b)
+{
+    return b->arq_damage_seen ? LINK_ARQ_STALL_MS : LINK_ARQ_STALL_CLEAN_MS;
+}
+
 int board_pump(struct board *b, int timeout_ms)
 {
     if (b->fd < 0 || b->arq_failed)
@@ -637,7 +658,7 @@ int board_pump(struct board *b, int timeout_ms)
     int wait = timeout_ms < 0 ? 0 : timeout_ms;
     if (b->arq_armed || b->dec.have) {
         long long due = b->arq_armed ? b->arq_heard_ms + LINK_ARQ_POLL_MS
-                                     : b->arq_byte_ms + LINK_ARQ_STALL_MS;
+                                     : b->arq_byte_ms + board_arq_stall_ms(b);
         due -= board_now_ms();
         if (due < wait)
             wait = due < 0 ? 0 : (int)due;
@@ -660,7 +681,7 @@ int board_pump(struct board *b, int timeout_ms)
     /* A partial frame that waits long for its bytes is damage no frame
      * showed (its length field spoilt): the link is then polled too. */
     long long quiet = board_now_ms() - b->arq_heard_ms;
-    if (!b->arq_armed && b->dec.have && board_now_ms() - b->arq_byte_ms >= LINK_ARQ_STALL_MS)
+    if (!b->arq_armed && b->dec.have && board_now_ms() - b->arq_byte_ms >= board_arq_stall_ms(b))
         b->arq_armed = 1;
     if (b->arq_armed && quiet >= LINK_ARQ_POLL_MS && board_arq_poll(b) < 0)
         return -1;

@@ -76,6 +76,8 @@ struct board {
     long long arq_heard_ms;     /* when the last good frame came */
     long long arq_byte_ms;      /* when the last byte came */
     int arq_armed;              /* the link was seen damaged: poll when silent */
+    int arq_damage_seen;        /* the link was ever seen damaged (stall rule) */
+    int arq_gap;                /* a board frame we lack is asked for */
     int arq_polls;              /* polls in a row with no frame heard */
     int arq_failed;             /* the retransmission gave up: every wait fails */
     int arq_naks_heard;         /* 1: the board's NAKs name our numbering (0 while a

@@ -81,10 +81,15 @@ static int decoder_scan(struct link_decoder *d, struct link_frame *f)
         f->length = len;
         f->payload = d->buf + LINK_HEADER_SIZE;
         if (f->type != LINK_NAK) { /* unnumbered */
-            if (d->seq_known && f->seq != d->next_seq && !(f->flags & LINK_FLAG_SESSION))
+            /* A gap is a frame ahead of the next expected; one behind is a
+             * frame sent again (proto/link_arq.h), not a loss. */
+            int16_t ahead = (int16_t)(f->seq - d->next_seq);
+            int session = (f->flags & LINK_FLAG_SESSION) != 0;
+            if (d->seq_known && ahead > 0 && !session)
                 d->stats.seq_gaps++;
+            if (!d->seq_known || ahead >= 0 || session)
+                d->next_seq = (uint16_t)(f->seq + 1);
             d->seq_known = 1;
-            d->next_seq = (uint16_t)(f->seq + 1);
         }
         d->stats.frames++;
         d->delivered = total;

@@ -125,9 +125,12 @@ size_t link_arq_answer_encode(uint8_t *out, size_t cap, uint8_t type, uint16_t f
                                 * byte a third of the time, so 48 fail once in ~1e9 */
 #define LINK_ARQ_POLL_MS 250   /* a waiting side's silence before it polls */
 #define LINK_ARQ_STALL_MS 2000 /* the host: a partial frame this long without a
-                                * byte, on a link not yet seen damaged, is damage
-                                * (its length field spoilt): it polls from then on;
-                                * long, so a busy emulator's pause is not taken for it */
+                                * byte, on a link seen damaged, is damage (its
+                                * length field spoilt): it polls from then on */
+#define LINK_ARQ_STALL_CLEAN_MS 10000 /* the same on a link never seen damaged:
+                                       * long, so a busy emulator's pause (a vCPU
+                                       * not run for seconds mid-frame while 66
+                                       * boot) is not taken for damage */
 #define LINK_ARQ_FLUSH_BYTES LINK_MAX_FRAME /* zero bytes the host sends before a
                                 * poll: they complete a partial frame whose damaged
                                 * length field keeps the board's decoder waiting (it

@@ -302,9 +302,10 @@ static void msg_host_gives_up_on_a_frame_that_never_arrives(void)
 }
 
 /* A frame whose length field was spoilt keeps the decoder waiting with no
- * damage shown: after LINK_ARQ_STALL_MS without a byte the host gives the
- * partial frame up and polls (after zero bytes that would complete the
- * board's own such frame). */
+ * damage shown: on a link seen damaged, after LINK_ARQ_STALL_MS without a
+ * byte the host gives the partial frame up and polls (after zero bytes that
+ * would complete the board's own such frame); on a link never seen damaged
+ * it waits LINK_ARQ_STALL_CLEAN_MS, so a slow emulator is not polled. */
 static void msg_stalled_partial_frame_leads_to_a_poll(void)
 {
     struct board b;
@@ -316,11 +317,14 @@ static void msg_stalled_partial_frame_leads_to_a_poll(void)
     wire_put_u16(frame + 6, 2000); /* the length field spoilt */
     CHECK(write(peer, frame, n) == (ssize_t)n);
     long long t0 = board_now_ms();
-    while (board_now_ms() - t0 < LINK_ARQ_STALL_MS - 300)
+    while (board_now_ms() - t0 < LINK_ARQ_STALL_MS + 300)
         board_pump(&b, 50);
     struct board_frame got[4];
-    CHECK_EQ_INT(peer_frames(peer, 50, got, 4), 0); /* nothing yet */
-    while (board_now_ms() - t0 < LINK_ARQ_STALL_MS + 300)
+    CHECK_EQ_INT(peer_frames(peer, 50, got, 4), 0); /* clean link: nothing yet */
+    CHECK(LINK_ARQ_STALL_CLEAN_MS > LINK_ARQ_STALL_MS + 300);
+    b.arq_damage_seen = 1; /* now as on a link seen damaged */
+    t0 = board_now_ms();
+    while (board_now_ms() - t0 < 300)
         board_pump(&b, 50);
     CHECK(peer_frames(peer, 200, got, 4) >= 1);
     CHECK_EQ_INT(got[0].type, LINK_NAK);
@@ -328,6 +332,36 @@ static void msg_stalled_partial_frame_leads_to_a_poll(void)
     CHECK_EQ_INT(wire_get_u16(got[0].payload), 0);
     CHECK_EQ_INT(b.dec.have, 0);
     CHECK_EQ_INT(b.dec.stats.stalls, 1);
+    close(peer);
+    close(b.fd);
+}
+
+/* The board's answer to a poll that names our next frame (it lacks nothing)
+ * while we lack nothing either ends the polling: an idle board is not sent
+ * zero bytes every LINK_ARQ_POLL_MS for ever. */
+static void msg_poll_answered_in_step_stops_polling(void)
+{
+    struct board b;
+    int peer;
+    CHECK(fake_session(&b, &peer) == 0);
+    b.arq_rx.known = 1;
+    b.arq_naks_heard = 1; /* as on a board we booted */
+    b.arq_armed = b.arq_damage_seen = 1;
+    long long t0 = board_now_ms();
+    while (board_now_ms() - t0 < LINK_ARQ_POLL_MS + 100)
+        board_pump(&b, 50);
+    struct board_frame got[4];
+    CHECK(peer_frames(peer, 200, got, 4) >= 1); /* polled */
+    CHECK(got[0].flags & LINK_FLAG_POLL);
+    uint8_t nak[LINK_HEADER_SIZE + LINK_ACK_SIZE + LINK_CRC_SIZE];
+    size_t n = link_arq_nak_encode(nak, sizeof nak, 0, b.arq_tx.next_seq);
+    CHECK(write(peer, nak, n) == (ssize_t)n);
+    board_pump(&b, 100);
+    CHECK_EQ_INT(b.arq_armed, 0);
+    t0 = board_now_ms();
+    while (board_now_ms() - t0 < 2 * LINK_ARQ_POLL_MS)
+        board_pump(&b, 50);
+    CHECK_EQ_INT(peer_frames(peer, 50, got, 4), 0); /* no more polls */
     close(peer);
     close(b.fd);
 }
@@ -376,6 +410,7 @@ int main(void)
     RUN(msg_board_nak_gets_our_frames_again);
     RUN(msg_host_gives_up_on_a_frame_that_never_arrives);
     RUN(msg_stalled_partial_frame_leads_to_a_poll);
+    RUN(msg_poll_answered_in_step_stops_polling);
     RUN(msg_hello_and_fault_are_recorded);
     return check_exit();
 }
