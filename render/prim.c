@@ -32,8 +32,20 @@ static int prim_triangle_bary(const render_prim_t *p, vec3_t point, num_t *beta,
     return !num_is_sat(*beta) && !num_is_sat(*gamma);
 }
 
+/* One of the three edge tests is decided by less than the rounding error
+ * of the barycentrics (render_prim_t.bary_error): a sliver thinner than a
+ * pixel may be hit or missed wrongly. */
+static int prim_triangle_edge_uncertain(const render_prim_t *p, num_t beta, num_t gamma)
+{
+    num_t e1 = p->bary_error[0], e2 = p->bary_error[1];
+    num_t alpha_margin = num_sub(num_add(NUM_ONE, PRIM_EDGE_TOL), num_add(beta, gamma));
+    return num_lt(num_abs(num_add(beta, PRIM_EDGE_TOL)), e1) ||
+           num_lt(num_abs(num_add(gamma, PRIM_EDGE_TOL)), e2) ||
+           num_lt(num_abs(alpha_margin), num_add(e1, e2));
+}
+
 static int prim_triangle_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin,
-                                   num_t tmax, num_t *t_out)
+                                   num_t tmax, num_t *t_out, int *uncertain)
 {
     num_t denom = vec3_dot(ray->dir, p->normal);
     if (num_eq(denom, NUM_ZERO)) /* ray in the triangle's plane: grazing */
@@ -44,6 +56,8 @@ static int prim_triangle_intersect(const render_prim_t *p, const ray_t *ray, num
     num_t beta, gamma;
     if (!prim_triangle_bary(p, vec3_madd(ray->origin, ray->dir, t), &beta, &gamma))
         return 0;
+    if (uncertain)
+        *uncertain = prim_triangle_edge_uncertain(p, beta, gamma);
     if (num_lt(beta, num_neg(PRIM_EDGE_TOL)) || num_lt(gamma, num_neg(PRIM_EDGE_TOL)) ||
         num_gt(num_add(beta, gamma), num_add(NUM_ONE, PRIM_EDGE_TOL)))
         return 0;
@@ -334,9 +348,17 @@ static void prim_density_surface(const render_prim_t *p, hit_t *hit)
 
 int prim_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin, num_t tmax, num_t *t_out)
 {
+    return prim_intersect_uncertain(p, ray, tmin, tmax, t_out, NULL);
+}
+
+int prim_intersect_uncertain(const render_prim_t *p, const ray_t *ray, num_t tmin, num_t tmax,
+                             num_t *t_out, int *uncertain)
+{
+    if (uncertain)
+        *uncertain = 0;
     switch (p->kind) {
     case SCENE_PRIM_TRIANGLE:
-        return prim_triangle_intersect(p, ray, tmin, tmax, t_out);
+        return prim_triangle_intersect(p, ray, tmin, tmax, t_out, uncertain);
     case SCENE_PRIM_ELLIPSOID:
         return prim_ellipsoid_intersect(p, ray, tmin, tmax, t_out);
     case SCENE_PRIM_BOX:

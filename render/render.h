@@ -93,6 +93,9 @@ typedef struct {
                             count as lost precision */
     num_t uv_error;      /* render_prepare's estimate of the rounding error
                             of a hit's map coordinates u, v (render/maps.h) */
+    num_t bary_error[2]; /* TRIANGLE: render_prepare's estimate of the
+                            rounding error of beta and gamma: an edge test
+                            decided by less counts as lost precision */
 } render_prim_t;
 
 /* A cluster in eye coordinates. */

@@ -110,7 +110,14 @@ static void trace_test_prim(trace_walk_t *w, uint32_t prim)
      * loses precision */
     if (p->imprecise && prim_aabb_hit(&p->bounds, w->ray, w->tmin, w->tmax))
         w->ctx->pixel_lost = 1;
-    if (!prim_intersect(p, w->ray, w->tmin, tmax, &t))
+    /* tested up to w->tmax, not the nearest hit so far, so that an
+     * uncertain edge counts whatever the order (prim.h: only the final
+     * t <= tmax depends on tmax) */
+    int uncertain;
+    int found = prim_intersect_uncertain(p, w->ray, w->tmin, w->tmax, &t, &uncertain);
+    if (uncertain)
+        w->ctx->pixel_lost = 1;
+    if (!found || num_gt(t, tmax))
         return;
     if (w->mode != TRACE_NEAREST) {
         trace_record(w, prim, t);
