@@ -33,7 +33,7 @@ int prim_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin, num_t t
 
 /* prim_intersect, and *uncertain = 1 when a decision between tmin and tmax
  * was closer than the primitive's rounding error (a triangle's edge test,
- * render_prim_t.bary_error): the answer may be wrong. */
+ * a ray grazing an ellipsoid: render_prim_t.edge_error): the answer may be wrong. */
 int prim_intersect_uncertain(const render_prim_t *p, const ray_t *ray, num_t tmin, num_t tmax,
                              num_t *t_out, int *uncertain);
 

@@ -93,9 +93,11 @@ typedef struct {
                             count as lost precision */
     num_t uv_error;      /* render_prepare's estimate of the rounding error
                             of a hit's map coordinates u, v (render/maps.h) */
-    num_t bary_error[2]; /* TRIANGLE: render_prepare's estimate of the
-                            rounding error of beta and gamma: an edge test
-                            decided by less counts as lost precision */
+    num_t edge_error[2]; /* render_prepare's estimate of the rounding error
+                            of what a hit-or-miss decision compares (a
+                            TRIANGLE's beta and gamma; an ELLIPSOID's local
+                            coordinates, [0]): a decision closer than that
+                            counts as lost precision (prim_intersect_uncertain) */
 } render_prim_t;
 
 /* A cluster in eye coordinates. */
