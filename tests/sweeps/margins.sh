@@ -1,22 +1,22 @@
 #!/usr/bin/env bash
-# tests/sweeps/slivers.sh: the sweep scenes that left wrong pixels neither
+# tests/sweeps/margins.sh: sweep scenes that left wrong pixels neither
 # flagged nor explained by a move under a pixel (docs/RESULTS.md, issue 11),
-# at the sweeps' full size 160x120: triangles 3000 and 10000 times longer
-# than wide, thinner than a pixel, whose edge tests in fixed point are
-# decided by less than the barycentrics' rounding error
-# (render_prim_t.bary_error).  Every pixel beyond 2/255 of the double
-# build must now be painted as lost precision or lie next to an edge or a
-# moved pixel (links1 compare --flagged --silhouette --moved, as in
-# flagged.sh).
-#   PASS sliver_FAMILY_KNOB_ARITH  or  FAIL ...: the compare's verdict
+# at the sweeps' full size 160x120, where a hit-or-miss decision was closer
+# than the arithmetic's error (render_prim_t.edge_error): triangles 3000 and
+# 10000 times longer than wide, thinner than a pixel, in fixed point (an
+# edge test on the sliver), and tir_chain at depth 1 in float (a shadow ray
+# grazing a sphere).  Every pixel beyond 2/255 of the double build must now
+# be painted as lost precision or lie next to an edge or a moved pixel
+# (links1 compare --flagged --silhouette --moved, as in flagged.sh).
+#   PASS margin_FAMILY_KNOB_ARITH  or  FAIL ...: the compare's verdict
 set -u
 cd "$(dirname "$0")/../.."
 LINKS1=${LINKS1:-build/links1}
-out=build/test-images/slivers
+out=build/test-images/margins
 mkdir -p "$out"
-for run in "thin_triangles 3000 fixed" "thin_triangles 10000 fixed"; do
+for run in "thin_triangles 3000 fixed" "thin_triangles 10000 fixed" "tir_chain 1 float"; do
     read -r family knob arith <<<"$run"
-    name=sliver_${family}_${knob}_$arith
+    name=margin_${family}_${knob}_$arith
     scn=$out/$family-$knob.scn
     python3 tests/sweeps/make_scene.py "$family" "$knob" --size 160x120 >"$scn" || {
         echo "FAIL $name: make_scene.py failed"; continue; }
