@@ -128,6 +128,9 @@ render_status_t precision_check(render_frame_t *f)
     for (uint32_t i = 0; i < f->prim_count; i++) {
         render_prim_t *p = &f->prims[i];
         num_t least, local, worst = precision_hit_error(p, extent, &least, &local);
+        /* a triangle's is left out: two triangles hit at one distance are
+         * most often a mesh's faces meeting at an edge */
+        p->hit_error = p->kind == SCENE_PRIM_TRIANGLE ? NUM_ZERO : worst;
         p->imprecise = p->kind != SCENE_PRIM_TRIANGLE &&
                        (num_gt(worst, lost_tol) || num_gt(least, acne_tol));
         /* map coordinates (render/prim.c): a box face's are (q + 1) / 2 of

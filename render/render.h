@@ -98,6 +98,10 @@ typedef struct {
                             TRIANGLE's beta and gamma; an ELLIPSOID's local
                             coordinates, [0]): a decision closer than that
                             counts as lost precision (prim_intersect_uncertain) */
+    num_t hit_error;     /* render_prepare's estimate of how far rounding
+                            moves a hit on it, in eye units: two primitives
+                            hit closer than the sum of theirs count as lost
+                            precision (either may be the nearest) */
 } render_prim_t;
 
 /* A cluster in eye coordinates. */

@@ -4,8 +4,9 @@
 # at the sweeps' full size 160x120, where a hit-or-miss decision was closer
 # than the arithmetic's error (render_prim_t.edge_error): triangles 3000 and
 # 10000 times longer than wide, thinner than a pixel, in fixed point (an
-# edge test on the sliver), and tir_chain at depth 1 in float (a shadow ray
-# grazing a sphere).  Every pixel beyond 2/255 of the double build must now
+# edge test on the sliver), tir_chain at depth 1 in float (a shadow ray
+# grazing a sphere) and at depth 4 in fixed (two spheres cutting each other
+# hit at distances closer than their hit errors).  Every pixel beyond 2/255 of the double build must now
 # be painted as lost precision or lie next to an edge or a moved pixel
 # (links1 compare --flagged --silhouette --moved, as in flagged.sh).
 #   PASS margin_FAMILY_KNOB_ARITH  or  FAIL ...: the compare's verdict
@@ -14,7 +15,8 @@ cd "$(dirname "$0")/../.."
 LINKS1=${LINKS1:-build/links1}
 out=build/test-images/margins
 mkdir -p "$out"
-for run in "thin_triangles 3000 fixed" "thin_triangles 10000 fixed" "tir_chain 1 float"; do
+for run in "thin_triangles 3000 fixed" "thin_triangles 10000 fixed" "tir_chain 1 float" \
+        "tir_chain 4 fixed"; do
     read -r family knob arith <<<"$run"
     name=margin_${family}_${knob}_$arith
     scn=$out/$family-$knob.scn
