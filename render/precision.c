@@ -88,13 +88,20 @@ static num_t precision_hit_error(const render_prim_t *p, num_t extent, num_t *le
     return worst;
 }
 
-/* A triangle's map coordinates: u = u0 + beta (u1 - u0) + gamma (u2 - u0),
- * each barycentric a distance in the plane over a height, the point off by
- * a few steps of the arithmetic at the scene's extent. */
-static num_t precision_triangle_uv_error(const render_prim_t *p, num_t extent)
+/* A triangle's barycentrics beta, gamma: each a distance in the plane over
+ * a height, the point off by a few steps of the arithmetic at the scene's
+ * extent.  A sliver's error across its thin side is a large part of 1. */
+static void precision_triangle_edge_error(render_prim_t *p, num_t extent)
 {
-    num_t height = num_min(num_abs(p->height1), num_abs(p->height2));
-    num_t bary = num_div(num_mul_int(num_ulp(extent), 4), height);
+    num_t point = num_mul_int(num_ulp(extent), 4);
+    p->edge_error[0] = num_div(point, num_abs(p->height1)); /* saturated: every */
+    p->edge_error[1] = num_div(point, num_abs(p->height2)); /* edge test counts */
+}
+
+/* A triangle's map coordinates: u = u0 + beta (u1 - u0) + gamma (u2 - u0). */
+static num_t precision_triangle_uv_error(const render_prim_t *p)
+{
+    num_t bary = num_max(p->edge_error[0], p->edge_error[1]);
     num_t spread = NUM_ZERO;
     for (int k = 1; k < 3; k++)
         spread = num_add(spread, num_max(num_abs(num_sub(p->tex_u[k], p->tex_u[0])),
@@ -121,6 +128,9 @@ render_status_t precision_check(render_frame_t *f)
     for (uint32_t i = 0; i < f->prim_count; i++) {
         render_prim_t *p = &f->prims[i];
         num_t least, local, worst = precision_hit_error(p, extent, &least, &local);
+        /* a triangle's is left out: two triangles hit at one distance are
+         * most often a mesh's faces meeting at an edge */
+        p->hit_error = p->kind == SCENE_PRIM_TRIANGLE ? NUM_ZERO : worst;
         p->imprecise = p->kind != SCENE_PRIM_TRIANGLE &&
                        (num_gt(worst, lost_tol) || num_gt(least, acne_tol));
         /* map coordinates (render/prim.c): a box face's are (q + 1) / 2 of
@@ -128,9 +138,15 @@ render_status_t precision_check(render_frame_t *f)
          * (n.y + 1) / 2 of its unit sphere's point, a density sphere's come
          * from its normal (not estimated) */
         switch (p->kind) {
-        case SCENE_PRIM_TRIANGLE: p->uv_error = precision_triangle_uv_error(p, extent); break;
+        case SCENE_PRIM_TRIANGLE:
+            precision_triangle_edge_error(p, extent);
+            p->uv_error = precision_triangle_uv_error(p);
+            break;
         case SCENE_PRIM_BOX: p->uv_error = num_mul(local, NUM_HALF); break;
-        case SCENE_PRIM_ELLIPSOID: p->uv_error = local; break;
+        case SCENE_PRIM_ELLIPSOID:
+            p->uv_error = local;
+            p->edge_error[0] = local;
+            break;
         default: p->uv_error = NUM_ZERO; break;
         }
     }

@@ -32,8 +32,20 @@ static int prim_triangle_bary(const render_prim_t *p, vec3_t point, num_t *beta,
     return !num_is_sat(*beta) && !num_is_sat(*gamma);
 }
 
+/* One of the three edge tests is decided by less than the rounding error
+ * of the barycentrics (render_prim_t.edge_error): a sliver thinner than a
+ * pixel may be hit or missed wrongly. */
+static int prim_triangle_edge_uncertain(const render_prim_t *p, num_t beta, num_t gamma)
+{
+    num_t e1 = p->edge_error[0], e2 = p->edge_error[1];
+    num_t alpha_margin = num_sub(num_add(NUM_ONE, PRIM_EDGE_TOL), num_add(beta, gamma));
+    return num_lt(num_abs(num_add(beta, PRIM_EDGE_TOL)), e1) ||
+           num_lt(num_abs(num_add(gamma, PRIM_EDGE_TOL)), e2) ||
+           num_lt(num_abs(alpha_margin), num_add(e1, e2));
+}
+
 static int prim_triangle_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin,
-                                   num_t tmax, num_t *t_out)
+                                   num_t tmax, num_t *t_out, int *uncertain)
 {
     num_t denom = vec3_dot(ray->dir, p->normal);
     if (num_eq(denom, NUM_ZERO)) /* ray in the triangle's plane: grazing */
@@ -44,6 +56,8 @@ static int prim_triangle_intersect(const render_prim_t *p, const ray_t *ray, num
     num_t beta, gamma;
     if (!prim_triangle_bary(p, vec3_madd(ray->origin, ray->dir, t), &beta, &gamma))
         return 0;
+    if (uncertain)
+        *uncertain = prim_triangle_edge_uncertain(p, beta, gamma);
     if (num_lt(beta, num_neg(PRIM_EDGE_TOL)) || num_lt(gamma, num_neg(PRIM_EDGE_TOL)) ||
         num_gt(num_add(beta, gamma), num_add(NUM_ONE, PRIM_EDGE_TOL)))
         return 0;
@@ -79,8 +93,26 @@ static void prim_triangle_surface(const render_prim_t *p, hit_t *hit)
 /* The ray in the unit sphere's space, written o' + s*dn with dn a unit
  * vector and s = t * len.  The closest approach to the centre is found
  * first, so no squared coordinate of a far origin is ever formed. */
+/* The ray's closest point c to the unit sphere's centre (at t = tc / len)
+ * is within the rounding error of the surface: a ray grazing the
+ * ellipsoid may be counted as a hit or a miss wrongly.  c is off by the
+ * local coordinates' error (render_prim_t.edge_error) plus a few steps at
+ * tc; 1 - |c|^2 by twice that. */
+static int prim_ellipsoid_graze_uncertain(const render_prim_t *p, vec3_t c, num_t tc, num_t len,
+                                          num_t tmin, num_t tmax)
+{
+    num_t err = num_add(p->edge_error[0], num_mul_int(num_ulp(num_abs(tc)), 4));
+    num_t lim = num_add(NUM_ONE, err);
+    if (num_gt(num_abs(c.x), lim) || num_gt(num_abs(c.y), lim) || num_gt(num_abs(c.z), lim))
+        return 0;
+    num_t t = num_div(tc, len);
+    if (num_is_sat(t) || !num_gt(t, tmin) || num_gt(t, tmax))
+        return 0;
+    return num_lt(num_abs(num_sub(NUM_ONE, vec3_dot(c, c))), num_mul_int(err, 2));
+}
+
 static int prim_ellipsoid_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin,
-                                    num_t tmax, num_t *t_out)
+                                    num_t tmax, num_t *t_out, int *uncertain)
 {
     vec3_t o = xform_point(&p->to_local, ray->origin);
     vec3_t d = xform_dir(&p->to_local, ray->dir);
@@ -90,6 +122,8 @@ static int prim_ellipsoid_intersect(const render_prim_t *p, const ray_t *ray, nu
     vec3_t dn = vec3_scale(d, num_recip(len));
     num_t tc = num_neg(vec3_dot(o, dn));
     vec3_t c = vec3_madd(o, dn, tc); /* closest point to the centre */
+    if (uncertain)
+        *uncertain = prim_ellipsoid_graze_uncertain(p, c, tc, len, tmin, tmax);
     if (num_gt(num_abs(c.x), NUM_ONE) || num_gt(num_abs(c.y), NUM_ONE) ||
         num_gt(num_abs(c.z), NUM_ONE))
         return 0;
@@ -334,11 +368,19 @@ static void prim_density_surface(const render_prim_t *p, hit_t *hit)
 
 int prim_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin, num_t tmax, num_t *t_out)
 {
+    return prim_intersect_uncertain(p, ray, tmin, tmax, t_out, NULL);
+}
+
+int prim_intersect_uncertain(const render_prim_t *p, const ray_t *ray, num_t tmin, num_t tmax,
+                             num_t *t_out, int *uncertain)
+{
+    if (uncertain)
+        *uncertain = 0;
     switch (p->kind) {
     case SCENE_PRIM_TRIANGLE:
-        return prim_triangle_intersect(p, ray, tmin, tmax, t_out);
+        return prim_triangle_intersect(p, ray, tmin, tmax, t_out, uncertain);
     case SCENE_PRIM_ELLIPSOID:
-        return prim_ellipsoid_intersect(p, ray, tmin, tmax, t_out);
+        return prim_ellipsoid_intersect(p, ray, tmin, tmax, t_out, uncertain);
     case SCENE_PRIM_BOX:
         return prim_box_intersect(p, ray, tmin, tmax, t_out);
     case SCENE_PRIM_DENSITY:

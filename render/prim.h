@@ -31,6 +31,12 @@ typedef struct {
  * primitive find the exit point. */
 int prim_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin, num_t tmax, num_t *t_out);
 
+/* prim_intersect, and *uncertain = 1 when a decision between tmin and tmax
+ * was closer than the primitive's rounding error (a triangle's edge test,
+ * a ray grazing an ellipsoid: render_prim_t.edge_error): the answer may be wrong. */
+int prim_intersect_uncertain(const render_prim_t *p, const ray_t *ray, num_t tmin, num_t tmax,
+                             num_t *t_out, int *uncertain);
+
 /* Fill hit->point, normal, tangent, u, v for hit->t on primitive p. */
 void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit);
 

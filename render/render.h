@@ -93,6 +93,15 @@ typedef struct {
                             count as lost precision */
     num_t uv_error;      /* render_prepare's estimate of the rounding error
                             of a hit's map coordinates u, v (render/maps.h) */
+    num_t edge_error[2]; /* render_prepare's estimate of the rounding error
+                            of what a hit-or-miss decision compares (a
+                            TRIANGLE's beta and gamma; an ELLIPSOID's local
+                            coordinates, [0]): a decision closer than that
+                            counts as lost precision (prim_intersect_uncertain) */
+    num_t hit_error;     /* render_prepare's estimate of how far rounding
+                            moves a hit on it, in eye units: two primitives
+                            hit closer than the sum of theirs count as lost
+                            precision (either may be the nearest) */
 } render_prim_t;
 
 /* A cluster in eye coordinates. */

@@ -21,6 +21,9 @@ typedef struct {
     int found;
     num_t t;
     uint32_t prim;
+    int runner_up;   /* another primitive was hit too: the nearest of them */
+    num_t runner_t;  /* at runner_t, on runner_prim */
+    uint32_t runner_prim;
 } nearest_t;
 
 /* Crossings of one straight ray: each primitive once, at its first t. */
@@ -110,16 +113,33 @@ static void trace_test_prim(trace_walk_t *w, uint32_t prim)
      * loses precision */
     if (p->imprecise && prim_aabb_hit(&p->bounds, w->ray, w->tmin, w->tmax))
         w->ctx->pixel_lost = 1;
-    if (!prim_intersect(p, w->ray, w->tmin, tmax, &t))
+    /* tested up to w->tmax, not the nearest hit so far, so that an
+     * uncertain edge counts whatever the order (prim.h: only the final
+     * t <= tmax depends on tmax) */
+    int uncertain;
+    int found = prim_intersect_uncertain(p, w->ray, w->tmin, w->tmax, &t, &uncertain);
+    if (uncertain)
+        w->ctx->pixel_lost = 1;
+    if (!found || (w->mode != TRACE_NEAREST && num_gt(t, tmax)))
         return;
     if (w->mode != TRACE_NEAREST) {
         trace_record(w, prim, t);
         return;
     }
-    if (!w->nearest.found || num_lt(t, w->nearest.t) || (num_eq(t, w->nearest.t) && prim < w->nearest.prim)) {
-        w->nearest.found = 1;
-        w->nearest.t = t;
-        w->nearest.prim = prim;
+    nearest_t *n = &w->nearest;
+    if (!n->found || num_lt(t, n->t) || (num_eq(t, n->t) && prim < n->prim)) {
+        if (n->found && (!n->runner_up || !num_gt(n->t, n->runner_t))) {
+            n->runner_up = 1;
+            n->runner_t = n->t;
+            n->runner_prim = n->prim;
+        }
+        n->found = 1;
+        n->t = t;
+        n->prim = prim;
+    } else if (!n->runner_up || num_lt(t, n->runner_t)) {
+        n->runner_up = 1;
+        n->runner_t = t;
+        n->runner_prim = prim;
     }
 }
 
@@ -218,12 +238,19 @@ static void trace_walk(trace_walk_t *w, const uint32_t *clip, uint32_t clip_coun
 static int trace_nearest(render_ctx_t *ctx, const ray_t *ray, num_t tmin, const uint32_t *clip,
                          uint32_t clip_count, hit_t *hit)
 {
-    trace_walk_t w = {ctx, ray, tmin, TRACE_FAR, TRACE_NEAREST, {0, NUM_ZERO, 0}, NULL, {{0}, {0}}};
+    trace_walk_t w = {ctx, ray, tmin, TRACE_FAR, TRACE_NEAREST, {0, NUM_ZERO, 0, 0, NUM_ZERO, 0}, NULL, {{0}, {0}}};
     trace_walk(&w, clip, clip_count);
     if (!w.nearest.found)
         return 0;
     hit->t = w.nearest.t;
     hit->prim = w.nearest.prim;
+    /* two primitives hit at distances closer than their hit errors (where
+     * two spheres cut each other): either may be the nearest */
+    const render_prim_t *prims = ctx->frame->prims;
+    if (w.nearest.runner_up &&
+        num_lt(num_sub(w.nearest.runner_t, w.nearest.t),
+               num_add(prims[hit->prim].hit_error, prims[w.nearest.runner_prim].hit_error)))
+        ctx->pixel_lost = 1;
     prim_surface(&ctx->frame->prims[hit->prim], ray, hit);
     if (vec3_is_sat(hit->normal) || vec3_is_sat(hit->point) || ctx->frame->prims[hit->prim].imprecise)
         ctx->pixel_lost = 1;
@@ -267,7 +294,7 @@ static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t di
     cross.count = 0;
     cross.overflow = 0;
     cross.opaque = 0;
-    trace_walk_t w = {ctx, &ray, ctx->frame->ray_epsilon, distance, TRACE_COLLECT_SHADOW, {0, NUM_ZERO, 0}, &cross, {{0}, {0}}};
+    trace_walk_t w = {ctx, &ray, ctx->frame->ray_epsilon, distance, TRACE_COLLECT_SHADOW, {0, NUM_ZERO, 0, 0, NUM_ZERO, 0}, &cross, {{0}, {0}}};
     trace_walk(&w, NULL, 0);
     if (cross.opaque || cross.overflow)
         return rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
@@ -333,7 +360,7 @@ static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray)
     cross.count = 0;
     cross.overflow = 0;
     cross.opaque = 0;
-    trace_walk_t w = {ctx, ray, ctx->frame->ray_epsilon, TRACE_FAR, TRACE_COLLECT_STRAIGHT, {0, NUM_ZERO, 0}, &cross, {{0}, {0}}};
+    trace_walk_t w = {ctx, ray, ctx->frame->ray_epsilon, TRACE_FAR, TRACE_COLLECT_STRAIGHT, {0, NUM_ZERO, 0, 0, NUM_ZERO, 0}, &cross, {{0}, {0}}};
     trace_walk(&w, NULL, 0);
     rgb_t sum = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     rgb_t weight = rgb_make(NUM_ONE, NUM_ONE, NUM_ONE);

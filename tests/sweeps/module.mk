@@ -3,6 +3,9 @@
 # make test runs the sweeps at reduced size: every wrong pixel flagged; and
 # the scale family gives the same image at every scale (scale_same.sh).
 BOARD_TESTS += tests/sweeps/flagged.sh tests/sweeps/scale_same.sh
+# and the 160x120 scenes whose hit-or-miss decisions closer than the
+# arithmetic's error left wrong pixels unflagged (margins.sh)
+BOARD_TESTS += tests/sweeps/margins.sh
 # and the Pareto chart at reduced size: both charts, board points exact.
 BOARD_TESTS += tests/sweeps/pareto_small.sh
 
