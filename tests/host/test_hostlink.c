@@ -183,7 +183,7 @@ static void frame_bad_length_counted(void)
 
 static void frame_seq_gap_counted(void)
 {
-    static const uint16_t seqs[] = {65534, 65535, 0, 1, 3, 3, 4};
+    static const uint16_t seqs[] = {65534, 65535, 0, 1, 3, 3, 1, 4, 6};
     struct link_decoder d;
     link_decoder_init(&d);
     int k = 0;
@@ -192,9 +192,12 @@ static void frame_seq_gap_counted(void)
         size_t n = link_frame_encode(f, sizeof f, LINK_LOG, 0, seqs[i], "s", 1);
         k = push_all(&d, f, n, k);
     }
-    CHECK_EQ_INT(k, 7);
-    /* 1 -> 3 skips one, 3 -> 3 repeats one; the wrap 65535 -> 0 is no gap. */
+    CHECK_EQ_INT(k, 9);
+    /* 1 -> 3 and 4 -> 6 skip one each; 3 again and 1 again are frames sent
+     * again (behind the expected one), no gap, and 4 after them is the
+     * expected one; the wrap 65535 -> 0 is no gap. */
     CHECK_EQ_INT(d.stats.seq_gaps, 2);
+    CHECK_EQ_INT(d.next_seq, 7);
 }
 
 /* A frame flagged LINK_FLAG_SESSION starts the numbering again: no gap is
