@@ -3,12 +3,12 @@
 # arithmetic: the demo and a paper-like scene (glass.scn) x {float, soft,
 # fixed}, each arithmetic with NCs {1, 2, 8} and the three balancing modes
 # paired so that every pair of (arithmetic, NCs, mode) values occurs.  At
-# 160x120 so the whole set runs in a few minutes; `make test-full` runs the
+# 128x96 so the whole set runs in under a minute; `make test-full` runs the
 # full grid (render_grid_full.sh).
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
 board_ready render_grid || exit 0
-SIZE=160x120
+SIZE=128x96
 for scene in scenes/demo.scn scenes/glass.scn; do
     render_grid_one $scene float 1 static $SIZE
     render_grid_one $scene float 2 dynamic $SIZE
