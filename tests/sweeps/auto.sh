@@ -50,11 +50,9 @@ board_cost() { # SCENE FIRMWARE: NC instructions per pixel
 printf 'family\tknob\tfpu\tpick\tpick_psnr\tpick_cost\tbest\tbest_psnr\tbest_cost\tpick_over_best\tcandidates\n' >"$tsv"
 for entry in "${families[@]}"; do
     IFS='|' read -r family knobs _ _ <<<"$entry"
-    gen=$family
-    [ "$family" = scale_down ] && gen=scale
     for knob in $knobs; do
         scn=$out/work/$family-$knob.scn
-        python3 tests/sweeps/make_scene.py "$gen" "$knob" --size "$SIZE" >"$scn" || exit 1
+        family_scene "$family" "$knob" "$SIZE" >"$scn" || exit 1
         ref=$out/work/double.png
         if ! "$LINKS1" ref "$scn" --arith double -o "$ref" >"$out/work/double.log" 2>&1; then
             for fpu in vfp none; do

@@ -12,3 +12,11 @@ families=(
     "ellipsoid_ratio|1 10 100 300 1000 3000|axis ratio|1"
     "map_repeat|1 10 100 1000 3000 10000|repeats|1"
 )
+
+# family_scene FAMILY KNOB SIZE: the family's scene at that knob value on
+# stdout (scale_down is the scale family below 1).
+family_scene() {
+    local gen=$1
+    [ "$gen" = scale_down ] && gen=scale
+    python3 tests/sweeps/make_scene.py "$gen" "$2" --size "$3"
+}

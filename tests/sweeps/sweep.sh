@@ -65,15 +65,13 @@ measure() { # REF IMG K [--flagged]
 printf 'family\tknob\tarith\tstatus\tbeyond1_pct\tbeyond2_pct\tpsnr_db\tlost_pixels\tunflagged_beyond2_pct\tunflagged_unexplained_pct\n' >"$tsv"
 for entry in "${families[@]}"; do
     IFS='|' read -r family knobs _ _ <<<"$entry"
-    gen=$family
-    [ "$family" = scale_down ] && gen=scale
     for knob in $knobs; do
         scn=$out/work/$family-$knob.scn
-        python3 tests/sweeps/make_scene.py "$gen" "$knob" --size "$size" >"$scn" || exit 1
+        family_scene "$family" "$knob" "$size" >"$scn" || exit 1
         same=$out/work/$family-$knob-double.png
         "$LINKS1" ref "$scn" --arith double -o "$same" >/dev/null 2>&1 || rm -f "$same"
         ref=$same
-        if [ "$gen" = scale ] || [ "$gen" = cluster_scale ]; then
+        if [ "$family" = scale ] || [ "$family" = scale_down ] || [ "$family" = cluster_scale ]; then
             ref=$out/work/$family-1-double.png
         fi
         for arith in double float fixed; do
