@@ -91,15 +91,10 @@ render_blob_status_t render_blob_build(const uint8_t *compiled, size_t len, uint
     }
     render_frame_t *frame;
     render_status_t st = render_prepare(&blob->scene, frame_index, &arena, &frame);
-    if (st == RENDER_ERR_EXTENT) {
-        char why[RENDER_BLOB_MSG_MAX];
-        precision_extent_message(frame, why, sizeof why);
-        blob_fail(err, RENDER_BLOB_ERR_PREPARE, "frame %lu: %s", (unsigned long)frame_index, why);
-        return err->status;
-    }
     if (st != RENDER_OK) {
-        blob_fail(err, RENDER_BLOB_ERR_PREPARE, "frame %lu: %s", (unsigned long)frame_index,
-                  render_status_name(st));
+        char why[RENDER_BLOB_MSG_MAX];
+        precision_status_message(frame, st, why, sizeof why);
+        blob_fail(err, RENDER_BLOB_ERR_PREPARE, "frame %lu: %s", (unsigned long)frame_index, why);
         return err->status;
     }
     blob->magic = RENDER_BLOB_MAGIC;

@@ -27,7 +27,8 @@
 #include "render/render.h"
 
 #define RENDER_BLOB_MAGIC 0x4c42314cu /* "L1BL" in memory, little-endian */
-#define RENDER_BLOB_MSG_MAX 160
+#define RENDER_BLOB_MSG_MAX 184 /* with the DM's "scene refused: " within
+                                   its log line (KLOG_MAX, 200) */
 
 typedef struct {
     uint32_t magic;        /* RENDER_BLOB_MAGIC once built */

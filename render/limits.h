@@ -71,6 +71,13 @@
                                            tolerance units (scene units times
                                            2^tol_exp): 500 ray offsets; smaller
                                            scenes are refused (RENDER_ERR_EXTENT) */
+#define RENDER_MIN_DETAIL_STEPS 2        /* a primitive's smallest size
+                                           (semi-axis, half edge, triangle
+                                           height, component radius) in
+                                           steps of the arithmetic where it
+                                           lies: rounded by half a step, a
+                                           smaller one is off by more than a
+                                           quarter (RENDER_ERR_DETAIL) */
 #define RENDER_INVERSE_TOLERANCE_VALUE 1e-3 /* |M * M^-1 - I| of a cluster map
                                            beyond this: RENDER_ERR_SCALE */
 #define RENDER_MAP_TEXEL_TOLERANCE_VALUE (1.0 / 64) /* map lookups: render/maps.h;

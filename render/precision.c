@@ -150,25 +150,141 @@ render_status_t precision_check(render_frame_t *f)
         default: p->uv_error = NUM_ZERO; break;
         }
     }
-    return num_lt(f->span, PRECISION_MIN_SPAN(f->scene)) ? RENDER_ERR_EXTENT : RENDER_OK;
+    if (num_lt(f->span, PRECISION_MIN_SPAN(f->scene)))
+        return RENDER_ERR_EXTENT;
+    return f->detail_prim != RENDER_NO_PRIM ? RENDER_ERR_DETAIL : RENDER_OK;
+}
+
+/* The largest |coordinate| of a box. */
+static num_t precision_box_reach(const aabb_t *b)
+{
+    num_t r = NUM_ZERO;
+    for (int axis = 0; axis < 3; axis++)
+        r = num_max(r, num_max(num_abs(vec3_get(b->lo, axis)), num_abs(vec3_get(b->hi, axis))));
+    return r;
+}
+
+/* Records prim i in f->detail_* when size, at a place whose largest
+ * |coordinate| is reach, is under RENDER_MIN_DETAIL_STEPS steps there
+ * (fixed: one step anywhere; float, double: 2^-23, 2^-52 of reach).  A
+ * saturated value is left to the precision flag. */
+static void precision_detail_one(render_frame_t *f, uint32_t i, num_t size, num_t reach)
+{
+    num_t step = num_ulp(reach);
+    if (f->detail_prim != RENDER_NO_PRIM || num_is_sat(size) || num_is_sat(reach) ||
+        num_is_sat(step) || !num_lt(size, num_mul_int(step, RENDER_MIN_DETAIL_STEPS)))
+        return;
+    f->detail_prim = i;
+    f->detail_size = size;
+    f->detail_step = step;
+}
+
+/* Length in eye units of s cluster units along the cluster's axis j. */
+static num_t precision_axis_len(const xform_t *to_eye, int j, num_t s)
+{
+    return num_mul(num_abs(s), num_len3(to_eye->m[0][j], to_eye->m[1][j], to_eye->m[2][j]));
+}
+
+void precision_detail(render_frame_t *f, uint32_t i, const xform_t *to_eye)
+{
+    const scene_prim_t *sp = &f->scene->prims[i];
+    const render_prim_t *p = &f->prims[i];
+    num_t reach = precision_box_reach(&p->bounds);
+    switch (sp->kind) {
+    case SCENE_PRIM_TRIANGLE: /* in its own units: the loader's sliver check */
+        precision_detail_one(f, i, num_min(num_abs(p->height1), num_abs(p->height2)), reach);
+        break;
+    case SCENE_PRIM_ELLIPSOID:
+    case SCENE_PRIM_BOX: {
+        int round = sp->kind == SCENE_PRIM_ELLIPSOID;
+        vec3_t c = round ? sp->shape.ellipsoid.centre : sp->shape.box.centre;
+        vec3_t r = round ? sp->shape.ellipsoid.radius : sp->shape.box.half;
+        num_t eye = NUM_FAR, own = NUM_FAR, own_reach = NUM_ZERO;
+        for (int j = 0; j < 3; j++) {
+            num_t rj = num_abs(vec3_get(r, j));
+            eye = num_min(eye, precision_axis_len(to_eye, j, rj));
+            own = num_min(own, rj);
+            own_reach = num_max(own_reach, num_add(num_abs(vec3_get(c, j)), rj));
+        }
+        precision_detail_one(f, i, eye, reach);
+        precision_detail_one(f, i, own, own_reach);
+        break;
+    }
+    default: /* SCENE_PRIM_DENSITY */
+        for (uint16_t k = 0; k < p->component_count; k++) {
+            const scene_density_component_t *d = &p->components[k];
+            num_t eye = NUM_FAR, own_reach = NUM_ZERO;
+            for (int j = 0; j < 3; j++) {
+                eye = num_min(eye, precision_axis_len(to_eye, j, d->radius));
+                own_reach = num_max(own_reach, num_add(num_abs(vec3_get(d->centre, j)),
+                                                       num_abs(d->radius)));
+            }
+            precision_detail_one(f, i, eye, reach);
+            precision_detail_one(f, i, num_abs(d->radius), own_reach);
+        }
+        break;
+    }
+}
+
+/* |v| * 2^-unit_exp, a length in the scene text's units, as m * 2^*b
+ * with m in [2^31, 2^32); 0 for 0.  Exact in fixed point (a step is
+ * 2^-NUM_FRAC_BITS), within 2^-31 of it in the IEEE builds. */
+static uint64_t precision_split(const scene_t *s, num_t v, int *b)
+{
+    *b = -s->unit_exp;
+#if defined(LINKS1_NUM_FIXED)
+    uint64_t m = (uint64_t)(v < 0 ? -(int64_t)v : (int64_t)v);
+    *b -= NUM_FRAC_BITS;
+#else
+    num_t x = num_abs(v);
+    if (!num_gt(x, NUM_ZERO))
+        return 0;
+    for (; !num_lt(x, NUM_C(4294967296.0)); (*b)++)
+        x = num_scale2(x, -1);
+    for (; num_lt(x, NUM_C(2147483648.0)); (*b)--)
+        x = num_scale2(x, 1);
+    uint64_t m = (uint64_t)x;
+#endif
+    if (m == 0)
+        return 0;
+    for (; m < (UINT64_C(1) << 31); (*b)--)
+        m <<= 1;
+    for (; m >= (UINT64_C(1) << 32); (*b)++)
+        m >>= 1;
+    return m;
+}
+
+/* floor(m * 2^b), m < 2^32; saturates at 2^40. */
+static uint64_t precision_floor(uint64_t m, int b)
+{
+    if (b >= 0)
+        return b > 8 ? UINT64_C(1) << 40 : m << b;
+    return b <= -63 ? 0 : m >> -b;
 }
 
 /* Three significant digits of v, a length in the scene's stored units,
  * given in the scene text's units (v * 2^-unit_exp): "0.122", "12.3",
- * "1.5e-07"; integer steps only (the fixed build has no floating point) */
+ * "1.5e-07"; integer steps only (the fixed build has no floating point,
+ * and a step of a small scene's is below what num_t holds) */
 static void precision_fmt_len(const scene_t *s, num_t v, char *out, size_t cap)
 {
-    num_t x = num_scale2(num_abs(v), -s->unit_exp);
-    int dec = 0; /* x = digits / 10^dec */
-    if (num_is_sat(x) || !num_gt(x, NUM_ZERO)) {
-        fmt_snprintf(out, cap, num_is_sat(x) ? "(out of range)" : "0");
+    int b;
+    if (num_is_sat(v)) {
+        fmt_snprintf(out, cap, "(out of range)");
         return;
     }
-    while (num_lt(x, NUM_C(100)) && dec < 12) {
-        x = num_mul_int(x, 10);
+    uint64_t m = precision_split(s, v, &b);
+    if (m == 0) {
+        fmt_snprintf(out, cap, "0");
+        return;
+    }
+    int dec = 0; /* |v| = m * 2^b / 10^dec */
+    while (precision_floor(m, b) < 100 && dec < 24) {
+        for (m *= 10; m >= (UINT64_C(1) << 32); b++)
+            m >>= 1;
         dec++;
     }
-    int32_t digits = num_floor_int(num_add(x, NUM_HALF));
+    int64_t digits = (int64_t)precision_floor(m + (b < 0 ? UINT64_C(1) << (-b - 1) : 0), b);
     while (digits >= 1000 && dec > 0) {
         digits = (digits + 5) / 10;
         dec--;
@@ -190,6 +306,10 @@ static void precision_fmt_len(const scene_t *s, num_t v, char *out, size_t cap)
     while (digits / p10 >= 10) {
         p10 *= 10;
         e++;
+    }
+    if (e == 0) {
+        fmt_snprintf(out, cap, "%lde-%d", (long)digits, dec);
+        return;
     }
     fmt_snprintf(out, cap, "%ld.%0*lde-%d", (long)(digits / p10), e, (long)(digits % p10),
                  dec - e);
@@ -213,4 +333,53 @@ void precision_extent_message(const render_frame_t *f, char *out, size_t cap)
                  "start %s from a surface, so a scene needs a span of at least %s: its clusters "
                  "shrink it below its coordinates; scale those instead",
                  span, what, (long)s->unit_exp, offset, need);
+}
+
+/* What a primitive is and what its smallest size is called. */
+static const char *precision_kind_name(const scene_prim_t *sp, const char **size)
+{
+    switch (sp->kind) {
+    case SCENE_PRIM_TRIANGLE: *size = "height"; return "triangle";
+    case SCENE_PRIM_ELLIPSOID: {
+        vec3_t r = sp->shape.ellipsoid.radius;
+        *size = num_eq(r.x, r.y) && num_eq(r.y, r.z) ? "radius" : "semi-axis";
+        return "ellipsoid";
+    }
+    case SCENE_PRIM_BOX: *size = "half edge"; return "box";
+    default: *size = "component radius"; return "density sphere";
+    }
+}
+
+void precision_detail_message(const render_frame_t *f, char *out, size_t cap)
+{
+    const scene_t *s = f->scene;
+    if (f->detail_prim == RENDER_NO_PRIM || f->detail_prim >= s->prim_count) {
+        fmt_snprintf(out, cap, "%s", render_status_name(RENDER_ERR_DETAIL));
+        return;
+    }
+    char size[24], step[24], span[24], what[24];
+    const char *size_name, *kind = precision_kind_name(&s->prims[f->detail_prim], &size_name);
+    precision_fmt_len(s, f->detail_size, size, sizeof size);
+    precision_fmt_len(s, f->detail_step, step, sizeof step);
+    precision_fmt_len(s, f->span, span, sizeof span);
+#if defined(LINKS1_NUM_FIXED)
+    fmt_snprintf(what, sizeof what, "fixed Q%d.%d", 31 - NUM_FRAC_BITS, NUM_FRAC_BITS);
+    const char *instead = " or use float";
+#else
+    fmt_snprintf(what, sizeof what, "%s", NUM_NAME);
+    const char *instead = "";
+#endif
+    fmt_snprintf(out, cap, "%s %lu has a %s of %s; %s resolves %s there, in a scene spanning %s "
+                 "(lengths scaled by 2^%ld): enlarge it%s", kind, (unsigned long)f->detail_prim,
+                 size_name, size, what, step, span, (long)s->unit_exp, instead);
+}
+
+void precision_status_message(const render_frame_t *f, render_status_t st, char *out, size_t cap)
+{
+    if (f && st == RENDER_ERR_EXTENT)
+        precision_extent_message(f, out, cap);
+    else if (f && st == RENDER_ERR_DETAIL)
+        precision_detail_message(f, out, cap);
+    else
+        fmt_snprintf(out, cap, "%s", render_status_name(st));
 }

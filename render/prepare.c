@@ -30,6 +30,7 @@ const char *render_status_name(render_status_t status)
     case RENDER_ERR_RELOCATE: return "a pointer of the blob lies outside it (not self-contained), or a bad base";
     case RENDER_ERR_AREA: return "area empty or not inside the screen";
     case RENDER_ERR_EXTENT: return "the scene spans less than RENDER_MIN_SPAN_VALUE (500 ray offsets; both scaled with a scene whose largest length is under 1/2): its clusters shrink it below its own coordinates; scale those instead";
+    case RENDER_ERR_DETAIL: return "a primitive smaller than RENDER_MIN_DETAIL_STEPS (2) steps of the arithmetic where it lies: its shape would be off by more than a quarter; enlarge it or use another arithmetic";
     case RENDER_ERR_SCALE: return "a cluster transform scales beyond what the arithmetic can invert (it is not exactly singular: scale the scene instead of the cluster, or use another arithmetic)";
     }
     return "unknown render status";
@@ -520,11 +521,13 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
         if (xform_is_sat(&to_eye[i]) || xform_is_sat(&from_eye[i]))
             f->precision_lost = 1;
     }
+    f->detail_prim = RENDER_NO_PRIM;
     for (uint32_t i = 0; i < s->prim_count; i++) {
         const scene_prim_t *sp = &s->prims[i];
         prep_prim(sp, i, f, &to_eye[sp->cluster], &from_eye[sp->cluster], &f->prims[i]);
         if (vec3_is_sat(f->prims[i].bounds.lo) || vec3_is_sat(f->prims[i].bounds.hi))
             f->precision_lost = 1;
+        precision_detail(f, i, &to_eye[sp->cluster]);
     }
     arena_release_to(arena, mark);
 

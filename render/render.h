@@ -150,7 +150,15 @@ typedef struct {
     num_t span;                    /* largest side of the scene's eye-space box */
     num_t ray_epsilon;             /* RENDER_RAY_EPSILON_VALUE scaled to the
                                       scene (scene_tolerance) */
+    uint32_t detail_prim;          /* the first primitive smaller than the
+                                      arithmetic resolves where it lies
+                                      (RENDER_ERR_DETAIL), RENDER_NO_PRIM
+                                      when none */
+    num_t detail_size, detail_step; /* its smallest size and the step of the
+                                      arithmetic there, in stored units */
 } render_frame_t;
+
+#define RENDER_NO_PRIM UINT32_MAX
 
 typedef struct {
     uint64_t primary;       /* camera rays */
@@ -208,6 +216,11 @@ typedef enum {
     RENDER_ERR_SCALE,        /* a cluster transform scales so little (or so
                                 much) that the arithmetic cannot invert it
                                 to RENDER_INVERSE_TOLERANCE_VALUE */
+    RENDER_ERR_DETAIL,       /* a primitive smaller than
+                                RENDER_MIN_DETAIL_STEPS steps of the
+                                arithmetic where it lies: its shape would be
+                                off by more than a quarter (render_prepare
+                                then still sets *out, for frame->detail_*) */
 } render_status_t;
 
 /* A constant string naming the status, for error messages. */

@@ -67,14 +67,10 @@ static int ref_load(const char *in, const uint8_t *bytes, size_t len, void **mem
         render_status_t rs = render_prepare(scene, 0, arena, &frame);
         if (rs == RENDER_ERR_ARENA)
             continue;
-        if (rs == RENDER_ERR_EXTENT) {
-            char why[256];
-            precision_extent_message(frame, why, sizeof why);
-            fprintf(stderr, "links1 ref: %s: %s\n", in, why);
-            return -1;
-        }
         if (rs != RENDER_OK) {
-            fprintf(stderr, "links1 ref: %s: %s\n", in, render_status_name(rs));
+            char why[256];
+            precision_status_message(frame, rs, why, sizeof why);
+            fprintf(stderr, "links1 ref: %s: %s\n", in, why);
             return -1;
         }
         arena_release_to(arena, *mark);
@@ -92,7 +88,9 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     render_frame_t *frame_data;
     render_status_t rs = render_prepare(scene, (uint32_t)frame, arena, &frame_data);
     if (rs != RENDER_OK) {
-        fprintf(stderr, "links1 ref: %s frame %ld: %s\n", in, frame, render_status_name(rs));
+        char why[256];
+        precision_status_message(frame_data, rs, why, sizeof why);
+        fprintf(stderr, "links1 ref: %s frame %ld: %s\n", in, frame, why);
         return -1;
     }
     struct image img = {scene->width, scene->height, NULL};
