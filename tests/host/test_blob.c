@@ -294,6 +294,76 @@ static void test_blob_errors(void)
     free(buf);
 }
 
+/* The blob of a text scene: RENDER_BLOB_OK, or its status with the
+ * message in why. */
+static render_blob_status_t tb_text_blob(const char *text, char *why, size_t cap)
+{
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    uint8_t *buf = NULL;
+    size_t len, need;
+    render_blob_error_t berr = {RENDER_BLOB_OK, ""};
+    render_blob_t *blob;
+    snprintf(why, cap, "cannot compile");
+    if (sd_parse_text("detail.scn", text, &s, err, sizeof err) != 0) {
+        printf("# %s\n", err);
+        return RENDER_BLOB_ERR_LOAD;
+    }
+    int compiled = sd_compile(&s, &buf, &len, err, sizeof err) == 0;
+    sd_free(&s);
+    if (!compiled || render_blob_bytes(buf, len, &need, &berr) != RENDER_BLOB_OK) {
+        free(buf);
+        return RENDER_BLOB_ERR_LOAD;
+    }
+    void *block = tb_block(need);
+    render_blob_status_t st =
+        render_blob_build(buf, len, 0, block, need, "the test block", &blob, &berr);
+    snprintf(why, cap, "%s", st == RENDER_BLOB_OK ? "ok" : berr.message);
+    printf("# %s\n", why);
+    free(block);
+    free(buf);
+    return st;
+}
+
+/* Issue 11: a sphere of radius 1e-6 in a scene spanning 12 is one fixed
+ * step (2^-19): refused in fixed point, rendered in float and double; of
+ * radius 1e-5 it renders in every arithmetic.  Far from the origin (x =
+ * 100) float resolves 1.19e-5 and refuses a radius of 1e-5. */
+static void test_blob_detail(void)
+{
+    static const char scene[] =
+        "camera { eye %s 1 -0.00001  look_at %s 1 0  up 0 1 0  fov 40 }  resolution 64 48\n"
+        "light point { colour 1 1 1  position -4 9 -5 }\n"
+        "material m { colour 1 1 1 dic 0.3 drc 0.7 }\n"
+        "box { material m  min -6 -0.5 -4  max %s 0 8 }\n"
+        "sphere { material m centre %s 1 0 radius %s }\n";
+    char text[600], why[RENDER_BLOB_MSG_MAX];
+    snprintf(text, sizeof text, scene, "0", "0", "6", "0", "0.000001");
+    render_blob_status_t st = tb_text_blob(text, why, sizeof why);
+#if defined(LINKS1_NUM_FIXED)
+    CHECK_EQ_INT(st, RENDER_BLOB_ERR_PREPARE);
+    CHECK(strcmp(why, "frame 0: ellipsoid 1 has a radius of 1.91e-6; fixed Q12.19 resolves "
+                      "1.91e-6 there, in a scene spanning 12 (lengths scaled by 2^0): enlarge "
+                      "it or use float") == 0);
+#else
+    CHECK_EQ_INT(st, RENDER_BLOB_OK);
+#endif
+    snprintf(text, sizeof text, scene, "0", "0", "6", "0", "0.00001");
+    CHECK_EQ_INT(tb_text_blob(text, why, sizeof why), RENDER_BLOB_OK);
+    snprintf(text, sizeof text, scene, "100", "100", "106", "100", "0.00001");
+    st = tb_text_blob(text, why, sizeof why);
+#if defined(LINKS1_NUM_DOUBLE)
+    CHECK_EQ_INT(st, RENDER_BLOB_OK);
+#elif defined(LINKS1_NUM_FLOAT)
+    CHECK_EQ_INT(st, RENDER_BLOB_ERR_PREPARE);
+    CHECK(strcmp(why, "frame 0: ellipsoid 1 has a radius of 0.00001; float resolves 1.19e-5 "
+                      "there, in a scene spanning 112 (lengths scaled by 2^-3): enlarge it") == 0);
+#else
+    CHECK_EQ_INT(st, RENDER_BLOB_ERR_PREPARE);
+    CHECK(strstr(why, "ellipsoid 1 has a radius of 1.53e-5; fixed Q12.19 resolves 1.53e-5") != NULL);
+#endif
+}
+
 int main(void)
 {
     RUN(test_relocated_copy_renders_same);
@@ -302,5 +372,6 @@ int main(void)
     RUN(test_relocate_names_each_bad_field);
     RUN(test_blob_size_bound);
     RUN(test_blob_errors);
+    RUN(test_blob_detail);
     return check_exit();
 }

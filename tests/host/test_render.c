@@ -5,6 +5,7 @@
  * image bit for bit. */
 #include <stdlib.h>
 
+#include "render/precision.h"
 #include "render/prim.h"
 #include "tests/check.h"
 #include "tests/host/test_render_scene.h"
@@ -487,6 +488,49 @@ static void test_precision_flag(void)
     free(img);
 }
 
+/* Issue 11: a triangle that a cluster shrinks to 2^-19 in eye units (one
+ * fixed step; under two float steps at z = 9) is refused, naming it and
+ * the numbers; 2^-16 (8 fixed steps) renders in every arithmetic. */
+static void test_detail_refused(void)
+{
+    for (int k = 0; k < 2; k++) {
+        ts_init(&ts, 8, 8);
+        uint16_t m = ts_material(&ts, mat(1, 1, 1, 0.3, 0.7));
+        wall(0, m, 10);
+        xform_t shrink = ts_translate(0, 0, 9);
+        for (int i = 0; i < 3; i++)
+            shrink.m[i][i] = N(0x1p-4);
+        uint16_t c = ts_cluster(&ts, 0, shrink);
+        double h = k == 0 ? 0x1p-15 : 0x1p-12;
+        ts_triangle(&ts, c, m, ts_v(0, 0, 0), ts_v(h, 0, 0), ts_v(0, h, 0));
+        render_frame_t *f = NULL;
+        render_status_t st = render_prepare(&ts.scene, 0, &ts.arena, &f);
+        char why[200];
+        precision_status_message(f, st, why, sizeof why);
+        printf("# height 2^%d: %s\n", k == 0 ? -19 : -16, st == RENDER_OK ? "ok" : why);
+#if defined(LINKS1_NUM_DOUBLE)
+        CHECK_EQ_INT(st, RENDER_OK);
+#else
+        if (k == 1) {
+            CHECK_EQ_INT(st, RENDER_OK);
+            continue;
+        }
+        CHECK_EQ_INT(st, RENDER_ERR_DETAIL);
+        CHECK(f != NULL && f->detail_prim == 2);
+#if defined(LINKS1_NUM_FIXED)
+        const char *want = "triangle 2 has a height of 1.91e-6; fixed Q12.19 resolves 1.91e-6 "
+                           "there, in a scene spanning 40 (lengths scaled by 2^0): enlarge it "
+                           "or use float";
+#else
+        const char *want = "triangle 2 has a height of 1.91e-6; float resolves 1.07e-6 there, "
+                           "in a scene spanning 40 (lengths scaled by 2^0): enlarge it";
+#endif
+        CHECK(strcmp(why, want) == 0);
+        CHECK(strstr(render_status_name(RENDER_ERR_DETAIL), "RENDER_MIN_DETAIL_STEPS") != NULL);
+#endif
+    }
+}
+
 int main(void)
 {
     printf("# num_t = %s\n", NUM_NAME);
@@ -501,5 +545,6 @@ int main(void)
     RUN(test_keyframes);
     RUN(test_limits_and_errors);
     RUN(test_precision_flag);
+    RUN(test_detail_refused);
     return check_exit();
 }
