@@ -4,10 +4,15 @@
 #    next scene uploaded to the same board renders, equal to the host build;
 #  - a scene whose prepared frame exceeds the IMSU block: refused by the
 #    host compiler before the upload, naming the limit
-#    (LINKS1_IMSU_PAIR_BLOCK) and the counts.
+#    (LINKS1_IMSU_PAIR_BLOCK) and the counts;
+#  - a sphere of radius 1e-6 in a scene spanning 12, one step of fixed
+#    Q12.19 (issue 11): the fixed DM refuses it with the host build's
+#    message (links1 ref --arith fixed), and the next scene uploaded to the
+#    same board renders, equal to the host build.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
-board_ready render_refuse_bad render_refuse_next render_refuse_too_big || exit 0
+board_ready render_refuse_bad render_refuse_next render_refuse_too_big \
+    render_refuse_detail render_refuse_detail_next || exit 0
 
 good=scenes/pov/spheres.scn
 "$LINKS1" compile $good -o "$RENDER_TMP/bad.l1s" >/dev/null 2>&1
@@ -53,3 +58,26 @@ if [ $rc -ne 0 ] && grep -q 'board memory .*(700000 primitives, 1 clusters).*LIN
 else
     echo "FAIL render_refuse_too_big: exit $rc (want non-zero) or the compiler's refusal does not name LINKS1_IMSU_PAIR_BLOCK and the count"
 fi
+
+tiny=$RENDER_TMP/tiny_sphere.scn
+cat >"$tiny" <<'EOF'
+camera { eye 0 1 -0.00001  look_at 0 1 0  up 0 1 0  fov 40 }  resolution 64 48
+light point { colour 1 1 1  position -4 9 -5 }  material m { colour 1 1 1 dic 0.3 drc 0.7 }
+box { material m  min -6 -0.5 -4  max 6 0 8 }   sphere { material m centre 0 1 0 radius 0.000001 }
+EOF
+"$LINKS1" ref "$tiny" --arith fixed -o "$RENDER_TMP/tiny-host.ppm" >"$RENDER_TMP/tiny-host.log" 2>&1
+want=$(sed -n 's/^links1 ref: [^:]*: //p' "$RENDER_TMP/tiny-host.log")
+ref=$(render_ref $good fixed 80x60)
+log="$RENDER_TMP/detail.log"
+timeout "$BOARD_RUN_LIMIT_S" "$LINKS1" render --quiet --ncs 2 --arith fixed --size 80x60 "$tiny" \
+    -o "$RENDER_TMP/tiny.ppm" $good -o "$RENDER_TMP/detail-next.ppm" >"$log" 2>&1
+rc=$?
+echo "--- links1 render --arith fixed tiny_sphere.scn then $good (exit $rc); the host build: $want"
+sed 's/^/    /' "$log"
+if [ $rc -eq 1 ] && [[ $want == "ellipsoid 1 has a radius of "* ]] &&
+    grep -qF "the board says: scene refused: frame 0: $want" "$log" && [ ! -e "$RENDER_TMP/tiny.ppm" ]; then
+    echo "PASS render_refuse_detail"
+else
+    echo "FAIL render_refuse_detail: exit $rc (want 1), or the board's refusal is not the host build's: $want"
+fi
+render_same render_refuse_detail_next "$ref" "$RENDER_TMP/detail-next.ppm"
