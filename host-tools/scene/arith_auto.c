@@ -30,7 +30,8 @@
 struct auto_cand {
     char label[24], build[24], arith[8];
     int measured;        /* the host build ran (images below valid) */
-    int refused;         /* the host build refused the scene: why */
+    int refused;         /* the host build refused the scene (why): it
+                            misses the target */
     char why[200];
     double psnr, psnr_flagged;
     unsigned lost;       /* pixels flagged */
@@ -366,6 +367,17 @@ static int auto_size(struct auto_run *r)
     return 0;
 }
 
+/* A host build's refusal without its "links1 ref: SCENE: " prefix. */
+static const char *auto_refusal(const struct auto_run *r, const char *why)
+{
+    static const char tool[] = "links1 ref: ";
+    size_t n = strlen(r->path);
+    if (strncmp(why, tool, sizeof tool - 1) == 0 && strncmp(why + sizeof tool - 1, r->path, n) == 0 &&
+        strncmp(why + sizeof tool - 1 + n, ": ", 2) == 0)
+        return why + sizeof tool - 1 + n + 2;
+    return why;
+}
+
 static void auto_print(const struct auto_run *r, const struct auto_cand *c, int n, int pick)
 {
     const struct arith_auto_opts *o = r->o;
@@ -374,7 +386,7 @@ static void auto_print(const struct auto_run *r, const struct auto_cand *c, int 
     for (int i = 0; i < n; i++) {
         printf("%s %s ", i ? ";" : "", c[i].label);
         if (c[i].refused)
-            printf("refused");
+            printf("refused (misses the target)");
         else if (c[i].psnr < o->target_db)
             printf("%.1f dB", c[i].psnr);
         else if (c[i].psnr_flagged < o->target_db)
@@ -387,6 +399,10 @@ static void auto_print(const struct auto_run *r, const struct auto_cand *c, int 
             printf(", %.0f insns/pixel", c[i].cost);
     }
     printf("\n");
+    for (int i = 0; i < n; i++)
+        if (c[i].refused)
+            printf("%s: --arith auto: %s refused the scene: %s\n", r->prog, c[i].label,
+                   auto_refusal(r, c[i].why));
     if (pick < 0)
         return;
     double next = -1;

@@ -8,6 +8,8 @@
 #             the pick is soft float, with VFP float; each board image
 #             equals the host build of the pick
 # and the pick is explained (candidates with PSNR and cost, the reason);
+# a candidate that refuses the scene (issue 11's tiny sphere in fixed
+# point) misses the target and its refusal is printed;
 # bad uses are refused with the reason named.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
@@ -53,6 +55,29 @@ if "$LINKS1" ref "$easy" --arith auto --fpu none -o "$RENDER_TMP/ref-auto.ppm" \
 else
     echo "FAIL render_auto_ref_picks_fixed: $(tail -n 3 "$RENDER_TMP/ref-auto.log" | tr '\n' ' ')"
 fi
+
+# A candidate that refuses the scene misses the target, and the reason is
+# printed: a sphere of radius 1e-6 in a scene spanning 12 is one step of
+# fixed Q12.19 (issue 11), so without an FPU the pick is soft float, with
+# VFP float.
+tiny=$RENDER_TMP/tiny_sphere.scn
+cat >"$tiny" <<'EOF'
+camera { eye 0 1 -0.00001  look_at 0 1 0  up 0 1 0  fov 40 }  resolution 64 48
+light point { colour 1 1 1  position -4 9 -5 }  material m { colour 1 1 1 dic 0.3 drc 0.7 }
+box { material m  min -6 -0.5 -4  max 6 0 8 }   sphere { material m centre 0 1 0 radius 0.000001 }
+EOF
+for fpu in none:soft vfp:float; do
+    log=$RENDER_TMP/tiny-auto-${fpu%%:*}.log
+    timeout 120 "$LINKS1" ref "$tiny" --arith auto --fpu "${fpu%%:*}" -o "$RENDER_TMP/tiny-auto.ppm" >"$log" 2>&1
+    rc=$?
+    if [ $rc -eq 0 ] && grep -q "picks ${fpu#*:}: the cheapest" "$log" &&
+        grep -q 'fixed Q12.19 refused (misses the target)' "$log" &&
+        grep -q 'fixed Q12.19 refused the scene: ellipsoid 1 has a radius of 1.91e-6; fixed Q12.19 resolves 1.91e-6 there' "$log"; then
+        echo "PASS render_auto_refused_detail_${fpu%%:*} (picks ${fpu#*:})"
+    else
+        echo "FAIL render_auto_refused_detail_${fpu%%:*}: exit $rc, want a pick of ${fpu#*:} and fixed Q12.19's refusal named: $(grep 'arith auto' "$log" | tr '\n' ' ')"
+    fi
+done
 
 # refused: a target nothing reaches (map repeats: float 61 dB, fixed 32 dB), two scenes, --fpu without auto
 refused() { # NAME WANT args...
