@@ -254,18 +254,19 @@ static uint64_t precision_split(const scene_t *s, num_t v, int *b)
     return m;
 }
 
-/* floor(m * 2^b), m < 2^32; saturates at 2^40. */
+/* floor(m * 2^b), m < 2^33; saturates at 2^62. */
 static uint64_t precision_floor(uint64_t m, int b)
 {
     if (b >= 0)
-        return b > 8 ? UINT64_C(1) << 40 : m << b;
+        return b > 29 ? UINT64_C(1) << 62 : m << b;
     return b <= -63 ? 0 : m >> -b;
 }
 
 /* Three significant digits of v, a length in the scene's stored units,
  * given in the scene text's units (v * 2^-unit_exp): "0.122", "12.3",
- * "1.5e-07"; integer steps only (the fixed build has no floating point,
- * and a step of a small scene's is below what num_t holds) */
+ * "0.00001", "1.91e-6"; from an integer mantissa (the fixed build has no
+ * floating point, and its step in a small scene's text units is below
+ * what num_t holds) */
 static void precision_fmt_len(const scene_t *s, num_t v, char *out, size_t cap)
 {
     int b;
@@ -284,7 +285,12 @@ static void precision_fmt_len(const scene_t *s, num_t v, char *out, size_t cap)
             m >>= 1;
         dec++;
     }
-    int64_t digits = (int64_t)precision_floor(m + (b < 0 ? UINT64_C(1) << (-b - 1) : 0), b);
+    uint64_t half = b < 0 && b > -63 ? UINT64_C(1) << (-b - 1) : 0;
+    int64_t digits = (int64_t)precision_floor(m + half, b);
+    if (digits == 0) { /* under 10^-24 */
+        fmt_snprintf(out, cap, "0");
+        return;
+    }
     while (digits >= 1000 && dec > 0) {
         digits = (digits + 5) / 10;
         dec--;
@@ -293,12 +299,12 @@ static void precision_fmt_len(const scene_t *s, num_t v, char *out, size_t cap)
         digits /= 10;
         dec--;
     }
-    if (dec <= 5) { /* down to 0.001: plain */
+    if (dec <= 5) { /* down to 0.00001: plain */
         int32_t p10 = 1;
         for (int i = 0; i < dec; i++)
             p10 *= 10;
-        fmt_snprintf(out, cap, dec ? "%ld.%0*ld" : "%ld", (long)(digits / p10), dec,
-                     (long)(digits % p10));
+        fmt_snprintf(out, cap, dec ? "%lld.%0*lld" : "%lld", (long long)(digits / p10), dec,
+                     (long long)(digits % p10));
         return;
     }
     int e = 0; /* digits to one before the point */
