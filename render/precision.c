@@ -191,7 +191,7 @@ void precision_detail(render_frame_t *f, uint32_t i, const xform_t *to_eye)
     const render_prim_t *p = &f->prims[i];
     num_t reach = precision_box_reach(&p->bounds);
     switch (sp->kind) {
-    case SCENE_PRIM_TRIANGLE: /* in its own units: the loader's sliver check */
+    case SCENE_PRIM_TRIANGLE: /* in eye units; in its own the loader refuses slivers */
         precision_detail_one(f, i, num_min(num_abs(p->height1), num_abs(p->height2)), reach);
         break;
     case SCENE_PRIM_ELLIPSOID:
