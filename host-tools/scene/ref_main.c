@@ -42,6 +42,27 @@ static int ref_usage(FILE *out, int status)
     return status;
 }
 
+/* After RENDER_ERR_DETAIL on a text scene: "; it is in cluster NAME" when
+ * the primitive is in a cluster of its own (the compiled scene, and so
+ * the board's message, keeps no names).  Empty otherwise. */
+static void ref_cluster_note(const char *in, render_status_t rs, const render_frame_t *f,
+                             char *out, size_t cap)
+{
+    out[0] = 0;
+    if (rs != RENDER_ERR_DETAIL || !f || !scene_file_ends_with(in, ".scn"))
+        return;
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    if (sd_parse_file(in, &s, err, sizeof err) != 0)
+        return;
+    if (f->detail_prim < (uint32_t)s.n_prims) {
+        int c = s.prims[f->detail_prim].cluster;
+        if (c > 0 && c < s.n_clusters && s.clusters[c].name[0])
+            snprintf(out, cap, "; it is in cluster %s", s.clusters[c].name);
+    }
+    sd_free(&s);
+}
+
 /* The arena with the loaded scene in it: grown until the scene and one
  * prepared frame fit.  *mark is where the frame's memory starts. */
 static int ref_load(const char *in, const uint8_t *bytes, size_t len, void **mem,
@@ -68,9 +89,10 @@ static int ref_load(const char *in, const uint8_t *bytes, size_t len, void **mem
         if (rs == RENDER_ERR_ARENA)
             continue;
         if (rs != RENDER_OK) {
-            char why[256];
+            char why[256], note[64];
             precision_status_message(frame, rs, why, sizeof why);
-            fprintf(stderr, "links1 ref: %s: %s\n", in, why);
+            ref_cluster_note(in, rs, frame, note, sizeof note);
+            fprintf(stderr, "links1 ref: %s: %s%s\n", in, why, note);
             return -1;
         }
         arena_release_to(arena, *mark);
@@ -88,9 +110,10 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     render_frame_t *frame_data;
     render_status_t rs = render_prepare(scene, (uint32_t)frame, arena, &frame_data);
     if (rs != RENDER_OK) {
-        char why[256];
+        char why[256], note[64];
         precision_status_message(frame_data, rs, why, sizeof why);
-        fprintf(stderr, "links1 ref: %s frame %ld: %s\n", in, frame, why);
+        ref_cluster_note(in, rs, frame_data, note, sizeof note);
+        fprintf(stderr, "links1 ref: %s frame %ld: %s%s\n", in, frame, why, note);
         return -1;
     }
     struct image img = {scene->width, scene->height, NULL};

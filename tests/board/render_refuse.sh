@@ -8,11 +8,12 @@
 #  - a sphere of radius 1e-6 in a scene spanning 12, one step of fixed
 #    Q12.19 (issue 11): the fixed DM refuses it with the host build's
 #    message (links1 ref --arith fixed), and the next scene uploaded to the
-#    same board renders, equal to the host build.
+#    same board renders, equal to the host build; in a cluster of its own,
+#    links1 ref adds the cluster's name from the scene text.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
 board_ready render_refuse_bad render_refuse_next render_refuse_too_big \
-    render_refuse_detail render_refuse_detail_next || exit 0
+    render_refuse_detail render_refuse_detail_next render_refuse_detail_cluster || exit 0
 
 good=scenes/pov/spheres.scn
 "$LINKS1" compile $good -o "$RENDER_TMP/bad.l1s" >/dev/null 2>&1
@@ -81,3 +82,13 @@ else
     echo "FAIL render_refuse_detail: exit $rc (want 1), or the board's refusal is not the host build's: $want"
 fi
 render_same render_refuse_detail_next "$ref" "$RENDER_TMP/detail-next.ppm"
+
+sed 's/^box .*sphere.*/box { material m  min -6 -0.5 -4  max 6 0 8 }\ncluster speck { translate 0 1 0  sphere { material m centre 0 0 0 radius 0.000001 } }/' \
+    "$tiny" >"$RENDER_TMP/speck.scn"
+msg=$("$LINKS1" ref "$RENDER_TMP/speck.scn" --arith fixed -o "$RENDER_TMP/speck.ppm" 2>&1)
+if [[ $msg == *": ellipsoid 1 has a radius of 1.91e-6; "*"; it is in cluster speck" ]] &&
+    [ ! -e "$RENDER_TMP/speck.ppm" ]; then
+    echo "PASS render_refuse_detail_cluster"
+else
+    echo "FAIL render_refuse_detail_cluster: links1 ref said '$msg'"
+fi
