@@ -226,17 +226,9 @@ typedef struct {
     int32_t unit_exp;  /* every length above (positions, radii, half edges,
                           translations, component centres and radii) is the
                           scene text's times 2^unit_exp (render/limits.h,
-                          RENDER_NORM_EXP): exact in the IEEE builds */
-    int32_t tol_exp;   /* the tolerances of render/limits.h apply times
-                          2^tol_exp scene units: 0 unless the scene's largest
-                          |length| is under 1 */
+                          RENDER_NORM_EXP): exact in the IEEE builds; the
+                          tolerances of render/limits.h are in these units,
+                          so a scene scaled by 2^k renders the same */
 } scene_t;
-
-/* A tolerance of render/limits.h (NUM_C of a ..._VALUE, in scene units) in
- * the units the scene is stored in. */
-static inline num_t scene_tolerance(const scene_t *s, num_t value)
-{
-    return num_scale2(value, s->unit_exp + s->tol_exp);
-}
 
 #endif
