@@ -7,8 +7,9 @@
  *
  * Conventions used by every field below:
  * - Coordinates are left-handed, as in POV-Ray: x right, y up, z forward.
- *   Units are arbitrary "scene units"; the fixed-point build requires every
- *   world and eye coordinate to stay within +-NUM_COORD_LIMIT (fixed/num.h).
+ *   Lengths are the scene text's times 2^unit_exp (below: the largest is
+ *   8..16); the fixed-point build requires every world and eye coordinate
+ *   to stay within +-NUM_COORD_LIMIT (fixed/num.h) as stored.
  * - Colours and intensities are linear RGB in num_t, 1 = full scale; the
  *   final pixel is clamped to [0,1] and scaled to 0..255.
  * - Indices are 0-based; "none" is the constant SCENE_NONE.
