@@ -38,9 +38,12 @@
 #error "define exactly one of LINKS1_NUM_DOUBLE, LINKS1_NUM_FLOAT, LINKS1_NUM_FIXED"
 #endif
 
-/* Scene coordinates (world and eye) must stay within +-NUM_COORD_LIMIT in
- * every build so the fixed build keeps room for sums of a few coordinates
- * (lengths and dot products use 64-bit intermediates).  NUM_FAR, the
+/* Scene coordinates (world and eye, as stored: the loader scales the
+ * scene's lengths to a largest of 8..16, render/limits.h) and values without
+ * a unit (proto/scene_format.h SCN_MAX_FACTOR) must stay within
+ * +-NUM_COORD_LIMIT in every build so the fixed build keeps room for sums
+ * of a few coordinates (lengths and dot products use 64-bit
+ * intermediates).  NUM_FAR, the
  * distance treated as "beyond everything", is 4 NUM_COORD_LIMIT and must
  * stay below the fixed range (4096). */
 #define NUM_COORD_LIMIT 1000

@@ -52,8 +52,15 @@
 #define SCN_MAX_DEPTH 16                   /* ray recursion depth */
 #define SCN_MAX_PHONG 1024                 /* highlight exponent n */
 #define SCN_MAX_IOR 10.0f                  /* index of refraction */
-#define SCN_MAX_COORD 1000.0f /* |coordinate|, |matrix entry|, |weight|: the
-                                      fixed build's NUM_COORD_LIMIT */
+#define SCN_MAX_COORD 1.0e8f /* |length|: a coordinate, radius, half edge or
+                                 translation; the loader scales every length
+                                 by a power of two to a largest of 8..16
+                                 (render/limits.h, RENDER_NORM_EXP_MIN) */
+#define SCN_MAX_FACTOR 1000.0f /* |value without a unit|: a matrix entry, a
+                                  scale, a weight or threshold, a map
+                                  coordinate, bump depth, direction, normal:
+                                  taken as it is, within the fixed build's
+                                  NUM_COORD_LIMIT */
 #define SCN_MAX_REPEAT 1.0e4f              /* map repeats along u or v */
 #define SCN_MAX_INTENSITY 100.0f           /* a light's colour channel */
 #define SCN_MIN_FOV 0.1                    /* degrees (text form) */

@@ -40,7 +40,8 @@
 #define RENDER_STACK_BYTES(max_depth) \
     (RENDER_STACK_BASE + RENDER_STACK_PER_DEPTH * ((max_depth) + 1))
 
-/* Tolerances, in scene units (the fixed-point step is 2^-19 = 1.9e-6). */
+/* Tolerances, in the units the scene is stored in: its largest length
+ * scaled to 8..16 (below; the fixed-point step is 2^-19 = 1.9e-6). */
 #define RENDER_RAY_EPSILON_VALUE 2e-3   /* secondary rays start this far from
                                            the surface so they do not hit it
                                            again through rounding */
@@ -55,22 +56,19 @@
 /* Scaled to the scene (docs/renderer.md, "Lengths scaled to the scene"):
  * the loader multiplies every length by the power of two 2^unit_exp that
  * brings the scene's largest |length| into [2^RENDER_NORM_EXP,
- * 2^(RENDER_NORM_EXP+1)); every tolerance above, given in scene units, is
- * scaled the same way, so the IEEE builds give the same bits as unscaled.
- * A scene whose largest |length| is under 1 has its tolerances scaled too,
- * by 2^tol_exp, the power of two that brings that length into the same
- * octave: it renders as its enlarged copy would. */
+ * 2^(RENDER_NORM_EXP+1)); the tolerances above apply to the scaled scene,
+ * so a scene scaled by any power of two renders the same, bit for bit. */
 #ifndef RENDER_NORM_EXP /* overridable to measure (docs/RESULTS.md) */
 #define RENDER_NORM_EXP 3
 #endif
-#define RENDER_NORM_EXP_MIN (-24) /* 2^unit_exp and 2^tol_exp stay within */
+#define RENDER_NORM_EXP_MIN (-24) /* 2^unit_exp stays within */
 #define RENDER_NORM_EXP_MAX 40
 
 /* Precision (docs/renderer.md, "Precision never fails silently"). */
-#define RENDER_MIN_SPAN_VALUE 1.0       /* a scene spans at least this, in
-                                           tolerance units (scene units times
-                                           2^tol_exp): 500 ray offsets; smaller
-                                           scenes are refused (RENDER_ERR_EXTENT) */
+#define RENDER_MIN_SPAN_VALUE 1.0       /* a scene spans at least this (its
+                                           stored units, as the tolerances):
+                                           500 ray offsets; smaller scenes are
+                                           refused (RENDER_ERR_EXTENT) */
 #define RENDER_MIN_DETAIL_STEPS 2        /* a primitive's smallest size
                                            (semi-axis, half edge, triangle
                                            height, component radius) in
@@ -85,8 +83,8 @@
                                            this times the step between two
                                            texels: 4/255 at a full-scale step */
 #define RENDER_LOST_TOLERANCE_VALUE 5e-2 /* a primitive whose estimated hit
-                                           point error exceeds this, in scene
-                                           units, is imprecise; so is one whose
+                                           point error exceeds this (stored
+                                           units) is imprecise; so is one whose
                                            error across its flattest side
                                            exceeds half the ray offset */
 #endif

@@ -148,8 +148,8 @@ typedef struct {
                                       cluster maps, boxes): every pixel then
                                       counts as lost precision */
     num_t span;                    /* largest side of the scene's eye-space box */
-    num_t ray_epsilon;             /* RENDER_RAY_EPSILON_VALUE scaled to the
-                                      scene (scene_tolerance) */
+    num_t ray_epsilon;             /* RENDER_RAY_EPSILON_VALUE (in the
+                                      scene's stored units, render/limits.h) */
     uint32_t detail_prim;          /* the first primitive smaller than the
                                       arithmetic resolves where it lies
                                       (RENDER_ERR_DETAIL), RENDER_NO_PRIM
@@ -210,7 +210,7 @@ typedef enum {
                                 (not self-contained), or a bad base */
     RENDER_ERR_AREA,         /* an area empty or not inside the screen */
     RENDER_ERR_EXTENT,       /* the scene spans less than RENDER_MIN_SPAN_VALUE
-                                (times 2^tol_exp, scene.h): its detail is
+                                (render/limits.h): its detail is
                                 finer than the ray offset (render_prepare
                                 then still sets *out, for frame->span only) */
     RENDER_ERR_SCALE,        /* a cluster transform scales so little (or so

@@ -7,8 +7,9 @@
  *
  * Conventions used by every field below:
  * - Coordinates are left-handed, as in POV-Ray: x right, y up, z forward.
- *   Units are arbitrary "scene units"; the fixed-point build requires every
- *   world and eye coordinate to stay within +-NUM_COORD_LIMIT (fixed/num.h).
+ *   Lengths are the scene text's times 2^unit_exp (below: the largest is
+ *   8..16); the fixed-point build requires every world and eye coordinate
+ *   to stay within +-NUM_COORD_LIMIT (fixed/num.h) as stored.
  * - Colours and intensities are linear RGB in num_t, 1 = full scale; the
  *   final pixel is clamped to [0,1] and scaled to 0..255.
  * - Indices are 0-based; "none" is the constant SCENE_NONE.
@@ -226,17 +227,9 @@ typedef struct {
     int32_t unit_exp;  /* every length above (positions, radii, half edges,
                           translations, component centres and radii) is the
                           scene text's times 2^unit_exp (render/limits.h,
-                          RENDER_NORM_EXP): exact in the IEEE builds */
-    int32_t tol_exp;   /* the tolerances of render/limits.h apply times
-                          2^tol_exp scene units: 0 unless the scene's largest
-                          |length| is under 1 */
+                          RENDER_NORM_EXP): exact in the IEEE builds; the
+                          tolerances of render/limits.h are in these units,
+                          so a scene scaled by 2^k renders the same */
 } scene_t;
-
-/* A tolerance of render/limits.h (NUM_C of a ..._VALUE, in scene units) in
- * the units the scene is stored in. */
-static inline num_t scene_tolerance(const scene_t *s, num_t value)
-{
-    return num_scale2(value, s->unit_exp + s->tol_exp);
-}
 
 #endif

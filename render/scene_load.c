@@ -55,6 +55,18 @@ static scene_load_status_t load_bad(struct load *L, scene_load_status_t st, cons
     return load_fail(L, st, "%s%lu: %s", what, (unsigned long)i, problem);
 }
 
+/* The two limits of proto/scene_format.h, for a value out of range */
+#define LOAD_LIMITS "not finite or beyond +-%ld (a length) or +-%ld (no unit)"
+#define LOAD_LIMIT_ARGS (long)SCN_MAX_COORD, (long)SCN_MAX_FACTOR
+
+/* "<what><i>: <thing> not finite or beyond ..." */
+static scene_load_status_t load_range(struct load *L, const char *what, uint32_t i,
+                                      const char *thing)
+{
+    return load_fail(L, SCENE_LOAD_ERR_VALUE, "%s%lu: %s " LOAD_LIMITS, what, (unsigned long)i,
+                     thing, LOAD_LIMIT_ARGS);
+}
+
 #define LOAD_TRY(x)                                                          \
     do {                                                                     \
         scene_load_status_t st_ = (x);                                       \
@@ -141,14 +153,20 @@ static rgb_t load_rgb(const uint8_t *p)
     return c;
 }
 
-/* n consecutive reals at p, each within +-SCN_MAX_COORD */
-static int load_coords(const uint8_t *p, int n)
+/* n consecutive reals at p, each within +-hi */
+static int load_within(const uint8_t *p, int n, float hi)
 {
     for (int i = 0; i < n; i++)
-        if (!load_in(wire_get_u32(p + 4 * i), -SCN_MAX_COORD, SCN_MAX_COORD))
+        if (!load_in(wire_get_u32(p + 4 * i), -hi, hi))
             return 0;
     return 1;
 }
+
+/* n consecutive lengths at p (SCN_MAX_COORD) */
+static int load_coords(const uint8_t *p, int n) { return load_within(p, n, SCN_MAX_COORD); }
+
+/* n consecutive values without a unit at p (SCN_MAX_FACTOR) */
+static int load_factors(const uint8_t *p, int n) { return load_within(p, n, SCN_MAX_FACTOR); }
 
 static int load_units(const uint8_t *p, int n, float hi)
 {
@@ -280,9 +298,9 @@ static scene_load_status_t load_view(struct load *L, scene_t *s)
     if (frames < 1 || frames > SCN_MAX_FRAMES)
         return load_fail(L, SCENE_LOAD_ERR_LIMIT, "frame count %ld not 1..%ld", (long)frames,
                          (long)SCN_MAX_FRAMES);
-    if (!load_coords(p + SCN_VIEW_EYE, 9))
-        return load_fail(L, SCENE_LOAD_ERR_VALUE, "camera: a coordinate is not finite or beyond "
-                         "the coordinate limit");
+    if (!load_coords(p + SCN_VIEW_EYE, 6) || !load_factors(p + SCN_VIEW_UP, 3))
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "camera: a coordinate is " LOAD_LIMITS,
+                         LOAD_LIMIT_ARGS);
     if (!load_pos(wire_get_u32(p + SCN_VIEW_TAN_HALF_FOV_Y), SCN_MAX_TAN_HALF_FOV))
         return load_fail(L, SCENE_LOAD_ERR_VALUE, "camera: field of view out of range");
     if (!load_units(p + SCN_VIEW_BACKGROUND, 3, 1.0f))
@@ -319,9 +337,8 @@ static scene_load_status_t load_lights(struct load *L, scene_light_t *out)
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "light ", i, "unknown kind");
         if (!load_units(p + SCN_LIGHT_COLOUR, 3, SCN_MAX_INTENSITY))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "light ", i, "colour out of range");
-        if (!load_coords(p + SCN_LIGHT_POSITION, 6))
-            return load_bad(L, SCENE_LOAD_ERR_VALUE, "light ", i,
-                            "position or direction out of range");
+        if (!load_coords(p + SCN_LIGHT_POSITION, 3) || !load_factors(p + SCN_LIGHT_DIRECTION, 3))
+            return load_range(L, "light ", i, "position or direction");
         const uint8_t *d = p + SCN_LIGHT_DIRECTION;
         if (kind != SCN_LIGHT_POINT && load_zero(wire_get_u32(d)) &&
             load_zero(wire_get_u32(d + 4)) && load_zero(wire_get_u32(d + 8)))
@@ -368,7 +385,7 @@ static scene_load_status_t load_maps(struct load *L, scene_map_t *out, uint8_t *
         if (!load_pos(wire_get_u32(p + SCN_MAP_REPEAT_U), SCN_MAX_REPEAT) ||
             !load_pos(wire_get_u32(p + SCN_MAP_REPEAT_V), SCN_MAX_REPEAT))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "map ", i, "repeat not > 0 and finite");
-        if (!load_in(wire_get_u32(p + SCN_MAP_BUMP_DEPTH), 0.0f, SCN_MAX_COORD))
+        if (!load_in(wire_get_u32(p + SCN_MAP_BUMP_DEPTH), 0.0f, SCN_MAX_FACTOR))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "map ", i, "bump depth out of range");
         scene_map_t *m = &out[i];
         m->kind = kind == SCN_MAP_COLOUR ? SCENE_MAP_COLOUR : SCENE_MAP_BUMP;
@@ -431,8 +448,8 @@ static scene_load_status_t load_keys(struct load *L, scene_key_t *out)
 {
     for (uint32_t i = 0; i < L->sec[SCN_SEC_KEYS].count; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_KEYS, i);
-        if (!load_coords(p + SCN_KEY_TRANSLATE, 3) || !load_coords(p + SCN_KEY_SCALE, 3))
-            return load_bad(L, SCENE_LOAD_ERR_VALUE, "key ", i, "value out of range");
+        if (!load_coords(p + SCN_KEY_TRANSLATE, 3) || !load_factors(p + SCN_KEY_SCALE, 3))
+            return load_range(L, "key ", i, "translation or scale");
         if (wire_get_u32(p + SCN_KEY_FRAME) >= SCN_MAX_FRAMES)
             return load_bad(L, SCENE_LOAD_ERR_LIMIT, "key ", i, "frame number over the limit");
         for (int k = 0; k < 4; k++)
@@ -487,9 +504,10 @@ static scene_load_status_t load_clusters(struct load *L, const scene_key_t *keys
             if (keys[kf + k].frame <= keys[kf + k - 1].frame)
                 return load_bad(L, SCENE_LOAD_ERR_TREE, "cluster ", i,
                                 "key frames do not rise");
-        if (!load_coords(p + SCN_CLUSTER_MATRIX, 12))
-            return load_bad(L, SCENE_LOAD_ERR_VALUE, "cluster ", i,
-                            "matrix entry not finite or beyond the coordinate limit");
+        for (int k = 0; k < 12; k++)
+            if (!load_within(p + SCN_CLUSTER_MATRIX + 4 * k, 1,
+                             k % 4 == 3 ? SCN_MAX_COORD : SCN_MAX_FACTOR))
+                return load_range(L, "cluster ", i, "a matrix entry");
         scene_cluster_t *c = &out[i];
         c->parent = i == 0 ? SCENE_NO_CLUSTER : parent;
         for (int r = 0; r < 3; r++)
@@ -510,7 +528,7 @@ static scene_load_status_t load_components(struct load *L, scene_density_compone
         uint32_t weight = wire_get_u32(p + SCN_COMPONENT_WEIGHT);
         if (!load_coords(p + SCN_COMPONENT_CENTRE, 3) ||
             !load_pos(wire_get_u32(p + SCN_COMPONENT_RADIUS), SCN_MAX_COORD) ||
-            !load_coords(p + SCN_COMPONENT_WEIGHT, 1) || load_zero(weight))
+            !load_factors(p + SCN_COMPONENT_WEIGHT, 1) || load_zero(weight))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "density component ", i,
                             "centre, radius (> 0) or weight (non-zero) out of range");
         out[i].centre = load_lvec3(L, p + SCN_COMPONENT_CENTRE);
@@ -560,9 +578,9 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out)
         if (clu >= n_clu)
             return load_bad(L, SCENE_LOAD_ERR_INDEX, "prim ", i, "cluster index out of range");
         int nv = load_prim_values[kind];
-        if (!load_coords(v, nv))
-            return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
-                            "a value is not finite or beyond the coordinate limit");
+        int nlen = kind == SCN_PRIM_TRIANGLE ? 9 : kind == SCN_PRIM_DENSITY ? 0 : nv;
+        if (!load_coords(v, nlen) || !load_factors(v + 4 * nlen, nv - nlen))
+            return load_range(L, "prim ", i, "a value is");
         for (int k = nv; k < SCN_PRIM_MAX_VALUES; k++)
             if (wire_get_u32(v + 4 * k) != 0)
                 return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i, "unused value not zero");
@@ -603,7 +621,7 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out)
             }
             break;
         default: /* SCN_PRIM_DENSITY */
-            if (!load_pos(wire_get_u32(v), SCN_MAX_COORD))
+            if (!load_pos(wire_get_u32(v), SCN_MAX_FACTOR))
                 return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i, "threshold is not > 0");
             if (count < 1 || count > SCN_MAX_DENSITY_COMPONENTS)
                 return load_bad(L, SCENE_LOAD_ERR_LIMIT, "prim ", i,
@@ -640,7 +658,7 @@ static scene_load_status_t load_normals(struct load *L, scene_prim_t *prims,
                             "prim index not above the previous record's");
         if (prims[prim].kind != SCENE_PRIM_TRIANGLE)
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "normals ", i, "prim is not a triangle");
-        if (!load_coords(p + SCN_NORMALS_N, 9))
+        if (!load_factors(p + SCN_NORMALS_N, 9))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "normals ", i, "a value is not finite");
         for (int k = 0; k < 3; k++) {
             out[i].n[k] = load_vec3(p + SCN_NORMALS_N + 12 * k);
@@ -669,8 +687,13 @@ static int32_t load_max_exp(const uint8_t *p, int n, int32_t most)
     return most;
 }
 
-/* unit_exp and tol_exp (scene.h): from the exponent of the largest
- * |length| the scene holds, before any value enters num_t. */
+/* unit_exp (scene.h): from the exponent of the largest
+ * |length| the scene holds, before any value enters num_t.  Every length
+ * the scene format allows reaches 8..16 (unit_exp is not clamped above);
+ * a value without a unit enters num_t as it is. */
+_Static_assert((long long)SCN_MAX_COORD < (1LL << (RENDER_NORM_EXP + 1 - RENDER_NORM_EXP_MIN)),
+               "SCN_MAX_COORD beyond what RENDER_NORM_EXP_MIN scales to 8..16");
+_Static_assert((long)SCN_MAX_FACTOR <= NUM_COORD_LIMIT, "SCN_MAX_FACTOR beyond the fixed range");
 static void load_scale(struct load *L, scene_t *s)
 {
     int32_t most = load_max_exp(load_rec(L, SCN_SEC_VIEW, 0) + SCN_VIEW_EYE, 6, 0);
@@ -693,17 +716,14 @@ static void load_scale(struct load *L, scene_t *s)
         int n = kind == SCN_PRIM_TRIANGLE ? 9 : kind == SCN_PRIM_DENSITY ? 0 : 6;
         most = load_max_exp(p + SCN_PRIM_VALUES, n, most);
     }
-    int e = 0, t = 0;
+    int e = 0;
     if (most != 0) {
         int32_t mag = most - 127; /* the largest |length| is in [2^mag, 2^(mag+1)) */
         e = RENDER_NORM_EXP - mag;
-        t = mag < -1 ? mag - RENDER_NORM_EXP : 0; /* under 1/2: refused before */
     }
     e = e < RENDER_NORM_EXP_MIN ? RENDER_NORM_EXP_MIN : e > RENDER_NORM_EXP_MAX ? RENDER_NORM_EXP_MAX : e;
-    t = t < RENDER_NORM_EXP_MIN ? RENDER_NORM_EXP_MIN : t;
     L->unit_exp = e;
     s->unit_exp = e;
-    s->tol_exp = t;
 }
 
 /* ---------------------------------------------------------------- entry */

@@ -147,10 +147,10 @@ static int imp_place(struct imp *im)
                             n->name, nest, SCN_MAX_CLUSTER_NESTING);
         }
         for (int i = 0; i < 12; i++) {
-            if ((i % 4) != 3 && fabs(n->m[i]) > SCN_MAX_COORD) {
+            if ((i % 4) != 3 && fabs(n->m[i]) > SCN_MAX_FACTOR) {
                 free(depth);
                 return imp_fail(im, "node '%s': a transform entry is %g, beyond +-%g",
-                                n->name, n->m[i], (double)SCN_MAX_COORD);
+                                n->name, n->m[i], (double)SCN_MAX_FACTOR);
             }
             if ((i % 4) == 3)
                 big = fmax(big, fabs(n->m[i]));
@@ -165,12 +165,12 @@ static int imp_place(struct imp *im)
                     lo[a] = fmin(lo[a], w[a]);
                     hi[a] = fmax(hi[a], w[a]);
                 }
-                if (me->uv && (fabs(me->uv[2 * v]) > SCN_MAX_COORD ||
-                               fabs(me->uv[2 * v + 1]) > SCN_MAX_COORD)) {
+                if (me->uv && (fabs(me->uv[2 * v]) > SCN_MAX_FACTOR ||
+                               fabs(me->uv[2 * v + 1]) > SCN_MAX_FACTOR)) {
                     free(depth);
                     return imp_fail(im, "mesh '%s': vertex %d has uv %g %g, beyond +-%g",
                                     me->name, v, me->uv[2 * v], me->uv[2 * v + 1],
-                                    (double)SCN_MAX_COORD);
+                                    (double)SCN_MAX_FACTOR);
                 }
             }
         }

@@ -35,6 +35,12 @@ void parse_coord3(struct parser *p, const char *what, double v[3])
         v[i] = lex_number_in(&p->lx, what, -SCN_MAX_COORD, SCN_MAX_COORD);
 }
 
+void parse_factor3(struct parser *p, const char *what, double v[3])
+{
+    for (int i = 0; i < 3; i++)
+        v[i] = lex_number_in(&p->lx, what, -SCN_MAX_FACTOR, SCN_MAX_FACTOR);
+}
+
 void parse_unit3(struct parser *p, const char *what, double v[3])
 {
     for (int i = 0; i < 3; i++)
@@ -113,7 +119,7 @@ static void parse_camera(struct parser *p)
             parse_coord3(p, "look_at", v->look_at);
         } else if (lex_is_word(&p->lx, "up")) {
             lex_next(&p->lx);
-            parse_coord3(p, "up", v->up);
+            parse_factor3(p, "up", v->up);
         } else if (lex_is_word(&p->lx, "fov")) {
             lex_next(&p->lx);
             v->fov = lex_number_in(&p->lx, "fov (degrees)", SCN_MIN_FOV, SCN_MAX_FOV);
@@ -238,7 +244,7 @@ static void parse_light(struct parser *p)
             have_pos = 1;
         } else if (lex_is_word(&p->lx, "direction") && k != SCN_LIGHT_POINT) {
             lex_next(&p->lx);
-            parse_coord3(p, "direction", l.direction);
+            parse_factor3(p, "direction", l.direction);
             if (parse_len3_zero(l.direction))
                 lex_error(&p->lx, "light direction is zero");
             have_dir = 1;

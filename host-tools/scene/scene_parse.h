@@ -31,7 +31,8 @@ struct parser {
 /* helpers (scene_parse.c); each fails through lex_error */
 void *parse_grow(struct parser *p, void *arr, int *cap, int n, size_t elem, int limit,
                  const char *what);
-void parse_coord3(struct parser *p, const char *what, double v[3]);
+void parse_coord3(struct parser *p, const char *what, double v[3]); /* lengths */
+void parse_factor3(struct parser *p, const char *what, double v[3]); /* no unit */
 void parse_unit3(struct parser *p, const char *what, double v[3]);
 int parse_on_off(struct parser *p, const char *what);
 void parse_open(struct parser *p, const char *stmt);

@@ -86,7 +86,7 @@ void parse_map(struct parser *p)
             m->repeat_v = lex_number_in(&p->lx, "repeat v", 1e-3, SCN_MAX_REPEAT);
         } else if (lex_is_word(&p->lx, "depth") && m->kind == SCN_MAP_BUMP) {
             lex_next(&p->lx);
-            m->bump_depth = lex_number_in(&p->lx, "bump depth", 0, SCN_MAX_COORD);
+            m->bump_depth = lex_number_in(&p->lx, "bump depth", 0, SCN_MAX_FACTOR);
         } else {
             parse_unknown(p, m->kind == SCN_MAP_BUMP ? "bump map" : "colour map");
         }

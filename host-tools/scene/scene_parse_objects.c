@@ -36,10 +36,10 @@ int parse_transform(struct parser *p, double m[12])
     } else if (lex_is_word(&p->lx, "scale")) {
         lex_next(&p->lx);
         double v[3];
-        v[0] = lex_number_in(&p->lx, "scale", -SCN_MAX_COORD, SCN_MAX_COORD);
+        v[0] = lex_number_in(&p->lx, "scale", -SCN_MAX_FACTOR, SCN_MAX_FACTOR);
         if (p->lx.kind == LEX_NUMBER) {
-            v[1] = lex_number_in(&p->lx, "scale", -SCN_MAX_COORD, SCN_MAX_COORD);
-            v[2] = lex_number_in(&p->lx, "scale", -SCN_MAX_COORD, SCN_MAX_COORD);
+            v[1] = lex_number_in(&p->lx, "scale", -SCN_MAX_FACTOR, SCN_MAX_FACTOR);
+            v[2] = lex_number_in(&p->lx, "scale", -SCN_MAX_FACTOR, SCN_MAX_FACTOR);
         } else {
             v[1] = v[2] = v[0];
         }
@@ -49,7 +49,10 @@ int parse_transform(struct parser *p, double m[12])
     } else if (lex_is_word(&p->lx, "matrix")) {
         lex_next(&p->lx);
         for (int i = 0; i < 12; i++)
-            t[i] = lex_number_in(&p->lx, "matrix entry", -SCN_MAX_COORD, SCN_MAX_COORD);
+            t[i] = i % 4 == 3 ? lex_number_in(&p->lx, "matrix translation", -SCN_MAX_COORD,
+                                              SCN_MAX_COORD)
+                              : lex_number_in(&p->lx, "matrix entry", -SCN_MAX_FACTOR,
+                                              SCN_MAX_FACTOR);
         double det = t[0] * (t[5] * t[10] - t[6] * t[9]) - t[1] * (t[4] * t[10] - t[6] * t[8]) +
                      t[2] * (t[4] * t[9] - t[5] * t[8]);
         if (fabs(det) < 1e-12)
@@ -59,9 +62,10 @@ int parse_transform(struct parser *p, double m[12])
     }
     parse_apply(m, t);
     for (int i = 0; i < 12; i++)
-        if (fabs(m[i]) > SCN_MAX_COORD)
-            lex_error(&p->lx, "the combined transform has an entry beyond %g",
-                      (double)SCN_MAX_COORD);
+        if (fabs(m[i]) > (i % 4 == 3 ? SCN_MAX_COORD : SCN_MAX_FACTOR))
+            lex_error(&p->lx, "the combined transform has %s beyond %g", i % 4 == 3 ?
+                      "a translation" : "an entry", i % 4 == 3 ? (double)SCN_MAX_COORD :
+                      (double)SCN_MAX_FACTOR);
     return 1;
 }
 
@@ -93,10 +97,10 @@ void parse_key(struct parser *p, int c)
                 k.rotate[i] = lex_number_in(&p->lx, "rotate (degrees)", -3600, 3600);
         } else if (lex_is_word(&p->lx, "scale")) {
             lex_next(&p->lx);
-            k.scale[0] = lex_number_in(&p->lx, "scale", -SCN_MAX_COORD, SCN_MAX_COORD);
+            k.scale[0] = lex_number_in(&p->lx, "scale", -SCN_MAX_FACTOR, SCN_MAX_FACTOR);
             if (p->lx.kind == LEX_NUMBER) {
-                k.scale[1] = lex_number_in(&p->lx, "scale", -SCN_MAX_COORD, SCN_MAX_COORD);
-                k.scale[2] = lex_number_in(&p->lx, "scale", -SCN_MAX_COORD, SCN_MAX_COORD);
+                k.scale[1] = lex_number_in(&p->lx, "scale", -SCN_MAX_FACTOR, SCN_MAX_FACTOR);
+                k.scale[2] = lex_number_in(&p->lx, "scale", -SCN_MAX_FACTOR, SCN_MAX_FACTOR);
             } else {
                 k.scale[1] = k.scale[2] = k.scale[0];
             }
@@ -132,7 +136,7 @@ static int parse_prim_material(struct parser *p, struct sd_prim *pr)
 /* A vertex normal of a smooth triangle, made unit length. */
 static void parse_vertex_normal(struct parser *p, double n[3])
 {
-    parse_coord3(p, "vertex normal", n);
+    parse_factor3(p, "vertex normal", n);
     double len = sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     if (!(len > 1e-6))
         lex_error(&p->lx, "a vertex normal of length %g: it has no direction", len);
@@ -159,8 +163,8 @@ static void parse_triangle(struct parser *p, struct sd_prim *pr)
             if (nuv == 3)
                 lex_error(&p->lx, "a triangle has three uv pairs");
             lex_next(&p->lx);
-            v[9 + nuv] = lex_number_in(&p->lx, "u", -SCN_MAX_COORD, SCN_MAX_COORD);
-            v[12 + nuv] = lex_number_in(&p->lx, "v", -SCN_MAX_COORD, SCN_MAX_COORD);
+            v[9 + nuv] = lex_number_in(&p->lx, "u", -SCN_MAX_FACTOR, SCN_MAX_FACTOR);
+            v[12 + nuv] = lex_number_in(&p->lx, "v", -SCN_MAX_FACTOR, SCN_MAX_FACTOR);
             nuv++;
         } else if (lex_is_word(&p->lx, "n")) {
             if (nn == 3)
@@ -254,7 +258,7 @@ static void parse_density(struct parser *p, struct sd_prim *pr)
             continue;
         if (lex_is_word(&p->lx, "threshold")) {
             lex_next(&p->lx);
-            pr->v[0] = lex_number_in(&p->lx, "threshold", 1e-6, SCN_MAX_COORD);
+            pr->v[0] = lex_number_in(&p->lx, "threshold", 1e-6, SCN_MAX_FACTOR);
             have_t = 1;
         } else if (lex_is_word(&p->lx, "component")) {
             lex_next(&p->lx);
@@ -265,7 +269,7 @@ static void parse_density(struct parser *p, struct sd_prim *pr)
             c.radius = lex_number_in(&p->lx, "component radius", 1e-6, SCN_MAX_COORD);
             if (p->lx.kind == LEX_NUMBER && p->lx.num == 0)
                 lex_error(&p->lx, "component weight is zero");
-            c.weight = lex_number_in(&p->lx, "component weight", -SCN_MAX_COORD, SCN_MAX_COORD);
+            c.weight = lex_number_in(&p->lx, "component weight", -SCN_MAX_FACTOR, SCN_MAX_FACTOR);
             s->components = parse_grow(p, s->components, &p->cap_components, s->n_components,
                                        sizeof *s->components, SCN_MAX_COMPONENTS,
                                        "density components");

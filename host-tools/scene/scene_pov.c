@@ -15,9 +15,36 @@
 
 #include "host-tools/scene/scene_desc.h"
 
-#define POV_PARALLEL_DISTANCE 1000.0 /* where a parallel light's location goes,
-                                        beyond any scene within the limits */
+#define POV_PARALLEL_DISTANCE 1000.0 /* where a parallel light's location goes
+                                        (at least; 4 times pov_extent beyond it) */
 #define POV_MAX_NOTES 16
+
+/* A bound on the scene's |coordinates| in world space, unless its clusters
+ * enlarge it: the camera, the lights, every cluster's and key's translation
+ * added up, plus the largest length of a primitive. */
+static double pov_extent(const struct sd_scene *s)
+{
+    double most = 0, moved = 0, prim = 0;
+    for (int c = 0; c < 3; c++) {
+        most = fmax(most, fmax(fabs(s->view.eye[c]), fabs(s->view.look_at[c])));
+        for (int i = 0; i < s->n_lights; i++)
+            most = fmax(most, fabs(s->lights[i].position[c]));
+        for (int i = 0; i < s->n_clusters; i++)
+            moved += fabs(s->clusters[i].m[4 * c + 3]);
+        for (int i = 0; i < s->n_keys; i++)
+            moved += fabs(s->keys[i].translate[c]);
+    }
+    for (int i = 0; i < s->n_prims; i++) {
+        int kind = s->prims[i].kind;
+        int n = kind == SCN_PRIM_TRIANGLE ? 9 : kind == SCN_PRIM_DENSITY ? 0 : 6;
+        for (int k = 0; k < n; k++)
+            prim = fmax(prim, fabs(s->prims[i].v[k]));
+    }
+    for (int i = 0; i < s->n_components; i++)
+        for (int c = 0; c < 3; c++)
+            prim = fmax(prim, fabs(s->components[i].centre[c]) + s->components[i].radius);
+    return fmax(most, moved + 2 * prim);
+}
 
 struct pov_notes {
     const char *text[POV_MAX_NOTES];
@@ -201,12 +228,13 @@ int sd_export_pov(const struct sd_scene *s, int frame, int strict, const char *p
     for (int i = 0; i < s->n_lights; i++) {
         const struct sd_light *l = &s->lights[i];
         double pos[3], at[3];
+        double far = fmax(POV_PARALLEL_DISTANCE, 4 * pov_extent(s));
         if (l->kind == SCN_LIGHT_PARALLEL) {
             double len = sqrt(l->direction[0] * l->direction[0] +
                               l->direction[1] * l->direction[1] +
                               l->direction[2] * l->direction[2]);
             for (int c = 0; c < 3; c++) {
-                pos[c] = -l->direction[c] / len * POV_PARALLEL_DISTANCE;
+                pos[c] = -l->direction[c] / len * far;
                 at[c] = 0;
             }
         } else {

@@ -1,16 +1,20 @@
 #!/usr/bin/env bash
 # Lengths scaled to the scene (docs/renderer.md): the sweep's scene of three
 # shapes on a floor shrunk by 1,000 (its largest length 0.008, stored times
-# 2^10) and enlarged by 100 (800, stored times 2^-6) renders on the board
-# in fixed point bit for bit as `links1 ref --arith fixed`, 2 NCs, 64x48.
+# 2^10), enlarged by 100 (800, stored times 2^-6) and by 1,000 (8000, stored
+# times 2^-9; beyond the old coordinate limit of 1000) renders on the board
+# in fixed point and in float bit for bit as `links1 ref --arith fixed` /
+# `--arith float`, 2 NCs, 64x48.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
 board_ready render_scaled || exit 0
-for knob in 0.001 100; do
+for knob in 0.001 100 1000; do
     scn="$RENDER_TMP/scaled_$knob.scn"
     python3 tests/sweeps/make_scene.py scale "$knob" --size 64x48 >"$scn" || {
         echo "FAIL render_scaled_$knob: make_scene.py failed"
         continue
     }
-    render_grid_one "$scn" fixed 2 dynamic 64x48
+    for arith in fixed float; do
+        render_grid_one "$scn" "$arith" 2 dynamic 64x48
+    done
 done

@@ -356,12 +356,12 @@ static void test_bad_out_of_range_and_fit(void)
     struct model m;
     char err[SD_ERR_MAX] = "";
     CHECK(import(MODELS "huge.obj", 0, &s, &res, &m, err, sizeof err) != 0);
-    CHECK(strstr(err, "x -2500..2500") && strstr(err, "--fit"));
+    CHECK(strstr(err, "x -2.5e+08..2.5e+08") && strstr(err, "+-1e+08") && strstr(err, "--fit"));
     sd_free(&s), model_free(&m);
     CHECK(import(MODELS "huge.obj", 1, &s, &res, &m, err, sizeof err) == 0);
-    CHECK_NEAR(res.scale, IMPORT_FIT_EXTENT / 3000, 1e-12);
+    CHECK_NEAR(res.scale, IMPORT_FIT_EXTENT / 3e8, 1e-18);
     CHECK_NEAR(res.hi[1], IMPORT_FIT_EXTENT, 1e-9);
-    CHECK_NEAR(s.prims[0].v[3], 2500 * IMPORT_FIT_EXTENT / 3000, 1e-9);
+    CHECK_NEAR(s.prims[0].v[3], 2.5e8 * IMPORT_FIT_EXTENT / 3e8, 1e-9);
     sd_free(&s), model_free(&m);
 }
 

@@ -117,7 +117,6 @@ static void test_round_trip(void)
     /* lengths scaled to the scene: the largest, 5 (eye, spot light), is
      * stored as 10, in [2^RENDER_NORM_EXP, 2^(RENDER_NORM_EXP+1)) */
     CHECK_EQ_INT(s.unit_exp, RENDER_NORM_EXP - 2);
-    CHECK_EQ_INT(s.tol_exp, 0);
     CHECK_NEAR(num_to_double(s.camera.eye.z), -5.0 * (1 << s.unit_exp), 0);
     CHECK_EQ_INT(s.options.shadows, 0);
     CHECK_EQ_INT(s.options.refractionless, 1);
@@ -379,8 +378,30 @@ static void test_bad_indices_and_values(void)
                  SCENE_LOAD_ERR_VALUE, "prim 4: a semi-axis");
     expect_field(b, len, SCN_SEC_PRIMS, 2 * P + SCN_PRIM_VALUES, 0x7fc00000u, 4,
                  SCENE_LOAD_ERR_VALUE, "prim 2: a value is not finite");
-    expect_field(b, len, SCN_SEC_PRIMS, 2 * P + SCN_PRIM_VALUES, f32_bits(2000.0f), 4,
-                 SCENE_LOAD_ERR_VALUE, "prim 2: a value");
+    /* lengths to SCN_MAX_COORD, values without a unit to SCN_MAX_FACTOR,
+     * and the message names both */
+    expect_field(b, len, SCN_SEC_PRIMS, 2 * P + SCN_PRIM_VALUES, f32_bits(2e8f), 4,
+                 SCENE_LOAD_ERR_VALUE, "prim 2: a value is not finite or beyond "
+                 "+-100000000 (a length) or +-1000 (no unit)");
+    expect_field(b, len, SCN_SEC_PRIMS, 2 * P + SCN_PRIM_VALUES + 4 * 9, f32_bits(2000.0f), 4,
+                 SCENE_LOAD_ERR_VALUE, "prim 2: a value is not finite or beyond +-");
+    expect_field(b, len, SCN_SEC_PRIMS, 3 * P + SCN_PRIM_VALUES, f32_bits(2000.0f), 4,
+                 SCENE_LOAD_ERR_VALUE, "prim 3: a value is not finite or beyond +-");
+    expect_field(b, len, SCN_SEC_VIEW, SCN_VIEW_EYE + 4, f32_bits(-2e8f), 4,
+                 SCENE_LOAD_ERR_VALUE, "camera: a coordinate is not finite or beyond "
+                 "+-100000000 (a length)");
+    expect_field(b, len, SCN_SEC_VIEW, SCN_VIEW_UP, f32_bits(2000.0f), 4,
+                 SCENE_LOAD_ERR_VALUE, "camera: a coordinate is not finite or beyond +-");
+    expect_field(b, len, SCN_SEC_LIGHTS, SCN_LIGHT_POSITION, f32_bits(2e8f), 4,
+                 SCENE_LOAD_ERR_VALUE, "light 0: position or direction not finite or beyond");
+    expect_field(b, len, SCN_SEC_CLUSTERS, C + SCN_CLUSTER_MATRIX + 4 * 3, f32_bits(2e8f), 4,
+                 SCENE_LOAD_ERR_VALUE, "cluster 1: a matrix entry not finite or beyond");
+    expect_field(b, len, SCN_SEC_CLUSTERS, C + SCN_CLUSTER_MATRIX, f32_bits(2000.0f), 4,
+                 SCENE_LOAD_ERR_VALUE, "cluster 1: a matrix entry not finite or beyond");
+    expect_field(b, len, SCN_SEC_KEYS, SCN_KEY_SCALE, f32_bits(2000.0f), 4,
+                 SCENE_LOAD_ERR_VALUE, "key 0: translation or scale not finite or beyond");
+    expect_field(b, len, SCN_SEC_COMPONENTS, SCN_COMPONENT_WEIGHT, f32_bits(2000.0f), 4,
+                 SCENE_LOAD_ERR_VALUE, "density component 0");
     expect_field(b, len, SCN_SEC_PRIMS, 0 * P + SCN_PRIM_VALUES + 4 * 10, f32_bits(1.0f), 4,
                  SCENE_LOAD_ERR_VALUE, "unused value");
     /* the tree: a cycle (parent not below), the root with a parent */
@@ -393,7 +414,7 @@ static void test_bad_indices_and_values(void)
     expect_field(b, len, SCN_SEC_CLUSTERS, C + SCN_CLUSTER_KEY_COUNT, 3, 4,
                  SCENE_LOAD_ERR_INDEX, "cluster 1: key range");
     expect_field(b, len, SCN_SEC_CLUSTERS, C + SCN_CLUSTER_MATRIX, 0xff800000u, 4,
-                 SCENE_LOAD_ERR_VALUE, "cluster 1: matrix");
+                 SCENE_LOAD_ERR_VALUE, "cluster 1: a matrix entry");
     expect_field(b, len, SCN_SEC_KEYS, SCN_KEY_SIZE + SCN_KEY_FRAME, 0, 4,
                  SCENE_LOAD_ERR_TREE, "key frames do not rise");
     expect_field(b, len, SCN_SEC_KEYS, SCN_KEY_ROTATION, f32_bits(0.5f), 4,
@@ -438,6 +459,42 @@ static void test_bad_indices_and_values(void)
     free(b);
 }
 
+/* A scene at the length limit (SCN_MAX_COORD) loads in every arithmetic,
+ * its lengths scaled to 8..16; one beyond it is refused by the compiler,
+ * naming the limit. */
+static void test_length_limit(void)
+{
+    const char *text = "camera { eye 0 3e7 -1e8 look_at 0 0 0 }\n"
+                       "light point { position 1e8 1e8 -1e8 }\nmaterial m { }\n"
+                       "sphere { material m centre 0 0 0 radius 5e7 }\n";
+    struct sd_scene sd;
+    char err[SD_ERR_MAX];
+    uint8_t *buf = NULL;
+    size_t len = 0;
+    CHECK_EQ_INT(sd_parse_text("t.scn", text, &sd, err, sizeof err), 0);
+    CHECK_EQ_INT(sd_compile(&sd, &buf, &len, err, sizeof err), 0);
+    sd_free(&sd);
+    static uint8_t mem[ARENA_BYTES];
+    arena_t arena;
+    arena_init(&arena, mem, sizeof mem);
+    scene_t s;
+    scene_load_error_t e;
+    CHECK_EQ_INT(scene_load(buf, len, &arena, &s, &e), SCENE_LOAD_OK);
+    CHECK_EQ_INT(s.unit_exp, RENDER_NORM_EXP - 26); /* 1e8 is in [2^26, 2^27) */
+    CHECK_NEAR(num_to_double(s.camera.eye.z), -1e8 * ldexp(1, s.unit_exp), VAL_TOL * 16);
+    CHECK_NEAR(LEN(&s, s.prims[0].shape.ellipsoid.radius.x), 5e7, 5e7 * VAL_TOL);
+    free(buf);
+    const char *beyond = "camera { eye 0 3e7 -2e8 look_at 0 0 0 }\n"
+                         "light point { position 0 5 0 }\nmaterial m { }\n"
+                         "sphere { material m radius 1 }\n";
+    CHECK(sd_parse_text("t.scn", beyond, &sd, err, sizeof err) != 0);
+    CHECK(strstr(err, "eye must be -1e+08..1e+08, not -2e8") != NULL);
+    const char *scale = "light point { position 0 5 0 }\nmaterial m { }\n"
+                        "cluster c { scale 2000 sphere { material m radius 1 } }\n";
+    CHECK(sd_parse_text("t.scn", scale, &sd, err, sizeof err) != 0);
+    CHECK(strstr(err, "scale must be -1000..1000, not 2000") != NULL);
+}
+
 static void test_small_arena(void)
 {
     size_t len;
@@ -463,6 +520,7 @@ int main(void)
     RUN(test_every_bit_flip);
     RUN(test_section_table);
     RUN(test_bad_indices_and_values);
+    RUN(test_length_limit);
     RUN(test_small_arena);
     return check_exit();
 }

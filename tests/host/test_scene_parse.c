@@ -144,6 +144,34 @@ static void test_errors_name_line_and_column(void)
     EXPECT_ERROR(HEAD "density { material m threshold 1 }\n", 3, 34, "at least one component");
     EXPECT_ERROR(HEAD "sphere { material m radius 1 } \"open\n", 3, 32, "string not closed");
     EXPECT_ERROR("material m { }\nsphere { material m radius 1 }\n", 3, 1, "no light");
+    /* lengths to SCN_MAX_COORD (1e8), values without a unit to SCN_MAX_FACTOR */
+    EXPECT_ERROR(HEAD "sphere { material m centre 2e8 0 0 radius 1 }\n", 3, 28,
+                 "centre must be -1e+08..1e+08, not 2e8");
+    EXPECT_ERROR(HEAD "cluster c { translate 0 -1.5e8 0 }\n", 3, 25,
+                 "translate must be -1e+08..1e+08, not -1.5e8");
+    EXPECT_ERROR(HEAD "cluster c { matrix 2000 0 0 0 0 1 0 0 0 0 1 0 }\n", 3, 20,
+                 "matrix entry must be -1000..1000, not 2000");
+    EXPECT_ERROR(HEAD "cluster c { matrix 1 0 0 2e8 0 1 0 0 0 0 1 0 }\n", 3, 26,
+                 "matrix translation must be -1e+08..1e+08, not 2e8");
+    EXPECT_ERROR(HEAD "cluster c { scale 100 scale 100 }\n", 3, 33,
+                 "the combined transform has an entry beyond 1000");
+    EXPECT_ERROR(HEAD "triangle { material m v 0 0 0 v 1 0 0 v 0 1 0 uv 2000 0 }\n", 3, 50,
+                 "u must be -1000..1000, not 2000");
+}
+
+/* A scene whose lengths reach SCN_MAX_COORD parses. */
+static void test_length_limit_accepted(void)
+{
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    CHECK_EQ_INT(sd_parse_text("t.scn",
+                               "camera { eye 0 0 -1e8 look_at 0 0 0 }\n" HEAD
+                               "cluster c { scale 1000 translate 1e8 0 0\n"
+                               "  sphere { material m centre 0 -1e8 0 radius 1e8 } }\n",
+                               &s, err, sizeof err),
+                 0);
+    CHECK_NEAR(s.prims[0].v[3], 1e8, 0);
+    sd_free(&s);
 }
 
 static void test_deep_nesting_refused(void)
@@ -164,6 +192,7 @@ int main(void)
     RUN(test_transforms_compose_in_order);
     RUN(test_keyframe_interpolation);
     RUN(test_errors_name_line_and_column);
+    RUN(test_length_limit_accepted);
     RUN(test_deep_nesting_refused);
     return check_exit();
 }

@@ -75,7 +75,7 @@ import_refused library "bad_syntax.gltf: the model library cannot read it" \
     tests/models/bad_syntax.gltf --camera auto
 import_refused nonfinite "vertex 2 is not finite" tests/models/nonfinite.obj --camera auto
 import_refused missing_texture "no_such_texture.png" tests/models/missing_tex.obj --camera auto
-import_refused extent "spans x -2500..2500" tests/models/huge.obj --camera auto
+import_refused extent "spans x -2.5e+08..2.5e+08" tests/models/huge.obj --camera auto
 import_refused no_camera "no camera (--camera auto frames it)" tests/models/tetra.ply
 import_refused bad_option_camera "--camera 'front': want auto" tests/models/tetra.ply --camera front
 

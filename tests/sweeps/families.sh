@@ -2,7 +2,7 @@
 # knobs (sourced by sweep.sh and auto.sh).
 # family "knobs, easiest first" "x axis label" logscale(0/1)
 families=(
-    "scale|1 3 10 20 30 100 300|scene scale|1"
+    "scale|1 3 10 20 30 100 300 1000|scene scale|1"
     "scale_down|1 0.3 0.1 0.05 0.03 0.01 0.001|scene scale|1"
     "cluster_scale|1 0.3 0.1 0.03 0.01 0.001|cluster scale|1"
     "grazing|45 20 10 5 2 1 0.5 0.2 0.1|degrees above the floor|1"

@@ -1,15 +1,13 @@
 #!/usr/bin/env bash
 # tests/sweeps/scale_same.sh: lengths scaled to the scene (docs/renderer.md).
 # The sweep's scene of three shapes on a floor (make_scene.py scale), 64x48:
-#   - scaled by 2^-6 and 2^-10 it gives the image of scale 1 bit for bit in
-#     double, float and fixed (the loader scales the lengths back exactly,
-#     and the tolerances with them);
-#   - at every scale from 1e-3 to 100 (the scene compiler's coordinate
-#     limit, 1000, stops the next), fixed Q12.19 gives the image of fixed at
-#     scale 1 within SCALE_SAME_PCT (1%) of pixels beyond 2/255 and
-#     SCALE_SAME_DB (40 dB) PSNR: the text's decimal scales round
-#     differently to binary32, and up to a largest length of 1/2 the ray
-#     offset stays 0.002 scene units, as before;
+#   - scaled by 2^k, k from -10 to +10, it gives the image of scale 1 bit
+#     for bit in double, float and fixed (the loader scales the lengths back
+#     exactly, and the tolerances apply to the scene as stored);
+#   - at every scale from 1e-3 to 1e3 (and 1e6), fixed Q12.19 gives the
+#     image of fixed at scale 1 within SCALE_SAME_PCT (1%) of pixels beyond
+#     2/255 and SCALE_SAME_DB (40 dB) PSNR: the text's decimal scales round
+#     differently to binary32;
 #   - a scene its clusters shrink below its coordinates is still refused,
 #     with a message that names its span and the scaling.
 #   PASS scale_same_...  or  FAIL ...
@@ -28,7 +26,7 @@ render() { # KNOB ARITH [FAMILY]: prints the image path, or nothing when refused
 }
 for arith in double float fixed; do
     one=$(render 1 $arith)
-    for knob in 0.015625 0.0009765625; do
+    for knob in 0.0009765625 0.015625 0.5 2 8 64 1024; do
         img=$(render $knob $arith)
         if [ -z "$one" ] || [ -z "$img" ]; then
             echo "FAIL scale_same_exact_${knob}_$arith: refused: $(tail -n 1 "$out/scale-$knob-$arith.png.log")"
@@ -40,7 +38,7 @@ for arith in double float fixed; do
     done
 done
 one=$out/scale-1-fixed.png
-for knob in 0.001 0.003 0.01 0.03 0.1 0.3 3 10 30 100; do
+for knob in 0.001 0.003 0.01 0.03 0.1 0.3 3 10 30 100 300 1000 1000000; do
     img=$(render $knob fixed)
     if [ -z "$img" ]; then
         echo "FAIL scale_same_fixed_$knob: refused: $(tail -n 1 "$out/scale-$knob-fixed.png.log")"
@@ -60,12 +58,13 @@ for knob in 0.001 0.003 0.01 0.03 0.1 0.3 3 10 30 100; do
     fi
 done
 # still refused: a cluster scaled by 0.01 shrinks the scene to a span of
-# 0.12 while its coordinates reach 8 (so the ray offset stays 0.002)
+# 0.12 while its coordinates reach 4..8 (lengths scaled by 2, so the ray
+# offset is 0.001 of them)
 for arith in double fixed; do
     img=$(render 0.01 $arith cluster_scale)
     msg=$(tail -n 1 "$out/cluster_scale-0.01-$arith.png.log")
     case $arith in
-        double) want="scene spans 0.122; double resolves 2^-52 of a value (lengths scaled by 2^1), but secondary rays start 0.002 from a surface, so a scene needs a span of at least 1" ;;
+        double) want="scene spans 0.121; double resolves 2^-52 of a value (lengths scaled by 2^1), but secondary rays start 0.001 from a surface, so a scene needs a span of at least 0.5" ;;
         fixed) want="a cluster transform scales beyond what the arithmetic can invert" ;;
     esac
     # shellcheck disable=SC2254

@@ -40,7 +40,7 @@ tsv=$out/sweep.tsv
 . tests/sweeps/families.sh # families=(...)
 if [ $quick = 1 ]; then
     families=(
-        "scale|1 30 100|scene scale|1"
+        "scale|1 30 100 1000|scene scale|1"
         "scale_down|1 0.03|scene scale|1"
         "cluster_scale|1 0.01|cluster scale|1"
         "grazing|10 0.5|degrees above the floor|1"
