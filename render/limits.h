@@ -77,6 +77,13 @@
                                            a bilinear colour moves by at most
                                            this times the step between two
                                            texels: 4/255 at a full-scale step */
+#define RENDER_LOST_WEIGHT_VALUE (1.0 / 128) /* a reflected, refracted or
+                                           straight ray weighing less (its
+                                           src and trc along the path) moves
+                                           a pixel by under 2/255 when its
+                                           colour is at most 1: the error it
+                                           carries is not counted in its
+                                           decisions (render/trace.c) */
 #define RENDER_LOST_TOLERANCE_VALUE 5e-2 /* a primitive whose estimated hit
                                            point error exceeds this, in scene
                                            units, is imprecise; so is one whose
