@@ -30,13 +30,15 @@
 /* Stack a tracing core needs (render_pixel and everything below it),
  * measured with arm-none-eabi-gcc 12 -O2 -fstack-usage (float and fixed
  * builds): per level of reflection/refraction depth (the recursion,
- * trace_ray + trace_shade) 328 bytes in float, 352 in fixed, plus the
- * deepest leaf (refractionless transmission, lights, a shadow walk through
- * up to RENDER_MAX_CLUSTER_DEPTH clusters at 32 bytes each, a primitive
- * test): 4096 before the near-first walk, which adds 8 bytes a level and
- * keeps trace_straight's 160 more bytes out of every level. */
-#define RENDER_STACK_PER_DEPTH 384
-#define RENDER_STACK_BASE 4608
+ * trace_ray + trace_shade) 392 bytes in float, 416 in fixed since rays
+ * carry their error bound (328 and 352 before), plus the deepest leaf
+ * (refractionless transmission, lights, a shadow walk through up to
+ * RENDER_MAX_CLUSTER_DEPTH clusters at 32 bytes each, a primitive test):
+ * 4096 before the near-first walk, which adds 8 bytes a level and keeps
+ * trace_straight's 160 more bytes out of every level; the error bound
+ * adds 56 to the leaf (trace_lights, trace_straight, trace_nearest). */
+#define RENDER_STACK_PER_DEPTH 448
+#define RENDER_STACK_BASE 4672
 #define RENDER_STACK_BYTES(max_depth) \
     (RENDER_STACK_BASE + RENDER_STACK_PER_DEPTH * ((max_depth) + 1))
 
