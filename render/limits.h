@@ -30,13 +30,15 @@
 /* Stack a tracing core needs (render_pixel and everything below it),
  * measured with arm-none-eabi-gcc 12 -O2 -fstack-usage (float and fixed
  * builds): per level of reflection/refraction depth (the recursion,
- * trace_ray + trace_shade) 328 bytes in float, 352 in fixed, plus the
- * deepest leaf (refractionless transmission, lights, a shadow walk through
- * up to RENDER_MAX_CLUSTER_DEPTH clusters at 32 bytes each, a primitive
- * test): 4096 before the near-first walk, which adds 8 bytes a level and
- * keeps trace_straight's 160 more bytes out of every level. */
-#define RENDER_STACK_PER_DEPTH 384
-#define RENDER_STACK_BASE 4608
+ * trace_ray + trace_shade) 392 bytes in float, 416 in fixed since rays
+ * carry their error bound (328 and 352 before), plus the deepest leaf
+ * (refractionless transmission, lights, a shadow walk through up to
+ * RENDER_MAX_CLUSTER_DEPTH clusters at 32 bytes each, a primitive test):
+ * 4096 before the near-first walk, which adds 8 bytes a level and keeps
+ * trace_straight's 160 more bytes out of every level; the error bound
+ * adds 56 to the leaf (trace_lights, trace_straight, trace_nearest). */
+#define RENDER_STACK_PER_DEPTH 448
+#define RENDER_STACK_BASE 4672
 #define RENDER_STACK_BYTES(max_depth) \
     (RENDER_STACK_BASE + RENDER_STACK_PER_DEPTH * ((max_depth) + 1))
 
@@ -82,6 +84,13 @@
                                            a bilinear colour moves by at most
                                            this times the step between two
                                            texels: 4/255 at a full-scale step */
+#define RENDER_LOST_WEIGHT_VALUE (1.0 / 128) /* a reflected, refracted or
+                                           straight ray weighing less (its
+                                           src and trc along the path) moves
+                                           a pixel by under 2/255 when its
+                                           colour is at most 1: the error it
+                                           carries is not counted in its
+                                           decisions (render/trace.c) */
 #define RENDER_LOST_TOLERANCE_VALUE 5e-2 /* a primitive whose estimated hit
                                            point error exceeds this (stored
                                            units) is imprecise; so is one whose

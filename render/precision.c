@@ -57,18 +57,24 @@ render_status_t precision_invert(const xform_t *m, xform_t *inv)
  * smallest over the axes: the error across the flattest side, where a
  * secondary ray starting RENDER_RAY_EPSILON_VALUE off the surface would
  * hit it again (shadow acne); the largest moves a hit along a surface. */
+/* rows[0], rows[1]: the longest and the shortest row of to_local (local
+ * units per eye unit along the most and the least squeezed axis). */
 static num_t precision_hit_error(const render_prim_t *p, num_t extent, num_t *least,
-                                 num_t *local_worst)
+                                 num_t *local_worst, num_t rows[2])
 {
     num_t worst = NUM_ZERO;
     *least = NUM_FAR;
     *local_worst = NUM_FAR;
+    rows[0] = NUM_ZERO;
+    rows[1] = NUM_FAR;
     num_t local_max = NUM_ZERO;
     for (int i = 0; i < 3; i++) {
         const num_t *row = p->to_local.m[i];
         num_t len = num_len3(row[0], row[1], row[2]);
         if (!num_gt(len, NUM_ZERO) || num_is_sat(len))
             return NUM_FAR;
+        rows[0] = num_max(rows[0], len);
+        rows[1] = num_min(rows[1], len);
         num_t steps = num_add(num_add(num_ulp(row[0]), num_ulp(row[1])), num_ulp(row[2]));
         num_t local = num_add(num_mul(len, extent), num_abs(row[3]));
         if (num_is_sat(num_mul_int(local, 2))) /* local coordinates near the
@@ -110,6 +116,51 @@ static num_t precision_triangle_uv_error(const render_prim_t *p)
     return num_is_sat(err) || num_is_sat(bary) ? NUM_FAR : err;
 }
 
+num_t precision_map_error(const xform_t *to_eye, const xform_t *from_eye, const aabb_t *bounds)
+{
+    num_t reach = NUM_ZERO;
+    for (int axis = 0; axis < 3; axis++)
+        reach = num_max(reach, num_max(num_abs(vec3_get(bounds->lo, axis)),
+                                       num_abs(vec3_get(bounds->hi, axis))));
+    xform_t r = xform_compose(to_eye, from_eye);
+    num_t worst = NUM_ZERO;
+    for (int i = 0; i < 3; i++) {
+        num_t lin = NUM_ZERO;
+        for (int j = 0; j < 3; j++)
+            lin = num_add(lin, num_abs(num_sub(r.m[i][j], i == j ? NUM_ONE : NUM_ZERO)));
+        num_t e = num_add(num_mul(lin, reach), num_abs(r.m[i][3]));
+        if (num_is_sat(e) || num_is_sat(reach))
+            return NUM_FAR;
+        worst = num_max(worst, e);
+    }
+    return worst;
+}
+
+/* A smooth triangle's normal, alpha n0 + beta n1 + gamma n2, turns by at
+ * most |n1 - n0| / height1 + |n2 - n0| / height2 per unit moved. */
+static num_t precision_triangle_curvature(const render_prim_t *p)
+{
+    if (!p->normals)
+        return NUM_ZERO;
+    const vec3_t *n = p->normals->n;
+    num_t c = num_add(num_div(vec3_length(vec3_sub(n[1], n[0])), num_abs(p->height1)),
+                      num_div(vec3_length(vec3_sub(n[2], n[0])), num_abs(p->height2)));
+    return num_is_sat(c) ? NUM_FAR : c;
+}
+
+/* A density sphere's surface: taken as curved no more than a sphere of a
+ * quarter of its smallest component's radius (a lone component's surface
+ * lies beyond a quarter of its radius for a threshold under 0.8 of its
+ * weight); its components live in to_local's units. */
+static num_t precision_density_curvature(const render_prim_t *p, num_t row_max)
+{
+    num_t r = NUM_FAR;
+    for (uint16_t k = 0; k < p->component_count; k++)
+        r = num_min(r, p->components[k].radius);
+    num_t c = num_div(num_mul_int(row_max, 4), r);
+    return num_is_sat(c) ? NUM_FAR : c;
+}
+
 render_status_t precision_check(render_frame_t *f)
 {
     f->span = NUM_ZERO;
@@ -127,27 +178,50 @@ render_status_t precision_check(render_frame_t *f)
     num_t lost_tol = PRECISION_LOST_TOL, acne_tol = PRECISION_ACNE_TOL;
     for (uint32_t i = 0; i < f->prim_count; i++) {
         render_prim_t *p = &f->prims[i];
-        num_t least, local, worst = precision_hit_error(p, extent, &least, &local);
+        num_t least, local, rows[2], worst = precision_hit_error(p, extent, &least, &local, rows);
+        /* render_prepare left the cluster map's error in hit_error (0 for
+         * a triangle, whose vertices are mapped forward) */
+        num_t map = p->hit_error;
+        worst = num_add(worst, map);
+        /* the surface moved by the map, in local units: a consistent move,
+         * no acne, but the decisions and map coordinates see it */
+        local = num_add(local, num_mul(map, rows[0]));
+        if (num_is_sat(worst) || num_is_sat(local))
+            worst = local = NUM_FAR;
         /* a triangle's is left out: two triangles hit at one distance are
          * most often a mesh's faces meeting at an edge */
         p->hit_error = p->kind == SCENE_PRIM_TRIANGLE ? NUM_ZERO : worst;
         p->imprecise = p->kind != SCENE_PRIM_TRIANGLE &&
                        (num_gt(worst, lost_tol) || num_gt(least, acne_tol));
+        p->scale = p->kind == SCENE_PRIM_TRIANGLE ? NUM_ZERO : rows[0];
         /* map coordinates (render/prim.c): a box face's are (q + 1) / 2 of
          * a local coordinate q, an ellipsoid's a pseudo-angle / 4 and
          * (n.y + 1) / 2 of its unit sphere's point, a density sphere's come
          * from its normal (not estimated) */
+        /* the normal's curvature: an ellipsoid's largest, at the end of
+         * its longest axis, is a / c^2 for radii a >= c (rows 1/c, 1/a) */
+        p->curvature = NUM_ZERO;
         switch (p->kind) {
         case SCENE_PRIM_TRIANGLE:
             precision_triangle_edge_error(p, extent);
             p->uv_error = precision_triangle_uv_error(p);
+            p->curvature = precision_triangle_curvature(p);
             break;
-        case SCENE_PRIM_BOX: p->uv_error = num_mul(local, NUM_HALF); break;
+        case SCENE_PRIM_BOX:
+            p->uv_error = num_mul(local, NUM_HALF);
+            p->edge_error[0] = local;
+            break;
         case SCENE_PRIM_ELLIPSOID:
             p->uv_error = local;
             p->edge_error[0] = local;
+            p->curvature = num_div(num_mul(rows[0], rows[0]), rows[1]);
+            if (num_is_sat(p->curvature))
+                p->curvature = NUM_FAR;
             break;
-        default: p->uv_error = NUM_ZERO; break;
+        default:
+            p->uv_error = NUM_ZERO;
+            p->curvature = precision_density_curvature(p, rows[0]);
+            break;
         }
     }
     if (num_lt(f->span, PRECISION_MIN_SPAN))

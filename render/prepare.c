@@ -525,6 +525,10 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     for (uint32_t i = 0; i < s->prim_count; i++) {
         const scene_prim_t *sp = &s->prims[i];
         prep_prim(sp, i, f, &to_eye[sp->cluster], &from_eye[sp->cluster], &f->prims[i]);
+        /* the error of the cluster's inverse map, for precision_check (a
+         * triangle's vertices are mapped forward: none) */
+        f->prims[i].hit_error = sp->kind == SCENE_PRIM_TRIANGLE ? NUM_ZERO :
+            precision_map_error(&to_eye[sp->cluster], &from_eye[sp->cluster], &f->prims[i].bounds);
         if (vec3_is_sat(f->prims[i].bounds.lo) || vec3_is_sat(f->prims[i].bounds.hi))
             f->precision_lost = 1;
         precision_detail(f, i, &to_eye[sp->cluster]);

@@ -32,20 +32,38 @@ static int prim_triangle_bary(const render_prim_t *p, vec3_t point, num_t *beta,
     return !num_is_sat(*beta) && !num_is_sat(*gamma);
 }
 
-/* One of the three edge tests is decided by less than the rounding error
- * of the barycentrics (render_prim_t.edge_error): a sliver thinner than a
- * pixel may be hit or missed wrongly. */
-static int prim_triangle_edge_uncertain(const render_prim_t *p, num_t beta, num_t gamma)
+/* A barycentric margin m with rounding error e, on an edge at height h
+ * from the opposite vertex, is closer than that error plus a ray off by
+ * ray_err (a point moved by ray_err moves the barycentric by ray_err / h):
+ * (m - e) * h < ray_err, without a division. */
+static int prim_margin_uncertain(num_t m, num_t e, num_t h, num_t ray_err)
 {
-    num_t e1 = p->edge_error[0], e2 = p->edge_error[1];
-    num_t alpha_margin = num_sub(num_add(NUM_ONE, PRIM_EDGE_TOL), num_add(beta, gamma));
-    return num_lt(num_abs(num_add(beta, PRIM_EDGE_TOL)), e1) ||
-           num_lt(num_abs(num_add(gamma, PRIM_EDGE_TOL)), e2) ||
-           num_lt(num_abs(alpha_margin), num_add(e1, e2));
+    num_t left = num_sub(num_abs(m), e);
+    return num_lt(left, NUM_ZERO) || num_lt(num_mul(left, num_abs(h)), ray_err);
 }
 
-static int prim_triangle_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin,
-                                   num_t tmax, num_t *t_out, int *uncertain)
+/* One of the three edge tests is decided by less than the rounding error
+ * of the barycentrics (render_prim_t.edge_error) and of the ray at the hit
+ * (ray_err, eye units): a sliver thinner than a pixel, or a ray passing an
+ * edge within its own error, may be hit or missed wrongly.  The third
+ * barycentric, 1 - beta - gamma, moves by at most ray_err (1/h1 + 1/h2). */
+static int prim_triangle_edge_uncertain(const render_prim_t *p, num_t beta, num_t gamma,
+                                        num_t ray_err)
+{
+    num_t e1 = p->edge_error[0], e2 = p->edge_error[1];
+    num_t h1 = num_abs(p->height1), h2 = num_abs(p->height2);
+    num_t alpha_margin = num_sub(num_add(NUM_ONE, PRIM_EDGE_TOL), num_add(beta, gamma));
+    if (prim_margin_uncertain(num_add(beta, PRIM_EDGE_TOL), e1, h1, ray_err) ||
+        prim_margin_uncertain(num_add(gamma, PRIM_EDGE_TOL), e2, h2, ray_err))
+        return 1;
+    num_t left = num_sub(num_abs(alpha_margin), num_add(e1, e2));
+    return num_lt(left, NUM_ZERO) ||
+           num_lt(num_mul(num_mul(left, h1), h2), num_mul(ray_err, num_add(h1, h2)));
+}
+
+static int prim_triangle_intersect(const render_prim_t *p, const ray_t *ray,
+                                   const ray_error_t *err, num_t tmin, num_t tmax, num_t *t_out,
+                                   int *uncertain)
 {
     num_t denom = vec3_dot(ray->dir, p->normal);
     if (num_eq(denom, NUM_ZERO)) /* ray in the triangle's plane: grazing */
@@ -57,7 +75,7 @@ static int prim_triangle_intersect(const render_prim_t *p, const ray_t *ray, num
     if (!prim_triangle_bary(p, vec3_madd(ray->origin, ray->dir, t), &beta, &gamma))
         return 0;
     if (uncertain)
-        *uncertain = prim_triangle_edge_uncertain(p, beta, gamma);
+        *uncertain = prim_triangle_edge_uncertain(p, beta, gamma, ray_error_at(err, t));
     if (num_lt(beta, num_neg(PRIM_EDGE_TOL)) || num_lt(gamma, num_neg(PRIM_EDGE_TOL)) ||
         num_gt(num_add(beta, gamma), num_add(NUM_ONE, PRIM_EDGE_TOL)))
         return 0;
@@ -94,25 +112,32 @@ static void prim_triangle_surface(const render_prim_t *p, hit_t *hit)
  * vector and s = t * len.  The closest approach to the centre is found
  * first, so no squared coordinate of a far origin is ever formed. */
 /* The ray's closest point c to the unit sphere's centre (at t = tc / len)
- * is within the rounding error of the surface: a ray grazing the
- * ellipsoid may be counted as a hit or a miss wrongly.  c is off by the
- * local coordinates' error (render_prim_t.edge_error) plus a few steps at
- * tc; 1 - |c|^2 by twice that. */
+ * is within the error of the surface: a ray grazing the ellipsoid may be
+ * counted as a hit or a miss wrongly.  c is off by the local coordinates'
+ * error (render_prim_t.edge_error), a few steps at tc and the ray's own
+ * error at t in local units (times render_prim_t.scale); 1 - |c|^2 by
+ * twice that.  A closest point beyond 2 is no graze: an error of a whole
+ * radius makes the primitive imprecise (precision.c). */
 static int prim_ellipsoid_graze_uncertain(const render_prim_t *p, vec3_t c, num_t tc, num_t len,
-                                          num_t tmin, num_t tmax)
+                                          const ray_error_t *ray_err, num_t tmin, num_t tmax)
 {
-    num_t err = num_add(p->edge_error[0], num_mul_int(num_ulp(num_abs(tc)), 4));
-    num_t lim = num_add(NUM_ONE, err);
-    if (num_gt(num_abs(c.x), lim) || num_gt(num_abs(c.y), lim) || num_gt(num_abs(c.z), lim))
+    num_t two = NUM_C(2);
+    if (num_gt(num_abs(c.x), two) || num_gt(num_abs(c.y), two) || num_gt(num_abs(c.z), two))
         return 0;
     num_t t = num_div(tc, len);
     if (num_is_sat(t) || !num_gt(t, tmin) || num_gt(t, tmax))
         return 0;
+    num_t err = num_add(p->edge_error[0], num_mul_int(num_ulp(num_abs(tc)), 4));
+    err = num_add(err, num_mul(ray_error_at(ray_err, t), p->scale));
+    num_t lim = num_add(NUM_ONE, err);
+    if (num_gt(num_abs(c.x), lim) || num_gt(num_abs(c.y), lim) || num_gt(num_abs(c.z), lim))
+        return 0;
     return num_lt(num_abs(num_sub(NUM_ONE, vec3_dot(c, c))), num_mul_int(err, 2));
 }
 
-static int prim_ellipsoid_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin,
-                                    num_t tmax, num_t *t_out, int *uncertain)
+static int prim_ellipsoid_intersect(const render_prim_t *p, const ray_t *ray,
+                                    const ray_error_t *err, num_t tmin, num_t tmax, num_t *t_out,
+                                    int *uncertain)
 {
     vec3_t o = xform_point(&p->to_local, ray->origin);
     vec3_t d = xform_dir(&p->to_local, ray->dir);
@@ -123,7 +148,7 @@ static int prim_ellipsoid_intersect(const render_prim_t *p, const ray_t *ray, nu
     num_t tc = num_neg(vec3_dot(o, dn));
     vec3_t c = vec3_madd(o, dn, tc); /* closest point to the centre */
     if (uncertain)
-        *uncertain = prim_ellipsoid_graze_uncertain(p, c, tc, len, tmin, tmax);
+        *uncertain = prim_ellipsoid_graze_uncertain(p, c, tc, len, err, tmin, tmax);
     if (num_gt(num_abs(c.x), NUM_ONE) || num_gt(num_abs(c.y), NUM_ONE) ||
         num_gt(num_abs(c.z), NUM_ONE))
         return 0;
@@ -166,10 +191,20 @@ static vec3_t prim_tangent(const xform_t *to_local, vec3_t hint_local, vec3_t no
     return t;
 }
 
+/* The normal is M^T q / |M^T q| for the local point q = M p: a hit moved
+ * by e moves q by up to scale e and M^T q by up to scale^2 e, so the
+ * normal turns by up to scale^2 e / |M^T q| (a / c^2 at the end of the
+ * longest axis of radii a >= c, 1 / c across the flattest side). */
 static void prim_ellipsoid_surface(const render_prim_t *p, hit_t *hit)
 {
     vec3_t q = xform_point(&p->to_local, hit->point);
-    hit->normal = vec3_normalize(xform_dir_transposed(&p->to_local, q));
+    vec3_t g = xform_dir_transposed(&p->to_local, q);
+    num_t len = vec3_length(g);
+    hit->normal = num_gt(len, NUM_ZERO) ? vec3_make(num_div(g.x, len), num_div(g.y, len),
+                                                    num_div(g.z, len)) : g;
+    hit->curvature = num_gt(len, NUM_ZERO) ? num_div(num_mul(p->scale, p->scale), len) : NUM_FAR;
+    if (num_is_sat(hit->curvature))
+        hit->curvature = NUM_FAR;
     hit->tangent = prim_tangent(&p->to_local, vec3_make(num_neg(q.z), NUM_ZERO, q.x), hit->normal);
     hit->u = num_mul(prim_pseudo_angle(q.x, q.z), NUM_C(0.25));
     hit->v = num_clamp01(num_mul(num_add(q.y, NUM_ONE), NUM_HALF));
@@ -196,29 +231,98 @@ static int prim_slab(num_t o, num_t d, num_t lo, num_t hi, num_t *tnear, num_t *
     return !num_gt(*tnear, *tfar);
 }
 
-/* Interval of t where the ray is inside [-1,1]^3 in local space; t is the
- * same in both spaces because the map is affine and d is not renormalised. */
-static int prim_box_interval(const render_prim_t *p, const ray_t *ray, num_t *tnear, num_t *tfar)
+/* The interval of t where the ray is inside [-1,1]^3 in local space; t is
+ * the same in both spaces because the map is affine and d is not
+ * renormalised.  The slabs of every axis, kept apart so that the margin of
+ * the decision can be judged: near_axis and far_axis are the axes whose
+ * faces give tnear and tfar (-1: none), parallel the smallest distance of
+ * the origin to a face of an axis the ray runs parallel to. */
+typedef struct {
+    num_t tnear, tfar;
+    int near_axis, far_axis;
+    num_t parallel;
+    int outside; /* the ray runs parallel to a slab, outside it */
+} prim_box_span_t;
+
+/* All three slabs (the decision of prim_slab's loop, which may stop at the
+ * first axis that misses, is the same: tnear only grows, tfar only shrinks). */
+static void prim_box_span(vec3_t o, vec3_t d, prim_box_span_t *s)
+{
+    s->tnear = num_neg(NUM_FAR);
+    s->tfar = NUM_FAR;
+    s->near_axis = s->far_axis = -1;
+    s->parallel = NUM_FAR;
+    s->outside = 0;
+    for (int axis = 0; axis < 3; axis++) {
+        num_t oa = vec3_get(o, axis), da = vec3_get(d, axis);
+        if (num_eq(da, NUM_ZERO)) {
+            s->outside |= num_lt(oa, num_neg(NUM_ONE)) || num_gt(oa, NUM_ONE);
+            s->parallel = num_min(s->parallel, num_min(num_abs(num_add(oa, NUM_ONE)),
+                                                       num_abs(num_sub(NUM_ONE, oa))));
+            continue;
+        }
+        num_t t1 = num_div(num_sub(num_neg(NUM_ONE), oa), da);
+        num_t t2 = num_div(num_sub(NUM_ONE, oa), da);
+        if (num_gt(t1, t2)) {
+            num_t t = t1;
+            t1 = t2;
+            t2 = t;
+        }
+        if (num_gt(t1, s->tnear)) {
+            s->tnear = t1;
+            s->near_axis = axis;
+        }
+        if (num_lt(t2, s->tfar)) {
+            s->tfar = t2;
+            s->far_axis = axis;
+        }
+    }
+}
+
+/* The box is hit or missed by less than the error of the ray's local
+ * position, delta at t (edge_error[0], and the ray's own error in local
+ * units): the entry and exit t move by delta / |d| of the axes that give
+ * them, so |tfar - tnear| * |dn| * |df| < delta * (|dn| + |df|), without a
+ * division; a slab the ray runs parallel to, by its distance to a face.
+ * Only a decision about the part of the ray after tmin and before tmax. */
+static int prim_box_edge_uncertain(const render_prim_t *p, const prim_box_span_t *s, vec3_t d,
+                                   const ray_error_t *err, num_t tmin, num_t tmax)
+{
+    if (s->near_axis < 0 || s->far_axis < 0)
+        return 0;
+    num_t lo = num_min(s->tnear, s->tfar), hi = num_max(s->tnear, s->tfar);
+    if (!num_gt(hi, tmin) || num_gt(lo, tmax))
+        return 0;
+    num_t mid = num_mul(num_add(lo, hi), NUM_HALF);
+    num_t delta = num_add(p->edge_error[0], num_mul(ray_error_at(err, mid), p->scale));
+    if (num_lt(s->parallel, delta))
+        return 1;
+    num_t dn = num_abs(vec3_get(d, s->near_axis)), df = num_abs(vec3_get(d, s->far_axis));
+    num_t gap = num_abs(num_sub(s->tfar, s->tnear));
+    return num_lt(num_mul(num_mul(gap, dn), df), num_mul(delta, num_add(dn, df)));
+}
+
+static int prim_box_intersect(const render_prim_t *p, const ray_t *ray, const ray_error_t *err,
+                              num_t tmin, num_t tmax, num_t *t_out, int *uncertain)
 {
     vec3_t o = xform_point(&p->to_local, ray->origin);
     vec3_t d = xform_dir(&p->to_local, ray->dir);
     if (vec3_is_sat(o) || vec3_is_sat(d))
         return 0;
-    *tnear = num_neg(NUM_FAR);
-    *tfar = NUM_FAR;
-    for (int axis = 0; axis < 3; axis++)
-        if (!prim_slab(vec3_get(o, axis), vec3_get(d, axis), num_neg(NUM_ONE), NUM_ONE, tnear, tfar))
-            return 0;
-    return 1;
-}
-
-static int prim_box_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin, num_t tmax,
-                              num_t *t_out)
-{
-    num_t tnear, tfar;
-    if (!prim_box_interval(p, ray, &tnear, &tfar))
+    if (!uncertain) { /* first miss ends it */
+        num_t tnear = num_neg(NUM_FAR), tfar = NUM_FAR;
+        for (int axis = 0; axis < 3; axis++)
+            if (!prim_slab(vec3_get(o, axis), vec3_get(d, axis), num_neg(NUM_ONE), NUM_ONE,
+                           &tnear, &tfar))
+                return 0;
+        return prim_pick_root(tnear, tfar, tmin, tmax, t_out);
+    }
+    prim_box_span_t s;
+    prim_box_span(o, d, &s);
+    *uncertain = prim_box_edge_uncertain(p, &s, d, err, tmin, tmax);
+    if (s.outside || num_gt(s.tnear, s.tfar))
         return 0;
-    return prim_pick_root(tnear, tfar, tmin, tmax, t_out);
+    return prim_pick_root(s.tnear, s.tfar, tmin, tmax, t_out);
 }
 
 static void prim_box_surface(const render_prim_t *p, hit_t *hit)
@@ -368,21 +472,21 @@ static void prim_density_surface(const render_prim_t *p, hit_t *hit)
 
 int prim_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin, num_t tmax, num_t *t_out)
 {
-    return prim_intersect_uncertain(p, ray, tmin, tmax, t_out, NULL);
+    return prim_intersect_uncertain(p, ray, NULL, tmin, tmax, t_out, NULL);
 }
 
-int prim_intersect_uncertain(const render_prim_t *p, const ray_t *ray, num_t tmin, num_t tmax,
-                             num_t *t_out, int *uncertain)
+int prim_intersect_uncertain(const render_prim_t *p, const ray_t *ray, const ray_error_t *err,
+                             num_t tmin, num_t tmax, num_t *t_out, int *uncertain)
 {
     if (uncertain)
         *uncertain = 0;
     switch (p->kind) {
     case SCENE_PRIM_TRIANGLE:
-        return prim_triangle_intersect(p, ray, tmin, tmax, t_out, uncertain);
+        return prim_triangle_intersect(p, ray, err, tmin, tmax, t_out, uncertain);
     case SCENE_PRIM_ELLIPSOID:
-        return prim_ellipsoid_intersect(p, ray, tmin, tmax, t_out, uncertain);
+        return prim_ellipsoid_intersect(p, ray, err, tmin, tmax, t_out, uncertain);
     case SCENE_PRIM_BOX:
-        return prim_box_intersect(p, ray, tmin, tmax, t_out);
+        return prim_box_intersect(p, ray, err, tmin, tmax, t_out, uncertain);
     case SCENE_PRIM_DENSITY:
         return prim_density_intersect(p, ray, tmin, tmax, t_out);
     default:
@@ -393,6 +497,7 @@ int prim_intersect_uncertain(const render_prim_t *p, const ray_t *ray, num_t tmi
 void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit)
 {
     hit->point = vec3_madd(ray->origin, ray->dir, hit->t);
+    hit->curvature = p->curvature; /* an ellipsoid's: its hit's own */
     switch (p->kind) {
     case SCENE_PRIM_TRIANGLE:
         prim_triangle_surface(p, hit);

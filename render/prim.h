@@ -24,6 +24,8 @@ typedef struct {
     vec3_t normal;   /* unit outward geometric normal (may face the ray or not) */
     vec3_t tangent;  /* unit, perpendicular to normal, along increasing u */
     num_t u, v;      /* map coordinates, u and v in [0,1] */
+    num_t curvature; /* the normal turns by at most this times the hit's
+                        move (render_prim_t.curvature, an ellipsoid's here) */
 } hit_t;
 
 /* Nearest t with tmin < t <= tmax where the ray meets the surface; 1 if
@@ -31,11 +33,29 @@ typedef struct {
  * primitive find the exit point. */
 int prim_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin, num_t tmax, num_t *t_out);
 
+/* How far rounding may have moved a ray from the double build's (an error
+ * bound, eye units): its origin by up to `origin`, its direction turned by
+ * up to `dir` radians, so its point at t by up to origin + t * dir.  A
+ * camera ray's is a few steps of its direction; a secondary ray's the hit
+ * point's error and what the normal's error does to the new direction
+ * (render/trace.c). */
+typedef struct {
+    num_t origin;
+    num_t dir;
+} ray_error_t;
+
+static inline num_t ray_error_at(const ray_error_t *e, num_t t)
+{
+    return num_add(e->origin, num_mul(num_abs(t), e->dir));
+}
+
 /* prim_intersect, and *uncertain = 1 when a decision between tmin and tmax
- * was closer than the primitive's rounding error (a triangle's edge test,
- * a ray grazing an ellipsoid: render_prim_t.edge_error): the answer may be wrong. */
-int prim_intersect_uncertain(const render_prim_t *p, const ray_t *ray, num_t tmin, num_t tmax,
-                             num_t *t_out, int *uncertain);
+ * was closer than the error of what it compares: the primitive's own
+ * rounding (a triangle's edge test, a ray grazing an ellipsoid or passing
+ * a box's edge: render_prim_t.edge_error) plus the ray's error at that t
+ * (err): the answer may be wrong. */
+int prim_intersect_uncertain(const render_prim_t *p, const ray_t *ray, const ray_error_t *err,
+                             num_t tmin, num_t tmax, num_t *t_out, int *uncertain);
 
 /* Fill hit->point, normal, tangent, u, v for hit->t on primitive p. */
 void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit);

@@ -95,13 +95,24 @@ typedef struct {
                             of a hit's map coordinates u, v (render/maps.h) */
     num_t edge_error[2]; /* render_prepare's estimate of the rounding error
                             of what a hit-or-miss decision compares (a
-                            TRIANGLE's beta and gamma; an ELLIPSOID's local
-                            coordinates, [0]): a decision closer than that
+                            TRIANGLE's beta and gamma; an ELLIPSOID's or a
+                            BOX's local coordinates, [0]): a decision closer
+                            than that plus the ray's own error
                             counts as lost precision (prim_intersect_uncertain) */
     num_t hit_error;     /* render_prepare's estimate of how far rounding
-                            moves a hit on it, in eye units: two primitives
+                            moves a hit on it, in eye units (rounding in its
+                            to_local map, and the error of its cluster's
+                            inverse map: precision_map_error): two primitives
                             hit closer than the sum of theirs count as lost
-                            precision (either may be the nearest) */
+                            precision (either may be the nearest), and a
+                            secondary ray starts that far off (trace.c) */
+    num_t scale;         /* local units per eye unit, the longest row of
+                            to_local (ELLIPSOID, BOX): a ray's error in
+                            local units for the decisions above */
+    num_t curvature;     /* the largest curvature of the surface (1/eye
+                            units): a hit moved by e turns the normal by at
+                            most e * curvature radians (0: flat; an
+                            ELLIPSOID's hit has its own, hit_t.curvature) */
 } render_prim_t;
 
 /* A cluster in eye coordinates. */

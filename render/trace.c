@@ -14,6 +14,9 @@
 #include "render/vec3.h"
 
 #define TRACE_FAR NUM_FAR /* beyond everything */
+/* A unit vector's rounding, as an angle: a few steps of the arithmetic at 1
+ * (a camera ray's direction, a normal, a direction towards a light). */
+#define TRACE_DIR_ROUND num_mul_int(num_ulp(NUM_ONE), 4)
 
 enum trace_kind { TRACE_PRIMARY, TRACE_REFLECTION, TRACE_REFRACTION };
 
@@ -49,6 +52,7 @@ enum trace_mode { TRACE_NEAREST, TRACE_COLLECT_SHADOW, TRACE_COLLECT_STRAIGHT };
 typedef struct {
     render_ctx_t *ctx;
     const ray_t *ray;
+    const ray_error_t *err; /* the ray's error bound: widens every decision */
     num_t tmin, tmax;
     enum trace_mode mode;
     nearest_t nearest;
@@ -117,7 +121,7 @@ static void trace_test_prim(trace_walk_t *w, uint32_t prim)
      * uncertain edge counts whatever the order (prim.h: only the final
      * t <= tmax depends on tmax) */
     int uncertain;
-    int found = prim_intersect_uncertain(p, w->ray, w->tmin, w->tmax, &t, &uncertain);
+    int found = prim_intersect_uncertain(p, w->ray, w->err, w->tmin, w->tmax, &t, &uncertain);
     if (uncertain)
         w->ctx->pixel_lost = 1;
     if (!found || (w->mode != TRACE_NEAREST && num_gt(t, tmax)))
@@ -235,22 +239,45 @@ static void trace_walk(trace_walk_t *w, const uint32_t *clip, uint32_t clip_coun
     }
 }
 
-static int trace_nearest(render_ctx_t *ctx, const ray_t *ray, num_t tmin, const uint32_t *clip,
-                         uint32_t clip_count, hit_t *hit)
+/* A ray of weight below RENDER_LOST_WEIGHT_VALUE changes the pixel by
+ * less than 2/255 whatever its decisions: they are judged by the
+ * primitives' own errors only, not by the error it carries (nor do the
+ * rays it spawns, which weigh less still). */
+static const ray_error_t *trace_err_if_heavy(const ray_error_t *err, const ray_error_t *none,
+                                             num_t weight)
 {
-    trace_walk_t w = {ctx, ray, tmin, TRACE_FAR, TRACE_NEAREST, {0, NUM_ZERO, 0, 0, NUM_ZERO, 0}, NULL, {{0}, {0}}};
+    return num_lt(weight, NUM_C(RENDER_LOST_WEIGHT_VALUE)) ? none : err;
+}
+
+/* An error bound no larger than NUM_FAR: a saturated or runaway one flags
+ * every decision without overflowing what is computed from it. */
+static num_t trace_err_clamp(num_t e)
+{
+    return num_is_sat(e) || num_gt(e, NUM_FAR) ? NUM_FAR : e;
+}
+
+static int trace_nearest(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err, num_t tmin,
+                         const uint32_t *clip, uint32_t clip_count, hit_t *hit)
+{
+    trace_walk_t w = {.ctx = ctx, .ray = ray, .err = err, .tmin = tmin, .tmax = TRACE_FAR,
+                      .mode = TRACE_NEAREST};
     trace_walk(&w, clip, clip_count);
     if (!w.nearest.found)
         return 0;
     hit->t = w.nearest.t;
     hit->prim = w.nearest.prim;
     /* two primitives hit at distances closer than their hit errors (where
-     * two spheres cut each other): either may be the nearest */
+     * two spheres cut each other), and the ray's own error on both (two
+     * triangles carry none: a mesh's faces meet at one distance): either
+     * may be the nearest */
     const render_prim_t *prims = ctx->frame->prims;
-    if (w.nearest.runner_up &&
-        num_lt(num_sub(w.nearest.runner_t, w.nearest.t),
-               num_add(prims[hit->prim].hit_error, prims[w.nearest.runner_prim].hit_error)))
-        ctx->pixel_lost = 1;
+    if (w.nearest.runner_up) {
+        num_t margin = num_add(prims[hit->prim].hit_error, prims[w.nearest.runner_prim].hit_error);
+        if (num_gt(margin, NUM_ZERO))
+            margin = num_add(margin, num_mul_int(ray_error_at(err, w.nearest.runner_t), 2));
+        if (num_lt(num_sub(w.nearest.runner_t, w.nearest.t), margin))
+            ctx->pixel_lost = 1;
+    }
     prim_surface(&ctx->frame->prims[hit->prim], ray, hit);
     if (vec3_is_sat(hit->normal) || vec3_is_sat(hit->point) || ctx->frame->prims[hit->prim].imprecise)
         ctx->pixel_lost = 1;
@@ -282,8 +309,10 @@ static void trace_surface_look(render_ctx_t *ctx, const hit_t *hit, const scene_
 }
 
 /* Fraction of light i that reaches origin along dir over distance:
- * the product of trc(th) F of every object crossed, in primitive order. */
-static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t distance)
+ * the product of trc(th) F of every object crossed, in primitive order.
+ * err: the shadow ray's error bound. */
+static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t distance,
+                          const ray_error_t *err)
 {
     rgb_t pass = rgb_make(NUM_ONE, NUM_ONE, NUM_ONE);
     if (!ctx->options.shadows)
@@ -294,7 +323,8 @@ static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t di
     cross.count = 0;
     cross.overflow = 0;
     cross.opaque = 0;
-    trace_walk_t w = {ctx, &ray, ctx->frame->ray_epsilon, distance, TRACE_COLLECT_SHADOW, {0, NUM_ZERO, 0, 0, NUM_ZERO, 0}, &cross, {{0}, {0}}};
+    trace_walk_t w = {.ctx = ctx, .ray = &ray, .err = err, .tmin = ctx->frame->ray_epsilon,
+                      .tmax = distance, .mode = TRACE_COLLECT_SHADOW, .cross = &cross};
     trace_walk(&w, NULL, 0);
     if (cross.opaque || cross.overflow)
         return rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
@@ -324,9 +354,12 @@ static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t di
     return pass;
 }
 
-/* Sum over lights of Fig. 5's per-light terms at a hit. */
-static rgb_t trace_lights(render_ctx_t *ctx, const hit_t *hit, const scene_material_t *m, rgb_t colour,
-                          vec3_t n, vec3_t view, num_t src)
+/* Sum over lights of Fig. 5's per-light terms at a hit.  hit_err: how far
+ * the hit point may be off (trace_hit_error): each shadow ray starts that
+ * far off, and towards a point light its direction turns by hit_err over
+ * the distance. */
+static rgb_t trace_lights(render_ctx_t *ctx, const hit_t *hit, num_t hit_err,
+                          const scene_material_t *m, rgb_t colour, vec3_t n, vec3_t view, num_t src)
 {
     const render_frame_t *f = ctx->frame;
     rgb_t sum = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
@@ -338,14 +371,38 @@ static rgb_t trace_lights(render_ctx_t *ctx, const hit_t *hit, const scene_mater
         if (!shade_light_at(&f->lights[i], hit->point, &to_light, &distance, &unshadowed))
             continue;
         rgb_t shadowed = unshadowed;
-        if (num_gt(vec3_dot(n, to_light), NUM_ZERO))
-            shadowed = rgb_mul(unshadowed, trace_shadow(ctx, origin, to_light, distance));
+        if (num_gt(vec3_dot(n, to_light), NUM_ZERO)) {
+            ray_error_t err = {hit_err, trace_err_clamp(num_add(num_div(hit_err, distance),
+                                                               TRACE_DIR_ROUND))};
+            shadowed = rgb_mul(unshadowed, trace_shadow(ctx, origin, to_light, distance, &err));
+        }
         sum = rgb_add(sum, shade_light_term(m, colour, n, view, to_light, unshadowed, shadowed, src));
     }
     return sum;
 }
 
-static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int depth, num_t weight);
+static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err, num_t tmin,
+                       int depth, num_t weight);
+
+/* How far a hit may lie from the double build's: the ray's error at its t
+ * plus the primitive's own (render_prim_t.hit_error). */
+static num_t trace_hit_error(const render_ctx_t *ctx, const ray_error_t *err, const hit_t *hit)
+{
+    return trace_err_clamp(num_add(ray_error_at(err, hit->t), ctx->frame->prims[hit->prim].hit_error));
+}
+
+/* Where the shadow rays of a hit start, for their decisions: the hit's
+ * error, unless what a shadow changes there (diffuse drc and highlight
+ * src(th), times the weight of the ray that made the hit, for lights of
+ * colour at most 1) is under RENDER_LOST_WEIGHT_VALUE: then only the
+ * primitive's own, as for a light ray (trace_err_if_heavy). */
+static num_t trace_shadow_error(const render_ctx_t *ctx, const ray_error_t *err, const hit_t *hit,
+                                const scene_material_t *m, num_t weight, num_t src)
+{
+    if (num_lt(num_mul(weight, num_add(m->drc, src)), NUM_C(RENDER_LOST_WEIGHT_VALUE)))
+        return ctx->frame->prims[hit->prim].hit_error;
+    return trace_hit_error(ctx, err, hit);
+}
 
 /* Refractionless transmission past the depth limit: the straight ray
  * registers every object it crosses (the transmission buffer, nearest
@@ -353,14 +410,16 @@ static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int dept
  * far, until an opaque one or the background ends the ray. */
 __attribute__((noinline)) /* its buffers stay out of trace_shade's frame,
                              which every recursion level pays for */
-static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray)
+static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err,
+                            num_t ray_weight)
 {
     ctx->stats.transmission++;
     crossings_t cross;
     cross.count = 0;
     cross.overflow = 0;
     cross.opaque = 0;
-    trace_walk_t w = {ctx, ray, ctx->frame->ray_epsilon, TRACE_FAR, TRACE_COLLECT_STRAIGHT, {0, NUM_ZERO, 0, 0, NUM_ZERO, 0}, &cross, {{0}, {0}}};
+    trace_walk_t w = {.ctx = ctx, .ray = ray, .err = err, .tmin = ctx->frame->ray_epsilon,
+                      .tmax = TRACE_FAR, .mode = TRACE_COLLECT_STRAIGHT, .cross = &cross};
     trace_walk(&w, NULL, 0);
     rgb_t sum = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     rgb_t weight = rgb_make(NUM_ONE, NUM_ONE, NUM_ONE);
@@ -377,7 +436,8 @@ static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray)
             n = vec3_neg(n);
         num_t src, trc;
         shade_src_trc(m, num_neg(vec3_dot(ray->dir, n)), &src, &trc);
-        sum = rgb_add(sum, rgb_mul(weight, trace_lights(ctx, &hit, m, colour, n, ray->dir, src)));
+        num_t hit_err = trace_shadow_error(ctx, err, &hit, m, ray_weight, src);
+        sum = rgb_add(sum, rgb_mul(weight, trace_lights(ctx, &hit, hit_err, m, colour, n, ray->dir, src)));
         if (!num_gt(trc, NUM_ZERO))
             return sum;
         weight = rgb_mul(weight, rgb_scale(colour, trc));
@@ -395,9 +455,30 @@ static int trace_worth(const render_ctx_t *ctx, num_t weight)
     return !num_lt(weight, ctx->options.min_weight);
 }
 
+/* A refracted direction's error.  In the plane of incidence Snell's law
+ * turns the ray by g = eta cos_i / cos_t times the change of the angle of
+ * incidence; the direction out is the normal's turned by that angle, so it
+ * moves by g times the ray's error and (1 - g) times the normal's.  Across
+ * that plane the factor is eta instead of g.  Without bound at the
+ * critical angle. */
+static num_t trace_refract_error(const ray_error_t *err, num_t normal_err, num_t eta,
+                                 num_t cos_i, vec3_t refracted, vec3_t n)
+{
+    num_t cos_t = num_neg(vec3_dot(refracted, n));
+    if (!num_gt(cos_t, NUM_ZERO))
+        return NUM_FAR;
+    num_t g = trace_err_clamp(num_div(num_mul(eta, cos_i), cos_t));
+    num_t dir_gain = num_max(g, eta);
+    num_t normal_gain = num_max(num_abs(num_sub(NUM_ONE, g)), num_abs(num_sub(NUM_ONE, eta)));
+    return trace_err_clamp(num_add(num_mul(dir_gain, err->dir), num_mul(normal_gain, normal_err)));
+}
+
 /* weight: the product of src and trc along the path of the ray that made
- * this hit (1 for a camera ray). */
-static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, int depth, num_t weight)
+ * this hit (1 for a camera ray); err: that ray's error bound.  The hit
+ * point's error starts every secondary ray; the normal's (the hit's error
+ * times the surface's curvature) turns a mirrored ray by twice as much. */
+static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err,
+                         const hit_t *hit, int depth, num_t weight)
 {
     const scene_material_t *m = trace_material(ctx, hit->prim);
     rgb_t colour;
@@ -409,7 +490,18 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, 
     num_t cos_theta = num_neg(vec3_dot(ray->dir, n));
     num_t src, trc;
     shade_src_trc(m, cos_theta, &src, &trc);
-    rgb_t out = trace_lights(ctx, hit, m, colour, n, ray->dir, src);
+    num_t hit_err = trace_hit_error(ctx, err, hit);
+    /* From the inside of a closed surface (its concave side) a ray moved
+     * or turned meets a normal turned so as to fold it back: a chord of a
+     * sphere meets the surface at the same angle at both ends, so the
+     * error grows only along the chord (through the origin's error), not
+     * by the normal again at every bounce.  There only the surface's own
+     * error turns the normal. */
+    const render_prim_t *p = &ctx->frame->prims[hit->prim];
+    num_t moved = entering ? hit_err : p->hit_error;
+    num_t normal_err = trace_err_clamp(num_add(num_mul(moved, hit->curvature), TRACE_DIR_ROUND));
+    rgb_t out = trace_lights(ctx, hit, trace_shadow_error(ctx, err, hit, m, weight, src), m, colour,
+                             n, ray->dir, src);
 
     int can_recurse = depth < ctx->options.max_depth;
     /* Where a refracted ray would go, or total internal reflection: then
@@ -417,8 +509,10 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, 
      * is the sum of both. */
     vec3_t refracted_dir;
     int refracts = 0, tir = 0;
+    num_t eta = NUM_ONE;
     if (num_gt(trc, NUM_ZERO) && can_recurse && ctx->options.refraction) {
-        refracts = shade_refract(ray->dir, n, entering ? num_recip(m->ior) : m->ior, &refracted_dir);
+        eta = entering ? num_recip(m->ior) : m->ior;
+        refracts = shade_refract(ray->dir, n, eta, &refracted_dir);
         tir = !refracts;
     }
     num_t w_mirror = num_mul(weight, tir ? num_add(src, trc) : src);
@@ -429,8 +523,9 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, 
         ctx->stats.weight_cut++; /* too faint to matter: not traced */
     } else if (mirror) {
         ray_t r = {outside, shade_reflect(ray->dir, n)};
+        ray_error_t r_err = {hit_err, trace_err_clamp(num_add(err->dir, num_mul_int(normal_err, 2)))};
         ctx->stats.reflection++;
-        reflected = trace_ray(ctx, &r, NUM_ZERO, depth + 1, w_mirror);
+        reflected = trace_ray(ctx, &r, &r_err, NUM_ZERO, depth + 1, w_mirror);
         if (num_gt(src, NUM_ZERO))
             out = rgb_add(out, rgb_scale(reflected, src));
     }
@@ -438,20 +533,24 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, 
         rgb_t through = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
         vec3_t inside = vec3_madd(hit->point, n, num_neg(ctx->frame->ray_epsilon));
         num_t w_trc = num_mul(weight, trc);
+        ray_error_t straight_err = {hit_err, err->dir}, none = {NUM_ZERO, NUM_ZERO};
+        const ray_error_t *s_err = trace_err_if_heavy(&straight_err, &none, w_trc);
         if (!ctx->options.refraction) { /* never bends: straight through, any depth */
             ray_t r = {inside, ray->dir};
-            through = trace_straight(ctx, &r);
+            through = trace_straight(ctx, &r, s_err, w_trc);
         } else if (tir) { /* total internal reflection: the light stays inside */
             through = reflected;
         } else if (refracts && !trace_worth(ctx, w_trc)) {
             ctx->stats.weight_cut++;
         } else if (refracts) {
             ray_t r = {inside, refracted_dir};
+            ray_error_t r_err = {hit_err, trace_refract_error(err, normal_err, eta, cos_theta,
+                                                              refracted_dir, n)};
             ctx->stats.refraction++;
-            through = trace_ray(ctx, &r, NUM_ZERO, depth + 1, w_trc);
+            through = trace_ray(ctx, &r, &r_err, NUM_ZERO, depth + 1, w_trc);
         } else if (!can_recurse && ctx->options.refractionless) {
             ray_t r = {inside, ray->dir};
-            through = trace_straight(ctx, &r);
+            through = trace_straight(ctx, &r, s_err, w_trc);
         }
         out = rgb_add(out, rgb_scale(rgb_mul(colour, through), trc));
     }
@@ -460,12 +559,15 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const hit_t *hit, 
     return out;
 }
 
-static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, num_t tmin, int depth, num_t weight)
+static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err, num_t tmin,
+                       int depth, num_t weight)
 {
+    ray_error_t none = {NUM_ZERO, NUM_ZERO};
+    err = trace_err_if_heavy(err, &none, weight);
     hit_t hit;
-    if (!trace_nearest(ctx, ray, tmin, NULL, 0, &hit))
+    if (!trace_nearest(ctx, ray, err, tmin, NULL, 0, &hit))
         return ctx->frame->scene->background;
-    return trace_shade(ctx, ray, &hit, depth, weight);
+    return trace_shade(ctx, ray, err, &hit, depth, weight);
 }
 
 /* --------------------------------------------------------------- pixels */
@@ -494,10 +596,11 @@ static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const
      * counted apart from the secondary rays of its shading */
     uint64_t boxes = ctx->stats.box_tests, prims = ctx->stats.prim_tests;
     hit_t hit;
-    int found = trace_nearest(ctx, &ray, NUM_ZERO, clip, clip_count, &hit);
+    ray_error_t err = {NUM_ZERO, TRACE_DIR_ROUND}; /* from the eye, exactly */
+    int found = trace_nearest(ctx, &ray, &err, NUM_ZERO, clip, clip_count, &hit);
     ctx->stats.primary_box_tests += ctx->stats.box_tests - boxes;
     ctx->stats.primary_prim_tests += ctx->stats.prim_tests - prims;
-    rgb_t c = found ? trace_shade(ctx, &ray, &hit, 0, NUM_ONE) : f->scene->background;
+    rgb_t c = found ? trace_shade(ctx, &ray, &err, &hit, 0, NUM_ONE) : f->scene->background;
     if (ctx->pixel_lost || rgb_is_sat(c)) {
         ctx->stats.precision_lost_pixels++;
         if (ctx->options.mark_lost)
