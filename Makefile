@@ -85,8 +85,14 @@ FW_LIBS := -lm -lc -lgcc
 # BOARD_TESTS: scripts under tests/board run by the test runner
 # BOARD_PROGS: host programs a board test script runs (same NAME_SRCS and
 #              NAME_ARITH; built with ASan+UBSan into build/tests/ by `make`)
+# ARITH_FREE_SRCS: host sources without num_t (they never include
+#              fixed/num.h): compiled once for the programs of every
+#              arithmetic (build/host-any[-san]/, build/fuzz-any/), with no
+#              arithmetic defined, so one that does include num.h stops the
+#              build at num.h's #error instead of being shared wrongly
 FW_SRCS :=
 SHARED_SRCS :=
+ARITH_FREE_SRCS :=
 HOST_TOOLS :=
 HOST_TESTS :=
 BOARD_TESTS :=
@@ -136,18 +142,24 @@ endif
 
 # --------------------------------------------------------------- host rules
 # Shared and host sources compile once per (arithmetic, plain|san) into
-# build/host-<arith>[-san]/.
+# build/host-<arith>[-san]/; those of ARITH_FREE_SRCS once into
+# build/host-any[-san]/ (ARITH_DEF_any is empty).
 define host_objdir
 $(B)/host-$(1)$(2)/%.c.o: %.c
 	$$(call say,HOSTCC,$$@)
 	$(Q)mkdir -p $$(@D)
 	$(Q)$(HOST_CC) $(HOST_CFLAGS) $(ARITH_DEF_$(1)) $(if $(2),$(SAN_FLAGS)) -c $$< -o $$@
 endef
-$(foreach a,double float fixed $(HOST_EXTRA_ARITHS),$(eval $(call host_objdir,$(a),))$(eval $(call host_objdir,$(a),-san)))
+$(foreach a,any double float fixed $(HOST_EXTRA_ARITHS),$(eval $(call host_objdir,$(a),))$(eval $(call host_objdir,$(a),-san)))
+
+# $(call arith_objs,DIR-PREFIX,ARITH,SUFFIX,SOURCES): the objects of SOURCES,
+# DIR-PREFIX-any SUFFIX/ for those of ARITH_FREE_SRCS, DIR-PREFIX-ARITH SUFFIX/
+# for the others
+arith_objs = $(foreach s,$(4),$(1)-$(if $(filter $(s),$(ARITH_FREE_SRCS)),any,$(2))$(3)/$(s).o)
 
 # $(1) = program name, $(2) = output dir suffix ('' or -san), $(3) = output path
 define host_prog
-$(1)_OBJS := $$(patsubst %,$(B)/host-$$($(1)_ARITH)$(2)/%.o,$$($(1)_SRCS) $$(SHARED_SRCS))
+$(1)_OBJS := $$(call arith_objs,$(B)/host,$$($(1)_ARITH),$(2),$$($(1)_SRCS) $$(SHARED_SRCS))
 $(3): $$($(1)_OBJS)
 	$$(call say,HOSTLD,$$@)
 	$(Q)mkdir -p $$(@D)
@@ -160,7 +172,8 @@ $(foreach t,$(BOARD_PROGS),$(eval $(call host_prog,$(t),-san,$(B)/tests/$(t))))
 
 # ---------------------------------------------------------------- fuzzing
 # libFuzzer harnesses (tests/fuzz/): Debian's clang, with ASan and UBSan.
-# Their objects go to build/fuzz-<arith>/, the harnesses to build/fuzz/.
+# Their objects go to build/fuzz-<arith>/ (fuzz-any/ for ARITH_FREE_SRCS),
+# the harnesses to build/fuzz/.
 FUZZ_CC ?= clang
 FUZZ_SAN := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 FUZZ_SECONDS ?= 600
@@ -171,9 +184,9 @@ $(B)/fuzz-$(1)/%.c.o: %.c
 	$(Q)$(FUZZ_CC) $(HOST_CFLAGS) $(ARITH_DEF_$(1)) $(FUZZ_SAN) -fsanitize=fuzzer-no-link \
 		-c $$< -o $$@
 endef
-$(foreach a,double float fixed,$(eval $(call fuzz_objdir,$(a))))
+$(foreach a,any double float fixed,$(eval $(call fuzz_objdir,$(a))))
 define fuzz_prog
-$(1)_OBJS := $$(patsubst %,$(B)/fuzz-$$($(1)_ARITH)/%.o,$$($(1)_SRCS) $$(SHARED_SRCS))
+$(1)_OBJS := $$(call arith_objs,$(B)/fuzz,$$($(1)_ARITH),,$$($(1)_SRCS) $$(SHARED_SRCS))
 $(B)/fuzz/$(1): $$($(1)_OBJS)
 	$$(call say,FUZZLD,$$@)
 	$(Q)mkdir -p $$(@D)

@@ -13,6 +13,7 @@ test_num_fixed_ARITH := fixed
 # The one integer square root (fixed point's num_sqrt, the RC's area
 # schedules), checked against its definition.
 SHARED_SRCS += fixed/isqrt.c
+ARITH_FREE_SRCS += fixed/isqrt.c
 HOST_TESTS += test_isqrt
 test_isqrt_SRCS := tests/host/test_isqrt.c
 test_isqrt_ARITH := double

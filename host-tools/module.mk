@@ -5,6 +5,10 @@ HOST_TOOLS += links1
 BOARD_LAUNCHER_SRCS := host-tools/board.c host-tools/board_frames.c \
 	host-tools/board_opts.c host-tools/cli_opt.c host-tools/board_named.c \
 	host-tools/link_noise.c host-tools/link_relay.c
+# These host-side sources know no num_t (Makefile: ARITH_FREE_SRCS).
+ARITH_FREE_SRCS += $(BOARD_LAUNCHER_SRCS) host-tools/render_faults.c host-tools/link_transfer.c \
+	host-tools/link_shared.c host-tools/link_arq_sim.c host-tools/trace_file.c host-tools/trace_scale.c \
+	host-tools/replay.c
 links1_SRCS := host-tools/links1.c $(BOARD_LAUNCHER_SRCS) \
 	host-tools/cmd_boot.c host-tools/cmd_selftest.c host-tools/selftest_checks.c \
 	host-tools/selftest_link.c host-tools/link_transfer.c host-tools/link_shared.c host-tools/insn_report.c \

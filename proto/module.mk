@@ -2,6 +2,8 @@
 # result layouts, the arithmetic codes, the core counts, the area schedules,
 # the text formatter.
 SHARED_SRCS += proto/crc32.c proto/hostlink.c proto/link_arq.c proto/arith.c proto/areas.c proto/textfmt.c
+# None of them knows num_t: one build serves every arithmetic's host programs.
+ARITH_FREE_SRCS += proto/crc32.c proto/hostlink.c proto/link_arq.c proto/arith.c proto/areas.c proto/textfmt.c
 
 # The shared formatter against the host's snprintf.
 HOST_TESTS += test_textfmt

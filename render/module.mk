@@ -2,6 +2,8 @@
 # cores, drivers or messages.
 SHARED_SRCS += render/arena.c render/xform.c render/prim.c render/prepare.c \
 	render/shade.c render/maps.c render/trace.c render/precision.c
+# The arena knows no num_t: one host build for every arithmetic.
+ARITH_FREE_SRCS += render/arena.c
 
 # Renderer tests, once per arithmetic.
 HOST_TESTS += test_prim_double test_prim_float test_prim_fixed

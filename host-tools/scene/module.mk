@@ -17,6 +17,9 @@ SCENE_TEXT_SRCS := host-tools/scene/scene_lex.c host-tools/scene/scene_parse.c \
 	host-tools/scene/scene_board.c \
 	host-tools/scene/image_io.c host-tools/scene/cli_args.c host-tools/scene/scene_file.c \
 	$(SCENE_MODEL_SRCS)
+# All but the board conversion (scene_board.c) know no num_t: one host build
+# serves every arithmetic (Makefile: ARITH_FREE_SRCS).
+ARITH_FREE_SRCS += $(filter-out host-tools/scene/scene_board.c,$(SCENE_TEXT_SRCS))
 # Programs that read text scenes link these: the `model` statement reads
 # model files through libassimp (model_assimp.c, the only file that knows it).
 SCENE_TEXT_LIBS := -lpng -lassimp

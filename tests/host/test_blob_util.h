@@ -16,8 +16,9 @@
 static const char *const tb_scenes[] = {"demo", "city", "glass", "molecule", "anim"};
 #define TB_SCENE_COUNT (sizeof tb_scenes / sizeof tb_scenes[0])
 
-/* scenes/NAME.scn compiled; NULL (and a line saying why) on failure. */
-static inline uint8_t *tb_compile(const char *name, size_t *len)
+/* scenes/NAME.scn compiled at its resolution divided by div (1: as
+ * written); NULL (and a line saying why) on failure. */
+static inline uint8_t *tb_compile_div(const char *name, int div, size_t *len)
 {
     char path[128], err[SD_ERR_MAX];
     struct sd_scene s;
@@ -27,10 +28,17 @@ static inline uint8_t *tb_compile(const char *name, size_t *len)
         printf("cannot parse %s: %s\n", path, err);
         return NULL;
     }
+    s.view.width /= div;
+    s.view.height /= div;
     if (sd_compile(&s, &buf, len, err, sizeof err) != 0)
         printf("cannot compile %s: %s\n", path, err);
     sd_free(&s);
     return buf;
+}
+
+static inline uint8_t *tb_compile(const char *name, size_t *len)
+{
+    return tb_compile_div(name, 1, len);
 }
 
 /* A zeroed block of at least size bytes, aligned like an IMSU block. */
@@ -43,14 +51,15 @@ static inline void *tb_block(size_t size)
     return p;
 }
 
-/* Scene NAME as a blob of frame_index in a new block of exactly
- * render_blob_bytes; NULL on any failure (printed). */
-static inline render_blob_t *tb_blob(const char *name, uint32_t frame_index, size_t *block_size)
+/* Scene NAME (its resolution divided by div) as a blob of frame_index in a
+ * new block of exactly render_blob_bytes; NULL on any failure (printed). */
+static inline render_blob_t *tb_blob_div(const char *name, uint32_t frame_index, int div,
+                                         size_t *block_size)
 {
     size_t len, need;
     render_blob_error_t err;
     render_blob_t *blob = NULL;
-    uint8_t *buf = tb_compile(name, &len);
+    uint8_t *buf = tb_compile_div(name, div, &len);
     if (!buf)
         return NULL;
     if (render_blob_bytes(buf, len, &need, &err) == RENDER_BLOB_OK) {
@@ -66,6 +75,11 @@ static inline render_blob_t *tb_blob(const char *name, uint32_t frame_index, siz
     free(buf);
     *block_size = need;
     return blob;
+}
+
+static inline render_blob_t *tb_blob(const char *name, uint32_t frame_index, size_t *block_size)
+{
+    return tb_blob_div(name, frame_index, 1, block_size);
 }
 
 /* Every pixel of the frame through render_span (full tree walk). */

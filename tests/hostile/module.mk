@@ -3,6 +3,7 @@
 # renders the next scene (tests/board/render_hostile.sh, with the files
 # make_hostile writes).
 HOSTILE_SRCS := tests/hostile/hostile.c
+ARITH_FREE_SRCS += $(HOSTILE_SRCS)
 
 HOST_TESTS += test_hostile
 test_hostile_SRCS = tests/hostile/test_hostile.c $(HOSTILE_SRCS) $(SCENE_TEXT_SRCS)
