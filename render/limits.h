@@ -42,8 +42,9 @@
 #define RENDER_STACK_BYTES(max_depth) \
     (RENDER_STACK_BASE + RENDER_STACK_PER_DEPTH * ((max_depth) + 1))
 
-/* Tolerances, in the units the scene is stored in: its largest length
- * scaled to 8..16 (below; the fixed-point step is 2^-19 = 1.9e-6). */
+/* Tolerances, in the units the scene is stored in (its largest length
+ * scaled to 8..16, below; the fixed-point step is 2^-19 = 1.9e-6) times
+ * 2^tol_exp (scene.h: the geometry's largest length at 8..16). */
 #define RENDER_RAY_EPSILON_VALUE 2e-3   /* secondary rays start this far from
                                            the surface so they do not hit it
                                            again through rounding */
@@ -58,11 +59,18 @@
 /* Scaled to the scene (docs/renderer.md, "Lengths scaled to the scene"):
  * the loader multiplies every length by the power of two 2^unit_exp that
  * brings the scene's largest |length| into [2^RENDER_NORM_EXP,
- * 2^(RENDER_NORM_EXP+1)); the tolerances above apply to the scaled scene,
- * so a scene scaled by any power of two renders the same, bit for bit. */
+ * 2^(RENDER_NORM_EXP+1)); the tolerances above apply to the scaled scene
+ * (times 2^tol_exp), so a scene scaled by any power of two renders the
+ * same, bit for bit. */
 #ifndef RENDER_NORM_EXP /* overridable to measure (docs/RESULTS.md) */
 #define RENDER_NORM_EXP 3
 #endif
+#define RENDER_TOL_SLACK_EXP 3 /* the tolerances follow the scene's largest
+                                    length, but stay within 2^3 of the
+                                    geometry's (scene_t.tol_exp) */
+#define RENDER_TOL_EXP_MIN (-6) /* and down to 2^-6 of the above: in fixed
+                                     point the ray offset stays 16 steps or
+                                     more */
 #define RENDER_NORM_EXP_MIN (-24) /* 2^unit_exp stays within */
 #define RENDER_NORM_EXP_MAX 40
 

@@ -5,9 +5,9 @@
 #include "render/vec3.h"
 
 #define PRECISION_INVERSE_TOL NUM_C(RENDER_INVERSE_TOLERANCE_VALUE)
-#define PRECISION_LOST_TOL NUM_C(RENDER_LOST_TOLERANCE_VALUE)
-#define PRECISION_MIN_SPAN NUM_C(RENDER_MIN_SPAN_VALUE)
-#define PRECISION_ACNE_TOL NUM_C(RENDER_RAY_EPSILON_VALUE / 2)
+#define PRECISION_LOST_TOL(s) scene_tolerance((s), NUM_C(RENDER_LOST_TOLERANCE_VALUE))
+#define PRECISION_MIN_SPAN(s) scene_tolerance((s), NUM_C(RENDER_MIN_SPAN_VALUE))
+#define PRECISION_ACNE_TOL(s) scene_tolerance((s), NUM_C(RENDER_RAY_EPSILON_VALUE / 2))
 
 /* Largest |(m * inv)[i][j] - identity| over the 3x3 part. */
 static num_t precision_residual(const xform_t *m, const xform_t *inv)
@@ -175,7 +175,7 @@ render_status_t precision_check(render_frame_t *f)
     }
     if (num_is_sat(f->span) || num_is_sat(extent))
         f->precision_lost = 1;
-    num_t lost_tol = PRECISION_LOST_TOL, acne_tol = PRECISION_ACNE_TOL;
+    num_t lost_tol = PRECISION_LOST_TOL(f->scene), acne_tol = PRECISION_ACNE_TOL(f->scene);
     for (uint32_t i = 0; i < f->prim_count; i++) {
         render_prim_t *p = &f->prims[i];
         num_t least, local, rows[2], worst = precision_hit_error(p, extent, &least, &local, rows);
@@ -224,7 +224,7 @@ render_status_t precision_check(render_frame_t *f)
             break;
         }
     }
-    if (num_lt(f->span, PRECISION_MIN_SPAN))
+    if (num_lt(f->span, PRECISION_MIN_SPAN(f->scene)))
         return RENDER_ERR_EXTENT;
     return f->detail_prim != RENDER_NO_PRIM ? RENDER_ERR_DETAIL : RENDER_OK;
 }
@@ -400,7 +400,7 @@ void precision_extent_message(const render_frame_t *f, char *out, size_t cap)
     const scene_t *s = f->scene;
     char span[24], need[24], offset[24], what[48];
     precision_fmt_len(s, f->span, span, sizeof span);
-    precision_fmt_len(s, PRECISION_MIN_SPAN, need, sizeof need);
+    precision_fmt_len(s, PRECISION_MIN_SPAN(s), need, sizeof need);
     precision_fmt_len(s, f->ray_epsilon, offset, sizeof offset);
 #if defined(LINKS1_NUM_FIXED)
     fmt_snprintf(what, sizeof what, "fixed Q%d.%d resolves 2^-%d", 31 - NUM_FRAC_BITS,

@@ -29,7 +29,7 @@ const char *render_status_name(render_status_t status)
     case RENDER_ERR_SINGULAR: return "a cluster transform cannot be inverted";
     case RENDER_ERR_RELOCATE: return "a pointer of the blob lies outside it (not self-contained), or a bad base";
     case RENDER_ERR_AREA: return "area empty or not inside the screen";
-    case RENDER_ERR_EXTENT: return "the scene spans less than RENDER_MIN_SPAN_VALUE (500 ray offsets; both scaled with a scene whose largest length is under 1/2): its clusters shrink it below its own coordinates; scale those instead";
+    case RENDER_ERR_EXTENT: return "the scene spans less than RENDER_MIN_SPAN_VALUE (500 ray offsets; both follow the geometry's largest length): its clusters shrink it below its own coordinates; scale those instead";
     case RENDER_ERR_DETAIL: return "a primitive smaller than RENDER_MIN_DETAIL_STEPS (2) steps of the arithmetic where it lies: its shape would be off by more than a quarter; enlarge it or use another arithmetic";
     case RENDER_ERR_SCALE: return "a cluster transform scales beyond what the arithmetic can invert (it is not exactly singular: scale the scene instead of the cluster, or use another arithmetic)";
     }
@@ -222,7 +222,7 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
                       const xform_t *from_eye, render_prim_t *p)
 {
     num_t lin[3][3];
-    num_t pad = NUM_C(RENDER_BOUNDS_PAD_VALUE);
+    num_t pad = scene_tolerance(f->scene, NUM_C(RENDER_BOUNDS_PAD_VALUE));
     p->kind = sp->kind;
     p->normals = NULL; /* flat, unless a smooth triangle below */
     p->material = sp->material;
@@ -320,7 +320,7 @@ static void prep_screen_rect(const render_frame_t *f, render_cluster_t *c)
         c->screen_x1 = c->screen_y1 = 0;
         return;
     }
-    if (num_lt(b->lo.z, NUM_C(RENDER_NEAR_PLANE_VALUE)))
+    if (num_lt(b->lo.z, scene_tolerance(f->scene, NUM_C(RENDER_NEAR_PLANE_VALUE))))
         return; /* reaches behind the eye: whole screen */
     num_t x0 = NUM_ZERO, x1 = NUM_ZERO, y0 = NUM_ZERO, y1 = NUM_ZERO;
     for (int k = 0; k < 8; k++) {
@@ -471,7 +471,7 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     f->height = s->height;
     f->cluster_count = s->cluster_count;
     f->prim_count = s->prim_count;
-    f->ray_epsilon = NUM_C(RENDER_RAY_EPSILON_VALUE);
+    f->ray_epsilon = scene_tolerance(s, NUM_C(RENDER_RAY_EPSILON_VALUE));
     f->screen_half_h = s->camera.tan_half_fov_y;
     f->screen_half_w = num_mul(s->camera.tan_half_fov_y, num_from_ratio(s->width, s->height));
 

@@ -227,9 +227,23 @@ typedef struct {
     int32_t unit_exp;  /* every length above (positions, radii, half edges,
                           translations, component centres and radii) is the
                           scene text's times 2^unit_exp (render/limits.h,
-                          RENDER_NORM_EXP): exact in the IEEE builds; the
-                          tolerances of render/limits.h are in these units,
+                          RENDER_NORM_EXP): exact in the IEEE builds; a
                           so a scene scaled by 2^k renders the same */
+    int32_t tol_exp;   /* the tolerances of render/limits.h apply times
+                          2^tol_exp in these units: 0 unless the geometry's
+                          largest |length| (primitives, density components,
+                          cluster and key translations; not the eye or the
+                          lights) is under 2^-RENDER_TOL_SLACK_EXP of the
+                          scene's, so a far light or eye does not widen them
+                          beyond 8 times the geometry's norm.  In
+                          RENDER_TOL_EXP_MIN..0 */
 } scene_t;
+
+/* A tolerance of render/limits.h (NUM_C of a ..._VALUE) in the units the
+ * scene is stored in. */
+static inline num_t scene_tolerance(const scene_t *s, num_t value)
+{
+    return num_scale2(value, s->tol_exp);
+}
 
 #endif

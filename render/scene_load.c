@@ -696,34 +696,39 @@ _Static_assert((long long)SCN_MAX_COORD < (1LL << (RENDER_NORM_EXP + 1 - RENDER_
 _Static_assert((long)SCN_MAX_FACTOR <= NUM_COORD_LIMIT, "SCN_MAX_FACTOR beyond the fixed range");
 static void load_scale(struct load *L, scene_t *s)
 {
-    int32_t most = load_max_exp(load_rec(L, SCN_SEC_VIEW, 0) + SCN_VIEW_EYE, 6, 0);
+    int32_t geom = 0; /* the geometry's largest exponent: scene_t.tol_exp */
+    for (uint32_t i = 0; i < L->sec[SCN_SEC_KEYS].count; i++)
+        geom = load_max_exp(load_rec(L, SCN_SEC_KEYS, i) + SCN_KEY_TRANSLATE, 3, geom);
+    for (uint32_t i = 0; i < L->sec[SCN_SEC_CLUSTERS].count; i++)
+        for (int r = 0; r < 3; r++)
+            geom = load_max_exp(load_rec(L, SCN_SEC_CLUSTERS, i) + SCN_CLUSTER_MATRIX +
+                                    4 * (4 * r + 3), 1, geom);
+    for (uint32_t i = 0; i < L->sec[SCN_SEC_COMPONENTS].count; i++)
+        geom = load_max_exp(load_rec(L, SCN_SEC_COMPONENTS, i) + SCN_COMPONENT_CENTRE, 4, geom);
+    for (uint32_t i = 0; i < L->sec[SCN_SEC_PRIMS].count; i++) {
+        const uint8_t *p = load_rec(L, SCN_SEC_PRIMS, i);
+        uint16_t kind = wire_get_u16(p + SCN_PRIM_KIND);
+        int n = kind == SCN_PRIM_TRIANGLE ? 9 : kind == SCN_PRIM_DENSITY ? 0 : 6;
+        geom = load_max_exp(p + SCN_PRIM_VALUES, n, geom);
+    }
+    int32_t most = load_max_exp(load_rec(L, SCN_SEC_VIEW, 0) + SCN_VIEW_EYE, 6, geom);
     for (uint32_t i = 0; i < L->sec[SCN_SEC_LIGHTS].count; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_LIGHTS, i);
         if (wire_get_u32(p + SCN_LIGHT_KIND) != SCN_LIGHT_PARALLEL)
             most = load_max_exp(p + SCN_LIGHT_POSITION, 3, most);
     }
-    for (uint32_t i = 0; i < L->sec[SCN_SEC_KEYS].count; i++)
-        most = load_max_exp(load_rec(L, SCN_SEC_KEYS, i) + SCN_KEY_TRANSLATE, 3, most);
-    for (uint32_t i = 0; i < L->sec[SCN_SEC_CLUSTERS].count; i++)
-        for (int r = 0; r < 3; r++)
-            most = load_max_exp(load_rec(L, SCN_SEC_CLUSTERS, i) + SCN_CLUSTER_MATRIX +
-                                    4 * (4 * r + 3), 1, most);
-    for (uint32_t i = 0; i < L->sec[SCN_SEC_COMPONENTS].count; i++)
-        most = load_max_exp(load_rec(L, SCN_SEC_COMPONENTS, i) + SCN_COMPONENT_CENTRE, 4, most);
-    for (uint32_t i = 0; i < L->sec[SCN_SEC_PRIMS].count; i++) {
-        const uint8_t *p = load_rec(L, SCN_SEC_PRIMS, i);
-        uint16_t kind = wire_get_u16(p + SCN_PRIM_KIND);
-        int n = kind == SCN_PRIM_TRIANGLE ? 9 : kind == SCN_PRIM_DENSITY ? 0 : 6;
-        most = load_max_exp(p + SCN_PRIM_VALUES, n, most);
-    }
-    int e = 0;
+    int e = 0, t = 0;
     if (most != 0) {
         int32_t mag = most - 127; /* the largest |length| is in [2^mag, 2^(mag+1)) */
         e = RENDER_NORM_EXP - mag;
     }
     e = e < RENDER_NORM_EXP_MIN ? RENDER_NORM_EXP_MIN : e > RENDER_NORM_EXP_MAX ? RENDER_NORM_EXP_MAX : e;
+    if (geom != 0) /* the geometry's largest length, scaled by 2^e, to 8..16 */
+        t = geom - most + RENDER_TOL_SLACK_EXP;
+    t = t > 0 ? 0 : t;
     L->unit_exp = e;
     s->unit_exp = e;
+    s->tol_exp = t < RENDER_TOL_EXP_MIN ? RENDER_TOL_EXP_MIN : t;
 }
 
 /* ---------------------------------------------------------------- entry */

@@ -459,6 +459,56 @@ static void test_bad_indices_and_values(void)
     free(b);
 }
 
+/* The tolerances do not follow a far light or eye beyond 8 times the
+ * geometry (scene_t.tol_exp): a light at 200 beside spheres reaching 2.5
+ * ([2, 4)) scales the lengths by 2^-4 (200 to 12.5) and the tolerances by
+ * 2^-6+3 more; a light at 20 leaves them (0); times 64, the same; a light
+ * at 1e5, 2^-6 (RENDER_TOL_EXP_MIN). */
+static void tol_case(const char *text, int unit_exp, int tol_exp)
+{
+    struct sd_scene sd;
+    char err[SD_ERR_MAX];
+    uint8_t *buf = NULL;
+    size_t len = 0;
+    CHECK_EQ_INT(sd_parse_text("t.scn", text, &sd, err, sizeof err), 0);
+    CHECK_EQ_INT(sd_compile(&sd, &buf, &len, err, sizeof err), 0);
+    sd_free(&sd);
+    static uint8_t mem[ARENA_BYTES];
+    arena_t arena;
+    arena_init(&arena, mem, sizeof mem);
+    scene_t s;
+    scene_load_error_t e;
+    CHECK_EQ_INT(scene_load(buf, len, &arena, &s, &e), SCENE_LOAD_OK);
+    CHECK_EQ_INT(s.unit_exp, unit_exp);
+    CHECK_EQ_INT(s.tol_exp, tol_exp);
+    free(buf);
+}
+
+static void test_tolerance_follows_geometry(void)
+{
+    tol_case("camera { eye -1 8.8 3.5 look_at 0 0 0.4 }\n"
+             "light point { position -100 100 200 }\nmaterial m { }\n"
+             "sphere { material m centre 0.9 0.5 2.1 radius 0.4 }\n",
+             RENDER_NORM_EXP - 7, -6 + RENDER_TOL_SLACK_EXP);
+    tol_case("camera { eye -1 8.8 3.5 look_at 0 0 0.4 }\n"
+             "light point { position -10 10 20 }\nmaterial m { }\n"
+             "sphere { material m centre 0.9 0.5 2.1 radius 0.4 }\n",
+             RENDER_NORM_EXP - 4, 0);
+    tol_case("camera { eye -64 563.2 224 look_at 0 0 25.6 }\n"
+             "light point { position -640 640 1280 }\nmaterial m { }\n"
+             "sphere { material m centre 57.6 32 134.4 radius 25.6 }\n",
+             RENDER_NORM_EXP - 10, 0);
+    tol_case("camera { eye -1 8.8 3.5 look_at 0 0 0.4 }\n"
+             "light point { position -1e5 0 0 }\nmaterial m { }\n"
+             "sphere { material m centre 0.9 0.5 2.1 radius 0.4 }\n",
+             RENDER_NORM_EXP - 16, RENDER_TOL_EXP_MIN);
+    /* the geometry the largest: the tolerances as the lengths */
+    tol_case("camera { eye 0 1 -5 look_at 0 0 0 }\n"
+             "light point { position 0 5 0 }\nmaterial m { }\n"
+             "sphere { material m centre 0 0 0 radius 9 }\n",
+             RENDER_NORM_EXP - 3, 0);
+}
+
 /* A scene at the length limit (SCN_MAX_COORD) loads in every arithmetic,
  * its lengths scaled to 8..16; one beyond it is refused by the compiler,
  * naming the limit. */
@@ -521,6 +571,7 @@ int main(void)
     RUN(test_section_table);
     RUN(test_bad_indices_and_values);
     RUN(test_length_limit);
+    RUN(test_tolerance_follows_geometry);
     RUN(test_small_arena);
     return check_exit();
 }
