@@ -459,12 +459,10 @@ static void test_bad_indices_and_values(void)
     free(b);
 }
 
-/* The tolerances do not follow a far light or eye beyond 8 times the
- * geometry (scene_t.tol_exp): a light at 200 beside spheres reaching 2.5
- * ([2, 4)) scales the lengths by 2^-4 (200 to 12.5) and the tolerances by
- * 2^-6+3 more; a light at 20 leaves them (0); times 64, the same; a light
- * at 1e5, 2^-6 (RENDER_TOL_EXP_MIN). */
-static void tol_case(const char *text, int unit_exp, int tol_exp)
+/* A scene text compiled and loaded into *s (its arena static, as each
+ * test's); the compiled buffer, which *s points into, for the caller to
+ * free. */
+static uint8_t *load_text(const char *text, scene_t *s)
 {
     struct sd_scene sd;
     char err[SD_ERR_MAX];
@@ -476,9 +474,20 @@ static void tol_case(const char *text, int unit_exp, int tol_exp)
     static uint8_t mem[ARENA_BYTES];
     arena_t arena;
     arena_init(&arena, mem, sizeof mem);
-    scene_t s;
     scene_load_error_t e;
-    CHECK_EQ_INT(scene_load(buf, len, &arena, &s, &e), SCENE_LOAD_OK);
+    CHECK_EQ_INT(scene_load(buf, len, &arena, s, &e), SCENE_LOAD_OK);
+    return buf;
+}
+
+/* The tolerances do not follow a far light or eye beyond 8 times the
+ * geometry (scene_t.tol_exp): a light at 200 beside spheres reaching 2.5
+ * ([2, 4)) scales the lengths by 2^-4 (200 to 12.5) and the tolerances by
+ * 2^-6+3 more; a light at 20 leaves them (0); times 64, the same; a light
+ * at 1e5, 2^-6 (RENDER_TOL_EXP_MIN). */
+static void tol_case(const char *text, int unit_exp, int tol_exp)
+{
+    scene_t s;
+    uint8_t *buf = load_text(text, &s);
     CHECK_EQ_INT(s.unit_exp, unit_exp);
     CHECK_EQ_INT(s.tol_exp, tol_exp);
     free(buf);
@@ -517,23 +526,14 @@ static void test_length_limit(void)
     const char *text = "camera { eye 0 3e7 -1e8 look_at 0 0 0 }\n"
                        "light point { position 1e8 1e8 -1e8 }\nmaterial m { }\n"
                        "sphere { material m centre 0 0 0 radius 5e7 }\n";
-    struct sd_scene sd;
-    char err[SD_ERR_MAX];
-    uint8_t *buf = NULL;
-    size_t len = 0;
-    CHECK_EQ_INT(sd_parse_text("t.scn", text, &sd, err, sizeof err), 0);
-    CHECK_EQ_INT(sd_compile(&sd, &buf, &len, err, sizeof err), 0);
-    sd_free(&sd);
-    static uint8_t mem[ARENA_BYTES];
-    arena_t arena;
-    arena_init(&arena, mem, sizeof mem);
     scene_t s;
-    scene_load_error_t e;
-    CHECK_EQ_INT(scene_load(buf, len, &arena, &s, &e), SCENE_LOAD_OK);
+    uint8_t *buf = load_text(text, &s);
     CHECK_EQ_INT(s.unit_exp, RENDER_NORM_EXP - 26); /* 1e8 is in [2^26, 2^27) */
     CHECK_NEAR(num_to_double(s.camera.eye.z), -1e8 * ldexp(1, s.unit_exp), VAL_TOL * 16);
     CHECK_NEAR(LEN(&s, s.prims[0].shape.ellipsoid.radius.x), 5e7, 5e7 * VAL_TOL);
     free(buf);
+    struct sd_scene sd;
+    char err[SD_ERR_MAX];
     const char *beyond = "camera { eye 0 3e7 -2e8 look_at 0 0 0 }\n"
                          "light point { position 0 5 0 }\nmaterial m { }\n"
                          "sphere { material m radius 1 }\n";
