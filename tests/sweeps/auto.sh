@@ -48,6 +48,7 @@ board_cost() { # SCENE FIRMWARE: NC instructions per pixel
 }
 
 printf 'family\tknob\tfpu\tpick\tpick_psnr\tpick_cost\tbest\tbest_psnr\tbest_cost\tpick_over_best\tcandidates\n' >"$tsv"
+rm -f "$out"/work/*.png.done # a run stopped part way leaves its marks
 for entry in "${families[@]}"; do
     IFS='|' read -r family knobs _ _ <<<"$entry"
     for knob in $knobs; do
