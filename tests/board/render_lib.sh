@@ -96,3 +96,15 @@ render_faults_one() {
         echo "FAIL ${name}_summary: want $k NCs ($planned) caught by $want and the re-issued areas listed; got: ${line:-no failure line}"
     fi
 }
+
+# render_tiny_sphere_scene FILE: issue 11's scene, a sphere of radius 1e-6
+# (one step of fixed Q12.19) beside the eye in a scene spanning 12: fixed
+# point refuses it (RENDER_ERR_DETAIL), float renders it
+# (render_refuse.sh, render_auto.sh).
+render_tiny_sphere_scene() {
+    cat >"$1" <<'EOF'
+camera { eye 0 1 -0.00001  look_at 0 1 0  up 0 1 0  fov 40 }  resolution 64 48
+light point { colour 1 1 1  position -4 9 -5 }  material m { colour 1 1 1 dic 0.3 drc 0.7 }
+box { material m  min -6 -0.5 -4  max 6 0 8 }   sphere { material m centre 0 1 0 radius 0.000001 }
+EOF
+}

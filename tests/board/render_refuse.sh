@@ -61,11 +61,7 @@ else
 fi
 
 tiny=$RENDER_TMP/tiny_sphere.scn
-cat >"$tiny" <<'EOF'
-camera { eye 0 1 -0.00001  look_at 0 1 0  up 0 1 0  fov 40 }  resolution 64 48
-light point { colour 1 1 1  position -4 9 -5 }  material m { colour 1 1 1 dic 0.3 drc 0.7 }
-box { material m  min -6 -0.5 -4  max 6 0 8 }   sphere { material m centre 0 1 0 radius 0.000001 }
-EOF
+render_tiny_sphere_scene "$tiny"
 "$LINKS1" ref "$tiny" --arith fixed -o "$RENDER_TMP/tiny-host.ppm" >"$RENDER_TMP/tiny-host.log" 2>&1
 want=$(sed -n 's/^links1 ref: [^:]*: //p' "$RENDER_TMP/tiny-host.log")
 ref=$(render_ref $good fixed 80x60)
