@@ -1,6 +1,10 @@
 /* render/xform.c: affine maps: apply, compose, invert, build from keys. */
 #include "render/vec3.h"
 
+/* Bounds the power of two a row or column is scaled by before inversion
+ * (float builds: far inside the exponent range). */
+#define XFORM_MAX_EXPONENT 60
+
 xform_t xform_identity(void)
 {
     xform_t m;
@@ -51,12 +55,48 @@ int xform_is_sat(const xform_t *m)
     return 0;
 }
 
-/* Cofactor inverse.  The determinant is divided out of each cofactor
- * separately (cofactor / det), not through 1/det, which would lose the
- * fixed build's precision for large determinants. */
+/* The power of two that brings big (> 0) into [1/2, 2). */
+static int xform_unit_exponent(num_t big)
+{
+    int k = 0;
+    if (num_eq(big, NUM_ZERO) || num_is_sat(big))
+        return 0;
+    while (num_lt(big, NUM_HALF) && k < XFORM_MAX_EXPONENT) {
+        big = num_scale2(big, 1);
+        k++;
+    }
+    while (num_ge(big, NUM_C(2)) && k > -XFORM_MAX_EXPONENT) {
+        big = num_scale2(big, -1);
+        k--;
+    }
+    return k;
+}
+
+/* Cofactor inverse.  The map is first brought to about unit size, rows
+ * then columns, by powers of two (A = Dr m Dc, inverse(m) = Dc inverse(A)
+ * Dr): in fixed point the cofactors and determinant of a map scaled by
+ * 0.1 would otherwise keep only a few hundred steps (m inverse(m) off the
+ * identity by 6e-4 in Q13.18) and a map scaled by 0.03 or 16 could not be
+ * inverted at all; in float the scaling is exact and changes no bit.  The
+ * determinant is divided out of each cofactor separately (cofactor / det),
+ * not through 1/det, which would lose the fixed build's precision for
+ * large determinants. */
 int xform_invert(const xform_t *m, xform_t *out)
 {
-    const num_t(*a)[4] = m->m;
+    int kr[3], kc[3];
+    for (int r = 0; r < 3; r++)
+        kr[r] = xform_unit_exponent(num_max(num_abs(m->m[r][0]),
+                                            num_max(num_abs(m->m[r][1]), num_abs(m->m[r][2]))));
+    for (int c = 0; c < 3; c++) {
+        num_t big = NUM_ZERO;
+        for (int r = 0; r < 3; r++)
+            big = num_max(big, num_abs(num_scale2(m->m[r][c], kr[r])));
+        kc[c] = xform_unit_exponent(big);
+    }
+    num_t a[3][3];
+    for (int r = 0; r < 3; r++)
+        for (int c = 0; c < 3; c++)
+            a[r][c] = num_scale2(m->m[r][c], kr[r] + kc[c]);
     num_t c00 = num_sub(num_mul(a[1][1], a[2][2]), num_mul(a[1][2], a[2][1]));
     num_t c01 = num_sub(num_mul(a[1][2], a[2][0]), num_mul(a[1][0], a[2][2]));
     num_t c02 = num_sub(num_mul(a[1][0], a[2][1]), num_mul(a[1][1], a[2][0]));
@@ -75,8 +115,8 @@ int xform_invert(const xform_t *m, xform_t *out)
     inv[2][2] = num_sub(num_mul(a[0][0], a[1][1]), num_mul(a[0][1], a[1][0]));
     for (int r = 0; r < 3; r++)
         for (int c = 0; c < 3; c++)
-            out->m[r][c] = num_div(inv[r][c], det);
-    vec3_t t = vec3_make(a[0][3], a[1][3], a[2][3]);
+            out->m[r][c] = num_scale2(num_div(inv[r][c], det), kc[r] + kr[c]);
+    vec3_t t = vec3_make(m->m[0][3], m->m[1][3], m->m[2][3]);
     vec3_t it = xform_dir(out, t);
     out->m[0][3] = num_neg(it.x);
     out->m[1][3] = num_neg(it.y);

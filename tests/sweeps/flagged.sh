@@ -39,4 +39,4 @@ want() { # NAME FAMILY KNOB ARITH TEXT
 want refuse_span_double cluster_scale 0.01 double \
     "scene spans 0.121; double resolves 2^-52 of a value (lengths scaled by 2^1), but secondary rays start 0.001 from a surface, so a scene needs a span of at least 0.5"
 want refuse_cluster_scale_fixed cluster_scale 0.01 fixed \
-    "a cluster transform scales beyond what the arithmetic can invert"
+    "scene spans 0.121; fixed Q12.19 resolves 2^-19 (lengths scaled by 2^1), but secondary rays start 0.001 from a surface, so a scene needs a span of at least 0.5"
