@@ -261,8 +261,8 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
     case SCENE_PRIM_ELLIPSOID:
     case SCENE_PRIM_BOX: {
         int round = sp->kind == SCENE_PRIM_ELLIPSOID;
-        vec3_t c = round ? sp->shape.ellipsoid.centre : sp->shape.box.centre;
-        vec3_t r = round ? sp->shape.ellipsoid.radius : sp->shape.box.half;
+        vec3_t c, r;
+        scene_prim_centre_axes(sp, &c, &r);
         /* local = diag(1/r) * (cluster point - c) */
         xform_t shape = xform_identity();
         num_t rr[3] = {r.x, r.y, r.z}, cc[3] = {c.x, c.y, c.z};
