@@ -208,6 +208,9 @@ typedef struct {
                                transmission goes straight through */
     uint8_t mark_lost;      /* 1: a pixel that lost precision is painted
                                RENDER_LOST_COLOUR instead */
+    uint16_t density_steps; /* equal steps of a density sphere's root finder,
+                               SCN_MIN_DENSITY_STEPS..SCN_MAX_DENSITY_STEPS
+                               (render/prim.c; render_prim_t.density_steps) */
     num_t min_weight;       /* adaptive depth, 0..1: a reflected or refracted
                                ray whose weight (the product of src and trc
                                along its path) falls below it is not traced;
