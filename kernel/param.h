@@ -48,7 +48,7 @@
 #define LINE_MAX_PAYLOAD 1024
 
 /* Log text of one LINK_LOG frame / one panic message. */
-#define KLOG_MAX 200
+#define KLOG_MAX 288
 
 /* Timeouts (milliseconds of the generic timer). */
 #define BOOT_CORE_WAIT_MS 2000    /* core 0 waiting for one core to boot */

@@ -27,8 +27,9 @@
 #include "render/render.h"
 
 #define RENDER_BLOB_MAGIC 0x4c42314cu /* "L1BL" in memory, little-endian */
-#define RENDER_BLOB_MSG_MAX 184 /* with the DM's "scene refused: " within
-                                   its log line (KLOG_MAX, 200) */
+#define RENDER_BLOB_MSG_MAX 272 /* with the DM's "scene refused: " within
+                                   its log line (KLOG_MAX, 288; asserted in
+                                   roles/dm_render.c) */
 
 typedef struct {
     uint32_t magic;        /* RENDER_BLOB_MAGIC once built */

@@ -33,7 +33,7 @@ typedef struct {
 } render_layout_t;
 
 /* The board's record sizes, in the order of render_layout_t. */
-#define RENDER_BOARD_BLOB 168
+#define RENDER_BOARD_BLOB 172
 #define RENDER_BOARD_LIGHT 48
 #define RENDER_BOARD_MATERIAL 44
 #define RENDER_BOARD_MAP 24
@@ -41,7 +41,7 @@ typedef struct {
 #define RENDER_BOARD_PRIM 72
 #define RENDER_BOARD_COMPONENT 20
 #define RENDER_BOARD_KEY 44
-#define RENDER_BOARD_FRAME 572
+#define RENDER_BOARD_FRAME 576
 #define RENDER_BOARD_FRAME_CLUSTER 96
 #define RENDER_BOARD_FRAME_PRIM 232
 #define RENDER_BOARD_NUM 4

@@ -20,9 +20,8 @@
 
 /* Density-sphere root finder: fixed iteration counts keep every build and
  * every core on exactly the same path. */
-#ifndef RENDER_DENSITY_SAMPLES /* overridable to measure (tests/sweeps/pareto.sh) */
-#define RENDER_DENSITY_SAMPLES 24     /* march steps to bracket a root */
-#endif
+/* The march steps that bracket a root are the scene's option
+ * density_steps (proto/scene_format.h SCN_DEFAULT_DENSITY_STEPS). */
 #define RENDER_DENSITY_BISECTIONS 24  /* bisection steps once bracketed */
 
 

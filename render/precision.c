@@ -270,9 +270,8 @@ void precision_detail(render_frame_t *f, uint32_t i, const xform_t *to_eye)
         break;
     case SCENE_PRIM_ELLIPSOID:
     case SCENE_PRIM_BOX: {
-        int round = sp->kind == SCENE_PRIM_ELLIPSOID;
-        vec3_t c = round ? sp->shape.ellipsoid.centre : sp->shape.box.centre;
-        vec3_t r = round ? sp->shape.ellipsoid.radius : sp->shape.box.half;
+        vec3_t c, r;
+        scene_prim_centre_axes(sp, &c, &r);
         num_t eye = NUM_FAR, own = NUM_FAR, own_reach = NUM_ZERO;
         for (int j = 0; j < 3; j++) {
             num_t rj = num_abs(vec3_get(r, j));
@@ -409,10 +408,20 @@ void precision_extent_message(const render_frame_t *f, char *out, size_t cap)
     fmt_snprintf(what, sizeof what, "%s resolves 2^-%d of a value", NUM_NAME,
                  (int)sizeof(num_t) == 8 ? 52 : 23);
 #endif
+    /* the tolerances follow the geometry down to RENDER_TOL_EXP_MIN: there
+     * the eye or a light is at least 2^(SLACK - MIN - 1) times farther out
+     * (scene.h tol_exp); above it the geometry as stored was large enough
+     * and only its clusters can have shrunk it */
+    char cause[96];
+    if (s->tol_exp <= RENDER_TOL_EXP_MIN)
+        fmt_snprintf(cause, sizeof cause, "the eye or a light lies over %d times farther out than "
+                     "the geometry; bring it closer", 1 << (RENDER_TOL_SLACK_EXP - RENDER_TOL_EXP_MIN - 1));
+    else
+        fmt_snprintf(cause, sizeof cause, "its clusters shrink it below its coordinates; scale "
+                     "those instead");
     fmt_snprintf(out, cap, "scene spans %s; %s (lengths scaled by 2^%ld), but secondary rays "
-                 "start %s from a surface, so a scene needs a span of at least %s: its clusters "
-                 "shrink it below its coordinates; scale those instead",
-                 span, what, (long)s->unit_exp, offset, need);
+                 "start %s from a surface, so a scene needs a span of at least %s: %s",
+                 span, what, (long)s->unit_exp, offset, need, cause);
 }
 
 /* What a primitive is and what its smallest size is called. */

@@ -6,6 +6,7 @@
  * primitives by cluster.  Inverse maps are composed from the inverses of
  * each level (rather than inverting the composed map) to keep precision.
  */
+#include "proto/scene_format.h"
 #include "render/precision.h"
 #include "render/prim.h"
 #include "render/vec3.h"
@@ -22,7 +23,7 @@ const char *render_status_name(render_status_t status)
     case RENDER_ERR_DEPTH: return "max_depth above RENDER_MAX_DEPTH";
     case RENDER_ERR_CLUSTER: return "bad cluster parent, or nesting deeper than RENDER_MAX_CLUSTER_DEPTH";
     case RENDER_ERR_PRIM: return "primitive with a bad kind, cluster or material index";
-    case RENDER_ERR_DENSITY: return "density sphere: components out of range or above RENDER_MAX_DENSITY_COMPONENTS, or threshold <= 0";
+    case RENDER_ERR_DENSITY: return "density sphere: components out of range or above RENDER_MAX_DENSITY_COMPONENTS, threshold <= 0, or density_steps outside SCN_MIN_DENSITY_STEPS..SCN_MAX_DENSITY_STEPS";
     case RENDER_ERR_MAP: return "material map index, kind or size invalid (RENDER_MAX_MAP_SIZE)";
     case RENDER_ERR_KEY: return "cluster keys outside the scene's key array";
     case RENDER_ERR_CAMERA: return "camera eye equals look_at, or up is parallel to the view";
@@ -209,6 +210,8 @@ static render_status_t prep_check(const scene_t *s)
         if (p->kind == SCENE_PRIM_DENSITY &&
             (p->shape.density.count < 1 || p->shape.density.count > RENDER_MAX_DENSITY_COMPONENTS ||
              !num_gt(p->shape.density.threshold, NUM_ZERO) || /* the root finder needs > 0 */
+             s->options.density_steps < SCN_MIN_DENSITY_STEPS ||
+             s->options.density_steps > SCN_MAX_DENSITY_STEPS ||
              (uint64_t)p->shape.density.first + p->shape.density.count > s->density_component_count))
             return RENDER_ERR_DENSITY;
         if (p->kind == SCENE_PRIM_TRIANGLE && p->shape.triangle.smooth > s->normals_count)
@@ -261,8 +264,8 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
     case SCENE_PRIM_ELLIPSOID:
     case SCENE_PRIM_BOX: {
         int round = sp->kind == SCENE_PRIM_ELLIPSOID;
-        vec3_t c = round ? sp->shape.ellipsoid.centre : sp->shape.box.centre;
-        vec3_t r = round ? sp->shape.ellipsoid.radius : sp->shape.box.half;
+        vec3_t c, r;
+        scene_prim_centre_axes(sp, &c, &r);
         /* local = diag(1/r) * (cluster point - c) */
         xform_t shape = xform_identity();
         num_t rr[3] = {r.x, r.y, r.z}, cc[3] = {c.x, c.y, c.z};
@@ -280,6 +283,7 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
         p->components = &f->scene->density_components[sp->shape.density.first];
         p->inv_radius2 = &f->density_inv_radius2[sp->shape.density.first];
         p->component_count = sp->shape.density.count;
+        p->density_steps = f->scene->options.density_steps;
         p->threshold = sp->shape.density.threshold;
         aabb_t b = prep_aabb_empty();
         for (uint16_t k = 0; k < p->component_count; k++) {

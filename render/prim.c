@@ -373,7 +373,7 @@ static num_t prim_density_excess(const render_prim_t *p, vec3_t q)
 /* Root finder (docs/renderer.md): the field is zero outside every
  * component sphere, so the surface lies in [lo, hi], the union of the
  * spheres' t-intervals beyond tmin.  That span is sampled at
- * RENDER_DENSITY_SAMPLES equal steps; the first sign change of the excess
+ * density_steps equal steps (the scene's option); the first sign change of the excess
  * is bisected RENDER_DENSITY_BISECTIONS times.  Fixed counts: the same
  * steps in every build, and a result independent of tmax. */
 static int prim_density_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin,
@@ -409,12 +409,13 @@ static int prim_density_intersect(const render_prim_t *p, const ray_t *ray, num_
     if (!any)
         return 0;
     lo = num_max(lo, tmin);
-    num_t step = num_div(num_sub(hi, lo), num_from_int(RENDER_DENSITY_SAMPLES));
+    int steps = p->density_steps;
+    num_t step = num_div(num_sub(hi, lo), num_from_int(steps));
     num_t prev_t = lo;
     num_t f0 = prim_density_excess(p, xform_point(&p->to_local, vec3_madd(ray->origin, ray->dir, lo)));
     int inside = num_gt(f0, NUM_ZERO); /* a ray from inside looks for the exit */
-    for (int i = 1; i <= RENDER_DENSITY_SAMPLES; i++) {
-        num_t t = i == RENDER_DENSITY_SAMPLES ? hi : num_add(lo, num_mul_int(step, i));
+    for (int i = 1; i <= steps; i++) {
+        num_t t = i == steps ? hi : num_add(lo, num_mul_int(step, i));
         num_t f = prim_density_excess(p, xform_point(&p->to_local, vec3_madd(ray->origin, ray->dir, t)));
         if (num_gt(f, NUM_ZERO) != inside) {
             num_t a = prev_t, b = t;

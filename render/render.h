@@ -86,6 +86,7 @@ typedef struct {
                                   component, by render_prepare; NULL unless
                                   DENSITY */
     uint16_t component_count;
+    uint16_t density_steps; /* DENSITY: the scene's options.density_steps */
     num_t threshold;
     uint8_t imprecise;   /* 1: render_prepare estimates that rounding in its
                             to_local map can move a hit point by more than
@@ -211,8 +212,9 @@ typedef enum {
     RENDER_ERR_CLUSTER,      /* bad parent index or nesting > RENDER_MAX_CLUSTER_DEPTH */
     RENDER_ERR_PRIM,         /* bad kind, cluster or material index */
     RENDER_ERR_DENSITY,      /* component range outside the scene's array,
-                                more than RENDER_MAX_DENSITY_COMPONENTS, or
-                                a threshold <= 0 */
+                                more than RENDER_MAX_DENSITY_COMPONENTS, a
+                                threshold <= 0, or options.density_steps
+                                outside SCN_MIN..SCN_MAX_DENSITY_STEPS */
     RENDER_ERR_MAP,          /* bad map index/kind/size */
     RENDER_ERR_KEY,          /* key range outside the scene's array */
     RENDER_ERR_CAMERA,       /* eye == look_at, or up parallel to the view */

@@ -184,6 +184,15 @@ typedef struct {
     } shape;
 } scene_prim_t;
 
+/* An ellipsoid's or a box's centre and semi-axes (radius or half edges):
+ * the two shapes that are a unit cube or sphere scaled and moved. */
+static inline void scene_prim_centre_axes(const scene_prim_t *sp, vec3_t *centre, vec3_t *axes)
+{
+    int round = sp->kind == SCENE_PRIM_ELLIPSOID;
+    *centre = round ? sp->shape.ellipsoid.centre : sp->shape.box.centre;
+    *axes = round ? sp->shape.ellipsoid.radius : sp->shape.box.half;
+}
+
 /* Switches for measurement; every combination gives a correct image and the
  * speed-ups (hierarchy, bounds) give the same image on or off. */
 typedef struct {
@@ -199,6 +208,9 @@ typedef struct {
                                transmission goes straight through */
     uint8_t mark_lost;      /* 1: a pixel that lost precision is painted
                                RENDER_LOST_COLOUR instead */
+    uint16_t density_steps; /* equal steps of a density sphere's root finder,
+                               SCN_MIN_DENSITY_STEPS..SCN_MAX_DENSITY_STEPS
+                               (render/prim.c; render_prim_t.density_steps) */
     num_t min_weight;       /* adaptive depth, 0..1: a reflected or refracted
                                ray whose weight (the product of src and trc
                                along its path) falls below it is not traced;

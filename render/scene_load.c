@@ -287,6 +287,7 @@ static scene_load_status_t load_view(struct load *L, scene_t *s)
     uint16_t depth = wire_get_u16(p + SCN_VIEW_MAX_DEPTH);
     uint16_t flags = wire_get_u16(p + SCN_VIEW_FLAGS);
     uint32_t frames = wire_get_u32(p + SCN_VIEW_FRAMES);
+    uint32_t steps = wire_get_u32(p + SCN_VIEW_DENSITY_STEPS);
     if (w < 1 || w > SCN_MAX_WIDTH || h < 1 || h > SCN_MAX_HEIGHT)
         return load_fail(L, SCENE_LOAD_ERR_LIMIT, "image size %ldx%ld outside 1..1024 per side",
                          (long)w, (long)h);
@@ -307,6 +308,10 @@ static scene_load_status_t load_view(struct load *L, scene_t *s)
         return load_fail(L, SCENE_LOAD_ERR_VALUE, "background colour not within 0..1");
     if (!load_units(p + SCN_VIEW_MIN_WEIGHT, 1, 1.0f))
         return load_fail(L, SCENE_LOAD_ERR_VALUE, "min_weight not within 0..1");
+    if (steps < SCN_MIN_DENSITY_STEPS || steps > SCN_MAX_DENSITY_STEPS)
+        return load_fail(L, SCENE_LOAD_ERR_LIMIT, "density_steps %lu not %ld..%ld",
+                         (unsigned long)steps, (long)SCN_MIN_DENSITY_STEPS,
+                         (long)SCN_MAX_DENSITY_STEPS);
     s->width = w;
     s->height = h;
     s->frame_count = frames;
@@ -317,6 +322,7 @@ static scene_load_status_t load_view(struct load *L, scene_t *s)
     s->background = load_rgb(p + SCN_VIEW_BACKGROUND);
     s->options.max_depth = (uint8_t)depth;
     s->options.min_weight = load_num(p + SCN_VIEW_MIN_WEIGHT);
+    s->options.density_steps = (uint16_t)steps;
     s->options.refractionless = (flags & SCN_OPT_REFRACTIONLESS) != 0;
     s->options.use_bounds = (flags & SCN_OPT_NO_BOUNDS) == 0;
     s->options.use_hierarchy = (flags & SCN_OPT_NO_HIERARCHY) == 0;

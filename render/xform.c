@@ -76,8 +76,8 @@ static int xform_unit_exponent(num_t big)
  * then columns, by powers of two (A = Dr m Dc, inverse(m) = Dc inverse(A)
  * Dr): in fixed point the cofactors and determinant of a map scaled by
  * 0.1 would otherwise keep only a few hundred steps (m inverse(m) off the
- * identity by 6e-4 in Q13.18) and a map scaled by 0.03 or 16 could not be
- * inverted at all; in float the scaling is exact and changes no bit.  The
+ * identity by 606 steps of Q12.19, 4 now) and maps scaled by 0.03 or 20
+ * could not be inverted at all (test_render test_inverse_precision); in float the scaling is exact and changes no bit.  The
  * determinant is divided out of each cofactor separately (cofactor / det),
  * not through 1/det, which would lose the fixed build's precision for
  * large determinants. */

@@ -44,6 +44,9 @@ static struct {
 
 static const char dm_blob_limit_name[] = BOARD_IMSU_BLOCK_NAME;
 
+_Static_assert(sizeof "scene refused: " - 1 + RENDER_BLOB_MSG_MAX <= KLOG_MAX,
+               "a refusal is cut on the DM's log line: raise KLOG_MAX");
+
 /* The renderer's messages may already say "scene refused: "; said once. */
 static const char *dm_refusal(const char *message)
 {

@@ -64,6 +64,11 @@ void arith_auto_scene_words(const struct scene_file_opts *so, long frame,
         w->words[n++] = "--min-weight";
         w->words[n++] = w->weight;
     }
+    if (so->density_steps >= 0) {
+        snprintf(w->steps, sizeof w->steps, "%d", so->density_steps);
+        w->words[n++] = "--density-steps";
+        w->words[n++] = w->steps;
+    }
     if (so->refraction >= 0) {
         w->words[n++] = "--refraction";
         w->words[n++] = so->refraction ? "on" : "off";

@@ -48,7 +48,7 @@ struct arith_auto_choice {
  * opts.words, stored in w. */
 struct arith_auto_words {
     const char *words[16];
-    char depth[16], weight[32], frame[24];
+    char depth[16], weight[32], steps[16], frame[24];
 };
 struct scene_file_opts;
 void arith_auto_scene_words(const struct scene_file_opts *so, long frame,

@@ -32,7 +32,7 @@ static int ref_usage(FILE *out, int status)
     fprintf(out, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [--arith double|float|soft|"
                  "fixed|auto] [--ppm] [--size WxH] [--frame N | --frames FIRST:LAST]\n"
                  "  [--no-auto-hierarchy] [--refraction on|off] [--refractionless on|off]\n"
-                 "  [--max-depth D] [--min-weight W]\n"
+                 "  [--max-depth D] [--min-weight W] [--density-steps N]\n"
                  "  [--mark-lost]  (paint pixels that lost precision magenta)\n"
                  "  --arith auto [--fpu vfp|none] [--target-db D]: the cheapest arithmetic of a\n"
                  "  unit computer with VFP (or none) that keeps D dB (default 40) against double,\n"
@@ -222,6 +222,11 @@ static int ref_parse(int argc, char **argv, struct ref_args *a)
             break;
         case REF_OPT_MIN_WEIGHT:
             if (cli_double(&c, 0, 0, 1, NULL, &a->scene.min_weight) < 0)
+                return -1;
+            break;
+        case REF_OPT_DENSITY_STEPS:
+            if (cli_int(&c, SCN_MIN_DENSITY_STEPS, SCN_MAX_DENSITY_STEPS,
+                        &a->scene.density_steps) < 0)
                 return -1;
             break;
         case REF_OPT_SIZE:

@@ -15,6 +15,7 @@ enum ref_opt_code {
     REF_OPT_REFRACTION,
     REF_OPT_MAX_DEPTH,
     REF_OPT_MIN_WEIGHT,
+    REF_OPT_DENSITY_STEPS,
     REF_OPT_MARK_LOST,
     REF_OPT_REFRACTIONLESS,
     REF_OPT_ARITH, /* links1 ref only, with the two below */
@@ -32,6 +33,7 @@ enum ref_opt_code {
     {"refraction", required_argument, NULL, REF_OPT_REFRACTION}, \
     {"max-depth", required_argument, NULL, REF_OPT_MAX_DEPTH}, \
     {"min-weight", required_argument, NULL, REF_OPT_MIN_WEIGHT}, \
+    {"density-steps", required_argument, NULL, REF_OPT_DENSITY_STEPS}, \
     {"mark-lost", no_argument, NULL, REF_OPT_MARK_LOST}, \
     {"refractionless", required_argument, NULL, REF_OPT_REFRACTIONLESS}, \
     {"help", no_argument, NULL, 'h'}

@@ -244,6 +244,7 @@ int scene_cmd_ref(int argc, char **argv)
             break;
         case REF_OPT_MAX_DEPTH:
         case REF_OPT_MIN_WEIGHT:
+        case REF_OPT_DENSITY_STEPS:
         case REF_OPT_REFRACTION:
         case REF_OPT_REFRACTIONLESS:
         case REF_OPT_NO_AUTO_HIERARCHY:

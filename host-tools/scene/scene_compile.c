@@ -45,6 +45,7 @@ static void compile_view(const struct sd_scene *s, uint8_t *p)
     wire_put_u16(p + SCN_VIEW_FLAGS, (uint16_t)v->flags);
     wire_put_u32(p + SCN_VIEW_FRAMES, (uint32_t)v->frames);
     wire_put_f32(p + SCN_VIEW_MIN_WEIGHT, (float)v->min_weight);
+    wire_put_u32(p + SCN_VIEW_DENSITY_STEPS, (uint32_t)v->density_steps);
 }
 
 static void compile_light(const struct sd_light *l, uint8_t *p)

@@ -18,6 +18,7 @@ struct sd_view {
     double background[3];
     int max_depth;
     double min_weight;      /* adaptive depth: 0..1, 0 = off */
+    int density_steps;      /* SCN_MIN_DENSITY_STEPS..SCN_MAX_DENSITY_STEPS */
     unsigned flags;         /* SCN_OPT_* */
     int frames;
 };

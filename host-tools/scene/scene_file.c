@@ -14,6 +14,7 @@ void scene_file_opts_init(struct scene_file_opts *o)
     o->width = o->height = 0;
     o->max_depth = -1;
     o->min_weight = -1;
+    o->density_steps = -1;
     o->refractionless = -1;
     o->refraction = -1;
     o->no_auto_hierarchy = 0;
@@ -40,6 +41,8 @@ static int scene_file_compile(const char *path, const struct scene_file_opts *o,
         s.view.max_depth = o->max_depth;
     if (o->min_weight >= 0)
         s.view.min_weight = o->min_weight;
+    if (o->density_steps >= 0)
+        s.view.density_steps = o->density_steps;
     if (o->no_auto_hierarchy)
         s.no_auto_hierarchy = 1;
     if (o->mark_lost)
@@ -91,6 +94,7 @@ int scene_file_bytes(const char *path, const struct scene_file_opts *o, uint8_t 
         return scene_file_compile(path, o, buf, len, err, errlen);
     const char *change = o->width ? "--size" : o->max_depth >= 0 ? "--max-depth"
                          : o->min_weight >= 0 ? "--min-weight"
+                         : o->density_steps >= 0 ? "--density-steps"
                          : o->refractionless >= 0 ? "--refractionless"
                          : o->refraction >= 0 ? "--refraction"
                          : o->no_auto_hierarchy ? "--no-auto-hierarchy"

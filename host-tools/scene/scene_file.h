@@ -12,6 +12,7 @@ struct scene_file_opts {
     int width, height;  /* --size WxH; 0: the scene's */
     int max_depth;      /* --max-depth D; -1: the scene's */
     double min_weight;  /* --min-weight W (adaptive depth); -1: the scene's */
+    int density_steps;  /* --density-steps N (density root finder); -1: the scene's */
     int refractionless; /* --refractionless on|off: 1 or 0; -1: the scene's */
     int refraction;     /* --refraction on|off: 1 or 0; -1: the scene's */
     int no_auto_hierarchy; /* --no-auto-hierarchy: 1 compiles without it */

@@ -162,6 +162,11 @@ static void parse_options(struct parser *p)
             lex_next(&p->lx);
             v->min_weight = lex_number_in(&p->lx, "min_weight", 0, 1);
             continue;
+        } else if (lex_is_word(&p->lx, "density_steps")) {
+            lex_next(&p->lx);
+            v->density_steps = lex_int(&p->lx, "density_steps", SCN_MIN_DENSITY_STEPS,
+                                       SCN_MAX_DENSITY_STEPS);
+            continue;
         } else if (lex_is_word(&p->lx, "refractionless")) {
             bit = SCN_OPT_REFRACTIONLESS;
         } else if (lex_is_word(&p->lx, "bounds")) {
@@ -394,6 +399,7 @@ void sd_view_defaults(struct sd_view *v)
     v->height = PARSE_DEFAULT_HEIGHT;
     v->max_depth = PARSE_DEFAULT_DEPTH;
     v->min_weight = SCN_DEFAULT_MIN_WEIGHT;
+    v->density_steps = SCN_DEFAULT_DENSITY_STEPS;
     v->flags = SCN_OPT_REFRACTIONLESS;
     v->frames = 1;
 }

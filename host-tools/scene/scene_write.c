@@ -35,9 +35,10 @@ static void wr_view(FILE *f, const struct sd_scene *s)
     wr_vec(f, " fov", &v->fov, 1);
     fprintf(f, " }\nresolution %d %d\n", v->width, v->height);
     wr_vec(f, "background", v->background, 3);
-    fprintf(f, "\noptions { max_depth %d  min_weight %.9g  refractionless %s  refraction %s  "
-               "shadows %s  bounds %s  hierarchy %s  mark_lost %s }\n",
-            v->max_depth, v->min_weight, v->flags & SCN_OPT_REFRACTIONLESS ? "on" : "off",
+    fprintf(f, "\noptions { max_depth %d  min_weight %.9g  density_steps %d  refractionless %s  "
+               "refraction %s  shadows %s  bounds %s  hierarchy %s  mark_lost %s }\n",
+            v->max_depth, v->min_weight, v->density_steps,
+            v->flags & SCN_OPT_REFRACTIONLESS ? "on" : "off",
             v->flags & SCN_OPT_NO_REFRACTION ? "off" : "on",
             v->flags & SCN_OPT_NO_SHADOWS ? "off" : "on",
             v->flags & SCN_OPT_NO_BOUNDS ? "off" : "on",

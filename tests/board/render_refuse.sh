@@ -9,11 +9,16 @@
 #    Q12.19 (issue 11): the fixed DM refuses it with the host build's
 #    message (links1 ref --arith fixed), and the next scene uploaded to the
 #    same board renders, equal to the host build; in a cluster of its own,
-#    links1 ref adds the cluster's name from the scene text.
+#    links1 ref adds the cluster's name from the scene text;
+#  - a sphere of radius 0.01 lit from 1e4 away (the tolerances stop
+#    following the geometry): refused on the board after the next scene
+#    with the host build's whole message (252 characters in fixed, once
+#    cut at the DM's 200-character log line), naming the far light.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
 board_ready render_refuse_bad render_refuse_next render_refuse_too_big \
-    render_refuse_detail render_refuse_detail_next render_refuse_detail_cluster || exit 0
+    render_refuse_detail render_refuse_detail_next render_refuse_detail_cluster \
+    render_refuse_far_light || exit 0
 
 good=scenes/pov/spheres.scn
 "$LINKS1" compile $good -o "$RENDER_TMP/bad.l1s" >/dev/null 2>&1
@@ -64,10 +69,19 @@ tiny=$RENDER_TMP/tiny_sphere.scn
 render_tiny_sphere_scene "$tiny"
 "$LINKS1" ref "$tiny" --arith fixed -o "$RENDER_TMP/tiny-host.ppm" >"$RENDER_TMP/tiny-host.log" 2>&1
 want=$(sed -n 's/^links1 ref: [^:]*: //p' "$RENDER_TMP/tiny-host.log")
+far=$RENDER_TMP/far_light.scn
+cat >"$far" <<'EOF'
+camera { eye 0 0.1 -0.3  look_at 0 0 0 }  resolution 32 24
+light point { colour 1 1 1  position 1e4 1e4 -1e4 }  material m { colour 1 0 0 dic 0.2 drc 0.7 }
+sphere { material m centre 0 0 0 radius 0.01 }
+EOF
+"$LINKS1" ref "$far" --arith fixed -o "$RENDER_TMP/far-host.ppm" >"$RENDER_TMP/far-host.log" 2>&1
+want_far=$(sed -n 's/^links1 ref: [^:]*: //p' "$RENDER_TMP/far-host.log")
 ref=$(render_ref $good fixed 80x60)
 log="$RENDER_TMP/detail.log"
 timeout "$BOARD_RUN_LIMIT_S" "$LINKS1" render --quiet --ncs 2 --arith fixed --size 80x60 "$tiny" \
-    -o "$RENDER_TMP/tiny.ppm" $good -o "$RENDER_TMP/detail-next.ppm" >"$log" 2>&1
+    -o "$RENDER_TMP/tiny.ppm" $good -o "$RENDER_TMP/detail-next.ppm" "$far" -o "$RENDER_TMP/far.ppm" \
+    >"$log" 2>&1
 rc=$?
 echo "--- links1 render --arith fixed tiny_sphere.scn then $good (exit $rc); the host build: $want"
 sed 's/^/    /' "$log"
@@ -78,6 +92,13 @@ else
     echo "FAIL render_refuse_detail: exit $rc (want 1), or the board's refusal is not the host build's: $want"
 fi
 render_same render_refuse_detail_next "$ref" "$RENDER_TMP/detail-next.ppm"
+if [[ $want_far == "scene spans "*"the eye or a light lies over 256 times farther out than the geometry; bring it closer" ]] &&
+    grep -qF "the board says: scene refused: frame 0: $want_far" "$log" &&
+    [ ! -e "$RENDER_TMP/far.ppm" ]; then
+    echo "PASS render_refuse_far_light"
+else
+    echo "FAIL render_refuse_far_light: the board's refusal is not the host build's whole message: $want_far"
+fi
 
 sed 's/^box .*sphere.*/box { material m  min -6 -0.5 -4  max 6 0 8 }\ncluster speck { translate 0 1 0  sphere { material m centre 0 0 0 radius 0.000001 } }/' \
     "$tiny" >"$RENDER_TMP/speck.scn"

@@ -243,6 +243,39 @@ static void test_density(void)
     CHECK(hit_t_of(f, 0, ray_of(0, 0, 0, 0, 0, 1), 0, 100) > 0);
 }
 
+/* The scene's density_steps: a component d = 1, b = 1 with threshold 0.99
+ * has a surface of radius sqrt(0.01 / 3) = 0.058 in a field 2 across.
+ * Along the axis, 3 steps sample t = 9, 9.67, 10.33, 11 and step over it;
+ * 64 steps (0.031 apart) find it at 10 - 0.058; 2 steps sample the centre. */
+static void test_density_steps(void)
+{
+    const double thin[1][5] = {{0, 0, 10, 1, 1}};
+    double r = sqrt(0.01 / 3);
+    static const struct { int steps; double t; } cases[] = {{3, -1}, {64, 10 - sqrt(0.01 / 3)}, {2, 0}};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        ts_init(&ts, 8, 8);
+        ts.scene.options.density_steps = (uint16_t)cases[k].steps;
+        ts_density(&ts, 0, 0, 0.99, 1, thin);
+        render_frame_t *f = ts_prepare(&ts);
+        CHECK(f != NULL);
+        if (!f)
+            return;
+        double t = hit_t_of(f, 0, ray_of(0, 0, 0, 0, 0, 1), 0, 100);
+        if (cases[k].t < 0)
+            CHECK_NEAR(t, -1, 0);
+        else if (cases[k].t > 0)
+            CHECK_NEAR(t, cases[k].t, TOL_DENSITY);
+        else
+            CHECK(t > 10 - r - TOL_DENSITY && t < 10 + r);
+    }
+    /* outside SCN_MIN..SCN_MAX_DENSITY_STEPS: refused */
+    ts_init(&ts, 8, 8);
+    ts.scene.options.density_steps = SCN_MIN_DENSITY_STEPS - 1;
+    ts_density(&ts, 0, 0, 0.99, 1, thin);
+    render_frame_t *f = NULL;
+    CHECK_EQ_INT(render_prepare(&ts.scene, 0, &ts.arena, &f), RENDER_ERR_DENSITY);
+}
+
 static void test_aabb(void)
 {
     aabb_t b = {ts_v(-1, -1, 4), ts_v(1, 1, 6)};
@@ -271,6 +304,7 @@ int main(void)
     RUN(test_box_rotated);
     RUN(test_density_field);
     RUN(test_density);
+    RUN(test_density_steps);
     RUN(test_aabb);
     return check_exit();
 }

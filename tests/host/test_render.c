@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdlib.h>
 
+#include "render/blob.h"
 #include "render/precision.h"
 #include "render/prim.h"
 #include "tests/check.h"
@@ -497,6 +498,40 @@ static void test_precision_flag(void)
     free(img);
 }
 
+/* A scene too small for its ray offset is refused, naming the cause: a
+ * sphere its cluster shrinks by 2^-8 (the tolerances follow the
+ * geometry as stored: "its clusters shrink it"), or the same small sphere
+ * where the loader stopped the tolerances at RENDER_TOL_EXP_MIN because
+ * the eye or a light lies far out (test_scene_load: a light 1e5 from a
+ * sphere within 2.5).  Both messages fit the DM's refusal line. */
+static void test_extent_refused(void)
+{
+    for (int far = 0; far < 2; far++) {
+        ts_init(&ts, 8, 8);
+        uint16_t m = ts_material(&ts, mat(1, 1, 1, 0.3, 0.7));
+        xform_t shrink = ts_translate(0, 0, 5);
+        if (!far)
+            for (int i = 0; i < 3; i++)
+                shrink.m[i][i] = N(0x1p-8);
+        uint16_t c = ts_cluster(&ts, 0, shrink);
+        double r = far ? 0x1p-10 : 1;
+        ts_ellipsoid(&ts, c, m, ts_v(0, 0, 0), ts_v(r, r, r));
+        if (far)
+            ts.scene.tol_exp = RENDER_TOL_EXP_MIN;
+        render_frame_t *f = NULL;
+        render_status_t st = render_prepare(&ts.scene, 0, &ts.arena, &f);
+        char why[RENDER_BLOB_MSG_MAX];
+        precision_status_message(f, st, why, sizeof why);
+        printf("# %s: %s (%zu characters)\n", far ? "far light" : "shrunk", why, strlen(why));
+        CHECK_EQ_INT(st, RENDER_ERR_EXTENT);
+        CHECK(strncmp(why, "scene spans ", 12) == 0);
+        CHECK(strlen(why) + strlen("frame 999: ") < RENDER_BLOB_MSG_MAX); /* blob.c's prefix */
+        CHECK(strstr(why, far ? "the eye or a light lies over 256 times farther out than the "
+                                "geometry; bring it closer"
+                              : "its clusters shrink it below its coordinates; scale those instead") != NULL);
+    }
+}
+
 /* A cluster map's inverse keeps the arithmetic's precision at any scale:
  * m * inverse(m) is the identity within INVERSE_STEPS steps (fixed) or
  * ulps of one (float) times the map's largest scale (at least 1: an
@@ -598,5 +633,6 @@ int main(void)
     RUN(test_precision_flag);
     RUN(test_detail_refused);
     RUN(test_inverse_precision);
+    RUN(test_extent_refused);
     return check_exit();
 }

@@ -10,6 +10,7 @@
 
 #include <string.h>
 
+#include "proto/scene_format.h"
 #include "render/render.h"
 #include "render/vec3.h"
 
@@ -52,6 +53,7 @@ static inline void ts_init(test_scene_t *t, uint16_t width, uint16_t height)
     s->camera.tan_half_fov_y = num_from_double(0.5);
     s->background = ts_rgb(0, 0, 0);
     s->options.max_depth = 4;
+    s->options.density_steps = SCN_DEFAULT_DENSITY_STEPS;
     s->options.refractionless = 1;
     s->options.use_bounds = 1;
     s->options.use_hierarchy = 1;

@@ -452,6 +452,8 @@ static void test_bad_indices_and_values(void)
                  "option flags");
     expect_field(b, len, SCN_SEC_VIEW, SCN_VIEW_FRAMES, 0, 4, SCENE_LOAD_ERR_LIMIT,
                  "frame count 0");
+    expect_field(b, len, SCN_SEC_VIEW, SCN_VIEW_DENSITY_STEPS, SCN_MAX_DENSITY_STEPS + 1, 4,
+                 SCENE_LOAD_ERR_LIMIT, "density_steps 257 not 2..256");
     expect_field(b, len, SCN_SEC_VIEW, SCN_VIEW_TAN_HALF_FOV_Y, f32_bits(-0.5f), 4,
                  SCENE_LOAD_ERR_VALUE, "field of view");
     expect_field(b, len, SCN_SEC_COMPONENTS, SCN_COMPONENT_RADIUS, 0, 4, SCENE_LOAD_ERR_VALUE,

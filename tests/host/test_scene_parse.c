@@ -41,6 +41,7 @@ static void test_minimal_scene_and_defaults(void)
     CHECK_EQ_INT(s.view.width, 320);
     CHECK_EQ_INT(s.view.height, 240);
     CHECK_EQ_INT(s.view.max_depth, 5);
+    CHECK_EQ_INT(s.view.density_steps, SCN_DEFAULT_DENSITY_STEPS);
     CHECK_EQ_INT(s.view.flags, SCN_OPT_REFRACTIONLESS);
     CHECK_EQ_INT(s.n_prims, 1);
     CHECK_EQ_INT(s.n_clusters, 1);
@@ -67,6 +68,23 @@ static void test_refraction_option(void)
     CHECK_EQ_INT(s.view.flags, SCN_OPT_REFRACTIONLESS);
     sd_free(&s);
     EXPECT_ERROR(HEAD "options { refraction maybe }\n", 3, 22, "on");
+}
+
+/* density_steps: an integer within SCN_MIN..SCN_MAX_DENSITY_STEPS. */
+static void test_density_steps_option(void)
+{
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    int rc = sd_parse_text("t.scn", HEAD "options { density_steps 64 }\nsphere { material m radius 1 }\n",
+                           &s, err, sizeof err);
+    CHECK_EQ_INT(rc, 0);
+    if (rc)
+        return;
+    CHECK_EQ_INT(s.view.density_steps, 64);
+    sd_free(&s);
+    EXPECT_ERROR(HEAD "options { density_steps 1 }\n", 3, 25, "density_steps must be 2..256");
+    EXPECT_ERROR(HEAD "options { density_steps 257 }\n", 3, 25, "density_steps must be 2..256");
+    EXPECT_ERROR(HEAD "options { density_steps 2.5 }\n", 3, 25, "density_steps");
 }
 
 static void test_transforms_compose_in_order(void)
@@ -189,6 +207,7 @@ int main(void)
 {
     RUN(test_minimal_scene_and_defaults);
     RUN(test_refraction_option);
+    RUN(test_density_steps_option);
     RUN(test_transforms_compose_in_order);
     RUN(test_keyframe_interpolation);
     RUN(test_errors_name_line_and_column);

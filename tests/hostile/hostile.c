@@ -185,6 +185,15 @@ static int bad_min_weight(struct hostile_scene *h)
     return refix(h);
 }
 
+static int bad_density_steps(struct hostile_scene *h)
+{
+    uint8_t *p = rec(h, SCN_SEC_VIEW, SCN_VIEW_SIZE, 0);
+    if (!p)
+        return -1;
+    wire_put_u32(p + SCN_VIEW_DENSITY_STEPS, SCN_MIN_DENSITY_STEPS - 1);
+    return refix(h);
+}
+
 static int over_depth(struct hostile_scene *h)
 {
     uint8_t *p = rec(h, SCN_SEC_VIEW, SCN_VIEW_SIZE, 0);
@@ -389,8 +398,9 @@ const struct hostile_class hostile_classes[] = {
     {"outside", "section kind 9: body outside the file", outside},
     {"truncated", "scene truncated: header says", truncated},
     {"crc_mismatch", "checksum mismatch", crc_mismatch},
-    {"wrong_version", "format version 4 (this loader reads version 3)", wrong_version},
+    {"wrong_version", "format version 5 (this loader reads version 4)", wrong_version},
     {"bad_min_weight", "min_weight not within 0..1", bad_min_weight},
+    {"bad_density_steps", "density_steps 1 not 2..256", bad_density_steps},
     {"zero_box", "prim 0: a semi-axis or half edge is not > 0", zero_box},
     {"degenerate_triangle", "prim 1: degenerate or sliver triangle", degenerate_triangle},
     {"sliver_triangle", "prim 1: degenerate or sliver triangle", sliver_triangle},

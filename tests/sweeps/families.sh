@@ -1,16 +1,19 @@
 # tests/sweeps/families.sh: the sweep families of make_scene.py and their
 # knobs (sourced by sweep.sh and auto.sh).
-# family "knobs, easiest first" "x axis label" logscale(0/1)
+# family|knobs, easiest first|x axis label|logscale (0/1)|same (1: the
+# image should not change, so the error is against the double build at the
+# first knob; 0: at the same knob)
 families=(
-    "scale|1 3 10 20 30 100 300 1000|scene scale|1"
-    "scale_down|1 0.3 0.1 0.05 0.03 0.01 0.001|scene scale|1"
-    "cluster_scale|1 0.3 0.1 0.03 0.01 0.001|cluster scale|1"
-    "grazing|45 20 10 5 2 1 0.5 0.2 0.1|degrees above the floor|1"
-    "coincident|0.1 0.01 0.003 0.001 0.0003 0.0001 0.00001|gap|1"
-    "thin_triangles|10 100 1000 3000 10000 30000|length / width|1"
-    "tir_chain|1 2 3 4 6 8 12 16|max_depth|0"
-    "ellipsoid_ratio|1 10 100 300 1000 3000|axis ratio|1"
-    "map_repeat|1 10 100 1000 3000 10000|repeats|1"
+    "scale|1 3 10 20 30 100 300 1000|scene scale|1|1"
+    "scale_down|1 0.3 0.1 0.05 0.03 0.01 0.001|scene scale|1|1"
+    "cluster_scale|1 0.3 0.1 0.03 0.01 0.001|cluster scale|1|1"
+    "grazing|45 20 10 5 2 1 0.5 0.2 0.1|degrees above the floor|1|0"
+    "coincident|0.1 0.01 0.003 0.001 0.0003 0.0001 0.00001|gap|1|0"
+    "thin_triangles|10 100 1000 3000 10000 30000|length / width|1|0"
+    "tir_chain|1 2 3 4 6 8 12 16|max_depth|0|0"
+    "ellipsoid_ratio|1 10 100 300 1000 3000|axis ratio|1|0"
+    "map_repeat|1 10 100 1000 3000 10000|repeats|1|0"
+    "density_steps|256 64 32 24 16 8 4 2|density root-finder steps|1|1"
 )
 
 # family_scene FAMILY KNOB SIZE: the family's scene at that knob value on

@@ -13,6 +13,9 @@ stays the same (docs/RESULTS.md, "Where each method fails").
                  reflection inside them)
   ellipsoid_ratio an ellipsoid with axes KNOB : 1 : 1
   map_repeat     colour and bump maps repeated KNOB times
+  density_steps  density spheres with thin features (small components in a
+                 faint halo, two blobs joined by a thin neck), the root
+                 finder's steps KNOB (64..2); the image should not change
 Map paths are relative to the repository (run it from there, or set MAPS).
 """
 import os
@@ -141,11 +144,33 @@ material mapped {{ colour 1 1 1  dic 0.25 drc 0.7  colour_map checker  bump_map 
 """
 
 
+def density_steps_scene(steps, w, h):
+    """Thin density features, found by a march of `steps` steps along a
+    ray's span through the field: one density sphere of a faint halo (d =
+    3, b = 0.2: no surface of its own, but every ray through it marches
+    across its 6 units) and five small components (d = 0.9 down to 0.15,
+    b = 1) whose surfaces, 0.15 to 0.9 across, lie anywhere along that
+    span; and two blobs joined by a neck about 0.1 d thick (their sum is
+    0.529 midway, the threshold 0.5)."""
+    n = int(steps)
+    out = [f"""# sweep family density_steps, knob {n}: thin density features, {n} root-finder steps
+camera {{ eye 0 2.2 -6  look_at 0 1.4 0  up 0 1 0  fov 45 }}
+options {{ max_depth 2  density_steps {n} }}
+""" + COMMON.format(w=w, h=h) + "box { material floor  min -6 -0.5 -4  max 6 0 8 }\n"]
+    small = ((-2.2, 1.2, 0.5, 0.9), (-1.1, 2.0, 0.2, 0.6), (0.0, 1.0, 0.0, 0.4),
+             (1.1, 1.9, 0.3, 0.25), (2.2, 1.1, 0.6, 0.15))
+    out.append("density { material red  threshold 0.6  component 0 1.4 1 3 0.2\n" + "".join(
+        f"  component {x:g} {y:g} {z:g} {d:g} 1\n" for x, y, z, d in small) + "}\n")
+    out.append("density { material green  threshold 0.5  component -0.58 2.9 1.5 1 1  "
+               "component 0.58 2.9 1.5 1 1 }\n")
+    return "".join(out)
+
+
 MAPS = "scenes/maps"
 FAMILIES = {"scale": scale_scene, "cluster_scale": cluster_scale_scene, "grazing": grazing_scene,
             "coincident": coincident_scene, "thin_triangles": thin_triangle_scene,
             "tir_chain": tir_chain_scene, "ellipsoid_ratio": ellipsoid_ratio_scene,
-            "map_repeat": map_repeat_scene}
+            "map_repeat": map_repeat_scene, "density_steps": density_steps_scene}
 
 
 def main():

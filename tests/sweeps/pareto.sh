@@ -7,7 +7,7 @@
 # max_depth 8 and adaptive depth off.  Configurations: the arithmetic
 # (double, float = soft on the host, fixed with every fraction-bit count
 # that builds, 12..19), max_depth 1..8, adaptive depth on (min_weight 1/512)
-# and off, density root-finder steps 8..64 (RENDER_DENSITY_SAMPLES),
+# and off, density root-finder steps 8..64 (--density-steps),
 # refraction off (transmitted rays never bend).
 # Cost on the host: ns per pixel of tracing ("traced in" of links1 ref), the
 # median of RUNS (default 3) runs.  Cost on the board: the NCs' guest
@@ -77,7 +77,6 @@ variant() {
         cc -std=gnu11 -O2 -I. -ffp-contract=off "$@" $srcs $libs -lpng -lm -o "$out/bin/$name"
 }
 for f in $FRACS; do variant fixed-$f -DLINKS1_NUM_FIXED -DNUM_FRAC_BITS=$f; done
-for s in $STEPS; do variant float-steps$s -DLINKS1_NUM_FLOAT -DRENDER_DENSITY_SAMPLES=$s; done
 
 ref=$out/reference.png
 build/links1-ref-double "$scene" --size "$SIZE" --max-depth 8 --min-weight 0 -o "$ref" >/dev/null 2>&1
@@ -116,7 +115,7 @@ for f in $FRACS; do
     configs+=("fixed Q$((31 - f)).$f d5 adaptive|$out/bin/fixed-$f|--max-depth 5")
 done
 for s in $STEPS; do
-    configs+=("float d5 adaptive, $s density steps|$out/bin/float-steps$s|--max-depth 5")
+    configs+=("float d5 adaptive, $s density steps|build/links1-ref-float|--max-depth 5 --density-steps $s")
 done
 
 printf 'config\tns_per_pixel\tpsnr_db\tbeyond1_pct\tbeyond2_pct\tlost_pixels\tfront\n' >"$out/pareto.raw"

@@ -6,9 +6,10 @@
 # For every scene family of make_scene.py, each knob value and each
 # arithmetic (double, float = soft on the host, fixed), renders the scene
 # with links1 ref (plainly and with --mark-lost) and compares:
-#   error  against the double build at the same knob (for scale and
-#          cluster_scale against the double build at knob 1: the image
-#          should not change): share of pixels beyond 2/255, PSNR;
+#   error  against the double build at the same knob (for the families
+#          whose image should not change, families.sh's "same": scale,
+#          cluster_scale, density_steps, against the double build at the
+#          first knob): share of pixels beyond 2/255, PSNR;
 #   flags  against the double build at the same knob with --flagged: the
 #          share of pixels beyond 2/255 that were NOT painted as lost, of
 #          all pixels and of those not explained by a move of less than a
@@ -40,15 +41,16 @@ tsv=$out/sweep.tsv
 . tests/sweeps/families.sh # families=(...)
 if [ $quick = 1 ]; then
     families=(
-        "scale|1 30 100 1000|scene scale|1"
-        "scale_down|1 0.03|scene scale|1"
-        "cluster_scale|1 0.01|cluster scale|1"
-        "grazing|10 0.5|degrees above the floor|1"
-        "coincident|0.01 0.0001|gap|1"
-        "thin_triangles|100 10000|length / width|1"
-        "tir_chain|2 8|max_depth|0"
-        "ellipsoid_ratio|10 1000|axis ratio|1"
-        "map_repeat|10 3000|repeats|1"
+        "scale|1 30 100 1000|scene scale|1|1"
+        "scale_down|1 0.03|scene scale|1|1"
+        "cluster_scale|1 0.01|cluster scale|1|1"
+        "grazing|10 0.5|degrees above the floor|1|0"
+        "coincident|0.01 0.0001|gap|1|0"
+        "thin_triangles|100 10000|length / width|1|0"
+        "tir_chain|2 8|max_depth|0|0"
+        "ellipsoid_ratio|10 1000|axis ratio|1|0"
+        "map_repeat|10 3000|repeats|1|0"
+        "density_steps|64 8|density root-finder steps|1|1"
     )
 fi
 
@@ -64,16 +66,14 @@ measure() { # REF IMG K [--flagged]
 
 printf 'family\tknob\tarith\tstatus\tbeyond1_pct\tbeyond2_pct\tpsnr_db\tlost_pixels\tunflagged_beyond2_pct\tunflagged_unexplained_pct\n' >"$tsv"
 for entry in "${families[@]}"; do
-    IFS='|' read -r family knobs _ _ <<<"$entry"
+    IFS='|' read -r family knobs _ _ same_image <<<"$entry"
     for knob in $knobs; do
         scn=$out/work/$family-$knob.scn
         family_scene "$family" "$knob" "$size" >"$scn" || exit 1
         same=$out/work/$family-$knob-double.png
         "$LINKS1" ref "$scn" --arith double -o "$same" >/dev/null 2>&1 || rm -f "$same"
         ref=$same
-        if [ "$family" = scale ] || [ "$family" = scale_down ] || [ "$family" = cluster_scale ]; then
-            ref=$out/work/$family-1-double.png
-        fi
+        [ "$same_image" = 1 ] && ref=$out/work/$family-${knobs%% *}-double.png
         for arith in double float fixed; do
             img=$out/work/$family-$knob-$arith-plain.png
             marked=$out/work/$family-$knob-$arith-marked.png
@@ -135,7 +135,7 @@ done
 
 if command -v gnuplot >/dev/null; then
     for entry in "${families[@]}"; do
-        IFS='|' read -r family _ label logx <<<"$entry"
+        IFS='|' read -r family _ label logx _ <<<"$entry"
         for arith in double float fixed; do
             awk -F'\t' -v f="$family" -v a="$arith" '$1 == f && $3 == a && $4 == "ok" && $6 != "-" { print $2, $6, $9 }' \
                 "$tsv" >"$out/work/$family-$arith.dat"
