@@ -137,8 +137,10 @@ enum scn_section {
 #define SCN_DEFAULT_MIN_WEIGHT (1.0 / 512) /* text form's default (Hall and Greenberg 1983) */
 #define SCN_MIN_DENSITY_STEPS 2
 #define SCN_MAX_DENSITY_STEPS 256
-#define SCN_DEFAULT_DENSITY_STEPS 24 /* text form's default: within 0.05 dB of 32
-                                        and 64 on demo.scn (docs/RESULTS.md) */
+#define SCN_DEFAULT_DENSITY_STEPS 24 /* text form's default: 16 come within 0.05
+                                        dB of it on demo.scn; thin features want
+                                        more (docs/RESULTS.md, the density_steps
+                                        sweep) */
 
 /* Render options.  REFRACTIONLESS: past max_depth, transmission continues
  * along the straight ray (the paper's 4.5).  NO_REFRACTION: transmission

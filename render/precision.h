@@ -21,7 +21,8 @@ render_status_t precision_invert(const xform_t *m, xform_t *inv);
  * arithmetic formed) may lie from where to_eye puts it: |to_eye o from_eye
  * - I| at the farthest point of its eye-space bounds, in eye units (a
  * fixed-point inverse of a cluster scaled by 0.1 was off by 6e-4 of its
- * values before xform_invert worked at unit size; a few steps now).  render_prepare leaves it in the primitive's hit_error. */
+ * values before xform_invert worked at unit size; a few steps now).
+ * render_prepare leaves it in the primitive's hit_error. */
 num_t precision_map_error(const xform_t *to_eye, const xform_t *from_eye, const aabb_t *bounds);
 
 /* After the boxes are known: sets frame->span and every prim's imprecise
