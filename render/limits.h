@@ -18,10 +18,10 @@
 #define RENDER_MAX_PHONG_N 1024       /* highlight sharpness exponent */
 #define RENDER_MAX_MAP_SIZE 1024      /* texels along one side of a map */
 
-/* Density-sphere root finder: fixed iteration counts (per scene) keep every
- * build and every core on exactly the same path. */
-/* The march steps that bracket a root are the scene's option
- * density_steps (proto/scene_format.h SCN_DEFAULT_DENSITY_STEPS). */
+/* Density-sphere root finder: fixed iteration counts keep every build and
+ * every core on exactly the same path.  The march steps that bracket a
+ * root are the scene's option density_steps (proto/scene_format.h
+ * SCN_DEFAULT_DENSITY_STEPS). */
 #define RENDER_DENSITY_BISECTIONS 24  /* bisection steps once bracketed */
 
 

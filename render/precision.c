@@ -413,10 +413,10 @@ void precision_extent_message(const render_frame_t *f, char *out, size_t cap)
      * (scene.h tol_exp); above it the geometry as stored was large enough
      * and only its clusters can have shrunk it */
     char cause[96];
-    int far = 1 << (RENDER_TOL_SLACK_EXP - RENDER_TOL_EXP_MIN - 1);
     if (s->tol_exp <= RENDER_TOL_EXP_MIN)
         fmt_snprintf(cause, sizeof cause, "the eye or a light lies over %d times farther out than "
-                     "the geometry; bring it closer", far);
+                     "the geometry; bring it closer",
+                     1 << (RENDER_TOL_SLACK_EXP - RENDER_TOL_EXP_MIN - 1));
     else
         fmt_snprintf(cause, sizeof cause, "its clusters shrink it below its coordinates; scale "
                      "those instead");

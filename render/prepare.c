@@ -178,6 +178,9 @@ static render_status_t prep_check(const scene_t *s)
         return RENDER_ERR_LIGHTS;
     if (s->options.max_depth > RENDER_MAX_DEPTH)
         return RENDER_ERR_DEPTH;
+    if (s->options.density_steps < SCN_MIN_DENSITY_STEPS ||
+        s->options.density_steps > SCN_MAX_DENSITY_STEPS)
+        return RENDER_ERR_DENSITY;
     if (s->cluster_count < 1 || s->clusters[0].parent != SCENE_NO_CLUSTER)
         return RENDER_ERR_CLUSTER;
     for (uint32_t i = 0; i < s->cluster_count; i++) {
@@ -210,8 +213,6 @@ static render_status_t prep_check(const scene_t *s)
         if (p->kind == SCENE_PRIM_DENSITY &&
             (p->shape.density.count < 1 || p->shape.density.count > RENDER_MAX_DENSITY_COMPONENTS ||
              !num_gt(p->shape.density.threshold, NUM_ZERO) || /* the root finder needs > 0 */
-             s->options.density_steps < SCN_MIN_DENSITY_STEPS ||
-             s->options.density_steps > SCN_MAX_DENSITY_STEPS ||
              (uint64_t)p->shape.density.first + p->shape.density.count > s->density_component_count))
             return RENDER_ERR_DENSITY;
         if (p->kind == SCENE_PRIM_TRIANGLE && p->shape.triangle.smooth > s->normals_count)

@@ -373,7 +373,8 @@ static num_t prim_density_excess(const render_prim_t *p, vec3_t q)
 /* Root finder (docs/renderer.md): the field is zero outside every
  * component sphere, so the surface lies in [lo, hi], the union of the
  * spheres' t-intervals beyond tmin.  That span is sampled at
- * density_steps equal steps (the scene's option); the first sign change of the excess
+ * density_steps equal steps (the scene's option); the first sign change
+ * of the excess
  * is bisected RENDER_DENSITY_BISECTIONS times.  Fixed counts: the same
  * steps in every build, and a result independent of tmax. */
 static int prim_density_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin,

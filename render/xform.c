@@ -77,10 +77,11 @@ static int xform_unit_exponent(num_t big)
  * Dr): in fixed point the cofactors and determinant of a map scaled by
  * 0.1 would otherwise keep only a few hundred steps (m inverse(m) off the
  * identity by 606 steps of Q12.19, 4 now) and maps scaled by 0.03 or 20
- * could not be inverted at all (test_render test_inverse_precision); in float the scaling is exact and changes no bit.  The
- * determinant is divided out of each cofactor separately (cofactor / det),
- * not through 1/det, which would lose the fixed build's precision for
- * large determinants. */
+ * could not be inverted at all (test_render test_inverse_precision); in
+ * float the scaling is exact and changes no bit.  The determinant is
+ * divided out of each cofactor separately (cofactor / det), not through
+ * 1/det, which would lose the fixed build's precision for large
+ * determinants. */
 int xform_invert(const xform_t *m, xform_t *out)
 {
     int kr[3], kc[3];

@@ -535,10 +535,10 @@ static void test_extent_refused(void)
 /* A cluster map's inverse keeps the arithmetic's precision at any scale:
  * m * inverse(m) is the identity within INVERSE_STEPS steps (fixed) or
  * ulps of one (float) times the map's largest scale (at least 1: an
- * inverse right to a step, times 20, is 20 steps off).  Before the map was
- * brought to unit size first, the fixed inverse of a map scaled by 0.1 was off by 6e-4 of its
- * size (Q13.18; 606 steps of Q12.19), and maps scaled by 0.03 or 20 were
- * refused; that scene's edges were off by 35 dB.  A map the fixed range
+ * inverse right to a step, times 20, is 20 steps off).  Before the map
+ * was brought to unit size first, the fixed inverse of a map scaled by 0.1
+ * was off by 6e-4 of its size (Q13.18; 606 steps of Q12.19), and maps
+ * scaled by 0.03 or 20 were refused; that scene's edges were off by 35 dB.  A map the fixed range
  * cannot invert (1e4 along one axis) is refused as such. */
 static void test_inverse_precision(void)
 {
