@@ -208,17 +208,17 @@ firmware: $(FIRMWARE)
 host-tools: $(HOST_TOOL_BINS) $(BOARD_PROG_BINS)
 
 deps:
-	$(Q)bash host-tools/install-deps.sh
+	$(Q)bash host-tools/scripts/install-deps.sh
 
 run: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all
-	$(Q)bash host-tools/make-run.sh
+	$(Q)bash host-tools/scripts/make-run.sh
 
 # The board halted under QEMU's gdb stub, gdb-multiarch attached with the
 # firmware's symbols (GDB_PORT, GDB_NCS, GDB_ARITH, GDB_ARGS; docs/firmware.md).
 gdb: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all
-	$(Q)FW_DIR=$(FWB) bash host-tools/make-gdb.sh
+	$(Q)FW_DIR=$(FWB) bash host-tools/scripts/make-gdb.sh
 
 test: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all $(HOST_TEST_BINS) $(FUZZ_BINS)

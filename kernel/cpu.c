@@ -23,32 +23,13 @@ uint32_t cpu_mpidr_of_core(uint32_t core)
     return ((core / CORES_PER_CLUSTER) << 8) | (core % CORES_PER_CLUSTER);
 }
 
-uint8_t cpu_role_of_core(uint32_t core)
-{
-    if (core == 0)
-        return ROLE_DM;
-    if (core == 1)
-        return ROLE_RC;
-    return ROLE_NC;
-}
-
-const char *cpu_role_name(uint8_t role)
-{
-    switch (role) {
-    case ROLE_DM: return "DM";
-    case ROLE_RC: return "RC";
-    case ROLE_NC: return "NC";
-    }
-    return "?";
-}
-
 void cpu_init(uint32_t core)
 {
     struct cpu *c = &cpus[core];
     memset(c, 0, sizeof *c);
     c->core = core;
     c->mpidr = arch_read_mpidr();
-    c->role = cpu_role_of_core(core);
+    c->role = unit_role_of_core(core);
     c->current = -1;
     arch_write_tpidrprw((uintptr_t)c);
 }

@@ -60,9 +60,6 @@ static inline struct cpu *cpu_of(uint32_t core)
 /* Core number and MPIDR affinity of the virt board's GICv3 layout. */
 uint32_t cpu_core_from_mpidr(uint32_t mpidr);
 uint32_t cpu_mpidr_of_core(uint32_t core);
-/* enum unit_role of a core number. */
-uint8_t cpu_role_of_core(uint32_t core);
-const char *cpu_role_name(uint8_t role);
 
 /* Fills cpus[core] and points TPIDRPRW at it; first thing each core does in C. */
 void cpu_init(uint32_t core);

@@ -39,7 +39,7 @@ static void fault_report(uint32_t kind, uint32_t addr, uint32_t pc, uint32_t sta
     if (core >= UNITS_MAX_CORES || fault_in_progress[core])
         cpu_halt_forever();
     fault_in_progress[core] = 1;
-    uint8_t role = cpu_role_of_core(core);
+    uint8_t role = unit_role_of_core(core);
     if (c) {
         c->halted = 1;
         /* Drop what this core held (the link's transmit lock among them):
@@ -58,7 +58,7 @@ static void fault_report(uint32_t kind, uint32_t addr, uint32_t pc, uint32_t sta
     char line[KLOG_MAX];
     n = fmt_snprintf(line, sizeof line,
                      "core %u %s halted: %s at pc 0x%08x, address 0x%08x, status 0x%x: %s",
-                     (unsigned)core, cpu_role_name(role), fault_kind_name(kind),
+                     (unsigned)core, unit_role_name(role), fault_kind_name(kind),
                      (unsigned)pc, (unsigned)addr, (unsigned)status, text);
     if (n >= (int)sizeof line)
         n = (int)sizeof line - 1;

@@ -34,7 +34,7 @@ void klog(const char *fmt, ...)
     /* Formatted in the core's own buffer: klog is never called from an
      * interrupt handler, so one buffer per core suffices. */
     int n = fmt_snprintf(c->logbuf, sizeof c->logbuf, "core %u %s: ",
-                         (unsigned)c->core, cpu_role_name(c->role));
+                         (unsigned)c->core, unit_role_name(c->role));
     va_list ap;
     va_start(ap, fmt);
     int m = fmt_vsnprintf(c->logbuf + n, sizeof c->logbuf - (size_t)n, fmt, ap);

@@ -4,6 +4,7 @@
 #include "kernel/cpu.h"
 #include "kernel/memlayout.h"
 #include "kernel/panic.h"
+#include "proto/hostlink.h"
 
 /* NC shares are whole multiples of this, so each starts page aligned. */
 #define KMEM_NC_SHARE_ALIGN (64u * 1024u)
@@ -34,7 +35,7 @@ void *kmem_alloc(size_t n, const char *what)
     size_t need = (n + 7u) & ~(size_t)7u;
     if (need > c->mem_size - c->mem_used)
         panic("kmem: %s %u out of private memory for %s: asked %u bytes, %u of %u left",
-              cpu_role_name(c->role), (unsigned)c->core, what, (unsigned)n,
+              unit_role_name(c->role), (unsigned)c->core, what, (unsigned)n,
               (unsigned)(c->mem_size - c->mem_used), (unsigned)c->mem_size);
     void *p = c->mem_base + c->mem_used;
     c->mem_used += need;

@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "proto/crc32.h"
+#include "proto/units.h"
 #include "proto/wire.h"
 
 size_t link_frame_encode(uint8_t *out, size_t cap, uint8_t type, uint8_t flags,
@@ -232,4 +233,23 @@ void link_bulk_get(const uint8_t *p, struct link_bulk *k)
     k->offset = wire_get_u32(p);
     k->length = wire_get_u32(p + 4);
     k->crc = wire_get_u32(p + 8);
+}
+
+uint8_t unit_role_of_core(uint32_t core)
+{
+    if (core == UNITS_DM_CORE)
+        return ROLE_DM;
+    if (core == UNITS_RC_CORE)
+        return ROLE_RC;
+    return ROLE_NC;
+}
+
+const char *unit_role_name(uint8_t role)
+{
+    switch (role) {
+    case ROLE_DM: return "DM";
+    case ROLE_RC: return "RC";
+    case ROLE_NC: return "NC";
+    }
+    return "?";
 }

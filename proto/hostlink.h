@@ -105,6 +105,10 @@ enum link_status {
 
 /* Roles of the unit computers, by core number: 0 DM, 1 RC, 2.. NCs. */
 enum unit_role { ROLE_DM = 0, ROLE_RC = 1, ROLE_NC = 2 };
+/* The role of core k (proto/units.h: UNITS_DM_CORE, UNITS_RC_CORE, NCs). */
+uint8_t unit_role_of_core(uint32_t core);
+/* "DM", "RC", "NC", or "?" for another value. */
+const char *unit_role_name(uint8_t role);
 
 /* LINK_HELLO payload */
 #define LINK_HELLO_SIZE 12

@@ -1,5 +1,5 @@
 /* insn_mark.h: markers for the instruction-counting plugin
- * (host-tools/insn_count_plugin.c).
+ * (host-tools/insn/insn_count_plugin.c).
  *
  * "Count from here": a core that executes this marker has its count set
  * back to zero, so a benchmark counts the work of rendering and not

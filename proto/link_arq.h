@@ -1,26 +1,13 @@
-/* link_arq.h: retransmission for the host link (issue 12, "the host link
- * survives noise").  One definition for both ends; the firmware and the
- * host tool drive it with their own clocks.
+/* link_arq.h: retransmission for the host link (docs/host-link.md, "the
+ * host link survives noise").  One definition for both ends; the firmware
+ * and the host tool drive it with their own clocks.
  *
- * Two schemes share the receiver's verdict (struct link_arq_rx):
- *  - go-back-N, wired into the board and the tool (below, "the wired
- *    link"): every numbered frame is kept for resending, the receiver takes
- *    only the seq it expects and NAKs a gap, a silent sender is polled;
- *  - stop-and-wait (struct link_arq_tx), the first design, kept for the
- *    host simulation (host-tools/link_arq_sim.h, bench-link-arq).
- *
- * Stop-and-wait:
- * Each direction numbers its frames (the seq of proto/hostlink.h).  The
- * sender keeps the one frame not yet acknowledged (struct link_arq_tx) and
- * sends it again when the receiver answers LINK_NAK for its seq, or when no
- * LINK_ACK came within the timeout; after LINK_ARQ_MAX_TRIES sends it gives
- * up and its caller ends the transfer with an error naming the frame.  The
- * receiver (struct link_arq_rx) takes a frame with the seq it expects,
- * answers a repeat of the frame it took last with its ACK again and drops
- * it, and answers anything else, or a damaged frame (the decoder counted a
- * CRC or length error), with a NAK naming the seq it expects.  Frames are
- * CRC-32 checked, so a frame is either taken exactly once, bit-exact, or
- * the sender gives up: never wrong data.
+ * Go-back-N (below): every numbered frame is kept for resending, the
+ * receiver takes only the seq it expects (struct link_arq_rx) and NAKs a
+ * gap, a silent sender is polled.  Each direction numbers its frames (the
+ * seq of proto/hostlink.h).  Frames are CRC-32 checked, so a frame is
+ * either taken exactly once, bit-exact, or the transfer ends with an error
+ * naming the frame: never wrong data.
  *
  * LINK_ACK / LINK_NAK payload: u16 seq (LINK_ACK_SIZE bytes). */
 #ifndef LINKS1_PROTO_LINK_ARQ_H
@@ -31,45 +18,8 @@
 
 #include "proto/hostlink.h"
 
-#define LINK_ARQ_MAX_TRIES 64  /* sends of one frame before the sender gives up: a
-                               * 1 KiB DATA frame crosses whole at 1e-3 a third of
-                               * the time, so 64 tries fail once in ~1e12 */
-
-struct link_arq_tx {
-    uint8_t frame[LINK_MAX_FRAME]; /* the frame not yet acknowledged, encoded */
-    size_t size;                   /* its bytes; 0 when none is pending */
-    uint16_t next_seq;             /* seq of the next new frame */
-    uint16_t seq;                  /* seq of the pending frame */
-    unsigned tries;                /* times it was sent */
-    uint64_t timeout;              /* wait for its ACK, in the caller's clock units */
-    uint64_t deadline;             /* when to send it again */
-    uint32_t resends;              /* frames sent again, in total */
-};
-
-enum link_arq_action {
-    LINK_ARQ_IDLE = 0,    /* nothing pending */
-    LINK_ARQ_WAIT = 1,    /* a frame waits for its ACK */
-    LINK_ARQ_RESEND = 2,  /* send tx->frame (tx->size bytes) again now */
-    LINK_ARQ_GIVE_UP = 3, /* LINK_ARQ_MAX_TRIES sends and no ACK: an error */
-};
-
-void link_arq_tx_init(struct link_arq_tx *t, uint16_t first_seq, uint64_t timeout);
-
-/* Encodes a new frame into t->frame and makes it the pending one; returns
- * its size (send t->frame now), or 0 when a frame is still pending or the
- * payload is too long. */
-size_t link_arq_tx_frame(struct link_arq_tx *t, uint8_t type, uint8_t flags,
-                         const void *payload, size_t len, uint64_t now);
-
-/* A LINK_ACK or LINK_NAK from the receiver.  Returns LINK_ARQ_IDLE when it
- * acknowledged the pending frame, LINK_ARQ_RESEND when a NAK asks for it
- * again, LINK_ARQ_GIVE_UP when that was its last try, else LINK_ARQ_WAIT
- * (an answer about another frame: stale, ignored). */
-enum link_arq_action link_arq_tx_answer(struct link_arq_tx *t, const struct link_frame *f,
-                                        uint64_t now);
-
-/* What the sender must do at time now (send again at the timeout). */
-enum link_arq_action link_arq_tx_poll(struct link_arq_tx *t, uint64_t now);
+#define LINK_ARQ_MAX_TRIES 64  /* polls in a row with nothing heard before the host
+                               * gives up (LINK_ARQ_POLL_MS apart: 16 s) */
 
 struct link_arq_rx {
     int known;       /* a frame was taken: expect is valid */
@@ -79,7 +29,7 @@ struct link_arq_rx {
 enum link_arq_verdict {
     LINK_ARQ_NEW = 0,   /* take the frame, answer ACK seq */
     LINK_ARQ_DUP = 1,   /* a frame already taken (seq behind expect): drop it
-                         * (stop-and-wait: answer ACK seq) */
+                         */
     LINK_ARQ_OTHER = 2, /* ahead of the one expected: answer NAK expect, drop it */
 };
 

@@ -33,7 +33,7 @@
 #include "roles/gigs.h"
 #include "roles/selftest.h"
 #include "roles/unit.h"
-#include "roles/unitmsg.h"
+#include "proto/unitmsg.h"
 
 /* Queued frame record: u8 type, u8 flags, u16 seq, u16 length, payload. */
 #define DM_REC_HEADER 6

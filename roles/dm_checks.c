@@ -14,7 +14,7 @@
 #include "roles/dm.h"
 #include "roles/selftest.h"
 #include "roles/unit.h"
-#include "roles/unitmsg.h"
+#include "proto/unitmsg.h"
 
 /* The success result of the ping and IMSU checks: ok of total passed. */
 static void dm_count_result(uint16_t cmd, uint32_t ok, uint32_t total)

@@ -27,7 +27,7 @@
 #include "roles/gigs.h"
 #include "roles/selftest.h"
 #include "roles/unit.h"
-#include "roles/unitmsg.h"
+#include "proto/unitmsg.h"
 
 /* The scene the host loaded; len 0 = none. */
 static struct {

@@ -15,7 +15,7 @@
 #include "roles/dm.h"
 #include "roles/selftest.h"
 #include "roles/unit.h"
-#include "roles/unitmsg.h"
+#include "proto/unitmsg.h"
 
 /* One host -> board transfer (see dm.h). */
 static int dm_transfer_receive_polled(uint16_t cmd, dm_chunk_in_fn fn, void *ctx,

@@ -12,7 +12,7 @@
 #include "roles/gigs.h"
 #include "roles/selftest.h"
 #include "roles/unit.h"
-#include "roles/unitmsg.h"
+#include "proto/unitmsg.h"
 
 
 static void nc_send(struct line_msg *m)

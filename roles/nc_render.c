@@ -21,7 +21,7 @@
 #include "render/clip.h"
 #include "roles/gigs.h"
 #include "roles/selftest.h"
-#include "roles/unitmsg.h"
+#include "proto/unitmsg.h"
 
 /* Per-NC state: each NC's own slot, indexed by core. */
 struct nc_job {
@@ -50,8 +50,8 @@ static void nc_request(struct line_msg *m, int32_t status, const char *why)
     m->type = MSG_NC_REQ;
     wire_put_u32(m->payload, (uint32_t)status);
     uint32_t n = why ? (uint32_t)strlen(why) : 0;
-    memcpy(m->payload + 4, why, n);
-    m->len = (uint16_t)(4 + n);
+    memcpy(m->payload + MSG_NC_REQ_SIZE, why, n);
+    m->len = (uint16_t)(MSG_NC_REQ_SIZE + n);
     nc_send(m);
 }
 

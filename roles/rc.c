@@ -14,7 +14,7 @@
 #include "roles/gigs.h"
 #include "roles/selftest.h"
 #include "roles/unit.h"
-#include "roles/unitmsg.h"
+#include "proto/unitmsg.h"
 
 
 static void rc_send(uint32_t peer, struct line_msg *m)

@@ -19,7 +19,7 @@
 #include "roles/rc_run.h"
 #include "roles/selftest.h"
 #include "roles/unit.h"
-#include "roles/unitmsg.h"
+#include "proto/unitmsg.h"
 
 /* NCs given up for failed since the board started: out of later frames. */
 static uint8_t rc_nc_gone[UNITS_MAX_CORES];

@@ -24,7 +24,7 @@
 #include "roles/gigs.h"
 #include "roles/rc_run.h"
 #include "roles/unit.h"
-#include "roles/unitmsg.h"
+#include "proto/unitmsg.h"
 
 /* What the RC's two tasks share about the frame in progress. */
 static struct {

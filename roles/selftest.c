@@ -13,7 +13,7 @@
 #include "kernel/task.h"
 #include "proto/hostlink.h"
 #include "proto/render_link.h"
-#include "roles/unitmsg.h"
+#include "proto/unitmsg.h"
 
 /* A cheap mix of (seed, seq, word index): every word of every message of
  * every stream differs, so a lost, repeated or misplaced message shows. */

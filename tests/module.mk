@@ -46,13 +46,9 @@ BENCHES += tests/bench/bench_link_noise.sh
 
 # Encodings of the rendering commands and the NC statistics the RC sums.
 HOST_TESTS += test_render_link
-test_render_link_SRCS := tests/host/test_render_link.c host-tools/render_faults.c
+test_render_link_SRCS := tests/host/test_render_link.c host-tools/gigs/render_faults.c
 test_render_link_ARITH := float
 
-# Frame traces (links1 render --trace) and their replay on equal-speed units.
-HOST_TESTS += test_trace
-test_trace_SRCS := tests/host/test_trace.c host-tools/trace_file.c host-tools/trace_scale.c host-tools/replay.c
-test_trace_ARITH := double
 BENCHES += tests/bench/bench_figures.sh
 
 # make figures: the paper's figures and tables (tests/bench/figures.sh) and
@@ -65,3 +61,10 @@ figures: deps
 	$(Q)mkdir -p docs/figures && cp $(B)/pareto/pareto.png $(B)/pareto/pareto.tsv \
 		$(B)/pareto/pareto-board.png $(B)/pareto/pareto-board.tsv docs/figures/
 BENCHES += tests/bench/bench_wallclock.sh
+
+# The include rules of docs/layers.md: the tree follows them and the
+# checker refuses each kind of wrong include (`make check-layers` alone).
+BOARD_TESTS += tests/layers/layers.sh
+.PHONY: check-layers
+check-layers:
+	$(Q)bash tests/layers/check_layers.sh

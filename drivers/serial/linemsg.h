@@ -3,7 +3,7 @@
  * tests build it.
  *
  *   offset  size  field
- *   0       2     type    (roles/unitmsg.h: what the message asks or says)
+ *   0       2     type    (proto/unitmsg.h: what the message asks or says)
  *   2       2     len     payload bytes, 0..LINE_MAX_PAYLOAD
  *   4       4     seq     sender's message counter on this line direction
  *   8       4     check   crc32 of the payload
@@ -16,8 +16,8 @@
 #include <stdint.h>
 
 #include "kernel/param.h"
+#include "proto/unitmsg.h" /* LINEMSG_HEADER_SIZE */
 
-#define LINEMSG_HEADER_SIZE 12
 #define LINEMSG_MAX_SIZE (LINEMSG_HEADER_SIZE + LINE_MAX_PAYLOAD)
 
 struct line_msg {

@@ -11,7 +11,7 @@
 
 #include <stdio.h>
 
-#include "host-tools/scene/model.h"
+#include "host-tools/model/model.h"
 #include "host-tools/scene/scene_desc.h"
 
 #define IMPORT_FIT_EXTENT 100.0 /* --fit: the largest |coordinate| becomes this */

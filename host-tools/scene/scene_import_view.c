@@ -100,7 +100,9 @@ static int view_light(const struct model_light *ml, double scale, struct sd_ligh
                       FILE *warn, char *err, size_t errlen)
 {
     memset(l, 0, sizeof *l);
-    l->kind = ml->kind;
+    l->kind = ml->kind == MODEL_LIGHT_PARALLEL ? SCN_LIGHT_PARALLEL
+              : ml->kind == MODEL_LIGHT_POINT  ? SCN_LIGHT_POINT
+                                               : SCN_LIGHT_SPOT;
     int clamped = 0;
     for (int i = 0; i < 3; i++) {
         double c = ml->colour[i];

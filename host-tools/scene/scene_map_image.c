@@ -3,7 +3,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "host-tools/scene/image_io.h"
+#include "host-tools/image/image_io.h"
 #include "host-tools/scene/scene_import.h"
 
 int sd_map_read_image(struct sd_map *m, const char *path, char *err, size_t errlen)

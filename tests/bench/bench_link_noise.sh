@@ -1,10 +1,6 @@
 #!/usr/bin/env bash
 # bench_link_noise.sh: the host link under --link-noise, 1e-5 .. 1e-2 per byte.
-#  1. build/bench-link-arq: the stop-and-wait retransmission of
-#     proto/link_arq.h through the same damage, simulated on the host (the
-#     first design; the board and the tool run go-back-N): runs exact / given
-#     up, median goodput (payload taken per byte on the line), resends per frame.
-#  2. The real board with its go-back-N retransmission: links1 render of a
+#  The real board with its go-back-N retransmission: links1 render of a
 #     64x48 scene on 2 NCs, SEEDS seeds (default 3) per rate and path (PATHS,
 #     default "fast serial"): how many gave the host build's exact image, how
 #     many ended with the link giving up (a clear error); for the exact runs
@@ -18,8 +14,6 @@ SEEDS=${SEEDS:-3}
 PATHS=${PATHS:-fast serial}
 tmp=$(mktemp -d /tmp/links1-bench-noise.XXXXXX)
 trap 'rm -rf "$tmp"' EXIT
-echo "== simulated retransmission (build/bench-link-arq)"
-build/bench-link-arq
 echo "== the board: links1 render --link-noise RATE:SEED, $SEEDS seeds"
 build/links1 ref scenes/demo.scn -o "$tmp/ref.ppm" --arith float --size 64x48 >/dev/null 2>&1
 printf '%-8s %-7s %6s %6s %6s %9s %9s %7s %9s %7s\n' rate path exact error wrong \

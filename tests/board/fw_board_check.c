@@ -2,7 +2,7 @@
  * never sends on purpose: damaged frames, unknown commands, malformed
  * payloads, frames out of place, and every kind of injected fault.
  *
- * The board is started by the one launcher (host-tools/board.c) and spoken
+ * The board is started by the one launcher (host-tools/link/board.c) and spoken
  * to with the one framing (proto/hostlink.c); a damaged frame is a good one
  * from link_frame_encode with a byte spoilt.  Prints one "PASS name" or
  * "FAIL name: why" line per check (counted by tests/run.sh).
@@ -14,7 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "host-tools/board.h"
+#include "host-tools/launcher/launcher.h"
 #include "proto/board_map.h"
 #include "proto/wire.h"
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# --arith auto (host-tools/scene/arith_auto.c) on two sweep scenes at 48x36:
+# --arith auto (host-tools/ref/arith_auto.c) on two sweep scenes at 48x36:
 #   scale 1   fixed Q12.19 keeps 40 dB: a unit computer without an FPU
 #             gets the fixed firmware (cheaper than soft float on the
 #             board), and the board's image equals the fixed host build

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The --link-noise relay on a real board (host-tools/link_relay.h).  With no
+# The --link-noise relay on a real board (host-tools/launcher/link_relay.h).  With no
 # damage (rate 0) the relay is transparent: both paths give the host build's
 # image byte for byte.  At 1e-3 per byte each way the retransmission
 # (proto/link_arq.h) must give the exact image, exit 0, on every seed: three

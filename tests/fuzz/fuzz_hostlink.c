@@ -17,7 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "host-tools/board.h"
+#include "host-tools/launcher/launcher.h"
 #include "proto/hostlink.h"
 #include "proto/link_arq.h"
 #include "proto/render_link.h"

@@ -5,7 +5,7 @@
 
 #include <sys/socket.h>
 
-#include "host-tools/board.h"
+#include "host-tools/launcher/launcher.h"
 
 static inline int fake_session(struct board *b, int *peer)
 {

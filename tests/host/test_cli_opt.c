@@ -1,5 +1,5 @@
 /* test_cli_opt.c: the argument reader every links1 command uses
- * (host-tools/cli_opt.c) and the board options (board_opt): operands keep
+ * (host-tools/opts/cli_opt.c) and the board options (board_opt): operands keep
  * their place among options, "--" ends the options, and every bad option or
  * value is refused with a message naming it. */
 #include <stdio.h>
@@ -7,8 +7,8 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "host-tools/board.h"
-#include "host-tools/cli_opt.h"
+#include "host-tools/launcher/launcher.h"
+#include "host-tools/opts/cli_opt.h"
 #include "tests/check.h"
 
 enum { T_SIZE = CLI_OWN_CODES, T_PPM, T_FRAME, T_FRAMES };

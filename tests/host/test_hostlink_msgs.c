@@ -1,6 +1,6 @@
 /* Host tests of the host-link message encodings: HELLO and FAULT payloads
  * (proto/hostlink.c) and the host tool's CMD and RESULT frames
- * (host-tools/board.c), each pinned to a literal byte string so that host
+ * (host-tools/link/board.c), each pinned to a literal byte string so that host
  * and firmware cannot drift apart unnoticed; and the host's side of the
  * retransmission (proto/link_arq.h): a damaged or missing frame asked for
  * with LINK_NAK, a silent board polled, our frames resent on the board's NAK. */
@@ -10,7 +10,8 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
-#include "host-tools/board.h"
+#include "host-tools/link/board.h"
+#include "host-tools/link/board_arq.h"
 #include "proto/hostlink.h"
 #include "proto/wire.h"
 #include "tests/check.h"
@@ -90,7 +91,7 @@ static void msg_cmd_frame_bytes_are_pinned(void)
     CHECK(n == sizeof want && memcmp(got, want, sizeof want) == 0);
     CHECK_EQ_INT(b.tx_seq, 1);
     close(peer);
-    close(b.fd);
+    board_session_close(&b);
 }
 
 static void msg_result_frame_is_parsed(void)
@@ -115,7 +116,7 @@ static void msg_result_frame_is_parsed(void)
     CHECK(write(peer, frame, n) == (ssize_t)n);
     CHECK_EQ_INT(board_wait_result(&b, CMD_STATUS, 2000, &r, &status, &fields, &nf), -1);
     close(peer);
-    close(b.fd);
+    board_session_close(&b);
 }
 
 /* A RESULT for cmd 0 is the board reporting a frame from the host it
@@ -142,7 +143,7 @@ static void msg_dropped_frame_report_is_counted(void)
     CHECK_EQ_INT(b.host_frames_dropped, 1);
     CHECK_EQ_INT(board_link_errors(&b), 1);
     close(peer);
-    close(b.fd);
+    board_session_close(&b);
 }
 
 /* Reads the frames the host sent to the fake board within ms; returns how
@@ -185,7 +186,7 @@ static void msg_damaged_frame_is_asked_for_again(void)
     struct board b;
     int peer;
     CHECK(fake_session(&b, &peer) == 0);
-    b.arq_rx.known = 1; /* a board booted by us: its frames from seq 0 */
+    b.arq->rx.known = 1; /* a board booted by us: its frames from seq 0 */
     uint8_t frame[64], answer[8] = {2, 0, 0, 0, 9, 0, 0, 0}; /* cmd 2 ok, u32 9 */
     size_t n = link_frame_encode(frame, sizeof frame, LINK_RESULT, 0, 0, answer, sizeof answer);
     frame[9] ^= 0x10;
@@ -196,7 +197,7 @@ static void msg_damaged_frame_is_asked_for_again(void)
     CHECK(k >= 1);
     CHECK_EQ_INT(got[0].type, LINK_NAK);
     CHECK_EQ_INT(wire_get_u16(got[0].payload), 0);
-    CHECK_EQ_INT(b.queued, 0);
+    CHECK_EQ_INT(board_queued(&b), 0);
     frame[9] ^= 0x10; /* sent again, whole */
     CHECK(write(peer, frame, n) == (ssize_t)n);
     CHECK(write(peer, frame, n) == (ssize_t)n); /* and once more: a repeat */
@@ -207,11 +208,11 @@ static void msg_damaged_frame_is_asked_for_again(void)
     CHECK_EQ_INT(board_wait_result(&b, CMD_LINE_PING, 2000, &r, &status, &fields, &nf), 0);
     CHECK_EQ_INT(status, 0);
     board_pump(&b, 100);
-    CHECK_EQ_INT(b.queued, 0); /* the repeat was dropped */
-    CHECK_EQ_INT(b.arq_dups, 1);
+    CHECK_EQ_INT(board_queued(&b), 0); /* the repeat was dropped */
+    CHECK_EQ_INT(b.arq->dups, 1);
     CHECK_EQ_INT(board_arq_failed(&b), 0);
     close(peer);
-    close(b.fd);
+    board_session_close(&b);
 }
 
 /* A frame after a gap is held back (not handled out of order) and the lost
@@ -221,12 +222,12 @@ static void msg_gap_is_asked_for_and_silence_polled(void)
     struct board b;
     int peer;
     CHECK(fake_session(&b, &peer) == 0);
-    b.arq_rx.known = 1; /* a board booted by us: its frames from seq 0 */
+    b.arq->rx.known = 1; /* a board booted by us: its frames from seq 0 */
     uint8_t frame[64], answer[8] = {2, 0, 0, 0, 9, 0, 0, 0};
     size_t n = link_frame_encode(frame, sizeof frame, LINK_RESULT, 0, 1, answer, sizeof answer);
     CHECK(write(peer, frame, n) == (ssize_t)n); /* seq 1: seq 0 was lost */
     board_pump(&b, 100);
-    CHECK_EQ_INT(b.queued, 0);
+    CHECK_EQ_INT(board_queued(&b), 0);
     struct board_frame got[4];
     CHECK(peer_frames(peer, 200, got, 4) >= 1);
     CHECK_EQ_INT(got[0].type, LINK_NAK);
@@ -241,7 +242,7 @@ static void msg_gap_is_asked_for_and_silence_polled(void)
     CHECK(got[0].flags & LINK_FLAG_POLL);
     CHECK_EQ_INT(wire_get_u16(got[0].payload), 0);
     close(peer);
-    close(b.fd);
+    board_session_close(&b);
 }
 
 /* A NAK from the board: the host sends its kept frames again, the same
@@ -265,7 +266,7 @@ static void msg_board_nak_gets_our_frames_again(void)
         CHECK_EQ_INT(again[i].length, first[i].length);
         CHECK(memcmp(again[i].payload, first[i].payload, first[i].length) == 0);
     }
-    CHECK_EQ_INT(b.arq_resends, 2);
+    CHECK_EQ_INT(b.arq->resends, 2);
     n = link_arq_nak_encode(nak, sizeof nak, 0, 7); /* never sent */
     CHECK(write(peer, nak, n) == (ssize_t)n);
     board_pump(&b, 100);
@@ -275,7 +276,7 @@ static void msg_board_nak_gets_our_frames_again(void)
     CHECK_EQ_INT(again[0].type, LINK_NAK);
     CHECK(again[0].flags & LINK_FLAG_GONE);
     close(peer);
-    close(b.fd);
+    board_session_close(&b);
 }
 
 /* A frame of ours the board keeps asking for: the host gives up after
@@ -293,12 +294,12 @@ static void msg_host_gives_up_on_a_frame_that_never_arrives(void)
     for (int i = 0; i < 10; i++)
         board_pump(&b, 20);
     CHECK_EQ_INT(board_arq_failed(&b), 0);
-    CHECK_EQ_INT(b.arq_resends, LINK_ARQ_MAX_ASKS);
+    CHECK_EQ_INT(b.arq->resends, LINK_ARQ_MAX_ASKS);
     CHECK(write(peer, nak, n) == (ssize_t)n);
     board_pump(&b, 100);
     CHECK_EQ_INT(board_arq_failed(&b), 1);
     close(peer);
-    close(b.fd);
+    board_session_close(&b);
 }
 
 /* A frame whose length field was spoilt keeps the decoder waiting with no
@@ -311,7 +312,7 @@ static void msg_stalled_partial_frame_leads_to_a_poll(void)
     struct board b;
     int peer;
     CHECK(fake_session(&b, &peer) == 0);
-    b.arq_rx.known = 1;
+    b.arq->rx.known = 1;
     uint8_t frame[64], answer[8] = {2, 0, 0, 0, 9, 0, 0, 0};
     size_t n = link_frame_encode(frame, sizeof frame, LINK_RESULT, 0, 0, answer, sizeof answer);
     wire_put_u16(frame + 6, 2000); /* the length field spoilt */
@@ -322,7 +323,7 @@ static void msg_stalled_partial_frame_leads_to_a_poll(void)
     struct board_frame got[4];
     CHECK_EQ_INT(peer_frames(peer, 50, got, 4), 0); /* clean link: nothing yet */
     CHECK(LINK_ARQ_STALL_CLEAN_MS > LINK_ARQ_STALL_MS + 300);
-    b.arq_damage_seen = 1; /* now as on a link seen damaged */
+    b.arq->damage_seen = 1; /* now as on a link seen damaged */
     t0 = board_now_ms();
     while (board_now_ms() - t0 < 300)
         board_pump(&b, 50);
@@ -333,7 +334,7 @@ static void msg_stalled_partial_frame_leads_to_a_poll(void)
     CHECK_EQ_INT(b.dec.have, 0);
     CHECK_EQ_INT(b.dec.stats.stalls, 1);
     close(peer);
-    close(b.fd);
+    board_session_close(&b);
 }
 
 /* The board's answer to a poll that names our next frame (it lacks nothing)
@@ -344,9 +345,9 @@ static void msg_poll_answered_in_step_stops_polling(void)
     struct board b;
     int peer;
     CHECK(fake_session(&b, &peer) == 0);
-    b.arq_rx.known = 1;
-    b.arq_naks_heard = 1; /* as on a board we booted */
-    b.arq_armed = b.arq_damage_seen = 1;
+    b.arq->rx.known = 1;
+    b.arq->naks_heard = 1; /* as on a board we booted */
+    b.arq->armed = b.arq->damage_seen = 1;
     long long t0 = board_now_ms();
     while (board_now_ms() - t0 < LINK_ARQ_POLL_MS + 100)
         board_pump(&b, 50);
@@ -354,16 +355,16 @@ static void msg_poll_answered_in_step_stops_polling(void)
     CHECK(peer_frames(peer, 200, got, 4) >= 1); /* polled */
     CHECK(got[0].flags & LINK_FLAG_POLL);
     uint8_t nak[LINK_HEADER_SIZE + LINK_ACK_SIZE + LINK_CRC_SIZE];
-    size_t n = link_arq_nak_encode(nak, sizeof nak, 0, b.arq_tx.next_seq);
+    size_t n = link_arq_nak_encode(nak, sizeof nak, 0, b.arq->tx.next_seq);
     CHECK(write(peer, nak, n) == (ssize_t)n);
     board_pump(&b, 100);
-    CHECK_EQ_INT(b.arq_armed, 0);
+    CHECK_EQ_INT(b.arq->armed, 0);
     t0 = board_now_ms();
     while (board_now_ms() - t0 < 2 * LINK_ARQ_POLL_MS)
         board_pump(&b, 50);
     CHECK_EQ_INT(peer_frames(peer, 50, got, 4), 0); /* no more polls */
     close(peer);
-    close(b.fd);
+    board_session_close(&b);
 }
 
 static void msg_hello_and_fault_are_recorded(void)
@@ -394,7 +395,7 @@ static void msg_hello_and_fault_are_recorded(void)
     CHECK_EQ_INT(b.nfaults, 1);
     CHECK_EQ_INT(b.faults[0].addr, 0x40001000u);
     close(peer);
-    close(b.fd);
+    board_session_close(&b);
 }
 
 int main(void)

@@ -1,4 +1,4 @@
-/* Host tests of a whole board session (host-tools/board.c): start, report-in,
+/* Host tests of a whole board session (host-tools/link/board.c): start, report-in,
  * commands, shutdown, against a fake board.  The fake is this same program:
  * the tests point $QEMU at /proc/self/exe and name a behaviour in
  * $FAKE_BOARD, and main() plays the board on the UART socket QEMU would
@@ -10,7 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "host-tools/board.h"
+#include "host-tools/launcher/launcher.h"
 #include "proto/wire.h"
 #include "tests/check.h"
 

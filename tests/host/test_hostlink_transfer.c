@@ -1,4 +1,4 @@
-/* Host tests of the host tool's bulk transfers (host-tools/link_transfer.c)
+/* Host tests of the host tool's bulk transfers (host-tools/link/link_transfer.c)
  * against a fake board on the other end of a socketpair: the window is
  * respected, cumulative ACKs work, a DATA frame the board repeats is dropped
  * by the retransmission (proto/link_arq.h), and wrong data under a good CRC
@@ -9,7 +9,7 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
-#include "host-tools/link_transfer.h"
+#include "host-tools/link/link_transfer.h"
 #include "proto/crc32.h"
 #include "proto/wire.h"
 #include "tests/check.h"
@@ -77,7 +77,7 @@ static void transfer_send_respects_window(void)
     CHECK_EQ_INT(p.most_unacked, LINK_DATA_WINDOW);
     CHECK_EQ_INT(p.acks, 3); /* 11 frames: 4 + 4 + the last 3 */
     close(p.fd);
-    close(b.fd);
+    board_session_close(&b);
 }
 
 static void transfer_send_rejects_stray_ack(void)
@@ -93,7 +93,7 @@ static void transfer_send_rejects_stray_ack(void)
     uint32_t crc;
     CHECK_EQ_INT(link_transfer_send_pattern(&b, 100, &crc), -1);
     close(peer);
-    close(b.fd);
+    board_session_close(&b);
 }
 
 /* ---- board -> host: the fake board writes its frames up front */
@@ -133,7 +133,7 @@ static int source_run(enum source_damage damage, uint64_t *bytes, uint32_t *crc)
     source_write(peer, 8, damage);
     int r = link_transfer_receive_pattern(&b, bytes, crc);
     close(peer);
-    close(b.fd);
+    board_session_close(&b);
     return r;
 }
 

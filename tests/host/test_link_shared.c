@@ -1,4 +1,4 @@
-/* Host tests of the shared-memory path's host side (host-tools/link_shared.c)
+/* Host tests of the shared-memory path's host side (host-tools/link/link_shared.c)
  * against a fake board on the other end of a socketpair and a buffer
  * standing for the board's RAM: bytes land where the board offered and are
  * told with their CRC; an offer outside the RAM is cancelled with no bytes;
@@ -8,7 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "host-tools/link_shared.h"
+#include "host-tools/link/link_shared.h"
 #include "proto/crc32.h"
 #include "proto/wire.h"
 #include "tests/check.h"
@@ -101,7 +101,7 @@ static void shared_send_cancels_offer_outside_ram(void)
     struct link_bulk k;
     CHECK_EQ_INT(peer_read_bulk(peer, &k), 0);
     CHECK_EQ_INT(k.length, 0); /* answered with no bytes */
-    CHECK_EQ_INT(b.queued, 0); /* and the board's result taken */
+    CHECK_EQ_INT(board_queued(&b), 0); /* and the board's result taken */
     b.ram = NULL;
     board_stop(&b);
     close(peer);
@@ -180,7 +180,7 @@ static void shared_send_copies_again_on_a_new_offer(void)
     CHECK_EQ_INT(k2.length, sizeof data);
     CHECK_EQ_INT(k2.crc, crc32(data, sizeof data));
     close(peer);
-    close(b.fd);
+    board_session_close(&b);
 }
 
 int main(void)

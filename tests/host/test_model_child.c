@@ -17,8 +17,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "host-tools/scene/model_child.h"
-#include "host-tools/scene/model_wire.h"
+#include "host-tools/model/model_child.h"
+#include "host-tools/model/model_wire.h"
 #include "tests/check.h"
 
 #define MODELS "tests/models/"

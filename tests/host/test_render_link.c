@@ -2,7 +2,7 @@
  * and of the NC statistics the RC sums (roles/gigs.h). */
 #include <string.h>
 
-#include "host-tools/render_faults.h"
+#include "host-tools/gigs/render_faults.h"
 #include "proto/render_link.h"
 #include "roles/gigs.h"
 #include "tests/check.h"

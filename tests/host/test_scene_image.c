@@ -6,8 +6,8 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "host-tools/scene/image_io.h"
-#include "host-tools/scene/scene_cmds.h"
+#include "host-tools/image/image_io.h"
+#include "host-tools/cli/scene_cmds.h"
 #include "tests/check.h"
 
 #define W 23

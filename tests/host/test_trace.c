@@ -1,5 +1,5 @@
-/* test_trace.c: trace files (host-tools/trace_file.h) round-trip and are
- * refused when damaged; the replay (host-tools/replay.h) gives each NC
+/* test_trace.c: trace files (host-tools/trace/trace_file.h) round-trip and are
+ * refused when damaged; the replay (host-tools/trace/replay.h) gives each NC
  * exactly the board's instructions under static balancing, and a legal
  * handout of the schedule under dynamic and decreasing balancing; a trace
  * scaled to a larger size (trace_scale) keeps its costs per pixel block. */
@@ -9,8 +9,8 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "host-tools/replay.h"
-#include "host-tools/trace_file.h"
+#include "host-tools/trace/replay.h"
+#include "host-tools/trace/trace_file.h"
 #include "proto/areas.h"
 #include "tests/check.h"
 

@@ -8,7 +8,7 @@
 #include <string.h>
 #include <unistd.h>
 
-#include "host-tools/scene/image_io.h"
+#include "host-tools/image/image_io.h"
 #include "host-tools/scene/scene_desc.h"
 #include "render/blob.h"
 #include "render/scene_load.h"

@@ -1,0 +1,85 @@
+/* cmd_boot.c: `links1 boot`: boot the board, show every unit computer
+ * reporting in, shut it down cleanly; optionally count guest instructions. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <unistd.h>
+
+#include "host-tools/launcher/launcher.h"
+#include "host-tools/insn/insn_report.h"
+#include "host-tools/cli/links1_cmds.h"
+
+static void cmd_boot_usage(FILE *out)
+{
+    fprintf(out, "usage: links1 boot [options]\n"
+                 "Boots the board, prints its log and every unit computer reporting in,\n"
+                 "then shuts it down.  Exits non-zero naming the cores that did not report.\n"
+                 "options:\n%s"
+                 "  --count-insns    count guest instructions per core (TCG plugin\n"
+                 "                   insn-count.so next to this program) and print them\n",
+                 board_opts_usage);
+}
+
+enum { BOOT_OPT_COUNT_INSNS = CLI_OWN_CODES };
+
+static const struct option boot_options[] = {
+    BOARD_LONG_OPTIONS,
+    {"count-insns", no_argument, NULL, BOOT_OPT_COUNT_INSNS},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0},
+};
+
+int cmd_boot(int argc, char **argv)
+{
+    struct board_opts o;
+    int count_insns = 0;
+    board_opts_init(&o);
+    struct cli c;
+    cli_init(&c, "links1 boot", argc, argv, "h", boot_options);
+    for (int code; (code = cli_next(&c)) != -1;) {
+        int r = board_opt(&o, &c, code);
+        if (r < 0)
+            return 2;
+        if (r)
+            continue;
+        if (code == BOOT_OPT_COUNT_INSNS) {
+            count_insns = 1;
+        } else if (code == 'h') {
+            cmd_boot_usage(stdout);
+            return 0;
+        } else {
+            if (code == CLI_OPERAND)
+                fprintf(stderr, "links1 boot: unexpected argument '%s'\n", c.arg);
+            cmd_boot_usage(stderr);
+            return 2;
+        }
+    }
+    char insn_path[] = "/tmp/links1-insns-XXXXXX";
+    if (count_insns) {
+        int fd = mkstemp(insn_path);
+        if (fd < 0) {
+            perror("links1: temporary file for instruction counts");
+            return 1;
+        }
+        close(fd);
+        o.insn_count_out = insn_path;
+    }
+    struct board b;
+    int rc = 1;
+    if (board_start(&b, &o) == 0 && board_wait_reported(&b, o.timeout_s * 1000) == 0) {
+        if (o.quiet) /* else board_wait_reported said "board up" */
+            printf("links1: all %d unit computers reported in: DM, RC and %d NCs\n", o.ncores,
+                   o.ncores - 2);
+        rc = 0;
+    }
+    int stop = board_stop(&b);
+    if (board_report_link_errors(&b))
+        rc = 1;
+    if (stop < 0)
+        rc = 1;
+    if (count_insns) {
+        if (insn_report_print(insn_path, o.ncores) < 0)
+            rc = 1;
+        unlink(insn_path);
+    }
+    return rc;
+}

@@ -1,0 +1,214 @@
+/* import_cmd.c: `links1 import MODEL -o SCENE.scn [--fit] [--camera auto] [--smooth]`:
+ * a model made elsewhere into a text scene (docs/import.md).  The scene is
+ * written to a temporary file, read back and compiled before it takes
+ * SCENE's name, so a refused model leaves no output at all. */
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "host-tools/opts/cli_opt.h"
+#include "host-tools/cli/scene_cmds.h"
+#include "host-tools/scene/scene_import.h"
+
+enum { IMPORT_OPT_FIT = CLI_OWN_CODES, IMPORT_OPT_CAMERA, IMPORT_OPT_SMOOTH };
+
+#define IMPORT_USAGE "links1 import MODEL -o SCENE.scn [--fit] [--camera auto] [--smooth]"
+
+static const struct option import_options[] = {
+    {"fit", no_argument, NULL, IMPORT_OPT_FIT},
+    {"camera", required_argument, NULL, IMPORT_OPT_CAMERA},
+    {"smooth", no_argument, NULL, IMPORT_OPT_SMOOTH},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0},
+};
+
+struct import_args {
+    const char *model, *out;
+    int fit, camera_auto, smooth;
+};
+
+static int import_args(int argc, char **argv, struct import_args *a)
+{
+    struct cli c;
+    cli_init(&c, "links1 import", argc, argv, "o:h", import_options);
+    for (int code; (code = cli_next(&c)) != -1;) {
+        if (code == 'h') {
+            printf("usage: %s\n", IMPORT_USAGE);
+            return 1;
+        } else if (code == 'o') {
+            a->out = c.arg;
+        } else if (code == IMPORT_OPT_FIT) {
+            a->fit = 1;
+        } else if (code == IMPORT_OPT_SMOOTH) {
+            a->smooth = 1;
+        } else if (code == IMPORT_OPT_CAMERA && strcmp(c.arg, "auto") == 0) {
+            a->camera_auto = 1;
+        } else if (code == IMPORT_OPT_CAMERA) {
+            cli_bad_value(&c, "auto");
+            return -1;
+        } else if (code == CLI_OPERAND && !a->model) {
+            a->model = c.arg;
+        } else {
+            if (code == CLI_OPERAND)
+                fprintf(stderr, "links1 import: one model at a time, not also '%s'\n", c.arg);
+            fprintf(stderr, "usage: %s\n", IMPORT_USAGE);
+            return -1;
+        }
+    }
+    if (!a->model || !a->out) {
+        fprintf(stderr, "links1 import: %s\nusage: %s\n", !a->model ? "no MODEL given"
+                                                                    : "no -o SCENE.scn given",
+                IMPORT_USAGE);
+        return -1;
+    }
+    return 0;
+}
+
+/* Copies src into dst of n bytes, cut short if it must be. */
+static void import_copy(char *dst, size_t n, const char *src)
+{
+    size_t k = strlen(src);
+    if (k >= n)
+        k = n - 1;
+    memcpy(dst, src, k);
+    dst[k] = 0;
+}
+
+/* path's directory with a trailing '/', or "" (the current one). */
+static void import_dir(const char *path, char *dir, size_t n)
+{
+    snprintf(dir, n, "%s", path);
+    char *slash = strrchr(dir, '/');
+    if (slash)
+        slash[1] = 0;
+    else
+        dir[0] = 0;
+}
+
+/* Texture paths as the written scene names them: relative to the scene's
+ * directory when the file lies below it, absolute otherwise. */
+static void import_map_names(const struct import_result *r, int n_maps, const char *out,
+                             char names[][IMPORT_PATH_MAX], const char **ptrs)
+{
+    char odir[IMPORT_PATH_MAX], oreal[PATH_MAX];
+    import_dir(out, odir, sizeof odir);
+    int have_out = realpath(odir[0] ? odir : ".", oreal) != NULL;
+    size_t olen = strlen(oreal);
+    for (int i = 0; i < n_maps; i++) {
+        char real[PATH_MAX];
+        ptrs[i] = names[i];
+        if (!r->map_image[i][0] || !realpath(r->map_image[i], real)) {
+            import_copy(names[i], IMPORT_PATH_MAX, r->map_image[i]);
+        } else if (have_out && strncmp(real, oreal, olen) == 0 && real[olen] == '/') {
+            import_copy(names[i], IMPORT_PATH_MAX, real + olen + 1);
+        } else {
+            import_copy(names[i], IMPORT_PATH_MAX, real);
+        }
+    }
+}
+
+/* Writes s as text to tmp, reads it back and compiles it. */
+static int import_write(const struct sd_scene *s, const char *const *maps, const char *tmp,
+                        char *err, size_t errlen)
+{
+    FILE *f = fopen(tmp, "w");
+    if (!f) {
+        snprintf(err, errlen, "%.300s: %s", tmp, strerror(errno));
+        return -1;
+    }
+    int rc = sd_write_text(s, maps, f);
+    if (fclose(f) != 0 || rc != 0) {
+        snprintf(err, errlen, "writing %.300s: %s", tmp, strerror(errno));
+        return -1;
+    }
+    struct sd_scene back;
+    char why[SD_ERR_MAX];
+    if (sd_parse_file(tmp, &back, why, sizeof why) != 0) {
+        snprintf(err, errlen, "the written scene does not read back: %.400s", why);
+        return -1;
+    }
+    uint8_t *buf;
+    size_t len;
+    rc = sd_compile(&back, &buf, &len, why, sizeof why);
+    sd_free(&back);
+    if (rc != 0) {
+        snprintf(err, errlen, "the written scene does not compile: %.400s", why);
+        return -1;
+    }
+    free(buf);
+    return 0;
+}
+
+int scene_cmd_import(int argc, char **argv)
+{
+    struct import_args a = {NULL, NULL, 0, 0, 0};
+    int r0 = import_args(argc, argv, &a);
+    if (r0 != 0)
+        return r0 > 0 ? 0 : 2;
+    struct model m;
+    char err[SD_ERR_MAX];
+    if (model_load(a.model, &m, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 import: %s\n", err);
+        return 1;
+    }
+    struct sd_scene s;
+    memset(&s, 0, sizeof s);
+    sd_view_defaults(&s.view);
+    struct import_result *r = calloc(1, sizeof *r);
+    s.clusters = calloc(1, sizeof *s.clusters);
+    if (!r || !s.clusters) {
+        fprintf(stderr, "links1 import: out of memory\n");
+        model_free(&m);
+        free(r);
+        sd_free(&s);
+        return 1;
+    }
+    snprintf(s.clusters[0].name, sizeof s.clusters[0].name, "root");
+    s.clusters[0].parent = -1;
+    s.clusters[0].m[0] = s.clusters[0].m[5] = s.clusters[0].m[10] = 1;
+    s.n_clusters = 1;
+    char dir[IMPORT_PATH_MAX];
+    import_dir(a.model, dir, sizeof dir);
+    struct import_opts o = {a.fit, -1, 0, "--fit", a.smooth};
+    int rc = scene_import_model(&s, 0, &m, dir, &o, r, err, sizeof err);
+    if (rc == 0)
+        rc = scene_import_view(&s, &m, r, a.camera_auto, stderr, err, sizeof err);
+    model_free(&m);
+    char tmp[PATH_MAX];
+    snprintf(tmp, sizeof tmp, "%s.tmp%ld", a.out, (long)getpid());
+    if (rc == 0) {
+        static char names[SCN_MAX_MAPS][IMPORT_PATH_MAX];
+        const char *ptrs[SCN_MAX_MAPS];
+        import_map_names(r, s.n_maps, a.out, names, ptrs);
+        rc = import_write(&s, ptrs, tmp, err, sizeof err);
+        if (rc == 0 && rename(tmp, a.out) != 0) {
+            snprintf(err, sizeof err, "writing %.300s: %s", a.out, strerror(errno));
+            rc = -1;
+        }
+        if (rc != 0)
+            remove(tmp);
+    }
+    if (rc != 0) {
+        fprintf(stderr, "links1 import: %s: %s\n", a.model, err);
+    } else {
+        if (r->degenerate || r->other)
+            fprintf(stderr, "links1 import: %s: %d degenerate triangle%s dropped, %d points "
+                            "or lines left out\n",
+                    a.model, r->degenerate, r->degenerate == 1 ? "" : "s", r->other);
+        if (r->flat)
+            fprintf(stderr, "links1 import: %s: --smooth, but %d of its %d triangles have no "
+                            "vertex normals in the file: they are flat\n",
+                    a.model, r->flat, r->triangles);
+        printf("%s: %d triangles in %d clusters, %d materials, %d maps", a.out, r->triangles,
+               r->clusters, r->materials, r->maps);
+        if (r->scale != 1)
+            printf(", scaled by %g", r->scale);
+        printf("\n");
+    }
+    free(r);
+    sd_free(&s);
+    return rc ? 1 : 0;
+}

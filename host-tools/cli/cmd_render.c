@@ -1,0 +1,735 @@
+/* cmd_render.c: `links1 render`: the whole LINKS-1 image generation system
+ * driven from the host.  Compiles each scene in-process, boots a board of
+ * DM + RC + N NCs, uploads the scene, renders the frames (progress on the
+ * terminal), pulls each frame and writes it as PNG or PPM, prints a
+ * one-line summary per frame.  Several SCENE -o OUT pairs render one after
+ * another on the same board; a scene the board refuses is reported and the
+ * next one still renders (the exit status is then 1). */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "host-tools/launcher/launcher.h"
+#include "host-tools/insn/insn_report.h"
+#include "host-tools/cli/links1_cmds.h"
+#include "host-tools/gigs/render_faults.h"
+#include "host-tools/gigs/render_session.h"
+#include "host-tools/trace/trace_file.h"
+#include "host-tools/ref/arith_auto.h"
+#include "host-tools/image/image_io.h"
+#include "host-tools/opts/cli_args.h"
+#include "host-tools/scene/scene_desc.h"
+#include "host-tools/scene/scene_file.h"
+#include "proto/areas.h"
+
+#define RENDER_MAX_JOBS 16 /* SCENE -o OUT pairs in one run */
+
+struct render_job {
+    const char *scene, *out;
+    uint8_t *bytes; /* the compiled scene, read before the board boots */
+    size_t len;
+};
+
+/* Where a render command's wall time goes, ms, and QEMU's host CPU time
+ * while the board rendered (for the host cores' use). */
+struct render_wall {
+    long long boot, upload, frame, pull, write, shutdown, total;
+    long long board_prepare, board_render;
+    long long render_cpu; /* QEMU's user + system ms during the frames */
+};
+
+struct render_opts {
+    struct board_opts board;
+    struct render_job jobs[RENDER_MAX_JOBS];
+    int njobs;
+    struct link_render_args args;
+    long first, last;   /* frames; last < 0: only frame first */
+    int many;           /* --frames: one image per frame, numbered */
+    struct scene_file_opts scene; /* --size, --max-depth, --refractionless */
+    int ppm, count_insns;
+    const char *board_name; /* --board NAME: a running named board */
+    unsigned inject, inject_seed; /* --inject-faults K[:SEED] */
+    uint8_t inject_kind;          /* --inject-kind */
+    unsigned inject_every;        /* --inject-every F: K more every F frames */
+    uint8_t inject_taken[LINK_CORE_MAP_SIZE]; /* NCs already planned to fail */
+    long frames_done;             /* frames rendered in this run */
+    int unit_fault_core;          /* --inject-unit-fault: DM or RC core, -1: none */
+    long unit_fault_frame;
+    int resume;                   /* --resume: frames already written are kept */
+    const char *trace;  /* --trace FILE */
+    int arith_auto, fpu; /* --arith auto, --fpu vfp|none (-1: not given) */
+    double target_db;    /* --target-db D (-1: not given) */
+    struct render_wall wall; /* where the command's wall time went */
+    uint32_t traced_w, traced_h, traced_bytes; /* the traced frame's size, broadcast */
+};
+
+static void render_usage(FILE *out)
+{
+    fprintf(out,
+            "usage: links1 render SCENE(.scn|.l1s) -o OUT.png [SCENE2 -o OUT2 ...] [options]\n"
+            "Renders on the emulated LINKS-1 (DM, RC and N NCs); several scenes render one\n"
+            "after another on the same board.\n"
+            "options:\n"
+            "  --ncs N          node computers (1..254, default %d)\n"
+            "  --arith A        float, soft or fixed (default float); auto: the cheapest that\n"
+            "                   keeps --target-db D (default 40) dB against double on a\n"
+            "                   low-resolution pre-render, for a unit computer with VFP or,\n"
+            "                   with --fpu none, without (docs/renderer.md)\n"
+            "  --balance M      static, dynamic or decreasing (default decreasing)\n"
+            "  --areas K        areas of the dynamic grid, smallest-area bound of decreasing\n"
+            "                   (default %d)\n"
+            "  --frame N        render frame N (default 0)\n"
+            "  --frames A:B     render frames A..B, writing OUT-000A.png ... (the DM prepares\n"
+            "                   frame k+1 while frame k renders)\n"
+            "  --size WxH       render at this size instead of the scene's (text scenes)\n"
+            "  --max-depth D    --refractionless on|off\n"
+            "                   override the scene's recursion depth / transmission past it\n"
+            "  --refraction on|off  off: transmitted rays never bend, at any depth\n"
+            "  --min-weight W   adaptive depth: rays whose weight (product of src and trc)\n"
+            "                   falls below W are not traced (0..1; scenes default 1/512)\n"
+            "  --density-steps N  steps of a density sphere's root finder (2..256;\n"
+            "                   scenes default 24): a feature thinner than a step is missed\n"
+            "  --mark-lost      paint pixels that lost precision magenta (text scenes)\n"
+            "  --no-yclip --no-xclip --no-bbox --no-hierarchy\n"
+            "                   switch a speed-up off (the image stays the same)\n"
+            "  --no-auto-hierarchy  compile without the automatic hierarchy (text scenes)\n"
+            "  --view           show the frame memory live (-device ramfb, a display)\n"
+            "  --ppm            write PPM (also chosen by an OUT ending in .ppm)\n"
+            "  --count-insns    count guest instructions per core and print them\n"
+            "  --inject-faults K[:SEED]  test hook: K random NCs (fewer than --ncs) fail at\n"
+            "                   random points of the first frame; the frame still completes\n"
+            "  --inject-kind KIND  undef, abort, hang, silent or mixed (default mixed)\n"
+            "  --inject-every F K more NCs fail every F frames (of the NCs left)\n"
+            "  --inject-unit-fault dm|rc:FRAME  test hook: the DM or the RC faults while\n"
+            "                   frame FRAME renders (the run ends; see --resume)\n"
+            "  --resume         with --frames: keep the frames already written and render\n"
+            "                   the others, from the first not yet written\n"
+            "  --trace FILE     write the frame's per-area and per-pixel instruction costs\n"
+            "                   (one scene, one frame; the input of links1 replay)\n"
+            "  --timeout S      seconds to wait for every unit computer to report in\n"
+            "  --board NAME     render on the running board NAME (links1 board start); its\n"
+            "                   cores and arithmetic are the board's\n"
+            "  --link L         bulk bytes (scene up, frame down) through shared memory\n"
+            "                   (fast, default) or the serial link (serial)\n"
+            "  --firmware ELF   firmware to boot; --ram MB; --quiet\n",
+            RENDER_DEFAULT_NCS, AREAS_DEFAULT_K);
+}
+
+enum render_opt_code {
+    RENDER_OPT_NCS = CLI_OWN_CODES,
+    RENDER_OPT_BALANCE,
+    RENDER_OPT_AREAS,
+    RENDER_OPT_FRAME,
+    RENDER_OPT_FRAMES,
+    RENDER_OPT_SIZE,
+    RENDER_OPT_MAX_DEPTH,
+    RENDER_OPT_MIN_WEIGHT,
+    RENDER_OPT_DENSITY_STEPS,
+    RENDER_OPT_MARK_LOST,
+    RENDER_OPT_REFRACTIONLESS,
+    RENDER_OPT_REFRACTION,
+    RENDER_OPT_NO_YCLIP,
+    RENDER_OPT_NO_XCLIP,
+    RENDER_OPT_NO_BBOX,
+    RENDER_OPT_NO_HIERARCHY,
+    RENDER_OPT_NO_AUTO_HIERARCHY,
+    RENDER_OPT_VIEW,
+    RENDER_OPT_PPM,
+    RENDER_OPT_COUNT_INSNS,
+    RENDER_OPT_BOARD,
+    RENDER_OPT_INJECT_FAULTS,
+    RENDER_OPT_INJECT_KIND,
+    RENDER_OPT_INJECT_UNIT_FAULT,
+    RENDER_OPT_INJECT_EVERY,
+    RENDER_OPT_RESUME,
+    RENDER_OPT_TRACE,
+    RENDER_OPT_FPU,
+    RENDER_OPT_TARGET_DB,
+};
+
+static const struct option render_options[] = {
+    BOARD_LONG_OPTIONS,
+    {"ncs", required_argument, NULL, RENDER_OPT_NCS},
+    {"balance", required_argument, NULL, RENDER_OPT_BALANCE},
+    {"areas", required_argument, NULL, RENDER_OPT_AREAS},
+    {"frame", required_argument, NULL, RENDER_OPT_FRAME},
+    {"frames", required_argument, NULL, RENDER_OPT_FRAMES},
+    {"size", required_argument, NULL, RENDER_OPT_SIZE},
+    {"max-depth", required_argument, NULL, RENDER_OPT_MAX_DEPTH},
+    {"min-weight", required_argument, NULL, RENDER_OPT_MIN_WEIGHT},
+    {"density-steps", required_argument, NULL, RENDER_OPT_DENSITY_STEPS},
+    {"mark-lost", no_argument, NULL, RENDER_OPT_MARK_LOST},
+    {"refractionless", required_argument, NULL, RENDER_OPT_REFRACTIONLESS},
+    {"refraction", required_argument, NULL, RENDER_OPT_REFRACTION},
+    {"no-yclip", no_argument, NULL, RENDER_OPT_NO_YCLIP},
+    {"no-xclip", no_argument, NULL, RENDER_OPT_NO_XCLIP},
+    {"no-bbox", no_argument, NULL, RENDER_OPT_NO_BBOX},
+    {"no-hierarchy", no_argument, NULL, RENDER_OPT_NO_HIERARCHY},
+    {"no-auto-hierarchy", no_argument, NULL, RENDER_OPT_NO_AUTO_HIERARCHY},
+    {"view", no_argument, NULL, RENDER_OPT_VIEW},
+    {"ppm", no_argument, NULL, RENDER_OPT_PPM},
+    {"count-insns", no_argument, NULL, RENDER_OPT_COUNT_INSNS},
+    {"board", required_argument, NULL, RENDER_OPT_BOARD},
+    {"inject-faults", required_argument, NULL, RENDER_OPT_INJECT_FAULTS},
+    {"inject-kind", required_argument, NULL, RENDER_OPT_INJECT_KIND},
+    {"inject-unit-fault", required_argument, NULL, RENDER_OPT_INJECT_UNIT_FAULT},
+    {"inject-every", required_argument, NULL, RENDER_OPT_INJECT_EVERY},
+    {"resume", no_argument, NULL, RENDER_OPT_RESUME},
+    {"trace", required_argument, NULL, RENDER_OPT_TRACE},
+    {"fpu", required_argument, NULL, RENDER_OPT_FPU},
+    {"target-db", required_argument, NULL, RENDER_OPT_TARGET_DB},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0},
+};
+
+/* A scene named on the command line, or the -o OUT of the last one. */
+static int render_add_job(struct render_opts *o, int code, const char *arg)
+{
+    if (code == 'o') {
+        if (o->njobs == 0 || o->jobs[o->njobs - 1].out) {
+            fprintf(stderr, "links1 render: -o %s: name the scene before its output\n", arg);
+            return -1;
+        }
+        o->jobs[o->njobs - 1].out = arg;
+        return 0;
+    }
+    if (o->njobs == RENDER_MAX_JOBS) {
+        fprintf(stderr, "links1 render: %s: at most %d scenes in one run\n", arg,
+                RENDER_MAX_JOBS);
+        return -1;
+    }
+    o->jobs[o->njobs++] = (struct render_job){arg, NULL, NULL, 0};
+    return 0;
+}
+
+/* One option of render's own (not a board option, not a scene or -o). */
+static int render_take(struct render_opts *o, const struct cli *c, int code)
+{
+    long n;
+    enum areas_mode m;
+    switch (code) {
+    case BOARD_OPT_SMP:
+        fprintf(stderr, "links1 render: --smp: give the node computers with --ncs N instead "
+                "(the board has N + 2 cores)\n");
+        return -1;
+    case RENDER_OPT_NCS:
+        if (cli_long(c, 10, 1, UNITS_MAX_CORES - 2, &n) < 0)
+            return -1;
+        o->board.ncores = (int)n + 2;
+        return 0;
+    case RENDER_OPT_BALANCE:
+        if (areas_mode_parse(c->arg, &m) != AREAS_OK)
+            return cli_bad_value(c, "static, dynamic or decreasing");
+        o->args.balance = (uint8_t)m;
+        return 0;
+    case RENDER_OPT_AREAS:
+        if (cli_long(c, 10, 1, 1 << 20, &n) < 0)
+            return -1;
+        o->args.areas = (uint32_t)n;
+        return 0;
+    case RENDER_OPT_FRAME:
+    case RENDER_OPT_FRAMES:
+        o->many = code == RENDER_OPT_FRAMES;
+        if (cli_parse_frames(c->arg, &o->first, &o->last) != 0 ||
+            (!o->many && o->first != o->last))
+            return cli_bad_value(c, o->many ? "FIRST:LAST" : "a frame number");
+        return 0;
+    case RENDER_OPT_SIZE:
+        if (cli_parse_size(c->arg, &o->scene.width, &o->scene.height) != 0)
+            return cli_bad_value(c, cli_size_want());
+        return 0;
+    case RENDER_OPT_MAX_DEPTH:
+        return cli_int(c, 0, SCN_MAX_DEPTH, &o->scene.max_depth);
+    case RENDER_OPT_MIN_WEIGHT:
+        return cli_double(c, 0, 0, 1, NULL, &o->scene.min_weight);
+    case RENDER_OPT_DENSITY_STEPS:
+        return cli_int(c, SCN_MIN_DENSITY_STEPS, SCN_MAX_DENSITY_STEPS, &o->scene.density_steps);
+    case RENDER_OPT_MARK_LOST:
+        o->scene.mark_lost = 1;
+        return 0;
+    case RENDER_OPT_REFRACTIONLESS:
+        if (strcmp(c->arg, "on") != 0 && strcmp(c->arg, "off") != 0)
+            return cli_bad_value(c, "on or off");
+        o->scene.refractionless = strcmp(c->arg, "on") == 0;
+        return 0;
+    case RENDER_OPT_REFRACTION:
+        if (strcmp(c->arg, "on") != 0 && strcmp(c->arg, "off") != 0)
+            return cli_bad_value(c, "on or off");
+        o->scene.refraction = strcmp(c->arg, "on") == 0;
+        return 0;
+    case RENDER_OPT_NO_YCLIP:
+        o->args.flags |= LINK_RENDER_NO_YCLIP;
+        return 0;
+    case RENDER_OPT_NO_XCLIP:
+        o->args.flags |= LINK_RENDER_NO_XCLIP;
+        return 0;
+    case RENDER_OPT_NO_BBOX:
+        o->args.flags |= LINK_RENDER_NO_BBOX;
+        return 0;
+    case RENDER_OPT_NO_HIERARCHY:
+        o->args.flags |= LINK_RENDER_NO_HIERARCHY;
+        return 0;
+    case RENDER_OPT_NO_AUTO_HIERARCHY:
+        o->scene.no_auto_hierarchy = 1;
+        return 0;
+    case RENDER_OPT_VIEW:
+        o->board.view = 1;
+        return 0;
+    case RENDER_OPT_PPM:
+        o->ppm = 1;
+        return 0;
+    case RENDER_OPT_COUNT_INSNS:
+        o->count_insns = 1;
+        return 0;
+    case RENDER_OPT_BOARD:
+        o->board_name = c->arg;
+        return 0;
+    case RENDER_OPT_INJECT_FAULTS:
+        if (render_faults_parse(c->arg, &o->inject, &o->inject_seed) != 0)
+            return cli_bad_value(c, "K[:SEED], K at most LINK_INJECT_MAX (128)");
+        return 0;
+    case RENDER_OPT_INJECT_KIND:
+        if (render_faults_kind_parse(c->arg, &o->inject_kind) != 0)
+            return cli_bad_value(c, "undef, abort, hang, silent or mixed");
+        return 0;
+    case RENDER_OPT_INJECT_UNIT_FAULT: {
+        char *end = NULL;
+        int dm = strncmp(c->arg, "dm:", 3) == 0, rc = strncmp(c->arg, "rc:", 3) == 0;
+        long f = (dm || rc) ? strtol(c->arg + 3, &end, 10) : -1;
+        if ((!dm && !rc) || end == c->arg + 3 || *end || f < 0)
+            return cli_bad_value(c, "dm:FRAME or rc:FRAME");
+        o->unit_fault_core = dm ? UNITS_DM_CORE : UNITS_RC_CORE;
+        o->unit_fault_frame = f;
+        return 0;
+    }
+    case RENDER_OPT_RESUME:
+        o->resume = 1;
+        return 0;
+    case RENDER_OPT_INJECT_EVERY:
+        if (cli_long(c, 10, 1, 1 << 20, &n) < 0)
+            return -1;
+        o->inject_every = (unsigned)n;
+        return 0;
+    case RENDER_OPT_TRACE:
+        o->trace = c->arg;
+        o->args.flags |= LINK_RENDER_TRACE;
+        return 0;
+    case RENDER_OPT_FPU:
+        if ((o->fpu = arith_auto_fpu(c->arg)) < 0)
+            return cli_bad_value(c, "vfp or none");
+        return 0;
+    case RENDER_OPT_TARGET_DB:
+        return cli_double(c, 0, 1, 99, NULL, &o->target_db);
+    }
+    return -1; /* CLI_BAD: reported already */
+}
+
+/* --arith auto chooses the firmware for one scene of a board of its own. */
+static int render_auto_check(const struct render_opts *o)
+{
+    if (!o->arith_auto) {
+        if (o->fpu >= 0 || o->target_db >= 0) {
+            fprintf(stderr, "links1 render: --fpu and --target-db go with --arith auto\n");
+            return -1;
+        }
+        return 0;
+    }
+    const char *why = o->njobs > 1 ? "one SCENE (it chooses per scene)"
+                      : o->board_name ? "a board of its own, not --board"
+                      : o->board.firmware ? "no --firmware (it chooses the firmware)"
+                      : NULL;
+    if (why)
+        fprintf(stderr, "links1 render: --arith auto takes %s\n", why);
+    return why ? -1 : 0;
+}
+
+/* --arith auto: the pre-render and the pick, into o->board.arith. */
+static int render_auto_pick(struct render_opts *o)
+{
+    static struct arith_auto_choice pick;
+    struct arith_auto_words w;
+    arith_auto_scene_words(&o->scene, o->first, &w);
+    struct arith_auto_opts ao = {
+        .fpu = o->fpu < 0 ? 1 : o->fpu,
+        .target_db = o->target_db < 0 ? ARITH_AUTO_TARGET_DB : o->target_db,
+        .target = ARITH_AUTO_BOARD,
+        .width = o->scene.width,
+        .height = o->scene.height,
+        .words = w.words,
+    };
+    if (arith_auto_pick("links1 render", o->jobs[0].scene, &ao, &pick) != 0)
+        return -1;
+    o->board.arith = pick.arith;
+    return 0;
+}
+
+/* Returns 0, 1 (--help shown) or -1 (bad option, printed). */
+static int render_parse(struct render_opts *o, int argc, char **argv)
+{
+    memset(o, 0, sizeof *o);
+    board_opts_init(&o->board);
+    o->board.ncores = RENDER_DEFAULT_NCS + 2;
+    o->args.balance = LINK_BALANCE_DECREASING;
+    o->last = -1;
+    o->unit_fault_core = -1;
+    o->fpu = -1;
+    o->target_db = -1;
+    scene_file_opts_init(&o->scene);
+    struct cli c;
+    cli_init(&c, "links1 render", argc, argv, "o:h", render_options);
+    for (int code; (code = cli_next(&c)) != -1;) {
+        o->arith_auto |= code == BOARD_OPT_ARITH && strcmp(c.arg, "auto") == 0;
+        int auto_arith = code == BOARD_OPT_ARITH && o->arith_auto;
+        int r = code == BOARD_OPT_SMP || auto_arith ? 0 : board_opt(&o->board, &c, code);
+        if (auto_arith)
+            continue;
+        if (r == 0 && code == 'h') {
+            render_usage(stdout);
+            return 1;
+        }
+        if (r == 0)
+            r = code == 'o' || code == CLI_OPERAND ? render_add_job(o, code, c.arg)
+                                                   : render_take(o, &c, code);
+        if (r < 0) {
+            if (code == CLI_BAD)
+                render_usage(stderr);
+            return -1;
+        }
+    }
+    if (o->njobs == 0) {
+        render_usage(stderr);
+        return -1;
+    }
+    if (o->board_name && (o->count_insns || o->board.view || o->board.link_noise_on)) {
+        fprintf(stderr, "links1 render: --count-insns, --view and --link-noise need a board of this "
+                "command's own, not --board %s\n", o->board_name);
+        return -1;
+    }
+    for (int j = 0; j < o->njobs; j++) {
+        if (!o->jobs[j].out) {
+            fprintf(stderr, "links1 render: %s has no -o OUT\n", o->jobs[j].scene);
+            return -1;
+        }
+    }
+    if (render_auto_check(o) != 0)
+        return -1;
+    if (o->resume && !o->many) {
+        fprintf(stderr, "links1 render: --resume goes with --frames A:B\n");
+        return -1;
+    }
+    unsigned ncs = (unsigned)o->board.ncores - UNITS_FIRST_NC;
+    if (o->inject >= ncs && o->inject) {
+        fprintf(stderr, "links1 render: --inject-faults %u: at most %u of the %u NCs may fail "
+                "(one must be left)\n", o->inject, ncs - 1, ncs);
+        return -1;
+    }
+    if (o->trace && (o->njobs > 1 || o->many)) {
+        fprintf(stderr, "links1 render: --trace records one frame of one scene: give one SCENE "
+                "and no --frames\n");
+        return -1;
+    }
+    return 0;
+}
+
+/* Every scene's compiled bytes, before the board boots.  0, or -1 after
+ * printing why a scene cannot be read or compiled. */
+static void render_free_scenes(struct render_opts *o)
+{
+    for (int j = 0; j < o->njobs; j++)
+        free(o->jobs[j].bytes);
+}
+
+static int render_read_scenes(struct render_opts *o)
+{
+    for (int j = 0; j < o->njobs; j++) {
+        char err[SD_ERR_MAX];
+        struct render_job *job = &o->jobs[j];
+        if (scene_file_bytes(job->scene, &o->scene, &job->bytes, &job->len, err,
+                             sizeof err) != 0) {
+            fprintf(stderr, "links1 render: %s\n", err);
+            return -1;
+        }
+    }
+    return 0;
+}
+
+static void render_summary(const char *path, const struct link_render_stats *s,
+                           const struct image *img, uint8_t balance, double seconds,
+                           long long upload_ms, long long pull_ms)
+{
+    printf("links1 render: frame %u %dx%d -> %s: %u NCs, %u areas (%s), %.1f s "
+           "(board: prepare %u ms, render %u ms; upload %lld ms, pull %lld ms); rays %llu primary, %llu shadow, "
+           "%llu reflection, %llu refraction, %llu transmission; tests %llu box, %llu primitive "
+           "(%llu by primary rays); %u pixels lost precision; memory high-water DM %u, RC %u, NC %u of %u bytes\n",
+           s->frame, img->width, img->height, path, s->ncs, s->areas,
+           areas_mode_name((enum areas_mode)balance), seconds, s->prepare_ms, s->render_ms,
+           upload_ms, pull_ms,
+           (unsigned long long)s->primary, (unsigned long long)s->shadow,
+           (unsigned long long)s->reflection, (unsigned long long)s->refraction,
+           (unsigned long long)s->transmission, (unsigned long long)s->box_tests,
+           (unsigned long long)s->prim_tests, (unsigned long long)s->primary_prim_tests,
+           s->precision_lost_pixels, s->dm_high,
+           s->rc_high, s->nc_high_max, s->nc_private);
+    fflush(stdout);
+}
+
+/* The fault plan of frame f into plan (the test hooks): the NCs' on the
+ * first frame rendered (and every --inject-every frames), the DM's or RC's
+ * on its frame.  Returns its bytes
+ * (0: none). */
+static uint32_t render_frame_plan(struct render_opts *o, long f,
+                                  uint8_t plan[LINK_INJECT_SIZE(LINK_INJECT_MAX + 1)])
+{
+    uint32_t n = 0;
+    long k = o->frames_done++;
+    if (o->inject && (o->inject_every ? k % o->inject_every == 0 : k == 0)) {
+        unsigned ncs = (unsigned)o->board.ncores - UNITS_FIRST_NC;
+        render_faults_plan(o->inject, o->inject_seed + (unsigned)k, o->inject_kind, ncs,
+                           o->inject_taken, plan);
+        render_faults_print_plan(stdout, plan);
+        n = plan[0];
+    }
+    if (o->unit_fault_core >= 0 && f == o->unit_fault_frame) {
+        struct link_inject e = {(uint16_t)o->unit_fault_core, LINK_INJECT_UNDEF, 0, 1};
+        link_inject_put(plan + LINK_INJECT_SIZE(n), &e);
+        n++;
+        printf("links1 render: fault plan: the %s faults during frame %ld\n",
+               unit_role_name(unit_role_of_core((uint32_t)o->unit_fault_core)), f);
+    }
+    plan[0] = (uint8_t)n;
+    plan[1] = 0;
+    return n ? LINK_INJECT_SIZE(n) : 0;
+}
+
+/* QEMU's user + system CPU time so far, ms (/proc/PID/stat), or -1. */
+static long long render_qemu_cpu_ms(pid_t pid)
+{
+    char path[64], buf[1024];
+    snprintf(path, sizeof path, "/proc/%d/stat", (int)pid);
+    FILE *f = fopen(path, "r");
+    if (!f)
+        return -1;
+    size_t n = fread(buf, 1, sizeof buf - 1, f);
+    fclose(f);
+    buf[n] = 0;
+    const char *p = strrchr(buf, ')'); /* the command name may hold spaces */
+    unsigned long long ut = 0, st = 0;
+    if (!p || sscanf(p + 2, "%*c %*d %*d %*d %*d %*d %*u %*u %*u %*u %*u %llu %llu", &ut,
+                     &st) != 2)
+        return -1;
+    long hz = sysconf(_SC_CLK_TCK);
+    return hz > 0 ? (long long)((ut + st) * 1000ull / (unsigned long long)hz) : -1;
+}
+
+/* One scene on the running board: upload, every frame asked for. */
+static int render_job(struct board *b, struct render_opts *o, const struct render_job *j)
+{
+    struct link_scene_info info;
+    long long upload_ms = 0, pull_ms = 0;
+    int rc = render_session_load(b, j->bytes, j->len, &info, &upload_ms);
+    o->wall.upload += upload_ms;
+    if (rc != 0) {
+        fprintf(stderr, "links1 render: %s was not loaded\n", j->scene);
+        return -1;
+    }
+    printf("links1 render: %s loaded: %ux%u, %u frame(s), %u bytes compiled, a prepared frame "
+           "needs at most %u of the DM's %u-byte IMSU block\n",
+           j->scene, info.width, info.height, info.frames, info.compiled_bytes, info.blob_bytes,
+           info.blob_limit);
+    long first = o->first, last = o->last < 0 ? o->first : o->last;
+    if ((uint32_t)last >= info.frames) {
+        fprintf(stderr, "links1 render: %s: frame %ld, the scene has %u frames (0..%u)\n",
+                j->scene, last, info.frames, info.frames - 1);
+        return -1;
+    }
+    int ppm = o->ppm || scene_file_ends_with(j->out, ".ppm");
+    for (long f = first; f <= last; f++) {
+        char path[4096], tmp[4096 + 16], err[SD_ERR_MAX];
+        if (o->many)
+            scene_file_frame_path(j->out, f, path, sizeof path);
+        else
+            snprintf(path, sizeof path, "%s", j->out);
+        if (o->resume && access(path, F_OK) == 0) {
+            printf("links1 render: frame %ld: %s is there already (--resume): kept\n", f, path);
+            continue;
+        }
+        struct link_render_args a = o->args;
+        a.frame = (uint32_t)f;
+        if (f < last)
+            a.flags |= LINK_RENDER_PREPARE_NEXT;
+        long long t0 = board_now_ms();
+        long long cpu0 = render_qemu_cpu_ms(b->qemu_pid);
+        struct link_render_stats s;
+        struct link_render_fails fails;
+        struct image img = {0, 0, NULL};
+        uint8_t plan[LINK_INJECT_SIZE(LINK_INJECT_MAX + 1)];
+        uint32_t plan_len = render_frame_plan(o, f, plan);
+        if (render_session_frame(b, &a, isatty(2), plan, plan_len, &s, &fails) != 0)
+            return -1;
+        long long t1 = board_now_ms(), cpu1 = render_qemu_cpu_ms(b->qemu_pid);
+        o->wall.frame += t1 - t0;
+        o->wall.board_prepare += s.prepare_ms;
+        o->wall.board_render += s.render_ms;
+        if (cpu0 >= 0 && cpu1 >= 0)
+            o->wall.render_cpu += cpu1 - cpu0;
+        if (render_session_pull(b, &img, &pull_ms) != 0)
+            return -1;
+        long long t2 = board_now_ms();
+        o->wall.pull += t2 - t1;
+        render_faults_print(stdout, a.frame, &fails);
+        /* Written whole or not at all: a run that dies leaves no half
+         * frame for --resume to keep. */
+        snprintf(tmp, sizeof tmp, "%s.part", path);
+        rc = ppm ? image_write_ppm(tmp, &img, err, sizeof err)
+                 : image_write_png(tmp, &img, err, sizeof err);
+        if (rc == 0 && rename(tmp, path) != 0) {
+            snprintf(err, sizeof err, "cannot rename the written frame to %.400s", path);
+            rc = -1;
+        }
+        if (rc != 0) {
+            fprintf(stderr, "links1 render: %s\n", err);
+            image_free(&img);
+            return -1;
+        }
+        o->wall.write += board_now_ms() - t2;
+        /* The scene's upload time is told with its first frame. */
+        render_summary(path, &s, &img, a.balance, (double)(board_now_ms() - t0) / 1000.0,
+                       f == first ? upload_ms : 0, pull_ms);
+        o->traced_w = (uint32_t)img.width;
+        o->traced_h = (uint32_t)img.height;
+        o->traced_bytes = s.blob_bytes;
+        image_free(&img);
+    }
+    return 0;
+}
+
+/* One line accounting for the command's wall time (bench_wallclock.sh). */
+static void render_print_wall(const struct render_wall *w)
+{
+    long long other = w->total - w->boot - w->upload - w->frame - w->pull - w->write - w->shutdown;
+    printf("links1 render: wall %lld ms: boot %lld, upload %lld, frames %lld (board: prepare "
+           "%lld, render %lld), pull %lld, write %lld, shutdown %lld, other %lld; QEMU CPU "
+           "while rendering %lld ms (%.2f host cores)\n",
+           w->total, w->boot, w->upload, w->frame, w->board_prepare, w->board_render, w->pull,
+           w->write, w->shutdown, other, w->render_cpu,
+           w->frame > 0 ? (double)w->render_cpu / (double)w->frame : 0.0);
+}
+
+/* The trace of the one frame rendered, from the plugin's marks. */
+static int render_write_trace(const struct render_opts *o, const char *marks_path)
+{
+    struct trace t;
+    char err[TRACE_ERR_MAX];
+    uint32_t ncs = (uint32_t)o->board.ncores - 2;
+    if (trace_decode_marks(marks_path, o->traced_w, o->traced_h, ncs, &t, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 render: --trace %s: %s\n", o->trace, err);
+        return -1;
+    }
+    t.balance = o->args.balance;
+    t.k = o->args.areas;
+    t.flags = o->args.flags & ~(uint32_t)LINK_RENDER_TRACE;
+    t.broadcast_bytes = o->traced_bytes;
+    int rc = trace_write(o->trace, &t, err, sizeof err);
+    if (rc != 0)
+        fprintf(stderr, "links1 render: --trace: %s\n", err);
+    else
+        printf("links1 render: trace of %u areas written to %s\n", (unsigned)t.nareas, o->trace);
+    trace_free(&t);
+    return rc;
+}
+
+int cmd_render(int argc, char **argv)
+{
+    struct render_opts o;
+    int r = render_parse(&o, argc, argv);
+    if (r != 0)
+        return r > 0 ? 0 : 2;
+    if (render_read_scenes(&o) != 0 || (o.arith_auto && render_auto_pick(&o) != 0)) {
+        render_free_scenes(&o);
+        return 1;
+    }
+    char marks_path[] = "/tmp/links1-marks-XXXXXX";
+    if (o.trace) {
+        int fd = mkstemp(marks_path);
+        if (fd < 0) {
+            perror("links1: temporary file for the trace marks");
+            render_free_scenes(&o);
+            return 1;
+        }
+        close(fd);
+        o.board.insn_trace_out = marks_path;
+    }
+    char insn_path[] = "/tmp/links1-insns-XXXXXX";
+    if (o.count_insns) {
+        int fd = mkstemp(insn_path);
+        if (fd < 0) {
+            perror("links1: temporary file for instruction counts");
+            render_free_scenes(&o);
+            return 1;
+        }
+        close(fd);
+        o.board.insn_count_out = insn_path;
+    }
+    struct board b;
+    int rc = 1;
+    long long t_start = board_now_ms();
+    int up = o.board_name ? board_connect(&b, &o.board, o.board_name)
+                          : board_start(&b, &o.board) == 0 ?
+                                board_wait_reported(&b, o.board.timeout_s * 1000) : -1;
+    if (up == 0) {
+        o.wall.boot = board_now_ms() - t_start;
+        rc = 0;
+        for (int j = 0; j < o.njobs; j++) {
+            if (render_job(&b, &o, &o.jobs[j]) == 0)
+                continue;
+            rc = 1;
+            if (render_faults_unit_down(b.faults, b.nfaults < BOARD_MAX_FAULTS
+                                                      ? b.nfaults : BOARD_MAX_FAULTS) >= 0)
+                break; /* no scene renders on a board without its DM or RC */
+        }
+    }
+    long long t_stop = board_now_ms();
+    if (board_stop(&b) < 0)
+        rc = 1;
+    o.wall.shutdown = board_now_ms() - t_stop;
+    o.wall.total = board_now_ms() - t_start;
+    if (rc == 0)
+        render_print_wall(&o.wall);
+    /* Damage the retransmission repaired fails the run only on a link
+     * without --link-noise, where there should be none. */
+    if (board_report_link_errors(&b) && (!o.board.link_noise_on || board_arq_failed(&b)))
+        rc = 1;
+    /* An NC that faulted is left out and its areas drawn by others (the
+     * frames above say so); a DM or RC fault ends the run. */
+    int unit_faults = 0;
+    for (int i = 0; i < b.nfaults && i < BOARD_MAX_FAULTS; i++)
+        unit_faults += b.faults[i].role != ROLE_NC;
+    if (b.nfaults > BOARD_MAX_FAULTS || unit_faults) {
+        int down = render_faults_unit_down(b.faults, b.nfaults < BOARD_MAX_FAULTS
+                                                         ? b.nfaults : BOARD_MAX_FAULTS);
+        fprintf(stderr, "links1 render: %d unit computer(s) faulted, %d of them DM or RC", b.nfaults,
+                unit_faults);
+        if (down >= 0)
+            fprintf(stderr, ": the %s (core %u) failed, the board could not go on; the frames "
+                    "written are whole, and --resume renders the rest on a new board",
+                    unit_role_name(b.faults[down].role), b.faults[down].core);
+        fprintf(stderr, "\n");
+        rc = 1;
+    } else if (b.nfaults) {
+        printf("links1 render: %d NC(s) faulted; the frames were finished without them\n",
+               b.nfaults);
+    }
+    if (o.count_insns) {
+        if (insn_report_print(insn_path, o.board.ncores) < 0)
+            rc = 1;
+        unlink(insn_path);
+    }
+    if (o.trace) {
+        if (rc == 0 && render_write_trace(&o, marks_path) != 0)
+            rc = 1;
+        unlink(marks_path);
+    }
+    render_free_scenes(&o);
+    return rc;
+}

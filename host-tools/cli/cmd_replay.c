@@ -1,0 +1,276 @@
+/* cmd_replay.c: `links1 replay FILE --ncs LIST ...`: a traced frame
+ * (links1 render --trace) replayed on equal-speed unit computers
+ * (host-tools/trace/replay.h), one line per NC count. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "host-tools/opts/cli_opt.h"
+#include "host-tools/cli/links1_cmds.h"
+#include "host-tools/trace/replay.h"
+#include "host-tools/trace/trace_file.h"
+
+#define REPLAY_MAX_COUNTS 64
+
+struct replay_opts {
+    const char *file;
+    uint32_t ncs[REPLAY_MAX_COUNTS];
+    int ncounts;
+    struct replay_cfg cfg;
+    int have_balance, have_k, per_nc, check;
+    uint32_t scale;
+};
+
+static void replay_usage(FILE *out)
+{
+    fprintf(out,
+            "usage: links1 replay TRACE --ncs LIST [options]\n"
+            "Replays a frame traced on the board (links1 render --trace) on equal-speed unit\n"
+            "computers: one line per NC count with the frame time, the speed-up over one NC,\n"
+            "and how busy the NCs were.\n"
+            "options:\n"
+            "  --ncs LIST       NC counts, e.g. 1,2,4,8,16,32,64,128,254\n"
+            "  --balance M      static, dynamic or decreasing (default: the trace's)\n"
+            "  --areas K        areas of the dynamic grid / smallest-area bound of decreasing\n"
+            "                   (default: the trace's)\n"
+            "  --mips R         instructions per microsecond of every unit (default %.1f)\n"
+            "  --line-us U      latency of one serial-line message (default %.0f)\n"
+            "  --byte-us B      microseconds per byte on a line (default %.1f: 19,200 baud)\n"
+            "  --prefetch       an NC asks for its next area one round trip before it\n"
+            "                   expects to finish the current one\n"
+            "  --guided F       decreasing: each area takes 1/(F * NCs) of what is left\n"
+            "                   (default %u)\n"
+            "  --pipelined      the DM prepared the frame during the previous one: the\n"
+            "                   frame starts at the RC's broadcast\n"
+            "  --first-in-broadcast  the RC puts each NC's first area into the broadcast\n"
+            "  --as-recorded    each NC gets the areas the board gave it, in its order\n"
+            "  --per-nc         also print each NC's instructions\n"
+            "  --check          check that the replay is a legal handout of the schedule\n"
+            "  --scale F        price the frame at F times the traced width and height,\n"
+            "                   each pixel at its traced pixel's instructions (a frame\n"
+            "                   traced at a reduced size)\n",
+            REPLAY_DEFAULT_MIPS, REPLAY_DEFAULT_LINE_US, REPLAY_DEFAULT_BYTE_US,
+            AREAS_GUIDED_FACTOR);
+}
+
+enum replay_opt_code {
+    REPLAY_OPT_NCS = CLI_OWN_CODES,
+    REPLAY_OPT_BALANCE,
+    REPLAY_OPT_AREAS,
+    REPLAY_OPT_MIPS,
+    REPLAY_OPT_LINE_US,
+    REPLAY_OPT_BYTE_US,
+    REPLAY_OPT_PREFETCH,
+    REPLAY_OPT_GUIDED,
+    REPLAY_OPT_PIPELINED,
+    REPLAY_OPT_FIRST_IN_BROADCAST,
+    REPLAY_OPT_AS_RECORDED,
+    REPLAY_OPT_PER_NC,
+    REPLAY_OPT_CHECK,
+    REPLAY_OPT_SCALE,
+};
+
+static const struct option replay_options[] = {
+    {"ncs", required_argument, NULL, REPLAY_OPT_NCS},
+    {"balance", required_argument, NULL, REPLAY_OPT_BALANCE},
+    {"areas", required_argument, NULL, REPLAY_OPT_AREAS},
+    {"mips", required_argument, NULL, REPLAY_OPT_MIPS},
+    {"line-us", required_argument, NULL, REPLAY_OPT_LINE_US},
+    {"byte-us", required_argument, NULL, REPLAY_OPT_BYTE_US},
+    {"prefetch", no_argument, NULL, REPLAY_OPT_PREFETCH},
+    {"guided", required_argument, NULL, REPLAY_OPT_GUIDED},
+    {"pipelined", no_argument, NULL, REPLAY_OPT_PIPELINED},
+    {"first-in-broadcast", no_argument, NULL, REPLAY_OPT_FIRST_IN_BROADCAST},
+    {"as-recorded", no_argument, NULL, REPLAY_OPT_AS_RECORDED},
+    {"per-nc", no_argument, NULL, REPLAY_OPT_PER_NC},
+    {"check", no_argument, NULL, REPLAY_OPT_CHECK},
+    {"scale", required_argument, NULL, REPLAY_OPT_SCALE},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0},
+};
+
+/* "1,2,4": 0, or -1 if not a list of 1..4096. */
+static int replay_parse_list(const char *s, struct replay_opts *o)
+{
+    o->ncounts = 0;
+    while (*s) {
+        char *end;
+        long v = strtol(s, &end, 10);
+        if (end == s || v < 1 || v > 4096 || (*end != ',' && *end != 0) ||
+            o->ncounts == REPLAY_MAX_COUNTS)
+            return -1;
+        o->ncs[o->ncounts++] = (uint32_t)v;
+        s = *end ? end + 1 : end;
+    }
+    return o->ncounts ? 0 : -1;
+}
+
+static int replay_take(struct replay_opts *o, const struct cli *c, int code)
+{
+    long n;
+    enum areas_mode m;
+    switch (code) {
+    case CLI_OPERAND:
+        if (o->file) {
+            fprintf(stderr, "links1 replay: %s: one trace at a time\n", c->arg);
+            return -1;
+        }
+        o->file = c->arg;
+        return 0;
+    case REPLAY_OPT_NCS:
+        return replay_parse_list(c->arg, o) == 0
+                   ? 0 : cli_bad_value(c, "NC counts 1..4096 separated by commas (at most 64)");
+    case REPLAY_OPT_BALANCE:
+        if (areas_mode_parse(c->arg, &m) != AREAS_OK)
+            return cli_bad_value(c, "static, dynamic or decreasing");
+        o->cfg.balance = m;
+        o->have_balance = 1;
+        return 0;
+    case REPLAY_OPT_AREAS:
+        if (cli_long(c, 10, 1, 1 << 22, &n) < 0)
+            return -1;
+        o->cfg.k = (uint32_t)n;
+        o->have_k = 1;
+        return 0;
+    case REPLAY_OPT_MIPS:
+        return cli_double(c, 0, 1, 1e6, "instructions per microsecond above 0", &o->cfg.mips);
+    case REPLAY_OPT_LINE_US:
+        return cli_double(c, 0, 0, 1e9, "microseconds, 0 or more", &o->cfg.line_us);
+    case REPLAY_OPT_BYTE_US:
+        return cli_double(c, 0, 0, 1e9, "microseconds, 0 or more", &o->cfg.byte_us);
+    case REPLAY_OPT_PREFETCH:
+        o->cfg.prefetch = 1;
+        return 0;
+    case REPLAY_OPT_GUIDED:
+        if (cli_long(c, 10, 1, AREAS_MAX_GUIDED_FACTOR, &n) < 0)
+            return -1;
+        o->cfg.guided = (uint32_t)n;
+        return 0;
+    case REPLAY_OPT_PIPELINED:
+        o->cfg.pipelined = 1;
+        return 0;
+    case REPLAY_OPT_FIRST_IN_BROADCAST:
+        o->cfg.first_in_broadcast = 1;
+        return 0;
+    case REPLAY_OPT_AS_RECORDED:
+        o->cfg.as_recorded = 1;
+        return 0;
+    case REPLAY_OPT_PER_NC:
+        o->per_nc = 1;
+        return 0;
+    case REPLAY_OPT_CHECK:
+        o->check = 1;
+        return 0;
+    case REPLAY_OPT_SCALE:
+        if (cli_long(c, 10, 1, 64, &n) < 0)
+            return -1;
+        o->scale = (uint32_t)n;
+        return 0;
+    }
+    return -1;
+}
+
+/* Returns 0, 1 (--help shown) or -1. */
+static int replay_parse(struct replay_opts *o, int argc, char **argv)
+{
+    memset(o, 0, sizeof *o);
+    o->scale = 1;
+    o->cfg.mips = REPLAY_DEFAULT_MIPS;
+    o->cfg.line_us = REPLAY_DEFAULT_LINE_US;
+    o->cfg.byte_us = REPLAY_DEFAULT_BYTE_US;
+    struct cli c;
+    cli_init(&c, "links1 replay", argc, argv, "h", replay_options);
+    for (int code; (code = cli_next(&c)) != -1;) {
+        if (code == 'h') {
+            replay_usage(stdout);
+            return 1;
+        }
+        if (code == CLI_BAD || replay_take(o, &c, code) != 0) {
+            if (code == CLI_BAD)
+                replay_usage(stderr);
+            return -1;
+        }
+    }
+    if (!o->file || o->ncounts == 0) {
+        fprintf(stderr, "links1 replay: name a TRACE and --ncs LIST\n");
+        replay_usage(stderr);
+        return -1;
+    }
+    return 0;
+}
+
+int cmd_replay(int argc, char **argv)
+{
+    struct replay_opts o;
+    int r = replay_parse(&o, argc, argv);
+    if (r != 0)
+        return r > 0 ? 0 : 2;
+    struct trace t;
+    char err[TRACE_ERR_MAX];
+    if (trace_read(o.file, &t, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 replay: %s\n", err);
+        return 1;
+    }
+    if (trace_scale(&t, o.scale, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 replay: %s: %s\n", o.file, err);
+        trace_free(&t);
+        return 1;
+    }
+    if (!o.have_balance)
+        o.cfg.balance = (enum areas_mode)t.balance;
+    if (!o.have_k)
+        o.cfg.k = t.k;
+    if (o.scale > 1)
+        printf("scaled %ux: each pixel of the %ux%u frame priced at its traced pixel's\n",
+               (unsigned)o.scale, (unsigned)t.width, (unsigned)t.height);
+    printf("trace %s: %ux%u, %u areas on %u NCs (%s); DM %llu, RC broadcast %llu insns; "
+           "%u bytes broadcast\n", o.file, (unsigned)t.width, (unsigned)t.height,
+           (unsigned)t.nareas, (unsigned)t.ncs, areas_mode_name((enum areas_mode)t.balance),
+           (unsigned long long)t.dm_prepare, (unsigned long long)t.rc_broadcast,
+           (unsigned)t.broadcast_bytes);
+    int rc = 0;
+    struct replay_cfg one = o.cfg;
+    one.ncs = 1;
+    one.as_recorded = 0;
+    struct replay_result base;
+    if (replay_run(&t, &one, &base, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 replay: %s\n", err);
+        trace_free(&t);
+        return 1;
+    }
+    for (int i = 0; i < o.ncounts && rc == 0; i++) {
+        struct replay_cfg c = o.cfg;
+        c.ncs = o.ncs[i];
+        struct replay_result res;
+        if (replay_run(&t, &c, &res, err, sizeof err) != 0) {
+            fprintf(stderr, "links1 replay: --ncs %u: %s\n", (unsigned)c.ncs, err);
+            rc = 1;
+            break;
+        }
+        uint64_t most = 0;
+        for (uint32_t n = 0; n < c.ncs; n++)
+            most = res.nc_insns[n] > most ? res.nc_insns[n] : most;
+        printf("ncs %u balance %s areas %u frame_ms %.1f speed-up %.2f busy %.1f%% rc_busy "
+               "%.1f%% exact %u/%u largest_nc_insns %llu\n", (unsigned)c.ncs,
+               c.as_recorded ? "as-recorded" : areas_mode_name(c.balance), (unsigned)res.nareas,
+               res.frame_us / 1000.0, base.frame_us / res.frame_us, 100.0 * res.busy,
+               100.0 * res.rc_busy, (unsigned)res.exact, (unsigned)res.nareas,
+               (unsigned long long)most);
+        if (o.per_nc)
+            for (uint32_t n = 0; n < c.ncs; n++)
+                printf("  nc %u insns %llu\n", (unsigned)n, (unsigned long long)res.nc_insns[n]);
+        if (o.check) {
+            if (replay_check_legal(&t, &c, &res, err, sizeof err) != 0) {
+                fprintf(stderr, "links1 replay: --ncs %u: not a legal handout: %s\n",
+                        (unsigned)c.ncs, err);
+                rc = 1;
+            } else {
+                printf("  legal handout of %u areas\n", (unsigned)res.nareas);
+            }
+        }
+        replay_free(&res);
+    }
+    replay_free(&base);
+    trace_free(&t);
+    return rc;
+}

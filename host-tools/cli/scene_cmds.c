@@ -1,0 +1,298 @@
+/* scene_cmds.c: `links1 compile`, `links1 ref` and `links1 export-pov`
+ * (`links1 compare` is in image_compare.c). */
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "host-tools/opts/cli_opt.h"
+#include "host-tools/ref/arith_auto.h"
+#include "host-tools/opts/cli_args.h"
+#include "host-tools/ref/ref_opts.h"
+#include "host-tools/cli/scene_cmds.h"
+#include "host-tools/ref/ref_program.h"
+#include "host-tools/scene/scene_board.h"
+#include "host-tools/scene/scene_desc.h"
+#include "proto/arith.h"
+
+enum { SCENE_OPT_FRAME = CLI_OWN_CODES, SCENE_OPT_STRICT };
+
+/* Reads "SCENE -o OUT" and the options of a scene command: each option of
+ * longs other than -o and --help goes to take (when given).  0, 1 (--help
+ * shown) or -1 (bad arguments, reported with the usage). */
+static int scene_cmd_args(struct cli *c, const char *usage, const char **in, const char **out,
+                          int (*take)(struct cli *c, int code, void *ctx), void *ctx)
+{
+    *in = *out = NULL;
+    for (int code; (code = cli_next(c)) != -1;) {
+        int bad = 0;
+        if (code == 'h') {
+            printf("usage: %s\n", usage);
+            return 1;
+        } else if (code == 'o') {
+            *out = c->arg;
+        } else if (code == CLI_OPERAND && !*in) {
+            *in = c->arg;
+        } else if (code == CLI_OPERAND) {
+            fprintf(stderr, "%s: one scene at a time, not also '%s'\n", c->prog, c->arg);
+            bad = 1;
+        } else {
+            bad = code == CLI_BAD || !take || take(c, code, ctx) < 0;
+        }
+        if (bad) {
+            fprintf(stderr, "usage: %s\n", usage);
+            return -1;
+        }
+    }
+    if (!*in || !*out) {
+        fprintf(stderr, "%s: %s\nusage: %s\n", c->prog, !*in ? "no SCENE given" : "no -o OUT given",
+                usage);
+        return -1;
+    }
+    return 0;
+}
+
+/* Writes len bytes to path through a temporary file, so a failed run never
+ * leaves a half-written output. */
+static int cmd_write_file(const char *path, const void *data, size_t len)
+{
+    char tmp[PATH_MAX];
+    snprintf(tmp, sizeof tmp, "%s.tmp%ld", path, (long)getpid());
+    FILE *f = fopen(tmp, "wb");
+    if (!f) {
+        fprintf(stderr, "links1: %s: %s\n", tmp, strerror(errno));
+        return -1;
+    }
+    int ok = fwrite(data, 1, len, f) == len;
+    if (fclose(f) != 0)
+        ok = 0;
+    if (!ok || rename(tmp, path) != 0) {
+        fprintf(stderr, "links1: writing %s: %s\n", path, strerror(errno));
+        remove(tmp);
+        return -1;
+    }
+    return 0;
+}
+
+static const struct option compile_options[] = {
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0},
+};
+
+int scene_cmd_compile(int argc, char **argv)
+{
+    const char *in, *out;
+    struct cli c;
+    cli_init(&c, "links1 compile", argc, argv, "o:h", compile_options);
+    int r = scene_cmd_args(&c, "links1 compile SCENE.scn -o OUT.l1s", &in, &out, NULL, NULL);
+    if (r != 0)
+        return r > 0 ? 0 : 2;
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    if (sd_parse_file(in, &s, err, sizeof err) != 0) {
+        fprintf(stderr, "%s\n", err);
+        return 1;
+    }
+    uint8_t *buf;
+    size_t len;
+    int rc = sd_compile(&s, &buf, &len, err, sizeof err);
+    sd_free(&s);
+    if (rc != 0) {
+        fprintf(stderr, "%s: %s\n", in, err);
+        return 1;
+    }
+    rc = cmd_write_file(out, buf, len);
+    struct sd_board_bytes b;
+    if (rc == 0 && sd_board_bytes(buf, len, &b, err, sizeof err) == 0)
+        printf("%s: %zu bytes (%u primitives, %u clusters); on the board: blob %zu bytes of "
+               "%zu, NC clip lists %zu bytes\n",
+               out, len, b.prims, b.clusters, b.blob, SD_BOARD_BLOB_LIMIT, b.nc_working);
+    free(buf);
+    return rc ? 1 : 0;
+}
+
+static const struct option export_pov_options[] = {
+    {"frame", required_argument, NULL, SCENE_OPT_FRAME},
+    {"strict", no_argument, NULL, SCENE_OPT_STRICT},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0},
+};
+
+struct export_pov_args {
+    int strict, frame;
+};
+
+static int export_pov_take(struct cli *c, int code, void *ctx)
+{
+    struct export_pov_args *a = ctx;
+    if (code == SCENE_OPT_STRICT) {
+        a->strict = 1;
+        return 0;
+    }
+    return code == SCENE_OPT_FRAME ? cli_int(c, 0, SCN_MAX_FRAMES - 1, &a->frame) : -1;
+}
+
+int scene_cmd_export_pov(int argc, char **argv)
+{
+    const char *in, *out;
+    struct export_pov_args a = {0, 0};
+    struct cli c;
+    cli_init(&c, "links1 export-pov", argc, argv, "o:h", export_pov_options);
+    int r = scene_cmd_args(&c, "links1 export-pov SCENE.scn -o OUT.pov [--frame N] [--strict]",
+                           &in, &out, export_pov_take, &a);
+    if (r != 0)
+        return r > 0 ? 0 : 2;
+    int strict = a.strict, frame = a.frame;
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    if (sd_parse_file(in, &s, err, sizeof err) != 0) {
+        fprintf(stderr, "%s\n", err);
+        return 1;
+    }
+    char tmp[PATH_MAX];
+    snprintf(tmp, sizeof tmp, "%s.tmp%ld", out, (long)getpid());
+    int rc = sd_export_pov(&s, frame, strict, tmp, err, sizeof err);
+    sd_free(&s);
+    if (rc != 0) {
+        fprintf(stderr, "%s: %s\n", in, err);
+        remove(tmp);
+        return 1;
+    }
+    if (rename(tmp, out) != 0) {
+        fprintf(stderr, "links1: writing %s: %s\n", out, strerror(errno));
+        remove(tmp);
+        return 1;
+    }
+    return 0;
+}
+
+static const struct option ref_cmd_options[] = {
+    REF_LONG_OPTIONS,
+    {"arith", required_argument, NULL, REF_OPT_ARITH},
+    {"fpu", required_argument, NULL, REF_OPT_FPU},
+    {"target-db", required_argument, NULL, REF_OPT_TARGET_DB},
+    {NULL, 0, NULL, 0},
+};
+
+/* links1 ref: runs links1-ref-<arith> from the directory of this program
+ * with every argument but --arith A (ref_main.c checks their values);
+ * --arith auto first chooses the build (arith_auto.c). */
+int scene_cmd_ref(int argc, char **argv)
+{
+    const char *arith = "double";
+    char **args = calloc((size_t)argc + 2, sizeof *args);
+    const char **words = calloc((size_t)argc + 4, sizeof *words); /* the pre-render's */
+    if (!args || !words) {
+        fprintf(stderr, "links1 ref: out of memory\n");
+        free(args);
+        free(words);
+        return 1;
+    }
+    int n = 1, nw = 0, fpu = -1, bad = 0;
+    double target = -1;
+    struct arith_auto_opts ao = {.fpu = 1, .target_db = ARITH_AUTO_TARGET_DB,
+                                 .target = ARITH_AUTO_HOST};
+    const char *scene = NULL;
+    char first[24];
+    struct cli c;
+    cli_init(&c, "links1 ref", argc, argv, REF_SHORT_OPTIONS, ref_cmd_options);
+    for (int from = 1, code; !bad && (code = cli_next(&c)) != -1; from = optind) {
+        long f0, f1;
+        switch (code) {
+        case CLI_BAD:
+            bad = 1;
+            continue;
+        case REF_OPT_ARITH:
+            arith = c.arg;
+            continue;
+        case REF_OPT_FPU:
+            if ((fpu = arith_auto_fpu(c.arg)) < 0)
+                bad = cli_bad_value(&c, "vfp or none") < 0;
+            continue;
+        case REF_OPT_TARGET_DB:
+            bad = cli_double(&c, 0, 1, 99, NULL, &target) < 0;
+            continue;
+        case CLI_OPERAND:
+            scene = scene ? scene : c.arg;
+            break;
+        case REF_OPT_SIZE:
+            cli_parse_size(c.arg, &ao.width, &ao.height); /* ref_main.c reports bad ones */
+            break;
+        case REF_OPT_FRAMES: /* the pre-render: the first frame */
+            if (cli_parse_frames(c.arg, &f0, &f1) == 0) {
+                snprintf(first, sizeof first, "%ld", f0);
+                words[nw++] = "--frame";
+                words[nw++] = first;
+            }
+            break;
+        case REF_OPT_MAX_DEPTH:
+        case REF_OPT_MIN_WEIGHT:
+        case REF_OPT_DENSITY_STEPS:
+        case REF_OPT_REFRACTION:
+        case REF_OPT_REFRACTIONLESS:
+        case REF_OPT_NO_AUTO_HIERARCHY:
+        case REF_OPT_FRAME:
+            for (int k = from; k < optind; k++)
+                words[nw++] = argv[k];
+            break;
+        }
+        /* the words of this option, as written (a "--" before an operand too) */
+        for (int k = from; k < optind; k++)
+            args[n++] = argv[k];
+    }
+    args[n] = NULL;
+    words[nw] = NULL;
+    int is_auto = strcmp(arith, "auto") == 0;
+    if (!bad && !is_auto && (fpu >= 0 || target >= 0)) {
+        fprintf(stderr, "links1 ref: --fpu and --target-db go with --arith auto\n");
+        bad = 1;
+    }
+    if (bad) {
+        fprintf(stderr, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [options] "
+                        "(links1 ref --help)\n");
+        free(args);
+        free(words);
+        return 2;
+    }
+    struct arith_auto_choice pick;
+    if (is_auto && scene) {
+        ao.fpu = fpu < 0 ? 1 : fpu;
+        ao.target_db = target < 0 ? ARITH_AUTO_TARGET_DB : target;
+        ao.words = words;
+        if (arith_auto_pick("links1 ref", scene, &ao, &pick) != 0) {
+            free(args);
+            free(words);
+            return 1;
+        }
+        arith = pick.build;
+    }
+    free(words);
+    const char *build = arith;
+    int arith_code = is_auto ? ARITH_FIXED : arith_from_name(arith); /* a build, by name */
+    if (is_auto && !scene) {
+        build = "double"; /* it says what is missing */
+    } else if (arith_code == ARITH_SOFT) {
+        /* Software float differs from hardware float only in who executes
+         * the IEEE operations; on the host both are the float build. */
+        fprintf(stderr, "links1 ref: --arith soft on the host is the float build\n");
+        build = "float";
+    } else if (arith_code < 0) {
+        fprintf(stderr, "links1 ref: --arith '%s': want double, float, soft, fixed or auto\n",
+                arith);
+        free(args);
+        return 2;
+    }
+    char prog[PATH_MAX + 32];
+    if (ref_program_path(build, prog, sizeof prog) != 0) {
+        free(args);
+        return 1;
+    }
+    args[0] = prog;
+    execv(prog, args);
+    fprintf(stderr, "links1 ref: cannot run %s: %s (build it with make)\n", prog,
+            strerror(errno));
+    free(args);
+    return 1;
+}

@@ -1,0 +1,12 @@
+# host-tools/image/: image files (PNG through libpng, PPM) and comparing
+# two images (PSNR, pixels beyond a tolerance, lost pixels matched).
+HT_IMAGE_IO_SRCS := host-tools/image/image_io.c
+HT_IMAGE_COMPARE_SRCS := host-tools/image/image_compare.c
+ARITH_FREE_SRCS += $(HT_IMAGE_IO_SRCS)
+# (image_compare.c reads render/render.h for the --mark-lost colour)
+
+HOST_TESTS += test_scene_image
+test_scene_image_SRCS = tests/host/test_scene_image.c $(HT_IMAGE_IO_SRCS) \
+	$(HT_IMAGE_COMPARE_SRCS) host-tools/cli/cmd_compare.c $(HT_OPTS_CLI_SRCS)
+test_scene_image_ARITH := double
+test_scene_image_LIBS := -lpng -lm

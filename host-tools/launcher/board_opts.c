@@ -1,0 +1,135 @@
+/* board_opts.c: the board options every board subcommand takes, and where
+ * the firmware ELF is found (see board.h). */
+#include "host-tools/launcher/launcher.h"
+#include "host-tools/opts/self_path.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "host-tools/launcher/link_noise.h"
+#include "proto/arith.h"
+
+const char board_opts_usage[] =
+    "  --smp N          cores on the board: DM, RC and N-2 NCs (3..256, default 10)\n"
+    "  --arith A        firmware arithmetic: float, soft or fixed (default float)\n"
+    "  --firmware ELF   firmware to boot (default: links1-<arith>.elf in $FW_DIR,\n"
+    "                   else next to this program)\n"
+    "  --timeout S      seconds to wait for every unit computer to report in (default 60)\n"
+    "  --ram MB         board memory (default 1024, what the firmware carves)\n"
+    "  --quiet          do not print the board's log or the board-up line\n"
+    "  --verbose        print each unit computer reporting in\n"
+    "  --gdb PORT       start halted, QEMU's gdb stub on 127.0.0.1:PORT (make gdb)\n"
+    "  --link L         bulk bytes through shared memory (fast, default) or the\n"
+    "                   serial link (serial); commands and results always go serially\n"
+    "  --link-noise RATE[:SEED]  test hook: a relay flips, drops, duplicates and\n"
+    "                   inserts bytes at RATE per byte both ways (boards this command starts)\n";
+
+void board_opts_init(struct board_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->ncores = BOARD_DEFAULT_CORES;
+    o->arith = "float";
+    o->ram_mb = BOARD_DEFAULT_RAM_MB;
+    o->timeout_s = BOARD_DEFAULT_TIMEOUT_S;
+    o->link = LINK_PATH_SHARED;
+}
+
+int board_opt(struct board_opts *o, const struct cli *c, int code)
+{
+    switch (code) {
+    case BOARD_OPT_SMP:
+        return cli_int(c, UNITS_MIN_CORES, UNITS_MAX_CORES, &o->ncores) < 0 ? -1 : 1;
+    case BOARD_OPT_TIMEOUT:
+        return cli_int(c, 1, BOARD_MAX_TIMEOUT_S, &o->timeout_s) < 0 ? -1 : 1;
+    case BOARD_OPT_RAM:
+        return cli_int(c, BOARD_MIN_RAM_MB, BOARD_MAX_RAM_MB, &o->ram_mb) < 0 ? -1 : 1;
+    case BOARD_OPT_QUIET:
+        o->quiet = 1;
+        return 1;
+    case BOARD_OPT_VERBOSE:
+        o->verbose = 1;
+        return 1;
+    case BOARD_OPT_GDB:
+        return cli_int(c, 1, 65535, &o->gdb_port) < 0 ? -1 : 1;
+    case BOARD_OPT_LINK:
+        if (strcmp(c->arg, "fast") != 0 && strcmp(c->arg, "serial") != 0)
+            return cli_bad_value(c, "fast or serial");
+        o->link = strcmp(c->arg, "fast") == 0 ? LINK_PATH_SHARED : LINK_PATH_SERIAL;
+        return 1;
+    case BOARD_OPT_LINK_NOISE: {
+        char why[200];
+        if (link_noise_parse(c->arg, &o->link_noise, &o->link_noise_seed, why, sizeof why) < 0) {
+            fprintf(stderr, "%s: %s %s\n", c->prog, c->name, why);
+            return -1;
+        }
+        o->link_noise_on = 1;
+        return 1;
+    }
+    case BOARD_OPT_FIRMWARE:
+        o->firmware = c->arg;
+        return 1;
+    case BOARD_OPT_ARITH:
+        if (board_arith_code(c->arg) < 0)
+            return cli_bad_value(c, "float, soft or fixed");
+        o->arith = c->arg;
+        return 1;
+    }
+    return 0;
+}
+
+static int board_file_readable(const char *path)
+{
+    return access(path, R_OK) == 0;
+}
+
+/* QEMU boots anything given to -kernel (a non-ELF file as a raw image that
+ * then never reports in), so check the ELF magic first. */
+static int board_firmware_is_elf(const char *path)
+{
+    unsigned char magic[4] = {0};
+    FILE *f = fopen(path, "rb");
+    size_t n = f ? fread(magic, 1, sizeof magic, f) : 0;
+    if (f)
+        fclose(f);
+    if (n == sizeof magic && memcmp(magic, "\177ELF", 4) == 0)
+        return 1;
+    fprintf(stderr, "links1: firmware %s is not an ELF file\n", path);
+    return 0;
+}
+
+int board_find_firmware(const struct board_opts *o, char *out, size_t cap)
+{
+    if (o->firmware) {
+        if (!board_file_readable(o->firmware)) {
+            fprintf(stderr, "links1: firmware %s: %s\n", o->firmware, strerror(errno));
+            return -1;
+        }
+        snprintf(out, cap, "%s", o->firmware);
+        return board_firmware_is_elf(out) ? 0 : -1;
+    }
+    const char *fw_dir = getenv("FW_DIR");
+    if (fw_dir && *fw_dir) {
+        snprintf(out, cap, "%s/links1-%s.elf", fw_dir, o->arith);
+        if (board_file_readable(out))
+            return board_firmware_is_elf(out) ? 0 : -1;
+        fprintf(stderr, "links1: firmware %s not found ($FW_DIR is set; run make, or "
+                "give --firmware ELF)\n", out);
+        return -1;
+    }
+    char self[PATH_MAX];
+    if (self_dir(self, sizeof self) < 0) {
+        fprintf(stderr, "links1: cannot find this program's directory: %s\n", strerror(errno));
+        return -1;
+    }
+    snprintf(out, cap, "%s/links1-%s.elf", self, o->arith);
+    if (board_file_readable(out))
+        return board_firmware_is_elf(out) ? 0 : -1;
+    fprintf(stderr, "links1: firmware %s not found (run make, set $FW_DIR, or give "
+            "--firmware ELF)\n", out);
+    return -1;
+}
+

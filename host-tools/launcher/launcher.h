@@ -1,0 +1,142 @@
+/* launcher.h: the board launcher.  It starts qemu-system-arm (always with
+ * -nodefaults) with the board's UART on one end of a socketpair (QEMU's
+ * "-chardev socket,fd=N": no file-system path to clean up, no race to
+ * connect, and a socket gives both sides back-pressure, so a slow reader
+ * slows the writer instead of losing bytes; when QEMU exits the socket
+ * reads end-of-file), and its RAM a memfd mapped here too (the
+ * shared-memory path of proto/hostlink.h); then opens a link session on
+ * it (host-tools/link/board.h).  Named boards run on between commands,
+ * their state in a directory only their owner can reach. */
+#ifndef LINKS1_HOST_LAUNCHER_H
+#define LINKS1_HOST_LAUNCHER_H
+
+#include <stddef.h>
+
+#include "host-tools/link/board.h"
+#include "host-tools/opts/cli_opt.h"
+#include "proto/board_map.h"
+#include "proto/units.h"
+
+#define BOARD_DEFAULT_CORES 10
+#define BOARD_DEFAULT_RAM_MB BOARD_RAM_MB /* what the firmware carves */
+#define BOARD_MIN_RAM_MB 64
+#define BOARD_MAX_RAM_MB 2048 /* the virt board's 32-bit RAM window below 4 GiB */
+/* Default seconds to wait for every unit computer to report in.  256 cores
+ * start one after another under emulation on two host cores, so this is
+ * generous. */
+#define BOARD_DEFAULT_TIMEOUT_S 60
+#define BOARD_MAX_TIMEOUT_S 3600
+/* A session on a named board waits this long for the board's first answer
+ * (it may be finishing a command of a session that went away). */
+#define BOARD_SESSION_WAIT_MS 60000
+/* Clean stop: wait this long for QEMU to exit after CMD_SHUTDOWN, then send
+ * SIGTERM and wait again, and only then SIGKILL. */
+#define BOARD_SHUTDOWN_WAIT_MS 5000
+#define BOARD_TERM_WAIT_MS 3000
+/* --link-noise: the send buffer of each socket towards the board around the
+ * relay (the kernel doubles it). */
+#define BOARD_RELAY_SNDBUF 4096
+
+/* Fills o with the defaults (BOARD_DEFAULT_*). */
+void board_opts_init(struct board_opts *o);
+
+/* The board options every board subcommand takes (--smp, --arith,
+ * --firmware, --timeout, --ram, --quiet, --link, --verbose, --gdb, --link-noise): entries for the subcommand's
+ * getopt_long table, and their codes. */
+enum board_opt_code {
+    BOARD_OPT_SMP = CLI_BOARD_CODES,
+    BOARD_OPT_ARITH,
+    BOARD_OPT_FIRMWARE,
+    BOARD_OPT_TIMEOUT,
+    BOARD_OPT_RAM,
+    BOARD_OPT_QUIET,
+    BOARD_OPT_LINK,
+    BOARD_OPT_VERBOSE,
+    BOARD_OPT_GDB,
+    BOARD_OPT_LINK_NOISE,
+};
+#define BOARD_LONG_OPTIONS                                       \
+    {"smp", required_argument, NULL, BOARD_OPT_SMP},             \
+    {"arith", required_argument, NULL, BOARD_OPT_ARITH},         \
+    {"firmware", required_argument, NULL, BOARD_OPT_FIRMWARE},   \
+    {"timeout", required_argument, NULL, BOARD_OPT_TIMEOUT},     \
+    {"ram", required_argument, NULL, BOARD_OPT_RAM},             \
+    {"quiet", no_argument, NULL, BOARD_OPT_QUIET},               \
+    {"link", required_argument, NULL, BOARD_OPT_LINK},           \
+    {"verbose", no_argument, NULL, BOARD_OPT_VERBOSE},           \
+    {"gdb", required_argument, NULL, BOARD_OPT_GDB},             \
+    {"link-noise", required_argument, NULL, BOARD_OPT_LINK_NOISE}
+
+/* Takes the board option cli_next() returned as code into o.  Returns 1
+ * when it took it, 0 when code is not a board option, -1 after printing
+ * what is wrong with its value. */
+int board_opt(struct board_opts *o, const struct cli *c, int code);
+
+/* The usage lines of the board options, for each subcommand's --help. */
+extern const char board_opts_usage[];
+
+/* Resolves the firmware ELF into out: opts->firmware, else
+ * $FW_DIR/links1-<arith>.elf, else links1-<arith>.elf next to this program.
+ * Returns 0, or -1 after printing where it looked. */
+int board_find_firmware(const struct board_opts *o, char *out, size_t cap);
+
+/* Starts QEMU, its RAM a memfd mapped here too (b->ram: the shared-memory
+ * path of proto/hostlink.h).  Returns 0, or -1 after printing why. */
+int board_start(struct board *b, const struct board_opts *o);
+
+/* Runs a semihosting program (not the firmware: one core, no link) on the
+ * plain virt board, its console output on our stdout, until it ends the
+ * emulator (semihosting SYS_EXIT).  Returns QEMU's exit status, or -1 after
+ * printing why. */
+int board_run_semihost(const char *elf, int ram_mb);
+
+/* Shuts the board down: CMD_SHUTDOWN, wait for QEMU to exit, SIGTERM, and
+ * SIGKILL only as a last resort.  Returns 0 when QEMU exited by itself after
+ * the command, 1 when it had to be signalled, -1 on error.  Safe to call
+ * twice and after QEMU died. */
+int board_stop(struct board *b);
+
+/* ---- named boards (host-tools/launcher/board_named.c) ----
+ * `links1 board start --name NAME` leaves a board running for later
+ * sessions (`links1 render --board NAME`).  Its state directory
+ * ($LINKS1_BOARDS, else /dev/shm/links1-UID, else /tmp/links1-UID, then
+ * NAME/) holds QEMU's pid and the board's shape (BOARD_STATE_INFO), the
+ * UART as a listening socket, the shared RAM file, QEMU's own output and a
+ * lock that one session at a time holds.  A board whose QEMU is gone leaves
+ * a stale directory: found, reported and removed by start, stop and list. */
+#define BOARD_STATE_INFO "board"
+#define BOARD_STATE_SOCKET "link.sock"
+#define BOARD_STATE_RAM "ram"
+#define BOARD_STATE_LOG "qemu.log"
+#define BOARD_STATE_LOCK "lock"
+#define BOARD_DEFAULT_NAME "default"
+
+/* Starts QEMU as the named board and waits for every unit computer to
+ * report in; the board then runs on without this tool.  0, or -1 after
+ * printing why (a board of that name already running, QEMU failing). */
+int board_start_named(struct board *b, const struct board_opts *o, const char *name,
+                      int timeout_ms);
+/* A session on the named board: maps its RAM, connects to its UART, opens
+ * the session (LINK_FLAG_SESSION) and checks that every unit computer is up.
+ * o gives quiet and link; the shape comes from the board.  0, or -1 after
+ * printing why. */
+int board_connect(struct board *b, const struct board_opts *o, const char *name);
+/* Shuts the named board down and removes its state.  0, or -1. */
+int board_stop_named(const char *name);
+/* Prints every named board: running (pid, cores) or stale (then removed).
+ * Returns the number running. */
+int board_list_named(void);
+/* board_start_named's steps (board.c starts the process between them):
+ * the state directory made, a stale one removed, the lock taken; the record
+ * written and the UART socket connected (returns its fd); everything undone
+ * after a failure. */
+int board_named_prepare(struct board *b, const char *name);
+int board_named_started(struct board *b, int timeout_ms);
+void board_named_abandon(struct board *b);
+/* In QEMU's child process: its output into the state directory. */
+void board_named_redirect(const struct board *b);
+/* The named board's RAM file mapped into b (board_start_named creates it
+ * with create = 1).  0, or -1 after printing why. */
+int board_named_map_ram(struct board *b, int create);
+
+#endif

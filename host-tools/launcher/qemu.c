@@ -1,0 +1,457 @@
+/* qemu.c: the board's QEMU process: started with the board's UART on a
+ * socketpair and its RAM a memfd (or, for a named board, both in its state
+ * directory), a semihosting program run, the process stopped (see
+ * launcher.h). */
+#define _GNU_SOURCE /* memfd_create */
+#include "host-tools/launcher/launcher.h"
+#include "host-tools/launcher/link_relay.h"
+#include "host-tools/opts/self_path.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/mman.h>
+#include <sys/prctl.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+static int board_qemu_reap(struct board *b, int timeout_ms);
+static void board_qemu_exit_text(const struct board *b, char *out, size_t cap);
+static int board_stop_qemu(struct board *b);
+
+/* The link ended (board.process_gone): what became of QEMU. */
+static void board_qemu_gone(struct board *b, char *desc, size_t cap)
+{
+    if (b->named && !b->qemu_pid)
+        snprintf(desc, cap, "the named board's QEMU closed the link or ended");
+    else if (board_qemu_reap(b, BOARD_TERM_WAIT_MS))
+        board_qemu_exit_text(b, desc, cap);
+    else
+        snprintf(desc, cap, "QEMU (pid %d) is still running", (int)b->qemu_pid);
+}
+
+/* The emulator: $QEMU, else qemu-system-arm from $PATH. */
+static const char *board_qemu_binary(void)
+{
+    const char *qemu = getenv("QEMU");
+    return qemu && *qemu ? qemu : "qemu-system-arm";
+}
+
+/* ------------------------------------------------------------ QEMU process */
+
+static void board_qemu_exec_failed(const char *qemu)
+{
+    fprintf(stderr, "links1: cannot run %s: %s (install qemu-system-arm, or set $QEMU)\n",
+            qemu, strerror(errno));
+    _exit(127);
+}
+
+/* In the child.  A board of this tool's own (qemu_fd >= 0, the UART on a
+ * socket pair, the RAM our memfd) must not outlive the tool, whatever ends
+ * the tool; a named board (qemu_fd < 0: the UART a listening socket, the RAM
+ * a file, both in its state directory) runs on in a session of its own. */
+static void board_qemu_exec(struct board *b, int qemu_fd)
+{
+    char smp[32], mem[32], chardev[PATH_MAX + 64], plugin[3 * PATH_MAX], ram[PATH_MAX + 96];
+    snprintf(smp, sizeof smp, "%d", b->opts.ncores);
+    snprintf(mem, sizeof mem, "%dM", b->opts.ram_mb);
+    if (qemu_fd >= 0) {
+        prctl(PR_SET_PDEATHSIG, SIGTERM);
+        fcntl(qemu_fd, F_SETFD, 0); /* keep QEMU's end open across exec */
+        snprintf(chardev, sizeof chardev, "socket,id=link,fd=%d", qemu_fd);
+        /* The RAM is our memfd, shared: QEMU opens it again through /proc. */
+        fcntl(b->ram_fd, F_SETFD, 0);
+        snprintf(ram, sizeof ram, "memory-backend-file,id=ram,size=%dM,"
+                 "mem-path=/proc/self/fd/%d,share=on", b->opts.ram_mb, b->ram_fd);
+    } else {
+        setsid();
+        board_named_redirect(b);
+        /* wait=on: the guest starts only once `board start` is connected,
+         * so no report-in is lost. */
+        snprintf(chardev, sizeof chardev, "socket,id=link,path=%s/%s,server=on,wait=on",
+                 b->state_dir, BOARD_STATE_SOCKET);
+        snprintf(ram, sizeof ram, "memory-backend-file,id=ram,size=%dM,mem-path=%s/%s,share=on",
+                 b->opts.ram_mb, b->state_dir, BOARD_STATE_RAM);
+    }
+    const char *qemu = board_qemu_binary();
+    const char *argv[40];
+    int n = 0;
+    argv[n++] = qemu;
+    argv[n++] = "-M";
+    argv[n++] = "virt,gic-version=3,memory-backend=ram";
+    argv[n++] = "-object";
+    argv[n++] = ram;
+    argv[n++] = "-cpu";
+    argv[n++] = "cortex-a15";
+    argv[n++] = "-smp";
+    argv[n++] = smp;
+    argv[n++] = "-m";
+    argv[n++] = mem;
+    argv[n++] = "-display";
+    /* --view: the frame memory shown live through ramfb in QEMU's display
+     * ($LINKS1_DISPLAY, default gtk). */
+    const char *display = getenv("LINKS1_DISPLAY");
+    argv[n++] = !b->opts.view ? "none" : display && *display ? display : "gtk";
+    argv[n++] = "-nodefaults";
+    if (b->opts.view) {
+        argv[n++] = "-device";
+        argv[n++] = "ramfb";
+    }
+    /* $LINKS1_MONITOR=PATH: QEMU's human monitor on a unix socket, e.g. for
+     * `screendump` of the ramfb view while a frame renders. */
+    const char *monitor = getenv("LINKS1_MONITOR");
+    char monitor_arg[PATH_MAX + 40];
+    if (monitor && *monitor) {
+        snprintf(monitor_arg, sizeof monitor_arg, "unix:%s,server=on,wait=off", monitor);
+        argv[n++] = "-monitor";
+        argv[n++] = monitor_arg;
+    }
+    char gdb[48];
+    if (b->opts.gdb_port) {
+        /* Halted at the first instruction until the debugger continues. */
+        snprintf(gdb, sizeof gdb, "tcp:127.0.0.1:%d", b->opts.gdb_port);
+        argv[n++] = "-gdb";
+        argv[n++] = gdb;
+        argv[n++] = "-S";
+    }
+    argv[n++] = "-no-reboot"; /* a reset request ends the run instead of looping */
+    argv[n++] = "-chardev";
+    argv[n++] = chardev;
+    argv[n++] = "-serial";
+    argv[n++] = "chardev:link";
+    argv[n++] = "-kernel";
+    argv[n++] = b->firmware;
+    if (b->opts.insn_count_out || b->opts.insn_series_out || b->opts.insn_trace_out) {
+        const char *so = getenv("LINKS1_INSN_PLUGIN");
+        char self[PATH_MAX], args[2 * PATH_MAX];
+        if (!so || !*so) {
+            self_dir(self, sizeof self);
+            snprintf(plugin, sizeof plugin, "%s/insn-count.so", self);
+        } else {
+            snprintf(plugin, sizeof plugin, "%s", so);
+        }
+        if (b->opts.insn_count_out)
+            snprintf(args, sizeof args, ",out=%s", b->opts.insn_count_out);
+        else
+            args[0] = 0;
+        if (b->opts.insn_series_out)
+            snprintf(args + strlen(args), sizeof args - strlen(args), ",series=%s,every=%d",
+                     b->opts.insn_series_out, b->opts.insn_series_ms);
+        if (b->opts.insn_trace_out)
+            snprintf(args + strlen(args), sizeof args - strlen(args), ",trace=%s",
+                     b->opts.insn_trace_out);
+        snprintf(plugin + strlen(plugin), sizeof plugin - strlen(plugin), "%s", args);
+        argv[n++] = "-plugin";
+        argv[n++] = plugin;
+    }
+    argv[n] = NULL;
+    execvp(qemu, (char *const *)argv);
+    board_qemu_exec_failed(qemu);
+}
+
+int board_run_semihost(const char *elf, int ram_mb)
+{
+    if (access(elf, R_OK) < 0) {
+        fprintf(stderr, "links1: program %s: %s\n", elf, strerror(errno));
+        return -1;
+    }
+    char mem[32];
+    snprintf(mem, sizeof mem, "%dM", ram_mb);
+    const char *qemu = board_qemu_binary();
+    /* One core of the plain virt board; the program's semihosted console
+     * is QEMU's stdio chardev, so its output is our stdout. */
+    const char *argv[] = {qemu, "-M", "virt", "-cpu", "cortex-a15", "-m", mem,
+                          "-display", "none", "-nodefaults", "-no-reboot",
+                          "-chardev", "stdio,id=semihost,signal=off",
+                          "-semihosting-config", "enable=on,target=native,chardev=semihost",
+                          "-kernel", elf, NULL};
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid < 0) {
+        fprintf(stderr, "links1: fork: %s\n", strerror(errno));
+        return -1;
+    }
+    if (pid == 0) {
+        prctl(PR_SET_PDEATHSIG, SIGTERM);
+        int null = open("/dev/null", O_RDONLY);
+        if (null >= 0)
+            dup2(null, 0); /* the program reads nothing; keep a terminal cooked */
+        execvp(qemu, (char *const *)argv);
+        board_qemu_exec_failed(qemu);
+    }
+    int st;
+    while (waitpid(pid, &st, 0) < 0) {
+        if (errno != EINTR) {
+            fprintf(stderr, "links1: waitpid: %s\n", strerror(errno));
+            return -1;
+        }
+    }
+    if (WIFEXITED(st))
+        return WEXITSTATUS(st);
+    fprintf(stderr, "links1: QEMU was killed by signal %d\n", WTERMSIG(st));
+    return -1;
+}
+
+/* The board's RAM as a memfd, mapped here (proto/board_map.h). */
+static int board_ram_create(struct board *b)
+{
+    b->ram_size = (size_t)b->opts.ram_mb << 20;
+    b->ram_fd = memfd_create("links1-board-ram", MFD_CLOEXEC);
+    if (b->ram_fd < 0 || ftruncate(b->ram_fd, (off_t)b->ram_size) < 0) {
+        fprintf(stderr, "links1: the board's %d MiB of shared RAM: %s\n", b->opts.ram_mb,
+                strerror(errno));
+        return -1;
+    }
+    void *p = mmap(NULL, b->ram_size, PROT_READ | PROT_WRITE, MAP_SHARED, b->ram_fd, 0);
+    if (p == MAP_FAILED) {
+        fprintf(stderr, "links1: mapping the board's RAM: %s\n", strerror(errno));
+        return -1;
+    }
+    b->ram = p;
+    return 0;
+}
+
+static void board_ram_release(struct board *b)
+{
+    if (b->ram)
+        munmap(b->ram, b->ram_size);
+    if (b->ram_fd >= 0)
+        close(b->ram_fd);
+    b->ram = NULL;
+    b->ram_fd = -1;
+}
+
+/* --link-noise: a relay between our end (returned) and QEMU's socket. */
+static int board_noise_relay(const struct board_opts *o, int qemu_side)
+{
+    int rv[2];
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, rv) < 0) {
+        fprintf(stderr, "links1: socketpair: %s\n", strerror(errno));
+        close(qemu_side);
+        return -1;
+    }
+    /* Like a line, and unlike a socket, the relay holds few bytes: a small
+     * send buffer on each hop towards the board, so a resend is not queued
+     * behind ~200 KiB of older bytes (the host writes faster than the
+     * board reads; a late resend makes the board ask again, and the asks
+     * pile up: at 1e-3 on the serial path, seed 3 rendered in 23 s before,
+     * 10 s after). */
+    int small = BOARD_RELAY_SNDBUF;
+    setsockopt(rv[0], SOL_SOCKET, SO_SNDBUF, &small, sizeof small);
+    setsockopt(qemu_side, SOL_SOCKET, SO_SNDBUF, &small, sizeof small);
+    if (link_relay_start(rv[1], qemu_side, o->link_noise, o->link_noise_seed) < 0) {
+        close(rv[0]);
+        close(rv[1]);
+        close(qemu_side);
+        return -1;
+    }
+    if (!o->quiet)
+        printf("links1: link noise %g per byte each way (seed %llu)\n", o->link_noise,
+               (unsigned long long)o->link_noise_seed);
+    return rv[0];
+}
+
+int board_start(struct board *b, const struct board_opts *o)
+{
+    if (board_session_init(b, o) < 0)
+        return -1;
+    b->process_gone = board_qemu_gone;
+    board_session_peer_from_zero(b); /* the board we boot numbers from 0 */
+    if (board_find_firmware(o, b->firmware, sizeof b->firmware) < 0)
+        return -1;
+    if (o->ncores < UNITS_MIN_CORES || o->ncores > UNITS_MAX_CORES) {
+        fprintf(stderr, "links1: %d cores: the board needs %d..%d\n", o->ncores,
+                UNITS_MIN_CORES, UNITS_MAX_CORES);
+        return -1;
+    }
+    if (board_ram_create(b) < 0) {
+        board_ram_release(b);
+        return -1;
+    }
+    /* A write to a socket QEMU has closed must fail with EPIPE, not kill us. */
+    signal(SIGPIPE, SIG_IGN);
+    int sv[2];
+    if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) < 0) {
+        fprintf(stderr, "links1: socketpair: %s\n", strerror(errno));
+        return -1;
+    }
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid < 0) {
+        fprintf(stderr, "links1: fork: %s\n", strerror(errno));
+        close(sv[0]);
+        close(sv[1]);
+        return -1;
+    }
+    if (pid == 0)
+        board_qemu_exec(b, sv[1]);
+    close(sv[1]);
+    b->qemu_pid = pid;
+    int tool_fd = sv[0];
+    if (o->link_noise_on && (tool_fd = board_noise_relay(o, sv[0])) < 0) {
+        board_stop(b);
+        return -1;
+    }
+    board_session_open(b, tool_fd);
+    if (!o->quiet)
+        printf("links1: booting %s on %d cores (DM, RC, %d NCs), QEMU pid %d\n",
+               b->firmware, o->ncores, o->ncores - 2, (int)pid);
+    return 0;
+}
+
+int board_start_named(struct board *b, const struct board_opts *o, const char *name,
+                      int timeout_ms)
+{
+    if (board_session_init(b, o) < 0)
+        return -1;
+    b->process_gone = board_qemu_gone;
+    board_session_peer_from_zero(b); /* the board we boot numbers from 0 */
+    b->named = 1;
+    if (o->link_noise_on) {
+        fprintf(stderr, "links1: --link-noise works on a board the command starts and "
+                "stops, not a named board\n");
+        return -1;
+    }
+    if (board_find_firmware(o, b->firmware, sizeof b->firmware) < 0)
+        return -1;
+    if (o->ncores < UNITS_MIN_CORES || o->ncores > UNITS_MAX_CORES) {
+        fprintf(stderr, "links1: %d cores: the board needs %d..%d\n", o->ncores,
+                UNITS_MIN_CORES, UNITS_MAX_CORES);
+        return -1;
+    }
+    if (board_named_prepare(b, name) < 0) {
+        if (b->lock_fd >= 0)
+            board_named_abandon(b);
+        b->state_dir[0] = 0;
+        board_stop(b);
+        return -1;
+    }
+    if (board_named_map_ram(b, 1) < 0) {
+        board_named_abandon(b);
+        board_stop(b);
+        return -1;
+    }
+    signal(SIGPIPE, SIG_IGN);
+    fflush(NULL);
+    pid_t pid = fork();
+    if (pid < 0) {
+        fprintf(stderr, "links1: fork: %s\n", strerror(errno));
+        board_named_abandon(b);
+        board_stop(b);
+        return -1;
+    }
+    if (pid == 0)
+        board_qemu_exec(b, -1);
+    b->qemu_pid = pid;
+    int fd = board_named_started(b, timeout_ms);
+    if (fd < 0) {
+        board_named_abandon(b);
+        board_stop(b);
+        return -1;
+    }
+    board_session_open(b, fd);
+    if (!o->quiet)
+        printf("links1: booting %s on %d cores (DM, RC, %d NCs) as board %s, QEMU pid %d\n",
+               b->firmware, o->ncores, o->ncores - 2, name, (int)pid);
+    if (board_wait_reported(b, timeout_ms) < 0) {
+        board_named_abandon(b);
+        board_stop(b);
+        return -1;
+    }
+    return 0;
+}
+
+/* Waits up to timeout_ms for QEMU to exit; returns 1 once reaped. */
+static int board_qemu_reap(struct board *b, int timeout_ms)
+{
+    long long end = board_now_ms() + timeout_ms;
+    while (b->qemu_pid) {
+        pid_t r = waitpid(b->qemu_pid, &b->qemu_status, WNOHANG);
+        if (r == b->qemu_pid || (r < 0 && errno == ECHILD)) {
+            b->qemu_pid = 0;
+            break;
+        }
+        if (board_now_ms() >= end)
+            return 0;
+        usleep(10000);
+    }
+    return 1;
+}
+
+static void board_qemu_exit_text(const struct board *b, char *out, size_t cap)
+{
+    int st = b->qemu_status;
+    if (WIFEXITED(st))
+        snprintf(out, cap, "QEMU exited with status %d", WEXITSTATUS(st));
+    else if (WIFSIGNALED(st))
+        snprintf(out, cap, "QEMU was killed by signal %d", WTERMSIG(st));
+    else
+        snprintf(out, cap, "QEMU stopped (wait status 0x%x)", st);
+}
+
+int board_stop(struct board *b)
+{
+    int r = 0;
+    if (b->named) {
+        /* A named board runs on: only this session ends. */
+        if (b->fd >= 0)
+            close(b->fd);
+        b->fd = -1;
+        b->qemu_pid = 0;
+    } else {
+        r = board_stop_qemu(b);
+    }
+    board_session_close(b);
+    board_ram_release(b);
+    if (b->lock_fd >= 0)
+        close(b->lock_fd);
+    b->lock_fd = -1;
+    return r;
+}
+
+/* ------------------------------------------------------------------ stop */
+
+static int board_stop_qemu(struct board *b);
+
+static int board_stop_qemu(struct board *b)
+{
+    if (!b->qemu_pid) {
+        if (b->fd >= 0)
+            close(b->fd);
+        b->fd = -1;
+        return 0;
+    }
+    b->stopping = 1;
+    /* Drain what the board still says (its result, last logs) until the
+     * socket closes because QEMU exited. */
+    if (b->fd >= 0 && board_send_cmd(b, CMD_SHUTDOWN, NULL, 0) == 0)
+        board_session_drain(b, BOARD_SHUTDOWN_WAIT_MS);
+    if (b->fd >= 0) {
+        close(b->fd);
+        b->fd = -1;
+    }
+    if (board_qemu_reap(b, b->qemu_pid ? 500 : 0)) {
+        if (WIFEXITED(b->qemu_status) && WEXITSTATUS(b->qemu_status) == 0)
+            return 0;
+        char desc[96];
+        board_qemu_exit_text(b, desc, sizeof desc);
+        fprintf(stderr, "links1: at shutdown %s\n", desc);
+        return -1;
+    }
+    fprintf(stderr, "links1: the board did not power off within %d ms of the shutdown "
+            "command; stopping QEMU (pid %d) with SIGTERM\n", BOARD_SHUTDOWN_WAIT_MS,
+            (int)b->qemu_pid);
+    kill(b->qemu_pid, SIGTERM);
+    if (board_qemu_reap(b, BOARD_TERM_WAIT_MS))
+        return 1;
+    fprintf(stderr, "links1: QEMU ignored SIGTERM for %d ms; killing it\n",
+            BOARD_TERM_WAIT_MS);
+    kill(b->qemu_pid, SIGKILL);
+    board_qemu_reap(b, BOARD_TERM_WAIT_MS);
+    return 1;
+}

@@ -1,0 +1,32 @@
+/* model_child.h: a model file read in a child process, so that the model
+ * library (libassimp, which crashes, aborts or loops on some malformed
+ * files) cannot take the program down with it.  The child reads the file
+ * and hands the model back as bytes (model_wire.h); the parent takes at
+ * most max_bytes, waits at most timeout_ms, checks what it got, and names
+ * what happened when the child crashed, failed, ran too long or sent
+ * something malformed.  model_load (model.h) is this with
+ * model_assimp_load and the default limits. */
+#ifndef LINKS1_HOST_SCENE_MODEL_CHILD_H
+#define LINKS1_HOST_SCENE_MODEL_CHILD_H
+
+#include <stddef.h>
+
+#include "host-tools/model/model.h"
+
+#define MODEL_CHILD_TIMEOUT_MS 120000u             /* the default time limit */
+#define MODEL_CHILD_MAX_BYTES (1024u * 1024u * 1024u) /* the default size limit */
+
+struct model_child_limits {
+    unsigned timeout_ms;
+    size_t max_bytes;
+};
+
+/* A loader run in the child: model_load's contract (model.h). */
+typedef int (*model_loader_fn)(const char *path, struct model *m, char *err, size_t errlen);
+
+/* load(path) in a child process within lim.  0 with *m filled, or -1 with
+ * "PATH: what happened" in err and *m empty. */
+int model_child_load(const char *path, model_loader_fn load, const struct model_child_limits *lim,
+                     struct model *m, char *err, size_t errlen);
+
+#endif

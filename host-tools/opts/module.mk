@@ -1,0 +1,10 @@
+# host-tools/opts/: option helpers every command shares.
+HT_OPTS_CLI_SRCS := host-tools/opts/cli_opt.c host-tools/opts/self_path.c \
+	host-tools/opts/tmp_dir.c
+HT_OPTS_ARGS_SRCS := host-tools/opts/cli_args.c
+ARITH_FREE_SRCS += $(HT_OPTS_CLI_SRCS) $(HT_OPTS_ARGS_SRCS)
+
+# The argument reader of every command and the board options.
+HOST_TESTS += test_cli_opt
+test_cli_opt_SRCS = tests/host/test_cli_opt.c $(BOARD_LAUNCHER_SRCS)
+test_cli_opt_ARITH := double

@@ -1,0 +1,300 @@
+/* ref_main.c: links1-ref-<arith>, the host reference renderer, built once per
+ * arithmetic of the shared renderer (double, float, fixed).  `links1 ref`
+ * runs the one asked for; it can also be run alone:
+ *
+ *   links1-ref-double SCENE(.scn|.l1s) -o OUT.png [--ppm] [--frame N | --frames A:B]
+ *
+ * --frames writes one image per frame, the number before the extension
+ * (out-0000.png, out-0001.png, ...).
+ *
+ * A text scene is compiled in memory first, so the host goes through the
+ * same compiled form and the same loader (render/scene_load.c) as the board.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "host-tools/image/image_io.h"
+#include "host-tools/opts/cli_args.h"
+#include "host-tools/scene/scene_desc.h"
+#include "host-tools/scene/scene_file.h"
+#include "host-tools/ref/ref_opts.h"
+#include "render/precision.h"
+#include "render/render.h"
+#include "render/scene_load.h"
+
+#define REF_ARENA_START (64u * 1024u * 1024u)  /* first arena tried */
+#define REF_ARENA_MAX (1024u * 1024u * 1024u)  /* largest arena tried */
+
+static int ref_usage(FILE *out, int status)
+{
+    fprintf(out, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [--arith double|float|soft|"
+                 "fixed|auto] [--ppm] [--size WxH] [--frame N | --frames FIRST:LAST]\n"
+                 "  [--no-auto-hierarchy] [--refraction on|off] [--refractionless on|off]\n"
+                 "  [--max-depth D] [--min-weight W] [--density-steps N]\n"
+                 "  [--mark-lost]  (paint pixels that lost precision magenta)\n"
+                 "  --arith auto [--fpu vfp|none] [--target-db D]: the cheapest arithmetic of a\n"
+                 "  unit computer with VFP (or none) that keeps D dB (default 40) against double,\n"
+                 "  judged from a low-resolution pre-render (docs/renderer.md)\n"
+                 "  (this is the %s build)\n",
+            NUM_NAME);
+    return status;
+}
+
+/* After RENDER_ERR_DETAIL on a text scene: "; it is in cluster NAME" when
+ * the primitive is in a cluster of its own (the compiled scene, and so
+ * the board's message, keeps no names).  Empty otherwise. */
+static void ref_cluster_note(const char *in, render_status_t rs, const render_frame_t *f,
+                             char *out, size_t cap)
+{
+    out[0] = 0;
+    if (rs != RENDER_ERR_DETAIL || !f || !scene_file_ends_with(in, ".scn"))
+        return;
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    if (sd_parse_file(in, &s, err, sizeof err) != 0)
+        return;
+    if (f->detail_prim < (uint32_t)s.n_prims) {
+        int c = s.prims[f->detail_prim].cluster;
+        if (c > 0 && c < s.n_clusters && s.clusters[c].name[0])
+            snprintf(out, cap, "; it is in cluster %s", s.clusters[c].name);
+    }
+    sd_free(&s);
+}
+
+/* The arena with the loaded scene in it: grown until the scene and one
+ * prepared frame fit.  *mark is where the frame's memory starts. */
+static int ref_load(const char *in, const uint8_t *bytes, size_t len, void **mem,
+                    arena_t *arena, size_t *mark, scene_t *scene)
+{
+    for (size_t size = REF_ARENA_START; size <= REF_ARENA_MAX; size *= 2) {
+        free(*mem);
+        *mem = malloc(size);
+        if (!*mem)
+            break;
+        arena_init(arena, *mem, size);
+        scene_load_error_t lerr;
+        scene_load_status_t ls = scene_load(bytes, len, arena, scene, &lerr);
+        if (ls == SCENE_LOAD_ERR_ARENA)
+            continue;
+        if (ls != SCENE_LOAD_OK) {
+            fprintf(stderr, "links1 ref: %s: %s: %s\n", in, scene_load_status_name(ls),
+                    lerr.message);
+            return -1;
+        }
+        *mark = arena->used;
+        render_frame_t *frame;
+        render_status_t rs = render_prepare(scene, 0, arena, &frame);
+        if (rs == RENDER_ERR_ARENA)
+            continue;
+        if (rs != RENDER_OK) {
+            char why[256], note[64];
+            precision_status_message(frame, rs, why, sizeof why);
+            ref_cluster_note(in, rs, frame, note, sizeof note);
+            fprintf(stderr, "links1 ref: %s: %s%s\n", in, why, note);
+            return -1;
+        }
+        arena_release_to(arena, *mark);
+        return 0;
+    }
+    fprintf(stderr, "links1 ref: %s: no arena up to %u bytes holds the scene\n", in,
+            REF_ARENA_MAX);
+    return -1;
+}
+
+static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena,
+                            size_t mark, long frame, const char *out, int ppm)
+{
+    arena_release_to(arena, mark);
+    render_frame_t *frame_data;
+    render_status_t rs = render_prepare(scene, (uint32_t)frame, arena, &frame_data);
+    if (rs != RENDER_OK) {
+        char why[256], note[64];
+        precision_status_message(frame_data, rs, why, sizeof why);
+        ref_cluster_note(in, rs, frame_data, note, sizeof note);
+        fprintf(stderr, "links1 ref: %s frame %ld: %s%s\n", in, frame, why, note);
+        return -1;
+    }
+    struct image img = {scene->width, scene->height, NULL};
+    img.rgb = malloc((size_t)img.width * (size_t)img.height * 3);
+    rgb8_t *row = malloc(sizeof *row * (size_t)img.width);
+    if (!img.rgb || !row) {
+        fprintf(stderr, "links1 ref: out of memory for the image\n");
+        free(row);
+        image_free(&img);
+        return -1;
+    }
+    render_ctx_t ctx;
+    render_ctx_init(&ctx, frame_data);
+    /* tracing only: make bench's ns per ray; the process's CPU time too,
+     * which other programs on a busy machine inflate far less */
+    struct timespec t0, t1, c0, c1;
+    clock_gettime(CLOCK_MONOTONIC, &t0);
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c0);
+    for (uint32_t y = 0; y < scene->height; y++) {
+        render_span(&ctx, y, 0, scene->width, row);
+        for (int x = 0; x < img.width; x++) {
+            uint8_t *px = img.rgb + 3 * ((size_t)y * (size_t)img.width + (size_t)x);
+            px[0] = row[x].r;
+            px[1] = row[x].g;
+            px[2] = row[x].b;
+        }
+    }
+    clock_gettime(CLOCK_MONOTONIC, &t1);
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
+    double secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
+    double cpu = (double)(c1.tv_sec - c0.tv_sec) + 1e-9 * (double)(c1.tv_nsec - c0.tv_nsec);
+    char err[SD_ERR_MAX];
+    int rc = ppm ? image_write_ppm(out, &img, err, sizeof err)
+                 : image_write_png(out, &img, err, sizeof err);
+    if (rc != 0)
+        fprintf(stderr, "links1 ref: %s\n", err);
+    else
+        fprintf(stderr,
+                "links1 ref (%s): %s frame %ld, %dx%d -> %s; rays: %llu primary, %llu "
+                "shadow, %llu reflection, %llu refraction, %llu transmission, %llu cut by "
+                "weight; "
+                "%u pixels lost precision; %llu box tests, %llu primitive tests; traced in "
+                "%.3f s (%.3f s CPU)\n",
+                NUM_NAME, in, frame, img.width, img.height, out,
+                (unsigned long long)ctx.stats.primary, (unsigned long long)ctx.stats.shadow,
+                (unsigned long long)ctx.stats.reflection,
+                (unsigned long long)ctx.stats.refraction,
+                (unsigned long long)ctx.stats.transmission,
+                (unsigned long long)ctx.stats.weight_cut,
+                (unsigned)ctx.stats.precision_lost_pixels,
+                (unsigned long long)ctx.stats.box_tests, (unsigned long long)ctx.stats.prim_tests,
+                secs, cpu);
+    free(row);
+    image_free(&img);
+    return rc;
+}
+
+static const struct option ref_options[] = {
+    REF_LONG_OPTIONS,
+    {NULL, 0, NULL, 0},
+};
+
+struct ref_args {
+    const char *in, *out;
+    int ppm, many;
+    long first, last;
+    struct scene_file_opts scene;
+};
+
+/* 0, 1 (--help shown) or -1 (bad arguments, reported). */
+static int ref_parse(int argc, char **argv, struct ref_args *a)
+{
+    memset(a, 0, sizeof *a);
+    scene_file_opts_init(&a->scene);
+    struct cli c;
+    cli_init(&c, "links1 ref", argc, argv, REF_SHORT_OPTIONS, ref_options);
+    for (int code; (code = cli_next(&c)) != -1;) {
+        switch (code) {
+        case 'o':
+            a->out = c.arg;
+            break;
+        case 'h':
+            return 1;
+        case REF_OPT_PPM:
+            a->ppm = 1;
+            break;
+        case REF_OPT_NO_AUTO_HIERARCHY:
+            a->scene.no_auto_hierarchy = 1;
+            break;
+        case REF_OPT_REFRACTION:
+            if (strcmp(c.arg, "on") != 0 && strcmp(c.arg, "off") != 0)
+                return cli_bad_value(&c, "on or off");
+            a->scene.refraction = strcmp(c.arg, "on") == 0;
+            break;
+        case REF_OPT_REFRACTIONLESS:
+            if (strcmp(c.arg, "on") != 0 && strcmp(c.arg, "off") != 0)
+                return cli_bad_value(&c, "on or off");
+            a->scene.refractionless = strcmp(c.arg, "on") == 0;
+            break;
+        case REF_OPT_MARK_LOST:
+            a->scene.mark_lost = 1;
+            break;
+        case REF_OPT_MAX_DEPTH:
+            if (cli_int(&c, 0, SCN_MAX_DEPTH, &a->scene.max_depth) < 0)
+                return -1;
+            break;
+        case REF_OPT_MIN_WEIGHT:
+            if (cli_double(&c, 0, 0, 1, NULL, &a->scene.min_weight) < 0)
+                return -1;
+            break;
+        case REF_OPT_DENSITY_STEPS:
+            if (cli_int(&c, SCN_MIN_DENSITY_STEPS, SCN_MAX_DENSITY_STEPS,
+                        &a->scene.density_steps) < 0)
+                return -1;
+            break;
+        case REF_OPT_SIZE:
+            if (cli_parse_size(c.arg, &a->scene.width, &a->scene.height) != 0)
+                return cli_bad_value(&c, cli_size_want());
+            break;
+        case REF_OPT_FRAME:
+        case REF_OPT_FRAMES:
+            a->many = code == REF_OPT_FRAMES;
+            if (cli_parse_frames(c.arg, &a->first, &a->last) != 0 ||
+                (!a->many && a->first != a->last))
+                return cli_bad_value(&c, a->many ? "FIRST:LAST" : "a frame number");
+            break;
+        case CLI_OPERAND:
+            if (!a->in) {
+                a->in = c.arg;
+                break;
+            }
+            fprintf(stderr, "links1 ref: one scene at a time, not also '%s'\n", c.arg);
+            return -1;
+        default:
+            return -1;
+        }
+    }
+    if (!a->in || !a->out) {
+        fprintf(stderr, "links1 ref: %s\n", !a->in ? "no SCENE given" : "no -o OUT given");
+        return -1;
+    }
+    if (!a->ppm && scene_file_ends_with(a->out, ".ppm"))
+        a->ppm = 1;
+    return 0;
+}
+
+int main(int argc, char **argv)
+{
+    struct ref_args a;
+    int r = ref_parse(argc, argv, &a);
+    if (r != 0)
+        return r > 0 ? ref_usage(stdout, 0) : ref_usage(stderr, 2);
+    const char *in = a.in, *out = a.out;
+    long first = a.first, last = a.last;
+
+    char err[SD_ERR_MAX];
+    uint8_t *bytes = NULL;
+    size_t len = 0;
+    if (scene_file_bytes(in, &a.scene, &bytes, &len, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 ref: %s\n", err);
+        return 1;
+    }
+    void *mem = NULL;
+    arena_t arena;
+    size_t mark;
+    scene_t scene;
+    int rc = ref_load(in, bytes, len, &mem, &arena, &mark, &scene);
+    if (rc == 0 && (uint32_t)last >= scene.frame_count) {
+        fprintf(stderr, "links1 ref: %s: frame %ld, the scene has %u frames (0..%u)\n", in,
+                last, (unsigned)scene.frame_count, (unsigned)scene.frame_count - 1);
+        rc = -1;
+    }
+    for (long f = first; rc == 0 && f <= last; f++) {
+        char path[4096];
+        if (a.many)
+            scene_file_frame_path(out, f, path, sizeof path);
+        else
+            snprintf(path, sizeof path, "%s", out);
+        rc = ref_render_frame(in, &scene, &arena, mark, f, path, a.ppm);
+    }
+    free(mem);
+    free(bytes);
+    return rc != 0;
+}

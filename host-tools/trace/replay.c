@@ -1,0 +1,402 @@
+/* replay.c: the discrete-event replay of a traced frame (replay.h). */
+#include "host-tools/trace/replay.h"
+
+#include <inttypes.h>
+#include <math.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+__attribute__((format(printf, 3, 4)))
+static int replay_fail(char *err, size_t cap, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(err, cap, fmt, ap);
+    va_end(ap);
+    return -1;
+}
+
+void replay_free(struct replay_result *r)
+{
+    free(r->areas);
+    free(r->nc_insns);
+    free(r->nc_setup_end);
+    memset(r, 0, sizeof *r);
+}
+
+/* Prices areas from the trace. */
+struct replay_pricer {
+    const struct trace *t;
+    uint32_t *owner;  /* [w*h]: the traced area holding each pixel */
+    uint64_t *prefix; /* [(w+1)*(h+1)]: 2-D prefix sums of the pixel costs */
+    uint64_t rc_mean; /* the RC serving one request that hands out an area */
+    uint64_t setup_mean; /* an NC's set-up of the frame */
+};
+
+static int replay_pricer_init(struct replay_pricer *p, const struct trace *t)
+{
+    memset(p, 0, sizeof *p);
+    p->t = t;
+    size_t n = (size_t)t->width * t->height;
+    p->owner = malloc(n * sizeof *p->owner);
+    p->prefix = calloc((size_t)(t->width + 1) * (t->height + 1), sizeof *p->prefix);
+    if (!p->owner || !p->prefix)
+        return -1;
+    uint64_t rc = 0;
+    for (uint32_t i = 0; i < t->nareas; i++) {
+        const struct trace_area *a = &t->areas[i];
+        rc += a->rc;
+        for (uint32_t y = a->y; y < a->y + a->h; y++)
+            for (uint32_t x = a->x; x < a->x + a->w; x++)
+                p->owner[(size_t)y * t->width + x] = i;
+    }
+    p->rc_mean = rc / t->nareas;
+    uint64_t s = 0;
+    for (uint32_t i = 0; i < t->ncs; i++)
+        s += t->nc_setup[i];
+    p->setup_mean = s / t->ncs;
+    size_t W = t->width + 1;
+    for (uint32_t y = 0; y < t->height; y++)
+        for (uint32_t x = 0; x < t->width; x++)
+            p->prefix[(y + 1) * W + x + 1] = t->pixel[(size_t)y * t->width + x] +
+                                             p->prefix[y * W + x + 1] +
+                                             p->prefix[(y + 1) * W + x] - p->prefix[y * W + x];
+    return 0;
+}
+
+static void replay_pricer_free(struct replay_pricer *p)
+{
+    free(p->owner);
+    free(p->prefix);
+}
+
+/* The NC's instructions for area a, and the RC's for handing it out. */
+static uint64_t replay_price(const struct replay_pricer *p, const struct area *a, int *exact,
+                             uint64_t *rc)
+{
+    const struct trace *t = p->t;
+    const struct trace_area *o = &t->areas[p->owner[(size_t)a->y * t->width + a->x]];
+    if (o->x == a->x && o->y == a->y && o->w == a->w && o->h == a->h) {
+        *exact = 1;
+        *rc = o->rc;
+        return o->total;
+    }
+    *exact = 0;
+    *rc = p->rc_mean;
+    size_t W = t->width + 1;
+    uint64_t sum = p->prefix[(a->y + a->h) * W + a->x + a->w] - p->prefix[a->y * W + a->x + a->w] -
+                   p->prefix[(a->y + a->h) * W + a->x] + p->prefix[a->y * W + a->x];
+    uint64_t push = o->push * a->w * a->h / ((uint64_t)o->w * o->h);
+    return o->setup + sum + push;
+}
+
+/* The next area for NC nc: from the schedule, or the NC's own recorded
+ * list.  1, or 0 when there is none. */
+struct replay_source {
+    struct areas sched;
+    const struct trace *t;
+    int as_recorded;
+    uint32_t *next_of_nc; /* as recorded: the order of each NC's next area */
+    uint32_t **list;      /* as recorded: per NC, its areas' indexes in order */
+    uint32_t *count;      /* as recorded: per NC, its area count */
+};
+
+static int replay_next(struct replay_source *s, uint32_t nc, struct area *a)
+{
+    if (!s->as_recorded)
+        return areas_next(&s->sched, a);
+    if (s->next_of_nc[nc] >= s->count[nc])
+        return 0;
+    const struct trace_area *ta = &s->t->areas[s->list[nc][s->next_of_nc[nc]++]];
+    *a = (struct area){ta->x, ta->y, ta->w, ta->h};
+    return 1;
+}
+
+static double replay_line(const struct replay_cfg *c, uint32_t bytes)
+{
+    return c->line_us + c->byte_us * bytes;
+}
+
+int replay_run(const struct trace *t, const struct replay_cfg *c, struct replay_result *r,
+               char *err, size_t cap)
+{
+    memset(r, 0, sizeof *r);
+    if (c->ncs == 0 || c->ncs > 4096)
+        return replay_fail(err, cap, "NC count %" PRIu32 ": must be 1..4096", c->ncs);
+    if (!(c->mips > 0) || !(c->line_us >= 0) || !(c->byte_us >= 0))
+        return replay_fail(err, cap, "--mips must be above 0, --line-us and --byte-us at least 0");
+    if (c->as_recorded && c->ncs != t->ncs)
+        return replay_fail(err, cap, "--as-recorded replays the board's %" PRIu32 " NCs, not %"
+                           PRIu32, t->ncs, c->ncs);
+    struct replay_source src;
+    memset(&src, 0, sizeof src);
+    src.t = t;
+    src.as_recorded = c->as_recorded;
+    int st = areas_init(&src.sched, c->as_recorded ? AREAS_STATIC : c->balance, t->width,
+                        t->height, c->ncs, c->k);
+    if (st == AREAS_OK && c->guided)
+        st = areas_set_guided_factor(&src.sched, c->guided);
+    if (st != AREAS_OK)
+        return replay_fail(err, cap, "area schedule: %s", areas_strerror(st));
+    struct replay_pricer p;
+    int rc = -1;
+    uint32_t total = c->as_recorded ? t->nareas : areas_count(&src.sched);
+    double *pending = malloc(c->ncs * sizeof *pending);      /* request arrival, or INF */
+    double *sent = malloc(c->ncs * sizeof *sent);            /* when that request left */
+    double *busy_until = calloc(c->ncs, sizeof *busy_until);
+    double *computing = calloc(c->ncs, sizeof *computing);
+    r->areas = calloc(total, sizeof *r->areas);
+    r->nc_insns = calloc(c->ncs, sizeof *r->nc_insns);
+    r->nc_setup_end = calloc(c->ncs, sizeof *r->nc_setup_end);
+    if (c->as_recorded) {
+        src.next_of_nc = calloc(t->ncs, sizeof *src.next_of_nc);
+        src.count = calloc(t->ncs, sizeof *src.count);
+        src.list = calloc(t->ncs, sizeof *src.list);
+    }
+    if (replay_pricer_init(&p, t) != 0 || !pending || !sent || !busy_until || !computing ||
+        !r->areas || !r->nc_insns || !r->nc_setup_end ||
+        (c->as_recorded && (!src.next_of_nc || !src.count || !src.list))) {
+        replay_fail(err, cap, "out of memory");
+        goto out;
+    }
+    if (c->as_recorded) {
+        for (uint32_t i = 0; i < t->nareas; i++)
+            src.count[t->areas[i].nc]++;
+        for (uint32_t n = 0; n < t->ncs; n++) {
+            src.list[n] = calloc(src.count[n] ? src.count[n] : 1, sizeof **src.list);
+            if (!src.list[n]) {
+                replay_fail(err, cap, "out of memory");
+                goto out;
+            }
+        }
+        for (uint32_t i = 0; i < t->nareas; i++)
+            src.list[t->areas[i].nc][t->areas[i].order] = i;
+    }
+    double us_per = 1.0 / c->mips; /* microseconds per instruction */
+    double t0 = (double)((c->pipelined ? 0 : t->dm_prepare) + t->rc_broadcast) * us_per;
+    for (uint32_t n = 0; n < c->ncs; n++) {
+        uint64_t setup = c->as_recorded ? t->nc_setup[n] : p.setup_mean;
+        r->nc_setup_end[n] = busy_until[n] = t0 + (double)setup * us_per;
+        computing[n] = (double)setup * us_per;
+        sent[n] = busy_until[n];
+        pending[n] = sent[n] + replay_line(c, REPLAY_REQUEST_BYTES);
+    }
+    double rc_free = t0, rc_busy = 0;
+    if (c->first_in_broadcast) {
+        /* The RC takes each NC's first area from the schedule before the
+         * broadcast goes out; the NCs start on it after their set-up. */
+        struct area *first = calloc(c->ncs, sizeof *first);
+        uint64_t *first_insns = calloc(c->ncs, sizeof *first_insns);
+        int *first_exact = calloc(c->ncs, sizeof *first_exact);
+        int *have = calloc(c->ncs, sizeof *have);
+        if (!first || !first_insns || !first_exact || !have) {
+            free(first);
+            free(first_insns);
+            free(first_exact);
+            free(have);
+            replay_fail(err, cap, "out of memory");
+            goto out;
+        }
+        for (uint32_t n = 0; n < c->ncs; n++) {
+            uint64_t rc_insns = p.rc_mean;
+            have[n] = replay_next(&src, n, &first[n]);
+            if (have[n])
+                first_insns[n] = replay_price(&p, &first[n], &first_exact[n], &rc_insns);
+            rc_free += (double)rc_insns * us_per;
+        }
+        rc_busy += rc_free - t0;
+        for (uint32_t n = 0; n < c->ncs; n++) {
+            double shift = rc_free - t0;
+            r->nc_setup_end[n] += shift;
+            busy_until[n] += shift;
+            if (!have[n]) {
+                pending[n] = INFINITY;
+                continue;
+            }
+            double start = busy_until[n], end = start + (double)first_insns[n] * us_per;
+            struct replay_area *ra = &r->areas[r->nareas++];
+            *ra = (struct replay_area){first[n].x, first[n].y, first[n].w, first[n].h, n,
+                                       first_insns[n], first_exact[n], 1, t0, t0, rc_free,
+                                       start, end};
+            r->exact += (uint32_t)first_exact[n];
+            busy_until[n] = end;
+            computing[n] += end - start;
+            r->nc_insns[n] += first_insns[n];
+            sent[n] = end;
+            if (c->prefetch) {
+                double lead = replay_line(c, REPLAY_REQUEST_BYTES) +
+                              replay_line(c, REPLAY_ANSWER_BYTES) + (double)p.rc_mean * us_per;
+                sent[n] = end - lead > start ? end - lead : start;
+            }
+            pending[n] = sent[n] + replay_line(c, REPLAY_REQUEST_BYTES);
+        }
+        free(first);
+        free(first_insns);
+        free(first_exact);
+        free(have);
+    }
+    for (;;) {
+        uint32_t nc = 0;
+        double first = INFINITY;
+        for (uint32_t n = 0; n < c->ncs; n++)
+            if (pending[n] < first) {
+                first = pending[n];
+                nc = n;
+            }
+        if (first == INFINITY)
+            break;
+        struct area a;
+        int have = replay_next(&src, nc, &a);
+        int exact = 0;
+        uint64_t rc_insns = p.rc_mean, insns = 0;
+        if (have)
+            insns = replay_price(&p, &a, &exact, &rc_insns);
+        double s = rc_free > first ? rc_free : first;
+        double e = s + (double)rc_insns * us_per;
+        rc_free = e;
+        rc_busy += e - s;
+        if (!have) {
+            pending[nc] = INFINITY;
+            continue;
+        }
+        if (r->nareas == total) {
+            replay_fail(err, cap, "the schedule handed out more areas than it counts");
+            goto out;
+        }
+        double arrive = e + replay_line(c, REPLAY_ANSWER_BYTES);
+        double start = arrive > busy_until[nc] ? arrive : busy_until[nc];
+        double end = start + (double)insns * us_per;
+        struct replay_area *ra = &r->areas[r->nareas++];
+        *ra = (struct replay_area){a.x, a.y, a.w, a.h, nc, insns, exact, 0, sent[nc], s, e,
+                                   start, end};
+        r->exact += (uint32_t)exact;
+        busy_until[nc] = end;
+        computing[nc] += end - start;
+        r->nc_insns[nc] += insns;
+        if (c->prefetch) {
+            /* One round trip before the area's end, never before its start. */
+            double lead = replay_line(c, REPLAY_REQUEST_BYTES) + replay_line(c, REPLAY_ANSWER_BYTES) +
+                          (double)p.rc_mean * us_per;
+            sent[nc] = end - lead > start ? end - lead : start;
+        } else {
+            sent[nc] = end;
+        }
+        pending[nc] = sent[nc] + replay_line(c, REPLAY_REQUEST_BYTES);
+    }
+    double frame = t0;
+    double work = 0;
+    for (uint32_t n = 0; n < c->ncs; n++) {
+        if (busy_until[n] > frame)
+            frame = busy_until[n];
+        work += computing[n];
+    }
+    r->frame_us = frame;
+    r->busy = frame > 0 ? work / (c->ncs * frame) : 0;
+    r->rc_busy = frame > 0 ? rc_busy / frame : 0;
+    rc = 0;
+out:
+    replay_pricer_free(&p);
+    free(pending);
+    free(sent);
+    free(busy_until);
+    free(computing);
+    if (src.list)
+        for (uint32_t n = 0; n < t->ncs; n++)
+            free(src.list[n]);
+    free(src.list);
+    free(src.count);
+    free(src.next_of_nc);
+    if (rc != 0)
+        replay_free(r);
+    return rc;
+}
+
+int replay_check_legal(const struct trace *t, const struct replay_cfg *c,
+                       const struct replay_result *r, char *err, size_t cap)
+{
+    const double eps = 1e-6;
+    size_t n = (size_t)t->width * t->height;
+    uint8_t *seen = calloc(n, 1);
+    double *last_end = calloc(c->ncs, sizeof *last_end);
+    double *last_start = calloc(c->ncs, sizeof *last_start);
+    int rc = 0;
+    if (!seen || !last_end || !last_start) {
+        rc = replay_fail(err, cap, "out of memory");
+        goto out;
+    }
+    struct areas sched;
+    if (!c->as_recorded &&
+        (areas_init(&sched, c->balance, t->width, t->height, c->ncs, c->k) != AREAS_OK ||
+         (c->guided && areas_set_guided_factor(&sched, c->guided) != AREAS_OK))) {
+        rc = replay_fail(err, cap, "bad schedule");
+        goto out;
+    }
+    if (!c->as_recorded && r->nareas != areas_count(&sched)) {
+        rc = replay_fail(err, cap, "%" PRIu32 " areas handed out, the schedule has %" PRIu32,
+                         r->nareas, areas_count(&sched));
+        goto out;
+    }
+    for (uint32_t n2 = 0; n2 < c->ncs; n2++)
+        last_end[n2] = last_start[n2] = r->nc_setup_end[n2];
+    /* Requests the RC served: each starts after the one before it ended. */
+    double rc_free = 0;
+    for (uint32_t i = 0; i < r->nareas && rc == 0; i++) {
+        const struct replay_area *a = &r->areas[i];
+        struct area want;
+        if (!c->as_recorded && (!areas_next(&sched, &want) || want.x != a->x ||
+                                want.y != a->y || want.w != a->w || want.h != a->h)) {
+            rc = replay_fail(err, cap, "area %" PRIu32 " is not the schedule's next", i);
+            break;
+        }
+        if (a->nc >= c->ncs) {
+            rc = replay_fail(err, cap, "area %" PRIu32 " went to NC %" PRIu32, i, a->nc);
+            break;
+        }
+        double line_req = a->in_broadcast ? 0 : replay_line(c, REPLAY_REQUEST_BYTES);
+        double line_ans = a->in_broadcast ? 0 : replay_line(c, REPLAY_ANSWER_BYTES);
+        double asked_after = c->prefetch ? last_start[a->nc] : last_end[a->nc];
+        if (a->in_broadcast && (!c->first_in_broadcast || i >= c->ncs || a->nc != i))
+            rc = replay_fail(err, cap, "area %" PRIu32 " came with the broadcast, but it is "
+                             "not NC %" PRIu32 "'s first", i, a->nc);
+        else if (a->in_broadcast && a->start + eps < a->serve_end)
+            rc = replay_fail(err, cap, "area %" PRIu32 ": started before the broadcast", i);
+        else if (a->in_broadcast)
+            ; /* no request, no line */
+        else if (a->request_sent + eps < asked_after)
+            rc = replay_fail(err, cap, "area %" PRIu32 ": NC %" PRIu32 " asked before it %s "
+                             "its previous area", i, a->nc, c->prefetch ? "started" : "finished");
+        else if (a->serve_start + eps < a->request_sent + line_req)
+            rc = replay_fail(err, cap, "area %" PRIu32 ": served before the request arrived", i);
+        else if (a->serve_start + eps < rc_free)
+            rc = replay_fail(err, cap, "area %" PRIu32 ": the RC served two requests at once",
+                             i);
+        else if (a->start + eps < a->serve_end + line_ans || a->start + eps < last_end[a->nc])
+            rc = replay_fail(err, cap, "area %" PRIu32 ": NC %" PRIu32 " started it before the "
+                             "answer arrived or while busy", i, a->nc);
+        else if (a->end < a->start)
+            rc = replay_fail(err, cap, "area %" PRIu32 " ends before it starts", i);
+        if (rc)
+            break;
+        rc_free = a->serve_end;
+        last_end[a->nc] = a->end;
+        last_start[a->nc] = a->start;
+        for (uint32_t y = a->y; y < a->y + a->h && rc == 0; y++)
+            for (uint32_t x = a->x; x < a->x + a->w; x++)
+                if (y >= t->height || x >= t->width || seen[(size_t)y * t->width + x]++) {
+                    rc = replay_fail(err, cap, "area %" PRIu32 " is off the screen or overlaps "
+                                     "another", i);
+                    break;
+                }
+    }
+    for (size_t p = 0; p < n && rc == 0; p++)
+        if (!seen[p])
+            rc = replay_fail(err, cap, "pixel (%zu,%zu) was handed to no NC", p % t->width,
+                             p / t->width);
+out:
+    free(seen);
+    free(last_end);
+    free(last_start);
+    return rc;
+}
