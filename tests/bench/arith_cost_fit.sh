@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # arith_cost_fit.sh: the board cost model behind `--arith auto`
-# (host-tools/scene/arith_cost.c, docs/RESULTS.md "--arith auto").
+# (host-tools/scene/arith_cost.c, docs/results/arith-auto.md).
 #
 # For each calibration scene (the four scenes of bench_arith and sweep
 # scenes of every family) and each board firmware (float, soft, fixed): one

@@ -4,8 +4,8 @@
 # (TCG plugin, --count-insns; the sum over NCs, which does not depend on how
 # areas were shared out) and how far the board's image is from the host's
 # double reference (fraction of pixels within 1/255 and 2/255 on every
-# channel, largest difference).  Prints the table of docs/RESULTS.md
-# ("Speed against accuracy").
+# channel, largest difference).  Prints the table of
+# docs/results/speed-vs-accuracy.md ("The three board arithmetics").
 set -u
 cd "$(dirname "$0")/../.."
 LINKS1=${LINKS1:-build/links1}

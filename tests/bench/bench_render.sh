@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # bench_render.sh: guest instructions of links1 render, counted per core by
-# the TCG plugin (--count-insns), printed as the tables of docs/RESULTS.md
-# ("GIGS pipeline").  Counts cover the whole board session: boot, upload,
+# the TCG plugin (--count-insns), printed as the tables of
+# docs/results/gigs-pipeline.md.  Counts cover the whole board session: boot, upload,
 # preparing, rendering, pulling the frame.  NC work = an NC's count; the
 # critical path of a frame = the largest NC count; speed-up over N NCs =
 # (NC total of the 1-NC run) / (largest NC count of the N-NC run).  The

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # bench_scale.sh: cost per ray as scenes grow (issue 8), printed as the
-# tables of docs/RESULTS.md ("Scenes of real size").
+# tables of docs/results/scenes-of-real-size.md.
 #   1. one flat cluster of n random spheres, n = 100 .. 100,000: host ns per
 #      ray (links1 ref --arith float, tracing time only) with the automatic
 #      hierarchy on, and off up to 1,000 (it grows linearly beyond);

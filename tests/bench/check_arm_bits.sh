@@ -8,7 +8,7 @@
 # compares the CRC-32 of every image; also that each scene copied to another
 # block, relocated and rendered by areas with screen clipping (the board's
 # way) gives the same CRC.  Prints PASS/FAIL lines.  A reproduce command
-# (docs/RESULTS.md), not part of `make test`.
+# (docs/results/accuracy-and-pov.md), not part of `make test`.
 set -u
 cd "$(dirname "$0")/../.."
 out=build/arm-bits

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # figures.sh: the paper's figures and tables on equal-speed unit computers
-# (docs/RESULTS.md, "The paper's figures"): each from board runs traced with
+# (docs/results/paper-figures.md): each from board runs traced with
 # links1 render --trace and replayed with links1 replay.  Writes into
 # FIG_OUT (default docs/figures): fig7.png, fig10.png (gnuplot), and
 # fig7.md, fig10.md, table2.md, table3.md (the numbers, with the commands).
@@ -31,7 +31,7 @@ else
 fi
 SIZE2=${FIG_T2_SIZE:-$SIZE2} SIZE2LOW=${FIG_T2_LOW:-$SIZE2LOW}
 PARTS=" ${FIG_PARTS:-7 10 2 3} " # which figures to make
-# The tuned replay (docs/RESULTS.md): decreasing areas, an NC asking for its
+# The tuned replay (docs/results/paper-figures.md): decreasing areas, an NC asking for its
 # next area a round trip before it finishes, the DM preparing the frame
 # while the previous one renders; per NC count the best smallest-area bound
 # K and guided factor G of these (finer final areas pay off until the RC's

@@ -48,7 +48,7 @@ fuzz_import_LIBS = $(SCENE_TEXT_LIBS)
 # on every line of the project's code: after 1,190 inputs from seed 1 one
 # day, within 1,000 the next), so its smoke run replays the seed corpus and
 # the regression inputs only (-runs=0); the 10-minute run mutates, in fork
-# mode past libassimp's crashes (see RESULTS)
+# mode past libassimp's crashes (see docs/results/fuzzing-and-hostile.md)
 fuzz_import_SMOKE_RUNS := 0
 # libassimp 5.2 itself aborts or loops on some inputs (tests/fuzz/assimp-crashes/):
 # the long run goes on past them in fork mode, keeping each input

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# tests/sweeps/auto.sh: `--arith auto` on every sweep scene (docs/RESULTS.md,
-# "--arith auto on the sweep scenes").  For each scene of families.sh at
+# tests/sweeps/auto.sh: `--arith auto` on every sweep scene
+# (docs/results/arith-auto.md).  For each scene of families.sh at
 # SIZE (default 160x120) and each unit computer (--fpu vfp, --fpu none):
 #   pick   what `links1 ref --arith auto` chose from its pre-render
 #   truth  every candidate rendered at SIZE by its host build, PSNR against
@@ -10,7 +10,7 @@
 #          take the fixed firmware's count), measured for every firmware
 #          that has a candidate at or above TARGET dB
 #   best   the cheapest candidate at or above TARGET dB at SIZE
-# Writes DIR/auto.tsv and DIR/auto.md (the table of docs/RESULTS.md) and
+# Writes DIR/auto.tsv and DIR/auto.md (the table of docs/results/arith-auto.md) and
 # prints the summary: scenes where the pick keeps
 # TARGET dB, and the largest cost of the pick over the best.
 #   bash tests/sweeps/auto.sh [--out DIR]
@@ -136,7 +136,7 @@ for fpu in vfp none; do
     }' "$tsv"
 done
 
-# the table of docs/RESULTS.md
+# the table of docs/results/arith-auto.md
 awk -F'\t' 'BEGIN {
     print "| family | knob | VFP: pick, PSNR, NC insns/pixel, pick / best | no FPU: pick | PSNR | NC insns/pixel | best at 40 dB (insns/pixel) | pick / best |"
     print "|---|---|---|---|---|---|---|---|"

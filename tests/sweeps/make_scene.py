@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """make_scene.py FAMILY KNOB [--size WxH]: one scene of a sweep family, as
 scene text on stdout.  Each family varies one knob; the rest of the scene
-stays the same (docs/RESULTS.md, "Where each method fails").
+stays the same (docs/results/sweeps.md).
 
   scale   three shapes on a floor, every length times KNOB (1e-3..1e3);
           the image should not change

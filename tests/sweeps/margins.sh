@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # tests/sweeps/margins.sh: sweep scenes that left wrong pixels neither
-# flagged nor explained by a move under a pixel (docs/RESULTS.md, issue 11),
+# flagged nor explained by a move under a pixel (docs/results/sweeps.md),
 # at the sweeps' full size 160x120, where a hit-or-miss decision was closer
 # than the arithmetic's error (render_prim_t.edge_error): triangles 3000 and
 # 10000 times longer than wide, thinner than a pixel, in fixed point (an

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # tests/sweeps/pareto.sh: speed against accuracy, one point per configuration
-# (docs/RESULTS.md, "The Pareto chart").  `make figures` runs it.
+# (docs/results/speed-vs-accuracy.md).  `make figures` runs it.
 #
 # Scene: scenes/demo.scn at SIZE (default 160x120): refraction, a mirror,
 # density spheres, colour and bump maps.  Reference: the double build with

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# tests/sweeps/sweep.sh: where each arithmetic breaks (docs/RESULTS.md).
+# tests/sweeps/sweep.sh: where each arithmetic breaks (docs/results/sweeps.md).
 #
 #   bash tests/sweeps/sweep.sh [--quick] [--out DIR]
 #
@@ -16,7 +16,7 @@
 #          pixel (links1 compare --silhouette --moved: next to an edge of
 #          the double image, or within 2/255 of a pixel next to it there:
 #          an edge or a thin object moved by less than a pixel flips the
-#          pixels along it, in any arithmetic; docs/RESULTS.md).
+#          pixels along it, in any arithmetic; docs/results/sweeps.md).
 # A refused scene is a result too (the refusal names the reason).
 # Writes DIR/sweep.tsv (one line per family, knob, arithmetic), DIR/breaks.md
 # (the knob where each arithmetic first has more than 1% of pixels beyond
