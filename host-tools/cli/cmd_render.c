@@ -573,7 +573,7 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         o->wall.board_render += s.render_ms;
         if (cpu0 >= 0 && cpu1 >= 0)
             o->wall.render_cpu += cpu1 - cpu0;
-        if (render_session_pull(b, &img, &pull_ms) != 0)
+        if (render_session_pull(b, (int)info.width, (int)info.height, &img, &pull_ms) != 0)
             return -1;
         long long t2 = board_now_ms();
         o->wall.pull += t2 - t1;

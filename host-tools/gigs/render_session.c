@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "host-tools/link/board_text.h"
 #include "host-tools/link/link_shared.h"
 #include "host-tools/link/link_transfer.h"
 #include "host-tools/gigs/render_faults.h"
@@ -144,8 +145,9 @@ int render_session_frame(struct board *b, const struct link_render_args *a, int 
         const uint8_t *fields = f.payload + LINK_RESULT_FIXED_SIZE;
         size_t n = f.length - LINK_RESULT_FIXED_SIZE;
         if (status != LINK_OK) {
-            fprintf(stderr, "links1: frame %u: the board says: %.*s (%s)\n", a->frame, (int)n,
-                    (const char *)fields, board_status_name(status));
+            char text[BOARD_TEXT_CAP(LINK_MAX_PAYLOAD)];
+            fprintf(stderr, "links1: frame %u: the board says: %s (%s)\n", a->frame,
+                    board_text(fields, n, text, sizeof text), board_status_name(status));
             return -1;
         }
         if (n < LINK_RENDER_STATS_SIZE) {
@@ -165,24 +167,25 @@ int render_session_frame(struct board *b, const struct link_render_args *a, int 
     }
 }
 
-/* The frame memory as one DATA transfer of r,g,b bytes into *buf; *have
- * bytes with CRC *crc. */
-static int render_session_pull_serial(struct board *b, uint8_t **buf, size_t *have,
-                                      uint32_t *crc)
+/* The frame memory as one DATA transfer of r,g,b bytes into *buf (want
+ * bytes: the frame's own size, and not a byte more); *have bytes with CRC
+ * *crc. */
+static int render_session_pull_serial(struct board *b, size_t want, uint8_t **buf,
+                                      size_t *have, uint32_t *crc)
 {
-    size_t cap = 0;
+    *buf = malloc(want ? want : 1);
+    if (!*buf) {
+        fprintf(stderr, "links1: out of memory for the frame\n");
+        return -1;
+    }
     for (;;) {
         struct board_frame f;
         if (board_wait_frame(b, LINK_DATA, BOARD_FRAME_TIMEOUT_MS, &f, "frame memory DATA") < 0)
             return -1;
-        if (*have + f.length > cap) {
-            cap = cap ? 2 * cap + f.length : 1u << 20;
-            uint8_t *nb = realloc(*buf, cap);
-            if (!nb) {
-                fprintf(stderr, "links1: out of memory for the frame\n");
-                return -1;
-            }
-            *buf = nb;
+        if (f.length > want - *have) {
+            fprintf(stderr, "links1: frame pull: the board sent more than the frame's %zu "
+                    "bytes (%zu, then a DATA frame of %u); stopped\n", want, *have, f.length);
+            return -1;
         }
         memcpy(*buf + *have, f.payload, f.length);
         *have += f.length;
@@ -197,18 +200,19 @@ static int render_session_pull_serial(struct board *b, uint8_t **buf, size_t *ha
 }
 
 /* The frame memory read where it lies in the board's RAM, one u32 word per
- * pixel, into *buf as r,g,b bytes.  r = 1: the board answered instead. */
-static int render_session_pull_shared(struct board *b, uint8_t **buf, size_t *words,
-                                      uint32_t *crc)
+ * pixel (want words' bytes, no other size), into *buf as r,g,b bytes.
+ * r = 1: the board answered instead. */
+static int render_session_pull_shared(struct board *b, size_t want, uint8_t **buf,
+                                      size_t *words, uint32_t *crc)
 {
     struct link_bulk k;
     const uint8_t *data;
     int r = link_shared_receive(b, &k, &data);
     if (r != 0)
         return r;
-    if (k.length % LINK_FRAME_WORD_SIZE) {
-        fprintf(stderr, "links1: frame pull: %u bytes of frame memory, not whole pixels\n",
-                k.length);
+    if (k.length != want) {
+        fprintf(stderr, "links1: frame pull: the board offers %u bytes of frame memory, the "
+                "frame is %zu\n", k.length, want);
         return -1;
     }
     size_t px = k.length / LINK_FRAME_WORD_SIZE;
@@ -224,7 +228,8 @@ static int render_session_pull_shared(struct board *b, uint8_t **buf, size_t *wo
     return 0;
 }
 
-int render_session_pull(struct board *b, struct image *img, long long *pull_ms)
+int render_session_pull(struct board *b, int width, int height, struct image *img,
+                        long long *pull_ms)
 {
     int shared = b->opts.link == LINK_PATH_SHARED;
     uint8_t arg = (uint8_t)b->opts.link;
@@ -233,11 +238,21 @@ int render_session_pull(struct board *b, struct image *img, long long *pull_ms)
     size_t have = 0; /* bytes as the board sent them */
     uint32_t crc = 0;
     int r;
+    size_t per_px = shared ? LINK_FRAME_WORD_SIZE : 3;
+    if (width < 1 || height < 1 || width > IMAGE_MAX_SIDE || height > IMAGE_MAX_SIDE) {
+        fprintf(stderr, "links1: frame pull: a %dx%d frame\n", width, height);
+        return -1;
+    }
+    size_t want = (size_t)width * (size_t)height * per_px;
     for (int t = 1;; t++) {
         if (board_send_cmd(b, CMD_FRAME_PULL, &arg, sizeof arg) < 0)
             return -1;
-        r = shared ? render_session_pull_shared(b, &buf, &have, &crc)
-                   : render_session_pull_serial(b, &buf, &have, &crc);
+        free(buf);
+        buf = NULL;
+        have = 0;
+        crc = 0;
+        r = shared ? render_session_pull_shared(b, want, &buf, &have, &crc)
+                   : render_session_pull_serial(b, want, &buf, &have, &crc);
         if (r != -2 || t == LINK_BULK_TRIES)
             break;
         /* The shared bytes did not have the board's CRC: its result, then
@@ -263,8 +278,7 @@ int render_session_pull(struct board *b, struct image *img, long long *pull_ms)
         return -1;
     }
     int w = wire_get_u16(fields), h = wire_get_u16(fields + 2);
-    size_t per_px = shared ? LINK_FRAME_WORD_SIZE : 3;
-    if ((size_t)w * (size_t)h * per_px != have || wire_get_u32(fields + 4) != crc) {
+    if (w != width || h != height || want != have || wire_get_u32(fields + 4) != crc) {
         fprintf(stderr, "links1: frame pull: %zu bytes with crc 0x%08x, the board says %dx%d "
                 "pixels with crc 0x%08x\n", have, crc, w, h, wire_get_u32(fields + 4));
         free(buf);

@@ -37,8 +37,12 @@ int render_session_frame(struct board *b, const struct link_render_args *a, int 
                          const uint8_t *plan, size_t plan_len, struct link_render_stats *stats,
                          struct link_render_fails *fails);
 
-/* CMD_FRAME_PULL on the path b->opts.link names, into img (malloc'ed;
- * image_free it); *pull_ms: from the command to the checked result. */
-int render_session_pull(struct board *b, struct image *img, long long *pull_ms);
+/* CMD_FRAME_PULL of the width x height frame (the scene's, as its upload
+ * said) on the path b->opts.link names, into img (malloc'ed; image_free
+ * it); *pull_ms: from the command to the checked result.  No more than the
+ * frame's own bytes are taken: a board that sends more is refused at the
+ * first byte beyond. */
+int render_session_pull(struct board *b, int width, int height, struct image *img,
+                        long long *pull_ms);
 
 #endif

@@ -57,6 +57,7 @@ static void board_qemu_exec_failed(const char *qemu)
  * a file, both in its state directory) runs on in a session of its own. */
 static void board_qemu_exec(struct board *b, int qemu_fd)
 {
+    signal(SIGPIPE, SIG_DFL); /* the session's SIG_IGN is ours, not QEMU's */
     char smp[32], mem[32], chardev[PATH_MAX + 64], plugin[3 * PATH_MAX], ram[PATH_MAX + 96];
     snprintf(smp, sizeof smp, "%d", b->opts.ncores);
     snprintf(mem, sizeof mem, "%dM", b->opts.ram_mb);
@@ -273,8 +274,6 @@ int board_start(struct board *b, const struct board_opts *o)
         board_ram_release(b);
         return -1;
     }
-    /* A write to a socket QEMU has closed must fail with EPIPE, not kill us. */
-    signal(SIGPIPE, SIG_IGN);
     int sv[2];
     if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) < 0) {
         fprintf(stderr, "links1: socketpair: %s\n", strerror(errno));
@@ -336,7 +335,6 @@ int board_start_named(struct board *b, const struct board_opts *o, const char *n
         board_stop(b);
         return -1;
     }
-    signal(SIGPIPE, SIG_IGN);
     fflush(NULL);
     pid_t pid = fork();
     if (pid < 0) {

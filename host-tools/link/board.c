@@ -5,10 +5,12 @@
  * happened to the process when the link ends (board.process_gone). */
 #include "host-tools/link/board.h"
 #include "host-tools/link/board_arq.h"
+#include "host-tools/link/board_text.h"
 
 #include <errno.h>
 #include <fcntl.h>
 #include <poll.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -38,6 +40,10 @@ int board_arith_code(const char *arith)
 
 int board_session_init(struct board *b, const struct board_opts *o)
 {
+    /* A write to a link whose far end is gone (QEMU exited, a named board
+     * stopped) must fail with EPIPE and a message, not kill the tool
+     * silently with its temporary files left behind. */
+    signal(SIGPIPE, SIG_IGN);
     memset(b, 0, sizeof *b);
     b->opts = *o;
     b->fd = -1;
@@ -608,8 +614,9 @@ int board_wait_ok(struct board *b, uint16_t cmd, int timeout_ms, size_t min_fiel
         return -1;
     }
     if (status != LINK_OK) {
-        snprintf(why, cap, "the board says: %.*s (%s)", (int)*nfields, (const char *)*fields,
-                 board_status_name(status));
+        char text[BOARD_TEXT_CAP(LINK_MAX_PAYLOAD)];
+        snprintf(why, cap, "the board says: %s (%s)",
+                 board_text(*fields, *nfields, text, sizeof text), board_status_name(status));
         return -1;
     }
     if (*nfields < min_fields) {

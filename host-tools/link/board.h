@@ -2,7 +2,8 @@
  * board's UART (a socket the launcher hands over: host-tools/launcher/).
  *
  * Frames from the board are decoded as they arrive.  LOG text, HELLO
- * (report-in) and FAULT frames are printed and recorded at once, whatever the
+ * (report-in) and FAULT frames are printed (the board's text escaped,
+ * board_text.h) and recorded at once, whatever the
  * caller is waiting for; every other frame (RESULT, DATA, ACK) is queued
  * until board_wait_frame() asks for its type.  Every call that waits takes a
  * timeout and returns an error naming what did not come.
@@ -93,8 +94,9 @@ struct board {
     uint32_t host_frames_dropped; /* board's reports (RESULT for cmd 0) of frames
                                      from the host it dropped */
     int host_drop_status;       /* status of the last such report */
-    char host_drop_text[LINK_MAX_PAYLOAD + 1]; /* and its text */
-    char fault_text[BOARD_MAX_FAULTS][BOARD_FAULT_TEXT]; /* text of each kept fault */
+    char host_drop_text[LINK_MAX_PAYLOAD + 1]; /* and its text (escaped: board_text.h) */
+    char fault_text[BOARD_MAX_FAULTS][BOARD_FAULT_TEXT]; /* text of each kept fault
+                                                             (escaped) */
     int named;                  /* 1: a named board (board_named.c), which runs
                                    on after this session */
     char state_dir[4096];       /* a named board's state directory */
@@ -109,8 +111,9 @@ struct board {
  * The launcher (host-tools/launcher/launcher.h) starts a board and opens a
  * session on it; the host tests play the board on the other end of a
  * socketpair (board_attach). */
-/* b emptied, o copied, the retransmission's state allocated.  0, or -1
- * after printing why.  Every session ends with board_session_close (the
+/* b emptied, o copied, the retransmission's state allocated, SIGPIPE
+ * ignored (a write to a link whose far end is gone fails with an error).
+ * 0, or -1 after printing why.  Every session ends with board_session_close (the
  * launcher's board_stop calls it). */
 int board_session_init(struct board *b, const struct board_opts *o);
 /* The session's link is fd (made non-blocking). */

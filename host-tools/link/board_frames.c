@@ -5,16 +5,19 @@
 #include <string.h>
 
 #include "host-tools/link/board.h"
+#include "host-tools/link/board_text.h"
 #include "proto/wire.h"
 
 static void board_print_log(const uint8_t *p, size_t n)
 {
-    /* One output line per board line, so board text never runs into ours. */
+    /* One output line per board line, so board text never runs into ours;
+     * its control characters escaped (board_text.h). */
+    static char text[BOARD_TEXT_CAP(LINK_MAX_PAYLOAD)];
     size_t start = 0;
     for (size_t i = 0; i <= n; i++) {
         if (i == n || p[i] == '\n') {
             if (i > start || i < n)
-                printf("board: %.*s\n", (int)(i - start), (const char *)p + start);
+                printf("board: %s\n", board_text(p + start, i - start, text, sizeof text));
             start = i + 1;
         }
     }
@@ -87,16 +90,17 @@ static void board_on_fault(struct board *b, const struct link_frame *f)
         link_fault_get(f->payload, &ft);
     }
     int textlen = f->length > LINK_FAULT_FIXED_SIZE ? f->length - LINK_FAULT_FIXED_SIZE : 0;
+    static char text[BOARD_TEXT_CAP(LINK_MAX_PAYLOAD)];
+    board_text(f->payload + LINK_FAULT_FIXED_SIZE, (size_t)textlen, text, sizeof text);
     if (b->nfaults < BOARD_MAX_FAULTS) {
         b->faults[b->nfaults] = ft;
-        snprintf(b->fault_text[b->nfaults], BOARD_FAULT_TEXT, "%.*s", textlen,
-                 (const char *)f->payload + LINK_FAULT_FIXED_SIZE);
+        board_text(f->payload + LINK_FAULT_FIXED_SIZE, (size_t)textlen,
+                   b->fault_text[b->nfaults], BOARD_FAULT_TEXT);
     }
     b->nfaults++;
-    printf("core %u %s FAULT: %s at 0x%08x (pc 0x%08x, status 0x%08x)%s%.*s\n", ft.core,
+    printf("core %u %s FAULT: %s at 0x%08x (pc 0x%08x, status 0x%08x)%s%s\n", ft.core,
            unit_role_name(ft.role),
-           board_fault_kind_name(ft.kind), ft.addr, ft.pc, ft.status, textlen ? ": " : "", textlen,
-           (const char *)f->payload + LINK_FAULT_FIXED_SIZE);
+           board_fault_kind_name(ft.kind), ft.addr, ft.pc, ft.status, textlen ? ": " : "", text);
 }
 
 int board_handle_frame(struct board *b, const struct link_frame *f)
@@ -121,9 +125,8 @@ int board_handle_frame(struct board *b, const struct link_frame *f)
          * drop (cmd 0, LINK_ERR_BAD_FRAME). */
         b->host_frames_dropped++;
         b->host_drop_status = (int16_t)wire_get_u16(f->payload + 2);
-        snprintf(b->host_drop_text, sizeof b->host_drop_text, "%.*s",
-                 f->length - LINK_RESULT_FIXED_SIZE,
-                 (const char *)f->payload + LINK_RESULT_FIXED_SIZE);
+        board_text(f->payload + LINK_RESULT_FIXED_SIZE, f->length - LINK_RESULT_FIXED_SIZE,
+                   b->host_drop_text, sizeof b->host_drop_text);
         fprintf(stderr, "links1: the board dropped a frame from the host (status %d, %s): "
                 "%s\n", b->host_drop_status, board_status_name(b->host_drop_status),
                 b->host_drop_text);

@@ -1,6 +1,6 @@
 # host-tools/link/: the link session with a board: frames decoded and
 # queued, go-back-N, the windowed and the shared-memory bulk transfers.
-HT_LINK_SRCS := host-tools/link/board.c host-tools/link/board_frames.c \
+HT_LINK_SRCS := host-tools/link/board.c host-tools/link/board_frames.c host-tools/link/board_text.c \
 	host-tools/link/link_transfer.c host-tools/link/link_shared.c
 ARITH_FREE_SRCS += $(HT_LINK_SRCS)
 

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <string.h>
 
+#include "host-tools/link/board_text.h"
 #include "host-tools/selftest/selftest.h"
 #include "proto/wire.h"
 
@@ -158,9 +159,11 @@ int selftest_fault(struct board *b, const struct selftest_args *a, char *why, si
     else if (memmem(f, n, counted, strlen(counted)))
         ok = want;
     if (a->fault_core < ROLE_NC || ok != want) {
+        char text[BOARD_TEXT_CAP(LINK_MAX_PAYLOAD)];
+        board_text(f, status < 0 ? n : 0, text, sizeof text);
         snprintf(why, cap, "core %d reported the fault at 0x%08x, then the ping answered "
-                 "status %d '%.*s'; want %u lines (all but the faulted NC's)", a->fault_core,
-                 ft->addr, status, status < 0 ? (int)n : 0, (const char *)f, want);
+                 "status %d '%s'; want %u lines (all but the faulted NC's)", a->fault_core,
+                 ft->addr, status, text, want);
         return -1;
     }
     snprintf(why, cap, "core %d NC reported the undefined instruction at 0x%08x; the other "
