@@ -1,168 +1,108 @@
 /* board_named.c: boards that outlive the tool that started them (see
- * board.h, "named boards"): their state directory, the session that
- * connects to one, stopping and listing them. */
+ * launcher.h, "named boards"): starting one in its state directory, the
+ * session that connects to one, stopping and listing them.  The state on
+ * the disk is board_state.c's. */
 #include "host-tools/launcher/launcher.h"
+#include "host-tools/launcher/board_state.h"
 
 #include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/file.h>
 #include <sys/mman.h>
 #include <sys/socket.h>
-#include <sys/stat.h>
 #include <sys/un.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include "proto/wire.h"
 
-/* What the state directory records of a board. */
-struct board_named_info {
-    int pid, ncores, ram_mb;
-    char arith[16];
+/* What a look at a board's directory found. */
+struct board_seen {
+    int base_fd, dir_fd;
+    char base[BOARD_STATE_BASE_MAX], dir[BOARD_STATE_BASE_MAX + BOARD_NAME_MAX + 2];
+    int lock;             /* board_state_lock's answer: our fd, -2 held, -3 no lock */
+    int rec;              /* board_state_read's: 0 read (r), -2 no record */
+    struct board_record r;
+    int alive;            /* r.pid runs, and is this board's QEMU */
 };
 
-static void board_named_base(char *out, size_t cap)
+static void board_named_unlook(struct board_seen *s)
 {
-    const char *env = getenv("LINKS1_BOARDS");
-    struct stat st;
-    if (env && *env)
-        snprintf(out, cap, "%s", env);
-    else if (stat("/dev/shm", &st) == 0 && S_ISDIR(st.st_mode))
-        snprintf(out, cap, "/dev/shm/links1-%u", (unsigned)getuid());
-    else
-        snprintf(out, cap, "/tmp/links1-%u", (unsigned)getuid());
+    if (s->lock >= 0)
+        close(s->lock);
+    if (s->dir_fd >= 0)
+        close(s->dir_fd);
+    if (s->base_fd >= 0)
+        close(s->base_fd);
+    s->lock = s->dir_fd = s->base_fd = -1;
 }
 
-/* NAME: 1..64 of [A-Za-z0-9_.-], not starting with '.'. */
-static int board_named_dir(const char *name, char *out, size_t cap)
+static int board_named_name_ok(const char *name)
 {
-    size_t n = strlen(name);
-    int ok = n >= 1 && n <= 64 && name[0] != '.';
-    for (size_t i = 0; ok && i < n; i++)
-        ok = (name[i] >= 'a' && name[i] <= 'z') || (name[i] >= 'A' && name[i] <= 'Z') ||
-             (name[i] >= '0' && name[i] <= '9') || strchr("_.-", name[i]);
-    if (!ok) {
-        fprintf(stderr, "links1: board name '%s': use 1 to 64 letters, digits, '_', '.' or "
-                "'-', not starting with '.'\n", name);
-        return -1;
-    }
-    char base[3000];
-    board_named_base(base, sizeof base);
-    snprintf(out, cap, "%.3000s/%.64s", base, name);
-    return 0;
-}
-
-static void board_named_path(const char *dir, const char *file, char *out, size_t cap)
-{
-    snprintf(out, cap, "%s/%s", dir, file);
-}
-
-/* 0 with *info, or -1 when the directory holds no readable record. */
-static int board_named_read(const char *dir, struct board_named_info *info)
-{
-    char path[4200];
-    board_named_path(dir, BOARD_STATE_INFO, path, sizeof path);
-    FILE *f = fopen(path, "r");
-    if (!f)
-        return -1;
-    int n = fscanf(f, "pid %d ncores %d ram_mb %d arith %15s", &info->pid, &info->ncores,
-                   &info->ram_mb, info->arith);
-    fclose(f);
-    return n == 4 ? 0 : -1;
-}
-
-static int board_named_write(const struct board *b)
-{
-    char path[4200];
-    board_named_path(b->state_dir, BOARD_STATE_INFO, path, sizeof path);
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        fprintf(stderr, "links1: %s: %s\n", path, strerror(errno));
-        return -1;
-    }
-    fprintf(f, "pid %d\nncores %d\nram_mb %d\narith %s\n", (int)b->qemu_pid, b->opts.ncores,
-            b->opts.ram_mb, b->opts.arith);
-    return fclose(f) == 0 ? 0 : -1;
-}
-
-/* The board's QEMU is alive: pid exists and its command line names this
- * state directory (a pid reused by another program does not count). */
-static int board_named_alive(const char *dir, int pid)
-{
-    char path[64], cmd[8192];
-    snprintf(path, sizeof path, "/proc/%d/cmdline", pid);
-    FILE *f = pid > 0 ? fopen(path, "r") : NULL;
-    if (!f)
+    if (board_state_name_ok(name) == 0)
         return 0;
-    size_t n = fread(cmd, 1, sizeof cmd - 1, f);
-    fclose(f);
-    for (size_t i = 0; i < n; i++)
-        if (cmd[i] == 0)
-            cmd[i] = ' ';
-    cmd[n] = 0;
-    return strstr(cmd, dir) != NULL;
+    fprintf(stderr, "links1: board name '%s': use 1 to %d letters, digits, '_', '.' or '-', "
+            "not starting with '.'\n", name, BOARD_NAME_MAX);
+    return -1;
 }
 
-static void board_named_remove(const char *dir)
+/* Board name's directory opened and checked, its lock tried first (so
+ * nothing is judged while someone else holds it), then its record read.
+ * 1 with *s filled (board_named_unlook after); 0 when there is no such
+ * board; -1 after printing why it is refused. */
+static int board_named_look(const char *name, int create_base, struct board_seen *s)
 {
-    static const char *const files[] = {BOARD_STATE_INFO, BOARD_STATE_SOCKET, BOARD_STATE_RAM,
-                                        BOARD_STATE_LOG, BOARD_STATE_LOCK};
-    char path[4200];
-    for (size_t i = 0; i < sizeof files / sizeof files[0]; i++) {
-        board_named_path(dir, files[i], path, sizeof path);
-        unlink(path);
-    }
-    rmdir(dir);
-}
-
-/* A directory whose QEMU is gone: reported and removed.  1 when it was
- * stale (or held no record), 0 when its board runs (*info filled). */
-static int board_named_check_stale(const char *name, const char *dir,
-                                   struct board_named_info *info)
-{
-    struct stat st;
-    if (stat(dir, &st) != 0)
-        return 1;
-    if (board_named_read(dir, info) == 0 && board_named_alive(dir, info->pid))
-        return 0;
-    if (board_named_read(dir, info) == 0)
-        fprintf(stderr, "links1: board %s: its QEMU (pid %d) is gone; removing its stale "
-                "state %s\n", name, info->pid, dir);
-    else
-        fprintf(stderr, "links1: board %s: %s has no board record; removing it\n", name, dir);
-    board_named_remove(dir);
+    memset(s, 0, sizeof *s);
+    s->base_fd = s->dir_fd = s->lock = -1;
+    if (board_named_name_ok(name) < 0)
+        return -1;
+    s->base_fd = board_state_base(create_base, s->base, sizeof s->base);
+    if (s->base_fd < 0)
+        return s->base_fd == -2 ? 0 : -1;
+    snprintf(s->dir, sizeof s->dir, "%s/%.64s", s->base, name);
+    s->dir_fd = board_state_dir(s->base_fd, s->base, name);
+    if (s->dir_fd < 0)
+        return s->dir_fd == -2 ? 0 : -1;
+    s->lock = board_state_lock(s->dir_fd, s->dir);
+    if (s->lock == -1)
+        return -1;
+    s->rec = board_state_read(s->dir_fd, s->dir, name, &s->r);
+    if (s->rec == -1)
+        return -1;
+    s->alive = s->rec == 0 && board_state_alive(s->dir, s->r.pid);
     return 1;
 }
 
-/* Takes the board's lock for this session: one session at a time. */
-static int board_named_lock(const char *name, const char *dir, int quiet)
+/* A board whose QEMU is gone and whose lock no one else holds: reported
+ * and removed (1).  0 when it stays: running, or its lock held (a board
+ * starting, a session). */
+static int board_named_stale(const char *name, struct board_seen *s)
 {
-    char path[4200];
-    board_named_path(dir, BOARD_STATE_LOCK, path, sizeof path);
-    int fd = open(path, O_RDWR | O_CREAT | O_CLOEXEC, 0600);
-    if (fd < 0) {
-        fprintf(stderr, "links1: %s: %s\n", path, strerror(errno));
-        return -1;
-    }
-    if (flock(fd, LOCK_EX | LOCK_NB) < 0) {
-        if (!quiet)
-            fprintf(stderr, "links1: board %s is in use by another links1 session\n", name);
-        close(fd);
-        return -1;
-    }
-    return fd;
+    if (s->alive || s->lock == -2)
+        return 0;
+    if (s->rec == 0)
+        fprintf(stderr, "links1: board %s: its QEMU (pid %d) is gone; removing its stale "
+                "state %s\n", name, s->r.pid, s->dir);
+    else
+        fprintf(stderr, "links1: board %s: %s has no board record and no one holds its lock; "
+                "removing it\n", name, s->dir);
+    board_state_remove(s->base_fd, s->dir_fd, s->dir, name);
+    return 1;
+}
+
+void board_named_chardev(const struct board *b, char *out, size_t cap)
+{
+    board_state_chardev(b->state_dir, out, cap);
 }
 
 void board_named_redirect(const struct board *b)
 {
-    char path[4200];
-    board_named_path(b->state_dir, BOARD_STATE_LOG, path, sizeof path);
-    int log = open(path, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+    int log = board_state_create(b->state_fd, BOARD_STATE_LOG, O_WRONLY);
     int null = open("/dev/null", O_RDONLY);
     if (null >= 0)
         dup2(null, 0);
@@ -174,23 +114,32 @@ void board_named_redirect(const struct board *b)
 
 int board_named_map_ram(struct board *b, int create)
 {
-    char path[4200];
-    board_named_path(b->state_dir, BOARD_STATE_RAM, path, sizeof path);
     b->ram_size = (size_t)b->opts.ram_mb << 20;
-    int fd = open(path, O_RDWR | O_CLOEXEC | (create ? O_CREAT | O_EXCL : 0), 0600);
-    if (fd < 0 || (create && ftruncate(fd, (off_t)b->ram_size) < 0)) {
-        fprintf(stderr, "links1: the board's RAM %s: %s\n", path, strerror(errno));
-        if (fd >= 0)
-            close(fd);
+    int fd;
+    if (create) {
+        fd = board_state_create(b->state_fd, BOARD_STATE_RAM, O_RDWR);
+        if (fd < 0 || ftruncate(fd, (off_t)b->ram_size) < 0) {
+            fprintf(stderr, "links1: the board's RAM %s/%s: %s\n", b->state_dir,
+                    BOARD_STATE_RAM, strerror(errno));
+            if (fd >= 0)
+                close(fd);
+            return -1;
+        }
+    } else if ((fd = board_state_open_ram(b->state_fd, b->state_dir, b->ram_size)) < 0) {
         return -1;
     }
     void *p = mmap(NULL, b->ram_size, PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
-    close(fd);
     if (p == MAP_FAILED) {
-        fprintf(stderr, "links1: mapping the board's RAM %s: %s\n", path, strerror(errno));
+        fprintf(stderr, "links1: mapping the board's RAM %s/%s: %s\n", b->state_dir,
+                BOARD_STATE_RAM, strerror(errno));
+        close(fd);
         return -1;
     }
     b->ram = p;
+    if (create)
+        b->ram_fd = fd; /* QEMU maps this file through it */
+    else
+        close(fd);
     return 0;
 }
 
@@ -199,8 +148,8 @@ int board_named_map_ram(struct board *b, int create)
 static int board_named_dial(const char *dir, int pid, int child, int timeout_ms)
 {
     struct sockaddr_un a = {.sun_family = AF_UNIX};
-    char path[4200];
-    board_named_path(dir, BOARD_STATE_SOCKET, path, sizeof path);
+    char path[PATH_MAX + 96];
+    snprintf(path, sizeof path, "%s/%s", dir, BOARD_STATE_SOCKET);
     if (strlen(path) >= sizeof a.sun_path) {
         fprintf(stderr, "links1: socket path %s is too long ($LINKS1_BOARDS shorter)\n", path);
         return -1;
@@ -218,7 +167,8 @@ static int board_named_dial(const char *dir, int pid, int child, int timeout_ms)
         int err = errno;
         close(fd);
         int st;
-        if ((child && waitpid(pid, &st, WNOHANG) == pid) || (!child && kill(pid, 0) < 0)) {
+        if ((child && waitpid(pid, &st, WNOHANG) == pid) ||
+            (!child && !board_state_alive(dir, pid))) {
             fprintf(stderr, "links1: QEMU (pid %d) ended before its UART socket took a "
                     "connection; its output is in %s/%s\n", pid, dir, BOARD_STATE_LOG);
             return -1;
@@ -233,33 +183,42 @@ static int board_named_dial(const char *dir, int pid, int child, int timeout_ms)
 
 int board_named_prepare(struct board *b, const char *name)
 {
-    char base[4096];
-    board_named_base(base, sizeof base);
-    if (mkdir(base, 0700) < 0 && errno != EEXIST) {
-        fprintf(stderr, "links1: %s: %s\n", base, strerror(errno));
-        return -1;
-    }
-    if (board_named_dir(name, b->state_dir, sizeof b->state_dir) < 0)
-        return -1;
-    struct board_named_info info;
-    if (!board_named_check_stale(name, b->state_dir, &info)) {
+    struct board_seen s;
+    int r = board_named_look(name, 1, &s);
+    if (r == 1 && s.alive)
         fprintf(stderr, "links1: board %s is already running (QEMU pid %d, %d cores); "
-                "`links1 board stop %s` first\n", name, info.pid, info.ncores, name);
+                "`links1 board stop %s` first\n", name, s.r.pid, s.r.ncores, name);
+    else if (r == 1 && s.lock == -2)
+        fprintf(stderr, "links1: board %s is starting, or its QEMU is gone while a session "
+                "still holds its lock: left as it is, try again later\n", name);
+    if (r < 0 || (r == 1 && !board_named_stale(name, &s))) {
+        board_named_unlook(&s);
         return -1;
     }
-    if (mkdir(b->state_dir, 0700) < 0) {
-        fprintf(stderr, "links1: %s: %s\n", b->state_dir, strerror(errno));
+    b->state_fd = board_state_make(s.base_fd, s.base, name, &b->lock_fd);
+    snprintf(b->state_dir, sizeof b->state_dir, "%s/%.64s", s.base, name);
+    board_named_unlook(&s);
+    if (b->state_fd < 0) {
+        b->state_dir[0] = 0;
         return -1;
     }
-    b->lock_fd = board_named_lock(name, b->state_dir, 0);
-    return b->lock_fd < 0 ? -1 : 0;
+    return 0;
 }
 
 int board_named_started(struct board *b, int timeout_ms)
 {
-    if (board_named_write(b) < 0)
+    struct board_record r = {(int)b->qemu_pid, b->opts.ncores, b->opts.ram_mb, ""};
+    snprintf(r.arith, sizeof r.arith, "%s", b->opts.arith);
+    if (board_state_write(b->state_fd, b->state_dir, &r) < 0)
         return -1;
     return board_named_dial(b->state_dir, (int)b->qemu_pid, 1, timeout_ms);
+}
+
+/* The board's name: the last part of its state directory. */
+static const char *board_named_name(const struct board *b)
+{
+    const char *slash = strrchr(b->state_dir, '/');
+    return slash ? slash + 1 : b->state_dir;
 }
 
 void board_named_abandon(struct board *b)
@@ -269,8 +228,12 @@ void board_named_abandon(struct board *b)
         waitpid(b->qemu_pid, NULL, 0);
         b->qemu_pid = 0;
     }
-    if (b->state_dir[0])
-        board_named_remove(b->state_dir);
+    char base[BOARD_STATE_BASE_MAX];
+    int base_fd = b->state_fd >= 0 ? board_state_base(0, base, sizeof base) : -1;
+    if (base_fd >= 0) {
+        board_state_remove(base_fd, b->state_fd, b->state_dir, board_named_name(b));
+        close(base_fd);
+    }
 }
 
 /* Opens the session: CMD_STATUS flagged LINK_FLAG_SESSION; what an earlier
@@ -317,58 +280,62 @@ static int board_named_session(struct board *b, const char *name)
 
 int board_connect(struct board *b, const struct board_opts *o, const char *name)
 {
-    char dir[4096];
-    struct board_named_info info;
+    struct board_seen s;
     memset(b, 0, sizeof *b);
-    b->fd = b->ram_fd = b->lock_fd = -1;
-    if (board_named_dir(name, dir, sizeof dir) < 0)
-        return -1;
-    struct stat st;
-    if (stat(dir, &st) != 0) {
+    b->fd = b->ram_fd = b->lock_fd = b->state_fd = -1;
+    int r = board_named_look(name, 0, &s);
+    if (r == 0)
         fprintf(stderr, "links1: no board named %s is running (`links1 board start --name "
                 "%s`)\n", name, name);
+    else if (r == 1 && s.lock == -2)
+        fprintf(stderr, "links1: board %s is in use by another links1 session (or still "
+                "starting)\n", name);
+    else if (r == 1 && !s.alive)
+        board_named_stale(name, &s);
+    else if (r == 1 && s.lock == -3)
+        fprintf(stderr, "links1: board %s: %s has no lock file: not a board's state\n", name,
+                s.dir);
+    if (r != 1 || s.lock < 0 || !s.alive) {
+        board_named_unlook(&s);
         return -1;
     }
-    if (board_named_check_stale(name, dir, &info))
-        return -1;
-    int lock = board_named_lock(name, dir, 0);
-    if (lock < 0)
-        return -1;
-    int fd = board_named_dial(dir, info.pid, 0, BOARD_FRAME_TIMEOUT_MS);
-    if (fd < 0) {
-        close(lock);
-        return -1;
-    }
+    int fd = board_named_dial(s.dir, s.r.pid, 0, BOARD_FRAME_TIMEOUT_MS);
     struct board_opts bo = *o;
-    bo.ncores = info.ncores;
-    bo.ram_mb = info.ram_mb;
-    static char arith[16];
-    snprintf(arith, sizeof arith, "%s", info.arith);
+    bo.ncores = s.r.ncores;
+    bo.ram_mb = s.r.ram_mb;
+    static char arith[sizeof s.r.arith];
+    snprintf(arith, sizeof arith, "%s", s.r.arith);
     bo.arith = arith;
-    if (board_attach(b, &bo, fd) < 0) {
-        close(fd);
-        close(lock);
+    if (fd < 0 || board_attach(b, &bo, fd) < 0) {
+        if (fd >= 0)
+            close(fd);
+        board_named_unlook(&s);
         return -1;
     }
+    b->process_gone = board_qemu_gone;
     board_session_naks_ours(b, 0); /* until the board answers the session */
     b->named = 1;
-    b->lock_fd = lock;
-    snprintf(b->state_dir, sizeof b->state_dir, "%s", dir);
+    b->lock_fd = s.lock;
+    b->state_fd = s.dir_fd;
+    s.lock = s.dir_fd = -1; /* the session's now */
+    snprintf(b->state_dir, sizeof b->state_dir, "%s", s.dir);
+    int pid = s.r.pid;
+    board_named_unlook(&s);
     if (board_named_map_ram(b, 0) < 0 || board_named_session(b, name) < 0) {
         board_stop(b);
         return -1;
     }
     if (!o->quiet)
         printf("links1: connected to board %s: %d cores (DM, RC, %d NCs), %s, QEMU pid %d\n",
-               name, info.ncores, info.ncores - 2, info.arith, info.pid);
+               name, b->opts.ncores, b->opts.ncores - 2, b->opts.arith, pid);
     return 0;
 }
 
-/* Waits up to ms for a process that is not our child to end. */
+/* Waits up to ms for the board's QEMU (not our child) to end. */
 static int board_named_gone(const char *dir, int pid, int ms)
 {
     long long end = board_now_ms() + ms;
-    while (board_named_alive(dir, pid)) {
+    while (board_state_alive(dir, pid)) {
         if (board_now_ms() >= end)
             return 0;
         usleep(20000);
@@ -376,19 +343,38 @@ static int board_named_gone(const char *dir, int pid, int ms)
     return 1;
 }
 
+/* After its QEMU ended: the board's state removed, unless someone holds
+ * its lock. */
+static void board_named_clear(const char *name)
+{
+    struct board_seen s;
+    if (board_named_look(name, 0, &s) == 1 && !s.alive && s.lock != -2)
+        board_state_remove(s.base_fd, s.dir_fd, s.dir, name);
+    board_named_unlook(&s);
+}
+
 int board_stop_named(const char *name)
 {
-    char dir[4096];
-    struct board_named_info info;
-    if (board_named_dir(name, dir, sizeof dir) < 0)
-        return -1;
-    struct stat st;
-    if (stat(dir, &st) != 0) {
+    struct board_seen s;
+    int r = board_named_look(name, 0, &s);
+    if (r == 0)
         fprintf(stderr, "links1: no board named %s\n", name);
+    if (r != 1) {
+        board_named_unlook(&s);
         return -1;
     }
-    if (board_named_check_stale(name, dir, &info))
-        return 0; /* reported and removed */
+    if (!s.alive) {
+        int gone = board_named_stale(name, &s); /* reported and removed */
+        if (!gone)
+            fprintf(stderr, "links1: board %s: its QEMU is not running, but its lock is held "
+                    "(starting, or a session still ending): left as it is\n", name);
+        board_named_unlook(&s);
+        return gone ? 0 : -1;
+    }
+    int pid = s.r.pid;
+    char dir[sizeof s.dir];
+    snprintf(dir, sizeof dir, "%s", s.dir);
+    board_named_unlook(&s); /* its lock let go: the session below takes it */
     struct board_opts o;
     board_opts_init(&o);
     o.quiet = 1;
@@ -400,48 +386,64 @@ int board_stop_named(const char *name)
             board_session_drain(&b, BOARD_SHUTDOWN_WAIT_MS);
         board_stop(&b);
     }
-    if (!board_named_gone(dir, info.pid, BOARD_SHUTDOWN_WAIT_MS)) {
+    if (!board_named_gone(dir, pid, BOARD_SHUTDOWN_WAIT_MS)) {
         fprintf(stderr, "links1: board %s did not power off; stopping QEMU (pid %d) with "
-                "SIGTERM\n", name, info.pid);
-        kill(info.pid, SIGTERM);
-        if (!board_named_gone(dir, info.pid, BOARD_TERM_WAIT_MS)) {
-            kill(info.pid, SIGKILL);
-            board_named_gone(dir, info.pid, BOARD_TERM_WAIT_MS);
+                "SIGTERM\n", name, pid);
+        kill(pid, SIGTERM);
+        if (!board_named_gone(dir, pid, BOARD_TERM_WAIT_MS) && board_state_alive(dir, pid)) {
+            kill(pid, SIGKILL);
+            board_named_gone(dir, pid, BOARD_TERM_WAIT_MS);
         }
         rc = 1;
     }
-    board_named_remove(dir);
+    board_named_clear(name);
     printf("links1: board %s stopped\n", name);
     return rc;
 }
 
-int board_list_named(void)
+/* One entry of the base for board list: 1 when it is a board running. */
+static int board_named_list_one(const char *base, const char *name)
 {
-    char base[4096];
-    board_named_base(base, sizeof base);
-    DIR *d = opendir(base);
-    int running = 0;
-    if (!d) {
-        printf("links1: no named boards (%s does not exist)\n", base);
+    if (board_state_name_ok(name) < 0) {
+        fprintf(stderr, "links1: %s/%s: not a board's directory (not a board's name); left "
+                "as it is\n", base, name);
         return 0;
     }
-    struct dirent *e;
-    while ((e = readdir(d)) != NULL) {
-        if (e->d_name[0] == '.')
-            continue;
-        char dir[4400];
-        snprintf(dir, sizeof dir, "%s/%s", base, e->d_name);
-        struct board_named_info info;
-        if (board_named_check_stale(e->d_name, dir, &info))
-            continue;
-        int lock = board_named_lock(e->d_name, dir, 1);
-        printf("board %s: running, QEMU pid %d, %d cores (DM, RC, %d NCs), %s, %d MiB%s\n",
-               e->d_name, info.pid, info.ncores, info.ncores - 2, info.arith, info.ram_mb,
-               lock < 0 ? ", in use by a session" : "");
-        if (lock >= 0)
-            close(lock);
-        running++;
+    struct board_seen s;
+    int running = 0;
+    if (board_named_look(name, 0, &s) == 1) {
+        if (s.alive) {
+            printf("board %s: running, QEMU pid %d, %d cores (DM, RC, %d NCs), %s, %d MiB%s\n",
+                   name, s.r.pid, s.r.ncores, s.r.ncores - 2, s.r.arith, s.r.ram_mb,
+                   s.lock == -2 ? ", in use by a session" : "");
+            running = 1;
+        } else if (!board_named_stale(name, &s)) {
+            printf("board %s: %s (its lock is held); left as it is\n", name,
+                   s.rec == 0 ? "its QEMU is gone, a session still ends" : "starting");
+        }
     }
+    board_named_unlook(&s);
+    return running;
+}
+
+int board_list_named(void)
+{
+    char base[BOARD_STATE_BASE_MAX];
+    int base_fd = board_state_base(0, base, sizeof base);
+    if (base_fd == -2) {
+        printf("links1: no named boards (no state directory yet)\n");
+        return 0;
+    }
+    DIR *d = base_fd >= 0 ? fdopendir(base_fd) : NULL;
+    if (!d) {
+        if (base_fd >= 0)
+            close(base_fd);
+        return 0;
+    }
+    int running = 0;
+    for (struct dirent *e; (e = readdir(d)) != NULL;)
+        if (e->d_name[0] != '.')
+            running += board_named_list_one(base, e->d_name);
     closedir(d);
     if (!running)
         printf("links1: no named board is running\n");

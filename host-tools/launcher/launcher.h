@@ -90,6 +90,10 @@ int board_start(struct board *b, const struct board_opts *o);
  * printing why. */
 int board_run_semihost(const char *elf, int ram_mb);
 
+/* The link ended (board.process_gone): what became of QEMU, into desc (a
+ * named board by its name). */
+void board_qemu_gone(struct board *b, char *desc, size_t cap);
+
 /* Shuts the board down: CMD_SHUTDOWN, wait for QEMU to exit, SIGTERM, and
  * SIGKILL only as a last resort.  Returns 0 when QEMU exited by itself after
  * the command, 1 when it had to be signalled, -1 on error.  Safe to call
@@ -99,17 +103,25 @@ int board_stop(struct board *b);
 /* ---- named boards (host-tools/launcher/board_named.c) ----
  * `links1 board start --name NAME` leaves a board running for later
  * sessions (`links1 render --board NAME`).  Its state directory
- * ($LINKS1_BOARDS, else /dev/shm/links1-UID, else /tmp/links1-UID, then
- * NAME/) holds QEMU's pid and the board's shape (BOARD_STATE_INFO), the
- * UART as a listening socket, the shared RAM file, QEMU's own output and a
- * lock that one session at a time holds.  A board whose QEMU is gone leaves
- * a stale directory: found, reported and removed by start, stop and list. */
+ * ($LINKS1_BOARDS, else $XDG_RUNTIME_DIR/links1-boards, else
+ * /dev/shm/links1-UID, else /tmp/links1-UID, then NAME/) holds QEMU's pid
+ * and the board's shape (BOARD_STATE_INFO), the UART as a listening
+ * socket, the shared RAM file, QEMU's own output, the gdb stub's socket
+ * (--gdb) and a lock that one session at a time holds.  Only its owner can
+ * touch it (board_state.h: the base and each board's directory refused
+ * unless they are real directories of this user's with no group or other
+ * access, every file opened relative to them without following links,
+ * every value read back range-checked).  A board whose QEMU is gone and
+ * whose lock no one holds leaves a stale directory: found, reported and
+ * removed by start, stop and list. */
 #define BOARD_STATE_INFO "board"
 #define BOARD_STATE_SOCKET "link.sock"
 #define BOARD_STATE_RAM "ram"
 #define BOARD_STATE_LOG "qemu.log"
 #define BOARD_STATE_LOCK "lock"
+#define BOARD_STATE_GDB "gdb.sock"
 #define BOARD_DEFAULT_NAME "default"
+#define BOARD_NAME_MAX 64 /* characters of a board's name */
 
 /* Starts QEMU as the named board and waits for every unit computer to
  * report in; the board then runs on without this tool.  0, or -1 after
@@ -126,17 +138,21 @@ int board_stop_named(const char *name);
 /* Prints every named board: running (pid, cores) or stale (then removed).
  * Returns the number running. */
 int board_list_named(void);
-/* board_start_named's steps (board.c starts the process between them):
- * the state directory made, a stale one removed, the lock taken; the record
- * written and the UART socket connected (returns its fd); everything undone
- * after a failure. */
+/* board_start_named's steps (qemu.c starts the process between them):
+ * the state directory made (a stale one removed first) with its lock
+ * taken; the record written and the UART socket connected (returns its
+ * fd); everything undone after a failure. */
 int board_named_prepare(struct board *b, const char *name);
 int board_named_started(struct board *b, int timeout_ms);
 void board_named_abandon(struct board *b);
 /* In QEMU's child process: its output into the state directory. */
 void board_named_redirect(const struct board *b);
+/* The named board's UART chardev argument for QEMU (board_state.h). */
+void board_named_chardev(const struct board *b, char *out, size_t cap);
 /* The named board's RAM file mapped into b (board_start_named creates it
- * with create = 1).  0, or -1 after printing why. */
+ * with create = 1, and keeps it open in b->ram_fd for QEMU; a session
+ * checks it is a regular file of exactly the recorded size).  0, or -1
+ * after printing why. */
 int board_named_map_ram(struct board *b, int create);
 
 #endif

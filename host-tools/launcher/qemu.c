@@ -24,12 +24,13 @@ static int board_qemu_reap(struct board *b, int timeout_ms);
 static void board_qemu_exit_text(const struct board *b, char *out, size_t cap);
 static int board_stop_qemu(struct board *b);
 
-/* The link ended (board.process_gone): what became of QEMU. */
-static void board_qemu_gone(struct board *b, char *desc, size_t cap)
+void board_qemu_gone(struct board *b, char *desc, size_t cap)
 {
-    if (b->named && !b->qemu_pid)
-        snprintf(desc, cap, "the named board's QEMU closed the link or ended");
-    else if (board_qemu_reap(b, BOARD_TERM_WAIT_MS))
+    if (b->named && !b->qemu_pid) {
+        const char *slash = strrchr(b->state_dir, '/');
+        snprintf(desc, cap, "board %s: its QEMU closed the link or ended",
+                 slash ? slash + 1 : b->state_dir);
+    } else if (board_qemu_reap(b, BOARD_TERM_WAIT_MS))
         board_qemu_exit_text(b, desc, cap);
     else
         snprintf(desc, cap, "QEMU (pid %d) is still running", (int)b->qemu_pid);
@@ -58,7 +59,7 @@ static void board_qemu_exec_failed(const char *qemu)
 static void board_qemu_exec(struct board *b, int qemu_fd)
 {
     signal(SIGPIPE, SIG_DFL); /* the session's SIG_IGN is ours, not QEMU's */
-    char smp[32], mem[32], chardev[PATH_MAX + 64], plugin[3 * PATH_MAX], ram[PATH_MAX + 96];
+    char smp[32], mem[32], chardev[PATH_MAX + 160], plugin[3 * PATH_MAX], ram[PATH_MAX + 96];
     snprintf(smp, sizeof smp, "%d", b->opts.ncores);
     snprintf(mem, sizeof mem, "%dM", b->opts.ram_mb);
     if (qemu_fd >= 0) {
@@ -72,12 +73,12 @@ static void board_qemu_exec(struct board *b, int qemu_fd)
     } else {
         setsid();
         board_named_redirect(b);
-        /* wait=on: the guest starts only once `board start` is connected,
-         * so no report-in is lost. */
-        snprintf(chardev, sizeof chardev, "socket,id=link,path=%s/%s,server=on,wait=on",
-                 b->state_dir, BOARD_STATE_SOCKET);
-        snprintf(ram, sizeof ram, "memory-backend-file,id=ram,size=%dM,mem-path=%s/%s,share=on",
-                 b->opts.ram_mb, b->state_dir, BOARD_STATE_RAM);
+        board_named_chardev(b, chardev, sizeof chardev);
+        /* The RAM file made in the state directory, open here: QEMU maps
+         * the same file through /proc, no path to look up again. */
+        fcntl(b->ram_fd, F_SETFD, 0);
+        snprintf(ram, sizeof ram, "memory-backend-file,id=ram,size=%dM,"
+                 "mem-path=/proc/self/fd/%d,share=on", b->opts.ram_mb, b->ram_fd);
     }
     const char *qemu = board_qemu_binary();
     const char *argv[40];
@@ -324,9 +325,6 @@ int board_start_named(struct board *b, const struct board_opts *o, const char *n
         return -1;
     }
     if (board_named_prepare(b, name) < 0) {
-        if (b->lock_fd >= 0)
-            board_named_abandon(b);
-        b->state_dir[0] = 0;
         board_stop(b);
         return -1;
     }
@@ -408,7 +406,9 @@ int board_stop(struct board *b)
     board_ram_release(b);
     if (b->lock_fd >= 0)
         close(b->lock_fd);
-    b->lock_fd = -1;
+    if (b->state_fd >= 0)
+        close(b->state_fd);
+    b->lock_fd = b->state_fd = -1;
     return r;
 }
 

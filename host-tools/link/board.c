@@ -49,6 +49,7 @@ int board_session_init(struct board *b, const struct board_opts *o)
     b->fd = -1;
     b->ram_fd = -1;
     b->lock_fd = -1;
+    b->state_fd = -1;
     b->started_ms = board_now_ms();
     link_decoder_init(&b->dec);
     b->arq = calloc(1, sizeof *b->arq);
@@ -145,7 +146,7 @@ int board_take_queued(struct board *b, uint32_t mask, struct board_frame *out)
 /* The socket reached end-of-file or failed: the board is gone. */
 static int board_lost(struct board *b, const char *why)
 {
-    char desc[96];
+    char desc[192];
     if (b->fd >= 0) {
         close(b->fd);
         b->fd = -1;

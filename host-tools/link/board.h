@@ -100,6 +100,7 @@ struct board {
     int named;                  /* 1: a named board (board_named.c), which runs
                                    on after this session */
     char state_dir[4096];       /* a named board's state directory */
+    int state_fd;               /* ... open (the launcher's), -1 when none */
     int lock_fd;                /* a named board's lock, held by this session */
     long long started_ms;       /* board_now_ms() when QEMU was started */
     /* Set by the launcher: what happened to the board's process once its

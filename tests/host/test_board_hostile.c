@@ -16,6 +16,7 @@
 #include "host-tools/gigs/render_session.h"
 #include "proto/wire.h"
 #include "tests/check.h"
+#include "tests/host/capture.h"
 #include "tests/host/fake_board.h"
 
 static uint16_t peer_seq; /* the fake board's frame counter */
@@ -30,37 +31,6 @@ static void peer_send_flags(int fd, uint8_t type, uint8_t flags, const void *p, 
 static void peer_send(int fd, uint8_t type, const void *p, size_t len)
 {
     peer_send_flags(fd, type, 0, p, len);
-}
-
-/* ---- what the program prints, caught in a file ---- */
-
-struct capture {
-    int saved, fd;
-    FILE *f;
-};
-
-static void capture_begin(struct capture *c, int which)
-{
-    fflush(stdout);
-    fflush(stderr);
-    c->f = tmpfile();
-    c->fd = which;
-    c->saved = dup(which);
-    dup2(fileno(c->f), which);
-}
-
-/* What was printed, NUL-terminated, into out. */
-static size_t capture_end(struct capture *c, char *out, size_t cap)
-{
-    fflush(stdout);
-    fflush(stderr);
-    dup2(c->saved, c->fd);
-    close(c->saved);
-    rewind(c->f);
-    size_t n = fread(out, 1, cap - 1, c->f);
-    out[n] = 0;
-    fclose(c->f);
-    return n;
 }
 
 /* No byte below ' ' but '\n', none above '~'. */
