@@ -215,7 +215,7 @@ run: deps
 	$(Q)bash host-tools/scripts/make-run.sh
 
 # The board halted under QEMU's gdb stub, gdb-multiarch attached with the
-# firmware's symbols (GDB_PORT, GDB_NCS, GDB_ARITH, GDB_ARGS; docs/firmware.md).
+# firmware's symbols (GDB_NCS, GDB_ARITH, GDB_ARGS; docs/firmware.md).
 gdb: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all
 	$(Q)FW_DIR=$(FWB) bash host-tools/scripts/make-gdb.sh

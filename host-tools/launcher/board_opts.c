@@ -22,7 +22,8 @@ const char board_opts_usage[] =
     "  --ram MB         board memory (default 1024, what the firmware carves)\n"
     "  --quiet          do not print the board's log or the board-up line\n"
     "  --verbose        print each unit computer reporting in\n"
-    "  --gdb PORT       start halted, QEMU's gdb stub on 127.0.0.1:PORT (make gdb)\n"
+    "  --gdb            start halted, QEMU's gdb stub on a unix socket in your state\n"
+    "                   directory (the path is printed; make gdb)\n"
     "  --link L         bulk bytes through shared memory (fast, default) or the\n"
     "                   serial link (serial); commands and results always go serially\n"
     "  --link-noise RATE[:SEED]  test hook: a relay flips, drops, duplicates and\n"
@@ -36,6 +37,25 @@ void board_opts_init(struct board_opts *o)
     o->ram_mb = BOARD_DEFAULT_RAM_MB;
     o->timeout_s = BOARD_DEFAULT_TIMEOUT_S;
     o->link = LINK_PATH_SHARED;
+}
+
+/* --gdb takes no value: the stub is a unix socket only this user can
+ * reach, never a TCP port any local user could attach to first.  The old
+ * form (--gdb PORT, --gdb=PORT) is refused with a word on the new one. */
+static int board_opt_gdb(struct board_opts *o, const struct cli *c)
+{
+    const char *next = optind < c->argc ? c->argv[optind] : NULL;
+    const char *port = c->arg ? c->arg
+                       : next && *next && strspn(next, "0123456789") == strlen(next) ? next
+                                                                                      : NULL;
+    if (port) {
+        fprintf(stderr, "%s: --gdb takes no port (given '%s'): QEMU's gdb stub is a unix "
+                "socket in your state directory, its path printed at start; attach with "
+                "gdb-multiarch's `target remote PATH` (make gdb does)\n", c->prog, port);
+        return -1;
+    }
+    o->gdb = 1;
+    return 1;
 }
 
 int board_opt(struct board_opts *o, const struct cli *c, int code)
@@ -54,7 +74,7 @@ int board_opt(struct board_opts *o, const struct cli *c, int code)
         o->verbose = 1;
         return 1;
     case BOARD_OPT_GDB:
-        return cli_int(c, 1, 65535, &o->gdb_port) < 0 ? -1 : 1;
+        return board_opt_gdb(o, c);
     case BOARD_OPT_LINK:
         if (strcmp(c->arg, "fast") != 0 && strcmp(c->arg, "serial") != 0)
             return cli_bad_value(c, "fast or serial");

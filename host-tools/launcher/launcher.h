@@ -64,7 +64,7 @@ enum board_opt_code {
     {"quiet", no_argument, NULL, BOARD_OPT_QUIET},               \
     {"link", required_argument, NULL, BOARD_OPT_LINK},           \
     {"verbose", no_argument, NULL, BOARD_OPT_VERBOSE},           \
-    {"gdb", required_argument, NULL, BOARD_OPT_GDB},             \
+    {"gdb", optional_argument, NULL, BOARD_OPT_GDB},             \
     {"link-noise", required_argument, NULL, BOARD_OPT_LINK_NOISE}
 
 /* Takes the board option cli_next() returned as code into o.  Returns 1

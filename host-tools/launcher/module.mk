@@ -15,3 +15,6 @@ test_link_arq_ARITH := double
 HOST_TESTS += test_board_named
 test_board_named_SRCS = tests/host/test_board_named.c $(BOARD_LAUNCHER_SRCS)
 test_board_named_ARITH := double
+# What only the user may reach on a real board: the gdb stub's unix socket,
+# a board dying in `render --board`, render's output files.
+BOARD_TESTS += tests/board/board_owner.sh

@@ -4,6 +4,7 @@
  * launcher.h). */
 #define _GNU_SOURCE /* memfd_create */
 #include "host-tools/launcher/launcher.h"
+#include "host-tools/launcher/board_state.h"
 #include "host-tools/launcher/link_relay.h"
 #include "host-tools/opts/self_path.h"
 
@@ -113,10 +114,11 @@ static void board_qemu_exec(struct board *b, int qemu_fd)
         argv[n++] = "-monitor";
         argv[n++] = monitor_arg;
     }
-    char gdb[48];
-    if (b->opts.gdb_port) {
-        /* Halted at the first instruction until the debugger continues. */
-        snprintf(gdb, sizeof gdb, "tcp:127.0.0.1:%d", b->opts.gdb_port);
+    char gdb[sizeof b->gdb_socket + 32];
+    if (b->opts.gdb) {
+        /* Halted at the first instruction until the debugger continues;
+         * the stub on a unix socket in the user's own state directory. */
+        snprintf(gdb, sizeof gdb, "unix:%s,server=on,wait=off", b->gdb_socket);
         argv[n++] = "-gdb";
         argv[n++] = gdb;
         argv[n++] = "-S";
@@ -199,6 +201,37 @@ int board_run_semihost(const char *elf, int ram_mb)
     return -1;
 }
 
+/* --gdb: the stub's socket, b->gdb_socket: gdb.sock in a named board's
+ * directory, else gdb-PID.sock in the user's state directory (both only
+ * the user's: board_state.h).  Printed with how to attach.  0, or -1
+ * after printing why. */
+static int board_gdb_socket(struct board *b)
+{
+    char base[BOARD_STATE_BASE_MAX], file[32], path[BOARD_STATE_BASE_MAX + 40];
+    int base_fd = -1;
+    if (b->named) {
+        snprintf(path, sizeof path, "%.2048s/%s", b->state_dir, BOARD_STATE_GDB);
+    } else {
+        if ((base_fd = board_state_base(1, base, sizeof base)) < 0)
+            return -1;
+        snprintf(file, sizeof file, "gdb-%d.sock", (int)getpid());
+        unlinkat(base_fd, file, 0); /* one a process of this pid left */
+        close(base_fd);
+        snprintf(path, sizeof path, "%s/%s", base, file);
+    }
+    if (strlen(path) >= sizeof b->gdb_socket) {
+        fprintf(stderr, "links1: the gdb socket path %s is too long for a unix socket "
+                "(set $LINKS1_BOARDS to a shorter directory of your own)\n", path);
+        return -1;
+    }
+    memcpy(b->gdb_socket, path, strlen(path) + 1);
+    printf("links1: QEMU's gdb stub on %s, every core halted until gdb continues: "
+           "gdb-multiarch %s -ex 'target remote %s'\n", b->gdb_socket, b->firmware,
+           b->gdb_socket);
+    fflush(stdout);
+    return 0;
+}
+
 /* The board's RAM as a memfd, mapped here (proto/board_map.h). */
 static int board_ram_create(struct board *b)
 {
@@ -275,6 +308,10 @@ int board_start(struct board *b, const struct board_opts *o)
         board_ram_release(b);
         return -1;
     }
+    if (o->gdb && board_gdb_socket(b) < 0) {
+        board_ram_release(b);
+        return -1;
+    }
     int sv[2];
     if (socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, sv) < 0) {
         fprintf(stderr, "links1: socketpair: %s\n", strerror(errno));
@@ -328,7 +365,7 @@ int board_start_named(struct board *b, const struct board_opts *o, const char *n
         board_stop(b);
         return -1;
     }
-    if (board_named_map_ram(b, 1) < 0) {
+    if (board_named_map_ram(b, 1) < 0 || (o->gdb && board_gdb_socket(b) < 0)) {
         board_named_abandon(b);
         board_stop(b);
         return -1;
@@ -401,6 +438,8 @@ int board_stop(struct board *b)
         b->qemu_pid = 0;
     } else {
         r = board_stop_qemu(b);
+        if (b->gdb_socket[0] && !b->qemu_pid)
+            unlink(b->gdb_socket); /* a named board's goes with its directory */
     }
     board_session_close(b);
     board_ram_release(b);

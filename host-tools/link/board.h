@@ -51,8 +51,9 @@ struct board_opts {
     int quiet;              /* 1: do not print LOG lines or the board-up line
                                (faults always) */
     int verbose;            /* 1: a line per unit computer reporting in */
-    int gdb_port;           /* non-zero: QEMU's gdb stub on 127.0.0.1:gdb_port,
-                               every core halted until the debugger continues */
+    int gdb;                /* 1: QEMU's gdb stub on a unix socket in the user's
+                               state directory (board.gdb_socket), every core
+                               halted until the debugger continues */
     int view;               /* 1: -device ramfb and a display (links1 render --view) */
     int link;               /* bulk bytes: LINK_PATH_SHARED (--link fast, the
                                default) or LINK_PATH_SERIAL (--link serial) */
@@ -102,6 +103,7 @@ struct board {
     char state_dir[4096];       /* a named board's state directory */
     int state_fd;               /* ... open (the launcher's), -1 when none */
     int lock_fd;                /* a named board's lock, held by this session */
+    char gdb_socket[108];       /* --gdb: the stub's unix socket (the launcher's) */
     long long started_ms;       /* board_now_ms() when QEMU was started */
     /* Set by the launcher: what happened to the board's process once its
      * link ended (reaped, still running, ...), written into desc. */
