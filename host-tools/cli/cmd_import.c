@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "host-tools/opts/cli_opt.h"
+#include "host-tools/opts/out_file.h"
 #include "host-tools/cli/scene_cmds.h"
 #include "host-tools/scene/scene_import.h"
 
@@ -110,23 +111,20 @@ static void import_map_names(const struct import_result *r, int n_maps, const ch
     }
 }
 
-/* Writes s as text to tmp, reads it back and compiles it. */
-static int import_write(const struct sd_scene *s, const char *const *maps, const char *tmp,
-                        char *err, size_t errlen)
+/* Writes s as text to the output file's temporary file, reads it back
+ * from there (beside OUT, so map paths read as they will) and compiles
+ * it. */
+static int import_write(const struct sd_scene *s, const char *const *maps,
+                        const struct out_file *of, char *err, size_t errlen)
 {
-    FILE *f = fopen(tmp, "w");
-    if (!f) {
-        snprintf(err, errlen, "%.300s: %s", tmp, strerror(errno));
-        return -1;
-    }
-    int rc = sd_write_text(s, maps, f);
-    if (fclose(f) != 0 || rc != 0) {
-        snprintf(err, errlen, "writing %.300s: %s", tmp, strerror(errno));
+    int rc = sd_write_text(s, maps, of->f);
+    if (rc != 0 || fflush(of->f) != 0 || ferror(of->f)) {
+        snprintf(err, errlen, "writing %.300s: %s", of->path, strerror(errno));
         return -1;
     }
     struct sd_scene back;
     char why[SD_ERR_MAX];
-    if (sd_parse_file(tmp, &back, why, sizeof why) != 0) {
+    if (sd_parse_file(of->tmp, &back, why, sizeof why) != 0) {
         snprintf(err, errlen, "the written scene does not read back: %.400s", why);
         return -1;
     }
@@ -177,19 +175,18 @@ int scene_cmd_import(int argc, char **argv)
     if (rc == 0)
         rc = scene_import_view(&s, &m, r, a.camera_auto, stderr, err, sizeof err);
     model_free(&m);
-    char tmp[PATH_MAX];
-    snprintf(tmp, sizeof tmp, "%s.tmp%ld", a.out, (long)getpid());
     if (rc == 0) {
         static char names[SCN_MAX_MAPS][IMPORT_PATH_MAX];
         const char *ptrs[SCN_MAX_MAPS];
         import_map_names(r, s.n_maps, a.out, names, ptrs);
-        rc = import_write(&s, ptrs, tmp, err, sizeof err);
-        if (rc == 0 && rename(tmp, a.out) != 0) {
-            snprintf(err, sizeof err, "writing %.300s: %s", a.out, strerror(errno));
+        struct out_file of;
+        rc = out_file_open(&of, a.out, err, sizeof err);
+        if (rc == 0 && import_write(&s, ptrs, &of, err, sizeof err) != 0) {
+            out_file_abort(&of);
             rc = -1;
+        } else if (rc == 0) {
+            rc = out_file_commit(&of, err, sizeof err);
         }
-        if (rc != 0)
-            remove(tmp);
     }
     if (rc != 0) {
         fprintf(stderr, "links1 import: %s: %s\n", a.model, err);

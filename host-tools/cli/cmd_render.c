@@ -19,6 +19,7 @@
 #include "host-tools/ref/arith_auto.h"
 #include "host-tools/image/image_io.h"
 #include "host-tools/opts/cli_args.h"
+#include "host-tools/opts/out_file.h"
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_file.h"
 #include "proto/areas.h"
@@ -545,7 +546,7 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
     }
     int ppm = o->ppm || scene_file_ends_with(j->out, ".ppm");
     for (long f = first; f <= last; f++) {
-        char path[4096], tmp[4096 + 16], err[SD_ERR_MAX];
+        char path[4096], err[SD_ERR_MAX];
         if (o->many)
             scene_file_frame_path(j->out, f, path, sizeof path);
         else
@@ -578,14 +579,15 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         long long t2 = board_now_ms();
         o->wall.pull += t2 - t1;
         render_faults_print(stdout, a.frame, &fails);
-        /* Written whole or not at all: a run that dies leaves no half
-         * frame for --resume to keep. */
-        snprintf(tmp, sizeof tmp, "%s.part", path);
-        rc = ppm ? image_write_ppm(tmp, &img, err, sizeof err)
-                 : image_write_png(tmp, &img, err, sizeof err);
-        if (rc == 0 && rename(tmp, path) != 0) {
-            snprintf(err, sizeof err, "cannot rename the written frame to %.400s", path);
+        /* Written whole or not at all (opts/out_file.h): a run that dies
+         * leaves no half frame for --resume to keep. */
+        struct out_file of;
+        rc = out_file_open(&of, path, err, sizeof err);
+        if (rc == 0 && image_write(of.f, path, &img, ppm, err, sizeof err) != 0) {
+            out_file_abort(&of);
             rc = -1;
+        } else if (rc == 0) {
+            rc = out_file_commit(&of, err, sizeof err);
         }
         if (rc != 0) {
             fprintf(stderr, "links1 render: %s\n", err);
@@ -630,7 +632,14 @@ static int render_write_trace(const struct render_opts *o, const char *marks_pat
     t.k = o->args.areas;
     t.flags = o->args.flags & ~(uint32_t)LINK_RENDER_TRACE;
     t.broadcast_bytes = o->traced_bytes;
-    int rc = trace_write(o->trace, &t, err, sizeof err);
+    struct out_file of;
+    int rc = out_file_open(&of, o->trace, err, sizeof err);
+    if (rc == 0 && trace_write(of.f, o->trace, &t, err, sizeof err) != 0) {
+        out_file_abort(&of);
+        rc = -1;
+    } else if (rc == 0) {
+        rc = out_file_commit(&of, err, sizeof err);
+    }
     if (rc != 0)
         fprintf(stderr, "links1 render: --trace: %s\n", err);
     else

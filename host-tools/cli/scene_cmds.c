@@ -10,6 +10,7 @@
 #include "host-tools/opts/cli_opt.h"
 #include "host-tools/ref/arith_auto.h"
 #include "host-tools/opts/cli_args.h"
+#include "host-tools/opts/out_file.h"
 #include "host-tools/ref/ref_opts.h"
 #include "host-tools/cli/scene_cmds.h"
 #include "host-tools/ref/ref_program.h"
@@ -54,26 +55,22 @@ static int scene_cmd_args(struct cli *c, const char *usage, const char **in, con
     return 0;
 }
 
-/* Writes len bytes to path through a temporary file, so a failed run never
- * leaves a half-written output. */
+/* Writes len bytes to path whole or not at all (opts/out_file.h). */
 static int cmd_write_file(const char *path, const void *data, size_t len)
 {
-    char tmp[PATH_MAX];
-    snprintf(tmp, sizeof tmp, "%s.tmp%ld", path, (long)getpid());
-    FILE *f = fopen(tmp, "wb");
-    if (!f) {
-        fprintf(stderr, "links1: %s: %s\n", tmp, strerror(errno));
-        return -1;
+    char err[PATH_MAX + 256];
+    struct out_file of;
+    int rc = out_file_open(&of, path, err, sizeof err);
+    if (rc == 0 && fwrite(data, 1, len, of.f) != len) {
+        snprintf(err, sizeof err, "%s: write failed: %s", path, strerror(errno));
+        out_file_abort(&of);
+        rc = -1;
+    } else if (rc == 0) {
+        rc = out_file_commit(&of, err, sizeof err);
     }
-    int ok = fwrite(data, 1, len, f) == len;
-    if (fclose(f) != 0)
-        ok = 0;
-    if (!ok || rename(tmp, path) != 0) {
-        fprintf(stderr, "links1: writing %s: %s\n", path, strerror(errno));
-        remove(tmp);
-        return -1;
-    }
-    return 0;
+    if (rc != 0)
+        fprintf(stderr, "links1: %s\n", err);
+    return rc;
 }
 
 static const struct option compile_options[] = {
@@ -151,18 +148,22 @@ int scene_cmd_export_pov(int argc, char **argv)
         fprintf(stderr, "%s\n", err);
         return 1;
     }
-    char tmp[PATH_MAX];
-    snprintf(tmp, sizeof tmp, "%s.tmp%ld", out, (long)getpid());
-    int rc = sd_export_pov(&s, frame, strict, tmp, err, sizeof err);
-    sd_free(&s);
+    struct out_file of;
+    int rc = out_file_open(&of, out, err, sizeof err);
     if (rc != 0) {
-        fprintf(stderr, "%s: %s\n", in, err);
-        remove(tmp);
+        sd_free(&s);
+        fprintf(stderr, "links1: %s\n", err);
         return 1;
     }
-    if (rename(tmp, out) != 0) {
-        fprintf(stderr, "links1: writing %s: %s\n", out, strerror(errno));
-        remove(tmp);
+    rc = sd_export_pov(&s, frame, strict, of.f, out, err, sizeof err);
+    sd_free(&s);
+    if (rc != 0) {
+        out_file_abort(&of);
+        fprintf(stderr, "%s: %s\n", in, err);
+        return 1;
+    }
+    if (out_file_commit(&of, err, sizeof err) != 0) {
+        fprintf(stderr, "links1: %s\n", err);
         return 1;
     }
     return 0;

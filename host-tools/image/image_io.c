@@ -173,35 +173,30 @@ int image_read_max(const char *path, int max_side, struct image *img, char *err,
     return rc;
 }
 
-int image_write_png(const char *path, const struct image *img, char *err, size_t errlen)
+int image_write(FILE *f, const char *name, const struct image *img, int ppm, char *err,
+                size_t errlen)
 {
-    png_image pi;
-    memset(&pi, 0, sizeof pi);
-    pi.version = PNG_IMAGE_VERSION;
-    pi.width = (png_uint_32)img->width;
-    pi.height = (png_uint_32)img->height;
-    pi.format = PNG_FORMAT_RGB;
-    if (!png_image_write_to_file(&pi, path, 0, img->rgb, 0, NULL)) {
-        snprintf(err, errlen, "%s: cannot write PNG (%s)", path, pi.message);
-        return -1;
+    if (!ppm) {
+        png_image pi;
+        memset(&pi, 0, sizeof pi);
+        pi.version = PNG_IMAGE_VERSION;
+        pi.width = (png_uint_32)img->width;
+        pi.height = (png_uint_32)img->height;
+        pi.format = PNG_FORMAT_RGB;
+        if (!png_image_write_to_stdio(&pi, f, 0, img->rgb, 0, NULL)) {
+            snprintf(err, errlen, "%s: cannot write PNG (%s)", name, pi.message);
+            return -1;
+        }
+    } else {
+        size_t n = (size_t)img->width * (size_t)img->height * 3;
+        if (fprintf(f, "P6\n%d %d\n255\n", img->width, img->height) < 0 ||
+            fwrite(img->rgb, 1, n, f) != n) {
+            snprintf(err, errlen, "%s: write failed: %s", name, strerror(errno));
+            return -1;
+        }
     }
-    return 0;
-}
-
-int image_write_ppm(const char *path, const struct image *img, char *err, size_t errlen)
-{
-    FILE *f = fopen(path, "wb");
-    if (!f) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
-        return -1;
-    }
-    size_t n = (size_t)img->width * (size_t)img->height * 3;
-    int ok = fprintf(f, "P6\n%d %d\n255\n", img->width, img->height) > 0 &&
-             fwrite(img->rgb, 1, n, f) == n;
-    if (fclose(f) != 0)
-        ok = 0;
-    if (!ok) {
-        snprintf(err, errlen, "%s: write failed: %s", path, strerror(errno));
+    if (ferror(f) || fflush(f) != 0) {
+        snprintf(err, errlen, "%s: write failed: %s", name, strerror(errno));
         return -1;
     }
     return 0;

@@ -5,6 +5,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #define IMAGE_MAX_SIDE 16384 /* refuse larger files rather than allocate blindly */
 
@@ -19,8 +20,11 @@ int image_read(const char *path, struct image *img, char *err, size_t errlen);
  * from its header, before any pixel is allocated or read. */
 int image_read_max(const char *path, int max_side, struct image *img, char *err,
                    size_t errlen);
-int image_write_png(const char *path, const struct image *img, char *err, size_t errlen);
-int image_write_ppm(const char *path, const struct image *img, char *err, size_t errlen);
+/* img as PNG (ppm 0) or binary PPM (ppm 1) to f, which the caller makes
+ * and closes (an output file is written whole through
+ * host-tools/opts/out_file.h); name names it in err.  0, or -1. */
+int image_write(FILE *f, const char *name, const struct image *img, int ppm, char *err,
+                size_t errlen);
 void image_free(struct image *img);
 
 #endif

@@ -7,6 +7,7 @@
 #define LINKS1_HOST_SCENE_DESC_H
 
 #include <stddef.h>
+#include <stdio.h>
 #include <stdint.h>
 
 #include "proto/scene_format.h"
@@ -110,11 +111,12 @@ void sd_view_defaults(struct sd_view *v);
 int sd_compile(const struct sd_scene *s, uint8_t **out, size_t *len,
                char *err, size_t errlen);
 
-/* The POV-Ray 3.7 form of frame `frame`; -1 with err naming what POV-Ray
+/* The POV-Ray 3.7 form of frame `frame` to f (name names it in err; the
+ * caller makes and closes the file); -1 with err naming what POV-Ray
  * cannot carry when strict is set (otherwise such parts are approximated
  * and listed as comments in the output). */
-int sd_export_pov(const struct sd_scene *s, int frame, int strict,
-                  const char *path, char *err, size_t errlen);
+int sd_export_pov(const struct sd_scene *s, int frame, int strict, FILE *f, const char *name,
+                  char *err, size_t errlen);
 
 /* Keyframe placement K(frame) of cluster c as a 3x4 matrix (identity when
  * it has no keys), interpolated as the renderer does (render/scene.h). */

@@ -183,19 +183,14 @@ static void pov_prim(FILE *f, const struct sd_scene *s, const struct sd_prim *p,
     fprintf(f, "}\n");
 }
 
-int sd_export_pov(const struct sd_scene *s, int frame, int strict, const char *path, char *err,
-                  size_t errlen)
+int sd_export_pov(const struct sd_scene *s, int frame, int strict, FILE *f, const char *name,
+                  char *err, size_t errlen)
 {
     struct pov_notes notes = {{0}, 0};
     pov_check(s, &notes);
     if (strict && notes.n > 0) {
         snprintf(err, errlen, "POV-Ray cannot render this scene the same way: %s",
                  notes.text[0]);
-        return -1;
-    }
-    FILE *f = fopen(path, "w");
-    if (!f) {
-        snprintf(err, errlen, "%s: %s", path, strerror(errno));
         return -1;
     }
     const struct sd_view *v = &s->view;
@@ -258,8 +253,8 @@ int sd_export_pov(const struct sd_scene *s, int frame, int strict, const char *p
     }
     for (int i = 0; i < s->n_prims; i++)
         pov_prim(f, s, &s->prims[i], frame);
-    if (fclose(f) != 0) {
-        snprintf(err, errlen, "%s: write failed: %s", path, strerror(errno));
+    if (ferror(f) || fflush(f) != 0) {
+        snprintf(err, errlen, "%s: write failed: %s", name, strerror(errno));
         return -1;
     }
     return 0;

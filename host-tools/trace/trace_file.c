@@ -90,11 +90,8 @@ int trace_check(const struct trace *t, char *err, size_t cap)
     return rc;
 }
 
-int trace_write(const char *path, const struct trace *t, char *err, size_t cap)
+int trace_write(FILE *f, const char *name, const struct trace *t, char *err, size_t cap)
 {
-    FILE *f = fopen(path, "w");
-    if (!f)
-        return trace_fail(err, cap, "%s: %s", path, strerror(errno));
     fprintf(f, "%s %d\n", TRACE_MAGIC, TRACE_VERSION);
     fprintf(f, "screen %" PRIu32 " %" PRIu32 "\n", t->width, t->height);
     fprintf(f, "run ncs %" PRIu32 " balance %s k %" PRIu32 " flags %" PRIu32 "\n", t->ncs,
@@ -120,8 +117,8 @@ int trace_write(const char *path, const struct trace *t, char *err, size_t cap)
         fputc('\n', f);
     }
     fputs("end\n", f);
-    if (ferror(f) | (fclose(f) != 0))
-        return trace_fail(err, cap, "%s: write error", path);
+    if (ferror(f) || fflush(f) != 0)
+        return trace_fail(err, cap, "%s: write error", name);
     return 0;
 }
 

@@ -17,6 +17,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 
 #define TRACE_MAGIC "links1-trace"
 #define TRACE_VERSION 1
@@ -50,8 +51,10 @@ struct trace {
 };
 
 void trace_free(struct trace *t);
-/* 0, or -1 with err filled. */
-int trace_write(const char *path, const struct trace *t, char *err, size_t cap);
+/* The trace as text to f (the caller makes and closes the file: an
+ * output file is written whole through host-tools/opts/out_file.h); name
+ * names it in err.  0, or -1 with err filled. */
+int trace_write(FILE *f, const char *name, const struct trace *t, char *err, size_t cap);
 /* Reads and checks a trace: the areas cover the screen once, each area's
  * total is its set-up, pixels and push.  0, or -1 with err naming the
  * problem (and the line). */

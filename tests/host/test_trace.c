@@ -84,6 +84,18 @@ static int same_trace(const struct trace *a, const struct trace *b)
 
 static char test_dir[] = "/tmp/links1-test-trace-XXXXXX";
 
+/* The trace written to path: 0, or -1 with err. */
+static int write_trace(const char *path, const struct trace *t, char *err, size_t cap)
+{
+    FILE *f = fopen(path, "w");
+    if (!f) {
+        snprintf(err, cap, "%s: cannot write", path);
+        return -1;
+    }
+    int rc = trace_write(f, path, t, err, cap);
+    return fclose(f) != 0 ? -1 : rc;
+}
+
 static void test_trace_round_trips(void)
 {
     struct trace t, back;
@@ -91,7 +103,7 @@ static void test_trace_round_trips(void)
     snprintf(path, sizeof path, "%s/rt.trace", test_dir);
     make_trace(&t, AREAS_DECREASING, 37, 23, 3, 64);
     CHECK_EQ_INT(trace_check(&t, err, sizeof err), 0);
-    CHECK_EQ_INT(trace_write(path, &t, err, sizeof err), 0);
+    CHECK_EQ_INT(write_trace(path, &t, err, sizeof err), 0);
     int r = trace_read(path, &back, err, sizeof err);
     if (r != 0)
         printf("  %s\n", err);
@@ -110,7 +122,7 @@ static void expect_refused(const struct trace *t, const char *prefix, const char
     char err[TRACE_ERR_MAX], path[128], bad[128];
     snprintf(path, sizeof path, "%s/good.trace", test_dir);
     snprintf(bad, sizeof bad, "%s/bad.trace", test_dir);
-    trace_write(path, t, err, sizeof err);
+    write_trace(path, t, err, sizeof err);
     FILE *in = fopen(path, "r"), *out = fopen(bad, "w");
     char line[1 << 16];
     int done = 0;

@@ -155,7 +155,11 @@ static void check_map_image_text(void)
         snprintf(scene, sizeof scene, "%s/wide.scn", dir);
         snprintf(text, sizeof text, HEAD "map w colour { image \"wide.png\" }\n" BALL);
         struct sd_scene s;
-        if (image_write_png(path, &img, err, sizeof err) == 0) {
+        FILE *png = fopen(path, "wb");
+        int written = png && image_write(png, path, &img, 0, err, sizeof err) == 0;
+        if (png && fclose(png) != 0)
+            written = 0;
+        if (written) {
             rc = sd_parse_text(scene, text, &s, err, sizeof err);
             if (rc == 0)
                 sd_free(&s);

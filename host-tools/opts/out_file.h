@@ -1,0 +1,35 @@
+/* out_file.h: an output file (every command's -o OUT, render's frames and
+ * --trace) written whole or not at all, and never through anything planted
+ * beside it: the bytes go to a temporary file that mkstemp makes in OUT's
+ * own directory (a name no one can predict, O_EXCL), which is flushed,
+ * fsync'ed and then renamed over OUT; on any error it is removed.  OUT
+ * itself must be missing or a regular file: a symbolic link, a FIFO, a
+ * device or a directory there is refused, not written through or replaced.
+ * The file gets the mode a plain create would (0666 less the umask). */
+#ifndef LINKS1_HOST_OPTS_OUT_FILE_H
+#define LINKS1_HOST_OPTS_OUT_FILE_H
+
+#include <limits.h>
+#include <stddef.h>
+#include <stdio.h>
+
+struct out_file {
+    FILE *f;                /* write OUT's bytes here */
+    char path[PATH_MAX];    /* OUT */
+    char tmp[PATH_MAX];     /* the temporary file beside it */
+};
+
+/* The temporary file for OUT opened in o->f.  0, or -1 with "OUT: why" in
+ * err (nothing made). */
+int out_file_open(struct out_file *o, const char *path, char *err, size_t cap);
+
+/* o->f flushed, fsync'ed and closed, then renamed over OUT.  0, or -1
+ * with "OUT: why" in err and the temporary file removed. */
+int out_file_commit(struct out_file *o, char *err, size_t cap);
+
+/* o->f closed and the temporary file removed (a write that failed);
+ * nothing happens to OUT.  Safe to call on an o never opened (zeroed) or
+ * already committed. */
+void out_file_abort(struct out_file *o);
+
+#endif
