@@ -15,6 +15,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <time.h>
@@ -33,14 +34,47 @@ static long long child_now_ms(void)
     return (long long)t.tv_sec * 1000 + t.tv_nsec / 1000000;
 }
 
-/* The child's side: never returns. */
-static void child_run(const char *path, model_loader_fn load, int fd)
+static unsigned child_cpu_s(const struct model_child_limits *lim)
 {
-    static const int crash[] = {SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT, SIGPIPE, SIGTERM};
+    return lim->cpu_s ? lim->cpu_s : MODEL_CHILD_CPU_S;
+}
+
+static unsigned child_memory_mb(const struct model_child_limits *lim)
+{
+    return lim->memory_mb ? lim->memory_mb : MODEL_CHILD_MEMORY_MB;
+}
+
+/* In the child: its CPU time and the memory it may add limited. */
+static void child_limits(const struct model_child_limits *lim)
+{
+    struct rlimit cpu = {child_cpu_s(lim), child_cpu_s(lim) + 1};
+    setrlimit(RLIMIT_CPU, &cpu);
+    /* The address space it has now (pages, /proc/self/statm), and more. */
+    char text[64] = "";
+    int fd = open("/proc/self/statm", O_RDONLY | O_CLOEXEC);
+    if (fd >= 0) {
+        ssize_t n = read(fd, text, sizeof text - 1);
+        text[n > 0 ? n : 0] = 0;
+        close(fd);
+    }
+    unsigned long long pages = strtoull(text, NULL, 10);
+    unsigned long long now = pages * (unsigned long long)sysconf(_SC_PAGESIZE);
+    rlim_t as = (rlim_t)(now + ((unsigned long long)child_memory_mb(lim) << 20));
+    struct rlimit mem = {as, as};
+    setrlimit(RLIMIT_AS, &mem);
+}
+
+/* The child's side: never returns. */
+static void child_run(const char *path, model_loader_fn load, const struct model_child_limits *lim,
+                      int fd)
+{
+    static const int crash[] = {SIGSEGV, SIGBUS, SIGILL, SIGFPE, SIGABRT, SIGPIPE, SIGTERM, SIGXCPU};
     for (size_t i = 0; i < sizeof crash / sizeof crash[0]; i++)
         signal(crash[i], SIG_DFL); /* a crash ends the child by its signal */
+    prctl(PR_SET_PDEATHSIG, SIGKILL); /* and it ends with its parent */
     struct rlimit no_core = {0, 0};
     setrlimit(RLIMIT_CORE, &no_core);
+    child_limits(lim);
     int null = open("/dev/null", O_RDWR);
     if (null >= 0) { /* the library's own complaints stay out of the terminal */
         dup2(null, STDIN_FILENO);
@@ -163,16 +197,22 @@ static int child_judge(const char *path, int st, const struct child_got *g,
         snprintf(err, errlen, "%s: the model library handed back more than %zu bytes "
                               "(stopped); the model is too big to import",
                  path, lim->max_bytes);
+    } else if (WIFSIGNALED(st) && WTERMSIG(st) == SIGXCPU) {
+        snprintf(err, errlen, "%s: the model library used more than %u s of CPU time reading "
+                              "it (stopped); the file is malformed or too big",
+                 path, child_cpu_s(lim));
     } else if (WIFSIGNALED(st)) {
         int sig = WTERMSIG(st);
         const char *abbrev = sigabbrev_np(sig);
         snprintf(err, errlen, "%s: the model library crashed (signal %d, SIG%s) while reading "
-                              "it; the file is malformed or unsupported",
-                 path, sig, abbrev ? abbrev : "?");
+                              "it; the file is malformed or unsupported (or needs more than "
+                              "the %u MiB a reader may take)",
+                 path, sig, abbrev ? abbrev : "?", child_memory_mb(lim));
     } else if (WIFEXITED(st) && WEXITSTATUS(st) != 0) {
         snprintf(err, errlen, "%s: the model library failed (exit status %d) while reading "
-                              "it; the file is malformed or unsupported",
-                 path, WEXITSTATUS(st));
+                              "it; the file is malformed or unsupported (or needs more than "
+                              "the %u MiB a reader may take)",
+                 path, WEXITSTATUS(st), child_memory_mb(lim));
     } else if (g->read_errno) {
         snprintf(err, errlen, "%s: reading the model library's answer: %s", path,
                  strerror(g->read_errno));
@@ -201,7 +241,7 @@ int model_child_load(const char *path, model_loader_fn load, const struct model_
     }
     if (pid == 0) {
         close(fds[0]);
-        child_run(path, load, fds[1]);
+        child_run(path, load, lim, fds[1]);
     }
     close(fds[1]);
     struct child_got g = {NULL, 0, 0, 0, 0, 0};
@@ -233,6 +273,7 @@ int model_child_load(const char *path, model_loader_fn load, const struct model_
 
 int model_load(const char *path, struct model *m, char *err, size_t errlen)
 {
-    static const struct model_child_limits lim = {MODEL_CHILD_TIMEOUT_MS, MODEL_CHILD_MAX_BYTES};
+    static const struct model_child_limits lim = {MODEL_CHILD_TIMEOUT_MS, MODEL_CHILD_MAX_BYTES,
+                                                   MODEL_CHILD_CPU_S, MODEL_CHILD_MEMORY_MB};
     return model_child_load(path, model_assimp_load, &lim, m, err, errlen);
 }

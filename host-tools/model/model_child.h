@@ -15,10 +15,18 @@
 
 #define MODEL_CHILD_TIMEOUT_MS 120000u             /* the default time limit */
 #define MODEL_CHILD_MAX_BYTES (1024u * 1024u * 1024u) /* the default size limit */
+/* The child's own limits (setrlimit in the child): CPU seconds
+ * (RLIMIT_CPU: SIGXCPU, then SIGKILL a second later), and the memory it
+ * may add to the address space it had when it started (RLIMIT_AS: what it
+ * started with counts too, which under ASan is terabytes of shadow). */
+#define MODEL_CHILD_CPU_S 100u
+#define MODEL_CHILD_MEMORY_MB 4096u
 
 struct model_child_limits {
     unsigned timeout_ms;
     size_t max_bytes;
+    unsigned cpu_s;         /* 0: MODEL_CHILD_CPU_S */
+    unsigned memory_mb;     /* 0: MODEL_CHILD_MEMORY_MB */
 };
 
 /* A loader run in the child: model_load's contract (model.h). */

@@ -9,12 +9,15 @@
 #define _GNU_SOURCE
 #include <dirent.h>
 #include <errno.h>
+#include <limits.h>
 #include <signal.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
+#include <time.h>
 #include <unistd.h>
 
 #include "host-tools/model/model_child.h"
@@ -25,7 +28,7 @@
 #define CRASHES "tests/fuzz/assimp-crashes/"
 #define TEST_ERR_MAX 1024
 
-static const struct model_child_limits test_lim = {20000, MODEL_CHILD_MAX_BYTES};
+static const struct model_child_limits test_lim = {20000, MODEL_CHILD_MAX_BYTES, 0, 0};
 
 static int same_doubles(const double *a, const double *b, size_t n)
 {
@@ -265,25 +268,25 @@ struct child_case {
 static void test_children_that_fail(void)
 {
     static const struct child_case cases[] = {
-        {"segv", load_segv, {20000, MODEL_CHILD_MAX_BYTES},
+        {"segv", load_segv, {20000, MODEL_CHILD_MAX_BYTES, 0, 0},
          MODELS "cube.obj: the model library crashed (signal 11, SIGSEGV) while reading it; "
                 "the file is malformed or unsupported"},
-        {"abort", load_abort, {20000, MODEL_CHILD_MAX_BYTES},
+        {"abort", load_abort, {20000, MODEL_CHILD_MAX_BYTES, 0, 0},
          MODELS "cube.obj: the model library crashed (signal 6, SIGABRT)"},
-        {"exit", load_exit7, {20000, MODEL_CHILD_MAX_BYTES},
+        {"exit", load_exit7, {20000, MODEL_CHILD_MAX_BYTES, 0, 0},
          MODELS "cube.obj: the model library failed (exit status 7) while reading it"},
-        {"hang", load_hang, {300, MODEL_CHILD_MAX_BYTES},
+        {"hang", load_hang, {300, MODEL_CHILD_MAX_BYTES, 0, 0},
          MODELS "cube.obj: the model library did not finish reading it within 0.3 s (stopped)"},
-        {"too big", model_assimp_load, {20000, 1000},
+        {"too big", model_assimp_load, {20000, 1000, 0, 0},
          MODELS "cube.obj: the model library handed back more than 1000 bytes (stopped)"},
-        {"refusal", load_refuse, {20000, MODEL_CHILD_MAX_BYTES},
+        {"refusal", load_refuse, {20000, MODEL_CHILD_MAX_BYTES, 0, 0},
          MODELS "cube.obj: refused ? here"},
-        {"silent refusal", load_refuse_silently, {20000, MODEL_CHILD_MAX_BYTES},
+        {"silent refusal", load_refuse_silently, {20000, MODEL_CHILD_MAX_BYTES, 0, 0},
          MODELS "cube.obj: the model library refused it without saying why"},
-        {"parent", load_forward_parent, {20000, MODEL_CHILD_MAX_BYTES},
+        {"parent", load_forward_parent, {20000, MODEL_CHILD_MAX_BYTES, 0, 0},
          MODELS "cube.obj: the model library handed back malformed data (node 1: parent 1, "
                 "not -1 to 0)"},
-        {"index", load_bad_index, {20000, MODEL_CHILD_MAX_BYTES},
+        {"index", load_bad_index, {20000, MODEL_CHILD_MAX_BYTES, 0, 0},
          MODELS "cube.obj: the model library handed back malformed data (mesh 0: triangle 1 "
                 "names vertex"},
     };
@@ -299,6 +302,96 @@ static void test_children_that_fail(void)
         CHECK(m.n_nodes == 0 && m.nodes == NULL && m.meshes == NULL);
     }
     CHECK(waitpid(-1, NULL, WNOHANG) < 0 && errno == ECHILD); /* every child reaped */
+}
+
+/* ------------------------------------------- the child's own limits */
+
+/* Tells the limits the child runs under, as its refusal. */
+static int load_tell_limits(const char *path, struct model *m, char *err, size_t errlen)
+{
+    (void)path;
+    memset(m, 0, sizeof *m);
+    struct rlimit as, cpu;
+    getrlimit(RLIMIT_AS, &as);
+    getrlimit(RLIMIT_CPU, &cpu);
+    snprintf(err, errlen, "as %llu cpu %llu", (unsigned long long)as.rlim_cur,
+             (unsigned long long)cpu.rlim_cur);
+    return -1;
+}
+
+/* The greedy child's allocations: far more than a child may add. */
+#define GREEDY_CHUNK ((size_t)64 << 20)
+#define GREEDY_TOTAL (((size_t)MODEL_CHILD_MEMORY_MB + 1024) << 20)
+
+/* Takes GREEDY_TOTAL bytes (untouched) before reading the model. */
+static int load_greedy(const char *path, struct model *m, char *err, size_t errlen)
+{
+    size_t want = GREEDY_TOTAL / GREEDY_CHUNK, got = 0;
+    void **p = calloc(want, sizeof *p);
+    while (p && got < want && (p[got] = malloc(GREEDY_CHUNK)) != NULL)
+        got++;
+    for (size_t i = 0; i < got; i++)
+        free(p[i]);
+    free(p);
+    if (got < want) {
+        memset(m, 0, sizeof *m);
+        snprintf(err, errlen, "%s: out of memory after %zu MiB", path, got * (GREEDY_CHUNK >> 20));
+        return -1;
+    }
+    return model_assimp_load(path, m, err, errlen);
+}
+
+/* Spins on the CPU without end. */
+static int load_spin(const char *path, struct model *m, char *err, size_t errlen)
+{
+    (void)path, (void)m, (void)err, (void)errlen;
+    for (volatile unsigned long n = 0;; n++) {
+    }
+    return -1;
+}
+
+static long long now_ms(void)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (long long)t.tv_sec * 1000 + t.tv_nsec / 1000000;
+}
+
+static void test_child_limits(void)
+{
+    struct model m;
+    char err[TEST_ERR_MAX] = "";
+    int rc = model_child_load(MODELS "cube.obj", load_tell_limits, &test_lim, &m, err,
+                              sizeof err);
+    unsigned long long as = ULLONG_MAX, cpu = ULLONG_MAX;
+    sscanf(err, "as %llu cpu %llu", &as, &cpu);
+    CHECK_EQ_INT(rc, -1);
+    CHECK(as != (unsigned long long)RLIM_INFINITY);
+    CHECK(cpu == MODEL_CHILD_CPU_S);
+    if (as == (unsigned long long)RLIM_INFINITY || cpu == (unsigned long long)RLIM_INFINITY)
+        printf("  the child runs with: %s\n", err);
+    /* a child that takes more memory than it may is stopped */
+    rc = model_child_load(MODELS "cube.obj", load_greedy, &test_lim, &m, err, sizeof err);
+    CHECK_EQ_INT(rc, -1);
+    if (rc == 0) {
+        printf("  the child took %zu MiB and read the model\n", GREEDY_TOTAL >> 20);
+        model_free(&m);
+    }
+    if (rc != 0 && !strstr(err, "out of memory after") && !strstr(err, "MiB a reader may take"))
+        printf("  the greedy child: %s\n", err);
+    CHECK(rc != 0 && (strstr(err, "out of memory after") || strstr(err, "MiB a reader may take")));
+    /* a child that spins is stopped by its CPU limit, before the deadline */
+    static const struct model_child_limits spin_lim = {30000, MODEL_CHILD_MAX_BYTES, 1, 0};
+    long long t0 = now_ms();
+    rc = model_child_load(MODELS "cube.obj", load_spin, &spin_lim, &m, err, sizeof err);
+    CHECK_EQ_INT(rc, -1);
+    CHECK(strstr(err, "used more than 1 s of CPU time") != NULL);
+    CHECK(now_ms() - t0 < 10000);
+    if (!strstr(err, "used more than 1 s of CPU time"))
+        printf("  the spinning child: %s\n", err);
+    /* the models of tests/models/ still load under the limits */
+    CHECK_EQ_INT(model_load(MODELS "cube.obj", &m, err, sizeof err), 0);
+    model_free(&m);
 }
 
 /* ------------------------------------ libassimp's own crashes, in a child */
@@ -357,5 +450,6 @@ int main(void)
     RUN(test_wire_cut_and_damaged);
     RUN(test_children_that_fail);
     RUN(test_library_crashes_in_child);
+    RUN(test_child_limits);
     return check_exit();
 }
