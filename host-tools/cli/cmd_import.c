@@ -1,4 +1,5 @@
-/* import_cmd.c: `links1 import MODEL -o SCENE.scn [--fit] [--camera auto] [--smooth]`:
+/* import_cmd.c: `links1 import MODEL -o SCENE.scn [--fit] [--camera auto] [--smooth]
+ * [--textures-from DIR]`:
  * a model made elsewhere into a text scene (docs/import.md).  The scene is
  * written to a temporary file, read back and compiled before it takes
  * SCENE's name, so a refused model leaves no output at all. */
@@ -14,14 +15,17 @@
 #include "host-tools/cli/scene_cmds.h"
 #include "host-tools/scene/scene_import.h"
 
-enum { IMPORT_OPT_FIT = CLI_OWN_CODES, IMPORT_OPT_CAMERA, IMPORT_OPT_SMOOTH };
+enum { IMPORT_OPT_FIT = CLI_OWN_CODES, IMPORT_OPT_CAMERA, IMPORT_OPT_SMOOTH, IMPORT_OPT_TEXTURES_FROM };
 
-#define IMPORT_USAGE "links1 import MODEL -o SCENE.scn [--fit] [--camera auto] [--smooth]"
+#define IMPORT_USAGE                                                                    \
+    "links1 import MODEL -o SCENE.scn [--fit] [--camera auto] [--smooth] [--textures-from " \
+    "DIR]"
 
 static const struct option import_options[] = {
     {"fit", no_argument, NULL, IMPORT_OPT_FIT},
     {"camera", required_argument, NULL, IMPORT_OPT_CAMERA},
     {"smooth", no_argument, NULL, IMPORT_OPT_SMOOTH},
+    {"textures-from", required_argument, NULL, IMPORT_OPT_TEXTURES_FROM},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -29,6 +33,7 @@ static const struct option import_options[] = {
 struct import_args {
     const char *model, *out;
     int fit, camera_auto, smooth;
+    const char *textures_from; /* one more directory textures may come from */
 };
 
 static int import_args(int argc, char **argv, struct import_args *a)
@@ -45,6 +50,8 @@ static int import_args(int argc, char **argv, struct import_args *a)
             a->fit = 1;
         } else if (code == IMPORT_OPT_SMOOTH) {
             a->smooth = 1;
+        } else if (code == IMPORT_OPT_TEXTURES_FROM) {
+            a->textures_from = c.arg;
         } else if (code == IMPORT_OPT_CAMERA && strcmp(c.arg, "auto") == 0) {
             a->camera_auto = 1;
         } else if (code == IMPORT_OPT_CAMERA) {
@@ -142,7 +149,7 @@ static int import_write(const struct sd_scene *s, const char *const *maps,
 
 int scene_cmd_import(int argc, char **argv)
 {
-    struct import_args a = {NULL, NULL, 0, 0, 0};
+    struct import_args a = {NULL, NULL, 0, 0, 0, NULL};
     int r0 = import_args(argc, argv, &a);
     if (r0 != 0)
         return r0 > 0 ? 0 : 2;
@@ -170,7 +177,7 @@ int scene_cmd_import(int argc, char **argv)
     s.n_clusters = 1;
     char dir[IMPORT_PATH_MAX];
     import_dir(a.model, dir, sizeof dir);
-    struct import_opts o = {a.fit, -1, 0, "--fit", a.smooth};
+    struct import_opts o = {a.fit, -1, 0, "--fit", a.smooth, a.textures_from};
     int rc = scene_import_model(&s, 0, &m, dir, &o, r, err, sizeof err);
     if (rc == 0)
         rc = scene_import_view(&s, &m, r, a.camera_auto, stderr, err, sizeof err);

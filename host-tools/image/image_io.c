@@ -2,11 +2,14 @@
 #include "host-tools/image/image_io.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <setjmp.h>
 #include <png.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #define IMAGE_ERR_ROOM 200 /* libpng message kept for the error */
 
@@ -152,12 +155,41 @@ int image_read(const char *path, struct image *img, char *err, size_t errlen)
     return image_read_max(path, IMAGE_MAX_SIDE, img, err, errlen);
 }
 
-int image_read_max(const char *path, int max_side, struct image *img, char *err, size_t errlen)
+int image_open(const char *path, int nofollow, int max_side, char *err, size_t errlen)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC | (nofollow ? O_NOFOLLOW : 0));
+    if (fd < 0) {
+        snprintf(err, errlen, "%s: %s", path, errno == ELOOP && nofollow ? "a symbolic link"
+                                                                         : strerror(errno));
+        return -1;
+    }
+    struct stat st = {0};
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        snprintf(err, errlen, "%s: not a regular file (%s): not read", path,
+                 S_ISDIR(st.st_mode) ? "a directory" : S_ISFIFO(st.st_mode) ? "a FIFO"
+                 : S_ISSOCK(st.st_mode) ? "a socket" : "a device");
+        close(fd);
+        return -1;
+    }
+    if ((unsigned long long)st.st_size > IMAGE_FILE_MAX(max_side)) {
+        snprintf(err, errlen, "%s: %lld bytes, more than an image of at most %dx%d pixels "
+                 "takes (%llu)", path, (long long)st.st_size, max_side, max_side,
+                 (unsigned long long)IMAGE_FILE_MAX(max_side));
+        close(fd);
+        return -1;
+    }
+    fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+    return fd;
+}
+
+int image_read_fd(int fd, const char *path, int max_side, struct image *img, char *err,
+                  size_t errlen)
 {
     memset(img, 0, sizeof *img);
-    FILE *f = fopen(path, "rb");
+    FILE *f = fdopen(fd, "rb");
     if (!f) {
         snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        close(fd);
         return -1;
     }
     unsigned char magic[2] = {0, 0};
@@ -171,6 +203,13 @@ int image_read_max(const char *path, int max_side, struct image *img, char *err,
     }
     fclose(f);
     return rc;
+}
+
+int image_read_max(const char *path, int max_side, struct image *img, char *err, size_t errlen)
+{
+    memset(img, 0, sizeof *img);
+    int fd = image_open(path, 0, max_side, err, errlen);
+    return fd < 0 ? -1 : image_read_fd(fd, path, max_side, img, err, errlen);
 }
 
 int image_write(FILE *f, const char *name, const struct image *img, int ppm, char *err,

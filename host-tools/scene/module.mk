@@ -11,7 +11,8 @@ HT_SCENE_SRCS := host-tools/scene/scene_lex.c host-tools/scene/scene_parse.c \
 	host-tools/scene/scene_compile.c host-tools/scene/scene_bvh.c \
 	host-tools/scene/scene_board.c host-tools/scene/scene_file.c \
 	host-tools/scene/scene_import.c host-tools/scene/scene_import_view.c \
-	host-tools/scene/scene_map_image.c host-tools/scene/scene_write.c
+	host-tools/scene/scene_map_image.c host-tools/scene/scene_texture.c \
+	host-tools/scene/scene_write.c
 HT_SCENE_POV_SRCS := host-tools/scene/scene_pov.c
 # All but the board conversion (scene_board.c) know no num_t: one host build
 # serves every arithmetic (Makefile: ARITH_FREE_SRCS).
@@ -73,3 +74,10 @@ HOST_TESTS += test_model_child
 test_model_child_SRCS = tests/host/test_model_child.c $(SCENE_TEXT_SRCS)
 test_model_child_ARITH := double
 test_model_child_LIBS = $(SCENE_TEXT_LIBS)
+
+# A model's texture paths: confined to its directory (or one the user
+# allows), regular files only, never a blocking read.
+HOST_TESTS += test_textures
+test_textures_SRCS = tests/host/test_textures.c $(SCENE_TEXT_SRCS) host-tools/opts/tmp_dir.c
+test_textures_ARITH := double
+test_textures_LIBS = $(SCENE_TEXT_LIBS)

@@ -313,7 +313,9 @@ static int imp_texture(struct imp *im, const struct sd_scene *s, const char *mod
     mp->repeat_u = mp->repeat_v = 1;
     mp->bump_depth = kind == SCN_MAP_BUMP ? 1 : 0;
     char why[SD_ERR_MAX];
-    if (sd_map_read_image(mp, path, why, sizeof why) != 0)
+    int fd = sd_texture_open(tex, model_dir, im->o->textures_from, path, sizeof path, why,
+                             sizeof why);
+    if (fd < 0 || sd_map_read_image_fd(mp, fd, path, why, sizeof why) != 0)
         return imp_fail(im, "material '%s': %s: %s", mm->name, what, why);
     const char *base = strrchr(tex, '/');
     char word[SCN_MAX_NAME];

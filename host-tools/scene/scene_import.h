@@ -24,6 +24,8 @@ struct import_opts {
     const char *fit_hint; /* how the user asks for fit, for the refusal: "--fit" */
     int smooth;        /* 1: triangles carry the model's vertex normals
                           (beyond the paper); meshes without them stay flat */
+    const char *textures_from; /* NULL, or one more directory the model's
+                                  textures may come from (sd_texture_open) */
 };
 
 struct import_result {
@@ -42,7 +44,8 @@ struct import_result {
 
 /* Adds the model's nodes as clusters under cluster parent of s, its
  * triangles, and (when o->material < 0) its materials and texture maps.
- * model_dir ends in '/' or is "" and locates texture files.  0, or -1 with
+ * model_dir ends in '/' or is "" and locates texture files, which are read
+ * only from below it or o->textures_from (sd_texture_open).  0, or -1 with
  * err saying what is wrong with the model (s then as before the call). */
 int scene_import_model(struct sd_scene *s, int parent, const struct model *m,
                        const char *model_dir, const struct import_opts *o,
@@ -56,8 +59,20 @@ int scene_import_view(struct sd_scene *s, const struct model *m, const struct im
                       int camera_auto, FILE *warn, char *err, size_t errlen);
 
 /* Reads the image at path into map m (its kind set): the RGB bytes of a
- * colour map, the luminance of a bump map.  0, or -1 with err. */
+ * colour map, the luminance of a bump map.  A regular file only (a FIFO
+ * or a device is refused, never read).  0, or -1 with err. */
 int sd_map_read_image(struct sd_map *m, const char *path, char *err, size_t errlen);
+/* The same from fd (sd_texture_open's; closed here); path names it. */
+int sd_map_read_image_fd(struct sd_map *m, int fd, const char *path, char *err, size_t errlen);
+
+/* A model's texture tex (as the model file writes it) opened: the path
+ * (model_dir + tex, or tex when absolute) into path, and opened only when
+ * it resolves to a regular file below model_dir ("" = ".") or below allow
+ * (NULL: none); absolute paths, ../ and links that lead elsewhere are
+ * refused, and so are directories, FIFOs and devices (checked without
+ * blocking).  Its fd, or -1 with "PATH: why" in err. */
+int sd_texture_open(const char *tex, const char *model_dir, const char *allow, char *path,
+                    size_t cap, char *err, size_t errlen);
 
 /* Writes s as text that sd_parse_text reads back to the same scene.
  * map_image[i], when not NULL or "", is written as map i's image file

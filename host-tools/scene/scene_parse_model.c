@@ -2,7 +2,11 @@
  * (docs/scene-format.md): a model file's nodes, triangles and materials
  * placed in the cluster the statement stands in (scene_import.h).
  *
- *   model { file "bison.obj"  material m  fit on  smooth on }
+ *   model { file "bison.obj"  material m  fit on  smooth on  textures_from "maps" }
+ *
+ * A model's textures are read from its own directory (and below) only,
+ * unless textures_from names one more (relative to the scene's directory,
+ * like file): scene_import.h, sd_texture_open.
  */
 #include <stdio.h>
 #include <string.h>
@@ -13,8 +17,8 @@
 void parse_model(struct parser *p, int cluster, int nesting)
 {
     int line = p->lx.tok_line, col = p->lx.tok_col;
-    char file[LEX_TOKEN_MAX] = "";
-    struct import_opts o = {0, -1, nesting, "'fit on'", 0};
+    char file[LEX_TOKEN_MAX] = "", textures[LEX_TOKEN_MAX] = "";
+    struct import_opts o = {0, -1, nesting, "'fit on'", 0, NULL};
     lex_next(&p->lx);
     parse_open(p, "model");
     while (p->lx.kind != LEX_CLOSE) {
@@ -30,6 +34,12 @@ void parse_model(struct parser *p, int cluster, int nesting)
         } else if (lex_is_word(&p->lx, "fit")) {
             lex_next(&p->lx);
             o.fit = parse_on_off(p, "fit");
+        } else if (lex_is_word(&p->lx, "textures_from")) {
+            lex_next(&p->lx);
+            if (p->lx.kind != LEX_STRING)
+                lex_error(&p->lx, "expected a directory name in quotes, found '%s'", p->lx.tok);
+            snprintf(textures, sizeof textures, "%s", p->lx.tok);
+            lex_next(&p->lx);
         } else if (lex_is_word(&p->lx, "smooth")) {
             lex_next(&p->lx);
             o.smooth = parse_on_off(p, "smooth");
@@ -48,6 +58,11 @@ void parse_model(struct parser *p, int cluster, int nesting)
         slash[1] = 0;
     else
         dir[0] = 0;
+    char allow[IMPORT_PATH_MAX];
+    if (textures[0]) {
+        snprintf(allow, sizeof allow, "%s%s", textures[0] == '/' ? "" : p->dir, textures);
+        o.textures_from = allow;
+    }
     struct model m;
     char why[SD_ERR_MAX];
     if (model_load(path, &m, why, sizeof why) != 0)

@@ -112,7 +112,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         s.materials[0].colour_map = s.materials[0].bump_map = -1;
         s.n_materials = 1;
     }
-    struct import_opts o = {(opt & 8) != 0, one_material ? 0 : -1, 0, "fit", (opt & 0x20) != 0};
+    struct import_opts o = {(opt & 8) != 0, one_material ? 0 : -1, 0, "fit", (opt & 0x20) != 0,
+                            NULL};
     int rc = scene_import_model(&s, 0, &m, "tests/models/", &o, r, err, sizeof err);
     if (rc == 0)
         rc = scene_import_view(&s, &m, r, (opt & 0x40) || !m.have_camera, notes, err,

@@ -31,7 +31,7 @@ static int import(const char *path, int fit, struct sd_scene *s, struct import_r
     memset(m, 0, sizeof *m);
     if (model_load(path, m, err, errlen) != 0)
         return -1;
-    struct import_opts o = {fit, -1, 0, "--fit", 0};
+    struct import_opts o = {fit, -1, 0, "--fit", 0, NULL};
     return scene_import_model(s, 0, m, MODELS, &o, r, err, errlen);
 }
 

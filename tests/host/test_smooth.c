@@ -183,7 +183,7 @@ static void test_no_normals_stays_flat(void)
     s.clusters[0].m[0] = s.clusters[0].m[5] = s.clusters[0].m[10] = 1;
     s.n_clusters = 1;
     static struct import_result r;
-    struct import_opts o = {0, -1, 0, "--fit", 1};
+    struct import_opts o = {0, -1, 0, "--fit", 1, NULL};
     CHECK(scene_import_model(&s, 0, &m, "tests/models/", &o, &r, err, sizeof err) == 0);
     CHECK(r.triangles > 0);
     CHECK_EQ_INT(r.flat, r.triangles);
