@@ -65,6 +65,8 @@ BENCHES += tests/bench/bench_wallclock.sh
 # The include rules of docs/layers.md: the tree follows them and the
 # checker refuses each kind of wrong include (`make check-layers` alone).
 BOARD_TESTS += tests/layers/layers.sh
+# The runner counts what it says: hangs, crashes, early ends, unplanned tests.
+BOARD_TESTS += tests/runner/runner.sh
 .PHONY: check-layers
 check-layers:
 	$(Q)bash tests/layers/check_layers.sh
