@@ -25,7 +25,7 @@ secondary() {
 # 0 the float and fixed builds stay within 2/255 of the double build's
 # image (the reference is double, not a recorded value).
 weights="0 0.000244140625 0.001953125 0.015625 0.125"
-for name in demo glass molecule; do
+for name in demo glass molecule city; do
     for arith in double float fixed; do
         check=adaptive_monotone_${name}_$arith
         prev= rays0= bad= list=
