@@ -84,5 +84,11 @@
  * The floor covers an emulated core that the host did not run for a while. */
 #define GIGS_WATCH_FACTOR 4
 #define GIGS_WATCH_FLOOR_MS 3000
+/* ... and while its word stood still, the others' words moved on by this
+ * many pixels: the guest ran, so a loaded host (every core slow alike) is
+ * never taken for a failure.  An NC whose peers are all idle (the frame's
+ * last area) is judged by time alone after GIGS_WATCH_ALONE_MS. */
+#define GIGS_WATCH_PEER_PIXELS 1024
+#define GIGS_WATCH_ALONE_MS 20000
 #define GIGS_WATCH_FIRST_MS 20000 /* an area before any area finished */
 #endif

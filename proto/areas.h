@@ -33,7 +33,7 @@
 /* Areas of the k-area grid when the caller passes k = 0 (the host's
  * --areas default too): the paper's best simple-dynamic count on 512x480
  * with 64 NCs (Fig. 10), and the best measured with the decreasing
- * schedule on 64 NCs (docs/RESULTS.md, "GIGS pipeline"). */
+ * schedule on 64 NCs (docs/results/gigs-pipeline.md). */
 #define AREAS_DEFAULT_K 1024u
 /* Guided self-scheduling divisor: an area takes 1/(factor * ncs) of what is
  * left.  1 gives the first NCs so much that the last areas cannot even the

@@ -139,7 +139,7 @@ enum scn_section {
 #define SCN_MAX_DENSITY_STEPS 256
 #define SCN_DEFAULT_DENSITY_STEPS 24 /* text form's default: 16 come within 0.05
                                         dB of it on demo.scn; thin features want
-                                        more (docs/RESULTS.md, the density_steps
+                                        more (docs/results/sweeps.md, the density_steps
                                         sweep) */
 
 /* Render options.  REFRACTIONLESS: past max_depth, transmission continues

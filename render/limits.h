@@ -61,7 +61,7 @@
  * 2^(RENDER_NORM_EXP+1)); the tolerances above apply to the scaled scene
  * (times 2^tol_exp), so a scene scaled by any power of two renders the
  * same, bit for bit. */
-#ifndef RENDER_NORM_EXP /* overridable to measure (docs/RESULTS.md) */
+#ifndef RENDER_NORM_EXP /* overridable to measure (docs/results/sweeps.md) */
 #define RENDER_NORM_EXP 3
 #endif
 #define RENDER_TOL_SLACK_EXP 3 /* the tolerances follow the scene's largest

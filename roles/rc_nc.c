@@ -138,8 +138,10 @@ static void rc_nc_lost(struct rc_run *run, uint32_t k, int by_watchdog)
 }
 
 /* 1 if NC k has been silent longer than the watchdog allows: past its
- * deadline, and its progress word still for GIGS_WATCH_FLOOR_MS. */
-static int rc_nc_overdue(struct rc_run *run, uint32_t k)
+ * deadline, its progress word still for GIGS_WATCH_FLOOR_MS while the
+ * others' (peers: every NC's words summed now) moved on by
+ * GIGS_WATCH_PEER_PIXELS, or still for GIGS_WATCH_ALONE_MS. */
+static int rc_nc_overdue(struct rc_run *run, uint32_t k, uint32_t peers)
 {
     struct rc_nc *n = &run->nc[k];
     uint64_t now = ktime_now(), allow;
@@ -147,9 +149,13 @@ static int rc_nc_overdue(struct rc_run *run, uint32_t k)
     if (p != n->progress || n->moved < n->since) {
         n->progress = p;
         n->moved = now;
+        n->peers_then = peers;
     }
     if (now <= n->since || now - n->moved <= ktime_ms_to_ticks(GIGS_WATCH_FLOOR_MS))
         return 0;
+    if (peers - n->peers_then < GIGS_WATCH_PEER_PIXELS &&
+        now - n->moved <= ktime_ms_to_ticks(GIGS_WATCH_ALONE_MS))
+        return 0; /* the others did not get on either: the host is slow */
     switch (n->state) {
     case RC_NC_BUSY:
         if (run->slow_pixels == 0) {
@@ -330,6 +336,9 @@ static int rc_nc_serve(struct rc_run *run, uint32_t k, struct line_msg *m)
  * pending bit was missed). */
 static void rc_nc_scan(struct rc_run *run)
 {
+    uint32_t peers = 0; /* wraps: only differences are used */
+    for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++)
+        peers += gigs_nc_progress[k];
     for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
         struct rc_nc *n = &run->nc[k];
         if (n->state == RC_NC_OUT || n->state == RC_NC_STOPPED)
@@ -338,7 +347,7 @@ static void rc_nc_scan(struct rc_run *run)
             rc_nc_lost(run, k, 0);
         else if (line_recv_ready_arm(k))
             line_pending_mark(k);
-        else if (rc_nc_overdue(run, k))
+        else if (rc_nc_overdue(run, k, peers))
             rc_nc_lost(run, k, 1);
     }
 }

@@ -40,6 +40,7 @@ struct rc_nc {
     uint64_t since;      /* ticks: when it got its area, start or stop */
     uint32_t progress;   /* its progress word when last looked at */
     uint64_t moved;      /* ticks: when that word last changed */
+    uint32_t peers_then; /* every NC's progress words summed, then */
     uint32_t given;      /* areas it got in this frame */
     struct link_inject inject; /* a planned failure (kind 0: none) */
 };

@@ -65,6 +65,16 @@ BENCHES += tests/bench/bench_wallclock.sh
 # The include rules of docs/layers.md: the tree follows them and the
 # checker refuses each kind of wrong include (`make check-layers` alone).
 BOARD_TESTS += tests/layers/layers.sh
+# The runner counts what it says: hangs, crashes, early ends, unplanned tests.
+BOARD_TESTS += tests/runner/runner.sh
 .PHONY: check-layers
 check-layers:
 	$(Q)bash tests/layers/check_layers.sh
+
+# Deliberate faults, each in a copy of the tree: every one must make a test
+# of `make test` fail (tests/mutants/; not part of `make test`).
+.PHONY: test-mutants
+test-mutants: deps
+	$(Q)$(MAKE) $(JOBS) --no-print-directory all $(HOST_TEST_BINS) $(FUZZ_BINS)
+	$(Q)HOST_TESTS="$(HOST_TEST_BINS)" BOARD_TESTS="$(BOARD_TESTS)" FW_DIR=$(FWB) \
+		python3 tests/mutants/mutants.py

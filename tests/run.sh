@@ -1,52 +1,99 @@
 #!/usr/bin/env bash
 # tests/run.sh: runs every host unit test and board test, counts the
 # "PASS name" / "FAIL name: ..." lines they print, and ends with the summary
-# line "N passed, N failed".  A program that exits non-zero without printing a
-# FAIL line (a crash, a sanitizer report, a timeout) counts as one failure.
+# line "N passed, N failed".
 #
-# Environment (set by the Makefile): HOST_TESTS, BOARD_TESTS, FW_DIR.
+# Every test is declared in tests/plan.tsv: its name, how many checks it
+# runs and the seconds it may take.  A test fails (one failure more,
+# named) when it
+#   - is not declared there, or runs another number of checks than declared
+#     (one that ends early prints fewer);
+#   - exits non-zero without printing a FAIL line (a crash, a sanitizer
+#     report), or leaves no exit status;
+#   - runs past its time limit (it is killed, its name printed).
+# Each test's exit status is written to a file beside its log atomically
+# (written aside, then renamed), and read back only once the test ended.
+#
+# Environment (set by the Makefile): HOST_TESTS, BOARD_TESTS, FW_DIR;
+# TEST_TIME_SCALE multiplies every limit (default 1); TEST_PLAN and
+# TEST_LOG_DIR name another plan and log folder (tests/runner/ tests the
+# runner itself with them).
 set -u
 cd "$(dirname "$0")/.."
 export FW_DIR="${FW_DIR:-build}"
 export ASAN_OPTIONS="${ASAN_OPTIONS:-detect_leaks=1:abort_on_error=1}"
 export UBSAN_OPTIONS="${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}"
+plan=${TEST_PLAN:-tests/plan.tsv}
+scale=${TEST_TIME_SCALE:-1}
+case $scale in
+    '' | *[!0-9]*) echo "tests/run.sh: TEST_TIME_SCALE must be a whole number, not '$scale'" >&2
+        exit 2 ;;
+esac
 
 passed=0
 failed=0
-log_dir=build/test-logs
+log_dir=${TEST_LOG_DIR:-build/test-logs}
 mkdir -p "$log_dir"
 
-# exec_one LABEL CMD...: runs one test into its log and records its exit
-# status and seconds beside it.
+# plan_of NAME: "CHECKS LIMIT" from the plan, or nothing.
+plan_of() {
+    awk -F'\t' -v n="$1" '$1 == n && NF >= 3 { print $2, $3; exit }' "$plan"
+}
+
+# exec_one LABEL CMD...: runs one test into its log under its time limit
+# and records "STATUS SECONDS" beside it (status 124: killed at the limit).
 exec_one() {
     local label=$1; shift
-    local log="$log_dir/$(basename "$label").log"
+    local name log limit checks
+    name=$(basename "$label")
+    log="$log_dir/$name.log"
+    read -r checks limit < <(plan_of "$name")
+    limit=$(( ${limit:-60} * scale ))
     local start=$SECONDS
-    "$@" >"$log" 2>&1
-    echo "$? $((SECONDS - start))" >"$log.rc"
+    timeout --kill-after=10 "$limit" "$@" >"$log" 2>&1
+    local rc=$?
+    echo "$rc $((SECONDS - start)) $limit" >"$log.rc.part" && mv "$log.rc.part" "$log.rc"
 }
 
 # report_one LABEL: counts the PASS/FAIL lines of a finished test's log.
 report_one() {
     local label=$1
-    local log="$log_dir/$(basename "$label").log"
-    local rc secs p f
-    read -r rc secs <"$log.rc"
-    p=$(grep -c '^PASS ' "$log")
-    f=$(grep -c '^FAIL ' "$log")
-    grep -E '^(PASS|FAIL|  also) ' "$log"
-    if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then
-        echo "FAIL $label: exited with status $rc without naming a failed check; last lines:"
-        tail -n 15 "$log" | sed 's/^/    /'
-        f=1
-    elif [ "$f" -gt 0 ]; then
-        echo "  (full log: $log)"
+    local name log rc secs limit p f checks plimit
+    name=$(basename "$label")
+    log="$log_dir/$name.log"
+    rc= secs= limit=
+    [ -e "$log.rc" ] && read -r rc secs limit <"$log.rc"
+    p=$(grep -c '^PASS ' "$log" 2>/dev/null)
+    f=$(grep -c '^FAIL ' "$log" 2>/dev/null)
+    p=${p:-0} f=${f:-0}
+    local ran=$((p + f))
+    grep -E '^(PASS|FAIL|  also) ' "$log" 2>/dev/null
+    read -r checks plimit < <(plan_of "$name")
+    case $rc in
+        '' | *[!0-9]*)
+            echo "FAIL $label: left no exit status"
+            f=$((f + 1)) ;;
+        124 | 137)
+            echo "FAIL $label: did not finish within its limit of $limit s (tests/plan.tsv); last lines:"
+            tail -n 15 "$log" | sed 's/^/    /'
+            f=$((f + 1)) ;;
+        0) ;;
+        *)
+            if [ "$f" -eq 0 ]; then
+                echo "FAIL $label: exited with status $rc without naming a failed check; last lines:"
+                tail -n 15 "$log" | sed 's/^/    /'
+                f=1
+            fi ;;
+    esac
+    if [ -z "${checks:-}" ]; then
+        echo "FAIL $label: not declared in $plan (name, checks, seconds)"
+        f=$((f + 1))
+    elif [ "$ran" -ne "$checks" ]; then
+        echo "FAIL $label: ran $ran checks, $plan declares $checks"
+        f=$((f + 1))
     fi
-    if [ "$p" -eq 0 ] && [ "$f" -eq 0 ]; then
-        echo "FAIL $label: ran no check"
-        f=1
-    fi
-    echo "  [$label: $p passed, $f failed, $secs s]"
+    [ "$f" -gt 0 ] && echo "  (full log: $log)"
+    echo "  [$label: $p passed, $f failed, ${secs:-?} s]"
     passed=$((passed + p))
     failed=$((failed + f))
 }
@@ -76,6 +123,7 @@ while [ $next_report -lt ${#host_list[@]} ]; do
     next_report=$((next_report + 1))
 done
 for t in ${BOARD_TESTS:-}; do
+    rm -f "$log_dir/$(basename "$t").log.rc"
     exec_one "$t" bash "$t"
     report_one "$t"
 done

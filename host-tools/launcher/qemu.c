@@ -291,10 +291,11 @@ static int board_noise_relay(const struct board_opts *o, int qemu_side)
     return rv[0];
 }
 
-int board_start(struct board *b, const struct board_opts *o)
+/* A board this tool boots: its QEMU told of when the link ends, its frames
+ * numbered from 0, its firmware found and its shape checked.  0, or -1
+ * after printing why. */
+static int board_qemu_check(struct board *b, const struct board_opts *o)
 {
-    if (board_session_init(b, o) < 0)
-        return -1;
     b->process_gone = board_qemu_gone;
     board_session_peer_from_zero(b); /* the board we boot numbers from 0 */
     if (board_find_firmware(o, b->firmware, sizeof b->firmware) < 0)
@@ -304,6 +305,25 @@ int board_start(struct board *b, const struct board_opts *o)
                 UNITS_MIN_CORES, UNITS_MAX_CORES);
         return -1;
     }
+    return 0;
+}
+
+/* A session for a board this tool boots (board_qemu_check). */
+static int board_qemu_session(struct board *b, const struct board_opts *o)
+{
+    if (board_session_init(b, o) < 0)
+        return -1;
+    if (board_qemu_check(b, o) < 0) {
+        board_session_close(b);
+        return -1;
+    }
+    return 0;
+}
+
+int board_start(struct board *b, const struct board_opts *o)
+{
+    if (board_qemu_session(b, o) < 0)
+        return -1;
     if (board_ram_create(b) < 0) {
         board_ram_release(b);
         return -1;
@@ -346,19 +366,15 @@ int board_start_named(struct board *b, const struct board_opts *o, const char *n
 {
     if (board_session_init(b, o) < 0)
         return -1;
-    b->process_gone = board_qemu_gone;
-    board_session_peer_from_zero(b); /* the board we boot numbers from 0 */
     b->named = 1;
     if (o->link_noise_on) {
         fprintf(stderr, "links1: --link-noise works on a board the command starts and "
                 "stops, not a named board\n");
+        board_session_close(b);
         return -1;
     }
-    if (board_find_firmware(o, b->firmware, sizeof b->firmware) < 0)
-        return -1;
-    if (o->ncores < UNITS_MIN_CORES || o->ncores > UNITS_MAX_CORES) {
-        fprintf(stderr, "links1: %d cores: the board needs %d..%d\n", o->ncores,
-                UNITS_MIN_CORES, UNITS_MAX_CORES);
+    if (board_qemu_check(b, o) < 0) {
+        board_session_close(b);
         return -1;
     }
     if (board_named_prepare(b, name) < 0) {

@@ -161,6 +161,16 @@ static int board_lost(struct board *b, const char *why)
     return -1;
 }
 
+/* 1 (after saying so) when the session's link is closed: nothing can be
+ * sent any more. */
+static int board_closed(const struct board *b)
+{
+    if (b->arq && b->fd >= 0)
+        return 0;
+    fprintf(stderr, "links1: the board's link is closed\n");
+    return 1;
+}
+
 /* ---- the retransmission (proto/link_arq.h, go-back-N) ---- */
 
 static int board_write_all(struct board *b, const uint8_t *p, size_t n, int timeout_ms);
@@ -168,12 +178,12 @@ static int board_write_all(struct board *b, const uint8_t *p, size_t n, int time
 /* The retransmission gives up: every wait from now on fails. */
 static int board_arq_give_up(struct board *b, const char *why)
 {
-    if (!b->arq->failed)
+    if (!b->link_failed)
         fprintf(stderr, "links1: the host link gave up: %s (noise on the link: %u bad CRC, "
                 "%u bad length, %u junk bytes from the board; %u frames from the host "
                 "dropped by the board)\n", why, b->dec.stats.crc_errors,
                 b->dec.stats.bad_length, b->dec.stats.junk_bytes, b->host_frames_dropped);
-    b->arq->failed = 1;
+    b->link_failed = 1;
     return -1;
 }
 
@@ -271,7 +281,7 @@ static int board_arq_resend(struct board *b, uint16_t from)
         size_t n = link_arq_store_get(&b->arq->tx, (uint16_t)(from + i), frame, sizeof frame);
         if (board_write_all(b, frame, n, BOARD_FRAME_TIMEOUT_MS) < 0)
             return -1;
-        b->arq->resends++;
+        b->frames_resent++;
     }
     return 0;
 }
@@ -290,7 +300,7 @@ static int board_arq_frame(struct board *b, const struct link_frame *f)
         b->arq->gap = 0;
         return board_handle_frame(b, f);
     case LINK_ARQ_DUP:
-        b->arq->dups++;
+        b->frames_dropped_dup++;
         return 0;
     default:
         return board_arq_lost(b);
@@ -325,7 +335,7 @@ static int board_arq_poll(struct board *b)
 
 int board_arq_failed(const struct board *b)
 {
-    return b->arq && b->arq->failed;
+    return b->link_failed;
 }
 
 /* Reads what is available now and handles every completed frame. */
@@ -371,7 +381,7 @@ static long long board_arq_stall_ms(const struct board *b)
 
 int board_pump(struct board *b, int timeout_ms)
 {
-    if (b->fd < 0 || b->arq->failed)
+    if (b->fd < 0 || b->link_failed)
         return -1;
     int wait = timeout_ms < 0 ? 0 : timeout_ms;
     if (b->arq->armed || b->dec.have) {
@@ -462,6 +472,8 @@ static int board_write_frame(struct board *b, const uint8_t *p, size_t n, int ti
  * waits (and reads) goes out after them, so no frame is cut by another. */
 static int board_write_all(struct board *b, const uint8_t *p, size_t n, int timeout_ms)
 {
+    if (board_closed(b))
+        return -1;
     b->arq->writing++;
     int r = board_write_frame(b, p, n, timeout_ms);
     b->arq->writing--;
@@ -509,6 +521,8 @@ static int board_write_frame(struct board *b, const uint8_t *p, size_t n, int ti
 int board_send(struct board *b, uint8_t type, uint8_t flags, const void *payload,
                size_t len)
 {
+    if (board_closed(b))
+        return -1;
     uint8_t frame[LINK_MAX_FRAME];
     uint16_t seq = b->tx_seq;
     b->arq->tx.next_seq = seq; /* kept for resending (proto/link_arq.h) */
@@ -526,10 +540,6 @@ int board_send(struct board *b, uint8_t type, uint8_t flags, const void *payload
 
 int board_send_raw(struct board *b, const void *bytes, size_t n)
 {
-    if (b->fd < 0) {
-        fprintf(stderr, "links1: the board's link is closed\n");
-        return -1;
-    }
     return board_write_all(b, bytes, n, BOARD_FRAME_TIMEOUT_MS);
 }
 
@@ -644,7 +654,7 @@ uint32_t board_report_link_errors(const struct board *b)
                 "%u junk bytes, %u seq gaps (in %u good frames); %u frames from the host "
                 "dropped by the board; %u of our frames sent again, %u of the board's taken "
                 "twice and dropped\n", s->crc_errors, s->bad_length, s->junk_bytes,
-                s->seq_gaps, s->frames, b->host_frames_dropped, b->arq->resends, b->arq->dups);
+                s->seq_gaps, s->frames, b->host_frames_dropped, b->frames_resent, b->frames_dropped_dup);
     return n;
 }
 

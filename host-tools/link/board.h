@@ -84,6 +84,9 @@ struct board {
     uint16_t tx_seq;            /* host -> board frame counter */
     struct board_arq *arq;      /* the retransmission's state (go-back-N, proto/
                                    link_arq.h): private to host-tools/link/ */
+    int link_failed;            /* the retransmission gave up: every wait fails */
+    uint32_t frames_resent;     /* our frames the retransmission sent again */
+    uint32_t frames_dropped_dup;/* board frames dropped as taken already */
     int reported_count;         /* distinct cores that sent HELLO */
     uint8_t reported[UNITS_MAX_CORES]; /* 1 once core k sent HELLO */
     int hello_errors;           /* HELLOs with a wrong role/ncores/variant/core */

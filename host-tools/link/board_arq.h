@@ -19,12 +19,9 @@ struct board_arq {
     int damage_seen;          /* the link was ever seen damaged (stall rule) */
     int gap;                  /* a board frame we lack is asked for */
     int polls;                /* polls in a row with no frame heard */
-    int failed;               /* the retransmission gave up: every wait fails */
     int naks_heard;           /* 1: the board's NAKs name our numbering (0 while a
                                  session on a board left running opens: a NAK
                                  then may name an earlier session's seq) */
-    uint32_t resends;         /* our frames sent again */
-    uint32_t dups;            /* board frames dropped as taken already */
     int writing;              /* inside a frame's write: NAKs and resends wait */
     int resend_due;           /* a resend from resend_from waits for the write */
     uint16_t resend_from;

@@ -42,19 +42,29 @@ if ! run twice board start --ncs 2 --name b1 --quiet &&
 else
     echo "FAIL board_named_twice: a second start of b1 was not refused as already running"
 fi
-# A render killed in the middle of its frame (160x120 on 2 NCs takes seconds).
-"$LINKS1" render --board b1 --quiet $scene --size 160x120 -o "$RENDER_TMP/killed.ppm" \
+# A render killed in the middle of its frame: killed as soon as it says the
+# scene is loaded (the frame's command follows at once; 320x240 on 2 NCs
+# then takes seconds), and it must not have finished the frame.
+"$LINKS1" render --board b1 $scene --size 320x240 -o "$RENDER_TMP/killed.ppm" \
     >"$RENDER_TMP/killed.log" 2>&1 &
 victim=$!
-sleep 1.5
+for ((i = 0; i < BOARD_RUN_LIMIT_S * 20; i++)); do
+    grep -q 'loaded: ' "$RENDER_TMP/killed.log" 2>/dev/null && break
+    kill -0 $victim 2>/dev/null || break
+    sleep 0.05
+done
 kill -9 $victim 2>/dev/null
 wait $victim 2>/dev/null
 run list2 board list
 run after render --board b1 $scene --size $SIZE -o "$RENDER_TMP/after.ppm"
-if grep -q '^board b1: running' "$RENDER_TMP/list2.log" && cmp -s "$ref" "$RENDER_TMP/after.ppm"; then
+if ! grep -q 'loaded: ' "$RENDER_TMP/killed.log"; then
+    echo "FAIL board_named_killed_tool: the render never said its scene was loaded: $(tail -n 1 "$RENDER_TMP/killed.log")"
+elif grep -q 'links1 render: frame 0 ' "$RENDER_TMP/killed.log" || [ -e "$RENDER_TMP/killed.ppm" ]; then
+    echo "FAIL board_named_killed_tool: the frame was finished before the render was killed"
+elif grep -q '^board b1: running' "$RENDER_TMP/list2.log" && cmp -s "$ref" "$RENDER_TMP/after.ppm"; then
     echo "PASS board_named_killed_tool"
 else
-    echo "FAIL board_named_killed_tool: after a killed render b1 is not listed running, or the next render differs from the host build"
+    echo "FAIL board_named_killed_tool: after a render killed mid-frame b1 is not listed running, or the next render differs from the host build"
 fi
 pid=$(pid_of b1)
 if run stop board stop b1 && [ -n "$pid" ] && ! qemu_alive "$pid" &&
@@ -67,7 +77,10 @@ fi
 run start2 board start --ncs 1 --name b2 --quiet
 pid=$(pid_of b2)
 [ -n "$pid" ] && kill -9 "$pid"
-sleep 0.5
+for ((i = 0; i < 200; i++)); do # until it is gone (a zombie has no command line)
+    [ -n "$pid" ] && qemu_alive "$pid" || break
+    sleep 0.05
+done
 run list3 board list
 if [ -n "$pid" ] && grep -q "board b2: its QEMU (pid $pid) is gone" "$RENDER_TMP/list3.log" &&
     [ ! -e "$LINKS1_BOARDS/b2" ]; then

@@ -108,3 +108,19 @@ light point { colour 1 1 1  position -4 9 -5 }  material m { colour 1 1 1 dic 0.
 box { material m  min -6 -0.5 -4  max 6 0 8 }   sphere { material m centre 0 1 0 radius 0.000001 }
 EOF
 }
+
+# The loader's refusal of render_damaged_scene's file, as the board says it.
+RENDER_DAMAGED_REFUSAL='scene upload: the board says: scene refused: checksum mismatch: the scene is corrupt'
+
+# render_damaged_scene GOOD OUT: OUT is GOOD compiled, then its first
+# section table entry (after the 16-byte header) pointed far past the end
+# of the file.  0, or 1 after printing why (the compile failed: a test that
+# went on would pass on a missing file).
+render_damaged_scene() {
+    local err
+    if ! err=$("$LINKS1" compile "$1" -o "$2" 2>&1) || [ ! -s "$2" ]; then
+        echo "links1 compile $1 failed: $err"
+        return 1
+    fi
+    printf '\xff\xff\xff\x7f' | dd of="$2" bs=1 seek=20 conv=notrunc status=none
+}

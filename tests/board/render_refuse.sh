@@ -21,21 +21,19 @@ board_ready render_refuse_bad render_refuse_next render_refuse_too_big \
     render_refuse_far_light || exit 0
 
 good=scenes/pov/spheres.scn
-"$LINKS1" compile $good -o "$RENDER_TMP/bad.l1s" >/dev/null 2>&1
-# Damage the first section table entry (after the 16-byte header): its
-# offset points far past the end of the file.
-printf '\xff\xff\xff\x7f' | dd of="$RENDER_TMP/bad.l1s" bs=1 seek=20 conv=notrunc status=none
+damage=$(render_damaged_scene $good "$RENDER_TMP/bad.l1s") || echo "FAIL render_refuse_bad: $damage"
 ref=$(render_ref $good float 160x120) # the scene's own size
 log="$RENDER_TMP/refuse.log"
 timeout "$BOARD_RUN_LIMIT_S" "$LINKS1" render --quiet --ncs 2 "$RENDER_TMP/bad.l1s" \
     -o "$RENDER_TMP/bad.ppm" $good -o "$RENDER_TMP/next.ppm" >"$log" 2>&1
 rc=$?
 echo "--- links1 render bad.l1s then $good (exit $rc)"; sed 's/^/    /' "$log"
-if [ $rc -eq 1 ] && grep -q 'scene upload: the board says: scene refused: ' "$log" &&
-    [ ! -e "$RENDER_TMP/bad.ppm" ]; then
-    echo "PASS render_refuse_bad"
-else
-    echo "FAIL render_refuse_bad: exit $rc (want 1) or no 'scene refused' message from the board"
+if [ -s "$RENDER_TMP/bad.l1s" ]; then
+    if [ $rc -eq 1 ] && grep -qF "$RENDER_DAMAGED_REFUSAL" "$log" && [ ! -e "$RENDER_TMP/bad.ppm" ]; then
+        echo "PASS render_refuse_bad"
+    else
+        echo "FAIL render_refuse_bad: exit $rc (want 1), an image written, or not the loader's '$RENDER_DAMAGED_REFUSAL'"
+    fi
 fi
 render_same render_refuse_next "$ref" "$RENDER_TMP/next.ppm"
 

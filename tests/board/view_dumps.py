@@ -8,7 +8,10 @@ usage: view_dumps.py MONITOR_SOCKET DUMP_DIR FINISHED.ppm
            from the one before
        view_dumps.py --check DUMP_DIR FINAL.ppm     (prints PASS/FAIL lines)
 
-The frame memory shows only finished pixels, so whatever the timing, every
+Each dump is taken with the emulation stopped, and the board runs only a
+short slice between two (grab), so some dumps show the frame part done on
+a fast host or a loaded one.  The frame memory shows only finished pixels,
+so whatever the timing, every
 dump must be the final image with some pixels not yet written (black): a lit
 pixel that differs from the final image is a fault of the view, the lit
 count never shrinks, some dump shows the frame part done, and the last dump
@@ -20,6 +23,7 @@ import sys
 import time
 
 WAIT_FOR_SOCKET_S = 60
+RUN_SLICE_S = 0.05  # the board runs this long between two dumps
 
 
 def read_to_prompt(s):
@@ -32,21 +36,26 @@ def read_to_prompt(s):
     return got
 
 
-def monitor_command(path, line):
-    """Runs one monitor command and returns when QEMU has done it (its
-    prompt is back)."""
+def monitor_commands(path, lines):
+    """Runs monitor commands one after another on one connection and
+    returns when QEMU has done the last (its prompt is back)."""
     s = socket.socket(socket.AF_UNIX)
     try:
         s.settimeout(60)
         s.connect(path)
         read_to_prompt(s)  # the banner
-        s.sendall(line.encode() + b"\n")
-        read_to_prompt(s)
+        for line in lines:
+            s.sendall(line.encode() + b"\n")
+            read_to_prompt(s)
     finally:
         s.close()
 
 
 def grab(path, out_dir, finished_path):
+    """Each dump is taken with the emulation stopped, and between two dumps
+    the board runs for RUN_SLICE_S only: a frame of emulated work takes
+    many slices however fast or loaded the host is, so dumps of a partly
+    rendered frame come whatever the timing."""
     finished = read_ppm(finished_path)
     deadline = time.time() + WAIT_FOR_SOCKET_S
     while not os.path.exists(path):
@@ -57,9 +66,10 @@ def grab(path, out_dir, finished_path):
     target = os.path.join(out_dir, "grab.ppm")
     while True:
         try:
-            monitor_command(path, "screendump " + target)
+            monitor_commands(path, ["stop", "screendump " + target, "cont"])
         except OSError:
             return  # QEMU has gone: the run is over
+        time.sleep(RUN_SLICE_S)
         try:
             with open(target, "rb") as f:
                 data = f.read()

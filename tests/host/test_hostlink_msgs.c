@@ -209,7 +209,7 @@ static void msg_damaged_frame_is_asked_for_again(void)
     CHECK_EQ_INT(status, 0);
     board_pump(&b, 100);
     CHECK_EQ_INT(board_queued(&b), 0); /* the repeat was dropped */
-    CHECK_EQ_INT(b.arq->dups, 1);
+    CHECK_EQ_INT(b.frames_dropped_dup, 1);
     CHECK_EQ_INT(board_arq_failed(&b), 0);
     close(peer);
     board_session_close(&b);
@@ -266,7 +266,7 @@ static void msg_board_nak_gets_our_frames_again(void)
         CHECK_EQ_INT(again[i].length, first[i].length);
         CHECK(memcmp(again[i].payload, first[i].payload, first[i].length) == 0);
     }
-    CHECK_EQ_INT(b.arq->resends, 2);
+    CHECK_EQ_INT(b.frames_resent, 2);
     n = link_arq_nak_encode(nak, sizeof nak, 0, 7); /* never sent */
     CHECK(write(peer, nak, n) == (ssize_t)n);
     board_pump(&b, 100);
@@ -294,12 +294,18 @@ static void msg_host_gives_up_on_a_frame_that_never_arrives(void)
     for (int i = 0; i < 10; i++)
         board_pump(&b, 20);
     CHECK_EQ_INT(board_arq_failed(&b), 0);
-    CHECK_EQ_INT(b.arq->resends, LINK_ARQ_MAX_ASKS);
+    CHECK_EQ_INT(b.frames_resent, LINK_ARQ_MAX_ASKS);
     CHECK(write(peer, nak, n) == (ssize_t)n);
     board_pump(&b, 100);
     CHECK_EQ_INT(board_arq_failed(&b), 1);
     close(peer);
     board_session_close(&b);
+    /* What the session saw outlives it: the command's summary and exit
+     * status are decided after the board is stopped. */
+    CHECK_EQ_INT(board_arq_failed(&b), 1);
+    CHECK_EQ_INT(b.frames_resent, LINK_ARQ_MAX_ASKS);
+    CHECK(board_report_link_errors(&b) > 0 || b.frames_resent > 0);
+    CHECK_EQ_INT(board_send_cmd(&b, CMD_STATUS, NULL, 0), -1); /* closed: refused */
 }
 
 /* A frame whose length field was spoilt keeps the decoder waiting with no

@@ -29,7 +29,9 @@ import_renders() {
         echo "FAIL import_$name: import: $err"
     elif ! err=$(build/links1 ref "$scn" -o "$img" --size 80x60 2>&1); then
         echo "FAIL import_$name: ref: $err"
-    elif n=$(covered "$img") && [ "$n" -lt 96 ]; then
+    elif ! n=$(covered "$img") || ! [[ $n =~ ^[0-9]+$ ]]; then
+        echo "FAIL import_$name: could not count the model's pixels in $img ('$n')"
+    elif [ "$n" -lt 96 ]; then
         echo "FAIL import_$name: only $n of 4800 pixels show the model"
     else
         echo "PASS import_$name"

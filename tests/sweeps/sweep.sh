@@ -58,13 +58,18 @@ fi
 measure() { # REF IMG K [--flagged]
     local r
     r=$("$LINKS1" compare "$1" "$2" --within "$3" --min-fraction 0 ${4:-} 2>&1)
+    if [ $? -gt 1 ]; then # compare itself failed: no measure
+        echo "-|-"
+        return
+    fi
     local within psnr
     within=$(echo "$r" | sed -nE 's/.*on every channel: ([0-9.]+)%.*/\1/p')
     psnr=$(echo "$r" | sed -nE 's/.*PSNR ([0-9.]+) dB.*/\1/p')
     awk -v w="${within:-0}" -v p="${psnr:-0}" 'BEGIN { printf "%.4f|%s", 100 - w, p }'
 }
 
-printf 'family\tknob\tarith\tstatus\tbeyond1_pct\tbeyond2_pct\tpsnr_db\tlost_pixels\tunflagged_beyond2_pct\tunflagged_unexplained_pct\n' >"$tsv"
+echo "$size" >"$out/size" # the pixels of every render (flagged.sh)
+printf 'family\tknob\tarith\tstatus\tbeyond1_pct\tbeyond2_pct\tpsnr_db\tlost_pixels\tunflagged_beyond2_pct\tunflagged_unexplained_pct\tcompared_pixels\n' >"$tsv"
 for entry in "${families[@]}"; do
     IFS='|' read -r family knobs _ _ same_image <<<"$entry"
     for knob in $knobs; do
@@ -82,12 +87,12 @@ for entry in "${families[@]}"; do
             if ! "$LINKS1" ref "$scn" --arith $arith -o "$img" $([ $quick = 1 ] && echo --mark-lost) \
                     >"$log" 2>&1; then
                 why=$(tail -n 1 "$log" | sed 's/^links1 ref: [^:]*: //' | tr '\t' ' ')
-                printf '%s\t%s\t%s\trefused: %s\t\t\t\t\t\t\n' "$family" "$knob" "$arith" "$why" >>"$tsv"
+                printf '%s\t%s\t%s\trefused: %s\t\t\t\t\t\t\t\n' "$family" "$knob" "$arith" "$why" >>"$tsv"
                 continue
             fi
             lost=$(grep -o '[0-9]* pixels lost' "$log" | grep -o '^[0-9]*')
             [ $quick = 1 ] || "$LINKS1" ref "$scn" --arith $arith --mark-lost -o "$marked" >/dev/null 2>&1
-            b1=- b2=- psnr=- unflagged=- inner=-
+            b1=- b2=- psnr=- unflagged=- inner=- compared=-
             if [ -f "$ref" ] && [ $quick = 0 ]; then
                 IFS='|' read -r b1 _ < <(measure "$ref" "$img" 1)
                 IFS='|' read -r b2 psnr < <(measure "$ref" "$img" 2)
@@ -99,16 +104,24 @@ for entry in "${families[@]}"; do
                 unflagged=$(awk -v u="$unflagged" -v l="${lost:-0}" -v t="$total" \
                     'BEGIN { printf "%.4f", u * (t - l) / t }')
                 # the share of all pixels beyond 2/255, unflagged and unexplained
-                inner=$("$LINKS1" compare "$same" "$marked" --within 2 --min-fraction 0 --flagged \
-                    --silhouette --moved 2>&1 | awk '
+                # compare's status: 0 (all within 2/255), 1 (some beyond, or
+                # nothing compared); anything else is a failure of its own
+                report=$("$LINKS1" compare "$same" "$marked" --within 2 --min-fraction 0 --flagged \
+                    --silhouette --moved 2>&1)
+                crc=$?
+                if [ $crc -gt 1 ]; then
+                    inner=- compared=-
+                else
+                    read -r inner compared < <(awk '
                     /pixels compared/ { n = $0; sub(/.*: [0-9]+x[0-9]+, /, "", n); n += 0 }
                     /on every channel/ { w = $0; sub(/.*on every channel: /, "", w); w += 0 }
-                    END { if (n == "") print "-"; else printf "%d", n * (100 - w) / 100 + 0.5 }')
+                    END { if (n == "") print "- -"; else printf "%d %d\n", n * (100 - w) / 100 + 0.5, n }' <<<"$report")
+                fi
                 total=$(("${size%x*}" * "${size#*x}"))
                 inner=$(awk -v c="$inner" -v t="$total" 'BEGIN { if (c == "-") print "-"; else printf "%.4f", 100 * c / t }')
             fi
-            printf '%s\t%s\t%s\tok\t%s\t%s\t%s\t%s\t%s\t%s\n' "$family" "$knob" "$arith" "$b1" "$b2" \
-                "$psnr" "${lost:-0}" "$unflagged" "$inner" >>"$tsv"
+            printf '%s\t%s\t%s\tok\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$family" "$knob" "$arith" "$b1" "$b2" \
+                "$psnr" "${lost:-0}" "$unflagged" "$inner" "$compared" >>"$tsv"
         done
     done
 done
