@@ -16,6 +16,7 @@ SCENE_TEXT_SRCS := host-tools/scene/scene_lex.c host-tools/scene/scene_parse.c \
 	host-tools/scene/scene_math.c host-tools/scene/scene_compile.c host-tools/scene/scene_bvh.c \
 	host-tools/scene/scene_board.c \
 	host-tools/scene/image_io.c host-tools/scene/cli_args.c host-tools/scene/scene_file.c \
+	host-tools/scene/nff_read.c \
 	$(SCENE_MODEL_SRCS)
 # All but the board conversion (scene_board.c) know no num_t: one host build
 # serves every arithmetic (Makefile: ARITH_FREE_SRCS).
