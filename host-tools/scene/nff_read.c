@@ -76,11 +76,12 @@ static double nff_nonneg(struct nff *r, const char *what)
     return lex_number(&r->lx, what);
 }
 
-/* NFF's right-handed coordinates into the renderer's left-handed ones */
+/* NFF's right-handed coordinates into the renderer's left-handed ones
+ * (0 - y: a y of 0 stays +0, not -0) */
 static void nff_mirror(const double in[3], double out[3])
 {
     out[0] = in[0];
-    out[1] = -in[1];
+    out[1] = 0.0 - in[1];
     out[2] = in[2];
 }
 

@@ -491,7 +491,7 @@ void spd_gears(struct spd_out *o, int size)
 
 const struct spd_db spd_dbs[] = {
     {"balls", spd_balls, 5, 4},  {"gears", spd_gears, 8, 4}, {"mount", spd_mount, 8, 6},
-    {"rings", spd_rings, 10, 7}, {"teapot", spd_teapot, 64, 6}, {"tetra", spd_tetra, 9, 6},
+    {"rings", spd_rings, 10, 7}, {"teapot", spd_teapot, 65, 6}, {"tetra", spd_tetra, 9, 6},
     {"tree", spd_tree, 12, 11},
 };
 const int spd_db_count = (int)(sizeof spd_dbs / sizeof spd_dbs[0]);

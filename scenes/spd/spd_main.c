@@ -10,7 +10,8 @@
  * the SPD's program writes it with `-r 1`, and a text scene is made from
  * that NFF by the reader `links1 ref FILE.nff` uses (nff_read.h), so the
  * two compile to the same bytes.  --size changes the NFF's resolution
- * (512 x 512 in the SPD).
+ * (512 x 512 in the SPD).  The largest sizes of rings and teapot are over
+ * the 64 MiB a text scene may be: those are written as NFF only.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -19,6 +20,8 @@
 #include "host-tools/scene/nff_read.h"
 #include "host-tools/scene/scene_desc.h"
 #include "scenes/spd/spd.h"
+
+#define SPD_MAX_SCENE_TEXT (64u * 1024u * 1024u) /* PARSE_MAX_FILE, scene_parse.h */
 
 static int spd_usage(void)
 {
@@ -98,15 +101,38 @@ int main(int argc, char **argv)
         free(nff);
         return 1;
     }
+    /* the text scene, in memory: the text form takes at most 64 MiB
+     * (scene_parse.h), which the largest sizes' numbers pass */
+    char *text = nff;
+    size_t text_len = nff_len;
+    if (!spd_ends_with(out, ".nff")) {
+        text = NULL;
+        m = open_memstream(&text, &text_len);
+        if (!m || spd_write_scn(m, &s, title) != 0 || fclose(m) != 0 || !text) {
+            fprintf(stderr, "links1-spd: out of memory writing %s %ld\n", name, size);
+            sd_free(&s);
+            free(nff);
+            free(text);
+            return 1;
+        }
+        if (text_len > SPD_MAX_SCENE_TEXT) {
+            fprintf(stderr, "links1-spd: %s %ld as a text scene is %zu bytes, more than the "
+                    "%u a scene text may be: write its NFF (-o FILE.nff), which links1 reads "
+                    "as it is\n", name, size, text_len, SPD_MAX_SCENE_TEXT);
+            sd_free(&s);
+            free(nff);
+            free(text);
+            return 1;
+        }
+    }
     FILE *f = fopen(out, "w");
     int rc = !f;
     if (f) {
-        if (spd_ends_with(out, ".nff"))
-            rc = fwrite(nff, 1, nff_len, f) != nff_len;
-        else
-            rc = spd_write_scn(f, &s, title) != 0;
+        rc = fwrite(text, 1, text_len, f) != text_len;
         rc |= fclose(f) != 0;
     }
+    if (text != nff)
+        free(text);
     if (rc) {
         perror(out);
         sd_free(&s);

@@ -36,7 +36,9 @@ int spd_write_scn(FILE *f, const struct sd_scene *s, const char *title)
     scn_vec(f, " up", v->up, 3);
     scn_vec(f, " fov", &v->fov, 1);
     fprintf(f, " }\nresolution %d %d\n", v->width, v->height);
-    scn_vec(f, "background", v->background, 3);
+    fprintf(f, "background");
+    for (int i = 0; i < 3; i++)
+        scn_num(f, v->background[i]);
     fprintf(f, "\n");
     for (int i = 0; i < s->n_lights; i++) {
         fprintf(f, "light point {");
@@ -54,7 +56,7 @@ int spd_write_scn(FILE *f, const struct sd_scene *s, const char *title)
         scn_vec(f, " trc", &m->trc, 1);
         scn_vec(f, " fresnel", &m->fresnel, 1);
         scn_vec(f, " ior", &m->ior, 1);
-        fprintf(f, " phong %d }\n", m->phong);
+        fprintf(f, "  phong %d }\n", m->phong);
     }
     int used = -1;
     for (int i = 0; i < s->n_prims; i++) {
