@@ -335,8 +335,9 @@ static void nff_emit(struct nff *r, int smooth, int a, int b, int c, int line, i
 }
 
 /* The polygon in r->vert (and r->norm), n vertices, into triangles: a fan
- * from the first vertex when it is convex, otherwise ear clipping in the
- * plane its normal is most nearly perpendicular to. */
+ * from the first vertex when it is convex, otherwise ear clipping, both
+ * decided on its shadow in the coordinate plane it is most nearly parallel
+ * to (the one across its normal's largest component). */
 static void nff_cut_polygon(struct nff *r, int n, int smooth, int line, int col)
 {
     double (*v)[3] = r->vert, nrm[3] = {0, 0, 0};

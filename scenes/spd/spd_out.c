@@ -103,23 +103,21 @@ void spd_rotate(struct spd_mat *m, int axis, double angle)
     m->m[3][3] = 1.0;
 }
 
+/* the rotation by angle about the unit axis u (Rodrigues' formula), in
+ * the row-vector convention: p' = p m */
 void spd_axis_rotate(struct spd_mat *m, const double u[3], double angle)
 {
     double c = cos(angle), s = sin(angle), t = 1.0 - c;
-    for (int i = 0; i < 3; i++) {
-        for (int j = 0; j < 3; j++) {
-            if (i == j) {
-                m->m[i][i] = u[i] * u[i] + (1.0 - u[i] * u[i]) * c;
-                continue;
-            }
-            /* the third axis k, and the sign of its sine term */
-            int k = 3 - i - j;
-            double sk = (j == (i + 1) % 3) ? u[k] * s : -(u[k] * s);
-            m->m[i][j] = u[i < j ? i : j] * u[i < j ? j : i] * t + sk;
-        }
-        m->m[i][3] = 0.0;
-        m->m[3][i] = 0.0;
-    }
+    memset(m, 0, sizeof *m);
+    m->m[0][0] = u[0] * u[0] + (1.0 - u[0] * u[0]) * c;
+    m->m[0][1] = u[0] * u[1] * t + u[2] * s;
+    m->m[0][2] = u[0] * u[2] * t - u[1] * s;
+    m->m[1][0] = u[0] * u[1] * t - u[2] * s;
+    m->m[1][1] = u[1] * u[1] + (1.0 - u[1] * u[1]) * c;
+    m->m[1][2] = u[1] * u[2] * t + u[0] * s;
+    m->m[2][0] = u[0] * u[2] * t + u[1] * s;
+    m->m[2][1] = u[1] * u[2] * t - u[0] * s;
+    m->m[2][2] = u[2] * u[2] + (1.0 - u[2] * u[2]) * c;
     m->m[3][3] = 1.0;
 }
 
