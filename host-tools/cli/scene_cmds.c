@@ -16,6 +16,7 @@
 #include "host-tools/ref/ref_program.h"
 #include "host-tools/scene/scene_board.h"
 #include "host-tools/scene/scene_desc.h"
+#include "host-tools/scene/scene_file.h"
 #include "proto/arith.h"
 
 enum { SCENE_OPT_FRAME = CLI_OWN_CODES, SCENE_OPT_STRICT };
@@ -88,7 +89,7 @@ int scene_cmd_compile(int argc, char **argv)
         return r > 0 ? 0 : 2;
     struct sd_scene s;
     char err[SD_ERR_MAX];
-    if (sd_parse_file(in, &s, err, sizeof err) != 0) {
+    if (scene_file_parse(in, &s, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         return 1;
     }
@@ -144,7 +145,7 @@ int scene_cmd_export_pov(int argc, char **argv)
     int strict = a.strict, frame = a.frame;
     struct sd_scene s;
     char err[SD_ERR_MAX];
-    if (sd_parse_file(in, &s, err, sizeof err) != 0) {
+    if (scene_file_parse(in, &s, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         return 1;
     }

@@ -335,7 +335,7 @@ static int auto_size(struct auto_run *r)
     if (!w) {
         struct sd_scene s;
         char err[SD_ERR_MAX];
-        if (sd_parse_file(r->path, &s, err, sizeof err) != 0) {
+        if (scene_file_parse(r->path, &s, err, sizeof err) != 0) {
             fprintf(stderr, "%s\n", err);
             return -1;
         }

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "host-tools/scene/nff_read.h"
 #include "host-tools/scene/scene_board.h"
 #include "host-tools/scene/scene_desc.h"
 
@@ -27,11 +28,18 @@ int scene_file_ends_with(const char *s, const char *suffix)
     return n >= k && strcmp(s + n - k, suffix) == 0;
 }
 
+int scene_file_parse(const char *path, struct sd_scene *s, char *err, size_t errlen)
+{
+    if (scene_file_ends_with(path, ".nff"))
+        return nff_read_file(path, s, NULL, err, errlen);
+    return sd_parse_file(path, s, err, errlen);
+}
+
 static int scene_file_compile(const char *path, const struct scene_file_opts *o, uint8_t **buf,
                               size_t *len, char *err, size_t errlen)
 {
     struct sd_scene s;
-    if (sd_parse_file(path, &s, err, errlen) != 0)
+    if (scene_file_parse(path, &s, err, errlen) != 0)
         return -1;
     if (o->width) {
         s.view.width = o->width;

@@ -25,9 +25,15 @@ void scene_file_opts_init(struct scene_file_opts *o);
 /* 1 when s ends with suffix. */
 int scene_file_ends_with(const char *s, const char *suffix);
 
+/* The scene at path: a file ending in .nff read as NFF (nff_read.h), any
+ * other as the text form (sd_parse_file); -1 with err as those say. */
+struct sd_scene;
+int scene_file_parse(const char *path, struct sd_scene *s, char *err, size_t errlen);
+
 /* The compiled bytes of the scene at path (malloc'ed into *buf, *len): a
  * file ending in .l1s read as is (refused when empty, over SCN_MAX_SIZE, or
- * when o asks for a change), any other compiled from text with o's changes.
+ * when o asks for a change), any other compiled from text (or NFF) with o's
+ * changes.
  * 0, or -1 with err saying why ("PATH: why"). */
 int scene_file_bytes(const char *path, const struct scene_file_opts *o, uint8_t **buf,
                      size_t *len, char *err, size_t errlen);

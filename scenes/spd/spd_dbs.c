@@ -1,307 +1,511 @@
-/* spd_dbs.c: the databases, from the descriptions published with the
- * Standard Procedural Databases (Eric Haines, 1987).  Counts, for size s:
- *   balls   sphereflake: a sphere and nine children a third its size,
- *           recursively, s levels below the root: (9^(s+1) - 1) / 8
- *           spheres (10, 91, 820, 7,381 at s = 1..4; with the ground,
- *           SPD's 7,382 objects at its default size 4) on a ground square
- *   tetra   Sierpinski tetrahedron, s levels: 4^s tetrahedra, 4^(s+1)
- *           triangles (16,384 at s = 6)
- *   mount   fractal mountain, midpoint displacement s times: 2 * 4^s
- *           triangles (8,192 at s = 6), four spheres floating above it
- *   rings   s x s rings in a square, each a ring of 8 spheres joined by
- *           cylinders, stacked s/2 + 1 layers high, on a ground square
- *   tree    a branching tree: every branch a cone with two children,
- *           s levels (2^s - 1 branches), a leaf sphere at each tip
- *   gears   s x s gears in a plane: a toothed disk (polygons) with
- *           its rim, meshing with their neighbours
- * Sizes grow the object count about 4x (balls 9x) per step, as in SPD.
- * Each database is seeded identically every run: the same size gives the
- * same file.
+/* spd_dbs.c: six of the seven databases (the teapot is spd_teapot.c), from
+ * the definitions published with the Standard Procedural Databases (Eric
+ * Haines, 1987; version 3.14 of the package).  Each writes what the SPD's
+ * program of the same name writes with `-r 1`: the same view (angle 45,
+ * 512 x 512 unless --size), the same lights and surfaces, the same
+ * primitives in the same order.  Size s gives:
+ *   balls   sphereflake: a sphere with nine children a third its size,
+ *           s levels deep: (9^(s+1) - 1) / 8 spheres (10, 91, 820, 7,381)
+ *           and the floor polygon
+ *   gears   s^3 gears, each two 144-sided concave faces and 144 side
+ *           quadrilaterals, and the ground polygon
+ *   mount   a fractal mountain, midpoint displacement s times: 2 * 4^s
+ *           triangles (8, 32, 128, ... 8,192 at 6), and 4 glass spheres
+ *   rings   s layers of dodecahedral ring sets, 1, 4, 9, ... of them: 30
+ *           spheres and 30 cylinders each (30, 150, 420, ... 4,200 at 7)
+ *   tetra   a Sierpinski tetrahedron of s levels: 4^s triangles
+ *   tree    a branching tree of 2^(s+1) - 1 cones, a sphere at each tip
  */
 #include <math.h>
-#include <stdint.h>
 #include <string.h>
 
 #include "scenes/spd/spd.h"
 
-#define PI 3.14159265358979323846
+/* every database's background: "UNC sky blue" */
+static const double spd_sky[3] = {0.078, 0.361, 0.753};
 
-
-static void ground(struct spd_out *o, const char *mat, double half, double z)
+static void spd_head(struct spd_out *o, const double from[3], const double at[3],
+                     const double up[3], double hither)
 {
-    double v[4][3] = {{half, half, z}, {-half, half, z}, {-half, -half, z}, {half, -half, z}};
-    spd_polygon(o, mat, (const double (*)[3])v, 4);
+    spd_background(o, spd_sky);
+    spd_view(o, from, at, up, 45.0, hither);
 }
 
 /* --------------------------------------------------------------- balls */
 
-/* a frame whose w axis is the direction d */
-static void frame_of(const double d[3], double u[3], double v[3])
+/* The nine directions of a sphere's children, unit vectors (w 0): three
+ * trios 120 degrees apart about z, each trio three corners of a cube
+ * turned so that its diagonal is z. */
+static void balls_directions(double dirs[9][4])
 {
-    double any[3] = {0, 0, 1};
-    if (fabs(d[2]) > 0.9)
-        any[0] = 1, any[2] = 0;
-    u[0] = d[1] * any[2] - d[2] * any[1];
-    u[1] = d[2] * any[0] - d[0] * any[2];
-    u[2] = d[0] * any[1] - d[1] * any[0];
-    double l = sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-    for (int k = 0; k < 3; k++)
-        u[k] /= l;
-    v[0] = d[1] * u[2] - d[2] * u[1];
-    v[1] = d[2] * u[0] - d[0] * u[2];
-    v[2] = d[0] * u[1] - d[1] * u[0];
-}
-
-static void flake(struct spd_out *o, const double c[3], double r, const double dir[3], int levels)
-{
-    spd_sphere(o, "ball", c, r);
-    if (levels == 0)
-        return;
-    double u[3], v[3];
-    frame_of(dir, u, v);
-    /* six children round the equator, three above between them */
-    for (int i = 0; i < 9; i++) {
-        double az = i < 6 ? i * PI / 3 : (i - 6) * 2 * PI / 3 + PI / 6;
-        double el = i < 6 ? 0 : PI / 3;
-        double d[3], cc[3];
-        for (int k = 0; k < 3; k++) {
-            d[k] = cos(el) * (cos(az) * u[k] + sin(az) * v[k]) + sin(el) * dir[k];
-            cc[k] = c[k] + d[k] * (r + r / 3);
-        }
-        flake(o, cc, r / 3, d, levels - 1);
+    double d = 1.0 / sqrt((double)2.0);
+    double trio[3][4] = {{d, d, 0.0, 0.0}, {d, 0.0, -d, 0.0}, {0.0, d, -d, 0.0}};
+    double axis[3] = {1.0, -1.0, 0.0};
+    spd_normalize(axis);
+    struct spd_mat m;
+    spd_axis_rotate(&m, axis, asin((double)(2.0 / sqrt((double)6.0))));
+    for (int i = 0; i < 3; i++)
+        spd_xform4(trio[i], trio[i], &m);
+    for (int set = 0; set < 3; set++) {
+        spd_rotate(&m, SPD_Z, (double)set * 2.0 * SPD_PI / 3.0);
+        for (int i = 0; i < 3; i++)
+            spd_xform4(dirs[set * 3 + i], trio[i], &m);
     }
 }
 
-void spd_balls(struct spd_out *o, int size, int width, int height)
+/* A sphere (c: centre and radius) and, levels deep, its children along
+ * the directions turned from z to dir (dir[3]: a child's radius ratio). */
+static void balls_flake(struct spd_out *o, const double dirs[9][4], int levels,
+                        const double c[4], const double dir[4])
 {
-    const double from[3] = {2.1, 1.3, 1.7}, at[3] = {0, 0, 0}, up[3] = {0, 0, 1};
-    spd_view(o, from, at, up, 45, width, height, spd_sky);
-    const double l[3][3] = {{4, 3, 2}, {1, -4, 4}, {-3, 1, 5}};
-    for (int i = 0; i < 3; i++)
-        spd_light(o, l[i], 1 / sqrt(3.0));
-    spd_material(o, "floor", (const double[3]){1, 0.75, 0.33}, 0.8, 0, 0, 0, 1);
-    spd_material(o, "ball", (const double[3]){1, 0.9, 0.7}, 0.5, 0.5, 3, 0, 1);
-    ground(o, "floor", 12, -0.5);
-    flake(o, (const double[3]){0, 0, 0}, 0.5, (const double[3]){0, 0, 1}, size);
+    spd_sphere(o, c, c[3]);
+    if (levels-- == 0)
+        return;
+    struct spd_mat m;
+    if (dir[2] >= 0.9999) {
+        spd_identity(&m);
+    } else if (dir[2] <= -0.9999) {
+        spd_rotate(&m, SPD_Y, SPD_PI);
+    } else {
+        /* the axis z x dir, the angle between them */
+        const double z[3] = {0.0, 0.0, 1.0};
+        double axis[3] = {z[1] * dir[2] - z[2] * dir[1], z[2] * dir[0] - z[0] * dir[2],
+                          z[0] * dir[1] - z[1] * dir[0]};
+        spd_normalize(axis);
+        spd_axis_rotate(&m, axis, acos((double)(z[0] * dir[0] + z[1] * dir[1] + z[2] * dir[2])));
+    }
+    double reach = c[3] * (1.0 + dir[3]); /* centre to a child's centre */
+    for (int i = 0; i < 9; i++) {
+        double child[4], child_dir[4];
+        spd_xform4(child, dirs[i], &m);
+        for (int k = 0; k < 3; k++)
+            child[k] = child[k] * reach + c[k];
+        child[3] = c[3] * dir[3];
+        for (int k = 0; k < 3; k++)
+            child_dir[k] = (child[k] - c[k]) / reach;
+        child_dir[3] = dir[3];
+        balls_flake(o, dirs, levels, child, child_dir);
+    }
+}
+
+void spd_balls(struct spd_out *o, int size)
+{
+    spd_head(o, (const double[3]){2.1, 1.3, 1.7}, (const double[3]){0.0, 0.0, 0.0},
+             (const double[3]){0.0, 0.0, 1.0}, 0.01);
+    spd_light(o, (const double[3]){4.0, 3.0, 2.0});
+    spd_light(o, (const double[3]){1.0, -4.0, 4.0});
+    spd_light(o, (const double[3]){-3.0, 1.0, 5.0});
+    /* the floor: beige, matte, a square 24 wide half a radius below */
+    spd_surface(o, (const double[3]){1.0, 0.75, 0.33}, 0.8, 0.0, 0.0, 0.0, 1.0);
+    double floor[4][3] = {{12.0, 12.0, -0.5}, {-12.0, 12.0, -0.5}, {-12.0, -12.0, -0.5},
+                          {12.0, -12.0, -0.5}};
+    spd_polygon(o, 4, floor);
+    /* the spheres: mirrored */
+    spd_surface(o, (const double[3]){1.0, 0.9, 0.7}, 0.5, 0.5, 37.0, 0.0, 1.0);
+    double dirs[9][4];
+    balls_directions(dirs);
+    balls_flake(o, (const double(*)[4])dirs, size, (const double[4]){0.0, 0.0, 0.0, 0.5},
+                (const double[4]){0.0, 0.0, 1.0, 1.0 / 3.0});
 }
 
 /* --------------------------------------------------------------- tetra */
 
-static void tetra(struct spd_out *o, const double (*v)[3], int level)
+/* the corners (x, y, z) = centre + half * (+-1, +-1, +-1) with x y z = +1 */
+static void tetra_corners(const double c[4], double scale, double out[4][3])
 {
-    if (level == 0) {
-        static const int face[4][3] = {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}};
-        for (int f = 0; f < 4; f++)
-            spd_triangle(o, "tetra", v[face[f][0]], v[face[f][1]], v[face[f][2]]);
+    int n = 0;
+    for (int x = -1; x <= 1; x += 2)
+        for (int y = -1; y <= 1; y += 2)
+            for (int z = -1; z <= 1; z += 2)
+                if (x * y * z == 1) {
+                    out[n][0] = c[0] + (double)x * c[3] / scale;
+                    out[n][1] = c[1] + (double)y * c[3] / scale;
+                    out[n][2] = c[2] + (double)z * c[3] / scale;
+                    n++;
+                }
+}
+
+/* c: the centre of the tetrahedron's cube and half its side */
+static void tetra(struct spd_out *o, int depth, const double c[4])
+{
+    double p[4][3];
+    if (depth <= 1) {
+        tetra_corners(c, 1.0, p);
+        for (int face = 0; face < 4; face++) {
+            /* corners face, face+1, face+2 (mod 4); odd faces reversed */
+            int a = face, b = (face + 1) % 4, d = (face + 2) % 4;
+            if (face % 2 == 1) {
+                int t = a;
+                a = d;
+                d = t;
+            }
+            double tri[3][3];
+            memcpy(tri[0], p[a], sizeof tri[0]);
+            memcpy(tri[1], p[b], sizeof tri[1]);
+            memcpy(tri[2], p[d], sizeof tri[2]);
+            spd_polygon(o, 3, tri);
+        }
         return;
     }
-    for (int corner = 0; corner < 4; corner++) {
-        double w[4][3];
-        for (int i = 0; i < 4; i++)
-            for (int k = 0; k < 3; k++)
-                w[i][k] = 0.5 * (v[corner][k] + v[i][k]);
-        tetra(o, (const double (*)[3])w, level - 1);
+    tetra_corners(c, 2.0, p);
+    for (int i = 0; i < 4; i++) {
+        double sub[4] = {p[i][0], p[i][1], p[i][2], c[3] / 2.0};
+        tetra(o, depth - 1, sub);
     }
 }
 
-void spd_tetra(struct spd_out *o, int size, int width, int height)
+void spd_tetra(struct spd_out *o, int size)
 {
-    const double from[3] = {1.2, -2.2, 1.1}, at[3] = {0, 0, -0.05}, up[3] = {0, 0, 1};
-    spd_view(o, from, at, up, 45, width, height, spd_sky);
-    spd_light(o, (const double[3]){1.85, -2.0, 3.35}, 0.8);
-    spd_light(o, (const double[3]){-2.5, -3.0, 0.5}, 0.5);
-    spd_material(o, "tetra", (const double[3]){1, 0.2, 0.2}, 0.8, 0, 0, 0, 1);
-    const double s = 1 / sqrt(2.0);
-    double v[4][3] = {{0, -s, -0.5}, {0, s, -0.5}, {-s, 0, 0.5}, {s, 0, 0.5}};
-    /* a regular tetrahedron: its edges at z = -0.5 and 0.5 cross at right angles */
-    tetra(o, (const double (*)[3])v, size);
+    /* Kay and Kajiya's view and light */
+    spd_head(o, (const double[3]){1.022846, -3.177154, -2.174512},
+             (const double[3]){-0.004103, -0.004103, 0.216539},
+             (const double[3]){-0.816497, -0.816497, 0.816497}, 1.0);
+    spd_light(o, (const double[3]){2.0, -18.0, -5.0});
+    spd_surface(o, (const double[3]){1.0, 0.2, 0.2}, 1.0, 0.0, 0.0, 0.0, 0.0);
+    tetra(o, size, (const double[4]){0.0, 0.0, 0.0, 1.0});
 }
 
 /* --------------------------------------------------------------- mount */
 
-/* a repeatable pseudo-random number in [-1, 1] for a grid point */
-static double hash_unit(uint32_t a, uint32_t b, uint32_t seed)
+/* The SPD's own pseudo-random numbers: a seed from the grid position (the
+ * original, repetitive hash, as in the 1987 pictures), then the gaussian
+ * deviate of Numerical Recipes' GASDEV on a small linear congruential
+ * generator.  At size 8 the hash's last shift is by -1, which C leaves
+ * undefined; that term is taken as 0, as the SPD's program compiled with
+ * gcc for x86-64 computes it. */
+static long mount_hash(long a, long b, int size)
 {
-    uint32_t h = a * 0x9e3779b1u ^ (b + 0x7f4a7c15u) * 0x85ebca6bu ^ seed * 0xc2b2ae35u;
-    h ^= h >> 15;
-    h *= 0x2c1b3c6du;
-    h ^= h >> 12;
-    h *= 0x297a2d39u;
-    h ^= h >> 15;
-    return (double)h / 2147483647.5 - 1;
+    unsigned long h = ((unsigned long)a << (23 - size)) + ((unsigned long)b << (15 - size));
+    if (size <= 7)
+        h += (unsigned long)a << (7 - size);
+    return (long)(h & 0xffff);
 }
 
-void spd_mount(struct spd_out *o, int size, int width, int height)
+static double mount_gauss(long seed)
 {
-    const double from[3] = {-1.0, -8.8, 3.5}, at[3] = {0, 0, 0.4}, up[3] = {0, 0, 1};
-    spd_view(o, from, at, up, 25, width, height, spd_sky);
-    spd_light(o, (const double[3]){-100, -100, 200}, 1);
-    spd_material(o, "rock", (const double[3]){1, 0.5, 0.2}, 0.9, 0, 0, 0, 1);
-    spd_material(o, "glass", (const double[3]){1, 1, 1}, 0.1, 0.2, 30, 0.75, 1.5);
-    spd_material(o, "mirror", (const double[3]){0.9, 0.9, 0.9}, 0.3, 0.7, 60, 0, 1);
-    /* a (2^size + 1)^2 grid of heights over [-2, 2]^2, refined by
-     * midpoint displacement halving the amplitude each level */
-    int n = 1 << size, m = n + 1;
-    static double hgt[(1 << 8) + 1][(1 << 8) + 1];
-    memset(hgt, 0, sizeof hgt);
-    double amp = 1.0;
-    for (int step = n; step > 1; step /= 2, amp *= 0.5) {
-        int h = step / 2;
-        for (int i = 0; i < n; i += step)
-            for (int j = 0; j <= n; j += step) {
-                /* edge midpoints along both directions, then the centre */
-                hgt[i + h][j] = 0.5 * (hgt[i][j] + hgt[i + step][j]) + amp * 0.5 * hash_unit((uint32_t)(i + h), (uint32_t)j, 1);
-                hgt[j][i + h] = 0.5 * (hgt[j][i] + hgt[j][i + step]) + amp * 0.5 * hash_unit((uint32_t)j, (uint32_t)(i + h), 2);
-            }
-        for (int i = 0; i < n; i += step)
-            for (int j = 0; j < n; j += step)
-                hgt[i + h][j + h] = 0.25 * (hgt[i][j] + hgt[i + step][j] + hgt[i][j + step] +
-                                            hgt[i + step][j + step]) +
-                                    amp * 0.5 * hash_unit((uint32_t)(i + h), (uint32_t)(j + h), 3);
+    long a, b = seed;
+    double v1, v2, r;
+    do {
+        a = (28411 + b * 8121) % 134456;
+        b = (28411 + a * 8121) % 134456;
+        v1 = (double)a * 2.0 / 134456 - 1.0;
+        v2 = (double)b * 2.0 / 134456 - 1.0;
+        r = v1 * v1 + v2 * v2;
+    } while (r >= 1.0);
+    return v1 * sqrt((double)(-2.0 * log(r) / r));
+}
+
+struct mount {
+    struct spd_out *o;
+    int size;
+    double cells;     /* 2^size, the grid's cells along a side */
+    double roughness;
+};
+
+/* The square of `width` cells at (x, y) with heights z at its corners
+ * (lower left, lower right, upper right, upper left): split in four with
+ * displaced midpoints, or at width 1 written as two triangles. */
+static void mount_grow(const struct mount *m, int width, int x, int y, const double z[4])
+{
+    if (width == 1) {
+        double x0 = -1.0 + (double)x * 2.0 / m->cells, x1 = -1.0 + (double)(x + 1) * 2.0 / m->cells;
+        double y0 = -1.0 + (double)y * 2.0 / m->cells, y1 = -1.0 + (double)(y + 1) * 2.0 / m->cells;
+        double corner[4][3] = {{x0, y0, z[0]}, {x1, y0, z[1]}, {x1, y1, z[2]}, {x0, y1, z[3]}};
+        for (int t = 0; t < 2; t++) {
+            double tri[3][3];
+            for (int v = 0; v < 3; v++)
+                memcpy(tri[v], corner[(v + t * 2) % 4], sizeof tri[v]);
+            spd_polygon(m->o, 3, tri);
+        }
+        return;
     }
-    /* a peak: raise the middle */
-    for (int i = 0; i < m; i++)
-        for (int j = 0; j < m; j++) {
-            double x = 4.0 * i / n - 2, y = 4.0 * j / n - 2;
-            hgt[i][j] += 1.2 * exp(-(x * x + y * y));
-        }
-    for (int i = 0; i < n; i++)
-        for (int j = 0; j < n; j++) {
-            double p[4][3];
-            for (int c = 0; c < 4; c++) {
-                int a = i + (c == 1 || c == 2), b = j + (c >= 2);
-                p[c][0] = 4.0 * a / n - 2;
-                p[c][1] = 4.0 * b / n - 2;
-                p[c][2] = hgt[a][b];
-            }
-            spd_triangle(o, "rock", p[0], p[1], p[2]);
-            spd_triangle(o, "rock", p[0], p[2], p[3]);
-        }
-    spd_sphere(o, "glass", (const double[3]){-0.8, -0.8, 1.9}, 0.45);
-    spd_sphere(o, "mirror", (const double[3]){0.9, -0.5, 2.1}, 0.4);
-    spd_sphere(o, "glass", (const double[3]){0.2, -1.3, 2.5}, 0.3);
-    spd_sphere(o, "mirror", (const double[3]){-0.3, 0.6, 2.8}, 0.35);
+    int half = width >> 1;
+    double rise = (double)half * 2.0 / m->cells * m->roughness;
+#define MOUNT_RAND(px, py) mount_gauss(21 + mount_hash((px), (py), m->size))
+    double lower = (z[0] + z[1]) / 2.0 + rise * MOUNT_RAND(x + half, y);
+    double right = (z[1] + z[2]) / 2.0 + rise * MOUNT_RAND(x + width, y + half);
+    double upper = (z[2] + z[3]) / 2.0 + rise * MOUNT_RAND(x + half, y + width);
+    double left = (z[3] + z[0]) / 2.0 + rise * MOUNT_RAND(x, y + half);
+    double middle = (z[0] + z[1] + z[2] + z[3]) / 4.0 + 1.4142136 * rise * MOUNT_RAND(x + half,
+                                                                                    y + half);
+#undef MOUNT_RAND
+    mount_grow(m, half, x, y, (const double[4]){z[0], lower, middle, left});
+    mount_grow(m, half, x + half, y, (const double[4]){lower, z[1], right, middle});
+    mount_grow(m, half, x + half, y + half, (const double[4]){middle, right, z[2], upper});
+    mount_grow(m, half, x, y + half, (const double[4]){left, middle, upper, z[3]});
+}
+
+void spd_mount(struct spd_out *o, int size)
+{
+    spd_head(o, (const double[3]){-1.6, 1.6, 1.7}, (const double[3]){0.0, 0.0, 0.0},
+             (const double[3]){0.0, 0.0, 1.0}, 0.01);
+    spd_light(o, (const double[3]){-100.0, -100.0, 100.0});
+    /* four crystal spheres in a pyramid above the mountain */
+    spd_surface(o, (const double[3]){1.0, 1.0, 1.0}, 0.1, 0.1, 6.7, 0.9, 1.5);
+    const double base[4] = {-0.8, 0.8, 1.00, 0.17};
+    double top[3] = {0.0, 0.0, base[3] * sqrt((double)(3.0 / 2.0))}, s[3], turned[3];
+    for (int k = 0; k < 3; k++)
+        s[k] = base[k] + top[k];
+    spd_sphere(o, s, base[3]);
+    double axis[3] = {1.0, 1.0, 0.0};
+    spd_normalize(axis);
+    struct spd_mat rot;
+    spd_axis_rotate(&rot, axis, acos((double)(-1.0 / 3.0)));
+    spd_xform_vector(turned, top, &rot);
+    for (int i = 0; i < 3; i++) {
+        spd_rotate(&rot, SPD_Z, (double)i * 2.0 * SPD_PI / 3.0);
+        spd_xform_vector(s, turned, &rot);
+        for (int k = 0; k < 3; k++)
+            s[k] += base[k];
+        spd_sphere(o, s, base[3]);
+    }
+    /* the mountain: grey, fractal dimension 2.2 */
+    spd_surface(o, (const double[3]){0.5, 0.45, 0.35}, 1.0, 0.0, 0.0, 0.0, 0.0);
+    struct mount m = {o, size, (double)(1 << size), 0};
+    double ratio = 2.0 / exp((double)(log((double)2.0) / (2.2 - 1.0)));
+    m.roughness = sqrt((double)(ratio * ratio - 1.0));
+    mount_grow(&m, 1 << size, 0, 0, (const double[4]){0.0, 0.0, 0.0, 0.0});
 }
 
 /* --------------------------------------------------------------- rings */
 
-static void ring(struct spd_out *o, const double c[3], double r, double t)
+/* The 30 edge midpoints of a dodecahedron as six pentagonal rings, scaled
+ * so that the rings (cylinders of radius r round them) fit a unit sphere. */
+static void rings_points(double r, double p[30][3])
 {
-    double p[9][3];
-    for (int i = 0; i <= 8; i++) {
-        double a = 2 * PI * (i % 8) / 8;
-        p[i][0] = c[0] + r * cos(a);
-        p[i][1] = c[1] + r * sin(a);
-        p[i][2] = c[2];
+    double scale = 1.0 / (1.0 + r);
+    for (int i = 0; i < 5; i++) {
+        p[i][0] = scale * cos((double)i * 2.0 * SPD_PI / 5.0);
+        p[i][1] = scale * sin((double)i * 2.0 * SPD_PI / 5.0);
+        p[i][2] = 0.0;
     }
-    for (int i = 0; i < 8; i++) {
-        spd_sphere(o, "ring", p[i], t);
-        spd_cone(o, "ring", p[i], t, p[i + 1], t);
+    /* the other five: turned about x by the angle between two faces, then
+     * about z by 1/10 + k/5 of a turn */
+    struct spd_mat tilt, spin;
+    spd_rotate(&tilt, SPD_X, 2.0 * acos(cos((double)(SPD_PI / 3.0)) / sin((double)(SPD_PI / 5.0))));
+    for (int ring = 1; ring < 6; ring++) {
+        spd_rotate(&spin, SPD_Z, SPD_PI * (2.0 * (double)(ring - 1) + 1.0) / 5.0);
+        for (int i = 0; i < 5; i++) {
+            double t[3];
+            spd_xform_point(t, p[i], &tilt);
+            spd_xform_point(p[5 * ring + i], t, &spin);
+        }
     }
 }
 
-void spd_rings(struct spd_out *o, int size, int width, int height)
+void spd_rings(struct spd_out *o, int size)
 {
-    double span = 2.5 * size;
-    const double from[3] = {-span * 0.55, -span * 1.0, span * 0.75};
-    const double at[3] = {0, 0, 0.5}, up[3] = {0, 0, 1};
-    spd_view(o, from, at, up, 40, width, height, spd_sky);
-    spd_light(o, (const double[3]){-3 * span, -2 * span, 4 * span}, 0.6);
-    spd_light(o, (const double[3]){2 * span, -3 * span, 3 * span}, 0.5);
-    spd_material(o, "floor", (const double[3]){0.9, 0.9, 0.9}, 0.8, 0, 0, 0, 1);
-    spd_material(o, "ring", (const double[3]){0.9, 0.6, 0.2}, 0.6, 0.4, 20, 0, 1);
-    ground(o, "floor", 3 * span, -0.3);
-    int layers = size / 2 + 1;
-    for (int l = 0; l < layers; l++)
-        for (int i = 0; i < size; i++)
-            for (int j = 0; j < size; j++) {
-                double c[3] = {(i - (size - 1) / 2.0) * 2.5 + (l % 2) * 1.25,
-                               (j - (size - 1) / 2.0) * 2.5 + (l % 2) * 1.25, l * 0.8};
-                ring(o, c, 1.0, 0.12);
+    const double radius = 0.07412; /* of the cylinders and spheres */
+    double gap = 1 / sin((double)(SPD_PI / 8.0)); /* between layers, along y */
+    double from[3] = {-1.0, -gap, 0.5}, at[3] = {from[0], from[1] + 1.0, from[2]};
+    spd_head(o, from, at, (const double[3]){0.0, 0.0, 1.0}, 1.0);
+    spd_light(o, (const double[3]){3.0, -gap, 3.0});
+    spd_light(o, (const double[3]){-4.0, -gap, 1.0});
+    spd_light(o, (const double[3]){2.0, -gap, -4.0});
+    /* a white wall behind, just filling the 45 degree view (+1%) */
+    spd_surface(o, (const double[3]){1.0, 1.0, 1.0}, 1.0, 0.0, 0.0, 0.0, 0.0);
+    double wy = gap * (size + 1), wxz = 1.01 * (wy - from[1]) * tan(SPD_PI / 8.0);
+    double wall[4][3] = {{wxz + from[0], wy, wxz + from[2]},
+                         {-wxz + from[0], wy, wxz + from[2]},
+                         {-wxz + from[0], wy, -wxz + from[2]},
+                         {wxz + from[0], wy, -wxz + from[2]}};
+    spd_polygon(o, 4, wall);
+    static const double colour[6][3] = {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0},
+                                        {0.0, 1.0, 1.0}, {1.0, 0.0, 1.0}, {1.0, 1.0, 0.0}};
+    double p[30][3];
+    rings_points(radius, p);
+    /* layer d holds (d+1)^2 sets, y = gap (d+1), spread 2 apart in x and z */
+    for (int d = 0; d < size; d++)
+        for (int iz = 0; iz <= d; iz++)
+            for (int ix = 0; ix <= d; ix++) {
+                double off[3] = {1.0 * (double)(2 * ix - d), gap * (double)(d + 1),
+                                 1.0 * (double)(2 * iz - d)};
+                for (int e = 0; e < 30; e++) {
+                    int prev = e % 5 == 0 ? e + 4 : e - 1;
+                    if (e % 5 == 0)
+                        spd_surface(o, colour[e / 5], 0.5, 0.2, 37.0, 0.0, 0.0);
+                    double b[3], a[3];
+                    for (int k = 0; k < 3; k++) {
+                        b[k] = p[e][k] + off[k];
+                        a[k] = p[prev][k] + off[k];
+                    }
+                    spd_cone(o, b, radius, a, radius);
+                    spd_sphere(o, b, radius);
+                }
             }
 }
 
 /* ---------------------------------------------------------------- tree */
 
-static void branch(struct spd_out *o, const double base[3], const double dir[3], double len,
-                   double r, int level, uint32_t id)
+/* Each branch: a cone from (0,0,0) to (0,0,1) of its frame, radius 0.15
+ * of its scale at the base and 0.67 of that at the tip, a sphere at the
+ * tip, and two children in the frames step[0] and step[1] of it. */
+static void tree_grow(struct spd_out *o, const struct spd_mat step[2], const struct spd_mat *frame,
+                      double scale, int depth)
 {
-    double tip[3];
-    for (int k = 0; k < 3; k++)
-        tip[k] = base[k] + dir[k] * len;
-    spd_cone(o, "bark", base, r, tip, r * 0.7);
-    if (level == 1) {
-        spd_sphere(o, "leaf", tip, len * 0.5);
+    double base[3], tip[3];
+    spd_xform_point(base, (const double[3]){0.0, 0.0, 0.0}, frame);
+    spd_xform_point(tip, (const double[3]){0.0, 0.0, 1.0}, frame);
+    double r0 = scale * 0.15, r1 = r0 * 0.67;
+    spd_cone(o, base, r0, tip, r1);
+    spd_sphere(o, tip, r1);
+    if (depth-- <= 0)
         return;
-    }
-    double u[3], v[3];
-    frame_of(dir, u, v);
-    for (int c = 0; c < 2; c++) {
-        double turn = 0.45 + 0.1 * hash_unit(id, (uint32_t)c, 7);
-        double az = c * PI + 1.3 * level + 0.3 * hash_unit(id, (uint32_t)c, 8);
-        double d[3];
-        for (int k = 0; k < 3; k++)
-            d[k] = cos(turn) * dir[k] + sin(turn) * (cos(az) * u[k] + sin(az) * v[k]);
-        branch(o, tip, d, len * 0.75, r * 0.7, level - 1, id * 2 + (uint32_t)c);
+    for (int i = 0; i < 2; i++) {
+        struct spd_mat child;
+        spd_mat_mul(&child, &step[i], frame);
+        tree_grow(o, step, &child, scale * 0.67, depth);
     }
 }
 
-void spd_tree(struct spd_out *o, int size, int width, int height)
+void spd_tree(struct spd_out *o, int size)
 {
-    const double from[3] = {4.5, -7.5, 2.6}, at[3] = {0, 0, 2.0}, up[3] = {0, 0, 1};
-    spd_view(o, from, at, up, 45, width, height, spd_sky);
-    spd_light(o, (const double[3]){-5, -6, 10}, 0.8);
-    spd_light(o, (const double[3]){6, -2, 4}, 0.4);
-    spd_material(o, "floor", (const double[3]){0.4, 0.6, 0.3}, 0.8, 0, 0, 0, 1);
-    spd_material(o, "bark", (const double[3]){0.55, 0.4, 0.25}, 0.8, 0, 0, 0, 1);
-    spd_material(o, "leaf", (const double[3]){0.2, 0.7, 0.2}, 0.7, 0.2, 10, 0, 1);
-    ground(o, "floor", 20, 0);
-    branch(o, (const double[3]){0, 0, 0}, (const double[3]){0, 0, 1}, 1.6, 0.2, size, 1);
+    spd_head(o, (const double[3]){4.5, 0.4, 2.0}, (const double[3]){0.0, 0.0, 1.5},
+             (const double[3]){0.0, 0.0, 1.0}, 1.0);
+    static const double lights[7][3] = {{-5.0, 5.0, 50.0},   {30.0, -30.0, 30.0},
+                                        {-40.0, -30.0, 20.0}, {10.0, 30.0, 40.0},
+                                        {-30.0, 40.0, 10.0},  {50.0, 25.0, 20.0},
+                                        {-10.0, -60.0, 30.0}};
+    for (int i = 0; i < 7; i++)
+        spd_light(o, lights[i]);
+    spd_surface(o, (const double[3]){0.2, 0.7, 0.2}, 1.0, 0.0, 0.0, 0.0, 0.0);
+    double field[4][3] = {{50.0, 50.0, 0.0}, {-50.0, 50.0, 0.0}, {-50.0, -50.0, 0.0},
+                          {50.0, -50.0, 0.0}};
+    spd_polygon(o, 4, field);
+    spd_surface(o, (const double[3]){0.55, 0.4, 0.2}, 1.0, 0.0, 0.0, 0.0, 0.0);
+    /* Aono and Kunii's branching: the two children tilt 40 and 25 degrees,
+     * turn 90 and 230 degrees about their parent, and shrink to 0.65 and
+     * 0.70, placed at the parent's tip */
+    static const double tilt[2] = {40.0, 25.0}, turn[2] = {90.0, 140.0 + 90.0},
+                        shrink[2] = {0.65, 0.70};
+    struct spd_mat step[2];
+    for (int i = 0; i < 2; i++) {
+        struct spd_mat rx, rz, r, st;
+        spd_rotate(&rx, SPD_X, tilt[i] * SPD_PI / 180.0);
+        spd_rotate(&rz, SPD_Z, turn[i] * SPD_PI / 180.0);
+        spd_mat_mul(&r, &rx, &rz);
+        spd_identity(&st);
+        st.m[0][0] = st.m[1][1] = st.m[2][2] = shrink[i];
+        st.m[3][2] = 1.0;
+        spd_mat_mul(&step[i], &r, &st);
+    }
+    struct spd_mat root;
+    spd_identity(&root);
+    tree_grow(o, step, &root, 1.0, size);
 }
 
 /* --------------------------------------------------------------- gears */
 
-static void gear(struct spd_out *o, const double c[3], double r, int teeth, double phase,
-                 const char *mat)
+#define GEAR_TEETH 36
+#define GEAR_INNER 0.9   /* root radius / outer radius */
+#define GEAR_OUTER 0.995 /* a gap between meshing teeth */
+
+/* A tooth's four outline points about the gear's centre: two on the tip
+ * radius, two on the root radius. */
+static void gear_tooth(double gear_angle, double tooth_angle, const double c[3],
+                       const double outer[3], const double inner[3], double out[4][3])
 {
-    /* outline: each tooth is 4 points, tip radius r, root radius 0.85 r */
-    int n = teeth * 4;
-    double top[4 * 64][3], bot[4 * 64][3];
-    for (int i = 0; i < n; i++) {
-        double a = phase + 2 * PI * i / n;
-        double rr = (i % 4 == 1 || i % 4 == 2) ? r : 0.85 * r;
-        top[i][0] = bot[i][0] = c[0] + rr * cos(a);
-        top[i][1] = bot[i][1] = c[1] + rr * sin(a);
-        top[i][2] = c[2] + 0.1 * r;
-        bot[i][2] = c[2] - 0.1 * r;
-    }
-    /* the faces as fans from the centre (the outline is not convex) */
-    double ct[3] = {c[0], c[1], c[2] + 0.1 * r}, cb[3] = {c[0], c[1], c[2] - 0.1 * r};
-    for (int i = 0; i < n; i++) {
-        int j = (i + 1) % n;
-        spd_triangle(o, mat, ct, top[i], top[j]);
-        spd_triangle(o, mat, cb, bot[j], bot[i]);
-        spd_triangle(o, mat, bot[i], bot[j], top[j]);
-        spd_triangle(o, mat, bot[i], top[j], top[i]);
+    static const double at[4] = {-0.19, 0.19, 0.3, 0.7};
+    for (int i = 0; i < 4; i++) {
+        struct spd_mat m;
+        spd_rotate(&m, SPD_Z, gear_angle + at[i] * tooth_angle);
+        spd_xform_vector(out[i], i < 2 ? outer : inner, &m);
+        for (int k = 0; k < 3; k++)
+            out[i][k] += c[k];
     }
 }
 
-void spd_gears(struct spd_out *o, int size, int width, int height)
+static void gear(struct spd_out *o, const double c[3], double phase, double outer_r,
+                 double inner_r, double thickness)
 {
-    double span = 2.0 * size;
-    const double from[3] = {-span * 0.6, -span * 1.5, span * 1.3};
-    const double at[3] = {0, 0, 0}, up[3] = {0, 0, 1};
-    spd_view(o, from, at, up, 40, width, height, spd_sky);
-    spd_light(o, (const double[3]){-2 * span, -3 * span, 5 * span}, 0.7);
-    spd_light(o, (const double[3]){3 * span, -span, 2 * span}, 0.4);
-    spd_material(o, "floor", (const double[3]){0.8, 0.8, 0.8}, 0.5, 0.5, 40, 0, 1);
-    spd_material(o, "brass", (const double[3]){0.9, 0.7, 0.3}, 0.6, 0.4, 30, 0, 1);
-    spd_material(o, "steel", (const double[3]){0.6, 0.65, 0.7}, 0.5, 0.5, 50, 0, 1);
-    ground(o, "floor", 2 * span, -0.3);
-    for (int i = 0; i < size; i++)
-        for (int j = 0; j < size; j++) {
-            double c[3] = {(i - (size - 1) / 2.0) * 2.0, (j - (size - 1) / 2.0) * 2.0, 0};
-            /* neighbours turn half a tooth apart so the teeth mesh */
-            gear(o, c, 1.07, 16, ((i + j) % 2) * PI / 16, (i + j) % 2 ? "steel" : "brass");
-        }
+    double outer[3] = {outer_r, 0.0, 0.0}, inner[3] = {inner_r, 0.0, 0.0};
+    double tooth = 2.0 * SPD_PI / (double)GEAR_TEETH;
+    double face[4 * GEAR_TEETH][3], side[4][3];
+    for (int t = 0; t < GEAR_TEETH; t++)
+        gear_tooth(phase + 2.0 * SPD_PI * (double)t / (double)GEAR_TEETH, tooth, c, outer, inner,
+                   face + 4 * t);
+    spd_polygon(o, 4 * GEAR_TEETH, face);
+    for (int i = 0; i < 4 * GEAR_TEETH; i++) {
+        int j = (i + 1) % (4 * GEAR_TEETH);
+        memcpy(side[0], face[i], sizeof side[0]);
+        memcpy(side[1], face[i], sizeof side[1]);
+        side[1][2] -= thickness;
+        memcpy(side[2], face[j], sizeof side[2]);
+        side[2][2] -= thickness;
+        memcpy(side[3], face[j], sizeof side[3]);
+        spd_polygon(o, 4, side);
+    }
+    /* the bottom face, wound the other way */
+    outer[2] = inner[2] = -thickness;
+    for (int t = 0; t < GEAR_TEETH; t++)
+        gear_tooth(phase - 2.0 * SPD_PI * (double)t / (double)GEAR_TEETH, -tooth, c, outer, inner,
+                   face + 4 * t);
+    spd_polygon(o, 4 * GEAR_TEETH, face);
+}
+
+static double frac(double a) { return a - (int)a; }
+
+void spd_gears(struct spd_out *o, int size)
+{
+    spd_head(o, (const double[3]){-1.1, -2.1, 2.6}, (const double[3]){0.0, 0.0, 0.0},
+             (const double[3]){0.0, 0.0, 1.0}, 1.0);
+    static const double lights[5][3] = {{2.0, 4.0, 4.0}, {-2.0, 4.0, 3.0}, {2.0, -2.5, 2.5},
+                                        {-1.0, -4.0, 2.0}, {-1.111, -2.121, 2.626}};
+    for (int i = 0; i < 5; i++)
+        spd_light(o, lights[i]);
+    /* the ground: off white, reflective */
+    spd_surface(o, (const double[3]){1.0, 0.85, 0.7}, 0.3, 0.6, 37.0, 0.0, 0.0);
+    double ground[4][3] = {{2.0, 2.0, 0.0}, {-2.0, 2.0, 0.0}, {-2.0, -2.0, 0.0},
+                           {2.0, -2.0, 0.0}};
+    spd_polygon(o, 4, ground);
+    /* size^3 gears in a cube of side 2 resting on the ground; neighbours
+     * mesh (turned half a tooth apart) */
+    const double edge = 1.0 - GEAR_INNER;
+    double r = 1.0 / ((double)size - (double)(size - 1) * edge / 2.0);
+    double first[3] = {-1.0 + r, -1.0 + r, 1.0};
+    double step[3] = {r * (2.0 - edge), r * (2.0 - edge), -1.0 / (double)size};
+    double thickness = 1.0 / (2.0 * (double)size) < 0.1 ? 1.0 / (2.0 * (double)size) : 0.1;
+    for (int iz = 0; iz < size; iz++)
+        for (int iy = 0; iy < size; iy++)
+            for (int ix = 0; ix < size; ix++) {
+                double c[3] = {first[0] + (double)ix * step[0], first[1] + (double)iy * step[1],
+                               first[2] + (double)iz * step[2]};
+                /* a colour from the position, its largest channel 1 */
+                double rgb[3] = {0.01 + frac((double)(ix * 3 + iy * 2 + iz + 1) * 5.0 / 7.0),
+                                 0.01 + frac((double)(iy * 3 + iz * 2 + ix + 1) * 3.0 / 7.0),
+                                 0.01 + frac((double)(iz * 3 + ix * 2 + iy + 1) * 2.0 / 7.0)};
+                double top = rgb[0] > rgb[1] ? rgb[0] : rgb[1];
+                top = top > rgb[2] ? top : rgb[2];
+                for (int k = 0; k < 3; k++)
+                    rgb[k] /= top;
+                if ((ix * 4 + iy * 2 + iz) % 5 == 0) /* every fifth is glass */
+                    spd_surface(o, rgb, 0.2, 0.0, 0.0, 0.8, 1.1);
+                else
+                    spd_surface(o, rgb, 1.0, 0.0, 0.0, 0.0, 0.0);
+                gear(o, c, SPD_PI * (double)((ix + iy + iz) % 2) / (double)GEAR_TEETH,
+                     GEAR_OUTER * r, (1.0 - edge) * r, thickness);
+            }
+}
+
+/* ----------------------------------------------------------- the table */
+
+const struct spd_db spd_dbs[] = {
+    {"balls", spd_balls, 5, 4},  {"gears", spd_gears, 8, 4}, {"mount", spd_mount, 8, 6},
+    {"rings", spd_rings, 10, 7}, {"teapot", spd_teapot, 65, 6}, {"tetra", spd_tetra, 9, 6},
+    {"tree", spd_tree, 12, 11},
+};
+const int spd_db_count = (int)(sizeof spd_dbs / sizeof spd_dbs[0]);
+
+const struct spd_db *spd_find(const char *name)
+{
+    for (int i = 0; i < spd_db_count; i++)
+        if (strcmp(spd_dbs[i].name, name) == 0)
+            return &spd_dbs[i];
+    return NULL;
+}
+
+void spd_write_nff(const struct spd_db *db, int size, int width, int height, FILE *f)
+{
+    struct spd_out o = {f, width, height};
+    db->make(&o, size);
 }

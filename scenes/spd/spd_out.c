@@ -1,137 +1,165 @@
-/* spd_out.c: writing SPD's shapes as a links1 text scene (see spd.h). */
+/* spd_out.c: the NFF writer and the vector and matrix steps of the
+ * generators (see spd.h).  Kept apart from the generators so the math
+ * library computes every sine and cosine at run time, as the SPD's own
+ * library does. */
 #include <math.h>
-#include <stdlib.h>
+#include <string.h>
 
-#include "host-tools/scene/scene_desc.h"
 #include "scenes/spd/spd.h"
 
-#define SPD_PI 3.14159265358979323846
+/* ------------------------------------------------------------------ NFF */
 
-const double spd_sky[3] = {0.078, 0.361, 0.753};
-
-/* SPD's right-handed world into the renderer's left-handed one */
-static void spd_p(struct spd_out *o, const char *what, const double v[3])
+void spd_background(struct spd_out *o, const double c[3])
 {
-    fprintf(o->f, " %s %.6g %.6g %.6g", what, v[0], -v[1], v[2]);
+    fprintf(o->f, "b %g %g %g\n", c[0], c[1], c[2]);
 }
 
 void spd_view(struct spd_out *o, const double from[3], const double at[3], const double up[3],
-              double angle, int width, int height, const double background[3])
+              double angle, double hither)
 {
-    /* SPD's angle spans the image's height (square in the originals);
-     * the renderer's fov spans its width */
-    double fov = 2 * atan(tan(angle * SPD_PI / 360) * width / height) * 180 / SPD_PI;
-    fprintf(o->f, "camera {");
-    spd_p(o, "eye", from);
-    spd_p(o, "look_at", at);
-    spd_p(o, "up", up);
-    fprintf(o->f, "  fov %.6g }\nresolution %d %d\nbackground %.4g %.4g %.4g\n", fov, width,
-            height, background[0], background[1], background[2]);
-    fprintf(o->f, "options { max_depth 5 }\n");
+    fprintf(o->f, "v\nfrom %g %g %g\nat %g %g %g\nup %g %g %g\nangle %g\nhither %g\n"
+                  "resolution %d %d\n",
+            from[0], from[1], from[2], at[0], at[1], at[2], up[0], up[1], up[2], angle, hither,
+            o->width, o->height);
 }
 
-void spd_light(struct spd_out *o, const double pos[3], double intensity)
+void spd_light(struct spd_out *o, const double p[3])
 {
-    fprintf(o->f, "light point { colour %.4g %.4g %.4g ", intensity, intensity, intensity);
-    spd_p(o, "position", pos);
-    fprintf(o->f, " }\n");
+    fprintf(o->f, "l %g %g %g\n", p[0], p[1], p[2]);
 }
 
-void spd_material(struct spd_out *o, const char *name, const double rgb[3], double kd, double ks,
-                  double shine, double t, double ior)
+void spd_surface(struct spd_out *o, const double rgb[3], double kd, double ks,
+                 double half_angle, double kt, double ior)
 {
-    if (ks + t > 1) /* the renderer keeps src + trc <= 1 */
-        ks = 1 - t;
-    int phong = shine > 1024 ? 1024 : (int)(shine + 0.5);
-    fprintf(o->f,
-            "material %s { colour %.4g %.4g %.4g  dic 0.1  drc %.4g  src %.4g  trc %.4g  "
-            "ior %.4g  phong %d }\n",
-            name, rgb[0], rgb[1], rgb[2], kd, ks, t, ior < 1 ? 1.0 : ior, phong);
+    /* the Phong power whose highlight falls to half at half_angle */
+    double rad = SPD_PI * half_angle / 180.0, shine;
+    if (rad <= 0.0)
+        shine = 100000.0; /* no highlight */
+    else if (rad >= SPD_PI / 2.0)
+        shine = 1.0;
+    else
+        shine = log(0.5) / log(cos(rad));
+    fprintf(o->f, "f %g %g %g %g %g %g %g %g\n", rgb[0], rgb[1], rgb[2], kd, ks, shine, kt, ior);
 }
 
-void spd_sphere(struct spd_out *o, const char *mat, const double c[3], double r)
+void spd_sphere(struct spd_out *o, const double c[3], double r)
 {
-    fprintf(o->f, "sphere { material %s", mat);
-    spd_p(o, "centre", c);
-    fprintf(o->f, " radius %.6g }\n", r);
-    o->spheres++;
+    fprintf(o->f, "s %g %g %g %g\n", c[0], c[1], c[2], r);
 }
 
-/* v as the scene file will hold it (spd_p's digits) */
-static void spd_as_written(const double v[3], double out[3])
+void spd_cone(struct spd_out *o, const double base[3], double r0, const double apex[3],
+              double r1)
 {
-    char t[32];
-    for (int k = 0; k < 3; k++) {
-        snprintf(t, sizeof t, "%.6g", v[k]);
-        out[k] = strtod(t, NULL);
-    }
+    fprintf(o->f, "c %g %g %g %g %g %g %g %g\n", base[0], base[1], base[2], r0, apex[0],
+            apex[1], apex[2], r1);
 }
 
-void spd_triangle(struct spd_out *o, const char *mat, const double a[3], const double b[3],
-                  const double c[3])
+void spd_polygon(struct spd_out *o, int n, double (*v)[3])
 {
-    /* a triangle the scene parser would refuse as degenerate (a fine
-     * tessellation's slivers near a pole) is left out */
-    double w[9];
-    spd_as_written(a, w);
-    spd_as_written(b, w + 3);
-    spd_as_written(c, w + 6);
-    if (sd_triangle_degenerate(w)) {
-        o->dropped++;
-        return;
-    }
-    fprintf(o->f, "triangle { material %s", mat);
-    spd_p(o, "v", a);
-    spd_p(o, "v", b);
-    spd_p(o, "v", c);
-    fprintf(o->f, " }\n");
-    o->triangles++;
-}
-
-void spd_polygon(struct spd_out *o, const char *mat, const double (*v)[3], int n)
-{
-    for (int i = 1; i + 1 < n; i++)
-        spd_triangle(o, mat, v[0], v[i], v[i + 1]);
-}
-
-static void spd_unit(double v[3])
-{
-    double l = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
-    for (int k = 0; k < 3; k++)
-        v[k] /= l;
-}
-
-static void spd_cross(const double a[3], const double b[3], double out[3])
-{
-    out[0] = a[1] * b[2] - a[2] * b[1];
-    out[1] = a[2] * b[0] - a[0] * b[2];
-    out[2] = a[0] * b[1] - a[1] * b[0];
-}
-
-void spd_cone(struct spd_out *o, const char *mat, const double base[3], double r0,
-              const double apex[3], double r1)
-{
-    double axis[3] = {apex[0] - base[0], apex[1] - base[1], apex[2] - base[2]};
-    spd_unit(axis);
-    double any[3] = {1, 0, 0};
-    if (fabs(axis[0]) > 0.9)
-        any[0] = 0, any[1] = 1;
-    double u[3], v[3];
-    spd_cross(axis, any, u);
-    spd_unit(u);
-    spd_cross(axis, u, v);
-    double ring0[SPD_SIDES + 1][3], ring1[SPD_SIDES + 1][3];
-    for (int i = 0; i <= SPD_SIDES; i++) {
-        double a = 2 * SPD_PI * (i % SPD_SIDES) / SPD_SIDES;
-        for (int k = 0; k < 3; k++) {
-            double d = cos(a) * u[k] + sin(a) * v[k];
-            ring0[i][k] = base[k] + r0 * d;
-            ring1[i][k] = apex[k] + r1 * d;
+    for (int i = 0; i < n;) {
+        double d[3] = {v[i][0] - v[(i + 1) % n][0], v[i][1] - v[(i + 1) % n][1],
+                       v[i][2] - v[(i + 1) % n][2]};
+        if (spd_normalize(d) < 1.0e-6) {
+            memmove(v + i, v + i + 1, (size_t)(n - i - 1) * sizeof *v);
+            n--;
+        } else {
+            i++;
         }
     }
-    for (int i = 0; i < SPD_SIDES; i++) {
-        spd_triangle(o, mat, ring0[i], ring0[i + 1], ring1[i + 1]);
-        if (r1 > 0)
-            spd_triangle(o, mat, ring0[i], ring1[i + 1], ring1[i]);
-    }
+    if (n < 3)
+        return;
+    fprintf(o->f, "p %d\n", n);
+    for (int i = 0; i < n; i++)
+        fprintf(o->f, "%g %g %g\n", v[i][0], v[i][1], v[i][2]);
+}
+
+void spd_patch(struct spd_out *o, int n, const double (*v)[3], const double (*nrm)[3])
+{
+    fprintf(o->f, "pp %d\n", n);
+    for (int i = 0; i < n; i++)
+        fprintf(o->f, "%g %g %g %g %g %g\n", v[i][0], v[i][1], v[i][2], nrm[i][0], nrm[i][1],
+                nrm[i][2]);
+}
+
+/* ------------------------------------------------- vectors and matrices */
+
+void spd_identity(struct spd_mat *m)
+{
+    memset(m, 0, sizeof *m);
+    for (int i = 0; i < 4; i++)
+        m->m[i][i] = 1.0;
+}
+
+void spd_rotate(struct spd_mat *m, int axis, double angle)
+{
+    double c = cos(angle), s = sin(angle);
+    int a = (axis + 1) % 3, b = (axis + 2) % 3; /* the plane turned: x->y, y->z, z->x */
+    memset(m, 0, sizeof *m);
+    m->m[axis][axis] = 1.0;
+    m->m[a][a] = c;
+    m->m[b][b] = c;
+    m->m[a][b] = s;
+    m->m[b][a] = -s;
+    m->m[3][3] = 1.0;
+}
+
+/* the rotation by angle about the unit axis u (Rodrigues' formula), in
+ * the row-vector convention: p' = p m */
+void spd_axis_rotate(struct spd_mat *m, const double u[3], double angle)
+{
+    double c = cos(angle), s = sin(angle), t = 1.0 - c;
+    memset(m, 0, sizeof *m);
+    m->m[0][0] = u[0] * u[0] + (1.0 - u[0] * u[0]) * c;
+    m->m[0][1] = u[0] * u[1] * t + u[2] * s;
+    m->m[0][2] = u[0] * u[2] * t - u[1] * s;
+    m->m[1][0] = u[0] * u[1] * t - u[2] * s;
+    m->m[1][1] = u[1] * u[1] + (1.0 - u[1] * u[1]) * c;
+    m->m[1][2] = u[1] * u[2] * t + u[0] * s;
+    m->m[2][0] = u[0] * u[2] * t + u[1] * s;
+    m->m[2][1] = u[1] * u[2] * t - u[0] * s;
+    m->m[2][2] = u[2] * u[2] + (1.0 - u[2] * u[2]) * c;
+    m->m[3][3] = 1.0;
+}
+
+void spd_mat_mul(struct spd_mat *out, const struct spd_mat *a, const struct spd_mat *b)
+{
+    struct spd_mat r;
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            r.m[i][j] = a->m[i][0] * b->m[0][j] + a->m[i][1] * b->m[1][j] +
+                        a->m[i][2] * b->m[2][j] + a->m[i][3] * b->m[3][j];
+    *out = r;
+}
+
+void spd_xform_vector(double out[3], const double v[3], const struct spd_mat *m)
+{
+    double r[3];
+    for (int j = 0; j < 3; j++)
+        r[j] = v[0] * m->m[0][j] + v[1] * m->m[1][j] + v[2] * m->m[2][j];
+    memcpy(out, r, sizeof r);
+}
+
+void spd_xform_point(double out[3], const double v[3], const struct spd_mat *m)
+{
+    double r[3];
+    for (int j = 0; j < 3; j++)
+        r[j] = v[0] * m->m[0][j] + v[1] * m->m[1][j] + v[2] * m->m[2][j] + m->m[3][j];
+    memcpy(out, r, sizeof r);
+}
+
+void spd_xform4(double out[4], const double v[4], const struct spd_mat *m)
+{
+    double r[4];
+    for (int j = 0; j < 4; j++)
+        r[j] = v[0] * m->m[0][j] + v[1] * m->m[1][j] + v[2] * m->m[2][j] + v[3] * m->m[3][j];
+    memcpy(out, r, sizeof r);
+}
+
+double spd_normalize(double v[3])
+{
+    double len = sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+    if (len > 0.0)
+        for (int k = 0; k < 3; k++)
+            v[k] /= len;
+    return len;
 }

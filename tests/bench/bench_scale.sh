@@ -5,8 +5,9 @@
 #      ray (links1 ref --arith float, tracing time only) with the automatic
 #      hierarchy on, and off up to 1,000 (it grows linearly beyond);
 #   2. the SPD scenes (links1-spd) balls 1-4, tetra 1-6, mount 6 (a
-#      mesh of 8,192 triangles) and the teapot at sizes 2 and 4 (4,160 and
-#      16,384 triangles with the floor): host ns/ray, board NC instructions per ray
+#      mesh of 8,192 triangles) and the teapot at sizes 2 and 4 (248 and
+#      1,024 triangles with the floor; before issue 23's SPD, 4,160 and
+#      16,384): host ns/ray, board NC instructions per ray
 #      (links1 render --count-insns, float, 8 NCs: all NCs' instructions over
 #      the rays the host counts for the same image), and POV-Ray 3.7's trace
 #      time on the same scene through links1 export-pov;

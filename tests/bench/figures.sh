@@ -10,7 +10,7 @@
 #
 # The full size: demo.scn at 512x480 (Fig. 7: the board at 1..254 NCs, the
 # replay at 1..254), demo.scn with shadows off at 512x480 (Fig. 10), SPD
-# tetra 5 (4,096 triangles) at 256x240 (Table 2; the rows without the hierarchy
+# tetra 6 (4,096 triangles) at 256x240 (Table 2; the rows without the hierarchy
 # traced at 64x60 and scaled), glass.scn at 256x240
 # (Table 3).  FIG_SMALL=1 shrinks every size and NC list (well under 30 s).
 set -u
@@ -22,10 +22,10 @@ OUT=${FIG_OUT:-docs/figures}
 LIMIT_S=${FIG_RUN_LIMIT_S:-1800}
 if [ "${FIG_SMALL:-0}" = 1 ]; then
     SIZE7=64x48 BOARD7="1 2 4" REPLAY7=1,2,4,8,16,64,254 SIZE10=64x48 K10="16 64 256 1024"
-    T2SPD="tetra 2" SIZE2=32x24 SIZE2LOW=16x12 SIZE3=48x36 T2K="480 96"
+    T2SPD="tetra 3" SIZE2=32x24 SIZE2LOW=16x12 SIZE3=48x36 T2K="480 96"
 else
     SIZE7=512x480 BOARD7="1 2 4 8 16 32 64 128 254" REPLAY7=1,2,4,8,16,32,64,128,254 SIZE10=512x480
-    K10="64 128 256 512 1024 2048 4096 8192 16384" T2SPD="tetra 5" SIZE2=256x240 SIZE2LOW=64x60
+    K10="64 128 256 512 1024 2048 4096 8192 16384" T2SPD="tetra 6" SIZE2=256x240 SIZE2LOW=64x60
     SIZE3=256x240
     T2K="2400 480"
 fi

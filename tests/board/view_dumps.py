@@ -23,7 +23,7 @@ import sys
 import time
 
 WAIT_FOR_SOCKET_S = 60
-RUN_SLICE_S = 0.05  # the board runs this long between two dumps
+RUN_SLICE_S = 0.005  # the board runs this long between two dumps
 
 
 def read_to_prompt(s):
