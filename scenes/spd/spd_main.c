@@ -128,20 +128,20 @@ int main(int argc, char **argv)
         }
     }
     /* written whole or not at all (host-tools/opts/out_file.h) */
-    char err[PATH_MAX + 256];
+    char why[PATH_MAX + 256];
     struct out_file of;
-    int rc = out_file_open(&of, out, err, sizeof err);
+    int rc = out_file_open(&of, out, why, sizeof why);
     if (rc == 0 && fwrite(text, 1, text_len, of.f) != text_len) {
-        snprintf(err, sizeof err, "%s: write failed", out);
+        snprintf(why, sizeof why, "%s: write failed", out);
         out_file_abort(&of);
         rc = -1;
     } else if (rc == 0) {
-        rc = out_file_commit(&of, err, sizeof err);
+        rc = out_file_commit(&of, why, sizeof why);
     }
     if (text != nff)
         free(text);
     if (rc) {
-        fprintf(stderr, "links1-spd: %s\n", err);
+        fprintf(stderr, "links1-spd: %s\n", why);
         sd_free(&s);
         free(nff);
         return 1;
