@@ -78,5 +78,8 @@ int sd_texture_open(const char *tex, const char *model_dir, const char *allow, c
  * map_image[i], when not NULL or "", is written as map i's image file
  * instead of its texels.  0, or -1 (a write error). */
 int sd_write_text(const struct sd_scene *s, const char *const *map_image, FILE *f);
+/* The same under another first comment line (title, without its "# "). */
+int sd_write_text_titled(const struct sd_scene *s, const char *const *map_image,
+                         const char *title, FILE *f);
 
 #endif

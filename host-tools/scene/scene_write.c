@@ -188,6 +188,12 @@ static void wr_cluster(FILE *f, const struct sd_scene *s, int c, const int *firs
 
 int sd_write_text(const struct sd_scene *s, const char *const *map_image, FILE *f)
 {
+    return sd_write_text_titled(s, map_image, "written by links1 import (docs/import.md)", f);
+}
+
+int sd_write_text_titled(const struct sd_scene *s, const char *const *map_image,
+                         const char *title, FILE *f)
+{
     size_t nc = (size_t)s->n_clusters + 1, np = (size_t)s->n_prims + 1;
     int *first_prim = malloc(nc * sizeof(int)), *first_child = malloc(nc * sizeof(int));
     int *next_child = malloc(nc * sizeof(int)), *next_prim = malloc(np * sizeof(int));
@@ -203,7 +209,7 @@ int sd_write_text(const struct sd_scene *s, const char *const *map_image, FILE *
             next_child[c] = first_child[s->clusters[c].parent];
             first_child[s->clusters[c].parent] = c;
         }
-        fprintf(f, "# written by links1 import (docs/import.md)\n");
+        fprintf(f, "# %s\n", title);
         wr_view(f, s);
         wr_maps(f, s, map_image);
         wr_materials(f, s);

@@ -1,8 +1,7 @@
 # scenes/spd/: links1-spd, the Standard Procedural Databases (Haines 1987),
 # written as the SPD's own programs write them (NFF) and made into scenes
 # by the NFF reader (host-tools/scene/nff_read.c).
-SPD_GEN_SRCS := scenes/spd/spd_out.c scenes/spd/spd_dbs.c scenes/spd/spd_teapot.c \
-	scenes/spd/spd_scn.c
+SPD_GEN_SRCS := scenes/spd/spd_out.c scenes/spd/spd_dbs.c scenes/spd/spd_teapot.c
 HOST_TOOLS += links1-spd
 links1-spd_SRCS = scenes/spd/spd_main.c $(SPD_GEN_SRCS) $(SCENE_TEXT_SRCS) \
 	host-tools/opts/out_file.c

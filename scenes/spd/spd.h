@@ -84,10 +84,4 @@ const struct spd_db *spd_find(const char *name);
 /* Database `db` at `size` as NFF text into f, width x height. */
 void spd_write_nff(const struct spd_db *db, int size, int width, int height, FILE *f);
 
-/* A scene read from such NFF (nff_read.h) as a text scene that compiles to
- * the same bytes (spd_scn.c); title becomes its first line's comment.
- * 0, or -1 on a write error. */
-struct sd_scene;
-int spd_write_scn(FILE *f, const struct sd_scene *s, const char *title);
-
 #endif

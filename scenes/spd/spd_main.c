@@ -20,6 +20,7 @@
 
 #include "host-tools/opts/out_file.h"
 #include "host-tools/scene/nff_read.h"
+#include "host-tools/scene/scene_import.h"
 #include "host-tools/scene/scene_desc.h"
 #include "scenes/spd/spd.h"
 
@@ -110,7 +111,7 @@ int main(int argc, char **argv)
     if (!spd_ends_with(out, ".nff")) {
         text = NULL;
         m = open_memstream(&text, &text_len);
-        if (!m || spd_write_scn(m, &s, title) != 0 || fclose(m) != 0 || !text) {
+        if (!m || sd_write_text_titled(&s, NULL, title, m) != 0 || fclose(m) != 0 || !text) {
             fprintf(stderr, "links1-spd: out of memory writing %s %ld\n", name, size);
             sd_free(&s);
             free(nff);

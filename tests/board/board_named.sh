@@ -14,29 +14,21 @@ trap 'for f in "$LINKS1_BOARDS"/*/board; do [ -e "$f" ] && kill -9 "$(awk "/^pid
 SIZE=64x48
 scene=scenes/demo.scn
 ref=$(render_ref $scene float $SIZE)
-run() { # NAME ARGS...: runs links1, output in $RENDER_TMP/NAME.log; returns its exit
-    local name=$1; shift
-    timeout "$BOARD_RUN_LIMIT_S" "$LINKS1" "$@" >"$RENDER_TMP/$name.log" 2>&1
-    local rc=$?
-    echo "--- links1 $* (exit $rc)"; sed 's/^/    /' "$RENDER_TMP/$name.log"
-    return $rc
-}
-pid_of() { awk '/^pid/ {print $2}' "$LINKS1_BOARDS/$1/board" 2>/dev/null; }
 # A QEMU that has exited may linger as a zombie until it is reaped: alive
 # means it still has a command line.
 qemu_alive() { tr '\0' ' ' <"/proc/$1/cmdline" 2>/dev/null | grep -q qemu; }
 
-if run start board start --ncs 2 --name b1 --quiet && run list1 board list &&
+if render_run start board start --ncs 2 --name b1 --quiet && render_run list1 board list &&
     grep -q '^board b1: running' "$RENDER_TMP/list1.log"; then
     echo "PASS board_named_start"
 else
     echo "FAIL board_named_start: board start failed or board list does not show b1 running"
 fi
 for i in 1 2; do
-    run render$i render --board b1 --quiet $scene --size $SIZE -o "$RENDER_TMP/r$i.ppm"
+    render_run render$i render --board b1 --quiet $scene --size $SIZE -o "$RENDER_TMP/r$i.ppm"
     render_same board_named_render_$i "$ref" "$RENDER_TMP/r$i.ppm"
 done
-if ! run twice board start --ncs 2 --name b1 --quiet &&
+if ! render_run twice board start --ncs 2 --name b1 --quiet &&
     grep -q 'board b1 is already running' "$RENDER_TMP/twice.log"; then
     echo "PASS board_named_twice"
 else
@@ -55,8 +47,8 @@ for ((i = 0; i < BOARD_RUN_LIMIT_S * 20; i++)); do
 done
 kill -9 $victim 2>/dev/null
 wait $victim 2>/dev/null
-run list2 board list
-run after render --board b1 $scene --size $SIZE -o "$RENDER_TMP/after.ppm"
+render_run list2 board list
+render_run after render --board b1 $scene --size $SIZE -o "$RENDER_TMP/after.ppm"
 if ! grep -q 'loaded: ' "$RENDER_TMP/killed.log"; then
     echo "FAIL board_named_killed_tool: the render never said its scene was loaded: $(tail -n 1 "$RENDER_TMP/killed.log")"
 elif grep -q 'links1 render: frame 0 ' "$RENDER_TMP/killed.log" || [ -e "$RENDER_TMP/killed.ppm" ]; then
@@ -66,22 +58,22 @@ elif grep -q '^board b1: running' "$RENDER_TMP/list2.log" && cmp -s "$ref" "$REN
 else
     echo "FAIL board_named_killed_tool: after a render killed mid-frame b1 is not listed running, or the next render differs from the host build"
 fi
-pid=$(pid_of b1)
-if run stop board stop b1 && [ -n "$pid" ] && ! qemu_alive "$pid" &&
+pid=$(render_board_pid b1)
+if render_run stop board stop b1 && [ -n "$pid" ] && ! qemu_alive "$pid" &&
     [ ! -e "$LINKS1_BOARDS/b1" ]; then
     echo "PASS board_named_stop"
 else
     echo "FAIL board_named_stop: board stop failed, QEMU (pid $pid) still runs or the state remains"
 fi
 # A board whose QEMU died: found, reported and removed.
-run start2 board start --ncs 1 --name b2 --quiet
-pid=$(pid_of b2)
+render_run start2 board start --ncs 1 --name b2 --quiet
+pid=$(render_board_pid b2)
 [ -n "$pid" ] && kill -9 "$pid"
 for ((i = 0; i < 200; i++)); do # until it is gone (a zombie has no command line)
     [ -n "$pid" ] && qemu_alive "$pid" || break
     sleep 0.05
 done
-run list3 board list
+render_run list3 board list
 if [ -n "$pid" ] && grep -q "board b2: its QEMU (pid $pid) is gone" "$RENDER_TMP/list3.log" &&
     [ ! -e "$LINKS1_BOARDS/b2" ]; then
     echo "PASS board_named_stale"

@@ -13,21 +13,13 @@ checks=(board_owner_gdb_unix_socket board_owner_gdb_attach board_owner_gdb_port_
 board_ready "${checks[@]}" || exit 0
 export LINKS1_BOARDS="$RENDER_TMP/boards"
 trap 'for f in "$LINKS1_BOARDS"/*/board; do [ -e "$f" ] && kill -9 "$(awk "/^pid/ {print \$2}" "$f")" 2>/dev/null; done; rm -rf "$RENDER_TMP"' EXIT
-run() { # NAME ARGS...: runs links1, output in $RENDER_TMP/NAME.log; returns its exit
-    local name=$1; shift
-    timeout "$BOARD_RUN_LIMIT_S" "$LINKS1" "$@" >"$RENDER_TMP/$name.log" 2>&1
-    local rc=$?
-    echo "--- links1 $* (exit $rc)"; sed 's/^/    /' "$RENDER_TMP/$name.log"
-    return $rc
-}
-pid_of() { awk '/^pid/ {print $2}' "$LINKS1_BOARDS/$1/board" 2>/dev/null; }
 
 # ---- the gdb stub: a unix socket in the board's directory
 sock="$LINKS1_BOARDS/g/gdb.sock"
 "$LINKS1" board start --name g --ncs 1 --gdb --timeout 60 >"$RENDER_TMP/gstart.log" 2>&1 &
 starter=$!
 for _ in $(seq 100); do [ -S "$sock" ] && break; sleep 0.1; done
-pid=$(pid_of g)
+pid=$(render_board_pid g)
 cmdline=$(tr '\0' ' ' <"/proc/${pid:-0}/cmdline" 2>/dev/null)
 echo "--- QEMU: $cmdline"
 if [ -S "$sock" ] && [[ $cmdline == *"-gdb unix:$sock,server=on,wait=off"* ]] &&
@@ -45,25 +37,25 @@ wait $starter
 rc=$?
 sed 's/^/    /' "$RENDER_TMP/gstart.log" "$RENDER_TMP/gdb.log" 2>/dev/null
 if [ $rc -eq 0 ] && grep -q 'Thread 1.3' "$RENDER_TMP/gdb.log" &&
-    run grender render --board g --quiet scenes/demo.scn --size 32x24 -o "$RENDER_TMP/g.ppm"; then
+    render_run grender render --board g --quiet scenes/demo.scn --size 32x24 -o "$RENDER_TMP/g.ppm"; then
     echo "PASS board_owner_gdb_attach"
 else
     echo "FAIL board_owner_gdb_attach: gdb-multiarch did not attach through $sock (3 threads), or the board did not come up after it detached (start exit $rc)"
 fi
-run gstop board stop g
-if ! run gport board start --name g2 --ncs 1 --gdb 1234 --timeout 2 &&
+render_run gstop board stop g
+if ! render_run gport board start --name g2 --ncs 1 --gdb 1234 --timeout 2 &&
     grep -q -- '--gdb takes no port' "$RENDER_TMP/gport.log" &&
-    ! run gport2 board start --name g2 --ncs 1 --gdb=1234 --timeout 2 &&
+    ! render_run gport2 board start --name g2 --ncs 1 --gdb=1234 --timeout 2 &&
     grep -q -- '--gdb takes no port' "$RENDER_TMP/gport2.log"; then
     echo "PASS board_owner_gdb_port_refused"
 else
     echo "FAIL board_owner_gdb_port_refused: --gdb 1234 / --gdb=1234 were not refused with '--gdb takes no port'"
 fi
-run gport3 board stop g2
+render_run gport3 board stop g2
 
 # ---- a board that dies during render --board
-run dstart board start --name d --ncs 1 --quiet
-pid=$(pid_of d)
+render_run dstart board start --name d --ncs 1 --quiet
+pid=$(render_board_pid d)
 mkdir -p "$RENDER_TMP/dout"
 "$LINKS1" render --board d --quiet scenes/demo.scn --size 320x240 -o "$RENDER_TMP/dout/d.png" \
     >"$RENDER_TMP/drender.log" 2>&1 &
@@ -79,14 +71,14 @@ if [ $rc -eq 1 ] && grep -q 'board d' "$RENDER_TMP/drender.log" && [ -z "$left" 
 else
     echo "FAIL board_owner_dead_board: exit $rc (want 1), no message naming board d, or left: $left"
 fi
-run dlist board list
+render_run dlist board list
 
 # ---- render -o OUT: no write through a planted link, nothing left on error
-run ostart board start --name o --ncs 1 --quiet
+render_run ostart board start --name o --ncs 1 --quiet
 mkdir -p "$RENDER_TMP/out"
 echo "the victim's" >"$RENDER_TMP/victim.txt"
 ln -s "$RENDER_TMP/victim.txt" "$RENDER_TMP/out/o.ppm.part"
-run orender render --board o --quiet scenes/demo.scn --size 32x24 -o "$RENDER_TMP/out/o.ppm"
+render_run orender render --board o --quiet scenes/demo.scn --size 32x24 -o "$RENDER_TMP/out/o.ppm"
 ref=$(render_ref scenes/demo.scn float 32x24)
 if [ "$(cat "$RENDER_TMP/victim.txt")" = "the victim's" ] && cmp -s "$ref" "$RENDER_TMP/out/o.ppm"; then
     echo "PASS board_owner_out_link"
@@ -95,7 +87,7 @@ else
 fi
 rm -f "$RENDER_TMP/out/o.ppm.part"
 mkdir -p "$RENDER_TMP/out/isdir.ppm"
-run oerror render --board o --quiet scenes/demo.scn --size 32x24 -o "$RENDER_TMP/out/isdir.ppm"
+render_run oerror render --board o --quiet scenes/demo.scn --size 32x24 -o "$RENDER_TMP/out/isdir.ppm"
 rc=$?
 left=$(ls -A "$RENDER_TMP/out" | grep -v '^o.ppm$' | grep -v '^isdir.ppm$')
 if [ $rc -ne 0 ] && [ -z "$left" ] && [ -z "$(ls -A "$RENDER_TMP/out/isdir.ppm")" ]; then
@@ -103,4 +95,4 @@ if [ $rc -ne 0 ] && [ -z "$left" ] && [ -z "$(ls -A "$RENDER_TMP/out/isdir.ppm")
 else
     echo "FAIL board_owner_out_error: exit $rc, or left behind: $left"
 fi
-run ostop board stop o
+render_run ostop board stop o

@@ -124,3 +124,17 @@ render_damaged_scene() {
     fi
     printf '\xff\xff\xff\x7f' | dd of="$2" bs=1 seek=20 conv=notrunc status=none
 }
+
+# render_run NAME ARGS...: runs links1 ARGS, its output in $RENDER_TMP/NAME.log
+# (and echoed); returns its exit status (named-board tests).
+render_run() {
+    local name=$1; shift
+    timeout "$BOARD_RUN_LIMIT_S" "$LINKS1" "$@" >"$RENDER_TMP/$name.log" 2>&1
+    local rc=$?
+    echo "--- links1 $* (exit $rc)"; sed 's/^/    /' "$RENDER_TMP/$name.log"
+    return $rc
+}
+
+# render_board_pid NAME: the QEMU pid in named board NAME's record
+# ($LINKS1_BOARDS/NAME/board).
+render_board_pid() { awk '/^pid/ {print $2}' "$LINKS1_BOARDS/$1/board" 2>/dev/null; }

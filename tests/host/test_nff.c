@@ -19,6 +19,7 @@
 #include <unistd.h>
 
 #include "host-tools/scene/nff_read.h"
+#include "host-tools/scene/scene_import.h"
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_file.h"
 #include "scenes/spd/spd.h"
@@ -269,7 +270,7 @@ static void test_scene_compiles_as_official(void)
             struct sd_scene gen, text, off;
             CHECK(nff_read_text("gen", nff, &gen, NULL, err, sizeof err) == 0);
             FILE *m = open_memstream(&scn, &scn_len);
-            CHECK(m && spd_write_scn(m, &gen, "test") == 0);
+            CHECK(m && sd_write_text_titled(&gen, NULL, "test", m) == 0);
             if (m)
                 fclose(m);
             int rc = sd_parse_text("gen.scn", scn, &text, err, sizeof err);
