@@ -84,10 +84,8 @@ int cmd_board(int argc, char **argv)
         return cmd_board_start(argc - 1, argv + 1);
     if (strcmp(argv[1], "stop") == 0 && argc <= 3)
         return board_stop_named(argc == 3 ? argv[2] : BOARD_DEFAULT_NAME) == 0 ? 0 : 1;
-    if (strcmp(argv[1], "list") == 0 && argc == 2) {
-        board_list_named();
-        return 0;
-    }
+    if (strcmp(argv[1], "list") == 0 && argc == 2)
+        return board_list_named() < 0 ? 1 : 0;
     fprintf(stderr, "links1 board: unknown subcommand or extra arguments: '%s'\n", argv[1]);
     cmd_board_usage(stderr);
     return 2;

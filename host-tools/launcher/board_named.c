@@ -434,11 +434,13 @@ int board_list_named(void)
         printf("links1: no named boards (no state directory yet)\n");
         return 0;
     }
-    DIR *d = base_fd >= 0 ? fdopendir(base_fd) : NULL;
+    if (base_fd < 0)
+        return -1; /* refused, and said why */
+    DIR *d = fdopendir(base_fd);
     if (!d) {
-        if (base_fd >= 0)
-            close(base_fd);
-        return 0;
+        fprintf(stderr, "links1: %s: %s\n", base, strerror(errno));
+        close(base_fd);
+        return -1;
     }
     int running = 0;
     for (struct dirent *e; (e = readdir(d)) != NULL;)

@@ -136,7 +136,8 @@ int board_connect(struct board *b, const struct board_opts *o, const char *name)
 /* Shuts the named board down and removes its state.  0, or -1. */
 int board_stop_named(const char *name);
 /* Prints every named board: running (pid, cores) or stale (then removed).
- * Returns the number running. */
+ * Returns the number running, or -1 after printing why the state
+ * directory was refused (another's, open to others, a link). */
 int board_list_named(void);
 /* board_start_named's steps (qemu.c starts the process between them):
  * the state directory made (a stale one removed first) with its lock

@@ -320,6 +320,9 @@ static void named_base_open_to_others_refused(void)
     CHECK(pid < 0 && strstr(err, "mode 0750"));
     if (pid > 0)
         kill(pid, SIGKILL);
+    /* board list refuses it too, and says so in its status */
+    CHECK_EQ_INT(list(err, sizeof err), -1);
+    CHECK(strstr(err, "mode 0750") != NULL);
 }
 
 static void named_base_symlink_refused(void)
