@@ -208,6 +208,13 @@ static void test_static_replay_is_exact(void)
                 CHECK_EQ_INT(got[n], want[n]);
         }
         CHECK_EQ_INT(replay_check_legal(&t, &c, &r, err, sizeof err), 0);
+        /* an answer crosses its line in line_us plus byte_us for each of
+         * the board's answer's bytes (proto/unitmsg.h), and the NC starts
+         * on it at once */
+        double line = c.line_us + c.byte_us * (LINEMSG_HEADER_SIZE + MSG_NC_AREA_SIZE);
+        for (uint32_t i = 0; i < r.nareas; i++)
+            if (!r.areas[i].in_broadcast)
+                CHECK_NEAR(r.areas[i].start - r.areas[i].serve_end, line, 1e-6);
         replay_free(&r);
     }
     trace_free(&t);
