@@ -85,7 +85,12 @@ render_blob_status_t render_blob_load(const uint8_t *compiled, size_t len, void 
                   "blob block NULL or not aligned to RENDER_RELOCATE_ALIGN");
         return err->status;
     }
-    if (blob_bound(compiled, len, &render_layout_native, 1, &need, err) != RENDER_BLOB_OK)
+    /* The bound without the CRC (scene_load checks it next); a refusal
+     * asks again with the CRC, so a damaged scene is refused as
+     * render_blob_bytes refuses it (the CRC before the section table). */
+    if ((blob_bound(compiled, len, &render_layout_native, 1, &need, err) != RENDER_BLOB_OK ||
+         need > size) &&
+        render_blob_bytes(compiled, len, &need, err) != RENDER_BLOB_OK)
         return err->status;
     if (need > size) {
         blob_fail(err, RENDER_BLOB_ERR_TOO_BIG,
