@@ -1,5 +1,4 @@
-/* fixed/num.c: the num_t operations too long to inline (fixed point), and
- * num_len3 for every build. */
+/* fixed/num.c: the num_t operations too long to inline (fixed point). */
 #include "fixed/num.h"
 
 #include "fixed/isqrt.h"
@@ -110,9 +109,5 @@ num_t num_from_f32_bits(uint32_t bits)
         return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
     return negative ? -(num_t)raw : (num_t)raw;
 }
-
-#else
-
-num_t num_len3(num_t x, num_t y, num_t z) { return num_sqrt(num_dot3(x, y, z, x, y, z)); }
 
 #endif

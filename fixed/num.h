@@ -253,7 +253,8 @@ static inline num_t num_from_ratio(int32_t num, int32_t den) { return (num_t)num
 static inline num_t num_from_f32_bits(uint32_t bits)
 {
     float f;
-    memcpy(&f, &bits, sizeof f);
+    __builtin_memcpy(&f, &bits, sizeof f); /* a bit cast: the firmware's
+                                             -ffreestanding would call memcpy */
     return (num_t)f;
 }
 
@@ -302,7 +303,7 @@ static inline num_t num_scale2(num_t a, int e)
 static inline num_t num_from_float(float f)
 {
     uint32_t bits;
-    memcpy(&bits, &f, sizeof bits);
+    __builtin_memcpy(&bits, &f, sizeof bits); /* a bit cast, not a call */
     return num_from_f32_bits(bits);
 }
 
@@ -341,7 +342,15 @@ static inline num_t num_pow_int(num_t a, uint32_t n)
 }
 
 /* |(x, y, z)|: fixed uses one 64-bit sum of squares, so it does not overflow
- * before the length itself does. */
+ * before the length itself does; float and double are inline (every
+ * normalize of the DM's preparation and the NCs' shading uses it). */
+#if defined(LINKS1_NUM_FIXED)
 num_t num_len3(num_t x, num_t y, num_t z);
+#else
+static inline num_t num_len3(num_t x, num_t y, num_t z)
+{
+    return num_sqrt(num_dot3(x, y, z, x, y, z));
+}
+#endif
 
 #endif

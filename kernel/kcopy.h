@@ -1,6 +1,7 @@
 /* kcopy.h: memory copy a word at a time.  The board's C library copies
- * byte by byte (four instructions a byte); the RC copies every prepared
- * frame into the broadcast block and every line message through a ring.
+ * byte by byte (four instructions a byte); every line message goes through
+ * a ring.  (Blocks that grow with the scene, the prepared frame the RC
+ * forwards, go eight words a step: render/words.h.)
  * No hardware access: the host tests build it. */
 #ifndef LINKS1_KERNEL_KCOPY_H
 #define LINKS1_KERNEL_KCOPY_H

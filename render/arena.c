@@ -1,7 +1,7 @@
 /* render/arena.c: bump allocator (see arena.h). */
 #include "render/arena.h"
 
-#include <string.h>
+#include "render/words.h"
 
 void arena_init(arena_t *a, void *memory, size_t size)
 {
@@ -33,7 +33,7 @@ void *arena_alloc(arena_t *a, size_t size, size_t align)
     a->used += pad + size;
     if (a->used > a->high_water)
         a->high_water = a->used;
-    memset(p, 0, size);
+    words_zero(p, size); /* a frame's arrays grow with the scene: not byte by byte */
     return p;
 }
 

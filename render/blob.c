@@ -7,6 +7,7 @@
 #include "proto/textfmt.h"
 #include "render/precision.h"
 #include "render/scene_load.h"
+#include "render/words.h"
 
 /* ------------------------------------------------------------ messages */
 
@@ -41,16 +42,21 @@ render_blob_status_t render_blob_bytes(const uint8_t *compiled, size_t len, size
     return render_blob_bytes_layout(compiled, len, &render_layout_native, bytes, err);
 }
 
-render_blob_status_t render_blob_bytes_layout(const uint8_t *compiled, size_t len,
-                                              const render_layout_t *layout, size_t *bytes,
-                                              render_blob_error_t *err)
+/* render_blob_bytes_layout; crc_later: scene_load follows on the same
+ * bytes and checks the CRC (render_blob_load). */
+static render_blob_status_t blob_bound(const uint8_t *compiled, size_t len,
+                                       const render_layout_t *layout, int crc_later,
+                                       size_t *bytes, render_blob_error_t *err)
 {
     scene_t shape;
     uint32_t texel_bytes;
     scene_load_error_t lerr;
     *bytes = 0;
     blob_ok(err);
-    if (scene_load_shape(compiled, len, &shape, &texel_bytes, &lerr) != SCENE_LOAD_OK) {
+    scene_load_status_t st =
+        crc_later ? scene_load_shape_before_load(compiled, len, &shape, &texel_bytes, &lerr)
+                  : scene_load_shape(compiled, len, &shape, &texel_bytes, &lerr);
+    if (st != SCENE_LOAD_OK) {
         blob_fail(err, RENDER_BLOB_ERR_LOAD, "scene refused: %s", lerr.message);
         return err->status;
     }
@@ -61,9 +67,16 @@ render_blob_status_t render_blob_bytes_layout(const uint8_t *compiled, size_t le
     return RENDER_BLOB_OK;
 }
 
-render_blob_status_t render_blob_build(const uint8_t *compiled, size_t len, uint32_t frame_index,
-                                       void *block, size_t size, const char *limit_name,
-                                       render_blob_t **out, render_blob_error_t *err)
+render_blob_status_t render_blob_bytes_layout(const uint8_t *compiled, size_t len,
+                                              const render_layout_t *layout, size_t *bytes,
+                                              render_blob_error_t *err)
+{
+    return blob_bound(compiled, len, layout, 0, bytes, err);
+}
+
+render_blob_status_t render_blob_load(const uint8_t *compiled, size_t len, void *block,
+                                      size_t size, const char *limit_name, render_blob_t **out,
+                                      render_blob_error_t *err)
 {
     size_t need;
     *out = NULL;
@@ -72,7 +85,12 @@ render_blob_status_t render_blob_build(const uint8_t *compiled, size_t len, uint
                   "blob block NULL or not aligned to RENDER_RELOCATE_ALIGN");
         return err->status;
     }
-    if (render_blob_bytes(compiled, len, &need, err) != RENDER_BLOB_OK)
+    /* The bound without the CRC (scene_load checks it next); a refusal
+     * asks again with the CRC, so a damaged scene is refused as
+     * render_blob_bytes refuses it (the CRC before the section table). */
+    if ((blob_bound(compiled, len, &render_layout_native, 1, &need, err) != RENDER_BLOB_OK ||
+         need > size) &&
+        render_blob_bytes(compiled, len, &need, err) != RENDER_BLOB_OK)
         return err->status;
     if (need > size) {
         blob_fail(err, RENDER_BLOB_ERR_TOO_BIG,
@@ -89,6 +107,24 @@ render_blob_status_t render_blob_build(const uint8_t *compiled, size_t len, uint
                   blob ? lerr.message : "no room for the blob header");
         return err->status;
     }
+    blob->magic = RENDER_BLOB_MAGIC;
+    blob->home = (uintptr_t)block;
+    blob->scene_bytes = blob->bytes = blob->peak = arena.used;
+    blob->bound = need;
+    blob->frame = NULL;
+    *out = blob;
+    return RENDER_BLOB_OK;
+}
+
+render_blob_status_t render_blob_prepare(render_blob_t *blob, uint32_t frame_index, size_t size,
+                                         render_blob_error_t *err)
+{
+    blob_ok(err);
+    /* the arena as render_blob_load left it: the scene in use, the rest free */
+    arena_t arena;
+    arena_init(&arena, blob, size);
+    arena.used = arena.high_water = blob->scene_bytes;
+    blob->frame = NULL;
     render_frame_t *frame;
     render_status_t st = render_prepare(&blob->scene, frame_index, &arena, &frame);
     if (st != RENDER_OK) {
@@ -97,12 +133,22 @@ render_blob_status_t render_blob_build(const uint8_t *compiled, size_t len, uint
         blob_fail(err, RENDER_BLOB_ERR_PREPARE, "frame %lu: %s", (unsigned long)frame_index, why);
         return err->status;
     }
-    blob->magic = RENDER_BLOB_MAGIC;
     blob->frame_index = frame_index;
-    blob->home = (uintptr_t)block;
     blob->bytes = arena.used;
     blob->peak = arena.high_water;
     blob->frame = frame;
+    return RENDER_BLOB_OK;
+}
+
+render_blob_status_t render_blob_build(const uint8_t *compiled, size_t len, uint32_t frame_index,
+                                       void *block, size_t size, const char *limit_name,
+                                       render_blob_t **out, render_blob_error_t *err)
+{
+    render_blob_t *blob;
+    *out = NULL;
+    if (render_blob_load(compiled, len, block, size, limit_name, &blob, err) != RENDER_BLOB_OK ||
+        render_blob_prepare(blob, frame_index, size, err) != RENDER_BLOB_OK)
+        return err->status;
     *out = blob;
     return RENDER_BLOB_OK;
 }
@@ -149,6 +195,19 @@ render_blob_status_t render_blob_relocate(void *block, size_t size, render_blob_
     blob->home = (uintptr_t)block;
     *out = blob;
     return RENDER_BLOB_OK;
+}
+
+render_blob_status_t render_blob_copy(void *block, size_t size, const render_blob_t *src,
+                                      render_blob_t **out, render_blob_error_t *err)
+{
+    *out = NULL;
+    if (!blob_aligned(block) || src->bytes > size) {
+        blob_fail(err, RENDER_BLOB_ERR_BLOCK, "the blob's %zu bytes do not fit the block of %zu, "
+                  "or the block is not aligned to RENDER_RELOCATE_ALIGN", src->bytes, size);
+        return err->status;
+    }
+    words_copy(block, src, src->bytes);
+    return render_blob_relocate(block, size, out, err);
 }
 
 render_blob_status_t render_blob_open(const void *block, size_t size, const render_blob_t **out,

@@ -3,12 +3,15 @@
  * the IMSU.
  *
  *   DM: render_blob_bytes() to refuse a scene too big for the block, then
- *       render_blob_build() into its IMSU block (scene_load + render_prepare
- *       into one arena at the block's start); the IMSU swap hands the block
- *       to the RC at the same address.
- *   RC: copies blob->bytes bytes into the broadcast block, then
- *       render_blob_relocate() there once (every pointer moved by the
- *       distance between the blocks).
+ *       render_blob_load() into each IMSU block once per scene (the loader's
+ *       checks, the scene's arrays at the block's start) and
+ *       render_blob_prepare() every frame (render_prepare into the rest of
+ *       the block: the per-frame work grows with the triangles only by what
+ *       preparing them needs); render_blob_build() is both at once.  The
+ *       IMSU swap hands the block to the RC at the same address.
+ *   RC: render_blob_copy() into the broadcast block: blob->bytes bytes,
+ *       eight words a step (render/words.h), then every pointer moved by
+ *       the distance between the blocks (render_blob_relocate).
  *   NC: render_blob_open() on the broadcast block (read-only), then
  *       render_ctx_init(&ctx, blob->frame) and render_area() (render/clip.h).
  *
@@ -37,6 +40,10 @@ typedef struct {
     uintptr_t home;        /* address of the block the pointers are valid at */
     size_t bytes;          /* bytes in use from the block's start: what a
                               copy must take */
+    size_t scene_bytes;    /* of those, the header and the loaded scene:
+                              where each frame's preparation starts */
+    size_t bound;          /* render_blob_bytes of the scene: what any frame
+                              of it needs at most */
     size_t peak;           /* most bytes of the block the build used at
                               once (scratch included): the DM's high-water
                               mark for this frame */
@@ -82,6 +89,24 @@ render_blob_status_t render_blob_bytes_layout(const uint8_t *compiled, size_t le
 render_blob_status_t render_blob_build(const uint8_t *compiled, size_t len, uint32_t frame_index,
                                        void *block, size_t size, const char *limit_name,
                                        render_blob_t **out, render_blob_error_t *err);
+
+/* render_blob_build in two halves, for a block that keeps its scene from
+ * frame to frame.  render_blob_load: the checks and the size bound of
+ * render_blob_build, then the scene alone (no frame: blob->frame NULL).
+ * render_blob_prepare: frame_index into the rest of the block (size bytes
+ * from the blob's start, as given to render_blob_load), replacing the frame
+ * prepared there before. */
+render_blob_status_t render_blob_load(const uint8_t *compiled, size_t len, void *block,
+                                      size_t size, const char *limit_name, render_blob_t **out,
+                                      render_blob_error_t *err);
+render_blob_status_t render_blob_prepare(render_blob_t *blob, uint32_t frame_index, size_t size,
+                                         render_blob_error_t *err);
+
+/* The RC's forwarding: the blob at src (src->bytes bytes, at most size)
+ * copied to block, eight words a step, and relocated there.  Leaves the
+ * copy as render_blob_relocate leaves it on failure. */
+render_blob_status_t render_blob_copy(void *block, size_t size, const render_blob_t *src,
+                                      render_blob_t **out, render_blob_error_t *err);
 
 /* After a byte copy of a blob (its first blob->bytes bytes) to block:
  * moves every pointer from the address it was built at (blob->home) to

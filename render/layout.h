@@ -33,7 +33,7 @@ typedef struct {
 } render_layout_t;
 
 /* The board's record sizes, in the order of render_layout_t. */
-#define RENDER_BOARD_BLOB 172
+#define RENDER_BOARD_BLOB 180
 #define RENDER_BOARD_LIGHT 48
 #define RENDER_BOARD_MATERIAL 44
 #define RENDER_BOARD_MAP 24

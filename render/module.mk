@@ -1,9 +1,10 @@
 # render/: the ray tracer, built for every arithmetic; it knows nothing of
 # cores, drivers or messages.
-SHARED_SRCS += render/arena.c render/xform.c render/prim.c render/prepare.c \
+SHARED_SRCS += render/arena.c render/words.c render/xform.c render/prim.c render/prepare.c \
 	render/shade.c render/maps.c render/trace.c render/precision.c
-# The arena knows no num_t: one host build for every arithmetic.
-ARITH_FREE_SRCS += render/arena.c
+# The arena and the word loops know no num_t: one host build for every
+# arithmetic.
+ARITH_FREE_SRCS += render/arena.c render/words.c
 
 # Renderer tests, once per arithmetic.
 HOST_TESTS += test_prim_double test_prim_float test_prim_fixed

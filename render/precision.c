@@ -178,9 +178,21 @@ render_status_t precision_check(render_frame_t *f)
     num_t lost_tol = PRECISION_LOST_TOL(f->scene), acne_tol = PRECISION_ACNE_TOL(f->scene);
     for (uint32_t i = 0; i < f->prim_count; i++) {
         render_prim_t *p = &f->prims[i];
+        if (p->kind == SCENE_PRIM_TRIANGLE) {
+            /* no to_local map, and its hit error is left out: two
+             * triangles hit at one distance are most often a mesh's faces
+             * meeting at an edge.  So none of the estimates below (the DM
+             * would make them for every triangle of every frame). */
+            p->hit_error = NUM_ZERO;
+            p->imprecise = 0;
+            p->scale = NUM_ZERO;
+            precision_triangle_edge_error(p, extent);
+            p->uv_error = precision_triangle_uv_error(p);
+            p->curvature = precision_triangle_curvature(p);
+            continue;
+        }
         num_t least, local, rows[2], worst = precision_hit_error(p, extent, &least, &local, rows);
-        /* render_prepare left the cluster map's error in hit_error (0 for
-         * a triangle, whose vertices are mapped forward) */
+        /* render_prepare left the cluster map's error in hit_error */
         num_t map = p->hit_error;
         worst = num_add(worst, map);
         /* the surface moved by the map, in local units: a consistent move,
@@ -188,12 +200,9 @@ render_status_t precision_check(render_frame_t *f)
         local = num_add(local, num_mul(map, rows[0]));
         if (num_is_sat(worst) || num_is_sat(local))
             worst = local = NUM_FAR;
-        /* a triangle's is left out: two triangles hit at one distance are
-         * most often a mesh's faces meeting at an edge */
-        p->hit_error = p->kind == SCENE_PRIM_TRIANGLE ? NUM_ZERO : worst;
-        p->imprecise = p->kind != SCENE_PRIM_TRIANGLE &&
-                       (num_gt(worst, lost_tol) || num_gt(least, acne_tol));
-        p->scale = p->kind == SCENE_PRIM_TRIANGLE ? NUM_ZERO : rows[0];
+        p->hit_error = worst;
+        p->imprecise = num_gt(worst, lost_tol) || num_gt(least, acne_tol);
+        p->scale = rows[0];
         /* map coordinates (render/prim.c): a box face's are (q + 1) / 2 of
          * a local coordinate q, an ellipsoid's a pseudo-angle / 4 and
          * (n.y + 1) / 2 of its unit sphere's point, a density sphere's come
@@ -202,11 +211,6 @@ render_status_t precision_check(render_frame_t *f)
          * its longest axis, is a / c^2 for radii a >= c (rows 1/c, 1/a) */
         p->curvature = NUM_ZERO;
         switch (p->kind) {
-        case SCENE_PRIM_TRIANGLE:
-            precision_triangle_edge_error(p, extent);
-            p->uv_error = precision_triangle_uv_error(p);
-            p->curvature = precision_triangle_curvature(p);
-            break;
         case SCENE_PRIM_BOX:
             p->uv_error = num_mul(local, NUM_HALF);
             p->edge_error[0] = local;
@@ -230,7 +234,7 @@ render_status_t precision_check(render_frame_t *f)
 }
 
 /* The largest |coordinate| of a box. */
-static num_t precision_box_reach(const aabb_t *b)
+static inline num_t precision_box_reach(const aabb_t *b)
 {
     num_t r = NUM_ZERO;
     for (int axis = 0; axis < 3; axis++)
@@ -241,8 +245,9 @@ static num_t precision_box_reach(const aabb_t *b)
 /* Records prim i in f->detail_* when size, at a place whose largest
  * |coordinate| is reach, is under RENDER_MIN_DETAIL_STEPS steps there
  * (fixed: one step anywhere; float, double: 2^-23, 2^-52 of reach).  A
- * saturated value is left to the precision flag. */
-static void precision_detail_one(render_frame_t *f, uint32_t i, num_t size, num_t reach)
+ * saturated value is left to the precision flag.  Inline, as the box's
+ * reach: the DM runs both for every primitive of every frame. */
+static inline void precision_detail_one(render_frame_t *f, uint32_t i, num_t size, num_t reach)
 {
     num_t step = num_ulp(reach);
     if (f->detail_prim != RENDER_NO_PRIM || num_is_sat(size) || num_is_sat(reach) ||

@@ -37,7 +37,7 @@ const char *render_status_name(render_status_t status)
     return "unknown render status";
 }
 
-static aabb_t prep_aabb_empty(void)
+static inline aabb_t prep_aabb_empty(void)
 {
     aabb_t b;
     b.lo = vec3_make(NUM_ONE, NUM_ONE, NUM_ONE);
@@ -47,7 +47,8 @@ static aabb_t prep_aabb_empty(void)
 
 static int prep_aabb_is_empty(const aabb_t *b) { return num_gt(b->lo.x, b->hi.x); }
 
-static void prep_aabb_add_box(aabb_t *b, const aabb_t *o)
+/* inline: the DM grows boxes four times a triangle, every frame */
+static inline void prep_aabb_add_box(aabb_t *b, const aabb_t *o)
 {
     if (prep_aabb_is_empty(o))
         return;
@@ -158,11 +159,31 @@ static render_status_t prep_camera(const scene_t *s, xform_t *world_to_eye, xfor
     return RENDER_OK;
 }
 
-/* No keys and the identity matrix: the cluster only groups. */
+/* The identity map, compared word by word below. */
+static const xform_t prep_identity = {{{NUM_ONE, NUM_ZERO, NUM_ZERO, NUM_ZERO},
+                                       {NUM_ZERO, NUM_ONE, NUM_ZERO, NUM_ZERO},
+                                       {NUM_ZERO, NUM_ZERO, NUM_ONE, NUM_ZERO}}};
+
+/* No keys and the identity matrix: the cluster only groups.  Asked of
+ * every cluster every frame: the identity's exact bits answer at integer
+ * compares; a matrix with other bits still may be the identity (-0 for 0)
+ * and is compared as numbers. */
 static int prep_is_plain(const scene_cluster_t *c)
 {
     if (c->key_count != 0)
         return 0;
+    const uint8_t *a = (const uint8_t *)&c->local, *id = (const uint8_t *)&prep_identity;
+    size_t at = 0;
+#pragma GCC unroll 24 /* every word against an immediate: no loop, no loads of the identity */
+    for (; at < sizeof prep_identity; at += sizeof(uint32_t)) {
+        uint32_t wa, wi;
+        __builtin_memcpy(&wa, a + at, sizeof wa);
+        __builtin_memcpy(&wi, id + at, sizeof wi);
+        if (wa != wi)
+            break;
+    }
+    if (at == sizeof prep_identity)
+        return 1;
     for (int r = 0; r < 3; r++)
         for (int k = 0; k < 4; k++)
             if (!num_eq(c->local.m[r][k], r == k ? NUM_ONE : NUM_ZERO))
@@ -221,12 +242,13 @@ static render_status_t prep_check(const scene_t *s)
     return RENDER_OK;
 }
 
-/* Eye-space form of one primitive; to_eye/from_eye map its cluster. */
+/* Eye-space form of one primitive; to_eye/from_eye map its cluster; pad
+ * grows its box (RENDER_BOUNDS_PAD_VALUE scaled to the scene: the caller
+ * scales it once a frame, not once a primitive). */
 static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame_t *f, const xform_t *to_eye,
-                      const xform_t *from_eye, render_prim_t *p)
+                      const xform_t *from_eye, num_t pad, render_prim_t *p)
 {
     num_t lin[3][3];
-    num_t pad = scene_tolerance(f->scene, NUM_C(RENDER_BOUNDS_PAD_VALUE));
     p->kind = sp->kind;
     p->normals = NULL; /* flat, unless a smooth triangle below */
     p->material = sp->material;
@@ -234,14 +256,20 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
     switch (sp->kind) {
     case SCENE_PRIM_TRIANGLE: {
         vec3_t v[3];
-        aabb_t b = prep_aabb_empty();
         for (int k = 0; k < 3; k++) {
             v[k] = xform_point(to_eye, sp->shape.triangle.v[k]);
-            aabb_t one = prep_aabb_around(v[k], vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO), pad);
-            prep_aabb_add_box(&b, &one);
             p->tex_u[k] = sp->shape.triangle.tex_u[k];
             p->tex_v[k] = sp->shape.triangle.tex_v[k];
         }
+        /* The vertices' box grown by the pad once (the DM bounds every
+         * triangle of every frame): rounding is monotone, so min(v) - pad
+         * is the least of the three v - pad, bit for bit. */
+        vec3_t lo = v[0], hi = v[0];
+        for (int k = 1; k < 3; k++) {
+            lo = vec3_make(num_min(lo.x, v[k].x), num_min(lo.y, v[k].y), num_min(lo.z, v[k].z));
+            hi = vec3_make(num_max(hi.x, v[k].x), num_max(hi.y, v[k].y), num_max(hi.z, v[k].z));
+        }
+        aabb_t b = {vec3_sub(lo, vec3_make(pad, pad, pad)), vec3_add(hi, vec3_make(pad, pad, pad))};
         p->v0 = v[0];
         p->e1 = vec3_sub(v[1], v[0]);
         p->e2 = vec3_sub(v[2], v[0]);
@@ -327,11 +355,15 @@ static void prep_screen_rect(const render_frame_t *f, render_cluster_t *c)
     }
     if (num_lt(b->lo.z, scene_tolerance(f->scene, NUM_C(RENDER_NEAR_PLANE_VALUE))))
         return; /* reaches behind the eye: whole screen */
+    /* The eight corners' columns and rows: a column depends on a corner's
+     * x and z only, a row on its y and z, so the four (x, z) and four (y, z)
+     * pairs give the same extremes as the eight corners with half the
+     * divisions (the DM projects every cluster of every frame). */
     num_t x0 = NUM_ZERO, x1 = NUM_ZERO, y0 = NUM_ZERO, y1 = NUM_ZERO;
-    for (int k = 0; k < 8; k++) {
+    for (int k = 0; k < 4; k++) {
         num_t x = (k & 1) ? b->hi.x : b->lo.x;
-        num_t y = (k & 2) ? b->hi.y : b->lo.y;
-        num_t z = (k & 4) ? b->hi.z : b->lo.z;
+        num_t y = (k & 1) ? b->hi.y : b->lo.y;
+        num_t z = (k & 2) ? b->hi.z : b->lo.z;
         num_t px = prep_project(x, z, f->screen_half_w, f->width);
         /* image rows grow downwards while eye y grows upwards */
         num_t py = num_sub(num_from_int(f->height - 1), prep_project(y, z, f->screen_half_h, f->height));
@@ -435,8 +467,8 @@ size_t render_prepare_bytes_layout(const scene_t *s, const render_layout_t *lay)
     size_t n = lay->frame + lay->frame_cluster * (size_t)s->cluster_count +
                sizeof(uint32_t) * (size_t)s->cluster_count + lay->frame_prim * prims +
                sizeof(uint32_t) * prims + lay->num * comps + lay->normals * normals;
-    size_t scratch = (2 * lay->xform + 1) * (size_t)s->cluster_count;
-    return n + scratch + 13 * ARENA_MAX_ALIGN; /* 10 allocations, each padded at most that */
+    size_t scratch = (2 * lay->xform + 1 + sizeof(uint32_t)) * (size_t)s->cluster_count;
+    return n + scratch + 14 * ARENA_MAX_ALIGN; /* 11 allocations, each padded at most that */
 }
 
 size_t render_prepare_bytes(const scene_t *s)
@@ -485,7 +517,10 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     xform_t *to_eye = ARENA_NEW_ARRAY(arena, xform_t, s->cluster_count);
     xform_t *from_eye = ARENA_NEW_ARRAY(arena, xform_t, s->cluster_count);
     uint8_t *depth = ARENA_NEW_ARRAY(arena, uint8_t, s->cluster_count);
-    if (!to_eye || !from_eye || !depth)
+    /* the cluster whose maps cluster i uses: itself, or for a plain
+     * cluster its parent's (the DM copies no maps for those) */
+    uint32_t *maps_of = ARENA_NEW_ARRAY(arena, uint32_t, s->cluster_count);
+    if (!to_eye || !from_eye || !depth || !maps_of)
         return RENDER_ERR_ARENA;
 
     xform_t world_to_eye, eye_to_world;
@@ -503,8 +538,7 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
             depth[i] = (uint8_t)(depth[c->parent] + 1);
             if (depth[i] > RENDER_MAX_CLUSTER_DEPTH)
                 return RENDER_ERR_CLUSTER;
-            to_eye[i] = to_eye[c->parent];
-            from_eye[i] = from_eye[c->parent];
+            maps_of[i] = maps_of[c->parent]; /* no copy of the two maps */
             continue;
         }
         xform_t key = prep_key_xform(s, c, frame_index);
@@ -516,8 +550,9 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
             return st;
         xform_t to_parent = xform_compose(&key, &c->local);
         xform_t from_parent = xform_compose(&local_inv, &key_inv);
-        const xform_t *parent_to_eye = i == 0 ? &world_to_eye : &to_eye[c->parent];
-        const xform_t *eye_to_parent = i == 0 ? &eye_to_world : &from_eye[c->parent];
+        const xform_t *parent_to_eye = i == 0 ? &world_to_eye : &to_eye[maps_of[c->parent]];
+        const xform_t *eye_to_parent = i == 0 ? &eye_to_world : &from_eye[maps_of[c->parent]];
+        maps_of[i] = i;
         depth[i] = i == 0 ? 0 : (uint8_t)(depth[c->parent] + 1);
         if (depth[i] > RENDER_MAX_CLUSTER_DEPTH)
             return RENDER_ERR_CLUSTER;
@@ -527,16 +562,18 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
             f->precision_lost = 1;
     }
     f->detail_prim = RENDER_NO_PRIM;
+    num_t pad = scene_tolerance(s, NUM_C(RENDER_BOUNDS_PAD_VALUE));
     for (uint32_t i = 0; i < s->prim_count; i++) {
         const scene_prim_t *sp = &s->prims[i];
-        prep_prim(sp, i, f, &to_eye[sp->cluster], &from_eye[sp->cluster], &f->prims[i]);
+        uint32_t m = maps_of[sp->cluster];
+        prep_prim(sp, i, f, &to_eye[m], &from_eye[m], pad, &f->prims[i]);
         /* the error of the cluster's inverse map, for precision_check (a
          * triangle's vertices are mapped forward: none) */
         f->prims[i].hit_error = sp->kind == SCENE_PRIM_TRIANGLE ? NUM_ZERO :
-            precision_map_error(&to_eye[sp->cluster], &from_eye[sp->cluster], &f->prims[i].bounds);
+            precision_map_error(&to_eye[m], &from_eye[m], &f->prims[i].bounds);
         if (vec3_is_sat(f->prims[i].bounds.lo) || vec3_is_sat(f->prims[i].bounds.hi))
             f->precision_lost = 1;
-        precision_detail(f, i, &to_eye[sp->cluster]);
+        precision_detail(f, i, &to_eye[m]);
     }
     arena_release_to(arena, mark);
 

@@ -88,6 +88,16 @@ static void reloc_frame(reloc_t *r, render_frame_t *f, const scene_t *s)
         return;
     for (uint32_t i = 0; i < f->prim_count; i++) {
         render_prim_t *p = &prims[i];
+        /* the RC relocates every primitive of every frame: a triangle's
+         * only pointer is its normals (NULL when flat), one test, not three */
+        if (!p->components && !p->inv_radius2 && p->component_count == 0) {
+            if (p->normals) {
+                const scene_normals_t *nrm = RELOC(r, p->normals, 1, "frame.prims[].normals");
+                if (r->write && !r->bad)
+                    p->normals = nrm;
+            }
+            continue;
+        }
         const scene_density_component_t *comps =
             RELOC(r, p->components, p->component_count, "frame.prims[].components");
         const num_t *inv = RELOC(r, p->inv_radius2, p->component_count, "frame.prims[].inv_radius2");

@@ -30,6 +30,7 @@ struct load {
     struct load_section sec[SCN_SEC_COUNT + 1]; /* by kind */
     scene_load_error_t *err;
     int unit_exp; /* lengths enter num_t times 2^unit_exp (load_len) */
+    int crc_later; /* the header alone: scene_load checks the CRC next */
 };
 
 /* ------------------------------------------------------------ messages */
@@ -79,7 +80,10 @@ static scene_load_status_t load_range(struct load *L, const char *what, uint32_t
 static uint32_t load_bits_of(float f)
 {
     uint32_t u;
-    memcpy(&u, &f, sizeof u); /* a constant: folded, no float arithmetic */
+    /* a constant: folded, no float arithmetic; __builtin_ because the
+     * firmware's -ffreestanding makes a plain memcpy a call, made for
+     * every value checked */
+    __builtin_memcpy(&u, &f, sizeof u);
     return u;
 }
 
@@ -228,8 +232,8 @@ static scene_load_status_t load_header(struct load *L, size_t len)
                          "total size %ld cannot hold the section table of %ld entries",
                          (long)total, (long)nsec);
     L->total = total;
-    uint32_t crc = crc32(b + SCN_CRC_START, total - SCN_CRC_START);
-    if (crc != wire_get_u32(b + SCN_HDR_CRC))
+    if (!L->crc_later && crc32(b + SCN_CRC_START, total - SCN_CRC_START) !=
+                             wire_get_u32(b + SCN_HDR_CRC))
         return load_fail(L, SCENE_LOAD_ERR_CRC, "checksum mismatch: the scene is corrupt");
     /* The table: kinds known and unique, bodies inside the file, after the
      * table, aligned, not overlapping, size = count * record size. */
@@ -822,13 +826,15 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
     return SCENE_LOAD_OK;
 }
 
-scene_load_status_t scene_load_shape(const uint8_t *buf, size_t len, scene_t *shape,
-                                     uint32_t *texel_bytes, scene_load_error_t *err)
+static scene_load_status_t load_shape(const uint8_t *buf, size_t len, scene_t *shape,
+                                      uint32_t *texel_bytes, scene_load_error_t *err,
+                                      int crc_later)
 {
     struct load L;
     memset(&L, 0, sizeof L);
     L.buf = buf;
     L.err = err;
+    L.crc_later = crc_later;
     err->status = SCENE_LOAD_OK;
     err->message[0] = 0;
     memset(shape, 0, sizeof *shape);
@@ -844,6 +850,18 @@ scene_load_status_t scene_load_shape(const uint8_t *buf, size_t len, scene_t *sh
     shape->normals_count = L.sec[SCN_SEC_NORMALS].count;
     *texel_bytes = L.sec[SCN_SEC_TEXELS].count;
     return SCENE_LOAD_OK;
+}
+
+scene_load_status_t scene_load_shape(const uint8_t *buf, size_t len, scene_t *shape,
+                                     uint32_t *texel_bytes, scene_load_error_t *err)
+{
+    return load_shape(buf, len, shape, texel_bytes, err, 0);
+}
+
+scene_load_status_t scene_load_shape_before_load(const uint8_t *buf, size_t len, scene_t *shape,
+                                                 uint32_t *texel_bytes, scene_load_error_t *err)
+{
+    return load_shape(buf, len, shape, texel_bytes, err, 1);
 }
 
 /* Keep in step with the allocations of scene_load above: each array (at

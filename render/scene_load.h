@@ -54,6 +54,11 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena,
  * before loading: scene_load_bytes and render_prepare_bytes (render.h). */
 scene_load_status_t scene_load_shape(const uint8_t *buf, size_t len, scene_t *shape,
                                      uint32_t *texel_bytes, scene_load_error_t *err);
+/* The same without the body's CRC: for a caller that runs scene_load on
+ * the same bytes next, which checks it (render_blob_load).  The CRC costs a
+ * few instructions a byte of the scene: once per load is enough. */
+scene_load_status_t scene_load_shape_before_load(const uint8_t *buf, size_t len, scene_t *shape,
+                                                 uint32_t *texel_bytes, scene_load_error_t *err);
 
 /* Arena bytes scene_load needs at most for a scene of this shape; the
  * _layout form with another machine's record sizes (render/layout.h). */

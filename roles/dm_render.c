@@ -1,5 +1,5 @@
 /* dm_render.c: the DM's part of rendering (roles/gigs.h): it keeps the
- * compiled scene, prepares each frame (render_blob_build: hierarchy, world
+ * compiled scene, prepares each frame (render_blob_prepare: hierarchy, world
  * and eye coordinates, boxes, screen rectangles) in the IMSU block it
  * holds, swaps it to the RC, relays progress, and streams the frame memory
  * back to the host. */
@@ -39,7 +39,11 @@ static struct {
     uint32_t frames;
     uint32_t blob_bytes;  /* render_blob_bytes bound */
     int32_t prepared;     /* frame prepared in the block the DM holds, or -1 */
-    uint32_t prepare_ms;  /* what preparing it took */
+    uint32_t prepare_ms;  /* what preparing it took, wherever it was done
+                             (the scene's upload, or the frame before's
+                             render): told with the frame */
+    int loaded[2];        /* IMSU block A / B holds this scene, loaded: a
+                             frame is prepared there without loading again */
 } dm_scene;
 
 static const char dm_blob_limit_name[] = BOARD_IMSU_BLOCK_NAME;
@@ -75,23 +79,33 @@ static int dm_scene_chunk(void *ctx, const uint8_t *data, uint32_t n, uint64_t o
     return 0;
 }
 
-/* Builds frame into the block the DM holds; 0, or -1 with err filled. */
+/* Builds frame into the block the DM holds; 0, or -1 with err filled.
+ * The scene is loaded into a block once (its checks, its arrays); each
+ * frame after that is only the paper's preprocessing: eye coordinates,
+ * boxes, screen rectangles. */
 static int dm_prepare(uint32_t frame, render_blob_error_t *err)
 {
     struct imsu_pair *p = &imsu_dm_rc;
+    int held = imsu_held(p, UNITS_DM_CORE);
     uint8_t *block;
-    int r = imsu_write_begin(p, UNITS_DM_CORE, imsu_held(p, UNITS_DM_CORE), &block);
+    int r = imsu_write_begin(p, UNITS_DM_CORE, held, &block);
     if (r != IMSU_OK) {
         err->status = RENDER_BLOB_ERR_BLOCK;
         fmt_snprintf(err->message, sizeof err->message, "IMSU %s: %s", p->name,
                      imsu_strerror(r));
         return -1;
     }
+    render_blob_t *blob = (render_blob_t *)block;
+    render_blob_status_t st = RENDER_BLOB_OK;
+    if (!dm_scene.loaded[held]) {
+        st = render_blob_load(dm_scene.compiled, dm_scene.len, block, p->size,
+                              dm_blob_limit_name, &blob, err);
+        dm_scene.loaded[held] = st == RENDER_BLOB_OK;
+    }
     uint64_t t0 = ktime_now();
-    render_blob_t *blob;
     insn_mark_trace_span_begin(); /* the preprocessing of one frame (docs/trace.md) */
-    render_blob_status_t st = render_blob_build(dm_scene.compiled, dm_scene.len, frame, block,
-                                                p->size, dm_blob_limit_name, &blob, err);
+    if (st == RENDER_BLOB_OK)
+        st = render_blob_prepare(blob, frame, p->size, err);
     insn_mark_trace_span_end();
     imsu_write_end(p, UNITS_DM_CORE);
     dm_scene.prepared = st == RENDER_BLOB_OK ? (int32_t)frame : -1;
@@ -136,6 +150,7 @@ void dm_cmd_scene_load(uint16_t cmd)
     kmem_release_to(dm_scene.mark);
     dm_scene.len = 0;
     dm_scene.prepared = -1;
+    dm_scene.loaded[0] = dm_scene.loaded[1] = 0;
     struct dm_scene_rx rx = {NULL, 0, ""};
     size_t room = kmem_free();
     if (len == 0 || len > SCN_MAX_SIZE || len > room)
@@ -170,14 +185,9 @@ void dm_cmd_scene_load(uint16_t cmd)
         hostlink_error(cmd, LINK_ERR_BAD_ARGS, "scene refused: %s", rx.why);
         return;
     }
-    /* The size bound from the header alone, then a full build of frame 0:
-     * the loader's checks and render_prepare's. */
+    /* The size bound from the header, then a full build of frame 0: the
+     * loader's checks (the CRC once) and render_prepare's. */
     render_blob_error_t err;
-    size_t bound = 0;
-    if (render_blob_bytes(rx.buf, len, &bound, &err) != RENDER_BLOB_OK) {
-        hostlink_error(cmd, LINK_ERR_BAD_ARGS, "scene refused: %s", dm_refusal(err.message));
-        return;
-    }
     dm_scene.compiled = rx.buf;
     dm_scene.len = len;
     if (dm_prepare(0, &err) != 0) {
@@ -193,9 +203,9 @@ void dm_cmd_scene_load(uint16_t cmd)
     dm_scene.width = blob->scene.width;
     dm_scene.height = blob->scene.height;
     dm_scene.frames = blob->scene.frame_count;
-    dm_scene.blob_bytes = (uint32_t)bound;
+    dm_scene.blob_bytes = (uint32_t)blob->bound;
     struct link_scene_info info = {dm_scene.width, dm_scene.height, dm_scene.frames, len,
-                                   (uint32_t)bound, (uint32_t)imsu_dm_rc.size};
+                                   (uint32_t)blob->bound, (uint32_t)imsu_dm_rc.size};
     uint8_t f[LINK_SCENE_INFO_SIZE];
     link_scene_info_put(f, &info);
     hostlink_result(cmd, LINK_OK, f, sizeof f);
@@ -308,14 +318,12 @@ void dm_cmd_render(uint16_t cmd)
         return;
     }
     render_blob_error_t err;
-    uint32_t prepare_ms = 0;
-    if (dm_scene.prepared != (int32_t)a.frame) {
-        if (dm_prepare(a.frame, &err) != 0) {
-            hostlink_error(cmd, LINK_ERR_CHECK, "frame %u: %s", (unsigned)a.frame, err.message);
-            return;
-        }
-        prepare_ms = dm_scene.prepare_ms;
+    if (dm_scene.prepared != (int32_t)a.frame && dm_prepare(a.frame, &err) != 0) {
+        hostlink_error(cmd, LINK_ERR_CHECK, "frame %u: %s", (unsigned)a.frame, err.message);
+        return;
     }
+    /* prepared now, at the upload or while the frame before rendered */
+    uint32_t prepare_ms = dm_scene.prepare_ms;
     int r = imsu_swap(&imsu_dm_rc, UNITS_DM_CORE);
     if (r != IMSU_OK) {
         hostlink_error(cmd, LINK_ERR_CHECK, "IMSU swap to the RC: %s", imsu_strerror(r));

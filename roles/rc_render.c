@@ -10,7 +10,6 @@
 #include "drivers/imsu/imsu.h"
 #include "drivers/serial/line.h"
 #include "kernel/cpu.h"
-#include "kernel/kcopy.h"
 #include "kernel/klog.h"
 #include "kernel/kmem.h"
 #include "kernel/ktime.h"
@@ -144,10 +143,11 @@ static int rc_broadcast(struct rc_run *run, const render_blob_t **out)
         rc_fail(run, LINK_ERR_CHECK, "broadcast block: IMSU error %d (%u)", (uint32_t)r, 0);
         return -1;
     }
-    kcopy(w, src, src->bytes); /* a word at a time: serial work before any NC starts */
+    /* eight words a step: serial work before any NC starts, and the one
+     * part of the RC's frame that grows with the scene */
     render_blob_t *blob;
     render_blob_error_t err;
-    render_blob_status_t st = render_blob_relocate(w, b->size, &blob, &err);
+    render_blob_status_t st = render_blob_copy(w, b->size, src, &blob, &err);
     imsu_bcast_write_end(b, UNITS_RC_CORE);
     if (st != RENDER_BLOB_OK) {
         run->status = LINK_ERR_CHECK;

@@ -43,6 +43,8 @@ BENCHES += tests/bench/bench_big.sh
 # The board cost model --arith auto does not use: work counts against NC instructions.
 BENCHES += tests/bench/arith_cost_fit.sh
 BENCHES += tests/bench/bench_link_noise.sh
+# Issue 20: the DM's and the RC's instructions per triangle of a frame.
+BENCHES += tests/bench/bench_board_scale.sh
 
 # Encodings of the rendering commands and the NC statistics the RC sums.
 HOST_TESTS += test_render_link

@@ -35,7 +35,7 @@ struct render_job {
 /* Where a render command's wall time goes, ms, and QEMU's host CPU time
  * while the board rendered (for the host cores' use). */
 struct render_wall {
-    long long boot, upload, frame, pull, write, shutdown, total;
+    long long boot, upload, load, frame, pull, write, shutdown, total;
     long long board_prepare, board_render;
     long long render_cpu; /* QEMU's user + system ms during the frames */
 };
@@ -527,9 +527,10 @@ static long long render_qemu_cpu_ms(pid_t pid)
 static int render_job(struct board *b, struct render_opts *o, const struct render_job *j)
 {
     struct link_scene_info info;
-    long long upload_ms = 0, pull_ms = 0;
-    int rc = render_session_load(b, j->bytes, j->len, &info, &upload_ms);
+    long long upload_ms = 0, load_ms = 0, pull_ms = 0;
+    int rc = render_session_load(b, j->bytes, j->len, &info, &upload_ms, &load_ms);
     o->wall.upload += upload_ms;
+    o->wall.load += load_ms;
     if (rc != 0) {
         fprintf(stderr, "links1 render: %s was not loaded\n", j->scene);
         return -1;
@@ -609,12 +610,17 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
 /* One line accounting for the command's wall time (bench_wallclock.sh). */
 static void render_print_wall(const struct render_wall *w)
 {
-    long long other = w->total - w->boot - w->upload - w->frame - w->pull - w->write - w->shutdown;
-    printf("links1 render: wall %lld ms: boot %lld, upload %lld, frames %lld (board: prepare "
-           "%lld, render %lld), pull %lld, write %lld, shutdown %lld, other %lld; QEMU CPU "
-           "while rendering %lld ms (%.2f host cores)\n",
-           w->total, w->boot, w->upload, w->frame, w->board_prepare, w->board_render, w->pull,
-           w->write, w->shutdown, other, w->render_cpu,
+    long long other =
+        w->total - w->boot - w->upload - w->load - w->frame - w->pull - w->write - w->shutdown;
+    /* load: the DM checks the scene, loads it and prepares its first frame
+     * before it answers; the board's prepare counts every frame's
+     * preparation, the first one's inside load, each later one's inside
+     * the frame before (pipelined) or its own. */
+    printf("links1 render: wall %lld ms: boot %lld, upload %lld, load %lld, frames %lld (board: "
+           "prepare %lld, render %lld), pull %lld, write %lld, shutdown %lld, other %lld; QEMU "
+           "CPU while rendering %lld ms (%.2f host cores)\n",
+           w->total, w->boot, w->upload, w->load, w->frame, w->board_prepare, w->board_render,
+           w->pull, w->write, w->shutdown, other, w->render_cpu,
            w->frame > 0 ? (double)w->render_cpu / (double)w->frame : 0.0);
 }
 

@@ -27,7 +27,7 @@ static int render_session_result(struct board *b, uint16_t cmd, const char *what
 }
 
 int render_session_load(struct board *b, const uint8_t *scene, size_t len,
-                        struct link_scene_info *info, long long *upload_ms)
+                        struct link_scene_info *info, long long *upload_ms, long long *load_ms)
 {
     uint8_t args[LINK_SCENE_LOAD_ARGS_SIZE + 1];
     wire_put_u32(args, (uint32_t)len);
@@ -51,6 +51,7 @@ int render_session_load(struct board *b, const uint8_t *scene, size_t len,
                               LINK_SCENE_INFO_SIZE, RENDER_SILENCE_MS) < 0)
         return -1;
     link_scene_info_get(fields, info);
+    *load_ms = board_now_ms() - t0 - *upload_ms;
     return 0;
 }
 

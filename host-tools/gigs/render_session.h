@@ -25,9 +25,11 @@
 
 /* CMD_SCENE_LOAD and the scene's bytes, on the path b->opts.link names
  * (the shared RAM, or one DATA transfer).  *upload_ms: from the command to
- * the board's ACK of the last bytes (before its checks of the scene). */
+ * the board's ACK of the last bytes (before its checks of the scene);
+ * *load_ms: from then to the DM's answer (the scene checked and loaded,
+ * frame 0 prepared). */
 int render_session_load(struct board *b, const uint8_t *scene, size_t len,
-                        struct link_scene_info *info, long long *upload_ms);
+                        struct link_scene_info *info, long long *upload_ms, long long *load_ms);
 
 /* CMD_RENDER; with progress set, a progress line on stderr (areas done of
  * total, elapsed, estimate) while the board renders.  plan: plan_len bytes

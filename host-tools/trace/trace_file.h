@@ -40,7 +40,7 @@ struct trace {
     uint32_t balance;   /* enum areas_mode of the board's run */
     uint32_t k;         /* its --areas K (0: the default) */
     uint32_t flags;     /* enum link_render_flag of the run */
-    uint64_t dm_prepare;   /* DM: render_blob_build of the frame */
+    uint64_t dm_prepare;   /* DM: render_blob_prepare of the frame */
     uint64_t rc_broadcast; /* RC: the blob into the broadcast block */
     uint32_t broadcast_bytes;
     uint64_t rc_other;  /* RC: serving messages that handed out no area */

@@ -366,6 +366,48 @@ static void test_blob_detail(void)
 #endif
 }
 
+/* The DM's way (docs/gigs.md): the scene loaded into a block once, then
+ * frames prepared one after another in it, each the same bytes as a build
+ * of that frame alone; and the RC's render_blob_copy gives a copy that
+ * opens where it lies, every pointer inside it. */
+static void test_blob_load_then_prepare(void)
+{
+    size_t len, need;
+    render_blob_error_t err;
+    uint8_t *buf = tb_compile("anim", &len);
+    CHECK(buf != NULL);
+    if (!buf)
+        return;
+    CHECK_EQ_INT(render_blob_bytes(buf, len, &need, &err), RENDER_BLOB_OK);
+    uint8_t *block = tb_block(need), *fresh = tb_block(need), *copy = tb_block(need);
+    render_blob_t *blob, *alone, *moved;
+    CHECK_EQ_INT(render_blob_load(buf, len, block, need, NULL, &blob, &err), RENDER_BLOB_OK);
+    CHECK(blob && blob->frame == NULL && blob->bound == need && blob->bytes == blob->scene_bytes);
+    int same = blob != NULL;
+    for (uint32_t frame = 0; blob && frame < blob->scene.frame_count && frame < 3; frame++) {
+        CHECK_EQ_INT(render_blob_prepare(blob, frame, need, &err), RENDER_BLOB_OK);
+        /* the lone build at the same address: the same bytes, pointers too */
+        memcpy(fresh, block, need);
+        memset(block, 0, need);
+        CHECK_EQ_INT(render_blob_build(buf, len, frame, block, need, NULL, &alone, &err),
+                     RENDER_BLOB_OK);
+        same = same && memcmp(fresh, block, alone->bytes) == 0 && alone->bytes == blob->bytes;
+        memcpy(block, fresh, need); /* the DM's block again, frame after frame */
+    }
+    CHECK(same);
+    if (blob && render_blob_copy(copy, need, blob, &moved, &err) == RENDER_BLOB_OK) {
+        const render_blob_t *opened;
+        CHECK_EQ_INT(render_blob_open(copy, need, &opened, &err), RENDER_BLOB_OK);
+        CHECK((const uint8_t *)moved->frame > copy && (const uint8_t *)moved->frame < copy + need);
+    } else {
+        CHECK(0);
+    }
+    free(block);
+    free(fresh);
+    free(copy);
+    free(buf);
+}
+
 int main(void)
 {
     RUN(test_relocated_copy_renders_same);
@@ -375,5 +417,6 @@ int main(void)
     RUN(test_blob_size_bound);
     RUN(test_blob_errors);
     RUN(test_blob_detail);
+    RUN(test_blob_load_then_prepare);
     return check_exit();
 }
