@@ -169,6 +169,22 @@ static void test_numbers(void)
     FILE *null = fopen("/dev/null", "w");
     dup2(fileno(null), 2);
     CHECK_EQ_INT(cli_long(&c, 10, 1, 100, &v), -1); /* "0x20" is no base-10 number */
+    /* each end of the range holds, one past it does not: the value is left alone */
+    int n = 7;
+    c.arg = "100";
+    CHECK_EQ_INT(cli_long(&c, 10, 1, 100, &v), 0);
+    CHECK_EQ_INT(v, 100);
+    c.arg = "101";
+    CHECK_EQ_INT(cli_long(&c, 10, 1, 100, &v), -1);
+    CHECK_EQ_INT(v, 100);
+    c.arg = "0";
+    CHECK_EQ_INT(cli_long(&c, 10, 1, 100, &v), -1);
+    c.arg = "65";
+    CHECK_EQ_INT(cli_int(&c, 2, 64, &n), -1);
+    CHECK_EQ_INT(n, 7);
+    c.arg = "64";
+    CHECK_EQ_INT(cli_int(&c, 2, 64, &n), 0);
+    CHECK_EQ_INT(n, 64);
     CHECK_EQ_INT(cli_double(&c, 0, 1, 1e6, NULL, &d), 0);
     c.arg = "0";
     CHECK_EQ_INT(cli_double(&c, 0, 1, 1e6, "a positive number", &d), -1);
