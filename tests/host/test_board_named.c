@@ -30,30 +30,10 @@
 #include "host-tools/opts/tmp_dir.h"
 #include "proto/wire.h"
 #include "tests/check.h"
+#include "tests/host/fake_qemu.h"
 #include "tests/host/capture.h"
 
 /* ------------------------------------------------------------ the fake */
-
-static int fake_fd;
-static uint16_t fake_seq;
-
-static void fake_send(uint8_t type, const void *p, size_t n)
-{
-    uint8_t frame[LINK_MAX_FRAME];
-    size_t len = link_frame_encode(frame, sizeof frame, type, 0, fake_seq++, p, n);
-    if (write(fake_fd, frame, len) != (ssize_t)len)
-        return; /* the session went away: the next accept */
-}
-
-static void fake_hello(int core, int ncores)
-{
-    struct link_hello h = {.core = (uint16_t)core, .role = core < 2 ? core : ROLE_NC,
-                           .variant = 0, .mpidr = 0x80000000u | (uint32_t)core,
-                           .ncores = (uint16_t)ncores};
-    uint8_t p[LINK_HELLO_SIZE];
-    link_hello_put(p, &h);
-    fake_send(LINK_HELLO, p, sizeof p);
-}
 
 /* Serves one session until its end of the socket closes; 1 on
  * CMD_SHUTDOWN. */
@@ -72,7 +52,7 @@ static int fake_serve(int ncores)
         wire_put_u16(r + 2, LINK_OK);
         struct link_status_result s = {(uint16_t)ncores, (uint16_t)ncores, 0};
         link_status_result_put(r + LINK_RESULT_FIXED_SIZE, &s);
-        fake_send(LINK_RESULT, r, cmd == CMD_STATUS ? sizeof r : LINK_RESULT_FIXED_SIZE);
+        (void)fake_send(LINK_RESULT, r, cmd == CMD_STATUS ? sizeof r : LINK_RESULT_FIXED_SIZE); /* gone: the next accept */
         if (cmd == CMD_SHUTDOWN)
             return 1;
     }
@@ -103,7 +83,7 @@ static int fake_named(int argc, char **argv)
             return 7;
         if (first)
             for (int k = 0; k < ncores; k++)
-                fake_hello(k, ncores);
+                (void)fake_hello(k, ncores);
         int done = fake_serve(ncores);
         close(fake_fd);
         if (done)

@@ -13,29 +13,9 @@
 #include "host-tools/launcher/launcher.h"
 #include "proto/wire.h"
 #include "tests/check.h"
+#include "tests/host/fake_qemu.h"
 
 /* ------------------------------------------------------------ the fake */
-
-static int fake_fd;
-static uint16_t fake_seq;
-
-static void fake_send(uint8_t type, const void *p, size_t n)
-{
-    uint8_t frame[LINK_MAX_FRAME];
-    size_t len = link_frame_encode(frame, sizeof frame, type, 0, fake_seq++, p, n);
-    if (write(fake_fd, frame, len) != (ssize_t)len)
-        _exit(5);
-}
-
-static void fake_hello(int core, int ncores)
-{
-    struct link_hello h = {.core = (uint16_t)core, .role = core < 2 ? core : ROLE_NC,
-                           .variant = 0, .mpidr = 0x80000000u | (uint32_t)core,
-                           .ncores = (uint16_t)ncores};
-    uint8_t p[LINK_HELLO_SIZE];
-    link_hello_put(p, &h);
-    fake_send(LINK_HELLO, p, sizeof p);
-}
 
 /* Plays the board: behaviour "all" reports every core in and powers off on
  * CMD_SHUTDOWN; "missing" leaves out cores 3 and ncores-1; "deaf" never
@@ -52,13 +32,15 @@ static int fake_board(const char *mode, int argc, char **argv)
     }
     if (ncores < 3 || fake_fd < 0)
         return 9;
-    fake_send(LINK_LOG, "core 0 DM: fake board up", 24);
+    if (fake_send(LINK_LOG, "core 0 DM: fake board up", 24) < 0)
+        _exit(5);
     for (int k = 0; k < ncores; k++) {
         if (strcmp(mode, "crash") == 0 && k == 2)
             return 3;
         if (strcmp(mode, "missing") == 0 && (k == 3 || k == ncores - 1))
             continue;
-        fake_hello(k, ncores);
+        if (fake_hello(k, ncores) < 0)
+            _exit(5);
     }
     struct link_decoder d;
     link_decoder_init(&d);
@@ -75,7 +57,8 @@ static int fake_board(const char *mode, int argc, char **argv)
         wire_put_u16(r + 6, (uint16_t)ncores);
         if (cmd == CMD_SHUTDOWN && strcmp(mode, "deaf") == 0)
             continue;
-        fake_send(LINK_RESULT, r, cmd == CMD_STATUS ? 8 : 4);
+        if (fake_send(LINK_RESULT, r, cmd == CMD_STATUS ? 8 : 4) < 0)
+            _exit(5);
         if (cmd == CMD_SHUTDOWN)
             return 0;
     }

@@ -9,19 +9,10 @@
 
 #include "host-tools/scene/scene_import.h"
 #include "tests/check.h"
+#include "tests/host/empty_scene.h"
 
 #define MODELS "tests/models/"
 
-/* An empty scene: default view, the root cluster. */
-static void empty_scene(struct sd_scene *s)
-{
-    memset(s, 0, sizeof *s);
-    sd_view_defaults(&s->view);
-    s->clusters = calloc(1, sizeof *s->clusters);
-    s->clusters[0].parent = -1;
-    s->clusters[0].m[0] = s->clusters[0].m[5] = s->clusters[0].m[10] = 1;
-    s->n_clusters = 1;
-}
 
 /* Imports path into a fresh scene s: 0, or -1 with err. */
 static int import(const char *path, int fit, struct sd_scene *s, struct import_result *r,

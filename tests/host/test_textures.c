@@ -19,6 +19,7 @@
 #include "host-tools/opts/tmp_dir.h"
 #include "host-tools/scene/scene_import.h"
 #include "tests/check.h"
+#include "tests/host/empty_scene.h"
 
 static char root[64];
 static char model_dir[128]; /* root/model/ */
@@ -61,15 +62,6 @@ static void model_with(const char *tex)
     put("model/x.mtl", mtl);
 }
 
-static void empty_scene(struct sd_scene *s)
-{
-    memset(s, 0, sizeof *s);
-    sd_view_defaults(&s->view);
-    s->clusters = calloc(1, sizeof *s->clusters);
-    s->clusters[0].parent = -1;
-    s->clusters[0].m[0] = s->clusters[0].m[5] = s->clusters[0].m[10] = 1;
-    s->n_clusters = 1;
-}
 
 static struct import_result res;
 
