@@ -56,6 +56,26 @@ static uint32_t areas_piece_width(uint32_t width, uint32_t want)
     return d;
 }
 
+/* Up to max_ncs NCs: k, factor.  From `links1 replay T --ncs N --areas K
+ * --guided F` over K in {4096, 8192, 16384, 32768} and F in {2, 3, 4} on a
+ * trace of demo.scn at 512x480 (docs/areas.md has the sweep). */
+static const struct {
+    uint32_t max_ncs, k, factor;
+} areas_decreasing_rule[] = {
+    {64, 32768, 2},
+    {128, 32768, 3},
+    {UINT32_MAX, 16384, 3},
+};
+
+void areas_decreasing_defaults(uint32_t ncs, uint32_t *k, uint32_t *factor)
+{
+    uint32_t i = 0;
+    while (ncs > areas_decreasing_rule[i].max_ncs)
+        i++;
+    *k = areas_decreasing_rule[i].k;
+    *factor = areas_decreasing_rule[i].factor;
+}
+
 int areas_init(struct areas *s, enum areas_mode mode, uint32_t width, uint32_t height,
                uint32_t ncs, uint32_t k)
 {
@@ -72,11 +92,14 @@ int areas_init(struct areas *s, enum areas_mode mode, uint32_t width, uint32_t h
     s->width = width;
     s->height = height;
     s->ncs = ncs;
-    s->k = mode == AREAS_STATIC ? ncs : (k == 0 ? AREAS_DEFAULT_K : k);
+    uint32_t rule_k = AREAS_DEFAULT_K, rule_factor = 2;
+    if (mode == AREAS_DECREASING)
+        areas_decreasing_defaults(ncs, &rule_k, &rule_factor);
+    s->k = mode == AREAS_STATIC ? ncs : (k == 0 ? rule_k : k);
     if (s->k > pixels)
         s->k = pixels;
     s->pixels_left = pixels;
-    s->factor = AREAS_GUIDED_FACTOR;
+    s->factor = rule_factor;
     if (mode == AREAS_DECREASING)
         s->min_pixels = (pixels + s->k - 1) / s->k;
     else

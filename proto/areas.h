@@ -30,15 +30,13 @@
 /* Largest screen side.  The frame memory stops at 1024x1024; this bound
  * only keeps every pixel count of a schedule well inside 32 bits. */
 #define AREAS_MAX_DIM 4096u
-/* Areas of the k-area grid when the caller passes k = 0 (the host's
- * --areas default too): the paper's best simple-dynamic count on 512x480
- * with 64 NCs (Fig. 10), and the best measured with the decreasing
- * schedule on 64 NCs (docs/results/gigs-pipeline.md). */
+/* Areas of the simple dynamic grid when the caller passes k = 0 (the
+ * host's --areas default too): the paper's best count on 512x480 with 64
+ * NCs (Fig. 10). */
 #define AREAS_DEFAULT_K 1024u
 /* Guided self-scheduling divisor: an area takes 1/(factor * ncs) of what is
  * left.  1 gives the first NCs so much that the last areas cannot even the
  * finish; 2 leaves half the screen to balance with smaller areas. */
-#define AREAS_GUIDED_FACTOR 2u
 #define AREAS_MAX_GUIDED_FACTOR 64u
 
 enum areas_mode {
@@ -80,9 +78,16 @@ struct areas {
     uint32_t factor;        /* guided divisor (AREAS_GUIDED_FACTOR unless set) */
 };
 
+/* The decreasing schedule's k and guided factor for ncs NCs when the
+ * caller leaves them to the board (k = 0, no factor set): the best of k in
+ * 4096..32768 and factors 2..4 in `links1 replay` of demo.scn at 512x480,
+ * NCs asking ahead (docs/areas.md). */
+void areas_decreasing_defaults(uint32_t ncs, uint32_t *k, uint32_t *factor);
+
 /* Starts a schedule for a width x height screen shared by ncs NCs.  k is
- * the grid's area count for AREAS_DYNAMIC and the smallest-area bound of
- * AREAS_DECREASING (0 = AREAS_DEFAULT_K); AREAS_STATIC ignores it.  A grid
+ * the grid's area count for AREAS_DYNAMIC (0 = AREAS_DEFAULT_K) and the
+ * smallest-area bound of AREAS_DECREASING (0 = areas_decreasing_defaults,
+ * which also sets the factor); AREAS_STATIC ignores it.  A grid
  * never has more areas than pixels: k (or ncs) is clamped to width*height.
  * Returns AREAS_OK or an enum areas_status error, leaving *s unusable. */
 int areas_init(struct areas *s, enum areas_mode mode, uint32_t width, uint32_t height,

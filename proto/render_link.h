@@ -38,8 +38,11 @@ enum link_render_flag {
     LINK_RENDER_PREPARE_NEXT = 1u << 4, /* pipelining of animations */
     LINK_RENDER_TRACE = 1u << 5,        /* RC and NCs write trace marks
                                            (proto/insn_mark.h, docs/trace.md) */
+    LINK_RENDER_ASK_WHEN_DONE = 1u << 6, /* the paper's rule: an NC asks for its
+                                            next area once it has finished one
+                                            (default: one round trip ahead) */
 };
-#define LINK_RENDER_FLAGS_ALL 0x3Fu
+#define LINK_RENDER_FLAGS_ALL 0x7Fu
 
 /* Balancing modes: the values of proto/areas.h enum areas_mode. */
 enum link_balance { LINK_BALANCE_STATIC = 0, LINK_BALANCE_DYNAMIC = 1, LINK_BALANCE_DECREASING = 2 };
@@ -50,6 +53,8 @@ struct link_render_args {
     uint32_t frame;   /* frame index, 0 .. frames-1 */
     uint8_t balance;  /* enum link_balance */
     uint8_t flags;    /* enum link_render_flag */
+    uint8_t guided;   /* decreasing: the guided factor, 1..AREAS_MAX_GUIDED_FACTOR;
+                         0 = the board's default for its NC count */
     uint32_t areas;   /* K: areas of the dynamic grid / smallest-area bound of
                          the decreasing schedule; 0 = the board's default */
 };
@@ -249,7 +254,8 @@ static inline void link_render_args_put(uint8_t *p, const struct link_render_arg
     wire_put_u32(p, a->frame);
     wire_put_u8(p + 4, a->balance);
     wire_put_u8(p + 5, a->flags);
-    wire_put_u16(p + 6, 0);
+    wire_put_u8(p + 6, a->guided);
+    wire_put_u8(p + 7, 0);
     wire_put_u32(p + 8, a->areas);
 }
 static inline void link_render_args_get(const uint8_t *p, struct link_render_args *a)
@@ -257,6 +263,7 @@ static inline void link_render_args_get(const uint8_t *p, struct link_render_arg
     a->frame = wire_get_u32(p);
     a->balance = wire_get_u8(p + 4);
     a->flags = wire_get_u8(p + 5);
+    a->guided = wire_get_u8(p + 6);
     a->areas = wire_get_u32(p + 8);
 }
 

@@ -33,8 +33,8 @@ enum unit_msg {
     MSG_FAULT_ACK = 17,      /* i32 status: 0 = the target is about to fault */
     /* Rendering (roles/gigs.h; roles/dm_render.c, rc_render.c, nc_render.c): */
     MSG_RENDER_FRAME = 18,   /* DM->RC: the prepared frame is in the IMSU block
-                              * just swapped to you: u32 frame, u8 balance,
-                              * u8 flags (LINK_RENDER_*), u16 0, u32 areas K */
+                              * just swapped to you: struct link_render_args
+                              * (proto/render_link.h), then the fault plan */
     MSG_RENDER_PROGRESS = 19,/* RC->DM: u32 areas done, u32 areas total, u32 pixels
                               * in the frame memory, u32 pixels of the frame */
     MSG_RENDER_DONE = 20,    /* RC->DM: i32 status; 0: gigs_frame_result
@@ -45,17 +45,22 @@ enum unit_msg {
                               * (MSG_NC_AREA_SIZE); a planned failure adds u8
                               * kind, u8 0, u16 row (MSG_NC_AREA_INJECT_SIZE) */
     MSG_NC_STOP = 23,        /* RC->NC: no more areas: let go of the block */
-    MSG_NC_REQ = 24,         /* NC->RC: i32 status: 0 = next area please (the
-                              * last one's pixels are in the DC); < 0: this NC
-                              * cannot render, text follows */
+    MSG_NC_REQ = 24,         /* NC->RC: i32 status: >= 0, next area please, and
+                              * the areas this NC finished in the frame (their
+                              * pixels are in the DC); < 0: this NC cannot
+                              * render, text follows */
     MSG_NC_STOPPED = 25,     /* NC->RC: u32 private high-water mark, then the
                               * frame's render stats (GIGS_STATS_SIZE) */
+    MSG_NC_DONE = 26,        /* NC->RC: i32 areas finished in the frame: an NC
+                              * that asked ahead finished its area before the
+                              * answer came (no new request) */
 };
 
 /* MSG_NC_AREA's payload: four u16 (areas.h: sides <= AREAS_MAX_DIM), half
  * of four u32: the RC checksums and copies it once per area request. */
 #define MSG_NC_AREA_SIZE 8
-/* MSG_NC_REQ's payload: the i32 status (a refusal's text follows it). */
+/* MSG_NC_REQ's and MSG_NC_DONE's payload: the i32 status (a refusal's
+ * text follows it). */
 #define MSG_NC_REQ_SIZE 4
 #define MSG_NC_AREA_INJECT_SIZE 12
 

@@ -161,12 +161,12 @@ uint32_t render_clip_x(render_clip_t *clip, int32_t x)
 render_status_t render_area(render_ctx_t *ctx, render_clip_t *clip, const render_area_t *area,
                             const render_clip_options_t *opt, rgb8_t *out)
 {
-    return render_area_marked(ctx, clip, area, opt, out, NULL);
+    return render_area_marked(ctx, clip, area, opt, out, NULL, NULL);
 }
 
 render_status_t render_area_marked(render_ctx_t *ctx, render_clip_t *clip,
                                    const render_area_t *area, const render_clip_options_t *opt,
-                                   rgb8_t *out, void (*mark)(void))
+                                   rgb8_t *out, void (*mark)(void *arg), void *arg)
 {
     const render_frame_t *f = ctx->frame;
     if (area->w == 0 || area->h == 0 || area->x >= f->width || area->w > f->width - area->x ||
@@ -179,7 +179,7 @@ render_status_t render_area_marked(render_ctx_t *ctx, render_clip_t *clip,
         render_clip_y(clip, area, !opt->y_clip);
     }
     if (mark)
-        mark();
+        mark(arg);
     for (uint32_t py = area->y; py < area->y + area->h; py++) {
         rgb8_t *row = out + (size_t)(py - area->y) * area->w;
         for (uint32_t px = area->x; px < area->x + area->w; px++) {
@@ -196,7 +196,7 @@ render_status_t render_area_marked(render_ctx_t *ctx, render_clip_t *clip,
             if (opt->progress)
                 *opt->progress += 1;
             if (mark)
-                mark();
+                mark(arg);
         }
     }
     return RENDER_OK;

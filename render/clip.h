@@ -88,11 +88,12 @@ uint32_t render_clip_x(render_clip_t *clip, int32_t x);
  * Statistics go to ctx->stats and clip->y_kept / x_kept. */
 render_status_t render_area(render_ctx_t *ctx, render_clip_t *clip, const render_area_t *area,
                             const render_clip_options_t *opt, rgb8_t *out);
-/* render_area, calling mark (when not NULL) once after the area's set-up
- * (Y clipping) and once after each pixel, in raster order: the NC's trace
- * marks (roles/nc_render.c, docs/trace.md). */
+/* render_area, calling mark(arg) (when mark is not NULL) once after the
+ * area's set-up (Y clipping) and once after each pixel, in raster order:
+ * the NC's trace marks and its asking ahead (roles/nc_render.c,
+ * docs/trace.md). */
 render_status_t render_area_marked(render_ctx_t *ctx, render_clip_t *clip,
                                    const render_area_t *area, const render_clip_options_t *opt,
-                                   rgb8_t *out, void (*mark)(void));
+                                   rgb8_t *out, void (*mark)(void *arg), void *arg);
 
 #endif

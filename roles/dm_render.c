@@ -309,12 +309,12 @@ void dm_cmd_render(uint16_t cmd)
         return;
     }
     if (a.frame >= dm_scene.frames || a.balance > LINK_BALANCE_DECREASING ||
-        (a.flags & ~LINK_RENDER_FLAGS_ALL)) {
+        (a.flags & ~LINK_RENDER_FLAGS_ALL) || a.guided > AREAS_MAX_GUIDED_FACTOR) {
         hostlink_error(cmd, LINK_ERR_BAD_ARGS,
-                       "CMD_RENDER: frame %u (scene has %u), balance %u (0..2) or flags 0x%x "
-                       "out of range",
+                       "CMD_RENDER: frame %u (scene has %u), balance %u (0..2), flags 0x%x or "
+                       "guided factor %u (0..64) out of range",
                        (unsigned)a.frame, (unsigned)dm_scene.frames, (unsigned)a.balance,
-                       (unsigned)a.flags);
+                       (unsigned)a.flags, (unsigned)a.guided);
         return;
     }
     render_blob_error_t err;
@@ -332,13 +332,9 @@ void dm_cmd_render(uint16_t cmd)
     dm_scene.prepared = -1; /* the block the DM holds now is the RC's old one */
     struct line_msg *m = &dm_msg;
     m->type = MSG_RENDER_FRAME;
-    m->len = (uint16_t)(12 + plan_bytes);
-    memcpy(m->payload + 12, plan, plan_bytes);
-    wire_put_u32(m->payload, a.frame);
-    wire_put_u8(m->payload + 4, a.balance);
-    wire_put_u8(m->payload + 5, a.flags);
-    wire_put_u16(m->payload + 6, 0);
-    wire_put_u32(m->payload + 8, a.areas ? a.areas : AREAS_DEFAULT_K);
+    m->len = (uint16_t)(LINK_RENDER_ARGS_SIZE + plan_bytes);
+    memcpy(m->payload + LINK_RENDER_ARGS_SIZE, plan, plan_bytes);
+    link_render_args_put(m->payload, &a); /* K and factor 0: the RC's defaults */
     r = line_send(UNITS_RC_CORE, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
     if (r != LINE_OK) {
         hostlink_error(cmd, LINK_ERR_TIMEOUT, "CMD_RENDER: the RC did not take the frame (%s)",

@@ -2,7 +2,13 @@
  * the RC, Y clipping, X clipping and tracing (render_area), then the rows
  * into the data collector FIFO.  Its working set (clip lists and one
  * area's pixels) comes from its private memory, sized by the scene and the
- * schedule's largest area. */
+ * schedule's largest area.
+ *
+ * Asking ahead (unless LINK_RENDER_ASK_WHEN_DONE, the paper's rule): while
+ * it renders an area, the NC sends its next request once the pixels left,
+ * at the rate of the pixels done so far, would take no longer than a round
+ * trip to the RC (what the last request it waited for took, or less when
+ * an answer came sooner), so the next area is there when it finishes. */
 #include <stdint.h>
 #include <string.h>
 
@@ -12,6 +18,7 @@
 #include "kernel/cpu.h"
 #include "kernel/klog.h"
 #include "kernel/kmem.h"
+#include "kernel/ktime.h"
 #include "proto/hostlink.h"
 #include "proto/insn_mark.h"
 #include "proto/render_link.h"
@@ -33,6 +40,16 @@ struct nc_job {
     int marked;
     int counting;       /* the plugin counts this NC from its first frame */
     int trace;          /* LINK_RENDER_TRACE: write trace marks */
+    /* asking ahead */
+    int ahead;          /* 1: ask a round trip before the end (default) */
+    int asked;          /* 1: a request is out, not answered yet */
+    uint32_t finished;  /* areas finished in this frame */
+    uint64_t sent;      /* ticks: when that request left */
+    uint64_t rtt;       /* ticks: a round trip to the RC, as last seen */
+    uint64_t started;   /* ticks: when the current area's pixels began */
+    uint64_t per_pixel; /* ticks per pixel of the last area (~0: none yet) */
+    uint32_t done, area_pixels; /* the current area's pixels done, and all */
+    struct line_msg *m; /* the message buffer, free while an area renders */
 };
 static struct nc_job nc_jobs[UNITS_MAX_CORES];
 volatile uint32_t gigs_nc_progress[UNITS_MAX_CORES];
@@ -44,15 +61,30 @@ static void nc_send(struct line_msg *m)
         klog("render: send to the RC: %s", line_strerror(r));
 }
 
-/* MSG_NC_REQ with status 0, or a negative status and text. */
-static void nc_request(struct line_msg *m, int32_t status, const char *why)
+/* MSG_NC_REQ (or MSG_NC_DONE) with the areas finished, or a negative
+ * status and text. */
+static void nc_say(struct line_msg *m, uint16_t type, int32_t status, const char *why)
 {
-    m->type = MSG_NC_REQ;
+    m->type = type;
     wire_put_u32(m->payload, (uint32_t)status);
     uint32_t n = why ? (uint32_t)strlen(why) : 0;
     memcpy(m->payload + MSG_NC_REQ_SIZE, why, n);
     m->len = (uint16_t)(MSG_NC_REQ_SIZE + n);
     nc_send(m);
+}
+
+static void nc_request(struct nc_job *job, struct line_msg *m, int32_t status, const char *why)
+{
+    nc_say(m, MSG_NC_REQ, status, why);
+    job->asked = 1;
+    job->sent = ktime_now();
+}
+
+/* A round trip took at most `seen` ticks (exactly, if the NC waited). */
+static void nc_round_trip(struct nc_job *job, uint64_t seen, int waited)
+{
+    if (waited || seen < job->rtt)
+        job->rtt = seen;
 }
 
 /* Opens the broadcast frame and sets aside the working set; 0, or -1 with
@@ -101,16 +133,30 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, char *w
     return 0;
 }
 
-static void nc_trace_pixel(void)
+/* After the area's set-up and after each pixel: the trace mark, and the
+ * request for the next area once the pixels left would take no longer than
+ * a round trip.  Integer compares: left * elapsed <= rtt * done. */
+static void nc_pixel(void *arg)
 {
-    insn_mark_trace_pixel();
+    struct nc_job *job = arg;
+    if (job->trace)
+        insn_mark_trace_pixel();
+    if (!job->ahead || job->asked)
+        return;
+    uint64_t now = ktime_now();
+    uint32_t left = job->area_pixels - job->done;
+    int soon = job->done ? (uint64_t)left * (now - job->started) <= job->rtt * job->done
+                         : job->per_pixel <= job->rtt / (left ? left : 1u);
+    job->done++;
+    if (soon)
+        nc_request(job, job->m, (int32_t)job->finished, NULL);
 }
 
 /* Renders one area and pushes its rows into the DC.  A fault planned for
  * this area (MSG_NC_AREA of MSG_NC_AREA_INJECT_SIZE bytes) comes after pushing that many rows.
  * Traced: the area's x, y, w, h (16 bits each), then marks at its start,
  * after its set-up and each pixel, and at its end. */
-static int nc_area(struct nc_job *job, const struct line_msg *m, char *why, size_t cap)
+static int nc_area(struct nc_job *job, struct line_msg *m, char *why, size_t cap)
 {
     render_area_t a = {wire_get_u16(m->payload), wire_get_u16(m->payload + 2),
                        wire_get_u16(m->payload + 4), wire_get_u16(m->payload + 6)};
@@ -124,8 +170,14 @@ static int nc_area(struct nc_job *job, const struct line_msg *m, char *why, size
         insn_mark_trace_bits(a.h, 16);
         insn_mark_trace_area_begin();
     }
+    job->m = m; /* read: free to send from now */
+    job->done = 0;
+    job->area_pixels = a.w * a.h;
+    job->started = ktime_now();
+    int hook = job->trace || (job->ahead && !job->asked);
     render_status_t st = render_area_marked(&job->ctx, &job->clip, &a, &job->opt, job->pixels,
-                                            job->trace ? nc_trace_pixel : NULL);
+                                            hook ? nc_pixel : NULL, job);
+    job->per_pixel = (ktime_now() - job->started) / job->area_pixels;
     if (st != RENDER_OK) {
         fmt_snprintf(why, cap, "area %ux%u at (%u,%u): %s", (unsigned)a.w, (unsigned)a.h,
                      (unsigned)a.x, (unsigned)a.y, render_status_name(st));
@@ -168,13 +220,23 @@ void nc_render_frame(struct line_msg *m)
     if (job->trace)
         insn_mark_trace_span_end();
     int reading = ok; /* inside the broadcast read */
-    nc_request(m, ok ? 0 : LINK_ERR_CHECK, ok ? NULL : why);
+    job->ahead = !(flags & LINK_RENDER_ASK_WHEN_DONE);
+    job->finished = 0;
+    job->per_pixel = UINT64_MAX; /* no rate yet: the first area asks after a pixel */
+    job->rtt = 0;
+    nc_request(job, m, ok ? 0 : LINK_ERR_CHECK, ok ? NULL : why);
+    int have = 0; /* m holds a message not yet handled */
     for (;;) {
-        int r = line_recv(UNITS_RC_CORE, m, 0);
-        if (r != LINE_OK) {
-            klog("render: line from the RC: %s", line_strerror(r));
-            continue;
+        if (!have) {
+            int r = line_recv(UNITS_RC_CORE, m, 0);
+            if (r != LINE_OK) {
+                klog("render: line from the RC: %s", line_strerror(r));
+                continue;
+            }
+            if (job->asked)
+                nc_round_trip(job, ktime_now() - job->sent, 1);
         }
+        have = 0;
         if (m->type == MSG_NC_STOP && m->len >= 1)
             selftest_fail_on_purpose(wire_get_u8(m->payload)); /* the test hook */
         if (m->type == MSG_NC_STOP)
@@ -183,12 +245,25 @@ void nc_render_frame(struct line_msg *m)
             klog("render: unexpected message %u from the RC", (unsigned)m->type);
             continue;
         }
+        job->asked = 0;
         if (nc_area(job, m, why, sizeof why) != 0) {
             ok = 0;
-            nc_request(m, LINK_ERR_CHECK, why);
-        } else {
-            nc_request(m, 0, NULL);
+            nc_request(job, m, LINK_ERR_CHECK, why);
+            continue;
         }
+        job->finished++;
+        if (!job->asked) {
+            nc_request(job, m, (int32_t)job->finished, NULL);
+            continue;
+        }
+        /* Asked ahead: the next area may be here already; if not, the RC
+         * learns that this one is finished. */
+        if (line_try_recv(UNITS_RC_CORE, m) == LINE_OK) {
+            nc_round_trip(job, ktime_now() - job->sent, 0);
+            have = 1;
+            continue;
+        }
+        nc_say(m, MSG_NC_DONE, (int32_t)job->finished, NULL);
     }
     if (reading)
         imsu_bcast_read_end(&imsu_rc_ncs, me);

@@ -106,7 +106,7 @@ void rc_nc_start(struct rc_run *run, struct line_msg *m, uint8_t flags, uint32_t
     run->next_scan = ktime_deadline_ms(GIGS_WATCH_MS);
 }
 
-/* NC k failed: out for good; the area it held goes back to be handed out. */
+/* NC k failed: out for good; the areas it held go back to be handed out. */
 static void rc_nc_lost(struct rc_run *run, uint32_t k, int by_watchdog)
 {
     if (k >= UNITS_MAX_CORES)
@@ -120,20 +120,22 @@ static void rc_nc_lost(struct rc_run *run, uint32_t k, int by_watchdog)
     link_core_map_set(f->failed_map, k);
     if (by_watchdog)
         link_core_map_set(f->watchdog_map, k);
-    if (n->state == RC_NC_BUSY) {
-        run->again[run->nagain++] = n->area;
+    const char *how = by_watchdog ? "stopped answering" : "halted with a fault";
+    if (n->nheld == 0)
+        klog("render: NC %u %s (it held no area)", (unsigned)k, how);
+    for (uint32_t i = 0; i < n->nheld; i++) {
+        const struct area *a = &n->held[i];
+        run->again[run->nagain++] = *a;
         if (f->reissued < LINK_REISSUE_LIST_MAX)
-            f->area[f->reissued] = (struct link_reissue){(uint16_t)k, (uint16_t)n->area.x,
-                                                         (uint16_t)n->area.y, (uint16_t)n->area.w,
-                                                         (uint16_t)n->area.h};
+            f->area[f->reissued] = (struct link_reissue){(uint16_t)k, (uint16_t)a->x,
+                                                         (uint16_t)a->y, (uint16_t)a->w,
+                                                         (uint16_t)a->h};
         f->reissued++;
-        klog("render: NC %u %s; its area %ux%u at (%u,%u) goes to another NC", (unsigned)k,
-             by_watchdog ? "stopped answering" : "halted with a fault", (unsigned)n->area.w,
-             (unsigned)n->area.h, (unsigned)n->area.x, (unsigned)n->area.y);
-    } else {
-        klog("render: NC %u %s (it held no area)", (unsigned)k,
-             by_watchdog ? "stopped answering" : "halted with a fault");
+        klog("render: NC %u %s; its area %ux%u at (%u,%u) goes to another NC", (unsigned)k, how,
+             (unsigned)a->w, (unsigned)a->h, (unsigned)a->x, (unsigned)a->y);
     }
+    n->nheld = 0;
+    n->asking = 0;
     rc_nc_set(run, k, RC_NC_STOPPED);
 }
 
@@ -161,7 +163,7 @@ static int rc_nc_overdue(struct rc_run *run, uint32_t k, uint32_t peers)
         if (run->slow_pixels == 0) {
             allow = ktime_ms_to_ticks(GIGS_WATCH_FIRST_MS);
         } else {
-            uint64_t pixels = (uint64_t)n->area.w * n->area.h;
+            uint64_t pixels = (uint64_t)n->held[0].w * n->held[0].h;
             allow = GIGS_WATCH_FACTOR * run->slow_ticks * pixels / run->slow_pixels +
                     ktime_ms_to_ticks(GIGS_WATCH_FLOOR_MS);
         }
@@ -178,6 +180,39 @@ static int rc_nc_overdue(struct rc_run *run, uint32_t k, uint32_t peers)
     return now - n->since > allow;
 }
 
+/* NC k's state from what it holds and whether it asks. */
+static void rc_nc_settle(struct rc_run *run, uint32_t k)
+{
+    const struct rc_nc *n = &run->nc[k];
+    rc_nc_set(run, k, n->nheld ? RC_NC_BUSY : n->asking ? RC_NC_PARKED : RC_NC_IDLE);
+}
+
+/* NC k says it has finished `finished` areas of the frame: its oldest held
+ * ones up to that count are done. */
+static void rc_nc_finished(struct rc_run *run, uint32_t k, uint32_t finished)
+{
+    struct rc_nc *n = &run->nc[k];
+    uint32_t newly = finished - n->finished;
+    if (newly > n->nheld) {
+        klog("render: NC %u says it finished %u areas; it held %u", (unsigned)k,
+             (unsigned)newly, (unsigned)n->nheld);
+        newly = n->nheld;
+    }
+    n->finished += newly;
+    for (uint32_t i = 0; i < newly; i++) {
+        run->done++;
+        uint64_t now = ktime_now(), ticks = now - n->since;
+        uint64_t pixels = (uint64_t)n->held[0].w * n->held[0].h;
+        if (run->slow_pixels == 0 || ticks * run->slow_pixels > run->slow_ticks * pixels) {
+            run->slow_ticks = ticks;
+            run->slow_pixels = pixels;
+        }
+        n->held[0] = n->held[1];
+        n->nheld--;
+        n->since = now; /* the next one is its current area from now */
+    }
+}
+
 /* One message from NC k. */
 static void rc_nc_message(struct rc_run *run, uint32_t k, struct line_msg *m)
 {
@@ -190,33 +225,39 @@ static void rc_nc_message(struct rc_run *run, uint32_t k, struct line_msg *m)
         gigs_stats_add(&run->stats, m->payload + 4);
         return;
     }
-    if (m->type != MSG_NC_REQ || (n->state != RC_NC_IDLE && n->state != RC_NC_BUSY)) {
+    if ((m->type != MSG_NC_REQ && m->type != MSG_NC_DONE) ||
+        (n->state != RC_NC_IDLE && n->state != RC_NC_BUSY && n->state != RC_NC_PARKED)) {
         klog("render: unexpected message %u from NC %u", (unsigned)m->type, (unsigned)k);
         return;
     }
     int32_t st = (int32_t)wire_get_u32(m->payload);
-    if (st != 0 && run->status == LINK_OK) {
-        run->status = st;
-        fmt_snprintf(run->why, sizeof run->why, "NC %u: %.*s", (unsigned)k,
-                     (int)(m->len - 4), (const char *)m->payload + 4);
-    }
-    if (n->state == RC_NC_BUSY) {
-        run->done++;
-        uint64_t ticks = ktime_now() - n->since;
-        uint64_t pixels = (uint64_t)n->area.w * n->area.h;
-        if (run->slow_pixels == 0 || ticks * run->slow_pixels > run->slow_ticks * pixels) {
-            run->slow_ticks = ticks;
-            run->slow_pixels = pixels;
+    if (st < 0) {
+        if (run->status == LINK_OK) {
+            run->status = st;
+            fmt_snprintf(run->why, sizeof run->why, "NC %u: %.*s", (unsigned)k,
+                         (int)(m->len - 4), (const char *)m->payload + 4);
         }
+        n->nheld = 0; /* the frame has failed: what it held is not rendered */
+    } else {
+        rc_nc_finished(run, k, (uint32_t)st);
     }
-    rc_nc_set(run, k, RC_NC_PARKED);
+    if (m->type == MSG_NC_REQ) {
+        if (n->asking || n->nheld >= RC_NC_HELD_MAX)
+            klog("render: NC %u asked again while holding %u areas", (unsigned)k,
+                 (unsigned)n->nheld);
+        n->asking = n->nheld < RC_NC_HELD_MAX;
+    }
+    rc_nc_settle(run, k);
 }
 
-/* Gives parked NC k the next area (one taken back first); 0 if none is left. */
+/* Gives NC k, which asks, the next area (one taken back first); 0 if none
+ * is left. */
 static int rc_nc_give(struct rc_run *run, uint32_t k, struct line_msg *m)
 {
     struct rc_nc *n = &run->nc[k];
     struct area a;
+    if (!n->asking || n->nheld >= RC_NC_HELD_MAX)
+        return 0;
     if (run->nagain)
         a = run->again[--run->nagain];
     else if (!areas_next(&run->sched, &a))
@@ -234,9 +275,11 @@ static int rc_nc_give(struct rc_run *run, uint32_t k, struct line_msg *m)
         wire_put_u16(m->payload + 10, (uint16_t)(n->inject.row * (a.h + 1) / 256));
     }
     n->given++;
-    n->area = a;
+    if (n->nheld == 0)
+        n->since = ktime_now();
+    n->held[n->nheld++] = a;
+    n->asking = 0;
     rc_nc_set(run, k, RC_NC_BUSY);
-    n->since = ktime_now();
     rc_nc_send(k, m);
     return 1;
 }
@@ -252,6 +295,7 @@ static void rc_nc_stop(struct rc_run *run, uint32_t k, struct line_msg *m)
         wire_put_u8(m->payload + 1, 0);
         wire_put_u16(m->payload + 2, 0);
     }
+    n->asking = 0;
     rc_nc_set(run, k, RC_NC_STOPPING);
     n->since = ktime_now();
     rc_nc_send(k, m);
@@ -263,9 +307,11 @@ static void rc_nc_trace_served(const struct rc_run *run, uint32_t k, int handed)
 {
     insn_mark_trace_span_end();
     insn_mark_trace_bits(k, 16);
+    const struct rc_nc *n = &run->nc[k];
+    const struct area *a = &n->held[n->nheld ? n->nheld - 1u : 0u]; /* the one given last */
     insn_mark_trace_bits((uint32_t)handed, 1);
-    insn_mark_trace_bits(handed ? run->nc[k].area.x : 0, 16);
-    insn_mark_trace_bits(handed ? run->nc[k].area.y : 0, 16);
+    insn_mark_trace_bits(handed ? a->x : 0, 16);
+    insn_mark_trace_bits(handed ? a->y : 0, 16);
 }
 
 /* 1 if an area is left to give (one taken back, or the schedule's next). */
@@ -320,7 +366,7 @@ static int rc_nc_serve(struct rc_run *run, uint32_t k, struct line_msg *m)
     int got = line_try_recv(k, m) == LINE_OK, handed = 0;
     if (got) {
         rc_nc_message(run, k, m);
-        if (n->state == RC_NC_PARKED && run->status == LINK_OK)
+        if (n->asking && run->status == LINK_OK)
             handed = rc_nc_give(run, k, m);
     }
     /* A second message there already is served in the next pass. */

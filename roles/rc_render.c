@@ -227,15 +227,16 @@ void rc_render_frame(struct line_msg *m)
         counting = 1;
         insn_mark_count_from_here();
     }
-    uint8_t balance = wire_get_u8(m->payload + 4);
-    uint8_t flags = wire_get_u8(m->payload + 5);
-    uint32_t k = wire_get_u32(m->payload + 8);
+    struct link_render_args args;
+    link_render_args_get(m->payload, &args);
+    uint8_t flags = args.flags;
     memset(&run, 0, sizeof run);
     run.status = LINK_OK;
-    uint32_t planned = m->len >= 12 + LINK_INJECT_FIXED_SIZE ? wire_get_u8(m->payload + 12) : 0;
-    if (12u + LINK_INJECT_SIZE(planned) > m->len)
+    const uint32_t at = LINK_RENDER_ARGS_SIZE;
+    uint32_t planned = m->len >= at + LINK_INJECT_FIXED_SIZE ? wire_get_u8(m->payload + at) : 0;
+    if (at + LINK_INJECT_SIZE(planned) > m->len)
         planned = 0; /* the DM checked it: cannot happen */
-    rc_nc_begin(&run, m->payload + 12 + LINK_INJECT_FIXED_SIZE, planned);
+    rc_nc_begin(&run, m->payload + at + LINK_INJECT_FIXED_SIZE, planned);
     if (run.ncs == 0)
         rc_fail(&run, LINK_ERR_CHECK, "all %u NCs failed in earlier frames; %u are left",
                 board_ncores - UNITS_FIRST_NC, 0);
@@ -253,11 +254,13 @@ void rc_render_frame(struct line_msg *m)
     }
     if (bcast == 0) {
         blob_bytes = (uint32_t)blob->bytes;
-        int r = areas_init(&run.sched, (enum areas_mode)balance, blob->scene.width,
-                           blob->scene.height, run.ncs, k);
+        int r = areas_init(&run.sched, (enum areas_mode)args.balance, blob->scene.width,
+                           blob->scene.height, run.ncs, args.areas);
+        if (r == AREAS_OK && args.guided && args.balance == LINK_BALANCE_DECREASING)
+            r = areas_set_guided_factor(&run.sched, args.guided);
         if (r != AREAS_OK)
             rc_fail(&run, LINK_ERR_BAD_ARGS, "area schedule: error %d (balance %u)", (uint32_t)r,
-                    balance);
+                    args.balance);
     }
     if (run.status == LINK_OK &&
         rc_frame_memory(&run, blob->scene.width, blob->scene.height) == 0) {

@@ -9,10 +9,18 @@
  * stop within GIGS_WATCH_FLOOR_MS, and in either case its progress word
  * (gigs_nc_progress, +1 per pixel) standing still for GIGS_WATCH_FLOOR_MS:
  * an area that costs more than expected is no failure while its pixels
- * come.  A failed NC is out for good: its broadcast read is ended for it, the DC drops its later runs, the RC never writes to
- * it again, and the area it held goes to the next NC that asks.  An NC that
- * asks while nothing is left waits (parked) until the last busy NC is done:
- * an area may still come back. */
+ * come.  A failed NC is out for good: its broadcast read is ended for it,
+ * the DC drops its later runs, the RC never writes to it again, and the
+ * areas it held go to the next NCs that ask.  An NC that asks while nothing
+ * is left waits (parked) until the last busy NC is done: an area may still
+ * come back.
+ *
+ * Asking ahead (the default; LINK_RENDER_ASK_WHEN_DONE turns it off): an
+ * NC asks for its next area about one round trip before it expects to
+ * finish the one it renders, so it may hold two, the one it renders and the
+ * next.  Each request (MSG_NC_REQ) and each MSG_NC_DONE carries how many
+ * areas the NC has finished in this frame; the RC takes that many of its
+ * oldest held areas as done. */
 #ifndef LINKS1_ROLES_RC_RUN_H
 #define LINKS1_ROLES_RC_RUN_H
 
@@ -27,17 +35,24 @@
 enum rc_nc_state {
     RC_NC_OUT = 0,  /* not in this frame (failed before) */
     RC_NC_IDLE,     /* started, no request yet */
-    RC_NC_BUSY,     /* holds an area */
-    RC_NC_PARKED,   /* asked while nothing was left */
+    RC_NC_BUSY,     /* holds an area or two (and may be asking for the next) */
+    RC_NC_PARKED,   /* holds none and asked while nothing was left */
     RC_NC_STOPPING, /* told to stop */
     RC_NC_STOPPED,  /* stopped, or failed in this frame */
     RC_NC_STATES,
 };
 
+/* Areas one NC may hold: the one it renders and the one it asked ahead for. */
+#define RC_NC_HELD_MAX 2u
+
 struct rc_nc {
     uint8_t state;       /* enum rc_nc_state */
-    struct area area;    /* the area it holds (BUSY) */
-    uint64_t since;      /* ticks: when it got its area, start or stop */
+    uint8_t nheld;       /* areas it holds, oldest first in held[] */
+    uint8_t asking;      /* 1: its last request is not answered yet */
+    struct area held[RC_NC_HELD_MAX];
+    uint32_t finished;   /* areas it said it finished in this frame */
+    uint64_t since;      /* ticks: when its oldest held area became its
+                            current one, or its start or stop */
     uint32_t progress;   /* its progress word when last looked at */
     uint64_t moved;      /* ticks: when that word last changed */
     uint32_t peers_then; /* every NC's progress words summed, then */

@@ -78,8 +78,13 @@ static void render_usage(FILE *out)
             "                   low-resolution pre-render, for a unit computer with VFP or,\n"
             "                   with --fpu none, without (docs/renderer.md)\n"
             "  --balance M      static, dynamic or decreasing (default decreasing)\n"
-            "  --areas K        areas of the dynamic grid, smallest-area bound of decreasing\n"
-            "                   (default %d)\n"
+            "  --areas K        areas of the dynamic grid (default %d); smallest-area bound of\n"
+            "                   decreasing (default: by NC count, docs/areas.md)\n"
+            "  --guided F       decreasing: each area takes 1/(F * NCs) of what is left\n"
+            "                   (1..64; default: by NC count)\n"
+            "  --ask R          when an NC asks for its next area: ahead (default), one\n"
+            "                   round trip before it expects to finish, or finished (the\n"
+            "                   paper's rule), once it has finished one\n"
             "  --frame N        render frame N (default 0)\n"
             "  --frames A:B     render frames A..B, writing OUT-000A.png ... (the DM prepares\n"
             "                   frame k+1 while frame k renders)\n"
@@ -121,6 +126,8 @@ enum render_opt_code {
     RENDER_OPT_NCS = CLI_OWN_CODES,
     RENDER_OPT_BALANCE,
     RENDER_OPT_AREAS,
+    RENDER_OPT_GUIDED,
+    RENDER_OPT_ASK,
     RENDER_OPT_FRAME,
     RENDER_OPT_FRAMES,
     RENDER_OPT_SIZE,
@@ -154,6 +161,8 @@ static const struct option render_options[] = {
     {"ncs", required_argument, NULL, RENDER_OPT_NCS},
     {"balance", required_argument, NULL, RENDER_OPT_BALANCE},
     {"areas", required_argument, NULL, RENDER_OPT_AREAS},
+    {"guided", required_argument, NULL, RENDER_OPT_GUIDED},
+    {"ask", required_argument, NULL, RENDER_OPT_ASK},
     {"frame", required_argument, NULL, RENDER_OPT_FRAME},
     {"frames", required_argument, NULL, RENDER_OPT_FRAMES},
     {"size", required_argument, NULL, RENDER_OPT_SIZE},
@@ -228,6 +237,19 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
         if (cli_long(c, 10, 1, 1 << 20, &n) < 0)
             return -1;
         o->args.areas = (uint32_t)n;
+        return 0;
+    case RENDER_OPT_GUIDED:
+        if (cli_long(c, 10, 1, AREAS_MAX_GUIDED_FACTOR, &n) < 0)
+            return -1;
+        o->args.guided = (uint8_t)n;
+        return 0;
+    case RENDER_OPT_ASK:
+        if (strcmp(c->arg, "ahead") == 0)
+            o->args.flags &= (uint8_t)~LINK_RENDER_ASK_WHEN_DONE;
+        else if (strcmp(c->arg, "finished") == 0)
+            o->args.flags |= LINK_RENDER_ASK_WHEN_DONE;
+        else
+            return cli_bad_value(c, "ahead or finished");
         return 0;
     case RENDER_OPT_FRAME:
     case RENDER_OPT_FRAMES:
@@ -455,16 +477,39 @@ static int render_read_scenes(struct render_opts *o)
     return 0;
 }
 
-static void render_summary(const char *path, const struct link_render_stats *s,
-                           const struct image *img, uint8_t balance, double seconds,
-                           long long upload_ms, long long pull_ms)
+/* "decreasing, K 32768, factor 2, asking ahead": the schedule the RC ran. */
+static void render_schedule_name(const struct link_render_args *a, uint32_t ncs, char *out,
+                                 size_t cap)
 {
+    const char *ask = a->flags & LINK_RENDER_ASK_WHEN_DONE ? "asking when finished"
+                                                            : "asking ahead";
+    enum areas_mode m = (enum areas_mode)a->balance;
+    uint32_t k = a->areas ? a->areas : AREAS_DEFAULT_K, factor = a->guided;
+    if (m == AREAS_DECREASING) {
+        uint32_t rule_k, rule_factor;
+        areas_decreasing_defaults(ncs, &rule_k, &rule_factor);
+        k = a->areas ? a->areas : rule_k;
+        factor = a->guided ? a->guided : rule_factor;
+        snprintf(out, cap, "%s, K %u, factor %u, %s", areas_mode_name(m), (unsigned)k,
+                 (unsigned)factor, ask);
+    } else if (m == AREAS_DYNAMIC) {
+        snprintf(out, cap, "%s, K %u, %s", areas_mode_name(m), (unsigned)k, ask);
+    } else {
+        snprintf(out, cap, "%s, %s", areas_mode_name(m), ask);
+    }
+}
+
+static void render_summary(const char *path, const struct link_render_stats *s,
+                           const struct image *img, const struct link_render_args *a,
+                           double seconds, long long upload_ms, long long pull_ms)
+{
+    char sched[96];
+    render_schedule_name(a, s->ncs, sched, sizeof sched);
     printf("links1 render: frame %u %dx%d -> %s: %u NCs, %u areas (%s), %.1f s "
            "(board: prepare %u ms, render %u ms; upload %lld ms, pull %lld ms); rays %llu primary, %llu shadow, "
            "%llu reflection, %llu refraction, %llu transmission; tests %llu box, %llu primitive "
            "(%llu by primary rays); %u pixels lost precision; memory high-water DM %u, RC %u, NC %u of %u bytes\n",
-           s->frame, img->width, img->height, path, s->ncs, s->areas,
-           areas_mode_name((enum areas_mode)balance), seconds, s->prepare_ms, s->render_ms,
+           s->frame, img->width, img->height, path, s->ncs, s->areas, sched, seconds, s->prepare_ms, s->render_ms,
            upload_ms, pull_ms,
            (unsigned long long)s->primary, (unsigned long long)s->shadow,
            (unsigned long long)s->reflection, (unsigned long long)s->refraction,
@@ -597,7 +642,7 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         }
         o->wall.write += board_now_ms() - t2;
         /* The scene's upload time is told with its first frame. */
-        render_summary(path, &s, &img, a.balance, (double)(board_now_ms() - t0) / 1000.0,
+        render_summary(path, &s, &img, &a, (double)(board_now_ms() - t0) / 1000.0,
                        f == first ? upload_ms : 0, pull_ms);
         o->traced_w = (uint32_t)img.width;
         o->traced_h = (uint32_t)img.height;
@@ -636,6 +681,7 @@ static int render_write_trace(const struct render_opts *o, const char *marks_pat
     }
     t.balance = o->args.balance;
     t.k = o->args.areas;
+    t.guided = o->args.guided;
     t.flags = o->args.flags & ~(uint32_t)LINK_RENDER_TRACE;
     t.broadcast_bytes = o->traced_bytes;
     struct out_file of;

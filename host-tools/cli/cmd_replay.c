@@ -9,6 +9,7 @@
 #include "host-tools/cli/links1_cmds.h"
 #include "host-tools/trace/replay.h"
 #include "host-tools/trace/trace_file.h"
+#include "proto/render_link.h"
 
 #define REPLAY_MAX_COUNTS 64
 
@@ -17,7 +18,7 @@ struct replay_opts {
     uint32_t ncs[REPLAY_MAX_COUNTS];
     int ncounts;
     struct replay_cfg cfg;
-    int have_balance, have_k, per_nc, check;
+    int have_balance, have_k, have_guided, have_ask, per_nc, check;
     uint32_t scale;
 };
 
@@ -27,30 +28,32 @@ static void replay_usage(FILE *out)
             "usage: links1 replay TRACE --ncs LIST [options]\n"
             "Replays a frame traced on the board (links1 render --trace) on equal-speed unit\n"
             "computers: one line per NC count with the frame time, the speed-up over one NC,\n"
-            "and how busy the NCs were.\n"
+            "and how busy the NCs were.  Without the what-if options below it replays what\n"
+            "the board does: the trace's schedule (where the board chose K and the factor\n"
+            "by its NC count, they are chosen for each replayed count) and its rule of asking.\n"
             "options:\n"
             "  --ncs LIST       NC counts, e.g. 1,2,4,8,16,32,64,128,254\n"
-            "  --balance M      static, dynamic or decreasing (default: the trace's)\n"
+            "what-if options:\n"
+            "  --balance M      static, dynamic or decreasing\n"
             "  --areas K        areas of the dynamic grid / smallest-area bound of decreasing\n"
-            "                   (default: the trace's)\n"
             "  --mips R         instructions per microsecond of every unit (default %.1f)\n"
             "  --line-us U      latency of one serial-line message (default %.0f)\n"
             "  --byte-us B      microseconds per byte on a line (default %.1f: 19,200 baud)\n"
-            "  --prefetch       an NC asks for its next area one round trip before it\n"
-            "                   expects to finish the current one\n"
+            "  --ask R          ahead: an NC asks for its next area one round trip before\n"
+            "                   it expects to finish the current one; finished: once it\n"
+            "                   has finished it (the paper's rule); --prefetch = --ask ahead\n"
             "  --guided F       decreasing: each area takes 1/(F * NCs) of what is left\n"
-            "                   (default %u)\n"
             "  --pipelined      the DM prepared the frame during the previous one: the\n"
             "                   frame starts at the RC's broadcast\n"
             "  --first-in-broadcast  the RC puts each NC's first area into the broadcast\n"
             "  --as-recorded    each NC gets the areas the board gave it, in its order\n"
             "  --per-nc         also print each NC's instructions\n"
-            "  --check          check that the replay is a legal handout of the schedule\n"
+            "  --check          check that the board's handout in the trace is its\n"
+            "                   schedule's, and each replay a legal handout of its own\n"
             "  --scale F        price the frame at F times the traced width and height,\n"
             "                   each pixel at its traced pixel's instructions (a frame\n"
             "                   traced at a reduced size)\n",
-            REPLAY_DEFAULT_MIPS, REPLAY_DEFAULT_LINE_US, REPLAY_DEFAULT_BYTE_US,
-            AREAS_GUIDED_FACTOR);
+            REPLAY_DEFAULT_MIPS, REPLAY_DEFAULT_LINE_US, REPLAY_DEFAULT_BYTE_US);
 }
 
 enum replay_opt_code {
@@ -61,6 +64,7 @@ enum replay_opt_code {
     REPLAY_OPT_LINE_US,
     REPLAY_OPT_BYTE_US,
     REPLAY_OPT_PREFETCH,
+    REPLAY_OPT_ASK,
     REPLAY_OPT_GUIDED,
     REPLAY_OPT_PIPELINED,
     REPLAY_OPT_FIRST_IN_BROADCAST,
@@ -78,6 +82,7 @@ static const struct option replay_options[] = {
     {"line-us", required_argument, NULL, REPLAY_OPT_LINE_US},
     {"byte-us", required_argument, NULL, REPLAY_OPT_BYTE_US},
     {"prefetch", no_argument, NULL, REPLAY_OPT_PREFETCH},
+    {"ask", required_argument, NULL, REPLAY_OPT_ASK},
     {"guided", required_argument, NULL, REPLAY_OPT_GUIDED},
     {"pipelined", no_argument, NULL, REPLAY_OPT_PIPELINED},
     {"first-in-broadcast", no_argument, NULL, REPLAY_OPT_FIRST_IN_BROADCAST},
@@ -140,11 +145,19 @@ static int replay_take(struct replay_opts *o, const struct cli *c, int code)
         return cli_double(c, 0, 0, 1e9, "microseconds, 0 or more", &o->cfg.byte_us);
     case REPLAY_OPT_PREFETCH:
         o->cfg.prefetch = 1;
+        o->have_ask = 1;
+        return 0;
+    case REPLAY_OPT_ASK:
+        if (strcmp(c->arg, "ahead") != 0 && strcmp(c->arg, "finished") != 0)
+            return cli_bad_value(c, "ahead or finished");
+        o->cfg.prefetch = strcmp(c->arg, "ahead") == 0;
+        o->have_ask = 1;
         return 0;
     case REPLAY_OPT_GUIDED:
         if (cli_long(c, 10, 1, AREAS_MAX_GUIDED_FACTOR, &n) < 0)
             return -1;
         o->cfg.guided = (uint32_t)n;
+        o->have_guided = 1;
         return 0;
     case REPLAY_OPT_PIPELINED:
         o->cfg.pipelined = 1;
@@ -220,6 +233,14 @@ int cmd_replay(int argc, char **argv)
         o.cfg.balance = (enum areas_mode)t.balance;
     if (!o.have_k)
         o.cfg.k = t.k;
+    if (!o.have_guided)
+        o.cfg.guided = t.guided;
+    if (!o.have_ask)
+        o.cfg.prefetch = !(t.flags & LINK_RENDER_ASK_WHEN_DONE);
+    int what_if = o.have_balance || o.have_k || o.have_guided || o.have_ask || o.cfg.pipelined ||
+                  o.cfg.first_in_broadcast || o.cfg.mips != REPLAY_DEFAULT_MIPS ||
+                  o.cfg.line_us != REPLAY_DEFAULT_LINE_US ||
+                  o.cfg.byte_us != REPLAY_DEFAULT_BYTE_US;
     if (o.scale > 1)
         printf("scaled %ux: each pixel of the %ux%u frame priced at its traced pixel's\n",
                (unsigned)o.scale, (unsigned)t.width, (unsigned)t.height);
@@ -228,7 +249,20 @@ int cmd_replay(int argc, char **argv)
            (unsigned)t.nareas, (unsigned)t.ncs, areas_mode_name((enum areas_mode)t.balance),
            (unsigned long long)t.dm_prepare, (unsigned long long)t.rc_broadcast,
            (unsigned)t.broadcast_bytes);
+    printf("replayed: %s; %s%s\n", what_if ? "a what-if" : "what the board does",
+           o.cfg.prefetch ? "NCs asking ahead" : "NCs asking when finished",
+           o.cfg.balance == AREAS_DECREASING && (!o.cfg.k || !o.cfg.guided)
+               ? "; K and factor by NC count where not given"
+               : "");
     int rc = 0;
+    if (o.check && o.scale == 1) {
+        if (replay_check_board(&t, err, sizeof err) != 0) {
+            fprintf(stderr, "links1 replay: %s: the board's handout: %s\n", o.file, err);
+            trace_free(&t);
+            return 1;
+        }
+        printf("board handout: the schedule's %u areas in its order\n", (unsigned)t.nareas);
+    }
     struct replay_cfg one = o.cfg;
     one.ncs = 1;
     one.as_recorded = 0;
@@ -250,12 +284,20 @@ int cmd_replay(int argc, char **argv)
         uint64_t most = 0;
         for (uint32_t n = 0; n < c.ncs; n++)
             most = res.nc_insns[n] > most ? res.nc_insns[n] : most;
+        uint32_t k = c.k ? c.k : AREAS_DEFAULT_K, factor = c.guided;
+        if (c.balance == AREAS_DECREASING) {
+            uint32_t rule_k, rule_factor;
+            areas_decreasing_defaults(c.ncs, &rule_k, &rule_factor);
+            k = c.k ? c.k : rule_k;
+            factor = c.guided ? c.guided : rule_factor;
+        }
         printf("ncs %u balance %s areas %u frame_ms %.1f speed-up %.2f busy %.1f%% rc_busy "
-               "%.1f%% exact %u/%u largest_nc_insns %llu\n", (unsigned)c.ncs,
-               c.as_recorded ? "as-recorded" : areas_mode_name(c.balance), (unsigned)res.nareas,
-               res.frame_us / 1000.0, base.frame_us / res.frame_us, 100.0 * res.busy,
-               100.0 * res.rc_busy, (unsigned)res.exact, (unsigned)res.nareas,
-               (unsigned long long)most);
+               "%.1f%% exact %u/%u largest_nc_insns %llu k %u factor %u ask %s\n",
+               (unsigned)c.ncs, c.as_recorded ? "as-recorded" : areas_mode_name(c.balance),
+               (unsigned)res.nareas, res.frame_us / 1000.0, base.frame_us / res.frame_us,
+               100.0 * res.busy, 100.0 * res.rc_busy, (unsigned)res.exact, (unsigned)res.nareas,
+               (unsigned long long)most, (unsigned)k, (unsigned)factor,
+               c.prefetch ? "ahead" : "finished");
         if (o.per_nc)
             for (uint32_t n = 0; n < c.ncs; n++)
                 printf("  nc %u insns %llu\n", (unsigned)n, (unsigned long long)res.nc_insns[n]);

@@ -400,3 +400,38 @@ out:
     free(last_start);
     return rc;
 }
+
+int replay_check_board(const struct trace *t, char *err, size_t cap)
+{
+    struct areas sched;
+    int st = areas_init(&sched, (enum areas_mode)t->balance, t->width, t->height, t->ncs, t->k);
+    if (st == AREAS_OK && t->guided && t->balance == AREAS_DECREASING)
+        st = areas_set_guided_factor(&sched, t->guided);
+    if (st != AREAS_OK)
+        return replay_fail(err, cap, "the trace's schedule: %s", areas_strerror(st));
+    uint32_t *next = calloc(t->ncs, sizeof *next);
+    if (!next)
+        return replay_fail(err, cap, "out of memory");
+    int rc = 0;
+    for (uint32_t i = 0; i < t->nareas && rc == 0; i++) {
+        const struct trace_area *a = &t->areas[i];
+        struct area want;
+        if (!areas_next(&sched, &want))
+            rc = replay_fail(err, cap, "the board handed out %" PRIu32 " areas, the schedule "
+                             "has %" PRIu32, t->nareas, areas_count(&sched));
+        else if (want.x != a->x || want.y != a->y || want.w != a->w || want.h != a->h)
+            rc = replay_fail(err, cap, "area %" PRIu32 " of the board, %" PRIu32 "x%" PRIu32
+                             " at (%" PRIu32 ",%" PRIu32 "), is not the schedule's next, %"
+                             PRIu32 "x%" PRIu32 " at (%" PRIu32 ",%" PRIu32 ")", i, a->w, a->h,
+                             a->x, a->y, want.w, want.h, want.x, want.y);
+        else if (a->nc >= t->ncs || a->order != next[a->nc]++)
+            rc = replay_fail(err, cap, "area %" PRIu32 ": NC %" PRIu32 " drew it as its area %"
+                             PRIu32 ", out of its order", i, a->nc, a->order);
+    }
+    struct area more;
+    if (rc == 0 && areas_next(&sched, &more))
+        rc = replay_fail(err, cap, "the board handed out %" PRIu32 " areas, the schedule has %"
+                         PRIu32, t->nareas, areas_count(&sched));
+    free(next);
+    return rc;
+}

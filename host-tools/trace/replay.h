@@ -37,10 +37,10 @@
 struct replay_cfg {
     uint32_t ncs;
     enum areas_mode balance;
-    uint32_t k;           /* --areas (0: AREAS_DEFAULT_K) */
+    uint32_t k;           /* --areas (0: the schedule's default, areas_init) */
     double mips, line_us, byte_us;
     int prefetch;         /* ask for the next area a round trip before the end */
-    uint32_t guided;      /* decreasing: the guided factor (0: AREAS_GUIDED_FACTOR) */
+    uint32_t guided;      /* decreasing: the guided factor (0: by NC count) */
     int pipelined;        /* the DM prepared the frame while the previous one
                              rendered: the frame starts at the broadcast */
     int first_in_broadcast; /* the RC puts each NC's first area into the
@@ -83,5 +83,11 @@ int replay_run(const struct trace *t, const struct replay_cfg *c, struct replay_
 int replay_check_legal(const struct trace *t, const struct replay_cfg *c,
                        const struct replay_result *r, char *err, size_t cap);
 void replay_free(struct replay_result *r);
+/* Checks the board's own handout in t: its areas, in the order the RC
+ * handed them out, are the schedule the trace records (balance, K and
+ * factor, the defaults for the trace's NC count where it records 0), and
+ * each NC's areas are numbered 0, 1, ... in that order.  0, or -1 with err
+ * naming the first difference. */
+int replay_check_board(const struct trace *t, char *err, size_t cap);
 
 #endif

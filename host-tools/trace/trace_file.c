@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "proto/areas.h"
+#include "proto/render_link.h"
 
 __attribute__((format(printf, 3, 4)))
 static int trace_fail(char *err, size_t cap, const char *fmt, ...)
@@ -94,8 +95,8 @@ int trace_write(FILE *f, const char *name, const struct trace *t, char *err, siz
 {
     fprintf(f, "%s %d\n", TRACE_MAGIC, TRACE_VERSION);
     fprintf(f, "screen %" PRIu32 " %" PRIu32 "\n", t->width, t->height);
-    fprintf(f, "run ncs %" PRIu32 " balance %s k %" PRIu32 " flags %" PRIu32 "\n", t->ncs,
-            areas_mode_name((enum areas_mode)t->balance), t->k, t->flags);
+    fprintf(f, "run ncs %" PRIu32 " balance %s k %" PRIu32 " guided %" PRIu32 " flags %" PRIu32
+            "\n", t->ncs, areas_mode_name((enum areas_mode)t->balance), t->k, t->guided, t->flags);
     fprintf(f, "dm_prepare %" PRIu64 "\n", t->dm_prepare);
     fprintf(f, "broadcast bytes %" PRIu32 " rc %" PRIu64 "\n", t->broadcast_bytes,
             t->rc_broadcast);
@@ -197,8 +198,9 @@ static int trace_parse(struct trace_in *in, struct trace *t, char *err, size_t c
     } while (0)
     p = trace_line(in);
     WANT(p && trace_word(&p, TRACE_MAGIC) == 0 && trace_num(&p, U32, &v[0]) == 0,
-         "not a links1 trace (want '" TRACE_MAGIC " 1')");
-    WANT(v[0] == TRACE_VERSION, "trace version not 1");
+         "not a links1 trace (want '" TRACE_MAGIC " 2')");
+    WANT(v[0] == 1 || v[0] == TRACE_VERSION, "trace version not 1 or 2");
+    int v1 = v[0] == 1;
     p = trace_line(in);
     WANT(p && trace_word(&p, "screen") == 0 && trace_num(&p, AREAS_MAX_DIM, &v[0]) == 0 &&
          trace_num(&p, AREAS_MAX_DIM, &v[1]) == 0 && trace_end_of_line(p) == 0 && v[0] && v[1],
@@ -208,17 +210,29 @@ static int trace_parse(struct trace_in *in, struct trace *t, char *err, size_t c
     p = trace_line(in);
     WANT(p && trace_word(&p, "run") == 0 && trace_word(&p, "ncs") == 0 &&
          trace_num(&p, 4096, &v[0]) == 0 && v[0] && trace_word(&p, "balance") == 0 &&
-         sscanf(p, " %15s", mode) == 1, "want 'run ncs N balance MODE k K flags F'");
+         sscanf(p, " %15s", mode) == 1, "want 'run ncs N balance MODE k K guided G flags F'");
     enum areas_mode m;
     WANT(areas_mode_parse(mode, &m) == AREAS_OK, "unknown balance mode");
     p = strstr(p, mode) + strlen(mode);
+    v[3] = 0;
     WANT(trace_word(&p, "k") == 0 && trace_num(&p, U32, &v[1]) == 0 &&
+         (v1 || (trace_word(&p, "guided") == 0 &&
+                 trace_num(&p, AREAS_MAX_GUIDED_FACTOR, &v[3]) == 0)) &&
          trace_word(&p, "flags") == 0 && trace_num(&p, U32, &v[2]) == 0 &&
-         trace_end_of_line(p) == 0, "want 'run ncs N balance MODE k K flags F'");
+         trace_end_of_line(p) == 0, "want 'run ncs N balance MODE k K guided G flags F'");
     t->ncs = (uint32_t)v[0];
     t->balance = (uint32_t)m;
     t->k = (uint32_t)v[1];
+    t->guided = (uint32_t)v[3];
     t->flags = (uint32_t)v[2];
+    if (v1) {
+        /* The board of version 1: K 1024 and factor 2 by default, NCs
+         * asking once they had finished. */
+        if (t->k == 0)
+            t->k = 1024;
+        t->guided = 2;
+        t->flags |= LINK_RENDER_ASK_WHEN_DONE;
+    }
     p = trace_line(in);
     WANT(p && trace_word(&p, "dm_prepare") == 0 && trace_num(&p, U64, &t->dm_prepare) == 0 &&
          trace_end_of_line(p) == 0, "want 'dm_prepare INSNS'");

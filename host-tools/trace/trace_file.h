@@ -20,7 +20,7 @@
 #include <stdio.h>
 
 #define TRACE_MAGIC "links1-trace"
-#define TRACE_VERSION 1
+#define TRACE_VERSION 2
 #define TRACE_ERR_MAX 256
 
 struct trace_area {
@@ -38,7 +38,8 @@ struct trace {
     uint32_t width, height;
     uint32_t ncs;       /* NCs on the board */
     uint32_t balance;   /* enum areas_mode of the board's run */
-    uint32_t k;         /* its --areas K (0: the default) */
+    uint32_t k;         /* its --areas K (0: the board's default for its NCs) */
+    uint32_t guided;    /* its --guided F (0: the board's default for its NCs) */
     uint32_t flags;     /* enum link_render_flag of the run */
     uint64_t dm_prepare;   /* DM: render_blob_prepare of the frame */
     uint64_t rc_broadcast; /* RC: the blob into the broadcast block */

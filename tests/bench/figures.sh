@@ -79,7 +79,9 @@ for n in $BOARD7; do
     BOARD_S[$n]=$(awk -v a="$one" -v b="$(nc_max "$TMP/b7-$n.log")" 'BEGIN { printf "%.2f", a / b }')
 done
 "$LINKS1" replay "$T7" --ncs "$REPLAY7" >"$TMP/r7-default.txt" || fail "replay (defaults)"
-# Tuned: per NC count, the best of TUNED_K x TUNED_G.
+"$LINKS1" replay "$T7" --ncs "$REPLAY7" --ask finished >"$TMP/r7-paper.txt" ||
+    fail "replay (the paper's rule)"
+# What-if, tuned: per NC count, the best of TUNED_K x TUNED_G.
 : >"$TMP/r7-tuned.txt"
 for n in ${REPLAY7//,/ }; do
     bestline=
@@ -96,29 +98,31 @@ for n in ${REPLAY7//,/ }; do
     done
     echo "$bestline" >>"$TMP/r7-tuned.txt"
 done
-paste <(field ncs <"$TMP/r7-default.txt") <(field speed-up <"$TMP/r7-default.txt") \
-    <(field speed-up <"$TMP/r7-tuned.txt") <(field busy <"$TMP/r7-tuned.txt") \
-    <(field frame_ms <"$TMP/r7-tuned.txt") <(field K <"$TMP/r7-tuned.txt") \
-    <(field G <"$TMP/r7-tuned.txt") >"$TMP/r7.tsv"
+paste <(field ncs <"$TMP/r7-default.txt") <(field speed-up <"$TMP/r7-paper.txt") \
+    <(field speed-up <"$TMP/r7-default.txt") <(field busy <"$TMP/r7-default.txt") \
+    <(field frame_ms <"$TMP/r7-default.txt") <(field k <"$TMP/r7-default.txt") \
+    <(field factor <"$TMP/r7-default.txt") <(field speed-up <"$TMP/r7-tuned.txt") \
+    <(field K <"$TMP/r7-tuned.txt") <(field G <"$TMP/r7-tuned.txt") >"$TMP/r7.tsv"
 {
-    echo "# ncs board replay-default replay-tuned"
-    while read -r n sd st busy ms k g; do
-        echo "$n ${BOARD_S[$n]:-NaN} $sd $st"
+    echo "# ncs board replay-paper-rule replay-board what-if-tuned"
+    while read -r n sp sd busy ms k g st tk tg; do
+        echo "$n ${BOARD_S[$n]:-NaN} $sp $sd $st"
     done <"$TMP/r7.tsv"
 } >"$OUT/fig7.dat"
 {
     echo "Fig. 7: speed-up over 1 NC, demo.scn at $SIZE7 (one trace: links1 render scenes/demo.scn"
     echo "--size $SIZE7 --ncs 1 --count-insns --trace T; the board's other NC counts the same"
-    echo "without --trace; replay: links1 replay T --ncs N, and tuned: links1 replay T --ncs N"
-    echo "${TUNED[*]} --areas K --guided G)."
+    echo "without --trace).  Replays: the board's rule, links1 replay T --ncs N; the paper's"
+    echo "rule, links1 replay T --ncs N --ask finished; what-if, tuned: links1 replay T --ncs N"
+    echo "${TUNED[*]} --areas K --guided G, the best K and G for each N."
     echo
-    echo "| NCs | board (1-NC total / largest NC) | replay, board's schedule | replay, tuned | tuned: K, G | tuned: NCs busy | tuned: frame s at 1 MIPS |"
-    echo "|---|---|---|---|---|---|---|"
-    while read -r n sd st busy ms k g; do
-        echo "| $n | ${BOARD_S[$n]:--} | $sd | $st | $k, $g | $busy | $(awk -v m="$ms" 'BEGIN { printf "%.1f", m / 1000 }') |"
+    echo "| NCs | board (1-NC total / largest NC) | replay, the paper's rule (ask when finished) | replay, what the board does (ask ahead) | board: K, factor | board: NCs busy | board: frame s at 1 MIPS | what-if: tuned, pipelined | tuned: K, G |"
+    echo "|---|---|---|---|---|---|---|---|---|"
+    while read -r n sp sd busy ms k g st tk tg; do
+        echo "| $n | ${BOARD_S[$n]:--} | $sp | $sd | $k, $g | $busy | $(awk -v m="$ms" 'BEGIN { printf "%.1f", m / 1000 }') | $st | $tk, $tg |"
     done <"$TMP/r7.tsv"
     echo
-    sed -n 1p "$TMP/r7-tuned.txt"
+    sed -n 1,2p "$TMP/r7-default.txt"
 } >"$OUT/fig7.md"
 gnuplot <<GP || fail "gnuplot fig7"
 set terminal pngcairo size 800,560
@@ -129,8 +133,9 @@ set logscale xy 2; set key top left; set grid
 set xrange [0.8:320]; set yrange [0.8:320]
 plot x title "linear" with lines dt 2 lc rgb "gray", \
      "$OUT/fig7.dat" using 1:2 title "board (largest NC's instructions)" with linespoints pt 7, \
-     "$OUT/fig7.dat" using 1:3 title "replay, the board's schedule" with linespoints pt 5, \
-     "$OUT/fig7.dat" using 1:4 title "replay, tuned schedule + prefetch" with linespoints pt 9, \
+     "$OUT/fig7.dat" using 1:3 title "replay, the paper's rule: NCs ask when finished" with linespoints pt 5, \
+     "$OUT/fig7.dat" using 1:4 title "replay, the board's default: NCs ask ahead" with linespoints pt 9 lw 2, \
+     "$OUT/fig7.dat" using 1:5 title "what-if: tuned K and factor, pipelined" with lines dt 3, \
      "-" using 1:2 title "LINKS-1 (paper): 63.07x at 64" with points pt 3 ps 2 lc rgb "red"
 64 63.07
 e

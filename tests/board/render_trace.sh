@@ -66,3 +66,26 @@ if render_board render_trace "$out" scenes/demo.scn -o "$out" --ncs 4 --size $SI
         echo "FAIL render_trace_dynamic_replay_legal: $(tr '\n' ' ' <"$rep")"
     fi
 fi
+# The trace records the schedule the board ran, and replay --check finds the
+# board's own handout to be that schedule, in its order: the default (K and
+# factor by NC count, NCs asking ahead; recorded as 0 0 and flags 0), and
+# the paper's rule with a given K and factor.  A replay without what-if
+# options says it replays what the board does, with the board's rule.
+rep="$RENDER_TMP/replay.txt"
+for run in default paper; do
+    tr="$RENDER_TMP/$run.trace"
+    out="$RENDER_TMP/$run.ppm"
+    extra=() want_run="run ncs 4 balance decreasing k 0 guided 0 flags 0" want_ask=ahead
+    [ $run = paper ] && extra=(--ask finished --areas 512 --guided 3) &&
+        want_run="run ncs 4 balance decreasing k 512 guided 3 flags 64" want_ask=finished
+    if render_board render_trace_$run "$out" scenes/demo.scn -o "$out" --ncs 4 --size $SIZE \
+        --trace "$tr" "${extra[@]}" &&
+        grep -qx "$want_run" "$tr" && cmp -s "$ref" "$out" &&
+        "$LINKS1" replay "$tr" --ncs 4,16 --check >"$rep" 2>&1 &&
+        grep -q "board handout: the schedule's" "$rep" && grep -q "what the board does" "$rep" &&
+        [ "$(grep -c "ask $want_ask\$" "$rep")" = 2 ] && [ "$(grep -c 'legal handout' "$rep")" = 2 ]; then
+        echo "PASS render_trace_records_schedule_$run"
+    else
+        echo "FAIL render_trace_records_schedule_$run: run line '$(grep '^run' "$tr" 2>/dev/null)'; $(tr '\n' ' ' <"$rep" 2>/dev/null)"
+    fi
+done

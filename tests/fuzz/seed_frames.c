@@ -116,7 +116,8 @@ int main(int argc, char **argv)
     wire_put_u16(p, CMD_SCENE_LOAD);
     wire_put_u32(p + LINK_CMD_FIXED_SIZE, 812);
     add(LINK_CMD, 0, p, LINK_CMD_FIXED_SIZE + LINK_SCENE_LOAD_ARGS_SIZE);
-    struct link_render_args ra = {0, LINK_BALANCE_DYNAMIC, LINK_RENDER_PREPARE_NEXT, 64};
+    struct link_render_args ra = {.frame = 0, .balance = LINK_BALANCE_DYNAMIC,
+                                  .flags = LINK_RENDER_PREPARE_NEXT, .areas = 64};
     wire_put_u16(p, CMD_RENDER);
     link_render_args_put(p + LINK_CMD_FIXED_SIZE, &ra);
     add(LINK_CMD, 0, p, LINK_CMD_FIXED_SIZE + LINK_RENDER_ARGS_SIZE);

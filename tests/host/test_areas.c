@@ -174,7 +174,9 @@ static void test_decreasing_never_grows(void)
                              ncs_list[j], k_list[m]);
                     check_fail(__FILE__, __LINE__, msg);
                 }
-                uint32_t k = k_list[m] == 0 ? AREAS_DEFAULT_K : k_list[m];
+                uint32_t k = k_list[m], factor;
+                if (k == 0)
+                    areas_decreasing_defaults(ncs_list[j], &k, &factor);
                 if (k > w * h)
                     k = w * h;
                 uint32_t floor_px = (w * h + k - 1) / k;
@@ -277,6 +279,39 @@ static void test_guided_factor(void)
     CHECK(strstr(areas_strerror(AREAS_ERR_FACTOR), "guided") != NULL);
 }
 
+/* k = 0 and no factor: the decreasing schedule takes both from the NC
+ * count (the board's default), and is then the schedule of those values. */
+static void test_decreasing_defaults_by_ncs(void)
+{
+    static const uint32_t want[][3] = {
+        {1, 32768, 2}, {8, 32768, 2}, {64, 32768, 2}, {65, 32768, 3},
+        {128, 32768, 3}, {129, 16384, 3}, {254, 16384, 3}, {4096, 16384, 3},
+    };
+    for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
+        uint32_t k = 0, factor = 0;
+        areas_decreasing_defaults(want[i][0], &k, &factor);
+        CHECK_EQ_INT(k, want[i][1]);
+        CHECK_EQ_INT(factor, want[i][2]);
+        struct areas by_rule, given;
+        CHECK_EQ_INT(areas_init(&by_rule, AREAS_DECREASING, 512, 480, want[i][0], 0), AREAS_OK);
+        CHECK_EQ_INT(areas_init(&given, AREAS_DECREASING, 512, 480, want[i][0], k), AREAS_OK);
+        CHECK_EQ_INT(areas_set_guided_factor(&given, factor), AREAS_OK);
+        struct area a, b;
+        int same = 1, more;
+        do {
+            more = areas_next(&by_rule, &a);
+            if (more != areas_next(&given, &b) ||
+                (more && (a.x != b.x || a.y != b.y || a.w != b.w || a.h != b.h)))
+                same = 0;
+        } while (more && same);
+        CHECK(same);
+    }
+    /* dynamic keeps the paper's grid of AREAS_DEFAULT_K */
+    struct areas d;
+    CHECK_EQ_INT(areas_init(&d, AREAS_DYNAMIC, 512, 480, 254, 0), AREAS_OK);
+    CHECK_EQ_INT(areas_count(&d), AREAS_DEFAULT_K);
+}
+
 static void test_mode_names_round_trip(void)
 {
     enum areas_mode m;
@@ -300,6 +335,7 @@ int main(void)
     RUN(test_decreasing_prime_width_uses_whole_scanlines);
     RUN(test_bad_arguments_are_refused);
     RUN(test_guided_factor);
+    RUN(test_decreasing_defaults_by_ncs);
     RUN(test_mode_names_round_trip);
     return check_exit();
 }

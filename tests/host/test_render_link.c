@@ -34,17 +34,19 @@ static void render_link_stats_round_trip(void)
 
 static void render_link_args_round_trip(void)
 {
-    struct link_render_args a = {7, LINK_BALANCE_DECREASING,
-                                 LINK_RENDER_NO_XCLIP | LINK_RENDER_PREPARE_NEXT, 1024};
+    struct link_render_args a = {.frame = 7, .balance = LINK_BALANCE_DECREASING,
+                                 .flags = LINK_RENDER_NO_XCLIP | LINK_RENDER_ASK_WHEN_DONE,
+                                 .guided = 5, .areas = 1024};
     uint8_t buf[LINK_RENDER_ARGS_SIZE];
     link_render_args_put(buf, &a);
     struct link_render_args b;
     link_render_args_get(buf, &b);
     CHECK_EQ_INT(b.frame, 7);
     CHECK_EQ_INT(b.balance, LINK_BALANCE_DECREASING);
-    CHECK_EQ_INT(b.flags, LINK_RENDER_NO_XCLIP | LINK_RENDER_PREPARE_NEXT);
+    CHECK_EQ_INT(b.flags, LINK_RENDER_NO_XCLIP | LINK_RENDER_ASK_WHEN_DONE);
+    CHECK_EQ_INT(b.guided, 5);
     CHECK_EQ_INT(b.areas, 1024);
-    CHECK_EQ_INT(buf[6] | buf[7], 0); /* the reserved field is zero */
+    CHECK_EQ_INT(buf[7], 0); /* the reserved byte is zero */
 }
 
 static void render_link_info_and_progress_round_trip(void)

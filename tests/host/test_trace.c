@@ -12,6 +12,7 @@
 #include "host-tools/trace/replay.h"
 #include "host-tools/trace/trace_file.h"
 #include "proto/areas.h"
+#include "proto/render_link.h"
 #include "tests/check.h"
 
 static uint32_t test_rand_state = 12345;
@@ -68,7 +69,8 @@ static void make_trace(struct trace *t, enum areas_mode mode, uint32_t w, uint32
 static int same_trace(const struct trace *a, const struct trace *b)
 {
     if (a->width != b->width || a->height != b->height || a->ncs != b->ncs ||
-        a->balance != b->balance || a->k != b->k || a->flags != b->flags ||
+        a->balance != b->balance || a->k != b->k || a->guided != b->guided ||
+        a->flags != b->flags ||
         a->dm_prepare != b->dm_prepare || a->rc_broadcast != b->rc_broadcast ||
         a->broadcast_bytes != b->broadcast_bytes || a->rc_other != b->rc_other ||
         a->nareas != b->nareas)
@@ -169,6 +171,57 @@ static void test_damaged_traces_are_refused(void)
                    "NC 7");
     expect_refused(&t, "end", NULL, "want 'end'");
     expect_refused(&t, "run ", "run ncs 2 balance guided k 4 flags 0\n", "balance mode");
+    trace_free(&t);
+}
+
+/* The schedule the board ran is in the trace: K and factor (0: by the NC
+ * count), and the rule of asking (flags).  A version-1 trace reads as the
+ * board of then ran: K 1024 and factor 2 by default, asking when finished.
+ * replay_check_board finds the board's handout to be that schedule and
+ * names an area out of it. */
+static void test_trace_records_schedule(void)
+{
+    struct trace t, back;
+    char err[TRACE_ERR_MAX], path[128], v1[128];
+    snprintf(path, sizeof path, "%s/sched.trace", test_dir);
+    snprintf(v1, sizeof v1, "%s/v1.trace", test_dir);
+    make_trace(&t, AREAS_DECREASING, 40, 30, 3, 0);
+    t.flags = LINK_RENDER_ASK_WHEN_DONE;
+    CHECK_EQ_INT(replay_check_board(&t, err, sizeof err), 0);
+    t.guided = 3; /* no longer the schedule the areas came from */
+    CHECK(replay_check_board(&t, err, sizeof err) != 0 && strstr(err, "not the schedule's next"));
+    t.guided = 0;
+    struct trace_area keep = t.areas[1];
+    t.areas[1].order = 7;
+    CHECK(replay_check_board(&t, err, sizeof err) != 0 && strstr(err, "out of its order"));
+    t.areas[1] = keep;
+    CHECK_EQ_INT(write_trace(path, &t, err, sizeof err), 0);
+    int r = trace_read(path, &back, err, sizeof err);
+    CHECK(r == 0 && same_trace(&t, &back));
+    if (r == 0)
+        trace_free(&back);
+    /* the same file as version 1 wrote it */
+    FILE *in = fopen(path, "r"), *out = fopen(v1, "w");
+    char line[1 << 16];
+    while (in && out && fgets(line, sizeof line, in)) {
+        if (strncmp(line, "links1-trace", 12) == 0)
+            fputs("links1-trace 1\n", out);
+        else if (strncmp(line, "run ", 4) == 0)
+            fprintf(out, "run ncs 3 balance decreasing k 0 flags 0\n");
+        else
+            fputs(line, out);
+    }
+    if (in)
+        fclose(in);
+    if (out)
+        fclose(out);
+    r = trace_read(v1, &back, err, sizeof err);
+    CHECK(r == 0 && back.k == 1024 && back.guided == 2 &&
+          (back.flags & LINK_RENDER_ASK_WHEN_DONE));
+    if (r == 0)
+        trace_free(&back);
+    expect_refused(&t, "run ", "run ncs 3 balance decreasing k 0 guided 65 flags 0\n",
+                   "guided G");
     trace_free(&t);
 }
 
@@ -356,6 +409,7 @@ int main(void)
     }
     RUN(test_trace_round_trips);
     RUN(test_damaged_traces_are_refused);
+    RUN(test_trace_records_schedule);
     RUN(test_static_replay_is_exact);
     RUN(test_dynamic_replay_is_legal);
     RUN(test_replay_refuses_bad_settings);
