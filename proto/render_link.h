@@ -41,8 +41,11 @@ enum link_render_flag {
     LINK_RENDER_ASK_WHEN_DONE = 1u << 6, /* the paper's rule: an NC asks for its
                                             next area once it has finished one
                                             (default: one round trip ahead) */
+    LINK_RENDER_CLIP_LISTS = 1u << 7,   /* the paper's clipping lists (a Y list
+                                           per area, an X window per pixel)
+                                           instead of clipping in the tree */
 };
-#define LINK_RENDER_FLAGS_ALL 0x7Fu
+#define LINK_RENDER_FLAGS_ALL 0xFFu
 
 /* Balancing modes: the values of proto/areas.h enum areas_mode. */
 enum link_balance { LINK_BALANCE_STATIC = 0, LINK_BALANCE_DYNAMIC = 1, LINK_BALANCE_DECREASING = 2 };

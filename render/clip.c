@@ -172,7 +172,8 @@ render_status_t render_area_marked(render_ctx_t *ctx, render_clip_t *clip,
     if (area->w == 0 || area->h == 0 || area->x >= f->width || area->w > f->width - area->x ||
         area->y >= f->height || area->h > f->height - area->y)
         return RENDER_ERR_AREA;
-    int clipping = opt->y_clip || opt->x_clip;
+    int in_tree = opt->y_clip && opt->x_clip && !opt->lists;
+    int clipping = (opt->y_clip || opt->x_clip) && !in_tree;
     if (clipping) {
         if (clip->frame != f)
             return RENDER_ERR_AREA;
@@ -184,7 +185,9 @@ render_status_t render_area_marked(render_ctx_t *ctx, render_clip_t *clip,
         rgb8_t *row = out + (size_t)(py - area->y) * area->w;
         for (uint32_t px = area->x; px < area->x + area->w; px++) {
             rgb8_t c;
-            if (!clipping) {
+            if (in_tree) {
+                c = render_pixel_screen(ctx, px, py);
+            } else if (!clipping) {
                 c = render_pixel(ctx, px, py);
             } else if (opt->x_clip) {
                 uint32_t n = render_clip_x(clip, (int32_t)px);

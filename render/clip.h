@@ -59,6 +59,12 @@ typedef struct {
     uint8_t x_clip; /* 1: X clipping per pixel; 0: the whole Y list */
     volatile uint32_t *progress; /* if set, +1 per pixel done: whoever watches
                                     for a stalled renderer reads it */
+    uint8_t lists;  /* with y_clip and x_clip: 1, the paper's lists (a Y list
+                       per area, an X window per pixel); 0, the same
+                       clipping done in the hierarchy per pixel
+                       (render_pixel_screen): no set-up per area, and a cost
+                       per pixel that follows the tree's depth, not the
+                       clusters near the area */
 } render_clip_options_t;
 
 /* Working-set bytes an NC needs for this frame's clipping. */

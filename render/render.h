@@ -191,6 +191,9 @@ typedef struct {
     uint64_t weight_cut;    /* reflected or refracted rays not traced: their
                                weight fell below min_weight (adaptive depth);
                                host only, not summed over the serial lines */
+    uint64_t screen_tests;  /* tree rectangles looked at by primary rays
+                               walked by screen (render_pixel_screen); host
+                               only, like weight_cut */
 } render_stats_t;
 
 typedef struct {
@@ -263,6 +266,15 @@ rgb8_t render_pixel(render_ctx_t *ctx, uint32_t x, uint32_t y);
  * screen rectangle contains the pixel. */
 rgb8_t render_pixel_clipped(render_ctx_t *ctx, uint32_t x, uint32_t y,
                             const uint32_t *clusters, uint32_t count);
+
+/* Same, with Y and X clipping done in the hierarchy: the primary ray walks
+ * the cluster tree and skips every subtree whose tree rectangle
+ * (render_cluster_t.tree_*) misses the pixel, and a cluster's own
+ * primitives when its own rectangle does, before any box test.  Its cost
+ * follows the tree's depth near the pixel, not the clusters around it, so
+ * it does not grow with the scene as lists of clusters do.  The colour is
+ * render_pixel's (without the hierarchy, it is render_pixel). */
+rgb8_t render_pixel_screen(render_ctx_t *ctx, uint32_t x, uint32_t y);
 
 /* Pixels x0..x1-1 of row y into out[0..x1-x0-1]. */
 void render_span(render_ctx_t *ctx, uint32_t y, uint32_t x0, uint32_t x1, rgb8_t *out);

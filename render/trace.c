@@ -58,6 +58,9 @@ typedef struct {
     nearest_t nearest;
     crossings_t *cross;
     aabb_ray_t box_ray; /* the ray's reciprocals for box tests */
+    int screen;         /* 1: a primary ray through pixel (px, py): subtrees
+                           whose screen rectangles miss it are skipped */
+    int32_t px, py;
 } trace_walk_t;
 
 static void trace_record(trace_walk_t *w, uint32_t prim, num_t t)
@@ -172,9 +175,27 @@ static int trace_still_open(const trace_walk_t *w, num_t entry)
     return w->mode != TRACE_NEAREST || !w->nearest.found || !num_gt(entry, w->nearest.t);
 }
 
+/* The primary ray's pixel lies in cluster c's tree rectangle (all of it
+ * and below), or it is no primary ray walked by screen. */
+static int trace_screen_tree(const trace_walk_t *w, const render_cluster_t *c)
+{
+    if (!w->screen)
+        return 1;
+    w->ctx->stats.screen_tests++;
+    return w->px >= c->tree_x0 && w->px <= c->tree_x1 && w->py >= c->tree_y0 &&
+           w->py <= c->tree_y1;
+}
+
 static void trace_own_prims(trace_walk_t *w, const render_cluster_t *c)
 {
     const render_frame_t *f = w->ctx->frame;
+    /* by screen: the pixel must lie in the cluster's own rectangle, and
+     * the ray meet its own box (where it is not the box just tested, that
+     * of the cluster and its children), before its primitives are tested */
+    if (w->screen && (c->prim_count == 0 || w->px < c->screen_x0 || w->px > c->screen_x1 ||
+                      w->py < c->screen_y0 || w->py > c->screen_y1 ||
+                      (c->child_count && !trace_box(w, &c->own_bounds))))
+        return;
     for (uint32_t k = 0; k < c->prim_count; k++) {
         uint32_t prim = f->prim_list[c->first_prim + k];
         /* in a flat walk the primitive's own box stands in for the tree */
@@ -197,8 +218,10 @@ static void trace_cluster(trace_walk_t *w, uint32_t index)
     if (c->child_count == 2) {
         uint32_t a = kids[0], b = kids[1];
         num_t ta, tb;
-        int ha = !trace_walk_done(w) && trace_box_entry(w, &f->clusters[a].bounds, &ta);
-        int hb = !trace_walk_done(w) && trace_box_entry(w, &f->clusters[b].bounds, &tb);
+        int ha = !trace_walk_done(w) && trace_screen_tree(w, &f->clusters[a]) &&
+                 trace_box_entry(w, &f->clusters[a].bounds, &ta);
+        int hb = !trace_walk_done(w) && trace_screen_tree(w, &f->clusters[b]) &&
+                 trace_box_entry(w, &f->clusters[b].bounds, &tb);
         if (ha && hb && num_lt(tb, ta)) {
             uint32_t k = a;
             num_t t = ta;
@@ -214,7 +237,8 @@ static void trace_cluster(trace_walk_t *w, uint32_t index)
         return;
     }
     for (uint32_t k = 0; k < c->child_count; k++)
-        if (!trace_walk_done(w) && trace_box(w, &f->clusters[kids[k]].bounds))
+        if (!trace_walk_done(w) && trace_screen_tree(w, &f->clusters[kids[k]]) &&
+            trace_box(w, &f->clusters[kids[k]].bounds))
             trace_cluster(w, kids[k]);
 }
 
@@ -230,7 +254,7 @@ static void trace_walk(trace_walk_t *w, const uint32_t *clip, uint32_t clip_coun
             trace_own_prims(w, c);
         }
     } else if (w->ctx->options.use_hierarchy) {
-        if (trace_box(w, &f->clusters[0].bounds))
+        if (trace_screen_tree(w, &f->clusters[0]) && trace_box(w, &f->clusters[0].bounds))
             trace_cluster(w, 0);
     } else {
         for (uint32_t prim = 0; prim < f->prim_count; prim++)
@@ -256,11 +280,15 @@ static num_t trace_err_clamp(num_t e)
     return num_is_sat(e) || num_gt(e, NUM_FAR) ? NUM_FAR : e;
 }
 
+/* screen (may be NULL): the pixel {x, y} a primary ray goes through, for
+ * a walk that skips the subtrees whose screen rectangles miss it. */
 static int trace_nearest(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err, num_t tmin,
-                         const uint32_t *clip, uint32_t clip_count, hit_t *hit)
+                         const uint32_t *clip, uint32_t clip_count, const int32_t *screen,
+                         hit_t *hit)
 {
     trace_walk_t w = {.ctx = ctx, .ray = ray, .err = err, .tmin = tmin, .tmax = TRACE_FAR,
-                      .mode = TRACE_NEAREST};
+                      .mode = TRACE_NEAREST, .screen = screen != NULL,
+                      .px = screen ? screen[0] : 0, .py = screen ? screen[1] : 0};
     trace_walk(&w, clip, clip_count);
     if (!w.nearest.found)
         return 0;
@@ -565,7 +593,7 @@ static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *e
     ray_error_t none = {NUM_ZERO, NUM_ZERO};
     err = trace_err_if_heavy(err, &none, weight);
     hit_t hit;
-    if (!trace_nearest(ctx, ray, err, tmin, NULL, 0, &hit))
+    if (!trace_nearest(ctx, ray, err, tmin, NULL, 0, NULL, &hit))
         return ctx->frame->scene->background;
     return trace_shade(ctx, ray, err, &hit, depth, weight);
 }
@@ -580,7 +608,7 @@ void render_ctx_init(render_ctx_t *ctx, const render_frame_t *frame)
 }
 
 static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const uint32_t *clip,
-                                uint32_t clip_count)
+                                uint32_t clip_count, int by_screen)
 {
     const render_frame_t *f = ctx->frame;
     /* through the pixel centre: screen coordinates in [-1, 1] scaled by
@@ -597,7 +625,9 @@ static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const
     uint64_t boxes = ctx->stats.box_tests, prims = ctx->stats.prim_tests;
     hit_t hit;
     ray_error_t err = {NUM_ZERO, TRACE_DIR_ROUND}; /* from the eye, exactly */
-    int found = trace_nearest(ctx, &ray, &err, NUM_ZERO, clip, clip_count, &hit);
+    const int32_t pixel[2] = {(int32_t)x, (int32_t)y};
+    int found = trace_nearest(ctx, &ray, &err, NUM_ZERO, clip, clip_count,
+                              by_screen ? pixel : NULL, &hit);
     ctx->stats.primary_box_tests += ctx->stats.box_tests - boxes;
     ctx->stats.primary_prim_tests += ctx->stats.prim_tests - prims;
     rgb_t c = found ? trace_shade(ctx, &ray, &err, &hit, 0, NUM_ONE) : f->scene->background;
@@ -612,13 +642,18 @@ static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const
 
 rgb8_t render_pixel(render_ctx_t *ctx, uint32_t x, uint32_t y)
 {
-    return render_pixel_impl(ctx, x, y, NULL, 0);
+    return render_pixel_impl(ctx, x, y, NULL, 0, 0);
+}
+
+rgb8_t render_pixel_screen(render_ctx_t *ctx, uint32_t x, uint32_t y)
+{
+    return render_pixel_impl(ctx, x, y, NULL, 0, ctx->options.use_hierarchy);
 }
 
 rgb8_t render_pixel_clipped(render_ctx_t *ctx, uint32_t x, uint32_t y, const uint32_t *clusters, uint32_t count)
 {
     uint32_t none = 0; /* a non-NULL empty list: clipping that kept nothing */
-    return render_pixel_impl(ctx, x, y, clusters ? clusters : &none, clusters ? count : 0);
+    return render_pixel_impl(ctx, x, y, clusters ? clusters : &none, clusters ? count : 0, 0);
 }
 
 void render_span(render_ctx_t *ctx, uint32_t y, uint32_t x0, uint32_t x1, rgb8_t *out)

@@ -129,6 +129,7 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, char *w
     job->ctx.options.use_hierarchy = !(flags & LINK_RENDER_NO_HIERARCHY);
     job->opt.y_clip = !(flags & LINK_RENDER_NO_YCLIP);
     job->opt.x_clip = !(flags & LINK_RENDER_NO_XCLIP);
+    job->opt.lists = (flags & LINK_RENDER_CLIP_LISTS) != 0;
     job->opt.progress = &gigs_nc_progress[mycpu()->core];
     return 0;
 }

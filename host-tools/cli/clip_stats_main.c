@@ -7,8 +7,9 @@
  *
  * The screen is cut into areas of W x H pixels (default 32x4: about the
  * paper's 100 pixels per area) and each area rendered the NC's way
- * (render_area) under five settings: nothing, boxes on a flat list, boxes
- * with the hierarchy, + Y clipping, + X clipping.  Every setting must give
+ * (render_area) under six settings: nothing, boxes on a flat list, boxes
+ * with the hierarchy, + Y clipping, + X clipping (the paper's lists), and
+ * both clippings done in the hierarchy per pixel (the NCs' default).  Every setting must give
  * the same image; the program fails if one does not. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -20,10 +21,11 @@
 #include "render/blob.h"
 #include "render/clip.h"
 
-#define STATS_SETTINGS 5
+#define STATS_SETTINGS 6
 
 static const char *const stats_names[STATS_SETTINGS] = {
     "no speed-up", "boxes, flat list", "boxes + hierarchy", "+ Y clipping", "+ X clipping",
+    "clipping in the tree",
 };
 
 static int stats_fail(const char *what, const char *why)
@@ -98,15 +100,15 @@ int main(int argc, char **argv)
     printf("%s: %ux%u, %u clusters, %u primitives, %u areas of %ux%u, blob %zu bytes (peak %zu, bound %zu), NC working set %zu bytes\n",
            in, f->width, f->height, f->cluster_count, f->prim_count, areas, aw, ah, blob->bytes,
            blob->peak, need, clip_bytes);
-    printf("%-20s %14s %14s %14s %14s %10s %10s\n", "setting", "primary boxes", "primary prims",
-           "all boxes", "all prims", "Y kept/area", "X kept/px");
+    printf("%-20s %14s %14s %14s %14s %10s %10s %12s\n", "setting", "primary boxes",
+           "primary prims", "all boxes", "all prims", "Y kept/area", "X kept/px", "rects/px");
     int same = 1;
     for (int s = 0; s < STATS_SETTINGS; s++) {
         render_ctx_t ctx;
         render_ctx_init(&ctx, f);
         ctx.options.use_bounds = s >= 1;
         ctx.options.use_hierarchy = s >= 2;
-        render_clip_options_t opt = {s >= 3, s >= 4, NULL};
+        render_clip_options_t opt = {s >= 3, s >= 4, NULL, s < 5};
         uint64_t y0 = clip.y_kept, x0 = clip.x_kept;
         img[s] = malloc(sizeof *img[s] * pixels);
         for (uint32_t y = 0; y < f->height; y += ah)
@@ -124,9 +126,12 @@ int main(int argc, char **argv)
             snprintf(ykept, sizeof ykept, "%.1f", (double)(clip.y_kept - y0) / areas);
         if (opt.x_clip)
             snprintf(xkept, sizeof xkept, "%.2f", (double)(clip.x_kept - x0) / pixels);
-        printf("%-20s %14llu %14llu %14llu %14llu %10s %10s\n", stats_names[s],
+        if (!opt.lists) /* clipping in the tree: no lists, tree rectangles per pixel */
+            ykept[0] = '-', ykept[1] = 0, xkept[0] = '-', xkept[1] = 0;
+        printf("%-20s %14llu %14llu %14llu %14llu %10s %10s %12.2f\n", stats_names[s],
                (unsigned long long)st->primary_box_tests, (unsigned long long)st->primary_prim_tests,
-               (unsigned long long)st->box_tests, (unsigned long long)st->prim_tests, ykept, xkept);
+               (unsigned long long)st->box_tests, (unsigned long long)st->prim_tests, ykept, xkept,
+               (double)st->screen_tests / pixels);
     }
     for (int s = 0; s < STATS_SETTINGS; s++)
         free(img[s]);

@@ -99,6 +99,8 @@ static void render_usage(FILE *out)
             "  --mark-lost      paint pixels that lost precision magenta (text scenes)\n"
             "  --no-yclip --no-xclip --no-bbox --no-hierarchy\n"
             "                   switch a speed-up off (the image stays the same)\n"
+            "  --clip-lists     clip as the paper's NCs did, a Y list per area and an X\n"
+            "                   window per pixel, instead of in the hierarchy (the same image)\n"
             "  --no-auto-hierarchy  compile without the automatic hierarchy (text scenes)\n"
             "  --view           show the frame memory live (-device ramfb, a display)\n"
             "  --ppm            write PPM (also chosen by an OUT ending in .ppm)\n"
@@ -139,6 +141,7 @@ enum render_opt_code {
     RENDER_OPT_REFRACTION,
     RENDER_OPT_NO_YCLIP,
     RENDER_OPT_NO_XCLIP,
+    RENDER_OPT_CLIP_LISTS,
     RENDER_OPT_NO_BBOX,
     RENDER_OPT_NO_HIERARCHY,
     RENDER_OPT_NO_AUTO_HIERARCHY,
@@ -174,6 +177,7 @@ static const struct option render_options[] = {
     {"refraction", required_argument, NULL, RENDER_OPT_REFRACTION},
     {"no-yclip", no_argument, NULL, RENDER_OPT_NO_YCLIP},
     {"no-xclip", no_argument, NULL, RENDER_OPT_NO_XCLIP},
+    {"clip-lists", no_argument, NULL, RENDER_OPT_CLIP_LISTS},
     {"no-bbox", no_argument, NULL, RENDER_OPT_NO_BBOX},
     {"no-hierarchy", no_argument, NULL, RENDER_OPT_NO_HIERARCHY},
     {"no-auto-hierarchy", no_argument, NULL, RENDER_OPT_NO_AUTO_HIERARCHY},
@@ -283,6 +287,9 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
         return 0;
     case RENDER_OPT_NO_YCLIP:
         o->args.flags |= LINK_RENDER_NO_YCLIP;
+        return 0;
+    case RENDER_OPT_CLIP_LISTS:
+        o->args.flags |= LINK_RENDER_CLIP_LISTS;
         return 0;
     case RENDER_OPT_NO_XCLIP:
         o->args.flags |= LINK_RENDER_NO_XCLIP;

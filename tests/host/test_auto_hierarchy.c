@@ -231,7 +231,7 @@ static rgb8_t *render_all(struct loaded *L, uint32_t f, int clip, int check_boxe
     } else {
         void *cm = malloc(render_clip_bytes(fr));
         render_clip_t cs;
-        render_clip_options_t opt = {1, 1, NULL};
+        render_clip_options_t opt = {1, 1, NULL, 0};
         CHECK_EQ_INT(render_clip_init(&cs, fr, cm, render_clip_bytes(fr)), RENDER_OK);
         /* areas of 16 x 12 as an NC gets them */
         rgb8_t *area = malloc(16 * 12 * sizeof *area);

@@ -362,6 +362,9 @@ static rgb8_t *tc_render_areas(tc_scene_t *t, const render_options_t *options,
     return img;
 }
 
+/* Clipping, by the paper's lists and in the tree, gives render_pixel's
+ * image with the same rays; the lists cut the camera rays' tests, the tree
+ * skips subtrees by their rectangles before any box test. */
 static void test_clipped_render_same_image(void)
 {
     for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
@@ -372,25 +375,35 @@ static void test_clipped_render_same_image(void)
         size_t n = (size_t)t.f->width * t.f->height;
         render_stats_t plain_stats, clip_stats;
         rgb8_t *plain = tb_render_plain(t.f, &plain_stats);
-        render_clip_options_t both = {1, 1, NULL};
-        rgb8_t *clipped = tc_render_areas(&t, &t.f->options, &both, &clip_stats);
-        if (!tb_same(plain, clipped, n))
-            printf("%s: clipped image differs\n", tb_scenes[s]);
-        CHECK(tb_same(plain, clipped, n));
-        /* the same rays; fewer tests on the camera rays, none elsewhere */
-        CHECK_EQ_INT(clip_stats.primary, plain_stats.primary);
-        CHECK_EQ_INT(clip_stats.shadow, plain_stats.shadow);
-        CHECK(clip_stats.primary_prim_tests < plain_stats.primary_prim_tests);
-        CHECK(clip_stats.primary_box_tests < plain_stats.primary_box_tests);
-        CHECK_EQ_INT(clip_stats.prim_tests - clip_stats.primary_prim_tests,
-                     plain_stats.prim_tests - plain_stats.primary_prim_tests);
-        printf("%s: primary prim tests %llu clipped, %llu plain; primary box tests %llu, %llu\n",
-               tb_scenes[s], (unsigned long long)clip_stats.primary_prim_tests,
-               (unsigned long long)plain_stats.primary_prim_tests,
-               (unsigned long long)clip_stats.primary_box_tests,
-               (unsigned long long)plain_stats.primary_box_tests);
+        for (int lists = 1; lists >= 0; lists--) {
+            render_clip_options_t both = {1, 1, NULL, (uint8_t)lists};
+            rgb8_t *clipped = tc_render_areas(&t, &t.f->options, &both, &clip_stats);
+            if (!tb_same(plain, clipped, n))
+                printf("%s: clipped image differs (%s)\n", tb_scenes[s], lists ? "lists" : "tree");
+            CHECK(tb_same(plain, clipped, n));
+            /* the same rays; fewer tests on the camera rays, none elsewhere */
+            CHECK_EQ_INT(clip_stats.primary, plain_stats.primary);
+            CHECK_EQ_INT(clip_stats.shadow, plain_stats.shadow);
+            CHECK_EQ_INT(clip_stats.prim_tests - clip_stats.primary_prim_tests,
+                         plain_stats.prim_tests - plain_stats.primary_prim_tests);
+            if (lists) {
+                CHECK(clip_stats.primary_prim_tests < plain_stats.primary_prim_tests);
+                CHECK(clip_stats.primary_box_tests < plain_stats.primary_box_tests);
+                CHECK_EQ_INT(clip_stats.screen_tests, 0);
+            } else {
+                CHECK(clip_stats.primary_prim_tests <= plain_stats.primary_prim_tests);
+                CHECK(clip_stats.screen_tests > 0);
+            }
+            printf("%s (%s): primary prim tests %llu clipped, %llu plain; primary box tests "
+                   "%llu, %llu; rectangles %llu\n", tb_scenes[s], lists ? "lists" : "tree",
+                   (unsigned long long)clip_stats.primary_prim_tests,
+                   (unsigned long long)plain_stats.primary_prim_tests,
+                   (unsigned long long)clip_stats.primary_box_tests,
+                   (unsigned long long)plain_stats.primary_box_tests,
+                   (unsigned long long)clip_stats.screen_tests);
+            free(clipped);
+        }
         free(plain);
-        free(clipped);
         tc_close(&t);
     }
 }
@@ -408,10 +421,10 @@ static void test_area_switches_same_image(void)
         size_t n = (size_t)t.f->width * t.f->height;
         render_options_t on = t.f->options;
         on.use_bounds = on.use_hierarchy = 1;
-        render_clip_options_t both = {1, 1, NULL};
+        render_clip_options_t both = {1, 1, NULL, 1};
         render_stats_t ref_stats, st;
         rgb8_t *ref = tc_render_areas(&t, &on, &both, &ref_stats);
-        for (int off = 0; off < 5; off++) {
+        for (int off = 0; off < 6; off++) {
             render_options_t o = on;
             render_clip_options_t c = both;
             if (off == 0 || off == 4)
@@ -422,6 +435,8 @@ static void test_area_switches_same_image(void)
                 o.use_bounds = 0;
             if (off == 3 || off == 4)
                 o.use_hierarchy = 0;
+            if (off == 5)
+                c.lists = 0; /* clipping in the tree */
             uint64_t y_kept = t.clip.y_kept, x_kept = t.clip.x_kept;
             rgb8_t *img = tc_render_areas(&t, &o, &c, &st);
             if (!tb_same(ref, img, n))
@@ -439,6 +454,8 @@ static void test_area_switches_same_image(void)
                 CHECK(st.box_tests == 0 && st.prim_tests > ref_stats.prim_tests);
             if (off == 4)
                 CHECK(st.primary_prim_tests > ref_stats.primary_prim_tests);
+            if (off == 5) /* no lists: rectangles in the tree instead */
+                CHECK(t.clip.y_kept == y_kept && t.clip.x_kept == x_kept && st.screen_tests > 0);
             free(img);
         }
         free(ref);
@@ -462,7 +479,7 @@ static void test_clip_memory_and_errors(void)
     CHECK_EQ_INT(render_clip_init(&c, t.f, mem, bytes), RENDER_OK);
     render_ctx_t ctx;
     render_ctx_init(&ctx, t.f);
-    render_clip_options_t both = {1, 1, NULL};
+    render_clip_options_t both = {1, 1, NULL, 0};
     rgb8_t px[4];
     uint32_t W = t.f->width, H = t.f->height;
     render_area_t bad[] = {{0, 0, 0, 1}, {0, 0, 1, 0}, {W, 0, 1, 1}, {W - 1, 0, 2, 1}, {0, H - 1, 1, 2}};

@@ -58,7 +58,7 @@ static void bits_render_area(const char *name, const scene_t *scene, const rende
     }
     render_ctx_t ctx;
     render_ctx_init(&ctx, moved);
-    render_clip_options_t opt = {1, 1, NULL};
+    render_clip_options_t opt = {1, 1, NULL, 0};
     static rgb8_t tile[BITS_AREA_W * BITS_AREA_H];
     for (uint32_t y = 0; y < BITS_HEIGHT; y += BITS_AREA_H)
         for (uint32_t x = 0; x < BITS_WIDTH; x += BITS_AREA_W) {
