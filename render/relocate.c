@@ -23,6 +23,8 @@ static void *reloc_addr(reloc_t *r, const void *p, size_t count, size_t elem, si
                         const char *field)
 {
     uintptr_t a = (uintptr_t)p;
+    if (r->write) /* every field was checked by the first pass */
+        return p ? (void *)(a - r->old_lo + r->new_lo) : NULL;
     if (r->bad)
         return NULL;
     if (!p) {
@@ -86,15 +88,23 @@ static void reloc_frame(reloc_t *r, render_frame_t *f, const scene_t *s)
     scene_normals_t *normals = RELOC(r, f->normals, s->normals_count, "frame.normals");
     if (r->bad)
         return;
+    /* A smooth triangle's normals are an element of the frame's normals
+     * array (render_prepare): a subtraction and two compares check one
+     * (the RC relocates every primitive of every frame). */
+    uintptr_t nrm_lo = (uintptr_t)f->normals;
+    uintptr_t nrm_bytes = (uintptr_t)s->normals_count * sizeof(scene_normals_t);
+    uintptr_t nrm_shift = (uintptr_t)normals - nrm_lo;
     for (uint32_t i = 0; i < f->prim_count; i++) {
         render_prim_t *p = &prims[i];
-        /* the RC relocates every primitive of every frame: a triangle's
-         * only pointer is its normals (NULL when flat), one test, not three */
+        /* a triangle's only pointer is its normals (NULL when flat): one
+         * test, not three */
         if (!p->components && !p->inv_radius2 && p->component_count == 0) {
             if (p->normals) {
-                const scene_normals_t *nrm = RELOC(r, p->normals, 1, "frame.prims[].normals");
-                if (r->write && !r->bad)
-                    p->normals = nrm;
+                uintptr_t d = (uintptr_t)p->normals - nrm_lo;
+                if (r->write)
+                    p->normals = (const scene_normals_t *)((uintptr_t)p->normals + nrm_shift);
+                else if (d >= nrm_bytes || d % sizeof(scene_normals_t) != 0)
+                    r->bad = "frame.prims[].normals";
             }
             continue;
         }

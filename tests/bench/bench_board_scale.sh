@@ -1,82 +1,97 @@
 #!/usr/bin/env bash
-# bench_board_scale.sh: what the DM and the RC spend per triangle of a
-# frame as the scene grows (issue 20), printed as the table of
-# docs/results/board-scale.md.  Scenes: the SPD tetra at 4,096, 16,384 and
-# 65,536 triangles (links1-spd tetra 5, 6, 7) and the teapot at size 8
-# (65,408 triangles); each rendered once on the board,
-#   links1 render SCENE --size 128x96 --ncs 8 --count-insns --trace T
-# (float).  Per scene: the DM's and the RC's guest instructions for the
-# whole command (the DM counts from the scene's upload: the link's check,
-# the load, the frame's preparation) and the DM's preparation of the frame
-# alone (the trace's dm_prepare span: what every later frame costs).
-# BENCH_BEFORE_BUILD=DIR also runs each scene with DIR's links1 and
-# firmware (another tree's build/, e.g. the commit before) and prints its
-# figures beside these.  BENCH_BOARD_SCALE_SCENES picks scenes ("tetra 5,
-# teapot 8").
+# bench_board_scale.sh: what the board spends as the scene grows
+# (docs/results/board-scale.md): the DM and the RC per triangle of a frame,
+# and the NCs per ray at a small and a large frame, clipping in the
+# hierarchy (the default) and with the paper's lists.  Scenes: the SPD
+# tetra at 4,096 to 262,144 triangles (links1-spd tetra 6..9) and the
+# teapot at 67,328 (teapot 32), each rendered on the board (float, 8 NCs):
+#   links1 render SCENE --size 128x96 --count-insns --trace T    (DM, RC, NCs)
+#   links1 render SCENE --size 512x480 --count-insns             (NCs)
+#   links1 render SCENE --size 128x96 --count-insns --clip-lists (NCs)
+# Per triangle: the DM's and the RC's guest instructions for the whole
+# command (the DM counts from the scene's upload: the link's check, the
+# load, the frame's preparation), and the DM's preparation of the frame
+# alone (the trace's dm_prepare span: what every later frame costs).  Per
+# ray (primary + shadow + secondary): the NCs' instructions summed.
+# Prints a markdown table and draws BENCH_OUT/board-scale.png (gnuplot; a
+# temporary directory unless BENCH_OUT is given).  BENCH_BOARD_SCALE_SCENES
+# picks scenes ("tetra 6, teapot 32").  One run each.
 set -u
 cd "$(dirname "$0")/../.."
 LINKS1=${LINKS1:-build/links1}
 SPD=${SPD:-build/links1-spd}
 export FW_DIR=${FW_DIR:-build}
-BEFORE=${BENCH_BEFORE_BUILD:-}
-SCENES=${BENCH_BOARD_SCALE_SCENES:-tetra 5, tetra 6, tetra 7, teapot 8}
-SIZE=128x96
+SCENES=${BENCH_BOARD_SCALE_SCENES:-tetra 6, tetra 7, tetra 8, tetra 9, teapot 32}
 NCS=8
 LIMIT_S=${BENCH_RUN_LIMIT_S:-1800}
-make -s --no-print-directory build/links1 build/links1-spd >&2
+make -s --no-print-directory build/links1 build/links1-spd all >&2
 TMP=$(mktemp -d /tmp/links1-bench-board-scale.XXXXXX)
 trap 'rm -rf "$TMP"' EXIT
+OUT=${BENCH_OUT:-$TMP}
+mkdir -p "$OUT"
 
-# run LINKS1 FW_DIR SCENE TAG: prints "DM RC PREPARE" (guest instructions)
+# run SCENE TAG SIZE ARGS...: the render's log in $TMP/TAG.log
 run() {
-    local bin=$1 fw=$2 scn=$3 tag=$4
-    if ! FW_DIR=$fw timeout "$LIMIT_S" "$bin" render "$scn" --size $SIZE --ncs $NCS --count-insns \
-            --trace "$TMP/$tag.trace" -o "$TMP/$tag.ppm" >"$TMP/$tag.log" 2>&1; then
+    local scn=$1 tag=$2 size=$3
+    shift 3
+    if ! timeout "$LIMIT_S" "$LINKS1" render "$scn" --size "$size" --ncs $NCS --count-insns \
+            -o "$TMP/$tag.ppm" "$@" >"$TMP/$tag.log" 2>&1; then
         echo "bench_board_scale: $tag: the render failed:" >&2
         tail -3 "$TMP/$tag.log" >&2
         exit 1
     fi
-    local dm rc prep
-    dm=$(sed -n 's/^  DM \([0-9]*\), RC \([0-9]*\),.*/\1/p' "$TMP/$tag.log")
-    rc=$(sed -n 's/^  DM \([0-9]*\), RC \([0-9]*\),.*/\2/p' "$TMP/$tag.log")
-    prep=$(awk '$1 == "dm_prepare" { print $2 }' "$TMP/$tag.trace")
-    if [ -z "$dm" ] || [ -z "$rc" ] || [ -z "$prep" ]; then
-        echo "bench_board_scale: $tag: no instruction counts in the output" >&2
-        exit 1
-    fi
-    echo "$dm $rc $prep"
+}
+# per_ray TAG: the NCs' instructions over the rays of every kind
+per_ray() {
+    local total rays
+    total=$(sed -nE 's/^  DM [0-9]+, RC [0-9]+, NCs total ([0-9]+).*/\1/p' "$TMP/$1.log")
+    rays=$(sed -nE 's/.*rays ([0-9]+) primary, ([0-9]+) shadow, ([0-9]+) reflection, ([0-9]+) refraction, ([0-9]+) transmission.*/\1 \2 \3 \4 \5/p' "$TMP/$1.log" |
+        awk '{ print $1 + $2 + $3 + $4 + $5 }')
+    [ -n "$total" ] && [ -n "$rays" ] || { echo "bench_board_scale: $1: no counts" >&2; exit 1; }
+    awk -v t="$total" -v r="$rays" 'BEGIN { printf "%.0f", t / r }'
 }
 
-# cell N TRIANGLES: "N (N / TRIANGLES)"
-cell() { awk -v n="$1" -v t="$2" 'BEGIN { printf "%.1f M (%d)", n / 1e6, n / t + 0.5 }'; }
-
-echo "### The DM's and the RC's guest instructions per frame, by triangles (float, $NCS NCs, $SIZE)"
+echo "### The board as the scene grows (float, $NCS NCs, one run each)"
 echo
-echo "Each cell: instructions of the whole render command (per triangle)."
+echo "Guest instructions: the DM's and the RC's per triangle (whole command at 128x96; the"
+echo "DM's preparation of one frame alone), the NCs' per ray (clipping in the hierarchy, the"
+echo "default; and with the paper's lists, --clip-lists)."
 echo
-if [ -n "$BEFORE" ]; then
-    echo "| scene | triangles | DM before | DM after | DM preparing the frame, before | after | RC before | RC after |"
-    echo "|---|---|---|---|---|---|---|---|"
-else
-    echo "| scene | triangles | DM | DM preparing the frame | RC |"
-    echo "|---|---|---|---|---|"
-fi
+echo "| scene | triangles | DM per triangle | DM preparing a frame, per triangle | RC per triangle | NC per ray, 128x96 | NC per ray, 512x480 | NC per ray, 128x96, lists |"
+echo "|---|---|---|---|---|---|---|---|"
+: >"$TMP/scale.dat"
 IFS=',' read -ra LIST <<<"$SCENES"
 for entry in "${LIST[@]}"; do
     read -r name size <<<"$entry"
-    scn="$TMP/$name$size.scn"
+    tag=$name$size
+    scn="$TMP/$tag.nff"
     tris=$("$SPD" "$name" "$size" -o "$scn" 2>&1 | sed -n 's/.* \([0-9]*\) triangles$/\1/p')
     if [ -z "$tris" ] || [ "$tris" -eq 0 ]; then
         echo "bench_board_scale: links1-spd $name $size: no triangle count" >&2
         exit 1
     fi
-    read -r dm rc prep <<<"$(run "$LINKS1" "$FW_DIR" "$scn" "$name$size")" || exit 1
-    [ -n "$dm" ] || exit 1
-    if [ -n "$BEFORE" ]; then
-        read -r bdm brc bprep <<<"$(run "$BEFORE/links1" "$BEFORE" "$scn" "$name$size-before")" || exit 1
-        [ -n "$bdm" ] || exit 1
-        echo "| $name $size | $tris | $(cell "$bdm" "$tris") | $(cell "$dm" "$tris") | $(cell "$bprep" "$tris") | $(cell "$prep" "$tris") | $(cell "$brc" "$tris") | $(cell "$rc" "$tris") |"
-    else
-        echo "| $name $size | $tris | $(cell "$dm" "$tris") | $(cell "$prep" "$tris") | $(cell "$rc" "$tris") |"
-    fi
+    run "$scn" "$tag-small" 128x96 --trace "$TMP/$tag.trace"
+    run "$scn" "$tag-large" 512x480
+    run "$scn" "$tag-lists" 128x96 --clip-lists
+    read -r dm rc < <(sed -nE 's/^  DM ([0-9]+), RC ([0-9]+),.*/\1 \2/p' "$TMP/$tag-small.log")
+    prep=$(awk '$1 == "dm_prepare" { print $2 }' "$TMP/$tag.trace")
+    small=$(per_ray "$tag-small") large=$(per_ray "$tag-large") lists=$(per_ray "$tag-lists")
+    awk -v s="$name $size" -v t="$tris" -v dm="$dm" -v p="$prep" -v rc="$rc" -v a="$small" \
+        -v b="$large" -v c="$lists" 'BEGIN {
+            printf "| %s | %d | %.0f | %.0f | %.0f | %d | %d | %d |\n", s, t, dm / t, p / t, rc / t, a, b, c }'
+    [ "$name" = tetra ] && echo "$tris $small $large $lists" >>"$TMP/scale.dat"
 done
+echo
+awk 'NR == 1 { a = $2; b = $3; c = $4 } END {
+    printf "NC per ray, the largest tetra over the smallest: %.2fx at 128x96, %.2fx at 512x480; the paper'"'"'s lists %.2fx at 128x96\n", $2 / a, $3 / b, $4 / c }' "$TMP/scale.dat"
+gnuplot <<GP || { echo "bench_board_scale: gnuplot failed" >&2; exit 1; }
+set terminal pngcairo size 800,520
+set output "$OUT/board-scale.png"
+set title "NC instructions per ray on the board, SPD tetra (float, $NCS NCs)"
+set xlabel "triangles"; set ylabel "guest instructions per ray"
+set logscale xy; set key top left; set grid
+plot "$TMP/scale.dat" using 1:2 title "clipping in the hierarchy (default), 128x96" with linespoints pt 7, \
+     "$TMP/scale.dat" using 1:3 title "clipping in the hierarchy (default), 512x480" with linespoints pt 5, \
+     "$TMP/scale.dat" using 1:4 title "the paper's lists (--clip-lists), 128x96" with linespoints pt 9
+GP
+echo "chart: $OUT/board-scale.png"

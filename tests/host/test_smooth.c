@@ -11,7 +11,10 @@
  *   - a triangle's `n` entries in the text form: written and read back
  *     (made unit length), all three or none, a zero normal refused;
  *   - the loader refuses a normal that is not unit length, a record naming
- *     a primitive that is not a triangle, and records out of order.
+ *     a primitive that is not a triangle, and records out of order;
+ *   - the RC's relocation of a blob moves every triangle's normals pointer
+ *     (the copy renders the same image) and refuses one that is not an
+ *     element of the frame's normals, naming it, the copy left as it was.
  */
 #include <math.h>
 #include <stdio.h>
@@ -22,6 +25,7 @@
 #include "proto/crc32.h"
 #include "proto/scene_format.h"
 #include "proto/wire.h"
+#include "render/blob.h"
 #include "render/render.h"
 #include "render/scene_load.h"
 #include "tests/check.h"
@@ -170,6 +174,60 @@ static void test_smooth_ball(void)
     free(a), free(b), free(flat), free(smooth);
 }
 
+/* Every pixel of a blob's frame. */
+static rgb8_t *render_blob_image(const render_blob_t *b)
+{
+    render_ctx_t ctx;
+    render_ctx_init(&ctx, b->frame);
+    rgb8_t *img = malloc(W * H * sizeof *img);
+    for (uint32_t y = 0; y < H; y++)
+        for (uint32_t x = 0; x < W; x++)
+            img[y * W + x] = render_pixel(&ctx, x, y);
+    return img;
+}
+
+static void test_relocate_smooth_normals(void)
+{
+    size_t len, need;
+    uint8_t *buf = compile(scene_text("ball.obj", 1), &len);
+    render_blob_error_t err;
+    CHECK(buf && render_blob_bytes(buf, len, &need, &err) == RENDER_BLOB_OK);
+    if (!buf)
+        return;
+    size_t size = (need + RENDER_RELOCATE_ALIGN - 1) / RENDER_RELOCATE_ALIGN * RENDER_RELOCATE_ALIGN;
+    uint8_t *a = aligned_alloc(RENDER_RELOCATE_ALIGN, size);
+    uint8_t *b = aligned_alloc(RENDER_RELOCATE_ALIGN, size), *saved = malloc(size);
+    render_blob_t *ab, *bb;
+    CHECK_EQ_INT(render_blob_build(buf, len, 0, a, size, "test memory", &ab, &err), RENDER_BLOB_OK);
+    const render_frame_t *f = ab->frame;
+    uint32_t smooth = 0;
+    while (smooth < f->prim_count && !f->prims[smooth].normals)
+        smooth++;
+    CHECK(smooth < f->prim_count);
+    if (smooth == f->prim_count)
+        goto out;
+    /* moved whole: the same image from the copy */
+    memcpy(b, a, ab->bytes);
+    CHECK_EQ_INT(render_blob_relocate(b, size, &bb, &err), RENDER_BLOB_OK);
+    rgb8_t *ia = render_blob_image(ab), *ib = render_blob_image(bb);
+    CHECK(memcmp(ia, ib, W * H * sizeof *ia) == 0);
+    free(ia), free(ib);
+    /* one triangle's normals bent: off an element, onto the primitives */
+    size_t at = (size_t)((const uint8_t *)&f->prims[smooth].normals - a);
+    const uint8_t *bent[2] = {(const uint8_t *)f->prims[smooth].normals + 4,
+                              (const uint8_t *)&f->prims[0]};
+    for (int i = 0; i < 2; i++) {
+        memcpy(b, a, ab->bytes);
+        memcpy(b + at, &bent[i], sizeof bent[i]);
+        memcpy(saved, b, ab->bytes);
+        CHECK_EQ_INT(render_blob_relocate(b, size, &bb, &err), RENDER_BLOB_ERR_RELOCATE);
+        CHECK(strstr(err.message, "frame.prims[].normals") != NULL);
+        CHECK(memcmp(saved, b, ab->bytes) == 0);
+    }
+out:
+    free(a), free(b), free(saved), free(buf);
+}
+
 static void test_no_normals_stays_flat(void)
 {
     struct model m;
@@ -283,6 +341,7 @@ int main(void)
 {
     arena_mem = malloc(ARENA_BYTES);
     RUN(test_smooth_ball);
+    RUN(test_relocate_smooth_normals);
     RUN(test_no_normals_stays_flat);
     RUN(test_text_normals);
     RUN(test_loader_refuses_bad_normals);
