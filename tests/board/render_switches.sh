@@ -1,19 +1,23 @@
 #!/usr/bin/env bash
 # Each speed-up switched off on the board (Y clipping, X clipping, bounding
-# boxes, the hierarchy, then all four) gives the same image, bit for bit, as
-# the host build; and the rays traced are the same in number, while the
-# primitive tests the speed-ups save are not.
+# boxes, the hierarchy, then all four), the paper's clipping lists instead
+# of clipping in the hierarchy, and the paper's rule of asking for areas
+# once finished, give the same image, bit for bit, as the host build; and
+# the rays traced are the same in number, while the primitive tests the
+# speed-ups save are not.  The lists and the paper's rule also on an SPD
+# tetra of 4,096 triangles in fixed point.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
 board_ready render_switches || exit 0
 SIZE=96x72
 ref=$(render_ref scenes/city.scn float $SIZE)
-for sw in none no-yclip no-xclip no-bbox no-hierarchy all; do
+for sw in none no-yclip no-xclip no-bbox no-hierarchy all clip-lists ask-finished; do
     name=render_city_$sw
     out="$RENDER_TMP/$name.ppm"
     case $sw in
     none) args=() ;;
     all) args=(--no-yclip --no-xclip --no-bbox --no-hierarchy) ;;
+    ask-finished) args=(--ask finished) ;;
     *) args=(--$sw) ;;
     esac
     render_board $name "$out" scenes/city.scn -o "$out" --ncs 2 --size $SIZE "${args[@]}" ||
@@ -32,4 +36,20 @@ if [ -n "$(prims none)" ] && [ -n "$(prims all)" ] && [ "$(prims none)" -lt "$(p
     echo "PASS render_switches_save_tests"
 else
     echo "FAIL render_switches_save_tests: primary-ray primitive tests with speed-ups '$(prims none)', without '$(prims all)'"
+fi
+SPD="$(dirname "$LINKS1")/links1-spd"
+tetra="$RENDER_TMP/tetra6.nff"
+if "$SPD" tetra 6 -o "$tetra" >"$tetra.log" 2>&1; then
+    tref=$(render_ref "$tetra" fixed 64x48)
+    for sw in default clip-lists; do
+        name=render_tetra6_fixed_$sw
+        out="$RENDER_TMP/$name.ppm"
+        args=()
+        [ $sw = clip-lists ] && args=(--clip-lists --ask finished)
+        render_board $name "$out" "$tetra" -o "$out" --ncs 4 --size 64x48 --arith fixed \
+            "${args[@]}" || continue
+        render_same $name "$tref" "$out"
+    done
+else
+    echo "FAIL render_tetra6_fixed: links1-spd tetra 6 failed: $(tail -n 1 "$tetra.log")"
 fi
