@@ -70,8 +70,8 @@ static void render_link_info_and_progress_round_trip(void)
 /* The RC sums each NC's statistics: two NCs' messages add field by field. */
 static void gigs_stats_sum_of_two(void)
 {
-    render_stats_t a = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 0}; /* weight_cut: host only */
-    render_stats_t b = {100, 200, 300, 400, 500, 600, 700, 800, 900, 1000, 0};
+    render_stats_t a = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 0, 0}; /* weight_cut, screen_tests: host only */
+    render_stats_t b = {100, 200, 300, 400, 500, 600, 700, 800, 900, 1000, 0, 0};
     uint8_t pa[GIGS_STATS_SIZE], pb[GIGS_STATS_SIZE];
     gigs_stats_put(pa, &a);
     gigs_stats_put(pb, &b);
