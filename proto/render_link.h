@@ -41,11 +41,14 @@ enum link_render_flag {
     LINK_RENDER_ASK_WHEN_DONE = 1u << 6, /* the paper's rule: an NC asks for its
                                             next area once it has finished one
                                             (default: one round trip ahead) */
-    LINK_RENDER_CLIP_LISTS = 1u << 7,   /* the paper's clipping lists (a Y list
-                                           per area, an X window per pixel)
-                                           instead of clipping in the tree */
 };
-#define LINK_RENDER_FLAGS_ALL 0xFFu
+#define LINK_RENDER_FLAGS_ALL 0x7Fu
+
+/* How the NCs clip (render/clip.h): by the frame's clusters per pixel
+ * (render_frame_t.clip_coverage against RENDER_CLIP_LISTS_MAX_COVERAGE),
+ * or always the paper's lists, or always in the hierarchy. */
+enum link_clip { LINK_CLIP_AUTO = 0, LINK_CLIP_LISTS = 1, LINK_CLIP_TREE = 2 };
+#define LINK_CLIP_MODES 3
 
 /* Balancing modes: the values of proto/areas.h enum areas_mode. */
 enum link_balance { LINK_BALANCE_STATIC = 0, LINK_BALANCE_DYNAMIC = 1, LINK_BALANCE_DECREASING = 2 };
@@ -58,6 +61,7 @@ struct link_render_args {
     uint8_t flags;    /* enum link_render_flag */
     uint8_t guided;   /* decreasing: the guided factor, 1..AREAS_MAX_GUIDED_FACTOR;
                          0 = the board's default for its NC count */
+    uint8_t clip;     /* enum link_clip */
     uint32_t areas;   /* K: areas of the dynamic grid / smallest-area bound of
                          the decreasing schedule; 0 = the board's default */
 };
@@ -258,7 +262,7 @@ static inline void link_render_args_put(uint8_t *p, const struct link_render_arg
     wire_put_u8(p + 4, a->balance);
     wire_put_u8(p + 5, a->flags);
     wire_put_u8(p + 6, a->guided);
-    wire_put_u8(p + 7, 0);
+    wire_put_u8(p + 7, a->clip);
     wire_put_u32(p + 8, a->areas);
 }
 static inline void link_render_args_get(const uint8_t *p, struct link_render_args *a)
@@ -267,6 +271,7 @@ static inline void link_render_args_get(const uint8_t *p, struct link_render_arg
     a->balance = wire_get_u8(p + 4);
     a->flags = wire_get_u8(p + 5);
     a->guided = wire_get_u8(p + 6);
+    a->clip = wire_get_u8(p + 7);
     a->areas = wire_get_u32(p + 8);
 }
 

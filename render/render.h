@@ -168,6 +168,10 @@ typedef struct {
                                       when none */
     num_t detail_size, detail_step; /* its smallest size and the step of the
                                       arithmetic there, in stored units */
+    uint32_t clip_coverage;        /* the clusters' own screen rectangles over
+                                      a pixel, on average (rounded up): the
+                                      length of the paper's X list, which
+                                      chooses how an NC clips (render/clip.h) */
 } render_frame_t;
 
 #define RENDER_NO_PRIM UINT32_MAX

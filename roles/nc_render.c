@@ -89,7 +89,8 @@ static void nc_round_trip(struct nc_job *job, uint64_t seen, int waited)
 
 /* Opens the broadcast frame and sets aside the working set; 0, or -1 with
  * why filled (the broadcast read is ended again then). */
-static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, char *why, size_t cap)
+static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, uint8_t clip, char *why,
+                    size_t cap)
 {
     uint32_t me = mycpu()->core;
     const uint8_t *block;
@@ -129,7 +130,9 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, char *w
     job->ctx.options.use_hierarchy = !(flags & LINK_RENDER_NO_HIERARCHY);
     job->opt.y_clip = !(flags & LINK_RENDER_NO_YCLIP);
     job->opt.x_clip = !(flags & LINK_RENDER_NO_XCLIP);
-    job->opt.lists = (flags & LINK_RENDER_CLIP_LISTS) != 0;
+    job->opt.lists = clip == LINK_CLIP_LISTS ||
+                     (clip == LINK_CLIP_AUTO &&
+                      blob->frame->clip_coverage <= RENDER_CLIP_LISTS_MAX_COVERAGE);
     job->opt.progress = &gigs_nc_progress[mycpu()->core];
     return 0;
 }
@@ -213,11 +216,12 @@ void nc_render_frame(struct line_msg *m)
     }
     uint8_t flags = wire_get_u8(m->payload);
     uint32_t largest = wire_get_u32(m->payload + 1);
+    uint8_t clip = m->len >= MSG_NC_START_SIZE ? wire_get_u8(m->payload + 5) : LINK_CLIP_AUTO;
     char why[LINE_MAX_PAYLOAD / 4];
     job->trace = (flags & LINK_RENDER_TRACE) != 0;
     if (job->trace)
         insn_mark_trace_span_begin();
-    int ok = nc_setup(job, flags, largest, why, sizeof why) == 0;
+    int ok = nc_setup(job, flags, largest, clip, why, sizeof why) == 0;
     if (job->trace)
         insn_mark_trace_span_end();
     int reading = ok; /* inside the broadcast read */

@@ -84,7 +84,8 @@ void rc_nc_begin(struct rc_run *run, const uint8_t *plan, uint32_t n)
     }
 }
 
-void rc_nc_start(struct rc_run *run, struct line_msg *m, uint8_t flags, uint32_t largest)
+void rc_nc_start(struct rc_run *run, struct line_msg *m, uint8_t flags, uint32_t largest,
+                 uint8_t clip)
 {
     /* What the pending map holds from before the frame is stale: every
      * line is looked at once below. */
@@ -94,9 +95,10 @@ void rc_nc_start(struct rc_run *run, struct line_msg *m, uint8_t flags, uint32_t
         if (run->nc[k].state == RC_NC_OUT)
             continue;
         m->type = MSG_NC_START;
-        m->len = 5;
+        m->len = MSG_NC_START_SIZE;
         wire_put_u8(m->payload, flags);
         wire_put_u32(m->payload + 1, largest);
+        wire_put_u8(m->payload + 5, clip);
         run->nc[k].since = ktime_now();
         rc_nc_send(k, m);
         /* Its doorbell armed; a message there already is looked at. */

@@ -269,7 +269,7 @@ void rc_render_frame(struct line_msg *m)
         dc_init(UNITS_RC_CORE); /* nobody pushes between frames */
         rc_frame.active = 1;
         task_signal_local(); /* the collector starts */
-        rc_nc_start(&run, m, flags, largest);
+        rc_nc_start(&run, m, flags, largest, args.clip);
         /* The NCs' share of the pool is the same for each (kernel/kmem.c). */
         run.nc_private = (uint32_t)cpu_of(UNITS_FIRST_NC)->mem_size;
         rc_serve(&run, m);

@@ -85,8 +85,10 @@ void rc_fail(struct rc_run *run, int32_t status, const char *fmt, uint32_t a, ui
 /* Marks the NCs that failed before as out, counts the rest into run->ncs,
  * and takes the fault plan (LINK_INJECT_SIZE(n) bytes at plan, n may be 0). */
 void rc_nc_begin(struct rc_run *run, const uint8_t *plan, uint32_t n);
-/* Sends MSG_NC_START (flags, largest area) to every NC in the frame. */
-void rc_nc_start(struct rc_run *run, struct line_msg *m, uint8_t flags, uint32_t largest);
+/* Sends MSG_NC_START (flags, largest area, clipping) to every NC in the
+ * frame. */
+void rc_nc_start(struct rc_run *run, struct line_msg *m, uint8_t flags, uint32_t largest,
+                 uint8_t clip);
 /* One pass: the messages of the NCs whose lines have some (the line
  * driver's pending map, not a look at every line), areas handed out or
  * stops; every GIGS_WATCH_MS, the watchdog's look at every NC.  Returns 1

@@ -99,8 +99,10 @@ static void render_usage(FILE *out)
             "  --mark-lost      paint pixels that lost precision magenta (text scenes)\n"
             "  --no-yclip --no-xclip --no-bbox --no-hierarchy\n"
             "                   switch a speed-up off (the image stays the same)\n"
-            "  --clip-lists     clip as the paper's NCs did, a Y list per area and an X\n"
-            "                   window per pixel, instead of in the hierarchy (the same image)\n"
+            "  --clip M         how the NCs clip the screen: auto (default: the paper's lists\n"
+            "                   where few clusters cover a pixel, the hierarchy where many),\n"
+            "                   lists (a Y list per area, an X window per pixel, as the paper's\n"
+            "                   NCs did) or tree (per pixel in the hierarchy); the same image\n"
             "  --no-auto-hierarchy  compile without the automatic hierarchy (text scenes)\n"
             "  --view           show the frame memory live (-device ramfb, a display)\n"
             "  --ppm            write PPM (also chosen by an OUT ending in .ppm)\n"
@@ -141,7 +143,7 @@ enum render_opt_code {
     RENDER_OPT_REFRACTION,
     RENDER_OPT_NO_YCLIP,
     RENDER_OPT_NO_XCLIP,
-    RENDER_OPT_CLIP_LISTS,
+    RENDER_OPT_CLIP,
     RENDER_OPT_NO_BBOX,
     RENDER_OPT_NO_HIERARCHY,
     RENDER_OPT_NO_AUTO_HIERARCHY,
@@ -177,7 +179,7 @@ static const struct option render_options[] = {
     {"refraction", required_argument, NULL, RENDER_OPT_REFRACTION},
     {"no-yclip", no_argument, NULL, RENDER_OPT_NO_YCLIP},
     {"no-xclip", no_argument, NULL, RENDER_OPT_NO_XCLIP},
-    {"clip-lists", no_argument, NULL, RENDER_OPT_CLIP_LISTS},
+    {"clip", required_argument, NULL, RENDER_OPT_CLIP},
     {"no-bbox", no_argument, NULL, RENDER_OPT_NO_BBOX},
     {"no-hierarchy", no_argument, NULL, RENDER_OPT_NO_HIERARCHY},
     {"no-auto-hierarchy", no_argument, NULL, RENDER_OPT_NO_AUTO_HIERARCHY},
@@ -288,8 +290,15 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
     case RENDER_OPT_NO_YCLIP:
         o->args.flags |= LINK_RENDER_NO_YCLIP;
         return 0;
-    case RENDER_OPT_CLIP_LISTS:
-        o->args.flags |= LINK_RENDER_CLIP_LISTS;
+    case RENDER_OPT_CLIP:
+        if (strcmp(c->arg, "auto") == 0)
+            o->args.clip = LINK_CLIP_AUTO;
+        else if (strcmp(c->arg, "lists") == 0)
+            o->args.clip = LINK_CLIP_LISTS;
+        else if (strcmp(c->arg, "tree") == 0)
+            o->args.clip = LINK_CLIP_TREE;
+        else
+            return cli_bad_value(c, "auto, lists or tree");
         return 0;
     case RENDER_OPT_NO_XCLIP:
         o->args.flags |= LINK_RENDER_NO_XCLIP;

@@ -150,7 +150,7 @@ ln -sfn "$PWD/scenes/maps" "$TMP/maps" # the scene's image maps, by relative pat
 grep -q 'shadows off' "$TMP/noshadow.scn" || fail "no options block in demo.scn to turn shadows off"
 T10="$TMP/fig10.trace"
 board "$TMP/b10.log" "$TMP/noshadow.scn" --size "$SIZE10" --ncs 2 --balance dynamic --areas 1024 \
-    --trace "$T10" -o "$TMP/f10.ppm"
+    --clip lists --ask finished --trace "$T10" -o "$TMP/f10.ppm"
 : >"$TMP/r10.txt"
 for k in $K10; do
     "$LINKS1" replay "$T10" --ncs 64 --balance dynamic --areas "$k" >>"$TMP/r10.txt" ||
@@ -163,7 +163,8 @@ first=$(head -1 "$TMP/r10.tsv")
 awk '{ printf "%s %.3f\n", $1, $2 / 1000 }' "$TMP/r10.tsv" >"$OUT/fig10.dat"
 {
     echo "Fig. 10: simple dynamic balancing on 64 NCs, demo.scn with shadows off at $SIZE10"
-    echo "(trace: links1 render NOSHADOW.scn --size $SIZE10 --ncs 2 --balance dynamic --areas 1024"
+    echo "as the paper's NCs worked (the clipping lists, asking once finished; trace: links1 render"
+    echo "NOSHADOW.scn --size $SIZE10 --ncs 2 --balance dynamic --areas 1024 --clip lists --ask finished"
     echo "--trace T; replay: links1 replay T --ncs 64 --balance dynamic --areas K)."
     echo
     echo "| areas | frame s at 1 MIPS | NCs busy | RC busy |"
@@ -203,12 +204,14 @@ SCALE2=$((W2 / WL))
 prims=$(sed -nE 's/.*: ([0-9]+) spheres, ([0-9]+) triangles.*/\1 spheres, \2 triangles/p' "$TMP/spd.log")
 rows=("none|--no-bbox --no-hierarchy --no-yclip --no-xclip"
       "bounding boxes only|--no-hierarchy --no-yclip --no-xclip"
-      "+ hierarchy|--no-yclip --no-xclip" "+ Y clipping|--no-xclip" "+ X clipping (all)|")
+      "+ hierarchy|--no-yclip --no-xclip" "+ Y clipping|--no-xclip --clip lists"
+      "+ X clipping (all, the paper's lists)|--clip lists"
+      "all, clipping in the hierarchy instead (the board's default)|")
 set -- $T2K
 {
     echo "Table 2: SPD $T2SPD ($prims, the compiler's automatic hierarchy) at $SIZE2,"
-    echo "16 NCs, simple dynamic balancing; frame s at 1 MIPS, the DM preparing during the"
-    echo "previous frame (trace: links1 render T2.scn --ncs 2 SWITCHES --balance dynamic --areas K"
+    echo "16 NCs, simple dynamic balancing, NCs asking once finished; frame s at 1 MIPS, the DM"
+    echo "preparing during the previous frame (trace: links1 render T2.scn --ncs 2 SWITCHES --ask finished --balance dynamic --areas K"
     echo "--trace T, rows without clipping once with K = $1, the others once per K; replay:"
     echo "links1 replay T --ncs 16 --balance dynamic --areas K --pipelined).  Rows marked * were"
     echo "traced at $SIZE2LOW and replayed with --scale $SCALE2 (each pixel priced at its traced"
@@ -226,13 +229,13 @@ for row in "${rows[@]}"; do
         scn="$TMP/t2low.scn" scale=$SCALE2 name="$name *"
     fi
     ta="$TMP/t2-$r-$1.trace" tb="$TMP/t2-$r-$2.trace"
-    board "$TMP/b2-$r-$1.log" "$scn" --ncs 2 $sw --balance dynamic --areas "$1" --trace "$ta" \
-        -o "$TMP/t2.ppm"
+    board "$TMP/b2-$r-$1.log" "$scn" --ncs 2 $sw --ask finished --balance dynamic --areas "$1" \
+        --trace "$ta" -o "$TMP/t2.ppm"
     if [[ $sw == *--no-yclip*--no-xclip* ]]; then
         tb=$ta
     else
-        board "$TMP/b2-$r-$2.log" "$scn" --ncs 2 $sw --balance dynamic --areas "$2" \
-            --trace "$tb" -o "$TMP/t2.ppm"
+        board "$TMP/b2-$r-$2.log" "$scn" --ncs 2 $sw --ask finished --balance dynamic \
+            --areas "$2" --trace "$tb" -o "$TMP/t2.ppm"
     fi
     "$LINKS1" replay "$ta" --scale $scale --ncs 16 --balance dynamic --areas "$1" --pipelined \
         >"$TMP/r2a.txt" || fail "replay table 2"

@@ -11,13 +11,15 @@
 board_ready render_switches || exit 0
 SIZE=96x72
 ref=$(render_ref scenes/city.scn float $SIZE)
-for sw in none no-yclip no-xclip no-bbox no-hierarchy all clip-lists ask-finished; do
+for sw in none no-yclip no-xclip no-bbox no-hierarchy all clip-lists clip-tree ask-finished; do
     name=render_city_$sw
     out="$RENDER_TMP/$name.ppm"
     case $sw in
     none) args=() ;;
     all) args=(--no-yclip --no-xclip --no-bbox --no-hierarchy) ;;
     ask-finished) args=(--ask finished) ;;
+    clip-lists) args=(--clip lists) ;;
+    clip-tree) args=(--clip tree) ;;
     *) args=(--$sw) ;;
     esac
     render_board $name "$out" scenes/city.scn -o "$out" --ncs 2 --size $SIZE "${args[@]}" ||
@@ -41,11 +43,12 @@ SPD="$(dirname "$LINKS1")/links1-spd"
 tetra="$RENDER_TMP/tetra6.nff"
 if "$SPD" tetra 6 -o "$tetra" >"$tetra.log" 2>&1; then
     tref=$(render_ref "$tetra" fixed 64x48)
-    for sw in default clip-lists; do
+    for sw in default clip-tree clip-lists; do
         name=render_tetra6_fixed_$sw
         out="$RENDER_TMP/$name.ppm"
         args=()
-        [ $sw = clip-lists ] && args=(--clip-lists --ask finished)
+        [ $sw = clip-lists ] && args=(--clip lists --ask finished)
+        [ $sw = clip-tree ] && args=(--clip tree)
         render_board $name "$out" "$tetra" -o "$out" --ncs 4 --size 64x48 --arith fixed \
             "${args[@]}" || continue
         render_same $name "$tref" "$out"
