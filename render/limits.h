@@ -7,9 +7,12 @@
 #ifndef LINKS1_RENDER_LIMITS_H
 #define LINKS1_RENDER_LIMITS_H
 
+#include "proto/scene_format.h"
+
 #define RENDER_MAX_WIDTH 1024         /* frame memory: 1024x1024 pixels */
 #define RENDER_MAX_HEIGHT 1024
-#define RENDER_MAX_LIGHTS 8           /* the paper used up to 3 */
+#define RENDER_MAX_LIGHTS SCN_MAX_LIGHTS /* one limit, defined once in
+                                         proto/scene_format.h (16) */
 #define RENDER_MAX_DEPTH 16           /* reflection/refraction recursion */
 #define RENDER_MAX_CLUSTER_DEPTH 32   /* nesting of clusters below the root */
 #define RENDER_MAX_TRANSPARENT 16     /* transmission buffer: objects crossed
