@@ -38,9 +38,11 @@
  * RENDER_MAX_CLUSTER_DEPTH clusters at 32 bytes each, a primitive test):
  * 4096 before the near-first walk, which adds 8 bytes a level and keeps
  * trace_straight's 160 more bytes out of every level; the error bound
- * adds 56 to the leaf (trace_lights, trace_straight, trace_nearest). */
+ * adds 56 to the leaf (trace_lights, trace_straight, trace_nearest), the
+ * ambient's choice of light 8 more in float (trace_lights: 600 bytes in
+ * float, 592 in fixed). */
 #define RENDER_STACK_PER_DEPTH 448
-#define RENDER_STACK_BASE 4672
+#define RENDER_STACK_BASE 4680
 #define RENDER_STACK_BYTES(max_depth) \
     (RENDER_STACK_BASE + RENDER_STACK_PER_DEPTH * ((max_depth) + 1))
 
