@@ -35,7 +35,12 @@
                                               DM keeps it in its private memory */
 #define SCN_MAX_WIDTH 1024                 /* the frame memory is 1024x1024 */
 #define SCN_MAX_HEIGHT 1024
-#define SCN_MAX_LIGHTS 3 /* LINKS-1 scenes use up to three light sources */
+#define SCN_MAX_LIGHTS 16 /* lights of any kinds (parallel, point, spot): the
+                             one limit, also the renderer's (render/limits.h
+                             RENDER_MAX_LIGHTS); the paper sets none.  Each
+                             costs 48 bytes here, 48 in the scene and 60 in
+                             the prepared frame (render_frame_t holds them),
+                             and a shadow ray per hit */
 #define SCN_MAX_MATERIALS 1024
 #define SCN_MAX_MAPS 16
 #define SCN_MAX_MAP_SIDE 1024              /* texels per map row or column */
@@ -154,7 +159,18 @@ enum scn_section {
 #define SCN_OPT_NO_REFRACTION 0x0010u
 #define SCN_OPT_MARK_LOST 0x0020u /* pixels that lost precision painted
                                      RENDER_LOST_COLOUR (--mark-lost) */
-#define SCN_OPT_KNOWN 0x003fu
+/* The two readings of the paper's shadows (docs/renderer.md, "Ambient and
+ * shadows"); the text form sets both bits unless told otherwise, a
+ * compiled scene without them keeps the earlier readings.
+ * AMBIENT_SHADOWED: Fig. 5's ambient term dic F L_i takes light i as the
+ * shadow rule leaves it (times what lies between), as its diffuse term
+ * does; without it, ambient takes the unshadowed L_i.
+ * UNTINTED_SHADOWS: a transparent object between a point and a light
+ * multiplies the light by its transmissivity trc(th) alone; without it,
+ * by trc(th) F (tinted by the object's colour). */
+#define SCN_OPT_AMBIENT_SHADOWED 0x0040u
+#define SCN_OPT_UNTINTED_SHADOWS 0x0080u
+#define SCN_OPT_KNOWN 0x00ffu
 
 /* ------------------------------------------------------- LIGHTS record */
 #define SCN_LIGHT_SIZE 48
@@ -179,7 +195,8 @@ enum scn_light_kind {
 #define SCN_MAT_DRC 16          /* f32 0..1: diffuse coefficient */
 #define SCN_MAT_SRC 20          /* f32 0..1: reflection coefficient at normal incidence */
 #define SCN_MAT_TRC 24          /* f32 0..1: transmissivity at normal incidence */
-#define SCN_MAT_FRESNEL 28      /* f32 0..1: weight of the angle dependence;
+#define SCN_MAT_FRESNEL 28      /* f32 0..1: weight of the angle dependence
+                                   (Schlick's curve, render/shade.h);
                                    0 = constant src and trc */
 #define SCN_MAT_IOR 32          /* f32 1..SCN_MAX_IOR */
 #define SCN_MAT_PHONG 36        /* u16: n of cos^n, 0..SCN_MAX_PHONG, 0 = no highlight */

@@ -7,9 +7,12 @@
 #ifndef LINKS1_RENDER_LIMITS_H
 #define LINKS1_RENDER_LIMITS_H
 
+#include "proto/scene_format.h"
+
 #define RENDER_MAX_WIDTH 1024         /* frame memory: 1024x1024 pixels */
 #define RENDER_MAX_HEIGHT 1024
-#define RENDER_MAX_LIGHTS 8           /* the paper used up to 3 */
+#define RENDER_MAX_LIGHTS SCN_MAX_LIGHTS /* one limit, defined once in
+                                         proto/scene_format.h (16) */
 #define RENDER_MAX_DEPTH 16           /* reflection/refraction recursion */
 #define RENDER_MAX_CLUSTER_DEPTH 32   /* nesting of clusters below the root */
 #define RENDER_MAX_TRANSPARENT 16     /* transmission buffer: objects crossed
@@ -41,9 +44,11 @@
  * RENDER_MAX_CLUSTER_DEPTH clusters at 32 bytes each, a primitive test):
  * 4096 before the near-first walk, which adds 8 bytes a level and keeps
  * trace_straight's 160 more bytes out of every level; the error bound
- * adds 56 to the leaf (trace_lights, trace_straight, trace_nearest). */
+ * adds 56 to the leaf (trace_lights, trace_straight, trace_nearest), the
+ * ambient's choice of light 8 more in float (trace_lights: 600 bytes in
+ * float, 592 in fixed). */
 #define RENDER_STACK_PER_DEPTH 448
-#define RENDER_STACK_BASE 4672
+#define RENDER_STACK_BASE 4680
 #define RENDER_STACK_BYTES(max_depth) \
     (RENDER_STACK_BASE + RENDER_STACK_PER_DEPTH * ((max_depth) + 1))
 

@@ -53,7 +53,7 @@ typedef struct {
 
 enum scene_light_kind {
     SCENE_LIGHT_PARALLEL = 0, /* directional: no position, no falloff */
-    SCENE_LIGHT_POINT = 1,    /* point: no distance falloff (as in the paper) */
+    SCENE_LIGHT_POINT = 1,    /* point: no distance falloff (Fig. 5 has none) */
     SCENE_LIGHT_SPOT = 2,     /* point with a cone and a smooth edge */
 };
 
@@ -74,13 +74,14 @@ typedef struct {
 typedef struct {
     rgb_t colour;      /* F: object colour, 0..1 per channel; multiplies
                           ambient, diffuse and transmitted light */
-    num_t dic;         /* ambient coefficient (per light, unshadowed), 0..1 */
+    num_t dic;         /* ambient coefficient (per light; shadowed or not
+                          by options.ambient_shadowed), 0..1 */
     num_t drc;         /* diffuse coefficient (shadowed light), 0..1 */
     num_t src;         /* reflection coefficient at normal incidence, 0..1 */
     num_t trc;         /* transmissivity at normal incidence, 0..1;
                           src + trc <= 1 keeps energy */
-    num_t fresnel;     /* 0..1: weight of the angle dependence of src/trc;
-                          0 = constant src/trc (see docs/renderer.md) */
+    num_t fresnel;     /* 0..1: weight of the angle dependence of src/trc
+                          (render/shade.h); 0 = constant src/trc */
     num_t ior;         /* index of refraction, >= 1; 1 = no bending */
     uint16_t phong_n;  /* highlight sharpness n of cos^n, 0..RENDER_MAX_PHONG_N;
                           0 = no highlight */
@@ -208,6 +209,14 @@ typedef struct {
                                transmission goes straight through */
     uint8_t mark_lost;      /* 1: a pixel that lost precision is painted
                                RENDER_LOST_COLOUR instead */
+    uint8_t ambient_shadowed; /* 1: light i's ambient term dic F S_i takes
+                               the light as shadows leave it (Fig. 5 read
+                               literally: the text form's default); 0: the
+                               unshadowed L_i (SCN_OPT_AMBIENT_SHADOWED) */
+    uint8_t shadow_tint;    /* 1: a transparent object between a point and
+                               a light passes trc(th) F of it (tinted); 0:
+                               trc(th) alone, its transmissivity (the text
+                               form's default; SCN_OPT_UNTINTED_SHADOWS) */
     uint16_t density_steps; /* equal steps of a density sphere's root finder,
                                SCN_MIN_DENSITY_STEPS..SCN_MAX_DENSITY_STEPS
                                (render/prim.c; render_prim_t.density_steps) */

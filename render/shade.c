@@ -50,10 +50,11 @@ int shade_light_at(const render_light_t *l, vec3_t point, vec3_t *to_light, num_
 }
 
 rgb_t shade_light_term(const scene_material_t *m, rgb_t colour, vec3_t n, vec3_t view,
-                       vec3_t to_light, rgb_t unshadowed, rgb_t shadowed, num_t src_theta)
+                       vec3_t to_light, rgb_t ambient, rgb_t shadowed, num_t src_theta)
 {
-    /* ambient: dic F L_i, whatever lies between point and light */
-    rgb_t out = rgb_scale(rgb_mul(colour, unshadowed), m->dic);
+    /* ambient: dic F times the light given (S_i, or L_i whatever lies
+     * between point and light) */
+    rgb_t out = rgb_scale(rgb_mul(colour, ambient), m->dic);
     num_t cos_i = vec3_dot(n, to_light);
     if (!num_gt(cos_i, NUM_ZERO))
         return out;

@@ -1,23 +1,28 @@
 /* render/shade.h: the paper's Fig. 5 shading model, term by term.
  *
- *   I = sum_i [ (dic + drc cos th_i) F L_i' + cos^n(th_ri) src(th) S_i ]
+ *   I = sum_i [ (dic + drc cos th_i) F + cos^n(th_ri) src(th) ] S_i
  *       + src(th) I_r + trc(th) F I_t
  *
- * with ambient (dic F L_i) from the UNSHADOWED light L_i and diffuse and
- * highlight from the SHADOWED light S_i (L_i times the transmittance of
- * everything between the point and the light).  docs/renderer.md has the
- * details; these functions are separate so the tests can check each term.
+ * with S_i light i's intensity times the transmissivity of everything
+ * between the point and the light (the paper's shadow rule).  The ambient
+ * term dic F takes S_i (options.ambient_shadowed, the default) or the
+ * unshadowed L_i.  docs/renderer.md has the details and the readings;
+ * these functions are separate so the tests can check each term.
  */
 #ifndef LINKS1_RENDER_SHADE_H
 #define LINKS1_RENDER_SHADE_H
 
 #include "render/render.h"
 
-/* src and trc at incidence cosine cos_theta (in [0,1]):
+/* src(th) and trc(th), the paper's reflection coefficient and
+ * transmissivity as functions of the angle of incidence "approximating
+ * Fresnel's law", at incidence cosine cos_theta (in [0,1]):
  *   s = fresnel * (1 - cos_theta)^5            (Schlick's curve, weighted)
- *   src(th) = src + (1 - src) * s
- *   trc(th) = trc * (1 - s)
- * fresnel = 0 gives the constants src and trc. */
+ *   src(th) = src + (1 - src) * s              (src at normal incidence,
+ *                                               1 at grazing when fresnel 1)
+ *   trc(th) = trc * (1 - s)                    (trc at normal incidence,
+ *                                               0 at grazing when fresnel 1)
+ * fresnel = 0 gives the constants src and trc (Whitted's). */
 void shade_src_trc(const scene_material_t *m, num_t cos_theta, num_t *src, num_t *trc);
 
 /* Light i as seen from point: unit direction towards the light, distance
@@ -30,9 +35,11 @@ int shade_light_at(const render_light_t *l, vec3_t point, vec3_t *to_light, num_
 num_t shade_spot_falloff(num_t cos_angle, num_t cos_outer, num_t cos_inner);
 
 /* One light's term of the sum: normal n faces the viewer, view is the unit
- * ray direction arriving at the point, to_light unit. */
+ * ray direction arriving at the point, to_light unit; ambient the light
+ * the ambient term takes (shadowed or not), shadowed the light the diffuse
+ * and highlight terms take. */
 rgb_t shade_light_term(const scene_material_t *m, rgb_t colour, vec3_t n, vec3_t view,
-                       vec3_t to_light, rgb_t unshadowed, rgb_t shadowed, num_t src_theta);
+                       vec3_t to_light, rgb_t ambient, rgb_t shadowed, num_t src_theta);
 
 /* Mirror direction of d about unit normal n. */
 vec3_t shade_reflect(vec3_t d, vec3_t n);

@@ -337,8 +337,9 @@ static void trace_surface_look(render_ctx_t *ctx, const hit_t *hit, const scene_
 }
 
 /* Fraction of light i that reaches origin along dir over distance:
- * the product of trc(th) F of every object crossed, in primitive order.
- * err: the shadow ray's error bound. */
+ * the product of trc(th) of every object crossed (trc(th) F with
+ * options.shadow_tint), in primitive order.  err: the shadow ray's error
+ * bound. */
 static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t distance,
                           const ray_error_t *err)
 {
@@ -377,7 +378,8 @@ static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t di
         trace_surface_look(ctx, &hit, m, &colour, &n);
         num_t src, trc;
         shade_src_trc(m, num_abs(vec3_dot(n, dir)), &src, &trc);
-        pass = rgb_mul(pass, rgb_scale(colour, trc));
+        pass = ctx->options.shadow_tint ? rgb_mul(pass, rgb_scale(colour, trc))
+                                        : rgb_scale(pass, trc);
     }
     return pass;
 }
@@ -385,7 +387,9 @@ static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t di
 /* Sum over lights of Fig. 5's per-light terms at a hit.  hit_err: how far
  * the hit point may be off (trace_hit_error): each shadow ray starts that
  * far off, and towards a point light its direction turns by hit_err over
- * the distance. */
+ * the distance.  With options.ambient_shadowed the ambient term takes the
+ * shadowed light too, and a light behind the surface (cos <= 0) is
+ * shadowed by the surface itself: 0, no ray traced. */
 static rgb_t trace_lights(render_ctx_t *ctx, const hit_t *hit, num_t hit_err,
                           const scene_material_t *m, rgb_t colour, vec3_t n, vec3_t view, num_t src)
 {
@@ -403,8 +407,11 @@ static rgb_t trace_lights(render_ctx_t *ctx, const hit_t *hit, num_t hit_err,
             ray_error_t err = {hit_err, trace_err_clamp(num_add(num_div(hit_err, distance),
                                                                TRACE_DIR_ROUND))};
             shadowed = rgb_mul(unshadowed, trace_shadow(ctx, origin, to_light, distance, &err));
+        } else if (ctx->options.shadows) {
+            shadowed = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
         }
-        sum = rgb_add(sum, shade_light_term(m, colour, n, view, to_light, unshadowed, shadowed, src));
+        rgb_t ambient = ctx->options.ambient_shadowed ? shadowed : unshadowed;
+        sum = rgb_add(sum, shade_light_term(m, colour, n, view, to_light, ambient, shadowed, src));
     }
     return sum;
 }
@@ -420,14 +427,18 @@ static num_t trace_hit_error(const render_ctx_t *ctx, const ray_error_t *err, co
 }
 
 /* Where the shadow rays of a hit start, for their decisions: the hit's
- * error, unless what a shadow changes there (diffuse drc and highlight
- * src(th), times the weight of the ray that made the hit, for lights of
- * colour at most 1) is under RENDER_LOST_WEIGHT_VALUE: then only the
- * primitive's own, as for a light ray (trace_err_if_heavy). */
+ * error, unless what a shadow changes there (diffuse drc, highlight
+ * src(th) and, when shadowed, ambient dic, times the weight of the ray
+ * that made the hit, for lights of colour at most 1) is under
+ * RENDER_LOST_WEIGHT_VALUE: then only the primitive's own, as for a light
+ * ray (trace_err_if_heavy). */
 static num_t trace_shadow_error(const render_ctx_t *ctx, const ray_error_t *err, const hit_t *hit,
                                 const scene_material_t *m, num_t weight, num_t src)
 {
-    if (num_lt(num_mul(weight, num_add(m->drc, src)), NUM_C(RENDER_LOST_WEIGHT_VALUE)))
+    num_t shaded = num_add(m->drc, src);
+    if (ctx->options.ambient_shadowed)
+        shaded = num_add(shaded, m->dic);
+    if (num_lt(num_mul(weight, shaded), NUM_C(RENDER_LOST_WEIGHT_VALUE)))
         return ctx->frame->prims[hit->prim].hit_error;
     return trace_hit_error(ctx, err, hit);
 }

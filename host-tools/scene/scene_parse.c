@@ -179,6 +179,14 @@ static void parse_options(struct parser *p)
             bit = SCN_OPT_NO_SHADOWS, inverted = 1;
         } else if (lex_is_word(&p->lx, "mark_lost")) {
             bit = SCN_OPT_MARK_LOST;
+        } else if (lex_is_word(&p->lx, "ambient_shadowed")) {
+            bit = SCN_OPT_AMBIENT_SHADOWED;
+        } else if (lex_is_word(&p->lx, "shadow_tint")) {
+            bit = SCN_OPT_UNTINTED_SHADOWS, inverted = 1;
+        } else if (lex_is_word(&p->lx, "fresnel")) { /* compiler only */
+            lex_next(&p->lx);
+            p->fresnel_off = !parse_on_off(p, "fresnel");
+            continue;
         } else if (lex_is_word(&p->lx, "auto_hierarchy")) { /* compiler only */
             lex_next(&p->lx);
             p->s->no_auto_hierarchy = !parse_on_off(p, "auto_hierarchy");
@@ -219,7 +227,7 @@ static void parse_light(struct parser *p)
 {
     struct sd_scene *s = p->s;
     if (s->n_lights >= SCN_MAX_LIGHTS)
-        lex_error(&p->lx, "more than %d lights", SCN_MAX_LIGHTS);
+        lex_error(&p->lx, "more than SCN_MAX_LIGHTS (%d) lights", SCN_MAX_LIGHTS);
     lex_next(&p->lx);
     struct sd_light l;
     memset(&l, 0, sizeof l);
@@ -400,8 +408,23 @@ void sd_view_defaults(struct sd_view *v)
     v->max_depth = PARSE_DEFAULT_DEPTH;
     v->min_weight = SCN_DEFAULT_MIN_WEIGHT;
     v->density_steps = SCN_DEFAULT_DENSITY_STEPS;
-    v->flags = SCN_OPT_REFRACTIONLESS;
+    v->flags = SCN_OPT_REFRACTIONLESS | SCN_OPT_AMBIENT_SHADOWED | SCN_OPT_UNTINTED_SHADOWS;
     v->frames = 1;
+}
+
+/* The default of fresnel, once the whole file (and its options) is read:
+ * 1, src(th) and trc(th) on Schlick's curve (the paper's angle-dependent
+ * coefficients), for a material that reflects or transmits; 0 for a
+ * matte one (src = trc = 0: no mirror term whose coefficient could vary,
+ * where a curve from src = 0 would make it a mirror at grazing) and
+ * under options { fresnel off }. */
+static void parse_resolve_fresnel(struct parser *p)
+{
+    for (int i = 0; i < p->s->n_materials; i++) {
+        struct sd_material *m = &p->s->materials[i];
+        if (m->fresnel == PARSE_FRESNEL_UNSET)
+            m->fresnel = !p->fresnel_off && (m->src > 0 || m->trc > 0) ? 1 : 0;
+    }
 }
 
 int sd_parse_text(const char *name, const char *text, struct sd_scene *s, char *err,
@@ -432,6 +455,7 @@ int sd_parse_text(const char *name, const char *text, struct sd_scene *s, char *
         lex_error(&p->lx, "the scene has no light");
     if (s->n_prims == 0)
         lex_error(&p->lx, "the scene has no primitive");
+    parse_resolve_fresnel(p);
     free(p);
     return 0;
 }

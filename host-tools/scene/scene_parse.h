@@ -26,7 +26,13 @@ struct parser {
     char dir[PARSE_DIR_MAX]; /* directory of the scene file, for map images */
     int cap_materials, cap_clusters, cap_prims, cap_components, cap_keys;
     int seen_camera, seen_resolution, seen_options, seen_animation;
+    int fresnel_off; /* options { fresnel off }: materials that set neither
+                        fresnel nor constant keep src and trc constant */
 };
+
+/* A material's fresnel until the end of the file decides it
+ * (parse_resolve_fresnel). */
+#define PARSE_FRESNEL_UNSET (-1.0)
 
 /* helpers (scene_parse.c); each fails through lex_error */
 void *parse_grow(struct parser *p, void *arr, int *cap, int n, size_t elem, int limit,

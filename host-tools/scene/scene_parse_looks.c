@@ -111,6 +111,7 @@ void parse_material(struct parser *p)
     m.dic = 0.1;
     m.drc = 0.9;
     m.ior = 1;
+    m.fresnel = PARSE_FRESNEL_UNSET;
     m.colour_map = m.bump_map = -1;
     parse_open(p, "material");
     while (p->lx.kind != LEX_CLOSE) {

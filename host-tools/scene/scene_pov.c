@@ -2,11 +2,14 @@
  * the renderer (docs/pov-mapping.md has the mapping and its limits).
  *
  * Exact where both renderers mean the same thing: the camera, point and
- * parallel lights without fading, per-light ambient (global ambient_light =
- * sum of the light colours, finish ambient = dic), Lambert diffuse (diffuse
- * drc, brilliance 1), hard shadows, constant mirror reflection, triangles,
- * ellipsoids, boxes.  Anything else is approximated and named in a comment
- * at the top of the file, or refused when strict is set.
+ * parallel lights without fading, per-light ambient when it is not
+ * shadowed (global ambient_light = sum of the light colours, finish
+ * ambient = dic), Lambert diffuse (diffuse drc, brilliance 1), hard
+ * shadows, mirror reflection constant or on the angle (POV-Ray's variable
+ * reflection, min + (max - min)(1 - cos)^falloff, is Schlick's curve of
+ * render/shade.h with min src, max src + (1 - src) fresnel, falloff 5),
+ * triangles, ellipsoids, boxes.  Anything else is approximated and named
+ * in a comment at the top of the file, or refused when strict is set.
  */
 #include <errno.h>
 #include <math.h>
@@ -66,15 +69,21 @@ static void pov_check(const struct sd_scene *s, struct pov_notes *n)
     for (int i = 0; i < s->n_lights; i++)
         if (s->lights[i].kind == SCN_LIGHT_SPOT)
             pov_note(n, "spotlight: POV-Ray's falloff curve between cone and edge differs");
+    int ambient_shadowed = (s->view.flags & SCN_OPT_AMBIENT_SHADOWED) &&
+                           !(s->view.flags & SCN_OPT_NO_SHADOWS);
     for (int i = 0; i < s->n_materials; i++) {
         const struct sd_material *m = &s->materials[i];
+        if (m->dic > 0 && ambient_shadowed)
+            pov_note(n, "ambient shadowed per light (ambient_shadowed on): POV-Ray's "
+                        "ambient is never shadowed; exported unshadowed");
         if (m->trc > 0)
             pov_note(n, "transmission: POV-Ray's filter also dims the other terms; "
                         "trc is exported as filter");
-        if (m->fresnel > 0)
-            pov_note(n, "angle-dependent src/trc (fresnel): exported as constants");
-        if (m->phong > 0 && m->src > 0)
-            pov_note(n, "highlight cos^n * src: exported as POV-Ray phong, not the same curve");
+        if (m->trc > 0 && m->fresnel > 0)
+            pov_note(n, "angle-dependent trc (fresnel): POV-Ray's filter is a constant");
+        if (m->phong > 0 && (m->src > 0 || m->fresnel > 0))
+            pov_note(n, "highlight cos^n * src(th): exported as POV-Ray phong src, not the "
+                        "same curve");
         if (m->colour_map >= 0)
             pov_note(n, "colour map: not exported, the pigment is F alone");
         if (m->bump_map >= 0)
@@ -113,7 +122,13 @@ static void pov_material(FILE *f, const struct sd_material *m)
         fprintf(f, "phong %.9g phong_size %d ", m->src, m->phong);
     else
         fprintf(f, "phong 0 ");
-    fprintf(f, "reflection { %.9g } }\n", m->src);
+    /* src(th) = src + (1 - src) fresnel (1 - cos)^5: POV-Ray's variable
+     * reflection between src (head-on) and its value at grazing */
+    if (m->fresnel > 0)
+        fprintf(f, "reflection { %.9g, %.9g falloff 5 } }\n", m->src,
+                m->src + (1 - m->src) * m->fresnel);
+    else
+        fprintf(f, "reflection { %.9g } }\n", m->src);
     if (m->trc > 0 && m->ior != 1)
         fprintf(f, "  interior { ior %.9g }\n", m->ior);
 }

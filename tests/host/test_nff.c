@@ -6,7 +6,7 @@
  *     the views, the lights, the counts;
  *   - links1-spd's text scene compiles to the bytes the official NFF does;
  *   - every entity (v b l f s p pp c) and the mapping of surfaces, lights
- *     (merged beyond three) and the view;
+ *     (merged beyond SCN_MAX_LIGHTS) and the view;
  *   - hostile files (truncated, huge counts, a cone of zero height,
  *     unknown entities, ...) refused by file:line:col, never a crash;
  *     every prefix of an official file read without one;
@@ -169,8 +169,9 @@ static void test_official_counts(void)
         CHECK_EQ_INT(info.patches, want[i].patches);
         CHECK_EQ_INT(info.cones, want[i].cones);
         CHECK_EQ_INT(info.lights, want[i].lights);
-        CHECK_EQ_INT(s.n_lights, want[i].lights < 3 ? want[i].lights : 3);
-        CHECK_EQ_INT(info.lights_merged, want[i].lights > 3 ? want[i].lights - 3 : 0);
+        /* every SPD database has at most 7 lights: none merged */
+        CHECK_EQ_INT(s.n_lights, want[i].lights);
+        CHECK_EQ_INT(info.lights_merged, 0);
         /* spheres stay spheres, every other entity became triangles */
         long tri = 0, sph = 0;
         for (int p = 0; p < s.n_prims; p++) {
@@ -254,7 +255,7 @@ static void test_issue_numbers(void)
     /* tree 2: 7 spheres, 7 cones */
     scene_of("tree", 2, &s);
     CHECK_EQ_INT(s.n_prims, 2 + 7 + 7 * 2 * NFF_CONE_SIDES);
-    CHECK_EQ_INT(s.n_lights, 3);
+    CHECK_EQ_INT(s.n_lights, 7);
     sd_free(&s);
 }
 
@@ -377,21 +378,40 @@ static void test_lights(void)
     CHECK_NEAR(s.lights[0].colour[2], 1 / sqrt(2.0), 1e-15);
     CHECK_NEAR(s.lights[1].colour[1], 0.5, 0);
     sd_free(&s);
-    /* five: merged into three, the nearest in direction first; the total
-     * intensity kept (5 / sqrt(5)) */
-    CHECK(read_nff("l 0 -10 10.1\nl 10 0 0\nl -10 0 0\nl 10 0.1 0\nf 1 1 1 1 0 0 0 0\n"
-                   "s 0 0 0 1\n", &s, &info, err, sizeof err) == 0);
-    CHECK_EQ_INT(info.lights, 5);
+    /* SCN_MAX_LIGHTS (16; the head's and 15 more) are kept as they are */
+    char text[2048];
+    size_t len = 0;
+    for (int i = 0; i < SCN_MAX_LIGHTS - 1; i++)
+        len += (size_t)snprintf(text + len, sizeof text - len, "l %d 5 %d\n", 3 * i, -i);
+    snprintf(text + len, sizeof text - len, "f 1 1 1 1 0 0 0 0\ns 0 0 0 1\n");
+    CHECK(read_nff(text, &s, &info, err, sizeof err) == 0);
+    CHECK_EQ_INT(info.lights, 16);
+    CHECK_EQ_INT(info.lights_merged, 0);
+    CHECK_EQ_INT(s.n_lights, 16);
+    CHECK_NEAR(s.lights[15].position[0], 42, 0);
+    CHECK_NEAR(s.lights[15].position[2], -14, 0);
+    sd_free(&s);
+    /* eighteen (the head's, 4 and 13): merged into sixteen, the nearest in
+     * direction first; the total intensity kept (18 / sqrt(18)) */
+    len = 0;
+    const char *merged = "l 0 -10 10.1\nl 10 0 0\nl -10 0 0\nl 10 0.1 0\n";
+    len += (size_t)snprintf(text + len, sizeof text - len, "%s", merged);
+    for (int i = 0; i < 13; i++) /* far apart in direction: a circle above at */
+        len += (size_t)snprintf(text + len, sizeof text - len, "l %.17g %.17g 30\n",
+                                10 * cos(0.45 * (i + 1)), 10 * sin(0.45 * (i + 1)));
+    snprintf(text + len, sizeof text - len, "f 1 1 1 1 0 0 0 0\ns 0 0 0 1\n");
+    CHECK(read_nff(text, &s, &info, err, sizeof err) == 0);
+    CHECK_EQ_INT(info.lights, 18);
     CHECK_EQ_INT(info.lights_merged, 2);
-    CHECK_EQ_INT(s.n_lights, 3);
+    CHECK_EQ_INT(s.n_lights, 16);
     double sum = 0;
     for (int i = 0; i < s.n_lights; i++)
         sum += s.lights[i].colour[0];
-    CHECK_NEAR(sum, 5 / sqrt(5.0), 1e-12);
+    CHECK_NEAR(sum, 18 / sqrt(18.0), 1e-12);
     /* (0,-10,10) and (0,-10,10.1) became one, half way; so did the two at
      * x = 10 */
     CHECK_NEAR(s.lights[0].position[2], 10.05, 1e-12);
-    CHECK_NEAR(s.lights[0].colour[0], 2 / sqrt(5.0), 1e-12);
+    CHECK_NEAR(s.lights[0].colour[0], 2 / sqrt(18.0), 1e-12);
     CHECK_NEAR(s.lights[1].position[1], -0.05, 1e-12);
     CHECK_NEAR(s.lights[2].position[0], -10, 0);
     sd_free(&s);

@@ -1,5 +1,6 @@
 /* test_render.c: whole pixels through render_prepare and render_pixel:
- * hand-computed colours, shadows (opaque and tinted), mirror, refraction
+ * hand-computed colours, shadows (opaque, untinted and tinted; ambient
+ * shadowed or not), mirror, refraction
  * and refractionless transmission, keyframes, limits, the precision flag,
  * and the speed-ups (hierarchy, boxes, screen clipping) giving the same
  * image bit for bit. */
@@ -60,12 +61,51 @@ static void test_diffuse_wall(void)
     CHECK_EQ_INT(p.r, 153); /* 0.6 * 255 */
     CHECK_EQ_INT(p.g, 92);  /* 0.36 * 255 = 91.8 */
     CHECK_EQ_INT(p.b, 0);
-    /* two lights: ambient from each (the paper has no global ambient) */
+    /* a second light behind the wall: the wall shadows it from its own
+     * front, ambient too (Fig. 5's ambient takes the shadowed light) */
     l = ts_light(&ts, SCENE_LIGHT_PARALLEL, ts_rgb(0.4, 0.4, 0.4));
-    l->direction = ts_v(0, 0, -1); /* from behind the wall: ambient only */
+    l->direction = ts_v(0, 0, -1);
+    f = ts_prepare(&ts);
+    p = centre_pixel(f);
+    CHECK_EQ_INT(p.r, 153);
+    /* ambient unshadowed: ambient from each light (the paper has no global
+     * ambient) */
+    ts.scene.options.ambient_shadowed = 0;
     f = ts_prepare(&ts);
     p = centre_pixel(f);
     CHECK_EQ_INT(p.r, 173); /* (0.6 + 0.2 * 0.4) * 255 = 173.4 */
+}
+
+/* RENDER_MAX_LIGHTS (SCN_MAX_LIGHTS, 16) lights of the three kinds, each
+ * 1/16 of the light of test_diffuse_wall and each head-on at the wall's
+ * centre, light it as that one light does; one more is refused. */
+static void test_sixteen_lights(void)
+{
+    ts_init(&ts, 9, 9);
+    uint16_t m = ts_material(&ts, mat(1, 0.6, 0, 0.2, 0.4));
+    wall(0, m, 10);
+    for (int i = 0; i < RENDER_MAX_LIGHTS; i++) {
+        uint8_t kind = i % 3 == 0 ? SCENE_LIGHT_PARALLEL : i % 3 == 1 ? SCENE_LIGHT_POINT
+                                                                      : SCENE_LIGHT_SPOT;
+        scene_light_t *l = ts_light(&ts, kind, ts_rgb(0.0625, 0.0625, 0.0625));
+        l->direction = ts_v(0, 0, 1);
+        l->position = ts_v(0, 0, 0.25 * i);
+        l->cos_inner = N(0.9);
+        l->cos_outer = N(0.8);
+    }
+    CHECK_EQ_INT(RENDER_MAX_LIGHTS, 16);
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    CHECK_EQ_INT(f->light_count, 16);
+    rgb8_t p = centre_pixel(f);
+    CHECK_EQ_INT(p.r, 153);
+    CHECK_EQ_INT(p.g, 92);
+    CHECK_EQ_INT(p.b, 0);
+    ts.scene.light_count = RENDER_MAX_LIGHTS + 1;
+    arena_reset(&ts.arena);
+    CHECK_EQ_INT(render_prepare(&ts.scene, 0, &ts.arena, &f), RENDER_ERR_LIGHTS);
 }
 
 static void test_shadows(void)
@@ -88,12 +128,25 @@ static void test_shadows(void)
     CHECK(f != NULL);
     if (!f)
         return;
-    /* tinted shadow: light through the box = L * trc * F = (0.5, 0, 0);
-     * wall = 0.2 (ambient, unshadowed) + 0.6 * cos * shadowed light */
+    /* the paper's shadow: light through the box = L * trc = 0.5, grey (the
+     * box's one crossing, trc 0.5); wall = (0.2 ambient + 0.6 cos) times
+     * the shadowed light, cos 1 at the wall's centre: 0.4 */
     rgb8_t p = centre_pixel(f);
+    CHECK_EQ_INT(p.r, 102);
+    CHECK_EQ_INT(p.g, 102);
+    CHECK_EQ_INT(p.b, 102);
+    /* tinted: L * trc * F = (0.5, 0, 0) */
+    ts.scene.options.shadow_tint = 1;
+    f = ts_prepare(&ts);
+    p = centre_pixel(f);
+    CHECK_EQ_INT(p.r, 102);
+    CHECK_EQ_INT(p.g, 0);
+    /* and ambient unshadowed: wall = 0.2 + 0.6 * cos * shadowed light */
+    ts.scene.options.ambient_shadowed = 0;
+    f = ts_prepare(&ts);
+    p = centre_pixel(f);
     CHECK_EQ_INT(p.g, 51); /* 0.2 * 255: green light blocked */
-    /* red passes at half strength: (0.2 + 0.6 * 0.5) * 255 = 127.5, the
-     * box's one crossing (trc 0.5) and cos 1 at the wall's centre */
+    /* red passes at half strength: (0.2 + 0.6 * 0.5) * 255 = 127.5 */
     CHECK(p.r >= 127 && p.r <= 128);
     /* opaque box: ambient only */
     ts.materials[bm].trc = NUM_ZERO;
@@ -101,6 +154,12 @@ static void test_shadows(void)
     p = centre_pixel(f);
     CHECK_EQ_INT(p.r, 51);
     CHECK_EQ_INT(p.g, 51);
+    /* and nothing when ambient is shadowed too */
+    ts.scene.options.ambient_shadowed = 1;
+    f = ts_prepare(&ts);
+    p = centre_pixel(f);
+    CHECK_EQ_INT(p.r, 0);
+    CHECK_EQ_INT(p.g, 0);
     /* shadows switched off: full diffuse */
     ts.scene.options.shadows = 0;
     f = ts_prepare(&ts);
@@ -623,6 +682,7 @@ int main(void)
 {
     printf("# num_t = %s\n", NUM_NAME);
     RUN(test_diffuse_wall);
+    RUN(test_sixteen_lights);
     RUN(test_shadows);
     RUN(test_mirror);
     RUN(test_refraction);

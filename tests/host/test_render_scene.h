@@ -59,6 +59,8 @@ static inline void ts_init(test_scene_t *t, uint16_t width, uint16_t height)
     s->options.use_hierarchy = 1;
     s->options.shadows = 1;
     s->options.refraction = 1;
+    s->options.ambient_shadowed = 1; /* the text form's defaults */
+    s->options.shadow_tint = 0;
     s->lights = t->lights;
     s->materials = t->materials;
     s->maps = t->maps;

@@ -7,6 +7,11 @@
 #include "tests/check.h"
 
 #define HEAD "light point { position 0 5 0 }\nmaterial m { }\n"
+#define SHADING_FLAGS (SCN_OPT_AMBIENT_SHADOWED | SCN_OPT_UNTINTED_SHADOWS)
+#define LIGHTS5                                                                             \
+    "light point { position 0 5 0 }\nlight parallel { direction 0 -1 0 }\n"                  \
+    "light spot { position 0 4 0 at 0 0 0 cone 20 }\nlight point { position 1 5 0 }\n"       \
+    "light spot { position 0 4 0 direction 0 -1 0 cone 10 falloff 2 }\n"
 
 /* Parses text; returns 0 on success, else checks the message starts with
  * "t.scn:LINE:COL: " and contains words. */
@@ -42,7 +47,8 @@ static void test_minimal_scene_and_defaults(void)
     CHECK_EQ_INT(s.view.height, 240);
     CHECK_EQ_INT(s.view.max_depth, 5);
     CHECK_EQ_INT(s.view.density_steps, SCN_DEFAULT_DENSITY_STEPS);
-    CHECK_EQ_INT(s.view.flags, SCN_OPT_REFRACTIONLESS);
+    CHECK_EQ_INT(s.view.flags,
+                 SCN_OPT_REFRACTIONLESS | SCN_OPT_AMBIENT_SHADOWED | SCN_OPT_UNTINTED_SHADOWS);
     CHECK_EQ_INT(s.n_prims, 1);
     CHECK_EQ_INT(s.n_clusters, 1);
     CHECK_NEAR(s.materials[0].drc, 0.9, 0);
@@ -58,16 +64,62 @@ static void test_refraction_option(void)
     CHECK_EQ_INT(rc, 0);
     if (rc)
         return;
-    CHECK_EQ_INT(s.view.flags, SCN_OPT_REFRACTIONLESS | SCN_OPT_NO_REFRACTION);
+    CHECK_EQ_INT(s.view.flags & ~SHADING_FLAGS, SCN_OPT_REFRACTIONLESS | SCN_OPT_NO_REFRACTION);
     sd_free(&s);
     rc = sd_parse_text("t.scn", HEAD "options { refraction on }\nsphere { material m radius 1 }\n", &s,
                        err, sizeof err);
     CHECK_EQ_INT(rc, 0);
     if (rc)
         return;
-    CHECK_EQ_INT(s.view.flags, SCN_OPT_REFRACTIONLESS);
+    CHECK_EQ_INT(s.view.flags & ~SHADING_FLAGS, SCN_OPT_REFRACTIONLESS);
     sd_free(&s);
     EXPECT_ERROR(HEAD "options { refraction maybe }\n", 3, 22, "on");
+}
+
+/* The paper's readings by default: src(th) and trc(th) on Schlick's curve
+ * for a material that reflects or transmits (fresnel 1), constants for a
+ * matte one, `constant`, `fresnel W` or `options { fresnel off }`;
+ * ambient shadowed and untinted shadows unless the options say. */
+static void test_shading_defaults_and_options(void)
+{
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    const char *mats = "material shiny { src 0.2 }\nmaterial clear { trc 0.5 }\n"
+                       "material flat { constant src 0.3 }\nmaterial half { src 0.1 fresnel 0.25 }\n"
+                       "sphere { material m radius 1 }\n";
+    char text[1024];
+    for (int off = 0; off < 2; off++) {
+        snprintf(text, sizeof text, HEAD "%s%s", mats, off ? "options { fresnel off }\n" : "");
+        int rc = sd_parse_text("t.scn", text, &s, err, sizeof err);
+        CHECK_EQ_INT(rc, 0);
+        if (rc)
+            return;
+        CHECK_NEAR(s.materials[0].fresnel, 0, 0); /* m: matte */
+        CHECK_NEAR(s.materials[1].fresnel, off ? 0 : 1, 0);
+        CHECK_NEAR(s.materials[2].fresnel, off ? 0 : 1, 0);
+        CHECK_NEAR(s.materials[3].fresnel, 0, 0);
+        CHECK_NEAR(s.materials[4].fresnel, 0.25, 0);
+        sd_free(&s);
+    }
+    int rc = sd_parse_text("t.scn",
+                           HEAD "options { ambient_shadowed off  shadow_tint on }\n"
+                                "sphere { material m radius 1 }\n",
+                           &s, err, sizeof err);
+    CHECK_EQ_INT(rc, 0);
+    if (rc)
+        return;
+    CHECK_EQ_INT(s.view.flags & SHADING_FLAGS, 0);
+    sd_free(&s);
+    rc = sd_parse_text("t.scn",
+                       HEAD "options { ambient_shadowed on  shadow_tint off }\n"
+                            "sphere { material m radius 1 }\n",
+                       &s, err, sizeof err);
+    CHECK_EQ_INT(rc, 0);
+    if (rc)
+        return;
+    CHECK_EQ_INT(s.view.flags & SHADING_FLAGS, SHADING_FLAGS);
+    sd_free(&s);
+    EXPECT_ERROR(HEAD "options { shadow_tint 1 }\n", 3, 23, "on");
 }
 
 /* density_steps: an integer within SCN_MIN..SCN_MAX_DENSITY_STEPS. */
@@ -147,9 +199,9 @@ static void test_errors_name_line_and_column(void)
     EXPECT_ERROR(HEAD "cluster a { box { material m min 0 0 0 max 1 1 1 }\n", 4, 1,
                  "end of file inside cluster 'a'");
     EXPECT_ERROR(HEAD "sphere { material m radius 1x }\n", 3, 28, "'1x' is not a number");
-    EXPECT_ERROR("light point { position 0 5 0 }\nlight point { position 0 5 0 }\n"
-                 "light point { position 0 5 0 }\nlight point { position 0 5 0 }\n",
-                 4, 1, "more than 3 lights");
+    /* 16 lights of the three kinds pass, the 17th is refused naming the limit */
+    EXPECT_ERROR(HEAD LIGHTS5 LIGHTS5 LIGHTS5 "light point { position 0 5 0 }\n", 18, 1,
+                 "more than SCN_MAX_LIGHTS (16) lights");
     EXPECT_ERROR(HEAD "material m { }\n", 3, 10, "a second material named 'm'");
     EXPECT_ERROR(HEAD "material g { src 0.7 trc 0.5 }\n", 3, 30, "src + trc");
     EXPECT_ERROR(HEAD "map t colour { size 2 2 texels 1 1 1 }\n", 3, 38, "3 texel values, 12");
@@ -207,6 +259,7 @@ int main(void)
 {
     RUN(test_minimal_scene_and_defaults);
     RUN(test_refraction_option);
+    RUN(test_shading_defaults_and_options);
     RUN(test_density_steps_option);
     RUN(test_transforms_compose_in_order);
     RUN(test_keyframe_interpolation);

@@ -42,6 +42,9 @@ static const char *scene_text(const char *model, int smooth)
     snprintf(t, sizeof t,
              "camera { eye 0 0 -3.2  look_at 0 0 0  up 0 1 0  fov 45 }\n"
              "resolution %d %d\nbackground 0 0 0\n"
+             /* the ball's dark side keeps its ambient, so black is the
+              * background alone */
+             "options { ambient_shadowed off }\n"
              "light parallel { colour 1 1 1  direction 0.4 -0.5 1 }\n"
              "material m { colour 0.9 0.8 0.7  dic 0.1 drc 0.9 }\n"
              "cluster c { rotate 0 10 0  model { file \"%s\"  material m  smooth %s } }\n",

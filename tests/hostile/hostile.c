@@ -377,7 +377,7 @@ const struct hostile_class hostile_classes[] = {
     {"nonfinite_nan", "prim 3: a value is not finite", nonfinite_nan},
     {"nonfinite_inf", "camera: a coordinate is not finite", nonfinite_inf},
     {"over_view", "section kind 1: record count over its limit of 1", over_view},
-    {"over_lights", "section kind 2: record count over its limit of 3", over_lights},
+    {"over_lights", "section kind 2: record count over its limit of 16", over_lights},
     {"over_materials", "section kind 3: record count over its limit of 1024", over_materials},
     {"over_maps", "section kind 4: record count over its limit of 16", over_maps},
     {"over_texels", "section kind 5: record count over its limit of 4194304", over_texels},

@@ -93,6 +93,9 @@ static void check_class(const struct hostile_scene *base, const struct hostile_c
     "light point { position 3 6 -4 }\n"                                                     \
     "material m { colour 1 1 1 }\nuse m\n"
 #define BALL "sphere { radius 1 }\n"
+#define LIGHTS4                                                                             \
+    "light point { position 1 1 1 }\nlight parallel { direction 0 -1 0 }\n"                  \
+    "light spot { position 0 4 0 at 0 0 0 cone 20 }\nlight point { position -1 1 1 }\n"
 
 struct text_case {
     const char *name, *text, *expect;
@@ -101,10 +104,8 @@ struct text_case {
 static const struct text_case text_cases[] = {
     {"text_nonfinite", HEAD "sphere { radius 1e999 }\n", "'1e999' is not a finite number"},
     {"text_nan", HEAD "sphere { radius nan }\n", "expected a number (radius), found 'nan'"},
-    {"text_over_lights",
-     HEAD "light point { position 1 1 1 }\nlight point { position 1 1 1 }\n"
-          "light point { position 1 1 1 }\n" BALL,
-     "more than 3 lights"},
+    {"text_over_lights", /* HEAD's light and 16 more: 17 */
+     HEAD LIGHTS4 LIGHTS4 LIGHTS4 LIGHTS4 BALL, "more than SCN_MAX_LIGHTS (16) lights"},
     {"text_over_size", HEAD "resolution 2000 10\n" BALL, "width must be 1..1024, not 2000"},
     {"text_over_depth", HEAD "options { max_depth 17 }\n" BALL, "max_depth must be 0..16"},
     {"text_over_frames", HEAD "animation { frames 100001 }\n" BALL,
