@@ -44,8 +44,8 @@ enum link_render_flag {
 };
 #define LINK_RENDER_FLAGS_ALL 0x7Fu
 
-/* How the NCs clip (render/clip.h): by the frame's clusters per pixel
- * (render_frame_t.clip_coverage against RENDER_CLIP_LISTS_MAX_COVERAGE),
+/* How the NCs clip (render/clip.h): by the frame's clusters per pixel and
+ * per scanline (render_frame_t.clip_coverage, clip_rows; render/limits.h),
  * or always the paper's lists, or always in the hierarchy. */
 enum link_clip { LINK_CLIP_AUTO = 0, LINK_CLIP_LISTS = 1, LINK_CLIP_TREE = 2 };
 #define LINK_CLIP_MODES 3

@@ -3,10 +3,11 @@
  *
  * The DM's render_prepare projected every cluster's own bounding box to a
  * screen rectangle (render_cluster_t.screen_*, inclusive, conservative).
- * By default (render_clip_options_t.lists clear) the NC clips in the
- * hierarchy: per pixel, render_pixel_screen (render.h) skips every subtree
- * whose rectangle misses the pixel, with no set-up per area.  With lists
- * set, the paper's way; an NC given an area:
+ * With render_clip_options_t.lists clear the NC clips in the hierarchy:
+ * per pixel, render_pixel_screen (render.h) skips every subtree whose
+ * rectangle misses the pixel, with no set-up per area.  With lists set,
+ * the paper's way (the NC chooses per frame: roles/nc_render.c,
+ * render/limits.h); an NC given an area:
  *   Y clipping, once per area: keeps the clusters whose rectangle meets the
  *     area's scanlines (and columns), sorted by screen_x0 (ties: index).
  *     It walks down the hierarchy and skips each subtree whose tree

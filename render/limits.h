@@ -21,11 +21,13 @@
 #define RENDER_MAX_PHONG_N 1024       /* highlight sharpness exponent */
 #define RENDER_MAX_MAP_SIZE 1024      /* texels along one side of a map */
 /* The NCs clip with the paper's lists while a frame's clusters cover a
- * pixel this many times on average or fewer (render_frame_t.clip_coverage),
- * in the hierarchy above: on the SPD tetra at 8 NCs the lists cost 10% less
- * a ray at 13.8 clusters a pixel (16,384 triangles, 128x96) and the
- * hierarchy 9% less at 18.6 (65,536, 256x240) (docs/renderer.md). */
+ * pixel at most RENDER_CLIP_LISTS_MAX_COVERAGE times on average and a
+ * scanline at most RENDER_CLIP_LISTS_MAX_ROWS times
+ * (render_frame_t.clip_coverage, clip_rows), in the hierarchy above: on
+ * the SPD tetra at 8 NCs the lists cost less a ray up to 264 clusters a
+ * scanline, the hierarchy less from 401 (docs/results/board-scale.md). */
 #define RENDER_CLIP_LISTS_MAX_COVERAGE 16
+#define RENDER_CLIP_LISTS_MAX_ROWS 320
 
 /* Density-sphere root finder: fixed iteration counts keep every build and
  * every core on exactly the same path.  The march steps that bracket a

@@ -590,14 +590,16 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
         f->clusters[i].tree_x1 = f->clusters[i].tree_y1 = 0;
     }
     /* children have larger indices than parents: one backward pass */
-    uint64_t covered = 0; /* pixels under the clusters' own rectangles */
+    uint64_t covered = 0, rows = 0; /* pixels, rows under the clusters' own rectangles */
     for (uint32_t i = s->cluster_count; i-- > 0;) {
         render_cluster_t *c = &f->clusters[i];
         prep_aabb_add_box(&c->bounds, &c->own_bounds);
         prep_screen_rect(f, c);
-        if (c->screen_x0 <= c->screen_x1 && c->screen_y0 <= c->screen_y1)
+        if (c->screen_x0 <= c->screen_x1 && c->screen_y0 <= c->screen_y1) {
             covered += (uint64_t)(uint32_t)(c->screen_x1 - c->screen_x0 + 1) *
                        (uint32_t)(c->screen_y1 - c->screen_y0 + 1);
+            rows += (uint32_t)(c->screen_y1 - c->screen_y0 + 1);
+        }
         prep_tree_rect_add(c, c->screen_x0, c->screen_y0, c->screen_x1, c->screen_y1);
         if (i > 0) {
             render_cluster_t *p = &f->clusters[s->clusters[i].parent];
@@ -610,6 +612,8 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     uint32_t pixels = (uint32_t)f->width * f->height;
     uint64_t mean = (covered + pixels - 1) / pixels;
     f->clip_coverage = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
+    mean = (rows + f->height - 1) / f->height;
+    f->clip_rows = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
     prep_lights(s, &world_to_eye, f);
     *out = f;
     return precision_check(f);

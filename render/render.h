@@ -170,8 +170,11 @@ typedef struct {
                                       arithmetic there, in stored units */
     uint32_t clip_coverage;        /* the clusters' own screen rectangles over
                                       a pixel, on average (rounded up): the
-                                      length of the paper's X list, which
-                                      chooses how an NC clips (render/clip.h) */
+                                      length of the paper's X list */
+    uint32_t clip_rows;            /* the same over a scanline: the length
+                                      of the paper's Y list for an area of
+                                      one row.  The two choose how an NC
+                                      clips (render/clip.h) */
 } render_frame_t;
 
 #define RENDER_NO_PRIM UINT32_MAX

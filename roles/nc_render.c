@@ -132,7 +132,8 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, uint8_t
     job->opt.x_clip = !(flags & LINK_RENDER_NO_XCLIP);
     job->opt.lists = clip == LINK_CLIP_LISTS ||
                      (clip == LINK_CLIP_AUTO &&
-                      blob->frame->clip_coverage <= RENDER_CLIP_LISTS_MAX_COVERAGE);
+                      blob->frame->clip_coverage <= RENDER_CLIP_LISTS_MAX_COVERAGE &&
+                      blob->frame->clip_rows <= RENDER_CLIP_LISTS_MAX_ROWS);
     job->opt.progress = &gigs_nc_progress[mycpu()->core];
     return 0;
 }
