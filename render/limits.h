@@ -70,8 +70,10 @@
 #define RENDER_TOL_EXP_MIN (-6) /* and down to 2^-6 of the above: in fixed
                                      point the ray offset stays 16 steps or
                                      more */
-#define RENDER_NORM_EXP_MIN (-24) /* 2^unit_exp stays within */
-#define RENDER_NORM_EXP_MAX 40
+#define RENDER_NORM_EXP_MIN (-100) /* 2^unit_exp stays within (a scene whose
+                                      clusters' scales take it beyond is
+                                      refused by the loader) */
+#define RENDER_NORM_EXP_MAX 120
 
 /* Precision (docs/renderer.md, "Precision never fails silently"). */
 #define RENDER_MIN_SPAN_VALUE 1.0       /* a scene spans at least this (its
