@@ -67,6 +67,10 @@
                                  out of them into the lengths it holds, so
                                  they enter num_t near 1 (render/scene_load.c,
                                  load_scale) */
+#define SCN_MIN_SIZE 1.0e-12 /* a radius or a component radius, text form:
+                                 the loader scales lengths by powers of two
+                                 and the renderer refuses what its
+                                 arithmetic cannot resolve (RENDER_ERR_DETAIL) */
 #define SCN_MAX_REPEAT 1.0e4f              /* map repeats along u or v */
 #define SCN_MAX_INTENSITY 100.0f           /* a light's colour channel */
 #define SCN_MIN_FOV 0.1                    /* degrees (text form) */

@@ -208,12 +208,12 @@ static void parse_ellipsoid(struct parser *p, struct sd_prim *pr, int sphere)
         } else if (sphere && lex_is_word(&p->lx, "radius")) {
             lex_next(&p->lx);
             pr->v[3] = pr->v[4] = pr->v[5] =
-                lex_number_in(&p->lx, "radius", 1e-6, SCN_MAX_COORD);
+                lex_number_in(&p->lx, "radius", SCN_MIN_SIZE, SCN_MAX_COORD);
             have_r = 1;
         } else if (!sphere && lex_is_word(&p->lx, "radii")) {
             lex_next(&p->lx);
             for (int i = 0; i < 3; i++)
-                pr->v[3 + i] = lex_number_in(&p->lx, "radius", 1e-6, SCN_MAX_COORD);
+                pr->v[3 + i] = lex_number_in(&p->lx, "radius", SCN_MIN_SIZE, SCN_MAX_COORD);
             have_r = 1;
         } else {
             parse_unknown(p, sphere ? "sphere" : "ellipsoid");
@@ -271,7 +271,7 @@ static void parse_density(struct parser *p, struct sd_prim *pr)
                 lex_error(&p->lx, "more than %d components", SCN_MAX_DENSITY_COMPONENTS);
             struct sd_component c;
             parse_coord3(p, "component centre", c.centre);
-            c.radius = lex_number_in(&p->lx, "component radius", 1e-6, SCN_MAX_COORD);
+            c.radius = lex_number_in(&p->lx, "component radius", SCN_MIN_SIZE, SCN_MAX_COORD);
             if (p->lx.kind == LEX_NUMBER && p->lx.num == 0)
                 lex_error(&p->lx, "component weight is zero");
             c.weight = lex_number_in(&p->lx, "component weight", -SCN_MAX_FACTOR, SCN_MAX_FACTOR);
