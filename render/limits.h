@@ -36,8 +36,19 @@
  * 4096 before the near-first walk, which adds 8 bytes a level and keeps
  * trace_straight's 160 more bytes out of every level; the error bound
  * adds 56 to the leaf (trace_lights, trace_straight, trace_nearest). */
+#if defined(LINKS1_NUM_DOUBLE)
+/* double (the board's double-precision VFP build): every num_t twice as
+ * wide; trace_ray + trace_shade take 216 + 472 = 688 bytes a level, and
+ * the frames of the deepest leaf 1,168 more than in float (trace_lights
+ * 1048, trace_straight 728, prim_intersect_uncertain 368, prim_surface
+ * 280, render_pixel_impl 272): with TASK_STACK_SIZE 16 KiB the DM refuses
+ * a max_depth over 12 in this build (roles/dm_render.c) */
+#define RENDER_STACK_PER_DEPTH 704
+#define RENDER_STACK_BASE 6144
+#else
 #define RENDER_STACK_PER_DEPTH 448
 #define RENDER_STACK_BASE 4672
+#endif
 #define RENDER_STACK_BYTES(max_depth) \
     (RENDER_STACK_BASE + RENDER_STACK_PER_DEPTH * ((max_depth) + 1))
 

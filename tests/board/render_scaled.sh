@@ -7,7 +7,7 @@
 # `--arith float`, 2 NCs, 64x48.  So does the same scene with its objects
 # in a cluster scaled by 1e-6 and by 1e6 (make_scene.py cluster_scale: the
 # loader takes the cluster's power of two into the lengths it holds), in
-# float.
+# float and in double.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
 board_ready render_scaled || exit 0
@@ -28,4 +28,5 @@ for knob in 1e-06 1e+06; do
         continue
     }
     render_grid_one "$scn" float 2 dynamic 64x48
+    render_grid_one "$scn" double 2 dynamic 64x48
 done
