@@ -60,7 +60,7 @@ int parse_transform(struct parser *p, double m[12])
         for (int r = 0; r < 3; r++)
             rows *= sqrt(t[4 * r] * t[4 * r] + t[4 * r + 1] * t[4 * r + 1] +
                          t[4 * r + 2] * t[4 * r + 2]);
-        if (!(fabs(det) >= 1e-12 * rows))
+        if (!(rows > 0) || !(fabs(det) >= 1e-12 * rows))
             lex_error(&p->lx, "matrix is not invertible (determinant %g)", det);
     } else {
         return 0;

@@ -191,6 +191,16 @@ static void test_length_limit_accepted(void)
                  0);
     CHECK_NEAR(s.prims[0].v[3], 1e8, 0);
     sd_free(&s);
+    /* a cluster's scale and matrix to SCN_MAX_SCALE, down to 1e-6 and a
+     * radius of 1e-12 (SCN_MIN_SIZE): invertible against its rows' lengths */
+    CHECK_EQ_INT(sd_parse_text("t.scn",
+                               HEAD "cluster c { scale 1e6 scale 100\n"
+                               "  cluster d { matrix 1e-6 0 0 0  0 1e-6 0 0  0 0 1e-6 0\n"
+                               "    sphere { material m radius 1e-12 } } }\n",
+                               &s, err, sizeof err),
+                 0);
+    CHECK_NEAR(s.prims[0].v[3], 1e-12, 0);
+    sd_free(&s);
 }
 
 static void test_deep_nesting_refused(void)
