@@ -2,7 +2,7 @@
 # and the tests.  Each directory adds its sources in its own module.mk; this
 # file holds the toolchains, the flags and the rules that turn lists into files.
 #
-#   make            firmware variants + host tools
+#   make            firmware variants (float, soft, fixed, double) + host tools
 #   make run        render the default scene (installs missing packages first)
 #   make test       every test; last line "N passed, N failed"
 #   make bench      benchmarks (speed lives here, never in tests)
@@ -47,14 +47,18 @@ ARM_CPU := -mcpu=cortex-a15 -mthumb
 FW_FLOAT_ABI_float := -mfpu=vfpv4 -mfloat-abi=hard
 FW_FLOAT_ABI_soft  := -mfloat-abi=soft
 FW_FLOAT_ABI_fixed := -mfloat-abi=soft
+# double: the Cortex-A15's VFPv4 has double precision (32 d-registers)
+FW_FLOAT_ABI_double := -mfpu=vfpv4 -mfloat-abi=hard
 FW_ARITH_float := float
 FW_ARITH_soft  := float
 FW_ARITH_fixed := fixed
+FW_ARITH_double := double
 # The firmware's arithmetic code (proto/arith.h), sent in its LINK_HELLO.
 FW_CODE_float := ARITH_FLOAT
 FW_CODE_soft  := ARITH_SOFT
 FW_CODE_fixed := ARITH_FIXED
-FW_VARIANTS := float soft fixed
+FW_CODE_double := ARITH_DOUBLE
+FW_VARIANTS := float soft fixed double
 
 ifeq ($(LIBC),picolibc)
 LIBC_SPECS := --specs=picolibc.specs
@@ -103,7 +107,7 @@ FUZZERS :=
 include $(wildcard */module.mk */*/module.mk)
 
 # ------------------------------------------------------------ firmware rules
-# $(1) = variant (float|soft|fixed)
+# $(1) = variant (float|soft|fixed|double)
 define fw_variant
 FW_OBJS_$(1) := $$(patsubst %,$(B)/fw-$(1)-$(LIBC)/%.o,$$(FW_SRCS) $$(SHARED_SRCS))
 FW_ELF_$(1) := $(FWB)/links1-$(1).elf

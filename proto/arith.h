@@ -5,7 +5,7 @@
  *   float   hardware VFP (board), the float build (host)
  *   soft    IEEE binary32 in software (board); on the host the float build
  *   fixed   fixed point (fixed/num.h)
- *   double  the host's reference; no board firmware */
+ *   double  hardware VFP in double precision (board), the host's reference */
 #ifndef LINKS1_PROTO_ARITH_H
 #define LINKS1_PROTO_ARITH_H
 
@@ -17,7 +17,7 @@ enum links1_arith {
 };
 #define ARITH_COUNT 4
 /* Codes below this have board firmware (build/links1-<name>.elf). */
-#define ARITH_BOARD_COUNT 3
+#define ARITH_BOARD_COUNT 4
 
 /* "float", "soft", "fixed", "double"; NULL for a code out of range. */
 const char *arith_name(int arith);

@@ -61,11 +61,21 @@
                                  translation; the loader scales every length
                                  by a power of two to a largest of 8..16
                                  (render/limits.h, RENDER_NORM_EXP_MIN) */
-#define SCN_MAX_FACTOR 1000.0f /* |value without a unit|: a matrix entry, a
-                                  scale, a weight or threshold, a map
-                                  coordinate, bump depth, direction, normal:
-                                  taken as it is, within the fixed build's
+#define SCN_MAX_FACTOR 1000.0f /* |value without a unit|: a weight or
+                                  threshold, a map coordinate, bump depth,
+                                  direction, normal (not a cluster's matrix
+                                  entry or scale: SCN_MAX_SCALE): taken as
+                                  it is, within the fixed build's
                                   NUM_COORD_LIMIT */
+#define SCN_MAX_SCALE 1.0e8f /* |a cluster's matrix entry or key scale|: the
+                                 loader takes each cluster's power of two
+                                 out of them into the lengths it holds, so
+                                 they enter num_t near 1 (render/scene_load.c,
+                                 load_scale) */
+#define SCN_MIN_SIZE 1.0e-12 /* a radius or a component radius, text form:
+                                 the loader scales lengths by powers of two
+                                 and the renderer refuses what its
+                                 arithmetic cannot resolve (RENDER_ERR_DETAIL) */
 #define SCN_MAX_REPEAT 1.0e4f              /* map repeats along u or v */
 #define SCN_MAX_INTENSITY 100.0f           /* a light's colour channel */
 #define SCN_MIN_FOV 0.1                    /* degrees (text form) */

@@ -49,8 +49,20 @@
  * adds 56 to the leaf (trace_lights, trace_straight, trace_nearest), the
  * ambient's choice of light 8 more in float (trace_lights: 600 bytes in
  * float, 592 in fixed). */
+#if defined(LINKS1_NUM_DOUBLE)
+/* double (the board's double-precision VFP build): every num_t twice as
+ * wide; trace_ray + trace_shade take 216 + 472 = 688 bytes a level, and
+ * the frames of the deepest leaf 1,168 more than in float (trace_lights
+ * 1048, trace_straight 728, prim_intersect_uncertain 368, prim_surface
+ * 280, render_pixel_impl 272), and the ambient's choice of light up to 16
+ * more: with TASK_STACK_SIZE 16 KiB the DM refuses a max_depth over 12 in
+ * this build (roles/dm_render.c) */
+#define RENDER_STACK_PER_DEPTH 704
+#define RENDER_STACK_BASE 6160
+#else
 #define RENDER_STACK_PER_DEPTH 448
 #define RENDER_STACK_BASE 4680
+#endif
 #define RENDER_STACK_BYTES(max_depth) \
     (RENDER_STACK_BASE + RENDER_STACK_PER_DEPTH * ((max_depth) + 1))
 
@@ -83,8 +95,10 @@
 #define RENDER_TOL_EXP_MIN (-6) /* and down to 2^-6 of the above: in fixed
                                      point the ray offset stays 16 steps or
                                      more */
-#define RENDER_NORM_EXP_MIN (-24) /* 2^unit_exp stays within */
-#define RENDER_NORM_EXP_MAX 40
+#define RENDER_NORM_EXP_MIN (-100) /* 2^unit_exp stays within (a scene whose
+                                      clusters' scales take it beyond is
+                                      refused by the loader) */
+#define RENDER_NORM_EXP_MAX 120
 
 /* Precision (docs/renderer.md, "Precision never fails silently"). */
 #define RENDER_MIN_SPAN_VALUE 1.0       /* a scene spans at least this (its

@@ -415,16 +415,18 @@ void precision_extent_message(const render_frame_t *f, char *out, size_t cap)
 #endif
     /* the tolerances follow the geometry down to RENDER_TOL_EXP_MIN: there
      * the eye or a light is at least 2^(SLACK - MIN - 1) times farther out
-     * (scene.h tol_exp); above it the geometry as stored was large enough
-     * and only its clusters can have shrunk it */
+     * (scene.h tol_exp); above it the geometry's largest length in world
+     * units (its clusters' powers of two included) was large enough, so it
+     * lies far from the origin for its size (or a cluster map the loader
+     * did not make shrinks it) */
     char cause[96];
     if (s->tol_exp <= RENDER_TOL_EXP_MIN)
         fmt_snprintf(cause, sizeof cause, "the eye or a light lies over %d times farther out than "
                      "the geometry; bring it closer",
                      1 << (RENDER_TOL_SLACK_EXP - RENDER_TOL_EXP_MIN - 1));
     else
-        fmt_snprintf(cause, sizeof cause, "its clusters shrink it below its coordinates; scale "
-                     "those instead");
+        fmt_snprintf(cause, sizeof cause, "it lies far from the origin for its size; move it "
+                     "nearer");
     fmt_snprintf(out, cap, "scene spans %s; %s (lengths scaled by 2^%ld), but secondary rays "
                  "start %s from a surface, so a scene needs a span of at least %s: %s",
                  span, what, (long)s->unit_exp, offset, need, cause);

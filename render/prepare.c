@@ -30,7 +30,7 @@ const char *render_status_name(render_status_t status)
     case RENDER_ERR_SINGULAR: return "a cluster transform cannot be inverted";
     case RENDER_ERR_RELOCATE: return "a pointer of the blob lies outside it (not self-contained), or a bad base";
     case RENDER_ERR_AREA: return "area empty or not inside the screen";
-    case RENDER_ERR_EXTENT: return "the scene spans less than RENDER_MIN_SPAN_VALUE (500 ray offsets; both follow the geometry's largest length): its clusters shrink it below its own coordinates; scale those instead";
+    case RENDER_ERR_EXTENT: return "the scene spans less than RENDER_MIN_SPAN_VALUE (500 ray offsets; both follow the geometry's largest length): it lies far from the origin for its size";
     case RENDER_ERR_DETAIL: return "a primitive smaller than RENDER_MIN_DETAIL_STEPS (2) steps of the arithmetic where it lies: its shape would be off by more than a quarter; enlarge it or use another arithmetic";
     case RENDER_ERR_SCALE: return "a cluster transform scales beyond what the arithmetic can invert (it is not exactly singular: scale the scene instead of the cluster, or use another arithmetic)";
     }

@@ -29,7 +29,12 @@ struct load {
     uint32_t total;
     struct load_section sec[SCN_SEC_COUNT + 1]; /* by kind */
     scene_load_error_t *err;
-    int unit_exp; /* lengths enter num_t times 2^unit_exp (load_len) */
+    int unit_exp; /* world lengths enter num_t times 2^unit_exp */
+    int len_exp;  /* load_len's exponent for the record at hand: unit_exp
+                     plus the exponent of the cluster it lies in */
+    int32_t *cexp; /* scratch, per cluster: its coordinates are stored times
+                      2^(unit_exp + cexp[i]) (load_scale) */
+    int32_t *kexp; /* scratch, per cluster: its keys' scales times 2^-kexp[i] */
     int crc_later; /* the header alone: scene_load checks the CRC next */
 };
 
@@ -134,15 +139,17 @@ static uint32_t load_scale_bits(uint32_t bits, int e)
     exp += e;
     if (exp <= 0)
         return bits & LOAD_F32_SIGN;
-    if (exp >= 255) /* not reached: unit_exp brings the largest length to 2^4 */
+    if (exp >= 255) /* not reached: load_scale refuses a scene whose lengths
+                       unit_exp cannot bring to 2^4 */
         return (bits & LOAD_F32_SIGN) | LOAD_F32_EXP_MASK;
     return (bits & ~LOAD_F32_EXP_MASK) | ((uint32_t)exp << 23);
 }
 
-/* A length: scaled to the scene (scene_t.unit_exp). */
+/* A length: scaled to the scene (scene_t.unit_exp) and by the power of two
+ * of the cluster it lies in (L->len_exp). */
 static num_t load_len(const struct load *L, const uint8_t *p)
 {
-    return num_from_f32_bits(load_scale_bits(wire_get_u32(p), L->unit_exp));
+    return num_from_f32_bits(load_scale_bits(wire_get_u32(p), L->len_exp));
 }
 
 static vec3_t load_lvec3(const struct load *L, const uint8_t *p)
@@ -458,9 +465,11 @@ static scene_load_status_t load_materials(struct load *L, const scene_map_t *map
 
 static scene_load_status_t load_keys(struct load *L, scene_key_t *out)
 {
+    L->len_exp = L->unit_exp; /* a cluster's keys: again in load_clusters */
     for (uint32_t i = 0; i < L->sec[SCN_SEC_KEYS].count; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_KEYS, i);
-        if (!load_coords(p + SCN_KEY_TRANSLATE, 3) || !load_factors(p + SCN_KEY_SCALE, 3))
+        if (!load_coords(p + SCN_KEY_TRANSLATE, 3) ||
+            !load_within(p + SCN_KEY_SCALE, 3, SCN_MAX_SCALE))
             return load_range(L, "key ", i, "translation or scale");
         if (wire_get_u32(p + SCN_KEY_FRAME) >= SCN_MAX_FRAMES)
             return load_bad(L, SCENE_LOAD_ERR_LIMIT, "key ", i, "frame number over the limit");
@@ -493,7 +502,7 @@ static scene_load_status_t load_keys(struct load *L, scene_key_t *out)
 /* Parents come before children, nesting is bounded, key ranges are inside
  * the key section and their frames rise: the tree is acyclic by the first
  * rule alone. */
-static scene_load_status_t load_clusters(struct load *L, const scene_key_t *keys,
+static scene_load_status_t load_clusters(struct load *L, scene_key_t *keys,
                                          scene_cluster_t *out, uint8_t *nesting)
 {
     uint32_t n_keys = L->sec[SCN_SEC_KEYS].present ? L->sec[SCN_SEC_KEYS].count : 0;
@@ -518,14 +527,34 @@ static scene_load_status_t load_clusters(struct load *L, const scene_key_t *keys
                                 "key frames do not rise");
         for (int k = 0; k < 12; k++)
             if (!load_within(p + SCN_CLUSTER_MATRIX + 4 * k, 1,
-                             k % 4 == 3 ? SCN_MAX_COORD : SCN_MAX_FACTOR))
+                             k % 4 == 3 ? SCN_MAX_COORD : SCN_MAX_SCALE))
                 return load_range(L, "cluster ", i, "a matrix entry");
+        /* K(f) * M maps the cluster's coordinates (times 2^cexp[i]) to its
+         * parent's (times 2^cp): K's translations are the parent's lengths,
+         * its scales lose kexp, M's translations are lengths between K and
+         * M (2^(cp + kexp)), M's 3x3 part loses the rest (load_scale) */
+        int32_t cp = i == 0 ? 0 : L->cexp[parent];
+        int32_t mexp = L->cexp[i] - cp - L->kexp[i];
+        for (uint32_t k = kf; k < kf + kc; k++) {
+            const uint8_t *kp = load_rec(L, SCN_SEC_KEYS, k);
+            L->len_exp = L->unit_exp + (int)cp;
+            keys[k].translate = load_lvec3(L, kp + SCN_KEY_TRANSLATE);
+            for (int a = 0; a < 3; a++) {
+                num_t v = num_from_f32_bits(load_scale_bits(
+                    wire_get_u32(kp + SCN_KEY_SCALE + 4 * a), -(int)L->kexp[i]));
+                *(a == 0 ? &keys[k].scale.x : a == 1 ? &keys[k].scale.y : &keys[k].scale.z) = v;
+            }
+        }
         scene_cluster_t *c = &out[i];
         c->parent = i == 0 ? SCENE_NO_CLUSTER : parent;
+        L->len_exp = L->unit_exp + (int)(cp + L->kexp[i]);
         for (int r = 0; r < 3; r++)
             for (int k = 0; k < 4; k++)
-                c->local.m[r][k] = k == 3 ? load_len(L, p + SCN_CLUSTER_MATRIX + 4 * (r * 4 + k))
-                                          : load_num(p + SCN_CLUSTER_MATRIX + 4 * (r * 4 + k));
+                c->local.m[r][k] =
+                    k == 3 ? load_len(L, p + SCN_CLUSTER_MATRIX + 4 * (r * 4 + k))
+                           : num_from_f32_bits(load_scale_bits(
+                                 wire_get_u32(p + SCN_CLUSTER_MATRIX + 4 * (r * 4 + k)),
+                                 -(int)mexp));
         c->first_key = kf;
         c->key_count = kc;
     }
@@ -535,6 +564,7 @@ static scene_load_status_t load_clusters(struct load *L, const scene_key_t *keys
 static scene_load_status_t load_components(struct load *L, scene_density_component_t *out)
 {
     uint32_t n = L->sec[SCN_SEC_COMPONENTS].present ? L->sec[SCN_SEC_COMPONENTS].count : 0;
+    L->len_exp = L->unit_exp; /* a density sphere's: again in load_prims */
     for (uint32_t i = 0; i < n; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_COMPONENTS, i);
         uint32_t weight = wire_get_u32(p + SCN_COMPONENT_WEIGHT);
@@ -570,7 +600,8 @@ static const int load_prim_values[] = {
     [SCN_PRIM_BOX] = SCN_BOX_VALUES,           [SCN_PRIM_DENSITY] = SCN_DENSITY_VALUES,
 };
 
-static scene_load_status_t load_prims(struct load *L, scene_prim_t *out)
+static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
+                                      scene_density_component_t *comps)
 {
     uint32_t n_mat = L->sec[SCN_SEC_MATERIALS].count;
     uint32_t n_clu = L->sec[SCN_SEC_CLUSTERS].count;
@@ -590,6 +621,7 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out)
         if (clu >= n_clu)
             return load_bad(L, SCENE_LOAD_ERR_INDEX, "prim ", i, "cluster index out of range");
         int nv = load_prim_values[kind];
+        L->len_exp = L->unit_exp + (int)L->cexp[clu];
         int nlen = kind == SCN_PRIM_TRIANGLE ? 9 : kind == SCN_PRIM_DENSITY ? 0 : nv;
         if (!load_coords(v, nlen) || !load_factors(v + 4 * nlen, nv - nlen))
             return load_range(L, "prim ", i, "a value is");
@@ -611,7 +643,7 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out)
                 o->shape.triangle.tex_v[k] = load_num(v + 48 + 4 * k);
             }
             o->shape.triangle.smooth = 0;
-            if (load_sliver(o->shape.triangle.v, L->unit_exp))
+            if (load_sliver(o->shape.triangle.v, L->len_exp))
                 return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
                                 "degenerate or sliver triangle (a height under "
                                 "SCN_MIN_TRIANGLE_HEIGHT / 8)");
@@ -642,6 +674,11 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out)
                 return load_bad(L, SCENE_LOAD_ERR_INDEX, "prim ", i,
                                 "components outside the component section");
             o->kind = SCENE_PRIM_DENSITY;
+            for (uint32_t k = first; k < first + count; k++) { /* in this cluster */
+                const uint8_t *cp = load_rec(L, SCN_SEC_COMPONENTS, k);
+                comps[k].centre = load_lvec3(L, cp + SCN_COMPONENT_CENTRE);
+                comps[k].radius = load_len(L, cp + SCN_COMPONENT_RADIUS);
+            }
             o->shape.density.first = first;
             o->shape.density.count = (uint16_t)count;
             o->shape.density.threshold = load_num(v);
@@ -686,61 +723,114 @@ static scene_load_status_t load_normals(struct load *L, scene_prim_t *prims,
 
 /* ------------------------------------------------- scaled to the scene */
 
-/* The binary32 exponent field of the largest |length| among n reals at p
- * (0 for none); not-finite values are left to the checks that follow. */
-static int32_t load_max_exp(const uint8_t *p, int n, int32_t most)
+#define LOAD_EXP_NONE (-1000000) /* no length at all */
+/* The mantissa bits of 2/sqrt(3), rounded up: load_matrix_exp */
+#define LOAD_MANT_2_OVER_SQRT3 0x13cd3bu
+
+/* The largest of most and shift + e over the n reals at p, |value| in
+ * [2^e, 2^(e+1)); zeros, subnormals and not-finite values (left to the
+ * checks that follow) count as none. */
+static int32_t load_max_exp(const uint8_t *p, int n, int32_t shift, int32_t most)
 {
     for (int i = 0; i < n; i++) {
-        uint32_t bits = wire_get_u32(p + 4 * i);
-        int32_t exp = (int32_t)((bits & LOAD_F32_EXP_MASK) >> 23);
-        if (exp != 255 && exp > most)
-            most = exp;
+        int32_t field = (int32_t)((wire_get_u32(p + 4 * i) & LOAD_F32_EXP_MASK) >> 23);
+        if (field != 0 && field != 255 && field - 127 + shift > most)
+            most = field - 127 + shift;
     }
     return most;
 }
 
-/* unit_exp (scene.h): from the exponent of the largest
- * |length| the scene holds, before any value enters num_t.  Every length
- * the scene format allows reaches 8..16 (unit_exp is not clamped above);
- * a value without a unit enters num_t as it is. */
-_Static_assert((long long)SCN_MAX_COORD < (1LL << (RENDER_NORM_EXP + 1 - RENDER_NORM_EXP_MIN)),
+/* A cluster's static 3x3 part, as a power of two: floor(log2(sqrt(3)
+ * |largest entry|)), so a rotation gives 0 (its largest entry is 1/sqrt(3)
+ * .. 1) and a rotation times 2^k gives k; 0 for a zero matrix. */
+static int32_t load_matrix_exp(const uint8_t *m)
+{
+    uint32_t big = 0;
+    for (int r = 0; r < 3; r++)
+        for (int k = 0; k < 3; k++) {
+            uint32_t bits = wire_get_u32(m + 4 * (4 * r + k)) & ~LOAD_F32_SIGN;
+            if (load_finite(bits) && bits > big)
+                big = bits;
+        }
+    if ((big >> 23) == 0)
+        return 0;
+    return (int32_t)(big >> 23) - 127 + ((big & 0x7fffffu) >= LOAD_MANT_2_OVER_SQRT3);
+}
+
+/* unit_exp and tol_exp (scene.h), and each cluster's exponent, before any
+ * value enters num_t.  A cluster's coordinates are stored times
+ * 2^(unit_exp + cexp): cexp is its parent's plus the power of two of its
+ * keys' largest scale (kexp) and of its static matrix, whose entries and
+ * key scales lose those powers of two, so they stay near 1 and the stored
+ * coordinates follow the world's: a cluster scaled by 2^k holds the values
+ * of its contents scaled by 2^k in its parent, bit for bit.  unit_exp
+ * brings the largest |length| in world units (cluster contents times their
+ * clusters' powers of two, eye, look-at, point and spot lights) to 8..16;
+ * tol_exp follows the geometry's (all but the eye and the lights).  The
+ * values are read unchecked (the checks come after): an index out of
+ * range counts as the root. */
+_Static_assert((long long)SCN_MAX_COORD < (1LL << 62) && RENDER_NORM_EXP + 1 - RENDER_NORM_EXP_MIN > 62,
                "SCN_MAX_COORD beyond what RENDER_NORM_EXP_MIN scales to 8..16");
 _Static_assert((long)SCN_MAX_FACTOR <= NUM_COORD_LIMIT, "SCN_MAX_FACTOR beyond the fixed range");
-static void load_scale(struct load *L, scene_t *s)
+static scene_load_status_t load_scale(struct load *L, scene_t *s)
 {
-    int32_t geom = 0; /* the geometry's largest exponent: scene_t.tol_exp */
-    for (uint32_t i = 0; i < L->sec[SCN_SEC_KEYS].count; i++)
-        geom = load_max_exp(load_rec(L, SCN_SEC_KEYS, i) + SCN_KEY_TRANSLATE, 3, geom);
-    for (uint32_t i = 0; i < L->sec[SCN_SEC_CLUSTERS].count; i++)
+    uint32_t n_clu = L->sec[SCN_SEC_CLUSTERS].count, n_keys = L->sec[SCN_SEC_KEYS].count;
+    uint32_t n_comp = L->sec[SCN_SEC_COMPONENTS].count;
+    int32_t geom = LOAD_EXP_NONE; /* the geometry's largest, in world units */
+    for (uint32_t i = 0; i < n_clu; i++) {
+        const uint8_t *p = load_rec(L, SCN_SEC_CLUSTERS, i);
+        uint32_t parent = wire_get_u32(p + SCN_CLUSTER_PARENT);
+        uint32_t kf = wire_get_u32(p + SCN_CLUSTER_KEY_FIRST);
+        uint32_t kc = wire_get_u32(p + SCN_CLUSTER_KEY_COUNT);
+        int32_t cp = i > 0 && parent < i ? L->cexp[parent] : 0;
+        int32_t ks = LOAD_EXP_NONE;
+        if (kf <= n_keys && kc <= n_keys - kf)
+            for (uint32_t k = kf; k < kf + kc; k++) {
+                const uint8_t *kp = load_rec(L, SCN_SEC_KEYS, k);
+                geom = load_max_exp(kp + SCN_KEY_TRANSLATE, 3, cp, geom);
+                ks = load_max_exp(kp + SCN_KEY_SCALE, 3, 0, ks);
+            }
+        L->kexp[i] = ks == LOAD_EXP_NONE ? 0 : ks;
         for (int r = 0; r < 3; r++)
-            geom = load_max_exp(load_rec(L, SCN_SEC_CLUSTERS, i) + SCN_CLUSTER_MATRIX +
-                                    4 * (4 * r + 3), 1, geom);
-    for (uint32_t i = 0; i < L->sec[SCN_SEC_COMPONENTS].count; i++)
-        geom = load_max_exp(load_rec(L, SCN_SEC_COMPONENTS, i) + SCN_COMPONENT_CENTRE, 4, geom);
+            geom = load_max_exp(p + SCN_CLUSTER_MATRIX + 4 * (4 * r + 3), 1, cp + L->kexp[i],
+                                geom);
+        L->cexp[i] = cp + L->kexp[i] + load_matrix_exp(p + SCN_CLUSTER_MATRIX);
+    }
     for (uint32_t i = 0; i < L->sec[SCN_SEC_PRIMS].count; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_PRIMS, i);
         uint16_t kind = wire_get_u16(p + SCN_PRIM_KIND);
+        uint32_t clu = wire_get_u32(p + SCN_PRIM_CLUSTER);
+        int32_t c = clu < n_clu ? L->cexp[clu] : 0;
         int n = kind == SCN_PRIM_TRIANGLE ? 9 : kind == SCN_PRIM_DENSITY ? 0 : 6;
-        geom = load_max_exp(p + SCN_PRIM_VALUES, n, geom);
+        geom = load_max_exp(p + SCN_PRIM_VALUES, n, c, geom);
+        uint32_t first = wire_get_u32(p + SCN_PRIM_FIRST), count = wire_get_u32(p + SCN_PRIM_COUNT);
+        if (kind == SCN_PRIM_DENSITY && first <= n_comp && count <= n_comp - first)
+            for (uint32_t k = first; k < first + count; k++)
+                geom = load_max_exp(load_rec(L, SCN_SEC_COMPONENTS, k) + SCN_COMPONENT_CENTRE, 4,
+                                    c, geom);
     }
-    int32_t most = load_max_exp(load_rec(L, SCN_SEC_VIEW, 0) + SCN_VIEW_EYE, 6, geom);
+    int32_t most = load_max_exp(load_rec(L, SCN_SEC_VIEW, 0) + SCN_VIEW_EYE, 6, 0, geom);
     for (uint32_t i = 0; i < L->sec[SCN_SEC_LIGHTS].count; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_LIGHTS, i);
         if (wire_get_u32(p + SCN_LIGHT_KIND) != SCN_LIGHT_PARALLEL)
-            most = load_max_exp(p + SCN_LIGHT_POSITION, 3, most);
+            most = load_max_exp(p + SCN_LIGHT_POSITION, 3, 0, most);
     }
-    int e = 0, t = 0;
-    if (most != 0) {
-        int32_t mag = most - 127; /* the largest |length| is in [2^mag, 2^(mag+1)) */
-        e = RENDER_NORM_EXP - mag;
-    }
-    e = e < RENDER_NORM_EXP_MIN ? RENDER_NORM_EXP_MIN : e > RENDER_NORM_EXP_MAX ? RENDER_NORM_EXP_MAX : e;
-    if (geom != 0) /* the geometry's largest length, scaled by 2^e, to 8..16 */
+    int32_t e = most == LOAD_EXP_NONE ? 0 : RENDER_NORM_EXP - most; /* the largest |length|
+                                                     is in [2^most, 2^(most+1)) */
+    if (e < RENDER_NORM_EXP_MIN || e > RENDER_NORM_EXP_MAX)
+            return load_fail(L, SCENE_LOAD_ERR_VALUE, "the scene's largest length, its clusters' "
+                         "scales included, is 2^%ld: beyond 2^%ld..2^%ld", (long)most,
+                         (long)(RENDER_NORM_EXP - RENDER_NORM_EXP_MAX),
+                         (long)(RENDER_NORM_EXP - RENDER_NORM_EXP_MIN));
+    int32_t t = 0;
+    if (geom != LOAD_EXP_NONE) /* the geometry's largest length, scaled by 2^e, to 8..16 */
         t = geom - most + RENDER_TOL_SLACK_EXP;
     t = t > 0 ? 0 : t;
-    L->unit_exp = e;
+    L->unit_exp = (int)e;
+    L->len_exp = (int)e;
     s->unit_exp = e;
     s->tol_exp = t < RENDER_TOL_EXP_MIN ? RENDER_TOL_EXP_MIN : t;
+    return SCENE_LOAD_OK;
 }
 
 /* ---------------------------------------------------------------- entry */
@@ -776,15 +866,18 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
     scene_normals_t *normals = LOAD_ALLOC(arena, scene_normals_t, n_nrm);
     size_t scratch = arena->used;
     uint8_t *nesting = LOAD_ALLOC(arena, uint8_t, n_clu); /* scratch, released below */
+    L.cexp = LOAD_ALLOC(arena, int32_t, n_clu);
+    L.kexp = LOAD_ALLOC(arena, int32_t, n_clu);
     if (!lights || !mats || !maps || !texels || !clusters || !prims || !comps || !keys ||
-        !normals || !nesting) {
+        !normals || !nesting || !L.cexp || !L.kexp) {
         size_t need = arena->failed_request;
         arena_release_to(arena, mark);
         return load_fail(&L, SCENE_LOAD_ERR_ARENA, "arena too small for the scene: %ld bytes free, "
                          "a request of %ld bytes failed", (long)(arena->size - mark), (long)need);
     }
-    load_scale(&L, out);
-    scene_load_status_t st = load_view(&L, out);
+    scene_load_status_t st = load_scale(&L, out);
+    if (st == SCENE_LOAD_OK)
+        st = load_view(&L, out);
     if (st == SCENE_LOAD_OK)
         st = load_lights(&L, lights);
     if (st == SCENE_LOAD_OK)
@@ -798,7 +891,7 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
     if (st == SCENE_LOAD_OK)
         st = load_components(&L, comps);
     if (st == SCENE_LOAD_OK)
-        st = load_prims(&L, prims);
+        st = load_prims(&L, prims, comps);
     if (st == SCENE_LOAD_OK)
         st = load_normals(&L, prims, normals);
     if (st == SCENE_LOAD_OK && n_light == 0)
@@ -867,7 +960,7 @@ scene_load_status_t scene_load_shape_before_load(const uint8_t *buf, size_t len,
 }
 
 /* Keep in step with the allocations of scene_load above: each array (at
- * least one element), the nesting scratch, each padded by at most
+ * least one element), the nesting and the exponent scratch, each padded by at most
  * ARENA_MAX_ALIGN. */
 size_t scene_load_bytes_layout(const scene_t *shape, uint32_t texel_bytes,
                                const render_layout_t *lay)
@@ -881,7 +974,8 @@ size_t scene_load_bytes_layout(const scene_t *shape, uint32_t texel_bytes,
            LOAD_BYTES(lay->component, shape->density_component_count) +
            LOAD_BYTES(lay->key, shape->key_count) +
            LOAD_BYTES(lay->normals, shape->normals_count) +
-           LOAD_BYTES(1, shape->cluster_count) + 10 * ARENA_MAX_ALIGN;
+           LOAD_BYTES(1, shape->cluster_count) + LOAD_BYTES(8, shape->cluster_count) +
+           12 * ARENA_MAX_ALIGN;
 #undef LOAD_BYTES
 }
 

@@ -73,7 +73,7 @@ static void render_usage(FILE *out)
             "after another on the same board.\n"
             "options:\n"
             "  --ncs N          node computers (1..254, default %d)\n"
-            "  --arith A        float, soft or fixed (default float); auto: the cheapest that\n"
+            "  --arith A        float, soft, fixed or double (default float); auto: the cheapest that\n"
             "                   keeps --target-db D (default 40) dB against double on a\n"
             "                   low-resolution pre-render, for a unit computer with VFP or,\n"
             "                   with --fpu none, without (docs/renderer.md)\n"

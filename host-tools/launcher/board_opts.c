@@ -15,7 +15,7 @@
 
 const char board_opts_usage[] =
     "  --smp N          cores on the board: DM, RC and N-2 NCs (3..256, default 10)\n"
-    "  --arith A        firmware arithmetic: float, soft or fixed (default float)\n"
+    "  --arith A        firmware arithmetic: float, soft, fixed or double (default float)\n"
     "  --firmware ELF   firmware to boot (default: links1-<arith>.elf in $FW_DIR,\n"
     "                   else next to this program)\n"
     "  --timeout S      seconds to wait for every unit computer to report in (default 60)\n"
@@ -94,7 +94,7 @@ int board_opt(struct board_opts *o, const struct cli *c, int code)
         return 1;
     case BOARD_OPT_ARITH:
         if (board_arith_code(c->arg) < 0)
-            return cli_bad_value(c, "float, soft or fixed");
+            return cli_bad_value(c, "float, soft, fixed or double");
         o->arith = c->arg;
         return 1;
     }

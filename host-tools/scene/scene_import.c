@@ -147,10 +147,10 @@ static int imp_place(struct imp *im)
                             n->name, nest, SCN_MAX_CLUSTER_NESTING);
         }
         for (int i = 0; i < 12; i++) {
-            if ((i % 4) != 3 && fabs(n->m[i]) > SCN_MAX_FACTOR) {
+            if ((i % 4) != 3 && fabs(n->m[i]) > SCN_MAX_SCALE) {
                 free(depth);
                 return imp_fail(im, "node '%s': a transform entry is %g, beyond +-%g",
-                                n->name, n->m[i], (double)SCN_MAX_FACTOR);
+                                n->name, n->m[i], (double)SCN_MAX_SCALE);
             }
             if ((i % 4) == 3)
                 big = fmax(big, fabs(n->m[i]));

@@ -36,10 +36,10 @@ int parse_transform(struct parser *p, double m[12])
     } else if (lex_is_word(&p->lx, "scale")) {
         lex_next(&p->lx);
         double v[3];
-        v[0] = lex_number_in(&p->lx, "scale", -SCN_MAX_FACTOR, SCN_MAX_FACTOR);
+        v[0] = lex_number_in(&p->lx, "scale", -SCN_MAX_SCALE, SCN_MAX_SCALE);
         if (p->lx.kind == LEX_NUMBER) {
-            v[1] = lex_number_in(&p->lx, "scale", -SCN_MAX_FACTOR, SCN_MAX_FACTOR);
-            v[2] = lex_number_in(&p->lx, "scale", -SCN_MAX_FACTOR, SCN_MAX_FACTOR);
+            v[1] = lex_number_in(&p->lx, "scale", -SCN_MAX_SCALE, SCN_MAX_SCALE);
+            v[2] = lex_number_in(&p->lx, "scale", -SCN_MAX_SCALE, SCN_MAX_SCALE);
         } else {
             v[1] = v[2] = v[0];
         }
@@ -51,21 +51,26 @@ int parse_transform(struct parser *p, double m[12])
         for (int i = 0; i < 12; i++)
             t[i] = i % 4 == 3 ? lex_number_in(&p->lx, "matrix translation", -SCN_MAX_COORD,
                                               SCN_MAX_COORD)
-                              : lex_number_in(&p->lx, "matrix entry", -SCN_MAX_FACTOR,
-                                              SCN_MAX_FACTOR);
+                              : lex_number_in(&p->lx, "matrix entry", -SCN_MAX_SCALE,
+                                              SCN_MAX_SCALE);
         double det = t[0] * (t[5] * t[10] - t[6] * t[9]) - t[1] * (t[4] * t[10] - t[6] * t[8]) +
                      t[2] * (t[4] * t[9] - t[5] * t[8]);
-        if (fabs(det) < 1e-12)
+        /* against the rows' lengths: a matrix scaled by 1e-6 is invertible */
+        double rows = 1;
+        for (int r = 0; r < 3; r++)
+            rows *= sqrt(t[4 * r] * t[4 * r] + t[4 * r + 1] * t[4 * r + 1] +
+                         t[4 * r + 2] * t[4 * r + 2]);
+        if (!(rows > 0) || !(fabs(det) >= 1e-12 * rows))
             lex_error(&p->lx, "matrix is not invertible (determinant %g)", det);
     } else {
         return 0;
     }
     parse_apply(m, t);
     for (int i = 0; i < 12; i++)
-        if (fabs(m[i]) > (i % 4 == 3 ? SCN_MAX_COORD : SCN_MAX_FACTOR))
+        if (fabs(m[i]) > (i % 4 == 3 ? SCN_MAX_COORD : SCN_MAX_SCALE))
             lex_error(&p->lx, "the combined transform has %s beyond %g", i % 4 == 3 ?
                       "a translation" : "an entry", i % 4 == 3 ? (double)SCN_MAX_COORD :
-                      (double)SCN_MAX_FACTOR);
+                      (double)SCN_MAX_SCALE);
     return 1;
 }
 
@@ -97,10 +102,10 @@ void parse_key(struct parser *p, int c)
                 k.rotate[i] = lex_number_in(&p->lx, "rotate (degrees)", -3600, 3600);
         } else if (lex_is_word(&p->lx, "scale")) {
             lex_next(&p->lx);
-            k.scale[0] = lex_number_in(&p->lx, "scale", -SCN_MAX_FACTOR, SCN_MAX_FACTOR);
+            k.scale[0] = lex_number_in(&p->lx, "scale", -SCN_MAX_SCALE, SCN_MAX_SCALE);
             if (p->lx.kind == LEX_NUMBER) {
-                k.scale[1] = lex_number_in(&p->lx, "scale", -SCN_MAX_FACTOR, SCN_MAX_FACTOR);
-                k.scale[2] = lex_number_in(&p->lx, "scale", -SCN_MAX_FACTOR, SCN_MAX_FACTOR);
+                k.scale[1] = lex_number_in(&p->lx, "scale", -SCN_MAX_SCALE, SCN_MAX_SCALE);
+                k.scale[2] = lex_number_in(&p->lx, "scale", -SCN_MAX_SCALE, SCN_MAX_SCALE);
             } else {
                 k.scale[1] = k.scale[2] = k.scale[0];
             }
@@ -203,12 +208,12 @@ static void parse_ellipsoid(struct parser *p, struct sd_prim *pr, int sphere)
         } else if (sphere && lex_is_word(&p->lx, "radius")) {
             lex_next(&p->lx);
             pr->v[3] = pr->v[4] = pr->v[5] =
-                lex_number_in(&p->lx, "radius", 1e-6, SCN_MAX_COORD);
+                lex_number_in(&p->lx, "radius", SCN_MIN_SIZE, SCN_MAX_COORD);
             have_r = 1;
         } else if (!sphere && lex_is_word(&p->lx, "radii")) {
             lex_next(&p->lx);
             for (int i = 0; i < 3; i++)
-                pr->v[3 + i] = lex_number_in(&p->lx, "radius", 1e-6, SCN_MAX_COORD);
+                pr->v[3 + i] = lex_number_in(&p->lx, "radius", SCN_MIN_SIZE, SCN_MAX_COORD);
             have_r = 1;
         } else {
             parse_unknown(p, sphere ? "sphere" : "ellipsoid");
@@ -266,7 +271,7 @@ static void parse_density(struct parser *p, struct sd_prim *pr)
                 lex_error(&p->lx, "more than %d components", SCN_MAX_DENSITY_COMPONENTS);
             struct sd_component c;
             parse_coord3(p, "component centre", c.centre);
-            c.radius = lex_number_in(&p->lx, "component radius", 1e-6, SCN_MAX_COORD);
+            c.radius = lex_number_in(&p->lx, "component radius", SCN_MIN_SIZE, SCN_MAX_COORD);
             if (p->lx.kind == LEX_NUMBER && p->lx.num == 0)
                 lex_error(&p->lx, "component weight is zero");
             c.weight = lex_number_in(&p->lx, "component weight", -SCN_MAX_FACTOR, SCN_MAX_FACTOR);

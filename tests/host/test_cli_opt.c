@@ -149,7 +149,7 @@ static void test_board_options(void)
     CHECK(strstr(msg, "--ram '12x': want a whole number") != NULL);
     char *bad_arith[] = {"x", "--arith", "quad", NULL};
     CHECK_EQ_INT(t_board(bad_arith, &o, msg, sizeof msg), -1);
-    CHECK(strstr(msg, "--arith 'quad': want float, soft or fixed") != NULL);
+    CHECK(strstr(msg, "--arith 'quad': want float, soft, fixed or double") != NULL);
     CHECK_EQ_INT(o.ncores, 66); /* refused values change nothing */
     CHECK(strcmp(o.arith, "fixed") == 0);
 }

@@ -560,8 +560,10 @@ static void test_precision_flag(void)
 }
 
 /* A scene too small for its ray offset is refused, naming the cause: a
- * sphere its cluster shrinks by 2^-8 (the tolerances follow the
- * geometry as stored: "its clusters shrink it"), or the same small sphere
+ * sphere a cluster map shrinks by 2^-8 (made here, not by the loader,
+ * which takes a cluster's power of two into its lengths: the tolerances
+ * follow the geometry as stored, so it is small for its distance from the
+ * origin), or the same small sphere
  * where the loader stopped the tolerances at RENDER_TOL_EXP_MIN because
  * the eye or a light lies far out (test_scene_load: a light 1e5 from a
  * sphere within 2.5).  Both messages fit the DM's refusal line. */
@@ -589,7 +591,7 @@ static void test_extent_refused(void)
         CHECK(strlen(why) + strlen("frame 999: ") < RENDER_BLOB_MSG_MAX); /* blob.c's prefix */
         CHECK(strstr(why, far ? "the eye or a light lies over 256 times farther out than the "
                                 "geometry; bring it closer"
-                              : "its clusters shrink it below its coordinates; scale those instead") != NULL);
+                              : "it lies far from the origin for its size; move it nearer") != NULL);
     }
 }
 

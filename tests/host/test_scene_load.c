@@ -114,9 +114,10 @@ static void test_round_trip(void)
     CHECK_EQ_INT(s.height, 48);
     CHECK_EQ_INT(s.frame_count, 3);
     CHECK_EQ_INT(s.options.max_depth, 4);
-    /* lengths scaled to the scene: the largest, 5 (eye, spot light), is
-     * stored as 10, in [2^RENDER_NORM_EXP, 2^(RENDER_NORM_EXP+1)) */
-    CHECK_EQ_INT(s.unit_exp, RENDER_NORM_EXP - 2);
+    /* lengths scaled to the scene in world units: the largest, c2's
+     * ellipsoid's semi-axis 3 times c2's scale 2 times c1's key scale 2,
+     * 12, is stored as 12, in [2^RENDER_NORM_EXP, 2^(RENDER_NORM_EXP+1)) */
+    CHECK_EQ_INT(s.unit_exp, RENDER_NORM_EXP - 3);
     CHECK_NEAR(num_to_double(s.camera.eye.z), -5.0 * (1 << s.unit_exp), 0);
     CHECK_EQ_INT(s.options.shadows, 0);
     CHECK_EQ_INT(s.options.refractionless, 1);
@@ -154,15 +155,20 @@ static void test_round_trip(void)
     CHECK(s.clusters[0].parent == SCENE_NO_CLUSTER);
     CHECK_EQ_INT(s.clusters[1].parent, 0);
     CHECK_EQ_INT(s.clusters[2].parent, 1);
-    CHECK_NEAR(LEN(&s, s.clusters[1].local.m[1][3]), 2, 0);
-    CHECK_NEAR(num_to_double(s.clusters[2].local.m[2][2]), 2, 0);
+    /* each cluster's power of two leaves its matrix and key scales for the
+     * lengths it holds: c1's keys scale by up to 2 (its matrix's
+     * translation, between the keys and the matrix, times 2), c2 by 2 more
+     * (its contents times 4) */
+    CHECK_NEAR(LEN(&s, s.clusters[1].local.m[1][3]), 2 * 2, 0);
+    CHECK_NEAR(num_to_double(s.clusters[2].local.m[2][2]), 1, 0);
     CHECK_EQ_INT(s.clusters[1].key_count, 2);
     CHECK_EQ_INT(s.key_count, 2);
     CHECK_EQ_INT(s.keys[1].frame, 2);
     /* rotate 0 90 0: quaternion (cos 45, 0, sin 45, 0) */
     CHECK_NEAR(num_to_double(s.keys[1].rot_w), 0.70710678, VAL_TOL);
     CHECK_NEAR(num_to_double(s.keys[1].rot_y), 0.70710678, VAL_TOL);
-    CHECK_NEAR(num_to_double(s.keys[1].scale.z), 2, 0);
+    CHECK_NEAR(num_to_double(s.keys[1].scale.z), 1, 0);
+    CHECK_NEAR(num_to_double(s.keys[0].scale.z), 0.5, 0);
     CHECK_EQ_INT(s.prim_count, 5);
     CHECK_EQ_INT(s.prims[0].kind, SCENE_PRIM_BOX);
     CHECK_NEAR(LEN(&s, s.prims[0].shape.box.centre.z), 1, 0);
@@ -173,14 +179,16 @@ static void test_round_trip(void)
     CHECK_EQ_INT(s.prims[1].cluster, 1);
     CHECK_EQ_INT(s.prims[2].kind, SCENE_PRIM_TRIANGLE);
     CHECK_EQ_INT(s.prims[2].cluster, 2);
-    CHECK_NEAR(LEN(&s, s.prims[2].shape.triangle.v[1].x), 1, 0);
+    CHECK_NEAR(LEN(&s, s.prims[1].shape.ellipsoid.radius.x), 0.5 * 2, 0);
+    CHECK_NEAR(LEN(&s, s.prims[2].shape.triangle.v[1].x), 1 * 4, 0);
     CHECK_NEAR(num_to_double(s.prims[2].shape.triangle.tex_v[2]), 1, 0);
     CHECK_EQ_INT(s.prims[3].kind, SCENE_PRIM_DENSITY);
     CHECK_EQ_INT(s.prims[3].shape.density.count, 2);
     CHECK_NEAR(num_to_double(s.prims[3].shape.density.threshold), 0.5, 0);
     CHECK_EQ_INT(s.density_component_count, 2);
     CHECK_NEAR(num_to_double(s.density_components[1].weight), -0.5, 0);
-    CHECK_NEAR(LEN(&s, s.prims[4].shape.ellipsoid.radius.z), 3, 0);
+    CHECK_NEAR(LEN(&s, s.density_components[1].centre.x), 1 * 4, 0);
+    CHECK_NEAR(LEN(&s, s.prims[4].shape.ellipsoid.radius.z), 3 * 4, 0);
     free(b);
 }
 
@@ -396,9 +404,9 @@ static void test_bad_indices_and_values(void)
                  SCENE_LOAD_ERR_VALUE, "light 0: position or direction not finite or beyond");
     expect_field(b, len, SCN_SEC_CLUSTERS, C + SCN_CLUSTER_MATRIX + 4 * 3, f32_bits(2e8f), 4,
                  SCENE_LOAD_ERR_VALUE, "cluster 1: a matrix entry not finite or beyond");
-    expect_field(b, len, SCN_SEC_CLUSTERS, C + SCN_CLUSTER_MATRIX, f32_bits(2000.0f), 4,
+    expect_field(b, len, SCN_SEC_CLUSTERS, C + SCN_CLUSTER_MATRIX, f32_bits(2e9f), 4,
                  SCENE_LOAD_ERR_VALUE, "cluster 1: a matrix entry not finite or beyond");
-    expect_field(b, len, SCN_SEC_KEYS, SCN_KEY_SCALE, f32_bits(2000.0f), 4,
+    expect_field(b, len, SCN_SEC_KEYS, SCN_KEY_SCALE, f32_bits(2e9f), 4,
                  SCENE_LOAD_ERR_VALUE, "key 0: translation or scale not finite or beyond");
     expect_field(b, len, SCN_SEC_COMPONENTS, SCN_COMPONENT_WEIGHT, f32_bits(2000.0f), 4,
                  SCENE_LOAD_ERR_VALUE, "density component 0");
@@ -520,6 +528,46 @@ static void test_tolerance_follows_geometry(void)
              RENDER_NORM_EXP - 3, 0);
 }
 
+/* The lengths and tolerances follow the geometry in world units, its
+ * clusters' scales included: a sphere of radius 1 at 5 in a cluster scaled
+ * by 2^k (the eye and the light scaled by hand) is stored as the same
+ * sphere at scale 1, with the same unit_exp and tol_exp, for k from -20
+ * to 20 (about 1e-6 to 1e6), whether the scale is the cluster's matrix or
+ * its key; the cluster's matrix or key scale is stored as 1.  Before,
+ * the lengths followed the coordinates alone, and the matrix kept 2^k. */
+static void test_cluster_scale_follows(void)
+{
+    scene_t one;
+    uint8_t *b1 = load_text("camera { eye 0 1 -8 look_at 0 0 5 }\n"
+                            "light point { position 4 8 -5 }\nmaterial m { }\n"
+                            "cluster c { sphere { material m centre 0 0 5 radius 1 } }\n", &one);
+    /* load_text's arena is reused: what is compared, kept */
+    int32_t unit1 = one.unit_exp, tol1 = one.tol_exp;
+    num_t r1 = one.prims[0].shape.ellipsoid.radius.x, c1 = one.prims[0].shape.ellipsoid.centre.z;
+    num_t eye1 = one.camera.eye.z;
+    for (int k = -20; k <= 20; k += 5)
+        for (int key = 0; key < 2; key++) {
+            double f = ldexp(1, k);
+            char text[512];
+            snprintf(text, sizeof text,
+                     "camera { eye 0 %.17g %.17g look_at 0 0 %.17g }\n"
+                     "light point { position %.17g %.17g %.17g }\nmaterial m { }\n"
+                     "cluster c { %s%.17g%s sphere { material m centre 0 0 5 radius 1 } }\n",
+                     f, -8 * f, 5 * f, 4 * f, 8 * f, -5 * f, key ? "key 0 { scale " : "scale ",
+                     f, key ? " }" : "");
+            scene_t s;
+            uint8_t *b = load_text(text, &s);
+            CHECK_EQ_INT(s.unit_exp, unit1 - k);
+            CHECK_EQ_INT(s.tol_exp, tol1);
+            CHECK(num_eq(s.prims[0].shape.ellipsoid.radius.x, r1));
+            CHECK(num_eq(s.prims[0].shape.ellipsoid.centre.z, c1));
+            CHECK(num_eq(s.camera.eye.z, eye1));
+            CHECK(num_eq(key ? s.keys[0].scale.y : s.clusters[1].local.m[1][1], NUM_ONE));
+            free(b);
+        }
+    free(b1);
+}
+
 /* A scene at the length limit (SCN_MAX_COORD) loads in every arithmetic,
  * its lengths scaled to 8..16; one beyond it is refused by the compiler,
  * naming the limit. */
@@ -542,9 +590,9 @@ static void test_length_limit(void)
     CHECK(sd_parse_text("t.scn", beyond, &sd, err, sizeof err) != 0);
     CHECK(strstr(err, "eye must be -1e+08..1e+08, not -2e8") != NULL);
     const char *scale = "light point { position 0 5 0 }\nmaterial m { }\n"
-                        "cluster c { scale 2000 sphere { material m radius 1 } }\n";
+                        "cluster c { scale 2e9 sphere { material m radius 1 } }\n";
     CHECK(sd_parse_text("t.scn", scale, &sd, err, sizeof err) != 0);
-    CHECK(strstr(err, "scale must be -1000..1000, not 2000") != NULL);
+    CHECK(strstr(err, "scale must be -1e+08..1e+08, not 2e9") != NULL);
 }
 
 static void test_small_arena(void)
@@ -574,6 +622,7 @@ int main(void)
     RUN(test_bad_indices_and_values);
     RUN(test_length_limit);
     RUN(test_tolerance_follows_geometry);
+    RUN(test_cluster_scale_follows);
     RUN(test_small_arena);
     return check_exit();
 }

@@ -214,17 +214,18 @@ static void test_errors_name_line_and_column(void)
     EXPECT_ERROR(HEAD "density { material m threshold 1 }\n", 3, 34, "at least one component");
     EXPECT_ERROR(HEAD "sphere { material m radius 1 } \"open\n", 3, 32, "string not closed");
     EXPECT_ERROR("material m { }\nsphere { material m radius 1 }\n", 3, 1, "no light");
-    /* lengths to SCN_MAX_COORD (1e8), values without a unit to SCN_MAX_FACTOR */
+    /* lengths to SCN_MAX_COORD (1e8), a cluster's matrix entries and scales
+     * to SCN_MAX_SCALE (1e8), other values without a unit to SCN_MAX_FACTOR */
     EXPECT_ERROR(HEAD "sphere { material m centre 2e8 0 0 radius 1 }\n", 3, 28,
                  "centre must be -1e+08..1e+08, not 2e8");
     EXPECT_ERROR(HEAD "cluster c { translate 0 -1.5e8 0 }\n", 3, 25,
                  "translate must be -1e+08..1e+08, not -1.5e8");
-    EXPECT_ERROR(HEAD "cluster c { matrix 2000 0 0 0 0 1 0 0 0 0 1 0 }\n", 3, 20,
-                 "matrix entry must be -1000..1000, not 2000");
+    EXPECT_ERROR(HEAD "cluster c { matrix 2e9 0 0 0 0 1 0 0 0 0 1 0 }\n", 3, 20,
+                 "matrix entry must be -1e+08..1e+08, not 2e9");
     EXPECT_ERROR(HEAD "cluster c { matrix 1 0 0 2e8 0 1 0 0 0 0 1 0 }\n", 3, 26,
                  "matrix translation must be -1e+08..1e+08, not 2e8");
-    EXPECT_ERROR(HEAD "cluster c { scale 100 scale 100 }\n", 3, 33,
-                 "the combined transform has an entry beyond 1000");
+    EXPECT_ERROR(HEAD "cluster c { scale 1e5 scale 1e4 }\n", 3, 33,
+                 "the combined transform has an entry beyond 1e+08");
     EXPECT_ERROR(HEAD "triangle { material m v 0 0 0 v 1 0 0 v 0 1 0 uv 2000 0 }\n", 3, 50,
                  "u must be -1000..1000, not 2000");
 }
@@ -241,6 +242,16 @@ static void test_length_limit_accepted(void)
                                &s, err, sizeof err),
                  0);
     CHECK_NEAR(s.prims[0].v[3], 1e8, 0);
+    sd_free(&s);
+    /* a cluster's scale and matrix to SCN_MAX_SCALE, down to 1e-6 and a
+     * radius of 1e-12 (SCN_MIN_SIZE): invertible against its rows' lengths */
+    CHECK_EQ_INT(sd_parse_text("t.scn",
+                               HEAD "cluster c { scale 1e6 scale 100\n"
+                               "  cluster d { matrix 1e-6 0 0 0  0 1e-6 0 0  0 0 1e-6 0\n"
+                               "    sphere { material m radius 1e-12 } } }\n",
+                               &s, err, sizeof err),
+                 0);
+    CHECK_NEAR(s.prims[0].v[3], 1e-12, 0);
     sd_free(&s);
 }
 

@@ -4,9 +4,11 @@
 # image should not change, so the error is against the double build at the
 # first knob; 0: at the same knob)
 families=(
-    "scale|1 3 10 20 30 100 300 1000|scene scale|1|1"
-    "scale_down|1 0.3 0.1 0.05 0.03 0.01 0.001|scene scale|1|1"
-    "cluster_scale|1 0.3 0.1 0.03 0.01 0.001|cluster scale|1|1"
+    "scale|1 3 10 20 30 100 300 1000 10000 1000000|scene scale|1|1"
+    "scale_down|1 0.3 0.1 0.05 0.03 0.01 0.001 0.0001 1e-06|scene scale|1|1"
+    "cluster_scale|1 3 30 1000 10000 1000000|cluster scale|1|1"
+    "cluster_scale_down|1 0.3 0.1 0.03 0.01 0.001 0.0001 1e-06|cluster scale|1|1"
+    "model_scale|1 0.01 0.0001 1e-06|model node scale|1|1"
     "grazing|45 20 10 5 2 1 0.5 0.2 0.1|degrees above the floor|1|0"
     "coincident|0.1 0.01 0.003 0.001 0.0003 0.0001 0.00001|gap|1|0"
     "thin_triangles|10 100 1000 3000 10000 30000|length / width|1|0"
@@ -17,9 +19,11 @@ families=(
 )
 
 # family_scene FAMILY KNOB SIZE: the family's scene at that knob value on
-# stdout (scale_down is the scale family below 1).
+# stdout (scale_down and cluster_scale_down are the scale and cluster_scale
+# families below 1).
 family_scene() {
     local gen=$1
     [ "$gen" = scale_down ] && gen=scale
+    [ "$gen" = cluster_scale_down ] && gen=cluster_scale
     python3 tests/sweeps/make_scene.py "$gen" "$2" --size "$3"
 }

@@ -20,7 +20,7 @@ if ! bash tests/sweeps/sweep.sh --quick --out "$out" >"$out.log" 2>&1; then
 fi
 # The refusals the sweep expects (family, knob, arith), each with its text
 # checked below; any other refusal fails.
-expected_refusals="cluster_scale/0.01/double cluster_scale/0.01/float cluster_scale/0.01/fixed"
+expected_refusals=""
 # A check compares at least this share of the pixels (the rest flagged,
 # next to an edge or moved): fewer would judge the flags on too little.
 min_compared_pct=15
@@ -51,19 +51,5 @@ for r in $expected_refusals; do
         "$out/sweep.tsv" || echo "FAIL flagged_${f}_${k}_${a}: expected a refusal, got none"
 done
 
-# The refusal messages name the problem and the numbers.
-want() { # NAME FAMILY KNOB ARITH TEXT
-    local status
-    status=$(awk -F'\t' -v f="$2" -v k="$3" -v a="$4" '$1 == f && $2 == k && $3 == a { print $4 }' \
-        "$out/sweep.tsv")
-    case $status in
-        *"$5"*) echo "PASS $1" ;;
-        *) echo "FAIL $1: '$status' does not say '$5'" ;;
-    esac
-}
-want refuse_span_double cluster_scale 0.01 double \
-    "scene spans 0.121; double resolves 2^-52 of a value (lengths scaled by 2^1), but secondary rays start 0.001 from a surface, so a scene needs a span of at least 0.5"
-want refuse_span_float cluster_scale 0.01 float \
-    "scene spans 0.121; float resolves 2^-23 of a value (lengths scaled by 2^1), but secondary rays start 0.001 from a surface, so a scene needs a span of at least 0.5"
-want refuse_cluster_scale_fixed cluster_scale 0.01 fixed \
-    "scene spans 0.121; fixed Q12.19 resolves 2^-19 (lengths scaled by 2^1), but secondary rays start 0.001 from a surface, so a scene needs a span of at least 0.5"
+# (a cluster scaled by 0.01, refused in every arithmetic when the lengths
+# followed the coordinates alone, renders: no refusal is expected)

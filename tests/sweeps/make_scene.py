@@ -6,6 +6,10 @@ stays the same (docs/results/sweeps.md).
   scale   three shapes on a floor, every length times KNOB (1e-3..1e3);
           the image should not change
   cluster_scale  the same, the objects in one cluster scaled by KNOB
+                 (1e-6..1e6; the camera and lights scaled by hand)
+  model_scale    the scale scene at KNOB with a model beside it (a glTF
+                 file written to MODEL_DIR, default build/sweep-models)
+                 whose node scales its unscaled pyramid by KNOB
   grazing        a floor seen KNOB degrees above it (90..0.1)
   coincident     a plate KNOB above the floor (1e-1..1e-6)
   thin_triangles triangles KNOB times longer than wide
@@ -54,6 +58,44 @@ def cluster_scale_scene(s, w, h):
     head = head.replace("position 4 8 -5", f"position {v(4, 8, -5)}")
     head = head.replace("every length x 1", f"in a cluster scaled by {s:g}")
     return head + "cluster all {\n  scale %.9g\n  box {" % s + body + "}\n"
+
+
+def model_gltf(s):
+    """A glTF 2 file: one node scaled by s holding a pyramid of four
+    triangles, 1.2 wide and 1.1 high, its vertices in an embedded buffer."""
+    import base64, json, struct
+    pos = [(-0.6, 0, -0.6), (0.6, 0, -0.6), (0.6, 0, 0.6), (-0.6, 0, 0.6), (0, 1.1, 0)]
+    idx = [0, 4, 1, 1, 4, 2, 2, 4, 3, 3, 4, 0]
+    data = b"".join(struct.pack("<3f", *p) for p in pos) + struct.pack("<12H", *idx)
+    lo = [min(p[i] for p in pos) for i in range(3)]
+    hi = [max(p[i] for p in pos) for i in range(3)]
+    doc = {
+        "asset": {"version": "2.0", "generator": "links1 tests/sweeps/make_scene.py"},
+        "scene": 0, "scenes": [{"nodes": [0]}],
+        "nodes": [{"name": "scaled", "mesh": 0, "scale": [s, s, s]}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+        "buffers": [{"byteLength": len(data), "uri": "data:application/octet-stream;base64," +
+                     base64.b64encode(data).decode()}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 60},
+                        {"buffer": 0, "byteOffset": 60, "byteLength": 24}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 5, "type": "VEC3",
+                       "min": lo, "max": hi},
+                      {"bufferView": 1, "componentType": 5123, "count": 12, "type": "SCALAR"}],
+    }
+    return json.dumps(doc, indent=1)
+
+
+def model_scale_scene(s, w, h):
+    """The scale scene at s with a model beside the shapes whose node
+    scales its pyramid by s: the model statement's transform."""
+    d = os.path.abspath(os.environ.get("MODEL_DIR", "build/sweep-models"))
+    os.makedirs(d, exist_ok=True)
+    path = os.path.join(d, "pyramid-%.9g.gltf" % s)
+    with open(path, "w") as f:
+        f.write(model_gltf(s))
+    t = " ".join("%.9g" % (x * s) for x in (0.4, 0, -1.6))
+    return (scale_scene(s, w, h).replace("every length x", "a model scaled by its node, every length x") +
+            "cluster pyramid {\n  translate %s\n  model { file \"%s\"  material green }\n}\n" % (t, path))
 
 
 COMMON = """background 0.1 0.12 0.2
@@ -167,7 +209,8 @@ options {{ max_depth 2  density_steps {n} }}
 
 
 MAPS = "scenes/maps"
-FAMILIES = {"scale": scale_scene, "cluster_scale": cluster_scale_scene, "grazing": grazing_scene,
+FAMILIES = {"scale": scale_scene, "cluster_scale": cluster_scale_scene,
+            "model_scale": model_scale_scene, "grazing": grazing_scene,
             "coincident": coincident_scene, "thin_triangles": thin_triangle_scene,
             "tir_chain": tir_chain_scene, "ellipsoid_ratio": ellipsoid_ratio_scene,
             "map_repeat": map_repeat_scene, "density_steps": density_steps_scene}

@@ -15,10 +15,12 @@
 # sum over the NCs, which does not depend on how the areas were shared
 # out), one run (it varies by a few instructions per pixel between runs),
 # for every configuration the board runs: float (VFP) and soft at every
-# depth, adaptive on and off, refraction off, fixed Q12.19 at depth 5, and
-# the other fixed formats at depth 5 with firmware built by this script
-# into DIR/fw-qF (make B=DIR/fw-qF FW_EXTRA_CFLAGS=-DNUM_FRAC_BITS=F, never
-# the default build); no double and no density-step variants on the board.  Error: PSNR against the reference, share of
+# depth, adaptive on and off, refraction off, double (VFP in double
+# precision) at every depth adaptive and at depth 5 without, fixed Q12.19
+# at depth 5, and the other fixed formats at depth 5 with firmware built
+# by this script into DIR/fw-qF (make B=DIR/fw-qF
+# FW_EXTRA_CFLAGS=-DNUM_FRAC_BITS=F, never the default build); no
+# density-step variants on the board.  Error: PSNR against the reference, share of
 # pixels beyond 1/255 and 2/255; a board image is also checked to be the
 # host image of the same arithmetic, byte for byte.  The Pareto front (no
 # other point both cheaper and closer) is marked on each chart; the board's
@@ -29,7 +31,8 @@
 #     (--charts-only: the fronts and charts again from DIR/*.raw, nothing run)
 #   PARETO_SMALL=1 bash tests/sweeps/pareto.sh --out DIR   # the reduced run
 #     (tests/board/pareto_small.sh: 40x30, one run, depth 2 only; on the
-#     board float, soft and fixed adaptive and float with refraction off)
+#     board float, soft, double and fixed adaptive and float with
+#     refraction off)
 set -eu
 cd "$(dirname "$0")/../.."
 out=build/pareto
@@ -103,11 +106,11 @@ configs=()
 for d in $DEPTHS; do
     configs+=("float d$d adaptive|build/links1-ref-float|--max-depth $d")
     configs+=("float d$d fixed cutoff|build/links1-ref-float|--max-depth $d --min-weight 0")
+    configs+=("double d$d adaptive|build/links1-ref-double|--max-depth $d")
 done
 dm=5
 [ "$SMALL" = 1 ] && dm=2
 configs+=("float d$dm adaptive, refraction off|build/links1-ref-float|--max-depth $dm --refraction off")
-configs+=("double d$dm adaptive|build/links1-ref-double|--max-depth $dm")
 configs+=("double d$dm fixed cutoff|build/links1-ref-double|--max-depth $dm --min-weight 0")
 configs+=("fixed Q12.19 d$dm adaptive|build/links1-ref-fixed|--max-depth $dm")
 configs+=("fixed Q12.19 d$dm fixed cutoff|build/links1-ref-fixed|--max-depth $dm --min-weight 0")
@@ -143,7 +146,10 @@ for d in $DEPTHS; do
         [ "$SMALL" = 1 ] ||
             bconfigs+=("$a d$d fixed cutoff|$a|--max-depth $d --min-weight 0|float d$d fixed cutoff")
     done
+    bconfigs+=("double d$d adaptive|double|--max-depth $d|double d$d adaptive")
 done
+[ "$SMALL" = 1 ] ||
+    bconfigs+=("double d$dm fixed cutoff|double|--max-depth $dm --min-weight 0|double d$dm fixed cutoff")
 bconfigs+=("float d$dm adaptive, refraction off|float|--max-depth $dm --refraction off|float d$dm adaptive, refraction off")
 [ "$SMALL" = 1 ] ||
     bconfigs+=("soft d$dm adaptive, refraction off|soft|--max-depth $dm --refraction off|float d$dm adaptive, refraction off")
@@ -184,7 +190,7 @@ front "$out/pareto.raw" "$out/pareto.tsv"
 # the board's front, and the front of the NCs without an FPU (soft, fixed)
 front "$out/pareto-board.raw" "$out/pareto-board.sorted"
 awk -F'\t' -v OFS='\t' 'NR == 1 { print $0, "front_no_fpu"; next }
-    { f = ""; if ($6 != "float" && $3 + 0 > best) { f = "yes"; best = $3 + 0 } print $0, f }' \
+    { f = ""; if ($6 != "float" && $6 != "double" && $3 + 0 > best) { f = "yes"; best = $3 + 0 } print $0, f }' \
     "$out/pareto-board.sorted" >"$out/pareto-board.tsv"
 rm -f "$out/pareto-board.sorted"
 
@@ -192,14 +198,14 @@ rm -f "$out/pareto-board.sorted"
 awk -F'\t' 'NR > 1 { print $2, $3 }' "$out/pareto.tsv" >"$out/all.dat"
 awk -F'\t' 'NR > 1 && $7 == "yes" { print $2, $3 }' "$out/pareto.tsv" >"$out/front.dat"
 awk -F'\t' 'NR > 1 { gsub(/ /, "_", $1); print $2, $3, $1 }' "$out/pareto.tsv" >"$out/labels.dat"
-for a in float soft fixed; do
+for a in float soft fixed double; do
     awk -F'\t' -v a=$a 'NR > 1 && $6 == a { print $2, $3 }' "$out/pareto-board.tsv" \
         >"$out/board-$a.dat"
 done
 awk -F'\t' 'NR > 1 && $8 == "yes" { print $2, $3 }' "$out/pareto-board.tsv" >"$out/board-front.dat"
 awk -F'\t' 'NR > 1 && $9 == "yes" { print $2, $3 }' "$out/pareto-board.tsv" >"$out/board-front-nofpu.dat"
 # labels on the fronts' points only (the table has them all)
-awk -F'\t' 'NR > 1 && ($8 == "yes" || $9 == "yes") { n = $1; sub(/^(float|soft|fixed) /, "", n); gsub(/ /, "_", n);
+awk -F'\t' 'NR > 1 && ($8 == "yes" || $9 == "yes") { n = $1; sub(/^(float|soft|fixed|double) /, "", n); gsub(/ /, "_", n);
     print $2, $3, n }' "$out/pareto-board.tsv" >"$out/board-labels.dat"
 if command -v gnuplot >/dev/null; then
     gnuplot <<GP
@@ -220,6 +226,7 @@ set xlabel "NC guest instructions per pixel (sum over the NCs, TCG plugin)"
 plot "$out/board-float.dat" using 1:2 with points pt 7 ps 0.9 title "float (VFP)", \
      "$out/board-soft.dat" using 1:2 with points pt 5 ps 0.9 title "soft float", \
      "$out/board-fixed.dat" using 1:2 with points pt 9 ps 1.1 title "fixed point (Q12.19, and the other formats' firmware)", \
+     "$out/board-double.dat" using 1:2 with points pt 13 ps 1.0 title "double (VFP, double precision)", \
      "$out/board-front.dat" using 1:2 with linespoints lw 2 pt 6 ps 1.5 title "Pareto front", \
      "$out/board-front-nofpu.dat" using 1:2 with linespoints lw 2 dt 2 pt 6 ps 1.5 title "Pareto front without an FPU (soft, fixed)", \
      "$out/board-labels.dat" using 1:2:3 with labels font ",7" offset 0,0.7 notitle

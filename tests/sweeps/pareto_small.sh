@@ -2,7 +2,7 @@
 # tests/sweeps/pareto_small.sh: the Pareto chart at reduced size
 # (PARETO_SMALL=1 pareto.sh: 40x30, depth 2): both charts are written as
 # PNG; every board point counted NC instructions and gave the host's image
-# of the same arithmetic byte for byte; soft float costs the NCs more
+# of the same arithmetic byte for byte (float, soft, double, fixed); soft float costs the NCs more
 # instructions per pixel than the VFP, and bending transmitted rays more
 # than not bending them.
 #   PASS pareto_small_NAME  or  FAIL pareto_small_NAME: why
@@ -26,7 +26,7 @@ done
 tsv=$out/pareto-board.tsv
 rows=$(tail -n +2 "$tsv" | wc -l)
 wrong=$(awk -F'\t' 'NR > 1 && !($2 > 0 && $7 == "yes") { printf "%s (%s insns, same image: %s); ", $1, $2, $7 }' "$tsv")
-if [ "$rows" -eq 4 ] && [ -z "$wrong" ]; then
+if [ "$rows" -eq 5 ] && [ -z "$wrong" ]; then
     echo "PASS pareto_small_board_counted_and_exact ($rows configurations)"
 else
     echo "FAIL pareto_small_board_counted_and_exact: $rows rows; $wrong"

@@ -36,6 +36,7 @@ while [ $# -gt 0 ]; do
     shift
 done
 mkdir -p "$out/work"
+export MODEL_DIR=$out/work/models # make_scene.py model_scale's glTF files
 tsv=$out/sweep.tsv
 
 . tests/sweeps/families.sh # families=(...)
@@ -43,7 +44,9 @@ if [ $quick = 1 ]; then
     families=(
         "scale|1 30 100 1000|scene scale|1|1"
         "scale_down|1 0.03|scene scale|1|1"
-        "cluster_scale|1 0.01|cluster scale|1|1"
+        "cluster_scale|1 1000000|cluster scale|1|1"
+        "cluster_scale_down|1 0.01 1e-06|cluster scale|1|1"
+        "model_scale|1 1e-06|model node scale|1|1"
         "grazing|10 0.5|degrees above the floor|1|0"
         "coincident|0.01 0.0001|gap|1|0"
         "thin_triangles|100 10000|length / width|1|0"
