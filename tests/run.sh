@@ -4,7 +4,8 @@
 # line "N passed, N failed".
 #
 # Every test is declared in tests/plan.tsv: its name, how many checks it
-# runs and the seconds it may take.  A test fails (one failure more,
+# runs, the seconds it may take, and optionally "host" for a script that
+# boots no board (it then runs beside the host unit tests).  A test fails (one failure more,
 # named) when it
 #   - is not declared there, or runs another number of checks than declared
 #     (one that ends early prints fewer);
@@ -38,6 +39,10 @@ mkdir -p "$log_dir"
 # plan_of NAME: "CHECKS LIMIT" from the plan, or nothing.
 plan_of() {
     awk -F'\t' -v n="$1" '$1 == n && NF >= 3 { print $2, $3; exit }' "$plan"
+}
+# on_host NAME: true when the plan marks the test "host" (it boots no board).
+on_host() {
+    awk -F'\t' -v n="$1" '$1 == n && $4 == "host" { found = 1; exit } END { exit !found }' "$plan"
 }
 
 # exec_one LABEL CMD...: runs one test into its log under its time limit
@@ -98,15 +103,27 @@ report_one() {
     failed=$((failed + f))
 }
 
-# Host tests are independent programs: HOST_JOBS of them run at once (one
-# per host core by default); their results are reported in order.  Board
-# tests run one at a time: each boots a board that wants the host's cores.
+# Host tests are independent programs, and so are the scripts the plan
+# marks "host": HOST_JOBS of them run at once (one per host core by
+# default); their results are reported in order.  Board tests run one at a
+# time: each boots a board that wants the host's cores.
 HOST_JOBS=${HOST_JOBS:-$(nproc 2>/dev/null || echo 2)}
 host_list=(${HOST_TESTS:-})
+board_list=()
+for t in ${BOARD_TESTS:-}; do
+    if on_host "$(basename "$t")"; then
+        host_list+=("$t")
+    else
+        board_list+=("$t")
+    fi
+done
 next_report=0
 for ((i = 0; i < ${#host_list[@]}; i++)); do
     rm -f "$log_dir/$(basename "${host_list[i]}").log.rc" # no stale verdict
-    exec_one "${host_list[i]}" "${host_list[i]}" &
+    case ${host_list[i]} in
+    *.sh) exec_one "${host_list[i]}" bash "${host_list[i]}" & ;;
+    *) exec_one "${host_list[i]}" "${host_list[i]}" & ;;
+    esac
     # Keep at most HOST_JOBS running; report finished ones in order.
     while [ "$(jobs -rp | wc -l)" -ge "$HOST_JOBS" ]; do
         wait -n
@@ -122,7 +139,7 @@ while [ $next_report -lt ${#host_list[@]} ]; do
     report_one "${host_list[next_report]}"
     next_report=$((next_report + 1))
 done
-for t in ${BOARD_TESTS:-}; do
+for t in "${board_list[@]}"; do
     rm -f "$log_dir/$(basename "$t").log.rc"
     exec_one "$t" bash "$t"
     report_one "$t"

@@ -3,7 +3,8 @@
 # scripts in a temporary folder, with a plan of their own) that pass, fail,
 # hang, crash after printing PASS lines, end early, exit non-zero silently,
 # or are missing from the plan: each must be counted as the runner's header
-# says, and the summary line must add them up.
+# says, and the summary line must add them up.  Two scripts the plan marks
+# "host" run beside each other: each waits for the other to start.
 set -u
 cd "$(dirname "$0")/../.."
 tmp=$(mktemp -d /tmp/links1-runner.XXXXXX)
@@ -19,12 +20,23 @@ fake crash 'echo "PASS crash_a"; echo "PASS crash_b"; kill -SEGV $$'
 fake early 'echo "PASS early_a"; exit 0'
 fake silent 'exit 3'
 fake unplanned 'echo "PASS unplanned_a"'
+meet() { # ME OTHER: a script that starts, then waits up to 20 s for OTHER to
+    fake "host$1" "touch '$tmp/$1.started'
+for i in \$(seq 200); do
+    [ -e '$tmp/$2.started' ] && { echo 'PASS host$1_met'; exit 0; }
+    sleep 0.1
+done
+echo 'FAIL host$1_met: host$2 did not start while it ran'; exit 1"
+}
+meet a b
+meet b a
 printf 'good.sh\t2\t10\nbad.sh\t2\t10\nhang.sh\t2\t2\ncrash.sh\t3\t10\nearly.sh\t3\t10\nsilent.sh\t1\t10\n' \
     >"$tmp/plan.tsv"
+printf 'hosta.sh\t1\t30\thost\nhostb.sh\t1\t30\thost\n' >>"$tmp/plan.tsv"
 list=""
-for t in good bad hang crash early silent unplanned; do list="$list $tmp/$t.sh"; done
+for t in good bad hang crash early silent unplanned hosta hostb; do list="$list $tmp/$t.sh"; done
 out=$(TEST_PLAN="$tmp/plan.tsv" TEST_LOG_DIR="$tmp/logs" HOST_TESTS= BOARD_TESTS="$list" \
-    bash tests/run.sh 2>&1)
+    HOST_JOBS=2 bash tests/run.sh 2>&1)
 rc=$?
 
 # expect NAME PATTERN: the runner's output holds a line matching PATTERN
@@ -44,10 +56,16 @@ expect crash_counts_short "FAIL .*crash.sh: ran 2 checks, .* declares 3"
 expect early_exit_fails "FAIL .*early.sh: ran 1 checks, .* declares 3"
 expect silent_exit_fails "FAIL .*silent.sh: exited with status 3 without naming a failed check"
 expect unplanned_test_fails "FAIL .*unplanned.sh: not declared in"
-# good 2 + bad 1 + hang 1 + crash 2 + early 1 + unplanned 1 passed; failed:
+if grep -q "hosta.sh: 1 passed, 0 failed" <<<"$out" && grep -q "hostb.sh: 1 passed, 0 failed" <<<"$out"; then
+    echo "PASS runner_host_scripts_run_beside_each_other"
+else
+    echo "FAIL runner_host_scripts_run_beside_each_other: $(grep -E 'host[ab]' <<<"$out" | tr '\n' ' ')"
+fi
+# good 2 + bad 1 + hang 1 + crash 2 + early 1 + unplanned 1 + hosta 1 +
+# hostb 1 passed; failed:
 # bad 1, hang 1, crash 2, early 1, silent 1 (+ its count? it ran 0 of 1:
 # counted), unplanned 1
-expect summary_adds_up "^8 passed, 9 failed$"
+expect summary_adds_up "^10 passed, 9 failed$"
 if [ $rc -ne 0 ]; then
     echo "PASS runner_exit_status_says_failed"
 else
