@@ -29,7 +29,8 @@ BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
 	tests/board/render_trace.sh tests/board/render_refraction.sh tests/board/figures_small.sh \
 	tests/board/render_scaled.sh tests/board/render_auto.sh tests/board/render_density_steps.sh \
 	tests/board/render_lights.sh
-RENDER_FULL_TESTS := tests/board/render_grid_full.sh tests/board/render_faults_full.sh
+RENDER_FULL_TESTS := tests/board/render_grid_full.sh tests/board/render_faults_full.sh \
+	tests/board/render_faults_silent_full.sh
 
 .PHONY: test-full
 test-full: deps
