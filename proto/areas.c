@@ -76,6 +76,16 @@ void areas_decreasing_defaults(uint32_t ncs, uint32_t *k, uint32_t *factor)
     *factor = areas_decreasing_rule[i].factor;
 }
 
+void areas_settings(enum areas_mode mode, uint32_t ncs, uint32_t k, uint32_t factor,
+                    uint32_t *k_out, uint32_t *factor_out)
+{
+    uint32_t rule_k = AREAS_DEFAULT_K, rule_factor = 0; /* grids take no factor */
+    if (mode == AREAS_DECREASING)
+        areas_decreasing_defaults(ncs, &rule_k, &rule_factor);
+    *k_out = mode == AREAS_STATIC ? ncs : (k == 0 ? rule_k : k);
+    *factor_out = factor == 0 ? rule_factor : factor;
+}
+
 int areas_init(struct areas *s, enum areas_mode mode, uint32_t width, uint32_t height,
                uint32_t ncs, uint32_t k)
 {
@@ -92,14 +102,10 @@ int areas_init(struct areas *s, enum areas_mode mode, uint32_t width, uint32_t h
     s->width = width;
     s->height = height;
     s->ncs = ncs;
-    uint32_t rule_k = AREAS_DEFAULT_K, rule_factor = 2;
-    if (mode == AREAS_DECREASING)
-        areas_decreasing_defaults(ncs, &rule_k, &rule_factor);
-    s->k = mode == AREAS_STATIC ? ncs : (k == 0 ? rule_k : k);
+    areas_settings(mode, ncs, k, 0, &s->k, &s->factor);
     if (s->k > pixels)
         s->k = pixels;
     s->pixels_left = pixels;
-    s->factor = rule_factor;
     if (mode == AREAS_DECREASING)
         s->min_pixels = (pixels + s->k - 1) / s->k;
     else

@@ -83,6 +83,12 @@ struct areas {
  * 4096..32768 and factors 2..4 in `links1 replay` of demo.scn at 512x480,
  * NCs asking ahead (docs/areas.md). */
 void areas_decreasing_defaults(uint32_t ncs, uint32_t *k, uint32_t *factor);
+/* The k and factor a schedule of mode for ncs NCs takes when given k and
+ * factor (0: its default; static's k is ncs; the grids use no factor and
+ * keep 0), before k is clamped to the pixels: what areas_init and
+ * areas_set_guided_factor make of them. */
+void areas_settings(enum areas_mode mode, uint32_t ncs, uint32_t k, uint32_t factor,
+                    uint32_t *k_out, uint32_t *factor_out);
 
 /* Starts a schedule for a width x height screen shared by ncs NCs.  k is
  * the grid's area count for AREAS_DYNAMIC (0 = AREAS_DEFAULT_K) and the

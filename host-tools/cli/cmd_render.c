@@ -500,12 +500,9 @@ static void render_schedule_name(const struct link_render_args *a, uint32_t ncs,
     const char *ask = a->flags & LINK_RENDER_ASK_WHEN_DONE ? "asking when finished"
                                                             : "asking ahead";
     enum areas_mode m = (enum areas_mode)a->balance;
-    uint32_t k = a->areas ? a->areas : AREAS_DEFAULT_K, factor = a->guided;
+    uint32_t k, factor;
+    areas_settings(m, ncs, a->areas, a->guided, &k, &factor);
     if (m == AREAS_DECREASING) {
-        uint32_t rule_k, rule_factor;
-        areas_decreasing_defaults(ncs, &rule_k, &rule_factor);
-        k = a->areas ? a->areas : rule_k;
-        factor = a->guided ? a->guided : rule_factor;
         snprintf(out, cap, "%s, K %u, factor %u, %s", areas_mode_name(m), (unsigned)k,
                  (unsigned)factor, ask);
     } else if (m == AREAS_DYNAMIC) {

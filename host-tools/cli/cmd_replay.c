@@ -284,13 +284,8 @@ int cmd_replay(int argc, char **argv)
         uint64_t most = 0;
         for (uint32_t n = 0; n < c.ncs; n++)
             most = res.nc_insns[n] > most ? res.nc_insns[n] : most;
-        uint32_t k = c.k ? c.k : AREAS_DEFAULT_K, factor = c.guided;
-        if (c.balance == AREAS_DECREASING) {
-            uint32_t rule_k, rule_factor;
-            areas_decreasing_defaults(c.ncs, &rule_k, &rule_factor);
-            k = c.k ? c.k : rule_k;
-            factor = c.guided ? c.guided : rule_factor;
-        }
+        uint32_t k, factor;
+        areas_settings(c.balance, c.ncs, c.k, c.guided, &k, &factor);
         printf("ncs %u balance %s areas %u frame_ms %.1f speed-up %.2f busy %.1f%% rc_busy "
                "%.1f%% exact %u/%u largest_nc_insns %llu k %u factor %u ask %s\n",
                (unsigned)c.ncs, c.as_recorded ? "as-recorded" : areas_mode_name(c.balance),
