@@ -95,6 +95,7 @@ FW_LIBS := -lm -lc -lgcc
 #              arithmetic defined, so one that does include num.h stops the
 #              build at num.h's #error instead of being shared wrongly
 FW_SRCS :=
+FW_SRCS_virt :=
 SHARED_SRCS :=
 ARITH_FREE_SRCS :=
 HOST_TOOLS :=
@@ -109,7 +110,7 @@ include $(wildcard */module.mk */*/module.mk)
 # ------------------------------------------------------------ firmware rules
 # $(1) = variant (float|soft|fixed|double)
 define fw_variant
-FW_OBJS_$(1) := $$(patsubst %,$(B)/fw-$(1)-$(LIBC)/%.o,$$(FW_SRCS) $$(SHARED_SRCS))
+FW_OBJS_$(1) := $$(patsubst %,$(B)/fw-$(1)-$(LIBC)/%.o,$$(FW_SRCS) $$(FW_SRCS_virt) $$(SHARED_SRCS))
 FW_ELF_$(1) := $(FWB)/links1-$(1).elf
 
 $(B)/fw-$(1)-$(LIBC)/%.c.o: %.c

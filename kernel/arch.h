@@ -1,16 +1,11 @@
 /* arch.h: the ARMv7-A (AArch32, cortex-a15) instructions and coprocessor
- * registers the kernel uses, one inline function each. */
+ * registers the kernel uses, one inline function each.  The registers of
+ * the machine's own timer and interrupt controller are its drivers'
+ * (drivers/virt/virt_sysreg.h). */
 #ifndef LINKS1_KERNEL_ARCH_H
 #define LINKS1_KERNEL_ARCH_H
 
 #include <stdint.h>
-
-static inline uint32_t arch_read_mpidr(void)
-{
-    uint32_t v;
-    __asm__ volatile("mrc p15, 0, %0, c0, c0, 5" : "=r"(v));
-    return v;
-}
 
 /* TPIDRPRW: PL1-only thread register; holds this core's struct cpu *. */
 static inline void arch_write_tpidrprw(uintptr_t v)
@@ -71,74 +66,6 @@ static inline uint32_t arch_read_ifsr(void)
     uint32_t v;
     __asm__ volatile("mrc p15, 0, %0, c5, c0, 1" : "=r"(v));
     return v;
-}
-
-/* ---- generic timer (non-secure physical timer) ---- */
-static inline uint64_t arch_read_cntpct(void)
-{
-    uint32_t lo, hi;
-    arch_isb(); /* the count must not be read ahead of earlier code */
-    __asm__ volatile("mrrc p15, 0, %0, %1, c14" : "=r"(lo), "=r"(hi));
-    return ((uint64_t)hi << 32) | lo;
-}
-static inline uint32_t arch_read_cntfrq(void)
-{
-    uint32_t v;
-    __asm__ volatile("mrc p15, 0, %0, c14, c0, 0" : "=r"(v));
-    return v;
-}
-static inline void arch_write_cntp_cval(uint64_t v)
-{
-    __asm__ volatile("mcrr p15, 2, %0, %1, c14" ::"r"((uint32_t)v), "r"((uint32_t)(v >> 32)));
-}
-static inline void arch_write_cntp_ctl(uint32_t v)
-{
-    __asm__ volatile("mcr p15, 0, %0, c14, c2, 1" ::"r"(v));
-    arch_isb();
-}
-#define CNTP_CTL_ENABLE (1u << 0)
-#define CNTP_CTL_IMASK (1u << 1)
-
-/* ---- GICv3 CPU interface (system registers) ---- */
-static inline void arch_write_icc_sre(uint32_t v)
-{
-    __asm__ volatile("mcr p15, 0, %0, c12, c12, 5" ::"r"(v));
-    arch_isb();
-}
-static inline uint32_t arch_read_icc_sre(void)
-{
-    uint32_t v;
-    __asm__ volatile("mrc p15, 0, %0, c12, c12, 5" : "=r"(v));
-    return v;
-}
-static inline void arch_write_icc_pmr(uint32_t v)
-{
-    __asm__ volatile("mcr p15, 0, %0, c4, c6, 0" ::"r"(v));
-}
-static inline void arch_write_icc_bpr1(uint32_t v)
-{
-    __asm__ volatile("mcr p15, 0, %0, c12, c12, 3" ::"r"(v));
-}
-static inline void arch_write_icc_igrpen1(uint32_t v)
-{
-    __asm__ volatile("mcr p15, 0, %0, c12, c12, 7" ::"r"(v));
-    arch_isb();
-}
-static inline uint32_t arch_read_icc_iar1(void)
-{
-    uint32_t v;
-    __asm__ volatile("mrc p15, 0, %0, c12, c12, 0" : "=r"(v)::"memory");
-    return v;
-}
-static inline void arch_write_icc_eoir1(uint32_t v)
-{
-    __asm__ volatile("mcr p15, 0, %0, c12, c12, 1" ::"r"(v) : "memory");
-}
-static inline void arch_write_icc_sgi1r(uint64_t v)
-{
-    __asm__ volatile("mcrr p15, 0, %0, %1, c12" ::"r"((uint32_t)v), "r"((uint32_t)(v >> 32))
-                     : "memory");
-    arch_isb();
 }
 
 /* ---- memory-mapped device registers ---- */

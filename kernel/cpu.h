@@ -13,7 +13,7 @@
 
 struct cpu {
     uint32_t core;             /* core number 0..ncores-1 (= index in cpus) */
-    uint32_t mpidr;            /* MPIDR read at boot */
+    uint32_t hwid;             /* the hardware's name of the core (machine_core_hwid) */
     uint8_t role;              /* enum unit_role: 0 DM, 1 RC, 2 NC */
     volatile uint8_t started;  /* 1 once the core runs its role program */
     volatile uint8_t reported; /* 1 once its LINK_HELLO went out */
@@ -26,8 +26,8 @@ struct cpu {
                                 * a faulting core can drop them all */
     volatile uint32_t events;  /* bumped by every interrupt taken here and
                                 * by task_signal_local(); tasks wait on it */
-    uintptr_t gicr;            /* virtual address of this core's redistributor */
-    volatile uint8_t gic_ready; /* 1 once an SGI can wake this core (gic_cpu_init) */
+    volatile uint8_t wake_ready; /* 1 once a doorbell can wake this core (set by
+                                * the machine's interrupt set-up) */
     uint64_t irqs_taken;       /* interrupts handled (statistics) */
     uint64_t sleeps;           /* times the scheduler slept in WFI */
     uint64_t lock_sleeps;      /* times a lock wait slept in WFI */
@@ -57,15 +57,11 @@ static inline struct cpu *cpu_of(uint32_t core)
     return &cpus[core];
 }
 
-/* Core number and MPIDR affinity of the virt board's GICv3 layout. */
-uint32_t cpu_core_from_mpidr(uint32_t mpidr);
-uint32_t cpu_mpidr_of_core(uint32_t core);
-
 /* Fills cpus[core] and points TPIDRPRW at it; first thing each core does in C. */
 void cpu_init(uint32_t core);
 /* This core's boot is over: it reported in, started its tasks and for the
  * first time has nothing to do (task_schedule_forever calls this).  Tells
- * core 0, which starts the next core only then (boot/boot.c): no two cores
+ * core 0, which starts the next core only then (boot/virt/boot.c): no two cores
  * report in at once, none waits for the host link's lock, and the work of
  * an idle boot is the same every time. */
 void cpu_boot_done(void);

@@ -7,14 +7,15 @@
 #include "kernel/arch.h"
 #include "kernel/cpu.h"
 #include "kernel/klog.h"
+#include "kernel/machine.h"
 #include "kernel/spinlock.h"
 #include "proto/hostlink.h"
 #include "proto/textfmt.h"
 
-/* boot/vectors.S passes the kind as a number. */
+/* boot/virt/vectors.S passes the kind as a number. */
 _Static_assert(FAULT_UNDEF == 1 && FAULT_PREFETCH_ABORT == 2 && FAULT_DATA_ABORT == 3 &&
                    FAULT_PANIC == 4,
-               "boot/vectors.S fault kinds differ from enum link_fault_kind");
+               "boot/virt/vectors.S fault kinds differ from enum link_fault_kind");
 
 /* Set once per core: a fault while reporting a fault halts silently
  * rather than recursing. */
@@ -35,7 +36,7 @@ static void fault_report(uint32_t kind, uint32_t addr, uint32_t pc, uint32_t sta
                          const char *text)
 {
     struct cpu *c = mycpu();
-    uint32_t core = c ? c->core : cpu_core_from_mpidr(arch_read_mpidr());
+    uint32_t core = c ? c->core : machine_core_id();
     if (core >= UNITS_MAX_CORES || fault_in_progress[core])
         cpu_halt_forever();
     fault_in_progress[core] = 1;

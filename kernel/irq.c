@@ -1,9 +1,8 @@
-/* irq.c: the IRQ dispatcher every core runs (called by boot/vectors.S) and
- * the handler table drivers fill in (see irq.h). */
+/* irq.c: the handler table drivers fill in, and what every interrupt taken
+ * does (see irq.h). */
 #include "kernel/irq.h"
 
 #include "kernel/cpu.h"
-#include "kernel/gic.h"
 #include "kernel/panic.h"
 #include "kernel/param.h"
 
@@ -26,18 +25,12 @@ void irq_register(uint32_t intid, irq_handler_fn fn, void *arg)
     irq_table[intid].fn = fn;
 }
 
-void irq_dispatch(void)
+void irq_handle(uint32_t intid, int is_event)
 {
     struct cpu *c = mycpu();
-    for (;;) {
-        uint32_t id = gic_ack();
-        if (id >= GIC_INTID_SPURIOUS_MIN)
-            break;
-        if (id < IRQ_MAX && irq_table[id].fn)
-            irq_table[id].fn(irq_table[id].arg);
-        gic_eoi(id);
-        c->irqs_taken++;
-        if (id != SGI_LOCK_TURN) /* only the lock waiter cares for that one */
-            c->events++;
-    }
+    if (intid < IRQ_MAX && irq_table[intid].fn)
+        irq_table[intid].fn(irq_table[intid].arg);
+    c->irqs_taken++;
+    if (is_event)
+        c->events++;
 }

@@ -1,9 +1,12 @@
-/* irq.h: the interrupt entry every core runs, and the table of handlers.
+/* irq.h: the table of interrupt handlers, and what every interrupt taken
+ * does.
  *
  * The kernel knows no device: a driver registers the handler of its
- * interrupt (as xv6's uart does through its console), and the kernel's own
- * timer registers the same way.  The doorbell SGI needs no handler: the
- * event count every interrupt bumps is what wakes the waiting tasks. */
+ * interrupt (as xv6's uart does through its console), and the machine's
+ * timer registers the same way.  The machine's interrupt controller driver
+ * (drivers/<machine>/) takes each interrupt and hands it to irq_handle.  A
+ * doorbell needs no handler: the event count every interrupt bumps is what
+ * wakes the waiting tasks. */
 #ifndef LINKS1_KERNEL_IRQ_H
 #define LINKS1_KERNEL_IRQ_H
 
@@ -18,10 +21,10 @@ typedef void (*irq_handler_fn)(void *arg);
  * already has a handler. */
 void irq_register(uint32_t intid, irq_handler_fn fn, void *arg);
 
-/* Called by boot/vectors.S on an IRQ: acknowledges and handles every
- * pending interrupt and bumps the core's event counter once per interrupt
- * (but SGI_LOCK_TURN, which is for lock waiters only), which is what wakes
+/* One interrupt taken on this core: runs its handler, if any, and counts
+ * it; with is_event (every interrupt but a spinlock's turn, which is for
+ * the lock waiter only) bumps the core's event counter, which is what wakes
  * the waiting tasks. */
-void irq_dispatch(void);
+void irq_handle(uint32_t intid, int is_event);
 
 #endif

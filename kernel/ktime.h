@@ -1,5 +1,7 @@
-/* ktime.h: time from the ARM generic timer (CNTPCT, CNTFRQ) and the
- * per-core timer interrupt that wakes a sleeping core at a deadline. */
+/* ktime.h: time, and the per-core timer interrupt that wakes a sleeping
+ * core at a deadline.  The counter and the timer are the machine's
+ * (drivers/<machine>/timer_*.c: ktime_now, ktime_freq, ktime_arm,
+ * ktime_init); the conversions are the kernel's (kernel/ktime.c). */
 #ifndef LINKS1_KERNEL_KTIME_H
 #define LINKS1_KERNEL_KTIME_H
 
@@ -7,6 +9,8 @@
 
 /* Ticks of the system counter since reset (monotonic, same on every core). */
 uint64_t ktime_now(void);
+/* Ticks per second of that counter. */
+uint32_t ktime_freq(void);
 uint64_t ktime_ms_to_ticks(uint32_t ms);
 uint32_t ktime_ticks_to_ms(uint64_t ticks);
 /* now + ms, as a deadline for task_wait and friends. */

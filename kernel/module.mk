@@ -1,6 +1,6 @@
 # kernel/: the cooperative kernel every unit computer runs.
 FW_SRCS += kernel/cpu.c kernel/spinlock.c kernel/task.c kernel/ktime.c \
-	kernel/gic.c kernel/irq.c kernel/kmem.c kernel/klog.c kernel/fault.c \
+	kernel/irq.c kernel/kmem.c kernel/klog.c kernel/fault.c \
 	kernel/ringbuf.c kernel/fdt.c
 
 # Host unit tests of the hardware-free pieces.

@@ -11,11 +11,11 @@
 
 void panic(const char *fmt, ...) __attribute__((noreturn, format(printf, 1, 2)));
 
-/* Called by the exception vectors (boot/vectors.S). */
+/* Called by the exception vectors (boot/virt/vectors.S). */
 void fault_from_exception(uint32_t kind, const uint32_t *regs, uint32_t pc,
                           uint32_t spsr) __attribute__((noreturn));
 
-/* Stops this core for good (boot/vectors.S). */
+/* Stops this core for good (boot/virt/vectors.S). */
 void cpu_halt_forever(void) __attribute__((noreturn));
 
 #endif

@@ -12,12 +12,9 @@
  * linker script and the host tools. */
 #include "proto/units.h"
 
-/* Cores per GICv3 affinity cluster on the virt board: core k has
- * MPIDR.Aff0 = k % CORES_PER_CLUSTER, Aff1 = k / CORES_PER_CLUSTER. */
-#define CORES_PER_CLUSTER 16
-
-/* Interrupt ids the handler table covers (kernel/irq.h): the 16 SGIs,
- * 16 PPIs (the timer is 30) and the first 32 SPIs (the UART is 33). */
+/* Interrupt ids the handler table covers (kernel/irq.h); on the virt
+ * board the 16 SGIs, 16 PPIs (the timer is 30) and the first 32 SPIs (the
+ * UART is 33). */
 #define IRQ_MAX 64
 
 /* Spinlocks one core may hold at once (nesting depth). */

@@ -3,7 +3,7 @@
 
 #include "kernel/arch.h"
 #include "kernel/cpu.h"
-#include "kernel/gic.h"
+#include "kernel/machine.h"
 #include "kernel/panic.h"
 
 void spin_init(struct spinlock *l, const char *name)
@@ -36,8 +36,8 @@ static void spin_wait_turn(struct spinlock *l, uint32_t t, struct cpu *c)
     int window = c->irq_depth == 1 && c->irq_were_enabled;
     int slept = 0;
     while (__atomic_load_n(&l->serving, __ATOMIC_ACQUIRE) != t) {
-        if (!c->gic_ready)
-            continue; /* no SGI can reach this core yet: look again */
+        if (!c->wake_ready)
+            continue; /* no doorbell can reach this core yet: look again */
         slept = 1;
         c->lock_sleeps++;
         arch_wfi(); /* masked, a pending interrupt still ends it */
@@ -47,10 +47,10 @@ static void spin_wait_turn(struct spinlock *l, uint32_t t, struct cpu *c)
         }
     }
     *slot = 0;
-    /* The turn was seen: its SGI, still pending if interrupts stayed
+    /* The turn was seen: its wake-up, still pending if interrupts stayed
      * masked, has nothing more to say. */
     if (slept)
-        gic_clear_sgi(SGI_LOCK_TURN);
+        machine_lock_turn_seen();
 }
 
 void spin_lock(struct spinlock *l)
@@ -82,7 +82,7 @@ static void spin_pass_on(struct spinlock *l)
     __atomic_thread_fence(__ATOMIC_SEQ_CST);
     uint16_t sleeper = l->sleeper[t % UNITS_MAX_CORES];
     if (sleeper)
-        gic_send_sgi((uint32_t)sleeper - 1u, SGI_LOCK_TURN);
+        machine_lock_turn((uint32_t)sleeper - 1u);
 }
 
 /* Forgets l in this core's list of held locks. */

@@ -8,15 +8,15 @@
  * Waiting never spins.  The lock hands out tickets and serves them in
  * order; a core whose ticket is not yet served writes its number into the
  * ticket's wait slot and sleeps in WFI.  The releaser serves the next
- * ticket and sends that core (and only that core) SGI_LOCK_TURN.  (WFE
+ * ticket and wakes that core (and only that core) with machine_lock_turn
+ * (kernel/machine.h; an SGI on the virt board).  (WFE
  * would not do: QEMU's TCG runs WFE as a no-op, so a WFE loop is a busy
  * loop, and WFI does not wake on SEV.)  While it
  * sleeps for its turn a core takes its interrupts if it had them enabled
  * before asking for the lock and holds no other lock; so interrupt handlers
  * must take no lock (none does: they only touch their own device's state).
- * Until its GIC CPU interface is up (gic_cpu_init) a core cannot be woken,
- * so it waits by looking again instead; a releaser needs only the system
- * register interface, which gic_cpu_init turns on first. */
+ * Until the machine can wake it (cpu->wake_ready) a core waits by looking
+ * again instead. */
 #ifndef LINKS1_KERNEL_SPINLOCK_H
 #define LINKS1_KERNEL_SPINLOCK_H
 

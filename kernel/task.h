@@ -2,7 +2,7 @@
  *
  * Each core runs a few tasks; a task runs until it yields or waits.  A
  * waiting task sleeps until an "event" happens on its core: any interrupt
- * the core takes (a doorbell SGI from another core, the UART, the timer)
+ * the core takes (a doorbell from another core, the UART, the timer)
  * and any task_signal_local() bumps the core's event counter.  To wait for
  * a condition without losing a wake-up:
  *
@@ -64,9 +64,9 @@ void task_schedule_forever(void) __attribute__((noreturn));
 /* Name of the running task, or "boot". */
 const char *task_current_name(void);
 
-/* boot/vectors.S: saves the running context in from, resumes to. */
+/* boot/virt/vectors.S: saves the running context in from, resumes to. */
 void task_switch_context(struct task_ctx *from, struct task_ctx *to);
-/* boot/vectors.S: first code of a new task; calls fn(arg), then
+/* boot/virt/vectors.S: first code of a new task; calls fn(arg), then
  * task_exit_current(), which marks the task done and never returns. */
 void task_entry_trampoline(void);
 void task_exit_current(void) __attribute__((noreturn));

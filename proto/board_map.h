@@ -1,5 +1,5 @@
 /* board_map.h: addresses of the board that the host tools must know too.
- * Plain #defines only: boot/start.S includes this through kernel/memlayout.h.
+ * Plain #defines only: boot/virt/start.S includes this through drivers/virt/virt_map.h.
  */
 #ifndef LINKS1_PROTO_BOARD_MAP_H
 #define LINKS1_PROTO_BOARD_MAP_H
@@ -19,7 +19,7 @@
  * an IMSU block (host-tools/scene/scene_board.c) before any upload.  The
  * linker script (linker/virt-memory.ld) carves them from these values. */
 #define BOARD_RAM_MB 1024 /* -m: the whole 1 GiB Normal-memory block of the
-                             MMU map (kernel/memlayout.h) */
+                             MMU map (drivers/virt/virt_map.h) */
 /* Each of the two DM<->RC blocks and the RC->NC broadcast block: the most a
  * scene's blob (render/blob.h: loaded scene + prepared frame + scratch)
  * may take.  QEMU backs only the pages a scene writes, so a small scene

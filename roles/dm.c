@@ -21,8 +21,7 @@
 #include "kernel/kmem.h"
 #include "kernel/klog.h"
 #include "kernel/ktime.h"
-#include "kernel/memlayout.h"
-#include "kernel/psci.h"
+#include "kernel/machine.h"
 #include "kernel/ringbuf.h"
 #include "kernel/task.h"
 #include "proto/crc32.h"
@@ -252,8 +251,8 @@ static void dm_cmd_shutdown(uint16_t cmd)
 {
     hostlink_result(cmd, LINK_OK, NULL, 0);
     uart_tx_drain();
-    psci_call(PSCI_SYSTEM_OFF, 0, 0, 0);
-    hostlink_error(cmd, LINK_ERR_PROTOCOL, "PSCI SYSTEM_OFF returned");
+    machine_power_off();
+    hostlink_error(cmd, LINK_ERR_PROTOCOL, "the machine did not power off");
 }
 
 static void dm_command(void)

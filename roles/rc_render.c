@@ -6,7 +6,7 @@
 
 #include "drivers/framemem/dc.h"
 #include "drivers/framemem/fm.h"
-#include "drivers/framemem/ramfb.h"
+#include "drivers/framemem/fm_view.h"
 #include "drivers/imsu/imsu.h"
 #include "drivers/serial/line.h"
 #include "kernel/cpu.h"
@@ -36,8 +36,8 @@ static struct {
     uint32_t given_up;   /* DC positions a failed NC claimed, never filled */
     size_t mark;         /* kmem mark before the frame's memory */
     int marked;
-    int ramfb_absent;    /* no -device ramfb: not asked again */
-    uint32_t shown_w, shown_h; /* the size ramfb was last told (0: never) */
+    int view_absent;    /* the machine has no display: not asked again */
+    uint32_t shown_w, shown_h; /* the size the view was last told (0: never) */
 } rc_frame;
 
 const struct fm *rc_render_fm(void)
@@ -179,13 +179,14 @@ static int rc_frame_memory(struct rc_run *run, uint32_t w, uint32_t h)
         rc_fail(run, LINK_ERR_CHECK, "frame memory %ux%u refused", w, h);
         return -1;
     }
-    /* The storage starts at the same mark every frame: ramfb needs telling
+    /* The storage starts at the same mark every frame: the view needs telling
      * again only when the size changes. */
-    if (!rc_frame.ramfb_absent && (w != rc_frame.shown_w || h != rc_frame.shown_h)) {
-        r = ramfb_show(&rc_frame.fm);
-        rc_frame.ramfb_absent = r == FWCFG_ERR_NOT_FOUND;
-        if (r != FWCFG_OK && r != FWCFG_ERR_NOT_FOUND)
-            klog("render: live view: %s", fwcfg_strerror(r));
+    if (!rc_frame.view_absent && (w != rc_frame.shown_w || h != rc_frame.shown_h)) {
+        const char *why = "";
+        r = fm_view_show(&rc_frame.fm, &why);
+        rc_frame.view_absent = r == FM_VIEW_ABSENT;
+        if (r == FM_VIEW_FAILED)
+            klog("render: live view: %s", why);
         rc_frame.shown_w = w;
         rc_frame.shown_h = h;
     }

@@ -14,7 +14,7 @@
 static void unit_report_in(void)
 {
     struct cpu *c = mycpu();
-    struct link_hello h = {(uint16_t)c->core, c->role, LINKS1_ARITH, c->mpidr,
+    struct link_hello h = {(uint16_t)c->core, c->role, LINKS1_ARITH, c->hwid,
                            (uint16_t)board_ncores, 0};
     uint8_t p[LINK_HELLO_SIZE];
     link_hello_put(p, &h);

@@ -15,7 +15,7 @@ test_framemem_SRCS := tests/host/test_framemem.c drivers/framemem/fm.c \
 	drivers/framemem/dc_ring.c drivers/framemem/dc_selftest_pattern.c
 test_framemem_ARITH := double
 test_framemem_LIBS := -lpthread
-test_fwcfg_SRCS := tests/host/test_fwcfg.c drivers/framemem/fwcfg_format.c
+test_fwcfg_SRCS := tests/host/test_fwcfg.c drivers/virt/fwcfg_format.c
 test_fwcfg_ARITH := double
 
 # The rendering pipeline on the board (links1 render): images equal to the

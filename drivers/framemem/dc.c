@@ -2,7 +2,7 @@
 #include "drivers/framemem/dc.h"
 
 #include "kernel/cpu.h"
-#include "kernel/gic.h"
+#include "kernel/machine.h"
 #include "kernel/ktime.h"
 #include "kernel/panic.h"
 #include "kernel/task.h"
@@ -36,7 +36,7 @@ void dc_push(struct dc_run *run)
         int rc = dc_ring_try_push(&dc_ring, run, &wake);
         if (rc == DC_OK) {
             if (wake)
-                gic_send_sgi(dc_consumer, SGI_DOORBELL);
+                machine_doorbell(dc_consumer);
             return;
         }
         if (rc != DC_ERR_FULL)
@@ -68,7 +68,7 @@ int dc_push_span(uint32_t x, uint32_t y, const uint8_t *rgb, uint32_t n)
 static void dc_wake_producer(uint32_t core, void *ctx)
 {
     (void)ctx;
-    gic_send_sgi(core, SGI_DOORBELL);
+    machine_doorbell(core);
 }
 
 uint32_t dc_collect(struct fm *fm, uint32_t max_runs)

@@ -1,5 +1,4 @@
-# drivers/framemem/: the data collector (DC) FIFO, the frame memory (FM)
-# and its live view through fw_cfg + ramfb.
+# drivers/framemem/: the data collector (DC) FIFO and the frame memory (FM);
+# its live view is the machine's (fm_view.h).
 FW_SRCS += drivers/framemem/fm.c drivers/framemem/dc_ring.c drivers/framemem/dc.c \
-	drivers/framemem/fwcfg_format.c drivers/framemem/fwcfg.c drivers/framemem/ramfb.c \
 	drivers/framemem/dc_selftest.c drivers/framemem/dc_selftest_pattern.c

@@ -3,7 +3,7 @@
 
 #include "kernel/arch.h"
 #include "kernel/cpu.h"
-#include "kernel/gic.h"
+#include "kernel/machine.h"
 #include "kernel/ktime.h"
 #include "kernel/memlayout.h"
 #include "kernel/panic.h"
@@ -114,7 +114,7 @@ int line_try_send(uint32_t peer, struct line_msg *m)
     arch_dmb();
     if (out->reader_waiting) {
         out->reader_waiting = 0;
-        gic_send_sgi(peer, SGI_DOORBELL);
+        machine_doorbell(peer);
     }
     return LINE_OK;
 }
@@ -139,7 +139,7 @@ int line_try_recv(uint32_t peer, struct line_msg *m)
     arch_dmb(); /* our tail is visible before we read the sender's flag */
     if (in->writer_waiting) {
         in->writer_waiting = 0;
-        gic_send_sgi(peer, SGI_DOORBELL);
+        machine_doorbell(peer);
     }
     if (st != LINEMSG_OK) {
         in->errors++;

@@ -4,7 +4,7 @@
 #include <string.h>
 
 #include "drivers/framemem/fm_param.h"
-#include "drivers/framemem/fwcfg_format.h"
+#include "drivers/virt/fwcfg_format.h"
 #include "tests/check.h"
 
 static void test_dma_record_is_big_endian(void)

@@ -13,8 +13,8 @@
  *
  * No hardware access: the host tests build this file; fwcfg.c does the
  * device side. */
-#ifndef LINKS1_DRIVERS_FRAMEMEM_FWCFG_FORMAT_H
-#define LINKS1_DRIVERS_FRAMEMEM_FWCFG_FORMAT_H
+#ifndef LINKS1_DRIVERS_VIRT_FWCFG_FORMAT_H
+#define LINKS1_DRIVERS_VIRT_FWCFG_FORMAT_H
 
 #include <stddef.h>
 #include <stdint.h>

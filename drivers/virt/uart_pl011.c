@@ -1,12 +1,13 @@
 /* uart.c: PL011 driver (see uart.h). */
 #include "drivers/serial/uart.h"
 
+#include "drivers/virt/gic.h"
+#include "drivers/virt/virt_map.h"
+
 #include <stddef.h>
 
 #include "kernel/arch.h"
-#include "kernel/gic.h"
 #include "kernel/irq.h"
-#include "kernel/memlayout.h"
 #include "kernel/param.h"
 #include "kernel/ringbuf.h"
 #include "kernel/spinlock.h"

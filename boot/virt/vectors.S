@@ -82,7 +82,7 @@ vec_irq:
     vpush {d0-d7}
     vpush {d16-d31}
 #endif
-    blx irq_dispatch
+    blx gic_irq_dispatch
 #ifdef __ARM_PCS_VFP
     vpop {d16-d31}
     vpop {d0-d7}

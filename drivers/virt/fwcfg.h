@@ -10,12 +10,12 @@
  *
  * Not thread-safe: one core configures the device (the one that owns the
  * frame memory), before or between frames. */
-#ifndef LINKS1_DRIVERS_FRAMEMEM_FWCFG_H
-#define LINKS1_DRIVERS_FRAMEMEM_FWCFG_H
+#ifndef LINKS1_DRIVERS_VIRT_FWCFG_H
+#define LINKS1_DRIVERS_VIRT_FWCFG_H
 
 #include <stdint.h>
 
-#include "drivers/framemem/fwcfg_format.h"
+#include "drivers/virt/fwcfg_format.h"
 
 /* The virt board's fw_cfg (QEMU hw/arm/virt.c VIRT_FW_CFG; also in the
  * device tree QEMU passes, node fw-cfg@9020000). */

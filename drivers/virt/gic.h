@@ -2,8 +2,8 @@
  * (shared), one redistributor per core, and the CPU interface through
  * system registers.  All interrupts are Group 1 (IRQ); the board's GIC has
  * no security extensions (virt without secure=on), so one group does. */
-#ifndef LINKS1_KERNEL_GIC_H
-#define LINKS1_KERNEL_GIC_H
+#ifndef LINKS1_DRIVERS_VIRT_GIC_H
+#define LINKS1_DRIVERS_VIRT_GIC_H
 
 #include <stdint.h>
 
@@ -27,7 +27,8 @@ void gic_route_spi(uint32_t intid, uint32_t core);
 void gic_send_sgi(uint32_t core, uint32_t intid);
 /* Drops SGI intid if it is pending on this core (it was seen otherwise). */
 void gic_clear_sgi(uint32_t intid);
-uint32_t gic_ack(void);
-void gic_eoi(uint32_t intid);
+/* The IRQ entry of every core (boot/virt/vectors.S): acknowledges and
+ * handles (kernel/irq.h) every pending interrupt. */
+void gic_irq_dispatch(void);
 
 #endif

@@ -1,10 +1,18 @@
-/* gic.c: GICv3 distributor, redistributors and CPU interface. */
-#include "kernel/gic.h"
+/* gic.c: GICv3 distributor, redistributors and CPU interface; the virt
+ * board's doorbells (kernel/machine.h) are its SGIs. */
+#include "drivers/virt/gic.h"
 
+#include "drivers/virt/virt_cpu.h"
+#include "drivers/virt/virt_map.h"
+#include "drivers/virt/virt_sysreg.h"
 #include "kernel/arch.h"
 #include "kernel/cpu.h"
-#include "kernel/memlayout.h"
+#include "kernel/irq.h"
+#include "kernel/machine.h"
 #include "kernel/panic.h"
+
+/* Each core's redistributor (virtual address), found by gic_cpu_init. */
+static uintptr_t gic_redist[UNITS_MAX_CORES];
 
 /* Distributor registers (offsets from GICD_BASE). */
 #define GICD_CTLR 0x0000u
@@ -78,14 +86,14 @@ void gic_cpu_init(void)
     if (!(arch_read_icc_sre() & ICC_SRE_SRE))
         panic("gic: core %u cannot use the GICv3 system register interface",
               (unsigned)c->core);
-    uint32_t aff = c->mpidr & 0x00FFFFFFu;
+    uint32_t aff = c->hwid & 0x00FFFFFFu;
     uintptr_t rd = gic_find_redist(GICR_LOW_BASE, GICR_LOW_SIZE, aff);
     if (!rd)
         rd = gic_find_redist(GICR_HIGH_VIRT, GICR_HIGH_SIZE, aff);
     if (!rd)
         panic("gic: no redistributor for core %u (mpidr 0x%x) in the low region "
-              "or the high window", (unsigned)c->core, (unsigned)c->mpidr);
-    c->gicr = rd;
+              "or the high window", (unsigned)c->core, (unsigned)c->hwid);
+    gic_redist[c->core] = rd;
 
     /* Wake the redistributor: clear ProcessorSleep, wait for the children. */
     mmio_write32(rd + GICR_WAKER,
@@ -104,12 +112,12 @@ void gic_cpu_init(void)
     arch_write_icc_pmr(GIC_PMR_ALLOW_ALL);
     arch_write_icc_bpr1(0);
     arch_write_icc_igrpen1(1);
-    c->gic_ready = 1; /* a doorbell now wakes this core from WFI */
+    c->wake_ready = 1; /* a doorbell now wakes this core from WFI */
 }
 
 void gic_route_spi(uint32_t intid, uint32_t core)
 {
-    uint32_t mpidr = cpu_mpidr_of_core(core);
+    uint32_t mpidr = virt_mpidr_of_core(core);
     uint32_t reg = intid / 32, bit = 1u << (intid % 32);
     mmio_write32(GICD_BASE + GICD_IGROUPR(reg),
                  mmio_read32(GICD_BASE + GICD_IGROUPR(reg)) | bit);
@@ -128,7 +136,7 @@ void gic_route_spi(uint32_t intid, uint32_t core)
 
 void gic_send_sgi(uint32_t core, uint32_t intid)
 {
-    uint32_t mpidr = cpu_mpidr_of_core(core);
+    uint32_t mpidr = virt_mpidr_of_core(core);
     uint64_t v = ((uint64_t)(1u << (mpidr & 0xFu)) << SGI1R_TARGETS_SHIFT) |
                  ((uint64_t)((mpidr >> 8) & 0xFFu) << SGI1R_AFF1_SHIFT) |
                  ((uint64_t)(intid & 0xFu) << SGI1R_INTID_SHIFT);
@@ -140,15 +148,33 @@ void gic_send_sgi(uint32_t core, uint32_t intid)
 
 void gic_clear_sgi(uint32_t intid)
 {
-    mmio_write32(mycpu()->gicr + GICR_ICPENDR0, 1u << intid);
+    mmio_write32(gic_redist[mycpu()->core] + GICR_ICPENDR0, 1u << intid);
 }
 
-uint32_t gic_ack(void)
+/* The IRQ entry (boot/virt/vectors.S): acknowledges and handles every
+ * pending interrupt. */
+void gic_irq_dispatch(void)
 {
-    return arch_read_icc_iar1() & 0xFFFFFFu;
+    for (;;) {
+        uint32_t id = arch_read_icc_iar1() & 0xFFFFFFu;
+        if (id >= GIC_INTID_SPURIOUS_MIN)
+            break;
+        irq_handle(id, id != SGI_LOCK_TURN);
+        arch_write_icc_eoir1(id);
+    }
 }
 
-void gic_eoi(uint32_t intid)
+void machine_doorbell(uint32_t core)
 {
-    arch_write_icc_eoir1(intid);
+    gic_send_sgi(core, SGI_DOORBELL);
+}
+
+void machine_lock_turn(uint32_t core)
+{
+    gic_send_sgi(core, SGI_LOCK_TURN);
+}
+
+void machine_lock_turn_seen(void)
+{
+    gic_clear_sgi(SGI_LOCK_TURN);
 }

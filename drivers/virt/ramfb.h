@@ -6,11 +6,11 @@
  * words), size and stride, every refresh of the display, and every monitor
  * `screendump`, shows the frame memory as it is at that moment.  Nothing is
  * copied: pixels appear as the data collector writes them. */
-#ifndef LINKS1_DRIVERS_FRAMEMEM_RAMFB_H
-#define LINKS1_DRIVERS_FRAMEMEM_RAMFB_H
+#ifndef LINKS1_DRIVERS_VIRT_RAMFB_H
+#define LINKS1_DRIVERS_VIRT_RAMFB_H
 
 #include "drivers/framemem/fm.h"
-#include "drivers/framemem/fwcfg_format.h" /* its status codes */
+#include "drivers/virt/fwcfg_format.h" /* its status codes */
 
 /* Points ramfb at fm.  FWCFG_OK; FWCFG_ERR_NOT_FOUND when QEMU runs without
  * -device ramfb (not an error for the caller: there is just no view);

@@ -1,5 +1,5 @@
 /* fwcfg.c: the fw_cfg device side (see fwcfg.h). */
-#include "drivers/framemem/fwcfg.h"
+#include "drivers/virt/fwcfg.h"
 
 #include <string.h>
 

@@ -1,5 +1,5 @@
 /* fwcfg_format.c: fw_cfg and ramfb byte formats (see fwcfg_format.h). */
-#include "drivers/framemem/fwcfg_format.h"
+#include "drivers/virt/fwcfg_format.h"
 
 #include <string.h>
 

@@ -1,4 +1,4 @@
-/* boot.c: the first C code.  Core 0 brings up the shared pieces, counts
+/* boot.c: the virt board's first C code.  Core 0 brings up the shared pieces, counts
  * the cores, and wakes the others with PSCI CPU_ON; every core then sets up
  * its own state and starts its unit computer's program. */
 #include <stdint.h>
@@ -7,24 +7,27 @@
 #include "drivers/serial/hostlink_tx.h"
 #include "drivers/serial/line.h"
 #include "drivers/serial/uart.h"
+#include "boot/virt/psci.h"
+#include "drivers/virt/gic.h"
+#include "drivers/virt/virt_cpu.h"
+#include "drivers/virt/virt_map.h"
+#include "drivers/virt/virt_sysreg.h"
 #include "kernel/arch.h"
 #include "kernel/cpu.h"
 #include "kernel/fdt.h"
-#include "kernel/gic.h"
 #include "kernel/kmem.h"
 #include "kernel/klog.h"
 #include "kernel/ktime.h"
-#include "kernel/memlayout.h"
+#include "kernel/machine.h"
 #include "kernel/panic.h"
 #include "kernel/param.h"
-#include "kernel/psci.h"
 #include "kernel/task.h"
 #include "roles/unit.h"
 
 void boot_main(void) __attribute__((noreturn));
 void boot_secondary(void) __attribute__((noreturn));
 
-/* boot/start.S: where the other cores begin. */
+/* boot/virt/start.S: where the other cores begin. */
 void secondary_entry(void);
 
 /* The linker script carved memory up to __nc_pool_end: refuse to run on a
@@ -54,7 +57,7 @@ static uint32_t boot_count_cores(void)
 {
     uint32_t n = 1;
     while (n < UNITS_MAX_CORES &&
-           psci_call(PSCI_AFFINITY_INFO, cpu_mpidr_of_core(n), 0, 0) >= 0)
+           psci_call(PSCI_AFFINITY_INFO, virt_mpidr_of_core(n), 0, 0) >= 0)
         n++;
     return n;
 }
@@ -71,11 +74,11 @@ static void boot_start_core(uint32_t k)
     const struct cpu *c = cpu_of(k);
     uint64_t deadline = ktime_deadline_ms(BOOT_CORE_WAIT_MS);
     uint32_t mark = task_event_mark();
-    int r = psci_call(PSCI_CPU_ON, cpu_mpidr_of_core(k), (uint32_t)(uintptr_t)secondary_entry,
+    int r = psci_call(PSCI_CPU_ON, virt_mpidr_of_core(k), (uint32_t)(uintptr_t)secondary_entry,
                       k);
     if (r != PSCI_RET_SUCCESS) {
         klog("PSCI CPU_ON of core %u (mpidr 0x%x) failed: %d", (unsigned)k,
-             (unsigned)cpu_mpidr_of_core(k), r);
+             (unsigned)virt_mpidr_of_core(k), r);
         return;
     }
     for (;;) {
@@ -118,10 +121,15 @@ void boot_main(void)
 
 void boot_secondary(void)
 {
-    uint32_t core = cpu_core_from_mpidr(arch_read_mpidr());
+    uint32_t core = virt_core_from_mpidr(arch_read_mpidr());
     cpu_init(core);
     gic_cpu_init();                // redistributor and CPU interface: doorbells
                                    // wake this core from here (spinlock.h)
     kmem_init(core, board_ncores); // this unit computer's private memory
     unit_start();
+}
+
+void machine_power_off(void)
+{
+    psci_call(PSCI_SYSTEM_OFF, 0, 0, 0);
 }

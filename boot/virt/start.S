@@ -5,7 +5,7 @@
  * (mode stacks, vectors, MMU and caches, VFP) before any C code, so C always
  * runs with the MMU on: Normal memory for RAM (unaligned accesses and
  * exclusives work) and Device memory for the devices. */
-#include "kernel/memlayout.h"
+#include "drivers/virt/virt_map.h"
 
     .syntax unified
     .arch armv7-a
@@ -18,7 +18,7 @@
 #define MODE_UND 0x1b
 
 /* MAIR0: attribute 0 Normal write-back read/write-allocate (inner and
- * outer), attribute 1 Device-nGnRE.  boot/mmu_table.c uses these indices. */
+ * outer), attribute 1 Device-nGnRE.  boot/virt/mmu_table.c uses these indices. */
 #define MAIR0_VALUE 0x000004FF
 /* TTBCR: EAE (long descriptors), T0SZ=0 (TTBR0 covers 4 GiB), table walks
  * inner shareable and write-back cacheable, TTBR1 walks disabled. */

@@ -1,14 +1,14 @@
 /* mmu_table.c: the first-level LPAE translation table every core uses
- * (see kernel/memlayout.h for why).  Four 1 GiB block entries cover the
+ * (see drivers/virt/virt_map.h for why).  Four 1 GiB block entries cover the
  * 32-bit address space; built at compile time, so the MMU can be turned on
  * before any C code runs. */
 #include <stdint.h>
 
-#include "kernel/memlayout.h"
+#include "drivers/virt/virt_map.h"
 
 /* Long-descriptor block entry fields. */
 #define PTE_BLOCK 0x1ull               /* bits[1:0] = 01: block */
-#define PTE_ATTR(i) ((uint64_t)(i) << 2) /* MAIR index (boot/start.S) */
+#define PTE_ATTR(i) ((uint64_t)(i) << 2) /* MAIR index (boot/virt/start.S) */
 #define PTE_ATTR_NORMAL PTE_ATTR(0)
 #define PTE_ATTR_DEVICE PTE_ATTR(1)
 #define PTE_AP_RW_PL1 (0ull << 6)
