@@ -1,6 +1,6 @@
 # drivers/serial/: host-link transmit (over the machine's UART, uart.h) and
 # the inter-unit lines.
-FW_SRCS += drivers/serial/hostlink_tx.c \
+FW_SRCS += drivers/serial/uart.c drivers/serial/hostlink_tx.c \
 	drivers/serial/line.c drivers/serial/linemsg.c
 
 HOST_TESTS += test_linemsg

@@ -1,8 +1,9 @@
-/* uart.h: the PL011 UART that carries the host link.
+/* uart.h: the UART that carries the host link (its registers are the
+ * machine's: uart_hw.h).
  *
  * Receive is interrupt driven: the handler (on core 0, where the UART's
- * interrupt is routed) moves bytes from the 16-byte FIFO into a ring of
- * UART_RX_RING_SIZE bytes.  When the ring is full the handler masks the
+ * interrupt is routed) moves bytes from the device (the PL011's 16-byte
+ * FIFO) into a ring of UART_RX_RING_SIZE bytes.  When the ring is full the handler masks the
  * receive interrupt instead of dropping bytes: the FIFO then fills, QEMU
  * stops taking bytes from the chardev and the host's writes wait.  Taking
  * bytes out of the ring unmasks it again.  Transmit is polled; callers
@@ -14,10 +15,11 @@
 #include <stdint.h>
 
 /* Core 0, once, first thing: line settings, FIFOs, transmit and receive
- * on.  Needs no GIC, so the host link can carry the earliest panics. */
+ * on.  Needs no interrupt controller, so the host link can carry the
+ * earliest panics. */
 void uart_init(void);
-/* Core 0, once the GIC is up: registers the receive interrupt's handler
- * (kernel/irq.h) and routes the interrupt to core 0. */
+/* Core 0, once interrupts are set up: registers the receive interrupt's
+ * handler (kernel/irq.h) and routes the interrupt to core 0. */
 void uart_rx_start(void);
 /* Bulk mode for long host uploads: with on = 1 the receive interrupt stays
  * off and uart_rx_read() moves what the FIFO holds itself; the reader
@@ -32,8 +34,6 @@ uint32_t uart_rx_read(uint8_t *out, uint32_t max);
 uint32_t uart_rx_pending(void);
 /* Times the ring filled and receive was paused (statistics). */
 uint32_t uart_rx_pauses(void);
-/* Sends one byte (waits while the transmit FIFO is full). */
-void uart_putc(uint8_t c);
 /* Sends n bytes, filling the transmit FIFO a burst at a time. */
 void uart_write(const uint8_t *p, size_t n);
 /* Waits until everything written has left the transmitter. */
