@@ -42,13 +42,28 @@ ARITH_DEF_fixed  := -DLINKS1_NUM_FIXED
 HOST_EXTRA_ARITHS :=
 
 # ------------------------------------------------------------- firmware side
+# Machines: the virt board (Cortex-A15, the default) and the an521 boards
+# (dual Cortex-M33, one QEMU process per board).  What differs between them
+# lives in boot/<machine>/, drivers/<machine>/ and linker/<machine>-memory.ld.
 ARM_CC := arm-none-eabi-gcc
-ARM_CPU := -mcpu=cortex-a15 -mthumb
-FW_FLOAT_ABI_float := -mfpu=vfpv4 -mfloat-abi=hard
-FW_FLOAT_ABI_soft  := -mfloat-abi=soft
-FW_FLOAT_ABI_fixed := -mfloat-abi=soft
+FW_MACHINES := virt an521
+ARM_CPU_virt := -mcpu=cortex-a15 -mthumb
+FW_FLOAT_ABI_virt_float := -mfpu=vfpv4 -mfloat-abi=hard
+FW_FLOAT_ABI_virt_soft  := -mfloat-abi=soft
+FW_FLOAT_ABI_virt_fixed := -mfloat-abi=soft
 # double: the Cortex-A15's VFPv4 has double precision (32 d-registers)
-FW_FLOAT_ABI_double := -mfpu=vfpv4 -mfloat-abi=hard
+FW_FLOAT_ABI_virt_double := -mfpu=vfpv4 -mfloat-abi=hard
+# The Cortex-M33's FPU is single precision (FPv5-SP); soft and fixed build
+# for an M33 without one (cortex-m33+nofp: picolibc's v8-m.main/nofp).
+ARM_CPU_an521 := -mthumb
+FW_FLOAT_ABI_an521_float := -mcpu=cortex-m33 -mfpu=fpv5-sp-d16 -mfloat-abi=hard
+FW_FLOAT_ABI_an521_soft  := -mcpu=cortex-m33+nofp+nodsp -mfloat-abi=soft
+FW_FLOAT_ABI_an521_fixed := -mcpu=cortex-m33+nofp+nodsp -mfloat-abi=soft
+FW_VARIANTS_virt := float soft fixed double
+FW_VARIANTS_an521 := float soft fixed
+FW_VARIANTS := $(FW_VARIANTS_virt)
+FW_MACHINE_DEF_virt := -DLINKS1_MACHINE_VIRT
+FW_MACHINE_DEF_an521 := -DLINKS1_MACHINE_AN521
 FW_ARITH_float := float
 FW_ARITH_soft  := float
 FW_ARITH_fixed := fixed
@@ -58,7 +73,6 @@ FW_CODE_float := ARITH_FLOAT
 FW_CODE_soft  := ARITH_SOFT
 FW_CODE_fixed := ARITH_FIXED
 FW_CODE_double := ARITH_DOUBLE
-FW_VARIANTS := float soft fixed double
 
 ifeq ($(LIBC),picolibc)
 LIBC_SPECS := --specs=picolibc.specs
@@ -68,14 +82,13 @@ else
 $(error LIBC must be picolibc or newlib, not '$(LIBC)')
 endif
 
-FW_CFLAGS := -std=gnu11 -O2 -g $(HOST_WARN) -I. -MMD -MP $(ARM_CPU) \
+FW_CFLAGS := -std=gnu11 -O2 -g $(HOST_WARN) -I. -MMD -MP \
 	-ffreestanding -ffunction-sections -fdata-sections -ffp-contract=off \
 	-fno-common -DLINKS1_FIRMWARE $(LIBC_SPECS)
 # FW_EXTRA_CFLAGS: constants overridden for a measurement (pareto.sh builds
 # fixed-point formats into a build directory of its own with B=DIR).
 FW_CFLAGS += $(FW_EXTRA_CFLAGS)
-FW_LDFLAGS := -nostartfiles -Wl,--gc-sections -Wl,--no-warn-rwx-segments \
-	-T$(B)/linker/virt-memory.ld -Tlinker/sections.ld
+FW_LDFLAGS := -nostartfiles -Wl,--gc-sections -Wl,--no-warn-rwx-segments
 # -lm: newlib keeps sqrtf and friends there (picolibc has them in libc too).
 FW_LIBS := -lm -lc -lgcc
 
@@ -96,6 +109,7 @@ FW_LIBS := -lm -lc -lgcc
 #              build at num.h's #error instead of being shared wrongly
 FW_SRCS :=
 FW_SRCS_virt :=
+FW_SRCS_an521 :=
 SHARED_SRCS :=
 ARITH_FREE_SRCS :=
 HOST_TOOLS :=
@@ -108,42 +122,52 @@ FUZZERS :=
 include $(wildcard */module.mk */*/module.mk)
 
 # ------------------------------------------------------------ firmware rules
-# $(1) = variant (float|soft|fixed|double)
+# $(1) = machine (virt|an521), $(2) = variant (float|soft|fixed|double).
+# The virt board's firmware is build/links1-VARIANT.elf (objects in
+# build/fw-VARIANT-LIBC/), an an521 board's build/an521/links1-VARIANT.elf
+# (objects in build/fw-an521-VARIANT-LIBC/).
+fw_dir = $(B)/fw-$(if $(filter virt,$(1)),,$(1)-)$(2)-$(LIBC)
+fw_elf = $(FWB)$(if $(filter virt,$(1)),,/$(1))/links1-$(2).elf
 define fw_variant
-FW_OBJS_$(1) := $$(patsubst %,$(B)/fw-$(1)-$(LIBC)/%.o,$$(FW_SRCS) $$(FW_SRCS_virt) $$(SHARED_SRCS))
-FW_ELF_$(1) := $(FWB)/links1-$(1).elf
+FW_OBJS_$(1)_$(2) := $$(patsubst %,$(call fw_dir,$(1),$(2))/%.o,$$(FW_SRCS) $$(FW_SRCS_$(1)) $$(SHARED_SRCS))
+FW_ELF_$(1)_$(2) := $(call fw_elf,$(1),$(2))
+FW_FLAGS_$(1)_$(2) := $(FW_CFLAGS) $(ARM_CPU_$(1)) $(FW_FLOAT_ABI_$(1)_$(2)) $(FW_MACHINE_DEF_$(1)) \
+	$(ARITH_DEF_$(FW_ARITH_$(2)))
 
-$(B)/fw-$(1)-$(LIBC)/%.c.o: %.c
+$(call fw_dir,$(1),$(2))/%.c.o: %.c
 	$$(call say,CC,$$@)
 	$(Q)mkdir -p $$(@D)
-	$(Q)$(ARM_CC) $(FW_CFLAGS) $(FW_FLOAT_ABI_$(1)) $(ARITH_DEF_$(FW_ARITH_$(1))) \
-		-DLINKS1_ARITH=$(FW_CODE_$(1)) -c $$< -o $$@
+	$(Q)$(ARM_CC) $$(FW_FLAGS_$(1)_$(2)) -DLINKS1_ARITH=$(FW_CODE_$(2)) -c $$< -o $$@
 
-$(B)/fw-$(1)-$(LIBC)/%.S.o: %.S
+$(call fw_dir,$(1),$(2))/%.S.o: %.S
 	$$(call say,AS,$$@)
 	$(Q)mkdir -p $$(@D)
-	$(Q)$(ARM_CC) $(FW_CFLAGS) $(FW_FLOAT_ABI_$(1)) $(ARITH_DEF_$(FW_ARITH_$(1))) -c $$< -o $$@
+	$(Q)$(ARM_CC) $$(FW_FLAGS_$(1)_$(2)) -c $$< -o $$@
 
-$$(FW_ELF_$(1)): $$(FW_OBJS_$(1)) linker/sections.ld $(B)/linker/virt-memory.ld
+$$(FW_ELF_$(1)_$(2)): $$(FW_OBJS_$(1)_$(2)) linker/sections.ld $(B)/linker/$(1)-memory.ld
 	$$(call say,LD,$$@)
 	$(Q)mkdir -p $$(@D)
-	$(Q)$(ARM_CC) $(FW_CFLAGS) $(FW_FLOAT_ABI_$(1)) $(FW_LDFLAGS) \
-		$$(FW_OBJS_$(1)) $(FW_LIBS) -Wl,-Map=$$@.map -o $$@
+	$(Q)$(ARM_CC) $$(FW_FLAGS_$(1)_$(2)) $(FW_LDFLAGS) -T$(B)/linker/$(1)-memory.ld \
+		-Tlinker/sections.ld $$(FW_OBJS_$(1)_$(2)) $(FW_LIBS) -Wl,-Map=$$@.map -o $$@
 
--include $$(FW_OBJS_$(1):.o=.d)
-FIRMWARE += $$(FW_ELF_$(1))
+-include $$(FW_OBJS_$(1)_$(2):.o=.d)
+FIRMWARE_$(1) += $$(FW_ELF_$(1)_$(2))
 endef
 
-# The memory map takes the sizes C also needs from kernel/param.h.
-$(B)/linker/virt-memory.ld: linker/virt-memory.ld kernel/param.h proto/units.h proto/board_map.h
+# Each memory map takes the sizes C also needs from kernel/param.h and
+# proto/board_map.h.
+$(B)/linker/%-memory.ld: linker/%-memory.ld kernel/param.h proto/units.h proto/board_map.h \
+		proto/board_map_an521.h
 	$(call say,CPP,$@)
 	$(Q)mkdir -p $(@D)
-	$(Q)$(ARM_CC) -E -P -x c -I. $< -o $@
+	$(Q)$(ARM_CC) -E -P -x c -I. $(FW_MACHINE_DEF_$*) $< -o $@
 
-FIRMWARE :=
+FIRMWARE_virt :=
+FIRMWARE_an521 :=
 ifneq ($(strip $(FW_SRCS)),)
-$(foreach v,$(FW_VARIANTS),$(eval $(call fw_variant,$(v))))
+$(foreach m,$(FW_MACHINES),$(foreach v,$(FW_VARIANTS_$(m)),$(eval $(call fw_variant,$(m),$(v)))))
 endif
+FIRMWARE := $(FIRMWARE_virt)
 
 # --------------------------------------------------------------- host rules
 # Shared and host sources compile once per (arithmetic, plain|san) into

@@ -1,81 +1,14 @@
-/* arch.h: the ARMv7-A (AArch32, cortex-a15) instructions and coprocessor
- * registers the kernel uses, one inline function each.  The registers of
- * the machine's own timer and interrupt controller are its drivers'
- * (drivers/virt/virt_sysreg.h). */
+/* arch.h: the instructions and core registers the kernel uses, one inline
+ * function each, for the CPU it is built for: the virt board's Cortex-A15
+ * (ARMv7-A, kernel/arch_v7a.h) or the an521 boards' Cortex-M33 (ARMv8-M
+ * Mainline, kernel/arch_v8m.h).  Both give the same functions. */
 #ifndef LINKS1_KERNEL_ARCH_H
 #define LINKS1_KERNEL_ARCH_H
 
-#include <stdint.h>
-
-/* TPIDRPRW: PL1-only thread register; holds this core's struct cpu *. */
-static inline void arch_write_tpidrprw(uintptr_t v)
-{
-    __asm__ volatile("mcr p15, 0, %0, c13, c0, 4" ::"r"(v) : "memory");
-}
-static inline uintptr_t arch_read_tpidrprw(void)
-{
-    uintptr_t v;
-    __asm__ volatile("mrc p15, 0, %0, c13, c0, 4" : "=r"(v));
-    return v;
-}
-
-static inline uint32_t arch_read_cpsr(void)
-{
-    uint32_t v;
-    __asm__ volatile("mrs %0, cpsr" : "=r"(v));
-    return v;
-}
-#define ARCH_CPSR_I (1u << 7) /* IRQs masked */
-
-/* The "memory" clobbers keep the compiler from moving accesses across the
- * points where interrupts change state. */
-static inline void arch_irq_disable(void) { __asm__ volatile("cpsid i" ::: "memory"); }
-static inline void arch_irq_enable(void) { __asm__ volatile("cpsie i" ::: "memory"); }
-static inline void arch_wfi(void) { __asm__ volatile("wfi" ::: "memory"); }
-static inline void arch_sev(void) { __asm__ volatile("sev" ::: "memory"); }
-static inline void arch_wfe(void) { __asm__ volatile("wfe" ::: "memory"); }
-/* Orders this core's memory accesses as seen by the other cores
- * (inner shareable domain: every core of the board). */
-static inline void arch_dmb(void) { __asm__ volatile("dmb ish" ::: "memory"); }
-/* Completes memory accesses (before WFI, SEV, or a device write that must
- * follow them). */
-static inline void arch_dsb(void) { __asm__ volatile("dsb ish" ::: "memory"); }
-static inline void arch_isb(void) { __asm__ volatile("isb" ::: "memory"); }
-
-/* ---- fault status ---- */
-static inline uint32_t arch_read_dfar(void)
-{
-    uint32_t v;
-    __asm__ volatile("mrc p15, 0, %0, c6, c0, 0" : "=r"(v));
-    return v;
-}
-static inline uint32_t arch_read_dfsr(void)
-{
-    uint32_t v;
-    __asm__ volatile("mrc p15, 0, %0, c5, c0, 0" : "=r"(v));
-    return v;
-}
-static inline uint32_t arch_read_ifar(void)
-{
-    uint32_t v;
-    __asm__ volatile("mrc p15, 0, %0, c6, c0, 2" : "=r"(v));
-    return v;
-}
-static inline uint32_t arch_read_ifsr(void)
-{
-    uint32_t v;
-    __asm__ volatile("mrc p15, 0, %0, c5, c0, 1" : "=r"(v));
-    return v;
-}
-
-/* ---- memory-mapped device registers ---- */
-static inline uint32_t mmio_read32(uintptr_t addr)
-{
-    return *(volatile uint32_t *)addr;
-}
-static inline void mmio_write32(uintptr_t addr, uint32_t v)
-{
-    *(volatile uint32_t *)addr = v;
-}
+#if defined(__ARM_ARCH_PROFILE) && __ARM_ARCH_PROFILE == 'M'
+#include "kernel/arch_v8m.h"
+#else
+#include "kernel/arch_v7a.h"
+#endif
 
 #endif

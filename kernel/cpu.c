@@ -4,9 +4,10 @@
 #include <string.h>
 
 #include "kernel/machine.h"
+#include "kernel/memlayout.h"
 #include "proto/hostlink.h"
 
-struct cpu cpus[UNITS_MAX_CORES];
+UNIT_SHARED struct cpu cpus[UNITS_MAX_CORES];
 volatile uint32_t board_ncores;
 
 void cpu_init(uint32_t core)
@@ -17,7 +18,7 @@ void cpu_init(uint32_t core)
     c->hwid = machine_core_hwid();
     c->role = unit_role_of_core(core);
     c->current = -1;
-    arch_write_tpidrprw((uintptr_t)c);
+    arch_set_cpu_ptr(c);
 }
 
 void cpu_boot_done(void)

@@ -46,10 +46,11 @@ extern struct cpu cpus[UNITS_MAX_CORES];
 /* Number of cores on the board; set by core 0 before any other core runs. */
 extern volatile uint32_t board_ncores;
 
-/* This core's state (TPIDRPRW holds the pointer, set by cpu_init). */
+/* This core's state (a core register holds the pointer, set by cpu_init:
+ * kernel/arch.h). */
 static inline struct cpu *mycpu(void)
 {
-    return (struct cpu *)arch_read_tpidrprw();
+    return (struct cpu *)arch_cpu_ptr();
 }
 
 static inline struct cpu *cpu_of(uint32_t core)

@@ -82,13 +82,7 @@ void panic(const char *fmt, ...)
 void fault_from_exception(uint32_t kind, const uint32_t *regs, uint32_t pc, uint32_t spsr)
 {
     uint32_t addr = pc, status = 0;
-    if (kind == FAULT_DATA_ABORT) {
-        addr = arch_read_dfar();
-        status = arch_read_dfsr();
-    } else if (kind == FAULT_PREFETCH_ABORT) {
-        addr = arch_read_ifar();
-        status = arch_read_ifsr();
-    }
+    arch_fault_info(kind, &addr, &status);
     char text[KLOG_MAX];
     /* regs: r0..r12 as the vector pushed them. */
     fmt_snprintf(text, sizeof text,

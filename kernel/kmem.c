@@ -2,29 +2,14 @@
 #include "kernel/kmem.h"
 
 #include "kernel/cpu.h"
-#include "kernel/memlayout.h"
+#include "kernel/machine.h"
 #include "kernel/panic.h"
 #include "proto/hostlink.h"
-
-/* NC shares are whole multiples of this, so each starts page aligned. */
-#define KMEM_NC_SHARE_ALIGN (64u * 1024u)
 
 void kmem_init(uint32_t core, uint32_t ncores)
 {
     struct cpu *c = cpu_of(core);
-    if (core == 0) {
-        c->mem_base = (uint8_t *)__dm_private_start;
-        c->mem_size = LINKER_VALUE(LINKS1_DM_PRIVATE);
-    } else if (core == 1) {
-        c->mem_base = (uint8_t *)__rc_private_start;
-        c->mem_size = LINKER_VALUE(LINKS1_RC_PRIVATE);
-    } else {
-        uint32_t ncs = ncores - UNITS_FIRST_NC;
-        size_t pool = (size_t)(__nc_pool_end - __nc_pool_start);
-        size_t share = (pool / ncs) & ~(size_t)(KMEM_NC_SHARE_ALIGN - 1);
-        c->mem_base = (uint8_t *)__nc_pool_start + share * (core - UNITS_FIRST_NC);
-        c->mem_size = share;
-    }
+    machine_private_memory(core, ncores, &c->mem_base, &c->mem_size);
     c->mem_used = 0;
     c->mem_high = 0;
 }

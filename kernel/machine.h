@@ -11,6 +11,7 @@
 #ifndef LINKS1_KERNEL_MACHINE_H
 #define LINKS1_KERNEL_MACHINE_H
 
+#include <stddef.h>
 #include <stdint.h>
 
 /* This core's number on the whole machine (0 = the DM, 1 = the RC, then
@@ -30,6 +31,10 @@ void machine_lock_turn(uint32_t core);
 /* This core saw its turn: a lock-turn wake-up still pending has nothing
  * more to say. */
 void machine_lock_turn_seen(void);
+
+/* The private memory of unit computer core on a machine of ncores cores:
+ * where it starts and how big it is (kernel/kmem.c hands it out). */
+void machine_private_memory(uint32_t core, uint32_t ncores, uint8_t **base, size_t *size);
 
 /* Stops the whole machine (the host's CMD_POWER_OFF).  Returns only if the
  * machine cannot. */

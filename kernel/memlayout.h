@@ -12,13 +12,29 @@
 /* UNMAPPED_VIRT and BOARD_RAM_BASE, which the host tools know too. */
 #include "proto/board_map.h"
 
-/* RAM: where the board's memory starts (proto/board_map.h). */
+#include "proto/board_map_an521.h"
+
+/* RAM_BASE: where the memory the host maps too starts (a LINK_BULK offset
+ * counts from it); MACHINE_UNMAPPED: an address where any access faults
+ * (the fault tests). */
+#if defined(LINKS1_MACHINE_AN521)
+#define RAM_BASE AN521_SHARED_BASE
+#define MACHINE_UNMAPPED AN521_UNMAPPED
+#else
 #define RAM_BASE BOARD_RAM_BASE
+#define MACHINE_UNMAPPED UNMAPPED_VIRT
+#endif
+
+/* What unit computers share with units of other boards: the an521 boards
+ * keep it in the shared file (linker/an521-memory.ld); on the virt board,
+ * where all memory is shared, it is ordinary zeroed data.  Zero at start,
+ * set up at run time: it is never loaded. */
+#define UNIT_SHARED __attribute__((section(".unit_shared")))
 
 #ifndef __ASSEMBLER__
 #include <stdint.h>
 
-/* Symbols of linker/virt-memory.ld: regions (start/end addresses) and
+/* Symbols of linker/<machine>-memory.ld: regions (start/end addresses) and
  * sizes (absolute symbols: use the address as the value). */
 extern char __stacks_start[], __stacks_end[];
 extern char __lines_start[], __lines_end[];

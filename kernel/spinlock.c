@@ -121,7 +121,7 @@ int spin_release_all_mine(void)
 
 void irq_push_off(void)
 {
-    int enabled = (arch_read_cpsr() & ARCH_CPSR_I) == 0;
+    int enabled = !arch_irqs_masked();
     arch_irq_disable();
     struct cpu *c = mycpu();
     if (c->irq_depth == 0)
@@ -132,7 +132,7 @@ void irq_push_off(void)
 void irq_pop_off(void)
 {
     struct cpu *c = mycpu();
-    if (arch_read_cpsr() & ARCH_CPSR_I) {
+    if (arch_irqs_masked()) {
         if (c->irq_depth < 1)
             panic("irq_pop_off: not pushed");
         c->irq_depth--;

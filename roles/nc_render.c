@@ -19,6 +19,7 @@
 #include "kernel/klog.h"
 #include "kernel/kmem.h"
 #include "kernel/ktime.h"
+#include "kernel/memlayout.h"
 #include "proto/hostlink.h"
 #include "proto/insn_mark.h"
 #include "proto/render_link.h"
@@ -52,7 +53,7 @@ struct nc_job {
     struct line_msg *m; /* the message buffer, free while an area renders */
 };
 static struct nc_job nc_jobs[UNITS_MAX_CORES];
-volatile uint32_t gigs_nc_progress[UNITS_MAX_CORES];
+UNIT_SHARED volatile uint32_t gigs_nc_progress[UNITS_MAX_CORES];
 
 static void nc_send(struct line_msg *m)
 {

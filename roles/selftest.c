@@ -145,11 +145,11 @@ void selftest_fault_now(uint8_t kind)
         __asm__ volatile("udf #0");
         break;
     case FAULT_DATA_ABORT:
-        (void)*(volatile uint32_t *)UNMAPPED_VIRT;
+        (void)*(volatile uint32_t *)MACHINE_UNMAPPED;
         break;
     case FAULT_PREFETCH_ABORT: {
         /* Thumb bit set so the branch itself is legal; the fetch faults. */
-        void (*fn)(void) = (void (*)(void))(uintptr_t)(UNMAPPED_VIRT | 1u);
+        void (*fn)(void) = (void (*)(void))(uintptr_t)(MACHINE_UNMAPPED | 1u);
         fn();
         break;
     }

@@ -3,17 +3,18 @@
 
 #include "kernel/cpu.h"
 #include "kernel/machine.h"
+#include "kernel/memlayout.h"
 #include "kernel/ktime.h"
 #include "kernel/panic.h"
 #include "kernel/task.h"
 
 /* One DC on the board, shared by every core: the FIFO's slots live in the
  * image, not in any unit computer's private memory. */
-static struct dc_slot dc_slots[DC_RING_SLOTS];
-static struct dc_ring dc_ring;
-static uint32_t dc_consumer;
+UNIT_SHARED static struct dc_slot dc_slots[DC_RING_SLOTS];
+UNIT_SHARED static struct dc_ring dc_ring;
+UNIT_SHARED static uint32_t dc_consumer;
 /* Producers whose runs the consumer drops (set by the consumer only). */
-static uint8_t dc_ignored[DC_MAX_PRODUCERS];
+UNIT_SHARED static uint8_t dc_ignored[DC_MAX_PRODUCERS];
 
 void dc_init(uint32_t consumer_core)
 {

@@ -5,8 +5,8 @@
 #include "kernel/memlayout.h"
 #include "kernel/param.h"
 
-struct imsu_pair imsu_dm_rc;
-struct imsu_bcast imsu_rc_ncs;
+UNIT_SHARED struct imsu_pair imsu_dm_rc;
+UNIT_SHARED struct imsu_bcast imsu_rc_ncs;
 
 void imsu_init_all(uint32_t ncores)
 {

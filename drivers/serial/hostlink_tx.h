@@ -17,7 +17,8 @@
  * link as the kernel's log sink (kernel/klog.h), so klog lines, panics and
  * faults go out as LINK_LOG and LINK_FAULT frames. */
 void hostlink_tx_init(void);
-/* Sends one frame; returns its seq.  Panics if len > LINK_MAX_PAYLOAD. */
+/* Sends one frame; returns its seq (0 for a message relayed by another
+ * board: hostlink_relay.h).  Panics if len > LINK_MAX_PAYLOAD. */
 uint16_t hostlink_send(uint8_t type, uint8_t flags, const void *payload, size_t len);
 /* A LINK_NAK (unnumbered, not kept) naming the host frame expected next. */
 void hostlink_send_nak(uint8_t flags, uint16_t expect);

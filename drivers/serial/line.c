@@ -25,13 +25,13 @@ struct line {
     struct line_dir dir[2];   /* dir[i] carries end[i] -> end[1 - i] */
 };
 
-static struct line lines[UNITS_MAX_CORES - 1];
-static uint32_t lines_used;
+UNIT_SHARED static struct line lines[UNITS_MAX_CORES - 1];
+UNIT_SHARED static uint32_t lines_used;
 
 /* Per receiving core, one bit per sending core: set by the sender after
  * each message, taken by a receiver that serves many lines (the RC) so
  * that it looks only at the lines that sent. */
-static uint32_t line_pending[UNITS_MAX_CORES][LINE_PENDING_WORDS];
+UNIT_SHARED static uint32_t line_pending[UNITS_MAX_CORES][LINE_PENDING_WORDS];
 
 /* Bytes a message of len payload bytes takes in the ring: header and
  * payload padded to whole words, so every message starts word-aligned and
