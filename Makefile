@@ -167,7 +167,7 @@ FIRMWARE_an521 :=
 ifneq ($(strip $(FW_SRCS)),)
 $(foreach m,$(FW_MACHINES),$(foreach v,$(FW_VARIANTS_$(m)),$(eval $(call fw_variant,$(m),$(v)))))
 endif
-FIRMWARE := $(FIRMWARE_virt)
+FIRMWARE := $(FIRMWARE_virt) $(FIRMWARE_an521)
 
 # --------------------------------------------------------------- host rules
 # Shared and host sources compile once per (arithmetic, plain|san) into

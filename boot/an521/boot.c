@@ -96,9 +96,21 @@ void boot_secondary(void)
     unit_start();
 }
 
+/* The Application Interrupt and Reset Control Register: a system reset
+ * request, which QEMU run with -no-reboot (as links1 starts every board)
+ * takes as the end of the run. */
+#define SCB_AIRCR 0xE000ED0Cu
+#define AIRCR_VECTKEY (0x05FAu << 16)
+#define AIRCR_SYSRESETREQ (1u << 2)
+
 void machine_power_off(void)
 {
-    /* The boards have no power control: the host ends their processes. */
+    /* Board 0 ends its own process; the host ends the NC boards'. */
+    arch_dsb();
+    mmio_write32(SCB_AIRCR, AIRCR_VECTKEY | AIRCR_SYSRESETREQ);
+    arch_dsb();
+    for (int i = 0; i < 1000; i++)
+        arch_wfi(); /* the request takes effect between instructions */
 }
 
 void machine_private_memory(uint32_t core, uint32_t ncores, uint8_t **base, size_t *size)

@@ -15,6 +15,9 @@
 
 const char board_opts_usage[] =
     "  --smp N          cores on the board: DM, RC and N-2 NCs (3..256, default 10)\n"
+    "  --machine M      virt (one board, a core per unit computer, default) or an521\n"
+    "                   (dual Cortex-M33 boards, one QEMU each: DM and RC on board 0,\n"
+    "                   two NCs on each other board; an even number of NCs, 2..64)\n"
     "  --arith A        firmware arithmetic: float, soft, fixed or double (default float)\n"
     "  --firmware ELF   firmware to boot (default: links1-<arith>.elf in $FW_DIR,\n"
     "                   else next to this program)\n"
@@ -89,6 +92,11 @@ int board_opt(struct board_opts *o, const struct cli *c, int code)
         o->link_noise_on = 1;
         return 1;
     }
+    case BOARD_OPT_MACHINE:
+        if (strcmp(c->arg, "virt") != 0 && strcmp(c->arg, "an521") != 0)
+            return cli_bad_value(c, "virt or an521");
+        o->machine = strcmp(c->arg, "an521") == 0 ? BOARD_MACHINE_AN521 : BOARD_MACHINE_VIRT;
+        return 1;
     case BOARD_OPT_FIRMWARE:
         o->firmware = c->arg;
         return 1;
@@ -121,6 +129,13 @@ static int board_firmware_is_elf(const char *path)
     return 0;
 }
 
+/* The firmware's file name under a firmware directory: links1-A.elf for
+ * the virt board, an521/links1-A.elf for the an521 boards. */
+static const char *board_machine_subdir(const struct board_opts *o)
+{
+    return o->machine == BOARD_MACHINE_AN521 ? "an521/" : "";
+}
+
 int board_find_firmware(const struct board_opts *o, char *out, size_t cap)
 {
     if (o->firmware) {
@@ -133,7 +148,7 @@ int board_find_firmware(const struct board_opts *o, char *out, size_t cap)
     }
     const char *fw_dir = getenv("FW_DIR");
     if (fw_dir && *fw_dir) {
-        snprintf(out, cap, "%s/links1-%s.elf", fw_dir, o->arith);
+        snprintf(out, cap, "%s/%slinks1-%s.elf", fw_dir, board_machine_subdir(o), o->arith);
         if (board_file_readable(out))
             return board_firmware_is_elf(out) ? 0 : -1;
         fprintf(stderr, "links1: firmware %s not found ($FW_DIR is set; run make, or "
@@ -145,7 +160,7 @@ int board_find_firmware(const struct board_opts *o, char *out, size_t cap)
         fprintf(stderr, "links1: cannot find this program's directory: %s\n", strerror(errno));
         return -1;
     }
-    snprintf(out, cap, "%s/links1-%s.elf", self, o->arith);
+    snprintf(out, cap, "%s/%slinks1-%s.elf", self, board_machine_subdir(o), o->arith);
     if (board_file_readable(out))
         return board_firmware_is_elf(out) ? 0 : -1;
     fprintf(stderr, "links1: firmware %s not found (run make, set $FW_DIR, or give "

@@ -54,6 +54,7 @@ enum board_opt_code {
     BOARD_OPT_VERBOSE,
     BOARD_OPT_GDB,
     BOARD_OPT_LINK_NOISE,
+    BOARD_OPT_MACHINE,
 };
 #define BOARD_LONG_OPTIONS                                       \
     {"smp", required_argument, NULL, BOARD_OPT_SMP},             \
@@ -65,7 +66,8 @@ enum board_opt_code {
     {"link", required_argument, NULL, BOARD_OPT_LINK},           \
     {"verbose", no_argument, NULL, BOARD_OPT_VERBOSE},           \
     {"gdb", optional_argument, NULL, BOARD_OPT_GDB},             \
-    {"link-noise", required_argument, NULL, BOARD_OPT_LINK_NOISE}
+    {"link-noise", required_argument, NULL, BOARD_OPT_LINK_NOISE}, \
+    {"machine", required_argument, NULL, BOARD_OPT_MACHINE}
 
 /* Takes the board option cli_next() returned as code into o.  Returns 1
  * when it took it, 0 when code is not a board option, -1 after printing

@@ -7,6 +7,7 @@
 #include "host-tools/launcher/board_state.h"
 #include "host-tools/launcher/link_relay.h"
 #include "host-tools/opts/self_path.h"
+#include "proto/wire.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -57,6 +58,75 @@ static void board_qemu_exec_failed(const char *qemu)
  * socket pair, the RAM our memfd) must not outlive the tool, whatever ends
  * the tool; a named board (qemu_fd < 0: the UART a listening socket, the RAM
  * a file, both in its state directory) runs on in a session of its own. */
+/* The emulator's arguments for the machine: its model and memory, QEMU's
+ * devices; board (an521) is which board this process is. */
+static int board_qemu_machine_args(const struct board *b, int board, const char **argv, int n,
+                                   char *smp, char *mem, char *loader, size_t loader_cap)
+{
+    if (b->opts.machine == BOARD_MACHINE_AN521) {
+        argv[n++] = "-M";
+        argv[n++] = "mps2-an521,memory-backend=ram";
+        /* QEMU's SSE-200 gives core 0 no FPU and no DSP extension; the
+         * float firmware needs both on both cores (a configuration the
+         * SSE-200 offers).  The soft and fixed firmwares run on the board
+         * as it comes. */
+        if (strcmp(b->opts.arith, "float") == 0) {
+            argv[n++] = "-global";
+            argv[n++] = "sse-200.CPU0_FPU=on";
+            argv[n++] = "-global";
+            argv[n++] = "sse-200.CPU0_DSP=on";
+        }
+        snprintf(loader, loader_cap, "loader,addr=0x%x,data=%d,data-len=4",
+                 (unsigned)AN521_BOARD_ID_ADDR, board);
+        argv[n++] = "-device";
+        argv[n++] = loader;
+        return n;
+    }
+    argv[n++] = "-M";
+    argv[n++] = "virt,gic-version=3,memory-backend=ram";
+    argv[n++] = "-cpu";
+    argv[n++] = "cortex-a15";
+    argv[n++] = "-smp";
+    argv[n++] = smp;
+    argv[n++] = "-m";
+    argv[n++] = mem;
+    return n;
+}
+
+/* An an521 NC board's process (board > 0): no link of its own (its units'
+ * messages go through the shared file to board 0), the shared file as its
+ * PSRAM.  In the child; never returns. */
+static void board_qemu_exec_nc_board(struct board *b, int board)
+{
+    signal(SIGPIPE, SIG_DFL);
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    int null = open("/dev/null", O_RDWR);
+    if (null >= 0) {
+        dup2(null, 0);
+        dup2(null, 1); /* QEMU's own warnings (the unconnected NIC) */
+    }
+    fcntl(b->ram_fd, F_SETFD, 0);
+    char ram[PATH_MAX + 96], loader[96];
+    snprintf(ram, sizeof ram, "memory-backend-file,id=ram,size=%dM,mem-path=/proc/self/fd/%d,"
+             "share=on", b->opts.ram_mb, b->ram_fd);
+    const char *qemu = board_qemu_binary();
+    const char *argv[32];
+    int n = 0;
+    argv[n++] = qemu;
+    n = board_qemu_machine_args(b, board, argv, n, NULL, NULL, loader, sizeof loader);
+    argv[n++] = "-object";
+    argv[n++] = ram;
+    argv[n++] = "-display";
+    argv[n++] = "none";
+    argv[n++] = "-nodefaults";
+    argv[n++] = "-no-reboot";
+    argv[n++] = "-kernel";
+    argv[n++] = b->firmware;
+    argv[n] = NULL;
+    execvp(qemu, (char *const *)argv);
+    board_qemu_exec_failed(qemu);
+}
+
 static void board_qemu_exec(struct board *b, int qemu_fd)
 {
     signal(SIGPIPE, SIG_DFL); /* the session's SIG_IGN is ours, not QEMU's */
@@ -85,16 +155,10 @@ static void board_qemu_exec(struct board *b, int qemu_fd)
     const char *argv[40];
     int n = 0;
     argv[n++] = qemu;
-    argv[n++] = "-M";
-    argv[n++] = "virt,gic-version=3,memory-backend=ram";
+    char loader[96];
+    n = board_qemu_machine_args(b, 0, argv, n, smp, mem, loader, sizeof loader);
     argv[n++] = "-object";
     argv[n++] = ram;
-    argv[n++] = "-cpu";
-    argv[n++] = "cortex-a15";
-    argv[n++] = "-smp";
-    argv[n++] = smp;
-    argv[n++] = "-m";
-    argv[n++] = mem;
     argv[n++] = "-display";
     /* --view: the frame memory shown live through ramfb in QEMU's display
      * ($LINKS1_DISPLAY, default gtk). */
@@ -235,6 +299,8 @@ static int board_gdb_socket(struct board *b)
 /* The board's RAM as a memfd, mapped here (proto/board_map.h). */
 static int board_ram_create(struct board *b)
 {
+    if (b->opts.machine == BOARD_MACHINE_AN521)
+        b->opts.ram_mb = AN521_SHARED_MB;
     b->ram_size = (size_t)b->opts.ram_mb << 20;
     b->ram_fd = memfd_create("links1-board-ram", MFD_CLOEXEC);
     if (b->ram_fd < 0 || ftruncate(b->ram_fd, (off_t)b->ram_size) < 0) {
@@ -248,6 +314,14 @@ static int board_ram_create(struct board *b)
         return -1;
     }
     b->ram = p;
+    if (b->opts.machine == BOARD_MACHINE_AN521) {
+        /* The shared file's header (proto/board_map_an521.h), before any
+         * board starts: they find the boards joined there. */
+        wire_put_u32(b->ram + AN521_HDR_MAGIC_OFF, AN521_HDR_MAGIC);
+        wire_put_u32(b->ram + AN521_HDR_BOARDS_OFF,
+                     (uint32_t)(b->opts.ncores / AN521_CORES_PER_BOARD));
+        wire_put_u32(b->ram + AN521_HDR_READY_OFF, 0);
+    }
     return 0;
 }
 
@@ -291,6 +365,33 @@ static int board_noise_relay(const struct board_opts *o, int qemu_side)
     return rv[0];
 }
 
+/* The an521 boards' shape: two units per board, board 0 the DM and RC;
+ * what the firmware and QEMU's model of them can do. */
+static int board_an521_check(const struct board_opts *o)
+{
+    int ncs = o->ncores - UNITS_FIRST_NC;
+    if (o->ncores % AN521_CORES_PER_BOARD != 0 ||
+        o->ncores > AN521_CORES_PER_BOARD * AN521_MAX_BOARDS) {
+        fprintf(stderr, "links1: %d NCs on an521 boards: each NC board carries %d NCs, so "
+                "give an even number from 2 to %d\n", ncs, AN521_CORES_PER_BOARD,
+                AN521_CORES_PER_BOARD * (AN521_MAX_BOARDS - 1));
+        return -1;
+    }
+    if (o->ram_mb != BOARD_DEFAULT_RAM_MB) {
+        fprintf(stderr, "links1: --ram: an an521 board's memory is fixed (its SRAMs and the "
+                "%d MiB shared file)\n", AN521_SHARED_MB);
+        return -1;
+    }
+    if (o->view || o->gdb || o->link_noise_on) {
+        fprintf(stderr, "links1: --%s is for the virt board; the an521 boards have %s\n",
+                o->view ? "view" : o->gdb ? "gdb" : "link-noise",
+                o->view ? "no display" : o->gdb ? "no gdb stub wired through links1 yet"
+                                                : "no noisy relay wired through links1 yet");
+        return -1;
+    }
+    return 0;
+}
+
 /* A board this tool boots: its QEMU told of when the link ends, its frames
  * numbered from 0, its firmware found and its shape checked.  0, or -1
  * after printing why. */
@@ -305,6 +406,8 @@ static int board_qemu_check(struct board *b, const struct board_opts *o)
                 UNITS_MIN_CORES, UNITS_MAX_CORES);
         return -1;
     }
+    if (o->machine == BOARD_MACHINE_AN521)
+        return board_an521_check(o);
     return 0;
 }
 
@@ -318,6 +421,61 @@ static int board_qemu_session(struct board *b, const struct board_opts *o)
         return -1;
     }
     return 0;
+}
+
+/* The an521 NC boards, each its own QEMU on the shared file (board 0 is
+ * started already). */
+static int board_start_nc_boards(struct board *b)
+{
+    int boards = b->opts.ncores / AN521_CORES_PER_BOARD;
+    for (int k = 1; k < boards; k++) {
+        fflush(NULL);
+        pid_t pid = fork();
+        if (pid < 0) {
+            fprintf(stderr, "links1: fork (an521 board %d): %s\n", k, strerror(errno));
+            board_stop(b);
+            return -1;
+        }
+        if (pid == 0)
+            board_qemu_exec_nc_board(b, k);
+        b->nc_board_pid[k] = pid;
+    }
+    if (!b->opts.quiet)
+        printf("links1: booting %s on %d an521 boards (board 0: DM and RC, QEMU pid %d; "
+               "%d NCs on boards 1..%d)\n", b->firmware, boards, (int)b->qemu_pid,
+               b->opts.ncores - UNITS_FIRST_NC, boards - 1);
+    return 0;
+}
+
+/* An NC board's process gone or not: 1 once reaped. */
+static int board_nc_board_reap(struct board *b, int k, int timeout_ms)
+{
+    long long end = board_now_ms() + timeout_ms;
+    while (b->nc_board_pid[k]) {
+        pid_t r = waitpid(b->nc_board_pid[k], &b->nc_board_status[k], WNOHANG);
+        if (r == b->nc_board_pid[k] || (r < 0 && errno == ECHILD)) {
+            b->nc_board_pid[k] = 0;
+            break;
+        }
+        if (board_now_ms() >= end)
+            return 0;
+        usleep(10000);
+    }
+    return 1;
+}
+
+/* Ends the an521 NC boards' processes (they have no power control). */
+static void board_stop_nc_boards(struct board *b)
+{
+    for (int k = 1; k < AN521_MAX_BOARDS; k++)
+        if (b->nc_board_pid[k])
+            kill(b->nc_board_pid[k], SIGTERM);
+    for (int k = 1; k < AN521_MAX_BOARDS; k++) {
+        if (b->nc_board_pid[k] && !board_nc_board_reap(b, k, BOARD_TERM_WAIT_MS)) {
+            kill(b->nc_board_pid[k], SIGKILL);
+            board_nc_board_reap(b, k, BOARD_TERM_WAIT_MS);
+        }
+    }
 }
 
 int board_start(struct board *b, const struct board_opts *o)
@@ -355,6 +513,8 @@ int board_start(struct board *b, const struct board_opts *o)
         return -1;
     }
     board_session_open(b, tool_fd);
+    if (o->machine == BOARD_MACHINE_AN521)
+        return board_start_nc_boards(b);
     if (!o->quiet)
         printf("links1: booting %s on %d cores (DM, RC, %d NCs), QEMU pid %d\n",
                b->firmware, o->ncores, o->ncores - 2, (int)pid);
@@ -364,6 +524,12 @@ int board_start(struct board *b, const struct board_opts *o)
 int board_start_named(struct board *b, const struct board_opts *o, const char *name,
                       int timeout_ms)
 {
+    if (o->machine == BOARD_MACHINE_AN521) {
+        fprintf(stderr, "links1: named boards run on the virt board; an an521 set of boards "
+                "lives for one command (links1 render --machine an521, links1 boot "
+                "--machine an521)\n");
+        return -1;
+    }
     if (board_session_init(b, o) < 0)
         return -1;
     b->named = 1;
@@ -454,6 +620,7 @@ int board_stop(struct board *b)
         b->qemu_pid = 0;
     } else {
         r = board_stop_qemu(b);
+        board_stop_nc_boards(b);
         if (b->gdb_socket[0] && !b->qemu_pid)
             unlink(b->gdb_socket); /* a named board's goes with its directory */
     }

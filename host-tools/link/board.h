@@ -15,6 +15,7 @@
 #include <stdint.h>
 #include <sys/types.h>
 
+#include "proto/board_map_an521.h"
 #include "proto/hostlink.h"
 #include "proto/units.h"
 
@@ -36,8 +37,16 @@
 
 struct board_arq;
 
+/* The machines links1 runs on (board_opts.machine). */
+enum board_machine {
+    BOARD_MACHINE_VIRT = 0, /* one virt board, a core per unit computer */
+    BOARD_MACHINE_AN521,    /* an521 boards, one QEMU each, two units each,
+                               joined by a shared file (proto/board_map_an521.h) */
+};
+
 struct board_opts {
-    int ncores;             /* -smp */
+    int machine;            /* enum board_machine */
+    int ncores;             /* -smp; on an521, 2 per board */
     const char *arith;      /* float | soft | fixed */
     const char *firmware;   /* ELF path, or NULL: found by board_find_firmware */
     int ram_mb;             /* -m */
@@ -73,7 +82,10 @@ struct board_frame {
 struct board {
     struct board_opts opts;
     char firmware[4096];        /* the ELF actually booted */
-    pid_t qemu_pid;             /* 0 once reaped */
+    pid_t qemu_pid;             /* 0 once reaped (on an521: board 0's) */
+    pid_t nc_board_pid[AN521_MAX_BOARDS]; /* an521: the NC boards' QEMUs (index
+                                   = board number; 0 once reaped) */
+    int nc_board_status[AN521_MAX_BOARDS]; /* ... their waitpid status */
     int qemu_status;            /* waitpid status once reaped */
     int fd;                     /* our end of the UART socket, -1 when closed */
     int ram_fd;                 /* the board's RAM (memfd), -1 when none */
