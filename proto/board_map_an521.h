@@ -38,10 +38,13 @@
 #define AN521_BOARD_ID_ADDR 0x103FFFF0 /* no suffix: the linker script uses it */
 
 /* The blocks carved from the shared file after its header and the units'
- * shared state: the serial lines' rings (linker/an521-memory.ld), then the
- * two DM<->RC IMSU blocks and the RC->NC broadcast block, each this big. */
+ * shared state: the serial lines' rings (linker/an521-memory.ld), the two
+ * DM<->RC IMSU blocks and the RC->NC broadcast block, each this big, the
+ * RC's memory (its frame memory: the host pulls frames from it) and the
+ * rest the DM's (where the host link's bulk bytes land). */
 #define AN521_SHARED_STATE_BYTES (1024 * 1024)
-#define AN521_IMSU_BLOCK_BYTES (4480 * 1024)
+#define AN521_IMSU_BLOCK_BYTES (3072 * 1024)
+#define AN521_RC_MEMORY_BYTES (2048 * 1024)
 #define AN521_IMSU_BLOCK_NAME "AN521_IMSU_BLOCK_BYTES"
 
 /* An address where nothing answers: a bus fault (the fault tests). */

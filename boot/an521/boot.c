@@ -32,6 +32,8 @@
 /* linker/an521-memory.ld: where the cores' private memory starts, and
  * how much each core has (an absolute symbol). */
 extern char __an521_private_start[], AN521_PRIVATE_EACH[];
+extern char __an521_dm_start[], AN521_DM_PRIVATE[];
+extern char __an521_rc_start[], AN521_RC_PRIVATE[];
 
 void boot_main(void) __attribute__((noreturn));
 void boot_secondary(void) __attribute__((noreturn));
@@ -116,6 +118,18 @@ void machine_power_off(void)
 void machine_private_memory(uint32_t core, uint32_t ncores, uint8_t **base, size_t *size)
 {
     (void)ncores;
+    if (core == UNITS_DM_CORE) {
+        /* In the shared file: the host link's bulk bytes land there. */
+        *base = (uint8_t *)__an521_dm_start;
+        *size = LINKER_VALUE(AN521_DM_PRIVATE);
+        return;
+    }
+    if (core == UNITS_RC_CORE) {
+        /* Likewise: the host pulls frames from the RC's frame memory. */
+        *base = (uint8_t *)__an521_rc_start;
+        *size = LINKER_VALUE(AN521_RC_PRIVATE);
+        return;
+    }
     size_t each = LINKER_VALUE(AN521_PRIVATE_EACH);
     *base = (uint8_t *)__an521_private_start + each * (core % AN521_CORES_PER_BOARD);
     *size = each;
