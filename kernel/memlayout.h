@@ -16,13 +16,16 @@
 
 /* RAM_BASE: where the memory the host maps too starts (a LINK_BULK offset
  * counts from it); MACHINE_UNMAPPED: an address where any access faults
- * (the fault tests). */
+ * (the fault tests); MACHINE_IMSU_BLOCK_NAME: the definition that sizes an
+ * IMSU block, named when a scene does not fit one. */
 #if defined(LINKS1_MACHINE_AN521)
 #define RAM_BASE AN521_SHARED_BASE
 #define MACHINE_UNMAPPED AN521_UNMAPPED
+#define MACHINE_IMSU_BLOCK_NAME AN521_IMSU_BLOCK_NAME
 #else
 #define RAM_BASE BOARD_RAM_BASE
 #define MACHINE_UNMAPPED UNMAPPED_VIRT
+#define MACHINE_IMSU_BLOCK_NAME BOARD_IMSU_BLOCK_NAME
 #endif
 
 /* What unit computers share with units of other boards: the an521 boards

@@ -45,6 +45,9 @@
 #define AN521_SHARED_STATE_BYTES (1024 * 1024)
 #define AN521_IMSU_BLOCK_BYTES (3072 * 1024)
 #define AN521_RC_MEMORY_BYTES (2048 * 1024)
+/* Each NC's private memory, half of its board's SSRAM2 and SSRAM3 (what
+ * the two cores' stacks leave, linker/an521-memory.ld). */
+#define AN521_NC_MEMORY_BYTES (1984 * 1024)
 #define AN521_IMSU_BLOCK_NAME "AN521_IMSU_BLOCK_BYTES"
 
 /* An address where nothing answers: a bus fault (the fault tests). */

@@ -12,6 +12,7 @@
 #include "kernel/cpu.h"
 #include "kernel/kmem.h"
 #include "kernel/ktime.h"
+#include "kernel/memlayout.h"
 #include "kernel/task.h"
 #include "proto/areas.h"
 #include "proto/board_map.h"
@@ -46,7 +47,7 @@ static struct {
                              frame is prepared there without loading again */
 } dm_scene;
 
-static const char dm_blob_limit_name[] = BOARD_IMSU_BLOCK_NAME;
+static const char dm_blob_limit_name[] = MACHINE_IMSU_BLOCK_NAME;
 
 _Static_assert(sizeof "scene refused: " - 1 + RENDER_BLOB_MSG_MAX <= KLOG_MAX,
                "a refusal is cut on the DM's log line: raise KLOG_MAX");

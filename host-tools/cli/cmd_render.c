@@ -453,6 +453,12 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
     }
     if (render_auto_check(o) != 0)
         return -1;
+    o->scene.machine = o->board.machine; /* the scene is checked against its limits */
+    if (o->board_name && o->board.machine != MACHINE_VIRT) {
+        fprintf(stderr, "links1 render: --board %s is a named virt board; --machine %s starts "
+                "its own boards\n", o->board_name, machine_limits(o->board.machine)->name);
+        return -1;
+    }
     if (o->resume && !o->many) {
         fprintf(stderr, "links1 render: --resume goes with --frames A:B\n");
         return -1;

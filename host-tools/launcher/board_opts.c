@@ -93,9 +93,8 @@ int board_opt(struct board_opts *o, const struct cli *c, int code)
         return 1;
     }
     case BOARD_OPT_MACHINE:
-        if (strcmp(c->arg, "virt") != 0 && strcmp(c->arg, "an521") != 0)
+        if ((o->machine = machine_by_name(c->arg)) < 0)
             return cli_bad_value(c, "virt or an521");
-        o->machine = strcmp(c->arg, "an521") == 0 ? BOARD_MACHINE_AN521 : BOARD_MACHINE_VIRT;
         return 1;
     case BOARD_OPT_FIRMWARE:
         o->firmware = c->arg;
@@ -133,7 +132,7 @@ static int board_firmware_is_elf(const char *path)
  * the virt board, an521/links1-A.elf for the an521 boards. */
 static const char *board_machine_subdir(const struct board_opts *o)
 {
-    return o->machine == BOARD_MACHINE_AN521 ? "an521/" : "";
+    return o->machine == MACHINE_AN521 ? "an521/" : "";
 }
 
 int board_find_firmware(const struct board_opts *o, char *out, size_t cap)

@@ -32,10 +32,17 @@ void board_qemu_gone(struct board *b, char *desc, size_t cap)
         const char *slash = strrchr(b->state_dir, '/');
         snprintf(desc, cap, "board %s: its QEMU closed the link or ended",
                  slash ? slash + 1 : b->state_dir);
-    } else if (board_qemu_reap(b, BOARD_TERM_WAIT_MS))
-        board_qemu_exit_text(b, desc, cap);
-    else
-        snprintf(desc, cap, "QEMU (pid %d) is still running", (int)b->qemu_pid);
+    } else {
+        /* On the an521 boards the link is board 0's: say which board. */
+        const char *which = b->opts.machine == MACHINE_AN521 ? "an521 board 0 (the DM and "
+                                                              "the RC): " : "";
+        char what[96];
+        if (board_qemu_reap(b, BOARD_TERM_WAIT_MS))
+            board_qemu_exit_text(b, what, sizeof what);
+        else
+            snprintf(what, sizeof what, "QEMU (pid %d) is still running", (int)b->qemu_pid);
+        snprintf(desc, cap, "%s%s", which, what);
+    }
 }
 
 /* The emulator: $QEMU, else qemu-system-arm from $PATH. */
@@ -63,7 +70,7 @@ static void board_qemu_exec_failed(const char *qemu)
 static int board_qemu_machine_args(const struct board *b, int board, const char **argv, int n,
                                    char *smp, char *mem, char *loader, size_t loader_cap)
 {
-    if (b->opts.machine == BOARD_MACHINE_AN521) {
+    if (b->opts.machine == MACHINE_AN521) {
         argv[n++] = "-M";
         argv[n++] = "mps2-an521,memory-backend=ram";
         /* QEMU's SSE-200 gives core 0 no FPU and no DSP extension; the
@@ -299,7 +306,7 @@ static int board_gdb_socket(struct board *b)
 /* The board's RAM as a memfd, mapped here (proto/board_map.h). */
 static int board_ram_create(struct board *b)
 {
-    if (b->opts.machine == BOARD_MACHINE_AN521)
+    if (b->opts.machine == MACHINE_AN521)
         b->opts.ram_mb = AN521_SHARED_MB;
     b->ram_size = (size_t)b->opts.ram_mb << 20;
     b->ram_fd = memfd_create("links1-board-ram", MFD_CLOEXEC);
@@ -314,7 +321,7 @@ static int board_ram_create(struct board *b)
         return -1;
     }
     b->ram = p;
-    if (b->opts.machine == BOARD_MACHINE_AN521) {
+    if (b->opts.machine == MACHINE_AN521) {
         /* The shared file's header (proto/board_map_an521.h), before any
          * board starts: they find the boards joined there. */
         wire_put_u32(b->ram + AN521_HDR_MAGIC_OFF, AN521_HDR_MAGIC);
@@ -406,7 +413,7 @@ static int board_qemu_check(struct board *b, const struct board_opts *o)
                 UNITS_MIN_CORES, UNITS_MAX_CORES);
         return -1;
     }
-    if (o->machine == BOARD_MACHINE_AN521)
+    if (o->machine == MACHINE_AN521)
         return board_an521_check(o);
     return 0;
 }
@@ -513,7 +520,7 @@ int board_start(struct board *b, const struct board_opts *o)
         return -1;
     }
     board_session_open(b, tool_fd);
-    if (o->machine == BOARD_MACHINE_AN521)
+    if (o->machine == MACHINE_AN521)
         return board_start_nc_boards(b);
     if (!o->quiet)
         printf("links1: booting %s on %d cores (DM, RC, %d NCs), QEMU pid %d\n",
@@ -524,7 +531,7 @@ int board_start(struct board *b, const struct board_opts *o)
 int board_start_named(struct board *b, const struct board_opts *o, const char *name,
                       int timeout_ms)
 {
-    if (o->machine == BOARD_MACHINE_AN521) {
+    if (o->machine == MACHINE_AN521) {
         fprintf(stderr, "links1: named boards run on the virt board; an an521 set of boards "
                 "lives for one command (links1 render --machine an521, links1 boot "
                 "--machine an521)\n");

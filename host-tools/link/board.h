@@ -17,6 +17,7 @@
 
 #include "proto/board_map_an521.h"
 #include "proto/hostlink.h"
+#include "proto/machines.h"
 #include "proto/units.h"
 
 /* Milliseconds to wait for one answer frame (a command's result, a DATA or
@@ -37,15 +38,8 @@
 
 struct board_arq;
 
-/* The machines links1 runs on (board_opts.machine). */
-enum board_machine {
-    BOARD_MACHINE_VIRT = 0, /* one virt board, a core per unit computer */
-    BOARD_MACHINE_AN521,    /* an521 boards, one QEMU each, two units each,
-                               joined by a shared file (proto/board_map_an521.h) */
-};
-
 struct board_opts {
-    int machine;            /* enum board_machine */
+    int machine;            /* enum machine_id (proto/machines.h) */
     int ncores;             /* -smp; on an521, 2 per board */
     const char *arith;      /* float | soft | fixed */
     const char *firmware;   /* ELF path, or NULL: found by board_find_firmware */

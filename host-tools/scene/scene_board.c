@@ -4,6 +4,7 @@
 #include <stdio.h>
 
 #include "proto/board_map.h"
+#include "proto/machines.h"
 #include "render/blob.h"
 #include "render/clip.h"
 #include "render/scene_load.h"
@@ -39,4 +40,32 @@ int sd_board_check(const uint8_t *buf, size_t len, size_t limit, char *err, size
              "%u clusters), more than the %zu bytes of %s",
              b.blob, b.prims, b.clusters, limit, BOARD_IMSU_BLOCK_NAME);
     return -1;
+}
+
+/* What an NC needs besides its clip lists: its tasks' stacks and the
+ * pixels of an area (kernel/param.h: TASKS_PER_CORE stacks of 16 KiB). */
+#define SD_NC_FIXED_BYTES (128u * 1024u)
+
+int sd_machine_check(const uint8_t *buf, size_t len, int machine, char *err, size_t errlen)
+{
+    const struct machine_limits *m = machine_limits(machine);
+    struct sd_board_bytes b;
+    char why[8];
+    if (!m || sd_board_bytes(buf, len, &b, why, sizeof why) != 0)
+        return 0;
+    if (b.blob > m->blob_bytes) {
+        snprintf(err, errlen,
+                 "the scene needs %zu bytes of board memory for its prepared frame (%u "
+                 "primitives, %u clusters), more than the %zu bytes of %s on the %s machine",
+                 b.blob, b.prims, b.clusters, m->blob_bytes, m->blob_name, m->name);
+        return -1;
+    }
+    if (m->nc_bytes && b.nc_working + SD_NC_FIXED_BYTES > m->nc_bytes) {
+        snprintf(err, errlen,
+                 "each NC needs %zu bytes for the scene's clip lists (%u clusters) and %u for "
+                 "its stacks and pixels, more than the %zu bytes of %s on the %s machine",
+                 b.nc_working, b.clusters, SD_NC_FIXED_BYTES, m->nc_bytes, m->nc_name, m->name);
+        return -1;
+    }
+    return 0;
 }

@@ -33,4 +33,9 @@ int sd_board_bytes(const uint8_t *buf, size_t len, struct sd_board_bytes *out, c
  * scene whose header is refused passes: the loader names that problem. */
 int sd_board_check(const uint8_t *buf, size_t len, size_t limit, char *err, size_t errlen);
 
+/* 0 when the scene fits machine (proto/machines.h): its blob an IMSU block,
+ * its NCs' working set an NC's memory; -1 with err naming the limit, the
+ * machine and the bytes when it does not. */
+int sd_machine_check(const uint8_t *buf, size_t len, int machine, char *err, size_t errlen);
+
 #endif

@@ -8,6 +8,7 @@
 
 #include "host-tools/scene/nff_read.h"
 #include "host-tools/scene/scene_board.h"
+#include "proto/machines.h"
 #include "host-tools/scene/scene_desc.h"
 
 void scene_file_opts_init(struct scene_file_opts *o)
@@ -20,6 +21,7 @@ void scene_file_opts_init(struct scene_file_opts *o)
     o->refraction = -1;
     o->no_auto_hierarchy = 0;
     o->mark_lost = 0;
+    o->machine = MACHINE_VIRT;
 }
 
 int scene_file_ends_with(const char *s, const char *suffix)
@@ -93,8 +95,28 @@ static int scene_file_read(const char *path, uint8_t **buf, size_t *len, char *e
     return 0;
 }
 
+static int scene_file_bytes_any(const char *path, const struct scene_file_opts *o,
+                                uint8_t **buf, size_t *len, char *err, size_t errlen);
+
 int scene_file_bytes(const char *path, const struct scene_file_opts *o, uint8_t **buf,
                      size_t *len, char *err, size_t errlen)
+{
+    if (scene_file_bytes_any(path, o, buf, len, err, errlen) != 0)
+        return -1;
+    char why[SD_ERR_MAX];
+    if (sd_machine_check(*buf, *len, o->machine, why, sizeof why) == 0)
+        return 0;
+    snprintf(err, errlen, "%s: %s", path, why);
+    free(*buf);
+    *buf = NULL;
+    *len = 0;
+    return -1;
+}
+
+/* The bytes, compiled or read, checked against the virt board's limits
+ * (the largest). */
+static int scene_file_bytes_any(const char *path, const struct scene_file_opts *o,
+                                uint8_t **buf, size_t *len, char *err, size_t errlen)
 {
     *buf = NULL;
     *len = 0;
