@@ -23,6 +23,8 @@ say = $(if $(Q),@printf '  %-6s %s\n' '$(1)' '$(2)';)
 
 B := build
 LIBC ?= picolibc
+# make run MACHINE=an521: the default scene on the an521 boards.
+MACHINE ?= virt
 # Firmware goes to build/ with picolibc, build/newlib/ with newlib.
 FWB := $(B)$(if $(filter newlib,$(LIBC)),/newlib)
 
@@ -241,7 +243,7 @@ deps:
 
 run: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all
-	$(Q)bash host-tools/scripts/make-run.sh
+	$(Q)MACHINE=$(MACHINE) bash host-tools/scripts/make-run.sh
 
 # The board halted under QEMU's gdb stub, gdb-multiarch attached with the
 # firmware's symbols (GDB_NCS, GDB_ARITH, GDB_ARGS; docs/firmware.md).

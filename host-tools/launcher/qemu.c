@@ -83,6 +83,10 @@ static int board_qemu_machine_args(const struct board *b, int board, const char 
             argv[n++] = "-global";
             argv[n++] = "sse-200.CPU0_DSP=on";
         }
+        /* The board's own Ethernet chip, on a user network shut off from
+         * the host and the world: QEMU otherwise warns it has no peer. */
+        argv[n++] = "-nic";
+        argv[n++] = "user,restrict=on,model=lan9118";
         snprintf(loader, loader_cap, "loader,addr=0x%x,data=%d,data-len=4",
                  (unsigned)AN521_BOARD_ID_ADDR, board);
         argv[n++] = "-device";
@@ -471,18 +475,17 @@ static int board_nc_board_reap(struct board *b, int k, int timeout_ms)
     return 1;
 }
 
-/* Ends the an521 NC boards' processes (they have no power control). */
+/* Ends the an521 NC boards' processes: they have no power control and
+ * nothing to keep (their state is in the shared file, which goes with the
+ * command), so they are killed outright. */
 static void board_stop_nc_boards(struct board *b)
 {
     for (int k = 1; k < AN521_MAX_BOARDS; k++)
         if (b->nc_board_pid[k])
-            kill(b->nc_board_pid[k], SIGTERM);
-    for (int k = 1; k < AN521_MAX_BOARDS; k++) {
-        if (b->nc_board_pid[k] && !board_nc_board_reap(b, k, BOARD_TERM_WAIT_MS)) {
             kill(b->nc_board_pid[k], SIGKILL);
+    for (int k = 1; k < AN521_MAX_BOARDS; k++)
+        if (b->nc_board_pid[k])
             board_nc_board_reap(b, k, BOARD_TERM_WAIT_MS);
-        }
-    }
 }
 
 int board_start(struct board *b, const struct board_opts *o)
