@@ -12,7 +12,8 @@ HT_SCENE_SRCS := host-tools/scene/scene_lex.c host-tools/scene/scene_parse.c \
 	host-tools/scene/scene_board.c host-tools/scene/scene_file.c \
 	host-tools/scene/scene_import.c host-tools/scene/scene_import_view.c \
 	host-tools/scene/scene_map_image.c host-tools/scene/scene_texture.c \
-	host-tools/scene/scene_write.c host-tools/scene/nff_read.c
+	host-tools/scene/scene_write.c host-tools/scene/nff_read.c \
+	host-tools/scene/scene_paper.c
 HT_SCENE_POV_SRCS := host-tools/scene/scene_pov.c
 # All but the board conversion (scene_board.c) know no num_t: one host build
 # serves every arithmetic (Makefile: ARITH_FREE_SRCS).
