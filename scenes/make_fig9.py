@@ -12,7 +12,7 @@ HEADER = """# fig9.scn: a still life in the manner of the paper's Fig. 9, the sc
 # a room with a mirror wall: vases and wine glasses turned from triangles,
 # a stack of glass and pearl balls, potted trees of ellipsoids, a
 # chequerboard of boxes.  %(prims)d primitives in %(clusters)d clusters, all
-# made by hand (room -> table -> groups -> objects -> bands of up to 48
+# made by hand (room -> table -> groups -> objects -> bands of 24
 # triangles);
 # clear glass, coloured glass and mirrors among them.  512x480, as the
 # paper's Table 2 ran.
@@ -132,7 +132,7 @@ def main():
             x = -1.2 + 0.8 * k
             out.open(d + 2, "vase%d_%d" % (g, k), "scale 1 %g 1" % (1.0 + 0.25 * (k % 3)),
                      "translate %g 0 0" % x)
-            lathe(out, d + 3, "vase%d_%d_body" % (g, k), mat, vase_profile(k + g), 12, 2)
+            lathe(out, d + 3, "vase%d_%d_body" % (g, k), mat, vase_profile(k + g), 12, 1)
             out.close(d + 2)
         out.close(d + 1)
     # wine glasses in the middle
@@ -142,7 +142,7 @@ def main():
         out.open(d + 2, "glass%d" % k, "translate %s 0 %s" % (f(0.9 * math.cos(a)),
                                                               f(0.6 * math.sin(a))))
         lathe(out, d + 3, "glass%d_body" % k, "clear" if k % 3 else "ruby", glass_profile(),
-              12, 2)
+              12, 1)
         out.close(d + 2)
     out.close(d + 1)
     # a stack of balls on the left front, a chequerboard on the right front

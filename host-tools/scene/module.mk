@@ -28,6 +28,13 @@ test_scene_parse_SRCS = tests/host/test_scene_parse.c $(SCENE_TEXT_SRCS)
 test_scene_parse_ARITH := double
 test_scene_parse_LIBS = $(SCENE_TEXT_LIBS)
 
+# Paper mode: what it sets in the scene, the compiled bytes and the render
+# arguments (scene_paper.c).
+HOST_TESTS += test_scene_paper
+test_scene_paper_SRCS = tests/host/test_scene_paper.c $(SCENE_TEXT_SRCS)
+test_scene_paper_ARITH := double
+test_scene_paper_LIBS = $(SCENE_TEXT_LIBS)
+
 # How ref and render both read a scene file (scene_file.c).
 HOST_TESTS += test_scene_file
 test_scene_file_SRCS = tests/host/test_scene_file.c $(SCENE_TEXT_SRCS)
