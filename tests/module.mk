@@ -54,6 +54,8 @@ test_render_link_SRCS := tests/host/test_render_link.c host-tools/gigs/render_fa
 test_render_link_ARITH := float
 
 BENCHES += tests/bench/bench_figures.sh
+# The paper's Table 1 on two cores (docs/results/paper-figures.md).
+BENCHES += tests/bench/bench_apu.sh
 
 # make figures: the paper's figures and tables (tests/bench/figures.sh) and
 # the chart of speed against accuracy (tests/sweeps/pareto.sh) into docs/figures.

@@ -11,13 +11,14 @@
 # computer waits) + twice a hand-off latency L, which shared memory on one
 # chip makes next to nothing and LINKS-1's transfer to its APU did not; the
 # table gives the L at which handing off stops paying.  Runs twice and
-# checks the counts are the same (the waiting is not counted).  Writes
-# APU_OUT (default docs/figures/table1.md); prints PASS/FAIL lines.
+# checks the counts are the same (the waiting is not counted).  Prints
+# PASS/FAIL lines and the table, and writes the table to APU_OUT when set
+# (APU_OUT=docs/figures/table1.md for the docs); exits 1 on a FAIL.
 set -u
 cd "$(dirname "$0")/../.."
 LINKS1=${LINKS1:-build/links1}
-OUT=${APU_OUT:-docs/figures/table1.md}
 b=$(mktemp -d /tmp/links1-apu.XXXXXX)
+OUT=${APU_OUT:-$b/table1.md}
 trap 'rm -rf "$b"' EXIT
 fail() { echo "FAIL bench_apu: $*"; exit 1; }
 ld="--specs=picolibc.specs --oslib=semihost -Wl,--defsym=__flash=0x40000000
@@ -33,6 +34,7 @@ for run in 1 2; do
     grep -q '^done' "$b/out$run.txt" || fail "the program did not finish: $(tail -n 2 "$b/out$run.txt")"
 done
 grep -E '^(PASS|FAIL) ' "$b/out1.txt"
+grep -q '^FAIL' "$b/out1.txt" && fail "a result was wrong"
 rounds=$(sed -n 's/^rounds //p' "$b/out1.txt")
 # Per core, the spans in order (end - begin), then per operation:
 #   core 0: soft, fixed, vfp (rounds each), then rounds x (send, read);
@@ -46,7 +48,7 @@ if [ "$(spans 0 "$b/marks1.txt" | md5sum)" = "$(spans 0 "$b/marks2.txt" | md5sum
     [ "$(spans 1 "$b/marks1.txt" | md5sum)" = "$(spans 1 "$b/marks2.txt" | md5sum)" ]; then
     echo "PASS apu_counts_deterministic"
 else
-    echo "FAIL apu_counts_deterministic: two runs counted differently"
+    fail "apu_counts_deterministic: two runs counted differently"
 fi
 [ "$(wc -l <"$b/c0")" = $((4 * (3 + 2 * rounds))) ] && [ "$(wc -l <"$b/c1")" = $((4 * rounds + 1)) ] ||
     fail "unexpected span counts: $(wc -l <"$b/c0") and $(wc -l <"$b/c1")"
@@ -74,7 +76,7 @@ END {
 {
     echo "Table 1 on the board's CPU: instructions per operation (mean of $rounds rounds, the loop"
     echo "included), core 0 the unit computer, core 1 its APU, single precision; time at 1 MIPS is"
-    echo "the instructions in µs, a hand-off adding 2 L (bash tests/bench/bench_apu.sh: links1 semihost"
+    echo "the instructions in µs, a hand-off adding 2 L (APU_OUT=F bash tests/bench/bench_apu.sh: links1 semihost"
     echo "APU.ELF --cores 2 --trace-marks F, twice, the counts the same)."
     echo
     cat "$b/table"
