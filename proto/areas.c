@@ -90,7 +90,8 @@ int areas_init(struct areas *s, enum areas_mode mode, uint32_t width, uint32_t h
                uint32_t ncs, uint32_t k)
 {
     memset(s, 0, sizeof *s);
-    if (mode != AREAS_STATIC && mode != AREAS_DYNAMIC && mode != AREAS_DECREASING)
+    if (mode != AREAS_STATIC && mode != AREAS_DYNAMIC && mode != AREAS_DECREASING &&
+        mode != AREAS_LINES)
         return AREAS_ERR_MODE;
     if (width == 0 || height == 0 || width > AREAS_MAX_DIM || height > AREAS_MAX_DIM)
         return AREAS_ERR_SIZE;
@@ -108,6 +109,8 @@ int areas_init(struct areas *s, enum areas_mode mode, uint32_t width, uint32_t h
     s->pixels_left = pixels;
     if (mode == AREAS_DECREASING)
         s->min_pixels = (pixels + s->k - 1) / s->k;
+    else if (mode == AREAS_LINES) /* one scanline a band, or k bands of whole lines */
+        s->bands = s->k < height ? s->k : height;
     else
         s->bands = areas_grid_bands(width, height, s->k);
     return AREAS_OK;
@@ -224,6 +227,7 @@ static const char *const areas_mode_names[] = {
     [AREAS_STATIC] = "static",
     [AREAS_DYNAMIC] = "dynamic",
     [AREAS_DECREASING] = "decreasing",
+    [AREAS_LINES] = "lines",
 };
 
 const char *areas_mode_name(enum areas_mode mode)
@@ -250,7 +254,7 @@ const char *areas_strerror(int status)
     case AREAS_OK:
         return "ok";
     case AREAS_ERR_MODE:
-        return "unknown balancing mode (want static, dynamic or decreasing)";
+        return "unknown balancing mode (want static, dynamic, decreasing or lines)";
     case AREAS_ERR_SIZE: { /* a block: a label takes no declaration before C23 */
         _Static_assert(AREAS_MAX_DIM == 4096u, "update the message below");
         return "screen width and height must be 1..4096 (AREAS_MAX_DIM)";

@@ -15,6 +15,11 @@
  *                     never fewer pixels than one area of the k-area grid.
  *                     First bands of whole scanlines, then equal pieces of
  *                     one scanline; sizes never grow.
+ *   AREAS_LINES       simple dynamic on the paper's job unit, "one scanline
+ *                     or part of one": k >= height cuts every scanline into
+ *                     k/height equal pieces (rounded as the grid rounds),
+ *                     k < height gives k bands of whole scanlines.  Given
+ *                     out one per area request, as AREAS_DYNAMIC.
  *
  * Every schedule covers the screen exactly once: every area lies inside the
  * screen, no two overlap, together they are the whole screen.  Areas come
@@ -43,7 +48,9 @@ enum areas_mode {
     AREAS_STATIC = 0,
     AREAS_DYNAMIC = 1,
     AREAS_DECREASING = 2,
+    AREAS_LINES = 3,
 };
+#define AREAS_MODES 4
 
 enum areas_status {
     AREAS_OK = 0,
@@ -91,7 +98,7 @@ void areas_settings(enum areas_mode mode, uint32_t ncs, uint32_t k, uint32_t fac
                     uint32_t *k_out, uint32_t *factor_out);
 
 /* Starts a schedule for a width x height screen shared by ncs NCs.  k is
- * the grid's area count for AREAS_DYNAMIC (0 = AREAS_DEFAULT_K) and the
+ * the grid's area count for AREAS_DYNAMIC and AREAS_LINES (0 = AREAS_DEFAULT_K) and the
  * smallest-area bound of AREAS_DECREASING (0 = areas_decreasing_defaults,
  * which also sets the factor); AREAS_STATIC ignores it.  A grid
  * never has more areas than pixels: k (or ncs) is clamped to width*height.
@@ -111,7 +118,7 @@ uint32_t areas_count(const struct areas *s);
 /* Areas handed out so far. */
 uint32_t areas_handed(const struct areas *s);
 
-/* "static", "dynamic", "decreasing". */
+/* "static", "dynamic", "decreasing", "lines". */
 const char *areas_mode_name(enum areas_mode mode);
 /* Parses a mode name; AREAS_OK, or AREAS_ERR_MODE for an unknown name. */
 int areas_mode_parse(const char *name, enum areas_mode *mode);

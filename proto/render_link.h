@@ -51,7 +51,12 @@ enum link_clip { LINK_CLIP_AUTO = 0, LINK_CLIP_LISTS = 1, LINK_CLIP_TREE = 2 };
 #define LINK_CLIP_MODES 3
 
 /* Balancing modes: the values of proto/areas.h enum areas_mode. */
-enum link_balance { LINK_BALANCE_STATIC = 0, LINK_BALANCE_DYNAMIC = 1, LINK_BALANCE_DECREASING = 2 };
+enum link_balance {
+    LINK_BALANCE_STATIC = 0,
+    LINK_BALANCE_DYNAMIC = 1,
+    LINK_BALANCE_DECREASING = 2,
+    LINK_BALANCE_LINES = 3, /* simple dynamic on whole and partial scanlines */
+};
 
 /* CMD_RENDER arguments. */
 #define LINK_RENDER_ARGS_SIZE 12

@@ -180,7 +180,12 @@ enum scn_section {
  * by trc(th) F (tinted by the object's colour). */
 #define SCN_OPT_AMBIENT_SHADOWED 0x0040u
 #define SCN_OPT_UNTINTED_SHADOWS 0x0080u
-#define SCN_OPT_KNOWN 0x00ffu
+/* PAPER: the scene asks for the paper's mode (`options { paper on }`,
+ * docs/scene-format.md): the host tools set the render's schedule from it
+ * (lines areas, asking when finished, the clipping lists); the renderer
+ * takes no notice of it, the rest of paper mode is compiled in already. */
+#define SCN_OPT_PAPER 0x0100u
+#define SCN_OPT_KNOWN 0x01ffu
 
 /* ------------------------------------------------------- LIGHTS record */
 #define SCN_LIGHT_SIZE 48

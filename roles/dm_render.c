@@ -309,11 +309,11 @@ void dm_cmd_render(uint16_t cmd)
         hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_RENDER: no scene loaded (CMD_SCENE_LOAD first)");
         return;
     }
-    if (a.frame >= dm_scene.frames || a.balance > LINK_BALANCE_DECREASING ||
+    if (a.frame >= dm_scene.frames || a.balance > LINK_BALANCE_LINES ||
         (a.flags & ~LINK_RENDER_FLAGS_ALL) || a.guided > AREAS_MAX_GUIDED_FACTOR ||
         a.clip >= LINK_CLIP_MODES) {
         hostlink_error(cmd, LINK_ERR_BAD_ARGS,
-                       "CMD_RENDER: frame %u (scene has %u), balance %u (0..2), flags 0x%x, "
+                       "CMD_RENDER: frame %u (scene has %u), balance %u (0..3), flags 0x%x, "
                        "guided factor %u (0..64) or clipping %u (0..2) out of range",
                        (unsigned)a.frame, (unsigned)dm_scene.frames, (unsigned)a.balance,
                        (unsigned)a.flags, (unsigned)a.guided, (unsigned)a.clip);

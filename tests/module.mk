@@ -28,7 +28,7 @@ BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
 	tests/board/render_resume.sh tests/board/render_link_noise.sh \
 	tests/board/render_trace.sh tests/board/render_refraction.sh tests/board/figures_small.sh \
 	tests/board/render_scaled.sh tests/board/render_auto.sh tests/board/render_density_steps.sh \
-	tests/board/render_lights.sh tests/board/an521.sh
+	tests/board/render_lights.sh tests/board/render_paper.sh tests/board/an521.sh
 RENDER_FULL_TESTS := tests/board/render_grid_full.sh tests/board/render_faults_full.sh \
 	tests/board/render_faults_silent_full.sh
 
@@ -54,6 +54,8 @@ test_render_link_SRCS := tests/host/test_render_link.c host-tools/gigs/render_fa
 test_render_link_ARITH := float
 
 BENCHES += tests/bench/bench_figures.sh
+# The paper's Table 1 on two cores (docs/results/paper-figures.md).
+BENCHES += tests/bench/bench_apu.sh
 
 # make figures: the paper's figures and tables (tests/bench/figures.sh) and
 # the chart of speed against accuracy (tests/sweeps/pareto.sh) into docs/figures.

@@ -22,6 +22,7 @@
 #include "host-tools/opts/out_file.h"
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_file.h"
+#include "host-tools/scene/scene_paper.h"
 #include "proto/areas.h"
 
 #define RENDER_MAX_JOBS 16 /* SCENE -o OUT pairs in one run */
@@ -30,6 +31,7 @@ struct render_job {
     const char *scene, *out;
     uint8_t *bytes; /* the compiled scene, read before the board boots */
     size_t len;
+    struct scene_file_info info; /* how it was compiled */
 };
 
 /* Where a render command's wall time goes, ms, and QEMU's host CPU time
@@ -63,6 +65,8 @@ struct render_opts {
     double target_db;    /* --target-db D (-1: not given) */
     struct render_wall wall; /* where the command's wall time went */
     uint32_t traced_w, traced_h, traced_bytes; /* the traced frame's size, broadcast */
+    struct link_render_args traced_args; /* what the traced frame ran with */
+    unsigned gave;      /* SCENE_PAPER_GAVE_*: render options given, which paper mode keeps */
 };
 
 static void render_usage(FILE *out)
@@ -77,8 +81,9 @@ static void render_usage(FILE *out)
             "                   keeps --target-db D (default 40) dB against double on a\n"
             "                   low-resolution pre-render, for a unit computer with VFP or,\n"
             "                   with --fpu none, without (docs/renderer.md)\n"
-            "  --balance M      static, dynamic or decreasing (default decreasing)\n"
-            "  --areas K        areas of the dynamic grid (default %d); smallest-area bound of\n"
+            "  --balance M      static, dynamic, decreasing (default) or lines: simple dynamic\n"
+            "                   on whole and partial scanlines (the paper's job unit)\n"
+            "  --areas K        areas of the dynamic or lines grid (default %d); smallest-area bound of\n"
             "                   decreasing (default: by NC count, docs/areas.md)\n"
             "  --guided F       decreasing: each area takes 1/(F * NCs) of what is left\n"
             "                   (1..64; default: by NC count)\n"
@@ -97,6 +102,11 @@ static void render_usage(FILE *out)
             "  --density-steps N  steps of a density sphere's root finder (2..256;\n"
             "                   scenes default 24): a feature thinner than a step is missed\n"
             "  --mark-lost      paint pixels that lost precision magenta (text scenes)\n"
+            "  --paper          paper mode (as options { paper on }): every choice the paper\n"
+            "                   made: src/trc by angle, a fixed depth (min_weight 0), --balance\n"
+            "                   lines --areas HEIGHT, --ask finished, --clip lists, no\n"
+            "                   automatic hierarchy where the scene has clusters of its own;\n"
+            "                   an option given beside it wins; one line says what was set\n"
             "  --no-yclip --no-xclip --no-bbox --no-hierarchy\n"
             "                   switch a speed-up off (the image stays the same)\n"
             "  --clip M         how the NCs clip the screen: auto (default: the paper's lists\n"
@@ -159,6 +169,7 @@ enum render_opt_code {
     RENDER_OPT_TRACE,
     RENDER_OPT_FPU,
     RENDER_OPT_TARGET_DB,
+    RENDER_OPT_PAPER,
 };
 
 static const struct option render_options[] = {
@@ -195,6 +206,7 @@ static const struct option render_options[] = {
     {"trace", required_argument, NULL, RENDER_OPT_TRACE},
     {"fpu", required_argument, NULL, RENDER_OPT_FPU},
     {"target-db", required_argument, NULL, RENDER_OPT_TARGET_DB},
+    {"paper", no_argument, NULL, RENDER_OPT_PAPER},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -215,7 +227,7 @@ static int render_add_job(struct render_opts *o, int code, const char *arg)
                 RENDER_MAX_JOBS);
         return -1;
     }
-    o->jobs[o->njobs++] = (struct render_job){arg, NULL, NULL, 0};
+    o->jobs[o->njobs++] = (struct render_job){arg, NULL, NULL, 0, {-1, -1}};
     return 0;
 }
 
@@ -236,13 +248,15 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
         return 0;
     case RENDER_OPT_BALANCE:
         if (areas_mode_parse(c->arg, &m) != AREAS_OK)
-            return cli_bad_value(c, "static, dynamic or decreasing");
+            return cli_bad_value(c, "static, dynamic, decreasing or lines");
         o->args.balance = (uint8_t)m;
+        o->gave |= SCENE_PAPER_GAVE_BALANCE;
         return 0;
     case RENDER_OPT_AREAS:
         if (cli_long(c, 10, 1, 1 << 20, &n) < 0)
             return -1;
         o->args.areas = (uint32_t)n;
+        o->gave |= SCENE_PAPER_GAVE_AREAS;
         return 0;
     case RENDER_OPT_GUIDED:
         if (cli_long(c, 10, 1, AREAS_MAX_GUIDED_FACTOR, &n) < 0)
@@ -256,6 +270,7 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
             o->args.flags |= LINK_RENDER_ASK_WHEN_DONE;
         else
             return cli_bad_value(c, "ahead or finished");
+        o->gave |= SCENE_PAPER_GAVE_ASK;
         return 0;
     case RENDER_OPT_FRAME:
     case RENDER_OPT_FRAMES:
@@ -299,6 +314,7 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
             o->args.clip = LINK_CLIP_TREE;
         else
             return cli_bad_value(c, "auto, lists or tree");
+        o->gave |= SCENE_PAPER_GAVE_CLIP;
         return 0;
     case RENDER_OPT_NO_XCLIP:
         o->args.flags |= LINK_RENDER_NO_XCLIP;
@@ -360,6 +376,9 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
         return 0;
     case RENDER_OPT_TARGET_DB:
         return cli_double(c, 0, 1, 99, NULL, &o->target_db);
+    case RENDER_OPT_PAPER:
+        o->scene.paper = 1;
+        return 0;
     }
     return -1; /* CLI_BAD: reported already */
 }
@@ -490,8 +509,8 @@ static int render_read_scenes(struct render_opts *o)
     for (int j = 0; j < o->njobs; j++) {
         char err[SD_ERR_MAX];
         struct render_job *job = &o->jobs[j];
-        if (scene_file_bytes(job->scene, &o->scene, &job->bytes, &job->len, err,
-                             sizeof err) != 0) {
+        if (scene_file_bytes_info(job->scene, &o->scene, &job->bytes, &job->len, &job->info,
+                                  err, sizeof err) != 0) {
             fprintf(stderr, "links1 render: %s\n", err);
             return -1;
         }
@@ -499,19 +518,23 @@ static int render_read_scenes(struct render_opts *o)
     return 0;
 }
 
-/* "decreasing, K 32768, factor 2, asking ahead": the schedule the RC ran. */
+/* "decreasing, K 32768, factor 2, asking ahead, clipping auto": the
+ * schedule the RC ran and how the NCs were told to clip. */
 static void render_schedule_name(const struct link_render_args *a, uint32_t ncs, char *out,
                                  size_t cap)
 {
-    const char *ask = a->flags & LINK_RENDER_ASK_WHEN_DONE ? "asking when finished"
-                                                            : "asking ahead";
+    static const char *const clips[LINK_CLIP_MODES] = {"auto", "lists", "tree"};
+    char ask[64];
+    snprintf(ask, sizeof ask, "%s, clipping %s",
+             a->flags & LINK_RENDER_ASK_WHEN_DONE ? "asking when finished" : "asking ahead",
+             a->clip < LINK_CLIP_MODES ? clips[a->clip] : "?");
     enum areas_mode m = (enum areas_mode)a->balance;
     uint32_t k, factor;
     areas_settings(m, ncs, a->areas, a->guided, &k, &factor);
     if (m == AREAS_DECREASING) {
         snprintf(out, cap, "%s, K %u, factor %u, %s", areas_mode_name(m), (unsigned)k,
                  (unsigned)factor, ask);
-    } else if (m == AREAS_DYNAMIC) {
+    } else if (m == AREAS_DYNAMIC || m == AREAS_LINES) {
         snprintf(out, cap, "%s, K %u, %s", areas_mode_name(m), (unsigned)k, ask);
     } else {
         snprintf(out, cap, "%s, %s", areas_mode_name(m), ask);
@@ -522,7 +545,7 @@ static void render_summary(const char *path, const struct link_render_stats *s,
                            const struct image *img, const struct link_render_args *a,
                            double seconds, long long upload_ms, long long pull_ms)
 {
-    char sched[96];
+    char sched[160];
     render_schedule_name(a, s->ncs, sched, sizeof sched);
     printf("links1 render: frame %u %dx%d -> %s: %u NCs, %u areas (%s), %.1f s "
            "(board: prepare %u ms, render %u ms; upload %lld ms, pull %lld ms); rays %llu primary, %llu shadow, "
@@ -610,6 +633,21 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         return -1;
     }
     int ppm = o->ppm || scene_file_ends_with(j->out, ".ppm");
+    struct link_render_args job_args = o->args;
+    struct scene_paper paper;
+    char why[SD_ERR_MAX];
+    if (scene_paper_read(j->bytes, j->len, &paper, why, sizeof why) != 0) {
+        fprintf(stderr, "links1 render: %s: %s\n", j->scene, why);
+        return -1;
+    }
+    if (paper.paper) {
+        char line[512];
+        scene_paper_args(&paper, o->gave, &job_args);
+        scene_paper_line(&paper, &job_args, j->info.auto_hierarchy, j->info.own_clusters, line,
+                         sizeof line);
+        printf("links1 render: %s: %s\n", j->scene, line);
+    }
+    o->traced_args = job_args;
     for (long f = first; f <= last; f++) {
         char path[4096], err[SD_ERR_MAX];
         if (o->many)
@@ -620,7 +658,7 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
             printf("links1 render: frame %ld: %s is there already (--resume): kept\n", f, path);
             continue;
         }
-        struct link_render_args a = o->args;
+        struct link_render_args a = job_args;
         a.frame = (uint32_t)f;
         if (f < last)
             a.flags |= LINK_RENDER_PREPARE_NEXT;
@@ -698,10 +736,10 @@ static int render_write_trace(const struct render_opts *o, const char *marks_pat
         fprintf(stderr, "links1 render: --trace %s: %s\n", o->trace, err);
         return -1;
     }
-    t.balance = o->args.balance;
-    t.k = o->args.areas;
-    t.guided = o->args.guided;
-    t.flags = o->args.flags & ~(uint32_t)LINK_RENDER_TRACE;
+    t.balance = o->traced_args.balance;
+    t.k = o->traced_args.areas;
+    t.guided = o->traced_args.guided;
+    t.flags = o->traced_args.flags & ~(uint32_t)LINK_RENDER_TRACE;
     t.broadcast_bytes = o->traced_bytes;
     struct out_file of;
     int rc = out_file_open(&of, o->trace, err, sizeof err);

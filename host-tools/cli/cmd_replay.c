@@ -18,7 +18,7 @@ struct replay_opts {
     uint32_t ncs[REPLAY_MAX_COUNTS];
     int ncounts;
     struct replay_cfg cfg;
-    int have_balance, have_k, have_guided, have_ask, per_nc, check;
+    int have_balance, have_k, have_guided, have_ask, per_nc, check, paper;
     uint32_t scale;
 };
 
@@ -34,8 +34,10 @@ static void replay_usage(FILE *out)
             "options:\n"
             "  --ncs LIST       NC counts, e.g. 1,2,4,8,16,32,64,128,254\n"
             "what-if options:\n"
-            "  --balance M      static, dynamic or decreasing\n"
-            "  --areas K        areas of the dynamic grid / smallest-area bound of decreasing\n"
+            "  --balance M      static, dynamic, decreasing or lines (simple dynamic on whole\n"
+            "                   and partial scanlines, the paper's job unit)\n"
+            "  --areas K        areas of the dynamic or lines grid / smallest-area bound of\n"
+            "                   decreasing\n"
             "  --mips R         instructions per microsecond of every unit (default %.1f)\n"
             "  --line-us U      latency of one serial-line message (default %.0f)\n"
             "  --byte-us B      microseconds per byte on a line (default %.1f: 19,200 baud)\n"
@@ -43,6 +45,9 @@ static void replay_usage(FILE *out)
             "                   it expects to finish the current one; finished: once it\n"
             "                   has finished it (the paper's rule); --prefetch = --ask ahead\n"
             "  --guided F       decreasing: each area takes 1/(F * NCs) of what is left\n"
+            "  --paper          the paper's schedule: --balance lines --areas HEIGHT --ask\n"
+            "                   finished (an option given beside it wins; the NCs' clipping\n"
+            "                   and the scene's settings are the trace's)\n"
             "  --pipelined      the DM prepared the frame during the previous one: the\n"
             "                   frame starts at the RC's broadcast\n"
             "  --first-in-broadcast  the RC puts each NC's first area into the broadcast\n"
@@ -72,6 +77,7 @@ enum replay_opt_code {
     REPLAY_OPT_PER_NC,
     REPLAY_OPT_CHECK,
     REPLAY_OPT_SCALE,
+    REPLAY_OPT_PAPER,
 };
 
 static const struct option replay_options[] = {
@@ -90,6 +96,7 @@ static const struct option replay_options[] = {
     {"per-nc", no_argument, NULL, REPLAY_OPT_PER_NC},
     {"check", no_argument, NULL, REPLAY_OPT_CHECK},
     {"scale", required_argument, NULL, REPLAY_OPT_SCALE},
+    {"paper", no_argument, NULL, REPLAY_OPT_PAPER},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -127,7 +134,7 @@ static int replay_take(struct replay_opts *o, const struct cli *c, int code)
                    ? 0 : cli_bad_value(c, "NC counts 1..4096 separated by commas (at most 64)");
     case REPLAY_OPT_BALANCE:
         if (areas_mode_parse(c->arg, &m) != AREAS_OK)
-            return cli_bad_value(c, "static, dynamic or decreasing");
+            return cli_bad_value(c, "static, dynamic, decreasing or lines");
         o->cfg.balance = m;
         o->have_balance = 1;
         return 0;
@@ -143,6 +150,9 @@ static int replay_take(struct replay_opts *o, const struct cli *c, int code)
         return cli_double(c, 0, 0, 1e9, "microseconds, 0 or more", &o->cfg.line_us);
     case REPLAY_OPT_BYTE_US:
         return cli_double(c, 0, 0, 1e9, "microseconds, 0 or more", &o->cfg.byte_us);
+    case REPLAY_OPT_PAPER:
+        o->paper = 1;
+        return 0;
     case REPLAY_OPT_PREFETCH:
         o->cfg.prefetch = 1;
         o->have_ask = 1;
@@ -228,6 +238,18 @@ int cmd_replay(int argc, char **argv)
         fprintf(stderr, "links1 replay: %s: %s\n", o.file, err);
         trace_free(&t);
         return 1;
+    }
+    if (o.paper) { /* the paper's schedule, but what was given beside it */
+        if (!o.have_balance)
+            o.cfg.balance = AREAS_LINES;
+        if (!o.have_k)
+            o.cfg.k = t.height;
+        if (!o.have_ask)
+            o.cfg.prefetch = 0;
+        o.have_balance = o.have_k = o.have_ask = 1;
+        printf("links1 replay: paper mode: areas %s K %u, ask %s\n",
+               areas_mode_name(o.cfg.balance), (unsigned)o.cfg.k,
+               o.cfg.prefetch ? "ahead" : "finished");
     }
     if (!o.have_balance)
         o.cfg.balance = (enum areas_mode)t.balance;

@@ -1,31 +1,70 @@
 /* cmd_semihost.c: `links1 semihost ELF`: runs a bare-metal program that
- * talks through semihosting (e.g. tests/bench/check_arm_bits.sh's renders)
- * on the board's CPU, its output on stdout, through the one launcher. */
+ * talks through semihosting (e.g. tests/bench/check_arm_bits.sh's renders,
+ * tests/bench/bench_apu.sh's Table 1) on the board's CPU, its output on
+ * stdout, through the one launcher. */
 #include <stdio.h>
 #include <string.h>
 
 #include "host-tools/launcher/launcher.h"
 #include "host-tools/cli/links1_cmds.h"
+#include "host-tools/opts/cli_opt.h"
 
 static void cmd_semihost_usage(FILE *out)
 {
-    fprintf(out, "usage: links1 semihost ELF\n"
-                 "Runs ELF on one cortex-a15 core of the plain virt board (%d MiB) with\n"
-                 "semihosting on; its console output goes to stdout.  The program must end\n"
-                 "the run itself (semihosting SYS_EXIT).  Exits with QEMU's status.\n",
+    fprintf(out, "usage: links1 semihost ELF [--cores N] [--trace-marks FILE]\n"
+                 "Runs ELF on the plain virt board (cortex-a15, %d MiB) with semihosting on;\n"
+                 "its console output goes to stdout.  The program must end the run itself\n"
+                 "(semihosting SYS_EXIT).  Exits with QEMU's status.\n"
+                 "  --cores N        cores of the board (1..8, default 1); the program starts\n"
+                 "                   the others (PSCI CPU_ON)\n"
+                 "  --trace-marks F  each core's trace marks (proto/insn_mark.h) with its\n"
+                 "                   instruction count, one 'core kind count' line each\n",
             BOARD_DEFAULT_RAM_MB);
 }
 
+enum { SEMIHOST_OPT_CORES = CLI_OWN_CODES, SEMIHOST_OPT_TRACE };
+
+static const struct option semihost_options[] = {
+    {"cores", required_argument, NULL, SEMIHOST_OPT_CORES},
+    {"trace-marks", required_argument, NULL, SEMIHOST_OPT_TRACE},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0},
+};
+
 int cmd_semihost(int argc, char **argv)
 {
-    if (argc == 2 && (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0)) {
-        cmd_semihost_usage(stdout);
-        return 0;
+    const char *elf = NULL, *trace = NULL;
+    long cores = 1;
+    struct cli c;
+    cli_init(&c, "links1 semihost", argc, argv, "h", semihost_options);
+    for (int code; (code = cli_next(&c)) != -1;) {
+        switch (code) {
+        case 'h':
+            cmd_semihost_usage(stdout);
+            return 0;
+        case SEMIHOST_OPT_CORES:
+            if (cli_long(&c, 10, 1, 8, &cores) < 0)
+                return 2;
+            break;
+        case SEMIHOST_OPT_TRACE:
+            trace = c.arg;
+            break;
+        case CLI_OPERAND:
+            if (elf) {
+                fprintf(stderr, "links1 semihost: %s: one program at a time\n", c.arg);
+                return 2;
+            }
+            elf = c.arg;
+            break;
+        default:
+            cmd_semihost_usage(stderr);
+            return 2;
+        }
     }
-    if (argc != 2 || argv[1][0] == '-') {
+    if (!elf) {
         cmd_semihost_usage(stderr);
         return 2;
     }
-    int r = board_run_semihost(argv[1], BOARD_DEFAULT_RAM_MB);
+    int r = board_run_semihost_smp(elf, BOARD_DEFAULT_RAM_MB, (int)cores, trace);
     return r < 0 ? 1 : r;
 }

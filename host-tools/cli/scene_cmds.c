@@ -235,6 +235,7 @@ int scene_cmd_ref(int argc, char **argv)
         case REF_OPT_REFRACTION:
         case REF_OPT_REFRACTIONLESS:
         case REF_OPT_NO_AUTO_HIERARCHY:
+        case REF_OPT_PAPER:
         case REF_OPT_FRAME:
             for (int k = from; k < optind; k++)
                 words[nw++] = argv[k];

@@ -91,6 +91,10 @@ int board_start(struct board *b, const struct board_opts *o);
  * emulator (semihosting SYS_EXIT).  Returns QEMU's exit status, or -1 after
  * printing why. */
 int board_run_semihost(const char *elf, int ram_mb);
+/* The same on cores cores of the board (1..8: the program starts the others
+ * itself, PSCI CPU_ON), with the instruction-counting plugin writing each
+ * core's trace marks (proto/insn_mark.h) to trace_out when it is not NULL. */
+int board_run_semihost_smp(const char *elf, int ram_mb, int cores, const char *trace_out);
 
 /* The link ended (board.process_gone): what became of QEMU, into desc (a
  * named board by its name). */

@@ -235,20 +235,44 @@ static void board_qemu_exec(struct board *b, int qemu_fd)
 
 int board_run_semihost(const char *elf, int ram_mb)
 {
+    return board_run_semihost_smp(elf, ram_mb, 1, NULL);
+}
+
+int board_run_semihost_smp(const char *elf, int ram_mb, int cores, const char *trace_out)
+{
     if (access(elf, R_OK) < 0) {
         fprintf(stderr, "links1: program %s: %s\n", elf, strerror(errno));
         return -1;
     }
-    char mem[32];
+    if (cores < 1 || cores > 8) {
+        fprintf(stderr, "links1: semihosting program on %d cores: 1..8\n", cores);
+        return -1;
+    }
+    char mem[32], smp[16], plugin[3 * PATH_MAX];
     snprintf(mem, sizeof mem, "%dM", ram_mb);
+    snprintf(smp, sizeof smp, "%d", cores);
     const char *qemu = board_qemu_binary();
-    /* One core of the plain virt board; the program's semihosted console
-     * is QEMU's stdio chardev, so its output is our stdout. */
-    const char *argv[] = {qemu, "-M", "virt", "-cpu", "cortex-a15", "-m", mem,
-                          "-display", "none", "-nodefaults", "-no-reboot",
-                          "-chardev", "stdio,id=semihost,signal=off",
-                          "-semihosting-config", "enable=on,target=native,chardev=semihost",
-                          "-kernel", elf, NULL};
+    /* The plain virt board; the program's semihosted console is QEMU's
+     * stdio chardev, so its output is our stdout. */
+    const char *argv[24] = {qemu, "-M", "virt", "-cpu", "cortex-a15", "-smp", smp, "-m", mem,
+                            "-display", "none", "-nodefaults", "-no-reboot",
+                            "-chardev", "stdio,id=semihost,signal=off",
+                            "-semihosting-config", "enable=on,target=native,chardev=semihost",
+                            "-kernel", elf};
+    int n = 19;
+    if (trace_out) {
+        const char *so = getenv("LINKS1_INSN_PLUGIN");
+        char self[PATH_MAX];
+        if (!so || !*so) {
+            self_dir(self, sizeof self);
+            snprintf(plugin, sizeof plugin, "%s/insn-count.so,trace=%s", self, trace_out);
+        } else {
+            snprintf(plugin, sizeof plugin, "%s,trace=%s", so, trace_out);
+        }
+        argv[n++] = "-plugin";
+        argv[n++] = plugin;
+    }
+    argv[n] = NULL;
     fflush(NULL);
     pid_t pid = fork();
     if (pid < 0) {

@@ -81,6 +81,8 @@ void arith_auto_scene_words(const struct scene_file_opts *so, long frame,
     }
     if (so->no_auto_hierarchy)
         w->words[n++] = "--no-auto-hierarchy";
+    if (so->paper)
+        w->words[n++] = "--paper";
     snprintf(w->frame, sizeof w->frame, "%ld", frame);
     w->words[n++] = "--frame";
     w->words[n++] = w->frame;

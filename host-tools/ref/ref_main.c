@@ -35,6 +35,7 @@ static int ref_usage(FILE *out, int status)
                  "  [--no-auto-hierarchy] [--refraction on|off] [--refractionless on|off]\n"
                  "  [--max-depth D] [--min-weight W] [--density-steps N]\n"
                  "  [--mark-lost]  (paint pixels that lost precision magenta)\n"
+                 "  [--paper]  (the scene's part of paper mode, as links1 render --paper)\n"
                  "  --arith auto [--fpu vfp|none] [--target-db D]: the cheapest arithmetic of a\n"
                  "  unit computer with VFP (or none) that keeps D dB (default 40) against double,\n"
                  "  judged from a low-resolution pre-render (docs/renderer.md)\n"
@@ -209,6 +210,9 @@ static int ref_parse(int argc, char **argv, struct ref_args *a)
             break;
         case REF_OPT_NO_AUTO_HIERARCHY:
             a->scene.no_auto_hierarchy = 1;
+            break;
+        case REF_OPT_PAPER:
+            a->scene.paper = 1;
             break;
         case REF_OPT_REFRACTION:
             if (strcmp(c.arg, "on") != 0 && strcmp(c.arg, "off") != 0)

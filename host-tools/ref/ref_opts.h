@@ -18,6 +18,7 @@ enum ref_opt_code {
     REF_OPT_DENSITY_STEPS,
     REF_OPT_MARK_LOST,
     REF_OPT_REFRACTIONLESS,
+    REF_OPT_PAPER,
     REF_OPT_ARITH, /* links1 ref only, with the two below */
     REF_OPT_FPU,
     REF_OPT_TARGET_DB,
@@ -36,6 +37,7 @@ enum ref_opt_code {
     {"density-steps", required_argument, NULL, REF_OPT_DENSITY_STEPS}, \
     {"mark-lost", no_argument, NULL, REF_OPT_MARK_LOST}, \
     {"refractionless", required_argument, NULL, REF_OPT_REFRACTIONLESS}, \
+    {"paper", no_argument, NULL, REF_OPT_PAPER}, \
     {"help", no_argument, NULL, 'h'}
 
 #endif

@@ -12,7 +12,8 @@ HT_SCENE_SRCS := host-tools/scene/scene_lex.c host-tools/scene/scene_parse.c \
 	host-tools/scene/scene_board.c host-tools/scene/scene_file.c \
 	host-tools/scene/scene_import.c host-tools/scene/scene_import_view.c \
 	host-tools/scene/scene_map_image.c host-tools/scene/scene_texture.c \
-	host-tools/scene/scene_write.c host-tools/scene/nff_read.c
+	host-tools/scene/scene_write.c host-tools/scene/nff_read.c \
+	host-tools/scene/scene_paper.c
 HT_SCENE_POV_SRCS := host-tools/scene/scene_pov.c
 # All but the board conversion (scene_board.c) know no num_t: one host build
 # serves every arithmetic (Makefile: ARITH_FREE_SRCS).
@@ -26,6 +27,13 @@ test_scene_load_LIBS = $(SCENE_TEXT_LIBS)
 test_scene_parse_SRCS = tests/host/test_scene_parse.c $(SCENE_TEXT_SRCS)
 test_scene_parse_ARITH := double
 test_scene_parse_LIBS = $(SCENE_TEXT_LIBS)
+
+# Paper mode: what it sets in the scene, the compiled bytes and the render
+# arguments (scene_paper.c).
+HOST_TESTS += test_scene_paper
+test_scene_paper_SRCS = tests/host/test_scene_paper.c $(SCENE_TEXT_SRCS)
+test_scene_paper_ARITH := double
+test_scene_paper_LIBS = $(SCENE_TEXT_LIBS)
 
 # How ref and render both read a scene file (scene_file.c).
 HOST_TESTS += test_scene_file

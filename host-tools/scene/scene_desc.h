@@ -92,7 +92,16 @@ struct sd_scene {
     int no_auto_hierarchy;  /* 1: sd_compile keeps the author's clusters
                                as they are (scene_bvh.h); text form
                                `options { auto_hierarchy off }` */
+    int paper;              /* 1: paper mode (`options { paper on }`,
+                               --paper; sd_paper_apply) */
+    unsigned written;       /* SD_WROTE_*: options the text set itself */
 };
+
+/* Options a scene's options block wrote itself: paper mode leaves them as
+ * written. */
+#define SD_WROTE_MIN_WEIGHT 1u
+#define SD_WROTE_FRESNEL 2u
+#define SD_WROTE_AUTO_HIERARCHY 4u
 
 #define SD_ERR_MAX 512 /* room for "file:line:col: message" */
 
@@ -104,6 +113,14 @@ int sd_parse_text(const char *name, const char *text, struct sd_scene *s,
 void sd_free(struct sd_scene *s);
 /* The view of a scene that sets none: camera, size, depth, options. */
 void sd_view_defaults(struct sd_view *v);
+
+/* Paper mode (docs/scene-format.md, "Paper mode"): every choice the paper
+ * made that the scene holds, except those the text wrote itself (written):
+ * min_weight 0 (a fixed depth, no weight cut-off), no automatic hierarchy
+ * when the scene has clusters of its own (more than the root), and the
+ * SCN_OPT_PAPER flag for the render's schedule.  src/trc by angle is the
+ * text form's default already (a material's own `fresnel 0` stays). */
+void sd_paper_apply(struct sd_scene *s);
 
 /* The compiled form in a malloc'ed buffer (*out, *len); -1 with err if the
  * scene exceeds a limit of the format.  Unless s->no_auto_hierarchy, big

@@ -21,6 +21,7 @@ void scene_file_opts_init(struct scene_file_opts *o)
     o->refraction = -1;
     o->no_auto_hierarchy = 0;
     o->mark_lost = 0;
+    o->paper = 0;
     o->machine = MACHINE_VIRT;
 }
 
@@ -38,11 +39,14 @@ int scene_file_parse(const char *path, struct sd_scene *s, char *err, size_t err
 }
 
 static int scene_file_compile(const char *path, const struct scene_file_opts *o, uint8_t **buf,
-                              size_t *len, char *err, size_t errlen)
+                              size_t *len, struct scene_file_info *info, char *err,
+                              size_t errlen)
 {
     struct sd_scene s;
     if (scene_file_parse(path, &s, err, errlen) != 0)
         return -1;
+    if (o->paper && !s.paper)
+        sd_paper_apply(&s);
     if (o->width) {
         s.view.width = o->width;
         s.view.height = o->height;
@@ -63,6 +67,8 @@ static int scene_file_compile(const char *path, const struct scene_file_opts *o,
     if (o->refraction >= 0)
         s.view.flags = o->refraction ? s.view.flags & ~SCN_OPT_NO_REFRACTION
                                      : s.view.flags | SCN_OPT_NO_REFRACTION;
+    info->auto_hierarchy = !s.no_auto_hierarchy;
+    info->own_clusters = s.n_clusters;
     char why[SD_ERR_MAX];
     int rc = sd_compile(&s, buf, len, why, sizeof why);
     sd_free(&s);
@@ -95,13 +101,21 @@ static int scene_file_read(const char *path, uint8_t **buf, size_t *len, char *e
     return 0;
 }
 
-static int scene_file_bytes_any(const char *path, const struct scene_file_opts *o,
-                                uint8_t **buf, size_t *len, char *err, size_t errlen);
-
 int scene_file_bytes(const char *path, const struct scene_file_opts *o, uint8_t **buf,
                      size_t *len, char *err, size_t errlen)
 {
-    if (scene_file_bytes_any(path, o, buf, len, err, errlen) != 0)
+    struct scene_file_info info;
+    return scene_file_bytes_info(path, o, buf, len, &info, err, errlen);
+}
+
+static int scene_file_bytes_any(const char *path, const struct scene_file_opts *o,
+                                uint8_t **buf, size_t *len, struct scene_file_info *info,
+                                char *err, size_t errlen);
+
+int scene_file_bytes_info(const char *path, const struct scene_file_opts *o, uint8_t **buf,
+                          size_t *len, struct scene_file_info *info, char *err, size_t errlen)
+{
+    if (scene_file_bytes_any(path, o, buf, len, info, err, errlen) != 0)
         return -1;
     char why[SD_ERR_MAX];
     if (sd_machine_check(*buf, *len, o->machine, why, sizeof why) == 0)
@@ -116,19 +130,24 @@ int scene_file_bytes(const char *path, const struct scene_file_opts *o, uint8_t 
 /* The bytes, compiled or read, checked against the virt board's limits
  * (the largest). */
 static int scene_file_bytes_any(const char *path, const struct scene_file_opts *o,
-                                uint8_t **buf, size_t *len, char *err, size_t errlen)
+                                uint8_t **buf, size_t *len, struct scene_file_info *info,
+                                char *err, size_t errlen)
 {
     *buf = NULL;
     *len = 0;
+    info->auto_hierarchy = -1;
+    info->own_clusters = -1;
     if (!scene_file_ends_with(path, ".l1s"))
-        return scene_file_compile(path, o, buf, len, err, errlen);
+        return scene_file_compile(path, o, buf, len, info, err, errlen);
     const char *change = o->width ? "--size" : o->max_depth >= 0 ? "--max-depth"
                          : o->min_weight >= 0 ? "--min-weight"
                          : o->density_steps >= 0 ? "--density-steps"
                          : o->refractionless >= 0 ? "--refractionless"
                          : o->refraction >= 0 ? "--refraction"
                          : o->no_auto_hierarchy ? "--no-auto-hierarchy"
-                         : o->mark_lost ? "--mark-lost" : NULL;
+                         : o->mark_lost ? "--mark-lost"
+                         : o->paper ? "--paper (give the text scene, or compile it with "
+                                      "options { paper on })" : NULL;
     if (change) {
         snprintf(err, errlen, "%s: %s needs a text scene, not a compiled one", path, change);
         return -1;

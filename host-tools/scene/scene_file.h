@@ -17,7 +17,15 @@ struct scene_file_opts {
     int refraction;     /* --refraction on|off: 1 or 0; -1: the scene's */
     int no_auto_hierarchy; /* --no-auto-hierarchy: 1 compiles without it */
     int mark_lost;      /* --mark-lost: 1 paints pixels that lost precision */
+    int paper;          /* --paper: 1 sets paper mode (sd_paper_apply) before the
+                           other changes, which win over it */
     int machine;        /* the machine it is for (proto/machines.h): its limits */
+};
+
+/* How a text scene was compiled (scene_file_bytes_info). */
+struct scene_file_info {
+    int auto_hierarchy; /* 1 on, 0 off, -1 unknown (a compiled file) */
+    int own_clusters;   /* the scene's own clusters, root included (-1 unknown) */
 };
 
 /* No changes: the scene as written. */
@@ -38,6 +46,10 @@ int scene_file_parse(const char *path, struct sd_scene *s, char *err, size_t err
  * 0, or -1 with err saying why ("PATH: why"). */
 int scene_file_bytes(const char *path, const struct scene_file_opts *o, uint8_t **buf,
                      size_t *len, char *err, size_t errlen);
+
+/* scene_file_bytes, and how it compiled the scene into *info. */
+int scene_file_bytes_info(const char *path, const struct scene_file_opts *o, uint8_t **buf,
+                          size_t *len, struct scene_file_info *info, char *err, size_t errlen);
 
 /* out with the frame number before its extension: "a.png", 7 -> "a-0007.png". */
 void scene_file_frame_path(const char *out, long frame, char *buf, size_t n);

@@ -161,6 +161,7 @@ static void parse_options(struct parser *p)
         } else if (lex_is_word(&p->lx, "min_weight")) {
             lex_next(&p->lx);
             v->min_weight = lex_number_in(&p->lx, "min_weight", 0, 1);
+            p->s->written |= SD_WROTE_MIN_WEIGHT;
             continue;
         } else if (lex_is_word(&p->lx, "density_steps")) {
             lex_next(&p->lx);
@@ -186,10 +187,16 @@ static void parse_options(struct parser *p)
         } else if (lex_is_word(&p->lx, "fresnel")) { /* compiler only */
             lex_next(&p->lx);
             p->fresnel_off = !parse_on_off(p, "fresnel");
+            p->s->written |= SD_WROTE_FRESNEL;
             continue;
         } else if (lex_is_word(&p->lx, "auto_hierarchy")) { /* compiler only */
             lex_next(&p->lx);
             p->s->no_auto_hierarchy = !parse_on_off(p, "auto_hierarchy");
+            p->s->written |= SD_WROTE_AUTO_HIERARCHY;
+            continue;
+        } else if (lex_is_word(&p->lx, "paper")) { /* sd_paper_apply at the end */
+            lex_next(&p->lx);
+            p->s->paper = parse_on_off(p, "paper");
             continue;
         } else {
             parse_unknown(p, "options");
@@ -456,6 +463,8 @@ int sd_parse_text(const char *name, const char *text, struct sd_scene *s, char *
     if (s->n_prims == 0)
         lex_error(&p->lx, "the scene has no primitive");
     parse_resolve_fresnel(p);
+    if (s->paper)
+        sd_paper_apply(s);
     free(p);
     return 0;
 }

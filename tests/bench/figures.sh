@@ -13,6 +13,11 @@
 # tetra 6 (4,096 triangles) at 256x240 (Table 2; the rows without the hierarchy
 # traced at 64x60 and scaled), glass.scn at 256x240
 # (Table 3).  FIG_SMALL=1 shrinks every size and NC list (well under 30 s).
+# Parts "2p" and "3p": Tables 2 and 3 as the paper ran them, in paper mode
+# (links1 render --paper): scenes/fig9.scn at 512x480 (the row without
+# boxes traced at 64x60 and scaled), 16 NCs, simple dynamic balancing on
+# 2,400 and 480 scanline areas, Table 2 non-refracting (its 82 s is Table
+# 3's non-refracting run).
 set -u
 cd "$(dirname "$0")/../.."
 LINKS1=${LINKS1:-build/links1}
@@ -23,14 +28,16 @@ LIMIT_S=${FIG_RUN_LIMIT_S:-1800}
 if [ "${FIG_SMALL:-0}" = 1 ]; then
     SIZE7=64x48 BOARD7="1 2 4" REPLAY7=1,2,4,8,16,64,254 SIZE10=64x48 K10="16 64 256 1024"
     T2SPD="tetra 3" SIZE2=32x24 SIZE2LOW=16x12 SIZE3=48x36 T2K="480 96"
+    SIZE2P=64x60 SIZE2PLOW=16x15 T2PK="300 60"
 else
     SIZE7=512x480 BOARD7="1 2 4 8 16 32 64 128 254" REPLAY7=1,2,4,8,16,32,64,128,254 SIZE10=512x480
     K10="64 128 256 512 1024 2048 4096 8192 16384" T2SPD="tetra 6" SIZE2=256x240 SIZE2LOW=64x60
     SIZE3=256x240
     T2K="2400 480"
+    SIZE2P=512x480 SIZE2PLOW=64x60 T2PK="2400 480"
 fi
 SIZE2=${FIG_T2_SIZE:-$SIZE2} SIZE2LOW=${FIG_T2_LOW:-$SIZE2LOW}
-PARTS=" ${FIG_PARTS:-7 10 2 3} " # which figures to make
+PARTS=" ${FIG_PARTS:-7 10 2 3 2p 3p} " # which figures to make
 # The tuned replay (docs/results/paper-figures.md): decreasing areas, an NC asking for its
 # next area a round trip before it finishes, the DM preparing the frame
 # while the previous one renders; per NC count the best smallest-area bound
@@ -275,8 +282,113 @@ for mode in on off; do
 done
 awk -v a="$ms_on" -v b="$ms_off" 'BEGIN { printf "\nRefracting takes %.2fx the time of never bending (the paper: 212 s against 82 s, 2.6x).\n", a / b }' >>"$OUT/table3.md"
 fi
-for f in fig7.png fig10.png fig7.md fig10.md table2.md table3.md; do
+# ---- Tables 2 and 3 as the paper ran them: fig9.scn in paper mode ----
+# The paper's types: 1 all clipping (X, Y, boxes), 2 Y and boxes, 3 boxes
+# alone, 4 none; each traced on the board in paper mode (--paper: lines
+# areas, asking when finished, the clipping lists, a fixed depth) with
+# refraction off (the paper's Table 2 time, 82 s, is Table 3's
+# non-refracting run), replayed on 16 NCs with simple dynamic balancing on
+# scanline areas.  Type 4 is traced at SIZE2PLOW and replayed with --scale.
+if [[ $PARTS == *" 2p "* || $PARTS == *" 3p "* ]]; then
+echo "figures: Tables 2 and 3 as the paper ran them (fig9.scn, paper mode, $SIZE2P)"
+W2=${SIZE2P%x*} H2=${SIZE2P#*x} WL=${SIZE2PLOW%x*} HL=${SIZE2PLOW#*x}
+SCALE2P=$((W2 / WL))
+[ $((WL * SCALE2P)) = "$W2" ] && [ $((HL * SCALE2P)) = "$H2" ] ||
+    fail "Table 2 (paper): $SIZE2P is not $SIZE2PLOW times a whole number"
+read -r K1 K2 <<<"$T2PK"
+P2=(scenes/fig9.scn --paper --ncs 2 --count-insns)
+# prow NAME TYPE SWITCHES: traces (once per K with clipping, once without),
+# replays at both K into the table.
+prow() {
+    local name=$1 type=$2 sw=$3 size=$SIZE2P scale=1 ta tb
+    [[ $sw == *--no-bbox* ]] && size=$SIZE2PLOW scale=$SCALE2P name="$name *"
+    ta="$TMP/p2-$type-$K1.trace" tb="$TMP/p2-$type-$K2.trace"
+    board "$TMP/bp2-$type-$K1.log" "${P2[@]}" --size "$size" $sw --areas "$K1" --trace "$ta" \
+        -o "$TMP/p2.ppm"
+    grep -q "paper mode: .*ask finished, clip lists" "$TMP/bp2-$type-$K1.log" ||
+        fail "Table 2 (paper): $TMP/bp2-$type-$K1.log shows no paper mode"
+    if [[ $sw == *--no-yclip*--no-xclip* ]]; then
+        tb=$ta
+    else
+        board "$TMP/bp2-$type-$K2.log" "${P2[@]}" --size "$size" $sw --areas "$K2" --trace "$tb" \
+            -o "$TMP/p2.ppm"
+    fi
+    "$LINKS1" replay "$ta" --scale $scale --ncs 16 --balance lines --areas "$K1" --ask finished \
+        --pipelined >"$TMP/rp2a.txt" || fail "replay table 2 (paper)"
+    "$LINKS1" replay "$tb" --scale $scale --ncs 16 --balance lines --areas "$K2" --ask finished \
+        --pipelined >"$TMP/rp2b.txt" || fail "replay table 2 (paper)"
+    local a b insns
+    a=$(field frame_ms <"$TMP/rp2a.txt") b=$(field frame_ms <"$TMP/rp2b.txt")
+    [ "$type" = 4 ] && p_none1=$a p_none2=$b
+    insns=$(awk -v s=$scale '$1 == "area" { u += $11; t += $15 - $11 }
+        END { printf "%.1f", (u + t * s * s) / 1e6 }' "$ta")
+    echo "$type|$name|$insns|$a|$b" >>"$TMP/p2.rows"
+}
+: >"$TMP/p2.rows"
+prow "none (type 4)" 4 "--refraction off --no-bbox --no-yclip --no-xclip"
+prow "bounding boxes (type 3)" 3 "--refraction off --no-yclip --no-xclip"
+prow "+ Y clipping (type 2)" 2 "--refraction off --no-xclip"
+prow "+ X clipping: all (type 1)" 1 "--refraction off"
+prims=$(sed -nE 's/.* ([0-9]+) primitives in ([0-9]+) clusters.*/\1 primitives, \2 clusters/p' \
+    scenes/fig9.scn | head -1)
+{
+    echo "Table 2 as the paper ran it: scenes/fig9.scn ($prims, by hand) at $SIZE2P, paper mode"
+    echo "(links1 render --paper: src/trc by angle, depth fixed at 5, no automatic hierarchy, the"
+    echo "clipping lists, NCs asking once finished), refraction off, 16 NCs, simple dynamic"
+    echo "balancing on scanline areas; frame s at 1 MIPS, the DM preparing during the previous frame."
+    echo "Trace: links1 render scenes/fig9.scn --paper --ncs 2 --count-insns --refraction off SWITCHES"
+    echo "--areas K --trace T (rows without clipping once, K = $K1); replay: links1 replay T --ncs 16"
+    echo "--balance lines --areas K --ask finished --pipelined.  The row marked * was traced at"
+    echo "$SIZE2PLOW and replayed with --scale $SCALE2P."
+    echo
+    echo "| clipping | NC instructions (M) | $K1 areas: frame s | vs none | $K2 areas: frame s | vs none |"
+    echo "|---|---|---|---|---|---|"
+    while IFS='|' read -r type name insns a b; do
+        awk -v n="$name" -v a="$a" -v b="$b" -v na="$p_none1" -v nb="$p_none2" -v m="$insns" \
+            'BEGIN { printf "| %s | %s | %.1f | %.1fx | %.1f | %.1fx |\n", n, m, a / 1000, na / a, b / 1000, nb / b }'
+    done <"$TMP/p2.rows"
+    echo
+    echo "The paper (Table 2, s): type 1 82 and 86, type 2 111 and 200, type 3 340 and 340, type 4"
+    echo "8499 and 8430 (2,400 and 480 areas)."
+} >"$OUT/table2-paper.md"
+# Table 3 on the same scene: type 1 at the first K, refracting against the
+# non-refracting run of Table 2.
+"$LINKS1" replay "$TMP/p2-1-$K1.trace" --ncs 16 --balance lines --areas "$K1" --ask finished \
+    --pipelined >"$TMP/rp3off.txt" || fail "replay table 3 (paper)"
+board "$TMP/bp3-on.log" "${P2[@]}" --size "$SIZE2P" --refraction on --areas "$K1" \
+    --trace "$TMP/p3-on.trace" -o "$TMP/p3.ppm"
+"$LINKS1" replay "$TMP/p3-on.trace" --ncs 16 --balance lines --areas "$K1" --ask finished \
+    --pipelined >"$TMP/rp3on.txt" || fail "replay table 3 (paper)"
+{
+    echo "Table 3 as the paper ran it: the run of Table 2's type 1 ($K1 areas) against the same"
+    echo "with refraction on (links1 render scenes/fig9.scn --paper --ncs 2 --count-insns --refraction"
+    echo "on|off --areas $K1 --trace T; replay as Table 2)."
+    echo
+    echo "| transmission | frame s | NC instructions (M) | refracted rays |"
+    echo "|---|---|---|---|"
+    for mode in on off; do
+        [ $mode = on ] && log="$TMP/bp3-on.log" r="$TMP/rp3on.txt" n="refracting"
+        [ $mode = off ] && log="$TMP/bp2-1-$K1.log" r="$TMP/rp3off.txt" n="never bending (--refraction off)"
+        awk -v n="$n" -v ms="$(field frame_ms <"$r")" -v t="$(nc_total "$log")" \
+            -v rr="$(grep -o '[0-9]* refraction,' "$log" | grep -o '[0-9]*')" \
+            'BEGIN { printf "| %s | %.1f | %.1f | %s |\n", n, ms / 1000, t / 1e6, rr }'
+    done
+    awk -v a="$(field frame_ms <"$TMP/rp3on.txt")" -v b="$(field frame_ms <"$TMP/rp3off.txt")" \
+        'BEGIN { printf "\nRefracting takes %.2fx the time of never bending (the paper: 212 s against 82 s, 2.6x).\n", a / b }'
+} >"$OUT/table3-paper.md"
+fi
+
+want="fig7.png fig10.png fig7.md fig10.md table2.md table3.md"
+[[ $PARTS == *" 2p "* || $PARTS == *" 3p "* ]] && want="$want table2-paper.md table3-paper.md"
+for f in $want; do
+    [[ $PARTS == *" 7 "* ]] || [[ $f != fig7* ]] || continue
+    [[ $PARTS == *" 10 "* ]] || [[ $f != fig10* ]] || continue
+    [[ $PARTS == *" 2 "* ]] || [[ $f != table2.md ]] || continue
+    [[ $PARTS == *" 3 "* ]] || [[ $f != table3.md ]] || continue
     [ -s "$OUT/$f" ] || fail "$OUT/$f was not written"
 done
 echo "figures: written to $OUT"
-cat "$OUT/fig7.md" "$OUT/fig10.md" "$OUT/table2.md" "$OUT/table3.md"
+for f in fig7.md fig10.md table2.md table3.md table2-paper.md table3-paper.md; do
+    [ -s "$OUT/$f" ] && cat "$OUT/$f"
+done
+exit 0

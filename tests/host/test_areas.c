@@ -219,7 +219,7 @@ static void test_more_ncs_than_scanlines(void)
         CHECK_EQ_INT(wk.areas, 300); /* bound 1 px, pieces of 1 px */
         CHECK_EQ_INT(wk.first.h, 1);
     }
-    for (int mode = AREAS_STATIC; mode <= AREAS_DECREASING; mode++)
+    for (int mode = AREAS_STATIC; mode < AREAS_MODES; mode++)
         if (areas_walk((enum areas_mode)mode, 1, 1, 254, 0, &wk))
             CHECK_EQ_INT(wk.areas, 1);
 }
@@ -238,7 +238,7 @@ static void test_decreasing_prime_width_uses_whole_scanlines(void)
 static void test_bad_arguments_are_refused(void)
 {
     struct areas s;
-    CHECK_EQ_INT(areas_init(&s, (enum areas_mode)3, 10, 10, 1, 0), AREAS_ERR_MODE);
+    CHECK_EQ_INT(areas_init(&s, (enum areas_mode)AREAS_MODES, 10, 10, 1, 0), AREAS_ERR_MODE);
     CHECK_EQ_INT(areas_init(&s, AREAS_DYNAMIC, 0, 10, 1, 0), AREAS_ERR_SIZE);
     CHECK_EQ_INT(areas_init(&s, AREAS_DYNAMIC, 10, 0, 1, 0), AREAS_ERR_SIZE);
     CHECK_EQ_INT(areas_init(&s, AREAS_DYNAMIC, AREAS_MAX_DIM + 1, 10, 1, 0), AREAS_ERR_SIZE);
@@ -312,10 +312,56 @@ static void test_decreasing_defaults_by_ncs(void)
     CHECK_EQ_INT(areas_count(&d), AREAS_DEFAULT_K);
 }
 
+/* The paper's job unit, "one scanline or part of one": K >= height gives
+ * every scanline K/height (rounded) pieces of one row, K < height bands of
+ * whole scanlines; every schedule covers the screen once. */
+static void test_lines_are_scanlines(void)
+{
+    struct walk wk;
+    if (areas_walk(AREAS_LINES, 512, 480, 16, 480, &wk)) { /* Table 2: 480 areas */
+        CHECK_EQ_INT(wk.areas, 480);
+        CHECK_EQ_INT(wk.min_px, 512);
+        CHECK_EQ_INT(wk.max_px, 512);
+    }
+    if (areas_walk(AREAS_LINES, 512, 480, 16, 2400, &wk)) { /* Table 2: 2,400 areas */
+        CHECK_EQ_INT(wk.areas, 2400);
+        CHECK(wk.min_px >= 102 && wk.max_px <= 103);
+    }
+    /* every area one row high, 5 to a scanline, in raster order */
+    struct areas s;
+    struct area a;
+    CHECK_EQ_INT(areas_init(&s, AREAS_LINES, 512, 480, 16, 2400), AREAS_OK);
+    uint32_t per_line[480] = {0}, rows_high = 0, raster = 1, py = 0, px = 0;
+    while (areas_next(&s, &a)) {
+        rows_high += a.h != 1;
+        if (a.y < 480)
+            per_line[a.y]++;
+        raster &= a.y > py || (a.y == py && a.x >= px);
+        py = a.y, px = a.x + a.w;
+    }
+    CHECK_EQ_INT(rows_high, 0);
+    CHECK(raster);
+    int five = 1;
+    for (int y = 0; y < 480; y++)
+        five &= per_line[y] == 5;
+    CHECK(five);
+    if (areas_walk(AREAS_LINES, 512, 480, 16, 96, &wk)) { /* K < height: whole scanlines */
+        CHECK_EQ_INT(wk.areas, 96);
+        CHECK_EQ_INT(wk.min_px, 5 * 512);
+        CHECK_EQ_INT(wk.max_px, 5 * 512);
+    }
+    if (areas_walk(AREAS_LINES, 37, 23, 3, 500, &wk)) /* uneven pieces, K > height */
+        CHECK_EQ_INT(wk.areas, 500);
+    if (areas_walk(AREAS_LINES, 5, 3, 3, 1000, &wk)) /* clamped to the pixels */
+        CHECK_EQ_INT(wk.areas, 15);
+    if (areas_walk(AREAS_LINES, 640, 7, 2, 0, &wk)) /* k = 0: AREAS_DEFAULT_K */
+        CHECK_EQ_INT(wk.areas, AREAS_DEFAULT_K);
+}
+
 static void test_mode_names_round_trip(void)
 {
     enum areas_mode m;
-    for (int i = AREAS_STATIC; i <= AREAS_DECREASING; i++) {
+    for (int i = AREAS_STATIC; i < AREAS_MODES; i++) {
         CHECK_EQ_INT(areas_mode_parse(areas_mode_name((enum areas_mode)i), &m), AREAS_OK);
         CHECK_EQ_INT(m, i);
     }
@@ -336,6 +382,7 @@ int main(void)
     RUN(test_bad_arguments_are_refused);
     RUN(test_guided_factor);
     RUN(test_decreasing_defaults_by_ncs);
+    RUN(test_lines_are_scanlines);
     RUN(test_mode_names_round_trip);
     return check_exit();
 }

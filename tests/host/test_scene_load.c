@@ -456,7 +456,7 @@ static void test_bad_indices_and_values(void)
                  "image size 1025x48");
     expect_field(b, len, SCN_SEC_VIEW, SCN_VIEW_MAX_DEPTH, 17, 2, SCENE_LOAD_ERR_LIMIT,
                  "max depth 17");
-    expect_field(b, len, SCN_SEC_VIEW, SCN_VIEW_FLAGS, 0x100, 2, SCENE_LOAD_ERR_VALUE,
+    expect_field(b, len, SCN_SEC_VIEW, SCN_VIEW_FLAGS, SCN_OPT_KNOWN + 1, 2, SCENE_LOAD_ERR_VALUE,
                  "option flags");
     expect_field(b, len, SCN_SEC_VIEW, SCN_VIEW_FRAMES, 0, 4, SCENE_LOAD_ERR_LIMIT,
                  "frame count 0");
