@@ -61,15 +61,15 @@ done
 name=an521_nc_board_killed
 if an_ready "$name"; then
     out=$RENDER_TMP/$name.ppm log=$RENDER_TMP/$name.log
-    ref=$(render_ref scenes/demo.scn float 160x120)
+    ref=$(render_ref scenes/demo.scn float 240x180)
     timeout "$BOARD_RUN_LIMIT_S" "$LINKS1" render scenes/demo.scn -o "$out" --machine an521 \
-        --ncs 4 --size 160x120 >"$log" 2>&1 &
+        --ncs 4 --size 240x180 >"$log" 2>&1 &
     tool=$!
     for _ in $(seq 1 300); do
         grep -q ' loaded: ' "$log" 2>/dev/null && break
         sleep 0.1
     done
-    sleep 0.5
+    sleep 0.3
     victim=$(an_board_pid 1)
     [ -n "$victim" ] && kill -KILL "$victim"
     wait "$tool"
