@@ -7,7 +7,8 @@ SHARED_SRCS += render/scene_load.c
 
 HT_SCENE_SRCS := host-tools/scene/scene_lex.c host-tools/scene/scene_parse.c \
 	host-tools/scene/scene_parse_looks.c host-tools/scene/scene_parse_objects.c \
-	host-tools/scene/scene_parse_model.c host-tools/scene/scene_math.c \
+	host-tools/scene/scene_parse_model.c host-tools/scene/scene_parse_view.c \
+	host-tools/scene/scene_math.c \
 	host-tools/scene/scene_compile.c host-tools/scene/scene_bvh.c \
 	host-tools/scene/scene_board.c host-tools/scene/scene_file.c \
 	host-tools/scene/scene_import.c host-tools/scene/scene_import_view.c \
