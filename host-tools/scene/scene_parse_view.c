@@ -17,12 +17,18 @@
 #include "host-tools/scene/scene_parse.h"
 
 #define VIEW_PI 3.14159265358979323846
-/* A light's interpolated direction may not shrink below this part of the
- * longer of its two keys' (nearly opposite keys; the renderer normalises
- * it every frame). */
+/* A light's interpolated direction, or the camera's from eye to look_at,
+ * may not shrink below this part of the longer of its two keys' (nearly
+ * opposite keys; the renderer normalises it every frame). */
 #define VIEW_MIN_DIRECTION_PART (1.0 / 16)
 
 static double view_len3(const double v[3]) { return sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]); }
+
+static double view_dist3(const double a[3], const double b[3])
+{
+    double d[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    return view_len3(d);
+}
 
 /* NULL when the camera is usable, else what is wrong with it (the checks
  * of a still camera). */
@@ -156,6 +162,12 @@ static void view_check_camera_span(struct parser *p, const struct sd_view_key *a
         view_lerp3(a->look_at, b->look_at, w, l);
         view_lerp3(a->up, b->up, w, u);
         const char *bad = view_camera_problem(e, l, u);
+        double d[3];
+        for (int i = 0; i < 3; i++)
+            d[i] = l[i] - e[i];
+        if (!bad && view_len3(d) < VIEW_MIN_DIRECTION_PART * fmax(view_dist3(a->eye, a->look_at),
+                                                                  view_dist3(b->eye, b->look_at)))
+            bad = "eye and look_at are (nearly) the same point";
         if (bad)
             lex_error(&p->lx, "camera keys at frames %d and %d: at frame %d between them %s "
                       "(add a key between them)", a->frame, b->frame, f, bad);
