@@ -48,7 +48,8 @@ fi
 nopath="$RENDER_TMP/nopath"
 mkdir -p "$nopath" "$RENDER_TMP/bin"
 ln -s "$(command -v qemu-system-arm)" "$RENDER_TMP/bin/qemu-system-arm"
-out=$(PATH="$RENDER_TMP/bin" timeout 60 "$LINKS1" render scenes/fly.scn -o "$nopath/f.mp4" \
+to=$(command -v timeout)
+out=$(PATH="$RENDER_TMP/bin" "$to" 60 "$LINKS1" render scenes/fly.scn -o "$nopath/f.mp4" \
     --ncs 1 --size 32x24 --frames 0:1 2>&1)
 rc=$?
 if [ $rc -ne 0 ] && echo "$out" | grep -q "needs the ffmpeg command, which is not in PATH" &&
