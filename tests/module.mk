@@ -43,6 +43,8 @@ BENCHES += tests/bench/bench_render.sh tests/bench/bench_arith.sh tests/bench/be
 # Issue 12: failed NCs (the time a failure costs a frame), the long soak run.
 BENCHES += tests/bench/bench_faults.sh tests/bench/bench_soak.sh
 BENCHES += tests/bench/bench_big.sh
+# The DM's preparation hidden behind the NCs' rendering (an animation, traced frame by frame).
+BENCHES += tests/bench/bench_pipeline.sh
 # The board cost model --arith auto does not use: work counts against NC instructions.
 BENCHES += tests/bench/arith_cost_fit.sh
 BENCHES += tests/bench/bench_link_noise.sh
