@@ -97,7 +97,10 @@
 #define SCN_MAGIC_2 'S'
 #define SCN_MAGIC_3 'C'
 #define SCN_VERSION 4 /* 2: 32-bit cluster indices; 3: VIEW carries min_weight;
-                         4: VIEW carries density_steps */
+                         4: VIEW carries density_steps.  VIEW_KEYS (kind 11)
+                         came later without a new version: a file without
+                         it is what it was, and a loader from before it
+                         refuses one with it as an unknown section kind */
 #define SCN_HEADER_SIZE 16
 #define SCN_HDR_MAGIC 0
 #define SCN_HDR_VERSION 4
