@@ -128,7 +128,7 @@ static void render_usage(FILE *out)
             "  --link L         bulk bytes (scene up, frame down) through shared memory\n"
             "                   (fast, default) or the serial link (serial)\n"
             "  --firmware ELF   firmware to boot; --ram MB; --quiet\n",
-            FILM_MAX_FPS, FILM_DEFAULT_FPS, RENDER_DEFAULT_NCS, AREAS_DEFAULT_K);
+            RENDER_DEFAULT_NCS, AREAS_DEFAULT_K, FILM_MAX_FPS, FILM_DEFAULT_FPS);
 }
 
 enum render_opt_code {

@@ -2,13 +2,13 @@
 # A film made as the frames come: `links1 render --frames A:B -o OUT.mp4`
 # (and .apng) pipes each frame as a PNG into ffmpeg.  ffprobe counts the
 # frames and reads the size of each film (an odd size padded to even for
-# .mp4, kept for .apng); the animated PNG's first frame is the host build's
+# .mp4, kept for .apng) and the frame rate --fps asked for; the animated PNG's first frame is the host build's
 # frame pixel for pixel; a missing ffmpeg is refused before the board
 # boots, and an ffmpeg that fails is named with its message; neither leaves
 # a file named OUT (or anything else) beside it.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
-CHECKS="render_film_mp4_frames render_film_mp4_size render_film_apng_frames render_film_apng_size
+CHECKS="render_film_mp4_frames render_film_mp4_size render_film_mp4_fps render_film_apng_frames render_film_apng_size
         render_film_apng_first_frame render_film_no_ffmpeg render_film_ffmpeg_fails"
 board_ready $CHECKS || exit 0
 if ! command -v ffprobe >/dev/null; then
@@ -31,10 +31,12 @@ want() {
 }
 
 if render_board render_film "$films/fly.mp4" scenes/fly.scn -o "$films/fly.mp4" \
-    scenes/fly.scn -o "$films/fly.apng" --ncs 3 --size $SIZE --frames 2:5; then
+    scenes/fly.scn -o "$films/fly.apng" --ncs 3 --size $SIZE --frames 2:5 --fps 6; then
     read -r n s < <(probe "$films/fly.mp4")
     want render_film_mp4_frames "${n:-none}" 4
     want render_film_mp4_size "${s:-none}" 64x48 # padded to even for yuv420p
+    want render_film_mp4_fps "$(ffprobe -v error -select_streams v:0 -show_entries stream=r_frame_rate \
+        -of csv=p=0 "$films/fly.mp4" 2>&1)" 6/1
     read -r n s < <(probe "$films/fly.apng")
     want render_film_apng_frames "${n:-none}" 4
     want render_film_apng_size "${s:-none}" $SIZE
