@@ -53,6 +53,8 @@
 #define SCN_MAX_COMPONENTS 65536           /* density components, all prims */
 #define SCN_MAX_KEYS 65536                 /* keyframes over all clusters */
 #define SCN_MAX_CLUSTER_KEYS 65535         /* keyframes of one cluster */
+#define SCN_MAX_VIEW_KEYS 65536            /* keyframes of the camera and the
+                                              lights, all together */
 #define SCN_MAX_FRAMES 100000              /* frames of one animation */
 #define SCN_MAX_DEPTH 16                   /* ray recursion depth */
 #define SCN_MAX_PHONG 1024                 /* highlight exponent n */
@@ -95,7 +97,10 @@
 #define SCN_MAGIC_2 'S'
 #define SCN_MAGIC_3 'C'
 #define SCN_VERSION 4 /* 2: 32-bit cluster indices; 3: VIEW carries min_weight;
-                         4: VIEW carries density_steps */
+                         4: VIEW carries density_steps.  VIEW_KEYS (kind 11)
+                         came later without a new version: a file without
+                         it is what it was, and a loader from before it
+                         refuses one with it as an unknown section kind */
 #define SCN_HEADER_SIZE 16
 #define SCN_HDR_MAGIC 0
 #define SCN_HDR_VERSION 4
@@ -122,8 +127,9 @@ enum scn_section {
     SCN_SEC_COMPONENTS = 8, /* density components, all density spheres */
     SCN_SEC_KEYS = 9,      /* keyframes, grouped per cluster, frames rising */
     SCN_SEC_NORMALS = 10,  /* vertex normals of smooth triangles, prims rising */
+    SCN_SEC_VIEW_KEYS = 11, /* keyframes of the camera and the lights */
 };
-#define SCN_SEC_COUNT 10 /* kinds are 1..SCN_SEC_COUNT */
+#define SCN_SEC_COUNT 11 /* kinds are 1..SCN_SEC_COUNT */
 
 /* The board has no trigonometry: every angle is turned into the cosine,
  * tangent or quaternion the renderer needs by the host compiler. */
@@ -303,5 +309,31 @@ enum scn_prim_kind {
 #define SCN_QUAT_NORM_TOLERANCE 1.0e-3f /* |q| must be within 1 +- this */
 /* K = translate * rotate * scale; between keys the renderer interpolates
  * (render/scene.h). */
+
+/* ------------------------------------------------------ VIEW_KEYS record */
+/* A keyframe of the camera or of one light: at its frame the values it
+ * holds replace the VIEW record's camera or the LIGHTS record's values
+ * (the light's kind stays).  Records are grouped by target, the camera's
+ * first, then light 0's, light 1's, ...; frames rise within a target.
+ * Between two keys of a target every value is interpolated linearly,
+ * a + (b - a) w with w = (frame - a's) / (b's - a's), the weight the
+ * cluster keys use; before its first key and after its last the end key
+ * holds (render/prepare.c).  A target without keys keeps its static record. */
+#define SCN_VKEY_SIZE 52
+#define SCN_VKEY_FRAME 0        /* u32: frame number, rising within a target */
+#define SCN_VKEY_TARGET 4       /* u32: SCN_VKEY_CAMERA or a light's index */
+/* the camera's key (checked as the VIEW record's camera) */
+#define SCN_VKEY_EYE 8          /* 3 x f32 */
+#define SCN_VKEY_LOOK_AT 20     /* 3 x f32 */
+#define SCN_VKEY_UP 32          /* 3 x f32 */
+#define SCN_VKEY_TAN_HALF_FOV_Y 44 /* f32 > 0: its tangent is what interpolates */
+#define SCN_VKEY_RESERVED 48    /* u32: 0 in a camera's key */
+/* a light's key (checked as its LIGHTS record, by its kind) */
+#define SCN_VKEY_COLOUR 8       /* 3 x f32 */
+#define SCN_VKEY_POSITION 20    /* 3 x f32 */
+#define SCN_VKEY_DIRECTION 32   /* 3 x f32 */
+#define SCN_VKEY_COS_INNER 44   /* f32: its cosine is what interpolates */
+#define SCN_VKEY_COS_OUTER 48   /* f32 */
+#define SCN_VKEY_CAMERA 0xffffffffu
 
 #endif

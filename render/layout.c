@@ -11,7 +11,7 @@ const render_layout_t render_layout_native = {
     sizeof(scene_map_t),      sizeof(scene_cluster_t), sizeof(scene_prim_t),
     sizeof(scene_density_component_t), sizeof(scene_key_t), sizeof(render_frame_t),
     sizeof(render_cluster_t), sizeof(render_prim_t),   sizeof(num_t),
-    sizeof(xform_t),          sizeof(scene_normals_t),
+    sizeof(xform_t),          sizeof(scene_normals_t), sizeof(scene_view_key_t),
 };
 
 const render_layout_t render_layout_board = {
@@ -19,7 +19,7 @@ const render_layout_t render_layout_board = {
     RENDER_BOARD_MAP,     RENDER_BOARD_CLUSTER, RENDER_BOARD_PRIM,
     RENDER_BOARD_COMPONENT, RENDER_BOARD_KEY,   RENDER_BOARD_FRAME,
     RENDER_BOARD_FRAME_CLUSTER, RENDER_BOARD_FRAME_PRIM, RENDER_BOARD_NUM,
-    RENDER_BOARD_XFORM,   RENDER_BOARD_NORMALS,
+    RENDER_BOARD_XFORM,   RENDER_BOARD_NORMALS, RENDER_BOARD_VIEW_KEY,
 };
 
 /* On the board (and any 32-bit build of a 4-byte num_t) the records must
@@ -40,4 +40,5 @@ LAYOUT_IS(render_prim_t, RENDER_BOARD_FRAME_PRIM);
 LAYOUT_IS(num_t, RENDER_BOARD_NUM);
 LAYOUT_IS(xform_t, RENDER_BOARD_XFORM);
 LAYOUT_IS(scene_normals_t, RENDER_BOARD_NORMALS);
+LAYOUT_IS(scene_view_key_t, RENDER_BOARD_VIEW_KEY);
 #endif

@@ -30,10 +30,11 @@ typedef struct {
     size_t num;           /* num_t */
     size_t xform;         /* xform_t */
     size_t normals;       /* scene_normals_t */
+    size_t view_key;      /* scene_view_key_t */
 } render_layout_t;
 
 /* The board's record sizes, in the order of render_layout_t. */
-#define RENDER_BOARD_BLOB 180
+#define RENDER_BOARD_BLOB 188
 #define RENDER_BOARD_LIGHT 48
 #define RENDER_BOARD_MATERIAL 44
 #define RENDER_BOARD_MAP 24
@@ -47,6 +48,7 @@ typedef struct {
 #define RENDER_BOARD_NUM 4
 #define RENDER_BOARD_XFORM 48
 #define RENDER_BOARD_NORMALS 36
+#define RENDER_BOARD_VIEW_KEY 56
 
 extern const render_layout_t render_layout_native;
 extern const render_layout_t render_layout_board;

@@ -90,27 +90,47 @@ static void prep_scaled_linear(const xform_t *to_eye, vec3_t s, num_t out[3][3])
     }
 }
 
+/* The two keys frame f lies between and its weight w from the first to
+ * the second, the one rule of every key (a cluster's, the camera's, a
+ * light's): keys[0..n) of stride bytes each, frames rising, each key's
+ * frame its first field; *ia = *ib = the end key outside them (w = 0). */
+static num_t prep_key_span(const void *keys, size_t stride, uint32_t n, uint32_t f,
+                           uint32_t *ia, uint32_t *ib)
+{
+#define PREP_KEY_FRAME(i) (*(const uint32_t *)((const uint8_t *)keys + (size_t)(i) * stride))
+    *ia = *ib = 0;
+    if (f >= PREP_KEY_FRAME(n - 1)) {
+        *ia = *ib = n - 1;
+    } else if (f > PREP_KEY_FRAME(0)) {
+        uint32_t i = 0;
+        while (i + 1 < n && PREP_KEY_FRAME(i + 1) <= f)
+            i++;
+        *ia = i;
+        *ib = i + 1;
+        return num_from_ratio((int32_t)(f - PREP_KEY_FRAME(i)),
+                              (int32_t)(PREP_KEY_FRAME(i + 1) - PREP_KEY_FRAME(i)));
+    }
+    return NUM_ZERO;
+#undef PREP_KEY_FRAME
+}
+
+/* a + (b - a) w, per component: the interpolation of every key's values */
+static vec3_t prep_lerp3(vec3_t a, vec3_t b, num_t w)
+{
+    return vec3_add(a, vec3_scale(vec3_sub(b, a), w));
+}
+
 /* Keyframed TRS of a cluster at frame f (identity without keys). */
 static xform_t prep_key_xform(const scene_t *s, const scene_cluster_t *c, uint32_t f)
 {
     if (c->key_count == 0)
         return xform_identity();
     const scene_key_t *k = &s->keys[c->first_key];
-    uint32_t n = c->key_count;
-    const scene_key_t *a = &k[0], *b = &k[0];
-    num_t w = NUM_ZERO;
-    if (f >= k[n - 1].frame) {
-        a = b = &k[n - 1];
-    } else if (f > k[0].frame) {
-        uint32_t i = 0;
-        while (i + 1 < n && k[i + 1].frame <= f)
-            i++;
-        a = &k[i];
-        b = &k[i + 1];
-        w = num_from_ratio((int32_t)(f - a->frame), (int32_t)(b->frame - a->frame));
-    }
-    vec3_t t = vec3_add(a->translate, vec3_scale(vec3_sub(b->translate, a->translate), w));
-    vec3_t sc = vec3_add(a->scale, vec3_scale(vec3_sub(b->scale, a->scale), w));
+    uint32_t ia, ib;
+    num_t w = prep_key_span(k, sizeof *k, c->key_count, f, &ia, &ib);
+    const scene_key_t *a = &k[ia], *b = &k[ib];
+    vec3_t t = prep_lerp3(a->translate, b->translate, w);
+    vec3_t sc = prep_lerp3(a->scale, b->scale, w);
     /* nlerp along the shorter arc */
     num_t bw = b->rot_w, bx = b->rot_x, by = b->rot_y, bz = b->rot_z;
     num_t dot = num_add(num_dot3(a->rot_x, a->rot_y, a->rot_z, bx, by, bz), num_mul(a->rot_w, bw));
@@ -132,10 +152,48 @@ static xform_t prep_key_xform(const scene_t *s, const scene_cluster_t *c, uint32
     return xform_from_trs(t, qw, qx, qy, qz, sc);
 }
 
-/* World -> eye and its inverse from the camera. */
-static render_status_t prep_camera(const scene_t *s, xform_t *world_to_eye, xform_t *eye_to_world)
+/* The camera and the lights at frame f: each target with keys
+ * (scene_view_key_t) interpolated between the two keys f lies between,
+ * the others as the scene gives them.  Keys are grouped by target (the
+ * loader checks it), so one pass finds every target's. */
+static void prep_view_at(const scene_t *s, uint32_t f, scene_camera_t *camera,
+                         scene_light_t *lights)
 {
-    const scene_camera_t *c = &s->camera;
+    *camera = s->camera;
+    for (uint16_t i = 0; i < s->light_count; i++)
+        lights[i] = s->lights[i];
+    const scene_view_key_t *k = s->view_keys;
+    for (uint32_t first = 0, end; first < s->view_key_count; first = end) {
+        uint16_t target = k[first].target;
+        for (end = first + 1; end < s->view_key_count && k[end].target == target;)
+            end++;
+        uint32_t ia, ib;
+        num_t w = prep_key_span(&k[first], sizeof *k, end - first, f, &ia, &ib);
+        const scene_view_key_t *a = &k[first + ia], *b = &k[first + ib];
+        if (target == SCENE_VIEW_KEY_CAMERA) {
+            camera->eye = prep_lerp3(a->v.camera.eye, b->v.camera.eye, w);
+            camera->look_at = prep_lerp3(a->v.camera.look_at, b->v.camera.look_at, w);
+            camera->up = prep_lerp3(a->v.camera.up, b->v.camera.up, w);
+            camera->tan_half_fov_y = num_lerp(a->v.camera.tan_half_fov_y,
+                                              b->v.camera.tan_half_fov_y, w);
+        } else if (target < s->light_count) {
+            const scene_light_t *la = &a->v.light, *lb = &b->v.light;
+            scene_light_t *l = &lights[target];
+            l->intensity.r = num_lerp(la->intensity.r, lb->intensity.r, w);
+            l->intensity.g = num_lerp(la->intensity.g, lb->intensity.g, w);
+            l->intensity.b = num_lerp(la->intensity.b, lb->intensity.b, w);
+            l->position = prep_lerp3(la->position, lb->position, w);
+            l->direction = prep_lerp3(la->direction, lb->direction, w);
+            l->cos_inner = num_lerp(la->cos_inner, lb->cos_inner, w);
+            l->cos_outer = num_lerp(la->cos_outer, lb->cos_outer, w);
+        }
+    }
+}
+
+/* World -> eye and its inverse from the camera. */
+static render_status_t prep_camera(const scene_camera_t *c, xform_t *world_to_eye,
+                                   xform_t *eye_to_world)
+{
     vec3_t f = vec3_normalize(vec3_sub(c->look_at, c->eye));
     if (!num_gt(vec3_length(f), NUM_HALF))
         return RENDER_ERR_CAMERA;
@@ -406,11 +464,12 @@ static void prep_tree_rect_add(render_cluster_t *c, int32_t x0, int32_t y0, int3
     c->tree_y1 = y1 > c->tree_y1 ? y1 : c->tree_y1;
 }
 
-static void prep_lights(const scene_t *s, const xform_t *world_to_eye, render_frame_t *f)
+static void prep_lights(const scene_t *s, const scene_light_t *lights, const xform_t *world_to_eye,
+                        render_frame_t *f)
 {
     f->light_count = s->light_count;
     for (uint16_t i = 0; i < s->light_count; i++) {
-        const scene_light_t *l = &s->lights[i];
+        const scene_light_t *l = &lights[i];
         render_light_t *e = &f->lights[i];
         e->kind = l->kind;
         e->intensity = l->intensity;
@@ -509,8 +568,12 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     f->cluster_count = s->cluster_count;
     f->prim_count = s->prim_count;
     f->ray_epsilon = scene_tolerance(s, NUM_C(RENDER_RAY_EPSILON_VALUE));
-    f->screen_half_h = s->camera.tan_half_fov_y;
-    f->screen_half_w = num_mul(s->camera.tan_half_fov_y, num_from_ratio(s->width, s->height));
+    /* the camera and lights of this frame (their keys) */
+    scene_camera_t camera;
+    scene_light_t lights[RENDER_MAX_LIGHTS];
+    prep_view_at(s, frame_index, &camera, lights);
+    f->screen_half_h = camera.tan_half_fov_y;
+    f->screen_half_w = num_mul(camera.tan_half_fov_y, num_from_ratio(s->width, s->height));
 
     /* scratch: per-cluster maps, released before returning */
     size_t mark = arena->used;
@@ -524,7 +587,7 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
         return RENDER_ERR_ARENA;
 
     xform_t world_to_eye, eye_to_world;
-    st = prep_camera(s, &world_to_eye, &eye_to_world);
+    st = prep_camera(&camera, &world_to_eye, &eye_to_world);
     if (st != RENDER_OK)
         return st;
     if (xform_is_sat(&world_to_eye) || xform_is_sat(&eye_to_world))
@@ -614,7 +677,7 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     f->clip_coverage = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
     mean = (rows + f->height - 1) / f->height;
     f->clip_rows = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
-    prep_lights(s, &world_to_eye, f);
+    prep_lights(s, lights, &world_to_eye, f);
     *out = f;
     return precision_check(f);
 }

@@ -54,6 +54,7 @@ static void reloc_scene(reloc_t *r, scene_t *s)
     scene_density_component_t *comps =
         RELOC(r, s->density_components, s->density_component_count, "scene.density_components");
     scene_normals_t *normals = RELOC(r, s->normals, s->normals_count, "scene.normals");
+    scene_view_key_t *view_keys = RELOC(r, s->view_keys, s->view_key_count, "scene.view_keys");
     if (r->bad)
         return;
     for (uint32_t i = 0; i < s->map_count; i++) {
@@ -73,6 +74,7 @@ static void reloc_scene(reloc_t *r, scene_t *s)
     s->prims = prims;
     s->density_components = comps;
     s->normals = normals;
+    s->view_keys = view_keys;
 }
 
 /* f and s are the copy's frame and scene; f->scene is rewritten by the

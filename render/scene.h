@@ -38,7 +38,7 @@ typedef struct {
     num_t m[3][4];
 } xform_t;
 
-/* Pinhole camera, fixed for the whole animation.  Pixel (x, y), with y = 0
+/* Pinhole camera (its keys, scene_view_key_t, move it).  Pixel (x, y), with y = 0
  * the top row, looks through the point at screen coordinates
  *   sx = (2(x + 1/2)/width  - 1) * tan_half_fov_y * width/height
  *   sy = (1 - 2(y + 1/2)/height) * tan_half_fov_y
@@ -57,7 +57,8 @@ enum scene_light_kind {
     SCENE_LIGHT_SPOT = 2,     /* point with a cone and a smooth edge */
 };
 
-/* Lights live in world coordinates and do not animate. */
+/* Lights live in world coordinates (their keys, scene_view_key_t, move
+ * them). */
 typedef struct {
     uint8_t kind;      /* enum scene_light_kind */
     rgb_t intensity;   /* L_i per channel, >= 0, 1 = full */
@@ -120,6 +121,22 @@ typedef struct {
     num_t rot_w, rot_x, rot_y, rot_z; /* unit quaternion */
     vec3_t scale;       /* per-axis scale, non-zero */
 } scene_key_t;
+
+/* One key of the camera or of a light: its values at a frame.  Between a
+ * target's keys render_prepare interpolates every value linearly with the
+ * cluster keys' weight (the camera's tan_half_fov_y and a spot's cosines
+ * are what interpolate); before the first/after the last the end key
+ * holds.  Keys are grouped by target, the camera's first, then by rising
+ * light index, frames rising within a target (the loader checks it). */
+#define SCENE_VIEW_KEY_CAMERA SCENE_NONE /* target of the camera's keys */
+typedef struct {
+    uint32_t frame;     /* frame number of this key */
+    uint16_t target;    /* SCENE_VIEW_KEY_CAMERA or the light's index */
+    union {
+        scene_camera_t camera; /* the camera's key */
+        scene_light_t light;   /* a light's key: its kind is the light's */
+    } v;
+} scene_view_key_t;
 
 /* A node of the object hierarchy.  cluster 0 is the root (the scene).
  * child -> parent transform for frame f = K(f) * local, where K(f) is the
@@ -245,6 +262,7 @@ typedef struct {
     const scene_density_component_t *density_components;          /* reloc */
     uint32_t density_component_count;
     const scene_normals_t *normals;      uint32_t normals_count;  /* reloc */
+    const scene_view_key_t *view_keys;   uint32_t view_key_count; /* reloc */
     int32_t unit_exp;  /* every length above (positions, radii, half edges,
                           translations, component centres and radii) is the
                           scene text's times 2^unit_exp (render/limits.h,

@@ -195,6 +195,7 @@ static const uint32_t load_record_size[SCN_SEC_COUNT + 1] = {
     [SCN_SEC_TEXELS] = 1,                   [SCN_SEC_CLUSTERS] = SCN_CLUSTER_SIZE,
     [SCN_SEC_PRIMS] = SCN_PRIM_SIZE,        [SCN_SEC_COMPONENTS] = SCN_COMPONENT_SIZE,
     [SCN_SEC_KEYS] = SCN_KEY_SIZE,          [SCN_SEC_NORMALS] = SCN_NORMALS_SIZE,
+    [SCN_SEC_VIEW_KEYS] = SCN_VKEY_SIZE,
 };
 
 static const uint32_t load_count_limit[SCN_SEC_COUNT + 1] = {
@@ -203,6 +204,7 @@ static const uint32_t load_count_limit[SCN_SEC_COUNT + 1] = {
     [SCN_SEC_TEXELS] = SCN_MAX_TEXEL_BYTES,     [SCN_SEC_CLUSTERS] = SCN_MAX_CLUSTERS,
     [SCN_SEC_PRIMS] = SCN_MAX_PRIMS,            [SCN_SEC_COMPONENTS] = SCN_MAX_COMPONENTS,
     [SCN_SEC_KEYS] = SCN_MAX_KEYS,              [SCN_SEC_NORMALS] = SCN_MAX_PRIMS,
+    [SCN_SEC_VIEW_KEYS] = SCN_MAX_VIEW_KEYS,
 };
 
 static scene_load_status_t load_header(struct load *L, size_t len)
@@ -291,6 +293,27 @@ static const uint8_t *load_rec(const struct load *L, int kind, uint32_t i)
 
 /* ------------------------------------------------------------ records */
 
+/* A camera: eye, look_at and up as consecutive vectors at p (the VIEW
+ * record's and a camera key's order), the tangent at tan; what names it
+ * in a message. */
+_Static_assert(SCN_VIEW_LOOK_AT == SCN_VIEW_EYE + 12 && SCN_VIEW_UP == SCN_VIEW_EYE + 24 &&
+               SCN_VKEY_LOOK_AT == SCN_VKEY_EYE + 12 && SCN_VKEY_UP == SCN_VKEY_EYE + 24,
+               "a camera's vectors follow one another");
+static scene_load_status_t load_camera(struct load *L, const uint8_t *p, const uint8_t *tan,
+                                       const char *what, scene_camera_t *c)
+{
+    if (!load_coords(p, 6) || !load_factors(p + 24, 3))
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "%s: a coordinate is " LOAD_LIMITS, what,
+                         LOAD_LIMIT_ARGS);
+    if (!load_pos(wire_get_u32(tan), SCN_MAX_TAN_HALF_FOV))
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "%s: field of view out of range", what);
+    c->eye = load_lvec3(L, p);
+    c->look_at = load_lvec3(L, p + 12);
+    c->up = load_vec3(p + 24);
+    c->tan_half_fov_y = load_num(tan);
+    return SCENE_LOAD_OK;
+}
+
 static scene_load_status_t load_view(struct load *L, scene_t *s)
 {
     const uint8_t *p = load_rec(L, SCN_SEC_VIEW, 0);
@@ -310,11 +333,8 @@ static scene_load_status_t load_view(struct load *L, scene_t *s)
     if (frames < 1 || frames > SCN_MAX_FRAMES)
         return load_fail(L, SCENE_LOAD_ERR_LIMIT, "frame count %ld not 1..%ld", (long)frames,
                          (long)SCN_MAX_FRAMES);
-    if (!load_coords(p + SCN_VIEW_EYE, 6) || !load_factors(p + SCN_VIEW_UP, 3))
-        return load_fail(L, SCENE_LOAD_ERR_VALUE, "camera: a coordinate is " LOAD_LIMITS,
-                         LOAD_LIMIT_ARGS);
-    if (!load_pos(wire_get_u32(p + SCN_VIEW_TAN_HALF_FOV_Y), SCN_MAX_TAN_HALF_FOV))
-        return load_fail(L, SCENE_LOAD_ERR_VALUE, "camera: field of view out of range");
+    LOAD_TRY(load_camera(L, p + SCN_VIEW_EYE, p + SCN_VIEW_TAN_HALF_FOV_Y, "camera",
+                         &s->camera));
     if (!load_units(p + SCN_VIEW_BACKGROUND, 3, 1.0f))
         return load_fail(L, SCENE_LOAD_ERR_VALUE, "background colour not within 0..1");
     if (!load_units(p + SCN_VIEW_MIN_WEIGHT, 1, 1.0f))
@@ -326,10 +346,6 @@ static scene_load_status_t load_view(struct load *L, scene_t *s)
     s->width = w;
     s->height = h;
     s->frame_count = frames;
-    s->camera.eye = load_lvec3(L, p + SCN_VIEW_EYE);
-    s->camera.look_at = load_lvec3(L, p + SCN_VIEW_LOOK_AT);
-    s->camera.up = load_vec3(p + SCN_VIEW_UP);
-    s->camera.tan_half_fov_y = load_num(p + SCN_VIEW_TAN_HALF_FOV_Y);
     s->background = load_rgb(p + SCN_VIEW_BACKGROUND);
     s->options.max_depth = (uint8_t)depth;
     s->options.min_weight = load_num(p + SCN_VIEW_MIN_WEIGHT);
@@ -347,6 +363,88 @@ static scene_load_status_t load_view(struct load *L, scene_t *s)
     return SCENE_LOAD_OK;
 }
 
+/* A light's values of kind kind (SCN_LIGHT_*): colour, position,
+ * direction, cos_inner, cos_outer at p in that order (the LIGHTS record's
+ * and a light key's); what and i name it in a message. */
+_Static_assert(SCN_LIGHT_POSITION - SCN_LIGHT_COLOUR == SCN_VKEY_POSITION - SCN_VKEY_COLOUR &&
+               SCN_LIGHT_DIRECTION - SCN_LIGHT_COLOUR == SCN_VKEY_DIRECTION - SCN_VKEY_COLOUR &&
+               SCN_LIGHT_COS_INNER - SCN_LIGHT_COLOUR == SCN_VKEY_COS_INNER - SCN_VKEY_COLOUR &&
+               SCN_LIGHT_COS_OUTER - SCN_LIGHT_COLOUR == SCN_VKEY_COS_OUTER - SCN_VKEY_COLOUR,
+               "a light's values lie alike in its record and its keys");
+#define LOAD_LIGHT_AT(field) (p + (SCN_LIGHT_##field - SCN_LIGHT_COLOUR))
+static scene_load_status_t load_light_values(struct load *L, const uint8_t *p, uint32_t kind,
+                                             const char *what, uint32_t i, scene_light_t *l)
+{
+    if (!load_units(LOAD_LIGHT_AT(COLOUR), 3, SCN_MAX_INTENSITY))
+        return load_bad(L, SCENE_LOAD_ERR_VALUE, what, i, "colour out of range");
+    if (!load_coords(LOAD_LIGHT_AT(POSITION), 3) || !load_factors(LOAD_LIGHT_AT(DIRECTION), 3))
+        return load_range(L, what, i, "position or direction");
+    const uint8_t *d = LOAD_LIGHT_AT(DIRECTION);
+    if (kind != SCN_LIGHT_POINT && load_zero(wire_get_u32(d)) &&
+        load_zero(wire_get_u32(d + 4)) && load_zero(wire_get_u32(d + 8)))
+        return load_bad(L, SCENE_LOAD_ERR_VALUE, what, i, "direction is zero");
+    uint32_t ci = wire_get_u32(LOAD_LIGHT_AT(COS_INNER));
+    uint32_t co = wire_get_u32(LOAD_LIGHT_AT(COS_OUTER));
+    if (!load_in(ci, -1.0f, 1.0f) || !load_in(co, -1.0f, 1.0f) ||
+        (kind == SCN_LIGHT_SPOT && load_order_key(co) >= load_order_key(ci)))
+        return load_bad(L, SCENE_LOAD_ERR_VALUE, what, i,
+                        "cone cosines not -1..1 with outer < inner");
+    l->kind = kind == SCN_LIGHT_PARALLEL ? SCENE_LIGHT_PARALLEL
+              : kind == SCN_LIGHT_POINT  ? SCENE_LIGHT_POINT
+                                         : SCENE_LIGHT_SPOT;
+    l->intensity = load_rgb(LOAD_LIGHT_AT(COLOUR));
+    l->position = load_lvec3(L, LOAD_LIGHT_AT(POSITION));
+    l->direction = load_vec3(d);
+    l->cos_inner = num_from_f32_bits(ci);
+    l->cos_outer = num_from_f32_bits(co);
+    return SCENE_LOAD_OK;
+}
+#undef LOAD_LIGHT_AT
+
+/* The keys of the camera and the lights: grouped by target (the camera's,
+ * then by rising light index), frames rising within a target, each
+ * checked as the record it stands for. */
+static scene_load_status_t load_view_keys(struct load *L, scene_view_key_t *out)
+{
+    uint32_t n = L->sec[SCN_SEC_VIEW_KEYS].present ? L->sec[SCN_SEC_VIEW_KEYS].count : 0;
+    uint32_t n_light = L->sec[SCN_SEC_LIGHTS].present ? L->sec[SCN_SEC_LIGHTS].count : 0;
+    uint32_t rank_before = 0, frame_before = 0; /* rank: 1 the camera, 2 + i light i */
+    for (uint32_t i = 0; i < n; i++) {
+        const uint8_t *p = load_rec(L, SCN_SEC_VIEW_KEYS, i);
+        uint32_t frame = wire_get_u32(p + SCN_VKEY_FRAME);
+        uint32_t target = wire_get_u32(p + SCN_VKEY_TARGET);
+        if (target != SCN_VKEY_CAMERA && target >= n_light)
+            return load_bad(L, SCENE_LOAD_ERR_INDEX, "view key ", i,
+                            "names neither the camera nor a light");
+        uint32_t rank = target == SCN_VKEY_CAMERA ? 1 : 2 + target;
+        if (frame >= SCN_MAX_FRAMES)
+            return load_bad(L, SCENE_LOAD_ERR_LIMIT, "view key ", i,
+                            "frame over SCN_MAX_FRAMES - 1");
+        if (rank < rank_before || (rank == rank_before && frame <= frame_before))
+            return load_bad(L, SCENE_LOAD_ERR_TREE, "view key ", i,
+                            "out of order (the camera's keys, then each light's by index, "
+                            "frames rising)");
+        rank_before = rank;
+        frame_before = frame;
+        scene_view_key_t *k = &out[i];
+        k->frame = frame;
+        if (target == SCN_VKEY_CAMERA) {
+            if (wire_get_u32(p + SCN_VKEY_RESERVED) != 0)
+                return load_bad(L, SCENE_LOAD_ERR_VALUE, "view key ", i,
+                                "reserved field not zero");
+            k->target = SCENE_VIEW_KEY_CAMERA;
+            LOAD_TRY(load_camera(L, p + SCN_VKEY_EYE, p + SCN_VKEY_TAN_HALF_FOV_Y,
+                                 "camera key", &k->v.camera));
+        } else {
+            k->target = (uint16_t)target;
+            uint32_t kind = wire_get_u32(load_rec(L, SCN_SEC_LIGHTS, target) + SCN_LIGHT_KIND);
+            LOAD_TRY(load_light_values(L, p + SCN_VKEY_COLOUR, kind, "light key ", i,
+                                       &k->v.light));
+        }
+    }
+    return SCENE_LOAD_OK;
+}
+
 static scene_load_status_t load_lights(struct load *L, scene_light_t *out)
 {
     for (uint32_t i = 0; i < L->sec[SCN_SEC_LIGHTS].count; i++) {
@@ -354,29 +452,7 @@ static scene_load_status_t load_lights(struct load *L, scene_light_t *out)
         uint32_t kind = wire_get_u32(p + SCN_LIGHT_KIND);
         if (kind < SCN_LIGHT_PARALLEL || kind > SCN_LIGHT_SPOT)
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "light ", i, "unknown kind");
-        if (!load_units(p + SCN_LIGHT_COLOUR, 3, SCN_MAX_INTENSITY))
-            return load_bad(L, SCENE_LOAD_ERR_VALUE, "light ", i, "colour out of range");
-        if (!load_coords(p + SCN_LIGHT_POSITION, 3) || !load_factors(p + SCN_LIGHT_DIRECTION, 3))
-            return load_range(L, "light ", i, "position or direction");
-        const uint8_t *d = p + SCN_LIGHT_DIRECTION;
-        if (kind != SCN_LIGHT_POINT && load_zero(wire_get_u32(d)) &&
-            load_zero(wire_get_u32(d + 4)) && load_zero(wire_get_u32(d + 8)))
-            return load_bad(L, SCENE_LOAD_ERR_VALUE, "light ", i, "direction is zero");
-        uint32_t ci = wire_get_u32(p + SCN_LIGHT_COS_INNER);
-        uint32_t co = wire_get_u32(p + SCN_LIGHT_COS_OUTER);
-        if (!load_in(ci, -1.0f, 1.0f) || !load_in(co, -1.0f, 1.0f) ||
-            (kind == SCN_LIGHT_SPOT && load_order_key(co) >= load_order_key(ci)))
-            return load_bad(L, SCENE_LOAD_ERR_VALUE, "light ", i,
-                            "cone cosines not -1..1 with outer < inner");
-        scene_light_t *l = &out[i];
-        l->kind = kind == SCN_LIGHT_PARALLEL ? SCENE_LIGHT_PARALLEL
-                  : kind == SCN_LIGHT_POINT  ? SCENE_LIGHT_POINT
-                                             : SCENE_LIGHT_SPOT;
-        l->intensity = load_rgb(p + SCN_LIGHT_COLOUR);
-        l->position = load_lvec3(L, p + SCN_LIGHT_POSITION);
-        l->direction = load_vec3(d);
-        l->cos_inner = num_from_f32_bits(ci);
-        l->cos_outer = num_from_f32_bits(co);
+        LOAD_TRY(load_light_values(L, p + SCN_LIGHT_COLOUR, kind, "light ", i, &out[i]));
     }
     return SCENE_LOAD_OK;
 }
@@ -815,6 +891,16 @@ static scene_load_status_t load_scale(struct load *L, scene_t *s)
         if (wire_get_u32(p + SCN_LIGHT_KIND) != SCN_LIGHT_PARALLEL)
             most = load_max_exp(p + SCN_LIGHT_POSITION, 3, 0, most);
     }
+    uint32_t n_light = L->sec[SCN_SEC_LIGHTS].count;
+    for (uint32_t i = 0; i < L->sec[SCN_SEC_VIEW_KEYS].count; i++) {
+        const uint8_t *p = load_rec(L, SCN_SEC_VIEW_KEYS, i);
+        uint32_t target = wire_get_u32(p + SCN_VKEY_TARGET);
+        if (target == SCN_VKEY_CAMERA)
+            most = load_max_exp(p + SCN_VKEY_EYE, 6, 0, most);
+        else if (target < n_light && wire_get_u32(load_rec(L, SCN_SEC_LIGHTS, target) +
+                                                  SCN_LIGHT_KIND) != SCN_LIGHT_PARALLEL)
+            most = load_max_exp(p + SCN_VKEY_POSITION, 3, 0, most);
+    }
     int32_t e = most == LOAD_EXP_NONE ? 0 : RENDER_NORM_EXP - most; /* the largest |length|
                                                      is in [2^most, 2^(most+1)) */
     if (e < RENDER_NORM_EXP_MIN || e > RENDER_NORM_EXP_MAX)
@@ -853,7 +939,7 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
     uint32_t n_map = L.sec[SCN_SEC_MAPS].count, n_tex = L.sec[SCN_SEC_TEXELS].count;
     uint32_t n_clu = L.sec[SCN_SEC_CLUSTERS].count, n_prim = L.sec[SCN_SEC_PRIMS].count;
     uint32_t n_comp = L.sec[SCN_SEC_COMPONENTS].count, n_key = L.sec[SCN_SEC_KEYS].count;
-    uint32_t n_nrm = L.sec[SCN_SEC_NORMALS].count;
+    uint32_t n_nrm = L.sec[SCN_SEC_NORMALS].count, n_vkey = L.sec[SCN_SEC_VIEW_KEYS].count;
     size_t mark = arena->used;
     scene_light_t *lights = LOAD_ALLOC(arena, scene_light_t, n_light);
     scene_material_t *mats = LOAD_ALLOC(arena, scene_material_t, n_mat);
@@ -864,12 +950,13 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
     scene_density_component_t *comps = LOAD_ALLOC(arena, scene_density_component_t, n_comp);
     scene_key_t *keys = LOAD_ALLOC(arena, scene_key_t, n_key);
     scene_normals_t *normals = LOAD_ALLOC(arena, scene_normals_t, n_nrm);
+    scene_view_key_t *view_keys = LOAD_ALLOC(arena, scene_view_key_t, n_vkey);
     size_t scratch = arena->used;
     uint8_t *nesting = LOAD_ALLOC(arena, uint8_t, n_clu); /* scratch, released below */
     L.cexp = LOAD_ALLOC(arena, int32_t, n_clu);
     L.kexp = LOAD_ALLOC(arena, int32_t, n_clu);
     if (!lights || !mats || !maps || !texels || !clusters || !prims || !comps || !keys ||
-        !normals || !nesting || !L.cexp || !L.kexp) {
+        !normals || !view_keys || !nesting || !L.cexp || !L.kexp) {
         size_t need = arena->failed_request;
         arena_release_to(arena, mark);
         return load_fail(&L, SCENE_LOAD_ERR_ARENA, "arena too small for the scene: %ld bytes free, "
@@ -880,6 +967,8 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
         st = load_view(&L, out);
     if (st == SCENE_LOAD_OK)
         st = load_lights(&L, lights);
+    if (st == SCENE_LOAD_OK)
+        st = load_view_keys(&L, view_keys);
     if (st == SCENE_LOAD_OK)
         st = load_maps(&L, maps, texels);
     if (st == SCENE_LOAD_OK)
@@ -918,6 +1007,8 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
     out->density_component_count = n_comp;
     out->normals = normals;
     out->normals_count = n_nrm;
+    out->view_keys = view_keys;
+    out->view_key_count = n_vkey;
     return SCENE_LOAD_OK;
 }
 
@@ -943,6 +1034,7 @@ static scene_load_status_t load_shape(const uint8_t *buf, size_t len, scene_t *s
     shape->prim_count = L.sec[SCN_SEC_PRIMS].count;
     shape->density_component_count = L.sec[SCN_SEC_COMPONENTS].count;
     shape->normals_count = L.sec[SCN_SEC_NORMALS].count;
+    shape->view_key_count = L.sec[SCN_SEC_VIEW_KEYS].count;
     *texel_bytes = L.sec[SCN_SEC_TEXELS].count;
     return SCENE_LOAD_OK;
 }
@@ -974,8 +1066,9 @@ size_t scene_load_bytes_layout(const scene_t *shape, uint32_t texel_bytes,
            LOAD_BYTES(lay->component, shape->density_component_count) +
            LOAD_BYTES(lay->key, shape->key_count) +
            LOAD_BYTES(lay->normals, shape->normals_count) +
+           LOAD_BYTES(lay->view_key, shape->view_key_count) +
            LOAD_BYTES(1, shape->cluster_count) + LOAD_BYTES(8, shape->cluster_count) +
-           12 * ARENA_MAX_ALIGN;
+           13 * ARENA_MAX_ALIGN;
 #undef LOAD_BYTES
 }
 

@@ -28,7 +28,8 @@ BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
 	tests/board/render_resume.sh tests/board/render_link_noise.sh \
 	tests/board/render_trace.sh tests/board/render_refraction.sh tests/board/figures_small.sh \
 	tests/board/render_scaled.sh tests/board/render_auto.sh tests/board/render_density_steps.sh \
-	tests/board/render_lights.sh tests/board/render_paper.sh tests/board/an521.sh
+	tests/board/render_lights.sh tests/board/render_paper.sh tests/board/an521.sh \
+	tests/board/render_view_keys.sh tests/board/render_film.sh
 RENDER_FULL_TESTS := tests/board/render_grid_full.sh tests/board/render_faults_full.sh \
 	tests/board/render_faults_silent_full.sh
 
@@ -42,6 +43,8 @@ BENCHES += tests/bench/bench_render.sh tests/bench/bench_arith.sh tests/bench/be
 # Issue 12: failed NCs (the time a failure costs a frame), the long soak run.
 BENCHES += tests/bench/bench_faults.sh tests/bench/bench_soak.sh
 BENCHES += tests/bench/bench_big.sh
+# The DM's preparation hidden behind the NCs' rendering (an animation, traced frame by frame).
+BENCHES += tests/bench/bench_pipeline.sh
 # The board cost model --arith auto does not use: work counts against NC instructions.
 BENCHES += tests/bench/arith_cost_fit.sh
 BENCHES += tests/bench/bench_link_noise.sh

@@ -17,6 +17,7 @@
 #include "host-tools/gigs/render_session.h"
 #include "host-tools/trace/trace_file.h"
 #include "host-tools/ref/arith_auto.h"
+#include "host-tools/image/film.h"
 #include "host-tools/image/image_io.h"
 #include "host-tools/opts/cli_args.h"
 #include "host-tools/opts/out_file.h"
@@ -60,6 +61,7 @@ struct render_opts {
     int unit_fault_core;          /* --inject-unit-fault: DM or RC core, -1: none */
     long unit_fault_frame;
     int resume;                   /* --resume: frames already written are kept */
+    int fps;                      /* --fps N: a film's frames a second */
     const char *trace;  /* --trace FILE */
     int arith_auto, fpu; /* --arith auto, --fpu vfp|none (-1: not given) */
     double target_db;    /* --target-db D (-1: not given) */
@@ -92,7 +94,10 @@ static void render_usage(FILE *out)
             "                   paper's rule), once it has finished one\n"
             "  --frame N        render frame N (default 0)\n"
             "  --frames A:B     render frames A..B, writing OUT-000A.png ... (the DM prepares\n"
-            "                   frame k+1 while frame k renders)\n"
+            "                   frame k+1 while frame k renders); an OUT ending in .mp4,\n"
+            "                   .webm or .apng is one film, the frames piped to ffmpeg as\n"
+            "                   they come (an odd size padded to even for .mp4 and .webm)\n"
+            "  --fps N          a film's frames a second (1..%d, default %d)\n"
             "  --size WxH       render at this size instead of the scene's (text scenes)\n"
             "  --max-depth D    --refractionless on|off\n"
             "                   override the scene's recursion depth / transmission past it\n"
@@ -133,7 +138,7 @@ static void render_usage(FILE *out)
             "  --link L         bulk bytes (scene up, frame down) through shared memory\n"
             "                   (fast, default) or the serial link (serial)\n"
             "  --firmware ELF   firmware to boot; --ram MB; --quiet\n",
-            RENDER_DEFAULT_NCS, AREAS_DEFAULT_K);
+            RENDER_DEFAULT_NCS, AREAS_DEFAULT_K, FILM_MAX_FPS, FILM_DEFAULT_FPS);
 }
 
 enum render_opt_code {
@@ -170,6 +175,7 @@ enum render_opt_code {
     RENDER_OPT_FPU,
     RENDER_OPT_TARGET_DB,
     RENDER_OPT_PAPER,
+    RENDER_OPT_FPS,
 };
 
 static const struct option render_options[] = {
@@ -207,6 +213,7 @@ static const struct option render_options[] = {
     {"fpu", required_argument, NULL, RENDER_OPT_FPU},
     {"target-db", required_argument, NULL, RENDER_OPT_TARGET_DB},
     {"paper", no_argument, NULL, RENDER_OPT_PAPER},
+    {"fps", required_argument, NULL, RENDER_OPT_FPS},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -278,6 +285,11 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
         if (cli_parse_frames(c->arg, &o->first, &o->last) != 0 ||
             (!o->many && o->first != o->last))
             return cli_bad_value(c, o->many ? "FIRST:LAST" : "a frame number");
+        return 0;
+    case RENDER_OPT_FPS:
+        if (cli_long(c, 10, 1, FILM_MAX_FPS, &n) < 0)
+            return -1;
+        o->fps = (int)n;
         return 0;
     case RENDER_OPT_SIZE:
         if (cli_parse_size(c->arg, &o->scene.width, &o->scene.height) != 0)
@@ -464,9 +476,23 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
                 "command's own, not --board %s\n", o->board_name);
         return -1;
     }
+    int films = 0;
     for (int j = 0; j < o->njobs; j++) {
         if (!o->jobs[j].out) {
             fprintf(stderr, "links1 render: %s has no -o OUT\n", o->jobs[j].scene);
+            return -1;
+        }
+        films += film_kind_of(o->jobs[j].out) != FILM_NONE;
+    }
+    if (films) { /* before a board boots: the film could not be made */
+        char err[512];
+        if (o->resume) {
+            fprintf(stderr, "links1 render: --resume keeps numbered frames; a film (.mp4, "
+                    ".webm, .apng) is made whole in one run\n");
+            return -1;
+        }
+        if (film_program_check(err, sizeof err) != 0) {
+            fprintf(stderr, "links1 render: %s\n", err);
             return -1;
         }
     }
@@ -648,13 +674,31 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         printf("links1 render: %s: %s\n", j->scene, line);
     }
     o->traced_args = job_args;
+    /* a film: the frames go to ffmpeg as they come, the film is OUT */
+    struct film film;
+    memset(&film, 0, sizeof film);
+    int filming = film_kind_of(j->out) != FILM_NONE;
+    if (filming) {
+        char err[512];
+        if (film_open(&film, j->out, (int)info.width, (int)info.height,
+                      o->fps ? o->fps : FILM_DEFAULT_FPS, err, sizeof err) != 0) {
+            fprintf(stderr, "links1 render: %s\n", err);
+            return -1;
+        }
+        if (film_padded(film.kind, (int)info.width, (int)info.height))
+            printf("links1 render: %s: %ux%u padded to %ux%u (the film's yuv420p needs even "
+                   "sides)\n", j->out, info.width, info.height, (info.width + 1) & ~1u,
+                   (info.height + 1) & ~1u);
+    }
     for (long f = first; f <= last; f++) {
         char path[4096], err[SD_ERR_MAX];
-        if (o->many)
+        if (filming)
+            snprintf(path, sizeof path, "%s (frame %ld of the film)", j->out, f);
+        else if (o->many)
             scene_file_frame_path(j->out, f, path, sizeof path);
         else
             snprintf(path, sizeof path, "%s", j->out);
-        if (o->resume && access(path, F_OK) == 0) {
+        if (o->resume && !filming && access(path, F_OK) == 0) {
             printf("links1 render: frame %ld: %s is there already (--resume): kept\n", f, path);
             continue;
         }
@@ -669,32 +713,41 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         struct image img = {0, 0, NULL};
         uint8_t plan[LINK_INJECT_SIZE(LINK_INJECT_MAX + 1)];
         uint32_t plan_len = render_frame_plan(o, f, plan);
-        if (render_session_frame(b, &a, isatty(2), plan, plan_len, &s, &fails) != 0)
+        if (render_session_frame(b, &a, isatty(2), plan, plan_len, &s, &fails) != 0) {
+            film_abort(&film);
             return -1;
+        }
         long long t1 = board_now_ms(), cpu1 = render_qemu_cpu_ms(b->qemu_pid);
         o->wall.frame += t1 - t0;
         o->wall.board_prepare += s.prepare_ms;
         o->wall.board_render += s.render_ms;
         if (cpu0 >= 0 && cpu1 >= 0)
             o->wall.render_cpu += cpu1 - cpu0;
-        if (render_session_pull(b, (int)info.width, (int)info.height, &img, &pull_ms) != 0)
+        if (render_session_pull(b, (int)info.width, (int)info.height, &img, &pull_ms) != 0) {
+            film_abort(&film);
             return -1;
+        }
         long long t2 = board_now_ms();
         o->wall.pull += t2 - t1;
         render_faults_print(stdout, a.frame, &fails);
         /* Written whole or not at all (opts/out_file.h): a run that dies
          * leaves no half frame for --resume to keep. */
         struct out_file of;
-        rc = out_file_open(&of, path, err, sizeof err);
-        if (rc == 0 && image_write(of.f, path, &img, ppm, err, sizeof err) != 0) {
-            out_file_abort(&of);
-            rc = -1;
-        } else if (rc == 0) {
-            rc = out_file_commit(&of, err, sizeof err);
+        if (filming) {
+            rc = film_frame(&film, &img, err, sizeof err);
+        } else {
+            rc = out_file_open(&of, path, err, sizeof err);
+            if (rc == 0 && image_write(of.f, path, &img, ppm, err, sizeof err) != 0) {
+                out_file_abort(&of);
+                rc = -1;
+            } else if (rc == 0) {
+                rc = out_file_commit(&of, err, sizeof err);
+            }
         }
         if (rc != 0) {
             fprintf(stderr, "links1 render: %s\n", err);
             image_free(&img);
+            film_abort(&film);
             return -1;
         }
         o->wall.write += board_now_ms() - t2;
@@ -705,6 +758,16 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         o->traced_h = (uint32_t)img.height;
         o->traced_bytes = s.blob_bytes;
         image_free(&img);
+    }
+    if (filming) {
+        char err[512];
+        long frames = film.frames;
+        if (film_close(&film, err, sizeof err) != 0) {
+            fprintf(stderr, "links1 render: %s\n", err);
+            return -1;
+        }
+        printf("links1 render: %s: a film of %ld frame(s) at %d a second (ffmpeg)\n", j->out,
+               frames, o->fps ? o->fps : FILM_DEFAULT_FPS);
     }
     return 0;
 }

@@ -9,7 +9,7 @@ links1_SRCS = host-tools/cli/links1.c host-tools/cli/cmd_boot.c host-tools/cli/c
 	host-tools/cli/cmd_compare.c \
 	$(BOARD_LAUNCHER_SRCS) $(HT_GIGS_SRCS) $(HT_SELFTEST_SRCS) $(HT_INSN_SRCS) \
 	$(HT_TRACE_SRCS) $(HT_REF_AUTO_SRCS) $(HT_IMAGE_COMPARE_SRCS) $(HT_SCENE_POV_SRCS) \
-	$(SCENE_TEXT_SRCS)
+	$(HT_IMAGE_FILM_SRCS) $(SCENE_TEXT_SRCS)
 links1_ARITH := double
 links1_LIBS = $(SCENE_TEXT_LIBS)
 

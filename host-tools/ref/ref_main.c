@@ -15,6 +15,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "host-tools/image/film.h"
 #include "host-tools/image/image_io.h"
 #include "host-tools/opts/cli_args.h"
 #include "host-tools/opts/out_file.h"
@@ -36,11 +37,13 @@ static int ref_usage(FILE *out, int status)
                  "  [--max-depth D] [--min-weight W] [--density-steps N]\n"
                  "  [--mark-lost]  (paint pixels that lost precision magenta)\n"
                  "  [--paper]  (the scene's part of paper mode, as links1 render --paper)\n"
+                 "  an OUT ending in .mp4, .webm or .apng is one film of the frames, piped to\n"
+                 "  ffmpeg at %d a second (as links1 render does)\n"
                  "  --arith auto [--fpu vfp|none] [--target-db D]: the cheapest arithmetic of a\n"
                  "  unit computer with VFP (or none) that keeps D dB (default 40) against double,\n"
                  "  judged from a low-resolution pre-render (docs/renderer.md)\n"
                  "  (this is the %s build)\n",
-            NUM_NAME);
+            FILM_DEFAULT_FPS, NUM_NAME);
     return status;
 }
 
@@ -105,8 +108,9 @@ static int ref_load(const char *in, const uint8_t *bytes, size_t len, void **mem
     return -1;
 }
 
+/* One frame to out (an image file), or to film when it is not NULL. */
 static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena,
-                            size_t mark, long frame, const char *out, int ppm)
+                            size_t mark, long frame, const char *out, int ppm, struct film *film)
 {
     arena_release_to(arena, mark);
     render_frame_t *frame_data;
@@ -149,12 +153,17 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     double cpu = (double)(c1.tv_sec - c0.tv_sec) + 1e-9 * (double)(c1.tv_nsec - c0.tv_nsec);
     char err[SD_ERR_MAX];
     struct out_file of;
-    int rc = out_file_open(&of, out, err, sizeof err);
-    if (rc == 0 && image_write(of.f, out, &img, ppm, err, sizeof err) != 0) {
-        out_file_abort(&of);
-        rc = -1;
-    } else if (rc == 0) {
-        rc = out_file_commit(&of, err, sizeof err);
+    int rc;
+    if (film) {
+        rc = film_frame(film, &img, err, sizeof err);
+    } else {
+        rc = out_file_open(&of, out, err, sizeof err);
+        if (rc == 0 && image_write(of.f, out, &img, ppm, err, sizeof err) != 0) {
+            out_file_abort(&of);
+            rc = -1;
+        } else if (rc == 0) {
+            rc = out_file_commit(&of, err, sizeof err);
+        }
     }
     if (rc != 0)
         fprintf(stderr, "links1 ref: %s\n", err);
@@ -297,14 +306,33 @@ int main(int argc, char **argv)
                 last, (unsigned)scene.frame_count, (unsigned)scene.frame_count - 1);
         rc = -1;
     }
+    /* an OUT ending in .mp4, .webm or .apng: one film through ffmpeg */
+    struct film film;
+    memset(&film, 0, sizeof film);
+    int filming = film_kind_of(out) != FILM_NONE;
+    if (rc == 0 && filming &&
+        (film_program_check(err, sizeof err) != 0 ||
+         film_open(&film, out, scene.width, scene.height, FILM_DEFAULT_FPS, err, sizeof err) != 0)) {
+        fprintf(stderr, "links1 ref: %s\n", err);
+        rc = -1;
+        filming = 0;
+    }
     for (long f = first; rc == 0 && f <= last; f++) {
         char path[4096];
-        if (a.many)
+        if (filming)
+            snprintf(path, sizeof path, "%s (frame %ld of the film)", out, f);
+        else if (a.many)
             scene_file_frame_path(out, f, path, sizeof path);
         else
             snprintf(path, sizeof path, "%s", out);
-        rc = ref_render_frame(in, &scene, &arena, mark, f, path, a.ppm);
+        rc = ref_render_frame(in, &scene, &arena, mark, f, path, a.ppm, filming ? &film : NULL);
     }
+    if (filming && rc == 0 && film_close(&film, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 ref: %s\n", err);
+        rc = -1;
+    }
+    if (filming)
+        film_abort(&film); /* nothing after a close; a failed film removed */
     free(mem);
     free(bytes);
     return rc != 0;

@@ -7,7 +7,8 @@ SHARED_SRCS += render/scene_load.c
 
 HT_SCENE_SRCS := host-tools/scene/scene_lex.c host-tools/scene/scene_parse.c \
 	host-tools/scene/scene_parse_looks.c host-tools/scene/scene_parse_objects.c \
-	host-tools/scene/scene_parse_model.c host-tools/scene/scene_math.c \
+	host-tools/scene/scene_parse_model.c host-tools/scene/scene_parse_view.c \
+	host-tools/scene/scene_math.c \
 	host-tools/scene/scene_compile.c host-tools/scene/scene_bvh.c \
 	host-tools/scene/scene_board.c host-tools/scene/scene_file.c \
 	host-tools/scene/scene_import.c host-tools/scene/scene_import_view.c \
@@ -43,7 +44,7 @@ test_scene_file_LIBS = $(SCENE_TEXT_LIBS)
 
 # Image tests: POV-Ray agreement and arithmetic accuracy.
 BOARD_TESTS += tests/images/scenes.sh tests/images/pov.sh tests/images/accuracy.sh tests/images/adaptive.sh \
-	tests/images/import.sh tests/board/render_import.sh
+	tests/images/import.sh tests/board/render_import.sh tests/images/view_keys.sh
 
 # The loader once more in the other two arithmetics it runs in on the board.
 HOST_TESTS += test_scene_load_float test_scene_load_fixed

@@ -28,16 +28,20 @@ static void compile_vec3(uint8_t *p, const double v[3])
         wire_put_f32(p + 4 * i, (float)v[i]);
 }
 
+/* fov is horizontal (as POV-Ray's angle); the renderer wants the
+ * vertical half-angle's tangent. */
+static double compile_tan_half_fov_y(double fov, const struct sd_view *v)
+{
+    return tan(fov * COMPILE_PI / 360.0) * v->height / v->width;
+}
+
 static void compile_view(const struct sd_scene *s, uint8_t *p)
 {
     const struct sd_view *v = &s->view;
     compile_vec3(p + SCN_VIEW_EYE, v->eye);
     compile_vec3(p + SCN_VIEW_LOOK_AT, v->look_at);
     compile_vec3(p + SCN_VIEW_UP, v->up);
-    /* fov is horizontal (as POV-Ray's angle); the renderer wants the
-     * vertical half-angle's tangent. */
-    double tan_x = tan(v->fov * COMPILE_PI / 360.0);
-    wire_put_f32(p + SCN_VIEW_TAN_HALF_FOV_Y, (float)(tan_x * v->height / v->width));
+    wire_put_f32(p + SCN_VIEW_TAN_HALF_FOV_Y, (float)compile_tan_half_fov_y(v->fov, v));
     wire_put_u16(p + SCN_VIEW_WIDTH, (uint16_t)v->width);
     wire_put_u16(p + SCN_VIEW_HEIGHT, (uint16_t)v->height);
     compile_vec3(p + SCN_VIEW_BACKGROUND, v->background);
@@ -48,19 +52,58 @@ static void compile_view(const struct sd_scene *s, uint8_t *p)
     wire_put_u32(p + SCN_VIEW_DENSITY_STEPS, (uint32_t)v->density_steps);
 }
 
+/* A light's values from colour to cos_outer, at p (its record's colour
+ * field or its key's: the same order, scene_format.h). */
+#define COMPILE_LIGHT_AT(field) (p + (SCN_LIGHT_##field - SCN_LIGHT_COLOUR))
+static void compile_light_values(int kind, const double colour[3], const double position[3],
+                                 const double direction[3], double cone, double falloff,
+                                 uint8_t *p)
+{
+    compile_vec3(COMPILE_LIGHT_AT(COLOUR), colour);
+    compile_vec3(COMPILE_LIGHT_AT(POSITION), position);
+    compile_vec3(COMPILE_LIGHT_AT(DIRECTION), direction);
+    double inner = 1, outer = 0;
+    if (kind == SCN_LIGHT_SPOT) {
+        inner = cos(cone * COMPILE_PI / 180.0);
+        outer = cos((cone + falloff) * COMPILE_PI / 180.0);
+    }
+    wire_put_f32(COMPILE_LIGHT_AT(COS_INNER), (float)inner);
+    wire_put_f32(COMPILE_LIGHT_AT(COS_OUTER), (float)outer);
+}
+#undef COMPILE_LIGHT_AT
+
 static void compile_light(const struct sd_light *l, uint8_t *p)
 {
     wire_put_u32(p + SCN_LIGHT_KIND, (uint32_t)l->kind);
-    compile_vec3(p + SCN_LIGHT_COLOUR, l->colour);
-    compile_vec3(p + SCN_LIGHT_POSITION, l->position);
-    compile_vec3(p + SCN_LIGHT_DIRECTION, l->direction);
-    double inner = 1, outer = 0;
-    if (l->kind == SCN_LIGHT_SPOT) {
-        inner = cos(l->cone * COMPILE_PI / 180.0);
-        outer = cos((l->cone + l->falloff) * COMPILE_PI / 180.0);
-    }
-    wire_put_f32(p + SCN_LIGHT_COS_INNER, (float)inner);
-    wire_put_f32(p + SCN_LIGHT_COS_OUTER, (float)outer);
+    compile_light_values(l->kind, l->colour, l->position, l->direction, l->cone, l->falloff,
+                         p + SCN_LIGHT_COLOUR);
+}
+
+/* The keys of the camera and the lights, the camera's first, then each
+ * light's in light order (each target's keys lie together in s, frames
+ * rising). */
+static void compile_view_keys(const struct sd_scene *s, uint8_t *p)
+{
+    for (int target = -1; target < s->n_lights; target++)
+        for (int i = 0; i < s->n_view_keys; i++) {
+            const struct sd_view_key *k = &s->view_keys[i];
+            if (k->target != target)
+                continue;
+            wire_put_u32(p + SCN_VKEY_FRAME, (uint32_t)k->frame);
+            if (target < 0) {
+                wire_put_u32(p + SCN_VKEY_TARGET, SCN_VKEY_CAMERA);
+                compile_vec3(p + SCN_VKEY_EYE, k->eye);
+                compile_vec3(p + SCN_VKEY_LOOK_AT, k->look_at);
+                compile_vec3(p + SCN_VKEY_UP, k->up);
+                wire_put_f32(p + SCN_VKEY_TAN_HALF_FOV_Y,
+                             (float)compile_tan_half_fov_y(k->fov, &s->view));
+            } else {
+                wire_put_u32(p + SCN_VKEY_TARGET, (uint32_t)target);
+                compile_light_values(s->lights[target].kind, k->colour, k->position,
+                                     k->direction, k->cone, k->falloff, p + SCN_VKEY_COLOUR);
+            }
+            p += SCN_VKEY_SIZE;
+        }
 }
 
 static uint16_t compile_index(int i) { return i < 0 ? SCN_NO_INDEX : (uint16_t)i; }
@@ -145,6 +188,7 @@ static int compile_form(const struct sd_scene *s, uint8_t **out, size_t *len, ch
         {SCN_SEC_COMPONENTS, (uint32_t)s->n_components, SCN_COMPONENT_SIZE, 0},
         {SCN_SEC_KEYS, (uint32_t)s->n_keys, SCN_KEY_SIZE, 0},
         {SCN_SEC_NORMALS, n_smooth, SCN_NORMALS_SIZE, 0},
+        {SCN_SEC_VIEW_KEYS, (uint32_t)s->n_view_keys, SCN_VKEY_SIZE, 0},
     };
     /* Layout: header, table of the non-empty sections, then their bodies. */
     struct compile_section used[SCN_SEC_COUNT];
@@ -244,6 +288,9 @@ static int compile_form(const struct sd_scene *s, uint8_t **out, size_t *len, ch
                     wire_put_f32(p + SCN_NORMALS_N + 4 * j, (float)pr->n[j]);
                 p += SCN_NORMALS_SIZE;
             }
+            break;
+        case SCN_SEC_VIEW_KEYS:
+            compile_view_keys(s, p);
             break;
         }
     }

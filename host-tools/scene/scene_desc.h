@@ -53,6 +53,17 @@ struct sd_key {
     double translate[3], rotate[3], scale[3]; /* rotate: degrees about x, y, z */
 };
 
+/* A key of the camera (target -1) or of light `target`: its values at
+ * frame, every one given (the parser fills those a key leaves out from the
+ * key before).  Angles in degrees, as written; the compiler turns them into
+ * the tangent and cosines that interpolate. */
+struct sd_view_key {
+    int frame;
+    int target;
+    double eye[3], look_at[3], up[3], fov;                      /* the camera */
+    double colour[3], position[3], direction[3], cone, falloff; /* a light */
+};
+
 struct sd_cluster {
     char name[SCN_MAX_NAME];
     int parent;             /* -1 for the root */
@@ -89,6 +100,8 @@ struct sd_scene {
     int n_components;
     struct sd_key *keys;
     int n_keys;
+    struct sd_view_key *view_keys; /* each target's keys together, frames rising */
+    int n_view_keys;
     int no_auto_hierarchy;  /* 1: sd_compile keeps the author's clusters
                                as they are (scene_bvh.h); text form
                                `options { auto_hierarchy off }` */
@@ -138,6 +151,11 @@ int sd_export_pov(const struct sd_scene *s, int frame, int strict, FILE *f, cons
 /* Keyframe placement K(frame) of cluster c as a 3x4 matrix (identity when
  * it has no keys), interpolated as the renderer does (render/scene.h). */
 void sd_key_matrix(const struct sd_scene *s, int c, int frame, double k[12]);
+/* The view and lights at frame (their keys interpolated as the renderer
+ * does, render/prepare.c: the fov through its tangent, a spot's angles
+ * through their cosines), in double. */
+void sd_view_at(const struct sd_scene *s, int frame, struct sd_view *view,
+                struct sd_light lights[SCN_MAX_LIGHTS]);
 /* 1 when the triangle v0 v1 v2 (9 values) has its vertices on one line
  * (twice its area below 1e-12) or is a sliver (a height under
  * SCN_MIN_TRIANGLE_HEIGHT); the parser refuses it, an import drops it. */

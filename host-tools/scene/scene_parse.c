@@ -103,47 +103,6 @@ int parse_material_ref(struct parser *p)
 
 /* -------------------------------------------------------- global blocks */
 
-static void parse_camera(struct parser *p)
-{
-    struct sd_view *v = &p->s->view;
-    if (p->seen_camera++)
-        lex_error(&p->lx, "a second camera (a scene has one)");
-    lex_next(&p->lx);
-    parse_open(p, "camera");
-    while (p->lx.kind != LEX_CLOSE) {
-        if (lex_is_word(&p->lx, "eye")) {
-            lex_next(&p->lx);
-            parse_coord3(p, "eye", v->eye);
-        } else if (lex_is_word(&p->lx, "look_at")) {
-            lex_next(&p->lx);
-            parse_coord3(p, "look_at", v->look_at);
-        } else if (lex_is_word(&p->lx, "up")) {
-            lex_next(&p->lx);
-            parse_factor3(p, "up", v->up);
-        } else if (lex_is_word(&p->lx, "fov")) {
-            lex_next(&p->lx);
-            v->fov = lex_number_in(&p->lx, "fov (degrees)", SCN_MIN_FOV, SCN_MAX_FOV);
-        } else {
-            parse_unknown(p, "camera");
-        }
-    }
-    int close_line = p->lx.tok_line;
-    double d[3], c[3];
-    for (int i = 0; i < 3; i++)
-        d[i] = v->look_at[i] - v->eye[i];
-    c[0] = d[1] * v->up[2] - d[2] * v->up[1];
-    c[1] = d[2] * v->up[0] - d[0] * v->up[2];
-    c[2] = d[0] * v->up[1] - d[1] * v->up[0];
-    if (parse_len3_zero(d))
-        lex_error(&p->lx, "camera ending on line %d: eye and look_at are the same point",
-                  close_line);
-    if (sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]) <=
-        1e-9 * sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) *
-            sqrt(v->up[0] * v->up[0] + v->up[1] * v->up[1] + v->up[2] * v->up[2]))
-        lex_error(&p->lx, "camera: up is parallel to the viewing direction (or zero)");
-    lex_next(&p->lx);
-}
-
 static void parse_options(struct parser *p)
 {
     struct sd_view *v = &p->s->view;
@@ -227,83 +186,6 @@ static void parse_animation(struct parser *p)
             parse_unknown(p, "animation");
         }
     }
-    lex_next(&p->lx);
-}
-
-static void parse_light(struct parser *p)
-{
-    struct sd_scene *s = p->s;
-    if (s->n_lights >= SCN_MAX_LIGHTS)
-        lex_error(&p->lx, "more than SCN_MAX_LIGHTS (%d) lights", SCN_MAX_LIGHTS);
-    lex_next(&p->lx);
-    struct sd_light l;
-    memset(&l, 0, sizeof l);
-    l.colour[0] = l.colour[1] = l.colour[2] = 1;
-    l.falloff = PARSE_DEFAULT_FALLOFF;
-    if (lex_is_word(&p->lx, "parallel"))
-        l.kind = SCN_LIGHT_PARALLEL;
-    else if (lex_is_word(&p->lx, "point"))
-        l.kind = SCN_LIGHT_POINT;
-    else if (lex_is_word(&p->lx, "spot"))
-        l.kind = SCN_LIGHT_SPOT;
-    else
-        lex_error(&p->lx, "light kind must be parallel, point or spot, not '%s'", p->lx.tok);
-    lex_next(&p->lx);
-    parse_open(p, "light");
-    int have_pos = 0, have_dir = 0, have_at = 0, have_cone = 0;
-    double at[3] = {0, 0, 0};
-    while (p->lx.kind != LEX_CLOSE) {
-        int k = l.kind;
-        if (lex_is_word(&p->lx, "colour") || lex_is_word(&p->lx, "color")) {
-            lex_next(&p->lx);
-            for (int i = 0; i < 3; i++)
-                l.colour[i] = lex_number_in(&p->lx, "light colour", 0, SCN_MAX_INTENSITY);
-        } else if (lex_is_word(&p->lx, "position") && k != SCN_LIGHT_PARALLEL) {
-            lex_next(&p->lx);
-            parse_coord3(p, "position", l.position);
-            have_pos = 1;
-        } else if (lex_is_word(&p->lx, "direction") && k != SCN_LIGHT_POINT) {
-            lex_next(&p->lx);
-            parse_factor3(p, "direction", l.direction);
-            if (parse_len3_zero(l.direction))
-                lex_error(&p->lx, "light direction is zero");
-            have_dir = 1;
-        } else if (lex_is_word(&p->lx, "at") && k == SCN_LIGHT_SPOT) {
-            lex_next(&p->lx);
-            parse_coord3(p, "at", at);
-            have_at = 1;
-        } else if (lex_is_word(&p->lx, "cone") && k == SCN_LIGHT_SPOT) {
-            lex_next(&p->lx);
-            l.cone = lex_number_in(&p->lx, "cone (degrees)", 0, SCN_MAX_SPOT_ANGLE);
-            have_cone = 1;
-        } else if (lex_is_word(&p->lx, "falloff") && k == SCN_LIGHT_SPOT) {
-            lex_next(&p->lx);
-            l.falloff = lex_number_in(&p->lx, "falloff (degrees)", 0.01, SCN_MAX_SPOT_ANGLE);
-        } else {
-            lex_error(&p->lx, "'%s' is not a property of a %s light", p->lx.tok,
-                      k == SCN_LIGHT_PARALLEL ? "parallel"
-                      : k == SCN_LIGHT_POINT  ? "point"
-                                              : "spot");
-        }
-    }
-    if (l.kind != SCN_LIGHT_PARALLEL && !have_pos)
-        lex_error(&p->lx, "this light needs a position");
-    if (l.kind == SCN_LIGHT_SPOT && have_at) {
-        for (int i = 0; i < 3; i++)
-            l.direction[i] = at[i] - l.position[i];
-        if (parse_len3_zero(l.direction))
-            lex_error(&p->lx, "spotlight 'at' is its own position");
-        have_dir = 1;
-    }
-    if (l.kind != SCN_LIGHT_POINT && !have_dir)
-        lex_error(&p->lx, "this light needs a direction%s",
-                  l.kind == SCN_LIGHT_SPOT ? " (or 'at')" : "");
-    if (l.kind == SCN_LIGHT_SPOT && !have_cone)
-        lex_error(&p->lx, "a spotlight needs a cone angle");
-    if (l.cone + l.falloff > SCN_MAX_SPOT_ANGLE)
-        lex_error(&p->lx, "cone + falloff is %g degrees, more than %g", l.cone + l.falloff,
-                  SCN_MAX_SPOT_ANGLE);
-    s->lights[s->n_lights++] = l;
     lex_next(&p->lx);
 }
 
@@ -506,5 +388,6 @@ void sd_free(struct sd_scene *s)
     free(s->prims);
     free(s->components);
     free(s->keys);
+    free(s->view_keys);
     memset(s, 0, sizeof *s);
 }

@@ -2,7 +2,8 @@
  * (scene_parse.c: helpers, global statements, clusters, entry points;
  * scene_parse_looks.c: maps and materials; scene_parse_objects.c:
  * transforms, keys and primitives; scene_parse_model.c: the model
- * statement).  Private to the parser.
+ * statement; scene_parse_view.c: the camera and the lights with their
+ * keys).  Private to the parser.
  */
 #ifndef LINKS1_HOST_SCENE_PARSE_H
 #define LINKS1_HOST_SCENE_PARSE_H
@@ -24,7 +25,7 @@ struct parser {
     struct lex lx;
     struct sd_scene *s;
     char dir[PARSE_DIR_MAX]; /* directory of the scene file, for map images */
-    int cap_materials, cap_clusters, cap_prims, cap_components, cap_keys;
+    int cap_materials, cap_clusters, cap_prims, cap_components, cap_keys, cap_view_keys;
     int seen_camera, seen_resolution, seen_options, seen_animation;
     int fresnel_off; /* options { fresnel off }: materials that set neither
                         fresnel nor constant keep src and trc constant */
@@ -49,6 +50,8 @@ int parse_find_map(const struct sd_scene *s, const char *name);
 int parse_material_ref(struct parser *p);
 
 /* statements: each starts at its keyword and consumes through its '}' */
+void parse_camera(struct parser *p);               /* scene_parse_view.c, with */
+void parse_light(struct parser *p);                /* their keys */
 void parse_map(struct parser *p);                  /* scene_parse_looks.c */
 void parse_material(struct parser *p);
 int parse_transform(struct parser *p, double m[12]); /* scene_parse_objects.c;

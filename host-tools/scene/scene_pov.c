@@ -208,7 +208,11 @@ int sd_export_pov(const struct sd_scene *s, int frame, int strict, FILE *f, cons
                  notes.text[0]);
         return -1;
     }
-    const struct sd_view *v = &s->view;
+    /* the camera and lights of this frame (their keys) */
+    struct sd_view view;
+    struct sd_light lights[SCN_MAX_LIGHTS];
+    sd_view_at(s, frame, &view, lights);
+    const struct sd_view *v = &view;
     fprintf(f, "// Written by links1 export-pov (frame %d). Render with\n"
                "//   povray +I<this> +O<out.png> +W%d +H%d -A +WT1 File_Gamma=1.0\n",
             frame, v->width, v->height);
@@ -217,7 +221,7 @@ int sd_export_pov(const struct sd_scene *s, int frame, int strict, FILE *f, cons
     double amb[3] = {0, 0, 0};
     for (int i = 0; i < s->n_lights; i++)
         for (int c = 0; c < 3; c++)
-            amb[c] += s->lights[i].colour[c];
+            amb[c] += lights[i].colour[c];
     fprintf(f, "#version 3.7;\n"
                "global_settings {\n  assumed_gamma 1.0\n  ambient_light rgb ");
     pov_vec(f, amb);
@@ -236,7 +240,7 @@ int sd_export_pov(const struct sd_scene *s, int frame, int strict, FILE *f, cons
     pov_vec(f, v->look_at);
     fprintf(f, "\n}\n");
     for (int i = 0; i < s->n_lights; i++) {
-        const struct sd_light *l = &s->lights[i];
+        const struct sd_light *l = &lights[i];
         double pos[3], at[3];
         double far = fmax(POV_PARALLEL_DISTANCE, 4 * pov_extent(s));
         if (l->kind == SCN_LIGHT_PARALLEL) {

@@ -5,7 +5,8 @@
 set -eu
 need_pkgs=(make gcc libc6-dev libpng-dev gcc-arm-none-eabi picolibc-arm-none-eabi
            libnewlib-arm-none-eabi qemu-system-arm povray python3 libassimp-dev
-           clang libclang-rt-dev gdb-multiarch gnuplot-nox)
+           clang libclang-rt-dev gdb-multiarch gnuplot-nox ffmpeg)
+# ffmpeg: `links1 render --frames A:B -o FILM.mp4` pipes the frames to its CLI.
 # gnuplot-nox: the charts of `make figures` and `make sweeps`, PNG without X.
 # clang: the fuzz harnesses (tests/fuzz/); libclang-rt-dev holds libFuzzer's
 # and the sanitizers' runtimes, which clang only recommends.  gdb-multiarch:

@@ -13,6 +13,7 @@
 #include "tests/check.h"
 
 #define ARENA_BYTES (4u * 1024u * 1024u)
+#define TEST_PI 3.14159265358979323846
 
 /* Built once per arithmetic: a value that is not a multiple of the fixed
  * build's step (1/65536) comes out within one step, IEEE ones within float
@@ -612,6 +613,69 @@ static void test_small_arena(void)
     free(b);
 }
 
+/* Keys of the camera and the lights: loaded in order (the camera's, then
+ * each light's), the angles as their tangent and cosines, and every
+ * field a loader must check refused when damaged. */
+static void test_view_keys(void)
+{
+    static const char *text =
+        "camera { eye 0 1 -5 look_at 0 0 0 fov 60 key 0 { } key 2 { eye 1 1 -5 fov 40 } }\n"
+        "resolution 64 48\n"
+        "light point { position 1 2 3 key 1 { colour 0.5 0.5 0.5 } }\n"
+        "light spot { position 0 5 0 at 0 0 0 cone 20 falloff 10 key 0 { } key 2 { cone 30 } }\n"
+        "material b { }\n"
+        "box { material b min -1 -1 -1 max 1 0 3 }\n";
+    struct sd_scene sd;
+    char err[SD_ERR_MAX];
+    uint8_t *b = NULL;
+    size_t len = 0;
+    CHECK_EQ_INT(sd_parse_text("t.scn", text, &sd, err, sizeof err), 0);
+    CHECK_EQ_INT(sd_compile(&sd, &b, &len, err, sizeof err), 0);
+    sd_free(&sd);
+    if (!b)
+        return;
+    static uint8_t mem[ARENA_BYTES];
+    arena_t arena;
+    scene_t s;
+    scene_load_error_t e;
+    arena_init(&arena, mem, sizeof mem);
+    CHECK_EQ_INT(scene_load(b, len, &arena, &s, &e), SCENE_LOAD_OK);
+    CHECK_EQ_INT(s.view_key_count, 5);
+    if (s.view_key_count == 5) {
+        static const uint16_t target[5] = {SCENE_VIEW_KEY_CAMERA, SCENE_VIEW_KEY_CAMERA, 0, 1, 1};
+        static const uint32_t frame[5] = {0, 2, 1, 0, 2};
+        for (int i = 0; i < 5; i++) {
+            CHECK_EQ_INT(s.view_keys[i].target, target[i]);
+            CHECK_EQ_INT(s.view_keys[i].frame, frame[i]);
+        }
+        CHECK_NEAR(num_to_double(s.view_keys[1].v.camera.tan_half_fov_y),
+                   tan(20 * TEST_PI / 180) * 48 / 64, VAL_TOL);
+        CHECK_NEAR(num_to_double(s.view_keys[0].v.camera.tan_half_fov_y),
+                   num_to_double(s.camera.tan_half_fov_y), 0);
+        CHECK_NEAR(num_to_double(s.view_keys[2].v.light.intensity.g), 0.5, VAL_TOL);
+        CHECK_NEAR(num_to_double(s.view_keys[4].v.light.cos_inner), cos(30 * TEST_PI / 180), VAL_TOL);
+        CHECK_NEAR(num_to_double(s.view_keys[4].v.light.cos_outer), cos(40 * TEST_PI / 180), VAL_TOL);
+        CHECK_EQ_INT(s.view_keys[4].v.light.kind, SCENE_LIGHT_SPOT);
+    }
+    expect_field(b, len, SCN_SEC_VIEW_KEYS, SCN_VKEY_SIZE + SCN_VKEY_FRAME, 0, 4,
+                 SCENE_LOAD_ERR_TREE, "view key 1: out of order");
+    expect_field(b, len, SCN_SEC_VIEW_KEYS, 2 * SCN_VKEY_SIZE + SCN_VKEY_TARGET, SCN_VKEY_CAMERA,
+                 4, SCENE_LOAD_ERR_TREE, "view key 2: out of order");
+    expect_field(b, len, SCN_SEC_VIEW_KEYS, 2 * SCN_VKEY_SIZE + SCN_VKEY_TARGET, 2, 4,
+                 SCENE_LOAD_ERR_INDEX, "view key 2: names neither");
+    expect_field(b, len, SCN_SEC_VIEW_KEYS, SCN_VKEY_SIZE + SCN_VKEY_TAN_HALF_FOV_Y,
+                 f32_bits(-0.5f), 4, SCENE_LOAD_ERR_VALUE, "camera key: field of view");
+    expect_field(b, len, SCN_SEC_VIEW_KEYS, SCN_VKEY_RESERVED, 1, 4, SCENE_LOAD_ERR_VALUE,
+                 "view key 0: reserved");
+    expect_field(b, len, SCN_SEC_VIEW_KEYS, 4 * SCN_VKEY_SIZE + SCN_VKEY_COS_OUTER,
+                 f32_bits(0.99f), 4, SCENE_LOAD_ERR_VALUE, "light key 4: cone cosines");
+    expect_field(b, len, SCN_SEC_VIEW_KEYS, 2 * SCN_VKEY_SIZE + SCN_VKEY_COLOUR,
+                 f32_bits(-1.0f), 4, SCENE_LOAD_ERR_VALUE, "light key 2: colour");
+    expect_field(b, len, SCN_SEC_VIEW_KEYS, SCN_VKEY_FRAME, SCN_MAX_FRAMES, 4,
+                 SCENE_LOAD_ERR_LIMIT, "view key 0: frame");
+    free(b);
+}
+
 int main(void)
 {
     RUN(test_round_trip);
@@ -624,5 +688,6 @@ int main(void)
     RUN(test_tolerance_follows_geometry);
     RUN(test_cluster_scale_follows);
     RUN(test_small_arena);
+    RUN(test_view_keys);
     return check_exit();
 }

@@ -266,6 +266,66 @@ static void test_deep_nesting_refused(void)
     CHECK(strstr(err, "nested deeper than 32") != NULL);
 }
 
+/* Keys of the camera and the lights: a value a key leaves out keeps the
+ * one before it, sd_view_at interpolates as the renderer does, and bad
+ * keys are refused where they stand. */
+static void test_view_keys(void)
+{
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    int rc = sd_parse_text("t.scn",
+                           "camera { eye 0 1 -5 look_at 0 0 0 fov 60\n"
+                           "  key 0 { } key 4 { eye 4 1 -5 fov 90 } key 6 { look_at 1 0 0 } }\n"
+                           "light spot { position 0 5 0 at 0 0 0 cone 20 falloff 10\n"
+                           "  key 2 { position 2 5 0 } }\n"
+                           "material m { } sphere { material m radius 1 }\n",
+                           &s, err, sizeof err);
+    CHECK_EQ_INT(rc, 0);
+    if (rc) {
+        printf("  %s\n", err);
+        return;
+    }
+    CHECK_EQ_INT(s.n_view_keys, 4);
+    if (s.n_view_keys == 4) {
+        /* key 6 keeps key 4's eye and fov; the spot keeps aiming at its 'at' */
+        CHECK_NEAR(s.view_keys[2].eye[0], 4, 0);
+        CHECK_NEAR(s.view_keys[2].fov, 90, 0);
+        CHECK_NEAR(s.view_keys[3].direction[0], -2, 0);
+        CHECK_NEAR(s.view_keys[3].direction[1], -5, 0);
+        CHECK_EQ_INT(s.view_keys[3].target, 0);
+    }
+    struct sd_view v;
+    struct sd_light l[SCN_MAX_LIGHTS];
+    sd_view_at(&s, 2, &v, l); /* halfway from key 0 to key 4 */
+    CHECK_NEAR(v.eye[0], 2, 1e-12);
+    CHECK_NEAR(tan(v.fov * 3.14159265358979323846 / 360), (tan(3.14159265358979323846 / 6) + 1) / 2,
+               1e-12);
+    CHECK_NEAR(l[0].position[0], 2, 1e-12); /* at its key */
+    sd_view_at(&s, 9, &v, l);                /* after the last key: held */
+    CHECK_NEAR(v.look_at[0], 1, 1e-12);
+    sd_free(&s);
+
+    EXPECT_ERROR(HEAD "camera { key 3 { } key 3 { } }\n", 3, 24, "key frames of the camera must rise");
+    EXPECT_ERROR(HEAD "camera { key 0 { fov 200 } }\n", 3, 22, "fov (degrees) must be 0.1..170");
+    EXPECT_ERROR(HEAD "camera { key 0 { } eye 0 0 -9 }\n", 3, 20,
+                 "the camera's own 'eye' must come before its keys");
+    EXPECT_ERROR(HEAD "camera { key 0 { look_at 0 0 -5 } }\n", 3, 33,
+                 "camera key at frame 0: eye and look_at are the same point");
+    /* between keys the eye passes through look_at at frame 3 */
+    EXPECT_ERROR(HEAD "camera { eye 0 0 -5 look_at 0 0 5 key 0 { } key 9 { eye 0 0 15 look_at 0 0 -5 } }\n",
+                 3, 79, "at frame 3 between them eye and look_at are (nearly) the same point");
+    EXPECT_ERROR(HEAD "light spot { position 0 5 0 direction 0 -1 0 cone 20 key 4 { cone 80 falloff 20 } }\n",
+                 3, 81, "light key at frame 4: cone + falloff is 100 degrees, more than 89");
+    EXPECT_ERROR(HEAD "light spot { position 0 5 0 direction 0 -1 0 cone 20 key 4 { cone 95 } }\n",
+                 3, 67, "cone (degrees) must be 0..89");
+    EXPECT_ERROR(HEAD "light point { position 0 5 0 key 2 { } key 1 { } }\n", 3, 44,
+                 "key frames of a light must rise");
+    EXPECT_ERROR(HEAD "light parallel { direction 0 -1 0 key 0 { } key 8 { direction 0 1 0.01 } }\n",
+                 3, 72, "their directions are nearly opposite");
+    EXPECT_ERROR(HEAD "light point { position 0 5 0 key 0 { direction 0 1 0 } }\n", 3, 38,
+                 "'direction' is not a property of a point light's key");
+}
+
 int main(void)
 {
     RUN(test_minimal_scene_and_defaults);
@@ -277,5 +337,6 @@ int main(void)
     RUN(test_errors_name_line_and_column);
     RUN(test_length_limit_accepted);
     RUN(test_deep_nesting_refused);
+    RUN(test_view_keys);
     return check_exit();
 }
