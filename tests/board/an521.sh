@@ -57,13 +57,15 @@ for arith in float soft fixed; do
 done
 
 # An NC board's QEMU killed (SIGKILL) in the middle of a frame: the RC's
-# watchdog gives its areas to the NCs left, and the frame is exact.
+# watchdog gives its areas to the NCs left, and the frame is exact.  The
+# tool's lines are read as they come (stdbuf: a line at a time), so the kill
+# follows the scene's load, not the tool's exit.
 name=an521_nc_board_killed
 if an_ready "$name"; then
     out=$RENDER_TMP/$name.ppm log=$RENDER_TMP/$name.log
     ref=$(render_ref scenes/demo.scn float 240x180)
-    timeout "$BOARD_RUN_LIMIT_S" "$LINKS1" render scenes/demo.scn -o "$out" --machine an521 \
-        --ncs 4 --size 240x180 >"$log" 2>&1 &
+    timeout "$BOARD_RUN_LIMIT_S" stdbuf -oL "$LINKS1" render scenes/demo.scn -o "$out" \
+        --machine an521 --ncs 4 --size 240x180 >"$log" 2>&1 &
     tool=$!
     for _ in $(seq 1 300); do
         grep -q ' loaded: ' "$log" 2>/dev/null && break
@@ -91,8 +93,8 @@ fi
 name=an521_board0_killed
 if an_ready "$name"; then
     out=$RENDER_TMP/$name.ppm log=$RENDER_TMP/$name.log
-    timeout "$BOARD_RUN_LIMIT_S" "$LINKS1" render scenes/demo.scn -o "$out" --machine an521 \
-        --ncs 4 --size 160x120 >"$log" 2>&1 &
+    timeout "$BOARD_RUN_LIMIT_S" stdbuf -oL "$LINKS1" render scenes/demo.scn -o "$out" \
+        --machine an521 --ncs 4 --size 240x180 >"$log" 2>&1 &
     tool=$!
     for _ in $(seq 1 300); do
         grep -q ' loaded: ' "$log" 2>/dev/null && break
