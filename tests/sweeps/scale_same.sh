@@ -17,11 +17,25 @@
 #   - a sphere shrunk by 1e-6 in a cluster beside the scene: fixed refuses
 #     it naming the span, double renders it.
 #   PASS scale_same_...  or  FAIL ...
+# make test runs the ends of each range and one factor between (32 checks);
+# SCALE_SAME_FULL=1 (make test-full: scale_same_full.sh) every factor above
+# (81 checks).
 set -u
 cd "$(dirname "$0")/../.."
 LINKS1=${LINKS1:-build/links1}
 SCALE_SAME_PCT=1
 SCALE_SAME_DB=40
+if [ "${SCALE_SAME_FULL:-0}" = 1 ]; then
+    exact_knobs="0.0009765625 0.015625 0.5 2 8 64 1024"
+    fixed_knobs="0.001 0.003 0.01 0.03 0.1 0.3 3 10 30 100 300 1000 1000000"
+    pow2_knobs="9.5367431640625e-07 0.0078125 0.5 2 128 1048576"
+    cluster_knobs="1e-06 0.001 0.01 0.3 3 1000 1000000"
+else
+    exact_knobs="0.0009765625 1024"
+    fixed_knobs="0.001 1000 1000000"
+    pow2_knobs="9.5367431640625e-07 1048576"
+    cluster_knobs="1e-06 0.3 1000000"
+fi
 out=build/test-images/scale_same
 rm -rf "$out"
 mkdir -p "$out"
@@ -32,7 +46,7 @@ render() { # KNOB ARITH [FAMILY]: prints the image path, or nothing when refused
 }
 for arith in double float fixed; do
     one=$(render 1 $arith)
-    for knob in 0.0009765625 0.015625 0.5 2 8 64 1024; do
+    for knob in $exact_knobs; do
         img=$(render $knob $arith)
         if [ -z "$one" ] || [ -z "$img" ]; then
             echo "FAIL scale_same_exact_${knob}_$arith: refused: $(tail -n 1 "$out/scale-$knob-$arith.png.log")"
@@ -44,7 +58,7 @@ for arith in double float fixed; do
     done
 done
 one=$out/scale-1-fixed.png
-for knob in 0.001 0.003 0.01 0.03 0.1 0.3 3 10 30 100 300 1000 1000000; do
+for knob in $fixed_knobs; do
     img=$(render $knob fixed)
     if [ -z "$img" ]; then
         echo "FAIL scale_same_fixed_$knob: refused: $(tail -n 1 "$out/scale-$knob-fixed.png.log")"
@@ -73,7 +87,7 @@ export MODEL_DIR=$out/models
 for arith in double float fixed; do
     one=$out/scale-1-$arith.png
     mone=$(render 1 $arith model_scale)
-    for knob in 9.5367431640625e-07 0.0078125 0.5 2 128 1048576; do
+    for knob in $pow2_knobs; do
         for fam in cluster_scale model_scale; do
             case $fam/$knob in model_scale/0.0078125 | model_scale/0.5 | model_scale/2 | model_scale/128) continue ;; esac
             want=$one
@@ -92,7 +106,7 @@ done
 # a cluster scaled by a factor that is not a power of two gives the image
 # of the same scene scaled in its coordinates, every pixel within 1/255
 for arith in double float fixed; do
-    for knob in 1e-06 0.001 0.01 0.3 3 1000 1000000; do
+    for knob in $cluster_knobs; do
         a=$(render $knob $arith) b=$(render $knob $arith cluster_scale)
         name=scale_same_cluster_${knob}_$arith
         if [ -z "$a" ] || [ -z "$b" ]; then
