@@ -42,7 +42,7 @@ BENCHES += tests/bench/bench_host.sh
 BENCHES += tests/bench/bench_render.sh tests/bench/bench_arith.sh tests/bench/bench_scale.sh
 # Issue 12: failed NCs (the time a failure costs a frame), the long soak run.
 BENCHES += tests/bench/bench_faults.sh tests/bench/bench_soak.sh
-BENCHES += tests/bench/bench_big.sh
+BENCHES += tests/bench/bench_big.sh tests/bench/bench_an521.sh
 # The DM's preparation hidden behind the NCs' rendering (an animation, traced frame by frame).
 BENCHES += tests/bench/bench_pipeline.sh
 # The board cost model --arith auto does not use: work counts against NC instructions.

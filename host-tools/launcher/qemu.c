@@ -23,6 +23,16 @@
 #include <unistd.h>
 
 static int board_qemu_reap(struct board *b, int timeout_ms);
+
+/* Where an NC board writes what the plugin counted: PATH for board 0,
+ * PATH.bK for board K. */
+static void board_an521_file(const char *path, int board, char *out, size_t cap)
+{
+    if (board == 0)
+        snprintf(out, cap, "%s", path);
+    else
+        snprintf(out, cap, "%s.b%d", path, board);
+}
 static void board_qemu_exit_text(const struct board *b, char *out, size_t cap);
 static int board_stop_qemu(struct board *b);
 
@@ -65,6 +75,38 @@ static void board_qemu_exec_failed(const char *qemu)
  * socket pair, the RAM our memfd) must not outlive the tool, whatever ends
  * the tool; a named board (qemu_fd < 0: the UART a listening socket, the RAM
  * a file, both in its state directory) runs on in a session of its own. */
+/* The counting plugin's -plugin argument into out, when the board counts:
+ * 1, else 0.  An an521 NC board (board > 0) writes its counts and marks
+ * beside the requested files (board_an521_file), which board_stop merges
+ * with board 0's under the machine's core numbers. */
+static int board_plugin_arg(const struct board *b, int board, char *out, size_t cap)
+{
+    const struct board_opts *o = &b->opts;
+    if (!o->insn_count_out && !o->insn_series_out && !o->insn_trace_out)
+        return 0;
+    const char *so = getenv("LINKS1_INSN_PLUGIN");
+    char self[PATH_MAX], file[PATH_MAX + 16];
+    if (!so || !*so) {
+        self_dir(self, sizeof self);
+        snprintf(out, cap, "%s/insn-count.so", self);
+    } else {
+        snprintf(out, cap, "%s", so);
+    }
+    size_t n = strlen(out);
+    if (o->insn_count_out) {
+        board_an521_file(o->insn_count_out, board, file, sizeof file);
+        n += (size_t)snprintf(out + n, n < cap ? cap - n : 0, ",out=%s", file);
+    }
+    if (o->insn_series_out && board == 0)
+        n += (size_t)snprintf(out + n, n < cap ? cap - n : 0, ",series=%s,every=%d",
+                              o->insn_series_out, o->insn_series_ms);
+    if (o->insn_trace_out) {
+        board_an521_file(o->insn_trace_out, board, file, sizeof file);
+        n += (size_t)snprintf(out + n, n < cap ? cap - n : 0, ",trace=%s", file);
+    }
+    return 1;
+}
+
 /* The emulator's arguments for the machine: its model and memory, QEMU's
  * devices; board (an521) is which board this process is. */
 static int board_qemu_machine_args(const struct board *b, int board, const char **argv, int n,
@@ -117,7 +159,7 @@ static void board_qemu_exec_nc_board(struct board *b, int board)
         dup2(null, 1); /* QEMU's own warnings (the unconnected NIC) */
     }
     fcntl(b->ram_fd, F_SETFD, 0);
-    char ram[PATH_MAX + 96], loader[96];
+    char ram[PATH_MAX + 96], loader[96], plugin[3 * PATH_MAX];
     snprintf(ram, sizeof ram, "memory-backend-file,id=ram,size=%dM,mem-path=/proc/self/fd/%d,"
              "share=on", b->opts.ram_mb, b->ram_fd);
     const char *qemu = board_qemu_binary();
@@ -133,6 +175,10 @@ static void board_qemu_exec_nc_board(struct board *b, int board)
     argv[n++] = "-no-reboot";
     argv[n++] = "-kernel";
     argv[n++] = b->firmware;
+    if (board_plugin_arg(b, board, plugin, sizeof plugin)) {
+        argv[n++] = "-plugin";
+        argv[n++] = plugin;
+    }
     argv[n] = NULL;
     execvp(qemu, (char *const *)argv);
     board_qemu_exec_failed(qemu);
@@ -205,26 +251,7 @@ static void board_qemu_exec(struct board *b, int qemu_fd)
     argv[n++] = "chardev:link";
     argv[n++] = "-kernel";
     argv[n++] = b->firmware;
-    if (b->opts.insn_count_out || b->opts.insn_series_out || b->opts.insn_trace_out) {
-        const char *so = getenv("LINKS1_INSN_PLUGIN");
-        char self[PATH_MAX], args[2 * PATH_MAX];
-        if (!so || !*so) {
-            self_dir(self, sizeof self);
-            snprintf(plugin, sizeof plugin, "%s/insn-count.so", self);
-        } else {
-            snprintf(plugin, sizeof plugin, "%s", so);
-        }
-        if (b->opts.insn_count_out)
-            snprintf(args, sizeof args, ",out=%s", b->opts.insn_count_out);
-        else
-            args[0] = 0;
-        if (b->opts.insn_series_out)
-            snprintf(args + strlen(args), sizeof args - strlen(args), ",series=%s,every=%d",
-                     b->opts.insn_series_out, b->opts.insn_series_ms);
-        if (b->opts.insn_trace_out)
-            snprintf(args + strlen(args), sizeof args - strlen(args), ",trace=%s",
-                     b->opts.insn_trace_out);
-        snprintf(plugin + strlen(plugin), sizeof plugin - strlen(plugin), "%s", args);
+    if (board_plugin_arg(b, 0, plugin, sizeof plugin)) {
         argv[n++] = "-plugin";
         argv[n++] = plugin;
     }
@@ -499,17 +526,70 @@ static int board_nc_board_reap(struct board *b, int k, int timeout_ms)
     return 1;
 }
 
+/* Appends what NC board k's plugin wrote at path.bK to path, its cores
+ * renumbered as the machine's (2k, 2k + 1), and removes it.  The lines are
+ * the plugin's: "vcpu V COUNT" (counts) or "V KIND COUNT" (trace marks);
+ * one that does not parse, or names a vCPU the board does not have, is
+ * dropped and said. */
+static void board_merge_counts(const char *path, int k, int counts)
+{
+    char part[PATH_MAX + 16], line[128];
+    board_an521_file(path, k, part, sizeof part);
+    FILE *in = fopen(part, "r");
+    if (!in)
+        return; /* the board ended before its plugin wrote (killed) */
+    FILE *out = fopen(path, "a");
+    unsigned bad = 0;
+    while (out && fgets(line, sizeof line, in)) {
+        unsigned v, kind;
+        unsigned long long c;
+        char end;
+        if (counts && sscanf(line, "vcpu %u %llu%c", &v, &c, &end) == 3 && end == '\n' &&
+            v < AN521_CORES_PER_BOARD)
+            fprintf(out, "vcpu %d %llu\n", k * AN521_CORES_PER_BOARD + (int)v, c);
+        else if (!counts && sscanf(line, "%u %u %llu%c", &v, &kind, &c, &end) == 4 &&
+                 end == '\n' && v < AN521_CORES_PER_BOARD)
+            fprintf(out, "%d %u %llu\n", k * AN521_CORES_PER_BOARD + (int)v, kind, c);
+        else
+            bad++;
+    }
+    if (bad)
+        fprintf(stderr, "links1: %u line(s) of an521 board %d's %s dropped: not the "
+                "plugin's\n", bad, k, counts ? "instruction counts" : "trace marks");
+    if (out)
+        fclose(out);
+    fclose(in);
+    unlink(part);
+}
+
 /* Ends the an521 NC boards' processes: they have no power control and
  * nothing to keep (their state is in the shared file, which goes with the
- * command), so they are killed outright. */
+ * command), so they are killed outright; when the plugin counts, they are
+ * asked to end (SIGTERM: QEMU then lets the plugin write) and what they
+ * counted is merged with board 0's. */
 static void board_stop_nc_boards(struct board *b)
 {
-    for (int k = 1; k < AN521_MAX_BOARDS; k++)
-        if (b->nc_board_pid[k])
+    const struct board_opts *o = &b->opts;
+    int counting = o->insn_count_out || o->insn_trace_out;
+    int any = 0;
+    for (int k = 1; k < AN521_MAX_BOARDS; k++) {
+        if (b->nc_board_pid[k]) {
+            kill(b->nc_board_pid[k], counting ? SIGTERM : SIGKILL);
+            any = 1;
+        }
+    }
+    for (int k = 1; k < AN521_MAX_BOARDS; k++) {
+        if (b->nc_board_pid[k] && !board_nc_board_reap(b, k, BOARD_TERM_WAIT_MS)) {
             kill(b->nc_board_pid[k], SIGKILL);
-    for (int k = 1; k < AN521_MAX_BOARDS; k++)
-        if (b->nc_board_pid[k])
             board_nc_board_reap(b, k, BOARD_TERM_WAIT_MS);
+        }
+    }
+    for (int k = 1; any && k < o->ncores / AN521_CORES_PER_BOARD; k++) {
+        if (o->insn_count_out)
+            board_merge_counts(o->insn_count_out, k, 1);
+        if (o->insn_trace_out)
+            board_merge_counts(o->insn_trace_out, k, 0);
+    }
 }
 
 int board_start(struct board *b, const struct board_opts *o)
