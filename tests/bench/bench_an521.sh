@@ -6,7 +6,15 @@
 #     soft and fixed, Cortex-M33 against Cortex-A15;
 #   - wall time of the frame (the board's render time) with 8 NCs: 5 an521
 #     boards (5 QEMU processes) against one virt board, on this host.
-# One run each (instruction counts repeat exactly; wall times do not).
+#   - the replay of an an521 trace (demo.scn 512x480, 8 NCs) on equal-speed
+#     unit computers at 1, 8 and 64 NCs, with the replay's default message
+#     latency and with the an521 boards' own: a message to a unit of another
+#     board waits for the receiver's next tick, half a tick (AN521_TICK_US)
+#     on average, which at the emulated cores' measured speed (the NCs'
+#     instructions over their render time) is that many instructions; at
+#     the replay's 1 MIPS, that many microseconds.
+# One run each (the virt board's instruction counts repeat exactly; the
+# an521 NCs' vary by the ticks they take while they wait; wall times vary).
 # Writes a Markdown table to stdout (and BENCH_AN521_OUT if set).
 set -eu
 cd "$(dirname "$0")/../.."
@@ -38,4 +46,26 @@ render_ms() { # MACHINE: the board's render time of the frame, 8 NCs, float
     echo "| demo.scn 320x240, 8 NCs, float | virt (1 QEMU) | an521 (5 QEMUs) |"
     echo "| --- | --- | --- |"
     echo "| board's render time (wall, ms) | $v | $m |"
+    echo
+    "$LINKS1" render scenes/demo.scn -o "$out/t.png" --machine an521 --ncs 8 --size 512x480 \
+        --trace "$out/t.trace" --count-insns --quiet >"$out/t.log" 2>&1
+    nc_insns=$(sed -nE 's/.*NCs total ([0-9]+) .*/\1/p' "$out/t.log")
+    render=$(sed -nE 's/.*\(board: prepare [0-9]+ ms, render ([0-9]+) ms.*/\1/p' "$out/t.log" | head -n 1)
+    tick_us=$(sed -nE 's/^#define AN521_TICK_US ([0-9]+)u.*/\1/p' drivers/an521/an521_map.h)
+    # instructions per microsecond of one emulated NC while the frame renders
+    mips=$(awk -v i="$nc_insns" -v ms="$render" 'BEGIN { printf "%.1f", i / 8 / (ms * 1000) }')
+    line_us=$(awk -v t="$tick_us" -v m="$mips" 'BEGIN { printf "%.0f", t / 2 * m }')
+    echo "an521 trace: demo.scn 512x480, 8 NCs: NCs $nc_insns instructions in a $render ms render:"
+    echo "$mips instructions per microsecond per emulated NC; half a tick ($tick_us us / 2) is"
+    echo "$line_us instructions, the replay's --line-us $line_us at 1 MIPS."
+    echo
+    echo "| NCs | speed-up, default latency (1000 us) | speed-up, the an521 boards' latency ($line_us us) |"
+    echo "| --- | --- | --- |"
+    "$LINKS1" replay "$out/t.trace" --ncs 1,8,64 >"$out/r1.txt"
+    "$LINKS1" replay "$out/t.trace" --ncs 1,8,64 --line-us "$line_us" >"$out/r2.txt"
+    for n in 1 8 64; do
+        a=$(sed -nE "s/^ncs $n .*speed-up ([0-9.]+) .*/\1/p" "$out/r1.txt")
+        b=$(sed -nE "s/^ncs $n .*speed-up ([0-9.]+) .*/\1/p" "$out/r2.txt")
+        echo "| $n | ${a}x | ${b}x |"
+    done
 } | tee "${BENCH_AN521_OUT:-/dev/null}"
