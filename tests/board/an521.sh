@@ -45,15 +45,27 @@ if an_ready an521_selftest_boot; then
     board_selftest an521_selftest --machine an521 --smp 6 --arith soft status ping imsu
 fi
 
-# demo.scn on 4 NCs (3 boards) = the host build of the same arithmetic.
+# demo.scn on 4 NCs (3 boards) = the host build of the same arithmetic;
+# in float the instructions are counted too: every board's counts merged
+# under the machine's core numbers, each core's non-zero.
 for arith in float soft fixed; do
     name=an521_demo_$arith
     an_ready "$name" || continue
     out=$RENDER_TMP/$name.ppm
     ref=$(render_ref scenes/demo.scn "$arith" 64x48)
+    count=()
+    [ "$arith" = float ] && count=(--count-insns)
     render_board "$name" "$out" scenes/demo.scn -o "$out" --machine an521 --ncs 4 \
-        --arith "$arith" --size 64x48 || continue
+        --arith "$arith" --size 64x48 "${count[@]}" || continue
     render_same "$name" "$ref" "$out"
+    if [ "$arith" = float ]; then
+        cores=$(grep -cE '^  core +[0-5] (DM|RC|NC) +[1-9][0-9]*$' "$RENDER_TMP/$name.log")
+        if [ "$cores" -eq 6 ]; then
+            echo "PASS an521_counts_merged"
+        else
+            echo "FAIL an521_counts_merged: $cores of 6 cores with a count: $(grep -A7 'guest instructions per core' "$RENDER_TMP/$name.log" | paste -sd' ')"
+        fi
+    fi
 done
 
 # An NC board's QEMU killed (SIGKILL) in the middle of a frame: the RC's
