@@ -461,6 +461,12 @@ static int board_qemu_check(struct board *b, const struct board_opts *o)
 {
     b->process_gone = board_qemu_gone;
     board_session_peer_from_zero(b); /* the board we boot numbers from 0 */
+    if (o->machine == MACHINE_AN521 && !o->firmware && strcmp(o->arith, "double") == 0) {
+        fprintf(stderr, "links1: --arith double: the Cortex-M33's FPU is single precision, so "
+                "the an521 boards have float, soft and fixed firmware (double runs on "
+                "--machine virt)\n");
+        return -1;
+    }
     if (board_find_firmware(o, b->firmware, sizeof b->firmware) < 0)
         return -1;
     if (o->ncores < UNITS_MIN_CORES || o->ncores > UNITS_MAX_CORES) {

@@ -6,7 +6,8 @@
 # build in float, soft and fixed; an NC board's QEMU killed in the middle
 # of a frame still gives the exact frame; board 0 killed ends the command
 # naming it; a scene too big for the machine, and an odd number of NCs,
-# are refused with the limit named.
+# are refused with the limit named, and so is double (the M33 has no
+# double-precision FPU).
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
 
@@ -152,6 +153,18 @@ if an_ready "$name"; then
     rc=$?
     echo "    $msg"
     if [ $rc -ne 0 ] && echo "$msg" | grep -q '3 NCs on an521 boards: each NC board carries 2 NCs, so give an even number from 2 to 64'; then
+        echo "PASS $name"
+    else
+        echo "FAIL $name: exit $rc: $msg"
+    fi
+fi
+name=an521_refuse_double
+if an_ready "$name"; then
+    msg=$("$LINKS1" render scenes/demo.scn -o "$RENDER_TMP/dbl.ppm" --machine an521 --ncs 2 --arith double 2>&1)
+    rc=$?
+    echo "    $msg"
+    if [ $rc -ne 0 ] && echo "$msg" | grep -q "the Cortex-M33's FPU is single precision" &&
+        ! echo "$msg" | grep -q 'booting'; then
         echo "PASS $name"
     else
         echo "FAIL $name: exit $rc: $msg"
