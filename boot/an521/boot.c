@@ -67,6 +67,7 @@ void boot_main(void)
     hostlink_tx_init();   // log sink: klog, panics, faults (relayed off board 0)
     ktime_init();         // the board's counter and the tick's handler
     an521_tick_start();
+    an521_mhu_start();
     cpu_of(core)->wake_ready = 1;
     uint32_t n = an521_boards() * AN521_CORES_PER_BOARD;
     board_ncores = n;
@@ -93,6 +94,7 @@ void boot_secondary(void)
     cpu_init(core);
     an521_faults_enable();
     an521_tick_start();
+    an521_mhu_start();
     cpu_of(core)->wake_ready = 1;
     kmem_init(core, board_ncores);
     unit_start();

@@ -16,6 +16,15 @@
 #define AN521_SYSCTL_INITSVTOR1 (AN521_SYSCTL + 0x114u)
 #define AN521_SYSCTL_CPUWAIT (AN521_SYSCTL + 0x118u)
 
+/* SSE-200 message handling unit 0: each core's interrupt is raised while
+ * a bit of its register is set (by the other core) and NVIC interrupt 6
+ * on that core. */
+#define AN521_MHU0 0x50003000u
+#define AN521_MHU_CPU_STAT(k) (AN521_MHU0 + 0x10u * (k))
+#define AN521_MHU_CPU_SET(k) (AN521_MHU0 + 0x10u * (k) + 0x4u)
+#define AN521_MHU_CPU_CLR(k) (AN521_MHU0 + 0x10u * (k) + 0x8u)
+#define AN521_MHU_IRQN 6u
+
 /* CMSDK APB timer 0 (SSE-200, clocked by the 20 MHz system clock): the
  * board's counter. */
 #define AN521_TIMER0 0x50000000u
@@ -35,8 +44,9 @@
 #define AN521_VECTOR_IRQS 48u
 
 /* The core's own SysTick wakes it this often: no interrupt crosses from
- * one board's process to another's, so a unit waiting on another board
- * looks again at each tick. */
+ * one board's process to another's, so a unit waiting on a unit of another
+ * board looks again at each tick (the two cores of one board ring each
+ * other through the MHU). */
 #define AN521_TICK_US 1000u
 
 #endif

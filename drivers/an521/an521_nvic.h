@@ -9,6 +9,8 @@
 void an521_irq_entry(void);
 /* Lets NVIC interrupt irqn reach this core. */
 void an521_nvic_enable(uint32_t irqn);
+/* This core's doorbell from the other core of its board (MHU0) on. */
+void an521_mhu_start(void);
 /* MemManage, BusFault and UsageFault reported as such on this core. */
 void an521_faults_enable(void);
 
