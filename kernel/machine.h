@@ -1,12 +1,16 @@
 /* machine.h: what the kernel, the drivers and the roles ask of the machine
  * they run on, and nothing else.  Each machine implements it once, in its
  * own folders (boot/<machine>/ and drivers/<machine>/): on the virt board
- * the GICv3 and PSCI (drivers/virt/, boot/virt/).  The kernel names no
- * device: it calls these, and the machine's drivers answer.
+ * the GICv3 and PSCI (drivers/virt/, boot/virt/), on the an521 boards the
+ * NVIC, the MHU and the SSE-200's registers (drivers/an521/, boot/an521/;
+ * docs/machines.md).  The kernel names no device: it calls these, and the
+ * machine's drivers answer.
  *
  * Wake-ups.  A unit computer that waits sleeps (task_wait, WFI) until an
  * interrupt.  Another unit that has put something where it will look (a
- * line ring, an IMSU block, the data collector's FIFO) rings its doorbell.
+ * line ring, an IMSU block, the data collector's FIFO) rings its doorbell;
+ * where no interrupt can reach the sleeper (another an521 board), its own
+ * tick wakes it to look again.
  */
 #ifndef LINKS1_KERNEL_MACHINE_H
 #define LINKS1_KERNEL_MACHINE_H

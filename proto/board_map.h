@@ -1,6 +1,6 @@
-/* board_map.h: addresses of the board that the host tools must know too.
- * Plain #defines only: boot/virt/start.S includes this through drivers/virt/virt_map.h.
- */
+/* board_map.h: addresses of the virt board that the host tools must know
+ * too (the an521 boards': board_map_an521.h).  Plain #defines only:
+ * boot/virt/start.S includes this through drivers/virt/virt_map.h. */
 #ifndef LINKS1_PROTO_BOARD_MAP_H
 #define LINKS1_PROTO_BOARD_MAP_H
 
