@@ -54,7 +54,8 @@ static void farm_usage(FILE *out)
             "  --retries N   tries of a frame (parallel --retries: each on a host where it has\n"
             "                not failed yet), 1..100, default 3\n"
             "  --ext E       png (default) or ppm\n"
-            "  the ssh parallel uses: $PARALLEL_SSH (e.g. \"ssh -F CONFIG\"), else ssh\n");
+            "  the ssh parallel uses: $PARALLEL_SSH (e.g. \"ssh -F CONFIG\"), else ssh;\n"
+            "  $FW_DIR, when set, is made absolute and passed to every host (--env)\n");
 }
 
 /* Whether NAME is an executable file in some directory of $PATH. */
@@ -306,6 +307,18 @@ int cmd_farm(int argc, char **argv)
             return 2;
         }
 
+    /* $FW_DIR (where the firmware is) made absolute: the jobs run in DIR here and
+     * in the login directory there; parallel's --env takes it to the hosts. */
+    const char *fw_dir = getenv("FW_DIR");
+    char fw_abs[PATH_MAX];
+    if (fw_dir && *fw_dir) {
+        if (!realpath(fw_dir, fw_abs)) {
+            fprintf(stderr, "links1 farm: $FW_DIR %s: %s\n", fw_dir, strerror(errno));
+            return 1;
+        }
+        setenv("FW_DIR", fw_abs, 1);
+    }
+
     /* The frames not yet in DIR. */
     long nframes = last - first + 1, kept = 0;
     char **todo = calloc((size_t)nframes, sizeof *todo);
@@ -339,10 +352,12 @@ int cmd_farm(int argc, char **argv)
     snprintf(joblog, sizeof joblog, "%s/farm-joblog.tsv", dir_abs);
     int status = 0;
     if (ntodo > 0) {
-        /* The command template: fixed words and replacement strings only. */
+        /* The command template: fixed words and replacement strings only.  It
+         * starts with a word of its own: parallel leaves a first replacement
+         * string unquoted (it takes it for the command). */
         char templ[4096], ret[64], retries_s[16];
         int n = snprintf(templ, sizeof templ,
-                         "{1} render {2} --frames {3}:{3} -o frame.%s --quiet", ext);
+                         "exec {1} render {2} --frames {3}:{3} -o frame.%s --quiet", ext);
         for (int i = 0; i < nextra && n < (int)sizeof templ; i++)
             n += snprintf(templ + n, sizeof templ - (size_t)n, " {%d}", 4 + i);
         snprintf(ret, sizeof ret, "frame-{3}.%s", ext);
@@ -366,6 +381,10 @@ int cmd_farm(int argc, char **argv)
         av[k++] = "--return";
         av[k++] = ret;
         av[k++] = "--cleanup";
+        if (fw_dir && *fw_dir) {
+            av[k++] = "--env";
+            av[k++] = "FW_DIR";
+        }
         av[k++] = templ;
         av[k++] = ":::";
         av[k++] = tool;
