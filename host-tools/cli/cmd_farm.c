@@ -164,7 +164,8 @@ struct farm_host {
     double seconds;
 };
 
-/* The joblog's lines into hosts[]; *nlines the jobs logged.  0, or -1. */
+/* The joblog's lines added into hosts[] (*nhosts of them so far); *njobs the
+ * jobs it logs.  0, or -1. */
 static int farm_read_joblog(const char *log, struct farm_host *hosts, int *nhosts, long *njobs)
 {
     FILE *f = fopen(log, "r");
@@ -173,7 +174,6 @@ static int farm_read_joblog(const char *log, struct farm_host *hosts, int *nhost
         return -1;
     }
     char line[8192];
-    *nhosts = 0;
     *njobs = 0;
     int first = 1;
     while (fgets(line, sizeof line, f)) {
@@ -319,39 +319,64 @@ int cmd_farm(int argc, char **argv)
         setenv("FW_DIR", fw_abs, 1);
     }
 
-    /* The frames not yet in DIR. */
-    long nframes = last - first + 1, kept = 0;
+    /* Rounds: the frames not in DIR handed to parallel; a frame whose job
+     * ended well but which did not arrive (its host died before parallel's
+     * --return copied it) is handed out again in the next round, up to
+     * --retries rounds. */
+    long nframes = last - first + 1, kept = 0, refarmed = 0, missing = 0;
     char **todo = calloc((size_t)nframes, sizeof *todo);
-    if (!todo) {
+    struct farm_host *hosts = calloc(FARM_MAX_HOSTS, sizeof *hosts);
+    if (!todo || !hosts) {
         fprintf(stderr, "links1 farm: out of memory\n");
         return 1;
     }
-    long ntodo = 0;
-    for (long f = first; f <= last; f++) {
-        char path[PATH_MAX + 32];
-        farm_frame_path(dir_abs, f, ext, path, sizeof path);
-        struct stat st;
-        if (lstat(path, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
-            kept++;
-            continue;
+    int nhosts = 0, status = 0;
+    long njobs = 0, failed = 0;
+    for (int round = 1;; round++) {
+        long ntodo = 0;
+        missing = 0;
+        for (long f = first; f <= last; f++) {
+            char path[PATH_MAX + 32];
+            farm_frame_path(dir_abs, f, ext, path, sizeof path);
+            struct stat st;
+            if (lstat(path, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+                if (round == 1)
+                    kept++;
+                continue;
+            }
+            missing++;
+            if (round > retries) {
+                if (missing <= 10)
+                    fprintf(stderr, "links1 farm: frame %ld did not arrive (%s)\n", f, path);
+                continue;
+            }
+            char num[24];
+            snprintf(num, sizeof num, "%04ld", f);
+            free(todo[ntodo]);
+            todo[ntodo] = strdup(num);
+            if (!todo[ntodo]) {
+                fprintf(stderr, "links1 farm: out of memory\n");
+                return 1;
+            }
+            ntodo++;
         }
-        char num[24];
-        snprintf(num, sizeof num, "%04ld", f);
-        todo[ntodo] = strdup(num);
-        if (!todo[ntodo]) {
-            fprintf(stderr, "links1 farm: out of memory\n");
-            return 1;
-        }
-        ntodo++;
-    }
-    printf("links1 farm: frames %ld..%ld of %s: %ld in %s already, %ld to render on %d "
-           "host(s) of %s\n", first, last, scene_abs, kept, dir_abs, ntodo, nhosts_file,
-           hosts_abs);
-    fflush(stdout);
-    char joblog[PATH_MAX + 32];
-    snprintf(joblog, sizeof joblog, "%s/farm-joblog.tsv", dir_abs);
-    int status = 0;
-    if (ntodo > 0) {
+        if (round == 1)
+            printf("links1 farm: frames %ld..%ld of %s: %ld in %s already, %ld to render on %d "
+                   "host(s) of %s\n", first, last, scene_abs, kept, dir_abs, ntodo, nhosts_file,
+                   hosts_abs);
+        else if (ntodo > 0)
+            printf("links1 farm: %ld frame(s) did not arrive; handing them out again (round "
+                   "%d of at most %d)\n", ntodo, round, retries);
+        if (round > 1)
+            refarmed += ntodo;
+        fflush(stdout);
+        if (ntodo == 0)
+            break;
+        char joblog[PATH_MAX + 32];
+        if (round == 1)
+            snprintf(joblog, sizeof joblog, "%s/farm-joblog.tsv", dir_abs);
+        else
+            snprintf(joblog, sizeof joblog, "%s/farm-joblog-%d.tsv", dir_abs, round);
         /* The command template: fixed words and replacement strings only.  It
          * starts with a word of its own: parallel leaves a first replacement
          * string unquoted (it takes it for the command). */
@@ -424,14 +449,13 @@ int cmd_farm(int argc, char **argv)
             fprintf(stderr, "links1 farm: parallel did not start\n");
             return 1;
         }
+        long jobs_round = 0;
+        if (farm_read_joblog(joblog, hosts, &nhosts, &jobs_round) != 0)
+            return 1;
+        njobs += jobs_round;
     }
 
-    /* The summary: parallel's joblog, then every frame looked for in DIR. */
-    struct farm_host hosts[FARM_MAX_HOSTS];
-    int nhosts = 0;
-    long njobs = 0, failed = 0;
-    if (ntodo > 0 && farm_read_joblog(joblog, hosts, &nhosts, &njobs) != 0)
-        return 1;
+    /* The summary: per host from parallel's joblogs. */
     for (int h = 0; h < nhosts; h++) {
         failed += hosts[h].failed;
         printf("links1 farm: host %s: %ld frame(s) in %.1f s of jobs, %.2f frames/min",
@@ -441,25 +465,16 @@ int cmd_farm(int argc, char **argv)
             printf(", %ld frame(s) failed there on their last try", hosts[h].failed);
         printf("\n");
     }
-    long missing = 0;
-    for (long f = first; f <= last; f++) {
-        char path[PATH_MAX + 32];
-        farm_frame_path(dir_abs, f, ext, path, sizeof path);
-        struct stat st;
-        if (!(lstat(path, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0)) {
-            if (missing < 10)
-                fprintf(stderr, "links1 farm: frame %ld did not arrive (%s)\n", f, path);
-            missing++;
-        }
-    }
-    long done = nframes - missing - kept;
+    long arrived = nframes - missing - kept;
     printf("links1 farm: %ld frame(s) rendered now, %ld kept from before, %ld missing; "
-           "%ld job(s) in parallel's joblog, %ld failed after %d tries (a try that failed "
-           "and was retried is not in the joblog: parallel logs a frame's last try)\n",
-           done, kept, missing, njobs, failed, retries);
-    for (long i = 0; i < ntodo; i++)
+           "retries: %ld job(s) failed on their last try, %ld frame(s) handed out again "
+           "(done but not arrived), %ld job(s) in parallel's joblogs (a try parallel retried "
+           "is not logged there, only each frame's last)\n",
+           arrived, kept, missing, failed, refarmed, njobs);
+    for (long i = 0; i < nframes; i++)
         free(todo[i]);
     free(todo);
+    free(hosts);
     if (missing) {
         fprintf(stderr, "links1 farm: %ld frame(s) missing (parallel exit %d); run again to "
                         "render only those\n", missing,
