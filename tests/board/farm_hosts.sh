@@ -3,7 +3,8 @@
 # throw-away sshd on 127.0.0.1 at a free port (its own host key and user
 # key, made here), reached by GNU parallel through $PARALLEL_SSH.  First
 # run: both hosts take frames, each frame of scenes/anim.scn comes back into
-# DIR equal to one board's render.  Second run: the sshd and everything
+# DIR equal to one board's render (scene and DIR named with spaces, quotes
+# and $).  Second run: the sshd and everything
 # under it are killed while that host renders a frame; parallel retries the
 # frame on the other host and every frame still arrives, equal to the
 # board's.  Needs root (sshd) and openssh-server, parallel and rsync.
@@ -96,16 +97,21 @@ frames_same() { # NAME DIR: all four frames equal the board's
     if [ -z "$bad" ]; then echo "PASS $1"; else echo "FAIL $1: frame(s)$bad missing or not the board's"; fi
 }
 
-# 1. both hosts take frames
-farm farm_hosts_run scenes/anim.scn --frames 0:3 -o "$T/both" --hosts "$T/hosts" --ext ppm \
-    -- --size $SIZE
-used=$(tail -n +2 "$T/both/farm-joblog.tsv" | awk -F'\t' '$7 == 0 { print $2 }' | sort -u | tr '\n' ' ')
+# 1. both hosts take frames (the scene and DIR with spaces, quotes and $ in
+# their names, quoted by parallel for the remote shell and for rsync)
+H="$T/h o'st \"\$x"
+mkdir -p "$H"
+cp scenes/anim.scn "$H/a \$y 'b'.scn"
+cp -r scenes/maps "$H/"
+farm farm_hosts_run "$H/a \$y 'b'.scn" --frames 0:3 -o "$H/both \"d\"" --hosts "$T/hosts" \
+    --ext ppm -- --size $SIZE
+used=$(tail -n +2 "$H/both \"d\"/farm-joblog.tsv" | awk -F'\t' '$7 == 0 { print $2 }' | sort -u | tr '\n' ' ')
 if [ "$used" = ": fakehost " ]; then
     echo "PASS farm_hosts_both_used"
 else
     echo "FAIL farm_hosts_both_used: hosts with a frame done: '$used'"
 fi
-frames_same farm_hosts_frames "$T/both"
+frames_same farm_hosts_frames "$H/both \"d\""
 
 # 2. the ssh host killed while it renders a frame
 # job_under_sshd: the comm of a job's process (links1 or its QEMU) somewhere
