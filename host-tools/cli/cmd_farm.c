@@ -165,8 +165,10 @@ struct farm_host {
 };
 
 /* The joblog's lines added into hosts[] (*nhosts of them so far); *njobs the
- * jobs it logs.  0, or -1. */
-static int farm_read_joblog(const char *log, struct farm_host *hosts, int *nhosts, long *njobs)
+ * jobs it logs; ok[seq - 1] set for each job (Seq, 1..njobs_max: the inputs'
+ * order) that ended well.  0, or -1. */
+static int farm_read_joblog(const char *log, struct farm_host *hosts, int *nhosts, long *njobs,
+                            char *ok, long njobs_max)
 {
     FILE *f = fopen(log, "r");
     if (!f) {
@@ -191,6 +193,7 @@ static int farm_read_joblog(const char *log, struct farm_host *hosts, int *nhost
         }
         if (!field[7])
             continue;
+        long seq = strtol(field[0], NULL, 10);
         double runtime = strtod(field[3], NULL);
         long exitval = strtol(field[6], NULL, 10), sig = strtol(field[7], NULL, 10);
         if (!(runtime >= 0 && runtime < 1e9))
@@ -208,6 +211,8 @@ static int farm_read_joblog(const char *log, struct farm_host *hosts, int *nhost
         }
         (*njobs)++;
         if (exitval == 0 && sig == 0) {
+            if (seq >= 1 && seq <= njobs_max)
+                ok[seq - 1] = 1;
             hosts[h].frames++;
             hosts[h].seconds += runtime;
         } else {
@@ -325,8 +330,10 @@ int cmd_farm(int argc, char **argv)
      * --retries rounds. */
     long nframes = last - first + 1, kept = 0, refarmed = 0, missing = 0;
     char **todo = calloc((size_t)nframes, sizeof *todo);
+    char *ok = calloc((size_t)nframes, 1);         /* todo[i]'s job ended well */
+    char *again = calloc((size_t)nframes, 1);      /* frame A + i: may go out again */
     struct farm_host *hosts = calloc(FARM_MAX_HOSTS, sizeof *hosts);
-    if (!todo || !hosts) {
+    if (!todo || !ok || !again || !hosts) {
         fprintf(stderr, "links1 farm: out of memory\n");
         return 1;
     }
@@ -345,7 +352,7 @@ int cmd_farm(int argc, char **argv)
                 continue;
             }
             missing++;
-            if (round > retries) {
+            if (round > retries || (round > 1 && !again[f - first])) {
                 if (missing <= 10)
                     fprintf(stderr, "links1 farm: frame %ld did not arrive (%s)\n", f, path);
                 continue;
@@ -450,9 +457,16 @@ int cmd_farm(int argc, char **argv)
             return 1;
         }
         long jobs_round = 0;
-        if (farm_read_joblog(joblog, hosts, &nhosts, &jobs_round) != 0)
+        memset(ok, 0, (size_t)nframes);
+        if (farm_read_joblog(joblog, hosts, &nhosts, &jobs_round, ok, ntodo) != 0)
             return 1;
         njobs += jobs_round;
+        /* only a frame whose job ended well goes out again (its host died
+         * before the frame was returned); one that failed every try does not */
+        memset(again, 0, (size_t)nframes);
+        for (long i = 0; i < ntodo; i++)
+            if (ok[i])
+                again[strtol(todo[i], NULL, 10) - first] = 1;
     }
 
     /* The summary: per host from parallel's joblogs. */
@@ -474,6 +488,8 @@ int cmd_farm(int argc, char **argv)
     for (long i = 0; i < nframes; i++)
         free(todo[i]);
     free(todo);
+    free(ok);
+    free(again);
     free(hosts);
     if (missing) {
         fprintf(stderr, "links1 farm: %ld frame(s) missing (parallel exit %d); run again to "
