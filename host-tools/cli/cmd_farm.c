@@ -81,6 +81,47 @@ static int farm_in_path(const char *name)
     return 0;
 }
 
+/* Whether `parallel --version` says it is GNU parallel (moreutils has a
+ * `parallel` too, with other options).  1, or 0. */
+static int farm_is_gnu_parallel(void)
+{
+    int fds[2];
+    if (pipe(fds) != 0)
+        return 0;
+    pid_t pid = fork();
+    if (pid < 0) {
+        close(fds[0]);
+        close(fds[1]);
+        return 0;
+    }
+    if (pid == 0) {
+        int null = open("/dev/null", O_RDWR);
+        if (null >= 0) {
+            dup2(null, 0);
+            dup2(null, 2);
+            close(null);
+        }
+        dup2(fds[1], 1);
+        close(fds[0]);
+        close(fds[1]);
+        char *const av[] = {"parallel", "--version", NULL};
+        execvp("parallel", av);
+        _exit(127);
+    }
+    close(fds[1]);
+    char buf[256];
+    size_t got = 0;
+    ssize_t r;
+    while (got < sizeof buf - 1 && (r = read(fds[0], buf + got, sizeof buf - 1 - got)) > 0)
+        got += (size_t)r;
+    buf[got] = 0;
+    close(fds[0]);
+    int status;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+        ;
+    return strncmp(buf, "GNU parallel", 12) == 0;
+}
+
 /* The hosts file: a readable regular file with at least one host line.
  * Returns the number of host lines, or -1 after saying why. */
 static int farm_check_hosts(const char *file)
@@ -287,6 +328,12 @@ int cmd_farm(int argc, char **argv)
     if (!farm_in_path("parallel")) {
         fprintf(stderr, "links1 farm: GNU parallel is not installed (no 'parallel' in PATH; "
                         "the Debian package parallel)\n");
+        return 1;
+    }
+    if (!farm_is_gnu_parallel()) {
+        fprintf(stderr, "links1 farm: the 'parallel' in PATH is not GNU parallel (`parallel "
+                        "--version` does not say so; moreutils has another; install the "
+                        "Debian package parallel)\n");
         return 1;
     }
     int nhosts_file = farm_check_hosts(hosts_file);

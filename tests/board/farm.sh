@@ -4,13 +4,13 @@
 # `links1 render --frames 0:2` byte for byte; with one frame deleted, a
 # second farm renders only that frame (parallel's joblog holds one job, the
 # other frames are not rewritten); a scene and a DIR with spaces, quotes and
-# $ in their names farm as well; a missing parallel, an empty or unreadable
+# $ in their names farm as well; a missing parallel, one not GNU's, an empty or unreadable
 # hosts file and a DIR that is a file or another user's are refused, naming
 # the problem, before anything runs.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
 CHECKS="farm_frame0 farm_frame1 farm_frame2 farm_summary farm_resume_one_job farm_resume_kept
-        farm_resume_frame1 farm_hostile_names farm_no_parallel farm_empty_hosts
+        farm_resume_frame1 farm_hostile_names farm_no_parallel farm_not_gnu_parallel farm_empty_hosts
         farm_unreadable_hosts farm_dir_is_file farm_dir_not_yours"
 board_ready $CHECKS || exit 0
 if ! command -v parallel >/dev/null; then
@@ -82,6 +82,11 @@ refused() { # NAME PATTERN ARGS...: exit non-zero, PATTERN in the log, no joblog
 mkdir -p "$T/nopar"
 for tool in timeout sed grep tail rm; do ln -sf "$(command -v $tool)" "$T/nopar/$tool"; done
 PATH="$T/nopar" refused farm_no_parallel "GNU parallel is not installed" \
+    scenes/anim.scn --frames 0:0 -o "$T/r" --hosts "$T/hosts"
+mkdir -p "$T/otherpar" # a 'parallel' that is not GNU's (moreutils has one)
+printf '#!/bin/sh\necho "parallel [OPTIONS] command -- arguments"\n' >"$T/otherpar/parallel"
+chmod +x "$T/otherpar/parallel"
+PATH="$T/otherpar:$PATH" refused farm_not_gnu_parallel "is not GNU parallel" \
     scenes/anim.scn --frames 0:0 -o "$T/r" --hosts "$T/hosts"
 : >"$T/empty"
 printf '# only a comment\n\n' >>"$T/empty"
