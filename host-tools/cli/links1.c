@@ -16,6 +16,7 @@ static const struct links1_cmd links1_cmds[] = {
     {"boot", cmd_boot, "boot the board, show every unit computer reporting in, shut down"},
     {"selftest", cmd_selftest, "boot the board and run board checks (ping, imsu, ...)"},
     {"render", cmd_render, "render a scene on the board (links1 render --help)"},
+    {"farm", cmd_farm, "render an animation's frames on hosts through GNU parallel"},
     {"board", cmd_board, "start, stop or list boards that keep running between commands"},
     {"replay", cmd_replay, "replay a traced frame on equal-speed unit computers"},
     {"semihost", cmd_semihost, "run a semihosting program on the board's CPU (one core)"},

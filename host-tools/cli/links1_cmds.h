@@ -10,6 +10,7 @@ int cmd_selftest(int argc, char **argv); /* links1 selftest NAME...: board check
 int cmd_render(int argc, char **argv);   /* links1 render SCENE -o OUT: render on the board */
 int cmd_replay(int argc, char **argv);   /* links1 replay TRACE --ncs LIST: equal-speed units */
 int cmd_semihost(int argc, char **argv); /* links1 semihost ELF: a semihosting program */
+int cmd_farm(int argc, char **argv);     /* links1 farm SCENE -o DIR --hosts FILE: on hosts */
 int cmd_board(int argc, char **argv);    /* links1 board start|stop|list: named boards */
 
 #endif

@@ -1,0 +1,548 @@
+/* cmd_farm.c: links1 farm SCENE --frames A:B -o DIR --hosts FILE: the frames
+ * of an animation handed to hosts through GNU parallel, one job per frame
+ * (-j1 on every host, so a faster host takes more), each job a
+ * `links1 render SCENE --frames F:F` on its host, the frame brought back into
+ * DIR (parallel's --return, rsync over ssh; a local host ":" writes it there
+ * itself).  A frame already in DIR is not rendered again.  parallel is started
+ * with fork + execvp and an argument array; its command template holds only
+ * fixed words and replacement strings ({1} the tool, {2} the scene, {3} the
+ * frame, {4}... the extra render arguments), every piece of data reaching it
+ * as its own ":::" input, which parallel quotes for the shell (local or
+ * remote) itself.  The summary is read back from parallel's --joblog. */
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "host-tools/cli/links1_cmds.h"
+#include "host-tools/opts/cli_args.h"
+#include "host-tools/opts/cli_opt.h"
+#include "host-tools/opts/self_path.h"
+
+#define FARM_MAX_FRAMES 100000 /* frames in one farm */
+#define FARM_MAX_EXTRA 64      /* render arguments after "--" */
+#define FARM_MAX_HOSTS 256     /* hosts in the summary */
+#define FARM_HOSTS_MAX_BYTES (1 << 20)
+
+enum { FARM_OPT_FRAMES = CLI_OWN_CODES, FARM_OPT_HOSTS, FARM_OPT_RETRIES, FARM_OPT_EXT };
+
+static const struct option farm_options[] = {
+    {"frames", required_argument, NULL, FARM_OPT_FRAMES},
+    {"hosts", required_argument, NULL, FARM_OPT_HOSTS},
+    {"retries", required_argument, NULL, FARM_OPT_RETRIES},
+    {"ext", required_argument, NULL, FARM_OPT_EXT},
+    {"help", no_argument, NULL, 'h'},
+    {NULL, 0, NULL, 0},
+};
+
+static void farm_usage(FILE *out)
+{
+    fprintf(out,
+            "usage: links1 farm SCENE --frames A:B -o DIR --hosts FILE [--retries N] [--ext png|ppm]\n"
+            "                   [-- links1 render arguments...]\n"
+            "  the frames A..B rendered on the hosts of FILE (GNU parallel's --sshloginfile:\n"
+            "  one host a line, ':' this machine) one frame a job, -j1 on each host, each job\n"
+            "  `links1 render SCENE --frames F:F` run there (links1 and SCENE at the same\n"
+            "  absolute paths on every host); the frames gathered into DIR as frame-NNNN.EXT.\n"
+            "  A frame already in DIR is not rendered again (an interrupted farm resumes).\n"
+            "  --retries N   tries of a frame (parallel --retries: each on a host where it has\n"
+            "                not failed yet), 1..100, default 3\n"
+            "  --ext E       png (default) or ppm\n"
+            "  the ssh parallel uses: $PARALLEL_SSH (e.g. \"ssh -F CONFIG\"), else ssh;\n"
+            "  $FW_DIR, when set, is made absolute and passed to every host (--env)\n");
+}
+
+/* Whether NAME is an executable file in some directory of $PATH. */
+static int farm_in_path(const char *name)
+{
+    const char *path = getenv("PATH");
+    if (!path || !*path)
+        path = "/usr/bin:/bin";
+    while (*path) {
+        const char *end = strchr(path, ':');
+        size_t n = end ? (size_t)(end - path) : strlen(path);
+        char full[PATH_MAX];
+        if (n > 0 && n + strlen(name) + 2 <= sizeof full) {
+            snprintf(full, sizeof full, "%.*s/%s", (int)n, path, name);
+            struct stat st;
+            if (stat(full, &st) == 0 && S_ISREG(st.st_mode) && access(full, X_OK) == 0)
+                return 1;
+        }
+        if (!end)
+            break;
+        path = end + 1;
+    }
+    return 0;
+}
+
+/* Whether `parallel --version` says it is GNU parallel (moreutils has a
+ * `parallel` too, with other options).  1, or 0. */
+static int farm_is_gnu_parallel(void)
+{
+    int fds[2];
+    if (pipe(fds) != 0)
+        return 0;
+    pid_t pid = fork();
+    if (pid < 0) {
+        close(fds[0]);
+        close(fds[1]);
+        return 0;
+    }
+    if (pid == 0) {
+        int null = open("/dev/null", O_RDWR);
+        if (null >= 0) {
+            dup2(null, 0);
+            dup2(null, 2);
+            close(null);
+        }
+        dup2(fds[1], 1);
+        close(fds[0]);
+        close(fds[1]);
+        char *const av[] = {"parallel", "--version", NULL};
+        execvp("parallel", av);
+        _exit(127);
+    }
+    close(fds[1]);
+    char buf[256];
+    size_t got = 0;
+    ssize_t r;
+    while (got < sizeof buf - 1 && (r = read(fds[0], buf + got, sizeof buf - 1 - got)) > 0)
+        got += (size_t)r;
+    buf[got] = 0;
+    close(fds[0]);
+    int status;
+    while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+        ;
+    return strncmp(buf, "GNU parallel", 12) == 0;
+}
+
+/* The hosts file: a readable regular file with at least one host line.
+ * Returns the number of host lines, or -1 after saying why. */
+static int farm_check_hosts(const char *file)
+{
+    int fd = open(file, O_RDONLY | O_NOCTTY | O_NONBLOCK);
+    if (fd < 0) {
+        fprintf(stderr, "links1 farm: --hosts %s: cannot read it: %s\n", file, strerror(errno));
+        return -1;
+    }
+    struct stat st;
+    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+        fprintf(stderr, "links1 farm: --hosts %s: not a regular file\n", file);
+        close(fd);
+        return -1;
+    }
+    if (st.st_size > FARM_HOSTS_MAX_BYTES) {
+        fprintf(stderr, "links1 farm: --hosts %s: %lld bytes, more than %d\n", file,
+                (long long)st.st_size, FARM_HOSTS_MAX_BYTES);
+        close(fd);
+        return -1;
+    }
+    static char buf[FARM_HOSTS_MAX_BYTES + 1];
+    ssize_t got = 0, r;
+    while (got < FARM_HOSTS_MAX_BYTES &&
+           (r = read(fd, buf + got, (size_t)(FARM_HOSTS_MAX_BYTES - got))) > 0)
+        got += r;
+    close(fd);
+    if (got < 0)
+        got = 0;
+    buf[got] = 0;
+    int hosts = 0;
+    for (char *line = strtok(buf, "\n"); line; line = strtok(NULL, "\n")) {
+        line += strspn(line, " \t\r");
+        if (*line && *line != '#')
+            hosts++;
+    }
+    if (hosts == 0)
+        fprintf(stderr, "links1 farm: --hosts %s: no host in it (one a line, ':' for this "
+                        "machine)\n", file);
+    return hosts ? hosts : -1;
+}
+
+/* DIR: made when missing; else a directory (not a link) of this user's that
+ * can be written.  0, or -1 after saying why. */
+static int farm_check_dir(const char *dir)
+{
+    struct stat st;
+    if (lstat(dir, &st) != 0) {
+        if (errno != ENOENT || mkdir(dir, 0777) != 0 || lstat(dir, &st) != 0) {
+            fprintf(stderr, "links1 farm: -o %s: cannot make it: %s\n", dir, strerror(errno));
+            return -1;
+        }
+    }
+    if (!S_ISDIR(st.st_mode)) {
+        fprintf(stderr, "links1 farm: -o %s: not a directory (the frames go into a directory)\n",
+                dir);
+        return -1;
+    }
+    if (st.st_uid != geteuid()) {
+        fprintf(stderr, "links1 farm: -o %s: the directory belongs to uid %u, not to you (%u)\n",
+                dir, (unsigned)st.st_uid, (unsigned)geteuid());
+        return -1;
+    }
+    if (access(dir, W_OK | X_OK) != 0) {
+        fprintf(stderr, "links1 farm: -o %s: cannot write into it\n", dir);
+        return -1;
+    }
+    return 0;
+}
+
+/* A piece parallel would read as its own separator instead of an input. */
+static int farm_separator_word(const char *s)
+{
+    return strcmp(s, ":::") == 0 || strcmp(s, "::::") == 0 || strcmp(s, ":::+") == 0 ||
+           strcmp(s, "::::+") == 0;
+}
+
+struct farm_host {
+    char name[256];
+    long frames, failed;
+    double seconds;
+};
+
+/* The joblog's lines added into hosts[] (*nhosts of them so far); *njobs the
+ * jobs it logs; ok[seq - 1] set for each job (Seq, 1..njobs_max: the inputs'
+ * order) that ended well.  0, or -1. */
+static int farm_read_joblog(const char *log, struct farm_host *hosts, int *nhosts, long *njobs,
+                            char *ok, long njobs_max)
+{
+    FILE *f = fopen(log, "r");
+    if (!f) {
+        fprintf(stderr, "links1 farm: parallel's joblog %s: %s\n", log, strerror(errno));
+        return -1;
+    }
+    char line[8192];
+    *njobs = 0;
+    int first = 1;
+    while (fgets(line, sizeof line, f)) {
+        if (first) { /* the header */
+            first = 0;
+            continue;
+        }
+        char *field[9] = {0};
+        char *p = line;
+        for (int i = 0; i < 9 && p; i++) {
+            field[i] = p;
+            p = i < 8 ? strchr(p, '\t') : NULL;
+            if (p)
+                *p++ = 0;
+        }
+        if (!field[7])
+            continue;
+        long seq = strtol(field[0], NULL, 10);
+        double runtime = strtod(field[3], NULL);
+        long exitval = strtol(field[6], NULL, 10), sig = strtol(field[7], NULL, 10);
+        if (!(runtime >= 0 && runtime < 1e9))
+            runtime = 0;
+        int h;
+        for (h = 0; h < *nhosts; h++)
+            if (strcmp(hosts[h].name, field[1]) == 0)
+                break;
+        if (h == *nhosts) {
+            if (*nhosts == FARM_MAX_HOSTS)
+                continue;
+            memset(&hosts[h], 0, sizeof hosts[h]);
+            snprintf(hosts[h].name, sizeof hosts[h].name, "%s", field[1]);
+            (*nhosts)++;
+        }
+        (*njobs)++;
+        if (exitval == 0 && sig == 0) {
+            if (seq >= 1 && seq <= njobs_max)
+                ok[seq - 1] = 1;
+            hosts[h].frames++;
+            hosts[h].seconds += runtime;
+        } else {
+            hosts[h].failed++;
+        }
+    }
+    fclose(f);
+    return 0;
+}
+
+/* The frame's file in DIR. */
+static void farm_frame_path(const char *dir, long f, const char *ext, char *out, size_t cap)
+{
+    snprintf(out, cap, "%s/frame-%04ld.%s", dir, f, ext);
+}
+
+int cmd_farm(int argc, char **argv)
+{
+    const char *scene = NULL, *dir = NULL, *hosts_file = NULL, *ext = "png";
+    const char *extra[FARM_MAX_EXTRA];
+    int nextra = 0, retries = 3;
+    long first = -1, last = -1;
+    struct cli c;
+    cli_init(&c, "links1 farm", argc, argv, "o:h", farm_options);
+    int code;
+    while ((code = cli_next(&c)) != -1) {
+        switch (code) {
+        case CLI_OPERAND:
+            if (c.rest) {
+                if (nextra == FARM_MAX_EXTRA) {
+                    fprintf(stderr, "links1 farm: more than %d render arguments after --\n",
+                            FARM_MAX_EXTRA);
+                    return 2;
+                }
+                extra[nextra++] = c.arg;
+            } else if (!scene) {
+                scene = c.arg;
+            } else {
+                fprintf(stderr, "links1 farm: '%s': one scene a farm (render arguments go "
+                                "after --)\n", c.arg);
+                return 2;
+            }
+            break;
+        case 'o': dir = c.arg; break;
+        case FARM_OPT_HOSTS: hosts_file = c.arg; break;
+        case FARM_OPT_FRAMES:
+            if (cli_parse_frames(c.arg, &first, &last) != 0 || last - first >= FARM_MAX_FRAMES) {
+                cli_bad_value(&c, "frames A:B, 0 <= A <= B, at most 100000 of them");
+                return 2;
+            }
+            break;
+        case FARM_OPT_RETRIES:
+            if (cli_int(&c, 1, 100, &retries) != 0)
+                return 2;
+            break;
+        case FARM_OPT_EXT:
+            if (strcmp(c.arg, "png") != 0 && strcmp(c.arg, "ppm") != 0) {
+                cli_bad_value(&c, "png or ppm");
+                return 2;
+            }
+            ext = c.arg;
+            break;
+        case 'h': farm_usage(stdout); return 0;
+        default: return 2;
+        }
+    }
+    if (!scene || !dir || !hosts_file || first < 0) {
+        fprintf(stderr, "links1 farm: want SCENE, --frames A:B, -o DIR and --hosts FILE\n");
+        farm_usage(stderr);
+        return 2;
+    }
+    if (!farm_in_path("parallel")) {
+        fprintf(stderr, "links1 farm: GNU parallel is not installed (no 'parallel' in PATH; "
+                        "the Debian package parallel)\n");
+        return 1;
+    }
+    if (!farm_is_gnu_parallel()) {
+        fprintf(stderr, "links1 farm: the 'parallel' in PATH is not GNU parallel (`parallel "
+                        "--version` does not say so; moreutils has another; install the "
+                        "Debian package parallel)\n");
+        return 1;
+    }
+    int nhosts_file = farm_check_hosts(hosts_file);
+    if (nhosts_file < 0 || farm_check_dir(dir) != 0)
+        return 1;
+    char scene_abs[PATH_MAX], hosts_abs[PATH_MAX], dir_abs[PATH_MAX], tool[PATH_MAX];
+    if (!realpath(scene, scene_abs)) {
+        fprintf(stderr, "links1 farm: %s: %s\n", scene, strerror(errno));
+        return 1;
+    }
+    if (!realpath(hosts_file, hosts_abs) || !realpath(dir, dir_abs)) {
+        fprintf(stderr, "links1 farm: %s: %s\n", hosts_file, strerror(errno));
+        return 1;
+    }
+    if (self_sibling("links1", tool, sizeof tool) != 0) {
+        fprintf(stderr, "links1 farm: cannot tell where links1 itself is\n");
+        return 1;
+    }
+    for (int i = 0; i < nextra; i++)
+        if (farm_separator_word(extra[i])) {
+            fprintf(stderr, "links1 farm: render argument '%s' is parallel's own separator\n",
+                    extra[i]);
+            return 2;
+        }
+
+    /* $FW_DIR (where the firmware is) made absolute: the jobs run in DIR here and
+     * in the login directory there; parallel's --env takes it to the hosts. */
+    const char *fw_dir = getenv("FW_DIR");
+    char fw_abs[PATH_MAX];
+    if (fw_dir && *fw_dir) {
+        if (!realpath(fw_dir, fw_abs)) {
+            fprintf(stderr, "links1 farm: $FW_DIR %s: %s\n", fw_dir, strerror(errno));
+            return 1;
+        }
+        setenv("FW_DIR", fw_abs, 1);
+    }
+
+    /* Rounds: the frames not in DIR handed to parallel; a frame whose job
+     * ended well but which did not arrive (its host died before parallel's
+     * --return copied it) is handed out again in the next round, up to
+     * --retries rounds. */
+    long nframes = last - first + 1, kept = 0, refarmed = 0, missing = 0;
+    char **todo = calloc((size_t)nframes, sizeof *todo);
+    char *ok = calloc((size_t)nframes, 1);         /* todo[i]'s job ended well */
+    char *again = calloc((size_t)nframes, 1);      /* frame A + i: may go out again */
+    struct farm_host *hosts = calloc(FARM_MAX_HOSTS, sizeof *hosts);
+    if (!todo || !ok || !again || !hosts) {
+        fprintf(stderr, "links1 farm: out of memory\n");
+        return 1;
+    }
+    int nhosts = 0, status = 0;
+    long njobs = 0, failed = 0;
+    for (int round = 1;; round++) {
+        long ntodo = 0;
+        missing = 0;
+        for (long f = first; f <= last; f++) {
+            char path[PATH_MAX + 32];
+            farm_frame_path(dir_abs, f, ext, path, sizeof path);
+            struct stat st;
+            if (lstat(path, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+                if (round == 1)
+                    kept++;
+                continue;
+            }
+            missing++;
+            if (round > retries || (round > 1 && !again[f - first])) {
+                if (missing <= 10)
+                    fprintf(stderr, "links1 farm: frame %ld did not arrive (%s)\n", f, path);
+                continue;
+            }
+            char num[24];
+            snprintf(num, sizeof num, "%04ld", f);
+            free(todo[ntodo]);
+            todo[ntodo] = strdup(num);
+            if (!todo[ntodo]) {
+                fprintf(stderr, "links1 farm: out of memory\n");
+                return 1;
+            }
+            ntodo++;
+        }
+        if (round == 1)
+            printf("links1 farm: frames %ld..%ld of %s: %ld in %s already, %ld to render on %d "
+                   "host(s) of %s\n", first, last, scene_abs, kept, dir_abs, ntodo, nhosts_file,
+                   hosts_abs);
+        else if (ntodo > 0)
+            printf("links1 farm: %ld frame(s) did not arrive; handing them out again (round "
+                   "%d of at most %d)\n", ntodo, round, retries);
+        if (round > 1)
+            refarmed += ntodo;
+        fflush(stdout);
+        if (ntodo == 0)
+            break;
+        char joblog[PATH_MAX + 32];
+        if (round == 1)
+            snprintf(joblog, sizeof joblog, "%s/farm-joblog.tsv", dir_abs);
+        else
+            snprintf(joblog, sizeof joblog, "%s/farm-joblog-%d.tsv", dir_abs, round);
+        /* The command template: fixed words and replacement strings only.  It
+         * starts with a word of its own: parallel leaves a first replacement
+         * string unquoted (it takes it for the command). */
+        char templ[4096], ret[64], retries_s[16];
+        int n = snprintf(templ, sizeof templ,
+                         "exec {1} render {2} --frames {3}:{3} -o frame.%s --quiet", ext);
+        for (int i = 0; i < nextra && n < (int)sizeof templ; i++)
+            n += snprintf(templ + n, sizeof templ - (size_t)n, " {%d}", 4 + i);
+        snprintf(ret, sizeof ret, "frame-{3}.%s", ext);
+        snprintf(retries_s, sizeof retries_s, "%d", retries);
+        size_t cap = (size_t)(32 + 2 * nextra + ntodo);
+        const char **av = calloc(cap, sizeof *av);
+        if (!av) {
+            fprintf(stderr, "links1 farm: out of memory\n");
+            return 1;
+        }
+        size_t k = 0;
+        av[k++] = "parallel";
+        av[k++] = "--will-cite";
+        av[k++] = "--sshloginfile";
+        av[k++] = hosts_abs;
+        av[k++] = "-j1";
+        av[k++] = "--retries";
+        av[k++] = retries_s;
+        av[k++] = "--joblog";
+        av[k++] = joblog;
+        av[k++] = "--return";
+        av[k++] = ret;
+        av[k++] = "--cleanup";
+        if (fw_dir && *fw_dir) {
+            av[k++] = "--env";
+            av[k++] = "FW_DIR";
+        }
+        av[k++] = templ;
+        av[k++] = ":::";
+        av[k++] = tool;
+        av[k++] = ":::";
+        av[k++] = scene_abs;
+        av[k++] = ":::";
+        for (long i = 0; i < ntodo; i++)
+            av[k++] = todo[i];
+        for (int i = 0; i < nextra; i++) {
+            av[k++] = ":::";
+            av[k++] = extra[i];
+        }
+        av[k] = NULL;
+        pid_t pid = fork();
+        if (pid < 0) {
+            fprintf(stderr, "links1 farm: fork: %s\n", strerror(errno));
+            return 1;
+        }
+        if (pid == 0) {
+            int null = open("/dev/null", O_RDONLY);
+            if (null >= 0) {
+                dup2(null, 0);
+                close(null);
+            }
+            if (chdir(dir_abs) != 0) {
+                fprintf(stderr, "links1 farm: cd %s: %s\n", dir_abs, strerror(errno));
+                _exit(127);
+            }
+            execvp("parallel", (char *const *)av);
+            fprintf(stderr, "links1 farm: cannot start parallel: %s\n", strerror(errno));
+            _exit(127);
+        }
+        while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+            ;
+        free(av);
+        if (WIFEXITED(status) && WEXITSTATUS(status) == 127) {
+            fprintf(stderr, "links1 farm: parallel did not start\n");
+            return 1;
+        }
+        long jobs_round = 0;
+        memset(ok, 0, (size_t)nframes);
+        if (farm_read_joblog(joblog, hosts, &nhosts, &jobs_round, ok, ntodo) != 0)
+            return 1;
+        njobs += jobs_round;
+        /* only a frame whose job ended well goes out again (its host died
+         * before the frame was returned); one that failed every try does not */
+        memset(again, 0, (size_t)nframes);
+        for (long i = 0; i < ntodo; i++)
+            if (ok[i])
+                again[strtol(todo[i], NULL, 10) - first] = 1;
+    }
+
+    /* The summary: per host from parallel's joblogs. */
+    for (int h = 0; h < nhosts; h++) {
+        failed += hosts[h].failed;
+        printf("links1 farm: host %s: %ld frame(s) in %.1f s of jobs, %.2f frames/min",
+               hosts[h].name, hosts[h].frames, hosts[h].seconds,
+               hosts[h].seconds > 0 ? hosts[h].frames * 60.0 / hosts[h].seconds : 0.0);
+        if (hosts[h].failed)
+            printf(", %ld frame(s) failed there on their last try", hosts[h].failed);
+        printf("\n");
+    }
+    long arrived = nframes - missing - kept;
+    printf("links1 farm: %ld frame(s) rendered now, %ld kept from before, %ld missing; "
+           "retries: %ld job(s) failed on their last try, %ld frame(s) handed out again "
+           "(done but not arrived), %ld job(s) in parallel's joblogs (a try parallel retried "
+           "is not logged there, only each frame's last)\n",
+           arrived, kept, missing, failed, refarmed, njobs);
+    for (long i = 0; i < nframes; i++)
+        free(todo[i]);
+    free(todo);
+    free(ok);
+    free(again);
+    free(hosts);
+    if (missing) {
+        fprintf(stderr, "links1 farm: %ld frame(s) missing (parallel exit %d); run again to "
+                        "render only those\n", missing,
+                WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+        return 1;
+    }
+    return 0;
+}
