@@ -40,7 +40,8 @@ struct render_job {
 struct render_wall {
     long long boot, upload, load, frame, pull, write, shutdown, total;
     long long board_prepare, board_render;
-    long long render_cpu; /* QEMU's user + system ms during the frames */
+    long long render_cpu; /* the QEMUs' user + system ms during the frames (every
+                             an521 board's) */
 };
 
 struct render_opts {
@@ -636,6 +637,27 @@ static long long render_qemu_cpu_ms(pid_t pid)
     return hz > 0 ? (long long)((ut + st) * 1000ull / (unsigned long long)hz) : -1;
 }
 
+/* Each QEMU's CPU time now (ms; -1 where unreadable): board 0's (the virt
+ * board's) in cpu[0], the an521 NC boards' in cpu[k]. */
+static void render_board_cpu(const struct board *b, long long cpu[AN521_MAX_BOARDS])
+{
+    cpu[0] = render_qemu_cpu_ms(b->qemu_pid);
+    for (int k = 1; k < AN521_MAX_BOARDS; k++)
+        cpu[k] = b->nc_board_pid[k] ? render_qemu_cpu_ms(b->nc_board_pid[k]) : -1;
+}
+
+/* The CPU time the board's QEMUs took between two readings (those read
+ * both times: a board whose process ended in between is left out). */
+static long long render_board_cpu_spent(const long long c0[AN521_MAX_BOARDS],
+                                        const long long c1[AN521_MAX_BOARDS])
+{
+    long long sum = 0;
+    for (int k = 0; k < AN521_MAX_BOARDS; k++)
+        if (c0[k] >= 0 && c1[k] >= c0[k])
+            sum += c1[k] - c0[k];
+    return sum;
+}
+
 /* One scene on the running board: upload, every frame asked for. */
 static int render_job(struct board *b, struct render_opts *o, const struct render_job *j)
 {
@@ -707,7 +729,8 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         if (f < last)
             a.flags |= LINK_RENDER_PREPARE_NEXT;
         long long t0 = board_now_ms();
-        long long cpu0 = render_qemu_cpu_ms(b->qemu_pid);
+        long long cpu0[AN521_MAX_BOARDS], cpu1[AN521_MAX_BOARDS];
+        render_board_cpu(b, cpu0);
         struct link_render_stats s;
         struct link_render_fails fails;
         struct image img = {0, 0, NULL};
@@ -717,12 +740,12 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
             film_abort(&film);
             return -1;
         }
-        long long t1 = board_now_ms(), cpu1 = render_qemu_cpu_ms(b->qemu_pid);
+        long long t1 = board_now_ms();
+        render_board_cpu(b, cpu1);
         o->wall.frame += t1 - t0;
         o->wall.board_prepare += s.prepare_ms;
         o->wall.board_render += s.render_ms;
-        if (cpu0 >= 0 && cpu1 >= 0)
-            o->wall.render_cpu += cpu1 - cpu0;
+        o->wall.render_cpu += render_board_cpu_spent(cpu0, cpu1);
         if (render_session_pull(b, (int)info.width, (int)info.height, &img, &pull_ms) != 0) {
             film_abort(&film);
             return -1;
