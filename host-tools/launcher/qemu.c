@@ -146,6 +146,16 @@ static int board_qemu_machine_args(const struct board *b, int board, const char 
     return n;
 }
 
+/* In the child: the board's RAM (the an521 boards' shared file) kept open
+ * across exec, and its -object argument into out: QEMU maps the same file
+ * through /proc, no path to look up again. */
+static void board_ram_arg(const struct board *b, char *out, size_t cap)
+{
+    fcntl(b->ram_fd, F_SETFD, 0);
+    snprintf(out, cap, "memory-backend-file,id=ram,size=%dM,mem-path=/proc/self/fd/%d,share=on",
+             b->opts.ram_mb, b->ram_fd);
+}
+
 /* An an521 NC board's process (board > 0): no link of its own (its units'
  * messages go through the shared file to board 0), the shared file as its
  * PSRAM.  In the child; never returns. */
@@ -156,12 +166,10 @@ static void board_qemu_exec_nc_board(struct board *b, int board)
     int null = open("/dev/null", O_RDWR);
     if (null >= 0) {
         dup2(null, 0);
-        dup2(null, 1); /* QEMU's own warnings (the unconnected NIC) */
+        dup2(null, 1); /* it has no link: nothing of it on our terminal */
     }
-    fcntl(b->ram_fd, F_SETFD, 0);
     char ram[PATH_MAX + 96], loader[96], plugin[3 * PATH_MAX];
-    snprintf(ram, sizeof ram, "memory-backend-file,id=ram,size=%dM,mem-path=/proc/self/fd/%d,"
-             "share=on", b->opts.ram_mb, b->ram_fd);
+    board_ram_arg(b, ram, sizeof ram);
     const char *qemu = board_qemu_binary();
     const char *argv[32];
     int n = 0;
@@ -194,20 +202,14 @@ static void board_qemu_exec(struct board *b, int qemu_fd)
         prctl(PR_SET_PDEATHSIG, SIGTERM);
         fcntl(qemu_fd, F_SETFD, 0); /* keep QEMU's end open across exec */
         snprintf(chardev, sizeof chardev, "socket,id=link,fd=%d", qemu_fd);
-        /* The RAM is our memfd, shared: QEMU opens it again through /proc. */
-        fcntl(b->ram_fd, F_SETFD, 0);
-        snprintf(ram, sizeof ram, "memory-backend-file,id=ram,size=%dM,"
-                 "mem-path=/proc/self/fd/%d,share=on", b->opts.ram_mb, b->ram_fd);
     } else {
         setsid();
         board_named_redirect(b);
         board_named_chardev(b, chardev, sizeof chardev);
-        /* The RAM file made in the state directory, open here: QEMU maps
-         * the same file through /proc, no path to look up again. */
-        fcntl(b->ram_fd, F_SETFD, 0);
-        snprintf(ram, sizeof ram, "memory-backend-file,id=ram,size=%dM,"
-                 "mem-path=/proc/self/fd/%d,share=on", b->opts.ram_mb, b->ram_fd);
     }
+    /* The RAM: our memfd, or the file made in a named board's state
+     * directory, open here either way. */
+    board_ram_arg(b, ram, sizeof ram);
     const char *qemu = board_qemu_binary();
     const char *argv[40];
     int n = 0;

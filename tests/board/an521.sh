@@ -25,6 +25,28 @@ an_board_pid() {
     pgrep -f "loader,addr=0x103ffff0,data=$1,data-len=4" | head -n 1
 }
 
+# an_render_kill B LOG OUT: renders demo.scn 240x180 on 4 NCs into OUT,
+# its output into LOG, and kills board B's QEMU (SIGKILL) 0.3 s after the
+# scene is loaded.  The tool's lines are read as they come (stdbuf: a line
+# at a time), so the kill follows the load, not the tool's exit.  Sets
+# victim (the pid killed, empty when there was none) and rc (the tool's).
+an_render_kill() {
+    local board=$1 log=$2 out=$3 tool
+    timeout "$BOARD_RUN_LIMIT_S" stdbuf -oL "$LINKS1" render scenes/demo.scn -o "$out" \
+        --machine an521 --ncs 4 --size 240x180 >"$log" 2>&1 &
+    tool=$!
+    for _ in $(seq 1 300); do
+        grep -q ' loaded: ' "$log" 2>/dev/null && break
+        sleep 0.1
+    done
+    sleep 0.3
+    victim=$(an_board_pid "$board")
+    [ -n "$victim" ] && kill -KILL "$victim"
+    wait "$tool"
+    rc=$?
+    sed 's/^/    /' "$log"
+}
+
 # Three boards (DM and RC; NCs 2, 3; NCs 4, 5) report in.
 if an_ready an521_boot; then
     log=$RENDER_TMP/boot.log
@@ -72,26 +94,12 @@ for arith in float soft fixed; do
 done
 
 # An NC board's QEMU killed (SIGKILL) in the middle of a frame: the RC's
-# watchdog gives its areas to the NCs left, and the frame is exact.  The
-# tool's lines are read as they come (stdbuf: a line at a time), so the kill
-# follows the scene's load, not the tool's exit.
+# watchdog gives its areas to the NCs left, and the frame is exact.
 name=an521_nc_board_killed
 if an_ready "$name"; then
     out=$RENDER_TMP/$name.ppm log=$RENDER_TMP/$name.log
     ref=$(render_ref scenes/demo.scn float 240x180)
-    timeout "$BOARD_RUN_LIMIT_S" stdbuf -oL "$LINKS1" render scenes/demo.scn -o "$out" \
-        --machine an521 --ncs 4 --size 240x180 >"$log" 2>&1 &
-    tool=$!
-    for _ in $(seq 1 300); do
-        grep -q ' loaded: ' "$log" 2>/dev/null && break
-        sleep 0.1
-    done
-    sleep 0.3
-    victim=$(an_board_pid 1)
-    [ -n "$victim" ] && kill -KILL "$victim"
-    wait "$tool"
-    rc=$?
-    sed 's/^/    /' "$log"
+    an_render_kill 1 "$log" "$out"
     if [ -z "$victim" ]; then
         echo "FAIL $name: no QEMU of board 1 to kill"
     elif [ $rc -ne 0 ]; then
@@ -108,19 +116,7 @@ fi
 name=an521_board0_killed
 if an_ready "$name"; then
     out=$RENDER_TMP/$name.ppm log=$RENDER_TMP/$name.log
-    timeout "$BOARD_RUN_LIMIT_S" stdbuf -oL "$LINKS1" render scenes/demo.scn -o "$out" \
-        --machine an521 --ncs 4 --size 240x180 >"$log" 2>&1 &
-    tool=$!
-    for _ in $(seq 1 300); do
-        grep -q ' loaded: ' "$log" 2>/dev/null && break
-        sleep 0.1
-    done
-    sleep 0.3
-    victim=$(an_board_pid 0)
-    [ -n "$victim" ] && kill -KILL "$victim"
-    wait "$tool"
-    rc=$?
-    sed 's/^/    /' "$log"
+    an_render_kill 0 "$log" "$out"
     left=$(pgrep -f "loader,addr=0x103ffff0" | wc -l)
     if [ -z "$victim" ]; then
         echo "FAIL $name: no QEMU of board 0 to kill"
