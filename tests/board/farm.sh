@@ -22,15 +22,6 @@ T=$RENDER_TMP
 echo : >"$T/hosts"
 render_board farm_ref "$T/ref.ppm" scenes/anim.scn -o "$T/ref.ppm" --size $SIZE --frames 0:2 || exit 0
 
-# farm NAME ARGS...: runs links1 farm, its output in $T/NAME.log; the exit status
-farm() {
-    local name=$1; shift
-    timeout "$BOARD_RUN_LIMIT_S" "$LINKS1" farm "$@" >"$T/$name.log" 2>&1
-    local rc=$?
-    echo "--- $LINKS1 farm $* (exit $rc)"
-    sed 's/^/    /' "$T/$name.log"
-    return $rc
-}
 want() { # NAME GOT WANT
     if [ "$2" = "$3" ]; then echo "PASS $1"; else echo "FAIL $1: got '$2', want '$3'"; fi
 }

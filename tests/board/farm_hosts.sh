@@ -83,14 +83,6 @@ fi
 render_board farm_hosts_ref "$T/ref.ppm" scenes/anim.scn -o "$T/ref.ppm" --size $SIZE \
     --frames 0:3 || exit 0
 
-farm() { # NAME ARGS...
-    local name=$1; shift
-    timeout "$BOARD_RUN_LIMIT_S" "$LINKS1" farm "$@" >"$T/$name.log" 2>&1
-    local rc=$?
-    echo "--- PARALLEL_SSH='$PARALLEL_SSH' $LINKS1 farm $* (exit $rc)"
-    sed 's/^/    /' "$T/$name.log"
-    return $rc
-}
 frames_same() { # NAME DIR: all four frames equal the board's
     local bad="" f
     for f in 0 1 2 3; do cmp -s "$T/ref-000$f.ppm" "$2/frame-000$f.ppm" || bad+=" $f"; done

@@ -138,3 +138,14 @@ render_run() {
 # render_board_pid NAME: the QEMU pid in named board NAME's record
 # ($LINKS1_BOARDS/NAME/board).
 render_board_pid() { awk '/^pid/ {print $2}' "$LINKS1_BOARDS/$1/board" 2>/dev/null; }
+
+# farm NAME ARGS...: runs links1 farm, its output in $RENDER_TMP/NAME.log
+# (echoed, with $PARALLEL_SSH when set); returns its exit status.
+farm() {
+    local name=$1; shift
+    timeout "$BOARD_RUN_LIMIT_S" "$LINKS1" farm "$@" >"$RENDER_TMP/$name.log" 2>&1
+    local rc=$?
+    echo "--- ${PARALLEL_SSH:+PARALLEL_SSH='$PARALLEL_SSH' }$LINKS1 farm $* (exit $rc)"
+    sed 's/^/    /' "$RENDER_TMP/$name.log"
+    return $rc
+}
