@@ -259,7 +259,12 @@ int cmd_replay(int argc, char **argv)
         o.cfg.guided = t.guided;
     if (!o.have_ask)
         o.cfg.prefetch = !(t.flags & LINK_RENDER_ASK_WHEN_DONE);
-    int what_if = o.have_balance || o.have_k || o.have_guided || o.have_ask || o.cfg.pipelined ||
+    /* a what-if: a schedule other than the trace's (an option that only
+     * repeats what the board ran, as --paper on a paper-mode trace, is not) */
+    int what_if = (o.have_balance && o.cfg.balance != (enum areas_mode)t.balance) ||
+                  (o.have_k && o.cfg.k != t.k) || (o.have_guided && o.cfg.guided != t.guided) ||
+                  (o.have_ask && o.cfg.prefetch != !(t.flags & LINK_RENDER_ASK_WHEN_DONE)) ||
+                  o.cfg.pipelined ||
                   o.cfg.first_in_broadcast || o.cfg.mips != REPLAY_DEFAULT_MIPS ||
                   o.cfg.line_us != REPLAY_DEFAULT_LINE_US ||
                   o.cfg.byte_us != REPLAY_DEFAULT_BYTE_US;

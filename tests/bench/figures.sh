@@ -86,8 +86,16 @@ for n in $BOARD7; do
     BOARD_S[$n]=$(awk -v a="$one" -v b="$(nc_max "$TMP/b7-$n.log")" 'BEGIN { printf "%.2f", a / b }')
 done
 "$LINKS1" replay "$T7" --ncs "$REPLAY7" >"$TMP/r7-default.txt" || fail "replay (defaults)"
-"$LINKS1" replay "$T7" --ncs "$REPLAY7" --ask finished >"$TMP/r7-paper.txt" ||
-    fail "replay (the paper's rule)"
+# The reproduction: the frame rendered in paper mode (--paper: the paper's
+# depth, src/trc, clipping lists, scanline areas, NCs asking once finished),
+# traced on 1 NC and replayed with the paper's schedule.
+T7P="$TMP/fig7-paper.trace"
+board "$TMP/b7-paper.log" scenes/demo.scn --size "$SIZE7" --ncs 1 --paper --count-insns \
+    --trace "$T7P" -o "$TMP/f7p.ppm"
+grep -q "paper mode: .*ask finished, clip lists" "$TMP/b7-paper.log" ||
+    fail "Fig. 7: $TMP/b7-paper.log shows no paper mode"
+"$LINKS1" replay "$T7P" --ncs "$REPLAY7" --paper >"$TMP/r7-paper.txt" ||
+    fail "replay (paper mode)"
 # What-if, tuned: per NC count, the best of TUNED_K x TUNED_G.
 : >"$TMP/r7-tuned.txt"
 for n in ${REPLAY7//,/ }; do
@@ -111,25 +119,30 @@ paste <(field ncs <"$TMP/r7-default.txt") <(field speed-up <"$TMP/r7-paper.txt")
     <(field factor <"$TMP/r7-default.txt") <(field speed-up <"$TMP/r7-tuned.txt") \
     <(field K <"$TMP/r7-tuned.txt") <(field G <"$TMP/r7-tuned.txt") >"$TMP/r7.tsv"
 {
-    echo "# ncs board replay-paper-rule replay-board what-if-tuned"
+    echo "# ncs board replay-paper-mode replay-board what-if-tuned"
     while read -r n sp sd busy ms k g st tk tg; do
         echo "$n ${BOARD_S[$n]:-NaN} $sp $sd $st"
     done <"$TMP/r7.tsv"
 } >"$OUT/fig7.dat"
 {
-    echo "Fig. 7: speed-up over 1 NC, demo.scn at $SIZE7 (one trace: links1 render scenes/demo.scn"
-    echo "--size $SIZE7 --ncs 1 --count-insns --trace T; the board's other NC counts the same"
-    echo "without --trace).  Replays: the board's rule, links1 replay T --ncs N; the paper's"
-    echo "rule, links1 replay T --ncs N --ask finished; what-if, tuned: links1 replay T --ncs N"
+    echo "Fig. 7: speed-up over 1 NC, demo.scn at $SIZE7.  The reproduction, paper mode: links1"
+    echo "render scenes/demo.scn --size $SIZE7 --ncs 1 --paper --count-insns --trace TP, replayed"
+    echo "with links1 replay TP --ncs N --paper (scanline areas, K = the height, NCs asking once"
+    echo "finished).  What the board does by default: links1 render scenes/demo.scn --size $SIZE7"
+    echo "--ncs 1 --count-insns --trace T (the board's other NC counts the same without --trace),"
+    echo "replayed with links1 replay T --ncs N; what-if, tuned: links1 replay T --ncs N"
     echo "${TUNED[*]} --areas K --guided G, the best K and G for each N."
     echo
-    echo "| NCs | board (1-NC total / largest NC) | replay, the paper's rule (ask when finished) | replay, what the board does (ask ahead) | board: K, factor | board: NCs busy | board: frame s at 1 MIPS | what-if: tuned, pipelined | tuned: K, G |"
+    echo "| NCs | board (1-NC total / largest NC) | replay, paper mode (the reproduction) | replay, what the board does (ask ahead) | board: K, factor | board: NCs busy | board: frame s at 1 MIPS | what-if: tuned, pipelined | tuned: K, G |"
     echo "|---|---|---|---|---|---|---|---|---|"
     while read -r n sp sd busy ms k g st tk tg; do
         echo "| $n | ${BOARD_S[$n]:--} | $sp | $sd | $k, $g | $busy | $(awk -v m="$ms" 'BEGIN { printf "%.1f", m / 1000 }') | $st | $tk, $tg |"
     done <"$TMP/r7.tsv"
     echo
     sed -n 1,2p "$TMP/r7-default.txt"
+    echo
+    echo "Paper mode's run: $(grep -m1 'paper mode:' "$TMP/b7-paper.log" | sed 's/^links1 render: //')"
+    sed -n 1,3p "$TMP/r7-paper.txt"
 } >"$OUT/fig7.md"
 gnuplot <<GP || fail "gnuplot fig7"
 set terminal pngcairo size 800,560
@@ -140,7 +153,7 @@ set logscale xy 2; set key top left; set grid
 set xrange [0.8:320]; set yrange [0.8:320]
 plot x title "linear" with lines dt 2 lc rgb "gray", \
      "$OUT/fig7.dat" using 1:2 title "board (largest NC's instructions)" with linespoints pt 7, \
-     "$OUT/fig7.dat" using 1:3 title "replay, the paper's rule: NCs ask when finished" with linespoints pt 5, \
+     "$OUT/fig7.dat" using 1:3 title "replay, paper mode (the reproduction): scanlines, NCs ask when finished" with linespoints pt 5, \
      "$OUT/fig7.dat" using 1:4 title "replay, the board's default: NCs ask ahead" with linespoints pt 9 lw 2, \
      "$OUT/fig7.dat" using 1:5 title "what-if: tuned K and factor, pipelined" with lines dt 3, \
      "-" using 1:2 title "LINKS-1 (paper): 63.07x at 64" with points pt 3 ps 2 lc rgb "red"
@@ -156,11 +169,15 @@ sed 's/^options {/options { shadows off/' scenes/demo.scn >"$TMP/noshadow.scn"
 ln -sfn "$PWD/scenes/maps" "$TMP/maps" # the scene's image maps, by relative path
 grep -q 'shadows off' "$TMP/noshadow.scn" || fail "no options block in demo.scn to turn shadows off"
 T10="$TMP/fig10.trace"
-board "$TMP/b10.log" "$TMP/noshadow.scn" --size "$SIZE10" --ncs 2 --balance dynamic --areas 1024 \
-    --clip lists --ask finished --trace "$T10" -o "$TMP/f10.ppm"
+# Paper mode, but with the equal rectangles Fig. 10 measured
+# ("等面積の長方形領域") in place of paper mode's scanlines.
+board "$TMP/b10.log" "$TMP/noshadow.scn" --size "$SIZE10" --ncs 2 --paper --balance dynamic \
+    --areas 1024 --trace "$T10" -o "$TMP/f10.ppm"
+grep -q "paper mode: .*ask finished, clip lists" "$TMP/b10.log" ||
+    fail "Fig. 10: $TMP/b10.log shows no paper mode"
 : >"$TMP/r10.txt"
 for k in $K10; do
-    "$LINKS1" replay "$T10" --ncs 64 --balance dynamic --areas "$k" >>"$TMP/r10.txt" ||
+    "$LINKS1" replay "$T10" --ncs 64 --paper --balance dynamic --areas "$k" | grep '^ncs' >>"$TMP/r10.txt" ||
         fail "replay fig10 K=$k"
 done
 paste <(field areas <"$TMP/r10.txt") <(field frame_ms <"$TMP/r10.txt") \
@@ -170,9 +187,11 @@ first=$(head -1 "$TMP/r10.tsv")
 awk '{ printf "%s %.3f\n", $1, $2 / 1000 }' "$TMP/r10.tsv" >"$OUT/fig10.dat"
 {
     echo "Fig. 10: simple dynamic balancing on 64 NCs, demo.scn with shadows off at $SIZE10"
-    echo "as the paper's NCs worked (the clipping lists, asking once finished; trace: links1 render"
-    echo "NOSHADOW.scn --size $SIZE10 --ncs 2 --balance dynamic --areas 1024 --clip lists --ask finished"
-    echo "--trace T; replay: links1 replay T --ncs 64 --balance dynamic --areas K)."
+    echo "in paper mode with the equal rectangles the paper measured (trace: links1 render"
+    echo "NOSHADOW.scn --size $SIZE10 --ncs 2 --paper --balance dynamic --areas 1024 --trace T;"
+    echo "replay: links1 replay T --ncs 64 --paper --balance dynamic --areas K)."
+    echo
+    echo "$(grep -m1 'paper mode:' "$TMP/b10.log" | sed 's/^links1 render: //')"
     echo
     echo "| areas | frame s at 1 MIPS | NCs busy | RC busy |"
     echo "|---|---|---|---|"

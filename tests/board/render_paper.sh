@@ -37,6 +37,16 @@ if render_board render_paper "$out" "$scn" -o "$out" --ncs 2 --size $SIZE \
     else
         echo "FAIL render_paper_schedule: paper mode said K ${k:-?}, the board: $(echo "$sum" | grep -o '[0-9]* areas ([^)]*)')"
     fi
+    # links1 replay --paper on this trace replays what the board did (not a
+    # what-if); with the default schedule it is a what-if
+    rp=$("$LINKS1" replay "$RENDER_TMP/lists.trace" --ncs 2 --paper 2>&1)
+    rd=$("$LINKS1" replay "$RENDER_TMP/lists.trace" --ncs 2 --balance decreasing --ask ahead 2>&1)
+    if [[ $rp == *"replayed: what the board does; NCs asking when finished"* ]] &&
+        [[ $rd == *"replayed: a what-if"* ]]; then
+        echo "PASS render_paper_replay_is_the_board"
+    else
+        echo "FAIL render_paper_replay_is_the_board: --paper: $(echo "$rp" | grep replayed:); default: $(echo "$rd" | grep replayed:)"
+    fi
     # the compiled scene's clusters: the author's in paper mode, more with
     # the automatic hierarchy
     nc=$(echo "$line" | sed -n 's/.*clusters \([0-9]*\) (.*/\1/p')
