@@ -21,6 +21,8 @@
 #include <unistd.h>
 
 #include "host-tools/cli/links1_cmds.h"
+#include "host-tools/image/film.h"
+#include "host-tools/image/image_io.h"
 #include "host-tools/opts/cli_args.h"
 #include "host-tools/opts/cli_opt.h"
 #include "host-tools/opts/self_path.h"
@@ -30,13 +32,22 @@
 #define FARM_MAX_HOSTS 256     /* hosts in the summary */
 #define FARM_HOSTS_MAX_BYTES (1 << 20)
 
-enum { FARM_OPT_FRAMES = CLI_OWN_CODES, FARM_OPT_HOSTS, FARM_OPT_RETRIES, FARM_OPT_EXT };
+enum {
+    FARM_OPT_FRAMES = CLI_OWN_CODES,
+    FARM_OPT_HOSTS,
+    FARM_OPT_RETRIES,
+    FARM_OPT_EXT,
+    FARM_OPT_FILM,
+    FARM_OPT_FPS
+};
 
 static const struct option farm_options[] = {
     {"frames", required_argument, NULL, FARM_OPT_FRAMES},
     {"hosts", required_argument, NULL, FARM_OPT_HOSTS},
     {"retries", required_argument, NULL, FARM_OPT_RETRIES},
     {"ext", required_argument, NULL, FARM_OPT_EXT},
+    {"film", required_argument, NULL, FARM_OPT_FILM},
+    {"fps", required_argument, NULL, FARM_OPT_FPS},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -45,7 +56,7 @@ static void farm_usage(FILE *out)
 {
     fprintf(out,
             "usage: links1 farm SCENE --frames A:B -o DIR --hosts FILE [--retries N] [--ext png|ppm]\n"
-            "                   [-- links1 render arguments...]\n"
+            "                   [--film OUT.mp4|.webm|.apng [--fps N]] [-- links1 render arguments...]\n"
             "  the frames A..B rendered on the hosts of FILE (GNU parallel's --sshloginfile:\n"
             "  one host a line, ':' this machine) one frame a job, -j1 on each host, each job\n"
             "  `links1 render SCENE --frames F:F` run there (links1 and SCENE at the same\n"
@@ -54,8 +65,12 @@ static void farm_usage(FILE *out)
             "  --retries N   tries of a frame (parallel --retries: each on a host where it has\n"
             "                not failed yet), 1..100, default 3\n"
             "  --ext E       png (default) or ppm\n"
+            "  --film OUT    once every frame is in DIR, frames A..B made into one film by\n"
+            "                ffmpeg (OUT's ending: .mp4, .webm or .apng), written whole or not\n"
+            "  --fps N       the film's frames a second (1..%d, default %d)\n"
             "  the ssh parallel uses: $PARALLEL_SSH (e.g. \"ssh -F CONFIG\"), else ssh;\n"
-            "  $FW_DIR, when set, is made absolute and passed to every host (--env)\n");
+            "  $FW_DIR, when set, is made absolute and passed to every host (--env)\n",
+            FILM_MAX_FPS, FILM_DEFAULT_FPS);
 }
 
 /* Whether NAME is an executable file in some directory of $PATH. */
@@ -270,11 +285,58 @@ static void farm_frame_path(const char *dir, long f, const char *ext, char *out,
     snprintf(out, cap, "%s/frame-%04ld.%s", dir, f, ext);
 }
 
+/* Frames first..last of DIR, in order, made into the film OUT (every frame
+ * the first one's size).  0, or 1 after saying why; nothing is named OUT
+ * then. */
+static int farm_film(const char *dir, long first, long last, const char *ext, const char *out,
+                     int fps)
+{
+    struct film fm;
+    memset(&fm, 0, sizeof fm);
+    char err[PATH_MAX + 256];
+    for (long f = first; f <= last; f++) {
+        char path[PATH_MAX + 32];
+        farm_frame_path(dir, f, ext, path, sizeof path);
+        struct image img;
+        if (image_read(path, &img, err, sizeof err) != 0) {
+            fprintf(stderr, "links1 farm: --film %s: %s\n", out, err);
+            film_abort(&fm);
+            return 1;
+        }
+        int bad = 0;
+        if (f == first) {
+            bad = film_open(&fm, out, img.width, img.height, fps, err, sizeof err) != 0;
+            if (!bad && film_padded(fm.kind, img.width, img.height))
+                printf("links1 farm: %s: %dx%d padded to %dx%d (the film's yuv420p needs even "
+                       "sides)\n", out, img.width, img.height, img.width + (img.width & 1),
+                       img.height + (img.height & 1));
+        } else if (img.width != fm.width || img.height != fm.height) {
+            snprintf(err, sizeof err, "%s is %dx%d, frame %ld was %dx%d", path, img.width,
+                     img.height, first, fm.width, fm.height);
+            bad = 1;
+        }
+        if (!bad)
+            bad = film_frame(&fm, &img, err, sizeof err) != 0;
+        image_free(&img);
+        if (bad) {
+            fprintf(stderr, "links1 farm: --film %s: %s\n", out, err);
+            film_abort(&fm);
+            return 1;
+        }
+    }
+    if (film_close(&fm, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 farm: --film %s: %s\n", out, err);
+        return 1;
+    }
+    printf("links1 farm: wrote %s (%ld frames at %d a second)\n", out, last - first + 1, fps);
+    return 0;
+}
+
 int cmd_farm(int argc, char **argv)
 {
-    const char *scene = NULL, *dir = NULL, *hosts_file = NULL, *ext = "png";
+    const char *scene = NULL, *dir = NULL, *hosts_file = NULL, *ext = "png", *film = NULL;
     const char *extra[FARM_MAX_EXTRA];
-    int nextra = 0, retries = 3;
+    int nextra = 0, retries = 3, fps = FILM_DEFAULT_FPS, have_fps = 0;
     long first = -1, last = -1;
     struct cli c;
     cli_init(&c, "links1 farm", argc, argv, "o:h", farm_options);
@@ -316,6 +378,18 @@ int cmd_farm(int argc, char **argv)
             }
             ext = c.arg;
             break;
+        case FARM_OPT_FILM:
+            if (film_kind_of(c.arg) == FILM_NONE) {
+                cli_bad_value(&c, "a film named .mp4, .webm or .apng");
+                return 2;
+            }
+            film = c.arg;
+            break;
+        case FARM_OPT_FPS:
+            if (cli_int(&c, 1, FILM_MAX_FPS, &fps) != 0)
+                return 2;
+            have_fps = 1;
+            break;
         case 'h': farm_usage(stdout); return 0;
         default: return 2;
         }
@@ -324,6 +398,17 @@ int cmd_farm(int argc, char **argv)
         fprintf(stderr, "links1 farm: want SCENE, --frames A:B, -o DIR and --hosts FILE\n");
         farm_usage(stderr);
         return 2;
+    }
+    if (have_fps && !film) {
+        fprintf(stderr, "links1 farm: --fps goes with --film\n");
+        return 2;
+    }
+    if (film) { /* before any host renders: the film could not be made */
+        char err[512];
+        if (film_program_check(err, sizeof err) != 0) {
+            fprintf(stderr, "links1 farm: --film %s: %s\n", film, err);
+            return 1;
+        }
     }
     if (!farm_in_path("parallel")) {
         fprintf(stderr, "links1 farm: GNU parallel is not installed (no 'parallel' in PATH; "
@@ -540,9 +625,10 @@ int cmd_farm(int argc, char **argv)
     free(hosts);
     if (missing) {
         fprintf(stderr, "links1 farm: %ld frame(s) missing (parallel exit %d); run again to "
-                        "render only those\n", missing,
-                WIFEXITED(status) ? WEXITSTATUS(status) : -1);
+                        "render only those%s\n", missing,
+                WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+                film ? " (the film is made once every frame is there)" : "");
         return 1;
     }
-    return 0;
+    return film ? farm_film(dir_abs, first, last, ext, film, fps) : 0;
 }

@@ -10,7 +10,7 @@
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
 CHECKS="farm_frame0 farm_frame1 farm_frame2 farm_summary farm_resume_one_job farm_resume_kept
-        farm_resume_frame1 farm_hostile_names farm_no_parallel farm_not_gnu_parallel farm_empty_hosts
+        farm_resume_frame1 farm_film farm_hostile_names farm_no_parallel farm_not_gnu_parallel farm_empty_hosts
         farm_unreadable_hosts farm_dir_is_file farm_dir_not_yours"
 board_ready $CHECKS || exit 0
 if ! command -v parallel >/dev/null; then
@@ -37,13 +37,23 @@ before=$(stat -c '%n %i %Y' "$T/out/frame-0000.ppm" "$T/out/frame-0002.ppm" | tr
 rm -f "$T/out/frame-0001.ppm"
 sleep 1 # a rewritten frame would get a later mtime
 farm farm_resume scenes/anim.scn --frames 0:2 -o "$T/out" --hosts "$T/hosts" --ext ppm \
-    -- --size $SIZE
+    --film "$T/farmed.apng" --fps 4 -- --size $SIZE
 want farm_resume_one_job "$(tail -n +2 "$T/out/farm-joblog.tsv" | awk -F'\t' '{ print $7, $9 }' |
     grep -c -- '^0 .*--frames 0001:0001 ')/$(tail -n +2 "$T/out/farm-joblog.tsv" | wc -l)/$(
     grep -c '1 frame(s) rendered now, 2 kept from before, 0 missing' "$T/farm_resume.log")" 1/1/1
 after=$(stat -c '%n %i %Y' "$T/out/frame-0000.ppm" "$T/out/frame-0002.ppm" | tr '\n' ' ')
 want farm_resume_kept "$after" "$before"
 render_same farm_resume_frame1 "$T/ref-0001.ppm" "$T/out/frame-0001.ppm"
+# the film made from DIR once every frame is there: an animated PNG (lossless)
+# whose frames, decoded by ffmpeg, are the board's frames in order
+mkdir -p "$T/film"
+if ffmpeg -v error -i "$T/farmed.apng" -f image2 -c:v ppm -pix_fmt rgb24 "$T/film/f%d.ppm" &&
+    [ "$(ls "$T/film" | wc -l)" = 3 ] && cmp -s "$T/film/f1.ppm" "$T/ref-0000.ppm" &&
+    cmp -s "$T/film/f2.ppm" "$T/ref-0001.ppm" && cmp -s "$T/film/f3.ppm" "$T/ref-0002.ppm"; then
+    echo "PASS farm_film"
+else
+    echo "FAIL farm_film: $T/farmed.apng: $(ls "$T/film" | wc -l) frames decoded, want the board's 3 in order"
+fi
 
 # hostile names: spaces, quotes and $ in the scene's path and in DIR
 hostile="$T/a b'c\"d \$HOME e"
