@@ -199,7 +199,14 @@ int areas_next(struct areas *s, struct area *a)
     int got = s->mode == AREAS_DECREASING ? areas_next_decreasing(s, a)
                                           : areas_next_grid(s, a);
     s->handed += (uint32_t)got;
+    if (got)
+        a->y += s->y0;
     return got;
+}
+
+void areas_set_origin(struct areas *s, uint32_t y0)
+{
+    s->y0 = y0;
 }
 
 uint32_t areas_count(const struct areas *s)

@@ -83,6 +83,7 @@ struct areas {
     uint32_t pixels_left;   /* pixels not yet handed out */
     uint32_t handed;        /* areas handed out so far */
     uint32_t factor;        /* guided divisor (AREAS_GUIDED_FACTOR unless set) */
+    uint32_t y0;            /* added to every area's y (areas_set_origin) */
 };
 
 /* The decreasing schedule's k and guided factor for ncs NCs when the
@@ -109,6 +110,10 @@ int areas_init(struct areas *s, enum areas_mode mode, uint32_t width, uint32_t h
  * ncs) of what is left; 1..AREAS_MAX_GUIDED_FACTOR) before its first area;
  * AREAS_OK, or AREAS_ERR_FACTOR (the schedule is left as it was). */
 int areas_set_guided_factor(struct areas *s, uint32_t factor);
+/* Moves the whole schedule down by y0 scanlines: a schedule of a band of
+ * the screen (its height the band's rows) hands out the band's areas in
+ * screen coordinates.  Set before the first area, as the factor is. */
+void areas_set_origin(struct areas *s, uint32_t y0);
 /* Writes the next area and returns 1, or returns 0 once the screen is all
  * handed out. */
 int areas_next(struct areas *s, struct area *a);

@@ -59,7 +59,7 @@ enum link_balance {
 };
 
 /* CMD_RENDER arguments. */
-#define LINK_RENDER_ARGS_SIZE 12
+#define LINK_RENDER_ARGS_SIZE 16
 struct link_render_args {
     uint32_t frame;   /* frame index, 0 .. frames-1 */
     uint8_t balance;  /* enum link_balance */
@@ -69,6 +69,9 @@ struct link_render_args {
     uint8_t clip;     /* enum link_clip */
     uint32_t areas;   /* K: areas of the dynamic grid / smallest-area bound of
                          the decreasing schedule; 0 = the board's default */
+    uint16_t row0;    /* a band of the frame: scanlines row0 .. row0+rows-1 only, */
+    uint16_t rows;    /* the schedule cut from the band; rows 0 = the whole frame
+                         (row0 0) */
 };
 
 /* CMD_RENDER may carry, after its LINK_RENDER_ARGS_SIZE bytes, a fault
@@ -269,6 +272,8 @@ static inline void link_render_args_put(uint8_t *p, const struct link_render_arg
     wire_put_u8(p + 6, a->guided);
     wire_put_u8(p + 7, a->clip);
     wire_put_u32(p + 8, a->areas);
+    wire_put_u16(p + 12, a->row0);
+    wire_put_u16(p + 14, a->rows);
 }
 static inline void link_render_args_get(const uint8_t *p, struct link_render_args *a)
 {
@@ -278,6 +283,8 @@ static inline void link_render_args_get(const uint8_t *p, struct link_render_arg
     a->guided = wire_get_u8(p + 6);
     a->clip = wire_get_u8(p + 7);
     a->areas = wire_get_u32(p + 8);
+    a->row0 = wire_get_u16(p + 12);
+    a->rows = wire_get_u16(p + 14);
 }
 
 static inline void link_progress_put(uint8_t *p, const struct link_progress *g)

@@ -255,16 +255,26 @@ void rc_render_frame(struct line_msg *m)
     }
     if (bcast == 0) {
         blob_bytes = (uint32_t)blob->bytes;
-        int r = areas_init(&run.sched, (enum areas_mode)args.balance, blob->scene.width,
-                           blob->scene.height, run.ncs, args.areas);
-        if (r == AREAS_OK && args.guided && args.balance == LINK_BALANCE_DECREASING)
-            r = areas_set_guided_factor(&run.sched, args.guided);
-        if (r != AREAS_OK)
-            rc_fail(&run, LINK_ERR_BAD_ARGS, "area schedule: error %d (balance %u)", (uint32_t)r,
-                    args.balance);
+        uint32_t h = blob->scene.height;
+        if (args.rows == 0 ? args.row0 != 0 : (uint32_t)args.row0 + args.rows > h) {
+            rc_fail(&run, LINK_ERR_BAD_ARGS, "a band ending before scanline %u (or of no "
+                    "scanlines from a scanline other than 0): the frame has %u",
+                    (uint32_t)args.row0 + args.rows, h);
+        } else {
+            int r = areas_init(&run.sched, (enum areas_mode)args.balance, blob->scene.width,
+                               args.rows ? args.rows : h, run.ncs, args.areas);
+            if (r == AREAS_OK && args.guided && args.balance == LINK_BALANCE_DECREASING)
+                r = areas_set_guided_factor(&run.sched, args.guided);
+            areas_set_origin(&run.sched, args.row0);
+            if (r != AREAS_OK)
+                rc_fail(&run, LINK_ERR_BAD_ARGS, "area schedule: error %d (balance %u)",
+                        (uint32_t)r, args.balance);
+        }
     }
     if (run.status == LINK_OK &&
         rc_frame_memory(&run, blob->scene.width, blob->scene.height) == 0) {
+        if (args.rows) /* a band: its pixels make the frame */
+            rc_frame.pixels = blob->scene.width * args.rows;
         run.total = areas_count(&run.sched);
         uint32_t largest = rc_largest_area(&run.sched);
         dc_init(UNITS_RC_CORE); /* nobody pushes between frames */

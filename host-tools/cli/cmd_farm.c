@@ -25,12 +25,14 @@
 #include "host-tools/image/image_io.h"
 #include "host-tools/opts/cli_args.h"
 #include "host-tools/opts/cli_opt.h"
+#include "host-tools/opts/out_file.h"
 #include "host-tools/opts/self_path.h"
 
 #define FARM_MAX_FRAMES 100000 /* frames in one farm */
 #define FARM_MAX_EXTRA 64      /* render arguments after "--" */
 #define FARM_MAX_HOSTS 256     /* hosts in the summary */
 #define FARM_HOSTS_MAX_BYTES (1 << 20)
+#define FARM_MAX_BANDS 1024    /* bands of one still frame */
 
 enum {
     FARM_OPT_FRAMES = CLI_OWN_CODES,
@@ -38,7 +40,8 @@ enum {
     FARM_OPT_RETRIES,
     FARM_OPT_EXT,
     FARM_OPT_FILM,
-    FARM_OPT_FPS
+    FARM_OPT_FPS,
+    FARM_OPT_BANDS
 };
 
 static const struct option farm_options[] = {
@@ -48,6 +51,7 @@ static const struct option farm_options[] = {
     {"ext", required_argument, NULL, FARM_OPT_EXT},
     {"film", required_argument, NULL, FARM_OPT_FILM},
     {"fps", required_argument, NULL, FARM_OPT_FPS},
+    {"bands", required_argument, NULL, FARM_OPT_BANDS},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -68,9 +72,12 @@ static void farm_usage(FILE *out)
             "  --film OUT    once every frame is in DIR, frames A..B made into one film by\n"
             "                ffmpeg (OUT's ending: .mp4, .webm or .apng), written whole or not\n"
             "  --fps N       the film's frames a second (1..%d, default %d)\n"
+            "  --bands N     one still frame (--frames F:F) cut into N bands of scanlines, a\n"
+            "                job a band (`links1 render --band I/N`), stitched into\n"
+            "                DIR/frame-FFFF.EXT once all are back (2..%d)\n"
             "  the ssh parallel uses: $PARALLEL_SSH (e.g. \"ssh -F CONFIG\"), else ssh;\n"
             "  $FW_DIR, when set, is made absolute and passed to every host (--env)\n",
-            FILM_MAX_FPS, FILM_DEFAULT_FPS);
+            FILM_MAX_FPS, FILM_DEFAULT_FPS, FARM_MAX_BANDS);
 }
 
 /* Whether NAME is an executable file in some directory of $PATH. */
@@ -285,6 +292,71 @@ static void farm_frame_path(const char *dir, long f, const char *ext, char *out,
     snprintf(out, cap, "%s/frame-%04ld.%s", dir, f, ext);
 }
 
+/* Band b's file in DIR. */
+static void farm_band_path(const char *dir, long b, const char *ext, char *out, size_t cap)
+{
+    snprintf(out, cap, "%s/band-%04ld.%s", dir, b, ext);
+}
+
+/* The bands 0..bands-1 of DIR stitched top to bottom into frame f of DIR
+ * (written whole, then the bands removed).  Every band must be as wide as
+ * the first.  0, or 1 after saying why (the bands stay). */
+static int farm_stitch(const char *dir, long f, long bands, const char *ext)
+{
+    char err[PATH_MAX + 256], path[PATH_MAX + 32];
+    struct image whole = {0, 0, NULL};
+    for (long b = 0; b < bands; b++) {
+        struct image img;
+        farm_band_path(dir, b, ext, path, sizeof path);
+        if (image_read(path, &img, err, sizeof err) != 0) {
+            fprintf(stderr, "links1 farm: stitching: %s\n", err);
+            image_free(&whole);
+            return 1;
+        }
+        if ((b > 0 && img.width != whole.width) || whole.height + img.height > IMAGE_MAX_SIDE) {
+            fprintf(stderr, "links1 farm: stitching: %s is %dx%d, the bands before it %d wide "
+                    "and %d high in all\n", path, img.width, img.height, whole.width, whole.height);
+            image_free(&img);
+            image_free(&whole);
+            return 1;
+        }
+        size_t row = (size_t)img.width * 3;
+        uint8_t *grown = realloc(whole.rgb, row * (size_t)(whole.height + img.height));
+        if (!grown) {
+            fprintf(stderr, "links1 farm: stitching: out of memory\n");
+            image_free(&img);
+            image_free(&whole);
+            return 1;
+        }
+        memcpy(grown + row * (size_t)whole.height, img.rgb, row * (size_t)img.height);
+        whole.rgb = grown;
+        whole.width = img.width;
+        whole.height += img.height;
+        image_free(&img);
+    }
+    farm_frame_path(dir, f, ext, path, sizeof path);
+    struct out_file of;
+    int rc = out_file_open(&of, path, err, sizeof err);
+    if (rc == 0 && image_write(of.f, path, &whole, strcmp(ext, "ppm") == 0, err, sizeof err) != 0) {
+        out_file_abort(&of);
+        rc = -1;
+    } else if (rc == 0) {
+        rc = out_file_commit(&of, err, sizeof err);
+    }
+    image_free(&whole);
+    if (rc != 0) {
+        fprintf(stderr, "links1 farm: stitching: %s\n", err);
+        return 1;
+    }
+    for (long b = 0; b < bands; b++) {
+        char band[PATH_MAX + 32];
+        farm_band_path(dir, b, ext, band, sizeof band);
+        unlink(band);
+    }
+    printf("links1 farm: %ld bands stitched into %s\n", bands, path);
+    return 0;
+}
+
 /* Frames first..last of DIR, in order, made into the film OUT (every frame
  * the first one's size).  0, or 1 after saying why; nothing is named OUT
  * then. */
@@ -336,7 +408,7 @@ int cmd_farm(int argc, char **argv)
 {
     const char *scene = NULL, *dir = NULL, *hosts_file = NULL, *ext = "png", *film = NULL;
     const char *extra[FARM_MAX_EXTRA];
-    int nextra = 0, retries = 3, fps = FILM_DEFAULT_FPS, have_fps = 0;
+    int nextra = 0, retries = 3, fps = FILM_DEFAULT_FPS, have_fps = 0, bands = 0;
     long first = -1, last = -1;
     struct cli c;
     cli_init(&c, "links1 farm", argc, argv, "o:h", farm_options);
@@ -390,6 +462,10 @@ int cmd_farm(int argc, char **argv)
                 return 2;
             have_fps = 1;
             break;
+        case FARM_OPT_BANDS:
+            if (cli_int(&c, 2, FARM_MAX_BANDS, &bands) != 0)
+                return 2;
+            break;
         case 'h': farm_usage(stdout); return 0;
         default: return 2;
         }
@@ -401,6 +477,11 @@ int cmd_farm(int argc, char **argv)
     }
     if (have_fps && !film) {
         fprintf(stderr, "links1 farm: --fps goes with --film\n");
+        return 2;
+    }
+    if (bands && (first != last || film)) {
+        fprintf(stderr, "links1 farm: --bands cuts one still frame: give --frames F:F and no "
+                        "--film\n");
         return 2;
     }
     if (film) { /* before any host renders: the film could not be made */
@@ -460,7 +541,23 @@ int cmd_farm(int argc, char **argv)
      * ended well but which did not arrive (its host died before parallel's
      * --return copied it) is handed out again in the next round, up to
      * --retries rounds. */
+    /* The items handed out: frames first..last, or with --bands the bands
+     * 0..bands-1 of frame first (none when that frame is in DIR already). */
     long nframes = last - first + 1, kept = 0, refarmed = 0, missing = 0;
+    long item0 = first, nitems = nframes;
+    const char *unit = bands ? "band" : "frame"; /* what a job makes */
+    if (bands) {
+        char path[PATH_MAX + 32];
+        farm_frame_path(dir_abs, first, ext, path, sizeof path);
+        struct stat st;
+        if (lstat(path, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+            printf("links1 farm: frame %ld of %s is in %s already (%s): nothing to do\n", first,
+                   scene_abs, dir_abs, path);
+            return 0;
+        }
+        item0 = 0;
+        nframes = nitems = bands;
+    }
     char **todo = calloc((size_t)nframes, sizeof *todo);
     char *ok = calloc((size_t)nframes, 1);         /* todo[i]'s job ended well */
     char *again = calloc((size_t)nframes, 1);      /* frame A + i: may go out again */
@@ -474,9 +571,12 @@ int cmd_farm(int argc, char **argv)
     for (int round = 1;; round++) {
         long ntodo = 0;
         missing = 0;
-        for (long f = first; f <= last; f++) {
+        for (long f = item0; f < item0 + nitems; f++) {
             char path[PATH_MAX + 32];
-            farm_frame_path(dir_abs, f, ext, path, sizeof path);
+            if (bands)
+                farm_band_path(dir_abs, f, ext, path, sizeof path);
+            else
+                farm_frame_path(dir_abs, f, ext, path, sizeof path);
             struct stat st;
             if (lstat(path, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
                 if (round == 1)
@@ -484,9 +584,10 @@ int cmd_farm(int argc, char **argv)
                 continue;
             }
             missing++;
-            if (round > retries || (round > 1 && !again[f - first])) {
+            if (round > retries || (round > 1 && !again[f - item0])) {
                 if (missing <= 10)
-                    fprintf(stderr, "links1 farm: frame %ld did not arrive (%s)\n", f, path);
+                    fprintf(stderr, "links1 farm: %s %ld did not arrive (%s)\n",
+                            bands ? "band" : "frame", f, path);
                 continue;
             }
             char num[24];
@@ -499,13 +600,17 @@ int cmd_farm(int argc, char **argv)
             }
             ntodo++;
         }
-        if (round == 1)
+        if (round == 1 && bands)
+            printf("links1 farm: frame %ld of %s in %d bands: %ld in %s already, %ld to render "
+                   "on %d host(s) of %s\n", first, scene_abs, bands, kept, dir_abs, ntodo,
+                   nhosts_file, hosts_abs);
+        else if (round == 1)
             printf("links1 farm: frames %ld..%ld of %s: %ld in %s already, %ld to render on %d "
                    "host(s) of %s\n", first, last, scene_abs, kept, dir_abs, ntodo, nhosts_file,
                    hosts_abs);
         else if (ntodo > 0)
-            printf("links1 farm: %ld frame(s) did not arrive; handing them out again (round "
-                   "%d of at most %d)\n", ntodo, round, retries);
+            printf("links1 farm: %ld %s(s) did not arrive; handing them out again (round "
+                   "%d of at most %d)\n", ntodo, unit, round, retries);
         if (round > 1)
             refarmed += ntodo;
         fflush(stdout);
@@ -520,11 +625,14 @@ int cmd_farm(int argc, char **argv)
          * starts with a word of its own: parallel leaves a first replacement
          * string unquoted (it takes it for the command). */
         char templ[4096], ret[64], retries_s[16];
-        int n = snprintf(templ, sizeof templ,
-                         "exec {1} render {2} --frames {3}:{3} -o frame.%s --quiet", ext);
+        int n = bands ? snprintf(templ, sizeof templ,
+                                 "exec {1} render {2} --frame %ld --band {3}/%d -o band-{3}.%s "
+                                 "--quiet", first, bands, ext)
+                      : snprintf(templ, sizeof templ,
+                                 "exec {1} render {2} --frames {3}:{3} -o frame.%s --quiet", ext);
         for (int i = 0; i < nextra && n < (int)sizeof templ; i++)
             n += snprintf(templ + n, sizeof templ - (size_t)n, " {%d}", 4 + i);
-        snprintf(ret, sizeof ret, "frame-{3}.%s", ext);
+        snprintf(ret, sizeof ret, "%s-{3}.%s", bands ? "band" : "frame", ext);
         snprintf(retries_s, sizeof retries_s, "%d", retries);
         size_t cap = (size_t)(32 + 2 * nextra + ntodo);
         const char **av = calloc(cap, sizeof *av);
@@ -598,25 +706,25 @@ int cmd_farm(int argc, char **argv)
         memset(again, 0, (size_t)nframes);
         for (long i = 0; i < ntodo; i++)
             if (ok[i])
-                again[strtol(todo[i], NULL, 10) - first] = 1;
+                again[strtol(todo[i], NULL, 10) - item0] = 1;
     }
 
     /* The summary: per host from parallel's joblogs. */
     for (int h = 0; h < nhosts; h++) {
         failed += hosts[h].failed;
-        printf("links1 farm: host %s: %ld frame(s) in %.1f s of jobs, %.2f frames/min",
-               hosts[h].name, hosts[h].frames, hosts[h].seconds,
-               hosts[h].seconds > 0 ? hosts[h].frames * 60.0 / hosts[h].seconds : 0.0);
+        printf("links1 farm: host %s: %ld %s(s) in %.1f s of jobs, %.2f %ss/min",
+               hosts[h].name, hosts[h].frames, unit, hosts[h].seconds,
+               hosts[h].seconds > 0 ? hosts[h].frames * 60.0 / hosts[h].seconds : 0.0, unit);
         if (hosts[h].failed)
-            printf(", %ld frame(s) failed there on their last try", hosts[h].failed);
+            printf(", %ld %s(s) failed there on their last try", hosts[h].failed, unit);
         printf("\n");
     }
     long arrived = nframes - missing - kept;
-    printf("links1 farm: %ld frame(s) rendered now, %ld kept from before, %ld missing; "
-           "retries: %ld job(s) failed on their last try, %ld frame(s) handed out again "
+    printf("links1 farm: %ld %s(s) rendered now, %ld kept from before, %ld missing; "
+           "retries: %ld job(s) failed on their last try, %ld %s(s) handed out again "
            "(done but not arrived), %ld job(s) in parallel's joblogs (a try parallel retried "
            "is not logged there, only each frame's last)\n",
-           arrived, kept, missing, failed, refarmed, njobs);
+           arrived, unit, kept, missing, failed, refarmed, unit, njobs);
     for (long i = 0; i < nframes; i++)
         free(todo[i]);
     free(todo);
@@ -624,11 +732,13 @@ int cmd_farm(int argc, char **argv)
     free(again);
     free(hosts);
     if (missing) {
-        fprintf(stderr, "links1 farm: %ld frame(s) missing (parallel exit %d); run again to "
-                        "render only those%s\n", missing,
+        fprintf(stderr, "links1 farm: %ld %s(s) missing (parallel exit %d); run again to "
+                        "render only those%s\n", missing, unit,
                 WIFEXITED(status) ? WEXITSTATUS(status) : -1,
                 film ? " (the film is made once every frame is there)" : "");
         return 1;
     }
+    if (bands)
+        return farm_stitch(dir_abs, first, bands, ext);
     return film ? farm_film(dir_abs, first, last, ext, film, fps) : 0;
 }

@@ -50,6 +50,8 @@ struct render_opts {
     int njobs;
     struct link_render_args args;
     long first, last;   /* frames; last < 0: only frame first */
+    long row_first, row_last; /* --rows A:B: a band of the frame (row_first < 0: all) */
+    long band, bands;         /* --band I/N: band I of N equal bands (bands 0: none) */
     int many;           /* --frames: one image per frame, numbered */
     struct scene_file_opts scene; /* --size, --max-depth, --refractionless */
     int ppm, count_insns;
@@ -99,6 +101,11 @@ static void render_usage(FILE *out)
             "                   .webm or .apng is one film, the frames piped to ffmpeg as\n"
             "                   they come (an odd size padded to even for .mp4 and .webm)\n"
             "  --fps N          a film's frames a second (1..%d, default %d)\n"
+            "  --rows A:B       render only scanlines A..B (a band of the frame; the RC cuts\n"
+            "                   its areas from the band): OUT is the band, its pixels those\n"
+            "                   of the whole frame (links1 farm --bands stitches bands)\n"
+            "  --band I/N       the same for band I of N (0 <= I < N): scanlines H*I/N to\n"
+            "                   H*(I+1)/N - 1 of a frame H high\n"
             "  --size WxH       render at this size instead of the scene's (text scenes)\n"
             "  --max-depth D    --refractionless on|off\n"
             "                   override the scene's recursion depth / transmission past it\n"
@@ -150,6 +157,8 @@ enum render_opt_code {
     RENDER_OPT_ASK,
     RENDER_OPT_FRAME,
     RENDER_OPT_FRAMES,
+    RENDER_OPT_ROWS,
+    RENDER_OPT_BAND,
     RENDER_OPT_SIZE,
     RENDER_OPT_MAX_DEPTH,
     RENDER_OPT_MIN_WEIGHT,
@@ -188,6 +197,8 @@ static const struct option render_options[] = {
     {"ask", required_argument, NULL, RENDER_OPT_ASK},
     {"frame", required_argument, NULL, RENDER_OPT_FRAME},
     {"frames", required_argument, NULL, RENDER_OPT_FRAMES},
+    {"rows", required_argument, NULL, RENDER_OPT_ROWS},
+    {"band", required_argument, NULL, RENDER_OPT_BAND},
     {"size", required_argument, NULL, RENDER_OPT_SIZE},
     {"max-depth", required_argument, NULL, RENDER_OPT_MAX_DEPTH},
     {"min-weight", required_argument, NULL, RENDER_OPT_MIN_WEIGHT},
@@ -286,6 +297,17 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
         if (cli_parse_frames(c->arg, &o->first, &o->last) != 0 ||
             (!o->many && o->first != o->last))
             return cli_bad_value(c, o->many ? "FIRST:LAST" : "a frame number");
+        return 0;
+    case RENDER_OPT_ROWS:
+        if (cli_parse_frames(c->arg, &o->row_first, &o->row_last) != 0 ||
+            o->row_last >= UINT16_MAX)
+            return cli_bad_value(c, "scanlines A:B, 0 <= A <= B");
+        return 0;
+    case RENDER_OPT_BAND:
+        if (cli_parse_band(c->arg, &o->band, &o->bands) != 0) {
+            o->bands = 0;
+            return cli_bad_value(c, "band I/N, 0 <= I < N <= 65535");
+        }
         return 0;
     case RENDER_OPT_FPS:
         if (cli_long(c, 10, 1, FILM_MAX_FPS, &n) < 0)
@@ -443,6 +465,7 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
     o->board.ncores = RENDER_DEFAULT_NCS + 2;
     o->args.balance = LINK_BALANCE_DECREASING;
     o->last = -1;
+    o->row_first = o->row_last = -1;
     o->unit_fault_core = -1;
     o->fpu = -1;
     o->target_db = -1;
@@ -518,6 +541,15 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
     if (o->trace && (o->njobs > 1 || o->many)) {
         fprintf(stderr, "links1 render: --trace records one frame of one scene: give one SCENE "
                 "and no --frames\n");
+        return -1;
+    }
+    if (o->row_first >= 0 && o->bands) {
+        fprintf(stderr, "links1 render: --rows or --band, not both\n");
+        return -1;
+    }
+    if (o->trace && (o->row_first >= 0 || o->bands)) {
+        fprintf(stderr, "links1 render: --trace records a whole frame (the replay hands out the "
+                "whole screen); --rows renders a band of it\n");
         return -1;
     }
     return 0;
@@ -682,6 +714,28 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
     }
     int ppm = o->ppm || scene_file_ends_with(j->out, ".ppm");
     struct link_render_args job_args = o->args;
+    if (o->bands) { /* band I of N: its scanlines of this scene's height */
+        if ((uint32_t)o->bands > info.height) {
+            fprintf(stderr, "links1 render: %s: --band %ld/%ld: %ld bands of a frame of %u "
+                    "scanlines (at most one band a scanline)\n", j->scene, o->band, o->bands,
+                    o->bands, info.height);
+            return -1;
+        }
+        job_args.row0 = (uint16_t)((uint64_t)info.height * (uint64_t)o->band / (uint64_t)o->bands);
+        job_args.rows = (uint16_t)((uint64_t)info.height * (uint64_t)(o->band + 1) /
+                                   (uint64_t)o->bands - job_args.row0);
+    }
+    if (o->row_first >= 0) { /* a band: checked against this scene's height */
+        if ((uint32_t)o->row_last >= info.height) {
+            fprintf(stderr, "links1 render: %s: --rows %ld:%ld, the frame has %u scanlines "
+                    "(0..%u)\n", j->scene, o->row_first, o->row_last, info.height,
+                    info.height - 1);
+            return -1;
+        }
+        job_args.row0 = (uint16_t)o->row_first;
+        job_args.rows = (uint16_t)(o->row_last - o->row_first + 1);
+    }
+    uint32_t out_h = job_args.rows ? job_args.rows : info.height; /* OUT's height */
     struct scene_paper paper;
     char why[SD_ERR_MAX];
     if (scene_paper_read(j->bytes, j->len, &paper, why, sizeof why) != 0) {
@@ -702,15 +756,15 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
     int filming = film_kind_of(j->out) != FILM_NONE;
     if (filming) {
         char err[512];
-        if (film_open(&film, j->out, (int)info.width, (int)info.height,
+        if (film_open(&film, j->out, (int)info.width, (int)out_h,
                       o->fps ? o->fps : FILM_DEFAULT_FPS, err, sizeof err) != 0) {
             fprintf(stderr, "links1 render: %s\n", err);
             return -1;
         }
-        if (film_padded(film.kind, (int)info.width, (int)info.height))
+        if (film_padded(film.kind, (int)info.width, (int)out_h))
             printf("links1 render: %s: %ux%u padded to %ux%u (the film's yuv420p needs even "
-                   "sides)\n", j->out, info.width, info.height, (info.width + 1) & ~1u,
-                   (info.height + 1) & ~1u);
+                   "sides)\n", j->out, info.width, out_h, (info.width + 1) & ~1u,
+                   (out_h + 1) & ~1u);
     }
     for (long f = first; f <= last; f++) {
         char path[4096], err[SD_ERR_MAX];
@@ -749,6 +803,11 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         if (render_session_pull(b, (int)info.width, (int)info.height, &img, &pull_ms) != 0) {
             film_abort(&film);
             return -1;
+        }
+        if (a.rows) { /* the band's scanlines only */
+            memmove(img.rgb, img.rgb + (size_t)a.row0 * (size_t)img.width * 3,
+                    (size_t)a.rows * (size_t)img.width * 3);
+            img.height = a.rows;
         }
         long long t2 = board_now_ms();
         o->wall.pull += t2 - t1;

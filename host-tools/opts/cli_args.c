@@ -1,6 +1,7 @@
 /* cli_args.c: see cli_args.h. */
 #include "host-tools/opts/cli_args.h"
 
+#include <errno.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -20,6 +21,20 @@ int cli_parse_frames(const char *arg, long *first, long *last)
             return -1;
     }
     return *end ? -1 : 0;
+}
+
+int cli_parse_band(const char *arg, long *band, long *bands)
+{
+    char *end;
+    errno = 0;
+    *band = strtol(arg, &end, 10);
+    if (errno || end == arg || *end != '/' || *band < 0)
+        return -1;
+    const char *b = end + 1;
+    *bands = strtol(b, &end, 10);
+    if (errno || end == b || *end || *bands > 65535 || *band >= *bands)
+        return -1;
+    return 0;
 }
 
 int cli_parse_size(const char *arg, int *width, int *height)

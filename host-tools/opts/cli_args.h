@@ -6,6 +6,10 @@
  * Returns 0, or -1 when arg is not of that form. */
 int cli_parse_frames(const char *arg, long *first, long *last);
 
+/* "I/N" with 0 <= I < N <= 65535 (band I of N) into *band, *bands.
+ * Returns 0, or -1 when arg is not of that form. */
+int cli_parse_band(const char *arg, long *band, long *bands);
+
 /* "WxH" with 1 <= W <= RENDER_MAX_WIDTH and 1 <= H <= RENDER_MAX_HEIGHT
  * (the frame memory).  Returns 0, or -1 when arg is not of that form. */
 int cli_parse_size(const char *arg, int *width, int *height);

@@ -10,7 +10,7 @@
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
 CHECKS="farm_frame0 farm_frame1 farm_frame2 farm_summary farm_resume_one_job farm_resume_kept
-        farm_resume_frame1 farm_film farm_hostile_names farm_no_parallel farm_not_gnu_parallel farm_empty_hosts
+        farm_resume_frame1 farm_film farm_bands farm_rows_band farm_band_refused farm_hostile_names farm_no_parallel farm_not_gnu_parallel farm_empty_hosts
         farm_unreadable_hosts farm_dir_is_file farm_dir_not_yours"
 board_ready $CHECKS || exit 0
 if ! command -v parallel >/dev/null; then
@@ -53,6 +53,35 @@ if ffmpeg -v error -i "$T/farmed.apng" -f image2 -c:v ppm -pix_fmt rgb24 "$T/fil
     echo "PASS farm_film"
 else
     echo "FAIL farm_film: $T/farmed.apng: $(ls "$T/film" | wc -l) frames decoded, want the board's 3 in order"
+fi
+
+# one still frame in bands: 5 bands of frame 1 (24 scanlines: 4 or 5 each),
+# a job a band, stitched into DIR/frame-0001.ppm equal to the board's frame
+farm farm_bands_run scenes/anim.scn --frames 1:1 --bands 5 -o "$T/bands" --hosts "$T/hosts" \
+    --ext ppm -- --size $SIZE
+if cmp -s "$T/ref-0001.ppm" "$T/bands/frame-0001.ppm" && [ -z "$(ls "$T/bands" | grep '^band-')" ] &&
+    grep -q '5 bands stitched into' "$T/farm_bands_run.log"; then
+    echo "PASS farm_bands"
+else
+    echo "FAIL farm_bands: $T/bands/frame-0001.ppm is not the board's frame 1 (or bands left: $(ls "$T/bands" | tr '\n' ' '))"
+fi
+# a band by scanlines: the frame's rows 7..19, nothing else
+"$LINKS1" render scenes/anim.scn --frame 2 --size $SIZE --rows 7:19 -o "$T/rows.ppm" --quiet \
+    >"$T/rows.log" 2>&1
+w=${SIZE%x*}
+if [ "$(head -c 2 "$T/rows.ppm" 2>/dev/null)" = P6 ] && [ "$(sed -n 2p "$T/rows.ppm")" = "$w 13" ] &&
+    cmp -s <(tail -c $((w * 13 * 3)) "$T/rows.ppm") \
+        <(tail -c $((w * 24 * 3)) "$T/ref-0002.ppm" | tail -c +$((w * 7 * 3 + 1)) | head -c $((w * 13 * 3))); then
+    echo "PASS farm_rows_band"
+else
+    echo "FAIL farm_rows_band: render --rows 7:19 is not scanlines 7..19 of the board's frame 2: $(tail -n 1 "$T/rows.log")"
+fi
+# more bands than scanlines: refused, naming the frame's height
+if ! "$LINKS1" render scenes/anim.scn --size $SIZE --band 3/25 -o "$T/b.ppm" >"$T/band_bad.log" 2>&1 &&
+    grep -q -- '--band 3/25: 25 bands of a frame of 24 scanlines' "$T/band_bad.log" && [ ! -e "$T/b.ppm" ]; then
+    echo "PASS farm_band_refused"
+else
+    echo "FAIL farm_band_refused: $(tail -n 1 "$T/band_bad.log")"
 fi
 
 # hostile names: spaces, quotes and $ in the scene's path and in DIR

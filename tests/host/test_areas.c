@@ -369,6 +369,36 @@ static void test_mode_names_round_trip(void)
     CHECK(strcmp(areas_mode_name(AREAS_DECREASING), "decreasing") == 0);
 }
 
+/* A band: a schedule of rows scanlines moved down by y0 covers exactly
+ * scanlines y0 .. y0+rows-1 of the screen, in every mode, and hands out the
+ * areas of the unmoved schedule moved by y0. */
+static void test_band_origin(void)
+{
+    const uint32_t w = 37, h = 50, y0 = 13, rows = 21;
+    for (int m = 0; m < AREAS_MODES; m++) {
+        struct areas s, plain;
+        struct area a, b;
+        CHECK(areas_init(&s, (enum areas_mode)m, w, rows, 5, 64) == AREAS_OK);
+        CHECK(areas_init(&plain, (enum areas_mode)m, w, rows, 5, 64) == AREAS_OK);
+        areas_set_origin(&s, y0);
+        uint8_t seen[50][37] = {{0}};
+        int moved = 1;
+        while (areas_next(&s, &a)) {
+            moved &= areas_next(&plain, &b) && a.x == b.x && a.w == b.w && a.h == b.h &&
+                     a.y == b.y + y0;
+            for (uint32_t y = a.y; y < a.y + a.h && y < h; y++)
+                for (uint32_t x = a.x; x < a.x + a.w && x < w; x++)
+                    seen[y][x]++;
+        }
+        CHECK(moved && areas_next(&plain, &b) == 0);
+        int exact = 1;
+        for (uint32_t y = 0; y < h; y++)
+            for (uint32_t x = 0; x < w; x++)
+                exact &= seen[y][x] == (y >= y0 && y < y0 + rows);
+        CHECK(exact);
+    }
+}
+
 int main(void)
 {
     RUN(test_static_covers_one_area_per_nc);
@@ -384,5 +414,6 @@ int main(void)
     RUN(test_decreasing_defaults_by_ncs);
     RUN(test_lines_are_scanlines);
     RUN(test_mode_names_round_trip);
+    RUN(test_band_origin);
     return check_exit();
 }

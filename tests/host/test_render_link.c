@@ -36,7 +36,7 @@ static void render_link_args_round_trip(void)
 {
     struct link_render_args a = {.frame = 7, .balance = LINK_BALANCE_DECREASING,
                                  .flags = LINK_RENDER_NO_XCLIP | LINK_RENDER_ASK_WHEN_DONE,
-                                 .guided = 5, .areas = 1024};
+                                 .guided = 5, .areas = 1024, .row0 = 300, .rows = 180};
     uint8_t buf[LINK_RENDER_ARGS_SIZE];
     link_render_args_put(buf, &a);
     struct link_render_args b;
@@ -46,6 +46,9 @@ static void render_link_args_round_trip(void)
     CHECK_EQ_INT(b.flags, LINK_RENDER_NO_XCLIP | LINK_RENDER_ASK_WHEN_DONE);
     CHECK_EQ_INT(b.guided, 5);
     CHECK_EQ_INT(b.areas, 1024);
+    CHECK_EQ_INT(b.row0, 300);
+    CHECK_EQ_INT(b.rows, 180);
+    CHECK_EQ_INT(wire_get_u16(buf + 14), 180); /* the band last */
     CHECK_EQ_INT(buf[7], 0); /* the reserved byte is zero */
 }
 
