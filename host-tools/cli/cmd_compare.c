@@ -14,17 +14,25 @@ static int compare_usage(FILE *out)
 {
     fprintf(out, "usage: links1 compare A.png B.png [--within K] [--min-fraction F] "
                     "[--silhouette [--max-masked F]] [--moved] [--flagged]\n"
+                    "       links1 compare REF.png PLAIN.png --flags MARKED.png [--within K]\n"
+                    "         [--min-precision P] [--min-recall R]\n"
                     "  exit 0 when at least F (default 0.99) of the compared pixels have every\n"
                     "  channel within K/255 (default 1); --silhouette leaves out the pixels\n"
                     "  next to an edge of A, and fails if more than F of all pixels are left out;\n"
                     "  --moved leaves out the pixels of B within K of a pixel next to them in A\n"
                     "  (an edge or a thin object moved by less than a pixel);\n"
-                    "  --flagged leaves out the pixels of B painted the --mark-lost colour\n");
+                    "  --flagged leaves out the pixels of B painted the --mark-lost colour;\n"
+                    "  --flags scores the flags of MARKED (PLAIN rendered with --mark-lost)\n"
+                    "  against the pixels of PLAIN beyond K/255 (default 2) of REF: precision,\n"
+                    "  the share of flagged pixels beyond; recall, the share of pixels beyond\n"
+                    "  that were flagged, leaving out those next to an edge of REF or moved;\n"
+                    "  exit 0 when precision >= P (default 0) and recall >= R (default 1)\n");
     return out == stdout ? 0 : 2;
 }
 
 enum { COMPARE_OPT_WITHIN = CLI_OWN_CODES, COMPARE_OPT_MIN_FRACTION, COMPARE_OPT_MAX_MASKED,
-       COMPARE_OPT_SILHOUETTE, COMPARE_OPT_FLAGGED, COMPARE_OPT_MOVED };
+       COMPARE_OPT_SILHOUETTE, COMPARE_OPT_FLAGGED, COMPARE_OPT_MOVED,
+       COMPARE_OPT_FLAGS, COMPARE_OPT_MIN_PRECISION, COMPARE_OPT_MIN_RECALL };
 
 static const struct option compare_options[] = {
     {"within", required_argument, NULL, COMPARE_OPT_WITHIN},
@@ -33,6 +41,9 @@ static const struct option compare_options[] = {
     {"silhouette", no_argument, NULL, COMPARE_OPT_SILHOUETTE},
     {"flagged", no_argument, NULL, COMPARE_OPT_FLAGGED},
     {"moved", no_argument, NULL, COMPARE_OPT_MOVED},
+    {"flags", required_argument, NULL, COMPARE_OPT_FLAGS},
+    {"min-precision", required_argument, NULL, COMPARE_OPT_MIN_PRECISION},
+    {"min-recall", required_argument, NULL, COMPARE_OPT_MIN_RECALL},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -64,8 +75,57 @@ static void compare_print(const char *pa, const char *pb, const struct image *a,
         printf("; %ld pixels flagged (the --mark-lost colour in B), left out\n", r->flagged);
 }
 
+/* Reads path into img; 0, or 2 after saying why. */
+static int compare_read(const char *path, struct image *img)
+{
+    char err[512];
+    if (image_read(path, img, err, sizeof err) == 0)
+        return 0;
+    fprintf(stderr, "links1 compare: %s\n", err);
+    return 2;
+}
+
+/* --flags: how well MARKED's flags pick out PLAIN's pixels beyond K of REF. */
+static int compare_flags(const char *pref, const char *pplain, const char *pmarked, int within,
+                         double min_precision, double min_recall)
+{
+    struct image img[3];
+    const char *path[3] = {pref, pplain, pmarked};
+    int n = 0, rc = 0;
+    for (; n < 3; n++) {
+        if (compare_read(path[n], &img[n]) != 0) {
+            rc = 2;
+            break;
+        }
+        if (n > 0 && (img[n].width != img[0].width || img[n].height != img[0].height)) {
+            fprintf(stderr, "links1 compare: %s is %dx%d but %s is %dx%d\n", path[0],
+                    img[0].width, img[0].height, path[n], img[n].width, img[n].height);
+            n++;
+            rc = 2;
+            break;
+        }
+    }
+    if (rc == 0) {
+        struct image_flag_score s;
+        image_flag_score(&img[0], &img[1], &img[2], within, &s);
+        double p = image_flag_precision(&s), r = image_flag_recall(&s);
+        printf("flags %s: %ld of %ld pixels flagged, %ld beyond %d/255 of %s; "
+               "%ld flagged and beyond (precision %.2f%%); %ld beyond and not flagged, "
+               "%ld of them next to an edge or moved (recall %.2f%%)\n",
+               pmarked, s.flagged, s.pixels, s.beyond, within, pref, s.flagged_beyond,
+               100.0 * p, s.missed, s.missed_explained, 100.0 * r);
+        rc = p >= min_precision && r >= min_recall ? 0 : 1;
+    }
+    while (n-- > 0)
+        image_free(&img[n]);
+    return rc;
+}
+
 int scene_cmd_compare(int argc, char **argv)
 {
+    const char *pmarked = NULL;
+    double min_precision = 0, min_recall = 1;
+    int within_given = 0;
     const char *pa = NULL, *pb = NULL;
     struct image_compare_opts o = {.within = 1};
     double min_fraction = 0.99, max_masked = 1.0;
@@ -78,6 +138,13 @@ int scene_cmd_compare(int argc, char **argv)
             return 0;
         } else if (code == COMPARE_OPT_WITHIN) {
             bad = cli_int(&c, 0, 255, &o.within);
+            within_given = 1;
+        } else if (code == COMPARE_OPT_FLAGS) {
+            pmarked = c.arg;
+        } else if (code == COMPARE_OPT_MIN_PRECISION) {
+            bad = cli_double(&c, 0, 0, 1, NULL, &min_precision);
+        } else if (code == COMPARE_OPT_MIN_RECALL) {
+            bad = cli_double(&c, 0, 0, 1, NULL, &min_recall);
         } else if (code == COMPARE_OPT_MIN_FRACTION) {
             bad = cli_double(&c, 0, 0, 1, NULL, &min_fraction);
         } else if (code == COMPARE_OPT_MAX_MASKED) {
@@ -102,6 +169,9 @@ int scene_cmd_compare(int argc, char **argv)
         fprintf(stderr, "links1 compare: name two images\n");
         return compare_usage(stderr);
     }
+    if (pmarked)
+        return compare_flags(pa, pb, pmarked, within_given ? o.within : 2, min_precision,
+                             min_recall);
     struct image a, b;
     char err[512];
     if (image_read(pa, &a, err, sizeof err) != 0) {

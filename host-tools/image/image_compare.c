@@ -128,3 +128,40 @@ void image_error_flagged(const struct image *ref, const struct image *img,
     *flagged_psnr = image_psnr(sq_flagged, nf);
     *flagged = nf;
 }
+
+void image_flag_score(const struct image *ref, const struct image *img,
+                      const struct image *marked, int within, struct image_flag_score *s)
+{
+    memset(s, 0, sizeof *s);
+    for (int y = 0; y < ref->height; y++) {
+        for (int x = 0; x < ref->width; x++) {
+            long i = (long)y * ref->width + x;
+            const uint8_t *pa = image_px(ref, x, y), *pb = image_px(img, x, y);
+            int beyond = 0;
+            for (int k = 0; k < 3; k++)
+                if (abs((int)pa[k] - (int)pb[k]) > within)
+                    beyond = 1;
+            int flagged = image_pixel_flagged(marked, i);
+            s->pixels++;
+            s->flagged += flagged;
+            s->beyond += beyond;
+            s->flagged_beyond += flagged && beyond;
+            if (beyond && !flagged) {
+                s->missed++;
+                if (image_is_edge(ref, x, y) || image_is_moved(ref, pb, x, y, within))
+                    s->missed_explained++;
+            }
+        }
+    }
+}
+
+double image_flag_precision(const struct image_flag_score *s)
+{
+    return s->flagged ? (double)s->flagged_beyond / (double)s->flagged : 1.0;
+}
+
+double image_flag_recall(const struct image_flag_score *s)
+{
+    long want = s->flagged_beyond + s->missed - s->missed_explained;
+    return want ? (double)s->flagged_beyond / (double)want : 1.0;
+}

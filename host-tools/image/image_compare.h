@@ -57,4 +57,26 @@ void image_error_flagged(const struct image *ref, const struct image *img,
                          const struct image *marked, double *all, double *flagged_psnr,
                          long *flagged);
 
+/* How well the flags of a --mark-lost render (marked) pick out the pixels
+ * of img (the same render, plain) beyond `within` of ref (the double
+ * build), on some channel.  A pixel beyond and not flagged is `explained`
+ * when it lies next to an edge of ref or is within `within` of a pixel
+ * next to it there (image_compare's --silhouette and --moved: an edge
+ * moved by under a pixel).  Precision: flagged_beyond / flagged; recall:
+ * the pixels beyond, less those explained, that were flagged. */
+struct image_flag_score {
+    long pixels, flagged, beyond, flagged_beyond;
+    long missed;           /* beyond, not flagged */
+    long missed_explained; /* ... of which next to an edge or moved */
+};
+
+void image_flag_score(const struct image *ref, const struct image *img,
+                      const struct image *marked, int within, struct image_flag_score *s);
+
+/* flagged_beyond / flagged (1 when nothing is flagged) and
+ * flagged_beyond / (flagged_beyond + unexplained misses) (1 when there is
+ * nothing to find). */
+double image_flag_precision(const struct image_flag_score *s);
+double image_flag_recall(const struct image_flag_score *s);
+
 #endif
