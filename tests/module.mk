@@ -52,6 +52,11 @@ BENCHES += tests/bench/bench_link_noise.sh
 # Issue 20: the DM's and the RC's instructions per triangle of a frame.
 BENCHES += tests/bench/bench_board_scale.sh
 
+# links1 compare --flags: precision and recall of a render's flags.
+HOST_TESTS += test_image_flags
+test_image_flags_SRCS := tests/host/test_image_flags.c host-tools/image/image_compare.c
+test_image_flags_ARITH := double
+
 # Encodings of the rendering commands and the NC statistics the RC sums.
 HOST_TESTS += test_render_link
 test_render_link_SRCS := tests/host/test_render_link.c host-tools/gigs/render_faults.c
