@@ -10,76 +10,25 @@
 # board's.  Needs root (sshd) and openssh-server, parallel and rsync.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
-CHECKS="farm_hosts_both_used farm_hosts_frames farm_hosts_killed_mid_frame
+. "$(dirname "$0")/farm_sshd.sh"
+CHECKS="farm_hosts_both_used farm_hosts_frames farm_hosts_bands farm_hosts_killed_mid_frame
         farm_hosts_kill_frames farm_hosts_kill_summary"
 board_ready $CHECKS || exit 0
-why=""
-[ "$(id -u)" -eq 0 ] || why="the throw-away sshd needs root"
-for t in parallel rsync ssh ssh-keygen /usr/sbin/sshd; do
-    [ -n "$why" ] || command -v $t >/dev/null || why="$t is not installed (install-deps.sh)"
-done
+why=$(farm_sshd_why)
 if [ -n "$why" ]; then
     for c in $CHECKS; do echo "FAIL $c: $why"; done
     exit 0
 fi
 SIZE=48x36
 T=$RENDER_TMP
-S=$T/ssh
-mkdir -p "$S" /run/sshd
-chmod 700 "$S"
-port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
-ssh-keygen -q -t ed25519 -N '' -f "$S/hostkey"
-ssh-keygen -q -t ed25519 -N '' -f "$S/userkey"
-cp "$S/userkey.pub" "$S/authorized_keys"
-chmod 600 "$S/authorized_keys"
-cat >"$S/sshd_config" <<EOF
-Port $port
-ListenAddress 127.0.0.1
-HostKey $S/hostkey
-AuthorizedKeysFile $S/authorized_keys
-PasswordAuthentication no
-PermitRootLogin prohibit-password
-StrictModes no
-UsePAM no
-PidFile $S/sshd.pid
-EOF
-cat >"$S/client_config" <<EOF
-Host fakehost
-  HostName 127.0.0.1
-  Port $port
-  IdentityFile $S/userkey
-  StrictHostKeyChecking no
-  UserKnownHostsFile /dev/null
-  LogLevel ERROR
-  BatchMode yes
-EOF
-export PARALLEL_SSH="ssh -F $S/client_config"
 printf ':\nfakehost\n' >"$T/hosts"
-
-sshd_pid=""
-start_sshd() {
-    rm -f "$S/sshd.pid"
-    /usr/sbin/sshd -f "$S/sshd_config" -E "$S/sshd.log"
-    for _ in $(seq 50); do [ -s "$S/sshd.pid" ] && break; sleep 0.1; done
-    sshd_pid=$(cat "$S/sshd.pid" 2>/dev/null)
-}
-# tree PID: PID and every process under it
-tree() {
-    local p=$1 c
-    echo "$p"
-    for c in $(ps -o pid= --ppid "$p" 2>/dev/null); do tree "$c"; done
-}
-stop_sshd() {
-    [ -n "$sshd_pid" ] && kill -9 $(tree "$sshd_pid") 2>/dev/null
-    sshd_pid=""
-}
-trap 'stop_sshd; rm -rf "$RENDER_TMP"' EXIT
-start_sshd
-if [ -z "$sshd_pid" ] || ! $PARALLEL_SSH fakehost true; then
-    cat "$S/sshd.log" 2>/dev/null
-    for c in $CHECKS; do echo "FAIL $c: the throw-away sshd on port $port did not answer"; done
+trap 'farm_sshd_stop; rm -rf "$RENDER_TMP"' EXIT
+if ! farm_sshd_start "$T/ssh" >"$T/sshd_start.log" 2>&1; then
+    cat "$T/sshd_start.log"
+    for c in $CHECKS; do echo "FAIL $c: $(tail -n 1 "$T/sshd_start.log")"; done
     exit 0
 fi
+sshd_pid=$farm_sshd_pid
 render_board farm_hosts_ref "$T/ref.ppm" scenes/anim.scn -o "$T/ref.ppm" --size $SIZE \
     --frames 0:3 || exit 0
 
@@ -105,6 +54,15 @@ else
 fi
 frames_same farm_hosts_frames "$H/both \"d\""
 
+# bands of one still frame on both hosts, stitched: the board's frame 1
+farm farm_hosts_bands_run scenes/anim.scn --frames 1:1 --bands 6 -o "$T/bands" --hosts "$T/hosts" \
+    --ext ppm -- --size $SIZE
+if cmp -s "$T/ref-0001.ppm" "$T/bands/frame-0001.ppm"; then
+    echo "PASS farm_hosts_bands ($(tail -n +2 "$T/bands/farm-joblog.tsv" | awk -F'\t' '{ print $2 }' | sort | uniq -c | tr -s ' \n' ' '))"
+else
+    echo "FAIL farm_hosts_bands: 6 bands over both hosts did not stitch into the board's frame 1"
+fi
+
 # 2. the ssh host killed while it renders a frame
 # job_under_sshd: the comm of a job's process (links1 or its QEMU) somewhere
 # under the sshd, if there is one
@@ -123,7 +81,7 @@ killer() {
     for _ in $(seq 1200); do
         seen=$(job_under_sshd)
         if [ -n "$seen" ]; then
-            stop_sshd
+            farm_sshd_stop
             echo "killed while $seen ran" >"$T/killed"
             return
         fi
@@ -141,7 +99,7 @@ if [ -e "$T/killed" ]; then
 else
     echo "FAIL farm_hosts_killed_mid_frame: the ssh host never ran a job to be killed in"
 fi
-[ -e "$T/killed" ] && sshd_pid="" # killed in the killer's subshell
+[ -e "$T/killed" ] && farm_sshd_pid="" # killed in the killer's subshell
 frames_same farm_hosts_kill_frames "$T/kill"
 if [ $rc -eq 0 ] && grep -q '4 frame(s) rendered now, 0 kept from before, 0 missing' "$T/farm_hosts_kill.log"; then
     echo "PASS farm_hosts_kill_summary"
