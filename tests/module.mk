@@ -46,6 +46,8 @@ BENCHES += tests/bench/bench_faults.sh tests/bench/bench_soak.sh
 BENCHES += tests/bench/bench_big.sh tests/bench/bench_an521.sh
 # The DM's preparation hidden behind the NCs' rendering (an animation, traced frame by frame).
 BENCHES += tests/bench/bench_pipeline.sh
+# links1 farm's own cost, one host against two, and the model of H hosts (wall time).
+BENCHES += tests/bench/bench_farm.sh
 # The board cost model --arith auto does not use: work counts against NC instructions.
 BENCHES += tests/bench/arith_cost_fit.sh
 BENCHES += tests/bench/bench_link_noise.sh
