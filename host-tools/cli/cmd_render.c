@@ -500,10 +500,18 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
     if (render_auto_check(o) != 0)
         return -1;
     o->scene.machine = o->board.machine; /* the scene is checked against its limits */
-    if (o->board_name && o->board.machine != MACHINE_VIRT) {
-        fprintf(stderr, "links1 render: --board %s is a named virt board; --machine %s starts "
-                "its own boards\n", o->board_name, machine_limits(o->board.machine)->name);
-        return -1;
+    if (o->board_name) {
+        /* The named board's machine: the scene is checked against its limits. */
+        int m = board_named_machine(o->board_name);
+        if (m < 0)
+            return -1;
+        if (o->board.machine != MACHINE_VIRT && o->board.machine != m) {
+            fprintf(stderr, "links1 render: --machine %s, but board %s is a %s board\n",
+                    machine_limits(o->board.machine)->name, o->board_name,
+                    machine_limits(m)->name);
+            return -1;
+        }
+        o->board.machine = o->scene.machine = m;
     }
     if (o->resume && !o->many) {
         fprintf(stderr, "links1 render: --resume goes with --frames A:B\n");
