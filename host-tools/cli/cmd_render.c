@@ -123,6 +123,9 @@ static void render_usage(FILE *out)
             "  --view           show the frame memory live (-device ramfb, a display)\n"
             "  --ppm            write PPM (also chosen by an OUT ending in .ppm)\n"
             "  --count-insns    count guest instructions per core and print them\n"
+            "  --insn-profile FILE  the NCs' guest instructions per translated block,\n"
+            "                   \"ADDR COUNT\" lines into FILE (attribute them to the\n"
+            "                   firmware's functions: tests/bench/bench_insn_funcs.sh)\n"
             "  --inject-faults K[:SEED]  test hook: K random NCs (fewer than --ncs) fail at\n"
             "                   random points of the first frame; the frame still completes\n"
             "  --inject-kind KIND  undef, abort, hang, silent or mixed (default mixed)\n"
@@ -166,6 +169,7 @@ enum render_opt_code {
     RENDER_OPT_VIEW,
     RENDER_OPT_PPM,
     RENDER_OPT_COUNT_INSNS,
+    RENDER_OPT_INSN_PROFILE,
     RENDER_OPT_BOARD,
     RENDER_OPT_INJECT_FAULTS,
     RENDER_OPT_INJECT_KIND,
@@ -204,6 +208,7 @@ static const struct option render_options[] = {
     {"view", no_argument, NULL, RENDER_OPT_VIEW},
     {"ppm", no_argument, NULL, RENDER_OPT_PPM},
     {"count-insns", no_argument, NULL, RENDER_OPT_COUNT_INSNS},
+    {"insn-profile", required_argument, NULL, RENDER_OPT_INSN_PROFILE},
     {"board", required_argument, NULL, RENDER_OPT_BOARD},
     {"inject-faults", required_argument, NULL, RENDER_OPT_INJECT_FAULTS},
     {"inject-kind", required_argument, NULL, RENDER_OPT_INJECT_KIND},
@@ -350,6 +355,9 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
     case RENDER_OPT_COUNT_INSNS:
         o->count_insns = 1;
         return 0;
+    case RENDER_OPT_INSN_PROFILE:
+        o->board.insn_profile_out = c->arg;
+        return 0;
     case RENDER_OPT_BOARD:
         o->board_name = c->arg;
         return 0;
@@ -472,9 +480,10 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
         render_usage(stderr);
         return -1;
     }
-    if (o->board_name && (o->count_insns || o->board.view || o->board.link_noise_on)) {
-        fprintf(stderr, "links1 render: --count-insns, --view and --link-noise need a board of this "
-                "command's own, not --board %s\n", o->board_name);
+    if (o->board_name && (o->count_insns || o->board.insn_profile_out || o->board.view ||
+                          o->board.link_noise_on)) {
+        fprintf(stderr, "links1 render: --count-insns, --insn-profile, --view and --link-noise "
+                "need a board of this command's own, not --board %s\n", o->board_name);
         return -1;
     }
     int films = 0;

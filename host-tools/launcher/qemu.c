@@ -82,7 +82,8 @@ static void board_qemu_exec_failed(const char *qemu)
 static int board_plugin_arg(const struct board *b, int board, char *out, size_t cap)
 {
     const struct board_opts *o = &b->opts;
-    if (!o->insn_count_out && !o->insn_series_out && !o->insn_trace_out)
+    if (!o->insn_count_out && !o->insn_series_out && !o->insn_trace_out &&
+        !o->insn_profile_out)
         return 0;
     const char *so = getenv("LINKS1_INSN_PLUGIN");
     char self[PATH_MAX], file[PATH_MAX + 16];
@@ -103,6 +104,11 @@ static int board_plugin_arg(const struct board *b, int board, char *out, size_t 
     if (o->insn_trace_out) {
         board_an521_file(o->insn_trace_out, board, file, sizeof file);
         n += (size_t)snprintf(out + n, n < cap ? cap - n : 0, ",trace=%s", file);
+    }
+    if (o->insn_profile_out) { /* the NCs only: an an521 NC board's every vCPU */
+        board_an521_file(o->insn_profile_out, board, file, sizeof file);
+        n += (size_t)snprintf(out + n, n < cap ? cap - n : 0, ",profile=%s,profile_from=%d",
+                              file, board == 0 ? UNITS_FIRST_NC : 0);
     }
     return 1;
 }
@@ -553,7 +559,8 @@ static int board_nc_board_reap(struct board *b, int k, int timeout_ms)
 
 /* Appends what NC board k's plugin wrote at path.bK to path, its cores
  * renumbered as the machine's (2k, 2k + 1), and removes it.  The lines are
- * the plugin's: "vcpu V COUNT" (counts) or "V KIND COUNT" (trace marks);
+ * the plugin's: "vcpu V COUNT" (counts 1), "V KIND COUNT" (trace marks,
+ * counts 0) or "ADDR COUNT" (the profile, counts 2);
  * one that does not parse, or names a vCPU the board does not have, is
  * dropped and said. */
 static void board_merge_counts(const char *path, int k, int counts)
@@ -569,10 +576,16 @@ static void board_merge_counts(const char *path, int k, int counts)
         unsigned v, kind;
         unsigned long long c;
         char end;
-        if (counts && sscanf(line, "vcpu %u %llu%c", &v, &c, &end) == 3 && end == '\n' &&
-            v < AN521_CORES_PER_BOARD)
+        unsigned long long addr;
+        if (counts == 2 && strcmp(line, "oom\n") == 0)
+            fputs(line, out); /* the reader refuses the profile */
+        else if (counts == 2 && sscanf(line, "%llx %llu%c", &addr, &c, &end) == 3 &&
+                 end == '\n')
+            fprintf(out, "%08llx %llu\n", addr, c); /* the same image on every board */
+        else if (counts == 1 && sscanf(line, "vcpu %u %llu%c", &v, &c, &end) == 3 &&
+                 end == '\n' && v < AN521_CORES_PER_BOARD)
             fprintf(out, "vcpu %d %llu\n", k * AN521_CORES_PER_BOARD + (int)v, c);
-        else if (!counts && sscanf(line, "%u %u %llu%c", &v, &kind, &c, &end) == 4 &&
+        else if (counts == 0 && sscanf(line, "%u %u %llu%c", &v, &kind, &c, &end) == 4 &&
                  end == '\n' && v < AN521_CORES_PER_BOARD)
             fprintf(out, "%d %u %llu\n", k * AN521_CORES_PER_BOARD + (int)v, kind, c);
         else
@@ -580,7 +593,8 @@ static void board_merge_counts(const char *path, int k, int counts)
     }
     if (bad)
         fprintf(stderr, "links1: %u line(s) of an521 board %d's %s dropped: not the "
-                "plugin's\n", bad, k, counts ? "instruction counts" : "trace marks");
+                "plugin's\n", bad, k, counts == 2 ? "profile" : counts ? "instruction counts"
+                                                                   : "trace marks");
     if (out)
         fclose(out);
     fclose(in);
@@ -595,7 +609,7 @@ static void board_merge_counts(const char *path, int k, int counts)
 static void board_stop_nc_boards(struct board *b)
 {
     const struct board_opts *o = &b->opts;
-    int counting = o->insn_count_out || o->insn_trace_out;
+    int counting = o->insn_count_out || o->insn_trace_out || o->insn_profile_out;
     int any = 0;
     for (int k = 1; k < AN521_MAX_BOARDS; k++) {
         if (b->nc_board_pid[k]) {
@@ -614,6 +628,8 @@ static void board_stop_nc_boards(struct board *b)
             board_merge_counts(o->insn_count_out, k, 1);
         if (o->insn_trace_out)
             board_merge_counts(o->insn_trace_out, k, 0);
+        if (o->insn_profile_out)
+            board_merge_counts(o->insn_profile_out, k, 2);
     }
 }
 
