@@ -433,6 +433,7 @@ static int render_auto_pick(struct render_opts *o)
         .fpu = o->fpu < 0 ? 1 : o->fpu,
         .target_db = o->target_db < 0 ? ARITH_AUTO_TARGET_DB : o->target_db,
         .target = ARITH_AUTO_BOARD,
+        .machine = o->board.machine,
         .width = o->scene.width,
         .height = o->scene.height,
         .words = w.words,

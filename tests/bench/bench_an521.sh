@@ -19,6 +19,8 @@
 #     one: the one-way median at the emulated NCs' measured speed (the
 #     NCs' instructions over their render time in that trace's run) is that
 #     many instructions; at the replay's 1 MIPS, that many microseconds.
+#   - where fixed point's instructions go on each machine, function by
+#     function (tests/bench/bench_insn_funcs.sh fixed 12).
 # One run each (the virt board's instruction counts repeat exactly; the
 # an521 NCs' vary by the ticks they take while they wait; wall times vary).
 # Writes a Markdown table to stdout (and BENCH_AN521_OUT if set).
@@ -101,4 +103,6 @@ speedup() { # REPLAY NCS
     for n in 1 8 64; do
         echo "| $n | $(speedup virt-default $n)x | $(speedup virt $n)x | $(speedup an521-default $n)x | $(speedup an521 $n)x |"
     done
+    echo
+    bash tests/bench/bench_insn_funcs.sh fixed 12
 } | tee "${BENCH_AN521_OUT:-/dev/null}"
