@@ -193,6 +193,24 @@ void link_count_result_get(const uint8_t *p, struct link_count_result *r)
     r->total = wire_get_u32(p + 4);
 }
 
+void link_latency_result_put(uint8_t *p, const struct link_latency_result *r)
+{
+    wire_put_u32(p, r->rounds);
+    wire_put_u32(p + 4, r->freq);
+    wire_put_u32(p + 8, r->min);
+    wire_put_u32(p + 12, r->median);
+    wire_put_u32(p + 16, r->max);
+}
+
+void link_latency_result_get(const uint8_t *p, struct link_latency_result *r)
+{
+    r->rounds = wire_get_u32(p);
+    r->freq = wire_get_u32(p + 4);
+    r->min = wire_get_u32(p + 8);
+    r->median = wire_get_u32(p + 12);
+    r->max = wire_get_u32(p + 16);
+}
+
 void link_stress_result_put(uint8_t *p, const struct link_stress_result *r)
 {
     wire_put_u64(p, r->bytes);

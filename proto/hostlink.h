@@ -70,6 +70,9 @@ enum link_cmd {
                           * it renders -> struct link_render_stats */
     CMD_FRAME_PULL = 11, /* board sends the frame memory as one DATA transfer
                           * (rows of r,g,b bytes) -> u16 width, u16 height, u32 crc */
+    CMD_LINE_LATENCY = 12, /* u32 rounds, u16 core: that many MSG_PING round trips, one
+                            * after another, on core's line (core 1: DM<->RC; an NC:
+                            * RC<->NC), each timed -> struct link_latency_result */
 };
 /* CMD_LINK_SINK, CMD_LINK_SOURCE, CMD_SCENE_LOAD and CMD_FRAME_PULL take one
  * more optional u8 after their arguments: the path of their bulk bytes
@@ -251,6 +254,18 @@ void link_status_result_put(uint8_t *p, const struct link_status_result *r);
 void link_status_result_get(const uint8_t *p, struct link_status_result *r);
 void link_count_result_put(uint8_t *p, const struct link_count_result *r);
 void link_count_result_get(const uint8_t *p, struct link_count_result *r);
+/* CMD_LINE_LATENCY: its arguments, the most rounds it takes, and its
+ * result: u32 rounds, u32 ticks per second of the counter that timed them,
+ * then the round trips' u32 min, median and max in those ticks. */
+#define LINK_LATENCY_ARGS_SIZE 6
+#define LINK_LATENCY_MAX_ROUNDS 1000u
+#define LINK_LATENCY_RESULT_SIZE 20
+struct link_latency_result {
+    uint32_t rounds, freq, min, median, max;
+};
+void link_latency_result_put(uint8_t *p, const struct link_latency_result *r);
+void link_latency_result_get(const uint8_t *p, struct link_latency_result *r);
+
 void link_stress_result_put(uint8_t *p, const struct link_stress_result *r);
 void link_stress_result_get(const uint8_t *p, struct link_stress_result *r);
 void link_transfer_result_put(uint8_t *p, const struct link_transfer_result *r);

@@ -55,6 +55,11 @@ enum unit_msg {
     MSG_NC_DONE = 26,        /* NC->RC: i32 areas finished in the frame: an NC
                               * that asked ahead finished its area before the
                               * answer came (no new request) */
+    MSG_LATENCY = 27,        /* DM->RC: u32 rounds, u16 core: time that many ping
+                              * round trips to NC core -> MSG_LATENCY_DONE */
+    MSG_LATENCY_DONE = 28,   /* RC->DM: i32 status (0, or the line error of the
+                              * round that failed), u32 rounds done, then u32 min,
+                              * median, max round trip in ktime ticks */
 };
 
 /* MSG_NC_AREA's payload: four u16 (areas.h: sides <= AREAS_MAX_DIM), half

@@ -266,6 +266,7 @@ static void dm_command(void)
     switch (cmd) {
     case CMD_STATUS: dm_cmd_status(cmd); break;
     case CMD_LINE_PING: dm_cmd_line_ping(cmd); break;
+    case CMD_LINE_LATENCY: dm_cmd_line_latency(cmd); break;
     case CMD_IMSU_TEST: dm_cmd_imsu_test(cmd); break;
     case CMD_LINE_STRESS: dm_cmd_line_stress(cmd); break;
     case CMD_LINK_SINK: dm_cmd_link_sink(cmd); break;

@@ -60,6 +60,7 @@ uint32_t dm_bulk_send(const void *buf, uint32_t len);
 
 /* Command handlers: each answers with one LINK_RESULT. */
 void dm_cmd_line_ping(uint16_t cmd);
+void dm_cmd_line_latency(uint16_t cmd);
 void dm_cmd_imsu_test(uint16_t cmd);
 void dm_cmd_line_stress(uint16_t cmd);
 void dm_cmd_link_sink(uint16_t cmd);

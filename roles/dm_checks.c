@@ -1,5 +1,6 @@
 /* dm_checks.c: the DM's side of the bring-up checks over the serial lines
- * and the IMSUs (CMD_LINE_PING, CMD_IMSU_TEST, CMD_LINE_STRESS). */
+ * and the IMSUs (CMD_LINE_PING, CMD_LINE_LATENCY, CMD_IMSU_TEST,
+ * CMD_LINE_STRESS). */
 #include <stdint.h>
 
 #include "drivers/imsu/imsu.h"
@@ -53,6 +54,57 @@ void dm_cmd_line_ping(uint16_t cmd)
         return;
     }
     dm_count_result(cmd, ok, total);
+}
+
+/* Timed round trips on one line: the DM's own with the RC (core 1), or the
+ * RC's with an NC, asked of the RC. */
+void dm_cmd_line_latency(uint16_t cmd)
+{
+    if (dm_frame.length < LINK_CMD_FIXED_SIZE + LINK_LATENCY_ARGS_SIZE) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_LINE_LATENCY needs u32 rounds, u16 core "
+                       "(%u bytes), got %u", (unsigned)LINK_LATENCY_ARGS_SIZE,
+                       (unsigned)(dm_frame.length - LINK_CMD_FIXED_SIZE));
+        return;
+    }
+    uint32_t rounds = wire_get_u32(dm_frame.payload + LINK_CMD_FIXED_SIZE);
+    uint16_t core = wire_get_u16(dm_frame.payload + LINK_CMD_FIXED_SIZE + 4);
+    if (rounds == 0 || rounds > LINK_LATENCY_MAX_ROUNDS || core == UNITS_DM_CORE ||
+        core >= board_ncores || unit_is_halted(core)) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS, "CMD_LINE_LATENCY: %u rounds (1..%u) to core "
+                       "%u (the RC, or a running NC of the %u cores)", (unsigned)rounds,
+                       (unsigned)LINK_LATENCY_MAX_ROUNDS, (unsigned)core,
+                       (unsigned)board_ncores);
+        return;
+    }
+    struct line_msg *m = &dm_msg;
+    uint32_t done = 0, mmm[3] = {0, 0, 0};
+    int r;
+    if (core == UNITS_RC_CORE) {
+        r = selftest_latency(UNITS_RC_CORE, rounds, m, &done, mmm);
+    } else {
+        selftest_msg_set(m, MSG_LATENCY, 6);
+        wire_put_u32(m->payload, rounds);
+        wire_put_u16(m->payload + 4, core);
+        r = dm_rc_request(m, MSG_LATENCY_DONE, REPLY_TIMEOUT_MS + rounds * PING_TIMEOUT_MS);
+        if (r == LINE_OK && m->len < 20)
+            r = LINE_ERR_CHECK;
+        if (r == LINE_OK) {
+            r = (int32_t)wire_get_u32(m->payload);
+            done = wire_get_u32(m->payload + 4);
+            for (int i = 0; i < 3; i++)
+                mmm[i] = wire_get_u32(m->payload + 8 + 4 * i);
+        }
+    }
+    if (r != LINE_OK) {
+        hostlink_error(cmd, LINK_ERR_TIMEOUT, "line %s<->core %u: round %u of %u failed (%s)",
+                       core == UNITS_RC_CORE ? "DM" : "RC", (unsigned)core,
+                       (unsigned)done + 1, (unsigned)rounds, line_strerror(r));
+        return;
+    }
+    struct link_latency_result res = {rounds, ktime_freq(), mmm[0], mmm[1], mmm[2]};
+    uint8_t f[LINK_LATENCY_RESULT_SIZE];
+    link_latency_result_put(f, &res);
+    hostlink_result(cmd, LINK_OK, f, sizeof f);
 }
 
 /* IMSU pair both ways (with misuse checks), then the broadcast block. */

@@ -48,6 +48,22 @@ static void rc_ping_ncs(struct line_msg *m)
     rc_send(UNITS_DM_CORE, m);
 }
 
+/* The DM asks for timed round trips with one NC (MSG_LATENCY). */
+static void rc_latency(struct line_msg *m)
+{
+    uint32_t rounds = wire_get_u32(m->payload);
+    uint32_t core = wire_get_u16(m->payload + 4), done = 0, mmm[3] = {0, 0, 0};
+    int r = m->len < 6 || core < UNITS_FIRST_NC || core >= board_ncores
+                ? LINE_ERR_NO_LINE
+                : selftest_latency(core, rounds, m, &done, mmm);
+    selftest_msg_set(m, MSG_LATENCY_DONE, 20);
+    wire_put_u32(m->payload, (uint32_t)r);
+    wire_put_u32(m->payload + 4, done);
+    for (int i = 0; i < 3; i++)
+        wire_put_u32(m->payload + 8 + 4 * i, mmm[i]);
+    rc_send(UNITS_DM_CORE, m);
+}
+
 /* The DM swapped a block to us: check it, show that misuse is refused,
  * write our answer into it and swap it back. */
 static void rc_imsu_pair(struct line_msg *m)
@@ -228,6 +244,9 @@ void rc_main(void *arg)
             break;
         case MSG_PING_NCS:
             rc_ping_ncs(m);
+            break;
+        case MSG_LATENCY:
+            rc_latency(m);
             break;
         case MSG_IMSU_PAIR:
             rc_imsu_pair(m);

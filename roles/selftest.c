@@ -7,6 +7,7 @@
 #include "kernel/cpu.h"
 #include "kernel/klog.h"
 #include "kernel/ktime.h"
+#include "kernel/param.h"
 #include "kernel/memlayout.h"
 #include "kernel/panic.h"
 #include "kernel/spinlock.h"
@@ -14,6 +15,7 @@
 #include "proto/hostlink.h"
 #include "proto/render_link.h"
 #include "proto/unitmsg.h"
+#include "proto/wire.h"
 
 /* A cheap mix of (seed, seq, word index): every word of every message of
  * every stream differs, so a lost, repeated or misplaced message shows. */
@@ -204,4 +206,39 @@ int selftest_recv_type(uint32_t peer, uint16_t type, struct line_msg *m,
         klog("dropped message type %u from core %u while waiting for type %u",
              (unsigned)m->type, (unsigned)peer, (unsigned)type);
     }
+}
+
+int selftest_latency(uint32_t peer, uint32_t rounds, struct line_msg *m, uint32_t *done,
+                     uint32_t mmm[3])
+{
+    static uint32_t rtt[LINK_LATENCY_MAX_ROUNDS];
+    *done = 0;
+    mmm[0] = mmm[1] = mmm[2] = 0;
+    if (rounds == 0 || rounds > LINK_LATENCY_MAX_ROUNDS)
+        return LINE_ERR_TOO_LONG;
+    for (uint32_t i = 0; i < rounds; i++) {
+        uint64_t deadline = ktime_deadline_ms(PING_TIMEOUT_MS);
+        selftest_msg_set(m, MSG_PING, 4);
+        wire_put_u32(m->payload, 0x1A7E0000u + i);
+        uint64_t t0 = ktime_now();
+        int r = line_send(peer, m, deadline);
+        if (r == LINE_OK)
+            r = selftest_recv_type(peer, MSG_PONG, m, deadline);
+        uint64_t t1 = ktime_now();
+        if (r == LINE_OK && wire_get_u32(m->payload) != 0x1A7E0000u + i)
+            r = LINE_ERR_CHECK;
+        if (r != LINE_OK)
+            return r;
+        uint64_t d = t1 - t0;
+        /* insertion: rtt[0..i] stays sorted */
+        uint32_t v = d > 0xFFFFFFFFu ? 0xFFFFFFFFu : (uint32_t)d, j = i;
+        for (; j > 0 && rtt[j - 1] > v; j--)
+            rtt[j] = rtt[j - 1];
+        rtt[j] = v;
+        *done = i + 1;
+    }
+    mmm[0] = rtt[0];
+    mmm[1] = rtt[rounds / 2];
+    mmm[2] = rtt[rounds - 1];
+    return LINE_OK;
 }

@@ -49,4 +49,12 @@ void selftest_msg_set(struct line_msg *m, uint16_t type, uint16_t len);
 int selftest_recv_type(uint32_t peer, uint16_t type, struct line_msg *m,
                        uint64_t deadline);
 
+/* rounds (1..LINK_LATENCY_MAX_ROUNDS) MSG_PING round trips with peer, one
+ * after another, each timed in ktime ticks from the send to its MSG_PONG;
+ * their min, median and max into mmm[0..2] and the rounds done into *done.
+ * Returns LINE_OK, or the line error of the round that failed (a wrong
+ * token counts as LINE_ERR_CHECK). */
+int selftest_latency(uint32_t peer, uint32_t rounds, struct line_msg *m, uint32_t *done,
+                     uint32_t mmm[3]);
+
 #endif

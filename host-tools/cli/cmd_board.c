@@ -1,4 +1,4 @@
-/* cmd_board.c: `links1 board start|stop|list`: boards that keep running
+/* cmd_board.c: `links1 board start|stop|list|status`: boards that keep running
  * between commands, so `links1 render --board NAME` re-renders without
  * booting (host-tools/launcher/board_named.c). */
 #include <stdio.h>
@@ -12,12 +12,16 @@ static void cmd_board_usage(FILE *out)
     fprintf(out, "usage: links1 board start [--ncs N] [--name NAME] [board options]\n"
                  "       links1 board stop [NAME]\n"
                  "       links1 board list\n"
+                 "       links1 board status [NAME]\n"
                  "start boots a board that keeps running after this command (NAME default\n"
                  "'%s'); `links1 render --board NAME ...` then renders on it, and stop\n"
-                 "shuts it down.  list shows the boards running; start, stop and list\n"
-                 "report and remove the state of a board whose QEMU is gone.\n"
+                 "shuts it down.  list shows the boards running, status one of them;\n"
+                 "start, stop, list and status report and remove the state of a board\n"
+                 "whose QEMU is gone.  With --machine an521 the board is a set of QEMUs\n"
+                 "(board 0: DM and RC; two NCs on each other board) joined by one shared\n"
+                 "file; list and status show each NC board, and stop ends them all.\n"
                  "start options:\n"
-                 "  --ncs N          node computers (1..254, default %d)\n"
+                 "  --ncs N          node computers (1..254, default %d; an521: even, 2..64)\n"
                  "  --name NAME      the board's name\n%s",
             BOARD_DEFAULT_NAME, BOARD_DEFAULT_CORES - 2, board_opts_usage);
 }
@@ -65,8 +69,13 @@ static int cmd_board_start(int argc, char **argv)
     struct board b;
     if (board_start_named(&b, &o, name, o.timeout_s * 1000) < 0)
         return 1;
-    printf("links1: board %s runs on (QEMU pid %d): `links1 render --board %s ...`, "
-           "`links1 board stop %s`\n", name, (int)b.qemu_pid, name, name);
+    if (o.machine == MACHINE_AN521)
+        printf("links1: board %s runs on (%d an521 boards, board 0's QEMU pid %d): `links1 "
+               "render --board %s ...`, `links1 board stop %s`\n", name,
+               o.ncores / AN521_CORES_PER_BOARD, (int)b.qemu_pid, name, name);
+    else
+        printf("links1: board %s runs on (QEMU pid %d): `links1 render --board %s ...`, "
+               "`links1 board stop %s`\n", name, (int)b.qemu_pid, name, name);
     int rc = board_report_link_errors(&b) ? 1 : 0;
     if (b.nfaults)
         rc = 1;
@@ -84,6 +93,8 @@ int cmd_board(int argc, char **argv)
         return cmd_board_start(argc - 1, argv + 1);
     if (strcmp(argv[1], "stop") == 0 && argc <= 3)
         return board_stop_named(argc == 3 ? argv[2] : BOARD_DEFAULT_NAME) == 0 ? 0 : 1;
+    if (strcmp(argv[1], "status") == 0 && argc <= 3)
+        return board_status_named(argc == 3 ? argv[2] : BOARD_DEFAULT_NAME) == 0 ? 0 : 1;
     if (strcmp(argv[1], "list") == 0 && argc == 2)
         return board_list_named() < 0 ? 1 : 0;
     fprintf(stderr, "links1 board: unknown subcommand or extra arguments: '%s'\n", argv[1]);

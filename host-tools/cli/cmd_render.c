@@ -130,6 +130,9 @@ static void render_usage(FILE *out)
             "  --view           show the frame memory live (-device ramfb, a display)\n"
             "  --ppm            write PPM (also chosen by an OUT ending in .ppm)\n"
             "  --count-insns    count guest instructions per core and print them\n"
+            "  --insn-profile FILE  the NCs' guest instructions per translated block,\n"
+            "                   \"ADDR COUNT\" lines into FILE (attribute them to the\n"
+            "                   firmware's functions: tests/bench/bench_insn_funcs.sh)\n"
             "  --inject-faults K[:SEED]  test hook: K random NCs (fewer than --ncs) fail at\n"
             "                   random points of the first frame; the frame still completes\n"
             "  --inject-kind KIND  undef, abort, hang, silent or mixed (default mixed)\n"
@@ -175,6 +178,7 @@ enum render_opt_code {
     RENDER_OPT_VIEW,
     RENDER_OPT_PPM,
     RENDER_OPT_COUNT_INSNS,
+    RENDER_OPT_INSN_PROFILE,
     RENDER_OPT_BOARD,
     RENDER_OPT_INJECT_FAULTS,
     RENDER_OPT_INJECT_KIND,
@@ -215,6 +219,7 @@ static const struct option render_options[] = {
     {"view", no_argument, NULL, RENDER_OPT_VIEW},
     {"ppm", no_argument, NULL, RENDER_OPT_PPM},
     {"count-insns", no_argument, NULL, RENDER_OPT_COUNT_INSNS},
+    {"insn-profile", required_argument, NULL, RENDER_OPT_INSN_PROFILE},
     {"board", required_argument, NULL, RENDER_OPT_BOARD},
     {"inject-faults", required_argument, NULL, RENDER_OPT_INJECT_FAULTS},
     {"inject-kind", required_argument, NULL, RENDER_OPT_INJECT_KIND},
@@ -372,6 +377,9 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
     case RENDER_OPT_COUNT_INSNS:
         o->count_insns = 1;
         return 0;
+    case RENDER_OPT_INSN_PROFILE:
+        o->board.insn_profile_out = c->arg;
+        return 0;
     case RENDER_OPT_BOARD:
         o->board_name = c->arg;
         return 0;
@@ -447,6 +455,7 @@ static int render_auto_pick(struct render_opts *o)
         .fpu = o->fpu < 0 ? 1 : o->fpu,
         .target_db = o->target_db < 0 ? ARITH_AUTO_TARGET_DB : o->target_db,
         .target = ARITH_AUTO_BOARD,
+        .machine = o->board.machine,
         .width = o->scene.width,
         .height = o->scene.height,
         .words = w.words,
@@ -495,9 +504,10 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
         render_usage(stderr);
         return -1;
     }
-    if (o->board_name && (o->count_insns || o->board.view || o->board.link_noise_on)) {
-        fprintf(stderr, "links1 render: --count-insns, --view and --link-noise need a board of this "
-                "command's own, not --board %s\n", o->board_name);
+    if (o->board_name && (o->count_insns || o->board.insn_profile_out || o->board.view ||
+                          o->board.link_noise_on)) {
+        fprintf(stderr, "links1 render: --count-insns, --insn-profile, --view and --link-noise "
+                "need a board of this command's own, not --board %s\n", o->board_name);
         return -1;
     }
     int films = 0;
@@ -523,10 +533,18 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
     if (render_auto_check(o) != 0)
         return -1;
     o->scene.machine = o->board.machine; /* the scene is checked against its limits */
-    if (o->board_name && o->board.machine != MACHINE_VIRT) {
-        fprintf(stderr, "links1 render: --board %s is a named virt board; --machine %s starts "
-                "its own boards\n", o->board_name, machine_limits(o->board.machine)->name);
-        return -1;
+    if (o->board_name) {
+        /* The named board's machine: the scene is checked against its limits. */
+        int m = board_named_machine(o->board_name);
+        if (m < 0)
+            return -1;
+        if (o->board.machine != MACHINE_VIRT && o->board.machine != m) {
+            fprintf(stderr, "links1 render: --machine %s, but board %s is a %s board\n",
+                    machine_limits(o->board.machine)->name, o->board_name,
+                    machine_limits(m)->name);
+            return -1;
+        }
+        o->board.machine = o->scene.machine = m;
     }
     if (o->resume && !o->many) {
         fprintf(stderr, "links1 render: --resume goes with --frames A:B\n");

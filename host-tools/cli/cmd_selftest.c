@@ -23,6 +23,9 @@ static const struct selftest selftests[] = {
      selftest_fault},
     {"idle", "over 5 s after boot each idle core retires under --max-insns per s",
      selftest_idle},
+    {"latency", "--rounds N ping round trips RC<->NC --core K (default 2; 1: DM<->RC),\n"
+                "               one after another, each timed by the board: min, median, max",
+     selftest_latency},
 };
 #define SELFTEST_COUNT (int)(sizeof selftests / sizeof selftests[0])
 
@@ -38,8 +41,11 @@ static void selftest_usage(FILE *out)
                  "  --mib N          MiB for stress\n"
                  "  --bytes N        bytes for link-sink and link-source\n"
                  "  --max-insns N    idle: most guest instructions per second an idle\n"
-                 "                   core may retire (default 10000)\n",
-            board_opts_usage);
+                 "                   core may retire (default 10000)\n"
+                 "  --rounds N       latency: round trips (1..%u, default %u)\n"
+                 "  --core K         latency: the far end (1: the RC, asked by the DM; an\n"
+                 "                   NC, asked by the RC; default 2)\n",
+            board_opts_usage, LINK_LATENCY_MAX_ROUNDS, SELFTEST_LATENCY_ROUNDS);
 }
 
 static const struct selftest *selftest_find(const char *name)
@@ -50,13 +56,21 @@ static const struct selftest *selftest_find(const char *name)
     return NULL;
 }
 
-enum { SELFTEST_OPT_MIB = CLI_OWN_CODES, SELFTEST_OPT_BYTES, SELFTEST_OPT_MAX_INSNS };
+enum {
+    SELFTEST_OPT_MIB = CLI_OWN_CODES,
+    SELFTEST_OPT_BYTES,
+    SELFTEST_OPT_MAX_INSNS,
+    SELFTEST_OPT_ROUNDS,
+    SELFTEST_OPT_CORE,
+};
 
 static const struct option selftest_options[] = {
     BOARD_LONG_OPTIONS,
     {"mib", required_argument, NULL, SELFTEST_OPT_MIB},
     {"bytes", required_argument, NULL, SELFTEST_OPT_BYTES},
     {"max-insns", required_argument, NULL, SELFTEST_OPT_MAX_INSNS},
+    {"rounds", required_argument, NULL, SELFTEST_OPT_ROUNDS},
+    {"core", required_argument, NULL, SELFTEST_OPT_CORE},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -112,6 +126,14 @@ static int selftest_parse(int argc, char **argv, struct board_opts *o,
             if (cli_long(&c, 0, 1, SELFTEST_MAX_IDLE_INSNS, &v) < 0)
                 return -1;
             a->max_insns = (uint32_t)v;
+        } else if (code == SELFTEST_OPT_ROUNDS) {
+            if (cli_long(&c, 0, 1, LINK_LATENCY_MAX_ROUNDS, &v) < 0)
+                return -1;
+            a->rounds = (uint32_t)v;
+        } else if (code == SELFTEST_OPT_CORE) {
+            if (cli_long(&c, 0, 1, UNITS_MAX_CORES - 1, &v) < 0)
+                return -1;
+            a->latency_core = (int)v;
         } else if (code != CLI_OPERAND || selftest_add(&c, a, run, nrun) < 0) {
             return -1;
         }
@@ -119,6 +141,11 @@ static int selftest_parse(int argc, char **argv, struct board_opts *o,
     if (*nrun == 0) {
         fprintf(stderr, "links1 selftest: name at least one check\n");
         selftest_usage(stderr);
+        return -1;
+    }
+    if (a->latency_core >= o->ncores) {
+        fprintf(stderr, "links1 selftest: --core %d, but the board has %d cores\n",
+                a->latency_core, o->ncores);
         return -1;
     }
     if (a->fault_core >= o->ncores) {
@@ -137,6 +164,8 @@ int cmd_selftest(int argc, char **argv)
         .link_bytes = SELFTEST_LINK_BYTES,
         .max_insns = SELFTEST_IDLE_MAX_INSNS,
         .fault_core = 0,
+        .rounds = SELFTEST_LATENCY_ROUNDS,
+        .latency_core = UNITS_FIRST_NC,
     };
     const struct selftest *run[SELFTEST_MAX_RUN];
     int nrun = 0;

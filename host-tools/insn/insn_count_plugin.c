@@ -26,6 +26,13 @@
  * rest of its block; the difference of two marks' counts is exact to
  * within the blocks they sit in, and differences of successive marks add
  * up to the difference of the first and last (links1 render --trace).
+ *
+ * With profile=FILE (and profile_from=K) the instructions of vCPUs K and
+ * up are also counted per translated block: at exit FILE gets one line
+ * "ADDR COUNT" per block start address that ran (hexadecimal guest address,
+ * instructions executed in blocks starting there, retranslations summed),
+ * which the firmware's symbol table attributes to functions (links1 render
+ * --insn-profile, tests/bench/bench_insn_funcs.sh).
  */
 #include <stdbool.h>
 #include <stddef.h>
@@ -77,6 +84,7 @@ void qemu_plugin_register_vcpu_tb_exec_cb(struct qemu_plugin_tb *tb,
                                           qemu_plugin_vcpu_udata_cb_t cb,
                                           enum qemu_plugin_cb_flags flags, void *userdata);
 size_t qemu_plugin_tb_n_insns(const struct qemu_plugin_tb *tb);
+uint64_t qemu_plugin_tb_vaddr(const struct qemu_plugin_tb *tb);
 void qemu_plugin_register_atexit_cb(qemu_plugin_id_t id, qemu_plugin_udata_cb_t cb,
                                     void *userdata);
 void qemu_plugin_outs(const char *string);
@@ -171,10 +179,87 @@ static void insn_trace_write(void)
     fclose(f);
 }
 
+/* ---- the profile ---- */
+
+struct insn_prof_tb {
+    uint64_t vaddr, count;
+    uint32_t n;
+    struct insn_prof_tb *next;
+};
+static char insn_prof_out[4096];      /* profile file, or "" */
+static unsigned insn_prof_from;       /* the first vCPU profiled */
+static struct insn_prof_tb *insn_prof_list; /* every block translated */
+static pthread_mutex_t insn_prof_lock = PTHREAD_MUTEX_INITIALIZER;
+static int insn_prof_oom;
+
+static void insn_prof_exec(unsigned int vcpu, void *rec)
+{
+    struct insn_prof_tb *t = rec;
+    if (vcpu >= insn_prof_from)
+        __atomic_fetch_add(&t->count, (uint64_t)t->n, __ATOMIC_RELAXED);
+}
+
+static void insn_prof_trans(struct qemu_plugin_tb *tb, size_t n)
+{
+    struct insn_prof_tb *t = calloc(1, sizeof *t);
+    if (!t) {
+        __atomic_store_n(&insn_prof_oom, 1, __ATOMIC_RELAXED);
+        return;
+    }
+    t->vaddr = qemu_plugin_tb_vaddr(tb);
+    t->n = (uint32_t)n;
+    pthread_mutex_lock(&insn_prof_lock);
+    t->next = insn_prof_list;
+    insn_prof_list = t;
+    pthread_mutex_unlock(&insn_prof_lock);
+    qemu_plugin_register_vcpu_tb_exec_cb(tb, insn_prof_exec, QEMU_PLUGIN_CB_NO_REGS, t);
+}
+
+static int insn_prof_by_addr(const void *a, const void *b)
+{
+    const struct insn_prof_tb *x = *(struct insn_prof_tb *const *)a;
+    const struct insn_prof_tb *y = *(struct insn_prof_tb *const *)b;
+    return x->vaddr < y->vaddr ? -1 : x->vaddr > y->vaddr;
+}
+
+static void insn_prof_write(void)
+{
+    FILE *f = fopen(insn_prof_out, "w");
+    if (!f) {
+        qemu_plugin_outs("insn-count: cannot open the profile= file\n");
+        return;
+    }
+    pthread_mutex_lock(&insn_prof_lock);
+    size_t n = 0;
+    for (struct insn_prof_tb *t = insn_prof_list; t; t = t->next)
+        n++;
+    struct insn_prof_tb **v = malloc((n ? n : 1) * sizeof *v);
+    if (insn_prof_oom || !v) {
+        fputs("oom\n", f); /* the reader refuses the profile */
+    } else {
+        size_t i = 0;
+        for (struct insn_prof_tb *t = insn_prof_list; t; t = t->next)
+            v[i++] = t;
+        qsort(v, n, sizeof *v, insn_prof_by_addr);
+        for (i = 0; i < n;) {
+            uint64_t addr = v[i]->vaddr, sum = 0;
+            for (; i < n && v[i]->vaddr == addr; i++)
+                sum += __atomic_load_n(&v[i]->count, __ATOMIC_RELAXED);
+            if (sum)
+                fprintf(f, "%08llx %llu\n", (unsigned long long)addr, (unsigned long long)sum);
+        }
+    }
+    pthread_mutex_unlock(&insn_prof_lock);
+    free(v);
+    fclose(f);
+}
+
 static void insn_count_tb_trans(qemu_plugin_id_t id, struct qemu_plugin_tb *tb)
 {
     (void)id;
     size_t n = qemu_plugin_tb_n_insns(tb);
+    if (insn_prof_out[0])
+        insn_prof_trans(tb, n);
     for (size_t i = 0; i < n; i++) {
         struct qemu_plugin_insn *insn = qemu_plugin_tb_get_insn(tb, i);
         unsigned hw1 = insn_count_hint_hw1(insn);
@@ -197,7 +282,9 @@ static void insn_count_atexit(qemu_plugin_id_t id, void *userdata)
     (void)userdata;
     if (insn_trace_out[0])
         insn_trace_write();
-    if (!insn_count_out[0] && insn_trace_out[0])
+    if (insn_prof_out[0])
+        insn_prof_write();
+    if (!insn_count_out[0] && (insn_trace_out[0] || insn_prof_out[0]))
         return;
     char line[64];
     FILE *f = insn_count_out[0] ? fopen(insn_count_out, "w") : NULL;
@@ -274,8 +361,15 @@ PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_t *in
             strcpy(insn_trace_out, argv[i] + 6);
         } else if (strncmp(argv[i], "every=", 6) == 0 && atol(argv[i] + 6) > 0) {
             insn_series_ms = atol(argv[i] + 6);
+        } else if (strncmp(argv[i], "profile=", 8) == 0 &&
+                   strlen(argv[i] + 8) < sizeof insn_prof_out) {
+            strcpy(insn_prof_out, argv[i] + 8);
+        } else if (strncmp(argv[i], "profile_from=", 13) == 0 && atol(argv[i] + 13) >= 0 &&
+                   atol(argv[i] + 13) <= INSN_COUNT_MAX_VCPUS) {
+            insn_prof_from = (unsigned)atol(argv[i] + 13);
         } else {
-            qemu_plugin_outs("insn-count: arguments are out=FILE, series=FILE, every=MS, trace=FILE\n");
+            qemu_plugin_outs("insn-count: arguments are out=FILE, series=FILE, every=MS, "
+                             "trace=FILE, profile=FILE, profile_from=K\n");
             return -1;
         }
     }

@@ -78,6 +78,34 @@ static int board_named_look(const char *name, int create_base, struct board_seen
     return 1;
 }
 
+/* The an521 set's NC boards (0 for a virt board, whose record has none). */
+static int board_named_nc_boards(const struct board_record *r)
+{
+    return r->machine == MACHINE_AN521 ? r->ncores / AN521_CORES_PER_BOARD : 0;
+}
+
+/* How many of the set's NC boards run (each checked to be that board of
+ * this directory, not a pid reused). */
+static int board_named_nc_alive(const struct board_seen *s)
+{
+    int n = 0;
+    for (int k = 1; k < board_named_nc_boards(&s->r); k++)
+        n += board_state_nc_alive(s->dir, k, s->r.nc_pid[k]);
+    return n;
+}
+
+/* Every NC board of the set that still runs: SIGKILL (they have no power
+ * control, and nothing of theirs is kept), then waited for. */
+static void board_named_kill_nc_boards(const struct board_seen *s)
+{
+    for (int k = 1; k < board_named_nc_boards(&s->r); k++)
+        if (board_state_nc_alive(s->dir, k, s->r.nc_pid[k]))
+            kill(s->r.nc_pid[k], SIGKILL);
+    long long end = board_now_ms() + BOARD_TERM_WAIT_MS;
+    while (board_named_nc_alive(s) && board_now_ms() < end)
+        usleep(20000);
+}
+
 /* A board whose QEMU is gone and whose lock no one else holds: reported
  * and removed (1).  0 when it stays: running, or its lock held (a board
  * starting, a session). */
@@ -85,9 +113,15 @@ static int board_named_stale(const char *name, struct board_seen *s)
 {
     if (s->alive || s->lock == -2)
         return 0;
-    if (s->rec == 0)
+    if (s->rec == 0 && s->r.machine == MACHINE_AN521)
+        fprintf(stderr, "links1: board %s: its board 0's QEMU (pid %d, the DM and the RC) is "
+                "gone; stopping its NC boards and removing its stale state %s\n", name,
+                s->r.pid, s->dir);
+    else if (s->rec == 0)
         fprintf(stderr, "links1: board %s: its QEMU (pid %d) is gone; removing its stale "
                 "state %s\n", name, s->r.pid, s->dir);
+    if (s->rec == 0)
+        board_named_kill_nc_boards(s);
     else
         fprintf(stderr, "links1: board %s: %s has no board record and no one holds its lock; "
                 "removing it\n", name, s->dir);
@@ -102,7 +136,10 @@ void board_named_chardev(const struct board *b, char *out, size_t cap)
 
 void board_named_redirect(const struct board *b)
 {
-    int log = board_state_create(b->state_fd, BOARD_STATE_LOG, O_WRONLY);
+    /* Appended to by every QEMU of an an521 set (the directory is only its
+     * owner's, and no link is followed). */
+    int log = openat(b->state_fd, BOARD_STATE_LOG,
+                     O_WRONLY | O_APPEND | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0600);
     int null = open("/dev/null", O_RDONLY);
     if (null >= 0)
         dup2(null, 0);
@@ -207,8 +244,11 @@ int board_named_prepare(struct board *b, const char *name)
 
 int board_named_started(struct board *b, int timeout_ms)
 {
-    struct board_record r = {(int)b->qemu_pid, b->opts.ncores, b->opts.ram_mb, ""};
+    struct board_record r = {(int)b->qemu_pid, b->opts.ncores, b->opts.ram_mb, "",
+                             b->opts.machine, {0}};
     snprintf(r.arith, sizeof r.arith, "%s", b->opts.arith);
+    for (int k = 1; k < AN521_MAX_BOARDS; k++)
+        r.nc_pid[k] = (int)b->nc_board_pid[k];
     if (board_state_write(b->state_fd, b->state_dir, &r) < 0)
         return -1;
     return board_named_dial(b->state_dir, (int)b->qemu_pid, 1, timeout_ms);
@@ -227,6 +267,13 @@ void board_named_abandon(struct board *b)
         kill(b->qemu_pid, SIGKILL);
         waitpid(b->qemu_pid, NULL, 0);
         b->qemu_pid = 0;
+    }
+    for (int k = 1; k < AN521_MAX_BOARDS; k++) { /* an an521 set's NC boards */
+        if (b->nc_board_pid[k] > 0) {
+            kill(b->nc_board_pid[k], SIGKILL);
+            waitpid(b->nc_board_pid[k], NULL, 0);
+            b->nc_board_pid[k] = 0;
+        }
     }
     char base[BOARD_STATE_BASE_MAX];
     int base_fd = b->state_fd >= 0 ? board_state_base(0, base, sizeof base) : -1;
@@ -303,6 +350,7 @@ int board_connect(struct board *b, const struct board_opts *o, const char *name)
     struct board_opts bo = *o;
     bo.ncores = s.r.ncores;
     bo.ram_mb = s.r.ram_mb;
+    bo.machine = s.r.machine;
     static char arith[sizeof s.r.arith];
     snprintf(arith, sizeof arith, "%s", s.r.arith);
     bo.arith = arith;
@@ -325,7 +373,12 @@ int board_connect(struct board *b, const struct board_opts *o, const char *name)
         board_stop(b);
         return -1;
     }
-    if (!o->quiet)
+    if (!o->quiet && b->opts.machine == MACHINE_AN521)
+        printf("links1: connected to board %s: %d an521 boards (board 0: DM and RC, QEMU pid "
+               "%d; %d NCs on boards 1..%d), %s\n", name, b->opts.ncores / AN521_CORES_PER_BOARD,
+               pid, b->opts.ncores - 2, b->opts.ncores / AN521_CORES_PER_BOARD - 1,
+               b->opts.arith);
+    else if (!o->quiet)
         printf("links1: connected to board %s: %d cores (DM, RC, %d NCs), %s, QEMU pid %d\n",
                name, b->opts.ncores, b->opts.ncores - 2, b->opts.arith, pid);
     return 0;
@@ -374,6 +427,7 @@ int board_stop_named(const char *name)
     int pid = s.r.pid;
     char dir[sizeof s.dir];
     snprintf(dir, sizeof dir, "%s", s.dir);
+    struct board_seen nc = s; /* an an521 set's NC boards, stopped after board 0 */
     board_named_unlook(&s); /* its lock let go: the session below takes it */
     struct board_opts o;
     board_opts_init(&o);
@@ -396,9 +450,33 @@ int board_stop_named(const char *name)
         }
         rc = 1;
     }
+    board_named_kill_nc_boards(&nc);
+    if (board_named_nc_alive(&nc)) {
+        fprintf(stderr, "links1: board %s: an NC board's QEMU outlived SIGKILL\n", name);
+        rc = 1;
+    }
     board_named_clear(name);
     printf("links1: board %s stopped\n", name);
     return rc;
+}
+
+/* A running an521 set: one line for the set, one for each NC board that
+ * is gone (its NCs' areas then go to the others: the RC's watchdog). */
+static void board_named_print_set(const char *name, const struct board_seen *s)
+{
+    int boards = board_named_nc_boards(&s->r), up = board_named_nc_alive(s);
+    printf("board %s: running, an521, %d boards (board 0: DM and RC, QEMU pid %d; %d NCs on "
+           "boards 1..%d, %d of %d NC boards running), %s%s\n", name, boards, s->r.pid,
+           s->r.ncores - 2, boards - 1, up, boards - 1, s->r.arith,
+           s->lock == -2 ? ", in use by a session" : "");
+    for (int k = 1; k < boards; k++) {
+        if (board_state_nc_alive(s->dir, k, s->r.nc_pid[k]))
+            printf("board %s: NC board %d (NCs %d, %d): running, QEMU pid %d\n", name, k,
+                   k * AN521_CORES_PER_BOARD, k * AN521_CORES_PER_BOARD + 1, s->r.nc_pid[k]);
+        else
+            printf("board %s: NC board %d (NCs %d, %d): its QEMU (pid %d) is gone\n", name, k,
+                   k * AN521_CORES_PER_BOARD, k * AN521_CORES_PER_BOARD + 1, s->r.nc_pid[k]);
+    }
 }
 
 /* One entry of the base for board list: 1 when it is a board running. */
@@ -412,7 +490,10 @@ static int board_named_list_one(const char *base, const char *name)
     struct board_seen s;
     int running = 0;
     if (board_named_look(name, 0, &s) == 1) {
-        if (s.alive) {
+        if (s.alive && s.r.machine == MACHINE_AN521) {
+            board_named_print_set(name, &s);
+            running = 1;
+        } else if (s.alive) {
             printf("board %s: running, QEMU pid %d, %d cores (DM, RC, %d NCs), %s, %d MiB%s\n",
                    name, s.r.pid, s.r.ncores, s.r.ncores - 2, s.r.arith, s.r.ram_mb,
                    s.lock == -2 ? ", in use by a session" : "");
@@ -450,4 +531,38 @@ int board_list_named(void)
     if (!running)
         printf("links1: no named board is running\n");
     return running;
+}
+
+int board_status_named(const char *name)
+{
+    struct board_seen s;
+    int r = board_named_look(name, 0, &s);
+    board_named_unlook(&s); /* its lock let go at once: a session may take it */
+    if (r == 0)
+        fprintf(stderr, "links1: no board named %s\n", name);
+    if (r != 1)
+        return -1;
+    return board_named_list_one(s.base, name) ? 0 : -1;
+}
+
+int board_named_machine(const char *name)
+{
+    char base[BOARD_STATE_BASE_MAX], dir[BOARD_STATE_BASE_MAX + BOARD_NAME_MAX + 2];
+    if (board_named_name_ok(name) < 0)
+        return -1;
+    int base_fd = board_state_base(0, base, sizeof base);
+    int dir_fd = base_fd >= 0 ? board_state_dir(base_fd, base, name) : base_fd;
+    struct board_record r;
+    int rec = -2;
+    if (dir_fd >= 0) { /* read without its lock: a session may hold it */
+        snprintf(dir, sizeof dir, "%s/%.64s", base, name);
+        rec = board_state_read(dir_fd, dir, name, &r);
+        close(dir_fd);
+    }
+    if (base_fd >= 0)
+        close(base_fd);
+    if (dir_fd == -2 || rec == -2)
+        fprintf(stderr, "links1: no board named %s is running (`links1 board start --name "
+                "%s`)\n", name, name);
+    return dir_fd < 0 || rec < 0 ? -1 : r.machine;
 }

@@ -207,6 +207,34 @@ static int board_state_bad(const char *name, const char *dir, const char *field,
     return -1;
 }
 
+/* The rest of a record after its arith: "machine NAME" and, for an521,
+ * "nc_pids P1 P2 ..." (*nnc of them, at most AN521_MAX_BOARDS - 1).  0, or
+ * -1 when it does not read as that. */
+static int board_state_read_machine(const char *text, struct board_record *r, int *nnc)
+{
+    char m[16];
+    int used = 0;
+    if (sscanf(text, "machine %15s %n", m, &used) != 1 || (r->machine = machine_by_name(m)) < 0)
+        return -1;
+    text += used;
+    if (r->machine == MACHINE_VIRT)
+        return *text == 0 ? 0 : -1;
+    used = 0;
+    if (sscanf(text, "nc_pids%n", &used) != 0 || used == 0)
+        return -1;
+    text += used;
+    memset(r->nc_pid, 0, sizeof r->nc_pid);
+    for (*nnc = 0; *text != 0;) {
+        int pid;
+        used = 0;
+        if (*nnc >= AN521_MAX_BOARDS - 1 || sscanf(text, " %d %n", &pid, &used) != 1)
+            return -1;
+        r->nc_pid[++*nnc] = pid;
+        text += used;
+    }
+    return 0;
+}
+
 int board_state_read(int dir_fd, const char *dir, const char *name, struct board_record *r)
 {
     char what[BOARD_NAME_MAX + 32];
@@ -218,11 +246,13 @@ int board_state_read(int dir_fd, const char *dir, const char *name, struct board
     char text[BOARD_STATE_RECORD_MAX + 1];
     ssize_t n = st.st_size <= BOARD_STATE_RECORD_MAX ? read(fd, text, sizeof text - 1) : -1;
     close(fd);
-    int used = 0;
+    int used = 0, nnc = 0;
+    r->machine = MACHINE_VIRT;
     if (n >= 0) {
         text[n] = 0;
         if (sscanf(text, "pid %d ncores %d ram_mb %d arith %15s %n", &r->pid, &r->ncores,
-                   &r->ram_mb, r->arith, &used) != 4 || text[used] != 0)
+                   &r->ram_mb, r->arith, &used) != 4 ||
+            (text[used] != 0 && board_state_read_machine(text + used, r, &nnc) < 0))
             n = -1;
     }
     if (n < 0) {
@@ -231,15 +261,33 @@ int board_state_read(int dir_fd, const char *dir, const char *name, struct board
                 (long long)st.st_size);
         return -1;
     }
-    char range[32];
+    char range[64];
     if (r->pid <= 1)
         return board_state_bad(name, dir, "pid", r->pid, "a process of a board's");
     snprintf(range, sizeof range, "%d..%d", UNITS_MIN_CORES, UNITS_MAX_CORES);
     if (r->ncores < UNITS_MIN_CORES || r->ncores > UNITS_MAX_CORES)
         return board_state_bad(name, dir, "ncores", r->ncores, range);
-    snprintf(range, sizeof range, "%d..%d", BOARD_MIN_RAM_MB, BOARD_MAX_RAM_MB);
-    if (r->ram_mb < BOARD_MIN_RAM_MB || r->ram_mb > BOARD_MAX_RAM_MB)
-        return board_state_bad(name, dir, "ram_mb", r->ram_mb, range);
+    if (r->machine == MACHINE_AN521) {
+        int boards = r->ncores / AN521_CORES_PER_BOARD;
+        snprintf(range, sizeof range, "an even number up to %d (an521 boards of %d cores)",
+                 AN521_CORES_PER_BOARD * AN521_MAX_BOARDS, AN521_CORES_PER_BOARD);
+        if (r->ncores % AN521_CORES_PER_BOARD || boards > AN521_MAX_BOARDS)
+            return board_state_bad(name, dir, "ncores", r->ncores, range);
+        snprintf(range, sizeof range, "%d (the an521 shared file's MiB)", AN521_SHARED_MB);
+        if (r->ram_mb != AN521_SHARED_MB)
+            return board_state_bad(name, dir, "ram_mb", r->ram_mb, range);
+        snprintf(range, sizeof range, "%d (one for each NC board)", boards - 1);
+        if (nnc != boards - 1)
+            return board_state_bad(name, dir, "nc_pids for", nnc, range);
+        for (int k = 1; k < boards; k++)
+            if (r->nc_pid[k] <= 1)
+                return board_state_bad(name, dir, "an NC board's pid", r->nc_pid[k],
+                                       "a process of a board's");
+    } else {
+        snprintf(range, sizeof range, "%d..%d", BOARD_MIN_RAM_MB, BOARD_MAX_RAM_MB);
+        if (r->ram_mb < BOARD_MIN_RAM_MB || r->ram_mb > BOARD_MAX_RAM_MB)
+            return board_state_bad(name, dir, "ram_mb", r->ram_mb, range);
+    }
     if (board_arith_code(r->arith) < 0) {
         fprintf(stderr, "links1: board %s: its record %s/%s says arith '%s', not float, soft "
                 "or fixed: refused\n", name, dir, BOARD_STATE_INFO, r->arith);
@@ -256,6 +304,13 @@ int board_state_write(int dir_fd, const char *dir, const struct board_record *r)
     char text[BOARD_STATE_RECORD_MAX];
     int n = snprintf(text, sizeof text, "pid %d\nncores %d\nram_mb %d\narith %s\n", r->pid,
                      r->ncores, r->ram_mb, r->arith);
+    if (r->machine == MACHINE_AN521) {
+        n += snprintf(text + n, sizeof text - (size_t)n, "machine %s\nnc_pids",
+                      machine_limits(r->machine)->name);
+        for (int k = 1; k < r->ncores / AN521_CORES_PER_BOARD && k < AN521_MAX_BOARDS; k++)
+            n += snprintf(text + n, sizeof text - (size_t)n, " %d", r->nc_pid[k]);
+        n += snprintf(text + n, sizeof text - (size_t)n, "\n");
+    }
     int fd = board_state_create(dir_fd, tmp, O_WRONLY);
     int ok = fd >= 0 && write(fd, text, (size_t)n) == n;
     if (fd >= 0 && close(fd) != 0)
@@ -312,9 +367,38 @@ void board_state_chardev(const char *dir, char *out, size_t cap)
     snprintf(out, cap, "socket,id=link,path=%s/%s,server=on,wait=on", dir, BOARD_STATE_SOCKET);
 }
 
+void board_state_nc_name(const char *dir, int k, char *out, size_t cap)
+{
+    /* QEMU's option syntax: a comma of the path doubled. */
+    int n = snprintf(out, cap, "guest=links1-nc-board-%d:", k);
+    for (const char *c = dir; *c && n + 3 < (int)cap; c++) {
+        out[n++] = *c;
+        if (*c == ',')
+            out[n++] = ',';
+    }
+    out[n < (int)cap ? n : (int)cap - 1] = 0;
+}
+
+/* 1 when pid runs and its command line holds an argument equal to want. */
+static int board_state_runs_with(int pid, const char *want);
+
 int board_state_alive(const char *dir, int pid)
 {
-    char path[64], want[PATH_MAX + 160];
+    char want[PATH_MAX + 160];
+    board_state_chardev(dir, want, sizeof want);
+    return board_state_runs_with(pid, want);
+}
+
+int board_state_nc_alive(const char *dir, int k, int pid)
+{
+    char want[2 * PATH_MAX + 64];
+    board_state_nc_name(dir, k, want, sizeof want);
+    return board_state_runs_with(pid, want);
+}
+
+static int board_state_runs_with(int pid, const char *want)
+{
+    char path[64];
     if (pid <= 1)
         return 0;
     snprintf(path, sizeof path, "/proc/%d/cmdline", pid);
@@ -332,7 +416,6 @@ int board_state_alive(const char *dir, int pid)
     if (!cmd)
         return 0;
     cmd[n] = 0;
-    board_state_chardev(dir, want, sizeof want);
     int found = 0;
     for (size_t i = 0; i < n && !found; i += strlen(cmd + i) + 1)
         found = strcmp(cmd + i, want) == 0;

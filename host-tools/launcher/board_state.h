@@ -19,20 +19,26 @@
 
 #include <stddef.h>
 
+#include "proto/board_map_an521.h"
+
 /* The longest path of the base directory taken (a board's UART socket
  * below it must fit a unix socket's path anyway). */
 #define BOARD_STATE_BASE_MAX 2048
 /* The record file's most bytes. */
-#define BOARD_STATE_RECORD_MAX 256
+#define BOARD_STATE_RECORD_MAX 1024
 /* The subdirectory of $XDG_RUNTIME_DIR that holds the boards' state. */
 #define BOARD_STATE_XDG_DIR "links1-boards"
 /* Bytes of a QEMU command line read to check that it is the board's. */
 #define BOARD_STATE_CMDLINE_MAX 65536
 
-/* What a board's directory records of it. */
+/* What a board's directory records of it.  pid is the QEMU with the
+ * board's UART (an521: board 0's); an an521 set of boards also records
+ * its machine and the QEMU of each NC board (nc_pid[1..boards - 1]). */
 struct board_record {
     int pid, ncores, ram_mb;
     char arith[16];
+    int machine; /* enum machine_id */
+    int nc_pid[AN521_MAX_BOARDS];
 };
 
 /* The base directory opened (made 0700 when create and missing) and
@@ -58,7 +64,9 @@ int board_state_make(int base_fd, const char *base, const char *name, int *lock_
 
 /* The record of board name in dir_fd into *r, every value range-checked
  * (pid > 1, ncores in UNITS_MIN_CORES..UNITS_MAX_CORES, ram_mb in
- * BOARD_MIN_RAM_MB..BOARD_MAX_RAM_MB, an arithmetic the board runs).
+ * BOARD_MIN_RAM_MB..BOARD_MAX_RAM_MB, an arithmetic the board runs; an
+ * an521 set: ncores a whole number of boards, ram_mb AN521_SHARED_MB,
+ * one pid > 1 for each NC board).
  * 0; -2 (nothing printed) when there is no record; -1 after printing
  * what is wrong with it (a symbolic link, not a regular file, a value out
  * of range). */
@@ -89,6 +97,13 @@ void board_state_chardev(const char *dir, char *out, size_t cap);
  * chardev of dir (a pid reused by another program, or the QEMU of a board
  * whose directory merely begins with dir, does not count). */
 int board_state_alive(const char *dir, int pid);
+
+/* An an521 NC board's QEMU of a named set has no UART; it is known by its
+ * -name argument, this (board k of the set in dir). */
+void board_state_nc_name(const char *dir, int k, char *out, size_t cap);
+/* 1 when pid runs and is NC board k of the set in dir (its command line
+ * holds board_state_nc_name's argument). */
+int board_state_nc_alive(const char *dir, int k, int pid);
 
 /* Every file of the board's directory and then the directory itself
  * removed (unlinkat: nothing followed).  0, or -1 after printing what was

@@ -119,7 +119,10 @@ int board_stop(struct board *b);
  * access, every file opened relative to them without following links,
  * every value read back range-checked).  A board whose QEMU is gone and
  * whose lock no one holds leaves a stale directory: found, reported and
- * removed by start, stop and list. */
+ * removed by start, stop, list and status.  An an521 named board is the
+ * set of QEMUs (board 0's, then one per NC board, each recorded and each
+ * known by its command line) on the directory's RAM file; stop and a stale
+ * set's removal end every one of them. */
 #define BOARD_STATE_INFO "board"
 #define BOARD_STATE_SOCKET "link.sock"
 #define BOARD_STATE_RAM "ram"
@@ -145,13 +148,19 @@ int board_stop_named(const char *name);
  * Returns the number running, or -1 after printing why the state
  * directory was refused (another's, open to others, a link). */
 int board_list_named(void);
+/* Prints named board name as board list does.  0 when it runs, -1 when
+ * it does not (said why; a stale one reported and removed). */
+int board_status_named(const char *name);
+/* The machine (enum machine_id) of named board name, from its record;
+ * -1 after printing why there is none. */
+int board_named_machine(const char *name);
 /* board_start_named's steps (qemu.c starts the process between them):
  * the state directory made (a stale one removed first) with its lock
  * taken; the record written and the UART socket connected (returns its
  * fd); everything undone after a failure. */
 int board_named_prepare(struct board *b, const char *name);
 int board_named_started(struct board *b, int timeout_ms);
-void board_named_abandon(struct board *b);
+void board_named_abandon(struct board *b); /* (an an521 set's NC boards too) */
 /* In QEMU's child process: its output into the state directory. */
 void board_named_redirect(const struct board *b);
 /* The named board's UART chardev argument for QEMU (board_state.h). */

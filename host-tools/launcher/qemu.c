@@ -82,7 +82,8 @@ static void board_qemu_exec_failed(const char *qemu)
 static int board_plugin_arg(const struct board *b, int board, char *out, size_t cap)
 {
     const struct board_opts *o = &b->opts;
-    if (!o->insn_count_out && !o->insn_series_out && !o->insn_trace_out)
+    if (!o->insn_count_out && !o->insn_series_out && !o->insn_trace_out &&
+        !o->insn_profile_out)
         return 0;
     const char *so = getenv("LINKS1_INSN_PLUGIN");
     char self[PATH_MAX], file[PATH_MAX + 16];
@@ -103,6 +104,11 @@ static int board_plugin_arg(const struct board *b, int board, char *out, size_t 
     if (o->insn_trace_out) {
         board_an521_file(o->insn_trace_out, board, file, sizeof file);
         n += (size_t)snprintf(out + n, n < cap ? cap - n : 0, ",trace=%s", file);
+    }
+    if (o->insn_profile_out) { /* the NCs only: an an521 NC board's every vCPU */
+        board_an521_file(o->insn_profile_out, board, file, sizeof file);
+        n += (size_t)snprintf(out + n, n < cap ? cap - n : 0, ",profile=%s,profile_from=%d",
+                              file, board == 0 ? UNITS_FIRST_NC : 0);
     }
     return 1;
 }
@@ -162,13 +168,21 @@ static void board_ram_arg(const struct board *b, char *out, size_t cap)
 static void board_qemu_exec_nc_board(struct board *b, int board)
 {
     signal(SIGPIPE, SIG_DFL);
-    prctl(PR_SET_PDEATHSIG, SIGTERM);
-    int null = open("/dev/null", O_RDWR);
-    if (null >= 0) {
-        dup2(null, 0);
-        dup2(null, 1); /* it has no link: nothing of it on our terminal */
+    char ram[PATH_MAX + 96], loader[96], plugin[3 * PATH_MAX], name[2 * PATH_MAX + 64];
+    if (b->named) {
+        /* One of a named set: runs on in a session of its own, its output
+         * in the set's log, known by its -name (board_state_nc_alive). */
+        setsid();
+        board_named_redirect(b);
+        board_state_nc_name(b->state_dir, board, name, sizeof name);
+    } else {
+        prctl(PR_SET_PDEATHSIG, SIGTERM);
+        int null = open("/dev/null", O_RDWR);
+        if (null >= 0) {
+            dup2(null, 0);
+            dup2(null, 1); /* it has no link: nothing of it on our terminal */
+        }
     }
-    char ram[PATH_MAX + 96], loader[96], plugin[3 * PATH_MAX];
     board_ram_arg(b, ram, sizeof ram);
     const char *qemu = board_qemu_binary();
     const char *argv[32];
@@ -183,6 +197,10 @@ static void board_qemu_exec_nc_board(struct board *b, int board)
     argv[n++] = "-no-reboot";
     argv[n++] = "-kernel";
     argv[n++] = b->firmware;
+    if (b->named) {
+        argv[n++] = "-name";
+        argv[n++] = name;
+    }
     if (board_plugin_arg(b, board, plugin, sizeof plugin)) {
         argv[n++] = "-plugin";
         argv[n++] = plugin;
@@ -360,6 +378,18 @@ static int board_gdb_socket(struct board *b)
     return 0;
 }
 
+/* The an521 boards' shared file's header (proto/board_map_an521.h),
+ * before any board starts: they find the boards joined there. */
+static void board_an521_header(struct board *b)
+{
+    if (b->opts.machine != MACHINE_AN521)
+        return;
+    wire_put_u32(b->ram + AN521_HDR_MAGIC_OFF, AN521_HDR_MAGIC);
+    wire_put_u32(b->ram + AN521_HDR_BOARDS_OFF,
+                 (uint32_t)(b->opts.ncores / AN521_CORES_PER_BOARD));
+    wire_put_u32(b->ram + AN521_HDR_READY_OFF, 0);
+}
+
 /* The board's RAM as a memfd, mapped here (proto/board_map.h). */
 static int board_ram_create(struct board *b)
 {
@@ -378,14 +408,7 @@ static int board_ram_create(struct board *b)
         return -1;
     }
     b->ram = p;
-    if (b->opts.machine == MACHINE_AN521) {
-        /* The shared file's header (proto/board_map_an521.h), before any
-         * board starts: they find the boards joined there. */
-        wire_put_u32(b->ram + AN521_HDR_MAGIC_OFF, AN521_HDR_MAGIC);
-        wire_put_u32(b->ram + AN521_HDR_BOARDS_OFF,
-                     (uint32_t)(b->opts.ncores / AN521_CORES_PER_BOARD));
-        wire_put_u32(b->ram + AN521_HDR_READY_OFF, 0);
-    }
+    board_an521_header(b);
     return 0;
 }
 
@@ -502,7 +525,8 @@ static int board_start_nc_boards(struct board *b)
         pid_t pid = fork();
         if (pid < 0) {
             fprintf(stderr, "links1: fork (an521 board %d): %s\n", k, strerror(errno));
-            board_stop(b);
+            if (!b->named) /* a named set is abandoned whole by its caller */
+                board_stop(b);
             return -1;
         }
         if (pid == 0)
@@ -535,7 +559,8 @@ static int board_nc_board_reap(struct board *b, int k, int timeout_ms)
 
 /* Appends what NC board k's plugin wrote at path.bK to path, its cores
  * renumbered as the machine's (2k, 2k + 1), and removes it.  The lines are
- * the plugin's: "vcpu V COUNT" (counts) or "V KIND COUNT" (trace marks);
+ * the plugin's: "vcpu V COUNT" (counts 1), "V KIND COUNT" (trace marks,
+ * counts 0) or "ADDR COUNT" (the profile, counts 2);
  * one that does not parse, or names a vCPU the board does not have, is
  * dropped and said. */
 static void board_merge_counts(const char *path, int k, int counts)
@@ -551,10 +576,16 @@ static void board_merge_counts(const char *path, int k, int counts)
         unsigned v, kind;
         unsigned long long c;
         char end;
-        if (counts && sscanf(line, "vcpu %u %llu%c", &v, &c, &end) == 3 && end == '\n' &&
-            v < AN521_CORES_PER_BOARD)
+        unsigned long long addr;
+        if (counts == 2 && strcmp(line, "oom\n") == 0)
+            fputs(line, out); /* the reader refuses the profile */
+        else if (counts == 2 && sscanf(line, "%llx %llu%c", &addr, &c, &end) == 3 &&
+                 end == '\n')
+            fprintf(out, "%08llx %llu\n", addr, c); /* the same image on every board */
+        else if (counts == 1 && sscanf(line, "vcpu %u %llu%c", &v, &c, &end) == 3 &&
+                 end == '\n' && v < AN521_CORES_PER_BOARD)
             fprintf(out, "vcpu %d %llu\n", k * AN521_CORES_PER_BOARD + (int)v, c);
-        else if (!counts && sscanf(line, "%u %u %llu%c", &v, &kind, &c, &end) == 4 &&
+        else if (counts == 0 && sscanf(line, "%u %u %llu%c", &v, &kind, &c, &end) == 4 &&
                  end == '\n' && v < AN521_CORES_PER_BOARD)
             fprintf(out, "%d %u %llu\n", k * AN521_CORES_PER_BOARD + (int)v, kind, c);
         else
@@ -562,7 +593,8 @@ static void board_merge_counts(const char *path, int k, int counts)
     }
     if (bad)
         fprintf(stderr, "links1: %u line(s) of an521 board %d's %s dropped: not the "
-                "plugin's\n", bad, k, counts ? "instruction counts" : "trace marks");
+                "plugin's\n", bad, k, counts == 2 ? "profile" : counts ? "instruction counts"
+                                                                   : "trace marks");
     if (out)
         fclose(out);
     fclose(in);
@@ -577,7 +609,7 @@ static void board_merge_counts(const char *path, int k, int counts)
 static void board_stop_nc_boards(struct board *b)
 {
     const struct board_opts *o = &b->opts;
-    int counting = o->insn_count_out || o->insn_trace_out;
+    int counting = o->insn_count_out || o->insn_trace_out || o->insn_profile_out;
     int any = 0;
     for (int k = 1; k < AN521_MAX_BOARDS; k++) {
         if (b->nc_board_pid[k]) {
@@ -596,6 +628,8 @@ static void board_stop_nc_boards(struct board *b)
             board_merge_counts(o->insn_count_out, k, 1);
         if (o->insn_trace_out)
             board_merge_counts(o->insn_trace_out, k, 0);
+        if (o->insn_profile_out)
+            board_merge_counts(o->insn_profile_out, k, 2);
     }
 }
 
@@ -645,12 +679,6 @@ int board_start(struct board *b, const struct board_opts *o)
 int board_start_named(struct board *b, const struct board_opts *o, const char *name,
                       int timeout_ms)
 {
-    if (o->machine == MACHINE_AN521) {
-        fprintf(stderr, "links1: named boards run on the virt board; an an521 set of boards "
-                "lives for one command (links1 render --machine an521, links1 boot "
-                "--machine an521)\n");
-        return -1;
-    }
     if (board_session_init(b, o) < 0)
         return -1;
     b->named = 1;
@@ -668,11 +696,14 @@ int board_start_named(struct board *b, const struct board_opts *o, const char *n
         board_stop(b);
         return -1;
     }
+    if (b->opts.machine == MACHINE_AN521)
+        b->opts.ram_mb = AN521_SHARED_MB; /* the shared file: every board's PSRAM */
     if (board_named_map_ram(b, 1) < 0 || (o->gdb && board_gdb_socket(b) < 0)) {
         board_named_abandon(b);
         board_stop(b);
         return -1;
     }
+    board_an521_header(b);
     fflush(NULL);
     pid_t pid = fork();
     if (pid < 0) {
@@ -684,14 +715,19 @@ int board_start_named(struct board *b, const struct board_opts *o, const char *n
     if (pid == 0)
         board_qemu_exec(b, -1);
     b->qemu_pid = pid;
-    int fd = board_named_started(b, timeout_ms);
+    if (b->opts.machine == MACHINE_AN521 && board_start_nc_boards(b) < 0) {
+        board_named_abandon(b);
+        board_stop(b);
+        return -1;
+    }
+    int fd = board_named_started(b, timeout_ms); /* the record names every QEMU */
     if (fd < 0) {
         board_named_abandon(b);
         board_stop(b);
         return -1;
     }
     board_session_open(b, fd);
-    if (!o->quiet)
+    if (!o->quiet && b->opts.machine != MACHINE_AN521)
         printf("links1: booting %s on %d cores (DM, RC, %d NCs) as board %s, QEMU pid %d\n",
                b->firmware, o->ncores, o->ncores - 2, name, (int)pid);
     if (board_wait_reported(b, timeout_ms) < 0) {

@@ -51,6 +51,8 @@ struct board_opts {
     int insn_series_ms;
     const char *insn_trace_out; /* non-NULL: the counting plugin writes every trace
                                    mark here (proto/insn_mark.h) */
+    const char *insn_profile_out; /* non-NULL: the counting plugin writes the NCs'
+                                     instructions per block address here */
     int quiet;              /* 1: do not print LOG lines or the board-up line
                                (faults always) */
     int verbose;            /* 1: a line per unit computer reporting in */

@@ -19,6 +19,7 @@
 #include "host-tools/ref/ref_program.h"
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_file.h"
+#include "proto/machines.h"
 #include "render/render.h"
 
 /* The fixed formats: fixed/num.h takes NUM_FRAC_BITS 8..24 (those that
@@ -264,11 +265,16 @@ static double auto_board_cost(const struct auto_run *r, const char *arith)
     char self[PATH_MAX], size[32], img[PATH_MAX], log[PATH_MAX], ncs[8];
     if (self_sibling("links1", self, sizeof self) < 0)
         return -1;
+    const struct machine_limits *m = machine_limits(r->o->machine);
+    if (!m) {
+        fprintf(stderr, "%s: --arith auto: machine %d unknown\n", r->prog, r->o->machine);
+        return -1;
+    }
     snprintf(img, sizeof img, "%s/board-%s.png", r->tmp, arith);
     snprintf(log, sizeof log, "%s/board-%s.log", r->tmp, arith);
     snprintf(ncs, sizeof ncs, "%d", ARITH_AUTO_NCS);
-    const char *extra[] = {"-o", img, "--arith", arith, "--ncs", ncs, "--count-insns", "--quiet",
-                           NULL};
+    const char *extra[] = {"-o", img, "--arith", arith, "--ncs", ncs, "--machine", m->name,
+                           "--count-insns", "--quiet", NULL};
     char *argv[AUTO_MAX_ARGS + 1];
     if (auto_argv(r, "render", argv + 1, size, sizeof size, extra) != 0)
         return -1;
@@ -367,8 +373,11 @@ static const char *auto_refusal(const struct auto_run *r, const char *why)
 static void auto_print(const struct auto_run *r, const struct auto_cand *c, int n, int pick)
 {
     const struct arith_auto_opts *o = r->o;
-    printf("%s: --arith auto (%s, target %.1f dB; pre-render %dx%d against double):", r->prog,
-           o->fpu ? "VFP" : "no FPU", o->target_db, r->ref.width, r->ref.height);
+    const struct machine_limits *m = machine_limits(o->machine);
+    printf("%s: --arith auto (%s%s%s, target %.1f dB; pre-render %dx%d against double):",
+           r->prog, o->target == ARITH_AUTO_BOARD && m ? m->name : "",
+           o->target == ARITH_AUTO_BOARD && m ? " " : "", o->fpu ? "VFP" : "no FPU",
+           o->target_db, r->ref.width, r->ref.height);
     for (int i = 0; i < n; i++) {
         printf("%s %s ", i ? ";" : "", c[i].label);
         if (c[i].refused)

@@ -9,7 +9,8 @@
  *          meet the target on their own
  *   cost   NC guest instructions per pixel of the same pre-render on the
  *          board (links1 render --count-insns) with the candidate's
- *          firmware; the host's fixed formats other than the board's
+ *          firmware of the machine rendering (--machine: on an521 the
+ *          M33's builds, soft and fixed without an FPU); the host's fixed formats other than the board's
  *          Q12.19 run the same code with other shift counts and take the
  *          fixed firmware's count
  *   pick   the cheapest candidate that meets the target; among those
@@ -31,6 +32,8 @@ enum arith_auto_target {
 
 struct arith_auto_opts {
     int fpu;              /* 1: the unit computer has VFP (float a candidate); 0: none */
+    int machine;          /* ARITH_AUTO_BOARD: the machine whose firmware the costs are
+                             counted on (enum machine_id, proto/machines.h) */
     double target_db;
     enum arith_auto_target target;
     int width, height;    /* the render's size (--size), 0: the scene's */

@@ -32,6 +32,10 @@
 #define SELFTEST_IDLE_LATE_MS 20000
 #define SELFTEST_IDLE_MAX_INSNS 10000u /* per idle core per second */
 #define SELFTEST_MAX_IDLE_INSNS 1000000000u /* most --max-insns accepts */
+/* Latency: round trips timed by default, and the default far end (the
+ * first NC: on the an521 boards, on board 1, another process). */
+#define SELFTEST_LATENCY_ROUNDS 200u
+#define SELFTEST_LATENCY_ROUND_MS 2000 /* the host's wait, per round */
 
 struct selftest_args {
     uint32_t stress_mib;  /* stress: MiB through the inter-unit lines */
@@ -39,6 +43,8 @@ struct selftest_args {
     uint32_t max_insns;   /* idle: most instructions per second an idle core
                              may retire */
     int fault_core;       /* fault: the core that executes the fault */
+    uint32_t rounds;      /* latency: round trips timed */
+    int latency_core;     /* latency: the line's far end (1: DM<->RC; an NC: RC<->NC) */
 };
 
 typedef int selftest_fn(struct board *b, const struct selftest_args *a, char *why,
@@ -68,6 +74,7 @@ int selftest_result(struct board *b, uint16_t cmd, int timeout_ms, size_t min_fi
 int selftest_idle_prepare(struct board_opts *o, char *path, size_t cap);
 
 selftest_fn selftest_status, selftest_ping, selftest_imsu, selftest_stress,
-    selftest_link_sink, selftest_link_source, selftest_fault, selftest_idle;
+    selftest_link_sink, selftest_link_source, selftest_fault, selftest_idle,
+    selftest_latency;
 
 #endif

@@ -57,6 +57,33 @@ int selftest_ping(struct board *b, const struct selftest_args *a, char *why, siz
     return c.ok == want && c.total == want ? 0 : -1;
 }
 
+int selftest_latency(struct board *b, const struct selftest_args *a, char *why, size_t cap)
+{
+    struct board_frame r;
+    const uint8_t *f;
+    uint8_t args[LINK_LATENCY_ARGS_SIZE];
+    wire_put_u32(args, a->rounds);
+    wire_put_u16(args + 4, (uint16_t)a->latency_core);
+    int timeout = BOARD_FRAME_TIMEOUT_MS + (int)a->rounds * SELFTEST_LATENCY_ROUND_MS;
+    if (selftest_command(b, CMD_LINE_LATENCY, args, sizeof args, timeout,
+                         LINK_LATENCY_RESULT_SIZE, &r, &f, why, cap) < 0)
+        return -1;
+    struct link_latency_result l;
+    link_latency_result_get(f, &l);
+    if (l.rounds != a->rounds || l.freq == 0 || l.min > l.median || l.median > l.max) {
+        snprintf(why, cap, "the board's result does not hold together: %u rounds (asked %u), "
+                 "%u ticks per second, round trips min %u, median %u, max %u ticks", l.rounds,
+                 a->rounds, l.freq, l.min, l.median, l.max);
+        return -1;
+    }
+    double us = 1e6 / l.freq;
+    snprintf(why, cap, "%u round trips %s<->core %d: median %.1f us (min %.1f, max %.1f; "
+             "%u ticks of a %u Hz counter), one way %.1f us", l.rounds,
+             a->latency_core == 1 ? "DM" : "RC", a->latency_core, l.median * us, l.min * us,
+             l.max * us, l.median, l.freq, l.median * us / 2);
+    return 0;
+}
+
 int selftest_imsu(struct board *b, const struct selftest_args *a, char *why, size_t cap)
 {
     (void)a;

@@ -6,13 +6,21 @@
 #     soft and fixed, Cortex-M33 against Cortex-A15;
 #   - wall time of the frame (the board's render time) with 8 NCs: 5 an521
 #     boards (5 QEMU processes) against one virt board, on this host.
-#   - the replay of an an521 trace (demo.scn 512x480, 8 NCs) on equal-speed
-#     unit computers at 1, 8 and 64 NCs, with the replay's default message
-#     latency and with the an521 boards' own: a message to a unit of another
-#     board waits for the receiver's next tick, half a tick (AN521_TICK_US)
-#     on average, which at the emulated cores' measured speed (the NCs'
-#     instructions over their render time) is that many instructions; at
-#     the replay's 1 MIPS, that many microseconds.
+#   - the latency of one message, measured: `links1 selftest latency`
+#     times LAT_ROUNDS ping round trips one after another on one line with
+#     the board's own counter (RC on board 0 <-> NC 2 on board 1 on the
+#     an521 boards, where the receiver looks at its line at its next tick;
+#     DM <-> RC on board 0; RC <-> NC 2 on the virt board, where a doorbell
+#     interrupt wakes the receiver): the median round trip, half of it one
+#     way;
+#   - the replay of an an521 trace and of a virt trace (demo.scn 512x480,
+#     8 NCs) on equal-speed unit computers at 1, 8 and 64 NCs, with the
+#     replay's default message latency and with each machine's measured
+#     one: the one-way median at the emulated NCs' measured speed (the
+#     NCs' instructions over their render time in that trace's run) is that
+#     many instructions; at the replay's 1 MIPS, that many microseconds.
+#   - where fixed point's instructions go on each machine, function by
+#     function (tests/bench/bench_insn_funcs.sh fixed 12).
 # One run each (the virt board's instruction counts repeat exactly; the
 # an521 NCs' vary by the ticks they take while they wait; wall times vary).
 # Writes a Markdown table to stdout (and BENCH_AN521_OUT if set).
@@ -33,6 +41,37 @@ render_ms() { # MACHINE: the board's render time of the frame, 8 NCs, float
         --quiet >"$out/w.log" 2>&1
     sed -nE 's/.*\(board: prepare [0-9]+ ms, render ([0-9]+) ms.*/\1/p' "$out/w.log" | head -n 1
 }
+LAT_ROUNDS=${LAT_ROUNDS:-1000}
+latency() { # MACHINE CORE: "median min max" round trip in us (links1 selftest latency)
+    "$LINKS1" selftest --quiet --machine "$1" --smp 4 latency --rounds "$LAT_ROUNDS" \
+        --core "$2" >"$out/l.log" 2>&1
+    sed -nE 's/.*: median ([0-9.]+) us \(min ([0-9.]+), max ([0-9.]+);.*/\1 \2 \3/p' "$out/l.log"
+}
+lat_row() { # LABEL "median min max"
+    set -- "$1" $2
+    awk -v l="$1" -v m="$2" -v lo="$3" -v hi="$4" \
+        'BEGIN { printf "| %s | %.1f | %.1f .. %.1f | %.1f |\n", l, m, lo, hi, m / 2 }'
+}
+# trace MACHINE "median min max": renders the trace, prints its row and
+# sets line_MACHINE (the one-way median in instructions of an NC); the
+# replays into $out/rMACHINE.txt and $out/rMACHINE-default.txt.
+trace() {
+    local m=$1 lat=${2%% *} insns render mips one line
+    "$LINKS1" render scenes/demo.scn -o "$out/t.png" --machine "$m" --ncs 8 --size 512x480 \
+        --trace "$out/t-$m.trace" --count-insns --quiet >"$out/t.log" 2>&1
+    insns=$(sed -nE 's/.*NCs total ([0-9]+) .*/\1/p' "$out/t.log")
+    render=$(sed -nE 's/.*\(board: prepare [0-9]+ ms, render ([0-9]+) ms.*/\1/p' "$out/t.log" | head -n 1)
+    mips=$(awk -v i="$insns" -v ms="$render" 'BEGIN { printf "%.1f", i / 8 / (ms * 1000) }')
+    one=$(awk -v l="$lat" 'BEGIN { printf "%.1f", l / 2 }')
+    line=$(awk -v o="$one" -v m="$mips" 'BEGIN { printf "%.0f", o * m }')
+    printf -v "line_$m" '%s' "$line"
+    echo "| $m | $insns | $render | $mips | $one | $line |"
+    "$LINKS1" replay "$out/t-$m.trace" --ncs 1,8,64 >"$out/r$m-default.txt"
+    "$LINKS1" replay "$out/t-$m.trace" --ncs 1,8,64 --line-us "$line" >"$out/r$m.txt"
+}
+speedup() { # REPLAY NCS
+    sed -nE "s/^ncs $2 .*speed-up ([0-9.]+) .*/\1/p" "$out/r$1.txt"
+}
 {
     echo "| arithmetic | A15 (virt) NC instructions / pixel | M33 (an521) | M33 / A15 |"
     echo "| --- | --- | --- | --- |"
@@ -47,25 +86,23 @@ render_ms() { # MACHINE: the board's render time of the frame, 8 NCs, float
     echo "| --- | --- | --- |"
     echo "| board's render time (wall, ms) | $v | $m |"
     echo
-    "$LINKS1" render scenes/demo.scn -o "$out/t.png" --machine an521 --ncs 8 --size 512x480 \
-        --trace "$out/t.trace" --count-insns --quiet >"$out/t.log" 2>&1
-    nc_insns=$(sed -nE 's/.*NCs total ([0-9]+) .*/\1/p' "$out/t.log")
-    render=$(sed -nE 's/.*\(board: prepare [0-9]+ ms, render ([0-9]+) ms.*/\1/p' "$out/t.log" | head -n 1)
-    tick_us=$(sed -nE 's/^#define AN521_TICK_US ([0-9]+)u.*/\1/p' drivers/an521/an521_map.h)
-    # instructions per microsecond of one emulated NC while the frame renders
-    mips=$(awk -v i="$nc_insns" -v ms="$render" 'BEGIN { printf "%.1f", i / 8 / (ms * 1000) }')
-    line_us=$(awk -v t="$tick_us" -v m="$mips" 'BEGIN { printf "%.0f", t / 2 * m }')
-    echo "an521 trace: demo.scn 512x480, 8 NCs: NCs $nc_insns instructions in a $render ms render:"
-    echo "$mips instructions per microsecond per emulated NC; half a tick ($tick_us us / 2) is"
-    echo "$line_us instructions, the replay's --line-us $line_us at 1 MIPS."
+    echo "| one message, median of $LAT_ROUNDS round trips | round trip (us) | min .. max (us) | one way (us) |"
+    echo "| --- | --- | --- | --- |"
+    lat_an=$(latency an521 2) lat_an_rc=$(latency an521 1) lat_virt=$(latency virt 2)
+    lat_row "an521: RC (board 0) <-> NC 2 (board 1)" "$lat_an"
+    lat_row "an521: DM <-> RC (both on board 0)" "$lat_an_rc"
+    lat_row "virt: RC <-> NC 2 (doorbell interrupt)" "$lat_virt"
     echo
-    echo "| NCs | speed-up, default latency (1000 us) | speed-up, the an521 boards' latency ($line_us us) |"
-    echo "| --- | --- | --- |"
-    "$LINKS1" replay "$out/t.trace" --ncs 1,8,64 >"$out/r1.txt"
-    "$LINKS1" replay "$out/t.trace" --ncs 1,8,64 --line-us "$line_us" >"$out/r2.txt"
+    echo "| demo.scn 512x480, 8 NCs | NC instructions | render (ms) | instructions / us / NC | one way (us) | --line-us |"
+    echo "| --- | --- | --- | --- | --- | --- |"
+    trace an521 "$lat_an"
+    trace virt "$lat_virt"
+    echo
+    echo "| NCs | virt trace, default latency (1000 us) | virt trace, its measured latency (${line_virt} us) | an521 trace, default latency | an521 trace, its measured latency (${line_an521} us) |"
+    echo "| --- | --- | --- | --- | --- |"
     for n in 1 8 64; do
-        a=$(sed -nE "s/^ncs $n .*speed-up ([0-9.]+) .*/\1/p" "$out/r1.txt")
-        b=$(sed -nE "s/^ncs $n .*speed-up ([0-9.]+) .*/\1/p" "$out/r2.txt")
-        echo "| $n | ${a}x | ${b}x |"
+        echo "| $n | $(speedup virt-default $n)x | $(speedup virt $n)x | $(speedup an521-default $n)x | $(speedup an521 $n)x |"
     done
+    echo
+    bash tests/bench/bench_insn_funcs.sh fixed 12
 } | tee "${BENCH_AN521_OUT:-/dev/null}"

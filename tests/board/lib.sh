@@ -33,7 +33,7 @@ board_selftest() {
     local names=(boot shutdown link-errors) a
     for a in "$@"; do
         case $a in
-        status|ping|imsu|stress|link-sink|link-source|fault|idle) names+=("$a") ;;
+        status|ping|imsu|stress|link-sink|link-source|fault|idle|latency) names+=("$a") ;;
         esac
     done
     local n line

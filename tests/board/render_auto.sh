@@ -7,6 +7,8 @@
 #             29 dB; scaled to the scene, scale 30 no longer does): without an FPU
 #             the pick is soft float, with VFP float; each board image
 #             equals the host build of the pick
+# on the an521 boards --fpu none picks among the M33's no-FPU builds, its
+# costs counted there;
 # and the pick is explained (candidates with PSNR and cost, the reason);
 # a candidate that refuses the scene (issue 11's tiny sphere in fixed
 # point) misses the target and its refusal is printed;
@@ -36,6 +38,32 @@ auto_case() {
 auto_case render_auto_fixed_suffices "$easy" none "fixed Q12.19" fixed
 auto_case render_auto_fixed_fails "$hard" none soft soft
 auto_case render_auto_fixed_fails_vfp "$hard" vfp float float
+
+# On the an521 boards --fpu none means the M33 without an FPU: the costs
+# are counted on that machine's soft and fixed firmware (the M33's fixed
+# count differs from the A15's above), the pick runs there and equals the
+# host build.
+name=render_auto_an521 out=$RENDER_TMP/render_auto_an521.ppm
+if [ -r "$FW_DIR/an521/links1-fixed.elf" ] && [ -r "$FW_DIR/an521/links1-soft.elf" ]; then
+    if render_board "$name" "$out" "$easy" -o "$out" --arith auto --fpu none --machine an521 --ncs 2; then
+        log=$RENDER_TMP/$name.log
+        fixed_cost() { sed -nE 's/.*fixed Q12\.19 [0-9.]+ dB( \([^)]*\))?, ([0-9]+) insns\/pixel.*/\2/p' "$1"; }
+        a=$(fixed_cost "$log") v=$(fixed_cost "$RENDER_TMP/render_auto_fixed_suffices.log")
+        if grep -q -- '--arith auto (an521 no FPU, target 40.0 dB' "$log" &&
+            grep -q -- '--arith auto picks fixed Q12.19' "$log" && ! grep -qE '(^|; )float ' "$log" &&
+            [ -n "$a" ] && [ -n "$v" ] && [ "$a" != "$v" ]; then
+            echo "PASS ${name}_picks (fixed Q12.19: $a insns/pixel on the M33, $v on the A15)"
+        else
+            echo "FAIL ${name}_picks: not the an521 no-FPU builds (fixed $a insns/pixel here, $v on virt): $(grep 'arith auto' "$log" | tr '\n' ' ')"
+        fi
+        render_same "${name}_board_is_host" "$(render_ref "$easy" fixed $SIZE)" "$out"
+    else
+        echo "FAIL ${name}_board_is_host: the render failed"
+    fi
+else
+    echo "FAIL ${name}_picks: the an521 soft and fixed firmware are not built (run make)"
+    echo "FAIL ${name}_board_is_host: the an521 soft and fixed firmware are not built (run make)"
+fi
 
 # The fixed pick says why: fixed reached the target and soft costs more.
 log=$RENDER_TMP/render_auto_fixed_suffices.log

@@ -493,6 +493,73 @@ static void named_stop_prefix_spares_other(void)
     CHECK(!alive(a) && !alive(ab));
 }
 
+/* An an521 set's record: its shape checked like a virt board's (a whole
+ * number of boards, the shared file's size, one pid for each NC board, a
+ * machine there is). */
+static void named_an521_record_checked(void)
+{
+    char err[4096], rec[200], good[256], bad[256];
+    fresh_base(1);
+    int pid = start("b5", err, sizeof err);
+    CHECK(pid > 0);
+    snprintf(rec, sizeof rec, "%s/b5/board", base);
+    read_file(rec, good, sizeof good);
+    static const struct {
+        const char *rest, *expect;
+    } cases[] = {
+        {"ncores 6\nram_mb 16\narith float\nmachine an521\nnc_pids 1234\n",
+         "nc_pids for 1, not 2 (one for each NC board)"},
+        {"ncores 6\nram_mb 64\narith float\nmachine an521\nnc_pids 1234 1235\n",
+         "ram_mb 64, not 16"},
+        {"ncores 5\nram_mb 16\narith float\nmachine an521\nnc_pids 1234\n",
+         "ncores 5, not an even number"},
+        {"ncores 6\nram_mb 16\narith float\nmachine an521\nnc_pids 1234 1\n",
+         "an NC board's pid 1"},
+        {"ncores 6\nram_mb 16\narith float\nmachine vax\n", "does not read as one"},
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        snprintf(bad, sizeof bad, "pid %d\n%s", pid, cases[i].rest);
+        write_file(rec, bad);
+        CHECK_EQ_INT(session("b5", err, sizeof err), -1);
+        CHECK(strstr(err, cases[i].expect) != NULL);
+        if (!strstr(err, cases[i].expect))
+            show(cases[i].expect, err);
+    }
+    write_file(rec, good);
+    CHECK_EQ_INT(session("b5", err, sizeof err), 0);
+    stop("b5", err, sizeof err);
+    CHECK(!alive(pid));
+}
+
+/* A stale an521 set (its board 0 gone) whose record names, as an NC board,
+ * a process that runs but is not that board (another board's QEMU): the
+ * set is reported and removed, the other process left running. */
+static void named_an521_stale_spares_other(void)
+{
+    char err[4096], dir[200], rec[220], text[256], out[8192];
+    fresh_base(1);
+    int other = start("other", err, sizeof err);
+    CHECK(other > 0);
+    pid_t gone = fork(); /* a pid that no longer runs: the set's board 0 */
+    if (gone == 0)
+        _exit(0);
+    waitpid(gone, NULL, 0);
+    path_of(dir, sizeof dir, base, "set");
+    mkdir(dir, 0700);
+    path_of(rec, sizeof rec, dir, "board");
+    snprintf(text, sizeof text, "pid %d\nncores 4\nram_mb 16\narith float\nmachine an521\n"
+             "nc_pids %d\n", (int)gone, other);
+    write_file(rec, text);
+    list(out, sizeof out);
+    CHECK(strstr(out, "board set: its board 0's QEMU") && strstr(out, "is gone"));
+    CHECK(access(dir, F_OK) != 0);
+    CHECK(alive(other));
+    if (!alive(other) || access(dir, F_OK) == 0)
+        show("list", out);
+    stop("other", err, sizeof err);
+    CHECK(!alive(other));
+}
+
 /* A directory whose lock is held and which has no record yet is a board
  * being started: never removed. */
 static void named_starting_board_left_alone(void)
@@ -568,6 +635,8 @@ int main(int argc, char **argv)
     RUN(named_record_values_checked);
     RUN(named_ram_wrong_size_refused);
     RUN(named_stop_prefix_spares_other);
+    RUN(named_an521_record_checked);
+    RUN(named_an521_stale_spares_other);
     RUN(named_starting_board_left_alone);
     RUN(named_dead_board_named);
     for (int i = 0; i < nstarted; i++)

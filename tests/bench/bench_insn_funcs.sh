@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# tests/bench/bench_insn_funcs.sh [ARITH] [TOP]: where the NCs' guest
+# instructions go, function by function, on the virt board (Cortex-A15)
+# and on the an521 boards (Cortex-M33), for one firmware arithmetic
+# (default fixed).  Each machine renders demo.scn 160x120 on 2 NCs with
+# `links1 render --insn-profile` (the counting plugin's instructions per
+# translated block of the NC cores); each block's start address is
+# attributed to the function of the firmware ELF that holds it (the
+# toolchain's nm, symbols sorted by address).  Prints a Markdown table of
+# the TOP (default 15) functions by the larger of the two counts, per
+# pixel, and the totals.  Instruction counts repeat exactly on virt; the
+# an521 NCs' include the ticks they take while they wait.
+set -eu
+cd "$(dirname "$0")/../.."
+LINKS1=${LINKS1:-build/links1}
+export FW_DIR=${FW_DIR:-build}
+NM=${NM:-arm-none-eabi-nm}
+ARITH=${1:-fixed} TOP=${2:-15}
+W=160 H=120
+out=$(mktemp -d /tmp/links1-bench-funcs.XXXXXX)
+trap 'rm -rf "$out"' EXIT
+
+# profile MACHINE ELF: "FUNCTION COUNT" lines, summed per function, into
+# $out/MACHINE.funcs.
+profile() {
+    local m=$1 elf=$2
+    "$LINKS1" render scenes/demo.scn -o "$out/$m.png" --machine "$m" --arith "$ARITH" \
+        --ncs 2 --size ${W}x$H --insn-profile "$out/$m.prof" --quiet >"$out/$m.log" 2>&1 || {
+        echo "bench_insn_funcs: links1 render --machine $m failed:" >&2
+        tail -n 5 "$out/$m.log" >&2
+        exit 1
+    }
+    if grep -q '^oom' "$out/$m.prof"; then
+        echo "bench_insn_funcs: the plugin ran out of memory on $m" >&2
+        exit 1
+    fi
+    # Function symbols (a Thumb function's address has bit 0 set: cleared
+    # on the last hex digit), then the profile's blocks, both by address
+    # (8 lowercase hex digits sort as numbers); each block goes to the last
+    # function at or below it.
+    "$NM" -n --defined-only "$elf" |
+        awk '$2 ~ /^[TtWw]$/ && length($1) == 8 {
+                 d = index("0123456789abcdef", substr($1, 8, 1)) - 1
+                 d -= d % 2
+                 print substr($1, 1, 7) substr("0123456789abcdef", d + 1, 1), 0, $3 }' \
+            >"$out/$m.syms"
+    awk '{ print $1, 1, $2 }' "$out/$m.prof" >"$out/$m.blocks"
+    LC_ALL=C sort -s -k1,1 -k2,2n "$out/$m.syms" "$out/$m.blocks" |
+        awk '$2 == 0 { f = $3; next } { c[f == "" ? "?" : f] += $3 }
+             END { for (k in c) printf "%s %.0f\n", k, c[k] }' >"$out/$m.funcs"
+}
+profile virt "$FW_DIR/links1-$ARITH.elf"
+profile an521 "$FW_DIR/an521/links1-$ARITH.elf"
+px=$((W * H))
+echo "NCs' guest instructions per pixel by function, demo.scn ${W}x$H, 2 NCs, $ARITH"
+echo "(bash tests/bench/bench_insn_funcs.sh $ARITH $TOP):"
+echo
+echo "| function | A15 (virt) | M33 (an521) | M33 - A15 |"
+echo "| --- | --- | --- | --- |"
+awk -v px=$px -v top="$TOP" '
+    FNR == 1 { file++ }
+    { v[$1, file] = $2; names[$1] = 1; tot[file] += $2 }
+    END {
+        n = 0
+        for (k in names) {
+            a = v[k, 1] + 0; b = v[k, 2] + 0
+            key[++n] = k; big[n] = a > b ? a : b
+        }
+        for (i = 1; i <= n; i++)       # selection of the TOP largest
+            for (j = i + 1; j <= n; j++)
+                if (big[j] > big[i]) { t = big[i]; big[i] = big[j]; big[j] = t
+                                       t = key[i]; key[i] = key[j]; key[j] = t }
+        for (i = 1; i <= n && i <= top; i++) {
+            a = v[key[i], 1] / px; b = v[key[i], 2] / px
+            printf "| %s | %.0f | %.0f | %+.0f |\n", key[i], a, b, b - a
+        }
+        printf "| (all) | %.0f | %.0f | %+.0f |\n", tot[1] / px, tot[2] / px, (tot[2] - tot[1]) / px
+    }' "$out/virt.funcs" "$out/an521.funcs"
