@@ -25,6 +25,7 @@
 #include "host-tools/scene/scene_file.h"
 #include "host-tools/scene/scene_paper.h"
 #include "proto/areas.h"
+#include "render/render.h"
 
 #define RENDER_MAX_JOBS 16 /* SCENE -o OUT pairs in one run */
 
@@ -636,6 +637,11 @@ static void render_summary(const char *path, const struct link_render_stats *s,
            (unsigned long long)s->prim_tests, (unsigned long long)s->primary_prim_tests,
            s->precision_lost_pixels, s->dm_high,
            s->rc_high, s->nc_high_max, s->nc_private);
+    static int lost_told; /* the meaning, once a command */
+    if (s->precision_lost_pixels && !lost_told) {
+        lost_told = 1;
+        printf("links1 render: %s\n", RENDER_LOST_MEANING);
+    }
     fflush(stdout);
 }
 

@@ -183,6 +183,11 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
                 (unsigned)ctx.stats.precision_lost_pixels,
                 (unsigned long long)ctx.stats.box_tests, (unsigned long long)ctx.stats.prim_tests,
                 secs, cpu);
+    static int lost_told; /* the meaning, once a command */
+    if (rc == 0 && ctx.stats.precision_lost_pixels && !lost_told) {
+        lost_told = 1;
+        fprintf(stderr, "links1 ref: %s\n", RENDER_LOST_MEANING);
+    }
     free(row);
     image_free(&img);
     return rc;
