@@ -68,8 +68,10 @@ int sd_map_read_image(struct sd_map *m, const char *path, char *err, size_t errl
 int sd_map_read_image_fd(struct sd_map *m, int fd, const char *path, char *err, size_t errlen);
 
 /* A normal map texel of the compiled form (proto/scene_format.h) from the
- * tangent-space normal v (x along T, y along B, z along n): v normalized
- * and each component times SCN_MAP_NORMAL_ONE rounded to a signed byte.
+ * tangent-space normal v (x along T, y along B, z along n): each component
+ * of v times SCN_MAP_NORMAL_ONE rounded to a signed byte, v normalized
+ * first unless the rounded vector's length is already within sqrt(3)/2 of
+ * SCN_MAP_NORMAL_ONE (so texels written as byte/127 read back the same).
  * 0, or -1 when v is not finite, has no length or its z comes out under 1
  * (it does not point out of the surface). */
 int sd_map_normal_texel(const double v[3], uint8_t out[3]);

@@ -63,7 +63,14 @@ int sd_map_normal_texel(const double v[3], uint8_t out[3])
         return -1;
     long q[3];
     for (int k = 0; k < 3; k++)
-        q[k] = lround(v[k] / len * SCN_MAP_NORMAL_ONE);
+        q[k] = lround(v[k] * SCN_MAP_NORMAL_ONE);
+    /* already of unit length within the bytes' rounding (|q| within
+     * sqrt(3)/2 of 127): kept as rounded, so a texel written as q/127
+     * (sd_write_text) reads back as q; otherwise normalized first */
+    double qlen = sqrt((double)(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]));
+    if (fabs(qlen - SCN_MAP_NORMAL_ONE) > 0.8660254037844386)
+        for (int k = 0; k < 3; k++)
+            q[k] = lround(v[k] / len * SCN_MAP_NORMAL_ONE);
     if (q[2] < 1)
         return -1;
     for (int k = 0; k < 3; k++)

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "host-tools/scene/scene_desc.h"
+#include "host-tools/scene/scene_import.h"
 #include "tests/check.h"
 
 #define HEAD "light point { position 0 5 0 }\nmaterial m { }\n"
@@ -255,6 +256,7 @@ static void test_normal_and_attribute_maps(void)
     int rc = sd_parse_text("t.scn",
                            HEAD "map n normal { size 2 1 texels 0 0 1  0.3 0 0.4 repeat 2 3 }\n"
                                 "map a attribute { size 1 2 texels 0.4 1 }\n"
+                                "map r normal { size 1 1 texels 0.0472440945 0 0.992125984 }\n"
                                 "material k { src 0.5 trc 0.5 normal_map n dic_map a drc_map a "
                                 "src_map a trc_map a }\nsphere { material k radius 1 }\n",
                            &s, err, sizeof err);
@@ -263,8 +265,12 @@ static void test_normal_and_attribute_maps(void)
         printf("  %s\n", err);
         return;
     }
-    CHECK_EQ_INT(s.n_maps, 2);
+    CHECK_EQ_INT(s.n_maps, 3);
     CHECK_EQ_INT(s.maps[0].kind, SCN_MAP_NORMAL);
+    /* bytes of unit length within their rounding are kept: 6/127 0
+     * 126/127 is 6 0 126 (renormalized it would be 6 0 127) */
+    static const uint8_t want_r[3] = {6, 0, 126};
+    CHECK(memcmp(s.maps[2].texels, want_r, 3) == 0);
     /* (0 0 1) -> 0 0 127; (0.3 0 0.4) -> (0.6 0 0.8) * 127 = 76.2, 0, 101.6 */
     static const uint8_t want_n[6] = {0, 0, 127, 76, 0, 102};
     CHECK(memcmp(s.maps[0].texels, want_n, 6) == 0);
@@ -277,6 +283,25 @@ static void test_normal_and_attribute_maps(void)
     CHECK_EQ_INT(k->dic_map + k->drc_map + k->src_map + k->trc_map, 4);
     CHECK_EQ_INT(k->bump_map, -1);
     CHECK_EQ_INT(k->colour_map, -1);
+    /* written as text (sd_write_text) and read back: the same bytes, maps */
+    char *written = NULL;
+    size_t wlen = 0;
+    FILE *w = open_memstream(&written, &wlen);
+    CHECK(w && sd_write_text(&s, NULL, w) == 0);
+    if (w)
+        fclose(w);
+    struct sd_scene back;
+    rc = written ? sd_parse_text("w.scn", written, &back, err, sizeof err) : -1;
+    CHECK_EQ_INT(rc, 0);
+    if (rc == 0) {
+        CHECK(back.n_maps == 3 && back.maps[0].kind == SCN_MAP_NORMAL &&
+              memcmp(back.maps[0].texels, want_n, 6) == 0 && back.maps[1].texels[0] == 102 &&
+              memcmp(back.maps[2].texels, want_r, 3) == 0);
+        CHECK(back.materials[1].normal_map == 0 && back.materials[1].trc_map == 1 &&
+              back.materials[1].dic_map == 1);
+        sd_free(&back);
+    }
+    free(written);
     sd_free(&s);
 
     /* from an image: the usual encoding; 128 128 255 is the flat normal */
