@@ -96,8 +96,10 @@
 #define SCN_MAGIC_1 '1'
 #define SCN_MAGIC_2 'S'
 #define SCN_MAGIC_3 'C'
-#define SCN_VERSION 4 /* 2: 32-bit cluster indices; 3: VIEW carries min_weight;
-                         4: VIEW carries density_steps.  VIEW_KEYS (kind 11)
+#define SCN_VERSION 5 /* 2: 32-bit cluster indices; 3: VIEW carries min_weight;
+                         4: VIEW carries density_steps; 5: MATERIALS 52
+                         bytes (normal and attribute maps), map kinds
+                         NORMAL and ATTRIBUTE.  VIEW_KEYS (kind 11)
                          came later without a new version: a file without
                          it is what it was, and a loader from before it
                          refuses one with it as an unknown section kind */
@@ -210,7 +212,7 @@ enum scn_light_kind {
 };
 
 /* ---------------------------------------------------- MATERIALS record */
-#define SCN_MAT_SIZE 48
+#define SCN_MAT_SIZE 52
 #define SCN_MAT_COLOUR 0        /* 3 x f32, F, each 0..1 */
 #define SCN_MAT_DIC 12          /* f32 0..1: ambient coefficient (per light) */
 #define SCN_MAT_DRC 16          /* f32 0..1: diffuse coefficient */
@@ -223,7 +225,14 @@ enum scn_light_kind {
 #define SCN_MAT_PHONG 36        /* u16: n of cos^n, 0..SCN_MAX_PHONG, 0 = no highlight */
 #define SCN_MAT_COLOUR_MAP 38   /* u16: map index (a COLOUR map) or SCN_NO_INDEX */
 #define SCN_MAT_BUMP_MAP 40     /* u16: map index (a BUMP map) or SCN_NO_INDEX */
-#define SCN_MAT_RESERVED 42     /* 6 bytes: 0 */
+#define SCN_MAT_NORMAL_MAP 42   /* u16: map index (a NORMAL map) or SCN_NO_INDEX;
+                                   not with a bump map */
+/* u16 each: map index (an ATTRIBUTE map) or SCN_NO_INDEX; the map's value
+ * (0..1) multiplies that coefficient where the surface is hit */
+#define SCN_MAT_DIC_MAP 44
+#define SCN_MAT_DRC_MAP 46
+#define SCN_MAT_SRC_MAP 48
+#define SCN_MAT_TRC_MAP 50
 #define SCN_NO_INDEX 0xffffu    /* "no map" */
 #define SCN_NO_CLUSTER 0xffffffffu /* "no parent" (cluster 0 only) */
 
@@ -236,16 +245,26 @@ enum scn_light_kind {
 #define SCN_MAP_FIRST 8         /* u32: first byte in TEXELS */
 #define SCN_MAP_REPEAT_U 12     /* f32 > 0: tiles across u */
 #define SCN_MAP_REPEAT_V 16     /* f32 > 0: tiles across v */
-#define SCN_MAP_BUMP_DEPTH 20   /* f32 >= 0: bump tilt per unit slope */
+#define SCN_MAP_BUMP_DEPTH 20   /* f32 >= 0: bump tilt per unit slope; 0 for
+                                   other kinds */
 
 /* COLOUR: 3 bytes per texel (R, G, B).  BUMP: 1 byte per texel, a height
- * whose gradient tilts the normal.  Row-major, row 0 at v = 0. */
+ * whose gradient tilts the normal.  NORMAL: 3 signed bytes per texel (two's
+ * complement), the tangent-space normal (x along T, y along B = N x T,
+ * z along N) times SCN_MAP_NORMAL_ONE, unit length up to that rounding,
+ * z >= 1.  ATTRIBUTE: 1 byte per texel, a value 0..255 standing for 0..1.
+ * Row-major, row 0 at v = 0. */
 enum scn_map_kind {
     SCN_MAP_COLOUR = 1,
     SCN_MAP_BUMP = 2,
+    SCN_MAP_NORMAL = 3,
+    SCN_MAP_ATTRIBUTE = 4,
 };
 #define SCN_MAP_COLOUR_BYTES 3
 #define SCN_MAP_BUMP_BYTES 1
+#define SCN_MAP_NORMAL_BYTES 3
+#define SCN_MAP_ATTRIBUTE_BYTES 1
+#define SCN_MAP_NORMAL_ONE 127 /* a NORMAL texel's component 1.0 */
 
 /* ------------------------------------------------------- CLUSTERS record */
 #define SCN_CLUSTER_SIZE 60

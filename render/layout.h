@@ -36,7 +36,7 @@ typedef struct {
 /* The board's record sizes, in the order of render_layout_t. */
 #define RENDER_BOARD_BLOB 188
 #define RENDER_BOARD_LIGHT 48
-#define RENDER_BOARD_MATERIAL 44
+#define RENDER_BOARD_MATERIAL 52
 #define RENDER_BOARD_MAP 24
 #define RENDER_BOARD_CLUSTER 60
 #define RENDER_BOARD_PRIM 72

@@ -48,7 +48,9 @@
  * trace_straight's 160 more bytes out of every level; the error bound
  * adds 56 to the leaf (trace_lights, trace_straight, trace_nearest), the
  * ambient's choice of light 8 more in float (trace_lights: 600 bytes in
- * float, 592 in fixed). */
+ * float, 592 in fixed); the attribute maps' material (render_ctx_t.look)
+ * 8 more in float's trace_shade and trace_lights (trace_ray 144 +
+ * trace_shade 264 = 408 a level, trace_lights 616), none in fixed. */
 #if defined(LINKS1_NUM_DOUBLE)
 /* double (the board's double-precision VFP build): every num_t twice as
  * wide; trace_ray + trace_shade take 216 + 472 = 688 bytes a level, and

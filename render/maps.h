@@ -1,4 +1,5 @@
-/* render/maps.h: colour and bump maps (2-D arrays) looked up at (u, v). */
+/* render/maps.h: colour, bump, normal and attribute maps (2-D arrays)
+ * looked up at (u, v). */
 #ifndef LINKS1_RENDER_MAPS_H
 #define LINKS1_RENDER_MAPS_H
 
@@ -17,6 +18,22 @@ int map_imprecise(const scene_map_t *m, num_t uv_error);
 
 /* Bilinear colour at (u, v), repeated repeat_u x repeat_v times over [0,1). */
 rgb_t map_colour(const scene_map_t *m, num_t u, num_t v);
+
+/* Bilinear value 0..1 of an ATTRIBUTE map at (u, v), as map_colour (and
+ * with map_colour's precision test, map_imprecise). */
+num_t map_attribute(const scene_map_t *m, num_t u, num_t v);
+
+/* Normal of a NORMAL map at (u, v), nearest texel (x, y, z) / 127 in the
+ * tangent frame of map_bump: normalize(x*T + y*B + z*n), B = n x T.  A
+ * texel (0, 0, z), the flat normal, gives n itself, not renormalized. */
+vec3_t map_normal(const scene_map_t *m, num_t u, num_t v, vec3_t n, vec3_t tangent);
+
+/* 1 when the texel map_normal picks at (u, v) could, under the lookup's
+ * error (map_texel_error), be a neighbour holding another normal: the
+ * normal jumps between texels by any amount, so the pixel counts as lost
+ * precision.  Neighbours holding the same normal are no uncertainty (a
+ * flat map never is); an error of half a texel or more always is. */
+int map_normal_uncertain(const scene_map_t *m, num_t u, num_t v, num_t uv_error);
 
 /* Normal n tilted by the height map's slope at (u, v): with T the tangent,
  * B = n x T and slopes su, sv the central differences of neighbouring

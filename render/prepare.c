@@ -24,7 +24,7 @@ const char *render_status_name(render_status_t status)
     case RENDER_ERR_CLUSTER: return "bad cluster parent, or nesting deeper than RENDER_MAX_CLUSTER_DEPTH";
     case RENDER_ERR_PRIM: return "primitive with a bad kind, cluster or material index";
     case RENDER_ERR_DENSITY: return "density sphere: components out of range or above RENDER_MAX_DENSITY_COMPONENTS, threshold <= 0, or density_steps outside SCN_MIN_DENSITY_STEPS..SCN_MAX_DENSITY_STEPS";
-    case RENDER_ERR_MAP: return "material map index, kind or size invalid (RENDER_MAX_MAP_SIZE)";
+    case RENDER_ERR_MAP: return "material map index, kind or size invalid (RENDER_MAX_MAP_SIZE), or both a bump and a normal map";
     case RENDER_ERR_KEY: return "cluster keys outside the scene's key array";
     case RENDER_ERR_CAMERA: return "camera eye equals look_at, or up is parallel to the view";
     case RENDER_ERR_SINGULAR: return "a cluster transform cannot be inverted";
@@ -271,15 +271,21 @@ static render_status_t prep_check(const scene_t *s)
     }
     for (uint32_t i = 0; i < s->material_count; i++) {
         const scene_material_t *m = &s->materials[i];
-        uint16_t maps[2] = {m->colour_map, m->bump_map};
-        for (int k = 0; k < 2; k++) {
+        uint16_t maps[7] = {m->colour_map, m->bump_map, m->normal_map, m->dic_map,
+                            m->drc_map,    m->src_map,  m->trc_map};
+        static const uint8_t kinds[7] = {SCENE_MAP_COLOUR,    SCENE_MAP_BUMP,      SCENE_MAP_NORMAL,
+                                         SCENE_MAP_ATTRIBUTE, SCENE_MAP_ATTRIBUTE, SCENE_MAP_ATTRIBUTE,
+                                         SCENE_MAP_ATTRIBUTE};
+        if (m->bump_map != SCENE_NONE && m->normal_map != SCENE_NONE)
+            return RENDER_ERR_MAP;
+        for (int k = 0; k < 7; k++) {
             if (maps[k] == SCENE_NONE)
                 continue;
             if (maps[k] >= s->map_count)
                 return RENDER_ERR_MAP;
             const scene_map_t *map = &s->maps[maps[k]];
-            if (map->kind != (k == 0 ? SCENE_MAP_COLOUR : SCENE_MAP_BUMP) || !map->texels ||
-                map->width < 1 || map->width > RENDER_MAX_MAP_SIZE || map->height < 1 ||
+            if (map->kind != kinds[k] || !map->texels || map->width < 1 ||
+                map->width > RENDER_MAX_MAP_SIZE || map->height < 1 ||
                 map->height > RENDER_MAX_MAP_SIZE)
                 return RENDER_ERR_MAP;
         }

@@ -59,7 +59,7 @@ static void reloc_scene(reloc_t *r, scene_t *s)
         return;
     for (uint32_t i = 0; i < s->map_count; i++) {
         scene_map_t *m = &maps[i];
-        size_t bytes = (size_t)m->width * m->height * (m->kind == SCENE_MAP_COLOUR ? 3u : 1u);
+        size_t bytes = (size_t)m->width * m->height * scene_map_texel_bytes(m->kind);
         const uint8_t *texels = RELOC(r, m->texels, bytes, "scene.maps[].texels");
         if (r->write)
             m->texels = texels;

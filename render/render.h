@@ -218,6 +218,11 @@ typedef struct {
                                  frame */
     render_stats_t stats;
     uint8_t pixel_lost;     /* set while tracing one pixel */
+    /* render/trace.c's: a hit's material with its attribute maps applied,
+     * one per nesting of the hits that use one at a time (shading, the
+     * straight transmission past the depth limit, a shadow ray's
+     * crossings); here rather than in every level's stack frame */
+    scene_material_t look[3];
 } render_ctx_t;
 
 typedef enum {

@@ -88,13 +88,35 @@ typedef struct {
                           0 = no highlight */
     uint16_t colour_map; /* index into scene maps (kind COLOUR) or SCENE_NONE */
     uint16_t bump_map;   /* index into scene maps (kind BUMP) or SCENE_NONE */
+    uint16_t normal_map; /* index into scene maps (kind NORMAL) or SCENE_NONE;
+                            never together with bump_map */
+    /* attribute maps (kind ATTRIBUTE) or SCENE_NONE: the map's value 0..1
+     * at the hit multiplies dic, drc, src, trc there */
+    uint16_t dic_map, drc_map, src_map, trc_map;
 } scene_material_t;
 
+/* Every map index of m set to SCENE_NONE (a material built in code). */
+static inline void scene_material_no_maps(scene_material_t *m)
+{
+    m->colour_map = m->bump_map = m->normal_map = SCENE_NONE;
+    m->dic_map = m->drc_map = m->src_map = m->trc_map = SCENE_NONE;
+}
+
 enum scene_map_kind {
-    SCENE_MAP_COLOUR = 0, /* texels: 3 bytes R,G,B per texel, 0..255 */
-    SCENE_MAP_BUMP = 1,   /* texels: 1 byte height per texel, 0..255; the
-                             normal is tilted by the height gradient */
+    SCENE_MAP_COLOUR = 0,   /* texels: 3 bytes R,G,B per texel, 0..255 */
+    SCENE_MAP_BUMP = 1,     /* texels: 1 byte height per texel, 0..255; the
+                               normal is tilted by the height gradient */
+    SCENE_MAP_NORMAL = 2,   /* texels: 3 signed bytes per texel, the
+                               tangent-space normal times
+                               SCN_MAP_NORMAL_ONE (proto/scene_format.h), z >= 1 */
+    SCENE_MAP_ATTRIBUTE = 3 /* texels: 1 byte per texel, 0..255 = 0..1 */
 };
+
+/* Bytes per texel of a map of that kind. */
+static inline unsigned scene_map_texel_bytes(uint8_t kind)
+{
+    return kind == SCENE_MAP_COLOUR || kind == SCENE_MAP_NORMAL ? 3u : 1u;
+}
 
 /* A 2-D array mapped onto surfaces through (u, v) in [0,1) (repeated). */
 typedef struct {

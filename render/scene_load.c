@@ -457,23 +457,34 @@ static scene_load_status_t load_lights(struct load *L, scene_light_t *out)
     return SCENE_LOAD_OK;
 }
 
+/* The loader's kind of a map record's kind, or -1 when unknown. */
+static int load_map_kind(uint16_t kind)
+{
+    switch (kind) {
+    case SCN_MAP_COLOUR: return SCENE_MAP_COLOUR;
+    case SCN_MAP_BUMP: return SCENE_MAP_BUMP;
+    case SCN_MAP_NORMAL: return SCENE_MAP_NORMAL;
+    case SCN_MAP_ATTRIBUTE: return SCENE_MAP_ATTRIBUTE;
+    default: return -1;
+    }
+}
+
 static scene_load_status_t load_maps(struct load *L, scene_map_t *out, uint8_t *texels)
 {
     uint32_t n_texels = L->sec[SCN_SEC_TEXELS].present ? L->sec[SCN_SEC_TEXELS].count : 0;
     const uint8_t *src = L->sec[SCN_SEC_TEXELS].present ? load_rec(L, SCN_SEC_TEXELS, 0) : 0;
     for (uint32_t i = 0; i < L->sec[SCN_SEC_MAPS].count; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_MAPS, i);
-        uint16_t kind = wire_get_u16(p + SCN_MAP_KIND);
+        int kind = load_map_kind(wire_get_u16(p + SCN_MAP_KIND));
         uint16_t w = wire_get_u16(p + SCN_MAP_WIDTH), h = wire_get_u16(p + SCN_MAP_HEIGHT);
         uint32_t first = wire_get_u32(p + SCN_MAP_FIRST);
-        if (kind != SCN_MAP_COLOUR && kind != SCN_MAP_BUMP)
+        if (kind < 0)
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "map ", i, "unknown kind");
         if (wire_get_u16(p + SCN_MAP_RESERVED) != 0)
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "map ", i, "reserved field not zero");
         if (w < 1 || w > SCN_MAX_MAP_SIDE || h < 1 || h > SCN_MAX_MAP_SIDE)
             return load_bad(L, SCENE_LOAD_ERR_LIMIT, "map ", i, "size outside 1..1024");
-        uint32_t bytes = (uint32_t)w * h *
-                         (kind == SCN_MAP_COLOUR ? SCN_MAP_COLOUR_BYTES : SCN_MAP_BUMP_BYTES);
+        uint32_t bytes = (uint32_t)w * h * scene_map_texel_bytes((uint8_t)kind);
         if (first > n_texels || bytes > n_texels - first)
             return load_bad(L, SCENE_LOAD_ERR_INDEX, "map ", i,
                             "texels outside the texel section");
@@ -482,8 +493,15 @@ static scene_load_status_t load_maps(struct load *L, scene_map_t *out, uint8_t *
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "map ", i, "repeat not > 0 and finite");
         if (!load_in(wire_get_u32(p + SCN_MAP_BUMP_DEPTH), 0.0f, SCN_MAX_FACTOR))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "map ", i, "bump depth out of range");
+        /* a normal map's z (along N) is at least 1: every texel's normal
+         * has a length normalize can take, and faces out of the surface */
+        if (kind == SCENE_MAP_NORMAL)
+            for (uint32_t t = 0; t < (uint32_t)w * h; t++)
+                if ((int8_t)src[first + 3 * t + 2] < 1)
+                    return load_bad(L, SCENE_LOAD_ERR_VALUE, "map ", i,
+                                    "normal map texel with z < 1 (not out of the surface)");
         scene_map_t *m = &out[i];
-        m->kind = kind == SCN_MAP_COLOUR ? SCENE_MAP_COLOUR : SCENE_MAP_BUMP;
+        m->kind = (uint8_t)kind;
         m->width = w;
         m->height = h;
         m->texels = texels + first;
@@ -496,10 +514,19 @@ static scene_load_status_t load_maps(struct load *L, scene_map_t *out, uint8_t *
     return SCENE_LOAD_OK;
 }
 
+/* A material's map index at off: *out its index or SCENE_NONE; 0 when it
+ * names no map of that kind. */
+static int load_map_index(struct load *L, const scene_map_t *maps, const uint8_t *p,
+                          unsigned off, uint8_t kind, uint16_t *out)
+{
+    uint16_t i = wire_get_u16(p + off);
+    *out = i == SCN_NO_INDEX ? SCENE_NONE : i;
+    return i == SCN_NO_INDEX || (i < L->sec[SCN_SEC_MAPS].count && maps[i].kind == kind);
+}
+
 static scene_load_status_t load_materials(struct load *L, const scene_map_t *maps,
                                           scene_material_t *out)
 {
-    uint32_t n_maps = L->sec[SCN_SEC_MAPS].count;
     for (uint32_t i = 0; i < L->sec[SCN_SEC_MATERIALS].count; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_MATERIALS, i);
         if (!load_units(p + SCN_MAT_COLOUR, 8, 1.0f))
@@ -510,19 +537,25 @@ static scene_load_status_t load_materials(struct load *L, const scene_map_t *map
         uint16_t phong = wire_get_u16(p + SCN_MAT_PHONG);
         if (phong > SCN_MAX_PHONG)
             return load_bad(L, SCENE_LOAD_ERR_LIMIT, "material ", i, "phong n over 1024");
-        for (int r = 0; r < 6; r++)
-            if (p[SCN_MAT_RESERVED + r] != 0)
-                return load_bad(L, SCENE_LOAD_ERR_VALUE, "material ", i,
-                                "reserved bytes not zero");
-        uint16_t cmap = wire_get_u16(p + SCN_MAT_COLOUR_MAP);
-        uint16_t bmap = wire_get_u16(p + SCN_MAT_BUMP_MAP);
-        if (cmap != SCN_NO_INDEX && (cmap >= n_maps || maps[cmap].kind != SCENE_MAP_COLOUR))
+        scene_material_t *m = &out[i];
+        if (!load_map_index(L, maps, p, SCN_MAT_COLOUR_MAP, SCENE_MAP_COLOUR, &m->colour_map))
             return load_bad(L, SCENE_LOAD_ERR_INDEX, "material ", i,
                             "colour map index out of range or not a colour map");
-        if (bmap != SCN_NO_INDEX && (bmap >= n_maps || maps[bmap].kind != SCENE_MAP_BUMP))
+        if (!load_map_index(L, maps, p, SCN_MAT_BUMP_MAP, SCENE_MAP_BUMP, &m->bump_map))
             return load_bad(L, SCENE_LOAD_ERR_INDEX, "material ", i,
                             "bump map index out of range or not a bump map");
-        scene_material_t *m = &out[i];
+        if (!load_map_index(L, maps, p, SCN_MAT_NORMAL_MAP, SCENE_MAP_NORMAL, &m->normal_map))
+            return load_bad(L, SCENE_LOAD_ERR_INDEX, "material ", i,
+                            "normal map index out of range or not a normal map");
+        if (m->bump_map != SCENE_NONE && m->normal_map != SCENE_NONE)
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "material ", i,
+                            "both a bump map and a normal map");
+        if (!load_map_index(L, maps, p, SCN_MAT_DIC_MAP, SCENE_MAP_ATTRIBUTE, &m->dic_map) ||
+            !load_map_index(L, maps, p, SCN_MAT_DRC_MAP, SCENE_MAP_ATTRIBUTE, &m->drc_map) ||
+            !load_map_index(L, maps, p, SCN_MAT_SRC_MAP, SCENE_MAP_ATTRIBUTE, &m->src_map) ||
+            !load_map_index(L, maps, p, SCN_MAT_TRC_MAP, SCENE_MAP_ATTRIBUTE, &m->trc_map))
+            return load_bad(L, SCENE_LOAD_ERR_INDEX, "material ", i,
+                            "dic, drc, src or trc map index out of range or not an attribute map");
         m->colour = load_rgb(p + SCN_MAT_COLOUR);
         m->dic = load_num(p + SCN_MAT_DIC);
         m->drc = load_num(p + SCN_MAT_DRC);
@@ -531,8 +564,6 @@ static scene_load_status_t load_materials(struct load *L, const scene_map_t *map
         m->fresnel = load_num(p + SCN_MAT_FRESNEL);
         m->ior = load_num(p + SCN_MAT_IOR);
         m->phong_n = phong;
-        m->colour_map = cmap == SCN_NO_INDEX ? SCENE_NONE : cmap;
-        m->bump_map = bmap == SCN_NO_INDEX ? SCENE_NONE : bmap;
         if (num_gt(num_add(m->src, m->trc), num_add(NUM_ONE, NUM_C(0.001))))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "material ", i, "src + trc over 1");
     }

@@ -314,10 +314,30 @@ static int trace_nearest(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
 
 /* ------------------------------------------------------------- shading */
 
-/* Colour F at the hit (material colour times colour map) and the shading
- * normal (bump map applied). */
-static void trace_surface_look(render_ctx_t *ctx, const hit_t *hit, const scene_material_t *m,
-                               rgb_t *colour, vec3_t *normal)
+/* One attribute map's value at the hit times coefficient c (c itself
+ * without a map). */
+static num_t trace_attribute(render_ctx_t *ctx, const hit_t *hit, uint16_t map, num_t c,
+                             num_t uv_error)
+{
+    if (map == SCENE_NONE)
+        return c;
+    const scene_map_t *a = &ctx->frame->scene->maps[map];
+    if (map_imprecise(a, uv_error))
+        ctx->pixel_lost = 1;
+    return num_mul(c, map_attribute(a, hit->u, hit->v));
+}
+
+/* Which ctx->look a hit's material goes to: the shaded hit's (a deeper
+ * level's overwrites it once the level has used it), the straight
+ * transmission's crossings', a shadow ray's crossings'. */
+enum trace_look { TRACE_LOOK_SHADE, TRACE_LOOK_STRAIGHT, TRACE_LOOK_SHADOW };
+
+/* Colour F at the hit (material colour times colour map), the shading
+ * normal (bump or normal map applied) and the material there: m, or a copy
+ * in ctx->look[slot] with dic, drc, src, trc times their attribute maps. */
+static const scene_material_t *trace_surface_look(render_ctx_t *ctx, const hit_t *hit,
+                                                  const scene_material_t *m, rgb_t *colour,
+                                                  vec3_t *normal, enum trace_look slot)
 {
     const scene_t *s = ctx->frame->scene;
     num_t uv_error = ctx->frame->prims[hit->prim].uv_error;
@@ -334,6 +354,22 @@ static void trace_surface_look(render_ctx_t *ctx, const hit_t *hit, const scene_
         if (map_bump_uncertain(b, hit->u, hit->v, uv_error))
             ctx->pixel_lost = 1;
     }
+    if (m->normal_map != SCENE_NONE) {
+        const scene_map_t *nm = &s->maps[m->normal_map];
+        *normal = map_normal(nm, hit->u, hit->v, hit->normal, hit->tangent);
+        if (map_normal_uncertain(nm, hit->u, hit->v, uv_error))
+            ctx->pixel_lost = 1;
+    }
+    if (m->dic_map == SCENE_NONE && m->drc_map == SCENE_NONE && m->src_map == SCENE_NONE &&
+        m->trc_map == SCENE_NONE)
+        return m;
+    scene_material_t *here = &ctx->look[slot];
+    *here = *m;
+    here->dic = trace_attribute(ctx, hit, m->dic_map, m->dic, uv_error);
+    here->drc = trace_attribute(ctx, hit, m->drc_map, m->drc, uv_error);
+    here->src = trace_attribute(ctx, hit, m->src_map, m->src, uv_error);
+    here->trc = trace_attribute(ctx, hit, m->trc_map, m->trc, uv_error);
+    return here;
 }
 
 /* Fraction of light i that reaches origin along dir over distance:
@@ -372,10 +408,10 @@ static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t di
         hit.t = cross.t[i];
         hit.prim = cross.prim[i];
         prim_surface(&ctx->frame->prims[hit.prim], &ray, &hit);
-        const scene_material_t *m = trace_material(ctx, hit.prim);
         rgb_t colour;
         vec3_t n;
-        trace_surface_look(ctx, &hit, m, &colour, &n);
+        const scene_material_t *m = trace_surface_look(ctx, &hit, trace_material(ctx, hit.prim),
+                                                       &colour, &n, TRACE_LOOK_SHADOW);
         num_t src, trc;
         shade_src_trc(m, num_abs(vec3_dot(n, dir)), &src, &trc);
         pass = ctx->options.shadow_tint ? rgb_mul(pass, rgb_scale(colour, trc))
@@ -467,10 +503,10 @@ static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray, const ray_error
         hit.t = cross.t[i];
         hit.prim = cross.prim[i];
         prim_surface(&ctx->frame->prims[hit.prim], ray, &hit);
-        const scene_material_t *m = trace_material(ctx, hit.prim);
         rgb_t colour;
         vec3_t n;
-        trace_surface_look(ctx, &hit, m, &colour, &n);
+        const scene_material_t *m = trace_surface_look(ctx, &hit, trace_material(ctx, hit.prim),
+                                                       &colour, &n, TRACE_LOOK_STRAIGHT);
         if (num_gt(vec3_dot(ray->dir, n), NUM_ZERO))
             n = vec3_neg(n);
         num_t src, trc;
@@ -519,10 +555,10 @@ static num_t trace_refract_error(const ray_error_t *err, num_t normal_err, num_t
 static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err,
                          const hit_t *hit, int depth, num_t weight)
 {
-    const scene_material_t *m = trace_material(ctx, hit->prim);
     rgb_t colour;
     vec3_t n;
-    trace_surface_look(ctx, hit, m, &colour, &n);
+    const scene_material_t *m = trace_surface_look(ctx, hit, trace_material(ctx, hit->prim),
+                                                   &colour, &n, TRACE_LOOK_SHADE);
     int entering = num_lt(vec3_dot(ray->dir, n), NUM_ZERO);
     if (!entering)
         n = vec3_neg(n); /* shade the side the ray arrives on */
@@ -550,7 +586,8 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
     int refracts = 0, tir = 0;
     num_t eta = NUM_ONE;
     if (num_gt(trc, NUM_ZERO) && can_recurse && ctx->options.refraction) {
-        eta = entering ? num_recip(m->ior) : m->ior;
+        eta = entering ? num_recip(m->ior) : m->ior; /* m's last use: the levels below
+                                                        reuse ctx->look[TRACE_LOOK_SHADE] */
         refracts = shade_refract(ray->dir, n, eta, &refracted_dir);
         tir = !refracts;
     }

@@ -218,7 +218,7 @@ void nff_material(const double f[8], struct sd_material *m)
     m->phong = m->src <= 0              ? 0
                : f[5] >= SCN_MAX_PHONG ? SCN_MAX_PHONG
                                         : (int)floor(f[5] + 0.5);
-    m->colour_map = m->bump_map = -1;
+    sd_material_no_maps(m);
 }
 
 static int nff_same_material(const struct sd_material *a, const struct sd_material *b)

@@ -120,12 +120,16 @@ static void compile_material(const struct sd_material *m, uint8_t *p)
     wire_put_u16(p + SCN_MAT_PHONG, (uint16_t)m->phong);
     wire_put_u16(p + SCN_MAT_COLOUR_MAP, compile_index(m->colour_map));
     wire_put_u16(p + SCN_MAT_BUMP_MAP, compile_index(m->bump_map));
+    wire_put_u16(p + SCN_MAT_NORMAL_MAP, compile_index(m->normal_map));
+    wire_put_u16(p + SCN_MAT_DIC_MAP, compile_index(m->dic_map));
+    wire_put_u16(p + SCN_MAT_DRC_MAP, compile_index(m->drc_map));
+    wire_put_u16(p + SCN_MAT_SRC_MAP, compile_index(m->src_map));
+    wire_put_u16(p + SCN_MAT_TRC_MAP, compile_index(m->trc_map));
 }
 
 static size_t compile_map_bytes(const struct sd_map *m)
 {
-    size_t bpt = m->kind == SCN_MAP_COLOUR ? SCN_MAP_COLOUR_BYTES : SCN_MAP_BUMP_BYTES;
-    return (size_t)m->width * (size_t)m->height * bpt;
+    return (size_t)m->width * (size_t)m->height * sd_map_texel_bytes(m->kind);
 }
 
 static void compile_cluster(const struct sd_cluster *c, uint8_t *p)

@@ -38,15 +38,43 @@ struct sd_material {
     double ior;
     int phong;
     int colour_map, bump_map; /* map index or -1 */
+    int normal_map;           /* map index (a NORMAL map) or -1; not with bump_map */
+    int dic_map, drc_map, src_map, trc_map; /* ATTRIBUTE map index or -1 */
 };
+
+/* Every map index of m set to -1 (none). */
+static inline void sd_material_no_maps(struct sd_material *m)
+{
+    m->colour_map = m->bump_map = m->normal_map = -1;
+    m->dic_map = m->drc_map = m->src_map = m->trc_map = -1;
+}
 
 struct sd_map {
     char name[SCN_MAX_NAME];
     int kind;               /* enum scn_map_kind */
     int width, height;
-    uint8_t *texels;        /* width * height * bytes per texel, malloc'ed */
+    uint8_t *texels;        /* width * height * bytes per texel, malloc'ed;
+                               the compiled form's bytes (proto/scene_format.h) */
     double repeat_u, repeat_v, bump_depth;
 };
+
+/* Bytes per texel of a map of that kind (enum scn_map_kind). */
+static inline unsigned sd_map_texel_bytes(int kind)
+{
+    return kind == SCN_MAP_COLOUR   ? SCN_MAP_COLOUR_BYTES
+           : kind == SCN_MAP_NORMAL ? SCN_MAP_NORMAL_BYTES
+           : kind == SCN_MAP_BUMP   ? SCN_MAP_BUMP_BYTES
+                                    : SCN_MAP_ATTRIBUTE_BYTES;
+}
+
+/* The name of a map kind in the text form: colour, bump, normal, attribute. */
+static inline const char *sd_map_kind_name(int kind)
+{
+    return kind == SCN_MAP_COLOUR   ? "colour"
+           : kind == SCN_MAP_BUMP   ? "bump"
+           : kind == SCN_MAP_NORMAL ? "normal"
+                                    : "attribute";
+}
 
 struct sd_key {
     int frame;

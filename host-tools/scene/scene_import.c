@@ -339,7 +339,7 @@ static void imp_material(const struct model_material *mm, struct sd_material *d)
     d->dic = 0.1;
     d->drc = 0.9;
     d->ior = 1;
-    d->colour_map = d->bump_map = -1;
+    sd_material_no_maps(d);
     if (mm->have & MODEL_HAVE_DIFFUSE) {
         double k = imp_max3(mm->diffuse);
         d->drc = imp_clamp(k, 0, 1);
@@ -370,7 +370,7 @@ static int imp_materials(struct imp *im, const struct sd_scene *s, const char *m
     size_t texel_bytes = 0;
     for (int i = 0; i < s->n_maps; i++)
         texel_bytes += (size_t)s->maps[i].width * (size_t)s->maps[i].height *
-                       (s->maps[i].kind == SCN_MAP_COLOUR ? 3u : 1u);
+                       sd_map_texel_bytes(s->maps[i].kind);
     for (int i = 0; i < m->n_materials; i++) {
         const struct model_material *mm = &m->materials[i];
         struct sd_material *d = &out[i];
@@ -390,7 +390,7 @@ static int imp_materials(struct imp *im, const struct sd_scene *s, const char *m
             return -1;
         for (int k = before; k < im->n_maps; k++)
             texel_bytes += (size_t)im->maps[k].width * (size_t)im->maps[k].height *
-                           (im->maps[k].kind == SCN_MAP_COLOUR ? 3u : 1u);
+                           sd_map_texel_bytes(im->maps[k].kind);
         if (texel_bytes > SCN_MAX_TEXEL_BYTES)
             return imp_fail(im, "material '%s': its textures bring the scene's texels to %zu "
                                 "bytes, more than the limit %u",

@@ -59,11 +59,22 @@ int scene_import_view(struct sd_scene *s, const struct model *m, const struct im
                       int camera_auto, FILE *warn, char *err, size_t errlen);
 
 /* Reads the image at path into map m (its kind set): the RGB bytes of a
- * colour map, the luminance of a bump map.  A regular file only (a FIFO
- * or a device is refused, never read).  0, or -1 with err. */
+ * colour map, the luminance of a bump or attribute map, the normal
+ * (2c/255 - 1 per channel, sd_map_normal_texel) of a normal map.  A
+ * regular file only (a FIFO or a device is refused, never read).  0, or -1
+ * with err. */
 int sd_map_read_image(struct sd_map *m, const char *path, char *err, size_t errlen);
 /* The same from fd (sd_texture_open's; closed here); path names it. */
 int sd_map_read_image_fd(struct sd_map *m, int fd, const char *path, char *err, size_t errlen);
+
+/* A normal map texel of the compiled form (proto/scene_format.h) from the
+ * tangent-space normal v (x along T, y along B, z along n): each component
+ * of v times SCN_MAP_NORMAL_ONE rounded to a signed byte, v normalized
+ * first unless the rounded vector's length is already within sqrt(3)/2 of
+ * SCN_MAP_NORMAL_ONE (so texels written as byte/127 read back the same).
+ * 0, or -1 when v is not finite, has no length or its z comes out under 1
+ * (it does not point out of the surface). */
+int sd_map_normal_texel(const double v[3], uint8_t out[3]);
 
 /* A model's texture tex (as the model file writes it) opened: the path
  * (model_dir + tex, or tex when absolute) into path, and opened only when

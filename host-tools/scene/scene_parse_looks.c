@@ -32,12 +32,26 @@ static void parse_map_texels(struct parser *p, struct sd_map *m, int bpt)
     m->texels = malloc(n);
     if (!m->texels)
         lex_error(&p->lx, "out of memory reading texels");
+    int normal = m->kind == SCN_MAP_NORMAL;
+    double v[3];
     for (size_t i = 0; i < n; i++) {
         if (p->lx.kind != LEX_NUMBER)
             lex_error(&p->lx, "map has %zu texel values, %zu needed (width*height*%d)", i, n,
                       bpt);
-        double v = lex_number_in(&p->lx, "texel value", 0, 1);
-        m->texels[i] = (uint8_t)lround(v * 255.0);
+        if (!normal) {
+            m->texels[i] = (uint8_t)lround(lex_number_in(&p->lx, "texel value", 0, 1) * 255.0);
+            continue;
+        }
+        /* a normal map's texel: x y z in the tangent frame, normalized here
+         * (an error names the z it reads) */
+        if (p->lx.num < -1 || p->lx.num > 1)
+            lex_error(&p->lx, "normal map texel component must be -1..1, not %s", p->lx.tok);
+        v[i % 3] = p->lx.num;
+        if (i % 3 == 2 && sd_map_normal_texel(v, m->texels + i - 2) != 0)
+            lex_error(&p->lx, "normal map texel %zu (%g %g %g) does not point out of the "
+                              "surface (z must be > 0)",
+                      i / 3, v[0], v[1], v[2]);
+        lex_next(&p->lx);
     }
     if (p->lx.kind == LEX_NUMBER)
         lex_error(&p->lx, "more texel values than width*height*%d = %zu", bpt, n);
@@ -59,9 +73,14 @@ void parse_map(struct parser *p)
         m->kind = SCN_MAP_COLOUR;
     else if (lex_is_word(&p->lx, "bump"))
         m->kind = SCN_MAP_BUMP;
+    else if (lex_is_word(&p->lx, "normal"))
+        m->kind = SCN_MAP_NORMAL;
+    else if (lex_is_word(&p->lx, "attribute"))
+        m->kind = SCN_MAP_ATTRIBUTE;
     else
-        lex_error(&p->lx, "map kind must be colour or bump, not '%s'", p->lx.tok);
-    int bpt = m->kind == SCN_MAP_COLOUR ? SCN_MAP_COLOUR_BYTES : SCN_MAP_BUMP_BYTES;
+        lex_error(&p->lx, "map kind must be colour, bump, normal or attribute, not '%s'",
+                  p->lx.tok);
+    int bpt = (int)sd_map_texel_bytes(m->kind);
     lex_next(&p->lx);
     m->repeat_u = m->repeat_v = 1;
     m->bump_depth = m->kind == SCN_MAP_BUMP ? 1 : 0;
@@ -88,12 +107,52 @@ void parse_map(struct parser *p)
             lex_next(&p->lx);
             m->bump_depth = lex_number_in(&p->lx, "bump depth", 0, SCN_MAX_FACTOR);
         } else {
-            parse_unknown(p, m->kind == SCN_MAP_BUMP ? "bump map" : "colour map");
+            char what[32];
+            snprintf(what, sizeof what, "%s map", sd_map_kind_name(m->kind));
+            parse_unknown(p, what);
         }
     }
     if (!m->texels)
         lex_error(&p->lx, "map '%s' has no texels (give 'texels' or 'image')", m->name);
     lex_next(&p->lx);
+}
+
+/* A material's map statement (colour_map, bump_map, normal_map, dic_map,
+ * drc_map, src_map, trc_map NAME) at the current word: 1 when it was one,
+ * read; 0 when the word is something else. */
+static int parse_material_map(struct parser *p, struct sd_material *m)
+{
+    static const struct {
+        const char *word;
+        int kind;
+    } maps[] = {
+        {"colour_map", SCN_MAP_COLOUR},  {"color_map", SCN_MAP_COLOUR},
+        {"bump_map", SCN_MAP_BUMP},      {"normal_map", SCN_MAP_NORMAL},
+        {"dic_map", SCN_MAP_ATTRIBUTE},  {"drc_map", SCN_MAP_ATTRIBUTE},
+        {"src_map", SCN_MAP_ATTRIBUTE},  {"trc_map", SCN_MAP_ATTRIBUTE},
+    };
+    int *slot[] = {&m->colour_map, &m->colour_map, &m->bump_map, &m->normal_map,
+                   &m->dic_map,    &m->drc_map,    &m->src_map,  &m->trc_map};
+    int k = 0;
+    while (k < (int)(sizeof maps / sizeof maps[0]) && !lex_is_word(&p->lx, maps[k].word))
+        k++;
+    if (k == (int)(sizeof maps / sizeof maps[0]))
+        return 0;
+    lex_next(&p->lx);
+    struct sd_scene *s = p->s;
+    int i = p->lx.kind == LEX_WORD ? parse_find_map(s, p->lx.tok) : -1;
+    if (i < 0)
+        lex_error(&p->lx, "no map named '%s' (define it before use)", p->lx.tok);
+    if (s->maps[i].kind != maps[k].kind)
+        lex_error(&p->lx, "%s: map '%s' is a%s %s map, not a%s %s map", maps[k].word, p->lx.tok,
+                  s->maps[i].kind == SCN_MAP_ATTRIBUTE ? "n" : "", sd_map_kind_name(s->maps[i].kind),
+                  maps[k].kind == SCN_MAP_ATTRIBUTE ? "n" : "", sd_map_kind_name(maps[k].kind));
+    *slot[k] = i;
+    if (m->bump_map >= 0 && m->normal_map >= 0)
+        lex_error(&p->lx, "material '%s' has both a bump map and a normal map (give one)",
+                  m->name);
+    lex_next(&p->lx);
+    return 1;
 }
 
 void parse_material(struct parser *p)
@@ -112,7 +171,7 @@ void parse_material(struct parser *p)
     m.drc = 0.9;
     m.ior = 1;
     m.fresnel = PARSE_FRESNEL_UNSET;
-    m.colour_map = m.bump_map = -1;
+    sd_material_no_maps(&m);
     parse_open(p, "material");
     while (p->lx.kind != LEX_CLOSE) {
         if (lex_is_word(&p->lx, "colour") || lex_is_word(&p->lx, "color")) {
@@ -142,18 +201,8 @@ void parse_material(struct parser *p)
         } else if (lex_is_word(&p->lx, "ior")) {
             lex_next(&p->lx);
             m.ior = lex_number_in(&p->lx, "ior", 1, SCN_MAX_IOR);
-        } else if (lex_is_word(&p->lx, "colour_map") || lex_is_word(&p->lx, "color_map") ||
-                   lex_is_word(&p->lx, "bump_map")) {
-            int bump = lex_is_word(&p->lx, "bump_map");
-            lex_next(&p->lx);
-            int i = p->lx.kind == LEX_WORD ? parse_find_map(s, p->lx.tok) : -1;
-            if (i < 0)
-                lex_error(&p->lx, "no map named '%s' (define it before use)", p->lx.tok);
-            if (s->maps[i].kind != (bump ? SCN_MAP_BUMP : SCN_MAP_COLOUR))
-                lex_error(&p->lx, "map '%s' is not a %s map", p->lx.tok,
-                          bump ? "bump" : "colour");
-            *(bump ? &m.bump_map : &m.colour_map) = i;
-            lex_next(&p->lx);
+        } else if (parse_material_map(p, &m)) {
+            continue;
         } else {
             parse_unknown(p, "material");
         }

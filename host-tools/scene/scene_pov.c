@@ -88,6 +88,10 @@ static void pov_check(const struct sd_scene *s, struct pov_notes *n)
             pov_note(n, "colour map: not exported, the pigment is F alone");
         if (m->bump_map >= 0)
             pov_note(n, "bump map: not exported");
+        if (m->normal_map >= 0)
+            pov_note(n, "normal map: not exported");
+        if (m->dic_map >= 0 || m->drc_map >= 0 || m->src_map >= 0 || m->trc_map >= 0)
+            pov_note(n, "attribute maps: not exported, the coefficients are the material's");
     }
     for (int i = 0; i < s->n_prims; i++)
         if (s->prims[i].kind == SCN_PRIM_DENSITY)

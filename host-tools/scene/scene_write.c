@@ -72,14 +72,17 @@ static void wr_maps(FILE *f, const struct sd_scene *s, const char *const *map_im
     for (int i = 0; i < s->n_maps; i++) {
         const struct sd_map *m = &s->maps[i];
         int bump = m->kind == SCN_MAP_BUMP;
-        fprintf(f, "map %s %s {", m->name, bump ? "bump" : "colour");
+        fprintf(f, "map %s %s {", m->name, sd_map_kind_name(m->kind));
         if (map_image && map_image[i] && map_image[i][0]) {
             fprintf(f, " image \"%s\"", map_image[i]);
         } else {
-            size_t n = (size_t)m->width * (size_t)m->height * (bump ? 1u : 3u);
+            size_t n = (size_t)m->width * (size_t)m->height * sd_map_texel_bytes(m->kind);
             fprintf(f, " size %d %d  texels", m->width, m->height);
             for (size_t k = 0; k < n; k++)
-                wr_num(f, m->texels[k] / 255.0);
+                if (m->kind == SCN_MAP_NORMAL) /* signed bytes */
+                    wr_num(f, (double)(int8_t)m->texels[k] / SCN_MAP_NORMAL_ONE);
+                else
+                    wr_num(f, m->texels[k] / 255.0);
         }
         wr_vec(f, " repeat", &m->repeat_u, 1);
         wr_num(f, m->repeat_v);
@@ -106,6 +109,12 @@ static void wr_materials(FILE *f, const struct sd_scene *s)
             fprintf(f, " colour_map %s", s->maps[m->colour_map].name);
         if (m->bump_map >= 0)
             fprintf(f, " bump_map %s", s->maps[m->bump_map].name);
+        const int attr[5] = {m->normal_map, m->dic_map, m->drc_map, m->src_map, m->trc_map};
+        static const char *const attr_word[5] = {"normal_map", "dic_map", "drc_map", "src_map",
+                                                 "trc_map"};
+        for (int k = 0; k < 5; k++)
+            if (attr[k] >= 0)
+                fprintf(f, " %s %s", attr_word[k], s->maps[attr[k]].name);
         fprintf(f, " }\n");
     }
 }

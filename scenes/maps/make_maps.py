@@ -43,6 +43,37 @@ def bricks(x, y):
     return (200, 200, 190) if mortar else (150 + (row * 37) % 40, 60, 40)
 
 
+def rivets(x, y):
+    # a normal map (the usual encoding: channel c = 255 (n + 1) / 2, x along
+    # the tangent T, y along B = N x T, z along N): a dome of radius 5
+    # texels in each 16-texel cell, flat (128 128 255) between them
+    dx, dy = (x % 16) - 7.5, (y % 16) - 7.5
+    r = 5.0
+    d2 = dx * dx + dy * dy
+    if d2 >= r * r:
+        n = (0.0, 0.0, 1.0)
+    else:
+        n = (dx / r, dy / r, math.sqrt(1 - d2 / (r * r)))
+    return tuple(min(255, max(0, int(round(127.5 * (c + 1))))) for c in n)
+
+
+def stripes(x, y):
+    # an attribute map (grey level / 255): diagonal stripes of 1 (8 texels
+    # wide) and 0.15 between them, 16 texels apart
+    g = 255 if (x + y) % 16 < 8 else 38
+    return (g, g, g)
+
+
+def spots(x, y):
+    # an attribute map: round spots of 0.1 in a field of 1, one per 32 texels
+    dx, dy = (x % 32) - 15.5, (y % 32) - 15.5
+    g = 26 if dx * dx + dy * dy < 64 else 255
+    return (g, g, g)
+
+
 write_png("checker.png", 64, 64, checker)
 write_png("dimples.png", 64, 64, dimples)
 write_png("bricks.png", 64, 64, bricks)
+write_png("rivets.png", 64, 64, rivets)
+write_png("stripes.png", 64, 64, stripes)
+write_png("spots.png", 64, 64, spots)

@@ -1,9 +1,10 @@
 /* fuzz_image_map.c: libFuzzer harness of the image-map loader: the input is
  * an image file (PNG through libpng, or binary PPM) that a scene's colour
  * map and bump map both read (`map ... { image "FILE" }`, parse_map_image
- * over image_read).  A scene that parses is compiled, loaded and prepared
- * as the DM does, and a few pixels of a sphere wearing both maps are
- * traced, so the texels reach the map lookups (render/maps.c). */
+ * over image_read), and then another scene's normal map and attribute map.
+ * A scene that parses is compiled, loaded and prepared as the DM does, and
+ * a few pixels of a sphere wearing the maps are traced, so the texels
+ * reach the map lookups (render/maps.c). */
 #define _GNU_SOURCE
 #include <stdint.h>
 #include <stdio.h>
@@ -19,6 +20,39 @@
 
 static int fuzz_fd = -1;
 static uint8_t *fuzz_mem;
+
+/* text parsed, compiled, loaded and prepared, and a few pixels traced. */
+static void fuzz_scene(const char *text)
+{
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    err[0] = 0;
+    int verbose = getenv("FUZZ_VERBOSE") != NULL; /* say why an input is refused */
+    if (sd_parse_text("fuzz.scn", text, &s, err, sizeof err) != 0) {
+        if (verbose)
+            fprintf(stderr, "refused: %s\n", err);
+        if (err[0] == 0)
+            abort(); /* a refused image is named */
+        return;
+    }
+    uint8_t *buf;
+    size_t len;
+    int rc = sd_compile(&s, &buf, &len, err, sizeof err);
+    sd_free(&s);
+    if (rc != 0)
+        return;
+    render_blob_t *blob;
+    render_blob_error_t berr;
+    if (render_blob_build(buf, len, 0, fuzz_mem, FUZZ_BLOCK, NULL, &blob, &berr) !=
+        RENDER_BLOB_OK)
+        abort(); /* a map that parsed must load and prepare */
+    render_ctx_t ctx;
+    render_ctx_init(&ctx, blob->frame);
+    for (uint32_t y = 2; y < 6; y++)
+        for (uint32_t x = 2; x < 6; x++)
+            render_pixel(&ctx, x, y);
+    free(buf);
+}
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -40,33 +74,16 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
              "material m { colour_map c bump_map b phong 10 }\n"
              "sphere { material m radius 1.2 }\n",
              fuzz_fd, fuzz_fd);
-    struct sd_scene s;
-    char err[SD_ERR_MAX];
-    err[0] = 0;
-    int verbose = getenv("FUZZ_VERBOSE") != NULL; /* say why an input is refused */
-    if (sd_parse_text("fuzz.scn", text, &s, err, sizeof err) != 0) {
-        if (verbose)
-            fprintf(stderr, "refused: %s\n", err);
-        if (err[0] == 0)
-            abort(); /* a refused image is named */
-        return 0;
-    }
-    uint8_t *buf;
-    size_t len;
-    int rc = sd_compile(&s, &buf, &len, err, sizeof err);
-    sd_free(&s);
-    if (rc != 0)
-        return 0;
-    render_blob_t *blob;
-    render_blob_error_t berr;
-    if (render_blob_build(buf, len, 0, fuzz_mem, FUZZ_BLOCK, NULL, &blob, &berr) !=
-        RENDER_BLOB_OK)
-        abort(); /* a map that parsed must load and prepare */
-    render_ctx_t ctx;
-    render_ctx_init(&ctx, blob->frame);
-    for (uint32_t y = 2; y < 6; y++)
-        for (uint32_t x = 2; x < 6; x++)
-            render_pixel(&ctx, x, y);
-    free(buf);
+    fuzz_scene(text);
+    snprintf(text, sizeof text,
+             "camera { eye 0 0 -4 look_at 0 0 0 up 0 1 0 fov 40 }\n"
+             "resolution 8 8\n"
+             "light parallel { direction 0.3 -0.5 1 }\n"
+             "map n normal { image \"/proc/self/fd/%d\" repeat 2 3 }\n"
+             "map a attribute { image \"/proc/self/fd/%d\" repeat 3 2 }\n"
+             "material m { normal_map n src 0.5 trc 0.4 src_map a trc_map a drc_map a }\n"
+             "sphere { material m radius 1.2 }\n",
+             fuzz_fd, fuzz_fd);
+    fuzz_scene(text);
     return 0;
 }

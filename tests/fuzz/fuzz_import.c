@@ -109,7 +109,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         snprintf(s.materials[0].name, sizeof s.materials[0].name, "m");
         s.materials[0].colour[0] = s.materials[0].colour[1] = s.materials[0].colour[2] = 1;
         s.materials[0].dic = 0.1, s.materials[0].drc = 0.9, s.materials[0].ior = 1;
-        s.materials[0].colour_map = s.materials[0].bump_map = -1;
+        sd_material_no_maps(&s.materials[0]);
         s.n_materials = 1;
     }
     struct import_opts o = {(opt & 8) != 0, one_material ? 0 : -1, 0, "fit", (opt & 0x20) != 0,

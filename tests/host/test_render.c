@@ -26,7 +26,7 @@ static scene_material_t mat(double r, double g, double b, double dic, double drc
     m.dic = N(dic);
     m.drc = N(drc);
     m.ior = NUM_ONE;
-    m.colour_map = m.bump_map = SCENE_NONE;
+    scene_material_no_maps(&m);
     return m;
 }
 

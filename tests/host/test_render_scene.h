@@ -75,8 +75,7 @@ static inline void ts_init(test_scene_t *t, uint16_t width, uint16_t height)
     m->colour = ts_rgb(1, 1, 1);
     m->drc = num_from_double(1);
     m->ior = NUM_ONE;
-    m->colour_map = SCENE_NONE;
-    m->bump_map = SCENE_NONE;
+    scene_material_no_maps(m);
     s->material_count = 1;
     arena_init(&t->arena, t->arena_memory, sizeof t->arena_memory);
 }

@@ -34,9 +34,11 @@ static const char *scene_text =
     "light spot { position 0 5 0 at 0 0 0 cone 20 falloff 10 }\n"
     "map tiles colour { size 2 1 texels 1 0 0  0 0 1 repeat 4 2 }\n"
     "map bumps bump { size 1 2 texels 0 1 depth 0.5 }\n"
+    "map nrm normal { size 1 1 texels 0 0.6 0.8 }\n"
+    "map att attribute { size 2 1 texels 0.2 1 repeat 3 1 }\n"
     "material a { colour 0.5 0.6 0.7 dic 0.1 drc 0.8 src 0.2 trc 0.3 fresnel 0.5 ior 1.5 "
     "phong 20 colour_map tiles bump_map bumps }\n"
-    "material b { colour 1 1 1 }\n"
+    "material b { colour 1 1 1 normal_map nrm dic_map att drc_map att src_map att trc_map att }\n"
     "use b\n"
     "box { min -1 -1 -1 max 1 0 3 }\n"
     "cluster c1 { translate 1 2 3\n"
@@ -135,7 +137,7 @@ static void test_round_trip(void)
     CHECK_NEAR(num_to_double(s.lights[1].direction.y), -5, VAL_TOL);
     CHECK_NEAR(num_to_double(s.lights[1].cos_inner), 0.93969262, VAL_TOL);
     CHECK_NEAR(num_to_double(s.lights[1].cos_outer), 0.86602540, VAL_TOL);
-    CHECK_EQ_INT(s.map_count, 2);
+    CHECK_EQ_INT(s.map_count, 4);
     CHECK_EQ_INT(s.maps[0].kind, SCENE_MAP_COLOUR);
     CHECK_EQ_INT(s.maps[0].width, 2);
     CHECK_EQ_INT(s.maps[0].texels[0], 255);
@@ -145,6 +147,12 @@ static void test_round_trip(void)
     CHECK_EQ_INT(s.maps[1].kind, SCENE_MAP_BUMP);
     CHECK_EQ_INT(s.maps[1].texels[1], 255);
     CHECK_NEAR(num_to_double(s.maps[1].bump_depth), 0.5, 0);
+    /* a normal map: (0, 0.6, 0.8) * 127 as signed bytes; an attribute map */
+    CHECK_EQ_INT(s.maps[2].kind, SCENE_MAP_NORMAL);
+    CHECK(s.maps[2].texels[0] == 0 && s.maps[2].texels[1] == 76 && s.maps[2].texels[2] == 102);
+    CHECK_EQ_INT(s.maps[3].kind, SCENE_MAP_ATTRIBUTE);
+    CHECK(s.maps[3].texels[0] == 51 && s.maps[3].texels[1] == 255);
+    CHECK_NEAR(num_to_double(s.maps[3].repeat_u), 3, 0);
     CHECK_EQ_INT(s.material_count, 2);
     CHECK_NEAR(num_to_double(s.materials[0].ior), 1.5, 0);
     CHECK_NEAR(num_to_double(s.materials[0].fresnel), 0.5, 0);
@@ -152,6 +160,12 @@ static void test_round_trip(void)
     CHECK_EQ_INT(s.materials[0].colour_map, 0);
     CHECK_EQ_INT(s.materials[0].bump_map, 1);
     CHECK_EQ_INT(s.materials[1].colour_map, SCENE_NONE);
+    CHECK_EQ_INT(s.materials[0].normal_map, SCENE_NONE);
+    CHECK_EQ_INT(s.materials[0].src_map, SCENE_NONE);
+    CHECK_EQ_INT(s.materials[1].normal_map, 2);
+    CHECK_EQ_INT(s.materials[1].bump_map, SCENE_NONE);
+    CHECK(s.materials[1].dic_map == 3 && s.materials[1].drc_map == 3 &&
+          s.materials[1].src_map == 3 && s.materials[1].trc_map == 3);
     CHECK_EQ_INT(s.cluster_count, 3);
     CHECK(s.clusters[0].parent == SCENE_NO_CLUSTER);
     CHECK_EQ_INT(s.clusters[1].parent, 0);
@@ -343,7 +357,9 @@ static void expect_field(const uint8_t *b, size_t len, int kind, uint32_t rec_of
     uint8_t *c = malloc(len);
     memcpy(c, b, len);
     uint8_t *p = c + section_offset(c, kind) + rec_off;
-    if (bytes == 2)
+    if (bytes == 1)
+        *p = (uint8_t)value;
+    else if (bytes == 2)
         wire_put_u16(p, (uint16_t)value);
     else
         wire_put_u32(p, value);
@@ -432,6 +448,28 @@ static void test_bad_indices_and_values(void)
                  "material 0: colour map");
     expect_field(b, len, SCN_SEC_MATERIALS, SCN_MAT_BUMP_MAP, 7, 2, SCENE_LOAD_ERR_INDEX,
                  "material 0: bump map");
+    /* normal and attribute maps: the kind each index names, not both a
+     * bump and a normal map, a normal texel out of the surface (texels:
+     * tiles' 6 bytes, bumps' 2, then nrm's x y z) */
+    const uint32_t M = SCN_MAT_SIZE;
+    expect_field(b, len, SCN_SEC_MATERIALS, M + SCN_MAT_NORMAL_MAP, 1, 2, SCENE_LOAD_ERR_INDEX,
+                 "material 1: normal map index out of range or not a normal map");
+    expect_field(b, len, SCN_SEC_MATERIALS, M + SCN_MAT_NORMAL_MAP, 4, 2, SCENE_LOAD_ERR_INDEX,
+                 "material 1: normal map index");
+    expect_field(b, len, SCN_SEC_MATERIALS, SCN_MAT_NORMAL_MAP, 2, 2, SCENE_LOAD_ERR_VALUE,
+                 "material 0: both a bump map and a normal map");
+    expect_field(b, len, SCN_SEC_MATERIALS, M + SCN_MAT_SRC_MAP, 0, 2, SCENE_LOAD_ERR_INDEX,
+                 "material 1: dic, drc, src or trc map index out of range or not an attribute");
+    expect_field(b, len, SCN_SEC_MATERIALS, M + SCN_MAT_TRC_MAP, 2, 2, SCENE_LOAD_ERR_INDEX,
+                 "not an attribute map");
+    expect_field(b, len, SCN_SEC_MATERIALS, SCN_MAT_DIC_MAP, 9, 2, SCENE_LOAD_ERR_INDEX,
+                 "material 0: dic, drc, src or trc map");
+    expect_field(b, len, SCN_SEC_TEXELS, 6 + 2 + 2, 0x80, 1, SCENE_LOAD_ERR_VALUE,
+                 "map 2: normal map texel with z < 1");
+    expect_field(b, len, SCN_SEC_TEXELS, 6 + 2 + 2, 0, 1, SCENE_LOAD_ERR_VALUE,
+                 "map 2: normal map texel with z < 1");
+    expect_field(b, len, SCN_SEC_MAPS, 2 * SCN_MAP_SIZE + SCN_MAP_KIND, SCN_MAP_ATTRIBUTE, 2,
+                 SCENE_LOAD_ERR_INDEX, "material 1: normal map index");
     expect_field(b, len, SCN_SEC_MATERIALS, SCN_MAT_DRC, f32_bits(1.5f), 4,
                  SCENE_LOAD_ERR_VALUE, "material 0: colour, dic, drc");
     expect_field(b, len, SCN_SEC_MATERIALS, SCN_MAT_TRC, f32_bits(0.9f), 4,
@@ -440,7 +478,7 @@ static void test_bad_indices_and_values(void)
                  SCENE_LOAD_ERR_VALUE, "ior");
     expect_field(b, len, SCN_SEC_MATERIALS, SCN_MAT_PHONG, 5000, 2, SCENE_LOAD_ERR_LIMIT,
                  "phong");
-    expect_field(b, len, SCN_SEC_MAPS, SCN_MAP_WIDTH, 3, 2, SCENE_LOAD_ERR_INDEX,
+    expect_field(b, len, SCN_SEC_MAPS, SCN_MAP_WIDTH, 100, 2, SCENE_LOAD_ERR_INDEX,
                  "map 0: texels outside");
     expect_field(b, len, SCN_SEC_MAPS, SCN_MAP_WIDTH, 0, 2, SCENE_LOAD_ERR_LIMIT, "map 0: size");
     expect_field(b, len, SCN_SEC_MAPS, SCN_MAP_KIND, 7, 2, SCENE_LOAD_ERR_VALUE,

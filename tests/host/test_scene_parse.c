@@ -1,9 +1,12 @@
 /* test_scene_parse.c: the text scene format: what it accepts, and that
  * every mistake is reported as file:line:col with what is wrong. */
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "host-tools/scene/scene_desc.h"
+#include "host-tools/scene/scene_import.h"
 #include "tests/check.h"
 
 #define HEAD "light point { position 0 5 0 }\nmaterial m { }\n"
@@ -230,6 +233,125 @@ static void test_errors_name_line_and_column(void)
                  "u must be -1000..1000, not 2000");
 }
 
+/* A 2x1 binary PPM at path: texels a and b (R, G, B each). */
+static int put_ppm2(const char *path, const uint8_t a[3], const uint8_t b[3])
+{
+    FILE *f = fopen(path, "wb");
+    if (!f)
+        return -1;
+    fputs("P6\n2 1\n255\n", f);
+    fwrite(a, 1, 3, f);
+    fwrite(b, 1, 3, f);
+    return fclose(f);
+}
+
+/* Normal and attribute maps: the compiled bytes (a normal normalized and
+ * times 127 as signed bytes, from text -1..1 or an image's 2c/255 - 1; an
+ * attribute's value times 255), the material statements, and every
+ * mistake refused by name. */
+static void test_normal_and_attribute_maps(void)
+{
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    int rc = sd_parse_text("t.scn",
+                           HEAD "map n normal { size 2 1 texels 0 0 1  0.3 0 0.4 repeat 2 3 }\n"
+                                "map a attribute { size 1 2 texels 0.4 1 }\n"
+                                "map r normal { size 1 1 texels 0.0472440945 0 0.992125984 }\n"
+                                "material k { src 0.5 trc 0.5 normal_map n dic_map a drc_map a "
+                                "src_map a trc_map a }\nsphere { material k radius 1 }\n",
+                           &s, err, sizeof err);
+    CHECK_EQ_INT(rc, 0);
+    if (rc) {
+        printf("  %s\n", err);
+        return;
+    }
+    CHECK_EQ_INT(s.n_maps, 3);
+    CHECK_EQ_INT(s.maps[0].kind, SCN_MAP_NORMAL);
+    /* bytes of unit length within their rounding are kept: 6/127 0
+     * 126/127 is 6 0 126 (renormalized it would be 6 0 127) */
+    static const uint8_t want_r[3] = {6, 0, 126};
+    CHECK(memcmp(s.maps[2].texels, want_r, 3) == 0);
+    /* (0 0 1) -> 0 0 127; (0.3 0 0.4) -> (0.6 0 0.8) * 127 = 76.2, 0, 101.6 */
+    static const uint8_t want_n[6] = {0, 0, 127, 76, 0, 102};
+    CHECK(memcmp(s.maps[0].texels, want_n, 6) == 0);
+    CHECK_NEAR(s.maps[0].bump_depth, 0, 0);
+    CHECK_EQ_INT(s.maps[1].kind, SCN_MAP_ATTRIBUTE);
+    CHECK_EQ_INT(s.maps[1].texels[0], 102);
+    CHECK_EQ_INT(s.maps[1].texels[1], 255);
+    const struct sd_material *k = &s.materials[1];
+    CHECK_EQ_INT(k->normal_map, 0);
+    CHECK_EQ_INT(k->dic_map + k->drc_map + k->src_map + k->trc_map, 4);
+    CHECK_EQ_INT(k->bump_map, -1);
+    CHECK_EQ_INT(k->colour_map, -1);
+    /* written as text (sd_write_text) and read back: the same bytes, maps */
+    char *written = NULL;
+    size_t wlen = 0;
+    FILE *w = open_memstream(&written, &wlen);
+    CHECK(w && sd_write_text(&s, NULL, w) == 0);
+    if (w)
+        fclose(w);
+    struct sd_scene back;
+    rc = written ? sd_parse_text("w.scn", written, &back, err, sizeof err) : -1;
+    CHECK_EQ_INT(rc, 0);
+    if (rc == 0) {
+        CHECK(back.n_maps == 3 && back.maps[0].kind == SCN_MAP_NORMAL &&
+              memcmp(back.maps[0].texels, want_n, 6) == 0 && back.maps[1].texels[0] == 102 &&
+              memcmp(back.maps[2].texels, want_r, 3) == 0);
+        CHECK(back.materials[1].normal_map == 0 && back.materials[1].trc_map == 1 &&
+              back.materials[1].dic_map == 1);
+        sd_free(&back);
+    }
+    free(written);
+    sd_free(&s);
+
+    /* from an image: the usual encoding; 128 128 255 is the flat normal */
+    char dir[] = "/tmp/links1-maps-test.XXXXXX", path[128], text[512];
+    CHECK(mkdtemp(dir) != NULL);
+    snprintf(path, sizeof path, "%s/n.ppm", dir);
+    static const uint8_t flat[3] = {128, 128, 255}, left[3] = {0, 128, 255},
+                         inward[3] = {128, 128, 100};
+    CHECK_EQ_INT(put_ppm2(path, flat, left), 0);
+    snprintf(text, sizeof text,
+             HEAD "map n normal { image \"%s\" }\nsphere { material m radius 1 }\n", path);
+    rc = sd_parse_text("t.scn", text, &s, err, sizeof err);
+    CHECK_EQ_INT(rc, 0);
+    if (rc == 0) {
+        /* flat: (1/255, 1/255, 1) rounds to 0 0 127; left: (-1, 1/255, 1)
+         * normalized, -90 0 90 (-90 as the signed byte 166) */
+        CHECK(memcmp(s.maps[0].texels, (const uint8_t[6]){0, 0, 127, 166, 0, 90}, 6) == 0);
+        sd_free(&s);
+    } else {
+        printf("  %s\n", err);
+    }
+    /* a texel whose blue stands for z <= 0 points into the surface */
+    CHECK_EQ_INT(put_ppm2(path, flat, inward), 0);
+    rc = sd_parse_text("t.scn", text, &s, err, sizeof err);
+    CHECK(rc != 0 && strstr(err, "normal map texel (1, 0) = RGB 128 128 100 does not point out") != NULL);
+    if (rc == 0)
+        sd_free(&s);
+    unlink(path);
+    rmdir(dir);
+
+    EXPECT_ERROR(HEAD "map n normal { size 1 1 texels 0 0 -1 }\n", 3, 36,
+                 "normal map texel 0 (0 0 -1) does not point out of the surface");
+    EXPECT_ERROR(HEAD "map n normal { size 1 1 texels 0 0 0 }\n", 3, 36, "does not point out");
+    EXPECT_ERROR(HEAD "map n normal { size 1 1 texels 0 0 2 }\n", 3, 36,
+                 "normal map texel component must be -1..1");
+    EXPECT_ERROR(HEAD "map n shiny { size 1 1 texels 1 }\n", 3, 7,
+                 "map kind must be colour, bump, normal or attribute, not 'shiny'");
+    EXPECT_ERROR(HEAD "map n normal { size 1 1 texels 0 0 1 depth 2 }\n", 3, 38,
+                 "normal map");
+    EXPECT_ERROR(HEAD "map b bump { size 1 1 texels 0.5 }\nmaterial k { normal_map b }\n", 4,
+                 25, "normal_map: map 'b' is a bump map, not a normal map");
+    EXPECT_ERROR(HEAD "map c colour { size 1 1 texels 1 1 1 }\nmaterial k { src_map c }\n", 4,
+                 22, "src_map: map 'c' is a colour map, not an attribute map");
+    EXPECT_ERROR(HEAD "map a attribute { size 1 1 texels 1 }\nmaterial k { colour_map a }\n", 4,
+                 25, "colour_map: map 'a' is an attribute map, not a colour map");
+    EXPECT_ERROR(HEAD "map b bump { size 1 1 texels 0.5 }\nmap n normal { size 1 1 texels 0 0 1 }\n"
+                      "material k { bump_map b normal_map n }\n",
+                 5, 36, "material 'k' has both a bump map and a normal map");
+}
+
 /* A scene whose lengths reach SCN_MAX_COORD parses. */
 static void test_length_limit_accepted(void)
 {
@@ -338,5 +460,6 @@ int main(void)
     RUN(test_length_limit_accepted);
     RUN(test_deep_nesting_refused);
     RUN(test_view_keys);
+    RUN(test_normal_and_attribute_maps);
     return check_exit();
 }

@@ -29,7 +29,7 @@ static scene_material_t material(double dic, double drc, double src, double trc,
     m.fresnel = N(fresnel);
     m.phong_n = (uint16_t)n;
     m.ior = NUM_ONE;
-    m.colour_map = m.bump_map = SCENE_NONE;
+    scene_material_no_maps(&m);
     return m;
 }
 
@@ -188,6 +188,95 @@ static void test_bump_map(void)
     CHECK_NEAR(D(b.z), -1 / len, TOL * 5);
 }
 
+/* Exactly the same number (every arithmetic's num_t converts exactly). */
+#define SAME(a, b) CHECK(D(a) == D(b))
+#define SAME_VEC(a, b) CHECK(D((a).x) == D((b).x) && D((a).y) == D((b).y) && D((a).z) == D((b).z))
+
+static void test_normal_map(void)
+{
+    /* the flat normal (0, 0, 1) gives n itself, bit for bit, anywhere */
+    static const uint8_t flat[] = {0, 0, 127, 0, 0, 127, 0, 0, 127, 0, 0, 127};
+    scene_map_t m = {SCENE_MAP_NORMAL, 2, 2, flat, N(3), N(3), NUM_ZERO};
+    vec3_t n = vec3_normalize(ts_v(0.3, -0.5, 0.8));
+    vec3_t t = vec3_normalize(vec3_cross(n, ts_v(0, 1, 0)));
+    for (int i = 0; i < 5; i++) {
+        vec3_t got = map_normal(&m, N(0.13 * i), N(0.41 - 0.07 * i), n, t);
+        SAME_VEC(got, n);
+    }
+    /* tilted texels in the frame T, B = n x T, n: with n = -z, T = x, B = -y */
+    n = ts_v(0, 0, -1);
+    t = ts_v(1, 0, 0);
+    double h = sqrt(0.5);
+    static const uint8_t tilt_x[] = {90, 0, 90};
+    static const uint8_t tilt_minus_x[] = {256 - 90, 0, 90};
+    static const uint8_t tilt_y[] = {0, 90, 90};
+    m = (scene_map_t){SCENE_MAP_NORMAL, 1, 1, tilt_x, NUM_ONE, NUM_ONE, NUM_ZERO};
+    vec3_t got = map_normal(&m, N(0.5), N(0.5), n, t);
+    CHECK_NEAR(D(got.x), h, TOL * 5);
+    CHECK_NEAR(D(got.y), 0, TOL);
+    CHECK_NEAR(D(got.z), -h, TOL * 5);
+    m.texels = tilt_minus_x;
+    got = map_normal(&m, N(0.5), N(0.5), n, t);
+    CHECK_NEAR(D(got.x), -h, TOL * 5);
+    CHECK_NEAR(D(got.z), -h, TOL * 5);
+    m.texels = tilt_y;
+    got = map_normal(&m, N(0.5), N(0.5), n, t);
+    CHECK_NEAR(D(got.x), 0, TOL);
+    CHECK_NEAR(D(got.y), -h, TOL * 5);
+    CHECK_NEAR(D(got.z), -h, TOL * 5);
+    /* nearest texel, not a blend: a 2x1 map of flat then tilted */
+    static const uint8_t two[] = {0, 0, 127, 90, 0, 90};
+    m = (scene_map_t){SCENE_MAP_NORMAL, 2, 1, two, NUM_ONE, NUM_ONE, NUM_ZERO};
+    SAME_VEC(map_normal(&m, N(0.49), N(0.5), n, t), n);
+    got = map_normal(&m, N(0.51), N(0.5), n, t);
+    CHECK_NEAR(D(got.x), h, TOL * 5);
+}
+
+static void test_normal_map_uncertain(void)
+{
+    /* 2x1: u = 0.5 is the border between texel 0 (centre 0.25) and 1 */
+    static const uint8_t two[] = {0, 0, 127, 90, 0, 90};
+    static const uint8_t flat[] = {0, 0, 127, 0, 0, 127};
+    scene_map_t m = {SCENE_MAP_NORMAL, 2, 1, two, NUM_ONE, NUM_ONE, NUM_ZERO};
+    CHECK(map_normal_uncertain(&m, N(0.5), N(0.5), NUM_ZERO));
+    CHECK(!map_normal_uncertain(&m, N(0.25), N(0.5), NUM_ZERO));
+    CHECK(!map_normal_uncertain(&m, N(0.75), N(0.5), N(0.01)));
+    CHECK(map_normal_uncertain(&m, N(0.51), N(0.5), N(0.02))); /* 0.04 texels off */
+    /* (u wraps: u = 0 is the border between texel 1 and texel 0 again) */
+    CHECK(map_normal_uncertain(&m, N(0.0), N(0.5), NUM_ZERO));
+    /* the same borders of a map whose neighbours hold the same normal: no doubt */
+    m.texels = flat;
+    CHECK(!map_normal_uncertain(&m, N(0.5), N(0.5), NUM_ZERO));
+    CHECK(!map_normal_uncertain(&m, N(0.0), N(0.5), N(0.02)));
+    /* an error of half a texel or more: any texel, always in doubt */
+    CHECK(map_normal_uncertain(&m, N(0.25), N(0.5), N(0.3)));
+}
+
+static void test_attribute_map(void)
+{
+    /* a constant map gives the constant, bit for bit, everywhere; a map of
+     * 1 leaves a coefficient as it is */
+    static const uint8_t c102[] = {102, 102, 102, 102, 102, 102};
+    static const uint8_t c255[] = {255, 255, 255, 255, 255, 255};
+    scene_map_t m = {SCENE_MAP_ATTRIBUTE, 3, 2, c102, N(2), N(5), NUM_ZERO};
+    num_t src = N(0.37);
+    for (int i = 0; i < 7; i++) {
+        num_t u = N(0.11 * i), v = N(0.9 - 0.13 * i);
+        m.texels = c102;
+        SAME(map_attribute(&m, u, v), num_from_ratio(102, 255));
+        m.texels = c255;
+        SAME(map_attribute(&m, u, v), NUM_ONE);
+        SAME(num_mul(src, map_attribute(&m, u, v)), src);
+    }
+    /* 2x1 of 0 and 1: texel centres at u = 0.25 and 0.75, bilinear between */
+    static const uint8_t two[] = {0, 255};
+    m = (scene_map_t){SCENE_MAP_ATTRIBUTE, 2, 1, two, NUM_ONE, NUM_ONE, NUM_ZERO};
+    CHECK_NEAR(D(map_attribute(&m, N(0.25), N(0.5))), 0, TOL);
+    CHECK_NEAR(D(map_attribute(&m, N(0.75), N(0.5))), 1, TOL);
+    CHECK_NEAR(D(map_attribute(&m, N(0.5), N(0.5))), 0.5, TOL);
+    CHECK_NEAR(D(map_attribute(&m, N(0.375), N(0.5))), 0.25, TOL);
+}
+
 int main(void)
 {
     printf("# num_t = %s\n", NUM_NAME);
@@ -197,5 +286,8 @@ int main(void)
     RUN(test_reflect_refract);
     RUN(test_colour_map);
     RUN(test_bump_map);
+    RUN(test_normal_map);
+    RUN(test_normal_map_uncertain);
+    RUN(test_attribute_map);
     return check_exit();
 }
