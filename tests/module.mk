@@ -84,6 +84,8 @@ BENCHES += tests/bench/bench_wallclock.sh
 BOARD_TESTS += tests/layers/layers.sh
 # The runner counts what it says: hangs, crashes, early ends, unplanned tests.
 BOARD_TESTS += tests/runner/runner.sh
+# Every deliberate fault of tests/mutants/ still applies to the tree.
+BOARD_TESTS += tests/mutants/mutants_apply.sh
 .PHONY: check-layers
 check-layers:
 	$(Q)bash tests/layers/check_layers.sh

@@ -139,7 +139,37 @@ def one(m, host_all, board_all, log):
         shutil.rmtree(tree, ignore_errors=True)
 
 
+def check_lines():
+    """--check: every mutant still names a line that occurs once in its file
+    and a test of tests/plan.tsv to try (a stale mutant would be reported as
+    not applied only when `make test-mutants` runs).  One PASS/FAIL line."""
+    mutants = parse(LIST)
+    with open(os.path.join(ROOT, "tests", "plan.tsv")) as f:
+        planned = {l.split("\t")[0] for l in f if l.strip() and not l.startswith("#")}
+    bad = []
+    for m in mutants:
+        try:
+            with open(os.path.join(ROOT, m["file"])) as f:
+                lines = f.read().split("\n")
+        except OSError as e:
+            bad.append("%s: %s" % (m["name"], e))
+            continue
+        hits = sum(1 for l in lines if l == m["old"])
+        if hits != 1:
+            bad.append("%s: its '- ' line occurs %d times in %s" % (m["name"], hits, m["file"]))
+        unknown = [t for t in m["try"] if t not in planned and t + ".sh" not in planned]
+        if unknown:
+            bad.append("%s: try names %s, not in tests/plan.tsv" % (m["name"], " ".join(unknown)))
+    if bad:
+        print("FAIL mutants_apply: " + "; ".join(bad))
+    else:
+        print("PASS mutants_apply (%d mutants)" % len(mutants))
+    return 0
+
+
 def main():
+    if sys.argv[1:] == ["--check"]:
+        return check_lines()
     host_all = os.environ.get("HOST_TESTS", "").split()
     board_all = os.environ.get("BOARD_TESTS", "").split()
     if not host_all or not board_all:
