@@ -111,6 +111,7 @@ render_blob_status_t render_blob_load(const uint8_t *compiled, size_t len, void 
     blob->home = (uintptr_t)block;
     blob->scene_bytes = blob->bytes = blob->peak = arena.used;
     blob->bound = need;
+    blob->scene_id = 0; /* the caller numbers its loads */
     blob->frame = NULL;
     *out = blob;
     return RENDER_BLOB_OK;
@@ -208,6 +209,44 @@ render_blob_status_t render_blob_copy(void *block, size_t size, const render_blo
     }
     words_copy(block, src, src->bytes);
     return render_blob_relocate(block, size, out, err);
+}
+
+render_blob_status_t render_blob_copy_frame(void *block, size_t size, const render_blob_t *src,
+                                            render_blob_t **out, int *partial,
+                                            render_blob_error_t *err)
+{
+    *out = NULL;
+    if (partial)
+        *partial = 0;
+    render_blob_t *dst = (render_blob_t *)block;
+    if (!blob_aligned(block) || src->bytes > size || size < sizeof *dst ||
+        dst->magic != RENDER_BLOB_MAGIC || dst->home != (uintptr_t)block || src->scene_id == 0 ||
+        dst->scene_id != src->scene_id || dst->scene_bytes != src->scene_bytes ||
+        src->scene_bytes > src->bytes || !src->frame)
+        return render_blob_copy(block, size, src, out, err);
+    blob_ok(err);
+    /* the frame part: from the first word boundary at or after the scene's
+     * end (the frame's first array is aligned past it; what lies between is
+     * padding) */
+    size_t at = (src->scene_bytes + sizeof(uint32_t) - 1) & ~(sizeof(uint32_t) - 1);
+    if (at < src->bytes)
+        words_copy((uint8_t *)block + at, (const uint8_t *)src + at, src->bytes - at);
+    render_frame_t *frame = src->frame;
+    const char *bad;
+    if (render_relocate_frame(block, src->bytes, src->home, &frame, &bad) != RENDER_OK) {
+        dst->magic = 0; /* the next frame is copied whole */
+        blob_fail(err, RENDER_BLOB_ERR_RELOCATE, "blob not self-contained: %s", bad);
+        return err->status;
+    }
+    dst->frame_index = src->frame_index;
+    dst->bytes = src->bytes;
+    dst->bound = src->bound;
+    dst->peak = src->peak;
+    dst->frame = frame;
+    if (partial)
+        *partial = 1;
+    *out = dst;
+    return RENDER_BLOB_OK;
 }
 
 render_blob_status_t render_blob_open(const void *block, size_t size, const render_blob_t **out,

@@ -11,7 +11,9 @@
  *       IMSU swap hands the block to the RC at the same address.
  *   RC: render_blob_copy() into the broadcast block: blob->bytes bytes,
  *       eight words a step (render/words.h), then every pointer moved by
- *       the distance between the blocks (render_blob_relocate).
+ *       the distance between the blocks (render_blob_relocate); for the
+ *       next frames of the same scene render_blob_copy_frame() copies and
+ *       relocates the frame part alone.
  *   NC: render_blob_open() on the broadcast block (read-only), then
  *       render_ctx_init(&ctx, blob->frame) and render_area() (render/clip.h).
  *
@@ -47,6 +49,10 @@ typedef struct {
     size_t peak;           /* most bytes of the block the build used at
                               once (scratch included): the DM's high-water
                               mark for this frame */
+    uint32_t scene_id;     /* which load of which scene this is (the DM
+                              numbers its loads; 0: unnumbered): two blobs
+                              of one id hold the same scene part, byte for
+                              byte at the same offsets */
     scene_t scene;         /* the loaded scene; its arrays are in the block */
     render_frame_t *frame; /* reloc; the prepared frame, in the block */
 } render_blob_t;
@@ -107,6 +113,17 @@ render_blob_status_t render_blob_prepare(render_blob_t *blob, uint32_t frame_ind
  * copy as render_blob_relocate leaves it on failure. */
 render_blob_status_t render_blob_copy(void *block, size_t size, const render_blob_t *src,
                                       render_blob_t **out, render_blob_error_t *err);
+
+/* The RC's forwarding of a frame of the scene the broadcast block already
+ * holds: when block holds a blob relocated there (render_blob_copy) whose
+ * scene_id is src's (not 0) and whose scene part is as long, only src's
+ * frame part (from scene_bytes on) is copied and only the frame's pointers
+ * are moved: the scene part, already there and relocated, is neither
+ * copied nor walked again.  Otherwise as render_blob_copy.  *partial (when
+ * not NULL) says which was done. */
+render_blob_status_t render_blob_copy_frame(void *block, size_t size, const render_blob_t *src,
+                                            render_blob_t **out, int *partial,
+                                            render_blob_error_t *err);
 
 /* After a byte copy of a blob (its first blob->bytes bytes) to block:
  * moves every pointer from the address it was built at (blob->home) to

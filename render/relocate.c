@@ -12,6 +12,7 @@ typedef struct {
     uintptr_t old_lo, old_hi; /* the original blob [old_lo, old_hi) */
     uintptr_t new_lo;         /* where its copy starts */
     int write;                /* 0: check every pointer; 1: rewrite them */
+    int frame_only;           /* 1: the scene is relocated already */
     const char *bad;          /* first field outside the blob, or NULL */
 } reloc_t;
 
@@ -152,16 +153,16 @@ static void reloc_pass(reloc_t *r, const scene_t *scene, render_frame_t *frame, 
         if (r->write && !r->bad)
             (*new_frame)->scene = fs;
     }
-    if (*new_scene && !r->bad)
+    if (*new_scene && !r->bad && !r->frame_only)
         reloc_scene(r, *new_scene);
 }
 
-render_status_t render_relocate(void *new_base, size_t size, uintptr_t old_base,
-                                const scene_t **scene, render_frame_t **frame,
-                                const char **bad_field)
+static render_status_t reloc_run(void *new_base, size_t size, uintptr_t old_base,
+                                 const scene_t **scene, render_frame_t **frame,
+                                 const char **bad_field, int frame_only)
 {
     uintptr_t new_lo = (uintptr_t)new_base;
-    reloc_t r = {old_base, old_base + size, new_lo, 0, NULL};
+    reloc_t r = {old_base, old_base + size, new_lo, 0, frame_only, NULL};
     if (bad_field)
         *bad_field = NULL;
     if (!new_base || old_base % RENDER_RELOCATE_ALIGN != 0 || new_lo % RENDER_RELOCATE_ALIGN != 0 ||
@@ -186,4 +187,17 @@ render_status_t render_relocate(void *new_base, size_t size, uintptr_t old_base,
     if (frame)
         *frame = new_frame;
     return RENDER_OK;
+}
+
+render_status_t render_relocate(void *new_base, size_t size, uintptr_t old_base,
+                                const scene_t **scene, render_frame_t **frame,
+                                const char **bad_field)
+{
+    return reloc_run(new_base, size, old_base, scene, frame, bad_field, 0);
+}
+
+render_status_t render_relocate_frame(void *new_base, size_t size, uintptr_t old_base,
+                                      render_frame_t **frame, const char **bad_field)
+{
+    return reloc_run(new_base, size, old_base, NULL, frame, bad_field, 1);
 }

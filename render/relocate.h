@@ -42,4 +42,11 @@ render_status_t render_relocate(void *new_base, size_t size, uintptr_t old_base,
                                 const scene_t **scene, render_frame_t **frame,
                                 const char **bad_field);
 
+/* As render_relocate for the frame alone, over a copy whose scene (the
+ * one frame->scene names) is already relocated in it: the frame's pointers
+ * (into the frame or the scene) are checked and moved, the scene's are not
+ * touched. */
+render_status_t render_relocate_frame(void *new_base, size_t size, uintptr_t old_base,
+                                      render_frame_t **frame, const char **bad_field);
+
 #endif

@@ -45,6 +45,9 @@ static struct {
                              render): told with the frame */
     int loaded[2];        /* IMSU block A / B holds this scene, loaded: a
                              frame is prepared there without loading again */
+    uint32_t load_id;     /* this scene's number (blob->scene_id, never 0):
+                             the RC then copies only the frame part of the
+                             next blobs of the same load */
 } dm_scene;
 
 static const char dm_blob_limit_name[] = MACHINE_IMSU_BLOCK_NAME;
@@ -102,6 +105,8 @@ static int dm_prepare(uint32_t frame, render_blob_error_t *err)
         st = render_blob_load(dm_scene.compiled, dm_scene.len, block, p->size,
                               dm_blob_limit_name, &blob, err);
         dm_scene.loaded[held] = st == RENDER_BLOB_OK;
+        if (st == RENDER_BLOB_OK)
+            blob->scene_id = dm_scene.load_id;
     }
     uint64_t t0 = ktime_now();
     insn_mark_trace_span_begin(); /* the preprocessing of one frame (docs/trace.md) */
@@ -152,6 +157,8 @@ void dm_cmd_scene_load(uint16_t cmd)
     dm_scene.len = 0;
     dm_scene.prepared = -1;
     dm_scene.loaded[0] = dm_scene.loaded[1] = 0;
+    if (++dm_scene.load_id == 0) /* 0 is "unnumbered" */
+        dm_scene.load_id = 1;
     struct dm_scene_rx rx = {NULL, 0, ""};
     size_t room = kmem_free();
     if (len == 0 || len > SCN_MAX_SIZE || len > room)

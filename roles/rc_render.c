@@ -144,10 +144,11 @@ static int rc_broadcast(struct rc_run *run, const render_blob_t **out)
         return -1;
     }
     /* eight words a step: serial work before any NC starts, and the one
-     * part of the RC's frame that grows with the scene */
+     * part of the RC's frame that grows with the scene; the scene part only
+     * when the broadcast block does not hold this load of the scene yet */
     render_blob_t *blob;
     render_blob_error_t err;
-    render_blob_status_t st = render_blob_copy(w, b->size, src, &blob, &err);
+    render_blob_status_t st = render_blob_copy_frame(w, b->size, src, &blob, NULL, &err);
     imsu_bcast_write_end(b, UNITS_RC_CORE);
     if (st != RENDER_BLOB_OK) {
         run->status = LINK_ERR_CHECK;

@@ -408,6 +408,52 @@ static void test_blob_load_then_prepare(void)
     free(buf);
 }
 
+/* The RC's frame-only forwarding: the DM's two blocks A and B hold one
+ * load of anim (scene_id 7), frames 0 and 1; A is copied whole into the
+ * broadcast block C, then B's frame into C alone (render_blob_copy_frame):
+ * C is then byte for byte what a whole copy of B into C gives.  A blob of
+ * another load (scene_id 8), or of none (0), is copied whole. */
+static void test_blob_copy_frame_only(void)
+{
+    size_t len, need;
+    render_blob_error_t err;
+    uint8_t *buf = tb_compile("anim", &len);
+    CHECK(buf != NULL);
+    if (!buf)
+        return;
+    CHECK_EQ_INT(render_blob_bytes(buf, len, &need, &err), RENDER_BLOB_OK);
+    uint8_t *a = tb_block(need), *b = tb_block(need), *c = tb_block(need), *whole = tb_block(need);
+    render_blob_t *ba = NULL, *bb = NULL, *bc = NULL;
+    int partial = -1;
+    CHECK_EQ_INT(render_blob_load(buf, len, a, need, NULL, &ba, &err), RENDER_BLOB_OK);
+    CHECK_EQ_INT(render_blob_load(buf, len, b, need, NULL, &bb, &err), RENDER_BLOB_OK);
+    if (ba && bb) {
+        ba->scene_id = bb->scene_id = 7;
+        CHECK_EQ_INT(render_blob_prepare(ba, 0, need, &err), RENDER_BLOB_OK);
+        CHECK_EQ_INT(render_blob_prepare(bb, 1, need, &err), RENDER_BLOB_OK);
+        CHECK_EQ_INT(render_blob_copy_frame(c, need, ba, &bc, &partial, &err), RENDER_BLOB_OK);
+        CHECK_EQ_INT(partial, 0); /* C held nothing: whole */
+        CHECK_EQ_INT(render_blob_copy_frame(c, need, bb, &bc, &partial, &err), RENDER_BLOB_OK);
+        CHECK_EQ_INT(partial, 1);
+        memcpy(whole, c, need);
+        render_blob_t *bw;
+        CHECK_EQ_INT(render_blob_copy(c, need, bb, &bw, &err), RENDER_BLOB_OK);
+        CHECK(bc && bc->frame_index == 1 && bc->bytes == bb->bytes);
+        CHECK(memcmp(whole, c, bb->bytes) == 0);
+        bb->scene_id = 8; /* another load: whole */
+        CHECK_EQ_INT(render_blob_copy_frame(c, need, bb, &bc, &partial, &err), RENDER_BLOB_OK);
+        CHECK_EQ_INT(partial, 0);
+        bb->scene_id = 0; /* unnumbered: whole */
+        CHECK_EQ_INT(render_blob_copy_frame(c, need, bb, &bc, &partial, &err), RENDER_BLOB_OK);
+        CHECK_EQ_INT(partial, 0);
+    }
+    free(a);
+    free(b);
+    free(c);
+    free(whole);
+    free(buf);
+}
+
 int main(void)
 {
     RUN(test_relocated_copy_renders_same);
@@ -418,5 +464,6 @@ int main(void)
     RUN(test_blob_errors);
     RUN(test_blob_detail);
     RUN(test_blob_load_then_prepare);
+    RUN(test_blob_copy_frame_only);
     return check_exit();
 }
