@@ -30,7 +30,8 @@ BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
 	tests/board/render_scaled.sh tests/board/render_auto.sh tests/board/render_density_steps.sh \
 	tests/board/render_lights.sh tests/board/render_paper.sh tests/board/an521.sh \
 	tests/board/render_view_keys.sh tests/board/render_film.sh \
-	tests/board/farm.sh tests/board/render_maps.sh
+	tests/board/farm.sh tests/board/render_maps.sh tests/board/an521_named.sh \
+	tests/board/line_latency.sh
 RENDER_FULL_TESTS := tests/board/farm_hosts.sh tests/sweeps/scale_same_full.sh tests/board/an521_grid_full.sh tests/board/render_grid_full.sh tests/board/render_faults_full.sh \
 	tests/board/render_faults_silent_full.sh
 
@@ -86,6 +87,8 @@ BOARD_TESTS += tests/layers/layers.sh
 BOARD_TESTS += tests/runner/runner.sh
 # Every deliberate fault of tests/mutants/ still applies to the tree.
 BOARD_TESTS += tests/mutants/mutants_apply.sh
+# Every test the plan declares is run by some list.
+BOARD_TESTS += tests/runner/plan_rows.sh
 .PHONY: check-layers
 check-layers:
 	$(Q)bash tests/layers/check_layers.sh
