@@ -14,7 +14,7 @@ case $n$frames in *[!0-9]*) echo "make_spin.sh: N and FRAMES are numbers" >&2; e
 [ "$frames" -ge 2 ] || { echo "make_spin.sh: at least 2 frames" >&2; exit 2; }
 tmp=$(mktemp /tmp/links1-spin.XXXXXX.scn)
 trap 'rm -f "$tmp"' EXIT
-"$SPD" tetra "$n" -o "$tmp" >/dev/null
+"$SPD" ${SPIN_DB:-tetra} "$n" -o "$tmp" >/dev/null
 # the primitives (every line from the first triangle on) go into the cluster
 awk -v last=$((frames - 1)) '
     !inside && /^triangle / {
