@@ -130,32 +130,42 @@ int map_imprecise(const scene_map_t *m, num_t uv_error)
     return num_is_sat(texels) || num_gt(texels, NUM_C(RENDER_MAP_TEXEL_TOLERANCE_VALUE));
 }
 
-int map_bump_uncertain(const scene_map_t *m, num_t u, num_t v, num_t uv_error)
+/* Where a nearest-texel lookup at (u, v) with uv_error falls: 1 when its
+ * error is half a texel or more (or saturated), so any texel may be taken;
+ * else 0, with the texel and fraction of each axis (map_axis) and whether a
+ * texel border lies closer than the error in each. */
+static int map_lookup_spread(const scene_map_t *m, num_t u, num_t v, num_t uv_error, int32_t *x,
+                             int32_t *y, num_t *wx, num_t *wy, int *near_x, int *near_y)
 {
     num_t texels = map_texel_error(m, uv_error);
     if (num_is_sat(texels) || !num_lt(texels, NUM_HALF))
         return 1;
+    map_axis(u, m->repeat_u, m->width, x, wx);
+    map_axis(v, m->repeat_v, m->height, y, wy);
+    *near_x = num_lt(num_abs(num_sub(*wx, NUM_HALF)), texels);
+    *near_y = num_lt(num_abs(num_sub(*wy, NUM_HALF)), texels);
+    return 0;
+}
+
+int map_bump_uncertain(const scene_map_t *m, num_t u, num_t v, num_t uv_error)
+{
     int32_t x, y;
     num_t wx, wy;
-    map_axis(u, m->repeat_u, m->width, &x, &wx);
-    map_axis(v, m->repeat_v, m->height, &y, &wy);
-    return num_lt(num_abs(num_sub(wx, NUM_HALF)), texels) ||
-           num_lt(num_abs(num_sub(wy, NUM_HALF)), texels);
+    int near_x, near_y;
+    if (map_lookup_spread(m, u, v, uv_error, &x, &y, &wx, &wy, &near_x, &near_y))
+        return 1;
+    return near_x || near_y;
 }
 
 int map_normal_uncertain(const scene_map_t *m, num_t u, num_t v, num_t uv_error)
 {
-    num_t texels = map_texel_error(m, uv_error);
-    if (num_is_sat(texels) || !num_lt(texels, NUM_HALF))
-        return 1;
     int32_t x, y;
     num_t wx, wy;
-    map_axis(u, m->repeat_u, m->width, &x, &wx);
-    map_axis(v, m->repeat_v, m->height, &y, &wy);
+    int near_x, near_y;
+    if (map_lookup_spread(m, u, v, uv_error, &x, &y, &wx, &wy, &near_x, &near_y))
+        return 1;
     /* the columns and rows the lookup may take: the nearest, and across a
      * texel border closer than the error both sides of it */
-    int near_x = num_lt(num_abs(num_sub(wx, NUM_HALF)), texels);
-    int near_y = num_lt(num_abs(num_sub(wy, NUM_HALF)), texels);
     int32_t x0 = near_x ? x : x + num_ge(wx, NUM_HALF), x1 = near_x ? x + 1 : x0;
     int32_t y0 = near_y ? y : y + num_ge(wy, NUM_HALF), y1 = near_y ? y + 1 : y0;
     const uint8_t *first = map_texel(m, x0, y0);
