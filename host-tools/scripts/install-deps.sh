@@ -6,11 +6,12 @@ set -eu
 need_pkgs=(make gcc libc6-dev libpng-dev gcc-arm-none-eabi picolibc-arm-none-eabi
            libnewlib-arm-none-eabi qemu-system-arm povray python3 libassimp-dev
            clang libclang-rt-dev gdb-multiarch gnuplot-nox ffmpeg parallel
-           rsync openssh-server openssh-client)
+           rsync openssh-server openssh-client time)
 # parallel, rsync, openssh-*: `links1 farm` hands frames to hosts through GNU parallel
 # (its --return copies frames back with rsync over ssh); the farm test starts a
 # throw-away sshd on localhost.
 # ffmpeg: `links1 render --frames A:B -o FILM.mp4` pipes the frames to its CLI.
+# time: GNU time, the wall and CPU seconds tests/bench/bench_farm.sh reads.
 # gnuplot-nox: the charts of `make figures` and `make sweeps`, PNG without X.
 # clang: the fuzz harnesses (tests/fuzz/); libclang-rt-dev holds libFuzzer's
 # and the sanitizers' runtimes, which clang only recommends.  gdb-multiarch:
