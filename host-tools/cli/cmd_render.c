@@ -134,6 +134,7 @@ static void render_usage(FILE *out)
             "  --insn-profile FILE  the NCs' guest instructions per translated block,\n"
             "                   \"ADDR COUNT\" lines into FILE (attribute them to the\n"
             "                   firmware's functions: tests/bench/bench_insn_funcs.sh)\n"
+            "  --insn-profile-core K  profile core K alone (0 the DM, 1 the RC) instead\n"
             "  --inject-faults K[:SEED]  test hook: K random NCs (fewer than --ncs) fail at\n"
             "                   random points of the first frame; the frame still completes\n"
             "  --inject-kind KIND  undef, abort, hang, silent or mixed (default mixed)\n"
@@ -180,6 +181,7 @@ enum render_opt_code {
     RENDER_OPT_PPM,
     RENDER_OPT_COUNT_INSNS,
     RENDER_OPT_INSN_PROFILE,
+    RENDER_OPT_INSN_PROFILE_CORE,
     RENDER_OPT_BOARD,
     RENDER_OPT_INJECT_FAULTS,
     RENDER_OPT_INJECT_KIND,
@@ -221,6 +223,7 @@ static const struct option render_options[] = {
     {"ppm", no_argument, NULL, RENDER_OPT_PPM},
     {"count-insns", no_argument, NULL, RENDER_OPT_COUNT_INSNS},
     {"insn-profile", required_argument, NULL, RENDER_OPT_INSN_PROFILE},
+    {"insn-profile-core", required_argument, NULL, RENDER_OPT_INSN_PROFILE_CORE},
     {"board", required_argument, NULL, RENDER_OPT_BOARD},
     {"inject-faults", required_argument, NULL, RENDER_OPT_INJECT_FAULTS},
     {"inject-kind", required_argument, NULL, RENDER_OPT_INJECT_KIND},
@@ -380,6 +383,11 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
         return 0;
     case RENDER_OPT_INSN_PROFILE:
         o->board.insn_profile_out = c->arg;
+        return 0;
+    case RENDER_OPT_INSN_PROFILE_CORE:
+        if (cli_long(c, 10, 0, UNITS_MAX_CORES - 1, &n) < 0)
+            return -1;
+        o->board.insn_profile_core = (int)n;
         return 0;
     case RENDER_OPT_BOARD:
         o->board_name = c->arg;
@@ -560,6 +568,12 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
     if (o->trace && (o->njobs > 1 || o->many)) {
         fprintf(stderr, "links1 render: --trace records one frame of one scene: give one SCENE "
                 "and no --frames\n");
+        return -1;
+    }
+    if (o->board.insn_profile_core >= 0 &&
+        (!o->board.insn_profile_out || o->board.insn_profile_core >= o->board.ncores)) {
+        fprintf(stderr, "links1 render: --insn-profile-core %d goes with --insn-profile, and the "
+                "board has cores 0..%d\n", o->board.insn_profile_core, o->board.ncores - 1);
         return -1;
     }
     if (o->row_first >= 0 && o->bands) {

@@ -27,8 +27,9 @@
  * within the blocks they sit in, and differences of successive marks add
  * up to the difference of the first and last (links1 render --trace).
  *
- * With profile=FILE (and profile_from=K) the instructions of vCPUs K and
- * up are also counted per translated block: at exit FILE gets one line
+ * With profile=FILE (and profile_from=K, and profile_to=L) the
+ * instructions of vCPUs K to L (from K on when no L; none when L < K)
+ * are also counted per translated block: at exit FILE gets one line
  * "ADDR COUNT" per block start address that ran (hexadecimal guest address,
  * instructions executed in blocks starting there, retranslations summed),
  * which the firmware's symbol table attributes to functions (links1 render
@@ -188,6 +189,7 @@ struct insn_prof_tb {
 };
 static char insn_prof_out[4096];      /* profile file, or "" */
 static unsigned insn_prof_from;       /* the first vCPU profiled */
+static unsigned insn_prof_to = ~0u;   /* the last */
 static struct insn_prof_tb *insn_prof_list; /* every block translated */
 static pthread_mutex_t insn_prof_lock = PTHREAD_MUTEX_INITIALIZER;
 static int insn_prof_oom;
@@ -195,7 +197,7 @@ static int insn_prof_oom;
 static void insn_prof_exec(unsigned int vcpu, void *rec)
 {
     struct insn_prof_tb *t = rec;
-    if (vcpu >= insn_prof_from)
+    if (vcpu >= insn_prof_from && vcpu <= insn_prof_to)
         __atomic_fetch_add(&t->count, (uint64_t)t->n, __ATOMIC_RELAXED);
 }
 
@@ -364,12 +366,15 @@ PLUGIN_EXPORT int qemu_plugin_install(qemu_plugin_id_t id, const qemu_info_t *in
         } else if (strncmp(argv[i], "profile=", 8) == 0 &&
                    strlen(argv[i] + 8) < sizeof insn_prof_out) {
             strcpy(insn_prof_out, argv[i] + 8);
+        } else if (strncmp(argv[i], "profile_to=", 11) == 0 && atol(argv[i] + 11) >= 0 &&
+                   atol(argv[i] + 11) < INSN_COUNT_MAX_VCPUS) {
+            insn_prof_to = (unsigned)atol(argv[i] + 11); /* below profile_from: none */
         } else if (strncmp(argv[i], "profile_from=", 13) == 0 && atol(argv[i] + 13) >= 0 &&
                    atol(argv[i] + 13) <= INSN_COUNT_MAX_VCPUS) {
             insn_prof_from = (unsigned)atol(argv[i] + 13);
         } else {
             qemu_plugin_outs("insn-count: arguments are out=FILE, series=FILE, every=MS, "
-                             "trace=FILE, profile=FILE, profile_from=K\n");
+                             "trace=FILE, profile=FILE, profile_from=K, profile_to=L\n");
             return -1;
         }
     }

@@ -40,6 +40,7 @@ void board_opts_init(struct board_opts *o)
     o->ram_mb = BOARD_DEFAULT_RAM_MB;
     o->timeout_s = BOARD_DEFAULT_TIMEOUT_S;
     o->link = LINK_PATH_SHARED;
+    o->insn_profile_core = -1;
 }
 
 /* --gdb takes no value: the stub is a unix socket only this user can

@@ -105,10 +105,20 @@ static int board_plugin_arg(const struct board *b, int board, char *out, size_t 
         board_an521_file(o->insn_trace_out, board, file, sizeof file);
         n += (size_t)snprintf(out + n, n < cap ? cap - n : 0, ",trace=%s", file);
     }
-    if (o->insn_profile_out) { /* the NCs only: an an521 NC board's every vCPU */
+    if (o->insn_profile_out) {
         board_an521_file(o->insn_profile_out, board, file, sizeof file);
+        int from = board == 0 ? UNITS_FIRST_NC : 0, to = -2; /* -2: every vCPU from */
+        if (o->insn_profile_core >= 0) { /* one core: on an an521 board, core k is
+                                            vCPU k % 2 of board k / 2 */
+            int per = o->machine == MACHINE_AN521 ? 2 : o->ncores;
+            int here = o->insn_profile_core / per == board;
+            from = here ? o->insn_profile_core % per : 1; /* 1 to 0: none here */
+            to = here ? from : 0;
+        }
         n += (size_t)snprintf(out + n, n < cap ? cap - n : 0, ",profile=%s,profile_from=%d",
-                              file, board == 0 ? UNITS_FIRST_NC : 0);
+                              file, from);
+        if (to != -2)
+            n += (size_t)snprintf(out + n, n < cap ? cap - n : 0, ",profile_to=%d", to);
     }
     return 1;
 }

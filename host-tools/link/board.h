@@ -53,6 +53,7 @@ struct board_opts {
                                    mark here (proto/insn_mark.h) */
     const char *insn_profile_out; /* non-NULL: the counting plugin writes the NCs'
                                      instructions per block address here */
+    int insn_profile_core;  /* the one core profiled, or -1: the NCs */
     int quiet;              /* 1: do not print LOG lines or the board-up line
                                (faults always) */
     int verbose;            /* 1: a line per unit computer reporting in */

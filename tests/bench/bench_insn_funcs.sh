@@ -30,24 +30,7 @@ profile() {
         tail -n 5 "$out/$m.log" >&2
         exit 1
     }
-    if grep -q '^oom' "$out/$m.prof"; then
-        echo "bench_insn_funcs: the plugin ran out of memory on $m" >&2
-        exit 1
-    fi
-    # Function symbols (a Thumb function's address has bit 0 set: cleared
-    # on the last hex digit), then the profile's blocks, both by address
-    # (8 lowercase hex digits sort as numbers); each block goes to the last
-    # function at or below it.
-    "$NM" -n --defined-only "$elf" |
-        awk '$2 ~ /^[TtWw]$/ && length($1) == 8 {
-                 d = index("0123456789abcdef", substr($1, 8, 1)) - 1
-                 d -= d % 2
-                 print substr($1, 1, 7) substr("0123456789abcdef", d + 1, 1), 0, $3 }' \
-            >"$out/$m.syms"
-    awk '{ print $1, 1, $2 }' "$out/$m.prof" >"$out/$m.blocks"
-    LC_ALL=C sort -s -k1,1 -k2,2n "$out/$m.syms" "$out/$m.blocks" |
-        awk '$2 == 0 { f = $3; next } { c[f == "" ? "?" : f] += $3 }
-             END { for (k in c) printf "%s %.0f\n", k, c[k] }' >"$out/$m.funcs"
+    bash tests/bench/insn_funcs.sh "$out/$m.prof" "$elf" >"$out/$m.funcs"
 }
 profile virt "$FW_DIR/links1-$ARITH.elf"
 profile an521 "$FW_DIR/an521/links1-$ARITH.elf"
