@@ -23,9 +23,9 @@
 #include "host-tools/cli/links1_cmds.h"
 #include "host-tools/image/film.h"
 #include "host-tools/image/image_io.h"
+#include "host-tools/image/image_save.h"
 #include "host-tools/opts/cli_args.h"
 #include "host-tools/opts/cli_opt.h"
-#include "host-tools/opts/out_file.h"
 #include "host-tools/opts/self_path.h"
 
 #define FARM_MAX_FRAMES 100000 /* frames in one farm */
@@ -286,16 +286,19 @@ static int farm_read_joblog(const char *log, struct farm_host *hosts, int *nhost
     return 0;
 }
 
-/* The frame's file in DIR. */
-static void farm_frame_path(const char *dir, long f, const char *ext, char *out, size_t cap)
+/* Item n's file in DIR: what makes "frame" (frame-NNNN.EXT) or "band". */
+static void farm_item_path(const char *dir, const char *what, long n, const char *ext, char *out,
+                           size_t cap)
 {
-    snprintf(out, cap, "%s/frame-%04ld.%s", dir, f, ext);
+    snprintf(out, cap, "%s/%s-%04ld.%s", dir, what, n, ext);
 }
 
-/* Band b's file in DIR. */
-static void farm_band_path(const char *dir, long b, const char *ext, char *out, size_t cap)
+/* Whether path is a finished item: a non-empty regular file (frames and
+ * bands are written whole, so one that is there is complete). */
+static int farm_item_there(const char *path)
 {
-    snprintf(out, cap, "%s/band-%04ld.%s", dir, b, ext);
+    struct stat st;
+    return lstat(path, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0;
 }
 
 /* The bands 0..bands-1 of DIR stitched top to bottom into frame f of DIR
@@ -307,7 +310,7 @@ static int farm_stitch(const char *dir, long f, long bands, const char *ext)
     struct image whole = {0, 0, NULL};
     for (long b = 0; b < bands; b++) {
         struct image img;
-        farm_band_path(dir, b, ext, path, sizeof path);
+        farm_item_path(dir, "band", b, ext, path, sizeof path);
         if (image_read(path, &img, err, sizeof err) != 0) {
             fprintf(stderr, "links1 farm: stitching: %s\n", err);
             image_free(&whole);
@@ -334,15 +337,8 @@ static int farm_stitch(const char *dir, long f, long bands, const char *ext)
         whole.height += img.height;
         image_free(&img);
     }
-    farm_frame_path(dir, f, ext, path, sizeof path);
-    struct out_file of;
-    int rc = out_file_open(&of, path, err, sizeof err);
-    if (rc == 0 && image_write(of.f, path, &whole, strcmp(ext, "ppm") == 0, err, sizeof err) != 0) {
-        out_file_abort(&of);
-        rc = -1;
-    } else if (rc == 0) {
-        rc = out_file_commit(&of, err, sizeof err);
-    }
+    farm_item_path(dir, "frame", f, ext, path, sizeof path);
+    int rc = image_save(path, &whole, strcmp(ext, "ppm") == 0, err, sizeof err);
     image_free(&whole);
     if (rc != 0) {
         fprintf(stderr, "links1 farm: stitching: %s\n", err);
@@ -350,7 +346,7 @@ static int farm_stitch(const char *dir, long f, long bands, const char *ext)
     }
     for (long b = 0; b < bands; b++) {
         char band[PATH_MAX + 32];
-        farm_band_path(dir, b, ext, band, sizeof band);
+        farm_item_path(dir, "band", b, ext, band, sizeof band);
         unlink(band);
     }
     printf("links1 farm: %ld bands stitched into %s\n", bands, path);
@@ -368,7 +364,7 @@ static int farm_film(const char *dir, long first, long last, const char *ext, co
     char err[PATH_MAX + 256];
     for (long f = first; f <= last; f++) {
         char path[PATH_MAX + 32];
-        farm_frame_path(dir, f, ext, path, sizeof path);
+        farm_item_path(dir, "frame", f, ext, path, sizeof path);
         struct image img;
         if (image_read(path, &img, err, sizeof err) != 0) {
             fprintf(stderr, "links1 farm: --film %s: %s\n", out, err);
@@ -537,30 +533,26 @@ int cmd_farm(int argc, char **argv)
         setenv("FW_DIR", fw_abs, 1);
     }
 
-    /* Rounds: the frames not in DIR handed to parallel; a frame whose job
-     * ended well but which did not arrive (its host died before parallel's
-     * --return copied it) is handed out again in the next round, up to
-     * --retries rounds. */
-    /* The items handed out: frames first..last, or with --bands the bands
-     * 0..bands-1 of frame first (none when that frame is in DIR already). */
-    long nframes = last - first + 1, kept = 0, refarmed = 0, missing = 0;
-    long item0 = first, nitems = nframes;
+    /* The items: frames first..last, or with --bands the bands 0..bands-1
+     * of frame first (none when that frame is in DIR already).  Rounds: the
+     * items not in DIR handed to parallel; one whose job ended well but
+     * which did not arrive (its host died before parallel's --return copied
+     * it) is handed out again in the next round, up to --retries rounds. */
     const char *unit = bands ? "band" : "frame"; /* what a job makes */
+    long item0 = bands ? 0 : first, nitems = bands ? bands : last - first + 1;
+    long kept = 0, refarmed = 0, missing = 0;
     if (bands) {
         char path[PATH_MAX + 32];
-        farm_frame_path(dir_abs, first, ext, path, sizeof path);
-        struct stat st;
-        if (lstat(path, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+        farm_item_path(dir_abs, "frame", first, ext, path, sizeof path);
+        if (farm_item_there(path)) {
             printf("links1 farm: frame %ld of %s is in %s already (%s): nothing to do\n", first,
                    scene_abs, dir_abs, path);
             return 0;
         }
-        item0 = 0;
-        nframes = nitems = bands;
     }
-    char **todo = calloc((size_t)nframes, sizeof *todo);
-    char *ok = calloc((size_t)nframes, 1);         /* todo[i]'s job ended well */
-    char *again = calloc((size_t)nframes, 1);      /* frame A + i: may go out again */
+    char **todo = calloc((size_t)nitems, sizeof *todo);
+    char *ok = calloc((size_t)nitems, 1);          /* todo[i]'s job ended well */
+    char *again = calloc((size_t)nitems, 1);       /* item item0 + i: may go out again */
     struct farm_host *hosts = calloc(FARM_MAX_HOSTS, sizeof *hosts);
     if (!todo || !ok || !again || !hosts) {
         fprintf(stderr, "links1 farm: out of memory\n");
@@ -573,12 +565,8 @@ int cmd_farm(int argc, char **argv)
         missing = 0;
         for (long f = item0; f < item0 + nitems; f++) {
             char path[PATH_MAX + 32];
-            if (bands)
-                farm_band_path(dir_abs, f, ext, path, sizeof path);
-            else
-                farm_frame_path(dir_abs, f, ext, path, sizeof path);
-            struct stat st;
-            if (lstat(path, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0) {
+            farm_item_path(dir_abs, unit, f, ext, path, sizeof path);
+            if (farm_item_there(path)) {
                 if (round == 1)
                     kept++;
                 continue;
@@ -586,8 +574,8 @@ int cmd_farm(int argc, char **argv)
             missing++;
             if (round > retries || (round > 1 && !again[f - item0])) {
                 if (missing <= 10)
-                    fprintf(stderr, "links1 farm: %s %ld did not arrive (%s)\n",
-                            bands ? "band" : "frame", f, path);
+                    fprintf(stderr, "links1 farm: %s %ld did not arrive (%s)\n", unit, f,
+                            path);
                 continue;
             }
             char num[24];
@@ -632,7 +620,7 @@ int cmd_farm(int argc, char **argv)
                                  "exec {1} render {2} --frames {3}:{3} -o frame.%s --quiet", ext);
         for (int i = 0; i < nextra && n < (int)sizeof templ; i++)
             n += snprintf(templ + n, sizeof templ - (size_t)n, " {%d}", 4 + i);
-        snprintf(ret, sizeof ret, "%s-{3}.%s", bands ? "band" : "frame", ext);
+        snprintf(ret, sizeof ret, "%s-{3}.%s", unit, ext);
         snprintf(retries_s, sizeof retries_s, "%d", retries);
         size_t cap = (size_t)(32 + 2 * nextra + ntodo);
         const char **av = calloc(cap, sizeof *av);
@@ -697,13 +685,13 @@ int cmd_farm(int argc, char **argv)
             return 1;
         }
         long jobs_round = 0;
-        memset(ok, 0, (size_t)nframes);
+        memset(ok, 0, (size_t)nitems);
         if (farm_read_joblog(joblog, hosts, &nhosts, &jobs_round, ok, ntodo) != 0)
             return 1;
         njobs += jobs_round;
         /* only a frame whose job ended well goes out again (its host died
          * before the frame was returned); one that failed every try does not */
-        memset(again, 0, (size_t)nframes);
+        memset(again, 0, (size_t)nitems);
         for (long i = 0; i < ntodo; i++)
             if (ok[i])
                 again[strtol(todo[i], NULL, 10) - item0] = 1;
@@ -719,13 +707,13 @@ int cmd_farm(int argc, char **argv)
             printf(", %ld %s(s) failed there on their last try", hosts[h].failed, unit);
         printf("\n");
     }
-    long arrived = nframes - missing - kept;
+    long arrived = nitems - missing - kept;
     printf("links1 farm: %ld %s(s) rendered now, %ld kept from before, %ld missing; "
            "retries: %ld job(s) failed on their last try, %ld %s(s) handed out again "
            "(done but not arrived), %ld job(s) in parallel's joblogs (a try parallel retried "
            "is not logged there, only each frame's last)\n",
            arrived, unit, kept, missing, failed, refarmed, unit, njobs);
-    for (long i = 0; i < nframes; i++)
+    for (long i = 0; i < nitems; i++)
         free(todo[i]);
     free(todo);
     free(ok);

@@ -19,6 +19,7 @@
 #include "host-tools/ref/arith_auto.h"
 #include "host-tools/image/film.h"
 #include "host-tools/image/image_io.h"
+#include "host-tools/image/image_save.h"
 #include "host-tools/opts/cli_args.h"
 #include "host-tools/opts/out_file.h"
 #include "host-tools/scene/scene_desc.h"
@@ -850,20 +851,12 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         long long t2 = board_now_ms();
         o->wall.pull += t2 - t1;
         render_faults_print(stdout, a.frame, &fails);
-        /* Written whole or not at all (opts/out_file.h): a run that dies
+        /* Written whole or not at all (image_save.h): a run that dies
          * leaves no half frame for --resume to keep. */
-        struct out_file of;
-        if (filming) {
+        if (filming)
             rc = film_frame(&film, &img, err, sizeof err);
-        } else {
-            rc = out_file_open(&of, path, err, sizeof err);
-            if (rc == 0 && image_write(of.f, path, &img, ppm, err, sizeof err) != 0) {
-                out_file_abort(&of);
-                rc = -1;
-            } else if (rc == 0) {
-                rc = out_file_commit(&of, err, sizeof err);
-            }
-        }
+        else
+            rc = image_save(path, &img, ppm, err, sizeof err);
         if (rc != 0) {
             fprintf(stderr, "links1 render: %s\n", err);
             image_free(&img);

@@ -18,7 +18,7 @@
 #include "host-tools/image/film.h"
 #include "host-tools/image/image_io.h"
 #include "host-tools/opts/cli_args.h"
-#include "host-tools/opts/out_file.h"
+#include "host-tools/image/image_save.h"
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_file.h"
 #include "host-tools/ref/ref_opts.h"
@@ -152,19 +152,8 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     double secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
     double cpu = (double)(c1.tv_sec - c0.tv_sec) + 1e-9 * (double)(c1.tv_nsec - c0.tv_nsec);
     char err[SD_ERR_MAX];
-    struct out_file of;
-    int rc;
-    if (film) {
-        rc = film_frame(film, &img, err, sizeof err);
-    } else {
-        rc = out_file_open(&of, out, err, sizeof err);
-        if (rc == 0 && image_write(of.f, out, &img, ppm, err, sizeof err) != 0) {
-            out_file_abort(&of);
-            rc = -1;
-        } else if (rc == 0) {
-            rc = out_file_commit(&of, err, sizeof err);
-        }
-    }
+    int rc = film ? film_frame(film, &img, err, sizeof err)
+                  : image_save(out, &img, ppm, err, sizeof err);
     if (rc != 0)
         fprintf(stderr, "links1 ref: %s\n", err);
     else

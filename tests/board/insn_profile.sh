@@ -11,49 +11,34 @@ CHECKS="insn_profile_ncs insn_profile_dm insn_profile_dm_an521 insn_profile_core
 board_ready $CHECKS || exit 0
 T=$RENDER_TMP
 ELF=$FW_DIR/links1-float.elf
-# funcs PROFILE ELF: "FUNCTION COUNT" lines
-funcs() { bash tests/bench/insn_funcs.sh "$1" "$2" 2>&1; }
-# has FUNCS NAME: the count of NAME, 0 when absent
-has() { awk -v f="$2" '$1 == f { n = $2 } END { print n + 0 }' <<<"$1"; }
-profile() { # NAME PROFILE ARGS...
-    local name=$1 prof=$2; shift 2
-    "$LINKS1" render scenes/demo.scn --size 32x24 -o "$T/$name.png" --insn-profile "$prof" \
-        --quiet "$@" >"$T/$name.log" 2>&1
+# check NAME ELF WANT ARGS...: render with --insn-profile and ARGS; WANT
+# "ncs" wants the per-pixel function and no preparation, "dm" the reverse
+# (functions by tests/bench/insn_funcs.sh)
+check() {
+    local name=$1 elf=$2 want=$3 prof=$T/$1.prof f px prep
+    shift 3
+    if ! "$LINKS1" render scenes/demo.scn --size 32x24 -o "$T/$name.png" --insn-profile "$prof" \
+        --quiet "$@" >"$T/$name.log" 2>&1; then
+        echo "FAIL $name: $(tail -n 1 "$T/$name.log")"
+        return
+    fi
+    f=$(bash tests/bench/insn_funcs.sh "$prof" "$elf" 2>&1)
+    px=$(awk '$1 == "render_pixel_impl" { n = $2 } END { print n + 0 }' <<<"$f")
+    prep=$(awk '$1 == "render_prepare" { n = $2 } END { print n + 0 }' <<<"$f")
+    if [ "$want" = ncs ] && [ "$px" -gt 0 ] && [ "$prep" = 0 ]; then
+        echo "PASS $name (render_pixel_impl $px)"
+    elif [ "$want" = dm ] && [ "$prep" -gt 0 ] && [ "$px" = 0 ]; then
+        echo "PASS $name (render_prepare $prep)"
+    else
+        echo "FAIL $name: render_pixel_impl $px, render_prepare $prep (want the $want's)"
+    fi
 }
-if profile ncs "$T/ncs.prof" --ncs 2; then
-    f=$(funcs "$T/ncs.prof" "$ELF")
-    px=$(has "$f" render_pixel_impl) prep=$(has "$f" render_prepare)
-    if [ "$px" -gt 0 ] && [ "$prep" = 0 ]; then
-        echo "PASS insn_profile_ncs (render_pixel_impl $px)"
-    else
-        echo "FAIL insn_profile_ncs: render_pixel_impl $px, render_prepare $prep (want >0 and 0)"
-    fi
-else
-    echo "FAIL insn_profile_ncs: $(tail -n 1 "$T/ncs.log")"
-fi
-if profile dm "$T/dm.prof" --ncs 2 --insn-profile-core 0; then
-    f=$(funcs "$T/dm.prof" "$ELF")
-    px=$(has "$f" render_pixel_impl) prep=$(has "$f" render_prepare)
-    if [ "$prep" -gt 0 ] && [ "$px" = 0 ]; then
-        echo "PASS insn_profile_dm (render_prepare $prep)"
-    else
-        echo "FAIL insn_profile_dm: render_prepare $prep, render_pixel_impl $px (want >0 and 0)"
-    fi
-else
-    echo "FAIL insn_profile_dm: $(tail -n 1 "$T/dm.log")"
-fi
-if profile dm521 "$T/dm521.prof" --machine an521 --ncs 2 --insn-profile-core 0; then
-    f=$(funcs "$T/dm521.prof" "$FW_DIR/an521/links1-float.elf")
-    px=$(has "$f" render_pixel_impl) prep=$(has "$f" render_prepare)
-    if [ "$prep" -gt 0 ] && [ "$px" = 0 ]; then
-        echo "PASS insn_profile_dm_an521 (render_prepare $prep)"
-    else
-        echo "FAIL insn_profile_dm_an521: render_prepare $prep, render_pixel_impl $px (want >0 and 0)"
-    fi
-else
-    echo "FAIL insn_profile_dm_an521: $(tail -n 1 "$T/dm521.log")"
-fi
-if ! profile bad "$T/bad.prof" --ncs 2 --insn-profile-core 4 &&
+check insn_profile_ncs "$ELF" ncs --ncs 2
+check insn_profile_dm "$ELF" dm --ncs 2 --insn-profile-core 0
+check insn_profile_dm_an521 "$FW_DIR/an521/links1-float.elf" dm --machine an521 --ncs 2 \
+    --insn-profile-core 0
+if ! "$LINKS1" render scenes/demo.scn --size 32x24 -o "$T/bad.png" --insn-profile "$T/bad.prof" \
+    --quiet --ncs 2 --insn-profile-core 4 >"$T/bad.log" 2>&1 &&
     grep -q 'insn-profile-core 4 goes with --insn-profile, and the board has cores 0..3' "$T/bad.log"; then
     echo "PASS insn_profile_core_refused"
 else
