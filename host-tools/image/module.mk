@@ -10,7 +10,7 @@ BOARD_TESTS += tests/images/ref_film.sh
 # (image_compare.c reads render/render.h for the --mark-lost colour)
 
 HOST_TESTS += test_scene_image
-test_scene_image_SRCS = tests/host/test_scene_image.c $(HT_IMAGE_IO_SRCS) \
+test_scene_image_SRCS = tests/host/test_scene_image.c $(HT_IMAGE_IO_SRCS) host-tools/image/image_save.c \
 	$(HT_IMAGE_COMPARE_SRCS) host-tools/cli/cmd_compare.c $(HT_OPTS_CLI_SRCS)
 test_scene_image_ARITH := double
 test_scene_image_LIBS := -lpng -lm

@@ -7,7 +7,7 @@
 #include <unistd.h>
 
 #include "host-tools/image/image_io.h"
-#include "host-tools/opts/out_file.h"
+#include "host-tools/image/image_save.h"
 #include "host-tools/cli/scene_cmds.h"
 #include "tests/check.h"
 
@@ -28,19 +28,6 @@ static void tmp_path(char *buf, size_t n, const char *ext)
     snprintf(buf, n, "/tmp/test_scene_image_%ld%s", (long)getpid(), ext);
 }
 
-/* img written to path whole (host-tools/opts/out_file.h), as PNG or PPM. */
-static int save(const char *path, const struct image *img, int ppm, char *err, size_t cap)
-{
-    struct out_file of;
-    if (out_file_open(&of, path, err, cap) != 0)
-        return -1;
-    if (image_write(of.f, path, img, ppm, err, cap) != 0) {
-        out_file_abort(&of);
-        return -1;
-    }
-    return out_file_commit(&of, err, cap);
-}
-
 static void test_round_trips(void)
 {
     struct image a, b;
@@ -49,7 +36,7 @@ static void test_round_trips(void)
     const char *exts[] = {".png", ".ppm"};
     for (int k = 0; k < 2; k++) {
         tmp_path(path, sizeof path, exts[k]);
-        int rc = save(path, &a, k, err, sizeof err);
+        int rc = image_save(path, &a, k, err, sizeof err);
         CHECK_EQ_INT(rc, 0);
         CHECK_EQ_INT(image_read(path, &b, err, sizeof err), 0);
         CHECK_EQ_INT(b.width, W);
@@ -108,14 +95,14 @@ static void test_compare_counts(void)
     b.rgb[3 * 55 + 1] = 103; /* one pixel 3 levels off: 99% within 2 */
     tmp_path(pa, sizeof pa, "_a.ppm");
     tmp_path(pb, sizeof pb, "_b.ppm");
-    save(pa, &a, 1, err, sizeof err);
-    save(pb, &b, 1, err, sizeof err);
+    image_save(pa, &a, 1, err, sizeof err);
+    image_save(pb, &b, 1, err, sizeof err);
     CHECK_EQ_INT(run_compare(pa, pb, "3", "1", 0), 0);
     CHECK_EQ_INT(run_compare(pa, pb, "2", "0.99", 0), 0);
     CHECK_EQ_INT(run_compare(pa, pb, "2", "0.995", 0), 1);
     /* An edge in A next to the odd pixel: the silhouette mask leaves it out. */
     a.rgb[3 * 56] = 200;
-    save(pa, &a, 1, err, sizeof err);
+    image_save(pa, &a, 1, err, sizeof err);
     CHECK_EQ_INT(run_compare(pa, pb, "2", "1", 0), 1);
     CHECK_EQ_INT(run_compare(pa, pb, "2", "1", 1), 0);
     remove(pa);
