@@ -61,7 +61,14 @@ ARM_CPU_an521 := -mthumb
 FW_FLOAT_ABI_an521_float := -mcpu=cortex-m33 -mfpu=fpv5-sp-d16 -mfloat-abi=hard
 FW_FLOAT_ABI_an521_soft  := -mcpu=cortex-m33+nofp+nodsp -mfloat-abi=soft
 FW_FLOAT_ABI_an521_fixed := -mcpu=cortex-m33+nofp+nodsp -mfloat-abi=soft
-FW_VARIANTS_virt := float soft fixed double
+# float-esc and fixed-esc: float and fixed that escalate (--escalate): each
+# carries the wide renderer (double, render/wide.h) beside its own, so both
+# build for the VFP in double precision.
+FW_FLOAT_ABI_virt_float-esc := -mfpu=vfpv4 -mfloat-abi=hard
+FW_FLOAT_ABI_virt_fixed-esc := -mfpu=vfpv4 -mfloat-abi=hard
+FW_WIDE_float-esc := double
+FW_WIDE_fixed-esc := double
+FW_VARIANTS_virt := float soft fixed double float-esc fixed-esc
 FW_VARIANTS_an521 := float soft fixed
 FW_VARIANTS := $(FW_VARIANTS_virt)
 FW_MACHINE_DEF_virt := -DLINKS1_MACHINE_VIRT
@@ -70,11 +77,15 @@ FW_ARITH_float := float
 FW_ARITH_soft  := float
 FW_ARITH_fixed := fixed
 FW_ARITH_double := double
+FW_ARITH_float-esc := float
+FW_ARITH_fixed-esc := fixed
 # The firmware's arithmetic code (proto/arith.h), sent in its LINK_HELLO.
 FW_CODE_float := ARITH_FLOAT
 FW_CODE_soft  := ARITH_SOFT
 FW_CODE_fixed := ARITH_FIXED
 FW_CODE_double := ARITH_DOUBLE
+FW_CODE_float-esc := ARITH_FLOAT
+FW_CODE_fixed-esc := ARITH_FIXED
 
 ifeq ($(LIBC),picolibc)
 LIBC_SPECS := --specs=picolibc.specs
@@ -123,6 +134,23 @@ FUZZERS :=
 
 include $(wildcard */module.mk */*/module.mk)
 
+# ------------------------------------------------------- the wide renderer
+# Escalation (render/wide.h): the renderer once more in the wide arithmetic
+# (double), partially linked into one object whose every global symbol is
+# renamed wide_NAME, so that it lives beside the program's own renderer.
+# Its objects are the double build's (firmware: build/fw-double-LIBC/;
+# host: build/host-double[-san]/), render/wide.c among them.
+WIDE_SRCS = $(filter-out $(ARITH_FREE_SRCS),$(SHARED_SRCS)) render/wide.c
+# $(call wide_object,OBJECT,OBJECT-DIR,CC,BINUTILS-PREFIX)
+define wide_object
+$(1): $$(patsubst %,$(2)/%.o,$$(WIDE_SRCS))
+	$$(call say,WIDE,$$@)
+	$(Q)$(3) -r -nostdlib $$^ -o $$@.all
+	$(Q)$(4)nm -g --defined-only $$@.all | awk 'NF == 3 { print $$$$3, "wide_" $$$$3 }' > $$@.syms
+	$(Q)$(4)objcopy --redefine-syms=$$@.syms $$@.all $$@
+	$(Q)rm -f $$@.all
+endef
+
 # ------------------------------------------------------------ firmware rules
 # $(1) = machine (virt|an521), $(2) = variant (float|soft|fixed|double).
 # The virt board's firmware is build/links1-VARIANT.elf (objects in
@@ -146,11 +174,12 @@ $(call fw_dir,$(1),$(2))/%.S.o: %.S
 	$(Q)mkdir -p $$(@D)
 	$(Q)$(ARM_CC) $$(FW_FLAGS_$(1)_$(2)) -c $$< -o $$@
 
-$$(FW_ELF_$(1)_$(2)): $$(FW_OBJS_$(1)_$(2)) linker/sections.ld $(B)/linker/$(1)-memory.ld
+FW_LINK_$(1)_$(2) := $$(FW_OBJS_$(1)_$(2)) $(if $(FW_WIDE_$(2)),$(call fw_dir,$(1),$(FW_WIDE_$(2)))/render-wide.o)
+$$(FW_ELF_$(1)_$(2)): $$(FW_LINK_$(1)_$(2)) linker/sections.ld $(B)/linker/$(1)-memory.ld
 	$$(call say,LD,$$@)
 	$(Q)mkdir -p $$(@D)
 	$(Q)$(ARM_CC) $$(FW_FLAGS_$(1)_$(2)) $(FW_LDFLAGS) -T$(B)/linker/$(1)-memory.ld \
-		-Tlinker/sections.ld $$(FW_OBJS_$(1)_$(2)) $(FW_LIBS) -Wl,-Map=$$@.map -o $$@
+		-Tlinker/sections.ld $$(FW_LINK_$(1)_$(2)) $(FW_LIBS) -Wl,-Map=$$@.map -o $$@
 
 -include $$(FW_OBJS_$(1)_$(2):.o=.d)
 FIRMWARE_$(1) += $$(FW_ELF_$(1)_$(2))
@@ -170,6 +199,8 @@ ifneq ($(strip $(FW_SRCS)),)
 $(foreach m,$(FW_MACHINES),$(foreach v,$(FW_VARIANTS_$(m)),$(eval $(call fw_variant,$(m),$(v)))))
 endif
 FIRMWARE := $(FIRMWARE_virt) $(FIRMWARE_an521)
+$(eval $(call wide_object,$(call fw_dir,virt,double)/render-wide.o,$(call fw_dir,virt,double),$(ARM_CC),arm-none-eabi-))
+-include $(call fw_dir,virt,double)/render/wide.c.d
 
 # --------------------------------------------------------------- host rules
 # Shared and host sources compile once per (arithmetic, plain|san) into
@@ -188,9 +219,15 @@ $(foreach a,any double float fixed $(HOST_EXTRA_ARITHS),$(eval $(call host_objdi
 # for the others
 arith_objs = $(foreach s,$(4),$(1)-$(if $(filter $(s),$(ARITH_FREE_SRCS)),any,$(2))$(3)/$(s).o)
 
+# The wide renderer of the host programs that escalate (NAME_WIDE = 1).
+$(eval $(call wide_object,$(B)/host-double/render-wide.o,$(B)/host-double,$(HOST_CC),))
+$(eval $(call wide_object,$(B)/host-double-san/render-wide.o,$(B)/host-double-san,$(HOST_CC),))
+-include $(B)/host-double/render/wide.c.d $(B)/host-double-san/render/wide.c.d
+
 # $(1) = program name, $(2) = output dir suffix ('' or -san), $(3) = output path
 define host_prog
-$(1)_OBJS := $$(call arith_objs,$(B)/host,$$($(1)_ARITH),$(2),$$($(1)_SRCS) $$(SHARED_SRCS))
+$(1)_OBJS := $$(call arith_objs,$(B)/host,$$($(1)_ARITH),$(2),$$($(1)_SRCS) $$(SHARED_SRCS)) \
+	$(if $($(1)_WIDE),$(B)/host-double$(2)/render-wide.o)
 $(3): $$($(1)_OBJS)
 	$$(call say,HOSTLD,$$@)
 	$(Q)mkdir -p $$(@D)

@@ -41,8 +41,11 @@ enum link_render_flag {
     LINK_RENDER_ASK_WHEN_DONE = 1u << 6, /* the paper's rule: an NC asks for its
                                             next area once it has finished one
                                             (default: one round trip ahead) */
+    LINK_RENDER_ESCALATE = 1u << 7,     /* a pixel that lost precision is traced
+                                           again in the wide arithmetic
+                                           (render/wide.h; the -esc firmware) */
 };
-#define LINK_RENDER_FLAGS_ALL 0x7Fu
+#define LINK_RENDER_FLAGS_ALL 0xFFu
 
 /* How the NCs clip (render/clip.h): by the frame's clusters per pixel and
  * per scanline (render_frame_t.clip_coverage, clip_rows; render/limits.h),
@@ -212,7 +215,7 @@ struct link_progress {
 };
 
 /* CMD_RENDER result. */
-#define LINK_RENDER_STATS_SIZE 112
+#define LINK_RENDER_STATS_SIZE 116
 struct link_render_stats {
     uint32_t frame, ncs, areas;
     uint32_t prepare_ms;   /* the DM preparing this frame (0: prepared while
@@ -226,6 +229,8 @@ struct link_render_stats {
     uint32_t nc_private;        /* each NC's private memory, bytes */
     uint32_t blob_bytes;        /* the prepared frame broadcast to the NCs */
     uint32_t dc_full_waits;     /* times an NC found the DC FIFO full */
+    uint32_t escalated_pixels;  /* pixels traced again in the wide arithmetic
+                                   (LINK_RENDER_ESCALATE) */
 };
 
 /* CMD_FRAME_PULL result: u16 width, u16 height, u32 crc (of the r,g,b
@@ -309,13 +314,13 @@ static inline void link_render_stats_put(uint8_t *p, const struct link_render_st
     const uint32_t a[5] = {s->frame, s->ncs, s->areas, s->prepare_ms, s->render_ms};
     const uint64_t r[8] = {s->primary, s->shadow, s->reflection, s->refraction,
                            s->transmission, s->box_tests, s->prim_tests, s->primary_prim_tests};
-    const uint32_t b[7] = {s->precision_lost_pixels, s->dm_high, s->rc_high, s->nc_high_max,
-                           s->nc_private, s->blob_bytes, s->dc_full_waits};
+    const uint32_t b[8] = {s->precision_lost_pixels, s->dm_high, s->rc_high, s->nc_high_max,
+                           s->nc_private, s->blob_bytes, s->dc_full_waits, s->escalated_pixels};
     for (int i = 0; i < 5; i++)
         wire_put_u32(p + 4 * i, a[i]);
     for (int i = 0; i < 8; i++)
         wire_put_u64(p + 20 + 8 * i, r[i]);
-    for (int i = 0; i < 7; i++)
+    for (int i = 0; i < 8; i++)
         wire_put_u32(p + 84 + 4 * i, b[i]);
 }
 static inline void link_render_stats_get(const uint8_t *p, struct link_render_stats *s)
@@ -323,13 +328,13 @@ static inline void link_render_stats_get(const uint8_t *p, struct link_render_st
     uint32_t *a[5] = {&s->frame, &s->ncs, &s->areas, &s->prepare_ms, &s->render_ms};
     uint64_t *r[8] = {&s->primary, &s->shadow, &s->reflection, &s->refraction,
                       &s->transmission, &s->box_tests, &s->prim_tests, &s->primary_prim_tests};
-    uint32_t *b[7] = {&s->precision_lost_pixels, &s->dm_high, &s->rc_high, &s->nc_high_max,
-                      &s->nc_private, &s->blob_bytes, &s->dc_full_waits};
+    uint32_t *b[8] = {&s->precision_lost_pixels, &s->dm_high, &s->rc_high, &s->nc_high_max,
+                      &s->nc_private, &s->blob_bytes, &s->dc_full_waits, &s->escalated_pixels};
     for (int i = 0; i < 5; i++)
         *a[i] = wire_get_u32(p + 4 * i);
     for (int i = 0; i < 8; i++)
         *r[i] = wire_get_u64(p + 20 + 8 * i);
-    for (int i = 0; i < 7; i++)
+    for (int i = 0; i < 8; i++)
         *b[i] = wire_get_u32(p + 84 + 4 * i);
 }
 

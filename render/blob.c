@@ -112,6 +112,7 @@ render_blob_status_t render_blob_load(const uint8_t *compiled, size_t len, void 
     blob->scene_bytes = blob->bytes = blob->peak = arena.used;
     blob->bound = need;
     blob->scene_id = 0; /* the caller numbers its loads */
+    blob->wide_offset = 0;
     blob->frame = NULL;
     *out = blob;
     return RENDER_BLOB_OK;
@@ -242,6 +243,7 @@ render_blob_status_t render_blob_copy_frame(void *block, size_t size, const rend
     dst->bytes = src->bytes;
     dst->bound = src->bound;
     dst->peak = src->peak;
+    dst->wide_offset = src->wide_offset;
     dst->frame = frame;
     if (partial)
         *partial = 1;

@@ -53,6 +53,11 @@ typedef struct {
                               numbers its loads; 0: unnumbered): two blobs
                               of one id hold the same scene part, byte for
                               byte at the same offsets */
+    uint32_t wide_offset;  /* 0, or the offset from this blob's start of
+                              the same scene and frame prepared in the wide
+                              arithmetic (escalation, render/wide.h): its
+                              blob lies after this one's bound, in the same
+                              block, and travels with it */
     scene_t scene;         /* the loaded scene; its arrays are in the block */
     render_frame_t *frame; /* reloc; the prepared frame, in the block */
 } render_blob_t;

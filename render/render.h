@@ -208,6 +208,10 @@ typedef struct {
     uint64_t screen_tests;  /* tree rectangles looked at by primary rays
                                walked by screen (render_pixel_screen); host
                                only, like weight_cut */
+    uint32_t escalated_pixels; /* pixels that lost precision and were traced
+                                  again in the wide arithmetic (ctx.escalate);
+                                  precision_lost_pixels then counts those
+                                  the wide one lost too */
 } render_stats_t;
 
 typedef struct {
@@ -217,7 +221,17 @@ typedef struct {
                                  speed-up off without writing the shared
                                  frame */
     render_stats_t stats;
-    uint8_t pixel_lost;     /* set while tracing one pixel */
+    uint8_t pixel_lost;     /* set while tracing one pixel; after
+                               render_pixel*, whether that pixel lost
+                               precision (in the wide arithmetic when it
+                               was escalated) */
+    /* Escalation (render/wide.h): when escalate is set, a pixel that lost
+     * precision is traced again by escalate(escalate_arg, x, y, &lost),
+     * the renderer in a wider arithmetic, and takes its colour; lost says
+     * whether that one lost precision too.  NULL: the pixel keeps this
+     * arithmetic's colour (or RENDER_LOST_COLOUR with mark_lost). */
+    rgb8_t (*escalate)(void *arg, uint32_t x, uint32_t y, uint8_t *lost);
+    void *escalate_arg;
     /* render/trace.c's: a hit's material with its attribute maps applied,
      * one per nesting of the hits that use one at a time (shading, the
      * straight transmission past the depth limit, a shadow ray's

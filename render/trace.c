@@ -655,8 +655,11 @@ void render_ctx_init(render_ctx_t *ctx, const render_frame_t *frame)
     ctx->options = frame->options;
 }
 
-static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const uint32_t *clip,
-                                uint32_t clip_count, int by_screen)
+/* Not inlined: its frame (the camera ray's hit and more) is gone before an
+ * escalation traces the pixel again on the same stack. */
+static __attribute__((noinline)) rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x,
+                                                         uint32_t y, const uint32_t *clip,
+                                                         uint32_t clip_count, int by_screen)
 {
     const render_frame_t *f = ctx->frame;
     /* through the pixel centre: screen coordinates in [-1, 1] scaled by
@@ -679,7 +682,11 @@ static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const
     ctx->stats.primary_box_tests += ctx->stats.box_tests - boxes;
     ctx->stats.primary_prim_tests += ctx->stats.prim_tests - prims;
     rgb_t c = found ? trace_shade(ctx, &ray, &err, &hit, 0, NUM_ONE) : f->scene->background;
-    if (ctx->pixel_lost || rgb_is_sat(c)) {
+    if (rgb_is_sat(c))
+        ctx->pixel_lost = 1;
+    if (ctx->pixel_lost && ctx->escalate) /* settled by the caller: render_pixel_settled */
+        return (rgb8_t){0, 0, 0};
+    if (ctx->pixel_lost) {
         ctx->stats.precision_lost_pixels++;
         if (ctx->options.mark_lost)
             return RENDER_LOST_COLOUR;
@@ -688,20 +695,37 @@ static rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x, uint32_t y, const
     return out;
 }
 
+/* A pixel that lost precision, with ctx->escalate set: traced again in
+ * the wide arithmetic, whose colour (and loss) it takes. */
+static rgb8_t render_pixel_settled(render_ctx_t *ctx, uint32_t x, uint32_t y, rgb8_t c)
+{
+    if (!ctx->escalate || !ctx->pixel_lost)
+        return c;
+    uint8_t lost = 0;
+    c = ctx->escalate(ctx->escalate_arg, x, y, &lost);
+    ctx->stats.escalated_pixels++;
+    ctx->stats.precision_lost_pixels += lost != 0;
+    ctx->pixel_lost = lost != 0;
+    return c;
+}
+
 rgb8_t render_pixel(render_ctx_t *ctx, uint32_t x, uint32_t y)
 {
-    return render_pixel_impl(ctx, x, y, NULL, 0, 0);
+    return render_pixel_settled(ctx, x, y, render_pixel_impl(ctx, x, y, NULL, 0, 0));
 }
 
 rgb8_t render_pixel_screen(render_ctx_t *ctx, uint32_t x, uint32_t y)
 {
-    return render_pixel_impl(ctx, x, y, NULL, 0, ctx->options.use_hierarchy);
+    return render_pixel_settled(
+        ctx, x, y, render_pixel_impl(ctx, x, y, NULL, 0, ctx->options.use_hierarchy));
 }
 
 rgb8_t render_pixel_clipped(render_ctx_t *ctx, uint32_t x, uint32_t y, const uint32_t *clusters, uint32_t count)
 {
     uint32_t none = 0; /* a non-NULL empty list: clipping that kept nothing */
-    return render_pixel_impl(ctx, x, y, clusters ? clusters : &none, clusters ? count : 0, 0);
+    return render_pixel_settled(
+        ctx, x, y,
+        render_pixel_impl(ctx, x, y, clusters ? clusters : &none, clusters ? count : 0, 0));
 }
 
 void render_span(render_ctx_t *ctx, uint32_t y, uint32_t x0, uint32_t x1, rgb8_t *out)

@@ -24,6 +24,7 @@
 #include "proto/wire.h"
 #include "render/blob.h"
 #include "render/limits.h"
+#include "render/wide.h"
 #include "roles/dm.h"
 #include "roles/gigs.h"
 #include "roles/selftest.h"
@@ -38,6 +39,7 @@ static struct {
     int marked;
     uint16_t width, height;
     uint32_t frames;
+    uint32_t max_depth;   /* the scene's recursion depth: the NCs' stack */
     uint32_t blob_bytes;  /* render_blob_bytes bound */
     int32_t prepared;     /* frame prepared in the block the DM holds, or -1 */
     uint32_t prepare_ms;  /* what preparing it took, wherever it was done
@@ -48,6 +50,8 @@ static struct {
     uint32_t load_id;     /* this scene's number (blob->scene_id, never 0):
                              the RC then copies only the frame part of the
                              next blobs of the same load */
+    int wide_loaded[2];   /* block A / B holds this scene's wide blob too */
+    int prepared_wide;    /* the frame prepared holds the wide blob */
 } dm_scene;
 
 static const char dm_blob_limit_name[] = MACHINE_IMSU_BLOCK_NAME;
@@ -83,11 +87,45 @@ static int dm_scene_chunk(void *ctx, const uint8_t *data, uint32_t n, uint64_t o
     return 0;
 }
 
-/* Builds frame into the block the DM holds; 0, or -1 with err filled.
- * The scene is loaded into a block once (its checks, its arrays); each
- * frame after that is only the paper's preprocessing: eye coordinates,
- * boxes, screen rectangles. */
-static int dm_prepare(uint32_t frame, render_blob_error_t *err)
+/* The wide blob (escalation, render/wide.h) of frame in the block past
+ * the narrow blob's bound; 0, or -1 with err filled. */
+static int dm_prepare_wide(uint8_t *block, int held, uint32_t frame, size_t size,
+                           render_blob_error_t *err)
+{
+    render_blob_t *blob = (render_blob_t *)block;
+    err->status = RENDER_BLOB_ERR_PREPARE;
+    if (!render_wide_linked()) {
+        fmt_snprintf(err->message, sizeof err->message,
+                     "escalation: this firmware carries no wide arithmetic (the escalating "
+                     "builds are links1-float-esc.elf and links1-fixed-esc.elf)");
+        return -1;
+    }
+    size_t at = (blob->bound + RENDER_RELOCATE_ALIGN - 1) & ~(size_t)(RENDER_RELOCATE_ALIGN - 1);
+    char why[RENDER_BLOB_MSG_MAX];
+    int r = at < size ? 0 : -1;
+    if (r != 0)
+        fmt_snprintf(why, sizeof why, "no room past the scene's %zu bytes", blob->bound);
+    if (r == 0 && !dm_scene.wide_loaded[held]) {
+        r = RENDER_WIDE(wide_blob_load)(dm_scene.compiled, dm_scene.len, block + at, size - at,
+                                        "the rest of " MACHINE_IMSU_BLOCK_NAME, dm_scene.load_id,
+                                        why, sizeof why);
+        dm_scene.wide_loaded[held] = r == 0;
+    }
+    if (r == 0)
+        r = RENDER_WIDE(wide_blob_prepare)(block + at, frame, size - at, why, sizeof why);
+    if (r != 0) {
+        fmt_snprintf(err->message, sizeof err->message, "escalation: %s", why);
+        return -1;
+    }
+    blob->wide_offset = (uint32_t)at;
+    return 0;
+}
+
+/* Builds frame into the block the DM holds, with its wide blob when
+ * escalating; 0, or -1 with err filled.  The scene is loaded into a block
+ * once (its checks, its arrays); each frame after that is only the paper's
+ * preprocessing: eye coordinates, boxes, screen rectangles. */
+static int dm_prepare(uint32_t frame, int escalate, render_blob_error_t *err)
 {
     struct imsu_pair *p = &imsu_dm_rc;
     int held = imsu_held(p, UNITS_DM_CORE);
@@ -110,11 +148,16 @@ static int dm_prepare(uint32_t frame, render_blob_error_t *err)
     }
     uint64_t t0 = ktime_now();
     insn_mark_trace_span_begin(); /* the preprocessing of one frame (docs/trace.md) */
-    if (st == RENDER_BLOB_OK)
+    if (st == RENDER_BLOB_OK) {
+        blob->wide_offset = 0;
         st = render_blob_prepare(blob, frame, p->size, err);
+    }
+    if (st == RENDER_BLOB_OK && escalate && dm_prepare_wide(block, held, frame, p->size, err) != 0)
+        st = err->status;
     insn_mark_trace_span_end();
     imsu_write_end(p, UNITS_DM_CORE);
     dm_scene.prepared = st == RENDER_BLOB_OK ? (int32_t)frame : -1;
+    dm_scene.prepared_wide = escalate;
     dm_scene.prepare_ms = ktime_ticks_to_ms(ktime_now() - t0);
     return st == RENDER_BLOB_OK ? 0 : -1;
 }
@@ -130,6 +173,31 @@ static int dm_scene_fits_units(uint16_t cmd)
                        "scene refused: max_depth %u needs %u bytes of NC stack, more than "
                        "TASK_STACK_SIZE (%u bytes)",
                        (unsigned)depth, (unsigned)(RENDER_STACK_BYTES(depth) + GIGS_NC_STACK_MARGIN),
+                       (unsigned)TASK_STACK_SIZE);
+        return -1;
+    }
+    return 0;
+}
+
+/* Escalation's checks: a firmware that carries the wide arithmetic, and
+ * the NCs' stack for it (the wide renderer runs on the narrow one's stack,
+ * below render_pixel). */
+static int dm_escalation_fits(uint16_t cmd)
+{
+    if (!render_wide_linked()) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS,
+                       "CMD_RENDER: escalation asked of a firmware without a wide arithmetic "
+                       "(the escalating builds are links1-float-esc.elf and links1-fixed-esc.elf)");
+        return -1;
+    }
+    uint32_t depth = dm_scene.max_depth;
+    size_t need = RENDER_WIDE(wide_stack_bytes)(depth) + RENDER_WIDE_CALL_STACK +
+                  GIGS_NC_STACK_MARGIN;
+    if (need > TASK_STACK_SIZE) {
+        hostlink_error(cmd, LINK_ERR_BAD_ARGS,
+                       "CMD_RENDER: escalation at max_depth %u needs %u bytes of NC stack for the "
+                       "%s renderer, more than TASK_STACK_SIZE (%u bytes)",
+                       (unsigned)depth, (unsigned)need, RENDER_WIDE(wide_arith_name),
                        (unsigned)TASK_STACK_SIZE);
         return -1;
     }
@@ -157,6 +225,7 @@ void dm_cmd_scene_load(uint16_t cmd)
     dm_scene.len = 0;
     dm_scene.prepared = -1;
     dm_scene.loaded[0] = dm_scene.loaded[1] = 0;
+    dm_scene.wide_loaded[0] = dm_scene.wide_loaded[1] = 0;
     if (++dm_scene.load_id == 0) /* 0 is "unnumbered" */
         dm_scene.load_id = 1;
     struct dm_scene_rx rx = {NULL, 0, ""};
@@ -198,7 +267,7 @@ void dm_cmd_scene_load(uint16_t cmd)
     render_blob_error_t err;
     dm_scene.compiled = rx.buf;
     dm_scene.len = len;
-    if (dm_prepare(0, &err) != 0) {
+    if (dm_prepare(0, 0, &err) != 0) {
         dm_scene.len = 0;
         hostlink_error(cmd, LINK_ERR_BAD_ARGS, "scene refused: %s", dm_refusal(err.message));
         return;
@@ -211,6 +280,7 @@ void dm_cmd_scene_load(uint16_t cmd)
     dm_scene.width = blob->scene.width;
     dm_scene.height = blob->scene.height;
     dm_scene.frames = blob->scene.frame_count;
+    dm_scene.max_depth = blob->scene.options.max_depth;
     dm_scene.blob_bytes = (uint32_t)blob->bound;
     struct link_scene_info info = {dm_scene.width, dm_scene.height, dm_scene.frames, len,
                                    (uint32_t)blob->bound, (uint32_t)imsu_dm_rc.size};
@@ -271,6 +341,7 @@ static void dm_render_result(uint16_t cmd, uint32_t frame, uint32_t prepare_ms,
     s.prim_tests = rs.prim_tests;
     s.primary_prim_tests = rs.primary_prim_tests;
     s.precision_lost_pixels = rs.precision_lost_pixels;
+    s.escalated_pixels = rs.escalated_pixels;
     s.dm_high = (uint32_t)kmem_high_water();
     uint8_t f[LINK_RENDER_STATS_SIZE + LINK_RENDER_FAILS_SIZE(LINK_REISSUE_LIST_MAX)];
     link_render_stats_put(f, &s);
@@ -326,8 +397,12 @@ void dm_cmd_render(uint16_t cmd)
                        (unsigned)a.flags, (unsigned)a.guided, (unsigned)a.clip);
         return;
     }
+    int escalate = (a.flags & LINK_RENDER_ESCALATE) != 0;
+    if (escalate && dm_escalation_fits(cmd) != 0)
+        return;
     render_blob_error_t err;
-    if (dm_scene.prepared != (int32_t)a.frame && dm_prepare(a.frame, &err) != 0) {
+    if ((dm_scene.prepared != (int32_t)a.frame || dm_scene.prepared_wide != escalate) &&
+        dm_prepare(a.frame, escalate, &err) != 0) {
         hostlink_error(cmd, LINK_ERR_CHECK, "frame %u: %s", (unsigned)a.frame, err.message);
         return;
     }
@@ -353,7 +428,7 @@ void dm_cmd_render(uint16_t cmd)
     /* Pipelining: the next frame is prepared while this one renders.  An
      * error here is reported when that frame is asked for. */
     if ((a.flags & LINK_RENDER_PREPARE_NEXT) && a.frame + 1 < dm_scene.frames)
-        (void)dm_prepare(a.frame + 1, &err);
+        (void)dm_prepare(a.frame + 1, escalate, &err);
     /* The test hook: the DM's own planned failure, while the RC renders. */
     for (uint32_t i = 0; i < (plan_bytes ? plan[0] : 0u); i++) {
         struct link_inject e;

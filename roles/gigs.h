@@ -30,9 +30,9 @@
 #include "proto/wire.h"
 #include "render/render.h"
 
-/* Render statistics on the serial lines: the nine counters and the lost
- * pixels of render_stats_t. */
-#define GIGS_STATS_SIZE 76
+/* Render statistics on the serial lines: the nine counters, the lost and
+ * the escalated pixels of render_stats_t. */
+#define GIGS_STATS_SIZE 80
 
 static inline void gigs_stats_put(uint8_t *p, const render_stats_t *s)
 {
@@ -42,6 +42,7 @@ static inline void gigs_stats_put(uint8_t *p, const render_stats_t *s)
     for (int i = 0; i < 9; i++)
         wire_put_u64(p + 8 * i, v[i]);
     wire_put_u32(p + 72, s->precision_lost_pixels);
+    wire_put_u32(p + 76, s->escalated_pixels);
 }
 
 /* Adds the counters at p to *s. */
@@ -53,6 +54,7 @@ static inline void gigs_stats_add(render_stats_t *s, const uint8_t *p)
     for (int i = 0; i < 9; i++)
         *v[i] += wire_get_u64(p + 8 * i);
     s->precision_lost_pixels += wire_get_u32(p + 72);
+    s->escalated_pixels += wire_get_u32(p + 76);
 }
 
 /* MSG_RENDER_DONE on success: u32 ncs, u32 areas, u32 render_ms,

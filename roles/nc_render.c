@@ -27,6 +27,7 @@
 #include "proto/wire.h"
 #include "render/blob.h"
 #include "render/clip.h"
+#include "render/wide.h"
 #include "roles/gigs.h"
 #include "roles/selftest.h"
 #include "proto/unitmsg.h"
@@ -37,6 +38,7 @@ struct nc_job {
     render_clip_t clip;
     render_clip_options_t opt;
     rgb8_t *pixels;     /* the largest area's pixels */
+    void *wide;         /* escalating: the wide context (render/wide.h), or NULL */
     size_t mark;        /* kmem mark before the frame's working set */
     int marked;
     int counting;       /* the plugin counts this NC from its first frame */
@@ -88,6 +90,36 @@ static void nc_round_trip(struct nc_job *job, uint64_t seen, int waited)
         job->rtt = seen;
 }
 
+/* Escalating: the wide context on the broadcast block's wide blob, from
+ * private memory; the narrow context's pixels that lose precision are
+ * traced again there.  0, or -1 with why filled. */
+static int nc_setup_wide(struct nc_job *job, const uint8_t *block, const render_blob_t *blob,
+                         char *why, size_t cap)
+{
+    uint32_t at = blob->wide_offset;
+    size_t bytes = render_wide_linked() ? RENDER_WIDE(wide_ctx_bytes)() : 0;
+    if (!at || at >= imsu_rc_ncs.size || !bytes) {
+        fmt_snprintf(why, cap, "escalation: %s",
+                     !bytes ? "this firmware carries no wide arithmetic"
+                            : "the broadcast block holds no wide blob");
+        return -1;
+    }
+    if (bytes + RENDER_WIDE_CTX_ALIGN > kmem_free()) {
+        fmt_snprintf(why, cap, "escalation: the wide context's %u bytes exceed the %u free bytes "
+                     "of private memory", (unsigned)bytes, (unsigned)kmem_free());
+        return -1;
+    }
+    void *mem = kmem_alloc(bytes, "wide context");
+    const render_options_t *o = &job->ctx.options;
+    if (RENDER_WIDE(wide_ctx_open)(mem, block + at, imsu_rc_ncs.size - at, o->use_bounds,
+                                   o->use_hierarchy, o->mark_lost, why, cap) != 0)
+        return -1;
+    job->wide = mem;
+    job->ctx.escalate = RENDER_WIDE(wide_pixel);
+    job->ctx.escalate_arg = mem;
+    return 0;
+}
+
 /* Opens the broadcast frame and sets aside the working set; 0, or -1 with
  * why filled (the broadcast read is ended again then). */
 static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, uint8_t clip, char *why,
@@ -129,6 +161,11 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, uint8_t
     render_ctx_init(&job->ctx, blob->frame);
     job->ctx.options.use_bounds = !(flags & LINK_RENDER_NO_BBOX);
     job->ctx.options.use_hierarchy = !(flags & LINK_RENDER_NO_HIERARCHY);
+    job->wide = NULL;
+    if ((flags & LINK_RENDER_ESCALATE) && nc_setup_wide(job, block, blob, why, cap) != 0) {
+        imsu_bcast_read_end(&imsu_rc_ncs, me);
+        return -1;
+    }
     job->opt.y_clip = !(flags & LINK_RENDER_NO_YCLIP);
     job->opt.x_clip = !(flags & LINK_RENDER_NO_XCLIP);
     job->opt.lists = clip == LINK_CLIP_LISTS ||
@@ -277,6 +314,8 @@ void nc_render_frame(struct line_msg *m)
     m->type = MSG_NC_STOPPED;
     m->len = 4 + GIGS_STATS_SIZE;
     wire_put_u32(m->payload, (uint32_t)kmem_high_water());
+    if (reading && job->wide)
+        RENDER_WIDE(wide_stats_add)(job->wide, &job->ctx.stats); /* the escalations' rays */
     if (reading)
         gigs_stats_put(m->payload + 4, &job->ctx.stats);
     else

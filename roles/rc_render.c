@@ -19,6 +19,7 @@
 #include "proto/textfmt.h"
 #include "proto/wire.h"
 #include "render/blob.h"
+#include "render/wide.h"
 #include "proto/areas.h"
 #include "roles/gigs.h"
 #include "roles/rc_run.h"
@@ -126,6 +127,22 @@ static uint32_t rc_largest_area(const struct areas *sched)
     return most;
 }
 
+/* Escalating: the wide blob at offset at of the DM's block src to the same
+ * offset of the broadcast block w (size bytes).  0, or -1 with why. */
+static int rc_broadcast_wide(uint8_t *w, size_t size, const render_blob_t *src, uint32_t at,
+                             char *why, size_t cap)
+{
+    if (size > imsu_dm_rc.size)
+        size = imsu_dm_rc.size; /* what both blocks hold */
+    if (at >= size || !render_wide_linked()) {
+        fmt_snprintf(why, cap, "a wide blob at %u bytes: past the block, or the firmware "
+                     "carries no wide arithmetic", (unsigned)at);
+        return -1;
+    }
+    return RENDER_WIDE(wide_blob_copy_frame)(w + at, size - at, (const uint8_t *)src + at, why,
+                                             cap);
+}
+
 /* Broadcast: the blob from the block the DM swapped over into the
  * broadcast block, relocated there.  0, or -1 with run->why set. */
 static int rc_broadcast(struct rc_run *run, const render_blob_t **out)
@@ -149,6 +166,12 @@ static int rc_broadcast(struct rc_run *run, const render_blob_t **out)
     render_blob_t *blob;
     render_blob_error_t err;
     render_blob_status_t st = render_blob_copy_frame(w, b->size, src, &blob, NULL, &err);
+    /* escalating: the wide blob too, at the same offset (render/wide.h) */
+    uint32_t at = st == RENDER_BLOB_OK ? src->wide_offset : 0;
+    if (at && rc_broadcast_wide(w, b->size, src, at, err.message, sizeof err.message) != 0) {
+        blob->magic = 0; /* the next frame is copied whole */
+        st = RENDER_BLOB_ERR_NOT_BLOB;
+    }
     imsu_bcast_write_end(b, UNITS_RC_CORE);
     if (st != RENDER_BLOB_OK) {
         run->status = LINK_ERR_CHECK;

@@ -117,6 +117,8 @@ static void render_usage(FILE *out)
             "  --density-steps N  steps of a density sphere's root finder (2..256;\n"
             "                   scenes default 24): a feature thinner than a step is missed\n"
             "  --mark-lost      paint pixels that lost precision magenta (text scenes)\n"
+            "  --escalate       trace a pixel that lost precision again in double, on the\n"
+            "                   same NC (float or fixed on virt: links1-<arith>-esc.elf)\n"
             "  --paper          paper mode (as options { paper on }): every choice the paper\n"
             "                   made: src/trc by angle, a fixed depth (min_weight 0), --balance\n"
             "                   lines --areas HEIGHT, --ask finished, --clip lists, no\n"
@@ -194,6 +196,7 @@ enum render_opt_code {
     RENDER_OPT_TARGET_DB,
     RENDER_OPT_PAPER,
     RENDER_OPT_FPS,
+    RENDER_OPT_ESCALATE,
 };
 
 static const struct option render_options[] = {
@@ -236,6 +239,7 @@ static const struct option render_options[] = {
     {"target-db", required_argument, NULL, RENDER_OPT_TARGET_DB},
     {"paper", no_argument, NULL, RENDER_OPT_PAPER},
     {"fps", required_argument, NULL, RENDER_OPT_FPS},
+    {"escalate", no_argument, NULL, RENDER_OPT_ESCALATE},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -432,8 +436,34 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
     case RENDER_OPT_PAPER:
         o->scene.paper = 1;
         return 0;
+    case RENDER_OPT_ESCALATE:
+        o->args.flags |= LINK_RENDER_ESCALATE;
+        o->board.escalate = 1;
+        return 0;
     }
     return -1; /* CLI_BAD: reported already */
+}
+
+/* --escalate: the firmware that carries the wide arithmetic (virt, float
+ * or fixed; links1-A-esc.elf), unless a named board's or --firmware's
+ * (whose DM refuses escalation when it carries none). */
+static int render_escalate_check(const struct render_opts *o)
+{
+    if (!o->board.escalate)
+        return 0;
+    const char *a = o->board.arith;
+    const char *why =
+        o->arith_auto ? "an arithmetic given, float or fixed (not --arith auto)"
+        : o->board.machine != MACHINE_VIRT
+            ? "the virt board (the an521 boards have no escalating firmware: their M33s' FPU is "
+              "single precision, so double would be software there, and none is built)"
+        : strcmp(a, "double") == 0 ? "--arith float or fixed: double is the wide arithmetic itself"
+        : strcmp(a, "soft") == 0 ? "--arith float or fixed: the soft build models a unit without "
+                                   "an FPU, which has no double to escalate to"
+                                 : NULL;
+    if (why)
+        fprintf(stderr, "links1 render: --escalate needs %s\n", why);
+    return why ? -1 : 0;
 }
 
 /* --arith auto chooses the firmware for one scene of a board of its own. */
@@ -540,7 +570,7 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
             return -1;
         }
     }
-    if (render_auto_check(o) != 0)
+    if (render_auto_check(o) != 0 || render_escalate_check(o) != 0)
         return -1;
     o->scene.machine = o->board.machine; /* the scene is checked against its limits */
     if (o->board_name) {
@@ -638,19 +668,22 @@ static void render_summary(const char *path, const struct link_render_stats *s,
                            const struct image *img, const struct link_render_args *a,
                            double seconds, long long upload_ms, long long pull_ms)
 {
-    char sched[160];
+    char sched[160], escalated[64] = "";
     render_schedule_name(a, s->ncs, sched, sizeof sched);
+    if (a->flags & LINK_RENDER_ESCALATE)
+        snprintf(escalated, sizeof escalated, "%u pixels escalated to double, ",
+                 s->escalated_pixels);
     printf("links1 render: frame %u %dx%d -> %s: %u NCs, %u areas (%s), %.1f s "
            "(board: prepare %u ms, render %u ms; upload %lld ms, pull %lld ms); rays %llu primary, %llu shadow, "
            "%llu reflection, %llu refraction, %llu transmission; tests %llu box, %llu primitive "
-           "(%llu by primary rays); %u pixels lost precision; memory high-water DM %u, RC %u, NC %u of %u bytes\n",
+           "(%llu by primary rays); %s%u pixels lost precision; memory high-water DM %u, RC %u, NC %u of %u bytes\n",
            s->frame, img->width, img->height, path, s->ncs, s->areas, sched, seconds, s->prepare_ms, s->render_ms,
            upload_ms, pull_ms,
            (unsigned long long)s->primary, (unsigned long long)s->shadow,
            (unsigned long long)s->reflection, (unsigned long long)s->refraction,
            (unsigned long long)s->transmission, (unsigned long long)s->box_tests,
            (unsigned long long)s->prim_tests, (unsigned long long)s->primary_prim_tests,
-           s->precision_lost_pixels, s->dm_high,
+           escalated, s->precision_lost_pixels, s->dm_high,
            s->rc_high, s->nc_high_max, s->nc_private);
     static int lost_told; /* the meaning, once a command */
     if (s->precision_lost_pixels && !lost_told) {

@@ -19,7 +19,8 @@ const char board_opts_usage[] =
     "                   (dual Cortex-M33 boards, one QEMU each: DM and RC on board 0,\n"
     "                   two NCs on each other board; an even number of NCs, 2..64)\n"
     "  --arith A        firmware arithmetic: float, soft, fixed or double (default float)\n"
-    "  --firmware ELF   firmware to boot (default: links1-<arith>.elf in $FW_DIR,\n"
+    "  --firmware ELF   firmware to boot (default: links1-<arith>.elf, links1-<arith>-esc.elf\n"
+    "                   with --escalate, in $FW_DIR,\n"
     "                   else next to this program)\n"
     "  --timeout S      seconds to wait for every unit computer to report in (default 60)\n"
     "  --ram MB         board memory (default 1024, what the firmware carves)\n"
@@ -136,6 +137,13 @@ static const char *board_machine_subdir(const struct board_opts *o)
     return o->machine == MACHINE_AN521 ? "an521/" : "";
 }
 
+/* "-esc" for the firmware that escalates (the Makefile's float-esc and
+ * fixed-esc), "" otherwise. */
+static const char *board_variant_suffix(const struct board_opts *o)
+{
+    return o->escalate ? "-esc" : "";
+}
+
 int board_find_firmware(const struct board_opts *o, char *out, size_t cap)
 {
     if (o->firmware) {
@@ -148,7 +156,8 @@ int board_find_firmware(const struct board_opts *o, char *out, size_t cap)
     }
     const char *fw_dir = getenv("FW_DIR");
     if (fw_dir && *fw_dir) {
-        snprintf(out, cap, "%s/%slinks1-%s.elf", fw_dir, board_machine_subdir(o), o->arith);
+        snprintf(out, cap, "%s/%slinks1-%s%s.elf", fw_dir, board_machine_subdir(o), o->arith,
+                 board_variant_suffix(o));
         if (board_file_readable(out))
             return board_firmware_is_elf(out) ? 0 : -1;
         fprintf(stderr, "links1: firmware %s not found ($FW_DIR is set; run make, or "
@@ -160,7 +169,8 @@ int board_find_firmware(const struct board_opts *o, char *out, size_t cap)
         fprintf(stderr, "links1: cannot find this program's directory: %s\n", strerror(errno));
         return -1;
     }
-    snprintf(out, cap, "%s/%slinks1-%s.elf", self, board_machine_subdir(o), o->arith);
+    snprintf(out, cap, "%s/%slinks1-%s%s.elf", self, board_machine_subdir(o), o->arith,
+             board_variant_suffix(o));
     if (board_file_readable(out))
         return board_firmware_is_elf(out) ? 0 : -1;
     fprintf(stderr, "links1: firmware %s not found (run make, set $FW_DIR, or give "

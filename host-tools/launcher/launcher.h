@@ -78,7 +78,8 @@ int board_opt(struct board_opts *o, const struct cli *c, int code);
 extern const char board_opts_usage[];
 
 /* Resolves the firmware ELF into out: opts->firmware, else
- * $FW_DIR/links1-<arith>.elf, else links1-<arith>.elf next to this program.
+ * $FW_DIR/links1-<arith>.elf, else links1-<arith>.elf next to this program
+ * (links1-<arith>-esc.elf when opts->escalate).
  * Returns 0, or -1 after printing where it looked. */
 int board_find_firmware(const struct board_opts *o, char *out, size_t cap);
 

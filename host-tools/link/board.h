@@ -43,6 +43,7 @@ struct board_opts {
     int ncores;             /* -smp; on an521, 2 per board */
     const char *arith;      /* float | soft | fixed */
     const char *firmware;   /* ELF path, or NULL: found by board_find_firmware */
+    int escalate;           /* 1: the firmware that escalates (links1-<arith>-esc.elf) */
     int ram_mb;             /* -m */
     int timeout_s;          /* report-in timeout */
     const char *insn_count_out; /* non-NULL: load the counting plugin, write here */

@@ -9,6 +9,10 @@ HOST_TOOLS += links1-ref-double links1-ref-float links1-ref-fixed
 $(foreach a,double float fixed,$(eval links1-ref-$(a)_SRCS = $$(SCENE_REF_SRCS)))
 $(foreach a,double float fixed,$(eval links1-ref-$(a)_ARITH := $(a)))
 $(foreach a,double float fixed,$(eval links1-ref-$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
+# float and fixed escalate (--escalate): they carry the wide renderer
+# (render/wide.h, the Makefile's wide_object).
+links1-ref-float_WIDE := 1
+links1-ref-fixed_WIDE := 1
 # The same renderer in other fixed formats (links1-ref-fixedN: Q(31-N).N),
 # candidates of `links1 ref --arith auto` (arith_auto.c finds them next to
 # links1; the board's firmware stays Q12.19, fixed/num.h's default).

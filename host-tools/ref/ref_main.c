@@ -22,9 +22,11 @@
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_file.h"
 #include "host-tools/ref/ref_opts.h"
+#include "render/blob.h"
 #include "render/precision.h"
 #include "render/render.h"
 #include "render/scene_load.h"
+#include "render/wide.h"
 
 #define REF_ARENA_START (64u * 1024u * 1024u)  /* first arena tried */
 #define REF_ARENA_MAX (1024u * 1024u * 1024u)  /* largest arena tried */
@@ -36,6 +38,8 @@ static int ref_usage(FILE *out, int status)
                  "  [--no-auto-hierarchy] [--refraction on|off] [--refractionless on|off]\n"
                  "  [--max-depth D] [--min-weight W] [--density-steps N]\n"
                  "  [--mark-lost]  (paint pixels that lost precision magenta)\n"
+                 "  [--escalate]  (trace a pixel that lost precision again in double, as the\n"
+                 "  board's --escalate does; float and fixed)\n"
                  "  [--paper]  (the scene's part of paper mode, as links1 render --paper)\n"
                  "  an OUT ending in .mp4, .webm or .apng is one film of the frames, piped to\n"
                  "  ffmpeg at %d a second (as links1 render does)\n"
@@ -108,9 +112,76 @@ static int ref_load(const char *in, const uint8_t *bytes, size_t len, void **mem
     return -1;
 }
 
-/* One frame to out (an image file), or to film when it is not NULL. */
+/* --escalate: the scene in the wide arithmetic (render/wide.h), as the
+ * board's DM prepares it beside the narrow one, and a context on it. */
+struct ref_wide {
+    void *block;     /* the wide blob, aligned to RENDER_RELOCATE_ALIGN */
+    size_t size;
+    void *ctx;       /* the wide context */
+};
+
+static void ref_wide_free(struct ref_wide *w)
+{
+    free(w->block);
+    free(w->ctx);
+    memset(w, 0, sizeof *w);
+}
+
+/* Loads the wide blob of the compiled scene; 0, or -1 after saying why. */
+static int ref_wide_load(const char *in, const uint8_t *bytes, size_t len, struct ref_wide *w)
+{
+    char why[RENDER_BLOB_MSG_MAX];
+    memset(w, 0, sizeof *w);
+    if (!render_wide_linked()) {
+        fprintf(stderr, "links1 ref: --escalate: the %s build carries no wide arithmetic (%s)\n",
+                NUM_NAME, strcmp(NUM_NAME, "double") == 0 ? "double is the wide one itself"
+                                                          : "links1 ref --arith float or fixed");
+        return -1;
+    }
+    if (RENDER_WIDE(wide_blob_bytes)(bytes, len, &w->size, why, sizeof why) != 0) {
+        fprintf(stderr, "links1 ref: %s: --escalate: %s\n", in, why);
+        return -1;
+    }
+    w->block = aligned_alloc(RENDER_RELOCATE_ALIGN,
+                             (w->size + RENDER_RELOCATE_ALIGN - 1) & ~(size_t)(RENDER_RELOCATE_ALIGN - 1));
+    w->ctx = aligned_alloc(RENDER_WIDE_CTX_ALIGN,
+                           (RENDER_WIDE(wide_ctx_bytes)() + RENDER_WIDE_CTX_ALIGN - 1) &
+                               ~(size_t)(RENDER_WIDE_CTX_ALIGN - 1));
+    if (!w->block || !w->ctx) {
+        fprintf(stderr, "links1 ref: --escalate: out of memory for the wide scene\n");
+        ref_wide_free(w);
+        return -1;
+    }
+    if (RENDER_WIDE(wide_blob_load)(bytes, len, w->block, w->size, "the wide blob", 0, why,
+                                    sizeof why) != 0) {
+        fprintf(stderr, "links1 ref: %s: --escalate: %s\n", in, why);
+        ref_wide_free(w);
+        return -1;
+    }
+    return 0;
+}
+
+/* The wide frame and its context, ctx escalating into it; 0 or -1. */
+static int ref_wide_frame(const char *in, struct ref_wide *w, long frame, render_ctx_t *ctx)
+{
+    char why[RENDER_BLOB_MSG_MAX];
+    const render_options_t *o = &ctx->options;
+    if (RENDER_WIDE(wide_blob_prepare)(w->block, (uint32_t)frame, w->size, why, sizeof why) != 0 ||
+        RENDER_WIDE(wide_ctx_open)(w->ctx, w->block, w->size, o->use_bounds, o->use_hierarchy,
+                                   o->mark_lost, why, sizeof why) != 0) {
+        fprintf(stderr, "links1 ref: %s frame %ld: --escalate: %s\n", in, frame, why);
+        return -1;
+    }
+    ctx->escalate = RENDER_WIDE(wide_pixel);
+    ctx->escalate_arg = w->ctx;
+    return 0;
+}
+
+/* One frame to out (an image file), or to film when it is not NULL; wide
+ * (when not NULL): escalating into it. */
 static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena,
-                            size_t mark, long frame, const char *out, int ppm, struct film *film)
+                            size_t mark, long frame, const char *out, int ppm, struct film *film,
+                            struct ref_wide *wide)
 {
     arena_release_to(arena, mark);
     render_frame_t *frame_data;
@@ -133,6 +204,11 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     }
     render_ctx_t ctx;
     render_ctx_init(&ctx, frame_data);
+    if (wide && ref_wide_frame(in, wide, frame, &ctx) != 0) {
+        free(row);
+        image_free(&img);
+        return -1;
+    }
     /* tracing only: make bench's ns per ray; the process's CPU time too,
      * which other programs on a busy machine inflate far less */
     struct timespec t0, t1, c0, c1;
@@ -149,6 +225,12 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     }
     clock_gettime(CLOCK_MONOTONIC, &t1);
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
+    char escalated[64] = "";
+    if (wide) {
+        RENDER_WIDE(wide_stats_add)(wide->ctx, &ctx.stats); /* the escalations' rays */
+        snprintf(escalated, sizeof escalated, "%u pixels escalated to %s, ",
+                 (unsigned)ctx.stats.escalated_pixels, RENDER_WIDE(wide_arith_name));
+    }
     double secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
     double cpu = (double)(c1.tv_sec - c0.tv_sec) + 1e-9 * (double)(c1.tv_nsec - c0.tv_nsec);
     char err[SD_ERR_MAX];
@@ -161,14 +243,14 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
                 "links1 ref (%s): %s frame %ld, %dx%d -> %s; rays: %llu primary, %llu "
                 "shadow, %llu reflection, %llu refraction, %llu transmission, %llu cut by "
                 "weight; "
-                "%u pixels lost precision; %llu box tests, %llu primitive tests; traced in "
+                "%s%u pixels lost precision; %llu box tests, %llu primitive tests; traced in "
                 "%.3f s (%.3f s CPU)\n",
                 NUM_NAME, in, frame, img.width, img.height, out,
                 (unsigned long long)ctx.stats.primary, (unsigned long long)ctx.stats.shadow,
                 (unsigned long long)ctx.stats.reflection,
                 (unsigned long long)ctx.stats.refraction,
                 (unsigned long long)ctx.stats.transmission,
-                (unsigned long long)ctx.stats.weight_cut,
+                (unsigned long long)ctx.stats.weight_cut, escalated,
                 (unsigned)ctx.stats.precision_lost_pixels,
                 (unsigned long long)ctx.stats.box_tests, (unsigned long long)ctx.stats.prim_tests,
                 secs, cpu);
@@ -189,7 +271,7 @@ static const struct option ref_options[] = {
 
 struct ref_args {
     const char *in, *out;
-    int ppm, many;
+    int ppm, many, escalate;
     long first, last;
     struct scene_file_opts scene;
 };
@@ -216,6 +298,9 @@ static int ref_parse(int argc, char **argv, struct ref_args *a)
             break;
         case REF_OPT_PAPER:
             a->scene.paper = 1;
+            break;
+        case REF_OPT_ESCALATE:
+            a->escalate = 1;
             break;
         case REF_OPT_REFRACTION:
             if (strcmp(c.arg, "on") != 0 && strcmp(c.arg, "off") != 0)
@@ -295,6 +380,10 @@ int main(int argc, char **argv)
     size_t mark;
     scene_t scene;
     int rc = ref_load(in, bytes, len, &mem, &arena, &mark, &scene);
+    struct ref_wide wide;
+    memset(&wide, 0, sizeof wide);
+    if (rc == 0 && a.escalate)
+        rc = ref_wide_load(in, bytes, len, &wide);
     if (rc == 0 && (uint32_t)last >= scene.frame_count) {
         fprintf(stderr, "links1 ref: %s: frame %ld, the scene has %u frames (0..%u)\n", in,
                 last, (unsigned)scene.frame_count, (unsigned)scene.frame_count - 1);
@@ -319,7 +408,8 @@ int main(int argc, char **argv)
             scene_file_frame_path(out, f, path, sizeof path);
         else
             snprintf(path, sizeof path, "%s", out);
-        rc = ref_render_frame(in, &scene, &arena, mark, f, path, a.ppm, filming ? &film : NULL);
+        rc = ref_render_frame(in, &scene, &arena, mark, f, path, a.ppm, filming ? &film : NULL,
+                              a.escalate ? &wide : NULL);
     }
     if (filming && rc == 0 && film_close(&film, err, sizeof err) != 0) {
         fprintf(stderr, "links1 ref: %s\n", err);
@@ -327,6 +417,7 @@ int main(int argc, char **argv)
     }
     if (filming)
         film_abort(&film); /* nothing after a close; a failed film removed */
+    ref_wide_free(&wide);
     free(mem);
     free(bytes);
     return rc != 0;

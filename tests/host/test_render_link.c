@@ -12,9 +12,9 @@
 static void render_link_stats_round_trip(void)
 {
     /* 5 u32, 8 u64, 7 u32 */
-    CHECK_EQ_INT(LINK_RENDER_STATS_SIZE, 5 * 4 + 8 * 8 + 7 * 4);
+    CHECK_EQ_INT(LINK_RENDER_STATS_SIZE, 5 * 4 + 8 * 8 + 8 * 4);
     struct link_render_stats s = {1, 64, 368, 20, 3230, 1ull << 40, 2, 3, 4, 5, 6, 7, 8,
-                                  9, 10, 11, 12, 13, 14, 15};
+                                  9, 10, 11, 12, 13, 14, 15, 16};
     uint8_t buf[LINK_RENDER_STATS_SIZE + 1];
     buf[LINK_RENDER_STATS_SIZE] = 0xA5;
     link_render_stats_put(buf, &s);
@@ -30,6 +30,7 @@ static void render_link_stats_round_trip(void)
     CHECK(t.dm_high == 10 && t.rc_high == 11 && t.nc_high_max == 12 && t.nc_private == 13);
     CHECK(t.blob_bytes == 14);
     CHECK(t.primary == 1ull << 40 && t.dc_full_waits == 15 && t.render_ms == 3230);
+    CHECK(t.escalated_pixels == 16);
 }
 
 static void render_link_args_round_trip(void)
@@ -73,8 +74,8 @@ static void render_link_info_and_progress_round_trip(void)
 /* The RC sums each NC's statistics: two NCs' messages add field by field. */
 static void gigs_stats_sum_of_two(void)
 {
-    render_stats_t a = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 0, 0}; /* weight_cut, screen_tests: host only */
-    render_stats_t b = {100, 200, 300, 400, 500, 600, 700, 800, 900, 1000, 0, 0};
+    render_stats_t a = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 0, 0, 11}; /* weight_cut, screen_tests: host only */
+    render_stats_t b = {100, 200, 300, 400, 500, 600, 700, 800, 900, 1000, 0, 0, 1100};
     uint8_t pa[GIGS_STATS_SIZE], pb[GIGS_STATS_SIZE];
     gigs_stats_put(pa, &a);
     gigs_stats_put(pb, &b);
@@ -85,7 +86,8 @@ static void gigs_stats_sum_of_two(void)
     CHECK(sum.primary == 101 && sum.shadow == 202 && sum.reflection == 303 &&
           sum.refraction == 404 && sum.transmission == 505 && sum.box_tests == 606 &&
           sum.prim_tests == 707 && sum.primary_box_tests == 808 &&
-          sum.primary_prim_tests == 909 && sum.precision_lost_pixels == 1010);
+          sum.primary_prim_tests == 909 && sum.precision_lost_pixels == 1010 &&
+          sum.escalated_pixels == 1111);
 }
 
 /* The failure report: counts, both maps and the listed areas come back;
