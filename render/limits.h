@@ -127,6 +127,18 @@
                                            colour is at most 1: the error it
                                            carries is not counted in its
                                            decisions (render/trace.c) */
+/* Escalating (render/wide.h), a decision counts as lost when it is closer
+ * than this many times the ray's error bound.  On demo.scn at 320x240
+ * fixed point's bounds missed 10 pixels beyond 2/255 of double, in
+ * secondary rays: 3 at 8 times, none at 16.  Float's missed one, an edge
+ * moved by under a pixel, at 1 and at 16 alike (docs/renderer.md). */
+#ifndef RENDER_ESCALATE_MARGIN
+#ifdef LINKS1_NUM_FIXED
+#define RENDER_ESCALATE_MARGIN 16
+#else
+#define RENDER_ESCALATE_MARGIN 1
+#endif
+#endif
 #define RENDER_LOST_TOLERANCE_VALUE 5e-2 /* a primitive whose estimated hit
                                            point error exceeds this (stored
                                            units) is imprecise; so is one whose

@@ -232,6 +232,10 @@ typedef struct {
      * arithmetic's colour (or RENDER_LOST_COLOUR with mark_lost). */
     rgb8_t (*escalate)(void *arg, uint32_t x, uint32_t y, uint8_t *lost);
     void *escalate_arg;
+    /* Over 1: every ray's error bound counts this many times over in the
+     * hit-or-miss decisions (a wider net for escalation, whose bounds
+     * can fall short: RENDER_ESCALATE_MARGIN); 0 or 1: as estimated. */
+    uint8_t error_margin;
     /* render/trace.c's: a hit's material with its attribute maps applied,
      * one per nesting of the hits that use one at a time (shading, the
      * straight transmission past the depth limit, a shadow ray's

@@ -280,12 +280,27 @@ static num_t trace_err_clamp(num_t e)
     return num_is_sat(e) || num_gt(e, NUM_FAR) ? NUM_FAR : e;
 }
 
+/* The error a walk's decisions are widened by: the ray's, times
+ * ctx->error_margin when that is over 1 (escalation's wider net:
+ * render/wide.h), in *scaled. */
+static const ray_error_t *trace_err_margin(const render_ctx_t *ctx, const ray_error_t *err,
+                                           ray_error_t *scaled)
+{
+    if (!err || ctx->error_margin <= 1)
+        return err;
+    scaled->origin = trace_err_clamp(num_mul_int(err->origin, ctx->error_margin));
+    scaled->dir = trace_err_clamp(num_mul_int(err->dir, ctx->error_margin));
+    return scaled;
+}
+
 /* screen (may be NULL): the pixel {x, y} a primary ray goes through, for
  * a walk that skips the subtrees whose screen rectangles miss it. */
 static int trace_nearest(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err, num_t tmin,
                          const uint32_t *clip, uint32_t clip_count, const int32_t *screen,
                          hit_t *hit)
 {
+    ray_error_t scaled;
+    err = trace_err_margin(ctx, err, &scaled);
     trace_walk_t w = {.ctx = ctx, .ray = ray, .err = err, .tmin = tmin, .tmax = TRACE_FAR,
                       .mode = TRACE_NEAREST, .screen = screen != NULL,
                       .px = screen ? screen[0] : 0, .py = screen ? screen[1] : 0};
@@ -388,8 +403,10 @@ static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t di
     cross.count = 0;
     cross.overflow = 0;
     cross.opaque = 0;
-    trace_walk_t w = {.ctx = ctx, .ray = &ray, .err = err, .tmin = ctx->frame->ray_epsilon,
-                      .tmax = distance, .mode = TRACE_COLLECT_SHADOW, .cross = &cross};
+    ray_error_t scaled;
+    trace_walk_t w = {.ctx = ctx, .ray = &ray, .err = trace_err_margin(ctx, err, &scaled),
+                      .tmin = ctx->frame->ray_epsilon, .tmax = distance,
+                      .mode = TRACE_COLLECT_SHADOW, .cross = &cross};
     trace_walk(&w, NULL, 0);
     if (cross.opaque || cross.overflow)
         return rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
@@ -493,8 +510,10 @@ static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray, const ray_error
     cross.count = 0;
     cross.overflow = 0;
     cross.opaque = 0;
-    trace_walk_t w = {.ctx = ctx, .ray = ray, .err = err, .tmin = ctx->frame->ray_epsilon,
-                      .tmax = TRACE_FAR, .mode = TRACE_COLLECT_STRAIGHT, .cross = &cross};
+    ray_error_t scaled;
+    trace_walk_t w = {.ctx = ctx, .ray = ray, .err = trace_err_margin(ctx, err, &scaled),
+                      .tmin = ctx->frame->ray_epsilon, .tmax = TRACE_FAR,
+                      .mode = TRACE_COLLECT_STRAIGHT, .cross = &cross};
     trace_walk(&w, NULL, 0);
     rgb_t sum = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     rgb_t weight = rgb_make(NUM_ONE, NUM_ONE, NUM_ONE);

@@ -28,6 +28,7 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "render/limits.h"
 #include "render/render.h"
 
 /* The names the wide copy's entry points have once renamed; render/wide.c
@@ -83,6 +84,15 @@ RENDER_WIDE_WEAK rgb8_t RENDER_WIDE(wide_pixel)(void *arg, uint32_t x, uint32_t 
 RENDER_WIDE_WEAK void RENDER_WIDE(wide_stats_add)(const void *ctx_mem, render_stats_t *into);
 
 #ifndef LINKS1_WIDE_COPY
+/* ctx escalating into the wide context wide_ctx (wide_ctx_open), its
+ * decisions' error bounds widened RENDER_ESCALATE_MARGIN times. */
+static inline void render_wide_escalate(render_ctx_t *ctx, void *wide_ctx)
+{
+    ctx->escalate = RENDER_WIDE(wide_pixel);
+    ctx->escalate_arg = wide_ctx;
+    ctx->error_margin = RENDER_ESCALATE_MARGIN;
+}
+
 /* 1 when this program carries the wide copy (the escalating firmware
  * builds, links1-ref-float and -fixed), 0 when it does not. */
 static inline int render_wide_linked(void)

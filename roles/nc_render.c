@@ -115,8 +115,7 @@ static int nc_setup_wide(struct nc_job *job, const uint8_t *block, const render_
                                    o->use_hierarchy, o->mark_lost, why, cap) != 0)
         return -1;
     job->wide = mem;
-    job->ctx.escalate = RENDER_WIDE(wide_pixel);
-    job->ctx.escalate_arg = mem;
+    render_wide_escalate(&job->ctx, mem);
     return 0;
 }
 

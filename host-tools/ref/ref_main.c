@@ -172,8 +172,7 @@ static int ref_wide_frame(const char *in, struct ref_wide *w, long frame, render
         fprintf(stderr, "links1 ref: %s frame %ld: --escalate: %s\n", in, frame, why);
         return -1;
     }
-    ctx->escalate = RENDER_WIDE(wide_pixel);
-    ctx->escalate_arg = w->ctx;
+    render_wide_escalate(ctx, w->ctx);
     return 0;
 }
 
