@@ -43,3 +43,10 @@ $(foreach a,double float fixed,$(eval test_blob_$(a)_LIBS = $$(SCENE_TEXT_LIBS))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_SRCS = tests/host/test_clip.c $$(SCENE_TEXT_SRCS)))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_ARITH := $(a)))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
+
+# Escalation (render/wide.h): float and fixed with the wide copy linked in.
+HOST_TESTS += test_wide_float test_wide_fixed
+$(foreach a,float fixed,$(eval test_wide_$(a)_SRCS = tests/host/test_wide.c $$(SCENE_TEXT_SRCS)))
+$(foreach a,float fixed,$(eval test_wide_$(a)_ARITH := $(a)))
+$(foreach a,float fixed,$(eval test_wide_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
+$(foreach a,float fixed,$(eval test_wide_$(a)_WIDE := 1))

@@ -1,0 +1,255 @@
+/* test_wide.c: escalation (render/wide.h) in one program that carries the
+ * renderer twice, its own arithmetic and the wide copy (double) under
+ * wide_* names.  A pixel that loses precision takes the wide copy's colour,
+ * every other keeps its own; the counts say so; an NC's area walk escalates
+ * the same pixels; the wide blob survives the RC's copy (relocated, frame
+ * part only for the next frame); bad blocks and contexts are refused with
+ * a message. */
+#include "tests/check.h"
+#include "render/wide.h"
+#include "tests/host/test_blob_util.h"
+
+#define TW_DIV 2 /* demo.scn at 160x120 */
+
+/* The wide blob of scenes/NAME.scn, frame frame_index, in a new block. */
+static void *tw_wide_blob(const char *name, uint32_t frame_index, size_t *size)
+{
+    size_t len;
+    char why[RENDER_BLOB_MSG_MAX];
+    uint8_t *buf = tb_compile_div(name, TW_DIV, &len);
+    void *block = NULL;
+    if (buf && RENDER_WIDE(wide_blob_bytes)(buf, len, size, why, sizeof why) == 0) {
+        block = tb_block(*size);
+        if (RENDER_WIDE(wide_blob_load)(buf, len, block, *size, "the test block", 7, why,
+                                        sizeof why) != 0 ||
+            RENDER_WIDE(wide_blob_prepare)(block, frame_index, *size, why, sizeof why) != 0) {
+            printf("%s: %s\n", name, why);
+            free(block);
+            block = NULL;
+        }
+    }
+    free(buf);
+    return block;
+}
+
+static void *tw_wide_ctx(const void *block, size_t size)
+{
+    char why[RENDER_BLOB_MSG_MAX];
+    void *mem = aligned_alloc(RENDER_WIDE_CTX_ALIGN, (RENDER_WIDE(wide_ctx_bytes)() + 7) & ~7u);
+    if (mem && RENDER_WIDE(wide_ctx_open)(mem, block, size, 1, 1, 0, why, sizeof why) != 0) {
+        printf("wide context: %s\n", why);
+        free(mem);
+        mem = NULL;
+    }
+    return mem;
+}
+
+/* Every pixel of the frame with ctx, into a new image; lost[i] = whether
+ * pixel i lost precision (when lost is not NULL). */
+static rgb8_t *tw_render(render_ctx_t *ctx, uint8_t *lost)
+{
+    const render_frame_t *f = ctx->frame;
+    rgb8_t *img = malloc(sizeof *img * f->width * f->height);
+    for (uint32_t y = 0; img && y < f->height; y++)
+        for (uint32_t x = 0; x < f->width; x++) {
+            img[y * f->width + x] = render_pixel(ctx, x, y);
+            if (lost)
+                lost[y * f->width + x] = ctx->pixel_lost;
+        }
+    return img;
+}
+
+/* The same with the wide copy (wide_pixel on its context), w x h. */
+static rgb8_t *tw_render_wide(void *wctx, uint32_t w, uint32_t h, uint8_t *lost)
+{
+    rgb8_t *img = malloc(sizeof *img * w * h);
+    for (uint32_t y = 0; img && y < h; y++)
+        for (uint32_t x = 0; x < w; x++) {
+            uint8_t l;
+            img[y * w + x] = RENDER_WIDE(wide_pixel)(wctx, x, y, &l);
+            if (lost)
+                lost[y * w + x] = l;
+        }
+    return img;
+}
+
+static int tw_same(rgb8_t a, rgb8_t b)
+{
+    return a.r == b.r && a.g == b.g && a.b == b.b;
+}
+
+/* A lost pixel takes the wide colour, the others keep theirs; escalated
+ * counts the lost ones, precision_lost_pixels those the wide one lost. */
+static void test_wide_escalates_lost_pixels(void)
+{
+    size_t size, wsize;
+    render_blob_t *blob = tb_blob_div("demo", 0, TW_DIV, &size);
+    void *wblock = tw_wide_blob("demo", 0, &wsize);
+    void *wctx = wblock ? tw_wide_ctx(wblock, wsize) : NULL;
+    CHECK(blob && wctx);
+    if (!blob || !wctx)
+        return;
+    const render_frame_t *f = blob->frame;
+    size_t n = (size_t)f->width * f->height;
+    uint8_t *lost = calloc(n, 1), *wide_lost = calloc(n, 1);
+    render_ctx_t plain, esc;
+    render_ctx_init(&plain, f);
+    plain.error_margin = RENDER_ESCALATE_MARGIN; /* the net escalation casts */
+    rgb8_t *own = tw_render(&plain, lost);
+    rgb8_t *wide = tw_render_wide(wctx, f->width, f->height, wide_lost);
+    void *wctx2 = tw_wide_ctx(wblock, wsize);
+    render_ctx_init(&esc, f);
+    render_wide_escalate(&esc, wctx2);
+    rgb8_t *got = tw_render(&esc, NULL);
+    uint32_t nlost = 0, nboth = 0, wrong = 0;
+    for (size_t i = 0; i < n; i++) {
+        nlost += lost[i];
+        nboth += lost[i] && wide_lost[i];
+        wrong += !tw_same(got[i], lost[i] ? wide[i] : own[i]);
+    }
+    printf("demo %ux%u: %u of %zu pixels escalated, %u lost in double too\n", (unsigned)f->width,
+           (unsigned)f->height, (unsigned)nlost, n, (unsigned)nboth);
+    CHECK(nlost > 0 && nlost < n);
+    CHECK_EQ_INT(wrong, 0);
+    CHECK_EQ_INT(esc.stats.escalated_pixels, nlost);
+    CHECK_EQ_INT(esc.stats.precision_lost_pixels, nboth);
+    /* the wide copy's rays are counted apart, and add up */
+    render_stats_t sum = esc.stats;
+    RENDER_WIDE(wide_stats_add)(wctx2, &sum);
+    CHECK(sum.primary == esc.stats.primary + nlost);
+    free(lost);
+    free(wide_lost);
+    free(own);
+    free(wide);
+    free(got);
+    free(wctx);
+    free(wctx2);
+    free(wblock);
+    free(blob);
+}
+
+/* render_area (the paper's lists, and clipping in the tree) escalates the
+ * pixels render_pixel escalates, to the same colours. */
+static void test_wide_area_same_as_pixels(void)
+{
+    size_t size, wsize;
+    render_blob_t *blob = tb_blob_div("demo", 0, TW_DIV, &size);
+    void *wblock = tw_wide_blob("demo", 0, &wsize);
+    void *wctx = wblock ? tw_wide_ctx(wblock, wsize) : NULL;
+    CHECK(blob && wctx);
+    if (!blob || !wctx)
+        return;
+    const render_frame_t *f = blob->frame;
+    render_ctx_t ctx;
+    render_ctx_init(&ctx, f);
+    render_wide_escalate(&ctx, wctx);
+    rgb8_t *want = tw_render(&ctx, NULL);
+    uint32_t want_escalated = ctx.stats.escalated_pixels;
+    size_t clip_bytes = render_clip_bytes(f);
+    void *clip_mem = malloc(clip_bytes ? clip_bytes : 1);
+    for (int lists = 0; lists <= 1; lists++) {
+        render_clip_t clip;
+        render_clip_init(&clip, f, clip_mem, clip_bytes);
+        render_ctx_init(&ctx, f);
+        render_wide_escalate(&ctx, wctx);
+        render_clip_options_t opt = {.y_clip = 1, .x_clip = 1, .lists = (uint8_t)lists};
+        rgb8_t *area = malloc(sizeof *area * 16 * 16);
+        uint32_t wrong = 0;
+        for (uint32_t y = 0; y < f->height; y += 16)
+            for (uint32_t x = 0; x < f->width; x += 16) {
+                render_area_t a = {x, y, f->width - x < 16 ? f->width - x : 16,
+                                   f->height - y < 16 ? f->height - y : 16};
+                CHECK_EQ_INT(render_area(&ctx, &clip, &a, &opt, area), RENDER_OK);
+                for (uint32_t r = 0; r < a.h; r++)
+                    for (uint32_t c = 0; c < a.w; c++)
+                        wrong += !tw_same(area[r * a.w + c], want[(y + r) * f->width + x + c]);
+            }
+        CHECK_EQ_INT(wrong, 0);
+        CHECK_EQ_INT(ctx.stats.escalated_pixels, want_escalated);
+        free(area);
+    }
+    free(clip_mem);
+    free(want);
+    free(wctx);
+    free(wblock);
+    free(blob);
+}
+
+/* The RC's copy of the wide blob: relocated to its new block (the old one
+ * wrecked and freed), it renders as the original; the next frame of the
+ * same load copies its frame part only and renders as a lone build. */
+static void test_wide_copy_frame(void)
+{
+    size_t size, size2;
+    void *a = tw_wide_blob("anim", 1, &size);
+    void *a2 = tw_wide_blob("anim", 2, &size2);
+    size_t nsize;
+    render_blob_t *narrow = tb_blob_div("anim", 1, TW_DIV, &nsize); /* for the sizes */
+    CHECK(a && a2 && narrow);
+    if (!a || !a2 || !narrow)
+        return;
+    uint32_t w = narrow->frame->width, h = narrow->frame->height;
+    size_t n = (size_t)w * h;
+    void *ca = tw_wide_ctx(a, size);
+    rgb8_t *before = tw_render_wide(ca, w, h, NULL);
+    void *b = tb_block(size);
+    char why[RENDER_BLOB_MSG_MAX];
+    CHECK_EQ_INT(RENDER_WIDE(wide_blob_copy_frame)(b, size, a, why, sizeof why), 0);
+    memset(a, 0xA5, size);
+    free(a);
+    void *cb = tw_wide_ctx(b, size);
+    rgb8_t *after = cb ? tw_render_wide(cb, w, h, NULL) : NULL;
+    CHECK(after && memcmp(before, after, n * sizeof *after) == 0);
+    /* frame 2 over it: a2 is the same load (both numbered 7) */
+    void *c2 = tw_wide_ctx(a2, size2);
+    rgb8_t *lone = tw_render_wide(c2, w, h, NULL);
+    CHECK_EQ_INT(RENDER_WIDE(wide_blob_copy_frame)(b, size, a2, why, sizeof why), 0);
+    void *cb2 = tw_wide_ctx(b, size);
+    rgb8_t *next = cb2 ? tw_render_wide(cb2, w, h, NULL) : NULL;
+    CHECK(next && memcmp(lone, next, n * sizeof *next) == 0);
+    free(before);
+    free(after);
+    free(lone);
+    free(next);
+    free(ca);
+    free(cb);
+    free(c2);
+    free(cb2);
+    free(a2);
+    free(b);
+    free(narrow);
+}
+
+/* Refusals name their problem: a block with no blob, a context not
+ * aligned, a block too small for the wide scene. */
+static void test_wide_errors(void)
+{
+    char why[RENDER_BLOB_MSG_MAX];
+    void *empty = tb_block(4096);
+    void *mem = aligned_alloc(RENDER_WIDE_CTX_ALIGN, (RENDER_WIDE(wide_ctx_bytes)() + 15) & ~7u);
+    CHECK_EQ_INT(RENDER_WIDE(wide_ctx_open)(mem, empty, 4096, 1, 1, 0, why, sizeof why), -1);
+    CHECK(strstr(why, "no blob") != NULL);
+    CHECK_EQ_INT(RENDER_WIDE(wide_ctx_open)((uint8_t *)mem + 1, empty, 4096, 1, 1, 0, why,
+                                            sizeof why),
+                 -1);
+    CHECK(strstr(why, "aligned") != NULL);
+    size_t len;
+    uint8_t *buf = tb_compile_div("demo", TW_DIV, &len);
+    CHECK_EQ_INT(RENDER_WIDE(wide_blob_load)(buf, len, empty, 4096, "the small block", 1, why,
+                                             sizeof why),
+                 -1);
+    CHECK(strstr(why, "the small block") != NULL && strstr(why, "double") != NULL);
+    CHECK(render_wide_linked());
+    free(buf);
+    free(mem);
+    free(empty);
+}
+
+int main(void)
+{
+    RUN(test_wide_escalates_lost_pixels);
+    RUN(test_wide_area_same_as_pixels);
+    RUN(test_wide_copy_frame);
+    RUN(test_wide_errors);
+    return check_exit();
+}
