@@ -8,7 +8,9 @@
 # (double, float = soft on the host, fixed with every fraction-bit count
 # that builds, 12..19), max_depth 1..8, adaptive depth on (min_weight 1/512)
 # and off, density root-finder steps 8..64 (--density-steps),
-# refraction off (transmitted rays never bend).
+# refraction off (transmitted rays never bend), float and fixed Q12.19 at
+# depth 5 escalated (--escalate: a pixel that lost precision traced again
+# in double).
 # Cost on the host: ns per pixel of tracing ("traced in" of links1 ref), the
 # median of RUNS (default 3) runs.  Cost on the board: the NCs' guest
 # instructions per pixel (links1 render --count-insns, the TCG plugin; the
@@ -114,6 +116,9 @@ configs+=("float d$dm adaptive, refraction off|build/links1-ref-float|--max-dept
 configs+=("double d$dm fixed cutoff|build/links1-ref-double|--max-depth $dm --min-weight 0")
 configs+=("fixed Q12.19 d$dm adaptive|build/links1-ref-fixed|--max-depth $dm")
 configs+=("fixed Q12.19 d$dm fixed cutoff|build/links1-ref-fixed|--max-depth $dm --min-weight 0")
+# escalation: a pixel that lost precision traced again in double
+configs+=("float d$dm adaptive, escalated|build/links1-ref-float|--max-depth $dm --escalate")
+configs+=("fixed Q12.19 d$dm adaptive, escalated|build/links1-ref-fixed|--max-depth $dm --escalate")
 for f in $FRACS; do
     configs+=("fixed Q$((31 - f)).$f d5 adaptive|$out/bin/fixed-$f|--max-depth 5")
 done
@@ -156,6 +161,9 @@ bconfigs+=("float d$dm adaptive, refraction off|float|--max-depth $dm --refracti
 bconfigs+=("fixed Q12.19 d$dm adaptive|fixed|--max-depth $dm|fixed Q12.19 d$dm adaptive")
 [ "$SMALL" = 1 ] ||
     bconfigs+=("fixed Q12.19 d$dm fixed cutoff|fixed|--max-depth $dm --min-weight 0|fixed Q12.19 d$dm fixed cutoff")
+# escalated (the -esc firmware, which needs the VFP for its double)
+bconfigs+=("float d$dm adaptive, escalated|float|--max-depth $dm --escalate|float d$dm adaptive, escalated")
+bconfigs+=("fixed Q12.19 d$dm adaptive, escalated|fixed|--max-depth $dm --escalate|fixed Q12.19 d$dm adaptive, escalated")
 for f in $FRACS; do # firmware with another fixed format, in this script's own build dir
     fw=$out/fw-q$f
     make -s --no-print-directory B="$fw" FW_EXTRA_CFLAGS=-DNUM_FRAC_BITS=$f "$fw/links1-fixed.elf"
@@ -190,7 +198,7 @@ front "$out/pareto.raw" "$out/pareto.tsv"
 # the board's front, and the front of the NCs without an FPU (soft, fixed)
 front "$out/pareto-board.raw" "$out/pareto-board.sorted"
 awk -F'\t' -v OFS='\t' 'NR == 1 { print $0, "front_no_fpu"; next }
-    { f = ""; if ($6 != "float" && $6 != "double" && $3 + 0 > best) { f = "yes"; best = $3 + 0 } print $0, f }' \
+    { f = ""; if ($6 != "float" && $6 != "double" && $1 !~ /escalated/ && $3 + 0 > best) { f = "yes"; best = $3 + 0 } print $0, f }' \
     "$out/pareto-board.sorted" >"$out/pareto-board.tsv"
 rm -f "$out/pareto-board.sorted"
 
@@ -199,9 +207,11 @@ awk -F'\t' 'NR > 1 { print $2, $3 }' "$out/pareto.tsv" >"$out/all.dat"
 awk -F'\t' 'NR > 1 && $7 == "yes" { print $2, $3 }' "$out/pareto.tsv" >"$out/front.dat"
 awk -F'\t' 'NR > 1 { gsub(/ /, "_", $1); print $2, $3, $1 }' "$out/pareto.tsv" >"$out/labels.dat"
 for a in float soft fixed double; do
-    awk -F'\t' -v a=$a 'NR > 1 && $6 == a { print $2, $3 }' "$out/pareto-board.tsv" \
-        >"$out/board-$a.dat"
+    awk -F'\t' -v a=$a 'NR > 1 && $6 == a && $1 !~ /escalated/ { print $2, $3 }' \
+        "$out/pareto-board.tsv" >"$out/board-$a.dat"
 done
+awk -F'\t' 'NR > 1 && $1 ~ /escalated/ { print $2, $3 }' "$out/pareto-board.tsv" \
+    >"$out/board-escalated.dat"
 awk -F'\t' 'NR > 1 && $8 == "yes" { print $2, $3 }' "$out/pareto-board.tsv" >"$out/board-front.dat"
 awk -F'\t' 'NR > 1 && $9 == "yes" { print $2, $3 }' "$out/pareto-board.tsv" >"$out/board-front-nofpu.dat"
 # labels on the fronts' points only (the table has them all)
@@ -227,6 +237,7 @@ plot "$out/board-float.dat" using 1:2 with points pt 7 ps 0.9 title "float (VFP)
      "$out/board-soft.dat" using 1:2 with points pt 5 ps 0.9 title "soft float", \
      "$out/board-fixed.dat" using 1:2 with points pt 9 ps 1.1 title "fixed point (Q12.19, and the other formats' firmware)", \
      "$out/board-double.dat" using 1:2 with points pt 13 ps 1.0 title "double (VFP, double precision)", \
+     "$out/board-escalated.dat" using 1:2 with points pt 11 ps 1.4 title "float and fixed escalated (--escalate: lost pixels traced again in double)", \
      "$out/board-front.dat" using 1:2 with linespoints lw 2 pt 6 ps 1.5 title "Pareto front", \
      "$out/board-front-nofpu.dat" using 1:2 with linespoints lw 2 dt 2 pt 6 ps 1.5 title "Pareto front without an FPU (soft, fixed)", \
      "$out/board-labels.dat" using 1:2:3 with labels font ",7" offset 0,0.7 notitle

@@ -2,9 +2,11 @@
 # tests/sweeps/pareto_small.sh: the Pareto chart at reduced size
 # (PARETO_SMALL=1 pareto.sh: 40x30, depth 2): both charts are written as
 # PNG; every board point counted NC instructions and gave the host's image
-# of the same arithmetic byte for byte (float, soft, double, fixed); soft float costs the NCs more
-# instructions per pixel than the VFP, and bending transmitted rays more
-# than not bending them.
+# of the same arithmetic byte for byte (float, soft, double, fixed, and
+# float and fixed escalated); soft float costs the NCs more instructions per
+# pixel than the VFP, and bending transmitted rays more than not bending
+# them; escalated fixed point is closer to the reference than plain fixed
+# point, for more instructions.
 #   PASS pareto_small_NAME  or  FAIL pareto_small_NAME: why
 . "$(dirname "$0")/../board/lib.sh"
 board_ready pareto_small || exit 0
@@ -26,7 +28,7 @@ done
 tsv=$out/pareto-board.tsv
 rows=$(tail -n +2 "$tsv" | wc -l)
 wrong=$(awk -F'\t' 'NR > 1 && !($2 > 0 && $7 == "yes") { printf "%s (%s insns, same image: %s); ", $1, $2, $7 }' "$tsv")
-if [ "$rows" -eq 5 ] && [ -z "$wrong" ]; then
+if [ "$rows" -eq 7 ] && [ -z "$wrong" ]; then
     echo "PASS pareto_small_board_counted_and_exact ($rows configurations)"
 else
     echo "FAIL pareto_small_board_counted_and_exact: $rows rows; $wrong"
@@ -43,4 +45,13 @@ if awk -v f="$f" -v r="$r" 'BEGIN { exit !(r > 0 && f > r) }'; then
     echo "PASS pareto_small_refraction_costs_more (bending $f, not bending $r)"
 else
     echo "FAIL pareto_small_refraction_costs_more: bending '$f', not bending '$r'"
+fi
+x=$(cost "fixed Q12.19 d2 adaptive") xe=$(cost "fixed Q12.19 d2 adaptive, escalated")
+# psnr CONFIG: its PSNR against the reference
+psnr() { awk -F'\t' -v n="$1" '$1 == n { print $3 }' "$tsv"; }
+q=$(psnr "fixed Q12.19 d2 adaptive") qe=$(psnr "fixed Q12.19 d2 adaptive, escalated")
+if awk -v x="$x" -v xe="$xe" -v q="$q" -v qe="$qe" 'BEGIN { exit !(x > 0 && xe > x && qe > q) }'; then
+    echo "PASS pareto_small_escalated_closer (fixed $x instructions a pixel at $q dB, escalated $xe at $qe dB)"
+else
+    echo "FAIL pareto_small_escalated_closer: fixed '$x' at '$q' dB, escalated '$xe' at '$qe' dB"
 fi
