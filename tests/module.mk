@@ -49,6 +49,8 @@ BENCHES += tests/bench/bench_big.sh tests/bench/bench_an521.sh
 BENCHES += tests/bench/bench_pipeline.sh
 # links1 farm's own cost, one host against two, and the model of H hosts (wall time).
 BENCHES += tests/bench/bench_farm.sh
+# Escalation: cost and accuracy of float and fixed with --escalate.
+BENCHES += tests/bench/bench_escalate.sh
 # The board cost model --arith auto does not use: work counts against NC instructions.
 BENCHES += tests/bench/arith_cost_fit.sh
 BENCHES += tests/bench/bench_link_noise.sh
