@@ -310,7 +310,7 @@ static render_status_t prep_check(const scene_t *s)
  * grows its box (RENDER_BOUNDS_PAD_VALUE scaled to the scene: the caller
  * scales it once a frame, not once a primitive). */
 static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame_t *f, const xform_t *to_eye,
-                      const xform_t *from_eye, num_t pad, render_prim_t *p)
+                      const xform_t *from_eye, num_t pad, const uint32_t *normal_src, render_prim_t *p)
 {
     num_t lin[3][3];
     p->kind = sp->kind;
@@ -338,13 +338,19 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
         p->e1 = vec3_sub(v[1], v[0]);
         p->e2 = vec3_sub(v[2], v[0]);
         p->normal = vec3_normalize(vec3_cross(vec3_normalize(p->e1), vec3_normalize(p->e2)));
-        /* smooth: the vertex normals by the inverse transpose of to_eye */
+        /* smooth: the vertex normals by the inverse transpose of to_eye,
+         * each distinct one (bits and maps) once: a vertex normal met
+         * before, in an earlier primitive, is copied (normal_src) */
         p->normals = NULL;
         if (sp->shape.triangle.smooth) {
             uint32_t j = sp->shape.triangle.smooth - 1;
-            for (int k = 0; k < 3; k++)
+            for (uint32_t k = 0; k < 3; k++) {
+                uint32_t src = normal_src[3 * j + k];
                 f->normals[j].n[k] =
-                    vec3_normalize(xform_dir_transposed(from_eye, f->scene->normals[j].n[k]));
+                    src == (j << 2 | k)
+                        ? vec3_normalize(xform_dir_transposed(from_eye, f->scene->normals[j].n[k]))
+                        : f->normals[src >> 2].n[src & 3];
+            }
             p->normals = &f->normals[j];
         }
         p->edge_n1 = vec3_normalize(vec3_cross(p->e2, p->normal));
@@ -399,6 +405,62 @@ static num_t prep_project(num_t v, num_t z, num_t half, uint16_t size)
     return num_sub(num_mul(num_add(s, NUM_ONE), num_mul_int(NUM_HALF, size)), NUM_HALF);
 }
 
+/* A corner's column (x = 1) or row (x = 0) on the screen, clamped to
+ * PREP_PIXEL_LIMIT; *sat set when the projection saturates. */
+static inline num_t prep_corner(const render_frame_t *f, num_t v, num_t z, int x, int *sat)
+{
+    num_t p = x ? prep_project(v, z, f->screen_half_w, f->width)
+                /* image rows grow downwards while eye y grows upwards */
+                : num_sub(num_from_int(f->height - 1), prep_project(v, z, f->screen_half_h, f->height));
+    if (num_is_sat(p))
+        *sat = 1;
+    /* A corner far off the screen (a huge eye-space box): clamped to the
+     * screen below either way, and too large for an int as it is. */
+    return num_min(num_max(p, num_neg(PREP_PIXEL_LIMIT)), PREP_PIXEL_LIMIT);
+}
+
+/* The least and the largest column and row of the box's corners (its
+ * lo.z at least the near plane); 0 when one saturates (the cluster then
+ * covers the whole screen).  A column depends on a corner's x and z only,
+ * a row on its y and z.  Each step of a projection (v / z, / half, + 1,
+ * * size / 2, - 1/2, the clamps) is monotone, so of a finite box with
+ * lo <= hi and positive halves the least column is lo.x's at the z where
+ * lo.x / z is least (hi.z when lo.x >= 0, lo.z when below) and the
+ * largest hi.x's at the z where hi.x / z is largest: four projections
+ * give the values the four (x, z) pairs' eight would (the DM projects
+ * every cluster of every frame), and they meet integers only through
+ * num_floor_int.  Any other box takes all eight. */
+static int prep_screen_extremes(const render_frame_t *f, const aabb_t *b, num_t *x0, num_t *x1,
+                                num_t *y0, num_t *y1)
+{
+    int sat = 0;
+    if (!num_is_sat(b->lo.x) && !num_is_sat(b->hi.x) && !num_is_sat(b->lo.y) &&
+        !num_is_sat(b->hi.y) && !num_is_sat(b->lo.z) && !num_is_sat(b->hi.z) &&
+        !num_gt(b->lo.x, b->hi.x) && !num_gt(b->lo.y, b->hi.y) && !num_gt(b->lo.z, b->hi.z) && num_gt(b->lo.z, NUM_ZERO) &&
+        num_gt(f->screen_half_w, NUM_ZERO) && num_gt(f->screen_half_h, NUM_ZERO)) {
+        *x0 = prep_corner(f, b->lo.x, num_lt(b->lo.x, NUM_ZERO) ? b->lo.z : b->hi.z, 1, &sat);
+        *x1 = prep_corner(f, b->hi.x, num_gt(b->hi.x, NUM_ZERO) ? b->lo.z : b->hi.z, 1, &sat);
+        /* rows fall as y rises: the least row is hi.y's */
+        *y0 = prep_corner(f, b->hi.y, num_gt(b->hi.y, NUM_ZERO) ? b->lo.z : b->hi.z, 0, &sat);
+        *y1 = prep_corner(f, b->lo.y, num_lt(b->lo.y, NUM_ZERO) ? b->lo.z : b->hi.z, 0, &sat);
+        return !sat;
+    }
+    for (int k = 0; k < 4; k++) {
+        num_t x = (k & 1) ? b->hi.x : b->lo.x;
+        num_t y = (k & 1) ? b->hi.y : b->lo.y;
+        num_t z = (k & 2) ? b->hi.z : b->lo.z;
+        num_t px = prep_corner(f, x, z, 1, &sat);
+        num_t py = prep_corner(f, y, z, 0, &sat);
+        if (sat)
+            return 0;
+        *x0 = k ? num_min(*x0, px) : px;
+        *x1 = k ? num_max(*x1, px) : px;
+        *y0 = k ? num_min(*y0, py) : py;
+        *y1 = k ? num_max(*y1, py) : py;
+    }
+    return 1;
+}
+
 static void prep_screen_rect(const render_frame_t *f, render_cluster_t *c)
 {
     const aabb_t *b = &c->own_bounds;
@@ -419,29 +481,9 @@ static void prep_screen_rect(const render_frame_t *f, render_cluster_t *c)
     }
     if (num_lt(b->lo.z, scene_tolerance(f->scene, NUM_C(RENDER_NEAR_PLANE_VALUE))))
         return; /* reaches behind the eye: whole screen */
-    /* The eight corners' columns and rows: a column depends on a corner's
-     * x and z only, a row on its y and z, so the four (x, z) and four (y, z)
-     * pairs give the same extremes as the eight corners with half the
-     * divisions (the DM projects every cluster of every frame). */
     num_t x0 = NUM_ZERO, x1 = NUM_ZERO, y0 = NUM_ZERO, y1 = NUM_ZERO;
-    for (int k = 0; k < 4; k++) {
-        num_t x = (k & 1) ? b->hi.x : b->lo.x;
-        num_t y = (k & 1) ? b->hi.y : b->lo.y;
-        num_t z = (k & 2) ? b->hi.z : b->lo.z;
-        num_t px = prep_project(x, z, f->screen_half_w, f->width);
-        /* image rows grow downwards while eye y grows upwards */
-        num_t py = num_sub(num_from_int(f->height - 1), prep_project(y, z, f->screen_half_h, f->height));
-        if (num_is_sat(px) || num_is_sat(py))
-            return;
-        /* A corner far off the screen (a huge eye-space box): clamped to
-         * the screen below either way, and too large for an int as it is. */
-        px = num_min(num_max(px, num_neg(PREP_PIXEL_LIMIT)), PREP_PIXEL_LIMIT);
-        py = num_min(num_max(py, num_neg(PREP_PIXEL_LIMIT)), PREP_PIXEL_LIMIT);
-        x0 = k ? num_min(x0, px) : px;
-        x1 = k ? num_max(x1, px) : px;
-        y0 = k ? num_min(y0, py) : py;
-        y1 = k ? num_max(y1, py) : py;
-    }
+    if (!prep_screen_extremes(f, b, &x0, &x1, &y0, &y1))
+        return;
     /* one pixel of margin either side keeps it conservative under rounding */
     int32_t ix0 = num_floor_int(x0) - 1, ix1 = num_floor_int(x1) + 2;
     int32_t iy0 = num_floor_int(y0) - 1, iy1 = num_floor_int(y1) + 2;
@@ -488,52 +530,158 @@ static void prep_lights(const scene_t *s, const scene_light_t *lights, const xfo
     }
 }
 
-/* Group items by owner with a counting sort (stable: ascending index). */
-static void prep_group_children(const scene_t *s, render_frame_t *f)
+/* ------------------------------------------ the scene's static structure */
+
+/* Vertex normals remembered while indexing: the last distinct one of each
+ * hash, direct-mapped (a mesh's neighbours share vertices close together
+ * in primitive order, so a small table finds nearly all of them). */
+#define PREP_NORMAL_CACHE 4096u
+
+static uint32_t prep_normal_hash(const vec3_t *n, uint32_t maps)
 {
-    for (uint32_t i = 1; i < s->cluster_count; i++)
-        f->clusters[s->clusters[i].parent].child_count++;
-    uint32_t at = 0;
-    for (uint32_t i = 0; i < s->cluster_count; i++) {
-        f->clusters[i].first_child = at;
-        at += f->clusters[i].child_count;
-        f->clusters[i].child_count = 0;
+    const uint8_t *b = (const uint8_t *)n;
+    uint32_t h = 2166136261u ^ maps;
+    for (size_t at = 0; at < sizeof *n; at += sizeof(uint32_t)) {
+        uint32_t w;
+        __builtin_memcpy(&w, b + at, sizeof w);
+        h = (h ^ w) * 16777619u;
     }
-    for (uint32_t i = 1; i < s->cluster_count; i++) {
-        render_cluster_t *p = &f->clusters[s->clusters[i].parent];
-        f->child_list[p->first_child + p->child_count++] = i;
-    }
+    return (h ^ (h >> 13)) & (PREP_NORMAL_CACHE - 1);
 }
 
-static void prep_group_prims(const scene_t *s, render_frame_t *f)
+size_t render_scene_index_bytes(const scene_t *s)
 {
-    for (uint32_t i = 0; i < s->prim_count; i++)
-        f->clusters[s->prims[i].cluster].prim_count++;
-    uint32_t at = 0;
-    for (uint32_t i = 0; i < s->cluster_count; i++) {
-        f->clusters[i].first_prim = at;
-        at += f->clusters[i].prim_count;
-        f->clusters[i].prim_count = 0;
+    size_t c = s->cluster_count ? s->cluster_count : 1;
+    size_t p = s->prim_count ? s->prim_count : 1;
+    size_t n = s->normals_count ? s->normals_count : 1;
+    return sizeof(scene_group_t) * c + sizeof(uint32_t) * (c + p + 3 * n) + /* kept */
+           c + n + 2 * sizeof(uint32_t) * PREP_NORMAL_CACHE +             /* scratch */
+           7 * ARENA_MAX_ALIGN; /* 7 allocations, each padded at most that */
+}
+
+render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index_t *out)
+{
+    __builtin_memset(out, 0, sizeof *out);
+    uint32_t nc = s->cluster_count, np = s->prim_count, nn = s->normals_count;
+    if (nc < 1 || s->clusters[0].parent != SCENE_NO_CLUSTER)
+        return RENDER_ERR_CLUSTER;
+    if (nn >= (1u << 29)) /* (j << 2 | k) must fit: 18 GB of normals, more
+                             than any arena holds */
+        return RENDER_ERR_ARENA;
+    scene_group_t *g = ARENA_NEW_ARRAY(arena, scene_group_t, nc);
+    uint32_t *child = ARENA_NEW_ARRAY(arena, uint32_t, nc);
+    uint32_t *plist = ARENA_NEW_ARRAY(arena, uint32_t, np ? np : 1);
+    uint32_t *src = ARENA_NEW_ARRAY(arena, uint32_t, nn ? 3 * (size_t)nn : 1);
+    if (!g || !child || !plist || !src)
+        return RENDER_ERR_ARENA;
+    size_t mark = arena->used; /* scratch from here, released below */
+    uint8_t *depth = ARENA_NEW_ARRAY(arena, uint8_t, nc);
+    uint8_t *named = ARENA_NEW_ARRAY(arena, uint8_t, nn ? nn : 1);
+    uint32_t *cache = ARENA_NEW_ARRAY(arena, uint32_t, 2 * PREP_NORMAL_CACHE);
+    if (!depth || !named || !cache)
+        return RENDER_ERR_ARENA;
+    render_status_t st = RENDER_OK;
+    for (uint32_t i = 0; i < nc && st == RENDER_OK; i++) {
+        const scene_cluster_t *c = &s->clusters[i];
+        if (i > 0 && c->parent >= i) {
+            st = RENDER_ERR_CLUSTER;
+            break;
+        }
+        depth[i] = i == 0 ? 0 : (uint8_t)(depth[c->parent] + 1);
+        if (depth[i] > RENDER_MAX_CLUSTER_DEPTH)
+            st = RENDER_ERR_CLUSTER;
+        /* a plain cluster has exactly its parent's maps, so its primitives
+         * come out bit for bit as in the parent: the DM copies no maps */
+        g[i].maps_of = i > 0 && prep_is_plain(c) ? g[c->parent].maps_of : i;
     }
-    for (uint32_t i = 0; i < s->prim_count; i++) {
-        render_cluster_t *c = &f->clusters[s->prims[i].cluster];
-        f->prim_list[c->first_prim + c->prim_count++] = i;
+    /* children and primitives grouped by owner, each with a counting sort
+     * (stable: ascending index) */
+    for (uint32_t i = 1; i < nc && st == RENDER_OK; i++)
+        g[s->clusters[i].parent].child_count++;
+    for (uint32_t i = 0; i < np && st == RENDER_OK; i++) {
+        if (s->prims[i].cluster >= nc)
+            st = RENDER_ERR_PRIM;
+        else
+            g[s->prims[i].cluster].prim_count++;
     }
+    if (st != RENDER_OK) {
+        arena_release_to(arena, mark);
+        return st;
+    }
+    uint32_t kids = 0, prims = 0;
+    for (uint32_t i = 0; i < nc; i++) {
+        g[i].first_child = kids;
+        kids += g[i].child_count;
+        g[i].child_count = 0;
+        g[i].first_prim = prims;
+        prims += g[i].prim_count;
+        g[i].prim_count = 0;
+    }
+    for (uint32_t i = 1; i < nc; i++) {
+        scene_group_t *p = &g[s->clusters[i].parent];
+        child[p->first_child + p->child_count++] = i;
+    }
+    for (uint32_t i = 0; i < np; i++) {
+        scene_group_t *c = &g[s->prims[i].cluster];
+        plist[c->first_prim + c->prim_count++] = i;
+    }
+    /* each vertex normal's first equal (bits and maps), in the order
+     * render_prepare maps them: rising primitive index */
+    for (uint32_t j = 0; j < nn; j++)
+        for (uint32_t k = 0; k < 3; k++)
+            src[3 * j + k] = j << 2 | k;
+    for (uint32_t i = 0; i < np; i++) {
+        const scene_prim_t *sp = &s->prims[i];
+        if (sp->kind != SCENE_PRIM_TRIANGLE || !sp->shape.triangle.smooth)
+            continue;
+        uint32_t j = sp->shape.triangle.smooth - 1;
+        if (j >= nn || named[j]) { /* one record, one triangle (the loader's rule) */
+            arena_release_to(arena, mark);
+            return RENDER_ERR_PRIM;
+        }
+        named[j] = 1;
+        uint32_t maps = g[sp->cluster].maps_of;
+        for (uint32_t k = 0; k < 3; k++) {
+            const vec3_t *n = &s->normals[j].n[k];
+            uint32_t *e = &cache[2 * prep_normal_hash(n, maps)];
+            if (e[0] != 0) {
+                uint32_t code = e[0] - 1;
+                if (e[1] == maps && __builtin_memcmp(&s->normals[code >> 2].n[code & 3], n, sizeof *n) == 0) {
+                    src[3 * j + k] = code;
+                    continue;
+                }
+            }
+            e[0] = (j << 2 | k) + 1;
+            e[1] = maps;
+        }
+    }
+    arena_release_to(arena, mark);
+    out->groups = g;
+    out->child_list = child;
+    out->prim_list = plist;
+    out->normal_src = src;
+    return RENDER_OK;
 }
 
 /* Keep in step with the allocations of render_prepare below: every array
  * plus the worst alignment padding of each (64 bytes is the most the
  * arena pads). */
-size_t render_prepare_bytes_layout(const scene_t *s, const render_layout_t *lay)
+size_t render_prepare_frame_bytes_layout(const scene_t *s, const render_layout_t *lay)
 {
     size_t prims = s->prim_count ? s->prim_count : 1;
     size_t comps = s->density_component_count ? s->density_component_count : 1;
     size_t normals = s->normals_count ? s->normals_count : 1;
-    size_t n = lay->frame + lay->frame_cluster * (size_t)s->cluster_count +
-               sizeof(uint32_t) * (size_t)s->cluster_count + lay->frame_prim * prims +
-               sizeof(uint32_t) * prims + lay->num * comps + lay->normals * normals;
-    size_t scratch = (2 * lay->xform + 1 + sizeof(uint32_t)) * (size_t)s->cluster_count;
-    return n + scratch + 14 * ARENA_MAX_ALIGN; /* 11 allocations, each padded at most that */
+    size_t n = lay->frame + lay->frame_cluster * (size_t)s->cluster_count + lay->frame_prim * prims +
+               lay->num * comps + lay->normals * normals;
+    size_t scratch = 2 * lay->xform * (size_t)s->cluster_count;
+    return n + scratch + 7 * ARENA_MAX_ALIGN; /* 7 allocations, each padded at most that */
+}
+
+size_t render_prepare_bytes_layout(const scene_t *s, const render_layout_t *lay)
+{
+    /* a scene without its index: render_prepare works it out into the frame's arena */
+    return render_prepare_frame_bytes_layout(s, lay) +
+           (s->index.groups ? 0 : render_scene_index_bytes(s));
 }
 
 size_t render_prepare_bytes(const scene_t *s)
@@ -551,15 +699,22 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     if (!f)
         return RENDER_ERR_ARENA;
     f->clusters = ARENA_NEW_ARRAY(arena, render_cluster_t, s->cluster_count);
-    f->child_list = ARENA_NEW_ARRAY(arena, uint32_t, s->cluster_count);
     f->prims = ARENA_NEW_ARRAY(arena, render_prim_t, s->prim_count ? s->prim_count : 1);
-    f->prim_list = ARENA_NEW_ARRAY(arena, uint32_t, s->prim_count ? s->prim_count : 1);
     uint32_t ncomp = s->density_component_count;
     f->density_inv_radius2 = ARENA_NEW_ARRAY(arena, num_t, ncomp ? ncomp : 1);
     f->normals = ARENA_NEW_ARRAY(arena, scene_normals_t, s->normals_count ? s->normals_count : 1);
-    if (!f->clusters || !f->child_list || !f->prims || !f->prim_list || !f->density_inv_radius2 ||
-        !f->normals)
+    if (!f->clusters || !f->prims || !f->density_inv_radius2 || !f->normals)
         return RENDER_ERR_ARENA;
+    /* the scene's static structure: the loader's, or worked out here (a
+     * scene built by hand) into the frame's arena */
+    scene_index_t ix = s->index;
+    if (!ix.groups) {
+        st = render_scene_index(s, arena, &ix);
+        if (st != RENDER_OK)
+            return st;
+    }
+    f->child_list = ix.child_list;
+    f->prim_list = ix.prim_list;
     /* (1/d)/d rather than 1/(d*d): d*d of a small radius would keep few
      * significant bits in fixed point */
     for (uint32_t k = 0; k < ncomp; k++) {
@@ -585,11 +740,7 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     size_t mark = arena->used;
     xform_t *to_eye = ARENA_NEW_ARRAY(arena, xform_t, s->cluster_count);
     xform_t *from_eye = ARENA_NEW_ARRAY(arena, xform_t, s->cluster_count);
-    uint8_t *depth = ARENA_NEW_ARRAY(arena, uint8_t, s->cluster_count);
-    /* the cluster whose maps cluster i uses: itself, or for a plain
-     * cluster its parent's (the DM copies no maps for those) */
-    uint32_t *maps_of = ARENA_NEW_ARRAY(arena, uint32_t, s->cluster_count);
-    if (!to_eye || !from_eye || !depth || !maps_of)
+    if (!to_eye || !from_eye)
         return RENDER_ERR_ARENA;
 
     xform_t world_to_eye, eye_to_world;
@@ -598,18 +749,12 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
         return st;
     if (xform_is_sat(&world_to_eye) || xform_is_sat(&eye_to_world))
         f->precision_lost = 1;
+    /* the maps of every cluster that has its own; a plain cluster's
+     * primitives use its ancestor's (ix.groups[].maps_of) */
     for (uint32_t i = 0; i < s->cluster_count; i++) {
-        const scene_cluster_t *c = &s->clusters[i];
-        if (i > 0 && prep_is_plain(c)) { /* e.g. a node of the automatic
-                                            hierarchy: exactly its parent's
-                                            maps, so its primitives come out
-                                            bit for bit as in the parent */
-            depth[i] = (uint8_t)(depth[c->parent] + 1);
-            if (depth[i] > RENDER_MAX_CLUSTER_DEPTH)
-                return RENDER_ERR_CLUSTER;
-            maps_of[i] = maps_of[c->parent]; /* no copy of the two maps */
+        if (ix.groups[i].maps_of != i)
             continue;
-        }
+        const scene_cluster_t *c = &s->clusters[i];
         xform_t key = prep_key_xform(s, c, frame_index);
         xform_t key_inv, local_inv;
         st = precision_invert(&key, &key_inv);
@@ -619,12 +764,9 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
             return st;
         xform_t to_parent = xform_compose(&key, &c->local);
         xform_t from_parent = xform_compose(&local_inv, &key_inv);
-        const xform_t *parent_to_eye = i == 0 ? &world_to_eye : &to_eye[maps_of[c->parent]];
-        const xform_t *eye_to_parent = i == 0 ? &eye_to_world : &from_eye[maps_of[c->parent]];
-        maps_of[i] = i;
-        depth[i] = i == 0 ? 0 : (uint8_t)(depth[c->parent] + 1);
-        if (depth[i] > RENDER_MAX_CLUSTER_DEPTH)
-            return RENDER_ERR_CLUSTER;
+        uint32_t pm = i == 0 ? 0 : ix.groups[c->parent].maps_of;
+        const xform_t *parent_to_eye = i == 0 ? &world_to_eye : &to_eye[pm];
+        const xform_t *eye_to_parent = i == 0 ? &eye_to_world : &from_eye[pm];
         to_eye[i] = xform_compose(parent_to_eye, &to_parent);
         from_eye[i] = xform_compose(&from_parent, eye_to_parent);
         if (xform_is_sat(&to_eye[i]) || xform_is_sat(&from_eye[i]))
@@ -634,8 +776,8 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     num_t pad = scene_tolerance(s, NUM_C(RENDER_BOUNDS_PAD_VALUE));
     for (uint32_t i = 0; i < s->prim_count; i++) {
         const scene_prim_t *sp = &s->prims[i];
-        uint32_t m = maps_of[sp->cluster];
-        prep_prim(sp, i, f, &to_eye[m], &from_eye[m], pad, &f->prims[i]);
+        uint32_t m = ix.groups[sp->cluster].maps_of;
+        prep_prim(sp, i, f, &to_eye[m], &from_eye[m], pad, ix.normal_src, &f->prims[i]);
         /* the error of the cluster's inverse map, for precision_check (a
          * triangle's vertices are mapped forward: none) */
         f->prims[i].hit_error = sp->kind == SCENE_PRIM_TRIANGLE ? NUM_ZERO :
@@ -646,17 +788,22 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     }
     arena_release_to(arena, mark);
 
-    prep_group_children(s, f);
-    prep_group_prims(s, f);
+    /* each cluster's lists (the index's) and the box of its own
+     * primitives, grown in rising primitive index as ever */
     for (uint32_t i = 0; i < s->cluster_count; i++) {
-        f->clusters[i].own_bounds = prep_aabb_empty();
-        f->clusters[i].bounds = prep_aabb_empty();
-    }
-    for (uint32_t i = 0; i < s->prim_count; i++)
-        prep_aabb_add_box(&f->clusters[s->prims[i].cluster].own_bounds, &f->prims[i].bounds);
-    for (uint32_t i = 0; i < s->cluster_count; i++) {
-        f->clusters[i].tree_x0 = f->clusters[i].tree_y0 = 1;
-        f->clusters[i].tree_x1 = f->clusters[i].tree_y1 = 0;
+        render_cluster_t *c = &f->clusters[i];
+        const scene_group_t *g = &ix.groups[i];
+        c->first_child = g->first_child;
+        c->child_count = g->child_count;
+        c->first_prim = g->first_prim;
+        c->prim_count = g->prim_count;
+        aabb_t own = prep_aabb_empty();
+        for (uint32_t k = 0; k < g->prim_count; k++)
+            prep_aabb_add_box(&own, &f->prims[ix.prim_list[g->first_prim + k]].bounds);
+        c->own_bounds = own;
+        c->bounds = prep_aabb_empty();
+        c->tree_x0 = c->tree_y0 = 1;
+        c->tree_x1 = c->tree_y1 = 0;
     }
     /* children have larger indices than parents: one backward pass */
     uint64_t covered = 0, rows = 0; /* pixels, rows under the clusters' own rectangles */
