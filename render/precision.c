@@ -242,22 +242,6 @@ static inline num_t precision_box_reach(const aabb_t *b)
     return r;
 }
 
-/* Records prim i in f->detail_* when size, at a place whose largest
- * |coordinate| is reach, is under RENDER_MIN_DETAIL_STEPS steps there
- * (fixed: one step anywhere; float, double: 2^-23, 2^-52 of reach).  A
- * saturated value is left to the precision flag.  Inline, as the box's
- * reach: the DM runs both for every primitive of every frame. */
-static inline void precision_detail_one(render_frame_t *f, uint32_t i, num_t size, num_t reach)
-{
-    num_t step = num_ulp(reach);
-    if (f->detail_prim != RENDER_NO_PRIM || num_is_sat(size) || num_is_sat(reach) ||
-        num_is_sat(step) || !num_lt(size, num_mul_int(step, RENDER_MIN_DETAIL_STEPS)))
-        return;
-    f->detail_prim = i;
-    f->detail_size = size;
-    f->detail_step = step;
-}
-
 /* Length in eye units of s cluster units along the cluster's axis j. */
 static num_t precision_axis_len(const xform_t *to_eye, int j, num_t s)
 {
@@ -270,8 +254,8 @@ void precision_detail(render_frame_t *f, uint32_t i, const xform_t *to_eye)
     const render_prim_t *p = &f->prims[i];
     num_t reach = precision_box_reach(&p->bounds);
     switch (sp->kind) {
-    case SCENE_PRIM_TRIANGLE: /* in eye units; in its own the loader refuses slivers */
-        precision_detail_one(f, i, num_min(num_abs(p->height1), num_abs(p->height2)), reach);
+    case SCENE_PRIM_TRIANGLE:
+        precision_detail_triangle(f, i);
         break;
     case SCENE_PRIM_ELLIPSOID:
     case SCENE_PRIM_BOX: {

@@ -321,7 +321,7 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
     case SCENE_PRIM_TRIANGLE: {
         vec3_t v[3];
         for (int k = 0; k < 3; k++) {
-            v[k] = xform_point(to_eye, sp->shape.triangle.v[k]);
+            v[k] = xform_point_inline(to_eye, sp->shape.triangle.v[k]);
             p->tex_u[k] = sp->shape.triangle.tex_u[k];
             p->tex_v[k] = sp->shape.triangle.tex_v[k];
         }
@@ -784,7 +784,10 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
             precision_map_error(&to_eye[m], &from_eye[m], &f->prims[i].bounds);
         if (vec3_is_sat(f->prims[i].bounds.lo) || vec3_is_sat(f->prims[i].bounds.hi))
             f->precision_lost = 1;
-        precision_detail(f, i, &to_eye[m]);
+        if (sp->kind == SCENE_PRIM_TRIANGLE)
+            precision_detail_triangle(f, i);
+        else
+            precision_detail(f, i, &to_eye[m]);
     }
     arena_release_to(arena, mark);
 
