@@ -310,7 +310,7 @@ static render_status_t prep_check(const scene_t *s)
  * grows its box (RENDER_BOUNDS_PAD_VALUE scaled to the scene: the caller
  * scales it once a frame, not once a primitive). */
 static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame_t *f, const xform_t *to_eye,
-                      const xform_t *from_eye, num_t pad, const uint32_t *normal_src, render_prim_t *p)
+                      const xform_t *from_eye, num_t pad, const scene_index_t *ix, render_prim_t *p)
 {
     num_t lin[3][3];
     p->kind = sp->kind;
@@ -345,7 +345,7 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
         if (sp->shape.triangle.smooth) {
             uint32_t j = sp->shape.triangle.smooth - 1;
             for (uint32_t k = 0; k < 3; k++) {
-                uint32_t src = normal_src[3 * j + k];
+                uint32_t src = ix->normal_src[3 * j + k];
                 f->normals[j].n[k] =
                     src == (j << 2 | k)
                         ? vec3_normalize(xform_dir_transposed(from_eye, f->scene->normals[j].n[k]))
@@ -534,19 +534,43 @@ static void prep_lights(const scene_t *s, const scene_light_t *lights, const xfo
 
 /* Vertex normals remembered while indexing: the last distinct one of each
  * hash, direct-mapped (a mesh's neighbours share vertices close together
- * in primitive order, so a small table finds nearly all of them). */
-#define PREP_NORMAL_CACHE 4096u
+ * in primitive order, so a small table finds nearly all of them).  An
+ * entry: the code (j << 2 | k) + 1 of the first one, 0 when empty, and
+ * its maps. */
+#define PREP_SHARE_CACHE 4096u
 
-static uint32_t prep_normal_hash(const vec3_t *n, uint32_t maps)
+static int prep_vec3_same(const vec3_t *a, const vec3_t *b)
 {
-    const uint8_t *b = (const uint8_t *)n;
-    uint32_t h = 2166136261u ^ maps;
-    for (size_t at = 0; at < sizeof *n; at += sizeof(uint32_t)) {
+    const uint8_t *x = (const uint8_t *)a, *y = (const uint8_t *)b;
+    for (size_t at = 0; at < sizeof *a; at += sizeof(uint32_t)) {
+        uint32_t u, w;
+        __builtin_memcpy(&u, x + at, sizeof u);
+        __builtin_memcpy(&w, y + at, sizeof w);
+        if (u != w)
+            return 0;
+    }
+    return 1;
+}
+
+/* The code of vertex normal v's first equal (bits and maps) met before,
+ * or code itself (remembered) when none: normal_src's entry. */
+static uint32_t prep_share(uint32_t *cache, const vec3_t *v, uint32_t tag, uint32_t code,
+                           const scene_t *s)
+{
+    const uint8_t *b = (const uint8_t *)v;
+    uint32_t h = 2166136261u ^ tag;
+    for (size_t i = 0; i < sizeof *v; i += sizeof(uint32_t)) {
         uint32_t w;
-        __builtin_memcpy(&w, b + at, sizeof w);
+        __builtin_memcpy(&w, b + i, sizeof w);
         h = (h ^ w) * 16777619u;
     }
-    return (h ^ (h >> 13)) & (PREP_NORMAL_CACHE - 1);
+    uint32_t *e = &cache[2 * ((h ^ (h >> 13)) & (PREP_SHARE_CACHE - 1))];
+    if (e[0] != 0 && e[1] == tag &&
+        prep_vec3_same(&s->normals[(e[0] - 1) >> 2].n[(e[0] - 1) & 3], v))
+        return e[0] - 1;
+    e[0] = code + 1;
+    e[1] = tag;
+    return code;
 }
 
 size_t render_scene_index_bytes(const scene_t *s)
@@ -555,7 +579,7 @@ size_t render_scene_index_bytes(const scene_t *s)
     size_t p = s->prim_count ? s->prim_count : 1;
     size_t n = s->normals_count ? s->normals_count : 1;
     return sizeof(scene_group_t) * c + sizeof(uint32_t) * (c + p + 3 * n) + /* kept */
-           c + n + 2 * sizeof(uint32_t) * PREP_NORMAL_CACHE +             /* scratch */
+           c + n + 2 * sizeof(uint32_t) * PREP_SHARE_CACHE +               /* scratch */
            7 * ARENA_MAX_ALIGN; /* 7 allocations, each padded at most that */
 }
 
@@ -577,7 +601,7 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
     size_t mark = arena->used; /* scratch from here, released below */
     uint8_t *depth = ARENA_NEW_ARRAY(arena, uint8_t, nc);
     uint8_t *named = ARENA_NEW_ARRAY(arena, uint8_t, nn ? nn : 1);
-    uint32_t *cache = ARENA_NEW_ARRAY(arena, uint32_t, 2 * PREP_NORMAL_CACHE);
+    uint32_t *cache = ARENA_NEW_ARRAY(arena, uint32_t, 2 * PREP_SHARE_CACHE);
     if (!depth || !named || !cache)
         return RENDER_ERR_ARENA;
     render_status_t st = RENDER_OK;
@@ -626,7 +650,8 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
         plist[c->first_prim + c->prim_count++] = i;
     }
     /* each vertex normal's first equal (bits and maps), in the order
-     * render_prepare maps them: rising primitive index */
+     * render_prepare maps them: rising primitive index.  (Vertices shared
+     * likewise cost more to copy than to map: measured, not kept.) */
     for (uint32_t j = 0; j < nn; j++)
         for (uint32_t k = 0; k < 3; k++)
             src[3 * j + k] = j << 2 | k;
@@ -634,26 +659,15 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
         const scene_prim_t *sp = &s->prims[i];
         if (sp->kind != SCENE_PRIM_TRIANGLE || !sp->shape.triangle.smooth)
             continue;
+        uint32_t maps = g[sp->cluster].maps_of;
         uint32_t j = sp->shape.triangle.smooth - 1;
         if (j >= nn || named[j]) { /* one record, one triangle (the loader's rule) */
             arena_release_to(arena, mark);
             return RENDER_ERR_PRIM;
         }
         named[j] = 1;
-        uint32_t maps = g[sp->cluster].maps_of;
-        for (uint32_t k = 0; k < 3; k++) {
-            const vec3_t *n = &s->normals[j].n[k];
-            uint32_t *e = &cache[2 * prep_normal_hash(n, maps)];
-            if (e[0] != 0) {
-                uint32_t code = e[0] - 1;
-                if (e[1] == maps && __builtin_memcmp(&s->normals[code >> 2].n[code & 3], n, sizeof *n) == 0) {
-                    src[3 * j + k] = code;
-                    continue;
-                }
-            }
-            e[0] = (j << 2 | k) + 1;
-            e[1] = maps;
-        }
+        for (uint32_t k = 0; k < 3; k++)
+            src[3 * j + k] = prep_share(cache, &s->normals[j].n[k], maps, j << 2 | k, s);
     }
     arena_release_to(arena, mark);
     out->groups = g;
@@ -777,7 +791,7 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     for (uint32_t i = 0; i < s->prim_count; i++) {
         const scene_prim_t *sp = &s->prims[i];
         uint32_t m = ix.groups[sp->cluster].maps_of;
-        prep_prim(sp, i, f, &to_eye[m], &from_eye[m], pad, ix.normal_src, &f->prims[i]);
+        prep_prim(sp, i, f, &to_eye[m], &from_eye[m], pad, &ix, &f->prims[i]);
         /* the error of the cluster's inverse map, for precision_check (a
          * triangle's vertices are mapped forward: none) */
         f->prims[i].hit_error = sp->kind == SCENE_PRIM_TRIANGLE ? NUM_ZERO :
