@@ -176,6 +176,13 @@ render_status_t precision_check(render_frame_t *f)
     if (num_is_sat(f->span) || num_is_sat(extent))
         f->precision_lost = 1;
     num_t lost_tol = PRECISION_LOST_TOL(f->scene), acne_tol = PRECISION_ACNE_TOL(f->scene);
+    /* A triangle's detail (precision_detail_triangle): the steps at its
+     * box's reach are at most those at the scene's extent, which holds
+     * every box, so a smaller height not under the latter is not under the
+     * former and needs no reach; but a box with a saturated value (the
+     * flag) may have left the extent short. */
+    int detail_fast = !f->precision_lost;
+    num_t detail_at_extent = num_mul_int(num_ulp(extent), RENDER_MIN_DETAIL_STEPS);
     for (uint32_t i = 0; i < f->prim_count; i++) {
         render_prim_t *p = &f->prims[i];
         if (p->kind == SCENE_PRIM_TRIANGLE) {
@@ -186,6 +193,9 @@ render_status_t precision_check(render_frame_t *f)
             p->hit_error = NUM_ZERO;
             p->imprecise = 0;
             p->scale = NUM_ZERO;
+            if (!detail_fast ||
+                !num_ge(num_min(num_abs(p->height1), num_abs(p->height2)), detail_at_extent))
+                precision_detail_triangle(f, i);
             precision_triangle_edge_error(p, extent);
             p->uv_error = precision_triangle_uv_error(p);
             p->curvature = precision_triangle_curvature(p);
@@ -256,7 +266,7 @@ void precision_detail(render_frame_t *f, uint32_t i, const xform_t *to_eye)
     switch (sp->kind) {
     case SCENE_PRIM_TRIANGLE:
         precision_detail_triangle(f, i);
-        break;
+        break; /* (render_prepare leaves it to precision_check) */
     case SCENE_PRIM_ELLIPSOID:
     case SCENE_PRIM_BOX: {
         vec3_t c, r;

@@ -35,18 +35,22 @@ render_status_t precision_check(render_frame_t *f);
  * map): records it in f->detail_* when its smallest size, in eye units or
  * in its cluster's, is under RENDER_MIN_DETAIL_STEPS steps of the
  * arithmetic where it lies; precision_check then returns
- * RENDER_ERR_DETAIL.  f->detail_prim starts as RENDER_NO_PRIM. */
+ * RENDER_ERR_DETAIL.  f->detail_prim starts as RENDER_NO_PRIM.  A
+ * triangle's is precision_check's (render_prepare calls this for the
+ * other kinds). */
 void precision_detail(render_frame_t *f, uint32_t i, const xform_t *to_eye);
 
 /* Records prim i in f->detail_* when size, at a place whose largest
  * |coordinate| is reach, is under RENDER_MIN_DETAIL_STEPS steps there
- * (fixed: one step anywhere; float, double: 2^-23, 2^-52 of reach).  A
- * saturated value is left to the precision flag.  Inline: the DM runs it
- * for every primitive of every frame. */
+ * (fixed: one step anywhere; float, double: 2^-23, 2^-52 of reach), and
+ * no primitive before it is recorded (triangles are checked after the
+ * others: the first in index order wins either way).  A saturated value
+ * is left to the precision flag.  Inline: the DM runs it for every
+ * primitive of every frame. */
 static inline void precision_detail_one(render_frame_t *f, uint32_t i, num_t size, num_t reach)
 {
     num_t step = num_ulp(reach);
-    if (f->detail_prim != RENDER_NO_PRIM || num_is_sat(size) || num_is_sat(reach) ||
+    if (f->detail_prim <= i || num_is_sat(size) || num_is_sat(reach) ||
         num_is_sat(step) || !num_lt(size, num_mul_int(step, RENDER_MIN_DETAIL_STEPS)))
         return;
     f->detail_prim = i;
@@ -54,8 +58,9 @@ static inline void precision_detail_one(render_frame_t *f, uint32_t i, num_t siz
     f->detail_step = step;
 }
 
-/* precision_detail of a triangle, inline (the DM's every triangle of
- * every frame): its smaller height, in eye units (in its own the loader
+/* precision_detail of a triangle (precision_check runs it for the few
+ * triangles whose smaller height is under the steps at the scene's
+ * extent): its smaller height, in eye units (in its own the loader
  * refuses slivers), where its box reaches.  A triangle's box has lo <= hi
  * (its vertices' least and largest, padded), so its largest |coordinate|
  * on an axis is max(-lo, hi): the value max(|lo|, |hi|) has, without the

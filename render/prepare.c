@@ -319,9 +319,13 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
     p->index = index;
     switch (sp->kind) {
     case SCENE_PRIM_TRIANGLE: {
+        /* the map in locals: stores to p below could alias it, and it would
+         * be loaded again for every vertex */
+        const xform_t m = *to_eye;
         vec3_t v[3];
+        for (int k = 0; k < 3; k++)
+            v[k] = xform_point_inline(&m, sp->shape.triangle.v[k]);
         for (int k = 0; k < 3; k++) {
-            v[k] = xform_point_inline(to_eye, sp->shape.triangle.v[k]);
             p->tex_u[k] = sp->shape.triangle.tex_u[k];
             p->tex_v[k] = sp->shape.triangle.tex_v[k];
         }
@@ -798,9 +802,7 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
             precision_map_error(&to_eye[m], &from_eye[m], &f->prims[i].bounds);
         if (vec3_is_sat(f->prims[i].bounds.lo) || vec3_is_sat(f->prims[i].bounds.hi))
             f->precision_lost = 1;
-        if (sp->kind == SCENE_PRIM_TRIANGLE)
-            precision_detail_triangle(f, i);
-        else
+        if (sp->kind != SCENE_PRIM_TRIANGLE) /* a triangle's: precision_check */
             precision_detail(f, i, &to_eye[m]);
     }
     arena_release_to(arena, mark);
