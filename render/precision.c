@@ -97,11 +97,12 @@ static num_t precision_hit_error(const render_prim_t *p, num_t extent, num_t *le
 /* A triangle's barycentrics beta, gamma: each a distance in the plane over
  * a height, the point off by a few steps of the arithmetic at the scene's
  * extent.  A sliver's error across its thin side is a large part of 1. */
-static void precision_triangle_edge_error(render_prim_t *p, num_t extent)
+/* point: 4 steps at the extent, num_mul_int(num_ulp(extent), 4); h1, h2:
+ * |height1|, |height2| */
+static void precision_triangle_edge_error(render_prim_t *p, num_t point, num_t h1, num_t h2)
 {
-    num_t point = num_mul_int(num_ulp(extent), 4);
-    p->edge_error[0] = num_div(point, num_abs(p->height1)); /* saturated: every */
-    p->edge_error[1] = num_div(point, num_abs(p->height2)); /* edge test counts */
+    p->edge_error[0] = num_div(point, h1); /* saturated: every */
+    p->edge_error[1] = num_div(point, h2); /* edge test counts */
 }
 
 /* A triangle's map coordinates: u = u0 + beta (u1 - u0) + gamma (u2 - u0). */
@@ -137,14 +138,15 @@ num_t precision_map_error(const xform_t *to_eye, const xform_t *from_eye, const 
 }
 
 /* A smooth triangle's normal, alpha n0 + beta n1 + gamma n2, turns by at
- * most |n1 - n0| / height1 + |n2 - n0| / height2 per unit moved. */
-static num_t precision_triangle_curvature(const render_prim_t *p)
+ * most |n1 - n0| / height1 + |n2 - n0| / height2 per unit moved (h1, h2:
+ * the heights' absolute values). */
+static num_t precision_triangle_curvature(const render_prim_t *p, num_t h1, num_t h2)
 {
     if (!p->normals)
         return NUM_ZERO;
     const vec3_t *n = p->normals->n;
-    num_t c = num_add(num_div(vec3_length(vec3_sub(n[1], n[0])), num_abs(p->height1)),
-                      num_div(vec3_length(vec3_sub(n[2], n[0])), num_abs(p->height2)));
+    num_t c = num_add(num_div(vec3_length(vec3_sub(n[1], n[0])), h1),
+                      num_div(vec3_length(vec3_sub(n[2], n[0])), h2));
     return num_is_sat(c) ? NUM_FAR : c;
 }
 
@@ -183,6 +185,7 @@ render_status_t precision_check(render_frame_t *f)
      * flag) may have left the extent short. */
     int detail_fast = !f->precision_lost;
     num_t detail_at_extent = num_mul_int(num_ulp(extent), RENDER_MIN_DETAIL_STEPS);
+    num_t point = num_mul_int(num_ulp(extent), 4);
     for (uint32_t i = 0; i < f->prim_count; i++) {
         render_prim_t *p = &f->prims[i];
         if (p->kind == SCENE_PRIM_TRIANGLE) {
@@ -193,12 +196,12 @@ render_status_t precision_check(render_frame_t *f)
             p->hit_error = NUM_ZERO;
             p->imprecise = 0;
             p->scale = NUM_ZERO;
-            if (!detail_fast ||
-                !num_ge(num_min(num_abs(p->height1), num_abs(p->height2)), detail_at_extent))
+            num_t h1 = num_abs(p->height1), h2 = num_abs(p->height2);
+            if (!detail_fast || !num_ge(num_min(h1, h2), detail_at_extent))
                 precision_detail_triangle(f, i);
-            precision_triangle_edge_error(p, extent);
+            precision_triangle_edge_error(p, point, h1, h2);
             p->uv_error = precision_triangle_uv_error(p);
-            p->curvature = precision_triangle_curvature(p);
+            p->curvature = precision_triangle_curvature(p, h1, h2);
             continue;
         }
         num_t least, local, rows[2], worst = precision_hit_error(p, extent, &least, &local, rows);

@@ -47,6 +47,13 @@ static inline aabb_t prep_aabb_empty(void)
 
 static int prep_aabb_is_empty(const aabb_t *b) { return num_gt(b->lo.x, b->hi.x); }
 
+/* b grown to hold o, both not empty */
+static inline void prep_aabb_grow(aabb_t *b, const aabb_t *o)
+{
+    b->lo = vec3_make(num_min(b->lo.x, o->lo.x), num_min(b->lo.y, o->lo.y), num_min(b->lo.z, o->lo.z));
+    b->hi = vec3_make(num_max(b->hi.x, o->hi.x), num_max(b->hi.y, o->hi.y), num_max(b->hi.z, o->hi.z));
+}
+
 /* inline: the DM grows boxes four times a triangle, every frame */
 static inline void prep_aabb_add_box(aabb_t *b, const aabb_t *o)
 {
@@ -56,8 +63,7 @@ static inline void prep_aabb_add_box(aabb_t *b, const aabb_t *o)
         *b = *o;
         return;
     }
-    b->lo = vec3_make(num_min(b->lo.x, o->lo.x), num_min(b->lo.y, o->lo.y), num_min(b->lo.z, o->lo.z));
-    b->hi = vec3_make(num_max(b->hi.x, o->hi.x), num_max(b->hi.y, o->hi.y), num_max(b->hi.z, o->hi.z));
+    prep_aabb_grow(b, o);
 }
 
 /* Box of centre c with half extents e, grown by the pad
@@ -319,12 +325,11 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
     p->index = index;
     switch (sp->kind) {
     case SCENE_PRIM_TRIANGLE: {
-        /* the map in locals: stores to p below could alias it, and it would
-         * be loaded again for every vertex */
-        const xform_t m = *to_eye;
+        /* the three vertices before any store to p, which could alias the
+         * map: it is loaded once, not once a vertex */
         vec3_t v[3];
         for (int k = 0; k < 3; k++)
-            v[k] = xform_point_inline(&m, sp->shape.triangle.v[k]);
+            v[k] = xform_point_inline(to_eye, sp->shape.triangle.v[k]);
         for (int k = 0; k < 3; k++) {
             p->tex_u[k] = sp->shape.triangle.tex_u[k];
             p->tex_v[k] = sp->shape.triangle.tex_v[k];
@@ -756,8 +761,10 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
 
     /* scratch: per-cluster maps, released before returning */
     size_t mark = arena->used;
-    xform_t *to_eye = ARENA_NEW_ARRAY(arena, xform_t, s->cluster_count);
-    xform_t *from_eye = ARENA_NEW_ARRAY(arena, xform_t, s->cluster_count);
+    /* not zero-filled: only the clusters with maps of their own are
+     * written, and only they are read (ix.groups[].maps_of) */
+    xform_t *to_eye = ARENA_NEW_ARRAY_RAW(arena, xform_t, s->cluster_count);
+    xform_t *from_eye = ARENA_NEW_ARRAY_RAW(arena, xform_t, s->cluster_count);
     if (!to_eye || !from_eye)
         return RENDER_ERR_ARENA;
 
@@ -816,10 +823,19 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
         c->child_count = g->child_count;
         c->first_prim = g->first_prim;
         c->prim_count = g->prim_count;
-        aabb_t own = prep_aabb_empty();
-        for (uint32_t k = 0; k < g->prim_count; k++)
-            prep_aabb_add_box(&own, &f->prims[ix.prim_list[g->first_prim + k]].bounds);
-        c->own_bounds = own;
+        c->own_bounds = prep_aabb_empty();
+        for (uint32_t k = 0, have = 0; k < g->prim_count; k++) {
+            /* prep_aabb_add_box without asking of own_bounds what have
+             * says: a box grown by one not empty is not empty */
+            const aabb_t *o = &f->prims[ix.prim_list[g->first_prim + k]].bounds;
+            if (prep_aabb_is_empty(o))
+                continue;
+            if (have)
+                prep_aabb_grow(&c->own_bounds, o);
+            else
+                c->own_bounds = *o;
+            have = 1;
+        }
         c->bounds = prep_aabb_empty();
         c->tree_x0 = c->tree_y0 = 1;
         c->tree_x1 = c->tree_y1 = 0;

@@ -36,9 +36,18 @@ static inline num_t vec3_length(vec3_t a) { return num_len3(a.x, a.y, a.z); }
 /* Unit vector along a; the zero vector stays zero. */
 static inline vec3_t vec3_normalize(vec3_t a)
 {
+#if defined(LINKS1_NUM_FIXED)
     num_t len = vec3_length(a);
     if (!num_gt(len, NUM_ZERO))
         return a;
+#else
+    /* the IEEE square root is above 0 exactly when its operand is: one
+     * test, not two (the DM normalises five vectors a triangle a frame) */
+    num_t sq = num_dot3(a.x, a.y, a.z, a.x, a.y, a.z);
+    if (!num_gt(sq, NUM_ZERO))
+        return a;
+    num_t len = num_sqrt(sq);
+#endif
     return vec3_make(num_div(a.x, len), num_div(a.y, len), num_div(a.z, len));
 }
 static inline int vec3_is_sat(vec3_t a) { return num_is_sat(a.x) || num_is_sat(a.y) || num_is_sat(a.z); }
