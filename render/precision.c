@@ -105,14 +105,12 @@ static void precision_triangle_edge_error(render_prim_t *p, num_t point, num_t h
     p->edge_error[1] = num_div(point, h2); /* edge test counts */
 }
 
-/* A triangle's map coordinates: u = u0 + beta (u1 - u0) + gamma (u2 - u0). */
-static num_t precision_triangle_uv_error(const render_prim_t *p)
+/* A triangle's map coordinates: u = u0 + beta (u1 - u0) + gamma (u2 - u0);
+ * spread: the sum over k = 1, 2 of max(|u_k - u_0|, |v_k - v_0|), the
+ * scene index's (render_scene_index: once a load). */
+static num_t precision_triangle_uv_error(const render_prim_t *p, num_t spread)
 {
     num_t bary = num_max(p->edge_error[0], p->edge_error[1]);
-    num_t spread = NUM_ZERO;
-    for (int k = 1; k < 3; k++)
-        spread = num_add(spread, num_max(num_abs(num_sub(p->tex_u[k], p->tex_u[0])),
-                                         num_abs(num_sub(p->tex_v[k], p->tex_v[0]))));
     num_t err = num_mul(bary, spread);
     return num_is_sat(err) || num_is_sat(bary) ? NUM_FAR : err;
 }
@@ -163,7 +161,7 @@ static num_t precision_density_curvature(const render_prim_t *p, num_t row_max)
     return num_is_sat(c) ? NUM_FAR : c;
 }
 
-render_status_t precision_check(render_frame_t *f)
+render_status_t precision_check(render_frame_t *f, const scene_index_t *ix)
 {
     f->span = NUM_ZERO;
     if (f->prim_count == 0)
@@ -200,7 +198,7 @@ render_status_t precision_check(render_frame_t *f)
             if (!detail_fast || !num_ge(num_min(h1, h2), detail_at_extent))
                 precision_detail_triangle(f, i);
             precision_triangle_edge_error(p, point, h1, h2);
-            p->uv_error = precision_triangle_uv_error(p);
+            p->uv_error = precision_triangle_uv_error(p, ix->uv_spread[i]);
             p->curvature = precision_triangle_curvature(p, h1, h2);
             continue;
         }

@@ -28,8 +28,9 @@ num_t precision_map_error(const xform_t *to_eye, const xform_t *from_eye, const 
 
 /* After the boxes are known: sets frame->span and every prim's imprecise
  * flag, hit, edge and uv errors, scale and curvature; RENDER_ERR_EXTENT
- * when the scene is too small. */
-render_status_t precision_check(render_frame_t *f);
+ * when the scene is too small.  ix: the scene's index (render_prepare's,
+ * the loader's or its own). */
+render_status_t precision_check(render_frame_t *f, const scene_index_t *ix);
 
 /* For prim i, once its eye-space bounds are known (to_eye: its cluster's
  * map): records it in f->detail_* when its smallest size, in eye units or

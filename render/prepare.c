@@ -47,6 +47,23 @@ static inline aabb_t prep_aabb_empty(void)
 
 static int prep_aabb_is_empty(const aabb_t *b) { return num_gt(b->lo.x, b->hi.x); }
 
+/* A coordinate of b saturated: vec3_is_sat of either corner.  In the
+ * IEEE builds a - a is 0 for a finite a and NaN otherwise, and a sum of
+ * them 0 unless one is NaN: one test, not six (every primitive of every
+ * frame). */
+static inline int prep_aabb_is_sat(const aabb_t *b)
+{
+#if defined(LINKS1_NUM_FIXED)
+    return vec3_is_sat(b->lo) || vec3_is_sat(b->hi);
+#else
+    num_t z = num_add(num_add(num_sub(b->lo.x, b->lo.x), num_sub(b->lo.y, b->lo.y)),
+                      num_sub(b->lo.z, b->lo.z));
+    z = num_add(num_add(num_add(z, num_sub(b->hi.x, b->hi.x)), num_sub(b->hi.y, b->hi.y)),
+                num_sub(b->hi.z, b->hi.z));
+    return num_is_sat(z);
+#endif
+}
+
 /* b grown to hold o, both not empty */
 static inline void prep_aabb_grow(aabb_t *b, const aabb_t *o)
 {
@@ -255,6 +272,9 @@ static int prep_is_plain(const scene_cluster_t *c)
     return 1;
 }
 
+/* What render_prepare checks every frame; the clusters and primitives,
+ * which do not change from frame to frame, are prep_check_tree's, once
+ * with the index (render_scene_index). */
 static render_status_t prep_check(const scene_t *s)
 {
     if (s->width < 1 || s->width > RENDER_MAX_WIDTH || s->height < 1 || s->height > RENDER_MAX_HEIGHT)
@@ -268,13 +288,6 @@ static render_status_t prep_check(const scene_t *s)
         return RENDER_ERR_DENSITY;
     if (s->cluster_count < 1 || s->clusters[0].parent != SCENE_NO_CLUSTER)
         return RENDER_ERR_CLUSTER;
-    for (uint32_t i = 0; i < s->cluster_count; i++) {
-        const scene_cluster_t *c = &s->clusters[i];
-        if (i > 0 && c->parent >= i)
-            return RENDER_ERR_CLUSTER;
-        if ((uint64_t)c->first_key + c->key_count > s->key_count)
-            return RENDER_ERR_KEY;
-    }
     for (uint32_t i = 0; i < s->material_count; i++) {
         const scene_material_t *m = &s->materials[i];
         uint16_t maps[7] = {m->colour_map, m->bump_map, m->normal_map, m->dic_map,
@@ -295,6 +308,22 @@ static render_status_t prep_check(const scene_t *s)
                 map->height > RENDER_MAX_MAP_SIZE)
                 return RENDER_ERR_MAP;
         }
+    }
+    return RENDER_OK;
+}
+
+/* The cluster tree and the primitives as render_prepare needs them:
+ * render_scene_index checks them once, with the index it builds. */
+static render_status_t prep_check_tree(const scene_t *s)
+{
+    if (s->cluster_count < 1 || s->clusters[0].parent != SCENE_NO_CLUSTER)
+        return RENDER_ERR_CLUSTER;
+    for (uint32_t i = 0; i < s->cluster_count; i++) {
+        const scene_cluster_t *c = &s->clusters[i];
+        if (i > 0 && c->parent >= i)
+            return RENDER_ERR_CLUSTER;
+        if ((uint64_t)c->first_key + c->key_count > s->key_count)
+            return RENDER_ERR_KEY;
     }
     for (uint32_t i = 0; i < s->prim_count; i++) {
         const scene_prim_t *p = &s->prims[i];
@@ -582,22 +611,28 @@ static uint32_t prep_share(uint32_t *cache, const vec3_t *v, uint32_t tag, uint3
     return code;
 }
 
-size_t render_scene_index_bytes(const scene_t *s)
+size_t render_scene_index_bytes_layout(const scene_t *s, const render_layout_t *lay)
 {
     size_t c = s->cluster_count ? s->cluster_count : 1;
     size_t p = s->prim_count ? s->prim_count : 1;
     size_t n = s->normals_count ? s->normals_count : 1;
-    return sizeof(scene_group_t) * c + sizeof(uint32_t) * (c + p + 3 * n) + /* kept */
-           c + n + 2 * sizeof(uint32_t) * PREP_SHARE_CACHE +               /* scratch */
-           7 * ARENA_MAX_ALIGN; /* 7 allocations, each padded at most that */
+    return sizeof(scene_group_t) * c + sizeof(uint32_t) * (c + p + 3 * n) + lay->num * p + /* kept */
+           c + n + 2 * sizeof(uint32_t) * PREP_SHARE_CACHE + /* scratch */
+           8 * ARENA_MAX_ALIGN; /* 8 allocations, each padded at most that */
+}
+
+size_t render_scene_index_bytes(const scene_t *s)
+{
+    return render_scene_index_bytes_layout(s, &render_layout_native);
 }
 
 render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index_t *out)
 {
     __builtin_memset(out, 0, sizeof *out);
     uint32_t nc = s->cluster_count, np = s->prim_count, nn = s->normals_count;
-    if (nc < 1 || s->clusters[0].parent != SCENE_NO_CLUSTER)
-        return RENDER_ERR_CLUSTER;
+    render_status_t st = prep_check_tree(s);
+    if (st != RENDER_OK)
+        return st;
     if (nn >= (1u << 29)) /* (j << 2 | k) must fit: 18 GB of normals, more
                              than any arena holds */
         return RENDER_ERR_ARENA;
@@ -605,7 +640,8 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
     uint32_t *child = ARENA_NEW_ARRAY(arena, uint32_t, nc);
     uint32_t *plist = ARENA_NEW_ARRAY(arena, uint32_t, np ? np : 1);
     uint32_t *src = ARENA_NEW_ARRAY(arena, uint32_t, nn ? 3 * (size_t)nn : 1);
-    if (!g || !child || !plist || !src)
+    num_t *spread = ARENA_NEW_ARRAY(arena, num_t, np ? np : 1);
+    if (!g || !child || !plist || !src || !spread)
         return RENDER_ERR_ARENA;
     size_t mark = arena->used; /* scratch from here, released below */
     uint8_t *depth = ARENA_NEW_ARRAY(arena, uint8_t, nc);
@@ -613,7 +649,6 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
     uint32_t *cache = ARENA_NEW_ARRAY(arena, uint32_t, 2 * PREP_SHARE_CACHE);
     if (!depth || !named || !cache)
         return RENDER_ERR_ARENA;
-    render_status_t st = RENDER_OK;
     for (uint32_t i = 0; i < nc && st == RENDER_OK; i++) {
         const scene_cluster_t *c = &s->clusters[i];
         if (i > 0 && c->parent >= i) {
@@ -666,7 +701,13 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
             src[3 * j + k] = j << 2 | k;
     for (uint32_t i = 0; i < np; i++) {
         const scene_prim_t *sp = &s->prims[i];
-        if (sp->kind != SCENE_PRIM_TRIANGLE || !sp->shape.triangle.smooth)
+        if (sp->kind != SCENE_PRIM_TRIANGLE)
+            continue;
+        const num_t *u = sp->shape.triangle.tex_u, *v = sp->shape.triangle.tex_v;
+        for (int k = 1; k < 3; k++)
+            spread[i] = num_add(spread[i], num_max(num_abs(num_sub(u[k], u[0])),
+                                                   num_abs(num_sub(v[k], v[0]))));
+        if (!sp->shape.triangle.smooth)
             continue;
         uint32_t maps = g[sp->cluster].maps_of;
         uint32_t j = sp->shape.triangle.smooth - 1;
@@ -683,6 +724,7 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
     out->child_list = child;
     out->prim_list = plist;
     out->normal_src = src;
+    out->uv_spread = spread;
     return RENDER_OK;
 }
 
@@ -704,7 +746,7 @@ size_t render_prepare_bytes_layout(const scene_t *s, const render_layout_t *lay)
 {
     /* a scene without its index: render_prepare works it out into the frame's arena */
     return render_prepare_frame_bytes_layout(s, lay) +
-           (s->index.groups ? 0 : render_scene_index_bytes(s));
+           (s->index.groups ? 0 : render_scene_index_bytes_layout(s, lay));
 }
 
 size_t render_prepare_bytes(const scene_t *s)
@@ -804,10 +846,11 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
         uint32_t m = ix.groups[sp->cluster].maps_of;
         prep_prim(sp, i, f, &to_eye[m], &from_eye[m], pad, &ix, &f->prims[i]);
         /* the error of the cluster's inverse map, for precision_check (a
-         * triangle's vertices are mapped forward: none) */
-        f->prims[i].hit_error = sp->kind == SCENE_PRIM_TRIANGLE ? NUM_ZERO :
-            precision_map_error(&to_eye[m], &from_eye[m], &f->prims[i].bounds);
-        if (vec3_is_sat(f->prims[i].bounds.lo) || vec3_is_sat(f->prims[i].bounds.hi))
+         * triangle's vertices are mapped forward: none, and precision_check
+         * sets its 0) */
+        if (sp->kind != SCENE_PRIM_TRIANGLE)
+            f->prims[i].hit_error = precision_map_error(&to_eye[m], &from_eye[m], &f->prims[i].bounds);
+        if (prep_aabb_is_sat(&f->prims[i].bounds))
             f->precision_lost = 1;
         if (sp->kind != SCENE_PRIM_TRIANGLE) /* a triangle's: precision_check */
             precision_detail(f, i, &to_eye[m]);
@@ -867,5 +910,5 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     f->clip_rows = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
     prep_lights(s, lights, &world_to_eye, f);
     *out = f;
-    return precision_check(f);
+    return precision_check(f, &ix);
 }

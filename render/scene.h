@@ -196,6 +196,10 @@ typedef struct {
                                     same bits and cluster maps, (j << 2 | k)
                                     when it is the first: the frame maps
                                     each distinct one once and copies it */
+    const num_t *uv_spread;      /* reloc; prim_count: a triangle's spread of
+                                    map coordinates, the sum over k = 1, 2
+                                    of max(|u_k - u_0|, |v_k - v_0|)
+                                    (precision_check); 0 for other kinds */
 } scene_index_t;
 
 enum scene_prim_kind {

@@ -1108,7 +1108,7 @@ size_t scene_load_bytes_layout(const scene_t *shape, uint32_t texel_bytes,
            LOAD_BYTES(lay->normals, shape->normals_count) +
            LOAD_BYTES(lay->view_key, shape->view_key_count) +
            LOAD_BYTES(1, shape->cluster_count) + LOAD_BYTES(8, shape->cluster_count) +
-           13 * ARENA_MAX_ALIGN + render_scene_index_bytes(shape);
+           13 * ARENA_MAX_ALIGN + render_scene_index_bytes_layout(shape, lay);
 #undef LOAD_BYTES
 }
 
