@@ -2,9 +2,12 @@
  *
  * For one frame: evaluate each cluster's keys, compose transforms down the
  * tree, map every primitive and light to eye coordinates, compute each
- * cluster's bounding box and screen rectangle, and group children and
- * primitives by cluster.  Inverse maps are composed from the inverses of
- * each level (rather than inverting the composed map) to keep precision.
+ * cluster's bounding box and screen rectangle.  Inverse maps are composed
+ * from the inverses of each level (rather than inverting the composed map)
+ * to keep precision.  What does not change from frame to frame (children
+ * and primitives grouped by cluster, which clusters have maps of their
+ * own, which vertex normals are equal, the static checks) is the scene
+ * index's, worked out once a load (render_scene_index).
  */
 #include "proto/scene_format.h"
 #include "render/precision.h"
