@@ -12,7 +12,7 @@ void arena_init(arena_t *a, void *memory, size_t size)
     a->failed_request = 0;
 }
 
-void *arena_alloc(arena_t *a, size_t size, size_t align)
+void *arena_alloc_raw(arena_t *a, size_t size, size_t align)
 {
     if (align == 0 || (align & (align - 1)) != 0 || align > ARENA_MAX_ALIGN)
         align = ARENA_MAX_ALIGN; /* a bad alignment request still gets a safe one */
@@ -33,7 +33,14 @@ void *arena_alloc(arena_t *a, size_t size, size_t align)
     a->used += pad + size;
     if (a->used > a->high_water)
         a->high_water = a->used;
-    words_zero(p, size); /* a frame's arrays grow with the scene: not byte by byte */
+    return p;
+}
+
+void *arena_alloc(arena_t *a, size_t size, size_t align)
+{
+    void *p = arena_alloc_raw(a, size, align);
+    if (p)
+        words_zero(p, size); /* a frame's arrays grow with the scene: not byte by byte */
     return p;
 }
 

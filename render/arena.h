@@ -27,10 +27,15 @@ void arena_init(arena_t *a, void *memory, size_t size);
 /* size bytes aligned to align (a power of two, <= ARENA_MAX_ALIGN); zero-filled.
  * NULL when the arena is exhausted (and failed_request is set). */
 void *arena_alloc(arena_t *a, size_t size, size_t align);
+/* The same, not zero-filled: scratch whose every element the caller
+ * writes before reading it. */
+void *arena_alloc_raw(arena_t *a, size_t size, size_t align);
 /* Forget every allocation made after mark = a->used was taken. */
 void arena_release_to(arena_t *a, size_t mark);
 void arena_reset(arena_t *a);
 
 #define ARENA_NEW_ARRAY(a, type, n) ((type *)arena_alloc((a), sizeof(type) * (size_t)(n), _Alignof(type)))
+#define ARENA_NEW_ARRAY_RAW(a, type, n) \
+    ((type *)arena_alloc_raw((a), sizeof(type) * (size_t)(n), _Alignof(type)))
 
 #endif

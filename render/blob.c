@@ -63,7 +63,7 @@ static render_blob_status_t blob_bound(const uint8_t *compiled, size_t len,
     /* the header first (alignment of the block start: none), then the
      * loader's arrays, then the frame with its scratch */
     *bytes = layout->blob + scene_load_bytes_layout(&shape, texel_bytes, layout) +
-             render_prepare_bytes_layout(&shape, layout);
+             render_prepare_frame_bytes_layout(&shape, layout);
     return RENDER_BLOB_OK;
 }
 

@@ -50,3 +50,9 @@ $(foreach a,float fixed,$(eval test_wide_$(a)_SRCS = tests/host/test_wide.c $$(S
 $(foreach a,float fixed,$(eval test_wide_$(a)_ARITH := $(a)))
 $(foreach a,float fixed,$(eval test_wide_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
 $(foreach a,float fixed,$(eval test_wide_$(a)_WIDE := 1))
+
+# The scene's static structure once a load (render_scene_index), each arithmetic.
+HOST_TESTS += test_scene_index_double test_scene_index_float test_scene_index_fixed
+$(foreach a,double float fixed,$(eval test_scene_index_$(a)_SRCS = tests/host/test_scene_index.c $$(SCENE_TEXT_SRCS)))
+$(foreach a,double float fixed,$(eval test_scene_index_$(a)_ARITH := $(a)))
+$(foreach a,double float fixed,$(eval test_scene_index_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))

@@ -97,21 +97,20 @@ static num_t precision_hit_error(const render_prim_t *p, num_t extent, num_t *le
 /* A triangle's barycentrics beta, gamma: each a distance in the plane over
  * a height, the point off by a few steps of the arithmetic at the scene's
  * extent.  A sliver's error across its thin side is a large part of 1. */
-static void precision_triangle_edge_error(render_prim_t *p, num_t extent)
+/* point: 4 steps at the extent, num_mul_int(num_ulp(extent), 4); h1, h2:
+ * |height1|, |height2| */
+static void precision_triangle_edge_error(render_prim_t *p, num_t point, num_t h1, num_t h2)
 {
-    num_t point = num_mul_int(num_ulp(extent), 4);
-    p->edge_error[0] = num_div(point, num_abs(p->height1)); /* saturated: every */
-    p->edge_error[1] = num_div(point, num_abs(p->height2)); /* edge test counts */
+    p->edge_error[0] = num_div(point, h1); /* saturated: every */
+    p->edge_error[1] = num_div(point, h2); /* edge test counts */
 }
 
-/* A triangle's map coordinates: u = u0 + beta (u1 - u0) + gamma (u2 - u0). */
-static num_t precision_triangle_uv_error(const render_prim_t *p)
+/* A triangle's map coordinates: u = u0 + beta (u1 - u0) + gamma (u2 - u0);
+ * spread: the sum over k = 1, 2 of max(|u_k - u_0|, |v_k - v_0|), the
+ * scene index's (render_scene_index: once a load). */
+static num_t precision_triangle_uv_error(const render_prim_t *p, num_t spread)
 {
     num_t bary = num_max(p->edge_error[0], p->edge_error[1]);
-    num_t spread = NUM_ZERO;
-    for (int k = 1; k < 3; k++)
-        spread = num_add(spread, num_max(num_abs(num_sub(p->tex_u[k], p->tex_u[0])),
-                                         num_abs(num_sub(p->tex_v[k], p->tex_v[0]))));
     num_t err = num_mul(bary, spread);
     return num_is_sat(err) || num_is_sat(bary) ? NUM_FAR : err;
 }
@@ -137,14 +136,15 @@ num_t precision_map_error(const xform_t *to_eye, const xform_t *from_eye, const 
 }
 
 /* A smooth triangle's normal, alpha n0 + beta n1 + gamma n2, turns by at
- * most |n1 - n0| / height1 + |n2 - n0| / height2 per unit moved. */
-static num_t precision_triangle_curvature(const render_prim_t *p)
+ * most |n1 - n0| / height1 + |n2 - n0| / height2 per unit moved (h1, h2:
+ * the heights' absolute values). */
+static num_t precision_triangle_curvature(const render_prim_t *p, num_t h1, num_t h2)
 {
     if (!p->normals)
         return NUM_ZERO;
     const vec3_t *n = p->normals->n;
-    num_t c = num_add(num_div(vec3_length(vec3_sub(n[1], n[0])), num_abs(p->height1)),
-                      num_div(vec3_length(vec3_sub(n[2], n[0])), num_abs(p->height2)));
+    num_t c = num_add(num_div(vec3_length(vec3_sub(n[1], n[0])), h1),
+                      num_div(vec3_length(vec3_sub(n[2], n[0])), h2));
     return num_is_sat(c) ? NUM_FAR : c;
 }
 
@@ -161,7 +161,7 @@ static num_t precision_density_curvature(const render_prim_t *p, num_t row_max)
     return num_is_sat(c) ? NUM_FAR : c;
 }
 
-render_status_t precision_check(render_frame_t *f)
+render_status_t precision_check(render_frame_t *f, const scene_index_t *ix)
 {
     f->span = NUM_ZERO;
     if (f->prim_count == 0)
@@ -176,6 +176,14 @@ render_status_t precision_check(render_frame_t *f)
     if (num_is_sat(f->span) || num_is_sat(extent))
         f->precision_lost = 1;
     num_t lost_tol = PRECISION_LOST_TOL(f->scene), acne_tol = PRECISION_ACNE_TOL(f->scene);
+    /* A triangle's detail (precision_detail_triangle): the steps at its
+     * box's reach are at most those at the scene's extent, which holds
+     * every box, so a smaller height not under the latter is not under the
+     * former and needs no reach; but a box with a saturated value (the
+     * flag) may have left the extent short. */
+    int detail_fast = !f->precision_lost;
+    num_t detail_at_extent = num_mul_int(num_ulp(extent), RENDER_MIN_DETAIL_STEPS);
+    num_t point = num_mul_int(num_ulp(extent), 4);
     for (uint32_t i = 0; i < f->prim_count; i++) {
         render_prim_t *p = &f->prims[i];
         if (p->kind == SCENE_PRIM_TRIANGLE) {
@@ -186,9 +194,12 @@ render_status_t precision_check(render_frame_t *f)
             p->hit_error = NUM_ZERO;
             p->imprecise = 0;
             p->scale = NUM_ZERO;
-            precision_triangle_edge_error(p, extent);
-            p->uv_error = precision_triangle_uv_error(p);
-            p->curvature = precision_triangle_curvature(p);
+            num_t h1 = num_abs(p->height1), h2 = num_abs(p->height2);
+            if (!detail_fast || !num_ge(num_min(h1, h2), detail_at_extent))
+                precision_detail_triangle(f, i);
+            precision_triangle_edge_error(p, point, h1, h2);
+            p->uv_error = precision_triangle_uv_error(p, ix->uv_spread[i]);
+            p->curvature = precision_triangle_curvature(p, h1, h2);
             continue;
         }
         num_t least, local, rows[2], worst = precision_hit_error(p, extent, &least, &local, rows);
@@ -242,22 +253,6 @@ static inline num_t precision_box_reach(const aabb_t *b)
     return r;
 }
 
-/* Records prim i in f->detail_* when size, at a place whose largest
- * |coordinate| is reach, is under RENDER_MIN_DETAIL_STEPS steps there
- * (fixed: one step anywhere; float, double: 2^-23, 2^-52 of reach).  A
- * saturated value is left to the precision flag.  Inline, as the box's
- * reach: the DM runs both for every primitive of every frame. */
-static inline void precision_detail_one(render_frame_t *f, uint32_t i, num_t size, num_t reach)
-{
-    num_t step = num_ulp(reach);
-    if (f->detail_prim != RENDER_NO_PRIM || num_is_sat(size) || num_is_sat(reach) ||
-        num_is_sat(step) || !num_lt(size, num_mul_int(step, RENDER_MIN_DETAIL_STEPS)))
-        return;
-    f->detail_prim = i;
-    f->detail_size = size;
-    f->detail_step = step;
-}
-
 /* Length in eye units of s cluster units along the cluster's axis j. */
 static num_t precision_axis_len(const xform_t *to_eye, int j, num_t s)
 {
@@ -270,9 +265,9 @@ void precision_detail(render_frame_t *f, uint32_t i, const xform_t *to_eye)
     const render_prim_t *p = &f->prims[i];
     num_t reach = precision_box_reach(&p->bounds);
     switch (sp->kind) {
-    case SCENE_PRIM_TRIANGLE: /* in eye units; in its own the loader refuses slivers */
-        precision_detail_one(f, i, num_min(num_abs(p->height1), num_abs(p->height2)), reach);
-        break;
+    case SCENE_PRIM_TRIANGLE:
+        precision_detail_triangle(f, i);
+        break; /* (render_prepare leaves it to precision_check) */
     case SCENE_PRIM_ELLIPSOID:
     case SCENE_PRIM_BOX: {
         vec3_t c, r;

@@ -14,6 +14,7 @@
 #define LINKS1_RENDER_PRECISION_H
 
 #include "render/render.h"
+#include "render/vec3.h"
 
 render_status_t precision_invert(const xform_t *m, xform_t *inv);
 
@@ -27,15 +28,55 @@ num_t precision_map_error(const xform_t *to_eye, const xform_t *from_eye, const 
 
 /* After the boxes are known: sets frame->span and every prim's imprecise
  * flag, hit, edge and uv errors, scale and curvature; RENDER_ERR_EXTENT
- * when the scene is too small. */
-render_status_t precision_check(render_frame_t *f);
+ * when the scene is too small.  ix: the scene's index (render_prepare's,
+ * the loader's or its own). */
+render_status_t precision_check(render_frame_t *f, const scene_index_t *ix);
 
 /* For prim i, once its eye-space bounds are known (to_eye: its cluster's
  * map): records it in f->detail_* when its smallest size, in eye units or
  * in its cluster's, is under RENDER_MIN_DETAIL_STEPS steps of the
  * arithmetic where it lies; precision_check then returns
- * RENDER_ERR_DETAIL.  f->detail_prim starts as RENDER_NO_PRIM. */
+ * RENDER_ERR_DETAIL.  f->detail_prim starts as RENDER_NO_PRIM.  A
+ * triangle's is precision_check's (render_prepare calls this for the
+ * other kinds). */
 void precision_detail(render_frame_t *f, uint32_t i, const xform_t *to_eye);
+
+/* Records prim i in f->detail_* when size, at a place whose largest
+ * |coordinate| is reach, is under RENDER_MIN_DETAIL_STEPS steps there
+ * (fixed: one step anywhere; float, double: 2^-23, 2^-52 of reach), and
+ * no primitive before it is recorded (triangles are checked after the
+ * others: the first in index order wins either way).  A saturated value
+ * is left to the precision flag.  Inline: the DM runs it for every
+ * primitive of every frame. */
+static inline void precision_detail_one(render_frame_t *f, uint32_t i, num_t size, num_t reach)
+{
+    num_t step = num_ulp(reach);
+    if (f->detail_prim <= i || num_is_sat(size) || num_is_sat(reach) ||
+        num_is_sat(step) || !num_lt(size, num_mul_int(step, RENDER_MIN_DETAIL_STEPS)))
+        return;
+    f->detail_prim = i;
+    f->detail_size = size;
+    f->detail_step = step;
+}
+
+/* precision_detail of a triangle (precision_check runs it for the few
+ * triangles whose smaller height is under the steps at the scene's
+ * extent): its smaller height, in eye units (in its own the loader
+ * refuses slivers), where its box reaches.  A triangle's box has lo <= hi
+ * (its vertices' least and largest, padded), so its largest |coordinate|
+ * on an axis is max(-lo, hi): the value max(|lo|, |hi|) has, without the
+ * two absolute values.  A box with a NaN has NaN heights too, which
+ * precision_detail_one passes over before it looks at the reach. */
+static inline void precision_detail_triangle(render_frame_t *f, uint32_t i)
+{
+    const render_prim_t *p = &f->prims[i];
+    const aabb_t *b = &p->bounds;
+    num_t reach = NUM_ZERO;
+    reach = num_max(reach, num_max(num_neg(b->lo.x), b->hi.x));
+    reach = num_max(reach, num_max(num_neg(b->lo.y), b->hi.y));
+    reach = num_max(reach, num_max(num_neg(b->lo.z), b->hi.z));
+    precision_detail_one(f, i, num_min(num_abs(p->height1), num_abs(p->height2)), reach);
+}
 
 /* The message of RENDER_ERR_DETAIL with the numbers: the primitive (kind,
  * index), its size, the arithmetic's step there and the scene's span. */

@@ -2,9 +2,12 @@
  *
  * For one frame: evaluate each cluster's keys, compose transforms down the
  * tree, map every primitive and light to eye coordinates, compute each
- * cluster's bounding box and screen rectangle, and group children and
- * primitives by cluster.  Inverse maps are composed from the inverses of
- * each level (rather than inverting the composed map) to keep precision.
+ * cluster's bounding box and screen rectangle.  Inverse maps are composed
+ * from the inverses of each level (rather than inverting the composed map)
+ * to keep precision.  What does not change from frame to frame (children
+ * and primitives grouped by cluster, which clusters have maps of their
+ * own, which vertex normals are equal, the static checks) is the scene
+ * index's, worked out once a load (render_scene_index).
  */
 #include "proto/scene_format.h"
 #include "render/precision.h"
@@ -47,6 +50,30 @@ static inline aabb_t prep_aabb_empty(void)
 
 static int prep_aabb_is_empty(const aabb_t *b) { return num_gt(b->lo.x, b->hi.x); }
 
+/* A coordinate of b saturated: vec3_is_sat of either corner.  In the
+ * IEEE builds a - a is 0 for a finite a and NaN otherwise, and a sum of
+ * them 0 unless one is NaN: one test, not six (every primitive of every
+ * frame). */
+static inline int prep_aabb_is_sat(const aabb_t *b)
+{
+#if defined(LINKS1_NUM_FIXED)
+    return vec3_is_sat(b->lo) || vec3_is_sat(b->hi);
+#else
+    num_t z = num_add(num_add(num_sub(b->lo.x, b->lo.x), num_sub(b->lo.y, b->lo.y)),
+                      num_sub(b->lo.z, b->lo.z));
+    z = num_add(num_add(num_add(z, num_sub(b->hi.x, b->hi.x)), num_sub(b->hi.y, b->hi.y)),
+                num_sub(b->hi.z, b->hi.z));
+    return num_is_sat(z);
+#endif
+}
+
+/* b grown to hold o, both not empty */
+static inline void prep_aabb_grow(aabb_t *b, const aabb_t *o)
+{
+    b->lo = vec3_make(num_min(b->lo.x, o->lo.x), num_min(b->lo.y, o->lo.y), num_min(b->lo.z, o->lo.z));
+    b->hi = vec3_make(num_max(b->hi.x, o->hi.x), num_max(b->hi.y, o->hi.y), num_max(b->hi.z, o->hi.z));
+}
+
 /* inline: the DM grows boxes four times a triangle, every frame */
 static inline void prep_aabb_add_box(aabb_t *b, const aabb_t *o)
 {
@@ -56,8 +83,7 @@ static inline void prep_aabb_add_box(aabb_t *b, const aabb_t *o)
         *b = *o;
         return;
     }
-    b->lo = vec3_make(num_min(b->lo.x, o->lo.x), num_min(b->lo.y, o->lo.y), num_min(b->lo.z, o->lo.z));
-    b->hi = vec3_make(num_max(b->hi.x, o->hi.x), num_max(b->hi.y, o->hi.y), num_max(b->hi.z, o->hi.z));
+    prep_aabb_grow(b, o);
 }
 
 /* Box of centre c with half extents e, grown by the pad
@@ -249,6 +275,9 @@ static int prep_is_plain(const scene_cluster_t *c)
     return 1;
 }
 
+/* What render_prepare checks every frame; the clusters and primitives,
+ * which do not change from frame to frame, are prep_check_tree's, once
+ * with the index (render_scene_index). */
 static render_status_t prep_check(const scene_t *s)
 {
     if (s->width < 1 || s->width > RENDER_MAX_WIDTH || s->height < 1 || s->height > RENDER_MAX_HEIGHT)
@@ -262,13 +291,6 @@ static render_status_t prep_check(const scene_t *s)
         return RENDER_ERR_DENSITY;
     if (s->cluster_count < 1 || s->clusters[0].parent != SCENE_NO_CLUSTER)
         return RENDER_ERR_CLUSTER;
-    for (uint32_t i = 0; i < s->cluster_count; i++) {
-        const scene_cluster_t *c = &s->clusters[i];
-        if (i > 0 && c->parent >= i)
-            return RENDER_ERR_CLUSTER;
-        if ((uint64_t)c->first_key + c->key_count > s->key_count)
-            return RENDER_ERR_KEY;
-    }
     for (uint32_t i = 0; i < s->material_count; i++) {
         const scene_material_t *m = &s->materials[i];
         uint16_t maps[7] = {m->colour_map, m->bump_map, m->normal_map, m->dic_map,
@@ -290,6 +312,22 @@ static render_status_t prep_check(const scene_t *s)
                 return RENDER_ERR_MAP;
         }
     }
+    return RENDER_OK;
+}
+
+/* The cluster tree and the primitives as render_prepare needs them:
+ * render_scene_index checks them once, with the index it builds. */
+static render_status_t prep_check_tree(const scene_t *s)
+{
+    if (s->cluster_count < 1 || s->clusters[0].parent != SCENE_NO_CLUSTER)
+        return RENDER_ERR_CLUSTER;
+    for (uint32_t i = 0; i < s->cluster_count; i++) {
+        const scene_cluster_t *c = &s->clusters[i];
+        if (i > 0 && c->parent >= i)
+            return RENDER_ERR_CLUSTER;
+        if ((uint64_t)c->first_key + c->key_count > s->key_count)
+            return RENDER_ERR_KEY;
+    }
     for (uint32_t i = 0; i < s->prim_count; i++) {
         const scene_prim_t *p = &s->prims[i];
         if (p->kind > SCENE_PRIM_DENSITY || p->cluster >= s->cluster_count ||
@@ -310,7 +348,7 @@ static render_status_t prep_check(const scene_t *s)
  * grows its box (RENDER_BOUNDS_PAD_VALUE scaled to the scene: the caller
  * scales it once a frame, not once a primitive). */
 static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame_t *f, const xform_t *to_eye,
-                      const xform_t *from_eye, num_t pad, render_prim_t *p)
+                      const xform_t *from_eye, num_t pad, const scene_index_t *ix, render_prim_t *p)
 {
     num_t lin[3][3];
     p->kind = sp->kind;
@@ -319,9 +357,12 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
     p->index = index;
     switch (sp->kind) {
     case SCENE_PRIM_TRIANGLE: {
+        /* the three vertices before any store to p, which could alias the
+         * map: it is loaded once, not once a vertex */
         vec3_t v[3];
+        for (int k = 0; k < 3; k++)
+            v[k] = xform_point_inline(to_eye, sp->shape.triangle.v[k]);
         for (int k = 0; k < 3; k++) {
-            v[k] = xform_point(to_eye, sp->shape.triangle.v[k]);
             p->tex_u[k] = sp->shape.triangle.tex_u[k];
             p->tex_v[k] = sp->shape.triangle.tex_v[k];
         }
@@ -338,13 +379,19 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
         p->e1 = vec3_sub(v[1], v[0]);
         p->e2 = vec3_sub(v[2], v[0]);
         p->normal = vec3_normalize(vec3_cross(vec3_normalize(p->e1), vec3_normalize(p->e2)));
-        /* smooth: the vertex normals by the inverse transpose of to_eye */
+        /* smooth: the vertex normals by the inverse transpose of to_eye,
+         * each distinct one (bits and maps) once: a vertex normal met
+         * before, in an earlier primitive, is copied (normal_src) */
         p->normals = NULL;
         if (sp->shape.triangle.smooth) {
             uint32_t j = sp->shape.triangle.smooth - 1;
-            for (int k = 0; k < 3; k++)
+            for (uint32_t k = 0; k < 3; k++) {
+                uint32_t src = ix->normal_src[3 * j + k];
                 f->normals[j].n[k] =
-                    vec3_normalize(xform_dir_transposed(from_eye, f->scene->normals[j].n[k]));
+                    src == (j << 2 | k)
+                        ? vec3_normalize(xform_dir_transposed(from_eye, f->scene->normals[j].n[k]))
+                        : f->normals[src >> 2].n[src & 3];
+            }
             p->normals = &f->normals[j];
         }
         p->edge_n1 = vec3_normalize(vec3_cross(p->e2, p->normal));
@@ -399,6 +446,62 @@ static num_t prep_project(num_t v, num_t z, num_t half, uint16_t size)
     return num_sub(num_mul(num_add(s, NUM_ONE), num_mul_int(NUM_HALF, size)), NUM_HALF);
 }
 
+/* A corner's column (x = 1) or row (x = 0) on the screen, clamped to
+ * PREP_PIXEL_LIMIT; *sat set when the projection saturates. */
+static inline num_t prep_corner(const render_frame_t *f, num_t v, num_t z, int x, int *sat)
+{
+    num_t p = x ? prep_project(v, z, f->screen_half_w, f->width)
+                /* image rows grow downwards while eye y grows upwards */
+                : num_sub(num_from_int(f->height - 1), prep_project(v, z, f->screen_half_h, f->height));
+    if (num_is_sat(p))
+        *sat = 1;
+    /* A corner far off the screen (a huge eye-space box): clamped to the
+     * screen below either way, and too large for an int as it is. */
+    return num_min(num_max(p, num_neg(PREP_PIXEL_LIMIT)), PREP_PIXEL_LIMIT);
+}
+
+/* The least and the largest column and row of the box's corners (its
+ * lo.z at least the near plane); 0 when one saturates (the cluster then
+ * covers the whole screen).  A column depends on a corner's x and z only,
+ * a row on its y and z.  Each step of a projection (v / z, / half, + 1,
+ * * size / 2, - 1/2, the clamps) is monotone, so of a finite box with
+ * lo <= hi and positive halves the least column is lo.x's at the z where
+ * lo.x / z is least (hi.z when lo.x >= 0, lo.z when below) and the
+ * largest hi.x's at the z where hi.x / z is largest: four projections
+ * give the values the four (x, z) pairs' eight would (the DM projects
+ * every cluster of every frame), and they meet integers only through
+ * num_floor_int.  Any other box takes all eight. */
+static int prep_screen_extremes(const render_frame_t *f, const aabb_t *b, num_t *x0, num_t *x1,
+                                num_t *y0, num_t *y1)
+{
+    int sat = 0;
+    if (!num_is_sat(b->lo.x) && !num_is_sat(b->hi.x) && !num_is_sat(b->lo.y) &&
+        !num_is_sat(b->hi.y) && !num_is_sat(b->lo.z) && !num_is_sat(b->hi.z) &&
+        !num_gt(b->lo.x, b->hi.x) && !num_gt(b->lo.y, b->hi.y) && !num_gt(b->lo.z, b->hi.z) && num_gt(b->lo.z, NUM_ZERO) &&
+        num_gt(f->screen_half_w, NUM_ZERO) && num_gt(f->screen_half_h, NUM_ZERO)) {
+        *x0 = prep_corner(f, b->lo.x, num_lt(b->lo.x, NUM_ZERO) ? b->lo.z : b->hi.z, 1, &sat);
+        *x1 = prep_corner(f, b->hi.x, num_gt(b->hi.x, NUM_ZERO) ? b->lo.z : b->hi.z, 1, &sat);
+        /* rows fall as y rises: the least row is hi.y's */
+        *y0 = prep_corner(f, b->hi.y, num_gt(b->hi.y, NUM_ZERO) ? b->lo.z : b->hi.z, 0, &sat);
+        *y1 = prep_corner(f, b->lo.y, num_lt(b->lo.y, NUM_ZERO) ? b->lo.z : b->hi.z, 0, &sat);
+        return !sat;
+    }
+    for (int k = 0; k < 4; k++) {
+        num_t x = (k & 1) ? b->hi.x : b->lo.x;
+        num_t y = (k & 1) ? b->hi.y : b->lo.y;
+        num_t z = (k & 2) ? b->hi.z : b->lo.z;
+        num_t px = prep_corner(f, x, z, 1, &sat);
+        num_t py = prep_corner(f, y, z, 0, &sat);
+        if (sat)
+            return 0;
+        *x0 = k ? num_min(*x0, px) : px;
+        *x1 = k ? num_max(*x1, px) : px;
+        *y0 = k ? num_min(*y0, py) : py;
+        *y1 = k ? num_max(*y1, py) : py;
+    }
+    return 1;
+}
+
 static void prep_screen_rect(const render_frame_t *f, render_cluster_t *c)
 {
     const aabb_t *b = &c->own_bounds;
@@ -419,29 +522,9 @@ static void prep_screen_rect(const render_frame_t *f, render_cluster_t *c)
     }
     if (num_lt(b->lo.z, scene_tolerance(f->scene, NUM_C(RENDER_NEAR_PLANE_VALUE))))
         return; /* reaches behind the eye: whole screen */
-    /* The eight corners' columns and rows: a column depends on a corner's
-     * x and z only, a row on its y and z, so the four (x, z) and four (y, z)
-     * pairs give the same extremes as the eight corners with half the
-     * divisions (the DM projects every cluster of every frame). */
     num_t x0 = NUM_ZERO, x1 = NUM_ZERO, y0 = NUM_ZERO, y1 = NUM_ZERO;
-    for (int k = 0; k < 4; k++) {
-        num_t x = (k & 1) ? b->hi.x : b->lo.x;
-        num_t y = (k & 1) ? b->hi.y : b->lo.y;
-        num_t z = (k & 2) ? b->hi.z : b->lo.z;
-        num_t px = prep_project(x, z, f->screen_half_w, f->width);
-        /* image rows grow downwards while eye y grows upwards */
-        num_t py = num_sub(num_from_int(f->height - 1), prep_project(y, z, f->screen_half_h, f->height));
-        if (num_is_sat(px) || num_is_sat(py))
-            return;
-        /* A corner far off the screen (a huge eye-space box): clamped to
-         * the screen below either way, and too large for an int as it is. */
-        px = num_min(num_max(px, num_neg(PREP_PIXEL_LIMIT)), PREP_PIXEL_LIMIT);
-        py = num_min(num_max(py, num_neg(PREP_PIXEL_LIMIT)), PREP_PIXEL_LIMIT);
-        x0 = k ? num_min(x0, px) : px;
-        x1 = k ? num_max(x1, px) : px;
-        y0 = k ? num_min(y0, py) : py;
-        y1 = k ? num_max(y1, py) : py;
-    }
+    if (!prep_screen_extremes(f, b, &x0, &x1, &y0, &y1))
+        return;
     /* one pixel of margin either side keeps it conservative under rounding */
     int32_t ix0 = num_floor_int(x0) - 1, ix1 = num_floor_int(x1) + 2;
     int32_t iy0 = num_floor_int(y0) - 1, iy1 = num_floor_int(y1) + 2;
@@ -488,52 +571,185 @@ static void prep_lights(const scene_t *s, const scene_light_t *lights, const xfo
     }
 }
 
-/* Group items by owner with a counting sort (stable: ascending index). */
-static void prep_group_children(const scene_t *s, render_frame_t *f)
+/* ------------------------------------------ the scene's static structure */
+
+/* Vertex normals remembered while indexing: the last distinct one of each
+ * hash, direct-mapped (a mesh's neighbours share vertices close together
+ * in primitive order, so a small table finds nearly all of them).  An
+ * entry: the code (j << 2 | k) + 1 of the first one, 0 when empty, and
+ * its maps. */
+#define PREP_SHARE_CACHE 4096u
+
+static int prep_vec3_same(const vec3_t *a, const vec3_t *b)
 {
-    for (uint32_t i = 1; i < s->cluster_count; i++)
-        f->clusters[s->clusters[i].parent].child_count++;
-    uint32_t at = 0;
-    for (uint32_t i = 0; i < s->cluster_count; i++) {
-        f->clusters[i].first_child = at;
-        at += f->clusters[i].child_count;
-        f->clusters[i].child_count = 0;
+    const uint8_t *x = (const uint8_t *)a, *y = (const uint8_t *)b;
+    for (size_t at = 0; at < sizeof *a; at += sizeof(uint32_t)) {
+        uint32_t u, w;
+        __builtin_memcpy(&u, x + at, sizeof u);
+        __builtin_memcpy(&w, y + at, sizeof w);
+        if (u != w)
+            return 0;
     }
-    for (uint32_t i = 1; i < s->cluster_count; i++) {
-        render_cluster_t *p = &f->clusters[s->clusters[i].parent];
-        f->child_list[p->first_child + p->child_count++] = i;
-    }
+    return 1;
 }
 
-static void prep_group_prims(const scene_t *s, render_frame_t *f)
+/* The code of vertex normal v's first equal (bits and maps) met before,
+ * or code itself (remembered) when none: normal_src's entry. */
+static uint32_t prep_share(uint32_t *cache, const vec3_t *v, uint32_t tag, uint32_t code,
+                           const scene_t *s)
 {
-    for (uint32_t i = 0; i < s->prim_count; i++)
-        f->clusters[s->prims[i].cluster].prim_count++;
-    uint32_t at = 0;
-    for (uint32_t i = 0; i < s->cluster_count; i++) {
-        f->clusters[i].first_prim = at;
-        at += f->clusters[i].prim_count;
-        f->clusters[i].prim_count = 0;
+    const uint8_t *b = (const uint8_t *)v;
+    uint32_t h = 2166136261u ^ tag;
+    for (size_t i = 0; i < sizeof *v; i += sizeof(uint32_t)) {
+        uint32_t w;
+        __builtin_memcpy(&w, b + i, sizeof w);
+        h = (h ^ w) * 16777619u;
     }
-    for (uint32_t i = 0; i < s->prim_count; i++) {
-        render_cluster_t *c = &f->clusters[s->prims[i].cluster];
-        f->prim_list[c->first_prim + c->prim_count++] = i;
+    uint32_t *e = &cache[2 * ((h ^ (h >> 13)) & (PREP_SHARE_CACHE - 1))];
+    if (e[0] != 0 && e[1] == tag &&
+        prep_vec3_same(&s->normals[(e[0] - 1) >> 2].n[(e[0] - 1) & 3], v))
+        return e[0] - 1;
+    e[0] = code + 1;
+    e[1] = tag;
+    return code;
+}
+
+size_t render_scene_index_bytes_layout(const scene_t *s, const render_layout_t *lay)
+{
+    size_t c = s->cluster_count ? s->cluster_count : 1;
+    size_t p = s->prim_count ? s->prim_count : 1;
+    size_t n = s->normals_count ? s->normals_count : 1;
+    return sizeof(scene_group_t) * c + sizeof(uint32_t) * (c + p + 3 * n) + lay->num * p + /* kept */
+           c + n + 2 * sizeof(uint32_t) * PREP_SHARE_CACHE + /* scratch */
+           8 * ARENA_MAX_ALIGN; /* 8 allocations, each padded at most that */
+}
+
+size_t render_scene_index_bytes(const scene_t *s)
+{
+    return render_scene_index_bytes_layout(s, &render_layout_native);
+}
+
+render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index_t *out)
+{
+    __builtin_memset(out, 0, sizeof *out);
+    uint32_t nc = s->cluster_count, np = s->prim_count, nn = s->normals_count;
+    render_status_t st = prep_check_tree(s);
+    if (st != RENDER_OK)
+        return st;
+    if (nn >= (1u << 29)) /* (j << 2 | k) must fit: 18 GB of normals, more
+                             than any arena holds */
+        return RENDER_ERR_ARENA;
+    scene_group_t *g = ARENA_NEW_ARRAY(arena, scene_group_t, nc);
+    uint32_t *child = ARENA_NEW_ARRAY(arena, uint32_t, nc);
+    uint32_t *plist = ARENA_NEW_ARRAY(arena, uint32_t, np ? np : 1);
+    uint32_t *src = ARENA_NEW_ARRAY(arena, uint32_t, nn ? 3 * (size_t)nn : 1);
+    num_t *spread = ARENA_NEW_ARRAY(arena, num_t, np ? np : 1);
+    if (!g || !child || !plist || !src || !spread)
+        return RENDER_ERR_ARENA;
+    size_t mark = arena->used; /* scratch from here, released below */
+    uint8_t *depth = ARENA_NEW_ARRAY(arena, uint8_t, nc);
+    uint8_t *named = ARENA_NEW_ARRAY(arena, uint8_t, nn ? nn : 1);
+    uint32_t *cache = ARENA_NEW_ARRAY(arena, uint32_t, 2 * PREP_SHARE_CACHE);
+    if (!depth || !named || !cache)
+        return RENDER_ERR_ARENA;
+    for (uint32_t i = 0; i < nc && st == RENDER_OK; i++) {
+        const scene_cluster_t *c = &s->clusters[i];
+        if (i > 0 && c->parent >= i) {
+            st = RENDER_ERR_CLUSTER;
+            break;
+        }
+        depth[i] = i == 0 ? 0 : (uint8_t)(depth[c->parent] + 1);
+        if (depth[i] > RENDER_MAX_CLUSTER_DEPTH)
+            st = RENDER_ERR_CLUSTER;
+        /* a plain cluster has exactly its parent's maps, so its primitives
+         * come out bit for bit as in the parent: the DM copies no maps */
+        g[i].maps_of = i > 0 && prep_is_plain(c) ? g[c->parent].maps_of : i;
     }
+    /* children and primitives grouped by owner, each with a counting sort
+     * (stable: ascending index) */
+    for (uint32_t i = 1; i < nc && st == RENDER_OK; i++)
+        g[s->clusters[i].parent].child_count++;
+    for (uint32_t i = 0; i < np && st == RENDER_OK; i++) {
+        if (s->prims[i].cluster >= nc)
+            st = RENDER_ERR_PRIM;
+        else
+            g[s->prims[i].cluster].prim_count++;
+    }
+    if (st != RENDER_OK) {
+        arena_release_to(arena, mark);
+        return st;
+    }
+    uint32_t kids = 0, prims = 0;
+    for (uint32_t i = 0; i < nc; i++) {
+        g[i].first_child = kids;
+        kids += g[i].child_count;
+        g[i].child_count = 0;
+        g[i].first_prim = prims;
+        prims += g[i].prim_count;
+        g[i].prim_count = 0;
+    }
+    for (uint32_t i = 1; i < nc; i++) {
+        scene_group_t *p = &g[s->clusters[i].parent];
+        child[p->first_child + p->child_count++] = i;
+    }
+    for (uint32_t i = 0; i < np; i++) {
+        scene_group_t *c = &g[s->prims[i].cluster];
+        plist[c->first_prim + c->prim_count++] = i;
+    }
+    /* each vertex normal's first equal (bits and maps), in the order
+     * render_prepare maps them: rising primitive index.  (Vertices shared
+     * likewise cost more to copy than to map: measured, not kept.) */
+    for (uint32_t j = 0; j < nn; j++)
+        for (uint32_t k = 0; k < 3; k++)
+            src[3 * j + k] = j << 2 | k;
+    for (uint32_t i = 0; i < np; i++) {
+        const scene_prim_t *sp = &s->prims[i];
+        if (sp->kind != SCENE_PRIM_TRIANGLE)
+            continue;
+        const num_t *u = sp->shape.triangle.tex_u, *v = sp->shape.triangle.tex_v;
+        for (int k = 1; k < 3; k++)
+            spread[i] = num_add(spread[i], num_max(num_abs(num_sub(u[k], u[0])),
+                                                   num_abs(num_sub(v[k], v[0]))));
+        if (!sp->shape.triangle.smooth)
+            continue;
+        uint32_t maps = g[sp->cluster].maps_of;
+        uint32_t j = sp->shape.triangle.smooth - 1;
+        if (j >= nn || named[j]) { /* one record, one triangle (the loader's rule) */
+            arena_release_to(arena, mark);
+            return RENDER_ERR_PRIM;
+        }
+        named[j] = 1;
+        for (uint32_t k = 0; k < 3; k++)
+            src[3 * j + k] = prep_share(cache, &s->normals[j].n[k], maps, j << 2 | k, s);
+    }
+    arena_release_to(arena, mark);
+    out->groups = g;
+    out->child_list = child;
+    out->prim_list = plist;
+    out->normal_src = src;
+    out->uv_spread = spread;
+    return RENDER_OK;
 }
 
 /* Keep in step with the allocations of render_prepare below: every array
  * plus the worst alignment padding of each (64 bytes is the most the
  * arena pads). */
-size_t render_prepare_bytes_layout(const scene_t *s, const render_layout_t *lay)
+size_t render_prepare_frame_bytes_layout(const scene_t *s, const render_layout_t *lay)
 {
     size_t prims = s->prim_count ? s->prim_count : 1;
     size_t comps = s->density_component_count ? s->density_component_count : 1;
     size_t normals = s->normals_count ? s->normals_count : 1;
-    size_t n = lay->frame + lay->frame_cluster * (size_t)s->cluster_count +
-               sizeof(uint32_t) * (size_t)s->cluster_count + lay->frame_prim * prims +
-               sizeof(uint32_t) * prims + lay->num * comps + lay->normals * normals;
-    size_t scratch = (2 * lay->xform + 1 + sizeof(uint32_t)) * (size_t)s->cluster_count;
-    return n + scratch + 14 * ARENA_MAX_ALIGN; /* 11 allocations, each padded at most that */
+    size_t n = lay->frame + lay->frame_cluster * (size_t)s->cluster_count + lay->frame_prim * prims +
+               lay->num * comps + lay->normals * normals;
+    size_t scratch = 2 * lay->xform * (size_t)s->cluster_count;
+    return n + scratch + 7 * ARENA_MAX_ALIGN; /* 7 allocations, each padded at most that */
+}
+
+size_t render_prepare_bytes_layout(const scene_t *s, const render_layout_t *lay)
+{
+    /* a scene without its index: render_prepare works it out into the frame's arena */
+    return render_prepare_frame_bytes_layout(s, lay) +
+           (s->index.groups ? 0 : render_scene_index_bytes_layout(s, lay));
 }
 
 size_t render_prepare_bytes(const scene_t *s)
@@ -551,15 +767,22 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     if (!f)
         return RENDER_ERR_ARENA;
     f->clusters = ARENA_NEW_ARRAY(arena, render_cluster_t, s->cluster_count);
-    f->child_list = ARENA_NEW_ARRAY(arena, uint32_t, s->cluster_count);
     f->prims = ARENA_NEW_ARRAY(arena, render_prim_t, s->prim_count ? s->prim_count : 1);
-    f->prim_list = ARENA_NEW_ARRAY(arena, uint32_t, s->prim_count ? s->prim_count : 1);
     uint32_t ncomp = s->density_component_count;
     f->density_inv_radius2 = ARENA_NEW_ARRAY(arena, num_t, ncomp ? ncomp : 1);
     f->normals = ARENA_NEW_ARRAY(arena, scene_normals_t, s->normals_count ? s->normals_count : 1);
-    if (!f->clusters || !f->child_list || !f->prims || !f->prim_list || !f->density_inv_radius2 ||
-        !f->normals)
+    if (!f->clusters || !f->prims || !f->density_inv_radius2 || !f->normals)
         return RENDER_ERR_ARENA;
+    /* the scene's static structure: the loader's, or worked out here (a
+     * scene built by hand) into the frame's arena */
+    scene_index_t ix = s->index;
+    if (!ix.groups) {
+        st = render_scene_index(s, arena, &ix);
+        if (st != RENDER_OK)
+            return st;
+    }
+    f->child_list = ix.child_list;
+    f->prim_list = ix.prim_list;
     /* (1/d)/d rather than 1/(d*d): d*d of a small radius would keep few
      * significant bits in fixed point */
     for (uint32_t k = 0; k < ncomp; k++) {
@@ -583,13 +806,11 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
 
     /* scratch: per-cluster maps, released before returning */
     size_t mark = arena->used;
-    xform_t *to_eye = ARENA_NEW_ARRAY(arena, xform_t, s->cluster_count);
-    xform_t *from_eye = ARENA_NEW_ARRAY(arena, xform_t, s->cluster_count);
-    uint8_t *depth = ARENA_NEW_ARRAY(arena, uint8_t, s->cluster_count);
-    /* the cluster whose maps cluster i uses: itself, or for a plain
-     * cluster its parent's (the DM copies no maps for those) */
-    uint32_t *maps_of = ARENA_NEW_ARRAY(arena, uint32_t, s->cluster_count);
-    if (!to_eye || !from_eye || !depth || !maps_of)
+    /* not zero-filled: only the clusters with maps of their own are
+     * written, and only they are read (ix.groups[].maps_of) */
+    xform_t *to_eye = ARENA_NEW_ARRAY_RAW(arena, xform_t, s->cluster_count);
+    xform_t *from_eye = ARENA_NEW_ARRAY_RAW(arena, xform_t, s->cluster_count);
+    if (!to_eye || !from_eye)
         return RENDER_ERR_ARENA;
 
     xform_t world_to_eye, eye_to_world;
@@ -598,18 +819,12 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
         return st;
     if (xform_is_sat(&world_to_eye) || xform_is_sat(&eye_to_world))
         f->precision_lost = 1;
+    /* the maps of every cluster that has its own; a plain cluster's
+     * primitives use its ancestor's (ix.groups[].maps_of) */
     for (uint32_t i = 0; i < s->cluster_count; i++) {
-        const scene_cluster_t *c = &s->clusters[i];
-        if (i > 0 && prep_is_plain(c)) { /* e.g. a node of the automatic
-                                            hierarchy: exactly its parent's
-                                            maps, so its primitives come out
-                                            bit for bit as in the parent */
-            depth[i] = (uint8_t)(depth[c->parent] + 1);
-            if (depth[i] > RENDER_MAX_CLUSTER_DEPTH)
-                return RENDER_ERR_CLUSTER;
-            maps_of[i] = maps_of[c->parent]; /* no copy of the two maps */
+        if (ix.groups[i].maps_of != i)
             continue;
-        }
+        const scene_cluster_t *c = &s->clusters[i];
         xform_t key = prep_key_xform(s, c, frame_index);
         xform_t key_inv, local_inv;
         st = precision_invert(&key, &key_inv);
@@ -619,12 +834,9 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
             return st;
         xform_t to_parent = xform_compose(&key, &c->local);
         xform_t from_parent = xform_compose(&local_inv, &key_inv);
-        const xform_t *parent_to_eye = i == 0 ? &world_to_eye : &to_eye[maps_of[c->parent]];
-        const xform_t *eye_to_parent = i == 0 ? &eye_to_world : &from_eye[maps_of[c->parent]];
-        maps_of[i] = i;
-        depth[i] = i == 0 ? 0 : (uint8_t)(depth[c->parent] + 1);
-        if (depth[i] > RENDER_MAX_CLUSTER_DEPTH)
-            return RENDER_ERR_CLUSTER;
+        uint32_t pm = i == 0 ? 0 : ix.groups[c->parent].maps_of;
+        const xform_t *parent_to_eye = i == 0 ? &world_to_eye : &to_eye[pm];
+        const xform_t *eye_to_parent = i == 0 ? &eye_to_world : &from_eye[pm];
         to_eye[i] = xform_compose(parent_to_eye, &to_parent);
         from_eye[i] = xform_compose(&from_parent, eye_to_parent);
         if (xform_is_sat(&to_eye[i]) || xform_is_sat(&from_eye[i]))
@@ -634,29 +846,45 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     num_t pad = scene_tolerance(s, NUM_C(RENDER_BOUNDS_PAD_VALUE));
     for (uint32_t i = 0; i < s->prim_count; i++) {
         const scene_prim_t *sp = &s->prims[i];
-        uint32_t m = maps_of[sp->cluster];
-        prep_prim(sp, i, f, &to_eye[m], &from_eye[m], pad, &f->prims[i]);
+        uint32_t m = ix.groups[sp->cluster].maps_of;
+        prep_prim(sp, i, f, &to_eye[m], &from_eye[m], pad, &ix, &f->prims[i]);
         /* the error of the cluster's inverse map, for precision_check (a
-         * triangle's vertices are mapped forward: none) */
-        f->prims[i].hit_error = sp->kind == SCENE_PRIM_TRIANGLE ? NUM_ZERO :
-            precision_map_error(&to_eye[m], &from_eye[m], &f->prims[i].bounds);
-        if (vec3_is_sat(f->prims[i].bounds.lo) || vec3_is_sat(f->prims[i].bounds.hi))
+         * triangle's vertices are mapped forward: none, and precision_check
+         * sets its 0) */
+        if (sp->kind != SCENE_PRIM_TRIANGLE)
+            f->prims[i].hit_error = precision_map_error(&to_eye[m], &from_eye[m], &f->prims[i].bounds);
+        if (prep_aabb_is_sat(&f->prims[i].bounds))
             f->precision_lost = 1;
-        precision_detail(f, i, &to_eye[m]);
+        if (sp->kind != SCENE_PRIM_TRIANGLE) /* a triangle's: precision_check */
+            precision_detail(f, i, &to_eye[m]);
     }
     arena_release_to(arena, mark);
 
-    prep_group_children(s, f);
-    prep_group_prims(s, f);
+    /* each cluster's lists (the index's) and the box of its own
+     * primitives, grown in rising primitive index as ever */
     for (uint32_t i = 0; i < s->cluster_count; i++) {
-        f->clusters[i].own_bounds = prep_aabb_empty();
-        f->clusters[i].bounds = prep_aabb_empty();
-    }
-    for (uint32_t i = 0; i < s->prim_count; i++)
-        prep_aabb_add_box(&f->clusters[s->prims[i].cluster].own_bounds, &f->prims[i].bounds);
-    for (uint32_t i = 0; i < s->cluster_count; i++) {
-        f->clusters[i].tree_x0 = f->clusters[i].tree_y0 = 1;
-        f->clusters[i].tree_x1 = f->clusters[i].tree_y1 = 0;
+        render_cluster_t *c = &f->clusters[i];
+        const scene_group_t *g = &ix.groups[i];
+        c->first_child = g->first_child;
+        c->child_count = g->child_count;
+        c->first_prim = g->first_prim;
+        c->prim_count = g->prim_count;
+        c->own_bounds = prep_aabb_empty();
+        for (uint32_t k = 0, have = 0; k < g->prim_count; k++) {
+            /* prep_aabb_add_box without asking of own_bounds what have
+             * says: a box grown by one not empty is not empty */
+            const aabb_t *o = &f->prims[ix.prim_list[g->first_prim + k]].bounds;
+            if (prep_aabb_is_empty(o))
+                continue;
+            if (have)
+                prep_aabb_grow(&c->own_bounds, o);
+            else
+                c->own_bounds = *o;
+            have = 1;
+        }
+        c->bounds = prep_aabb_empty();
+        c->tree_x0 = c->tree_y0 = 1;
+        c->tree_x1 = c->tree_y1 = 0;
     }
     /* children have larger indices than parents: one backward pass */
     uint64_t covered = 0, rows = 0; /* pixels, rows under the clusters' own rectangles */
@@ -685,5 +913,5 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     f->clip_rows = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
     prep_lights(s, lights, &world_to_eye, f);
     *out = f;
-    return precision_check(f);
+    return precision_check(f, &ix);
 }

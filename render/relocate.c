@@ -56,6 +56,21 @@ static void reloc_scene(reloc_t *r, scene_t *s)
         RELOC(r, s->density_components, s->density_component_count, "scene.density_components");
     scene_normals_t *normals = RELOC(r, s->normals, s->normals_count, "scene.normals");
     scene_view_key_t *view_keys = RELOC(r, s->view_keys, s->view_key_count, "scene.view_keys");
+    /* the index (render_scene_index): all its arrays or none */
+    scene_index_t ix = {NULL, NULL, NULL, NULL, NULL};
+    if (s->index.groups || s->index.child_list || s->index.prim_list || s->index.normal_src ||
+        s->index.uv_spread) {
+        ix.groups = RELOC(r, s->index.groups, s->cluster_count, "scene.index.groups");
+        ix.child_list = RELOC(r, s->index.child_list, s->cluster_count, "scene.index.child_list");
+        ix.prim_list = RELOC(r, s->index.prim_list, s->prim_count, "scene.index.prim_list");
+        ix.normal_src = RELOC(r, s->index.normal_src, 3 * (size_t)s->normals_count,
+                              "scene.index.normal_src");
+        ix.uv_spread = RELOC(r, s->index.uv_spread, s->prim_count, "scene.index.uv_spread");
+        /* an empty array is still an allocation: none may be NULL */
+        if (!r->bad && (!ix.groups || !ix.child_list || !ix.prim_list || !ix.normal_src ||
+                        !ix.uv_spread))
+            r->bad = "scene.index (part of it NULL)";
+    }
     if (r->bad)
         return;
     for (uint32_t i = 0; i < s->map_count; i++) {
@@ -76,6 +91,7 @@ static void reloc_scene(reloc_t *r, scene_t *s)
     s->density_components = comps;
     s->normals = normals;
     s->view_keys = view_keys;
+    s->index = ix;
 }
 
 /* f and s are the copy's frame and scene; f->scene is rewritten by the

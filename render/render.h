@@ -155,10 +155,12 @@ typedef struct {
     render_light_t lights[RENDER_MAX_LIGHTS];
     uint32_t cluster_count;
     render_cluster_t *clusters;    /* reloc; index = scene cluster index */
-    uint32_t *child_list;          /* reloc; cluster indices, grouped by parent */
+    const uint32_t *child_list;    /* reloc; cluster indices, grouped by
+                                      parent (the scene index's) */
     uint32_t prim_count;
     render_prim_t *prims;          /* reloc; index = scene prim index */
-    uint32_t *prim_list;           /* reloc; prim indices, grouped by cluster */
+    const uint32_t *prim_list;     /* reloc; prim indices, grouped by
+                                      cluster (the scene index's) */
     num_t *density_inv_radius2;    /* reloc; 1/d^2 per scene density component:
                                       the field then needs no division */
     scene_normals_t *normals;      /* reloc; the scene's smooth-triangle
@@ -291,6 +293,21 @@ render_status_t render_prepare(const scene_t *scene, uint32_t frame_index,
 size_t render_prepare_bytes(const scene_t *scene);
 /* The same with another machine's record sizes (render/layout.h). */
 size_t render_prepare_bytes_layout(const scene_t *scene, const render_layout_t *layout);
+/* The frame alone, for a scene that has its index (scene_load's): what
+ * render_prepare needs beyond the scene's memory, at most. */
+size_t render_prepare_frame_bytes_layout(const scene_t *scene, const render_layout_t *layout);
+
+/* The scene's static structure (scene_index_t, render/scene.h) into arena:
+ * what every frame's preparation would otherwise work out again.
+ * scene_load calls it; a scene built by hand may go without (render_prepare
+ * then works it out into each frame's arena).  RENDER_ERR_CLUSTER,
+ * RENDER_ERR_PRIM for a tree or a primitive render_prepare would refuse,
+ * RENDER_ERR_ARENA when arena lacks render_scene_index_bytes. */
+render_status_t render_scene_index(const scene_t *scene, arena_t *arena, scene_index_t *out);
+/* Arena bytes render_scene_index needs at most (its arrays, its scratch
+ * and alignment); with another machine's record sizes (render/layout.h). */
+size_t render_scene_index_bytes(const scene_t *scene);
+size_t render_scene_index_bytes_layout(const scene_t *scene, const render_layout_t *layout);
 
 void render_ctx_init(render_ctx_t *ctx, const render_frame_t *frame);
 

@@ -171,6 +171,37 @@ typedef struct {
     uint32_t key_count; /* 0 = static */
 } scene_cluster_t;
 
+/* What render_prepare needs of a cluster's static place in the scene,
+ * worked out once a load (render_scene_index, render/render.h) rather
+ * than every frame: its children and primitives grouped (ascending index),
+ * and whose maps its primitives use. */
+typedef struct {
+    uint32_t first_child, child_count; /* into the index's child_list */
+    uint32_t first_prim, prim_count;   /* into the index's prim_list */
+    uint32_t maps_of; /* the cluster whose maps its primitives use: itself,
+                         or for a plain cluster (no keys, the identity: a
+                         node of the automatic hierarchy) its parent's */
+} scene_group_t;
+
+/* The scene's static structure (render_scene_index): arrays in the
+ * scene's memory, NULL when the scene has none (render_prepare then
+ * works it out into the frame's). */
+typedef struct {
+    const scene_group_t *groups; /* reloc; cluster_count */
+    const uint32_t *child_list;  /* reloc; cluster_count: cluster indices, grouped by parent */
+    const uint32_t *prim_list;   /* reloc; prim_count: prim indices, grouped by cluster */
+    const uint32_t *normal_src;  /* reloc; 3 per normals record: for vertex k
+                                    of record j, (j' << 2 | k') of the first
+                                    (in prim order) vertex normal with the
+                                    same bits and cluster maps, (j << 2 | k)
+                                    when it is the first: the frame maps
+                                    each distinct one once and copies it */
+    const num_t *uv_spread;      /* reloc; prim_count: a triangle's spread of
+                                    map coordinates, the sum over k = 1, 2
+                                    of max(|u_k - u_0|, |v_k - v_0|)
+                                    (precision_check); 0 for other kinds */
+} scene_index_t;
+
 enum scene_prim_kind {
     SCENE_PRIM_TRIANGLE = 0,
     SCENE_PRIM_ELLIPSOID = 1,
@@ -298,6 +329,7 @@ typedef struct {
                           scene's, so a far light or eye does not widen them
                           beyond 8 times the geometry's norm.  In
                           RENDER_TOL_EXP_MIN..0 */
+    scene_index_t index;   /* reloc; scene_load's render_scene_index */
 } scene_t;
 
 /* A tolerance of render/limits.h (NUM_C of a ..._VALUE) in the units the

@@ -14,6 +14,7 @@
 #include "proto/scene_format.h"
 #include "proto/textfmt.h"
 #include "proto/wire.h"
+#include "render/render.h"
 #include "render/vec3.h"
 
 #define LOAD_F32_EXP_MASK 0x7f800000u
@@ -1040,6 +1041,14 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
     out->normals_count = n_nrm;
     out->view_keys = view_keys;
     out->view_key_count = n_vkey;
+    /* the static structure every frame's preparation reads, once a load */
+    render_status_t rs = render_scene_index(out, arena, &out->index);
+    if (rs != RENDER_OK) {
+        arena_release_to(arena, mark);
+        memset(out, 0, sizeof *out);
+        return load_fail(&L, rs == RENDER_ERR_ARENA ? SCENE_LOAD_ERR_ARENA : SCENE_LOAD_ERR_TREE,
+                         "the scene's index: %s", render_status_name(rs));
+    }
     return SCENE_LOAD_OK;
 }
 
@@ -1099,7 +1108,7 @@ size_t scene_load_bytes_layout(const scene_t *shape, uint32_t texel_bytes,
            LOAD_BYTES(lay->normals, shape->normals_count) +
            LOAD_BYTES(lay->view_key, shape->view_key_count) +
            LOAD_BYTES(1, shape->cluster_count) + LOAD_BYTES(8, shape->cluster_count) +
-           13 * ARENA_MAX_ALIGN;
+           13 * ARENA_MAX_ALIGN + render_scene_index_bytes_layout(shape, lay);
 #undef LOAD_BYTES
 }
 

@@ -36,9 +36,18 @@ static inline num_t vec3_length(vec3_t a) { return num_len3(a.x, a.y, a.z); }
 /* Unit vector along a; the zero vector stays zero. */
 static inline vec3_t vec3_normalize(vec3_t a)
 {
+#if defined(LINKS1_NUM_FIXED)
     num_t len = vec3_length(a);
     if (!num_gt(len, NUM_ZERO))
         return a;
+#else
+    /* the IEEE square root is above 0 exactly when its operand is: one
+     * test, not two (the DM normalises five vectors a triangle a frame) */
+    num_t sq = num_dot3(a.x, a.y, a.z, a.x, a.y, a.z);
+    if (!num_gt(sq, NUM_ZERO))
+        return a;
+    num_t len = num_sqrt(sq);
+#endif
     return vec3_make(num_div(a.x, len), num_div(a.y, len), num_div(a.z, len));
 }
 static inline int vec3_is_sat(vec3_t a) { return num_is_sat(a.x) || num_is_sat(a.y) || num_is_sat(a.z); }
@@ -68,6 +77,20 @@ static inline int rgb_is_zero(rgb_t a)
 }
 
 /* Affine maps (xform.c). */
+/* m applied to the direction d (its 3x3 part) and to the point p, inline
+ * for the DM's every vertex of every frame; xform_dir and xform_point are
+ * these. */
+static inline vec3_t xform_dir_inline(const xform_t *m, vec3_t d)
+{
+    return vec3_make(num_dot3(m->m[0][0], m->m[0][1], m->m[0][2], d.x, d.y, d.z),
+                     num_dot3(m->m[1][0], m->m[1][1], m->m[1][2], d.x, d.y, d.z),
+                     num_dot3(m->m[2][0], m->m[2][1], m->m[2][2], d.x, d.y, d.z));
+}
+static inline vec3_t xform_point_inline(const xform_t *m, vec3_t p)
+{
+    vec3_t d = xform_dir_inline(m, p);
+    return vec3_make(num_add(d.x, m->m[0][3]), num_add(d.y, m->m[1][3]), num_add(d.z, m->m[2][3]));
+}
 xform_t xform_identity(void);
 vec3_t xform_point(const xform_t *m, vec3_t p);
 vec3_t xform_dir(const xform_t *m, vec3_t d);

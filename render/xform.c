@@ -14,18 +14,9 @@ xform_t xform_identity(void)
     return m;
 }
 
-vec3_t xform_dir(const xform_t *m, vec3_t d)
-{
-    return vec3_make(num_dot3(m->m[0][0], m->m[0][1], m->m[0][2], d.x, d.y, d.z),
-                     num_dot3(m->m[1][0], m->m[1][1], m->m[1][2], d.x, d.y, d.z),
-                     num_dot3(m->m[2][0], m->m[2][1], m->m[2][2], d.x, d.y, d.z));
-}
+vec3_t xform_dir(const xform_t *m, vec3_t d) { return xform_dir_inline(m, d); }
 
-vec3_t xform_point(const xform_t *m, vec3_t p)
-{
-    vec3_t d = xform_dir(m, p);
-    return vec3_make(num_add(d.x, m->m[0][3]), num_add(d.y, m->m[1][3]), num_add(d.z, m->m[2][3]));
-}
+vec3_t xform_point(const xform_t *m, vec3_t p) { return xform_point_inline(m, p); }
 
 vec3_t xform_dir_transposed(const xform_t *m, vec3_t d)
 {
