@@ -44,6 +44,23 @@ static void *tw_wide_ctx(const void *block, size_t size)
     return mem;
 }
 
+/* demo.scn's narrow blob, its wide blob and a wide context on it; 0 (a
+ * failed check, each freed) when one cannot be made. */
+static int tw_demo(render_blob_t **blob, void **wblock, size_t *wsize, void **wctx)
+{
+    size_t size;
+    *blob = tb_blob_div("demo", 0, TW_DIV, &size);
+    *wblock = tw_wide_blob("demo", 0, wsize);
+    *wctx = *wblock ? tw_wide_ctx(*wblock, *wsize) : NULL;
+    CHECK(*blob && *wctx);
+    if (*blob && *wctx)
+        return 1;
+    free(*blob);
+    free(*wblock);
+    free(*wctx);
+    return 0;
+}
+
 /* Every pixel of the frame with ctx, into a new image; lost[i] = whether
  * pixel i lost precision (when lost is not NULL). */
 static rgb8_t *tw_render(render_ctx_t *ctx, uint8_t *lost)
@@ -82,12 +99,10 @@ static int tw_same(rgb8_t a, rgb8_t b)
  * counts the lost ones, precision_lost_pixels those the wide one lost. */
 static void test_wide_escalates_lost_pixels(void)
 {
-    size_t size, wsize;
-    render_blob_t *blob = tb_blob_div("demo", 0, TW_DIV, &size);
-    void *wblock = tw_wide_blob("demo", 0, &wsize);
-    void *wctx = wblock ? tw_wide_ctx(wblock, wsize) : NULL;
-    CHECK(blob && wctx);
-    if (!blob || !wctx)
+    render_blob_t *blob;
+    void *wblock, *wctx;
+    size_t wsize;
+    if (!tw_demo(&blob, &wblock, &wsize, &wctx))
         return;
     const render_frame_t *f = blob->frame;
     size_t n = (size_t)f->width * f->height;
@@ -132,12 +147,10 @@ static void test_wide_escalates_lost_pixels(void)
  * pixels render_pixel escalates, to the same colours. */
 static void test_wide_area_same_as_pixels(void)
 {
-    size_t size, wsize;
-    render_blob_t *blob = tb_blob_div("demo", 0, TW_DIV, &size);
-    void *wblock = tw_wide_blob("demo", 0, &wsize);
-    void *wctx = wblock ? tw_wide_ctx(wblock, wsize) : NULL;
-    CHECK(blob && wctx);
-    if (!blob || !wctx)
+    render_blob_t *blob;
+    void *wblock, *wctx;
+    size_t wsize;
+    if (!tw_demo(&blob, &wblock, &wsize, &wctx))
         return;
     const render_frame_t *f = blob->frame;
     render_ctx_t ctx;
