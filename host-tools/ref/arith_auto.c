@@ -335,6 +335,23 @@ static int auto_measure_image(const struct auto_run *r, struct auto_cand *c)
         return -1;
     }
     auto_error(&r->ref, &a, &m, c);
+    /* --auto: the flagged pixels hold the arithmetic's error, not the
+     * model's: against double with the candidate's model */
+    struct image same;
+    char dimg[PATH_MAX], dlog[PATH_MAX];
+    if (r->o->model && !compiled) {
+        double all;
+        long flagged;
+        if (auto_host_render_model(r, "double", 0, c->steps, c->weight, dimg, dlog,
+                                   sizeof dimg) != 0 ||
+            auto_read(dimg, &same, &r->ref) != 0) {
+            image_free(&a);
+            image_free(&m);
+            return -1;
+        }
+        image_error_flagged(&same, &a, &m, &all, &c->psnr_flagged, &flagged);
+        image_free(&same);
+    }
     if (compiled && lost > 0)
         c->psnr_flagged = 0;
     c->lost = (unsigned)lost;

@@ -23,7 +23,7 @@
 # computer: picks, picks below TARGET at SIZE, the largest pick / best.
 #   bash tests/sweeps/auto_model.sh [--out DIR]
 # KNOBS=ends: only the first and last knob of each family; FAMILIES="a b":
-# only those families.
+# only those families, in that order.
 set -u
 cd "$(dirname "$0")/../.."
 LINKS1=${LINKS1:-build/links1}
@@ -116,9 +116,15 @@ frontier() {
 
 printf 'family\tknob\tfpu\tpick\tpick_psnr\tpick_cost\tbest\tbest_psnr\tbest_cost\tpick_over_best\n' >"$tsv"
 declare -A best_of=() # the density scenes' best, per fpu
-for entry in "${families[@]}"; do
+order=("${families[@]}")
+if [ -n "$FAMILIES" ]; then # those families, in that order
+    order=()
+    for f in $FAMILIES; do
+        for entry in "${families[@]}"; do [ "${entry%%|*}" = "$f" ] && order+=("$entry"); done
+    done
+fi
+for entry in "${order[@]}"; do
     IFS='|' read -r family knobs _ _ <<<"$entry"
-    [ -n "$FAMILIES" ] && [[ " $FAMILIES " != *" $family "* ]] && continue
     read -ra kl <<<"$knobs"
     [ "$KNOBS" = ends ] && kl=("${kl[0]}" "${kl[${#kl[@]} - 1]}")
     for knob in "${kl[@]}"; do
