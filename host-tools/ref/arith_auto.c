@@ -60,6 +60,7 @@ struct auto_run {
      * a density sphere (without one the steps change nothing) */
     int steps0, density;
     double weight0;
+    double margin;       /* dB over the target the whole pre-render must reach */
 };
 
 /* --auto's rungs: density steps about 1.2x apart, min_weight 2x apart
@@ -552,9 +553,16 @@ static int auto_model_search(const struct auto_run *r, struct auto_cand *c, doub
     return 0;
 }
 
-static int auto_meets(const struct auto_cand *c, double target)
+/* The PSNR the whole pre-render must reach: the target, and with --auto
+ * on a pre-render smaller than the render ARITH_AUTO_MARGIN_DB more */
+static double auto_goal(const struct auto_run *r)
 {
-    return c->measured && c->psnr >= target && c->psnr_flagged >= target;
+    return r->o->target_db + r->margin;
+}
+
+static int auto_meets_goal(const struct auto_cand *c, double goal, double target)
+{
+    return c->measured && c->psnr >= goal && c->psnr_flagged >= target;
 }
 
 /* The pre-render size: the render's size scaled to at most
@@ -599,6 +607,7 @@ static int auto_size(struct auto_run *r)
         *(board ? &r->bw : &r->w) = kw;
         *(board ? &r->bh : &r->h) = kh;
     }
+    r->margin = r->o->model && (double)r->w * r->h < (double)w * h ? ARITH_AUTO_MARGIN_DB : 0;
     return 0;
 }
 
@@ -629,7 +638,7 @@ static void auto_print_model(const struct auto_run *r, const struct auto_cand *c
 static void auto_print_binding(const struct auto_run *r, const struct auto_cand *p, int n,
                                const struct auto_cand *c)
 {
-    double t = r->o->target_db;
+    double t = auto_goal(r);
     int steps = r->density && p->looser_steps_db >= 0 && p->looser_steps_db < t;
     int weight = p->looser_weight_db >= 0 && p->looser_weight_db < t;
     char wn[40];
@@ -650,7 +659,7 @@ static void auto_print_binding(const struct auto_run *r, const struct auto_cand 
     }
     int missed = 0;
     for (int i = 0; i < n; i++)
-        if (strcmp(c[i].arith, p->arith) != 0 && !auto_meets(&c[i], t))
+        if (strcmp(c[i].arith, p->arith) != 0 && !auto_meets_goal(&c[i], auto_goal(r), t))
             printf("%s%s %s", missed++ ? ", " : "; arithmetic: ", c[i].label,
                    c[i].refused ? "refuses the scene" : "misses the target");
 }
@@ -660,10 +669,13 @@ static void auto_print(const struct auto_run *r, const struct auto_cand *c, int 
     const struct arith_auto_opts *o = r->o;
     const struct machine_limits *m = machine_limits(o->machine);
     char wn[40];
-    printf("%s: %s (%s%s%s, target %.1f dB; pre-render %dx%d against double", r->prog,
-           auto_name(o), o->target == ARITH_AUTO_BOARD && m ? m->name : "",
+    printf("%s: %s (%s%s%s, target %.1f dB", r->prog, auto_name(o),
+           o->target == ARITH_AUTO_BOARD && m ? m->name : "",
            o->target == ARITH_AUTO_BOARD && m ? " " : "", o->fpu ? "VFP" : "no FPU",
-           o->target_db, r->ref.width, r->ref.height);
+           o->target_db);
+    if (r->margin > 0)
+        printf(", %.1f over the whole pre-render, smaller than the render", auto_goal(r));
+    printf("; pre-render %dx%d against double", r->ref.width, r->ref.height);
     if (o->model && r->density)
         printf(" at %d density steps, min_weight %s", SCN_MAX_DENSITY_STEPS,
                auto_weight_name(ARITH_AUTO_REF_WEIGHT, wn, sizeof wn));
@@ -677,7 +689,7 @@ static void auto_print(const struct auto_run *r, const struct auto_cand *c, int 
         printf(o->model && !c[i].refused ? ": " : " ");
         if (c[i].refused)
             printf("refused (misses the target)");
-        else if (c[i].psnr < o->target_db)
+        else if (c[i].psnr < auto_goal(r))
             printf("%.1f dB", c[i].psnr);
         else if (c[i].psnr_flagged < o->target_db)
             printf(c[i].psnr_flagged > 0 ? "%.1f dB, %u flagged pixels at %.1f dB"
@@ -733,13 +745,13 @@ static int auto_choose(struct auto_run *r, struct auto_cand *c, int n)
             memcpy(c[i].arith, keep.arith, sizeof keep.arith);
             c[i].cost = -1;
         } else if ((o->model &&
-                    auto_model_search(r, &c[i], o->target_db, steps0, weight0) != 0) ||
+                    auto_model_search(r, &c[i], auto_goal(r), steps0, weight0) != 0) ||
                    auto_measure_image(r, &c[i]) != 0) {
             fprintf(stderr, "%s: %s: the %s pre-render failed\n", r->prog, auto_name(r->o),
                     c[i].label);
             return -2;
         }
-        if (o->model && auto_meets(&c[i], o->target_db)) {
+        if (o->model && auto_meets_goal(&c[i], auto_goal(r), o->target_db)) {
             steps0 = c[i].steps; /* the next candidate starts from here */
             weight0 = c[i].weight;
         }
@@ -747,11 +759,11 @@ static int auto_choose(struct auto_run *r, struct auto_cand *c, int n)
     for (int i = 0; o->model && i < n; i++)
         for (int j = 0; j < n; j++)
             if (strcmp(c[i].arith, "soft") == 0 && strcmp(c[j].arith, "float") == 0 &&
-                auto_meets(&c[j], o->target_db) && c[j].steps == c[i].steps &&
+                auto_meets_goal(&c[j], auto_goal(r), o->target_db) && c[j].steps == c[i].steps &&
                 c[j].weight == c[i].weight)
                 c[i].dearer = 1;
     for (int i = 0; i < n; i++) {
-        if (!auto_meets(&c[i], o->target_db) || c[i].dearer)
+        if (!auto_meets_goal(&c[i], auto_goal(r), o->target_db) || c[i].dearer)
             continue;
         for (int j = 0; j < i; j++)
             if (strcmp(c[j].arith, c[i].arith) == 0 && c[j].cost >= 0 &&

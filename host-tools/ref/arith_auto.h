@@ -31,6 +31,10 @@
  * host renders are cheap, the board's cost pre-render stays at
  * ARITH_AUTO_PIXELS */
 #define ARITH_AUTO_MODEL_PIXELS 19200 /* 160x120 */
+/* --auto on a render larger than its pre-render: the whole pre-render must
+ * keep this much more than the target (thin features' PSNR moves by 1-2.5
+ * dB between 160x120, 200x150 and 320x240: docs/results/arith-auto.md) */
+#define ARITH_AUTO_MARGIN_DB 2.0
 #define ARITH_AUTO_TIE 0.01         /* costs this close count as equal */
 #define ARITH_AUTO_NCS 2            /* NCs of the board pre-render (the count is their sum) */
 /* --auto: the reference model (SCN_MAX_DENSITY_STEPS steps, the lowest
