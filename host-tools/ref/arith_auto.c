@@ -46,6 +46,9 @@ struct auto_cand {
     double looser_steps_db, looser_weight_db;
     int looser_steps;
     double looser_weight;
+    int looser_flagged;  /* looser_weight_db is the PSNR of the flagged pixels there */
+    int few_flagged;     /* --auto: under ARITH_AUTO_MIN_FLAGGED of the pixels
+                            flagged: judged with the whole image */
     int dearer;          /* --auto: soft beside a float that keeps the target, not
                             counted (float's code, each VFP instruction a call) */
 };
@@ -352,6 +355,7 @@ static int auto_measure_image(const struct auto_run *r, struct auto_cand *c)
         }
         image_error_flagged(&same, &a, &m, &all, &c->psnr_flagged, &flagged);
         image_free(&same);
+        c->few_flagged = (double)flagged < ARITH_AUTO_MIN_FLAGGED * a.width * a.height;
     }
     if (compiled && lost > 0)
         c->psnr_flagged = 0;
@@ -470,6 +474,15 @@ static int auto_rung(double v, const double *ladder, int n)
     return i;
 }
 
+/* The rung of min_weight w */
+static int auto_rung_weight(double w)
+{
+    int j = 0;
+    while (j < AUTO_N_WEIGHTS - 1 && auto_weight(j) < w)
+        j++;
+    return j;
+}
+
 /* --auto for one candidate: from a model (steps0, weight0: the scene's,
  * or the last candidate's that kept the target), density steps down while
  * the pre-render keeps the target (up until it does), at the lowest
@@ -562,7 +575,7 @@ static double auto_goal(const struct auto_run *r)
 
 static int auto_meets_goal(const struct auto_cand *c, double goal, double target)
 {
-    return c->measured && c->psnr >= goal && c->psnr_flagged >= target;
+    return c->measured && c->psnr >= goal && (c->psnr_flagged >= target || c->few_flagged);
 }
 
 /* The pre-render size: the render's size scaled to at most
@@ -645,7 +658,9 @@ static void auto_print_binding(const struct auto_run *r, const struct auto_cand 
     char s_why[96], w_why[96];
     snprintf(s_why, sizeof s_why, "density steps (%d give %.1f dB)", p->looser_steps,
              p->looser_steps_db);
-    snprintf(w_why, sizeof w_why, "min_weight (%s gives %.1f dB)",
+    snprintf(w_why, sizeof w_why,
+             p->looser_flagged ? "min_weight (%s leaves flagged pixels at %.1f dB)"
+                               : "min_weight (%s gives %.1f dB)",
              auto_weight_name(p->looser_weight, wn, sizeof wn), p->looser_weight_db);
     if (steps && weight) {
         int sf = p->looser_steps_db <= p->looser_weight_db;
@@ -691,6 +706,9 @@ static void auto_print(const struct auto_run *r, const struct auto_cand *c, int 
             printf("refused (misses the target)");
         else if (c[i].psnr < auto_goal(r))
             printf("%.1f dB", c[i].psnr);
+        else if (c[i].psnr_flagged < o->target_db && c[i].few_flagged)
+            printf("%.1f dB (%u flagged pixels at %.1f dB, under %g%%: judged with the whole image)",
+                   c[i].psnr, c[i].lost, c[i].psnr_flagged, 100 * ARITH_AUTO_MIN_FLAGGED);
         else if (c[i].psnr_flagged < o->target_db)
             printf(c[i].psnr_flagged > 0 ? "%.1f dB, %u flagged pixels at %.1f dB"
                                          : "%.1f dB, %u flagged pixels (unchecked in a compiled scene)",
@@ -750,6 +768,20 @@ static int auto_choose(struct auto_run *r, struct auto_cand *c, int n)
             fprintf(stderr, "%s: %s: the %s pre-render failed\n", r->prog, auto_name(r->o),
                     c[i].label);
             return -2;
+        }
+        /* --auto: pixels flagged beyond the target at the weight found (the
+         * search looked at the whole image): min_weight down until they
+         * keep it */
+        for (int j = auto_rung_weight(c[i].weight);
+             o->model && j > 0 && c[i].measured && c[i].psnr >= auto_goal(r) &&
+             c[i].psnr_flagged < o->target_db && !c[i].few_flagged;
+             j--) {
+            c[i].looser_weight = c[i].weight;
+            c[i].looser_weight_db = c[i].psnr_flagged;
+            c[i].looser_flagged = 1;
+            c[i].weight = auto_weight(j - 1);
+            if (auto_measure_image(r, &c[i]) != 0)
+                return -2;
         }
         if (o->model && auto_meets_goal(&c[i], auto_goal(r), o->target_db)) {
             steps0 = c[i].steps; /* the next candidate starts from here */

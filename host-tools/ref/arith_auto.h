@@ -35,6 +35,11 @@
  * keep this much more than the target (thin features' PSNR moves by 1-2.5
  * dB between 160x120, 200x150 and 320x240: docs/results/arith-auto.md) */
 #define ARITH_AUTO_MARGIN_DB 2.0
+/* --auto: the flagged pixels must keep the target on their own when they
+ * are at least this share of the pre-render; a PSNR over fewer (4 of
+ * 19200 on tir_chain 1 in float) says little, and the whole image judges
+ * them */
+#define ARITH_AUTO_MIN_FLAGGED 0.001
 #define ARITH_AUTO_TIE 0.01         /* costs this close count as equal */
 #define ARITH_AUTO_NCS 2            /* NCs of the board pre-render (the count is their sum) */
 /* --auto: the reference model (SCN_MAX_DENSITY_STEPS steps, the lowest
