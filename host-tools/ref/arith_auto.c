@@ -243,6 +243,7 @@ static void auto_knobs(const struct auto_run *r, int steps, double weight,
                        struct auto_knob_words *k)
 {
     int n = 0;
+    memset(k->w, 0, sizeof k->w);
     if (steps >= 0 && r->density) {
         snprintf(k->steps, sizeof k->steps, "%d", steps);
         k->w[n++] = "--density-steps";
