@@ -22,7 +22,8 @@
 # Writes DIR/auto_model.tsv and DIR/auto_model.md and prints per unit
 # computer: picks, picks below TARGET at SIZE, the largest pick / best.
 #   bash tests/sweeps/auto_model.sh [--out DIR]
-# KNOBS=ends: only the first and last knob of each family; FAMILIES="a b":
+# KNOBS=ends: only the first and last knob of each family (inner: the
+# others); FAMILIES="a b":
 # only those families, in that order.
 set -u
 cd "$(dirname "$0")/../.."
@@ -127,6 +128,7 @@ for entry in "${order[@]}"; do
     IFS='|' read -r family knobs _ _ <<<"$entry"
     read -ra kl <<<"$knobs"
     [ "$KNOBS" = ends ] && kl=("${kl[0]}" "${kl[${#kl[@]} - 1]}")
+    [ "$KNOBS" = inner ] && kl=("${kl[@]:1:${#kl[@]}-2}")
     for knob in "${kl[@]}"; do
         scn=$work/$family-$knob.scn
         family_scene "$family" "$knob" "$SIZE" >"$scn" || exit 1
