@@ -27,7 +27,8 @@ BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
 	tests/board/render_progress.sh tests/board/render_faults.sh tests/board/render_faults_silent.sh \
 	tests/board/render_resume.sh tests/board/render_link_noise.sh \
 	tests/board/render_trace.sh tests/board/render_refraction.sh tests/board/figures_small.sh \
-	tests/board/render_scaled.sh tests/board/render_auto.sh tests/board/render_density_steps.sh \
+	tests/board/render_scaled.sh tests/board/render_auto.sh tests/board/render_auto_model.sh \
+	tests/board/render_density_steps.sh \
 	tests/board/render_lights.sh tests/board/render_paper.sh tests/board/an521.sh \
 	tests/board/render_view_keys.sh tests/board/render_film.sh \
 	tests/board/farm.sh tests/board/render_maps.sh tests/board/an521_named.sh \

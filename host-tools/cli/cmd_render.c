@@ -68,7 +68,8 @@ struct render_opts {
     int resume;                   /* --resume: frames already written are kept */
     int fps;                      /* --fps N: a film's frames a second */
     const char *trace;  /* --trace FILE */
-    int arith_auto, fpu; /* --arith auto, --fpu vfp|none (-1: not given) */
+    int arith_auto, fpu; /* --arith auto (or --auto), --fpu vfp|none (-1: not given) */
+    int model_auto, arith_named; /* --auto; --arith given */
     double target_db;    /* --target-db D (-1: not given) */
     struct render_wall wall; /* where the command's wall time went */
     uint32_t traced_w, traced_h, traced_bytes; /* the traced frame's size, broadcast */
@@ -88,6 +89,9 @@ static void render_usage(FILE *out)
             "                   keeps --target-db D (default 40) dB against double on a\n"
             "                   low-resolution pre-render, for a unit computer with VFP or,\n"
             "                   with --fpu none, without (docs/renderer.md)\n"
+            "  --auto           the arithmetic, min_weight and density steps together: the\n"
+            "                   cheapest that keeps --target-db D against double at the most\n"
+            "                   accurate model, and why (docs/renderer.md, \"--auto\")\n"
             "  --balance M      static, dynamic, decreasing (default) or lines: simple dynamic\n"
             "                   on whole and partial scanlines (the paper's job unit)\n"
             "  --areas K        areas of the dynamic or lines grid (default %d); smallest-area bound of\n"
@@ -197,6 +201,7 @@ enum render_opt_code {
     RENDER_OPT_PAPER,
     RENDER_OPT_FPS,
     RENDER_OPT_ESCALATE,
+    RENDER_OPT_AUTO,
 };
 
 static const struct option render_options[] = {
@@ -240,6 +245,7 @@ static const struct option render_options[] = {
     {"paper", no_argument, NULL, RENDER_OPT_PAPER},
     {"fps", required_argument, NULL, RENDER_OPT_FPS},
     {"escalate", no_argument, NULL, RENDER_OPT_ESCALATE},
+    {"auto", no_argument, NULL, RENDER_OPT_AUTO},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -440,6 +446,9 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
         o->args.flags |= LINK_RENDER_ESCALATE;
         o->board.escalate = 1;
         return 0;
+    case RENDER_OPT_AUTO:
+        o->model_auto = o->arith_auto = 1;
+        return 0;
     }
     return -1; /* CLI_BAD: reported already */
 }
@@ -453,7 +462,7 @@ static int render_escalate_check(const struct render_opts *o)
         return 0;
     const char *a = o->board.arith;
     const char *why =
-        o->arith_auto ? "an arithmetic given, float or fixed (not --arith auto)"
+        o->arith_auto ? "an arithmetic given, float or fixed (not --arith auto or --auto)"
         : o->board.machine != MACHINE_VIRT
             ? "the virt board (the an521 boards have no escalating firmware: their M33s' FPU is "
               "single precision, so double would be software there, and none is built)"
@@ -471,17 +480,27 @@ static int render_auto_check(const struct render_opts *o)
 {
     if (!o->arith_auto) {
         if (o->fpu >= 0 || o->target_db >= 0) {
-            fprintf(stderr, "links1 render: --fpu and --target-db go with --arith auto\n");
+            fprintf(stderr,
+                    "links1 render: --fpu and --target-db go with --arith auto (or --auto)\n");
             return -1;
         }
         return 0;
     }
+    const char *chosen = o->arith_named ? "--arith" : o->scene.min_weight >= 0 ? "--min-weight"
+                         : o->scene.density_steps >= 0 ? "--density-steps"
+                         : o->scene.paper ? "--paper" : NULL;
+    if (o->model_auto && chosen) {
+        fprintf(stderr, "links1 render: --auto chooses the arithmetic, min_weight and density "
+                "steps, so it takes no %s (--arith auto chooses the arithmetic alone)\n", chosen);
+        return -1;
+    }
+    const char *what = o->model_auto ? "--auto" : "--arith auto";
     const char *why = o->njobs > 1 ? "one SCENE (it chooses per scene)"
                       : o->board_name ? "a board of its own, not --board"
                       : o->board.firmware ? "no --firmware (it chooses the firmware)"
                       : NULL;
     if (why)
-        fprintf(stderr, "links1 render: --arith auto takes %s\n", why);
+        fprintf(stderr, "links1 render: %s takes %s\n", what, why);
     return why ? -1 : 0;
 }
 
@@ -499,10 +518,16 @@ static int render_auto_pick(struct render_opts *o)
         .width = o->scene.width,
         .height = o->scene.height,
         .words = w.words,
+        .model = o->model_auto,
     };
     if (arith_auto_pick("links1 render", o->jobs[0].scene, &ao, &pick) != 0)
         return -1;
     o->board.arith = pick.arith;
+    /* --auto: the model picked (render_main compiles the scene again) */
+    if (pick.density_steps >= 0)
+        o->scene.density_steps = pick.density_steps;
+    if (pick.min_weight >= 0)
+        o->scene.min_weight = pick.min_weight;
     return 0;
 }
 
@@ -523,6 +548,7 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
     cli_init(&c, "links1 render", argc, argv, "o:h", render_options);
     for (int code; (code = cli_next(&c)) != -1;) {
         o->arith_auto |= code == BOARD_OPT_ARITH && strcmp(c.arg, "auto") == 0;
+        o->arith_named |= code == BOARD_OPT_ARITH;
         int auto_arith = code == BOARD_OPT_ARITH && o->arith_auto;
         int r = code == BOARD_OPT_SMP || auto_arith ? 0 : board_opt(&o->board, &c, code);
         if (auto_arith)
@@ -623,8 +649,10 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
  * printing why a scene cannot be read or compiled. */
 static void render_free_scenes(struct render_opts *o)
 {
-    for (int j = 0; j < o->njobs; j++)
+    for (int j = 0; j < o->njobs; j++) {
         free(o->jobs[j].bytes);
+        o->jobs[j].bytes = NULL;
+    }
 }
 
 static int render_read_scenes(struct render_opts *o)
@@ -972,7 +1000,8 @@ int cmd_render(int argc, char **argv)
     int r = render_parse(&o, argc, argv);
     if (r != 0)
         return r > 0 ? 0 : 2;
-    if (render_read_scenes(&o) != 0 || (o.arith_auto && render_auto_pick(&o) != 0)) {
+    if (render_read_scenes(&o) != 0 || (o.arith_auto && render_auto_pick(&o) != 0) ||
+        (o.model_auto && (render_free_scenes(&o), render_read_scenes(&o) != 0))) {
         render_free_scenes(&o);
         return 1;
     }

@@ -175,6 +175,7 @@ static const struct option ref_cmd_options[] = {
     {"arith", required_argument, NULL, REF_OPT_ARITH},
     {"fpu", required_argument, NULL, REF_OPT_FPU},
     {"target-db", required_argument, NULL, REF_OPT_TARGET_DB},
+    {"auto", no_argument, NULL, REF_OPT_AUTO},
     {NULL, 0, NULL, 0},
 };
 
@@ -183,8 +184,9 @@ static const struct option ref_cmd_options[] = {
  * --arith auto first chooses the build (arith_auto.c). */
 int scene_cmd_ref(int argc, char **argv)
 {
-    const char *arith = "double";
-    char **args = calloc((size_t)argc + 2, sizeof *args);
+    const char *arith = "double", *model_word = NULL; /* an option --auto chooses */
+    int model = 0, arith_given = 0;
+    char **args = calloc((size_t)argc + 6, sizeof *args);
     const char **words = calloc((size_t)argc + 4, sizeof *words); /* the pre-render's */
     if (!args || !words) {
         fprintf(stderr, "links1 ref: out of memory\n");
@@ -208,6 +210,10 @@ int scene_cmd_ref(int argc, char **argv)
             continue;
         case REF_OPT_ARITH:
             arith = c.arg;
+            arith_given = 1;
+            continue;
+        case REF_OPT_AUTO:
+            model = 1;
             continue;
         case REF_OPT_FPU:
             if ((fpu = arith_auto_fpu(c.arg)) < 0)
@@ -229,13 +235,15 @@ int scene_cmd_ref(int argc, char **argv)
                 words[nw++] = first;
             }
             break;
-        case REF_OPT_MAX_DEPTH:
         case REF_OPT_MIN_WEIGHT:
         case REF_OPT_DENSITY_STEPS:
+        case REF_OPT_PAPER:
+            model_word = argv[from];
+            /* fall through */
+        case REF_OPT_MAX_DEPTH:
         case REF_OPT_REFRACTION:
         case REF_OPT_REFRACTIONLESS:
         case REF_OPT_NO_AUTO_HIERARCHY:
-        case REF_OPT_PAPER:
         case REF_OPT_FRAME:
             for (int k = from; k < optind; k++)
                 words[nw++] = argv[k];
@@ -247,9 +255,17 @@ int scene_cmd_ref(int argc, char **argv)
     }
     args[n] = NULL;
     words[nw] = NULL;
+    if (!bad && model && (arith_given || model_word)) {
+        fprintf(stderr, "links1 ref: --auto chooses the arithmetic, min_weight and density "
+                "steps, so it takes no %s (--arith auto chooses the arithmetic alone)\n",
+                arith_given ? "--arith" : model_word);
+        bad = 1;
+    }
+    if (model)
+        arith = "auto";
     int is_auto = strcmp(arith, "auto") == 0;
     if (!bad && !is_auto && (fpu >= 0 || target >= 0)) {
-        fprintf(stderr, "links1 ref: --fpu and --target-db go with --arith auto\n");
+        fprintf(stderr, "links1 ref: --fpu and --target-db go with --arith auto (or --auto)\n");
         bad = 1;
     }
     if (bad) {
@@ -264,6 +280,7 @@ int scene_cmd_ref(int argc, char **argv)
         ao.fpu = fpu < 0 ? 1 : fpu;
         ao.target_db = target < 0 ? ARITH_AUTO_TARGET_DB : target;
         ao.words = words;
+        ao.model = model;
         if (arith_auto_pick("links1 ref", scene, &ao, &pick) != 0) {
             free(args);
             free(words);
@@ -271,6 +288,18 @@ int scene_cmd_ref(int argc, char **argv)
         }
         arith = pick.build;
     }
+    char steps[16], weight[40]; /* --auto's model, after the words given */
+    if (is_auto && scene && pick.density_steps >= 0) {
+        snprintf(steps, sizeof steps, "%d", pick.density_steps);
+        args[n++] = "--density-steps";
+        args[n++] = steps;
+    }
+    if (is_auto && scene && pick.min_weight >= 0) {
+        snprintf(weight, sizeof weight, "%.17g", pick.min_weight);
+        args[n++] = "--min-weight";
+        args[n++] = weight;
+    }
+    args[n] = NULL;
     free(words);
     const char *build = arith;
     int arith_code = is_auto ? ARITH_FIXED : arith_from_name(arith); /* a build, by name */

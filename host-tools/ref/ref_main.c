@@ -46,6 +46,9 @@ static int ref_usage(FILE *out, int status)
                  "  --arith auto [--fpu vfp|none] [--target-db D]: the cheapest arithmetic of a\n"
                  "  unit computer with VFP (or none) that keeps D dB (default 40) against double,\n"
                  "  judged from a low-resolution pre-render (docs/renderer.md)\n"
+                 "  --auto [--fpu vfp|none] [--target-db D]: the arithmetic, min_weight and\n"
+                 "  density steps together: the cheapest that keeps D dB against double at the\n"
+                 "  most accurate model, and which knob binds (docs/renderer.md, \"--auto\")\n"
                  "  (this is the %s build)\n",
             FILM_DEFAULT_FPS, NUM_NAME);
     return status;

@@ -23,6 +23,7 @@ enum ref_opt_code {
     REF_OPT_ARITH, /* links1 ref only, with the two below */
     REF_OPT_FPU,
     REF_OPT_TARGET_DB,
+    REF_OPT_AUTO, /* links1 ref only: --auto */
 };
 
 #define REF_SHORT_OPTIONS "o:h"

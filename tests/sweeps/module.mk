@@ -26,3 +26,14 @@ sweeps-auto: deps
 	$(Q)bash tests/sweeps/auto.sh --out $(B)/sweeps-auto
 	$(Q)mkdir -p docs/figures && cp $(B)/sweeps-auto/auto.tsv docs/figures/sweep-auto.tsv && \
 		cp $(B)/sweeps-auto/auto.md docs/figures/sweep-auto.md
+
+# make sweeps-auto-model: --auto (arithmetic, min_weight and density steps)
+# on every sweep scene against the cheapest configuration that keeps 40 dB
+# at full size (tests/sweeps/auto_model.sh; docs/results/arith-auto.md).
+.PHONY: sweeps-auto-model
+sweeps-auto-model: deps
+	$(Q)$(MAKE) $(JOBS) --no-print-directory all
+	$(Q)bash tests/sweeps/auto_model.sh --out $(B)/sweeps-auto-model
+	$(Q)mkdir -p docs/figures && \
+		cp $(B)/sweeps-auto-model/auto_model.tsv docs/figures/sweep-auto-model.tsv && \
+		cp $(B)/sweeps-auto-model/auto_model.md docs/figures/sweep-auto-model.md
