@@ -193,7 +193,12 @@ enum scn_section {
  * (lines areas, asking when finished, the clipping lists); the renderer
  * takes no notice of it, the rest of paper mode is compiled in already. */
 #define SCN_OPT_PAPER 0x0100u
-#define SCN_OPT_KNOWN 0x01ffu
+/* CHECK_LOST: a pixel that lost precision is traced again in double
+ * (render/wide.h) and counts as lost (painted, with MARK_LOST) only when
+ * its colour is more than RENDER_CHECK_LOST_STEPS/255 off double's
+ * (--check-lost); it keeps its own colour. */
+#define SCN_OPT_CHECK_LOST 0x0200u
+#define SCN_OPT_KNOWN 0x03ffu
 
 /* ------------------------------------------------------- LIGHTS record */
 #define SCN_LIGHT_SIZE 48

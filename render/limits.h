@@ -132,6 +132,10 @@
  * fixed point's bounds missed 10 pixels beyond 2/255 of double, in
  * secondary rays: 3 at 8 times, none at 16.  Float's missed one, an edge
  * moved by under a pixel, at 1 and at 16 alike (docs/renderer.md). */
+/* --check-lost (render_options_t.check_lost): a pixel that lost precision
+ * stays lost when its double colour is more than this many 1/255 steps
+ * away in a channel: what RENDER_LOST_MEANING calls off. */
+#define RENDER_CHECK_LOST_STEPS 2
 #ifndef RENDER_ESCALATE_MARGIN
 #ifdef LINKS1_NUM_FIXED
 #define RENDER_ESCALATE_MARGIN 16

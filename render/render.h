@@ -47,6 +47,12 @@ typedef struct {
     "bound is a worst case, so most such pixels are right (--mark-lost paints them, links1 " \
     "compare --flags scores them against a double render)"
 
+/* The same with --check-lost (render_options_t.check_lost). */
+#define RENDER_CHECKED_MEANING                                                              \
+    "with --check-lost a pixel counts as lost precision only when the double build, "      \
+    "tracing it again, gives a colour more than 2/255 away: every such pixel is that far " \
+    "off, and the image keeps this arithmetic's colours"
+
 /* Axis-aligned box; empty when lo.x > hi.x. */
 typedef struct {
     vec3_t lo, hi;

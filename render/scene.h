@@ -287,6 +287,11 @@ typedef struct {
                                a light passes trc(th) F of it (tinted); 0:
                                trc(th) alone, its transmissivity (the text
                                form's default; SCN_OPT_UNTINTED_SHADOWS) */
+    uint8_t check_lost;     /* 1: a pixel that lost precision is checked in
+                               the wide arithmetic (render/wide.h) and
+                               counts as lost only when it is more than
+                               RENDER_CHECK_LOST_STEPS/255 off there; it
+                               keeps its colour (SCN_OPT_CHECK_LOST) */
     uint16_t density_steps; /* equal steps of a density sphere's root finder,
                                SCN_MIN_DENSITY_STEPS..SCN_MAX_DENSITY_STEPS
                                (render/prim.c; render_prim_t.density_steps) */

@@ -703,29 +703,45 @@ static __attribute__((noinline)) rgb8_t render_pixel_impl(render_ctx_t *ctx, uin
     rgb_t c = found ? trace_shade(ctx, &ray, &err, &hit, 0, NUM_ONE) : f->scene->background;
     if (rgb_is_sat(c))
         ctx->pixel_lost = 1;
+    rgb8_t out = {num_to_u8(c.r), num_to_u8(c.g), num_to_u8(c.b)};
     if (ctx->pixel_lost && ctx->escalate) /* settled by the caller: render_pixel_settled */
-        return (rgb8_t){0, 0, 0};
+        return out;
     if (ctx->pixel_lost) {
         ctx->stats.precision_lost_pixels++;
         if (ctx->options.mark_lost)
             return RENDER_LOST_COLOUR;
     }
-    rgb8_t out = {num_to_u8(c.r), num_to_u8(c.g), num_to_u8(c.b)};
     return out;
 }
 
+/* 1 when a and b differ by more than RENDER_CHECK_LOST_STEPS in a channel. */
+static int rgb8_apart(rgb8_t a, rgb8_t b)
+{
+    int d[3] = {a.r - b.r, a.g - b.g, a.b - b.b};
+    for (int i = 0; i < 3; i++)
+        if (d[i] > RENDER_CHECK_LOST_STEPS || d[i] < -RENDER_CHECK_LOST_STEPS)
+            return 1;
+    return 0;
+}
+
 /* A pixel that lost precision, with ctx->escalate set: traced again in
- * the wide arithmetic, whose colour (and loss) it takes. */
+ * the wide arithmetic, whose colour (and loss) it takes; with
+ * options.check_lost it keeps its own colour c and stays lost only when
+ * the wide one is apart from it (or lost too). */
 static rgb8_t render_pixel_settled(render_ctx_t *ctx, uint32_t x, uint32_t y, rgb8_t c)
 {
     if (!ctx->escalate || !ctx->pixel_lost)
         return c;
     uint8_t lost = 0;
-    c = ctx->escalate(ctx->escalate_arg, x, y, &lost);
+    rgb8_t wide = ctx->escalate(ctx->escalate_arg, x, y, &lost);
     ctx->stats.escalated_pixels++;
+    if (ctx->options.check_lost)
+        lost = lost || rgb8_apart(c, wide);
     ctx->stats.precision_lost_pixels += lost != 0;
     ctx->pixel_lost = lost != 0;
-    return c;
+    if (!ctx->options.check_lost)
+        return wide;
+    return lost && ctx->options.mark_lost ? RENDER_LOST_COLOUR : c;
 }
 
 rgb8_t render_pixel(render_ctx_t *ctx, uint32_t x, uint32_t y)

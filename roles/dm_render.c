@@ -40,6 +40,8 @@ static struct {
     uint16_t width, height;
     uint32_t frames;
     uint32_t max_depth;   /* the scene's recursion depth: the NCs' stack */
+    int check_lost;       /* the scene asks its lost pixels checked in the
+                             wide arithmetic: every frame has a wide blob */
     uint32_t blob_bytes;  /* render_blob_bytes bound */
     int32_t prepared;     /* frame prepared in the block the DM holds, or -1 */
     uint32_t prepare_ms;  /* what preparing it took, wherever it was done
@@ -281,6 +283,7 @@ void dm_cmd_scene_load(uint16_t cmd)
     dm_scene.height = blob->scene.height;
     dm_scene.frames = blob->scene.frame_count;
     dm_scene.max_depth = blob->scene.options.max_depth;
+    dm_scene.check_lost = blob->scene.options.check_lost;
     dm_scene.blob_bytes = (uint32_t)blob->bound;
     struct link_scene_info info = {dm_scene.width, dm_scene.height, dm_scene.frames, len,
                                    (uint32_t)blob->bound, (uint32_t)imsu_dm_rc.size};
@@ -397,7 +400,7 @@ void dm_cmd_render(uint16_t cmd)
                        (unsigned)a.flags, (unsigned)a.guided, (unsigned)a.clip);
         return;
     }
-    int escalate = (a.flags & LINK_RENDER_ESCALATE) != 0;
+    int escalate = (a.flags & LINK_RENDER_ESCALATE) || dm_scene.check_lost;
     if (escalate && dm_escalation_fits(cmd) != 0)
         return;
     render_blob_error_t err;

@@ -111,8 +111,10 @@ static int nc_setup_wide(struct nc_job *job, const uint8_t *block, const render_
     }
     void *mem = kmem_alloc(bytes, "wide context");
     const render_options_t *o = &job->ctx.options;
+    /* checking, the wide colour is compared, never painted */
     if (RENDER_WIDE(wide_ctx_open)(mem, block + at, imsu_rc_ncs.size - at, o->use_bounds,
-                                   o->use_hierarchy, o->mark_lost, why, cap) != 0)
+                                   o->use_hierarchy, o->mark_lost && !o->check_lost, why,
+                                   cap) != 0)
         return -1;
     job->wide = mem;
     render_wide_escalate(&job->ctx, mem);
@@ -161,7 +163,8 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, uint8_t
     job->ctx.options.use_bounds = !(flags & LINK_RENDER_NO_BBOX);
     job->ctx.options.use_hierarchy = !(flags & LINK_RENDER_NO_HIERARCHY);
     job->wide = NULL;
-    if ((flags & LINK_RENDER_ESCALATE) && nc_setup_wide(job, block, blob, why, cap) != 0) {
+    if (((flags & LINK_RENDER_ESCALATE) || blob->frame->options.check_lost) &&
+        nc_setup_wide(job, block, blob, why, cap) != 0) {
         imsu_bcast_read_end(&imsu_rc_ncs, me);
         return -1;
     }

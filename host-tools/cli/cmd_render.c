@@ -123,6 +123,9 @@ static void render_usage(FILE *out)
             "  --mark-lost      paint pixels that lost precision magenta (text scenes)\n"
             "  --escalate       trace a pixel that lost precision again in double, on the\n"
             "                   same NC (float or fixed on virt: links1-<arith>-esc.elf)\n"
+            "  --check-lost     trace it again in double only to check it: a pixel counts\n"
+            "                   as lost (and --mark-lost paints it) when double is more\n"
+            "                   than 2/255 away; the image keeps this arithmetic's colours\n"
             "  --paper          paper mode (as options { paper on }): every choice the paper\n"
             "                   made: src/trc by angle, a fixed depth (min_weight 0), --balance\n"
             "                   lines --areas HEIGHT, --ask finished, --clip lists, no\n"
@@ -201,6 +204,7 @@ enum render_opt_code {
     RENDER_OPT_PAPER,
     RENDER_OPT_FPS,
     RENDER_OPT_ESCALATE,
+    RENDER_OPT_CHECK_LOST,
     RENDER_OPT_AUTO,
 };
 
@@ -245,6 +249,7 @@ static const struct option render_options[] = {
     {"paper", no_argument, NULL, RENDER_OPT_PAPER},
     {"fps", required_argument, NULL, RENDER_OPT_FPS},
     {"escalate", no_argument, NULL, RENDER_OPT_ESCALATE},
+    {"check-lost", no_argument, NULL, RENDER_OPT_CHECK_LOST},
     {"auto", no_argument, NULL, RENDER_OPT_AUTO},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
@@ -446,6 +451,10 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
         o->args.flags |= LINK_RENDER_ESCALATE;
         o->board.escalate = 1;
         return 0;
+    case RENDER_OPT_CHECK_LOST:
+        o->scene.check_lost = 1; /* the NCs open the double copy for it */
+        o->board.escalate = 1;   /* the firmware that carries it */
+        return 0;
     case RENDER_OPT_AUTO:
         o->model_auto = o->arith_auto = 1;
         return 0;
@@ -471,7 +480,7 @@ static int render_escalate_check(const struct render_opts *o)
                                    "an FPU, which has no double to escalate to"
                                  : NULL;
     if (why)
-        fprintf(stderr, "links1 render: --escalate needs %s\n", why);
+        fprintf(stderr, "links1 render: --escalate and --check-lost need %s\n", why);
     return why ? -1 : 0;
 }
 
@@ -694,13 +703,13 @@ static void render_schedule_name(const struct link_render_args *a, uint32_t ncs,
 
 static void render_summary(const char *path, const struct link_render_stats *s,
                            const struct image *img, const struct link_render_args *a,
-                           double seconds, long long upload_ms, long long pull_ms)
+                           int checked, double seconds, long long upload_ms, long long pull_ms)
 {
     char sched[160], escalated[64] = "";
     render_schedule_name(a, s->ncs, sched, sizeof sched);
-    if (a->flags & LINK_RENDER_ESCALATE)
-        snprintf(escalated, sizeof escalated, "%u pixels escalated to double, ",
-                 s->escalated_pixels);
+    if ((a->flags & LINK_RENDER_ESCALATE) || checked)
+        snprintf(escalated, sizeof escalated, "%u pixels %s double, ", s->escalated_pixels,
+                 checked ? "checked in" : "escalated to");
     printf("links1 render: frame %u %dx%d -> %s: %u NCs, %u areas (%s), %.1f s "
            "(board: prepare %u ms, render %u ms; upload %lld ms, pull %lld ms); rays %llu primary, %llu shadow, "
            "%llu reflection, %llu refraction, %llu transmission; tests %llu box, %llu primitive "
@@ -716,7 +725,7 @@ static void render_summary(const char *path, const struct link_render_stats *s,
     static int lost_told; /* the meaning, once a command */
     if (s->precision_lost_pixels && !lost_told) {
         lost_told = 1;
-        printf("links1 render: %s\n", RENDER_LOST_MEANING);
+        printf("links1 render: %s\n", checked ? RENDER_CHECKED_MEANING : RENDER_LOST_MEANING);
     }
     fflush(stdout);
 }
@@ -926,7 +935,8 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         }
         o->wall.write += board_now_ms() - t2;
         /* The scene's upload time is told with its first frame. */
-        render_summary(path, &s, &img, &a, (double)(board_now_ms() - t0) / 1000.0,
+        render_summary(path, &s, &img, &a, o->scene.check_lost,
+                       (double)(board_now_ms() - t0) / 1000.0,
                        f == first ? upload_ms : 0, pull_ms);
         o->traced_w = (uint32_t)img.width;
         o->traced_h = (uint32_t)img.height;

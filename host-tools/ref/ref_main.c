@@ -40,6 +40,8 @@ static int ref_usage(FILE *out, int status)
                  "  [--mark-lost]  (paint pixels that lost precision magenta)\n"
                  "  [--escalate]  (trace a pixel that lost precision again in double, as the\n"
                  "  board's --escalate does; float and fixed)\n"
+                 "  [--check-lost]  (trace it again in double only to check it: it counts as\n"
+                 "  lost, and --mark-lost paints it, when double is more than 2/255 away)\n"
                  "  [--paper]  (the scene's part of paper mode, as links1 render --paper)\n"
                  "  an OUT ending in .mp4, .webm or .apng is one film of the frames, piped to\n"
                  "  ffmpeg at %d a second (as links1 render does)\n"
@@ -171,7 +173,7 @@ static int ref_wide_frame(const char *in, struct ref_wide *w, long frame, render
     const render_options_t *o = &ctx->options;
     if (RENDER_WIDE(wide_blob_prepare)(w->block, (uint32_t)frame, w->size, why, sizeof why) != 0 ||
         RENDER_WIDE(wide_ctx_open)(w->ctx, w->block, w->size, o->use_bounds, o->use_hierarchy,
-                                   o->mark_lost, why, sizeof why) != 0) {
+                                   o->mark_lost && !o->check_lost, why, sizeof why) != 0) {
         fprintf(stderr, "links1 ref: %s frame %ld: --escalate: %s\n", in, frame, why);
         return -1;
     }
@@ -230,8 +232,10 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     char escalated[64] = "";
     if (wide) {
         RENDER_WIDE(wide_stats_add)(wide->ctx, &ctx.stats); /* the escalations' rays */
-        snprintf(escalated, sizeof escalated, "%u pixels escalated to %s, ",
-                 (unsigned)ctx.stats.escalated_pixels, RENDER_WIDE(wide_arith_name));
+        snprintf(escalated, sizeof escalated, "%u pixels %s %s, ",
+                 (unsigned)ctx.stats.escalated_pixels,
+                 ctx.options.check_lost ? "checked in" : "escalated to",
+                 RENDER_WIDE(wide_arith_name));
     }
     double secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
     double cpu = (double)(c1.tv_sec - c0.tv_sec) + 1e-9 * (double)(c1.tv_nsec - c0.tv_nsec);
@@ -259,7 +263,8 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     static int lost_told; /* the meaning, once a command */
     if (rc == 0 && ctx.stats.precision_lost_pixels && !lost_told) {
         lost_told = 1;
-        fprintf(stderr, "links1 ref: %s\n", RENDER_LOST_MEANING);
+        fprintf(stderr, "links1 ref: %s\n",
+                ctx.options.check_lost ? RENDER_CHECKED_MEANING : RENDER_LOST_MEANING);
     }
     free(row);
     image_free(&img);
@@ -303,6 +308,10 @@ static int ref_parse(int argc, char **argv, struct ref_args *a)
             break;
         case REF_OPT_ESCALATE:
             a->escalate = 1;
+            break;
+        case REF_OPT_CHECK_LOST:
+            a->escalate = 1; /* the wide copy, to check with */
+            a->scene.check_lost = 1;
             break;
         case REF_OPT_REFRACTION:
             if (strcmp(c.arg, "on") != 0 && strcmp(c.arg, "off") != 0)

@@ -20,6 +20,7 @@ enum ref_opt_code {
     REF_OPT_REFRACTIONLESS,
     REF_OPT_PAPER,
     REF_OPT_ESCALATE,
+    REF_OPT_CHECK_LOST,
     REF_OPT_ARITH, /* links1 ref only, with the two below */
     REF_OPT_FPU,
     REF_OPT_TARGET_DB,
@@ -41,6 +42,7 @@ enum ref_opt_code {
     {"refractionless", required_argument, NULL, REF_OPT_REFRACTIONLESS}, \
     {"paper", no_argument, NULL, REF_OPT_PAPER}, \
     {"escalate", no_argument, NULL, REF_OPT_ESCALATE}, \
+    {"check-lost", no_argument, NULL, REF_OPT_CHECK_LOST}, \
     {"help", no_argument, NULL, 'h'}
 
 #endif

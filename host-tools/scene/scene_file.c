@@ -21,6 +21,7 @@ void scene_file_opts_init(struct scene_file_opts *o)
     o->refraction = -1;
     o->no_auto_hierarchy = 0;
     o->mark_lost = 0;
+    o->check_lost = 0;
     o->paper = 0;
     o->machine = MACHINE_VIRT;
 }
@@ -61,6 +62,8 @@ static int scene_file_compile(const char *path, const struct scene_file_opts *o,
         s.no_auto_hierarchy = 1;
     if (o->mark_lost)
         s.view.flags |= SCN_OPT_MARK_LOST;
+    if (o->check_lost)
+        s.view.flags |= SCN_OPT_CHECK_LOST;
     if (o->refractionless >= 0)
         s.view.flags = o->refractionless ? s.view.flags | SCN_OPT_REFRACTIONLESS
                                          : s.view.flags & ~SCN_OPT_REFRACTIONLESS;
@@ -146,6 +149,7 @@ static int scene_file_bytes_any(const char *path, const struct scene_file_opts *
                          : o->refraction >= 0 ? "--refraction"
                          : o->no_auto_hierarchy ? "--no-auto-hierarchy"
                          : o->mark_lost ? "--mark-lost"
+                         : o->check_lost ? "--check-lost"
                          : o->paper ? "--paper (give the text scene, or compile it with "
                                       "options { paper on })" : NULL;
     if (change) {

@@ -17,6 +17,7 @@ struct scene_file_opts {
     int refraction;     /* --refraction on|off: 1 or 0; -1: the scene's */
     int no_auto_hierarchy; /* --no-auto-hierarchy: 1 compiles without it */
     int mark_lost;      /* --mark-lost: 1 paints pixels that lost precision */
+    int check_lost;     /* --check-lost: 1 checks them in double (SCN_OPT_CHECK_LOST) */
     int paper;          /* --paper: 1 sets paper mode (sd_paper_apply) before the
                            other changes, which win over it */
     int machine;        /* the machine it is for (proto/machines.h): its limits */

@@ -6,13 +6,17 @@
 # escalated fixed point is within 2/255 of the double build on every pixel
 # of demo.scn, where plain fixed point is not; what cannot escalate is
 # refused with the reason, before a board boots or by the DM.
+# --check-lost (a lost pixel checked in double, flagged only when it is off
+# there) gives the host's image with --mark-lost, and flags of which at
+# least half are really beyond 2/255 of double, with none missed.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
 board_ready render_escalate_float render_escalate_float_count render_escalate_fixed \
     render_escalate_fixed_count render_escalate_fixed_marked render_escalate_frames \
     render_escalate_fixed_near_double render_escalate_plain_fixed_is_not \
     render_escalate_refused_soft render_escalate_refused_double render_escalate_refused_an521 \
-    render_escalate_refused_auto render_escalate_firmware_without_wide || exit 0
+    render_escalate_refused_auto render_escalate_firmware_without_wide render_check_lost_fixed \
+    render_check_lost_flags_mean_it || exit 0
 SIZE=160x120
 scn=scenes/demo.scn
 
@@ -121,4 +125,19 @@ if [ $rc -ne 0 ] && grep -q 'carries no wide arithmetic\|without a wide arithmet
     echo "PASS $name"
 else
     echo "FAIL $name: exit $rc, want the DM's refusal naming the escalating builds: $(tail -n 1 "$log")"
+fi
+
+# --check-lost --mark-lost: board = host, and the flags score against double
+name=render_check_lost_fixed
+ref=$RENDER_TMP/check-host-fixed.ppm
+"$LINKS1" ref $scn --arith fixed --size $SIZE --check-lost --mark-lost -o "$ref" >"$ref.log" 2>&1
+out=$RENDER_TMP/$name.ppm
+render_board $name "$out" $scn -o "$out" --arith fixed --ncs 2 --size $SIZE --check-lost \
+    --mark-lost && render_same $name "$ref" "$out"
+name=render_check_lost_flags_mean_it
+if "$LINKS1" compare "$dbl" "$plain" --flags "$out" --min-precision 0.5 --min-recall 1 \
+    >"$RENDER_TMP/$name.log" 2>&1; then
+    echo "PASS $name ($(grep -m1 -i 'precision' "$RENDER_TMP/$name.log"))"
+else
+    echo "FAIL $name: $(grep -i 'precision\|recall' "$RENDER_TMP/$name.log" | head -n 2 | tr '\n' ' ')"
 fi

@@ -143,6 +143,67 @@ static void test_wide_escalates_lost_pixels(void)
     free(blob);
 }
 
+/* 1 when a and b differ by more than RENDER_CHECK_LOST_STEPS in a channel. */
+static int tw_apart(rgb8_t a, rgb8_t b)
+{
+    return abs(a.r - b.r) > RENDER_CHECK_LOST_STEPS || abs(a.g - b.g) > RENDER_CHECK_LOST_STEPS ||
+           abs(a.b - b.b) > RENDER_CHECK_LOST_STEPS;
+}
+
+/* Checking (options.check_lost): every pixel keeps its own colour; a lost
+ * one stays lost, and with mark_lost is painted, exactly when the wide
+ * copy's colour is apart from it (or the wide copy lost it too). */
+static void test_wide_check_keeps_colours(void)
+{
+    render_blob_t *blob;
+    void *wblock, *wctx;
+    size_t wsize;
+    if (!tw_demo(&blob, &wblock, &wsize, &wctx))
+        return;
+    const render_frame_t *f = blob->frame;
+    size_t n = (size_t)f->width * f->height;
+    uint8_t *lost = calloc(n, 1), *wide_lost = calloc(n, 1);
+    render_ctx_t plain, check;
+    render_ctx_init(&plain, f);
+    plain.error_margin = RENDER_ESCALATE_MARGIN;
+    rgb8_t *own = tw_render(&plain, lost);
+    rgb8_t *wide = tw_render_wide(wctx, f->width, f->height, wide_lost);
+    uint32_t off = 0, doubted = 0, wrong = 0, painted = 0;
+    for (size_t i = 0; i < n; i++) {
+        doubted += lost[i];
+        off += lost[i] && (wide_lost[i] || tw_apart(own[i], wide[i]));
+    }
+    for (int mark = 0; mark <= 1; mark++) {
+        void *w2 = tw_wide_ctx(wblock, wsize);
+        render_ctx_init(&check, f);
+        check.options.check_lost = 1;
+        check.options.mark_lost = (uint8_t)mark;
+        render_wide_escalate(&check, w2);
+        rgb8_t *got = tw_render(&check, NULL);
+        for (size_t i = 0; i < n; i++) {
+            int is_off = lost[i] && (wide_lost[i] || tw_apart(own[i], wide[i]));
+            rgb8_t want = mark && is_off ? RENDER_LOST_COLOUR : own[i];
+            wrong += !tw_same(got[i], want);
+            painted += mark && is_off;
+        }
+        CHECK_EQ_INT(check.stats.precision_lost_pixels, off);
+        CHECK_EQ_INT(check.stats.escalated_pixels, doubted);
+        free(got);
+        free(w2);
+    }
+    printf("demo: %u pixels doubted, %u of them more than %d/255 off double\n", (unsigned)doubted,
+           (unsigned)off, RENDER_CHECK_LOST_STEPS);
+    CHECK(doubted > 0 && off < doubted && painted == off);
+    CHECK_EQ_INT(wrong, 0);
+    free(lost);
+    free(wide_lost);
+    free(own);
+    free(wide);
+    free(wctx);
+    free(wblock);
+    free(blob);
+}
+
 /* render_area (the paper's lists, and clipping in the tree) escalates the
  * pixels render_pixel escalates, to the same colours. */
 static void test_wide_area_same_as_pixels(void)
@@ -261,6 +322,7 @@ static void test_wide_errors(void)
 int main(void)
 {
     RUN(test_wide_escalates_lost_pixels);
+    RUN(test_wide_check_keeps_colours);
     RUN(test_wide_area_same_as_pixels);
     RUN(test_wide_copy_frame);
     RUN(test_wide_errors);
