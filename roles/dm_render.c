@@ -90,18 +90,13 @@ static int dm_scene_chunk(void *ctx, const uint8_t *data, uint32_t n, uint64_t o
 }
 
 /* The wide blob (escalation, render/wide.h) of frame in the block past
- * the narrow blob's bound; 0, or -1 with err filled. */
+ * the narrow blob's bound; 0, or -1 with err filled.  Only after
+ * dm_escalation_fits, which refuses a firmware without the wide copy. */
 static int dm_prepare_wide(uint8_t *block, int held, uint32_t frame, size_t size,
                            render_blob_error_t *err)
 {
     render_blob_t *blob = (render_blob_t *)block;
     err->status = RENDER_BLOB_ERR_PREPARE;
-    if (!render_wide_linked()) {
-        fmt_snprintf(err->message, sizeof err->message,
-                     "escalation: this firmware carries no wide arithmetic (the escalating "
-                     "builds are links1-float-esc.elf and links1-fixed-esc.elf)");
-        return -1;
-    }
     size_t at = (blob->bound + RENDER_RELOCATE_ALIGN - 1) & ~(size_t)(RENDER_RELOCATE_ALIGN - 1);
     char why[RENDER_BLOB_MSG_MAX];
     int r = at < size ? 0 : -1;
