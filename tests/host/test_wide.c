@@ -95,6 +95,35 @@ static int tw_same(rgb8_t a, rgb8_t b)
     return a.r == b.r && a.g == b.g && a.b == b.b;
 }
 
+/* demo.scn rendered both ways, for comparing pixel by pixel: own, this
+ * arithmetic with escalation's net (RENDER_ESCALATE_MARGIN) and lost[] its
+ * doubts; wide, the wide copy's, and wide_lost[] what it lost. */
+struct tw_both {
+    size_t n;
+    rgb8_t *own, *wide;
+    uint8_t *lost, *wide_lost;
+};
+
+static void tw_both_render(const render_frame_t *f, void *wctx, struct tw_both *b)
+{
+    b->n = (size_t)f->width * f->height;
+    b->lost = calloc(b->n, 1);
+    b->wide_lost = calloc(b->n, 1);
+    render_ctx_t plain;
+    render_ctx_init(&plain, f);
+    plain.error_margin = RENDER_ESCALATE_MARGIN; /* the net escalation casts */
+    b->own = tw_render(&plain, b->lost);
+    b->wide = tw_render_wide(wctx, f->width, f->height, b->wide_lost);
+}
+
+static void tw_both_free(struct tw_both *b)
+{
+    free(b->lost);
+    free(b->wide_lost);
+    free(b->own);
+    free(b->wide);
+}
+
 /* A lost pixel takes the wide colour, the others keep theirs; escalated
  * counts the lost ones, precision_lost_pixels those the wide one lost. */
 static void test_wide_escalates_lost_pixels(void)
@@ -105,13 +134,12 @@ static void test_wide_escalates_lost_pixels(void)
     if (!tw_demo(&blob, &wblock, &wsize, &wctx))
         return;
     const render_frame_t *f = blob->frame;
-    size_t n = (size_t)f->width * f->height;
-    uint8_t *lost = calloc(n, 1), *wide_lost = calloc(n, 1);
-    render_ctx_t plain, esc;
-    render_ctx_init(&plain, f);
-    plain.error_margin = RENDER_ESCALATE_MARGIN; /* the net escalation casts */
-    rgb8_t *own = tw_render(&plain, lost);
-    rgb8_t *wide = tw_render_wide(wctx, f->width, f->height, wide_lost);
+    struct tw_both b;
+    tw_both_render(f, wctx, &b);
+    size_t n = b.n;
+    const uint8_t *lost = b.lost, *wide_lost = b.wide_lost;
+    const rgb8_t *own = b.own, *wide = b.wide;
+    render_ctx_t esc;
     void *wctx2 = tw_wide_ctx(wblock, wsize);
     render_ctx_init(&esc, f);
     render_wide_escalate(&esc, wctx2);
@@ -132,10 +160,7 @@ static void test_wide_escalates_lost_pixels(void)
     render_stats_t sum = esc.stats;
     RENDER_WIDE(wide_stats_add)(wctx2, &sum);
     CHECK(sum.primary == esc.stats.primary + nlost);
-    free(lost);
-    free(wide_lost);
-    free(own);
-    free(wide);
+    tw_both_free(&b);
     free(got);
     free(wctx);
     free(wctx2);
@@ -161,13 +186,12 @@ static void test_wide_check_keeps_colours(void)
     if (!tw_demo(&blob, &wblock, &wsize, &wctx))
         return;
     const render_frame_t *f = blob->frame;
-    size_t n = (size_t)f->width * f->height;
-    uint8_t *lost = calloc(n, 1), *wide_lost = calloc(n, 1);
-    render_ctx_t plain, check;
-    render_ctx_init(&plain, f);
-    plain.error_margin = RENDER_ESCALATE_MARGIN;
-    rgb8_t *own = tw_render(&plain, lost);
-    rgb8_t *wide = tw_render_wide(wctx, f->width, f->height, wide_lost);
+    struct tw_both b;
+    tw_both_render(f, wctx, &b);
+    size_t n = b.n;
+    const uint8_t *lost = b.lost, *wide_lost = b.wide_lost;
+    const rgb8_t *own = b.own, *wide = b.wide;
+    render_ctx_t check;
     uint32_t off = 0, doubted = 0, wrong = 0, painted = 0;
     for (size_t i = 0; i < n; i++) {
         doubted += lost[i];
@@ -195,10 +219,7 @@ static void test_wide_check_keeps_colours(void)
            (unsigned)off, RENDER_CHECK_LOST_STEPS);
     CHECK(doubted > 0 && off < doubted && painted == off);
     CHECK_EQ_INT(wrong, 0);
-    free(lost);
-    free(wide_lost);
-    free(own);
-    free(wide);
+    tw_both_free(&b);
     free(wctx);
     free(wblock);
     free(blob);
