@@ -20,6 +20,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "host-tools/cli/farm.h"
 #include "host-tools/cli/links1_cmds.h"
 #include "host-tools/image/film.h"
 #include "host-tools/image/image_io.h"
@@ -30,7 +31,6 @@
 
 #define FARM_MAX_FRAMES 100000 /* frames in one farm */
 #define FARM_MAX_EXTRA 64      /* render arguments after "--" */
-#define FARM_MAX_HOSTS 256     /* hosts in the summary */
 #define FARM_HOSTS_MAX_BYTES (1 << 20)
 #define FARM_MAX_BANDS 1024    /* bands of one still frame */
 
@@ -41,7 +41,8 @@ enum {
     FARM_OPT_EXT,
     FARM_OPT_FILM,
     FARM_OPT_FPS,
-    FARM_OPT_BANDS
+    FARM_OPT_BANDS,
+    FARM_OPT_SLURM
 };
 
 static const struct option farm_options[] = {
@@ -52,6 +53,7 @@ static const struct option farm_options[] = {
     {"film", required_argument, NULL, FARM_OPT_FILM},
     {"fps", required_argument, NULL, FARM_OPT_FPS},
     {"bands", required_argument, NULL, FARM_OPT_BANDS},
+    {"slurm", no_argument, NULL, FARM_OPT_SLURM},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -59,15 +61,21 @@ static const struct option farm_options[] = {
 static void farm_usage(FILE *out)
 {
     fprintf(out,
-            "usage: links1 farm SCENE --frames A:B -o DIR --hosts FILE [--retries N] [--ext png|ppm]\n"
+            "usage: links1 farm SCENE --frames A:B -o DIR --hosts FILE|--slurm [--retries N]\n"
+            "                   [--ext png|ppm]\n"
             "                   [--film OUT.mp4|.webm|.apng [--fps N]] [-- links1 render arguments...]\n"
             "  the frames A..B rendered on the hosts of FILE (GNU parallel's --sshloginfile:\n"
             "  one host a line, ':' this machine) one frame a job, -j1 on each host, each job\n"
             "  `links1 render SCENE --frames F:F` run there (links1 and SCENE at the same\n"
             "  absolute paths on every host); the frames gathered into DIR as frame-NNNN.EXT.\n"
             "  A frame already in DIR is not rendered again (an interrupted farm resumes).\n"
+            "  --slurm       instead of --hosts: the frames (or bands) not in DIR as one Slurm\n"
+            "                job array (`sbatch --wait --array`, the task id the frame), DIR\n"
+            "                on a file system the nodes share; sbatch's own SBATCH_* variables\n"
+            "                (SBATCH_PARTITION, ...) choose where it runs\n"
             "  --retries N   tries of a frame (parallel --retries: each on a host where it has\n"
-            "                not failed yet), 1..100, default 3\n"
+            "                not failed yet; Slurm: rounds of the frames still missing),\n"
+            "                1..100, default 3\n"
             "  --ext E       png (default) or ppm\n"
             "  --film OUT    once every frame is in DIR, frames A..B made into one film by\n"
             "                ffmpeg (OUT's ending: .mp4, .webm or .apng), written whole or not\n"
@@ -80,8 +88,7 @@ static void farm_usage(FILE *out)
             FILM_MAX_FPS, FILM_DEFAULT_FPS, FARM_MAX_BANDS);
 }
 
-/* Whether NAME is an executable file in some directory of $PATH. */
-static int farm_in_path(const char *name)
+int farm_in_path(const char *name)
 {
     const char *path = getenv("PATH");
     if (!path || !*path)
@@ -90,8 +97,11 @@ static int farm_in_path(const char *name)
         const char *end = strchr(path, ':');
         size_t n = end ? (size_t)(end - path) : strlen(path);
         char full[PATH_MAX];
-        if (n > 0 && n + strlen(name) + 2 <= sizeof full) {
-            snprintf(full, sizeof full, "%.*s/%s", (int)n, path, name);
+        size_t len = strlen(name);
+        if (n > 0 && n + len + 2 <= sizeof full) {
+            memcpy(full, path, n);
+            full[n] = '/';
+            memcpy(full + n + 1, name, len + 1);
             struct stat st;
             if (stat(full, &st) == 0 && S_ISREG(st.st_mode) && access(full, X_OK) == 0)
                 return 1;
@@ -220,12 +230,6 @@ static int farm_separator_word(const char *s)
     return strcmp(s, ":::") == 0 || strcmp(s, "::::") == 0 || strcmp(s, ":::+") == 0 ||
            strcmp(s, "::::+") == 0;
 }
-
-struct farm_host {
-    char name[256];
-    long frames, failed;
-    double seconds;
-};
 
 /* The joblog's lines added into hosts[] (*nhosts of them so far); *njobs the
  * jobs it logs; ok[seq - 1] set for each job (Seq, 1..njobs_max: the inputs'
@@ -404,7 +408,7 @@ int cmd_farm(int argc, char **argv)
 {
     const char *scene = NULL, *dir = NULL, *hosts_file = NULL, *ext = "png", *film = NULL;
     const char *extra[FARM_MAX_EXTRA];
-    int nextra = 0, retries = 3, fps = FILM_DEFAULT_FPS, have_fps = 0, bands = 0;
+    int nextra = 0, retries = 3, fps = FILM_DEFAULT_FPS, have_fps = 0, bands = 0, slurm = 0;
     long first = -1, last = -1;
     struct cli c;
     cli_init(&c, "links1 farm", argc, argv, "o:h", farm_options);
@@ -462,13 +466,19 @@ int cmd_farm(int argc, char **argv)
             if (cli_int(&c, 2, FARM_MAX_BANDS, &bands) != 0)
                 return 2;
             break;
+        case FARM_OPT_SLURM: slurm = 1; break;
         case 'h': farm_usage(stdout); return 0;
         default: return 2;
         }
     }
-    if (!scene || !dir || !hosts_file || first < 0) {
-        fprintf(stderr, "links1 farm: want SCENE, --frames A:B, -o DIR and --hosts FILE\n");
+    if (!scene || !dir || !(hosts_file || slurm) || first < 0) {
+        fprintf(stderr, "links1 farm: want SCENE, --frames A:B, -o DIR and --hosts FILE or "
+                        "--slurm\n");
         farm_usage(stderr);
+        return 2;
+    }
+    if (hosts_file && slurm) {
+        fprintf(stderr, "links1 farm: --hosts (GNU parallel) or --slurm, not both\n");
         return 2;
     }
     if (have_fps && !film) {
@@ -487,18 +497,23 @@ int cmd_farm(int argc, char **argv)
             return 1;
         }
     }
-    if (!farm_in_path("parallel")) {
+    if (slurm && !farm_in_path("sbatch")) {
+        fprintf(stderr, "links1 farm: --slurm: Slurm's sbatch is not installed (no 'sbatch' in "
+                        "PATH; the Debian package slurm-client)\n");
+        return 1;
+    }
+    if (!slurm && !farm_in_path("parallel")) {
         fprintf(stderr, "links1 farm: GNU parallel is not installed (no 'parallel' in PATH; "
                         "the Debian package parallel)\n");
         return 1;
     }
-    if (!farm_is_gnu_parallel()) {
+    if (!slurm && !farm_is_gnu_parallel()) {
         fprintf(stderr, "links1 farm: the 'parallel' in PATH is not GNU parallel (`parallel "
                         "--version` does not say so; moreutils has another; install the "
                         "Debian package parallel)\n");
         return 1;
     }
-    int nhosts_file = farm_check_hosts(hosts_file);
+    int nhosts_file = slurm ? 0 : farm_check_hosts(hosts_file);
     if (nhosts_file < 0 || farm_check_dir(dir) != 0)
         return 1;
     char scene_abs[PATH_MAX], hosts_abs[PATH_MAX], dir_abs[PATH_MAX], tool[PATH_MAX];
@@ -506,8 +521,14 @@ int cmd_farm(int argc, char **argv)
         fprintf(stderr, "links1 farm: %s: %s\n", scene, strerror(errno));
         return 1;
     }
-    if (!realpath(hosts_file, hosts_abs) || !realpath(dir, dir_abs)) {
+    if (slurm)
+        snprintf(hosts_abs, sizeof hosts_abs, "Slurm");
+    else if (!realpath(hosts_file, hosts_abs)) {
         fprintf(stderr, "links1 farm: %s: %s\n", hosts_file, strerror(errno));
+        return 1;
+    }
+    if (!realpath(dir, dir_abs)) {
+        fprintf(stderr, "links1 farm: %s: %s\n", dir, strerror(errno));
         return 1;
     }
     if (self_sibling("links1", tool, sizeof tool) != 0) {
@@ -588,14 +609,17 @@ int cmd_farm(int argc, char **argv)
             }
             ntodo++;
         }
+        char where[PATH_MAX + 64];
+        if (slurm)
+            snprintf(where, sizeof where, "as a Slurm job array");
+        else
+            snprintf(where, sizeof where, "on %d host(s) of %s", nhosts_file, hosts_abs);
         if (round == 1 && bands)
             printf("links1 farm: frame %ld of %s in %d bands: %ld in %s already, %ld to render "
-                   "on %d host(s) of %s\n", first, scene_abs, bands, kept, dir_abs, ntodo,
-                   nhosts_file, hosts_abs);
+                   "%s\n", first, scene_abs, bands, kept, dir_abs, ntodo, where);
         else if (round == 1)
-            printf("links1 farm: frames %ld..%ld of %s: %ld in %s already, %ld to render on %d "
-                   "host(s) of %s\n", first, last, scene_abs, kept, dir_abs, ntodo, nhosts_file,
-                   hosts_abs);
+            printf("links1 farm: frames %ld..%ld of %s: %ld in %s already, %ld to render %s\n",
+                   first, last, scene_abs, kept, dir_abs, ntodo, where);
         else if (ntodo > 0)
             printf("links1 farm: %ld %s(s) did not arrive; handing them out again (round "
                    "%d of at most %d)\n", ntodo, unit, round, retries);
@@ -604,6 +628,26 @@ int cmd_farm(int argc, char **argv)
         fflush(stdout);
         if (ntodo == 0)
             break;
+        if (slurm) {
+            long *items = malloc((size_t)ntodo * sizeof *items);
+            if (!items) {
+                fprintf(stderr, "links1 farm: out of memory\n");
+                return 1;
+            }
+            for (long i = 0; i < ntodo; i++)
+                items[i] = strtol(todo[i], NULL, 10);
+            struct farm_slurm_round r = {tool, scene_abs, dir_abs, ext, first, bands,
+                                         extra, nextra, items, ntodo};
+            long jobs_round = 0;
+            int rc = farm_slurm_run(&r, hosts, &nhosts, &jobs_round);
+            free(items);
+            if (rc != 0)
+                return 1;
+            njobs += jobs_round;
+            /* Slurm tries a task once: each item still missing goes out again */
+            memset(again, 1, (size_t)nitems);
+            continue;
+        }
         char joblog[PATH_MAX + 32];
         if (round == 1)
             snprintf(joblog, sizeof joblog, "%s/farm-joblog.tsv", dir_abs);
@@ -697,7 +741,7 @@ int cmd_farm(int argc, char **argv)
                 again[strtol(todo[i], NULL, 10) - item0] = 1;
     }
 
-    /* The summary: per host from parallel's joblogs. */
+    /* The summary: per host from parallel's joblogs, or the Slurm tasks' logs. */
     for (int h = 0; h < nhosts; h++) {
         failed += hosts[h].failed;
         printf("links1 farm: host %s: %ld %s(s) in %.1f s of jobs, %.2f %ss/min",
@@ -708,11 +752,17 @@ int cmd_farm(int argc, char **argv)
         printf("\n");
     }
     long arrived = nitems - missing - kept;
-    printf("links1 farm: %ld %s(s) rendered now, %ld kept from before, %ld missing; "
-           "retries: %ld job(s) failed on their last try, %ld %s(s) handed out again "
-           "(done but not arrived), %ld job(s) in parallel's joblogs (a try parallel retried "
-           "is not logged there, only each frame's last)\n",
-           arrived, unit, kept, missing, failed, refarmed, unit, njobs);
+    if (slurm)
+        printf("links1 farm: %ld %s(s) rendered now, %ld kept from before, %ld missing; "
+               "retries: %ld task(s) failed, %ld %s(s) handed out again (missing after a "
+               "round), %ld task(s) logged in DIR/slurm-JOB_TASK.log\n",
+               arrived, unit, kept, missing, failed, refarmed, unit, njobs);
+    else
+        printf("links1 farm: %ld %s(s) rendered now, %ld kept from before, %ld missing; "
+               "retries: %ld job(s) failed on their last try, %ld %s(s) handed out again "
+               "(done but not arrived), %ld job(s) in parallel's joblogs (a try parallel "
+               "retried is not logged there, only each frame's last)\n",
+               arrived, unit, kept, missing, failed, refarmed, unit, njobs);
     for (long i = 0; i < nitems; i++)
         free(todo[i]);
     free(todo);
@@ -720,10 +770,15 @@ int cmd_farm(int argc, char **argv)
     free(again);
     free(hosts);
     if (missing) {
-        fprintf(stderr, "links1 farm: %ld %s(s) missing (parallel exit %d); run again to "
-                        "render only those%s\n", missing, unit,
-                WIFEXITED(status) ? WEXITSTATUS(status) : -1,
-                film ? " (the film is made once every frame is there)" : "");
+        if (slurm)
+            fprintf(stderr, "links1 farm: %ld %s(s) missing (their tasks' logs: %s/slurm-*.log); "
+                            "run again to render only those%s\n", missing, unit, dir_abs,
+                    film ? " (the film is made once every frame is there)" : "");
+        else
+            fprintf(stderr, "links1 farm: %ld %s(s) missing (parallel exit %d); run again to "
+                            "render only those%s\n", missing, unit,
+                    WIFEXITED(status) ? WEXITSTATUS(status) : -1,
+                    film ? " (the film is made once every frame is there)" : "");
         return 1;
     }
     if (bands)

@@ -6,7 +6,7 @@ HOST_TOOLS += links1
 links1_SRCS = host-tools/cli/links1.c host-tools/cli/cmd_boot.c host-tools/cli/cmd_board.c \
 	host-tools/cli/cmd_selftest.c host-tools/cli/cmd_semihost.c host-tools/cli/cmd_render.c \
 	host-tools/cli/cmd_replay.c host-tools/cli/scene_cmds.c host-tools/cli/cmd_import.c \
-	host-tools/cli/cmd_compare.c host-tools/cli/cmd_farm.c \
+	host-tools/cli/cmd_compare.c host-tools/cli/cmd_farm.c host-tools/cli/farm_slurm.c \
 	$(BOARD_LAUNCHER_SRCS) $(HT_GIGS_SRCS) $(HT_SELFTEST_SRCS) $(HT_INSN_SRCS) \
 	$(HT_TRACE_SRCS) $(HT_REF_AUTO_SRCS) $(HT_IMAGE_COMPARE_SRCS) $(HT_SCENE_POV_SRCS) \
 	$(HT_IMAGE_FILM_SRCS) $(SCENE_TEXT_SRCS)

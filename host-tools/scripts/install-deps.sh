@@ -6,10 +6,11 @@ set -eu
 need_pkgs=(make gcc libc6-dev libpng-dev gcc-arm-none-eabi picolibc-arm-none-eabi
            libnewlib-arm-none-eabi qemu-system-arm povray python3 libassimp-dev
            clang libclang-rt-dev gdb-multiarch gnuplot-nox ffmpeg parallel
-           rsync openssh-server openssh-client time)
+           rsync openssh-server openssh-client time slurmctld slurmd slurm-client munge)
 # parallel, rsync, openssh-*: `links1 farm` hands frames to hosts through GNU parallel
 # (its --return copies frames back with rsync over ssh); the farm test starts a
-# throw-away sshd on localhost.
+# throw-away sshd on localhost.  slurm*, munge: `links1 farm --slurm` submits
+# sbatch job arrays; its test starts a throw-away one-node cluster.
 # ffmpeg: `links1 render --frames A:B -o FILM.mp4` pipes the frames to its CLI.
 # time: GNU time, the wall and CPU seconds tests/bench/bench_farm.sh reads.
 # gnuplot-nox: the charts of `make figures` and `make sweeps`, PNG without X.

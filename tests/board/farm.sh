@@ -5,13 +5,14 @@
 # second farm renders only that frame (parallel's joblog holds one job, the
 # other frames are not rewritten); a scene and a DIR with spaces, quotes and
 # $ in their names farm as well; a missing parallel, one not GNU's, an empty or unreadable
-# hosts file and a DIR that is a file or another user's are refused, naming
-# the problem, before anything runs.
+# hosts file, a DIR that is a file or another user's, --slurm with no
+# sbatch and --slurm beside --hosts are refused, naming the problem, before
+# anything runs.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
 CHECKS="farm_frame0 farm_frame1 farm_frame2 farm_summary farm_resume_one_job farm_resume_kept
         farm_resume_frame1 farm_film farm_bands farm_rows_band farm_band_refused farm_hostile_names farm_no_parallel farm_not_gnu_parallel farm_empty_hosts
-        farm_unreadable_hosts farm_dir_is_file farm_dir_not_yours"
+        farm_unreadable_hosts farm_dir_is_file farm_dir_not_yours farm_slurm_no_sbatch farm_slurm_and_hosts"
 board_ready $CHECKS || exit 0
 if ! command -v parallel >/dev/null; then
     for c in $CHECKS; do echo "FAIL $c: GNU parallel is not installed (the Debian package parallel)"; done
@@ -113,6 +114,10 @@ mkdir -p "$T/nopar"
 for tool in timeout sed grep tail rm; do ln -sf "$(command -v $tool)" "$T/nopar/$tool"; done
 PATH="$T/nopar" refused farm_no_parallel "GNU parallel is not installed" \
     scenes/anim.scn --frames 0:0 -o "$T/r" --hosts "$T/hosts"
+PATH="$T/nopar" refused farm_slurm_no_sbatch "Slurm's sbatch is not installed" \
+    scenes/anim.scn --frames 0:0 -o "$T/r" --slurm
+refused farm_slurm_and_hosts "not both" scenes/anim.scn --frames 0:0 -o "$T/r" --slurm \
+    --hosts "$T/hosts"
 mkdir -p "$T/otherpar" # a 'parallel' that is not GNU's (moreutils has one)
 printf '#!/bin/sh\necho "parallel [OPTIONS] command -- arguments"\n' >"$T/otherpar/parallel"
 chmod +x "$T/otherpar/parallel"
