@@ -530,6 +530,7 @@ int prim_aabb_entry(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax, n
 void prim_aabb_ray(const ray_t *ray, aabb_ray_t *r)
 {
     (void)ray; /* the fixed build divides on every axis */
+    r->all_inv = 0;
     for (int axis = 0; axis < 3; axis++) {
         r->inv[axis] = NUM_ZERO;
         r->use_div[axis] = 1;
@@ -544,10 +545,11 @@ void prim_aabb_ray(const ray_t *ray, aabb_ray_t *r)
         }
 #endif
     }
+    r->all_inv = !r->use_div[0] && !r->use_div[1] && !r->use_div[2];
 }
 
-int prim_aabb_entry_ray(const aabb_t *b, const ray_t *ray, const aabb_ray_t *r, num_t tmin,
-                        num_t tmax, num_t *entry)
+int prim_aabb_entry_ray_axes(const aabb_t *b, const ray_t *ray, const aabb_ray_t *r, num_t tmin,
+                             num_t tmax, num_t *entry)
 {
     num_t tnear = tmin, tfar = tmax;
     for (int axis = 0; axis < 3; axis++) {
@@ -558,16 +560,7 @@ int prim_aabb_entry_ray(const aabb_t *b, const ray_t *ray, const aabb_ray_t *r, 
                 return 0;
             continue;
         }
-        num_t t1 = num_mul(num_sub(lo, o), r->inv[axis]);
-        num_t t2 = num_mul(num_sub(hi, o), r->inv[axis]);
-        if (num_gt(t1, t2)) {
-            num_t t = t1;
-            t1 = t2;
-            t2 = t;
-        }
-        tnear = num_max(tnear, t1);
-        tfar = num_min(tfar, t2);
-        if (num_gt(tnear, tfar))
+        if (!prim_slab_inv(o, r->inv[axis], lo, hi, &tnear, &tfar))
             return 0;
     }
     *entry = tnear;

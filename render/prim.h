@@ -73,11 +73,45 @@ int prim_aabb_entry(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax, n
 typedef struct {
     num_t inv[3];
     uint8_t use_div[3]; /* 1: divide on this axis (fixed, or d = 0 or tiny) */
+    uint8_t all_inv;    /* no axis divides */
 } aabb_ray_t;
 void prim_aabb_ray(const ray_t *ray, aabb_ray_t *r);
-/* prim_aabb_entry with r from prim_aabb_ray(ray). */
-int prim_aabb_entry_ray(const aabb_t *b, const ray_t *ray, const aabb_ray_t *r, num_t tmin,
-                        num_t tmax, num_t *entry);
+/* prim_aabb_entry with r from prim_aabb_ray(ray): inline where no axis
+ * divides (float and double, a direction with no tiny component), else
+ * prim_aabb_entry_ray_axes. */
+int prim_aabb_entry_ray_axes(const aabb_t *b, const ray_t *ray, const aabb_ray_t *r, num_t tmin,
+                             num_t tmax, num_t *entry);
+
+/* One slab by the reciprocal: prim.c's prim_slab with a product for the
+ * division (the same swap, max and min, so the same answers). */
+static inline int prim_slab_inv(num_t o, num_t inv, num_t lo, num_t hi, num_t *tnear,
+                                num_t *tfar)
+{
+    num_t t1 = num_mul(num_sub(lo, o), inv);
+    num_t t2 = num_mul(num_sub(hi, o), inv);
+    if (num_gt(t1, t2)) {
+        num_t s = t1;
+        t1 = t2;
+        t2 = s;
+    }
+    *tnear = num_max(*tnear, t1);
+    *tfar = num_min(*tfar, t2);
+    return !num_gt(*tnear, *tfar);
+}
+
+static inline int prim_aabb_entry_ray(const aabb_t *b, const ray_t *ray, const aabb_ray_t *r,
+                                      num_t tmin, num_t tmax, num_t *entry)
+{
+    if (!r->all_inv)
+        return prim_aabb_entry_ray_axes(b, ray, r, tmin, tmax, entry);
+    num_t tnear = tmin, tfar = tmax;
+    if (!prim_slab_inv(ray->origin.x, r->inv[0], b->lo.x, b->hi.x, &tnear, &tfar) ||
+        !prim_slab_inv(ray->origin.y, r->inv[1], b->lo.y, b->hi.y, &tnear, &tfar) ||
+        !prim_slab_inv(ray->origin.z, r->inv[2], b->lo.z, b->hi.z, &tnear, &tfar))
+        return 0;
+    *entry = tnear;
+    return 1;
+}
 
 /* LINKS-1 density field of one component of weight b at squared distance
  * r2, given inv_radius2 = 1/d^2. */

@@ -177,7 +177,7 @@ static int trace_still_open(const trace_walk_t *w, num_t entry)
 
 /* The primary ray's pixel lies in cluster c's tree rectangle (all of it
  * and below), or it is no primary ray walked by screen. */
-static int trace_screen_tree(const trace_walk_t *w, const render_cluster_t *c)
+static inline int trace_screen_tree(const trace_walk_t *w, const render_cluster_t *c)
 {
     if (!w->screen)
         return 1;

@@ -532,6 +532,10 @@ static int render_auto_pick(struct render_opts *o)
     if (arith_auto_pick("links1 render", o->jobs[0].scene, &ao, &pick) != 0)
         return -1;
     o->board.arith = pick.arith;
+    if (pick.escalate) { /* as --escalate: the firmware that carries double */
+        o->args.flags |= LINK_RENDER_ESCALATE;
+        o->board.escalate = 1;
+    }
     /* --auto: the model picked (render_main compiles the scene again) */
     if (pick.density_steps >= 0)
         o->scene.density_steps = pick.density_steps;

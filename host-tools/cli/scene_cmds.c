@@ -186,7 +186,7 @@ int scene_cmd_ref(int argc, char **argv)
 {
     const char *arith = "double", *model_word = NULL; /* an option --auto chooses */
     int model = 0, arith_given = 0;
-    char **args = calloc((size_t)argc + 6, sizeof *args);
+    char **args = calloc((size_t)argc + 8, sizeof *args);
     const char **words = calloc((size_t)argc + 4, sizeof *words); /* the pre-render's */
     if (!args || !words) {
         fprintf(stderr, "links1 ref: out of memory\n");
@@ -287,6 +287,8 @@ int scene_cmd_ref(int argc, char **argv)
             return 1;
         }
         arith = pick.build;
+        if (pick.escalate)
+            args[n++] = "--escalate";
     }
     char steps[16], weight[40]; /* --auto's model, after the words given */
     if (is_auto && scene && pick.density_steps >= 0) {

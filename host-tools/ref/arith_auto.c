@@ -27,11 +27,12 @@
 #define AUTO_FIXED_BITS_BOARD 19
 #define AUTO_FIXED_BITS_MIN 8
 #define AUTO_FIXED_BITS_MAX 24
-#define AUTO_MAX_CANDS (3 + AUTO_FIXED_BITS_MAX - AUTO_FIXED_BITS_MIN)
+#define AUTO_MAX_CANDS (5 + AUTO_FIXED_BITS_MAX - AUTO_FIXED_BITS_MIN) /* 2 escalated */
 #define AUTO_MAX_ARGS 48
 
 struct auto_cand {
     char label[24], build[24], arith[8];
+    int escalate;        /* --escalate: lost pixels traced again in double */
     int measured;        /* the host build ran (images below valid) */
     int refused;         /* the host build refused the scene (why): it
                             misses the target */
@@ -260,14 +261,16 @@ static void auto_knobs(const struct auto_run *r, int steps, double weight,
 /* links1-ref-<build> at the pre-render size (with the model steps, weight
  * when steps >= 0) into DIR/<build>[-marked].png.  Its exit status (log in
  * DIR/<build>[-marked].log). */
-static int auto_host_render_model(const struct auto_run *r, const char *build, int marked,
-                                  int steps, double weight, char *img, char *log, size_t cap)
+static int auto_host_render_model(const struct auto_run *r, const char *build, int escalate,
+                                  int marked, int steps, double weight, char *img, char *log,
+                                  size_t cap)
 {
     char prog[PATH_MAX + 32], size[32];
     if (ref_program_path(build, prog, sizeof prog) != 0)
         return -1;
-    snprintf(img, cap, "%s/%s%s.png", r->tmp, build, marked ? "-marked" : "");
-    snprintf(log, cap, "%s/%s%s.log", r->tmp, build, marked ? "-marked" : "");
+    const char *esc = escalate ? "-esc" : "";
+    snprintf(img, cap, "%s/%s%s%s.png", r->tmp, build, esc, marked ? "-marked" : "");
+    snprintf(log, cap, "%s/%s%s%s.log", r->tmp, build, esc, marked ? "-marked" : "");
     struct auto_knob_words k;
     auto_knobs(r, steps, weight, &k);
     const char *extra[8];
@@ -278,6 +281,8 @@ static int auto_host_render_model(const struct auto_run *r, const char *build, i
     extra[e++] = img;
     if (marked)
         extra[e++] = "--mark-lost";
+    if (escalate)
+        extra[e++] = "--escalate";
     extra[e] = NULL;
     char *argv[AUTO_MAX_ARGS];
     if (auto_argv(r, 0, prog, argv, size, sizeof size, extra) != 0)
@@ -288,7 +293,7 @@ static int auto_host_render_model(const struct auto_run *r, const char *build, i
 static int auto_host_render(const struct auto_run *r, const char *build, int marked,
                             char *img, char *log, size_t cap)
 {
-    return auto_host_render_model(r, build, marked, -1, 0, img, log, cap);
+    return auto_host_render_model(r, build, 0, marked, -1, 0, img, log, cap);
 }
 
 /* PSNR of img against the reference, over every pixel and over the pixels
@@ -316,7 +321,8 @@ static int auto_read(const char *path, struct image *img, const struct image *li
 static int auto_measure_image(const struct auto_run *r, struct auto_cand *c)
 {
     char img[PATH_MAX], log[PATH_MAX], mimg[PATH_MAX], mlog[PATH_MAX];
-    int st = auto_host_render_model(r, c->build, 0, c->steps, c->weight, img, log, sizeof img);
+    int st = auto_host_render_model(r, c->build, c->escalate, 0, c->steps, c->weight, img, log,
+                                    sizeof img);
     if (st != 0) {
         c->refused = 1;
         auto_last_line(log, c->why, sizeof c->why);
@@ -326,7 +332,8 @@ static int auto_measure_image(const struct auto_run *r, struct auto_cand *c)
      * and count as missing the target */
     int compiled = scene_file_ends_with(r->path, ".l1s");
     if (!compiled &&
-        auto_host_render_model(r, c->build, 1, c->steps, c->weight, mimg, mlog, sizeof mimg) != 0) {
+        auto_host_render_model(r, c->build, c->escalate, 1, c->steps, c->weight, mimg, mlog,
+                               sizeof mimg) != 0) {
         auto_last_line(mlog, c->why, sizeof c->why);
         fprintf(stderr, "%s: %s: %s\n", r->prog, auto_name(r->o), c->why);
         return -1;
@@ -347,7 +354,7 @@ static int auto_measure_image(const struct auto_run *r, struct auto_cand *c)
     if (r->o->model && !compiled) {
         double all;
         long flagged;
-        if (auto_host_render_model(r, "double", 0, c->steps, c->weight, dimg, dlog,
+        if (auto_host_render_model(r, "double", 0, 0, c->steps, c->weight, dimg, dlog,
                                    sizeof dimg) != 0 ||
             auto_read(dimg, &same, &r->ref) != 0) {
             image_free(&a);
@@ -371,8 +378,8 @@ static int auto_measure_image(const struct auto_run *r, struct auto_cand *c)
  * arith and the model steps, weight (steps < 0: the scene's) (links1
  * render --count-insns): the one cost of --arith auto and --auto, or -1
  * after printing why. */
-static double auto_board_cost(const struct auto_run *r, const char *arith, int steps,
-                              double weight)
+static double auto_board_cost(const struct auto_run *r, const char *arith, int escalate,
+                              int steps, double weight)
 {
     char self[PATH_MAX], size[32], img[PATH_MAX], log[PATH_MAX], ncs[8];
     if (self_sibling("links1", self, sizeof self) < 0)
@@ -382,13 +389,15 @@ static double auto_board_cost(const struct auto_run *r, const char *arith, int s
         fprintf(stderr, "%s: %s: machine %d unknown\n", r->prog, auto_name(r->o), r->o->machine);
         return -1;
     }
-    snprintf(img, sizeof img, "%s/board-%s.png", r->tmp, arith);
-    snprintf(log, sizeof log, "%s/board-%s.log", r->tmp, arith);
+    snprintf(img, sizeof img, "%s/board-%s%s.png", r->tmp, arith, escalate ? "-esc" : "");
+    snprintf(log, sizeof log, "%s/board-%s%s.log", r->tmp, arith, escalate ? "-esc" : "");
     snprintf(ncs, sizeof ncs, "%d", ARITH_AUTO_NCS);
     struct auto_knob_words k;
     auto_knobs(r, steps, weight, &k);
     const char *extra[] = {"-o", img, "--arith", arith, "--ncs", ncs, "--machine", m->name,
-                           "--count-insns", "--quiet", k.w[0], k.w[1], k.w[2], k.w[3], NULL};
+                           "--count-insns", "--quiet", escalate ? "--escalate" : k.w[0],
+                           escalate ? k.w[0] : k.w[1], escalate ? k.w[1] : k.w[2],
+                           escalate ? k.w[2] : k.w[3], escalate ? k.w[3] : NULL, NULL};
     char *argv[AUTO_MAX_ARGS + 1];
     if (auto_argv(r, 1, "render", argv + 1, size, sizeof size, extra) != 0)
         return -1;
@@ -421,10 +430,9 @@ static int auto_candidates(const struct arith_auto_opts *o, struct auto_cand *c)
     if (o->fpu)
         c[n++] = (struct auto_cand){.label = "float", .build = "float", .arith = "float"};
     c[n++] = (struct auto_cand){.label = "soft", .build = "float", .arith = "soft"};
-    snprintf(c[n].label, sizeof c[n].label, "fixed Q%d.%d", 31 - AUTO_FIXED_BITS_BOARD,
+    c[n] = (struct auto_cand){.build = "fixed", .arith = "fixed"};
+    snprintf(c[n++].label, sizeof c[n].label, "fixed Q%d.%d", 31 - AUTO_FIXED_BITS_BOARD,
              AUTO_FIXED_BITS_BOARD);
-    snprintf(c[n].build, sizeof c[n].build, "fixed");
-    snprintf(c[n++].arith, sizeof c[0].arith, "fixed");
     for (int f = AUTO_FIXED_BITS_MAX; o->target == ARITH_AUTO_HOST && f >= AUTO_FIXED_BITS_MIN;
          f--) {
         char build[24], prog[PATH_MAX + 32];
@@ -435,6 +443,16 @@ static int auto_candidates(const struct arith_auto_opts *o, struct auto_cand *c)
         c[n] = (struct auto_cand){.arith = "fixed"};
         snprintf(c[n].label, sizeof c[n].label, "fixed Q%d.%d", 31 - f, f);
         snprintf(c[n++].build, sizeof c[0].build, "%s", build);
+    }
+    /* --arith auto: the same two traced again in double where a pixel lost
+     * precision (render/wide.h), on a unit with a double FPU: the virt
+     * board's -esc firmware, every host build */
+    if (o->fpu && !o->model && (o->target == ARITH_AUTO_HOST || o->machine == MACHINE_VIRT)) {
+        c[n++] = (struct auto_cand){.label = "float escalated", .build = "float",
+                                    .arith = "float", .escalate = 1};
+        c[n] = (struct auto_cand){.build = "fixed", .arith = "fixed", .escalate = 1};
+        snprintf(c[n++].label, sizeof c[0].label, "fixed Q%d.%d escalated",
+                 31 - AUTO_FIXED_BITS_BOARD, AUTO_FIXED_BITS_BOARD);
     }
     for (int i = 0; i < n; i++) {
         c[i].cost = -1;
@@ -451,7 +469,7 @@ static int auto_model_psnr(const struct auto_run *r, const char *build, int step
 {
     char img[PATH_MAX], log[PATH_MAX];
     *db = 0;
-    int st = auto_host_render_model(r, build, 0, steps, weight, img, log, sizeof img);
+    int st = auto_host_render_model(r, build, 0, 0, steps, weight, img, log, sizeof img);
     if (st != 0)
         return st > 0 ? 1 : -1;
     struct image a;
@@ -755,7 +773,7 @@ static int auto_choose(struct auto_run *r, struct auto_cand *c, int n)
         /* soft has float's bits: one host render serves both */
         int same = -1;
         for (int j = 0; j < i; j++)
-            if (strcmp(c[j].build, c[i].build) == 0)
+            if (strcmp(c[j].build, c[i].build) == 0 && c[j].escalate == c[i].escalate)
                 same = j;
         if (same >= 0) {
             struct auto_cand keep = c[i];
@@ -799,11 +817,12 @@ static int auto_choose(struct auto_run *r, struct auto_cand *c, int n)
         if (!auto_meets_goal(&c[i], auto_goal(r), o->target_db) || c[i].dearer)
             continue;
         for (int j = 0; j < i; j++)
-            if (strcmp(c[j].arith, c[i].arith) == 0 && c[j].cost >= 0 &&
-                c[j].steps == c[i].steps && c[j].weight == c[i].weight)
+            if (strcmp(c[j].arith, c[i].arith) == 0 && c[j].escalate == c[i].escalate &&
+                c[j].cost >= 0 && c[j].steps == c[i].steps && c[j].weight == c[i].weight)
                 c[i].cost = c[j].cost;
         if (c[i].cost < 0 &&
-            (c[i].cost = auto_board_cost(r, c[i].arith, c[i].steps, c[i].weight)) < 0)
+            (c[i].cost = auto_board_cost(r, c[i].arith, c[i].escalate, c[i].steps,
+                                         c[i].weight)) < 0)
             return -2;
     }
     int pick = -1;
@@ -845,7 +864,7 @@ int arith_auto_pick(const char *prog, const char *path, const struct arith_auto_
         auto_cleanup(tmp);
         return -1;
     }
-    int st = o->model ? auto_host_render_model(&r, "double", 0, SCN_MAX_DENSITY_STEPS,
+    int st = o->model ? auto_host_render_model(&r, "double", 0, 0, SCN_MAX_DENSITY_STEPS,
                                                ARITH_AUTO_REF_WEIGHT, img, log, sizeof img)
                       : auto_host_render(&r, "double", 0, img, log, sizeof img);
     if (st != 0 || auto_read(img, &r.ref, NULL) != 0) {
@@ -870,6 +889,7 @@ int arith_auto_pick(const char *prog, const char *path, const struct arith_auto_
         snprintf(out->label, sizeof out->label, "%s", c[pick].label);
         out->density_steps = o->model && r.density ? c[pick].steps : -1;
         out->min_weight = o->model ? c[pick].weight : -1;
+        out->escalate = c[pick].escalate;
     }
     image_free(&r.ref);
     auto_cleanup(tmp);

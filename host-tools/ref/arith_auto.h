@@ -71,6 +71,8 @@ struct arith_auto_choice {
     char label[24];   /* "fixed Q12.19", "soft", ... */
     int density_steps;  /* --auto: the steps chosen; -1: the scene's (no density sphere) */
     double min_weight;  /* --auto: the min_weight chosen; -1: not --auto */
+    int escalate;       /* --arith auto: 1 when the pick traces lost pixels again in
+                           double (--escalate; the board's -esc firmware) */
 };
 
 /* The options of a scene (scene_file.h) and its first frame as words for

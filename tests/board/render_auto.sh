@@ -7,6 +7,8 @@
 #             29 dB; scaled to the scene, scale 30 no longer does): without an FPU
 #             the pick is soft float, with VFP float; each board image
 #             equals the host build of the pick
+# with VFP and a 60 dB target on a map repeated 3000 times, float escalated
+# (the cheapest that keeps it; board = host);
 # on the an521 boards --fpu none picks among the M33's no-FPU builds, its
 # costs counted there;
 # and the pick is explained (candidates with PSNR and cost, the reason);
@@ -38,6 +40,40 @@ auto_case() {
 auto_case render_auto_fixed_suffices "$easy" none "fixed Q12.19" fixed
 auto_case render_auto_fixed_fails "$hard" none soft soft
 auto_case render_auto_fixed_fails_vfp "$hard" vfp float float
+
+# Escalation when it pays: a map repeated 3000 times leaves float under 60
+# dB (its map coordinates lose precision, and say so); traced again in
+# double where a pixel lost it, float keeps 60 dB.  With VFP the pick is
+# float escalated, the board boots the -esc firmware, and its image equals
+# the host's float --escalate.  Where plain float keeps the target (the
+# ellipsoid above, 40 dB) the escalated candidates are measured and not
+# picked.
+maps=$RENDER_TMP/maprepeat3000.scn
+python3 tests/sweeps/make_scene.py map_repeat 3000 --size $SIZE >"$maps"
+name=render_auto_escalates out=$RENDER_TMP/render_auto_escalates.ppm
+if render_board $name "$out" "$maps" -o "$out" --arith auto --fpu vfp --target-db 60 --ncs 2; then
+    log=$RENDER_TMP/$name.log
+    # escalated: not plain float's image (55 dB off double here)
+    plain=$(render_ref "$maps" float $SIZE)
+    if grep -q -- '--arith auto picks float escalated: the cheapest that keeps 60.0 dB' "$log" &&
+        [ -s "$plain" ] && [ -s "$out" ] && ! cmp -s "$plain" "$out"; then
+        echo "PASS ${name}_picks"
+    else
+        echo "FAIL ${name}_picks: not float escalated, or the board's image is plain float's: $(grep -E 'arith auto' "$log" | tr '\n' ' ')"
+    fi
+    ref=$RENDER_TMP/ref-maprepeat3000-float-esc.ppm
+    "$LINKS1" ref "$maps" --arith float --escalate --size $SIZE -o "$ref" >"$ref.log" 2>&1
+    render_same "${name}_board_is_host" "$ref" "$out"
+else
+    echo "FAIL ${name}_picks: the render failed"
+    echo "FAIL ${name}_board_is_host: the render failed"
+fi
+log=$RENDER_TMP/render_auto_fixed_fails_vfp.log
+if grep -qE '; float escalated [0-9.]+ dB' "$log" && grep -q -- '--arith auto picks float: ' "$log"; then
+    echo "PASS render_auto_plain_when_enough"
+else
+    echo "FAIL render_auto_plain_when_enough: $(grep 'arith auto' "$log" | tr '\n' ' ')"
+fi
 
 # On the an521 boards --fpu none means the M33 without an FPU: the costs
 # are counted on that machine's soft and fixed firmware (the M33's fixed
