@@ -471,7 +471,8 @@ static int render_escalate_check(const struct render_opts *o)
         return 0;
     const char *a = o->board.arith;
     const char *why =
-        o->arith_auto ? "an arithmetic given, float or fixed (not --arith auto or --auto)"
+        o->arith_auto ? "an arithmetic given, float or fixed (not --arith auto, which escalates "
+                        "by itself where that is the cheapest way to its target, or --auto)"
         : o->board.machine != MACHINE_VIRT
             ? "the virt board (the an521 boards have no escalating firmware: their M33s' FPU is "
               "single precision, so double would be software there, and none is built)"
