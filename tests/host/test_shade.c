@@ -200,7 +200,7 @@ static void test_normal_map(void)
     vec3_t n = vec3_normalize(ts_v(0.3, -0.5, 0.8));
     vec3_t t = vec3_normalize(vec3_cross(n, ts_v(0, 1, 0)));
     for (int i = 0; i < 5; i++) {
-        vec3_t got = map_normal(&m, N(0.13 * i), N(0.41 - 0.07 * i), n, t);
+        vec3_t got = map_normal(&m, N(0.13 * i), N(0.41 - 0.07 * i), n, t, 0);
         SAME_VEC(got, n);
     }
     /* tilted texels in the frame T, B = n x T, n: with n = -z, T = x, B = -y */
@@ -211,24 +211,24 @@ static void test_normal_map(void)
     static const uint8_t tilt_minus_x[] = {256 - 90, 0, 90};
     static const uint8_t tilt_y[] = {0, 90, 90};
     m = (scene_map_t){SCENE_MAP_NORMAL, 1, 1, tilt_x, NUM_ONE, NUM_ONE, NUM_ZERO};
-    vec3_t got = map_normal(&m, N(0.5), N(0.5), n, t);
+    vec3_t got = map_normal(&m, N(0.5), N(0.5), n, t, 0);
     CHECK_NEAR(D(got.x), h, TOL * 5);
     CHECK_NEAR(D(got.y), 0, TOL);
     CHECK_NEAR(D(got.z), -h, TOL * 5);
     m.texels = tilt_minus_x;
-    got = map_normal(&m, N(0.5), N(0.5), n, t);
+    got = map_normal(&m, N(0.5), N(0.5), n, t, 0);
     CHECK_NEAR(D(got.x), -h, TOL * 5);
     CHECK_NEAR(D(got.z), -h, TOL * 5);
     m.texels = tilt_y;
-    got = map_normal(&m, N(0.5), N(0.5), n, t);
+    got = map_normal(&m, N(0.5), N(0.5), n, t, 0);
     CHECK_NEAR(D(got.x), 0, TOL);
     CHECK_NEAR(D(got.y), -h, TOL * 5);
     CHECK_NEAR(D(got.z), -h, TOL * 5);
     /* nearest texel, not a blend: a 2x1 map of flat then tilted */
     static const uint8_t two[] = {0, 0, 127, 90, 0, 90};
     m = (scene_map_t){SCENE_MAP_NORMAL, 2, 1, two, NUM_ONE, NUM_ONE, NUM_ZERO};
-    SAME_VEC(map_normal(&m, N(0.49), N(0.5), n, t), n);
-    got = map_normal(&m, N(0.51), N(0.5), n, t);
+    SAME_VEC(map_normal(&m, N(0.49), N(0.5), n, t, 0), n);
+    got = map_normal(&m, N(0.51), N(0.5), n, t, 0);
     CHECK_NEAR(D(got.x), h, TOL * 5);
 }
 
