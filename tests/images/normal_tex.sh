@@ -4,6 +4,9 @@
 #   normal_tex_import_kinds: a model material's normal texture (OBJ `norm`)
 #     is imported as a normal map, its height texture (`map_bump`) as a
 #     bump map;
+#   normal_tex_gltf: so is a glTF 2 material's normalTexture, and the glTF
+#     square's triangles (vertices, their order, uv: glTF's v runs down the
+#     picture) are the OBJ square's;
 #   normal_tex_flat_ARITH (double, float, fixed): a bent, smooth, UV-mapped
 #     grid with a normal texture of the flat normal (RGB 128 128 255) gives
 #     the image and lost-precision count of the grid without it, bit for bit
@@ -57,6 +60,20 @@ for m in grid grid-flat grid-plain grid-plain-rev grid-height quad-xneg quad-xpo
     quad-90-mirror quad-90-still; do
     import $m || echo "FAIL normal_tex_import_$m: $(tail -n 1 "$out/$m.import.log")"
 done
+
+# the glTF square: its normalTexture a normal map, its triangles (vertices,
+# order, uv) those of the OBJ square
+if build/links1 import "$out/quad-0-plain.gltf" -o "$out/quad-gltf.scn" --camera auto \
+    >"$out/quad-gltf.import.log" 2>&1 &&
+    grep -q '^map tilt-0-plain.png normal ' "$out/quad-gltf.scn" &&
+    grep -q 'normal_map tilt-0-plain.png' "$out/quad-gltf.scn" &&
+    [ "$(grep -c 'triangle {' "$out/quad-gltf.scn")" = 2 ] &&
+    diff <(grep -o 'triangle {.*' "$out/quad-gltf.scn") <(grep -o 'triangle {.*' "$out/quad-0-plain.scn") \
+        >"$out/quad-gltf.diff"; then
+    echo "PASS normal_tex_gltf"
+else
+    echo "FAIL normal_tex_gltf: $(tail -n 1 "$out/quad-gltf.import.log") $(head -c 300 "$out/quad-gltf.diff" 2>/dev/null)"
+fi
 
 if grep -q '^map tilt.png normal ' "$out/grid.scn" && grep -q 'normal_map tilt.png' "$out/grid.scn" &&
     grep -q '^map tilt.png bump ' "$out/grid-height.scn" &&

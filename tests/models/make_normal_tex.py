@@ -19,11 +19,15 @@ tests/board/render_maps.sh), written as OBJ + MTL + PNG, nothing checked in.
       texels whose picture and normals turn (and mirror) with the uv, so
       that every point of the square sees the same normal in space;
       quad-90-still.obj the same but for the normals, left as they were
-      (what a frame that ignored the uv would see).
+      (what a frame that ignored the uv would see); quad-0-plain.gltf the
+      unturned square as glTF 2 (its v down the picture) with the same
+      texture as its normalTexture.
   wide.obj, wide-normal.obj: a grid of 2 * 64 * 64 triangles with a colour
       texture, and with the tilted normal texture too (for counting the DM's
       preparation per triangle).
 """
+import base64
+import json
 import math
 import os
 import struct
@@ -143,6 +147,36 @@ def quad(out, rot, mirror, follow=True):
         f.write("usemtl m\nf 1/1 2/2 3/3\nf 1/1 3/3 4/4\n")
 
 
+def gltf_quad(out, name, texture):
+    """the unturned square of quad() as glTF 2 (uv with v down the picture,
+    glTF's way: (u, 1 - v)), its material's normalTexture the given image."""
+    pos = [(-1, -1, 0), (1, -1, 0), (1, 1, 0), (-1, 1, 0)]
+    uv = [((x + 1) / 2, 1 - (y + 1) / 2) for (x, y, _) in pos]
+    data = (b"".join(struct.pack("<3f", *p) for p in pos) +
+            b"".join(struct.pack("<2f", *t) for t in uv) +
+            struct.pack("<6H", 0, 1, 2, 0, 2, 3))
+    doc = {
+        "asset": {"version": "2.0"},
+        "scene": 0, "scenes": [{"nodes": [0]}], "nodes": [{"mesh": 0, "name": "quad"}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0, "TEXCOORD_0": 1},
+                                    "indices": 2, "material": 0}]}],
+        "materials": [{"name": "m", "normalTexture": {"index": 0},
+                       "pbrMetallicRoughness": {"baseColorFactor": [0.8, 0.75, 0.7, 1]}}],
+        "textures": [{"source": 0}], "images": [{"uri": texture}],
+        "buffers": [{"byteLength": len(data), "uri": "data:application/octet-stream;base64," +
+                     base64.b64encode(data).decode()}],
+        "bufferViews": [{"buffer": 0, "byteOffset": 0, "byteLength": 48},
+                        {"buffer": 0, "byteOffset": 48, "byteLength": 32},
+                        {"buffer": 0, "byteOffset": 80, "byteLength": 12}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 4, "type": "VEC3",
+                       "min": [-1, -1, 0], "max": [1, 1, 0]},
+                      {"bufferView": 1, "componentType": 5126, "count": 4, "type": "VEC2"},
+                      {"bufferView": 2, "componentType": 5123, "count": 6, "type": "SCALAR"}],
+    }
+    with open(os.path.join(out, name + ".gltf"), "w") as f:
+        json.dump(doc, f)
+
+
 def main():
     out = sys.argv[1]
     os.makedirs(out, exist_ok=True)
@@ -178,6 +212,7 @@ def main():
         for mirror in (False, True):
             quad(out, rot, mirror)
     quad(out, 90, False, follow=False)
+    gltf_quad(out, "quad-0-plain", "tilt-0-plain.png")
 
 
 main()
