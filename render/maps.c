@@ -86,7 +86,7 @@ static num_t map_normal_component(uint8_t b)
     return num_from_ratio(b < 128 ? (int32_t)b : (int32_t)b - 256, SCN_MAP_NORMAL_ONE);
 }
 
-vec3_t map_normal(const scene_map_t *m, num_t u, num_t v, vec3_t n, vec3_t tangent)
+vec3_t map_normal(const scene_map_t *m, num_t u, num_t v, vec3_t n, vec3_t tangent, int mirrored)
 {
     int32_t x, y;
     map_nearest(m, u, v, &x, &y);
@@ -94,6 +94,8 @@ vec3_t map_normal(const scene_map_t *m, num_t u, num_t v, vec3_t n, vec3_t tange
     if (t[0] == 0 && t[1] == 0) /* (0, 0, z): along n, which is n itself */
         return n;
     vec3_t b = vec3_cross(n, tangent);
+    if (mirrored)
+        b = vec3_neg(b);
     vec3_t out = vec3_add(vec3_add(vec3_scale(tangent, map_normal_component(t[0])),
                                    vec3_scale(b, map_normal_component(t[1]))),
                           vec3_scale(n, map_normal_component(t[2])));

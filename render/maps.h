@@ -24,9 +24,10 @@ rgb_t map_colour(const scene_map_t *m, num_t u, num_t v);
 num_t map_attribute(const scene_map_t *m, num_t u, num_t v);
 
 /* Normal of a NORMAL map at (u, v), nearest texel (x, y, z) / 127 in the
- * tangent frame of map_bump: normalize(x*T + y*B + z*n), B = n x T.  A
- * texel (0, 0, z), the flat normal, gives n itself, not renormalized. */
-vec3_t map_normal(const scene_map_t *m, num_t u, num_t v, vec3_t n, vec3_t tangent);
+ * tangent frame normalize(x*T + y*B + z*n), B = n x T, or -(n x T) when
+ * mirrored (prim_map_tangent gives T and mirrored).  A texel (0, 0, z),
+ * the flat normal, gives n itself, not renormalized. */
+vec3_t map_normal(const scene_map_t *m, num_t u, num_t v, vec3_t n, vec3_t tangent, int mirrored);
 
 /* 1 when the texel map_normal picks at (u, v) could, under the lookup's
  * error (map_texel_error), be a neighbour holding another normal: the

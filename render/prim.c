@@ -106,6 +106,59 @@ static void prim_triangle_surface(const render_prim_t *p, hit_t *hit)
                      num_mul(gamma, p->tex_v[2]));
 }
 
+/* A normal map's frame on a triangle from its texture coordinates: the
+ * edges' combination that is dP/du (times the mapping's determinant det,
+ * whose sign is taken off), less its part along the hit's normal
+ * (Gram-Schmidt: a smooth triangle's normal leaves the plane).  det's
+ * error is the coordinates' rounding (two steps of the largest, times the
+ * largest difference, in each product) and the products' own; a det no
+ * larger falls back to the first edge (prim_surface's tangent), and one
+ * within PRIM_TANGENT_MARGIN of it turns the tangent by more than
+ * 1/PRIM_TANGENT_MARGIN radians: uncertain.  A mapping that is degenerate
+ * exactly (u or v the same at all three vertices) is no uncertainty. */
+#define PRIM_TANGENT_MARGIN 64
+static vec3_t prim_triangle_map_tangent(const render_prim_t *p, const hit_t *hit, int *mirrored,
+                                        int *uncertain)
+{
+    num_t du1 = num_sub(p->tex_u[1], p->tex_u[0]), du2 = num_sub(p->tex_u[2], p->tex_u[0]);
+    num_t dv1 = num_sub(p->tex_v[1], p->tex_v[0]), dv2 = num_sub(p->tex_v[2], p->tex_v[0]);
+    num_t a = num_mul(du1, dv2), b = num_mul(du2, dv1);
+    num_t det = num_sub(a, b);
+    num_t reach = NUM_ZERO, span = num_max(num_max(num_abs(du1), num_abs(du2)),
+                                           num_max(num_abs(dv1), num_abs(dv2)));
+    for (int k = 0; k < 3; k++)
+        reach = num_max(reach, num_max(num_abs(p->tex_u[k]), num_abs(p->tex_v[k])));
+    num_t err = num_add(num_mul_int(num_mul(num_ulp(reach), span), 4),
+                        num_mul_int(num_ulp(num_add(num_abs(a), num_abs(b))), 2));
+    int exact = num_eq(du1, NUM_ZERO) && num_eq(du2, NUM_ZERO);
+    exact = exact || (num_eq(dv1, NUM_ZERO) && num_eq(dv2, NUM_ZERO));
+    *mirrored = 0;
+    *uncertain = !exact && (num_is_sat(det) || num_is_sat(err) ||
+                            num_lt(num_abs(det), num_mul_int(err, PRIM_TANGENT_MARGIN)));
+    if (num_is_sat(det) || !num_gt(num_abs(det), err))
+        return hit->tangent;
+    vec3_t t = vec3_sub(vec3_scale(p->e1, dv2), vec3_scale(p->e2, dv1));
+    if (num_lt(det, NUM_ZERO))
+        t = vec3_neg(t);
+    t = vec3_normalize(vec3_sub(t, vec3_scale(hit->normal, vec3_dot(t, hit->normal))));
+    if (vec3_is_sat(t) || !num_gt(vec3_length(t), NUM_HALF)) {
+        *uncertain = !exact;
+        return hit->tangent;
+    }
+    /* B, the map's y, towards decreasing v (up the image): n x T, unless
+     * u and v turn the other way round the normal (det > 0: dP/dv is n x T) */
+    *mirrored = num_gt(det, NUM_ZERO);
+    return t;
+}
+
+vec3_t prim_map_tangent(const render_prim_t *p, const hit_t *hit, int *mirrored, int *uncertain)
+{
+    if (p->kind == SCENE_PRIM_TRIANGLE)
+        return prim_triangle_map_tangent(p, hit, mirrored, uncertain);
+    *mirrored = *uncertain = 0;
+    return hit->tangent;
+}
+
 /* ------------------------------------------------------------ ellipsoid */
 
 /* The ray in the unit sphere's space, written o' + s*dn with dn a unit

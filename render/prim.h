@@ -60,6 +60,16 @@ int prim_intersect_uncertain(const render_prim_t *p, const ray_t *ray, const ray
 /* Fill hit->point, normal, tangent, u, v for hit->t on primitive p. */
 void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit);
 
+/* The tangent a NORMAL map is read in at the hit (map_normal): a
+ * triangle's from its texture coordinates, unit dP/du made perpendicular
+ * to hit->normal, with *mirrored = 1 when the map's y must be -(n x T) to
+ * point up the image (towards decreasing v); a triangle whose mapping is
+ * degenerate, and every other primitive, hit->tangent with *mirrored = 0.
+ * *uncertain = 1 when the arithmetic's rounding could turn a triangle's
+ * tangent by more than 1/64 radian or make the other choice (lost
+ * precision). */
+vec3_t prim_map_tangent(const render_prim_t *p, const hit_t *hit, int *mirrored, int *uncertain);
+
 /* Ray-box test: 1 if the ray meets box b at some t in [tmin, tmax]. */
 int prim_aabb_hit(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax);
 /* The same, with *entry the t where the ray enters the box (>= tmin). */

@@ -371,8 +371,10 @@ static const scene_material_t *trace_surface_look(render_ctx_t *ctx, const hit_t
     }
     if (m->normal_map != SCENE_NONE) {
         const scene_map_t *nm = &s->maps[m->normal_map];
-        *normal = map_normal(nm, hit->u, hit->v, hit->normal, hit->tangent);
-        if (map_normal_uncertain(nm, hit->u, hit->v, uv_error))
+        int mirrored, frame_uncertain;
+        vec3_t t = prim_map_tangent(&ctx->frame->prims[hit->prim], hit, &mirrored, &frame_uncertain);
+        *normal = map_normal(nm, hit->u, hit->v, hit->normal, t, mirrored);
+        if (frame_uncertain || map_normal_uncertain(nm, hit->u, hit->v, uv_error))
             ctx->pixel_lost = 1;
     }
     if (m->dic_map == SCENE_NONE && m->drc_map == SCENE_NONE && m->src_map == SCENE_NONE &&

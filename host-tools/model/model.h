@@ -52,7 +52,8 @@ struct model_material {
     double ior;
     char diffuse_tex[MODEL_PATH_MAX]; /* as written in the file; "" none, "*N" embedded */
     char bump_tex[MODEL_PATH_MAX];    /* a bump (height) or normal texture */
-    int bump_is_normal;     /* bump_tex is a normal map */
+    int bump_is_normal;     /* bump_tex is a normal (tangent-space) texture,
+                               imported as a normal map; else a height */
 };
 
 struct model_camera {       /* world coordinates */

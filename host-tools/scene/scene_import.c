@@ -87,6 +87,25 @@ static int imp_normals(const struct model_mesh *me, int t, double n[9])
     return 1;
 }
 
+/* A triangle with vertices 1 and 2 (and their uv and normals) swapped.
+ * With z negated the file's winding makes the scene's face normal
+ * (e1 x e2) point into the model; a normal map's z is the face's outward
+ * normal (docs/scene-format.md), so a triangle with one is turned over.
+ * The others keep the file's order (their images stay as they were). */
+static void imp_turn_over(struct sd_prim *pr)
+{
+    for (int k = 0; k < 3; k++) {
+        double t = pr->v[3 + k];
+        pr->v[3 + k] = pr->v[6 + k], pr->v[6 + k] = t;
+        t = pr->n[3 + k];
+        pr->n[3 + k] = pr->n[6 + k], pr->n[6 + k] = t;
+    }
+    for (int k = 9; k <= 12; k += 3) {
+        double t = pr->v[k + 1];
+        pr->v[k + 1] = pr->v[k + 2], pr->v[k + 2] = t;
+    }
+}
+
 /* Nodes, meshes and indices hold together and every number is finite. */
 static int imp_check_structure(struct imp *im)
 {
@@ -293,7 +312,9 @@ static int imp_material_named(const struct sd_scene *s, const struct sd_material
 static int imp_texture(struct imp *im, const struct sd_scene *s, const char *model_dir,
                        const struct model_material *mm, const char *tex, int kind)
 {
-    const char *what = kind == SCN_MAP_COLOUR ? "diffuse texture" : "bump texture";
+    const char *what = kind == SCN_MAP_COLOUR   ? "diffuse texture"
+                       : kind == SCN_MAP_NORMAL ? "normal texture"
+                                                : "bump texture";
     if (tex[0] == '*')
         return imp_fail(im, "material '%s': %s %s is embedded in the model file; only "
                             "texture files (PNG or PPM) are read",
@@ -385,9 +406,15 @@ static int imp_materials(struct imp *im, const struct sd_scene *s, const char *m
             (d->colour_map = imp_texture(im, s, model_dir, mm, mm->diffuse_tex,
                                          SCN_MAP_COLOUR)) < 0)
             return -1;
-        if (mm->bump_tex[0] &&
-            (d->bump_map = imp_texture(im, s, model_dir, mm, mm->bump_tex, SCN_MAP_BUMP)) < 0)
-            return -1;
+        /* a height texture is a bump map; a normal texture a normal map in
+         * the tangent frame of the triangles' texture coordinates */
+        if (mm->bump_tex[0]) {
+            int kind = mm->bump_is_normal ? SCN_MAP_NORMAL : SCN_MAP_BUMP;
+            int k = imp_texture(im, s, model_dir, mm, mm->bump_tex, kind);
+            if (k < 0)
+                return -1;
+            *(kind == SCN_MAP_NORMAL ? &d->normal_map : &d->bump_map) = k;
+        }
         for (int k = before; k < im->n_maps; k++)
             texel_bytes += (size_t)im->maps[k].width * (size_t)im->maps[k].height *
                            sd_map_texel_bytes(im->maps[k].kind);
@@ -456,6 +483,8 @@ static int imp_commit(struct imp *im, struct sd_scene *s, int parent, struct sd_
                     im->r->smooth += pr.smooth;
                     im->r->flat += !pr.smooth;
                 }
+                if (s->materials[pr.material].normal_map >= 0)
+                    imp_turn_over(&pr);
                 s->prims[s->n_prims++] = pr;
             }
         }

@@ -1,6 +1,9 @@
 /* test_shade.c: the terms of the paper's Fig. 5, src/trc, lights, mirror
  * and Snell directions, and the maps, against hand-computed values. */
+#include <string.h>
+
 #include "render/maps.h"
+#include "render/prim.h"
 #include "render/shade.h"
 #include "render/vec3.h"
 #include "tests/check.h"
@@ -200,7 +203,7 @@ static void test_normal_map(void)
     vec3_t n = vec3_normalize(ts_v(0.3, -0.5, 0.8));
     vec3_t t = vec3_normalize(vec3_cross(n, ts_v(0, 1, 0)));
     for (int i = 0; i < 5; i++) {
-        vec3_t got = map_normal(&m, N(0.13 * i), N(0.41 - 0.07 * i), n, t);
+        vec3_t got = map_normal(&m, N(0.13 * i), N(0.41 - 0.07 * i), n, t, 0);
         SAME_VEC(got, n);
     }
     /* tilted texels in the frame T, B = n x T, n: with n = -z, T = x, B = -y */
@@ -211,25 +214,78 @@ static void test_normal_map(void)
     static const uint8_t tilt_minus_x[] = {256 - 90, 0, 90};
     static const uint8_t tilt_y[] = {0, 90, 90};
     m = (scene_map_t){SCENE_MAP_NORMAL, 1, 1, tilt_x, NUM_ONE, NUM_ONE, NUM_ZERO};
-    vec3_t got = map_normal(&m, N(0.5), N(0.5), n, t);
+    vec3_t got = map_normal(&m, N(0.5), N(0.5), n, t, 0);
     CHECK_NEAR(D(got.x), h, TOL * 5);
     CHECK_NEAR(D(got.y), 0, TOL);
     CHECK_NEAR(D(got.z), -h, TOL * 5);
     m.texels = tilt_minus_x;
-    got = map_normal(&m, N(0.5), N(0.5), n, t);
+    got = map_normal(&m, N(0.5), N(0.5), n, t, 0);
     CHECK_NEAR(D(got.x), -h, TOL * 5);
     CHECK_NEAR(D(got.z), -h, TOL * 5);
     m.texels = tilt_y;
-    got = map_normal(&m, N(0.5), N(0.5), n, t);
+    got = map_normal(&m, N(0.5), N(0.5), n, t, 0);
     CHECK_NEAR(D(got.x), 0, TOL);
     CHECK_NEAR(D(got.y), -h, TOL * 5);
     CHECK_NEAR(D(got.z), -h, TOL * 5);
     /* nearest texel, not a blend: a 2x1 map of flat then tilted */
     static const uint8_t two[] = {0, 0, 127, 90, 0, 90};
     m = (scene_map_t){SCENE_MAP_NORMAL, 2, 1, two, NUM_ONE, NUM_ONE, NUM_ZERO};
-    SAME_VEC(map_normal(&m, N(0.49), N(0.5), n, t), n);
-    got = map_normal(&m, N(0.51), N(0.5), n, t);
+    SAME_VEC(map_normal(&m, N(0.49), N(0.5), n, t, 0), n);
+    got = map_normal(&m, N(0.51), N(0.5), n, t, 0);
     CHECK_NEAR(D(got.x), h, TOL * 5);
+}
+
+/* A normal map's frame on a triangle (prim_map_tangent): T along dP/du of
+ * its uv, mirrored when u and v turn the other way round n, perpendicular
+ * to a smooth normal; a degenerate mapping gives the first edge. */
+static void ts_tangent(const double uv[6], vec3_t n, vec3_t *t, int *mirrored, int *uncertain)
+{
+    render_prim_t p;
+    memset(&p, 0, sizeof p);
+    p.kind = SCENE_PRIM_TRIANGLE;
+    p.e1 = ts_v(2, 0, 0);
+    p.e2 = ts_v(0, 2, 0);
+    for (int k = 0; k < 3; k++)
+        p.tex_u[k] = N(uv[2 * k]), p.tex_v[k] = N(uv[2 * k + 1]);
+    hit_t h;
+    memset(&h, 0, sizeof h);
+    h.normal = n;
+    h.tangent = ts_v(1, 0, 0); /* prim_surface's: the first edge */
+    *t = prim_map_tangent(&p, &h, mirrored, uncertain);
+}
+
+static void test_map_tangent(void)
+{
+    vec3_t n = ts_v(0, 0, 1), t;
+    int mir, unc;
+    /* u grows from vertex 2 to 0 (along -e2), v from 0 to 1 (along e1):
+     * T = -y, and n x T = +x is dP/dv, down the picture: mirrored */
+    static const double turned[6] = {1, 0, 1, 1, 0, 0};
+    ts_tangent(turned, n, &t, &mir, &unc);
+    CHECK_NEAR(D(t.x), 0, TOL);
+    CHECK_NEAR(D(t.y), -1, TOL);
+    CHECK(mir == 1 && unc == 0);
+    /* u along e2, v along e1: T = +y, n x T = -x, up the picture */
+    static const double plain[6] = {0, 0, 0, 1, 1, 0};
+    ts_tangent(plain, n, &t, &mir, &unc);
+    CHECK_NEAR(D(t.y), 1, TOL);
+    CHECK(mir == 0 && unc == 0);
+    /* a smooth normal out of the plane: T made perpendicular to it */
+    static const double along_e1[6] = {0, 0, 1, 0, 0, 1};
+    vec3_t tilted = vec3_normalize(ts_v(0.3, 0, 1));
+    ts_tangent(along_e1, tilted, &t, &mir, &unc);
+    CHECK_NEAR(D(vec3_dot(t, tilted)), 0, TOL);
+    CHECK_NEAR(D(vec3_length(t)), 1, TOL);
+    CHECK(D(t.x) > 0.9 && mir == 1 && unc == 0);
+    /* all three uv the same: the first edge, exactly, and no doubt */
+    static const double same[6] = {0.5, 0.5, 0.5, 0.5, 0.5, 0.5};
+    ts_tangent(same, n, &t, &mir, &unc);
+    SAME_VEC(t, ts_v(1, 0, 0));
+    CHECK(mir == 0 && unc == 0);
+    /* on one line but not exactly (0.1 steps round): uncertain */
+    static const double line[6] = {0, 0, 0.3, 0.1, 0.6, 0.2};
+    ts_tangent(line, n, &t, &mir, &unc);
+    CHECK(unc == 1);
 }
 
 static void test_normal_map_uncertain(void)
@@ -287,6 +343,7 @@ int main(void)
     RUN(test_colour_map);
     RUN(test_bump_map);
     RUN(test_normal_map);
+    RUN(test_map_tangent);
     RUN(test_normal_map_uncertain);
     RUN(test_attribute_map);
     return check_exit();
