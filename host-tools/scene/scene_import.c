@@ -88,10 +88,12 @@ static int imp_normals(const struct model_mesh *me, int t, double n[9])
 }
 
 /* A triangle with vertices 1 and 2 (and their uv and normals) swapped.
- * With z negated the file's winding makes the scene's face normal
- * (e1 x e2) point into the model; a normal map's z is the face's outward
- * normal (docs/scene-format.md), so a triangle with one is turned over.
- * The others keep the file's order (their images stay as they were). */
+ * With z negated the file's winding (counter-clockwise seen from outside,
+ * as OBJ, glTF and the other formats have it) would make the scene's face
+ * normal (e1 x e2) point into the model: every triangle is turned over, so
+ * that it points out, as the renderer reads it (a ray entering glass
+ * meets the outward side; a normal map's z and a bump map's heights are
+ * along it). */
 static void imp_turn_over(struct sd_prim *pr)
 {
     for (int k = 0; k < 3; k++) {
@@ -483,8 +485,7 @@ static int imp_commit(struct imp *im, struct sd_scene *s, int parent, struct sd_
                     im->r->smooth += pr.smooth;
                     im->r->flat += !pr.smooth;
                 }
-                if (s->materials[pr.material].normal_map >= 0)
-                    imp_turn_over(&pr);
+                imp_turn_over(&pr);
                 s->prims[s->n_prims++] = pr;
             }
         }

@@ -46,6 +46,36 @@ import_renders collada tests/models/tower.dae
 import_renders 3ds tests/models/tetra.3ds --camera auto
 import_renders fit tests/models/huge.obj --fit --camera auto
 
+# Faces out: a closed convex model whose file lists each face
+# counter-clockwise seen from outside (the formats' rule) comes out with
+# every triangle's e1 x e2 pointing away from the model's centre, the side
+# a ray entering glass meets (the import negates z, which alone would turn
+# them in).
+faces_out() { # NAME SCENE: PASS when every triangle faces away from the centroid
+    python3 - "$2" <<'PY' && echo "PASS import_faces_out_$1" || echo "FAIL import_faces_out_$1"
+import re, sys
+tris = [[list(map(float, v)) for v in re.findall(r"\bv (\S+) (\S+) (\S+)", line)]
+        for line in open(sys.argv[1]) if line.lstrip().startswith("triangle")]
+pts = [p for t in tris for p in t]
+if not tris or not pts:
+    print("no triangles in", sys.argv[1]); sys.exit(1)
+c = [sum(p[i] for p in pts) / len(pts) for i in range(3)]
+inward = 0
+for a, b, d in tris:
+    e1 = [b[i] - a[i] for i in range(3)]
+    e2 = [d[i] - a[i] for i in range(3)]
+    n = [e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2], e1[0] * e2[1] - e1[1] * e2[0]]
+    m = [(a[i] + b[i] + d[i]) / 3 - c[i] for i in range(3)]
+    inward += sum(n[i] * m[i] for i in range(3)) <= 0
+if inward:
+    print(inward, "of", len(tris), "triangles face into the model")
+sys.exit(1 if inward else 0)
+PY
+}
+faces_out obj "$out/obj_mtl.scn"
+build/links1 import tests/models/ball.obj -o "$out/ball.scn" --camera auto >/dev/null 2>&1
+faces_out ball "$out/ball.scn"
+
 # The textures of the OBJ's material are named relative to the scene.
 if grep -q 'image "[^"]*tex.ppm"' "$out/obj_mtl.scn" 2>/dev/null; then
     echo "PASS import_texture_named"

@@ -10,8 +10,7 @@
 #   normal_tex_flat_ARITH (double, float, fixed): a bent, smooth, UV-mapped
 #     grid with a normal texture of the flat normal (RGB 128 128 255) gives
 #     the image and lost-precision count of the grid without it, bit for bit
-#     (the grid without it from a file listing its faces the other way round:
-#     the import turns over a triangle with a normal map, docs/import.md);
+#     (the import turns every triangle over the same way, docs/import.md);
 #   normal_tex_tilts: the tilted normal texture changes the grid's image;
 #   normal_tex_turned_ARITH: a square whose uv is turned 90 degrees against
 #     its geometry, with its texture's picture and normals turned to match,
@@ -55,7 +54,7 @@ lost() { sed -nE 's/.* ([0-9]+) pixels lost precision.*/\1/p' "$1.log"; }
 failed() { [ ! -s "$1" ] || [ ! -s "$2" ]; }
 why() { echo "a render failed: $(tail -n 1 "$1.log") / $(tail -n 1 "$2.log")"; }
 
-for m in grid grid-flat grid-plain grid-plain-rev grid-height quad-xneg quad-xpos quad-yneg \
+for m in grid grid-flat grid-plain grid-height quad-xneg quad-xpos quad-yneg \
     quad-ypos quad-0-plain quad-90-plain quad-0-mirror \
     quad-90-mirror quad-90-still; do
     import $m || echo "FAIL normal_tex_import_$m: $(tail -n 1 "$out/$m.import.log")"
@@ -84,7 +83,7 @@ else
 fi
 
 for a in double float fixed; do
-    plain=$(render grid-plain-rev $a) flat=$(render grid-flat $a)
+    plain=$(render grid-plain $a) flat=$(render grid-flat $a)
     if failed "$plain" "$flat"; then
         echo "FAIL normal_tex_flat_$a: $(why "$plain" "$flat")"
     elif ! cmp -s "$plain" "$flat"; then
@@ -96,7 +95,7 @@ for a in double float fixed; do
     fi
 done
 
-plain=$out/grid-plain-rev-float.ppm tilted=$(render grid float)
+plain=$out/grid-plain-float.ppm tilted=$(render grid float)
 if failed "$plain" "$tilted"; then
     echo "FAIL normal_tex_tilts: $(why "$plain" "$tilted")"
 elif build/links1 compare "$plain" "$tilted" --within 8 --min-fraction 0.9 >/dev/null 2>&1; then

@@ -3,12 +3,10 @@
 textures for the tests of imported normal maps (tests/images/normal_tex.sh,
 tests/board/render_maps.sh), written as OBJ + MTL + PNG, nothing checked in.
 
-  grid.obj / grid-flat.obj / grid-plain.obj / grid-plain-rev.obj /
-  grid-height.obj: a bent grid of N x N quads (smooth vertex normals, uv
-      0..1); grid-flat's material has a normal texture of the flat normal
-      (RGB 128 128 255), grid-plain's none (grid-plain-rev: none, and its
-      triangles' second and third vertices swapped, as the import turns over a triangle
-      with a normal map), grid.obj a tilted one (tilt.png), grid-height's
+  grid.obj / grid-flat.obj / grid-plain.obj / grid-height.obj: a bent
+      grid of N x N quads (smooth vertex normals, uv 0..1); grid-flat's
+      material has a normal texture of the flat normal (RGB 128 128 255),
+      grid-plain's none, grid.obj a tilted one (tilt.png), grid-height's
       the tilted one as a height texture (map_bump).
   quad-xneg.obj, quad-xpos, quad-yneg, quad-ypos: the square below, uv
       unturned, a normal texture tilted 30 degrees one way all over (x: along
@@ -63,7 +61,7 @@ def mtl(path, name, lines):
             f.write(line + "\n")
 
 
-def grid(path, mtlname, n, bend=True, normals=True, reverse=False, tris=True):
+def grid(path, mtlname, n, bend=True, normals=True, tris=True):
     with open(path, "w") as f:
         f.write("mtllib %s\no grid\n" % mtlname)
         for j in range(n + 1):
@@ -86,8 +84,6 @@ def grid(path, mtlname, n, bend=True, normals=True, reverse=False, tris=True):
                 faces = [(q[0], q[1], q[2]), (q[0], q[2], q[3])] if tris else [q]
                 fmt = "%d/%d/%d" if normals else "%d/%d"
                 for fc in faces:
-                    if reverse:
-                        fc = (fc[0], fc[2], fc[1])
                     f.write("f " + " ".join(fmt % ((k, k, k) if normals else (k, k)) for k in fc) + "\n")
 
 
@@ -188,10 +184,10 @@ def main():
     png(os.path.join(out, "colour.png"),
         [[(60 + 40 * i, 200 - 30 * j, 90 + 20 * ((i + j) % 3)) for i in range(4)] for j in range(4)])
     for name, lines in (("grid-flat", ["norm flat.png"]), ("grid-plain", []),
-                        ("grid-plain-rev", []), ("grid", ["norm tilt.png"]),
+                        ("grid", ["norm tilt.png"]),
                         ("grid-height", ["map_bump tilt.png"])):
         mtl(os.path.join(out, name + ".mtl"), "m", lines)
-        grid(os.path.join(out, name + ".obj"), name + ".mtl", 6, reverse=name.endswith("-rev"))
+        grid(os.path.join(out, name + ".obj"), name + ".mtl", 6)
     # one tilt all over the square, 30 degrees each way
     for name, (x, y) in (("xneg", (-0.5, 0)), ("xpos", (0.5, 0)), ("yneg", (0, -0.5)),
                          ("ypos", (0, 0.5))):
