@@ -9,11 +9,25 @@
 # one run (counts, not times).
 #   bash tests/bench/bench_flags.sh [OUT-DIR]   (default build/bench-flags)
 #   FLAG_SCENES="demo glass molecule" FLAG_SIZE=320x240
+# A scene named FAMILY:KNOB is a sweep family's (tests/sweeps/families.sh);
+# FLAG_FAMILIES=1 scores every family at every knob instead (at FLAG_SIZE,
+# default 160x120 then) and ends with each family's worst precision and
+# recall per program over its knobs.
 set -eu
 cd "$(dirname "$0")/../.."
 out=${1:-build/bench-flags}
-SCENES=${FLAG_SCENES:-demo glass molecule}
-SIZE=${FLAG_SIZE:-320x240}
+. tests/sweeps/families.sh
+if [ "${FLAG_FAMILIES:-0}" = 1 ]; then
+    SCENES=""
+    for f in "${families[@]}"; do
+        IFS='|' read -r fam knobs _ <<<"$f"
+        for k in $knobs; do SCENES+=" $fam:$k"; done
+    done
+    SIZE=${FLAG_SIZE:-160x120}
+else
+    SCENES=${FLAG_SCENES:-demo glass molecule}
+    SIZE=${FLAG_SIZE:-320x240}
+fi
 mkdir -p "$out"
 progs="links1-ref-float links1-ref-fixed links1-ref-fixed14 links1-ref-fixed16 links1-ref-fixed18"
 make -s --no-print-directory build/links1 build/links1-ref-double $(printf 'build/%s ' $progs)
@@ -32,17 +46,37 @@ score() {
 tsv=$out/flags.tsv
 printf 'scene\tprogram\tflags\tflagged\tprecision_pct\trecall_pct\n' >"$tsv"
 for s in $SCENES; do
+    scn=scenes/$s.scn
+    case $s in *:*)
+        scn=$out/${s/:/-}.scn
+        family_scene "${s%%:*}" "${s#*:}" "$SIZE" >"$scn" ;;
+    esac
     ref=$out/$s-double.ppm
-    build/links1-ref-double "scenes/$s.scn" --size "$SIZE" -o "$ref" >/dev/null 2>&1
+    build/links1-ref-double "$scn" --size "$SIZE" -o "$ref" >/dev/null 2>&1
     for p in $progs; do
         plain=$out/$s-$p.ppm
-        build/$p "scenes/$s.scn" --size "$SIZE" -o "$plain" >/dev/null 2>&1
-        build/$p "scenes/$s.scn" --size "$SIZE" --mark-lost -o "$out/$s-$p-marked.ppm" \
+        build/$p "$scn" --size "$SIZE" -o "$plain" >/dev/null 2>&1
+        build/$p "$scn" --size "$SIZE" --mark-lost -o "$out/$s-$p-marked.ppm" \
             >"$out/$s-$p-marked.log" 2>&1
-        build/$p "scenes/$s.scn" --size "$SIZE" --check-lost --mark-lost \
+        build/$p "$scn" --size "$SIZE" --check-lost --mark-lost \
             -o "$out/$s-$p-checked.ppm" >"$out/$s-$p-checked.log" 2>&1
         printf '%s\t%s\tbounds\t%s\n' "$s" "$p" "$(score "$ref" "$plain" "$out/$s-$p-marked.ppm")" >>"$tsv"
         printf '%s\t%s\tchecked\t%s\n' "$s" "$p" "$(score "$ref" "$plain" "$out/$s-$p-checked.ppm")" >>"$tsv"
     done
 done
 column -t -s$'\t' "$tsv"
+if [ "${FLAG_FAMILIES:-0}" = 1 ]; then
+    # each family's worst over its knobs, per program and kind of flag:
+    # precision where something was flagged, recall where a pixel was beyond
+    echo
+    awk -F'\t' 'NR > 1 {
+            split($1, a, ":"); k = a[1] "\t" $2 "\t" $3
+            if (!(k in minp)) { minp[k] = "-"; minr[k] = "-"; order[++n] = k }
+            if ($4 + 0 > 0 && $5 != "?" && $5 != "" && (minp[k] == "-" || $5 + 0 < minp[k] + 0)) minp[k] = $5
+            if ($6 != "?" && $6 != "" && $6 != "-" && (minr[k] == "-" || $6 + 0 < minr[k] + 0)) minr[k] = $6
+        }
+        END {
+            print "family\tprogram\tflags\tworst precision %\tworst recall %"
+            for (i = 1; i <= n; i++) print order[i] "\t" minp[order[i]] "\t" minr[order[i]]
+        }' "$tsv" | tee "$out/flags-families.tsv" | column -t -s$'\t'
+fi
