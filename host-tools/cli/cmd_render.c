@@ -35,6 +35,8 @@ struct render_job {
     uint8_t *bytes; /* the compiled scene, read before the board boots */
     size_t len;
     struct scene_file_info info; /* how it was compiled */
+    uint32_t frames, height;     /* its compiled header's (render_check_job); 0: not
+                                    readable, the board's loader judges it */
 };
 
 /* Where a render command's wall time goes, ms, and QEMU's host CPU time
@@ -271,7 +273,7 @@ static int render_add_job(struct render_opts *o, int code, const char *arg)
                 RENDER_MAX_JOBS);
         return -1;
     }
-    o->jobs[o->njobs++] = (struct render_job){arg, NULL, NULL, 0, {-1, -1}};
+    o->jobs[o->njobs++] = (struct render_job){arg, NULL, NULL, 0, {-1, -1}, 0, 0};
     return 0;
 }
 
@@ -669,6 +671,40 @@ static void render_free_scenes(struct render_opts *o)
     }
 }
 
+/* The frames and the band asked for, against the compiled scene's own
+ * frames and height, before a board boots.  0, or -1 after saying why.  A
+ * compiled file whose view cannot be read is left to the board's loader,
+ * which names what is wrong with it (and the next scene still renders). */
+static int render_check_job(const struct render_opts *o, struct render_job *j)
+{
+    struct scene_paper v;
+    char why[SD_ERR_MAX];
+    j->frames = j->height = 0;
+    if (scene_paper_read(j->bytes, j->len, &v, why, sizeof why) != 0 || v.frames == 0 ||
+        v.height <= 0)
+        return 0;
+    j->frames = v.frames;
+    j->height = (uint32_t)v.height;
+    long last = o->last < 0 ? o->first : o->last;
+    if ((uint64_t)last >= v.frames) {
+        fprintf(stderr, "links1 render: %s: frame %ld, the scene has %u frames (0..%u)\n",
+                j->scene, last, v.frames, v.frames - 1);
+        return -1;
+    }
+    if (o->bands && o->bands > v.height) {
+        fprintf(stderr, "links1 render: %s: --band %ld/%ld: %ld bands of a frame of %d "
+                "scanlines (at most one band a scanline)\n", j->scene, o->band, o->bands,
+                o->bands, v.height);
+        return -1;
+    }
+    if (o->row_first >= 0 && o->row_last >= v.height) {
+        fprintf(stderr, "links1 render: %s: --rows %ld:%ld, the frame has %d scanlines "
+                "(0..%d)\n", j->scene, o->row_first, o->row_last, v.height, v.height - 1);
+        return -1;
+    }
+    return 0;
+}
+
 static int render_read_scenes(struct render_opts *o)
 {
     for (int j = 0; j < o->njobs; j++) {
@@ -679,6 +715,8 @@ static int render_read_scenes(struct render_opts *o)
             fprintf(stderr, "links1 render: %s\n", err);
             return -1;
         }
+        if (render_check_job(o, job) != 0)
+            return -1;
     }
     return 0;
 }
@@ -821,31 +859,24 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
            j->scene, info.width, info.height, info.frames, info.compiled_bytes, info.blob_bytes,
            info.blob_limit);
     long first = o->first, last = o->last < 0 ? o->first : o->last;
-    if ((uint32_t)last >= info.frames) {
-        fprintf(stderr, "links1 render: %s: frame %ld, the scene has %u frames (0..%u)\n",
-                j->scene, last, info.frames, info.frames - 1);
+    if (j->frames ? info.frames != j->frames || info.height != j->height
+                  : (uint32_t)last >= info.frames || (o->bands && (uint32_t)o->bands > info.height) ||
+                        (o->row_first >= 0 && (uint32_t)o->row_last >= info.height)) {
+        /* render_check_job checked what the compiled header says; the board
+         * loaded something else, or the header was not readable there */
+        fprintf(stderr, "links1 render: %s: the board loaded %u frames of %u scanlines: not "
+                "frame %ld%s\n", j->scene, info.frames, info.height, last,
+                o->bands || o->row_first >= 0 ? " and the band asked for" : "");
         return -1;
     }
     int ppm = o->ppm || scene_file_ends_with(j->out, ".ppm");
     struct link_render_args job_args = o->args;
-    if (o->bands) { /* band I of N: its scanlines of this scene's height */
-        if ((uint32_t)o->bands > info.height) {
-            fprintf(stderr, "links1 render: %s: --band %ld/%ld: %ld bands of a frame of %u "
-                    "scanlines (at most one band a scanline)\n", j->scene, o->band, o->bands,
-                    o->bands, info.height);
-            return -1;
-        }
+    if (o->bands) { /* band I of N: its scanlines (render_check_job: N <= height) */
         job_args.row0 = (uint16_t)((uint64_t)info.height * (uint64_t)o->band / (uint64_t)o->bands);
         job_args.rows = (uint16_t)((uint64_t)info.height * (uint64_t)(o->band + 1) /
                                    (uint64_t)o->bands - job_args.row0);
     }
-    if (o->row_first >= 0) { /* a band: checked against this scene's height */
-        if ((uint32_t)o->row_last >= info.height) {
-            fprintf(stderr, "links1 render: %s: --rows %ld:%ld, the frame has %u scanlines "
-                    "(0..%u)\n", j->scene, o->row_first, o->row_last, info.height,
-                    info.height - 1);
-            return -1;
-        }
+    if (o->row_first >= 0) { /* a band (render_check_job: within the height) */
         job_args.row0 = (uint16_t)o->row_first;
         job_args.rows = (uint16_t)(o->row_last - o->row_first + 1);
     }

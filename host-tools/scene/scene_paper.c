@@ -53,6 +53,7 @@ int scene_paper_read(const uint8_t *buf, size_t len, struct scene_paper *p, char
     p->paper = (wire_get_u16(v + SCN_VIEW_FLAGS) & SCN_OPT_PAPER) != 0;
     p->width = wire_get_u16(v + SCN_VIEW_WIDTH);
     p->height = wire_get_u16(v + SCN_VIEW_HEIGHT);
+    p->frames = wire_get_u32(v + SCN_VIEW_FRAMES);
     p->max_depth = wire_get_u16(v + SCN_VIEW_MAX_DEPTH);
     p->min_weight = wire_get_f32(v + SCN_VIEW_MIN_WEIGHT);
     p->materials = (int)mn;

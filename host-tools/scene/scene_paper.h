@@ -18,6 +18,7 @@
 struct scene_paper {
     int paper;           /* SCN_OPT_PAPER */
     int width, height;
+    uint32_t frames;     /* of the animation, 1 for a still */
     int max_depth;
     double min_weight;   /* 0: no weight cut-off */
     int materials;       /* all */
