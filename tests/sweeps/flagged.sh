@@ -53,3 +53,21 @@ done
 
 # (a cluster scaled by 0.01, refused in every arithmetic when the lengths
 # followed the coordinates alone, renders: no refusal is expected)
+
+# Checked flags on an ellipsoid 1,000 times longer than thick in Q15.16
+# (links1-ref-fixed16 --check-lost): every pixel beyond 2/255 of double is
+# flagged.  The large local distance to such an ellipsoid's closest point
+# multiplies the fixed-point step of its direction and the ray's own error
+# past a radius; before the graze test allowed for both, 11 of its pixels
+# at 96x72 were off and unflagged (docs/renderer.md, checked flags).
+thin=$out/thin1000
+python3 tests/sweeps/make_scene.py ellipsoid_ratio 1000 --size 96x72 >"$thin.scn"
+if build/links1-ref-double "$thin.scn" -o "$thin-double.ppm" >"$thin.log" 2>&1 &&
+    build/links1-ref-fixed16 "$thin.scn" -o "$thin-plain.ppm" >>"$thin.log" 2>&1 &&
+    build/links1-ref-fixed16 "$thin.scn" --check-lost --mark-lost -o "$thin-checked.ppm" >>"$thin.log" 2>&1 &&
+    verdict=$(build/links1 compare "$thin-double.ppm" "$thin-plain.ppm" --flags "$thin-checked.ppm" \
+        --min-precision 0.5 --min-recall 1 2>&1); then
+    echo "PASS flagged_thin_ellipsoid_q15_16 ($(grep -o 'recall [0-9.]*%' <<<"$verdict"))"
+else
+    echo "FAIL flagged_thin_ellipsoid_q15_16: $(tail -n 1 <<<"${verdict:-$(tail -n 1 "$thin.log")}")"
+fi
