@@ -287,18 +287,7 @@ static int prim_slab(num_t o, num_t d, num_t lo, num_t hi, num_t *tnear, num_t *
 {
     if (num_eq(d, NUM_ZERO))
         return !num_lt(o, lo) && !num_gt(o, hi);
-    num_t t1 = num_div(num_sub(lo, o), d);
-    num_t t2 = num_div(num_sub(hi, o), d);
-    if (num_gt(t1, t2)) {
-        num_t s = t1;
-        t1 = t2;
-        t2 = s;
-    }
-    /* a saturated t compares as the most extreme value: the right answer
-     * for a ray nearly parallel to the slab */
-    *tnear = num_max(*tnear, t1);
-    *tfar = num_min(*tfar, t2);
-    return !num_gt(*tnear, *tfar);
+    return prim_slab_narrow(num_div(num_sub(lo, o), d), num_div(num_sub(hi, o), d), tnear, tfar);
 }
 
 /* The interval of t where the ray is inside [-1,1]^3 in local space; t is

@@ -92,13 +92,12 @@ void prim_aabb_ray(const ray_t *ray, aabb_ray_t *r);
 int prim_aabb_entry_ray_axes(const aabb_t *b, const ray_t *ray, const aabb_ray_t *r, num_t tmin,
                              num_t tmax, num_t *entry);
 
-/* One slab by the reciprocal: prim.c's prim_slab with a product for the
- * division (the same swap, max and min, so the same answers). */
-static inline int prim_slab_inv(num_t o, num_t inv, num_t lo, num_t hi, num_t *tnear,
-                                num_t *tfar)
+/* [*tnear, *tfar] narrowed by a slab the ray crosses at t1 and t2 (in
+ * either order); 0 when nothing is left.  A saturated t compares as the
+ * most extreme value: the right answer for a ray nearly parallel to the
+ * slab. */
+static inline int prim_slab_narrow(num_t t1, num_t t2, num_t *tnear, num_t *tfar)
 {
-    num_t t1 = num_mul(num_sub(lo, o), inv);
-    num_t t2 = num_mul(num_sub(hi, o), inv);
     if (num_gt(t1, t2)) {
         num_t s = t1;
         t1 = t2;
@@ -107,6 +106,15 @@ static inline int prim_slab_inv(num_t o, num_t inv, num_t lo, num_t hi, num_t *t
     *tnear = num_max(*tnear, t1);
     *tfar = num_min(*tfar, t2);
     return !num_gt(*tnear, *tfar);
+}
+
+/* One slab by the reciprocal: prim.c's prim_slab with a product for the
+ * division. */
+static inline int prim_slab_inv(num_t o, num_t inv, num_t lo, num_t hi, num_t *tnear,
+                                num_t *tfar)
+{
+    return prim_slab_narrow(num_mul(num_sub(lo, o), inv), num_mul(num_sub(hi, o), inv), tnear,
+                            tfar);
 }
 
 static inline int prim_aabb_entry_ray(const aabb_t *b, const ray_t *ray, const aabb_ray_t *r,

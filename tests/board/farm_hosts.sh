@@ -32,12 +32,6 @@ sshd_pid=$farm_sshd_pid
 render_board farm_hosts_ref "$T/ref.ppm" scenes/anim.scn -o "$T/ref.ppm" --size $SIZE \
     --frames 0:3 || exit 0
 
-frames_same() { # NAME DIR: all four frames equal the board's
-    local bad="" f
-    for f in 0 1 2 3; do cmp -s "$T/ref-000$f.ppm" "$2/frame-000$f.ppm" || bad+=" $f"; done
-    if [ -z "$bad" ]; then echo "PASS $1"; else echo "FAIL $1: frame(s)$bad missing or not the board's"; fi
-}
-
 # 1. both hosts take frames (the scene and DIR with spaces, quotes and $ in
 # their names, quoted by parallel for the remote shell and for rsync)
 H="$T/h o'st \"\$x"
@@ -52,7 +46,7 @@ if [ "$used" = ": fakehost " ]; then
 else
     echo "FAIL farm_hosts_both_used: hosts with a frame done: '$used'"
 fi
-frames_same farm_hosts_frames "$H/both \"d\""
+farm_frames_same farm_hosts_frames "$H/both \"d\""
 
 # bands of one still frame on both hosts, stitched: the board's frame 1
 farm farm_hosts_bands_run scenes/anim.scn --frames 1:1 --bands 6 -o "$T/bands" --hosts "$T/hosts" \
@@ -100,7 +94,7 @@ else
     echo "FAIL farm_hosts_killed_mid_frame: the ssh host never ran a job to be killed in"
 fi
 [ -e "$T/killed" ] && farm_sshd_pid="" # killed in the killer's subshell
-frames_same farm_hosts_kill_frames "$T/kill"
+farm_frames_same farm_hosts_kill_frames "$T/kill"
 if [ $rc -eq 0 ] && grep -q '4 frame(s) rendered now, 0 kept from before, 0 missing' "$T/farm_hosts_kill.log"; then
     echo "PASS farm_hosts_kill_summary"
 else

@@ -30,16 +30,10 @@ fi
 render_board farm_slurm_ref "$T/ref.ppm" scenes/anim.scn -o "$T/ref.ppm" --size $SIZE \
     --frames 0:3 || exit 0
 
-frames_same() { # NAME DIR: all four frames equal the board's
-    local bad="" f
-    for f in 0 1 2 3; do cmp -s "$T/ref-000$f.ppm" "$2/frame-000$f.ppm" || bad+=" $f"; done
-    if [ -z "$bad" ]; then echo "PASS $1"; else echo "FAIL $1: frame(s)$bad missing or not the board's"; fi
-}
-
 # 1. the whole animation as one job array, into a hostile DIR
 D="$T/out 'q' \"\$x\""
 farm farm_slurm_run scenes/anim.scn --frames 0:3 -o "$D" --slurm --ext ppm -- --size $SIZE
-frames_same farm_slurm_frames "$D"
+farm_frames_same farm_slurm_frames "$D"
 if grep -q 'host farmnode: 4 frame(s)' "$T/farm_slurm_run.log" &&
     grep -q '4 frame(s) rendered now, 0 kept from before, 0 missing' "$T/farm_slurm_run.log"; then
     echo "PASS farm_slurm_summary"
@@ -99,7 +93,7 @@ if [ -e "$T/killed" ] && grep -q 'handing them out again (round 2' "$T/farm_slur
 else
     echo "FAIL farm_slurm_killed_mid_frame: $(cat "$T/killed" 2>/dev/null || echo 'no task was killed'); $(grep 'round' "$T/farm_slurm_kill.log")"
 fi
-if [ $rc -eq 0 ]; then frames_same farm_slurm_kill_frames "$T/kill"
+if [ $rc -eq 0 ]; then farm_frames_same farm_slurm_kill_frames "$T/kill"
 else echo "FAIL farm_slurm_kill_frames: exit $rc"; fi
 
 # 5. tasks that fail in every round: frames missing, a failing exit

@@ -139,6 +139,14 @@ render_run() {
 # ($LINKS1_BOARDS/NAME/board).
 render_board_pid() { awk '/^pid/ {print $2}' "$LINKS1_BOARDS/$1/board" 2>/dev/null; }
 
+# farm_frames_same NAME DIR: PASS when frames 0..3 in DIR (frame-000F.ppm)
+# equal one board's render of them ($RENDER_TMP/ref-000F.ppm).
+farm_frames_same() {
+    local bad="" f
+    for f in 0 1 2 3; do cmp -s "$RENDER_TMP/ref-000$f.ppm" "$2/frame-000$f.ppm" || bad+=" $f"; done
+    if [ -z "$bad" ]; then echo "PASS $1"; else echo "FAIL $1: frame(s)$bad missing or not the board's"; fi
+}
+
 # farm NAME ARGS...: runs links1 farm, its output in $RENDER_TMP/NAME.log
 # (echoed, with $PARALLEL_SSH when set); returns its exit status.
 farm() {
