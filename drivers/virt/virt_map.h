@@ -13,7 +13,7 @@
  *   0x41000000 | STACKS: per core SVC/IRQ/ABT/UND stacks
  *   0x41400000 | LINES: inter-unit serial line rings
  *   0x41800000 | IMSU: DM<->RC block pair, RC->NC broadcast block
- *   0x62800000 | PRIVATE: DM, RC, then the NC pool shared out per NC
+ *   0x64000000 | PRIVATE: DM, RC, then the NC pool shared out per NC
  *   0x80000000 +-------------------+  (end of 1 GiB RAM)
  *                                     0x80000000  1 GiB unmapped: any access
  *                                                 faults (fault tests use it)

@@ -16,7 +16,7 @@ if [ ! -s "$RENDER_TMP/classes.txt" ]; then
     exit 0
 fi
 # working_set (a prepared frame over the DM's block) is the host's alone
-# now: the board's blocks hold 176 MiB, and a scene that needs more is
+# now: the board's blocks hold 184 MiB, and a scene that needs more is
 # refused by the compiler before any upload (render_refuse.sh); the DM's
 # own check of the bound is test_hostile's and test_blob's.
 while IFS=$'\t' read -r name expect; do

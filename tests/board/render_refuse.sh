@@ -37,8 +37,8 @@ if [ -s "$RENDER_TMP/bad.l1s" ]; then
 fi
 render_same render_refuse_next "$ref" "$RENDER_TMP/next.ppm"
 
-# 700,000 small spheres without the automatic hierarchy: 53 MB compiled
-# (within SCN_MAX_SIZE), 190 MB prepared on the board, more than an IMSU
+# 760,000 small spheres without the automatic hierarchy: 58 MB compiled
+# (within SCN_MAX_SIZE), 206 MB prepared on the board, more than an IMSU
 # block: refused by the compiler before anything is uploaded, naming the
 # limit (the DM's own check of the same bound: test_blob).
 python3 - "$RENDER_TMP/big.scn" <<'PY'
@@ -47,7 +47,7 @@ out = ["camera { eye 0 3 -6  look_at 0 0 0  up 0 1 0  fov 50 }", "resolution 32 
        "options { auto_hierarchy off }",
        "light parallel { colour 0.6 0.6 0.6  direction -1 -1.5 1 }",
        "material grass { colour 0.3 0.6 0.3 dic 0.25 drc 0.7 }"]
-for i in range(700000):
+for i in range(760000):
     out.append("sphere { material grass centre %d 0 %d radius 0.4 }" % (i % 1000 - 500, i // 1000))
 open(sys.argv[1], "w").write("\n".join(out) + "\n")
 PY
@@ -56,7 +56,7 @@ timeout "$BOARD_RUN_LIMIT_S" "$LINKS1" render --quiet --ncs 1 "$RENDER_TMP/big.s
     -o "$RENDER_TMP/big.ppm" >"$log" 2>&1
 rc=$?
 echo "--- links1 render big.scn (exit $rc)"; sed 's/^/    /' "$log"
-if [ $rc -ne 0 ] && grep -q 'board memory .*(700000 primitives, 1 clusters).*LINKS1_IMSU_PAIR_BLOCK' "$log" &&
+if [ $rc -ne 0 ] && grep -q 'board memory .*(760000 primitives, 1 clusters).*LINKS1_IMSU_PAIR_BLOCK' "$log" &&
     ! grep -q 'scene upload' "$log"; then
     echo "PASS render_refuse_too_big"
 else
