@@ -44,21 +44,37 @@ static void *tw_wide_ctx(const void *block, size_t size)
     return mem;
 }
 
-/* demo.scn's narrow blob, its wide blob and a wide context on it; 0 (a
- * failed check, each freed) when one cannot be made. */
-static int tw_demo(render_blob_t **blob, void **wblock, size_t *wsize, void **wctx)
+/* demo.scn's narrow blob (f its frame), its wide blob and a wide context
+ * on it. */
+struct tw_demo {
+    render_blob_t *blob;
+    const render_frame_t *f;
+    void *wblock, *wctx;
+    size_t wsize;
+};
+
+/* d made; 0 (a failed check, each part freed) when one cannot be. */
+static int tw_demo_open(struct tw_demo *d)
 {
     size_t size;
-    *blob = tb_blob_div("demo", 0, TW_DIV, &size);
-    *wblock = tw_wide_blob("demo", 0, wsize);
-    *wctx = *wblock ? tw_wide_ctx(*wblock, *wsize) : NULL;
-    CHECK(*blob && *wctx);
-    if (*blob && *wctx)
+    d->blob = tb_blob_div("demo", 0, TW_DIV, &size);
+    d->wblock = tw_wide_blob("demo", 0, &d->wsize);
+    d->wctx = d->wblock ? tw_wide_ctx(d->wblock, d->wsize) : NULL;
+    d->f = d->blob ? d->blob->frame : NULL;
+    CHECK(d->blob && d->wctx);
+    if (d->blob && d->wctx)
         return 1;
-    free(*blob);
-    free(*wblock);
-    free(*wctx);
+    free(d->blob);
+    free(d->wblock);
+    free(d->wctx);
     return 0;
+}
+
+static void tw_demo_close(struct tw_demo *d)
+{
+    free(d->wctx);
+    free(d->wblock);
+    free(d->blob);
 }
 
 /* Every pixel of the frame with ctx, into a new image; lost[i] = whether
@@ -128,19 +144,17 @@ static void tw_both_free(struct tw_both *b)
  * counts the lost ones, precision_lost_pixels those the wide one lost. */
 static void test_wide_escalates_lost_pixels(void)
 {
-    render_blob_t *blob;
-    void *wblock, *wctx;
-    size_t wsize;
-    if (!tw_demo(&blob, &wblock, &wsize, &wctx))
+    struct tw_demo d;
+    if (!tw_demo_open(&d))
         return;
-    const render_frame_t *f = blob->frame;
+    const render_frame_t *f = d.f;
     struct tw_both b;
-    tw_both_render(f, wctx, &b);
+    tw_both_render(f, d.wctx, &b);
     size_t n = b.n;
     const uint8_t *lost = b.lost, *wide_lost = b.wide_lost;
     const rgb8_t *own = b.own, *wide = b.wide;
     render_ctx_t esc;
-    void *wctx2 = tw_wide_ctx(wblock, wsize);
+    void *wctx2 = tw_wide_ctx(d.wblock, d.wsize);
     render_ctx_init(&esc, f);
     render_wide_escalate(&esc, wctx2);
     rgb8_t *got = tw_render(&esc, NULL);
@@ -162,10 +176,8 @@ static void test_wide_escalates_lost_pixels(void)
     CHECK(sum.primary == esc.stats.primary + nlost);
     tw_both_free(&b);
     free(got);
-    free(wctx);
     free(wctx2);
-    free(wblock);
-    free(blob);
+    tw_demo_close(&d);
 }
 
 /* 1 when a and b differ by more than RENDER_CHECK_LOST_STEPS in a channel. */
@@ -180,14 +192,12 @@ static int tw_apart(rgb8_t a, rgb8_t b)
  * copy's colour is apart from it (or the wide copy lost it too). */
 static void test_wide_check_keeps_colours(void)
 {
-    render_blob_t *blob;
-    void *wblock, *wctx;
-    size_t wsize;
-    if (!tw_demo(&blob, &wblock, &wsize, &wctx))
+    struct tw_demo d;
+    if (!tw_demo_open(&d))
         return;
-    const render_frame_t *f = blob->frame;
+    const render_frame_t *f = d.f;
     struct tw_both b;
-    tw_both_render(f, wctx, &b);
+    tw_both_render(f, d.wctx, &b);
     size_t n = b.n;
     const uint8_t *lost = b.lost, *wide_lost = b.wide_lost;
     const rgb8_t *own = b.own, *wide = b.wide;
@@ -198,7 +208,7 @@ static void test_wide_check_keeps_colours(void)
         off += lost[i] && (wide_lost[i] || tw_apart(own[i], wide[i]));
     }
     for (int mark = 0; mark <= 1; mark++) {
-        void *w2 = tw_wide_ctx(wblock, wsize);
+        void *w2 = tw_wide_ctx(d.wblock, d.wsize);
         render_ctx_init(&check, f);
         check.options.check_lost = 1;
         check.options.mark_lost = (uint8_t)mark;
@@ -220,21 +230,18 @@ static void test_wide_check_keeps_colours(void)
     CHECK(doubted > 0 && off < doubted && painted == off);
     CHECK_EQ_INT(wrong, 0);
     tw_both_free(&b);
-    free(wctx);
-    free(wblock);
-    free(blob);
+    tw_demo_close(&d);
 }
 
 /* render_area (the paper's lists, and clipping in the tree) escalates the
  * pixels render_pixel escalates, to the same colours. */
 static void test_wide_area_same_as_pixels(void)
 {
-    render_blob_t *blob;
-    void *wblock, *wctx;
-    size_t wsize;
-    if (!tw_demo(&blob, &wblock, &wsize, &wctx))
+    struct tw_demo d;
+    if (!tw_demo_open(&d))
         return;
-    const render_frame_t *f = blob->frame;
+    const render_frame_t *f = d.f;
+    void *wctx = d.wctx;
     render_ctx_t ctx;
     render_ctx_init(&ctx, f);
     render_wide_escalate(&ctx, wctx);
@@ -265,9 +272,7 @@ static void test_wide_area_same_as_pixels(void)
     }
     free(clip_mem);
     free(want);
-    free(wctx);
-    free(wblock);
-    free(blob);
+    tw_demo_close(&d);
 }
 
 /* The RC's copy of the wide blob: relocated to its new block (the old one
