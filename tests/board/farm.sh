@@ -15,7 +15,7 @@ CHECKS="farm_frame0 farm_frame1 farm_frame2 farm_summary farm_resume_one_job far
         farm_unreadable_hosts farm_dir_is_file farm_dir_not_yours farm_slurm_no_sbatch farm_slurm_and_hosts"
 board_ready $CHECKS || exit 0
 if ! command -v parallel >/dev/null; then
-    for c in $CHECKS; do echo "FAIL $c: GNU parallel is not installed (the Debian package parallel)"; done
+    checks_fail "GNU parallel is not installed (the Debian package parallel)" $CHECKS
     exit 0
 fi
 SIZE=32x24

@@ -16,7 +16,7 @@ CHECKS="farm_hosts_both_used farm_hosts_frames farm_hosts_bands farm_hosts_kille
 board_ready $CHECKS || exit 0
 why=$(farm_sshd_why)
 if [ -n "$why" ]; then
-    for c in $CHECKS; do echo "FAIL $c: $why"; done
+    checks_fail "$why" $CHECKS
     exit 0
 fi
 SIZE=48x36
@@ -25,7 +25,7 @@ printf ':\nfakehost\n' >"$T/hosts"
 trap 'farm_sshd_stop; rm -rf "$RENDER_TMP"' EXIT
 if ! farm_sshd_start "$T/ssh" >"$T/sshd_start.log" 2>&1; then
     cat "$T/sshd_start.log"
-    for c in $CHECKS; do echo "FAIL $c: $(tail -n 1 "$T/sshd_start.log")"; done
+    checks_fail "$(tail -n 1 "$T/sshd_start.log")" $CHECKS
     exit 0
 fi
 sshd_pid=$farm_sshd_pid

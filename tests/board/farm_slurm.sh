@@ -16,7 +16,7 @@ CHECKS="farm_slurm_frames farm_slurm_summary farm_slurm_resume_one_task farm_slu
 board_ready $CHECKS || exit 0
 why=$(farm_slurm_why)
 if [ -n "$why" ]; then
-    for c in $CHECKS; do echo "FAIL $c: $why"; done
+    checks_fail "$why" $CHECKS
     exit 0
 fi
 SIZE=48x36
@@ -24,7 +24,7 @@ T=$RENDER_TMP
 trap 'farm_slurm_stop; rm -rf "$RENDER_TMP"' EXIT
 if ! farm_slurm_start "$T/slurm" >"$T/slurm_start.log" 2>&1; then
     cat "$T/slurm_start.log"
-    for c in $CHECKS; do echo "FAIL $c: $(tail -n 1 "$T/slurm_start.log")"; done
+    checks_fail "$(tail -n 1 "$T/slurm_start.log")" $CHECKS
     exit 0
 fi
 render_board farm_slurm_ref "$T/ref.ppm" scenes/anim.scn -o "$T/ref.ppm" --size $SIZE \

@@ -8,6 +8,14 @@ export FW_DIR=${FW_DIR:-build}
 # A run that hangs past this is killed (QEMU dies with the tool).
 BOARD_RUN_LIMIT_S=${BOARD_RUN_LIMIT_S:-300}
 
+# checks_fail WHY NAME...: FAILs every named check for the same reason
+# (a script that cannot run its checks still prints one line each).
+checks_fail() {
+    local why=$1 name
+    shift
+    for name in "$@"; do echo "FAIL $name: $why"; done
+}
+
 # board_ready: FAILs every named check when the tool or firmware is missing.
 board_ready() { # $@ = check names that cannot run
     local why=""
@@ -15,7 +23,7 @@ board_ready() { # $@ = check names that cannot run
     [ -z "$why" ] && [ ! -r "$FW_DIR/links1-float.elf" ] &&
         why="firmware $FW_DIR/links1-float.elf is not built (run make)"
     [ -z "$why" ] && return 0
-    for name in "$@"; do echo "FAIL $name: $why"; done
+    checks_fail "$why" "$@"
     return 1
 }
 

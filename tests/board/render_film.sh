@@ -12,7 +12,7 @@ CHECKS="render_film_mp4_frames render_film_mp4_size render_film_mp4_fps render_f
         render_film_apng_first_frame render_film_no_ffmpeg render_film_ffmpeg_fails"
 board_ready $CHECKS || exit 0
 if ! command -v ffprobe >/dev/null; then
-    for c in $CHECKS; do echo "FAIL $c: ffprobe is not installed (the Debian package ffmpeg)"; done
+    checks_fail "ffprobe is not installed (the Debian package ffmpeg)" $CHECKS
     exit 0
 fi
 SIZE=63x47 # odd both ways
