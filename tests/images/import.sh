@@ -10,15 +10,7 @@ rm -rf "$out"
 mkdir -p "$out"
 
 # covered PPM: how many pixels differ from the top-left one (the background).
-covered() {
-    python3 -c 'import sys
-d = open(sys.argv[1], "rb").read()
-parts = d.split(maxsplit=4)
-w, h = int(parts[1]), int(parts[2])
-px = parts[4][-w * h * 3:]
-bg = px[:3]
-print(sum(1 for i in range(0, len(px), 3) if px[i:i + 3] != bg))' "$1"
-}
+covered() { python3 tests/images/ppm_stat.py "$1" covered; }
 
 # import_renders NAME MODEL [import options]: import, ref at 80x60, and
 # at least 2% of the picture is the model.

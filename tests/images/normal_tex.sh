@@ -156,14 +156,7 @@ else
 fi
 
 # mean IMAGE: the mean of all its bytes (binary PPM)
-mean() {
-    python3 -c 'import sys
-d = open(sys.argv[1], "rb").read()
-parts = d.split(maxsplit=4)
-w, h = int(parts[1]), int(parts[2])
-px = parts[4][-w * h * 3:]
-print(sum(px) // len(px))' "$1"
-}
+mean() { python3 tests/images/ppm_stat.py "$1" mean; }
 xn=$(mean "$(render quad-xneg float)") xp=$(mean "$(render quad-xpos float)")
 yp=$(mean "$(render quad-ypos float)") yn=$(mean "$(render quad-yneg float)")
 if [[ $xn =~ ^[0-9]+$ && $xp =~ ^[0-9]+$ && $yp =~ ^[0-9]+$ && $yn =~ ^[0-9]+$ ]] &&
