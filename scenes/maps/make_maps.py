@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """make_maps.py: writes the image maps the scenes use (8-bit RGB PNG, no
 gamma chunk: the values are linear, as the renderer reads them).
-Run from this directory: python3 make_maps.py"""
+Run from this directory: python3 make_maps.py (write_png is also the
+PNG writer of tests/models/make_normal_tex.py)"""
 import math
 import struct
 import zlib
@@ -71,9 +72,10 @@ def spots(x, y):
     return (g, g, g)
 
 
-write_png("checker.png", 64, 64, checker)
-write_png("dimples.png", 64, 64, dimples)
-write_png("bricks.png", 64, 64, bricks)
-write_png("rivets.png", 64, 64, rivets)
-write_png("stripes.png", 64, 64, stripes)
-write_png("spots.png", 64, 64, spots)
+if __name__ == "__main__":
+    write_png("checker.png", 64, 64, checker)
+    write_png("dimples.png", 64, 64, dimples)
+    write_png("bricks.png", 64, 64, bricks)
+    write_png("rivets.png", 64, 64, rivets)
+    write_png("stripes.png", 64, 64, stripes)
+    write_png("spots.png", 64, 64, spots)

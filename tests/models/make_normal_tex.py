@@ -30,23 +30,17 @@ import math
 import os
 import struct
 import sys
-import zlib
+
+
+sys.dont_write_bytecode = True  # no __pycache__ left in scenes/maps
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
+                                "scenes", "maps"))
+from make_maps import write_png  # noqa: E402 (the scenes' PNG writer)
 
 
 def png(path, rows):
     """rows: a list of rows of (r, g, b) bytes."""
-    h, w = len(rows), len(rows[0])
-    raw = b"".join(b"\0" + bytes(c for px in row for c in px) for row in rows)
-
-    def chunk(kind, data):
-        return (struct.pack(">I", len(data)) + kind + data +
-                struct.pack(">I", zlib.crc32(kind + data) & 0xffffffff))
-
-    with open(path, "wb") as f:
-        f.write(b"\x89PNG\r\n\x1a\n")
-        f.write(chunk(b"IHDR", struct.pack(">IIBBBBB", w, h, 8, 2, 0, 0, 0)))
-        f.write(chunk(b"IDAT", zlib.compress(raw)))
-        f.write(chunk(b"IEND", b""))
+    write_png(path, len(rows[0]), len(rows), lambda x, y: rows[y][x])
 
 
 def enc(x):
