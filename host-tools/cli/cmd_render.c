@@ -671,10 +671,36 @@ static void render_free_scenes(struct render_opts *o)
     }
 }
 
-/* The frames and the band asked for, against the compiled scene's own
- * frames and height, before a board boots.  0, or -1 after saying why.  A
- * compiled file whose view cannot be read is left to the board's loader,
- * which names what is wrong with it (and the next scene still renders). */
+/* The frames and the band asked for, against a scene of frames frames
+ * (at least 1) of height scanlines (at least 1).  0, or -1 after saying
+ * why. */
+static int render_fits(const struct render_opts *o, const char *scene, uint32_t frames,
+                       uint32_t height)
+{
+    long last = o->last < 0 ? o->first : o->last;
+    if ((uint64_t)last >= frames) {
+        fprintf(stderr, "links1 render: %s: frame %ld, the scene has %u frames (0..%u)\n",
+                scene, last, frames, frames - 1);
+        return -1;
+    }
+    if (o->bands && (uint64_t)o->bands > height) {
+        fprintf(stderr, "links1 render: %s: --band %ld/%ld: %ld bands of a frame of %u "
+                "scanlines (at most one band a scanline)\n", scene, o->band, o->bands,
+                o->bands, height);
+        return -1;
+    }
+    if (o->row_first >= 0 && (uint64_t)o->row_last >= height) {
+        fprintf(stderr, "links1 render: %s: --rows %ld:%ld, the frame has %u scanlines "
+                "(0..%u)\n", scene, o->row_first, o->row_last, height, height - 1);
+        return -1;
+    }
+    return 0;
+}
+
+/* render_fits against the compiled scene's own header, before a board
+ * boots.  A compiled file whose view cannot be read is left to the board's
+ * loader, which names what is wrong with it (and the next scene still
+ * renders). */
 static int render_check_job(const struct render_opts *o, struct render_job *j)
 {
     struct scene_paper v;
@@ -685,24 +711,7 @@ static int render_check_job(const struct render_opts *o, struct render_job *j)
         return 0;
     j->frames = v.frames;
     j->height = (uint32_t)v.height;
-    long last = o->last < 0 ? o->first : o->last;
-    if ((uint64_t)last >= v.frames) {
-        fprintf(stderr, "links1 render: %s: frame %ld, the scene has %u frames (0..%u)\n",
-                j->scene, last, v.frames, v.frames - 1);
-        return -1;
-    }
-    if (o->bands && o->bands > v.height) {
-        fprintf(stderr, "links1 render: %s: --band %ld/%ld: %ld bands of a frame of %d "
-                "scanlines (at most one band a scanline)\n", j->scene, o->band, o->bands,
-                o->bands, v.height);
-        return -1;
-    }
-    if (o->row_first >= 0 && o->row_last >= v.height) {
-        fprintf(stderr, "links1 render: %s: --rows %ld:%ld, the frame has %d scanlines "
-                "(0..%d)\n", j->scene, o->row_first, o->row_last, v.height, v.height - 1);
-        return -1;
-    }
-    return 0;
+    return render_fits(o, j->scene, j->frames, j->height);
 }
 
 static int render_read_scenes(struct render_opts *o)
@@ -859,16 +868,22 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
            j->scene, info.width, info.height, info.frames, info.compiled_bytes, info.blob_bytes,
            info.blob_limit);
     long first = o->first, last = o->last < 0 ? o->first : o->last;
-    if (j->frames ? info.frames != j->frames || info.height != j->height
-                  : (uint32_t)last >= info.frames || (o->bands && (uint32_t)o->bands > info.height) ||
-                        (o->row_first >= 0 && (uint32_t)o->row_last >= info.height)) {
-        /* render_check_job checked what the compiled header says; the board
-         * loaded something else, or the header was not readable there */
-        fprintf(stderr, "links1 render: %s: the board loaded %u frames of %u scanlines: not "
-                "frame %ld%s\n", j->scene, info.frames, info.height, last,
-                o->bands || o->row_first >= 0 ? " and the band asked for" : "");
+    if (j->frames && (info.frames != j->frames || info.height != j->height)) {
+        /* render_check_job checked what the compiled header says */
+        fprintf(stderr, "links1 render: %s: the board loaded %u frames of %u scanlines, the "
+                "compiled scene says %u of %u\n", j->scene, info.frames, info.height, j->frames,
+                j->height);
         return -1;
     }
+    /* what the board says, range-checked before use (the header's, when it
+     * could be read before the boot) */
+    if (info.frames == 0 || info.height == 0) {
+        fprintf(stderr, "links1 render: %s: the board loaded %u frames of %u scanlines\n",
+                j->scene, info.frames, info.height);
+        return -1;
+    }
+    if (render_fits(o, j->scene, info.frames, info.height) != 0)
+        return -1;
     int ppm = o->ppm || scene_file_ends_with(j->out, ".ppm");
     struct link_render_args job_args = o->args;
     if (o->bands) { /* band I of N: its scanlines (render_check_job: N <= height) */
