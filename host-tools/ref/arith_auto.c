@@ -394,10 +394,14 @@ static double auto_board_cost(const struct auto_run *r, const char *arith, int e
     snprintf(ncs, sizeof ncs, "%d", ARITH_AUTO_NCS);
     struct auto_knob_words k;
     auto_knobs(r, steps, weight, &k);
-    const char *extra[] = {"-o", img, "--arith", arith, "--ncs", ncs, "--machine", m->name,
-                           "--count-insns", "--quiet", escalate ? "--escalate" : k.w[0],
-                           escalate ? k.w[0] : k.w[1], escalate ? k.w[1] : k.w[2],
-                           escalate ? k.w[2] : k.w[3], escalate ? k.w[3] : NULL, NULL};
+    const char *extra[16] = {"-o", img, "--arith", arith, "--ncs", ncs, "--machine", m->name,
+                             "--count-insns", "--quiet"};
+    int e = 10;
+    if (escalate)
+        extra[e++] = "--escalate";
+    for (const char *const *w = k.w; *w; w++) /* the model's words, NULL-ended */
+        extra[e++] = *w;
+    extra[e] = NULL;
     char *argv[AUTO_MAX_ARGS + 1];
     if (auto_argv(r, 1, "render", argv + 1, size, sizeof size, extra) != 0)
         return -1;
