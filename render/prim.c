@@ -589,7 +589,6 @@ int prim_aabb_entry(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax, n
 void prim_aabb_ray(const ray_t *ray, aabb_ray_t *r)
 {
     (void)ray; /* the fixed build divides on every axis */
-    r->all_inv = 0;
     for (int axis = 0; axis < 3; axis++) {
         r->inv[axis] = NUM_ZERO;
         r->use_div[axis] = 1;
