@@ -230,6 +230,11 @@ uint32_t areas_handed(const struct areas *s)
     return s->handed;
 }
 
+int areas_one_per_nc(const struct areas *s)
+{
+    return s->mode == AREAS_STATIC;
+}
+
 static const char *const areas_mode_names[] = {
     [AREAS_STATIC] = "static",
     [AREAS_DYNAMIC] = "dynamic",

@@ -7,7 +7,8 @@
  * scanline or part of one make Y clipping most effective.  Three schedules
  * (docs/areas.md):
  *
- *   AREAS_STATIC      one area per NC: the grid of ncs equal areas.
+ *   AREAS_STATIC      one area per NC: the grid of ncs equal areas, each
+ *                     NC drawing one (areas_one_per_nc), whenever it asks.
  *   AREAS_DYNAMIC     the grid of k equal areas ("simple dynamic"), given
  *                     out one per area request.
  *   AREAS_DECREASING  guided self-scheduling: each next area holds about
@@ -122,6 +123,9 @@ int areas_next(struct areas *s, struct area *a);
 uint32_t areas_count(const struct areas *s);
 /* Areas handed out so far. */
 uint32_t areas_handed(const struct areas *s);
+/* 1 if the schedule is one area per NC (AREAS_STATIC): the RC gives an NC
+ * a second area of it only when no NC still in the frame is without one. */
+int areas_one_per_nc(const struct areas *s);
 
 /* "static", "dynamic", "decreasing", "lines". */
 const char *areas_mode_name(enum areas_mode mode);

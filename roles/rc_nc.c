@@ -252,8 +252,25 @@ static void rc_nc_message(struct rc_run *run, uint32_t k, struct line_msg *m)
     rc_nc_settle(run, k);
 }
 
+/* Static balancing: 1 if NC k, which has had its area, must leave the
+ * schedule's next one to an NC of the frame that has had none yet (one
+ * that asked late: it has not failed, so its area waits for it).  Areas
+ * taken back from failed NCs go to whoever asks. */
+static int rc_nc_static_waits(const struct rc_run *run, uint32_t k)
+{
+    if (!areas_one_per_nc(&run->sched) || run->nc[k].given == 0)
+        return 0;
+    for (uint32_t j = UNITS_FIRST_NC; j < board_ncores; j++) {
+        const struct rc_nc *o = &run->nc[j];
+        if (o->given == 0 && (o->state == RC_NC_IDLE || o->state == RC_NC_BUSY ||
+                              o->state == RC_NC_PARKED))
+            return 1;
+    }
+    return 0;
+}
+
 /* Gives NC k, which asks, the next area (one taken back first); 0 if none
- * is left. */
+ * is left, or none for it. */
 static int rc_nc_give(struct rc_run *run, uint32_t k, struct line_msg *m)
 {
     struct rc_nc *n = &run->nc[k];
@@ -262,7 +279,7 @@ static int rc_nc_give(struct rc_run *run, uint32_t k, struct line_msg *m)
         return 0;
     if (run->nagain)
         a = run->again[--run->nagain];
-    else if (!areas_next(&run->sched, &a))
+    else if (rc_nc_static_waits(run, k) || !areas_next(&run->sched, &a))
         return 0;
     m->type = MSG_NC_AREA;
     m->len = MSG_NC_AREA_SIZE;

@@ -60,18 +60,19 @@ render_grid_one() {
     render_same "$name" "$ref" "$out"
 }
 
-# render_faults_one NAME SCENE SIZE NCS K SEED KIND: renders with K of NCS
-# NCs failing (links1 render --inject-faults K:SEED --inject-kind KIND) and
+# render_faults_one NAME SCENE SIZE NCS K SEED KIND [BALANCE]: renders with K
+# of NCS NCs failing (links1 render --inject-faults K:SEED --inject-kind KIND
+# [--balance BALANCE]) and
 # checks the image equals the host build's (float), the summary names K
 # failed NCs, each caught the way its kind is (a fault or the watchdog),
 # and lists the re-issued areas it counts.
 render_faults_one() {
-    local name=$1 scene=$2 size=$3 ncs=$4 k=$5 seed=$6 kind=$7
+    local name=$1 scene=$2 size=$3 ncs=$4 k=$5 seed=$6 kind=$7 balance=${8:-}
     local out="$RENDER_TMP/$name.ppm" log="$RENDER_TMP/$name.log"
     local ref
     ref=$(render_ref "$scene" float "$size")
     render_board "$name" "$out" "$scene" -o "$out" --ncs "$ncs" --size "$size" \
-        --inject-faults "$k:$seed" --inject-kind "$kind" || return 0
+        --inject-faults "$k:$seed" --inject-kind "$kind" ${balance:+--balance "$balance"} || return 0
     render_same "$name" "$ref" "$out"
     local line failed caught want
     line=$(grep -m1 'failed during the frame' "$log")
