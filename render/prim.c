@@ -171,26 +171,37 @@ vec3_t prim_map_tangent(const render_prim_t *p, const hit_t *hit, int *mirrored,
  * error at t in local units (times render_prim_t.scale); 1 - |c|^2 by
  * twice that.  A closest point beyond 2 is no graze: an error of a whole
  * radius makes the primitive imprecise (precision.c). */
-static int prim_ellipsoid_graze_uncertain(const render_prim_t *p, vec3_t c, num_t tc, num_t len,
-                                          const ray_error_t *ray_err, num_t tmin, num_t tmax)
+static int prim_ellipsoid_graze_uncertain(const render_prim_t *p, vec3_t c, vec3_t dn, num_t tc,
+                                          num_t len, const ray_error_t *ray_err, num_t tmin,
+                                          num_t tmax)
 {
     num_t e0 = num_add(p->edge_error[0], num_mul_int(num_ulp(num_abs(tc)), 4));
 #if defined(LINKS1_NUM_FIXED)
     /* Fixed point: c = o + dn tc, and each component of dn is off by a
      * step, 2^-F however small it is, which the large local tc of a thin
-     * ellipsoid multiplies; and the ray's error in local units (times
-     * scale) can pass a whole radius there, so the quick exit below 2
-     * radii would miss a ray whose true closest point is inside
-     * (ellipsoid_ratio 1000 in Q17.14: pixels missed, unflagged).  The
-     * quick exit allows for both, kept free of a division: |c| len
-     * against (2 + e0) len + (origin len + |tc| dir) scale. */
-    e0 = num_add(e0, num_mul(num_mul_int(num_ulp(NUM_ONE), 4), num_abs(tc)));
+     * ellipsoid multiplies.  And dn = d * (1/len): the reciprocal of a
+     * long local direction (a thin axis scaled up) keeps few significant
+     * bits, so dn's length is off by up to a step times len (2% at len 300
+     * in Q17.14); with |dn| = 1 + eps, c moves by about 2 eps |tc| along
+     * the ray (ellipsoid_ratio 3000 in Q17.14: a shadow ray's closest point
+     * 80 radii off, unflagged).  |1 - dn.dn| is that 2 eps, give or take
+     * the dot's own steps: e0 grows by (|1 - dn.dn| + 8 steps) |tc|.  The
+     * ray's error in local units (times scale) can pass a whole radius
+     * there, so the quick exit below 2 radii would miss a ray whose true
+     * closest point is inside (ellipsoid_ratio 1000 in Q17.14: pixels
+     * missed, unflagged).  The quick exit allows for both, kept free of a
+     * division: |c| len against (2 + e0) len + (origin len + |tc| dir)
+     * scale. */
+    num_t dir_err = num_add(num_abs(num_sub(NUM_ONE, vec3_dot(dn, dn))),
+                            num_mul_int(num_ulp(NUM_ONE), 8));
+    e0 = num_add(e0, num_mul(dir_err, num_abs(tc)));
     num_t ray_len = num_add(num_mul(ray_err->origin, len), num_mul(num_abs(tc), ray_err->dir));
     num_t far = num_add(num_mul(num_add(NUM_C(2), e0), len), num_mul(ray_len, p->scale));
     if (num_gt(num_mul(num_abs(c.x), len), far) || num_gt(num_mul(num_abs(c.y), len), far) ||
         num_gt(num_mul(num_abs(c.z), len), far))
         return 0;
 #else
+    (void)dn;
     num_t two = NUM_C(2);
     if (num_gt(num_abs(c.x), two) || num_gt(num_abs(c.y), two) || num_gt(num_abs(c.z), two))
         return 0;
@@ -202,7 +213,14 @@ static int prim_ellipsoid_graze_uncertain(const render_prim_t *p, vec3_t c, num_
     num_t lim = num_add(NUM_ONE, err);
     if (num_gt(num_abs(c.x), lim) || num_gt(num_abs(c.y), lim) || num_gt(num_abs(c.z), lim))
         return 0;
-    return num_lt(num_abs(num_sub(NUM_ONE, vec3_dot(c, c))), num_mul_int(err, 2));
+    /* the true |c| within err of 1: (1 - err)^2 < c.c < (1 + err)^2, no
+     * lower bound once err reaches 1 (|1 - c.c| < 2 err only while err is
+     * small: a closest point 10 radii off by 12 passed it) */
+    num_t cc = vec3_dot(c, c);
+    if (!num_lt(cc, num_mul(lim, lim)))
+        return 0;
+    num_t below = num_sub(NUM_ONE, err);
+    return !num_gt(below, NUM_ZERO) || num_gt(cc, num_mul(below, below));
 }
 
 static int prim_ellipsoid_intersect(const render_prim_t *p, const ray_t *ray,
@@ -218,7 +236,7 @@ static int prim_ellipsoid_intersect(const render_prim_t *p, const ray_t *ray,
     num_t tc = num_neg(vec3_dot(o, dn));
     vec3_t c = vec3_madd(o, dn, tc); /* closest point to the centre */
     if (uncertain)
-        *uncertain = prim_ellipsoid_graze_uncertain(p, c, tc, len, err, tmin, tmax);
+        *uncertain = prim_ellipsoid_graze_uncertain(p, c, dn, tc, len, err, tmin, tmax);
     if (num_gt(num_abs(c.x), NUM_ONE) || num_gt(num_abs(c.y), NUM_ONE) ||
         num_gt(num_abs(c.z), NUM_ONE))
         return 0;

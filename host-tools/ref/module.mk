@@ -16,7 +16,7 @@ links1-ref-fixed_WIDE := 1
 # The same renderer in other fixed formats (links1-ref-fixedN: Q(31-N).N),
 # candidates of `links1 ref --arith auto` (arith_auto.c finds them next to
 # links1; the board's firmware stays Q12.19, fixed/num.h's default).
-REF_FIXED_BITS := 14 16 18
+REF_FIXED_BITS := 12 14 16 18
 HOST_EXTRA_ARITHS += $(addprefix fixed,$(REF_FIXED_BITS))
 $(foreach f,$(REF_FIXED_BITS),$(eval ARITH_DEF_fixed$(f) := -DLINKS1_NUM_FIXED -DNUM_FRAC_BITS=$(f)))
 $(foreach f,$(REF_FIXED_BITS),$(eval HOST_TOOLS += links1-ref-fixed$(f)))

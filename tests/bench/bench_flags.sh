@@ -8,7 +8,7 @@
 # 2/255 (edges moved by under a pixel aside) that were flagged.  Host only,
 # one run (counts, not times).
 #   bash tests/bench/bench_flags.sh [OUT-DIR]   (default build/bench-flags)
-#   FLAG_SCENES="demo glass molecule" FLAG_SIZE=320x240
+#   FLAG_SCENES="demo glass molecule" FLAG_SIZE=320x240 FLAG_PROGS="links1-ref-fixed12 ..."
 # A scene named FAMILY:KNOB is a sweep family's (tests/sweeps/families.sh);
 # FLAG_FAMILIES=1 scores every family at every knob instead (at FLAG_SIZE,
 # default 160x120 then) and ends with each family's worst precision and
@@ -29,7 +29,7 @@ else
     SIZE=${FLAG_SIZE:-320x240}
 fi
 mkdir -p "$out"
-progs="links1-ref-float links1-ref-fixed links1-ref-fixed14 links1-ref-fixed16 links1-ref-fixed18"
+progs=${FLAG_PROGS:-links1-ref-float links1-ref-fixed links1-ref-fixed18 links1-ref-fixed16 links1-ref-fixed14 links1-ref-fixed12}
 make -s --no-print-directory build/links1 build/links1-ref-double $(printf 'build/%s ' $progs)
 
 # score REF PLAIN MARKED: "flagged<TAB>precision %<TAB>recall %" of compare --flags
