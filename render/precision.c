@@ -140,9 +140,9 @@ num_t precision_map_error(const xform_t *to_eye, const xform_t *from_eye, const 
  * the heights' absolute values). */
 static num_t precision_triangle_curvature(const render_prim_t *p, num_t h1, num_t h2)
 {
-    if (!p->normals)
+    if (!p->smooth)
         return NUM_ZERO;
-    const vec3_t *n = p->normals->n;
+    const vec3_t *n = p->normals.n;
     num_t c = num_add(num_div(vec3_length(vec3_sub(n[1], n[0])), h1),
                       num_div(vec3_length(vec3_sub(n[2], n[0])), h2));
     return num_is_sat(c) ? NUM_FAR : c;

@@ -348,11 +348,12 @@ static render_status_t prep_check_tree(const scene_t *s)
  * grows its box (RENDER_BOUNDS_PAD_VALUE scaled to the scene: the caller
  * scales it once a frame, not once a primitive). */
 static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame_t *f, const xform_t *to_eye,
-                      const xform_t *from_eye, num_t pad, const scene_index_t *ix, render_prim_t *p)
+                      const xform_t *from_eye, num_t pad, const scene_index_t *ix,
+                      scene_normals_t *normals, render_prim_t *p)
 {
     num_t lin[3][3];
     p->kind = sp->kind;
-    p->normals = NULL; /* flat, unless a smooth triangle below */
+    p->smooth = 0; /* flat, unless a smooth triangle below */
     p->material = sp->material;
     p->index = index;
     switch (sp->kind) {
@@ -381,18 +382,19 @@ static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame
         p->normal = vec3_normalize(vec3_cross(vec3_normalize(p->e1), vec3_normalize(p->e2)));
         /* smooth: the vertex normals by the inverse transpose of to_eye,
          * each distinct one (bits and maps) once: a vertex normal met
-         * before, in an earlier primitive, is copied (normal_src) */
-        p->normals = NULL;
+         * before, in an earlier primitive, is copied (normal_src) from the
+         * scratch array normals, by the scene's normals index */
         if (sp->shape.triangle.smooth) {
             uint32_t j = sp->shape.triangle.smooth - 1;
             for (uint32_t k = 0; k < 3; k++) {
                 uint32_t src = ix->normal_src[3 * j + k];
-                f->normals[j].n[k] =
+                normals[j].n[k] =
                     src == (j << 2 | k)
                         ? vec3_normalize(xform_dir_transposed(from_eye, f->scene->normals[j].n[k]))
-                        : f->normals[src >> 2].n[src & 3];
+                        : normals[src >> 2].n[src & 3];
             }
-            p->normals = &f->normals[j];
+            p->normals = normals[j];
+            p->smooth = 1;
         }
         p->edge_n1 = vec3_normalize(vec3_cross(p->e2, p->normal));
         p->edge_n2 = vec3_normalize(vec3_cross(p->normal, p->e1));
@@ -740,8 +742,8 @@ size_t render_prepare_frame_bytes_layout(const scene_t *s, const render_layout_t
     size_t comps = s->density_component_count ? s->density_component_count : 1;
     size_t normals = s->normals_count ? s->normals_count : 1;
     size_t n = lay->frame + lay->frame_cluster * (size_t)s->cluster_count + lay->frame_prim * prims +
-               lay->num * comps + lay->normals * normals;
-    size_t scratch = 2 * lay->xform * (size_t)s->cluster_count;
+               lay->num * comps;
+    size_t scratch = 2 * lay->xform * (size_t)s->cluster_count + lay->normals * normals;
     return n + scratch + 7 * ARENA_MAX_ALIGN; /* 7 allocations, each padded at most that */
 }
 
@@ -770,8 +772,7 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     f->prims = ARENA_NEW_ARRAY(arena, render_prim_t, s->prim_count ? s->prim_count : 1);
     uint32_t ncomp = s->density_component_count;
     f->density_inv_radius2 = ARENA_NEW_ARRAY(arena, num_t, ncomp ? ncomp : 1);
-    f->normals = ARENA_NEW_ARRAY(arena, scene_normals_t, s->normals_count ? s->normals_count : 1);
-    if (!f->clusters || !f->prims || !f->density_inv_radius2 || !f->normals)
+    if (!f->clusters || !f->prims || !f->density_inv_radius2)
         return RENDER_ERR_ARENA;
     /* the scene's static structure: the loader's, or worked out here (a
      * scene built by hand) into the frame's arena */
@@ -810,7 +811,12 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
      * written, and only they are read (ix.groups[].maps_of) */
     xform_t *to_eye = ARENA_NEW_ARRAY_RAW(arena, xform_t, s->cluster_count);
     xform_t *from_eye = ARENA_NEW_ARRAY_RAW(arena, xform_t, s->cluster_count);
-    if (!to_eye || !from_eye)
+    /* the smooth triangles' eye-space vertex normals, each written before
+     * it is read (normal_src names earlier ones); each triangle keeps a
+     * copy of its own */
+    scene_normals_t *normals =
+        ARENA_NEW_ARRAY_RAW(arena, scene_normals_t, s->normals_count ? s->normals_count : 1);
+    if (!to_eye || !from_eye || !normals)
         return RENDER_ERR_ARENA;
 
     xform_t world_to_eye, eye_to_world;
@@ -847,7 +853,7 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     for (uint32_t i = 0; i < s->prim_count; i++) {
         const scene_prim_t *sp = &s->prims[i];
         uint32_t m = ix.groups[sp->cluster].maps_of;
-        prep_prim(sp, i, f, &to_eye[m], &from_eye[m], pad, &ix, &f->prims[i]);
+        prep_prim(sp, i, f, &to_eye[m], &from_eye[m], pad, &ix, normals, &f->prims[i]);
         /* the error of the cluster's inverse map, for precision_check (a
          * triangle's vertices are mapped forward: none, and precision_check
          * sets its 0) */

@@ -89,10 +89,10 @@ static void prim_triangle_surface(const render_prim_t *p, hit_t *hit)
     prim_triangle_bary(p, hit->point, &beta, &gamma);
     num_t alpha = num_sub(NUM_ONE, num_add(beta, gamma));
     hit->normal = p->normal;
-    if (p->normals) {
+    if (p->smooth) {
         /* smooth (beyond the paper): the vertex normals interpolated, on
          * the side of the plane's normal, which the tracer turns to the ray */
-        const vec3_t *n = p->normals->n;
+        const vec3_t *n = p->normals.n;
         vec3_t s = vec3_add(vec3_add(vec3_scale(n[0], alpha), vec3_scale(n[1], beta)),
                             vec3_scale(n[2], gamma));
         s = vec3_normalize(s);

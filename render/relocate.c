@@ -104,35 +104,20 @@ static void reloc_frame(reloc_t *r, render_frame_t *f, const scene_t *s)
     uint32_t *prim_list = RELOC(r, f->prim_list, f->prim_count, "frame.prim_list");
     num_t *inv_radius2 =
         RELOC(r, f->density_inv_radius2, s->density_component_count, "frame.density_inv_radius2");
-    scene_normals_t *normals = RELOC(r, f->normals, s->normals_count, "frame.normals");
     if (r->bad)
         return;
-    /* A smooth triangle's normals are an element of the frame's normals
-     * array (render_prepare): a subtraction and two compares check one
-     * (the RC relocates every primitive of every frame). */
-    uintptr_t nrm_lo = (uintptr_t)f->normals;
-    uintptr_t nrm_bytes = (uintptr_t)s->normals_count * sizeof(scene_normals_t);
-    uintptr_t nrm_shift = (uintptr_t)normals - nrm_lo;
     for (uint32_t i = 0; i < f->prim_count; i++) {
         render_prim_t *p = &prims[i];
-        /* a triangle's only pointer is its normals (NULL when flat): one
-         * test, not three */
-        if (!p->components && !p->inv_radius2 && p->component_count == 0) {
-            if (p->normals) {
-                uintptr_t d = (uintptr_t)p->normals - nrm_lo;
-                if (r->write)
-                    p->normals = (const scene_normals_t *)((uintptr_t)p->normals + nrm_shift);
-                else if (d >= nrm_bytes || d % sizeof(scene_normals_t) != 0)
-                    r->bad = "frame.prims[].normals";
-            }
+        /* a triangle holds no pointer (its vertex normals are in it): one
+         * load and one test (the RC relocates every primitive of every
+         * frame); any other kind's density pointers are checked and moved
+         * (NULL with no components: an ellipsoid's, a box's) */
+        if (p->kind == SCENE_PRIM_TRIANGLE)
             continue;
-        }
         const scene_density_component_t *comps =
             RELOC(r, p->components, p->component_count, "frame.prims[].components");
         const num_t *inv = RELOC(r, p->inv_radius2, p->component_count, "frame.prims[].inv_radius2");
-        const scene_normals_t *nrm = RELOC(r, p->normals, p->normals ? 1 : 0, "frame.prims[].normals");
         if (r->write && !r->bad) {
-            p->normals = nrm;
             p->components = comps;
             p->inv_radius2 = inv;
         }
@@ -144,7 +129,6 @@ static void reloc_frame(reloc_t *r, render_frame_t *f, const scene_t *s)
     f->prims = prims;
     f->prim_list = prim_list;
     f->density_inv_radius2 = inv_radius2;
-    f->normals = normals;
 }
 
 /* One pass over everything reachable from scene and frame (old

@@ -71,13 +71,21 @@ typedef struct {
 /* A primitive in eye coordinates. */
 typedef struct {
     uint8_t kind;        /* enum scene_prim_kind */
+    uint8_t smooth;      /* TRIANGLE: 1 if normals holds its vertex normals
+                            (a smooth triangle), 0 when flat */
     uint16_t material;
     uint32_t index;      /* its index in scene->prims: breaks ties between
                             equal hit distances the same way in every order */
     aabb_t bounds;       /* eye-space box around it */
-    /* ELLIPSOID: eye -> unit sphere; BOX: eye -> [-1,1]^3;
-     * DENSITY: eye -> the cluster's coordinates (components live there). */
-    xform_t to_local;
+    union {
+        /* ELLIPSOID: eye -> unit sphere; BOX: eye -> [-1,1]^3;
+         * DENSITY: eye -> the cluster's coordinates (components live there). */
+        xform_t to_local;
+        /* TRIANGLE, smooth: its eye-space vertex normals, unit length, held
+         * here rather than pointed to, so that the RC moves no pointer of a
+         * triangle when it copies a frame (render/relocate.c) */
+        scene_normals_t normals;
+    };
     /* TRIANGLE: eye-space vertex 0, edges to vertices 1 and 2, unit normal */
     vec3_t v0, e1, e2, normal;
     /* TRIANGLE barycentrics of a point w = p - v0 in the plane:
@@ -88,9 +96,6 @@ typedef struct {
     vec3_t edge_n1, edge_n2;
     num_t height1, height2;
     num_t tex_u[3], tex_v[3];
-    const scene_normals_t *normals; /* reloc; TRIANGLE: -> its eye-space vertex
-                                       normals in frame normals (a smooth
-                                       triangle), NULL when flat */
     /* DENSITY.  Pointer fields: render_relocate (render/relocate.c) moves
      * each one; a new pointer field must be added there too. */
     const scene_density_component_t *components; /* -> scene density_components;
@@ -169,8 +174,6 @@ typedef struct {
                                       cluster (the scene index's) */
     num_t *density_inv_radius2;    /* reloc; 1/d^2 per scene density component:
                                       the field then needs no division */
-    scene_normals_t *normals;      /* reloc; the scene's smooth-triangle
-                                      normals in eye space, unit length */
     uint8_t precision_lost;        /* 1 if preparing hit a saturation (camera,
                                       cluster maps, boxes): every pixel then
                                       counts as lost precision */

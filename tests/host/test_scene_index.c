@@ -51,28 +51,23 @@ static uint8_t *ti_compile(size_t i, size_t *len)
 }
 
 /* Frames a and b hold the same values: every array byte for byte, a
- * primitive's pointers into its frame's arrays (normals, inv_radius2) as
- * the element they name. */
+ * primitive's pointer into its frame's array (inv_radius2) as the
+ * element it names (a smooth triangle's normals are in it). */
 static int ti_same_frame(const render_frame_t *a, const render_frame_t *b)
 {
-    const scene_t *s = a->scene;
     if (a->cluster_count != b->cluster_count || a->prim_count != b->prim_count ||
         memcmp(a->clusters, b->clusters, sizeof *a->clusters * a->cluster_count) != 0 ||
         memcmp(a->child_list, b->child_list, sizeof *a->child_list * a->cluster_count) != 0 ||
         memcmp(a->prim_list, b->prim_list, sizeof *a->prim_list * a->prim_count) != 0 ||
-        memcmp(a->normals, b->normals, sizeof *a->normals * s->normals_count) != 0 ||
         memcmp(a->lights, b->lights, sizeof a->lights) != 0 || a->span != b->span ||
         a->clip_coverage != b->clip_coverage || a->clip_rows != b->clip_rows ||
         a->precision_lost != b->precision_lost || a->detail_prim != b->detail_prim)
         return 0;
     for (uint32_t i = 0; i < a->prim_count; i++) {
         render_prim_t pa = a->prims[i], pb = b->prims[i];
-        if ((pa.normals ? pa.normals - a->normals + 1 : 0) != (pb.normals ? pb.normals - b->normals + 1 : 0))
-            return 0;
         if ((pa.inv_radius2 ? pa.inv_radius2 - a->density_inv_radius2 + 1 : 0) !=
             (pb.inv_radius2 ? pb.inv_radius2 - b->density_inv_radius2 + 1 : 0))
             return 0;
-        pa.normals = pb.normals = NULL;
         pa.inv_radius2 = pb.inv_radius2 = NULL;
         if (memcmp(&pa, &pb, sizeof pa) != 0)
             return 0;
