@@ -61,7 +61,35 @@ typedef struct {
     int screen;         /* 1: a primary ray through pixel (px, py): subtrees
                            whose screen rectangles miss it are skipped */
     int32_t px, py;
+    /* set by trace_walk: */
+    num_t cut;          /* box tests' far end: tmax, or in a NEAREST walk
+                           the nearest hit so far (it only comes nearer) */
+    uint32_t box_tests; /* this walk's, added to ctx->stats at its end */
+    uint32_t screen_tests; /* likewise */
+    int use_bounds;     /* ctx->options.use_bounds */
 } trace_walk_t;
+
+/* A walk of mode over ray in (tmin, tmax], field by field: an initializer
+ * clears the whole struct, which the compiler does with a call to memset
+ * once it is this large (a few hundred instructions a ray).  What is not
+ * set here is written before it is read: nearest's values once found (or
+ * runner_up) says so, the rest by trace_walk. */
+static void trace_walk_setup(trace_walk_t *w, render_ctx_t *ctx, const ray_t *ray,
+                             const ray_error_t *err, num_t tmin, num_t tmax, enum trace_mode mode,
+                             crossings_t *cross)
+{
+    w->ctx = ctx;
+    w->ray = ray;
+    w->err = err;
+    w->tmin = tmin;
+    w->tmax = tmax;
+    w->mode = mode;
+    w->nearest.found = 0;
+    w->nearest.runner_up = 0;
+    w->cross = cross;
+    w->screen = 0;
+    w->px = w->py = 0;
+}
 
 static void trace_record(trace_walk_t *w, uint32_t prim, num_t t)
 {
@@ -143,6 +171,7 @@ static void trace_test_prim(trace_walk_t *w, uint32_t prim)
         n->found = 1;
         n->t = t;
         n->prim = prim;
+        w->cut = t;
     } else if (!n->runner_up || num_lt(t, n->runner_t)) {
         n->runner_up = 1;
         n->runner_t = t;
@@ -152,14 +181,14 @@ static void trace_test_prim(trace_walk_t *w, uint32_t prim)
 
 /* Box test against the nearest hit so far; *entry the t where the ray
  * enters the box (tmin when bounds are off). */
-static int trace_box_entry(trace_walk_t *w, const aabb_t *b, num_t *entry)
+static inline __attribute__((always_inline)) int trace_box_entry(trace_walk_t *w, const aabb_t *b,
+                                                                  num_t *entry)
 {
     *entry = w->tmin;
-    if (!w->ctx->options.use_bounds)
+    if (!w->use_bounds)
         return 1;
-    w->ctx->stats.box_tests++;
-    num_t tmax = w->mode == TRACE_NEAREST && w->nearest.found ? w->nearest.t : w->tmax;
-    return prim_aabb_entry_ray(b, w->ray, &w->box_ray, w->tmin, tmax, entry);
+    w->box_tests++;
+    return prim_aabb_entry_ray(b, w->ray, &w->box_ray, w->tmin, w->cut, entry);
 }
 
 static int trace_box(trace_walk_t *w, const aabb_t *b)
@@ -177,11 +206,11 @@ static int trace_still_open(const trace_walk_t *w, num_t entry)
 
 /* The primary ray's pixel lies in cluster c's tree rectangle (all of it
  * and below), or it is no primary ray walked by screen. */
-static inline int trace_screen_tree(const trace_walk_t *w, const render_cluster_t *c)
+static inline int trace_screen_tree(trace_walk_t *w, const render_cluster_t *c)
 {
     if (!w->screen)
         return 1;
-    w->ctx->stats.screen_tests++;
+    w->screen_tests++;
     return w->px >= c->tree_x0 && w->px <= c->tree_x1 && w->py >= c->tree_y0 &&
            w->py <= c->tree_y1;
 }
@@ -213,7 +242,8 @@ static void trace_cluster(trace_walk_t *w, uint32_t index)
 {
     const render_frame_t *f = w->ctx->frame;
     const render_cluster_t *c = &f->clusters[index];
-    trace_own_prims(w, c);
+    if (c->prim_count) /* an inner node of the automatic hierarchy has none */
+        trace_own_prims(w, c);
     const uint32_t *kids = &f->child_list[c->first_child];
     if (c->child_count == 2) {
         uint32_t a = kids[0], b = kids[1];
@@ -242,10 +272,11 @@ static void trace_cluster(trace_walk_t *w, uint32_t index)
             trace_cluster(w, kids[k]);
 }
 
-static void trace_walk(trace_walk_t *w, const uint32_t *clip, uint32_t clip_count)
+/* The walk itself: the clusters given (clip), the hierarchy, or every
+ * primitive. */
+static void trace_walk_boxes(trace_walk_t *w, const render_frame_t *f, const uint32_t *clip,
+                             uint32_t clip_count)
 {
-    const render_frame_t *f = w->ctx->frame;
-    prim_aabb_ray(w->ray, &w->box_ray);
     if (clip) {
         for (uint32_t k = 0; k < clip_count; k++) {
             const render_cluster_t *c = &f->clusters[clip[k]];
@@ -261,6 +292,18 @@ static void trace_walk(trace_walk_t *w, const uint32_t *clip, uint32_t clip_coun
             if (trace_box(w, &f->prims[prim].bounds))
                 trace_test_prim(w, prim);
     }
+}
+
+static void trace_walk(trace_walk_t *w, const uint32_t *clip, uint32_t clip_count)
+{
+    const render_frame_t *f = w->ctx->frame;
+    prim_aabb_ray(w->ray, &w->box_ray);
+    w->cut = w->mode == TRACE_NEAREST && w->nearest.found ? w->nearest.t : w->tmax;
+    w->box_tests = w->screen_tests = 0;
+    w->use_bounds = w->ctx->options.use_bounds;
+    trace_walk_boxes(w, f, clip, clip_count);
+    w->ctx->stats.box_tests += w->box_tests;
+    w->ctx->stats.screen_tests += w->screen_tests;
 }
 
 /* A ray of weight below RENDER_LOST_WEIGHT_VALUE changes the pixel by
@@ -301,9 +344,13 @@ static int trace_nearest(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
 {
     ray_error_t scaled;
     err = trace_err_margin(ctx, err, &scaled);
-    trace_walk_t w = {.ctx = ctx, .ray = ray, .err = err, .tmin = tmin, .tmax = TRACE_FAR,
-                      .mode = TRACE_NEAREST, .screen = screen != NULL,
-                      .px = screen ? screen[0] : 0, .py = screen ? screen[1] : 0};
+    trace_walk_t w;
+    trace_walk_setup(&w, ctx, ray, err, tmin, TRACE_FAR, TRACE_NEAREST, NULL);
+    if (screen) {
+        w.screen = 1;
+        w.px = screen[0];
+        w.py = screen[1];
+    }
     trace_walk(&w, clip, clip_count);
     if (!w.nearest.found)
         return 0;
@@ -406,9 +453,9 @@ static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t di
     cross.overflow = 0;
     cross.opaque = 0;
     ray_error_t scaled;
-    trace_walk_t w = {.ctx = ctx, .ray = &ray, .err = trace_err_margin(ctx, err, &scaled),
-                      .tmin = ctx->frame->ray_epsilon, .tmax = distance,
-                      .mode = TRACE_COLLECT_SHADOW, .cross = &cross};
+    trace_walk_t w;
+    trace_walk_setup(&w, ctx, &ray, trace_err_margin(ctx, err, &scaled), ctx->frame->ray_epsilon,
+                     distance, TRACE_COLLECT_SHADOW, &cross);
     trace_walk(&w, NULL, 0);
     if (cross.opaque || cross.overflow)
         return rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
@@ -513,9 +560,9 @@ static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray, const ray_error
     cross.overflow = 0;
     cross.opaque = 0;
     ray_error_t scaled;
-    trace_walk_t w = {.ctx = ctx, .ray = ray, .err = trace_err_margin(ctx, err, &scaled),
-                      .tmin = ctx->frame->ray_epsilon, .tmax = TRACE_FAR,
-                      .mode = TRACE_COLLECT_STRAIGHT, .cross = &cross};
+    trace_walk_t w;
+    trace_walk_setup(&w, ctx, ray, trace_err_margin(ctx, err, &scaled), ctx->frame->ray_epsilon,
+                     TRACE_FAR, TRACE_COLLECT_STRAIGHT, &cross);
     trace_walk(&w, NULL, 0);
     rgb_t sum = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     rgb_t weight = rgb_make(NUM_ONE, NUM_ONE, NUM_ONE);
