@@ -148,6 +148,31 @@ static num_t precision_triangle_curvature(const render_prim_t *p, num_t h1, num_
     return num_is_sat(c) ? NUM_FAR : c;
 }
 
+/* A density sphere's excess (the field's sum minus the threshold, which
+ * prim.c's root finder samples along a ray): edge_error[1] its largest
+ * gradient per local unit, the sum of 2 w / d (each field's slope is
+ * largest, 2 w / d, at d / 3); edge_error[0] what rounding adds at any
+ * point: that gradient times the local point's error (local), and each
+ * field's own steps, its q = r^2 / d^2 (a few steps of d^2, over d^2)
+ * times the largest slope in q, 3 w, and its products' steps. */
+static void precision_density_excess_error(render_prim_t *p, num_t local)
+{
+    num_t grad = NUM_ZERO, own = NUM_ZERO;
+    num_t unit = num_mul_int(num_ulp(NUM_ONE), 4);
+    for (uint16_t k = 0; k < p->component_count; k++) {
+        const scene_density_component_t *c = &p->components[k];
+        num_t w = num_abs(c->weight), d = c->radius;
+        grad = num_add(grad, num_div(num_mul_int(w, 2), d));
+        num_t dq = num_add(num_mul(num_mul_int(num_ulp(num_mul(d, d)), 4), p->inv_radius2[k]), unit);
+        own = num_add(own, num_add(num_mul(num_mul_int(w, 3), dq),
+                                   num_mul_int(num_ulp(num_max(w, NUM_ONE)), 8)));
+    }
+    own = num_add(own, num_mul_int(num_ulp(num_max(num_abs(p->threshold), NUM_ONE)), 2));
+    num_t at = num_add(own, num_mul(grad, local));
+    p->edge_error[0] = num_is_sat(at) ? NUM_FAR : at;
+    p->edge_error[1] = num_is_sat(grad) ? NUM_FAR : grad;
+}
+
 /* A density sphere's surface: taken as curved no more than a sphere of a
  * quarter of its smallest component's radius (a lone component's surface
  * lies beyond a quarter of its radius for a threshold under 0.8 of its
@@ -236,6 +261,7 @@ render_status_t precision_check(render_frame_t *f, const scene_index_t *ix)
         default:
             p->uv_error = NUM_ZERO;
             p->curvature = precision_density_curvature(p, rows[0]);
+            precision_density_excess_error(p, local);
             break;
         }
     }

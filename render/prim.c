@@ -454,8 +454,18 @@ static num_t prim_density_excess(const render_prim_t *p, vec3_t q)
  * of the excess
  * is bisected RENDER_DENSITY_BISECTIONS times.  Fixed counts: the same
  * steps in every build, and a result independent of tmax. */
-static int prim_density_intersect(const render_prim_t *p, const ray_t *ray, num_t tmin,
-                                  num_t tmax, num_t *t_out)
+/* How far the excess sampled at t may be from the double build's: the
+ * primitive's own (edge_error[0], precision.c) and its largest gradient
+ * (edge_error[1]) times the ray's error at t in local units. */
+static num_t prim_density_excess_error(const render_prim_t *p, const ray_error_t *err, num_t t)
+{
+    return num_add(p->edge_error[0],
+                   num_mul(p->edge_error[1], num_mul(ray_error_at(err, t), p->scale)));
+}
+
+static int prim_density_intersect(const render_prim_t *p, const ray_t *ray,
+                                  const ray_error_t *err, num_t tmin, num_t tmax, num_t *t_out,
+                                  int *uncertain)
 {
     vec3_t o = xform_point(&p->to_local, ray->origin);
     vec3_t d = xform_dir(&p->to_local, ray->dir);
@@ -492,10 +502,42 @@ static int prim_density_intersect(const render_prim_t *p, const ray_t *ray, num_
     num_t prev_t = lo;
     num_t f0 = prim_density_excess(p, xform_point(&p->to_local, vec3_madd(ray->origin, ray->dir, lo)));
     int inside = num_gt(f0, NUM_ZERO); /* a ray from inside looks for the exit */
+    /* uncertain (wanted): a sample within its error of 0 (its sign may be
+     * the double build's other one) where that could change the answer:
+     * before the one before the crossing (an earlier crossing, or none),
+     * or at the crossing with the one before it or the one after it near
+     * 0 too (a crossing that may not be); with no crossing, anywhere.  A
+     * sample near 0 next to a crossing only moves the bracket, not the
+     * root. */
+    int near_prev = 0, near_earlier = 0;
+    /* A secondary ray starts on a surface, as far off as its origin's
+     * error: samples within twice that of its start are near 0 whatever
+     * the arithmetic, and what they decide (a hit on the surface it left)
+     * is tmin's to settle, as for every primitive. */
+    num_t settled = NUM_ZERO, most = NUM_ZERO; /* the error at hi, the largest */
+    if (uncertain) {
+        settled = num_add(tmin, num_mul_int(err->origin, 2));
+        most = prim_density_excess_error(p, err, hi);
+        near_prev = num_gt(lo, settled) && !num_gt(num_abs(f0), most) &&
+                    !num_gt(num_abs(f0), prim_density_excess_error(p, err, lo));
+    }
     for (int i = 1; i <= steps; i++) {
         num_t t = i == steps ? hi : num_add(lo, num_mul_int(step, i));
         num_t f = prim_density_excess(p, xform_point(&p->to_local, vec3_madd(ray->origin, ray->dir, t)));
+        /* the error at t only for a sample under the largest */
+        int near = uncertain && !num_gt(num_abs(f), most) && num_gt(t, settled) &&
+                   !num_gt(num_abs(f), prim_density_excess_error(p, err, t));
         if (num_gt(f, NUM_ZERO) != inside) {
+            if (uncertain && (near_earlier || (near && near_prev))) {
+                *uncertain = 1;
+            } else if (near && i == steps) {
+                *uncertain = 1;
+            } else if (near) { /* the sample after it: still across, and surely */
+                num_t tn = i + 1 == steps ? hi : num_add(lo, num_mul_int(step, i + 1));
+                num_t fn = prim_density_excess(p, xform_point(&p->to_local, vec3_madd(ray->origin, ray->dir, tn)));
+                *uncertain = num_gt(fn, NUM_ZERO) == inside ||
+                             !num_gt(num_abs(fn), prim_density_excess_error(p, err, tn));
+            }
             num_t a = prev_t, b = t;
             for (int j = 0; j < RENDER_DENSITY_BISECTIONS; j++) {
                 num_t m = num_mul(num_add(a, b), NUM_HALF);
@@ -511,8 +553,12 @@ static int prim_density_intersect(const render_prim_t *p, const ray_t *ray, num_
             *t_out = root;
             return 1;
         }
+        near_earlier |= near_prev;
+        near_prev = near;
         prev_t = t;
     }
+    if (uncertain && (near_earlier || near_prev))
+        *uncertain = 1;
     return 0;
 }
 
@@ -567,7 +613,7 @@ int prim_intersect_uncertain(const render_prim_t *p, const ray_t *ray, const ray
     case SCENE_PRIM_BOX:
         return prim_box_intersect(p, ray, err, tmin, tmax, t_out, uncertain);
     case SCENE_PRIM_DENSITY:
-        return prim_density_intersect(p, ray, tmin, tmax, t_out);
+        return prim_density_intersect(p, ray, err, tmin, tmax, t_out, uncertain);
     default:
         return 0;
     }
