@@ -447,13 +447,13 @@ static num_t prim_density_excess(const render_prim_t *p, vec3_t q)
     return sum;
 }
 
-/* Root finder (docs/renderer.md): the field is zero outside every
- * component sphere, so the surface lies in [lo, hi], the union of the
- * spheres' t-intervals beyond tmin.  That span is sampled at
- * density_steps equal steps (the scene's option); the first sign change
- * of the excess
- * is bisected RENDER_DENSITY_BISECTIONS times.  Fixed counts: the same
- * steps in every build, and a result independent of tmax. */
+/* The excess at the ray's point t. */
+static inline __attribute__((always_inline)) num_t prim_density_excess_at(const render_prim_t *p,
+                                                                     const ray_t *ray, num_t t)
+{
+    return prim_density_excess(p, xform_point(&p->to_local, vec3_madd(ray->origin, ray->dir, t)));
+}
+
 /* How far the excess sampled at t may be from the double build's: the
  * primitive's own (edge_error[0], precision.c) and its largest gradient
  * (edge_error[1]) times the ray's error at t in local units. */
@@ -463,6 +463,19 @@ static num_t prim_density_excess_error(const render_prim_t *p, const ray_error_t
                    num_mul(p->edge_error[1], num_mul(ray_error_at(err, t), p->scale)));
 }
 
+/* Sample i of steps from lo to hi, the last at hi itself. */
+static inline num_t prim_density_sample_t(num_t lo, num_t hi, num_t step, int steps, int i)
+{
+    return i == steps ? hi : num_add(lo, num_mul_int(step, i));
+}
+
+/* Root finder (docs/renderer.md): the field is zero outside every
+ * component sphere, so the surface lies in [lo, hi], the union of the
+ * spheres' t-intervals beyond tmin.  That span is sampled at
+ * density_steps equal steps (the scene's option); the first sign change
+ * of the excess
+ * is bisected RENDER_DENSITY_BISECTIONS times.  Fixed counts: the same
+ * steps in every build, and a result independent of tmax. */
 static int prim_density_intersect(const render_prim_t *p, const ray_t *ray,
                                   const ray_error_t *err, num_t tmin, num_t tmax, num_t *t_out,
                                   int *uncertain)
@@ -500,7 +513,7 @@ static int prim_density_intersect(const render_prim_t *p, const ray_t *ray,
     int steps = p->density_steps;
     num_t step = num_div(num_sub(hi, lo), num_from_int(steps));
     num_t prev_t = lo;
-    num_t f0 = prim_density_excess(p, xform_point(&p->to_local, vec3_madd(ray->origin, ray->dir, lo)));
+    num_t f0 = prim_density_excess_at(p, ray, lo);
     int inside = num_gt(f0, NUM_ZERO); /* a ray from inside looks for the exit */
     /* uncertain (wanted): a sample within its error of 0 (its sign may be
      * the double build's other one) where that could change the answer:
@@ -522,8 +535,8 @@ static int prim_density_intersect(const render_prim_t *p, const ray_t *ray,
                     !num_gt(num_abs(f0), prim_density_excess_error(p, err, lo));
     }
     for (int i = 1; i <= steps; i++) {
-        num_t t = i == steps ? hi : num_add(lo, num_mul_int(step, i));
-        num_t f = prim_density_excess(p, xform_point(&p->to_local, vec3_madd(ray->origin, ray->dir, t)));
+        num_t t = prim_density_sample_t(lo, hi, step, steps, i);
+        num_t f = prim_density_excess_at(p, ray, t);
         /* the error at t only for a sample under the largest */
         int near = uncertain && !num_gt(num_abs(f), most) && num_gt(t, settled) &&
                    !num_gt(num_abs(f), prim_density_excess_error(p, err, t));
@@ -533,15 +546,15 @@ static int prim_density_intersect(const render_prim_t *p, const ray_t *ray,
             } else if (near && i == steps) {
                 *uncertain = 1;
             } else if (near) { /* the sample after it: still across, and surely */
-                num_t tn = i + 1 == steps ? hi : num_add(lo, num_mul_int(step, i + 1));
-                num_t fn = prim_density_excess(p, xform_point(&p->to_local, vec3_madd(ray->origin, ray->dir, tn)));
+                num_t tn = prim_density_sample_t(lo, hi, step, steps, i + 1);
+                num_t fn = prim_density_excess_at(p, ray, tn);
                 *uncertain = num_gt(fn, NUM_ZERO) == inside ||
                              !num_gt(num_abs(fn), prim_density_excess_error(p, err, tn));
             }
             num_t a = prev_t, b = t;
             for (int j = 0; j < RENDER_DENSITY_BISECTIONS; j++) {
                 num_t m = num_mul(num_add(a, b), NUM_HALF);
-                num_t fm = prim_density_excess(p, xform_point(&p->to_local, vec3_madd(ray->origin, ray->dir, m)));
+                num_t fm = prim_density_excess_at(p, ray, m);
                 if (num_gt(fm, NUM_ZERO) == inside)
                     a = m;
                 else

@@ -61,7 +61,6 @@ typedef struct {
     int screen;         /* 1: a primary ray through pixel (px, py): subtrees
                            whose screen rectangles miss it are skipped */
     int32_t px, py;
-    /* set by trace_walk: */
     num_t cut;          /* box tests' far end: tmax, or in a NEAREST walk
                            the nearest hit so far (it only comes nearer) */
     uint32_t box_tests; /* this walk's, added to ctx->stats at its end */
@@ -73,7 +72,7 @@ typedef struct {
  * clears the whole struct, which the compiler does with a call to memset
  * once it is this large (a few hundred instructions a ray).  What is not
  * set here is written before it is read: nearest's values once found (or
- * runner_up) says so, the rest by trace_walk. */
+ * runner_up) says so, box_ray by trace_walk. */
 static void trace_walk_setup(trace_walk_t *w, render_ctx_t *ctx, const ray_t *ray,
                              const ray_error_t *err, num_t tmin, num_t tmax, enum trace_mode mode,
                              crossings_t *cross)
@@ -89,6 +88,9 @@ static void trace_walk_setup(trace_walk_t *w, render_ctx_t *ctx, const ray_t *ra
     w->cross = cross;
     w->screen = 0;
     w->px = w->py = 0;
+    w->cut = tmax;
+    w->box_tests = w->screen_tests = 0;
+    w->use_bounds = ctx->options.use_bounds;
 }
 
 static void trace_record(trace_walk_t *w, uint32_t prim, num_t t)
@@ -140,7 +142,6 @@ static void trace_test_prim(trace_walk_t *w, uint32_t prim)
     const render_prim_t *p = &w->ctx->frame->prims[prim];
     if (trace_walk_done(w))
         return;
-    num_t tmax = w->mode == TRACE_NEAREST && w->nearest.found ? w->nearest.t : w->tmax;
     num_t t;
     w->ctx->stats.prim_tests++;
     /* an imprecise primitive may be missed wrongly: a ray that meets its
@@ -155,7 +156,7 @@ static void trace_test_prim(trace_walk_t *w, uint32_t prim)
     int found = prim_intersect_uncertain(p, w->ray, w->err, w->tmin, w->tmax, &t, &uncertain);
     if (uncertain)
         w->ctx->pixel_lost = 1;
-    if (!found || (w->mode != TRACE_NEAREST && num_gt(t, tmax)))
+    if (!found || (w->mode != TRACE_NEAREST && num_gt(t, w->tmax)))
         return;
     if (w->mode != TRACE_NEAREST) {
         trace_record(w, prim, t);
@@ -298,9 +299,6 @@ static void trace_walk(trace_walk_t *w, const uint32_t *clip, uint32_t clip_coun
 {
     const render_frame_t *f = w->ctx->frame;
     prim_aabb_ray(w->ray, &w->box_ray);
-    w->cut = w->mode == TRACE_NEAREST && w->nearest.found ? w->nearest.t : w->tmax;
-    w->box_tests = w->screen_tests = 0;
-    w->use_bounds = w->ctx->options.use_bounds;
     trace_walk_boxes(w, f, clip, clip_count);
     w->ctx->stats.box_tests += w->box_tests;
     w->ctx->stats.screen_tests += w->screen_tests;
