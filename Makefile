@@ -69,7 +69,13 @@ FW_FLOAT_ABI_virt_fixed-esc := -mfpu=vfpv4 -mfloat-abi=hard
 FW_WIDE_float-esc := double
 FW_WIDE_fixed-esc := double
 FW_VARIANTS_virt := float soft fixed double float-esc fixed-esc
-FW_VARIANTS_an521 := float soft fixed
+# The an521 boards' double, float-esc and fixed-esc: the M33's FPU is single
+# precision, so their double is software (libgcc's, correctly rounded as
+# the VFP's is); float stays on the FPU.
+FW_FLOAT_ABI_an521_double    := $(FW_FLOAT_ABI_an521_float)
+FW_FLOAT_ABI_an521_float-esc := $(FW_FLOAT_ABI_an521_float)
+FW_FLOAT_ABI_an521_fixed-esc := $(FW_FLOAT_ABI_an521_float)
+FW_VARIANTS_an521 := float soft fixed double float-esc fixed-esc
 FW_VARIANTS := $(FW_VARIANTS_virt)
 FW_MACHINE_DEF_virt := -DLINKS1_MACHINE_VIRT
 FW_MACHINE_DEF_an521 := -DLINKS1_MACHINE_AN521
@@ -199,8 +205,8 @@ ifneq ($(strip $(FW_SRCS)),)
 $(foreach m,$(FW_MACHINES),$(foreach v,$(FW_VARIANTS_$(m)),$(eval $(call fw_variant,$(m),$(v)))))
 endif
 FIRMWARE := $(FIRMWARE_virt) $(FIRMWARE_an521)
-$(eval $(call wide_object,$(call fw_dir,virt,double)/render-wide.o,$(call fw_dir,virt,double),$(ARM_CC),arm-none-eabi-))
--include $(call fw_dir,virt,double)/render/wide.c.d
+$(foreach m,$(FW_MACHINES),$(eval $(call wide_object,$(call fw_dir,$(m),double)/render-wide.o,$(call fw_dir,$(m),double),$(ARM_CC),arm-none-eabi-)))
+-include $(foreach m,$(FW_MACHINES),$(call fw_dir,$(m),double)/render/wide.c.d)
 
 # --------------------------------------------------------------- host rules
 # Shared and host sources compile once per (arithmetic, plain|san) into

@@ -124,7 +124,7 @@ static void render_usage(FILE *out)
             "                   scenes default 24): a feature thinner than a step is missed\n"
             "  --mark-lost      paint pixels that lost precision magenta (text scenes)\n"
             "  --escalate       trace a pixel that lost precision again in double, on the\n"
-            "                   same NC (float or fixed on virt: links1-<arith>-esc.elf)\n"
+            "                   same NC (float or fixed: links1-<arith>-esc.elf)\n"
             "  --check-lost     trace it again in double only to check it: a pixel counts\n"
             "                   as lost (and --mark-lost paints it) when double is more\n"
             "                   than 2/255 away; the image keeps this arithmetic's colours\n"
@@ -464,8 +464,9 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
     return -1; /* CLI_BAD: reported already */
 }
 
-/* --escalate: the firmware that carries the wide arithmetic (virt, float
- * or fixed; links1-A-esc.elf), unless a named board's or --firmware's
+/* --escalate: the firmware that carries the wide arithmetic (float or
+ * fixed; links1-A-esc.elf, an521/links1-A-esc.elf on the an521 boards,
+ * whose M33s compute its double in software), unless a named board's or --firmware's
  * (whose DM refuses escalation when it carries none). */
 static int render_escalate_check(const struct render_opts *o)
 {
@@ -475,9 +476,6 @@ static int render_escalate_check(const struct render_opts *o)
     const char *why =
         o->arith_auto ? "an arithmetic given, float or fixed (not --arith auto, which escalates "
                         "by itself where that is the cheapest way to its target, or --auto)"
-        : o->board.machine != MACHINE_VIRT
-            ? "the virt board (the an521 boards have no escalating firmware: their M33s' FPU is "
-              "single precision, so double would be software there, and none is built)"
         : strcmp(a, "double") == 0 ? "--arith float or fixed: double is the wide arithmetic itself"
         : strcmp(a, "soft") == 0 ? "--arith float or fixed: the soft build models a unit without "
                                    "an FPU, which has no double to escalate to"

@@ -132,10 +132,13 @@ static int board_qemu_machine_args(const struct board *b, int board, const char 
         argv[n++] = "-M";
         argv[n++] = "mps2-an521,memory-backend=ram";
         /* QEMU's SSE-200 gives core 0 no FPU and no DSP extension; the
-         * float firmware needs both on both cores (a configuration the
-         * SSE-200 offers).  The soft and fixed firmwares run on the board
-         * as it comes. */
-        if (strcmp(b->opts.arith, "float") == 0) {
+         * firmwares built for the M33's FPU (float, double, whose double
+         * is software but whose float ABI is the FPU's, and those that
+         * escalate) need both on both cores (a configuration the SSE-200
+         * offers).  The soft and fixed firmwares run on the board as it
+         * comes. */
+        if (strcmp(b->opts.arith, "float") == 0 || strcmp(b->opts.arith, "double") == 0 ||
+            b->opts.escalate) {
             argv[n++] = "-global";
             argv[n++] = "sse-200.CPU0_FPU=on";
             argv[n++] = "-global";
@@ -495,12 +498,6 @@ static int board_qemu_check(struct board *b, const struct board_opts *o)
 {
     b->process_gone = board_qemu_gone;
     board_session_peer_from_zero(b); /* the board we boot numbers from 0 */
-    if (o->machine == MACHINE_AN521 && !o->firmware && strcmp(o->arith, "double") == 0) {
-        fprintf(stderr, "links1: --arith double: the Cortex-M33's FPU is single precision, so "
-                "the an521 boards have float, soft and fixed firmware (double runs on "
-                "--machine virt)\n");
-        return -1;
-    }
     if (board_find_firmware(o, b->firmware, sizeof b->firmware) < 0)
         return -1;
     if (o->ncores < UNITS_MIN_CORES || o->ncores > UNITS_MAX_CORES) {

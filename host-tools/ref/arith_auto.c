@@ -449,9 +449,10 @@ static int auto_candidates(const struct arith_auto_opts *o, struct auto_cand *c)
         snprintf(c[n++].build, sizeof c[0].build, "%s", build);
     }
     /* --arith auto: the same two traced again in double where a pixel lost
-     * precision (render/wide.h), on a unit with a double FPU: the virt
-     * board's -esc firmware, every host build */
-    if (o->fpu && !o->model && (o->target == ARITH_AUTO_HOST || o->machine == MACHINE_VIRT)) {
+     * precision (render/wide.h), on a unit with an FPU: the -esc firmware
+     * (the virt board's double in its VFP, the an521 boards' in software:
+     * the cost on the board says which pays), every host build */
+    if (o->fpu && !o->model) {
         c[n++] = (struct auto_cand){.label = "float escalated", .build = "float",
                                     .arith = "float", .escalate = 1};
         c[n] = (struct auto_cand){.build = "fixed", .arith = "fixed", .escalate = 1};

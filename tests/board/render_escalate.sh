@@ -2,7 +2,8 @@
 # Escalation (links1 render --escalate, render/wide.h): an NC traces a pixel
 # that lost precision again in double.  The board's image and its count of
 # escalated pixels equal the host build's (links1 ref --escalate) in float
-# and fixed, with --mark-lost too and over an animation's pipelined frames;
+# and fixed, with --mark-lost too and over an animation's pipelined frames,
+# and on the an521 boards, whose M33s compute the double in software;
 # escalated fixed point is within 2/255 of the double build on every pixel
 # of demo.scn, where plain fixed point is not; what cannot escalate is
 # refused with the reason, before a board boots or by the DM.
@@ -14,7 +15,8 @@
 board_ready render_escalate_float render_escalate_float_count render_escalate_fixed \
     render_escalate_fixed_count render_escalate_fixed_marked render_escalate_frames \
     render_escalate_fixed_near_double render_escalate_plain_fixed_is_not \
-    render_escalate_refused_soft render_escalate_refused_double render_escalate_refused_an521 \
+    render_escalate_an521_float render_escalate_an521_float_count render_escalate_an521_fixed \
+    render_escalate_an521_fixed_count render_escalate_refused_soft render_escalate_refused_double \
     render_escalate_refused_auto render_escalate_firmware_without_wide render_check_lost_fixed \
     render_check_lost_flags_mean_it || exit 0
 SIZE=160x120
@@ -96,6 +98,22 @@ else
         echo "FAIL render_escalate_plain_fixed_is_not: compare failed: $(tail -n 1 "$RENDER_TMP/plain.log")"
 fi
 
+# the an521 boards: their M33s escalate in software double (libgcc's,
+# correctly rounded), the image and the count still the host's
+for a in float fixed; do
+    name=render_escalate_an521_$a
+    ref=$RENDER_TMP/esc-host-an521-$a.ppm
+    "$LINKS1" ref $scn --arith $a --size 64x48 --escalate -o "$ref" >"$ref.log" 2>&1
+    out=$RENDER_TMP/$name.ppm
+    if render_board $name "$out" $scn -o "$out" --arith $a --machine an521 --ncs 2 --size 64x48 \
+        --escalate; then
+        render_same $name "$ref" "$out"
+        same_count ${name}_count "$ref.log" "$RENDER_TMP/$name.log"
+    else
+        echo "FAIL ${name}_count: no board render"
+    fi
+done
+
 # refusals: a clear reason, no board booted
 refused() {
     local name=$1 want=$2 log=$RENDER_TMP/$1.log
@@ -110,8 +128,6 @@ refused() {
 }
 refused render_escalate_refused_soft 'no double to escalate to' --arith soft
 refused render_escalate_refused_double 'double is the wide arithmetic itself' --arith double
-refused render_escalate_refused_an521 'an521 boards have no escalating firmware' --machine an521 \
-    --ncs 2
 refused render_escalate_refused_auto 'not --arith auto' --arith auto
 
 # a firmware without the wide renderer: the DM refuses, naming the builds
