@@ -50,6 +50,9 @@ struct auto_cand {
     int looser_flagged;  /* looser_weight_db is the PSNR of the flagged pixels there */
     int few_flagged;     /* --auto: under ARITH_AUTO_MIN_FLAGGED of the pixels
                             flagged: judged with the whole image */
+    int confirmed;       /* --auto: its density steps and its images judged at
+                            the render's size (auto_confirm_steps): the target
+                            is its goal, without the margin */
     int dearer;          /* --auto: soft beside a float that keeps the target, not
                             counted (float's code, each VFP instruction a call) */
 };
@@ -58,6 +61,9 @@ struct auto_run {
     const char *prog, *path, *tmp;
     const struct arith_auto_opts *o;
     int w, h;            /* pre-render size; 0: the scene's (a compiled .l1s) */
+    int fw, fh;          /* the render's size */
+    struct image full_ref; /* --auto: the double build's render at fw x fh (once
+                              auto_confirm_steps needs it; width 0 before) */
     int bw, bh;          /* the board pre-render's (the cost): w, h but for --auto */
     struct image ref;    /* the double build's pre-render */
     /* --auto: the scene's density steps and min_weight, and whether it has
@@ -599,7 +605,79 @@ static double auto_goal(const struct auto_run *r)
 
 static int auto_meets_goal(const struct auto_cand *c, double goal, double target)
 {
+    if (c->confirmed)
+        goal = target; /* judged at the render's size */
     return c->measured && c->psnr >= goal && (c->psnr_flagged >= target || c->few_flagged);
+}
+
+/* --auto on a render larger than its pre-render, with a density sphere:
+ * candidate c's density steps judged again at the render's own size, where
+ * thin features decide which steps keep the target (their PSNR moves by 1
+ * to 2.5 dB between 160x120, 200x150 and 320x240, so the pre-render's
+ * margin alone buys up to 1.28x the steps needed: docs/results/
+ * arith-auto.md), against the double build's render at that size (made
+ * once): from the steps the pre-render found, down the rungs while the
+ * render keeps the target (past one rung that misses it: the PSNR of a
+ * step count is not monotone), up until it does.  c then holds the render's
+ * measures (c->confirmed: judged against the target, no margin).  0, or
+ * -1 after a failed render. */
+static int auto_confirm_steps(struct auto_run *r, struct auto_cand *c)
+{
+    struct auto_run full = *r;
+    full.w = r->fw;
+    full.h = r->fh;
+    full.margin = 0;
+    if (!r->full_ref.width) {
+        char img[PATH_MAX], log[PATH_MAX];
+        if (auto_host_render_model(&full, "double", 0, 0, SCN_MAX_DENSITY_STEPS,
+                                   ARITH_AUTO_REF_WEIGHT, img, log, sizeof img) != 0 ||
+            auto_read(img, &r->full_ref, NULL) != 0)
+            return -1;
+    }
+    full.ref = r->full_ref;
+    double target = r->o->target_db;
+    int i = 0;
+    while (i < AUTO_N_STEPS - 1 && auto_steps[i] < c->steps)
+        i++;
+    struct auto_cand t = *c;
+    t.steps = auto_steps[i];
+    t.confirmed = 1;
+    if (auto_measure_image(&full, &t) != 0)
+        return -1;
+    if (t.refused)
+        return 0; /* the render's size refused: the pre-render's judgement stands */
+    if (auto_meets_goal(&t, target, target)) {
+        for (int j = i - 1, missed = 0; j >= 0 && missed < 2; j--) {
+            struct auto_cand d = t;
+            d.steps = auto_steps[j];
+            if (auto_measure_image(&full, &d) != 0)
+                return -1;
+            if (d.refused || !auto_meets_goal(&d, target, target)) {
+                if (!missed++) { /* the rung below the steps kept */
+                    t.looser_steps = d.steps;
+                    t.looser_steps_db = d.refused ? 0 : d.psnr;
+                }
+                continue;
+            }
+            d.looser_steps_db = -1;
+            t = d;
+            missed = 0;
+        }
+    } else {
+        while (i < AUTO_N_STEPS - 1 && !auto_meets_goal(&t, target, target)) {
+            struct auto_cand u = t;
+            u.steps = auto_steps[++i];
+            if (auto_measure_image(&full, &u) != 0)
+                return -1;
+            u.looser_steps = t.steps;
+            u.looser_steps_db = t.psnr;
+            t = u;
+            if (t.refused)
+                return 0;
+        }
+    }
+    *c = t;
+    return 0;
 }
 
 /* The pre-render size: the render's size scaled to at most
@@ -644,6 +722,8 @@ static int auto_size(struct auto_run *r)
         *(board ? &r->bw : &r->w) = kw;
         *(board ? &r->bh : &r->h) = kh;
     }
+    r->fw = w;
+    r->fh = h;
     r->margin = r->o->model && (double)r->w * r->h < (double)w * h ? ARITH_AUTO_MARGIN_DB : 0;
     return 0;
 }
@@ -675,8 +755,10 @@ static void auto_print_model(const struct auto_run *r, const struct auto_cand *c
 static void auto_print_binding(const struct auto_run *r, const struct auto_cand *p, int n,
                                const struct auto_cand *c)
 {
-    double t = auto_goal(r);
-    int steps = r->density && p->looser_steps_db >= 0 && p->looser_steps_db < t;
+    /* min_weight was judged on the pre-render; density steps too, or at
+     * the render's size (confirmed: to the target itself) */
+    double t = auto_goal(r), ts = p->confirmed ? r->o->target_db : t;
+    int steps = r->density && p->looser_steps_db >= 0 && p->looser_steps_db < ts;
     int weight = p->looser_weight_db >= 0 && p->looser_weight_db < t;
     char wn[40];
     char s_why[96], w_why[96];
@@ -698,7 +780,8 @@ static void auto_print_binding(const struct auto_run *r, const struct auto_cand 
     }
     int missed = 0;
     for (int i = 0; i < n; i++)
-        if (strcmp(c[i].arith, p->arith) != 0 && !auto_meets_goal(&c[i], auto_goal(r), t))
+        if (strcmp(c[i].arith, p->arith) != 0 &&
+            !auto_meets_goal(&c[i], auto_goal(r), r->o->target_db))
             printf("%s%s %s", missed++ ? ", " : "; arithmetic: ", c[i].label,
                    c[i].refused ? "refuses the scene" : "misses the target");
 }
@@ -720,6 +803,9 @@ static void auto_print(const struct auto_run *r, const struct auto_cand *c, int 
                auto_weight_name(ARITH_AUTO_REF_WEIGHT, wn, sizeof wn));
     else if (o->model)
         printf(" at min_weight %s", auto_weight_name(ARITH_AUTO_REF_WEIGHT, wn, sizeof wn));
+    if (r->full_ref.width)
+        printf("; density steps judged again at the render's %dx%d against double there, "
+               "to the target", r->fw, r->fh);
     printf("):");
     for (int i = 0; i < n; i++) {
         printf("%s %s", i ? ";" : "", c[i].label);
@@ -728,7 +814,7 @@ static void auto_print(const struct auto_run *r, const struct auto_cand *c, int 
         printf(o->model && !c[i].refused ? ": " : " ");
         if (c[i].refused)
             printf("refused (misses the target)");
-        else if (c[i].psnr < auto_goal(r))
+        else if (c[i].psnr < (c[i].confirmed ? o->target_db : auto_goal(r)))
             printf("%.1f dB", c[i].psnr);
         else if (c[i].psnr_flagged < o->target_db && c[i].few_flagged)
             printf("%.1f dB (%u flagged pixels at %.1f dB, under %g%%: judged with the whole image)",
@@ -806,6 +892,13 @@ static int auto_choose(struct auto_run *r, struct auto_cand *c, int n)
             c[i].weight = auto_weight(j - 1);
             if (auto_measure_image(r, &c[i]) != 0)
                 return -2;
+        }
+        if (o->model && r->density && r->margin > 0 && same < 0 &&
+            auto_meets_goal(&c[i], auto_goal(r), o->target_db) &&
+            auto_confirm_steps(r, &c[i]) != 0) {
+            fprintf(stderr, "%s: %s: the %s render at %dx%d failed\n", r->prog, auto_name(r->o),
+                    c[i].label, r->fw, r->fh);
+            return -2;
         }
         if (o->model && auto_meets_goal(&c[i], auto_goal(r), o->target_db)) {
             steps0 = c[i].steps; /* the next candidate starts from here */
@@ -897,6 +990,8 @@ int arith_auto_pick(const char *prog, const char *path, const struct arith_auto_
         out->escalate = c[pick].escalate;
     }
     image_free(&r.ref);
+    if (r.full_ref.width)
+        image_free(&r.full_ref);
     auto_cleanup(tmp);
     return pick >= 0 ? 0 : -1;
 }

@@ -7,7 +7,8 @@
 # against the reference rendered at the full 200x150:
 #   thin density features (make_scene.py density_steps): the default 24
 #             steps miss 40 dB, so --auto raises them; its image keeps 40 dB
-#             at full size; the reason names the density steps
+#             at full size; the steps are judged again at full size, where
+#             one rung fewer misses 40 dB; the reason names the density steps
 #   two fat density blobs: the default 24 steps keep 40 dB, so --auto does
 #             not raise them; its image keeps 40 dB
 #   no density sphere (scale 1): no steps chosen, min_weight the knob named;
@@ -46,6 +47,7 @@ auto_run() {
         return 1
     fi
     pick=$(grep -- '--auto picks' "$log")
+    LINKS1_AUTO_LOG=$log
     db=$("$LINKS1" compare "$ref" "$RENDER_TMP/$name.ppm" --min-fraction 0 2>&1 |
         sed -nE 's/.*PSNR ([0-9.]+) dB.*/\1/p')
     echo "    $pick"
@@ -68,6 +70,25 @@ if auto_run auto_model_thin "$thin"; then
         echo "FAIL auto_model_thin_raises_steps: '$s' steps, want more than the default 24"
     fi
     keeps auto_model_thin
+    # the steps were judged again at 200x150: one rung fewer at the pick's
+    # arithmetic and min_weight misses 40 dB there
+    below=$(sed -nE 's/.*binding: .*density steps \(([0-9]+) give ([0-9.]+) dB\).*/\1 \2/p' <<<"$pick")
+    read -r bs bdb <<<"$below"
+    w=$(sed -nE 's/.*--auto picks float with [0-9]+ density steps, min_weight 1\/([0-9]+):.*/\1/p' <<<"$pick")
+    bq=
+    if [ -n "$bs" ] && [ -n "$w" ]; then
+        "$LINKS1" ref "$thin" --arith float --density-steps "$bs" \
+            --min-weight "$(awk -v d="$w" 'BEGIN { printf "%.17g", 1 / d }')" \
+            -o "$RENDER_TMP/thin-below.ppm" >/dev/null 2>&1
+        bq=$("$LINKS1" compare "$RENDER_TMP/auto_model_thin-ref.ppm" "$RENDER_TMP/thin-below.ppm" \
+            --min-fraction 0 2>&1 | sed -nE 's/.*PSNR ([0-9.]+) dB.*/\1/p')
+    fi
+    if grep -q "density steps judged again at the render's $SIZE" "$LINKS1_AUTO_LOG" &&
+        awk -v d="$bq" 'BEGIN { exit !(d != "" && d + 0 < 40) }'; then
+        echo "PASS auto_model_thin_fewest_steps_full_size ($bs steps give $bq dB at $SIZE; the pick $s)"
+    else
+        echo "FAIL auto_model_thin_fewest_steps_full_size: judged at $SIZE? $(grep -c "judged again at the render's $SIZE" "$LINKS1_AUTO_LOG"); $bs steps at 1/$w give '$bq' dB there (want < 40): $pick"
+    fi
     if grep -qE 'binding: (density steps \([0-9]+ give [0-9.]+ dB\)|min_weight .*then density steps \()' <<<"$pick"; then
         echo "PASS auto_model_thin_names_steps"
     else

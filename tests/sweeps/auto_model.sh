@@ -10,7 +10,7 @@
 #          instructions per pixel of the same render on the board
 #          (links1 render --count-insns, 2 NCs, the pick's firmware and model)
 #   best   the cheapest configuration at SIZE over arithmetic (float, soft,
-#          fixed Q12.19 and the host's Q13.18, Q15.16, Q17.14 at the fixed
+#          fixed Q12.19 and the host's Q13.18, Q15.16, Q17.14, Q19.12 at the fixed
 #          firmware's cost) x min_weight (1/4096 .. 1/4, 2x apart) x density
 #          steps (--auto's rungs, 2..256; scenes with a density sphere)
 #          whose image at SIZE reaches TARGET dB against ref: per build, the
@@ -47,7 +47,7 @@ for e in 12 11 10 9 8 7 6 5 4 3 2; do weights+=("$(awk -v e=$e 'BEGIN { printf "
 wname() { awk -v w="$1" 'BEGIN { printf "1/%d", 1 / w + 0.5 }'; }
 # label|host build|firmware whose cost it takes
 cands=("float|float|float" "soft|float|soft" "fixed Q12.19|fixed|fixed")
-for f in 18 16 14; do
+for f in 18 16 14 12; do
     [ -x "$BIN/links1-ref-fixed$f" ] && cands+=("fixed Q$((31 - f)).$f|fixed$f|fixed")
 done
 
@@ -145,8 +145,14 @@ for entry in "${order[@]}"; do
             done
             continue
         fi
-        [ "$family" = density_steps ] || meets_cache=()
-        [ "$family" = density_steps ] || cost_cache=()
+        # the caches hold one scene's renders, or the density_steps scenes'
+        # (their renders all give their options): emptied on a new scene
+        # of any other family and on the first density_steps scene
+        if [ "$family" != density_steps ] || [ "${cached_family:-}" != density_steps ]; then
+            meets_cache=()
+            cost_cache=()
+        fi
+        cached_family=$family
         for fpu in vfp none; do
             # the truth: the cheapest configuration that reaches TARGET at SIZE
             if [ "$family" = density_steps ] && [ -n "${best_of[$fpu]:-}" ]; then
