@@ -53,6 +53,8 @@ struct auto_cand {
     int confirmed;       /* --auto: its density steps and its images judged at
                             the render's size (auto_confirm_steps): the target
                             is its goal, without the margin */
+    int confirm_refused; /* confirmed set only to mark it tried: the render's
+                            size refused, the pre-render judged it */
     int dearer;          /* --auto: soft beside a float that keeps the target, not
                             counted (float's code, each VFP instruction a call) */
 };
@@ -603,9 +605,15 @@ static double auto_goal(const struct auto_run *r)
     return r->o->target_db + r->margin;
 }
 
+/* --auto: c's steps and images were judged at the render's size */
+static int auto_judged_full(const struct auto_cand *c)
+{
+    return c->confirmed && !c->confirm_refused;
+}
+
 static int auto_meets_goal(const struct auto_cand *c, double goal, double target)
 {
-    if (c->confirmed)
+    if (auto_judged_full(c))
         goal = target; /* judged at the render's size */
     return c->measured && c->psnr >= goal && (c->psnr_flagged >= target || c->few_flagged);
 }
@@ -757,7 +765,7 @@ static void auto_print_binding(const struct auto_run *r, const struct auto_cand 
 {
     /* min_weight was judged on the pre-render; density steps too, or at
      * the render's size (confirmed: to the target itself) */
-    double t = auto_goal(r), ts = p->confirmed ? r->o->target_db : t;
+    double t = auto_goal(r), ts = auto_judged_full(p) ? r->o->target_db : t;
     int steps = r->density && p->looser_steps_db >= 0 && p->looser_steps_db < ts;
     int weight = p->looser_weight_db >= 0 && p->looser_weight_db < t;
     char wn[40];
@@ -814,7 +822,7 @@ static void auto_print(const struct auto_run *r, const struct auto_cand *c, int 
         printf(o->model && !c[i].refused ? ": " : " ");
         if (c[i].refused)
             printf("refused (misses the target)");
-        else if (c[i].psnr < (c[i].confirmed ? o->target_db : auto_goal(r)))
+        else if (c[i].psnr < (auto_judged_full(&c[i]) ? o->target_db : auto_goal(r)))
             printf("%.1f dB", c[i].psnr);
         else if (c[i].psnr_flagged < o->target_db && c[i].few_flagged)
             printf("%.1f dB (%u flagged pixels at %.1f dB, under %g%%: judged with the whole image)",
@@ -855,6 +863,45 @@ static void auto_print(const struct auto_run *r, const struct auto_cand *c, int 
     fflush(stdout);
 }
 
+/* --auto on a render larger than its pre-render, with a density sphere:
+ * the candidates costed on the board, cheapest first, have their steps
+ * judged again at the render's size (auto_confirm_steps) and are costed
+ * again when they changed, until the next costs more than
+ * ARITH_AUTO_CONFIRM_REACH times the cheapest judged so far: the
+ * pre-render's margin costs at most a few rungs of steps (1.33x on the
+ * density_steps scene), so one that far behind cannot become the
+ * cheapest, and it keeps its pre-render judgement.  0, or -1 after a
+ * failed render (printed). */
+static int auto_confirm_cheapest(struct auto_run *r, struct auto_cand *c, int n)
+{
+    const struct arith_auto_opts *o = r->o;
+    double best = -1;
+    for (;;) {
+        int k = -1;
+        for (int i = 0; i < n; i++)
+            if (c[i].cost >= 0 && !c[i].confirmed && (k < 0 || c[i].cost < c[k].cost))
+                k = i;
+        if (k < 0 || (best >= 0 && c[k].cost > ARITH_AUTO_CONFIRM_REACH * best))
+            return 0;
+        int steps = c[k].steps;
+        if (auto_confirm_steps(r, &c[k]) != 0) {
+            fprintf(stderr, "%s: %s: the %s render at %dx%d failed\n", r->prog, auto_name(o),
+                    c[k].label, r->fw, r->fh);
+            return -1;
+        }
+        if (!c[k].confirmed) /* refused at the render's size: keeps the pre-render's */
+            c[k].confirmed = 1, c[k].confirm_refused = 1;
+        else if (!auto_meets_goal(&c[k], auto_goal(r), o->target_db))
+            c[k].cost = -1; /* misses at the render's size, at every rung */
+        else if (c[k].steps != steps &&
+                 (c[k].cost = auto_board_cost(r, c[k].arith, c[k].escalate, c[k].steps,
+                                              c[k].weight)) < 0)
+            return -1;
+        if (c[k].cost >= 0 && (best < 0 || c[k].cost < best))
+            best = c[k].cost;
+    }
+}
+
 static int auto_choose(struct auto_run *r, struct auto_cand *c, int n)
 {
     const struct arith_auto_opts *o = r->o;
@@ -893,13 +940,6 @@ static int auto_choose(struct auto_run *r, struct auto_cand *c, int n)
             if (auto_measure_image(r, &c[i]) != 0)
                 return -2;
         }
-        if (o->model && r->density && r->margin > 0 && same < 0 &&
-            auto_meets_goal(&c[i], auto_goal(r), o->target_db) &&
-            auto_confirm_steps(r, &c[i]) != 0) {
-            fprintf(stderr, "%s: %s: the %s render at %dx%d failed\n", r->prog, auto_name(r->o),
-                    c[i].label, r->fw, r->fh);
-            return -2;
-        }
         if (o->model && auto_meets_goal(&c[i], auto_goal(r), o->target_db)) {
             steps0 = c[i].steps; /* the next candidate starts from here */
             weight0 = c[i].weight;
@@ -923,6 +963,8 @@ static int auto_choose(struct auto_run *r, struct auto_cand *c, int n)
                                          c[i].weight)) < 0)
             return -2;
     }
+    if (o->model && r->density && r->margin > 0 && auto_confirm_cheapest(r, c, n) != 0)
+        return -2;
     int pick = -1;
     for (int i = 0; i < n; i++)
         if (c[i].cost >= 0 && (pick < 0 || c[i].cost < c[pick].cost))

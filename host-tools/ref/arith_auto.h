@@ -35,6 +35,10 @@
  * keep this much more than the target (thin features' PSNR moves by 1-2.5
  * dB between 160x120, 200x150 and 320x240: docs/results/arith-auto.md) */
 #define ARITH_AUTO_MARGIN_DB 2.0
+/* --auto on a render larger than its pre-render: a density sphere's steps
+ * are judged again at the render's size for the candidates costing at
+ * most this many times the cheapest so judged (auto_confirm_cheapest) */
+#define ARITH_AUTO_CONFIRM_REACH 2.0
 /* --auto: the flagged pixels must keep the target on their own when they
  * are at least this share of the pre-render; a PSNR over fewer (4 of
  * 19200 on tir_chain 1 in float) says little, and the whole image judges
