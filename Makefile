@@ -68,6 +68,9 @@ FW_FLOAT_ABI_virt_float-esc := -mfpu=vfpv4 -mfloat-abi=hard
 FW_FLOAT_ABI_virt_fixed-esc := -mfpu=vfpv4 -mfloat-abi=hard
 FW_WIDE_float-esc := double
 FW_WIDE_fixed-esc := double
+# float-esc compiles to float's objects (same arithmetic, same float ABI,
+# the wide renderer's entry points weak): it links those, not copies.
+FW_OBJS_FROM_float-esc := float
 FW_VARIANTS_virt := float soft fixed double float-esc fixed-esc
 # The an521 boards' double, float-esc and fixed-esc: the M33's FPU is single
 # precision, so their double is software (libgcc's, correctly rounded as
@@ -165,11 +168,23 @@ endef
 fw_dir = $(B)/fw-$(if $(filter virt,$(1)),,$(1)-)$(2)-$(LIBC)
 fw_elf = $(FWB)$(if $(filter virt,$(1)),,/$(1))/links1-$(2).elf
 define fw_variant
-FW_OBJS_$(1)_$(2) := $$(patsubst %,$(call fw_dir,$(1),$(2))/%.o,$$(FW_SRCS) $$(FW_SRCS_$(1)) $$(SHARED_SRCS))
+FW_OBJS_$(1)_$(2) := $$(patsubst %,$(call fw_dir,$(1),$(or $(FW_OBJS_FROM_$(2)),$(2)))/%.o,$$(FW_SRCS) \
+	$$(FW_SRCS_$(1)) $$(SHARED_SRCS))
 FW_ELF_$(1)_$(2) := $(call fw_elf,$(1),$(2))
 FW_FLAGS_$(1)_$(2) := $(FW_CFLAGS) $(ARM_CPU_$(1)) $(FW_FLOAT_ABI_$(1)_$(2)) $(FW_MACHINE_DEF_$(1)) \
 	$(ARITH_DEF_$(FW_ARITH_$(2)))
+$(if $(FW_OBJS_FROM_$(2)),,$(call fw_objects,$(1),$(2)))
+FW_LINK_$(1)_$(2) := $$(FW_OBJS_$(1)_$(2)) $(if $(FW_WIDE_$(2)),$(call fw_dir,$(1),$(FW_WIDE_$(2)))/render-wide.o)
+$$(FW_ELF_$(1)_$(2)): $$(FW_LINK_$(1)_$(2)) linker/sections.ld $(B)/linker/$(1)-memory.ld
+	$$(call say,LD,$$@)
+	$(Q)mkdir -p $$(@D)
+	$(Q)$(ARM_CC) $$(FW_FLAGS_$(1)_$(2)) $(FW_LDFLAGS) -T$(B)/linker/$(1)-memory.ld \
+		-Tlinker/sections.ld $$(FW_LINK_$(1)_$(2)) $(FW_LIBS) -Wl,-Map=$$@.map -o $$@
 
+FIRMWARE_$(1) += $$(FW_ELF_$(1)_$(2))
+endef
+# The objects of variant $(2) on machine $(1), in its own directory.
+define fw_objects
 $(call fw_dir,$(1),$(2))/%.c.o: %.c
 	$$(call say,CC,$$@)
 	$(Q)mkdir -p $$(@D)
@@ -180,15 +195,7 @@ $(call fw_dir,$(1),$(2))/%.S.o: %.S
 	$(Q)mkdir -p $$(@D)
 	$(Q)$(ARM_CC) $$(FW_FLAGS_$(1)_$(2)) -c $$< -o $$@
 
-FW_LINK_$(1)_$(2) := $$(FW_OBJS_$(1)_$(2)) $(if $(FW_WIDE_$(2)),$(call fw_dir,$(1),$(FW_WIDE_$(2)))/render-wide.o)
-$$(FW_ELF_$(1)_$(2)): $$(FW_LINK_$(1)_$(2)) linker/sections.ld $(B)/linker/$(1)-memory.ld
-	$$(call say,LD,$$@)
-	$(Q)mkdir -p $$(@D)
-	$(Q)$(ARM_CC) $$(FW_FLAGS_$(1)_$(2)) $(FW_LDFLAGS) -T$(B)/linker/$(1)-memory.ld \
-		-Tlinker/sections.ld $$(FW_LINK_$(1)_$(2)) $(FW_LIBS) -Wl,-Map=$$@.map -o $$@
-
 -include $$(FW_OBJS_$(1)_$(2):.o=.d)
-FIRMWARE_$(1) += $$(FW_ELF_$(1)_$(2))
 endef
 
 # Each memory map takes the sizes C also needs from kernel/param.h and
