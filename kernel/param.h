@@ -23,7 +23,10 @@
 /* Cooperative tasks per core, and the stack each task gets from its unit
  * computer's private memory. */
 #define TASKS_PER_CORE 4
-#define TASK_STACK_SIZE (16 * 1024)
+/* 24 KiB: the double renderer (the double firmware's, and the wide one an
+ * escalating NC runs) needs about 20 KiB at max_depth 16 (render/limits.h);
+ * with 16 KiB the DM refused a max_depth over 12 there. */
+#define TASK_STACK_SIZE (24 * 1024)
 #define TASK_NAME_MAX 16
 
 /* Host UART receive ring: must hold a full window of host DATA frames

@@ -52,15 +52,19 @@
  * 8 more in float's trace_shade and trace_lights (trace_ray 144 +
  * trace_shade 264 = 408 a level, trace_lights 616), none in fixed. */
 #if defined(LINKS1_NUM_DOUBLE)
-/* double (the board's double-precision VFP build): every num_t twice as
- * wide; trace_ray + trace_shade take 216 + 472 = 688 bytes a level, and
- * the frames of the deepest leaf 1,168 more than in float (trace_lights
- * 1048, trace_straight 728, prim_intersect_uncertain 368, prim_surface
- * 280, render_pixel_impl 272), and the ambient's choice of light up to 16
- * more: with TASK_STACK_SIZE 16 KiB the DM refuses a max_depth over 12 in
- * this build (roles/dm_render.c) */
-#define RENDER_STACK_PER_DEPTH 704
-#define RENDER_STACK_BASE 6160
+/* double (the board's double-precision VFP build, and the an521 boards'
+ * software double): every num_t twice as wide; on the Cortex-A15
+ * trace_ray + trace_shade take 216 + 472 = 688 bytes a level, and the
+ * frames of the deepest leaf 1,168 more than in float (trace_lights 1048,
+ * trace_straight 728, prim_intersect_uncertain 368, prim_surface 280,
+ * render_pixel_impl 272), and the ambient's choice of light up to 16 more;
+ * on the M33 (-fstack-usage) 224 + 512 = 736 a level and the leaf's
+ * frames 216 bytes more (trace_lights 1144, trace_straight 856,
+ * prim_intersect_uncertain 520, prim_surface 296), libgcc's double
+ * routines a few words: the larger of the two.  About 19 KiB at max_depth
+ * 16, within TASK_STACK_SIZE (24 KiB; roles/dm_render.c checks it) */
+#define RENDER_STACK_PER_DEPTH 744
+#define RENDER_STACK_BASE 6416
 #else
 #define RENDER_STACK_PER_DEPTH 448
 #define RENDER_STACK_BASE 4680

@@ -55,6 +55,7 @@ struct auto_cand {
                             is its goal, without the margin */
     int confirm_refused; /* confirmed set only to mark it tried: the render's
                             size refused, the pre-render judged it */
+    int board_refused;   /* the board refused its pre-render (why): out */
     int dearer;          /* --auto: soft beside a float that keeps the target, not
                             counted (float's code, each VFP instruction a call) */
 };
@@ -386,9 +387,11 @@ static int auto_measure_image(const struct auto_run *r, struct auto_cand *c)
  * arith and the model steps, weight (steps < 0: the scene's) (links1
  * render --count-insns): the one cost of --arith auto and --auto, or -1
  * after printing why. */
-static double auto_board_cost(const struct auto_run *r, const char *arith, int escalate,
-                              int steps, double weight)
+static double auto_board_cost(const struct auto_run *r, struct auto_cand *c, int steps,
+                              double weight)
 {
+    const char *arith = c->arith;
+    int escalate = c->escalate;
     char self[PATH_MAX], size[32], img[PATH_MAX], log[PATH_MAX], ncs[8];
     if (self_sibling("links1", self, sizeof self) < 0)
         return -1;
@@ -415,10 +418,25 @@ static double auto_board_cost(const struct auto_run *r, const char *arith, int e
         return -1;
     argv[0] = self; /* links1 render SCENE ... */
     if (auto_exec(argv, log) != 0) {
+        /* the board's refusal (a limit of its firmware, named): the
+         * candidate is out; anything else ends the choice */
+        const char says[] = "the board says: ";
+        char line[300] = "";
+        FILE *f = fopen(log, "r");
+        while (f && fgets(line, sizeof line, f) && !strstr(line, says))
+            line[0] = 0;
+        if (f)
+            fclose(f);
+        if (strstr(line, says)) {
+            line[strcspn(line, "\n")] = 0;
+            snprintf(c->why, sizeof c->why, "%s", strstr(line, says) + sizeof says - 1);
+            c->board_refused = 1;
+            return -2;
+        }
         char why[300];
         auto_last_line(log, why, sizeof why);
         fprintf(stderr, "%s: %s: the board pre-render with %s failed: %s\n", r->prog, auto_name(r->o),
-                arith, why);
+                c->label, why);
         return -1;
     }
     double total = auto_log_number(log, "NCs total ", 1);
@@ -837,6 +855,8 @@ static void auto_print(const struct auto_run *r, const struct auto_cand *c, int 
             printf(", %.0f insns/pixel", c[i].cost);
         else if (c[i].dearer)
             printf(", not counted (float's code with each VFP instruction a call: dearer)");
+        else if (c[i].board_refused)
+            printf(", refused by the board: %s", c[i].why);
     }
     printf("\n");
     for (int i = 0; i < n; i++)
@@ -894,9 +914,13 @@ static int auto_confirm_cheapest(struct auto_run *r, struct auto_cand *c, int n)
         else if (!auto_meets_goal(&c[k], auto_goal(r), o->target_db))
             c[k].cost = -1; /* misses at the render's size, at every rung */
         else if (c[k].steps != steps &&
-                 (c[k].cost = auto_board_cost(r, c[k].arith, c[k].escalate, c[k].steps,
-                                              c[k].weight)) < 0)
+                 (c[k].cost = auto_board_cost(r, &c[k], c[k].steps, c[k].weight)) < 0) {
+            if (c[k].cost < -1.5) { /* refused by the board: out */
+                c[k].cost = -1;
+                continue;
+            }
             return -1;
+        }
         if (c[k].cost >= 0 && (best < 0 || c[k].cost < best))
             best = c[k].cost;
     }
@@ -959,9 +983,13 @@ static int auto_choose(struct auto_run *r, struct auto_cand *c, int n)
                 c[j].cost >= 0 && c[j].steps == c[i].steps && c[j].weight == c[i].weight)
                 c[i].cost = c[j].cost;
         if (c[i].cost < 0 &&
-            (c[i].cost = auto_board_cost(r, c[i].arith, c[i].escalate, c[i].steps,
-                                         c[i].weight)) < 0)
+            (c[i].cost = auto_board_cost(r, &c[i], c[i].steps, c[i].weight)) < 0) {
+            if (c[i].cost < -1.5) { /* refused by the board: out */
+                c[i].cost = -1;
+                continue;
+            }
             return -2;
+        }
     }
     if (o->model && r->density && r->margin > 0 && auto_confirm_cheapest(r, c, n) != 0)
         return -2;

@@ -16,7 +16,7 @@ board_ready render_escalate_float render_escalate_float_count render_escalate_fi
     render_escalate_fixed_count render_escalate_fixed_marked render_escalate_frames \
     render_escalate_fixed_near_double render_escalate_plain_fixed_is_not \
     render_escalate_an521_float render_escalate_an521_float_count render_escalate_an521_fixed \
-    render_escalate_an521_fixed_count render_escalate_refused_soft render_escalate_refused_double \
+    render_escalate_an521_fixed_count render_escalate_depth16 render_escalate_refused_soft render_escalate_refused_double \
     render_escalate_refused_auto render_escalate_firmware_without_wide render_check_lost_fixed \
     render_check_lost_flags_mean_it || exit 0
 SIZE=160x120
@@ -113,6 +113,17 @@ for a in float fixed; do
         echo "FAIL ${name}_count: no board render"
     fi
 done
+
+# the deepest recursion a scene may ask (max_depth 16): the double
+# renderer's stack fits an NC task's, and the image is the host's
+name=render_escalate_depth16
+deep=$RENDER_TMP/tir16.scn
+python3 tests/sweeps/make_scene.py tir_chain 16 --size 64x48 >"$deep"
+ref=$RENDER_TMP/esc-host-depth16.ppm
+"$LINKS1" ref "$deep" --arith float --escalate -o "$ref" >"$ref.log" 2>&1
+out=$RENDER_TMP/$name.ppm
+render_board $name "$out" "$deep" -o "$out" --arith float --ncs 2 --escalate &&
+    render_same $name "$ref" "$out"
 
 # refusals: a clear reason, no board booted
 refused() {

@@ -8,7 +8,8 @@
 #          pixel of the same render on the board (links1 render
 #          --count-insns, 2 NCs; the host's fixed formats other than Q12.19
 #          take the fixed firmware's count), measured for every firmware
-#          that has a candidate at or above TARGET dB
+#          that has a candidate at or above TARGET dB; with VFP also float
+#          and fixed Q12.19 escalated (--escalate, the -esc firmware)
 #   best   the cheapest candidate at or above TARGET dB at SIZE
 # Writes DIR/auto.tsv and DIR/auto.md (the table of docs/results/arith-auto.md) and
 # prints the summary: scenes where the pick keeps
@@ -29,19 +30,21 @@ mkdir -p "$out/work"
 tsv=$out/auto.tsv
 . tests/sweeps/families.sh
 
-# label|host build|firmware whose cost it takes
-cands=("float|float|float" "soft|float|soft" "fixed Q12.19|fixed|fixed")
-for f in 18 16 14; do
-    [ -x "$BIN/links1-ref-fixed$f" ] && cands+=("fixed Q$((31 - f)).$f|fixed$f|fixed")
+# label|host build|firmware whose cost it takes|esc (escalated: --escalate
+# on both, the -esc firmware; with VFP only, as --arith auto's)
+cands=("float|float|float|" "soft|float|soft|" "fixed Q12.19|fixed|fixed|")
+for f in 18 16 14 12; do
+    [ -x "$BIN/links1-ref-fixed$f" ] && cands+=("fixed Q$((31 - f)).$f|fixed$f|fixed|")
 done
+cands+=("float escalated|float|float|esc" "fixed Q12.19 escalated|fixed|fixed|esc")
 
 psnr() { # REF IMG
     "$LINKS1" compare "$1" "$2" --min-fraction 0 2>&1 | sed -nE 's/.*PSNR ([0-9.]+) dB.*/\1/p'
 }
-board_cost() { # SCENE FIRMWARE: NC instructions per pixel
+board_cost() { # SCENE FIRMWARE [esc]: NC instructions per pixel
     local log=$out/work/board.log
-    timeout 900 "$LINKS1" render "$1" --arith "$2" --ncs 2 --count-insns --quiet \
-        -o "$out/work/board.png" >"$log" 2>&1 || { echo -; return; }
+    timeout 900 "$LINKS1" render "$1" --arith "$2" ${3:+--escalate} --ncs 2 --count-insns \
+        --quiet -o "$out/work/board.png" >"$log" 2>&1 || { echo -; return; }
     local total
     total=$(grep -o 'NCs total [0-9]*' "$log" | grep -o '[0-9]*$')
     awk -v t="$total" -v s="$SIZE" 'BEGIN { split(s, d, "x"); printf "%.0f", t / (d[1] * d[2]) }'
@@ -65,15 +68,16 @@ for entry in "${families[@]}"; do
         # every candidate's PSNR at SIZE; the cost of each firmware needed
         declare -A p=() cost=()
         for c in "${cands[@]}"; do
-            IFS='|' read -r label build fw <<<"$c"
-            img=$out/work/$build.png
+            IFS='|' read -r label build fw esc <<<"$c"
+            img=$out/work/$build${esc:+-esc}.png
             [ -f "$img.done" ] || {
-                "$BIN/links1-ref-$build" "$scn" -o "$img" >/dev/null 2>&1 && touch "$img.done"
+                "$BIN/links1-ref-$build" "$scn" ${esc:+--escalate} -o "$img" >/dev/null 2>&1 &&
+                    touch "$img.done"
             }
             p[$label]=$([ -f "$img.done" ] && psnr "$ref" "$img" || echo refused)
             if [ "${p[$label]}" != refused ] && awk -v q="${p[$label]}" -v t="$TARGET" 'BEGIN { exit !(q >= t) }' &&
-                [ -z "${cost[$fw]:-}" ]; then
-                cost[$fw]=$(board_cost "$scn" "$fw")
+                [ -z "${cost[$fw$esc]:-}" ]; then
+                cost[$fw$esc]=$(board_cost "$scn" "$fw" "$esc")
             fi
         done
         rm -f "$out"/work/*.png.done
@@ -86,27 +90,27 @@ for entry in "${families[@]}"; do
             fi
             best=- list=
             for c in "${cands[@]}"; do
-                IFS='|' read -r label _ fw <<<"$c"
-                [ "$fpu" = none ] && [ "$label" = float ] && continue
-                list="$list$label ${p[$label]} dB ${cost[$fw]:--}; "
+                IFS='|' read -r label _ fw esc <<<"$c"
+                [ "$fpu" = none ] && { [ "$label" = float ] || [ -n "$esc" ]; } && continue
+                list="$list$label ${p[$label]} dB ${cost[$fw$esc]:--}; "
                 if awk -v q="${p[$label]}" -v t="$TARGET" 'BEGIN { exit !(q != "refused" && q >= t) }' &&
-                    [ "${cost[$fw]:--}" != - ]; then
-                    if [ "$best" = - ] || [ "${cost[$fw]}" -lt "$bestc" ] ||
-                        { [ "${cost[$fw]}" -eq "$bestc" ] &&
+                    [ "${cost[$fw$esc]:--}" != - ]; then
+                    if [ "$best" = - ] || [ "${cost[$fw$esc]}" -lt "$bestc" ] ||
+                        { [ "${cost[$fw$esc]}" -eq "$bestc" ] &&
                           awk -v a="${p[$label]}" -v b="${p[$best]}" 'BEGIN { exit !(a > b) }'; }; then
-                        best=$label bestc=${cost[$fw]}
+                        best=$label bestc=${cost[$fw$esc]}
                     fi
                 fi
             done
-            pfw=-
+            pfw=- pesc=
             for c in "${cands[@]}"; do
-                IFS='|' read -r label _ fw <<<"$c"
-                [ "$label" = "$pick" ] && pfw=$fw
+                IFS='|' read -r label _ fw esc <<<"$c"
+                [ "$label" = "$pick" ] && pfw=$fw pesc=$esc
             done
             pc=-
             if [ "$pfw" != - ]; then
-                [ -z "${cost[$pfw]:-}" ] && cost[$pfw]=$(board_cost "$scn" "$pfw")
-                pc=${cost[$pfw]}
+                [ -z "${cost[$pfw$pesc]:-}" ] && cost[$pfw$pesc]=$(board_cost "$scn" "$pfw" "$pesc")
+                pc=${cost[$pfw$pesc]}
             fi
             ratio=$(awk -v a="$pc" -v b="${bestc:-}" -v best="$best" \
                 'BEGIN { if (a == "-" || best == "-") print "-"; else printf "%.2f", a / b }')
