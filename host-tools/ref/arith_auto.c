@@ -50,11 +50,10 @@ struct auto_cand {
     int looser_flagged;  /* looser_weight_db is the PSNR of the flagged pixels there */
     int few_flagged;     /* --auto: under ARITH_AUTO_MIN_FLAGGED of the pixels
                             flagged: judged with the whole image */
+    int confirm_tried;   /* --auto: auto_confirm_cheapest took it */
     int confirmed;       /* --auto: its density steps and its images judged at
                             the render's size (auto_confirm_steps): the target
                             is its goal, without the margin */
-    int confirm_refused; /* confirmed set only to mark it tried: the render's
-                            size refused, the pre-render judged it */
     int board_refused;   /* the board refused its pre-render (why): out */
     int dearer;          /* --auto: soft beside a float that keeps the target, not
                             counted (float's code, each VFP instruction a call) */
@@ -385,8 +384,9 @@ static int auto_measure_image(const struct auto_run *r, struct auto_cand *c)
 
 /* NC instructions per pixel of the pre-render on the board with firmware
  * arith and the model steps, weight (steps < 0: the scene's) (links1
- * render --count-insns): the one cost of --arith auto and --auto, or -1
- * after printing why. */
+ * render --count-insns): the one cost of --arith auto and --auto; or -1,
+ * after printing why, or with c->board_refused set and c->why the board's
+ * reason (a limit of its firmware: the candidate is out). */
 static double auto_board_cost(const struct auto_run *r, struct auto_cand *c, int steps,
                               double weight)
 {
@@ -431,7 +431,7 @@ static double auto_board_cost(const struct auto_run *r, struct auto_cand *c, int
             line[strcspn(line, "\n")] = 0;
             snprintf(c->why, sizeof c->why, "%s", strstr(line, says) + sizeof says - 1);
             c->board_refused = 1;
-            return -2;
+            return -1;
         }
         char why[300];
         auto_last_line(log, why, sizeof why);
@@ -623,15 +623,9 @@ static double auto_goal(const struct auto_run *r)
     return r->o->target_db + r->margin;
 }
 
-/* --auto: c's steps and images were judged at the render's size */
-static int auto_judged_full(const struct auto_cand *c)
-{
-    return c->confirmed && !c->confirm_refused;
-}
-
 static int auto_meets_goal(const struct auto_cand *c, double goal, double target)
 {
-    if (auto_judged_full(c))
+    if (c->confirmed)
         goal = target; /* judged at the render's size */
     return c->measured && c->psnr >= goal && (c->psnr_flagged >= target || c->few_flagged);
 }
@@ -783,7 +777,7 @@ static void auto_print_binding(const struct auto_run *r, const struct auto_cand 
 {
     /* min_weight was judged on the pre-render; density steps too, or at
      * the render's size (confirmed: to the target itself) */
-    double t = auto_goal(r), ts = auto_judged_full(p) ? r->o->target_db : t;
+    double t = auto_goal(r), ts = p->confirmed ? r->o->target_db : t;
     int steps = r->density && p->looser_steps_db >= 0 && p->looser_steps_db < ts;
     int weight = p->looser_weight_db >= 0 && p->looser_weight_db < t;
     char wn[40];
@@ -840,7 +834,7 @@ static void auto_print(const struct auto_run *r, const struct auto_cand *c, int 
         printf(o->model && !c[i].refused ? ": " : " ");
         if (c[i].refused)
             printf("refused (misses the target)");
-        else if (c[i].psnr < (auto_judged_full(&c[i]) ? o->target_db : auto_goal(r)))
+        else if (c[i].psnr < (c[i].confirmed ? o->target_db : auto_goal(r)))
             printf("%.1f dB", c[i].psnr);
         else if (c[i].psnr_flagged < o->target_db && c[i].few_flagged)
             printf("%.1f dB (%u flagged pixels at %.1f dB, under %g%%: judged with the whole image)",
@@ -899,28 +893,25 @@ static int auto_confirm_cheapest(struct auto_run *r, struct auto_cand *c, int n)
     for (;;) {
         int k = -1;
         for (int i = 0; i < n; i++)
-            if (c[i].cost >= 0 && !c[i].confirmed && (k < 0 || c[i].cost < c[k].cost))
+            if (c[i].cost >= 0 && !c[i].confirm_tried && (k < 0 || c[i].cost < c[k].cost))
                 k = i;
         if (k < 0 || (best >= 0 && c[k].cost > ARITH_AUTO_CONFIRM_REACH * best))
             return 0;
         int steps = c[k].steps;
+        c[k].confirm_tried = 1;
         if (auto_confirm_steps(r, &c[k]) != 0) {
             fprintf(stderr, "%s: %s: the %s render at %dx%d failed\n", r->prog, auto_name(o),
                     c[k].label, r->fw, r->fh);
             return -1;
         }
-        if (!c[k].confirmed) /* refused at the render's size: keeps the pre-render's */
-            c[k].confirmed = 1, c[k].confirm_refused = 1;
-        else if (!auto_meets_goal(&c[k], auto_goal(r), o->target_db))
+        /* not confirmed: the render's size refused it, the pre-render's
+         * judgement stands */
+        if (c[k].confirmed && !auto_meets_goal(&c[k], auto_goal(r), o->target_db))
             c[k].cost = -1; /* misses at the render's size, at every rung */
-        else if (c[k].steps != steps &&
-                 (c[k].cost = auto_board_cost(r, &c[k], c[k].steps, c[k].weight)) < 0) {
-            if (c[k].cost < -1.5) { /* refused by the board: out */
-                c[k].cost = -1;
-                continue;
-            }
+        else if (c[k].confirmed && c[k].steps != steps &&
+                 (c[k].cost = auto_board_cost(r, &c[k], c[k].steps, c[k].weight)) < 0 &&
+                 !c[k].board_refused)
             return -1;
-        }
         if (c[k].cost >= 0 && (best < 0 || c[k].cost < best))
             best = c[k].cost;
     }
@@ -983,13 +974,9 @@ static int auto_choose(struct auto_run *r, struct auto_cand *c, int n)
                 c[j].cost >= 0 && c[j].steps == c[i].steps && c[j].weight == c[i].weight)
                 c[i].cost = c[j].cost;
         if (c[i].cost < 0 &&
-            (c[i].cost = auto_board_cost(r, &c[i], c[i].steps, c[i].weight)) < 0) {
-            if (c[i].cost < -1.5) { /* refused by the board: out */
-                c[i].cost = -1;
-                continue;
-            }
+            (c[i].cost = auto_board_cost(r, &c[i], c[i].steps, c[i].weight)) < 0 &&
+            !c[i].board_refused)
             return -2;
-        }
     }
     if (o->model && r->density && r->margin > 0 && auto_confirm_cheapest(r, c, n) != 0)
         return -2;

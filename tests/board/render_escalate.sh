@@ -39,17 +39,24 @@ same_count() {
     fi
 }
 
-for a in float fixed; do
-    name=render_escalate_$a
-    ref=$RENDER_TMP/esc-host-$a.ppm
-    "$LINKS1" ref $scn --arith $a --size $SIZE --escalate -o "$ref" >"$ref.log" 2>&1
-    out=$RENDER_TMP/$name.ppm
-    if render_board $name "$out" $scn -o "$out" --arith $a --ncs 2 --size $SIZE --escalate; then
-        render_same $name "$ref" "$out"
-        same_count ${name}_count "$ref.log" "$RENDER_TMP/$name.log"
+# escalate_same NAME ARITH SIZE [links1 render args...]: the board's
+# escalated image (RENDER_TMP/NAME.ppm) and its count of escalated pixels
+# equal the host build's
+escalate_same() {
+    local name=$1 a=$2 size=$3 ref=$RENDER_TMP/esc-host-$1.ppm out=$RENDER_TMP/$1.ppm
+    shift 3
+    "$LINKS1" ref $scn --arith "$a" --size "$size" --escalate -o "$ref" >"$ref.log" 2>&1
+    if render_board "$name" "$out" $scn -o "$out" --arith "$a" --ncs 2 --size "$size" \
+        --escalate "$@"; then
+        render_same "$name" "$ref" "$out"
+        same_count "${name}_count" "$ref.log" "$RENDER_TMP/$name.log"
     else
         echo "FAIL ${name}_count: no board render"
     fi
+}
+
+for a in float fixed; do
+    escalate_same render_escalate_$a $a $SIZE
 done
 
 # --mark-lost paints what the wide arithmetic still lost (fixed: none here)
@@ -101,17 +108,7 @@ fi
 # the an521 boards: their M33s escalate in software double (libgcc's,
 # correctly rounded), the image and the count still the host's
 for a in float fixed; do
-    name=render_escalate_an521_$a
-    ref=$RENDER_TMP/esc-host-an521-$a.ppm
-    "$LINKS1" ref $scn --arith $a --size 64x48 --escalate -o "$ref" >"$ref.log" 2>&1
-    out=$RENDER_TMP/$name.ppm
-    if render_board $name "$out" $scn -o "$out" --arith $a --machine an521 --ncs 2 --size 64x48 \
-        --escalate; then
-        render_same $name "$ref" "$out"
-        same_count ${name}_count "$ref.log" "$RENDER_TMP/$name.log"
-    else
-        echo "FAIL ${name}_count: no board render"
-    fi
+    escalate_same render_escalate_an521_$a $a 64x48 --machine an521
 done
 
 # the deepest recursion a scene may ask (max_depth 16): the double

@@ -33,9 +33,7 @@ tsv=$out/auto.tsv
 # label|host build|firmware whose cost it takes|esc (escalated: --escalate
 # on both, the -esc firmware; with VFP only, as --arith auto's)
 cands=("float|float|float|" "soft|float|soft|" "fixed Q12.19|fixed|fixed|")
-for f in 18 16 14 12; do
-    [ -x "$BIN/links1-ref-fixed$f" ] && cands+=("fixed Q$((31 - f)).$f|fixed$f|fixed|")
-done
+add_host_fixed_cands '|'
 cands+=("float escalated|float|float|esc" "fixed Q12.19 escalated|fixed|fixed|esc")
 
 psnr() { # REF IMG

@@ -47,9 +47,7 @@ for e in 12 11 10 9 8 7 6 5 4 3 2; do weights+=("$(awk -v e=$e 'BEGIN { printf "
 wname() { awk -v w="$1" 'BEGIN { printf "1/%d", 1 / w + 0.5 }'; }
 # label|host build|firmware whose cost it takes
 cands=("float|float|float" "soft|float|soft" "fixed Q12.19|fixed|fixed")
-for f in 18 16 14 12; do
-    [ -x "$BIN/links1-ref-fixed$f" ] && cands+=("fixed Q$((31 - f)).$f|fixed$f|fixed")
-done
+add_host_fixed_cands
 
 psnr() { # REF IMG
     "$LINKS1" compare "$1" "$2" --min-fraction 0 2>&1 | sed -nE 's/.*PSNR ([0-9.]+) dB.*/\1/p'

@@ -1,5 +1,5 @@
 # tests/sweeps/families.sh: the sweep families of make_scene.py and their
-# knobs (sourced by sweep.sh and auto.sh).
+# knobs (sourced by sweep.sh, auto.sh and auto_model.sh).
 # family|knobs, easiest first|x axis label|logscale (0/1)|same (1: the
 # image should not change, so the error is against the double build at the
 # first knob; 0: at the same knob)
@@ -17,6 +17,19 @@ families=(
     "map_repeat|1 10 100 1000 3000 10000|repeats|1|0"
     "density_steps|256 64 32 24 16 8 4 2|density root-finder steps|1|1"
 )
+
+# add_host_fixed_cands [SUFFIX]: onto cands[], "fixed Qi.f|fixedF|fixed"
+# and SUFFIX for each host fixed-point build next to links1
+# ($BIN/links1-ref-fixedF, the Makefile's REF_FIXED_BITS), most fraction
+# bits first: the host's formats, each at the fixed firmware's cost.
+add_host_fixed_cands() {
+    local f p
+    for f in $(for p in "$BIN"/links1-ref-fixed[0-9]*; do
+                   [ -x "$p" ] && echo "${p##*fixed}"
+               done | sort -rn); do
+        cands+=("fixed Q$((31 - f)).$f|fixed$f|fixed${1:-}")
+    done
+}
 
 # family_scene FAMILY KNOB SIZE: the family's scene at that knob value on
 # stdout (scale_down and cluster_scale_down are the scale and cluster_scale
