@@ -198,7 +198,11 @@ enum scn_section {
  * its colour is more than RENDER_CHECK_LOST_STEPS/255 off double's
  * (--check-lost); it keeps its own colour. */
 #define SCN_OPT_CHECK_LOST 0x0200u
-#define SCN_OPT_KNOWN 0x03ffu
+/* WORLD_SPACE: the DM leaves the scene in world coordinates and the
+ * camera turns the rays; a frame whose keyed cluster maps are those of the
+ * frame before keeps its primitives (render_frame_t.world, --world-space). */
+#define SCN_OPT_WORLD_SPACE 0x0400u
+#define SCN_OPT_KNOWN 0x07ffu
 
 /* ------------------------------------------------------- LIGHTS record */
 #define SCN_LIGHT_SIZE 48

@@ -126,9 +126,12 @@ render_blob_status_t render_blob_prepare(render_blob_t *blob, uint32_t frame_ind
     arena_t arena;
     arena_init(&arena, blob, size);
     arena.used = arena.high_water = blob->scene_bytes;
+    /* the frame before in this block, whose world part a world-space frame
+     * may keep (render_prepare_again checks it is where the frame goes) */
+    const render_frame_t *prev = blob->frame;
     blob->frame = NULL;
     render_frame_t *frame;
-    render_status_t st = render_prepare(&blob->scene, frame_index, &arena, &frame);
+    render_status_t st = render_prepare_again(&blob->scene, frame_index, &arena, prev, &frame);
     if (st != RENDER_OK) {
         char why[RENDER_BLOB_MSG_MAX];
         precision_status_message(frame, st, why, sizeof why);

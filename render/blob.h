@@ -7,7 +7,9 @@
  *       checks, the scene's arrays at the block's start) and
  *       render_blob_prepare() every frame (render_prepare into the rest of
  *       the block: the per-frame work grows with the triangles only by what
- *       preparing them needs); render_blob_build() is both at once.  The
+ *       preparing them needs; a world-space scene's frame keeps the world
+ *       part of the block's frame before when it would come out the same,
+ *       render_prepare_again); render_blob_build() is both at once.  The
  *       IMSU swap hands the block to the RC at the same address.
  *   RC: render_blob_copy() into the broadcast block: blob->bytes bytes,
  *       eight words a step (render/words.h), then every pointer moved by

@@ -172,8 +172,9 @@ render_status_t render_area_marked(render_ctx_t *ctx, render_clip_t *clip,
     if (area->w == 0 || area->h == 0 || area->x >= f->width || area->w > f->width - area->x ||
         area->y >= f->height || area->h > f->height - area->y)
         return RENDER_ERR_AREA;
-    int in_tree = opt->y_clip && opt->x_clip && !opt->lists;
-    int clipping = (opt->y_clip || opt->x_clip) && !in_tree;
+    /* a world-space frame has no screen rectangles to clip by */
+    int in_tree = opt->y_clip && opt->x_clip && !opt->lists && !f->world;
+    int clipping = (opt->y_clip || opt->x_clip) && !in_tree && !f->world;
     if (clipping) {
         if (clip->frame != f)
             return RENDER_ERR_AREA;

@@ -186,6 +186,20 @@ static num_t precision_density_curvature(const render_prim_t *p, num_t row_max)
     return num_is_sat(c) ? NUM_FAR : c;
 }
 
+num_t precision_world_extent(num_t box, vec3_t eye)
+{
+    num_t x = num_max(box, num_max(num_abs(eye.x), num_max(num_abs(eye.y), num_abs(eye.z))));
+    if (num_is_sat(x))
+        return x;
+    num_t p = NUM_ONE;
+    while (num_lt(p, x) && !num_is_sat(num_add(p, p)))
+        p = num_add(p, p);
+    for (num_t h = num_mul(p, NUM_HALF); num_gt(h, NUM_ZERO) && num_ge(h, x) && num_lt(h, p);
+         h = num_mul(p, NUM_HALF))
+        p = h;
+    return p;
+}
+
 render_status_t precision_check(render_frame_t *f, const scene_index_t *ix)
 {
     f->span = NUM_ZERO;
@@ -200,6 +214,11 @@ render_status_t precision_check(render_frame_t *f, const scene_index_t *ix)
     }
     if (num_is_sat(f->span) || num_is_sat(extent))
         f->precision_lost = 1;
+    if (f->world) {
+        f->world_box_extent = extent;
+        extent = precision_world_extent(extent, f->eye);
+    }
+    f->precision_extent = extent;
     num_t lost_tol = PRECISION_LOST_TOL(f->scene), acne_tol = PRECISION_ACNE_TOL(f->scene);
     /* A triangle's detail (precision_detail_triangle): the steps at its
      * box's reach are at most those at the scene's extent, which holds

@@ -32,6 +32,11 @@ num_t precision_map_error(const xform_t *to_eye, const xform_t *from_eye, const 
  * the loader's or its own). */
 render_status_t precision_check(render_frame_t *f, const scene_index_t *ix);
 
+/* A world-space frame's extent (render_frame_t.precision_extent): the
+ * power of two at or above the box's largest coordinate magnitude and the
+ * eye's, so that a camera moving within it leaves every bound the same. */
+num_t precision_world_extent(num_t box, vec3_t eye);
+
 /* For prim i, once its eye-space bounds are known (to_eye: its cluster's
  * map): records it in f->detail_* when its smallest size, in eye units or
  * in its cluster's, is under RENDER_MIN_DETAIL_STEPS steps of the

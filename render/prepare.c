@@ -8,11 +8,17 @@
  * and primitives grouped by cluster, which clusters have maps of their
  * own, which vertex normals are equal, the static checks) is the scene
  * index's, worked out once a load (render_scene_index).
+ * With options.world_space the primitives stay in world coordinates, the
+ * camera turns the rays instead, and a frame keeps the frame before's
+ * world part when no keyed map changed (render_prepare_again).
  */
+#include <string.h>
+
 #include "proto/scene_format.h"
 #include "render/precision.h"
 #include "render/prim.h"
 #include "render/vec3.h"
+#include "render/words.h"
 
 #define PREP_PIXEL_LIMIT num_from_int(2 * RENDER_MAX_WIDTH) /* beyond any screen */
 
@@ -176,6 +182,23 @@ static xform_t prep_key_xform(const scene_t *s, const scene_cluster_t *c, uint32
         qz = num_div(qz, len);
     }
     return xform_from_trs(t, qw, qx, qy, qz, sc);
+}
+
+/* 1 when every keyed cluster's map is the same, bit for bit, at frames a
+ * and b (a world-space frame keeps its world part then). */
+static int prep_keys_same(const scene_t *s, uint32_t a, uint32_t b)
+{
+    if (a == b)
+        return 1;
+    for (uint32_t i = 0; i < s->cluster_count; i++) {
+        const scene_cluster_t *c = &s->clusters[i];
+        if (c->key_count == 0)
+            continue;
+        xform_t ka = prep_key_xform(s, c, a), kb = prep_key_xform(s, c, b);
+        if (memcmp(&ka, &kb, sizeof ka) != 0)
+            return 0;
+    }
+    return 1;
 }
 
 /* The camera and the lights at frame f: each target with keys
@@ -761,15 +784,30 @@ size_t render_prepare_bytes(const scene_t *s)
 
 render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *arena, render_frame_t **out)
 {
+    return render_prepare_again(s, frame_index, arena, NULL, out);
+}
+
+render_status_t render_prepare_again(const scene_t *s, uint32_t frame_index, arena_t *arena,
+                                     const render_frame_t *prev, render_frame_t **out)
+{
     *out = NULL;
     render_status_t st = prep_check(s);
     if (st != RENDER_OK)
         return st;
+    int world = s->options.world_space != 0;
+    /* the frame before's world part may be kept: its header now, its
+     * arrays where they lie (allocated again at the same addresses, not
+     * cleared until it is known they are not kept) */
+    render_frame_t old;
+    int may_keep = world && prev && prev->world && prev->scene == s;
+    if (may_keep)
+        old = *prev;
     render_frame_t *f = ARENA_NEW_ARRAY(arena, render_frame_t, 1);
     if (!f)
         return RENDER_ERR_ARENA;
-    f->clusters = ARENA_NEW_ARRAY(arena, render_cluster_t, s->cluster_count);
-    f->prims = ARENA_NEW_ARRAY(arena, render_prim_t, s->prim_count ? s->prim_count : 1);
+    f->clusters = ARENA_NEW_ARRAY_RAW(arena, render_cluster_t, s->cluster_count);
+    f->prims = ARENA_NEW_ARRAY_RAW(arena, render_prim_t, s->prim_count ? s->prim_count : 1);
+    may_keep = may_keep && f == prev && f->clusters == old.clusters && f->prims == old.prims;
     uint32_t ncomp = s->density_component_count;
     f->density_inv_radius2 = ARENA_NEW_ARRAY(arena, num_t, ncomp ? ncomp : 1);
     if (!f->clusters || !f->prims || !f->density_inv_radius2)
@@ -823,8 +861,37 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     st = prep_camera(&camera, &world_to_eye, &eye_to_world);
     if (st != RENDER_OK)
         return st;
-    if (xform_is_sat(&world_to_eye) || xform_is_sat(&eye_to_world))
+    int camera_lost = xform_is_sat(&world_to_eye) || xform_is_sat(&eye_to_world);
+    if (camera_lost && !world)
         f->precision_lost = 1;
+    /* what the scene's root maps to: eye coordinates, or (world) itself */
+    const xform_t *root_to = world ? &prep_identity : &world_to_eye;
+    const xform_t *root_from = world ? &prep_identity : &eye_to_world;
+    if (world) {
+        f->world = 1;
+        f->eye = camera.eye;
+        f->eye_to_world = eye_to_world;
+        f->clip_coverage = f->clip_rows = UINT32_MAX; /* no clipping lists */
+        if (may_keep && prep_keys_same(s, old.frame_index, frame_index) &&
+            !memcmp(&old.precision_extent, &(num_t){precision_world_extent(old.world_box_extent, camera.eye)},
+                    sizeof(num_t))) {
+            arena_release_to(arena, mark);
+            f->world_kept = 1;
+            f->world_lost = old.world_lost;
+            f->precision_lost = old.world_lost || camera_lost;
+            f->span = old.span;
+            f->detail_prim = old.detail_prim;
+            f->detail_size = old.detail_size;
+            f->detail_step = old.detail_step;
+            f->world_box_extent = old.world_box_extent;
+            f->precision_extent = old.precision_extent;
+            prep_lights(s, lights, root_to, f);
+            *out = f;
+            return RENDER_OK;
+        }
+    }
+    words_zero(f->clusters, sizeof *f->clusters * s->cluster_count);
+    words_zero(f->prims, sizeof *f->prims * (s->prim_count ? s->prim_count : 1));
     /* the maps of every cluster that has its own; a plain cluster's
      * primitives use its ancestor's (ix.groups[].maps_of) */
     for (uint32_t i = 0; i < s->cluster_count; i++) {
@@ -841,8 +908,8 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
         xform_t to_parent = xform_compose(&key, &c->local);
         xform_t from_parent = xform_compose(&local_inv, &key_inv);
         uint32_t pm = i == 0 ? 0 : ix.groups[c->parent].maps_of;
-        const xform_t *parent_to_eye = i == 0 ? &world_to_eye : &to_eye[pm];
-        const xform_t *eye_to_parent = i == 0 ? &eye_to_world : &from_eye[pm];
+        const xform_t *parent_to_eye = i == 0 ? root_to : &to_eye[pm];
+        const xform_t *eye_to_parent = i == 0 ? root_from : &from_eye[pm];
         to_eye[i] = xform_compose(parent_to_eye, &to_parent);
         from_eye[i] = xform_compose(&from_parent, eye_to_parent);
         if (xform_is_sat(&to_eye[i]) || xform_is_sat(&from_eye[i]))
@@ -897,7 +964,13 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     for (uint32_t i = s->cluster_count; i-- > 0;) {
         render_cluster_t *c = &f->clusters[i];
         prep_aabb_add_box(&c->bounds, &c->own_bounds);
-        prep_screen_rect(f, c);
+        if (world) {
+            c->screen_x0 = c->screen_y0 = 0;
+            c->screen_x1 = f->width - 1;
+            c->screen_y1 = f->height - 1;
+        } else {
+            prep_screen_rect(f, c);
+        }
         if (c->screen_x0 <= c->screen_x1 && c->screen_y0 <= c->screen_y1) {
             covered += (uint64_t)(uint32_t)(c->screen_x1 - c->screen_x0 + 1) *
                        (uint32_t)(c->screen_y1 - c->screen_y0 + 1);
@@ -913,11 +986,18 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     /* covered / pixels, rounded up, in 32 bits: covered < 2^32 * pixels
      * would need 2^32 clusters over every pixel */
     uint32_t pixels = (uint32_t)f->width * f->height;
-    uint64_t mean = (covered + pixels - 1) / pixels;
-    f->clip_coverage = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
-    mean = (rows + f->height - 1) / f->height;
-    f->clip_rows = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
-    prep_lights(s, lights, &world_to_eye, f);
+    if (!world) {
+        uint64_t mean = (covered + pixels - 1) / pixels;
+        f->clip_coverage = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
+        mean = (rows + f->height - 1) / f->height;
+        f->clip_rows = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
+    }
+    prep_lights(s, lights, root_to, f);
     *out = f;
-    return precision_check(f, &ix);
+    st = precision_check(f, &ix);
+    if (world) {
+        f->world_lost = f->precision_lost;
+        f->precision_lost = f->precision_lost || camera_lost;
+    }
+    return st;
 }

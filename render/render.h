@@ -193,6 +193,27 @@ typedef struct {
                                       of the paper's Y list for an area of
                                       one row.  The two choose how an NC
                                       clips (render/clip.h) */
+    /* options.world_space: primitives, boxes and lights stay in world
+     * coordinates (the world part), camera rays start at eye and turn by
+     * eye_to_world; no screen rectangles (every one the whole screen:
+     * render_area traces without clipping).  A frame prepared again over
+     * the frame before of the same scene (render_prepare_again) keeps that
+     * frame's world part when no keyed cluster map differs and the extent
+     * is the same: the bytes a fresh preparation writes but world_kept. */
+    uint8_t world;
+    uint8_t world_lost;            /* world: precision_lost of the world part
+                                      alone (the camera's added after) */
+    uint8_t world_kept;            /* world: 1 if this frame kept the world
+                                      part of the frame before (a count for
+                                      the trace, not part of the picture) */
+    vec3_t eye;                    /* world: the camera's position */
+    xform_t eye_to_world;          /* world: the camera's axes as columns */
+    num_t world_box_extent;        /* world: the largest coordinate magnitude
+                                      of the scene's box */
+    num_t precision_extent;        /* the extent precision_check bounds
+                                      rounding at: the box's (eye space), or
+                                      the power of two at or above the box's
+                                      and the eye's (world) */
 } render_frame_t;
 
 #define RENDER_NO_PRIM UINT32_MAX
@@ -295,6 +316,12 @@ const char *render_status_name(render_status_t status);
  * frame is used. */
 render_status_t render_prepare(const scene_t *scene, uint32_t frame_index,
                                arena_t *arena, render_frame_t **out);
+/* The same, where prev (or NULL) is the frame render_prepare or this
+ * returned RENDER_OK for at the same arena position before, of the same
+ * scene, and still lies there: with options.world_space its world part is
+ * kept when it would come out the same (render_frame_t.world). */
+render_status_t render_prepare_again(const scene_t *scene, uint32_t frame_index, arena_t *arena,
+                                     const render_frame_t *prev, render_frame_t **out);
 
 /* Arena bytes render_prepare needs for this scene, at most (frame, arrays,
  * scratch and alignment): what a unit computer must set aside.  Rendering

@@ -292,6 +292,11 @@ typedef struct {
                                counts as lost only when it is more than
                                RENDER_CHECK_LOST_STEPS/255 off there; it
                                keeps its colour (SCN_OPT_CHECK_LOST) */
+    uint8_t world_space;    /* 1: render_prepare leaves the scene in world
+                               coordinates and the camera moves the rays
+                               instead; a frame whose cluster maps did not
+                               change keeps the frame before's primitives
+                               (SCN_OPT_WORLD_SPACE, render/render.h) */
     uint16_t density_steps; /* equal steps of a density sphere's root finder,
                                SCN_MIN_DENSITY_STEPS..SCN_MAX_DENSITY_STEPS
                                (render/prim.c; render_prim_t.density_steps) */

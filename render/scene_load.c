@@ -358,6 +358,7 @@ static scene_load_status_t load_view(struct load *L, scene_t *s)
     s->options.refraction = (flags & SCN_OPT_NO_REFRACTION) == 0;
     s->options.mark_lost = (flags & SCN_OPT_MARK_LOST) != 0;
     s->options.check_lost = (flags & SCN_OPT_CHECK_LOST) != 0;
+    s->options.world_space = (flags & SCN_OPT_WORLD_SPACE) != 0;
     s->options.ambient_shadowed = (flags & SCN_OPT_AMBIENT_SHADOWED) != 0;
     s->options.shadow_tint = (flags & SCN_OPT_UNTINTED_SHADOWS) == 0;
     /* eye == look_at and up parallel to the view are refused by

@@ -733,15 +733,26 @@ static __attribute__((noinline)) rgb8_t render_pixel_impl(render_ctx_t *ctx, uin
     num_t sx = num_sub(num_from_ratio((int32_t)(2 * x + 1), f->width), NUM_ONE);
     num_t sy = num_sub(NUM_ONE, num_from_ratio((int32_t)(2 * y + 1), f->height));
     ray_t ray;
-    ray.origin = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
-    ray.dir = vec3_normalize(vec3_make(num_mul(sx, f->screen_half_w), num_mul(sy, f->screen_half_h), NUM_ONE));
+    vec3_t through = vec3_make(num_mul(sx, f->screen_half_w), num_mul(sy, f->screen_half_h), NUM_ONE);
+    ray_error_t err = {NUM_ZERO, TRACE_DIR_ROUND}; /* from the eye, exactly */
+    if (f->world) {
+        /* from the eye (its coordinates rounded to the arithmetic: a step
+         * at the extent), turned by the camera's axes (a unit vector's
+         * rounding more) */
+        ray.origin = f->eye;
+        ray.dir = vec3_normalize(xform_dir(&f->eye_to_world, through));
+        err.origin = num_ulp(f->precision_extent);
+        err.dir = num_mul_int(TRACE_DIR_ROUND, 2);
+    } else {
+        ray.origin = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+        ray.dir = vec3_normalize(through);
+    }
     ctx->pixel_lost = f->precision_lost; /* preparing lost it: every pixel */
     ctx->stats.primary++;
     /* trace_ray at depth 0, split so the camera ray's own search is
      * counted apart from the secondary rays of its shading */
     uint64_t boxes = ctx->stats.box_tests, prims = ctx->stats.prim_tests;
     hit_t hit;
-    ray_error_t err = {NUM_ZERO, TRACE_DIR_ROUND}; /* from the eye, exactly */
     const int32_t pixel[2] = {(int32_t)x, (int32_t)y};
     int found = trace_nearest(ctx, &ray, &err, NUM_ZERO, clip, clip_count,
                               by_screen ? pixel : NULL, &hit);

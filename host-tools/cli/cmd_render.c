@@ -128,6 +128,9 @@ static void render_usage(FILE *out)
             "  --check-lost     trace it again in double only to check it: a pixel counts\n"
             "                   as lost (and --mark-lost paints it) when double is more\n"
             "                   than 2/255 away; the image keeps this arithmetic's colours\n"
+            "  --world-space    the DM leaves the scene in world coordinates and the NCs\n"
+            "                   turn the camera rays: a frame whose cluster keys did not\n"
+            "                   move keeps the frame before's triangles (no screen clipping)\n"
             "  --paper          paper mode (as options { paper on }): every choice the paper\n"
             "                   made: src/trc by angle, a fixed depth (min_weight 0), --balance\n"
             "                   lines --areas HEIGHT, --ask finished, --clip lists, no\n"
@@ -207,6 +210,7 @@ enum render_opt_code {
     RENDER_OPT_FPS,
     RENDER_OPT_ESCALATE,
     RENDER_OPT_CHECK_LOST,
+    RENDER_OPT_WORLD_SPACE,
     RENDER_OPT_AUTO,
 };
 
@@ -252,6 +256,7 @@ static const struct option render_options[] = {
     {"fps", required_argument, NULL, RENDER_OPT_FPS},
     {"escalate", no_argument, NULL, RENDER_OPT_ESCALATE},
     {"check-lost", no_argument, NULL, RENDER_OPT_CHECK_LOST},
+    {"world-space", no_argument, NULL, RENDER_OPT_WORLD_SPACE},
     {"auto", no_argument, NULL, RENDER_OPT_AUTO},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
@@ -452,6 +457,9 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
     case RENDER_OPT_ESCALATE:
         o->args.flags |= LINK_RENDER_ESCALATE;
         o->board.escalate = 1;
+        return 0;
+    case RENDER_OPT_WORLD_SPACE:
+        o->scene.world_space = 1;
         return 0;
     case RENDER_OPT_CHECK_LOST:
         o->scene.check_lost = 1; /* the NCs open the double copy for it */

@@ -42,6 +42,7 @@ static int ref_usage(FILE *out, int status)
                  "  board's --escalate does; float and fixed)\n"
                  "  [--check-lost]  (trace it again in double only to check it: it counts as\n"
                  "  lost, and --mark-lost paints it, when double is more than 2/255 away)\n"
+                 "  [--world-space]  (prepare in world coordinates, as links1 render's)\n"
                  "  [--paper]  (the scene's part of paper mode, as links1 render --paper)\n"
                  "  an OUT ending in .mp4, .webm or .apng is one film of the frames, piped to\n"
                  "  ffmpeg at %d a second (as links1 render does)\n"
@@ -308,6 +309,9 @@ static int ref_parse(int argc, char **argv, struct ref_args *a)
             break;
         case REF_OPT_ESCALATE:
             a->escalate = 1;
+            break;
+        case REF_OPT_WORLD_SPACE:
+            a->scene.world_space = 1;
             break;
         case REF_OPT_CHECK_LOST:
             a->escalate = 1; /* the wide copy, to check with */

@@ -21,6 +21,7 @@ enum ref_opt_code {
     REF_OPT_PAPER,
     REF_OPT_ESCALATE,
     REF_OPT_CHECK_LOST,
+    REF_OPT_WORLD_SPACE,
     REF_OPT_ARITH, /* links1 ref only, with the two below */
     REF_OPT_FPU,
     REF_OPT_TARGET_DB,
@@ -43,6 +44,7 @@ enum ref_opt_code {
     {"paper", no_argument, NULL, REF_OPT_PAPER}, \
     {"escalate", no_argument, NULL, REF_OPT_ESCALATE}, \
     {"check-lost", no_argument, NULL, REF_OPT_CHECK_LOST}, \
+    {"world-space", no_argument, NULL, REF_OPT_WORLD_SPACE}, \
     {"help", no_argument, NULL, 'h'}
 
 #endif

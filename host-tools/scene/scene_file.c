@@ -64,6 +64,8 @@ static int scene_file_compile(const char *path, const struct scene_file_opts *o,
         s.view.flags |= SCN_OPT_MARK_LOST;
     if (o->check_lost)
         s.view.flags |= SCN_OPT_CHECK_LOST;
+    if (o->world_space)
+        s.view.flags |= SCN_OPT_WORLD_SPACE;
     if (o->refractionless >= 0)
         s.view.flags = o->refractionless ? s.view.flags | SCN_OPT_REFRACTIONLESS
                                          : s.view.flags & ~SCN_OPT_REFRACTIONLESS;
@@ -150,6 +152,7 @@ static int scene_file_bytes_any(const char *path, const struct scene_file_opts *
                          : o->no_auto_hierarchy ? "--no-auto-hierarchy"
                          : o->mark_lost ? "--mark-lost"
                          : o->check_lost ? "--check-lost"
+                         : o->world_space ? "--world-space"
                          : o->paper ? "--paper (give the text scene, or compile it with "
                                       "options { paper on })" : NULL;
     if (change) {

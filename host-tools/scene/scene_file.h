@@ -18,6 +18,8 @@ struct scene_file_opts {
     int no_auto_hierarchy; /* --no-auto-hierarchy: 1 compiles without it */
     int mark_lost;      /* --mark-lost: 1 paints pixels that lost precision */
     int check_lost;     /* --check-lost: 1 checks them in double (SCN_OPT_CHECK_LOST) */
+    int world_space;    /* --world-space: 1 prepares in world coordinates
+                           (SCN_OPT_WORLD_SPACE) */
     int paper;          /* --paper: 1 sets paper mode (sd_paper_apply) before the
                            other changes, which win over it */
     int machine;        /* the machine it is for (proto/machines.h): its limits */

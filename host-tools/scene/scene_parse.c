@@ -141,6 +141,8 @@ static void parse_options(struct parser *p)
             bit = SCN_OPT_MARK_LOST;
         } else if (lex_is_word(&p->lx, "check_lost")) {
             bit = SCN_OPT_CHECK_LOST;
+        } else if (lex_is_word(&p->lx, "world_space")) {
+            bit = SCN_OPT_WORLD_SPACE;
         } else if (lex_is_word(&p->lx, "ambient_shadowed")) {
             bit = SCN_OPT_AMBIENT_SHADOWED;
         } else if (lex_is_word(&p->lx, "shadow_tint")) {
