@@ -32,7 +32,8 @@ BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
 	tests/board/render_lights.sh tests/board/render_paper.sh tests/board/an521.sh \
 	tests/board/render_view_keys.sh tests/board/render_film.sh \
 	tests/board/farm.sh tests/board/render_maps.sh tests/board/an521_named.sh \
-	tests/board/line_latency.sh tests/board/insn_profile.sh tests/board/render_escalate.sh
+	tests/board/line_latency.sh tests/board/insn_profile.sh tests/board/render_escalate.sh \
+	tests/board/render_world_space.sh
 RENDER_FULL_TESTS := tests/board/farm_hosts.sh tests/board/farm_slurm.sh tests/sweeps/scale_same_full.sh tests/board/an521_grid_full.sh tests/board/render_grid_full.sh tests/board/render_faults_full.sh \
 	tests/board/render_faults_silent_full.sh
 
@@ -57,6 +58,8 @@ BENCHES += tests/bench/arith_cost_fit.sh
 BENCHES += tests/bench/bench_link_noise.sh
 # Issue 20: the DM's and the RC's instructions per triangle of a frame.
 BENCHES += tests/bench/bench_board_scale.sh
+# The DM in eye space and in world space (--world-space) on an animation whose camera moves.
+BENCHES += tests/bench/bench_world.sh
 
 # links1 compare --flags: precision and recall of a render's flags.
 HOST_TESTS += test_image_flags

@@ -17,7 +17,8 @@
 #
 # Usage: bash tests/bench/bench_pipeline.sh [SCENE]   (default scenes/fly.scn)
 #   BENCH_NCS (default 8), BENCH_SIZE (default the scene's), BENCH_FRAMES A:B
-#   (default every frame of the scene, from its header), BENCH_ARITH (float).
+#   (default every frame of the scene, from its header), BENCH_ARITH (float),
+#   BENCH_ARGS (more links1 render options, split at spaces: --world-space).
 set -u
 cd "$(dirname "$0")/../.."
 LINKS1=${LINKS1:-build/links1}
@@ -34,7 +35,9 @@ fi
 first=${frames%%:*} last=${frames##*:}
 size_args=()
 [ -n "${BENCH_SIZE:-}" ] && size_args=(--size "$BENCH_SIZE")
-echo "bench_pipeline: $scene frames $first..$last, $ncs NCs, $arith${BENCH_SIZE:+, $BENCH_SIZE}"
+read -r -a more_args <<<"${BENCH_ARGS:-}"
+size_args+=("${more_args[@]}")
+echo "bench_pipeline: $scene frames $first..$last, $ncs NCs, $arith${BENCH_SIZE:+, $BENCH_SIZE}${BENCH_ARGS:+, $BENCH_ARGS}"
 printf '%-6s %14s %16s %22s\n' frame "DM prepare" "NCs' frame (ms" "prepare hidden behind"
 printf '%-6s %14s %16s %22s\n' "" "(insns)" "at 1 MIPS)" "the frame before"
 prev_ms=""

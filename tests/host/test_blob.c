@@ -453,6 +453,58 @@ static void test_blob_copy_frame_only(void)
     free(buf);
 }
 
+/* A world-space scene prepared frame after frame in one block, as the
+ * DM does: a frame whose keyed cluster maps are those of the block's
+ * frame before keeps its world part (fly: only the camera and lights move;
+ * the still demo prepared twice), one whose maps moved does not (anim);
+ * either way the block holds the bytes a fresh build there writes (but
+ * the frame's world_kept), and renders the same. */
+static void test_blob_world_space_keeps(void)
+{
+    static const struct {
+        const char *name;
+        uint32_t frames[4];
+        int kept[4]; /* frame_count 4: each prepared after the one before */
+    } cases[] = {
+        {"fly", {0, 1, 2, 3}, {0, 1, 1, 1}},
+        {"demo", {0, 0, 0, 0}, {0, 1, 1, 1}},
+        {"anim", {0, 1, 2, 2}, {0, 0, 0, 1}},
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        size_t len, need;
+        render_blob_error_t err;
+        uint8_t *buf = tb_compile_flags(cases[c].name, 4, SCN_OPT_WORLD_SPACE, &len);
+        CHECK(buf != NULL);
+        if (!buf)
+            continue;
+        CHECK_EQ_INT(render_blob_bytes(buf, len, &need, &err), RENDER_BLOB_OK);
+        uint8_t *block = tb_block(need), *saved = tb_block(need);
+        render_blob_t *blob, *alone;
+        CHECK_EQ_INT(render_blob_load(buf, len, block, need, NULL, &blob, &err), RENDER_BLOB_OK);
+        for (int k = 0; blob && k < 4; k++) {
+            CHECK_EQ_INT(render_blob_prepare(blob, cases[c].frames[k], need, &err), RENDER_BLOB_OK);
+            if (!blob->frame)
+                break;
+            CHECK(blob->frame->world == 1);
+            if (blob->frame->world_kept != cases[c].kept[k])
+                printf("%s frame %u (step %d): world_kept %d, expected %d\n", cases[c].name,
+                       (unsigned)cases[c].frames[k], k, blob->frame->world_kept, cases[c].kept[k]);
+            CHECK_EQ_INT(blob->frame->world_kept, cases[c].kept[k]);
+            blob->frame->world_kept = 0;
+            memcpy(saved, block, need);
+            memset(block, 0, need);
+            CHECK_EQ_INT(render_blob_build(buf, len, cases[c].frames[k], block, need, NULL, &alone, &err),
+                         RENDER_BLOB_OK);
+            CHECK(alone && alone->bytes == ((render_blob_t *)saved)->bytes);
+            CHECK(alone && memcmp(saved, block, alone->bytes) == 0);
+            memcpy(block, saved, need); /* the DM's block again */
+        }
+        free(block);
+        free(saved);
+        free(buf);
+    }
+}
+
 int main(void)
 {
     RUN(test_relocated_copy_renders_same);
@@ -464,5 +516,6 @@ int main(void)
     RUN(test_blob_detail);
     RUN(test_blob_load_then_prepare);
     RUN(test_blob_copy_frame_only);
+    RUN(test_blob_world_space_keeps);
     return check_exit();
 }

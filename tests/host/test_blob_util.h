@@ -18,7 +18,15 @@ static const char *const tb_scenes[] = {"demo", "city", "glass", "molecule", "an
 
 /* scenes/NAME.scn compiled at its resolution divided by div (1: as
  * written); NULL (and a line saying why) on failure. */
+static inline uint8_t *tb_compile_flags(const char *name, int div, uint32_t flags, size_t *len);
+
 static inline uint8_t *tb_compile_div(const char *name, int div, size_t *len)
+{
+    return tb_compile_flags(name, div, 0, len);
+}
+
+/* The same with these SCN_OPT_ flags set besides the scene's own. */
+static inline uint8_t *tb_compile_flags(const char *name, int div, uint32_t flags, size_t *len)
 {
     char path[128], err[SD_ERR_MAX];
     struct sd_scene s;
@@ -30,6 +38,7 @@ static inline uint8_t *tb_compile_div(const char *name, int div, size_t *len)
     }
     s.view.width /= div;
     s.view.height /= div;
+    s.view.flags |= flags;
     if (sd_compile(&s, &buf, len, err, sizeof err) != 0)
         printf("cannot compile %s: %s\n", path, err);
     sd_free(&s);

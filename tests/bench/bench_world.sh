@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# bench_world.sh: the DM's preparation of an animation's frames in eye
+# space (the paper's method, the default) and in world space
+# (--world-space: the DM keeps the triangles' world form and the NCs turn
+# the camera rays), against the NCs' frame, on SPD tetra scenes whose
+# camera moves (tests/bench/make_orbit.sh N FRAMES).  Per scene and mode,
+# bench_pipeline.sh traces each frame on the board (float, BENCH_NCS NCs,
+# default 64, BENCH_SIZE default 512x480): the DM's preparation of frame 0
+# (at the upload), of the later frames (median: what an animation costs a
+# frame), and the NCs' frame on equal-speed unit computers (replay at 1
+# MIPS, median over the frames).  Guest instructions; one run each.
+# Prints a markdown table and draws BENCH_OUT/world-space.png (a temporary
+# directory unless BENCH_OUT is given).  BENCH_WORLD_TETRAS picks the
+# tetra sizes (default "7 9"), BENCH_WORLD_FRAMES the frames (default 3).
+set -u
+cd "$(dirname "$0")/../.."
+export LINKS1=${LINKS1:-build/links1} FW_DIR=${FW_DIR:-build}
+make -s --no-print-directory build/links1 build/links1-spd all >&2
+TMP=$(mktemp -d /tmp/links1-bench-world.XXXXXX)
+trap 'rm -rf "$TMP"' EXIT
+OUT=${BENCH_OUT:-$TMP}
+mkdir -p "$OUT"
+export BENCH_NCS=${BENCH_NCS:-64} BENCH_SIZE=${BENCH_SIZE:-512x480}
+frames=${BENCH_WORLD_FRAMES:-3}
+median() { sort -n | awk '{ v[NR] = $1 } END { if (NR) print (NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2) }'; }
+echo "bench_world: SPD tetra with a moving camera, $frames frames, float, $BENCH_NCS NCs, $BENCH_SIZE"
+echo
+echo "| scene | triangles | preparation | DM frame 0 (upload) | DM later frame (median) | per triangle | NCs' frame at 1 MIPS (median, M insns) | DM later frame / NCs' frame |"
+echo "|---|---|---|---|---|---|---|---|"
+: >"$TMP/world.dat"
+for n in ${BENCH_WORLD_TETRAS:-7 9}; do
+    scn=$TMP/orbit$n.scn
+    bash tests/bench/make_orbit.sh "$n" "$frames" "$scn" 2>/dev/null || { echo "bench_world: make_orbit.sh $n failed"; exit 1; }
+    tris=$((4 ** n))
+    for mode in eye world; do
+        args=""
+        [ $mode = world ] && args=--world-space
+        log=$TMP/$n-$mode.log
+        BENCH_ARGS=$args bash tests/bench/bench_pipeline.sh "$scn" >"$log" 2>&1 ||
+            { echo "bench_world: tetra $n $mode: $(tail -n 1 "$log")"; exit 1; }
+        rows=$(awk '$1 ~ /^[0-9]+$/ && NF >= 3' "$log")
+        first=$(echo "$rows" | awk 'NR == 1 { print $2 }')
+        later=$(echo "$rows" | awk 'NR > 1 { print $2 }' | median)
+        ms=$(echo "$rows" | awk '{ print $3 }' | median)
+        [ -n "$first" ] && [ -n "$later" ] && [ -n "$ms" ] || { echo "bench_world: tetra $n $mode: no numbers"; cat "$log"; exit 1; }
+        awk -v n="$n" -v t="$tris" -v m="$mode" -v f="$first" -v l="$later" -v ms="$ms" 'BEGIN {
+            printf "| tetra %d | %d | %s | %.1f M | %.2f M | %.1f | %.1f | %.3f |\n", n, t, m == "eye" ? "eye space (default)" : "world space (--world-space)", f / 1e6, l / 1e6, l / t, ms / 1e3, l / (ms * 1e3) }'
+        echo "tetra$n-$mode $later $(awk -v ms="$ms" 'BEGIN { print ms * 1000 }')" >>"$TMP/world.dat"
+    done
+done
+gnuplot <<GP || { echo "bench_world: gnuplot failed" >&2; exit 1; }
+set terminal pngcairo size 800,480
+set output "$OUT/world-space.png"
+set title "An animation's later frame on the board: the DM's preparation against the NCs' frame\n(SPD tetra, moving camera, float, $BENCH_NCS NCs, $BENCH_SIZE; equal-speed unit computers)"
+set ylabel "guest instructions"
+set logscale y; set yrange [1e5:*]; set grid ytics
+set style data histograms; set style histogram clustered gap 1; set style fill solid 0.8 border -1
+set boxwidth 0.9; set xtics rotate by -20
+plot "$TMP/world.dat" using 2:xtic(1) title "DM preparation of a later frame", \
+     "" using 3 title "NCs' frame (one NC's share, replay)"
+GP
+echo
+echo "chart: $OUT/world-space.png"

@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# --world-space (options { world_space on }, render_frame_t.world): the DM
+# leaves the scene in world coordinates and the NCs turn the camera rays.
+# The board's frames equal the host build's bit for bit in float and fixed,
+# over an animation whose camera and lights move (fly.scn: every frame
+# after the first keeps the world part) and one whose clusters move
+# (anim.scn: none does); the double build's image is the eye-space one's
+# within 1/255 on every pixel; and on the board a later frame's
+# preparation keeps the world part: on SPD tetra 5 with a moving camera the
+# DM's preprocessing of frame 2 (the trace's dm_prepare) is under a tenth
+# of the eye-space preprocessing of the same frame.
+. "$(dirname "$0")/lib.sh"
+. "$(dirname "$0")/render_lib.sh"
+board_ready render_world_fly_float render_world_fly_fixed render_world_anim_float \
+    render_world_double_is_eye render_world_dm_keeps || exit 0
+SIZE=96x72
+
+# world_frames NAME SCENE ARITH FRAMES: the board's world-space frames
+# A..B equal links1 ref's, frame by frame (one PASS or FAIL)
+world_frames() {
+    local name=$1 scene=$2 a=$3 frames=$4 ref=$RENDER_TMP/$1-host.ppm out=$RENDER_TMP/$1.ppm
+    local first=${frames%%:*} last=${frames##*:} bad=""
+    "$LINKS1" ref "$scene" --arith "$a" --size $SIZE --world-space --frames "$frames" -o "$ref" \
+        >"$ref.log" 2>&1 || { echo "FAIL $name: links1 ref failed: $(tail -n 1 "$ref.log")"; return; }
+    render_board "$name" "$out" "$scene" -o "$out" --arith "$a" --ncs 4 --size $SIZE \
+        --world-space --frames "$frames" || return 0
+    for ((f = first; f <= last; f++)); do
+        local r="${ref%.ppm}-$(printf %04d $f).ppm" o="${out%.ppm}-$(printf %04d $f).ppm"
+        [ -s "$r" ] && [ -s "$o" ] && cmp -s "$r" "$o" || bad="$bad $f"
+    done
+    if [ -z "$bad" ]; then
+        echo "PASS $name"
+    else
+        echo "FAIL $name: frames$bad differ from the host build's (or are missing)"
+    fi
+}
+
+world_frames render_world_fly_float scenes/fly.scn float 0:3
+world_frames render_world_fly_fixed scenes/fly.scn fixed 0:2
+world_frames render_world_anim_float scenes/anim.scn float 0:2
+
+# double: the world-space image is the eye-space one's within 1/255
+eye=$RENDER_TMP/eye-double.png world=$RENDER_TMP/world-double.png
+"$LINKS1" ref scenes/demo.scn --arith double --size 160x120 -o "$eye" >/dev/null 2>&1
+"$LINKS1" ref scenes/demo.scn --arith double --size 160x120 --world-space -o "$world" >/dev/null 2>&1
+if "$LINKS1" compare "$eye" "$world" --within 1 --min-fraction 1 >"$RENDER_TMP/cmp.log" 2>&1; then
+    echo "PASS render_world_double_is_eye"
+else
+    echo "FAIL render_world_double_is_eye: $(grep -m1 'within' "$RENDER_TMP/cmp.log")"
+fi
+
+# the DM's preprocessing of a later frame, eye space against world space
+orbit=$RENDER_TMP/orbit.scn
+bash tests/bench/make_orbit.sh 5 3 "$orbit"
+prep() { # MODE-ARGS...: dm_prepare of frame 2 (the upload prepared frame 0 in the same block)
+    local tr=$RENDER_TMP/orbit-$#.trace
+    "$LINKS1" render "$orbit" --frame 2 --ncs 2 --size 64x48 --quiet --trace "$tr" \
+        -o "$RENDER_TMP/orbit-$#.ppm" "$@" >/dev/null 2>&1 &&
+        awk '$1 == "dm_prepare" { print $2 }' "$tr"
+}
+eye_insns=$(prep)
+world_insns=$(prep --world-space)
+if [ -n "$eye_insns" ] && [ -n "$world_insns" ] && [ "$eye_insns" -gt 0 ] &&
+    [ $((world_insns * 10)) -lt "$eye_insns" ]; then
+    echo "PASS render_world_dm_keeps ($world_insns against $eye_insns instructions)"
+else
+    echo "FAIL render_world_dm_keeps: frame 2's preparation ${world_insns:-none} instructions in world space against ${eye_insns:-none} in eye space (want under a tenth)"
+fi
