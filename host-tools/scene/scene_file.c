@@ -22,6 +22,7 @@ void scene_file_opts_init(struct scene_file_opts *o)
     o->no_auto_hierarchy = 0;
     o->mark_lost = 0;
     o->check_lost = 0;
+    o->world_space = 0;
     o->paper = 0;
     o->machine = MACHINE_VIRT;
 }

@@ -51,7 +51,7 @@ fi
 
 # the DM's preprocessing of a later frame, eye space against world space
 orbit=$RENDER_TMP/orbit.scn
-bash tests/bench/make_orbit.sh 5 3 "$orbit"
+bash tests/bench/make_spin.sh 5 3 "$orbit" camera
 prep() { # MODE-ARGS...: dm_prepare of frame 2 (the upload prepared frame 0 in the same block)
     local tr=$RENDER_TMP/orbit-$#.trace
     "$LINKS1" render "$orbit" --frame 2 --ncs 2 --size 64x48 --quiet --trace "$tr" \
