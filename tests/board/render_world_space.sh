@@ -4,26 +4,27 @@
 # The board's frames equal the host build's bit for bit in float and fixed,
 # over an animation whose camera and lights move (fly.scn: every frame
 # after the first keeps the world part) and one whose clusters move
-# (anim.scn: none does); the double build's image is the eye-space one's
+# (anim.scn: none does), with escalation too; the double build's image is the eye-space one's
 # within 1/255 on every pixel; and on the board a later frame's
 # preparation keeps the world part: on SPD tetra 5 with a moving camera the
 # DM's preprocessing of frame 2 (the trace's dm_prepare) is under a tenth
 # of the eye-space preprocessing of the same frame.
 . "$(dirname "$0")/lib.sh"
 . "$(dirname "$0")/render_lib.sh"
-board_ready render_world_fly_float render_world_fly_fixed render_world_anim_float \
+board_ready render_world_fly_float render_world_fly_fixed render_world_anim_float render_world_fly_escalate \
     render_world_double_is_eye render_world_dm_keeps || exit 0
 SIZE=96x72
 
-# world_frames NAME SCENE ARITH FRAMES: the board's world-space frames
-# A..B equal links1 ref's, frame by frame (one PASS or FAIL)
+# world_frames NAME SCENE ARITH FRAMES [ARGS...]: the board's world-space
+# frames A..B (with ARGS) equal links1 ref's, frame by frame (one PASS or FAIL)
 world_frames() {
     local name=$1 scene=$2 a=$3 frames=$4 ref=$RENDER_TMP/$1-host.ppm out=$RENDER_TMP/$1.ppm
     local first=${frames%%:*} last=${frames##*:} bad=""
+    shift 4
     "$LINKS1" ref "$scene" --arith "$a" --size $SIZE --world-space --frames "$frames" -o "$ref" \
-        >"$ref.log" 2>&1 || { echo "FAIL $name: links1 ref failed: $(tail -n 1 "$ref.log")"; return; }
+        "$@" >"$ref.log" 2>&1 || { echo "FAIL $name: links1 ref failed: $(tail -n 1 "$ref.log")"; return; }
     render_board "$name" "$out" "$scene" -o "$out" --arith "$a" --ncs 4 --size $SIZE \
-        --world-space --frames "$frames" || return 0
+        --world-space --frames "$frames" "$@" || return 0
     for ((f = first; f <= last; f++)); do
         local r="${ref%.ppm}-$(printf %04d $f).ppm" o="${out%.ppm}-$(printf %04d $f).ppm"
         [ -s "$r" ] && [ -s "$o" ] && cmp -s "$r" "$o" || bad="$bad $f"
@@ -38,6 +39,8 @@ world_frames() {
 world_frames render_world_fly_float scenes/fly.scn float 0:3
 world_frames render_world_fly_fixed scenes/fly.scn fixed 0:2
 world_frames render_world_anim_float scenes/anim.scn float 0:2
+# escalation: the DM's wide blob keeps its world part the same way
+world_frames render_world_fly_escalate scenes/fly.scn float 0:2 --escalate
 
 # double: the world-space image is the eye-space one's within 1/255
 eye=$RENDER_TMP/eye-double.png world=$RENDER_TMP/world-double.png
