@@ -138,7 +138,7 @@ num_t precision_map_error(const xform_t *to_eye, const xform_t *from_eye, const 
 /* A smooth triangle's normal, alpha n0 + beta n1 + gamma n2, turns by at
  * most |n1 - n0| / height1 + |n2 - n0| / height2 per unit moved (h1, h2:
  * the heights' absolute values). */
-static num_t precision_triangle_curvature(const render_prim_t *p, num_t h1, num_t h2)
+static inline __attribute__((always_inline)) num_t precision_triangle_curvature(const render_prim_t *p, num_t h1, num_t h2)
 {
     if (!p->smooth)
         return NUM_ZERO;
@@ -200,14 +200,13 @@ num_t precision_world_extent(num_t box, vec3_t eye)
     return p;
 }
 
-render_status_t precision_check(render_frame_t *f, const scene_index_t *ix)
+precision_pass_t precision_check_begin(render_frame_t *f)
 {
+    precision_pass_t pass;
     f->span = NUM_ZERO;
-    if (f->prim_count == 0)
-        return RENDER_OK;
     const aabb_t *b = &f->clusters[0].bounds;
     num_t extent = NUM_ZERO;
-    for (int axis = 0; axis < 3; axis++) {
+    for (int axis = 0; f->prim_count && axis < 3; axis++) {
         num_t lo = vec3_get(b->lo, axis), hi = vec3_get(b->hi, axis);
         f->span = num_max(f->span, num_sub(hi, lo));
         extent = num_max(extent, num_max(num_abs(lo), num_abs(hi)));
@@ -219,74 +218,108 @@ render_status_t precision_check(render_frame_t *f, const scene_index_t *ix)
         extent = precision_world_extent(extent, f->eye);
     }
     f->precision_extent = extent;
-    num_t lost_tol = PRECISION_LOST_TOL(f->scene), acne_tol = PRECISION_ACNE_TOL(f->scene);
+    pass.extent = extent;
+    pass.lost_tol = PRECISION_LOST_TOL(f->scene);
+    pass.acne_tol = PRECISION_ACNE_TOL(f->scene);
     /* A triangle's detail (precision_detail_triangle): the steps at its
      * box's reach are at most those at the scene's extent, which holds
      * every box, so a smaller height not under the latter is not under the
      * former and needs no reach; but a box with a saturated value (the
      * flag) may have left the extent short. */
-    int detail_fast = !f->precision_lost;
-    num_t detail_at_extent = num_mul_int(num_ulp(extent), RENDER_MIN_DETAIL_STEPS);
-    num_t point = num_mul_int(num_ulp(extent), 4);
-    for (uint32_t i = 0; i < f->prim_count; i++) {
-        render_prim_t *p = &f->prims[i];
-        if (p->kind == SCENE_PRIM_TRIANGLE) {
-            /* no to_local map, and its hit error is left out: two
-             * triangles hit at one distance are most often a mesh's faces
-             * meeting at an edge.  So none of the estimates below (the DM
-             * would make them for every triangle of every frame). */
-            p->hit_error = NUM_ZERO;
-            p->imprecise = 0;
-            p->scale = NUM_ZERO;
-            num_t h1 = num_abs(p->height1), h2 = num_abs(p->height2);
-            if (!detail_fast || !num_ge(num_min(h1, h2), detail_at_extent))
-                precision_detail_triangle(f, i);
-            precision_triangle_edge_error(p, point, h1, h2);
-            p->uv_error = precision_triangle_uv_error(p, ix->uv_spread[i]);
-            p->curvature = precision_triangle_curvature(p, h1, h2);
-            continue;
-        }
-        num_t least, local, rows[2], worst = precision_hit_error(p, extent, &least, &local, rows);
-        /* render_prepare left the cluster map's error in hit_error */
-        num_t map = p->hit_error;
-        worst = num_add(worst, map);
-        /* the surface moved by the map, in local units: a consistent move,
-         * no acne, but the decisions and map coordinates see it */
-        local = num_add(local, num_mul(map, rows[0]));
-        if (num_is_sat(worst) || num_is_sat(local))
-            worst = local = NUM_FAR;
-        p->hit_error = worst;
-        p->imprecise = num_gt(worst, lost_tol) || num_gt(least, acne_tol);
-        p->scale = rows[0];
-        /* map coordinates (render/prim.c): a box face's are (q + 1) / 2 of
-         * a local coordinate q, an ellipsoid's a pseudo-angle / 4 and
-         * (n.y + 1) / 2 of its unit sphere's point, a density sphere's come
-         * from its normal (not estimated) */
-        /* the normal's curvature: an ellipsoid's largest, at the end of
-         * its longest axis, is a / c^2 for radii a >= c (rows 1/c, 1/a) */
-        p->curvature = NUM_ZERO;
-        switch (p->kind) {
-        case SCENE_PRIM_BOX:
-            p->uv_error = num_mul(local, NUM_HALF);
-            p->edge_error[0] = local;
-            break;
-        case SCENE_PRIM_ELLIPSOID:
-            p->uv_error = local;
-            p->edge_error[0] = local;
-            p->curvature = num_div(num_mul(rows[0], rows[0]), rows[1]);
-            if (num_is_sat(p->curvature))
-                p->curvature = NUM_FAR;
-            break;
-        default:
-            p->uv_error = NUM_ZERO;
-            p->curvature = precision_density_curvature(p, rows[0]);
-            precision_density_excess_error(p, local);
-            break;
-        }
+    pass.detail_fast = !f->precision_lost;
+    pass.detail_at_extent = num_mul_int(num_ulp(extent), RENDER_MIN_DETAIL_STEPS);
+    pass.point = num_mul_int(num_ulp(extent), 4);
+    return pass;
+}
+
+/* Inline: precision_check_prims runs it for every primitive of every
+ * frame. */
+static inline __attribute__((always_inline)) void precision_check_one(render_frame_t *f, uint32_t i, const scene_index_t *ix,
+                                       const precision_pass_t *pass)
+{
+    render_prim_t *p = &f->prims[i];
+    if (p->kind == SCENE_PRIM_TRIANGLE) {
+        /* no to_local map, and its hit error is left out: two
+         * triangles hit at one distance are most often a mesh's faces
+         * meeting at an edge.  So none of the estimates below (the DM
+         * would make them for every triangle of every frame). */
+        p->hit_error = NUM_ZERO;
+        p->imprecise = 0;
+        p->scale = NUM_ZERO;
+        num_t h1 = num_abs(p->height1), h2 = num_abs(p->height2);
+        if (!pass->detail_fast || !num_ge(num_min(h1, h2), pass->detail_at_extent))
+            precision_detail_triangle(f, i);
+        precision_triangle_edge_error(p, pass->point, h1, h2);
+        p->uv_error = precision_triangle_uv_error(p, ix->uv_spread[i]);
+        p->curvature = precision_triangle_curvature(p, h1, h2);
+        return;
     }
+    num_t least, local, rows[2], worst = precision_hit_error(p, pass->extent, &least, &local, rows);
+    /* render_prepare left the cluster map's error in hit_error */
+    num_t map = p->hit_error;
+    worst = num_add(worst, map);
+    /* the surface moved by the map, in local units: a consistent move,
+     * no acne, but the decisions and map coordinates see it */
+    local = num_add(local, num_mul(map, rows[0]));
+    if (num_is_sat(worst) || num_is_sat(local))
+        worst = local = NUM_FAR;
+    p->hit_error = worst;
+    p->imprecise = num_gt(worst, pass->lost_tol) || num_gt(least, pass->acne_tol);
+    p->scale = rows[0];
+    /* map coordinates (render/prim.c): a box face's are (q + 1) / 2 of
+     * a local coordinate q, an ellipsoid's a pseudo-angle / 4 and
+     * (n.y + 1) / 2 of its unit sphere's point, a density sphere's come
+     * from its normal (not estimated) */
+    /* the normal's curvature: an ellipsoid's largest, at the end of
+     * its longest axis, is a / c^2 for radii a >= c (rows 1/c, 1/a) */
+    p->curvature = NUM_ZERO;
+    switch (p->kind) {
+    case SCENE_PRIM_BOX:
+        p->uv_error = num_mul(local, NUM_HALF);
+        p->edge_error[0] = local;
+        break;
+    case SCENE_PRIM_ELLIPSOID:
+        p->uv_error = local;
+        p->edge_error[0] = local;
+        p->curvature = num_div(num_mul(rows[0], rows[0]), rows[1]);
+        if (num_is_sat(p->curvature))
+            p->curvature = NUM_FAR;
+        break;
+    default:
+        p->uv_error = NUM_ZERO;
+        p->curvature = precision_density_curvature(p, rows[0]);
+        precision_density_excess_error(p, local);
+        break;
+    }
+}
+
+void precision_check_prims(render_frame_t *f, const scene_index_t *ix, const precision_pass_t *begun,
+                           const uint32_t *list, uint32_t count)
+{
+    /* a copy whose address no call takes: its fields stay in registers */
+    const precision_pass_t pass = *begun;
+    if (!list) /* every primitive: precision_check */
+        for (uint32_t i = 0; i < count; i++)
+            precision_check_one(f, i, ix, &pass);
+    else
+        for (uint32_t k = 0; k < count; k++)
+            precision_check_one(f, list[k], ix, &pass);
+}
+
+render_status_t precision_check_end(const render_frame_t *f)
+{
+    if (f->prim_count == 0)
+        return RENDER_OK;
     if (num_lt(f->span, PRECISION_MIN_SPAN(f->scene)))
         return RENDER_ERR_EXTENT;
     return f->detail_prim != RENDER_NO_PRIM ? RENDER_ERR_DETAIL : RENDER_OK;
+}
+
+render_status_t precision_check(render_frame_t *f, const scene_index_t *ix)
+{
+    const precision_pass_t pass = precision_check_begin(f);
+    precision_check_prims(f, ix, &pass, NULL, f->prim_count);
+    return precision_check_end(f);
 }
 
 /* The largest |coordinate| of a box. */

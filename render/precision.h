@@ -32,6 +32,21 @@ num_t precision_map_error(const xform_t *to_eye, const xform_t *from_eye, const 
  * the loader's or its own). */
 render_status_t precision_check(render_frame_t *f, const scene_index_t *ix);
 
+/* precision_check in three parts, for a frame that prepares only some of
+ * its primitives again (render_prepare_again): _begin sets the span and
+ * the extent from the root's box (and f->precision_lost when they
+ * saturate) and what every primitive's check needs; _prims checks the
+ * count primitives list names (0 to count - 1 when list is NULL), once
+ * render_prepare has mapped them; _end is precision_check's status. */
+typedef struct {
+    num_t extent, lost_tol, acne_tol, detail_at_extent, point;
+    int detail_fast;
+} precision_pass_t;
+precision_pass_t precision_check_begin(render_frame_t *f);
+void precision_check_prims(render_frame_t *f, const scene_index_t *ix, const precision_pass_t *pass,
+                           const uint32_t *list, uint32_t count);
+render_status_t precision_check_end(const render_frame_t *f);
+
 /* A world-space frame's extent (render_frame_t.precision_extent): the
  * power of two at or above the box's largest coordinate magnitude and the
  * eye's, so that a camera moving within it leaves every bound the same. */

@@ -370,7 +370,7 @@ static render_status_t prep_check_tree(const scene_t *s)
 /* Eye-space form of one primitive; to_eye/from_eye map its cluster; pad
  * grows its box (RENDER_BOUNDS_PAD_VALUE scaled to the scene: the caller
  * scales it once a frame, not once a primitive). */
-static void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame_t *f, const xform_t *to_eye,
+static inline __attribute__((always_inline)) void prep_prim(const scene_prim_t *sp, uint32_t index, const render_frame_t *f, const xform_t *to_eye,
                       const xform_t *from_eye, num_t pad, const scene_index_t *ix,
                       scene_normals_t *normals, render_prim_t *p)
 {
@@ -766,8 +766,10 @@ size_t render_prepare_frame_bytes_layout(const scene_t *s, const render_layout_t
     size_t normals = s->normals_count ? s->normals_count : 1;
     size_t n = lay->frame + lay->frame_cluster * (size_t)s->cluster_count + lay->frame_prim * prims +
                lay->num * comps;
-    size_t scratch = 2 * lay->xform * (size_t)s->cluster_count + lay->normals * normals;
-    return n + scratch + 7 * ARENA_MAX_ALIGN; /* 7 allocations, each padded at most that */
+    /* (and a byte a cluster in world space: which maps moved) */
+    size_t scratch = 2 * lay->xform * (size_t)s->cluster_count + lay->normals * normals +
+                     (s->options.world_space ? s->cluster_count : 0);
+    return n + scratch + 8 * ARENA_MAX_ALIGN; /* 8 allocations, each padded at most that */
 }
 
 size_t render_prepare_bytes_layout(const scene_t *s, const render_layout_t *lay)
@@ -780,6 +782,215 @@ size_t render_prepare_bytes_layout(const scene_t *s, const render_layout_t *lay)
 size_t render_prepare_bytes(const scene_t *s)
 {
     return render_prepare_bytes_layout(s, &render_layout_native);
+}
+
+/* moved[] of render_prepare_again, a byte a cluster: its maps moved (a
+ * cluster with maps of its own, prep_cluster_maps), its box moved (its
+ * primitives' or a descendant's: prep_world_moved). */
+#define PREP_MAPS_MOVED 1u
+#define PREP_BOX_MOVED 2u
+
+/* The maps of every cluster that has its own (to_eye[i], from_eye[i]
+ * for ix->groups[i].maps_of == i), composed from root_to and root_from;
+ * f->precision_lost set when one saturates.  With before (a frame index):
+ * moved[i] set for each of them whose map differs from its map at that
+ * frame, its own key's or an ancestor's. */
+static render_status_t prep_cluster_maps(const scene_t *s, const scene_index_t *ix, uint32_t frame_index,
+                                         const xform_t *root_to, const xform_t *root_from,
+                                         const uint32_t *before, uint8_t *moved, xform_t *to_eye,
+                                         xform_t *from_eye, render_frame_t *f)
+{
+    for (uint32_t i = 0; i < s->cluster_count; i++) {
+        if (ix->groups[i].maps_of != i)
+            continue;
+        const scene_cluster_t *c = &s->clusters[i];
+        xform_t key = prep_key_xform(s, c, frame_index);
+        xform_t key_inv, local_inv;
+        render_status_t st = precision_invert(&key, &key_inv);
+        if (st == RENDER_OK)
+            st = precision_invert(&c->local, &local_inv);
+        if (st != RENDER_OK)
+            return st;
+        xform_t to_parent = xform_compose(&key, &c->local);
+        xform_t from_parent = xform_compose(&local_inv, &key_inv);
+        uint32_t pm = i == 0 ? 0 : ix->groups[c->parent].maps_of;
+        const xform_t *parent_to_eye = i == 0 ? root_to : &to_eye[pm];
+        const xform_t *eye_to_parent = i == 0 ? root_from : &from_eye[pm];
+        to_eye[i] = xform_compose(parent_to_eye, &to_parent);
+        from_eye[i] = xform_compose(&from_parent, eye_to_parent);
+        if (xform_is_sat(&to_eye[i]) || xform_is_sat(&from_eye[i]))
+            f->precision_lost = 1;
+        if (before) {
+            moved[i] = i > 0 ? moved[pm] & PREP_MAPS_MOVED : 0;
+            if (!moved[i] && c->key_count) {
+                xform_t was = prep_key_xform(s, c, *before);
+                moved[i] = memcmp(&was, &key, sizeof key) != 0 ? PREP_MAPS_MOVED : 0;
+            }
+        }
+    }
+    return RENDER_OK;
+}
+
+/* Primitive i of the frame from its cluster's maps (f->prims[i] zeroed
+ * before): its form, its map's error, the saturation flag, and (but a
+ * triangle, precision_check's) its detail. */
+static inline __attribute__((always_inline)) void prep_one_prim(const scene_t *s, uint32_t i, render_frame_t *f, const scene_index_t *ix,
+                          const xform_t *to_eye, const xform_t *from_eye, num_t pad,
+                          scene_normals_t *normals)
+{
+    const scene_prim_t *sp = &s->prims[i];
+    uint32_t m = ix->groups[sp->cluster].maps_of;
+    prep_prim(sp, i, f, &to_eye[m], &from_eye[m], pad, ix, normals, &f->prims[i]);
+    /* the error of the cluster's inverse map, for precision_check (a
+     * triangle's vertices are mapped forward: none, and precision_check
+     * sets its 0) */
+    if (sp->kind != SCENE_PRIM_TRIANGLE)
+        f->prims[i].hit_error = precision_map_error(&to_eye[m], &from_eye[m], &f->prims[i].bounds);
+    if (prep_aabb_is_sat(&f->prims[i].bounds))
+        f->precision_lost = 1;
+    if (sp->kind != SCENE_PRIM_TRIANGLE) /* a triangle's: precision_check */
+        precision_detail(f, i, &to_eye[m]);
+}
+
+/* Cluster i's lists (the index's) and the box of its own primitives,
+ * grown in rising primitive index as ever; its tree box and rectangle
+ * emptied for prep_cluster_tree. */
+static inline __attribute__((always_inline)) void prep_own_bounds(render_frame_t *f, const scene_index_t *ix, uint32_t i)
+{
+    render_cluster_t *c = &f->clusters[i];
+    const scene_group_t *g = &ix->groups[i];
+    c->first_child = g->first_child;
+    c->child_count = g->child_count;
+    c->first_prim = g->first_prim;
+    c->prim_count = g->prim_count;
+    c->own_bounds = prep_aabb_empty();
+    for (uint32_t k = 0, have = 0; k < g->prim_count; k++) {
+        /* prep_aabb_add_box without asking of own_bounds what have
+         * says: a box grown by one not empty is not empty */
+        const aabb_t *o = &f->prims[ix->prim_list[g->first_prim + k]].bounds;
+        if (prep_aabb_is_empty(o))
+            continue;
+        if (have)
+            prep_aabb_grow(&c->own_bounds, o);
+        else
+            c->own_bounds = *o;
+        have = 1;
+    }
+    c->bounds = prep_aabb_empty();
+    c->tree_x0 = c->tree_y0 = 1;
+    c->tree_x1 = c->tree_y1 = 0;
+}
+
+/* Every cluster's box over its subtree, its screen rectangle (world: the
+ * whole screen) and tree rectangle, from the own boxes (prep_own_bounds
+ * emptied the others); the frame's clip coverage (eye space). */
+static void prep_cluster_tree(const scene_t *s, render_frame_t *f, int world)
+{
+    /* children have larger indices than parents: one backward pass */
+    uint64_t covered = 0, rows = 0; /* pixels, rows under the clusters' own rectangles */
+    for (uint32_t i = s->cluster_count; i-- > 0;) {
+        render_cluster_t *c = &f->clusters[i];
+        prep_aabb_add_box(&c->bounds, &c->own_bounds);
+        if (world) {
+            c->screen_x0 = c->screen_y0 = 0;
+            c->screen_x1 = f->width - 1;
+            c->screen_y1 = f->height - 1;
+        } else {
+            prep_screen_rect(f, c);
+        }
+        if (c->screen_x0 <= c->screen_x1 && c->screen_y0 <= c->screen_y1) {
+            covered += (uint64_t)(uint32_t)(c->screen_x1 - c->screen_x0 + 1) *
+                       (uint32_t)(c->screen_y1 - c->screen_y0 + 1);
+            rows += (uint32_t)(c->screen_y1 - c->screen_y0 + 1);
+        }
+        prep_tree_rect_add(c, c->screen_x0, c->screen_y0, c->screen_x1, c->screen_y1);
+        if (i > 0) {
+            render_cluster_t *p = &f->clusters[s->clusters[i].parent];
+            prep_aabb_add_box(&p->bounds, &c->bounds);
+            prep_tree_rect_add(p, c->tree_x0, c->tree_y0, c->tree_x1, c->tree_y1);
+        }
+    }
+    /* covered / pixels, rounded up, in 32 bits: covered < 2^32 * pixels
+     * would need 2^32 clusters over every pixel */
+    uint32_t pixels = (uint32_t)f->width * f->height;
+    if (!world) {
+        uint64_t mean = (covered + pixels - 1) / pixels;
+        f->clip_coverage = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
+        mean = (rows + f->height - 1) / f->height;
+        f->clip_rows = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
+    }
+}
+
+/* A world-space frame over the frame before (old, at the same address,
+ * its world part whole: no saturation, no detail refused), when at most
+ * half the primitives moved: only the primitives of clusters whose maps
+ * moved are prepared again, then the boxes of those clusters and their
+ * ancestors, and the precision checks of the primitives prepared.  Sets
+ * f->world_kept = 2 and returns precision_check's status when the extent
+ * came out as old's; leaves world_kept 0 otherwise (more moved, the extent
+ * moved or a bound saturated), and the caller prepares the frame whole.
+ * Every box is grown in the order a whole preparation grows it, so the
+ * bytes are the same. */
+static __attribute__((noinline)) render_status_t prep_world_moved(const scene_t *s, render_frame_t *f, const scene_index_t *ix,
+                                        const render_frame_t *old, uint8_t *moved,
+                                        const xform_t *to_eye, const xform_t *from_eye, num_t pad,
+                                        scene_normals_t *normals)
+{
+    /* which clusters' primitives moved (their maps' group), and how many */
+    uint64_t count = 0;
+    for (uint32_t c = 0; c < s->cluster_count; c++) {
+        uint32_t m = ix->groups[c].maps_of;
+        int mv = moved[m] & PREP_MAPS_MOVED; /* m <= c: set already */
+        moved[c] = mv ? (uint8_t)((m == c ? PREP_MAPS_MOVED : 0) | PREP_BOX_MOVED) : 0;
+        if (mv)
+            count += ix->groups[c].prim_count;
+    }
+    if (2 * count > s->prim_count) /* cheaper whole */
+        return RENDER_OK;
+    f->detail_prim = RENDER_NO_PRIM;
+    for (uint32_t c = 0; c < s->cluster_count; c++) {
+        if (!(moved[c] & PREP_BOX_MOVED))
+            continue;
+        const scene_group_t *g = &ix->groups[c];
+        for (uint32_t k = 0; k < g->prim_count; k++) {
+            uint32_t i = ix->prim_list[g->first_prim + k];
+            words_zero(&f->prims[i], sizeof f->prims[i]);
+            prep_one_prim(s, i, f, ix, to_eye, from_eye, pad, normals);
+        }
+        prep_own_bounds(f, ix, c);
+    }
+    if (f->precision_lost)
+        return RENDER_OK;
+    /* the boxes of the moved clusters and their ancestors, children first
+     * (larger indices), each grown as prep_cluster_tree grows it: by its
+     * children in falling index, then by its own primitives' box; its
+     * rectangles the whole screen's, as prep_cluster_tree makes them */
+    for (uint32_t c = s->cluster_count; c-- > 0;) {
+        if (!(moved[c] & PREP_BOX_MOVED))
+            continue;
+        render_cluster_t *cl = &f->clusters[c];
+        const scene_group_t *g = &ix->groups[c];
+        cl->bounds = prep_aabb_empty();
+        for (uint32_t k = g->child_count; k-- > 0;)
+            prep_aabb_add_box(&cl->bounds, &f->clusters[ix->child_list[g->first_child + k]].bounds);
+        prep_aabb_add_box(&cl->bounds, &cl->own_bounds);
+        cl->tree_x0 = cl->tree_y0 = 0;
+        cl->tree_x1 = f->width - 1;
+        cl->tree_y1 = f->height - 1;
+        if (c > 0)
+            moved[s->clusters[c].parent] |= PREP_BOX_MOVED;
+    }
+    const precision_pass_t pass = precision_check_begin(f);
+    if (f->precision_lost || memcmp(&f->precision_extent, &old->precision_extent, sizeof(num_t)) != 0)
+        return RENDER_OK;
+    for (uint32_t c = 0; c < s->cluster_count; c++) {
+        if (!(moved[ix->groups[c].maps_of] & PREP_MAPS_MOVED)) /* not prepared again */
+            continue;
+        const scene_group_t *g = &ix->groups[c];
+        precision_check_prims(f, ix, &pass, &ix->prim_list[g->first_prim], g->prim_count);
+    }
+    f->world_kept = 2;
+    return precision_check_end(f);
 }
 
 render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *arena, render_frame_t **out)
@@ -854,7 +1065,11 @@ render_status_t render_prepare_again(const scene_t *s, uint32_t frame_index, are
      * copy of its own */
     scene_normals_t *normals =
         ARENA_NEW_ARRAY_RAW(arena, scene_normals_t, s->normals_count ? s->normals_count : 1);
-    if (!to_eye || !from_eye || !normals)
+    /* world: which maps moved since the frame before (allocated whether
+     * or not it is asked, so that the block's high water is a fresh
+     * preparation's) */
+    uint8_t *moved = world ? ARENA_NEW_ARRAY_RAW(arena, uint8_t, s->cluster_count) : NULL;
+    if (!to_eye || !from_eye || !normals || (world && !moved))
         return RENDER_ERR_ARENA;
 
     xform_t world_to_eye, eye_to_world;
@@ -890,108 +1105,39 @@ render_status_t render_prepare_again(const scene_t *s, uint32_t frame_index, are
             return RENDER_OK;
         }
     }
+    /* the maps of every cluster that has its own; a plain cluster's
+     * primitives use its ancestor's (ix.groups[].maps_of).  A world part
+     * that may be kept learns which maps moved since the frame before */
+    int partly = may_keep && !old.world_lost && old.detail_prim == RENDER_NO_PRIM;
+    st = prep_cluster_maps(s, &ix, frame_index, root_to, root_from, partly ? &old.frame_index : NULL,
+                           moved, to_eye, from_eye, f);
+    if (st != RENDER_OK)
+        return st;
+    num_t pad = scene_tolerance(s, NUM_C(RENDER_BOUNDS_PAD_VALUE));
+    if (partly && !f->precision_lost) {
+        st = prep_world_moved(s, f, &ix, &old, moved, to_eye, from_eye, pad, normals);
+        if (st != RENDER_OK || f->world_kept) {
+            arena_release_to(arena, mark);
+            f->world_lost = f->precision_lost;
+            f->precision_lost = f->precision_lost || camera_lost;
+            prep_lights(s, lights, root_to, f);
+            *out = f;
+            return st;
+        }
+        /* the extent moved (or a bound saturated): prepared whole below */
+        f->precision_lost = 0;
+        f->detail_prim = RENDER_NO_PRIM;
+    }
     words_zero(f->clusters, sizeof *f->clusters * s->cluster_count);
     words_zero(f->prims, sizeof *f->prims * (s->prim_count ? s->prim_count : 1));
-    /* the maps of every cluster that has its own; a plain cluster's
-     * primitives use its ancestor's (ix.groups[].maps_of) */
-    for (uint32_t i = 0; i < s->cluster_count; i++) {
-        if (ix.groups[i].maps_of != i)
-            continue;
-        const scene_cluster_t *c = &s->clusters[i];
-        xform_t key = prep_key_xform(s, c, frame_index);
-        xform_t key_inv, local_inv;
-        st = precision_invert(&key, &key_inv);
-        if (st == RENDER_OK)
-            st = precision_invert(&c->local, &local_inv);
-        if (st != RENDER_OK)
-            return st;
-        xform_t to_parent = xform_compose(&key, &c->local);
-        xform_t from_parent = xform_compose(&local_inv, &key_inv);
-        uint32_t pm = i == 0 ? 0 : ix.groups[c->parent].maps_of;
-        const xform_t *parent_to_eye = i == 0 ? root_to : &to_eye[pm];
-        const xform_t *eye_to_parent = i == 0 ? root_from : &from_eye[pm];
-        to_eye[i] = xform_compose(parent_to_eye, &to_parent);
-        from_eye[i] = xform_compose(&from_parent, eye_to_parent);
-        if (xform_is_sat(&to_eye[i]) || xform_is_sat(&from_eye[i]))
-            f->precision_lost = 1;
-    }
     f->detail_prim = RENDER_NO_PRIM;
-    num_t pad = scene_tolerance(s, NUM_C(RENDER_BOUNDS_PAD_VALUE));
-    for (uint32_t i = 0; i < s->prim_count; i++) {
-        const scene_prim_t *sp = &s->prims[i];
-        uint32_t m = ix.groups[sp->cluster].maps_of;
-        prep_prim(sp, i, f, &to_eye[m], &from_eye[m], pad, &ix, normals, &f->prims[i]);
-        /* the error of the cluster's inverse map, for precision_check (a
-         * triangle's vertices are mapped forward: none, and precision_check
-         * sets its 0) */
-        if (sp->kind != SCENE_PRIM_TRIANGLE)
-            f->prims[i].hit_error = precision_map_error(&to_eye[m], &from_eye[m], &f->prims[i].bounds);
-        if (prep_aabb_is_sat(&f->prims[i].bounds))
-            f->precision_lost = 1;
-        if (sp->kind != SCENE_PRIM_TRIANGLE) /* a triangle's: precision_check */
-            precision_detail(f, i, &to_eye[m]);
-    }
+    for (uint32_t i = 0; i < s->prim_count; i++)
+        prep_one_prim(s, i, f, &ix, to_eye, from_eye, pad, normals);
     arena_release_to(arena, mark);
 
-    /* each cluster's lists (the index's) and the box of its own
-     * primitives, grown in rising primitive index as ever */
-    for (uint32_t i = 0; i < s->cluster_count; i++) {
-        render_cluster_t *c = &f->clusters[i];
-        const scene_group_t *g = &ix.groups[i];
-        c->first_child = g->first_child;
-        c->child_count = g->child_count;
-        c->first_prim = g->first_prim;
-        c->prim_count = g->prim_count;
-        c->own_bounds = prep_aabb_empty();
-        for (uint32_t k = 0, have = 0; k < g->prim_count; k++) {
-            /* prep_aabb_add_box without asking of own_bounds what have
-             * says: a box grown by one not empty is not empty */
-            const aabb_t *o = &f->prims[ix.prim_list[g->first_prim + k]].bounds;
-            if (prep_aabb_is_empty(o))
-                continue;
-            if (have)
-                prep_aabb_grow(&c->own_bounds, o);
-            else
-                c->own_bounds = *o;
-            have = 1;
-        }
-        c->bounds = prep_aabb_empty();
-        c->tree_x0 = c->tree_y0 = 1;
-        c->tree_x1 = c->tree_y1 = 0;
-    }
-    /* children have larger indices than parents: one backward pass */
-    uint64_t covered = 0, rows = 0; /* pixels, rows under the clusters' own rectangles */
-    for (uint32_t i = s->cluster_count; i-- > 0;) {
-        render_cluster_t *c = &f->clusters[i];
-        prep_aabb_add_box(&c->bounds, &c->own_bounds);
-        if (world) {
-            c->screen_x0 = c->screen_y0 = 0;
-            c->screen_x1 = f->width - 1;
-            c->screen_y1 = f->height - 1;
-        } else {
-            prep_screen_rect(f, c);
-        }
-        if (c->screen_x0 <= c->screen_x1 && c->screen_y0 <= c->screen_y1) {
-            covered += (uint64_t)(uint32_t)(c->screen_x1 - c->screen_x0 + 1) *
-                       (uint32_t)(c->screen_y1 - c->screen_y0 + 1);
-            rows += (uint32_t)(c->screen_y1 - c->screen_y0 + 1);
-        }
-        prep_tree_rect_add(c, c->screen_x0, c->screen_y0, c->screen_x1, c->screen_y1);
-        if (i > 0) {
-            render_cluster_t *p = &f->clusters[s->clusters[i].parent];
-            prep_aabb_add_box(&p->bounds, &c->bounds);
-            prep_tree_rect_add(p, c->tree_x0, c->tree_y0, c->tree_x1, c->tree_y1);
-        }
-    }
-    /* covered / pixels, rounded up, in 32 bits: covered < 2^32 * pixels
-     * would need 2^32 clusters over every pixel */
-    uint32_t pixels = (uint32_t)f->width * f->height;
-    if (!world) {
-        uint64_t mean = (covered + pixels - 1) / pixels;
-        f->clip_coverage = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
-        mean = (rows + f->height - 1) / f->height;
-        f->clip_rows = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
-    }
+    for (uint32_t i = 0; i < s->cluster_count; i++)
+        prep_own_bounds(f, &ix, i);
+    prep_cluster_tree(s, f, world);
     prep_lights(s, lights, root_to, f);
     *out = f;
     st = precision_check(f, &ix);

@@ -199,13 +199,18 @@ typedef struct {
      * render_area traces without clipping).  A frame prepared again over
      * the frame before of the same scene (render_prepare_again) keeps that
      * frame's world part when no keyed cluster map differs and the extent
-     * is the same: the bytes a fresh preparation writes but world_kept. */
+     * is the same; when some differ (at most half the primitives under
+     * them) it prepares only those clusters' primitives again and the
+     * boxes above them.  Either way: the bytes a fresh preparation writes
+     * but world_kept. */
     uint8_t world;
     uint8_t world_lost;            /* world: precision_lost of the world part
                                       alone (the camera's added after) */
     uint8_t world_kept;            /* world: 1 if this frame kept the world
-                                      part of the frame before (a count for
-                                      the trace, not part of the picture) */
+                                      part of the frame before, 2 if it
+                                      prepared only the clusters that moved
+                                      (a count for the trace, not part of
+                                      the picture) */
     vec3_t eye;                    /* world: the camera's position */
     xform_t eye_to_world;          /* world: the camera's axes as columns */
     num_t world_box_extent;        /* world: the largest coordinate magnitude

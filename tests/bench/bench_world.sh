@@ -2,8 +2,11 @@
 # bench_world.sh: the DM's preparation of an animation's frames in eye
 # space (the paper's method, the default) and in world space
 # (--world-space: the DM keeps the triangles' world form and the NCs turn
-# the camera rays), against the NCs' frame, on SPD tetra scenes whose
-# camera moves (tests/bench/make_spin.sh N FRAMES OUT camera).  Per scene and mode,
+# the camera rays), against the NCs' frame, on SPD tetra scenes where
+# something moves (tests/bench/make_spin.sh N FRAMES OUT MOVE): the camera
+# (the DM keeps every triangle), a small ball in front of the tetrahedron
+# (it prepares the ball's cluster again and keeps the triangles) or the
+# whole tetrahedron spinning (it prepares everything again).  Per scene, move and mode,
 # bench_pipeline.sh traces each frame on the board (float, BENCH_NCS NCs,
 # default 64, BENCH_SIZE default 512x480): the DM's preparation of frame 0
 # (at the upload), of the later frames (median: what an animation costs a
@@ -11,7 +14,8 @@
 # MIPS, median over the frames).  Guest instructions; one run each.
 # Prints a markdown table and draws BENCH_OUT/world-space.png (a temporary
 # directory unless BENCH_OUT is given).  BENCH_WORLD_TETRAS picks the
-# tetra sizes (default "7 9"), BENCH_WORLD_FRAMES the frames (default 3).
+# tetra sizes (default "7 9"), BENCH_WORLD_MOVES the moves (default
+# "camera ball spin"), BENCH_WORLD_FRAMES the frames (default 3).
 set -u
 cd "$(dirname "$0")/../.."
 export LINKS1=${LINKS1:-build/links1} FW_DIR=${FW_DIR:-build}
@@ -23,39 +27,49 @@ mkdir -p "$OUT"
 export BENCH_NCS=${BENCH_NCS:-64} BENCH_SIZE=${BENCH_SIZE:-512x480}
 frames=${BENCH_WORLD_FRAMES:-3}
 median() { sort -n | awk '{ v[NR] = $1 } END { if (NR) print (NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2) }'; }
-echo "bench_world: SPD tetra with a moving camera, $frames frames, float, $BENCH_NCS NCs, $BENCH_SIZE"
+echo "bench_world: SPD tetra where something moves, $frames frames, float, $BENCH_NCS NCs, $BENCH_SIZE"
 echo
-echo "| scene | triangles | preparation | DM frame 0 (upload) | DM later frame (median) | per triangle | NCs' frame at 1 MIPS (median, M insns) | DM later frame / NCs' frame |"
-echo "|---|---|---|---|---|---|---|---|"
+echo "| scene | triangles | what moves | preparation | DM frame 0 (upload) | DM later frame (median) | per triangle | NCs' frame at 1 MIPS (median, M insns) | DM later frame / NCs' frame |"
+echo "|---|---|---|---|---|---|---|---|---|"
 : >"$TMP/world.dat"
+cases=""
 for n in ${BENCH_WORLD_TETRAS:-7 9}; do
-    scn=$TMP/orbit$n.scn
-    bash tests/bench/make_spin.sh "$n" "$frames" "$scn" camera 2>/dev/null || { echo "bench_world: make_spin.sh $n failed"; exit 1; }
+    for move in ${BENCH_WORLD_MOVES:-camera ball spin}; do
+        cases="$cases $n:$move"
+    done
+done
+for c in $cases; do
+    n=${c%%:*} move=${c#*:}
+    scn=$TMP/$move$n.scn
+    arg=$move
+    [ "$move" = spin ] && arg=""
+    bash tests/bench/make_spin.sh "$n" "$frames" "$scn" $arg 2>/dev/null || { echo "bench_world: make_spin.sh $n $move failed"; exit 1; }
     tris=$((4 ** n))
     for mode in eye world; do
         args=""
         [ $mode = world ] && args=--world-space
-        log=$TMP/$n-$mode.log
+        log=$TMP/$n-$move-$mode.log
         BENCH_ARGS=$args bash tests/bench/bench_pipeline.sh "$scn" >"$log" 2>&1 ||
-            { echo "bench_world: tetra $n $mode: $(tail -n 1 "$log")"; exit 1; }
+            { echo "bench_world: tetra $n $move $mode: $(tail -n 1 "$log")"; exit 1; }
         rows=$(awk '$1 ~ /^[0-9]+$/ && NF >= 3' "$log")
         first=$(echo "$rows" | awk 'NR == 1 { print $2 }')
         later=$(echo "$rows" | awk 'NR > 1 { print $2 }' | median)
         ms=$(echo "$rows" | awk '{ print $3 }' | median)
-        [ -n "$first" ] && [ -n "$later" ] && [ -n "$ms" ] || { echo "bench_world: tetra $n $mode: no numbers"; cat "$log"; exit 1; }
-        awk -v n="$n" -v t="$tris" -v m="$mode" -v f="$first" -v l="$later" -v ms="$ms" 'BEGIN {
-            printf "| tetra %d | %d | %s | %.1f M | %.2f M | %.1f | %.1f | %.3f |\n", n, t, m == "eye" ? "eye space (default)" : "world space (--world-space)", f / 1e6, l / 1e6, l / t, ms / 1e3, l / (ms * 1e3) }'
-        echo "tetra$n-$mode $later $(awk -v ms="$ms" 'BEGIN { print ms * 1000 }')" >>"$TMP/world.dat"
+        [ -n "$first" ] && [ -n "$later" ] && [ -n "$ms" ] || { echo "bench_world: tetra $n $move $mode: no numbers"; cat "$log"; exit 1; }
+        awk -v n="$n" -v t="$tris" -v mv="$move" -v m="$mode" -v f="$first" -v l="$later" -v ms="$ms" 'BEGIN {
+            what = mv == "camera" ? "the camera" : mv == "ball" ? "a ball" : "the tetrahedron (spins)"
+            printf "| tetra %d | %d | %s | %s | %.1f M | %.2f M | %.1f | %.1f | %.3f |\n", n, t, what, m == "eye" ? "eye space (default)" : "world space (--world-space)", f / 1e6, l / 1e6, l / t, ms / 1e3, l / (ms * 1e3) }'
+        echo "t$n-$move-$mode $later $(awk -v ms="$ms" 'BEGIN { print ms * 1000 }')" >>"$TMP/world.dat"
     done
 done
 gnuplot <<GP || { echo "bench_world: gnuplot failed" >&2; exit 1; }
-set terminal pngcairo size 800,480
+set terminal pngcairo size 1000,520
 set output "$OUT/world-space.png"
-set title "An animation's later frame on the board: the DM's preparation against the NCs' frame\n(SPD tetra, moving camera, float, $BENCH_NCS NCs, $BENCH_SIZE; equal-speed unit computers)"
+set title "An animation's later frame on the board: the DM's preparation against the NCs' frame\n(SPD tetra t7, t9; the camera, a ball or the tetrahedron moves; float, $BENCH_NCS NCs, $BENCH_SIZE; equal-speed unit computers)"
 set ylabel "guest instructions"
 set logscale y; set yrange [1e4:*]; set grid ytics
 set style data histograms; set style histogram clustered gap 1; set style fill solid 0.8 border -1
-set boxwidth 0.9; set xtics rotate by -20
+set boxwidth 0.9; set xtics rotate by -30 font ",9"
 plot "$TMP/world.dat" using 2:xtic(1) title "DM preparation of a later frame", \
      "" using 3 title "NCs' frame (replay at 1 MIPS, as instructions)"
 GP

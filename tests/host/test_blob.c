@@ -455,10 +455,13 @@ static void test_blob_copy_frame_only(void)
 
 /* A world-space scene prepared frame after frame in one block, as the
  * DM does: a frame whose keyed cluster maps are those of the block's
- * frame before keeps its world part (fly: only the camera and lights move;
- * the still demo prepared twice), one whose maps moved does not (anim);
- * either way the block holds the bytes a fresh build there writes (but
- * the frame's world_kept), and renders the same. */
+ * frame before keeps its world part (world_kept 1; fly: only the camera
+ * and lights move; the still demo prepared twice), one where a few
+ * clusters moved prepares only them again (2; pendulum: the pendulum and
+ * its bob, and the lamp until it stops), one where most moved is
+ * prepared whole (0; anim: five of six primitives); either way the block
+ * holds the bytes a fresh build there writes (but the frame's world_kept),
+ * and renders the same. */
 static void test_blob_world_space_keeps(void)
 {
     static const struct {
@@ -469,6 +472,8 @@ static void test_blob_world_space_keeps(void)
         {"fly", {0, 1, 2, 3}, {0, 1, 1, 1}},
         {"demo", {0, 0, 0, 0}, {0, 1, 1, 1}},
         {"anim", {0, 1, 2, 2}, {0, 0, 0, 1}},
+        {"pendulum", {0, 1, 2, 3}, {0, 2, 2, 2}},
+        {"pendulum", {3, 0, 0, 2}, {0, 2, 1, 2}},
     };
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
         size_t len, need;
