@@ -229,15 +229,34 @@ render_blob_status_t render_blob_copy_frame(void *block, size_t size, const rend
         src->scene_bytes > src->bytes || !src->frame)
         return render_blob_copy(block, size, src, out, err);
     blob_ok(err);
-    /* the frame part: from the first word boundary at or after the scene's
-     * end (the frame's first array is aligned past it; what lies between is
-     * padding) */
-    size_t at = (src->scene_bytes + sizeof(uint32_t) - 1) & ~(sizeof(uint32_t) - 1);
-    if (at < src->bytes)
-        words_copy((uint8_t *)block + at, (const uint8_t *)src + at, src->bytes - at);
     render_frame_t *frame = src->frame;
     const char *bad;
-    if (render_relocate_frame(block, src->bytes, src->home, &frame, &bad) != RENDER_OK) {
+    render_status_t st;
+    /* world space: a frame whose world part the block holds already (the
+     * frame there at the same offset, the same layout, render_world_same)
+     * needs its header alone, read where src lies (not at its home) */
+    uintptr_t fat = (uintptr_t)src->frame - src->home;
+    if (dst->frame && dst->bytes == src->bytes && fat == (uintptr_t)dst->frame - (uintptr_t)block &&
+        fat >= src->scene_bytes && src->bytes >= sizeof(render_frame_t) &&
+        fat <= src->bytes - sizeof(render_frame_t) &&
+        render_world_same(&dst->scene, dst->frame,
+                          (const render_frame_t *)(const void *)((const uint8_t *)src + fat))) {
+        words_copy((uint8_t *)block + fat, (const uint8_t *)src + fat, sizeof(render_frame_t));
+        st = render_relocate_frame_header(block, src->bytes, src->home, &frame, &bad);
+        if (partial && st == RENDER_OK)
+            *partial = 2;
+    } else {
+        /* the frame part: from the first word boundary at or after the
+         * scene's end (the frame's first array is aligned past it; what
+         * lies between is padding) */
+        size_t at = (src->scene_bytes + sizeof(uint32_t) - 1) & ~(sizeof(uint32_t) - 1);
+        if (at < src->bytes)
+            words_copy((uint8_t *)block + at, (const uint8_t *)src + at, src->bytes - at);
+        st = render_relocate_frame(block, src->bytes, src->home, &frame, &bad);
+        if (partial && st == RENDER_OK)
+            *partial = 1;
+    }
+    if (st != RENDER_OK) {
         dst->magic = 0; /* the next frame is copied whole */
         blob_fail(err, RENDER_BLOB_ERR_RELOCATE, "blob not self-contained: %s", bad);
         return err->status;
@@ -248,8 +267,6 @@ render_blob_status_t render_blob_copy_frame(void *block, size_t size, const rend
     dst->peak = src->peak;
     dst->wide_offset = src->wide_offset;
     dst->frame = frame;
-    if (partial)
-        *partial = 1;
     *out = dst;
     return RENDER_BLOB_OK;
 }

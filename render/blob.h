@@ -126,8 +126,11 @@ render_blob_status_t render_blob_copy(void *block, size_t size, const render_blo
  * scene_id is src's (not 0) and whose scene part is as long, only src's
  * frame part (from scene_bytes on) is copied and only the frame's pointers
  * are moved: the scene part, already there and relocated, is neither
- * copied nor walked again.  Otherwise as render_blob_copy.  *partial (when
- * not NULL) says which was done. */
+ * copied nor walked again.  A world-space frame whose world part the
+ * block's frame has (render_world_same, at the same offset, the blob as
+ * long) needs its header alone: only that is copied and relocated.
+ * Otherwise as render_blob_copy.  *partial (when not NULL) says which was
+ * done: 0 whole, 1 the frame part, 2 the frame header. */
 render_blob_status_t render_blob_copy_frame(void *block, size_t size, const render_blob_t *src,
                                             render_blob_t **out, int *partial,
                                             render_blob_error_t *err);

@@ -201,6 +201,13 @@ static int prep_keys_same(const scene_t *s, uint32_t a, uint32_t b)
     return 1;
 }
 
+int render_world_same(const scene_t *s, const render_frame_t *a, const render_frame_t *b)
+{
+    return a->world && b->world && a->world_lost == b->world_lost &&
+           !memcmp(&a->precision_extent, &b->precision_extent, sizeof(num_t)) &&
+           prep_keys_same(s, a->frame_index, b->frame_index);
+}
+
 /* The camera and the lights at frame f: each target with keys
  * (scene_view_key_t) interpolated between the two keys f lies between,
  * the others as the scene gives them.  Keys are grouped by target (the
@@ -1124,7 +1131,8 @@ render_status_t render_prepare_again(const scene_t *s, uint32_t frame_index, are
             *out = f;
             return st;
         }
-        /* the extent moved (or a bound saturated): prepared whole below */
+        /* more than half moved, the extent moved or a bound saturated:
+         * prepared whole below */
         f->precision_lost = 0;
         f->detail_prim = RENDER_NO_PRIM;
     }

@@ -12,7 +12,9 @@ typedef struct {
     uintptr_t old_lo, old_hi; /* the original blob [old_lo, old_hi) */
     uintptr_t new_lo;         /* where its copy starts */
     int write;                /* 0: check every pointer; 1: rewrite them */
-    int frame_only;           /* 1: the scene is relocated already */
+    int frame_only;           /* 1: the scene is relocated already; 2: and
+                                 the frame's arrays (its header's pointers
+                                 alone are moved) */
     const char *bad;          /* first field outside the blob, or NULL */
 } reloc_t;
 
@@ -106,7 +108,7 @@ static void reloc_frame(reloc_t *r, render_frame_t *f, const scene_t *s)
         RELOC(r, f->density_inv_radius2, s->density_component_count, "frame.density_inv_radius2");
     if (r->bad)
         return;
-    for (uint32_t i = 0; i < f->prim_count; i++) {
+    for (uint32_t i = 0; r->frame_only < 2 && i < f->prim_count; i++) {
         render_prim_t *p = &prims[i];
         /* a triangle holds no pointer (its vertex normals are in it): one
          * load and one test (the RC relocates every primitive of every
@@ -200,4 +202,10 @@ render_status_t render_relocate_frame(void *new_base, size_t size, uintptr_t old
                                       render_frame_t **frame, const char **bad_field)
 {
     return reloc_run(new_base, size, old_base, NULL, frame, bad_field, 1);
+}
+
+render_status_t render_relocate_frame_header(void *new_base, size_t size, uintptr_t old_base,
+                                             render_frame_t **frame, const char **bad_field)
+{
+    return reloc_run(new_base, size, old_base, NULL, frame, bad_field, 2);
 }

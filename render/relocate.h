@@ -49,4 +49,11 @@ render_status_t render_relocate(void *new_base, size_t size, uintptr_t old_base,
 render_status_t render_relocate_frame(void *new_base, size_t size, uintptr_t old_base,
                                       render_frame_t **frame, const char **bad_field);
 
+/* As render_relocate_frame over a copy whose frame arrays (clusters,
+ * primitives and the rest) are relocated in it already: the frame
+ * header's own pointers alone are checked and moved (a world-space frame
+ * whose world part the copy holds, render_blob_copy_frame). */
+render_status_t render_relocate_frame_header(void *new_base, size_t size, uintptr_t old_base,
+                                             render_frame_t **frame, const char **bad_field);
+
 #endif

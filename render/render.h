@@ -328,6 +328,13 @@ render_status_t render_prepare(const scene_t *scene, uint32_t frame_index,
 render_status_t render_prepare_again(const scene_t *scene, uint32_t frame_index, arena_t *arena,
                                      const render_frame_t *prev, render_frame_t **out);
 
+/* 1 when world-space frames a and b of scene s have the same world part,
+ * byte for byte as a fresh preparation writes it: every keyed cluster map
+ * is the same at their frames, and so is the extent (what the world part
+ * is made of); only their headers (camera, lights) may differ.  The RC
+ * then forwards b's header alone over a (render_blob_copy_frame). */
+int render_world_same(const scene_t *s, const render_frame_t *a, const render_frame_t *b);
+
 /* Arena bytes render_prepare needs for this scene, at most (frame, arrays,
  * scratch and alignment): what a unit computer must set aside.  Rendering
  * itself allocates nothing (stack: RENDER_STACK_BYTES in limits.h). */

@@ -162,7 +162,8 @@ static int rc_broadcast(struct rc_run *run, const render_blob_t **out)
     }
     /* eight words a step: serial work before any NC starts, and the one
      * part of the RC's frame that grows with the scene; the scene part only
-     * when the broadcast block does not hold this load of the scene yet */
+     * when the broadcast block does not hold this load of the scene yet,
+     * the frame header alone when it holds the frame's world part */
     render_blob_t *blob;
     render_blob_error_t err;
     render_blob_status_t st = render_blob_copy_frame(w, b->size, src, &blob, NULL, &err);

@@ -510,6 +510,62 @@ static void test_blob_world_space_keeps(void)
     }
 }
 
+/* The RC's forwarding of world-space frames: the DM's two blocks A and B
+ * take the frames of one load in turn (each keeping its own frame before),
+ * and each is forwarded into the broadcast block C: a frame whose world
+ * part C holds (fly: the camera and lights move; demo prepared again) gets
+ * its header alone (partial 2), one whose clusters moved (pendulum) its
+ * frame part (1); either way C is then byte for byte what a whole copy of
+ * that frame into C gives. */
+static void test_blob_copy_world_header(void)
+{
+    static const struct {
+        const char *name;
+        uint32_t frames[4];
+        int partial[4];
+    } cases[] = {
+        {"fly", {0, 1, 2, 3}, {0, 2, 2, 2}},
+        {"demo", {0, 0, 0, 0}, {0, 2, 2, 2}},
+        {"pendulum", {0, 1, 2, 3}, {0, 1, 1, 1}},
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        size_t len, need;
+        render_blob_error_t err;
+        uint8_t *buf = tb_compile_flags(cases[c].name, 4, SCN_OPT_WORLD_SPACE, &len);
+        CHECK(buf != NULL);
+        if (!buf)
+            continue;
+        CHECK_EQ_INT(render_blob_bytes(buf, len, &need, &err), RENDER_BLOB_OK);
+        uint8_t *dm[2] = {tb_block(need), tb_block(need)}, *bc = tb_block(need), *saved = tb_block(need);
+        render_blob_t *blob[2] = {NULL, NULL}, *out;
+        for (int k = 0; k < 2; k++) {
+            CHECK_EQ_INT(render_blob_load(buf, len, dm[k], need, NULL, &blob[k], &err), RENDER_BLOB_OK);
+            if (blob[k])
+                blob[k]->scene_id = 7;
+        }
+        for (int k = 0; blob[0] && blob[1] && k < 4; k++) {
+            render_blob_t *src = blob[k & 1];
+            int partial = -1;
+            CHECK_EQ_INT(render_blob_prepare(src, cases[c].frames[k], need, &err), RENDER_BLOB_OK);
+            CHECK_EQ_INT(render_blob_copy_frame(bc, need, src, &out, &partial, &err), RENDER_BLOB_OK);
+            if (partial != cases[c].partial[k])
+                printf("%s frame %u (step %d): partial %d, expected %d\n", cases[c].name,
+                       (unsigned)cases[c].frames[k], k, partial, cases[c].partial[k]);
+            CHECK_EQ_INT(partial, cases[c].partial[k]);
+            CHECK(out && out->frame_index == cases[c].frames[k] && out->bytes == src->bytes);
+            memcpy(saved, bc, need);
+            CHECK_EQ_INT(render_blob_copy(bc, need, src, &out, &err), RENDER_BLOB_OK);
+            CHECK(memcmp(saved, bc, src->bytes) == 0);
+            memcpy(bc, saved, need); /* the RC's block again */
+        }
+        free(dm[0]);
+        free(dm[1]);
+        free(bc);
+        free(saved);
+        free(buf);
+    }
+}
+
 int main(void)
 {
     RUN(test_relocated_copy_renders_same);
@@ -522,5 +578,6 @@ int main(void)
     RUN(test_blob_load_then_prepare);
     RUN(test_blob_copy_frame_only);
     RUN(test_blob_world_space_keeps);
+    RUN(test_blob_copy_world_header);
     return check_exit();
 }
