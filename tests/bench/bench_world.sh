@@ -11,7 +11,10 @@
 # default 64, BENCH_SIZE default 512x480): the DM's preparation of frame 0
 # (at the upload), of the later frames (median: what an animation costs a
 # frame), and the NCs' frame on equal-speed unit computers (replay at 1
-# MIPS, median over the frames).  Guest instructions; one run each.
+# MIPS, median over the frames), and the RC's forwarding of a later frame
+# (links1 render --frames 0:F-1 --count-insns less --frames 0:0, over the
+# F-1 later frames: the broadcast block then holds the frame before).
+# Guest instructions; one run each.
 # Prints a markdown table and draws BENCH_OUT/world-space.png (a temporary
 # directory unless BENCH_OUT is given).  BENCH_WORLD_TETRAS picks the
 # tetra sizes (default "7 9"), BENCH_WORLD_MOVES the moves (default
@@ -26,11 +29,18 @@ OUT=${BENCH_OUT:-$TMP}
 mkdir -p "$OUT"
 export BENCH_NCS=${BENCH_NCS:-64} BENCH_SIZE=${BENCH_SIZE:-512x480}
 frames=${BENCH_WORLD_FRAMES:-3}
+# rc_insns SCENE FRAMES ARGS...: the RC's guest instructions over those frames
+rc_insns() {
+    local scn=$1 fr=$2
+    shift 2
+    "$LINKS1" render "$scn" --frames "$fr" --ncs "$BENCH_NCS" --size "$BENCH_SIZE" --count-insns \
+        -o "$TMP/rc.ppm" "$@" 2>&1 | awk '$1 == "core" && $3 == "RC" { print $4 }'
+}
 median() { sort -n | awk '{ v[NR] = $1 } END { if (NR) print (NR % 2 ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2) }'; }
 echo "bench_world: SPD tetra where something moves, $frames frames, float, $BENCH_NCS NCs, $BENCH_SIZE"
 echo
-echo "| scene | triangles | what moves | preparation | DM frame 0 (upload) | DM later frame (median) | per triangle | NCs' frame at 1 MIPS (median, M insns) | DM later frame / NCs' frame |"
-echo "|---|---|---|---|---|---|---|---|---|"
+echo "| scene | triangles | what moves | preparation | DM frame 0 (upload) | DM later frame (median) | per triangle | RC later frame (mean) | NCs' frame at 1 MIPS (median, M insns) | DM later frame / NCs' frame |"
+echo "|---|---|---|---|---|---|---|---|---|---|"
 : >"$TMP/world.dat"
 cases=""
 for n in ${BENCH_WORLD_TETRAS:-7 9}; do
@@ -55,10 +65,14 @@ for c in $cases; do
         first=$(echo "$rows" | awk 'NR == 1 { print $2 }')
         later=$(echo "$rows" | awk 'NR > 1 { print $2 }' | median)
         ms=$(echo "$rows" | awk '{ print $3 }' | median)
-        [ -n "$first" ] && [ -n "$later" ] && [ -n "$ms" ] || { echo "bench_world: tetra $n $move $mode: no numbers"; cat "$log"; exit 1; }
-        awk -v n="$n" -v t="$tris" -v mv="$move" -v m="$mode" -v f="$first" -v l="$later" -v ms="$ms" 'BEGIN {
+        rc_all=$(rc_insns "$scn" "0:$((frames - 1))" $args)
+        rc_one=$(rc_insns "$scn" 0:0 $args)
+        [ -n "$first" ] && [ -n "$later" ] && [ -n "$ms" ] && [ -n "$rc_all" ] && [ -n "$rc_one" ] ||
+            { echo "bench_world: tetra $n $move $mode: no numbers"; cat "$log"; exit 1; }
+        awk -v n="$n" -v t="$tris" -v mv="$move" -v m="$mode" -v f="$first" -v l="$later" -v ms="$ms" \
+            -v rc="$(( (rc_all - rc_one) / (frames - 1) ))" 'BEGIN {
             what = mv == "camera" ? "the camera" : mv == "ball" ? "a ball" : "the tetrahedron (spins)"
-            printf "| tetra %d | %d | %s | %s | %.1f M | %.2f M | %.1f | %.1f | %.3f |\n", n, t, what, m == "eye" ? "eye space (default)" : "world space (--world-space)", f / 1e6, l / 1e6, l / t, ms / 1e3, l / (ms * 1e3) }'
+            printf "| tetra %d | %d | %s | %s | %.1f M | %.2f M | %.1f | %.2f M | %.1f | %.3f |\n", n, t, what, m == "eye" ? "eye space (default)" : "world space (--world-space)", f / 1e6, l / 1e6, l / t, rc / 1e6, ms / 1e3, l / (ms * 1e3) }'
         echo "t$n-$move-$mode $later $(awk -v ms="$ms" 'BEGIN { print ms * 1000 }')" >>"$TMP/world.dat"
     done
 done
