@@ -73,19 +73,20 @@ for c in $cases; do
             -v rc="$(( (rc_all - rc_one) / (frames - 1) ))" 'BEGIN {
             what = mv == "camera" ? "the camera" : mv == "ball" ? "a ball" : "the tetrahedron (spins)"
             printf "| tetra %d | %d | %s | %s | %.1f M | %.2f M | %.1f | %.2f M | %.1f | %.3f |\n", n, t, what, m == "eye" ? "eye space (default)" : "world space (--world-space)", f / 1e6, l / 1e6, l / t, rc / 1e6, ms / 1e3, l / (ms * 1e3) }'
-        echo "t$n-$move-$mode $later $(awk -v ms="$ms" 'BEGIN { print ms * 1000 }')" >>"$TMP/world.dat"
+        echo "t$n-$move-$mode $later $(awk -v ms="$ms" 'BEGIN { print ms * 1000 }') $(( (rc_all - rc_one) / (frames - 1) ))" >>"$TMP/world.dat"
     done
 done
 gnuplot <<GP || { echo "bench_world: gnuplot failed" >&2; exit 1; }
-set terminal pngcairo size 1000,520
+set terminal pngcairo size 1100,560
 set output "$OUT/world-space.png"
-set title "An animation's later frame on the board: the DM's preparation against the NCs' frame\n(SPD tetra t7, t9; the camera, a ball or the tetrahedron moves; float, $BENCH_NCS NCs, $BENCH_SIZE; equal-speed unit computers)"
+set title "An animation's later frame on the board: the DM's and the RC's work against the NCs' frame\n(SPD tetra; the camera moves, a ball moves or the tetrahedron spins; float, $BENCH_NCS NCs, $BENCH_SIZE)"
 set ylabel "guest instructions"
 set logscale y; set yrange [1e4:*]; set grid ytics
 set style data histograms; set style histogram clustered gap 1; set style fill solid 0.8 border -1
 set boxwidth 0.9; set xtics rotate by -30 font ",9"
 plot "$TMP/world.dat" using 2:xtic(1) title "DM preparation of a later frame", \
-     "" using 3 title "NCs' frame (replay at 1 MIPS, as instructions)"
+     "" using 4 title "RC's later frame (forwarding, areas, pixels)", \
+     "" using 3 title "NCs' frame (replay at 1 MIPS, equal-speed unit computers)"
 GP
 echo
 echo "chart: $OUT/world-space.png"
