@@ -81,7 +81,7 @@ set terminal pngcairo size 1100,560
 set output "$OUT/world-space.png"
 set title "An animation's later frame on the board: the DM's and the RC's work against the NCs' frame\n(SPD tetra; the camera moves, a ball moves or the tetrahedron spins; float, $BENCH_NCS NCs, $BENCH_SIZE)"
 set ylabel "guest instructions"
-set logscale y; set yrange [1e4:*]; set grid ytics
+set logscale y; set yrange [1e4:5e9]; set grid ytics
 set style data histograms; set style histogram clustered gap 1; set style fill solid 0.8 border -1
 set boxwidth 0.9; set xtics rotate by -30 font ",9"
 plot "$TMP/world.dat" using 2:xtic(1) title "DM preparation of a later frame", \
