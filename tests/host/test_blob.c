@@ -453,6 +453,69 @@ static void test_blob_copy_frame_only(void)
     free(buf);
 }
 
+/* A world-space case: a scene (compiled at a quarter of its size) whose
+ * frames are prepared in turn, and what each step should report. */
+typedef struct {
+    const char *name;
+    uint32_t frames[4];
+    int want[4];
+} world_case_t;
+
+/* Runs check(case, compiled form, its length, the bytes its blob needs)
+ * over each case whose scene compiles (a failed check otherwise). */
+static void tb_world_cases(const world_case_t *cases, size_t n,
+                           void (*check)(const world_case_t *, const uint8_t *, size_t, size_t))
+{
+    for (size_t c = 0; c < n; c++) {
+        size_t len, need;
+        render_blob_error_t err;
+        uint8_t *buf = tb_compile_flags(cases[c].name, 4, SCN_OPT_WORLD_SPACE, &len);
+        CHECK(buf != NULL);
+        if (buf) {
+            render_blob_status_t st = render_blob_bytes(buf, len, &need, &err);
+            CHECK_EQ_INT(st, RENDER_BLOB_OK);
+            if (st == RENDER_BLOB_OK)
+                check(&cases[c], buf, len, need);
+        }
+        free(buf);
+    }
+}
+
+/* A step's report against the case's: printed when they differ. */
+static void tb_world_step(const world_case_t *wc, int k, const char *what, int got)
+{
+    if (got != wc->want[k])
+        printf("%s frame %u (step %d): %s %d, expected %d\n", wc->name, (unsigned)wc->frames[k], k,
+               what, got, wc->want[k]);
+    CHECK_EQ_INT(got, wc->want[k]);
+}
+
+/* One block, as the DM's: each frame prepared over the one before. */
+static void world_keeps(const world_case_t *wc, const uint8_t *buf, size_t len, size_t need)
+{
+    render_blob_error_t err;
+    uint8_t *block = tb_block(need), *saved = tb_block(need);
+    render_blob_t *blob, *alone;
+    CHECK_EQ_INT(render_blob_load(buf, len, block, need, NULL, &blob, &err), RENDER_BLOB_OK);
+    for (int k = 0; blob && k < 4; k++) {
+        CHECK_EQ_INT(render_blob_prepare(blob, wc->frames[k], need, &err), RENDER_BLOB_OK);
+        if (!blob->frame)
+            break;
+        CHECK(blob->frame->world == 1);
+        tb_world_step(wc, k, "world_kept", blob->frame->world_kept);
+        blob->frame->world_kept = 0;
+        memcpy(saved, block, need);
+        memset(block, 0, need);
+        CHECK_EQ_INT(render_blob_build(buf, len, wc->frames[k], block, need, NULL, &alone, &err),
+                     RENDER_BLOB_OK);
+        CHECK(alone && alone->bytes == ((render_blob_t *)saved)->bytes);
+        CHECK(alone && memcmp(saved, block, alone->bytes) == 0);
+        memcpy(block, saved, need); /* the DM's block again */
+    }
+    free(block);
+    free(saved);
+}
+
 /* A world-space scene prepared frame after frame in one block, as the
  * DM does: a frame whose keyed cluster maps are those of the block's
  * frame before keeps its world part (world_kept 1; fly: only the camera
@@ -464,50 +527,44 @@ static void test_blob_copy_frame_only(void)
  * and renders the same. */
 static void test_blob_world_space_keeps(void)
 {
-    static const struct {
-        const char *name;
-        uint32_t frames[4];
-        int kept[4]; /* frame_count 4: each prepared after the one before */
-    } cases[] = {
+    static const world_case_t cases[] = {
         {"fly", {0, 1, 2, 3}, {0, 1, 1, 1}},
         {"demo", {0, 0, 0, 0}, {0, 1, 1, 1}},
         {"anim", {0, 1, 2, 2}, {0, 0, 0, 1}},
         {"pendulum", {0, 1, 2, 3}, {0, 2, 2, 2}},
         {"pendulum", {3, 0, 0, 2}, {0, 2, 1, 2}},
     };
-    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
-        size_t len, need;
-        render_blob_error_t err;
-        uint8_t *buf = tb_compile_flags(cases[c].name, 4, SCN_OPT_WORLD_SPACE, &len);
-        CHECK(buf != NULL);
-        if (!buf)
-            continue;
-        CHECK_EQ_INT(render_blob_bytes(buf, len, &need, &err), RENDER_BLOB_OK);
-        uint8_t *block = tb_block(need), *saved = tb_block(need);
-        render_blob_t *blob, *alone;
-        CHECK_EQ_INT(render_blob_load(buf, len, block, need, NULL, &blob, &err), RENDER_BLOB_OK);
-        for (int k = 0; blob && k < 4; k++) {
-            CHECK_EQ_INT(render_blob_prepare(blob, cases[c].frames[k], need, &err), RENDER_BLOB_OK);
-            if (!blob->frame)
-                break;
-            CHECK(blob->frame->world == 1);
-            if (blob->frame->world_kept != cases[c].kept[k])
-                printf("%s frame %u (step %d): world_kept %d, expected %d\n", cases[c].name,
-                       (unsigned)cases[c].frames[k], k, blob->frame->world_kept, cases[c].kept[k]);
-            CHECK_EQ_INT(blob->frame->world_kept, cases[c].kept[k]);
-            blob->frame->world_kept = 0;
-            memcpy(saved, block, need);
-            memset(block, 0, need);
-            CHECK_EQ_INT(render_blob_build(buf, len, cases[c].frames[k], block, need, NULL, &alone, &err),
-                         RENDER_BLOB_OK);
-            CHECK(alone && alone->bytes == ((render_blob_t *)saved)->bytes);
-            CHECK(alone && memcmp(saved, block, alone->bytes) == 0);
-            memcpy(block, saved, need); /* the DM's block again */
-        }
-        free(block);
-        free(saved);
-        free(buf);
+    tb_world_cases(cases, sizeof cases / sizeof cases[0], world_keeps);
+}
+
+/* The DM's two blocks taking the frames in turn, each forwarded into the
+ * RC's broadcast block. */
+static void world_forwards(const world_case_t *wc, const uint8_t *buf, size_t len, size_t need)
+{
+    render_blob_error_t err;
+    uint8_t *dm[2] = {tb_block(need), tb_block(need)}, *bc = tb_block(need), *saved = tb_block(need);
+    render_blob_t *blob[2] = {NULL, NULL}, *out;
+    for (int k = 0; k < 2; k++) {
+        CHECK_EQ_INT(render_blob_load(buf, len, dm[k], need, NULL, &blob[k], &err), RENDER_BLOB_OK);
+        if (blob[k])
+            blob[k]->scene_id = 7;
     }
+    for (int k = 0; blob[0] && blob[1] && k < 4; k++) {
+        render_blob_t *src = blob[k & 1];
+        int partial = -1;
+        CHECK_EQ_INT(render_blob_prepare(src, wc->frames[k], need, &err), RENDER_BLOB_OK);
+        CHECK_EQ_INT(render_blob_copy_frame(bc, need, src, &out, &partial, &err), RENDER_BLOB_OK);
+        tb_world_step(wc, k, "partial", partial);
+        CHECK(out && out->frame_index == wc->frames[k] && out->bytes == src->bytes);
+        memcpy(saved, bc, need);
+        CHECK_EQ_INT(render_blob_copy(bc, need, src, &out, &err), RENDER_BLOB_OK);
+        CHECK(memcmp(saved, bc, src->bytes) == 0);
+        memcpy(bc, saved, need); /* the RC's block again */
+    }
+    free(dm[0]);
+    free(dm[1]);
+    free(bc);
+    free(saved);
 }
 
 /* The RC's forwarding of world-space frames: the DM's two blocks A and B
@@ -519,51 +576,12 @@ static void test_blob_world_space_keeps(void)
  * that frame into C gives. */
 static void test_blob_copy_world_header(void)
 {
-    static const struct {
-        const char *name;
-        uint32_t frames[4];
-        int partial[4];
-    } cases[] = {
+    static const world_case_t cases[] = {
         {"fly", {0, 1, 2, 3}, {0, 2, 2, 2}},
         {"demo", {0, 0, 0, 0}, {0, 2, 2, 2}},
         {"pendulum", {0, 1, 2, 3}, {0, 1, 1, 1}},
     };
-    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
-        size_t len, need;
-        render_blob_error_t err;
-        uint8_t *buf = tb_compile_flags(cases[c].name, 4, SCN_OPT_WORLD_SPACE, &len);
-        CHECK(buf != NULL);
-        if (!buf)
-            continue;
-        CHECK_EQ_INT(render_blob_bytes(buf, len, &need, &err), RENDER_BLOB_OK);
-        uint8_t *dm[2] = {tb_block(need), tb_block(need)}, *bc = tb_block(need), *saved = tb_block(need);
-        render_blob_t *blob[2] = {NULL, NULL}, *out;
-        for (int k = 0; k < 2; k++) {
-            CHECK_EQ_INT(render_blob_load(buf, len, dm[k], need, NULL, &blob[k], &err), RENDER_BLOB_OK);
-            if (blob[k])
-                blob[k]->scene_id = 7;
-        }
-        for (int k = 0; blob[0] && blob[1] && k < 4; k++) {
-            render_blob_t *src = blob[k & 1];
-            int partial = -1;
-            CHECK_EQ_INT(render_blob_prepare(src, cases[c].frames[k], need, &err), RENDER_BLOB_OK);
-            CHECK_EQ_INT(render_blob_copy_frame(bc, need, src, &out, &partial, &err), RENDER_BLOB_OK);
-            if (partial != cases[c].partial[k])
-                printf("%s frame %u (step %d): partial %d, expected %d\n", cases[c].name,
-                       (unsigned)cases[c].frames[k], k, partial, cases[c].partial[k]);
-            CHECK_EQ_INT(partial, cases[c].partial[k]);
-            CHECK(out && out->frame_index == cases[c].frames[k] && out->bytes == src->bytes);
-            memcpy(saved, bc, need);
-            CHECK_EQ_INT(render_blob_copy(bc, need, src, &out, &err), RENDER_BLOB_OK);
-            CHECK(memcmp(saved, bc, src->bytes) == 0);
-            memcpy(bc, saved, need); /* the RC's block again */
-        }
-        free(dm[0]);
-        free(dm[1]);
-        free(bc);
-        free(saved);
-        free(buf);
-    }
+    tb_world_cases(cases, sizeof cases / sizeof cases[0], world_forwards);
 }
 
 int main(void)
