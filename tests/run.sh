@@ -3,6 +3,10 @@
 # "PASS name" / "FAIL name: ..." lines they print, and ends with the summary
 # line "N passed, N failed".
 #
+# A check that cannot run here (it needs root to make a second account)
+# prints "SKIP name: why"; it counts as run, and the summary line ends
+# ", N skipped" when any was.
+#
 # Every test is declared in tests/plan.tsv: its name, how many checks it
 # runs, the seconds it may take, and optionally "host" for a script that
 # boots no board (it then runs beside the host unit tests).  A test fails (one failure more,
@@ -33,6 +37,7 @@ esac
 
 passed=0
 failed=0
+skipped=0
 log_dir=${TEST_LOG_DIR:-build/test-logs}
 mkdir -p "$log_dir"
 
@@ -63,16 +68,17 @@ exec_one() {
 # report_one LABEL: counts the PASS/FAIL lines of a finished test's log.
 report_one() {
     local label=$1
-    local name log rc secs limit p f checks plimit
+    local name log rc secs limit p f s checks plimit
     name=$(basename "$label")
     log="$log_dir/$name.log"
     rc= secs= limit=
     [ -e "$log.rc" ] && read -r rc secs limit <"$log.rc"
     p=$(grep -c '^PASS ' "$log" 2>/dev/null)
     f=$(grep -c '^FAIL ' "$log" 2>/dev/null)
-    p=${p:-0} f=${f:-0}
-    local ran=$((p + f))
-    grep -E '^(PASS|FAIL|  also) ' "$log" 2>/dev/null
+    s=$(grep -c '^SKIP ' "$log" 2>/dev/null)
+    p=${p:-0} f=${f:-0} s=${s:-0}
+    local ran=$((p + f + s))
+    grep -E '^(PASS|FAIL|SKIP|  also) ' "$log" 2>/dev/null
     read -r checks plimit < <(plan_of "$name")
     case $rc in
         '' | *[!0-9]*)
@@ -98,9 +104,12 @@ report_one() {
         f=$((f + 1))
     fi
     [ "$f" -gt 0 ] && echo "  (full log: $log)"
-    echo "  [$label: $p passed, $f failed, ${secs:-?} s]"
+    local skips=""
+    [ "$s" -gt 0 ] && skips=", $s skipped"
+    echo "  [$label: $p passed, $f failed$skips, ${secs:-?} s]"
     passed=$((passed + p))
     failed=$((failed + f))
+    skipped=$((skipped + s))
 }
 
 # Host tests are independent programs, and so are the scripts the plan
@@ -145,5 +154,9 @@ for t in "${board_list[@]}"; do
     report_one "$t"
 done
 
-echo "$passed passed, $failed failed"
+if [ "$skipped" -gt 0 ]; then
+    echo "$passed passed, $failed failed, $skipped skipped"
+else
+    echo "$passed passed, $failed failed"
+fi
 [ "$failed" -eq 0 ]

@@ -20,6 +20,7 @@ fake crash 'echo "PASS crash_a"; echo "PASS crash_b"; kill -SEGV $$'
 fake early 'echo "PASS early_a"; exit 0'
 fake silent 'exit 3'
 fake unplanned 'echo "PASS unplanned_a"'
+fake skips 'echo "PASS skips_a"; echo "SKIP skips_b: needs root"'
 meet() { # ME OTHER: a script that starts, then waits up to 20 s for OTHER to
     fake "host$1" "touch '$tmp/$1.started'
 for i in \$(seq 200); do
@@ -32,9 +33,10 @@ meet a b
 meet b a
 printf 'good.sh\t2\t10\nbad.sh\t2\t10\nhang.sh\t2\t2\ncrash.sh\t3\t10\nearly.sh\t3\t10\nsilent.sh\t1\t10\n' \
     >"$tmp/plan.tsv"
+printf 'skips.sh\t2\t10\n' >>"$tmp/plan.tsv"
 printf 'hosta.sh\t1\t30\thost\nhostb.sh\t1\t30\thost\n' >>"$tmp/plan.tsv"
 list=""
-for t in good bad hang crash early silent unplanned hosta hostb; do list="$list $tmp/$t.sh"; done
+for t in good bad hang crash early silent unplanned skips hosta hostb; do list="$list $tmp/$t.sh"; done
 out=$(TEST_PLAN="$tmp/plan.tsv" TEST_LOG_DIR="$tmp/logs" HOST_TESTS= BOARD_TESTS="$list" \
     HOST_JOBS=2 bash tests/run.sh 2>&1)
 rc=$?
@@ -56,16 +58,17 @@ expect crash_counts_short "FAIL .*crash.sh: ran 2 checks, .* declares 3"
 expect early_exit_fails "FAIL .*early.sh: ran 1 checks, .* declares 3"
 expect silent_exit_fails "FAIL .*silent.sh: exited with status 3 without naming a failed check"
 expect unplanned_test_fails "FAIL .*unplanned.sh: not declared in"
+expect counts_a_skipped_check "skips.sh: 1 passed, 0 failed, 1 skipped"
 if grep -q "hosta.sh: 1 passed, 0 failed" <<<"$out" && grep -q "hostb.sh: 1 passed, 0 failed" <<<"$out"; then
     echo "PASS runner_host_scripts_run_beside_each_other"
 else
     echo "FAIL runner_host_scripts_run_beside_each_other: $(grep -E 'host[ab]' <<<"$out" | tr '\n' ' ')"
 fi
-# good 2 + bad 1 + hang 1 + crash 2 + early 1 + unplanned 1 + hosta 1 +
-# hostb 1 passed; failed:
+# good 2 + bad 1 + hang 1 + crash 2 + early 1 + unplanned 1 + skips 1 +
+# hosta 1 + hostb 1 passed; skips 1 skipped; failed:
 # bad 1, hang 1, crash 2, early 1, silent 1 (+ its count? it ran 0 of 1:
 # counted), unplanned 1
-expect summary_adds_up "^10 passed, 9 failed$"
+expect summary_adds_up "^11 passed, 9 failed, 1 skipped$"
 if [ $rc -ne 0 ]; then
     echo "PASS runner_exit_status_says_failed"
 else
