@@ -291,8 +291,12 @@ host-tools: $(HOST_TOOL_BINS) $(BOARD_PROG_BINS)
 deps:
 	$(Q)bash host-tools/scripts/install-deps.sh
 
-run: deps
-	$(Q)$(MAKE) $(JOBS) --no-print-directory all
+# make run builds and installs only what rendering the demo needs: links1
+# and the machine's float firmware.
+run:
+	$(Q)$(if $(filter $(MACHINE),$(FW_MACHINES)),true,echo "make run: MACHINE=$(MACHINE): the machines are $(FW_MACHINES)" >&2; exit 2)
+	$(Q)bash host-tools/scripts/install-deps.sh run
+	$(Q)$(MAKE) $(JOBS) --no-print-directory $(B)/links1 $(call fw_elf,$(MACHINE),float)
 	$(Q)MACHINE=$(MACHINE) bash host-tools/scripts/make-run.sh
 
 # The board halted under QEMU's gdb stub, gdb-multiarch attached with the

@@ -1,12 +1,19 @@
 #!/usr/bin/env bash
-# install-deps.sh: makes sure the Debian packages links1 needs are present.
-# As root it installs what is missing with apt-get; otherwise it prints the
-# exact command to run and fails.
+# install-deps.sh [run]: makes sure the Debian packages links1 needs are
+# present: with "run" only what `make run` needs (build links1 and the float
+# firmware, render on the board), else everything (the tests, benchmarks,
+# farm, fuzzers, charts and films too).  As root it installs what is missing
+# with apt-get; otherwise it prints the exact command to run and fails.
 set -eu
-need_pkgs=(make gcc libc6-dev libpng-dev gcc-arm-none-eabi picolibc-arm-none-eabi
-           libnewlib-arm-none-eabi qemu-system-arm povray python3 libassimp-dev
-           clang libclang-rt-dev gdb-multiarch gnuplot-nox ffmpeg parallel
-           rsync openssh-server openssh-client time slurmctld slurmd slurm-client munge)
+need_pkgs=(make gcc libc6-dev libpng-dev libassimp-dev gcc-arm-none-eabi
+           picolibc-arm-none-eabi qemu-system-arm)
+# libpng-dev, libassimp-dev: links1 reads and writes PNG and reads models.
+if [ "${1:-}" != run ]; then
+    need_pkgs+=(libnewlib-arm-none-eabi povray python3 clang libclang-rt-dev
+                gdb-multiarch gnuplot-nox ffmpeg parallel rsync openssh-server
+                openssh-client time slurmctld slurmd slurm-client munge passwd
+                util-linux)
+fi
 # parallel, rsync, openssh-*: `links1 farm` hands frames to hosts through GNU parallel
 # (its --return copies frames back with rsync over ssh); the farm test starts a
 # throw-away sshd on localhost.  slurm*, munge: `links1 farm --slurm` submits
@@ -16,7 +23,8 @@ need_pkgs=(make gcc libc6-dev libpng-dev gcc-arm-none-eabi picolibc-arm-none-eab
 # gnuplot-nox: the charts of `make figures` and `make sweeps`, PNG without X.
 # clang: the fuzz harnesses (tests/fuzz/); libclang-rt-dev holds libFuzzer's
 # and the sanitizers' runtimes, which clang only recommends.  gdb-multiarch:
-# `make gdb`.
+# `make gdb`.  passwd, util-linux: useradd and runuser, the throw-away second
+# account of the tests that play another local user.
 missing=()
 for p in "${need_pkgs[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" ||
