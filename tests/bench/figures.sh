@@ -144,22 +144,8 @@ paste <(field ncs <"$TMP/r7-default.txt") <(field speed-up <"$TMP/r7-paper.txt")
     echo "Paper mode's run: $(grep -m1 'paper mode:' "$TMP/b7-paper.log" | sed 's/^links1 render: //')"
     sed -n 1,3p "$TMP/r7-paper.txt"
 } >"$OUT/fig7.md"
-gnuplot <<GP || fail "gnuplot fig7"
-set terminal pngcairo size 800,560
-set output "$OUT/fig7.png"
-set title "Fig. 7: speed-up against NCs (demo.scn $SIZE7)"
-set xlabel "NCs"; set ylabel "speed-up over 1 NC"
-set logscale xy 2; set key top left; set grid
-set xrange [0.8:320]; set yrange [0.8:320]
-plot x title "linear" with lines dt 2 lc rgb "gray", \
-     "$OUT/fig7.dat" using 1:2 title "board (largest NC's instructions)" with linespoints pt 7, \
-     "$OUT/fig7.dat" using 1:3 title "replay, paper mode (the reproduction): scanlines, NCs ask when finished" with linespoints pt 5, \
-     "$OUT/fig7.dat" using 1:4 title "replay, the board's default: NCs ask ahead" with linespoints pt 9 lw 2, \
-     "$OUT/fig7.dat" using 1:5 title "what-if: tuned K and factor, pipelined" with lines dt 3, \
-     "-" using 1:2 title "LINKS-1 (paper): 63.07x at 64" with points pt 3 ps 2 lc rgb "red"
-64 63.07
-e
-GP
+gnuplot -e "dat='$OUT/fig7.dat'; out='$OUT/fig7.png'; size='$SIZE7'" \
+    tests/bench/plots/fig7.gp || fail "gnuplot fig7"
 fi
 
 # ---- Fig. 10: simple dynamic balancing, 64 NCs, shadows off ----

@@ -205,7 +205,8 @@ rm -f "$out/pareto-board.sorted"
 # ---------------------------------------------------------------- charts
 awk -F'\t' 'NR > 1 { print $2, $3 }' "$out/pareto.tsv" >"$out/all.dat"
 awk -F'\t' 'NR > 1 && $7 == "yes" { print $2, $3 }' "$out/pareto.tsv" >"$out/front.dat"
-awk -F'\t' 'NR > 1 { gsub(/ /, "_", $1); print $2, $3, $1 }' "$out/pareto.tsv" >"$out/labels.dat"
+# labels on the front's points only (the table has them all)
+awk -F'\t' 'NR > 1 && $7 == "yes" { printf "%s %s \"%s\"\n", $2, $3, $1 }' "$out/pareto.tsv" >"$out/labels.dat"
 for a in float soft fixed double; do
     awk -F'\t' -v a=$a 'NR > 1 && $6 == a && $1 !~ /escalated/ { print $2, $3 }' \
         "$out/pareto-board.tsv" >"$out/board-$a.dat"
@@ -214,9 +215,11 @@ awk -F'\t' 'NR > 1 && $1 ~ /escalated/ { print $2, $3 }' "$out/pareto-board.tsv"
     >"$out/board-escalated.dat"
 awk -F'\t' 'NR > 1 && $8 == "yes" { print $2, $3 }' "$out/pareto-board.tsv" >"$out/board-front.dat"
 awk -F'\t' 'NR > 1 && $9 == "yes" { print $2, $3 }' "$out/pareto-board.tsv" >"$out/board-front-nofpu.dat"
-# labels on the fronts' points only (the table has them all)
-awk -F'\t' 'NR > 1 && ($8 == "yes" || $9 == "yes") { n = $1; sub(/^(float|soft|fixed|double) /, "", n); gsub(/ /, "_", n);
-    print $2, $3, n }' "$out/pareto-board.tsv" >"$out/board-labels.dat"
+# labels on the fronts' points only (the table has them all), each front's
+# by turns left and right of its points (column 4: 0 left, 1 right)
+awk -F'\t' 'NR > 1 && ($8 == "yes" || $9 == "yes") { n = $1; sub(/^(float|soft|fixed|double) /, "", n);
+    k = $8 == "yes" ? 0 : 1; printf "%s %s \"%s\" %d\n", $2, $3, n, turn[k]++ % 2 }' \
+    "$out/pareto-board.tsv" >"$out/board-labels.dat"
 if command -v gnuplot >/dev/null; then
     gnuplot <<GP
 set terminal pngcairo size 900,560 font ",9" noenhanced
@@ -227,7 +230,7 @@ set ylabel "PSNR against the reference, dB"
 set logscale x
 set grid
 set key bottom right
-plot "$out/all.dat" using 1:2 with points pt 7 ps 0.8 title "configuration", \
+plot "$out/all.dat" using 1:2 with points pt 7 ps 0.8 title "configuration (all: pareto.tsv)", \
      "$out/front.dat" using 1:2 with linespoints lw 2 pt 6 ps 1.5 title "Pareto front", \
      "$out/labels.dat" using 1:2:3 with labels font ",7" offset 0,0.7 notitle
 set output "$out/pareto-board.png"
@@ -240,7 +243,8 @@ plot "$out/board-float.dat" using 1:2 with points pt 7 ps 0.9 title "float (VFP)
      "$out/board-escalated.dat" using 1:2 with points pt 11 ps 1.4 title "float and fixed escalated (--escalate: lost pixels traced again in double)", \
      "$out/board-front.dat" using 1:2 with linespoints lw 2 pt 6 ps 1.5 title "Pareto front", \
      "$out/board-front-nofpu.dat" using 1:2 with linespoints lw 2 dt 2 pt 6 ps 1.5 title "Pareto front without an FPU (soft, fixed)", \
-     "$out/board-labels.dat" using 1:2:3 with labels font ",7" offset 0,0.7 notitle
+     "$out/board-labels.dat" using 1:(\$4 == 0 ? \$2 : NaN):3 with labels right font ",7" offset -1,0 notitle, \
+     "$out/board-labels.dat" using 1:(\$4 == 1 ? \$2 : NaN):3 with labels left font ",7" offset 1,0 notitle
 GP
 fi
 column -t -s$'\t' "$out/pareto.tsv"
