@@ -1,13 +1,16 @@
 /* cmd_replay.c: `links1 replay FILE --ncs LIST ...`: a traced frame
  * (links1 render --trace) replayed on equal-speed unit computers
  * (host-tools/trace/replay.h), one line per NC count. */
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "host-tools/opts/cli_opt.h"
 #include "host-tools/cli/links1_cmds.h"
+#include "host-tools/image/chart.h"
+#include "host-tools/opts/cli_opt.h"
 #include "host-tools/trace/replay.h"
+#include "host-tools/trace/replay_timeline.h"
 #include "host-tools/trace/trace_file.h"
 #include "proto/render_link.h"
 
@@ -15,6 +18,7 @@
 
 struct replay_opts {
     const char *file;
+    const char *timeline; /* --timeline OUT.png, or NULL */
     uint32_t ncs[REPLAY_MAX_COUNTS];
     int ncounts;
     struct replay_cfg cfg;
@@ -57,7 +61,10 @@ static void replay_usage(FILE *out)
             "                   schedule's, and each replay a legal handout of its own\n"
             "  --scale F        price the frame at F times the traced width and height,\n"
             "                   each pixel at its traced pixel's instructions (a frame\n"
-            "                   traced at a reduced size)\n",
+            "                   traced at a reduced size)\n"
+            "  --timeline OUT.png  draw the frame replayed at the one NC count given: a row\n"
+            "                   per unit computer, the DM preparing, the RC handing out,\n"
+            "                   each NC's areas and its idle time (needs gnuplot)\n",
             REPLAY_DEFAULT_MIPS, REPLAY_DEFAULT_LINE_US, REPLAY_DEFAULT_BYTE_US);
 }
 
@@ -78,6 +85,7 @@ enum replay_opt_code {
     REPLAY_OPT_CHECK,
     REPLAY_OPT_SCALE,
     REPLAY_OPT_PAPER,
+    REPLAY_OPT_TIMELINE,
 };
 
 static const struct option replay_options[] = {
@@ -97,6 +105,7 @@ static const struct option replay_options[] = {
     {"check", no_argument, NULL, REPLAY_OPT_CHECK},
     {"scale", required_argument, NULL, REPLAY_OPT_SCALE},
     {"paper", no_argument, NULL, REPLAY_OPT_PAPER},
+    {"timeline", required_argument, NULL, REPLAY_OPT_TIMELINE},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -189,6 +198,9 @@ static int replay_take(struct replay_opts *o, const struct cli *c, int code)
             return -1;
         o->scale = (uint32_t)n;
         return 0;
+    case REPLAY_OPT_TIMELINE:
+        o->timeline = c->arg;
+        return 0;
     }
     return -1;
 }
@@ -219,6 +231,34 @@ static int replay_parse(struct replay_opts *o, int argc, char **argv)
         replay_usage(stderr);
         return -1;
     }
+    if (o->timeline && o->ncounts != 1) {
+        fprintf(stderr, "links1 replay: --timeline draws one frame: give one NC count "
+                        "(--ncs N)\n");
+        return -1;
+    }
+    return 0;
+}
+
+/* The timeline of replay r into o->timeline.  0, or 1 after saying why. */
+static int replay_draw_timeline(const struct replay_opts *o, const struct trace *t,
+                                const struct replay_cfg *c, const struct replay_result *r)
+{
+    char err[PATH_MAX + 256], title[PATH_MAX + 128];
+    const char *name = strrchr(o->file, '/') ? strrchr(o->file, '/') + 1 : o->file;
+    snprintf(title, sizeof title, "%s: %ux%u on %u NCs, frame %.1f ms at %.1f MIPS", name,
+             (unsigned)t->width, (unsigned)t->height, (unsigned)c->ncs, r->frame_us / 1000.0,
+             c->mips);
+    struct chart ch;
+    if (chart_open(&ch, o->timeline, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 replay: --timeline %s\n", err);
+        return 1;
+    }
+    replay_timeline_script(ch.script, t, c, r, title);
+    if (chart_close(&ch, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 replay: --timeline %s\n", err);
+        return 1;
+    }
+    printf("  timeline: %s\n", o->timeline);
     return 0;
 }
 
@@ -323,6 +363,8 @@ int cmd_replay(int argc, char **argv)
         if (o.per_nc)
             for (uint32_t n = 0; n < c.ncs; n++)
                 printf("  nc %u insns %llu\n", (unsigned)n, (unsigned long long)res.nc_insns[n]);
+        if (o.timeline)
+            rc = replay_draw_timeline(&o, &t, &c, &res);
         if (o.check) {
             if (replay_check_legal(&t, &c, &res, err, sizeof err) != 0) {
                 fprintf(stderr, "links1 replay: --ncs %u: not a legal handout: %s\n",

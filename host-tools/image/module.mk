@@ -4,7 +4,8 @@ HT_IMAGE_IO_SRCS := host-tools/image/image_io.c
 HT_IMAGE_COMPARE_SRCS := host-tools/image/image_compare.c
 # Films: frames piped to the ffmpeg command (links1 render -o FILM.mp4).
 # Films and image files written whole (both through opts/out_file).
-HT_IMAGE_FILM_SRCS := host-tools/image/film.c host-tools/image/image_save.c
+# Charts: a gnuplot script piped to the gnuplot command (links1 replay --timeline).
+HT_IMAGE_FILM_SRCS := host-tools/image/film.c host-tools/image/image_save.c host-tools/image/chart.c
 ARITH_FREE_SRCS += $(HT_IMAGE_IO_SRCS) $(HT_IMAGE_FILM_SRCS)
 BOARD_TESTS += tests/images/ref_film.sh
 # (image_compare.c reads render/render.h for the --mark-lost colour)

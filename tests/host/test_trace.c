@@ -10,6 +10,7 @@
 #include <unistd.h>
 
 #include "host-tools/trace/replay.h"
+#include "host-tools/trace/replay_timeline.h"
 #include "host-tools/trace/trace_file.h"
 #include "proto/areas.h"
 #include "proto/render_link.h"
@@ -401,6 +402,64 @@ static void test_replay_refuses_bad_settings(void)
     trace_free(&t);
 }
 
+/* The timeline's bars (replay_timeline.h): one DM bar and one RC broadcast
+ * bar before the NCs start, one RC hand-out bar and one NC bar per area,
+ * the NC's on its own row; an NC's areas never overlap, and every bar lies
+ * within the frame.  Read back from the script's data block. */
+static void test_replay_timeline_bars(void)
+{
+    struct trace t;
+    char err[TRACE_ERR_MAX];
+    make_trace(&t, AREAS_DYNAMIC, 64, 48, 4, 64);
+    struct replay_cfg c = {.ncs = 5, .balance = AREAS_DYNAMIC, .k = 64, .mips = 1.0,
+                           .line_us = 1000, .byte_us = 520.8, .prefetch = 1};
+    struct replay_result r;
+    CHECK_EQ_INT(replay_run(&t, &c, &r, err, sizeof err), 0);
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    replay_timeline_script(f, &t, &c, &r, "test");
+    fclose(f);
+    unsigned count[TIMELINE_BARS] = {0};
+    double last_end[TIMELINE_ROW_NC0 + 5] = {0}, unit = r.frame_us >= 1e7 ? 1e6 : 1e3;
+    int bad_row = 0, overlap = 0, outside = 0;
+    char *data = strstr(text, "$bars << EOD\n");
+    CHECK(data != NULL && strstr(text, "\nplot $bars") != NULL);
+    for (char *line = data ? strchr(data, '\n') + 1 : NULL; line && strncmp(line, "EOD", 3);
+         line = strchr(line, '\n') + 1) {
+        double from, to;
+        unsigned row;
+        int kind;
+        if (sscanf(line, "%lf %lf %u %d", &from, &to, &row, &kind) != 4 || kind < 1 ||
+            kind >= TIMELINE_BARS || row >= TIMELINE_ROW_NC0 + c.ncs) {
+            bad_row = 1;
+            break;
+        }
+        count[kind]++;
+        outside |= from < 0 || to > r.frame_us / unit + 1e-6 || to <= from;
+        int nc_bar = kind == TIMELINE_NC_AREA || kind == TIMELINE_NC_AREA_NEXT ||
+                     kind == TIMELINE_NC_SETUP;
+        bad_row |= (nc_bar || kind == TIMELINE_IDLE) != (row >= TIMELINE_ROW_NC0);
+        if (nc_bar) {
+            overlap |= from < last_end[row] - 1e-6;
+            last_end[row] = to;
+        }
+    }
+    CHECK(!bad_row && !overlap && !outside);
+    CHECK_EQ_INT(count[TIMELINE_DM_PREPARE], 1);
+    CHECK_EQ_INT(count[TIMELINE_RC_BROADCAST], 1);
+    CHECK_EQ_INT(count[TIMELINE_IDLE], c.ncs);
+    CHECK_EQ_INT(count[TIMELINE_NC_SETUP], c.ncs);
+    CHECK_EQ_INT(count[TIMELINE_NC_AREA] + count[TIMELINE_NC_AREA_NEXT], r.nareas);
+    CHECK_EQ_INT(count[TIMELINE_RC_HANDOUT], r.nareas);
+    free(text);
+    replay_free(&r);
+    trace_free(&t);
+}
+
 int main(void)
 {
     if (!mkdtemp(test_dir)) {
@@ -414,6 +473,7 @@ int main(void)
     RUN(test_dynamic_replay_is_legal);
     RUN(test_replay_refuses_bad_settings);
     RUN(test_trace_scale);
+    RUN(test_replay_timeline_bars);
     char cmd[160];
     snprintf(cmd, sizeof cmd, "rm -rf %s", test_dir);
     if (system(cmd) != 0)
