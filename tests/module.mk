@@ -89,6 +89,8 @@ BENCHES += tests/bench/bench_wallclock.sh
 # The include rules of docs/layers.md: the tree follows them and the
 # checker refuses each kind of wrong include (`make check-layers` alone).
 BOARD_TESTS += tests/layers/layers.sh
+# What the docs name (paths, links, links1 options) exists.
+BOARD_TESTS += tests/docs/doc_refs.py
 # The runner counts what it says: hangs, crashes, early ends, unplanned tests.
 BOARD_TESTS += tests/runner/runner.sh
 # Every deliberate fault of tests/mutants/ still applies to the tree.
