@@ -119,6 +119,222 @@ static double replay_line(const struct replay_cfg *c, uint32_t bytes)
     return c->line_us + c->byte_us * bytes;
 }
 
+/* One replay under way: the NCs' pending requests and the RC's time. */
+struct replay_state {
+    const struct trace *t;
+    const struct replay_cfg *c;
+    struct replay_result *r;
+    struct replay_source src;
+    struct replay_pricer p;
+    uint32_t total;     /* areas the schedule hands out */
+    double us_per;      /* microseconds per instruction */
+    double t0;          /* the NCs start setting up */
+    double *pending;    /* [ncs]: the NC's request arrives at the RC, or INF */
+    double *sent;       /* [ncs]: when that request left */
+    double *busy_until; /* [ncs]: the NC's work ends */
+    double *computing;  /* [ncs]: the NC's computing so far */
+    double rc_free, rc_busy;
+};
+
+static void replay_source_free(struct replay_source *src, uint32_t ncs)
+{
+    if (src->list)
+        for (uint32_t n = 0; n < ncs; n++)
+            free(src->list[n]);
+    free(src->list);
+    free(src->count);
+    free(src->next_of_nc);
+}
+
+/* As recorded: each NC's areas in its order.  0, or -1 (out of memory). */
+static int replay_source_recorded(struct replay_source *src, const struct trace *t)
+{
+    src->next_of_nc = calloc(t->ncs, sizeof *src->next_of_nc);
+    src->count = calloc(t->ncs, sizeof *src->count);
+    src->list = calloc(t->ncs, sizeof *src->list);
+    if (!src->next_of_nc || !src->count || !src->list)
+        return -1;
+    for (uint32_t i = 0; i < t->nareas; i++)
+        src->count[t->areas[i].nc]++;
+    for (uint32_t n = 0; n < t->ncs; n++)
+        if (!(src->list[n] = calloc(src->count[n] ? src->count[n] : 1, sizeof **src->list)))
+            return -1;
+    for (uint32_t i = 0; i < t->nareas; i++)
+        src->list[t->areas[i].nc][t->areas[i].order] = i;
+    return 0;
+}
+
+static void replay_state_free(struct replay_state *s)
+{
+    replay_pricer_free(&s->p);
+    free(s->pending);
+    free(s->sent);
+    free(s->busy_until);
+    free(s->computing);
+    replay_source_free(&s->src, s->t->ncs);
+}
+
+/* The schedule, the pricer and the arrays.  0, or -1 with err filled. */
+static int replay_state_init(struct replay_state *s, char *err, size_t cap)
+{
+    const struct trace *t = s->t;
+    const struct replay_cfg *c = s->c;
+    struct replay_result *r = s->r;
+    s->src.t = t;
+    s->src.as_recorded = c->as_recorded;
+    int st = areas_init(&s->src.sched, c->as_recorded ? AREAS_STATIC : c->balance, t->width,
+                        t->height, c->ncs, c->k);
+    if (st == AREAS_OK && c->guided)
+        st = areas_set_guided_factor(&s->src.sched, c->guided);
+    if (st != AREAS_OK)
+        return replay_fail(err, cap, "area schedule: %s", areas_strerror(st));
+    s->total = c->as_recorded ? t->nareas : areas_count(&s->src.sched);
+    s->pending = malloc(c->ncs * sizeof *s->pending);
+    s->sent = malloc(c->ncs * sizeof *s->sent);
+    s->busy_until = calloc(c->ncs, sizeof *s->busy_until);
+    s->computing = calloc(c->ncs, sizeof *s->computing);
+    r->areas = calloc(s->total, sizeof *r->areas);
+    r->nc_insns = calloc(c->ncs, sizeof *r->nc_insns);
+    r->nc_setup_end = calloc(c->ncs, sizeof *r->nc_setup_end);
+    if (replay_pricer_init(&s->p, t) != 0 || !s->pending || !s->sent || !s->busy_until ||
+        !s->computing || !r->areas || !r->nc_insns || !r->nc_setup_end ||
+        (c->as_recorded && replay_source_recorded(&s->src, t) != 0))
+        return replay_fail(err, cap, "out of memory");
+    return 0;
+}
+
+/* The request line's lead of an NC asking ahead: one round trip before
+ * the area's end, never before its start. */
+static double replay_ask_time(const struct replay_state *s, double start, double end)
+{
+    if (!s->c->prefetch)
+        return end;
+    double lead = replay_line(s->c, REPLAY_REQUEST_BYTES) + replay_line(s->c, REPLAY_ANSWER_BYTES) +
+                  (double)s->p.rc_mean * s->us_per;
+    return end - lead > start ? end - lead : start;
+}
+
+/* NC nc computes area a (insns instructions) from start; it asks again. */
+static void replay_compute(struct replay_state *s, uint32_t nc, const struct area *a,
+                           uint64_t insns, int exact, int in_broadcast, double served[3],
+                           double start)
+{
+    struct replay_result *r = s->r;
+    double end = start + (double)insns * s->us_per;
+    r->areas[r->nareas++] = (struct replay_area){a->x, a->y, a->w, a->h, nc, insns, exact,
+                                                 in_broadcast, served[0], served[1],
+                                                 served[2], start, end};
+    r->exact += (uint32_t)exact;
+    s->busy_until[nc] = end;
+    s->computing[nc] += end - start;
+    r->nc_insns[nc] += insns;
+    s->sent[nc] = replay_ask_time(s, start, end);
+    s->pending[nc] = s->sent[nc] + replay_line(s->c, REPLAY_REQUEST_BYTES);
+}
+
+/* Each NC set up and its first request on the line. */
+static void replay_setup(struct replay_state *s)
+{
+    const struct replay_cfg *c = s->c;
+    s->t0 = (double)((c->pipelined ? 0 : s->t->dm_prepare) + s->t->rc_broadcast) * s->us_per;
+    for (uint32_t n = 0; n < c->ncs; n++) {
+        uint64_t setup = c->as_recorded ? s->t->nc_setup[n] : s->p.setup_mean;
+        s->r->nc_setup_end[n] = s->busy_until[n] = s->t0 + (double)setup * s->us_per;
+        s->computing[n] = (double)setup * s->us_per;
+        s->sent[n] = s->busy_until[n];
+        s->pending[n] = s->sent[n] + replay_line(c, REPLAY_REQUEST_BYTES);
+    }
+    s->rc_free = s->t0;
+}
+
+/* --first-in-broadcast: the RC takes each NC's first area from the
+ * schedule before the broadcast goes out; the NCs start on it after their
+ * set-up.  0, or -1 with err filled. */
+static int replay_first_in_broadcast(struct replay_state *s, char *err, size_t cap)
+{
+    uint32_t ncs = s->c->ncs;
+    struct area *first = calloc(ncs, sizeof *first);
+    uint64_t *first_insns = calloc(ncs, sizeof *first_insns);
+    int *first_exact = calloc(ncs, sizeof *first_exact);
+    int *have = calloc(ncs, sizeof *have);
+    int rc = !first || !first_insns || !first_exact || !have
+                 ? replay_fail(err, cap, "out of memory") : 0;
+    for (uint32_t n = 0; rc == 0 && n < ncs; n++) {
+        uint64_t rc_insns = s->p.rc_mean;
+        have[n] = replay_next(&s->src, n, &first[n]);
+        if (have[n])
+            first_insns[n] = replay_price(&s->p, &first[n], &first_exact[n], &rc_insns);
+        s->rc_free += (double)rc_insns * s->us_per;
+    }
+    double shift = s->rc_free - s->t0, served[3] = {s->t0, s->t0, s->rc_free};
+    if (rc == 0)
+        s->rc_busy += shift;
+    for (uint32_t n = 0; rc == 0 && n < ncs; n++) {
+        s->r->nc_setup_end[n] += shift;
+        s->busy_until[n] += shift;
+        if (!have[n])
+            s->pending[n] = INFINITY;
+        else
+            replay_compute(s, n, &first[n], first_insns[n], first_exact[n], 1, served,
+                           s->busy_until[n]);
+    }
+    free(first);
+    free(first_insns);
+    free(first_exact);
+    free(have);
+    return rc;
+}
+
+/* The RC serves requests in the order they arrive until every NC is told
+ * to stop.  0, or -1 with err filled. */
+static int replay_serve(struct replay_state *s, char *err, size_t cap)
+{
+    for (;;) {
+        uint32_t nc = 0;
+        double first = INFINITY;
+        for (uint32_t n = 0; n < s->c->ncs; n++)
+            if (s->pending[n] < first) {
+                first = s->pending[n];
+                nc = n;
+            }
+        if (first == INFINITY)
+            return 0;
+        struct area a;
+        int have = replay_next(&s->src, nc, &a), exact = 0;
+        uint64_t rc_insns = s->p.rc_mean, insns = 0;
+        if (have)
+            insns = replay_price(&s->p, &a, &exact, &rc_insns);
+        double start = s->rc_free > first ? s->rc_free : first;
+        double end = start + (double)rc_insns * s->us_per;
+        s->rc_free = end;
+        s->rc_busy += end - start;
+        if (!have) {
+            s->pending[nc] = INFINITY;
+            continue;
+        }
+        if (s->r->nareas == s->total)
+            return replay_fail(err, cap, "the schedule handed out more areas than it counts");
+        double arrive = end + replay_line(s->c, REPLAY_ANSWER_BYTES);
+        double served[3] = {s->sent[nc], start, end};
+        replay_compute(s, nc, &a, insns, exact, 0, served,
+                       arrive > s->busy_until[nc] ? arrive : s->busy_until[nc]);
+    }
+}
+
+/* The frame's end, and how busy the NCs and the RC were. */
+static void replay_totals(struct replay_state *s)
+{
+    double frame = s->t0, work = 0;
+    for (uint32_t n = 0; n < s->c->ncs; n++) {
+        if (s->busy_until[n] > frame)
+            frame = s->busy_until[n];
+        work += s->computing[n];
+    }
+    s->r->frame_us = frame;
+    s->r->busy = frame > 0 ? work / (s->c->ncs * frame) : 0;
+    s->r->rc_busy = frame > 0 ? s->rc_busy / frame : 0;
+}
+
 int replay_run(const struct trace *t, const struct replay_cfg *c, struct replay_result *r,
                char *err, size_t cap)
 {
@@ -130,184 +346,23 @@ int replay_run(const struct trace *t, const struct replay_cfg *c, struct replay_
     if (c->as_recorded && c->ncs != t->ncs)
         return replay_fail(err, cap, "--as-recorded replays the board's %" PRIu32 " NCs, not %"
                            PRIu32, t->ncs, c->ncs);
-    struct replay_source src;
-    memset(&src, 0, sizeof src);
-    src.t = t;
-    src.as_recorded = c->as_recorded;
-    int st = areas_init(&src.sched, c->as_recorded ? AREAS_STATIC : c->balance, t->width,
-                        t->height, c->ncs, c->k);
-    if (st == AREAS_OK && c->guided)
-        st = areas_set_guided_factor(&src.sched, c->guided);
-    if (st != AREAS_OK)
-        return replay_fail(err, cap, "area schedule: %s", areas_strerror(st));
-    struct replay_pricer p;
-    int rc = -1;
-    uint32_t total = c->as_recorded ? t->nareas : areas_count(&src.sched);
-    double *pending = malloc(c->ncs * sizeof *pending);      /* request arrival, or INF */
-    double *sent = malloc(c->ncs * sizeof *sent);            /* when that request left */
-    double *busy_until = calloc(c->ncs, sizeof *busy_until);
-    double *computing = calloc(c->ncs, sizeof *computing);
-    r->areas = calloc(total, sizeof *r->areas);
-    r->nc_insns = calloc(c->ncs, sizeof *r->nc_insns);
-    r->nc_setup_end = calloc(c->ncs, sizeof *r->nc_setup_end);
-    if (c->as_recorded) {
-        src.next_of_nc = calloc(t->ncs, sizeof *src.next_of_nc);
-        src.count = calloc(t->ncs, sizeof *src.count);
-        src.list = calloc(t->ncs, sizeof *src.list);
+    struct replay_state s;
+    memset(&s, 0, sizeof s);
+    s.t = t;
+    s.c = c;
+    s.r = r;
+    s.us_per = 1.0 / c->mips;
+    int rc = replay_state_init(&s, err, cap);
+    if (rc == 0) {
+        replay_setup(&s);
+        if (c->first_in_broadcast)
+            rc = replay_first_in_broadcast(&s, err, cap);
     }
-    if (replay_pricer_init(&p, t) != 0 || !pending || !sent || !busy_until || !computing ||
-        !r->areas || !r->nc_insns || !r->nc_setup_end ||
-        (c->as_recorded && (!src.next_of_nc || !src.count || !src.list))) {
-        replay_fail(err, cap, "out of memory");
-        goto out;
-    }
-    if (c->as_recorded) {
-        for (uint32_t i = 0; i < t->nareas; i++)
-            src.count[t->areas[i].nc]++;
-        for (uint32_t n = 0; n < t->ncs; n++) {
-            src.list[n] = calloc(src.count[n] ? src.count[n] : 1, sizeof **src.list);
-            if (!src.list[n]) {
-                replay_fail(err, cap, "out of memory");
-                goto out;
-            }
-        }
-        for (uint32_t i = 0; i < t->nareas; i++)
-            src.list[t->areas[i].nc][t->areas[i].order] = i;
-    }
-    double us_per = 1.0 / c->mips; /* microseconds per instruction */
-    double t0 = (double)((c->pipelined ? 0 : t->dm_prepare) + t->rc_broadcast) * us_per;
-    for (uint32_t n = 0; n < c->ncs; n++) {
-        uint64_t setup = c->as_recorded ? t->nc_setup[n] : p.setup_mean;
-        r->nc_setup_end[n] = busy_until[n] = t0 + (double)setup * us_per;
-        computing[n] = (double)setup * us_per;
-        sent[n] = busy_until[n];
-        pending[n] = sent[n] + replay_line(c, REPLAY_REQUEST_BYTES);
-    }
-    double rc_free = t0, rc_busy = 0;
-    if (c->first_in_broadcast) {
-        /* The RC takes each NC's first area from the schedule before the
-         * broadcast goes out; the NCs start on it after their set-up. */
-        struct area *first = calloc(c->ncs, sizeof *first);
-        uint64_t *first_insns = calloc(c->ncs, sizeof *first_insns);
-        int *first_exact = calloc(c->ncs, sizeof *first_exact);
-        int *have = calloc(c->ncs, sizeof *have);
-        if (!first || !first_insns || !first_exact || !have) {
-            free(first);
-            free(first_insns);
-            free(first_exact);
-            free(have);
-            replay_fail(err, cap, "out of memory");
-            goto out;
-        }
-        for (uint32_t n = 0; n < c->ncs; n++) {
-            uint64_t rc_insns = p.rc_mean;
-            have[n] = replay_next(&src, n, &first[n]);
-            if (have[n])
-                first_insns[n] = replay_price(&p, &first[n], &first_exact[n], &rc_insns);
-            rc_free += (double)rc_insns * us_per;
-        }
-        rc_busy += rc_free - t0;
-        for (uint32_t n = 0; n < c->ncs; n++) {
-            double shift = rc_free - t0;
-            r->nc_setup_end[n] += shift;
-            busy_until[n] += shift;
-            if (!have[n]) {
-                pending[n] = INFINITY;
-                continue;
-            }
-            double start = busy_until[n], end = start + (double)first_insns[n] * us_per;
-            struct replay_area *ra = &r->areas[r->nareas++];
-            *ra = (struct replay_area){first[n].x, first[n].y, first[n].w, first[n].h, n,
-                                       first_insns[n], first_exact[n], 1, t0, t0, rc_free,
-                                       start, end};
-            r->exact += (uint32_t)first_exact[n];
-            busy_until[n] = end;
-            computing[n] += end - start;
-            r->nc_insns[n] += first_insns[n];
-            sent[n] = end;
-            if (c->prefetch) {
-                double lead = replay_line(c, REPLAY_REQUEST_BYTES) +
-                              replay_line(c, REPLAY_ANSWER_BYTES) + (double)p.rc_mean * us_per;
-                sent[n] = end - lead > start ? end - lead : start;
-            }
-            pending[n] = sent[n] + replay_line(c, REPLAY_REQUEST_BYTES);
-        }
-        free(first);
-        free(first_insns);
-        free(first_exact);
-        free(have);
-    }
-    for (;;) {
-        uint32_t nc = 0;
-        double first = INFINITY;
-        for (uint32_t n = 0; n < c->ncs; n++)
-            if (pending[n] < first) {
-                first = pending[n];
-                nc = n;
-            }
-        if (first == INFINITY)
-            break;
-        struct area a;
-        int have = replay_next(&src, nc, &a);
-        int exact = 0;
-        uint64_t rc_insns = p.rc_mean, insns = 0;
-        if (have)
-            insns = replay_price(&p, &a, &exact, &rc_insns);
-        double s = rc_free > first ? rc_free : first;
-        double e = s + (double)rc_insns * us_per;
-        rc_free = e;
-        rc_busy += e - s;
-        if (!have) {
-            pending[nc] = INFINITY;
-            continue;
-        }
-        if (r->nareas == total) {
-            replay_fail(err, cap, "the schedule handed out more areas than it counts");
-            goto out;
-        }
-        double arrive = e + replay_line(c, REPLAY_ANSWER_BYTES);
-        double start = arrive > busy_until[nc] ? arrive : busy_until[nc];
-        double end = start + (double)insns * us_per;
-        struct replay_area *ra = &r->areas[r->nareas++];
-        *ra = (struct replay_area){a.x, a.y, a.w, a.h, nc, insns, exact, 0, sent[nc], s, e,
-                                   start, end};
-        r->exact += (uint32_t)exact;
-        busy_until[nc] = end;
-        computing[nc] += end - start;
-        r->nc_insns[nc] += insns;
-        if (c->prefetch) {
-            /* One round trip before the area's end, never before its start. */
-            double lead = replay_line(c, REPLAY_REQUEST_BYTES) + replay_line(c, REPLAY_ANSWER_BYTES) +
-                          (double)p.rc_mean * us_per;
-            sent[nc] = end - lead > start ? end - lead : start;
-        } else {
-            sent[nc] = end;
-        }
-        pending[nc] = sent[nc] + replay_line(c, REPLAY_REQUEST_BYTES);
-    }
-    double frame = t0;
-    double work = 0;
-    for (uint32_t n = 0; n < c->ncs; n++) {
-        if (busy_until[n] > frame)
-            frame = busy_until[n];
-        work += computing[n];
-    }
-    r->frame_us = frame;
-    r->busy = frame > 0 ? work / (c->ncs * frame) : 0;
-    r->rc_busy = frame > 0 ? rc_busy / frame : 0;
-    rc = 0;
-out:
-    replay_pricer_free(&p);
-    free(pending);
-    free(sent);
-    free(busy_until);
-    free(computing);
-    if (src.list)
-        for (uint32_t n = 0; n < t->ncs; n++)
-            free(src.list[n]);
-    free(src.list);
-    free(src.count);
-    free(src.next_of_nc);
+    if (rc == 0)
+        rc = replay_serve(&s, err, cap);
+    if (rc == 0)
+        replay_totals(&s);
+    replay_state_free(&s);
     if (rc != 0)
         replay_free(r);
     return rc;
