@@ -262,6 +262,115 @@ static int replay_draw_timeline(const struct replay_opts *o, const struct trace 
     return 0;
 }
 
+/* The schedule replayed: what was given, the trace's where not (--paper:
+ * the paper's, but what was given beside it).  1 when it is a what-if,
+ * a schedule or speed other than the board's (an option that only repeats
+ * what the board ran, as --paper on a paper-mode trace, is not). */
+static int replay_settle(struct replay_opts *o, const struct trace *t)
+{
+    if (o->paper) {
+        if (!o->have_balance)
+            o->cfg.balance = AREAS_LINES;
+        if (!o->have_k)
+            o->cfg.k = t->height;
+        if (!o->have_ask)
+            o->cfg.prefetch = 0;
+        o->have_balance = o->have_k = o->have_ask = 1;
+        printf("links1 replay: paper mode: areas %s K %u, ask %s\n",
+               areas_mode_name(o->cfg.balance), (unsigned)o->cfg.k,
+               o->cfg.prefetch ? "ahead" : "finished");
+    }
+    int board_ahead = !(t->flags & LINK_RENDER_ASK_WHEN_DONE);
+    if (!o->have_balance)
+        o->cfg.balance = (enum areas_mode)t->balance;
+    if (!o->have_k)
+        o->cfg.k = t->k;
+    if (!o->have_guided)
+        o->cfg.guided = t->guided;
+    if (!o->have_ask)
+        o->cfg.prefetch = board_ahead;
+    return (o->have_balance && o->cfg.balance != (enum areas_mode)t->balance) ||
+           (o->have_k && o->cfg.k != t->k) || (o->have_guided && o->cfg.guided != t->guided) ||
+           (o->have_ask && o->cfg.prefetch != board_ahead) || o->cfg.pipelined ||
+           o->cfg.first_in_broadcast || o->cfg.mips != REPLAY_DEFAULT_MIPS ||
+           o->cfg.line_us != REPLAY_DEFAULT_LINE_US || o->cfg.byte_us != REPLAY_DEFAULT_BYTE_US;
+}
+
+static void replay_say_trace(const struct replay_opts *o, const struct trace *t, int what_if)
+{
+    if (o->scale > 1)
+        printf("scaled %ux: each pixel of the %ux%u frame priced at its traced pixel's\n",
+               (unsigned)o->scale, (unsigned)t->width, (unsigned)t->height);
+    printf("trace %s: %ux%u, %u areas on %u NCs (%s); DM %llu, RC broadcast %llu insns; "
+           "%u bytes broadcast\n", o->file, (unsigned)t->width, (unsigned)t->height,
+           (unsigned)t->nareas, (unsigned)t->ncs, areas_mode_name((enum areas_mode)t->balance),
+           (unsigned long long)t->dm_prepare, (unsigned long long)t->rc_broadcast,
+           (unsigned)t->broadcast_bytes);
+    printf("replayed: %s; %s%s\n", what_if ? "a what-if" : "what the board does",
+           o->cfg.prefetch ? "NCs asking ahead" : "NCs asking when finished",
+           o->cfg.balance == AREAS_DECREASING && (!o->cfg.k || !o->cfg.guided)
+               ? "; K and factor by NC count where not given"
+               : "");
+}
+
+/* One NC count replayed and its line printed (with --per-nc, --check and
+ * --timeline what they add).  0, or 1 after saying why. */
+static int replay_one(const struct replay_opts *o, const struct trace *t, uint32_t ncs,
+                      const struct replay_result *base)
+{
+    char err[TRACE_ERR_MAX];
+    struct replay_cfg c = o->cfg;
+    c.ncs = ncs;
+    struct replay_result res;
+    if (replay_run(t, &c, &res, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 replay: --ncs %u: %s\n", (unsigned)c.ncs, err);
+        return 1;
+    }
+    uint64_t most = 0;
+    for (uint32_t n = 0; n < c.ncs; n++)
+        most = res.nc_insns[n] > most ? res.nc_insns[n] : most;
+    uint32_t k, factor;
+    areas_settings(c.balance, c.ncs, c.k, c.guided, &k, &factor);
+    printf("ncs %u balance %s areas %u frame_ms %.1f speed-up %.2f busy %.1f%% rc_busy "
+           "%.1f%% exact %u/%u largest_nc_insns %llu k %u factor %u ask %s\n",
+           (unsigned)c.ncs, c.as_recorded ? "as-recorded" : areas_mode_name(c.balance),
+           (unsigned)res.nareas, res.frame_us / 1000.0, base->frame_us / res.frame_us,
+           100.0 * res.busy, 100.0 * res.rc_busy, (unsigned)res.exact, (unsigned)res.nareas,
+           (unsigned long long)most, (unsigned)k, (unsigned)factor,
+           c.prefetch ? "ahead" : "finished");
+    if (o->per_nc)
+        for (uint32_t n = 0; n < c.ncs; n++)
+            printf("  nc %u insns %llu\n", (unsigned)n, (unsigned long long)res.nc_insns[n]);
+    int rc = o->timeline ? replay_draw_timeline(o, t, &c, &res) : 0;
+    if (o->check) {
+        if (replay_check_legal(t, &c, &res, err, sizeof err) != 0) {
+            fprintf(stderr, "links1 replay: --ncs %u: not a legal handout: %s\n",
+                    (unsigned)c.ncs, err);
+            rc = 1;
+        } else {
+            printf("  legal handout of %u areas\n", (unsigned)res.nareas);
+        }
+    }
+    replay_free(&res);
+    return rc;
+}
+
+/* The trace read and scaled.  0, or 1 after saying why. */
+static int replay_load(const struct replay_opts *o, struct trace *t)
+{
+    char err[TRACE_ERR_MAX];
+    if (trace_read(o->file, t, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 replay: %s\n", err);
+        return 1;
+    }
+    if (trace_scale(t, o->scale, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 replay: %s: %s\n", o->file, err);
+        trace_free(t);
+        return 1;
+    }
+    return 0;
+}
+
 int cmd_replay(int argc, char **argv)
 {
     struct replay_opts o;
@@ -269,59 +378,10 @@ int cmd_replay(int argc, char **argv)
     if (r != 0)
         return r > 0 ? 0 : 2;
     struct trace t;
+    if (replay_load(&o, &t) != 0)
+        return 1;
+    replay_say_trace(&o, &t, replay_settle(&o, &t));
     char err[TRACE_ERR_MAX];
-    if (trace_read(o.file, &t, err, sizeof err) != 0) {
-        fprintf(stderr, "links1 replay: %s\n", err);
-        return 1;
-    }
-    if (trace_scale(&t, o.scale, err, sizeof err) != 0) {
-        fprintf(stderr, "links1 replay: %s: %s\n", o.file, err);
-        trace_free(&t);
-        return 1;
-    }
-    if (o.paper) { /* the paper's schedule, but what was given beside it */
-        if (!o.have_balance)
-            o.cfg.balance = AREAS_LINES;
-        if (!o.have_k)
-            o.cfg.k = t.height;
-        if (!o.have_ask)
-            o.cfg.prefetch = 0;
-        o.have_balance = o.have_k = o.have_ask = 1;
-        printf("links1 replay: paper mode: areas %s K %u, ask %s\n",
-               areas_mode_name(o.cfg.balance), (unsigned)o.cfg.k,
-               o.cfg.prefetch ? "ahead" : "finished");
-    }
-    if (!o.have_balance)
-        o.cfg.balance = (enum areas_mode)t.balance;
-    if (!o.have_k)
-        o.cfg.k = t.k;
-    if (!o.have_guided)
-        o.cfg.guided = t.guided;
-    if (!o.have_ask)
-        o.cfg.prefetch = !(t.flags & LINK_RENDER_ASK_WHEN_DONE);
-    /* a what-if: a schedule other than the trace's (an option that only
-     * repeats what the board ran, as --paper on a paper-mode trace, is not) */
-    int what_if = (o.have_balance && o.cfg.balance != (enum areas_mode)t.balance) ||
-                  (o.have_k && o.cfg.k != t.k) || (o.have_guided && o.cfg.guided != t.guided) ||
-                  (o.have_ask && o.cfg.prefetch != !(t.flags & LINK_RENDER_ASK_WHEN_DONE)) ||
-                  o.cfg.pipelined ||
-                  o.cfg.first_in_broadcast || o.cfg.mips != REPLAY_DEFAULT_MIPS ||
-                  o.cfg.line_us != REPLAY_DEFAULT_LINE_US ||
-                  o.cfg.byte_us != REPLAY_DEFAULT_BYTE_US;
-    if (o.scale > 1)
-        printf("scaled %ux: each pixel of the %ux%u frame priced at its traced pixel's\n",
-               (unsigned)o.scale, (unsigned)t.width, (unsigned)t.height);
-    printf("trace %s: %ux%u, %u areas on %u NCs (%s); DM %llu, RC broadcast %llu insns; "
-           "%u bytes broadcast\n", o.file, (unsigned)t.width, (unsigned)t.height,
-           (unsigned)t.nareas, (unsigned)t.ncs, areas_mode_name((enum areas_mode)t.balance),
-           (unsigned long long)t.dm_prepare, (unsigned long long)t.rc_broadcast,
-           (unsigned)t.broadcast_bytes);
-    printf("replayed: %s; %s%s\n", what_if ? "a what-if" : "what the board does",
-           o.cfg.prefetch ? "NCs asking ahead" : "NCs asking when finished",
-           o.cfg.balance == AREAS_DECREASING && (!o.cfg.k || !o.cfg.guided)
-               ? "; K and factor by NC count where not given"
-               : "");
-    int rc = 0;
     if (o.check && o.scale == 1) {
         if (replay_check_board(&t, err, sizeof err) != 0) {
             fprintf(stderr, "links1 replay: %s: the board's handout: %s\n", o.file, err);
@@ -339,43 +399,9 @@ int cmd_replay(int argc, char **argv)
         trace_free(&t);
         return 1;
     }
-    for (int i = 0; i < o.ncounts && rc == 0; i++) {
-        struct replay_cfg c = o.cfg;
-        c.ncs = o.ncs[i];
-        struct replay_result res;
-        if (replay_run(&t, &c, &res, err, sizeof err) != 0) {
-            fprintf(stderr, "links1 replay: --ncs %u: %s\n", (unsigned)c.ncs, err);
-            rc = 1;
-            break;
-        }
-        uint64_t most = 0;
-        for (uint32_t n = 0; n < c.ncs; n++)
-            most = res.nc_insns[n] > most ? res.nc_insns[n] : most;
-        uint32_t k, factor;
-        areas_settings(c.balance, c.ncs, c.k, c.guided, &k, &factor);
-        printf("ncs %u balance %s areas %u frame_ms %.1f speed-up %.2f busy %.1f%% rc_busy "
-               "%.1f%% exact %u/%u largest_nc_insns %llu k %u factor %u ask %s\n",
-               (unsigned)c.ncs, c.as_recorded ? "as-recorded" : areas_mode_name(c.balance),
-               (unsigned)res.nareas, res.frame_us / 1000.0, base.frame_us / res.frame_us,
-               100.0 * res.busy, 100.0 * res.rc_busy, (unsigned)res.exact, (unsigned)res.nareas,
-               (unsigned long long)most, (unsigned)k, (unsigned)factor,
-               c.prefetch ? "ahead" : "finished");
-        if (o.per_nc)
-            for (uint32_t n = 0; n < c.ncs; n++)
-                printf("  nc %u insns %llu\n", (unsigned)n, (unsigned long long)res.nc_insns[n]);
-        if (o.timeline)
-            rc = replay_draw_timeline(&o, &t, &c, &res);
-        if (o.check) {
-            if (replay_check_legal(&t, &c, &res, err, sizeof err) != 0) {
-                fprintf(stderr, "links1 replay: --ncs %u: not a legal handout: %s\n",
-                        (unsigned)c.ncs, err);
-                rc = 1;
-            } else {
-                printf("  legal handout of %u areas\n", (unsigned)res.nareas);
-            }
-        }
-        replay_free(&res);
-    }
+    int rc = 0;
+    for (int i = 0; i < o.ncounts && rc == 0; i++)
+        rc = replay_one(&o, &t, o.ncs[i], &base);
     replay_free(&base);
     trace_free(&t);
     return rc;
