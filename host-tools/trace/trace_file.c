@@ -187,27 +187,20 @@ static int trace_end_of_line(char *p)
 #define U32 UINT32_MAX
 #define U64 UINT64_MAX
 
-static int trace_parse(struct trace_in *in, struct trace *t, char *err, size_t cap)
-{
-    char *p, mode[16];
-    uint64_t v[10];
+/* Each part of the file below reads its lines from in into t; 0, or -1
+ * with "PATH line N: what it wants" in err. */
 #define WANT(cond, what)                                                                        \
     do {                                                                                        \
         if (!(cond))                                                                            \
             return trace_fail(err, cap, "%s line %lu: %s", in->path, in->no, what);             \
     } while (0)
-    p = trace_line(in);
-    WANT(p && trace_word(&p, TRACE_MAGIC) == 0 && trace_num(&p, U32, &v[0]) == 0,
-         "not a links1 trace (want '" TRACE_MAGIC " 2')");
-    WANT(v[0] == 1 || v[0] == TRACE_VERSION, "trace version not 1 or 2");
-    int v1 = v[0] == 1;
-    p = trace_line(in);
-    WANT(p && trace_word(&p, "screen") == 0 && trace_num(&p, AREAS_MAX_DIM, &v[0]) == 0 &&
-         trace_num(&p, AREAS_MAX_DIM, &v[1]) == 0 && trace_end_of_line(p) == 0 && v[0] && v[1],
-         "want 'screen W H' (1..4096 each)");
-    t->width = (uint32_t)v[0];
-    t->height = (uint32_t)v[1];
-    p = trace_line(in);
+
+/* "run ncs N balance MODE k K guided G flags F" (version 1: no guided). */
+static int trace_parse_run(struct trace_in *in, struct trace *t, int v1, char *err, size_t cap)
+{
+    char mode[16];
+    uint64_t v[4];
+    char *p = trace_line(in);
     WANT(p && trace_word(&p, "run") == 0 && trace_word(&p, "ncs") == 0 &&
          trace_num(&p, 4096, &v[0]) == 0 && v[0] && trace_word(&p, "balance") == 0 &&
          sscanf(p, " %15s", mode) == 1, "want 'run ncs N balance MODE k K guided G flags F'");
@@ -233,6 +226,26 @@ static int trace_parse(struct trace_in *in, struct trace *t, char *err, size_t c
         t->guided = 2;
         t->flags |= LINK_RENDER_ASK_WHEN_DONE;
     }
+    return 0;
+}
+
+/* The magic and version, the screen, the run, the DM's and RC's counts. */
+static int trace_parse_head(struct trace_in *in, struct trace *t, char *err, size_t cap)
+{
+    uint64_t v[2];
+    char *p = trace_line(in);
+    WANT(p && trace_word(&p, TRACE_MAGIC) == 0 && trace_num(&p, U32, &v[0]) == 0,
+         "not a links1 trace (want '" TRACE_MAGIC " 2')");
+    WANT(v[0] == 1 || v[0] == TRACE_VERSION, "trace version not 1 or 2");
+    int v1 = v[0] == 1;
+    p = trace_line(in);
+    WANT(p && trace_word(&p, "screen") == 0 && trace_num(&p, AREAS_MAX_DIM, &v[0]) == 0 &&
+         trace_num(&p, AREAS_MAX_DIM, &v[1]) == 0 && trace_end_of_line(p) == 0 && v[0] && v[1],
+         "want 'screen W H' (1..4096 each)");
+    t->width = (uint32_t)v[0];
+    t->height = (uint32_t)v[1];
+    if (trace_parse_run(in, t, v1, err, cap) != 0)
+        return -1;
     p = trace_line(in);
     WANT(p && trace_word(&p, "dm_prepare") == 0 && trace_num(&p, U64, &t->dm_prepare) == 0 &&
          trace_end_of_line(p) == 0, "want 'dm_prepare INSNS'");
@@ -245,15 +258,29 @@ static int trace_parse(struct trace_in *in, struct trace *t, char *err, size_t c
     p = trace_line(in);
     WANT(p && trace_word(&p, "rc_other") == 0 && trace_num(&p, U64, &t->rc_other) == 0 &&
          trace_end_of_line(p) == 0, "want 'rc_other INSNS'");
+    return 0;
+}
+
+/* "nc I setup INSNS" for each NC in order. */
+static int trace_parse_setups(struct trace_in *in, struct trace *t, char *err, size_t cap)
+{
+    uint64_t v;
     t->nc_setup = calloc(t->ncs, sizeof *t->nc_setup);
     WANT(t->nc_setup, "out of memory");
     for (uint32_t i = 0; i < t->ncs; i++) {
-        p = trace_line(in);
-        WANT(p && trace_word(&p, "nc") == 0 && trace_num(&p, U32, &v[0]) == 0 && v[0] == i &&
+        char *p = trace_line(in);
+        WANT(p && trace_word(&p, "nc") == 0 && trace_num(&p, U32, &v) == 0 && v == i &&
              trace_word(&p, "setup") == 0 && trace_num(&p, U64, &t->nc_setup[i]) == 0 &&
              trace_end_of_line(p) == 0, "want 'nc I setup INSNS' for each NC in order");
     }
-    p = trace_line(in);
+    return 0;
+}
+
+/* "areas N", then N lines "area X Y W H nc N order I setup S push P total T rc R". */
+static int trace_parse_areas(struct trace_in *in, struct trace *t, char *err, size_t cap)
+{
+    uint64_t v[6];
+    char *p = trace_line(in);
     WANT(p && trace_word(&p, "areas") == 0 && trace_num(&p, (uint64_t)t->width * t->height,
                                                           &v[0]) == 0 && v[0] &&
          trace_end_of_line(p) == 0, "want 'areas N' (1 .. the screen's pixels)");
@@ -281,22 +308,37 @@ static int trace_parse(struct trace_in *in, struct trace *t, char *err, size_t c
         a->order = (uint32_t)v[5];
         a->handout = i;
     }
+    return 0;
+}
+
+/* "row Y" and the row's pixel costs for each row in order, then "end". */
+static int trace_parse_rows(struct trace_in *in, struct trace *t, char *err, size_t cap)
+{
+    uint64_t v;
     t->pixel = calloc((size_t)t->width * t->height, sizeof *t->pixel);
     WANT(t->pixel, "out of memory");
     for (uint32_t y = 0; y < t->height; y++) {
-        p = trace_line(in);
-        WANT(p && trace_word(&p, "row") == 0 && trace_num(&p, U32, &v[0]) == 0 && v[0] == y,
+        char *p = trace_line(in);
+        WANT(p && trace_word(&p, "row") == 0 && trace_num(&p, U32, &v) == 0 && v == y,
              "want 'row Y' followed by the row's pixel costs, rows in order");
         for (uint32_t x = 0; x < t->width; x++)
-            WANT(trace_num(&p, U32, &v[1]) == 0 && (t->pixel[(size_t)y * t->width + x] =
-                                                        (uint32_t)v[1], 1),
+            WANT(trace_num(&p, U32, &v) == 0 && (t->pixel[(size_t)y * t->width + x] =
+                                                     (uint32_t)v, 1),
                  "a row needs one cost (0..2^32-1) per pixel");
         WANT(trace_end_of_line(p) == 0, "more costs than the screen is wide");
     }
-    p = trace_line(in);
+    char *p = trace_line(in);
     WANT(p && strcmp(p, "end") == 0, "want 'end' after the last row (a cut-off trace?)");
     WANT(trace_line(in) == NULL, "text after 'end'");
+    return 0;
+}
 #undef WANT
+
+static int trace_parse(struct trace_in *in, struct trace *t, char *err, size_t cap)
+{
+    if (trace_parse_head(in, t, err, cap) != 0 || trace_parse_setups(in, t, err, cap) != 0 ||
+        trace_parse_areas(in, t, err, cap) != 0 || trace_parse_rows(in, t, err, cap) != 0)
+        return -1;
     return 0;
 }
 
