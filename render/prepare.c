@@ -1005,130 +1005,195 @@ render_status_t render_prepare(const scene_t *s, uint32_t frame_index, arena_t *
     return render_prepare_again(s, frame_index, arena, NULL, out);
 }
 
-render_status_t render_prepare_again(const scene_t *s, uint32_t frame_index, arena_t *arena,
-                                     const render_frame_t *prev, render_frame_t **out)
+/* One frame's preparation under way (render_prepare_again's steps). */
+typedef struct {
+    const scene_t *s;
+    uint32_t frame_index;
+    arena_t *arena;
+    render_frame_t *f;
+    render_frame_t old;     /* the frame before's header, when may_keep */
+    int may_keep;           /* its world part may be kept */
+    int world;              /* options.world_space */
+    scene_index_t ix;
+    scene_camera_t camera;
+    scene_light_t lights[RENDER_MAX_LIGHTS];
+    size_t mark;            /* the scratch below is released to here */
+    xform_t *to_eye, *from_eye;
+    scene_normals_t *normals;
+    uint8_t *moved;         /* world: which maps moved since the frame before */
+    int camera_lost;
+    const xform_t *root_to, *root_from; /* what the scene's root maps to and from */
+} prep_run_t;
+
+/* The frame's header and arrays (allocated again at the frame before's
+ * addresses, not cleared until it is known they are not kept), and the
+ * scene's static structure: the loader's, or worked out here (a scene
+ * built by hand) into the frame's arena. */
+static render_status_t prep_frame_alloc(prep_run_t *r, const render_frame_t *prev)
 {
-    *out = NULL;
-    render_status_t st = prep_check(s);
-    if (st != RENDER_OK)
-        return st;
-    int world = s->options.world_space != 0;
-    /* the frame before's world part may be kept: its header now, its
-     * arrays where they lie (allocated again at the same addresses, not
-     * cleared until it is known they are not kept) */
-    render_frame_t old;
-    int may_keep = world && prev && prev->world && prev->scene == s;
-    if (may_keep)
-        old = *prev;
-    render_frame_t *f = ARENA_NEW_ARRAY(arena, render_frame_t, 1);
+    const scene_t *s = r->s;
+    r->may_keep = r->world && prev && prev->world && prev->scene == s;
+    if (r->may_keep)
+        r->old = *prev;
+    render_frame_t *f = ARENA_NEW_ARRAY(r->arena, render_frame_t, 1);
     if (!f)
         return RENDER_ERR_ARENA;
-    f->clusters = ARENA_NEW_ARRAY_RAW(arena, render_cluster_t, s->cluster_count);
-    f->prims = ARENA_NEW_ARRAY_RAW(arena, render_prim_t, s->prim_count ? s->prim_count : 1);
-    may_keep = may_keep && f == prev && f->clusters == old.clusters && f->prims == old.prims;
+    r->f = f;
+    f->clusters = ARENA_NEW_ARRAY_RAW(r->arena, render_cluster_t, s->cluster_count);
+    f->prims = ARENA_NEW_ARRAY_RAW(r->arena, render_prim_t, s->prim_count ? s->prim_count : 1);
+    r->may_keep = r->may_keep && f == prev && f->clusters == r->old.clusters &&
+                  f->prims == r->old.prims;
     uint32_t ncomp = s->density_component_count;
-    f->density_inv_radius2 = ARENA_NEW_ARRAY(arena, num_t, ncomp ? ncomp : 1);
+    f->density_inv_radius2 = ARENA_NEW_ARRAY(r->arena, num_t, ncomp ? ncomp : 1);
     if (!f->clusters || !f->prims || !f->density_inv_radius2)
         return RENDER_ERR_ARENA;
-    /* the scene's static structure: the loader's, or worked out here (a
-     * scene built by hand) into the frame's arena */
-    scene_index_t ix = s->index;
-    if (!ix.groups) {
-        st = render_scene_index(s, arena, &ix);
-        if (st != RENDER_OK)
-            return st;
-    }
-    f->child_list = ix.child_list;
-    f->prim_list = ix.prim_list;
+    r->ix = s->index;
+    if (!r->ix.groups)
+        return render_scene_index(s, r->arena, &r->ix);
+    return RENDER_OK;
+}
+
+/* The header's fields that come from the scene and the frame's keys. */
+static void prep_frame_header(prep_run_t *r)
+{
+    const scene_t *s = r->s;
+    render_frame_t *f = r->f;
+    f->child_list = r->ix.child_list;
+    f->prim_list = r->ix.prim_list;
     /* (1/d)/d rather than 1/(d*d): d*d of a small radius would keep few
      * significant bits in fixed point */
-    for (uint32_t k = 0; k < ncomp; k++) {
+    for (uint32_t k = 0; k < s->density_component_count; k++) {
         num_t d = s->density_components[k].radius;
         f->density_inv_radius2[k] = num_div(num_recip(d), d);
     }
     f->scene = s;
-    f->frame_index = frame_index;
+    f->frame_index = r->frame_index;
     f->options = s->options;
     f->width = s->width;
     f->height = s->height;
     f->cluster_count = s->cluster_count;
     f->prim_count = s->prim_count;
     f->ray_epsilon = scene_tolerance(s, NUM_C(RENDER_RAY_EPSILON_VALUE));
-    /* the camera and lights of this frame (their keys) */
-    scene_camera_t camera;
-    scene_light_t lights[RENDER_MAX_LIGHTS];
-    prep_view_at(s, frame_index, &camera, lights);
-    f->screen_half_h = camera.tan_half_fov_y;
-    f->screen_half_w = num_mul(camera.tan_half_fov_y, num_from_ratio(s->width, s->height));
+    prep_view_at(s, r->frame_index, &r->camera, r->lights);
+    f->screen_half_h = r->camera.tan_half_fov_y;
+    f->screen_half_w = num_mul(r->camera.tan_half_fov_y, num_from_ratio(s->width, s->height));
+}
 
-    /* scratch: per-cluster maps, released before returning */
-    size_t mark = arena->used;
-    /* not zero-filled: only the clusters with maps of their own are
-     * written, and only they are read (ix.groups[].maps_of) */
-    xform_t *to_eye = ARENA_NEW_ARRAY_RAW(arena, xform_t, s->cluster_count);
-    xform_t *from_eye = ARENA_NEW_ARRAY_RAW(arena, xform_t, s->cluster_count);
-    /* the smooth triangles' eye-space vertex normals, each written before
-     * it is read (normal_src names earlier ones); each triangle keeps a
-     * copy of its own */
-    scene_normals_t *normals =
-        ARENA_NEW_ARRAY_RAW(arena, scene_normals_t, s->normals_count ? s->normals_count : 1);
-    /* world: which maps moved since the frame before (allocated whether
-     * or not it is asked, so that the block's high water is a fresh
-     * preparation's) */
-    uint8_t *moved = world ? ARENA_NEW_ARRAY_RAW(arena, uint8_t, s->cluster_count) : NULL;
-    if (!to_eye || !from_eye || !normals || (world && !moved))
+/* Scratch: per-cluster maps and the smooth triangles' eye-space vertex
+ * normals (each written before it is read; each triangle keeps a copy of
+ * its own), released before returning; not zero-filled: only the
+ * clusters with maps of their own are written, and only they are read
+ * (ix.groups[].maps_of).  World: which maps moved (allocated whether or
+ * not it is asked, so that the block's high water is a fresh
+ * preparation's). */
+static render_status_t prep_scratch(prep_run_t *r)
+{
+    const scene_t *s = r->s;
+    r->mark = r->arena->used;
+    r->to_eye = ARENA_NEW_ARRAY_RAW(r->arena, xform_t, s->cluster_count);
+    r->from_eye = ARENA_NEW_ARRAY_RAW(r->arena, xform_t, s->cluster_count);
+    r->normals = ARENA_NEW_ARRAY_RAW(r->arena, scene_normals_t,
+                                     s->normals_count ? s->normals_count : 1);
+    r->moved = r->world ? ARENA_NEW_ARRAY_RAW(r->arena, uint8_t, s->cluster_count) : NULL;
+    if (!r->to_eye || !r->from_eye || !r->normals || (r->world && !r->moved))
         return RENDER_ERR_ARENA;
+    return RENDER_OK;
+}
 
-    xform_t world_to_eye, eye_to_world;
-    st = prep_camera(&camera, &world_to_eye, &eye_to_world);
+/* The camera's maps; in world space the frame's eye.  The root's maps. */
+static render_status_t prep_view(prep_run_t *r, xform_t *world_to_eye, xform_t *eye_to_world)
+{
+    render_status_t st = prep_camera(&r->camera, world_to_eye, eye_to_world);
     if (st != RENDER_OK)
         return st;
-    int camera_lost = xform_is_sat(&world_to_eye) || xform_is_sat(&eye_to_world);
-    if (camera_lost && !world)
-        f->precision_lost = 1;
-    /* what the scene's root maps to: eye coordinates, or (world) itself */
-    const xform_t *root_to = world ? &prep_identity : &world_to_eye;
-    const xform_t *root_from = world ? &prep_identity : &eye_to_world;
-    if (world) {
-        f->world = 1;
-        f->eye = camera.eye;
-        f->eye_to_world = eye_to_world;
-        f->clip_coverage = f->clip_rows = UINT32_MAX; /* no clipping lists */
-        if (may_keep && prep_keys_same(s, old.frame_index, frame_index) &&
-            !memcmp(&old.precision_extent, &(num_t){precision_world_extent(old.world_box_extent, camera.eye)},
-                    sizeof(num_t))) {
-            arena_release_to(arena, mark);
-            f->world_kept = 1;
-            f->world_lost = old.world_lost;
-            f->precision_lost = old.world_lost || camera_lost;
-            f->span = old.span;
-            f->detail_prim = old.detail_prim;
-            f->detail_size = old.detail_size;
-            f->detail_step = old.detail_step;
-            f->world_box_extent = old.world_box_extent;
-            f->precision_extent = old.precision_extent;
-            prep_lights(s, lights, root_to, f);
-            *out = f;
-            return RENDER_OK;
-        }
+    r->camera_lost = xform_is_sat(world_to_eye) || xform_is_sat(eye_to_world);
+    if (r->camera_lost && !r->world)
+        r->f->precision_lost = 1;
+    r->root_to = r->world ? &prep_identity : world_to_eye;
+    r->root_from = r->world ? &prep_identity : eye_to_world;
+    if (r->world) {
+        r->f->world = 1;
+        r->f->eye = r->camera.eye;
+        r->f->eye_to_world = *eye_to_world;
+        r->f->clip_coverage = r->f->clip_rows = UINT32_MAX; /* no clipping lists */
     }
-    /* the maps of every cluster that has its own; a plain cluster's
-     * primitives use its ancestor's (ix.groups[].maps_of).  A world part
-     * that may be kept learns which maps moved since the frame before */
-    int partly = may_keep && !old.world_lost && old.detail_prim == RENDER_NO_PRIM;
-    st = prep_cluster_maps(s, &ix, frame_index, root_to, root_from, partly ? &old.frame_index : NULL,
-                           moved, to_eye, from_eye, f);
+    return RENDER_OK;
+}
+
+/* World space: the frame before's world part kept whole when its keys
+ * and precision extent are this frame's.  1 when kept (the lights are
+ * this frame's), else 0. */
+static int prep_keep_whole(prep_run_t *r)
+{
+    const render_frame_t *old = &r->old;
+    render_frame_t *f = r->f;
+    if (!r->may_keep || !prep_keys_same(r->s, old->frame_index, r->frame_index) ||
+        memcmp(&old->precision_extent,
+               &(num_t){precision_world_extent(old->world_box_extent, r->camera.eye)},
+               sizeof(num_t)))
+        return 0;
+    arena_release_to(r->arena, r->mark);
+    f->world_kept = 1;
+    f->world_lost = old->world_lost;
+    f->precision_lost = old->world_lost || r->camera_lost;
+    f->span = old->span;
+    f->detail_prim = old->detail_prim;
+    f->detail_size = old->detail_size;
+    f->detail_step = old->detail_step;
+    f->world_box_extent = old->world_box_extent;
+    f->precision_extent = old->precision_extent;
+    prep_lights(r->s, r->lights, r->root_to, f);
+    return 1;
+}
+
+/* Every primitive, bound and light prepared anew, then the precision
+ * checked. */
+static render_status_t prep_whole(prep_run_t *r, num_t pad)
+{
+    const scene_t *s = r->s;
+    render_frame_t *f = r->f;
+    words_zero(f->clusters, sizeof *f->clusters * s->cluster_count);
+    words_zero(f->prims, sizeof *f->prims * (s->prim_count ? s->prim_count : 1));
+    f->detail_prim = RENDER_NO_PRIM;
+    for (uint32_t i = 0; i < s->prim_count; i++)
+        prep_one_prim(s, i, f, &r->ix, r->to_eye, r->from_eye, pad, r->normals);
+    arena_release_to(r->arena, r->mark);
+    for (uint32_t i = 0; i < s->cluster_count; i++)
+        prep_own_bounds(f, &r->ix, i);
+    prep_cluster_tree(s, f, r->world);
+    prep_lights(s, r->lights, r->root_to, f);
+    render_status_t st = precision_check(f, &r->ix);
+    if (r->world) {
+        f->world_lost = f->precision_lost;
+        f->precision_lost = f->precision_lost || r->camera_lost;
+    }
+    return st;
+}
+
+/* The maps of every cluster that has its own (a plain cluster's
+ * primitives use its ancestor's, ix.groups[].maps_of); a world part that
+ * may be kept learns which maps moved since the frame before and is
+ * prepared again in part where few did.  Then whole where it was not.
+ * *out is the frame once the maps are made, whatever the status. */
+static render_status_t prep_maps_and_prims(prep_run_t *r, render_frame_t **out)
+{
+    render_frame_t *f = r->f;
+    int partly = r->may_keep && !r->old.world_lost && r->old.detail_prim == RENDER_NO_PRIM;
+    render_status_t st = prep_cluster_maps(r->s, &r->ix, r->frame_index, r->root_to,
+                                           r->root_from, partly ? &r->old.frame_index : NULL,
+                                           r->moved, r->to_eye, r->from_eye, f);
     if (st != RENDER_OK)
         return st;
-    num_t pad = scene_tolerance(s, NUM_C(RENDER_BOUNDS_PAD_VALUE));
+    *out = f;
+    num_t pad = scene_tolerance(r->s, NUM_C(RENDER_BOUNDS_PAD_VALUE));
     if (partly && !f->precision_lost) {
-        st = prep_world_moved(s, f, &ix, &old, moved, to_eye, from_eye, pad, normals);
+        st = prep_world_moved(r->s, f, &r->ix, &r->old, r->moved, r->to_eye, r->from_eye, pad,
+                              r->normals);
         if (st != RENDER_OK || f->world_kept) {
-            arena_release_to(arena, mark);
+            arena_release_to(r->arena, r->mark);
             f->world_lost = f->precision_lost;
-            f->precision_lost = f->precision_lost || camera_lost;
-            prep_lights(s, lights, root_to, f);
-            *out = f;
+            f->precision_lost = f->precision_lost || r->camera_lost;
+            prep_lights(r->s, r->lights, r->root_to, f);
             return st;
         }
         /* more than half moved, the extent moved or a bound saturated:
@@ -1136,22 +1201,36 @@ render_status_t render_prepare_again(const scene_t *s, uint32_t frame_index, are
         f->precision_lost = 0;
         f->detail_prim = RENDER_NO_PRIM;
     }
-    words_zero(f->clusters, sizeof *f->clusters * s->cluster_count);
-    words_zero(f->prims, sizeof *f->prims * (s->prim_count ? s->prim_count : 1));
-    f->detail_prim = RENDER_NO_PRIM;
-    for (uint32_t i = 0; i < s->prim_count; i++)
-        prep_one_prim(s, i, f, &ix, to_eye, from_eye, pad, normals);
-    arena_release_to(arena, mark);
+    return prep_whole(r, pad);
+}
 
-    for (uint32_t i = 0; i < s->cluster_count; i++)
-        prep_own_bounds(f, &ix, i);
-    prep_cluster_tree(s, f, world);
-    prep_lights(s, lights, root_to, f);
-    *out = f;
-    st = precision_check(f, &ix);
-    if (world) {
-        f->world_lost = f->precision_lost;
-        f->precision_lost = f->precision_lost || camera_lost;
+render_status_t render_prepare_again(const scene_t *s, uint32_t frame_index, arena_t *arena,
+                                     const render_frame_t *prev, render_frame_t **out)
+{
+    *out = NULL;
+    render_status_t st = prep_check(s);
+    if (st != RENDER_OK)
+        return st;
+    prep_run_t r; /* not cleared (on the board that costs as much as a kept frame's
+                     preparation): each step sets what the next ones read */
+    r.s = s;
+    r.frame_index = frame_index;
+    r.arena = arena;
+    r.world = s->options.world_space != 0;
+    st = prep_frame_alloc(&r, prev);
+    if (st != RENDER_OK)
+        return st;
+    prep_frame_header(&r);
+    st = prep_scratch(&r);
+    if (st != RENDER_OK)
+        return st;
+    xform_t world_to_eye, eye_to_world;
+    st = prep_view(&r, &world_to_eye, &eye_to_world);
+    if (st != RENDER_OK)
+        return st;
+    if (r.world && prep_keep_whole(&r)) {
+        *out = r.f;
+        return RENDER_OK;
     }
-    return st;
+    return prep_maps_and_prims(&r, out);
 }
