@@ -1,7 +1,7 @@
 /* nff_read.h: Eric Haines's Neutral File Format (NFF, the output of the
  * Standard Procedural Databases) into a scene (scene_desc.h), for
  * `links1 ref/render/compile FILE.nff` (scene_file.c) and links1-spd
- * (scenes/spd/).  The mapping, entity by entity (docs/scene-format.md,
+ * (host-tools/spd/).  The mapping, entity by entity (docs/scene-format.md,
  * "NFF files"):
  *
  *   v   from/at/up/angle/hither/resolution: the camera; angle spans the

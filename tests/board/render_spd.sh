@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The Standard Procedural Databases (links1-spd, scenes/spd/; the teapot
+# The Standard Procedural Databases (links1-spd, host-tools/spd/; the teapot
 # at size 1, 52 smooth triangles and the floor's 2) at their small
 # sizes: each generated scene compiles (with its automatic hierarchy) and
 # renders on the board exactly as the host build renders it, and the host

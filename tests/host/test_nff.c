@@ -1,5 +1,5 @@
 /* test_nff.c: NFF files (host-tools/scene/nff_read.c) and links1-spd
- * (scenes/spd/) against the SPD's own output (tests/spd/official/):
+ * (host-tools/spd/) against the SPD's own output (tests/spd/official/):
  *   - each generator's NFF equals the official program's, entity for
  *     entity and number for number (within 1e-6), at sizes 1 and 2, and
  *     the numbers the SPD issue (23) names: the sphereflake's directions,
@@ -22,7 +22,7 @@
 #include "host-tools/scene/scene_import.h"
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_file.h"
-#include "scenes/spd/spd.h"
+#include "host-tools/spd/spd.h"
 #include "tests/check.h"
 
 #define OFFICIAL "tests/spd/official/"

@@ -13,7 +13,7 @@
  */
 #include <string.h>
 
-#include "scenes/spd/spd.h"
+#include "host-tools/spd/spd.h"
 
 #define TP_PATCHES 32
 #define TP_VERTICES 290

@@ -19,7 +19,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "scenes/spd/spd.h"
+#include "host-tools/spd/spd.h"
 
 /* every database's background: "UNC sky blue" */
 static const double spd_sky[3] = {0.078, 0.361, 0.753};

@@ -5,7 +5,7 @@
 #include <math.h>
 #include <string.h>
 
-#include "scenes/spd/spd.h"
+#include "host-tools/spd/spd.h"
 
 /* ------------------------------------------------------------------ NFF */
 

@@ -1,10 +1,10 @@
-# scenes/spd/: links1-spd, the Standard Procedural Databases (Haines 1987),
+# host-tools/spd/: links1-spd, the Standard Procedural Databases (Haines 1987),
 # written as the SPD's own programs write them (NFF) and made into scenes
 # by the NFF reader (host-tools/scene/nff_read.c).
-SPD_GEN_SRCS := scenes/spd/spd_out.c scenes/spd/spd_dbs.c scenes/spd/spd_teapot.c
+SPD_GEN_SRCS := host-tools/spd/spd_out.c host-tools/spd/spd_dbs.c host-tools/spd/spd_teapot.c
 HOST_TOOLS += links1-spd
-links1-spd_SRCS = scenes/spd/spd_main.c $(SPD_GEN_SRCS) $(SCENE_TEXT_SRCS) \
-	host-tools/opts/out_file.c
+links1-spd_SRCS = host-tools/spd/spd_main.c $(SPD_GEN_SRCS) $(SCENE_TEXT_SRCS) \
+	$(filter-out $(SCENE_TEXT_SRCS),$(HT_OPTS_CLI_SRCS) $(HT_OPTS_ARGS_SRCS))
 links1-spd_ARITH := double
 links1-spd_LIBS = $(SCENE_TEXT_LIBS)
 
