@@ -165,6 +165,138 @@ static void compile_key(const struct sd_key *k, uint8_t *p)
     compile_vec3(p + SCN_KEY_SCALE, k->scale);
 }
 
+static void compile_maps(const struct sd_scene *s, uint8_t *p)
+{
+    uint32_t first = 0;
+    for (int k = 0; k < s->n_maps; k++) {
+        const struct sd_map *m = &s->maps[k];
+        uint8_t *r = p + k * SCN_MAP_SIZE;
+        wire_put_u16(r + SCN_MAP_KIND, (uint16_t)m->kind);
+        wire_put_u16(r + SCN_MAP_WIDTH, (uint16_t)m->width);
+        wire_put_u16(r + SCN_MAP_HEIGHT, (uint16_t)m->height);
+        wire_put_u32(r + SCN_MAP_FIRST, first);
+        wire_put_f32(r + SCN_MAP_REPEAT_U, (float)m->repeat_u);
+        wire_put_f32(r + SCN_MAP_REPEAT_V, (float)m->repeat_v);
+        wire_put_f32(r + SCN_MAP_BUMP_DEPTH, (float)m->bump_depth);
+        first += (uint32_t)compile_map_bytes(m);
+    }
+}
+
+static void compile_texels(const struct sd_scene *s, uint8_t *p)
+{
+    for (int k = 0; k < s->n_maps; k++) {
+        size_t mb = compile_map_bytes(&s->maps[k]);
+        memcpy(p, s->maps[k].texels, mb);
+        p += mb;
+    }
+}
+
+static void compile_components(const struct sd_scene *s, uint8_t *p)
+{
+    for (int k = 0; k < s->n_components; k++) {
+        const struct sd_component *c = &s->components[k];
+        uint8_t *r = p + (size_t)k * SCN_COMPONENT_SIZE;
+        compile_vec3(r + SCN_COMPONENT_CENTRE, c->centre);
+        wire_put_f32(r + SCN_COMPONENT_RADIUS, (float)c->radius);
+        wire_put_f32(r + SCN_COMPONENT_WEIGHT, (float)c->weight);
+    }
+}
+
+static void compile_normals(const struct sd_scene *s, uint8_t *p)
+{
+    for (int k = 0; k < s->n_prims; k++) {
+        const struct sd_prim *pr = &s->prims[k];
+        if (pr->kind != SCN_PRIM_TRIANGLE || !pr->smooth)
+            continue;
+        wire_put_u32(p + SCN_NORMALS_PRIM, (uint32_t)k);
+        for (int j = 0; j < 9; j++)
+            wire_put_f32(p + SCN_NORMALS_N + 4 * j, (float)pr->n[j]);
+        p += SCN_NORMALS_SIZE;
+    }
+}
+
+/* Section kind's records written at p. */
+static void compile_section_body(const struct sd_scene *s, int kind, uint8_t *p)
+{
+    switch (kind) {
+    case SCN_SEC_VIEW: compile_view(s, p); break;
+    case SCN_SEC_LIGHTS:
+        for (int k = 0; k < s->n_lights; k++)
+            compile_light(&s->lights[k], p + k * SCN_LIGHT_SIZE);
+        break;
+    case SCN_SEC_MATERIALS:
+        for (int k = 0; k < s->n_materials; k++)
+            compile_material(&s->materials[k], p + k * SCN_MAT_SIZE);
+        break;
+    case SCN_SEC_MAPS: compile_maps(s, p); break;
+    case SCN_SEC_TEXELS: compile_texels(s, p); break;
+    case SCN_SEC_CLUSTERS:
+        for (int k = 0; k < s->n_clusters; k++)
+            compile_cluster(&s->clusters[k], p + k * SCN_CLUSTER_SIZE);
+        break;
+    case SCN_SEC_PRIMS:
+        for (int k = 0; k < s->n_prims; k++)
+            compile_prim(&s->prims[k], p + (size_t)k * SCN_PRIM_SIZE);
+        break;
+    case SCN_SEC_COMPONENTS: compile_components(s, p); break;
+    case SCN_SEC_KEYS:
+        for (int k = 0; k < s->n_keys; k++)
+            compile_key(&s->keys[k], p + (size_t)k * SCN_KEY_SIZE);
+        break;
+    case SCN_SEC_NORMALS: compile_normals(s, p); break;
+    case SCN_SEC_VIEW_KEYS: compile_view_keys(s, p); break;
+    }
+}
+
+/* The non-empty sections of s into used[] with their offsets: header,
+ * table of the sections, then their bodies, each aligned.  Their count;
+ * *total the form's bytes. */
+static int compile_layout(const struct sd_scene *s, size_t texel_bytes,
+                          struct compile_section used[SCN_SEC_COUNT], size_t *total)
+{
+    uint32_t n_smooth = 0;
+    for (int i = 0; i < s->n_prims; i++)
+        n_smooth += s->prims[i].kind == SCN_PRIM_TRIANGLE && s->prims[i].smooth;
+    const struct compile_section all[SCN_SEC_COUNT] = {
+        {SCN_SEC_VIEW, 1, SCN_VIEW_SIZE, 0},
+        {SCN_SEC_LIGHTS, (uint32_t)s->n_lights, SCN_LIGHT_SIZE, 0},
+        {SCN_SEC_MATERIALS, (uint32_t)s->n_materials, SCN_MAT_SIZE, 0},
+        {SCN_SEC_MAPS, (uint32_t)s->n_maps, SCN_MAP_SIZE, 0},
+        {SCN_SEC_TEXELS, (uint32_t)texel_bytes, 1, 0},
+        {SCN_SEC_CLUSTERS, (uint32_t)s->n_clusters, SCN_CLUSTER_SIZE, 0},
+        {SCN_SEC_PRIMS, (uint32_t)s->n_prims, SCN_PRIM_SIZE, 0},
+        {SCN_SEC_COMPONENTS, (uint32_t)s->n_components, SCN_COMPONENT_SIZE, 0},
+        {SCN_SEC_KEYS, (uint32_t)s->n_keys, SCN_KEY_SIZE, 0},
+        {SCN_SEC_NORMALS, n_smooth, SCN_NORMALS_SIZE, 0},
+        {SCN_SEC_VIEW_KEYS, (uint32_t)s->n_view_keys, SCN_VKEY_SIZE, 0},
+    };
+    int n = 0;
+    for (int i = 0; i < SCN_SEC_COUNT; i++)
+        if (all[i].count > 0)
+            used[n++] = all[i];
+    size_t pos = SCN_HEADER_SIZE + (size_t)n * SCN_SECENT_SIZE;
+    for (int i = 0; i < n; i++) {
+        pos = (pos + SCN_SECTION_ALIGN - 1) & ~(size_t)(SCN_SECTION_ALIGN - 1);
+        used[i].offset = (uint32_t)pos;
+        pos += (size_t)used[i].count * used[i].record;
+    }
+    *total = (pos + SCN_SECTION_ALIGN - 1) & ~(size_t)(SCN_SECTION_ALIGN - 1);
+    return n;
+}
+
+/* The header: magic, version, section count, size and CRC. */
+static void compile_header(uint8_t *b, int n, size_t total)
+{
+    b[SCN_HDR_MAGIC + 0] = SCN_MAGIC_0;
+    b[SCN_HDR_MAGIC + 1] = SCN_MAGIC_1;
+    b[SCN_HDR_MAGIC + 2] = SCN_MAGIC_2;
+    b[SCN_HDR_MAGIC + 3] = SCN_MAGIC_3;
+    wire_put_u16(b + SCN_HDR_VERSION, SCN_VERSION);
+    wire_put_u16(b + SCN_HDR_SECTIONS, (uint16_t)n);
+    wire_put_u32(b + SCN_HDR_TOTAL, (uint32_t)total);
+    wire_put_u32(b + SCN_HDR_CRC, crc32(b + SCN_CRC_START, total - SCN_CRC_START));
+}
+
 static int compile_form(const struct sd_scene *s, uint8_t **out, size_t *len, char *err,
                         size_t errlen)
 {
@@ -178,35 +310,9 @@ static int compile_form(const struct sd_scene *s, uint8_t **out, size_t *len, ch
                  texel_bytes, SCN_MAX_TEXEL_BYTES);
         return -1;
     }
-    uint32_t n_smooth = 0;
-    for (int i = 0; i < s->n_prims; i++)
-        n_smooth += s->prims[i].kind == SCN_PRIM_TRIANGLE && s->prims[i].smooth;
-    struct compile_section all[SCN_SEC_COUNT] = {
-        {SCN_SEC_VIEW, 1, SCN_VIEW_SIZE, 0},
-        {SCN_SEC_LIGHTS, (uint32_t)s->n_lights, SCN_LIGHT_SIZE, 0},
-        {SCN_SEC_MATERIALS, (uint32_t)s->n_materials, SCN_MAT_SIZE, 0},
-        {SCN_SEC_MAPS, (uint32_t)s->n_maps, SCN_MAP_SIZE, 0},
-        {SCN_SEC_TEXELS, (uint32_t)texel_bytes, 1, 0},
-        {SCN_SEC_CLUSTERS, (uint32_t)s->n_clusters, SCN_CLUSTER_SIZE, 0},
-        {SCN_SEC_PRIMS, (uint32_t)s->n_prims, SCN_PRIM_SIZE, 0},
-        {SCN_SEC_COMPONENTS, (uint32_t)s->n_components, SCN_COMPONENT_SIZE, 0},
-        {SCN_SEC_KEYS, (uint32_t)s->n_keys, SCN_KEY_SIZE, 0},
-        {SCN_SEC_NORMALS, n_smooth, SCN_NORMALS_SIZE, 0},
-        {SCN_SEC_VIEW_KEYS, (uint32_t)s->n_view_keys, SCN_VKEY_SIZE, 0},
-    };
-    /* Layout: header, table of the non-empty sections, then their bodies. */
     struct compile_section used[SCN_SEC_COUNT];
-    int n = 0;
-    for (int i = 0; i < SCN_SEC_COUNT; i++)
-        if (all[i].count > 0)
-            used[n++] = all[i];
-    size_t pos = SCN_HEADER_SIZE + (size_t)n * SCN_SECENT_SIZE;
-    for (int i = 0; i < n; i++) {
-        pos = (pos + SCN_SECTION_ALIGN - 1) & ~(size_t)(SCN_SECTION_ALIGN - 1);
-        used[i].offset = (uint32_t)pos;
-        pos += (size_t)used[i].count * used[i].record;
-    }
-    size_t total = (pos + SCN_SECTION_ALIGN - 1) & ~(size_t)(SCN_SECTION_ALIGN - 1);
+    size_t total;
+    int n = compile_layout(s, texel_bytes, used, &total);
     if (total > SCN_MAX_SIZE) {
         snprintf(err, errlen,
                  "compiled scene is %zu bytes (%d clusters, %d primitives), more than "
@@ -225,87 +331,9 @@ static int compile_form(const struct sd_scene *s, uint8_t **out, size_t *len, ch
         wire_put_u32(e + SCN_SECENT_OFFSET, used[i].offset);
         wire_put_u32(e + SCN_SECENT_BYTES, used[i].count * used[i].record);
         wire_put_u32(e + SCN_SECENT_COUNT, used[i].count);
-        uint8_t *p = b + used[i].offset;
-        switch (used[i].kind) {
-        case SCN_SEC_VIEW:
-            compile_view(s, p);
-            break;
-        case SCN_SEC_LIGHTS:
-            for (int k = 0; k < s->n_lights; k++)
-                compile_light(&s->lights[k], p + k * SCN_LIGHT_SIZE);
-            break;
-        case SCN_SEC_MATERIALS:
-            for (int k = 0; k < s->n_materials; k++)
-                compile_material(&s->materials[k], p + k * SCN_MAT_SIZE);
-            break;
-        case SCN_SEC_MAPS: {
-            uint32_t first = 0;
-            for (int k = 0; k < s->n_maps; k++) {
-                const struct sd_map *m = &s->maps[k];
-                uint8_t *r = p + k * SCN_MAP_SIZE;
-                wire_put_u16(r + SCN_MAP_KIND, (uint16_t)m->kind);
-                wire_put_u16(r + SCN_MAP_WIDTH, (uint16_t)m->width);
-                wire_put_u16(r + SCN_MAP_HEIGHT, (uint16_t)m->height);
-                wire_put_u32(r + SCN_MAP_FIRST, first);
-                wire_put_f32(r + SCN_MAP_REPEAT_U, (float)m->repeat_u);
-                wire_put_f32(r + SCN_MAP_REPEAT_V, (float)m->repeat_v);
-                wire_put_f32(r + SCN_MAP_BUMP_DEPTH, (float)m->bump_depth);
-                first += (uint32_t)compile_map_bytes(m);
-            }
-            break;
-        }
-        case SCN_SEC_TEXELS:
-            for (int k = 0; k < s->n_maps; k++) {
-                size_t mb = compile_map_bytes(&s->maps[k]);
-                memcpy(p, s->maps[k].texels, mb);
-                p += mb;
-            }
-            break;
-        case SCN_SEC_CLUSTERS:
-            for (int k = 0; k < s->n_clusters; k++)
-                compile_cluster(&s->clusters[k], p + k * SCN_CLUSTER_SIZE);
-            break;
-        case SCN_SEC_PRIMS:
-            for (int k = 0; k < s->n_prims; k++)
-                compile_prim(&s->prims[k], p + (size_t)k * SCN_PRIM_SIZE);
-            break;
-        case SCN_SEC_COMPONENTS:
-            for (int k = 0; k < s->n_components; k++) {
-                const struct sd_component *c = &s->components[k];
-                uint8_t *r = p + (size_t)k * SCN_COMPONENT_SIZE;
-                compile_vec3(r + SCN_COMPONENT_CENTRE, c->centre);
-                wire_put_f32(r + SCN_COMPONENT_RADIUS, (float)c->radius);
-                wire_put_f32(r + SCN_COMPONENT_WEIGHT, (float)c->weight);
-            }
-            break;
-        case SCN_SEC_KEYS:
-            for (int k = 0; k < s->n_keys; k++)
-                compile_key(&s->keys[k], p + (size_t)k * SCN_KEY_SIZE);
-            break;
-        case SCN_SEC_NORMALS:
-            for (int k = 0; k < s->n_prims; k++) {
-                const struct sd_prim *pr = &s->prims[k];
-                if (pr->kind != SCN_PRIM_TRIANGLE || !pr->smooth)
-                    continue;
-                wire_put_u32(p + SCN_NORMALS_PRIM, (uint32_t)k);
-                for (int j = 0; j < 9; j++)
-                    wire_put_f32(p + SCN_NORMALS_N + 4 * j, (float)pr->n[j]);
-                p += SCN_NORMALS_SIZE;
-            }
-            break;
-        case SCN_SEC_VIEW_KEYS:
-            compile_view_keys(s, p);
-            break;
-        }
+        compile_section_body(s, used[i].kind, b + used[i].offset);
     }
-    b[SCN_HDR_MAGIC + 0] = SCN_MAGIC_0;
-    b[SCN_HDR_MAGIC + 1] = SCN_MAGIC_1;
-    b[SCN_HDR_MAGIC + 2] = SCN_MAGIC_2;
-    b[SCN_HDR_MAGIC + 3] = SCN_MAGIC_3;
-    wire_put_u16(b + SCN_HDR_VERSION, SCN_VERSION);
-    wire_put_u16(b + SCN_HDR_SECTIONS, (uint16_t)n);
-    wire_put_u32(b + SCN_HDR_TOTAL, (uint32_t)total);
-    wire_put_u32(b + SCN_HDR_CRC, crc32(b + SCN_CRC_START, total - SCN_CRC_START));
+    compile_header(b, n, total);
     *out = b;
     *len = total;
     return 0;
