@@ -27,6 +27,7 @@
 #include "host-tools/image/image_save.h"
 #include "host-tools/opts/cli_args.h"
 #include "host-tools/opts/cli_opt.h"
+#include "host-tools/opts/private_path.h"
 #include "host-tools/opts/self_path.h"
 
 #define FARM_MAX_FRAMES 100000 /* frames in one farm */
@@ -69,6 +70,9 @@ static void farm_usage(FILE *out)
             "  `links1 render SCENE --frames F:F` run there (links1 and SCENE at the same\n"
             "  absolute paths on every host); the frames gathered into DIR as frame-NNNN.EXT.\n"
             "  A frame already in DIR is not rendered again (an interrupted farm resumes).\n"
+            "  FILE is code parallel runs (each line an ssh login): it and DIR are refused\n"
+            "  unless no one but you (or root, for FILE) can change them; every line of FILE\n"
+            "  is ':' or [N/][user@]host[:port], blank, or a # comment\n"
             "  --slurm       instead of --hosts: the frames (or bands) not in DIR as one Slurm\n"
             "                job array (`sbatch --wait --array`, the task id the frame), DIR\n"
             "                on a file system the nodes share; sbatch's own SBATCH_* variables\n"
@@ -154,22 +158,131 @@ static int farm_is_gnu_parallel(void)
     return strncmp(buf, "GNU parallel", 12) == 0;
 }
 
-/* The hosts file: a readable regular file with at least one host line.
- * Returns the number of host lines, or -1 after saying why. */
-static int farm_check_hosts(const char *file)
+/* Whether s[0..n) is a user or host name: letters, digits, '.', '-' and
+ * '_', not starting with '-' (ssh would take it for an option). */
+static int farm_name_ok(const char *s, size_t n)
 {
-    int fd = open(file, O_RDONLY | O_NOCTTY | O_NONBLOCK);
+    if (n == 0 || n > 253 || s[0] == '-')
+        return 0;
+    for (size_t i = 0; i < n; i++)
+        if (!((s[i] >= 'a' && s[i] <= 'z') || (s[i] >= 'A' && s[i] <= 'Z') ||
+              (s[i] >= '0' && s[i] <= '9') || s[i] == '.' || s[i] == '-' || s[i] == '_'))
+            return 0;
+    return 1;
+}
+
+/* Whether s is a number lo..hi in decimal digits alone (no leading 0). */
+static int farm_number_ok(const char *s, size_t n, long lo, long hi)
+{
+    if (n == 0 || n > 6 || s[0] == '0' || strspn(s, "0123456789") < n)
+        return 0;
+    long v = strtol(s, NULL, 10);
+    return v >= lo && v <= hi;
+}
+
+/* Whether line is a host line: [N/]: or [N/][user@]host[:port], host a
+ * name or a bracketed IPv6 address ([2001:db8::1]). */
+static int farm_host_line_ok(const char *p)
+{
+    size_t d = strspn(p, "0123456789");
+    if (d > 0 && p[d] == '/') {
+        if (!farm_number_ok(p, d, 1, 9999))
+            return 0;
+        p += d + 1;
+    }
+    if (strcmp(p, ":") == 0)
+        return 1;
+    const char *at = strchr(p, '@');
+    if (at) {
+        if (!farm_name_ok(p, (size_t)(at - p)))
+            return 0;
+        p = at + 1;
+    }
+    const char *end;
+    if (*p == '[') {
+        end = strchr(p, ']');
+        size_t n = end ? (size_t)(end - p - 1) : 0;
+        if (n < 2 || strspn(p + 1, "0123456789abcdefABCDEF:") < n || !memchr(p + 1, ':', n))
+            return 0;
+        end++;
+    } else {
+        end = p + strcspn(p, ":");
+        if (!farm_name_ok(p, (size_t)(end - p)))
+            return 0;
+    }
+    return *end == 0 || (*end == ':' && farm_number_ok(end + 1, strlen(end + 1), 1, 65535));
+}
+
+/* s (n bytes) into out, a control character as \n or \xHH. */
+static void farm_printable(const char *s, size_t n, char *out, size_t cap)
+{
+    size_t k = 0;
+    for (size_t i = 0; i < n && k + 5 < cap; i++) {
+        unsigned char c = (unsigned char)s[i];
+        if (c == '\n')
+            k += (size_t)snprintf(out + k, cap - k, "\\n");
+        else if (c < 0x20 || c == 0x7f)
+            k += (size_t)snprintf(out + k, cap - k, "\\x%02x", c);
+        else
+            out[k++] = (char)c;
+    }
+    out[k] = 0;
+}
+
+/* The hosts file's lines (buf, n bytes): each a host line, blank, or a #
+ * comment.  The host lines' count, or -1 after naming the first other. */
+static int farm_host_lines(const char *file, char *buf, size_t n)
+{
+    int hosts = 0;
+    size_t lineno = 0;
+    for (char *line = buf; line < buf + n;) {
+        char *nl = memchr(line, '\n', (size_t)(buf + n - line));
+        char *end = nl ? nl : buf + n, *next = nl ? nl + 1 : buf + n;
+        lineno++;
+        size_t len = (size_t)(end - line);
+        while (len > 0 && line[len - 1] && strchr(" \t\r", line[len - 1]))
+            len--;
+        size_t lead = strspn(line, " \t");
+        if (lead >= len || line[lead] == '#') {
+            line = next;
+            continue;
+        }
+        char keep = line[len];
+        line[len] = 0;
+        int ok = strlen(line) == len && farm_host_line_ok(line);
+        line[len] = keep;
+        if (!ok) {
+            char shown[256];
+            farm_printable(line, len < 60 ? len : 60, shown, sizeof shown);
+            fprintf(stderr, "links1 farm: --hosts %s: line %zu '%s%s' is not a host line: "
+                    "refused (parallel runs each line as an ssh login; a line may be ':' for "
+                    "this machine, [N/][user@]host[:port] with host of letters, digits, '.', "
+                    "'-' and '_' not starting with '-' or an [IPv6] address, blank, or a # "
+                    "comment)\n", file, lineno, shown, len > 60 ? "..." : "");
+            return -1;
+        }
+        hosts++;
+        line = next;
+    }
+    if (hosts == 0)
+        fprintf(stderr, "links1 farm: --hosts %s: no host in it (one a line, ':' for this "
+                        "machine)\n", file);
+    return hosts ? hosts : -1;
+}
+
+/* The hosts file: code for parallel, so a regular file that only you (or
+ * root) can change (private_path), of host lines.  Returns the number of
+ * host lines with the file's resolved path in real, or -1 after saying why. */
+static int farm_check_hosts(const char *file, char *real)
+{
+    char err[2 * PATH_MAX + 512];
+    int fd = private_path_open(file, PRIVATE_PATH_FILE, real, err, sizeof err);
     if (fd < 0) {
-        fprintf(stderr, "links1 farm: --hosts %s: cannot read it: %s\n", file, strerror(errno));
+        fprintf(stderr, "links1 farm: --hosts %s\n", err);
         return -1;
     }
     struct stat st;
-    if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
-        fprintf(stderr, "links1 farm: --hosts %s: not a regular file\n", file);
-        close(fd);
-        return -1;
-    }
-    if (st.st_size > FARM_HOSTS_MAX_BYTES) {
+    if (fstat(fd, &st) != 0 || st.st_size > FARM_HOSTS_MAX_BYTES) {
         fprintf(stderr, "links1 farm: --hosts %s: %lld bytes, more than %d\n", file,
                 (long long)st.st_size, FARM_HOSTS_MAX_BYTES);
         close(fd);
@@ -181,46 +294,65 @@ static int farm_check_hosts(const char *file)
            (r = read(fd, buf + got, (size_t)(FARM_HOSTS_MAX_BYTES - got))) > 0)
         got += r;
     close(fd);
-    if (got < 0)
-        got = 0;
-    buf[got] = 0;
-    int hosts = 0;
-    for (char *line = strtok(buf, "\n"); line; line = strtok(NULL, "\n")) {
-        line += strspn(line, " \t\r");
-        if (*line && *line != '#')
-            hosts++;
-    }
-    if (hosts == 0)
-        fprintf(stderr, "links1 farm: --hosts %s: no host in it (one a line, ':' for this "
-                        "machine)\n", file);
-    return hosts ? hosts : -1;
+    return farm_host_lines(file, buf, (size_t)got);
 }
 
-/* DIR: made when missing; else a directory (not a link) of this user's that
- * can be written.  0, or -1 after saying why. */
-static int farm_check_dir(const char *dir)
+/* DIR: made when missing (0755 less the umask: others may read the frames);
+ * else a directory only you can change (private_path): no one else can
+ * plant a link or a frame in it.  Its fd (O_CLOEXEC) with its resolved
+ * path in real, or -1 after saying why. */
+static int farm_open_dir(const char *dir, char *real)
 {
-    struct stat st;
-    if (lstat(dir, &st) != 0) {
-        if (errno != ENOENT || mkdir(dir, 0777) != 0 || lstat(dir, &st) != 0) {
-            fprintf(stderr, "links1 farm: -o %s: cannot make it: %s\n", dir, strerror(errno));
-            return -1;
-        }
-    }
-    if (!S_ISDIR(st.st_mode)) {
-        fprintf(stderr, "links1 farm: -o %s: not a directory (the frames go into a directory)\n",
-                dir);
+    if (mkdir(dir, 0755) != 0 && errno != EEXIST) {
+        fprintf(stderr, "links1 farm: -o %s: cannot make it: %s\n", dir, strerror(errno));
         return -1;
     }
-    if (st.st_uid != geteuid()) {
-        fprintf(stderr, "links1 farm: -o %s: the directory belongs to uid %u, not to you (%u)\n",
-                dir, (unsigned)st.st_uid, (unsigned)geteuid());
+    char err[2 * PATH_MAX + 512];
+    int fd = private_path_open(dir, PRIVATE_PATH_DIR, real, err, sizeof err);
+    if (fd < 0) {
+        fprintf(stderr, "links1 farm: -o %s\n", err);
         return -1;
     }
-    if (access(dir, W_OK | X_OK) != 0) {
+    if (access(real, W_OK | X_OK) != 0) {
         fprintf(stderr, "links1 farm: -o %s: cannot write into it\n", dir);
+        close(fd);
         return -1;
     }
+    return fd;
+}
+
+/* s (what names it, e.g. "the scene") holds no control character: parallel
+ * takes a newline in an input for the end of a job's input.  0, or -1
+ * after saying why. */
+static int farm_plain(const char *what, const char *s)
+{
+    size_t i = 0;
+    while (s[i] && (unsigned char)s[i] >= 0x20 && s[i] != 0x7f)
+        i++;
+    if (!s[i])
+        return 0;
+    char shown[PATH_MAX + 64], which[48];
+    farm_printable(s, strlen(s), shown, sizeof shown);
+    if (s[i] == '\n')
+        snprintf(which, sizeof which, "a newline");
+    else
+        snprintf(which, sizeof which, "a control character (byte 0x%02x)", (unsigned char)s[i]);
+    fprintf(stderr, "links1 farm: %s '%s' holds %s: refused (a farm's paths and arguments "
+            "reach parallel as lines of input: this one would become several jobs)\n", what, shown, which);
+    return -1;
+}
+
+/* The farm's arguments as given hold no control character (farm_plain).
+ * 0, or -1 after saying why. */
+static int farm_args_plain(const char *scene, const char *dir, const char *hosts,
+                           const char *film, const char *const *extra, int nextra)
+{
+    if (farm_plain("the scene", scene) != 0 || farm_plain("-o", dir) != 0 ||
+        (hosts && farm_plain("--hosts", hosts) != 0) || (film && farm_plain("--film", film) != 0))
+        return -1;
+    for (int i = 0; i < nextra; i++)
+        if (farm_plain("the render argument", extra[i]) != 0)
+            return -1;
     return 0;
 }
 
@@ -231,15 +363,25 @@ static int farm_separator_word(const char *s)
            strcmp(s, "::::+") == 0;
 }
 
-/* The joblog's lines added into hosts[] (*nhosts of them so far); *njobs the
+/* The joblog's lines (name in DIR, dir_fd; log its path) added into
+ * hosts[] (*nhosts of them so far), read without following a link; *njobs the
  * jobs it logs; ok[seq - 1] set for each job (Seq, 1..njobs_max: the inputs'
  * order) that ended well.  0, or -1. */
-static int farm_read_joblog(const char *log, struct farm_host *hosts, int *nhosts, long *njobs,
-                            char *ok, long njobs_max)
+static int farm_read_joblog(int dir_fd, const char *name, const char *log,
+                            struct farm_host *hosts, int *nhosts, long *njobs, char *ok,
+                            long njobs_max)
 {
-    FILE *f = fopen(log, "r");
+    int fd = openat(dir_fd, name, O_RDONLY | O_NOFOLLOW | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
+    struct stat st;
+    FILE *f = fd >= 0 && fstat(fd, &st) == 0 && S_ISREG(st.st_mode) ? fdopen(fd, "r") : NULL;
     if (!f) {
-        fprintf(stderr, "links1 farm: parallel's joblog %s: %s\n", log, strerror(errno));
+        fprintf(stderr, "links1 farm: parallel's joblog %s: %s\n", log,
+                fd < 0 && errno == ENOENT ? "parallel ended without writing it (its own words "
+                                            "are above)"
+                : fd < 0                  ? strerror(errno)
+                                          : "not a regular file");
+        if (fd >= 0)
+            close(fd);
         return -1;
     }
     char line[8192];
@@ -490,6 +632,8 @@ int cmd_farm(int argc, char **argv)
                         "--film\n");
         return 2;
     }
+    if (farm_args_plain(scene, dir, hosts_file, film, extra, nextra) != 0)
+        return 1;
     if (film) { /* before any host renders: the film could not be made */
         char err[512];
         if (film_program_check(err, sizeof err) != 0) {
@@ -513,22 +657,13 @@ int cmd_farm(int argc, char **argv)
                         "Debian package parallel)\n");
         return 1;
     }
-    int nhosts_file = slurm ? 0 : farm_check_hosts(hosts_file);
-    if (nhosts_file < 0 || farm_check_dir(dir) != 0)
+    char scene_abs[PATH_MAX], hosts_abs[PATH_MAX] = "Slurm", dir_abs[PATH_MAX], tool[PATH_MAX];
+    int nhosts_file = slurm ? 0 : farm_check_hosts(hosts_file, hosts_abs);
+    int dir_fd = nhosts_file < 0 ? -1 : farm_open_dir(dir, dir_abs);
+    if (dir_fd < 0)
         return 1;
-    char scene_abs[PATH_MAX], hosts_abs[PATH_MAX], dir_abs[PATH_MAX], tool[PATH_MAX];
     if (!realpath(scene, scene_abs)) {
         fprintf(stderr, "links1 farm: %s: %s\n", scene, strerror(errno));
-        return 1;
-    }
-    if (slurm)
-        snprintf(hosts_abs, sizeof hosts_abs, "Slurm");
-    else if (!realpath(hosts_file, hosts_abs)) {
-        fprintf(stderr, "links1 farm: %s: %s\n", hosts_file, strerror(errno));
-        return 1;
-    }
-    if (!realpath(dir, dir_abs)) {
-        fprintf(stderr, "links1 farm: %s: %s\n", dir, strerror(errno));
         return 1;
     }
     if (self_sibling("links1", tool, sizeof tool) != 0) {
@@ -553,6 +688,11 @@ int cmd_farm(int argc, char **argv)
         }
         setenv("FW_DIR", fw_abs, 1);
     }
+    /* the same, resolved (a link on the way could hold a newline) */
+    const char *resolved[] = {scene_abs, hosts_abs, dir_abs, tool, fw_dir && *fw_dir ? fw_abs : ""};
+    for (size_t i = 0; i < sizeof resolved / sizeof *resolved; i++)
+        if (farm_plain("the resolved path", resolved[i]) != 0)
+            return 1;
 
     /* The items: frames first..last, or with --bands the bands 0..bands-1
      * of frame first (none when that frame is in DIR already).  Rounds: the
@@ -648,11 +788,19 @@ int cmd_farm(int argc, char **argv)
             memset(again, 1, (size_t)nitems);
             continue;
         }
-        char joblog[PATH_MAX + 32];
+        /* parallel's joblog in DIR, an earlier run's removed first (never
+         * followed: DIR is yours alone, and unlinkat removes a link itself) */
+        char joblog_name[32], joblog[PATH_MAX + 32];
         if (round == 1)
-            snprintf(joblog, sizeof joblog, "%s/farm-joblog.tsv", dir_abs);
+            snprintf(joblog_name, sizeof joblog_name, "farm-joblog.tsv");
         else
-            snprintf(joblog, sizeof joblog, "%s/farm-joblog-%d.tsv", dir_abs, round);
+            snprintf(joblog_name, sizeof joblog_name, "farm-joblog-%d.tsv", round);
+        snprintf(joblog, sizeof joblog, "%s/%s", dir_abs, joblog_name);
+        if (unlinkat(dir_fd, joblog_name, 0) != 0 && errno != ENOENT) {
+            fprintf(stderr, "links1 farm: %s: cannot remove an earlier run's joblog: %s\n",
+                    joblog, strerror(errno));
+            return 1;
+        }
         /* The command template: fixed words and replacement strings only.  It
          * starts with a word of its own: parallel leaves a first replacement
          * string unquoted (it takes it for the command). */
@@ -713,7 +861,7 @@ int cmd_farm(int argc, char **argv)
                 dup2(null, 0);
                 close(null);
             }
-            if (chdir(dir_abs) != 0) {
+            if (fchdir(dir_fd) != 0) {
                 fprintf(stderr, "links1 farm: cd %s: %s\n", dir_abs, strerror(errno));
                 _exit(127);
             }
@@ -730,7 +878,8 @@ int cmd_farm(int argc, char **argv)
         }
         long jobs_round = 0;
         memset(ok, 0, (size_t)nitems);
-        if (farm_read_joblog(joblog, hosts, &nhosts, &jobs_round, ok, ntodo) != 0)
+        if (farm_read_joblog(dir_fd, joblog_name, joblog, hosts, &nhosts, &jobs_round, ok,
+                             ntodo) != 0)
             return 1;
         njobs += jobs_round;
         /* only a frame whose job ended well goes out again (its host died

@@ -23,3 +23,6 @@ render-clip-stats_LIBS = $(SCENE_TEXT_LIBS)
 BOARD_TESTS += tests/board/boot_smp.sh tests/board/channels.sh tests/board/idle66.sh \
 	tests/board/fault.sh
 BENCHES += tests/bench/bench_boot.sh tests/bench/bench_channels.sh tests/bench/bench_link.sh
+# links1 farm's hosts file and DIR as another local user would shape them
+# (a throw-away second account; boots no board).
+BOARD_TESTS += tests/board/other_user_farm.sh
