@@ -155,6 +155,10 @@ int scene_cmd_import(int argc, char **argv)
         return r0 > 0 ? 0 : 2;
     struct model m;
     char err[SD_ERR_MAX];
+    if (out_file_check(a.out, err, sizeof err) != 0) { /* before the model is read */
+        fprintf(stderr, "links1 import: -o %s\n", err);
+        return 1;
+    }
     if (model_load(a.model, &m, err, sizeof err) != 0) {
         fprintf(stderr, "links1 import: %s\n", err);
         return 1;

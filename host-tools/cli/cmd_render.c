@@ -553,6 +553,21 @@ static int render_auto_pick(struct render_opts *o)
     return 0;
 }
 
+/* -o OUT (with --frames A:B, its first frame's file) checked before the
+ * board boots.  0, or -1 after saying why. */
+static int render_out_check(const struct render_opts *o, const char *out)
+{
+    char path[PATH_MAX + 16], err[PATH_MAX + 256];
+    if (o->many && film_kind_of(out) == FILM_NONE)
+        scene_file_frame_path(out, o->first, path, sizeof path);
+    else
+        snprintf(path, sizeof path, "%s", out);
+    if (out_file_check(path, err, sizeof err) == 0)
+        return 0;
+    fprintf(stderr, "links1 render: -o %s\n", err);
+    return -1;
+}
+
 /* Returns 0, 1 (--help shown) or -1 (bad option, printed). */
 static int render_parse(struct render_opts *o, int argc, char **argv)
 {
@@ -604,6 +619,8 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
             fprintf(stderr, "links1 render: %s has no -o OUT\n", o->jobs[j].scene);
             return -1;
         }
+        if (render_out_check(o, o->jobs[j].out) != 0)
+            return -1;
         films += film_kind_of(o->jobs[j].out) != FILM_NONE;
     }
     if (films) { /* before a board boots: the film could not be made */

@@ -23,7 +23,8 @@ enum { SCENE_OPT_FRAME = CLI_OWN_CODES, SCENE_OPT_STRICT };
 
 /* Reads "SCENE -o OUT" and the options of a scene command: each option of
  * longs other than -o and --help goes to take (when given).  0, 1 (--help
- * shown) or -1 (bad arguments, reported with the usage). */
+ * shown), -1 (bad arguments, reported with the usage) or -2 (OUT cannot be
+ * written, out_file_check: said why). */
 static int scene_cmd_args(struct cli *c, const char *usage, const char **in, const char **out,
                           int (*take)(struct cli *c, int code, void *ctx), void *ctx)
 {
@@ -52,6 +53,11 @@ static int scene_cmd_args(struct cli *c, const char *usage, const char **in, con
         fprintf(stderr, "%s: %s\nusage: %s\n", c->prog, !*in ? "no SCENE given" : "no -o OUT given",
                 usage);
         return -1;
+    }
+    char err[PATH_MAX + 256];
+    if (out_file_check(*out, err, sizeof err) != 0) { /* before the scene is read */
+        fprintf(stderr, "%s: -o %s\n", c->prog, err);
+        return -2;
     }
     return 0;
 }
@@ -86,7 +92,7 @@ int scene_cmd_compile(int argc, char **argv)
     cli_init(&c, "links1 compile", argc, argv, "o:h", compile_options);
     int r = scene_cmd_args(&c, "links1 compile SCENE.scn -o OUT.l1s", &in, &out, NULL, NULL);
     if (r != 0)
-        return r > 0 ? 0 : 2;
+        return r > 0 ? 0 : r == -2 ? 1 : 2;
     struct sd_scene s;
     char err[SD_ERR_MAX];
     if (scene_file_parse(in, &s, err, sizeof err) != 0) {
@@ -141,7 +147,7 @@ int scene_cmd_export_pov(int argc, char **argv)
     int r = scene_cmd_args(&c, "links1 export-pov SCENE.scn -o OUT.pov [--frame N] [--strict]",
                            &in, &out, export_pov_take, &a);
     if (r != 0)
-        return r > 0 ? 0 : 2;
+        return r > 0 ? 0 : r == -2 ? 1 : 2;
     int strict = a.strict, frame = a.frame;
     struct sd_scene s;
     char err[SD_ERR_MAX];

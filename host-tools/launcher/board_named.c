@@ -15,10 +15,12 @@
 #include <string.h>
 #include <sys/mman.h>
 #include <sys/socket.h>
+#include <sys/stat.h>
 #include <sys/un.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "host-tools/link/board_text.h"
 #include "proto/wire.h"
 
 /* What a look at a board's directory found. */
@@ -106,6 +108,21 @@ static void board_named_kill_nc_boards(const struct board_seen *s)
         usleep(20000);
 }
 
+/* Why a recorded pid that still runs is not the board's: "" when no
+ * process has it. */
+static const char *board_named_reused(int pid)
+{
+    static char why[96];
+    long uid = board_state_pid_uid(pid);
+    if (uid < 0)
+        return "";
+    if (uid == (long)getuid())
+        snprintf(why, sizeof why, " (pid %d is now another program of yours)", pid);
+    else
+        snprintf(why, sizeof why, " (pid %d is now a process of uid %ld's)", pid, uid);
+    return why;
+}
+
 /* A board whose QEMU is gone and whose lock no one else holds: reported
  * and removed (1).  0 when it stays: running, or its lock held (a board
  * starting, a session). */
@@ -118,8 +135,8 @@ static int board_named_stale(const char *name, struct board_seen *s)
                 "gone; stopping its NC boards and removing its stale state %s\n", name,
                 s->r.pid, s->dir);
     else if (s->rec == 0)
-        fprintf(stderr, "links1: board %s: its QEMU (pid %d) is gone; removing its stale "
-                "state %s\n", name, s->r.pid, s->dir);
+        fprintf(stderr, "links1: board %s: its QEMU (pid %d) is gone%s; removing its stale "
+                "state %s\n", name, s->r.pid, board_named_reused(s->r.pid), s->dir);
     if (s->rec == 0)
         board_named_kill_nc_boards(s);
     else
@@ -206,8 +223,12 @@ static int board_named_dial(const char *dir, int pid, int child, int timeout_ms)
         int st;
         if ((child && waitpid(pid, &st, WNOHANG) == pid) ||
             (!child && !board_state_alive(dir, pid))) {
-            fprintf(stderr, "links1: QEMU (pid %d) ended before its UART socket took a "
-                    "connection; its output is in %s/%s\n", pid, dir, BOARD_STATE_LOG);
+            if (child) /* its state, the log too, goes: board_named_abandon prints it */
+                fprintf(stderr, "links1: QEMU (pid %d) ended before its UART socket took a "
+                        "connection\n", pid);
+            else
+                fprintf(stderr, "links1: QEMU (pid %d) ended before its UART socket took a "
+                        "connection; its output is in %s/%s\n", pid, dir, BOARD_STATE_LOG);
             return -1;
         }
         if (board_now_ms() >= end) {
@@ -261,8 +282,40 @@ static const char *board_named_name(const struct board *b)
     return slash ? slash + 1 : b->state_dir;
 }
 
+/* The last lines of QEMU's output in the board's log, printed (before
+ * the state goes with it). */
+static void board_named_log_tail(const struct board *b)
+{
+    enum { TAIL_BYTES = 1536 };
+    struct stat st;
+    int fd = b->state_fd >= 0 ? openat(b->state_fd, BOARD_STATE_LOG,
+                                       O_RDONLY | O_NOFOLLOW | O_NONBLOCK | O_CLOEXEC)
+                              : -1;
+    char text[TAIL_BYTES + 1];
+    ssize_t n = -1;
+    if (fd >= 0 && fstat(fd, &st) == 0 && S_ISREG(st.st_mode) && st.st_size > 0)
+        n = pread(fd, text, TAIL_BYTES, st.st_size > TAIL_BYTES ? st.st_size - TAIL_BYTES : 0);
+    if (fd >= 0)
+        close(fd);
+    if (n <= 0)
+        return;
+    char *start = text, *end = text + n;
+    if (st.st_size > TAIL_BYTES && memchr(text, '\n', (size_t)n)) /* from a whole line */
+        start = (char *)memchr(text, '\n', (size_t)n) + 1;
+    fprintf(stderr, "links1: board %s: the end of QEMU's output (%s/%s, removed with the "
+            "board's state):\n", board_named_name(b), b->state_dir, BOARD_STATE_LOG);
+    while (start < end) {
+        char *nl = memchr(start, '\n', (size_t)(end - start));
+        size_t len = nl ? (size_t)(nl - start) : (size_t)(end - start);
+        char line[BOARD_TEXT_CAP(TAIL_BYTES)];
+        fprintf(stderr, "    %s\n", board_text(start, len, line, sizeof line));
+        start += len + 1;
+    }
+}
+
 void board_named_abandon(struct board *b)
 {
+    board_named_log_tail(b);
     if (b->qemu_pid > 0) {
         kill(b->qemu_pid, SIGKILL);
         waitpid(b->qemu_pid, NULL, 0);
@@ -337,8 +390,9 @@ int board_connect(struct board *b, const struct board_opts *o, const char *name)
     else if (r == 1 && s.lock == -2)
         fprintf(stderr, "links1: board %s is in use by another links1 session (or still "
                 "starting)\n", name);
-    else if (r == 1 && !s.alive)
-        board_named_stale(name, &s);
+    else if (r == 1 && !s.alive && board_named_stale(name, &s))
+        fprintf(stderr, "links1: board %s is not running (`links1 board start --name %s`)\n",
+                name, name);
     else if (r == 1 && s.lock == -3)
         fprintf(stderr, "links1: board %s: %s has no lock file: not a board's state\n", name,
                 s.dir);
@@ -406,6 +460,25 @@ static void board_named_clear(const char *name)
     board_named_unlook(&s);
 }
 
+/* The board's QEMU (pid, not our child) that did not power off: SIGTERM,
+ * then SIGKILL.  1 once it is gone; 0 after saying why it still runs (a
+ * signal refused: then it was not this user's to stop). */
+static int board_named_kill(const char *name, const char *dir, int pid)
+{
+    fprintf(stderr, "links1: board %s did not power off; stopping QEMU (pid %d) with "
+            "SIGTERM\n", name, pid);
+    int sig = SIGTERM;
+    for (int i = 0; i < 2 && board_state_alive(dir, pid); i++, sig = SIGKILL) {
+        if (kill(pid, sig) != 0 && errno != ESRCH) {
+            fprintf(stderr, "links1: board %s: %s to QEMU (pid %d): %s\n", name,
+                    sig == SIGTERM ? "SIGTERM" : "SIGKILL", pid, strerror(errno));
+            break;
+        }
+        board_named_gone(dir, pid, BOARD_TERM_WAIT_MS);
+    }
+    return !board_state_alive(dir, pid);
+}
+
 int board_stop_named(const char *name)
 {
     struct board_seen s;
@@ -418,7 +491,9 @@ int board_stop_named(const char *name)
     }
     if (!s.alive) {
         int gone = board_named_stale(name, &s); /* reported and removed */
-        if (!gone)
+        if (gone)
+            printf("links1: board %s was not running (its stale state is removed)\n", name);
+        else
             fprintf(stderr, "links1: board %s: its QEMU is not running, but its lock is held "
                     "(starting, or a session still ending): left as it is\n", name);
         board_named_unlook(&s);
@@ -433,30 +508,25 @@ int board_stop_named(const char *name)
     board_opts_init(&o);
     o.quiet = 1;
     struct board b;
-    int rc = 0;
     if (board_connect(&b, &o, name) == 0) {
         b.stopping = 1;
         if (board_send_cmd(&b, CMD_SHUTDOWN, NULL, 0) == 0)
             board_session_drain(&b, BOARD_SHUTDOWN_WAIT_MS);
         board_stop(&b);
     }
-    if (!board_named_gone(dir, pid, BOARD_SHUTDOWN_WAIT_MS)) {
-        fprintf(stderr, "links1: board %s did not power off; stopping QEMU (pid %d) with "
-                "SIGTERM\n", name, pid);
-        kill(pid, SIGTERM);
-        if (!board_named_gone(dir, pid, BOARD_TERM_WAIT_MS) && board_state_alive(dir, pid)) {
-            kill(pid, SIGKILL);
-            board_named_gone(dir, pid, BOARD_TERM_WAIT_MS);
-        }
-        rc = 1;
+    if (!board_named_gone(dir, pid, BOARD_SHUTDOWN_WAIT_MS) && !board_named_kill(name, dir, pid)) {
+        fprintf(stderr, "links1: board %s is still running (QEMU pid %d): not stopped, its "
+                "state left as it is\n", name, pid);
+        return -1;
     }
+    int rc = 0;
     board_named_kill_nc_boards(&nc);
     if (board_named_nc_alive(&nc)) {
         fprintf(stderr, "links1: board %s: an NC board's QEMU outlived SIGKILL\n", name);
-        rc = 1;
+        rc = -1;
     }
     board_named_clear(name);
-    printf("links1: board %s stopped\n", name);
+    printf("links1: board %s stopped%s\n", name, rc ? " (but not every NC board)" : "");
     return rc;
 }
 

@@ -23,7 +23,8 @@ const char board_opts_usage[] =
     "                   with --escalate, in $FW_DIR,\n"
     "                   else next to this program)\n"
     "  --timeout S      seconds to wait for every unit computer to report in (default 60)\n"
-    "  --ram MB         board memory (default 1024, what the firmware carves)\n"
+    "  --ram MB         board memory in MiB (1024..2048, default 1024: what the\n"
+    "                   firmware carves; it does not boot with less)\n"
     "  --quiet          do not print the board's log or the board-up line\n"
     "  --verbose        print each unit computer reporting in\n"
     "  --gdb            start halted, QEMU's gdb stub on a unix socket in your state\n"
@@ -63,6 +64,24 @@ static int board_opt_gdb(struct board_opts *o, const struct cli *c)
     return 1;
 }
 
+/* --ram MB: at least what the firmware carves, refused here rather than
+ * by the DM's panic at boot. */
+static int board_opt_ram(struct board_opts *o, const struct cli *c)
+{
+    long mb;
+    if (cli_long(c, 10, 0, BOARD_MAX_RAM_MB, &mb) < 0)
+        return -1;
+    if (mb < BOARD_FIRMWARE_RAM_MB) {
+        char want[160];
+        snprintf(want, sizeof want, "at least %d: the firmware lays out %d MiB of RAM "
+                 "(linker/virt-memory.ld) and stops at boot with less; at most %d",
+                 BOARD_FIRMWARE_RAM_MB, BOARD_FIRMWARE_RAM_MB, BOARD_MAX_RAM_MB);
+        return cli_bad_value(c, want);
+    }
+    o->ram_mb = (int)mb;
+    return 1;
+}
+
 int board_opt(struct board_opts *o, const struct cli *c, int code)
 {
     switch (code) {
@@ -71,7 +90,7 @@ int board_opt(struct board_opts *o, const struct cli *c, int code)
     case BOARD_OPT_TIMEOUT:
         return cli_int(c, 1, BOARD_MAX_TIMEOUT_S, &o->timeout_s) < 0 ? -1 : 1;
     case BOARD_OPT_RAM:
-        return cli_int(c, BOARD_MIN_RAM_MB, BOARD_MAX_RAM_MB, &o->ram_mb) < 0 ? -1 : 1;
+        return board_opt_ram(o, c);
     case BOARD_OPT_QUIET:
         o->quiet = 1;
         return 1;

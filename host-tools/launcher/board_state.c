@@ -363,20 +363,17 @@ int board_state_open_ram(int dir_fd, const char *dir, size_t size)
 void board_state_chardev(const char *dir, char *out, size_t cap)
 {
     /* wait=on: the guest starts only once `board start` is connected, so
-     * no report-in is lost. */
-    snprintf(out, cap, "socket,id=link,path=%s/%s,server=on,wait=on", dir, BOARD_STATE_SOCKET);
+     * no report-in is lost.  QEMU's option syntax: a comma of the path
+     * doubled. */
+    char esc[2 * PATH_MAX];
+    snprintf(out, cap, "socket,id=link,path=%s/%s,server=on,wait=on",
+             qemu_opt_escape(dir, esc, sizeof esc), BOARD_STATE_SOCKET);
 }
 
 void board_state_nc_name(const char *dir, int k, char *out, size_t cap)
 {
-    /* QEMU's option syntax: a comma of the path doubled. */
-    int n = snprintf(out, cap, "guest=links1-nc-board-%d:", k);
-    for (const char *c = dir; *c && n + 3 < (int)cap; c++) {
-        out[n++] = *c;
-        if (*c == ',')
-            out[n++] = ',';
-    }
-    out[n < (int)cap ? n : (int)cap - 1] = 0;
+    char esc[2 * PATH_MAX];
+    snprintf(out, cap, "guest=links1-nc-board-%d:%s", k, qemu_opt_escape(dir, esc, sizeof esc));
 }
 
 /* 1 when pid runs and its command line holds an argument equal to want. */
@@ -384,7 +381,7 @@ static int board_state_runs_with(int pid, const char *want);
 
 int board_state_alive(const char *dir, int pid)
 {
-    char want[PATH_MAX + 160];
+    char want[2 * PATH_MAX + 160];
     board_state_chardev(dir, want, sizeof want);
     return board_state_runs_with(pid, want);
 }
@@ -396,13 +393,56 @@ int board_state_nc_alive(const char *dir, int k, int pid)
     return board_state_runs_with(pid, want);
 }
 
+/* The process of /proc/PID (proc_fd) is this user's: its real and
+ * effective uid in its status are ours.  1, or 0 (another user's, or gone)
+ * with its real uid in *uid (-1 when unknown). */
+static int board_state_pid_ours(int proc_fd, long *uid)
+{
+    char text[4096];
+    int fd = openat(proc_fd, "status", O_RDONLY | O_CLOEXEC);
+    ssize_t n = fd >= 0 ? read(fd, text, sizeof text - 1) : -1;
+    if (fd >= 0)
+        close(fd);
+    text[n > 0 ? n : 0] = 0;
+    const char *line = strstr(text, "\nUid:");
+    long real = -1, eff = -1;
+    if (!line || sscanf(line + 5, "%ld %ld", &real, &eff) != 2)
+        real = eff = -1;
+    *uid = real;
+    return real >= 0 && real == (long)getuid() && eff == (long)geteuid();
+}
+
+long board_state_pid_uid(int pid)
+{
+    char path[64];
+    snprintf(path, sizeof path, "/proc/%d", pid);
+    int fd = pid > 1 ? open(path, O_RDONLY | O_DIRECTORY | O_CLOEXEC) : -1;
+    long uid = -1;
+    if (fd >= 0) {
+        board_state_pid_ours(fd, &uid);
+        close(fd);
+    }
+    return uid;
+}
+
 static int board_state_runs_with(int pid, const char *want)
 {
     char path[64];
     if (pid <= 1)
         return 0;
-    snprintf(path, sizeof path, "/proc/%d/cmdline", pid);
-    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    /* Both files read through one handle of /proc/PID: a pid reused
+     * between them fails the second read instead of mixing two processes. */
+    snprintf(path, sizeof path, "/proc/%d", pid);
+    int dir = open(path, O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+    long uid;
+    if (dir < 0)
+        return 0;
+    if (!board_state_pid_ours(dir, &uid)) { /* another user's: a pid reused */
+        close(dir);
+        return 0;
+    }
+    int fd = openat(dir, "cmdline", O_RDONLY | O_CLOEXEC);
+    close(dir);
     char *cmd = fd >= 0 ? malloc(BOARD_STATE_CMDLINE_MAX + 1) : NULL;
     size_t n = 0;
     while (cmd && n < BOARD_STATE_CMDLINE_MAX) {

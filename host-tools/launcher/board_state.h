@@ -11,7 +11,10 @@
  *   - every value read back from the record is range-checked;
  *   - nothing is removed while the board's lock is held by someone else
  *     (a board starting, or a session), and a board counts as running only
- *     when its QEMU's command line names exactly its directory.
+ *     when its recorded pid is a process of this user's (real and
+ *     effective uid) whose command line names exactly its directory: a
+ *     pid reused by another user's process, whatever its command line,
+ *     is a board gone.
  * Each function that fails prints a message naming the path and the
  * problem. */
 #ifndef LINKS1_HOST_LAUNCHER_BOARD_STATE_H
@@ -89,14 +92,19 @@ int board_state_create(int dir_fd, const char *file, int flags);
  * after printing why. */
 int board_state_open_ram(int dir_fd, const char *dir, size_t size);
 
-/* The board's UART chardev as QEMU is given it: its command line holds
- * this exact argument, and only this board's QEMU does. */
+/* The board's UART chardev as QEMU is given it (the path's commas
+ * doubled, qemu_opt_escape): its command line holds this exact argument,
+ * and only this board's QEMU does. */
 void board_state_chardev(const char *dir, char *out, size_t cap);
 
-/* 1 when pid runs and its command line holds an argument equal to the
- * chardev of dir (a pid reused by another program, or the QEMU of a board
- * whose directory merely begins with dir, does not count). */
+/* 1 when pid runs as this user (real and effective uid) and its command
+ * line holds an argument equal to the chardev of dir (a pid reused by
+ * another program or another user's process, or the QEMU of a board whose
+ * directory merely begins with dir, does not count). */
 int board_state_alive(const char *dir, int pid);
+
+/* The real uid pid runs as, or -1 when there is no such process. */
+long board_state_pid_uid(int pid);
 
 /* An an521 NC board's QEMU of a named set has no UART; it is known by its
  * -name argument, this (board k of the set in dir). */

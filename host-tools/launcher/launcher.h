@@ -19,7 +19,12 @@
 
 #define BOARD_DEFAULT_CORES 10
 #define BOARD_DEFAULT_RAM_MB BOARD_RAM_MB /* what the firmware carves */
+/* The least RAM a board is started with and a record may hold (a test of
+ * the firmware's own refusal of too little starts one below the next). */
 #define BOARD_MIN_RAM_MB 64
+/* The least --ram takes: what the firmware carves (linker/virt-memory.ld
+ * lays its memory out up to 0x80000000; given less, the DM panics at boot). */
+#define BOARD_FIRMWARE_RAM_MB BOARD_RAM_MB
 #define BOARD_MAX_RAM_MB 2048 /* the virt board's 32-bit RAM window below 4 GiB */
 /* Default seconds to wait for every unit computer to report in.  256 cores
  * start one after another under emulation on two host cores, so this is
@@ -36,6 +41,14 @@
 /* --link-noise: the send buffer of each socket towards the board around the
  * relay (the kernel doubles it). */
 #define BOARD_RELAY_SNDBUF 4096
+
+/* QEMU's option syntax ("-chardev socket,path=P,server=on", "-plugin
+ * SO,out=F") ends a value at a ',' and takes ",," as a comma of the value:
+ * value with each ',' doubled, into out, which it returns (cap at least
+ * 2 * strlen(value) + 1 holds it whole; else it ends early, never in the
+ * middle of a doubled comma).  Every path put into a QEMU option string
+ * goes through this; -kernel takes a plain path and does not. */
+const char *qemu_opt_escape(const char *value, char *out, size_t cap);
 
 /* Fills o with the defaults (BOARD_DEFAULT_*). */
 void board_opts_init(struct board_opts *o);

@@ -55,6 +55,22 @@ void board_qemu_gone(struct board *b, char *desc, size_t cap)
     }
 }
 
+const char *qemu_opt_escape(const char *value, char *out, size_t cap)
+{
+    size_t n = 0;
+    for (const char *c = value; cap > 0 && *c; c++) {
+        size_t need = *c == ',' ? 2 : 1;
+        if (n + need >= cap)
+            break;
+        out[n++] = *c;
+        if (*c == ',')
+            out[n++] = ',';
+    }
+    if (cap > 0)
+        out[n] = 0;
+    return out;
+}
+
 /* The emulator: $QEMU, else qemu-system-arm from $PATH. */
 static const char *board_qemu_binary(void)
 {
@@ -71,6 +87,20 @@ static void board_qemu_exec_failed(const char *qemu)
     _exit(127);
 }
 
+/* The counting plugin's shared object, its commas doubled, into out:
+ * $LINKS1_INSN_PLUGIN, else insn-count.so next to this program. */
+static void board_plugin_so(char *out, size_t cap)
+{
+    const char *so = getenv("LINKS1_INSN_PLUGIN");
+    char self[PATH_MAX], path[PATH_MAX + 16];
+    if (!so || !*so) {
+        self_dir(self, sizeof self);
+        snprintf(path, sizeof path, "%s/insn-count.so", self);
+        so = path;
+    }
+    qemu_opt_escape(so, out, cap);
+}
+
 /* In the child.  A board of this tool's own (qemu_fd >= 0, the UART on a
  * socket pair, the RAM our memfd) must not outlive the tool, whatever ends
  * the tool; a named board (qemu_fd < 0: the UART a listening socket, the RAM
@@ -85,25 +115,22 @@ static int board_plugin_arg(const struct board *b, int board, char *out, size_t 
     if (!o->insn_count_out && !o->insn_series_out && !o->insn_trace_out &&
         !o->insn_profile_out)
         return 0;
-    const char *so = getenv("LINKS1_INSN_PLUGIN");
-    char self[PATH_MAX], file[PATH_MAX + 16];
-    if (!so || !*so) {
-        self_dir(self, sizeof self);
-        snprintf(out, cap, "%s/insn-count.so", self);
-    } else {
-        snprintf(out, cap, "%s", so);
-    }
+    char file[PATH_MAX + 16], esc[2 * PATH_MAX + 40];
+    board_plugin_so(out, cap);
     size_t n = strlen(out);
     if (o->insn_count_out) {
         board_an521_file(o->insn_count_out, board, file, sizeof file);
-        n += (size_t)snprintf(out + n, n < cap ? cap - n : 0, ",out=%s", file);
+        n += (size_t)snprintf(out + n, n < cap ? cap - n : 0, ",out=%s",
+                              qemu_opt_escape(file, esc, sizeof esc));
     }
     if (o->insn_series_out && board == 0)
         n += (size_t)snprintf(out + n, n < cap ? cap - n : 0, ",series=%s,every=%d",
-                              o->insn_series_out, o->insn_series_ms);
+                              qemu_opt_escape(o->insn_series_out, esc, sizeof esc),
+                              o->insn_series_ms);
     if (o->insn_trace_out) {
         board_an521_file(o->insn_trace_out, board, file, sizeof file);
-        n += (size_t)snprintf(out + n, n < cap ? cap - n : 0, ",trace=%s", file);
+        n += (size_t)snprintf(out + n, n < cap ? cap - n : 0, ",trace=%s",
+                              qemu_opt_escape(file, esc, sizeof esc));
     }
     if (o->insn_profile_out) {
         board_an521_file(o->insn_profile_out, board, file, sizeof file);
@@ -116,7 +143,7 @@ static int board_plugin_arg(const struct board *b, int board, char *out, size_t 
             to = here ? from : 0;
         }
         n += (size_t)snprintf(out + n, n < cap ? cap - n : 0, ",profile=%s,profile_from=%d",
-                              file, from);
+                              qemu_opt_escape(file, esc, sizeof esc), from);
         if (to != -2)
             n += (size_t)snprintf(out + n, n < cap ? cap - n : 0, ",profile_to=%d", to);
     }
@@ -181,7 +208,7 @@ static void board_ram_arg(const struct board *b, char *out, size_t cap)
 static void board_qemu_exec_nc_board(struct board *b, int board)
 {
     signal(SIGPIPE, SIG_DFL);
-    char ram[PATH_MAX + 96], loader[96], plugin[3 * PATH_MAX], name[2 * PATH_MAX + 64];
+    char ram[PATH_MAX + 96], loader[96], plugin[8 * PATH_MAX], name[2 * PATH_MAX + 64];
     if (b->named) {
         /* One of a named set: runs on in a session of its own, its output
          * in the set's log, known by its -name (board_state_nc_alive). */
@@ -226,7 +253,7 @@ static void board_qemu_exec_nc_board(struct board *b, int board)
 static void board_qemu_exec(struct board *b, int qemu_fd)
 {
     signal(SIGPIPE, SIG_DFL); /* the session's SIG_IGN is ours, not QEMU's */
-    char smp[32], mem[32], chardev[PATH_MAX + 160], plugin[3 * PATH_MAX], ram[PATH_MAX + 96];
+    char smp[32], mem[32], chardev[2 * PATH_MAX + 160], plugin[8 * PATH_MAX], ram[PATH_MAX + 96];
     snprintf(smp, sizeof smp, "%d", b->opts.ncores);
     snprintf(mem, sizeof mem, "%dM", b->opts.ram_mb);
     if (qemu_fd >= 0) {
@@ -262,17 +289,19 @@ static void board_qemu_exec(struct board *b, int qemu_fd)
     /* $LINKS1_MONITOR=PATH: QEMU's human monitor on a unix socket, e.g. for
      * `screendump` of the ramfb view while a frame renders. */
     const char *monitor = getenv("LINKS1_MONITOR");
-    char monitor_arg[PATH_MAX + 40];
+    char monitor_arg[2 * PATH_MAX + 40], esc[2 * PATH_MAX];
     if (monitor && *monitor) {
-        snprintf(monitor_arg, sizeof monitor_arg, "unix:%s,server=on,wait=off", monitor);
+        snprintf(monitor_arg, sizeof monitor_arg, "unix:%s,server=on,wait=off",
+                 qemu_opt_escape(monitor, esc, sizeof esc));
         argv[n++] = "-monitor";
         argv[n++] = monitor_arg;
     }
-    char gdb[sizeof b->gdb_socket + 32];
+    char gdb[2 * sizeof b->gdb_socket + 32];
     if (b->opts.gdb) {
         /* Halted at the first instruction until the debugger continues;
          * the stub on a unix socket in the user's own state directory. */
-        snprintf(gdb, sizeof gdb, "unix:%s,server=on,wait=off", b->gdb_socket);
+        snprintf(gdb, sizeof gdb, "unix:%s,server=on,wait=off",
+                 qemu_opt_escape(b->gdb_socket, esc, sizeof esc));
         argv[n++] = "-gdb";
         argv[n++] = gdb;
         argv[n++] = "-S";
@@ -308,7 +337,7 @@ int board_run_semihost_smp(const char *elf, int ram_mb, int cores, const char *t
         fprintf(stderr, "links1: semihosting program on %d cores: 1..8\n", cores);
         return -1;
     }
-    char mem[32], smp[16], plugin[3 * PATH_MAX];
+    char mem[32], smp[16], plugin[8 * PATH_MAX];
     snprintf(mem, sizeof mem, "%dM", ram_mb);
     snprintf(smp, sizeof smp, "%d", cores);
     const char *qemu = board_qemu_binary();
@@ -321,14 +350,11 @@ int board_run_semihost_smp(const char *elf, int ram_mb, int cores, const char *t
                             "-kernel", elf};
     int n = 19;
     if (trace_out) {
-        const char *so = getenv("LINKS1_INSN_PLUGIN");
-        char self[PATH_MAX];
-        if (!so || !*so) {
-            self_dir(self, sizeof self);
-            snprintf(plugin, sizeof plugin, "%s/insn-count.so,trace=%s", self, trace_out);
-        } else {
-            snprintf(plugin, sizeof plugin, "%s,trace=%s", so, trace_out);
-        }
+        char esc[2 * PATH_MAX];
+        board_plugin_so(plugin, sizeof plugin);
+        size_t used = strlen(plugin);
+        snprintf(plugin + used, sizeof plugin - used, ",trace=%s",
+                 qemu_opt_escape(trace_out, esc, sizeof esc));
         argv[n++] = "-plugin";
         argv[n++] = plugin;
     }

@@ -36,14 +36,37 @@ static int out_file_target_ok(const char *path, char *err, size_t cap)
     return -1;
 }
 
-int out_file_open(struct out_file *o, const char *path, char *err, size_t cap)
+int out_file_check(const char *path, char *err, size_t cap)
 {
-    memset(o, 0, sizeof *o);
-    if (strlen(path) >= sizeof o->path || !*path) {
+    if (strlen(path) >= PATH_MAX || !*path) {
         snprintf(err, cap, "%.200s...: not a usable output path", path);
         return -1;
     }
     if (out_file_target_ok(path, err, cap) < 0)
+        return -1;
+    /* Its directory: where the temporary file is made. */
+    char dir[PATH_MAX];
+    const char *slash = strrchr(path, '/');
+    if (!slash)
+        snprintf(dir, sizeof dir, ".");
+    else
+        snprintf(dir, sizeof dir, "%.*s", slash == path ? 1 : (int)(slash - path), path);
+    struct stat st;
+    const char *why = stat(dir, &st) != 0            ? strerror(errno)
+                      : !S_ISDIR(st.st_mode)          ? "not a directory"
+                      : access(dir, W_OK | X_OK) != 0 ? "you cannot make a file in it"
+                                                      : NULL;
+    if (why) {
+        snprintf(err, cap, "%s: its directory %s: %s", path, dir, why);
+        return -1;
+    }
+    return 0;
+}
+
+int out_file_open(struct out_file *o, const char *path, char *err, size_t cap)
+{
+    memset(o, 0, sizeof *o);
+    if (out_file_check(path, err, cap) < 0)
         return -1;
     memcpy(o->path, path, strlen(path) + 1);
     const char *slash = strrchr(path, '/');

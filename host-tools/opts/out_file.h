@@ -19,6 +19,11 @@ struct out_file {
     char tmp[PATH_MAX];     /* the temporary file beside it */
 };
 
+/* OUT checked before any work is done for it (out_file_open checks it
+ * again): a usable path, missing or a regular file, in a directory there
+ * that this user can make a file in.  0, or -1 with "OUT: why" in err. */
+int out_file_check(const char *path, char *err, size_t cap);
+
 /* The temporary file for OUT opened in o->f.  0, or -1 with "OUT: why" in
  * err (nothing made). */
 int out_file_open(struct out_file *o, const char *path, char *err, size_t cap);

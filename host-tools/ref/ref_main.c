@@ -10,6 +10,7 @@
  * A text scene is compiled in memory first, so the host goes through the
  * same compiled form and the same loader (render/scene_load.c) as the board.
  */
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,6 +19,7 @@
 #include "host-tools/image/film.h"
 #include "host-tools/image/image_io.h"
 #include "host-tools/opts/cli_args.h"
+#include "host-tools/opts/out_file.h"
 #include "host-tools/image/image_save.h"
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_file.h"
@@ -374,12 +376,29 @@ static int ref_parse(int argc, char **argv, struct ref_args *a)
     return 0;
 }
 
+/* -o OUT (with --frames, its first frame's file) checked before any
+ * rendering.  0, or -1 after saying why. */
+static int ref_out_check(const struct ref_args *a)
+{
+    char path[PATH_MAX + 16], err[PATH_MAX + 256];
+    if (a->many && film_kind_of(a->out) == FILM_NONE)
+        scene_file_frame_path(a->out, a->first, path, sizeof path);
+    else
+        snprintf(path, sizeof path, "%s", a->out);
+    if (out_file_check(path, err, sizeof err) == 0)
+        return 0;
+    fprintf(stderr, "links1 ref: -o %s\n", err);
+    return -1;
+}
+
 int main(int argc, char **argv)
 {
     struct ref_args a;
     int r = ref_parse(argc, argv, &a);
     if (r != 0)
         return r > 0 ? ref_usage(stdout, 0) : ref_usage(stderr, 2);
+    if (ref_out_check(&a) != 0)
+        return 1;
     const char *in = a.in, *out = a.out;
     long first = a.first, last = a.last;
 
