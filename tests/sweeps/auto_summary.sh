@@ -11,7 +11,7 @@ set -eu
 tsv=$1
 title=$2
 [ -r "$tsv" ] || { echo "auto_summary.sh: $tsv: cannot read it" >&2; exit 1; }
-printf '%s: one row a family; every scene and unit computer is in the .tsv of the same name beside this file.\n\n' "$title"
+printf '%s: a row a family (every scene: the .tsv of this name).\n\n' "$title"
 awk -F'\t' '
 function arith(p) { sub(/,.*/, "", p); return p }
 function add(list, key,    n) { # "float 8, soft 2": counts in order of first sight
@@ -37,11 +37,11 @@ NR == 1 { next }
     r[f, $3] = maxr(r[f, $3], $10); rall[$3] = maxr(rall[$3], $10)
 }
 END {
-    print "| family | scenes | picks with VFP | picks without an FPU | lowest PSNR of a pick (dB) | pick / cheapest, VFP (max) | pick / cheapest, no FPU (max) |"
+    print "| family | scenes | picks, VFP | picks, no FPU | lowest PSNR (dB) | pick / cheapest, VFP | no FPU |"
     print "|---|---|---|---|---|---|---|"
     for (i = 1; i <= nf; i++) {
         f = fams[i]
-        extra = refused[f] ? " (" refused[f] " refused by every build)" : ""
+        extra = refused[f] ? " (" refused[f] " refused)" : ""
         printf "| %s | %d%s | %s | %s | %s | %sx | %sx |\n", f, scenes[f], extra,
             names(f SUBSEP "vfp"), names(f SUBSEP "none"), low[f] == "" ? "-" : low[f],
             r[f, "vfp"] == "" ? "-" : r[f, "vfp"], r[f, "none"] == "" ? "-" : r[f, "none"]
