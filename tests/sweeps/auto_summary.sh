@@ -14,11 +14,11 @@ title=$2
 printf '%s: a row a family (every scene: the .tsv of this name).\n\n' "$title"
 awk -F'\t' '
 function arith(p) { sub(/,.*/, "", p); return p }
-function add(list, key,    n) { # "float 8, soft 2": counts in order of first sight
+function add(list, key) { # "float 78, soft 13": counts in order of first sight
     if (!((list, key) in seen)) { seen[list, key] = 1; order[list] = order[list] (order[list] == "" ? "" : "\t") key }
     cnt[list, key]++
 }
-function names(list,    k, n, i, out) {
+function names(list,    k, n, i, out) { # the counts of a list, as text
     n = split(order[list], k, "\t"); out = ""
     for (i = 1; i <= n; i++) out = out (i > 1 ? ", " : "") k[i] " " cnt[list, k[i]]
     return out == "" ? "-" : out
@@ -30,23 +30,23 @@ NR == 1 { next }
     if (!(f in scenes)) { fams[++nf] = f; scenes[f] = 0; low[f] = "" }
     if ($3 == "vfp") { scenes[f]++; all++ }
     if ($4 ~ /^refused/) { if ($3 == "vfp") { refused[f]++; allref++ } next }
-    if ($4 ~ /^none/) { add(f SUBSEP $3, "no pick"); nopick++; next }
-    add(f SUBSEP $3, arith($4)); picks++
+    if ($4 ~ /^none/) { nopick++; next }
+    add("all" SUBSEP $3, arith($4)); picks++
     if (low[f] == "" || $5 + 0 < low[f] + 0) low[f] = $5
     if (lowall == "" || $5 + 0 < lowall + 0) lowall = $5
     r[f, $3] = maxr(r[f, $3], $10); rall[$3] = maxr(rall[$3], $10)
 }
 END {
-    print "| family | scenes | picks, VFP | picks, no FPU | lowest PSNR (dB) | pick / cheapest, VFP | no FPU |"
-    print "|---|---|---|---|---|---|---|"
+    print "| family | scenes | lowest PSNR (dB) | pick / cheapest, VFP | no FPU |"
+    print "|---|---|---|---|---|"
     for (i = 1; i <= nf; i++) {
         f = fams[i]
         extra = refused[f] ? " (" refused[f] " refused)" : ""
-        printf "| %s | %d%s | %s | %s | %s | %sx | %sx |\n", f, scenes[f], extra,
-            names(f SUBSEP "vfp"), names(f SUBSEP "none"), low[f] == "" ? "-" : low[f],
+        printf "| %s | %d%s | %s | %sx | %sx |\n", f, scenes[f], extra, low[f] == "" ? "-" : low[f],
             r[f, "vfp"] == "" ? "-" : r[f, "vfp"], r[f, "none"] == "" ? "-" : r[f, "none"]
     }
-    printf "\n%d scenes, %d refused by every build; %d picks, %d without a pick; lowest PSNR of a pick %s dB; pick / cheapest at most %sx with VFP, %sx without an FPU.\n",
+    printf "\n%d scenes, %d refused by every build; %d picks, %d without a pick; lowest PSNR of a pick %s dB; pick / cheapest at most %sx with VFP, %sx without an FPU.  Picked with VFP: %s; without an FPU: %s.\n",
         all, allref, picks, nopick, lowall == "" ? "-" : lowall,
-        rall["vfp"] == "" ? "-" : rall["vfp"], rall["none"] == "" ? "-" : rall["none"]
+        rall["vfp"] == "" ? "-" : rall["vfp"], rall["none"] == "" ? "-" : rall["none"],
+        names("all" SUBSEP "vfp"), names("all" SUBSEP "none")
 }' "$tsv"
