@@ -139,10 +139,7 @@ paste <(field ncs <"$TMP/r7-default.txt") <(field speed-up <"$TMP/r7-paper.txt")
         echo "| $n | ${BOARD_S[$n]:--} | $sp | $sd | $k, $g | $busy | $(awk -v m="$ms" 'BEGIN { printf "%.1f", m / 1000 }') | $st | $tk, $tg |"
     done <"$TMP/r7.tsv"
     echo
-    sed -n 1,2p "$TMP/r7-default.txt"
-    echo
     echo "Paper mode's run: $(grep -m1 'paper mode:' "$TMP/b7-paper.log" | sed 's/^links1 render: //')"
-    sed -n 1,3p "$TMP/r7-paper.txt"
 } >"$OUT/fig7.md"
 gnuplot -e "dat='$OUT/fig7.dat'; out='$OUT/fig7.png'; size='$SIZE7'" \
     tests/bench/plots/fig7.gp || fail "gnuplot fig7"

@@ -11,7 +11,8 @@
 #          that has a candidate at or above TARGET dB; with VFP also float
 #          and fixed Q12.19 escalated (--escalate, the -esc firmware)
 #   best   the cheapest candidate at or above TARGET dB at SIZE
-# Writes DIR/auto.tsv and DIR/auto.md (the table of docs/results/arith-auto.md) and
+# Writes DIR/auto.tsv (every scene) and DIR/auto.md (a row a family:
+# tests/sweeps/auto_summary.sh) and
 # prints the summary: scenes where the pick keeps
 # TARGET dB, and the largest cost of the pick over the best.
 #   bash tests/sweeps/auto.sh [--out DIR]
@@ -138,13 +139,6 @@ for fpu in vfp none; do
     }' "$tsv"
 done
 
-# the table of docs/results/arith-auto.md
-awk -F'\t' 'BEGIN {
-    print "| family | knob | VFP: pick, PSNR, NC insns/pixel, pick / best | no FPU: pick | PSNR | NC insns/pixel | best at 40 dB (insns/pixel) | pick / best |"
-    print "|---|---|---|---|---|---|---|---|"
-}
-NR > 1 && $4 ~ /^refused/ { if ($3 == "vfp") print "| " $1 " | " $2 " | refused by every build ||||||"; next }
-NR > 1 && $3 == "vfp" { v = $4 ", " $5 " dB, " $6 ", " $10 "x"; next }
-NR > 1 { printf "| %s | %s | %s | %s | %s | %s | %s (%s) | %s |\n", $1, $2, v, $4, $5, $6, $7, $9, $10 }' \
-    "$tsv" >"$out/auto.md"
+# the summary, one row a family (docs/figures/sweep-auto.md; every row stays in the .tsv)
+bash tests/sweeps/auto_summary.sh "$tsv" "\`--arith auto\` on the sweep scenes at $SIZE (tests/sweeps/auto.sh)" >"$out/auto.md"
 echo "auto: $tsv, $out/auto.md"

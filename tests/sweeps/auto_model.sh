@@ -19,7 +19,8 @@
 #          the board
 # The density_steps scenes differ only in their density_steps option, which
 # every render here overrides: their best is found once.
-# Writes DIR/auto_model.tsv and DIR/auto_model.md and prints per unit
+# Writes DIR/auto_model.tsv (every scene) and DIR/auto_model.md (a row a
+# family: tests/sweeps/auto_summary.sh) and prints per unit
 # computer: picks, picks below TARGET at SIZE, the largest pick / best.
 #   bash tests/sweeps/auto_model.sh [--out DIR]
 # KNOBS=ends: only the first and last knob of each family (inner: the
@@ -221,10 +222,6 @@ for fpu in vfp none; do
             f, n, refused, picks, below, t, nopick, missed, t, t, worst, where
     }' "$tsv"
 done
-awk -F'\t' 'BEGIN {
-    print "| family | knob | unit computer | --auto pick | PSNR at full size | NC insns/pixel | cheapest at the target | its PSNR | its NC insns/pixel | pick / cheapest |"
-    print "|---|---|---|---|---|---|---|---|---|---|"
-}
-NR > 1 { printf "| %s | %s | %s | %s | %s | %s | %s | %s | %s | %s |\n", $1, $2, $3, $4, $5, $6, $7, $8, $9, $10 }' \
-    "$tsv" >"$out/auto_model.md"
+# the summary, one row a family (docs/figures/sweep-auto-model.md; every row stays in the .tsv)
+bash tests/sweeps/auto_summary.sh "$tsv" "\`--auto\` on the sweep scenes at $SIZE (tests/sweeps/auto_model.sh)" >"$out/auto_model.md"
 echo "auto_model: $tsv, $out/auto_model.md"

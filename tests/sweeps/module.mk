@@ -19,7 +19,8 @@ sweeps: deps
 		cp $(B)/sweeps/sweep.tsv docs/figures/sweep.tsv
 
 # make sweeps-auto: --arith auto on every sweep scene against the cheapest
-# candidate that keeps 40 dB (tests/sweeps/auto.sh; about 45 minutes).
+# candidate that keeps 40 dB (tests/sweeps/auto.sh; about 45 minutes): every
+# scene in sweep-auto.tsv, a row a family in sweep-auto.md.
 .PHONY: sweeps-auto
 sweeps-auto: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all
@@ -29,7 +30,8 @@ sweeps-auto: deps
 
 # make sweeps-auto-model: --auto (arithmetic, min_weight and density steps)
 # on every sweep scene against the cheapest configuration that keeps 40 dB
-# at full size (tests/sweeps/auto_model.sh; docs/results/arith-auto.md).
+# at full size (tests/sweeps/auto_model.sh; docs/results/arith-auto.md): every
+# scene in sweep-auto-model.tsv, a row a family in sweep-auto-model.md.
 .PHONY: sweeps-auto-model
 sweeps-auto-model: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all
