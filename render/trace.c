@@ -721,11 +721,19 @@ void render_ctx_init(render_ctx_t *ctx, const render_frame_t *frame)
     ctx->options = frame->options;
 }
 
+/* How a camera ray looks for its nearest hit. */
+typedef enum {
+    PIXEL_SEARCH_TREE,   /* the hierarchy from its root */
+    PIXEL_SEARCH_SCREEN, /* the hierarchy, its boxes first tested by the pixel on the screen */
+    PIXEL_SEARCH_LIST,   /* only the clusters of the area's clipping list (clip, clip_count) */
+} pixel_search_t;
+
 /* Not inlined: its frame (the camera ray's hit and more) is gone before an
  * escalation traces the pixel again on the same stack. */
 static __attribute__((noinline)) rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x,
-                                                         uint32_t y, const uint32_t *clip,
-                                                         uint32_t clip_count, int by_screen)
+                                                         uint32_t y, pixel_search_t search,
+                                                         const uint32_t *clip,
+                                                         uint32_t clip_count)
 {
     const render_frame_t *f = ctx->frame;
     /* through the pixel centre: screen coordinates in [-1, 1] scaled by
@@ -754,8 +762,9 @@ static __attribute__((noinline)) rgb8_t render_pixel_impl(render_ctx_t *ctx, uin
     uint64_t boxes = ctx->stats.box_tests, prims = ctx->stats.prim_tests;
     hit_t hit;
     const int32_t pixel[2] = {(int32_t)x, (int32_t)y};
-    int found = trace_nearest(ctx, &ray, &err, NUM_ZERO, clip, clip_count,
-                              by_screen ? pixel : NULL, &hit);
+    int found = trace_nearest(ctx, &ray, &err, NUM_ZERO,
+                              search == PIXEL_SEARCH_LIST ? clip : NULL, clip_count,
+                              search == PIXEL_SEARCH_SCREEN ? pixel : NULL, &hit);
     ctx->stats.primary_box_tests += ctx->stats.box_tests - boxes;
     ctx->stats.primary_prim_tests += ctx->stats.prim_tests - prims;
     rgb_t c = found ? trace_shade(ctx, &ray, &err, &hit, 0, NUM_ONE) : f->scene->background;
@@ -804,13 +813,14 @@ static rgb8_t render_pixel_settled(render_ctx_t *ctx, uint32_t x, uint32_t y, rg
 
 rgb8_t render_pixel(render_ctx_t *ctx, uint32_t x, uint32_t y)
 {
-    return render_pixel_settled(ctx, x, y, render_pixel_impl(ctx, x, y, NULL, 0, 0));
+    return render_pixel_settled(ctx, x, y,
+                                render_pixel_impl(ctx, x, y, PIXEL_SEARCH_TREE, NULL, 0));
 }
 
 rgb8_t render_pixel_screen(render_ctx_t *ctx, uint32_t x, uint32_t y)
 {
-    return render_pixel_settled(
-        ctx, x, y, render_pixel_impl(ctx, x, y, NULL, 0, ctx->options.use_hierarchy));
+    pixel_search_t search = ctx->options.use_hierarchy ? PIXEL_SEARCH_SCREEN : PIXEL_SEARCH_TREE;
+    return render_pixel_settled(ctx, x, y, render_pixel_impl(ctx, x, y, search, NULL, 0));
 }
 
 rgb8_t render_pixel_clipped(render_ctx_t *ctx, uint32_t x, uint32_t y, const uint32_t *clusters, uint32_t count)
@@ -818,7 +828,8 @@ rgb8_t render_pixel_clipped(render_ctx_t *ctx, uint32_t x, uint32_t y, const uin
     uint32_t none = 0; /* a non-NULL empty list: clipping that kept nothing */
     return render_pixel_settled(
         ctx, x, y,
-        render_pixel_impl(ctx, x, y, clusters ? clusters : &none, clusters ? count : 0, 0));
+        render_pixel_impl(ctx, x, y, PIXEL_SEARCH_LIST, clusters ? clusters : &none,
+                          clusters ? count : 0));
 }
 
 void render_span(render_ctx_t *ctx, uint32_t y, uint32_t x0, uint32_t x1, rgb8_t *out)
