@@ -2,6 +2,7 @@
 #include "host-tools/opts/cli_opt.h"
 
 #include <errno.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -41,6 +42,12 @@ static const struct option *cli_find(const struct cli *c, const char *word, int 
     return *matches == 1 ? hit : NULL;
 }
 
+/* Ends a usage error's line: where to read what is wanted. */
+static void cli_see_help(const struct cli *c)
+{
+    fprintf(stderr, " (see %s --help)\n", c->prog);
+}
+
 /* Prints what is wrong with the option getopt_long just refused. */
 static void cli_report(const struct cli *c, int code)
 {
@@ -49,23 +56,23 @@ static void cli_report(const struct cli *c, int code)
     const struct option *o = strncmp(word, "--", 2) == 0 ? cli_find(c, word, &matches) : NULL;
     int is_long = strncmp(word, "--", 2) == 0 && (optopt == 0 || (o && o->val == optopt));
     if (!is_long && code == ':') {
-        fprintf(stderr, "%s: -%c needs a value\n", c->prog, optopt);
+        fprintf(stderr, "%s: -%c needs a value", c->prog, optopt);
     } else if (!is_long) {
-        fprintf(stderr, "%s: unknown option '-%c'\n", c->prog, optopt);
+        fprintf(stderr, "%s: unknown option '-%c'", c->prog, optopt);
     } else if (code == ':' && o) {
-        fprintf(stderr, "%s: --%s needs a value\n", c->prog, o->name);
+        fprintf(stderr, "%s: --%s needs a value", c->prog, o->name);
     } else if (o && o->has_arg == no_argument && strchr(word, '=')) {
-        fprintf(stderr, "%s: --%s takes no value ('%s')\n", c->prog, o->name, word);
+        fprintf(stderr, "%s: --%s takes no value ('%s')", c->prog, o->name, word);
     } else if (matches > 1) {
         fprintf(stderr, "%s: '%s' is ambiguous: it could be", c->prog, word);
         size_t n = strcspn(word + 2, "=");
         for (const struct option *p = c->longs; p->name; p++)
             if (strncmp(p->name, word + 2, n) == 0)
                 fprintf(stderr, " --%s", p->name);
-        fprintf(stderr, "\n");
     } else {
-        fprintf(stderr, "%s: unknown option '%s'\n", c->prog, word);
+        fprintf(stderr, "%s: unknown option '%s'", c->prog, word);
     }
+    cli_see_help(c);
 }
 
 int cli_next(struct cli *c)
@@ -100,7 +107,8 @@ int cli_operand_value(struct cli *c)
 {
     snprintf(c->name, sizeof c->name, "%s", c->arg ? c->arg : "");
     if (optind >= c->argc) {
-        fprintf(stderr, "%s: %s needs a value\n", c->prog, c->name);
+        fprintf(stderr, "%s: %s needs a value", c->prog, c->name);
+        cli_see_help(c);
         return -1;
     }
     c->arg = c->argv[optind++];
@@ -109,7 +117,8 @@ int cli_operand_value(struct cli *c)
 
 int cli_bad_value(const struct cli *c, const char *want)
 {
-    fprintf(stderr, "%s: %s '%s': want %s\n", c->prog, c->name, c->arg ? c->arg : "", want);
+    fprintf(stderr, "%s: %s '%s': want %s", c->prog, c->name, c->arg ? c->arg : "", want);
+    cli_see_help(c);
     return -1;
 }
 
@@ -150,4 +159,50 @@ int cli_double(const struct cli *c, double lo, int lo_open, double hi, const cha
     }
     *out = v;
     return 0;
+}
+
+int cli_usage_error(const char *prog, const char *fmt, ...)
+{
+    va_list ap;
+    fprintf(stderr, "%s: ", prog);
+    va_start(ap, fmt);
+    vfprintf(stderr, fmt, ap);
+    va_end(ap);
+    fprintf(stderr, " (see %s --help)\n", prog);
+    return -1;
+}
+
+int cli_optdefs_table(const struct cli_optdef *const *lists, struct option *out, size_t cap)
+{
+    size_t n = 0;
+    for (; *lists; lists++)
+        for (const struct cli_optdef *d = *lists; d->name; d++) {
+            if (n + 2 >= cap)
+                return -1;
+            out[n++] = (struct option){d->name, d->value ? required_argument : no_argument,
+                                       NULL, d->code};
+        }
+    out[n++] = (struct option){"help", no_argument, NULL, 'h'};
+    out[n] = (struct option){NULL, 0, NULL, 0};
+    return 0;
+}
+
+/* The help column: an option's text starts here. */
+#define CLI_HELP_COLUMN 21
+
+void cli_optdefs_help(FILE *f, const struct cli_optdef *defs)
+{
+    for (const struct cli_optdef *d = defs; d->name; d++) {
+        int w = fprintf(f, "  --%s%s%s", d->name, d->value ? " " : "", d->value ? d->value : "");
+        const char *line = d->help;
+        if (w >= CLI_HELP_COLUMN - 1)
+            w = fprintf(f, "\n") - 1;
+        while (line) {
+            const char *end = strchr(line, '\n');
+            int len = end ? (int)(end - line) : (int)strlen(line);
+            fprintf(f, "%*s%.*s\n", CLI_HELP_COLUMN - w, "", len, line);
+            w = 0;
+            line = end ? end + 1 : NULL;
+        }
+    }
 }

@@ -3,20 +3,27 @@
  * "SCENE -o OUT SCENE2 -o OUT2" keeps its pairs), and one style of error
  * that names the option and what it wants:
  *
- *   links1 render: --ncs '0': want a whole number from 1 to 254
- *   links1 render: --size needs a value
- *   links1 render: unknown option '--sise'
+ *   links1 render: --ncs '0': want a whole number from 1 to 254 (see links1 render --help)
+ *   links1 render: --size needs a value (see links1 render --help)
+ *   links1 render: unknown option '--sise' (see links1 render --help)
+ *
+ * A command defines each option once, as a struct cli_optdef: getopt's
+ * table and the --help lines are made from the same definitions, so the
+ * help names every option the command takes and nothing else.
  */
 #ifndef LINKS1_HOST_CLI_OPT_H
 #define LINKS1_HOST_CLI_OPT_H
 
 #include <getopt.h>
+#include <stddef.h>
+#include <stdio.h>
 
 #define CLI_OPERAND 1    /* cli_next: an argument that is not an option (in c->arg) */
 #define CLI_BAD '?'      /* cli_next: a bad option, already reported */
 /* Long-option codes: the board's (board.h) from CLI_BOARD_CODES, a
  * command's own from CLI_OWN_CODES; short options are their letter. */
 #define CLI_BOARD_CODES 0x100
+#define CLI_SCENE_CODES 0x180
 #define CLI_OWN_CODES 0x200
 
 struct cli {
@@ -53,7 +60,31 @@ int cli_int(const struct cli *c, int lo, int hi, int *out);
 int cli_double(const struct cli *c, double lo, int lo_open, double hi, const char *want,
                double *out);
 
-/* Prints "PROG: NAME 'ARG': want WANT" for the option just read; returns -1. */
+/* Prints "PROG: NAME 'ARG': want WANT (see PROG --help)" for the option
+ * just read; returns -1. */
 int cli_bad_value(const struct cli *c, const char *want);
+
+/* Prints "PROG: WHAT (see PROG --help)" for a usage error of the command
+ * line as a whole (a missing operand, two options that do not go
+ * together); returns -1.  The command then exits 2. */
+__attribute__((format(printf, 2, 3))) int cli_usage_error(const char *prog, const char *fmt,
+                                                          ...);
+
+/* One option of a command. */
+struct cli_optdef {
+    const char *name;  /* its long name, without "--" */
+    const char *value; /* what its value is called in the help ("N", "on|off"); NULL: none */
+    int code;          /* what cli_next returns for it */
+    const char *help;  /* what it does: lines separated by '\n' */
+};
+#define CLI_OPTDEF_END {NULL, NULL, 0, NULL}
+
+/* getopt's table for the definitions of lists (a NULL-terminated list of
+ * tables, each ending with CLI_OPTDEF_END), --help added, into out (cap
+ * entries).  0, or -1 when out is too small. */
+int cli_optdefs_table(const struct cli_optdef *const *lists, struct option *out, size_t cap);
+
+/* The help lines of defs: "  --name VALUE" and its text from column 21. */
+void cli_optdefs_help(FILE *f, const struct cli_optdef *defs);
 
 #endif

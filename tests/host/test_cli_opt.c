@@ -88,9 +88,9 @@ static int t_refused(char **argv, const char *want)
 static void test_bad_options_named(void)
 {
     char *unknown[] = {"x", "a", "--sise", "3", NULL};
-    CHECK(t_refused(unknown, "links1 test: unknown option '--sise'"));
+    CHECK(t_refused(unknown, "links1 test: unknown option '--sise' (see links1 test --help)"));
     char *short_unknown[] = {"x", "-x", NULL};
-    CHECK(t_refused(short_unknown, "links1 test: unknown option '-x'"));
+    CHECK(t_refused(short_unknown, "links1 test: unknown option '-x' (see links1 test --help)"));
     char *missing[] = {"x", "a", "--size", NULL};
     CHECK(t_refused(missing, "links1 test: --size needs a value"));
     char *missing_short[] = {"x", "a", "-o", NULL};
