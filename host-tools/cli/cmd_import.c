@@ -51,6 +51,13 @@ static int import_args(int argc, char **argv, struct import_args *a)
         } else if (code == IMPORT_OPT_SMOOTH) {
             a->smooth = 1;
         } else if (code == IMPORT_OPT_TEXTURES_FROM) {
+            char why[SD_ERR_MAX];
+            if (a->textures_from || sd_textures_from_ok(c.arg, "--textures-from", why,
+                                                        sizeof why) != 0) {
+                fprintf(stderr, "links1 import: %s\nusage: %s\n",
+                        a->textures_from ? "--textures-from: give it once" : why, IMPORT_USAGE);
+                return -1;
+            }
             a->textures_from = c.arg;
         } else if (code == IMPORT_OPT_CAMERA && strcmp(c.arg, "auto") == 0) {
             a->camera_auto = 1;
@@ -118,11 +125,41 @@ static void import_map_names(const struct import_result *r, int n_maps, const ch
     }
 }
 
+/* A map image the scene names by an absolute path lies outside its
+ * directory: reading the scene takes --textures-from, said on stderr with
+ * the directories (of from, NULL-ended) that hold such images. */
+static void import_outside_note(const char *out, int n_maps, const char *const *names,
+                                const char *const *from)
+{
+    int need[2] = {0, 0};
+    for (int i = 0; i < n_maps; i++) {
+        char real[PATH_MAX];
+        if (names[i][0] != '/' || !realpath(names[i], real))
+            continue;
+        for (int k = 0; k < 2 && from[k]; k++)
+            if (sd_image_below(from[k], real)) {
+                need[k] = 1;
+                break;
+            }
+    }
+    if (!need[0] && !need[1])
+        return;
+    fprintf(stderr, "links1 import: %s names map images outside its directory: compile, "
+            "render or ref it with", out);
+    for (int k = 0; k < 2; k++)
+        if (need[k])
+            fprintf(stderr, " --textures-from %s", from[k]);
+    fprintf(stderr, " (a map's image is read only from below the scene's directory and "
+            "those)\n");
+}
+
 /* Writes s as text to the output file's temporary file, reads it back
- * from there (beside OUT, so map paths read as they will) and compiles
- * it. */
+ * from there (beside OUT, so map paths read as they will, their images
+ * also from below the directories of the NULL-ended list from: where the
+ * import took them) and compiles it. */
 static int import_write(const struct sd_scene *s, const char *const *maps,
-                        const struct out_file *of, char *err, size_t errlen)
+                        const char *const *from, const struct out_file *of, char *err,
+                        size_t errlen)
 {
     int rc = sd_write_text(s, maps, of->f);
     if (rc != 0 || fflush(of->f) != 0 || ferror(of->f)) {
@@ -131,7 +168,7 @@ static int import_write(const struct sd_scene *s, const char *const *maps,
     }
     struct sd_scene back;
     char why[SD_ERR_MAX];
-    if (sd_parse_file(of->tmp, &back, why, sizeof why) != 0) {
+    if (sd_parse_file_from(of->tmp, from, &back, why, sizeof why) != 0) {
         snprintf(err, errlen, "the written scene does not read back: %.400s", why);
         return -1;
     }
@@ -191,13 +228,16 @@ int scene_cmd_import(int argc, char **argv)
         const char *ptrs[SCN_MAX_MAPS];
         import_map_names(r, s.n_maps, a.out, names, ptrs);
         struct out_file of;
+        const char *from[3] = {dir[0] ? dir : ".", a.textures_from, NULL};
         rc = out_file_open(&of, a.out, err, sizeof err);
-        if (rc == 0 && import_write(&s, ptrs, &of, err, sizeof err) != 0) {
+        if (rc == 0 && import_write(&s, ptrs, from, &of, err, sizeof err) != 0) {
             out_file_abort(&of);
             rc = -1;
         } else if (rc == 0) {
             rc = out_file_commit(&of, err, sizeof err);
         }
+        if (rc == 0)
+            import_outside_note(a.out, s.n_maps, ptrs, from);
     }
     if (rc != 0) {
         fprintf(stderr, "links1 import: %s: %s\n", a.model, err);

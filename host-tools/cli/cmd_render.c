@@ -131,6 +131,8 @@ static void render_usage(FILE *out)
             "  --world-space    the DM leaves the scene in world coordinates and the NCs\n"
             "                   turn the camera rays: a frame whose cluster keys did not\n"
             "                   move keeps the frame before's triangles (no screen clipping)\n"
+            "  --textures-from DIR  a map's image may also come from below DIR (text\n"
+            "                   scenes; up to 4; not / nor a directory directly under /)\n"
             "  --paper          paper mode (as options { paper on }): every choice the paper\n"
             "                   made: src/trc by angle, a fixed depth (min_weight 0), --balance\n"
             "                   lines --areas HEIGHT, --ask finished, --clip lists, no\n"
@@ -212,6 +214,7 @@ enum render_opt_code {
     RENDER_OPT_CHECK_LOST,
     RENDER_OPT_WORLD_SPACE,
     RENDER_OPT_AUTO,
+    RENDER_OPT_TEXTURES_FROM,
 };
 
 static const struct option render_options[] = {
@@ -258,6 +261,7 @@ static const struct option render_options[] = {
     {"check-lost", no_argument, NULL, RENDER_OPT_CHECK_LOST},
     {"world-space", no_argument, NULL, RENDER_OPT_WORLD_SPACE},
     {"auto", no_argument, NULL, RENDER_OPT_AUTO},
+    {"textures-from", required_argument, NULL, RENDER_OPT_TEXTURES_FROM},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -468,6 +472,13 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
     case RENDER_OPT_AUTO:
         o->model_auto = o->arith_auto = 1;
         return 0;
+    case RENDER_OPT_TEXTURES_FROM: {
+        char why[SD_ERR_MAX];
+        if (scene_file_textures_from(&o->scene, c->arg, why, sizeof why) == 0)
+            return 0;
+        fprintf(stderr, "links1 render: %s\n", why);
+        return -1;
+    }
     }
     return -1; /* CLI_BAD: reported already */
 }

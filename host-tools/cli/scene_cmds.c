@@ -19,7 +19,23 @@
 #include "host-tools/scene/scene_file.h"
 #include "proto/arith.h"
 
-enum { SCENE_OPT_FRAME = CLI_OWN_CODES, SCENE_OPT_STRICT };
+enum { SCENE_OPT_FRAME = CLI_OWN_CODES, SCENE_OPT_STRICT, SCENE_OPT_TEXTURES_FROM };
+
+/* --textures-from DIR into the scene options o (scene_file_textures_from);
+ * -1 after saying why. */
+static int scene_cmd_textures_from(struct cli *c, struct scene_file_opts *o)
+{
+    char why[SD_ERR_MAX];
+    if (scene_file_textures_from(o, c->arg, why, sizeof why) == 0)
+        return 0;
+    fprintf(stderr, "%s: %s\n", c->prog, why);
+    return -1;
+}
+
+static int compile_take(struct cli *c, int code, void *ctx)
+{
+    return code == SCENE_OPT_TEXTURES_FROM ? scene_cmd_textures_from(c, ctx) : -1;
+}
 
 /* Reads "SCENE -o OUT" and the options of a scene command: each option of
  * longs other than -o and --help goes to take (when given).  0, 1 (--help
@@ -81,6 +97,7 @@ static int cmd_write_file(const char *path, const void *data, size_t len)
 }
 
 static const struct option compile_options[] = {
+    {"textures-from", required_argument, NULL, SCENE_OPT_TEXTURES_FROM},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
@@ -88,14 +105,17 @@ static const struct option compile_options[] = {
 int scene_cmd_compile(int argc, char **argv)
 {
     const char *in, *out;
+    struct scene_file_opts so;
+    scene_file_opts_init(&so);
     struct cli c;
     cli_init(&c, "links1 compile", argc, argv, "o:h", compile_options);
-    int r = scene_cmd_args(&c, "links1 compile SCENE.scn -o OUT.l1s", &in, &out, NULL, NULL);
+    int r = scene_cmd_args(&c, "links1 compile SCENE.scn -o OUT.l1s [--textures-from DIR]", &in,
+                           &out, compile_take, &so);
     if (r != 0)
         return r > 0 ? 0 : r == -2 ? 1 : 2;
     struct sd_scene s;
     char err[SD_ERR_MAX];
-    if (scene_file_parse(in, &s, err, sizeof err) != 0) {
+    if (scene_file_parse_from(in, so.textures_from, &s, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         return 1;
     }
@@ -120,12 +140,14 @@ int scene_cmd_compile(int argc, char **argv)
 static const struct option export_pov_options[] = {
     {"frame", required_argument, NULL, SCENE_OPT_FRAME},
     {"strict", no_argument, NULL, SCENE_OPT_STRICT},
+    {"textures-from", required_argument, NULL, SCENE_OPT_TEXTURES_FROM},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
 };
 
 struct export_pov_args {
     int strict, frame;
+    struct scene_file_opts scene; /* its textures_from */
 };
 
 static int export_pov_take(struct cli *c, int code, void *ctx)
@@ -135,23 +157,26 @@ static int export_pov_take(struct cli *c, int code, void *ctx)
         a->strict = 1;
         return 0;
     }
+    if (code == SCENE_OPT_TEXTURES_FROM)
+        return scene_cmd_textures_from(c, &a->scene);
     return code == SCENE_OPT_FRAME ? cli_int(c, 0, SCN_MAX_FRAMES - 1, &a->frame) : -1;
 }
 
 int scene_cmd_export_pov(int argc, char **argv)
 {
     const char *in, *out;
-    struct export_pov_args a = {0, 0};
+    struct export_pov_args a = {0, 0, {0}};
+    scene_file_opts_init(&a.scene);
     struct cli c;
     cli_init(&c, "links1 export-pov", argc, argv, "o:h", export_pov_options);
-    int r = scene_cmd_args(&c, "links1 export-pov SCENE.scn -o OUT.pov [--frame N] [--strict]",
-                           &in, &out, export_pov_take, &a);
+    int r = scene_cmd_args(&c, "links1 export-pov SCENE.scn -o OUT.pov [--frame N] [--strict] "
+                           "[--textures-from DIR]", &in, &out, export_pov_take, &a);
     if (r != 0)
         return r > 0 ? 0 : r == -2 ? 1 : 2;
     int strict = a.strict, frame = a.frame;
     struct sd_scene s;
     char err[SD_ERR_MAX];
-    if (scene_file_parse(in, &s, err, sizeof err) != 0) {
+    if (scene_file_parse_from(in, a.scene.textures_from, &s, err, sizeof err) != 0) {
         fprintf(stderr, "%s\n", err);
         return 1;
     }
@@ -250,6 +275,7 @@ int scene_cmd_ref(int argc, char **argv)
         case REF_OPT_REFRACTION:
         case REF_OPT_REFRACTIONLESS:
         case REF_OPT_NO_AUTO_HIERARCHY:
+        case REF_OPT_TEXTURES_FROM:
         case REF_OPT_FRAME:
             for (int k = from; k < optind; k++)
                 words[nw++] = argv[k];

@@ -286,10 +286,68 @@ static int model_is_gltf(const char *path)
  * line it does not expect, e.g. `property float x outer loop` or a word
  * that is no keyword (tests/fuzz/corpus/fuzz_import/regress-assimp-ply-*),
  * so a PLY header is checked first: it ends in `end_header` within 64 KiB,
- * and every line before is `format F V`, `comment ...`, `obj_info ...`,
- * `element NAME COUNT`, `property TYPE NAME` or
- * `property list COUNT_TYPE ITEM_TYPE NAME`.  0, or -1 with the line in err. */
+ * and every line before is `format ascii|binary_little_endian|
+ * binary_big_endian V`, `comment ...`, `obj_info ...`, `element NAME COUNT`,
+ * `property TYPE NAME` or `property list COUNT_TYPE ITEM_TYPE NAME`.
+ * Words are split at blanks (space, tab, CR, VT, FF), of any length. */
 #define MODEL_PLY_HEADER_MAX 65536
+#define MODEL_PLY_WORDS 6 /* the most a line keeps; more are counted */
+
+struct model_ply_line {
+    const char *w[MODEL_PLY_WORDS];
+    size_t len[MODEL_PLY_WORDS];
+    int n; /* every word on the line, kept or not */
+};
+
+static int model_ply_blank(char c)
+{
+    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+}
+
+/* The words of the n bytes at s (a line without its newline) into l. */
+static void model_ply_split(const char *s, size_t n, struct model_ply_line *l)
+{
+    l->n = 0;
+    for (size_t i = 0; i < n;) {
+        while (i < n && model_ply_blank(s[i]))
+            i++;
+        if (i == n)
+            break;
+        size_t b = i;
+        while (i < n && !model_ply_blank(s[i]))
+            i++;
+        if (l->n < MODEL_PLY_WORDS) {
+            l->w[l->n] = s + b;
+            l->len[l->n] = i - b;
+        }
+        l->n++;
+    }
+}
+
+/* Word k of l is word. */
+static int model_ply_is(const struct model_ply_line *l, int k, const char *word)
+{
+    return k < l->n && k < MODEL_PLY_WORDS && l->len[k] == strlen(word) &&
+           memcmp(l->w[k], word, l->len[k]) == 0;
+}
+
+/* A header line the reader takes (one before end_header). */
+static int model_ply_line_ok(const struct model_ply_line *l)
+{
+    if (l->n == 0 || model_ply_is(l, 0, "comment") || model_ply_is(l, 0, "obj_info"))
+        return 1;
+    if (model_ply_is(l, 0, "format"))
+        return l->n == 3 && (model_ply_is(l, 1, "ascii") ||
+                             model_ply_is(l, 1, "binary_little_endian") ||
+                             model_ply_is(l, 1, "binary_big_endian"));
+    if (model_ply_is(l, 0, "element"))
+        return l->n == 3;
+    if (model_ply_is(l, 0, "property"))
+        return l->n == (model_ply_is(l, 1, "list") ? 5 : 3);
+    return 0;
+}
+
+/* 0, or -1 with the first line the reader cannot take in err. */
 static int model_ply_header_ok(const char *data, size_t size, const char *name, char *err,
                                size_t errlen)
 {
@@ -297,38 +355,29 @@ static int model_ply_header_ok(const char *data, size_t size, const char *name, 
         return 0; /* the reader takes a file that begins so as PLY */
     if (size > MODEL_PLY_HEADER_MAX)
         size = MODEL_PLY_HEADER_MAX;
-    size_t at = 3;
-    while (at < size && data[at] != '\n')
-        at++; /* the rest of the magic line */
-    at++;
+    const char *nl = memchr(data, '\n', size);
+    size_t at = nl ? (size_t)(nl - data) + 1 : size; /* past the magic line */
     while (at < size) {
-        size_t end = at;
-        while (end < size && data[end] != '\n')
-            end++;
-        char line[256];
-        size_t n = end - at < sizeof line - 1 ? end - at : sizeof line - 1;
-        memcpy(line, data + at, n);
-        line[n] = 0;
-        at = end + 1;
-        char w[6][16];
-        int words = sscanf(line, "%15s %15s %15s %15s %15s %15s", w[0], w[1], w[2], w[3], w[4],
-                           w[5]);
-        if (words >= 1 && strcmp(w[0], "end_header") == 0)
+        nl = memchr(data + at, '\n', size - at);
+        size_t end = nl ? (size_t)(nl - data) : size;
+        struct model_ply_line l;
+        model_ply_split(data + at, end - at, &l);
+        if (model_ply_is(&l, 0, "end_header"))
             return 0;
-        int ok = words <= 0 || (!strcmp(w[0], "comment") || !strcmp(w[0], "obj_info") ||
-                                (!strcmp(w[0], "format") && words == 3) ||
-                                (!strcmp(w[0], "element") && words == 3) ||
-                                (!strcmp(w[0], "property") &&
-                                 words == (words >= 2 && !strcmp(w[1], "list") ? 5 : 3)));
-        if (!ok) {
-            for (char *c = line; *c; c++)
-                if ((unsigned char)*c < ' ' || (unsigned char)*c > '~')
-                    *c = '?';
+        if (!model_ply_line_ok(&l)) {
+            char line[64];
+            size_t n = end - at < sizeof line - 1 ? end - at : sizeof line - 1;
+            for (size_t k = 0; k < n; k++) {
+                unsigned char c = (unsigned char)data[at + k];
+                line[k] = c < ' ' || c > '~' ? '?' : (char)c;
+            }
+            line[n] = 0;
             snprintf(err, errlen, "%s: a PLY header line the model library cannot take, "
-                                  "refused before it reads the file: '%.60s'",
+                                  "refused before it reads the file: '%s'",
                      name, line);
             return -1;
         }
+        at = end + 1;
     }
     snprintf(err, errlen, "%s: a PLY header without end_header in its first %d bytes", name,
              MODEL_PLY_HEADER_MAX);

@@ -3,8 +3,10 @@
  * The child (fork) resets the crash signals to their default action, sends
  * nothing to the terminal, reads the file with the loader and writes one
  * byte, 'M' and the model (model_wire.h) or 'E' and the loader's message,
- * to a pipe, then _exits.  The parent reads the pipe until its end, at most
- * max_bytes and until the deadline, then reaps the child and judges: a
+ * to a pipe, then _exits.  The parent first checks that the file is a
+ * regular one (a FIFO, a directory or a device is refused unread, at once),
+ * then reads the pipe until its end, at most max_bytes and until the
+ * deadline, then reaps the child and judges: a
  * signal, a non-zero exit status, the deadline or the size passed, or bytes
  * that do not read back as a model, each give their own message. */
 #define _GNU_SOURCE
@@ -17,6 +19,7 @@
 #include <string.h>
 #include <sys/prctl.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -223,10 +226,33 @@ static int child_judge(const char *path, int st, const struct child_got *g,
     return -1;
 }
 
+/* path names a regular file (opened without blocking, so a FIFO is
+ * refused at once rather than read until the deadline).  0, or -1 with
+ * "PATH: why" in err. */
+static int child_regular(const char *path, char *err, size_t errlen)
+{
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+    if (fd < 0) {
+        snprintf(err, errlen, "%s: %s", path, strerror(errno));
+        return -1;
+    }
+    struct stat st;
+    int rc = fstat(fd, &st);
+    close(fd);
+    if (rc == 0 && S_ISREG(st.st_mode))
+        return 0;
+    snprintf(err, errlen, "%s: not a regular file (%s): not read", path,
+             rc != 0 ? strerror(errno) : S_ISDIR(st.st_mode) ? "a directory"
+             : S_ISFIFO(st.st_mode) ? "a FIFO" : S_ISSOCK(st.st_mode) ? "a socket" : "a device");
+    return -1;
+}
+
 int model_child_load(const char *path, model_loader_fn load, const struct model_child_limits *lim,
                      struct model *m, char *err, size_t errlen)
 {
     memset(m, 0, sizeof *m);
+    if (child_regular(path, err, errlen) != 0)
+        return -1;
     int fds[2];
     if (pipe2(fds, O_CLOEXEC) != 0) {
         snprintf(err, errlen, "%s: cannot start the model reader: %s", path, strerror(errno));

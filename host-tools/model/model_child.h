@@ -32,7 +32,9 @@ struct model_child_limits {
 /* A loader run in the child: model_load's contract (model.h). */
 typedef int (*model_loader_fn)(const char *path, struct model *m, char *err, size_t errlen);
 
-/* load(path) in a child process within lim.  0 with *m filled, or -1 with
+/* load(path) in a child process within lim, once path is seen to be a
+ * regular file (opened O_NONBLOCK: a FIFO is refused at once, "PATH: not a
+ * regular file (a FIFO): not read").  0 with *m filled, or -1 with
  * "PATH: what happened" in err and *m empty. */
 int model_child_load(const char *path, model_loader_fn load, const struct model_child_limits *lim,
                      struct model *m, char *err, size_t errlen);

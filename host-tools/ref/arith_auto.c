@@ -141,6 +141,10 @@ void arith_auto_scene_words(const struct scene_file_opts *so, long frame,
         w->words[n++] = "--no-auto-hierarchy";
     if (so->paper)
         w->words[n++] = "--paper";
+    for (int i = 0; i < SD_TEXTURES_FROM_MAX && so->textures_from[i]; i++) {
+        w->words[n++] = "--textures-from";
+        w->words[n++] = so->textures_from[i];
+    }
     snprintf(w->frame, sizeof w->frame, "%ld", frame);
     w->words[n++] = "--frame";
     w->words[n++] = w->frame;
@@ -700,6 +704,18 @@ static int auto_confirm_steps(struct auto_run *r, struct auto_cand *c)
     return 0;
 }
 
+/* The scene at r->path parsed, its map images also from below each
+ * --textures-from DIR of the words (as the pre-renders read it). */
+static int auto_parse(const struct auto_run *r, struct sd_scene *s, char *err, size_t errlen)
+{
+    const char *from[SD_TEXTURES_FROM_MAX + 1] = {NULL};
+    int n = 0;
+    for (const char *const *w = r->o->words; w && w[0] && w[1]; w++)
+        if (strcmp(w[0], "--textures-from") == 0 && n < SD_TEXTURES_FROM_MAX)
+            from[n++] = *++w;
+    return scene_file_parse_from(r->path, from, s, err, errlen);
+}
+
 /* The pre-render size: the render's size scaled to at most
  * ARITH_AUTO_PIXELS, keeping its shape; 0x0 for a compiled scene. */
 static int auto_size(struct auto_run *r)
@@ -711,7 +727,7 @@ static int auto_size(struct auto_run *r)
     if (!w) {
         struct sd_scene s;
         char err[SD_ERR_MAX];
-        if (scene_file_parse(r->path, &s, err, sizeof err) != 0) {
+        if (auto_parse(r, &s, err, sizeof err) != 0) {
             fprintf(stderr, "%s\n", err);
             return -1;
         }
@@ -722,7 +738,7 @@ static int auto_size(struct auto_run *r)
     if (r->o->model) {
         struct sd_scene s;
         char err[SD_ERR_MAX];
-        if (scene_file_parse(r->path, &s, err, sizeof err) != 0) {
+        if (auto_parse(r, &s, err, sizeof err) != 0) {
             fprintf(stderr, "%s\n", err);
             return -1;
         }

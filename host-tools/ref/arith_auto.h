@@ -23,6 +23,8 @@
 
 #include <stddef.h>
 
+#include "host-tools/scene/scene_desc.h"
+
 #define ARITH_AUTO_TARGET_DB 40.0   /* --target-db default */
 #define ARITH_AUTO_PIXELS 3072      /* the pre-render has at most this many pixels (64x48) */
 /* --auto's host pre-render (the model search and each candidate's error):
@@ -82,7 +84,7 @@ struct arith_auto_choice {
 /* The options of a scene (scene_file.h) and its first frame as words for
  * opts.words, stored in w. */
 struct arith_auto_words {
-    const char *words[16];
+    const char *words[16 + 2 * SD_TEXTURES_FROM_MAX]; /* and --textures-from DIR */
     char depth[16], weight[32], steps[16], frame[24];
 };
 struct scene_file_opts;

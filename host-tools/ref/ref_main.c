@@ -46,6 +46,8 @@ static int ref_usage(FILE *out, int status)
                  "  lost, and --mark-lost paints it, when double is more than 2/255 away)\n"
                  "  [--world-space]  (prepare in world coordinates, as links1 render's)\n"
                  "  [--paper]  (the scene's part of paper mode, as links1 render --paper)\n"
+                 "  [--textures-from DIR]  (a map's image may also come from below DIR; up to\n"
+                 "  %d; not / nor a directory directly under / nor your home directory)\n"
                  "  an OUT ending in .mp4, .webm or .apng is one film of the frames, piped to\n"
                  "  ffmpeg at %d a second (as links1 render does)\n"
                  "  --arith auto [--fpu vfp|none] [--target-db D]: the cheapest arithmetic of a\n"
@@ -55,7 +57,7 @@ static int ref_usage(FILE *out, int status)
                  "  density steps together: the cheapest that keeps D dB against double at the\n"
                  "  most accurate model, and which knob binds (docs/renderer.md, \"--auto\")\n"
                  "  (this is the %s build)\n",
-            FILM_DEFAULT_FPS, NUM_NAME);
+            SD_TEXTURES_FROM_MAX, FILM_DEFAULT_FPS, NUM_NAME);
     return status;
 }
 
@@ -332,6 +334,14 @@ static int ref_parse(int argc, char **argv, struct ref_args *a)
         case REF_OPT_MARK_LOST:
             a->scene.mark_lost = 1;
             break;
+        case REF_OPT_TEXTURES_FROM: {
+            char why[SD_ERR_MAX];
+            if (scene_file_textures_from(&a->scene, c.arg, why, sizeof why) != 0) {
+                fprintf(stderr, "links1 ref: %s\n", why);
+                return -1;
+            }
+            break;
+        }
         case REF_OPT_MAX_DEPTH:
             if (cli_int(&c, 0, SCN_MAX_DEPTH, &a->scene.max_depth) < 0)
                 return -1;

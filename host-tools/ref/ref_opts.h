@@ -22,6 +22,7 @@ enum ref_opt_code {
     REF_OPT_ESCALATE,
     REF_OPT_CHECK_LOST,
     REF_OPT_WORLD_SPACE,
+    REF_OPT_TEXTURES_FROM,
     REF_OPT_ARITH, /* links1 ref only, with the two below */
     REF_OPT_FPU,
     REF_OPT_TARGET_DB,
@@ -45,6 +46,7 @@ enum ref_opt_code {
     {"escalate", no_argument, NULL, REF_OPT_ESCALATE}, \
     {"check-lost", no_argument, NULL, REF_OPT_CHECK_LOST}, \
     {"world-space", no_argument, NULL, REF_OPT_WORLD_SPACE}, \
+    {"textures-from", required_argument, NULL, REF_OPT_TEXTURES_FROM}, \
     {"help", no_argument, NULL, 'h'}
 
 #endif

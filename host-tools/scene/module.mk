@@ -46,6 +46,9 @@ test_scene_file_LIBS = $(SCENE_TEXT_LIBS)
 BOARD_TESTS += tests/images/scenes.sh tests/images/pov.sh tests/images/accuracy.sh tests/images/adaptive.sh \
 	tests/images/import.sh tests/board/render_import.sh tests/images/view_keys.sh \
 	tests/images/maps.sh tests/images/normal_tex.sh
+# Binary PLY imports as its ASCII twin, a model that is a FIFO is refused
+# at once; a map's image is confined as a model's texture is.
+BOARD_TESTS += tests/images/ply_binary.sh tests/images/map_confine.sh
 
 # The loader once more in the other two arithmetics it runs in on the board.
 HOST_TESTS += test_scene_load_float test_scene_load_fixed

@@ -147,10 +147,20 @@ struct sd_scene {
 #define SD_ERR_MAX 512 /* room for "file:line:col: message" */
 
 /* Parses the text scene at path into *s.  On failure returns -1 with
- * "file:line:col: what is wrong" in err and *s empty. */
+ * "file:line:col: what is wrong" in err and *s empty.  A map statement's
+ * image is read only from below the scene file's directory
+ * (sd_image_open_below). */
 int sd_parse_file(const char *path, struct sd_scene *s, char *err, size_t errlen);
 int sd_parse_text(const char *name, const char *text, struct sd_scene *s,
                   char *err, size_t errlen);
+/* The same, map images also read from below the directories of the
+ * NULL-ended list textures_from (at most SD_TEXTURES_FROM_MAX; each one
+ * the caller has checked with sd_textures_from_ok, scene_import.h). */
+#define SD_TEXTURES_FROM_MAX 4
+int sd_parse_file_from(const char *path, const char *const *textures_from, struct sd_scene *s,
+                       char *err, size_t errlen);
+int sd_parse_text_from(const char *name, const char *text, const char *const *textures_from,
+                       struct sd_scene *s, char *err, size_t errlen);
 void sd_free(struct sd_scene *s);
 /* The view of a scene that sets none: camera, size, depth, options. */
 void sd_view_defaults(struct sd_view *v);

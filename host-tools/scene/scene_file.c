@@ -8,6 +8,7 @@
 
 #include "host-tools/scene/nff_read.h"
 #include "host-tools/scene/scene_board.h"
+#include "host-tools/scene/scene_import.h"
 #include "proto/machines.h"
 #include "host-tools/scene/scene_desc.h"
 
@@ -25,6 +26,24 @@ void scene_file_opts_init(struct scene_file_opts *o)
     o->world_space = 0;
     o->paper = 0;
     o->machine = MACHINE_VIRT;
+    memset(o->textures_from, 0, sizeof o->textures_from);
+}
+
+int scene_file_textures_from(struct scene_file_opts *o, const char *dir, char *err,
+                             size_t errlen)
+{
+    int n = 0;
+    while (o->textures_from[n])
+        n++;
+    if (n == SD_TEXTURES_FROM_MAX) {
+        snprintf(err, errlen, "--textures-from %s: at most %d directories", dir,
+                 SD_TEXTURES_FROM_MAX);
+        return -1;
+    }
+    if (sd_textures_from_ok(dir, "--textures-from", err, errlen) != 0)
+        return -1;
+    o->textures_from[n] = dir;
+    return 0;
 }
 
 int scene_file_ends_with(const char *s, const char *suffix)
@@ -35,9 +54,15 @@ int scene_file_ends_with(const char *s, const char *suffix)
 
 int scene_file_parse(const char *path, struct sd_scene *s, char *err, size_t errlen)
 {
+    return scene_file_parse_from(path, NULL, s, err, errlen);
+}
+
+int scene_file_parse_from(const char *path, const char *const *textures_from,
+                          struct sd_scene *s, char *err, size_t errlen)
+{
     if (scene_file_ends_with(path, ".nff"))
         return nff_read_file(path, s, NULL, err, errlen);
-    return sd_parse_file(path, s, err, errlen);
+    return sd_parse_file_from(path, textures_from, s, err, errlen);
 }
 
 static int scene_file_compile(const char *path, const struct scene_file_opts *o, uint8_t **buf,
@@ -45,7 +70,7 @@ static int scene_file_compile(const char *path, const struct scene_file_opts *o,
                               size_t errlen)
 {
     struct sd_scene s;
-    if (scene_file_parse(path, &s, err, errlen) != 0)
+    if (scene_file_parse_from(path, o->textures_from, &s, err, errlen) != 0)
         return -1;
     if (o->paper && !s.paper)
         sd_paper_apply(&s);

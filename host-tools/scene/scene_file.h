@@ -7,6 +7,8 @@
 #include <stddef.h>
 #include <stdint.h>
 
+#include "host-tools/scene/scene_desc.h"
+
 /* Changes to a text scene before it is compiled. */
 struct scene_file_opts {
     int width, height;  /* --size WxH; 0: the scene's */
@@ -23,6 +25,8 @@ struct scene_file_opts {
     int paper;          /* --paper: 1 sets paper mode (sd_paper_apply) before the
                            other changes, which win over it */
     int machine;        /* the machine it is for (proto/machines.h): its limits */
+    const char *textures_from[SD_TEXTURES_FROM_MAX + 1]; /* --textures-from DIR: more
+                           directories a map's image may come from, NULL-ended */
 };
 
 /* How a text scene was compiled (scene_file_bytes_info). */
@@ -37,10 +41,19 @@ void scene_file_opts_init(struct scene_file_opts *o);
 /* 1 when s ends with suffix. */
 int scene_file_ends_with(const char *s, const char *suffix);
 
+/* --textures-from DIR: dir added to o's textures_from when it may be one
+ * (sd_textures_from_ok: not / nor a system root nor the home directory)
+ * and fewer than SD_TEXTURES_FROM_MAX are given.  0, or -1 with err. */
+int scene_file_textures_from(struct scene_file_opts *o, const char *dir, char *err,
+                             size_t errlen);
+
 /* The scene at path: a file ending in .nff read as NFF (nff_read.h), any
  * other as the text form (sd_parse_file); -1 with err as those say. */
-struct sd_scene;
 int scene_file_parse(const char *path, struct sd_scene *s, char *err, size_t errlen);
+/* The same, a text scene's map images also read from below the
+ * directories of the NULL-ended list textures_from (sd_parse_file_from). */
+int scene_file_parse_from(const char *path, const char *const *textures_from,
+                          struct sd_scene *s, char *err, size_t errlen);
 
 /* The compiled bytes of the scene at path (malloc'ed into *buf, *len): a
  * file ending in .l1s read as is (refused when empty, over SCN_MAX_SIZE, or

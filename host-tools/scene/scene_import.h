@@ -58,13 +58,13 @@ int scene_import_model(struct sd_scene *s, int parent, const struct model *m,
 int scene_import_view(struct sd_scene *s, const struct model *m, const struct import_result *r,
                       int camera_auto, FILE *warn, char *err, size_t errlen);
 
-/* Reads the image at path into map m (its kind set): the RGB bytes of a
- * colour map, the luminance of a bump or attribute map, the normal
- * (2c/255 - 1 per channel, sd_map_normal_texel) of a normal map.  A
- * regular file only (a FIFO or a device is refused, never read).  0, or -1
- * with err. */
-int sd_map_read_image(struct sd_map *m, const char *path, char *err, size_t errlen);
-/* The same from fd (sd_texture_open's; closed here); path names it. */
+/* Reads the image open on fd (sd_image_open_below's: a regular file, a FIFO
+ * or a device refused, never read; closed here) into map m (its kind set):
+ * the RGB bytes of a colour map, the luminance of a bump or attribute map,
+ * the normal (2c/255 - 1 per channel, sd_map_normal_texel) of a normal
+ * map; path names it in err.  The side limit is checked on the file's
+ * header: a small file claiming a huge image costs nothing.  0, or -1 with
+ * err. */
 int sd_map_read_image_fd(struct sd_map *m, int fd, const char *path, char *err, size_t errlen);
 
 /* A normal map texel of the compiled form (proto/scene_format.h) from the
@@ -76,14 +76,41 @@ int sd_map_read_image_fd(struct sd_map *m, int fd, const char *path, char *err, 
  * (it does not point out of the surface). */
 int sd_map_normal_texel(const double v[3], uint8_t out[3]);
 
-/* A model's texture tex (as the model file writes it) opened: the path
- * (model_dir + tex, or tex when absolute) into path, and opened only when
- * it resolves to a regular file below model_dir ("" = ".") or below allow
- * (NULL: none); absolute paths, ../ and links that lead elsewhere are
- * refused, and so are directories, FIFOs and devices (checked without
- * blocking).  Its fd, or -1 with "PATH: why" in err. */
+/* Whose image sd_image_open_below opens: it says so in its refusal. */
+enum sd_image_owner {
+    SD_IMAGE_OF_MODEL, /* a model's texture (the model's directory) */
+    SD_IMAGE_OF_SCENE, /* a map statement's image (the scene's directory) */
+};
+
+/* The image name (as the file that names it writes it) opened: the path
+ * (dir + name, or name when absolute; dir ends in '/' or is "" = ".") into
+ * path, and opened only when it resolves (realpath) to a regular file below
+ * dir or below one of the directories of the NULL-ended list allow (NULL:
+ * none); absolute paths, ../ and links that lead elsewhere are refused,
+ * and so are directories, FIFOs and devices (checked without blocking).
+ * Its fd, or -1 with "PATH: why" in err (outside: naming dir, allow and
+ * how to allow another, as owner says). */
+int sd_image_open_below(const char *name, const char *dir, const char *const *allow,
+                        enum sd_image_owner owner, char *path, size_t cap, char *err,
+                        size_t errlen);
+
+/* real (a resolved path) lies below the directory dir (resolved here; ""
+ * is "."; NULL: no directory): 1 or 0.  The one test of "below" that
+ * sd_image_open_below makes. */
+int sd_image_below(const char *dir, const char *real);
+
+/* A model's texture tex opened: sd_image_open_below below model_dir or
+ * allow (NULL: none). */
 int sd_texture_open(const char *tex, const char *model_dir, const char *allow, char *path,
                     size_t cap, char *err, size_t errlen);
+
+/* dir, which the user names to allow images from (`--textures-from DIR`,
+ * `textures_from "DIR"`; what names it in err), is a directory that may
+ * be: it resolves (realpath) to a directory that is not / itself, not a
+ * directory directly under / (/etc, /home, /tmp, /usr, /proc, /root, ...:
+ * every one) and not the user's home directory.  0, or -1 with err naming
+ * dir, what it resolves to and the rule. */
+int sd_textures_from_ok(const char *dir, const char *what, char *err, size_t errlen);
 
 /* Writes s as text that sd_parse_text reads back to the same scene.
  * map_image[i], when not NULL or "", is written as map i's image file

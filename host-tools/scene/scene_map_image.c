@@ -78,15 +78,6 @@ int sd_map_normal_texel(const double v[3], uint8_t out[3])
     return 0;
 }
 
-int sd_map_read_image(struct sd_map *m, const char *path, char *err, size_t errlen)
-{
-    struct image img;
-    /* The side limit is checked on the file's header: a small file
-     * claiming a huge image costs nothing. */
-    int rc = image_read_max(path, SCN_MAX_MAP_SIDE, &img, err, errlen);
-    return sd_map_take(m, rc, &img, path, err, errlen);
-}
-
 int sd_map_read_image_fd(struct sd_map *m, int fd, const char *path, char *err, size_t errlen)
 {
     struct image img;

@@ -323,6 +323,12 @@ static void parse_resolve_fresnel(struct parser *p)
 int sd_parse_text(const char *name, const char *text, struct sd_scene *s, char *err,
                   size_t errlen)
 {
+    return sd_parse_text_from(name, text, NULL, s, err, errlen);
+}
+
+int sd_parse_text_from(const char *name, const char *text, const char *const *textures_from,
+                       struct sd_scene *s, char *err, size_t errlen)
+{
     memset(s, 0, sizeof *s);
     struct parser *p = calloc(1, sizeof *p);
     if (!p) {
@@ -331,6 +337,7 @@ int sd_parse_text(const char *name, const char *text, struct sd_scene *s, char *
     }
     jmp_buf fail;
     p->s = s;
+    p->textures_from = textures_from;
     const char *slash = strrchr(name, '/');
     if (slash && (size_t)(slash - name) + 2 < sizeof p->dir)
         memcpy(p->dir, name, (size_t)(slash - name) + 1);
@@ -357,6 +364,12 @@ int sd_parse_text(const char *name, const char *text, struct sd_scene *s, char *
 
 int sd_parse_file(const char *path, struct sd_scene *s, char *err, size_t errlen)
 {
+    return sd_parse_file_from(path, NULL, s, err, errlen);
+}
+
+int sd_parse_file_from(const char *path, const char *const *textures_from, struct sd_scene *s,
+                       char *err, size_t errlen)
+{
     memset(s, 0, sizeof *s);
     FILE *f = fopen(path, "rb");
     if (!f) {
@@ -378,7 +391,7 @@ int sd_parse_file(const char *path, struct sd_scene *s, char *err, size_t errlen
         free(text);
         return -1;
     }
-    int rc = sd_parse_text(path, text, s, err, errlen);
+    int rc = sd_parse_text_from(path, text, textures_from, s, err, errlen);
     free(text);
     return rc;
 }

@@ -25,6 +25,8 @@ struct parser {
     struct lex lx;
     struct sd_scene *s;
     char dir[PARSE_DIR_MAX]; /* directory of the scene file, for map images */
+    const char *const *textures_from; /* NULL-ended: more directories map images
+                                         may come from (sd_parse_text_from) */
     int cap_materials, cap_clusters, cap_prims, cap_components, cap_keys, cap_view_keys;
     int seen_camera, seen_resolution, seen_options, seen_animation;
     int fresnel_off; /* options { fresnel off }: materials that set neither

@@ -9,17 +9,17 @@
 #include "host-tools/scene/scene_import.h"
 #include "host-tools/scene/scene_parse.h"
 
+/* The map's image: below the scene's directory or --textures-from only
+ * (sd_image_open_below). */
 static void parse_map_image(struct parser *p, struct sd_map *m)
 {
     if (p->lx.kind != LEX_STRING)
         lex_error(&p->lx, "expected a file name in quotes, found '%s'", p->lx.tok);
     char path[2048];
-    if (p->lx.tok[0] == '/')
-        snprintf(path, sizeof path, "%s", p->lx.tok);
-    else
-        snprintf(path, sizeof path, "%s%s", p->dir, p->lx.tok);
     char ierr[SD_ERR_MAX];
-    if (sd_map_read_image(m, path, ierr, sizeof ierr) != 0)
+    int fd = sd_image_open_below(p->lx.tok, p->dir, p->textures_from, SD_IMAGE_OF_SCENE, path,
+                                 sizeof path, ierr, sizeof ierr);
+    if (fd < 0 || sd_map_read_image_fd(m, fd, path, ierr, sizeof ierr) != 0)
         lex_error(&p->lx, "map image: %s", ierr);
 }
 

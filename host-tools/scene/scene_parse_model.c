@@ -6,7 +6,8 @@
  *
  * A model's textures are read from its own directory (and below) only,
  * unless textures_from names one more (relative to the scene's directory,
- * like file): scene_import.h, sd_texture_open.
+ * like file; not / nor a system root: sd_textures_from_ok): scene_import.h,
+ * sd_texture_open.
  */
 #include <stdio.h>
 #include <string.h>
@@ -61,6 +62,9 @@ void parse_model(struct parser *p, int cluster, int nesting)
     char allow[IMPORT_PATH_MAX];
     if (textures[0]) {
         snprintf(allow, sizeof allow, "%s%s", textures[0] == '/' ? "" : p->dir, textures);
+        char why[SD_ERR_MAX];
+        if (sd_textures_from_ok(allow, "textures_from", why, sizeof why) != 0)
+            lex_error(&p->lx, "model: %s", why);
         o.textures_from = allow;
     }
     struct model m;

@@ -4,13 +4,16 @@
  * over image_read), and then another scene's normal map and attribute map.
  * A scene that parses is compiled, loaded and prepared as the DM does, and
  * a few pixels of a sphere wearing the maps are traced, so the texels
- * reach the map lookups (render/maps.c). */
+ * reach the map lookups (render/maps.c).  A map's image is read only from
+ * below the scene's directory (sd_image_open_below), so the input is
+ * written to in.img in a directory of the harness's own (mkdtemp), beside
+ * the scene it names. */
 #define _GNU_SOURCE
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
+#include <fcntl.h>
 #include <unistd.h>
 
 #include "host-tools/scene/scene_desc.h"
@@ -20,6 +23,16 @@
 
 static int fuzz_fd = -1;
 static uint8_t *fuzz_mem;
+static char fuzz_dir[] = "/tmp/links1-fuzz-map.XXXXXX";
+static char fuzz_scn[64]; /* fuzz_dir/fuzz.scn: the image in.img beside it */
+static char fuzz_img[64];
+
+/* The directory and its image removed when the fuzzer exits. */
+static void fuzz_cleanup(void)
+{
+    unlink(fuzz_img);
+    rmdir(fuzz_dir);
+}
 
 /* text parsed, compiled, loaded and prepared, and a few pixels traced. */
 static void fuzz_scene(const char *text)
@@ -28,7 +41,7 @@ static void fuzz_scene(const char *text)
     char err[SD_ERR_MAX];
     err[0] = 0;
     int verbose = getenv("FUZZ_VERBOSE") != NULL; /* say why an input is refused */
-    if (sd_parse_text("fuzz.scn", text, &s, err, sizeof err) != 0) {
+    if (sd_parse_text(fuzz_scn, text, &s, err, sizeof err) != 0) {
         if (verbose)
             fprintf(stderr, "refused: %s\n", err);
         if (err[0] == 0)
@@ -57,7 +70,12 @@ static void fuzz_scene(const char *text)
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     if (fuzz_fd < 0) {
-        fuzz_fd = memfd_create("fuzz-image", 0);
+        if (!mkdtemp(fuzz_dir))
+            abort();
+        snprintf(fuzz_scn, sizeof fuzz_scn, "%s/fuzz.scn", fuzz_dir);
+        snprintf(fuzz_img, sizeof fuzz_img, "%s/in.img", fuzz_dir);
+        atexit(fuzz_cleanup);
+        fuzz_fd = open(fuzz_img, O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0600);
         fuzz_mem = aligned_alloc(RENDER_RELOCATE_ALIGN, FUZZ_BLOCK);
         if (fuzz_fd < 0 || !fuzz_mem)
             abort();
@@ -69,21 +87,19 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
              "camera { eye 0 0 -4 look_at 0 0 0 up 0 1 0 fov 40 }\n"
              "resolution 8 8\n"
              "light parallel { direction 0.3 -0.5 1 }\n"
-             "map c colour { image \"/proc/self/fd/%d\" repeat 2 3 }\n"
-             "map b bump { image \"/proc/self/fd/%d\" repeat 3 2 depth 0.8 }\n"
+             "map c colour { image \"in.img\" repeat 2 3 }\n"
+             "map b bump { image \"in.img\" repeat 3 2 depth 0.8 }\n"
              "material m { colour_map c bump_map b phong 10 }\n"
-             "sphere { material m radius 1.2 }\n",
-             fuzz_fd, fuzz_fd);
+             "sphere { material m radius 1.2 }\n");
     fuzz_scene(text);
     snprintf(text, sizeof text,
              "camera { eye 0 0 -4 look_at 0 0 0 up 0 1 0 fov 40 }\n"
              "resolution 8 8\n"
              "light parallel { direction 0.3 -0.5 1 }\n"
-             "map n normal { image \"/proc/self/fd/%d\" repeat 2 3 }\n"
-             "map a attribute { image \"/proc/self/fd/%d\" repeat 3 2 }\n"
+             "map n normal { image \"in.img\" repeat 2 3 }\n"
+             "map a attribute { image \"in.img\" repeat 3 2 }\n"
              "material m { normal_map n src 0.5 trc 0.4 src_map a trc_map a drc_map a }\n"
-             "sphere { material m radius 1.2 }\n",
-             fuzz_fd, fuzz_fd);
+             "sphere { material m radius 1.2 }\n");
     fuzz_scene(text);
     return 0;
 }

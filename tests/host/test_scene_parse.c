@@ -305,15 +305,16 @@ static void test_normal_and_attribute_maps(void)
     sd_free(&s);
 
     /* from an image: the usual encoding; 128 128 255 is the flat normal */
-    char dir[] = "/tmp/links1-maps-test.XXXXXX", path[128], text[512];
+    char dir[] = "/tmp/links1-maps-test.XXXXXX", path[128], text[512], scn[128];
     CHECK(mkdtemp(dir) != NULL);
     snprintf(path, sizeof path, "%s/n.ppm", dir);
+    snprintf(scn, sizeof scn, "%s/t.scn", dir); /* the image lies beside it */
     static const uint8_t flat[3] = {128, 128, 255}, left[3] = {0, 128, 255},
                          inward[3] = {128, 128, 100};
     CHECK_EQ_INT(put_ppm2(path, flat, left), 0);
     snprintf(text, sizeof text,
-             HEAD "map n normal { image \"%s\" }\nsphere { material m radius 1 }\n", path);
-    rc = sd_parse_text("t.scn", text, &s, err, sizeof err);
+             HEAD "map n normal { image \"n.ppm\" }\nsphere { material m radius 1 }\n");
+    rc = sd_parse_text(scn, text, &s, err, sizeof err);
     CHECK_EQ_INT(rc, 0);
     if (rc == 0) {
         /* flat: (1/255, 1/255, 1) rounds to 0 0 127; left: (-1, 1/255, 1)
@@ -325,7 +326,7 @@ static void test_normal_and_attribute_maps(void)
     }
     /* a texel whose blue stands for z <= 0 points into the surface */
     CHECK_EQ_INT(put_ppm2(path, flat, inward), 0);
-    rc = sd_parse_text("t.scn", text, &s, err, sizeof err);
+    rc = sd_parse_text(scn, text, &s, err, sizeof err);
     CHECK(rc != 0 && strstr(err, "normal map texel (1, 0) = RGB 128 128 100 does not point out") != NULL);
     if (rc == 0)
         sd_free(&s);

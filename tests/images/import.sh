@@ -13,13 +13,16 @@ mkdir -p "$out"
 covered() { python3 tests/images/ppm_stat.py "$1" covered; }
 
 # import_renders NAME MODEL [import options]: import, ref at 80x60, and
-# at least 2% of the picture is the model.
+# at least 2% of the picture is the model.  The scenes lie outside
+# tests/models/, so the ref takes --textures-from tests/models for the
+# textures the scenes name there (a map's image is read only from below
+# the scene's directory or a --textures-from DIR).
 import_renders() {
     local name=$1 model=$2; shift 2
     local scn="$out/$name.scn" img="$out/$name.ppm" err n
     if ! err=$(build/links1 import "$model" -o "$scn" "$@" 2>&1); then
         echo "FAIL import_$name: import: $err"
-    elif ! err=$(build/links1 ref "$scn" -o "$img" --size 80x60 2>&1); then
+    elif ! err=$(build/links1 ref "$scn" -o "$img" --size 80x60 --textures-from tests/models 2>&1); then
         echo "FAIL import_$name: ref: $err"
     elif ! n=$(covered "$img") || ! [[ $n =~ ^[0-9]+$ ]]; then
         echo "FAIL import_$name: could not count the model's pixels in $img ('$n')"

@@ -84,8 +84,11 @@ for a in double float fixed; do
 done
 
 # Each kind of map in the scene counts, and normal maps flag texel borders.
+# (its map images copied beside it: a map's image is read only from below
+# the scene's directory, and a link out of it is refused)
 cp scenes/surface_maps.scn "$out/sm.scn"
-ln -sfn "$PWD/scenes/maps" "$out/maps"
+rm -rf "$out/maps"
+cp -r scenes/maps "$out/maps"
 sed 's/  normal_map rivets//' scenes/surface_maps.scn >"$out/sm-no-normal.scn"
 sed 's/  src_map stripes//' scenes/surface_maps.scn >"$out/sm-no-src.scn"
 sed 's/  trc_map spots//' scenes/surface_maps.scn >"$out/sm-no-trc.scn"
