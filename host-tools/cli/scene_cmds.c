@@ -17,9 +17,10 @@
 #include "host-tools/scene/scene_board.h"
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_file.h"
+#include "host-tools/scene/scene_opts.h"
 #include "proto/arith.h"
 
-enum { SCENE_OPT_FRAME = CLI_OWN_CODES, SCENE_OPT_STRICT, SCENE_OPT_TEXTURES_FROM };
+enum { EXPORT_OPT_FRAME = CLI_OWN_CODES, EXPORT_OPT_STRICT };
 
 /* --textures-from DIR into the scene options o (scene_file_textures_from);
  * -1 after saying why. */
@@ -138,8 +139,8 @@ int scene_cmd_compile(int argc, char **argv)
 }
 
 static const struct option export_pov_options[] = {
-    {"frame", required_argument, NULL, SCENE_OPT_FRAME},
-    {"strict", no_argument, NULL, SCENE_OPT_STRICT},
+    {"frame", required_argument, NULL, EXPORT_OPT_FRAME},
+    {"strict", no_argument, NULL, EXPORT_OPT_STRICT},
     {"textures-from", required_argument, NULL, SCENE_OPT_TEXTURES_FROM},
     {"help", no_argument, NULL, 'h'},
     {NULL, 0, NULL, 0},
@@ -153,13 +154,13 @@ struct export_pov_args {
 static int export_pov_take(struct cli *c, int code, void *ctx)
 {
     struct export_pov_args *a = ctx;
-    if (code == SCENE_OPT_STRICT) {
+    if (code == EXPORT_OPT_STRICT) {
         a->strict = 1;
         return 0;
     }
     if (code == SCENE_OPT_TEXTURES_FROM)
         return scene_cmd_textures_from(c, &a->scene);
-    return code == SCENE_OPT_FRAME ? cli_int(c, 0, SCN_MAX_FRAMES - 1, &a->frame) : -1;
+    return code == EXPORT_OPT_FRAME ? cli_int(c, 0, SCN_MAX_FRAMES - 1, &a->frame) : -1;
 }
 
 int scene_cmd_export_pov(int argc, char **argv)

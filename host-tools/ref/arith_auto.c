@@ -19,6 +19,7 @@
 #include "host-tools/ref/ref_program.h"
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_file.h"
+#include "host-tools/scene/scene_opts.h"
 #include "proto/machines.h"
 #include "render/render.h"
 
@@ -113,38 +114,8 @@ int arith_auto_fpu(const char *word)
 void arith_auto_scene_words(const struct scene_file_opts *so, long frame,
                             struct arith_auto_words *w)
 {
-    int n = 0;
-    if (so->max_depth >= 0) {
-        snprintf(w->depth, sizeof w->depth, "%d", so->max_depth);
-        w->words[n++] = "--max-depth";
-        w->words[n++] = w->depth;
-    }
-    if (so->min_weight >= 0) {
-        snprintf(w->weight, sizeof w->weight, "%.17g", so->min_weight);
-        w->words[n++] = "--min-weight";
-        w->words[n++] = w->weight;
-    }
-    if (so->density_steps >= 0) {
-        snprintf(w->steps, sizeof w->steps, "%d", so->density_steps);
-        w->words[n++] = "--density-steps";
-        w->words[n++] = w->steps;
-    }
-    if (so->refraction >= 0) {
-        w->words[n++] = "--refraction";
-        w->words[n++] = so->refraction ? "on" : "off";
-    }
-    if (so->refractionless >= 0) {
-        w->words[n++] = "--refractionless";
-        w->words[n++] = so->refractionless ? "on" : "off";
-    }
-    if (so->no_auto_hierarchy)
-        w->words[n++] = "--no-auto-hierarchy";
-    if (so->paper)
-        w->words[n++] = "--paper";
-    for (int i = 0; i < SD_TEXTURES_FROM_MAX && so->textures_from[i]; i++) {
-        w->words[n++] = "--textures-from";
-        w->words[n++] = so->textures_from[i];
-    }
+    int n = scene_opts_words(so, SCENE_OPTS_PRE_RENDER, &w->given);
+    memcpy(w->words, w->given.w, (size_t)n * sizeof *w->words);
     snprintf(w->frame, sizeof w->frame, "%ld", frame);
     w->words[n++] = "--frame";
     w->words[n++] = w->frame;

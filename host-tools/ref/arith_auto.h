@@ -24,6 +24,7 @@
 #include <stddef.h>
 
 #include "host-tools/scene/scene_desc.h"
+#include "host-tools/scene/scene_opts.h"
 
 #define ARITH_AUTO_TARGET_DB 40.0   /* --target-db default */
 #define ARITH_AUTO_PIXELS 3072      /* the pre-render has at most this many pixels (64x48) */
@@ -84,8 +85,9 @@ struct arith_auto_choice {
 /* The options of a scene (scene_file.h) and its first frame as words for
  * opts.words, stored in w. */
 struct arith_auto_words {
-    const char *words[16 + 2 * SD_TEXTURES_FROM_MAX]; /* and --textures-from DIR */
-    char depth[16], weight[32], steps[16], frame[24];
+    struct scene_opts_words given; /* the scene options given (scene_opts.h) */
+    const char *words[SCENE_OPTS_MAX_WORDS + 2]; /* those, then --frame N */
+    char frame[24];
 };
 struct scene_file_opts;
 void arith_auto_scene_words(const struct scene_file_opts *so, long frame,
