@@ -18,6 +18,7 @@
 #include "host-tools/image/film.h"
 #include "host-tools/image/image_io.h"
 #include "host-tools/opts/cli_args.h"
+#include "host-tools/opts/exit_clean.h"
 #include "host-tools/image/image_save.h"
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_file.h"
@@ -376,6 +377,7 @@ static int ref_parse(int argc, char **argv, struct ref_args *a)
 
 int main(int argc, char **argv)
 {
+    exit_clean_install(); /* a signal leaves no temporary file and no child of ours */
     struct ref_args a;
     int r = ref_parse(argc, argv, &a);
     if (r != 0)

@@ -4,7 +4,7 @@
 SPD_GEN_SRCS := scenes/spd/spd_out.c scenes/spd/spd_dbs.c scenes/spd/spd_teapot.c
 HOST_TOOLS += links1-spd
 links1-spd_SRCS = scenes/spd/spd_main.c $(SPD_GEN_SRCS) $(SCENE_TEXT_SRCS) \
-	host-tools/opts/out_file.c
+	host-tools/opts/out_file.c host-tools/opts/exit_clean.c
 links1-spd_ARITH := double
 links1-spd_LIBS = $(SCENE_TEXT_LIBS)
 

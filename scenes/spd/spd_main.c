@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "host-tools/opts/out_file.h"
+#include "host-tools/opts/exit_clean.h"
 #include "host-tools/scene/nff_read.h"
 #include "host-tools/scene/scene_import.h"
 #include "host-tools/scene/scene_desc.h"
@@ -44,6 +45,7 @@ static int spd_ends_with(const char *s, const char *suffix)
 
 int main(int argc, char **argv)
 {
+    exit_clean_install(); /* a signal leaves no temporary file */
     const char *name = NULL, *size_arg = NULL, *out = NULL;
     int width = 512, height = 512;
     for (int i = 1; i < argc; i++) {
