@@ -56,7 +56,7 @@ interrupt() {
     local kids
     kids=$(children_of "$pid")
     kill -s "$sig" "$pid"
-    wait "$pid"
+    wait "$pid" 2>/dev/null
     local rc=$? want=$((128 + $(kill -l "$sig")))
     local left
     left=$(ls -A "$TMPDIR" "$T/out" | grep -v -e '^$' -e ':$' | tr '\n' ' ')
@@ -74,9 +74,9 @@ interrupt() {
 }
 
 interrupt signals_render_film_int INT "$T/out/.a.apng.*" \
-    "${L1[@]}" render scenes/anim.scn --frames 0:11 -o "$T/out/a.apng" --size 64x48 --quiet
+    "${L1[@]}" render scenes/fly.scn --frames 0:11 -o "$T/out/a.apng" --size 64x48 --quiet
 interrupt signals_render_insns_term TERM "$TMPDIR/links1-insns-*" \
-    "${L1[@]}" render scenes/anim.scn --frames 0:11 -o "$T/out/b.apng" --size 64x48 --quiet \
+    "${L1[@]}" render scenes/fly.scn --frames 0:11 -o "$T/out/b.apng" --size 64x48 --quiet \
     --count-insns
 
 # an521: the counting files QEMU is told of, while it runs.
@@ -95,7 +95,7 @@ an521_private() {
     [ "$n" -ge 2 ] || bad="$bad only $n board(s) counting"
     echo "$bad"
 }
-"${L1[@]}" render scenes/anim.scn --frames 0:11 -o "$T/out/c.apng" --size 32x24 --quiet \
+"${L1[@]}" render scenes/fly.scn --frames 0:11 -o "$T/out/c.apng" --size 64x48 --quiet \
     --machine an521 --ncs 4 --count-insns >"$T/an521.log" 2>&1 &
 pid=$!
 if wait_for 90 bash -c "[ \$(pgrep -P $pid -f insn-count.so | wc -l) -ge 3 ]"; then
@@ -108,7 +108,7 @@ fi
 kill -KILL "$pid" 2>/dev/null; wait "$pid" 2>/dev/null
 sleep 1; rm -rf "${TMPDIR:?}"/* "$T"/out/* "$T"/out/.[!.]*
 interrupt signals_an521_hup HUP "$TMPDIR/links1-insns-*" \
-    "${L1[@]}" render scenes/anim.scn --frames 0:11 -o "$T/out/d.apng" --size 32x24 --quiet \
+    "${L1[@]}" render scenes/fly.scn --frames 0:11 -o "$T/out/d.apng" --size 64x48 --quiet \
     --machine an521 --ncs 4 --count-insns
 
 # ref --arith auto: a scene whose candidates take a while.
@@ -150,11 +150,12 @@ fi
 
 # Hole 3 as another user would play it: a link at the plugin's file.
 other_user_make signals_plugin_refuses_link || exit 0
+chmod 711 "$T" # the other user may reach the shared directory in it
 other_user_dir "$T/shared"
 echo "keep these bytes" >"$T/victim.txt"
 as_other ln -s "$T/victim.txt" "$T/shared/counts"
 timeout -s TERM 3 "${QEMU:-qemu-system-arm}" -M virt -cpu cortex-a15 -m 256M -display none \
-    -nodefaults -kernel "$FW_DIR/links1-float.elf" \
+    -nodefaults -kernel "$FW_DIR/links1-float.elf" -d plugin \
     -plugin "build/insn-count.so,out=$T/shared/counts" >"$T/plugin.log" 2>&1
 if [ "$(cat "$T/victim.txt")" = "keep these bytes" ] && grep -q 'cannot make the out= file' "$T/plugin.log"; then
     echo "PASS signals_plugin_refuses_link (the link's target kept, the plugin said why)"
