@@ -33,7 +33,7 @@ BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
 	tests/board/render_view_keys.sh tests/board/render_film.sh \
 	tests/board/farm.sh tests/board/render_maps.sh tests/board/an521_named.sh \
 	tests/board/line_latency.sh tests/board/insn_profile.sh tests/board/render_escalate.sh \
-	tests/board/render_world_space.sh
+	tests/board/render_world_space.sh tests/board/signals.sh
 RENDER_FULL_TESTS := tests/board/farm_hosts.sh tests/board/farm_slurm.sh tests/sweeps/scale_same_full.sh tests/board/an521_grid_full.sh tests/board/render_grid_full.sh tests/board/render_faults_full.sh \
 	tests/board/render_faults_silent_full.sh
 

@@ -1,5 +1,6 @@
 /* cmd_boot.c: `links1 boot`: boot the board, show every unit computer
  * reporting in, shut it down cleanly; optionally count guest instructions. */
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -7,6 +8,7 @@
 #include "host-tools/launcher/launcher.h"
 #include "host-tools/insn/insn_report.h"
 #include "host-tools/cli/links1_cmds.h"
+#include "host-tools/opts/tmp_dir.h"
 
 static void cmd_boot_usage(FILE *out)
 {
@@ -53,14 +55,15 @@ int cmd_boot(int argc, char **argv)
             return 2;
         }
     }
-    char insn_path[] = "/tmp/links1-insns-XXXXXX";
+    /* The plugin's counts in a private directory of the run's (an an521
+     * NC board's beside them, .bK), each file made new by the plugin. */
+    char dir[PATH_MAX] = "", insn_path[PATH_MAX + 16];
     if (count_insns) {
-        int fd = mkstemp(insn_path);
-        if (fd < 0) {
-            perror("links1: temporary file for instruction counts");
+        if (tmp_dir_make("insns", dir, sizeof dir) != 0) {
+            perror("links1: a private directory for the instruction counts");
             return 1;
         }
-        close(fd);
+        snprintf(insn_path, sizeof insn_path, "%s/counts", dir);
         o.insn_count_out = insn_path;
     }
     struct board b;
@@ -79,7 +82,7 @@ int cmd_boot(int argc, char **argv)
     if (count_insns) {
         if (insn_report_print(insn_path, o.ncores) < 0)
             rc = 1;
-        unlink(insn_path);
+        tmp_dir_remove(dir);
     }
     return rc;
 }

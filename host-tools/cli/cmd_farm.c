@@ -27,6 +27,7 @@
 #include "host-tools/image/image_save.h"
 #include "host-tools/opts/cli_args.h"
 #include "host-tools/opts/cli_opt.h"
+#include "host-tools/opts/exit_clean.h"
 #include "host-tools/opts/private_path.h"
 #include "host-tools/opts/self_path.h"
 
@@ -833,6 +834,8 @@ int cmd_farm(int argc, char **argv)
         av[k++] = "--return";
         av[k++] = ret;
         av[k++] = "--cleanup";
+        av[k++] = "--termseq"; /* a signal to us stops the jobs, remote ones too */
+        av[k++] = "TERM,200,TERM,100,KILL,25";
         if (fw_dir && *fw_dir) {
             av[k++] = "--env";
             av[k++] = "FW_DIR";
@@ -856,6 +859,7 @@ int cmd_farm(int argc, char **argv)
             return 1;
         }
         if (pid == 0) {
+            exit_clean_in_child();
             int null = open("/dev/null", O_RDONLY);
             if (null >= 0) {
                 dup2(null, 0);
@@ -869,8 +873,10 @@ int cmd_farm(int argc, char **argv)
             fprintf(stderr, "links1 farm: cannot start parallel: %s\n", strerror(errno));
             _exit(127);
         }
+        exit_clean_add_child(pid);
         while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
             ;
+        exit_clean_drop_child(pid);
         free(av);
         if (WIFEXITED(status) && WEXITSTATUS(status) == 127) {
             fprintf(stderr, "links1 farm: parallel did not start\n");

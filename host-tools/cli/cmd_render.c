@@ -5,6 +5,8 @@
  * one-line summary per frame.  Several SCENE -o OUT pairs render one after
  * another on the same board; a scene the board refuses is reported and the
  * next one still renders (the exit status is then 1). */
+#include <errno.h>
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -22,6 +24,7 @@
 #include "host-tools/image/image_save.h"
 #include "host-tools/opts/cli_args.h"
 #include "host-tools/opts/out_file.h"
+#include "host-tools/opts/tmp_dir.h"
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_file.h"
 #include "host-tools/scene/scene_paper.h"
@@ -1089,6 +1092,62 @@ static int render_write_trace(const struct render_opts *o, const char *marks_pat
     return rc;
 }
 
+/* What the counting plugin writes for --count-insns, --trace and
+ * --insn-profile: files in one private directory made for the run
+ * (tmp_dir_make: mode 0700, a name no one can predict), counts, marks and
+ * profile, each an521 NC board's beside them (.bK); the plugin makes each
+ * new (O_EXCL | O_NOFOLLOW). */
+struct render_counting {
+    char dir[PATH_MAX];
+    char counts[PATH_MAX + 16], marks[PATH_MAX + 16], profile[PATH_MAX + 16];
+    const char *profile_out; /* --insn-profile FILE: the profile copied there */
+};
+
+/* The directory made and the board options pointed into it (nothing made
+ * when nothing counts).  0, or -1 after saying why. */
+static int render_counting_open(struct render_opts *o, struct render_counting *k)
+{
+    memset(k, 0, sizeof *k);
+    k->profile_out = o->board.insn_profile_out;
+    if (!o->trace && !o->count_insns && !k->profile_out)
+        return 0;
+    if (tmp_dir_make("insns", k->dir, sizeof k->dir) != 0) {
+        fprintf(stderr, "links1 render: a private directory for the instruction counts: %s\n",
+                strerror(errno));
+        k->dir[0] = 0;
+        return -1;
+    }
+    snprintf(k->counts, sizeof k->counts, "%s/counts", k->dir);
+    snprintf(k->marks, sizeof k->marks, "%s/marks", k->dir);
+    snprintf(k->profile, sizeof k->profile, "%s/profile", k->dir);
+    o->board.insn_count_out = o->count_insns ? k->counts : NULL;
+    o->board.insn_trace_out = o->trace ? k->marks : NULL;
+    o->board.insn_profile_out = k->profile_out ? k->profile : NULL;
+    return 0;
+}
+
+/* The counts printed, the trace and the profile written (rc: the run's
+ * status so far), the directory removed.  0, or -1 after saying why. */
+static int render_counting_close(struct render_opts *o, struct render_counting *k, int rc)
+{
+    if (!k->dir[0])
+        return 0;
+    int r = 0;
+    if (o->count_insns && insn_report_print(k->counts, o->board.ncores) < 0)
+        r = -1;
+    if (o->trace && rc == 0 && render_write_trace(o, k->marks) != 0)
+        r = -1;
+    char err[PATH_MAX + 256];
+    if (k->profile_out && out_file_copy(k->profile, k->profile_out, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 render: --insn-profile: %s\n", err);
+        r = -1;
+    }
+    o->board.insn_profile_out = k->profile_out;
+    if (tmp_dir_remove(k->dir) != 0)
+        fprintf(stderr, "links1 render: could not remove %s: %s\n", k->dir, strerror(errno));
+    return r;
+}
+
 int cmd_render(int argc, char **argv)
 {
     struct render_opts o;
@@ -1100,27 +1159,10 @@ int cmd_render(int argc, char **argv)
         render_free_scenes(&o);
         return 1;
     }
-    char marks_path[] = "/tmp/links1-marks-XXXXXX";
-    if (o.trace) {
-        int fd = mkstemp(marks_path);
-        if (fd < 0) {
-            perror("links1: temporary file for the trace marks");
-            render_free_scenes(&o);
-            return 1;
-        }
-        close(fd);
-        o.board.insn_trace_out = marks_path;
-    }
-    char insn_path[] = "/tmp/links1-insns-XXXXXX";
-    if (o.count_insns) {
-        int fd = mkstemp(insn_path);
-        if (fd < 0) {
-            perror("links1: temporary file for instruction counts");
-            render_free_scenes(&o);
-            return 1;
-        }
-        close(fd);
-        o.board.insn_count_out = insn_path;
+    struct render_counting k;
+    if (render_counting_open(&o, &k) != 0) {
+        render_free_scenes(&o);
+        return 1;
     }
     struct board b;
     int rc = 1;
@@ -1171,16 +1213,8 @@ int cmd_render(int argc, char **argv)
         printf("links1 render: %d NC(s) faulted; the frames were finished without them\n",
                b.nfaults);
     }
-    if (o.count_insns) {
-        if (insn_report_print(insn_path, o.board.ncores) < 0)
-            rc = 1;
-        unlink(insn_path);
-    }
-    if (o.trace) {
-        if (rc == 0 && render_write_trace(&o, marks_path) != 0)
-            rc = 1;
-        unlink(marks_path);
-    }
+    if (render_counting_close(&o, &k, rc) != 0)
+        rc = 1;
     render_free_scenes(&o);
     return rc;
 }

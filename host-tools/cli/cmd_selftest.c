@@ -2,6 +2,7 @@
  * every unit computer to report in, then runs each named check in order and
  * prints "selftest NAME: ok: ..." or "selftest NAME: FAILED: why".  The
  * board tests in tests/board/ are built on these lines. */
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -10,6 +11,7 @@
 #include "host-tools/launcher/launcher.h"
 #include "host-tools/cli/links1_cmds.h"
 #include "host-tools/selftest/selftest.h"
+#include "host-tools/opts/tmp_dir.h"
 
 static const struct selftest selftests[] = {
     {"status", "the board counts every unit computer", selftest_status},
@@ -173,19 +175,26 @@ int cmd_selftest(int argc, char **argv)
     if (selftest_parse(argc, argv, &o, &a, run, &nrun) < 0)
         return 2;
 
-    char series[64] = "";
-    for (int i = 0; i < nrun; i++)
-        if (run[i]->fn == selftest_idle && !series[0] &&
-            selftest_idle_prepare(&o, series, sizeof series) < 0)
+    /* The idle check's series: in a private directory of the run's. */
+    char dir[PATH_MAX] = "", series[PATH_MAX + 16] = "";
+    for (int i = 0; i < nrun; i++) {
+        if (run[i]->fn != selftest_idle || series[0])
+            continue;
+        if (tmp_dir_make("idle", dir, sizeof dir) != 0) {
+            perror("links1 selftest: a private directory for the instruction counts");
             return 1;
+        }
+        snprintf(series, sizeof series, "%s/series", dir);
+        selftest_idle_prepare(&o, series);
+    }
 
     struct board b;
     int failed = 0;
     if (board_start(&b, &o) < 0 || board_wait_reported(&b, o.timeout_s * 1000) < 0) {
         printf("selftest boot: FAILED: not every unit computer reported in\n");
         board_stop(&b);
-        if (series[0])
-            unlink(series);
+        if (dir[0])
+            tmp_dir_remove(dir);
         return 1;
     }
     printf("selftest boot: ok: all %d unit computers reported in\n", o.ncores);
@@ -205,8 +214,8 @@ int cmd_selftest(int argc, char **argv)
             break; /* the board is gone; later checks cannot run */
     }
     int stop = board_stop(&b);
-    if (series[0])
-        unlink(series);
+    if (dir[0])
+        tmp_dir_remove(dir);
     if (stop == 0) {
         printf("selftest shutdown: ok: the board powered off on command\n");
     } else {

@@ -2,12 +2,15 @@
  * talks through semihosting (e.g. tests/bench/check_arm_bits.sh's renders,
  * tests/bench/bench_apu.sh's Table 1) on the board's CPU, its output on
  * stdout, through the one launcher. */
+#include <limits.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "host-tools/launcher/launcher.h"
 #include "host-tools/cli/links1_cmds.h"
 #include "host-tools/opts/cli_opt.h"
+#include "host-tools/opts/out_file.h"
+#include "host-tools/opts/tmp_dir.h"
 
 static void cmd_semihost_usage(FILE *out)
 {
@@ -65,6 +68,20 @@ int cmd_semihost(int argc, char **argv)
         cmd_semihost_usage(stderr);
         return 2;
     }
-    int r = board_run_semihost_smp(elf, BOARD_DEFAULT_RAM_MB, (int)cores, trace);
+    /* The plugin's marks go to a private directory of the run's first
+     * (it makes its file new), then whole to F (out_file). */
+    char dir[PATH_MAX] = "", marks[PATH_MAX + 16], err[2 * PATH_MAX];
+    if (trace && tmp_dir_make("insns", dir, sizeof dir) != 0) {
+        perror("links1 semihost: a private directory for the trace marks");
+        return 1;
+    }
+    snprintf(marks, sizeof marks, "%s/marks", dir);
+    int r = board_run_semihost_smp(elf, BOARD_DEFAULT_RAM_MB, (int)cores, trace ? marks : NULL);
+    if (trace && r >= 0 && out_file_copy(marks, trace, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 semihost: --trace-marks: %s\n", err);
+        r = r ? r : 1;
+    }
+    if (dir[0])
+        tmp_dir_remove(dir);
     return r < 0 ? 1 : r;
 }

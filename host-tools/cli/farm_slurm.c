@@ -17,6 +17,7 @@
 #include <unistd.h>
 
 #include "host-tools/cli/farm.h"
+#include "host-tools/opts/exit_clean.h"
 
 #define FARM_SLURM_ARRAY_MAX 65536 /* bytes of --array's list */
 #define FARM_SLURM_LOG_MAX (1 << 20) /* bytes of a task's log read back */
@@ -198,6 +199,7 @@ int farm_slurm_run(const struct farm_slurm_round *r, struct farm_host *hosts, in
         return -1;
     }
     if (pid == 0) {
+        exit_clean_in_child();
         int null = open("/dev/null", O_RDONLY);
         if (null >= 0) {
             dup2(null, 0);
@@ -211,6 +213,7 @@ int farm_slurm_run(const struct farm_slurm_round *r, struct farm_host *hosts, in
         _exit(127);
     }
     free(av);
+    exit_clean_add_child(pid);
     close(fds[1]);
     char out[256];
     size_t got = 0;
@@ -233,6 +236,7 @@ int farm_slurm_run(const struct farm_slurm_round *r, struct farm_host *hosts, in
     int status;
     while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
         ;
+    exit_clean_drop_child(pid);
     /* --parsable prints "JOB" or "JOB;CLUSTER" once the array is submitted */
     char *end;
     errno = 0;

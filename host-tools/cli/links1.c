@@ -5,6 +5,7 @@
 
 #include "host-tools/cli/links1_cmds.h"
 #include "host-tools/cli/scene_cmds.h"
+#include "host-tools/opts/exit_clean.h"
 
 struct links1_cmd {
     const char *name;
@@ -38,6 +39,7 @@ static void links1_usage(FILE *out)
 
 int main(int argc, char **argv)
 {
+    exit_clean_install(); /* a signal leaves no temporary file and no child of ours */
     if (argc < 2) {
         links1_usage(stderr);
         return 2;

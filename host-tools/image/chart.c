@@ -2,6 +2,8 @@
 #define _GNU_SOURCE /* posix_spawn_file_actions_addclosefrom_np, pipe2 */
 #include "host-tools/image/chart.h"
 
+#include "host-tools/opts/exit_clean.h"
+
 #include <errno.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -19,6 +21,7 @@ static int chart_wait(struct chart *c)
     if (c->pid > 0) {
         while (waitpid(c->pid, &status, 0) < 0 && errno == EINTR)
             ;
+        exit_clean_drop_child(c->pid);
         c->pid = 0;
     }
     return status;
@@ -50,8 +53,13 @@ static int chart_spawn(struct chart *c, int in, int out)
         rc = posix_spawn_file_actions_adddup2(&fa, out, STDOUT_FILENO);
     if (rc == 0) /* nothing else of ours goes with it */
         rc = posix_spawn_file_actions_addclosefrom_np(&fa, STDERR_FILENO + 1);
+    sigset_t held;
+    exit_clean_hold(&held); /* started and registered before a signal can end us */
     if (rc == 0)
         rc = posix_spawnp(&c->pid, CHART_PROGRAM, &fa, NULL, argv, environ);
+    if (rc == 0)
+        exit_clean_add_child(c->pid);
+    exit_clean_release(&held);
     posix_spawn_file_actions_destroy(&fa);
     if (rc != 0)
         c->pid = 0;

@@ -1,6 +1,8 @@
 /* film.c: frames piped to the ffmpeg command as PNG images (film.h). */
 #define _GNU_SOURCE /* posix_spawn_file_actions_addclosefrom_np, pipe2 */
 #include "host-tools/image/film.h"
+#include "host-tools/opts/exit_clean.h"
+#include "host-tools/opts/tmp_dir.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -90,6 +92,7 @@ static int film_wait(struct film *fm)
     if (fm->pid > 0) {
         while (waitpid(fm->pid, &status, 0) < 0 && errno == EINTR)
             ;
+        exit_clean_drop_child(fm->pid);
         fm->pid = 0;
     }
     return status;
@@ -107,7 +110,7 @@ static void film_cleanup(struct film *fm)
     }
     out_file_abort(&fm->out);
     if (fm->log[0]) {
-        unlink(fm->log);
+        tmp_file_remove(fm->log);
         fm->log[0] = 0;
     }
 }
@@ -131,8 +134,7 @@ int film_open(struct film *fm, const char *path, int width, int height, int fps,
     }
     if (out_file_open(&fm->out, path, err, cap) != 0)
         return -1;
-    snprintf(fm->log, sizeof fm->log, "/tmp/links1-ffmpeg-XXXXXX");
-    int log = mkostemp(fm->log, O_CLOEXEC);
+    int log = tmp_file_make("ffmpeg", fm->log, sizeof fm->log);
     if (log < 0) {
         snprintf(err, cap, "%s: ffmpeg's log file: %s", path, strerror(errno));
         fm->log[0] = 0;
@@ -217,6 +219,8 @@ int film_open(struct film *fm, const char *path, int width, int height, int fps,
     signal(SIGPIPE, SIG_IGN); /* a write to an ffmpeg that stopped fails with EPIPE */
     if (rc == 0)
         rc = posix_spawnp(&fm->pid, FILM_PROGRAM, &fa, NULL, (char *const *)argv, environ);
+    if (rc == 0) /* a signal stops it (its input's end stops it too) */
+        exit_clean_add_child(fm->pid);
     posix_spawn_file_actions_destroy(&fa);
     close(p[0]);
     close(log);
@@ -310,7 +314,7 @@ int film_close(struct film *fm, char *err, size_t cap)
         film_cleanup(fm);
         return -1;
     }
-    unlink(fm->log);
+    tmp_file_remove(fm->log);
     fm->log[0] = 0;
     return 0;
 }

@@ -42,7 +42,7 @@ struct film {
     struct out_file out;    /* OUT and the temporary file ffmpeg writes */
     FILE *pipe;             /* ffmpeg's standard input */
     pid_t pid;              /* ffmpeg, 0 once waited for */
-    char log[64];           /* ffmpeg's standard error, a file in /tmp */
+    char log[PATH_MAX];     /* ffmpeg's standard error: a private file (tmp_file_make) */
     int width, height;      /* every frame's size */
     long frames;            /* frames written */
 };

@@ -34,7 +34,12 @@
  * instructions executed in blocks starting there, retranslations summed),
  * which the firmware's symbol table attributes to functions (links1 render
  * --insn-profile, tests/bench/bench_insn_funcs.sh).
+ *
+ * Every FILE is made new (O_CREAT | O_EXCL | O_NOFOLLOW, mode 0600): a file
+ * or a link already at that name is refused, never written through.  links1
+ * names files in a private directory it made for the run (tmp_dir_make).
  */
+#include <fcntl.h>
 #include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
@@ -43,6 +48,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
+#include <unistd.h>
 
 #include "proto/units.h"
 #include "proto/insn_mark.h"
@@ -164,11 +170,23 @@ static void insn_count_trace(unsigned int vcpu, void *kind)
     t->n++;
 }
 
+/* path made new for writing: never an existing file, never through a link. */
+static FILE *insn_open_out(const char *path)
+{
+    int fd = open(path, O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0600);
+    if (fd < 0)
+        return NULL;
+    FILE *f = fdopen(fd, "w");
+    if (!f)
+        close(fd);
+    return f;
+}
+
 static void insn_trace_write(void)
 {
-    FILE *f = fopen(insn_trace_out, "w");
+    FILE *f = insn_open_out(insn_trace_out);
     if (!f) {
-        qemu_plugin_outs("insn-count: cannot open the trace= file\n");
+        qemu_plugin_outs("insn-count: cannot make the trace= file (it exists, or a link is there)\n");
         return;
     }
     if (insn_trace_oom)
@@ -226,9 +244,9 @@ static int insn_prof_by_addr(const void *a, const void *b)
 
 static void insn_prof_write(void)
 {
-    FILE *f = fopen(insn_prof_out, "w");
+    FILE *f = insn_open_out(insn_prof_out);
     if (!f) {
-        qemu_plugin_outs("insn-count: cannot open the profile= file\n");
+        qemu_plugin_outs("insn-count: cannot make the profile= file (it exists, or a link is there)\n");
         return;
     }
     pthread_mutex_lock(&insn_prof_lock);
@@ -289,9 +307,9 @@ static void insn_count_atexit(qemu_plugin_id_t id, void *userdata)
     if (!insn_count_out[0] && (insn_trace_out[0] || insn_prof_out[0]))
         return;
     char line[64];
-    FILE *f = insn_count_out[0] ? fopen(insn_count_out, "w") : NULL;
+    FILE *f = insn_count_out[0] ? insn_open_out(insn_count_out) : NULL;
     if (insn_count_out[0] && !f) {
-        qemu_plugin_outs("insn-count: cannot open the out= file\n");
+        qemu_plugin_outs("insn-count: cannot make the out= file (it exists, or a link is there)\n");
         return;
     }
     for (int k = 0; k < insn_count_vcpus; k++) {
@@ -315,9 +333,9 @@ static void *insn_series_thread(void *arg)
 {
     (void)arg;
     static char line[INSN_COUNT_MAX_VCPUS * 22 + 32];
-    FILE *f = fopen(insn_series_out, "w");
+    FILE *f = insn_open_out(insn_series_out);
     if (!f) {
-        qemu_plugin_outs("insn-count: cannot open the series= file\n");
+        qemu_plugin_outs("insn-count: cannot make the series= file (it exists, or a link is there)\n");
         return NULL;
     }
     struct timespec period = {insn_series_ms / 1000, (insn_series_ms % 1000) * 1000000L};

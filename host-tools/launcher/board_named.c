@@ -4,6 +4,7 @@
  * the disk is board_state.c's. */
 #include "host-tools/launcher/launcher.h"
 #include "host-tools/launcher/board_state.h"
+#include "host-tools/opts/exit_clean.h"
 
 #include <dirent.h>
 #include <errno.h>
@@ -319,12 +320,14 @@ void board_named_abandon(struct board *b)
     if (b->qemu_pid > 0) {
         kill(b->qemu_pid, SIGKILL);
         waitpid(b->qemu_pid, NULL, 0);
+        exit_clean_drop_child(b->qemu_pid);
         b->qemu_pid = 0;
     }
     for (int k = 1; k < AN521_MAX_BOARDS; k++) { /* an an521 set's NC boards */
         if (b->nc_board_pid[k] > 0) {
             kill(b->nc_board_pid[k], SIGKILL);
             waitpid(b->nc_board_pid[k], NULL, 0);
+            exit_clean_drop_child(b->nc_board_pid[k]);
             b->nc_board_pid[k] = 0;
         }
     }

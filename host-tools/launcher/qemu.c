@@ -6,6 +6,7 @@
 #include "host-tools/launcher/launcher.h"
 #include "host-tools/launcher/board_state.h"
 #include "host-tools/launcher/link_relay.h"
+#include "host-tools/opts/exit_clean.h"
 #include "host-tools/opts/self_path.h"
 #include "proto/wire.h"
 
@@ -17,7 +18,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
-#include <sys/prctl.h>
 #include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -216,7 +216,7 @@ static void board_qemu_exec_nc_board(struct board *b, int board)
         board_named_redirect(b);
         board_state_nc_name(b->state_dir, board, name, sizeof name);
     } else {
-        prctl(PR_SET_PDEATHSIG, SIGTERM);
+        exit_clean_in_child(); /* it ends with us */
         int null = open("/dev/null", O_RDWR);
         if (null >= 0) {
             dup2(null, 0);
@@ -257,7 +257,7 @@ static void board_qemu_exec(struct board *b, int qemu_fd)
     snprintf(smp, sizeof smp, "%d", b->opts.ncores);
     snprintf(mem, sizeof mem, "%dM", b->opts.ram_mb);
     if (qemu_fd >= 0) {
-        prctl(PR_SET_PDEATHSIG, SIGTERM);
+        exit_clean_in_child(); /* it ends with us */
         fcntl(qemu_fd, F_SETFD, 0); /* keep QEMU's end open across exec */
         snprintf(chardev, sizeof chardev, "socket,id=link,fd=%d", qemu_fd);
     } else {
@@ -366,20 +366,23 @@ int board_run_semihost_smp(const char *elf, int ram_mb, int cores, const char *t
         return -1;
     }
     if (pid == 0) {
-        prctl(PR_SET_PDEATHSIG, SIGTERM);
+        exit_clean_in_child();
         int null = open("/dev/null", O_RDONLY);
         if (null >= 0)
             dup2(null, 0); /* the program reads nothing; keep a terminal cooked */
         execvp(qemu, (char *const *)argv);
         board_qemu_exec_failed(qemu);
     }
+    exit_clean_add_child(pid);
     int st;
     while (waitpid(pid, &st, 0) < 0) {
         if (errno != EINTR) {
             fprintf(stderr, "links1: waitpid: %s\n", strerror(errno));
+            exit_clean_drop_child(pid);
             return -1;
         }
     }
+    exit_clean_drop_child(pid);
     if (WIFEXITED(st))
         return WEXITSTATUS(st);
     fprintf(stderr, "links1: QEMU was killed by signal %d\n", WTERMSIG(st));
@@ -410,6 +413,8 @@ static int board_gdb_socket(struct board *b)
         return -1;
     }
     memcpy(b->gdb_socket, path, strlen(path) + 1);
+    if (!b->named)
+        exit_clean_add(b->gdb_socket, EXIT_CLEAN_FILE); /* QEMU makes it */
     printf("links1: QEMU's gdb stub on %s, every core halted until gdb continues: "
            "gdb-multiarch %s -ex 'target remote %s'\n", b->gdb_socket, b->firmware,
            b->gdb_socket);
@@ -565,6 +570,7 @@ static int board_start_nc_boards(struct board *b)
         if (pid == 0)
             board_qemu_exec_nc_board(b, k);
         b->nc_board_pid[k] = pid;
+        exit_clean_add_child(pid); /* a named set's until it is up */
     }
     if (!b->opts.quiet)
         printf("links1: booting %s on %d an521 boards (board 0: DM and RC, QEMU pid %d; "
@@ -580,6 +586,7 @@ static int board_nc_board_reap(struct board *b, int k, int timeout_ms)
     while (b->nc_board_pid[k]) {
         pid_t r = waitpid(b->nc_board_pid[k], &b->nc_board_status[k], WNOHANG);
         if (r == b->nc_board_pid[k] || (r < 0 && errno == ECHILD)) {
+            exit_clean_drop_child(b->nc_board_pid[k]);
             b->nc_board_pid[k] = 0;
             break;
         }
@@ -600,10 +607,18 @@ static void board_merge_counts(const char *path, int k, int counts)
 {
     char part[PATH_MAX + 16], line[128];
     board_an521_file(path, k, part, sizeof part);
-    FILE *in = fopen(part, "r");
-    if (!in)
+    /* Both in the run's private directory; a link there is not followed. */
+    int in_fd = open(part, O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    FILE *in = in_fd >= 0 ? fdopen(in_fd, "r") : NULL;
+    if (!in) {
+        if (in_fd >= 0)
+            close(in_fd);
         return; /* the board ended before its plugin wrote (killed) */
-    FILE *out = fopen(path, "a");
+    }
+    int out_fd = open(path, O_WRONLY | O_APPEND | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0600);
+    FILE *out = out_fd >= 0 ? fdopen(out_fd, "a") : NULL;
+    if (!out && out_fd >= 0)
+        close(out_fd);
     unsigned bad = 0;
     while (out && fgets(line, sizeof line, in)) {
         unsigned v, kind;
@@ -695,6 +710,7 @@ int board_start(struct board *b, const struct board_opts *o)
         board_qemu_exec(b, sv[1]);
     close(sv[1]);
     b->qemu_pid = pid;
+    exit_clean_add_child(pid);
     int tool_fd = sv[0];
     if (o->link_noise_on && (tool_fd = board_noise_relay(o, sv[0])) < 0) {
         board_stop(b);
@@ -709,8 +725,8 @@ int board_start(struct board *b, const struct board_opts *o)
     return 0;
 }
 
-int board_start_named(struct board *b, const struct board_opts *o, const char *name,
-                      int timeout_ms)
+static int board_start_named_run(struct board *b, const struct board_opts *o,
+                                 const char *name, int timeout_ms)
 {
     if (board_session_init(b, o) < 0)
         return -1;
@@ -748,6 +764,7 @@ int board_start_named(struct board *b, const struct board_opts *o, const char *n
     if (pid == 0)
         board_qemu_exec(b, -1);
     b->qemu_pid = pid;
+    exit_clean_add_child(pid); /* until the board is up: then it runs on */
     if (b->opts.machine == MACHINE_AN521 && board_start_nc_boards(b) < 0) {
         board_named_abandon(b);
         board_stop(b);
@@ -771,6 +788,18 @@ int board_start_named(struct board *b, const struct board_opts *o, const char *n
     return 0;
 }
 
+int board_start_named(struct board *b, const struct board_opts *o, const char *name,
+                      int timeout_ms)
+{
+    int r = board_start_named_run(b, o, name, timeout_ms);
+    /* Up, it runs on; not up, board_named_abandon ended it: a signal from
+     * now on leaves it be. */
+    exit_clean_drop_child(b->qemu_pid);
+    for (int k = 1; k < AN521_MAX_BOARDS; k++)
+        exit_clean_drop_child(b->nc_board_pid[k]);
+    return r;
+}
+
 /* Waits up to timeout_ms for QEMU to exit; returns 1 once reaped. */
 static int board_qemu_reap(struct board *b, int timeout_ms)
 {
@@ -778,6 +807,7 @@ static int board_qemu_reap(struct board *b, int timeout_ms)
     while (b->qemu_pid) {
         pid_t r = waitpid(b->qemu_pid, &b->qemu_status, WNOHANG);
         if (r == b->qemu_pid || (r < 0 && errno == ECHILD)) {
+            exit_clean_drop_child(b->qemu_pid);
             b->qemu_pid = 0;
             break;
         }
@@ -811,8 +841,10 @@ int board_stop(struct board *b)
     } else {
         r = board_stop_qemu(b);
         board_stop_nc_boards(b);
-        if (b->gdb_socket[0] && !b->qemu_pid)
+        if (b->gdb_socket[0] && !b->qemu_pid) {
             unlink(b->gdb_socket); /* a named board's goes with its directory */
+            exit_clean_drop(b->gdb_socket);
+        }
     }
     board_session_close(b);
     board_ram_release(b);

@@ -1,6 +1,7 @@
 # host-tools/opts/: option helpers every command shares.
 HT_OPTS_CLI_SRCS := host-tools/opts/cli_opt.c host-tools/opts/self_path.c host-tools/opts/out_file.c \
-	host-tools/opts/tmp_dir.c host-tools/opts/private_path.c
+	host-tools/opts/tmp_dir.c host-tools/opts/private_path.c \
+	host-tools/opts/exit_clean.c
 HT_OPTS_ARGS_SRCS := host-tools/opts/cli_args.c
 ARITH_FREE_SRCS += $(HT_OPTS_CLI_SRCS) $(HT_OPTS_ARGS_SRCS)
 
@@ -11,7 +12,8 @@ test_cli_opt_ARITH := double
 
 # Output files written whole through mkstemp beside them (out_file.c).
 HOST_TESTS += test_out_file
-test_out_file_SRCS := tests/host/test_out_file.c host-tools/opts/out_file.c host-tools/opts/tmp_dir.c host-tools/opts/private_path.c
+test_out_file_SRCS := tests/host/test_out_file.c host-tools/opts/out_file.c host-tools/opts/tmp_dir.c host-tools/opts/private_path.c \
+	host-tools/opts/exit_clean.c
 test_out_file_ARITH := double
 # A file or directory only you (or root) can change (private_path.c).
 HOST_TESTS += test_private_path
@@ -20,3 +22,10 @@ test_private_path_SRCS := tests/host/test_private_path.c host-tools/opts/private
 test_private_path_ARITH := double
 # Every writer of -o through it, against a FIFO, a link or a directory at OUT.
 BOARD_TESTS += tests/images/out_files.sh
+
+# What a signal leaves (exit_clean.c): nothing registered, the link inside
+# not followed, the children ended, stale directories of a dead run swept.
+HOST_TESTS += test_exit_clean
+test_exit_clean_SRCS := tests/host/test_exit_clean.c host-tools/opts/exit_clean.c \
+	host-tools/opts/tmp_dir.c host-tools/opts/out_file.c
+test_exit_clean_ARITH := double

@@ -2,6 +2,7 @@
  * beside it (out_file.h). */
 #define _GNU_SOURCE
 #include "host-tools/opts/out_file.h"
+#include "host-tools/opts/exit_clean.h"
 
 #include <errno.h>
 #include <fcntl.h>
@@ -34,6 +35,16 @@ static int out_file_target_ok(const char *path, char *err, size_t cap)
     snprintf(err, cap, "%s is %s, not a regular file: not written through or replaced "
              "(remove it, or write elsewhere)", path, what);
     return -1;
+}
+
+/* The temporary file removed (or renamed away) and unregistered. */
+static void out_file_forget(struct out_file *o)
+{
+    if (o->tmp[0]) {
+        unlink(o->tmp);
+        exit_clean_drop(o->tmp);
+    }
+    o->tmp[0] = 0;
 }
 
 int out_file_check(const char *path, char *err, size_t cap)
@@ -77,7 +88,12 @@ int out_file_open(struct out_file *o, const char *path, char *err, size_t cap)
         snprintf(err, cap, "%s: path too long", path);
         return -1;
     }
+    sigset_t held;
+    exit_clean_hold(&held); /* made and registered before a signal can end us */
     int fd = mkostemp(o->tmp, O_CLOEXEC);
+    if (fd >= 0)
+        exit_clean_add(o->tmp, EXIT_CLEAN_FILE);
+    exit_clean_release(&held);
     if (fd < 0) {
         snprintf(err, cap, "%s: cannot make a temporary file beside it: %s", path,
                  strerror(errno));
@@ -89,8 +105,7 @@ int out_file_open(struct out_file *o, const char *path, char *err, size_t cap)
     if (fchmod(fd, 0666 & ~mask) != 0 || !(o->f = fdopen(fd, "wb"))) {
         snprintf(err, cap, "%s: %s", o->tmp, strerror(errno));
         close(fd);
-        unlink(o->tmp);
-        o->tmp[0] = 0;
+        out_file_forget(o);
         return -1;
     }
     return 0;
@@ -110,8 +125,7 @@ int out_file_commit(struct out_file *o, char *err, size_t cap)
     }
     o->f = NULL;
     if (ok && out_file_target_ok(o->path, err, cap) < 0) { /* changed meanwhile */
-        unlink(o->tmp);
-        o->tmp[0] = 0;
+        out_file_forget(o);
         return -1;
     }
     if (ok && rename(o->tmp, o->path) != 0) {
@@ -122,6 +136,7 @@ int out_file_commit(struct out_file *o, char *err, size_t cap)
         snprintf(err, cap, "%s: writing it failed: %s", o->path, strerror(saved));
         unlink(o->tmp);
     }
+    exit_clean_drop(o->tmp); /* removed, or renamed: OUT now */
     o->tmp[0] = 0;
     return ok ? 0 : -1;
 }
@@ -131,7 +146,36 @@ void out_file_abort(struct out_file *o)
     if (o->f)
         fclose(o->f);
     o->f = NULL;
-    if (o->tmp[0])
-        unlink(o->tmp);
-    o->tmp[0] = 0;
+    out_file_forget(o);
+}
+
+int out_file_copy(const char *from, const char *path, char *err, size_t cap)
+{
+    int in = open(from, O_RDONLY | O_NOFOLLOW | O_CLOEXEC);
+    struct stat st;
+    if (in < 0 || fstat(in, &st) != 0 || !S_ISREG(st.st_mode)) {
+        snprintf(err, cap, "%s: %s", from, in < 0 ? strerror(errno) : "not a regular file");
+        if (in >= 0)
+            close(in);
+        return -1;
+    }
+    struct out_file o;
+    if (out_file_open(&o, path, err, cap) != 0) {
+        close(in);
+        return -1;
+    }
+    char buf[65536];
+    ssize_t n;
+    while ((n = read(in, buf, sizeof buf)) > 0)
+        if (fwrite(buf, 1, (size_t)n, o.f) != (size_t)n)
+            break;
+    int failed = n != 0 || ferror(o.f);
+    int saved = errno;
+    close(in);
+    if (failed) {
+        snprintf(err, cap, "%s: copying %s: %s", path, from, strerror(saved));
+        out_file_abort(&o);
+        return -1;
+    }
+    return out_file_commit(&o, err, cap);
 }

@@ -37,4 +37,9 @@ int out_file_commit(struct out_file *o, char *err, size_t cap);
  * already committed. */
 void out_file_abort(struct out_file *o);
 
+/* The file at from (a regular file of the command's own, from one of its
+ * private directories; a link there is not followed) copied to OUT
+ * through out_file_open and out_file_commit.  0, or -1 with why in err. */
+int out_file_copy(const char *from, const char *path, char *err, size_t cap);
+
 #endif

@@ -15,6 +15,7 @@
 #include "host-tools/image/image_compare.h"
 #include "host-tools/image/image_io.h"
 #include "host-tools/opts/self_path.h"
+#include "host-tools/opts/exit_clean.h"
 #include "host-tools/opts/tmp_dir.h"
 #include "host-tools/ref/ref_program.h"
 #include "host-tools/scene/scene_desc.h"
@@ -131,7 +132,8 @@ static int auto_exec(char *const *argv, const char *log)
     if (pid < 0)
         return -1;
     if (pid == 0) {
-        int fd = open(log, O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        exit_clean_in_child(); /* it ends with us, even after SIGKILL */
+        int fd = open(log, O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC, 0600);
         if (fd >= 0) {
             dup2(fd, 1);
             dup2(fd, 2);
@@ -141,10 +143,14 @@ static int auto_exec(char *const *argv, const char *log)
         fprintf(stderr, "cannot run %s: %s\n", argv[0], strerror(errno));
         _exit(127);
     }
+    exit_clean_add_child(pid); /* a signal stops it (it cleans up after itself) */
     int st;
-    while (waitpid(pid, &st, 0) < 0)
-        if (errno != EINTR)
-            return -1;
+    pid_t r;
+    while ((r = waitpid(pid, &st, 0)) < 0 && errno == EINTR)
+        ;
+    exit_clean_drop_child(pid);
+    if (r < 0)
+        return -1;
     return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
 }
 
@@ -987,8 +993,8 @@ static void auto_cleanup(const char *tmp)
 int arith_auto_pick(const char *prog, const char *path, const struct arith_auto_opts *o,
                     struct arith_auto_choice *out)
 {
-    char tmp[] = "/tmp/links1-auto-XXXXXX";
-    if (!mkdtemp(tmp)) {
+    char tmp[PATH_MAX];
+    if (tmp_dir_make("auto", tmp, sizeof tmp) != 0) {
         fprintf(stderr, "%s: %s: a temporary directory: %s\n", prog, auto_name(o), strerror(errno));
         return -1;
     }

@@ -19,6 +19,7 @@
 #include "host-tools/image/film.h"
 #include "host-tools/image/image_io.h"
 #include "host-tools/opts/cli_args.h"
+#include "host-tools/opts/exit_clean.h"
 #include "host-tools/opts/out_file.h"
 #include "host-tools/image/image_save.h"
 #include "host-tools/scene/scene_desc.h"
@@ -403,6 +404,7 @@ static int ref_out_check(const struct ref_args *a)
 
 int main(int argc, char **argv)
 {
+    exit_clean_install(); /* a signal leaves no temporary file and no child of ours */
     struct ref_args a;
     int r = ref_parse(argc, argv, &a);
     if (r != 0)

@@ -91,6 +91,7 @@ test_model_child_LIBS = $(SCENE_TEXT_LIBS)
 # A model's texture paths: confined to its directory (or one the user
 # allows), regular files only, never a blocking read.
 HOST_TESTS += test_textures
-test_textures_SRCS = tests/host/test_textures.c $(SCENE_TEXT_SRCS) host-tools/opts/tmp_dir.c
+test_textures_SRCS = tests/host/test_textures.c $(SCENE_TEXT_SRCS) host-tools/opts/tmp_dir.c \
+	host-tools/opts/exit_clean.c
 test_textures_ARITH := double
 test_textures_LIBS = $(SCENE_TEXT_LIBS)

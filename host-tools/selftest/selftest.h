@@ -69,9 +69,9 @@ int selftest_result(struct board *b, uint16_t cmd, int timeout_ms, size_t min_fi
                     struct board_frame *r, const uint8_t **fields, char *why, size_t cap);
 
 /* The idle check needs the board started with the counting plugin's
- * series: sets o to write it to a new temporary file named in path (the
- * caller unlinks it).  Returns 0, or -1 after printing why. */
-int selftest_idle_prepare(struct board_opts *o, char *path, size_t cap);
+ * series: sets o to write it to path, a name in a private directory of
+ * the caller's that the plugin makes new (the caller removes it). */
+void selftest_idle_prepare(struct board_opts *o, const char *path);
 
 selftest_fn selftest_status, selftest_ping, selftest_imsu, selftest_stress,
     selftest_link_sink, selftest_link_source, selftest_fault, selftest_idle,

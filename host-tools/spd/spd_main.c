@@ -20,6 +20,7 @@
 
 #include "host-tools/opts/cli_args.h"
 #include "host-tools/opts/cli_opt.h"
+#include "host-tools/opts/exit_clean.h"
 #include "host-tools/opts/out_file.h"
 #include "host-tools/scene/nff_read.h"
 #include "host-tools/scene/scene_import.h"
@@ -206,6 +207,7 @@ static void spd_say(const struct spd_opts *o, const struct spd_made *m)
 
 int main(int argc, char **argv)
 {
+    exit_clean_install(); /* a signal leaves no temporary file */
     struct spd_opts o = {NULL, 0, NULL, 512, 512};
     int r = spd_parse(argc, argv, &o);
     if (r != 0)

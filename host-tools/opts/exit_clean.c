@@ -1,0 +1,260 @@
+/* exit_clean.c: temporary files and children cleaned up when a signal ends
+ * the program (exit_clean.h).  The registry is static arrays whose slots
+ * are claimed and freed with atomic operations, so the handler, whichever
+ * thread it runs on, sees a slot either whole or not at all; the handler
+ * itself calls only async-signal-safe functions (kill, waitpid, nanosleep,
+ * unlink, unlinkat, openat, the getdents64 system call, close, sigaction,
+ * sigprocmask, raise). */
+#define _GNU_SOURCE
+#include "host-tools/opts/exit_clean.h"
+
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <stdint.h>
+#include <string.h>
+#include <sys/prctl.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
+#include <time.h>
+#include <unistd.h>
+
+#define EXIT_CLEAN_DEPTH 8          /* deeper than any directory a command makes */
+#define EXIT_CLEAN_DENTS 4096       /* bytes of directory entries read at a time */
+#define EXIT_CLEAN_PASSES 16        /* re-reads of a directory still not empty */
+#define EXIT_CLEAN_POLL_MS 10
+
+enum ec_slot { EC_FREE, EC_READY, EC_FILLING };
+
+struct ec_path {
+    int state; /* enum ec_slot, atomically */
+    enum exit_clean_kind kind;
+    char path[PATH_MAX];
+};
+
+static struct ec_path ec_paths[EXIT_CLEAN_MAX_PATHS];
+static pid_t ec_children[EXIT_CLEAN_MAX_CHILDREN]; /* 0: free; atomically */
+static pid_t ec_owner;                             /* the process that installed */
+static int ec_busy;                                /* a handler is cleaning */
+static const int ec_signals[] = {SIGINT, SIGTERM, SIGHUP};
+#define EC_NSIGNALS (int)(sizeof ec_signals / sizeof ec_signals[0])
+static int ec_ignored[EC_NSIGNALS]; /* ignored when the program started */
+
+/* The entries of a directory found in a getdents64 buffer. */
+struct ec_dirent64 {
+    uint64_t d_ino;
+    int64_t d_off;
+    unsigned short d_reclen;
+    unsigned char d_type;
+    char d_name[];
+};
+static char ec_dents[EXIT_CLEAN_DEPTH][EXIT_CLEAN_DENTS];
+
+/* Removes one entry of the directory open as dfd: 1 when removed. */
+static int ec_remove_entry(int dfd, const char *name, int depth);
+
+/* Empties the directory open as dfd, re-reading it while a pass removes
+ * something (removal under getdents may skip an entry). */
+static void ec_empty(int dfd, int depth)
+{
+    for (int pass = 0; pass < EXIT_CLEAN_PASSES; pass++) {
+        int removed = 0, left = 0;
+        long n;
+        lseek(dfd, 0, SEEK_SET);
+        while ((n = syscall(SYS_getdents64, dfd, ec_dents[depth], EXIT_CLEAN_DENTS)) > 0) {
+            for (long off = 0; off < n;) {
+                struct ec_dirent64 *d = (struct ec_dirent64 *)(ec_dents[depth] + off);
+                if (d->d_reclen == 0 || off + d->d_reclen > n)
+                    break;
+                off += d->d_reclen;
+                const char *name = d->d_name;
+                if (name[0] == '.' && (!name[1] || (name[1] == '.' && !name[2])))
+                    continue;
+                if (ec_remove_entry(dfd, name, depth))
+                    removed++;
+                else
+                    left++;
+            }
+        }
+        if (!left || !removed)
+            return;
+    }
+}
+
+static int ec_remove_entry(int dfd, const char *name, int depth)
+{
+    if (unlinkat(dfd, name, 0) == 0)
+        return 1;
+    if (errno != EISDIR || depth + 1 >= EXIT_CLEAN_DEPTH)
+        return 0;
+    int sub = openat(dfd, name, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (sub >= 0) {
+        ec_empty(sub, depth + 1);
+        close(sub);
+    }
+    return unlinkat(dfd, name, AT_REMOVEDIR) == 0;
+}
+
+static void ec_remove_dir(const char *path)
+{
+    int dfd = open(path, O_RDONLY | O_DIRECTORY | O_NOFOLLOW | O_CLOEXEC);
+    if (dfd < 0)
+        return;
+    ec_empty(dfd, 0);
+    close(dfd);
+    rmdir(path);
+}
+
+static void ec_sleep_ms(long ms)
+{
+    struct timespec t = {0, ms * 1000000L};
+    nanosleep(&t, NULL);
+}
+
+/* Every registered child sent SIGTERM and waited for, up to
+ * EXIT_CLEAN_CHILD_WAIT_MS; then SIGKILL. */
+static void ec_stop_children(void)
+{
+    static pid_t left[EXIT_CLEAN_MAX_CHILDREN];
+    int nleft = 0;
+    for (int i = 0; i < EXIT_CLEAN_MAX_CHILDREN; i++) {
+        pid_t pid = __atomic_load_n(&ec_children[i], __ATOMIC_SEQ_CST);
+        if (pid > 0 && kill(pid, SIGTERM) == 0)
+            left[nleft++] = pid;
+    }
+    for (long waited = 0; nleft > 0 && waited < EXIT_CLEAN_CHILD_WAIT_MS;
+         waited += EXIT_CLEAN_POLL_MS) {
+        for (int i = 0; i < nleft;) {
+            pid_t r = waitpid(left[i], NULL, WNOHANG);
+            if (r == left[i] || (r < 0 && errno == ECHILD))
+                left[i] = left[--nleft];
+            else
+                i++;
+        }
+        if (nleft)
+            ec_sleep_ms(EXIT_CLEAN_POLL_MS);
+    }
+    for (int i = 0; i < nleft; i++) {
+        kill(left[i], SIGKILL);
+        waitpid(left[i], NULL, 0);
+    }
+}
+
+static void ec_handler(int sig)
+{
+    if (getpid() == ec_owner && !__atomic_exchange_n(&ec_busy, 1, __ATOMIC_SEQ_CST)) {
+        ec_stop_children(); /* first: a child may still be writing a file below */
+        for (int i = 0; i < EXIT_CLEAN_MAX_PATHS; i++) {
+            if (__atomic_load_n(&ec_paths[i].state, __ATOMIC_SEQ_CST) != EC_READY)
+                continue;
+            if (ec_paths[i].kind == EXIT_CLEAN_DIR)
+                ec_remove_dir(ec_paths[i].path);
+            else
+                unlink(ec_paths[i].path);
+        }
+    } else if (getpid() == ec_owner) {
+        return; /* another thread is cleaning, and then dies of its signal */
+    }
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = SIG_DFL;
+    sigaction(sig, &sa, NULL);
+    sigset_t one;
+    sigemptyset(&one);
+    sigaddset(&one, sig);
+    raise(sig);
+    sigprocmask(SIG_UNBLOCK, &one, NULL); /* delivered here: the default action */
+    _exit(128 + sig);                     /* not reached */
+}
+
+void exit_clean_install(void)
+{
+    ec_owner = getpid();
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = ec_handler;
+    sigemptyset(&sa.sa_mask);
+    for (int i = 0; i < EC_NSIGNALS; i++)
+        sigaddset(&sa.sa_mask, ec_signals[i]); /* one handler at a time per thread */
+    for (int i = 0; i < EC_NSIGNALS; i++) {
+        struct sigaction old;
+        if (sigaction(ec_signals[i], NULL, &old) == 0 && old.sa_handler == SIG_IGN) {
+            ec_ignored[i] = 1;
+            continue;
+        }
+        sigaction(ec_signals[i], &sa, NULL);
+    }
+}
+
+int exit_clean_add(const char *path, enum exit_clean_kind kind)
+{
+    size_t n = strlen(path);
+    if (n >= PATH_MAX)
+        return -1;
+    for (int i = 0; i < EXIT_CLEAN_MAX_PATHS; i++) {
+        int expect = EC_FREE;
+        if (!__atomic_compare_exchange_n(&ec_paths[i].state, &expect, EC_FILLING, 0,
+                                         __ATOMIC_SEQ_CST, __ATOMIC_SEQ_CST))
+            continue;
+        memcpy(ec_paths[i].path, path, n + 1);
+        ec_paths[i].kind = kind;
+        __atomic_store_n(&ec_paths[i].state, EC_READY, __ATOMIC_SEQ_CST);
+        return 0;
+    }
+    return -1;
+}
+
+void exit_clean_drop(const char *path)
+{
+    for (int i = 0; i < EXIT_CLEAN_MAX_PATHS; i++) {
+        if (__atomic_load_n(&ec_paths[i].state, __ATOMIC_SEQ_CST) == EC_READY &&
+            strcmp(ec_paths[i].path, path) == 0) {
+            __atomic_store_n(&ec_paths[i].state, EC_FREE, __ATOMIC_SEQ_CST);
+            return;
+        }
+    }
+}
+
+void exit_clean_add_child(pid_t pid)
+{
+    for (int i = 0; pid > 0 && i < EXIT_CLEAN_MAX_CHILDREN; i++) {
+        pid_t expect = 0;
+        if (__atomic_compare_exchange_n(&ec_children[i], &expect, pid, 0, __ATOMIC_SEQ_CST,
+                                        __ATOMIC_SEQ_CST))
+            return;
+    }
+}
+
+void exit_clean_drop_child(pid_t pid)
+{
+    for (int i = 0; pid > 0 && i < EXIT_CLEAN_MAX_CHILDREN; i++) {
+        pid_t expect = pid;
+        if (__atomic_compare_exchange_n(&ec_children[i], &expect, 0, 0, __ATOMIC_SEQ_CST,
+                                        __ATOMIC_SEQ_CST))
+            return;
+    }
+}
+
+void exit_clean_in_child(void)
+{
+    for (int i = 0; i < EC_NSIGNALS; i++)
+        if (!ec_ignored[i])
+            signal(ec_signals[i], SIG_DFL);
+    prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (ec_owner && getppid() != ec_owner)
+        _exit(1); /* the parent died before the line above */
+}
+
+void exit_clean_hold(sigset_t *old)
+{
+    sigset_t set;
+    sigemptyset(&set);
+    for (int i = 0; i < EC_NSIGNALS; i++)
+        sigaddset(&set, ec_signals[i]);
+    sigprocmask(SIG_BLOCK, &set, old);
+}
+
+void exit_clean_release(const sigset_t *old)
+{
+    sigprocmask(SIG_SETMASK, old, NULL);
+}

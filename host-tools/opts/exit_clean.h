@@ -1,0 +1,54 @@
+/* exit_clean.h: what a program leaves when SIGINT, SIGTERM or SIGHUP ends
+ * it: nothing.  Each program's main installs the handlers once; whatever
+ * makes a temporary file or directory, or starts a child, registers it
+ * here and drops it once it is gone.  The handler (async-signal-safe work
+ * only) sends SIGTERM to every registered child and waits for them a few
+ * seconds (SIGKILL after that), removes every registered path (a
+ * directory with everything under it, never following a link), then
+ * dies of the same signal with its default action, so a shell sees
+ * 128 + N.  A child of this program that has not exec'ed yet runs the
+ * default action (the registry is its parent's).  Nothing can clean up
+ * after SIGKILL: the children go too (exit_clean_in_child: the
+ * parent-death signal), and tmp_dir_make's directories are swept by a
+ * later run (tmp_dir.h). */
+#ifndef LINKS1_HOST_OPTS_EXIT_CLEAN_H
+#define LINKS1_HOST_OPTS_EXIT_CLEAN_H
+
+#include <signal.h>
+#include <sys/types.h>
+
+#define EXIT_CLEAN_MAX_PATHS 32
+#define EXIT_CLEAN_MAX_CHILDREN 48      /* an an521 run's 33 QEMUs, ffmpeg, ... */
+#define EXIT_CLEAN_CHILD_WAIT_MS 5000   /* a child's own clean-up (a links1 render's) */
+
+enum exit_clean_kind {
+    EXIT_CLEAN_FILE, /* unlinked */
+    EXIT_CLEAN_DIR,  /* removed with everything under it */
+};
+
+/* The handlers for SIGINT, SIGTERM and SIGHUP (a signal ignored when the
+ * program started, e.g. SIGHUP under nohup, stays ignored). */
+void exit_clean_install(void);
+
+/* path removed if a signal ends the program.  0, or -1 (the registry is
+ * full or path too long: it is then only not cleaned on a signal). */
+int exit_clean_add(const char *path, enum exit_clean_kind kind);
+/* path no longer removed on a signal (call after removing it). */
+void exit_clean_drop(const char *path);
+
+/* pid sent SIGTERM (and waited for) if a signal ends the program. */
+void exit_clean_add_child(pid_t pid);
+void exit_clean_drop_child(pid_t pid);
+
+/* In a child of the program (the process that called exit_clean_install)
+ * right after fork: the handlers back to the default, SIGTERM when the
+ * parent dies (PR_SET_PDEATHSIG), and _exit(1) at once when it died
+ * already (getppid() is not the program). */
+void exit_clean_in_child(void);
+
+/* The three signals held (between making a file and registering it) and
+ * let go again. */
+void exit_clean_hold(sigset_t *old);
+void exit_clean_release(const sigset_t *old);
+
+#endif

@@ -1,0 +1,200 @@
+/* Host tests of what a signal leaves (host-tools/opts/exit_clean.c): a
+ * program that installed the handlers and registered a private directory
+ * (with files, a subdirectory and a link to a file outside it), an
+ * out_file's temporary file and a child, then gets SIGINT, SIGTERM or
+ * SIGHUP: it dies of that signal, the directory and the temporary file are
+ * gone, the link's target is untouched and the child has ended; a
+ * directory unregistered stays; a child the program forks (not exec'ed)
+ * that gets the signal just dies, leaving its parent's files; stale
+ * links1-WHAT-PID-* directories of a dead process are swept by the next
+ * tmp_dir_make, a live process's are not. */
+#define _GNU_SOURCE
+#include <errno.h>
+#include <fcntl.h>
+#include <limits.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "host-tools/opts/exit_clean.h"
+#include "host-tools/opts/out_file.h"
+#include "host-tools/opts/tmp_dir.h"
+#include "tests/check.h"
+
+static char base[64];     /* the test's own directory: TMPDIR */
+static char outside[128]; /* a file the planted link points at */
+
+static int exists(const char *path)
+{
+    struct stat st;
+    return lstat(path, &st) == 0;
+}
+
+/* What the child reports through the pipe: its private dir, the out_file's
+ * temporary file, its own child's pid, and a kept directory. */
+struct report {
+    char dir[PATH_MAX], tmp[PATH_MAX], kept[PATH_MAX];
+    pid_t grandchild;
+};
+
+static void child_side(int fd, int keep_one)
+{
+    signal(SIGINT, SIG_DFL); /* a test run in the background has SIGINT ignored */
+    signal(SIGHUP, SIG_DFL);
+    exit_clean_install();
+    struct report r;
+    memset(&r, 0, sizeof r);
+    char err[256], p[PATH_MAX + 32];
+    if (tmp_dir_make("test", r.dir, sizeof r.dir) != 0)
+        _exit(2);
+    snprintf(p, sizeof p, "%s/a", r.dir);
+    close(open(p, O_WRONLY | O_CREAT, 0600));
+    snprintf(p, sizeof p, "%s/sub", r.dir);
+    mkdir(p, 0700);
+    snprintf(p, sizeof p, "%s/sub/b", r.dir);
+    close(open(p, O_WRONLY | O_CREAT, 0600));
+    snprintf(p, sizeof p, "%s/sub/link", r.dir);
+    if (symlink(outside, p) != 0)
+        _exit(2);
+    if (keep_one) { /* made and dropped: not removed by the signal */
+        if (tmp_dir_make("kept", r.kept, sizeof r.kept) != 0)
+            _exit(2);
+        exit_clean_drop(r.kept);
+    }
+    struct out_file o;
+    snprintf(p, sizeof p, "%s/out.txt", base);
+    if (out_file_open(&o, p, err, sizeof err) != 0)
+        _exit(2);
+    snprintf(r.tmp, sizeof r.tmp, "%s", o.tmp);
+    pid_t g = fork();
+    if (g == 0) {
+        exit_clean_in_child();
+        execlp("sleep", "sleep", "30", (char *)NULL);
+        _exit(127);
+    }
+    exit_clean_add_child(g);
+    r.grandchild = g;
+    if (write(fd, &r, sizeof r) != (ssize_t)sizeof r)
+        _exit(2);
+    close(fd);
+    for (;;)
+        pause();
+}
+
+/* Runs child_side, sends sig once it has reported; its wait status. */
+static int run_child(int sig, int keep_one, struct report *r)
+{
+    int fds[2];
+    if (pipe(fds) != 0)
+        return -1;
+    pid_t pid = fork();
+    if (pid == 0) {
+        close(fds[0]);
+        child_side(fds[1], keep_one);
+    }
+    close(fds[1]);
+    ssize_t n = read(fds[0], r, sizeof *r);
+    close(fds[0]);
+    if (n != (ssize_t)sizeof *r) {
+        kill(pid, SIGKILL);
+        waitpid(pid, NULL, 0);
+        return -1;
+    }
+    kill(pid, sig);
+    int st = 0;
+    waitpid(pid, &st, 0);
+    return st;
+}
+
+static void check_signal(int sig, int keep_one)
+{
+    struct report r;
+    int st = run_child(sig, keep_one, &r);
+    CHECK(st != -1 && WIFSIGNALED(st) && WTERMSIG(st) == sig);
+    CHECK(!exists(r.dir));
+    CHECK(!exists(r.tmp));
+    CHECK(exists(outside)); /* the link removed, not followed */
+    CHECK(kill(r.grandchild, 0) != 0 && errno == ESRCH);
+    if (keep_one) {
+        CHECK(exists(r.kept));
+        tmp_dir_remove(r.kept);
+    }
+}
+
+static void exit_clean_sigterm_cleans(void) { check_signal(SIGTERM, 0); }
+static void exit_clean_sigint_cleans(void) { check_signal(SIGINT, 1); }
+static void exit_clean_sighup_cleans(void) { check_signal(SIGHUP, 0); }
+
+/* A forked child (no exec) that gets the signal dies of it and removes
+ * nothing of its parent's. */
+static void exit_clean_forked_child_leaves_parent(void)
+{
+    exit_clean_install();
+    char dir[PATH_MAX];
+    CHECK_EQ_INT(tmp_dir_make("parent", dir, sizeof dir), 0);
+    pid_t pid = fork();
+    if (pid == 0) {
+        raise(SIGTERM);
+        _exit(0);
+    }
+    int st = 0;
+    waitpid(pid, &st, 0);
+    CHECK(WIFSIGNALED(st) && WTERMSIG(st) == SIGTERM);
+    CHECK(exists(dir));
+    CHECK_EQ_INT(tmp_dir_remove(dir), 0);
+    CHECK(!exists(dir));
+}
+
+/* A dead process's links1-WHAT-PID-* swept; a live one's and a link kept. */
+static void exit_clean_stale_swept(void)
+{
+    pid_t dead = fork();
+    if (dead == 0)
+        _exit(0);
+    waitpid(dead, NULL, 0);
+    char stale[PATH_MAX], live[PATH_MAX], link[PATH_MAX], open_dir[PATH_MAX], fresh[PATH_MAX];
+    snprintf(stale, sizeof stale, "%s/links1-sweep-%d-abcdef", base, (int)dead);
+    snprintf(open_dir, sizeof open_dir, "%s/links1-sweep-%d-ghijkl", base, (int)dead);
+    snprintf(live, sizeof live, "%s/links1-sweep-%d-abcdef", base, (int)getppid());
+    snprintf(link, sizeof link, "%s/links1-sweep-%d-zzzzzz", base, (int)dead);
+    CHECK(mkdir(stale, 0700) == 0 && mkdir(live, 0700) == 0 && mkdir(open_dir, 0755) == 0);
+    CHECK(symlink(outside, link) == 0);
+    char f[PATH_MAX + 8];
+    snprintf(f, sizeof f, "%s/x", stale);
+    close(open(f, O_WRONLY | O_CREAT, 0600));
+    CHECK_EQ_INT(tmp_dir_make("sweep", fresh, sizeof fresh), 0);
+    CHECK(!exists(stale));
+    CHECK(exists(live));
+    CHECK(exists(open_dir)); /* open to others: not one of ours */
+    CHECK(exists(link) && exists(outside));
+    struct stat st;
+    CHECK(stat(fresh, &st) == 0 && (st.st_mode & 0777) == 0700 && st.st_uid == geteuid());
+    tmp_dir_remove(fresh);
+    rmdir(live);
+    rmdir(open_dir);
+    unlink(link);
+}
+
+int main(void)
+{
+    snprintf(base, sizeof base, "/tmp/links1-test-exit-clean.XXXXXX");
+    if (!mkdtemp(base)) {
+        perror("mkdtemp");
+        return 1;
+    }
+    setenv("TMPDIR", base, 1);
+    snprintf(outside, sizeof outside, "%s/outside.txt", base);
+    close(open(outside, O_WRONLY | O_CREAT, 0600));
+    RUN(exit_clean_sigterm_cleans);
+    RUN(exit_clean_sigint_cleans);
+    RUN(exit_clean_sighup_cleans);
+    RUN(exit_clean_forked_child_leaves_parent);
+    RUN(exit_clean_stale_swept);
+    unlink(outside);
+    tmp_dir_remove(base);
+    return check_exit();
+}
