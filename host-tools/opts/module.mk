@@ -18,7 +18,7 @@ test_out_file_ARITH := double
 # A file or directory only you (or root) can change (private_path.c).
 HOST_TESTS += test_private_path
 test_private_path_SRCS := tests/host/test_private_path.c host-tools/opts/private_path.c \
-	host-tools/opts/tmp_dir.c
+	host-tools/opts/tmp_dir.c host-tools/opts/exit_clean.c
 test_private_path_ARITH := double
 # Every writer of -o through it, against a FIFO, a link or a directory at OUT.
 BOARD_TESTS += tests/images/out_files.sh
