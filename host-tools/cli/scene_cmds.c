@@ -202,164 +202,163 @@ int scene_cmd_export_pov(int argc, char **argv)
     return 0;
 }
 
-static const struct option ref_cmd_options[] = {
-    REF_LONG_OPTIONS,
-    {"arith", required_argument, NULL, REF_OPT_ARITH},
-    {"fpu", required_argument, NULL, REF_OPT_FPU},
-    {"target-db", required_argument, NULL, REF_OPT_TARGET_DB},
-    {"auto", no_argument, NULL, REF_OPT_AUTO},
-    {NULL, 0, NULL, 0},
+/* What links1 ref's command line asks for. */
+struct ref_cmd {
+    const char *arith;        /* --arith (default double) */
+    int arith_given, model;   /* --arith given; --auto */
+    int fpu;                  /* --fpu: 1 vfp, 0 none, -1 not given */
+    double target;            /* --target-db, -1 not given */
+    const char *scene;        /* the first operand */
+    long first;               /* --frame or --frames' first: the pre-render's frame */
+    struct scene_file_opts so; /* the scene options, for the pre-render */
+    char **args;              /* links1-ref-<build>'s arguments, args[0] left for it */
+    int nargs;
 };
 
-/* links1 ref: runs links1-ref-<arith> from the directory of this program
- * with every argument but --arith A (ref_main.c checks their values);
- * --arith auto first chooses the build (arith_auto.c). */
-int scene_cmd_ref(int argc, char **argv)
+/* One option of links1 ref's own: 0, or -1 after saying why.  *pass is
+ * set when the option goes on to links1-ref-<build>. */
+static int ref_cmd_take(struct ref_cmd *r, struct cli *c, int code, int *pass)
 {
-    const char *arith = "double", *model_word = NULL; /* an option --auto chooses */
-    int model = 0, arith_given = 0;
-    char **args = calloc((size_t)argc + 8, sizeof *args);
-    const char **words = calloc((size_t)argc + 4, sizeof *words); /* the pre-render's */
-    if (!args || !words) {
-        fprintf(stderr, "links1 ref: out of memory\n");
-        free(args);
-        free(words);
-        return 1;
+    long last;
+    *pass = 0;
+    switch (code) {
+    case REF_OPT_ARITH: r->arith = c->arg; r->arith_given = 1; return 0;
+    case REF_OPT_AUTO: r->model = 1; return 0;
+    case REF_OPT_FPU:
+        return (r->fpu = arith_auto_fpu(c->arg)) < 0 ? cli_bad_value(c, "vfp or none") : 0;
+    case REF_OPT_TARGET_DB: return cli_double(c, 0, 1, 99, NULL, &r->target);
+    case REF_OPT_FRAME:
+    case REF_OPT_FRAMES:
+        cli_parse_frames(c->arg, &r->first, &last); /* links1-ref checks the value */
+        break;
+    case CLI_OPERAND:
+        r->scene = r->scene ? r->scene : c->arg;
+        break;
     }
-    int n = 1, nw = 0, fpu = -1, bad = 0;
-    double target = -1;
-    struct arith_auto_opts ao = {.fpu = 1, .target_db = ARITH_AUTO_TARGET_DB,
-                                 .target = ARITH_AUTO_HOST};
-    const char *scene = NULL;
-    char first[24];
+    *pass = 1;
+    int scene = scene_opts_take(&r->so, c, code);
+    return scene < 0 ? -1 : 0;
+}
+
+/* The command line read into r.  0, 1 (--help shown) or -1 (said). */
+static int ref_cmd_parse(struct ref_cmd *r, int argc, char **argv)
+{
+    static const struct cli_optdef *const lists[] = {ref_optdefs, scene_optdefs,
+                                                     ref_cmd_optdefs, NULL};
+    struct option longs[REF_MAX_OPTIONS];
+    if (cli_optdefs_table(lists, longs, REF_MAX_OPTIONS) != 0)
+        return -1;
     struct cli c;
-    cli_init(&c, "links1 ref", argc, argv, REF_SHORT_OPTIONS, ref_cmd_options);
-    for (int from = 1, code; !bad && (code = cli_next(&c)) != -1; from = optind) {
-        long f0, f1;
-        switch (code) {
-        case CLI_BAD:
-            bad = 1;
-            continue;
-        case REF_OPT_ARITH:
-            arith = c.arg;
-            arith_given = 1;
-            continue;
-        case REF_OPT_AUTO:
-            model = 1;
-            continue;
-        case REF_OPT_FPU:
-            if ((fpu = arith_auto_fpu(c.arg)) < 0)
-                bad = cli_bad_value(&c, "vfp or none") < 0;
-            continue;
-        case REF_OPT_TARGET_DB:
-            bad = cli_double(&c, 0, 1, 99, NULL, &target) < 0;
-            continue;
-        case CLI_OPERAND:
-            scene = scene ? scene : c.arg;
-            break;
-        case REF_OPT_SIZE:
-            cli_parse_size(c.arg, &ao.width, &ao.height); /* ref_main.c reports bad ones */
-            break;
-        case REF_OPT_FRAMES: /* the pre-render: the first frame */
-            if (cli_parse_frames(c.arg, &f0, &f1) == 0) {
-                snprintf(first, sizeof first, "%ld", f0);
-                words[nw++] = "--frame";
-                words[nw++] = first;
-            }
-            break;
-        case REF_OPT_MIN_WEIGHT:
-        case REF_OPT_DENSITY_STEPS:
-        case REF_OPT_PAPER:
-            model_word = argv[from];
-            /* fall through */
-        case REF_OPT_MAX_DEPTH:
-        case REF_OPT_REFRACTION:
-        case REF_OPT_REFRACTIONLESS:
-        case REF_OPT_NO_AUTO_HIERARCHY:
-        case REF_OPT_TEXTURES_FROM:
-        case REF_OPT_FRAME:
-            for (int k = from; k < optind; k++)
-                words[nw++] = argv[k];
-            break;
-        }
-        /* the words of this option, as written (a "--" before an operand too) */
-        for (int k = from; k < optind; k++)
-            args[n++] = argv[k];
-    }
-    args[n] = NULL;
-    words[nw] = NULL;
-    if (!bad && model && (arith_given || model_word)) {
-        fprintf(stderr, "links1 ref: --auto chooses the arithmetic, min_weight and density "
-                "steps, so it takes no %s (--arith auto chooses the arithmetic alone)\n",
-                arith_given ? "--arith" : model_word);
-        bad = 1;
-    }
-    if (model)
-        arith = "auto";
-    int is_auto = strcmp(arith, "auto") == 0;
-    if (!bad && !is_auto && (fpu >= 0 || target >= 0)) {
-        fprintf(stderr, "links1 ref: --fpu and --target-db go with --arith auto (or --auto)\n");
-        bad = 1;
-    }
-    if (bad) {
-        fprintf(stderr, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [options] "
-                        "(links1 ref --help)\n");
-        free(args);
-        free(words);
-        return 2;
-    }
-    struct arith_auto_choice pick;
-    if (is_auto && scene) {
-        ao.fpu = fpu < 0 ? 1 : fpu;
-        ao.target_db = target < 0 ? ARITH_AUTO_TARGET_DB : target;
-        ao.words = words;
-        ao.model = model;
-        if (arith_auto_pick("links1 ref", scene, &ao, &pick) != 0) {
-            free(args);
-            free(words);
+    cli_init(&c, "links1 ref", argc, argv, REF_SHORT_OPTIONS, longs);
+    for (int from = 1, code; (code = cli_next(&c)) != -1; from = optind) {
+        int pass;
+        if (code == 'h') {
+            ref_opts_usage(stdout, 1);
             return 1;
         }
-        arith = pick.build;
-        if (pick.escalate)
-            args[n++] = "--escalate";
+        if (code == CLI_BAD || ref_cmd_take(r, &c, code, &pass) != 0)
+            return -1;
+        /* the words of this option, as written (a "--" before an operand too) */
+        for (int k = from; pass && k < optind; k++)
+            r->args[r->nargs++] = argv[k];
     }
-    char steps[16], weight[40]; /* --auto's model, after the words given */
-    if (is_auto && scene && pick.density_steps >= 0) {
-        snprintf(steps, sizeof steps, "%d", pick.density_steps);
-        args[n++] = "--density-steps";
-        args[n++] = steps;
+    const char *model_word = r->so.min_weight >= 0 ? "--min-weight"
+                             : r->so.density_steps >= 0 ? "--density-steps"
+                             : r->so.paper ? "--paper" : NULL;
+    if (r->model && (r->arith_given || model_word))
+        return cli_usage_error("links1 ref", "--auto chooses the arithmetic, min_weight and "
+                               "density steps, so it takes no %s (--arith auto chooses the "
+                               "arithmetic alone)", r->arith_given ? "--arith" : model_word);
+    if (r->model)
+        r->arith = "auto";
+    if (strcmp(r->arith, "auto") != 0 && (r->fpu >= 0 || r->target >= 0))
+        return cli_usage_error("links1 ref", "--fpu and --target-db go with --arith auto (or "
+                               "--auto)");
+    return 0;
+}
+
+/* --arith auto or --auto: the build chosen, and what it adds to the
+ * arguments.  0, or -1 after saying why. */
+static int ref_cmd_auto(struct ref_cmd *r, struct arith_auto_choice *pick, char steps[16],
+                        char weight[40])
+{
+    struct arith_auto_words w;
+    arith_auto_scene_words(&r->so, r->first, &w);
+    struct arith_auto_opts ao = {.fpu = r->fpu < 0 ? 1 : r->fpu,
+                                 .target_db = r->target < 0 ? ARITH_AUTO_TARGET_DB : r->target,
+                                 .target = ARITH_AUTO_HOST, .width = r->so.width,
+                                 .height = r->so.height, .words = w.words, .model = r->model};
+    if (arith_auto_pick("links1 ref", r->scene, &ao, pick) != 0)
+        return -1;
+    r->arith = pick->build;
+    if (pick->escalate)
+        r->args[r->nargs++] = "--escalate";
+    if (pick->density_steps >= 0) { /* --auto's model, after the words given */
+        snprintf(steps, 16, "%d", pick->density_steps);
+        r->args[r->nargs++] = "--density-steps";
+        r->args[r->nargs++] = steps;
     }
-    if (is_auto && scene && pick.min_weight >= 0) {
-        snprintf(weight, sizeof weight, "%.17g", pick.min_weight);
-        args[n++] = "--min-weight";
-        args[n++] = weight;
+    if (pick->min_weight >= 0) {
+        snprintf(weight, 40, "%.17g", pick->min_weight);
+        r->args[r->nargs++] = "--min-weight";
+        r->args[r->nargs++] = weight;
     }
-    args[n] = NULL;
-    free(words);
-    const char *build = arith;
-    int arith_code = is_auto ? ARITH_FIXED : arith_from_name(arith); /* a build, by name */
-    if (is_auto && !scene) {
-        build = "double"; /* it says what is missing */
-    } else if (arith_code == ARITH_SOFT) {
+    return 0;
+}
+
+/* The build links1-ref-<build> that runs r's arithmetic: 0, 1 (failed,
+ * said) or 2 (a usage error, said). */
+static int ref_cmd_build(const struct ref_cmd *r, const char **build)
+{
+    int is_auto = strcmp(r->arith, "auto") == 0;
+    int code = is_auto ? ARITH_FIXED : arith_from_name(r->arith); /* a build, by name */
+    *build = r->arith;
+    if (is_auto) {
+        *build = "double"; /* no scene: it says what is missing */
+    } else if (code == ARITH_SOFT) {
         /* Software float differs from hardware float only in who executes
          * the IEEE operations; on the host both are the float build. */
         fprintf(stderr, "links1 ref: --arith soft on the host is the float build\n");
-        build = "float";
-    } else if (arith_code < 0) {
-        fprintf(stderr, "links1 ref: --arith '%s': want double, float, soft, fixed or auto\n",
-                arith);
-        free(args);
+        *build = "float";
+    } else if (code < 0) {
+        cli_usage_error("links1 ref", "--arith '%s': want double, float, soft, fixed or auto",
+                        r->arith);
         return 2;
     }
-    char prog[PATH_MAX + 32];
-    if (ref_program_path(build, prog, sizeof prog) != 0) {
-        free(args);
+    return 0;
+}
+
+/* links1 ref: runs links1-ref-<arith> from the directory of this program
+ * with every argument but the build-choosing ones (ref_main.c reads them
+ * again); --arith auto and --auto first choose the build (arith_auto.c). */
+int scene_cmd_ref(int argc, char **argv)
+{
+    struct ref_cmd r = {.arith = "double", .fpu = -1, .target = -1};
+    scene_file_opts_init(&r.so);
+    r.args = calloc((size_t)argc + 8, sizeof *r.args);
+    if (!r.args) {
+        fprintf(stderr, "links1 ref: out of memory\n");
         return 1;
     }
-    args[0] = prog;
-    execv(prog, args);
-    fprintf(stderr, "links1 ref: cannot run %s: %s (build it with make)\n", prog,
-            strerror(errno));
-    free(args);
-    return 1;
+    r.nargs = 1;
+    int rc = ref_cmd_parse(&r, argc, argv);
+    struct arith_auto_choice pick;
+    char steps[16], weight[40], prog[PATH_MAX + 32];
+    const char *build = NULL;
+    if (rc == 0 && strcmp(r.arith, "auto") == 0 && r.scene)
+        rc = ref_cmd_auto(&r, &pick, steps, weight) == 0 ? 0 : 3;
+    if (rc == 0)
+        rc = ref_cmd_build(&r, &build) == 0 ? 0 : 2;
+    if (rc == 0 && ref_program_path(build, prog, sizeof prog) != 0)
+        rc = 3;
+    if (rc == 0) {
+        r.args[0] = prog;
+        r.args[r.nargs] = NULL;
+        execv(prog, r.args);
+        fprintf(stderr, "links1 ref: cannot run %s: %s (build it with make)\n", prog,
+                strerror(errno));
+        rc = 3;
+    }
+    free(r.args);
+    return rc == 1 ? 0 : rc < 0 ? 2 : rc == 3 ? 1 : rc;
 }

@@ -1,10 +1,12 @@
 # host-tools/ref/: the host reference renderer (links1-ref-<arith>, one
 # executable per arithmetic of the shared renderer; `links1 ref --arith A`
 # runs the one asked for) and --arith auto's choice among them.
-HT_REF_AUTO_SRCS := host-tools/ref/arith_auto.c host-tools/ref/ref_program.c host-tools/scene/scene_opts.c
+HT_REF_AUTO_SRCS := host-tools/ref/arith_auto.c host-tools/ref/ref_program.c host-tools/ref/ref_opts.c \
+	host-tools/scene/scene_opts.c
 # (arith_auto.c reads render/render.h: built in the links1 tool's double)
 
-SCENE_REF_SRCS = host-tools/ref/ref_main.c host-tools/scene/scene_opts.c $(HT_OPTS_CLI_SRCS) \
+SCENE_REF_SRCS = host-tools/ref/ref_main.c host-tools/ref/ref_opts.c host-tools/scene/scene_opts.c \
+	$(HT_OPTS_CLI_SRCS) \
 	$(HT_IMAGE_FILM_SRCS) $(SCENE_TEXT_SRCS)
 HOST_TOOLS += links1-ref-double links1-ref-float links1-ref-fixed
 $(foreach a,double float fixed,$(eval links1-ref-$(a)_SRCS = $$(SCENE_REF_SRCS)))

@@ -24,6 +24,7 @@
 #include "host-tools/image/image_save.h"
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_file.h"
+#include "host-tools/scene/scene_opts.h"
 #include "host-tools/ref/ref_opts.h"
 #include "render/blob.h"
 #include "render/precision.h"
@@ -36,29 +37,7 @@
 
 static int ref_usage(FILE *out, int status)
 {
-    fprintf(out, "usage: links1 ref SCENE(.scn|.l1s) -o OUT.png [--arith double|float|soft|"
-                 "fixed|auto] [--ppm] [--size WxH] [--frame N | --frames FIRST:LAST]\n"
-                 "  [--no-auto-hierarchy] [--refraction on|off] [--refractionless on|off]\n"
-                 "  [--max-depth D] [--min-weight W] [--density-steps N]\n"
-                 "  [--mark-lost]  (paint pixels that lost precision magenta)\n"
-                 "  [--escalate]  (trace a pixel that lost precision again in double, as the\n"
-                 "  board's --escalate does; float and fixed)\n"
-                 "  [--check-lost]  (trace it again in double only to check it: it counts as\n"
-                 "  lost, and --mark-lost paints it, when double is more than 2/255 away)\n"
-                 "  [--world-space]  (prepare in world coordinates, as links1 render's)\n"
-                 "  [--paper]  (the scene's part of paper mode, as links1 render --paper)\n"
-                 "  [--textures-from DIR]  (a map's image may also come from below DIR; up to\n"
-                 "  %d; not / nor a directory directly under / nor your home directory)\n"
-                 "  an OUT ending in .mp4, .webm or .apng is one film of the frames, piped to\n"
-                 "  ffmpeg at %d a second (as links1 render does)\n"
-                 "  --arith auto [--fpu vfp|none] [--target-db D]: the cheapest arithmetic of a\n"
-                 "  unit computer with VFP (or none) that keeps D dB (default 40) against double,\n"
-                 "  judged from a low-resolution pre-render (docs/renderer.md)\n"
-                 "  --auto [--fpu vfp|none] [--target-db D]: the arithmetic, min_weight and\n"
-                 "  density steps together: the cheapest that keeps D dB against double at the\n"
-                 "  most accurate model, and which knob binds (docs/renderer.md, \"--auto\")\n"
-                 "  (this is the %s build)\n",
-            SD_TEXTURES_FROM_MAX, FILM_DEFAULT_FPS, NUM_NAME);
+    ref_opts_usage(out, 1);
     return status;
 }
 
@@ -277,11 +256,6 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     return rc;
 }
 
-static const struct option ref_options[] = {
-    REF_LONG_OPTIONS,
-    {NULL, 0, NULL, 0},
-};
-
 struct ref_args {
     const char *in, *out;
     int ppm, many, escalate;
@@ -289,99 +263,54 @@ struct ref_args {
     struct scene_file_opts scene;
 };
 
+/* One option of links1-ref's own (not a scene option): 0, or -1 (said). */
+static int ref_take(struct ref_args *a, const struct cli *c, int code)
+{
+    switch (code) {
+    case 'o': a->out = c->arg; return 0;
+    case REF_OPT_PPM: a->ppm = 1; return 0;
+    case REF_OPT_ESCALATE: a->escalate = 1; return 0;
+    case REF_OPT_FRAME:
+    case REF_OPT_FRAMES:
+        a->many = code == REF_OPT_FRAMES;
+        if (cli_parse_frames(c->arg, &a->first, &a->last) != 0 ||
+            (!a->many && a->first != a->last))
+            return cli_bad_value(c, a->many ? "FIRST:LAST" : "a frame number");
+        return 0;
+    case CLI_OPERAND:
+        if (!a->in) {
+            a->in = c->arg;
+            return 0;
+        }
+        return cli_usage_error(c->prog, "one scene at a time, not also '%s'", c->arg);
+    }
+    return -1;
+}
+
 /* 0, 1 (--help shown) or -1 (bad arguments, reported). */
 static int ref_parse(int argc, char **argv, struct ref_args *a)
 {
     memset(a, 0, sizeof *a);
     scene_file_opts_init(&a->scene);
-    struct cli c;
-    cli_init(&c, "links1 ref", argc, argv, REF_SHORT_OPTIONS, ref_options);
-    for (int code; (code = cli_next(&c)) != -1;) {
-        switch (code) {
-        case 'o':
-            a->out = c.arg;
-            break;
-        case 'h':
-            return 1;
-        case REF_OPT_PPM:
-            a->ppm = 1;
-            break;
-        case REF_OPT_NO_AUTO_HIERARCHY:
-            a->scene.no_auto_hierarchy = 1;
-            break;
-        case REF_OPT_PAPER:
-            a->scene.paper = 1;
-            break;
-        case REF_OPT_ESCALATE:
-            a->escalate = 1;
-            break;
-        case REF_OPT_WORLD_SPACE:
-            a->scene.world_space = 1;
-            break;
-        case REF_OPT_CHECK_LOST:
-            a->escalate = 1; /* the wide copy, to check with */
-            a->scene.check_lost = 1;
-            break;
-        case REF_OPT_REFRACTION:
-            if (strcmp(c.arg, "on") != 0 && strcmp(c.arg, "off") != 0)
-                return cli_bad_value(&c, "on or off");
-            a->scene.refraction = strcmp(c.arg, "on") == 0;
-            break;
-        case REF_OPT_REFRACTIONLESS:
-            if (strcmp(c.arg, "on") != 0 && strcmp(c.arg, "off") != 0)
-                return cli_bad_value(&c, "on or off");
-            a->scene.refractionless = strcmp(c.arg, "on") == 0;
-            break;
-        case REF_OPT_MARK_LOST:
-            a->scene.mark_lost = 1;
-            break;
-        case REF_OPT_TEXTURES_FROM: {
-            char why[SD_ERR_MAX];
-            if (scene_file_textures_from(&a->scene, c.arg, why, sizeof why) != 0) {
-                fprintf(stderr, "links1 ref: %s\n", why);
-                return -1;
-            }
-            break;
-        }
-        case REF_OPT_MAX_DEPTH:
-            if (cli_int(&c, 0, SCN_MAX_DEPTH, &a->scene.max_depth) < 0)
-                return -1;
-            break;
-        case REF_OPT_MIN_WEIGHT:
-            if (cli_double(&c, 0, 0, 1, NULL, &a->scene.min_weight) < 0)
-                return -1;
-            break;
-        case REF_OPT_DENSITY_STEPS:
-            if (cli_int(&c, SCN_MIN_DENSITY_STEPS, SCN_MAX_DENSITY_STEPS,
-                        &a->scene.density_steps) < 0)
-                return -1;
-            break;
-        case REF_OPT_SIZE:
-            if (cli_parse_size(c.arg, &a->scene.width, &a->scene.height) != 0)
-                return cli_bad_value(&c, cli_size_want());
-            break;
-        case REF_OPT_FRAME:
-        case REF_OPT_FRAMES:
-            a->many = code == REF_OPT_FRAMES;
-            if (cli_parse_frames(c.arg, &a->first, &a->last) != 0 ||
-                (!a->many && a->first != a->last))
-                return cli_bad_value(&c, a->many ? "FIRST:LAST" : "a frame number");
-            break;
-        case CLI_OPERAND:
-            if (!a->in) {
-                a->in = c.arg;
-                break;
-            }
-            fprintf(stderr, "links1 ref: one scene at a time, not also '%s'\n", c.arg);
-            return -1;
-        default:
-            return -1;
-        }
-    }
-    if (!a->in || !a->out) {
-        fprintf(stderr, "links1 ref: %s\n", !a->in ? "no SCENE given" : "no -o OUT given");
+    static const struct cli_optdef *const lists[] = {ref_optdefs, scene_optdefs, NULL};
+    struct option longs[REF_MAX_OPTIONS];
+    if (cli_optdefs_table(lists, longs, REF_MAX_OPTIONS) != 0)
         return -1;
+    struct cli c;
+    cli_init(&c, "links1 ref", argc, argv, REF_SHORT_OPTIONS, longs);
+    for (int code; (code = cli_next(&c)) != -1;) {
+        if (code == 'h')
+            return 1;
+        int taken = code == CLI_BAD ? -1 : scene_opts_take(&a->scene, &c, code);
+        if (taken == 0)
+            taken = ref_take(a, &c, code) == 0 ? 1 : -1;
+        if (taken < 0)
+            return -1;
+        if (code == SCENE_OPT_CHECK_LOST)
+            a->escalate = 1; /* the wide copy, to check with */
     }
+    if (!a->in || !a->out)
+        return cli_usage_error("links1 ref", "%s", !a->in ? "no SCENE given" : "no -o OUT given");
     if (!a->ppm && scene_file_ends_with(a->out, ".ppm"))
         a->ppm = 1;
     return 0;
@@ -408,7 +337,7 @@ int main(int argc, char **argv)
     struct ref_args a;
     int r = ref_parse(argc, argv, &a);
     if (r != 0)
-        return r > 0 ? ref_usage(stdout, 0) : ref_usage(stderr, 2);
+        return r > 0 ? ref_usage(stdout, 0) : 2;
     if (ref_out_check(&a) != 0)
         return 1;
     const char *in = a.in, *out = a.out;
