@@ -7,62 +7,53 @@
 #include "host-tools/launcher/launcher.h"
 #include "host-tools/cli/links1_cmds.h"
 
+enum { BOARD_CMD_OPT_NAME = CLI_OWN_CODES };
+
+static const struct cli_optdef board_cmd_optdefs[] = {
+    {"name", "NAME", BOARD_CMD_OPT_NAME, "the board's name (default '" BOARD_DEFAULT_NAME "')"},
+    CLI_OPTDEF_END,
+};
+
 static void cmd_board_usage(FILE *out)
 {
-    fprintf(out, "usage: links1 board start [--ncs N] [--name NAME] [board options]\n"
+    fprintf(out, "usage: links1 board start [options]\n"
                  "       links1 board stop [NAME]\n"
                  "       links1 board list\n"
                  "       links1 board status [NAME]\n"
-                 "start boots a board that keeps running after this command (NAME default\n"
-                 "'%s'); `links1 render --board NAME ...` then renders on it, and stop\n"
-                 "shuts it down.  list shows the boards running, status one of them;\n"
-                 "start, stop, list and status report and remove the state of a board\n"
-                 "whose QEMU is gone.  With --machine an521 the board is a set of QEMUs\n"
-                 "(board 0: DM and RC; two NCs on each other board) joined by one shared\n"
-                 "file; list and status show each NC board, and stop ends them all.\n"
-                 "start options:\n"
-                 "  --ncs N          node computers (1..254, default %d; an521: even, 2..64)\n"
-                 "  --name NAME      the board's name\n%s",
-            BOARD_DEFAULT_NAME, BOARD_DEFAULT_CORES - 2, board_opts_usage);
+                 "start boots a board that keeps running after this command; `links1 render\n"
+                 "--board NAME ...` then renders on it, and stop shuts it down.  list shows\n"
+                 "the boards running, status one of them; each reports and removes the state\n"
+                 "of a board whose QEMU is gone.  With --machine an521 the board is a set of\n"
+                 "QEMUs; list and status show each NC board, and stop ends them all.\n"
+                 "start options:\n");
+    cli_optdefs_help(out, board_cmd_optdefs);
+    cli_optdefs_help(out, board_optdefs);
 }
-
-enum { BOARD_CMD_OPT_NCS = CLI_OWN_CODES, BOARD_CMD_OPT_NAME };
-
-static const struct option board_cmd_options[] = {
-    BOARD_LONG_OPTIONS,
-    {"ncs", required_argument, NULL, BOARD_CMD_OPT_NCS},
-    {"name", required_argument, NULL, BOARD_CMD_OPT_NAME},
-    {"help", no_argument, NULL, 'h'},
-    {NULL, 0, NULL, 0},
-};
 
 static int cmd_board_start(int argc, char **argv)
 {
     struct board_opts o;
     const char *name = BOARD_DEFAULT_NAME;
     board_opts_init(&o);
+    static const struct cli_optdef *const lists[] = {board_cmd_optdefs, board_optdefs, NULL};
+    struct option longs[32];
     struct cli c;
-    cli_init(&c, "links1 board start", argc, argv, "h", board_cmd_options);
+    if (cli_optdefs_table(lists, longs, 32) != 0)
+        return 2;
+    cli_init(&c, "links1 board start", argc, argv, "h", longs);
     for (int code; (code = cli_next(&c)) != -1;) {
-        int r = board_opt(&o, &c, code);
+        int r = code == CLI_BAD ? -1 : board_opt(&o, &c, code);
         if (r < 0)
             return 2;
         if (r)
             continue;
-        long n;
-        if (code == BOARD_CMD_OPT_NCS) {
-            if (cli_long(&c, 10, 1, UNITS_MAX_CORES - 2, &n) < 0)
-                return 2;
-            o.ncores = (int)n + 2;
-        } else if (code == BOARD_CMD_OPT_NAME) {
+        if (code == BOARD_CMD_OPT_NAME) {
             name = c.arg;
         } else if (code == 'h') {
             cmd_board_usage(stdout);
             return 0;
         } else {
-            if (code == CLI_OPERAND)
-                fprintf(stderr, "links1 board start: unexpected argument '%s'\n", c.arg);
-            cmd_board_usage(stderr);
+            cli_usage_error("links1 board start", "unexpected argument '%s'", c.arg);
             return 2;
         }
     }
@@ -85,9 +76,13 @@ static int cmd_board_start(int argc, char **argv)
 
 int cmd_board(int argc, char **argv)
 {
-    if (argc < 2 || strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
-        cmd_board_usage(argc < 2 ? stderr : stdout);
-        return argc < 2 ? 2 : 0;
+    if (argc < 2) {
+        cli_usage_error("links1 board", "start, stop, list or status?");
+        return 2;
+    }
+    if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0) {
+        cmd_board_usage(stdout);
+        return 0;
     }
     if (strcmp(argv[1], "start") == 0)
         return cmd_board_start(argc - 1, argv + 1);
@@ -97,7 +92,6 @@ int cmd_board(int argc, char **argv)
         return board_status_named(argc == 3 ? argv[2] : BOARD_DEFAULT_NAME) == 0 ? 0 : 1;
     if (strcmp(argv[1], "list") == 0 && argc == 2)
         return board_list_named() < 0 ? 1 : 0;
-    fprintf(stderr, "links1 board: unknown subcommand or extra arguments: '%s'\n", argv[1]);
-    cmd_board_usage(stderr);
+    cli_usage_error("links1 board", "unknown subcommand or extra arguments: '%s'", argv[1]);
     return 2;
 }

@@ -10,35 +10,37 @@
 #include "host-tools/cli/links1_cmds.h"
 #include "host-tools/opts/tmp_dir.h"
 
+enum { BOOT_OPT_COUNT_INSNS = CLI_OWN_CODES };
+
+static const struct cli_optdef boot_optdefs[] = {
+    {"count-insns", NULL, BOOT_OPT_COUNT_INSNS,
+     "count guest instructions per core (the TCG plugin insn-count.so\n"
+     "next to this program) and print them"},
+    CLI_OPTDEF_END,
+};
+
 static void cmd_boot_usage(FILE *out)
 {
     fprintf(out, "usage: links1 boot [options]\n"
                  "Boots the board, prints its log and every unit computer reporting in,\n"
-                 "then shuts it down.  Exits non-zero naming the cores that did not report.\n"
-                 "options:\n%s"
-                 "  --count-insns    count guest instructions per core (TCG plugin\n"
-                 "                   insn-count.so next to this program) and print them\n",
-                 board_opts_usage);
+                 "then shuts it down.  Exits non-zero naming the cores that did not report.\n");
+    cli_optdefs_help(out, board_optdefs);
+    cli_optdefs_help(out, boot_optdefs);
 }
-
-enum { BOOT_OPT_COUNT_INSNS = CLI_OWN_CODES };
-
-static const struct option boot_options[] = {
-    BOARD_LONG_OPTIONS,
-    {"count-insns", no_argument, NULL, BOOT_OPT_COUNT_INSNS},
-    {"help", no_argument, NULL, 'h'},
-    {NULL, 0, NULL, 0},
-};
 
 int cmd_boot(int argc, char **argv)
 {
     struct board_opts o;
     int count_insns = 0;
     board_opts_init(&o);
+    static const struct cli_optdef *const lists[] = {board_optdefs, boot_optdefs, NULL};
+    struct option longs[32];
     struct cli c;
-    cli_init(&c, "links1 boot", argc, argv, "h", boot_options);
+    if (cli_optdefs_table(lists, longs, 32) != 0)
+        return 2;
+    cli_init(&c, "links1 boot", argc, argv, "h", longs);
     for (int code; (code = cli_next(&c)) != -1;) {
-        int r = board_opt(&o, &c, code);
+        int r = code == CLI_BAD ? -1 : board_opt(&o, &c, code);
         if (r < 0)
             return 2;
         if (r)
@@ -49,9 +51,7 @@ int cmd_boot(int argc, char **argv)
             cmd_boot_usage(stdout);
             return 0;
         } else {
-            if (code == CLI_OPERAND)
-                fprintf(stderr, "links1 boot: unexpected argument '%s'\n", c.arg);
-            cmd_boot_usage(stderr);
+            cli_usage_error("links1 boot", "unexpected argument '%s'", c.arg);
             return 2;
         }
     }

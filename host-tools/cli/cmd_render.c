@@ -7,6 +7,7 @@
  * next one still renders (the exit status is then 1). */
 #include <errno.h>
 #include <limits.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -27,11 +28,13 @@
 #include "host-tools/opts/tmp_dir.h"
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_file.h"
+#include "host-tools/scene/scene_opts.h"
 #include "host-tools/scene/scene_paper.h"
 #include "proto/areas.h"
 #include "render/render.h"
 
 #define RENDER_MAX_JOBS 16 /* SCENE -o OUT pairs in one run */
+#define RENDER_MAX_OPTIONS 80 /* getopt's table: every option's definition, --help, the end */
 
 struct render_job {
     const char *scene, *out;
@@ -82,101 +85,8 @@ struct render_opts {
     unsigned gave;      /* SCENE_PAPER_GAVE_*: render options given, which paper mode keeps */
 };
 
-static void render_usage(FILE *out)
-{
-    fprintf(out,
-            "usage: links1 render SCENE(.scn|.l1s) -o OUT.png [SCENE2 -o OUT2 ...] [options]\n"
-            "Renders on the emulated LINKS-1 (DM, RC and N NCs); several scenes render one\n"
-            "after another on the same board.\n"
-            "options:\n"
-            "  --ncs N          node computers (1..254, default %d)\n"
-            "  --arith A        float, soft, fixed or double (default float); auto: the cheapest that\n"
-            "                   keeps --target-db D (default 40) dB against double on a\n"
-            "                   low-resolution pre-render, for a unit computer with VFP or,\n"
-            "                   with --fpu none, without (docs/renderer.md)\n"
-            "  --auto           the arithmetic, min_weight and density steps together: the\n"
-            "                   cheapest that keeps --target-db D against double at the most\n"
-            "                   accurate model, and why (docs/renderer.md, \"--auto\")\n"
-            "  --balance M      static, dynamic, decreasing (default) or lines: simple dynamic\n"
-            "                   on whole and partial scanlines (the paper's job unit)\n"
-            "  --areas K        areas of the dynamic or lines grid (default %d); smallest-area bound of\n"
-            "                   decreasing (default: by NC count, docs/areas.md)\n"
-            "  --guided F       decreasing: each area takes 1/(F * NCs) of what is left\n"
-            "                   (1..64; default: by NC count)\n"
-            "  --ask R          when an NC asks for its next area: ahead (default), one\n"
-            "                   round trip before it expects to finish, or finished (the\n"
-            "                   paper's rule), once it has finished one\n"
-            "  --frame N        render frame N (default 0)\n"
-            "  --frames A:B     render frames A..B, writing OUT-000A.png ... (the DM prepares\n"
-            "                   frame k+1 while frame k renders); an OUT ending in .mp4,\n"
-            "                   .webm or .apng is one film, the frames piped to ffmpeg as\n"
-            "                   they come (an odd size padded to even for .mp4 and .webm)\n"
-            "  --fps N          a film's frames a second (1..%d, default %d)\n"
-            "  --rows A:B       render only scanlines A..B (a band of the frame; the RC cuts\n"
-            "                   its areas from the band): OUT is the band, its pixels those\n"
-            "                   of the whole frame (links1 farm --bands stitches bands)\n"
-            "  --band I/N       the same for band I of N (0 <= I < N): scanlines H*I/N to\n"
-            "                   H*(I+1)/N - 1 of a frame H high\n"
-            "  --size WxH       render at this size instead of the scene's (text scenes)\n"
-            "  --max-depth D    --refractionless on|off\n"
-            "                   override the scene's recursion depth / transmission past it\n"
-            "  --refraction on|off  off: transmitted rays never bend, at any depth\n"
-            "  --min-weight W   adaptive depth: rays whose weight (product of src and trc)\n"
-            "                   falls below W are not traced (0..1; scenes default 1/512)\n"
-            "  --density-steps N  steps of a density sphere's root finder (2..256;\n"
-            "                   scenes default 24): a feature thinner than a step is missed\n"
-            "  --mark-lost      paint pixels that lost precision magenta (text scenes)\n"
-            "  --escalate       trace a pixel that lost precision again in double, on the\n"
-            "                   same NC (float or fixed: links1-<arith>-esc.elf)\n"
-            "  --check-lost     trace it again in double only to check it: a pixel counts\n"
-            "                   as lost (and --mark-lost paints it) when double is more\n"
-            "                   than 2/255 away; the image keeps this arithmetic's colours\n"
-            "  --world-space    the DM leaves the scene in world coordinates and the NCs\n"
-            "                   turn the camera rays: a frame whose cluster keys did not\n"
-            "                   move keeps the frame before's triangles (no screen clipping)\n"
-            "  --textures-from DIR  a map's image may also come from below DIR (text\n"
-            "                   scenes; up to 4; not / nor a directory directly under /)\n"
-            "  --paper          paper mode (as options { paper on }): every choice the paper\n"
-            "                   made: src/trc by angle, a fixed depth (min_weight 0), --balance\n"
-            "                   lines --areas HEIGHT, --ask finished, --clip lists, no\n"
-            "                   automatic hierarchy where the scene has clusters of its own;\n"
-            "                   an option given beside it wins; one line says what was set\n"
-            "  --no-yclip --no-xclip --no-bbox --no-hierarchy\n"
-            "                   switch a speed-up off (the image stays the same)\n"
-            "  --clip M         how the NCs clip the screen: auto (default: the paper's lists\n"
-            "                   where few clusters cover a pixel, the hierarchy where many),\n"
-            "                   lists (a Y list per area, an X window per pixel, as the paper's\n"
-            "                   NCs did) or tree (per pixel in the hierarchy); the same image\n"
-            "  --no-auto-hierarchy  compile without the automatic hierarchy (text scenes)\n"
-            "  --view           show the frame memory live (-device ramfb, a display)\n"
-            "  --ppm            write PPM (also chosen by an OUT ending in .ppm)\n"
-            "  --count-insns    count guest instructions per core and print them\n"
-            "  --insn-profile FILE  the NCs' guest instructions per translated block,\n"
-            "                   \"ADDR COUNT\" lines into FILE (attribute them to the\n"
-            "                   firmware's functions: tests/bench/bench_insn_funcs.sh)\n"
-            "  --insn-profile-core K  profile core K alone (0 the DM, 1 the RC) instead\n"
-            "  --inject-faults K[:SEED]  test hook: K random NCs (fewer than --ncs) fail at\n"
-            "                   random points of the first frame; the frame still completes\n"
-            "  --inject-kind KIND  undef, abort, hang, silent or mixed (default mixed)\n"
-            "  --inject-every F K more NCs fail every F frames (of the NCs left)\n"
-            "  --inject-unit-fault dm|rc:FRAME  test hook: the DM or the RC faults while\n"
-            "                   frame FRAME renders (the run ends; see --resume)\n"
-            "  --resume         with --frames: keep the frames already written and render\n"
-            "                   the others, from the first not yet written\n"
-            "  --trace FILE     write the frame's per-area and per-pixel instruction costs\n"
-            "                   (one scene, one frame; the input of links1 replay)\n"
-            "  --timeout S      seconds to wait for every unit computer to report in\n"
-            "  --board NAME     render on the running board NAME (links1 board start); its\n"
-            "                   cores and arithmetic are the board's\n"
-            "  --link L         bulk bytes (scene up, frame down) through shared memory\n"
-            "                   (fast, default) or the serial link (serial)\n"
-            "  --firmware ELF   firmware to boot; --ram MB; --quiet\n",
-            RENDER_DEFAULT_NCS, AREAS_DEFAULT_K, FILM_MAX_FPS, FILM_DEFAULT_FPS);
-}
-
 enum render_opt_code {
-    RENDER_OPT_NCS = CLI_OWN_CODES,
-    RENDER_OPT_BALANCE,
+    RENDER_OPT_BALANCE = CLI_OWN_CODES,
     RENDER_OPT_AREAS,
     RENDER_OPT_GUIDED,
     RENDER_OPT_ASK,
@@ -184,19 +94,11 @@ enum render_opt_code {
     RENDER_OPT_FRAMES,
     RENDER_OPT_ROWS,
     RENDER_OPT_BAND,
-    RENDER_OPT_SIZE,
-    RENDER_OPT_MAX_DEPTH,
-    RENDER_OPT_MIN_WEIGHT,
-    RENDER_OPT_DENSITY_STEPS,
-    RENDER_OPT_MARK_LOST,
-    RENDER_OPT_REFRACTIONLESS,
-    RENDER_OPT_REFRACTION,
     RENDER_OPT_NO_YCLIP,
     RENDER_OPT_NO_XCLIP,
     RENDER_OPT_CLIP,
     RENDER_OPT_NO_BBOX,
     RENDER_OPT_NO_HIERARCHY,
-    RENDER_OPT_NO_AUTO_HIERARCHY,
     RENDER_OPT_VIEW,
     RENDER_OPT_PPM,
     RENDER_OPT_COUNT_INSNS,
@@ -211,63 +113,99 @@ enum render_opt_code {
     RENDER_OPT_TRACE,
     RENDER_OPT_FPU,
     RENDER_OPT_TARGET_DB,
-    RENDER_OPT_PAPER,
     RENDER_OPT_FPS,
     RENDER_OPT_ESCALATE,
-    RENDER_OPT_CHECK_LOST,
-    RENDER_OPT_WORLD_SPACE,
     RENDER_OPT_AUTO,
-    RENDER_OPT_TEXTURES_FROM,
 };
 
-static const struct option render_options[] = {
-    BOARD_LONG_OPTIONS,
-    {"ncs", required_argument, NULL, RENDER_OPT_NCS},
-    {"balance", required_argument, NULL, RENDER_OPT_BALANCE},
-    {"areas", required_argument, NULL, RENDER_OPT_AREAS},
-    {"guided", required_argument, NULL, RENDER_OPT_GUIDED},
-    {"ask", required_argument, NULL, RENDER_OPT_ASK},
-    {"frame", required_argument, NULL, RENDER_OPT_FRAME},
-    {"frames", required_argument, NULL, RENDER_OPT_FRAMES},
-    {"rows", required_argument, NULL, RENDER_OPT_ROWS},
-    {"band", required_argument, NULL, RENDER_OPT_BAND},
-    {"size", required_argument, NULL, RENDER_OPT_SIZE},
-    {"max-depth", required_argument, NULL, RENDER_OPT_MAX_DEPTH},
-    {"min-weight", required_argument, NULL, RENDER_OPT_MIN_WEIGHT},
-    {"density-steps", required_argument, NULL, RENDER_OPT_DENSITY_STEPS},
-    {"mark-lost", no_argument, NULL, RENDER_OPT_MARK_LOST},
-    {"refractionless", required_argument, NULL, RENDER_OPT_REFRACTIONLESS},
-    {"refraction", required_argument, NULL, RENDER_OPT_REFRACTION},
-    {"no-yclip", no_argument, NULL, RENDER_OPT_NO_YCLIP},
-    {"no-xclip", no_argument, NULL, RENDER_OPT_NO_XCLIP},
-    {"clip", required_argument, NULL, RENDER_OPT_CLIP},
-    {"no-bbox", no_argument, NULL, RENDER_OPT_NO_BBOX},
-    {"no-hierarchy", no_argument, NULL, RENDER_OPT_NO_HIERARCHY},
-    {"no-auto-hierarchy", no_argument, NULL, RENDER_OPT_NO_AUTO_HIERARCHY},
-    {"view", no_argument, NULL, RENDER_OPT_VIEW},
-    {"ppm", no_argument, NULL, RENDER_OPT_PPM},
-    {"count-insns", no_argument, NULL, RENDER_OPT_COUNT_INSNS},
-    {"insn-profile", required_argument, NULL, RENDER_OPT_INSN_PROFILE},
-    {"insn-profile-core", required_argument, NULL, RENDER_OPT_INSN_PROFILE_CORE},
-    {"board", required_argument, NULL, RENDER_OPT_BOARD},
-    {"inject-faults", required_argument, NULL, RENDER_OPT_INJECT_FAULTS},
-    {"inject-kind", required_argument, NULL, RENDER_OPT_INJECT_KIND},
-    {"inject-unit-fault", required_argument, NULL, RENDER_OPT_INJECT_UNIT_FAULT},
-    {"inject-every", required_argument, NULL, RENDER_OPT_INJECT_EVERY},
-    {"resume", no_argument, NULL, RENDER_OPT_RESUME},
-    {"trace", required_argument, NULL, RENDER_OPT_TRACE},
-    {"fpu", required_argument, NULL, RENDER_OPT_FPU},
-    {"target-db", required_argument, NULL, RENDER_OPT_TARGET_DB},
-    {"paper", no_argument, NULL, RENDER_OPT_PAPER},
-    {"fps", required_argument, NULL, RENDER_OPT_FPS},
-    {"escalate", no_argument, NULL, RENDER_OPT_ESCALATE},
-    {"check-lost", no_argument, NULL, RENDER_OPT_CHECK_LOST},
-    {"world-space", no_argument, NULL, RENDER_OPT_WORLD_SPACE},
-    {"auto", no_argument, NULL, RENDER_OPT_AUTO},
-    {"textures-from", required_argument, NULL, RENDER_OPT_TEXTURES_FROM},
-    {"help", no_argument, NULL, 'h'},
-    {NULL, 0, NULL, 0},
+/* render's own options (the board's and the scene's are theirs). */
+static const struct cli_optdef render_optdefs[] = {
+    {"auto", NULL, RENDER_OPT_AUTO,
+     "the arithmetic, min_weight and density steps together: the\n"
+     "cheapest that keeps --target-db D against double (--arith auto:\n"
+     "the arithmetic alone)"},
+    {"fpu", "vfp|none", RENDER_OPT_FPU, "--arith auto and --auto: the NCs' FPU (default vfp)"},
+    {"target-db", "D", RENDER_OPT_TARGET_DB, "--arith auto and --auto: the PSNR to keep (default 40)"},
+    {"escalate", NULL, RENDER_OPT_ESCALATE,
+     "trace a pixel that lost precision again in double on the same\n"
+     "NC (float or fixed: links1-<arith>-esc.elf)"},
+    {"balance", "M", RENDER_OPT_BALANCE,
+     "static, dynamic, decreasing (default) or lines (simple dynamic\n"
+     "on scanlines, the paper's job unit)"},
+    {"areas", "K", RENDER_OPT_AREAS,
+     "areas of the dynamic or lines grid; the smallest-area bound of\n"
+     "decreasing (default: by NC count, docs/areas.md)"},
+    {"guided", "F", RENDER_OPT_GUIDED,
+     "decreasing: each area takes 1/(F * NCs) of what is left (1..64)"},
+    {"ask", "ahead|finished", RENDER_OPT_ASK,
+     "when an NC asks for its next area: a round trip before it\n"
+     "expects to finish (default), or once it has (the paper's rule)"},
+    {"clip", "auto|lists|tree", RENDER_OPT_CLIP,
+     "how the NCs clip the screen: the paper's lists where few\n"
+     "clusters cover a pixel, the hierarchy where many (auto)"},
+    {"no-yclip", NULL, RENDER_OPT_NO_YCLIP, "switch Y clipping off (the image stays the same)"},
+    {"no-xclip", NULL, RENDER_OPT_NO_XCLIP, "switch X clipping off (the same image)"},
+    {"no-bbox", NULL, RENDER_OPT_NO_BBOX, "switch the bounding boxes off (the same image)"},
+    {"no-hierarchy", NULL, RENDER_OPT_NO_HIERARCHY, "switch the hierarchy off (the same image)"},
+    {"frame", "N", RENDER_OPT_FRAME, "render frame N (default 0)"},
+    {"frames", "A:B", RENDER_OPT_FRAMES,
+     "render frames A..B into OUT-000A.png ...; an OUT ending in .mp4,\n"
+     ".webm or .apng is one film, the frames piped to ffmpeg"},
+    {"fps", "N", RENDER_OPT_FPS, "a film's frames a second (1..240, default 12)"},
+    {"resume", NULL, RENDER_OPT_RESUME,
+     "with --frames: keep the frames already written, render the rest"},
+    {"rows", "A:B", RENDER_OPT_ROWS, "render scanlines A..B only: OUT is that band"},
+    {"band", "I/N", RENDER_OPT_BAND, "render band I of N equal bands of scanlines"},
+    {"ppm", NULL, RENDER_OPT_PPM, "write PPM (also chosen by an OUT ending in .ppm)"},
+    {"view", NULL, RENDER_OPT_VIEW, "show the frame memory live (-device ramfb, a display)"},
+    {"board", "NAME", RENDER_OPT_BOARD,
+     "render on the running board NAME (links1 board start)"},
+    {"count-insns", NULL, RENDER_OPT_COUNT_INSNS, "count guest instructions per core, print them"},
+    {"trace", "FILE", RENDER_OPT_TRACE,
+     "write one frame's per-area and per-pixel instruction costs (the\n"
+     "input of links1 replay)"},
+    {"insn-profile", "FILE", RENDER_OPT_INSN_PROFILE,
+     "the NCs' guest instructions per translated block into FILE"},
+    {"insn-profile-core", "K", RENDER_OPT_INSN_PROFILE_CORE, "profile core K alone instead"},
+    {"inject-faults", "K[:SEED]", RENDER_OPT_INJECT_FAULTS,
+     "test hook: K random NCs fail during the first frame, which\n"
+     "still completes"},
+    {"inject-kind", "KIND", RENDER_OPT_INJECT_KIND,
+     "undef, abort, hang, silent or mixed (default)"},
+    {"inject-every", "F", RENDER_OPT_INJECT_EVERY, "K more NCs fail every F frames"},
+    {"inject-unit-fault", "dm|rc:FRAME", RENDER_OPT_INJECT_UNIT_FAULT,
+     "test hook: the DM or the RC faults while FRAME renders"},
+    CLI_OPTDEF_END,
 };
+
+static void render_usage(FILE *out)
+{
+    fprintf(out, "usage: links1 render SCENE(.scn|.l1s|.nff) -o OUT.png [SCENE2 -o OUT2 ...] "
+                 "[options]\n"
+                 "Renders on the emulated LINKS-1 (DM, RC and N NCs); several scenes render one\n"
+                 "after another on the same board.  --arith auto: the cheapest arithmetic that\n"
+                 "keeps --target-db D against double on a low-resolution pre-render.\n"
+                 "board options:\n");
+    cli_optdefs_help(out, board_optdefs);
+    fprintf(out, "scene options (text scenes):\n");
+    cli_optdefs_help(out, scene_optdefs);
+    fprintf(out, "render options:\n");
+    cli_optdefs_help(out, render_optdefs);
+}
+
+/* A line of what happened, on stdout unless --quiet: with --quiet a
+ * render that works prints nothing (what it was asked to count or trace
+ * is still printed). */
+__attribute__((format(printf, 2, 3))) static void render_say(const struct render_opts *o,
+                                                             const char *fmt, ...)
+{
+    if (o->board.quiet)
+        return;
+    va_list ap;
+    va_start(ap, fmt);
+    vprintf(fmt, ap);
+    va_end(ap);
+}
 
 /* A scene named on the command line, or the -o OUT of the last one. */
 static int render_add_job(struct render_opts *o, int code, const char *arg)
@@ -289,147 +227,125 @@ static int render_add_job(struct render_opts *o, int code, const char *arg)
     return 0;
 }
 
-/* One option of render's own (not a board option, not a scene or -o). */
-static int render_take(struct render_opts *o, const struct cli *c, int code)
+/* One of render's options of the area schedule and the NCs' clipping: 1
+ * taken, 0 not one of them, -1 said what is wrong. */
+static int render_take_schedule(struct render_opts *o, const struct cli *c, int code)
 {
     long n;
     enum areas_mode m;
+    static const struct { const char *word; uint8_t clip; } clips[] = {
+        {"auto", LINK_CLIP_AUTO}, {"lists", LINK_CLIP_LISTS}, {"tree", LINK_CLIP_TREE}};
+    static const struct { int code; uint8_t flag; } offs[] = {
+        {RENDER_OPT_NO_YCLIP, LINK_RENDER_NO_YCLIP}, {RENDER_OPT_NO_XCLIP, LINK_RENDER_NO_XCLIP},
+        {RENDER_OPT_NO_BBOX, LINK_RENDER_NO_BBOX}, {RENDER_OPT_NO_HIERARCHY, LINK_RENDER_NO_HIERARCHY}};
+    for (size_t i = 0; i < sizeof offs / sizeof offs[0]; i++)
+        if (code == offs[i].code) {
+            o->args.flags |= offs[i].flag;
+            return 1;
+        }
     switch (code) {
-    case BOARD_OPT_SMP:
-        fprintf(stderr, "links1 render: --smp: give the node computers with --ncs N instead "
-                "(the board has N + 2 cores)\n");
-        return -1;
-    case RENDER_OPT_NCS:
-        if (cli_long(c, 10, 1, UNITS_MAX_CORES - 2, &n) < 0)
-            return -1;
-        o->board.ncores = (int)n + 2;
-        return 0;
     case RENDER_OPT_BALANCE:
         if (areas_mode_parse(c->arg, &m) != AREAS_OK)
             return cli_bad_value(c, "static, dynamic, decreasing or lines");
         o->args.balance = (uint8_t)m;
         o->gave |= SCENE_PAPER_GAVE_BALANCE;
-        return 0;
+        return 1;
     case RENDER_OPT_AREAS:
         if (cli_long(c, 10, 1, 1 << 20, &n) < 0)
             return -1;
         o->args.areas = (uint32_t)n;
         o->gave |= SCENE_PAPER_GAVE_AREAS;
-        return 0;
+        return 1;
     case RENDER_OPT_GUIDED:
         if (cli_long(c, 10, 1, AREAS_MAX_GUIDED_FACTOR, &n) < 0)
             return -1;
         o->args.guided = (uint8_t)n;
-        return 0;
+        return 1;
     case RENDER_OPT_ASK:
-        if (strcmp(c->arg, "ahead") == 0)
-            o->args.flags &= (uint8_t)~LINK_RENDER_ASK_WHEN_DONE;
-        else if (strcmp(c->arg, "finished") == 0)
-            o->args.flags |= LINK_RENDER_ASK_WHEN_DONE;
-        else
+        if (strcmp(c->arg, "ahead") != 0 && strcmp(c->arg, "finished") != 0)
             return cli_bad_value(c, "ahead or finished");
+        o->args.flags = strcmp(c->arg, "finished") == 0
+                            ? o->args.flags | LINK_RENDER_ASK_WHEN_DONE
+                            : o->args.flags & (uint8_t)~LINK_RENDER_ASK_WHEN_DONE;
         o->gave |= SCENE_PAPER_GAVE_ASK;
-        return 0;
+        return 1;
+    case RENDER_OPT_CLIP:
+        for (size_t i = 0; i < sizeof clips / sizeof clips[0]; i++)
+            if (strcmp(c->arg, clips[i].word) == 0) {
+                o->args.clip = clips[i].clip;
+                o->gave |= SCENE_PAPER_GAVE_CLIP;
+                return 1;
+            }
+        return cli_bad_value(c, "auto, lists or tree");
+    }
+    return 0;
+}
+
+/* One of render's options of which frames, rows and files: 1, 0 or -1. */
+static int render_take_frames(struct render_opts *o, const struct cli *c, int code)
+{
+    long n;
+    switch (code) {
     case RENDER_OPT_FRAME:
     case RENDER_OPT_FRAMES:
         o->many = code == RENDER_OPT_FRAMES;
         if (cli_parse_frames(c->arg, &o->first, &o->last) != 0 ||
             (!o->many && o->first != o->last))
             return cli_bad_value(c, o->many ? "FIRST:LAST" : "a frame number");
-        return 0;
+        return 1;
     case RENDER_OPT_ROWS:
         if (cli_parse_frames(c->arg, &o->row_first, &o->row_last) != 0 ||
             o->row_last >= UINT16_MAX)
             return cli_bad_value(c, "scanlines A:B, 0 <= A <= B");
-        return 0;
+        return 1;
     case RENDER_OPT_BAND:
         if (cli_parse_band(c->arg, &o->band, &o->bands) != 0) {
             o->bands = 0;
             return cli_bad_value(c, "band I/N, 0 <= I < N <= 65535");
         }
-        return 0;
+        return 1;
     case RENDER_OPT_FPS:
         if (cli_long(c, 10, 1, FILM_MAX_FPS, &n) < 0)
             return -1;
         o->fps = (int)n;
-        return 0;
-    case RENDER_OPT_SIZE:
-        if (cli_parse_size(c->arg, &o->scene.width, &o->scene.height) != 0)
-            return cli_bad_value(c, cli_size_want());
-        return 0;
-    case RENDER_OPT_MAX_DEPTH:
-        return cli_int(c, 0, SCN_MAX_DEPTH, &o->scene.max_depth);
-    case RENDER_OPT_MIN_WEIGHT:
-        return cli_double(c, 0, 0, 1, NULL, &o->scene.min_weight);
-    case RENDER_OPT_DENSITY_STEPS:
-        return cli_int(c, SCN_MIN_DENSITY_STEPS, SCN_MAX_DENSITY_STEPS, &o->scene.density_steps);
-    case RENDER_OPT_MARK_LOST:
-        o->scene.mark_lost = 1;
-        return 0;
-    case RENDER_OPT_REFRACTIONLESS:
-        if (strcmp(c->arg, "on") != 0 && strcmp(c->arg, "off") != 0)
-            return cli_bad_value(c, "on or off");
-        o->scene.refractionless = strcmp(c->arg, "on") == 0;
-        return 0;
-    case RENDER_OPT_REFRACTION:
-        if (strcmp(c->arg, "on") != 0 && strcmp(c->arg, "off") != 0)
-            return cli_bad_value(c, "on or off");
-        o->scene.refraction = strcmp(c->arg, "on") == 0;
-        return 0;
-    case RENDER_OPT_NO_YCLIP:
-        o->args.flags |= LINK_RENDER_NO_YCLIP;
-        return 0;
-    case RENDER_OPT_CLIP:
-        if (strcmp(c->arg, "auto") == 0)
-            o->args.clip = LINK_CLIP_AUTO;
-        else if (strcmp(c->arg, "lists") == 0)
-            o->args.clip = LINK_CLIP_LISTS;
-        else if (strcmp(c->arg, "tree") == 0)
-            o->args.clip = LINK_CLIP_TREE;
-        else
-            return cli_bad_value(c, "auto, lists or tree");
-        o->gave |= SCENE_PAPER_GAVE_CLIP;
-        return 0;
-    case RENDER_OPT_NO_XCLIP:
-        o->args.flags |= LINK_RENDER_NO_XCLIP;
-        return 0;
-    case RENDER_OPT_NO_BBOX:
-        o->args.flags |= LINK_RENDER_NO_BBOX;
-        return 0;
-    case RENDER_OPT_NO_HIERARCHY:
-        o->args.flags |= LINK_RENDER_NO_HIERARCHY;
-        return 0;
-    case RENDER_OPT_NO_AUTO_HIERARCHY:
-        o->scene.no_auto_hierarchy = 1;
-        return 0;
-    case RENDER_OPT_VIEW:
-        o->board.view = 1;
-        return 0;
-    case RENDER_OPT_PPM:
-        o->ppm = 1;
-        return 0;
-    case RENDER_OPT_COUNT_INSNS:
-        o->count_insns = 1;
-        return 0;
-    case RENDER_OPT_INSN_PROFILE:
-        o->board.insn_profile_out = c->arg;
-        return 0;
+        return 1;
+    case RENDER_OPT_RESUME: o->resume = 1; return 1;
+    case RENDER_OPT_PPM: o->ppm = 1; return 1;
+    case RENDER_OPT_VIEW: o->board.view = 1; return 1;
+    case RENDER_OPT_BOARD: o->board_name = c->arg; return 1;
+    }
+    return 0;
+}
+
+/* One of render's test hooks and counters: 1, 0 or -1. */
+static int render_take_hooks(struct render_opts *o, const struct cli *c, int code)
+{
+    long n;
+    switch (code) {
+    case RENDER_OPT_COUNT_INSNS: o->count_insns = 1; return 1;
+    case RENDER_OPT_INSN_PROFILE: o->board.insn_profile_out = c->arg; return 1;
     case RENDER_OPT_INSN_PROFILE_CORE:
         if (cli_long(c, 10, 0, UNITS_MAX_CORES - 1, &n) < 0)
             return -1;
         o->board.insn_profile_core = (int)n;
-        return 0;
-    case RENDER_OPT_BOARD:
-        o->board_name = c->arg;
-        return 0;
+        return 1;
+    case RENDER_OPT_TRACE:
+        o->trace = c->arg;
+        o->args.flags |= LINK_RENDER_TRACE;
+        return 1;
     case RENDER_OPT_INJECT_FAULTS:
         if (render_faults_parse(c->arg, &o->inject, &o->inject_seed) != 0)
             return cli_bad_value(c, "K[:SEED], K at most LINK_INJECT_MAX (128)");
-        return 0;
+        return 1;
     case RENDER_OPT_INJECT_KIND:
         if (render_faults_kind_parse(c->arg, &o->inject_kind) != 0)
             return cli_bad_value(c, "undef, abort, hang, silent or mixed");
-        return 0;
+        return 1;
+    case RENDER_OPT_INJECT_EVERY:
+        if (cli_long(c, 10, 1, 1 << 20, &n) < 0)
+            return -1;
+        o->inject_every = (unsigned)n;
+        return 1;
     case RENDER_OPT_INJECT_UNIT_FAULT: {
         char *end = NULL;
         int dm = strncmp(c->arg, "dm:", 3) == 0, rc = strncmp(c->arg, "rc:", 3) == 0;
@@ -438,52 +354,64 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
             return cli_bad_value(c, "dm:FRAME or rc:FRAME");
         o->unit_fault_core = dm ? UNITS_DM_CORE : UNITS_RC_CORE;
         o->unit_fault_frame = f;
-        return 0;
+        return 1;
     }
-    case RENDER_OPT_RESUME:
-        o->resume = 1;
-        return 0;
-    case RENDER_OPT_INJECT_EVERY:
-        if (cli_long(c, 10, 1, 1 << 20, &n) < 0)
-            return -1;
-        o->inject_every = (unsigned)n;
-        return 0;
-    case RENDER_OPT_TRACE:
-        o->trace = c->arg;
-        o->args.flags |= LINK_RENDER_TRACE;
-        return 0;
+    }
+    return 0;
+}
+
+/* One of render's own options (not a board or scene option, not a scene
+ * or -o): 0, or -1 after saying what is wrong. */
+static int render_take(struct render_opts *o, const struct cli *c, int code)
+{
+    int r = render_take_schedule(o, c, code);
+    if (r == 0)
+        r = render_take_frames(o, c, code);
+    if (r == 0)
+        r = render_take_hooks(o, c, code);
+    if (r != 0)
+        return r < 0 ? -1 : 0;
+    switch (code) {
     case RENDER_OPT_FPU:
         if ((o->fpu = arith_auto_fpu(c->arg)) < 0)
             return cli_bad_value(c, "vfp or none");
         return 0;
-    case RENDER_OPT_TARGET_DB:
-        return cli_double(c, 0, 1, 99, NULL, &o->target_db);
-    case RENDER_OPT_PAPER:
-        o->scene.paper = 1;
-        return 0;
+    case RENDER_OPT_TARGET_DB: return cli_double(c, 0, 1, 99, NULL, &o->target_db);
     case RENDER_OPT_ESCALATE:
         o->args.flags |= LINK_RENDER_ESCALATE;
         o->board.escalate = 1;
         return 0;
-    case RENDER_OPT_WORLD_SPACE:
-        o->scene.world_space = 1;
-        return 0;
-    case RENDER_OPT_CHECK_LOST:
-        o->scene.check_lost = 1; /* the NCs open the double copy for it */
-        o->board.escalate = 1;   /* the firmware that carries it */
-        return 0;
-    case RENDER_OPT_AUTO:
-        o->model_auto = o->arith_auto = 1;
-        return 0;
-    case RENDER_OPT_TEXTURES_FROM: {
-        char why[SD_ERR_MAX];
-        if (scene_file_textures_from(&o->scene, c->arg, why, sizeof why) == 0)
-            return 0;
-        fprintf(stderr, "links1 render: %s\n", why);
-        return -1;
-    }
+    case RENDER_OPT_AUTO: o->model_auto = o->arith_auto = 1; return 0;
     }
     return -1; /* CLI_BAD: reported already */
+}
+
+/* An option, a scene or -o OUT, whoever's it is: 0, 1 (--help shown) or
+ * -1 (a usage error, said). */
+static int render_take_any(struct render_opts *o, const struct cli *c, int code)
+{
+    if (code == CLI_BAD)
+        return -1;
+    if (code == 'h') {
+        render_usage(stdout);
+        return 1;
+    }
+    if (code == BOARD_OPT_ARITH) { /* auto chooses the board's arithmetic */
+        o->arith_named = 1;
+        o->arith_auto |= strcmp(c->arg, "auto") == 0;
+        if (o->arith_auto)
+            return 0;
+    }
+    int r = board_opt(&o->board, c, code);
+    if (r == 0)
+        r = scene_opts_take(&o->scene, c, code);
+    if (r > 0 && code == SCENE_OPT_CHECK_LOST)
+        o->board.escalate = 1; /* the firmware that carries double, to check with */
+    if (r != 0)
+        return r < 0 ? -1 : 0;
+    if (code == 'o' || code == CLI_OPERAND)
+        return render_add_job(o, code, c->arg);
+    return render_take(o, c, code);
 }
 
 /* --escalate: the firmware that carries the wide arithmetic (float or
@@ -595,32 +523,20 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
     o->fpu = -1;
     o->target_db = -1;
     scene_file_opts_init(&o->scene);
-    struct cli c;
-    cli_init(&c, "links1 render", argc, argv, "o:h", render_options);
-    for (int code; (code = cli_next(&c)) != -1;) {
-        o->arith_auto |= code == BOARD_OPT_ARITH && strcmp(c.arg, "auto") == 0;
-        o->arith_named |= code == BOARD_OPT_ARITH;
-        int auto_arith = code == BOARD_OPT_ARITH && o->arith_auto;
-        int r = code == BOARD_OPT_SMP || auto_arith ? 0 : board_opt(&o->board, &c, code);
-        if (auto_arith)
-            continue;
-        if (r == 0 && code == 'h') {
-            render_usage(stdout);
-            return 1;
-        }
-        if (r == 0)
-            r = code == 'o' || code == CLI_OPERAND ? render_add_job(o, code, c.arg)
-                                                   : render_take(o, &c, code);
-        if (r < 0) {
-            if (code == CLI_BAD)
-                render_usage(stderr);
-            return -1;
-        }
-    }
-    if (o->njobs == 0) {
-        render_usage(stderr);
+    static const struct cli_optdef *const lists[] = {board_optdefs, scene_optdefs,
+                                                     render_optdefs, NULL};
+    struct option longs[RENDER_MAX_OPTIONS];
+    if (cli_optdefs_table(lists, longs, RENDER_MAX_OPTIONS) != 0)
         return -1;
+    struct cli c;
+    cli_init(&c, "links1 render", argc, argv, "o:h", longs);
+    for (int code; (code = cli_next(&c)) != -1;) {
+        int r = render_take_any(o, &c, code);
+        if (r != 0)
+            return r;
     }
+    if (o->njobs == 0)
+        return cli_usage_error("links1 render", "no SCENE given");
     if (o->board_name && (o->count_insns || o->board.insn_profile_out || o->board.view ||
                           o->board.link_noise_on)) {
         fprintf(stderr, "links1 render: --count-insns, --insn-profile, --view and --link-noise "
@@ -839,7 +755,7 @@ static uint32_t render_frame_plan(struct render_opts *o, long f,
         struct link_inject e = {(uint16_t)o->unit_fault_core, LINK_INJECT_UNDEF, 0, 1};
         link_inject_put(plan + LINK_INJECT_SIZE(n), &e);
         n++;
-        printf("links1 render: fault plan: the %s faults during frame %ld\n",
+        render_say(o, "links1 render: fault plan: the %s faults during frame %ld\n",
                unit_role_name(unit_role_of_core((uint32_t)o->unit_fault_core)), f);
     }
     plan[0] = (uint8_t)n;
@@ -900,7 +816,7 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         fprintf(stderr, "links1 render: %s was not loaded\n", j->scene);
         return -1;
     }
-    printf("links1 render: %s loaded: %ux%u, %u frame(s), %u bytes compiled, a prepared frame "
+    render_say(o, "links1 render: %s loaded: %ux%u, %u frame(s), %u bytes compiled, a prepared frame "
            "needs at most %u of the DM's %u-byte IMSU block\n",
            j->scene, info.width, info.height, info.frames, info.compiled_bytes, info.blob_bytes,
            info.blob_limit);
@@ -944,7 +860,7 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         scene_paper_args(&paper, o->gave, &job_args);
         scene_paper_line(&paper, &job_args, j->info.auto_hierarchy, j->info.own_clusters, line,
                          sizeof line);
-        printf("links1 render: %s: %s\n", j->scene, line);
+        render_say(o, "links1 render: %s: %s\n", j->scene, line);
     }
     o->traced_args = job_args;
     /* a film: the frames go to ffmpeg as they come, the film is OUT */
@@ -959,7 +875,7 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
             return -1;
         }
         if (film_padded(film.kind, (int)info.width, (int)out_h))
-            printf("links1 render: %s: %ux%u padded to %ux%u (the film's yuv420p needs even "
+            render_say(o, "links1 render: %s: %ux%u padded to %ux%u (the film's yuv420p needs even "
                    "sides)\n", j->out, info.width, out_h, (info.width + 1) & ~1u,
                    (out_h + 1) & ~1u);
     }
@@ -972,7 +888,7 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         else
             snprintf(path, sizeof path, "%s", j->out);
         if (o->resume && !filming && access(path, F_OK) == 0) {
-            printf("links1 render: frame %ld: %s is there already (--resume): kept\n", f, path);
+            render_say(o, "links1 render: frame %ld: %s is there already (--resume): kept\n", f, path);
             continue;
         }
         struct link_render_args a = job_args;
@@ -1023,7 +939,8 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
         }
         o->wall.write += board_now_ms() - t2;
         /* The scene's upload time is told with its first frame. */
-        render_summary(path, &s, &img, &a, o->scene.check_lost,
+        if (!o->board.quiet)
+            render_summary(path, &s, &img, &a, o->scene.check_lost,
                        (double)(board_now_ms() - t0) / 1000.0,
                        f == first ? upload_ms : 0, pull_ms);
         o->traced_w = (uint32_t)img.width;
@@ -1038,7 +955,7 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
             fprintf(stderr, "links1 render: %s\n", err);
             return -1;
         }
-        printf("links1 render: %s: a film of %ld frame(s) at %d a second (ffmpeg)\n", j->out,
+        render_say(o, "links1 render: %s: a film of %ld frame(s) at %d a second (ffmpeg)\n", j->out,
                frames, o->fps ? o->fps : FILM_DEFAULT_FPS);
     }
     return 0;
@@ -1087,7 +1004,7 @@ static int render_write_trace(const struct render_opts *o, const char *marks_pat
     if (rc != 0)
         fprintf(stderr, "links1 render: --trace: %s\n", err);
     else
-        printf("links1 render: trace of %u areas written to %s\n", (unsigned)t.nareas, o->trace);
+        render_say(o, "links1 render: trace of %u areas written to %s\n", (unsigned)t.nareas, o->trace);
     trace_free(&t);
     return rc;
 }
@@ -1188,7 +1105,8 @@ int cmd_render(int argc, char **argv)
     o.wall.shutdown = board_now_ms() - t_stop;
     o.wall.total = board_now_ms() - t_start;
     if (rc == 0)
-        render_print_wall(&o.wall);
+        if (!o.board.quiet)
+            render_print_wall(&o.wall);
     /* Damage the retransmission repaired fails the run only on a link
      * without --link-noise, where there should be none. */
     if (board_report_link_errors(&b) && (!o.board.link_noise_on || board_arq_failed(&b)))

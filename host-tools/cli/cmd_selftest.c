@@ -31,6 +31,27 @@ static const struct selftest selftests[] = {
 };
 #define SELFTEST_COUNT (int)(sizeof selftests / sizeof selftests[0])
 
+enum {
+    SELFTEST_OPT_MIB = CLI_OWN_CODES,
+    SELFTEST_OPT_BYTES,
+    SELFTEST_OPT_MAX_INSNS,
+    SELFTEST_OPT_ROUNDS,
+    SELFTEST_OPT_CORE,
+};
+
+static const struct cli_optdef selftest_optdefs[] = {
+    {"mib", "N", SELFTEST_OPT_MIB, "MiB for stress"},
+    {"bytes", "N", SELFTEST_OPT_BYTES, "bytes for link-sink and link-source"},
+    {"max-insns", "N", SELFTEST_OPT_MAX_INSNS,
+     "idle: most guest instructions per second an idle core may\n"
+     "retire (default 10000)"},
+    {"rounds", "N", SELFTEST_OPT_ROUNDS, "latency: round trips (1..1000, default 200)"},
+    {"core", "K", SELFTEST_OPT_CORE,
+     "latency: the far end (1: the RC, asked by the DM; an NC, asked\n"
+     "by the RC; default 2)"},
+    CLI_OPTDEF_END,
+};
+
 static void selftest_usage(FILE *out)
 {
     fprintf(out, "usage: links1 selftest [options] NAME...\n"
@@ -39,15 +60,9 @@ static void selftest_usage(FILE *out)
                  "Exits non-zero if any check failed.  Checks:\n");
     for (int i = 0; i < SELFTEST_COUNT; i++)
         fprintf(out, "  %-12s %s\n", selftests[i].name, selftests[i].help);
-    fprintf(out, "options:\n%s"
-                 "  --mib N          MiB for stress\n"
-                 "  --bytes N        bytes for link-sink and link-source\n"
-                 "  --max-insns N    idle: most guest instructions per second an idle\n"
-                 "                   core may retire (default 10000)\n"
-                 "  --rounds N       latency: round trips (1..%u, default %u)\n"
-                 "  --core K         latency: the far end (1: the RC, asked by the DM; an\n"
-                 "                   NC, asked by the RC; default 2)\n",
-            board_opts_usage, LINK_LATENCY_MAX_ROUNDS, SELFTEST_LATENCY_ROUNDS);
+    fprintf(out, "options:\n");
+    cli_optdefs_help(out, board_optdefs);
+    cli_optdefs_help(out, selftest_optdefs);
 }
 
 static const struct selftest *selftest_find(const char *name)
@@ -57,25 +72,6 @@ static const struct selftest *selftest_find(const char *name)
             return &selftests[i];
     return NULL;
 }
-
-enum {
-    SELFTEST_OPT_MIB = CLI_OWN_CODES,
-    SELFTEST_OPT_BYTES,
-    SELFTEST_OPT_MAX_INSNS,
-    SELFTEST_OPT_ROUNDS,
-    SELFTEST_OPT_CORE,
-};
-
-static const struct option selftest_options[] = {
-    BOARD_LONG_OPTIONS,
-    {"mib", required_argument, NULL, SELFTEST_OPT_MIB},
-    {"bytes", required_argument, NULL, SELFTEST_OPT_BYTES},
-    {"max-insns", required_argument, NULL, SELFTEST_OPT_MAX_INSNS},
-    {"rounds", required_argument, NULL, SELFTEST_OPT_ROUNDS},
-    {"core", required_argument, NULL, SELFTEST_OPT_CORE},
-    {"help", no_argument, NULL, 'h'},
-    {NULL, 0, NULL, 0},
-};
 
 /* A check named on the command line (with its CORE for fault) onto run. */
 static int selftest_add(struct cli *c, struct selftest_args *a, const struct selftest **run,
@@ -104,8 +100,12 @@ static int selftest_add(struct cli *c, struct selftest_args *a, const struct sel
 static int selftest_parse(int argc, char **argv, struct board_opts *o,
                           struct selftest_args *a, const struct selftest **run, int *nrun)
 {
+    static const struct cli_optdef *const lists[] = {board_optdefs, selftest_optdefs, NULL};
+    struct option longs[32];
     struct cli c;
-    cli_init(&c, "links1 selftest", argc, argv, "h", selftest_options);
+    if (cli_optdefs_table(lists, longs, 32) != 0)
+        return -1;
+    cli_init(&c, "links1 selftest", argc, argv, "h", longs);
     for (int code; (code = cli_next(&c)) != -1;) {
         int r = code == CLI_BAD ? -1 : board_opt(o, &c, code);
         long v;

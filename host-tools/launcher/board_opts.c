@@ -13,26 +13,32 @@
 #include "host-tools/launcher/link_noise.h"
 #include "proto/arith.h"
 
-const char board_opts_usage[] =
-    "  --smp N          cores on the board: DM, RC and N-2 NCs (3..256, default 10)\n"
-    "  --machine M      virt (one board, a core per unit computer, default) or an521\n"
-    "                   (dual Cortex-M33 boards, one QEMU each: DM and RC on board 0,\n"
-    "                   two NCs on each other board; an even number of NCs, 2..64)\n"
-    "  --arith A        firmware arithmetic: float, soft, fixed or double (default float)\n"
-    "  --firmware ELF   firmware to boot (default: links1-<arith>.elf, links1-<arith>-esc.elf\n"
-    "                   with --escalate, in $FW_DIR,\n"
-    "                   else next to this program)\n"
-    "  --timeout S      seconds to wait for every unit computer to report in (default 60)\n"
-    "  --ram MB         board memory in MiB (1024..2048, default 1024: what the\n"
-    "                   firmware carves; it does not boot with less)\n"
-    "  --quiet          do not print the board's log or the board-up line\n"
-    "  --verbose        print each unit computer reporting in\n"
-    "  --gdb            start halted, QEMU's gdb stub on a unix socket in your state\n"
-    "                   directory (the path is printed; make gdb)\n"
-    "  --link L         bulk bytes through shared memory (fast, default) or the\n"
-    "                   serial link (serial); commands and results always go serially\n"
-    "  --link-noise RATE[:SEED]  test hook: a relay flips, drops, duplicates and\n"
-    "                   inserts bytes at RATE per byte both ways (boards this command starts)\n";
+const struct cli_optdef board_optdefs[] = {
+    {"ncs", "N", BOARD_OPT_NCS, "node computers: the board has N + 2 cores, the DM and the\n"
+                                "RC besides (1..254, default 8; an521: even, 2..64)"},
+    {"machine", "M", BOARD_OPT_MACHINE,
+     "virt (one board, a core per unit computer, default) or an521\n"
+     "(dual Cortex-M33 boards, one QEMU each)"},
+    {"arith", "A", BOARD_OPT_ARITH, "firmware arithmetic: float (default), soft, fixed or double"},
+    {"firmware", "ELF", BOARD_OPT_FIRMWARE,
+     "firmware to boot (default: links1-<arith>.elf in $FW_DIR, else\n"
+     "next to this program)"},
+    {"timeout", "S", BOARD_OPT_TIMEOUT,
+     "seconds to wait for every unit computer to report in (default 60)"},
+    {"ram", "MB", BOARD_OPT_RAM, "board memory in MiB (1024..2048, default 1024)"},
+    {"quiet", NULL, BOARD_OPT_QUIET, "print nothing but errors"},
+    {"verbose", NULL, BOARD_OPT_VERBOSE, "print each unit computer reporting in"},
+    {"gdb", "", BOARD_OPT_GDB,
+     "start halted, QEMU's gdb stub on a unix socket in your state\n"
+     "directory (its path printed; make gdb)"},
+    {"link", "L", BOARD_OPT_LINK,
+     "bulk bytes through shared memory (fast, default) or the serial\n"
+     "link (serial); commands and results always go serially"},
+    {"link-noise", "RATE[:SEED]", BOARD_OPT_LINK_NOISE,
+     "test hook: a relay flips, drops, duplicates and inserts bytes at\n"
+     "RATE per byte both ways"},
+    CLI_OPTDEF_END,
+};
 
 void board_opts_init(struct board_opts *o)
 {
@@ -85,8 +91,13 @@ static int board_opt_ram(struct board_opts *o, const struct cli *c)
 int board_opt(struct board_opts *o, const struct cli *c, int code)
 {
     switch (code) {
-    case BOARD_OPT_SMP:
-        return cli_int(c, UNITS_MIN_CORES, UNITS_MAX_CORES, &o->ncores) < 0 ? -1 : 1;
+    case BOARD_OPT_NCS: {
+        int ncs;
+        if (cli_int(c, UNITS_MIN_CORES - 2, UNITS_MAX_CORES - 2, &ncs) < 0)
+            return -1;
+        o->ncores = ncs + 2;
+        return 1;
+    }
     case BOARD_OPT_TIMEOUT:
         return cli_int(c, 1, BOARD_MAX_TIMEOUT_S, &o->timeout_s) < 0 ? -1 : 1;
     case BOARD_OPT_RAM:

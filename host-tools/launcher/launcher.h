@@ -53,11 +53,12 @@ const char *qemu_opt_escape(const char *value, char *out, size_t cap);
 /* Fills o with the defaults (BOARD_DEFAULT_*). */
 void board_opts_init(struct board_opts *o);
 
-/* The board options every board subcommand takes (--smp, --arith,
- * --firmware, --timeout, --ram, --quiet, --link, --verbose, --gdb, --link-noise): entries for the subcommand's
- * getopt_long table, and their codes. */
+/* The board options every command that starts a board takes (--ncs,
+ * --machine, --arith, --firmware, --timeout, --ram, --quiet, --verbose,
+ * --gdb, --link, --link-noise), defined once: board_optdefs, for each
+ * command's getopt table and --help. */
 enum board_opt_code {
-    BOARD_OPT_SMP = CLI_BOARD_CODES,
+    BOARD_OPT_NCS = CLI_BOARD_CODES,
     BOARD_OPT_ARITH,
     BOARD_OPT_FIRMWARE,
     BOARD_OPT_TIMEOUT,
@@ -69,26 +70,12 @@ enum board_opt_code {
     BOARD_OPT_LINK_NOISE,
     BOARD_OPT_MACHINE,
 };
-#define BOARD_LONG_OPTIONS                                       \
-    {"smp", required_argument, NULL, BOARD_OPT_SMP},             \
-    {"arith", required_argument, NULL, BOARD_OPT_ARITH},         \
-    {"firmware", required_argument, NULL, BOARD_OPT_FIRMWARE},   \
-    {"timeout", required_argument, NULL, BOARD_OPT_TIMEOUT},     \
-    {"ram", required_argument, NULL, BOARD_OPT_RAM},             \
-    {"quiet", no_argument, NULL, BOARD_OPT_QUIET},               \
-    {"link", required_argument, NULL, BOARD_OPT_LINK},           \
-    {"verbose", no_argument, NULL, BOARD_OPT_VERBOSE},           \
-    {"gdb", optional_argument, NULL, BOARD_OPT_GDB},             \
-    {"link-noise", required_argument, NULL, BOARD_OPT_LINK_NOISE}, \
-    {"machine", required_argument, NULL, BOARD_OPT_MACHINE}
+extern const struct cli_optdef board_optdefs[];
 
 /* Takes the board option cli_next() returned as code into o.  Returns 1
  * when it took it, 0 when code is not a board option, -1 after printing
  * what is wrong with its value. */
 int board_opt(struct board_opts *o, const struct cli *c, int code);
-
-/* The usage lines of the board options, for each subcommand's --help. */
-extern const char board_opts_usage[];
 
 /* Resolves the firmware ELF into out: opts->firmware, else
  * $FW_DIR/links1-<arith>.elf, else links1-<arith>.elf next to this program

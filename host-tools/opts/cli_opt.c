@@ -179,8 +179,9 @@ int cli_optdefs_table(const struct cli_optdef *const *lists, struct option *out,
         for (const struct cli_optdef *d = *lists; d->name; d++) {
             if (n + 2 >= cap)
                 return -1;
-            out[n++] = (struct option){d->name, d->value ? required_argument : no_argument,
-                                       NULL, d->code};
+            int has = !d->value ? no_argument : *d->value ? required_argument
+                                                          : optional_argument;
+            out[n++] = (struct option){d->name, has, NULL, d->code};
         }
     out[n++] = (struct option){"help", no_argument, NULL, 'h'};
     out[n] = (struct option){NULL, 0, NULL, 0};
@@ -193,7 +194,8 @@ int cli_optdefs_table(const struct cli_optdef *const *lists, struct option *out,
 void cli_optdefs_help(FILE *f, const struct cli_optdef *defs)
 {
     for (const struct cli_optdef *d = defs; d->name; d++) {
-        int w = fprintf(f, "  --%s%s%s", d->name, d->value ? " " : "", d->value ? d->value : "");
+        int shown = d->value && *d->value;
+        int w = fprintf(f, "  --%s%s%s", d->name, shown ? " " : "", shown ? d->value : "");
         const char *line = d->help;
         if (w >= CLI_HELP_COLUMN - 1)
             w = fprintf(f, "\n") - 1;

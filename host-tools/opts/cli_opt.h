@@ -73,7 +73,9 @@ __attribute__((format(printf, 2, 3))) int cli_usage_error(const char *prog, cons
 /* One option of a command. */
 struct cli_optdef {
     const char *name;  /* its long name, without "--" */
-    const char *value; /* what its value is called in the help ("N", "on|off"); NULL: none */
+    const char *value; /* what its value is called in the help ("N", "on|off"); NULL:
+                          none; "": none shown, but a value given is still read
+                          (getopt's optional_argument) for the option to refuse it */
     int code;          /* what cli_next returns for it */
     const char *help;  /* what it does: lines separated by '\n' */
 };

@@ -37,9 +37,9 @@ render_same() {
 render_board() {
     local name=$1 out=$2; shift 2
     local log="$RENDER_TMP/$name.log" rc
-    timeout "$BOARD_RUN_LIMIT_S" "$LINKS1" render --quiet "$@" >"$log" 2>&1
+    timeout "$BOARD_RUN_LIMIT_S" "$LINKS1" render "$@" >"$log" 2>&1
     rc=$?
-    echo "--- $LINKS1 render --quiet $* (exit $rc)"
+    echo "--- $LINKS1 render $* (exit $rc)"
     sed 's/^/    /' "$log"
     if [ $rc -ne 0 ]; then
         echo "FAIL $name: links1 render exited $rc: $(grep 'links1' "$log" | tail -n 1)"
