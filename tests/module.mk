@@ -91,6 +91,8 @@ BENCHES += tests/bench/bench_wallclock.sh
 BOARD_TESTS += tests/layers/layers.sh
 # What the docs name (paths, links, links1 options) exists.
 BOARD_TESTS += tests/docs/doc_refs.py
+# Every command's --help and the options it accepts are the same; usage errors are one line.
+BOARD_TESTS += tests/style/help_options.py
 # The runner counts what it says: hangs, crashes, early ends, unplanned tests.
 BOARD_TESTS += tests/runner/runner.sh
 # Every deliberate fault of tests/mutants/ still applies to the tree.

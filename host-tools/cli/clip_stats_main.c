@@ -59,19 +59,21 @@ int main(int argc, char **argv)
             return stats_usage(stdout, 0);
         if (code == STATS_OPT_AREA && cli_parse_size(c.arg, &area_w, &area_h) != 0) {
             cli_bad_value(&c, cli_size_want());
-            return stats_usage(stderr, 2);
+            return 2;
         }
         if (code == CLI_OPERAND && in) {
-            fprintf(stderr, "render-clip-stats: one scene at a time, not also '%s'\n", c.arg);
-            return stats_usage(stderr, 2);
+            cli_usage_error("render-clip-stats", "one scene at a time, not also '%s'", c.arg);
+            return 2;
         }
         if (code == CLI_OPERAND)
             in = c.arg;
         else if (code != STATS_OPT_AREA)
-            return stats_usage(stderr, 2);
+            return 2;
     }
-    if (!in)
-        return stats_usage(stderr, 2);
+    if (!in) {
+        cli_usage_error("render-clip-stats", "no SCENE given");
+        return 2;
+    }
     unsigned aw = (unsigned)area_w, ah = (unsigned)area_h;
     char err[SD_ERR_MAX];
     struct sd_scene sd;

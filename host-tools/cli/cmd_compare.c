@@ -159,15 +159,15 @@ int scene_cmd_compare(int argc, char **argv)
             *(pa ? &pb : &pa) = c.arg;
         } else {
             if (code == CLI_OPERAND)
-                fprintf(stderr, "links1 compare: two images, not also '%s'\n", c.arg);
+                cli_usage_error("links1 compare", "two images, not also '%s'", c.arg);
             bad = -1;
         }
         if (bad)
-            return compare_usage(stderr);
+            return 2;
     }
     if (!pa || !pb) {
-        fprintf(stderr, "links1 compare: name two images\n");
-        return compare_usage(stderr);
+        cli_usage_error("links1 compare", "name two images");
+        return 2;
     }
     if (pmarked)
         return compare_flags(pa, pb, pmarked, within_given ? o.within : 2, min_precision,

@@ -54,8 +54,8 @@ static int import_args(int argc, char **argv, struct import_args *a)
             char why[SD_ERR_MAX];
             if (a->textures_from || sd_textures_from_ok(c.arg, "--textures-from", why,
                                                         sizeof why) != 0) {
-                fprintf(stderr, "links1 import: %s\nusage: %s\n",
-                        a->textures_from ? "--textures-from: give it once" : why, IMPORT_USAGE);
+                cli_usage_error("links1 import", "%s",
+                                a->textures_from ? "--textures-from: give it once" : why);
                 return -1;
             }
             a->textures_from = c.arg;
@@ -68,15 +68,12 @@ static int import_args(int argc, char **argv, struct import_args *a)
             a->model = c.arg;
         } else {
             if (code == CLI_OPERAND)
-                fprintf(stderr, "links1 import: one model at a time, not also '%s'\n", c.arg);
-            fprintf(stderr, "usage: %s\n", IMPORT_USAGE);
+                cli_usage_error("links1 import", "one model at a time, not also '%s'", c.arg);
             return -1;
         }
     }
     if (!a->model || !a->out) {
-        fprintf(stderr, "links1 import: %s\nusage: %s\n", !a->model ? "no MODEL given"
-                                                                    : "no -o SCENE.scn given",
-                IMPORT_USAGE);
+        cli_usage_error("links1 import", "%s", !a->model ? "no MODEL given" : "no -o SCENE.scn given");
         return -1;
     }
     return 0;

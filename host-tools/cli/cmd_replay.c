@@ -220,16 +220,11 @@ static int replay_parse(struct replay_opts *o, int argc, char **argv)
             replay_usage(stdout);
             return 1;
         }
-        if (code == CLI_BAD || replay_take(o, &c, code) != 0) {
-            if (code == CLI_BAD)
-                replay_usage(stderr);
+        if (code == CLI_BAD || replay_take(o, &c, code) != 0)
             return -1;
-        }
     }
     if (!o->file || o->ncounts == 0) {
-        fprintf(stderr, "links1 replay: name a TRACE and --ncs LIST\n");
-        replay_usage(stderr);
-        return -1;
+        return cli_usage_error("links1 replay", "name a TRACE and --ncs LIST");
     }
     if (o->timeline && o->ncounts != 1) {
         fprintf(stderr, "links1 replay: --timeline draws one frame: give one NC count "

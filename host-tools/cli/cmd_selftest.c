@@ -141,9 +141,7 @@ static int selftest_parse(int argc, char **argv, struct board_opts *o,
         }
     }
     if (*nrun == 0) {
-        fprintf(stderr, "links1 selftest: name at least one check\n");
-        selftest_usage(stderr);
-        return -1;
+        return cli_usage_error("links1 selftest", "name at least one check");
     }
     if (a->latency_core >= o->ncores) {
         fprintf(stderr, "links1 selftest: --core %d, but the board has %d cores\n",

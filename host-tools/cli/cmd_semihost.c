@@ -60,12 +60,11 @@ int cmd_semihost(int argc, char **argv)
             elf = c.arg;
             break;
         default:
-            cmd_semihost_usage(stderr);
             return 2;
         }
     }
     if (!elf) {
-        cmd_semihost_usage(stderr);
+        cli_usage_error("links1 semihost", "name an ELF");
         return 2;
     }
     /* The plugin's marks go to a private directory of the run's first

@@ -29,19 +29,32 @@ static const struct links1_cmd links1_cmds[] = {
 };
 #define LINKS1_NCMDS (int)(sizeof links1_cmds / sizeof links1_cmds[0])
 
+/* The other programs the project builds beside links1 (each answers --help). */
+static const struct {
+    const char *name, *help;
+} links1_programs[] = {
+    {"links1-spd", "write one of Haines's Standard Procedural Databases (NFF or a scene)"},
+    {"links1-ref-<arith>", "the host renderer of one arithmetic, which links1 ref runs"},
+    {"render-clip-stats", "how many clusters the screen clipping keeps, per area"},
+};
+
 static void links1_usage(FILE *out)
 {
     fprintf(out, "usage: links1 COMMAND [options]   (links1 COMMAND --help for its options)\n"
                  "commands:\n");
     for (int i = 0; i < LINKS1_NCMDS; i++)
         fprintf(out, "  %-11s %s\n", links1_cmds[i].name, links1_cmds[i].help);
+    fprintf(out, "programs beside links1 (in the same directory):\n");
+    for (size_t i = 0; i < sizeof links1_programs / sizeof links1_programs[0]; i++)
+        fprintf(out, "  %-19s %s\n", links1_programs[i].name, links1_programs[i].help);
+    fprintf(out, "exit status: 0 done, 1 failed, 2 a usage error; 128 + N ended by signal N\n");
 }
 
 int main(int argc, char **argv)
 {
     exit_clean_install(); /* a signal leaves no temporary file and no child of ours */
     if (argc < 2) {
-        links1_usage(stderr);
+        fprintf(stderr, "links1: name a command (see links1 --help)\n");
         return 2;
     }
     if (strcmp(argv[1], "--help") == 0 || strcmp(argv[1], "-h") == 0 ||
@@ -52,7 +65,6 @@ int main(int argc, char **argv)
     for (int i = 0; i < LINKS1_NCMDS; i++)
         if (strcmp(argv[1], links1_cmds[i].name) == 0)
             return links1_cmds[i].fn(argc - 1, argv + 1);
-    fprintf(stderr, "links1: unknown command '%s'\n", argv[1]);
-    links1_usage(stderr);
+    fprintf(stderr, "links1: unknown command '%s' (see links1 --help)\n", argv[1]);
     return 2;
 }

@@ -61,15 +61,11 @@ static int scene_cmd_args(struct cli *c, const char *usage, const char **in, con
         } else {
             bad = code == CLI_BAD || !take || take(c, code, ctx) < 0;
         }
-        if (bad) {
-            fprintf(stderr, "usage: %s\n", usage);
+        if (bad)
             return -1;
-        }
     }
     if (!*in || !*out) {
-        fprintf(stderr, "%s: %s\nusage: %s\n", c->prog, !*in ? "no SCENE given" : "no -o OUT given",
-                usage);
-        return -1;
+        return cli_usage_error(c->prog, "%s", !*in ? "no SCENE given" : "no -o OUT given");
     }
     char err[PATH_MAX + 256];
     if (out_file_check(*out, err, sizeof err) != 0) { /* before the scene is read */

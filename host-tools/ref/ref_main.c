@@ -37,7 +37,7 @@
 
 static int ref_usage(FILE *out, int status)
 {
-    ref_opts_usage(out, 1);
+    ref_opts_usage(out, 0);
     return status;
 }
 
