@@ -805,50 +805,56 @@ static long long render_board_cpu_spent(const long long c0[AN521_MAX_BOARDS],
 }
 
 /* One scene on the running board: upload, every frame asked for. */
-static int render_job(struct board *b, struct render_opts *o, const struct render_job *j)
+/* The scene j uploaded and loaded, what the board says of it checked.
+ * 0, or -1 after saying why. */
+static int render_job_load(struct board *b, struct render_opts *o, const struct render_job *j,
+                           struct link_scene_info *info, long long *upload_ms)
 {
-    struct link_scene_info info;
-    long long upload_ms = 0, load_ms = 0, pull_ms = 0;
-    int rc = render_session_load(b, j->bytes, j->len, &info, &upload_ms, &load_ms);
-    o->wall.upload += upload_ms;
+    long long load_ms = 0;
+    int rc = render_session_load(b, j->bytes, j->len, info, upload_ms, &load_ms);
+    o->wall.upload += *upload_ms;
     o->wall.load += load_ms;
     if (rc != 0) {
         fprintf(stderr, "links1 render: %s was not loaded\n", j->scene);
         return -1;
     }
-    render_say(o, "links1 render: %s loaded: %ux%u, %u frame(s), %u bytes compiled, a prepared frame "
-           "needs at most %u of the DM's %u-byte IMSU block\n",
-           j->scene, info.width, info.height, info.frames, info.compiled_bytes, info.blob_bytes,
-           info.blob_limit);
-    long first = o->first, last = o->last < 0 ? o->first : o->last;
-    if (j->frames && (info.frames != j->frames || info.height != j->height)) {
+    render_say(o, "links1 render: %s loaded: %ux%u, %u frame(s), %u bytes compiled, a prepared "
+               "frame needs at most %u of the DM's %u-byte IMSU block\n", j->scene, info->width,
+               info->height, info->frames, info->compiled_bytes, info->blob_bytes,
+               info->blob_limit);
+    if (j->frames && (info->frames != j->frames || info->height != j->height)) {
         /* render_check_job checked what the compiled header says */
         fprintf(stderr, "links1 render: %s: the board loaded %u frames of %u scanlines, the "
-                "compiled scene says %u of %u\n", j->scene, info.frames, info.height, j->frames,
-                j->height);
+                "compiled scene says %u of %u\n", j->scene, info->frames, info->height,
+                j->frames, j->height);
         return -1;
     }
     /* what the board says, range-checked before use (the header's, when it
      * could be read before the boot) */
-    if (info.frames == 0 || info.height == 0) {
+    if (info->frames == 0 || info->height == 0) {
         fprintf(stderr, "links1 render: %s: the board loaded %u frames of %u scanlines\n",
-                j->scene, info.frames, info.height);
+                j->scene, info->frames, info->height);
         return -1;
     }
-    if (render_fits(o, j->scene, info.frames, info.height) != 0)
-        return -1;
-    int ppm = o->ppm || scene_file_ends_with(j->out, ".ppm");
-    struct link_render_args job_args = o->args;
+    return render_fits(o, j->scene, info->frames, info->height);
+}
+
+/* The frame's render arguments for job j: the band's scanlines and what
+ * paper mode sets.  0, or -1 after saying why. */
+static int render_job_args(struct render_opts *o, const struct render_job *j,
+                           const struct link_scene_info *info, struct link_render_args *job_args)
+{
+    *job_args = o->args;
     if (o->bands) { /* band I of N: its scanlines (render_check_job: N <= height) */
-        job_args.row0 = (uint16_t)((uint64_t)info.height * (uint64_t)o->band / (uint64_t)o->bands);
-        job_args.rows = (uint16_t)((uint64_t)info.height * (uint64_t)(o->band + 1) /
-                                   (uint64_t)o->bands - job_args.row0);
+        job_args->row0 = (uint16_t)((uint64_t)info->height * (uint64_t)o->band /
+                                    (uint64_t)o->bands);
+        job_args->rows = (uint16_t)((uint64_t)info->height * (uint64_t)(o->band + 1) /
+                                    (uint64_t)o->bands - job_args->row0);
     }
     if (o->row_first >= 0) { /* a band (render_check_job: within the height) */
-        job_args.row0 = (uint16_t)o->row_first;
-        job_args.rows = (uint16_t)(o->row_last - o->row_first + 1);
+        job_args->row0 = (uint16_t)o->row_first;
+        job_args->rows = (uint16_t)(o->row_last - o->row_first + 1);
     }
-    uint32_t out_h = job_args.rows ? job_args.rows : info.height; /* OUT's height */
     struct scene_paper paper;
     char why[SD_ERR_MAX];
     if (scene_paper_read(j->bytes, j->len, &paper, why, sizeof why) != 0) {
@@ -857,107 +863,155 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
     }
     if (paper.paper) {
         char line[512];
-        scene_paper_args(&paper, o->gave, &job_args);
-        scene_paper_line(&paper, &job_args, j->info.auto_hierarchy, j->info.own_clusters, line,
+        scene_paper_args(&paper, o->gave, job_args);
+        scene_paper_line(&paper, job_args, j->info.auto_hierarchy, j->info.own_clusters, line,
                          sizeof line);
         render_say(o, "links1 render: %s: %s\n", j->scene, line);
     }
-    o->traced_args = job_args;
-    /* a film: the frames go to ffmpeg as they come, the film is OUT */
+    o->traced_args = *job_args;
+    return 0;
+}
+
+/* One frame of a job: its arguments, number, the job's last frame, and
+ * the scene's upload time (told with its first frame). */
+struct render_frame_run {
+    const struct link_render_args *args;
+    long frame, last;
+    long long upload_ms;
+};
+
+/* Where a job's frames go: numbered (or one) image files, or one film. */
+struct render_sink {
+    const char *out;
+    int filming, ppm;
     struct film film;
-    memset(&film, 0, sizeof film);
-    int filming = film_kind_of(j->out) != FILM_NONE;
-    if (filming) {
-        char err[512];
-        if (film_open(&film, j->out, (int)info.width, (int)out_h,
-                      o->fps ? o->fps : FILM_DEFAULT_FPS, err, sizeof err) != 0) {
-            fprintf(stderr, "links1 render: %s\n", err);
-            return -1;
-        }
-        if (film_padded(film.kind, (int)info.width, (int)out_h))
-            render_say(o, "links1 render: %s: %ux%u padded to %ux%u (the film's yuv420p needs even "
-                   "sides)\n", j->out, info.width, out_h, (info.width + 1) & ~1u,
-                   (out_h + 1) & ~1u);
+};
+
+/* A film started for OUT (frames width x height), or image files.  0, or
+ * -1 after saying why. */
+static int render_sink_open(const struct render_opts *o, const struct render_job *j,
+                            uint32_t width, uint32_t height, struct render_sink *k)
+{
+    memset(k, 0, sizeof *k);
+    k->out = j->out;
+    k->ppm = o->ppm || scene_file_ends_with(j->out, ".ppm");
+    k->filming = film_kind_of(j->out) != FILM_NONE;
+    if (!k->filming)
+        return 0;
+    char err[512];
+    if (film_open(&k->film, j->out, (int)width, (int)height, o->fps ? o->fps : FILM_DEFAULT_FPS,
+                  err, sizeof err) != 0) {
+        fprintf(stderr, "links1 render: %s\n", err);
+        return -1;
     }
+    if (film_padded(k->film.kind, (int)width, (int)height))
+        render_say(o, "links1 render: %s: %ux%u padded to %ux%u (the film's yuv420p needs even "
+                   "sides)\n", j->out, width, height, (width + 1) & ~1u, (height + 1) & ~1u);
+    return 0;
+}
+
+/* Frame f's image into the sink: written whole or not at all
+ * (image_save.h), so a run that dies leaves no half frame for --resume.
+ * 0, or -1 after saying why. */
+static int render_sink_put(struct render_sink *k, const char *path, const struct image *img)
+{
+    char err[SD_ERR_MAX];
+    int rc = k->filming ? film_frame(&k->film, img, err, sizeof err)
+                        : image_save(path, img, k->ppm, err, sizeof err);
+    if (rc != 0)
+        fprintf(stderr, "links1 render: %s\n", err);
+    return rc;
+}
+
+/* Frame f rendered, pulled and put into the sink.  0, or -1 after saying why. */
+static int render_one_frame(struct board *b, struct render_opts *o,
+                            const struct link_scene_info *info, const struct render_frame_run *r,
+                            struct render_sink *k, const char *path)
+{
+    struct link_render_args a = *r->args;
+    a.frame = (uint32_t)r->frame;
+    if (r->frame < r->last)
+        a.flags |= LINK_RENDER_PREPARE_NEXT;
+    long long t0 = board_now_ms(), pull_ms = 0;
+    long long cpu0[AN521_MAX_BOARDS], cpu1[AN521_MAX_BOARDS];
+    render_board_cpu(b, cpu0);
+    struct link_render_stats s;
+    struct link_render_fails fails;
+    struct image img = {0, 0, NULL};
+    uint8_t plan[LINK_INJECT_SIZE(LINK_INJECT_MAX + 1)];
+    uint32_t plan_len = render_frame_plan(o, r->frame, plan);
+    if (render_session_frame(b, &a, isatty(2), plan, plan_len, &s, &fails) != 0)
+        return -1;
+    long long t1 = board_now_ms();
+    render_board_cpu(b, cpu1);
+    o->wall.frame += t1 - t0;
+    o->wall.board_prepare += s.prepare_ms;
+    o->wall.board_render += s.render_ms;
+    o->wall.render_cpu += render_board_cpu_spent(cpu0, cpu1);
+    if (render_session_pull(b, (int)info->width, (int)info->height, &img, &pull_ms) != 0)
+        return -1;
+    if (a.rows) { /* the band's scanlines only */
+        memmove(img.rgb, img.rgb + (size_t)a.row0 * (size_t)img.width * 3,
+                (size_t)a.rows * (size_t)img.width * 3);
+        img.height = a.rows;
+    }
+    long long t2 = board_now_ms();
+    o->wall.pull += t2 - t1;
+    render_faults_print(stdout, a.frame, &fails);
+    int rc = render_sink_put(k, path, &img);
+    o->wall.write += board_now_ms() - t2;
+    /* The scene's upload time is told with its first frame. */
+    if (rc == 0 && !o->board.quiet)
+        render_summary(path, &s, &img, &a, o->scene.check_lost,
+                       (double)(board_now_ms() - t0) / 1000.0, r->upload_ms, pull_ms);
+    o->traced_w = (uint32_t)img.width;
+    o->traced_h = (uint32_t)img.height;
+    o->traced_bytes = s.blob_bytes;
+    image_free(&img);
+    return rc;
+}
+
+static int render_job(struct board *b, struct render_opts *o, const struct render_job *j)
+{
+    struct link_scene_info info;
+    long long upload_ms = 0;
+    struct link_render_args job_args;
+    if (render_job_load(b, o, j, &info, &upload_ms) != 0 ||
+        render_job_args(o, j, &info, &job_args) != 0)
+        return -1;
+    long first = o->first, last = o->last < 0 ? o->first : o->last;
+    struct render_sink k;
+    if (render_sink_open(o, j, info.width, job_args.rows ? job_args.rows : info.height, &k) != 0)
+        return -1;
     for (long f = first; f <= last; f++) {
-        char path[4096], err[SD_ERR_MAX];
-        if (filming)
+        char path[4096];
+        if (k.filming)
             snprintf(path, sizeof path, "%s (frame %ld of the film)", j->out, f);
         else if (o->many)
             scene_file_frame_path(j->out, f, path, sizeof path);
         else
             snprintf(path, sizeof path, "%s", j->out);
-        if (o->resume && !filming && access(path, F_OK) == 0) {
-            render_say(o, "links1 render: frame %ld: %s is there already (--resume): kept\n", f, path);
+        if (o->resume && !k.filming && access(path, F_OK) == 0) {
+            render_say(o, "links1 render: frame %ld: %s is there already (--resume): kept\n", f,
+                       path);
             continue;
         }
-        struct link_render_args a = job_args;
-        a.frame = (uint32_t)f;
-        if (f < last)
-            a.flags |= LINK_RENDER_PREPARE_NEXT;
-        long long t0 = board_now_ms();
-        long long cpu0[AN521_MAX_BOARDS], cpu1[AN521_MAX_BOARDS];
-        render_board_cpu(b, cpu0);
-        struct link_render_stats s;
-        struct link_render_fails fails;
-        struct image img = {0, 0, NULL};
-        uint8_t plan[LINK_INJECT_SIZE(LINK_INJECT_MAX + 1)];
-        uint32_t plan_len = render_frame_plan(o, f, plan);
-        if (render_session_frame(b, &a, isatty(2), plan, plan_len, &s, &fails) != 0) {
-            film_abort(&film);
+        struct render_frame_run r = {&job_args, f, last, f == first ? upload_ms : 0};
+        if (render_one_frame(b, o, &info, &r, &k, path) != 0) {
+            film_abort(&k.film);
             return -1;
         }
-        long long t1 = board_now_ms();
-        render_board_cpu(b, cpu1);
-        o->wall.frame += t1 - t0;
-        o->wall.board_prepare += s.prepare_ms;
-        o->wall.board_render += s.render_ms;
-        o->wall.render_cpu += render_board_cpu_spent(cpu0, cpu1);
-        if (render_session_pull(b, (int)info.width, (int)info.height, &img, &pull_ms) != 0) {
-            film_abort(&film);
-            return -1;
-        }
-        if (a.rows) { /* the band's scanlines only */
-            memmove(img.rgb, img.rgb + (size_t)a.row0 * (size_t)img.width * 3,
-                    (size_t)a.rows * (size_t)img.width * 3);
-            img.height = a.rows;
-        }
-        long long t2 = board_now_ms();
-        o->wall.pull += t2 - t1;
-        render_faults_print(stdout, a.frame, &fails);
-        /* Written whole or not at all (image_save.h): a run that dies
-         * leaves no half frame for --resume to keep. */
-        if (filming)
-            rc = film_frame(&film, &img, err, sizeof err);
-        else
-            rc = image_save(path, &img, ppm, err, sizeof err);
-        if (rc != 0) {
-            fprintf(stderr, "links1 render: %s\n", err);
-            image_free(&img);
-            film_abort(&film);
-            return -1;
-        }
-        o->wall.write += board_now_ms() - t2;
-        /* The scene's upload time is told with its first frame. */
-        if (!o->board.quiet)
-            render_summary(path, &s, &img, &a, o->scene.check_lost,
-                       (double)(board_now_ms() - t0) / 1000.0,
-                       f == first ? upload_ms : 0, pull_ms);
-        o->traced_w = (uint32_t)img.width;
-        o->traced_h = (uint32_t)img.height;
-        o->traced_bytes = s.blob_bytes;
-        image_free(&img);
     }
-    if (filming) {
-        char err[512];
-        long frames = film.frames;
-        if (film_close(&film, err, sizeof err) != 0) {
-            fprintf(stderr, "links1 render: %s\n", err);
-            return -1;
-        }
-        render_say(o, "links1 render: %s: a film of %ld frame(s) at %d a second (ffmpeg)\n", j->out,
+    if (!k.filming)
+        return 0;
+    char err[512];
+    long frames = k.film.frames;
+    if (film_close(&k.film, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 render: %s\n", err);
+        return -1;
+    }
+    render_say(o, "links1 render: %s: a film of %ld frame(s) at %d a second (ffmpeg)\n", j->out,
                frames, o->fps ? o->fps : FILM_DEFAULT_FPS);
-    }
     return 0;
 }
 
