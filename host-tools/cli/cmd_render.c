@@ -69,8 +69,6 @@ struct render_opts {
     unsigned inject, inject_seed; /* --inject-faults K[:SEED] */
     uint8_t inject_kind;          /* --inject-kind */
     unsigned inject_every;        /* --inject-every F: K more every F frames */
-    uint8_t inject_taken[LINK_CORE_MAP_SIZE]; /* NCs already planned to fail */
-    long frames_done;             /* frames rendered in this run */
     int unit_fault_core;          /* --inject-unit-fault: DM or RC core, -1: none */
     long unit_fault_frame;
     int resume;                   /* --resume: frames already written are kept */
@@ -79,10 +77,16 @@ struct render_opts {
     int arith_auto, fpu; /* --arith auto (or --auto), --fpu vfp|none (-1: not given) */
     int model_auto, arith_named; /* --auto; --arith given */
     double target_db;    /* --target-db D (-1: not given) */
-    struct render_wall wall; /* where the command's wall time went */
-    uint32_t traced_w, traced_h, traced_bytes; /* the traced frame's size, broadcast */
-    struct link_render_args traced_args; /* what the traced frame ran with */
     unsigned gave;      /* SCENE_PAPER_GAVE_*: render options given, which paper mode keeps */
+};
+
+/* What a render command keeps as it runs (its options are render_opts'). */
+struct render_run {
+    struct render_wall wall; /* where the command's wall time went */
+    uint8_t inject_taken[LINK_CORE_MAP_SIZE]; /* NCs already planned to fail */
+    long frames_done;        /* frames rendered in this run */
+    uint32_t traced_w, traced_h, traced_bytes; /* the traced frame's size, broadcast */
+    struct link_render_args traced_args;       /* what the traced frame ran with */
 };
 
 enum render_opt_code {
@@ -739,15 +743,15 @@ static void render_summary(const char *path, const struct link_render_stats *s,
  * first frame rendered (and every --inject-every frames), the DM's or RC's
  * on its frame.  Returns its bytes
  * (0: none). */
-static uint32_t render_frame_plan(struct render_opts *o, long f,
+static uint32_t render_frame_plan(const struct render_opts *o, struct render_run *run, long f,
                                   uint8_t plan[LINK_INJECT_SIZE(LINK_INJECT_MAX + 1)])
 {
     uint32_t n = 0;
-    long k = o->frames_done++;
+    long k = run->frames_done++;
     if (o->inject && (o->inject_every ? k % o->inject_every == 0 : k == 0)) {
         unsigned ncs = (unsigned)o->board.ncores - UNITS_FIRST_NC;
         render_faults_plan(o->inject, o->inject_seed + (unsigned)k, o->inject_kind, ncs,
-                           o->inject_taken, plan);
+                           run->inject_taken, plan);
         render_faults_print_plan(stdout, plan);
         n = plan[0];
     }
@@ -807,13 +811,14 @@ static long long render_board_cpu_spent(const long long c0[AN521_MAX_BOARDS],
 /* One scene on the running board: upload, every frame asked for. */
 /* The scene j uploaded and loaded, what the board says of it checked.
  * 0, or -1 after saying why. */
-static int render_job_load(struct board *b, struct render_opts *o, const struct render_job *j,
-                           struct link_scene_info *info, long long *upload_ms)
+static int render_job_load(struct board *b, const struct render_opts *o, struct render_run *run,
+                           const struct render_job *j, struct link_scene_info *info,
+                           long long *upload_ms)
 {
     long long load_ms = 0;
     int rc = render_session_load(b, j->bytes, j->len, info, upload_ms, &load_ms);
-    o->wall.upload += *upload_ms;
-    o->wall.load += load_ms;
+    run->wall.upload += *upload_ms;
+    run->wall.load += load_ms;
     if (rc != 0) {
         fprintf(stderr, "links1 render: %s was not loaded\n", j->scene);
         return -1;
@@ -841,8 +846,9 @@ static int render_job_load(struct board *b, struct render_opts *o, const struct 
 
 /* The frame's render arguments for job j: the band's scanlines and what
  * paper mode sets.  0, or -1 after saying why. */
-static int render_job_args(struct render_opts *o, const struct render_job *j,
-                           const struct link_scene_info *info, struct link_render_args *job_args)
+static int render_job_args(const struct render_opts *o, struct render_run *run,
+                           const struct render_job *j, const struct link_scene_info *info,
+                           struct link_render_args *job_args)
 {
     *job_args = o->args;
     if (o->bands) { /* band I of N: its scanlines (render_check_job: N <= height) */
@@ -868,7 +874,7 @@ static int render_job_args(struct render_opts *o, const struct render_job *j,
                          sizeof line);
         render_say(o, "links1 render: %s: %s\n", j->scene, line);
     }
-    o->traced_args = *job_args;
+    run->traced_args = *job_args;
     return 0;
 }
 
@@ -924,7 +930,7 @@ static int render_sink_put(struct render_sink *k, const char *path, const struct
 }
 
 /* Frame f rendered, pulled and put into the sink.  0, or -1 after saying why. */
-static int render_one_frame(struct board *b, struct render_opts *o,
+static int render_one_frame(struct board *b, const struct render_opts *o, struct render_run *run,
                             const struct link_scene_info *info, const struct render_frame_run *r,
                             struct render_sink *k, const char *path)
 {
@@ -939,15 +945,15 @@ static int render_one_frame(struct board *b, struct render_opts *o,
     struct link_render_fails fails;
     struct image img = {0, 0, NULL};
     uint8_t plan[LINK_INJECT_SIZE(LINK_INJECT_MAX + 1)];
-    uint32_t plan_len = render_frame_plan(o, r->frame, plan);
+    uint32_t plan_len = render_frame_plan(o, run, r->frame, plan);
     if (render_session_frame(b, &a, isatty(2), plan, plan_len, &s, &fails) != 0)
         return -1;
     long long t1 = board_now_ms();
     render_board_cpu(b, cpu1);
-    o->wall.frame += t1 - t0;
-    o->wall.board_prepare += s.prepare_ms;
-    o->wall.board_render += s.render_ms;
-    o->wall.render_cpu += render_board_cpu_spent(cpu0, cpu1);
+    run->wall.frame += t1 - t0;
+    run->wall.board_prepare += s.prepare_ms;
+    run->wall.board_render += s.render_ms;
+    run->wall.render_cpu += render_board_cpu_spent(cpu0, cpu1);
     if (render_session_pull(b, (int)info->width, (int)info->height, &img, &pull_ms) != 0)
         return -1;
     if (a.rows) { /* the band's scanlines only */
@@ -956,28 +962,29 @@ static int render_one_frame(struct board *b, struct render_opts *o,
         img.height = a.rows;
     }
     long long t2 = board_now_ms();
-    o->wall.pull += t2 - t1;
+    run->wall.pull += t2 - t1;
     render_faults_print(stdout, a.frame, &fails);
     int rc = render_sink_put(k, path, &img);
-    o->wall.write += board_now_ms() - t2;
+    run->wall.write += board_now_ms() - t2;
     /* The scene's upload time is told with its first frame. */
     if (rc == 0 && !o->board.quiet)
         render_summary(path, &s, &img, &a, o->scene.check_lost,
                        (double)(board_now_ms() - t0) / 1000.0, r->upload_ms, pull_ms);
-    o->traced_w = (uint32_t)img.width;
-    o->traced_h = (uint32_t)img.height;
-    o->traced_bytes = s.blob_bytes;
+    run->traced_w = (uint32_t)img.width;
+    run->traced_h = (uint32_t)img.height;
+    run->traced_bytes = s.blob_bytes;
     image_free(&img);
     return rc;
 }
 
-static int render_job(struct board *b, struct render_opts *o, const struct render_job *j)
+static int render_job(struct board *b, const struct render_opts *o, struct render_run *run,
+                      const struct render_job *j)
 {
     struct link_scene_info info;
     long long upload_ms = 0;
     struct link_render_args job_args;
-    if (render_job_load(b, o, j, &info, &upload_ms) != 0 ||
-        render_job_args(o, j, &info, &job_args) != 0)
+    if (render_job_load(b, o, run, j, &info, &upload_ms) != 0 ||
+        render_job_args(o, run, j, &info, &job_args) != 0)
         return -1;
     long first = o->first, last = o->last < 0 ? o->first : o->last;
     struct render_sink k;
@@ -997,7 +1004,7 @@ static int render_job(struct board *b, struct render_opts *o, const struct rende
             continue;
         }
         struct render_frame_run r = {&job_args, f, last, f == first ? upload_ms : 0};
-        if (render_one_frame(b, o, &info, &r, &k, path) != 0) {
+        if (render_one_frame(b, o, run, &info, &r, &k, path) != 0) {
             film_abort(&k.film);
             return -1;
         }
@@ -1033,20 +1040,21 @@ static void render_print_wall(const struct render_wall *w)
 }
 
 /* The trace of the one frame rendered, from the plugin's marks. */
-static int render_write_trace(const struct render_opts *o, const char *marks_path)
+static int render_write_trace(const struct render_opts *o, const struct render_run *run,
+                              const char *marks_path)
 {
     struct trace t;
     char err[TRACE_ERR_MAX];
     uint32_t ncs = (uint32_t)o->board.ncores - 2;
-    if (trace_decode_marks(marks_path, o->traced_w, o->traced_h, ncs, &t, err, sizeof err) != 0) {
+    if (trace_decode_marks(marks_path, run->traced_w, run->traced_h, ncs, &t, err, sizeof err) != 0) {
         fprintf(stderr, "links1 render: --trace %s: %s\n", o->trace, err);
         return -1;
     }
-    t.balance = o->traced_args.balance;
-    t.k = o->traced_args.areas;
-    t.guided = o->traced_args.guided;
-    t.flags = o->traced_args.flags & ~(uint32_t)LINK_RENDER_TRACE;
-    t.broadcast_bytes = o->traced_bytes;
+    t.balance = run->traced_args.balance;
+    t.k = run->traced_args.areas;
+    t.guided = run->traced_args.guided;
+    t.flags = run->traced_args.flags & ~(uint32_t)LINK_RENDER_TRACE;
+    t.broadcast_bytes = run->traced_bytes;
     struct out_file of;
     int rc = out_file_open(&of, o->trace, err, sizeof err);
     if (rc == 0 && trace_write(of.f, o->trace, &t, err, sizeof err) != 0) {
@@ -1099,14 +1107,15 @@ static int render_counting_open(struct render_opts *o, struct render_counting *k
 
 /* The counts printed, the trace and the profile written (rc: the run's
  * status so far), the directory removed.  0, or -1 after saying why. */
-static int render_counting_close(struct render_opts *o, struct render_counting *k, int rc)
+static int render_counting_close(struct render_opts *o, const struct render_run *run,
+                                 struct render_counting *k, int rc)
 {
     if (!k->dir[0])
         return 0;
     int r = 0;
     if (o->count_insns && insn_report_print(k->counts, o->board.ncores) < 0)
         r = -1;
-    if (o->trace && rc == 0 && render_write_trace(o, k->marks) != 0)
+    if (o->trace && rc == 0 && render_write_trace(o, run, k->marks) != 0)
         r = -1;
     char err[PATH_MAX + 256];
     if (k->profile_out && out_file_copy(k->profile, k->profile_out, err, sizeof err) != 0) {
@@ -1136,16 +1145,18 @@ int cmd_render(int argc, char **argv)
         return 1;
     }
     struct board b;
+    struct render_run run;
+    memset(&run, 0, sizeof run);
     int rc = 1;
     long long t_start = board_now_ms();
     int up = o.board_name ? board_connect(&b, &o.board, o.board_name)
                           : board_start(&b, &o.board) == 0 ?
                                 board_wait_reported(&b, o.board.timeout_s * 1000) : -1;
     if (up == 0) {
-        o.wall.boot = board_now_ms() - t_start;
+        run.wall.boot = board_now_ms() - t_start;
         rc = 0;
         for (int j = 0; j < o.njobs; j++) {
-            if (render_job(&b, &o, &o.jobs[j]) == 0)
+            if (render_job(&b, &o, &run, &o.jobs[j]) == 0)
                 continue;
             rc = 1;
             if (render_faults_unit_down(b.faults, b.nfaults < BOARD_MAX_FAULTS
@@ -1156,11 +1167,11 @@ int cmd_render(int argc, char **argv)
     long long t_stop = board_now_ms();
     if (board_stop(&b) < 0)
         rc = 1;
-    o.wall.shutdown = board_now_ms() - t_stop;
-    o.wall.total = board_now_ms() - t_start;
+    run.wall.shutdown = board_now_ms() - t_stop;
+    run.wall.total = board_now_ms() - t_start;
     if (rc == 0)
         if (!o.board.quiet)
-            render_print_wall(&o.wall);
+            render_print_wall(&run.wall);
     /* Damage the retransmission repaired fails the run only on a link
      * without --link-noise, where there should be none. */
     if (board_report_link_errors(&b) && (!o.board.link_noise_on || board_arq_failed(&b)))
@@ -1185,7 +1196,7 @@ int cmd_render(int argc, char **argv)
         printf("links1 render: %d NC(s) faulted; the frames were finished without them\n",
                b.nfaults);
     }
-    if (render_counting_close(&o, &k, rc) != 0)
+    if (render_counting_close(&o, &run, &k, rc) != 0)
         rc = 1;
     render_free_scenes(&o);
     return rc;
