@@ -75,14 +75,14 @@ static void compare_print(const char *pa, const char *pb, const struct image *a,
         printf("; %ld pixels flagged (the --mark-lost colour in B), left out\n", r->flagged);
 }
 
-/* Reads path into img; 0, or 2 after saying why. */
+/* Reads path into img; 0, or 1 after saying why. */
 static int compare_read(const char *path, struct image *img)
 {
     char err[512];
     if (image_read(path, img, err, sizeof err) == 0)
         return 0;
     fprintf(stderr, "links1 compare: %s\n", err);
-    return 2;
+    return 1;
 }
 
 /* --flags: how well MARKED's flags pick out PLAIN's pixels beyond K of REF. */
@@ -94,14 +94,14 @@ static int compare_flags(const char *pref, const char *pplain, const char *pmark
     int n = 0, rc = 0;
     for (; n < 3; n++) {
         if (compare_read(path[n], &img[n]) != 0) {
-            rc = 2;
+            rc = 1;
             break;
         }
         if (n > 0 && (img[n].width != img[0].width || img[n].height != img[0].height)) {
             fprintf(stderr, "links1 compare: %s is %dx%d but %s is %dx%d\n", path[0],
                     img[0].width, img[0].height, path[n], img[n].width, img[n].height);
             n++;
-            rc = 2;
+            rc = 1;
             break;
         }
     }
@@ -176,19 +176,19 @@ int scene_cmd_compare(int argc, char **argv)
     char err[512];
     if (image_read(pa, &a, err, sizeof err) != 0) {
         fprintf(stderr, "links1 compare: %s\n", err);
-        return 2;
+        return 1;
     }
     if (image_read(pb, &b, err, sizeof err) != 0) {
         fprintf(stderr, "links1 compare: %s\n", err);
         image_free(&a);
-        return 2;
+        return 1;
     }
     if (a.width != b.width || a.height != b.height) {
         fprintf(stderr, "links1 compare: %s is %dx%d but %s is %dx%d\n", pa, a.width, a.height,
                 pb, b.width, b.height);
         image_free(&a);
         image_free(&b);
-        return 2;
+        return 1;
     }
     struct image_compare_result r;
     image_compare(&a, &b, &o, &r);

@@ -133,7 +133,7 @@ int board_opt(struct board_opts *o, const struct cli *c, int code)
         return 1;
     case BOARD_OPT_ARITH:
         if (board_arith_code(c->arg) < 0)
-            return cli_bad_value(c, "float, soft, fixed or double");
+            return cli_bad_value(c, "float, soft, fixed, double or (render) auto");
         o->arith = c->arg;
         return 1;
     }
