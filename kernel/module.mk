@@ -11,4 +11,4 @@ test_fdt_SRCS := tests/host/test_fdt.c kernel/fdt.c
 test_fdt_ARITH := double
 
 # Idle boots do the same work every time: no core waits by looping.
-BOARD_TESTS += tests/board/idle_insns.sh
+BOARD_TESTS += tests/board/firmware/idle_insns.sh

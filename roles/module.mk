@@ -3,8 +3,8 @@ FW_SRCS += roles/unit.c roles/dm.c roles/dm_checks.c roles/dm_transfer.c roles/d
 	roles/dm_render.c roles/rc_render.c roles/rc_nc.c roles/nc_render.c
 
 # Board tests of the firmware (tests/board/fw_*.sh).
-BOARD_TESTS += tests/board/fw_board.sh tests/board/fw_smp256.sh tests/board/fw_variants.sh
+BOARD_TESTS += tests/board/firmware/fw_board.sh tests/board/firmware/fw_smp256.sh tests/board/firmware/fw_variants.sh
 # fw_board.sh's checks: damaged frames, bad commands, injected faults.
 BOARD_PROGS += fw_board_check
-fw_board_check_SRCS = tests/board/fw_board_check.c $(BOARD_LAUNCHER_SRCS)
+fw_board_check_SRCS = tests/board/firmware/fw_board_check.c $(BOARD_LAUNCHER_SRCS)
 fw_board_check_ARITH := double

@@ -21,21 +21,21 @@ test_fwcfg_ARITH := double
 # The rendering pipeline on the board (links1 render): images equal to the
 # host build, speed-ups off, an animation, refused scenes.  The full grid
 # (64 NCs too, every mode x arithmetic x scene) is `make test-full`.
-BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
-	tests/board/render_anim.sh tests/board/render_refuse.sh tests/board/render_view.sh \
-	tests/board/render_spd.sh tests/board/render_link.sh tests/board/board_named.sh \
-	tests/board/render_progress.sh tests/board/render_faults.sh tests/board/render_faults_silent.sh \
-	tests/board/render_resume.sh tests/board/render_link_noise.sh \
-	tests/board/render_trace.sh tests/board/render_refraction.sh tests/board/figures_small.sh \
-	tests/board/render_scaled.sh tests/board/render_auto.sh tests/board/render_auto_model.sh \
-	tests/board/render_density_steps.sh \
-	tests/board/render_lights.sh tests/board/render_paper.sh tests/board/an521.sh \
-	tests/board/render_view_keys.sh tests/board/render_film.sh \
-	tests/board/farm.sh tests/board/render_maps.sh tests/board/an521_named.sh \
-	tests/board/line_latency.sh tests/board/insn_profile.sh tests/board/render_escalate.sh \
-	tests/board/render_world_space.sh
-RENDER_FULL_TESTS := tests/board/farm_hosts.sh tests/board/farm_slurm.sh tests/sweeps/scale_same_full.sh tests/board/an521_grid_full.sh tests/board/render_grid_full.sh tests/board/render_faults_full.sh \
-	tests/board/render_faults_silent_full.sh
+BOARD_TESTS += tests/board/render/render_grid.sh tests/board/render/render_switches.sh \
+	tests/board/render/render_anim.sh tests/board/render/render_refuse.sh tests/board/render/render_view.sh \
+	tests/board/scene/render_spd.sh tests/board/link/render_link.sh tests/board/boards/board_named.sh \
+	tests/board/render/render_progress.sh tests/board/faults/render_faults.sh tests/board/faults/render_faults_silent.sh \
+	tests/board/faults/render_resume.sh tests/board/link/render_link_noise.sh \
+	tests/board/trace/render_trace.sh tests/board/scene/render_refraction.sh tests/board/scene/figures_small.sh \
+	tests/board/scene/render_scaled.sh tests/board/arith/render_auto.sh tests/board/arith/render_auto_model.sh \
+	tests/board/arith/render_density_steps.sh \
+	tests/board/scene/render_lights.sh tests/board/scene/render_paper.sh tests/board/an521/an521.sh \
+	tests/board/scene/render_view_keys.sh tests/board/render/render_film.sh \
+	tests/board/farm/farm.sh tests/board/scene/render_maps.sh tests/board/an521/an521_named.sh \
+	tests/board/firmware/line_latency.sh tests/board/trace/insn_profile.sh tests/board/arith/render_escalate.sh \
+	tests/board/render/render_world_space.sh
+RENDER_FULL_TESTS := tests/board/farm/farm_hosts.sh tests/board/farm/farm_slurm.sh tests/sweeps/scale_same_full.sh tests/board/an521/an521_grid_full.sh tests/board/render/render_grid_full.sh tests/board/faults/render_faults_full.sh \
+	tests/board/faults/render_faults_silent_full.sh
 
 .PHONY: test-full
 test-full: deps

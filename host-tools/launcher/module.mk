@@ -17,9 +17,9 @@ test_board_named_SRCS = tests/host/test_board_named.c $(BOARD_LAUNCHER_SRCS)
 test_board_named_ARITH := double
 # What only the user may reach on a real board: the gdb stub's unix socket,
 # a board dying in `render --board`, render's output files.
-BOARD_TESTS += tests/board/board_owner.sh
+BOARD_TESTS += tests/board/boards/board_owner.sh
 # A reused pid of another user's is a board gone (as root, with a second
 # account); paths with commas doubled in QEMU's options, on a board and
 # against a fake QEMU with bad sizes, --ram and -o refused before one starts.
-BOARD_TESTS += tests/board/other_user_boards.sh tests/board/comma_paths.sh \
-	tests/board/refused_early.sh
+BOARD_TESTS += tests/board/boards/other_user_boards.sh tests/board/boards/comma_paths.sh \
+	tests/board/boards/refused_early.sh

@@ -44,7 +44,7 @@ test_scene_file_LIBS = $(SCENE_TEXT_LIBS)
 
 # Image tests: POV-Ray agreement and arithmetic accuracy.
 BOARD_TESTS += tests/images/scenes.sh tests/images/pov.sh tests/images/accuracy.sh tests/images/adaptive.sh \
-	tests/images/import.sh tests/board/render_import.sh tests/images/view_keys.sh \
+	tests/images/import.sh tests/board/scene/render_import.sh tests/images/view_keys.sh \
 	tests/images/maps.sh tests/images/normal_tex.sh
 
 # The loader once more in the other two arithmetics it runs in on the board.

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """tests/models/make_normal_tex.py OUTDIR: small UV-mapped models with normal
 textures for the tests of imported normal maps (tests/images/normal_tex.sh,
-tests/board/render_maps.sh), written as OBJ + MTL + PNG, nothing checked in.
+tests/board/scene/render_maps.sh), written as OBJ + MTL + PNG, nothing checked in.
 
   grid.obj / grid-flat.obj / grid-plain.obj / grid-height.obj: a bent
       grid of N x N quads (smooth vertex normals, uv 0..1); grid-flat's
