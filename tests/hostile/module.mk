@@ -5,7 +5,6 @@
 HOSTILE_SRCS := tests/hostile/hostile.c
 ARITH_FREE_SRCS += $(HOSTILE_SRCS)
 
-HOST_TESTS += test_hostile
 test_hostile_SRCS = tests/hostile/test_hostile.c $(HOSTILE_SRCS) $(SCENE_TEXT_SRCS)
 test_hostile_ARITH := float
 test_hostile_LIBS = $(SCENE_TEXT_LIBS)
@@ -15,4 +14,3 @@ make_hostile_SRCS = tests/hostile/make_hostile.c $(HOSTILE_SRCS) $(SCENE_TEXT_SR
 make_hostile_ARITH := double
 make_hostile_LIBS = $(SCENE_TEXT_LIBS)
 
-BOARD_TESTS += tests/board/render/render_hostile.sh
