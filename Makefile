@@ -3,6 +3,7 @@
 # file holds the toolchains, the flags and the rules that turn lists into files.
 #
 #   make            firmware variants (float, soft, fixed, double) + host tools
+#                   + the generated scenes (build/scenes/, from host-tools/gen/)
 #   make run        render the default scene (installs missing packages first)
 #   make test       every test; last line "N passed, N failed"
 #   make bench      benchmarks (speed lives here, never in tests)
@@ -157,6 +158,8 @@ FULL_TESTS := $(PLAN_FULL)
 BOARD_PROGS :=
 BENCHES :=
 FUZZERS :=
+# GEN_SCENES: scenes written by a generator of host-tools/gen/ into build/scenes/
+GEN_SCENES :=
 
 include $(wildcard */module.mk */*/module.mk)
 
@@ -298,12 +301,13 @@ HOST_TOOL_BINS := $(addprefix $(B)/,$(HOST_TOOLS))
 BOARD_PROG_BINS := $(addprefix $(B)/tests/,$(BOARD_PROGS))
 
 # ---------------------------------------------------------------- targets
-.PHONY: all firmware host-tools deps run gdb test test-host test-board test-full bench clean fuzz \
-	fuzz-build
+.PHONY: all firmware host-tools gen-scenes deps run gdb test test-host test-board test-full bench \
+	clean fuzz fuzz-build
 
-all: firmware host-tools
+all: firmware host-tools gen-scenes
 firmware: $(FIRMWARE)
 host-tools: $(HOST_TOOL_BINS) $(BOARD_PROG_BINS)
+gen-scenes: $(GEN_SCENES) $(GEN_MAPS)
 
 deps:
 	$(Q)bash host-tools/scripts/install-deps.sh
@@ -327,8 +331,8 @@ test: deps
 	$(Q)HOST_TESTS="$(HOST_TEST_BINS)" BOARD_TESTS="$(BOARD_TESTS)" FW_DIR=$(FWB) \
 		bash tests/run.sh
 
-# Host tests only: no emulator needed.
-test-host: $(HOST_TEST_BINS)
+# Host tests only: no emulator needed (some read the generated scenes).
+test-host: $(HOST_TEST_BINS) gen-scenes
 	$(Q)HOST_TESTS="$(HOST_TEST_BINS)" BOARD_TESTS= bash tests/run.sh
 
 # Board tests only, against the already built firmware.

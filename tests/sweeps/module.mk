@@ -1,5 +1,5 @@
 # tests/sweeps/: where each arithmetic breaks (scene families of
-# make_scene.py, sweep.sh) and the speed-against-accuracy chart (pareto.sh).
+# host-tools/gen/make_scene.py, sweep.sh) and the speed-against-accuracy chart (pareto.sh).
 # (make test runs them at reduced size: tests/plan.tsv names those scripts.)
 
 # make sweeps: the full sweeps; tables and charts into docs/figures/.

@@ -22,8 +22,8 @@ board_ready auto_model || exit 0
 SIZE=200x150
 REF_WEIGHT=0.000244140625 # 1/4096
 thin=$RENDER_TMP/thin.scn fat=$RENDER_TMP/fat.scn plain=$RENDER_TMP/plain.scn
-python3 tests/sweeps/make_scene.py density_steps 24 --size $SIZE >"$thin"
-python3 tests/sweeps/make_scene.py scale 1 --size $SIZE >"$plain"
+python3 host-tools/gen/make_scene.py density_steps 24 --size $SIZE >"$thin"
+python3 host-tools/gen/make_scene.py scale 1 --size $SIZE >"$plain"
 cat >"$fat" <<EOF
 camera { eye 0 2 -6  look_at 0 1 0  up 0 1 0  fov 45 }
 resolution ${SIZE%x*} ${SIZE#*x}
@@ -118,7 +118,7 @@ fi
 
 # links1 render --auto: the board's image is the host build's of the pick
 small=$RENDER_TMP/thin-small.scn out=$RENDER_TMP/board.ppm
-python3 tests/sweeps/make_scene.py density_steps 24 --size 64x48 >"$small"
+python3 host-tools/gen/make_scene.py density_steps 24 --size 64x48 >"$small"
 if render_board auto_model_render "$out" "$small" -o "$out" --auto --ncs 2; then
     line=$(grep -- '--auto picks' "$RENDER_TMP/auto_model_render.log")
     s=$(sed -nE 's/.*picks float with ([0-9]+) density steps.*/\1/p' <<<"$line")

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The scene's density_steps on the board: the sweep family's scene
-# (tests/sweeps/make_scene.py density_steps: thin density features) with
+# (host-tools/gen/make_scene.py density_steps: thin density features) with
 # --density-steps 8 renders on the board as on the host, in float and
 # fixed, and differs from the same scene at 64 steps (features thinner
 # than a step are stepped over: the option reaches the NCs' root finder).
@@ -9,7 +9,7 @@
 board_ready render_density_steps_float render_density_steps_fixed render_density_steps_differ || exit 0
 SIZE=64x48
 scn=$RENDER_TMP/density_steps.scn
-python3 tests/sweeps/make_scene.py density_steps 64 --size $SIZE >"$scn"
+python3 host-tools/gen/make_scene.py density_steps 64 --size $SIZE >"$scn"
 for arith in float fixed; do
     ref=$RENDER_TMP/density8-host-$arith.ppm
     "$LINKS1" ref "$scn" --arith $arith --density-steps 8 -o "$ref" >"$ref.log" 2>&1

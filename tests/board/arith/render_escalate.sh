@@ -115,7 +115,7 @@ done
 # renderer's stack fits an NC task's, and the image is the host's
 name=render_escalate_depth16
 deep=$RENDER_TMP/tir16.scn
-python3 tests/sweeps/make_scene.py tir_chain 16 --size 64x48 >"$deep"
+python3 host-tools/gen/make_scene.py tir_chain 16 --size 64x48 >"$deep"
 ref=$RENDER_TMP/esc-host-depth16.ppm
 "$LINKS1" ref "$deep" --arith float --escalate -o "$ref" >"$ref.log" 2>&1
 out=$RENDER_TMP/$name.ppm

@@ -10,7 +10,7 @@
 . "$(dirname "$0")/../render_lib.sh"
 board_ready render_switches || exit 0
 SIZE=96x72
-ref=$(render_ref scenes/city.scn float $SIZE)
+ref=$(render_ref build/scenes/city.scn float $SIZE)
 for sw in none no-yclip no-xclip no-bbox no-hierarchy all clip-lists clip-tree ask-finished; do
     name=render_city_$sw
     out="$RENDER_TMP/$name.ppm"
@@ -22,7 +22,7 @@ for sw in none no-yclip no-xclip no-bbox no-hierarchy all clip-lists clip-tree a
     clip-tree) args=(--clip tree) ;;
     *) args=(--$sw) ;;
     esac
-    render_board $name "$out" scenes/city.scn -o "$out" --ncs 2 --size $SIZE "${args[@]}" ||
+    render_board $name "$out" build/scenes/city.scn -o "$out" --ncs 2 --size $SIZE "${args[@]}" ||
         continue
     render_same $name "$ref" "$out"
 done

@@ -54,7 +54,7 @@ world_frames render_world_anim_float scenes/anim.scn float 0:2
 world_frames render_world_pendulum_float scenes/pendulum.scn float 0:3
 world_frames render_world_pendulum_fixed scenes/pendulum.scn fixed 0:3
 ball3=$RENDER_TMP/ball3.scn
-bash tests/bench/make_spin.sh 3 3 "$ball3" ball
+bash host-tools/gen/make_spin.sh 3 3 "$ball3" ball
 world_frames render_world_ball_float "$ball3" float 0:2
 # escalation: the DM's wide blob keeps its world part the same way
 world_frames render_world_fly_escalate scenes/fly.scn float 0:2 --escalate
@@ -91,8 +91,8 @@ dm_tenth() {
     fi
 }
 orbit=$RENDER_TMP/orbit.scn ball5=$RENDER_TMP/ball5.scn
-bash tests/bench/make_spin.sh 5 3 "$orbit" camera
-bash tests/bench/make_spin.sh 5 3 "$ball5" ball
+bash host-tools/gen/make_spin.sh 5 3 "$orbit" camera
+bash host-tools/gen/make_spin.sh 5 3 "$ball5" ball
 dm_tenth render_world_dm_keeps "$orbit" "the camera moves"
 dm_tenth render_world_dm_moved "$ball5" "a ball moves"
 
@@ -105,7 +105,7 @@ rc_insns() { # FRAMES MODE-ARGS...
         -o "$RENDER_TMP/rc.ppm" "$@" 2>&1 | awk '$1 == "core" && $3 == "RC" { print $4 }'
 }
 orbit7=$RENDER_TMP/orbit7.scn
-bash tests/bench/make_spin.sh 7 3 "$orbit7" camera
+bash host-tools/gen/make_spin.sh 7 3 "$orbit7" camera
 rc_later() { # MODE-ARGS...
     local all one
     all=$(rc_insns 0:2 "$@")

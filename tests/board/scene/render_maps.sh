@@ -31,7 +31,7 @@ done
 
 models=$RENDER_TMP/normal_tex
 mkdir -p "$models"
-if ! python3 tests/models/make_normal_tex.py "$models" >"$models/make.log" 2>&1 ||
+if ! python3 host-tools/gen/make_normal_tex.py "$models" >"$models/make.log" 2>&1 ||
     ! "$LINKS1" import "$models/grid.obj" -o "$models/normal_tex.scn" --camera auto --smooth \
         >"$models/import.log" 2>&1; then
     for a in float_2nc_dynamic fixed_2nc_decreasing soft_1nc_static double_2nc_static; do

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Paper mode on the board (docs/scene-format.md, "Paper mode"): the scene of
-# the paper's Tables 2 and 3 (scenes/fig9.scn, hand-made clusters) rendered
+# the paper's Tables 2 and 3 (build/scenes/fig9.scn, hand-made clusters) rendered
 # with `options { paper on }` and with --paper.  The line paper mode prints
 # names every setting; the board ran what it names (the RC's area count and
 # schedule in the summary, the NCs' per-area set-up of the clipping lists in
@@ -14,8 +14,8 @@ board_ready render_paper_line render_paper_schedule render_paper_clusters render
 SIZE=64x60 H=60
 # the scene with options { paper on }
 scn="$RENDER_TMP/fig9-paper.scn"
-sed 's/^options { max_depth 5 }/options { max_depth 5  paper on }/' scenes/fig9.scn >"$scn"
-grep -q 'paper on' "$scn" || echo "FAIL render_paper_line: no options block in scenes/fig9.scn"
+sed 's/^options { max_depth 5 }/options { max_depth 5  paper on }/' build/scenes/fig9.scn >"$scn"
+grep -q 'paper on' "$scn" || echo "FAIL render_paper_line: no options block in build/scenes/fig9.scn"
 ref=$(render_ref "$scn" float $SIZE)
 out="$RENDER_TMP/paper.ppm" log="$RENDER_TMP/render_paper.log"
 if render_board render_paper "$out" "$scn" -o "$out" --ncs 2 --size $SIZE \
@@ -50,8 +50,8 @@ if render_board render_paper "$out" "$scn" -o "$out" --ncs 2 --size $SIZE \
     # the compiled scene's clusters: the author's in paper mode, more with
     # the automatic hierarchy
     nc=$(echo "$line" | sed -n 's/.*clusters \([0-9]*\) (.*/\1/p')
-    own=$(sed -nE 's/.* ([0-9]+) primitives in ([0-9]+) clusters.*/\2/p' scenes/fig9.scn | head -1)
-    auto=$("$LINKS1" compile scenes/fig9.scn -o "$RENDER_TMP/auto.l1s" |
+    own=$(sed -nE 's/.* ([0-9]+) primitives in ([0-9]+) clusters.*/\2/p' build/scenes/fig9.scn | head -1)
+    auto=$("$LINKS1" compile build/scenes/fig9.scn -o "$RENDER_TMP/auto.l1s" |
         sed -n 's/.*primitives, \([0-9]*\) clusters.*/\1/p')
     if [ -n "$nc" ] && [ "$nc" = "$own" ] && [ -n "$auto" ] && [ "$auto" -gt "$own" ]; then
         echo "PASS render_paper_clusters"
@@ -69,7 +69,7 @@ fi
 # the NCs' per-area set-up (the Y lists built) is far smaller than with the
 # paper's lists, so the lists were what the NCs ran.
 out2="$RENDER_TMP/flag.ppm"
-if render_board render_paper_flag "$out2" scenes/fig9.scn -o "$out2" --paper --ncs 2 \
+if render_board render_paper_flag "$out2" build/scenes/fig9.scn -o "$out2" --paper --ncs 2 \
     --size $SIZE --clip tree --trace "$RENDER_TMP/tree.trace"; then
     render_same render_paper_flag_same "$out" "$out2"
     setup() { awk '$1 == "area" { s += $11 } END { print s + 0 }' "$1" 2>/dev/null; }

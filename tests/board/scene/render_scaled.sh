@@ -13,7 +13,7 @@
 board_ready render_scaled || exit 0
 for knob in 0.001 100 1000; do
     scn="$RENDER_TMP/scaled_$knob.scn"
-    python3 tests/sweeps/make_scene.py scale "$knob" --size 64x48 >"$scn" || {
+    python3 host-tools/gen/make_scene.py scale "$knob" --size 64x48 >"$scn" || {
         echo "FAIL render_scaled_$knob: make_scene.py failed"
         continue
     }
@@ -23,7 +23,7 @@ for knob in 0.001 100 1000; do
 done
 for knob in 1e-06 1e+06; do
     scn="$RENDER_TMP/cluster_scaled_$knob.scn"
-    python3 tests/sweeps/make_scene.py cluster_scale "$knob" --size 64x48 >"$scn" || {
+    python3 host-tools/gen/make_scene.py cluster_scale "$knob" --size 64x48 >"$scn" || {
         echo "FAIL render_cluster_scaled_$knob: make_scene.py failed"
         continue
     }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# tests/bench/make_spin.sh N FRAMES OUT.scn [camera|ball]: SPD tetra N (written
+# host-tools/gen/make_spin.sh N FRAMES OUT.scn [camera|ball]: SPD tetra N (written
 # by links1-spd, 4^N triangles) turned into an animation of FRAMES frames.
 # By default the whole tetrahedron spins a quarter turn about the vertical
 # axis (one cluster with two keys): every triangle moves every frame, so

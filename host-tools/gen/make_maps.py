@@ -1,10 +1,13 @@
 #!/usr/bin/env python3
 """make_maps.py: writes the image maps the scenes use (8-bit RGB PNG, no
 gamma chunk: the values are linear, as the renderer reads them).
-Run from this directory: python3 make_maps.py (write_png is also the
-PNG writer of tests/models/make_normal_tex.py)"""
+Run: python3 host-tools/gen/make_maps.py [DIR] (default scenes/maps, where
+the maps are kept: the scenes name them relative to their own folder).
+write_png is also the PNG writer of host-tools/gen/make_normal_tex.py."""
 import math
+import os
 import struct
+import sys
 import zlib
 
 
@@ -72,10 +75,20 @@ def spots(x, y):
     return (g, g, g)
 
 
+# The maps: file name, width, height, texel function.
+MAPS = [("checker.png", 64, 64, checker), ("dimples.png", 64, 64, dimples),
+        ("bricks.png", 64, 64, bricks), ("rivets.png", 64, 64, rivets),
+        ("stripes.png", 64, 64, stripes), ("spots.png", 64, 64, spots)]
+
+
+def main():
+    if len(sys.argv) > 2:
+        sys.exit("usage: make_maps.py [DIR]")
+    root = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..")
+    out = sys.argv[1] if len(sys.argv) == 2 else os.path.join(root, "scenes", "maps")
+    for name, width, height, pixel in MAPS:
+        write_png(os.path.join(out, name), width, height, pixel)
+
+
 if __name__ == "__main__":
-    write_png("checker.png", 64, 64, checker)
-    write_png("dimples.png", 64, 64, dimples)
-    write_png("bricks.png", 64, 64, bricks)
-    write_png("rivets.png", 64, 64, rivets)
-    write_png("stripes.png", 64, 64, stripes)
-    write_png("spots.png", 64, 64, spots)
+    main()

@@ -3,9 +3,10 @@
 (the scene of its Tables 2 and 3): a few thousand primitives in a hierarchy
 of clusters made by hand (room -> table -> groups -> objects -> bands),
 transparent and reflecting objects among them.  Deterministic.
-Run: python3 make_fig9.py  (from scenes/)"""
-
+Run: python3 host-tools/gen/make_fig9.py OUT.scn (`make` writes
+build/scenes/fig9.scn)"""
 import math
+import sys
 
 HEADER = """# fig9.scn: a still life in the manner of the paper's Fig. 9, the scene of its
 # Tables 2 and 3 (written by make_fig9.py; do not edit by hand).  A table in
@@ -109,6 +110,8 @@ def glass_profile():
 
 
 def main():
+    if len(sys.argv) != 2:
+        sys.exit("usage: make_fig9.py OUT.scn")
     out = Out()
     body = []
     d = 0
@@ -199,9 +202,8 @@ def main():
             out.close(d + 1)
         out.close(d)
     text = HEADER % {"prims": out.prims, "clusters": out.clusters} + "".join(out.lines)
-    with open("fig9.scn", "w") as fh:
+    with open(sys.argv[1], "w") as fh:
         fh.write(text)
-    print("fig9.scn: %d primitives, %d clusters, %d bytes" % (out.prims, out.clusters, len(text)))
 
 
 if __name__ == "__main__":

@@ -2,7 +2,10 @@
 """make_city.py: writes city.scn, a scene of many objects in nested clusters
 (city -> district -> block -> building), the kind of hierarchy the paper's
 bounding boxes and screen clipping are measured on.  Deterministic: the
-"random" heights come from a fixed formula.  Run: python3 make_city.py"""
+"random" heights come from a fixed formula.
+Run: python3 host-tools/gen/make_city.py OUT.scn (`make` writes
+build/scenes/city.scn; its map, maps/bricks.png, is looked for beside OUT)"""
+import sys
 
 HEADER = """# city.scn: many objects in nested clusters (written by make_city.py).
 # 4 districts x 4 blocks x 4 buildings, each building a box with an
@@ -51,6 +54,8 @@ def building(out, n, x, z, indent):
 
 
 def main():
+    if len(sys.argv) != 2:
+        sys.exit("usage: make_city.py OUT.scn")
     out = [HEADER, "cluster city {\n"]
     n = 0
     for d, (dx, dz) in enumerate([(-6, -6), (6, -6), (-6, 6), (6, 6)]):
@@ -65,7 +70,7 @@ def main():
             out.append("    }\n")
         out.append("  }\n")
     out.append("}\n")
-    with open("city.scn", "w") as f:
+    with open(sys.argv[1], "w") as f:
         f.write("".join(out))
 
 

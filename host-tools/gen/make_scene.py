@@ -70,7 +70,7 @@ def model_gltf(s):
     lo = [min(p[i] for p in pos) for i in range(3)]
     hi = [max(p[i] for p in pos) for i in range(3)]
     doc = {
-        "asset": {"version": "2.0", "generator": "links1 tests/sweeps/make_scene.py"},
+        "asset": {"version": "2.0", "generator": "links1 host-tools/gen/make_scene.py"},
         "scene": 0, "scenes": [{"nodes": [0]}],
         "nodes": [{"name": "scaled", "mesh": 0, "scale": [s, s, s]}],
         "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],

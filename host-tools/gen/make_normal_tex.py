@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""tests/models/make_normal_tex.py OUTDIR: small UV-mapped models with normal
+"""host-tools/gen/make_normal_tex.py OUTDIR: small UV-mapped models with normal
 textures for the tests of imported normal maps (tests/images/normal_tex.sh,
 tests/board/scene/render_maps.sh), written as OBJ + MTL + PNG, nothing checked in.
 
@@ -32,10 +32,8 @@ import struct
 import sys
 
 
-sys.dont_write_bytecode = True  # no __pycache__ left in scenes/maps
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..",
-                                "scenes", "maps"))
-from make_maps import write_png  # noqa: E402 (the scenes' PNG writer)
+sys.dont_write_bytecode = True  # no __pycache__ left in host-tools/gen
+from make_maps import write_png  # noqa: E402 (the scenes' PNG writer, beside this file)
 
 
 def png(path, rows):
