@@ -38,7 +38,8 @@ bad=$(awk -F'\t' '!/^#/ && NF {
     }' "$plan")
 verdict plan_rows_well_formed "$bad"
 
-rules=$(make -s --no-print-directory test-progs-with-rules 2>&1)
+# (its own make, apart from the one that runs the tests: no MAKEFLAGS)
+rules=$(env -u MAKEFLAGS -u MFLAGS -u MAKELEVEL make -s --no-print-directory test-progs-with-rules)
 bad=
 while IFS=$'\t' read -r path _; do
     case $path in
