@@ -146,7 +146,8 @@ TEST_PLAN := tests/plan.tsv
 plan_paths = $(shell awk -F'\t' 'NF >= 4 && index(" $(1) ", " " $$4 " ") { print $$1 }' $(TEST_PLAN))
 PLAN_TEST := $(call plan_paths,host board)
 PLAN_FULL := $(call plan_paths,full)
-# HOST_TESTS: the C unit tests (rows build/tests/NAME) that get a build
+# HOST_TESTS: the C unit tests (rows build/tests/NAME, the path with the
+#   default B) that get a build
 #   rule: host_prog builds NAME from its NAME_SRCS with ASan+UBSan
 # HOST_TEST_BINS: those `make test` builds and runs (`make test-host` too)
 # BOARD_TESTS: the scripts of `make test` (and `make test-board`)
