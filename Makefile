@@ -3,6 +3,7 @@
 # file holds the toolchains, the flags and the rules that turn lists into files.
 #
 #   make            firmware variants (float, soft, fixed, double) + host tools
+#                   + the generated scenes (build/scenes/, from host-tools/gen/)
 #   make run        render the default scene (installs missing packages first)
 #   make test       every test; last line "N passed, N failed"
 #   make bench      benchmarks (speed lives here, never in tests)
@@ -120,8 +121,9 @@ FW_LIBS := -lm -lc -lgcc
 #              (proto/, fixed/, render/): they know nothing of cores or drivers
 # HOST_TOOLS:  host programs; for each NAME, NAME_SRCS lists its own sources
 #              and NAME_ARITH the arithmetic of the shared code it links
-# HOST_TESTS:  host unit tests, built with ASan+UBSan, same NAME_SRCS/NAME_ARITH
-# BOARD_TESTS: scripts under tests/board run by the test runner
+# (The tests are registered in tests/plan.tsv alone; the lists of what runs
+# are made from it below.  A C unit test's NAME_SRCS, NAME_ARITH and
+# NAME_LIBS stay in the module.mk beside the code it tests.)
 # BOARD_PROGS: host programs a board test script runs (same NAME_SRCS and
 #              NAME_ARITH; built with ASan+UBSan into build/tests/ by `make`)
 # ARITH_FREE_SRCS: host sources without num_t (they never include
@@ -135,11 +137,30 @@ FW_SRCS_an521 :=
 SHARED_SRCS :=
 ARITH_FREE_SRCS :=
 HOST_TOOLS :=
-HOST_TESTS :=
-BOARD_TESTS :=
+
+# ------------------------------------------------------------ the test plan
+# tests/plan.tsv: one row a test (path, checks, seconds, suite: host, board
+# or full; its header says more).  $(call plan_paths,SUITE...): the paths
+# of the rows of those suites, in the plan's order.
+TEST_PLAN := tests/plan.tsv
+plan_paths = $(shell awk -F'\t' 'NF >= 4 && index(" $(1) ", " " $$4 " ") { print $$1 }' $(TEST_PLAN))
+PLAN_TEST := $(call plan_paths,host board)
+PLAN_FULL := $(call plan_paths,full)
+# HOST_TESTS: the C unit tests (rows build/tests/NAME, the path with the
+#   default B) that get a build
+#   rule: host_prog builds NAME from its NAME_SRCS with ASan+UBSan
+# HOST_TEST_BINS: those `make test` builds and runs (`make test-host` too)
+# BOARD_TESTS: the scripts of `make test` (and `make test-board`)
+# FULL_TESTS: what `make test-full` runs
+HOST_TESTS := $(patsubst build/tests/%,%,$(filter build/tests/%,$(PLAN_TEST) $(PLAN_FULL)))
+HOST_TEST_BINS := $(filter build/tests/%,$(PLAN_TEST))
+BOARD_TESTS := $(filter-out build/tests/%,$(PLAN_TEST))
+FULL_TESTS := $(PLAN_FULL)
 BOARD_PROGS :=
 BENCHES :=
 FUZZERS :=
+# GEN_SCENES: scenes written by a generator of host-tools/gen/ into build/scenes/
+GEN_SCENES :=
 
 include $(wildcard */module.mk */*/module.mk)
 
@@ -278,15 +299,16 @@ $(foreach t,$(FUZZERS),$(eval $(call fuzz_prog,$(t))))
 FUZZ_BINS := $(addprefix $(B)/fuzz/,$(FUZZERS))
 
 HOST_TOOL_BINS := $(addprefix $(B)/,$(HOST_TOOLS))
-HOST_TEST_BINS := $(addprefix $(B)/tests/,$(HOST_TESTS))
 BOARD_PROG_BINS := $(addprefix $(B)/tests/,$(BOARD_PROGS))
 
 # ---------------------------------------------------------------- targets
-.PHONY: all firmware host-tools deps run gdb test test-host test-board bench clean fuzz fuzz-build
+.PHONY: all firmware host-tools gen-scenes deps run gdb test test-host test-board test-full bench \
+	clean fuzz fuzz-build
 
-all: firmware host-tools
+all: firmware host-tools gen-scenes
 firmware: $(FIRMWARE)
 host-tools: $(HOST_TOOL_BINS) $(BOARD_PROG_BINS)
+gen-scenes: $(GEN_SCENES) $(GEN_MAPS)
 
 deps:
 	$(Q)bash host-tools/scripts/install-deps.sh
@@ -310,13 +332,19 @@ test: deps
 	$(Q)HOST_TESTS="$(HOST_TEST_BINS)" BOARD_TESTS="$(BOARD_TESTS)" FW_DIR=$(FWB) \
 		bash tests/run.sh
 
-# Host tests only: no emulator needed.
-test-host: $(HOST_TEST_BINS)
+# Host tests only: no emulator needed (some read the generated scenes).
+test-host: $(HOST_TEST_BINS) gen-scenes
 	$(Q)HOST_TESTS="$(HOST_TEST_BINS)" BOARD_TESTS= bash tests/run.sh
 
 # Board tests only, against the already built firmware.
 test-board: all $(FUZZ_BINS)
 	$(Q)HOST_TESTS= BOARD_TESTS="$(BOARD_TESTS)" FW_DIR=$(FWB) bash tests/run.sh
+
+# The longest tests (suite full: 64-NC grids, farms on two hosts, Slurm).
+test-full: deps
+	$(Q)$(MAKE) $(JOBS) --no-print-directory all $(filter build/tests/%,$(FULL_TESTS))
+	$(Q)HOST_TESTS="$(filter build/tests/%,$(FULL_TESTS))" \
+		BOARD_TESTS="$(filter-out build/tests/%,$(FULL_TESTS))" FW_DIR=$(FWB) bash tests/run.sh
 
 bench: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all

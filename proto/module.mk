@@ -6,6 +6,5 @@ SHARED_SRCS += proto/crc32.c proto/hostlink.c proto/link_arq.c proto/arith.c pro
 ARITH_FREE_SRCS += proto/crc32.c proto/hostlink.c proto/link_arq.c proto/arith.c proto/areas.c proto/textfmt.c proto/machines.c
 
 # The shared formatter against the host's snprintf.
-HOST_TESTS += test_textfmt
 test_textfmt_SRCS := tests/host/test_textfmt.c
 test_textfmt_ARITH := double

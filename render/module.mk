@@ -7,21 +7,18 @@ SHARED_SRCS += render/arena.c render/words.c render/xform.c render/prim.c render
 ARITH_FREE_SRCS += render/arena.c render/words.c
 
 # Renderer tests, once per arithmetic.
-HOST_TESTS += test_prim_double test_prim_float test_prim_fixed
 test_prim_double_SRCS := tests/host/test_prim.c
 test_prim_double_ARITH := double
 test_prim_float_SRCS := tests/host/test_prim.c
 test_prim_float_ARITH := float
 test_prim_fixed_SRCS := tests/host/test_prim.c
 test_prim_fixed_ARITH := fixed
-HOST_TESTS += test_shade_double test_shade_float test_shade_fixed
 test_shade_double_SRCS := tests/host/test_shade.c
 test_shade_double_ARITH := double
 test_shade_float_SRCS := tests/host/test_shade.c
 test_shade_float_ARITH := float
 test_shade_fixed_SRCS := tests/host/test_shade.c
 test_shade_fixed_ARITH := fixed
-HOST_TESTS += test_render_double test_render_float test_render_fixed
 test_render_double_SRCS := tests/host/test_render.c
 test_render_double_ARITH := double
 test_render_float_SRCS := tests/host/test_render.c
@@ -35,8 +32,6 @@ SHARED_SRCS += render/relocate.c render/blob.c render/clip.c render/layout.c
 
 # Blob relocation and screen clipping tests, once per arithmetic; they
 # compile the scenes of scenes/ with the host scene compiler.
-HOST_TESTS += test_blob_double test_blob_float test_blob_fixed
-HOST_TESTS += test_clip_double test_clip_float test_clip_fixed
 $(foreach a,double float fixed,$(eval test_blob_$(a)_SRCS = tests/host/test_blob.c $$(SCENE_TEXT_SRCS)))
 $(foreach a,double float fixed,$(eval test_blob_$(a)_ARITH := $(a)))
 $(foreach a,double float fixed,$(eval test_blob_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
@@ -45,14 +40,12 @@ $(foreach a,double float fixed,$(eval test_clip_$(a)_ARITH := $(a)))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
 
 # Escalation (render/wide.h): float and fixed with the wide copy linked in.
-HOST_TESTS += test_wide_float test_wide_fixed
 $(foreach a,float fixed,$(eval test_wide_$(a)_SRCS = tests/host/test_wide.c $$(SCENE_TEXT_SRCS)))
 $(foreach a,float fixed,$(eval test_wide_$(a)_ARITH := $(a)))
 $(foreach a,float fixed,$(eval test_wide_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
 $(foreach a,float fixed,$(eval test_wide_$(a)_WIDE := 1))
 
 # The scene's static structure once a load (render_scene_index), each arithmetic.
-HOST_TESTS += test_scene_index_double test_scene_index_float test_scene_index_fixed
 $(foreach a,double float fixed,$(eval test_scene_index_$(a)_SRCS = tests/host/test_scene_index.c $$(SCENE_TEXT_SRCS)))
 $(foreach a,double float fixed,$(eval test_scene_index_$(a)_ARITH := $(a)))
 $(foreach a,double float fixed,$(eval test_scene_index_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))

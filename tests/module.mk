@@ -1,16 +1,15 @@
-# tests/: host unit tests (built with ASan+UBSan) and board tests.
-HOST_TESTS += test_crc32
+# tests/: the build rules of the host unit tests of tests/host/ (built with
+# ASan+UBSan), the benchmarks and the targets of tests/.  What runs is
+# tests/plan.tsv's.
 test_crc32_SRCS := tests/host/test_crc32.c
 test_crc32_ARITH := double
 
 # RC area schedules (proto/areas.c): pure, so tested on the host.
-HOST_TESTS += test_areas
 test_areas_SRCS := tests/host/test_areas.c
 test_areas_ARITH := double
 
 # Data collector FIFO, frame memory and fw_cfg/ramfb formats
 # (drivers/framemem/): the hardware-free parts, tested on the host.
-HOST_TESTS += test_framemem test_fwcfg
 test_framemem_SRCS := tests/host/test_framemem.c drivers/framemem/fm.c \
 	drivers/framemem/dc_ring.c drivers/framemem/dc_selftest_pattern.c
 test_framemem_ARITH := double
@@ -18,29 +17,7 @@ test_framemem_LIBS := -lpthread
 test_fwcfg_SRCS := tests/host/test_fwcfg.c drivers/virt/fwcfg_format.c
 test_fwcfg_ARITH := double
 
-# The rendering pipeline on the board (links1 render): images equal to the
-# host build, speed-ups off, an animation, refused scenes.  The full grid
-# (64 NCs too, every mode x arithmetic x scene) is `make test-full`.
-BOARD_TESTS += tests/board/render_grid.sh tests/board/render_switches.sh \
-	tests/board/render_anim.sh tests/board/render_refuse.sh tests/board/render_view.sh \
-	tests/board/render_spd.sh tests/board/render_link.sh tests/board/board_named.sh \
-	tests/board/render_progress.sh tests/board/render_faults.sh tests/board/render_faults_silent.sh \
-	tests/board/render_resume.sh tests/board/render_link_noise.sh \
-	tests/board/render_trace.sh tests/board/render_refraction.sh tests/board/figures_small.sh \
-	tests/board/render_scaled.sh tests/board/render_auto.sh tests/board/render_auto_model.sh \
-	tests/board/render_density_steps.sh \
-	tests/board/render_lights.sh tests/board/render_paper.sh tests/board/an521.sh \
-	tests/board/render_view_keys.sh tests/board/render_film.sh \
-	tests/board/farm.sh tests/board/render_maps.sh tests/board/an521_named.sh \
-	tests/board/line_latency.sh tests/board/insn_profile.sh tests/board/render_escalate.sh \
-	tests/board/render_world_space.sh tests/board/signals.sh
-RENDER_FULL_TESTS := tests/board/farm_hosts.sh tests/board/farm_slurm.sh tests/sweeps/scale_same_full.sh tests/board/an521_grid_full.sh tests/board/render_grid_full.sh tests/board/render_faults_full.sh \
-	tests/board/render_faults_silent_full.sh
 
-.PHONY: test-full
-test-full: deps
-	$(Q)$(MAKE) $(JOBS) --no-print-directory all
-	$(Q)HOST_TESTS= BOARD_TESTS="$(RENDER_FULL_TESTS)" FW_DIR=$(FWB) bash tests/run.sh
 # Host speed per arithmetic (wall clock, never a test), then the board's.
 BENCHES += tests/bench/bench_host.sh
 BENCHES += tests/bench/bench_render.sh tests/bench/bench_arith.sh tests/bench/bench_scale.sh
@@ -62,12 +39,10 @@ BENCHES += tests/bench/bench_board_scale.sh
 BENCHES += tests/bench/bench_world.sh
 
 # links1 compare --flags: precision and recall of a render's flags.
-HOST_TESTS += test_image_flags
 test_image_flags_SRCS := tests/host/test_image_flags.c host-tools/image/image_compare.c
 test_image_flags_ARITH := double
 
 # Encodings of the rendering commands and the NC statistics the RC sums.
-HOST_TESTS += test_render_link
 test_render_link_SRCS := tests/host/test_render_link.c host-tools/gigs/render_faults.c
 test_render_link_ARITH := float
 
@@ -86,19 +61,7 @@ figures: deps
 		$(B)/pareto/pareto-board.png $(B)/pareto/pareto-board.tsv docs/figures/
 BENCHES += tests/bench/bench_wallclock.sh
 
-# The include rules of docs/layers.md: the tree follows them and the
-# checker refuses each kind of wrong include (`make check-layers` alone).
-BOARD_TESTS += tests/layers/layers.sh
-# What the docs name (paths, links, links1 options) exists.
-BOARD_TESTS += tests/docs/doc_refs.py
-# Every command's --help and the options it accepts are the same; usage errors are one line.
-BOARD_TESTS += tests/style/help_options.py
-# The runner counts what it says: hangs, crashes, early ends, unplanned tests.
-BOARD_TESTS += tests/runner/runner.sh
-# Every deliberate fault of tests/mutants/ still applies to the tree.
-BOARD_TESTS += tests/mutants/mutants_apply.sh
-# Every test the plan declares is run by some list.
-BOARD_TESTS += tests/runner/plan_rows.sh
+# The include rules of docs/layers.md (tests/layers/layers.sh in make test).
 .PHONY: check-layers
 check-layers:
 	$(Q)bash tests/layers/check_layers.sh
@@ -110,3 +73,9 @@ test-mutants: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all $(HOST_TEST_BINS) $(FUZZ_BINS)
 	$(Q)HOST_TESTS="$(HOST_TEST_BINS)" BOARD_TESTS="$(BOARD_TESTS)" FW_DIR=$(FWB) \
 		python3 tests/mutants/mutants.py
+
+# The C unit tests that have a build rule (a test_NAME_SRCS), one a line:
+# tests/runner/plan_rows.sh holds them against the plan.
+.PHONY: test-progs-with-rules
+test-progs-with-rules:
+	@printf '%s\n' $(sort $(patsubst %_SRCS,%,$(filter test_%_SRCS,$(.VARIABLES))))

@@ -7,9 +7,10 @@
 # prints "SKIP name: why"; it counts as run, and the summary line ends
 # ", N skipped" when any was.
 #
-# Every test is declared in tests/plan.tsv: its name, how many checks it
-# runs, the seconds it may take, and optionally "host" for a script that
-# boots no board (it then runs beside the host unit tests).  A test fails (one failure more,
+# Every test is declared in tests/plan.tsv: its path (as the lists give it),
+# how many checks it runs, the seconds it may take, and its suite: "host"
+# for one that boots no board (it then runs beside the host unit tests),
+# "board" or "full" for one run alone.  A test fails (one failure more,
 # named) when it
 #   - is not declared there, or runs another number of checks than declared
 #     (one that ends early prints fewer);
@@ -19,7 +20,8 @@
 # Each test's exit status is written to a file beside its log atomically
 # (written aside, then renamed), and read back only once the test ended.
 #
-# Environment (set by the Makefile): HOST_TESTS, BOARD_TESTS, FW_DIR;
+# Environment (set by the Makefile from the plan): HOST_TESTS (programs),
+# BOARD_TESTS (scripts), FW_DIR;
 # TEST_TIME_SCALE multiplies every limit (default 1); TEST_PLAN and
 # TEST_LOG_DIR name another plan and log folder (tests/runner/ tests the
 # runner itself with them).
@@ -41,11 +43,12 @@ skipped=0
 log_dir=${TEST_LOG_DIR:-build/test-logs}
 mkdir -p "$log_dir"
 
-# plan_of NAME: "CHECKS LIMIT" from the plan, or nothing.
+# plan_of PATH: "CHECKS LIMIT" from the plan, or nothing.
 plan_of() {
     awk -F'\t' -v n="$1" '$1 == n && NF >= 3 { print $2, $3; exit }' "$plan"
 }
-# on_host NAME: true when the plan marks the test "host" (it boots no board).
+# on_host PATH: true when the plan's suite of the test is "host" (it boots
+# no board).
 on_host() {
     awk -F'\t' -v n="$1" '$1 == n && $4 == "host" { found = 1; exit } END { exit !found }' "$plan"
 }
@@ -57,7 +60,7 @@ exec_one() {
     local name log limit checks
     name=$(basename "$label")
     log="$log_dir/$name.log"
-    read -r checks limit < <(plan_of "$name")
+    read -r checks limit < <(plan_of "$label")
     limit=$(( ${limit:-60} * scale ))
     local start=$SECONDS
     timeout --kill-after=10 "$limit" "$@" >"$log" 2>&1
@@ -79,7 +82,7 @@ report_one() {
     p=${p:-0} f=${f:-0} s=${s:-0}
     local ran=$((p + f + s))
     grep -E '^(PASS|FAIL|SKIP|  also) ' "$log" 2>/dev/null
-    read -r checks plimit < <(plan_of "$name")
+    read -r checks plimit < <(plan_of "$label")
     case $rc in
         '' | *[!0-9]*)
             echo "FAIL $label: left no exit status"
@@ -97,7 +100,7 @@ report_one() {
             fi ;;
     esac
     if [ -z "${checks:-}" ]; then
-        echo "FAIL $label: not declared in $plan (name, checks, seconds)"
+        echo "FAIL $label: not declared in $plan (path, checks, seconds, suite)"
         f=$((f + 1))
     elif [ "$ran" -ne "$checks" ]; then
         echo "FAIL $label: ran $ran checks, $plan declares $checks"
@@ -120,7 +123,7 @@ HOST_JOBS=${HOST_JOBS:-$(nproc 2>/dev/null || echo 2)}
 host_list=(${HOST_TESTS:-})
 board_list=()
 for t in ${BOARD_TESTS:-}; do
-    if on_host "$(basename "$t")"; then
+    if on_host "$t"; then
         host_list+=("$t")
     else
         board_list+=("$t")

@@ -1,6 +1,5 @@
 # drivers/imsu/: the intercomputer memory swapping unit.
 FW_SRCS += drivers/imsu/imsu.c drivers/imsu/imsu_board.c
 
-HOST_TESTS += test_imsu
 test_imsu_SRCS := tests/host/test_imsu.c drivers/imsu/imsu.c
 test_imsu_ARITH := double

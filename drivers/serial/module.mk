@@ -3,6 +3,5 @@
 FW_SRCS += drivers/serial/uart.c drivers/serial/hostlink_tx.c \
 	drivers/serial/line.c drivers/serial/linemsg.c
 
-HOST_TESTS += test_linemsg
 test_linemsg_SRCS := tests/host/test_linemsg.c drivers/serial/linemsg.c
 test_linemsg_ARITH := double

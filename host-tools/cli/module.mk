@@ -19,10 +19,5 @@ render-clip-stats_SRCS = host-tools/cli/clip_stats_main.c $(HT_OPTS_CLI_SRCS) $(
 render-clip-stats_ARITH := float
 render-clip-stats_LIBS = $(SCENE_TEXT_LIBS)
 
-# Board tests (tests/board/lib.sh is their shared helper, not a test).
-BOARD_TESTS += tests/board/boot_smp.sh tests/board/channels.sh tests/board/idle66.sh \
-	tests/board/fault.sh
+# Benchmarks of a board's boot, its channels and the host link.
 BENCHES += tests/bench/bench_boot.sh tests/bench/bench_channels.sh tests/bench/bench_link.sh
-# links1 farm's hosts file and DIR as another local user would shape them
-# (a throw-away second account; boots no board).
-BOARD_TESTS += tests/board/other_user_farm.sh

@@ -5,7 +5,6 @@ ARITH_FREE_SRCS += $(HT_GIGS_SRCS)
 
 # A board that sends what it should not (on a socketpair): its text printed
 # escaped, a serial frame pull bounded by the frame, no SIGPIPE.
-HOST_TESTS += test_board_hostile
 test_board_hostile_SRCS = tests/host/test_board_hostile.c $(HT_GIGS_SRCS) $(BOARD_LAUNCHER_SRCS) \
 	$(HT_IMAGE_IO_SRCS)
 test_board_hostile_ARITH := double

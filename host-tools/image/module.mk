@@ -7,10 +7,8 @@ HT_IMAGE_COMPARE_SRCS := host-tools/image/image_compare.c
 # Charts: a gnuplot script piped to the gnuplot command (links1 replay --timeline).
 HT_IMAGE_FILM_SRCS := host-tools/image/film.c host-tools/image/image_save.c host-tools/image/chart.c
 ARITH_FREE_SRCS += $(HT_IMAGE_IO_SRCS) $(HT_IMAGE_FILM_SRCS)
-BOARD_TESTS += tests/images/ref_film.sh
 # (image_compare.c reads render/render.h for the --mark-lost colour)
 
-HOST_TESTS += test_scene_image
 test_scene_image_SRCS = tests/host/test_scene_image.c $(HT_IMAGE_IO_SRCS) host-tools/image/image_save.c \
 	$(HT_IMAGE_COMPARE_SRCS) host-tools/cli/cmd_compare.c $(HT_OPTS_CLI_SRCS)
 test_scene_image_ARITH := double

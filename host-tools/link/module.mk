@@ -5,20 +5,15 @@ HT_LINK_SRCS := host-tools/link/board.c host-tools/link/board_frames.c host-tool
 ARITH_FREE_SRCS += $(HT_LINK_SRCS)
 
 # Host unit tests of the link framing, the message encodings, the session.
-HOST_TESTS += test_hostlink
 test_hostlink_SRCS := tests/host/test_hostlink.c
 test_hostlink_ARITH := double
-HOST_TESTS += test_hostlink_msgs
 test_hostlink_msgs_SRCS = tests/host/test_hostlink_msgs.c $(BOARD_LAUNCHER_SRCS)
 test_hostlink_msgs_ARITH := double
-HOST_TESTS += test_hostlink_transfer
 test_hostlink_transfer_SRCS = tests/host/test_hostlink_transfer.c $(BOARD_LAUNCHER_SRCS)
 test_hostlink_transfer_ARITH := double
 test_hostlink_transfer_LIBS := -lpthread
 # The host side of the shared-memory path against a fake board and RAM.
-HOST_TESTS += test_link_shared
 test_link_shared_SRCS = tests/host/test_link_shared.c $(BOARD_LAUNCHER_SRCS)
 test_link_shared_ARITH := double
-HOST_TESTS += test_hostlink_session
 test_hostlink_session_SRCS = tests/host/test_hostlink_session.c $(BOARD_LAUNCHER_SRCS)
 test_hostlink_session_ARITH := double

@@ -21,7 +21,6 @@ HT_SCENE_POV_SRCS := host-tools/scene/scene_pov.c
 ARITH_FREE_SRCS += $(filter-out host-tools/scene/scene_board.c,$(HT_SCENE_SRCS)) $(HT_SCENE_POV_SRCS)
 
 # Host tests of the format, the parser and the loader (ASan + UBSan).
-HOST_TESTS += test_scene_load test_scene_parse
 test_scene_load_SRCS = tests/host/test_scene_load.c $(SCENE_TEXT_SRCS)
 test_scene_load_ARITH := double
 test_scene_load_LIBS = $(SCENE_TEXT_LIBS)
@@ -31,27 +30,16 @@ test_scene_parse_LIBS = $(SCENE_TEXT_LIBS)
 
 # Paper mode: what it sets in the scene, the compiled bytes and the render
 # arguments (scene_paper.c).
-HOST_TESTS += test_scene_paper
 test_scene_paper_SRCS = tests/host/test_scene_paper.c $(SCENE_TEXT_SRCS)
 test_scene_paper_ARITH := double
 test_scene_paper_LIBS = $(SCENE_TEXT_LIBS)
 
 # How ref and render both read a scene file (scene_file.c).
-HOST_TESTS += test_scene_file
 test_scene_file_SRCS = tests/host/test_scene_file.c $(SCENE_TEXT_SRCS)
 test_scene_file_ARITH := double
 test_scene_file_LIBS = $(SCENE_TEXT_LIBS)
 
-# Image tests: POV-Ray agreement and arithmetic accuracy.
-BOARD_TESTS += tests/images/scenes.sh tests/images/pov.sh tests/images/accuracy.sh tests/images/adaptive.sh \
-	tests/images/import.sh tests/board/render_import.sh tests/images/view_keys.sh \
-	tests/images/maps.sh tests/images/normal_tex.sh
-# Binary PLY imports as its ASCII twin, a model that is a FIFO is refused
-# at once; a map's image is confined as a model's texture is.
-BOARD_TESTS += tests/images/ply_binary.sh tests/images/map_confine.sh
-
 # The loader once more in the other two arithmetics it runs in on the board.
-HOST_TESTS += test_scene_load_float test_scene_load_fixed
 test_scene_load_float_SRCS = $(test_scene_load_SRCS)
 test_scene_load_float_ARITH := float
 test_scene_load_float_LIBS = $(SCENE_TEXT_LIBS)
@@ -61,20 +49,17 @@ test_scene_load_fixed_LIBS = $(SCENE_TEXT_LIBS)
 
 # Models made elsewhere: each format, the material mapping, bad models,
 # the model statement (tests/models/).
-HOST_TESTS += test_scene_import
 test_scene_import_SRCS = tests/host/test_scene_import.c $(SCENE_TEXT_SRCS)
 test_scene_import_ARITH := double
 test_scene_import_LIBS = $(SCENE_TEXT_LIBS)
 
 # The automatic hierarchy: tree invariants and the same image on and off,
 # in each arithmetic of the shared renderer.
-HOST_TESTS += test_auto_hierarchy_double test_auto_hierarchy_float test_auto_hierarchy_fixed
 $(foreach a,double float fixed,$(eval test_auto_hierarchy_$(a)_SRCS = tests/host/test_auto_hierarchy.c $$(SCENE_TEXT_SRCS)))
 $(foreach a,double float fixed,$(eval test_auto_hierarchy_$(a)_ARITH := $(a)))
 $(foreach a,double float fixed,$(eval test_auto_hierarchy_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
 
 # Smooth triangles (`model { smooth on }`), each arithmetic.
-HOST_TESTS += test_smooth_double test_smooth_float test_smooth_fixed
 $(foreach a,double float fixed,$(eval test_smooth_$(a)_SRCS = tests/host/test_smooth.c $$(SCENE_TEXT_SRCS)))
 $(foreach a,double float fixed,$(eval test_smooth_$(a)_ARITH := $(a)))
 $(foreach a,double float fixed,$(eval test_smooth_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
@@ -83,14 +68,12 @@ $(foreach a,double float fixed,$(eval test_smooth_$(a)_LIBS = $$(SCENE_TEXT_LIBS
 # process, the wire form cut and damaged, children that crash, abort, exit
 # badly, hang, send too much or send a malformed model, and libassimp's own
 # crashes (tests/fuzz/assimp-crashes/).
-HOST_TESTS += test_model_child
 test_model_child_SRCS = tests/host/test_model_child.c $(SCENE_TEXT_SRCS)
 test_model_child_ARITH := double
 test_model_child_LIBS = $(SCENE_TEXT_LIBS)
 
 # A model's texture paths: confined to its directory (or one the user
 # allows), regular files only, never a blocking read.
-HOST_TESTS += test_textures
 test_textures_SRCS = tests/host/test_textures.c $(SCENE_TEXT_SRCS) host-tools/opts/tmp_dir.c \
 	host-tools/opts/exit_clean.c
 test_textures_ARITH := double

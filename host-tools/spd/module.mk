@@ -10,8 +10,6 @@ links1-spd_LIBS = $(SCENE_TEXT_LIBS)
 
 # The NFF reader (entities, errors, hostile files) and the generators
 # against the SPD's own output (tests/spd/official/).
-HOST_TESTS += test_nff
 test_nff_SRCS = tests/host/test_nff.c $(SPD_GEN_SRCS) $(SCENE_TEXT_SRCS)
 test_nff_ARITH := double
 test_nff_LIBS = $(SCENE_TEXT_LIBS)
-BOARD_TESTS += tests/images/spd_official.sh

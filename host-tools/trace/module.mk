@@ -5,7 +5,6 @@ HT_TRACE_SRCS := host-tools/trace/trace_file.c host-tools/trace/trace_scale.c \
 ARITH_FREE_SRCS += $(HT_TRACE_SRCS)
 
 # Frame traces and their replay on equal-speed units.
-HOST_TESTS += test_trace
 test_trace_SRCS := tests/host/test_trace.c host-tools/trace/trace_file.c \
 	host-tools/trace/trace_scale.c host-tools/trace/replay.c host-tools/trace/replay_timeline.c
 test_trace_ARITH := double

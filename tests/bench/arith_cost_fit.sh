@@ -30,7 +30,7 @@ for fk in scale:1 scale:10 cluster_scale:0.3 grazing:10 coincident:0.001 thin_tr
     thin_triangles:3000 tir_chain:2 tir_chain:8 ellipsoid_ratio:10 ellipsoid_ratio:1000 \
     map_repeat:1 map_repeat:100; do
     scn=$out/${fk/:/-}.scn
-    python3 tests/sweeps/make_scene.py "${fk%%:*}" "${fk#*:}" --size "$SIZE" >"$scn" || exit 1
+    python3 host-tools/gen/make_scene.py "${fk%%:*}" "${fk#*:}" --size "$SIZE" >"$scn" || exit 1
     scenes+=("$scn")
 done
 

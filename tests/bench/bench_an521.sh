@@ -43,7 +43,7 @@ render_ms() { # MACHINE: the board's render time of the frame, 8 NCs, float
 }
 LAT_ROUNDS=${LAT_ROUNDS:-1000}
 latency() { # MACHINE CORE: "median min max" round trip in us (links1 selftest latency)
-    "$LINKS1" selftest --quiet --machine "$1" --smp 4 latency --rounds "$LAT_ROUNDS" \
+    "$LINKS1" selftest --quiet --machine "$1" --ncs 2 latency --rounds "$LAT_ROUNDS" \
         --core "$2" >"$out/l.log" 2>&1
     sed -nE 's/.*: median ([0-9.]+) us \(min ([0-9.]+), max ([0-9.]+);.*/\1 \2 \3/p' "$out/l.log"
 }

@@ -30,7 +30,7 @@ echo "### Speed against accuracy ($SIZE, $NCS NCs, decreasing)"
 echo
 echo "| scene | arithmetic | NC instructions (M) | vs float | within 1/255 of double | within 2/255 | largest difference |"
 echo "|---|---|---|---|---|---|---|"
-for scene in scenes/demo.scn scenes/glass.scn scenes/molecule.scn scenes/city.scn; do
+for scene in scenes/demo.scn scenes/glass.scn scenes/molecule.scn build/scenes/city.scn; do
     name=$(basename "$scene" .scn)
     ref="$TMP/$name-double.ppm"
     "$LINKS1" ref "$scene" --arith double --size "$SIZE" -o "$ref" >/dev/null 2>&1 ||

@@ -3,7 +3,7 @@
 # board: SPD tetra 9 (262,144 triangles) and teapot 64 (269,824), written as
 # NFF (teapot 64's text scene would pass 64 MiB), and a generated terrain
 # of 100,352 triangles imported with the model statement
-# (tests/bench/make_terrain.py).  Each is compiled, rendered once on the
+# (host-tools/gen/make_terrain.py).  Each is compiled, rendered once on the
 # board with the defaults,
 #   links1 render SCENE --arith float --ncs BENCH_BIG_NCS --size BENCH_BIG_SIZE --count-insns
 # (default 64 NCs, 512x480; with --trace for the DM's preparation of the
@@ -40,7 +40,7 @@ echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|"
 for db in $SCENES; do
     name=${db%-*} n=${db#*-}
     if [ "$name" = terrain ]; then
-        python3 tests/bench/make_terrain.py "$n" "$TMP/terrain" ||
+        python3 host-tools/gen/make_terrain.py "$n" "$TMP/terrain" ||
             { echo "bench_big: make_terrain.py $n failed" >&2; exit 1; }
         scene="$TMP/terrain/terrain.scn"
     else

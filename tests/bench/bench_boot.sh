@@ -5,6 +5,6 @@
 # host cores.
 set -eu
 cd "$(dirname "$0")/../.."
-SMP=${SMP:-10}
-echo "bench_boot: links1 boot --smp $SMP --count-insns"
-build/links1 boot --smp "$SMP" --quiet --count-insns
+NCS=${NCS:-8}
+echo "bench_boot: links1 boot --ncs $NCS --count-insns"
+build/links1 boot --ncs "$NCS" --quiet --count-insns

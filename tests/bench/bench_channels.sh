@@ -5,5 +5,5 @@
 # Wall-clock figures: the selftest lines print KiB/s.
 set -eu
 cd "$(dirname "$0")/../.."
-echo "bench_channels: links1 selftest --smp 10 --link serial --mib 64 --bytes 8388608 stress link-sink link-source"
-build/links1 selftest --smp 10 --link serial --quiet --mib 64 --bytes $((8 << 20)) stress link-sink link-source
+echo "bench_channels: links1 selftest --ncs 8 --link serial --mib 64 --bytes 8388608 stress link-sink link-source"
+build/links1 selftest --ncs 8 --link serial --quiet --mib 64 --bytes $((8 << 20)) stress link-sink link-source

@@ -7,7 +7,7 @@
 #              each next frame while the current one renders)
 #   2. farm, one host (':'):             a job a frame
 #   3. farm, two hosts (':' and a throw-away sshd on 127.0.0.1,
-#      tests/board/farm_sshd.sh; needs root)
+#      tests/board/farm/farm_sshd.sh; needs root)
 #
 # From 1 and 2: the farm's own cost a frame (c = (T1 - Tplain) / F) and its
 # share of a plain frame.  The model of H equal, independent hosts:
@@ -22,7 +22,7 @@
 #   BENCH_NCS (8)
 set -u
 cd "$(dirname "$0")/../.."
-. tests/board/farm_sshd.sh
+. tests/board/farm/farm_sshd.sh
 LINKS1=${LINKS1:-build/links1}
 scene=${BENCH_SCENE:-scenes/fly.scn} frames=${BENCH_FRAMES:-0:11} size=${BENCH_SIZE:-320x240}
 ncs=${BENCH_NCS:-8}

@@ -16,7 +16,7 @@ median() { sort -n | awk '{v[NR]=$1} END {print v[int((NR+1)/2)]}'; }
 # secs FILE CHECK: the seconds "(N s)" at the end of a selftest line.
 secs() { grep "^selftest $2: ok" "$1" | sed 's/.*(\([0-9.]*\) s)$/\1/'; }
 for i in $(seq "$RUNS"); do
-    build/links1 selftest --smp 3 --quiet --link fast --bytes $((8 << 20)) \
+    build/links1 selftest --ncs 1 --quiet --link fast --bytes $((8 << 20)) \
         link-sink link-source >"$tmp/st$i.log" 2>&1
     secs "$tmp/st$i.log" link-sink >>"$tmp/up"
     secs "$tmp/st$i.log" link-source >>"$tmp/down"

@@ -59,7 +59,7 @@ for cfg in "static 0" "dynamic 64" "dynamic 256" "dynamic 1024" "decreasing 64" 
     echo "| $1 | $([ "$2" = 0 ] && echo - || echo $2) | $(grep -o '[0-9]* areas' "$TMP/run.log" | head -1 | grep -o '[0-9]*') | $(m $max) | $(m $tot) | $(ratio $tot $max) | $(m $rc) |"
 done
 echo
-CITY=(scenes/city.scn --size 160x120 --ncs 16)
+CITY=(build/scenes/city.scn --size 160x120 --ncs 16)
 echo "### Speed-ups switched off (city.scn 160x120, float, 16 NCs, decreasing)"
 echo
 echo "| speed-ups | NC total (M insns) | vs all on |"

@@ -3,7 +3,7 @@
 # space (the paper's method, the default) and in world space
 # (--world-space: the DM keeps the triangles' world form and the NCs turn
 # the camera rays), against the NCs' frame, on SPD tetra scenes where
-# something moves (tests/bench/make_spin.sh N FRAMES OUT MOVE): the camera
+# something moves (host-tools/gen/make_spin.sh N FRAMES OUT MOVE): the camera
 # (the DM keeps every triangle), a small ball in front of the tetrahedron
 # (it prepares the ball's cluster again and keeps the triangles) or the
 # whole tetrahedron spinning (it prepares everything again).  Per scene, move and mode,
@@ -53,7 +53,7 @@ for c in $cases; do
     scn=$TMP/$move$n.scn
     arg=$move
     [ "$move" = spin ] && arg=""
-    bash tests/bench/make_spin.sh "$n" "$frames" "$scn" $arg 2>/dev/null || { echo "bench_world: make_spin.sh $n $move failed"; exit 1; }
+    bash host-tools/gen/make_spin.sh "$n" "$frames" "$scn" $arg 2>/dev/null || { echo "bench_world: make_spin.sh $n $move failed"; exit 1; }
     tris=$((4 ** n))
     for mode in eye world; do
         args=""

@@ -14,7 +14,7 @@
 # traced at 64x60 and scaled), glass.scn at 256x240
 # (Table 3).  FIG_SMALL=1 shrinks every size and NC list (well under 30 s).
 # Parts "2p" and "3p": Tables 2 and 3 as the paper ran them, in paper mode
-# (links1 render --paper): scenes/fig9.scn at 512x480 (the row without
+# (links1 render --paper): build/scenes/fig9.scn at 512x480 (the row without
 # boxes traced at 64x60 and scaled), 16 NCs, simple dynamic balancing on
 # 2,400 and 480 scanline areas, Table 2 non-refracting (its 82 s is Table
 # 3's non-refracting run).
@@ -299,7 +299,7 @@ SCALE2P=$((W2 / WL))
 [ $((WL * SCALE2P)) = "$W2" ] && [ $((HL * SCALE2P)) = "$H2" ] ||
     fail "Table 2 (paper): $SIZE2P is not $SIZE2PLOW times a whole number"
 read -r K1 K2 <<<"$T2PK"
-P2=(scenes/fig9.scn --paper --ncs 2 --count-insns)
+P2=(build/scenes/fig9.scn --paper --ncs 2 --count-insns)
 # prow NAME TYPE SWITCHES: traces (once per K with clipping, once without),
 # replays at both K into the table.
 prow() {
@@ -333,13 +333,13 @@ prow "bounding boxes (type 3)" 3 "--refraction off --no-yclip --no-xclip"
 prow "+ Y clipping (type 2)" 2 "--refraction off --no-xclip"
 prow "+ X clipping: all (type 1)" 1 "--refraction off"
 prims=$(sed -nE 's/.* ([0-9]+) primitives in ([0-9]+) clusters.*/\1 primitives, \2 clusters/p' \
-    scenes/fig9.scn | head -1)
+    build/scenes/fig9.scn | head -1)
 {
-    echo "Table 2 as the paper ran it: scenes/fig9.scn ($prims, by hand) at $SIZE2P, paper mode"
+    echo "Table 2 as the paper ran it: build/scenes/fig9.scn ($prims, by hand) at $SIZE2P, paper mode"
     echo "(links1 render --paper: src/trc by angle, depth fixed at 5, no automatic hierarchy, the"
     echo "clipping lists, NCs asking once finished), refraction off, 16 NCs, simple dynamic"
     echo "balancing on scanline areas; frame s at 1 MIPS, the DM preparing during the previous frame."
-    echo "Trace: links1 render scenes/fig9.scn --paper --ncs 2 --count-insns --refraction off SWITCHES"
+    echo "Trace: links1 render build/scenes/fig9.scn --paper --ncs 2 --count-insns --refraction off SWITCHES"
     echo "--areas K --trace T (rows without clipping once, K = $K1); replay: links1 replay T --ncs 16"
     echo "--balance lines --areas K --ask finished --pipelined.  The row marked * was traced at"
     echo "$SIZE2PLOW and replayed with --scale $SCALE2P."
@@ -364,7 +364,7 @@ board "$TMP/bp3-on.log" "${P2[@]}" --size "$SIZE2P" --refraction on --areas "$K1
     --pipelined >"$TMP/rp3on.txt" || fail "replay table 3 (paper)"
 {
     echo "Table 3 as the paper ran it: the run of Table 2's type 1 ($K1 areas) against the same"
-    echo "with refraction on (links1 render scenes/fig9.scn --paper --ncs 2 --count-insns --refraction"
+    echo "with refraction on (links1 render build/scenes/fig9.scn --paper --ncs 2 --count-insns --refraction"
     echo "on|off --areas $K1 --trace T; replay as Table 2)."
     echo
     echo "| transmission | frame s | NC instructions (M) | refracted rays |"

@@ -29,9 +29,6 @@ fuzz_image_map_SRCS = tests/fuzz/fuzz_image_map.c $(SCENE_TEXT_SRCS)
 fuzz_image_map_ARITH := float
 fuzz_image_map_LIBS = $(SCENE_TEXT_LIBS)
 
-# A short run of each harness over its corpus (no board needed).
-BOARD_TESTS += tests/fuzz/smoke.sh
-
 # Writes fuzz_hostlink's seed frames (with the one encoder).
 BOARD_PROGS += seed_frames
 seed_frames_SRCS := tests/fuzz/seed_frames.c

@@ -12,11 +12,20 @@
 #include "render/blob.h"
 #include "render/clip.h"
 
-/* The scenes every test here runs over: the demo and the paper-like ones. */
+/* The scenes every test here runs over: the demo and the paper-like ones
+ * (city is written by `make` into build/scenes/: tb_scene_path). */
 static const char *const tb_scenes[] = {"demo", "city", "glass", "molecule", "anim"};
 #define TB_SCENE_COUNT (sizeof tb_scenes / sizeof tb_scenes[0])
 
-/* scenes/NAME.scn compiled at its resolution divided by div (1: as
+/* Where scene NAME is: build/scenes/ for those `make` writes from
+ * host-tools/gen/ (city, fig9), scenes/ for the others. */
+static inline void tb_scene_path(char *path, size_t size, const char *name)
+{
+    int made = strcmp(name, "city") == 0 || strcmp(name, "fig9") == 0;
+    snprintf(path, size, "%s/%s.scn", made ? "build/scenes" : "scenes", name);
+}
+
+/* Scene NAME (tb_scene_path) compiled at its resolution divided by div (1: as
  * written); NULL (and a line saying why) on failure. */
 static inline uint8_t *tb_compile_flags(const char *name, int div, uint32_t flags, size_t *len);
 
@@ -31,7 +40,7 @@ static inline uint8_t *tb_compile_flags(const char *name, int div, uint32_t flag
     char path[128], err[SD_ERR_MAX];
     struct sd_scene s;
     uint8_t *buf = NULL;
-    snprintf(path, sizeof path, "scenes/%s.scn", name);
+    tb_scene_path(path, sizeof path, name);
     if (sd_parse_file(path, &s, err, sizeof err) != 0) {
         printf("cannot parse %s: %s\n", path, err);
         return NULL;

@@ -13,14 +13,14 @@
 
 enum { T_SIZE = CLI_OWN_CODES, T_PPM, T_FRAME, T_FRAMES };
 
-static const struct option t_options[] = {
-    BOARD_LONG_OPTIONS,
-    {"size", required_argument, NULL, T_SIZE},
-    {"ppm", no_argument, NULL, T_PPM},
-    {"frame", required_argument, NULL, T_FRAME},
-    {"frames", required_argument, NULL, T_FRAMES},
-    {NULL, 0, NULL, 0},
+static const struct cli_optdef t_optdefs[] = {
+    {"size", "WxH", T_SIZE, "the size"},
+    {"ppm", NULL, T_PPM, "write PPM\nnot PNG"},
+    {"frame", "N", T_FRAME, "one frame"},
+    {"frames", "A:B", T_FRAMES, "frames A..B"},
+    CLI_OPTDEF_END,
 };
+static struct option t_options[64]; /* board_optdefs and t_optdefs (main makes it) */
 
 /* Runs cli_next over argv (NULL-terminated) until the end or the first
  * CLI_BAD; the codes go to codes (with operands and values in args), what
@@ -130,8 +130,8 @@ static void test_board_options(void)
     struct board_opts o;
     char msg[256];
     board_opts_init(&o);
-    char *smp[] = {"x", "--smp", "66", NULL};
-    CHECK_EQ_INT(t_board(smp, &o, msg, sizeof msg), 1);
+    char *ncs[] = {"x", "--ncs", "64", NULL};
+    CHECK_EQ_INT(t_board(ncs, &o, msg, sizeof msg), 1);
     CHECK_EQ_INT(o.ncores, 66);
     char *arith[] = {"x", "--arith=fixed", NULL};
     CHECK_EQ_INT(t_board(arith, &o, msg, sizeof msg), 1);
@@ -141,15 +141,16 @@ static void test_board_options(void)
     CHECK_EQ_INT(o.quiet, 1);
     char *own[] = {"x", "--ppm", NULL};
     CHECK_EQ_INT(t_board(own, &o, msg, sizeof msg), 0);
-    char *few[] = {"x", "--smp", "2", NULL};
+    char *few[] = {"x", "--ncs", "0", NULL};
     CHECK_EQ_INT(t_board(few, &o, msg, sizeof msg), -1);
-    CHECK(strstr(msg, "--smp '2': want a whole number from 3 to 256") != NULL);
+    CHECK(strstr(msg, "--ncs '0': want a whole number from 1 to 254 (see links1 test --help)") !=
+          NULL);
     char *junk[] = {"x", "--ram", "12x", NULL};
     CHECK_EQ_INT(t_board(junk, &o, msg, sizeof msg), -1);
     CHECK(strstr(msg, "--ram '12x': want a whole number") != NULL);
     char *bad_arith[] = {"x", "--arith", "quad", NULL};
     CHECK_EQ_INT(t_board(bad_arith, &o, msg, sizeof msg), -1);
-    CHECK(strstr(msg, "--arith 'quad': want float, soft, fixed or double") != NULL);
+    CHECK(strstr(msg, "--arith 'quad': want float, soft, fixed, double or (render) auto") != NULL);
     CHECK_EQ_INT(o.ncores, 66); /* refused values change nothing */
     CHECK(strcmp(o.arith, "fixed") == 0);
 }
@@ -196,8 +197,36 @@ static void test_numbers(void)
     fclose(null);
 }
 
+/* The getopt table and the help lines come from the same definitions:
+ * every definition is in the table (with --help), and each shows in the
+ * help as "  --name VALUE" with its text from column 21, a text's second
+ * line below it; a table too small is refused. */
+static void test_optdefs(void)
+{
+    static const struct cli_optdef *const lists[] = {t_optdefs, NULL};
+    struct option small[3], table[8];
+    CHECK_EQ_INT(cli_optdefs_table(lists, small, 3), -1);
+    CHECK_EQ_INT(cli_optdefs_table(lists, table, 8), 0);
+    CHECK(strcmp(table[1].name, "ppm") == 0 && table[1].has_arg == no_argument &&
+          table[1].val == T_PPM);
+    CHECK(strcmp(table[0].name, "size") == 0 && table[0].has_arg == required_argument);
+    CHECK(strcmp(table[4].name, "help") == 0 && table[5].name == NULL);
+    char *text = NULL;
+    size_t len = 0;
+    FILE *f = open_memstream(&text, &len);
+    cli_optdefs_help(f, t_optdefs);
+    fclose(f);
+    CHECK(strstr(text, "  --size WxH         the size\n") != NULL);
+    CHECK(strstr(text, "  --ppm              write PPM\n                     not PNG\n") != NULL);
+    free(text);
+}
+
 int main(void)
 {
+    static const struct cli_optdef *const lists[] = {board_optdefs, t_optdefs, NULL};
+    if (cli_optdefs_table(lists, t_options, sizeof t_options / sizeof t_options[0]) != 0)
+        return 1;
+    RUN(test_optdefs);
     RUN(test_operands_keep_their_place);
     RUN(test_bad_options_named);
     RUN(test_board_options);

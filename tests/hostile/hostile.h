@@ -6,7 +6,7 @@
  * Each class names the words its refusal must contain, on the host
  * (scene_load and render_blob_build, tests/hostile/test_hostile.c) and on
  * the board (the DM's "scene refused: ..." answer,
- * tests/board/render_hostile.sh, files from make_hostile). */
+ * tests/board/render/render_hostile.sh, files from make_hostile). */
 #ifndef LINKS1_TESTS_HOSTILE_H
 #define LINKS1_TESTS_HOSTILE_H
 

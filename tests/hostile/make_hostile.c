@@ -1,6 +1,6 @@
 /* make_hostile.c: writes each hostile class (hostile.c) as DIR/NAME.l1s,
  * the good base scene they are made from as DIR/base.l1s, and prints one line per class, "NAME<TAB>EXPECTED", the words the
- * board's refusal must contain (tests/board/render_hostile.sh).
+ * board's refusal must contain (tests/board/render/render_hostile.sh).
  * Usage: make_hostile DIR */
 #include <stdio.h>
 #include <stdlib.h>

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # tests/images/normal_tex.sh: imported normal textures as tangent-space
-# normal maps on the host (models written by tests/models/make_normal_tex.py):
+# normal maps on the host (models written by host-tools/gen/make_normal_tex.py):
 #   normal_tex_import_kinds: a model material's normal texture (OBJ `norm`)
 #     is imported as a normal map, its height texture (`map_bump`) as a
 #     bump map;
@@ -34,7 +34,7 @@ out=build/test-images/normal_tex
 rm -rf "$out"
 mkdir -p "$out"
 size=96x72
-if ! python3 tests/models/make_normal_tex.py "$out" >"$out/make.log" 2>&1; then
+if ! python3 host-tools/gen/make_normal_tex.py "$out" >"$out/make.log" 2>&1; then
     echo "FAIL normal_tex_models: $(tail -n 1 "$out/make.log")"
     exit 0
 fi

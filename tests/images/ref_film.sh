@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # tests/images/ref_film.sh: `links1 ref --frames A:B -o OUT.webm|.apng`
 # makes one film through ffmpeg, as `links1 render` does (its board test:
-# tests/board/render_film.sh).  ffprobe counts the frames of a VP9 film and
+# tests/board/render/render_film.sh).  ffprobe counts the frames of a VP9 film and
 # reads its size (odd, padded to even); the animated PNG's frames are the
 # numbered PNGs' pixel for pixel; without ffmpeg in PATH the film is
 # refused and nothing is written.

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# tests/images/scenes.sh: every scene in scenes/ compiles, its compiled form
+# tests/images/scenes.sh: every scene in scenes/ and every scene `make`
+# writes into build/scenes/ (host-tools/gen/) compiles, its compiled form
 # loads and renders on the host (the same loader the board runs), and the
 # animation's frames differ from one another.
 # Prints "PASS scene_NAME" / "FAIL scene_NAME: why" and "PASS anim_frames_move".
@@ -7,7 +8,7 @@ set -u
 cd "$(dirname "$0")/../.."
 out=build/test-images/scenes
 mkdir -p "$out"
-for scn in scenes/*.scn scenes/pov/*.scn; do
+for scn in scenes/*.scn scenes/pov/*.scn build/scenes/*.scn; do
     name=$(basename "$scn" .scn)
     if ! err=$(build/links1 compile "$scn" -o "$out/$name.l1s" 2>&1); then
         echo "FAIL scene_$name: compile: $err"

@@ -145,7 +145,8 @@ def check_lines():
     not applied only when `make test-mutants` runs).  One PASS/FAIL line."""
     mutants = parse(LIST)
     with open(os.path.join(ROOT, "tests", "plan.tsv")) as f:
-        planned = {l.split("\t")[0] for l in f if l.strip() and not l.startswith("#")}
+        planned = {os.path.basename(l.split("\t")[0]) for l in f
+                   if l.strip() and not l.startswith("#")}
     bad = []
     for m in mutants:
         try:

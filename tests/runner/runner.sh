@@ -31,10 +31,13 @@ echo 'FAIL host$1_met: host$2 did not start while it ran'; exit 1"
 }
 meet a b
 meet b a
-printf 'good.sh\t2\t10\nbad.sh\t2\t10\nhang.sh\t2\t2\ncrash.sh\t3\t10\nearly.sh\t3\t10\nsilent.sh\t1\t10\n' \
-    >"$tmp/plan.tsv"
-printf 'skips.sh\t2\t10\n' >>"$tmp/plan.tsv"
-printf 'hosta.sh\t1\t30\thost\nhostb.sh\t1\t30\thost\n' >>"$tmp/plan.tsv"
+# The plan's rows: path, checks, seconds, suite (as tests/plan.tsv's).
+row() { printf '%s\t%s\t%s\t%s\n' "$tmp/$1.sh" "$2" "$3" "$4" >>"$tmp/plan.tsv"; }
+row good 2 10 board; row bad 2 10 board; row hang 2 2 board; row crash 3 10 board
+row early 3 10 board; row silent 1 10 board; row skips 2 10 board
+row hosta 1 30 host; row hostb 1 30 host
+# a row of another path of the same name is no row of this test
+printf 'unplanned.sh\t1\t10\tboard\n' >>"$tmp/plan.tsv"
 list=""
 for t in good bad hang crash early silent unplanned skips hosta hostb; do list="$list $tmp/$t.sh"; done
 out=$(TEST_PLAN="$tmp/plan.tsv" TEST_LOG_DIR="$tmp/logs" HOST_TESTS= BOARD_TESTS="$list" \

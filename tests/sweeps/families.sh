@@ -38,5 +38,5 @@ family_scene() {
     local gen=$1
     [ "$gen" = scale_down ] && gen=scale
     [ "$gen" = cluster_scale_down ] && gen=cluster_scale
-    python3 tests/sweeps/make_scene.py "$gen" "$2" --size "$3"
+    python3 host-tools/gen/make_scene.py "$gen" "$2" --size "$3"
 }

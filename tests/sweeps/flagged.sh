@@ -67,7 +67,7 @@ done
 for case in "1000 fixed16 q15_16" "3000 fixed14 q17_14" "3000 fixed12 q19_12"; do
     read -r ratio prog name <<<"$case"
     thin=$out/thin$ratio-$prog
-    python3 tests/sweeps/make_scene.py ellipsoid_ratio "$ratio" --size 96x72 >"$thin.scn"
+    python3 host-tools/gen/make_scene.py ellipsoid_ratio "$ratio" --size 96x72 >"$thin.scn"
     verdict=
     if build/links1-ref-double "$thin.scn" -o "$thin-double.ppm" >"$thin.log" 2>&1 &&
         build/links1-ref-$prog "$thin.scn" -o "$thin-plain.ppm" >>"$thin.log" 2>&1 &&

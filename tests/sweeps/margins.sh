@@ -23,7 +23,7 @@ for run in "thin_triangles 3000 fixed" "thin_triangles 10000 fixed" "tir_chain 1
     read -r family knob arith <<<"$run"
     name=margin_${family}_${knob}_$arith
     scn=$out/$family-$knob.scn
-    python3 tests/sweeps/make_scene.py "$family" "$knob" --size 160x120 >"$scn" || {
+    python3 host-tools/gen/make_scene.py "$family" "$knob" --size 160x120 >"$scn" || {
         echo "FAIL $name: make_scene.py failed"; continue; }
     if ! "$LINKS1" ref "$scn" --arith double -o "$out/$family-$knob-double.png" >/dev/null 2>&1 ||
         ! "$LINKS1" ref "$scn" --arith "$arith" --mark-lost -o "$out/$family-$knob-$arith.png" \

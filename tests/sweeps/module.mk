@@ -1,13 +1,6 @@
 # tests/sweeps/: where each arithmetic breaks (scene families of
-# make_scene.py, sweep.sh) and the speed-against-accuracy chart (pareto.sh).
-# make test runs the sweeps at reduced size: every wrong pixel flagged; and
-# the scale family gives the same image at every scale (scale_same.sh).
-BOARD_TESTS += tests/sweeps/flagged.sh tests/sweeps/scale_same.sh
-# and the 160x120 scenes whose hit-or-miss decisions closer than the
-# arithmetic's error left wrong pixels unflagged (margins.sh)
-BOARD_TESTS += tests/sweeps/margins.sh
-# and the Pareto chart at reduced size: both charts, board points exact.
-BOARD_TESTS += tests/sweeps/pareto_small.sh
+# host-tools/gen/make_scene.py, sweep.sh) and the speed-against-accuracy chart (pareto.sh).
+# (make test runs them at reduced size: tests/plan.tsv names those scripts.)
 
 # make sweeps: the full sweeps; tables and charts into docs/figures/.
 .PHONY: sweeps

@@ -32,7 +32,7 @@
 #   bash tests/sweeps/pareto.sh [--out DIR] [--charts-only]
 #     (--charts-only: the fronts and charts again from DIR/*.raw, nothing run)
 #   PARETO_SMALL=1 bash tests/sweeps/pareto.sh --out DIR   # the reduced run
-#     (tests/board/pareto_small.sh: 40x30, one run, depth 2 only; on the
+#     (tests/sweeps/pareto_small.sh: 40x30, one run, depth 2 only; on the
 #     board float, soft, double and fixed adaptive and float with
 #     refraction off)
 set -eu

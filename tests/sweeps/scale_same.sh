@@ -41,7 +41,7 @@ rm -rf "$out"
 mkdir -p "$out"
 render() { # KNOB ARITH [FAMILY]: prints the image path, or nothing when refused
     local scn=$out/${3:-scale}-$1.scn img=$out/${3:-scale}-$1-$2.png
-    python3 tests/sweeps/make_scene.py "${3:-scale}" "$1" --size 64x48 >"$scn" || return
+    python3 host-tools/gen/make_scene.py "${3:-scale}" "$1" --size 64x48 >"$scn" || return
     "$LINKS1" ref "$scn" --arith "$2" -o "$img" >"$img.log" 2>&1 && echo "$img"
 }
 for arith in double float fixed; do
@@ -126,7 +126,7 @@ done
 # own beside the scale-1 scene is refused in fixed, naming the span, and
 # renders in double
 scn=$out/tiny-cluster.scn
-python3 tests/sweeps/make_scene.py scale 1 --size 64x48 >"$scn"
+python3 host-tools/gen/make_scene.py scale 1 --size 64x48 >"$scn"
 printf 'cluster tiny {\n  scale 1e-6\n  translate 0 1 -4\n  sphere { material red  radius 1 }\n}\n' >>"$scn"
 for arith in double fixed; do
     name=scale_same_tiny_cluster_$arith
