@@ -450,9 +450,7 @@ static int render_auto_check(const struct render_opts *o)
         }
         return 0;
     }
-    const char *chosen = o->arith_named ? "--arith" : o->scene.min_weight >= 0 ? "--min-weight"
-                         : o->scene.density_steps >= 0 ? "--density-steps"
-                         : o->scene.paper ? "--paper" : NULL;
+    const char *chosen = o->arith_named ? "--arith" : scene_opts_model_given(&o->scene);
     if (o->model_auto && chosen) {
         fprintf(stderr, "links1 render: --auto chooses the arithmetic, min_weight and density "
                 "steps, so it takes no %s (--arith auto chooses the arithmetic alone)\n", chosen);

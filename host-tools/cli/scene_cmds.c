@@ -258,9 +258,7 @@ static int ref_cmd_parse(struct ref_cmd *r, int argc, char **argv)
         for (int k = from; pass && k < optind; k++)
             r->args[r->nargs++] = argv[k];
     }
-    const char *model_word = r->so.min_weight >= 0 ? "--min-weight"
-                             : r->so.density_steps >= 0 ? "--density-steps"
-                             : r->so.paper ? "--paper" : NULL;
+    const char *model_word = scene_opts_model_given(&r->so);
     if (r->model && (r->arith_given || model_word))
         return cli_usage_error("links1 ref", "--auto chooses the arithmetic, min_weight and "
                                "density steps, so it takes no %s (--arith auto chooses the "
@@ -275,8 +273,8 @@ static int ref_cmd_parse(struct ref_cmd *r, int argc, char **argv)
 
 /* --arith auto or --auto: the build chosen, and what it adds to the
  * arguments.  0, or -1 after saying why. */
-static int ref_cmd_auto(struct ref_cmd *r, struct arith_auto_choice *pick, char steps[16],
-                        char weight[40])
+static int ref_cmd_auto(struct ref_cmd *r, struct arith_auto_choice *pick,
+                        struct scene_opts_words *model)
 {
     struct arith_auto_words w;
     arith_auto_scene_words(&r->so, r->first, &w);
@@ -289,16 +287,13 @@ static int ref_cmd_auto(struct ref_cmd *r, struct arith_auto_choice *pick, char 
     r->arith = pick->build;
     if (pick->escalate)
         r->args[r->nargs++] = "--escalate";
-    if (pick->density_steps >= 0) { /* --auto's model, after the words given */
-        snprintf(steps, 16, "%d", pick->density_steps);
-        r->args[r->nargs++] = "--density-steps";
-        r->args[r->nargs++] = steps;
-    }
-    if (pick->min_weight >= 0) {
-        snprintf(weight, 40, "%.17g", pick->min_weight);
-        r->args[r->nargs++] = "--min-weight";
-        r->args[r->nargs++] = weight;
-    }
+    struct scene_file_opts picked; /* --auto's model, after the words given */
+    scene_file_opts_init(&picked);
+    picked.density_steps = pick->density_steps;
+    picked.min_weight = pick->min_weight;
+    int n = scene_opts_words(&picked, SCENE_OPTS_ALL, model);
+    for (int i = 0; i < n; i++)
+        r->args[r->nargs++] = (char *)model->w[i];
     return 0;
 }
 
@@ -339,10 +334,11 @@ int scene_cmd_ref(int argc, char **argv)
     r.nargs = 1;
     int rc = ref_cmd_parse(&r, argc, argv);
     struct arith_auto_choice pick;
-    char steps[16], weight[40], prog[PATH_MAX + 32];
+    struct scene_opts_words model;
+    char prog[PATH_MAX + 32];
     const char *build = NULL;
     if (rc == 0 && strcmp(r.arith, "auto") == 0 && r.scene)
-        rc = ref_cmd_auto(&r, &pick, steps, weight) == 0 ? 0 : 3;
+        rc = ref_cmd_auto(&r, &pick, &model) == 0 ? 0 : 3;
     if (rc == 0)
         rc = ref_cmd_build(&r, &build) == 0 ? 0 : 2;
     if (rc == 0 && ref_program_path(build, prog, sizeof prog) != 0)

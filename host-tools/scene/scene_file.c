@@ -72,32 +72,7 @@ static int scene_file_compile(const char *path, const struct scene_file_opts *o,
     struct sd_scene s;
     if (scene_file_parse_from(path, o->textures_from, &s, err, errlen) != 0)
         return -1;
-    if (o->paper && !s.paper)
-        sd_paper_apply(&s);
-    if (o->width) {
-        s.view.width = o->width;
-        s.view.height = o->height;
-    }
-    if (o->max_depth >= 0)
-        s.view.max_depth = o->max_depth;
-    if (o->min_weight >= 0)
-        s.view.min_weight = o->min_weight;
-    if (o->density_steps >= 0)
-        s.view.density_steps = o->density_steps;
-    if (o->no_auto_hierarchy)
-        s.no_auto_hierarchy = 1;
-    if (o->mark_lost)
-        s.view.flags |= SCN_OPT_MARK_LOST;
-    if (o->check_lost)
-        s.view.flags |= SCN_OPT_CHECK_LOST;
-    if (o->world_space)
-        s.view.flags |= SCN_OPT_WORLD_SPACE;
-    if (o->refractionless >= 0)
-        s.view.flags = o->refractionless ? s.view.flags | SCN_OPT_REFRACTIONLESS
-                                         : s.view.flags & ~SCN_OPT_REFRACTIONLESS;
-    if (o->refraction >= 0)
-        s.view.flags = o->refraction ? s.view.flags & ~SCN_OPT_NO_REFRACTION
-                                     : s.view.flags | SCN_OPT_NO_REFRACTION;
+    scene_opts_apply(o, &s);
     info->auto_hierarchy = !s.no_auto_hierarchy;
     info->own_clusters = s.n_clusters;
     char why[SD_ERR_MAX];
@@ -170,19 +145,11 @@ static int scene_file_bytes_any(const char *path, const struct scene_file_opts *
     info->own_clusters = -1;
     if (!scene_file_ends_with(path, ".l1s"))
         return scene_file_compile(path, o, buf, len, info, err, errlen);
-    const char *change = o->width ? "--size" : o->max_depth >= 0 ? "--max-depth"
-                         : o->min_weight >= 0 ? "--min-weight"
-                         : o->density_steps >= 0 ? "--density-steps"
-                         : o->refractionless >= 0 ? "--refractionless"
-                         : o->refraction >= 0 ? "--refraction"
-                         : o->no_auto_hierarchy ? "--no-auto-hierarchy"
-                         : o->mark_lost ? "--mark-lost"
-                         : o->check_lost ? "--check-lost"
-                         : o->world_space ? "--world-space"
-                         : o->paper ? "--paper (give the text scene, or compile it with "
-                                      "options { paper on })" : NULL;
+    const char *change = scene_opts_given(o);
     if (change) {
-        snprintf(err, errlen, "%s: %s needs a text scene, not a compiled one", path, change);
+        snprintf(err, errlen, "%s: %s needs a text scene, not a compiled one%s", path, change,
+                 strcmp(change, "--paper") == 0
+                     ? " (give the text scene, or compile it with options { paper on })" : "");
         return -1;
     }
     if (scene_file_read(path, buf, len, err, errlen) != 0)
@@ -204,4 +171,105 @@ void scene_file_frame_path(const char *out, long frame, char *buf, size_t n)
     if (!dot || (slash && dot < slash))
         dot = out + strlen(out);
     snprintf(buf, n, "%.*s-%04ld%s", (int)(dot - out), out, frame, dot);
+}
+
+/* flags with bit set (on) or cleared. */
+static uint32_t scene_opts_bit(uint32_t flags, uint32_t bit, int on)
+{
+    return on ? flags | bit : flags & ~bit;
+}
+
+void scene_opts_apply(const struct scene_file_opts *o, struct sd_scene *s)
+{
+    if (o->paper && !s->paper)
+        sd_paper_apply(s);
+    if (o->width) {
+        s->view.width = o->width;
+        s->view.height = o->height;
+    }
+    if (o->max_depth >= 0)
+        s->view.max_depth = o->max_depth;
+    if (o->min_weight >= 0)
+        s->view.min_weight = o->min_weight;
+    if (o->density_steps >= 0)
+        s->view.density_steps = o->density_steps;
+    if (o->no_auto_hierarchy)
+        s->no_auto_hierarchy = 1;
+    s->view.flags |= (o->mark_lost ? SCN_OPT_MARK_LOST : 0) |
+                     (o->check_lost ? SCN_OPT_CHECK_LOST : 0) |
+                     (o->world_space ? SCN_OPT_WORLD_SPACE : 0);
+    if (o->refractionless >= 0)
+        s->view.flags = scene_opts_bit(s->view.flags, SCN_OPT_REFRACTIONLESS, o->refractionless);
+    if (o->refraction >= 0)
+        s->view.flags = scene_opts_bit(s->view.flags, SCN_OPT_NO_REFRACTION, !o->refraction);
+}
+
+const char *scene_opts_model_given(const struct scene_file_opts *o)
+{
+    return o->min_weight >= 0 ? "--min-weight" : o->density_steps >= 0 ? "--density-steps"
+           : o->paper ? "--paper" : NULL;
+}
+
+const char *scene_opts_given(const struct scene_file_opts *o)
+{
+    return o->width ? "--size" : o->max_depth >= 0 ? "--max-depth"
+           : o->min_weight >= 0 ? "--min-weight"
+           : o->density_steps >= 0 ? "--density-steps"
+           : o->refractionless >= 0 ? "--refractionless"
+           : o->refraction >= 0 ? "--refraction"
+           : o->no_auto_hierarchy ? "--no-auto-hierarchy"
+           : o->mark_lost ? "--mark-lost"
+           : o->check_lost ? "--check-lost"
+           : o->world_space ? "--world-space"
+           : o->paper ? "--paper" : NULL;
+}
+
+/* A word for a switch that is given. */
+static void scene_opts_switch(struct scene_opts_words *w, int *n, int on, const char *word)
+{
+    if (on)
+        w->w[(*n)++] = word;
+}
+
+/* A word and its value. */
+static void scene_opts_pair(struct scene_opts_words *w, int *n, const char *word,
+                            const char *value)
+{
+    w->w[(*n)++] = word;
+    w->w[(*n)++] = value;
+}
+
+int scene_opts_words(const struct scene_file_opts *o, enum scene_opts_for use,
+                     struct scene_opts_words *w)
+{
+    int n = 0, all = use == SCENE_OPTS_ALL;
+    if (all && o->width) {
+        snprintf(w->size, sizeof w->size, "%dx%d", o->width, o->height);
+        scene_opts_pair(w, &n, "--size", w->size);
+    }
+    if (o->max_depth >= 0) {
+        snprintf(w->depth, sizeof w->depth, "%d", o->max_depth);
+        scene_opts_pair(w, &n, "--max-depth", w->depth);
+    }
+    if (o->min_weight >= 0) {
+        snprintf(w->weight, sizeof w->weight, "%.17g", o->min_weight);
+        scene_opts_pair(w, &n, "--min-weight", w->weight);
+    }
+    if (o->density_steps >= 0) {
+        snprintf(w->steps, sizeof w->steps, "%d", o->density_steps);
+        scene_opts_pair(w, &n, "--density-steps", w->steps);
+    }
+    if (o->refraction >= 0)
+        scene_opts_pair(w, &n, "--refraction", o->refraction ? "on" : "off");
+    if (o->refractionless >= 0)
+        scene_opts_pair(w, &n, "--refractionless", o->refractionless ? "on" : "off");
+    scene_opts_switch(w, &n, o->no_auto_hierarchy, "--no-auto-hierarchy");
+    scene_opts_switch(w, &n, all && o->mark_lost, "--mark-lost");
+    scene_opts_switch(w, &n, all && o->check_lost, "--check-lost");
+    scene_opts_switch(w, &n, all && o->world_space, "--world-space");
+    scene_opts_switch(w, &n, o->paper, "--paper");
+    for (int i = 0; i < SD_TEXTURES_FROM_MAX && o->textures_from[i]; i++)
+        scene_opts_pair(w, &n, "--textures-from", o->textures_from[i]);
+    w->w[n] = NULL;
+    return n;
 }

@@ -14,7 +14,7 @@ struct scene_file_opts {
     int width, height;  /* --size WxH; 0: the scene's */
     int max_depth;      /* --max-depth D; -1: the scene's */
     double min_weight;  /* --min-weight W (adaptive depth); -1: the scene's */
-    int density_steps;  /* --density-steps N (density root finder); -1: the scene's */
+    int density_steps;  /* the density root finder's steps; -1: the scene's */
     int refractionless; /* --refractionless on|off: 1 or 0; -1: the scene's */
     int refraction;     /* --refraction on|off: 1 or 0; -1: the scene's */
     int no_auto_hierarchy; /* --no-auto-hierarchy: 1 compiles without it */
@@ -69,5 +69,29 @@ int scene_file_bytes_info(const char *path, const struct scene_file_opts *o, uin
 
 /* out with the frame number before its extension: "a.png", 7 -> "a-0007.png". */
 void scene_file_frame_path(const char *out, long frame, char *buf, size_t n);
+/* o's changes made to s (paper mode first: the others win over it). */
+void scene_opts_apply(const struct scene_file_opts *o, struct sd_scene *s);
+
+/* The first option o gives that changes the scene ("--max-depth"), or
+ * NULL when none does (--textures-from changes nothing). */
+const char *scene_opts_given(const struct scene_file_opts *o);
+
+/* The first option o gives of those --auto chooses itself (min_weight,
+ * density steps, paper mode's fixed depth), or NULL. */
+const char *scene_opts_model_given(const struct scene_file_opts *o);
+
+/* The words that give o again on a command line: every option o gives,
+ * its value after it; for a pre-render of --arith auto or --auto, only
+ * those that change what is judged (not --size, which the pre-render
+ * sets, nor --mark-lost, --check-lost and --world-space). */
+enum scene_opts_for { SCENE_OPTS_ALL, SCENE_OPTS_PRE_RENDER };
+#define SCENE_OPTS_MAX_WORDS (2 * (12 + SD_TEXTURES_FROM_MAX) + 1)
+struct scene_opts_words {
+    const char *w[SCENE_OPTS_MAX_WORDS]; /* NULL-ended */
+    char size[32], depth[16], weight[40], steps[16];
+};
+/* Fills w from o; the count of words. */
+int scene_opts_words(const struct scene_file_opts *o, enum scene_opts_for use,
+                     struct scene_opts_words *w);
 
 #endif

@@ -2,9 +2,8 @@
  * compiled (struct scene_file_opts), each defined once here: its name,
  * value, range, help line and the field it sets.  `links1 render`,
  * `links1 ref` (and links1-ref-<arith>) read them through this table and
- * print its help; --arith auto and --auto hand them on to their
- * pre-renders from it; scene_file.c applies them and names the first one
- * given when a compiled scene cannot take it. */
+ * print its help.  scene_file.h applies them, names them and writes them
+ * as words again for a command line of a child. */
 #ifndef LINKS1_HOST_SCENE_OPTS_H
 #define LINKS1_HOST_SCENE_OPTS_H
 
@@ -32,26 +31,5 @@ extern const struct cli_optdef scene_optdefs[];
 /* The scene option cli_next returned as code taken into o: 1 taken, 0
  * not a scene option, -1 after saying what is wrong with its value. */
 int scene_opts_take(struct scene_file_opts *o, const struct cli *c, int code);
-
-/* o's changes made to s (paper mode first: the others win over it). */
-void scene_opts_apply(const struct scene_file_opts *o, struct sd_scene *s);
-
-/* The first option o gives that changes the scene ("--max-depth"), or
- * NULL when none does (--textures-from changes nothing). */
-const char *scene_opts_given(const struct scene_file_opts *o);
-
-/* The words that give o again on a command line: every option o gives,
- * its value after it; for a pre-render of --arith auto or --auto, only
- * those that change what is judged (not --size, which the pre-render
- * sets, nor --mark-lost, --check-lost and --world-space). */
-enum scene_opts_for { SCENE_OPTS_ALL, SCENE_OPTS_PRE_RENDER };
-#define SCENE_OPTS_MAX_WORDS (2 * (12 + SD_TEXTURES_FROM_MAX) + 1)
-struct scene_opts_words {
-    const char *w[SCENE_OPTS_MAX_WORDS]; /* NULL-ended */
-    char size[32], depth[16], weight[40], steps[16];
-};
-/* Fills w from o; the count of words. */
-int scene_opts_words(const struct scene_file_opts *o, enum scene_opts_for use,
-                     struct scene_opts_words *w);
 
 #endif
