@@ -47,6 +47,47 @@ enum {
     FARM_OPT_SLURM
 };
 
+#define FARM_GO (-1) /* a step's "go on" (else it returns the exit status) */
+
+/* Who runs the jobs. */
+enum farm_backend { FARM_PARALLEL, FARM_SLURM };
+
+/* What the command line asks. */
+struct farm_opts {
+    const char *scene, *dir, *hosts_file, *ext, *film;
+    const char *extra[FARM_MAX_EXTRA]; /* render arguments after "--" */
+    int nextra, retries, fps, fps_given;
+    int bands;                         /* 0: frames first..last, a job a frame */
+    enum farm_backend backend;
+    long first, last;
+};
+
+/* A farm's run: the paths resolved, the items, and the rounds' state.
+ * The items are frames first..last, or the bands 0..bands-1 of frame
+ * first: item0..item0+nitems-1. */
+struct farm_run {
+    const struct farm_opts *o;
+    char scene[PATH_MAX], hosts_path[PATH_MAX], dir[PATH_MAX], tool[PATH_MAX];
+    char fw_dir[PATH_MAX];    /* $FW_DIR made absolute, "" when unset */
+    int dir_fd, nhosts_file;  /* DIR; the host lines of --hosts */
+    const char *unit;         /* what a job makes: "frame" or "band" */
+    long item0, nitems;
+    long *todo, ntodo;        /* this round's items, rising */
+    char (*todo_s)[24];       /* the same as %04ld: parallel's inputs */
+    char *ok;                 /* todo[i]'s job ended well (parallel's joblog) */
+    char *again;              /* item item0 + i may go out again */
+    struct farm_host *hosts;  /* the summary, nhosts of them */
+    int nhosts;
+    long kept, refarmed, missing, njobs;
+    int status;               /* parallel's last exit status (waitpid's) */
+};
+
+/* The words of one parallel round its argument array points at. */
+struct farm_words {
+    char joblog_name[32], joblog[PATH_MAX + 32];
+    char templ[4096], ret[64], retries[16];
+};
+
 static const struct option farm_options[] = {
     {"frames", required_argument, NULL, FARM_OPT_FRAMES},
     {"hosts", required_argument, NULL, FARM_OPT_HOSTS},
@@ -547,396 +588,542 @@ static int farm_film(const char *dir, long first, long last, const char *ext, co
     return 0;
 }
 
-int cmd_farm(int argc, char **argv)
+/* An operand into o: the scene, or after "--" a render argument.
+ * FARM_GO, or 2 after saying why. */
+static int farm_take_operand(const struct cli *c, struct farm_opts *o)
 {
-    const char *scene = NULL, *dir = NULL, *hosts_file = NULL, *ext = "png", *film = NULL;
-    const char *extra[FARM_MAX_EXTRA];
-    int nextra = 0, retries = 3, fps = FILM_DEFAULT_FPS, have_fps = 0, bands = 0, slurm = 0;
-    long first = -1, last = -1;
+    if (c->rest) {
+        if (o->nextra == FARM_MAX_EXTRA) {
+            fprintf(stderr, "links1 farm: more than %d render arguments after --\n",
+                    FARM_MAX_EXTRA);
+            return 2;
+        }
+        o->extra[o->nextra++] = c->arg;
+    } else if (!o->scene) {
+        o->scene = c->arg;
+    } else {
+        fprintf(stderr, "links1 farm: '%s': one scene a farm (render arguments go "
+                        "after --)\n", c->arg);
+        return 2;
+    }
+    return FARM_GO;
+}
+
+/* One option (code, from cli_next) into o.  FARM_GO, or an exit status. */
+static int farm_take_option(const struct cli *c, int code, struct farm_opts *o)
+{
+    switch (code) {
+    case CLI_OPERAND: return farm_take_operand(c, o);
+    case 'o': o->dir = c->arg; return FARM_GO;
+    case FARM_OPT_HOSTS: o->hosts_file = c->arg; return FARM_GO;
+    case FARM_OPT_FRAMES:
+        if (cli_parse_frames(c->arg, &o->first, &o->last) != 0 ||
+            o->last - o->first >= FARM_MAX_FRAMES) {
+            cli_bad_value(c, "frames A:B, 0 <= A <= B, at most 100000 of them");
+            return 2;
+        }
+        return FARM_GO;
+    case FARM_OPT_RETRIES: return cli_int(c, 1, 100, &o->retries) != 0 ? 2 : FARM_GO;
+    case FARM_OPT_EXT:
+        if (strcmp(c->arg, "png") != 0 && strcmp(c->arg, "ppm") != 0) {
+            cli_bad_value(c, "png or ppm");
+            return 2;
+        }
+        o->ext = c->arg;
+        return FARM_GO;
+    case FARM_OPT_FILM:
+        if (film_kind_of(c->arg) == FILM_NONE) {
+            cli_bad_value(c, "a film named .mp4, .webm or .apng");
+            return 2;
+        }
+        o->film = c->arg;
+        return FARM_GO;
+    case FARM_OPT_FPS:
+        o->fps_given = 1;
+        return cli_int(c, 1, FILM_MAX_FPS, &o->fps) != 0 ? 2 : FARM_GO;
+    case FARM_OPT_BANDS: return cli_int(c, 2, FARM_MAX_BANDS, &o->bands) != 0 ? 2 : FARM_GO;
+    case FARM_OPT_SLURM: o->backend = FARM_SLURM; return FARM_GO;
+    case 'h': farm_usage(stdout); return 0;
+    default: return 2;
+    }
+}
+
+/* The command line into o (defaults first).  FARM_GO, or an exit status
+ * (0 after --help) after saying why. */
+static int farm_parse(int argc, char **argv, struct farm_opts *o)
+{
+    memset(o, 0, sizeof *o);
+    o->ext = "png";
+    o->retries = 3;
+    o->fps = FILM_DEFAULT_FPS;
+    o->backend = FARM_PARALLEL;
+    o->first = o->last = -1;
     struct cli c;
     cli_init(&c, "links1 farm", argc, argv, "o:h", farm_options);
     int code;
     while ((code = cli_next(&c)) != -1) {
-        switch (code) {
-        case CLI_OPERAND:
-            if (c.rest) {
-                if (nextra == FARM_MAX_EXTRA) {
-                    fprintf(stderr, "links1 farm: more than %d render arguments after --\n",
-                            FARM_MAX_EXTRA);
-                    return 2;
-                }
-                extra[nextra++] = c.arg;
-            } else if (!scene) {
-                scene = c.arg;
-            } else {
-                fprintf(stderr, "links1 farm: '%s': one scene a farm (render arguments go "
-                                "after --)\n", c.arg);
-                return 2;
-            }
-            break;
-        case 'o': dir = c.arg; break;
-        case FARM_OPT_HOSTS: hosts_file = c.arg; break;
-        case FARM_OPT_FRAMES:
-            if (cli_parse_frames(c.arg, &first, &last) != 0 || last - first >= FARM_MAX_FRAMES) {
-                cli_bad_value(&c, "frames A:B, 0 <= A <= B, at most 100000 of them");
-                return 2;
-            }
-            break;
-        case FARM_OPT_RETRIES:
-            if (cli_int(&c, 1, 100, &retries) != 0)
-                return 2;
-            break;
-        case FARM_OPT_EXT:
-            if (strcmp(c.arg, "png") != 0 && strcmp(c.arg, "ppm") != 0) {
-                cli_bad_value(&c, "png or ppm");
-                return 2;
-            }
-            ext = c.arg;
-            break;
-        case FARM_OPT_FILM:
-            if (film_kind_of(c.arg) == FILM_NONE) {
-                cli_bad_value(&c, "a film named .mp4, .webm or .apng");
-                return 2;
-            }
-            film = c.arg;
-            break;
-        case FARM_OPT_FPS:
-            if (cli_int(&c, 1, FILM_MAX_FPS, &fps) != 0)
-                return 2;
-            have_fps = 1;
-            break;
-        case FARM_OPT_BANDS:
-            if (cli_int(&c, 2, FARM_MAX_BANDS, &bands) != 0)
-                return 2;
-            break;
-        case FARM_OPT_SLURM: slurm = 1; break;
-        case 'h': farm_usage(stdout); return 0;
-        default: return 2;
-        }
+        int rc = farm_take_option(&c, code, o);
+        if (rc != FARM_GO)
+            return rc;
     }
-    if (!scene || !dir || !(hosts_file || slurm) || first < 0) {
+    return FARM_GO;
+}
+
+/* The options together: what is wanted given, nothing that does not go
+ * together, no control character.  FARM_GO, or an exit status after
+ * saying why. */
+static int farm_check_opts(const struct farm_opts *o)
+{
+    if (!o->scene || !o->dir || !(o->hosts_file || o->backend == FARM_SLURM) || o->first < 0) {
         fprintf(stderr, "links1 farm: want SCENE, --frames A:B, -o DIR and --hosts FILE or "
                         "--slurm\n");
         farm_usage(stderr);
         return 2;
     }
-    if (hosts_file && slurm) {
+    if (o->hosts_file && o->backend == FARM_SLURM) {
         fprintf(stderr, "links1 farm: --hosts (GNU parallel) or --slurm, not both\n");
         return 2;
     }
-    if (have_fps && !film) {
+    if (o->fps_given && !o->film) {
         fprintf(stderr, "links1 farm: --fps goes with --film\n");
         return 2;
     }
-    if (bands && (first != last || film)) {
+    if (o->bands && (o->first != o->last || o->film)) {
         fprintf(stderr, "links1 farm: --bands cuts one still frame: give --frames F:F and no "
                         "--film\n");
         return 2;
     }
-    if (farm_args_plain(scene, dir, hosts_file, film, extra, nextra) != 0)
+    if (farm_args_plain(o->scene, o->dir, o->hosts_file, o->film, o->extra, o->nextra) != 0)
         return 1;
-    if (film) { /* before any host renders: the film could not be made */
+    return FARM_GO;
+}
+
+/* The programs the farm needs are there: ffmpeg for --film (before any
+ * host renders: the film could not be made), sbatch or GNU parallel.
+ * FARM_GO, or 1 after saying which is missing. */
+static int farm_check_tools(const struct farm_opts *o)
+{
+    if (o->film) {
         char err[512];
         if (film_program_check(err, sizeof err) != 0) {
-            fprintf(stderr, "links1 farm: --film %s: %s\n", film, err);
+            fprintf(stderr, "links1 farm: --film %s: %s\n", o->film, err);
             return 1;
         }
     }
-    if (slurm && !farm_in_path("sbatch")) {
+    if (o->backend == FARM_SLURM) {
+        if (farm_in_path("sbatch"))
+            return FARM_GO;
         fprintf(stderr, "links1 farm: --slurm: Slurm's sbatch is not installed (no 'sbatch' in "
                         "PATH; the Debian package slurm-client)\n");
         return 1;
     }
-    if (!slurm && !farm_in_path("parallel")) {
+    if (!farm_in_path("parallel")) {
         fprintf(stderr, "links1 farm: GNU parallel is not installed (no 'parallel' in PATH; "
                         "the Debian package parallel)\n");
         return 1;
     }
-    if (!slurm && !farm_is_gnu_parallel()) {
+    if (!farm_is_gnu_parallel()) {
         fprintf(stderr, "links1 farm: the 'parallel' in PATH is not GNU parallel (`parallel "
                         "--version` does not say so; moreutils has another; install the "
                         "Debian package parallel)\n");
         return 1;
     }
-    char scene_abs[PATH_MAX], hosts_abs[PATH_MAX] = "Slurm", dir_abs[PATH_MAX], tool[PATH_MAX];
-    int nhosts_file = slurm ? 0 : farm_check_hosts(hosts_file, hosts_abs);
-    int dir_fd = nhosts_file < 0 ? -1 : farm_open_dir(dir, dir_abs);
-    if (dir_fd < 0)
+    return FARM_GO;
+}
+
+/* The hosts file checked and DIR opened (made when missing); the scene,
+ * links1 itself and $FW_DIR (where the firmware is) made absolute, FW_DIR
+ * set to it (the jobs run in DIR here and in the login directory there;
+ * parallel's --env takes it to the hosts); every path resolved free of
+ * control characters (a link on the way could hold a newline).  FARM_GO,
+ * or an exit status after saying why. */
+static int farm_resolve(struct farm_run *r)
+{
+    const struct farm_opts *o = r->o;
+    snprintf(r->hosts_path, sizeof r->hosts_path, "Slurm");
+    r->nhosts_file = o->backend == FARM_SLURM ? 0 : farm_check_hosts(o->hosts_file, r->hosts_path);
+    r->dir_fd = r->nhosts_file < 0 ? -1 : farm_open_dir(o->dir, r->dir);
+    if (r->dir_fd < 0)
         return 1;
-    if (!realpath(scene, scene_abs)) {
-        fprintf(stderr, "links1 farm: %s: %s\n", scene, strerror(errno));
+    if (!realpath(o->scene, r->scene)) {
+        fprintf(stderr, "links1 farm: %s: %s\n", o->scene, strerror(errno));
         return 1;
     }
-    if (self_sibling("links1", tool, sizeof tool) != 0) {
+    if (self_sibling("links1", r->tool, sizeof r->tool) != 0) {
         fprintf(stderr, "links1 farm: cannot tell where links1 itself is\n");
         return 1;
     }
-    for (int i = 0; i < nextra; i++)
-        if (farm_separator_word(extra[i])) {
+    for (int i = 0; i < o->nextra; i++)
+        if (farm_separator_word(o->extra[i])) {
             fprintf(stderr, "links1 farm: render argument '%s' is parallel's own separator\n",
-                    extra[i]);
+                    o->extra[i]);
             return 2;
         }
-
-    /* $FW_DIR (where the firmware is) made absolute: the jobs run in DIR here and
-     * in the login directory there; parallel's --env takes it to the hosts. */
     const char *fw_dir = getenv("FW_DIR");
-    char fw_abs[PATH_MAX];
     if (fw_dir && *fw_dir) {
-        if (!realpath(fw_dir, fw_abs)) {
+        if (!realpath(fw_dir, r->fw_dir)) {
             fprintf(stderr, "links1 farm: $FW_DIR %s: %s\n", fw_dir, strerror(errno));
             return 1;
         }
-        setenv("FW_DIR", fw_abs, 1);
+        setenv("FW_DIR", r->fw_dir, 1);
     }
-    /* the same, resolved (a link on the way could hold a newline) */
-    const char *resolved[] = {scene_abs, hosts_abs, dir_abs, tool, fw_dir && *fw_dir ? fw_abs : ""};
+    const char *resolved[] = {r->scene, r->hosts_path, r->dir, r->tool, r->fw_dir};
     for (size_t i = 0; i < sizeof resolved / sizeof *resolved; i++)
         if (farm_plain("the resolved path", resolved[i]) != 0)
             return 1;
+    return FARM_GO;
+}
 
-    /* The items: frames first..last, or with --bands the bands 0..bands-1
-     * of frame first (none when that frame is in DIR already).  Rounds: the
-     * items not in DIR handed to parallel; one whose job ended well but
-     * which did not arrive (its host died before parallel's --return copied
-     * it) is handed out again in the next round, up to --retries rounds. */
-    const char *unit = bands ? "band" : "frame"; /* what a job makes */
-    long item0 = bands ? 0 : first, nitems = bands ? bands : last - first + 1;
-    long kept = 0, refarmed = 0, missing = 0;
-    if (bands) {
+/* The items: frames first..last, or with --bands the bands 0..bands-1 of
+ * frame first, and the run's arrays for them.  FARM_GO, 0 when that frame
+ * is in DIR already (nothing to do), or 1 after saying why. */
+static int farm_items(struct farm_run *r)
+{
+    const struct farm_opts *o = r->o;
+    r->unit = o->bands ? "band" : "frame";
+    r->item0 = o->bands ? 0 : o->first;
+    r->nitems = o->bands ? o->bands : o->last - o->first + 1;
+    if (o->bands) {
         char path[PATH_MAX + 32];
-        farm_item_path(dir_abs, "frame", first, ext, path, sizeof path);
+        farm_item_path(r->dir, "frame", o->first, o->ext, path, sizeof path);
         if (farm_item_there(path)) {
-            printf("links1 farm: frame %ld of %s is in %s already (%s): nothing to do\n", first,
-                   scene_abs, dir_abs, path);
+            printf("links1 farm: frame %ld of %s is in %s already (%s): nothing to do\n",
+                   o->first, r->scene, r->dir, path);
             return 0;
         }
     }
-    char **todo = calloc((size_t)nitems, sizeof *todo);
-    char *ok = calloc((size_t)nitems, 1);          /* todo[i]'s job ended well */
-    char *again = calloc((size_t)nitems, 1);       /* item item0 + i: may go out again */
-    struct farm_host *hosts = calloc(FARM_MAX_HOSTS, sizeof *hosts);
-    if (!todo || !ok || !again || !hosts) {
+    size_t n = (size_t)r->nitems;
+    r->todo = calloc(n, sizeof *r->todo);
+    r->todo_s = calloc(n, sizeof *r->todo_s);
+    r->ok = calloc(n, 1);
+    r->again = calloc(n, 1);
+    r->hosts = calloc(FARM_MAX_HOSTS, sizeof *r->hosts);
+    if (!r->todo || !r->todo_s || !r->ok || !r->again || !r->hosts) {
         fprintf(stderr, "links1 farm: out of memory\n");
         return 1;
     }
-    int nhosts = 0, status = 0;
-    long njobs = 0, failed = 0;
-    for (int round = 1;; round++) {
-        long ntodo = 0;
-        missing = 0;
-        for (long f = item0; f < item0 + nitems; f++) {
-            char path[PATH_MAX + 32];
-            farm_item_path(dir_abs, unit, f, ext, path, sizeof path);
-            if (farm_item_there(path)) {
-                if (round == 1)
-                    kept++;
-                continue;
-            }
-            missing++;
-            if (round > retries || (round > 1 && !again[f - item0])) {
-                if (missing <= 10)
-                    fprintf(stderr, "links1 farm: %s %ld did not arrive (%s)\n", unit, f,
-                            path);
-                continue;
-            }
-            char num[24];
-            snprintf(num, sizeof num, "%04ld", f);
-            free(todo[ntodo]);
-            todo[ntodo] = strdup(num);
-            if (!todo[ntodo]) {
-                fprintf(stderr, "links1 farm: out of memory\n");
-                return 1;
-            }
-            ntodo++;
-        }
-        char where[PATH_MAX + 64];
-        if (slurm)
-            snprintf(where, sizeof where, "as a Slurm job array");
-        else
-            snprintf(where, sizeof where, "on %d host(s) of %s", nhosts_file, hosts_abs);
-        if (round == 1 && bands)
-            printf("links1 farm: frame %ld of %s in %d bands: %ld in %s already, %ld to render "
-                   "%s\n", first, scene_abs, bands, kept, dir_abs, ntodo, where);
-        else if (round == 1)
-            printf("links1 farm: frames %ld..%ld of %s: %ld in %s already, %ld to render %s\n",
-                   first, last, scene_abs, kept, dir_abs, ntodo, where);
-        else if (ntodo > 0)
-            printf("links1 farm: %ld %s(s) did not arrive; handing them out again (round "
-                   "%d of at most %d)\n", ntodo, unit, round, retries);
-        if (round > 1)
-            refarmed += ntodo;
-        fflush(stdout);
-        if (ntodo == 0)
-            break;
-        if (slurm) {
-            long *items = malloc((size_t)ntodo * sizeof *items);
-            if (!items) {
-                fprintf(stderr, "links1 farm: out of memory\n");
-                return 1;
-            }
-            for (long i = 0; i < ntodo; i++)
-                items[i] = strtol(todo[i], NULL, 10);
-            struct farm_slurm_round r = {tool, scene_abs, dir_abs, ext, first, bands,
-                                         extra, nextra, items, ntodo};
-            long jobs_round = 0;
-            int rc = farm_slurm_run(&r, hosts, &nhosts, &jobs_round);
-            free(items);
-            if (rc != 0)
-                return 1;
-            njobs += jobs_round;
-            /* Slurm tries a task once: each item still missing goes out again */
-            memset(again, 1, (size_t)nitems);
+    return FARM_GO;
+}
+
+/* Round round's items: those not in DIR that may go out (round 1 all of
+ * them; later only those again[] marks, and none after --retries rounds)
+ * into todo; kept (round 1) and missing counted, the first 10 missing that
+ * stay out named. */
+static void farm_gather(struct farm_run *r, int round)
+{
+    const struct farm_opts *o = r->o;
+    r->ntodo = 0;
+    r->missing = 0;
+    for (long f = r->item0; f < r->item0 + r->nitems; f++) {
+        char path[PATH_MAX + 32];
+        farm_item_path(r->dir, r->unit, f, o->ext, path, sizeof path);
+        if (farm_item_there(path)) {
+            if (round == 1)
+                r->kept++;
             continue;
         }
-        /* parallel's joblog in DIR, an earlier run's removed first (never
-         * followed: DIR is yours alone, and unlinkat removes a link itself) */
-        char joblog_name[32], joblog[PATH_MAX + 32];
-        if (round == 1)
-            snprintf(joblog_name, sizeof joblog_name, "farm-joblog.tsv");
-        else
-            snprintf(joblog_name, sizeof joblog_name, "farm-joblog-%d.tsv", round);
-        snprintf(joblog, sizeof joblog, "%s/%s", dir_abs, joblog_name);
-        if (unlinkat(dir_fd, joblog_name, 0) != 0 && errno != ENOENT) {
-            fprintf(stderr, "links1 farm: %s: cannot remove an earlier run's joblog: %s\n",
-                    joblog, strerror(errno));
-            return 1;
+        r->missing++;
+        if (round > o->retries || (round > 1 && !r->again[f - r->item0])) {
+            if (r->missing <= 10)
+                fprintf(stderr, "links1 farm: %s %ld did not arrive (%s)\n", r->unit, f, path);
+            continue;
         }
-        /* The command template: fixed words and replacement strings only.  It
-         * starts with a word of its own: parallel leaves a first replacement
-         * string unquoted (it takes it for the command). */
-        char templ[4096], ret[64], retries_s[16];
-        int n = bands ? snprintf(templ, sizeof templ,
-                                 "exec {1} render {2} --frame %ld --band {3}/%d -o band-{3}.%s "
-                                 "--quiet", first, bands, ext)
-                      : snprintf(templ, sizeof templ,
-                                 "exec {1} render {2} --frames {3}:{3} -o frame.%s --quiet", ext);
-        for (int i = 0; i < nextra && n < (int)sizeof templ; i++)
-            n += snprintf(templ + n, sizeof templ - (size_t)n, " {%d}", 4 + i);
-        snprintf(ret, sizeof ret, "%s-{3}.%s", unit, ext);
-        snprintf(retries_s, sizeof retries_s, "%d", retries);
-        size_t cap = (size_t)(32 + 2 * nextra + ntodo);
-        const char **av = calloc(cap, sizeof *av);
-        if (!av) {
-            fprintf(stderr, "links1 farm: out of memory\n");
-            return 1;
-        }
-        size_t k = 0;
-        av[k++] = "parallel";
-        av[k++] = "--will-cite";
-        av[k++] = "--sshloginfile";
-        av[k++] = hosts_abs;
-        av[k++] = "-j1";
-        av[k++] = "--retries";
-        av[k++] = retries_s;
-        av[k++] = "--joblog";
-        av[k++] = joblog;
-        av[k++] = "--return";
-        av[k++] = ret;
-        av[k++] = "--cleanup";
-        av[k++] = "--termseq"; /* a signal to us stops the jobs, remote ones too */
-        av[k++] = "TERM,200,TERM,100,KILL,25";
-        if (fw_dir && *fw_dir) {
-            av[k++] = "--env";
-            av[k++] = "FW_DIR";
-        }
-        av[k++] = templ;
+        r->todo[r->ntodo] = f;
+        snprintf(r->todo_s[r->ntodo], sizeof r->todo_s[0], "%04ld", f);
+        r->ntodo++;
+    }
+}
+
+/* The line that opens a round: what is to render where (round 1), or
+ * what goes out again. */
+static void farm_round_say(const struct farm_run *r, int round)
+{
+    const struct farm_opts *o = r->o;
+    char where[PATH_MAX + 64];
+    if (o->backend == FARM_SLURM)
+        snprintf(where, sizeof where, "as a Slurm job array");
+    else
+        snprintf(where, sizeof where, "on %d host(s) of %s", r->nhosts_file, r->hosts_path);
+    if (round == 1 && o->bands)
+        printf("links1 farm: frame %ld of %s in %d bands: %ld in %s already, %ld to render "
+               "%s\n", o->first, r->scene, o->bands, r->kept, r->dir, r->ntodo, where);
+    else if (round == 1)
+        printf("links1 farm: frames %ld..%ld of %s: %ld in %s already, %ld to render %s\n",
+               o->first, o->last, r->scene, r->kept, r->dir, r->ntodo, where);
+    else if (r->ntodo > 0)
+        printf("links1 farm: %ld %s(s) did not arrive; handing them out again (round "
+               "%d of at most %d)\n", r->ntodo, r->unit, round, o->retries);
+    fflush(stdout);
+}
+
+/* One round as a Slurm job array (farm_slurm.c).  0, or -1 after saying
+ * why. */
+static int farm_round_slurm(struct farm_run *r)
+{
+    const struct farm_opts *o = r->o;
+    struct farm_slurm_round sr = {r->tool, r->scene, r->dir, o->ext, o->first, o->bands,
+                                  o->extra, o->nextra, r->todo, r->ntodo};
+    long jobs_round = 0;
+    if (farm_slurm_run(&sr, r->hosts, &r->nhosts, &jobs_round) != 0)
+        return -1;
+    r->njobs += jobs_round;
+    /* Slurm tries a task once: each item still missing goes out again */
+    memset(r->again, 1, (size_t)r->nitems);
+    return 0;
+}
+
+/* This round's joblog in DIR, farm-joblog.tsv (round 1) or
+ * farm-joblog-R.tsv: its name and path in w, an earlier run's removed
+ * first (never followed: DIR is yours alone, and unlinkat removes a link
+ * itself).  0, or -1 after saying why. */
+static int farm_joblog_fresh(const struct farm_run *r, int round, struct farm_words *w)
+{
+    if (round == 1)
+        snprintf(w->joblog_name, sizeof w->joblog_name, "farm-joblog.tsv");
+    else
+        snprintf(w->joblog_name, sizeof w->joblog_name, "farm-joblog-%d.tsv", round);
+    snprintf(w->joblog, sizeof w->joblog, "%s/%s", r->dir, w->joblog_name);
+    if (unlinkat(r->dir_fd, w->joblog_name, 0) != 0 && errno != ENOENT) {
+        fprintf(stderr, "links1 farm: %s: cannot remove an earlier run's joblog: %s\n",
+                w->joblog, strerror(errno));
+        return -1;
+    }
+    return 0;
+}
+
+/* The job's command template in w: fixed words and replacement strings
+ * only.  It starts with a word of its own: parallel leaves a first
+ * replacement string unquoted (it takes it for the command).  With it the
+ * --return pattern and --retries. */
+static void farm_template(const struct farm_run *r, struct farm_words *w)
+{
+    const struct farm_opts *o = r->o;
+    int n = o->bands ? snprintf(w->templ, sizeof w->templ,
+                                "exec {1} render {2} --frame %ld --band {3}/%d -o band-{3}.%s "
+                                "--quiet", o->first, o->bands, o->ext)
+                     : snprintf(w->templ, sizeof w->templ,
+                                "exec {1} render {2} --frames {3}:{3} -o frame.%s --quiet",
+                                o->ext);
+    for (int i = 0; i < o->nextra && n < (int)sizeof w->templ; i++)
+        n += snprintf(w->templ + n, sizeof w->templ - (size_t)n, " {%d}", 4 + i);
+    snprintf(w->ret, sizeof w->ret, "%s-{3}.%s", r->unit, o->ext);
+    snprintf(w->retries, sizeof w->retries, "%d", o->retries);
+}
+
+/* parallel's argument array for this round (NULL-ended; the caller frees
+ * it), or NULL after saying so. */
+static const char **farm_parallel_argv(const struct farm_run *r, const struct farm_words *w)
+{
+    const struct farm_opts *o = r->o;
+    size_t cap = (size_t)(32 + 2 * o->nextra + r->ntodo);
+    const char **av = calloc(cap, sizeof *av);
+    if (!av) {
+        fprintf(stderr, "links1 farm: out of memory\n");
+        return NULL;
+    }
+    size_t k = 0;
+    av[k++] = "parallel";
+    av[k++] = "--will-cite";
+    av[k++] = "--sshloginfile";
+    av[k++] = r->hosts_path;
+    av[k++] = "-j1";
+    av[k++] = "--retries";
+    av[k++] = w->retries;
+    av[k++] = "--joblog";
+    av[k++] = w->joblog;
+    av[k++] = "--return";
+    av[k++] = w->ret;
+    av[k++] = "--cleanup";
+    av[k++] = "--termseq"; /* a signal to us stops the jobs, remote ones too */
+    av[k++] = "TERM,200,TERM,100,KILL,25";
+    if (r->fw_dir[0]) {
+        av[k++] = "--env";
+        av[k++] = "FW_DIR";
+    }
+    av[k++] = w->templ;
+    av[k++] = ":::";
+    av[k++] = r->tool;
+    av[k++] = ":::";
+    av[k++] = r->scene;
+    av[k++] = ":::";
+    for (long i = 0; i < r->ntodo; i++)
+        av[k++] = r->todo_s[i];
+    for (int i = 0; i < o->nextra; i++) {
         av[k++] = ":::";
-        av[k++] = tool;
-        av[k++] = ":::";
-        av[k++] = scene_abs;
-        av[k++] = ":::";
-        for (long i = 0; i < ntodo; i++)
-            av[k++] = todo[i];
-        for (int i = 0; i < nextra; i++) {
-            av[k++] = ":::";
-            av[k++] = extra[i];
+        av[k++] = o->extra[i];
+    }
+    av[k] = NULL;
+    return av;
+}
+
+/* parallel started with av in DIR (its standard input /dev/null) and
+ * waited for, its exit status (waitpid's) in r->status.  0, or -1 after
+ * saying why (it could not be started). */
+static int farm_parallel_spawn(struct farm_run *r, const char *const *av)
+{
+    pid_t pid = fork();
+    if (pid < 0) {
+        fprintf(stderr, "links1 farm: fork: %s\n", strerror(errno));
+        return -1;
+    }
+    if (pid == 0) {
+        exit_clean_in_child();
+        int null = open("/dev/null", O_RDONLY);
+        if (null >= 0) {
+            dup2(null, 0);
+            close(null);
         }
-        av[k] = NULL;
-        pid_t pid = fork();
-        if (pid < 0) {
-            fprintf(stderr, "links1 farm: fork: %s\n", strerror(errno));
-            return 1;
-        }
-        if (pid == 0) {
-            exit_clean_in_child();
-            int null = open("/dev/null", O_RDONLY);
-            if (null >= 0) {
-                dup2(null, 0);
-                close(null);
-            }
-            if (fchdir(dir_fd) != 0) {
-                fprintf(stderr, "links1 farm: cd %s: %s\n", dir_abs, strerror(errno));
-                _exit(127);
-            }
-            execvp("parallel", (char *const *)av);
-            fprintf(stderr, "links1 farm: cannot start parallel: %s\n", strerror(errno));
+        if (fchdir(r->dir_fd) != 0) {
+            fprintf(stderr, "links1 farm: cd %s: %s\n", r->dir, strerror(errno));
             _exit(127);
         }
-        exit_clean_add_child(pid);
-        while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
-            ;
-        exit_clean_drop_child(pid);
-        free(av);
-        if (WIFEXITED(status) && WEXITSTATUS(status) == 127) {
-            fprintf(stderr, "links1 farm: parallel did not start\n");
-            return 1;
-        }
-        long jobs_round = 0;
-        memset(ok, 0, (size_t)nitems);
-        if (farm_read_joblog(dir_fd, joblog_name, joblog, hosts, &nhosts, &jobs_round, ok,
-                             ntodo) != 0)
-            return 1;
-        njobs += jobs_round;
-        /* only a frame whose job ended well goes out again (its host died
-         * before the frame was returned); one that failed every try does not */
-        memset(again, 0, (size_t)nitems);
-        for (long i = 0; i < ntodo; i++)
-            if (ok[i])
-                again[strtol(todo[i], NULL, 10) - item0] = 1;
+        execvp("parallel", (char *const *)av);
+        fprintf(stderr, "links1 farm: cannot start parallel: %s\n", strerror(errno));
+        _exit(127);
     }
+    exit_clean_add_child(pid);
+    while (waitpid(pid, &r->status, 0) < 0 && errno == EINTR)
+        ;
+    exit_clean_drop_child(pid);
+    if (WIFEXITED(r->status) && WEXITSTATUS(r->status) == 127) {
+        fprintf(stderr, "links1 farm: parallel did not start\n");
+        return -1;
+    }
+    return 0;
+}
 
-    /* The summary: per host from parallel's joblogs, or the Slurm tasks' logs. */
-    for (int h = 0; h < nhosts; h++) {
-        failed += hosts[h].failed;
-        printf("links1 farm: host %s: %ld %s(s) in %.1f s of jobs, %.2f %ss/min",
-               hosts[h].name, hosts[h].frames, unit, hosts[h].seconds,
-               hosts[h].seconds > 0 ? hosts[h].frames * 60.0 / hosts[h].seconds : 0.0, unit);
-        if (hosts[h].failed)
-            printf(", %ld %s(s) failed there on their last try", hosts[h].failed, unit);
+/* One round through GNU parallel, its joblog read back into the summary.
+ * Only an item whose job ended well goes out again (its host died before
+ * the item was returned); one that failed every try does not.  0, or -1
+ * after saying why. */
+static int farm_round_parallel(struct farm_run *r, int round)
+{
+    struct farm_words w;
+    if (farm_joblog_fresh(r, round, &w) != 0)
+        return -1;
+    farm_template(r, &w);
+    const char **av = farm_parallel_argv(r, &w);
+    if (!av)
+        return -1;
+    int rc = farm_parallel_spawn(r, av);
+    free(av);
+    if (rc != 0)
+        return -1;
+    long jobs_round = 0;
+    memset(r->ok, 0, (size_t)r->nitems);
+    if (farm_read_joblog(r->dir_fd, w.joblog_name, w.joblog, r->hosts, &r->nhosts, &jobs_round,
+                         r->ok, r->ntodo) != 0)
+        return -1;
+    r->njobs += jobs_round;
+    memset(r->again, 0, (size_t)r->nitems);
+    for (long i = 0; i < r->ntodo; i++)
+        if (r->ok[i])
+            r->again[r->todo[i] - r->item0] = 1;
+    return 0;
+}
+
+/* Rounds: the items not in DIR handed out; one whose job ended well but
+ * which did not arrive (its host died before parallel's --return copied
+ * it) is handed out again in the next round, up to --retries rounds.  0
+ * once no item goes out, or -1 after saying why. */
+static int farm_rounds(struct farm_run *r)
+{
+    for (int round = 1;; round++) {
+        farm_gather(r, round);
+        farm_round_say(r, round);
+        if (round > 1)
+            r->refarmed += r->ntodo;
+        if (r->ntodo == 0)
+            return 0;
+        int rc = r->o->backend == FARM_SLURM ? farm_round_slurm(r) : farm_round_parallel(r, round);
+        if (rc != 0)
+            return -1;
+    }
+}
+
+/* The summary: per host from parallel's joblogs, or the Slurm tasks' logs. */
+static void farm_summary(const struct farm_run *r)
+{
+    const char *unit = r->unit;
+    long failed = 0;
+    for (int h = 0; h < r->nhosts; h++) {
+        const struct farm_host *host = &r->hosts[h];
+        failed += host->failed;
+        printf("links1 farm: host %s: %ld %s(s) in %.1f s of jobs, %.2f %ss/min", host->name,
+               host->frames, unit, host->seconds,
+               host->seconds > 0 ? host->frames * 60.0 / host->seconds : 0.0, unit);
+        if (host->failed)
+            printf(", %ld %s(s) failed there on their last try", host->failed, unit);
         printf("\n");
     }
-    long arrived = nitems - missing - kept;
-    if (slurm)
+    long arrived = r->nitems - r->missing - r->kept;
+    if (r->o->backend == FARM_SLURM)
         printf("links1 farm: %ld %s(s) rendered now, %ld kept from before, %ld missing; "
                "retries: %ld task(s) failed, %ld %s(s) handed out again (missing after a "
                "round), %ld task(s) logged in DIR/slurm-JOB_TASK.log\n",
-               arrived, unit, kept, missing, failed, refarmed, unit, njobs);
+               arrived, unit, r->kept, r->missing, failed, r->refarmed, unit, r->njobs);
     else
         printf("links1 farm: %ld %s(s) rendered now, %ld kept from before, %ld missing; "
                "retries: %ld job(s) failed on their last try, %ld %s(s) handed out again "
                "(done but not arrived), %ld job(s) in parallel's joblogs (a try parallel "
                "retried is not logged there, only each frame's last)\n",
-               arrived, unit, kept, missing, failed, refarmed, unit, njobs);
-    for (long i = 0; i < nitems; i++)
-        free(todo[i]);
-    free(todo);
-    free(ok);
-    free(again);
-    free(hosts);
-    if (missing) {
-        if (slurm)
-            fprintf(stderr, "links1 farm: %ld %s(s) missing (their tasks' logs: %s/slurm-*.log); "
-                            "run again to render only those%s\n", missing, unit, dir_abs,
-                    film ? " (the film is made once every frame is there)" : "");
-        else
-            fprintf(stderr, "links1 farm: %ld %s(s) missing (parallel exit %d); run again to "
-                            "render only those%s\n", missing, unit,
-                    WIFEXITED(status) ? WEXITSTATUS(status) : -1,
-                    film ? " (the film is made once every frame is there)" : "");
+               arrived, unit, r->kept, r->missing, failed, r->refarmed, unit, r->njobs);
+}
+
+/* After the rounds: the summary, then what is missing (exit 1), else the
+ * bands stitched or the film made.  The exit status. */
+static int farm_finish(const struct farm_run *r)
+{
+    const struct farm_opts *o = r->o;
+    farm_summary(r);
+    const char *film_note = o->film ? " (the film is made once every frame is there)" : "";
+    if (r->missing && o->backend == FARM_SLURM) {
+        fprintf(stderr, "links1 farm: %ld %s(s) missing (their tasks' logs: %s/slurm-*.log); "
+                        "run again to render only those%s\n", r->missing, r->unit, r->dir,
+                film_note);
         return 1;
     }
-    if (bands)
-        return farm_stitch(dir_abs, first, bands, ext);
-    return film ? farm_film(dir_abs, first, last, ext, film, fps) : 0;
+    if (r->missing) {
+        fprintf(stderr, "links1 farm: %ld %s(s) missing (parallel exit %d); run again to "
+                        "render only those%s\n", r->missing, r->unit,
+                WIFEXITED(r->status) ? WEXITSTATUS(r->status) : -1, film_note);
+        return 1;
+    }
+    if (o->bands)
+        return farm_stitch(r->dir, o->first, o->bands, o->ext);
+    return o->film ? farm_film(r->dir, o->first, o->last, o->ext, o->film, o->fps) : 0;
+}
+
+static void farm_run_free(struct farm_run *r)
+{
+    free(r->todo);
+    free(r->todo_s);
+    free(r->ok);
+    free(r->again);
+    free(r->hosts);
+    if (r->dir_fd >= 0)
+        close(r->dir_fd);
+}
+
+int cmd_farm(int argc, char **argv)
+{
+    struct farm_opts o;
+    int rc = farm_parse(argc, argv, &o);
+    if (rc == FARM_GO)
+        rc = farm_check_opts(&o);
+    if (rc == FARM_GO)
+        rc = farm_check_tools(&o);
+    if (rc != FARM_GO)
+        return rc;
+    struct farm_run r;
+    memset(&r, 0, sizeof r);
+    r.o = &o;
+    r.dir_fd = -1;
+    rc = farm_resolve(&r);
+    if (rc == FARM_GO)
+        rc = farm_items(&r);
+    if (rc == FARM_GO)
+        rc = farm_rounds(&r) != 0 ? 1 : farm_finish(&r);
+    farm_run_free(&r);
+    return rc;
 }

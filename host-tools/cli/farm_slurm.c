@@ -144,46 +144,89 @@ static int farm_slurm_read_task(const char *dir, long job, long item, struct far
     return 1;
 }
 
-int farm_slurm_run(const struct farm_slurm_round *r, struct farm_host *hosts, int *nhosts,
-                   long *njobs)
+/* The words of sbatch's argument array that are made for the round. */
+struct farm_slurm_words {
+    char script[PATH_MAX + 32], chdir[PATH_MAX + 16], frame[24], bands[16];
+    char array[FARM_SLURM_ARRAY_MAX]; /* --array=LIST */
+};
+
+/* The task script written and sbatch's words made in w.  0, or -1 after
+ * saying why. */
+static int farm_slurm_words(const struct farm_slurm_round *r, struct farm_slurm_words *w)
 {
-    *njobs = 0;
-    char script[PATH_MAX + 32], chdir_arg[PATH_MAX + 16], frame_s[24], bands_s[16];
-    static char array[FARM_SLURM_ARRAY_MAX];
-    if (farm_slurm_write_script(r->dir, script, sizeof script) != 0)
+    if (farm_slurm_write_script(r->dir, w->script, sizeof w->script) != 0)
         return -1;
-    if (farm_slurm_array(r->items, r->nitems, array, sizeof array) != 0) {
+    if (farm_slurm_array(r->items, r->nitems, w->array, sizeof w->array) != 0) {
         fprintf(stderr, "links1 farm: --slurm: the list of %ld items to render is longer than "
                 "%d bytes of sbatch --array; farm fewer frames at a time\n", r->nitems,
                 FARM_SLURM_ARRAY_MAX);
         return -1;
     }
-    snprintf(chdir_arg, sizeof chdir_arg, "--chdir=%s", r->dir);
-    snprintf(frame_s, sizeof frame_s, "%ld", r->frame);
-    snprintf(bands_s, sizeof bands_s, "%d", r->bands);
+    snprintf(w->chdir, sizeof w->chdir, "--chdir=%s", r->dir);
+    snprintf(w->frame, sizeof w->frame, "%ld", r->frame);
+    snprintf(w->bands, sizeof w->bands, "%d", r->bands);
+    return 0;
+}
+
+/* sbatch's argument array (NULL-ended; the caller frees it), or NULL
+ * after saying so. */
+static const char **farm_slurm_argv(const struct farm_slurm_round *r,
+                                    const struct farm_slurm_words *w)
+{
     const char **av = calloc((size_t)r->nextra + 24, sizeof *av);
     if (!av) {
         fprintf(stderr, "links1 farm: out of memory\n");
-        return -1;
+        return NULL;
     }
     size_t k = 0;
     av[k++] = "sbatch";
     av[k++] = "--parsable";
     av[k++] = "--wait";
-    av[k++] = array;
-    av[k++] = chdir_arg;
+    av[k++] = w->array;
+    av[k++] = w->chdir;
     av[k++] = "--job-name=links1-farm";
     av[k++] = "--output=slurm-%A_%a.log"; /* in --chdir */
     av[k++] = "--ntasks=1";
-    av[k++] = script;
+    av[k++] = w->script;
     av[k++] = r->tool;
     av[k++] = r->scene;
     av[k++] = r->ext;
-    av[k++] = frame_s;
-    av[k++] = bands_s;
+    av[k++] = w->frame;
+    av[k++] = w->bands;
     for (int i = 0; i < r->nextra; i++)
         av[k++] = r->extra[i];
     av[k] = NULL;
+    return av;
+}
+
+/* What fd gives up to cap - 1 bytes into out (ended by a 0), the rest
+ * read and dropped; the bytes kept. */
+static size_t farm_slurm_read_out(int fd, char *out, size_t cap)
+{
+    size_t got = 0;
+    ssize_t n;
+    while ((n = read(fd, out + got, cap - 1 - got)) != 0) {
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n < 0)
+            break;
+        got += (size_t)n;
+        if (got == cap - 1) { /* the rest is not the job id: drain it */
+            char sink[256];
+            while (read(fd, sink, sizeof sink) > 0)
+                ;
+            break;
+        }
+    }
+    out[got] = 0;
+    return got;
+}
+
+/* sbatch run with av (av freed) and waited for, its standard output in
+ * out (*got bytes), its exit status (waitpid's) in *status.  0, or -1
+ * after saying why it could not be started. */
+static int farm_slurm_sbatch(const char **av, char *out, size_t cap, size_t *got, int *status)
+{
     int fds[2];
     if (pipe(fds) != 0) {
         fprintf(stderr, "links1 farm: pipe: %s\n", strerror(errno));
@@ -215,28 +258,27 @@ int farm_slurm_run(const struct farm_slurm_round *r, struct farm_host *hosts, in
     free(av);
     exit_clean_add_child(pid);
     close(fds[1]);
-    char out[256];
-    size_t got = 0;
-    ssize_t n;
-    while ((n = read(fds[0], out + got, sizeof out - 1 - got)) != 0) {
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n < 0)
-            break;
-        got += (size_t)n;
-        if (got == sizeof out - 1) { /* the rest is not the job id: drain it */
-            char sink[256];
-            while (read(fds[0], sink, sizeof sink) > 0)
-                ;
-            break;
-        }
-    }
+    *got = farm_slurm_read_out(fds[0], out, cap);
     close(fds[0]);
-    out[got] = 0;
-    int status;
-    while (waitpid(pid, &status, 0) < 0 && errno == EINTR)
+    while (waitpid(pid, status, 0) < 0 && errno == EINTR)
         ;
     exit_clean_drop_child(pid);
+    return 0;
+}
+
+int farm_slurm_run(const struct farm_slurm_round *r, struct farm_host *hosts, int *nhosts,
+                   long *njobs)
+{
+    *njobs = 0;
+    static struct farm_slurm_words w;
+    if (farm_slurm_words(r, &w) != 0)
+        return -1;
+    const char **av = farm_slurm_argv(r, &w);
+    char out[256];
+    size_t got = 0;
+    int status;
+    if (!av || farm_slurm_sbatch(av, out, sizeof out, &got, &status) != 0)
+        return -1;
     /* --parsable prints "JOB" or "JOB;CLUSTER" once the array is submitted */
     char *end;
     errno = 0;

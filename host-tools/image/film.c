@@ -117,13 +117,112 @@ static void film_cleanup(struct film *fm)
 
 void film_abort(struct film *fm) { film_cleanup(fm); }
 
-int film_open(struct film *fm, const char *path, int width, int height, int fps, char *err,
-              size_t cap)
+/* ffmpeg's argument array and the words made for it: no shell sees the
+ * path or anything else. */
+struct film_args {
+    const char *v[40];
+    char rate[16];
+    char target[sizeof ((struct out_file *)0)->tmp + 8];
+};
+
+/* The encoder's arguments for kind from v[n] on; the next free index. */
+static int film_codec_args(enum film_kind kind, const char **v, int n)
 {
-    memset(fm, 0, sizeof *fm);
-    fm->kind = film_kind_of(path);
-    fm->width = width;
-    fm->height = height;
+    switch (kind) {
+    case FILM_MP4:
+        v[n++] = "-c:v";
+        v[n++] = "libx264";
+        v[n++] = "-pix_fmt";
+        v[n++] = "yuv420p";
+        v[n++] = "-crf";
+        v[n++] = "20";
+        v[n++] = "-f";
+        v[n++] = "mp4";
+        break;
+    case FILM_WEBM:
+        v[n++] = "-c:v";
+        v[n++] = "libvpx-vp9";
+        v[n++] = "-pix_fmt";
+        v[n++] = "yuv420p";
+        v[n++] = "-crf";
+        v[n++] = "32";
+        v[n++] = "-b:v";
+        v[n++] = "0";
+        v[n++] = "-f";
+        v[n++] = "webm";
+        break;
+    default: /* FILM_APNG */
+        v[n++] = "-c:v";
+        v[n++] = "apng";
+        v[n++] = "-plays";
+        v[n++] = "0";
+        v[n++] = "-f";
+        v[n++] = "apng";
+        break;
+    }
+    return n;
+}
+
+/* ffmpeg's argument array for the film (PNG frames on its standard input,
+ * the film into the temporary file) in a. */
+static void film_argv(const struct film *fm, int fps, struct film_args *a)
+{
+    snprintf(a->rate, sizeof a->rate, "%d", fps);
+    snprintf(a->target, sizeof a->target, "file:%s", fm->out.tmp); /* a name, never a protocol */
+    const char **v = a->v;
+    int n = 0;
+    v[n++] = FILM_PROGRAM;
+    v[n++] = "-hide_banner";
+    v[n++] = "-nostats";
+    v[n++] = "-loglevel";
+    v[n++] = "error";
+    v[n++] = "-y"; /* the temporary file exists (out_file made it) */
+    v[n++] = "-f";
+    v[n++] = "image2pipe";
+    v[n++] = "-framerate";
+    v[n++] = a->rate;
+    v[n++] = "-c:v";
+    v[n++] = "png";
+    v[n++] = "-i";
+    v[n++] = "-";
+    if (film_padded(fm->kind, fm->width, fm->height)) {
+        v[n++] = "-vf";
+        v[n++] = "pad=ceil(iw/2)*2:ceil(ih/2)*2"; /* black on the right and bottom */
+    }
+    n = film_codec_args(fm->kind, v, n);
+    v[n++] = a->target;
+    v[n] = NULL;
+}
+
+/* ffmpeg started (fm->pid) with argv, its standard input the pipe's end
+ * in, its standard output /dev/null, its standard error log.  0, or
+ * posix_spawn's error (fm->pid 0). */
+static int film_spawn(struct film *fm, const char *const *argv, int in, int log)
+{
+    posix_spawn_file_actions_t fa;
+    int rc = posix_spawn_file_actions_init(&fa);
+    if (rc == 0)
+        rc = posix_spawn_file_actions_adddup2(&fa, in, STDIN_FILENO);
+    if (rc == 0)
+        rc = posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+    if (rc == 0)
+        rc = posix_spawn_file_actions_adddup2(&fa, log, STDERR_FILENO);
+    if (rc == 0) /* nothing of ours (the board's sockets) goes with it */
+        rc = posix_spawn_file_actions_addclosefrom_np(&fa, STDERR_FILENO + 1);
+    signal(SIGPIPE, SIG_IGN); /* a write to an ffmpeg that stopped fails with EPIPE */
+    if (rc == 0)
+        rc = posix_spawnp(&fm->pid, FILM_PROGRAM, &fa, NULL, (char *const *)argv, environ);
+    if (rc == 0) /* a signal stops it (its input's end stops it too) */
+        exit_clean_add_child(fm->pid);
+    posix_spawn_file_actions_destroy(&fa);
+    if (rc != 0)
+        fm->pid = 0;
+    return rc;
+}
+
+/* The film's kind (from path) and fps checked.  0, or -1 with why in err. */
+static int film_check(const struct film *fm, const char *path, int fps, char *err, size_t cap)
+{
     if (fm->kind == FILM_NONE) {
         snprintf(err, cap, "%s: not a film (.mp4, .webm or .apng)", path);
         return -1;
@@ -132,7 +231,27 @@ int film_open(struct film *fm, const char *path, int width, int height, int fps,
         snprintf(err, cap, "%s: %d frames a second, not 1..%d", path, fps, FILM_MAX_FPS);
         return -1;
     }
-    if (out_file_open(&fm->out, path, err, cap) != 0)
+    return 0;
+}
+
+/* ffmpeg could not be started (rc, posix_spawn's error): why, in err. */
+static void film_spawn_failed(const char *path, int rc, char *err, size_t cap)
+{
+    if (rc == ENOENT)
+        snprintf(err, cap, "%s: the %s command was not found (the Debian package ffmpeg: "
+                 "host-tools/scripts/install-deps.sh installs it)", path, FILM_PROGRAM);
+    else
+        snprintf(err, cap, "%s: cannot start %s: %s", path, FILM_PROGRAM, strerror(rc));
+}
+
+int film_open(struct film *fm, const char *path, int width, int height, int fps, char *err,
+              size_t cap)
+{
+    memset(fm, 0, sizeof *fm);
+    fm->kind = film_kind_of(path);
+    fm->width = width;
+    fm->height = height;
+    if (film_check(fm, path, fps, err, cap) != 0 || out_file_open(&fm->out, path, err, cap) != 0)
         return -1;
     int log = tmp_file_make("ffmpeg", fm->log, sizeof fm->log);
     if (log < 0) {
@@ -148,90 +267,14 @@ int film_open(struct film *fm, const char *path, int width, int height, int fps,
         film_cleanup(fm);
         return -1;
     }
-    /* The argument array: no shell sees the path or anything else. */
-    char rate[16], target[sizeof fm->out.tmp + 8];
-    snprintf(rate, sizeof rate, "%d", fps);
-    snprintf(target, sizeof target, "file:%s", fm->out.tmp); /* a name, never a protocol */
-    const char *argv[40];
-    int n = 0;
-    argv[n++] = FILM_PROGRAM;
-    argv[n++] = "-hide_banner";
-    argv[n++] = "-nostats";
-    argv[n++] = "-loglevel";
-    argv[n++] = "error";
-    argv[n++] = "-y"; /* the temporary file exists (out_file made it) */
-    argv[n++] = "-f";
-    argv[n++] = "image2pipe";
-    argv[n++] = "-framerate";
-    argv[n++] = rate;
-    argv[n++] = "-c:v";
-    argv[n++] = "png";
-    argv[n++] = "-i";
-    argv[n++] = "-";
-    if (film_padded(fm->kind, width, height)) {
-        argv[n++] = "-vf";
-        argv[n++] = "pad=ceil(iw/2)*2:ceil(ih/2)*2"; /* black on the right and bottom */
-    }
-    switch (fm->kind) {
-    case FILM_MP4:
-        argv[n++] = "-c:v";
-        argv[n++] = "libx264";
-        argv[n++] = "-pix_fmt";
-        argv[n++] = "yuv420p";
-        argv[n++] = "-crf";
-        argv[n++] = "20";
-        argv[n++] = "-f";
-        argv[n++] = "mp4";
-        break;
-    case FILM_WEBM:
-        argv[n++] = "-c:v";
-        argv[n++] = "libvpx-vp9";
-        argv[n++] = "-pix_fmt";
-        argv[n++] = "yuv420p";
-        argv[n++] = "-crf";
-        argv[n++] = "32";
-        argv[n++] = "-b:v";
-        argv[n++] = "0";
-        argv[n++] = "-f";
-        argv[n++] = "webm";
-        break;
-    default: /* FILM_APNG */
-        argv[n++] = "-c:v";
-        argv[n++] = "apng";
-        argv[n++] = "-plays";
-        argv[n++] = "0";
-        argv[n++] = "-f";
-        argv[n++] = "apng";
-        break;
-    }
-    argv[n++] = target;
-    argv[n] = NULL;
-    posix_spawn_file_actions_t fa;
-    int rc = posix_spawn_file_actions_init(&fa);
-    if (rc == 0)
-        rc = posix_spawn_file_actions_adddup2(&fa, p[0], STDIN_FILENO);
-    if (rc == 0)
-        rc = posix_spawn_file_actions_addopen(&fa, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-    if (rc == 0)
-        rc = posix_spawn_file_actions_adddup2(&fa, log, STDERR_FILENO);
-    if (rc == 0) /* nothing of ours (the board's sockets) goes with it */
-        rc = posix_spawn_file_actions_addclosefrom_np(&fa, STDERR_FILENO + 1);
-    signal(SIGPIPE, SIG_IGN); /* a write to an ffmpeg that stopped fails with EPIPE */
-    if (rc == 0)
-        rc = posix_spawnp(&fm->pid, FILM_PROGRAM, &fa, NULL, (char *const *)argv, environ);
-    if (rc == 0) /* a signal stops it (its input's end stops it too) */
-        exit_clean_add_child(fm->pid);
-    posix_spawn_file_actions_destroy(&fa);
+    struct film_args a;
+    film_argv(fm, fps, &a);
+    int rc = film_spawn(fm, a.v, p[0], log);
     close(p[0]);
     close(log);
     if (rc != 0) {
-        fm->pid = 0;
         close(p[1]);
-        if (rc == ENOENT)
-            snprintf(err, cap, "%s: the %s command was not found (the Debian package ffmpeg: "
-                     "host-tools/scripts/install-deps.sh installs it)", path, FILM_PROGRAM);
-        else
-            snprintf(err, cap, "%s: cannot start %s: %s", path, FILM_PROGRAM, strerror(rc));
+        film_spawn_failed(path, rc, err, cap);
         film_cleanup(fm);
         return -1;
     }
