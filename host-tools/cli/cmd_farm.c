@@ -675,9 +675,8 @@ static int farm_parse(int argc, char **argv, struct farm_opts *o)
 static int farm_check_opts(const struct farm_opts *o)
 {
     if (!o->scene || !o->dir || !(o->hosts_file || o->backend == FARM_SLURM) || o->first < 0) {
-        fprintf(stderr, "links1 farm: want SCENE, --frames A:B, -o DIR and --hosts FILE or "
-                        "--slurm\n");
-        farm_usage(stderr);
+        cli_usage_error("links1 farm", "want SCENE, --frames A:B, -o DIR and --hosts FILE or "
+                        "--slurm");
         return 2;
     }
     if (o->hosts_file && o->backend == FARM_SLURM) {
@@ -759,6 +758,8 @@ static int farm_resolve(struct farm_run *r)
                     o->extra[i]);
             return 2;
         }
+    if (cmd_render_check_args(o->nextra, o->extra) != 0)
+        return 2; /* render's own definitions: what every host's render would refuse */
     const char *fw_dir = getenv("FW_DIR");
     if (fw_dir && *fw_dir) {
         if (!realpath(fw_dir, r->fw_dir)) {

@@ -1126,6 +1126,41 @@ static int render_counting_close(struct render_opts *o, const struct render_run 
     return r;
 }
 
+int cmd_render_check_args(int n, const char *const *args)
+{
+    static const int farms[] = {'o', RENDER_OPT_FRAME, RENDER_OPT_FRAMES, RENDER_OPT_BAND,
+                                RENDER_OPT_ROWS};
+    char **argv = calloc((size_t)n + 2, sizeof *argv);
+    if (!argv)
+        return -1;
+    argv[0] = "render";
+    for (int i = 0; i < n; i++)
+        argv[i + 1] = (char *)args[i];
+    static const struct cli_optdef *const lists[] = {board_optdefs, scene_optdefs,
+                                                     render_optdefs, NULL};
+    struct option longs[RENDER_MAX_OPTIONS];
+    struct render_opts o;
+    memset(&o, 0, sizeof o);
+    board_opts_init(&o.board);
+    scene_file_opts_init(&o.scene);
+    struct cli c;
+    int rc = cli_optdefs_table(lists, longs, RENDER_MAX_OPTIONS);
+    cli_init(&c, "links1 farm", n + 1, argv, "o:h", longs);
+    for (int code; rc == 0 && (code = cli_next(&c)) != -1;) {
+        for (size_t i = 0; i < sizeof farms / sizeof farms[0]; i++)
+            if (code == farms[i])
+                rc = cli_usage_error("links1 farm", "render argument %s: the farm sets it",
+                                     c.name);
+        if (rc == 0 && (code == CLI_OPERAND || code == 'h'))
+            rc = cli_usage_error("links1 farm", "render argument '%s': the farm names the "
+                                 "scene and its output itself", argv[optind - 1]);
+        if (rc == 0)
+            rc = render_take_any(&o, &c, code) < 0 ? -1 : 0;
+    }
+    free(argv);
+    return rc;
+}
+
 int cmd_render(int argc, char **argv)
 {
     struct render_opts o;

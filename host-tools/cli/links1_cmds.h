@@ -13,4 +13,11 @@ int cmd_semihost(int argc, char **argv); /* links1 semihost ELF: a semihosting p
 int cmd_farm(int argc, char **argv);     /* links1 farm SCENE -o DIR --hosts FILE: on hosts */
 int cmd_board(int argc, char **argv);    /* links1 board start|stop|list: named boards */
 
+/* The arguments args[0..n-1] that links1 farm passes on to `links1 render`
+ * on every host, read with render's own option definitions: 0, or -1
+ * after saying what is wrong (an option render does not take, a bad value,
+ * an operand, or one that the farm sets itself: -o, --frame, --frames,
+ * --band, --rows). */
+int cmd_render_check_args(int n, const char *const *args);
+
 #endif

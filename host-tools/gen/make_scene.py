@@ -226,6 +226,9 @@ def main():
     if len(args) != 2 or args[0] not in FAMILIES:
         sys.exit("usage: make_scene.py FAMILY KNOB [--size WxH]; families: " + " ".join(FAMILIES))
     global MAPS
+    # the maps' directory as the scene names it: $MAPS (a copy below the
+    # scene's own directory), else scenes/maps, which a scene outside it
+    # reads only with --textures-from scenes/maps
     MAPS = os.path.abspath(os.environ.get("MAPS", "scenes/maps"))
     sys.stdout.write(FAMILIES[args[0]](float(args[1]), w, h))
 

@@ -14,6 +14,7 @@
 #   bash tests/bench/arith_cost_fit.sh [--out DIR]
 set -u
 cd "$(dirname "$0")/../.."
+. host-tools/gen/scene_of.sh # scene_of NAME: its path (city, fig9: build/scenes/)
 LINKS1=${LINKS1:-build/links1}
 export FW_DIR=${FW_DIR:-build}
 SIZE=${FIT_SIZE:-64x48}
@@ -24,7 +25,7 @@ fail() { echo "arith_cost_fit: $*" >&2; exit 1; }
 
 scenes=()
 for s in demo glass molecule city; do
-    scenes+=("scenes/$s.scn")
+    scenes+=("$(scene_of $s)")
 done
 for fk in scale:1 scale:10 cluster_scale:0.3 grazing:10 coincident:0.001 thin_triangles:100 \
     thin_triangles:3000 tir_chain:2 tir_chain:8 ellipsoid_ratio:10 ellipsoid_ratio:1000 \

@@ -12,6 +12,7 @@
 #   ESC_MACHINE=an521: on the an521 boards (their M33s' double is software)
 set -eu
 cd "$(dirname "$0")/../.."
+. host-tools/gen/scene_of.sh # scene_of NAME: its path (city, fig9: build/scenes/)
 out=${1:-build/bench-escalate}
 SCENES=${ESC_SCENES:-demo glass molecule}
 SIZE=${ESC_SIZE:-320x240}
@@ -32,12 +33,12 @@ tsv=$out/escalate.tsv
 printf 'scene\tarith\tescalate\tnc_insns_per_pixel\tescalated_pixels\tbeyond2_pct\tbeyond2_not_moved_pct\tpsnr_db\n' >"$tsv"
 for s in $SCENES; do
     ref=$out/$s-double.ppm
-    build/links1 ref "scenes/$s.scn" --arith double --size "$SIZE" -o "$ref" >/dev/null 2>&1
+    build/links1 ref "$(scene_of $s)" --arith double --size "$SIZE" -o "$ref" >/dev/null 2>&1
     for a in float fixed; do
         for e in plain escalated; do
             img=$out/$s-$a-$e.ppm
             log=$img.log
-            build/links1 render --quiet --count-insns "scenes/$s.scn" --arith "$a" --ncs "$NCS" \
+            build/links1 render --quiet --count-insns "$(scene_of $s)" --arith "$a" --ncs "$NCS" \
                 --machine "$MACHINE" --size "$SIZE" -o "$img" $([ $e = escalated ] && echo --escalate) >"$log" 2>&1 || {
                 echo "bench_escalate: $s $a $e failed: $(tail -n 1 "$log")" >&2
                 exit 1

@@ -15,6 +15,7 @@
 # recall per program over its knobs.
 set -eu
 cd "$(dirname "$0")/../.."
+. host-tools/gen/scene_of.sh # scene_of NAME: its path (city, fig9: build/scenes/)
 out=${1:-build/bench-flags}
 . tests/sweeps/families.sh
 if [ "${FLAG_FAMILIES:-0}" = 1 ]; then
@@ -46,7 +47,7 @@ score() {
 tsv=$out/flags.tsv
 printf 'scene\tprogram\tflags\tflagged\tprecision_pct\trecall_pct\n' >"$tsv"
 for s in $SCENES; do
-    scn=scenes/$s.scn
+    scn="$(scene_of $s)"
     case $s in *:*)
         scn=$out/${s/:/-}.scn
         family_scene "${s%%:*}" "${s#*:}" "$SIZE" >"$scn" ;;

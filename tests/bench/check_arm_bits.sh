@@ -11,13 +11,14 @@
 # (docs/results/accuracy-and-pov.md), not part of `make test`.
 set -u
 cd "$(dirname "$0")/../.."
+. host-tools/gen/scene_of.sh # scene_of NAME: its path (city, fig9: build/scenes/)
 out=build/arm-bits
 mkdir -p "$out"
 make -s --no-print-directory build/links1 || exit 1
 scenes="demo glass molecule city"
 {
     for s in $scenes; do
-        build/links1 compile "scenes/$s.scn" -o "$out/$s.bin" >/dev/null || exit 1
+        build/links1 compile "$(scene_of $s)" -o "$out/$s.bin" >/dev/null || exit 1
         (cd "$out" && xxd -i "$s.bin")
     done
     echo "static const struct { const char *name; const unsigned char *data; unsigned len; } bits_scenes[] = {"

@@ -6,6 +6,7 @@
 # pixels within 2/255 on every channel (issue 3 asks for 99%).
 set -eu
 cd "$(dirname "$0")/../.."
+. host-tools/gen/scene_of.sh # scene_of NAME: its path (city, fig9: build/scenes/)
 bits=${*:-16 17 18 19}
 out=build/fixed-formats
 mkdir -p "$out"
@@ -14,13 +15,13 @@ srcs=$(make -s --no-print-directory \
     --eval 'print-ref-srcs: ; @echo $(links1-ref-fixed_SRCS) $(SHARED_SRCS)' print-ref-srcs)
 scenes="demo glass molecule city"
 for s in $scenes; do
-    build/links1 ref "scenes/$s.scn" -o "$out/$s-double.png" >/dev/null 2>&1
+    build/links1 ref "$(scene_of $s)" -o "$out/$s-double.png" >/dev/null 2>&1
 done
 for f in $bits; do
     cc -std=gnu11 -O2 -I. -ffp-contract=off -DLINKS1_NUM_FIXED -DNUM_FRAC_BITS="$f" \
         $srcs -lpng -lm -o "$out/ref-fixed-$f"
     for s in $scenes; do
-        "$out/ref-fixed-$f" "scenes/$s.scn" -o "$out/$s-fixed-$f.png" >/dev/null 2>&1
+        "$out/ref-fixed-$f" "$(scene_of $s)" -o "$out/$s-fixed-$f.png" >/dev/null 2>&1
         line=$(build/links1 compare "$out/$s-double.png" "$out/$s-fixed-$f.png" --within 2 \
                    --min-fraction 0.99 | tail -n 1 || true)
         echo "NUM_FRAC_BITS=$f $s:$line"

@@ -7,11 +7,12 @@
 # Prints "PASS accuracy_ARITH_SCENE" or "FAIL accuracy_ARITH_SCENE: why".
 set -u
 cd "$(dirname "$0")/../.."
+. host-tools/gen/scene_of.sh # scene_of NAME: its path (city, fig9: build/scenes/)
 out=build/test-images/accuracy
 mkdir -p "$out"
 scenes="demo glass molecule city"
 for name in $scenes; do
-    scn=scenes/$name.scn
+    scn=$(scene_of "$name")
     if ! err=$(build/links1 ref "$scn" -o "$out/$name-double.png" 2>&1); then
         echo "FAIL accuracy_double_$name: $err"
         continue

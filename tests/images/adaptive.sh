@@ -10,6 +10,7 @@
 #   adaptive_refuse: a threshold outside 0..1 is refused, naming the range.
 set -u
 cd "$(dirname "$0")/../.."
+. host-tools/gen/scene_of.sh # scene_of NAME: its path (city, fig9: build/scenes/)
 out=build/test-images/adaptive
 mkdir -p "$out"
 size=96x72
@@ -32,7 +33,7 @@ for name in demo glass molecule city; do
         for w in $weights; do
             img="$out/$name-$arith-w$w.ppm"
             [ "$w" = 0 ] && img="$out/$name-$arith-w0.ppm"
-            if ! build/links1 ref "scenes/$name.scn" --arith "$arith" --size $size --min-weight "$w" \
+            if ! build/links1 ref "$(scene_of $name)" --arith "$arith" --size $size --min-weight "$w" \
                     -o "$img" 2>"$img.log"; then
                 bad="--min-weight $w: $(tail -n 1 "$img.log")"
                 break
@@ -74,7 +75,7 @@ for name in glass demo; do
         zero="$out/$name-$arith-w0.ppm"
         img="$out/$name-$arith-default.ppm"
         check=adaptive_default_${name}_$arith
-        if ! build/links1 ref "scenes/$name.scn" --arith "$arith" --size $size -o "$img" \
+        if ! build/links1 ref "$(scene_of $name)" --arith "$arith" --size $size -o "$img" \
                 2>"$img.log"; then
             echo "FAIL $check: $(tail -n 1 "$img.log")"
             continue

@@ -30,6 +30,7 @@ out=build/sweeps-auto
 mkdir -p "$out/work"
 tsv=$out/auto.tsv
 . tests/sweeps/families.sh
+family_work "$out/work" # the scenes and their maps
 
 # label|host build|firmware whose cost it takes|esc (escalated: --escalate
 # on both, the -esc firmware; with VFP only, as --arith auto's)

@@ -41,6 +41,7 @@ mkdir -p "$out/work"
 work=$out/work
 tsv=$out/auto_model.tsv
 . tests/sweeps/families.sh
+family_work "$out/work" # the scenes and their maps
 
 steps_ladder=(2 3 4 5 6 8 10 12 14 16 18 20 24 28 32 36 40 48 56 64 80 96 112 128 160 192 224 256)
 weights=()

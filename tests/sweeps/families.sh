@@ -31,6 +31,13 @@ add_host_fixed_cands() {
     done
 }
 
+# family_work DIR: DIR made to hold the family scenes, with a copy of
+# scenes/maps/ in it that make_scene.py's map scenes name ($MAPS): a map's
+# image is read only from below its scene's directory.
+family_work() {
+    mkdir -p "$1/maps" && cp scenes/maps/*.png "$1/maps/" && export MAPS="$1/maps"
+}
+
 # family_scene FAMILY KNOB SIZE: the family's scene at that knob value on
 # stdout (scale_down and cluster_scale_down are the scale and cluster_scale
 # families below 1).

@@ -40,6 +40,7 @@ export MODEL_DIR=$out/work/models # make_scene.py model_scale's glTF files
 tsv=$out/sweep.tsv
 
 . tests/sweeps/families.sh # families=(...)
+family_work "$out/work" # the scenes and their maps
 if [ $quick = 1 ]; then
     families=(
         "scale|1 30 100 1000|scene scale|1|1"

@@ -49,7 +49,9 @@ auto_case render_auto_fixed_fails_vfp "$hard" vfp float float
 # ellipsoid above, 40 dB) the escalated candidates are measured and not
 # picked.
 maps=$RENDER_TMP/maprepeat3000.scn
-python3 host-tools/gen/make_scene.py map_repeat 3000 --size $SIZE >"$maps"
+# the maps copied below the scenes' directory (a map's image is read only from there)
+mkdir -p "$RENDER_TMP/maps" && cp scenes/maps/*.png "$RENDER_TMP/maps/"
+MAPS=$RENDER_TMP/maps python3 host-tools/gen/make_scene.py map_repeat 3000 --size $SIZE >"$maps"
 name=render_auto_escalates out=$RENDER_TMP/render_auto_escalates.ppm
 if render_board $name "$out" "$maps" -o "$out" --arith auto --fpu vfp --target-db 60 --ncs 2; then
     log=$RENDER_TMP/$name.log
@@ -151,7 +153,7 @@ refused() { # NAME WANT args...
         echo "FAIL $name: exit $rc, '$(echo "$msg" | tail -n 1)' does not say '$want'"
     fi
 }
-python3 host-tools/gen/make_scene.py map_repeat 1000 --size $SIZE >"$RENDER_TMP/maps.scn"
+MAPS=$RENDER_TMP/maps python3 host-tools/gen/make_scene.py map_repeat 1000 --size $SIZE >"$RENDER_TMP/maps.scn"
 refused render_auto_refuses_unreachable "no arithmetic of a unit computer without an FPU keeps 70.0 dB" \
     ref "$RENDER_TMP/maps.scn" -o "$RENDER_TMP/x.ppm" --arith auto --fpu none --target-db 70
 refused render_auto_refuses_two_scenes "--arith auto takes one SCENE" \
