@@ -40,7 +40,7 @@ printf 'scene\tarith\tpixels\trays\tbox\tprim\tinsns\n' >"$data"
 for scn in "${scenes[@]}"; do
     for arith in float soft fixed; do
         log=$out/$(basename "$scn" .scn)-$arith.log
-        timeout 300 "$LINKS1" render --quiet --count-insns "$scn" --arith "$arith" --ncs 2 \
+        timeout 300 "$LINKS1" render --count-insns "$scn" --arith "$arith" --ncs 2 \
             --size "$SIZE" -o "$out/img.png" >"$log" 2>&1 ||
             fail "$scn --arith $arith: $(tail -n 1 "$log")"
         python3 - "$log" "$scn" "$arith" >>"$data" <<'PY' || fail "cannot read $log"

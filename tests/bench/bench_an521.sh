@@ -33,12 +33,12 @@ trap 'rm -rf "$out"' EXIT
 W=160 H=120
 ncs_insns() { # MACHINE ARITH: the NCs' instructions summed
     "$LINKS1" render scenes/demo.scn -o "$out/i.png" --machine "$1" --arith "$2" --ncs 4 \
-        --size ${W}x$H --count-insns --quiet >"$out/i.log" 2>&1
+        --size ${W}x$H --count-insns >"$out/i.log" 2>&1
     sed -nE 's/.*NCs total ([0-9]+) .*/\1/p' "$out/i.log"
 }
 render_ms() { # MACHINE: the board's render time of the frame, 8 NCs, float
     "$LINKS1" render scenes/demo.scn -o "$out/w.png" --machine "$1" --ncs 8 --size 320x240 \
-        --quiet >"$out/w.log" 2>&1
+        >"$out/w.log" 2>&1
     sed -nE 's/.*\(board: prepare [0-9]+ ms, render ([0-9]+) ms.*/\1/p' "$out/w.log" | head -n 1
 }
 LAT_ROUNDS=${LAT_ROUNDS:-1000}
@@ -58,7 +58,7 @@ lat_row() { # LABEL "median min max"
 trace() {
     local m=$1 lat=${2%% *} insns render mips one line
     "$LINKS1" render scenes/demo.scn -o "$out/t.png" --machine "$m" --ncs 8 --size 512x480 \
-        --trace "$out/t-$m.trace" --count-insns --quiet >"$out/t.log" 2>&1
+        --trace "$out/t-$m.trace" --count-insns >"$out/t.log" 2>&1
     insns=$(sed -nE 's/.*NCs total ([0-9]+) .*/\1/p' "$out/t.log")
     render=$(sed -nE 's/.*\(board: prepare [0-9]+ ms, render ([0-9]+) ms.*/\1/p' "$out/t.log" | head -n 1)
     mips=$(awk -v i="$insns" -v ms="$render" 'BEGIN { printf "%.1f", i / 8 / (ms * 1000) }')

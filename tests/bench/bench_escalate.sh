@@ -38,7 +38,7 @@ for s in $SCENES; do
         for e in plain escalated; do
             img=$out/$s-$a-$e.ppm
             log=$img.log
-            build/links1 render --quiet --count-insns "$(scene_of $s)" --arith "$a" --ncs "$NCS" \
+            build/links1 render --count-insns "$(scene_of $s)" --arith "$a" --ncs "$NCS" \
                 --machine "$MACHINE" --size "$SIZE" -o "$img" $([ $e = escalated ] && echo --escalate) >"$log" 2>&1 || {
                 echo "bench_escalate: $s $a $e failed: $(tail -n 1 "$log")" >&2
                 exit 1

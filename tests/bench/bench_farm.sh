@@ -42,7 +42,7 @@ echo "bench_farm: $scene frames $first..$last ($F), $size, $ncs NCs, $cores host
 
 mkdir -p "$T/plain"
 timed "$T/plain.log" "$LINKS1" render "$scene" --frames "$frames" --size "$size" --ncs "$ncs" \
-    -o "$T/plain/f.png" --quiet || fail "plain render: $(tail -n 2 "$T/plain.log")"
+    -o "$T/plain/f.png" || fail "plain render: $(tail -n 2 "$T/plain.log")"
 echo : >"$T/hosts1"
 timed "$T/one.log" "$LINKS1" farm "$scene" --frames "$frames" -o "$T/one" --hosts "$T/hosts1" -- \
     --size "$size" --ncs "$ncs" || fail "farm on one host: $(tail -n 2 "$T/one.log")"

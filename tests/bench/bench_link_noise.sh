@@ -26,7 +26,7 @@ for rate in 1e-5 1e-4 1e-3 1e-2; do
         for seed in $(seq "$SEEDS"); do
             rm -f "$tmp/out.ppm"
             t0=$(date +%s%N)
-            if timeout 120 build/links1 render --quiet --ncs 2 --size 64x48 --link $path \
+            if timeout 120 build/links1 render --ncs 2 --size 64x48 --link $path \
                 --link-noise "$rate:$seed" scenes/demo.scn -o "$tmp/out.ppm" \
                 >"$tmp/log" 2>&1 && cmp -s "$tmp/ref.ppm" "$tmp/out.ppm"; then
                 exact=$((exact + 1))

@@ -45,7 +45,7 @@ sum_prep=0 sum_hidden=0 prep_first=0
 for ((f = first; f <= last; f++)); do
     tr="$T/f$f.trace"
     if ! "$LINKS1" render "$scene" --frame "$f" --ncs "$ncs" --arith "$arith" "${size_args[@]}" \
-        --trace "$tr" -o "$T/f$f.png" --quiet >"$T/f$f.log" 2>&1; then
+        --trace "$tr" -o "$T/f$f.png" >"$T/f$f.log" 2>&1; then
         echo "bench_pipeline: frame $f: links1 render failed: $(tail -n 1 "$T/f$f.log")"
         exit 1
     fi

@@ -95,7 +95,7 @@ pov() {
 # board SCENE: NC instructions per ray (float, 8 NCs) at BSIZE
 board() {
     local log="$TMP/board.log" rays
-    if ! timeout "$LIMIT_S" "$LINKS1" render --quiet --count-insns "$1" -o "$TMP/b.ppm" \
+    if ! timeout "$LIMIT_S" "$LINKS1" render --count-insns "$1" -o "$TMP/b.ppm" \
         --arith float --ncs 8 --size "$BSIZE" >"$log" 2>&1; then
         echo "-"
         return

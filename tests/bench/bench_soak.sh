@@ -29,7 +29,7 @@ cp -r scenes/maps "$TMP/maps"
 "$LINKS1" ref "$TMP/soak.scn" -o "$TMP/ref.ppm" --arith float --size "$SIZE" \
     --frames "0:$last" >"$TMP/ref.log" 2>&1 || { echo "bench_soak: host reference failed"; exit 1; }
 t0=$(date +%s)
-timeout "$LIMIT_S" "$LINKS1" render --quiet "$TMP/soak.scn" -o "$TMP/board.ppm" --ncs "$NCS" \
+timeout "$LIMIT_S" "$LINKS1" render "$TMP/soak.scn" -o "$TMP/board.ppm" --ncs "$NCS" \
     --size "$SIZE" --frames "0:$last" --inject-faults "1:$SEED" --inject-every "$EVERY" \
     --link-noise "$NOISE:$SEED" >"$TMP/board.log" 2>&1
 rc=$?

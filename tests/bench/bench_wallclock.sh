@@ -24,7 +24,7 @@ echo "|---|---|---|---|---|---|---|---|---|---|"
 for n in 1 2; do
     : >"$TMP/lines"
     for r in $(seq "$RUNS"); do
-        timeout 900 "$LINKS1" render --quiet scenes/demo.scn --size "$SIZE" --ncs "$n" \
+        timeout 900 "$LINKS1" render scenes/demo.scn --size "$SIZE" --ncs "$n" \
             -o "$TMP/out.ppm" >"$TMP/log" 2>&1 || { echo "bench_wallclock: render failed:" >&2; tail -3 "$TMP/log" >&2; exit 1; }
         # The numbers of the wall line in order: total, boot, upload, load,
         # frames, prepare, render, pull, write, shutdown, other, QEMU CPU ms,

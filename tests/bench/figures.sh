@@ -64,7 +64,7 @@ board() {
     local log=$1; shift
     [ "${FIG_REUSE:-0}" = 1 ] && [ -n "${FIG_KEEP:-}" ] && grep -q 'trace of\|NCs total' "$log" \
         2>/dev/null && return 0
-    timeout "$LIMIT_S" "$LINKS1" render --quiet "$@" >"$log" 2>&1 ||
+    timeout "$LIMIT_S" "$LINKS1" render "$@" >"$log" 2>&1 ||
         fail "links1 render $* failed: $(tail -n 3 "$log")"
 }
 nc_total() { sed -nE 's/.*NCs total ([0-9]+).*/\1/p' "$1"; }

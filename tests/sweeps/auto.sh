@@ -44,7 +44,7 @@ psnr() { # REF IMG
 board_cost() { # SCENE FIRMWARE [esc]: NC instructions per pixel
     local log=$out/work/board.log
     timeout 900 "$LINKS1" render "$1" --arith "$2" ${3:+--escalate} --ncs 2 --count-insns \
-        --quiet -o "$out/work/board.png" >"$log" 2>&1 || { echo -; return; }
+        -o "$out/work/board.png" >"$log" 2>&1 || { echo -; return; }
     local total
     total=$(grep -o 'NCs total [0-9]*' "$log" | grep -o '[0-9]*$')
     awk -v t="$total" -v s="$SIZE" 'BEGIN { split(s, d, "x"); printf "%.0f", t / (d[1] * d[2]) }'

@@ -176,7 +176,7 @@ for c in "${bconfigs[@]}"; do
     IFS='|' read -r name arith args host <<<"$c"
     img="$out/board-$(basename "$(image "$name")")"
     log="$img.log"
-    if ! timeout "$LIMIT_S" build/links1 render --quiet --count-insns "$scene" --arith "$arith" \
+    if ! timeout "$LIMIT_S" build/links1 render --count-insns "$scene" --arith "$arith" \
         --ncs "$NCS" --size "$SIZE" $args -o "$img" >"$log" 2>&1; then
         echo "pareto: links1 render $name failed: $(tail -n 1 "$log")" >&2
         exit 1
