@@ -24,7 +24,7 @@
 . "$(dirname "$0")/../lib.sh"
 . "$(dirname "$0")/../other_user_lib.sh"
 OWN="farm_hosts_lines_taken farm_hosts_bad_line farm_hosts_dash_line farm_scene_newline
-     farm_dir_made_private"
+     farm_dir_made_private farm_render_args_checked"
 OTHER="other_farm_hosts_theirs other_farm_hosts_in_their_dir other_farm_hosts_mode666
        other_farm_hosts_link other_farm_dir_2775 other_farm_dir_0777 other_farm_dir_theirs"
 if [ ! -x "$LINKS1" ]; then
@@ -40,6 +40,7 @@ A=""                                       # the other account's 1777 directory
 S=""                                       # yours, 0755: the other account may enter it
 trap 'rm -rf "$T" ${A:+"$A"} ${S:+"$S"}' EXIT
 umask 022
+printf ':\n' >"$T/hosts_ok"
 export PARALLEL_SSH=false # a job that gets as far as a host fails at once
 
 # farm NAME ARGS...: links1 farm, its output in $T/NAME.log (echoed); its exit status
@@ -68,6 +69,25 @@ refused() {
             echo ", and $gone exists: a line ran"): $(tail -n 1 "$T/$name.log")"
     fi
 }
+
+# The render arguments after "--" are read with render's own definitions
+# before any host runs: one render does not take, a bad value, and one the
+# farm sets itself are each refused (exit 2), naming it.
+farm farm_args_unknown scenes/anim.scn --frames 0:0 -o "$T/args" --hosts "$T/hosts_ok" \
+    -- --size 32x24 --no-such-option
+rc1=$?
+farm farm_args_value scenes/anim.scn --frames 0:0 -o "$T/args" --hosts "$T/hosts_ok" -- --ncs 0
+rc2=$?
+farm farm_args_own scenes/anim.scn --frames 0:0 -o "$T/args" --hosts "$T/hosts_ok" -- --frames 1:2
+rc3=$?
+if [ $rc1 -eq 2 ] && grep -qF "unknown option '--no-such-option' (see links1 farm --help)" "$T/farm_args_unknown.log" &&
+    [ $rc2 -eq 2 ] && grep -qF -- "--ncs '0': want" "$T/farm_args_value.log" &&
+    [ $rc3 -eq 2 ] && grep -qF -- "render argument --frames: the farm sets it" "$T/farm_args_own.log" &&
+    [ ! -e "$T/args/farm-joblog.tsv" ]; then
+    echo "PASS farm_render_args_checked"
+else
+    echo "FAIL farm_render_args_checked: exits $rc1 $rc2 $rc3 (want 2 each and the option named)"
+fi
 
 # As yourself: the lines of a hosts file, a newline in a path, a new DIR.
 # Every form of a host line is taken (7 hosts; parallel starts)
