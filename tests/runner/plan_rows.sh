@@ -10,8 +10,7 @@
 #                             build/tests/NAME row a C test with a build rule
 #                             (a NAME_SRCS in some module.mk)
 #   plan_scripts_all_planned  every test script under tests/ has a row: each
-#                             .sh or .py but the benchmarks (tests/bench/),
-#                             the style check run alone (tests/style/) and
+#                             .sh or .py but the benchmarks (tests/bench/) and
 #                             the helpers another file of tests/, the
 #                             Makefile or a module.mk runs or sources by name
 #   plan_c_tests_all_planned  every C test with a build rule (test_NAME_SRCS)
@@ -58,7 +57,7 @@ named_elsewhere() {
 }
 bad=
 for f in $(git ls-files -co --exclude-standard -- 'tests/*.sh' 'tests/*.py'); do
-    case $f in tests/bench/* | tests/style/*) continue ;; esac
+    case $f in tests/bench/*) continue ;; esac
     grep -qF -- "$f"$'\t' <<<"$rows" && continue
     named_elsewhere "$f" || bad+=" $f"
 done
