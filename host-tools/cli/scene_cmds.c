@@ -33,9 +33,10 @@ static int scene_cmd_textures_from(struct cli *c, struct scene_file_opts *o)
     return -1;
 }
 
+/* compile takes every scene option (scene_opts.h) */
 static int compile_take(struct cli *c, int code, void *ctx)
 {
-    return code == SCENE_OPT_TEXTURES_FROM ? scene_cmd_textures_from(c, ctx) : -1;
+    return scene_opts_take(ctx, c, code) > 0 ? 0 : -1;
 }
 
 /* Reads "SCENE -o OUT" and the options of a scene command: each option of
@@ -93,21 +94,22 @@ static int cmd_write_file(const char *path, const void *data, size_t len)
     return rc;
 }
 
-static const struct option compile_options[] = {
-    {"textures-from", required_argument, NULL, SCENE_OPT_TEXTURES_FROM},
-    {"help", no_argument, NULL, 'h'},
-    {NULL, 0, NULL, 0},
-};
 
 int scene_cmd_compile(int argc, char **argv)
 {
     const char *in, *out;
     struct scene_file_opts so;
     scene_file_opts_init(&so);
+    static const struct cli_optdef *const lists[] = {scene_optdefs, NULL};
+    struct option longs[32];
+    if (cli_optdefs_table(lists, longs, 32) != 0)
+        return 2;
     struct cli c;
-    cli_init(&c, "links1 compile", argc, argv, "o:h", compile_options);
-    int r = scene_cmd_args(&c, "links1 compile SCENE.scn -o OUT.l1s [--textures-from DIR]", &in,
-                           &out, compile_take, &so);
+    cli_init(&c, "links1 compile", argc, argv, "o:h", longs);
+    int r = scene_cmd_args(&c, "links1 compile SCENE.scn -o OUT.l1s [scene options]", &in, &out,
+                           compile_take, &so);
+    if (r == 1)
+        cli_optdefs_help(stdout, scene_optdefs);
     if (r != 0)
         return r > 0 ? 0 : r == -2 ? 1 : 2;
     struct sd_scene s;
@@ -116,6 +118,7 @@ int scene_cmd_compile(int argc, char **argv)
         fprintf(stderr, "%s\n", err);
         return 1;
     }
+    scene_opts_apply(&so, &s);
     uint8_t *buf;
     size_t len;
     int rc = sd_compile(&s, &buf, &len, err, sizeof err);
@@ -205,6 +208,7 @@ struct ref_cmd {
     int fpu;                  /* --fpu: 1 vfp, 0 none, -1 not given */
     double target;            /* --target-db, -1 not given */
     const char *scene;        /* the first operand */
+    int picked;               /* arith is the build --arith auto or --auto picked */
     long first;               /* --frame or --frames' first: the pre-render's frame */
     struct scene_file_opts so; /* the scene options, for the pre-render */
     char **args;              /* links1-ref-<build>'s arguments, args[0] left for it */
@@ -285,6 +289,7 @@ static int ref_cmd_auto(struct ref_cmd *r, struct arith_auto_choice *pick,
     if (arith_auto_pick("links1 ref", r->scene, &ao, pick) != 0)
         return -1;
     r->arith = pick->build;
+    r->picked = 1;
     if (pick->escalate)
         r->args[r->nargs++] = "--escalate";
     struct scene_file_opts picked; /* --auto's model, after the words given */
@@ -302,9 +307,11 @@ static int ref_cmd_auto(struct ref_cmd *r, struct arith_auto_choice *pick,
 static int ref_cmd_build(const struct ref_cmd *r, const char **build)
 {
     int is_auto = strcmp(r->arith, "auto") == 0;
-    int code = is_auto ? ARITH_FIXED : arith_from_name(r->arith); /* a build, by name */
+    int code = is_auto || r->picked ? ARITH_FIXED : arith_from_name(r->arith); /* by name */
     *build = r->arith;
-    if (is_auto) {
+    if (r->picked) {
+        return 0; /* a host build's own name: fixed18 is Q13.18 */
+    } else if (is_auto) {
         *build = "double"; /* no scene: it says what is missing */
     } else if (code == ARITH_SOFT) {
         /* Software float differs from hardware float only in who executes
