@@ -31,35 +31,82 @@
 #define AUTO_FIXED_BITS_MAX 24
 #define AUTO_MAX_CANDS (5 + AUTO_FIXED_BITS_MAX - AUTO_FIXED_BITS_MIN) /* 2 escalated */
 #define AUTO_MAX_ARGS 48
+#define AUTO_SCENE_STEPS (-1) /* a model's steps: the scene's own model (no knob words) */
+
+/* A candidate's life in auto_choose, one stage at a time:
+ *
+ *   NOT_RUN -> REFUSED                  its host build refused the scene
+ *           -> MEASURED                 its host build's images measured
+ *   MEASURED -> DEARER                  --auto: soft beside a float that keeps the target
+ *            -> BOARD_REFUSED           keeps the goal; the board refused its pre-render
+ *            -> COUNTED                 keeps the goal; its cost counted on the board
+ *   COUNTED -> CONFIRM_TRIED            --auto on a render larger than its pre-render:
+ *                                       auto_confirm_cheapest took it; then, judged at the
+ *                                       render's size, it may miss (back to MEASURED) or
+ *                                       its new steps be counted (BOARD_REFUSED, or it
+ *                                       stays CONFIRM_TRIED)
+ *
+ * A candidate not counted (MEASURED) misses the goal; COUNTED and
+ * CONFIRM_TRIED are the ones with a cost, the pick among them. */
+enum auto_cand_state {
+    CAND_NOT_RUN,       /* not rendered yet */
+    CAND_REFUSED,       /* the host build refused the scene (why): it misses the target */
+    CAND_MEASURED,      /* the host build ran: psnr, psnr_flagged, lost hold; not counted */
+    CAND_DEARER,        /* --auto: soft beside a float that keeps the target, not
+                           counted (float's code, each VFP instruction a call) */
+    CAND_BOARD_REFUSED, /* the board refused its pre-render (why): out */
+    CAND_COUNTED,       /* cost holds its NC instructions per pixel on the board */
+    CAND_CONFIRM_TRIED, /* counted, and auto_confirm_cheapest has taken it */
+};
+
+/* The kind of a candidate, and of a host or board render: --escalate
+ * (lost pixels traced again in double; the board's -esc firmware) or not */
+enum auto_escalation { AUTO_PLAIN, AUTO_ESCALATED };
+
+/* Where a candidate's measures were taken: on the pre-render (the whole
+ * image must keep the goal), or at the render's own size
+ * (auto_confirm_steps: the target is its goal, without the margin) */
+enum auto_judged { AUTO_JUDGED_PRE_RENDER, AUTO_JUDGED_RENDER_SIZE };
+
+/* How a candidate's flagged pixels are judged (--auto): on their own
+ * against the target, or, when under ARITH_AUTO_MIN_FLAGGED of the pixels
+ * are flagged, with the whole image */
+enum auto_flagged_judge { AUTO_FLAGGED_ON_THEIR_OWN, AUTO_FLAGGED_FEW };
+
+/* The pixels a PSNR is over: the whole image, or the flagged ones */
+enum auto_psnr_over { AUTO_PSNR_WHOLE, AUTO_PSNR_FLAGGED };
 
 struct auto_cand {
     char label[24], build[24], arith[8];
-    int escalate;        /* --escalate: lost pixels traced again in double */
-    int measured;        /* the host build ran (images below valid) */
-    int refused;         /* the host build refused the scene (why): it
-                            misses the target */
-    char why[200];
+    enum auto_escalation escalation;
+    enum auto_cand_state state;
+    char why[200];       /* REFUSED, BOARD_REFUSED: the reason */
     double psnr, psnr_flagged;
     unsigned lost;       /* pixels flagged */
-    double cost;         /* NC instructions per pixel on the board; < 0: not measured */
-    /* --auto: the model of this candidate (-1: the scene's), and the PSNR
+    enum auto_judged judged;
+    enum auto_flagged_judge flagged_judge;
+    double cost;         /* COUNTED, CONFIRM_TRIED: NC instructions per pixel on the board */
+    /* --auto: the model of this candidate (AUTO_SCENE_STEPS: the scene's), and the PSNR
      * one rung cheaper in each knob would give (< 0: none tried) */
     int steps;
     double weight;
     double looser_steps_db, looser_weight_db;
     int looser_steps;
     double looser_weight;
-    int looser_flagged;  /* looser_weight_db is the PSNR of the flagged pixels there */
-    int few_flagged;     /* --auto: under ARITH_AUTO_MIN_FLAGGED of the pixels
-                            flagged: judged with the whole image */
-    int confirm_tried;   /* --auto: auto_confirm_cheapest took it */
-    int confirmed;       /* --auto: its density steps and its images judged at
-                            the render's size (auto_confirm_steps): the target
-                            is its goal, without the margin */
-    int board_refused;   /* the board refused its pre-render (why): out */
-    int dearer;          /* --auto: soft beside a float that keeps the target, not
-                            counted (float's code, each VFP instruction a call) */
+    enum auto_psnr_over looser_weight_over; /* the pixels looser_weight_db is over */
 };
+
+/* Its host build's images measured (psnr, psnr_flagged, lost hold) */
+static int auto_has_images(const struct auto_cand *c)
+{
+    return c->state != CAND_NOT_RUN && c->state != CAND_REFUSED;
+}
+
+/* Its cost on the board counted (cost holds) */
+static int auto_counted(const struct auto_cand *c)
+{
+    return c->state == CAND_COUNTED || c->state == CAND_CONFIRM_TRIED;
+}
 
 struct auto_run {
     const char *prog, *path, *tmp;
@@ -247,30 +294,44 @@ static void auto_knobs(const struct auto_run *r, int steps, double weight,
     k->w[n] = NULL;
 }
 
-/* links1-ref-<build> at the pre-render size (with the model steps, weight
- * when steps >= 0) into DIR/<build>[-marked].png.  Its exit status (log in
- * DIR/<build>[-marked].log). */
-static int auto_host_render_model(const struct auto_run *r, const char *build, int escalate,
-                                  int marked, int steps, double weight, char *img, char *log,
-                                  size_t cap)
+/* --mark-lost: the pixels that lost precision painted, or not */
+enum auto_marking { AUTO_UNMARKED, AUTO_MARKED };
+
+/* One host pre-render: links1-ref-<build>, plain or --escalate, marked or
+ * not, with the model steps, weight (--density-steps, --min-weight; none
+ * for AUTO_SCENE_STEPS) */
+struct auto_render {
+    const char *build;
+    enum auto_escalation escalation;
+    enum auto_marking marking;
+    int steps;
+    double weight;
+};
+
+/* The pre-render how asks for at the pre-render size into
+ * DIR/<build>[-esc][-marked].png.  Its exit status (log in
+ * DIR/<build>[-esc][-marked].log). */
+static int auto_host_render(const struct auto_run *r, const struct auto_render *how, char *img,
+                            char *log, size_t cap)
 {
     char prog[PATH_MAX + 32], size[32];
-    if (ref_program_path(build, prog, sizeof prog) != 0)
+    if (ref_program_path(how->build, prog, sizeof prog) != 0)
         return -1;
-    const char *esc = escalate ? "-esc" : "";
-    snprintf(img, cap, "%s/%s%s%s.png", r->tmp, build, esc, marked ? "-marked" : "");
-    snprintf(log, cap, "%s/%s%s%s.log", r->tmp, build, esc, marked ? "-marked" : "");
+    const char *esc = how->escalation == AUTO_ESCALATED ? "-esc" : "";
+    const char *marked = how->marking == AUTO_MARKED ? "-marked" : "";
+    snprintf(img, cap, "%s/%s%s%s.png", r->tmp, how->build, esc, marked);
+    snprintf(log, cap, "%s/%s%s%s.log", r->tmp, how->build, esc, marked);
     struct auto_knob_words k;
-    auto_knobs(r, steps, weight, &k);
+    auto_knobs(r, how->steps, how->weight, &k);
     const char *extra[8];
     int e = 0;
     for (const char *const *w = k.w; *w; w++)
         extra[e++] = *w;
     extra[e++] = "-o";
     extra[e++] = img;
-    if (marked)
+    if (how->marking == AUTO_MARKED)
         extra[e++] = "--mark-lost";
-    if (escalate)
+    if (how->escalation == AUTO_ESCALATED)
         extra[e++] = "--escalate";
     extra[e] = NULL;
     char *argv[AUTO_MAX_ARGS];
@@ -279,10 +340,18 @@ static int auto_host_render_model(const struct auto_run *r, const char *build, i
     return auto_exec(argv, log);
 }
 
-static int auto_host_render(const struct auto_run *r, const char *build, int marked,
-                            char *img, char *log, size_t cap)
+/* The double build's pre-render the candidates are judged against: with
+ * --auto at the most accurate model, else at the scene's.  As
+ * auto_host_render. */
+static int auto_ref_render(const struct auto_run *r, char *img, char *log, size_t cap)
 {
-    return auto_host_render_model(r, build, 0, marked, -1, 0, img, log, cap);
+    struct auto_render ref = {.build = "double", .escalation = AUTO_PLAIN,
+                              .marking = AUTO_UNMARKED, .steps = AUTO_SCENE_STEPS, .weight = 0};
+    if (r->o->model) {
+        ref.steps = SCN_MAX_DENSITY_STEPS;
+        ref.weight = ARITH_AUTO_REF_WEIGHT;
+    }
+    return auto_host_render(r, &ref, img, log, cap);
 }
 
 /* PSNR of img against the reference, over every pixel and over the pixels
@@ -306,23 +375,49 @@ static int auto_read(const char *path, struct image *img, const struct image *li
     return 0;
 }
 
-/* The host build's pre-render of candidate c (plain and marked). */
+/* --auto: the flagged pixels (marked in m) hold the arithmetic's error,
+ * not the model's: c's PSNR over them (its image a) against double with
+ * c's model, and whether they are few enough for the whole image to judge
+ * them.  0, or -1 after a failed render. */
+static int auto_flagged_model(const struct auto_run *r, struct auto_cand *c,
+                              const struct image *a, const struct image *m)
+{
+    struct auto_render model = {.build = "double", .escalation = AUTO_PLAIN,
+                                .marking = AUTO_UNMARKED, .steps = c->steps, .weight = c->weight};
+    char dimg[PATH_MAX], dlog[PATH_MAX];
+    struct image same;
+    if (auto_host_render(r, &model, dimg, dlog, sizeof dimg) != 0 ||
+        auto_read(dimg, &same, &r->ref) != 0)
+        return -1;
+    double all;
+    long flagged;
+    image_error_flagged(&same, a, m, &all, &c->psnr_flagged, &flagged);
+    image_free(&same);
+    c->flagged_judge = (double)flagged < ARITH_AUTO_MIN_FLAGGED * a->width * a->height
+                           ? AUTO_FLAGGED_FEW
+                           : AUTO_FLAGGED_ON_THEIR_OWN;
+    return 0;
+}
+
+/* The host build's pre-render of candidate c (plain and marked): c
+ * MEASURED, or REFUSED (why) when the build refused the scene.  0, or -1
+ * after a failed render. */
 static int auto_measure_image(const struct auto_run *r, struct auto_cand *c)
 {
     char img[PATH_MAX], log[PATH_MAX], mimg[PATH_MAX], mlog[PATH_MAX];
-    int st = auto_host_render_model(r, c->build, c->escalate, 0, c->steps, c->weight, img, log,
-                                    sizeof img);
+    struct auto_render how = {.build = c->build, .escalation = c->escalation,
+                              .marking = AUTO_UNMARKED, .steps = c->steps, .weight = c->weight};
+    int st = auto_host_render(r, &how, img, log, sizeof img);
     if (st != 0) {
-        c->refused = 1;
+        c->state = CAND_REFUSED;
         auto_last_line(log, c->why, sizeof c->why);
         return st > 0 ? 0 : -1;
     }
     /* a compiled scene cannot be marked: its flagged pixels go unchecked
      * and count as missing the target */
     int compiled = scene_file_ends_with(r->path, ".l1s");
-    if (!compiled &&
-        auto_host_render_model(r, c->build, c->escalate, 1, c->steps, c->weight, mimg, mlog,
-                               sizeof mimg) != 0) {
+    how.marking = AUTO_MARKED;
+    if (!compiled && auto_host_render(r, &how, mimg, mlog, sizeof mimg) != 0) {
         auto_last_line(mlog, c->why, sizeof c->why);
         fprintf(stderr, "%s: %s: %s\n", r->prog, auto_name(r->o), c->why);
         return -1;
@@ -336,43 +431,45 @@ static int auto_measure_image(const struct auto_run *r, struct auto_cand *c)
         return -1;
     }
     auto_error(&r->ref, &a, &m, c);
-    /* --auto: the flagged pixels hold the arithmetic's error, not the
-     * model's: against double with the candidate's model */
-    struct image same;
-    char dimg[PATH_MAX], dlog[PATH_MAX];
-    if (r->o->model && !compiled) {
-        double all;
-        long flagged;
-        if (auto_host_render_model(r, "double", 0, 0, c->steps, c->weight, dimg, dlog,
-                                   sizeof dimg) != 0 ||
-            auto_read(dimg, &same, &r->ref) != 0) {
-            image_free(&a);
-            image_free(&m);
-            return -1;
-        }
-        image_error_flagged(&same, &a, &m, &all, &c->psnr_flagged, &flagged);
-        image_free(&same);
-        c->few_flagged = (double)flagged < ARITH_AUTO_MIN_FLAGGED * a.width * a.height;
-    }
+    st = r->o->model && !compiled ? auto_flagged_model(r, c, &a, &m) : 0;
+    image_free(&a);
+    image_free(&m);
+    if (st != 0)
+        return -1;
     if (compiled && lost > 0)
         c->psnr_flagged = 0;
     c->lost = (unsigned)lost;
-    c->measured = 1;
-    image_free(&a);
-    image_free(&m);
+    c->state = CAND_MEASURED;
     return 0;
 }
 
-/* NC instructions per pixel of the pre-render on the board with firmware
- * arith and the model steps, weight (steps < 0: the scene's) (links1
- * render --count-insns): the one cost of --arith auto and --auto; or -1,
- * after printing why, or with c->board_refused set and c->why the board's
- * reason (a limit of its firmware: the candidate is out). */
-static double auto_board_cost(const struct auto_run *r, struct auto_cand *c, int steps,
-                              double weight)
+/* The board's refusal of a pre-render (a limit of its firmware, named
+ * after "the board says: ") in its log, into why.  0, or -1 for none. */
+static int auto_board_refusal(const char *log, char *why, size_t cap)
 {
-    const char *arith = c->arith;
-    int escalate = c->escalate;
+    const char says[] = "the board says: ";
+    char line[300] = "";
+    FILE *f = fopen(log, "r");
+    while (f && fgets(line, sizeof line, f) && !strstr(line, says))
+        line[0] = 0;
+    if (f)
+        fclose(f);
+    if (!strstr(line, says))
+        return -1;
+    line[strcspn(line, "\n")] = 0;
+    snprintf(why, cap, "%s", strstr(line, says) + sizeof says - 1);
+    return 0;
+}
+
+/* Candidate c counted: NC instructions per pixel of the pre-render on the
+ * board with its firmware and model (links1 render --count-insns), the one
+ * cost of --arith auto and --auto, into c->cost, and c in state counted;
+ * or c BOARD_REFUSED with c->why the board's reason (a limit of its
+ * firmware: the candidate is out).  0, or -1 after printing why. */
+static int auto_board_cost(const struct auto_run *r, struct auto_cand *c,
+                           enum auto_cand_state counted)
+{
+    const char *esc = c->escalation == AUTO_ESCALATED ? "-esc" : "";
     char self[PATH_MAX], size[32], img[PATH_MAX], log[PATH_MAX], ncs[8];
     if (self_sibling("links1", self, sizeof self) < 0)
         return -1;
@@ -381,15 +478,15 @@ static double auto_board_cost(const struct auto_run *r, struct auto_cand *c, int
         fprintf(stderr, "%s: %s: machine %d unknown\n", r->prog, auto_name(r->o), r->o->machine);
         return -1;
     }
-    snprintf(img, sizeof img, "%s/board-%s%s.png", r->tmp, arith, escalate ? "-esc" : "");
-    snprintf(log, sizeof log, "%s/board-%s%s.log", r->tmp, arith, escalate ? "-esc" : "");
+    snprintf(img, sizeof img, "%s/board-%s%s.png", r->tmp, c->arith, esc);
+    snprintf(log, sizeof log, "%s/board-%s%s.log", r->tmp, c->arith, esc);
     snprintf(ncs, sizeof ncs, "%d", ARITH_AUTO_NCS);
     struct auto_knob_words k;
-    auto_knobs(r, steps, weight, &k);
-    const char *extra[16] = {"-o", img, "--arith", arith, "--ncs", ncs, "--machine", m->name,
+    auto_knobs(r, c->steps, c->weight, &k);
+    const char *extra[16] = {"-o", img, "--arith", c->arith, "--ncs", ncs, "--machine", m->name,
                              "--count-insns", "--quiet"};
     int e = 10;
-    if (escalate)
+    if (c->escalation == AUTO_ESCALATED)
         extra[e++] = "--escalate";
     for (const char *const *w = k.w; *w; w++) /* the model's words, NULL-ended */
         extra[e++] = *w;
@@ -399,25 +496,15 @@ static double auto_board_cost(const struct auto_run *r, struct auto_cand *c, int
         return -1;
     argv[0] = self; /* links1 render SCENE ... */
     if (auto_exec(argv, log) != 0) {
-        /* the board's refusal (a limit of its firmware, named): the
-         * candidate is out; anything else ends the choice */
-        const char says[] = "the board says: ";
-        char line[300] = "";
-        FILE *f = fopen(log, "r");
-        while (f && fgets(line, sizeof line, f) && !strstr(line, says))
-            line[0] = 0;
-        if (f)
-            fclose(f);
-        if (strstr(line, says)) {
-            line[strcspn(line, "\n")] = 0;
-            snprintf(c->why, sizeof c->why, "%s", strstr(line, says) + sizeof says - 1);
-            c->board_refused = 1;
-            return -1;
+        /* the board's refusal: the candidate is out; anything else ends the choice */
+        if (auto_board_refusal(log, c->why, sizeof c->why) == 0) {
+            c->state = CAND_BOARD_REFUSED;
+            return 0;
         }
         char why[300];
         auto_last_line(log, why, sizeof why);
-        fprintf(stderr, "%s: %s: the board pre-render with %s failed: %s\n", r->prog, auto_name(r->o),
-                c->label, why);
+        fprintf(stderr, "%s: %s: the board pre-render with %s failed: %s\n", r->prog,
+                auto_name(r->o), c->label, why);
         return -1;
     }
     double total = auto_log_number(log, "NCs total ", 1);
@@ -427,9 +514,10 @@ static double auto_board_cost(const struct auto_run *r, struct auto_cand *c, int
                 r->prog, auto_name(r->o), log);
         return -1;
     }
-    double pixels = (double)a.width * a.height;
+    c->cost = total / ((double)a.width * a.height);
+    c->state = counted;
     image_free(&a);
-    return total / pixels;
+    return 0;
 }
 
 /* The candidates for the unit computer: float (with VFP), soft, fixed
@@ -461,14 +549,17 @@ static int auto_candidates(const struct arith_auto_opts *o, struct auto_cand *c)
      * the cost on the board says which pays), every host build */
     if (o->fpu && !o->model) {
         c[n++] = (struct auto_cand){.label = "float escalated", .build = "float",
-                                    .arith = "float", .escalate = 1};
-        c[n] = (struct auto_cand){.build = "fixed", .arith = "fixed", .escalate = 1};
+                                    .arith = "float", .escalation = AUTO_ESCALATED};
+        c[n] = (struct auto_cand){.build = "fixed", .arith = "fixed",
+                                  .escalation = AUTO_ESCALATED};
         snprintf(c[n++].label, sizeof c[0].label, "fixed Q%d.%d escalated",
                  31 - AUTO_FIXED_BITS_BOARD, AUTO_FIXED_BITS_BOARD);
     }
     for (int i = 0; i < n; i++) {
-        c[i].cost = -1;
-        c[i].steps = -1;
+        c[i].state = CAND_NOT_RUN;
+        c[i].judged = AUTO_JUDGED_PRE_RENDER;
+        c[i].flagged_judge = AUTO_FLAGGED_ON_THEIR_OWN;
+        c[i].steps = AUTO_SCENE_STEPS;
         c[i].looser_steps_db = c[i].looser_weight_db = -1;
     }
     return n;
@@ -481,7 +572,9 @@ static int auto_model_psnr(const struct auto_run *r, const char *build, int step
 {
     char img[PATH_MAX], log[PATH_MAX];
     *db = 0;
-    int st = auto_host_render_model(r, build, 0, 0, steps, weight, img, log, sizeof img);
+    struct auto_render how = {.build = build, .escalation = AUTO_PLAIN, .marking = AUTO_UNMARKED,
+                              .steps = steps, .weight = weight};
+    int st = auto_host_render(r, &how, img, log, sizeof img);
     if (st != 0)
         return st > 0 ? 1 : -1;
     struct image a;
@@ -604,11 +697,33 @@ static double auto_goal(const struct auto_run *r)
     return r->o->target_db + r->margin;
 }
 
+/* c's images keep goal over the whole image (target, judged at the
+ * render's size) and target over its flagged pixels (unless few) */
 static int auto_meets_goal(const struct auto_cand *c, double goal, double target)
 {
-    if (c->confirmed)
-        goal = target; /* judged at the render's size */
-    return c->measured && c->psnr >= goal && (c->psnr_flagged >= target || c->few_flagged);
+    if (c->judged == AUTO_JUDGED_RENDER_SIZE)
+        goal = target;
+    return auto_has_images(c) && c->psnr >= goal &&
+           (c->psnr_flagged >= target || c->flagged_judge == AUTO_FLAGGED_FEW);
+}
+
+/* The run at the render's own size (auto_confirm_steps), against the
+ * double build's render there (made once, into r->full_ref).  0, or -1
+ * after a failed render. */
+static int auto_full_run(struct auto_run *r, struct auto_run *full)
+{
+    *full = *r;
+    full->w = r->fw;
+    full->h = r->fh;
+    full->margin = 0;
+    if (!r->full_ref.width) {
+        char img[PATH_MAX], log[PATH_MAX];
+        if (auto_ref_render(full, img, log, sizeof img) != 0 ||
+            auto_read(img, &r->full_ref, NULL) != 0)
+            return -1;
+    }
+    full->ref = r->full_ref;
+    return 0;
 }
 
 /* --auto on a render larger than its pre-render, with a density sphere:
@@ -620,32 +735,23 @@ static int auto_meets_goal(const struct auto_cand *c, double goal, double target
  * once): from the steps the pre-render found, down the rungs while the
  * render keeps the target (past one rung that misses it: the PSNR of a
  * step count is not monotone), up until it does.  c then holds the render's
- * measures (c->confirmed: judged against the target, no margin).  0, or
- * -1 after a failed render. */
+ * measures (c->judged AUTO_JUDGED_RENDER_SIZE: against the target, no
+ * margin), and keeps its state.  0, or -1 after a failed render. */
 static int auto_confirm_steps(struct auto_run *r, struct auto_cand *c)
 {
-    struct auto_run full = *r;
-    full.w = r->fw;
-    full.h = r->fh;
-    full.margin = 0;
-    if (!r->full_ref.width) {
-        char img[PATH_MAX], log[PATH_MAX];
-        if (auto_host_render_model(&full, "double", 0, 0, SCN_MAX_DENSITY_STEPS,
-                                   ARITH_AUTO_REF_WEIGHT, img, log, sizeof img) != 0 ||
-            auto_read(img, &r->full_ref, NULL) != 0)
-            return -1;
-    }
-    full.ref = r->full_ref;
+    struct auto_run full;
+    if (auto_full_run(r, &full) != 0)
+        return -1;
     double target = r->o->target_db;
     int i = 0;
     while (i < AUTO_N_STEPS - 1 && auto_steps[i] < c->steps)
         i++;
     struct auto_cand t = *c;
     t.steps = auto_steps[i];
-    t.confirmed = 1;
+    t.judged = AUTO_JUDGED_RENDER_SIZE;
     if (auto_measure_image(&full, &t) != 0)
         return -1;
-    if (t.refused)
+    if (t.state == CAND_REFUSED)
         return 0; /* the render's size refused: the pre-render's judgement stands */
     if (auto_meets_goal(&t, target, target)) {
         for (int j = i - 1, missed = 0; j >= 0 && missed < 2; j--) {
@@ -653,10 +759,10 @@ static int auto_confirm_steps(struct auto_run *r, struct auto_cand *c)
             d.steps = auto_steps[j];
             if (auto_measure_image(&full, &d) != 0)
                 return -1;
-            if (d.refused || !auto_meets_goal(&d, target, target)) {
+            if (d.state == CAND_REFUSED || !auto_meets_goal(&d, target, target)) {
                 if (!missed++) { /* the rung below the steps kept */
                     t.looser_steps = d.steps;
-                    t.looser_steps_db = d.refused ? 0 : d.psnr;
+                    t.looser_steps_db = d.state == CAND_REFUSED ? 0 : d.psnr;
                 }
                 continue;
             }
@@ -673,10 +779,11 @@ static int auto_confirm_steps(struct auto_run *r, struct auto_cand *c)
             u.looser_steps = t.steps;
             u.looser_steps_db = t.psnr;
             t = u;
-            if (t.refused)
+            if (t.state == CAND_REFUSED)
                 return 0;
         }
     }
+    t.state = c->state; /* measured at the render's size: the stage it was in */
     *c = t;
     return 0;
 }
@@ -769,8 +876,8 @@ static void auto_print_binding(const struct auto_run *r, const struct auto_cand 
                                const struct auto_cand *c)
 {
     /* min_weight was judged on the pre-render; density steps too, or at
-     * the render's size (confirmed: to the target itself) */
-    double t = auto_goal(r), ts = p->confirmed ? r->o->target_db : t;
+     * the render's size (to the target itself) */
+    double t = auto_goal(r), ts = p->judged == AUTO_JUDGED_RENDER_SIZE ? r->o->target_db : t;
     int steps = r->density && p->looser_steps_db >= 0 && p->looser_steps_db < ts;
     int weight = p->looser_weight_db >= 0 && p->looser_weight_db < t;
     char wn[40];
@@ -778,8 +885,9 @@ static void auto_print_binding(const struct auto_run *r, const struct auto_cand 
     snprintf(s_why, sizeof s_why, "density steps (%d give %.1f dB)", p->looser_steps,
              p->looser_steps_db);
     snprintf(w_why, sizeof w_why,
-             p->looser_flagged ? "min_weight (%s leaves flagged pixels at %.1f dB)"
-                               : "min_weight (%s gives %.1f dB)",
+             p->looser_weight_over == AUTO_PSNR_FLAGGED
+                 ? "min_weight (%s leaves flagged pixels at %.1f dB)"
+                 : "min_weight (%s gives %.1f dB)",
              auto_weight_name(p->looser_weight, wn, sizeof wn), p->looser_weight_db);
     if (steps && weight) {
         int sf = p->looser_steps_db <= p->looser_weight_db;
@@ -796,10 +904,11 @@ static void auto_print_binding(const struct auto_run *r, const struct auto_cand 
         if (strcmp(c[i].arith, p->arith) != 0 &&
             !auto_meets_goal(&c[i], auto_goal(r), r->o->target_db))
             printf("%s%s %s", missed++ ? ", " : "; arithmetic: ", c[i].label,
-                   c[i].refused ? "refuses the scene" : "misses the target");
+                   c[i].state == CAND_REFUSED ? "refuses the scene" : "misses the target");
 }
 
-static void auto_print(const struct auto_run *r, const struct auto_cand *c, int n, int pick)
+/* The first line's opening: the machine, the target, the pre-render */
+static void auto_print_head(const struct auto_run *r)
 {
     const struct arith_auto_opts *o = r->o;
     const struct machine_limits *m = machine_limits(o->machine);
@@ -820,41 +929,56 @@ static void auto_print(const struct auto_run *r, const struct auto_cand *c, int 
         printf("; density steps judged again at the render's %dx%d against double there, "
                "to the target", r->fw, r->fh);
     printf("):");
+}
+
+/* One candidate of the first line: " LABEL[ MODEL]: PSNR, COST" */
+static void auto_print_cand(const struct auto_run *r, const struct auto_cand *c)
+{
+    const struct arith_auto_opts *o = r->o;
+    int refused = c->state == CAND_REFUSED;
+    printf(" %s", c->label);
+    if (o->model && !refused)
+        auto_print_model(r, c);
+    printf(o->model && !refused ? ": " : " ");
+    if (refused)
+        printf("refused (misses the target)");
+    else if (c->psnr < (c->judged == AUTO_JUDGED_RENDER_SIZE ? o->target_db : auto_goal(r)))
+        printf("%.1f dB", c->psnr);
+    else if (c->psnr_flagged < o->target_db && c->flagged_judge == AUTO_FLAGGED_FEW)
+        printf("%.1f dB (%u flagged pixels at %.1f dB, under %g%%: judged with the whole image)",
+               c->psnr, c->lost, c->psnr_flagged, 100 * ARITH_AUTO_MIN_FLAGGED);
+    else if (c->psnr_flagged < o->target_db)
+        printf(c->psnr_flagged > 0 ? "%.1f dB, %u flagged pixels at %.1f dB"
+                                   : "%.1f dB, %u flagged pixels (unchecked in a compiled scene)",
+               c->psnr, c->lost, c->psnr_flagged);
+    else
+        printf("%.1f dB%s", c->psnr, c->lost ? " (flagged pixels within target)" : "");
+    if (auto_counted(c))
+        printf(", %.0f insns/pixel", c->cost);
+    else if (c->state == CAND_DEARER)
+        printf(", not counted (float's code with each VFP instruction a call: dearer)");
+    else if (c->state == CAND_BOARD_REFUSED)
+        printf(", refused by the board: %s", c->why);
+}
+
+static void auto_print(const struct auto_run *r, const struct auto_cand *c, int n, int pick)
+{
+    const struct arith_auto_opts *o = r->o;
+    auto_print_head(r);
     for (int i = 0; i < n; i++) {
-        printf("%s %s", i ? ";" : "", c[i].label);
-        if (o->model && !c[i].refused)
-            auto_print_model(r, &c[i]);
-        printf(o->model && !c[i].refused ? ": " : " ");
-        if (c[i].refused)
-            printf("refused (misses the target)");
-        else if (c[i].psnr < (c[i].confirmed ? o->target_db : auto_goal(r)))
-            printf("%.1f dB", c[i].psnr);
-        else if (c[i].psnr_flagged < o->target_db && c[i].few_flagged)
-            printf("%.1f dB (%u flagged pixels at %.1f dB, under %g%%: judged with the whole image)",
-                   c[i].psnr, c[i].lost, c[i].psnr_flagged, 100 * ARITH_AUTO_MIN_FLAGGED);
-        else if (c[i].psnr_flagged < o->target_db)
-            printf(c[i].psnr_flagged > 0 ? "%.1f dB, %u flagged pixels at %.1f dB"
-                                         : "%.1f dB, %u flagged pixels (unchecked in a compiled scene)",
-                   c[i].psnr, c[i].lost, c[i].psnr_flagged);
-        else
-            printf("%.1f dB%s", c[i].psnr, c[i].lost ? " (flagged pixels within target)" : "");
-        if (c[i].cost >= 0)
-            printf(", %.0f insns/pixel", c[i].cost);
-        else if (c[i].dearer)
-            printf(", not counted (float's code with each VFP instruction a call: dearer)");
-        else if (c[i].board_refused)
-            printf(", refused by the board: %s", c[i].why);
+        printf("%s", i ? ";" : "");
+        auto_print_cand(r, &c[i]);
     }
     printf("\n");
     for (int i = 0; i < n; i++)
-        if (c[i].refused)
+        if (c[i].state == CAND_REFUSED)
             printf("%s: %s: %s refused the scene: %s\n", r->prog, auto_name(r->o), c[i].label,
                    auto_refusal(r, c[i].why));
     if (pick < 0)
         return;
     double next = -1;
     for (int i = 0; i < n; i++)
-        if (i != pick && c[i].cost >= 0 && strcmp(c[i].arith, c[pick].arith) != 0 &&
+        if (i != pick && auto_counted(&c[i]) && strcmp(c[i].arith, c[pick].arith) != 0 &&
             (next < 0 || c[i].cost < next))
             next = c[i].cost;
     printf("%s: %s picks %s", r->prog, auto_name(o), c[pick].label);
@@ -886,31 +1010,52 @@ static int auto_confirm_cheapest(struct auto_run *r, struct auto_cand *c, int n)
     for (;;) {
         int k = -1;
         for (int i = 0; i < n; i++)
-            if (c[i].cost >= 0 && !c[i].confirm_tried && (k < 0 || c[i].cost < c[k].cost))
+            if (c[i].state == CAND_COUNTED && (k < 0 || c[i].cost < c[k].cost))
                 k = i;
         if (k < 0 || (best >= 0 && c[k].cost > ARITH_AUTO_CONFIRM_REACH * best))
             return 0;
         int steps = c[k].steps;
-        c[k].confirm_tried = 1;
+        c[k].state = CAND_CONFIRM_TRIED;
         if (auto_confirm_steps(r, &c[k]) != 0) {
             fprintf(stderr, "%s: %s: the %s render at %dx%d failed\n", r->prog, auto_name(o),
                     c[k].label, r->fw, r->fh);
             return -1;
         }
-        /* not confirmed: the render's size refused it, the pre-render's
-         * judgement stands */
-        if (c[k].confirmed && !auto_meets_goal(&c[k], auto_goal(r), o->target_db))
-            c[k].cost = -1; /* misses at the render's size, at every rung */
-        else if (c[k].confirmed && c[k].steps != steps &&
-                 (c[k].cost = auto_board_cost(r, &c[k], c[k].steps, c[k].weight)) < 0 &&
-                 !c[k].board_refused)
+        /* judged at the pre-render only: the render's size refused it, the
+         * pre-render's judgement stands */
+        int full = c[k].judged == AUTO_JUDGED_RENDER_SIZE;
+        if (full && !auto_meets_goal(&c[k], auto_goal(r), o->target_db))
+            c[k].state = CAND_MEASURED; /* misses at the render's size, at every rung */
+        else if (full && c[k].steps != steps &&
+                 auto_board_cost(r, &c[k], CAND_CONFIRM_TRIED) != 0)
             return -1;
-        if (c[k].cost >= 0 && (best < 0 || c[k].cost < best))
+        if (auto_counted(&c[k]) && (best < 0 || c[k].cost < best))
             best = c[k].cost;
     }
 }
 
-static int auto_choose(struct auto_run *r, struct auto_cand *c, int n)
+/* --auto: pixels of candidate c flagged beyond the target at the weight
+ * found (the search looked at the whole image): min_weight down until they
+ * keep it.  0, or -1 after a failed render. */
+static int auto_flagged_weight(const struct auto_run *r, struct auto_cand *c)
+{
+    for (int j = auto_rung_weight(c->weight);
+         j > 0 && auto_has_images(c) && c->psnr >= auto_goal(r) &&
+         c->psnr_flagged < r->o->target_db && c->flagged_judge == AUTO_FLAGGED_ON_THEIR_OWN;
+         j--) {
+        c->looser_weight = c->weight;
+        c->looser_weight_db = c->psnr_flagged;
+        c->looser_weight_over = AUTO_PSNR_FLAGGED;
+        c->weight = auto_weight(j - 1);
+        if (auto_measure_image(r, c) != 0)
+            return -1;
+    }
+    return 0;
+}
+
+/* Every candidate NOT_RUN to MEASURED or REFUSED by its host build (with
+ * --auto its model searched first).  0, or -1 after a failed render. */
+static int auto_measure_all(const struct auto_run *r, struct auto_cand *c, int n)
 {
     const struct arith_auto_opts *o = r->o;
     int steps0 = r->steps0;
@@ -919,69 +1064,86 @@ static int auto_choose(struct auto_run *r, struct auto_cand *c, int n)
         /* soft has float's bits: one host render serves both */
         int same = -1;
         for (int j = 0; j < i; j++)
-            if (strcmp(c[j].build, c[i].build) == 0 && c[j].escalate == c[i].escalate)
+            if (strcmp(c[j].build, c[i].build) == 0 && c[j].escalation == c[i].escalation)
                 same = j;
         if (same >= 0) {
             struct auto_cand keep = c[i];
             c[i] = c[same];
             memcpy(c[i].label, keep.label, sizeof keep.label);
             memcpy(c[i].arith, keep.arith, sizeof keep.arith);
-            c[i].cost = -1;
         } else if ((o->model &&
                     auto_model_search(r, &c[i], auto_goal(r), steps0, weight0) != 0) ||
                    auto_measure_image(r, &c[i]) != 0) {
             fprintf(stderr, "%s: %s: the %s pre-render failed\n", r->prog, auto_name(r->o),
                     c[i].label);
-            return -2;
+            return -1;
         }
-        /* --auto: pixels flagged beyond the target at the weight found (the
-         * search looked at the whole image): min_weight down until they
-         * keep it */
-        for (int j = auto_rung_weight(c[i].weight);
-             o->model && j > 0 && c[i].measured && c[i].psnr >= auto_goal(r) &&
-             c[i].psnr_flagged < o->target_db && !c[i].few_flagged;
-             j--) {
-            c[i].looser_weight = c[i].weight;
-            c[i].looser_weight_db = c[i].psnr_flagged;
-            c[i].looser_flagged = 1;
-            c[i].weight = auto_weight(j - 1);
-            if (auto_measure_image(r, &c[i]) != 0)
-                return -2;
-        }
+        if (o->model && auto_flagged_weight(r, &c[i]) != 0)
+            return -1;
         if (o->model && auto_meets_goal(&c[i], auto_goal(r), o->target_db)) {
             steps0 = c[i].steps; /* the next candidate starts from here */
             weight0 = c[i].weight;
         }
     }
-    for (int i = 0; o->model && i < n; i++)
-        for (int j = 0; j < n; j++)
-            if (strcmp(c[i].arith, "soft") == 0 && strcmp(c[j].arith, "float") == 0 &&
-                auto_meets_goal(&c[j], auto_goal(r), o->target_db) && c[j].steps == c[i].steps &&
-                c[j].weight == c[i].weight)
-                c[i].dearer = 1;
+    return 0;
+}
+
+/* The MEASURED candidates that keep the goal COUNTED on the board (or
+ * BOARD_REFUSED); one of the same firmware and model counted before gives
+ * its cost.  0, or -1 after printing why. */
+static int auto_count_all(const struct auto_run *r, struct auto_cand *c, int n)
+{
     for (int i = 0; i < n; i++) {
-        if (!auto_meets_goal(&c[i], auto_goal(r), o->target_db) || c[i].dearer)
+        if (c[i].state != CAND_MEASURED ||
+            !auto_meets_goal(&c[i], auto_goal(r), r->o->target_db))
             continue;
         for (int j = 0; j < i; j++)
-            if (strcmp(c[j].arith, c[i].arith) == 0 && c[j].escalate == c[i].escalate &&
-                c[j].cost >= 0 && c[j].steps == c[i].steps && c[j].weight == c[i].weight)
+            if (strcmp(c[j].arith, c[i].arith) == 0 && c[j].escalation == c[i].escalation &&
+                auto_counted(&c[j]) && c[j].steps == c[i].steps && c[j].weight == c[i].weight) {
                 c[i].cost = c[j].cost;
-        if (c[i].cost < 0 &&
-            (c[i].cost = auto_board_cost(r, &c[i], c[i].steps, c[i].weight)) < 0 &&
-            !c[i].board_refused)
-            return -2;
+                c[i].state = CAND_COUNTED;
+            }
+        if (!auto_counted(&c[i]) && auto_board_cost(r, &c[i], CAND_COUNTED) != 0)
+            return -1;
     }
-    if (o->model && r->density && r->margin > 0 && auto_confirm_cheapest(r, c, n) != 0)
-        return -2;
+    return 0;
+}
+
+/* The cheapest counted candidate; among those within ARITH_AUTO_TIE of
+ * it, the most accurate.  -1: none. */
+static int auto_cheapest(const struct auto_cand *c, int n)
+{
     int pick = -1;
     for (int i = 0; i < n; i++)
-        if (c[i].cost >= 0 && (pick < 0 || c[i].cost < c[pick].cost))
+        if (auto_counted(&c[i]) && (pick < 0 || c[i].cost < c[pick].cost))
             pick = i;
     for (int i = 0; pick >= 0 && i < n; i++)
-        if (c[i].cost >= 0 && c[i].cost <= c[pick].cost * (1 + ARITH_AUTO_TIE) &&
+        if (auto_counted(&c[i]) && c[i].cost <= c[pick].cost * (1 + ARITH_AUTO_TIE) &&
             c[i].psnr > c[pick].psnr)
             pick = i;
     return pick;
+}
+
+/* Candidate c's life (enum auto_cand_state) for each of the n: the pick,
+ * -1 for none, or -2 after a failed render (printed). */
+static int auto_choose(struct auto_run *r, struct auto_cand *c, int n)
+{
+    const struct arith_auto_opts *o = r->o;
+    if (auto_measure_all(r, c, n) != 0)
+        return -2;
+    /* --auto: soft beside a float of the same model that keeps the target */
+    for (int i = 0; o->model && i < n; i++)
+        for (int j = 0; j < n; j++)
+            if (c[i].state == CAND_MEASURED && strcmp(c[i].arith, "soft") == 0 &&
+                strcmp(c[j].arith, "float") == 0 &&
+                auto_meets_goal(&c[j], auto_goal(r), o->target_db) && c[j].steps == c[i].steps &&
+                c[j].weight == c[i].weight)
+                c[i].state = CAND_DEARER;
+    if (auto_count_all(r, c, n) != 0)
+        return -2;
+    if (o->model && r->density && r->margin > 0 && auto_confirm_cheapest(r, c, n) != 0)
+        return -2;
+    return auto_cheapest(c, n);
 }
 
 static void auto_cleanup(const char *tmp)
@@ -1012,10 +1174,7 @@ int arith_auto_pick(const char *prog, const char *path, const struct arith_auto_
         auto_cleanup(tmp);
         return -1;
     }
-    int st = o->model ? auto_host_render_model(&r, "double", 0, 0, SCN_MAX_DENSITY_STEPS,
-                                               ARITH_AUTO_REF_WEIGHT, img, log, sizeof img)
-                      : auto_host_render(&r, "double", 0, img, log, sizeof img);
-    if (st != 0 || auto_read(img, &r.ref, NULL) != 0) {
+    if (auto_ref_render(&r, img, log, sizeof img) != 0 || auto_read(img, &r.ref, NULL) != 0) {
         char why[300];
         auto_last_line(log, why, sizeof why);
         fprintf(stderr, "%s: %s: the double build's pre-render failed: %s\n", prog, auto_name(o),
@@ -1037,7 +1196,7 @@ int arith_auto_pick(const char *prog, const char *path, const struct arith_auto_
         snprintf(out->label, sizeof out->label, "%s", c[pick].label);
         out->density_steps = o->model && r.density ? c[pick].steps : -1;
         out->min_weight = o->model ? c[pick].weight : -1;
-        out->escalate = c[pick].escalate;
+        out->escalate = c[pick].escalation == AUTO_ESCALATED;
     }
     image_free(&r.ref);
     if (r.full_ref.width)
