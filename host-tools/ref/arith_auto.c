@@ -269,36 +269,26 @@ static int auto_argv(const struct auto_run *r, int board, char *prog, char **arg
     return 0;
 }
 
-/* The words of a model (--auto): "--density-steps N" when the scene has a
- * density sphere, "--min-weight W"; none for steps < 0. */
-struct auto_knob_words {
-    const char *w[5];
-    char steps[16], weight[40];
-};
-
+/* The words of a model (--auto): its density steps when the scene has a
+ * density sphere, its min_weight (scene_opts_words); none for steps < 0,
+ * the scene's own model. */
 static void auto_knobs(const struct auto_run *r, int steps, double weight,
-                       struct auto_knob_words *k)
+                       struct scene_opts_words *k)
 {
-    int n = 0;
-    memset(k->w, 0, sizeof k->w);
-    if (steps >= 0 && r->density) {
-        snprintf(k->steps, sizeof k->steps, "%d", steps);
-        k->w[n++] = "--density-steps";
-        k->w[n++] = k->steps;
-    }
+    struct scene_file_opts so;
+    scene_file_opts_init(&so);
     if (steps >= 0) {
-        snprintf(k->weight, sizeof k->weight, "%.17g", weight);
-        k->w[n++] = "--min-weight";
-        k->w[n++] = k->weight;
+        so.min_weight = weight;
+        so.density_steps = r->density ? steps : -1;
     }
-    k->w[n] = NULL;
+    scene_opts_words(&so, SCENE_OPTS_ALL, k);
 }
 
 /* --mark-lost: the pixels that lost precision painted, or not */
 enum auto_marking { AUTO_UNMARKED, AUTO_MARKED };
 
 /* One host pre-render: links1-ref-<build>, plain or --escalate, marked or
- * not, with the model steps, weight (--density-steps, --min-weight; none
+ * not, with the model steps, weight (density steps and min_weight; none
  * for AUTO_SCENE_STEPS) */
 struct auto_render {
     const char *build;
@@ -321,7 +311,7 @@ static int auto_host_render(const struct auto_run *r, const struct auto_render *
     const char *marked = how->marking == AUTO_MARKED ? "-marked" : "";
     snprintf(img, cap, "%s/%s%s%s.png", r->tmp, how->build, esc, marked);
     snprintf(log, cap, "%s/%s%s%s.log", r->tmp, how->build, esc, marked);
-    struct auto_knob_words k;
+    struct scene_opts_words k;
     auto_knobs(r, how->steps, how->weight, &k);
     const char *extra[8];
     int e = 0;
@@ -481,7 +471,7 @@ static int auto_board_cost(const struct auto_run *r, struct auto_cand *c,
     snprintf(img, sizeof img, "%s/board-%s%s.png", r->tmp, c->arith, esc);
     snprintf(log, sizeof log, "%s/board-%s%s.log", r->tmp, c->arith, esc);
     snprintf(ncs, sizeof ncs, "%d", ARITH_AUTO_NCS);
-    struct auto_knob_words k;
+    struct scene_opts_words k;
     auto_knobs(r, c->steps, c->weight, &k);
     const char *extra[16] = {"-o", img, "--arith", c->arith, "--ncs", ncs, "--machine", m->name,
                              "--count-insns", "--quiet"};
