@@ -26,48 +26,6 @@ struct replay_opts {
     uint32_t scale;
 };
 
-static void replay_usage(FILE *out)
-{
-    fprintf(out,
-            "usage: links1 replay TRACE --ncs LIST [options]\n"
-            "Replays a frame traced on the board (links1 render --trace) on equal-speed unit\n"
-            "computers: one line per NC count with the frame time, the speed-up over one NC,\n"
-            "and how busy the NCs were.  Without the what-if options below it replays what\n"
-            "the board does: the trace's schedule (where the board chose K and the factor\n"
-            "by its NC count, they are chosen for each replayed count) and its rule of asking.\n"
-            "options:\n"
-            "  --ncs LIST       NC counts, e.g. 1,2,4,8,16,32,64,128,254\n"
-            "what-if options:\n"
-            "  --balance M      static, dynamic, decreasing or lines (simple dynamic on whole\n"
-            "                   and partial scanlines, the paper's job unit)\n"
-            "  --areas K        areas of the dynamic or lines grid / smallest-area bound of\n"
-            "                   decreasing\n"
-            "  --mips R         instructions per microsecond of every unit (default %.1f)\n"
-            "  --line-us U      latency of one serial-line message (default %.0f)\n"
-            "  --byte-us B      microseconds per byte on a line (default %.1f: 19,200 baud)\n"
-            "  --ask R          ahead: an NC asks for its next area one round trip before\n"
-            "                   it expects to finish the current one; finished: once it\n"
-            "                   has finished it (the paper's rule); --prefetch = --ask ahead\n"
-            "  --guided F       decreasing: each area takes 1/(F * NCs) of what is left\n"
-            "  --paper          the paper's schedule: --balance lines --areas HEIGHT --ask\n"
-            "                   finished (an option given beside it wins; the NCs' clipping\n"
-            "                   and the scene's settings are the trace's)\n"
-            "  --pipelined      the DM prepared the frame during the previous one: the\n"
-            "                   frame starts at the RC's broadcast\n"
-            "  --first-in-broadcast  the RC puts each NC's first area into the broadcast\n"
-            "  --as-recorded    each NC gets the areas the board gave it, in its order\n"
-            "  --per-nc         also print each NC's instructions\n"
-            "  --check          check that the board's handout in the trace is its\n"
-            "                   schedule's, and each replay a legal handout of its own\n"
-            "  --scale F        price the frame at F times the traced width and height,\n"
-            "                   each pixel at its traced pixel's instructions (a frame\n"
-            "                   traced at a reduced size)\n"
-            "  --timeline OUT.png  draw the frame replayed at the one NC count given: a row\n"
-            "                   per unit computer, the DM preparing, the RC handing out,\n"
-            "                   each NC's areas and its idle time (needs gnuplot)\n",
-            REPLAY_DEFAULT_MIPS, REPLAY_DEFAULT_LINE_US, REPLAY_DEFAULT_BYTE_US);
-}
-
 enum replay_opt_code {
     REPLAY_OPT_NCS = CLI_OWN_CODES,
     REPLAY_OPT_BALANCE,
@@ -88,27 +46,58 @@ enum replay_opt_code {
     REPLAY_OPT_TIMELINE,
 };
 
-static const struct option replay_options[] = {
-    {"ncs", required_argument, NULL, REPLAY_OPT_NCS},
-    {"balance", required_argument, NULL, REPLAY_OPT_BALANCE},
-    {"areas", required_argument, NULL, REPLAY_OPT_AREAS},
-    {"mips", required_argument, NULL, REPLAY_OPT_MIPS},
-    {"line-us", required_argument, NULL, REPLAY_OPT_LINE_US},
-    {"byte-us", required_argument, NULL, REPLAY_OPT_BYTE_US},
-    {"prefetch", no_argument, NULL, REPLAY_OPT_PREFETCH},
-    {"ask", required_argument, NULL, REPLAY_OPT_ASK},
-    {"guided", required_argument, NULL, REPLAY_OPT_GUIDED},
-    {"pipelined", no_argument, NULL, REPLAY_OPT_PIPELINED},
-    {"first-in-broadcast", no_argument, NULL, REPLAY_OPT_FIRST_IN_BROADCAST},
-    {"as-recorded", no_argument, NULL, REPLAY_OPT_AS_RECORDED},
-    {"per-nc", no_argument, NULL, REPLAY_OPT_PER_NC},
-    {"check", no_argument, NULL, REPLAY_OPT_CHECK},
-    {"scale", required_argument, NULL, REPLAY_OPT_SCALE},
-    {"paper", no_argument, NULL, REPLAY_OPT_PAPER},
-    {"timeline", required_argument, NULL, REPLAY_OPT_TIMELINE},
-    {"help", no_argument, NULL, 'h'},
-    {NULL, 0, NULL, 0},
+static const struct cli_optdef replay_optdefs[] = {
+    {"ncs", "LIST", REPLAY_OPT_NCS, "NC counts, e.g. 1,2,4,8,16,32,64,128,254"},
+    {"per-nc", NULL, REPLAY_OPT_PER_NC, "also print each NC's instructions"},
+    {"check", NULL, REPLAY_OPT_CHECK,
+     "check that the board's handout in the trace is its schedule's,\n"
+     "and each replay a legal handout of its own"},
+    {"scale", "F", REPLAY_OPT_SCALE,
+     "price the frame at F times the traced width and height, each\n"
+     "pixel at its traced pixel's instructions (1..64)"},
+    {"timeline", "OUT.png", REPLAY_OPT_TIMELINE,
+     "draw the frame replayed at the one NC count given: a row per\n"
+     "unit computer (needs gnuplot)"},
+    CLI_OPTDEF_END,
 };
+
+/* The what-ifs: a schedule or a speed other than the board's. */
+static const struct cli_optdef replay_whatif_optdefs[] = {
+    {"balance", "M", REPLAY_OPT_BALANCE, "static, dynamic, decreasing or lines"},
+    {"areas", "K", REPLAY_OPT_AREAS,
+     "areas of the dynamic or lines grid / smallest-area bound of\n"
+     "decreasing"},
+    {"guided", "F", REPLAY_OPT_GUIDED, "decreasing: each area takes 1/(F * NCs) of what is left"},
+    {"ask", "ahead|finished", REPLAY_OPT_ASK,
+     "when an NC asks for its next area: a round trip before it\n"
+     "expects to finish, or once it has (the paper's rule)"},
+    {"prefetch", NULL, REPLAY_OPT_PREFETCH, "the same as --ask ahead"},
+    {"paper", NULL, REPLAY_OPT_PAPER,
+     "the paper's schedule: --balance lines --areas HEIGHT --ask\n"
+     "finished (an option given beside it wins)"},
+    {"mips", "R", REPLAY_OPT_MIPS, "instructions per microsecond of every unit (default 1.0)"},
+    {"line-us", "U", REPLAY_OPT_LINE_US, "latency of one serial-line message (default 1000)"},
+    {"byte-us", "B", REPLAY_OPT_BYTE_US, "microseconds per byte on a line (default 520.8)"},
+    {"pipelined", NULL, REPLAY_OPT_PIPELINED, "the DM prepared the frame during the previous one"},
+    {"first-in-broadcast", NULL, REPLAY_OPT_FIRST_IN_BROADCAST,
+     "the RC puts each NC's first area into the broadcast"},
+    {"as-recorded", NULL, REPLAY_OPT_AS_RECORDED,
+     "each NC gets the areas the board gave it, in its order"},
+    CLI_OPTDEF_END,
+};
+
+static void replay_usage(FILE *out)
+{
+    fprintf(out, "usage: links1 replay TRACE --ncs LIST [options]\n"
+                 "Replays a frame traced on the board (links1 render --trace) on equal-speed\n"
+                 "unit computers: one line per NC count with the frame time, the speed-up over\n"
+                 "one NC, and how busy the NCs were.  Without the what-if options it replays\n"
+                 "what the board does.\n"
+                 "options:\n");
+    cli_optdefs_help(out, replay_optdefs);
+    fprintf(out, "what-if options:\n");
+    cli_optdefs_help(out, replay_whatif_optdefs);
+}
 
 /* "1,2,4": 0, or -1 if not a list of 1..4096. */
 static int replay_parse_list(const char *s, struct replay_opts *o)
@@ -213,8 +202,12 @@ static int replay_parse(struct replay_opts *o, int argc, char **argv)
     o->cfg.mips = REPLAY_DEFAULT_MIPS;
     o->cfg.line_us = REPLAY_DEFAULT_LINE_US;
     o->cfg.byte_us = REPLAY_DEFAULT_BYTE_US;
+    static const struct cli_optdef *const lists[] = {replay_optdefs, replay_whatif_optdefs, NULL};
+    struct option longs[32];
+    if (cli_optdefs_table(lists, longs, 32) != 0)
+        return -1;
     struct cli c;
-    cli_init(&c, "links1 replay", argc, argv, "h", replay_options);
+    cli_init(&c, "links1 replay", argc, argv, "h", longs);
     for (int code; (code = cli_next(&c)) != -1;) {
         if (code == 'h') {
             replay_usage(stdout);
