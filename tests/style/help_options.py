@@ -21,6 +21,7 @@ import glob
 import os
 import re
 import subprocess
+from concurrent.futures import ThreadPoolExecutor
 
 BUILD = "build"
 
@@ -63,25 +64,36 @@ def accepted(prefix, opt):
     return not re.search(r"unknown option|unrecognized option", err)
 
 
+def check_program(label, prefix, names):
+    """(bad_prog, bad_accept, bad_shown, bad_err) of one program."""
+    rc, out, _ = run(prefix + ["--help"])
+    if rc != 0 or not out.startswith("usage:"):
+        return [f"{label} --help exits {rc}"], [], [], []
+    shown = set(re.findall(r"^  (--[a-z][a-z0-9-]*)", out, re.M))
+    bad_accept = [f"{label} {o}" for o in sorted(shown) if not accepted(prefix, o)]
+    bad_shown = [f"{label} --{n}" for n in sorted(names)
+                 if f"--{n}" not in out and accepted(prefix, f"--{n}")]
+    bad_err = []
+    rc, out, err = run(prefix + ["--no-such-option"])
+    lines = err.strip().split("\n")
+    if rc != 2 or len(lines) != 1 or "--no-such-option" not in lines[0] or \
+            "--help)" not in lines[0]:
+        bad_err.append(f"{label}: exit {rc}, {len(lines)} line(s): {lines[0][:80]}")
+    return [], bad_accept, bad_shown, bad_err
+
+
 def main():
     os.chdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
     top, progs = programs()
     bad_prog, bad_shown, bad_accept, bad_err = [], [], [], []
     names = defined_names()
-    for label, prefix in progs:
-        rc, out, _ = run(prefix + ["--help"])
-        if rc != 0 or not out.startswith("usage:"):
-            bad_prog.append(f"{label} --help exits {rc}")
-            continue
-        shown = set(re.findall(r"^  (--[a-z][a-z0-9-]*)", out, re.M))
-        bad_accept += [f"{label} {o}" for o in sorted(shown) if not accepted(prefix, o)]
-        bad_shown += [f"{label} --{n}" for n in sorted(names)
-                      if f"--{n}" not in out and accepted(prefix, f"--{n}")]
-        rc, out, err = run(prefix + ["--no-such-option"])
-        lines = err.strip().split("\n")
-        if rc != 2 or len(lines) != 1 or "--no-such-option" not in lines[0] or \
-                "--help)" not in lines[0]:
-            bad_err.append(f"{label}: exit {rc}, {len(lines)} line(s): {lines[0][:80]}")
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        results = list(pool.map(lambda p: check_program(p[0], p[1], names), progs))
+    for bp, ba, bs, be in results:
+        bad_prog += bp
+        bad_accept += ba
+        bad_shown += bs
+        bad_err += be
     for name, bad in [("help_lists_programs", bad_prog), ("help_options_accepted", bad_accept),
                       ("help_accepted_shown", bad_shown), ("usage_error_one_line", bad_err)]:
         print(f"FAIL {name}: " + "; ".join(bad[:10]) if bad else f"PASS {name}")
