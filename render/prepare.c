@@ -661,6 +661,63 @@ size_t render_scene_index_bytes(const scene_t *s)
     return render_scene_index_bytes_layout(s, &render_layout_native);
 }
 
+/* Each cluster's children and primitives listed from its first, the
+ * counts render_scene_index made turned into offsets (a counting sort:
+ * ascending index). */
+static void prep_index_lists(const scene_t *s, scene_group_t *g, uint32_t *child,
+                             uint32_t *plist)
+{
+    uint32_t nc = s->cluster_count, np = s->prim_count, kids = 0, prims = 0;
+    for (uint32_t i = 0; i < nc; i++) {
+        g[i].first_child = kids;
+        kids += g[i].child_count;
+        g[i].child_count = 0;
+        g[i].first_prim = prims;
+        prims += g[i].prim_count;
+        g[i].prim_count = 0;
+    }
+    for (uint32_t i = 1; i < nc; i++) {
+        scene_group_t *p = &g[s->clusters[i].parent];
+        child[p->first_child + p->child_count++] = i;
+    }
+    for (uint32_t i = 0; i < np; i++) {
+        scene_group_t *c = &g[s->prims[i].cluster];
+        plist[c->first_prim + c->prim_count++] = i;
+    }
+}
+
+/* Each triangle's texture spread, and each vertex normal's first equal
+ * (named: the records a triangle took; cache: prep_share's).  RENDER_OK,
+ * or RENDER_ERR_PRIM for a record named twice or out of range. */
+static render_status_t prep_index_triangles(const scene_t *s, const scene_group_t *g,
+                                            uint8_t *named, uint32_t *cache, uint32_t *src,
+                                            num_t *spread)
+{
+    uint32_t np = s->prim_count, nn = s->normals_count;
+    for (uint32_t j = 0; j < nn; j++)
+        for (uint32_t k = 0; k < 3; k++)
+            src[3 * j + k] = j << 2 | k;
+    for (uint32_t i = 0; i < np; i++) {
+        const scene_prim_t *sp = &s->prims[i];
+        if (sp->kind != SCENE_PRIM_TRIANGLE)
+            continue;
+        const num_t *u = sp->shape.triangle.tex_u, *v = sp->shape.triangle.tex_v;
+        for (int k = 1; k < 3; k++)
+            spread[i] = num_add(spread[i], num_max(num_abs(num_sub(u[k], u[0])),
+                                                   num_abs(num_sub(v[k], v[0]))));
+        if (!sp->shape.triangle.smooth)
+            continue;
+        uint32_t maps = g[sp->cluster].maps_of;
+        uint32_t j = sp->shape.triangle.smooth - 1;
+        if (j >= nn || named[j]) /* one record, one triangle (the loader's rule) */
+            return RENDER_ERR_PRIM;
+        named[j] = 1;
+        for (uint32_t k = 0; k < 3; k++)
+            src[3 * j + k] = prep_share(cache, &s->normals[j].n[k], maps, j << 2 | k, s);
+    }
+    return RENDER_OK;
+}
+
 render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index_t *out)
 {
     __builtin_memset(out, 0, sizeof *out);
@@ -711,50 +768,14 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
         arena_release_to(arena, mark);
         return st;
     }
-    uint32_t kids = 0, prims = 0;
-    for (uint32_t i = 0; i < nc; i++) {
-        g[i].first_child = kids;
-        kids += g[i].child_count;
-        g[i].child_count = 0;
-        g[i].first_prim = prims;
-        prims += g[i].prim_count;
-        g[i].prim_count = 0;
-    }
-    for (uint32_t i = 1; i < nc; i++) {
-        scene_group_t *p = &g[s->clusters[i].parent];
-        child[p->first_child + p->child_count++] = i;
-    }
-    for (uint32_t i = 0; i < np; i++) {
-        scene_group_t *c = &g[s->prims[i].cluster];
-        plist[c->first_prim + c->prim_count++] = i;
-    }
+    prep_index_lists(s, g, child, plist);
     /* each vertex normal's first equal (bits and maps), in the order
      * render_prepare maps them: rising primitive index.  (Vertices shared
      * likewise cost more to copy than to map: measured, not kept.) */
-    for (uint32_t j = 0; j < nn; j++)
-        for (uint32_t k = 0; k < 3; k++)
-            src[3 * j + k] = j << 2 | k;
-    for (uint32_t i = 0; i < np; i++) {
-        const scene_prim_t *sp = &s->prims[i];
-        if (sp->kind != SCENE_PRIM_TRIANGLE)
-            continue;
-        const num_t *u = sp->shape.triangle.tex_u, *v = sp->shape.triangle.tex_v;
-        for (int k = 1; k < 3; k++)
-            spread[i] = num_add(spread[i], num_max(num_abs(num_sub(u[k], u[0])),
-                                                   num_abs(num_sub(v[k], v[0]))));
-        if (!sp->shape.triangle.smooth)
-            continue;
-        uint32_t maps = g[sp->cluster].maps_of;
-        uint32_t j = sp->shape.triangle.smooth - 1;
-        if (j >= nn || named[j]) { /* one record, one triangle (the loader's rule) */
-            arena_release_to(arena, mark);
-            return RENDER_ERR_PRIM;
-        }
-        named[j] = 1;
-        for (uint32_t k = 0; k < 3; k++)
-            src[3 * j + k] = prep_share(cache, &s->normals[j].n[k], maps, j << 2 | k, s);
-    }
+    st = prep_index_triangles(s, g, named, cache, src, spread);
     arena_release_to(arena, mark);
+    if (st != RENDER_OK)
+        return st;
     out->groups = g;
     out->child_list = child;
     out->prim_list = plist;

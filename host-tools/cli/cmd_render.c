@@ -513,6 +513,55 @@ static int render_out_check(const struct render_opts *o, const char *out)
 }
 
 /* Returns 0, 1 (--help shown) or -1 (bad option, printed). */
+/* Every job's -o OUT checked before the board boots, and a film's ffmpeg
+ * there.  0, or -1 after saying why. */
+static int render_outs_check(const struct render_opts *o)
+{
+    int films = 0;
+    for (int j = 0; j < o->njobs; j++) {
+        if (!o->jobs[j].out) {
+            fprintf(stderr, "links1 render: %s has no -o OUT\n", o->jobs[j].scene);
+            return -1;
+        }
+        if (render_out_check(o, o->jobs[j].out) != 0)
+            return -1;
+        films += film_kind_of(o->jobs[j].out) != FILM_NONE;
+    }
+    if (!films)
+        return 0;
+    char err[512];
+    if (o->resume) {
+        fprintf(stderr, "links1 render: --resume keeps numbered frames; a film (.mp4, "
+                ".webm, .apng) is made whole in one run\n");
+        return -1;
+    }
+    if (film_program_check(err, sizeof err) != 0) {
+        fprintf(stderr, "links1 render: %s\n", err);
+        return -1;
+    }
+    return 0;
+}
+
+/* The machine the scene is checked against: --machine's, or the named
+ * board's.  0, or -1 after saying why. */
+static int render_machine_settle(struct render_opts *o)
+{
+    o->scene.machine = o->board.machine;
+    if (!o->board_name)
+        return 0;
+    int m = board_named_machine(o->board_name);
+    if (m < 0)
+        return -1;
+    if (o->board.machine != MACHINE_VIRT && o->board.machine != m) {
+        fprintf(stderr, "links1 render: --machine %s, but board %s is a %s board\n",
+                machine_limits(o->board.machine)->name, o->board_name,
+                machine_limits(m)->name);
+        return -1;
+    }
+    o->board.machine = o->scene.machine = m;
+    return 0;
+}
+
 static int render_parse(struct render_opts *o, int argc, char **argv)
 {
     memset(o, 0, sizeof *o);
@@ -545,44 +594,9 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
                 "need a board of this command's own, not --board %s\n", o->board_name);
         return -1;
     }
-    int films = 0;
-    for (int j = 0; j < o->njobs; j++) {
-        if (!o->jobs[j].out) {
-            fprintf(stderr, "links1 render: %s has no -o OUT\n", o->jobs[j].scene);
-            return -1;
-        }
-        if (render_out_check(o, o->jobs[j].out) != 0)
-            return -1;
-        films += film_kind_of(o->jobs[j].out) != FILM_NONE;
-    }
-    if (films) { /* before a board boots: the film could not be made */
-        char err[512];
-        if (o->resume) {
-            fprintf(stderr, "links1 render: --resume keeps numbered frames; a film (.mp4, "
-                    ".webm, .apng) is made whole in one run\n");
-            return -1;
-        }
-        if (film_program_check(err, sizeof err) != 0) {
-            fprintf(stderr, "links1 render: %s\n", err);
-            return -1;
-        }
-    }
-    if (render_auto_check(o) != 0 || render_escalate_check(o) != 0)
+    if (render_outs_check(o) != 0 || render_auto_check(o) != 0 ||
+        render_escalate_check(o) != 0 || render_machine_settle(o) != 0)
         return -1;
-    o->scene.machine = o->board.machine; /* the scene is checked against its limits */
-    if (o->board_name) {
-        /* The named board's machine: the scene is checked against its limits. */
-        int m = board_named_machine(o->board_name);
-        if (m < 0)
-            return -1;
-        if (o->board.machine != MACHINE_VIRT && o->board.machine != m) {
-            fprintf(stderr, "links1 render: --machine %s, but board %s is a %s board\n",
-                    machine_limits(o->board.machine)->name, o->board_name,
-                    machine_limits(m)->name);
-            return -1;
-        }
-        o->board.machine = o->scene.machine = m;
-    }
     if (o->resume && !o->many) {
         fprintf(stderr, "links1 render: --resume goes with --frames A:B\n");
         return -1;

@@ -1,8 +1,7 @@
 #!/usr/bin/env python3
 """func_lengths.py: no C function outside tests/ is longer than 100 lines.
-A function is counted from its opening brace, alone at the start of a line
-after its head, to its closing brace at the start of a line; its length is
-the lines between them (the body).  Prints one line:
+A function is counted from the first line of its head to its closing
+brace at the start of a line, both included.  Prints one line:
 
   PASS func_lengths_at_most_100   or   FAIL func_lengths_at_most_100: ...
 
@@ -20,18 +19,18 @@ HEAD = re.compile(r"^[A-Za-z_][\w \t\*,()\[\]]*?\b(\w+)\s*\(")
 
 def functions(path):
     lines = open(path, encoding="utf-8", errors="replace").read().split("\n")
-    name, start = None, None
+    name, start, head = None, None, None
     for i, line in enumerate(lines):
         if line == "{" and i > 0:
             # the head: the nearest line above at column 0 with a name and '('
             for j in range(i - 1, max(i - 8, -1), -1):
                 m = HEAD.match(lines[j])
                 if m and not lines[j].startswith(("struct ", "enum ", "union ", "typedef ")):
-                    name, start = m.group(1), i
+                    name, start, head = m.group(1), i, j
                     break
         elif line.startswith("}") and start is not None:
-            yield name, start + 1, i - start - 1
-            name, start = None, None
+            yield name, head + 1, i - head + 1
+            name, start, head = None, None, None
 
 
 def sources():
