@@ -80,15 +80,7 @@ static int scene_cmd_args(struct cli *c, const char *usage, const char **in, con
 static int cmd_write_file(const char *path, const void *data, size_t len)
 {
     char err[PATH_MAX + 256];
-    struct out_file of;
-    int rc = out_file_open(&of, path, err, sizeof err);
-    if (rc == 0 && fwrite(data, 1, len, of.f) != len) {
-        snprintf(err, sizeof err, "%s: write failed: %s", path, strerror(errno));
-        out_file_abort(&of);
-        rc = -1;
-    } else if (rc == 0) {
-        rc = out_file_commit(&of, err, sizeof err);
-    }
+    int rc = out_file_write(path, data, len, err, sizeof err);
     if (rc != 0)
         fprintf(stderr, "links1: %s\n", err);
     return rc;

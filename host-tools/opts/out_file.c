@@ -179,3 +179,16 @@ int out_file_copy(const char *from, const char *path, char *err, size_t cap)
     }
     return out_file_commit(&o, err, cap);
 }
+
+int out_file_write(const char *path, const void *data, size_t len, char *err, size_t cap)
+{
+    struct out_file o;
+    if (out_file_open(&o, path, err, cap) != 0)
+        return -1;
+    if (fwrite(data, 1, len, o.f) != len) {
+        snprintf(err, cap, "%s: write failed: %s", path, strerror(errno));
+        out_file_abort(&o);
+        return -1;
+    }
+    return out_file_commit(&o, err, cap);
+}

@@ -42,4 +42,8 @@ void out_file_abort(struct out_file *o);
  * through out_file_open and out_file_commit.  0, or -1 with why in err. */
 int out_file_copy(const char *from, const char *path, char *err, size_t cap);
 
+/* len bytes of data written to path whole or not at all.  0, or -1 with
+ * "PATH: why" in err. */
+int out_file_write(const char *path, const void *data, size_t len, char *err, size_t cap);
+
 #endif

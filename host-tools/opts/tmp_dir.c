@@ -127,11 +127,18 @@ static int tmp_template(const char *base, const char *what, char *out, size_t ca
     return 0;
 }
 
-int tmp_dir_make(const char *what, char *out, size_t cap)
+/* The name template of a new temporary WHAT in $TMPDIR into out, a
+ * killed run's WHATs swept first.  0, or -1 (too long). */
+static int tmp_name(const char *what, char *out, size_t cap)
 {
     const char *base = tmp_base();
     tmp_sweep(base, what);
-    if (tmp_template(base, what, out, cap) < 0)
+    return tmp_template(base, what, out, cap);
+}
+
+int tmp_dir_make(const char *what, char *out, size_t cap)
+{
+    if (tmp_name(what, out, cap) < 0)
         return -1;
     sigset_t old;
     exit_clean_hold(&old);
@@ -146,9 +153,7 @@ int tmp_dir_make(const char *what, char *out, size_t cap)
 
 int tmp_file_make(const char *what, char *out, size_t cap)
 {
-    const char *base = tmp_base();
-    tmp_sweep(base, what);
-    if (tmp_template(base, what, out, cap) < 0)
+    if (tmp_name(what, out, cap) < 0)
         return -1;
     sigset_t old;
     exit_clean_hold(&old);

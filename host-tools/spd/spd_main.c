@@ -174,15 +174,7 @@ static int spd_text(const struct spd_opts *o, struct spd_made *m)
 static int spd_write(const char *out, const char *text, size_t len)
 {
     char why[PATH_MAX + 256];
-    struct out_file of;
-    int rc = out_file_open(&of, out, why, sizeof why);
-    if (rc == 0 && fwrite(text, 1, len, of.f) != len) {
-        snprintf(why, sizeof why, "%s: write failed", out);
-        out_file_abort(&of);
-        rc = -1;
-    } else if (rc == 0) {
-        rc = out_file_commit(&of, why, sizeof why);
-    }
+    int rc = out_file_write(out, text, len, why, sizeof why);
     if (rc != 0)
         fprintf(stderr, "links1-spd: %s\n", why);
     return rc;
