@@ -10,43 +10,65 @@
 #include "host-tools/image/image_io.h"
 #include "host-tools/opts/cli_opt.h"
 
-static int compare_usage(FILE *out)
-{
-    fprintf(out, "usage: links1 compare A.png B.png [--within K] [--min-fraction F] "
-                    "[--silhouette [--max-masked F]] [--moved] [--flagged]\n"
-                    "       links1 compare REF.png PLAIN.png --flags MARKED.png [--within K]\n"
-                    "         [--min-precision P] [--min-recall R]\n"
-                    "  exit 0 when at least F (default 0.99) of the compared pixels have every\n"
-                    "  channel within K/255 (default 1); --silhouette leaves out the pixels\n"
-                    "  next to an edge of A, and fails if more than F of all pixels are left out;\n"
-                    "  --moved leaves out the pixels of B within K of a pixel next to them in A\n"
-                    "  (an edge or a thin object moved by less than a pixel);\n"
-                    "  --flagged leaves out the pixels of B painted the --mark-lost colour;\n"
-                    "  --flags scores the flags of MARKED (PLAIN rendered with --mark-lost)\n"
-                    "  against the pixels of PLAIN beyond K/255 (default 2) of REF: precision,\n"
-                    "  the share of flagged pixels beyond; recall, the share of pixels beyond\n"
-                    "  that were flagged, leaving out those next to an edge of REF or moved;\n"
-                    "  exit 0 when precision >= P (default 0) and recall >= R (default 1)\n");
-    return out == stdout ? 0 : 2;
-}
-
-enum { COMPARE_OPT_WITHIN = CLI_OWN_CODES, COMPARE_OPT_MIN_FRACTION, COMPARE_OPT_MAX_MASKED,
-       COMPARE_OPT_SILHOUETTE, COMPARE_OPT_FLAGGED, COMPARE_OPT_MOVED,
-       COMPARE_OPT_FLAGS, COMPARE_OPT_MIN_PRECISION, COMPARE_OPT_MIN_RECALL };
-
-static const struct option compare_options[] = {
-    {"within", required_argument, NULL, COMPARE_OPT_WITHIN},
-    {"min-fraction", required_argument, NULL, COMPARE_OPT_MIN_FRACTION},
-    {"max-masked", required_argument, NULL, COMPARE_OPT_MAX_MASKED},
-    {"silhouette", no_argument, NULL, COMPARE_OPT_SILHOUETTE},
-    {"flagged", no_argument, NULL, COMPARE_OPT_FLAGGED},
-    {"moved", no_argument, NULL, COMPARE_OPT_MOVED},
-    {"flags", required_argument, NULL, COMPARE_OPT_FLAGS},
-    {"min-precision", required_argument, NULL, COMPARE_OPT_MIN_PRECISION},
-    {"min-recall", required_argument, NULL, COMPARE_OPT_MIN_RECALL},
-    {"help", no_argument, NULL, 'h'},
-    {NULL, 0, NULL, 0},
+enum compare_opt_code {
+    COMPARE_OPT_WITHIN = CLI_OWN_CODES,
+    COMPARE_OPT_MIN_FRACTION,
+    COMPARE_OPT_MAX_MASKED,
+    COMPARE_OPT_SILHOUETTE,
+    COMPARE_OPT_FLAGGED,
+    COMPARE_OPT_MOVED,
+    COMPARE_OPT_FLAGS,
+    COMPARE_OPT_MIN_PRECISION,
+    COMPARE_OPT_MIN_RECALL
 };
+
+static const struct cli_optdef compare_optdefs[] = {
+    {"within", "K", COMPARE_OPT_WITHIN,
+     "a pixel agrees when every channel is within K/255 (0..255,\n"
+     "default 1; 2 with --flags)"},
+    {"min-fraction", "F", COMPARE_OPT_MIN_FRACTION,
+     "exit 0 when at least F of the compared pixels agree (0..1,\n"
+     "default 0.99)"},
+    {"silhouette", NULL, COMPARE_OPT_SILHOUETTE, "leave out the pixels next to an edge of A"},
+    {"max-masked", "F", COMPARE_OPT_MAX_MASKED,
+     "fail if --silhouette leaves out more than F of all pixels (0..1,\n"
+     "default 1)"},
+    {"moved", NULL, COMPARE_OPT_MOVED,
+     "leave out the pixels of B within K of a pixel next to them in A\n"
+     "(an edge or a thin object moved by less than a pixel)"},
+    {"flagged", NULL, COMPARE_OPT_FLAGGED,
+     "leave out the pixels of B painted the --mark-lost colour"},
+    CLI_OPTDEF_END,
+};
+
+/* The second form: how well --mark-lost's flags pick out the pixels that
+ * lost precision. */
+static const struct cli_optdef compare_flags_optdefs[] = {
+    {"flags", "MARKED", COMPARE_OPT_FLAGS,
+     "score the flags of MARKED (PLAIN rendered with --mark-lost)\n"
+     "against the pixels of PLAIN beyond K/255 of REF"},
+    {"min-precision", "P", COMPARE_OPT_MIN_PRECISION,
+     "exit 0 only when precision, the share of flagged pixels that are\n"
+     "beyond, is at least P (0..1, default 0)"},
+    {"min-recall", "R", COMPARE_OPT_MIN_RECALL,
+     "and recall, the share of pixels beyond that were flagged (those\n"
+     "next to an edge of REF or moved left out), at least R (0..1,\n"
+     "default 1)"},
+    CLI_OPTDEF_END,
+};
+
+static void compare_usage(FILE *out)
+{
+    fprintf(out, "usage: links1 compare A.png B.png [options]\n"
+                 "       links1 compare REF.png PLAIN.png --flags MARKED.png [--within K] "
+                 "[options of --flags]\n"
+                 "Compares two images pixel by pixel: the differences per channel, the PSNR;\n"
+                 "exit 0 when enough pixels agree.\n"
+                 "options:\n");
+    cli_optdefs_help(out, compare_optdefs);
+    fprintf(out, "options of --flags:\n");
+    cli_optdefs_help(out, compare_flags_optdefs);
+}
 
 static void compare_print(const char *pa, const char *pb, const struct image *a,
                           const struct image_compare_opts *o,
@@ -129,8 +151,13 @@ int scene_cmd_compare(int argc, char **argv)
     const char *pa = NULL, *pb = NULL;
     struct image_compare_opts o = {.within = 1};
     double min_fraction = 0.99, max_masked = 1.0;
+    static const struct cli_optdef *const lists[] = {compare_optdefs, compare_flags_optdefs,
+                                                     NULL};
+    struct option longs[16];
     struct cli c;
-    cli_init(&c, "links1 compare", argc, argv, "h", compare_options);
+    if (cli_optdefs_table(lists, longs, 16) != 0)
+        return 2;
+    cli_init(&c, "links1 compare", argc, argv, "h", longs);
     for (int code; (code = cli_next(&c)) != -1;) {
         int bad = 0;
         if (code == 'h') {

@@ -88,50 +88,48 @@ struct farm_words {
     char templ[4096], ret[64], retries[16];
 };
 
-static const struct option farm_options[] = {
-    {"frames", required_argument, NULL, FARM_OPT_FRAMES},
-    {"hosts", required_argument, NULL, FARM_OPT_HOSTS},
-    {"retries", required_argument, NULL, FARM_OPT_RETRIES},
-    {"ext", required_argument, NULL, FARM_OPT_EXT},
-    {"film", required_argument, NULL, FARM_OPT_FILM},
-    {"fps", required_argument, NULL, FARM_OPT_FPS},
-    {"bands", required_argument, NULL, FARM_OPT_BANDS},
-    {"slurm", no_argument, NULL, FARM_OPT_SLURM},
-    {"help", no_argument, NULL, 'h'},
-    {NULL, 0, NULL, 0},
+static const struct cli_optdef farm_optdefs[] = {
+    {"frames", "A:B", FARM_OPT_FRAMES, "the frames to render (at most " CLI_STR(FARM_MAX_FRAMES) ")"},
+    {"hosts", "FILE", FARM_OPT_HOSTS,
+     "the hosts, GNU parallel's --sshloginfile: each line ':' (this\n"
+     "machine), [N/][user@]host[:port], blank or a # comment; refused\n"
+     "unless no one but you (or root) can change it"},
+    {"slurm", NULL, FARM_OPT_SLURM,
+     "instead of --hosts: the frames (or bands) not in DIR as one Slurm\n"
+     "job array (`sbatch --wait --array`, the task id the frame), DIR on\n"
+     "a file system the nodes share; sbatch's own SBATCH_* variables\n"
+     "(SBATCH_PARTITION, ...) choose where it runs"},
+    {"retries", "N", FARM_OPT_RETRIES,
+     "tries of a frame (parallel --retries: each on a host where it has\n"
+     "not failed yet; Slurm: rounds of the frames still missing),\n"
+     "1..100, default 3"},
+    {"ext", "png|ppm", FARM_OPT_EXT, "the frames' format (default png)"},
+    {"film", "OUT", FARM_OPT_FILM,
+     "once every frame is in DIR, frames A..B made into one film by\n"
+     "ffmpeg (OUT's ending: .mp4, .webm or .apng), written whole or not"},
+    {"fps", "N", FARM_OPT_FPS, "the film's frames a second (1.." CLI_STR(FILM_MAX_FPS) ", default "
+     CLI_STR(FILM_DEFAULT_FPS) ")"},
+    {"bands", "N", FARM_OPT_BANDS,
+     "one still frame (--frames F:F) cut into N bands of scanlines, a\n"
+     "job a band (`links1 render --band I/N`), stitched into\n"
+     "DIR/frame-FFFF.EXT once all are back (2.." CLI_STR(FARM_MAX_BANDS) ")"},
+    CLI_OPTDEF_END,
 };
 
 static void farm_usage(FILE *out)
 {
     fprintf(out,
-            "usage: links1 farm SCENE --frames A:B -o DIR --hosts FILE|--slurm [--retries N]\n"
-            "                   [--ext png|ppm]\n"
-            "                   [--film OUT.mp4|.webm|.apng [--fps N]] [-- links1 render arguments...]\n"
-            "  the frames A..B rendered on the hosts of FILE (GNU parallel's --sshloginfile:\n"
-            "  one host a line, ':' this machine) one frame a job, -j1 on each host, each job\n"
-            "  `links1 render SCENE --frames F:F` run there (links1 and SCENE at the same\n"
-            "  absolute paths on every host); the frames gathered into DIR as frame-NNNN.EXT.\n"
-            "  A frame already in DIR is not rendered again (an interrupted farm resumes).\n"
-            "  FILE is code parallel runs (each line an ssh login): it and DIR are refused\n"
-            "  unless no one but you (or root, for FILE) can change them; every line of FILE\n"
-            "  is ':' or [N/][user@]host[:port], blank, or a # comment\n"
-            "  --slurm       instead of --hosts: the frames (or bands) not in DIR as one Slurm\n"
-            "                job array (`sbatch --wait --array`, the task id the frame), DIR\n"
-            "                on a file system the nodes share; sbatch's own SBATCH_* variables\n"
-            "                (SBATCH_PARTITION, ...) choose where it runs\n"
-            "  --retries N   tries of a frame (parallel --retries: each on a host where it has\n"
-            "                not failed yet; Slurm: rounds of the frames still missing),\n"
-            "                1..100, default 3\n"
-            "  --ext E       png (default) or ppm\n"
-            "  --film OUT    once every frame is in DIR, frames A..B made into one film by\n"
-            "                ffmpeg (OUT's ending: .mp4, .webm or .apng), written whole or not\n"
-            "  --fps N       the film's frames a second (1..%d, default %d)\n"
-            "  --bands N     one still frame (--frames F:F) cut into N bands of scanlines, a\n"
-            "                job a band (`links1 render --band I/N`), stitched into\n"
-            "                DIR/frame-FFFF.EXT once all are back (2..%d)\n"
-            "  the ssh parallel uses: $PARALLEL_SSH (e.g. \"ssh -F CONFIG\"), else ssh;\n"
-            "  $FW_DIR, when set, is made absolute and passed to every host (--env)\n",
-            FILM_MAX_FPS, FILM_DEFAULT_FPS, FARM_MAX_BANDS);
+            "usage: links1 farm SCENE --frames A:B -o DIR --hosts FILE|--slurm [options]\n"
+            "                   [-- links1 render arguments...]\n"
+            "Renders frames A..B on the hosts of FILE one frame a job, -j1 on each host,\n"
+            "each job `links1 render SCENE --frames F:F` run there (links1 and SCENE at the\n"
+            "same absolute paths on every host); the frames gathered into DIR as\n"
+            "frame-NNNN.EXT.  A frame already in DIR is not rendered again (an interrupted\n"
+            "farm resumes).  DIR is refused unless no one but you can change it.  The ssh\n"
+            "parallel uses: $PARALLEL_SSH (e.g. \"ssh -F CONFIG\"), else ssh; $FW_DIR, when\n"
+            "set, is made absolute and passed to every host (--env).\n"
+            "options:\n");
+    cli_optdefs_help(out, farm_optdefs);
 }
 
 int farm_in_path(const char *name)
@@ -594,16 +592,16 @@ static int farm_take_operand(const struct cli *c, struct farm_opts *o)
 {
     if (c->rest) {
         if (o->nextra == FARM_MAX_EXTRA) {
-            fprintf(stderr, "links1 farm: more than %d render arguments after --\n",
-                    FARM_MAX_EXTRA);
+            cli_usage_error("links1 farm", "more than %d render arguments after --",
+                            FARM_MAX_EXTRA);
             return 2;
         }
         o->extra[o->nextra++] = c->arg;
     } else if (!o->scene) {
         o->scene = c->arg;
     } else {
-        fprintf(stderr, "links1 farm: '%s': one scene a farm (render arguments go "
-                        "after --)\n", c->arg);
+        cli_usage_error("links1 farm", "'%s': one scene a farm (render arguments go after --)",
+                        c->arg);
         return 2;
     }
     return FARM_GO;
@@ -619,7 +617,8 @@ static int farm_take_option(const struct cli *c, int code, struct farm_opts *o)
     case FARM_OPT_FRAMES:
         if (cli_parse_frames(c->arg, &o->first, &o->last) != 0 ||
             o->last - o->first >= FARM_MAX_FRAMES) {
-            cli_bad_value(c, "frames A:B, 0 <= A <= B, at most 100000 of them");
+            cli_bad_value(c, "frames A:B, 0 <= A <= B, at most " CLI_STR(FARM_MAX_FRAMES)
+                             " of them");
             return 2;
         }
         return FARM_GO;
@@ -658,8 +657,12 @@ static int farm_parse(int argc, char **argv, struct farm_opts *o)
     o->fps = FILM_DEFAULT_FPS;
     o->backend = FARM_PARALLEL;
     o->first = o->last = -1;
+    static const struct cli_optdef *const lists[] = {farm_optdefs, NULL};
+    struct option longs[16];
+    if (cli_optdefs_table(lists, longs, 16) != 0)
+        return 2;
     struct cli c;
-    cli_init(&c, "links1 farm", argc, argv, "o:h", farm_options);
+    cli_init(&c, "links1 farm", argc, argv, "o:h", longs);
     int code;
     while ((code = cli_next(&c)) != -1) {
         int rc = farm_take_option(&c, code, o);
@@ -680,16 +683,16 @@ static int farm_check_opts(const struct farm_opts *o)
         return 2;
     }
     if (o->hosts_file && o->backend == FARM_SLURM) {
-        fprintf(stderr, "links1 farm: --hosts (GNU parallel) or --slurm, not both\n");
+        cli_usage_error("links1 farm", "--hosts (GNU parallel) or --slurm, not both");
         return 2;
     }
     if (o->fps_given && !o->film) {
-        fprintf(stderr, "links1 farm: --fps goes with --film\n");
+        cli_usage_error("links1 farm", "--fps goes with --film");
         return 2;
     }
     if (o->bands && (o->first != o->last || o->film)) {
-        fprintf(stderr, "links1 farm: --bands cuts one still frame: give --frames F:F and no "
-                        "--film\n");
+        cli_usage_error("links1 farm", "--bands cuts one still frame: give --frames F:F and "
+                        "no --film");
         return 2;
     }
     if (farm_args_plain(o->scene, o->dir, o->hosts_file, o->film, o->extra, o->nextra) != 0)

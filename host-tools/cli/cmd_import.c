@@ -1,4 +1,4 @@
-/* import_cmd.c: `links1 import MODEL -o SCENE.scn [--fit] [--camera auto] [--smooth]
+/* cmd_import.c: `links1 import MODEL -o SCENE.scn [--fit] [--camera auto] [--smooth]
  * [--textures-from DIR]`:
  * a model made elsewhere into a text scene (docs/import.md).  The scene is
  * written to a temporary file, read back and compiled before it takes
@@ -15,20 +15,37 @@
 #include "host-tools/cli/scene_cmds.h"
 #include "host-tools/scene/scene_import.h"
 
-enum { IMPORT_OPT_FIT = CLI_OWN_CODES, IMPORT_OPT_CAMERA, IMPORT_OPT_SMOOTH, IMPORT_OPT_TEXTURES_FROM };
-
-#define IMPORT_USAGE                                                                    \
-    "links1 import MODEL -o SCENE.scn [--fit] [--camera auto] [--smooth] [--textures-from " \
-    "DIR]"
-
-static const struct option import_options[] = {
-    {"fit", no_argument, NULL, IMPORT_OPT_FIT},
-    {"camera", required_argument, NULL, IMPORT_OPT_CAMERA},
-    {"smooth", no_argument, NULL, IMPORT_OPT_SMOOTH},
-    {"textures-from", required_argument, NULL, IMPORT_OPT_TEXTURES_FROM},
-    {"help", no_argument, NULL, 'h'},
-    {NULL, 0, NULL, 0},
+enum import_opt_code {
+    IMPORT_OPT_FIT = CLI_OWN_CODES,
+    IMPORT_OPT_CAMERA,
+    IMPORT_OPT_SMOOTH,
+    IMPORT_OPT_TEXTURES_FROM
 };
+
+/* --textures-from is the model statement's textures_from (one directory
+ * for the model's textures), not the scene option of the same name (up to
+ * four for a scene's map images). */
+static const struct cli_optdef import_optdefs[] = {
+    {"fit", NULL, IMPORT_OPT_FIT,
+     "scale a model beyond +-1e8 so its largest coordinate is 100"},
+    {"camera", "auto", IMPORT_OPT_CAMERA,
+     "a model without a camera gets one that frames its bounding box,\n"
+     "one without lights a white parallel light"},
+    {"smooth", NULL, IMPORT_OPT_SMOOTH, "triangles carry the model's vertex normals"},
+    {"textures-from", "DIR", IMPORT_OPT_TEXTURES_FROM,
+     "the model's textures may also come from below DIR (once; not /,\n"
+     "a directory just under / or your home)"},
+    CLI_OPTDEF_END,
+};
+
+static void import_usage(FILE *out)
+{
+    fprintf(out, "usage: links1 import MODEL -o SCENE.scn [options]\n"
+                 "Writes a model (OBJ, glTF, PLY, STL, Collada, 3DS, ...) as a text scene with\n"
+                 "its camera, lights, materials, maps, clusters and triangles; a model the\n"
+                 "scene does not read back and compile leaves no file.\n");
+    cli_optdefs_help(out, import_optdefs);
+}
 
 struct import_args {
     const char *model, *out;
@@ -38,11 +55,15 @@ struct import_args {
 
 static int import_args(int argc, char **argv, struct import_args *a)
 {
+    static const struct cli_optdef *const lists[] = {import_optdefs, NULL};
+    struct option longs[8];
     struct cli c;
-    cli_init(&c, "links1 import", argc, argv, "o:h", import_options);
+    if (cli_optdefs_table(lists, longs, 8) != 0)
+        return -1;
+    cli_init(&c, "links1 import", argc, argv, "o:h", longs);
     for (int code; (code = cli_next(&c)) != -1;) {
         if (code == 'h') {
-            printf("usage: %s\n", IMPORT_USAGE);
+            import_usage(stdout);
             return 1;
         } else if (code == 'o') {
             a->out = c.arg;

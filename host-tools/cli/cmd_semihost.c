@@ -12,34 +12,38 @@
 #include "host-tools/opts/out_file.h"
 #include "host-tools/opts/tmp_dir.h"
 
+enum semihost_opt_code { SEMIHOST_OPT_CORES = CLI_OWN_CODES, SEMIHOST_OPT_TRACE };
+
+static const struct cli_optdef semihost_optdefs[] = {
+    {"cores", "N", SEMIHOST_OPT_CORES,
+     "cores of the board (1..8, default 1); the program starts the\n"
+     "others (PSCI CPU_ON)"},
+    {"trace-marks", "FILE", SEMIHOST_OPT_TRACE,
+     "each core's trace marks (proto/insn_mark.h) with its instruction\n"
+     "count, one 'core kind count' line each"},
+    CLI_OPTDEF_END,
+};
+
 static void cmd_semihost_usage(FILE *out)
 {
-    fprintf(out, "usage: links1 semihost ELF [--cores N] [--trace-marks FILE]\n"
+    fprintf(out, "usage: links1 semihost ELF [options]\n"
                  "Runs ELF on the plain virt board (cortex-a15, %d MiB) with semihosting on;\n"
                  "its console output goes to stdout.  The program must end the run itself\n"
-                 "(semihosting SYS_EXIT).  Exits with QEMU's status.\n"
-                 "  --cores N        cores of the board (1..8, default 1); the program starts\n"
-                 "                   the others (PSCI CPU_ON)\n"
-                 "  --trace-marks F  each core's trace marks (proto/insn_mark.h) with its\n"
-                 "                   instruction count, one 'core kind count' line each\n",
+                 "(semihosting SYS_EXIT).  Exits with QEMU's status.\n",
             BOARD_DEFAULT_RAM_MB);
+    cli_optdefs_help(out, semihost_optdefs);
 }
-
-enum { SEMIHOST_OPT_CORES = CLI_OWN_CODES, SEMIHOST_OPT_TRACE };
-
-static const struct option semihost_options[] = {
-    {"cores", required_argument, NULL, SEMIHOST_OPT_CORES},
-    {"trace-marks", required_argument, NULL, SEMIHOST_OPT_TRACE},
-    {"help", no_argument, NULL, 'h'},
-    {NULL, 0, NULL, 0},
-};
 
 int cmd_semihost(int argc, char **argv)
 {
     const char *elf = NULL, *trace = NULL;
     long cores = 1;
+    static const struct cli_optdef *const lists[] = {semihost_optdefs, NULL};
+    struct option longs[8];
     struct cli c;
-    cli_init(&c, "links1 semihost", argc, argv, "h", semihost_options);
+    if (cli_optdefs_table(lists, longs, 8) != 0)
+        return 2;
+    cli_init(&c, "links1 semihost", argc, argv, "h", longs);
     for (int code; (code = cli_next(&c)) != -1;) {
         switch (code) {
         case 'h':
@@ -54,7 +58,8 @@ int cmd_semihost(int argc, char **argv)
             break;
         case CLI_OPERAND:
             if (elf) {
-                fprintf(stderr, "links1 semihost: %s: one program at a time\n", c.arg);
+                cli_usage_error("links1 semihost", "one program at a time, not also '%s'",
+                                c.arg);
                 return 2;
             }
             elf = c.arg;

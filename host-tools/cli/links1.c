@@ -17,10 +17,10 @@ static const struct links1_cmd links1_cmds[] = {
     {"boot", cmd_boot, "boot the board, show every unit computer reporting in, shut down"},
     {"selftest", cmd_selftest, "boot the board and run board checks (ping, imsu, ...)"},
     {"render", cmd_render, "render a scene on the board (links1 render --help)"},
-    {"farm", cmd_farm, "render an animation's frames on hosts through GNU parallel"},
+    {"farm", cmd_farm, "render an animation's frames on hosts (GNU parallel or Slurm)"},
     {"board", cmd_board, "start, stop or list boards that keep running between commands"},
     {"replay", cmd_replay, "replay a traced frame on equal-speed unit computers"},
-    {"semihost", cmd_semihost, "run a semihosting program on the board's CPU (one core)"},
+    {"semihost", cmd_semihost, "run a semihosting program on the plain board (1 to 8 cores)"},
     {"compile", scene_cmd_compile, "compile a text scene into the form uploaded to the board"},
     {"ref", scene_cmd_ref, "render a scene on the host (--arith double|float|soft|fixed|auto)"},
     {"import", scene_cmd_import, "a model (OBJ, glTF, PLY, STL, Collada, 3DS, ...) into a scene"},
@@ -34,7 +34,7 @@ static const struct {
     const char *name, *help;
 } links1_programs[] = {
     {"links1-spd", "write one of Haines's Standard Procedural Databases (NFF or a scene)"},
-    {"links1-ref-<arith>", "the host renderer of one arithmetic, which links1 ref runs"},
+    {"links1-ref-<arith>", "links1 ref's host renderer: double, float, fixed, fixed12/14/16/18"},
     {"render-clip-stats", "how many clusters the screen clipping keeps, per area"},
 };
 

@@ -22,17 +22,6 @@
 
 enum { EXPORT_OPT_FRAME = CLI_OWN_CODES, EXPORT_OPT_STRICT };
 
-/* --textures-from DIR into the scene options o (scene_file_textures_from);
- * -1 after saying why. */
-static int scene_cmd_textures_from(struct cli *c, struct scene_file_opts *o)
-{
-    char why[SD_ERR_MAX];
-    if (scene_file_textures_from(o, c->arg, why, sizeof why) == 0)
-        return 0;
-    fprintf(stderr, "%s: %s\n", c->prog, why);
-    return -1;
-}
-
 /* compile takes every scene option (scene_opts.h) */
 static int compile_take(struct cli *c, int code, void *ctx)
 {
@@ -41,7 +30,7 @@ static int compile_take(struct cli *c, int code, void *ctx)
 
 /* Reads "SCENE -o OUT" and the options of a scene command: each option of
  * longs other than -o and --help goes to take (when given).  0, 1 (--help
- * shown), -1 (bad arguments, reported with the usage) or -2 (OUT cannot be
+ * shown: the caller adds its options), -1 (bad arguments, said) or -2 (OUT cannot be
  * written, out_file_check: said why). */
 static int scene_cmd_args(struct cli *c, const char *usage, const char **in, const char **out,
                           int (*take)(struct cli *c, int code, void *ctx), void *ctx)
@@ -57,8 +46,7 @@ static int scene_cmd_args(struct cli *c, const char *usage, const char **in, con
         } else if (code == CLI_OPERAND && !*in) {
             *in = c->arg;
         } else if (code == CLI_OPERAND) {
-            fprintf(stderr, "%s: one scene at a time, not also '%s'\n", c->prog, c->arg);
-            bad = 1;
+            bad = cli_usage_error(c->prog, "one scene at a time, not also '%s'", c->arg);
         } else {
             bad = code == CLI_BAD || !take || take(c, code, ctx) < 0;
         }
@@ -129,13 +117,21 @@ int scene_cmd_compile(int argc, char **argv)
     return rc ? 1 : 0;
 }
 
-static const struct option export_pov_options[] = {
-    {"frame", required_argument, NULL, EXPORT_OPT_FRAME},
-    {"strict", no_argument, NULL, EXPORT_OPT_STRICT},
-    {"textures-from", required_argument, NULL, SCENE_OPT_TEXTURES_FROM},
-    {"help", no_argument, NULL, 'h'},
-    {NULL, 0, NULL, 0},
+static const struct cli_optdef export_pov_optdefs[] = {
+    {"frame", "N", EXPORT_OPT_FRAME, "write frame N of a keyed scene (default 0)"},
+    {"strict", NULL, EXPORT_OPT_STRICT,
+     "refuse a scene POV-Ray cannot carry the same way, naming the first\n"
+     "part, instead of writing it approximately (listed in a comment)"},
+    CLI_OPTDEF_END,
 };
+
+/* export-pov's help: its own options and the scene option it shares. */
+static void export_pov_usage(const struct cli_optdef *scene_defs)
+{
+    printf("Writes a scene for POV-Ray 3.7 (docs/pov-mapping.md).\n");
+    cli_optdefs_help(stdout, export_pov_optdefs);
+    cli_optdefs_help(stdout, scene_defs);
+}
 
 struct export_pov_args {
     int strict, frame;
@@ -150,7 +146,7 @@ static int export_pov_take(struct cli *c, int code, void *ctx)
         return 0;
     }
     if (code == SCENE_OPT_TEXTURES_FROM)
-        return scene_cmd_textures_from(c, &a->scene);
+        return scene_opts_take(&a->scene, c, code) > 0 ? 0 : -1;
     return code == EXPORT_OPT_FRAME ? cli_int(c, 0, SCN_MAX_FRAMES - 1, &a->frame) : -1;
 }
 
@@ -159,10 +155,19 @@ int scene_cmd_export_pov(int argc, char **argv)
     const char *in, *out;
     struct export_pov_args a = {0, 0, {0}};
     scene_file_opts_init(&a.scene);
+    static const int shared[] = {SCENE_OPT_TEXTURES_FROM};
+    struct cli_optdef scene_defs[2];
+    const struct cli_optdef *const lists[] = {export_pov_optdefs, scene_defs, NULL};
+    struct option longs[8];
+    if (cli_optdefs_pick(scene_optdefs, shared, 1, scene_defs, 2) != 0 ||
+        cli_optdefs_table(lists, longs, 8) != 0)
+        return 2;
     struct cli c;
-    cli_init(&c, "links1 export-pov", argc, argv, "o:h", export_pov_options);
-    int r = scene_cmd_args(&c, "links1 export-pov SCENE.scn -o OUT.pov [--frame N] [--strict] "
-                           "[--textures-from DIR]", &in, &out, export_pov_take, &a);
+    cli_init(&c, "links1 export-pov", argc, argv, "o:h", longs);
+    int r = scene_cmd_args(&c, "links1 export-pov SCENE.scn -o OUT.pov [options]", &in, &out,
+                           export_pov_take, &a);
+    if (r == 1)
+        export_pov_usage(scene_defs);
     if (r != 0)
         return r > 0 ? 0 : r == -2 ? 1 : 2;
     int strict = a.strict, frame = a.frame;

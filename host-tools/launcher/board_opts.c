@@ -61,10 +61,10 @@ static int board_opt_gdb(struct board_opts *o, const struct cli *c)
                        : next && *next && strspn(next, "0123456789") == strlen(next) ? next
                                                                                       : NULL;
     if (port) {
-        fprintf(stderr, "%s: --gdb takes no port (given '%s'): QEMU's gdb stub is a unix "
-                "socket in your state directory, its path printed at start; attach with "
-                "gdb-multiarch's `target remote PATH` (make gdb does)\n", c->prog, port);
-        return -1;
+        return cli_usage_error(c->prog, "--gdb takes no port (given '%s'): QEMU's gdb stub is "
+                               "a unix socket in your state directory, its path printed at "
+                               "start; attach with gdb-multiarch's `target remote PATH` (make "
+                               "gdb does)", port);
     }
     o->gdb = 1;
     return 1;
@@ -117,10 +117,8 @@ int board_opt(struct board_opts *o, const struct cli *c, int code)
         return 1;
     case BOARD_OPT_LINK_NOISE: {
         char why[200];
-        if (link_noise_parse(c->arg, &o->link_noise, &o->link_noise_seed, why, sizeof why) < 0) {
-            fprintf(stderr, "%s: %s %s\n", c->prog, c->name, why);
-            return -1;
-        }
+        if (link_noise_parse(c->arg, &o->link_noise, &o->link_noise_seed, why, sizeof why) < 0)
+            return cli_usage_error(c->prog, "%s %s", c->name, why);
         o->link_noise_on = 1;
         return 1;
     }

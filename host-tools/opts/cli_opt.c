@@ -188,6 +188,23 @@ int cli_optdefs_table(const struct cli_optdef *const *lists, struct option *out,
     return 0;
 }
 
+int cli_optdefs_pick(const struct cli_optdef *defs, const int *codes, size_t n,
+                     struct cli_optdef *out, size_t cap)
+{
+    if (n >= cap)
+        return -1;
+    for (size_t i = 0; i < n; i++) {
+        const struct cli_optdef *d = defs;
+        while (d->name && d->code != codes[i])
+            d++;
+        if (!d->name)
+            return -1;
+        out[i] = *d;
+    }
+    out[n] = (struct cli_optdef)CLI_OPTDEF_END;
+    return 0;
+}
+
 /* The help column: an option's text starts here. */
 #define CLI_HELP_COLUMN 21
 

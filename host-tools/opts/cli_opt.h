@@ -81,10 +81,21 @@ struct cli_optdef {
 };
 #define CLI_OPTDEF_END {NULL, NULL, 0, NULL}
 
+/* A number's macro as text, for a help line: "1.." CLI_STR(FILM_MAX_FPS). */
+#define CLI_STR_(x) #x
+#define CLI_STR(x) CLI_STR_(x)
+
 /* getopt's table for the definitions of lists (a NULL-terminated list of
  * tables, each ending with CLI_OPTDEF_END), --help added, into out (cap
  * entries).  0, or -1 when out is too small. */
 int cli_optdefs_table(const struct cli_optdef *const *lists, struct option *out, size_t cap);
+
+/* The definitions of defs that codes[0..n-1] name, in that order, into
+ * out (cap entries, CLI_OPTDEF_END added): the options a command shares
+ * with another command's table, defined there once.  0, or -1 when a code
+ * is not in defs or out is too small. */
+int cli_optdefs_pick(const struct cli_optdef *defs, const int *codes, size_t n,
+                     struct cli_optdef *out, size_t cap);
 
 /* The help lines of defs: "  --name VALUE" and its text from column 21. */
 void cli_optdefs_help(FILE *f, const struct cli_optdef *defs);

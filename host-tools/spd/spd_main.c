@@ -46,16 +46,24 @@ struct spd_made {
     struct nff_info info;
 };
 
+enum spd_opt_code { SPD_OPT_SIZE = CLI_OWN_CODES };
+
+static const struct cli_optdef spd_optdefs[] = {
+    {"size", "WxH", SPD_OPT_SIZE, "the NFF's resolution (default 512x512, the SPD's)"},
+    CLI_OPTDEF_END,
+};
+
 static void spd_usage(FILE *f)
 {
-    fprintf(f, "usage: links1-spd NAME SIZE -o OUT.scn|OUT.nff [--size WxH]\n"
+    fprintf(f, "usage: links1-spd NAME SIZE -o OUT.scn|OUT.nff [options]\n"
                "Writes one of Eric Haines's Standard Procedural Databases as the SPD's own\n"
                "program writes it (NFF, OUT.nff) or as a links1 text scene (OUT.scn).\n"
-               "  --size WxH   the NFF's resolution (default 512x512, the SPD's)\n"
-               "  NAME (the SPD's default size, the largest size):");
+               "NAME and SIZE: a database and its size (the SPD's default, the largest):");
     for (int i = 0; i < spd_db_count; i++)
-        fprintf(f, " %s (%d, %d)%s", spd_dbs[i].name, spd_dbs[i].default_size,
-                spd_dbs[i].max_size, i + 1 < spd_db_count ? "," : "\n");
+        fprintf(f, "%s %s (%d, %d)%s", i % 4 ? "" : "\n ", spd_dbs[i].name,
+                spd_dbs[i].default_size, spd_dbs[i].max_size, i + 1 < spd_db_count ? "," : "\n");
+    fprintf(f, "options:\n");
+    cli_optdefs_help(f, spd_optdefs);
 }
 
 static int spd_ends_with(const char *s, const char *suffix)
@@ -71,20 +79,31 @@ static int spd_operand(const char **name, const char **size, const char *arg)
         *name = arg;
     else if (!*size)
         *size = arg;
-    else {
-        fprintf(stderr, "links1-spd: '%s': one NAME and one SIZE (see links1-spd --help)\n",
-                arg);
-        return -1;
-    }
+    else
+        return cli_usage_error("links1-spd", "'%s': one NAME and one SIZE", arg);
+    return 0;
+}
+
+/* NAME and SIZE into o.  0, or -1 (a usage error, said). */
+static int spd_database(const char *name, const char *size, struct spd_opts *o)
+{
+    if (!(o->db = spd_find(name)))
+        return cli_usage_error("links1-spd", "no database named '%s'", name);
+    char *end;
+    o->size = strtol(size, &end, 10);
+    if (*end || end == size || o->size < 1 || o->size > o->db->max_size)
+        return cli_usage_error("links1-spd", "%s: SIZE must be 1..%d, not '%s'", name,
+                               o->db->max_size, size);
     return 0;
 }
 
 /* 0, 1 (--help shown) or -1 (a usage error, said). */
 static int spd_parse(int argc, char **argv, struct spd_opts *o)
 {
-    static const struct option longs[] = {{"size", required_argument, NULL, 's'},
-                                          {"help", no_argument, NULL, 'h'},
-                                          {NULL, 0, NULL, 0}};
+    static const struct cli_optdef *const lists[] = {spd_optdefs, NULL};
+    struct option longs[4];
+    if (cli_optdefs_table(lists, longs, 4) != 0)
+        return -1;
     const char *name = NULL, *size = NULL;
     struct cli c;
     cli_init(&c, "links1-spd", argc, argv, "o:h", longs);
@@ -95,7 +114,7 @@ static int spd_parse(int argc, char **argv, struct spd_opts *o)
             return 1;
         } else if (code == 'o') {
             o->out = c.arg;
-        } else if (code == 's') {
+        } else if (code == SPD_OPT_SIZE) {
             bad = cli_parse_size(c.arg, &o->width, &o->height) != 0 &&
                   cli_bad_value(&c, cli_size_want());
         } else if (code == CLI_OPERAND) {
@@ -106,22 +125,9 @@ static int spd_parse(int argc, char **argv, struct spd_opts *o)
         if (bad)
             return -1;
     }
-    if (!name || !size || !o->out) {
-        fprintf(stderr, "links1-spd: want NAME SIZE -o OUT (see links1-spd --help)\n");
-        return -1;
-    }
-    if (!(o->db = spd_find(name))) {
-        fprintf(stderr, "links1-spd: no database named '%s' (see links1-spd --help)\n", name);
-        return -1;
-    }
-    char *end;
-    o->size = strtol(size, &end, 10);
-    if (*end || end == size || o->size < 1 || o->size > o->db->max_size) {
-        fprintf(stderr, "links1-spd: %s: SIZE must be 1..%d, not '%s'\n", name,
-                o->db->max_size, size);
-        return -1;
-    }
-    return 0;
+    if (!name || !size || !o->out)
+        return cli_usage_error("links1-spd", "want NAME SIZE -o OUT");
+    return spd_database(name, size, o);
 }
 
 /* The database's NFF and the scene read from it.  0, or -1 after saying why. */

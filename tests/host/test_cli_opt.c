@@ -221,12 +221,27 @@ static void test_optdefs(void)
     free(text);
 }
 
+/* A command's share of another's table: the definitions picked by code,
+ * in the order asked, ended; a code not there or no room is refused. */
+static void test_optdefs_pick(void)
+{
+    struct cli_optdef out[3];
+    const int codes[] = {T_FRAMES, T_PPM}, missing[] = {T_SIZE, T_FRAMES + 100};
+    CHECK_EQ_INT(cli_optdefs_pick(t_optdefs, codes, 2, out, 3), 0);
+    CHECK(strcmp(out[0].name, "frames") == 0 && strcmp(out[0].value, "A:B") == 0 &&
+          out[0].code == T_FRAMES && strcmp(out[0].help, "frames A..B") == 0);
+    CHECK(strcmp(out[1].name, "ppm") == 0 && out[1].value == NULL && out[2].name == NULL);
+    CHECK_EQ_INT(cli_optdefs_pick(t_optdefs, codes, 2, out, 2), -1);
+    CHECK_EQ_INT(cli_optdefs_pick(t_optdefs, missing, 2, out, 3), -1);
+}
+
 int main(void)
 {
     static const struct cli_optdef *const lists[] = {board_optdefs, t_optdefs, NULL};
     if (cli_optdefs_table(lists, t_options, sizeof t_options / sizeof t_options[0]) != 0)
         return 1;
     RUN(test_optdefs);
+    RUN(test_optdefs_pick);
     RUN(test_operands_keep_their_place);
     RUN(test_bad_options_named);
     RUN(test_board_options);
