@@ -89,7 +89,8 @@ struct farm_words {
 };
 
 static const struct cli_optdef farm_optdefs[] = {
-    {"frames", "A:B", FARM_OPT_FRAMES, "the frames to render (at most " CLI_STR(FARM_MAX_FRAMES) ")"},
+    {"frames", "A:B", FARM_OPT_FRAMES,
+     "the frames to render (at most " CLI_STR(FARM_MAX_FRAMES) ")"},
     {"hosts", "FILE", FARM_OPT_HOSTS,
      "the hosts, GNU parallel's --sshloginfile: each line ':' (this\n"
      "machine), [N/][user@]host[:port], blank or a # comment; refused\n"
