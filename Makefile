@@ -32,7 +32,12 @@ FWB := $(B)$(if $(filter newlib,$(LIBC)),/newlib)
 # ---------------------------------------------------------------- host side
 HOST_CC ?= cc
 HOST_WARN := -Wall -Wextra -Werror
-HOST_CFLAGS := -std=gnu11 -O2 -g $(HOST_WARN) -I. -MMD -MP -ffp-contract=off
+# Debug information: line tables and functions (-g1) by default, enough for
+# backtraces, sanitizer reports with file and line, and gdb's breakpoints by
+# line, at about two thirds of -g's compile time; `make gdb` builds its own
+# copy with full -g (locals and types) in build/gdb/.
+DEBUG_INFO ?= -g1
+HOST_CFLAGS := -std=gnu11 -O2 $(DEBUG_INFO) $(HOST_WARN) -I. -MMD -MP -ffp-contract=off
 SAN_FLAGS := -fsanitize=address,undefined -fno-sanitize-recover=all -fno-omit-frame-pointer
 HOST_LIBS := -lm
 
@@ -105,7 +110,7 @@ else
 $(error LIBC must be picolibc or newlib, not '$(LIBC)')
 endif
 
-FW_CFLAGS := -std=gnu11 -O2 -g $(HOST_WARN) -I. -MMD -MP \
+FW_CFLAGS := -std=gnu11 -O2 $(DEBUG_INFO) $(HOST_WARN) -I. -MMD -MP \
 	-ffreestanding -ffunction-sections -fdata-sections -ffp-contract=off \
 	-fno-common -DLINKS1_FIRMWARE $(LIBC_SPECS)
 # FW_EXTRA_CFLAGS: constants overridden for a measurement (pareto.sh builds
@@ -323,9 +328,11 @@ run:
 
 # The board halted under QEMU's gdb stub, gdb-multiarch attached with the
 # firmware's symbols (GDB_NCS, GDB_ARITH, GDB_ARGS; docs/firmware.md).
+GDB_ARITH ?= float
 gdb: deps
-	$(Q)$(MAKE) $(JOBS) --no-print-directory all
-	$(Q)FW_DIR=$(FWB) bash host-tools/scripts/make-gdb.sh
+	$(Q)$(MAKE) $(JOBS) --no-print-directory B=$(B)/gdb DEBUG_INFO=-g \
+		$(B)/gdb/links1 $(B)/gdb/links1-$(GDB_ARITH).elf
+	$(Q)LINKS1=$(B)/gdb/links1 FW_DIR=$(B)/gdb GDB_ARITH=$(GDB_ARITH) bash host-tools/scripts/make-gdb.sh
 
 test: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all $(HOST_TEST_BINS) $(FUZZ_BINS)

@@ -10,7 +10,7 @@
 # -x FILE).
 set -eu
 cd "$(dirname "$0")/../.."
-LINKS1=build/links1
+LINKS1=${LINKS1:-build/links1}
 FW=${FW_DIR:-build}/links1-${GDB_ARITH:-float}.elf
 if [ -n "${GDB_PORT:-}" ]; then
     echo "make gdb: GDB_PORT is gone: the gdb stub is a unix socket in your state directory now" >&2
