@@ -122,8 +122,7 @@ static int replay_take(struct replay_opts *o, const struct cli *c, int code)
     switch (code) {
     case CLI_OPERAND:
         if (o->file) {
-            fprintf(stderr, "links1 replay: %s: one trace at a time\n", c->arg);
-            return -1;
+            return cli_usage_error("links1 replay", "%s: one trace at a time", c->arg);
         }
         o->file = c->arg;
         return 0;
@@ -220,9 +219,8 @@ static int replay_parse(struct replay_opts *o, int argc, char **argv)
         return cli_usage_error("links1 replay", "name a TRACE and --ncs LIST");
     }
     if (o->timeline && o->ncounts != 1) {
-        fprintf(stderr, "links1 replay: --timeline draws one frame: give one NC count "
-                        "(--ncs N)\n");
-        return -1;
+        return cli_usage_error("links1 replay", "--timeline draws one frame: give one NC count "
+                               "(--ncs N)");
     }
     return 0;
 }

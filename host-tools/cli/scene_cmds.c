@@ -86,7 +86,9 @@ int scene_cmd_compile(int argc, char **argv)
         return 2;
     struct cli c;
     cli_init(&c, "links1 compile", argc, argv, "o:h", longs);
-    int r = scene_cmd_args(&c, "links1 compile SCENE.scn -o OUT.l1s [scene options]", &in, &out,
+    int r = scene_cmd_args(&c, "links1 compile SCENE.scn -o OUT.l1s [scene options]\n"
+                           "Compiles a text scene into the form uploaded to the board; links1\n"
+                           "render and links1 ref take either form.", &in, &out,
                            compile_take, &so);
     if (r == 1)
         cli_optdefs_help(stdout, scene_optdefs);
@@ -250,7 +252,7 @@ static int ref_cmd_parse(struct ref_cmd *r, int argc, char **argv)
     for (int from = 1, code; (code = cli_next(&c)) != -1; from = optind) {
         int pass;
         if (code == 'h') {
-            ref_opts_usage(stdout, 1);
+            ref_opts_usage(stdout, "links1 ref", 1);
             return 1;
         }
         if (code == CLI_BAD || ref_cmd_take(r, &c, code, &pass) != 0)

@@ -35,9 +35,11 @@
 #define REF_ARENA_START (64u * 1024u * 1024u)  /* first arena tried */
 #define REF_ARENA_MAX (1024u * 1024u * 1024u)  /* largest arena tried */
 
-static int ref_usage(FILE *out, int status)
+/* This build's --help, under the name it was started by (links1-ref-float). */
+static int ref_usage(FILE *out, const char *argv0, int status)
 {
-    ref_opts_usage(out, 0);
+    const char *slash = strrchr(argv0, '/');
+    ref_opts_usage(out, slash ? slash + 1 : argv0, 0);
     return status;
 }
 
@@ -337,7 +339,7 @@ int main(int argc, char **argv)
     struct ref_args a;
     int r = ref_parse(argc, argv, &a);
     if (r != 0)
-        return r > 0 ? ref_usage(stdout, 0) : 2;
+        return r > 0 ? ref_usage(stdout, argv[0], 0) : 2;
     if (ref_out_check(&a) != 0)
         return 1;
     const char *in = a.in, *out = a.out;

@@ -28,9 +28,10 @@ const struct cli_optdef ref_cmd_optdefs[] = {
     CLI_OPTDEF_END,
 };
 
-void ref_opts_usage(FILE *f, int with_cmd)
+void ref_opts_usage(FILE *f, const char *prog, int with_cmd)
 {
-    fprintf(f, "usage: links1 ref SCENE(.scn|.l1s|.nff) -o OUT.png [options]\n"
+    fprintf(f, "usage: %s SCENE(.scn|.l1s|.nff) -o OUT.png [options]\n", prog);
+    fprintf(f,
                "Renders a scene on the host with the board's renderer; the image of an\n"
                "arithmetic equals the board's byte for byte.\n");
     if (with_cmd)

@@ -30,6 +30,6 @@ extern const struct cli_optdef ref_cmd_optdefs[];
 
 /* The usage line and every option's help of links1 ref (with_cmd: the
  * build-choosing options too). */
-void ref_opts_usage(FILE *f, int with_cmd);
+void ref_opts_usage(FILE *f, const char *prog, int with_cmd);
 
 #endif
