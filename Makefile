@@ -144,12 +144,12 @@ ARITH_FREE_SRCS :=
 HOST_TOOLS :=
 
 # ------------------------------------------------------------ the test plan
-# tests/plan.tsv: one row a test (path, checks, seconds, suite: host, board
-# or full; its header says more).  $(call plan_paths,SUITE...): the paths
+# tests/plan.tsv: one row a test (path, checks, seconds, suite: host, board,
+# solo or full; its header says more).  $(call plan_paths,SUITE...): the paths
 # of the rows of those suites, in the plan's order.
 TEST_PLAN := tests/plan.tsv
 plan_paths = $(shell awk -F'\t' 'NF >= 4 && index(" $(1) ", " " $$4 " ") { print $$1 }' $(TEST_PLAN))
-PLAN_TEST := $(call plan_paths,host board)
+PLAN_TEST := $(call plan_paths,host board solo)
 PLAN_FULL := $(call plan_paths,full)
 # HOST_TESTS: the C unit tests (rows build/tests/NAME, the path with the
 #   default B) that get a build

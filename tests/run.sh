@@ -9,9 +9,13 @@
 #
 # Every test is declared in tests/plan.tsv: its path (as the lists give it),
 # how many checks it runs, the seconds it may take, and its suite: "host"
-# for one that boots no board (it then runs beside the host unit tests),
-# "board" or "full" for one run alone.  A test fails (one failure more,
-# named) when it
+# for one that boots no board, "board" for one that does, "solo" for one of
+# `make test` that must have the host to itself (it counts every board
+# process of a kind), "full" for one of `make test-full`.  Host and board
+# tests run TEST_JOBS at a time (one per host core by default: a board's
+# idle unit computers sleep, and a small test's time is mostly the host's
+# own work), longest first by their last run; solo and full tests then run
+# one at a time.  A test fails (one failure more, named) when it
 #   - is not declared there, or runs another number of checks than declared
 #     (one that ends early prints fewer);
 #   - exits non-zero without printing a FAIL line (a crash, a sanitizer
@@ -21,7 +25,7 @@
 # (written aside, then renamed), and read back only once the test ended.
 #
 # Environment (set by the Makefile from the plan): HOST_TESTS (programs),
-# BOARD_TESTS (scripts), FW_DIR;
+# BOARD_TESTS (scripts), FW_DIR; TEST_JOBS (tests at once, default nproc);
 # TEST_TIME_SCALE multiplies every limit (default 1); TEST_PLAN and
 # TEST_LOG_DIR name another plan and log folder (tests/runner/ tests the
 # runner itself with them).
@@ -47,10 +51,17 @@ mkdir -p "$log_dir"
 plan_of() {
     awk -F'\t' -v n="$1" '$1 == n && NF >= 3 { print $2, $3; exit }' "$plan"
 }
-# on_host PATH: true when the plan's suite of the test is "host" (it boots
-# no board).
-on_host() {
-    awk -F'\t' -v n="$1" '$1 == n && $4 == "host" { found = 1; exit } END { exit !found }' "$plan"
+# pooled PATH: true when the plan's suite of the test lets it run beside
+# others ("host" or "board").
+pooled() {
+    awk -F'\t' -v n="$1" '$1 == n && ($4 == "host" || $4 == "board") { found = 1; exit }
+        END { exit !found }' "$plan"
+}
+# last_secs PATH: the seconds its last run here took (0 when unknown).
+last_secs() {
+    local rc secs limit
+    read -r rc secs limit 2>/dev/null <"$log_dir/$(basename "$1").log.rc" || true
+    case ${secs:-} in '' | *[!0-9]*) echo 0 ;; *) echo "$secs" ;; esac
 }
 
 # exec_one LABEL CMD...: runs one test into its log under its time limit
@@ -115,45 +126,56 @@ report_one() {
     skipped=$((skipped + s))
 }
 
-# Host tests are independent programs, and so are the scripts the plan
-# marks "host": HOST_JOBS of them run at once (one per host core by
-# default); their results are reported in order.  Board tests run one at a
-# time: each boots a board that wants the host's cores.
-HOST_JOBS=${HOST_JOBS:-$(nproc 2>/dev/null || echo 2)}
-host_list=(${HOST_TESTS:-})
-board_list=()
+# The pool: host programs and the scripts of suites host and board, longest
+# (by their last run) first, TEST_JOBS at a time; results are reported in
+# the pool's order as each is known.  Then the solo (and full) scripts.
+TEST_JOBS=${TEST_JOBS:-${HOST_JOBS:-$(nproc 2>/dev/null || echo 2)}}
+pool_in=()
+solo_list=()
+for t in ${HOST_TESTS:-}; do pool_in+=("$t"); done
 for t in ${BOARD_TESTS:-}; do
-    if on_host "$t"; then
-        host_list+=("$t")
+    if pooled "$t"; then
+        pool_in+=("$t")
     else
-        board_list+=("$t")
+        solo_list+=("$t")
     fi
 done
-next_report=0
-for ((i = 0; i < ${#host_list[@]}; i++)); do
-    rm -f "$log_dir/$(basename "${host_list[i]}").log.rc" # no stale verdict
-    case ${host_list[i]} in
-    *.sh) exec_one "${host_list[i]}" bash "${host_list[i]}" & ;;
-    *) exec_one "${host_list[i]}" "${host_list[i]}" & ;;
+pool=()
+if [ ${#pool_in[@]} -gt 0 ]; then
+    mapfile -t pool < <(for t in "${pool_in[@]}"; do
+        printf '%s\t%s\n' "$(last_secs "$t")" "$t"
+    done | sort -t$'\t' -k1,1nr -s | cut -f2)
+fi
+# run_one PATH: runs a test (a script by its interpreter, a program as it
+# is) and reports nothing yet.
+run_one() {
+    rm -f "$log_dir/$(basename "$1").log.rc" # no stale verdict
+    case $1 in
+    *.sh) exec_one "$1" bash "$1" ;;
+    *.py) exec_one "$1" python3 "$1" ;;
+    *) exec_one "$1" "$1" ;;
     esac
-    # Keep at most HOST_JOBS running; report finished ones in order.
-    while [ "$(jobs -rp | wc -l)" -ge "$HOST_JOBS" ]; do
+}
+next_report=0
+for ((i = 0; i < ${#pool[@]}; i++)); do
+    run_one "${pool[i]}" &
+    # Keep at most TEST_JOBS running; report finished ones in order.
+    while [ "$(jobs -rp | wc -l)" -ge "$TEST_JOBS" ]; do
         wait -n
     done
     while [ $next_report -le $i ] &&
-        [ -e "$log_dir/$(basename "${host_list[next_report]}").log.rc" ]; do
-        report_one "${host_list[next_report]}"
+        [ -e "$log_dir/$(basename "${pool[next_report]}").log.rc" ]; do
+        report_one "${pool[next_report]}"
         next_report=$((next_report + 1))
     done
 done
 wait
-while [ $next_report -lt ${#host_list[@]} ]; do
-    report_one "${host_list[next_report]}"
+while [ $next_report -lt ${#pool[@]} ]; do
+    report_one "${pool[next_report]}"
     next_report=$((next_report + 1))
 done
-for t in "${board_list[@]}"; do
-    rm -f "$log_dir/$(basename "$t").log.rc"
-    exec_one "$t" bash "$t"
+for t in "${solo_list[@]}"; do
+    run_one "$t"
     report_one "$t"
 done
 

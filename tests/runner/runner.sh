@@ -31,17 +31,25 @@ echo 'FAIL host$1_met: host$2 did not start while it ran'; exit 1"
 }
 meet a b
 meet b a
+# solo: runs when nothing of the pool is left running
+fake solo "for i in \$(seq 10); do
+    if pgrep -f '$tmp/(host[ab]|good|bad|hang|crash|early|silent|skips)\.sh' >/dev/null; then
+        echo 'FAIL solo_alone: a pooled test runs beside it'; exit 1
+    fi
+    sleep 0.1
+done
+echo 'PASS solo_alone'"
 # The plan's rows: path, checks, seconds, suite (as tests/plan.tsv's).
 row() { printf '%s\t%s\t%s\t%s\n' "$tmp/$1.sh" "$2" "$3" "$4" >>"$tmp/plan.tsv"; }
 row good 2 10 board; row bad 2 10 board; row hang 2 2 board; row crash 3 10 board
 row early 3 10 board; row silent 1 10 board; row skips 2 10 board
-row hosta 1 30 host; row hostb 1 30 host
+row hosta 1 30 host; row hostb 1 30 board; row solo 1 30 solo
 # a row of another path of the same name is no row of this test
 printf 'unplanned.sh\t1\t10\tboard\n' >>"$tmp/plan.tsv"
 list=""
-for t in good bad hang crash early silent unplanned skips hosta hostb; do list="$list $tmp/$t.sh"; done
+for t in solo good bad hang crash early silent unplanned skips hosta hostb; do list="$list $tmp/$t.sh"; done
 out=$(TEST_PLAN="$tmp/plan.tsv" TEST_LOG_DIR="$tmp/logs" HOST_TESTS= BOARD_TESTS="$list" \
-    HOST_JOBS=2 bash tests/run.sh 2>&1)
+    TEST_JOBS=2 bash tests/run.sh 2>&1)
 rc=$?
 
 # expect NAME PATTERN: the runner's output holds a line matching PATTERN
@@ -63,15 +71,16 @@ expect silent_exit_fails "FAIL .*silent.sh: exited with status 3 without naming 
 expect unplanned_test_fails "FAIL .*unplanned.sh: not declared in"
 expect counts_a_skipped_check "skips.sh: 1 passed, 0 failed, 1 skipped"
 if grep -q "hosta.sh: 1 passed, 0 failed" <<<"$out" && grep -q "hostb.sh: 1 passed, 0 failed" <<<"$out"; then
-    echo "PASS runner_host_scripts_run_beside_each_other"
+    echo "PASS runner_host_and_board_tests_run_beside_each_other"
 else
-    echo "FAIL runner_host_scripts_run_beside_each_other: $(grep -E 'host[ab]' <<<"$out" | tr '\n' ' ')"
+    echo "FAIL runner_host_and_board_tests_run_beside_each_other: $(grep -E 'host[ab]' <<<"$out" | tr '\n' ' ')"
 fi
+expect solo_runs_alone "solo.sh: 1 passed, 0 failed"
 # good 2 + bad 1 + hang 1 + crash 2 + early 1 + unplanned 1 + skips 1 +
-# hosta 1 + hostb 1 passed; skips 1 skipped; failed:
+# hosta 1 + hostb 1 + solo 1 passed; skips 1 skipped; failed:
 # bad 1, hang 1, crash 2, early 1, silent 1 (+ its count? it ran 0 of 1:
 # counted), unplanned 1
-expect summary_adds_up "^11 passed, 9 failed, 1 skipped$"
+expect summary_adds_up "^12 passed, 9 failed, 1 skipped$"
 if [ $rc -ne 0 ]; then
     echo "PASS runner_exit_status_says_failed"
 else
