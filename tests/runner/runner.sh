@@ -49,7 +49,7 @@ printf 'unplanned.sh\t1\t10\tboard\n' >>"$tmp/plan.tsv"
 list=""
 for t in solo good bad hang crash early silent unplanned skips hosta hostb; do list="$list $tmp/$t.sh"; done
 out=$(TEST_PLAN="$tmp/plan.tsv" TEST_LOG_DIR="$tmp/logs" HOST_TESTS= BOARD_TESTS="$list" \
-    TEST_JOBS=2 bash tests/run.sh 2>&1)
+    TEST_JOBS=2 TEST_TIME_SCALE=1 bash tests/run.sh 2>&1)
 rc=$?
 
 # expect NAME PATTERN: the runner's output holds a line matching PATTERN
