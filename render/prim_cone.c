@@ -89,8 +89,9 @@ static num_t cone_disc_error(const cone_ray_t *r, num_t *berr)
     num_t cs = num_add(num_add(num_abs(r->c.x), num_abs(r->c.z)), num_mul(r->h, num_abs(r->rho)));
     num_t cerr = num_mul(num_mul_int(cs, 2), r->delta);
     num_t size = num_max(num_max(num_mul(r->b, r->b), num_abs(num_mul(r->a, r->cc))), NUM_ONE);
-    return num_add(num_add(num_mul_int(num_mul(num_abs(r->b), *berr), 2), num_mul(num_abs(r->a), cerr)),
-                   num_mul_int(num_ulp(size), 8));
+    num_t moved = num_add(num_mul_int(num_mul(num_abs(r->b), *berr), 2),
+                          num_mul(num_abs(r->a), cerr));
+    return num_add(moved, num_mul_int(num_ulp(size), 8));
 }
 
 /* A side root at u, y = c.y + u dn.y: taken when y is within the ends;
