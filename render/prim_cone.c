@@ -79,35 +79,37 @@ static int cone_in_span(const cone_ray_t *r, num_t t)
 }
 
 /* How far the quadratic's discriminant may be off when c is off by delta
- * in each coordinate: b moves by up to (|dn.x| + |dn.y| + |dn.z|) delta,
- * cc by up to 2 (|c.x| + |c.z| + h |rho|) delta, and b^2 - a cc by twice
- * the first times |b| plus |a| times the second, and a few steps. */
-static num_t cone_disc_error(const cone_ray_t *r, num_t *berr)
+ * in each coordinate: b moves by up to (|dn.x| + |dn.y| + |dn.z|) delta
+ * (*berr), cc by up to 2 (|c.x| + |c.z| + h |rho|) delta (*cerr), and
+ * b^2 - a cc by twice the first times |b| plus |a| times the second, and a
+ * few steps. */
+static num_t cone_disc_error(const cone_ray_t *r, num_t *berr, num_t *cerr)
 {
     num_t dsum = num_add(num_add(num_abs(r->dn.x), num_abs(r->dn.y)), num_abs(r->dn.z));
     *berr = num_mul(dsum, r->delta);
     num_t cs = num_add(num_add(num_abs(r->c.x), num_abs(r->c.z)), num_mul(r->h, num_abs(r->rho)));
-    num_t cerr = num_mul(num_mul_int(cs, 2), r->delta);
+    *cerr = num_mul(num_mul_int(cs, 2), r->delta);
     num_t size = num_max(num_max(num_mul(r->b, r->b), num_abs(num_mul(r->a, r->cc))), NUM_ONE);
     num_t moved = num_add(num_mul_int(num_mul(num_abs(r->b), *berr), 2),
-                          num_mul(num_abs(r->a), cerr));
+                          num_mul(num_abs(r->a), *cerr));
     return num_add(moved, num_mul_int(num_ulp(size), 8));
 }
 
 /* A side root at u, y = c.y + u dn.y: taken when y is within the ends;
  * uncertain when y may be on the other side of an end, which moves by
- * delta plus dn.y times the root's error (berr + err / (2 sq)) / |a|:
- * (||y| - 1| - delta) |a| 2 sq < |dn.y| (2 sq berr + err), no division. */
-static void cone_side_root(cone_ray_t *r, num_t u, num_t sq, num_t berr, num_t derr)
+ * delta plus dn.y times the root's error: the quadratic moved by
+ * 2 |u| berr + cerr over its slope there, 2 sq:
+ * (||y| - 1| - delta) 2 sq < |dn.y| (2 |u| berr + cerr), no division. */
+static void cone_side_root(cone_ray_t *r, num_t u, num_t sq, num_t berr, num_t cerr)
 {
     num_t y = num_add(r->c.y, num_mul(u, r->dn.y)), t;
     if (num_is_sat(u) || num_is_sat(y) || !cone_t(r, u, &t))
         return;
     if (r->want && cone_in_span(r, t)) {
         num_t left = num_sub(num_abs(num_sub(num_abs(y), NUM_ONE)), r->delta);
-        num_t two_sq = num_mul_int(sq, 2);
-        num_t right = num_mul(num_abs(r->dn.y), num_add(num_mul(two_sq, berr), derr));
-        if (num_lt(left, NUM_ZERO) || num_lt(num_mul(num_mul(left, num_abs(r->a)), two_sq), right))
+        num_t moved = num_add(num_mul(num_mul_int(num_abs(u), 2), berr), cerr);
+        if (num_lt(left, NUM_ZERO) ||
+            num_lt(num_mul(left, num_mul_int(sq, 2)), num_mul(num_abs(r->dn.y), moved)))
             r->uncertain = 1;
     }
     if (!num_gt(num_abs(y), NUM_ONE))
@@ -120,9 +122,9 @@ static void cone_side_root(cone_ray_t *r, num_t u, num_t sq, num_t berr, num_t d
  * uncertain. */
 static void cone_side(cone_ray_t *r)
 {
-    num_t berr = NUM_ZERO, derr = NUM_ZERO;
+    num_t berr = NUM_ZERO, cerr = NUM_ZERO;
     if (r->want) {
-        derr = cone_disc_error(r, &berr);
+        num_t derr = cone_disc_error(r, &berr, &cerr);
         if (!num_gt(num_abs(r->disc), derr)) {
             num_t ug = num_div(num_neg(r->b), r->a), t;
             num_t yg = num_add(r->c.y, num_mul(ug, r->dn.y));
@@ -137,8 +139,8 @@ static void cone_side(cone_ray_t *r)
     num_t q = num_lt(r->b, NUM_ZERO) ? num_sub(sq, r->b) : num_neg(num_add(r->b, sq));
     if (num_eq(q, NUM_ZERO))
         return;
-    cone_side_root(r, num_div(q, r->a), sq, berr, derr);
-    cone_side_root(r, num_div(r->cc, q), sq, berr, derr);
+    cone_side_root(r, num_div(q, r->a), sq, berr, cerr);
+    cone_side_root(r, num_div(r->cc, q), sq, berr, cerr);
 }
 
 /* The end disc at y = end (+-1) of radius rad, met where u = (end - c.y) /
