@@ -187,9 +187,11 @@ static void spd_say(const struct spd_opts *o, const struct spd_made *m)
         spheres += m->s.prims[i].kind == SCN_PRIM_ELLIPSOID;
         cones += m->s.prims[i].kind == SCN_PRIM_CONE;
     }
-    fprintf(stderr, "links1-spd: %s %ld -> %s: %ld spheres, %ld cones and cylinders, %ld "
-            "triangles\n", o->db->name, o->size, o->out, spheres, cones,
-            (long)m->s.n_prims - spheres - cones);
+    fprintf(stderr, "links1-spd: %s %ld -> %s: %ld spheres, %ld triangles", o->db->name,
+            o->size, o->out, spheres, (long)m->s.n_prims - spheres - cones);
+    if (cones)
+        fprintf(stderr, ", %ld cones and cylinders", cones);
+    fprintf(stderr, "\n");
     fprintf(stderr, "links1-spd: its NFF: %d lights, %ld spheres, %ld polygons, %ld patches, "
             "%ld cones", m->info.lights, m->info.spheres, m->info.polygons, m->info.patches,
             m->info.cones);
