@@ -288,7 +288,9 @@ enum scn_map_kind {
 #define SCN_PRIM_KIND 0         /* u16: enum scn_prim_kind */
 #define SCN_PRIM_MATERIAL 2     /* u16: material index */
 #define SCN_PRIM_CLUSTER 4      /* u32: the cluster it belongs to */
-#define SCN_PRIM_FIRST 8        /* u32: DENSITY: first component in COMPONENTS */
+#define SCN_PRIM_FIRST 8        /* u32: DENSITY: first component in COMPONENTS;
+                                   CONE: enum scn_cone_caps (SCN_PRIM_CAPS) */
+#define SCN_PRIM_CAPS SCN_PRIM_FIRST
 #define SCN_PRIM_COUNT 12       /* u32: DENSITY: components, 1..SCN_MAX_DENSITY_COMPONENTS */
 #define SCN_PRIM_VALUES 16      /* SCN_PRIM_MAX_VALUES x f32, unused ones 0 */
 #define SCN_PRIM_MAX_VALUES 15
@@ -298,17 +300,31 @@ enum scn_map_kind {
  *   ELLIPSOID centre (3), semi-axes (3, each > 0)
  *   BOX       centre (3), half edge lengths (3, each > 0)
  *   DENSITY   threshold (> 0); first/count name its components
+ *   CONE      base centre (3), base radius, apex centre (3), apex radius:
+ *             a cone frustum or cylinder (radii >= 0, not both 0; base !=
+ *             apex), its end discs capped or not by SCN_PRIM_CAPS (count 0).
+ *             Kind 5 came without a new version: a loader from before it
+ *             refuses the scene as one of an unknown primitive kind
  */
 enum scn_prim_kind {
     SCN_PRIM_TRIANGLE = 1,
     SCN_PRIM_ELLIPSOID = 2,
     SCN_PRIM_BOX = 3,
     SCN_PRIM_DENSITY = 4,
+    SCN_PRIM_CONE = 5,
 };
+#define SCN_PRIM_KINDS 5 /* kinds are 1..SCN_PRIM_KINDS */
 #define SCN_TRIANGLE_VALUES 15
 #define SCN_ELLIPSOID_VALUES 6
 #define SCN_BOX_VALUES 6
 #define SCN_DENSITY_VALUES 1
+#define SCN_CONE_VALUES 8
+/* A cone's end discs: open (NFF's `c`: "the surface exists without
+ * endcaps") or both capped by flat discs (the text form's default). */
+enum scn_cone_caps {
+    SCN_CONE_OPEN = 0,
+    SCN_CONE_CAPPED = 1,
+};
 
 /* ------------------------------------------------- COMPONENTS record */
 #define SCN_COMPONENT_SIZE 20

@@ -2,6 +2,7 @@
 #include "render/precision.h"
 
 #include "proto/textfmt.h"
+#include "render/prim_cone.h"
 #include "render/vec3.h"
 
 #define PRECISION_INVERSE_TOL NUM_C(RENDER_INVERSE_TOLERANCE_VALUE)
@@ -279,6 +280,7 @@ static inline __attribute__((always_inline)) void precision_check_one(render_fra
         p->edge_error[0] = local;
         break;
     case SCENE_PRIM_ELLIPSOID:
+    case SCENE_PRIM_CONE: /* its local point as an ellipsoid's */
         p->uv_error = local;
         p->edge_error[0] = local;
         p->curvature = num_div(num_mul(rows[0], rows[0]), rows[1]);
@@ -337,6 +339,26 @@ static num_t precision_axis_len(const xform_t *to_eye, int j, num_t s)
     return num_mul(num_abs(s), num_len3(to_eye->m[0][j], to_eye->m[1][j], to_eye->m[2][j]));
 }
 
+/* A cone's smallest size: its larger end's radius across its two
+ * directions and half its axis, in eye units and in its cluster's (its
+ * smaller end may be a point). */
+static void precision_detail_cone(render_frame_t *f, uint32_t i, const xform_t *to_eye,
+                                  num_t reach)
+{
+    prim_cone_frame_t c;
+    if (!prim_cone_frame(&f->scene->prims[i], &c))
+        return; /* its box saturated: the precision flag */
+    num_t eye = num_min(num_mul(c.half, vec3_length(xform_dir(to_eye, c.axis))),
+                        num_mul(c.radius, num_min(vec3_length(xform_dir(to_eye, c.u)),
+                                                  vec3_length(xform_dir(to_eye, c.w)))));
+    num_t own_reach = NUM_ZERO;
+    for (int j = 0; j < 3; j++)
+        own_reach = num_max(own_reach, num_abs(vec3_get(c.centre, j)));
+    own_reach = num_add(own_reach, num_max(c.half, c.radius));
+    precision_detail_one(f, i, eye, reach);
+    precision_detail_one(f, i, num_min(c.half, c.radius), own_reach);
+}
+
 void precision_detail(render_frame_t *f, uint32_t i, const xform_t *to_eye)
 {
     const scene_prim_t *sp = &f->scene->prims[i];
@@ -361,6 +383,9 @@ void precision_detail(render_frame_t *f, uint32_t i, const xform_t *to_eye)
         precision_detail_one(f, i, own, own_reach);
         break;
     }
+    case SCENE_PRIM_CONE:
+        precision_detail_cone(f, i, to_eye, reach);
+        break;
     default: /* SCENE_PRIM_DENSITY */
         for (uint16_t k = 0; k < p->component_count; k++) {
             const scene_density_component_t *d = &p->components[k];
@@ -516,6 +541,9 @@ static const char *precision_kind_name(const scene_prim_t *sp, const char **size
         return "ellipsoid";
     }
     case SCENE_PRIM_BOX: *size = "half edge"; return "box";
+    case SCENE_PRIM_CONE:
+        *size = "radius or half length";
+        return num_eq(sp->shape.cone.radius[0], sp->shape.cone.radius[1]) ? "cylinder" : "cone";
     default: *size = "component radius"; return "density sphere";
     }
 }

@@ -16,6 +16,7 @@
 
 #include "proto/scene_format.h"
 #include "render/precision.h"
+#include "render/prim_cone.h"
 #include "render/prim.h"
 #include "render/vec3.h"
 #include "render/words.h"
@@ -360,7 +361,7 @@ static render_status_t prep_check_tree(const scene_t *s)
     }
     for (uint32_t i = 0; i < s->prim_count; i++) {
         const scene_prim_t *p = &s->prims[i];
-        if (p->kind > SCENE_PRIM_DENSITY || p->cluster >= s->cluster_count ||
+        if (p->kind > SCENE_PRIM_CONE || p->cluster >= s->cluster_count ||
             p->material >= s->material_count)
             return RENDER_ERR_PRIM;
         if (p->kind == SCENE_PRIM_DENSITY &&
@@ -372,6 +373,37 @@ static render_status_t prep_check_tree(const scene_t *s)
             return RENDER_ERR_PRIM;
     }
     return RENDER_OK;
+}
+
+/* A cone's eye-space form: its local map, slope and caps, and the box of
+ * its two end discs (which holds their convex hull, the cone): a disc of
+ * radius r across unit u, w has the half extent r sqrt(Tu_i^2 + Tw_i^2) on
+ * eye axis i, T to_eye's linear part.  A cone whose frame saturates gets
+ * a saturated box (the frame's precision flag). */
+static void prep_cone(const scene_prim_t *sp, const xform_t *to_eye, const xform_t *from_eye,
+                      num_t pad, render_prim_t *p)
+{
+    prim_cone_frame_t f;
+    if (!prim_cone_frame(sp, &f)) {
+        num_t sat = num_div(NUM_ONE, NUM_ZERO); /* a saturated value */
+        p->bounds.lo = p->bounds.hi = vec3_make(sat, sat, sat);
+        return;
+    }
+    xform_t shape = prim_cone_shape(&f);
+    p->to_local = xform_compose(&shape, from_eye);
+    p->cone_slope = f.slope;
+    p->cone_capped = sp->shape.cone.capped;
+    vec3_t tu = xform_dir(to_eye, f.u), tw = xform_dir(to_eye, f.w);
+    num_t tu3[3] = {tu.x, tu.y, tu.z}, tw3[3] = {tw.x, tw.y, tw.z}, e[3];
+    for (int i = 0; i < 3; i++)
+        e[i] = num_len3(tu3[i], tw3[i], NUM_ZERO);
+    vec3_t across = vec3_make(e[0], e[1], e[2]);
+    num_t small = num_mul(f.radius, num_sub(NUM_ONE, num_mul_int(f.slope, 2)));
+    vec3_t big_end = vec3_madd(f.centre, f.axis, num_neg(f.half));
+    vec3_t small_end = vec3_madd(f.centre, f.axis, f.half);
+    p->bounds = prep_aabb_around(xform_point(to_eye, big_end), vec3_scale(across, f.radius), pad);
+    aabb_t b = prep_aabb_around(xform_point(to_eye, small_end), vec3_scale(across, small), pad);
+    prep_aabb_grow(&p->bounds, &b);
 }
 
 /* Eye-space form of one primitive; to_eye/from_eye map its cluster; pad
@@ -450,6 +482,9 @@ static inline __attribute__((always_inline)) void prep_prim(const scene_prim_t *
         p->bounds = prep_aabb_around(xform_point(to_eye, c), prep_extent(lin, round), pad);
         break;
     }
+    case SCENE_PRIM_CONE:
+        prep_cone(sp, to_eye, from_eye, pad, p);
+        break;
     default: { /* SCENE_PRIM_DENSITY */
         p->to_local = *from_eye;
         p->components = &f->scene->density_components[sp->shape.density.first];

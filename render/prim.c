@@ -2,6 +2,7 @@
  * The methods are described in docs/renderer.md. */
 #include "render/prim.h"
 
+#include "render/prim_cone.h"
 #include "render/vec3.h"
 
 #define PRIM_EDGE_TOL NUM_C(RENDER_EDGE_TOLERANCE_VALUE)
@@ -251,7 +252,7 @@ static int prim_ellipsoid_intersect(const render_prim_t *p, const ray_t *ray,
 
 /* Pseudo-angle of (x, z) in [0, 4): monotonic in the true angle, exact at
  * the axes, and needs no trigonometry (the board has no atan2). */
-static num_t prim_pseudo_angle(num_t x, num_t z)
+num_t prim_pseudo_angle(num_t x, num_t z)
 {
     num_t ax = num_abs(x), az = num_abs(z);
     num_t sum = num_add(ax, az);
@@ -266,7 +267,7 @@ static num_t prim_pseudo_angle(num_t x, num_t z)
 /* Tangent from a local-space hint: mapped to eye space by the transposed
  * inverse (exact for rotations and uniform scales, a fair direction
  * otherwise), then made perpendicular to the normal. */
-static vec3_t prim_tangent(const xform_t *to_local, vec3_t hint_local, vec3_t normal)
+vec3_t prim_tangent(const xform_t *to_local, vec3_t hint_local, vec3_t normal)
 {
     vec3_t h = xform_dir_transposed(to_local, hint_local);
     h = vec3_sub(h, vec3_scale(normal, vec3_dot(normal, h)));
@@ -627,6 +628,8 @@ int prim_intersect_uncertain(const render_prim_t *p, const ray_t *ray, const ray
         return prim_box_intersect(p, ray, err, tmin, tmax, t_out, uncertain);
     case SCENE_PRIM_DENSITY:
         return prim_density_intersect(p, ray, err, tmin, tmax, t_out, uncertain);
+    case SCENE_PRIM_CONE:
+        return prim_cone_intersect(p, ray, err, tmin, tmax, t_out, uncertain);
     default:
         return 0;
     }
@@ -645,6 +648,9 @@ void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit)
         break;
     case SCENE_PRIM_BOX:
         prim_box_surface(p, hit);
+        break;
+    case SCENE_PRIM_CONE:
+        prim_cone_surface(p, hit);
         break;
     default:
         prim_density_surface(p, hit);

@@ -131,6 +131,13 @@ static inline int prim_aabb_entry_ray(const aabb_t *b, const ray_t *ray, const a
     return 1;
 }
 
+/* Pseudo-angle of (x, z) in [0, 4): monotonic in the true angle, exact at
+ * the axes, no trigonometry (an ellipsoid's and a cone's u). */
+num_t prim_pseudo_angle(num_t x, num_t z);
+/* A unit tangent at a hit of normal `normal` from a hint in the local
+ * frame of to_local (an ellipsoid's, a box's, a cone's). */
+vec3_t prim_tangent(const xform_t *to_local, vec3_t hint_local, vec3_t normal);
+
 /* LINKS-1 density field of one component of weight b at squared distance
  * r2, given inv_radius2 = 1/d^2. */
 num_t prim_density_field(num_t r2, num_t inv_radius2, num_t weight);

@@ -78,7 +78,9 @@ typedef struct {
                             equal hit distances the same way in every order */
     aabb_t bounds;       /* eye-space box around it */
     union {
-        /* ELLIPSOID: eye -> unit sphere; BOX: eye -> [-1,1]^3;
+        /* ELLIPSOID: eye -> unit sphere; BOX: eye -> [-1,1]^3; CONE: eye
+         * -> the cone whose axis runs along y from -1 (its larger end,
+         * radius 1) to 1 (radius 1 - 2 cone_slope);
          * DENSITY: eye -> the cluster's coordinates (components live there). */
         xform_t to_local;
         /* TRIANGLE, smooth: its eye-space vertex normals, unit length, held
@@ -95,7 +97,18 @@ typedef struct {
      * vector keep the fixed build precise on very large or small triangles. */
     vec3_t edge_n1, edge_n2;
     num_t height1, height2;
-    num_t tex_u[3], tex_v[3];
+    union {
+        struct {
+            num_t tex_u[3], tex_v[3]; /* TRIANGLE: map coordinates */
+        };
+        struct {
+            /* CONE: its local radius at y is 1 - cone_slope (1 + y):
+             * (1 - k) / 2 for a smaller end of k times the larger's
+             * radius, 0 for a cylinder, 1/2 for a pointed cone */
+            num_t cone_slope;
+            uint8_t cone_capped; /* 1: its ends closed by discs */
+        };
+    };
     /* DENSITY.  Pointer fields: render_relocate (render/relocate.c) moves
      * each one; a new pointer field must be added there too. */
     const scene_density_component_t *components; /* -> scene density_components;

@@ -207,6 +207,7 @@ enum scene_prim_kind {
     SCENE_PRIM_ELLIPSOID = 1,
     SCENE_PRIM_BOX = 2,
     SCENE_PRIM_DENSITY = 3,
+    SCENE_PRIM_CONE = 4,   /* a cone frustum or cylinder (render/prim_cone.c) */
 };
 
 /* One LINKS-1 density field component: weight b, radius d.  Field at
@@ -252,6 +253,11 @@ typedef struct {
             uint16_t count;    /* 1..RENDER_MAX_DENSITY_COMPONENTS */
             num_t threshold;   /* surface: sum of fields == threshold, > 0 */
         } density;
+        struct {
+            vec3_t end[2];     /* the centres of its end discs (base, apex), apart */
+            num_t radius[2];   /* their radii, >= 0, not both 0 */
+            uint8_t capped;    /* 1: both ends closed by flat discs; 0: open */
+        } cone;
     } shape;
 } scene_prim_t;
 

@@ -708,7 +708,27 @@ static int load_sliver(const vec3_t v[3], int unit_exp)
 static const int load_prim_values[] = {
     [SCN_PRIM_TRIANGLE] = SCN_TRIANGLE_VALUES, [SCN_PRIM_ELLIPSOID] = SCN_ELLIPSOID_VALUES,
     [SCN_PRIM_BOX] = SCN_BOX_VALUES,           [SCN_PRIM_DENSITY] = SCN_DENSITY_VALUES,
+    [SCN_PRIM_CONE] = SCN_CONE_VALUES,
 };
+
+/* A cone's ends and radii (values base, r0, apex, r1): radii not negative
+ * nor both 0, ends apart once in num_t. */
+static scene_load_status_t load_cone(struct load *L, const uint8_t *v, scene_prim_t *o)
+{
+    uint32_t r0 = wire_get_u32(v + 12), r1 = wire_get_u32(v + 28);
+    int neg = ((r0 & LOAD_F32_SIGN) && !load_zero(r0)) || ((r1 & LOAD_F32_SIGN) && !load_zero(r1));
+    if (neg || (load_zero(r0) && load_zero(r1)))
+        return SCENE_LOAD_ERR_VALUE;
+    o->kind = SCENE_PRIM_CONE;
+    o->shape.cone.end[0] = load_lvec3(L, v);
+    o->shape.cone.radius[0] = load_len(L, v + 12);
+    o->shape.cone.end[1] = load_lvec3(L, v + 16);
+    o->shape.cone.radius[1] = load_len(L, v + 28);
+    vec3_t a = o->shape.cone.end[0], b = o->shape.cone.end[1];
+    if (num_eq(a.x, b.x) && num_eq(a.y, b.y) && num_eq(a.z, b.z))
+        return SCENE_LOAD_ERR_VALUE;
+    return SCENE_LOAD_OK;
+}
 
 static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
                                       scene_density_component_t *comps)
@@ -724,7 +744,7 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
         uint32_t first = wire_get_u32(p + SCN_PRIM_FIRST);
         uint32_t count = wire_get_u32(p + SCN_PRIM_COUNT);
         const uint8_t *v = p + SCN_PRIM_VALUES;
-        if (kind < SCN_PRIM_TRIANGLE || kind > SCN_PRIM_DENSITY)
+        if (kind < SCN_PRIM_TRIANGLE || kind > SCN_PRIM_KINDS)
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i, "unknown kind");
         if (mat >= n_mat)
             return load_bad(L, SCENE_LOAD_ERR_INDEX, "prim ", i, "material index out of range");
@@ -738,9 +758,12 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
         for (int k = nv; k < SCN_PRIM_MAX_VALUES; k++)
             if (wire_get_u32(v + 4 * k) != 0)
                 return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i, "unused value not zero");
-        if (kind != SCN_PRIM_DENSITY && (first != 0 || count != 0))
+        if (kind != SCN_PRIM_DENSITY && kind != SCN_PRIM_CONE && (first != 0 || count != 0))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
                             "component range on a primitive that is not a density sphere");
+        if (kind == SCN_PRIM_CONE && (first > SCN_CONE_CAPPED || count != 0))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
+                            "a cone's caps are not 0 (open) or 1 (capped), or its count not 0");
         scene_prim_t *o = &out[i];
         o->cluster = clu;
         o->material = mat;
@@ -773,6 +796,12 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
                 o->shape.box.centre = load_lvec3(L, v);
                 o->shape.box.half = load_lvec3(L, v + 12);
             }
+            break;
+        case SCN_PRIM_CONE:
+            if (load_cone(L, v, o) != SCENE_LOAD_OK)
+                return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
+                                "a cone's radius is negative, both are 0, or its ends meet");
+            o->shape.cone.capped = (uint8_t)first;
             break;
         default: /* SCN_PRIM_DENSITY */
             if (!load_pos(wire_get_u32(v), SCN_MAX_FACTOR))
@@ -911,7 +940,8 @@ static scene_load_status_t load_scale(struct load *L, scene_t *s)
         uint16_t kind = wire_get_u16(p + SCN_PRIM_KIND);
         uint32_t clu = wire_get_u32(p + SCN_PRIM_CLUSTER);
         int32_t c = clu < n_clu ? L->cexp[clu] : 0;
-        int n = kind == SCN_PRIM_TRIANGLE ? 9 : kind == SCN_PRIM_DENSITY ? 0 : 6;
+        int n = kind == SCN_PRIM_TRIANGLE ? 9 : kind == SCN_PRIM_DENSITY ? 0
+                : kind == SCN_PRIM_CONE ? SCN_CONE_VALUES : 6;
         geom = load_max_exp(p + SCN_PRIM_VALUES, n, c, geom);
         uint32_t first = wire_get_u32(p + SCN_PRIM_FIRST), count = wire_get_u32(p + SCN_PRIM_COUNT);
         if (kind == SCN_PRIM_DENSITY && first <= n_comp && count <= n_comp - first)

@@ -442,6 +442,9 @@ static void nff_polygon(struct nff *r, int smooth)
     nff_cut_polygon(r, n, smooth, line, col);
 }
 
+/* NFF's cone or cylinder: "the surface exists without endcaps", so an
+ * open cone (SCN_CONE_OPEN); both radii negative mean that only its inside
+ * is seen, which a renderer of two-sided surfaces shows anyway. */
 static void nff_cone(struct nff *r)
 {
     int line = r->lx.tok_line, col = r->lx.tok_col;
@@ -455,43 +458,23 @@ static void nff_cone(struct nff *r)
     if ((r0 < 0 && r1 > 0) || (r0 > 0 && r1 < 0))
         nff_error_at(r, line, col, "a cone's radii must have one sign (both negative: seen "
                                    "from inside), not %g and %g", r0, r1);
-    r0 = fabs(r0); /* the facets are seen from both sides anyway */
-    r1 = fabs(r1);
-    if (r0 == 0 && r1 == 0)
-        nff_error_at(r, line, col, "a cone whose radii are both 0 (a line)");
-    double ax[3] = {apex[0] - base[0], apex[1] - base[1], apex[2] - base[2]};
-    double len = sqrt(nff_dot(ax, ax));
-    if (!(len > 0))
-        nff_error_at(r, line, col, "a cone of zero height (base and apex are the same point)");
-    for (int k = 0; k < 3; k++)
-        ax[k] /= len;
-    /* u, v: unit vectors across the axis */
-    double any[3] = {0, 0, 0}, u[3], v[3];
-    int small = fabs(ax[0]) <= fabs(ax[1]) ? (fabs(ax[0]) <= fabs(ax[2]) ? 0 : 2)
-                                           : (fabs(ax[1]) <= fabs(ax[2]) ? 1 : 2);
-    any[small] = 1;
-    nff_cross(ax, any, u);
-    double ul = sqrt(nff_dot(u, u));
-    for (int k = 0; k < 3; k++)
-        u[k] /= ul;
-    nff_cross(ax, u, v);
-    double ring0[NFF_CONE_SIDES + 1][3], ring1[NFF_CONE_SIDES + 1][3];
-    for (int i = 0; i < NFF_CONE_SIDES; i++) {
-        double a = 2.0 * NFF_PI * i / NFF_CONE_SIDES, ca = cos(a), sa = sin(a);
-        for (int k = 0; k < 3; k++) {
-            double d = ca * u[k] + sa * v[k];
-            ring0[i][k] = base[k] + r0 * d;
-            ring1[i][k] = apex[k] + r1 * d;
-        }
-    }
-    memcpy(ring0[NFF_CONE_SIDES], ring0[0], sizeof ring0[0]);
-    memcpy(ring1[NFF_CONE_SIDES], ring1[0], sizeof ring1[0]);
-    for (int i = 0; i < NFF_CONE_SIDES; i++) {
-        if (r0 > 0)
-            nff_triangle(r, ring0[i], ring0[i + 1], ring1[i + 1], NULL, NULL, NULL, line, col);
-        if (r1 > 0)
-            nff_triangle(r, ring0[i], ring1[i + 1], ring1[i], NULL, NULL, NULL, line, col);
-    }
+    double v[SCN_CONE_VALUES];
+    nff_mirror(base, v);
+    v[3] = fabs(r0);
+    nff_mirror(apex, v + 4);
+    v[7] = fabs(r1);
+    const char *why = sd_cone_invalid(v);
+    if (why)
+        nff_error_at(r, line, col, "%s", why);
+    for (int e = 0; e < 2; e++)
+        for (int k = 0; k < 3; k++)
+            if (!(fabs(v[4 * e + k]) + v[4 * e + 3] <= SCN_MAX_COORD))
+                nff_error_at(r, line, col, "this cone reaches beyond the +-%g of a coordinate",
+                             SCN_MAX_COORD);
+    struct sd_prim *p = nff_new_prim(r, SCN_PRIM_CONE);
+    memcpy(p->v, v, sizeof v);
+    p->capped = SCN_CONE_OPEN;
+    r->s->n_prims++;
     r->info.cones++;
 }
 

@@ -18,7 +18,9 @@
  *   p   a polygon: triangles, a fan when it is convex, otherwise cut by
  *       ear clipping (the gears' faces are concave)
  *   pp  the same with a vertex normal at each corner: smooth triangles
- *   c   a cone or cylinder, open-ended: NFF_CONE_SIDES facets round
+ *   c   a cone or cylinder, open-ended as NFF has it ("the surface exists
+ *       without endcaps"): the renderer's cone (SCN_PRIM_CONE); paper mode
+ *       makes it SD_CONE_SIDES facets round (sd_paper_facet_cones)
  *
  * NFF is right-handed (z up in the SPD); y is negated on the way in, so
  * the left-handed renderer shows the picture the file describes.  A
@@ -33,7 +35,6 @@
 
 #include "host-tools/scene/scene_desc.h"
 
-#define NFF_CONE_SIDES 16          /* facets round a cone or cylinder */
 #define NFF_MAX_POLY_VERTICES 4096 /* vertices of one p or pp */
 #define NFF_MAX_LIGHTS 256         /* l entities in one file (merged into 3) */
 #define NFF_MAX_FILE (64u * 1024u * 1024u) /* larger files are refused */
@@ -41,7 +42,7 @@
 /* What a file held and what became of it. */
 struct nff_info {
     long spheres, polygons, patches, cones; /* entities read */
-    long triangles;     /* triangles placed (polygons, patches, cones) */
+    long triangles;     /* triangles placed (polygons, patches) */
     long dropped;       /* degenerate triangles left out */
     int lights;         /* l entities read */
     int lights_merged;  /* merges made to keep SCN_MAX_LIGHTS */

@@ -90,6 +90,20 @@ void sd_prim_bounds(const struct sd_scene *s, const struct sd_prim *p, double lo
             hi[k] = p->v[k] + fabs(p->v[3 + k]);
         }
         break;
+    case SCN_PRIM_CONE: /* its end discs: r sqrt(1 - a_k^2) on axis k */
+        for (int e = 0; e < 2; e++) {
+            const double *c = &p->v[4 * e];
+            double a[3] = {p->v[4] - p->v[0], p->v[5] - p->v[1], p->v[6] - p->v[2]};
+            double len = sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]), elo[3], ehi[3];
+            for (int k = 0; k < 3; k++) {
+                double ak = len > 0 ? a[k] / len : 0;
+                double ext = c[3] * sqrt(fmax(0, 1 - ak * ak));
+                elo[k] = c[k] - ext;
+                ehi[k] = c[k] + ext;
+            }
+            bvh_box_add(lo, hi, elo, ehi);
+        }
+        break;
     default: /* DENSITY: every component's ball */
         for (int i = 0; i < p->count; i++) {
             const struct sd_component *c = &s->components[p->first + i];

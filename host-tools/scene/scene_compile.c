@@ -146,6 +146,8 @@ static void compile_prim(const struct sd_prim *pr, uint8_t *p)
     wire_put_u16(p + SCN_PRIM_KIND, (uint16_t)pr->kind);
     wire_put_u16(p + SCN_PRIM_MATERIAL, (uint16_t)pr->material);
     wire_put_u32(p + SCN_PRIM_CLUSTER, (uint32_t)pr->cluster);
+    if (pr->kind == SCN_PRIM_CONE)
+        wire_put_u32(p + SCN_PRIM_CAPS, pr->capped ? SCN_CONE_CAPPED : SCN_CONE_OPEN);
     if (pr->kind == SCN_PRIM_DENSITY) {
         wire_put_u32(p + SCN_PRIM_FIRST, (uint32_t)pr->first);
         wire_put_u32(p + SCN_PRIM_COUNT, (uint32_t)pr->count);
@@ -355,6 +357,13 @@ static int compile_checked(const struct sd_scene *s, uint8_t **out, size_t *len,
 
 int sd_compile(const struct sd_scene *s, uint8_t **out, size_t *len, char *err, size_t errlen)
 {
+    for (int i = 0; s->paper && i < s->n_prims; i++)
+        if (s->prims[i].kind == SCN_PRIM_CONE) {
+            snprintf(err, errlen, "paper mode keeps the paper's four primitives, but its cones "
+                                  "and cylinders could not be faceted (%d sides round would "
+                                  "pass SCN_MAX_PRIMS primitives, or memory)", SD_CONE_SIDES);
+            return -1;
+        }
     *out = NULL;
     *len = 0;
     if (s->no_auto_hierarchy || s->n_prims == 0)

@@ -108,6 +108,7 @@ struct sd_prim {
     int material, cluster;
     double v[SCN_PRIM_MAX_VALUES]; /* as in proto/scene_format.h */
     int first, count;       /* DENSITY: into components[] */
+    int capped;             /* CONE: enum scn_cone_caps */
     int smooth;             /* TRIANGLE: 1 with vertex normals n (beyond the paper) */
     double n[9];            /* smooth: unit normals at v0, v1, v2, cluster coordinates */
 };
@@ -135,6 +136,8 @@ struct sd_scene {
                                `options { auto_hierarchy off }` */
     int paper;              /* 1: paper mode (`options { paper on }`,
                                --paper; sd_paper_apply) */
+    int paper_faceted;      /* cones and cylinders paper mode made into
+                               SD_CONE_SIDES facets round (sd_paper_apply) */
     unsigned written;       /* SD_WROTE_*: options the text set itself */
 };
 
@@ -172,6 +175,14 @@ void sd_view_defaults(struct sd_view *v);
  * SCN_OPT_PAPER flag for the render's schedule.  src/trc by angle is the
  * text form's default already (a material's own `fresnel 0` stays). */
 void sd_paper_apply(struct sd_scene *s);
+/* Paper mode keeps the paper's four primitives: every cone and cylinder
+ * becomes SD_CONE_SIDES facets round (and fans over its end discs when it
+ * is capped), counted in s->paper_faceted; -1 with err when the triangles
+ * would pass SCN_MAX_PRIMS or memory runs out.  sd_paper_apply calls it
+ * (and leaves the cones as they are on failure: the compiler then still
+ * has a scene). */
+#define SD_CONE_SIDES 16
+int sd_paper_facet_cones(struct sd_scene *s, char *err, size_t errlen);
 
 /* The compiled form in a malloc'ed buffer (*out, *len); -1 with err if the
  * scene exceeds a limit of the format.  Unless s->no_auto_hierarchy, big
@@ -198,6 +209,10 @@ void sd_view_at(const struct sd_scene *s, int frame, struct sd_view *view,
  * (twice its area below 1e-12) or is a sliver (a height under
  * SCN_MIN_TRIANGLE_HEIGHT); the parser refuses it, an import drops it. */
 int sd_triangle_degenerate(const double v[9]);
+/* What is wrong with cone values v (SCN_CONE_VALUES: base, its radius,
+ * apex, its radius), as the text form and NFF say it, or NULL: a negative
+ * radius, both radii 0, or ends nearer than SCN_MIN_TRIANGLE_HEIGHT. */
+const char *sd_cone_invalid(const double v[SCN_CONE_VALUES]);
 /* The smallest height of a triangle (a vertex's distance from the opposite
  * edge); a triangle under SCN_MIN_TRIANGLE_HEIGHT is degenerate (a sliver). */
 double sd_triangle_min_height(const double v[9]);

@@ -183,6 +183,10 @@ void scene_opts_apply(const struct scene_file_opts *o, struct sd_scene *s)
 {
     if (o->paper && !s->paper)
         sd_paper_apply(s);
+    if (s->paper_faceted > 0) /* once: the parser's paper mode or this one's */
+        fprintf(stderr, "%s: %d cones/cylinders faceted (%d sides round: the paper's four "
+                "primitives)\n", o->paper ? "--paper" : "paper mode", s->paper_faceted,
+                SD_CONE_SIDES);
     if (o->width) {
         s->view.width = o->width;
         s->view.height = o->height;

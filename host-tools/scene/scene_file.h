@@ -69,7 +69,8 @@ int scene_file_bytes_info(const char *path, const struct scene_file_opts *o, uin
 
 /* out with the frame number before its extension: "a.png", 7 -> "a-0007.png". */
 void scene_file_frame_path(const char *out, long frame, char *buf, size_t n);
-/* o's changes made to s (paper mode first: the others win over it). */
+/* o's changes made to s (paper mode first: the others win over it); when
+ * paper mode faceted cones or cylinders, a line on stderr says how many. */
 void scene_opts_apply(const struct scene_file_opts *o, struct sd_scene *s);
 
 /* The first option o gives that changes the scene ("--max-depth"), or

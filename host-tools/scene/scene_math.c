@@ -30,6 +30,18 @@ int sd_triangle_degenerate(const double v[9])
            !(sd_triangle_min_height(v) >= SCN_MIN_TRIANGLE_HEIGHT);
 }
 
+const char *sd_cone_invalid(const double v[SCN_CONE_VALUES])
+{
+    if (!(v[3] >= 0) || !(v[7] >= 0))
+        return "a cone's radius is negative";
+    if (!(v[3] > 0) && !(v[7] > 0))
+        return "a cone whose radii are both 0 (a line)";
+    double d[3] = {v[4] - v[0], v[5] - v[1], v[6] - v[2]};
+    if (!(sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) >= SCN_MIN_TRIANGLE_HEIGHT))
+        return "a cone of zero height (its base and apex are the same point)";
+    return NULL;
+}
+
 double sd_triangle_min_height(const double v[9])
 {
     /* each height is twice the area over its base: the smallest stands on

@@ -238,7 +238,8 @@ static void parse_cluster_body(struct parser *p, int c, int material, int nestin
             material = parse_material_ref(p);
         } else if (lex_is_word(lx, "triangle") || lex_is_word(lx, "ellipsoid") ||
                    lex_is_word(lx, "sphere") || lex_is_word(lx, "box") ||
-                   lex_is_word(lx, "density")) {
+                   lex_is_word(lx, "density") || lex_is_word(lx, "cylinder") ||
+                   lex_is_word(lx, "cone")) {
             parse_prim(p, c, material);
         } else if (lex_is_word(lx, "model")) {
             parse_model(p, c, nesting);

@@ -253,6 +253,51 @@ static void parse_box(struct parser *p, struct sd_prim *pr)
     }
 }
 
+/* cylinder { base X Y Z  apex X Y Z  radius R  [open] } and
+ * cone { base X Y Z  base_radius R0  apex X Y Z  apex_radius R1  [open] }
+ * (apex_radius 0 when not given: a pointed cone); values as NFF's c,
+ * capped unless open. */
+static void parse_cone(struct parser *p, struct sd_prim *pr, int cylinder)
+{
+    const char *kind = cylinder ? "cylinder" : "cone";
+    int have = 0; /* 1 base, 2 apex, 4 a radius */
+    double *v = pr->v;
+    pr->capped = 1;
+    while (p->lx.kind != LEX_CLOSE) {
+        if (parse_prim_material(p, pr))
+            continue;
+        if (lex_is_word(&p->lx, "base") || lex_is_word(&p->lx, "apex")) {
+            int apex = lex_is_word(&p->lx, "apex");
+            lex_next(&p->lx);
+            parse_coord3(p, apex ? "apex" : "base", v + 4 * apex);
+            have |= apex ? 2 : 1;
+        } else if (cylinder && lex_is_word(&p->lx, "radius")) {
+            lex_next(&p->lx);
+            v[3] = v[7] = lex_number_in(&p->lx, "radius", SCN_MIN_SIZE, SCN_MAX_COORD);
+            have |= 4;
+        } else if (!cylinder &&
+                   (lex_is_word(&p->lx, "base_radius") || lex_is_word(&p->lx, "apex_radius"))) {
+            int apex = lex_is_word(&p->lx, "apex_radius");
+            lex_next(&p->lx);
+            v[3 + 4 * apex] = lex_number_in(&p->lx, apex ? "apex_radius" : "base_radius", 0,
+                                            SCN_MAX_COORD);
+            have |= apex ? 0 : 4;
+        } else if (lex_is_word(&p->lx, "open")) {
+            lex_next(&p->lx);
+            pr->capped = 0;
+        } else {
+            parse_unknown(p, kind);
+        }
+    }
+    if ((have & 3) != 3)
+        lex_error(&p->lx, "%s needs a base and an apex", kind);
+    if (!(have & 4))
+        lex_error(&p->lx, "%s needs a%s", kind, cylinder ? " radius" : " base_radius");
+    const char *why = sd_cone_invalid(v);
+    if (why)
+        lex_error(&p->lx, "%s", why);
+}
+
 static void parse_density(struct parser *p, struct sd_prim *pr)
 {
     struct sd_scene *s = p->s;
@@ -311,6 +356,9 @@ void parse_prim(struct parser *p, int cluster, int material)
     } else if (strcmp(kind, "box") == 0) {
         pr.kind = SCN_PRIM_BOX;
         parse_box(p, &pr);
+    } else if (strcmp(kind, "cylinder") == 0 || strcmp(kind, "cone") == 0) {
+        pr.kind = SCN_PRIM_CONE;
+        parse_cone(p, &pr, kind[1] == 'y');
     } else {
         pr.kind = SCN_PRIM_DENSITY;
         parse_density(p, &pr);

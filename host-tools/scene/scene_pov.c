@@ -8,7 +8,7 @@
  * shadows, mirror reflection constant or on the angle (POV-Ray's variable
  * reflection, min + (max - min)(1 - cos)^falloff, is Schlick's curve of
  * render/shade.h with min src, max src + (1 - src) fresnel, falloff 5),
- * triangles, ellipsoids, boxes.  Anything else is approximated and named
+ * triangles, ellipsoids, boxes, cones and cylinders.  Anything else is approximated and named
  * in a comment at the top of the file, or refused when strict is set.
  */
 #include <errno.h>
@@ -39,7 +39,8 @@ static double pov_extent(const struct sd_scene *s)
     }
     for (int i = 0; i < s->n_prims; i++) {
         int kind = s->prims[i].kind;
-        int n = kind == SCN_PRIM_TRIANGLE ? 9 : kind == SCN_PRIM_DENSITY ? 0 : 6;
+        int n = kind == SCN_PRIM_TRIANGLE ? 9 : kind == SCN_PRIM_DENSITY ? 0
+                : kind == SCN_PRIM_CONE ? SCN_CONE_VALUES : 6;
         for (int k = 0; k < n; k++)
             prim = fmax(prim, fabs(s->prims[i].v[k]));
     }
@@ -185,6 +186,22 @@ static void pov_prim(FILE *f, const struct sd_scene *s, const struct sd_prim *p,
         fprintf(f, "\n");
         break;
     }
+    case SCN_PRIM_CONE:
+        /* POV-Ray's cone and cylinder: capped unless open, as ours */
+        if (v[3] == v[7]) {
+            fprintf(f, "cylinder { ");
+            pov_vec(f, v);
+            fprintf(f, ", ");
+            pov_vec(f, v + 4);
+            fprintf(f, ", %.9g%s\n", v[3], p->capped ? "" : " open");
+        } else {
+            fprintf(f, "cone { ");
+            pov_vec(f, v);
+            fprintf(f, ", %.9g, ", v[3]);
+            pov_vec(f, v + 4);
+            fprintf(f, ", %.9g%s\n", v[7], p->capped ? "" : " open");
+        }
+        break;
     default:
         fprintf(f, "blob { threshold %.9g\n", v[0]);
         for (int i = 0; i < p->count; i++) {

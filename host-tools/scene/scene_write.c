@@ -152,6 +152,16 @@ static void wr_prim(FILE *f, const struct sd_scene *s, const struct sd_prim *p, 
         wr_vec(f, " max", hi, 3);
         break;
     }
+    case SCN_PRIM_CONE: /* a cylinder when its radii are the same */
+        fprintf(f, "%s { material %s", v[3] == v[7] ? "cylinder" : "cone", mat);
+        wr_vec(f, " base", v, 3);
+        if (v[3] != v[7])
+            wr_vec(f, " base_radius", v + 3, 1);
+        wr_vec(f, " apex", v + 4, 3);
+        wr_vec(f, v[3] == v[7] ? " radius" : " apex_radius", v + 7, 1);
+        if (!p->capped)
+            fprintf(f, " open");
+        break;
     default:
         fprintf(f, "density { material %s", mat);
         wr_vec(f, " threshold", v, 1);

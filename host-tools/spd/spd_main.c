@@ -188,11 +188,16 @@ static int spd_write(const char *out, const char *text, size_t len)
 
 static void spd_say(const struct spd_opts *o, const struct spd_made *m)
 {
-    long spheres = 0;
-    for (int i = 0; i < m->s.n_prims; i++)
+    long spheres = 0, cones = 0;
+    for (int i = 0; i < m->s.n_prims; i++) {
         spheres += m->s.prims[i].kind == SCN_PRIM_ELLIPSOID;
-    fprintf(stderr, "links1-spd: %s %ld -> %s: %ld spheres, %ld triangles\n", o->db->name,
-            o->size, o->out, spheres, (long)m->s.n_prims - spheres);
+        cones += m->s.prims[i].kind == SCN_PRIM_CONE;
+    }
+    fprintf(stderr, "links1-spd: %s %ld -> %s: %ld spheres, %ld triangles", o->db->name,
+            o->size, o->out, spheres, (long)m->s.n_prims - spheres - cones);
+    if (cones)
+        fprintf(stderr, ", %ld cones and cylinders", cones);
+    fprintf(stderr, "\n");
     fprintf(stderr, "links1-spd: its NFF: %d lights, %ld spheres, %ld polygons, %ld patches, "
             "%ld cones", m->info.lights, m->info.spheres, m->info.polygons, m->info.patches,
             m->info.cones);

@@ -134,7 +134,9 @@ dbs=${BENCH_SCALE_DBS:-"balls-1 balls-2 balls-3 balls-4 tetra-1 tetra-2 tetra-3 
 for db in $dbs; do
     scene="$TMP/$db.scn"
     "$SPD" "${db%-*}" "${db#*-}" -o "$scene" --size "$SIZE" 2>"$TMP/spd.log"
-    objs=$(sed -n 's/.*: \([0-9]*\) spheres, \([0-9]*\) triangles/\1 + \2/p' "$TMP/spd.log" | bc)
+    # spheres, triangles and (when there are any) cones and cylinders
+    objs=$(sed -n 's/.*: \([0-9]*\) spheres, \([0-9]*\) triangles\(, \([0-9]*\) cones.*\)\{0,1\}$/\1 + \2 + 0\4/p' \
+        "$TMP/spd.log" | bc)
     read -r ns _ t bt ptests < <(host "$scene")
     pt=$(pov "$scene")
     ratio=$(awk -v a="$t" -v b="$pt" 'BEGIN { if (b + 0 > 0) printf "%.2f", a / b; else print "-" }')

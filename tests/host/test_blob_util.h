@@ -13,8 +13,10 @@
 #include "render/clip.h"
 
 /* The scenes every test here runs over: the demo and the paper-like ones
- * (city is written by `make` into build/scenes/: tb_scene_path). */
-static const char *const tb_scenes[] = {"demo", "city", "glass", "molecule", "anim"};
+ * (city is written by `make` into build/scenes/: tb_scene_path), and the
+ * cones and cylinders of cones.scn. */
+static const char *const tb_scenes[] = {"demo", "city", "glass", "molecule", "anim",
+                                        "cones"};
 #define TB_SCENE_COUNT (sizeof tb_scenes / sizeof tb_scenes[0])
 
 /* Where scene NAME is: build/scenes/ for those `make` writes from

@@ -172,15 +172,18 @@ static void test_official_counts(void)
         /* every SPD database has at most 7 lights: none merged */
         CHECK_EQ_INT(s.n_lights, want[i].lights);
         CHECK_EQ_INT(info.lights_merged, 0);
-        /* spheres stay spheres, every other entity became triangles */
-        long tri = 0, sph = 0;
+        /* spheres stay spheres and cones open cones, polygons and
+         * patches became triangles */
+        long tri = 0, sph = 0, cone = 0;
         for (int p = 0; p < s.n_prims; p++) {
             sph += s.prims[p].kind == SCN_PRIM_ELLIPSOID;
             tri += s.prims[p].kind == SCN_PRIM_TRIANGLE;
+            cone += s.prims[p].kind == SCN_PRIM_CONE && s.prims[p].capped == SCN_CONE_OPEN;
         }
         CHECK_EQ_INT(sph, want[i].spheres);
+        CHECK_EQ_INT(cone, want[i].cones);
         CHECK_EQ_INT(tri, info.triangles);
-        CHECK_EQ_INT(sph + tri, s.n_prims);
+        CHECK_EQ_INT(sph + tri + cone, s.n_prims);
         sd_free(&s);
     }
 }
@@ -248,13 +251,13 @@ static void test_issue_numbers(void)
     CHECK_NEAR(s.view.eye[1], -1.6, 1e-12);
     CHECK_NEAR(s.view.eye[2], 1.7, 1e-12);
     sd_free(&s);
-    /* rings 1: 30 spheres, 30 cylinders of NFF_CONE_SIDES quads */
+    /* rings 1: 30 spheres, 30 open cylinders */
     scene_of("rings", 1, &s);
-    CHECK_EQ_INT(s.n_prims, 2 + 30 + 30 * 2 * NFF_CONE_SIDES);
+    CHECK_EQ_INT(s.n_prims, 2 + 30 + 30);
     sd_free(&s);
     /* tree 2: 7 spheres, 7 cones */
     scene_of("tree", 2, &s);
-    CHECK_EQ_INT(s.n_prims, 2 + 7 + 7 * 2 * NFF_CONE_SIDES);
+    CHECK_EQ_INT(s.n_prims, 2 + 7 + 7);
     CHECK_EQ_INT(s.n_lights, 7);
     sd_free(&s);
 }
@@ -460,15 +463,35 @@ static void test_polygons_patches_cones(void)
     CHECK_NEAR(s.prims[0].n[4], -0.6, 1e-15);
     CHECK_NEAR(s.prims[1].n[7], 0.6, 1e-15);
     sd_free(&s);
-    /* a cylinder: 2 NFF_CONE_SIDES triangles, each corner at its radius
-     * from the axis; a cone to a point: NFF_CONE_SIDES */
+    /* a cylinder and a cone to a point: the renderer's cones, open ("the
+     * surface exists without endcaps"), y negated; both radii negative
+     * (seen from inside) the same cone */
+    CHECK(read_nff("f 1 1 1 1 0 0 0 0\nc 1 2 3 0.5 1 2 5 0.5\nc 0 0 0 1 2 0 0 0\n"
+                   "c 0 0 0 -1 2 0 0 -0.5\n", &s, &info, err, sizeof err) == 0);
+    CHECK_EQ_INT(info.cones, 3);
+    CHECK_EQ_INT(info.triangles, 0);
+    CHECK_EQ_INT(s.n_prims, 3);
+    static const double want[3][SCN_CONE_VALUES] = {
+        {1, -2, 3, 0.5, 1, -2, 5, 0.5}, {0, 0, 0, 1, 2, 0, 0, 0}, {0, 0, 0, 1, 2, 0, 0, 0.5}};
+    for (int p = 0; p < 3 && p < s.n_prims; p++) {
+        CHECK_EQ_INT(s.prims[p].kind, SCN_PRIM_CONE);
+        CHECK_EQ_INT(s.prims[p].capped, SCN_CONE_OPEN);
+        for (int k = 0; k < SCN_CONE_VALUES; k++)
+            CHECK_NEAR(s.prims[p].v[k], want[p][k], 0);
+    }
+    sd_free(&s);
+    /* paper mode keeps the paper's four primitives: 16 quads round the
+     * cylinder, 16 triangles round the cone (one end a point), no caps
+     * (open), each corner at its radius from the axis */
     CHECK(read_nff("f 1 1 1 1 0 0 0 0\nc 1 2 3 0.5 1 2 5 0.5\nc 0 0 0 1 2 0 0 0\n", &s, &info,
                    err, sizeof err) == 0);
-    CHECK_EQ_INT(info.cones, 2);
-    CHECK_EQ_INT(s.n_prims, 3 * NFF_CONE_SIDES);
-    for (int p = 0; p < 2 * NFF_CONE_SIDES; p++)
+    sd_paper_apply(&s);
+    CHECK_EQ_INT(s.paper_faceted, 2);
+    CHECK_EQ_INT(s.n_prims, 3 * SD_CONE_SIDES);
+    for (int p = 0; p < 2 * SD_CONE_SIDES && p < s.n_prims; p++)
         for (int k = 0; k < 3; k++) {
             const double *v = s.prims[p].v + 3 * k;
+            CHECK_EQ_INT(s.prims[p].kind, SCN_PRIM_TRIANGLE);
             CHECK_NEAR(hypot(v[0] - 1, v[1] + 2), 0.5, 1e-12);
             CHECK(v[2] == 3 || v[2] == 5);
         }

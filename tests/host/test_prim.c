@@ -293,6 +293,153 @@ static void test_aabb(void)
     CHECK(!prim_aabb_hit(&b, &r, NUM_ZERO, num_from_double(100)));   /* misses the corner */
 }
 
+/* prim 0's answer for r with a ray error of `origin` (eye units) and its
+ * uncertain flag. */
+static double hit_uncertain(const render_frame_t *f, ray_t r, double origin, int *uncertain)
+{
+    ray_error_t e = {num_from_double(origin), NUM_ZERO};
+    num_t t;
+    if (!prim_intersect_uncertain(&f->prims[0], &r, &e, NUM_ZERO, num_from_double(100), &t,
+                                  uncertain))
+        return -1;
+    return num_to_double(t);
+}
+
+static void test_cylinder(void)
+{
+    /* radius 1 round the y axis at z = 10, from y = -1 to 1, capped */
+    ts_init(&ts, 8, 8);
+    ts_cone(&ts, 0, 0, ts_v(0, -1, 10), 1, ts_v(0, 1, 10), 1, 1);
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 0, 0, 0, 1), 0, 100), 9.0, TOL);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0.6, 0.5, 0, 0, 0, 1), 0, 100), 10 - 0.8, TOL);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(1.01, 0, 0, 0, 0, 1), 0, 100), -1, 0);     /* beside */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 1.01, 0, 0, 0, 1), 0, 100), -1, 0);     /* above */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(-10, 1.001, 10, 1, 0, 0), 0, 100), -1, 0); /* over the cap */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 10, 1, 0, 0), 0, 100), 1.0, TOL);    /* from inside */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 20, 0, 0, 1), 0, 100), -1, 0);       /* behind */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 0, 0, 0, 1), 0, 8.9), -1, 0);        /* beyond tmax */
+    /* the caps: down the axis onto the top, up from inside to the bottom */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0.3, 5, 10, 0, -1, 0), 0, 100), 4.0, TOL);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0.5, 10, 0, -1, 0), 0, 100), 1.5, TOL);
+    hit_t h = surface_of(f, 0, ray_of(0.3, 5, 10, 0, -1, 0));
+    CHECK_VEC(h.normal, 0, 1, 0, TOL);
+    CHECK_NEAR(num_to_double(h.curvature), 0, 0);
+    h = surface_of(f, 0, ray_of(0, 0, 0, 0, 0, 1));
+    CHECK_VEC(h.normal, 0, 0, -1, TOL);
+    CHECK_NEAR(num_to_double(h.v), 0.5, TOL); /* halfway along */
+    CHECK_NEAR(num_to_double(h.curvature), 1.0, 0.01); /* radius 1 */
+    h = surface_of(f, 0, ray_of(0.6, 0.5, 0, 0, 0, 1));
+    CHECK_VEC(h.normal, 0.6, 0, -0.8, TOL);
+    /* its box: the two end discs */
+    CHECK_NEAR(num_to_double(f->prims[0].bounds.lo.y), -1.0, 0.01);
+    CHECK_NEAR(num_to_double(f->prims[0].bounds.hi.x), 1.0, 0.01);
+    CHECK_NEAR(num_to_double(f->prims[0].bounds.lo.z), 9.0, 0.01);
+}
+
+static void test_cylinder_open(void)
+{
+    ts_init(&ts, 8, 8);
+    ts_cone(&ts, 0, 0, ts_v(0, -1, 10), 1, ts_v(0, 1, 10), 1, 0);
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0.3, 5, 10, 0, -1, 0), 0, 100), -1, 0); /* down the tube */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 10, 1, 0, 0), 0, 100), 1.0, TOL); /* its inside */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 0, 0, 0, 1), 0, 100), 9.0, TOL);
+    /* into the open top at a slant: through the mouth onto the far wall */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 3, 8, 0, -1, 1), 0, 100), 3 * sqrt(2.0), TOL);
+    hit_t h = surface_of(f, 0, ray_of(0, 0, 10, 1, 0, 0));
+    CHECK_VEC(h.normal, 1, 0, 0, TOL); /* outward: the tracer turns it to the ray */
+}
+
+static void test_cone(void)
+{
+    /* radius 1 at y = -1 to a point at y = 1, at z = 10: radius (1 - y) / 2 */
+    ts_init(&ts, 8, 8);
+    ts_cone(&ts, 0, 0, ts_v(0, -1, 10), 1, ts_v(0, 1, 10), 0, 1);
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 0, 0, 0, 1), 0, 100), 9.5, TOL);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0.9, 0, 0, 0, 1), 0, 100), 9.95, TOL); /* near the apex */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0.3, 0.5, 0, 0, 0, 1), 0, 100), -1, 0);   /* beside it */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 1.2, 0, 0, 0, 1), 0, 100), -1, 0);     /* over the point */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 5, 10, 0, -1, 0), 0, 100), 4.0, TOL);  /* onto the point */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0.5, -5, 10, 0, 1, 0), 0, 100), 4.0, TOL); /* the base */
+    /* the side's normal at (0, 0, 9.5): (0, h rho, -0.5) = (0, 0.25, -0.5) */
+    hit_t h = surface_of(f, 0, ray_of(0, 0, 0, 0, 0, 1));
+    CHECK_VEC(h.normal, 0, 0.25 / sqrt(0.3125), -0.5 / sqrt(0.3125), TOL);
+    h = surface_of(f, 0, ray_of(0, 0.9, 0, 0, 0, 1));
+    CHECK(num_gt(h.curvature, NUM_C(8))); /* radius 0.05 there */
+    CHECK_NEAR(num_to_double(vec3_length(h.normal)), 1.0, TOL);
+    h = surface_of(f, 0, ray_of(0.5, -5, 10, 0, 1, 0));
+    CHECK_VEC(h.normal, 0, -1, 0, TOL);
+    /* the larger end at the apex: the same cone turned over */
+    ts_init(&ts, 8, 8);
+    ts_cone(&ts, 0, 0, ts_v(0, -1, 10), 0.5, ts_v(0, 1, 10), 1, 1);
+    f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 0, 0, 0, 1), 0, 100), 9.25, TOL);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, -0.9, 0, 0, 0, 1), 0, 100), 10 - 0.525, TOL);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0.7, 5, 10, 0, -1, 0), 0, 100), 4.0, TOL); /* the top */
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0.7, -5, 10, 0, 1, 0), 0, 100), 4.8, TOL); /* the side */
+}
+
+static void test_cone_transformed(void)
+{
+    /* the capped cylinder turned 90 degrees about z: its axis along x */
+    ts_init(&ts, 8, 8);
+    uint16_t c = ts_cluster(&ts, 0, ts_rotate_z(0, 1, 0, 0, 10));
+    ts_cone(&ts, c, 0, ts_v(0, -1, 0), 1, ts_v(0, 1, 0), 1, 1);
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0, 0, 0, 0, 1), 0, 100), 9.0, TOL);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(1.5, 0, 0, 0, 0, 1), 0, 100), -1, 0);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(0, 0.6, 0, 0, 0, 1), 0, 100), 9.2, TOL);
+    CHECK_NEAR(hit_t_of(f, 0, ray_of(-10, 0.2, 10, 1, 0, 0), 0, 100), 9.0, TOL); /* a cap */
+    hit_t h = surface_of(f, 0, ray_of(-10, 0.2, 10, 1, 0, 0));
+    CHECK_VEC(h.normal, -1, 0, 0, TOL);
+    CHECK_NEAR(num_to_double(f->clusters[c].bounds.lo.x), -1.0, 0.01);
+    CHECK_NEAR(num_to_double(f->clusters[c].bounds.hi.y), 1.0, 0.01);
+}
+
+static void test_cone_uncertain(void)
+{
+    /* rays within their error (1e-3) of the side's silhouette or a cap's
+     * rim are flagged; clear hits and misses are not */
+    ts_init(&ts, 8, 8);
+    ts_cone(&ts, 0, 0, ts_v(0, -1, 10), 1, ts_v(0, 1, 10), 1, 1);
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    int u = -1;
+    CHECK_NEAR(hit_uncertain(f, ray_of(0, 0, 0, 0, 0, 1), 1e-3, &u), 9.0, TOL);
+    CHECK_EQ_INT(u, 0);
+    CHECK_NEAR(hit_uncertain(f, ray_of(1.2, 0, 0, 0, 0, 1), 1e-3, &u), -1, 0);
+    CHECK_EQ_INT(u, 0);
+    CHECK_NEAR(hit_uncertain(f, ray_of(1.0002, 0, 0, 0, 0, 1), 1e-3, &u), -1, 0); /* grazes */
+    CHECK_EQ_INT(u, 1);
+    hit_uncertain(f, ray_of(0.9998, 0, 0, 0, 0, 1), 1e-3, &u);
+    CHECK_EQ_INT(u, 1);
+    hit_uncertain(f, ray_of(0.9995, 5, 10, 0, -1, 0), 1e-3, &u); /* the cap's rim */
+    CHECK_EQ_INT(u, 1);
+    hit_uncertain(f, ray_of(0.5, 5, 10, 0, -1, 0), 1e-3, &u);
+    CHECK_EQ_INT(u, 0);
+    hit_uncertain(f, ray_of(0, 1.0003, 0, 0, 0, 1), 1e-3, &u); /* past the rim */
+    CHECK_EQ_INT(u, 1);
+}
+
 int main(void)
 {
     printf("# num_t = %s\n", NUM_NAME);
@@ -306,5 +453,10 @@ int main(void)
     RUN(test_density);
     RUN(test_density_steps);
     RUN(test_aabb);
+    RUN(test_cylinder);
+    RUN(test_cylinder_open);
+    RUN(test_cone);
+    RUN(test_cone_transformed);
+    RUN(test_cone_uncertain);
     return check_exit();
 }

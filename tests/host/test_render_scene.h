@@ -150,6 +150,18 @@ static inline void ts_box(test_scene_t *t, uint16_t cluster, uint16_t material, 
     p->shape.box.half = half;
 }
 
+/* A cone from base (radius r0) to apex (radius r1), capped or open. */
+static inline void ts_cone(test_scene_t *t, uint16_t cluster, uint16_t material, vec3_t base,
+                           double r0, vec3_t apex, double r1, int capped)
+{
+    scene_prim_t *p = ts_prim(t, SCENE_PRIM_CONE, cluster, material);
+    p->shape.cone.end[0] = base;
+    p->shape.cone.end[1] = apex;
+    p->shape.cone.radius[0] = num_from_double(r0);
+    p->shape.cone.radius[1] = num_from_double(r1);
+    p->shape.cone.capped = (uint8_t)capped;
+}
+
 /* Density sphere of n components (centres, radii d, weights b). */
 static inline void ts_density(test_scene_t *t, uint16_t cluster, uint16_t material, double threshold,
                               int n, const double (*comp)[5])

@@ -528,6 +528,50 @@ static uint8_t *load_text(const char *text, scene_t *s)
     return buf;
 }
 
+/* A cylinder and an open cone: their ends, radii (times 2^unit_exp) and
+ * caps loaded; caps not 0 or 1, a negative radius and ends that meet
+ * refused by name. */
+static void test_cone(void)
+{
+    static const char *text =
+        "camera { eye 0 1 -5 look_at 0 0 0 up 0 1 0 fov 60 }\n"
+        "light point { position 1 2 3 }\n"
+        "material m { }\n"
+        "cylinder { material m base 0 -1 0 apex 0 1 0 radius 0.5 }\n"
+        "cone { material m base 1 0 0 base_radius 0.25 apex 2 0 0 apex_radius 0.75 open }\n";
+    scene_t s;
+    uint8_t *buf = load_text(text, &s);
+    if (!buf)
+        return;
+    CHECK_EQ_INT(s.prim_count, 2);
+    double k = ldexp(1.0, s.unit_exp);
+    const scene_prim_t *c = &s.prims[0], *d = &s.prims[1];
+    CHECK_EQ_INT(c->kind, SCENE_PRIM_CONE);
+    CHECK_EQ_INT(c->shape.cone.capped, 1);
+    CHECK_NEAR(num_to_double(c->shape.cone.end[0].y), -k, 0);
+    CHECK_NEAR(num_to_double(c->shape.cone.radius[1]), 0.5 * k, 0);
+    CHECK_EQ_INT(d->kind, SCENE_PRIM_CONE);
+    CHECK_EQ_INT(d->shape.cone.capped, 0);
+    CHECK_NEAR(num_to_double(d->shape.cone.end[1].x), 2 * k, 0);
+    CHECK_NEAR(num_to_double(d->shape.cone.radius[0]), 0.25 * k, 0);
+    size_t len = 0;
+    struct sd_scene sd;
+    char err[SD_ERR_MAX];
+    uint8_t *b = NULL;
+    CHECK_EQ_INT(sd_parse_text("t.scn", text, &sd, err, sizeof err), 0);
+    CHECK_EQ_INT(sd_compile(&sd, &b, &len, err, sizeof err), 0);
+    sd_free(&sd);
+    const uint32_t V = SCN_PRIM_VALUES;
+    expect_field(b, len, SCN_SEC_PRIMS, SCN_PRIM_CAPS, 2, 4, SCENE_LOAD_ERR_VALUE,
+                 "prim 0: a cone's caps");
+    expect_field(b, len, SCN_SEC_PRIMS, V + 12, f32_bits(-0.5f), 4, SCENE_LOAD_ERR_VALUE,
+                 "prim 0: a cone's radius is negative");
+    expect_field(b, len, SCN_SEC_PRIMS, V + 20, f32_bits(-1.0f), 4, SCENE_LOAD_ERR_VALUE,
+                 "or its ends meet");
+    free(b);
+    free(buf);
+}
+
 /* The tolerances do not follow a far light or eye beyond 8 times the
  * geometry (scene_t.tol_exp): a light at 200 beside spheres reaching 2.5
  * ([2, 4)) scales the lengths by 2^-4 (200 to 12.5) and the tolerances by
@@ -727,5 +771,6 @@ int main(void)
     RUN(test_cluster_scale_follows);
     RUN(test_small_arena);
     RUN(test_view_keys);
+    RUN(test_cone);
     return check_exit();
 }

@@ -233,6 +233,48 @@ static void test_errors_name_line_and_column(void)
                  "u must be -1000..1000, not 2000");
 }
 
+/* cylinder and cone: their values as NFF's c (base, radius, apex,
+ * radius), capped unless open, a cone's apex_radius 0 unless given; what
+ * is wrong refused by name. */
+static void test_cylinder_and_cone(void)
+{
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    int rc = sd_parse_text("t.scn",
+                           HEAD "cylinder { material m base 0 0 0 apex 0 2 0 radius 0.5 }\n"
+                           "cone { material m base 1 0 0 base_radius 0.4 apex 1 1 0 open }\n"
+                           "cone { material m base 2 0 0 base_radius 0.2 apex 2 1 0 "
+                           "apex_radius 0.3 }\n", &s, err, sizeof err);
+    CHECK_EQ_INT(rc, 0);
+    if (rc != 0) {
+        check_fail(__FILE__, __LINE__, err);
+        return;
+    }
+    static const double want[3][SCN_CONE_VALUES] = {
+        {0, 0, 0, 0.5, 0, 2, 0, 0.5}, {1, 0, 0, 0.4, 1, 1, 0, 0}, {2, 0, 0, 0.2, 2, 1, 0, 0.3}};
+    CHECK_EQ_INT(s.n_prims, 3);
+    for (int p = 0; p < 3 && p < s.n_prims; p++) {
+        CHECK_EQ_INT(s.prims[p].kind, SCN_PRIM_CONE);
+        CHECK_EQ_INT(s.prims[p].capped, p == 1 ? SCN_CONE_OPEN : SCN_CONE_CAPPED);
+        for (int k = 0; k < SCN_CONE_VALUES; k++)
+            CHECK_NEAR(s.prims[p].v[k], want[p][k], 0);
+    }
+    sd_free(&s);
+    EXPECT_ERROR(HEAD "cylinder { material m base 0 0 0 apex 0 1 0 }\n", 3, 45, "needs a radius");
+    EXPECT_ERROR(HEAD "cone { material m base 0 0 0 apex 0 1 0 }\n", 3, 41,
+                 "needs a base_radius");
+    EXPECT_ERROR(HEAD "cone { material m base 0 0 0 base_radius 1 }\n", 3, 44,
+                 "needs a base and an apex");
+    EXPECT_ERROR(HEAD "cylinder { material m base 1 2 3 apex 1 2 3 radius 1 }\n", 3, 54,
+                 "a cone of zero height");
+    EXPECT_ERROR(HEAD "cone { material m base 0 0 0 base_radius 0 apex 0 1 0 }\n", 3, 55,
+                 "radii are both 0");
+    EXPECT_ERROR(HEAD "cone { material m base 0 0 0 base_radius -1 apex 0 1 0 }\n", 3, 42,
+                 "base_radius must be 0..1e+08");
+    EXPECT_ERROR(HEAD "cylinder { material m base 0 0 0 apex 0 1 0 radius 1 apex_radius 2 }\n",
+                 3, 54, "unknown cylinder property 'apex_radius'");
+}
+
 /* A 2x1 binary PPM at path: texels a and b (R, G, B each). */
 static int put_ppm2(const char *path, const uint8_t a[3], const uint8_t b[3])
 {
@@ -462,5 +504,6 @@ int main(void)
     RUN(test_deep_nesting_refused);
     RUN(test_view_keys);
     RUN(test_normal_and_attribute_maps);
+    RUN(test_cylinder_and_cone);
     return check_exit();
 }
