@@ -215,7 +215,7 @@ struct link_progress {
 };
 
 /* CMD_RENDER result. */
-#define LINK_RENDER_STATS_SIZE 116
+#define LINK_RENDER_STATS_SIZE 124
 struct link_render_stats {
     uint32_t frame, ncs, areas;
     uint32_t prepare_ms;   /* the DM preparing this frame (0: prepared while
@@ -231,6 +231,7 @@ struct link_render_stats {
     uint32_t dc_full_waits;     /* times an NC found the DC FIFO full */
     uint32_t escalated_pixels;  /* pixels traced again in the wide arithmetic
                                    (LINK_RENDER_ESCALATE) */
+    uint64_t primary_hit;       /* camera rays that hit something */
 };
 
 /* CMD_FRAME_PULL result: u16 width, u16 height, u32 crc (of the r,g,b
@@ -322,6 +323,7 @@ static inline void link_render_stats_put(uint8_t *p, const struct link_render_st
         wire_put_u64(p + 20 + 8 * i, r[i]);
     for (int i = 0; i < 8; i++)
         wire_put_u32(p + 84 + 4 * i, b[i]);
+    wire_put_u64(p + 116, s->primary_hit);
 }
 static inline void link_render_stats_get(const uint8_t *p, struct link_render_stats *s)
 {
@@ -336,6 +338,7 @@ static inline void link_render_stats_get(const uint8_t *p, struct link_render_st
         *r[i] = wire_get_u64(p + 20 + 8 * i);
     for (int i = 0; i < 8; i++)
         *b[i] = wire_get_u32(p + 84 + 4 * i);
+    s->primary_hit = wire_get_u64(p + 116);
 }
 
 #endif

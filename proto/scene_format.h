@@ -202,7 +202,14 @@ enum scn_section {
  * camera turns the rays; a frame whose keyed cluster maps are those of the
  * frame before keeps its primitives (render_frame_t.world, --world-space). */
 #define SCN_OPT_WORLD_SPACE 0x0400u
-#define SCN_OPT_KNOWN 0x07ffu
+/* SPD_RULES: Eric Haines's rules for timing the Standard Procedural
+ * Databases (--spd-rules, docs/results/spd.md): camera rays at the pixel
+ * corners, (width+1) x (height+1) of them, each pixel the mean of its
+ * four; a transmitting surface spawns a reflected ray too, whatever its
+ * specular coefficient.  The host tools set the depth, min_weight and the
+ * other rules beside it. */
+#define SCN_OPT_SPD_RULES 0x0800u
+#define SCN_OPT_KNOWN 0x0fffu
 
 /* ------------------------------------------------------- LIGHTS record */
 #define SCN_LIGHT_SIZE 48

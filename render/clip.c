@@ -4,10 +4,18 @@
 
 #include <string.h>
 
+/* Two rows of corner rays, with room to align them. */
+static size_t clip_corner_bytes(const render_frame_t *frame)
+{
+    if (!frame->options.spd_rules)
+        return 0;
+    return 2 * sizeof(render_corner_t) * ((size_t)frame->width + 1) + _Alignof(render_corner_t);
+}
+
 size_t render_clip_bytes(const render_frame_t *frame)
 {
     /* ylist and xlist, one entry per cluster each */
-    return 2 * sizeof(uint32_t) * (size_t)frame->cluster_count;
+    return 2 * sizeof(uint32_t) * (size_t)frame->cluster_count + clip_corner_bytes(frame);
 }
 
 render_status_t render_clip_init(render_clip_t *clip, const render_frame_t *frame, void *memory,
@@ -20,6 +28,11 @@ render_status_t render_clip_init(render_clip_t *clip, const render_frame_t *fram
     clip->ylist = memory;
     clip->xlist = clip->ylist + frame->cluster_count;
     clip->x = -1;
+    if (frame->options.spd_rules) {
+        uintptr_t at = (uintptr_t)(clip->xlist + frame->cluster_count);
+        at = (at + _Alignof(render_corner_t) - 1) & ~(uintptr_t)(_Alignof(render_corner_t) - 1);
+        clip->corners = (render_corner_t *)at;
+    }
     return RENDER_OK;
 }
 
@@ -164,6 +177,66 @@ render_status_t render_area(render_ctx_t *ctx, render_clip_t *clip, const render
     return render_area_marked(ctx, clip, area, opt, out, NULL, NULL);
 }
 
+/* The corner rays of row cy, columns x0..x1 (inclusive), into row[0..]:
+ * searched as the pixels would be (in_tree: by screen; clipping: the X
+ * window, or the whole Y list), counted where the area owns them (own_x1:
+ * the last column's too). */
+static void clip_corner_row(render_ctx_t *ctx, render_clip_t *clip, uint32_t cy, uint32_t x0,
+                            uint32_t x1, int own_x1, int own_row, int in_tree, int clipping,
+                            const render_clip_options_t *opt, render_corner_t *row)
+{
+    const render_frame_t *f = ctx->frame;
+    for (uint32_t cx = x0; cx <= x1; cx++) {
+        int counted = own_row && (cx < x1 || own_x1);
+        render_corner_t *c = &row[cx - x0];
+        if (in_tree) {
+            render_corner(ctx, cx, cy, RENDER_CORNER_SCREEN, NULL, 0, counted, c);
+        } else if (!clipping) {
+            render_corner(ctx, cx, cy, RENDER_CORNER_TREE, NULL, 0, counted, c);
+        } else if (opt->x_clip) {
+            uint32_t n = render_clip_x(clip, (int32_t)(cx < f->width ? cx : cx - 1u));
+            render_corner(ctx, cx, cy, RENDER_CORNER_LIST, clip->xlist, n, counted, c);
+        } else {
+            render_corner(ctx, cx, cy, RENDER_CORNER_LIST, clip->ylist, clip->ycount, counted, c);
+        }
+    }
+}
+
+/* render_area under the SPD rules: the top row of corners, then per pixel
+ * row the row below and the pixels between the two. */
+static render_status_t clip_area_corners(render_ctx_t *ctx, render_clip_t *clip,
+                                         const render_area_t *area,
+                                         const render_clip_options_t *opt, int in_tree,
+                                         int clipping, rgb8_t *out, void (*mark)(void *arg),
+                                         void *arg)
+{
+    const render_frame_t *f = ctx->frame;
+    if (clip->frame != f || !clip->corners)
+        return RENDER_ERR_AREA;
+    uint32_t x1 = area->x + area->w, y1 = area->y + area->h;
+    int own_x1 = x1 == f->width, own_y1 = y1 == f->height;
+    render_corner_t *top = clip->corners, *bottom = clip->corners + f->width + 1;
+    clip_corner_row(ctx, clip, area->y, area->x, x1, own_x1, 1, in_tree, clipping, opt, top);
+    for (uint32_t py = area->y; py < y1; py++) {
+        clip_corner_row(ctx, clip, py + 1, area->x, x1, own_x1, py + 1 < y1 || own_y1, in_tree,
+                        clipping, opt, bottom);
+        rgb8_t *row = out + (size_t)(py - area->y) * area->w;
+        for (uint32_t px = area->x; px < x1; px++) {
+            uint32_t i = px - area->x;
+            render_corner_t c[4] = {top[i], top[i + 1], bottom[i], bottom[i + 1]};
+            row[i] = render_pixel_of_corners(ctx, px, py, c);
+            if (opt->progress)
+                *opt->progress += 1;
+            if (mark)
+                mark(arg);
+        }
+        render_corner_t *t = top;
+        top = bottom;
+        bottom = t;
+    }
+    return RENDER_OK;
+}
+
 render_status_t render_area_marked(render_ctx_t *ctx, render_clip_t *clip,
                                    const render_area_t *area, const render_clip_options_t *opt,
                                    rgb8_t *out, void (*mark)(void *arg), void *arg)
@@ -182,6 +255,8 @@ render_status_t render_area_marked(render_ctx_t *ctx, render_clip_t *clip,
     }
     if (mark)
         mark(arg);
+    if (ctx->options.spd_rules)
+        return clip_area_corners(ctx, clip, area, opt, in_tree, clipping, out, mark, arg);
     for (uint32_t py = area->y; py < area->y + area->h; py++) {
         rgb8_t *row = out + (size_t)(py - area->y) * area->w;
         for (uint32_t px = area->x; px < area->x + area->w; px++) {

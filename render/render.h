@@ -262,6 +262,7 @@ typedef struct {
                                   again in the wide arithmetic (ctx.escalate);
                                   precision_lost_pixels then counts those
                                   the wide one lost too */
+    uint64_t primary_hit;   /* camera rays that hit something */
 } render_stats_t;
 
 typedef struct {
@@ -372,7 +373,9 @@ size_t render_scene_index_bytes_layout(const scene_t *scene, const render_layout
 
 void render_ctx_init(render_ctx_t *ctx, const render_frame_t *frame);
 
-/* Colour of pixel (x, y), y = 0 the top row. */
+/* Colour of pixel (x, y), y = 0 the top row.  With options.spd_rules the
+ * mean of its four corner rays, traced here (render_area shares them
+ * between neighbours). */
 rgb8_t render_pixel(render_ctx_t *ctx, uint32_t x, uint32_t y);
 
 /* Same, with the primary ray testing only the clusters listed (their own
@@ -390,6 +393,36 @@ rgb8_t render_pixel_clipped(render_ctx_t *ctx, uint32_t x, uint32_t y,
  * it does not grow with the scene as lists of clusters do.  The colour is
  * render_pixel's (without the hierarchy, it is render_pixel). */
 rgb8_t render_pixel_screen(render_ctx_t *ctx, uint32_t x, uint32_t y);
+
+/* options.spd_rules: the camera ray through corner (cx, cy) of the pixel
+ * grid (cx 0..width, cy 0..height), its colour and whether it lost
+ * precision; render_area keeps two rows of them (render/clip.c). */
+typedef struct {
+    rgb_t colour;
+    uint8_t lost;
+} render_corner_t;
+
+/* How render_corner looks for a corner ray's nearest hit. */
+typedef enum {
+    RENDER_CORNER_TREE,   /* the hierarchy from its root (render_pixel's) */
+    RENDER_CORNER_SCREEN, /* by screen, as render_pixel_screen does, at
+                             the pixel whose top-left corner it is (the
+                             last row and column: the pixel before) */
+    RENDER_CORNER_LIST,   /* only the clusters listed (render_pixel_clipped's) */
+} render_corner_search_t;
+
+/* The corner ray (cx, cy) traced into *out.  counted 0: ctx->stats stay as
+ * they were (a corner an area shares with its neighbour, counted by the
+ * area that owns it), so that the counts over a frame are each corner's
+ * once whatever the areas. */
+void render_corner(render_ctx_t *ctx, uint32_t cx, uint32_t cy, render_corner_search_t search,
+                   const uint32_t *clusters, uint32_t count, int counted, render_corner_t *out);
+
+/* Pixel (x, y) from its four corners c[0..3] (top-left, top-right,
+ * bottom-left, bottom-right): their mean colour, lost precision when one
+ * did (escalated then as render_pixel would be). */
+rgb8_t render_pixel_of_corners(render_ctx_t *ctx, uint32_t x, uint32_t y,
+                               const render_corner_t c[4]);
 
 /* Pixels x0..x1-1 of row y into out[0..x1-x0-1]. */
 void render_span(render_ctx_t *ctx, uint32_t y, uint32_t x0, uint32_t x1, rgb8_t *out);

@@ -303,6 +303,11 @@ typedef struct {
                                instead; a frame whose cluster maps did not
                                change keeps the frame before's primitives
                                (SCN_OPT_WORLD_SPACE, render/render.h) */
+    uint8_t spd_rules;      /* 1: Haines's SPD rules (SCN_OPT_SPD_RULES): a
+                               pixel is the mean of the camera rays through
+                               its four corners (render_area traces each
+                               corner once), and a transmitting surface
+                               spawns a reflected ray whatever its src */
     uint16_t density_steps; /* equal steps of a density sphere's root finder,
                                SCN_MIN_DENSITY_STEPS..SCN_MAX_DENSITY_STEPS
                                (render/prim.c; render_prim_t.density_steps) */

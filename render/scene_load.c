@@ -361,6 +361,7 @@ static scene_load_status_t load_view(struct load *L, scene_t *s)
     s->options.world_space = (flags & SCN_OPT_WORLD_SPACE) != 0;
     s->options.ambient_shadowed = (flags & SCN_OPT_AMBIENT_SHADOWED) != 0;
     s->options.shadow_tint = (flags & SCN_OPT_UNTINTED_SHADOWS) == 0;
+    s->options.spd_rules = (flags & SCN_OPT_SPD_RULES) != 0;
     /* eye == look_at and up parallel to the view are refused by
      * render_prepare (RENDER_ERR_CAMERA), which does that geometry anyway. */
     return SCENE_LOAD_OK;

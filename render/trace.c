@@ -660,7 +660,10 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
     num_t w_mirror = num_mul(weight, tir ? num_add(src, trc) : src);
     rgb_t reflected = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     vec3_t outside = vec3_madd(hit->point, n, ctx->frame->ray_epsilon);
-    int mirror = can_recurse && (num_gt(src, NUM_ZERO) || tir);
+    /* under Haines's SPD rules a transmitting surface spawns a reflected
+     * ray too (its share src may be 0) */
+    int mirror = can_recurse && (num_gt(src, NUM_ZERO) || tir ||
+                                 (ctx->options.spd_rules && num_gt(trc, NUM_ZERO)));
     if (mirror && !trace_worth(ctx, w_mirror)) {
         ctx->stats.weight_cut++; /* too faint to matter: not traced */
     } else if (mirror) {
@@ -728,18 +731,14 @@ typedef enum {
     PIXEL_SEARCH_LIST,   /* only the clusters of the area's clipping list (clip, clip_count) */
 } pixel_search_t;
 
-/* Not inlined: its frame (the camera ray's hit and more) is gone before an
- * escalation traces the pixel again on the same stack. */
-static __attribute__((noinline)) rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x,
-                                                         uint32_t y, pixel_search_t search,
-                                                         const uint32_t *clip,
-                                                         uint32_t clip_count)
+/* The colour along the camera ray through screen point (sx, sy), screen
+ * coordinates in [-1, 1]; pixel: the pixel a search by screen tests.
+ * ctx->pixel_lost says whether it lost precision. */
+static rgb_t render_eye(render_ctx_t *ctx, num_t sx, num_t sy, pixel_search_t search,
+                        const int32_t pixel[2], const uint32_t *clip, uint32_t clip_count)
 {
     const render_frame_t *f = ctx->frame;
-    /* through the pixel centre: screen coordinates in [-1, 1] scaled by
-     * the half extents of the view at z = 1 */
-    num_t sx = num_sub(num_from_ratio((int32_t)(2 * x + 1), f->width), NUM_ONE);
-    num_t sy = num_sub(NUM_ONE, num_from_ratio((int32_t)(2 * y + 1), f->height));
+    /* scaled by the half extents of the view at z = 1 */
     ray_t ray;
     vec3_t through = vec3_make(num_mul(sx, f->screen_half_w), num_mul(sy, f->screen_half_h), NUM_ONE);
     ray_error_t err = {NUM_ZERO, TRACE_DIR_ROUND}; /* from the eye, exactly */
@@ -761,15 +760,22 @@ static __attribute__((noinline)) rgb8_t render_pixel_impl(render_ctx_t *ctx, uin
      * counted apart from the secondary rays of its shading */
     uint64_t boxes = ctx->stats.box_tests, prims = ctx->stats.prim_tests;
     hit_t hit;
-    const int32_t pixel[2] = {(int32_t)x, (int32_t)y};
     int found = trace_nearest(ctx, &ray, &err, NUM_ZERO,
                               search == PIXEL_SEARCH_LIST ? clip : NULL, clip_count,
                               search == PIXEL_SEARCH_SCREEN ? pixel : NULL, &hit);
     ctx->stats.primary_box_tests += ctx->stats.box_tests - boxes;
     ctx->stats.primary_prim_tests += ctx->stats.prim_tests - prims;
+    ctx->stats.primary_hit += found != 0;
     rgb_t c = found ? trace_shade(ctx, &ray, &err, &hit, 0, NUM_ONE) : f->scene->background;
     if (rgb_is_sat(c))
         ctx->pixel_lost = 1;
+    return c;
+}
+
+/* A pixel's colour c as bytes, counted (and painted, with mark_lost) when
+ * it lost precision and no escalation settles it. */
+static rgb8_t render_pixel_out(render_ctx_t *ctx, rgb_t c)
+{
     rgb8_t out = {num_to_u8(c.r), num_to_u8(c.g), num_to_u8(c.b)};
     if (ctx->pixel_lost && ctx->escalate) /* settled by the caller: render_pixel_settled */
         return out;
@@ -779,6 +785,66 @@ static __attribute__((noinline)) rgb8_t render_pixel_impl(render_ctx_t *ctx, uin
             return RENDER_LOST_COLOUR;
     }
     return out;
+}
+
+static rgb8_t render_corners_mean(render_ctx_t *ctx, const render_corner_t c[4]);
+
+/* Not inlined: its frame (the camera ray's hit and more) is gone before an
+ * escalation traces the pixel again on the same stack. */
+static __attribute__((noinline)) rgb8_t render_pixel_impl(render_ctx_t *ctx, uint32_t x,
+                                                         uint32_t y, pixel_search_t search,
+                                                         const uint32_t *clip,
+                                                         uint32_t clip_count)
+{
+    const render_frame_t *f = ctx->frame;
+    if (ctx->options.spd_rules) { /* its four corners, none shared */
+        render_corner_t c[4];
+        for (uint32_t k = 0; k < 4; k++)
+            render_corner(ctx, x + (k & 1), y + (k >> 1), RENDER_CORNER_TREE, NULL, 0, 1, &c[k]);
+        return render_corners_mean(ctx, c);
+    }
+    /* through the pixel centre */
+    num_t sx = num_sub(num_from_ratio((int32_t)(2 * x + 1), f->width), NUM_ONE);
+    num_t sy = num_sub(NUM_ONE, num_from_ratio((int32_t)(2 * y + 1), f->height));
+    const int32_t pixel[2] = {(int32_t)x, (int32_t)y};
+    return render_pixel_out(ctx, render_eye(ctx, sx, sy, search, pixel, clip, clip_count));
+}
+
+void render_corner(render_ctx_t *ctx, uint32_t cx, uint32_t cy, render_corner_search_t search,
+                   const uint32_t *clusters, uint32_t count, int counted, render_corner_t *out)
+{
+    const render_frame_t *f = ctx->frame;
+    num_t sx = num_sub(num_from_ratio((int32_t)(2 * cx), f->width), NUM_ONE);
+    num_t sy = num_sub(NUM_ONE, num_from_ratio((int32_t)(2 * cy), f->height));
+    /* the corner lies in the closed square of this pixel, which every
+     * screen rectangle holding the corner holds (render/prepare.c widens
+     * them by a pixel) */
+    const int32_t pixel[2] = {(int32_t)(cx < f->width ? cx : cx - 1u),
+                              (int32_t)(cy < f->height ? cy : cy - 1u)};
+    pixel_search_t how = search == RENDER_CORNER_LIST ? PIXEL_SEARCH_LIST
+                         : search == RENDER_CORNER_SCREEN && ctx->options.use_hierarchy
+                             ? PIXEL_SEARCH_SCREEN
+                             : PIXEL_SEARCH_TREE;
+    uint32_t none = 0; /* a non-NULL empty list: clipping that kept nothing */
+    render_stats_t before;
+    if (!counted)
+        before = ctx->stats;
+    out->colour = render_eye(ctx, sx, sy, how, pixel, clusters ? clusters : &none,
+                             clusters ? count : 0);
+    out->lost = ctx->pixel_lost;
+    if (!counted)
+        ctx->stats = before;
+}
+
+/* The mean of a pixel's four corners, its loss theirs. */
+static rgb8_t render_corners_mean(render_ctx_t *ctx, const render_corner_t c[4])
+{
+    rgb_t sum = rgb_add(rgb_add(c[0].colour, c[1].colour), rgb_add(c[2].colour, c[3].colour));
+    ctx->pixel_lost = c[0].lost || c[1].lost || c[2].lost || c[3].lost;
+    rgb_t mean = rgb_scale(sum, NUM_C(0.25));
+    if (rgb_is_sat(mean))
+        ctx->pixel_lost = 1;
+    return render_pixel_out(ctx, mean);
 }
 
 /* 1 when a and b differ by more than RENDER_CHECK_LOST_STEPS in a channel. */
@@ -809,6 +875,12 @@ static rgb8_t render_pixel_settled(render_ctx_t *ctx, uint32_t x, uint32_t y, rg
     if (!ctx->options.check_lost)
         return wide;
     return lost && ctx->options.mark_lost ? RENDER_LOST_COLOUR : c;
+}
+
+rgb8_t render_pixel_of_corners(render_ctx_t *ctx, uint32_t x, uint32_t y,
+                               const render_corner_t c[4])
+{
+    return render_pixel_settled(ctx, x, y, render_corners_mean(ctx, c));
 }
 
 rgb8_t render_pixel(render_ctx_t *ctx, uint32_t x, uint32_t y)

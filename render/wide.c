@@ -119,6 +119,7 @@ void RENDER_WIDE(wide_stats_add)(const void *ctx_mem, render_stats_t *into)
 {
     const render_stats_t *s = &((const render_ctx_t *)ctx_mem)->stats;
     into->primary += s->primary;
+    into->primary_hit += s->primary_hit;
     into->shadow += s->shadow;
     into->reflection += s->reflection;
     into->refraction += s->refraction;

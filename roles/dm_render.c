@@ -331,6 +331,7 @@ static void dm_render_result(uint16_t cmd, uint32_t frame, uint32_t prepare_ms,
     gigs_stats_add(&rs, q + GIGS_RESULT_FIXED);
     s.prepare_ms = prepare_ms;
     s.primary = rs.primary;
+    s.primary_hit = rs.primary_hit;
     s.shadow = rs.shadow;
     s.reflection = rs.reflection;
     s.refraction = rs.refraction;

@@ -31,8 +31,8 @@
 #include "render/render.h"
 
 /* Render statistics on the serial lines: the nine counters, the lost and
- * the escalated pixels of render_stats_t. */
-#define GIGS_STATS_SIZE 80
+ * the escalated pixels of render_stats_t, then the camera rays that hit. */
+#define GIGS_STATS_SIZE 88
 
 static inline void gigs_stats_put(uint8_t *p, const render_stats_t *s)
 {
@@ -43,6 +43,7 @@ static inline void gigs_stats_put(uint8_t *p, const render_stats_t *s)
         wire_put_u64(p + 8 * i, v[i]);
     wire_put_u32(p + 72, s->precision_lost_pixels);
     wire_put_u32(p + 76, s->escalated_pixels);
+    wire_put_u64(p + 80, s->primary_hit);
 }
 
 /* Adds the counters at p to *s. */
@@ -55,6 +56,7 @@ static inline void gigs_stats_add(render_stats_t *s, const uint8_t *p)
         *v[i] += wire_get_u64(p + 8 * i);
     s->precision_lost_pixels += wire_get_u32(p + 72);
     s->escalated_pixels += wire_get_u32(p + 76);
+    s->primary_hit += wire_get_u64(p + 80);
 }
 
 /* MSG_RENDER_DONE on success: u32 ncs, u32 areas, u32 render_ms,

@@ -37,6 +37,8 @@ BENCHES += tests/bench/bench_link_noise.sh
 BENCHES += tests/bench/bench_board_scale.sh
 # The DM in eye space and in world space (--world-space) on an animation whose camera moves.
 BENCHES += tests/bench/bench_world.sh
+# Issue 39: links1 ref against POV-Ray 3.7 given the NFF's own primitives on the seven SPD databases.
+BENCHES += tests/bench/bench_spd_pov.sh
 
 # links1 compare --flags: precision and recall of a render's flags.
 test_image_flags_SRCS := tests/host/test_image_flags.c host-tools/image/image_compare.c

@@ -982,6 +982,12 @@ static int render_one_frame(struct board *b, const struct render_opts *o, struct
     if (rc == 0 && !o->board.quiet)
         render_summary(path, &s, &img, &a, o->scene.check_lost,
                        (double)(board_now_ms() - t0) / 1000.0, r->upload_ms, pull_ms);
+    if (rc == 0 && o->scene.spd_rules)
+        /* preprocessing: the upload with the DM's load (told with the
+         * first frame) and the DM's preparation; tracing: the RC's render */
+        scene_opts_spd_line(s.primary_hit, s.reflection, s.refraction, s.shadow,
+                            (double)(r->upload_ms + (long long)s.prepare_ms) / 1000.0,
+                            (double)s.render_ms / 1000.0);
     run->traced_w = (uint32_t)img.width;
     run->traced_h = (uint32_t)img.height;
     run->traced_bytes = s.blob_bytes;

@@ -27,6 +27,7 @@
 #include "host-tools/scene/scene_opts.h"
 #include "host-tools/ref/ref_opts.h"
 #include "render/blob.h"
+#include "render/clip.h"
 #include "render/precision.h"
 #include "render/render.h"
 #include "render/scene_load.h"
@@ -168,6 +169,46 @@ static int ref_wide_frame(const char *in, struct ref_wide *w, long frame, render
     return 0;
 }
 
+/* Every row of the image through render_span. */
+static void ref_trace_rows(render_ctx_t *ctx, struct image *img, rgb8_t *row)
+{
+    for (uint32_t y = 0; y < (uint32_t)img->height; y++) {
+        render_span(ctx, y, 0, (uint32_t)img->width, row);
+        for (int x = 0; x < img->width; x++) {
+            uint8_t *px = img->rgb + 3 * ((size_t)y * (size_t)img->width + (size_t)x);
+            px[0] = row[x].r;
+            px[1] = row[x].g;
+            px[2] = row[x].b;
+        }
+    }
+}
+
+_Static_assert(sizeof(rgb8_t) == 3, "an image's rows are packed r,g,b bytes");
+
+/* --spd-rules: the whole image as one area (render_area), whose corner
+ * rays are each traced and counted once, searched by screen as an NC's
+ * are by default.  0, or -1 after saying why. */
+static int ref_trace_corners(render_ctx_t *ctx, const render_frame_t *f, struct image *img)
+{
+    size_t bytes = render_clip_bytes(f);
+    void *mem = malloc(bytes ? bytes : 1);
+    render_clip_t clip;
+    if (!mem || render_clip_init(&clip, f, mem, bytes) != RENDER_OK) {
+        fprintf(stderr, "links1 ref: out of memory for the corner rays\n");
+        free(mem);
+        return -1;
+    }
+    render_area_t all = {0, 0, f->width, f->height};
+    render_clip_options_t opt = {.y_clip = 1, .x_clip = 1, .lists = 0};
+    render_status_t rs = render_area(ctx, &clip, &all, &opt, (rgb8_t *)img->rgb);
+    free(mem);
+    if (rs != RENDER_OK) {
+        fprintf(stderr, "links1 ref: the corner rays: %s\n", render_status_name(rs));
+        return -1;
+    }
+    return 0;
+}
+
 /* One frame to out (an image file), or to film when it is not NULL; wide
  * (when not NULL): escalating into it. */
 static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena,
@@ -205,14 +246,14 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     struct timespec t0, t1, c0, c1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c0);
-    for (uint32_t y = 0; y < scene->height; y++) {
-        render_span(&ctx, y, 0, scene->width, row);
-        for (int x = 0; x < img.width; x++) {
-            uint8_t *px = img.rgb + 3 * ((size_t)y * (size_t)img.width + (size_t)x);
-            px[0] = row[x].r;
-            px[1] = row[x].g;
-            px[2] = row[x].b;
+    if (ctx.options.spd_rules) {
+        if (ref_trace_corners(&ctx, frame_data, &img) != 0) {
+            free(row);
+            image_free(&img);
+            return -1;
         }
+    } else {
+        ref_trace_rows(&ctx, &img, row);
     }
     clock_gettime(CLOCK_MONOTONIC, &t1);
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
@@ -247,6 +288,9 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
                 (unsigned)ctx.stats.precision_lost_pixels,
                 (unsigned long long)ctx.stats.box_tests, (unsigned long long)ctx.stats.prim_tests,
                 secs, cpu);
+    if (rc == 0 && ctx.options.spd_rules) /* preprocessing: the CPU time before tracing */
+        scene_opts_spd_line(ctx.stats.primary_hit, ctx.stats.reflection, ctx.stats.refraction,
+                            ctx.stats.shadow, (double)c0.tv_sec + 1e-9 * (double)c0.tv_nsec, cpu);
     static int lost_told; /* the meaning, once a command */
     if (rc == 0 && ctx.stats.precision_lost_pixels && !lost_told) {
         lost_told = 1;

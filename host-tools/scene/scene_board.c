@@ -24,7 +24,8 @@ int sd_board_bytes(const uint8_t *buf, size_t len, struct sd_board_bytes *out, c
     }
     out->prims = shape.prim_count;
     out->clusters = shape.cluster_count;
-    render_frame_t frame = {.cluster_count = shape.cluster_count};
+    render_frame_t frame = {.cluster_count = shape.cluster_count, .width = shape.width,
+                            .options = shape.options};
     out->nc_working = render_clip_bytes(&frame);
     return 0;
 }

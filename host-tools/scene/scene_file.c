@@ -25,6 +25,7 @@ void scene_file_opts_init(struct scene_file_opts *o)
     o->check_lost = 0;
     o->world_space = 0;
     o->paper = 0;
+    o->spd_rules = 0;
     o->machine = MACHINE_VIRT;
     memset(o->textures_from, 0, sizeof o->textures_from);
 }
@@ -179,6 +180,20 @@ static uint32_t scene_opts_bit(uint32_t flags, uint32_t bit, int on)
     return on ? flags | bit : flags & ~bit;
 }
 
+/* Haines's rules for timing the SPD (docs/results/spd.md): 512x512, depth
+ * 5 with the camera ray's (max_depth 4 here), every ray spawned
+ * (min_weight 0), transmitted rays bent by Snell's law and none past the
+ * depth limit, shadow rays; the corner rays and the reflected rays of
+ * transmitters are the renderer's (SCN_OPT_SPD_RULES). */
+static void scene_opts_spd_rules(struct sd_scene *s)
+{
+    s->view.width = s->view.height = 512;
+    s->view.max_depth = 4;
+    s->view.min_weight = 0;
+    s->view.flags |= SCN_OPT_SPD_RULES;
+    s->view.flags &= ~(SCN_OPT_REFRACTIONLESS | SCN_OPT_NO_REFRACTION | SCN_OPT_NO_SHADOWS);
+}
+
 void scene_opts_apply(const struct scene_file_opts *o, struct sd_scene *s)
 {
     if (o->paper && !s->paper)
@@ -187,6 +202,8 @@ void scene_opts_apply(const struct scene_file_opts *o, struct sd_scene *s)
         fprintf(stderr, "%s: %d cones/cylinders faceted (%d sides round: the paper's four "
                 "primitives)\n", o->paper ? "--paper" : "paper mode", s->paper_faceted,
                 SD_CONE_SIDES);
+    if (o->spd_rules)
+        scene_opts_spd_rules(s);
     if (o->width) {
         s->view.width = o->width;
         s->view.height = o->height;
@@ -211,7 +228,7 @@ void scene_opts_apply(const struct scene_file_opts *o, struct sd_scene *s)
 const char *scene_opts_model_given(const struct scene_file_opts *o)
 {
     return o->min_weight >= 0 ? "--min-weight" : o->density_steps >= 0 ? "--density-steps"
-           : o->paper ? "--paper" : NULL;
+           : o->paper ? "--paper" : o->spd_rules ? "--spd-rules" : NULL;
 }
 
 const char *scene_opts_given(const struct scene_file_opts *o)
@@ -225,7 +242,7 @@ const char *scene_opts_given(const struct scene_file_opts *o)
            : o->mark_lost ? "--mark-lost"
            : o->check_lost ? "--check-lost"
            : o->world_space ? "--world-space"
-           : o->paper ? "--paper" : NULL;
+           : o->paper ? "--paper" : o->spd_rules ? "--spd-rules" : NULL;
 }
 
 /* A word for a switch that is given. */
@@ -272,6 +289,7 @@ int scene_opts_words(const struct scene_file_opts *o, enum scene_opts_for use,
     scene_opts_switch(w, &n, all && o->check_lost, "--check-lost");
     scene_opts_switch(w, &n, all && o->world_space, "--world-space");
     scene_opts_switch(w, &n, o->paper, "--paper");
+    scene_opts_switch(w, &n, o->spd_rules, "--spd-rules");
     for (int i = 0; i < SD_TEXTURES_FROM_MAX && o->textures_from[i]; i++)
         scene_opts_pair(w, &n, "--textures-from", o->textures_from[i]);
     w->w[n] = NULL;

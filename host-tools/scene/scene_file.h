@@ -24,6 +24,10 @@ struct scene_file_opts {
                            (SCN_OPT_WORLD_SPACE) */
     int paper;          /* --paper: 1 sets paper mode (sd_paper_apply) before the
                            other changes, which win over it */
+    int spd_rules;      /* --spd-rules: 1 sets Haines's SPD rules (SCN_OPT_SPD_RULES,
+                           512x512, depth 4 after the camera ray's, min_weight 0,
+                           refraction on, refractionless off, shadows on) before
+                           the other changes, which win over it */
     int machine;        /* the machine it is for (proto/machines.h): its limits */
     const char *textures_from[SD_TEXTURES_FROM_MAX + 1]; /* --textures-from DIR: more
                            directories a map's image may come from, NULL-ended */
@@ -86,7 +90,7 @@ const char *scene_opts_model_given(const struct scene_file_opts *o);
  * those that change what is judged (not --size, which the pre-render
  * sets, nor --mark-lost, --check-lost and --world-space). */
 enum scene_opts_for { SCENE_OPTS_ALL, SCENE_OPTS_PRE_RENDER };
-#define SCENE_OPTS_MAX_WORDS (2 * (12 + SD_TEXTURES_FROM_MAX) + 1)
+#define SCENE_OPTS_MAX_WORDS (2 * (13 + SD_TEXTURES_FROM_MAX) + 1)
 struct scene_opts_words {
     const char *w[SCENE_OPTS_MAX_WORDS]; /* NULL-ended */
     char size[32], depth[16], weight[40], steps[16];

@@ -36,6 +36,12 @@ const struct cli_optdef scene_optdefs[] = {
     {"textures-from", "DIR", SCENE_OPT_TEXTURES_FROM,
      "a map's image may also come from below DIR (up to 4; not /, a\n"
      "directory just under / or your home)"},
+    {"spd-rules", NULL, SCENE_OPT_SPD_RULES,
+     "Haines's rules for timing the SPD: 512x512, rays at the pixel\n"
+     "corners (each pixel the mean of its four), depth 5 counting the\n"
+     "camera ray, no adaptive depth, refraction by Snell, shadow rays;\n"
+     "prints 'spd: eye_hit N reflect N refract N shadow N preprocess S\n"
+     "trace S' (an option given beside it wins)"},
     CLI_OPTDEF_END,
 };
 
@@ -78,9 +84,19 @@ int scene_opts_take(struct scene_file_opts *o, const struct cli *c, int code)
     case SCENE_OPT_CHECK_LOST: o->check_lost = 1; return 1;
     case SCENE_OPT_WORLD_SPACE: o->world_space = 1; return 1;
     case SCENE_OPT_PAPER: o->paper = 1; return 1;
+    case SCENE_OPT_SPD_RULES: o->spd_rules = 1; return 1;
     }
     if (code < SCENE_OPT_SIZE || code > SCENE_OPT_TEXTURES_FROM)
         return 0;
     return scene_opts_value(o, c, code) == 0 ? 1 : -1;
 }
 
+
+void scene_opts_spd_line(uint64_t eye_hit, uint64_t reflect, uint64_t refract, uint64_t shadow,
+                         double preprocess, double trace)
+{
+    printf("spd: eye_hit %llu reflect %llu refract %llu shadow %llu preprocess %.3f trace %.3f\n",
+           (unsigned long long)eye_hit, (unsigned long long)reflect,
+           (unsigned long long)refract, (unsigned long long)shadow, preprocess, trace);
+    fflush(stdout);
+}

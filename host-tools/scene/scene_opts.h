@@ -7,6 +7,8 @@
 #ifndef LINKS1_HOST_SCENE_OPTS_H
 #define LINKS1_HOST_SCENE_OPTS_H
 
+#include <stdint.h>
+
 #include "host-tools/opts/cli_opt.h"
 #include "host-tools/scene/scene_file.h"
 
@@ -23,6 +25,7 @@ enum scene_opt_code {
     SCENE_OPT_WORLD_SPACE,
     SCENE_OPT_PAPER,
     SCENE_OPT_TEXTURES_FROM,
+    SCENE_OPT_SPD_RULES,
 };
 
 /* The definitions, ending with CLI_OPTDEF_END. */
@@ -31,5 +34,11 @@ extern const struct cli_optdef scene_optdefs[];
 /* The scene option cli_next returned as code taken into o: 1 taken, 0
  * not a scene option, -1 after saying what is wrong with its value. */
 int scene_opts_take(struct scene_file_opts *o, const struct cli *c, int code);
+
+/* --spd-rules: the one line of the counts of Haines's table and the
+ * times apart, in seconds, on stdout:
+ *   spd: eye_hit N reflect N refract N shadow N preprocess S trace S */
+void scene_opts_spd_line(uint64_t eye_hit, uint64_t reflect, uint64_t refract, uint64_t shadow,
+                         double preprocess, double trace);
 
 #endif

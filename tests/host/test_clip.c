@@ -492,6 +492,73 @@ static void test_clip_memory_and_errors(void)
     tc_close(&t);
 }
 
+/* The whole image as one area: its corner rays each traced once. */
+static rgb8_t *tc_render_whole(tc_scene_t *t, const render_clip_options_t *opt,
+                               render_stats_t *stats)
+{
+    const render_frame_t *f = t->f;
+    rgb8_t *img = calloc((size_t)f->width * f->height, sizeof *img);
+    render_ctx_t ctx;
+    render_ctx_init(&ctx, f);
+    render_area_t all = {0, 0, f->width, f->height};
+    CHECK_EQ_INT(render_area(&ctx, &t->clip, &all, opt, img), RENDER_OK);
+    *stats = ctx.stats;
+    return img;
+}
+
+/* The SPD rules' counts agree: camera rays, hits and the rays they spawn. */
+static int tc_same_rays(const render_stats_t *a, const render_stats_t *b)
+{
+    return a->primary == b->primary && a->primary_hit == b->primary_hit &&
+           a->shadow == b->shadow && a->reflection == b->reflection &&
+           a->refraction == b->refraction;
+}
+
+/* options.spd_rules: one area over the whole screen traces (w+1) x (h+1)
+ * corner rays; areas of TC_TILE, clipped by lists, in the tree or not at
+ * all, give its image and count its rays exactly (each corner once over
+ * the frame), and render_pixel (four corners of its own a pixel) its
+ * image with four camera rays a pixel. */
+static void test_spd_rules_corners(void)
+{
+    const char *names[] = {"demo", "glass"};
+    for (int s = 0; s < 2; s++) {
+        tc_scene_t t;
+        CHECK(tc_open(&t, names[s]));
+        if (!t.blob)
+            continue;
+        ((render_frame_t *)t.f)->options.spd_rules = 1; /* the test's own copy */
+        free(t.clip_mem);
+        size_t bytes = render_clip_bytes(t.f), n = (size_t)t.f->width * t.f->height;
+        t.clip_mem = malloc(bytes);
+        CHECK_EQ_INT(render_clip_init(&t.clip, t.f, t.clip_mem, bytes), RENDER_OK);
+        render_clip_options_t tree = {1, 1, NULL, 0}, lists = {1, 1, NULL, 1}, none = {0, 0, NULL, 0};
+        render_stats_t whole_st, st;
+        rgb8_t *whole = tc_render_whole(&t, &tree, &whole_st);
+        CHECK_EQ_INT(whole_st.primary, (uint64_t)(t.f->width + 1) * (t.f->height + 1));
+        CHECK(whole_st.primary_hit > 0 && whole_st.primary_hit < whole_st.primary);
+        const render_clip_options_t *modes[3] = {&tree, &lists, &none};
+        for (int m = 0; m < 3; m++) {
+            rgb8_t *tiled = tc_render_areas(&t, &t.f->options, modes[m], &st);
+            if (!tb_same(whole, tiled, n) || !tc_same_rays(&whole_st, &st))
+                printf("%s: areas (mode %d) differ from the whole screen's\n", names[s], m);
+            CHECK(tb_same(whole, tiled, n));
+            CHECK(tc_same_rays(&whole_st, &st));
+            free(tiled);
+        }
+        rgb8_t *plain = tb_render_plain(t.f, &st);
+        CHECK(tb_same(whole, plain, n));
+        CHECK_EQ_INT(st.primary, 4 * (uint64_t)n);
+        printf("%s: %llu corner rays, %llu hit; %llu reflected, %llu refracted, %llu shadow\n",
+               names[s], (unsigned long long)whole_st.primary,
+               (unsigned long long)whole_st.primary_hit, (unsigned long long)whole_st.reflection,
+               (unsigned long long)whole_st.refraction, (unsigned long long)whole_st.shadow);
+        free(plain);
+        free(whole);
+        tc_close(&t);
+    }
+}
+
 int main(void)
 {
     RUN(test_clip_y_matches_brute_force);
@@ -500,5 +567,6 @@ int main(void)
     RUN(test_clipped_render_same_image);
     RUN(test_area_switches_same_image);
     RUN(test_clip_memory_and_errors);
+    RUN(test_spd_rules_corners);
     return check_exit();
 }

@@ -11,10 +11,10 @@
  * two fields swapped or overlapping would not come back equal. */
 static void render_link_stats_round_trip(void)
 {
-    /* 5 u32, 8 u64, 7 u32 */
-    CHECK_EQ_INT(LINK_RENDER_STATS_SIZE, 5 * 4 + 8 * 8 + 8 * 4);
+    /* 5 u32, 8 u64, 8 u32, 1 u64 */
+    CHECK_EQ_INT(LINK_RENDER_STATS_SIZE, 5 * 4 + 8 * 8 + 8 * 4 + 8);
     struct link_render_stats s = {1, 64, 368, 20, 3230, 1ull << 40, 2, 3, 4, 5, 6, 7, 8,
-                                  9, 10, 11, 12, 13, 14, 15, 16};
+                                  9, 10, 11, 12, 13, 14, 15, 16, (1ull << 33) + 17};
     uint8_t buf[LINK_RENDER_STATS_SIZE + 1];
     buf[LINK_RENDER_STATS_SIZE] = 0xA5;
     link_render_stats_put(buf, &s);
@@ -31,6 +31,7 @@ static void render_link_stats_round_trip(void)
     CHECK(t.blob_bytes == 14);
     CHECK(t.primary == 1ull << 40 && t.dc_full_waits == 15 && t.render_ms == 3230);
     CHECK(t.escalated_pixels == 16);
+    CHECK(t.primary_hit == (1ull << 33) + 17);
 }
 
 static void render_link_args_round_trip(void)
@@ -74,8 +75,8 @@ static void render_link_info_and_progress_round_trip(void)
 /* The RC sums each NC's statistics: two NCs' messages add field by field. */
 static void gigs_stats_sum_of_two(void)
 {
-    render_stats_t a = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 0, 0, 11}; /* weight_cut, screen_tests: host only */
-    render_stats_t b = {100, 200, 300, 400, 500, 600, 700, 800, 900, 1000, 0, 0, 1100};
+    render_stats_t a = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 0, 0, 11, 12}; /* weight_cut, screen_tests: host only */
+    render_stats_t b = {100, 200, 300, 400, 500, 600, 700, 800, 900, 1000, 0, 0, 1100, 1200};
     uint8_t pa[GIGS_STATS_SIZE], pb[GIGS_STATS_SIZE];
     gigs_stats_put(pa, &a);
     gigs_stats_put(pb, &b);
@@ -87,7 +88,7 @@ static void gigs_stats_sum_of_two(void)
           sum.refraction == 404 && sum.transmission == 505 && sum.box_tests == 606 &&
           sum.prim_tests == 707 && sum.primary_box_tests == 808 &&
           sum.primary_prim_tests == 909 && sum.precision_lost_pixels == 1010 &&
-          sum.escalated_pixels == 1111);
+          sum.escalated_pixels == 1111 && sum.primary_hit == 1212);
 }
 
 /* The failure report: counts, both maps and the listed areas come back;
