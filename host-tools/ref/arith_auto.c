@@ -321,8 +321,7 @@ static int auto_host_render(const struct auto_run *r, const struct auto_render *
     extra[e++] = img;
     if (how->marking == AUTO_MARKED)
         extra[e++] = "--mark-lost";
-    if (how->escalation == AUTO_ESCALATED)
-        extra[e++] = "--escalate";
+    extra[e++] = how->escalation == AUTO_ESCALATED ? "--escalate" : "--no-escalate";
     extra[e] = NULL;
     char *argv[AUTO_MAX_ARGS];
     if (auto_argv(r, 0, prog, argv, size, sizeof size, extra) != 0)
@@ -476,8 +475,7 @@ static int auto_board_cost(const struct auto_run *r, struct auto_cand *c,
     const char *extra[16] = {"-o", img, "--arith", c->arith, "--ncs", ncs, "--machine", m->name,
                              "--count-insns", "--quiet"};
     int e = 10;
-    if (c->escalation == AUTO_ESCALATED)
-        extra[e++] = "--escalate";
+    extra[e++] = c->escalation == AUTO_ESCALATED ? "--escalate" : "--no-escalate";
     for (const char *const *w = k.w; *w; w++) /* the model's words, NULL-ended */
         extra[e++] = *w;
     extra[e] = NULL;
