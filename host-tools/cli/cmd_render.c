@@ -1002,6 +1002,9 @@ static int render_one_frame(struct board *b, const struct render_opts *o, struct
     int rc = render_sink_put(k, path, &img);
     run->wall.write += board_now_ms() - t2;
     /* The scene's upload time is told with its first frame. */
+    if (rc == 0 && o->board.verbose && (a.flags & LINK_RENDER_ESCALATE))
+        printf("links1 render: frame %u: %u pixels escalated to double\n", s.frame,
+               s.escalated_pixels);
     if (rc == 0 && !o->board.quiet)
         render_summary(path, &s, &img, &a, (double)(board_now_ms() - t0) / 1000.0, r->upload_ms, pull_ms);
     run->traced_w = (uint32_t)img.width;

@@ -171,7 +171,7 @@ static int ref_wide_frame(const char *in, struct ref_wide *w, long frame, render
  * (when not NULL): escalating into it. */
 static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena,
                             size_t mark, long frame, const char *out, int ppm, struct film *film,
-                            struct ref_wide *wide)
+                            struct ref_wide *wide, int verbose)
 {
     arena_release_to(arena, mark);
     render_frame_t *frame_data;
@@ -217,6 +217,9 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
     if (wide)
         RENDER_WIDE(wide_stats_add)(wide->ctx, &ctx.stats); /* the escalations' rays */
+    if (wide && verbose)
+        fprintf(stderr, "links1 ref: frame %ld: %u pixels escalated to double\n", frame,
+                (unsigned)ctx.stats.escalated_pixels);
     double secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
     double cpu = (double)(c1.tv_sec - c0.tv_sec) + 1e-9 * (double)(c1.tv_nsec - c0.tv_nsec);
     char err[SD_ERR_MAX];
@@ -251,7 +254,7 @@ enum ref_escalation { REF_ESC_DEFAULT, REF_ESC_ON, REF_ESC_OFF };
 
 struct ref_args {
     const char *in, *out;
-    int ppm, many, escalate; /* escalate: settled (ref_escalation_settle) */
+    int ppm, many, verbose, escalate; /* escalate: settled (ref_escalation_settle) */
     enum ref_escalation escalation;
     long first, last;
     struct scene_file_opts scene;
@@ -263,6 +266,7 @@ static int ref_take(struct ref_args *a, const struct cli *c, int code)
     switch (code) {
     case 'o': a->out = c->arg; return 0;
     case REF_OPT_PPM: a->ppm = 1; return 0;
+    case REF_OPT_VERBOSE: a->verbose = 1; return 0;
     case REF_OPT_ESCALATE:
     case REF_OPT_NO_ESCALATE: {
         enum ref_escalation e = code == REF_OPT_ESCALATE ? REF_ESC_ON : REF_ESC_OFF;
@@ -397,7 +401,7 @@ int main(int argc, char **argv)
         else
             snprintf(path, sizeof path, "%s", out);
         rc = ref_render_frame(in, &scene, &arena, mark, f, path, a.ppm, filming ? &film : NULL,
-                              a.escalate ? &wide : NULL);
+                              a.escalate ? &wide : NULL, a.verbose);
     }
     if (filming && rc == 0 && film_close(&film, err, sizeof err) != 0) {
         fprintf(stderr, "links1 ref: %s\n", err);

@@ -14,6 +14,7 @@ const struct cli_optdef ref_optdefs[] = {
      "does (float and fixed: the default, but with --paper or soft)"},
     {"no-escalate", NULL, REF_OPT_NO_ESCALATE,
      "keep a pixel that lost precision as this arithmetic traced it"},
+    {"verbose", NULL, REF_OPT_VERBOSE, "say how many pixels each frame escalated to double"},
     CLI_OPTDEF_END,
 };
 

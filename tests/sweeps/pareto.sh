@@ -129,6 +129,7 @@ done
 printf 'config\tns_per_pixel\tpsnr_db\tbeyond1_pct\tbeyond2_pct\tlost_pixels\tfront\n' >"$out/pareto.raw"
 for c in "${configs[@]}"; do
     IFS='|' read -r name prog args <<<"$c"
+    [[ $args == *--escalate* ]] || args="$args --no-escalate" # plain: the arithmetic's own
     img=$(image "$name")
     times=()
     for ((r = 0; r < RUNS; r++)); do
@@ -136,7 +137,7 @@ for c in "${configs[@]}"; do
         times+=("$(echo "$log" | sed -nE 's/.*traced in ([0-9.]+) s.*/\1/p')")
     done
     secs=$(printf '%s\n' "${times[@]}" | sort -g | sed -n "$(( (RUNS + 1) / 2 ))p")
-    lost=$(echo "$log" | grep -o '[0-9]* pixels lost' | grep -o '^[0-9]*')
+    lost=$(echo "$log" | grep -o '[0-9]* pixels in doubt' | grep -o '^[0-9]*')
     err=$(errors "$img")
     awk -v n="$name" -v s="$secs" -v p="$pixels" -v e="$err" -v l="$lost" \
         'BEGIN { printf "%s\t%.0f\t%s\t%s\t\n", n, s * 1e9 / p, e, l }' >>"$out/pareto.raw"
@@ -174,6 +175,7 @@ printf 'config\tnc_insns_per_pixel\tpsnr_db\tbeyond1_pct\tbeyond2_pct\tarith\tsa
     >"$out/pareto-board.raw"
 for c in "${bconfigs[@]}"; do
     IFS='|' read -r name arith args host <<<"$c"
+    [[ $args == *--escalate* ]] || args="$args --no-escalate" # plain: the arithmetic's own
     img="$out/board-$(basename "$(image "$name")")"
     log="$img.log"
     if ! timeout "$LIMIT_S" build/links1 render --count-insns "$scene" --arith "$arith" \
