@@ -137,8 +137,9 @@ static const struct cli_optdef render_optdefs[] = {
     {"target-db", "D", RENDER_OPT_TARGET_DB, "--arith auto and --auto: the PSNR to keep (default 40)"},
     {"escalate", NULL, RENDER_OPT_ESCALATE,
      "trace a pixel that lost precision again in double on the same\n"
-     "NC (float or fixed: links1-<arith>-esc.elf); the default there,\n"
-     "but with --paper, --firmware or --board"},
+     "NC (float or fixed: links1-<arith>-esc.elf, or a named board\n"
+     "started in float or fixed); the default there, but with --paper\n"
+     "or --firmware"},
     {"no-escalate", NULL, RENDER_OPT_NO_ESCALATE,
      "keep a pixel that lost precision as the NC's arithmetic traced it"},
     {"balance", "M", RENDER_OPT_BALANCE,
@@ -430,19 +431,22 @@ static int render_take_any(struct render_opts *o, const struct cli *c, int code)
     return render_take(o, c, code);
 }
 
-/* Escalation settled: --escalate's; by default where this command picks
- * the firmware and one that escalates exists (float and fixed, no
- * --firmware, --board or --arith auto, which decides it itself), but not
- * with --paper (a scene's own paper mode clears it: scene_paper_args). */
-static void render_escalation_settle(struct render_opts *o)
+/* Escalation settled: --escalate's; by default where a firmware that
+ * escalates runs: the one this command picks for float and fixed (not
+ * --firmware's, nor with --arith auto, which decides it itself), or a named
+ * board's whose record says so (links1 board start boots it for float and
+ * fixed); never by default with --paper (a scene's own paper mode clears
+ * it: scene_paper_args). */
+static void render_escalation_settle(struct render_opts *o, int named_wide)
 {
     const char *a = o->board.arith;
-    int wide = strcmp(a, "float") == 0 || strcmp(a, "fixed") == 0;
+    int wide = o->board_name ? named_wide
+                             : (strcmp(a, "float") == 0 || strcmp(a, "fixed") == 0) &&
+                                   !o->board.firmware && !o->arith_auto;
     if (o->escalation == RENDER_ESC_ON)
         o->gave |= SCENE_PAPER_GAVE_ESCALATE;
     if (o->escalation == RENDER_ESC_ON ||
-        (o->escalation == RENDER_ESC_DEFAULT && wide && !o->arith_auto && !o->scene.paper &&
-         !o->board.firmware && !o->board_name)) {
+        (o->escalation == RENDER_ESC_DEFAULT && wide && !o->scene.paper)) {
         o->args.flags |= LINK_RENDER_ESCALATE;
         o->board.escalate = 1;
     }
@@ -573,15 +577,20 @@ static int render_outs_check(const struct render_opts *o)
 }
 
 /* The machine the scene is checked against: --machine's, or the named
- * board's.  0, or -1 after saying why. */
+ * board's; then escalation (render_escalation_settle).  0, or -1 after
+ * saying why. */
 static int render_machine_settle(struct render_opts *o)
 {
     o->scene.machine = o->board.machine;
-    if (!o->board_name)
+    int wide = 0;
+    if (!o->board_name) {
+        render_escalation_settle(o, 0);
         return 0;
-    int m = board_named_machine(o->board_name);
+    }
+    int m = board_named_machine(o->board_name, &wide);
     if (m < 0)
         return -1;
+    render_escalation_settle(o, wide);
     if (o->board.machine != MACHINE_VIRT && o->board.machine != m) {
         fprintf(stderr, "links1 render: --machine %s, but board %s is a %s board\n",
                 machine_limits(o->board.machine)->name, o->board_name,
@@ -624,9 +633,8 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
                 "need a board of this command's own, not --board %s\n", o->board_name);
         return -1;
     }
-    render_escalation_settle(o);
     if (render_outs_check(o) != 0 || render_auto_check(o) != 0 ||
-        render_escalate_check(o) != 0 || render_machine_settle(o) != 0)
+        render_machine_settle(o) != 0 || render_escalate_check(o) != 0)
         return -1;
     if (o->resume && !o->many) {
         fprintf(stderr, "links1 render: --resume goes with --frames A:B\n");
