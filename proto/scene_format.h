@@ -100,7 +100,8 @@
                          4: VIEW carries density_steps; 5: MATERIALS 52
                          bytes (normal and attribute maps), map kinds
                          NORMAL and ATTRIBUTE.  VIEW_KEYS (kind 11)
-                         came later without a new version: a file without
+                         and HAZE (kind 12) came later without a new
+                         version: a file without
                          it is what it was, and a loader from before it
                          refuses one with it as an unknown section kind */
 #define SCN_HEADER_SIZE 16
@@ -130,8 +131,9 @@ enum scn_section {
     SCN_SEC_KEYS = 9,      /* keyframes, grouped per cluster, frames rising */
     SCN_SEC_NORMALS = 10,  /* vertex normals of smooth triangles, prims rising */
     SCN_SEC_VIEW_KEYS = 11, /* keyframes of the camera and the lights */
+    SCN_SEC_HAZE = 12,     /* none or one record: the haze */
 };
-#define SCN_SEC_COUNT 11 /* kinds are 1..SCN_SEC_COUNT */
+#define SCN_SEC_COUNT 12 /* kinds are 1..SCN_SEC_COUNT */
 
 /* The board has no trigonometry: every angle is turned into the cosine,
  * tangent or quaternion the renderer needs by the host compiler. */
@@ -386,5 +388,16 @@ enum scn_cone_caps {
 #define SCN_VKEY_COS_INNER 44   /* f32: its cosine is what interpolates */
 #define SCN_VKEY_COS_OUTER 48   /* f32 */
 #define SCN_VKEY_CAMERA 0xffffffffu
+
+/* ----------------------------------------------------------- HAZE record */
+/* haze { colour R G B  distance D } (docs/scene-format.md): a ray's colour
+ * c at distance t from its origin becomes h + (c - h) exp(-t / D), and a
+ * ray that hits nothing takes h, as POV-Ray's fog_type 1.  The record holds
+ * 1/D (the host divides; the board scales it by the scene's power of two):
+ * the loader refuses a D that, scaled, is under 1/SCN_MAX_FACTOR. */
+#define SCN_HAZE_SIZE 16
+#define SCN_HAZE_COLOUR 0       /* 3 x f32 0..1: h */
+#define SCN_HAZE_INV_DISTANCE 12 /* f32 > 0, finite: 1/D per unit of the scene's
+                                    lengths, D in 0 < D <= SCN_MAX_COORD */
 
 #endif

@@ -131,6 +131,11 @@
                                            colour is at most 1: the error it
                                            carries is not counted in its
                                            decisions (render/trace.c) */
+#define RENDER_HAZE_LOST_VALUE (1.0 / 255) /* a pixel whose haze weight's
+                                           uncertainty, times how far its
+                                           colour lies from the haze's and
+                                           the ray's weight, may reach this
+                                           is flagged (render/haze.c) */
 /* Escalating (render/wide.h), a decision counts as lost when it is closer
  * than this many times the ray's error bound.  On demo.scn at 320x240
  * fixed point's bounds missed 10 pixels beyond 2/255 of double, in

@@ -1,7 +1,7 @@
 # render/: the ray tracer, built for every arithmetic; it knows nothing of
 # cores, drivers or messages.
 SHARED_SRCS += render/arena.c render/words.c render/xform.c render/prim.c render/prim_cone.c render/prepare.c \
-	render/shade.c render/maps.c render/trace.c render/precision.c
+	render/shade.c render/maps.c render/trace.c render/precision.c render/haze.c
 # The arena and the word loops know no num_t: one host build for every
 # arithmetic.
 ARITH_FREE_SRCS += render/arena.c render/words.c
@@ -19,6 +19,12 @@ test_shade_float_SRCS := tests/host/test_shade.c
 test_shade_float_ARITH := float
 test_shade_fixed_SRCS := tests/host/test_shade.c
 test_shade_fixed_ARITH := fixed
+test_haze_double_SRCS := tests/host/test_haze.c
+test_haze_double_ARITH := double
+test_haze_float_SRCS := tests/host/test_haze.c
+test_haze_float_ARITH := float
+test_haze_fixed_SRCS := tests/host/test_haze.c
+test_haze_fixed_ARITH := fixed
 test_render_double_SRCS := tests/host/test_render.c
 test_render_double_ARITH := double
 test_render_float_SRCS := tests/host/test_render.c

@@ -39,20 +39,6 @@ typedef struct {
 
 /* The warning colour of options.mark_lost: magenta. */
 #define RENDER_LOST_COLOUR ((rgb8_t){255, 0, 255})
-/* What "N pixels lost precision" means, in the words the host tools print
- * once a command when N > 0 (links1 render, links1 ref). */
-#define RENDER_LOST_MEANING                                                                  \
-    "a pixel that lost precision may be more than 2/255 off the double build's colour: the " \
-    "worst-case error bound of a decision made there exceeds that decision's margin; the "   \
-    "bound is a worst case, so most such pixels are right (--mark-lost paints them, links1 " \
-    "compare --flags scores them against a double render)"
-
-/* The same with --check-lost (render_options_t.check_lost). */
-#define RENDER_CHECKED_MEANING                                                              \
-    "with --check-lost a pixel counts as lost precision only when the double build, "      \
-    "tracing it again, gives a colour more than 2/255 away: every such pixel is that far " \
-    "off, and the image keeps this arithmetic's colours"
-
 /* Axis-aligned box; empty when lo.x > hi.x. */
 typedef struct {
     vec3_t lo, hi;

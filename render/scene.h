@@ -326,6 +326,12 @@ typedef struct {
     scene_camera_t camera;
     rgb_t background;          /* colour of rays that hit nothing */
     render_options_t options;
+    /* Haze (SCN_SEC_HAZE, render/haze.h): when haze is 1 a ray's colour c
+     * at distance t becomes haze_colour + (c - haze_colour) exp(-haze_k t)
+     * and a ray that hits nothing takes haze_colour. */
+    uint8_t haze;
+    rgb_t haze_colour;
+    num_t haze_k;              /* 1/D per stored unit of length */
 
     const scene_light_t *lights;         uint16_t light_count;    /* reloc */
     const scene_material_t *materials;   uint16_t material_count; /* reloc */

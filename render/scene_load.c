@@ -196,7 +196,7 @@ static const uint32_t load_record_size[SCN_SEC_COUNT + 1] = {
     [SCN_SEC_TEXELS] = 1,                   [SCN_SEC_CLUSTERS] = SCN_CLUSTER_SIZE,
     [SCN_SEC_PRIMS] = SCN_PRIM_SIZE,        [SCN_SEC_COMPONENTS] = SCN_COMPONENT_SIZE,
     [SCN_SEC_KEYS] = SCN_KEY_SIZE,          [SCN_SEC_NORMALS] = SCN_NORMALS_SIZE,
-    [SCN_SEC_VIEW_KEYS] = SCN_VKEY_SIZE,
+    [SCN_SEC_VIEW_KEYS] = SCN_VKEY_SIZE,   [SCN_SEC_HAZE] = SCN_HAZE_SIZE,
 };
 
 static const uint32_t load_count_limit[SCN_SEC_COUNT + 1] = {
@@ -205,7 +205,7 @@ static const uint32_t load_count_limit[SCN_SEC_COUNT + 1] = {
     [SCN_SEC_TEXELS] = SCN_MAX_TEXEL_BYTES,     [SCN_SEC_CLUSTERS] = SCN_MAX_CLUSTERS,
     [SCN_SEC_PRIMS] = SCN_MAX_PRIMS,            [SCN_SEC_COMPONENTS] = SCN_MAX_COMPONENTS,
     [SCN_SEC_KEYS] = SCN_MAX_KEYS,              [SCN_SEC_NORMALS] = SCN_MAX_PRIMS,
-    [SCN_SEC_VIEW_KEYS] = SCN_MAX_VIEW_KEYS,
+    [SCN_SEC_VIEW_KEYS] = SCN_MAX_VIEW_KEYS,     [SCN_SEC_HAZE] = 1,
 };
 
 static scene_load_status_t load_header(struct load *L, size_t len)
@@ -404,6 +404,30 @@ static scene_load_status_t load_light_values(struct load *L, const uint8_t *p, u
     return SCENE_LOAD_OK;
 }
 #undef LOAD_LIGHT_AT
+
+/* The haze, when the scene has one: its colour, and 1/D in the scene's
+ * stored units (times 2^-unit_exp, exact), within SCN_MAX_FACTOR. */
+static scene_load_status_t load_haze(struct load *L, scene_t *s)
+{
+    s->haze = 0;
+    if (!L->sec[SCN_SEC_HAZE].present || L->sec[SCN_SEC_HAZE].count == 0)
+        return SCENE_LOAD_OK;
+    const uint8_t *p = load_rec(L, SCN_SEC_HAZE, 0);
+    uint32_t inv = wire_get_u32(p + SCN_HAZE_INV_DISTANCE);
+    if (!load_units(p + SCN_HAZE_COLOUR, 3, 1.0f))
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "haze colour not within 0..1");
+    if (!load_pos(inv, 1.0e30f))
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "haze 1/distance not a positive number");
+    num_t k = num_from_f32_bits(load_scale_bits(inv, -L->unit_exp));
+    if (num_is_sat(k) || num_gt(k, NUM_C(SCN_MAX_FACTOR)))
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "haze distance under 1/%ld of the scene's "
+                         "scaled unit (its largest length is scaled to 8..16): the haze "
+                         "would hide everything", (long)SCN_MAX_FACTOR);
+    s->haze = 1;
+    s->haze_colour = load_rgb(p + SCN_HAZE_COLOUR);
+    s->haze_k = k;
+    return SCENE_LOAD_OK;
+}
 
 /* The keys of the camera and the lights: grouped by target (the camera's,
  * then by rising light index), frames rising within a target, each
@@ -1034,6 +1058,8 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
         st = load_lights(&L, lights);
     if (st == SCENE_LOAD_OK)
         st = load_view_keys(&L, view_keys);
+    if (st == SCENE_LOAD_OK)
+        st = load_haze(&L, out);
     if (st == SCENE_LOAD_OK)
         st = load_maps(&L, maps, texels);
     if (st == SCENE_LOAD_OK)

@@ -8,6 +8,7 @@
  * objects (shadow transmittance) are taken in primitive-index order for the
  * same reason.
  */
+#include "render/haze.h"
 #include "render/maps.h"
 #include "render/prim.h"
 #include "render/shade.h"
@@ -564,6 +565,7 @@ static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray, const ray_error
     trace_walk(&w, NULL, 0);
     rgb_t sum = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     rgb_t weight = rgb_make(NUM_ONE, NUM_ONE, NUM_ONE);
+    num_t from = NUM_ZERO; /* with haze: each crossing starts a ray of its own */
     for (uint32_t i = 0; i < cross.count; i++) {
         hit_t hit;
         hit.t = cross.t[i];
@@ -578,14 +580,23 @@ static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray, const ray_error
         num_t src, trc;
         shade_src_trc(m, num_neg(vec3_dot(ray->dir, n)), &src, &trc);
         num_t hit_err = trace_shadow_error(ctx, err, &hit, m, ray_weight, src);
-        sum = rgb_add(sum, rgb_mul(weight, trace_lights(ctx, &hit, hit_err, m, colour, n, ray->dir, src)));
+        rgb_t local = trace_lights(ctx, &hit, hit_err, m, colour, n, ray->dir, src);
+        if (ctx->frame->scene->haze) { /* this crossing's share and the haze's before it */
+            num_t seg = num_sub(hit.t, from), w = haze_weight(ctx, seg);
+            rgb_t hazed = haze_apply(ctx, local, seg, trace_hit_error(ctx, err, &hit), ray_weight);
+            sum = rgb_add(sum, rgb_mul(weight, hazed));
+            weight = rgb_scale(weight, w);
+            from = hit.t;
+        } else {
+            sum = rgb_add(sum, rgb_mul(weight, local));
+        }
         if (!num_gt(trc, NUM_ZERO))
             return sum;
         weight = rgb_mul(weight, rgb_scale(colour, trc));
     }
     if (cross.overflow) /* the objects past the buffer are unknown: stop dark */
         return sum;
-    return rgb_add(sum, rgb_mul(weight, ctx->frame->scene->background));
+    return rgb_add(sum, rgb_mul(weight, haze_miss(ctx)));
 }
 
 /* Adaptive depth: a secondary ray of weight w (the product of src and trc
@@ -711,8 +722,11 @@ static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *e
     err = trace_err_if_heavy(err, &none, weight);
     hit_t hit;
     if (!trace_nearest(ctx, ray, err, tmin, NULL, 0, NULL, &hit))
-        return ctx->frame->scene->background;
-    return trace_shade(ctx, ray, err, &hit, depth, weight);
+        return haze_miss(ctx);
+    rgb_t c = trace_shade(ctx, ray, err, &hit, depth, weight);
+    if (ctx->frame->scene->haze)
+        c = haze_apply(ctx, c, hit.t, trace_hit_error(ctx, err, &hit), weight);
+    return c;
 }
 
 /* --------------------------------------------------------------- pixels */
@@ -766,7 +780,9 @@ static rgb_t render_eye(render_ctx_t *ctx, num_t sx, num_t sy, pixel_search_t se
     ctx->stats.primary_box_tests += ctx->stats.box_tests - boxes;
     ctx->stats.primary_prim_tests += ctx->stats.prim_tests - prims;
     ctx->stats.primary_hit += found != 0;
-    rgb_t c = found ? trace_shade(ctx, &ray, &err, &hit, 0, NUM_ONE) : f->scene->background;
+    rgb_t c = found ? trace_shade(ctx, &ray, &err, &hit, 0, NUM_ONE) : haze_miss(ctx);
+    if (found && f->scene->haze)
+        c = haze_apply(ctx, c, hit.t, trace_hit_error(ctx, &err, &hit), NUM_ONE);
     if (rgb_is_sat(c))
         ctx->pixel_lost = 1;
     return c;

@@ -57,6 +57,10 @@ static int cmd_board_start(int argc, char **argv)
             return 2;
         }
     }
+    /* float and fixed boot the firmware that escalates, as links1 render's
+     * own boards do: each render on it escalates by default (or not, with
+     * --no-escalate); --firmware's is booted as it is */
+    o.escalate = !o.firmware && (strcmp(o.arith, "float") == 0 || strcmp(o.arith, "fixed") == 0);
     struct board b;
     if (board_start_named(&b, &o, name, o.timeout_s * 1000) < 0)
         return 1;

@@ -54,6 +54,9 @@ struct render_wall {
                              an521 board's) */
 };
 
+/* Escalation as asked (render_escalation_settle decides the default). */
+enum render_escalation { RENDER_ESC_DEFAULT, RENDER_ESC_ON, RENDER_ESC_OFF };
+
 struct render_opts {
     struct board_opts board;
     struct render_job jobs[RENDER_MAX_JOBS];
@@ -78,6 +81,7 @@ struct render_opts {
     int model_auto, arith_named; /* --auto; --arith given */
     double target_db;    /* --target-db D (-1: not given) */
     unsigned gave;      /* SCENE_PAPER_GAVE_*: render options given, which paper mode keeps */
+    enum render_escalation escalation; /* --escalate, --no-escalate or neither */
 };
 
 /* What a render command keeps as it runs (its options are render_opts'). */
@@ -119,6 +123,7 @@ enum render_opt_code {
     RENDER_OPT_TARGET_DB,
     RENDER_OPT_FPS,
     RENDER_OPT_ESCALATE,
+    RENDER_OPT_NO_ESCALATE,
     RENDER_OPT_AUTO,
 };
 
@@ -132,7 +137,11 @@ static const struct cli_optdef render_optdefs[] = {
     {"target-db", "D", RENDER_OPT_TARGET_DB, "--arith auto and --auto: the PSNR to keep (default 40)"},
     {"escalate", NULL, RENDER_OPT_ESCALATE,
      "trace a pixel that lost precision again in double on the same\n"
-     "NC (float or fixed: links1-<arith>-esc.elf)"},
+     "NC (float or fixed: links1-<arith>-esc.elf, or a named board\n"
+     "started in float or fixed); the default there, but with --paper\n"
+     "or --firmware"},
+    {"no-escalate", NULL, RENDER_OPT_NO_ESCALATE,
+     "keep a pixel that lost precision as the NC's arithmetic traced it"},
     {"balance", "M", RENDER_OPT_BALANCE,
      "static, dynamic, decreasing (default) or lines (simple dynamic\n"
      "on scanlines, the paper's job unit)"},
@@ -382,9 +391,13 @@ static int render_take(struct render_opts *o, const struct cli *c, int code)
         return 0;
     case RENDER_OPT_TARGET_DB: return cli_double(c, 0, 1, 99, NULL, &o->target_db);
     case RENDER_OPT_ESCALATE:
-        o->args.flags |= LINK_RENDER_ESCALATE;
-        o->board.escalate = 1;
+    case RENDER_OPT_NO_ESCALATE: {
+        enum render_escalation e = code == RENDER_OPT_ESCALATE ? RENDER_ESC_ON : RENDER_ESC_OFF;
+        if (o->escalation != RENDER_ESC_DEFAULT && o->escalation != e)
+            return cli_usage_error("links1 render", "--escalate or --no-escalate, not both");
+        o->escalation = e;
         return 0;
+    }
     case RENDER_OPT_AUTO: o->model_auto = o->arith_auto = 1; return 0;
     }
     return -1; /* CLI_BAD: reported already */
@@ -416,6 +429,27 @@ static int render_take_any(struct render_opts *o, const struct cli *c, int code)
     if (code == 'o' || code == CLI_OPERAND)
         return render_add_job(o, code, c->arg);
     return render_take(o, c, code);
+}
+
+/* Escalation settled: --escalate's; by default where a firmware that
+ * escalates runs: the one this command picks for float and fixed (not
+ * --firmware's, nor with --arith auto, which decides it itself), or a named
+ * board's whose record says so (links1 board start boots it for float and
+ * fixed); never by default with --paper (a scene's own paper mode clears
+ * it: scene_paper_args). */
+static void render_escalation_settle(struct render_opts *o, int named_wide)
+{
+    const char *a = o->board.arith;
+    int wide = o->board_name ? named_wide
+                             : (strcmp(a, "float") == 0 || strcmp(a, "fixed") == 0) &&
+                                   !o->board.firmware && !o->arith_auto;
+    if (o->escalation == RENDER_ESC_ON)
+        o->gave |= SCENE_PAPER_GAVE_ESCALATE;
+    if (o->escalation == RENDER_ESC_ON ||
+        (o->escalation == RENDER_ESC_DEFAULT && wide && !o->scene.paper)) {
+        o->args.flags |= LINK_RENDER_ESCALATE;
+        o->board.escalate = 1;
+    }
 }
 
 /* --escalate: the firmware that carries the wide arithmetic (float or
@@ -543,15 +577,20 @@ static int render_outs_check(const struct render_opts *o)
 }
 
 /* The machine the scene is checked against: --machine's, or the named
- * board's.  0, or -1 after saying why. */
+ * board's; then escalation (render_escalation_settle).  0, or -1 after
+ * saying why. */
 static int render_machine_settle(struct render_opts *o)
 {
     o->scene.machine = o->board.machine;
-    if (!o->board_name)
+    int wide = 0;
+    if (!o->board_name) {
+        render_escalation_settle(o, 0);
         return 0;
-    int m = board_named_machine(o->board_name);
+    }
+    int m = board_named_machine(o->board_name, &wide);
     if (m < 0)
         return -1;
+    render_escalation_settle(o, wide);
     if (o->board.machine != MACHINE_VIRT && o->board.machine != m) {
         fprintf(stderr, "links1 render: --machine %s, but board %s is a %s board\n",
                 machine_limits(o->board.machine)->name, o->board_name,
@@ -595,7 +634,7 @@ static int render_parse(struct render_opts *o, int argc, char **argv)
         return -1;
     }
     if (render_outs_check(o) != 0 || render_auto_check(o) != 0 ||
-        render_escalate_check(o) != 0 || render_machine_settle(o) != 0)
+        render_machine_settle(o) != 0 || render_escalate_check(o) != 0)
         return -1;
     if (o->resume && !o->many) {
         fprintf(stderr, "links1 render: --resume goes with --frames A:B\n");
@@ -724,30 +763,22 @@ static void render_schedule_name(const struct link_render_args *a, uint32_t ncs,
 
 static void render_summary(const char *path, const struct link_render_stats *s,
                            const struct image *img, const struct link_render_args *a,
-                           int checked, double seconds, long long upload_ms, long long pull_ms)
+                           double seconds, long long upload_ms, long long pull_ms)
 {
-    char sched[160], escalated[64] = "";
+    char sched[160];
     render_schedule_name(a, s->ncs, sched, sizeof sched);
-    if ((a->flags & LINK_RENDER_ESCALATE) || checked)
-        snprintf(escalated, sizeof escalated, "%u pixels %s double, ", s->escalated_pixels,
-                 checked ? "checked in" : "escalated to");
     printf("links1 render: frame %u %dx%d -> %s: %u NCs, %u areas (%s), %.1f s "
            "(board: prepare %u ms, render %u ms; upload %lld ms, pull %lld ms); rays %llu primary, %llu shadow, "
            "%llu reflection, %llu refraction, %llu transmission; tests %llu box, %llu primitive "
-           "(%llu by primary rays); %s%u pixels lost precision; memory high-water DM %u, RC %u, NC %u of %u bytes\n",
+           "(%llu by primary rays); %u pixels in doubt; memory high-water DM %u, RC %u, NC %u of %u bytes\n",
            s->frame, img->width, img->height, path, s->ncs, s->areas, sched, seconds, s->prepare_ms, s->render_ms,
            upload_ms, pull_ms,
            (unsigned long long)s->primary, (unsigned long long)s->shadow,
            (unsigned long long)s->reflection, (unsigned long long)s->refraction,
            (unsigned long long)s->transmission, (unsigned long long)s->box_tests,
            (unsigned long long)s->prim_tests, (unsigned long long)s->primary_prim_tests,
-           escalated, s->precision_lost_pixels, s->dm_high,
+           s->precision_lost_pixels, s->dm_high,
            s->rc_high, s->nc_high_max, s->nc_private);
-    static int lost_told; /* the meaning, once a command */
-    if (s->precision_lost_pixels && !lost_told) {
-        lost_told = 1;
-        printf("links1 render: %s\n", checked ? RENDER_CHECKED_MEANING : RENDER_LOST_MEANING);
-    }
     fflush(stdout);
 }
 
@@ -979,9 +1010,11 @@ static int render_one_frame(struct board *b, const struct render_opts *o, struct
     int rc = render_sink_put(k, path, &img);
     run->wall.write += board_now_ms() - t2;
     /* The scene's upload time is told with its first frame. */
+    if (rc == 0 && o->board.verbose && (a.flags & LINK_RENDER_ESCALATE))
+        printf("links1 render: frame %u: %u pixels escalated to double\n", s.frame,
+               s.escalated_pixels);
     if (rc == 0 && !o->board.quiet)
-        render_summary(path, &s, &img, &a, o->scene.check_lost,
-                       (double)(board_now_ms() - t0) / 1000.0, r->upload_ms, pull_ms);
+        render_summary(path, &s, &img, &a, (double)(board_now_ms() - t0) / 1000.0, r->upload_ms, pull_ms);
     if (rc == 0 && o->scene.spd_rules)
         /* preprocessing: the upload with the DM's load (told with the
          * first frame) and the DM's preparation; tracing: the RC's render */

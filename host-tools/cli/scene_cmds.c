@@ -208,6 +208,7 @@ struct ref_cmd {
     double target;            /* --target-db, -1 not given */
     const char *scene;        /* the first operand */
     int picked;               /* arith is the build --arith auto or --auto picked */
+    int escalation_given;     /* --escalate or --no-escalate given */
     long first;               /* --frame or --frames' first: the pre-render's frame */
     struct scene_file_opts so; /* the scene options, for the pre-render */
     char **args;              /* links1-ref-<build>'s arguments, args[0] left for it */
@@ -232,6 +233,10 @@ static int ref_cmd_take(struct ref_cmd *r, struct cli *c, int code, int *pass)
         break;
     case CLI_OPERAND:
         r->scene = r->scene ? r->scene : c->arg;
+        break;
+    case REF_OPT_ESCALATE:
+    case REF_OPT_NO_ESCALATE:
+        r->escalation_given = 1;
         break;
     }
     *pass = 1;
@@ -289,8 +294,7 @@ static int ref_cmd_auto(struct ref_cmd *r, struct arith_auto_choice *pick,
         return -1;
     r->arith = pick->build;
     r->picked = 1;
-    if (pick->escalate)
-        r->args[r->nargs++] = "--escalate";
+    r->args[r->nargs++] = pick->escalate ? "--escalate" : "--no-escalate";
     struct scene_file_opts picked; /* --auto's model, after the words given */
     scene_file_opts_init(&picked);
     picked.density_steps = pick->density_steps;
@@ -303,7 +307,7 @@ static int ref_cmd_auto(struct ref_cmd *r, struct arith_auto_choice *pick,
 
 /* The build links1-ref-<build> that runs r's arithmetic: 0, 1 (failed,
  * said) or 2 (a usage error, said). */
-static int ref_cmd_build(const struct ref_cmd *r, const char **build)
+static int ref_cmd_build(struct ref_cmd *r, const char **build)
 {
     int is_auto = strcmp(r->arith, "auto") == 0;
     int code = is_auto || r->picked ? ARITH_FIXED : arith_from_name(r->arith); /* by name */
@@ -317,6 +321,8 @@ static int ref_cmd_build(const struct ref_cmd *r, const char **build)
          * the IEEE operations; on the host both are the float build. */
         fprintf(stderr, "links1 ref: --arith soft on the host is the float build\n");
         *build = "float";
+        if (!r->escalation_given) /* as the board's soft, which has no double to escalate to */
+            r->args[r->nargs++] = "--no-escalate";
     } else if (code < 0) {
         cli_usage_error("links1 ref", "--arith '%s': want double, float, soft, fixed or auto",
                         r->arith);

@@ -267,7 +267,7 @@ int board_named_prepare(struct board *b, const char *name)
 int board_named_started(struct board *b, int timeout_ms)
 {
     struct board_record r = {(int)b->qemu_pid, b->opts.ncores, b->opts.ram_mb, "",
-                             b->opts.machine, {0}};
+                             b->opts.machine, {0}, b->opts.escalate};
     snprintf(r.arith, sizeof r.arith, "%s", b->opts.arith);
     for (int k = 1; k < AN521_MAX_BOARDS; k++)
         r.nc_pid[k] = (int)b->nc_board_pid[k];
@@ -618,7 +618,7 @@ int board_status_named(const char *name)
     return board_named_list_one(s.base, name) ? 0 : -1;
 }
 
-int board_named_machine(const char *name)
+int board_named_machine(const char *name, int *wide)
 {
     char base[BOARD_STATE_BASE_MAX], dir[BOARD_STATE_BASE_MAX + BOARD_NAME_MAX + 2];
     if (board_named_name_ok(name) < 0)
@@ -637,5 +637,8 @@ int board_named_machine(const char *name)
     if (dir_fd == -2 || rec == -2)
         fprintf(stderr, "links1: no board named %s is running (`links1 board start --name "
                 "%s`)\n", name, name);
-    return dir_fd < 0 || rec < 0 ? -1 : r.machine;
+    if (dir_fd < 0 || rec < 0)
+        return -1;
+    *wide = r.wide;
+    return r.machine;
 }

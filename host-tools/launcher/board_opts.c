@@ -27,7 +27,9 @@ const struct cli_optdef board_optdefs[] = {
      "seconds to wait for every unit computer to report in (default 60)"},
     {"ram", "MB", BOARD_OPT_RAM, "board memory in MiB (1024..2048, default 1024)"},
     {"quiet", NULL, BOARD_OPT_QUIET, "print nothing but errors"},
-    {"verbose", NULL, BOARD_OPT_VERBOSE, "print each unit computer reporting in"},
+    {"verbose", NULL, BOARD_OPT_VERBOSE,
+     "print each unit computer reporting in (render: and each frame's\n"
+     "pixels escalated to double)"},
     {"gdb", "", BOARD_OPT_GDB,
      "start halted, QEMU's gdb stub on a unix socket in your state\n"
      "directory (its path printed; make gdb)"},

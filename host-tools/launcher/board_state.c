@@ -246,13 +246,18 @@ int board_state_read(int dir_fd, const char *dir, const char *name, struct board
     char text[BOARD_STATE_RECORD_MAX + 1];
     ssize_t n = st.st_size <= BOARD_STATE_RECORD_MAX ? read(fd, text, sizeof text - 1) : -1;
     close(fd);
-    int used = 0, nnc = 0;
+    int used = 0, nnc = 0, wide_used = 0;
     r->machine = MACHINE_VIRT;
+    r->wide = 0;
     if (n >= 0) {
         text[n] = 0;
         if (sscanf(text, "pid %d ncores %d ram_mb %d arith %15s %n", &r->pid, &r->ncores,
-                   &r->ram_mb, r->arith, &used) != 4 ||
-            (text[used] != 0 && board_state_read_machine(text + used, r, &nnc) < 0))
+                   &r->ram_mb, r->arith, &used) != 4)
+            n = -1;
+        else if (sscanf(text + used, "wide %d %n", &r->wide, &wide_used) == 1)
+            used += wide_used;
+        if (n >= 0 && ((r->wide != 0 && r->wide != 1) ||
+                       (text[used] != 0 && board_state_read_machine(text + used, r, &nnc) < 0)))
             n = -1;
     }
     if (n < 0) {
@@ -302,8 +307,8 @@ int board_state_write(int dir_fd, const char *dir, const struct board_record *r)
      * never sees half a record. */
     static const char tmp[] = "." BOARD_STATE_INFO ".new";
     char text[BOARD_STATE_RECORD_MAX];
-    int n = snprintf(text, sizeof text, "pid %d\nncores %d\nram_mb %d\narith %s\n", r->pid,
-                     r->ncores, r->ram_mb, r->arith);
+    int n = snprintf(text, sizeof text, "pid %d\nncores %d\nram_mb %d\narith %s\n%s", r->pid,
+                     r->ncores, r->ram_mb, r->arith, r->wide ? "wide 1\n" : "");
     if (r->machine == MACHINE_AN521) {
         n += snprintf(text + n, sizeof text - (size_t)n, "machine %s\nnc_pids",
                       machine_limits(r->machine)->name);

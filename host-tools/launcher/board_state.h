@@ -42,6 +42,8 @@ struct board_record {
     char arith[16];
     int machine; /* enum machine_id */
     int nc_pid[AN521_MAX_BOARDS];
+    int wide;    /* 1: its firmware escalates (links1-<arith>-esc.elf; the
+                    record's optional "wide 1", absent in older records) */
 };
 
 /* The base directory opened (made 0700 when create and missing) and

@@ -152,9 +152,10 @@ int board_list_named(void);
 /* Prints named board name as board list does.  0 when it runs, -1 when
  * it does not (said why; a stale one reported and removed). */
 int board_status_named(const char *name);
-/* The machine (enum machine_id) of named board name, from its record;
- * -1 after printing why there is none. */
-int board_named_machine(const char *name);
+/* The machine (enum machine_id) of named board name, from its record, and
+ * into *wide whether its firmware escalates; -1 after printing why there
+ * is none. */
+int board_named_machine(const char *name, int *wide);
 /* board_start_named's steps (qemu.c starts the process between them):
  * the state directory made (a stale one removed first) with its lock
  * taken; the record written and the UART socket connected (returns its

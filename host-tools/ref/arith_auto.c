@@ -313,7 +313,7 @@ static int auto_host_render(const struct auto_run *r, const struct auto_render *
     snprintf(log, cap, "%s/%s%s%s.log", r->tmp, how->build, esc, marked);
     struct scene_opts_words k;
     auto_knobs(r, how->steps, how->weight, &k);
-    const char *extra[8];
+    const char *extra[12]; /* the knobs (at most 4), -o IMG, --mark-lost, the escalation, NULL */
     int e = 0;
     for (const char *const *w = k.w; *w; w++)
         extra[e++] = *w;
@@ -321,8 +321,7 @@ static int auto_host_render(const struct auto_run *r, const struct auto_render *
     extra[e++] = img;
     if (how->marking == AUTO_MARKED)
         extra[e++] = "--mark-lost";
-    if (how->escalation == AUTO_ESCALATED)
-        extra[e++] = "--escalate";
+    extra[e++] = how->escalation == AUTO_ESCALATED ? "--escalate" : "--no-escalate";
     extra[e] = NULL;
     char *argv[AUTO_MAX_ARGS];
     if (auto_argv(r, 0, prog, argv, size, sizeof size, extra) != 0)
@@ -412,7 +411,7 @@ static int auto_measure_image(const struct auto_run *r, struct auto_cand *c)
         fprintf(stderr, "%s: %s: %s\n", r->prog, auto_name(r->o), c->why);
         return -1;
     }
-    double lost = auto_log_number(log, " pixels lost precision", 0);
+    double lost = auto_log_number(log, " pixels in doubt", 0);
     struct image a, m;
     if (lost < 0 || auto_read(img, &a, &r->ref) != 0)
         return -1;
@@ -476,8 +475,7 @@ static int auto_board_cost(const struct auto_run *r, struct auto_cand *c,
     const char *extra[16] = {"-o", img, "--arith", c->arith, "--ncs", ncs, "--machine", m->name,
                              "--count-insns", "--quiet"};
     int e = 10;
-    if (c->escalation == AUTO_ESCALATED)
-        extra[e++] = "--escalate";
+    extra[e++] = c->escalation == AUTO_ESCALATED ? "--escalate" : "--no-escalate";
     for (const char *const *w = k.w; *w; w++) /* the model's words, NULL-ended */
         extra[e++] = *w;
     extra[e] = NULL;

@@ -25,6 +25,7 @@
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_file.h"
 #include "host-tools/scene/scene_opts.h"
+#include "host-tools/scene/scene_paper.h"
 #include "host-tools/ref/ref_opts.h"
 #include "render/blob.h"
 #include "render/clip.h"
@@ -213,7 +214,7 @@ static int ref_trace_corners(render_ctx_t *ctx, const render_frame_t *f, struct 
  * (when not NULL): escalating into it. */
 static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena,
                             size_t mark, long frame, const char *out, int ppm, struct film *film,
-                            struct ref_wide *wide)
+                            struct ref_wide *wide, int verbose)
 {
     arena_release_to(arena, mark);
     render_frame_t *frame_data;
@@ -257,14 +258,11 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     }
     clock_gettime(CLOCK_MONOTONIC, &t1);
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
-    char escalated[64] = "";
-    if (wide) {
+    if (wide)
         RENDER_WIDE(wide_stats_add)(wide->ctx, &ctx.stats); /* the escalations' rays */
-        snprintf(escalated, sizeof escalated, "%u pixels %s %s, ",
-                 (unsigned)ctx.stats.escalated_pixels,
-                 ctx.options.check_lost ? "checked in" : "escalated to",
-                 RENDER_WIDE(wide_arith_name));
-    }
+    if (wide && verbose)
+        fprintf(stderr, "links1 ref: frame %ld: %u pixels escalated to double\n", frame,
+                (unsigned)ctx.stats.escalated_pixels);
     double secs = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
     double cpu = (double)(c1.tv_sec - c0.tv_sec) + 1e-9 * (double)(c1.tv_nsec - c0.tv_nsec);
     char err[SD_ERR_MAX];
@@ -277,34 +275,33 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
                 "links1 ref (%s): %s frame %ld, %dx%d -> %s; rays: %llu primary, %llu "
                 "shadow, %llu reflection, %llu refraction, %llu transmission, %llu cut by "
                 "weight; "
-                "%s%u pixels lost precision; %llu box tests, %llu primitive tests; traced in "
+                "%u pixels in doubt; %llu box tests, %llu primitive tests; traced in "
                 "%.3f s (%.3f s CPU)\n",
                 NUM_NAME, in, frame, img.width, img.height, out,
                 (unsigned long long)ctx.stats.primary, (unsigned long long)ctx.stats.shadow,
                 (unsigned long long)ctx.stats.reflection,
                 (unsigned long long)ctx.stats.refraction,
                 (unsigned long long)ctx.stats.transmission,
-                (unsigned long long)ctx.stats.weight_cut, escalated,
+                (unsigned long long)ctx.stats.weight_cut,
                 (unsigned)ctx.stats.precision_lost_pixels,
                 (unsigned long long)ctx.stats.box_tests, (unsigned long long)ctx.stats.prim_tests,
                 secs, cpu);
     if (rc == 0 && ctx.options.spd_rules) /* preprocessing: the CPU time before tracing */
         scene_opts_spd_line(ctx.stats.primary_hit, ctx.stats.reflection, ctx.stats.refraction,
                             ctx.stats.shadow, (double)c0.tv_sec + 1e-9 * (double)c0.tv_nsec, cpu);
-    static int lost_told; /* the meaning, once a command */
-    if (rc == 0 && ctx.stats.precision_lost_pixels && !lost_told) {
-        lost_told = 1;
-        fprintf(stderr, "links1 ref: %s\n",
-                ctx.options.check_lost ? RENDER_CHECKED_MEANING : RENDER_LOST_MEANING);
-    }
     free(row);
     image_free(&img);
     return rc;
 }
 
+/* Escalation as asked: by default wherever the build carries the wide
+ * arithmetic (float and fixed) and the scene is not in paper mode. */
+enum ref_escalation { REF_ESC_DEFAULT, REF_ESC_ON, REF_ESC_OFF };
+
 struct ref_args {
     const char *in, *out;
-    int ppm, many, escalate;
+    int ppm, many, verbose, escalate; /* escalate: settled (ref_escalation_settle) */
+    enum ref_escalation escalation;
     long first, last;
     struct scene_file_opts scene;
 };
@@ -315,7 +312,15 @@ static int ref_take(struct ref_args *a, const struct cli *c, int code)
     switch (code) {
     case 'o': a->out = c->arg; return 0;
     case REF_OPT_PPM: a->ppm = 1; return 0;
-    case REF_OPT_ESCALATE: a->escalate = 1; return 0;
+    case REF_OPT_VERBOSE: a->verbose = 1; return 0;
+    case REF_OPT_ESCALATE:
+    case REF_OPT_NO_ESCALATE: {
+        enum ref_escalation e = code == REF_OPT_ESCALATE ? REF_ESC_ON : REF_ESC_OFF;
+        if (a->escalation != REF_ESC_DEFAULT && a->escalation != e)
+            return cli_usage_error(c->prog, "--escalate or --no-escalate, not both");
+        a->escalation = e;
+        return 0;
+    }
     case REF_OPT_FRAME:
     case REF_OPT_FRAMES:
         a->many = code == REF_OPT_FRAMES;
@@ -352,14 +357,25 @@ static int ref_parse(int argc, char **argv, struct ref_args *a)
             taken = ref_take(a, &c, code) == 0 ? 1 : -1;
         if (taken < 0)
             return -1;
-        if (code == SCENE_OPT_CHECK_LOST)
-            a->escalate = 1; /* the wide copy, to check with */
     }
     if (!a->in || !a->out)
         return cli_usage_error("links1 ref", "%s", !a->in ? "no SCENE given" : "no -o OUT given");
     if (!a->ppm && scene_file_ends_with(a->out, ".ppm"))
         a->ppm = 1;
     return 0;
+}
+
+/* Whether to escalate: --escalate, --check-lost (the wide copy, to check
+ * with), or by default where the build carries the wide arithmetic and
+ * neither --paper, the scene's paper mode nor --no-escalate says no. */
+static void ref_escalation_settle(struct ref_args *a, const uint8_t *bytes, size_t len)
+{
+    struct scene_paper p;
+    char why[SD_ERR_MAX];
+    int paper = a->scene.paper ||
+                (scene_paper_read(bytes, len, &p, why, sizeof why) == 0 && p.paper);
+    a->escalate = a->escalation == REF_ESC_ON || a->scene.check_lost ||
+                  (a->escalation == REF_ESC_DEFAULT && render_wide_linked() && !paper);
 }
 
 /* -o OUT (with --frames, its first frame's file) checked before any
@@ -396,6 +412,7 @@ int main(int argc, char **argv)
         fprintf(stderr, "links1 ref: %s\n", err);
         return 1;
     }
+    ref_escalation_settle(&a, bytes, len);
     void *mem = NULL;
     arena_t arena;
     size_t mark;
@@ -430,7 +447,7 @@ int main(int argc, char **argv)
         else
             snprintf(path, sizeof path, "%s", out);
         rc = ref_render_frame(in, &scene, &arena, mark, f, path, a.ppm, filming ? &film : NULL,
-                              a.escalate ? &wide : NULL);
+                              a.escalate ? &wide : NULL, a.verbose);
     }
     if (filming && rc == 0 && film_close(&film, err, sizeof err) != 0) {
         fprintf(stderr, "links1 ref: %s\n", err);

@@ -10,8 +10,11 @@ const struct cli_optdef ref_optdefs[] = {
      "in .mp4, .webm or .apng is one film, piped to ffmpeg"},
     {"ppm", NULL, REF_OPT_PPM, "write PPM (also chosen by an OUT ending in .ppm)"},
     {"escalate", NULL, REF_OPT_ESCALATE,
-     "trace a pixel that lost precision again in double, as the board's\n"
-     "--escalate does (float and fixed)"},
+     "trace a pixel that lost precision again in double, as the board\n"
+     "does (float and fixed: the default, but with --paper or soft)"},
+    {"no-escalate", NULL, REF_OPT_NO_ESCALATE,
+     "keep a pixel that lost precision as this arithmetic traced it"},
+    {"verbose", NULL, REF_OPT_VERBOSE, "say how many pixels each frame escalated to double"},
     CLI_OPTDEF_END,
 };
 

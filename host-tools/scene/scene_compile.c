@@ -247,6 +247,10 @@ static void compile_section_body(const struct sd_scene *s, int kind, uint8_t *p)
         break;
     case SCN_SEC_NORMALS: compile_normals(s, p); break;
     case SCN_SEC_VIEW_KEYS: compile_view_keys(s, p); break;
+    case SCN_SEC_HAZE:
+        compile_vec3(p + SCN_HAZE_COLOUR, s->view.haze_colour);
+        wire_put_f32(p + SCN_HAZE_INV_DISTANCE, (float)(1.0 / s->view.haze_distance));
+        break;
     }
 }
 
@@ -271,6 +275,7 @@ static int compile_layout(const struct sd_scene *s, size_t texel_bytes,
         {SCN_SEC_KEYS, (uint32_t)s->n_keys, SCN_KEY_SIZE, 0},
         {SCN_SEC_NORMALS, n_smooth, SCN_NORMALS_SIZE, 0},
         {SCN_SEC_VIEW_KEYS, (uint32_t)s->n_view_keys, SCN_VKEY_SIZE, 0},
+        {SCN_SEC_HAZE, s->view.haze ? 1u : 0u, SCN_HAZE_SIZE, 0},
     };
     int n = 0;
     for (int i = 0; i < SCN_SEC_COUNT; i++)

@@ -22,6 +22,9 @@ struct sd_view {
     int density_steps;      /* SCN_MIN_DENSITY_STEPS..SCN_MAX_DENSITY_STEPS */
     unsigned flags;         /* SCN_OPT_* */
     int frames;
+    int haze;               /* 1: haze { colour R G B  distance D } (SCN_SEC_HAZE) */
+    double haze_colour[3];  /* 0..1 */
+    double haze_distance;   /* 0 < D <= SCN_MAX_COORD */
 };
 
 struct sd_light {

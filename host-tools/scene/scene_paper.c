@@ -186,6 +186,8 @@ void scene_paper_args(const struct scene_paper *p, unsigned given, struct link_r
         a->flags |= LINK_RENDER_ASK_WHEN_DONE;
     if (!(given & SCENE_PAPER_GAVE_CLIP))
         a->clip = LINK_CLIP_LISTS;
+    if (!(given & SCENE_PAPER_GAVE_ESCALATE))
+        a->flags &= (uint8_t)~LINK_RENDER_ESCALATE;
 }
 
 void scene_paper_line(const struct scene_paper *p, const struct link_render_args *a,
@@ -209,9 +211,10 @@ void scene_paper_line(const struct scene_paper *p, const struct link_render_args
     snprintf(out, cap,
              "paper mode: src/trc %s (%d of %d materials that reflect or transmit), depth "
              "%s %d (min_weight %g), areas %s K %u (%s), ask %s, clip %s, clusters %u "
-             "(%s)",
+             "(%s), escalation %s",
              p->by_angle == p->mirror_or_clear ? "by angle" : "partly constant", p->by_angle,
              p->mirror_or_clear, p->min_weight > 0 ? "up to" : "fixed at", p->max_depth, p->min_weight, areas_mode_name(m), (unsigned)k,
              unit, a->flags & LINK_RENDER_ASK_WHEN_DONE ? "finished" : "ahead",
-             a->clip < LINK_CLIP_MODES ? clip[a->clip] : "?", (unsigned)p->clusters, hier);
+             a->clip < LINK_CLIP_MODES ? clip[a->clip] : "?", (unsigned)p->clusters, hier,
+             a->flags & LINK_RENDER_ESCALATE ? "on" : "off");
 }

@@ -37,11 +37,12 @@ int scene_paper_read(const uint8_t *buf, size_t len, struct scene_paper *p, char
 #define SCENE_PAPER_GAVE_AREAS 2u
 #define SCENE_PAPER_GAVE_ASK 4u
 #define SCENE_PAPER_GAVE_CLIP 8u
+#define SCENE_PAPER_GAVE_ESCALATE 16u
 
 /* The paper's render choices into *a, but those in given: simple dynamic
  * balancing on the paper's job unit (LINK_BALANCE_LINES) with one area per
  * scanline (K = the height), an NC asking once it has finished, the
- * paper's clipping lists. */
+ * paper's clipping lists, no escalation. */
 void scene_paper_args(const struct scene_paper *p, unsigned given, struct link_render_args *a);
 
 /* One line of what the frame runs with, each of paper mode's settings by

@@ -193,6 +193,42 @@ static void parse_animation(struct parser *p)
     lex_next(&p->lx);
 }
 
+/* haze { colour R G B  distance D }: both, once each, in any order */
+static void parse_haze(struct parser *p)
+{
+    struct sd_view *v = &p->s->view;
+    if (p->seen_haze++)
+        lex_error(&p->lx, "a second haze block");
+    lex_next(&p->lx);
+    parse_open(p, "haze");
+    int colour = 0, distance = 0;
+    while (p->lx.kind != LEX_CLOSE) {
+        if (lex_is_word(&p->lx, "colour") || lex_is_word(&p->lx, "color")) {
+            if (colour++)
+                lex_error(&p->lx, "haze: a second colour");
+            lex_next(&p->lx);
+            parse_unit3(p, "haze colour", v->haze_colour);
+        } else if (lex_is_word(&p->lx, "distance")) {
+            if (distance++)
+                lex_error(&p->lx, "haze: a second distance");
+            lex_next(&p->lx);
+            v->haze_distance = lex_number_in(&p->lx, "haze distance", 0, SCN_MAX_COORD);
+            if (!(v->haze_distance > 0))
+                lex_error(&p->lx, "haze distance must be over 0 (the distance at which "
+                          "exp(-1) of a colour is left)");
+        } else if (p->lx.kind == LEX_END) {
+            lex_error(&p->lx, "end of file inside the haze block (a '}' is missing)");
+        } else {
+            parse_unknown(p, "haze");
+        }
+    }
+    if (!colour || !distance)
+        lex_error(&p->lx, "haze needs a colour R G B and a distance D (missing: %s)",
+                  !colour && !distance ? "both" : !colour ? "colour" : "distance");
+    lex_next(&p->lx);
+    v->haze = 1;
+}
+
 /* ------------------------------------------------------------- clusters */
 
 static int parse_new_cluster(struct parser *p, const char *name, int parent)
@@ -278,6 +314,8 @@ static int parse_global(struct parser *p)
         parse_options(p);
     } else if (lex_is_word(lx, "animation")) {
         parse_animation(p);
+    } else if (lex_is_word(lx, "haze")) {
+        parse_haze(p);
     } else if (lex_is_word(lx, "light")) {
         parse_light(p);
     } else if (lex_is_word(lx, "map")) {

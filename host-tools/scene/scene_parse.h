@@ -28,7 +28,7 @@ struct parser {
     const char *const *textures_from; /* NULL-ended: more directories map images
                                          may come from (sd_parse_text_from) */
     int cap_materials, cap_clusters, cap_prims, cap_components, cap_keys, cap_view_keys;
-    int seen_camera, seen_resolution, seen_options, seen_animation;
+    int seen_camera, seen_resolution, seen_options, seen_animation, seen_haze;
     int fresnel_off; /* options { fresnel off }: materials that set neither
                         fresnel nor constant keep src and trc constant */
 };

@@ -252,6 +252,11 @@ int sd_export_pov(const struct sd_scene *s, int frame, int strict, FILE *f, cons
     fprintf(f, "background { rgb ");
     pov_vec(f, v->background);
     fprintf(f, " }\n");
+    if (v->haze) { /* the same blend: c exp(-d/D) + h (1 - exp(-d/D)), every ray */
+        fprintf(f, "fog {\n  fog_type 1\n  distance %.9g\n  color rgb ", v->haze_distance);
+        pov_vec(f, v->haze_colour);
+        fprintf(f, "\n}\n");
+    }
     fprintf(f, "camera {\n  perspective\n  location ");
     pov_vec(f, v->eye);
     fprintf(f, "\n  sky ");

@@ -51,6 +51,12 @@ static void wr_view(FILE *f, const struct sd_scene *s)
             v->flags & SCN_OPT_WORLD_SPACE ? "on" : "off");
     if (v->frames > 1)
         fprintf(f, "animation { frames %d }\n", v->frames);
+    if (v->haze) {
+        fprintf(f, "haze {");
+        wr_vec(f, "colour", v->haze_colour, 3);
+        wr_vec(f, " distance", &v->haze_distance, 1);
+        fprintf(f, " }\n");
+    }
     for (int i = 0; i < s->n_lights; i++) {
         const struct sd_light *l = &s->lights[i];
         fprintf(f, "light %s {", l->kind == SCN_LIGHT_PARALLEL ? "parallel"

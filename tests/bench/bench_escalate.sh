@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # tests/bench/bench_escalate.sh: what escalation costs and what it buys
-# (links1 render --escalate, render/wide.h).  For each scene, float and
-# fixed Q12.19 with and without escalation on the board: the NCs' guest
+# (links1 render, by default in float and fixed; render/wide.h).  For each
+# scene, float and fixed Q12.19 escalated (the default) and plain
+# (--no-escalate) on the board: the NCs' guest
 # instructions per pixel (--count-insns, the sum over the NCs), the pixels
 # escalated, and against the double build (links1 ref --arith double) the
 # share of pixels beyond 2/255, with and without the pixels explained by an
@@ -39,7 +40,7 @@ for s in $SCENES; do
             img=$out/$s-$a-$e.ppm
             log=$img.log
             build/links1 render --count-insns "$(scene_of $s)" --arith "$a" --ncs "$NCS" \
-                --machine "$MACHINE" --size "$SIZE" -o "$img" $([ $e = escalated ] && echo --escalate) >"$log" 2>&1 || {
+                --machine "$MACHINE" --size "$SIZE" -o "$img" $([ $e = escalated ] && echo --verbose || echo --no-escalate) >"$log" 2>&1 || {
                 echo "bench_escalate: $s $a $e failed: $(tail -n 1 "$log")" >&2
                 exit 1
             }
@@ -70,8 +71,8 @@ set ylabel "pixels beyond 2/255 of the double build, %"
 set logscale x
 set grid
 set key top right
-plot "$out/plain.dat" using 2:3 with points pt 7 ps 1.2 title "plain (float, fixed Q12.19)", \
-     "$out/escalated.dat" using 2:3 with points pt 11 ps 1.5 title "escalated (--escalate)", \
+plot "$out/plain.dat" using 2:3 with points pt 7 ps 1.2 title "plain (float, fixed Q12.19; --no-escalate)", \
+     "$out/escalated.dat" using 2:3 with points pt 11 ps 1.5 title "escalated (the default)", \
      "$out/points.dat" using 2:3:1 with labels font ",7" offset 0,0.8 notitle
 GP
     echo "chart: $out/escalate.png"

@@ -8,11 +8,10 @@ trap 'rm -rf "$RENDER_TMP"' EXIT
 # (made once per scene, arithmetic, size and frames).  soft is the float build.
 render_ref() {
     local scene=$1 arith=$2 size=$3 frames=${4:-}
-    local build=$arith
-    [ "$arith" = soft ] && build=float
-    local out="$RENDER_TMP/ref-$(basename "$scene" .scn)-$build-$size${frames:+-f}.ppm"
+    # soft: on the host the float build, without escalation as on the board
+    local out="$RENDER_TMP/ref-$(basename "$scene" .scn)-$arith-$size${frames:+-f}.ppm"
     if [ ! -e "$out.done" ]; then
-        "$LINKS1" ref "$scene" -o "$out" --arith "$build" --size "$size" \
+        "$LINKS1" ref "$scene" -o "$out" --arith "$arith" --size "$size" \
             ${frames:+--frames "$frames"} >"$out.log" 2>&1 && touch "$out.done"
     fi
     echo "$out"

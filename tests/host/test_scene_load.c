@@ -758,6 +758,52 @@ static void test_view_keys(void)
     free(b);
 }
 
+/* A haze block: its colour and 1/D (scaled with the scene's lengths)
+ * loaded, no haze without one, and a bad record refused by name. */
+static void test_haze(void)
+{
+    static const char *text =
+        "resolution 8 8\nlight point { colour 1 1 1  position 0 5 -5 }\n"
+        "haze { colour 0.25 0.5 0.75  distance 8 }\n"
+        "material m { colour 1 1 1  dic 0.2 drc 0.8 }\n"
+        "sphere { material m  centre 0 0 0  radius 4 }\n";
+    struct sd_scene sd;
+    char err[SD_ERR_MAX];
+    uint8_t *b = NULL;
+    size_t len = 0;
+    CHECK_EQ_INT(sd_parse_text("t.scn", text, &sd, err, sizeof err), 0);
+    CHECK_EQ_INT(sd_compile(&sd, &b, &len, err, sizeof err), 0);
+    sd_free(&sd);
+    if (!b)
+        return;
+    static uint8_t mem[ARENA_BYTES];
+    arena_t arena;
+    scene_t s;
+    scene_load_error_t e;
+    arena_init(&arena, mem, sizeof mem);
+    CHECK_EQ_INT(scene_load(b, len, &arena, &s, &e), SCENE_LOAD_OK);
+    CHECK_EQ_INT(s.haze, 1);
+    CHECK_NEAR(num_to_double(s.haze_colour.b), 0.75, VAL_TOL);
+    /* 1/D per stored unit: lengths are the text's times 2^unit_exp */
+    CHECK_NEAR(num_to_double(s.haze_k), ldexp(1.0 / 8, -s.unit_exp), VAL_TOL);
+    expect_field(b, len, SCN_SEC_HAZE, SCN_HAZE_COLOUR + 4, f32_bits(1.5f), 4,
+                 SCENE_LOAD_ERR_VALUE, "haze colour");
+    expect_field(b, len, SCN_SEC_HAZE, SCN_HAZE_INV_DISTANCE, f32_bits(0.0f), 4,
+                 SCENE_LOAD_ERR_VALUE, "haze 1/distance");
+    expect_field(b, len, SCN_SEC_HAZE, SCN_HAZE_INV_DISTANCE, f32_bits(1.0e6f), 4,
+                 SCENE_LOAD_ERR_VALUE, "haze distance under");
+    free(b);
+    CHECK_EQ_INT(sd_parse_text("t.scn", "light point { colour 1 1 1  position 0 5 -5 }\n"
+                               "material m { colour 1 1 1 }\nsphere { material m  radius 1 }\n",
+                               &sd, err, sizeof err), 0);
+    CHECK_EQ_INT(sd_compile(&sd, &b, &len, err, sizeof err), 0);
+    sd_free(&sd);
+    arena_init(&arena, mem, sizeof mem);
+    CHECK_EQ_INT(scene_load(b, len, &arena, &s, &e), SCENE_LOAD_OK);
+    CHECK_EQ_INT(s.haze, 0);
+    free(b);
+}
+
 int main(void)
 {
     RUN(test_round_trip);
@@ -772,5 +818,6 @@ int main(void)
     RUN(test_small_arena);
     RUN(test_view_keys);
     RUN(test_cone);
+    RUN(test_haze);
     return check_exit();
 }

@@ -43,14 +43,15 @@ fi
 import() {
     build/links1 import "$out/$1.obj" -o "$out/$1.scn" --camera auto >"$out/$1.import.log" 2>&1
 }
-# render NAME ARITH: the image (empty when the render failed), its log beside
+# render NAME ARITH: the image (empty when the render failed), its log beside;
+# --no-escalate: the arithmetic's own colours and doubts are what is compared
 render() {
     local img="$out/$1-$2.ppm"
     rm -f "$img"
-    build/links1 ref "$out/$1.scn" --arith "$2" --size $size -o "$img" >"$img.log" 2>&1
+    build/links1 ref "$out/$1.scn" --arith "$2" --size $size --no-escalate -o "$img" >"$img.log" 2>&1
     echo "$img"
 }
-lost() { sed -nE 's/.* ([0-9]+) pixels lost precision.*/\1/p' "$1.log"; }
+lost() { sed -nE 's/.* ([0-9]+) pixels in doubt.*/\1/p' "$1.log"; }
 failed() { [ ! -s "$1" ] || [ ! -s "$2" ]; }
 why() { echo "a render failed: $(tail -n 1 "$1.log") / $(tail -n 1 "$2.log")"; }
 
@@ -108,7 +109,7 @@ fi
 render_marked() {
     local img="$out/$1-$2-marked.ppm"
     rm -f "$img"
-    build/links1 ref "$out/$1.scn" --arith "$2" --size $size --mark-lost -o "$img" >"$img.log" 2>&1
+    build/links1 ref "$out/$1.scn" --arith "$2" --size $size --no-escalate --mark-lost -o "$img" >"$img.log" 2>&1
     echo "$img"
 }
 # like CHECK ARITH REF NAME...: each NAME's image has every pixel within

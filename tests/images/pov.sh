@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # tests/images/pov.sh: the outside check of the renderer against POV-Ray 3.7.
-# Each scene in scenes/pov/ uses only what both renderers express the same
-# way (docs/pov-mapping.md); it is rendered by `links1 ref` (double) and by
+# Each scene in scenes/pov/, and scenes/haze.scn, uses only what both
+# renderers express the same way (docs/pov-mapping.md); it is rendered by `links1 ref` (double) and by
 # POV-Ray from `links1 export-pov --strict`, and at least 99% of the pixels
 # away from silhouettes must agree within 3/255 on every channel.
 # Models imported from tests/models/ are held to the same bar.
@@ -46,6 +46,10 @@ pov_check() {
 for scn in scenes/pov/*.scn; do
     pov_check "$(basename "$scn" .scn)" "$scn"
 done
+# Haze against POV-Ray's fog_type 1 (export-pov writes fog { fog_type 1
+# distance D color rgb H }): every ray hazed from its own origin, the
+# mirror's reflections included, a miss taking the haze colour.
+pov_check haze scenes/haze.scn
 # Models made elsewhere, through links1 import --camera auto (flat
 # triangles, Lambert, the added light): the same agreement.  POV-Ray's
 # ambient is never shadowed, so the imported scene takes that reading

@@ -43,7 +43,7 @@ psnr() { # REF IMG
 }
 board_cost() { # SCENE FIRMWARE [esc]: NC instructions per pixel
     local log=$out/work/board.log
-    timeout 900 "$LINKS1" render "$1" --arith "$2" ${3:+--escalate} --ncs 2 --count-insns \
+    timeout 900 "$LINKS1" render "$1" --arith "$2" "$([ -n "${3:-}" ] && echo --escalate || echo --no-escalate)" --ncs 2 --count-insns \
         -o "$out/work/board.png" >"$log" 2>&1 || { echo -; return; }
     local total
     total=$(grep -o 'NCs total [0-9]*' "$log" | grep -o '[0-9]*$')

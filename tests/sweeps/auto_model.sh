@@ -77,7 +77,7 @@ cost() { # FIRMWARE STEPS WEIGHT: NC instructions per pixel at SIZE into k
     if [ -z "${cost_cache[$key]:-}" ]; then
         local log=$work/board.log total
         # shellcheck disable=SC2046
-        if timeout 900 "$LINKS1" render "$scn" --arith "$1" $(knob_words "$2" "$3") --ncs 2 \
+        if timeout 900 "$LINKS1" render "$scn" --arith "$1" --no-escalate $(knob_words "$2" "$3") --ncs 2 \
                 --count-insns --quiet -o "$work/board.png" >"$log" 2>&1; then
             total=$(grep -o 'NCs total [0-9]*' "$log" | grep -o '[0-9]*$')
             cost_cache[$key]=$(awk -v t="$total" -v s="$SIZE" \

@@ -9,8 +9,9 @@
 # that builds, 12..19), max_depth 1..8, adaptive depth on (min_weight 1/512)
 # and off, density root-finder steps 8..64 (--density-steps),
 # refraction off (transmitted rays never bend), float and fixed Q12.19 at
-# depth 5 escalated (--escalate: a pixel that lost precision traced again
-# in double).
+# depth 5 escalated (a pixel that lost precision traced again in double;
+# float escalated is the default, marked in both charts; every other
+# configuration runs with --no-escalate).
 # Cost on the host: ns per pixel of tracing ("traced in" of links1 ref), the
 # median of RUNS (default 3) runs.  Cost on the board: the NCs' guest
 # instructions per pixel (links1 render --count-insns, the TCG plugin; the
@@ -129,6 +130,7 @@ done
 printf 'config\tns_per_pixel\tpsnr_db\tbeyond1_pct\tbeyond2_pct\tlost_pixels\tfront\n' >"$out/pareto.raw"
 for c in "${configs[@]}"; do
     IFS='|' read -r name prog args <<<"$c"
+    [[ $args == *--escalate* ]] || args="$args --no-escalate" # plain: the arithmetic's own
     img=$(image "$name")
     times=()
     for ((r = 0; r < RUNS; r++)); do
@@ -136,7 +138,7 @@ for c in "${configs[@]}"; do
         times+=("$(echo "$log" | sed -nE 's/.*traced in ([0-9.]+) s.*/\1/p')")
     done
     secs=$(printf '%s\n' "${times[@]}" | sort -g | sed -n "$(( (RUNS + 1) / 2 ))p")
-    lost=$(echo "$log" | grep -o '[0-9]* pixels lost' | grep -o '^[0-9]*')
+    lost=$(echo "$log" | grep -o '[0-9]* pixels in doubt' | grep -o '^[0-9]*')
     err=$(errors "$img")
     awk -v n="$name" -v s="$secs" -v p="$pixels" -v e="$err" -v l="$lost" \
         'BEGIN { printf "%s\t%.0f\t%s\t%s\t\n", n, s * 1e9 / p, e, l }' >>"$out/pareto.raw"
@@ -174,6 +176,7 @@ printf 'config\tnc_insns_per_pixel\tpsnr_db\tbeyond1_pct\tbeyond2_pct\tarith\tsa
     >"$out/pareto-board.raw"
 for c in "${bconfigs[@]}"; do
     IFS='|' read -r name arith args host <<<"$c"
+    [[ $args == *--escalate* ]] || args="$args --no-escalate" # plain: the arithmetic's own
     img="$out/board-$(basename "$(image "$name")")"
     log="$img.log"
     if ! timeout "$LIMIT_S" build/links1 render --count-insns "$scene" --arith "$arith" \
@@ -213,6 +216,11 @@ for a in float soft fixed double; do
 done
 awk -F'\t' 'NR > 1 && $1 ~ /escalated/ { print $2, $3 }' "$out/pareto-board.tsv" \
     >"$out/board-escalated.dat"
+# the default configuration: float at the scenes' depth, escalating
+default="float d$dm adaptive, escalated"
+awk -F'\t' -v d="$default" 'NR > 1 && $1 == d { print $2, $3 }' "$out/pareto.tsv" >"$out/default.dat"
+awk -F'\t' -v d="$default" 'NR > 1 && $1 == d { print $2, $3 }' "$out/pareto-board.tsv" \
+    >"$out/board-default.dat"
 awk -F'\t' 'NR > 1 && $8 == "yes" { print $2, $3 }' "$out/pareto-board.tsv" >"$out/board-front.dat"
 awk -F'\t' 'NR > 1 && $9 == "yes" { print $2, $3 }' "$out/pareto-board.tsv" >"$out/board-front-nofpu.dat"
 # labels on the fronts' points only (the table has them all), each front's
@@ -232,7 +240,8 @@ set grid
 set key bottom right
 plot "$out/all.dat" using 1:2 with points pt 7 ps 0.8 title "configuration (all: pareto.tsv)", \
      "$out/front.dat" using 1:2 with linespoints lw 2 pt 6 ps 1.5 title "Pareto front", \
-     "$out/labels.dat" using 1:2:3 with labels font ",7" offset 0,0.7 notitle
+     "$out/labels.dat" using 1:2:3 with labels font ",7" offset 0,0.7 notitle, \
+     "$out/default.dat" using 1:2 with points pt 4 ps 2.2 lw 2 title "the default ($default)"
 set output "$out/pareto-board.png"
 set title "demo.scn $SIZE on the board ($NCS NCs): NC instructions per pixel against PSNR (same reference)"
 set xlabel "NC guest instructions per pixel (sum over the NCs, TCG plugin)"
@@ -240,7 +249,8 @@ plot "$out/board-float.dat" using 1:2 with points pt 7 ps 0.9 title "float (VFP)
      "$out/board-soft.dat" using 1:2 with points pt 5 ps 0.9 title "soft float", \
      "$out/board-fixed.dat" using 1:2 with points pt 9 ps 1.1 title "fixed point (Q12.19, and the other formats' firmware)", \
      "$out/board-double.dat" using 1:2 with points pt 13 ps 1.0 title "double (VFP, double precision)", \
-     "$out/board-escalated.dat" using 1:2 with points pt 11 ps 1.4 title "float and fixed escalated (--escalate: lost pixels traced again in double)", \
+     "$out/board-escalated.dat" using 1:2 with points pt 11 ps 1.4 title "float and fixed escalated (lost pixels traced again in double; --no-escalate: the others)", \
+     "$out/board-default.dat" using 1:2 with points pt 4 ps 2.2 lw 2 title "the default ($default)", \
      "$out/board-front.dat" using 1:2 with linespoints lw 2 pt 6 ps 1.5 title "Pareto front", \
      "$out/board-front-nofpu.dat" using 1:2 with linespoints lw 2 dt 2 pt 6 ps 1.5 title "Pareto front without an FPU (soft, fixed)", \
      "$out/board-labels.dat" using 1:(\$4 == 0 ? \$2 : NaN):3 with labels right font ",7" offset -1,0 notitle, \

@@ -42,7 +42,7 @@ mkdir -p "$out"
 render() { # KNOB ARITH [FAMILY]: prints the image path, or nothing when refused
     local scn=$out/${3:-scale}-$1.scn img=$out/${3:-scale}-$1-$2.png
     python3 host-tools/gen/make_scene.py "${3:-scale}" "$1" --size 64x48 >"$scn" || return
-    "$LINKS1" ref "$scn" --arith "$2" -o "$img" >"$img.log" 2>&1 && echo "$img"
+    "$LINKS1" ref "$scn" --arith "$2" --no-escalate -o "$img" >"$img.log" 2>&1 && echo "$img"
 }
 for arith in double float fixed; do
     one=$(render 1 $arith)
@@ -130,7 +130,7 @@ python3 host-tools/gen/make_scene.py scale 1 --size 64x48 >"$scn"
 printf 'cluster tiny {\n  scale 1e-6\n  translate 0 1 -4\n  sphere { material red  radius 1 }\n}\n' >>"$scn"
 for arith in double fixed; do
     name=scale_same_tiny_cluster_$arith
-    "$LINKS1" ref "$scn" --arith $arith -o "$out/tiny-$arith.png" >"$out/tiny-$arith.log" 2>&1
+    "$LINKS1" ref "$scn" --arith $arith --no-escalate -o "$out/tiny-$arith.png" >"$out/tiny-$arith.log" 2>&1
     rc=$?
     msg=$(tail -n 1 "$out/tiny-$arith.log")
     case $arith/$rc in

@@ -88,14 +88,14 @@ for entry in "${families[@]}"; do
             marked=$out/work/$family-$knob-$arith-marked.png
             log=$out/work/$family-$knob-$arith.log
             [ $quick = 1 ] && img=$marked # the flags only: one render
-            if ! "$LINKS1" ref "$scn" --arith $arith -o "$img" $([ $quick = 1 ] && echo --mark-lost) \
+            if ! "$LINKS1" ref "$scn" --arith $arith --no-escalate -o "$img" $([ $quick = 1 ] && echo --mark-lost) \
                     >"$log" 2>&1; then
                 why=$(tail -n 1 "$log" | sed 's/^links1 ref: [^:]*: //' | tr '\t' ' ')
                 printf '%s\t%s\t%s\trefused: %s\t\t\t\t\t\t\t\n' "$family" "$knob" "$arith" "$why" >>"$tsv"
                 continue
             fi
-            lost=$(grep -o '[0-9]* pixels lost' "$log" | grep -o '^[0-9]*')
-            [ $quick = 1 ] || "$LINKS1" ref "$scn" --arith $arith --mark-lost -o "$marked" >/dev/null 2>&1
+            lost=$(grep -o '[0-9]* pixels in doubt' "$log" | grep -o '^[0-9]*')
+            [ $quick = 1 ] || "$LINKS1" ref "$scn" --arith $arith --no-escalate --mark-lost -o "$marked" >/dev/null 2>&1
             b1=- b2=- psnr=- unflagged=- inner=- compared=-
             if [ -f "$ref" ] && [ $quick = 0 ]; then
                 IFS='|' read -r b1 _ < <(measure "$ref" "$img" 1)

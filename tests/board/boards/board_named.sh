@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Named boards (links1 board start/stop/list, render --board): a board
-# started once renders twice, equal to the host build; a second start of the
-# same name is refused; a render killed mid-frame leaves the board running,
+# started once renders twice, equal to the host build (both escalating, as
+# by default in float); a second start of the same name is refused; a
+# render killed mid-frame leaves the board running,
 # listed, and the next session renders; stop powers it off and removes its
 # state; a board whose QEMU was killed is found, reported and removed.
 . "$(dirname "$0")/../lib.sh"

@@ -70,11 +70,13 @@ else
 fi
 
 # the DM's preprocessing of a later frame, eye space against world space
+# (--no-escalate: the upload prepares frame 0 without the wide blob, which
+# an escalating frame 2 would then load whole)
 prep() { # SCENE MODE-ARGS...: dm_prepare of frame 2 (the upload prepared frame 0 in the same block)
     local scene=$1
     shift
     local tr=$RENDER_TMP/prep-$#.trace
-    "$LINKS1" render "$scene" --frame 2 --ncs 2 --size 64x48 --quiet --trace "$tr" \
+    "$LINKS1" render "$scene" --frame 2 --ncs 2 --size 64x48 --quiet --no-escalate --trace "$tr" \
         -o "$RENDER_TMP/prep-$#.ppm" "$@" >/dev/null 2>&1 &&
         awk '$1 == "dm_prepare" { print $2 }' "$tr"
 }

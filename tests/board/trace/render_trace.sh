@@ -68,16 +68,17 @@ if render_board render_trace "$out" scenes/demo.scn -o "$out" --ncs 4 --size $SI
 fi
 # The trace records the schedule the board ran, and replay --check finds the
 # board's own handout to be that schedule, in its order: the default (K and
-# factor by NC count, NCs asking ahead; recorded as 0 0 and flags 0), and
+# factor by NC count, NCs asking ahead, escalating; recorded as 0 0 and
+# flags 128, LINK_RENDER_ESCALATE), and
 # the paper's rule with a given K and factor.  A replay without what-if
 # options says it replays what the board does, with the board's rule.
 rep="$RENDER_TMP/replay.txt"
 for run in default paper; do
     tr="$RENDER_TMP/$run.trace"
     out="$RENDER_TMP/$run.ppm"
-    extra=() want_run="run ncs 4 balance decreasing k 0 guided 0 flags 0" want_ask=ahead
+    extra=() want_run="run ncs 4 balance decreasing k 0 guided 0 flags 128" want_ask=ahead
     [ $run = paper ] && extra=(--ask finished --areas 512 --guided 3) &&
-        want_run="run ncs 4 balance decreasing k 512 guided 3 flags 64" want_ask=finished
+        want_run="run ncs 4 balance decreasing k 512 guided 3 flags 192" want_ask=finished
     if render_board render_trace_$run "$out" scenes/demo.scn -o "$out" --ncs 4 --size $SIZE \
         --trace "$tr" "${extra[@]}" &&
         grep -qx "$want_run" "$tr" && cmp -s "$ref" "$out" &&
