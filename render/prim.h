@@ -131,6 +131,39 @@ static inline int prim_aabb_entry_ray(const aabb_t *b, const ray_t *ray, const a
     return 1;
 }
 
+/* A ray against a density sphere, for its root finder (prim.c): where it
+ * runs within a component's sphere, and what bounds the field's sum along
+ * it from above.  The sum at the ray's point t is at most
+ * prim_density_bound(t): each component of weight above 0 with the
+ * distance of that point to its centre taken from the ray's closest
+ * approach, sqrt(cc + (t len - tc)^2) (a negative weight adds at most 0).
+ * The sampled excess and the bound differ by what rounding does to
+ * either: the excess's own error, edge_error[0] (precision.c), a few times
+ * over, and 2^-PRIM_DENSITY_BOUND_SHIFT of the threshold and weights
+ * (margin); where the bound plus margin plus the error a sample is
+ * judged by stays below the threshold, the sample is surely below
+ * -(that error) and needs no computing.  Only for a primitive of at most
+ * PRIM_DENSITY_BOUND_MAX components (bounded); the rest sample every step. */
+#define PRIM_DENSITY_BOUND_MAX 16
+#define PRIM_DENSITY_BOUND_ERRORS 4
+#define PRIM_DENSITY_BOUND_SHIFT 10
+typedef struct {
+    num_t len;    /* |d| in local units: s = t len */
+    num_t lo, hi; /* from the first sphere's entry (or tmin) to the last one's exit */
+    num_t peak;   /* the bound's largest: each component at its closest approach */
+    num_t margin; /* what the bound is widened by (above) */
+    int bounded;  /* cc and tc hold every component */
+    num_t cc[PRIM_DENSITY_BOUND_MAX]; /* squared local distance of the closest approach */
+    num_t tc[PRIM_DENSITY_BOUND_MAX]; /* its s (NUM_FAR, 0: a weight not above 0) */
+} prim_density_ray_t;
+/* Fills *r; 0 when the ray meets no component's sphere beyond tmin. */
+int prim_density_ray(const render_prim_t *p, const ray_t *ray, num_t tmin, prim_density_ray_t *r);
+/* The bound of the field's sum at t (r from prim_density_ray, bounded). */
+num_t prim_density_bound(const render_prim_t *p, const prim_density_ray_t *r, num_t t);
+/* The excess (the field's sum minus the threshold) the root finder
+ * computes at the ray's point t. */
+num_t prim_density_sample_excess(const render_prim_t *p, const ray_t *ray, num_t t);
+
 /* LINKS-1 density field of one component of weight b at squared distance
  * r2, given inv_radius2 = 1/d^2. */
 num_t prim_density_field(num_t r2, num_t inv_radius2, num_t weight);
