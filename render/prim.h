@@ -92,6 +92,21 @@ void prim_aabb_ray(const ray_t *ray, aabb_ray_t *r);
 int prim_aabb_entry_ray_axes(const aabb_t *b, const ray_t *ray, const aabb_ray_t *r, num_t tmin,
                              num_t tmax, num_t *entry);
 
+/* 1 when prim_aabb_entry_ray(b, ray, r, tmin, tmax) surely returns 1 for
+ * a ray from origin of unit direction: origin more than 2 tmin inside b on
+ * every axis (tmin >= 0) and tmin <= tmax.  Then every slab's entry is at
+ * most 0 and, a direction's component being at most 1 (its reciprocal at
+ * least 1, give or take a step), its exit at least tmin, each rounding
+ * monotonic.  Six comparisons for the three slabs' work. */
+static inline int prim_aabb_around(const aabb_t *b, vec3_t origin, num_t tmin, num_t tmax)
+{
+    num_t m = num_mul_int(tmin, 2);
+    return !num_lt(tmax, tmin) && num_gt(num_sub(origin.x, b->lo.x), m) &&
+           num_gt(num_sub(b->hi.x, origin.x), m) && num_gt(num_sub(origin.y, b->lo.y), m) &&
+           num_gt(num_sub(b->hi.y, origin.y), m) && num_gt(num_sub(origin.z, b->lo.z), m) &&
+           num_gt(num_sub(b->hi.z, origin.z), m);
+}
+
 /* [*tnear, *tfar] narrowed by a slab the ray crosses at t1 and t2 (in
  * either order); 0 when nothing is left.  A saturated t compares as the
  * most extreme value: the right answer for a ray nearly parallel to the
