@@ -584,10 +584,11 @@ static num_t prim_density_bisect(const render_prim_t *p, const ray_t *ray, num_t
  * of the excess is bisected RENDER_DENSITY_BISECTIONS times.  Fixed
  * counts: the same steps in every build, and a result independent of
  * tmax.  A sample the bound puts surely below 0 is not computed
- * (prim_density_sample), nor any when the bound's peak is. */
+ * (prim_density_sample), nor any when the bound's peak is; need_t 0: the
+ * crossing is not bisected when the answer is a hit wherever its root. */
 static int prim_density_intersect(const render_prim_t *p, const ray_t *ray,
                                   const ray_error_t *err, num_t tmin, num_t tmax, num_t *t_out,
-                                  int *uncertain)
+                                  int *uncertain, int need_t)
 {
     prim_density_ray_t r;
     if (!prim_density_ray(p, ray, tmin, &r))
@@ -637,6 +638,10 @@ static int prim_density_intersect(const render_prim_t *p, const ray_t *ray,
                 num_t fn = prim_density_sample(p, ray, &r, cut, tn);
                 *uncertain = num_gt(fn, NUM_ZERO) == inside ||
                              !num_gt(num_abs(fn), prim_density_excess_error(p, err, tn));
+            }
+            if (!need_t && num_gt(prev_t, tmin) && !num_gt(t, tmax)) {
+                *t_out = t; /* the root lies in (prev_t, t]: a hit, wherever */
+                return 1;
             }
             num_t root = prim_density_bisect(p, ray, prev_t, t, inside);
             if (!num_gt(root, tmin) || num_gt(root, tmax) || num_is_sat(root))
@@ -704,10 +709,21 @@ int prim_intersect_uncertain(const render_prim_t *p, const ray_t *ray, const ray
     case SCENE_PRIM_BOX:
         return prim_box_intersect(p, ray, err, tmin, tmax, t_out, uncertain);
     case SCENE_PRIM_DENSITY:
-        return prim_density_intersect(p, ray, err, tmin, tmax, t_out, uncertain);
+        return prim_density_intersect(p, ray, err, tmin, tmax, t_out, uncertain, 1);
     default:
         return 0;
     }
+}
+
+int prim_intersect_uncertain_whether(const render_prim_t *p, const ray_t *ray,
+                                     const ray_error_t *err, num_t tmin, num_t tmax, num_t *t_out,
+                                     int *uncertain)
+{
+    if (p->kind != SCENE_PRIM_DENSITY)
+        return prim_intersect_uncertain(p, ray, err, tmin, tmax, t_out, uncertain);
+    if (uncertain)
+        *uncertain = 0;
+    return prim_density_intersect(p, ray, err, tmin, tmax, t_out, uncertain, 0);
 }
 
 void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit)

@@ -56,6 +56,13 @@ static inline num_t ray_error_at(const ray_error_t *e, num_t t)
  * (err): the answer may be wrong. */
 int prim_intersect_uncertain(const render_prim_t *p, const ray_t *ray, const ray_error_t *err,
                              num_t tmin, num_t tmax, num_t *t_out, int *uncertain);
+/* The same where only whether it hits matters (an opaque density sphere
+ * on a shadow ray): *t_out is some t of (tmin, tmax], a density sphere's
+ * not bisected when its crossing's bracket lies within them; the answer
+ * and *uncertain are prim_intersect_uncertain's. */
+int prim_intersect_uncertain_whether(const render_prim_t *p, const ray_t *ray,
+                                     const ray_error_t *err, num_t tmin, num_t tmax, num_t *t_out,
+                                     int *uncertain);
 
 /* Fill hit->point, normal, tangent, u, v for hit->t on primitive p. */
 void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit);

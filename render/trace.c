@@ -152,8 +152,13 @@ static void trace_test_prim(trace_walk_t *w, uint32_t prim)
     /* tested up to w->tmax, not the nearest hit so far, so that an
      * uncertain edge counts whatever the order (prim.h: only the final
      * t <= tmax depends on tmax) */
-    int uncertain;
-    int found = prim_intersect_uncertain(p, w->ray, w->err, w->tmin, w->tmax, &t, &uncertain);
+    int uncertain, found;
+    if (p->kind == SCENE_PRIM_DENSITY && w->mode == TRACE_COLLECT_SHADOW &&
+        !num_gt(trace_material(w->ctx, prim)->trc, NUM_ZERO))
+        found = prim_intersect_uncertain_whether(p, w->ray, w->err, w->tmin, w->tmax, &t,
+                                                 &uncertain); /* opaque: t is not used */
+    else
+        found = prim_intersect_uncertain(p, w->ray, w->err, w->tmin, w->tmax, &t, &uncertain);
     if (uncertain)
         w->ctx->pixel_lost = 1;
     if (!found || (w->mode != TRACE_NEAREST && num_gt(t, w->tmax)))
