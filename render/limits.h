@@ -50,7 +50,12 @@
  * ambient's choice of light 8 more in float (trace_lights: 600 bytes in
  * float, 592 in fixed); the attribute maps' material (render_ctx_t.look)
  * 8 more in float's trace_shade and trace_lights (trace_ray 144 +
- * trace_shade 264 = 408 a level, trace_lights 616), none in fixed. */
+ * trace_shade 264 = 408 a level, trace_lights 616), none in fixed.  A
+ * density sphere's test (its bound's per-component values, render/prim.h
+ * PRIM_DENSITY_BOUND_MAX) makes the leaf's primitive test
+ * prim_intersect_uncertain + prim_density_intersect + prim_density_ray:
+ * 584 bytes in float, 672 in fixed on the A15 (664 on the M33), against
+ * 312 and 400 before: 312 more. */
 #if defined(LINKS1_NUM_DOUBLE)
 /* double (the board's double-precision VFP build, and the an521 boards'
  * software double): every num_t twice as wide; on the Cortex-A15
@@ -61,13 +66,15 @@
  * on the M33 (-fstack-usage) 224 + 512 = 736 a level and the leaf's
  * frames 216 bytes more (trace_lights 1144, trace_straight 856,
  * prim_intersect_uncertain 520, prim_surface 296), libgcc's double
- * routines a few words: the larger of the two.  About 19 KiB at max_depth
- * 16, within TASK_STACK_SIZE (24 KiB; roles/dm_render.c checks it) */
+ * routines a few words: the larger of the two; a density sphere's test 504
+ * more (its leaf 992 bytes on the A15, 1,128 on the M33, against 544 and
+ * 624 before).  About 19 KiB at max_depth 16, within TASK_STACK_SIZE (24
+ * KiB; roles/dm_render.c checks it) */
 #define RENDER_STACK_PER_DEPTH 744
-#define RENDER_STACK_BASE 6416
+#define RENDER_STACK_BASE 6920
 #else
 #define RENDER_STACK_PER_DEPTH 448
-#define RENDER_STACK_BASE 4680
+#define RENDER_STACK_BASE 4992
 #endif
 #define RENDER_STACK_BYTES(max_depth) \
     (RENDER_STACK_BASE + RENDER_STACK_PER_DEPTH * ((max_depth) + 1))

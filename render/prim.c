@@ -228,8 +228,8 @@ static int prim_ellipsoid_intersect(const render_prim_t *p, const ray_t *ray,
                                     const ray_error_t *err, num_t tmin, num_t tmax, num_t *t_out,
                                     int *uncertain)
 {
-    vec3_t o = xform_point(&p->to_local, ray->origin);
-    vec3_t d = xform_dir(&p->to_local, ray->dir);
+    vec3_t o = xform_point_inline(&p->to_local, ray->origin);
+    vec3_t d = xform_dir_inline(&p->to_local, ray->dir);
     num_t len = vec3_length(d);
     if (vec3_is_sat(o) || num_is_sat(len) || !num_gt(len, NUM_ZERO))
         return 0;
@@ -322,39 +322,47 @@ typedef struct {
     int outside; /* the ray runs parallel to a slab, outside it */
 } prim_box_span_t;
 
+/* One slab of prim_box_span: axis, with the ray's local oa and da on it. */
+static inline __attribute__((always_inline)) void prim_box_slab(prim_box_span_t *s, int axis,
+                                                                num_t oa, num_t da)
+{
+    if (num_eq(da, NUM_ZERO)) {
+        s->outside |= num_lt(oa, num_neg(NUM_ONE)) || num_gt(oa, NUM_ONE);
+        s->parallel = num_min(s->parallel, num_min(num_abs(num_add(oa, NUM_ONE)),
+                                                   num_abs(num_sub(NUM_ONE, oa))));
+        return;
+    }
+    num_t t1 = num_div(num_sub(num_neg(NUM_ONE), oa), da);
+    num_t t2 = num_div(num_sub(NUM_ONE, oa), da);
+    if (num_gt(t1, t2)) {
+        num_t t = t1;
+        t1 = t2;
+        t2 = t;
+    }
+    if (num_gt(t1, s->tnear)) {
+        s->tnear = t1;
+        s->near_axis = axis;
+    }
+    if (num_lt(t2, s->tfar)) {
+        s->tfar = t2;
+        s->far_axis = axis;
+    }
+}
+
 /* All three slabs (the decision of prim_slab's loop, which may stop at the
- * first axis that misses, is the same: tnear only grows, tfar only shrinks). */
-static void prim_box_span(vec3_t o, vec3_t d, prim_box_span_t *s)
+ * first axis that misses, is the same: tnear only grows, tfar only shrinks),
+ * written out axis by axis. */
+static inline __attribute__((always_inline)) void prim_box_span(vec3_t o, vec3_t d,
+                                                                prim_box_span_t *s)
 {
     s->tnear = num_neg(NUM_FAR);
     s->tfar = NUM_FAR;
     s->near_axis = s->far_axis = -1;
     s->parallel = NUM_FAR;
     s->outside = 0;
-    for (int axis = 0; axis < 3; axis++) {
-        num_t oa = vec3_get(o, axis), da = vec3_get(d, axis);
-        if (num_eq(da, NUM_ZERO)) {
-            s->outside |= num_lt(oa, num_neg(NUM_ONE)) || num_gt(oa, NUM_ONE);
-            s->parallel = num_min(s->parallel, num_min(num_abs(num_add(oa, NUM_ONE)),
-                                                       num_abs(num_sub(NUM_ONE, oa))));
-            continue;
-        }
-        num_t t1 = num_div(num_sub(num_neg(NUM_ONE), oa), da);
-        num_t t2 = num_div(num_sub(NUM_ONE, oa), da);
-        if (num_gt(t1, t2)) {
-            num_t t = t1;
-            t1 = t2;
-            t2 = t;
-        }
-        if (num_gt(t1, s->tnear)) {
-            s->tnear = t1;
-            s->near_axis = axis;
-        }
-        if (num_lt(t2, s->tfar)) {
-            s->tfar = t2;
-            s->far_axis = axis;
-        }
-    }
+    prim_box_slab(s, 0, o.x, d.x);
+    prim_box_slab(s, 1, o.y, d.y);
+    prim_box_slab(s, 2, o.z, d.z);
 }
 
 /* The box is hit or missed by less than the error of the ray's local
@@ -383,16 +391,16 @@ static int prim_box_edge_uncertain(const render_prim_t *p, const prim_box_span_t
 static int prim_box_intersect(const render_prim_t *p, const ray_t *ray, const ray_error_t *err,
                               num_t tmin, num_t tmax, num_t *t_out, int *uncertain)
 {
-    vec3_t o = xform_point(&p->to_local, ray->origin);
-    vec3_t d = xform_dir(&p->to_local, ray->dir);
+    vec3_t o = xform_point_inline(&p->to_local, ray->origin);
+    vec3_t d = xform_dir_inline(&p->to_local, ray->dir);
     if (vec3_is_sat(o) || vec3_is_sat(d))
         return 0;
     if (!uncertain) { /* first miss ends it */
-        num_t tnear = num_neg(NUM_FAR), tfar = NUM_FAR;
-        for (int axis = 0; axis < 3; axis++)
-            if (!prim_slab(vec3_get(o, axis), vec3_get(d, axis), num_neg(NUM_ONE), NUM_ONE,
-                           &tnear, &tfar))
-                return 0;
+        num_t tnear = num_neg(NUM_FAR), tfar = NUM_FAR, one = NUM_ONE;
+        if (!prim_slab(o.x, d.x, num_neg(one), one, &tnear, &tfar) ||
+            !prim_slab(o.y, d.y, num_neg(one), one, &tnear, &tfar) ||
+            !prim_slab(o.z, d.z, num_neg(one), one, &tnear, &tfar))
+            return 0;
         return prim_pick_root(tnear, tfar, tmin, tmax, t_out);
     }
     prim_box_span_t s;
@@ -452,7 +460,13 @@ static num_t prim_density_excess(const render_prim_t *p, vec3_t q)
 static inline __attribute__((always_inline)) num_t prim_density_excess_at(const render_prim_t *p,
                                                                      const ray_t *ray, num_t t)
 {
-    return prim_density_excess(p, xform_point(&p->to_local, vec3_madd(ray->origin, ray->dir, t)));
+    return prim_density_excess(p, xform_point_inline(&p->to_local,
+                                                     vec3_madd(ray->origin, ray->dir, t)));
+}
+
+num_t prim_density_sample_excess(const render_prim_t *p, const ray_t *ray, num_t t)
+{
+    return prim_density_excess_at(p, ray, t);
 }
 
 /* How far the excess sampled at t may be from the double build's: the
@@ -470,34 +484,38 @@ static inline num_t prim_density_sample_t(num_t lo, num_t hi, num_t step, int st
     return i == steps ? hi : num_add(lo, num_mul_int(step, i));
 }
 
-/* Root finder (docs/renderer.md): the field is zero outside every
- * component sphere, so the surface lies in [lo, hi], the union of the
- * spheres' t-intervals beyond tmin.  That span is sampled at
- * density_steps equal steps (the scene's option); the first sign change
- * of the excess
- * is bisected RENDER_DENSITY_BISECTIONS times.  Fixed counts: the same
- * steps in every build, and a result independent of tmax. */
-static int prim_density_intersect(const render_prim_t *p, const ray_t *ray,
-                                  const ray_error_t *err, num_t tmin, num_t tmax, num_t *t_out,
-                                  int *uncertain)
+int prim_density_ray(const render_prim_t *p, const ray_t *ray, num_t tmin, prim_density_ray_t *r)
 {
-    vec3_t o = xform_point(&p->to_local, ray->origin);
-    vec3_t d = xform_dir(&p->to_local, ray->dir);
+    vec3_t o = xform_point_inline(&p->to_local, ray->origin);
+    vec3_t d = xform_dir_inline(&p->to_local, ray->dir);
     num_t len = vec3_length(d);
     if (vec3_is_sat(o) || num_is_sat(len) || !num_gt(len, NUM_ZERO))
         return 0;
     vec3_t dn = vec3_scale(d, num_recip(len));
     int any = 0;
-    num_t lo = NUM_ZERO, hi = NUM_ZERO;
+    num_t lo = NUM_ZERO, hi = NUM_ZERO, peak = NUM_ZERO, weights = num_abs(p->threshold);
+    r->len = len;
+    r->bounded = p->component_count <= PRIM_DENSITY_BOUND_MAX;
     for (uint16_t k = 0; k < p->component_count; k++) {
         const scene_density_component_t *c = &p->components[k];
         vec3_t oc = vec3_sub(o, c->centre);
         num_t tc = num_neg(vec3_dot(oc, dn));
         vec3_t close = vec3_madd(oc, dn, tc);
-        num_t r = c->radius;
-        if (num_gt(num_abs(close.x), r) || num_gt(num_abs(close.y), r) || num_gt(num_abs(close.z), r))
+        if (r->bounded && num_gt(c->weight, NUM_ZERO)) {
+            num_t cc = vec3_dot(close, close);
+            r->cc[k] = cc;
+            r->tc[k] = tc;
+            peak = num_add(peak, prim_density_field(cc, p->inv_radius2[k], c->weight));
+            weights = num_add(weights, c->weight);
+        } else if (r->bounded) { /* a negative field adds nothing to the bound */
+            r->cc[k] = NUM_FAR;
+            r->tc[k] = NUM_ZERO;
+        }
+        num_t rad = c->radius;
+        if (num_gt(num_abs(close.x), rad) || num_gt(num_abs(close.y), rad) ||
+            num_gt(num_abs(close.z), rad))
             continue;
-        num_t h2 = num_sub(num_mul(r, r), vec3_dot(close, close));
+        num_t h2 = num_sub(num_mul(rad, rad), vec3_dot(close, close));
         if (num_lt(h2, NUM_ZERO))
             continue;
         num_t h = num_sqrt(h2);
@@ -508,14 +526,78 @@ static int prim_density_intersect(const render_prim_t *p, const ray_t *ray,
         hi = any ? num_max(hi, t1) : t1;
         any = 1;
     }
-    if (!any)
+    r->lo = num_max(lo, tmin);
+    r->hi = hi;
+    r->peak = peak;
+    r->margin = num_add(num_mul_int(p->edge_error[0], PRIM_DENSITY_BOUND_ERRORS),
+                        num_scale2(weights, -PRIM_DENSITY_BOUND_SHIFT));
+    return any;
+}
+
+num_t prim_density_bound(const render_prim_t *p, const prim_density_ray_t *r, num_t t)
+{
+    num_t at = num_mul(t, r->len), sum = NUM_ZERO;
+    for (uint16_t k = 0; k < p->component_count; k++) {
+        num_t u = num_sub(at, r->tc[k]);
+        num_t r2 = num_add(r->cc[k], num_mul(u, u));
+        if (num_lt(num_mul(r2, p->inv_radius2[k]), NUM_ONE))
+            sum = num_add(sum, prim_density_field(r2, p->inv_radius2[k], p->components[k].weight));
+    }
+    return sum;
+}
+
+/* The excess at t, or -NUM_FAR where prim_density_bound (plus cut: the
+ * error a sample is judged near 0 by, and the bound's margin) says it is
+ * surely below -(that error): the answer the root finder draws from the
+ * sample (below 0, and not near it) is the same. */
+static inline __attribute__((always_inline)) num_t prim_density_sample(
+    const render_prim_t *p, const ray_t *ray, const prim_density_ray_t *r, num_t cut, num_t t)
+{
+    if (r->bounded && num_lt(num_add(prim_density_bound(p, r, t), cut), p->threshold))
+        return num_neg(NUM_FAR);
+    return prim_density_excess_at(p, ray, t);
+}
+
+/* The root bracketed by a (on the side of inside) and b, by bisection:
+ * RENDER_DENSITY_BISECTIONS halvings, or fewer once the midpoint is a or
+ * b (then the rest would change nothing: the excess there is the one
+ * already seen, on its side). */
+static num_t prim_density_bisect(const render_prim_t *p, const ray_t *ray, num_t a, num_t b,
+                                 int inside)
+{
+    for (int j = 0; j < RENDER_DENSITY_BISECTIONS; j++) {
+        num_t m = num_mul(num_add(a, b), NUM_HALF);
+        if (num_eq(m, a) || num_eq(m, b))
+            break;
+        num_t fm = prim_density_excess_at(p, ray, m);
+        if (num_gt(fm, NUM_ZERO) == inside)
+            a = m;
+        else
+            b = m;
+    }
+    return num_mul(num_add(a, b), NUM_HALF);
+}
+
+/* Root finder (docs/renderer.md): the field is zero outside every
+ * component sphere, so the surface lies in [lo, hi], the union of the
+ * spheres' t-intervals beyond tmin.  That span is sampled at
+ * density_steps equal steps (the scene's option); the first sign change
+ * of the excess is bisected RENDER_DENSITY_BISECTIONS times.  Fixed
+ * counts: the same steps in every build, and a result independent of
+ * tmax.  A sample the bound puts surely below 0 is not computed
+ * (prim_density_sample), nor any when the bound's peak is; need_t 0: the
+ * crossing is not bisected when the answer is a hit wherever its root. */
+static int prim_density_intersect(const render_prim_t *p, const ray_t *ray,
+                                  const ray_error_t *err, num_t tmin, num_t tmax, num_t *t_out,
+                                  int *uncertain, int need_t)
+{
+    prim_density_ray_t r;
+    if (!prim_density_ray(p, ray, tmin, &r))
         return 0;
-    lo = num_max(lo, tmin);
+    num_t lo = r.lo, hi = r.hi;
     int steps = p->density_steps;
     num_t step = num_div(num_sub(hi, lo), num_from_int(steps));
     num_t prev_t = lo;
-    num_t f0 = prim_density_excess_at(p, ray, lo);
-    int inside = num_gt(f0, NUM_ZERO); /* a ray from inside looks for the exit */
     /* uncertain (wanted): a sample within its error of 0 (its sign may be
      * the double build's other one) where that could change the answer:
      * before the one before the crossing (an earlier crossing, or none),
@@ -532,12 +614,18 @@ static int prim_density_intersect(const render_prim_t *p, const ray_t *ray,
     if (uncertain) {
         settled = num_add(tmin, num_mul_int(err->origin, 2));
         most = prim_density_excess_error(p, err, hi);
+    }
+    num_t cut = num_add(most, r.margin);
+    if (r.bounded && num_lt(num_add(r.peak, cut), p->threshold))
+        return 0; /* every sample below -most: no crossing, none near 0 */
+    num_t f0 = prim_density_sample(p, ray, &r, cut, lo);
+    int inside = num_gt(f0, NUM_ZERO); /* a ray from inside looks for the exit */
+    if (uncertain)
         near_prev = num_gt(lo, settled) && !num_gt(num_abs(f0), most) &&
                     !num_gt(num_abs(f0), prim_density_excess_error(p, err, lo));
-    }
     for (int i = 1; i <= steps; i++) {
         num_t t = prim_density_sample_t(lo, hi, step, steps, i);
-        num_t f = prim_density_excess_at(p, ray, t);
+        num_t f = prim_density_sample(p, ray, &r, cut, t);
         /* the error at t only for a sample under the largest */
         int near = uncertain && !num_gt(num_abs(f), most) && num_gt(t, settled) &&
                    !num_gt(num_abs(f), prim_density_excess_error(p, err, t));
@@ -548,20 +636,15 @@ static int prim_density_intersect(const render_prim_t *p, const ray_t *ray,
                 *uncertain = 1;
             } else if (near) { /* the sample after it: still across, and surely */
                 num_t tn = prim_density_sample_t(lo, hi, step, steps, i + 1);
-                num_t fn = prim_density_excess_at(p, ray, tn);
+                num_t fn = prim_density_sample(p, ray, &r, cut, tn);
                 *uncertain = num_gt(fn, NUM_ZERO) == inside ||
                              !num_gt(num_abs(fn), prim_density_excess_error(p, err, tn));
             }
-            num_t a = prev_t, b = t;
-            for (int j = 0; j < RENDER_DENSITY_BISECTIONS; j++) {
-                num_t m = num_mul(num_add(a, b), NUM_HALF);
-                num_t fm = prim_density_excess_at(p, ray, m);
-                if (num_gt(fm, NUM_ZERO) == inside)
-                    a = m;
-                else
-                    b = m;
+            if (!need_t && num_gt(prev_t, tmin) && !num_gt(t, tmax)) {
+                *t_out = t; /* the root lies in (prev_t, t]: a hit, wherever */
+                return 1;
             }
-            num_t root = num_mul(num_add(a, b), NUM_HALF);
+            num_t root = prim_density_bisect(p, ray, prev_t, t, inside);
             if (!num_gt(root, tmin) || num_gt(root, tmax) || num_is_sat(root))
                 return 0;
             *t_out = root;
@@ -627,12 +710,23 @@ int prim_intersect_uncertain(const render_prim_t *p, const ray_t *ray, const ray
     case SCENE_PRIM_BOX:
         return prim_box_intersect(p, ray, err, tmin, tmax, t_out, uncertain);
     case SCENE_PRIM_DENSITY:
-        return prim_density_intersect(p, ray, err, tmin, tmax, t_out, uncertain);
+        return prim_density_intersect(p, ray, err, tmin, tmax, t_out, uncertain, 1);
     case SCENE_PRIM_CONE:
         return prim_cone_intersect(p, ray, err, tmin, tmax, t_out, uncertain);
     default:
         return 0;
     }
+}
+
+int prim_intersect_uncertain_whether(const render_prim_t *p, const ray_t *ray,
+                                     const ray_error_t *err, num_t tmin, num_t tmax, num_t *t_out,
+                                     int *uncertain)
+{
+    if (p->kind != SCENE_PRIM_DENSITY)
+        return prim_intersect_uncertain(p, ray, err, tmin, tmax, t_out, uncertain);
+    if (uncertain)
+        *uncertain = 0;
+    return prim_density_intersect(p, ray, err, tmin, tmax, t_out, uncertain, 0);
 }
 
 void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit)
@@ -669,23 +763,30 @@ int prim_aabb_entry(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax, n
     return 1;
 }
 
+/* One axis of prim_aabb_ray: d the direction's component on it. */
+static inline __attribute__((always_inline)) void prim_aabb_ray_axis(aabb_ray_t *r, int axis,
+                                                                     num_t d)
+{
+    r->inv[axis] = NUM_ZERO;
+    r->use_div[axis] = 1;
+#if defined(LINKS1_NUM_FIXED)
+    (void)d; /* the fixed build divides on every axis */
+#else
+    if (!num_eq(d, NUM_ZERO)) {
+        num_t inv = num_recip(d);
+        if (num_lt(num_abs(inv), NUM_FAR)) {
+            r->inv[axis] = inv;
+            r->use_div[axis] = 0;
+        }
+    }
+#endif
+}
+
 void prim_aabb_ray(const ray_t *ray, aabb_ray_t *r)
 {
-    (void)ray; /* the fixed build divides on every axis */
-    for (int axis = 0; axis < 3; axis++) {
-        r->inv[axis] = NUM_ZERO;
-        r->use_div[axis] = 1;
-#if !defined(LINKS1_NUM_FIXED)
-        num_t d = vec3_get(ray->dir, axis);
-        if (!num_eq(d, NUM_ZERO)) {
-            num_t inv = num_recip(d);
-            if (num_lt(num_abs(inv), NUM_FAR)) {
-                r->inv[axis] = inv;
-                r->use_div[axis] = 0;
-            }
-        }
-#endif
-    }
+    prim_aabb_ray_axis(r, 0, ray->dir.x);
+    prim_aabb_ray_axis(r, 1, ray->dir.y);
+    prim_aabb_ray_axis(r, 2, ray->dir.z);
     r->all_inv = !r->use_div[0] && !r->use_div[1] && !r->use_div[2];
 }
 

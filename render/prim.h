@@ -56,6 +56,13 @@ static inline num_t ray_error_at(const ray_error_t *e, num_t t)
  * (err): the answer may be wrong. */
 int prim_intersect_uncertain(const render_prim_t *p, const ray_t *ray, const ray_error_t *err,
                              num_t tmin, num_t tmax, num_t *t_out, int *uncertain);
+/* The same where only whether it hits matters (an opaque density sphere
+ * on a shadow ray): *t_out is some t of (tmin, tmax], a density sphere's
+ * not bisected when its crossing's bracket lies within them; the answer
+ * and *uncertain are prim_intersect_uncertain's. */
+int prim_intersect_uncertain_whether(const render_prim_t *p, const ray_t *ray,
+                                     const ray_error_t *err, num_t tmin, num_t tmax, num_t *t_out,
+                                     int *uncertain);
 
 /* Fill hit->point, normal, tangent, u, v for hit->t on primitive p. */
 void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit);
@@ -91,6 +98,21 @@ void prim_aabb_ray(const ray_t *ray, aabb_ray_t *r);
  * prim_aabb_entry_ray_axes. */
 int prim_aabb_entry_ray_axes(const aabb_t *b, const ray_t *ray, const aabb_ray_t *r, num_t tmin,
                              num_t tmax, num_t *entry);
+
+/* 1 when prim_aabb_entry_ray(b, ray, r, tmin, tmax) surely returns 1 for
+ * a ray from origin of unit direction: origin more than 2 tmin inside b on
+ * every axis (tmin >= 0) and tmin <= tmax.  Then every slab's entry is at
+ * most 0 and, a direction's component being at most 1 (its reciprocal at
+ * least 1, give or take a step), its exit at least tmin, each rounding
+ * monotonic.  Six comparisons for the three slabs' work. */
+static inline int prim_aabb_around(const aabb_t *b, vec3_t origin, num_t tmin, num_t tmax)
+{
+    num_t m = num_mul_int(tmin, 2);
+    return !num_lt(tmax, tmin) && num_gt(num_sub(origin.x, b->lo.x), m) &&
+           num_gt(num_sub(b->hi.x, origin.x), m) && num_gt(num_sub(origin.y, b->lo.y), m) &&
+           num_gt(num_sub(b->hi.y, origin.y), m) && num_gt(num_sub(origin.z, b->lo.z), m) &&
+           num_gt(num_sub(b->hi.z, origin.z), m);
+}
 
 /* [*tnear, *tfar] narrowed by a slab the ray crosses at t1 and t2 (in
  * either order); 0 when nothing is left.  A saturated t compares as the
@@ -137,6 +159,38 @@ num_t prim_pseudo_angle(num_t x, num_t z);
 /* A unit tangent at a hit of normal `normal` from a hint in the local
  * frame of to_local (an ellipsoid's, a box's, a cone's). */
 vec3_t prim_tangent(const xform_t *to_local, vec3_t hint_local, vec3_t normal);
+/* A ray against a density sphere, for its root finder (prim.c): where it
+ * runs within a component's sphere, and what bounds the field's sum along
+ * it from above.  The sum at the ray's point t is at most
+ * prim_density_bound(t): each component of weight above 0 with the
+ * distance of that point to its centre taken from the ray's closest
+ * approach, sqrt(cc + (t len - tc)^2) (a negative weight adds at most 0).
+ * The sampled excess and the bound differ by what rounding does to
+ * either: the excess's own error, edge_error[0] (precision.c), a few times
+ * over, and 2^-PRIM_DENSITY_BOUND_SHIFT of the threshold and weights
+ * (margin); where the bound plus margin plus the error a sample is
+ * judged by stays below the threshold, the sample is surely below
+ * -(that error) and needs no computing.  Only for a primitive of at most
+ * PRIM_DENSITY_BOUND_MAX components (bounded); the rest sample every step. */
+#define PRIM_DENSITY_BOUND_MAX 16
+#define PRIM_DENSITY_BOUND_ERRORS 4
+#define PRIM_DENSITY_BOUND_SHIFT 10
+typedef struct {
+    num_t len;    /* |d| in local units: s = t len */
+    num_t lo, hi; /* from the first sphere's entry (or tmin) to the last one's exit */
+    num_t peak;   /* the bound's largest: each component at its closest approach */
+    num_t margin; /* what the bound is widened by (above) */
+    int bounded;  /* cc and tc hold every component */
+    num_t cc[PRIM_DENSITY_BOUND_MAX]; /* squared local distance of the closest approach */
+    num_t tc[PRIM_DENSITY_BOUND_MAX]; /* its s (NUM_FAR, 0: a weight not above 0) */
+} prim_density_ray_t;
+/* Fills *r; 0 when the ray meets no component's sphere beyond tmin. */
+int prim_density_ray(const render_prim_t *p, const ray_t *ray, num_t tmin, prim_density_ray_t *r);
+/* The bound of the field's sum at t (r from prim_density_ray, bounded). */
+num_t prim_density_bound(const render_prim_t *p, const prim_density_ray_t *r, num_t t);
+/* The excess (the field's sum minus the threshold) the root finder
+ * computes at the ray's point t. */
+num_t prim_density_sample_excess(const render_prim_t *p, const ray_t *ray, num_t t);
 
 /* LINKS-1 density field of one component of weight b at squared distance
  * r2, given inv_radius2 = 1/d^2. */

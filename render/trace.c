@@ -65,7 +65,7 @@ typedef struct {
     num_t cut;          /* box tests' far end: tmax, or in a NEAREST walk
                            the nearest hit so far (it only comes nearer) */
     uint32_t box_tests; /* this walk's, added to ctx->stats at its end */
-    uint32_t screen_tests; /* likewise */
+    uint32_t screen_tests, prim_tests; /* likewise */
     int use_bounds;     /* ctx->options.use_bounds */
 } trace_walk_t;
 
@@ -90,7 +90,7 @@ static void trace_walk_setup(trace_walk_t *w, render_ctx_t *ctx, const ray_t *ra
     w->screen = 0;
     w->px = w->py = 0;
     w->cut = tmax;
-    w->box_tests = w->screen_tests = 0;
+    w->box_tests = w->screen_tests = w->prim_tests = 0;
     w->use_bounds = ctx->options.use_bounds;
 }
 
@@ -144,7 +144,7 @@ static void trace_test_prim(trace_walk_t *w, uint32_t prim)
     if (trace_walk_done(w))
         return;
     num_t t;
-    w->ctx->stats.prim_tests++;
+    w->prim_tests++;
     /* an imprecise primitive may be missed wrongly: a ray that meets its
      * box (whatever was found before: the same in every traversal mode)
      * loses precision */
@@ -153,8 +153,13 @@ static void trace_test_prim(trace_walk_t *w, uint32_t prim)
     /* tested up to w->tmax, not the nearest hit so far, so that an
      * uncertain edge counts whatever the order (prim.h: only the final
      * t <= tmax depends on tmax) */
-    int uncertain;
-    int found = prim_intersect_uncertain(p, w->ray, w->err, w->tmin, w->tmax, &t, &uncertain);
+    int uncertain, found;
+    if (p->kind == SCENE_PRIM_DENSITY && w->mode == TRACE_COLLECT_SHADOW &&
+        !num_gt(trace_material(w->ctx, prim)->trc, NUM_ZERO))
+        found = prim_intersect_uncertain_whether(p, w->ray, w->err, w->tmin, w->tmax, &t,
+                                                 &uncertain); /* opaque: t is not used */
+    else
+        found = prim_intersect_uncertain(p, w->ray, w->err, w->tmin, w->tmax, &t, &uncertain);
     if (uncertain)
         w->ctx->pixel_lost = 1;
     if (!found || (w->mode != TRACE_NEAREST && num_gt(t, w->tmax)))
@@ -193,10 +198,21 @@ static inline __attribute__((always_inline)) int trace_box_entry(trace_walk_t *w
     return prim_aabb_entry_ray(b, w->ray, &w->box_ray, w->tmin, w->cut, entry);
 }
 
-static int trace_box(trace_walk_t *w, const aabb_t *b)
+static inline __attribute__((always_inline)) int trace_box(trace_walk_t *w, const aabb_t *b)
 {
     num_t entry;
     return trace_box_entry(w, b, &entry);
+}
+
+/* trace_box of a box the ray starts well inside of (prim_aabb_around: the
+ * root's, for every ray that starts on a surface): a hit, counted, without
+ * its slabs. */
+static inline __attribute__((always_inline)) int trace_box_around(trace_walk_t *w, const aabb_t *b)
+{
+    if (!w->use_bounds || !prim_aabb_around(b, w->ray->origin, w->tmin, w->cut))
+        return trace_box(w, b);
+    w->box_tests++;
+    return 1;
 }
 
 /* A box entered at t can still hold a hit: not past the nearest so far
@@ -287,7 +303,7 @@ static void trace_walk_boxes(trace_walk_t *w, const render_frame_t *f, const uin
             trace_own_prims(w, c);
         }
     } else if (w->ctx->options.use_hierarchy) {
-        if (trace_screen_tree(w, &f->clusters[0]) && trace_box(w, &f->clusters[0].bounds))
+        if (trace_screen_tree(w, &f->clusters[0]) && trace_box_around(w, &f->clusters[0].bounds))
             trace_cluster(w, 0);
     } else {
         for (uint32_t prim = 0; prim < f->prim_count; prim++)
@@ -303,6 +319,7 @@ static void trace_walk(trace_walk_t *w, const uint32_t *clip, uint32_t clip_coun
     trace_walk_boxes(w, f, clip, clip_count);
     w->ctx->stats.box_tests += w->box_tests;
     w->ctx->stats.screen_tests += w->screen_tests;
+    w->ctx->stats.prim_tests += w->prim_tests;
 }
 
 /* A ray of weight below RENDER_LOST_WEIGHT_VALUE changes the pixel by
