@@ -15,6 +15,8 @@ docs/**/*.md and prints one line per check:
                        not answer "unknown option" (`links1 CMD --option
                        --help`: the option is read, then the usage shown or
                        --help taken as its value; nothing runs)
+  doc_words_at_most    README.md and docs/ together hold at most
+                       DOC_WORDS_MAX words (as `wc -w` counts them)
 
   python3 tests/docs/doc_refs.py [LINKS1]   (default build/links1)
 """
@@ -26,6 +28,7 @@ import sys
 
 ROOTS = ("boot/", "kernel/", "drivers/", "roles/", "render/", "fixed/", "proto/",
          "host-tools/", "tests/", "linker/", "scenes/", "docs/", ".ci/")
+DOC_WORDS_MAX = 35000
 CMDS = ("render", "ref", "compile", "farm", "replay", "board", "boot", "selftest",
         "semihost", "import", "export-pov", "compare")
 
@@ -124,6 +127,15 @@ def check_options(all_docs, links1):
     return bad
 
 
+def check_words(all_docs):
+    words = sum(len(text.split()) for _, text in all_docs)
+    if words <= DOC_WORDS_MAX:
+        return []
+    big = sorted(all_docs, key=lambda d: -len(d[1].split()))[:3]
+    return [f"{words} words, over {DOC_WORDS_MAX} (largest: "
+            + ", ".join(f"{f} {len(t.split())}" for f, t in big) + ")"]
+
+
 def report(name, bad):
     if bad:
         print(f"FAIL {name}: {len(bad)} of them, e.g. " + "; ".join(bad[:12]))
@@ -138,6 +150,7 @@ def main():
     report("doc_paths_exist", check_paths(all_docs))
     report("doc_links_exist", check_links(all_docs))
     report("doc_options_accepted", check_options(all_docs, links1))
+    report("doc_words_at_most", check_words(all_docs))
 
 
 if __name__ == "__main__":
