@@ -10,10 +10,10 @@
 
 #include <stdarg.h>
 
-#include "proto/crc32.h"
 #include "proto/scene_format.h"
 #include "proto/textfmt.h"
 #include "proto/wire.h"
+#include "proto/wordsum.h"
 #include "render/render.h"
 #include "render/vec3.h"
 
@@ -36,7 +36,8 @@ struct load {
     int32_t *cexp; /* scratch, per cluster: its coordinates are stored times
                       2^(unit_exp + cexp[i]) (load_scale) */
     int32_t *kexp; /* scratch, per cluster: its keys' scales times 2^-kexp[i] */
-    int crc_later; /* the header alone: scene_load checks the CRC next */
+    int crc_later; /* the header alone: scene_load checks the word sum next */
+    const uint32_t *sum; /* the body's word sum, summed by the caller, or NULL */
 };
 
 /* ------------------------------------------------------------ messages */
@@ -165,11 +166,15 @@ static rgb_t load_rgb(const uint8_t *p)
     return c;
 }
 
-/* n consecutive reals at p, each within +-hi */
-static int load_within(const uint8_t *p, int n, float hi)
+/* n consecutive reals at p, each within +-hi (hi > 0, finite): load_in(v,
+ * -hi, hi) as one compare, since the magnitude bits of the finite values
+ * order as their magnitudes do and those of an infinity or a NaN lie above
+ * every finite value's */
+static inline int load_within(const uint8_t *p, int n, float hi)
 {
+    uint32_t h = load_bits_of(hi);
     for (int i = 0; i < n; i++)
-        if (!load_in(wire_get_u32(p + 4 * i), -hi, hi))
+        if ((wire_get_u32(p + 4 * i) & ~LOAD_F32_SIGN) > h)
             return 0;
     return 1;
 }
@@ -242,8 +247,9 @@ static scene_load_status_t load_header(struct load *L, size_t len)
                          "total size %ld cannot hold the section table of %ld entries",
                          (long)total, (long)nsec);
     L->total = total;
-    if (!L->crc_later && crc32(b + SCN_CRC_START, total - SCN_CRC_START) !=
-                             wire_get_u32(b + SCN_HDR_CRC))
+    if (!L->crc_later &&
+        (L->sum ? *L->sum : wordsum(b + SCN_SUM_START, total - SCN_SUM_START)) !=
+            wire_get_u32(b + SCN_HDR_SUM))
         return load_fail(L, SCENE_LOAD_ERR_CRC, "checksum mismatch: the scene is corrupt");
     /* The table: kinds known and unique, bodies inside the file, after the
      * table, aligned, not overlapping, size = count * record size. */
@@ -960,10 +966,17 @@ static scene_load_status_t load_scale(struct load *L, scene_t *s)
 scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, scene_t *out,
                                scene_load_error_t *err)
 {
+    return scene_load_summed(buf, len, NULL, arena, out, err);
+}
+
+scene_load_status_t scene_load_summed(const uint8_t *buf, size_t len, const uint32_t *sum,
+                                      arena_t *arena, scene_t *out, scene_load_error_t *err)
+{
     struct load L;
     memset(&L, 0, sizeof L);
     L.buf = buf;
     L.err = err;
+    L.sum = sum;
     err->status = SCENE_LOAD_OK;
     err->message[0] = 0;
     memset(out, 0, sizeof *out);

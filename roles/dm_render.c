@@ -54,6 +54,9 @@ static struct {
                              next blobs of the same load */
     int wide_loaded[2];   /* block A / B holds this scene's wide blob too */
     int prepared_wide;    /* the frame prepared holds the wide blob */
+    uint32_t body_sum;    /* the scene's word sum after its header, summed
+                             while its shared-path upload was checked */
+    int summed;           /* body_sum holds it (else the loader sums) */
 } dm_scene;
 
 static const char dm_blob_limit_name[] = MACHINE_IMSU_BLOCK_NAME;
@@ -137,8 +140,9 @@ static int dm_prepare(uint32_t frame, int escalate, render_blob_error_t *err)
     render_blob_t *blob = (render_blob_t *)block;
     render_blob_status_t st = RENDER_BLOB_OK;
     if (!dm_scene.loaded[held]) {
-        st = render_blob_load(dm_scene.compiled, dm_scene.len, block, p->size,
-                              dm_blob_limit_name, &blob, err);
+        st = render_blob_load_summed(dm_scene.compiled, dm_scene.len,
+                                     dm_scene.summed ? &dm_scene.body_sum : NULL, block,
+                                     p->size, dm_blob_limit_name, &blob, err);
         dm_scene.loaded[held] = st == RENDER_BLOB_OK;
         if (st == RENDER_BLOB_OK)
             blob->scene_id = dm_scene.load_id;
@@ -236,6 +240,7 @@ void dm_cmd_scene_load(uint16_t cmd)
         rx = (struct dm_scene_rx){kmem_alloc(len, "compiled scene"), len, ""};
     uint64_t got = 0;
     uint32_t crc = 0;
+    dm_scene.summed = 0;
     if (path == LINK_PATH_SHARED) {
         /* The host writes the scene straight into its buffer; refused
          * before the offer when it cannot be taken. */
@@ -244,9 +249,10 @@ void dm_cmd_scene_load(uint16_t cmd)
             return;
         }
         uint32_t n = 0;
-        if (dm_bulk_receive(cmd, rx.buf, len, &n, &crc) != LINK_OK)
+        if (dm_bulk_receive(cmd, rx.buf, len, SCN_SUM_START, &n, &dm_scene.body_sum) != LINK_OK)
             return; /* the shared path already answered */
         got = n;
+        dm_scene.summed = 1;
     } else {
         int r = dm_transfer_receive(cmd, dm_scene_chunk, &rx, &got, &crc);
         if (r != LINK_OK && r != LINK_ERR_CHECK)

@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "host-tools/scene/scene_desc.h"
-#include "proto/crc32.h"
+#include "proto/wordsum.h"
 #include "proto/scene_format.h"
 #include "proto/wire.h"
 
@@ -115,7 +115,7 @@ static uint8_t *prim_of(struct hostile_scene *h, uint16_t kind)
 
 static int refix(struct hostile_scene *h)
 {
-    wire_put_u32(h->buf + SCN_HDR_CRC, crc32(h->buf + SCN_CRC_START, h->len - SCN_CRC_START));
+    wire_put_u32(h->buf + SCN_HDR_SUM, wordsum(h->buf + SCN_SUM_START, h->len - SCN_SUM_START));
     return 0;
 }
 
