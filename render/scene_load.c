@@ -19,6 +19,8 @@
 
 #define LOAD_F32_EXP_MASK 0x7f800000u
 #define LOAD_F32_SIGN 0x80000000u
+#define LOAD_INLINE static inline __attribute__((always_inline))
+#define LOAD_KEXP_PLAIN INT32_MIN
 
 struct load_section {
     int present;
@@ -35,7 +37,8 @@ struct load {
                      plus the exponent of the cluster it lies in */
     int32_t *cexp; /* scratch, per cluster: its coordinates are stored times
                       2^(unit_exp + cexp[i]) (load_scale) */
-    int32_t *kexp; /* scratch, per cluster: its keys' scales times 2^-kexp[i] */
+    int32_t *kexp; /* scratch, per cluster: its keys' scales times 2^-kexp[i];
+                      LOAD_KEXP_PLAIN for a plain cluster (load_cluster_plain) */
     int crc_later; /* the header alone: scene_load checks the word sum next */
     const uint32_t *sum; /* the body's word sum, summed by the caller, or NULL */
 };
@@ -123,9 +126,9 @@ static int load_pos(uint32_t bits, float hi)
 
 static int load_zero(uint32_t bits) { return (bits & ~LOAD_F32_SIGN) == 0; }
 
-static num_t load_num(const uint8_t *p) { return num_from_f32_bits(wire_get_u32(p)); }
+LOAD_INLINE num_t load_num(const uint8_t *p) { return num_from_f32_bits(wire_get_u32(p)); }
 
-static vec3_t load_vec3(const uint8_t *p)
+LOAD_INLINE vec3_t load_vec3(const uint8_t *p)
 {
     vec3_t v = {load_num(p), load_num(p + 4), load_num(p + 8)};
     return v;
@@ -133,7 +136,7 @@ static vec3_t load_vec3(const uint8_t *p)
 
 /* binary32 bits times 2^e, by the exponent field: exact; zeros, subnormals
  * and results under the smallest normal give a zero of the same sign */
-static uint32_t load_scale_bits(uint32_t bits, int e)
+LOAD_INLINE uint32_t load_scale_bits(uint32_t bits, int e)
 {
     int32_t exp = (int32_t)((bits & LOAD_F32_EXP_MASK) >> 23);
     if (exp == 0 || exp == 255)
@@ -149,12 +152,12 @@ static uint32_t load_scale_bits(uint32_t bits, int e)
 
 /* A length: scaled to the scene (scene_t.unit_exp) and by the power of two
  * of the cluster it lies in (L->len_exp). */
-static num_t load_len(const struct load *L, const uint8_t *p)
+LOAD_INLINE num_t load_len(const struct load *L, const uint8_t *p)
 {
     return num_from_f32_bits(load_scale_bits(wire_get_u32(p), L->len_exp));
 }
 
-static vec3_t load_lvec3(const struct load *L, const uint8_t *p)
+LOAD_INLINE vec3_t load_lvec3(const struct load *L, const uint8_t *p)
 {
     vec3_t v = {load_len(L, p), load_len(L, p + 4), load_len(L, p + 8)};
     return v;
@@ -170,7 +173,7 @@ static rgb_t load_rgb(const uint8_t *p)
  * -hi, hi) as one compare, since the magnitude bits of the finite values
  * order as their magnitudes do and those of an infinity or a NaN lie above
  * every finite value's */
-static inline int load_within(const uint8_t *p, int n, float hi)
+LOAD_INLINE int load_within(const uint8_t *p, int n, float hi)
 {
     uint32_t h = load_bits_of(hi);
     for (int i = 0; i < n; i++)
@@ -615,6 +618,61 @@ static scene_load_status_t load_keys(struct load *L, scene_key_t *out)
     return SCENE_LOAD_OK;
 }
 
+/* The identity, the static matrix of the clusters the compiler's bounding
+ * hierarchy makes: rows of the 3x4 matrix as binary32 bits. */
+static const uint32_t load_identity_bits[12] = {
+    0x3f800000u, 0, 0, 0, 0, 0x3f800000u, 0, 0, 0, 0, 0x3f800000u, 0,
+};
+
+/* A cluster without keys whose static matrix is the identity, bit for bit:
+ * what load_scale and load_clusters make of it follows without their
+ * checks and scalings (no keys, cexp its parent's, the identity again);
+ * load_scale marks it in kexp for load_clusters. */
+static int load_cluster_plain(const uint8_t *p)
+{
+    uint32_t d = wire_get_u32(p + SCN_CLUSTER_KEY_COUNT);
+#pragma GCC unroll 12
+    for (int k = 0; k < 12; k++) /* one load, xor and or a word */
+        d |= wire_get_u32(p + SCN_CLUSTER_MATRIX + 4 * k) ^ load_identity_bits[k];
+    return d == 0;
+}
+
+/* Cluster i's (record p, parent's exponent cp) matrix checked, and its
+ * keys and matrix scaled (load_scale) into keys and c. */
+static scene_load_status_t load_cluster_values(struct load *L, uint32_t i, const uint8_t *p,
+                                               int32_t cp, scene_key_t *keys,
+                                               scene_cluster_t *c)
+{
+    for (int k = 0; k < 12; k++)
+        if (!load_within(p + SCN_CLUSTER_MATRIX + 4 * k, 1,
+                         k % 4 == 3 ? SCN_MAX_COORD : SCN_MAX_SCALE))
+            return load_range(L, "cluster ", i, "a matrix entry");
+    /* K(f) * M maps the cluster's coordinates (times 2^cexp[i]) to its
+     * parent's (times 2^cp): K's translations are the parent's lengths,
+     * its scales lose kexp, M's translations are lengths between K and
+     * M (2^(cp + kexp)), M's 3x3 part loses the rest (load_scale) */
+    int32_t mexp = L->cexp[i] - cp - L->kexp[i];
+    for (uint32_t k = c->first_key; k < c->first_key + c->key_count; k++) {
+        const uint8_t *kp = load_rec(L, SCN_SEC_KEYS, k);
+        L->len_exp = L->unit_exp + (int)cp;
+        keys[k].translate = load_lvec3(L, kp + SCN_KEY_TRANSLATE);
+        for (int a = 0; a < 3; a++) {
+            num_t v = num_from_f32_bits(load_scale_bits(
+                wire_get_u32(kp + SCN_KEY_SCALE + 4 * a), -(int)L->kexp[i]));
+            *(a == 0 ? &keys[k].scale.x : a == 1 ? &keys[k].scale.y : &keys[k].scale.z) = v;
+        }
+    }
+    L->len_exp = L->unit_exp + (int)(cp + L->kexp[i]);
+    for (int r = 0; r < 3; r++)
+        for (int k = 0; k < 4; k++)
+            c->local.m[r][k] =
+                k == 3 ? load_len(L, p + SCN_CLUSTER_MATRIX + 4 * (r * 4 + k))
+                       : num_from_f32_bits(load_scale_bits(
+                             wire_get_u32(p + SCN_CLUSTER_MATRIX + 4 * (r * 4 + k)),
+                             -(int)mexp));
+    return SCENE_LOAD_OK;
+}
+
 /* Parents come before children, nesting is bounded, key ranges are inside
  * the key section and their frames rise: the tree is acyclic by the first
  * rule alone. */
@@ -622,6 +680,9 @@ static scene_load_status_t load_clusters(struct load *L, scene_key_t *keys,
                                          scene_cluster_t *out, uint8_t *nesting)
 {
     uint32_t n_keys = L->sec[SCN_SEC_KEYS].present ? L->sec[SCN_SEC_KEYS].count : 0;
+    xform_t identity; /* what load_cluster_values makes of a plain cluster */
+    for (int k = 0; k < 12; k++)
+        identity.m[k / 4][k % 4] = num_from_f32_bits(load_identity_bits[k]);
     for (uint32_t i = 0; i < L->sec[SCN_SEC_CLUSTERS].count; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_CLUSTERS, i);
         uint32_t parent = wire_get_u32(p + SCN_CLUSTER_PARENT);
@@ -641,38 +702,14 @@ static scene_load_status_t load_clusters(struct load *L, scene_key_t *keys,
             if (keys[kf + k].frame <= keys[kf + k - 1].frame)
                 return load_bad(L, SCENE_LOAD_ERR_TREE, "cluster ", i,
                                 "key frames do not rise");
-        for (int k = 0; k < 12; k++)
-            if (!load_within(p + SCN_CLUSTER_MATRIX + 4 * k, 1,
-                             k % 4 == 3 ? SCN_MAX_COORD : SCN_MAX_SCALE))
-                return load_range(L, "cluster ", i, "a matrix entry");
-        /* K(f) * M maps the cluster's coordinates (times 2^cexp[i]) to its
-         * parent's (times 2^cp): K's translations are the parent's lengths,
-         * its scales lose kexp, M's translations are lengths between K and
-         * M (2^(cp + kexp)), M's 3x3 part loses the rest (load_scale) */
-        int32_t cp = i == 0 ? 0 : L->cexp[parent];
-        int32_t mexp = L->cexp[i] - cp - L->kexp[i];
-        for (uint32_t k = kf; k < kf + kc; k++) {
-            const uint8_t *kp = load_rec(L, SCN_SEC_KEYS, k);
-            L->len_exp = L->unit_exp + (int)cp;
-            keys[k].translate = load_lvec3(L, kp + SCN_KEY_TRANSLATE);
-            for (int a = 0; a < 3; a++) {
-                num_t v = num_from_f32_bits(load_scale_bits(
-                    wire_get_u32(kp + SCN_KEY_SCALE + 4 * a), -(int)L->kexp[i]));
-                *(a == 0 ? &keys[k].scale.x : a == 1 ? &keys[k].scale.y : &keys[k].scale.z) = v;
-            }
-        }
         scene_cluster_t *c = &out[i];
         c->parent = i == 0 ? SCENE_NO_CLUSTER : parent;
-        L->len_exp = L->unit_exp + (int)(cp + L->kexp[i]);
-        for (int r = 0; r < 3; r++)
-            for (int k = 0; k < 4; k++)
-                c->local.m[r][k] =
-                    k == 3 ? load_len(L, p + SCN_CLUSTER_MATRIX + 4 * (r * 4 + k))
-                           : num_from_f32_bits(load_scale_bits(
-                                 wire_get_u32(p + SCN_CLUSTER_MATRIX + 4 * (r * 4 + k)),
-                                 -(int)mexp));
         c->first_key = kf;
         c->key_count = kc;
+        if (L->kexp[i] == LOAD_KEXP_PLAIN)
+            c->local = identity;
+        else
+            LOAD_TRY(load_cluster_values(L, i, p, i == 0 ? 0 : L->cexp[parent], keys, c));
     }
     return SCENE_LOAD_OK;
 }
@@ -711,6 +748,37 @@ static int load_sliver(const vec3_t v[3], int unit_exp)
     return num_lt(h, num_scale2(NUM_C(SCN_LOAD_MIN_TRIANGLE_HEIGHT), unit_exp));
 }
 
+/* A triangle record whose material, cluster and component range are
+ * right: its 15 values checked (9 lengths, 6 texture coordinates) and
+ * loaded into o as load_prims's general path does, with its refusals. */
+_Static_assert(SCN_TRIANGLE_VALUES == 15 && SCN_PRIM_MAX_VALUES == 15,
+               "a triangle uses every value of its record");
+static scene_load_status_t load_triangle(struct load *L, uint32_t i, const uint8_t *v,
+                                         scene_prim_t *o)
+{
+    uint32_t over = 0;
+#pragma GCC unroll 9
+    for (int k = 0; k < 9; k++)
+        over |= (wire_get_u32(v + 4 * k) & ~LOAD_F32_SIGN) > load_bits_of(SCN_MAX_COORD);
+#pragma GCC unroll 6
+    for (int k = 9; k < 15; k++)
+        over |= (wire_get_u32(v + 4 * k) & ~LOAD_F32_SIGN) > load_bits_of(SCN_MAX_FACTOR);
+    if (over)
+        return load_range(L, "prim ", i, "a value is");
+    o->kind = SCENE_PRIM_TRIANGLE;
+    for (int k = 0; k < 3; k++) {
+        o->shape.triangle.v[k] = load_lvec3(L, v + 12 * k);
+        o->shape.triangle.tex_u[k] = load_num(v + 36 + 4 * k);
+        o->shape.triangle.tex_v[k] = load_num(v + 48 + 4 * k);
+    }
+    o->shape.triangle.smooth = 0;
+    if (load_sliver(o->shape.triangle.v, L->len_exp))
+        return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
+                        "degenerate or sliver triangle (a height under "
+                        "SCN_MIN_TRIANGLE_HEIGHT / 8)");
+    return SCENE_LOAD_OK;
+}
+
 static const int load_prim_values[] = {
     [SCN_PRIM_TRIANGLE] = SCN_TRIANGLE_VALUES, [SCN_PRIM_ELLIPSOID] = SCN_ELLIPSOID_VALUES,
     [SCN_PRIM_BOX] = SCN_BOX_VALUES,           [SCN_PRIM_DENSITY] = SCN_DENSITY_VALUES,
@@ -736,8 +804,15 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
             return load_bad(L, SCENE_LOAD_ERR_INDEX, "prim ", i, "material index out of range");
         if (clu >= n_clu)
             return load_bad(L, SCENE_LOAD_ERR_INDEX, "prim ", i, "cluster index out of range");
+        L->len_exp = clu < n_clu ? L->unit_exp + (int)L->cexp[clu] : L->unit_exp;
+        if (kind == SCN_PRIM_TRIANGLE && mat < n_mat && clu < n_clu && first == 0 &&
+            count == 0) {
+            out[i].cluster = clu;
+            out[i].material = mat;
+            LOAD_TRY(load_triangle(L, i, v, &out[i]));
+            continue;
+        }
         int nv = load_prim_values[kind];
-        L->len_exp = L->unit_exp + (int)L->cexp[clu];
         int nlen = kind == SCN_PRIM_TRIANGLE ? 9 : kind == SCN_PRIM_DENSITY ? 0 : nv;
         if (!load_coords(v, nlen) || !load_factors(v + 4 * nlen, nv - nlen))
             return load_range(L, "prim ", i, "a value is");
@@ -752,17 +827,7 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
         o->material = mat;
         switch (kind) {
         case SCN_PRIM_TRIANGLE:
-            o->kind = SCENE_PRIM_TRIANGLE;
-            for (int k = 0; k < 3; k++) {
-                o->shape.triangle.v[k] = load_lvec3(L, v + 12 * k);
-                o->shape.triangle.tex_u[k] = load_num(v + 36 + 4 * k);
-                o->shape.triangle.tex_v[k] = load_num(v + 48 + 4 * k);
-            }
-            o->shape.triangle.smooth = 0;
-            if (load_sliver(o->shape.triangle.v, L->len_exp))
-                return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
-                                "degenerate or sliver triangle (a height under "
-                                "SCN_MIN_TRIANGLE_HEIGHT / 8)");
+            LOAD_TRY(load_triangle(L, i, v, o));
             break;
         case SCN_PRIM_ELLIPSOID:
         case SCN_PRIM_BOX:
@@ -846,8 +911,19 @@ static scene_load_status_t load_normals(struct load *L, scene_prim_t *prims,
 /* The largest of most and shift + e over the n reals at p, |value| in
  * [2^e, 2^(e+1)); zeros, subnormals and not-finite values (left to the
  * checks that follow) count as none. */
-static int32_t load_max_exp(const uint8_t *p, int n, int32_t shift, int32_t most)
+LOAD_INLINE int32_t load_max_exp(const uint8_t *p, int n, int32_t shift, int32_t most)
 {
+    /* the largest magnitude's exponent field, when it is finite: the
+     * magnitude bits of finite values order as the values do */
+    uint32_t big = 0;
+#pragma GCC unroll 9
+    for (int i = 0; i < n; i++) {
+        uint32_t m = wire_get_u32(p + 4 * i) & ~LOAD_F32_SIGN;
+        big = m > big ? m : big;
+    }
+    int32_t field = (int32_t)(big >> 23);
+    if (field != 255)
+        return field != 0 && field - 127 + shift > most ? field - 127 + shift : most;
     for (int i = 0; i < n; i++) {
         int32_t field = (int32_t)((wire_get_u32(p + 4 * i) & LOAD_F32_EXP_MASK) >> 23);
         if (field != 0 && field != 255 && field - 127 + shift > most)
@@ -899,6 +975,11 @@ static scene_load_status_t load_scale(struct load *L, scene_t *s)
         uint32_t kf = wire_get_u32(p + SCN_CLUSTER_KEY_FIRST);
         uint32_t kc = wire_get_u32(p + SCN_CLUSTER_KEY_COUNT);
         int32_t cp = i > 0 && parent < i ? L->cexp[parent] : 0;
+        if (load_cluster_plain(p)) { /* no length, the identity */
+            L->kexp[i] = LOAD_KEXP_PLAIN;
+            L->cexp[i] = cp;
+            continue;
+        }
         int32_t ks = LOAD_EXP_NONE;
         if (kf <= n_keys && kc <= n_keys - kf)
             for (uint32_t k = kf; k < kf + kc; k++) {
@@ -917,7 +998,11 @@ static scene_load_status_t load_scale(struct load *L, scene_t *s)
         uint16_t kind = wire_get_u16(p + SCN_PRIM_KIND);
         uint32_t clu = wire_get_u32(p + SCN_PRIM_CLUSTER);
         int32_t c = clu < n_clu ? L->cexp[clu] : 0;
-        int n = kind == SCN_PRIM_TRIANGLE ? 9 : kind == SCN_PRIM_DENSITY ? 0 : 6;
+        if (kind == SCN_PRIM_TRIANGLE) { /* the common case, unrolled */
+            geom = load_max_exp(p + SCN_PRIM_VALUES, 9, c, geom);
+            continue;
+        }
+        int n = kind == SCN_PRIM_DENSITY ? 0 : 6;
         geom = load_max_exp(p + SCN_PRIM_VALUES, n, c, geom);
         uint32_t first = wire_get_u32(p + SCN_PRIM_FIRST), count = wire_get_u32(p + SCN_PRIM_COUNT);
         if (kind == SCN_PRIM_DENSITY && first <= n_comp && count <= n_comp - first)
