@@ -57,6 +57,7 @@ int dm_transfer_send(uint16_t cmd, dm_chunk_out_fn fn, void *ctx, uint32_t total
  * has already answered.
  * dm_bulk_send: tells the host len bytes at buf are there; returns their
  * word sum. */
+extern uint64_t dm_bulk_check_ticks; /* the last dm_bulk_receive's time summing */
 int dm_bulk_path(uint16_t cmd, uint32_t args);
 int dm_bulk_receive(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t split, uint32_t *len,
                     uint32_t *tail_sum);

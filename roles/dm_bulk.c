@@ -6,12 +6,15 @@
 
 #include "drivers/serial/hostlink_tx.h"
 #include "kernel/ktime.h"
+#include "proto/insn_mark.h"
 #include "kernel/memlayout.h"
 #include "kernel/param.h"
 #include "proto/hostlink.h"
 #include "proto/wire.h"
 #include "proto/wordsum.h"
 #include "roles/dm.h"
+
+uint64_t dm_bulk_check_ticks;
 
 int dm_bulk_path(uint16_t cmd, uint32_t args)
 {
@@ -79,7 +82,11 @@ static int dm_bulk_take(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t spli
                        (unsigned)k.offset, (unsigned)room, (unsigned)dm_bulk_offset(buf));
         return LINK_ERR_BAD_ARGS;
     }
+    uint64_t t0 = ktime_now();
+    insn_mark_trace_span_begin(); /* the upload's check (docs/trace.md) */
     uint32_t c = dm_bulk_sum(buf, k.length, split, tail_sum);
+    insn_mark_trace_span_end();
+    dm_bulk_check_ticks += ktime_now() - t0;
     if (c != k.sum) {
         if (!last_try)
             return LINK_ERR_CHECK; /* offered again */
@@ -100,6 +107,7 @@ int dm_bulk_receive(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t split, u
                     uint32_t *tail_sum)
 {
     /* Bytes whose sum fails are offered for again (proto/hostlink.h). */
+    dm_bulk_check_ticks = 0;
     for (int t = 1;; t++) {
         int r = dm_bulk_take(cmd, buf, room, split, len, tail_sum, t == LINK_BULK_TRIES);
         if (r != LINK_ERR_CHECK || t == LINK_BULK_TRIES)
