@@ -4,7 +4,7 @@
  * of the first and the last frame), the RC's relocation after a copy, and
  * a few pixels as an NC would trace them.
  *
- * Each input is tried twice: as it is, then with its total size and CRC
+ * Each input is tried twice: as it is, then with its total size and word sum
  * made right, so the fuzzer also reaches the records behind the checksum. */
 #include <stdint.h>
 #include <stdlib.h>

@@ -79,7 +79,7 @@ static scene_load_status_t try_load(const uint8_t *buf, size_t len, scene_load_e
     return st;
 }
 
-/* Recomputes the CRC so a deliberate field change reaches the field checks. */
+/* Recomputes the word sum so a deliberate field change reaches the field checks. */
 static void fix_crc(uint8_t *b, size_t len)
 {
     wire_put_u32(b + SCN_HDR_SUM, wordsum(b + SCN_SUM_START, len - SCN_SUM_START));
@@ -291,7 +291,7 @@ static void test_every_bit_flip(void)
     free(b);
 }
 
-/* Section table damage, with the CRC fixed so the table checks are reached. */
+/* Section table damage, with the word sum fixed so the table checks are reached. */
 static void test_section_table(void)
 {
     size_t len;

@@ -297,7 +297,7 @@ static void test_text_normals(void)
     CHECK(strstr(err, "no direction") != NULL);
 }
 
-/* Loads buf after edit(rec) of its first NORMALS record, with the CRC
+/* Loads buf after edit(rec) of its first NORMALS record, with the word sum
  * made good again; the loader's message. */
 static const char *load_edited(const uint8_t *buf, size_t len, int what)
 {
