@@ -243,14 +243,14 @@ void link_bulk_put(uint8_t *p, const struct link_bulk *k)
 {
     wire_put_u32(p, k->offset);
     wire_put_u32(p + 4, k->length);
-    wire_put_u32(p + 8, k->crc);
+    wire_put_u32(p + 8, k->sum);
 }
 
 void link_bulk_get(const uint8_t *p, struct link_bulk *k)
 {
     k->offset = wire_get_u32(p);
     k->length = wire_get_u32(p + 4);
-    k->crc = wire_get_u32(p + 8);
+    k->sum = wire_get_u32(p + 8);
 }
 
 uint8_t unit_role_of_core(uint32_t core)

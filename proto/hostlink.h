@@ -69,7 +69,8 @@ enum link_cmd {
     CMD_RENDER = 10,     /* struct link_render_args; LINK_PROGRESS frames while
                           * it renders -> struct link_render_stats */
     CMD_FRAME_PULL = 11, /* board sends the frame memory as one DATA transfer
-                          * (rows of r,g,b bytes) -> u16 width, u16 height, u32 crc */
+                          * (rows of r,g,b bytes) -> u16 width, u16 height, u32 check
+                          * (the transfer's CRC-32; the shared path's word sum) */
     CMD_LINE_LATENCY = 12, /* u32 rounds, u16 core: that many MSG_PING round trips, one
                             * after another, on core's line (core 1: DM<->RC; an NC:
                             * RC<->NC), each timed -> struct link_latency_result */
@@ -181,37 +182,42 @@ static inline uint8_t link_pattern_byte(uint32_t i)
  * The host tool backs the board's whole RAM with a file it maps too
  * (proto/board_map.h: file offset = guest address - BOARD_RAM_BASE).  Bulk
  * bytes then move as one memcpy on the host; only a LINK_BULK frame saying
- * where they are crosses the serial link, and the CRC-32 checks stay:
+ * where they are crosses the serial link, with the bytes' word sum
+ * (proto/wordsum.h: two adds a word, where a CRC-32 costs a table step a
+ * byte):
  *
  *   offset  size  field
  *   0       4     offset   bytes from BOARD_RAM_BASE
  *   4       4     length   bytes
- *   8       4     crc      CRC-32 of those bytes (0 in an offer)
+ *   8       4     sum      word sum of those bytes (0 in an offer)
  *
  * Host -> board (CMD_LINK_SINK, CMD_SCENE_LOAD): the board answers the
- * command with a LINK_BULK offer (offset, room in bytes, crc 0) of memory it
+ * command with a LINK_BULK offer (offset, room in bytes, sum 0) of memory it
  * set aside, or at once with an error LINK_RESULT when it cannot take the
  * bytes.  The host writes its bytes there and sends LINK_BULK (offset,
- * length <= room, crc); the board checks the offset, the length and the CRC
+ * length <= room, sum); the board checks the offset, the length and the sum
  * of what it finds, answers LINK_ACK with that frame's seq (the bytes are on
  * the board), and then the command's LINK_RESULT as on the serial path.  When
- * the CRC does not match, the board offers the same memory again (a new
+ * the sum does not match, the board offers the same memory again (a new
  * LINK_BULK offer) and the host copies its bytes again, up to LINK_BULK_TRIES
- * offers in all; then the board answers an error.
+ * offers in all; then the board answers an error.  A scene's sum is taken in
+ * the same pass as its header's (SCN_HDR_SUM), which the loader then
+ * compares without reading the bytes again.
  *
  * Board -> host (CMD_LINK_SOURCE, CMD_FRAME_PULL): the board sends LINK_BULK
- * (offset, length, crc) of bytes already in its RAM, then the command's
+ * (offset, length, sum) of bytes already in its RAM, then the command's
  * LINK_RESULT.  They stay valid until the host's next command.  The frame
  * memory is sent as it is held, one little-endian u32 0x00RRGGBB per pixel,
- * row after row (proto/render_link.h link_frame_word_rgb), and the crc of
- * CMD_FRAME_PULL's result is then the CRC-32 of those words.  When the bytes
- * the host finds do not have the CRC, the host sends CMD_FRAME_PULL again, up
- * to LINK_BULK_TRIES times in all (the frame memory is unchanged until the
- * next CMD_RENDER). */
+ * row after row (proto/render_link.h link_frame_word_rgb), and the check of
+ * CMD_FRAME_PULL's result is then the word sum of those words.  When the
+ * bytes the host finds do not have the sum, the host sends CMD_FRAME_PULL
+ * again, up to LINK_BULK_TRIES times in all (the frame memory is unchanged
+ * until the next CMD_RENDER).  The link tests' results (CMD_LINK_SINK,
+ * CMD_LINK_SOURCE) carry the CRC-32 of the pattern on both paths. */
 #define LINK_BULK_SIZE 12
 #define LINK_BULK_TRIES 3
 struct link_bulk {
-    uint32_t offset, length, crc;
+    uint32_t offset, length, sum;
 };
 void link_bulk_put(uint8_t *p, const struct link_bulk *k);
 void link_bulk_get(const uint8_t *p, struct link_bulk *k);

@@ -19,13 +19,17 @@
 #define LINK_SCENE_LOAD_ARGS_SIZE 4
 
 /* CMD_SCENE_LOAD result. */
-#define LINK_SCENE_INFO_SIZE 20
+#define LINK_SCENE_INFO_SIZE 36
 struct link_scene_info {
     uint16_t width, height;  /* image size */
     uint32_t frames;         /* frames of the animation */
     uint32_t compiled_bytes; /* bytes received */
     uint32_t blob_bytes;     /* bound of one prepared frame (render_blob_bytes) */
     uint32_t blob_limit;     /* the IMSU block it must fit in */
+    uint32_t check_ms;       /* the DM's time: the upload's check (shared path) */
+    uint32_t load_ms;        /* the load into its IMSU block, the index included */
+    uint32_t prepare_ms;     /* frame 0's preparation */
+    uint32_t prims;          /* the scene's primitives */
 };
 
 /* CMD_RENDER switches: each turns one speed-up off (the image stays the
@@ -259,6 +263,10 @@ static inline void link_scene_info_put(uint8_t *p, const struct link_scene_info 
     wire_put_u32(p + 8, s->compiled_bytes);
     wire_put_u32(p + 12, s->blob_bytes);
     wire_put_u32(p + 16, s->blob_limit);
+    wire_put_u32(p + 20, s->check_ms);
+    wire_put_u32(p + 24, s->load_ms);
+    wire_put_u32(p + 28, s->prepare_ms);
+    wire_put_u32(p + 32, s->prims);
 }
 static inline void link_scene_info_get(const uint8_t *p, struct link_scene_info *s)
 {
@@ -268,6 +276,10 @@ static inline void link_scene_info_get(const uint8_t *p, struct link_scene_info 
     s->compiled_bytes = wire_get_u32(p + 8);
     s->blob_bytes = wire_get_u32(p + 12);
     s->blob_limit = wire_get_u32(p + 16);
+    s->check_ms = wire_get_u32(p + 20);
+    s->load_ms = wire_get_u32(p + 24);
+    s->prepare_ms = wire_get_u32(p + 28);
+    s->prims = wire_get_u32(p + 32);
 }
 
 static inline void link_render_args_put(uint8_t *p, const struct link_render_args *a)

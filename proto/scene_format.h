@@ -10,7 +10,7 @@
  *   4       2     version SCN_VERSION; any other value is refused
  *   6       2     section count, 1..SCN_SEC_COUNT
  *   8       4     total size in bytes (header + table + sections)
- *   12      4     crc32 (proto/crc32.h) of bytes 16 .. total size - 1
+ *   12      4     word sum (proto/wordsum.h) of bytes 16 .. total size - 1
  *   16      16*n  section table: per section u32 kind, u32 offset (from the
  *                 start of the file, 4-byte aligned), u32 size in bytes,
  *                 u32 record count; size must equal count * record size
@@ -96,21 +96,23 @@
 #define SCN_MAGIC_1 '1'
 #define SCN_MAGIC_2 'S'
 #define SCN_MAGIC_3 'C'
-#define SCN_VERSION 5 /* 2: 32-bit cluster indices; 3: VIEW carries min_weight;
+#define SCN_VERSION 6 /* 2: 32-bit cluster indices; 3: VIEW carries min_weight;
                          4: VIEW carries density_steps; 5: MATERIALS 52
                          bytes (normal and attribute maps), map kinds
                          NORMAL and ATTRIBUTE.  VIEW_KEYS (kind 11)
                          and HAZE (kind 12) came later without a new
                          version: a file without
                          it is what it was, and a loader from before it
-                         refuses one with it as an unknown section kind */
+                         refuses one with it as an unknown section kind.
+                         6: the header's check is the word sum, not a
+                         CRC-32 */
 #define SCN_HEADER_SIZE 16
 #define SCN_HDR_MAGIC 0
 #define SCN_HDR_VERSION 4
 #define SCN_HDR_SECTIONS 6
 #define SCN_HDR_TOTAL 8
-#define SCN_HDR_CRC 12
-#define SCN_CRC_START 16 /* the CRC covers everything after the header */
+#define SCN_HDR_SUM 12
+#define SCN_SUM_START 16 /* the word sum covers everything after the header */
 
 #define SCN_SECENT_SIZE 16
 #define SCN_SECENT_KIND 0

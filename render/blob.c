@@ -43,7 +43,7 @@ render_blob_status_t render_blob_bytes(const uint8_t *compiled, size_t len, size
 }
 
 /* render_blob_bytes_layout; crc_later: scene_load follows on the same
- * bytes and checks the CRC (render_blob_load). */
+ * bytes and checks the word sum (render_blob_load). */
 static render_blob_status_t blob_bound(const uint8_t *compiled, size_t len,
                                        const render_layout_t *layout, int crc_later,
                                        size_t *bytes, render_blob_error_t *err)
@@ -78,6 +78,14 @@ render_blob_status_t render_blob_load(const uint8_t *compiled, size_t len, void 
                                       size_t size, const char *limit_name, render_blob_t **out,
                                       render_blob_error_t *err)
 {
+    return render_blob_load_summed(compiled, len, NULL, block, size, limit_name, out, err);
+}
+
+render_blob_status_t render_blob_load_summed(const uint8_t *compiled, size_t len,
+                                             const uint32_t *sum, void *block, size_t size,
+                                             const char *limit_name, render_blob_t **out,
+                                             render_blob_error_t *err)
+{
     size_t need;
     *out = NULL;
     if (!blob_aligned(block)) {
@@ -85,9 +93,9 @@ render_blob_status_t render_blob_load(const uint8_t *compiled, size_t len, void 
                   "blob block NULL or not aligned to RENDER_RELOCATE_ALIGN");
         return err->status;
     }
-    /* The bound without the CRC (scene_load checks it next); a refusal
-     * asks again with the CRC, so a damaged scene is refused as
-     * render_blob_bytes refuses it (the CRC before the section table). */
+    /* The bound without the word sum (scene_load checks it next); a
+     * refusal asks again with the sum, so a damaged scene is refused as
+     * render_blob_bytes refuses it (the sum before the section table). */
     if ((blob_bound(compiled, len, &render_layout_native, 1, &need, err) != RENDER_BLOB_OK ||
          need > size) &&
         render_blob_bytes(compiled, len, &need, err) != RENDER_BLOB_OK)
@@ -102,7 +110,8 @@ render_blob_status_t render_blob_load(const uint8_t *compiled, size_t len, void 
     arena_init(&arena, block, size);
     render_blob_t *blob = ARENA_NEW_ARRAY(&arena, render_blob_t, 1);
     scene_load_error_t lerr;
-    if (!blob || scene_load(compiled, len, &arena, &blob->scene, &lerr) != SCENE_LOAD_OK) {
+    if (!blob ||
+        scene_load_summed(compiled, len, sum, &arena, &blob->scene, &lerr) != SCENE_LOAD_OK) {
         blob_fail(err, RENDER_BLOB_ERR_LOAD, "scene refused: %s",
                   blob ? lerr.message : "no room for the blob header");
         return err->status;

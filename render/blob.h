@@ -114,6 +114,12 @@ render_blob_status_t render_blob_load(const uint8_t *compiled, size_t len, void 
                                       render_blob_error_t *err);
 render_blob_status_t render_blob_prepare(render_blob_t *blob, uint32_t frame_index, size_t size,
                                          render_blob_error_t *err);
+/* render_blob_load with the body's word sum summed already by the caller
+ * (scene_load_summed; NULL: summed here). */
+render_blob_status_t render_blob_load_summed(const uint8_t *compiled, size_t len,
+                                             const uint32_t *sum, void *block, size_t size,
+                                             const char *limit_name, render_blob_t **out,
+                                             render_blob_error_t *err);
 
 /* The RC's forwarding: the blob at src (src->bytes bytes, at most size)
  * copied to block, eight words a step, and relocated there.  Leaves the

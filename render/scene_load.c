@@ -10,15 +10,32 @@
 
 #include <stdarg.h>
 
-#include "proto/crc32.h"
 #include "proto/scene_format.h"
 #include "proto/textfmt.h"
 #include "proto/wire.h"
+#include "proto/wordsum.h"
 #include "render/render.h"
 #include "render/vec3.h"
 
 #define LOAD_F32_EXP_MASK 0x7f800000u
 #define LOAD_F32_SIGN 0x80000000u
+#define LOAD_INLINE static inline __attribute__((always_inline))
+#define LOAD_KEXP_PLAIN INT32_MIN
+
+/* wire_get_u32 as one load where the target reads little-endian words at
+ * any alignment (the board and the hosts): the compiler does not always
+ * merge wire.h's four byte loads, and the loader reads every word of a
+ * scene */
+LOAD_INLINE uint32_t load_u32(const uint8_t *p)
+{
+#if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__
+    uint32_t w;
+    __builtin_memcpy(&w, p, sizeof w); /* a plain load: -ffreestanding would call memcpy */
+    return w;
+#else
+    return wire_get_u32(p);
+#endif
+}
 
 struct load_section {
     int present;
@@ -35,8 +52,10 @@ struct load {
                      plus the exponent of the cluster it lies in */
     int32_t *cexp; /* scratch, per cluster: its coordinates are stored times
                       2^(unit_exp + cexp[i]) (load_scale) */
-    int32_t *kexp; /* scratch, per cluster: its keys' scales times 2^-kexp[i] */
-    int crc_later; /* the header alone: scene_load checks the CRC next */
+    int32_t *kexp; /* scratch, per cluster: its keys' scales times 2^-kexp[i];
+                      LOAD_KEXP_PLAIN for a plain cluster (load_cluster_plain) */
+    int crc_later; /* the header alone: scene_load checks the word sum next */
+    const uint32_t *sum; /* the body's word sum, summed by the caller, or NULL */
 };
 
 /* ------------------------------------------------------------ messages */
@@ -122,9 +141,9 @@ static int load_pos(uint32_t bits, float hi)
 
 static int load_zero(uint32_t bits) { return (bits & ~LOAD_F32_SIGN) == 0; }
 
-static num_t load_num(const uint8_t *p) { return num_from_f32_bits(wire_get_u32(p)); }
+LOAD_INLINE num_t load_num(const uint8_t *p) { return num_from_f32_bits(load_u32(p)); }
 
-static vec3_t load_vec3(const uint8_t *p)
+LOAD_INLINE vec3_t load_vec3(const uint8_t *p)
 {
     vec3_t v = {load_num(p), load_num(p + 4), load_num(p + 8)};
     return v;
@@ -132,7 +151,7 @@ static vec3_t load_vec3(const uint8_t *p)
 
 /* binary32 bits times 2^e, by the exponent field: exact; zeros, subnormals
  * and results under the smallest normal give a zero of the same sign */
-static uint32_t load_scale_bits(uint32_t bits, int e)
+LOAD_INLINE uint32_t load_scale_bits(uint32_t bits, int e)
 {
     int32_t exp = (int32_t)((bits & LOAD_F32_EXP_MASK) >> 23);
     if (exp == 0 || exp == 255)
@@ -148,12 +167,12 @@ static uint32_t load_scale_bits(uint32_t bits, int e)
 
 /* A length: scaled to the scene (scene_t.unit_exp) and by the power of two
  * of the cluster it lies in (L->len_exp). */
-static num_t load_len(const struct load *L, const uint8_t *p)
+LOAD_INLINE num_t load_len(const struct load *L, const uint8_t *p)
 {
-    return num_from_f32_bits(load_scale_bits(wire_get_u32(p), L->len_exp));
+    return num_from_f32_bits(load_scale_bits(load_u32(p), L->len_exp));
 }
 
-static vec3_t load_lvec3(const struct load *L, const uint8_t *p)
+LOAD_INLINE vec3_t load_lvec3(const struct load *L, const uint8_t *p)
 {
     vec3_t v = {load_len(L, p), load_len(L, p + 4), load_len(L, p + 8)};
     return v;
@@ -165,11 +184,15 @@ static rgb_t load_rgb(const uint8_t *p)
     return c;
 }
 
-/* n consecutive reals at p, each within +-hi */
-static int load_within(const uint8_t *p, int n, float hi)
+/* n consecutive reals at p, each within +-hi (hi > 0, finite): load_in(v,
+ * -hi, hi) as one compare, since the magnitude bits of the finite values
+ * order as their magnitudes do and those of an infinity or a NaN lie above
+ * every finite value's */
+LOAD_INLINE int load_within(const uint8_t *p, int n, float hi)
 {
+    uint32_t h = load_bits_of(hi);
     for (int i = 0; i < n; i++)
-        if (!load_in(wire_get_u32(p + 4 * i), -hi, hi))
+        if ((load_u32(p + 4 * i) & ~LOAD_F32_SIGN) > h)
             return 0;
     return 1;
 }
@@ -183,7 +206,7 @@ static int load_factors(const uint8_t *p, int n) { return load_within(p, n, SCN_
 static int load_units(const uint8_t *p, int n, float hi)
 {
     for (int i = 0; i < n; i++)
-        if (!load_in(wire_get_u32(p + 4 * i), 0.0f, hi))
+        if (!load_in(load_u32(p + 4 * i), 0.0f, hi))
             return 0;
     return 1;
 }
@@ -222,7 +245,7 @@ static scene_load_status_t load_header(struct load *L, size_t len)
         return load_fail(L, SCENE_LOAD_ERR_VERSION,
                          "format version %ld (this loader reads version %ld)", (long)version,
                          (long)SCN_VERSION);
-    uint32_t total = wire_get_u32(b + SCN_HDR_TOTAL);
+    uint32_t total = load_u32(b + SCN_HDR_TOTAL);
     if (total > SCN_MAX_SIZE)
         return load_fail(L, SCENE_LOAD_ERR_SIZE, "total size %ld is over the limit of %ld bytes",
                          (long)total, (long)SCN_MAX_SIZE);
@@ -242,18 +265,19 @@ static scene_load_status_t load_header(struct load *L, size_t len)
                          "total size %ld cannot hold the section table of %ld entries",
                          (long)total, (long)nsec);
     L->total = total;
-    if (!L->crc_later && crc32(b + SCN_CRC_START, total - SCN_CRC_START) !=
-                             wire_get_u32(b + SCN_HDR_CRC))
+    if (!L->crc_later &&
+        (L->sum ? *L->sum : wordsum(b + SCN_SUM_START, total - SCN_SUM_START)) !=
+            load_u32(b + SCN_HDR_SUM))
         return load_fail(L, SCENE_LOAD_ERR_CRC, "checksum mismatch: the scene is corrupt");
     /* The table: kinds known and unique, bodies inside the file, after the
      * table, aligned, not overlapping, size = count * record size. */
     uint32_t lo[SCN_SEC_COUNT], hi[SCN_SEC_COUNT];
     for (uint32_t i = 0; i < nsec; i++) {
         const uint8_t *e = b + SCN_HEADER_SIZE + i * SCN_SECENT_SIZE;
-        uint32_t kind = wire_get_u32(e + SCN_SECENT_KIND);
-        uint32_t off = wire_get_u32(e + SCN_SECENT_OFFSET);
-        uint32_t bytes = wire_get_u32(e + SCN_SECENT_BYTES);
-        uint32_t count = wire_get_u32(e + SCN_SECENT_COUNT);
+        uint32_t kind = load_u32(e + SCN_SECENT_KIND);
+        uint32_t off = load_u32(e + SCN_SECENT_OFFSET);
+        uint32_t bytes = load_u32(e + SCN_SECENT_BYTES);
+        uint32_t count = load_u32(e + SCN_SECENT_COUNT);
         if (kind < 1 || kind > SCN_SEC_COUNT)
             return load_fail(L, SCENE_LOAD_ERR_SECTION, "section entry %ld: unknown kind %ld",
                              (long)i, (long)kind);
@@ -306,7 +330,7 @@ static scene_load_status_t load_camera(struct load *L, const uint8_t *p, const u
     if (!load_coords(p, 6) || !load_factors(p + 24, 3))
         return load_fail(L, SCENE_LOAD_ERR_VALUE, "%s: a coordinate is " LOAD_LIMITS, what,
                          LOAD_LIMIT_ARGS);
-    if (!load_pos(wire_get_u32(tan), SCN_MAX_TAN_HALF_FOV))
+    if (!load_pos(load_u32(tan), SCN_MAX_TAN_HALF_FOV))
         return load_fail(L, SCENE_LOAD_ERR_VALUE, "%s: field of view out of range", what);
     c->eye = load_lvec3(L, p);
     c->look_at = load_lvec3(L, p + 12);
@@ -321,8 +345,8 @@ static scene_load_status_t load_view(struct load *L, scene_t *s)
     uint16_t w = wire_get_u16(p + SCN_VIEW_WIDTH), h = wire_get_u16(p + SCN_VIEW_HEIGHT);
     uint16_t depth = wire_get_u16(p + SCN_VIEW_MAX_DEPTH);
     uint16_t flags = wire_get_u16(p + SCN_VIEW_FLAGS);
-    uint32_t frames = wire_get_u32(p + SCN_VIEW_FRAMES);
-    uint32_t steps = wire_get_u32(p + SCN_VIEW_DENSITY_STEPS);
+    uint32_t frames = load_u32(p + SCN_VIEW_FRAMES);
+    uint32_t steps = load_u32(p + SCN_VIEW_DENSITY_STEPS);
     if (w < 1 || w > SCN_MAX_WIDTH || h < 1 || h > SCN_MAX_HEIGHT)
         return load_fail(L, SCENE_LOAD_ERR_LIMIT, "image size %ldx%ld outside 1..1024 per side",
                          (long)w, (long)h);
@@ -384,11 +408,11 @@ static scene_load_status_t load_light_values(struct load *L, const uint8_t *p, u
     if (!load_coords(LOAD_LIGHT_AT(POSITION), 3) || !load_factors(LOAD_LIGHT_AT(DIRECTION), 3))
         return load_range(L, what, i, "position or direction");
     const uint8_t *d = LOAD_LIGHT_AT(DIRECTION);
-    if (kind != SCN_LIGHT_POINT && load_zero(wire_get_u32(d)) &&
-        load_zero(wire_get_u32(d + 4)) && load_zero(wire_get_u32(d + 8)))
+    if (kind != SCN_LIGHT_POINT && load_zero(load_u32(d)) &&
+        load_zero(load_u32(d + 4)) && load_zero(load_u32(d + 8)))
         return load_bad(L, SCENE_LOAD_ERR_VALUE, what, i, "direction is zero");
-    uint32_t ci = wire_get_u32(LOAD_LIGHT_AT(COS_INNER));
-    uint32_t co = wire_get_u32(LOAD_LIGHT_AT(COS_OUTER));
+    uint32_t ci = load_u32(LOAD_LIGHT_AT(COS_INNER));
+    uint32_t co = load_u32(LOAD_LIGHT_AT(COS_OUTER));
     if (!load_in(ci, -1.0f, 1.0f) || !load_in(co, -1.0f, 1.0f) ||
         (kind == SCN_LIGHT_SPOT && load_order_key(co) >= load_order_key(ci)))
         return load_bad(L, SCENE_LOAD_ERR_VALUE, what, i,
@@ -439,8 +463,8 @@ static scene_load_status_t load_view_keys(struct load *L, scene_view_key_t *out)
     uint32_t rank_before = 0, frame_before = 0; /* rank: 1 the camera, 2 + i light i */
     for (uint32_t i = 0; i < n; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_VIEW_KEYS, i);
-        uint32_t frame = wire_get_u32(p + SCN_VKEY_FRAME);
-        uint32_t target = wire_get_u32(p + SCN_VKEY_TARGET);
+        uint32_t frame = load_u32(p + SCN_VKEY_FRAME);
+        uint32_t target = load_u32(p + SCN_VKEY_TARGET);
         if (target != SCN_VKEY_CAMERA && target >= n_light)
             return load_bad(L, SCENE_LOAD_ERR_INDEX, "view key ", i,
                             "names neither the camera nor a light");
@@ -457,7 +481,7 @@ static scene_load_status_t load_view_keys(struct load *L, scene_view_key_t *out)
         scene_view_key_t *k = &out[i];
         k->frame = frame;
         if (target == SCN_VKEY_CAMERA) {
-            if (wire_get_u32(p + SCN_VKEY_RESERVED) != 0)
+            if (load_u32(p + SCN_VKEY_RESERVED) != 0)
                 return load_bad(L, SCENE_LOAD_ERR_VALUE, "view key ", i,
                                 "reserved field not zero");
             k->target = SCENE_VIEW_KEY_CAMERA;
@@ -465,7 +489,7 @@ static scene_load_status_t load_view_keys(struct load *L, scene_view_key_t *out)
                                  "camera key", &k->v.camera));
         } else {
             k->target = (uint16_t)target;
-            uint32_t kind = wire_get_u32(load_rec(L, SCN_SEC_LIGHTS, target) + SCN_LIGHT_KIND);
+            uint32_t kind = load_u32(load_rec(L, SCN_SEC_LIGHTS, target) + SCN_LIGHT_KIND);
             LOAD_TRY(load_light_values(L, p + SCN_VKEY_COLOUR, kind, "light key ", i,
                                        &k->v.light));
         }
@@ -477,7 +501,7 @@ static scene_load_status_t load_lights(struct load *L, scene_light_t *out)
 {
     for (uint32_t i = 0; i < L->sec[SCN_SEC_LIGHTS].count; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_LIGHTS, i);
-        uint32_t kind = wire_get_u32(p + SCN_LIGHT_KIND);
+        uint32_t kind = load_u32(p + SCN_LIGHT_KIND);
         if (kind < SCN_LIGHT_PARALLEL || kind > SCN_LIGHT_SPOT)
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "light ", i, "unknown kind");
         LOAD_TRY(load_light_values(L, p + SCN_LIGHT_COLOUR, kind, "light ", i, &out[i]));
@@ -505,7 +529,7 @@ static scene_load_status_t load_maps(struct load *L, scene_map_t *out, uint8_t *
         const uint8_t *p = load_rec(L, SCN_SEC_MAPS, i);
         int kind = load_map_kind(wire_get_u16(p + SCN_MAP_KIND));
         uint16_t w = wire_get_u16(p + SCN_MAP_WIDTH), h = wire_get_u16(p + SCN_MAP_HEIGHT);
-        uint32_t first = wire_get_u32(p + SCN_MAP_FIRST);
+        uint32_t first = load_u32(p + SCN_MAP_FIRST);
         if (kind < 0)
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "map ", i, "unknown kind");
         if (wire_get_u16(p + SCN_MAP_RESERVED) != 0)
@@ -516,10 +540,10 @@ static scene_load_status_t load_maps(struct load *L, scene_map_t *out, uint8_t *
         if (first > n_texels || bytes > n_texels - first)
             return load_bad(L, SCENE_LOAD_ERR_INDEX, "map ", i,
                             "texels outside the texel section");
-        if (!load_pos(wire_get_u32(p + SCN_MAP_REPEAT_U), SCN_MAX_REPEAT) ||
-            !load_pos(wire_get_u32(p + SCN_MAP_REPEAT_V), SCN_MAX_REPEAT))
+        if (!load_pos(load_u32(p + SCN_MAP_REPEAT_U), SCN_MAX_REPEAT) ||
+            !load_pos(load_u32(p + SCN_MAP_REPEAT_V), SCN_MAX_REPEAT))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "map ", i, "repeat not > 0 and finite");
-        if (!load_in(wire_get_u32(p + SCN_MAP_BUMP_DEPTH), 0.0f, SCN_MAX_FACTOR))
+        if (!load_in(load_u32(p + SCN_MAP_BUMP_DEPTH), 0.0f, SCN_MAX_FACTOR))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "map ", i, "bump depth out of range");
         /* a normal map's z (along N) is at least 1: every texel's normal
          * has a length normalize can take, and faces out of the surface */
@@ -560,7 +584,7 @@ static scene_load_status_t load_materials(struct load *L, const scene_map_t *map
         if (!load_units(p + SCN_MAT_COLOUR, 8, 1.0f))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "material ", i,
                             "colour, dic, drc, src, trc or fresnel not within 0..1");
-        if (!load_in(wire_get_u32(p + SCN_MAT_IOR), 1.0f, SCN_MAX_IOR))
+        if (!load_in(load_u32(p + SCN_MAT_IOR), 1.0f, SCN_MAX_IOR))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "material ", i, "ior not within 1..10");
         uint16_t phong = wire_get_u16(p + SCN_MAT_PHONG);
         if (phong > SCN_MAX_PHONG)
@@ -606,17 +630,17 @@ static scene_load_status_t load_keys(struct load *L, scene_key_t *out)
         if (!load_coords(p + SCN_KEY_TRANSLATE, 3) ||
             !load_within(p + SCN_KEY_SCALE, 3, SCN_MAX_SCALE))
             return load_range(L, "key ", i, "translation or scale");
-        if (wire_get_u32(p + SCN_KEY_FRAME) >= SCN_MAX_FRAMES)
+        if (load_u32(p + SCN_KEY_FRAME) >= SCN_MAX_FRAMES)
             return load_bad(L, SCENE_LOAD_ERR_LIMIT, "key ", i, "frame number over the limit");
         for (int k = 0; k < 4; k++)
-            if (!load_in(wire_get_u32(p + SCN_KEY_ROTATION + 4 * k), -1.0f, 1.0f))
+            if (!load_in(load_u32(p + SCN_KEY_ROTATION + 4 * k), -1.0f, 1.0f))
                 return load_bad(L, SCENE_LOAD_ERR_VALUE, "key ", i,
                                 "quaternion component not within -1..1");
         for (int k = 0; k < 3; k++)
-            if (load_zero(wire_get_u32(p + SCN_KEY_SCALE + 4 * k)))
+            if (load_zero(load_u32(p + SCN_KEY_SCALE + 4 * k)))
                 return load_bad(L, SCENE_LOAD_ERR_VALUE, "key ", i, "scale is zero");
         scene_key_t *k = &out[i];
-        k->frame = wire_get_u32(p + SCN_KEY_FRAME);
+        k->frame = load_u32(p + SCN_KEY_FRAME);
         k->translate = load_lvec3(L, p + SCN_KEY_TRANSLATE);
         k->rot_w = load_num(p + SCN_KEY_ROTATION);
         k->rot_x = load_num(p + SCN_KEY_ROTATION + 4);
@@ -634,6 +658,61 @@ static scene_load_status_t load_keys(struct load *L, scene_key_t *out)
     return SCENE_LOAD_OK;
 }
 
+/* The identity, the static matrix of the clusters the compiler's bounding
+ * hierarchy makes: rows of the 3x4 matrix as binary32 bits. */
+static const uint32_t load_identity_bits[12] = {
+    0x3f800000u, 0, 0, 0, 0, 0x3f800000u, 0, 0, 0, 0, 0x3f800000u, 0,
+};
+
+/* A cluster without keys whose static matrix is the identity, bit for bit:
+ * what load_scale and load_clusters make of it follows without their
+ * checks and scalings (no keys, cexp its parent's, the identity again);
+ * load_scale marks it in kexp for load_clusters. */
+static int load_cluster_plain(const uint8_t *p)
+{
+    uint32_t d = load_u32(p + SCN_CLUSTER_KEY_COUNT);
+#pragma GCC unroll 12
+    for (int k = 0; k < 12; k++) /* one load, xor and or a word */
+        d |= load_u32(p + SCN_CLUSTER_MATRIX + 4 * k) ^ load_identity_bits[k];
+    return d == 0;
+}
+
+/* Cluster i's (record p, parent's exponent cp) matrix checked, and its
+ * keys and matrix scaled (load_scale) into keys and c. */
+static scene_load_status_t load_cluster_values(struct load *L, uint32_t i, const uint8_t *p,
+                                               int32_t cp, scene_key_t *keys,
+                                               scene_cluster_t *c)
+{
+    for (int k = 0; k < 12; k++)
+        if (!load_within(p + SCN_CLUSTER_MATRIX + 4 * k, 1,
+                         k % 4 == 3 ? SCN_MAX_COORD : SCN_MAX_SCALE))
+            return load_range(L, "cluster ", i, "a matrix entry");
+    /* K(f) * M maps the cluster's coordinates (times 2^cexp[i]) to its
+     * parent's (times 2^cp): K's translations are the parent's lengths,
+     * its scales lose kexp, M's translations are lengths between K and
+     * M (2^(cp + kexp)), M's 3x3 part loses the rest (load_scale) */
+    int32_t mexp = L->cexp[i] - cp - L->kexp[i];
+    for (uint32_t k = c->first_key; k < c->first_key + c->key_count; k++) {
+        const uint8_t *kp = load_rec(L, SCN_SEC_KEYS, k);
+        L->len_exp = L->unit_exp + (int)cp;
+        keys[k].translate = load_lvec3(L, kp + SCN_KEY_TRANSLATE);
+        for (int a = 0; a < 3; a++) {
+            num_t v = num_from_f32_bits(load_scale_bits(
+                load_u32(kp + SCN_KEY_SCALE + 4 * a), -(int)L->kexp[i]));
+            *(a == 0 ? &keys[k].scale.x : a == 1 ? &keys[k].scale.y : &keys[k].scale.z) = v;
+        }
+    }
+    L->len_exp = L->unit_exp + (int)(cp + L->kexp[i]);
+    for (int r = 0; r < 3; r++)
+        for (int k = 0; k < 4; k++)
+            c->local.m[r][k] =
+                k == 3 ? load_len(L, p + SCN_CLUSTER_MATRIX + 4 * (r * 4 + k))
+                       : num_from_f32_bits(load_scale_bits(
+                             load_u32(p + SCN_CLUSTER_MATRIX + 4 * (r * 4 + k)),
+                             -(int)mexp));
+    return SCENE_LOAD_OK;
+}
+
 /* Parents come before children, nesting is bounded, key ranges are inside
  * the key section and their frames rise: the tree is acyclic by the first
  * rule alone. */
@@ -641,11 +720,14 @@ static scene_load_status_t load_clusters(struct load *L, scene_key_t *keys,
                                          scene_cluster_t *out, uint8_t *nesting)
 {
     uint32_t n_keys = L->sec[SCN_SEC_KEYS].present ? L->sec[SCN_SEC_KEYS].count : 0;
+    xform_t identity; /* what load_cluster_values makes of a plain cluster */
+    for (int k = 0; k < 12; k++)
+        identity.m[k / 4][k % 4] = num_from_f32_bits(load_identity_bits[k]);
     for (uint32_t i = 0; i < L->sec[SCN_SEC_CLUSTERS].count; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_CLUSTERS, i);
-        uint32_t parent = wire_get_u32(p + SCN_CLUSTER_PARENT);
-        uint32_t kc = wire_get_u32(p + SCN_CLUSTER_KEY_COUNT);
-        uint32_t kf = wire_get_u32(p + SCN_CLUSTER_KEY_FIRST);
+        uint32_t parent = load_u32(p + SCN_CLUSTER_PARENT);
+        uint32_t kc = load_u32(p + SCN_CLUSTER_KEY_COUNT);
+        uint32_t kf = load_u32(p + SCN_CLUSTER_KEY_FIRST);
         if (i == 0 ? parent != SCN_NO_CLUSTER : parent >= i)
             return load_bad(L, SCENE_LOAD_ERR_TREE, "cluster ", i,
                             i == 0 ? "the root has a parent"
@@ -660,38 +742,14 @@ static scene_load_status_t load_clusters(struct load *L, scene_key_t *keys,
             if (keys[kf + k].frame <= keys[kf + k - 1].frame)
                 return load_bad(L, SCENE_LOAD_ERR_TREE, "cluster ", i,
                                 "key frames do not rise");
-        for (int k = 0; k < 12; k++)
-            if (!load_within(p + SCN_CLUSTER_MATRIX + 4 * k, 1,
-                             k % 4 == 3 ? SCN_MAX_COORD : SCN_MAX_SCALE))
-                return load_range(L, "cluster ", i, "a matrix entry");
-        /* K(f) * M maps the cluster's coordinates (times 2^cexp[i]) to its
-         * parent's (times 2^cp): K's translations are the parent's lengths,
-         * its scales lose kexp, M's translations are lengths between K and
-         * M (2^(cp + kexp)), M's 3x3 part loses the rest (load_scale) */
-        int32_t cp = i == 0 ? 0 : L->cexp[parent];
-        int32_t mexp = L->cexp[i] - cp - L->kexp[i];
-        for (uint32_t k = kf; k < kf + kc; k++) {
-            const uint8_t *kp = load_rec(L, SCN_SEC_KEYS, k);
-            L->len_exp = L->unit_exp + (int)cp;
-            keys[k].translate = load_lvec3(L, kp + SCN_KEY_TRANSLATE);
-            for (int a = 0; a < 3; a++) {
-                num_t v = num_from_f32_bits(load_scale_bits(
-                    wire_get_u32(kp + SCN_KEY_SCALE + 4 * a), -(int)L->kexp[i]));
-                *(a == 0 ? &keys[k].scale.x : a == 1 ? &keys[k].scale.y : &keys[k].scale.z) = v;
-            }
-        }
         scene_cluster_t *c = &out[i];
         c->parent = i == 0 ? SCENE_NO_CLUSTER : parent;
-        L->len_exp = L->unit_exp + (int)(cp + L->kexp[i]);
-        for (int r = 0; r < 3; r++)
-            for (int k = 0; k < 4; k++)
-                c->local.m[r][k] =
-                    k == 3 ? load_len(L, p + SCN_CLUSTER_MATRIX + 4 * (r * 4 + k))
-                           : num_from_f32_bits(load_scale_bits(
-                                 wire_get_u32(p + SCN_CLUSTER_MATRIX + 4 * (r * 4 + k)),
-                                 -(int)mexp));
         c->first_key = kf;
         c->key_count = kc;
+        if (L->kexp[i] == LOAD_KEXP_PLAIN)
+            c->local = identity;
+        else
+            LOAD_TRY(load_cluster_values(L, i, p, i == 0 ? 0 : L->cexp[parent], keys, c));
     }
     return SCENE_LOAD_OK;
 }
@@ -702,9 +760,9 @@ static scene_load_status_t load_components(struct load *L, scene_density_compone
     L->len_exp = L->unit_exp; /* a density sphere's: again in load_prims */
     for (uint32_t i = 0; i < n; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_COMPONENTS, i);
-        uint32_t weight = wire_get_u32(p + SCN_COMPONENT_WEIGHT);
+        uint32_t weight = load_u32(p + SCN_COMPONENT_WEIGHT);
         if (!load_coords(p + SCN_COMPONENT_CENTRE, 3) ||
-            !load_pos(wire_get_u32(p + SCN_COMPONENT_RADIUS), SCN_MAX_COORD) ||
+            !load_pos(load_u32(p + SCN_COMPONENT_RADIUS), SCN_MAX_COORD) ||
             !load_factors(p + SCN_COMPONENT_WEIGHT, 1) || load_zero(weight))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "density component ", i,
                             "centre, radius (> 0) or weight (non-zero) out of range");
@@ -728,6 +786,37 @@ static int load_sliver(const vec3_t v[3], int unit_exp)
     num_t sine = vec3_length(vec3_cross(u1, u2));
     num_t h = num_mul(num_lt(l1, l2) ? l1 : l2, sine);
     return num_lt(h, num_scale2(NUM_C(SCN_LOAD_MIN_TRIANGLE_HEIGHT), unit_exp));
+}
+
+/* A triangle record whose material, cluster and component range are
+ * right: its 15 values checked (9 lengths, 6 texture coordinates) and
+ * loaded into o as load_prims's general path does, with its refusals. */
+_Static_assert(SCN_TRIANGLE_VALUES == 15 && SCN_PRIM_MAX_VALUES == 15,
+               "a triangle uses every value of its record");
+static scene_load_status_t load_triangle(struct load *L, uint32_t i, const uint8_t *v,
+                                         scene_prim_t *o)
+{
+    uint32_t over = 0;
+#pragma GCC unroll 9
+    for (int k = 0; k < 9; k++)
+        over |= (load_u32(v + 4 * k) & ~LOAD_F32_SIGN) > load_bits_of(SCN_MAX_COORD);
+#pragma GCC unroll 6
+    for (int k = 9; k < 15; k++)
+        over |= (load_u32(v + 4 * k) & ~LOAD_F32_SIGN) > load_bits_of(SCN_MAX_FACTOR);
+    if (over)
+        return load_range(L, "prim ", i, "a value is");
+    o->kind = SCENE_PRIM_TRIANGLE;
+    for (int k = 0; k < 3; k++) {
+        o->shape.triangle.v[k] = load_lvec3(L, v + 12 * k);
+        o->shape.triangle.tex_u[k] = load_num(v + 36 + 4 * k);
+        o->shape.triangle.tex_v[k] = load_num(v + 48 + 4 * k);
+    }
+    o->shape.triangle.smooth = 0;
+    if (load_sliver(o->shape.triangle.v, L->len_exp))
+        return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
+                        "degenerate or sliver triangle (a height under "
+                        "SCN_MIN_TRIANGLE_HEIGHT / 8)");
+    return SCENE_LOAD_OK;
 }
 
 static const int load_prim_values[] = {
@@ -765,9 +854,9 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
         const uint8_t *p = load_rec(L, SCN_SEC_PRIMS, i);
         uint16_t kind = wire_get_u16(p + SCN_PRIM_KIND);
         uint16_t mat = wire_get_u16(p + SCN_PRIM_MATERIAL);
-        uint32_t clu = wire_get_u32(p + SCN_PRIM_CLUSTER);
-        uint32_t first = wire_get_u32(p + SCN_PRIM_FIRST);
-        uint32_t count = wire_get_u32(p + SCN_PRIM_COUNT);
+        uint32_t clu = load_u32(p + SCN_PRIM_CLUSTER);
+        uint32_t first = load_u32(p + SCN_PRIM_FIRST);
+        uint32_t count = load_u32(p + SCN_PRIM_COUNT);
         const uint8_t *v = p + SCN_PRIM_VALUES;
         if (kind < SCN_PRIM_TRIANGLE || kind > SCN_PRIM_KINDS)
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i, "unknown kind");
@@ -775,13 +864,20 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
             return load_bad(L, SCENE_LOAD_ERR_INDEX, "prim ", i, "material index out of range");
         if (clu >= n_clu)
             return load_bad(L, SCENE_LOAD_ERR_INDEX, "prim ", i, "cluster index out of range");
+        L->len_exp = clu < n_clu ? L->unit_exp + (int)L->cexp[clu] : L->unit_exp;
+        if (kind == SCN_PRIM_TRIANGLE && mat < n_mat && clu < n_clu && first == 0 &&
+            count == 0) {
+            out[i].cluster = clu;
+            out[i].material = mat;
+            LOAD_TRY(load_triangle(L, i, v, &out[i]));
+            continue;
+        }
         int nv = load_prim_values[kind];
-        L->len_exp = L->unit_exp + (int)L->cexp[clu];
         int nlen = kind == SCN_PRIM_TRIANGLE ? 9 : kind == SCN_PRIM_DENSITY ? 0 : nv;
         if (!load_coords(v, nlen) || !load_factors(v + 4 * nlen, nv - nlen))
             return load_range(L, "prim ", i, "a value is");
         for (int k = nv; k < SCN_PRIM_MAX_VALUES; k++)
-            if (wire_get_u32(v + 4 * k) != 0)
+            if (load_u32(v + 4 * k) != 0)
                 return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i, "unused value not zero");
         if (kind != SCN_PRIM_DENSITY && kind != SCN_PRIM_CONE && (first != 0 || count != 0))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
@@ -794,22 +890,12 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
         o->material = mat;
         switch (kind) {
         case SCN_PRIM_TRIANGLE:
-            o->kind = SCENE_PRIM_TRIANGLE;
-            for (int k = 0; k < 3; k++) {
-                o->shape.triangle.v[k] = load_lvec3(L, v + 12 * k);
-                o->shape.triangle.tex_u[k] = load_num(v + 36 + 4 * k);
-                o->shape.triangle.tex_v[k] = load_num(v + 48 + 4 * k);
-            }
-            o->shape.triangle.smooth = 0;
-            if (load_sliver(o->shape.triangle.v, L->len_exp))
-                return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
-                                "degenerate or sliver triangle (a height under "
-                                "SCN_MIN_TRIANGLE_HEIGHT / 8)");
+            LOAD_TRY(load_triangle(L, i, v, o));
             break;
         case SCN_PRIM_ELLIPSOID:
         case SCN_PRIM_BOX:
             for (int k = 3; k < 6; k++)
-                if (!load_pos(wire_get_u32(v + 4 * k), SCN_MAX_COORD))
+                if (!load_pos(load_u32(v + 4 * k), SCN_MAX_COORD))
                     return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
                                     "a semi-axis or half edge is not > 0");
             if (kind == SCN_PRIM_ELLIPSOID) {
@@ -829,7 +915,7 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
             o->shape.cone.capped = (uint8_t)first;
             break;
         default: /* SCN_PRIM_DENSITY */
-            if (!load_pos(wire_get_u32(v), SCN_MAX_FACTOR))
+            if (!load_pos(load_u32(v), SCN_MAX_FACTOR))
                 return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i, "threshold is not > 0");
             if (count < 1 || count > SCN_MAX_DENSITY_COMPONENTS)
                 return load_bad(L, SCENE_LOAD_ERR_LIMIT, "prim ", i,
@@ -863,10 +949,10 @@ static scene_load_status_t load_normals(struct load *L, scene_prim_t *prims,
     const num_t hi = NUM_C(1.0f + SCN_NORMAL_LENGTH_TOLERANCE);
     for (uint32_t i = 0; i < n; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_NORMALS, i);
-        uint32_t prim = wire_get_u32(p + SCN_NORMALS_PRIM);
+        uint32_t prim = load_u32(p + SCN_NORMALS_PRIM);
         if (prim >= n_prim)
             return load_bad(L, SCENE_LOAD_ERR_INDEX, "normals ", i, "prim index out of range");
-        if (i > 0 && prim <= wire_get_u32(load_rec(L, SCN_SEC_NORMALS, i - 1) + SCN_NORMALS_PRIM))
+        if (i > 0 && prim <= load_u32(load_rec(L, SCN_SEC_NORMALS, i - 1) + SCN_NORMALS_PRIM))
             return load_bad(L, SCENE_LOAD_ERR_INDEX, "normals ", i,
                             "prim index not above the previous record's");
         if (prims[prim].kind != SCENE_PRIM_TRIANGLE)
@@ -894,10 +980,21 @@ static scene_load_status_t load_normals(struct load *L, scene_prim_t *prims,
 /* The largest of most and shift + e over the n reals at p, |value| in
  * [2^e, 2^(e+1)); zeros, subnormals and not-finite values (left to the
  * checks that follow) count as none. */
-static int32_t load_max_exp(const uint8_t *p, int n, int32_t shift, int32_t most)
+LOAD_INLINE int32_t load_max_exp(const uint8_t *p, int n, int32_t shift, int32_t most)
 {
+    /* the largest magnitude's exponent field, when it is finite: the
+     * magnitude bits of finite values order as the values do */
+    uint32_t big = 0;
+#pragma GCC unroll 9
     for (int i = 0; i < n; i++) {
-        int32_t field = (int32_t)((wire_get_u32(p + 4 * i) & LOAD_F32_EXP_MASK) >> 23);
+        uint32_t m = load_u32(p + 4 * i) & ~LOAD_F32_SIGN;
+        big = m > big ? m : big;
+    }
+    int32_t field = (int32_t)(big >> 23);
+    if (field != 255)
+        return field != 0 && field - 127 + shift > most ? field - 127 + shift : most;
+    for (int i = 0; i < n; i++) {
+        int32_t field = (int32_t)((load_u32(p + 4 * i) & LOAD_F32_EXP_MASK) >> 23);
         if (field != 0 && field != 255 && field - 127 + shift > most)
             most = field - 127 + shift;
     }
@@ -912,7 +1009,7 @@ static int32_t load_matrix_exp(const uint8_t *m)
     uint32_t big = 0;
     for (int r = 0; r < 3; r++)
         for (int k = 0; k < 3; k++) {
-            uint32_t bits = wire_get_u32(m + 4 * (4 * r + k)) & ~LOAD_F32_SIGN;
+            uint32_t bits = load_u32(m + 4 * (4 * r + k)) & ~LOAD_F32_SIGN;
             if (load_finite(bits) && bits > big)
                 big = bits;
         }
@@ -943,10 +1040,15 @@ static scene_load_status_t load_scale(struct load *L, scene_t *s)
     int32_t geom = LOAD_EXP_NONE; /* the geometry's largest, in world units */
     for (uint32_t i = 0; i < n_clu; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_CLUSTERS, i);
-        uint32_t parent = wire_get_u32(p + SCN_CLUSTER_PARENT);
-        uint32_t kf = wire_get_u32(p + SCN_CLUSTER_KEY_FIRST);
-        uint32_t kc = wire_get_u32(p + SCN_CLUSTER_KEY_COUNT);
+        uint32_t parent = load_u32(p + SCN_CLUSTER_PARENT);
+        uint32_t kf = load_u32(p + SCN_CLUSTER_KEY_FIRST);
+        uint32_t kc = load_u32(p + SCN_CLUSTER_KEY_COUNT);
         int32_t cp = i > 0 && parent < i ? L->cexp[parent] : 0;
+        if (load_cluster_plain(p)) { /* no length, the identity */
+            L->kexp[i] = LOAD_KEXP_PLAIN;
+            L->cexp[i] = cp;
+            continue;
+        }
         int32_t ks = LOAD_EXP_NONE;
         if (kf <= n_keys && kc <= n_keys - kf)
             for (uint32_t k = kf; k < kf + kc; k++) {
@@ -963,12 +1065,15 @@ static scene_load_status_t load_scale(struct load *L, scene_t *s)
     for (uint32_t i = 0; i < L->sec[SCN_SEC_PRIMS].count; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_PRIMS, i);
         uint16_t kind = wire_get_u16(p + SCN_PRIM_KIND);
-        uint32_t clu = wire_get_u32(p + SCN_PRIM_CLUSTER);
+        uint32_t clu = load_u32(p + SCN_PRIM_CLUSTER);
         int32_t c = clu < n_clu ? L->cexp[clu] : 0;
-        int n = kind == SCN_PRIM_TRIANGLE ? 9 : kind == SCN_PRIM_DENSITY ? 0
-                : kind == SCN_PRIM_CONE ? SCN_CONE_VALUES : 6;
+        if (kind == SCN_PRIM_TRIANGLE) { /* the common case, unrolled */
+            geom = load_max_exp(p + SCN_PRIM_VALUES, 9, c, geom);
+            continue;
+        }
+        int n = kind == SCN_PRIM_DENSITY ? 0 : kind == SCN_PRIM_CONE ? SCN_CONE_VALUES : 6;
         geom = load_max_exp(p + SCN_PRIM_VALUES, n, c, geom);
-        uint32_t first = wire_get_u32(p + SCN_PRIM_FIRST), count = wire_get_u32(p + SCN_PRIM_COUNT);
+        uint32_t first = load_u32(p + SCN_PRIM_FIRST), count = load_u32(p + SCN_PRIM_COUNT);
         if (kind == SCN_PRIM_DENSITY && first <= n_comp && count <= n_comp - first)
             for (uint32_t k = first; k < first + count; k++)
                 geom = load_max_exp(load_rec(L, SCN_SEC_COMPONENTS, k) + SCN_COMPONENT_CENTRE, 4,
@@ -977,16 +1082,16 @@ static scene_load_status_t load_scale(struct load *L, scene_t *s)
     int32_t most = load_max_exp(load_rec(L, SCN_SEC_VIEW, 0) + SCN_VIEW_EYE, 6, 0, geom);
     for (uint32_t i = 0; i < L->sec[SCN_SEC_LIGHTS].count; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_LIGHTS, i);
-        if (wire_get_u32(p + SCN_LIGHT_KIND) != SCN_LIGHT_PARALLEL)
+        if (load_u32(p + SCN_LIGHT_KIND) != SCN_LIGHT_PARALLEL)
             most = load_max_exp(p + SCN_LIGHT_POSITION, 3, 0, most);
     }
     uint32_t n_light = L->sec[SCN_SEC_LIGHTS].count;
     for (uint32_t i = 0; i < L->sec[SCN_SEC_VIEW_KEYS].count; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_VIEW_KEYS, i);
-        uint32_t target = wire_get_u32(p + SCN_VKEY_TARGET);
+        uint32_t target = load_u32(p + SCN_VKEY_TARGET);
         if (target == SCN_VKEY_CAMERA)
             most = load_max_exp(p + SCN_VKEY_EYE, 6, 0, most);
-        else if (target < n_light && wire_get_u32(load_rec(L, SCN_SEC_LIGHTS, target) +
+        else if (target < n_light && load_u32(load_rec(L, SCN_SEC_LIGHTS, target) +
                                                   SCN_LIGHT_KIND) != SCN_LIGHT_PARALLEL)
             most = load_max_exp(p + SCN_VKEY_POSITION, 3, 0, most);
     }
@@ -1015,10 +1120,17 @@ static scene_load_status_t load_scale(struct load *L, scene_t *s)
 scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, scene_t *out,
                                scene_load_error_t *err)
 {
+    return scene_load_summed(buf, len, NULL, arena, out, err);
+}
+
+scene_load_status_t scene_load_summed(const uint8_t *buf, size_t len, const uint32_t *sum,
+                                      arena_t *arena, scene_t *out, scene_load_error_t *err)
+{
     struct load L;
     memset(&L, 0, sizeof L);
     L.buf = buf;
     L.err = err;
+    L.sum = sum;
     err->status = SCENE_LOAD_OK;
     err->message[0] = 0;
     memset(out, 0, sizeof *out);

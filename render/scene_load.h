@@ -4,7 +4,7 @@
  * Runs on the board's DM and on the host, in every arithmetic: no malloc,
  * no stdio, no mutable globals.  Everything it builds comes from the arena
  * the caller gives; the input buffer is not referenced afterwards.  Nothing
- * is trusted: sizes, CRC, section bounds, every count against its limit,
+ * is trusted: sizes, the word sum, section bounds, every count against its limit,
  * every index, every real (finite, within range), the cluster tree.  On
  * failure the arena is left as it was and the error names the problem.
  */
@@ -47,16 +47,22 @@ typedef struct {
  * exact size of the compiled scene. */
 scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena,
                                scene_t *out, scene_load_error_t *err);
+/* The same, the body's word sum (proto/wordsum.h, bytes SCN_SUM_START ..
+ * len - 1) summed already by the caller, who read the bytes once to check
+ * their upload: *sum is compared with the header's instead of the bytes
+ * summed again. */
+scene_load_status_t scene_load_summed(const uint8_t *buf, size_t len, const uint32_t *sum,
+                                      arena_t *arena, scene_t *out, scene_load_error_t *err);
 
-/* Checks the header and section table of buf[0..len) (CRC included, not
+/* Checks the header and section table of buf[0..len) (word sum included, not
  * the records) and fills the counts of *shape (every pointer NULL, every
  * other field 0) and the texel bytes of all maps, so memory can be sized
  * before loading: scene_load_bytes and render_prepare_bytes (render.h). */
 scene_load_status_t scene_load_shape(const uint8_t *buf, size_t len, scene_t *shape,
                                      uint32_t *texel_bytes, scene_load_error_t *err);
-/* The same without the body's CRC: for a caller that runs scene_load on
- * the same bytes next, which checks it (render_blob_load).  The CRC costs a
- * few instructions a byte of the scene: once per load is enough. */
+/* The same without the body's word sum: for a caller that runs scene_load
+ * on the same bytes next, which checks it (render_blob_load).  The sum costs
+ * about an instruction a byte of the scene: once per load is enough. */
 scene_load_status_t scene_load_shape_before_load(const uint8_t *buf, size_t len, scene_t *shape,
                                                  uint32_t *texel_bytes, scene_load_error_t *err);
 

@@ -50,12 +50,17 @@ int dm_transfer_send(uint16_t cmd, dm_chunk_out_fn fn, void *ctx, uint32_t total
  * dm_bulk_path: the path byte after a command's args bytes of arguments
  * (absent: LINK_PATH_SERIAL); -1 after answering an error for a bad one.
  * dm_bulk_receive: offers room bytes at buf to the host, waits for its
- * LINK_BULK, checks it and its CRC and ACKs it; LINK_OK with *len and *crc,
- * or the negative status of the error it has already answered.
+ * LINK_BULK, checks it and its word sum (proto/wordsum.h) and ACKs it;
+ * LINK_OK with *len and *tail_sum, the word sum of the bytes from split on
+ * (a multiple of 4; 0: all of them; past the end: none), which the one
+ * pass over the bytes gives too, or the negative status of the error it
+ * has already answered.
  * dm_bulk_send: tells the host len bytes at buf are there; returns their
- * CRC-32. */
+ * word sum. */
+extern uint64_t dm_bulk_check_ticks; /* the last dm_bulk_receive's time summing */
 int dm_bulk_path(uint16_t cmd, uint32_t args);
-int dm_bulk_receive(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t *len, uint32_t *crc);
+int dm_bulk_receive(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t split, uint32_t *len,
+                    uint32_t *tail_sum);
 uint32_t dm_bulk_send(const void *buf, uint32_t len);
 
 /* Command handlers: each answers with one LINK_RESULT. */

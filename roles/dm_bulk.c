@@ -1,17 +1,20 @@
 /* dm_bulk.c: the DM's side of the shared-memory path of the host link
  * (LINK_BULK, proto/hostlink.h).  The host maps the board's RAM, so bulk
  * bytes need no frames: the DM says where they are (or where to put them)
- * and checks their CRC-32. */
+ * and checks their word sum (proto/wordsum.h). */
 #include <stdint.h>
 
 #include "drivers/serial/hostlink_tx.h"
 #include "kernel/ktime.h"
+#include "proto/insn_mark.h"
 #include "kernel/memlayout.h"
 #include "kernel/param.h"
-#include "proto/crc32.h"
 #include "proto/hostlink.h"
 #include "proto/wire.h"
+#include "proto/wordsum.h"
 #include "roles/dm.h"
+
+uint64_t dm_bulk_check_ticks;
 
 int dm_bulk_path(uint16_t cmd, uint32_t args)
 {
@@ -33,18 +36,30 @@ static uint32_t dm_bulk_offset(const void *p)
     return (uint32_t)((uintptr_t)p - RAM_BASE);
 }
 
-static void dm_bulk_frame(const void *buf, uint32_t len, uint32_t crc)
+static void dm_bulk_frame(const void *buf, uint32_t len, uint32_t sum)
 {
-    struct link_bulk k = {dm_bulk_offset(buf), len, crc};
+    struct link_bulk k = {dm_bulk_offset(buf), len, sum};
     uint8_t p[LINK_BULK_SIZE];
     link_bulk_put(p, &k);
     hostlink_send(LINK_BULK, 0, p, sizeof p);
 }
 
+/* The word sum of len bytes at buf, and in *tail that of those from split
+ * on: one pass over the bytes. */
+static uint32_t dm_bulk_sum(const uint8_t *buf, uint32_t len, uint32_t split, uint32_t *tail)
+{
+    uint32_t at = split < len ? split : len;
+    wordsum_t head = WORDSUM_EMPTY, rest = WORDSUM_EMPTY;
+    wordsum_update(&head, buf, at);
+    wordsum_update(&rest, buf + at, len - at);
+    *tail = wordsum_value(rest);
+    return wordsum_value(wordsum_join(head, rest));
+}
+
 /* One offer of buf and the host's answer; LINK_ERR_CHECK (not yet answered)
- * when the bytes found do not have the host's CRC. */
-static int dm_bulk_take(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t *len, uint32_t *crc,
-                        int last_try)
+ * when the bytes found do not have the host's word sum. */
+static int dm_bulk_take(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t split, uint32_t *len,
+                        uint32_t *tail_sum, int last_try)
 {
     dm_bulk_frame(buf, room, 0);
     if (dm_next_frame(ktime_deadline_ms(LINK_ACK_TIMEOUT_MS)) != 0) {
@@ -67,13 +82,17 @@ static int dm_bulk_take(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t *len
                        (unsigned)k.offset, (unsigned)room, (unsigned)dm_bulk_offset(buf));
         return LINK_ERR_BAD_ARGS;
     }
-    uint32_t c = crc32(buf, k.length);
-    if (c != k.crc) {
+    uint64_t t0 = ktime_now();
+    insn_mark_trace_span_begin(); /* the upload's check (docs/trace.md) */
+    uint32_t c = dm_bulk_sum(buf, k.length, split, tail_sum);
+    insn_mark_trace_span_end();
+    dm_bulk_check_ticks += ktime_now() - t0;
+    if (c != k.sum) {
         if (!last_try)
             return LINK_ERR_CHECK; /* offered again */
-        hostlink_error(cmd, LINK_ERR_CHECK, "shared path: %u bytes at offset 0x%x have crc "
-                       "0x%08x, the host says 0x%08x (%u offers)", (unsigned)k.length,
-                       (unsigned)k.offset, (unsigned)c, (unsigned)k.crc,
+        hostlink_error(cmd, LINK_ERR_CHECK, "shared path: %u bytes at offset 0x%x have word "
+                       "sum 0x%08x, the host says 0x%08x (%u offers)", (unsigned)k.length,
+                       (unsigned)k.offset, (unsigned)c, (unsigned)k.sum,
                        (unsigned)LINK_BULK_TRIES);
         return LINK_ERR_CHECK;
     }
@@ -81,15 +100,16 @@ static int dm_bulk_take(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t *len
     wire_put_u16(ack, dm_frame.seq);
     hostlink_send(LINK_ACK, 0, ack, sizeof ack);
     *len = k.length;
-    *crc = c;
     return LINK_OK;
 }
 
-int dm_bulk_receive(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t *len, uint32_t *crc)
+int dm_bulk_receive(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t split, uint32_t *len,
+                    uint32_t *tail_sum)
 {
-    /* Bytes whose CRC fails are offered for again (proto/hostlink.h). */
+    /* Bytes whose sum fails are offered for again (proto/hostlink.h). */
+    dm_bulk_check_ticks = 0;
     for (int t = 1;; t++) {
-        int r = dm_bulk_take(cmd, buf, room, len, crc, t == LINK_BULK_TRIES);
+        int r = dm_bulk_take(cmd, buf, room, split, len, tail_sum, t == LINK_BULK_TRIES);
         if (r != LINK_ERR_CHECK || t == LINK_BULK_TRIES)
             return r;
     }
@@ -97,7 +117,7 @@ int dm_bulk_receive(uint16_t cmd, uint8_t *buf, uint32_t room, uint32_t *len, ui
 
 uint32_t dm_bulk_send(const void *buf, uint32_t len)
 {
-    uint32_t crc = crc32(buf, len);
-    dm_bulk_frame(buf, len, crc);
-    return crc;
+    uint32_t sum = wordsum(buf, len);
+    dm_bulk_frame(buf, len, sum);
+    return sum;
 }

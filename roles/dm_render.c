@@ -54,6 +54,10 @@ static struct {
                              next blobs of the same load */
     int wide_loaded[2];   /* block A / B holds this scene's wide blob too */
     int prepared_wide;    /* the frame prepared holds the wide blob */
+    uint32_t body_sum;    /* the scene's word sum after its header, summed
+                             while its shared-path upload was checked */
+    int summed;           /* body_sum holds it (else the loader sums) */
+    uint32_t load_ms;     /* the last load into a block took (the index too) */
 } dm_scene;
 
 static const char dm_blob_limit_name[] = MACHINE_IMSU_BLOCK_NAME;
@@ -137,8 +141,13 @@ static int dm_prepare(uint32_t frame, int escalate, render_blob_error_t *err)
     render_blob_t *blob = (render_blob_t *)block;
     render_blob_status_t st = RENDER_BLOB_OK;
     if (!dm_scene.loaded[held]) {
-        st = render_blob_load(dm_scene.compiled, dm_scene.len, block, p->size,
-                              dm_blob_limit_name, &blob, err);
+        uint64_t l0 = ktime_now();
+        insn_mark_trace_span_begin(); /* the load, the index included (docs/trace.md) */
+        st = render_blob_load_summed(dm_scene.compiled, dm_scene.len,
+                                     dm_scene.summed ? &dm_scene.body_sum : NULL, block,
+                                     p->size, dm_blob_limit_name, &blob, err);
+        insn_mark_trace_span_end();
+        dm_scene.load_ms = ktime_ticks_to_ms(ktime_now() - l0);
         dm_scene.loaded[held] = st == RENDER_BLOB_OK;
         if (st == RENDER_BLOB_OK)
             blob->scene_id = dm_scene.load_id;
@@ -236,6 +245,7 @@ void dm_cmd_scene_load(uint16_t cmd)
         rx = (struct dm_scene_rx){kmem_alloc(len, "compiled scene"), len, ""};
     uint64_t got = 0;
     uint32_t crc = 0;
+    dm_scene.summed = 0;
     if (path == LINK_PATH_SHARED) {
         /* The host writes the scene straight into its buffer; refused
          * before the offer when it cannot be taken. */
@@ -244,11 +254,14 @@ void dm_cmd_scene_load(uint16_t cmd)
             return;
         }
         uint32_t n = 0;
-        if (dm_bulk_receive(cmd, rx.buf, len, &n, &crc) != LINK_OK)
+        if (dm_bulk_receive(cmd, rx.buf, len, SCN_SUM_START, &n, &dm_scene.body_sum) != LINK_OK)
             return; /* the shared path already answered */
         got = n;
+        dm_scene.summed = 1;
     } else {
+        insn_mark_trace_span_begin(); /* the upload, its frames checked (docs/trace.md) */
         int r = dm_transfer_receive(cmd, dm_scene_chunk, &rx, &got, &crc);
+        insn_mark_trace_span_end();
         if (r != LINK_OK && r != LINK_ERR_CHECK)
             return; /* the transfer already answered */
     }
@@ -280,8 +293,11 @@ void dm_cmd_scene_load(uint16_t cmd)
     dm_scene.max_depth = blob->scene.options.max_depth;
     dm_scene.check_lost = blob->scene.options.check_lost;
     dm_scene.blob_bytes = (uint32_t)blob->bound;
+    uint32_t check_ms = dm_scene.summed ? ktime_ticks_to_ms(dm_bulk_check_ticks) : 0;
     struct link_scene_info info = {dm_scene.width, dm_scene.height, dm_scene.frames, len,
-                                   (uint32_t)blob->bound, (uint32_t)imsu_dm_rc.size};
+                                   (uint32_t)blob->bound, (uint32_t)imsu_dm_rc.size, check_ms,
+                                   dm_scene.load_ms, dm_scene.prepare_ms,
+                                   blob->scene.prim_count};
     uint8_t f[LINK_SCENE_INFO_SIZE];
     link_scene_info_put(f, &info);
     hostlink_result(cmd, LINK_OK, f, sizeof f);

@@ -151,10 +151,12 @@ static void dm_link_sink_shared(uint16_t cmd)
     }
     size_t mark = kmem_mark();
     uint8_t *buf = kmem_alloc(want, "link sink");
-    uint32_t len = 0, crc = 0, differ = 0;
-    int r = dm_bulk_receive(cmd, buf, want, &len, &crc);
-    if (r == LINK_OK)
+    uint32_t len = 0, crc = 0, sum = 0, differ = 0;
+    int r = dm_bulk_receive(cmd, buf, want, 0, &len, &sum);
+    if (r == LINK_OK) {
         dm_sink_check(&differ, buf, len, 0);
+        crc = crc32(buf, len); /* the result's, as on the serial path */
+    }
     kmem_release_to(mark);
     if (r != LINK_OK)
         return;
@@ -219,7 +221,8 @@ void dm_cmd_link_source(uint16_t cmd)
         size_t mark = kmem_mark();
         uint8_t *buf = kmem_alloc(total, "link source");
         dm_source_fill(NULL, buf, total, 0);
-        crc = dm_bulk_send(buf, total);
+        crc = crc32(buf, total); /* the result's, as on the serial path */
+        (void)dm_bulk_send(buf, total);
         kmem_release_to(mark);
     } else if (dm_transfer_send(cmd, dm_source_fill, NULL, total, &crc) != LINK_OK) {
         return;

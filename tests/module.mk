@@ -3,6 +3,8 @@
 # tests/plan.tsv's.
 test_crc32_SRCS := tests/host/test_crc32.c
 test_crc32_ARITH := double
+test_wordsum_SRCS := tests/host/test_wordsum.c
+test_wordsum_ARITH := double
 
 # RC area schedules (proto/areas.c): pure, so tested on the host.
 test_areas_SRCS := tests/host/test_areas.c

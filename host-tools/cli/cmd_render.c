@@ -6,6 +6,7 @@
  * another on the same board; a scene the board refuses is reported and the
  * next one still renders (the exit status is then 1). */
 #include <errno.h>
+#include <inttypes.h>
 #include <limits.h>
 #include <stdarg.h>
 #include <stdio.h>
@@ -91,6 +92,7 @@ struct render_run {
     long frames_done;        /* frames rendered in this run */
     uint32_t traced_w, traced_h, traced_bytes; /* the traced frame's size, broadcast */
     struct link_render_args traced_args;       /* what the traced frame ran with */
+    uint32_t prims;          /* the first scene's primitives (the DM's spans a primitive) */
 };
 
 enum render_opt_code {
@@ -867,9 +869,12 @@ static int render_job_load(struct board *b, const struct render_opts *o, struct 
         return -1;
     }
     render_say(o, "links1 render: %s loaded: %ux%u, %u frame(s), %u bytes compiled, a prepared "
-               "frame needs at most %u of the DM's %u-byte IMSU block\n", j->scene, info->width,
-               info->height, info->frames, info->compiled_bytes, info->blob_bytes,
-               info->blob_limit);
+               "frame needs at most %u of the DM's %u-byte IMSU block; the DM's check %u ms, "
+               "load %u ms (the index included), frame 0's preparation %u ms\n", j->scene,
+               info->width, info->height, info->frames, info->compiled_bytes, info->blob_bytes,
+               info->blob_limit, info->check_ms, info->load_ms, info->prepare_ms);
+    if (!run->prims)
+        run->prims = info->prims;
     if (j->frames && (info->frames != j->frames || info->height != j->height)) {
         /* render_check_job checked what the compiled header says */
         fprintf(stderr, "links1 render: %s: the board loaded %u frames of %u scanlines, the "
@@ -1151,8 +1156,33 @@ static int render_counting_open(struct render_opts *o, struct render_counting *k
     snprintf(k->marks, sizeof k->marks, "%s/marks", k->dir);
     snprintf(k->profile, sizeof k->profile, "%s/profile", k->dir);
     o->board.insn_count_out = o->count_insns ? k->counts : NULL;
-    o->board.insn_trace_out = o->trace ? k->marks : NULL;
+    /* the marks for --count-insns too: the DM's spans (render_dm_spans) */
+    o->board.insn_trace_out = o->trace || o->count_insns ? k->marks : NULL;
     o->board.insn_profile_out = k->profile_out ? k->profile : NULL;
+    return 0;
+}
+
+/* The DM's first spans (docs/trace.md): the upload's check (on the serial
+ * path the upload itself, its frames checked), the load and frame 0's
+ * preparation, printed with their sum a primitive of prims.  0, or -1
+ * after saying why. */
+static int render_dm_spans(const char *marks, uint32_t prims)
+{
+    uint64_t span[3];
+    size_t n = 0;
+    char err[PATH_MAX + 128];
+    if (trace_dm_spans(marks, span, 3, &n, err, sizeof err) != 0) {
+        fprintf(stderr, "links1 render: the DM's spans: %s\n", err);
+        return -1;
+    }
+    if (n < 3)
+        return 0; /* no scene loaded */
+    uint64_t check = span[0], load = span[1], prep = span[2];
+    uint64_t all = check + load + prep;
+    double per = prims ? (double)all / prims : 0;
+    printf("  DM's scene load: check %" PRIu64 ", load and index %" PRIu64 ", frame 0's "
+           "preparation %" PRIu64 "; %" PRIu64 " in all, %.0f a primitive (%" PRIu32 ")\n",
+           check, load, prep, all, per, prims);
     return 0;
 }
 
@@ -1164,7 +1194,8 @@ static int render_counting_close(struct render_opts *o, const struct render_run 
     if (!k->dir[0])
         return 0;
     int r = 0;
-    if (o->count_insns && insn_report_print(k->counts, o->board.ncores) < 0)
+    if (o->count_insns && (insn_report_print(k->counts, o->board.ncores) < 0 ||
+                           render_dm_spans(k->marks, run->prims) < 0))
         r = -1;
     if (o->trace && rc == 0 && render_write_trace(o, run, k->marks) != 0)
         r = -1;

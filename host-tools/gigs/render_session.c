@@ -225,7 +225,7 @@ static int render_session_pull_shared(struct board *b, size_t want, uint8_t **bu
     for (size_t i = 0; i < px; i++)
         link_frame_word_rgb(data + i * LINK_FRAME_WORD_SIZE, *buf + i * 3);
     *words = k.length;
-    *crc = k.crc;
+    *crc = k.sum;
     return 0;
 }
 

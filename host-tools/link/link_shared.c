@@ -5,7 +5,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "proto/crc32.h"
+#include "proto/wordsum.h"
 #include "proto/wire.h"
 
 /* Waits for LINK_BULK, or a LINK_RESULT (put back: 1).  0 with *k, or -1. */
@@ -67,7 +67,7 @@ int link_shared_send(struct board *b, const void *data, size_t len)
     }
     for (int t = 1;; t++) {
         memcpy(b->ram + k.offset, data, len);
-        struct link_bulk done = {k.offset, (uint32_t)len, crc32(data, len)};
+        struct link_bulk done = {k.offset, (uint32_t)len, wordsum(data, len)};
         uint8_t p[LINK_BULK_SIZE];
         link_bulk_put(p, &done);
         int seq = board_send(b, LINK_BULK, 0, p, sizeof p);
@@ -83,7 +83,7 @@ int link_shared_send(struct board *b, const void *data, size_t len)
             return 1;
         }
         if (f.type == LINK_BULK) {
-            /* The bytes the board found did not have our CRC: it offers the
+            /* The bytes the board found did not have our word sum: it offers the
              * same memory again (proto/hostlink.h, LINK_BULK_TRIES). */
             struct link_bulk again;
             link_bulk_get(f.payload, &again);
@@ -112,10 +112,10 @@ int link_shared_receive(struct board *b, struct link_bulk *k, const uint8_t **da
     int r = link_shared_wait(b, k, "the board's shared-memory bytes");
     if (r != 0)
         return r;
-    uint32_t c = crc32(b->ram + k->offset, k->length);
-    if (c != k->crc) {
-        fprintf(stderr, "links1: %u bytes at offset 0x%x of the board's RAM have crc 0x%08x, "
-                "the board says 0x%08x\n", k->length, k->offset, c, k->crc);
+    uint32_t c = wordsum(b->ram + k->offset, k->length);
+    if (c != k->sum) {
+        fprintf(stderr, "links1: %u bytes at offset 0x%x of the board's RAM have word sum 0x%08x, "
+                "the board says 0x%08x\n", k->length, k->offset, c, k->sum);
         return -2;
     }
     *data = b->ram + k->offset;

@@ -11,7 +11,7 @@
 #include "host-tools/scene/scene_bvh.h"
 #include "host-tools/scene/scene_desc.h"
 #include "proto/board_map.h"
-#include "proto/crc32.h"
+#include "proto/wordsum.h"
 #include "proto/wire.h"
 
 #define COMPILE_PI 3.14159265358979323846
@@ -291,7 +291,7 @@ static int compile_layout(const struct sd_scene *s, size_t texel_bytes,
     return n;
 }
 
-/* The header: magic, version, section count, size and CRC. */
+/* The header: magic, version, section count, size and word sum. */
 static void compile_header(uint8_t *b, int n, size_t total)
 {
     b[SCN_HDR_MAGIC + 0] = SCN_MAGIC_0;
@@ -301,7 +301,7 @@ static void compile_header(uint8_t *b, int n, size_t total)
     wire_put_u16(b + SCN_HDR_VERSION, SCN_VERSION);
     wire_put_u16(b + SCN_HDR_SECTIONS, (uint16_t)n);
     wire_put_u32(b + SCN_HDR_TOTAL, (uint32_t)total);
-    wire_put_u32(b + SCN_HDR_CRC, crc32(b + SCN_CRC_START, total - SCN_CRC_START));
+    wire_put_u32(b + SCN_HDR_SUM, wordsum(b + SCN_SUM_START, total - SCN_SUM_START));
 }
 
 static int compile_form(const struct sd_scene *s, uint8_t **out, size_t *len, char *err,

@@ -265,3 +265,32 @@ out:
         trace_free(t);
     return rc;
 }
+
+int trace_dm_spans(const char *marks_path, uint64_t *len, size_t cap, size_t *n, char *err,
+                   size_t errcap)
+{
+    *n = 0;
+    FILE *f = fopen(marks_path, "r");
+    if (!f)
+        return decode_fail(err, errcap, "trace marks %s: cannot open", marks_path);
+    char line[96];
+    int rc = 0, open = 0;
+    unsigned long long begin = 0;
+    while (rc == 0 && *n < cap && fgets(line, sizeof line, f)) {
+        unsigned core, kind;
+        unsigned long long count;
+        if (sscanf(line, "%u %u %llu", &core, &kind, &count) != 3 || kind >= INSN_TRACE_KINDS)
+            rc = decode_fail(err, errcap, "trace marks %s: a line is not 'CORE KIND COUNT'",
+                             marks_path);
+        else if (core != UNITS_DM_CORE)
+            break; /* core by core: the DM's come first */
+        else if (kind == INSN_TRACE_SPAN_BEGIN)
+            open = 1, begin = count;
+        else if (kind == INSN_TRACE_SPAN_END && open && count >= begin)
+            len[(*n)++] = count - begin, open = 0;
+        else
+            open = 0;
+    }
+    fclose(f);
+    return rc;
+}

@@ -81,4 +81,10 @@ int trace_scale(struct trace *t, uint32_t f, char *err, size_t cap);
 int trace_decode_marks(const char *marks_path, uint32_t width, uint32_t height, uint32_t ncs,
                        struct trace *t, char *err, size_t cap);
 
+/* The DM's first spans (a SPAN_BEGIN mark followed by a SPAN_END) in the
+ * plugin's trace= file, in the order it ran them: len[0..*n), *n at most
+ * cap.  0, or -1 with err filled. */
+int trace_dm_spans(const char *marks_path, uint64_t *len, size_t cap, size_t *n, char *err,
+                   size_t errcap);
+
 #endif

@@ -4,13 +4,13 @@
  * of the first and the last frame), the RC's relocation after a copy, and
  * a few pixels as an NC would trace them.
  *
- * Each input is tried twice: as it is, then with its total size and CRC
+ * Each input is tried twice: as it is, then with its total size and word sum
  * made right, so the fuzzer also reaches the records behind the checksum. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 
-#include "proto/crc32.h"
+#include "proto/wordsum.h"
 #include "proto/scene_format.h"
 #include "proto/wire.h"
 #include "render/blob.h"
@@ -85,7 +85,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         abort();
     memcpy(fixed, data, size);
     wire_put_u32(fixed + SCN_HDR_TOTAL, (uint32_t)size);
-    wire_put_u32(fixed + SCN_HDR_CRC, crc32(fixed + SCN_CRC_START, size - SCN_CRC_START));
+    wire_put_u32(fixed + SCN_HDR_SUM, wordsum(fixed + SCN_SUM_START, size - SCN_SUM_START));
     fuzz_one(fixed, size);
     free(fixed);
     return 0;

@@ -60,7 +60,7 @@ static void msg_fault_layout_and_round_trip(void)
 /* LINK_BULK: offset, length, crc, each a little-endian u32. */
 static void msg_bulk_layout_and_round_trip(void)
 {
-    struct link_bulk k = {.offset = 0x03812340u, .length = 0x00300000u, .crc = 0xcbf43926u};
+    struct link_bulk k = {.offset = 0x03812340u, .length = 0x00300000u, .sum = 0xcbf43926u};
     static const uint8_t want[LINK_BULK_SIZE] = {
         0x40, 0x23, 0x81, 0x03, 0x00, 0x00, 0x30, 0x00, 0x26, 0x39, 0xf4, 0xcb};
     uint8_t p[LINK_BULK_SIZE + 1];
@@ -72,7 +72,7 @@ static void msg_bulk_layout_and_round_trip(void)
     link_bulk_get(want, &g);
     CHECK_EQ_INT(g.offset, k.offset);
     CHECK_EQ_INT(g.length, k.length);
-    CHECK_EQ_INT(g.crc, k.crc);
+    CHECK_EQ_INT(g.sum, k.sum);
 }
 
 static void msg_cmd_frame_bytes_are_pinned(void)

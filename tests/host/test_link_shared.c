@@ -9,7 +9,7 @@
 #include <unistd.h>
 
 #include "host-tools/link/link_shared.h"
-#include "proto/crc32.h"
+#include "proto/wordsum.h"
 #include "proto/wire.h"
 #include "tests/check.h"
 #include "tests/host/fake_board.h"
@@ -78,7 +78,7 @@ static void shared_send_lands_where_offered(void)
     CHECK_EQ_INT(peer_read_bulk(peer, &k), 0);
     CHECK_EQ_INT(k.offset, 0x4000);
     CHECK_EQ_INT(k.length, sizeof data);
-    CHECK_EQ_INT(k.crc, crc32(data, sizeof data));
+    CHECK_EQ_INT(k.sum, wordsum(data, sizeof data));
     b.ram = NULL;
     board_stop(&b);
     close(peer);
@@ -140,14 +140,14 @@ static void shared_receive_checks_crc(void)
     session(&b, &peer, ram);
     for (uint32_t i = 0; i < 5000; i++)
         ram[0x100 + i] = link_pattern_byte(i);
-    uint32_t good = crc32(ram + 0x100, 5000);
+    uint32_t good = wordsum(ram + 0x100, 5000);
     peer_bulk(peer, 0x100, 5000, good);
     peer_bulk(peer, 0x100, 5000, good ^ 1);
     peer_bulk(peer, RAM_SIZE, 1, 0);
     struct link_bulk k;
     const uint8_t *data = NULL;
     CHECK_EQ_INT(link_shared_receive(&b, &k, &data), 0);
-    CHECK(data == ram + 0x100 && k.length == 5000 && k.crc == good);
+    CHECK(data == ram + 0x100 && k.length == 5000 && k.sum == good);
     CHECK_EQ_INT(link_shared_receive(&b, &k, &data), -2); /* wrong CRC: the pull again */
     CHECK_EQ_INT(link_shared_receive(&b, &k, &data), -1); /* outside the RAM */
     b.ram = NULL;
@@ -178,7 +178,7 @@ static void shared_send_copies_again_on_a_new_offer(void)
     CHECK_EQ_INT(peer_read_bulk(peer, &k2), 0);
     CHECK_EQ_INT(k2.offset, 0x8000);
     CHECK_EQ_INT(k2.length, sizeof data);
-    CHECK_EQ_INT(k2.crc, crc32(data, sizeof data));
+    CHECK_EQ_INT(k2.sum, wordsum(data, sizeof data));
     close(peer);
     board_session_close(&b);
 }

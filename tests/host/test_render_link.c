@@ -56,13 +56,14 @@ static void render_link_args_round_trip(void)
 
 static void render_link_info_and_progress_round_trip(void)
 {
-    struct link_scene_info i = {320, 240, 4, 17868, 21632, 8388608}, j;
+    struct link_scene_info i = {320, 240, 4, 17868, 21632, 8388608, 3, 41, 27, 1024}, j;
     uint8_t buf[LINK_SCENE_INFO_SIZE];
     link_scene_info_put(buf, &i);
     link_scene_info_get(buf, &j);
     CHECK(i.width == j.width && i.height == j.height && i.frames == j.frames &&
           i.compiled_bytes == j.compiled_bytes && i.blob_bytes == j.blob_bytes &&
-          i.blob_limit == j.blob_limit);
+          i.blob_limit == j.blob_limit && i.check_ms == j.check_ms && i.load_ms == j.load_ms &&
+          i.prepare_ms == j.prepare_ms && i.prims == j.prims);
     struct link_progress g = {3, 17, 368, 70000, 76800}, h;
     uint8_t pb[LINK_PROGRESS_SIZE];
     link_progress_put(pb, &g);

@@ -7,7 +7,7 @@
 #include <string.h>
 
 #include "host-tools/scene/scene_desc.h"
-#include "proto/crc32.h"
+#include "proto/wordsum.h"
 #include "proto/wire.h"
 #include "render/scene_load.h"
 #include "tests/check.h"
@@ -79,10 +79,10 @@ static scene_load_status_t try_load(const uint8_t *buf, size_t len, scene_load_e
     return st;
 }
 
-/* Recomputes the CRC so a deliberate field change reaches the field checks. */
+/* Recomputes the word sum so a deliberate field change reaches the field checks. */
 static void fix_crc(uint8_t *b, size_t len)
 {
-    wire_put_u32(b + SCN_HDR_CRC, crc32(b + SCN_CRC_START, len - SCN_CRC_START));
+    wire_put_u32(b + SCN_HDR_SUM, wordsum(b + SCN_SUM_START, len - SCN_SUM_START));
 }
 
 /* Offset of the section of a kind, via the table. */
@@ -258,7 +258,7 @@ static void test_header_fields(void)
     CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_SIZE);
 
     memcpy(c, b, len);
-    wire_put_u32(c + SCN_HDR_CRC, wire_get_u32(c + SCN_HDR_CRC) ^ 1);
+    wire_put_u32(c + SCN_HDR_SUM, wire_get_u32(c + SCN_HDR_SUM) ^ 1);
     CHECK_EQ_INT(try_load(c, len, &e), SCENE_LOAD_ERR_CRC);
 
     memcpy(c, b, len);
@@ -291,7 +291,7 @@ static void test_every_bit_flip(void)
     free(b);
 }
 
-/* Section table damage, with the CRC fixed so the table checks are reached. */
+/* Section table damage, with the word sum fixed so the table checks are reached. */
 static void test_section_table(void)
 {
     size_t len;

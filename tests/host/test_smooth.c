@@ -22,7 +22,7 @@
 #include <string.h>
 
 #include "host-tools/scene/scene_import.h"
-#include "proto/crc32.h"
+#include "proto/wordsum.h"
 #include "proto/scene_format.h"
 #include "proto/wire.h"
 #include "render/blob.h"
@@ -297,7 +297,7 @@ static void test_text_normals(void)
     CHECK(strstr(err, "no direction") != NULL);
 }
 
-/* Loads buf after edit(rec) of its first NORMALS record, with the CRC
+/* Loads buf after edit(rec) of its first NORMALS record, with the word sum
  * made good again; the loader's message. */
 static const char *load_edited(const uint8_t *buf, size_t len, int what)
 {
@@ -314,7 +314,7 @@ static const char *load_edited(const uint8_t *buf, size_t len, int what)
     else
         wire_put_u32(rec + SCN_NORMALS_SIZE + SCN_NORMALS_PRIM,
                      wire_get_u32(rec + SCN_NORMALS_PRIM)); /* the next names the same */
-    wire_put_u32(b + SCN_HDR_CRC, crc32(b + SCN_CRC_START, len - SCN_CRC_START));
+    wire_put_u32(b + SCN_HDR_SUM, wordsum(b + SCN_SUM_START, len - SCN_SUM_START));
     arena_t arena;
     arena_init(&arena, arena_mem, ARENA_BYTES);
     scene_t scene;

@@ -1,5 +1,5 @@
 /* hostile.c: the hostile classes (see hostile.h).  Every edit goes through
- * the offsets of proto/scene_format.h; after an edit the CRC is made right
+ * the offsets of proto/scene_format.h; after an edit the word sum is made right
  * again (except in the class that tests it), so each class reaches the
  * check it aims at. */
 #include "tests/hostile/hostile.h"
@@ -9,7 +9,7 @@
 #include <string.h>
 
 #include "host-tools/scene/scene_desc.h"
-#include "proto/crc32.h"
+#include "proto/wordsum.h"
 #include "proto/scene_format.h"
 #include "proto/wire.h"
 
@@ -115,7 +115,7 @@ static uint8_t *prim_of(struct hostile_scene *h, uint16_t kind)
 
 static int refix(struct hostile_scene *h)
 {
-    wire_put_u32(h->buf + SCN_HDR_CRC, crc32(h->buf + SCN_CRC_START, h->len - SCN_CRC_START));
+    wire_put_u32(h->buf + SCN_HDR_SUM, wordsum(h->buf + SCN_SUM_START, h->len - SCN_SUM_START));
     return 0;
 }
 
@@ -284,7 +284,7 @@ static int truncated(struct hostile_scene *h)
 
 static int crc_mismatch(struct hostile_scene *h)
 {
-    h->buf[h->len - 1] ^= 0x01; /* the CRC is not made right again */
+    h->buf[h->len - 1] ^= 0x01; /* the word sum is not made right again */
     return 0;
 }
 
@@ -398,7 +398,7 @@ const struct hostile_class hostile_classes[] = {
     {"outside", "section kind 9: body outside the file", outside},
     {"truncated", "scene truncated: header says", truncated},
     {"crc_mismatch", "checksum mismatch", crc_mismatch},
-    {"wrong_version", "format version 6 (this loader reads version 5)", wrong_version},
+    {"wrong_version", "format version 7 (this loader reads version 6)", wrong_version},
     {"bad_min_weight", "min_weight not within 0..1", bad_min_weight},
     {"bad_density_steps", "density_steps 1 not 2..256", bad_density_steps},
     {"zero_box", "prim 0: a semi-axis or half edge is not > 0", zero_box},
