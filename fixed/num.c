@@ -18,17 +18,59 @@ static num_t num__sqrt_wide(uint64_t n)
     return (num_t)r;
 }
 
+/* One 16-bit digit of a quotient (Knuth's algorithm D, base 2^16):
+ * floor((u * 2^16 + x) / d) for u < d, d normalised (top bit set), d1 and
+ * d0 its halves; *rem gets the remainder.  The estimate u / d1 is never
+ * low; the loop lowers it until the product with the whole of d fits. */
+static uint32_t num__div_digit(uint32_t u, uint32_t x, uint32_t d, uint32_t *rem)
+{
+    uint32_t d1 = d >> 16, d0 = d & 0xFFFFu;
+    uint32_t q = u / d1, rhat = u - q * d1;
+    while (q > 0xFFFFu || q * d0 > ((rhat << 16) | x)) {
+        q--;
+        rhat += d1;
+        if (rhat > 0xFFFFu)
+            break;
+    }
+    *rem = (u << 16) + x - q * d; /* the true remainder is below d: exact mod 2^32 */
+    return q;
+}
+
+/* floor(n / d) for n >> 32 < d (so the quotient fits 32 bits), exact,
+ * with two 32-bit divisions: libgcc's 64-bit division is a long loop on
+ * a board whose multilib has no divide instruction. */
+static uint32_t num__udiv_64_32(uint64_t n, uint32_t d)
+{
+    uint32_t hi = (uint32_t)(n >> 32), lo = (uint32_t)n;
+    if (hi == 0)
+        return lo / d;
+    int s = __builtin_clz(d); /* normalise: d's top bit set */
+    d <<= s;
+    if (s)
+        hi = (hi << s) | (lo >> (32 - s));
+    lo <<= s;
+    uint32_t rem;
+    uint32_t q1 = num__div_digit(hi, lo >> 16, d, &rem);
+    uint32_t q0 = num__div_digit(rem, lo & 0xFFFFu, d, &rem);
+    return (q1 << 16) | q0;
+}
+
 num_t num_div(num_t a, num_t b)
 {
     if (num_is_sat(a) || num_is_sat(b) || b == 0)
         return num__sticky(a, b);
     int negative = (a < 0) != (b < 0);
-    /* magnitudes in 64 bits: |INT32_MIN| is never an input, but the
-     * unsigned form keeps even that defined */
-    uint64_t ua = (uint64_t)(a < 0 ? -(int64_t)a : a) << NUM_FRAC_BITS;
-    uint64_t ub = (uint64_t)(b < 0 ? -(int64_t)b : b);
-    uint64_t q = (ua + ub / 2) / ub;
-    if (q > (uint64_t)NUM_RAW_MAX)
+    /* magnitudes: |INT32_MIN| is never an input, but the unsigned form
+     * keeps even that defined */
+    uint32_t ua = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
+    uint32_t ub = b < 0 ? 0u - (uint32_t)b : (uint32_t)b;
+    uint64_t n = ((uint64_t)ua << NUM_FRAC_BITS) + ub / 2;
+    /* a quotient of 2^32 or more is out of range, like one above the
+     * largest valid magnitude */
+    if ((uint32_t)(n >> 32) >= ub)
+        return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
+    uint32_t q = num__udiv_64_32(n, ub);
+    if (q > (uint32_t)NUM_RAW_MAX)
         return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
     return negative ? -(num_t)q : (num_t)q;
 }
@@ -43,16 +85,44 @@ num_t num_sqrt(num_t a)
     return num__sqrt_wide((uint64_t)a << NUM_FRAC_BITS);
 }
 
-num_t num_dot3(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz)
+/* The C remainder (a*b) % 4, from the product's low word and its sign. */
+static inline int32_t num__rem4(num_t a, num_t b)
+{
+    uint32_t lo = (uint32_t)a * (uint32_t)b;
+    uint32_t neg = (uint32_t)((a ^ b) >> 31); /* all ones when the signs differ */
+    uint32_t mag = ((lo ^ neg) - neg) & 3u;   /* |a*b| mod 4 */
+    return (int32_t)((mag ^ neg) - neg);
+}
+
+/* The sum of the products, each divided by 4 (rounded toward zero), rounded
+ * to NUM_FRAC_BITS - 2 fewer bits: each product is below 2^62; dropping 2
+ * of its 32 fraction bits keeps the sum of three below 2^63. */
+static num_t num__dot3_wide(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz)
 {
     if (num_is_sat(ax) || num_is_sat(ay) || num_is_sat(az) ||
         num_is_sat(bx) || num_is_sat(by) || num_is_sat(bz))
         return NUM_RAW_SAT;
-    /* Each product is below 2^62; dropping 2 of its 32 fraction bits keeps
-     * the sum of three below 2^63, far below the final rounding. */
     int64_t s = ((int64_t)ax * bx) / 4 + ((int64_t)ay * by) / 4 +
                 ((int64_t)az * bz) / 4;
     return num__from_wide(num__round_shift(s, NUM_FRAC_BITS - 2));
+}
+
+num_t num_dot3(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz)
+{
+    /* All six in [-2^30, 2^30) (no marker among them): each product is
+     * below 2^60 and their exact sum S fits an int64.  The wide form's
+     * s (the products each divided by 4 toward zero) is (S - R) / 4, R the
+     * sum of the products' C remainders by 4; its rounding is done on
+     * 4s = S - R directly, with one 64-bit sum and one shift. */
+    uint32_t mag = (uint32_t)((ax ^ (ax >> 31)) | (ay ^ (ay >> 31)) | (az ^ (az >> 31)) |
+                              (bx ^ (bx >> 31)) | (by ^ (by >> 31)) | (bz ^ (bz >> 31)));
+    if (mag >= (uint32_t)1 << 30)
+        return num__dot3_wide(ax, ay, az, bx, by, bz);
+    int64_t t = (int64_t)ax * bx + (int64_t)ay * by + (int64_t)az * bz -
+                (num__rem4(ax, bx) + num__rem4(ay, by) + num__rem4(az, bz));
+    /* round_shift(t / 4, NUM_FRAC_BITS - 2): halves away from zero */
+    t += ((int64_t)1 << (NUM_FRAC_BITS - 1)) - (t < 0 ? 4 : 0);
+    return num__from_wide(t >> NUM_FRAC_BITS);
 }
 
 num_t num_len3(num_t x, num_t y, num_t z)
