@@ -55,15 +55,9 @@ static uint32_t num__udiv_64_32(uint64_t n, uint32_t d)
     return (q1 << 16) | q0;
 }
 
-num_t num_div(num_t a, num_t b)
+/* |a| / |b| rounded, of the sign given, for ub > 0. */
+static num_t num__div_mag(uint32_t ua, uint32_t ub, int negative)
 {
-    if (num_is_sat(a) || num_is_sat(b) || b == 0)
-        return num__sticky(a, b);
-    int negative = (a < 0) != (b < 0);
-    /* magnitudes: |INT32_MIN| is never an input, but the unsigned form
-     * keeps even that defined */
-    uint32_t ua = a < 0 ? 0u - (uint32_t)a : (uint32_t)a;
-    uint32_t ub = b < 0 ? 0u - (uint32_t)b : (uint32_t)b;
     uint64_t n = ((uint64_t)ua << NUM_FRAC_BITS) + ub / 2;
     /* a quotient of 2^32 or more is out of range, like one above the
      * largest valid magnitude */
@@ -73,6 +67,20 @@ num_t num_div(num_t a, num_t b)
     if (q > (uint32_t)NUM_RAW_MAX)
         return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
     return negative ? -(num_t)q : (num_t)q;
+}
+
+num_t num_div(num_t a, num_t b)
+{
+    /* magnitudes (|INT32_MIN| too: never an input, but defined) */
+    uint32_t sa = (uint32_t)(a >> 31), sb = (uint32_t)(b >> 31);
+    uint32_t ua = ((uint32_t)a ^ sa) - sa, ub = ((uint32_t)b ^ sb) - sb;
+    /* a marker (magnitude INT32_MAX), INT32_MIN or b == 0 is looked at
+     * closer; every other pair divides at once */
+    if (ua >= (uint32_t)INT32_MAX || ub - 1u >= (uint32_t)INT32_MAX - 1u) {
+        if (num_is_sat(a) || num_is_sat(b) || b == 0)
+            return num__sticky(a, b);
+    }
+    return num__div_mag(ua, ub, (sa ^ sb) != 0);
 }
 
 num_t num_sqrt(num_t a)
@@ -85,19 +93,11 @@ num_t num_sqrt(num_t a)
     return num__sqrt_wide((uint64_t)a << NUM_FRAC_BITS);
 }
 
-/* The C remainder (a*b) % 4, from the product's low word and its sign. */
-static inline int32_t num__rem4(num_t a, num_t b)
-{
-    uint32_t lo = (uint32_t)a * (uint32_t)b;
-    uint32_t neg = (uint32_t)((a ^ b) >> 31); /* all ones when the signs differ */
-    uint32_t mag = ((lo ^ neg) - neg) & 3u;   /* |a*b| mod 4 */
-    return (int32_t)((mag ^ neg) - neg);
-}
-
-/* The sum of the products, each divided by 4 (rounded toward zero), rounded
- * to NUM_FRAC_BITS - 2 fewer bits: each product is below 2^62; dropping 2
- * of its 32 fraction bits keeps the sum of three below 2^63. */
-static num_t num__dot3_wide(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz)
+/* The definition (num_dot3 in fixed/num.h is its fast form): the
+ * products, each divided by 4 toward zero, summed, rounded to
+ * NUM_FRAC_BITS - 2 fewer bits.  Each product is below 2^62; dropping 2 of
+ * its 32 fraction bits keeps the sum of three below 2^63. */
+num_t num__dot3_exact(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz)
 {
     if (num_is_sat(ax) || num_is_sat(ay) || num_is_sat(az) ||
         num_is_sat(bx) || num_is_sat(by) || num_is_sat(bz))
@@ -105,24 +105,6 @@ static num_t num__dot3_wide(num_t ax, num_t ay, num_t az, num_t bx, num_t by, nu
     int64_t s = ((int64_t)ax * bx) / 4 + ((int64_t)ay * by) / 4 +
                 ((int64_t)az * bz) / 4;
     return num__from_wide(num__round_shift(s, NUM_FRAC_BITS - 2));
-}
-
-num_t num_dot3(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz)
-{
-    /* All six in [-2^30, 2^30) (no marker among them): each product is
-     * below 2^60 and their exact sum S fits an int64.  The wide form's
-     * s (the products each divided by 4 toward zero) is (S - R) / 4, R the
-     * sum of the products' C remainders by 4; its rounding is done on
-     * 4s = S - R directly, with one 64-bit sum and one shift. */
-    uint32_t mag = (uint32_t)((ax ^ (ax >> 31)) | (ay ^ (ay >> 31)) | (az ^ (az >> 31)) |
-                              (bx ^ (bx >> 31)) | (by ^ (by >> 31)) | (bz ^ (bz >> 31)));
-    if (mag >= (uint32_t)1 << 30)
-        return num__dot3_wide(ax, ay, az, bx, by, bz);
-    int64_t t = (int64_t)ax * bx + (int64_t)ay * by + (int64_t)az * bz -
-                (num__rem4(ax, bx) + num__rem4(ay, by) + num__rem4(az, bz));
-    /* round_shift(t / 4, NUM_FRAC_BITS - 2): halves away from zero */
-    t += ((int64_t)1 << (NUM_FRAC_BITS - 1)) - (t < 0 ? 4 : 0);
-    return num__from_wide(t >> NUM_FRAC_BITS);
 }
 
 num_t num_len3(num_t x, num_t y, num_t z)

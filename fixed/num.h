@@ -133,8 +133,7 @@ static inline num_t num_mul(num_t a, num_t b)
 
 num_t num_div(num_t a, num_t b);  /* saturates; x/0 is a marker; rounds */
 num_t num_sqrt(num_t a);          /* exact rounding; a < 0 gives 0 */
-num_t num_dot3(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz);
-                                  /* one rounding at the end; saturates */
+num_t num__dot3_exact(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz);
 num_t num_from_f32_bits(uint32_t bits); /* integer decode; saturates;
                                            NaN/inf give a marker */
 
@@ -156,6 +155,28 @@ static inline num_t num_from_ratio(int32_t num, int32_t den)
     if (q > (uint64_t)NUM_RAW_MAX)
         return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
     return negative ? -(num_t)q : (num_t)q;
+}
+
+/* a.b, one rounding at the end; saturates; a marker gives +NUM_RAW_SAT.
+ * The definition is num__dot3_exact's (fixed/num.c): the products each
+ * divided by 4 toward zero, summed, rounded half away from zero.  Those
+ * four truncations and the sign of the rounding move the exact sum S by
+ * at most 13 units of the product's last place, so when every input lies
+ * in [-2^30, 2^30) (no marker, S fits an int64) and S sits at least 16
+ * units from a rounding boundary, floor((S + half) / 2^NUM_FRAC_BITS) is
+ * the same result with one 64-bit sum and one shift. */
+static inline num_t num_dot3(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz)
+{
+    uint32_t mag = (uint32_t)((ax ^ (ax >> 31)) | (ay ^ (ay >> 31)) | (az ^ (az >> 31)) |
+                              (bx ^ (bx >> 31)) | (by ^ (by >> 31)) | (bz ^ (bz >> 31)));
+    if (mag < (uint32_t)1 << 30) {
+        int64_t x = (int64_t)ax * bx + (int64_t)ay * by + (int64_t)az * bz +
+                    ((int64_t)1 << (NUM_FRAC_BITS - 1));
+        uint32_t low = (uint32_t)x & (((uint32_t)1 << NUM_FRAC_BITS) - 1);
+        if (low - 16u < ((uint32_t)1 << NUM_FRAC_BITS) - 32u)
+            return num__from_wide(x >> NUM_FRAC_BITS);
+    }
+    return num__dot3_exact(ax, ay, az, bx, by, bz);
 }
 
 /* floor(a) as an integer; markers give +-INT32_MAX >> NUM_FRAC_BITS */

@@ -247,6 +247,24 @@ static void test_dot3_random(void)
     }
 }
 
+/* Every sum across a few rounding boundaries, with products whose
+ * remainders by 4 are all 3 (or all -3, or mixed): where the four
+ * truncations decide the rounding. */
+static void test_dot3_dense(void)
+{
+    static const num_t k_mul[] = {3, -3, 1, 5, -7, 4};
+    static const num_t rest[][4] = {{3, 1, 7, 1}, {-3, 1, -7, 1}, {3, -1, 7, 1}, {0, 0, 0, 0},
+                                    {11, 1, 1, 3}, {-5, 3, 2, 9}};
+    fails_shown = 0;
+    for (size_t m = 0; m < sizeof k_mul / sizeof k_mul[0]; m++)
+        for (size_t r = 0; r < sizeof rest / sizeof rest[0]; r++)
+            for (num_t k = -(1 << 19) - 40; k <= (1 << 19) + 40; k++) {
+                const num_t *o = rest[r];
+                SAME(num_dot3(k, o[0], o[2], k_mul[m], o[1], o[3]),
+                     ref_dot3(k, o[0], o[2], k_mul[m], o[1], o[3]), "num_dot3", k, k_mul[m]);
+            }
+}
+
 int main(void)
 {
     edges_make();
@@ -257,5 +275,6 @@ int main(void)
     RUN(test_len3);
     RUN(test_dot3_edges);
     RUN(test_dot3_random);
+    RUN(test_dot3_dense);
     return check_exit();
 }
