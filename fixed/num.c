@@ -55,15 +55,41 @@ static uint32_t num__udiv_64_32(uint64_t n, uint32_t d)
     return (q1 << 16) | q0;
 }
 
+/* The fraction bits of a quotient in two 32-bit steps of these many bits
+ * (the first the larger), for a divisor below 2^(32 - NUM__DIV_STEP1). */
+#define NUM__DIV_STEP1 ((NUM_FRAC_BITS + 1) / 2)
+#define NUM__DIV_STEP2 (NUM_FRAC_BITS / 2)
+
+/* round(ua 2^NUM_FRAC_BITS / ub) (halves up) for 0 < ub < 2^(32 -
+ * NUM__DIV_STEP1), or UINT32_MAX when that is 2^31 or more: ua = qa ub + ra,
+ * then ra 2^NUM_FRAC_BITS / ub by long division in two steps whose
+ * dividends fit 32 bits (each remainder is below ub); the last remainder
+ * r2 and ub/2 decide the rounding. */
+static uint32_t num__quot_narrow(uint32_t ua, uint32_t ub)
+{
+    uint32_t qa = ua / ub, ra = ua - qa * ub;
+    if (qa >> (31 - NUM_FRAC_BITS))
+        return UINT32_MAX;
+    uint32_t x1 = ra << NUM__DIV_STEP1, f1 = x1 / ub, r1 = x1 - f1 * ub;
+    uint32_t x2 = r1 << NUM__DIV_STEP2, f2 = x2 / ub, r2 = x2 - f2 * ub;
+    return (qa << NUM_FRAC_BITS) + (f1 << NUM__DIV_STEP2) + f2 + (r2 >= ub - ub / 2);
+}
+
+/* The same for any ub > 0: the 64-bit dividend ua 2^NUM_FRAC_BITS + ub/2
+ * divided at once; a quotient of 2^32 or more gives UINT32_MAX. */
+static uint32_t num__quot_wide(uint32_t ua, uint32_t ub)
+{
+    uint64_t n = ((uint64_t)ua << NUM_FRAC_BITS) + ub / 2;
+    if ((uint32_t)(n >> 32) >= ub)
+        return UINT32_MAX;
+    return num__udiv_64_32(n, ub);
+}
+
 /* |a| / |b| rounded, of the sign given, for ub > 0. */
 static num_t num__div_mag(uint32_t ua, uint32_t ub, int negative)
 {
-    uint64_t n = ((uint64_t)ua << NUM_FRAC_BITS) + ub / 2;
-    /* a quotient of 2^32 or more is out of range, like one above the
-     * largest valid magnitude */
-    if ((uint32_t)(n >> 32) >= ub)
-        return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
-    uint32_t q = num__udiv_64_32(n, ub);
+    uint32_t q = ub < (uint32_t)1 << (32 - NUM__DIV_STEP1) ? num__quot_narrow(ua, ub)
+                                                           : num__quot_wide(ua, ub);
     if (q > (uint32_t)NUM_RAW_MAX)
         return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
     return negative ? -(num_t)q : (num_t)q;

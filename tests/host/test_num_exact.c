@@ -1,7 +1,8 @@
-/* test_num_exact.c: the fixed point's division, square roots and dot
- * product (fixed/num.c, fixed/isqrt.c) against plain exact references, bit
- * for bit: 64-bit division, a square root one bit a step, and the products
- * each divided by 4 in 64 bits.  These are the definitions the fast forms
+/* test_num_exact.c: the fixed point's sum, difference, product, division,
+ * square roots and dot product (fixed/num.h, fixed/num.c, fixed/isqrt.c)
+ * against plain exact references, bit for bit: 64-bit sums and products
+ * with the markers looked at first, 64-bit division, a square root one bit
+ * a step, and the products each divided by 4 in 64 bits.  These are the definitions the fast forms
  * must keep (every fixed image depends on them), over edge inputs (zero,
  * one step, powers of two and their neighbours, the largest valid values,
  * the markers, INT32_MIN) and millions of random ones of every bit length.
@@ -20,6 +21,27 @@
 #define RANDOM_PAIRS 2000000
 
 /* ----------------------------------------------------------- references */
+
+static num_t ref_add(num_t a, num_t b)
+{
+    if (num_is_sat(a) || num_is_sat(b))
+        return num_is_sat(a) ? a : b;
+    return num__from_wide((int64_t)a + b);
+}
+
+static num_t ref_sub(num_t a, num_t b)
+{
+    if (num_is_sat(a) || num_is_sat(b))
+        return num_is_sat(a) ? a : -b;
+    return num__from_wide((int64_t)a - b);
+}
+
+static num_t ref_mul(num_t a, num_t b)
+{
+    if (num_is_sat(a) || num_is_sat(b))
+        return num__sticky(a, b);
+    return num__from_wide(num__round_shift((int64_t)a * b, NUM_FRAC_BITS));
+}
 
 static num_t ref_div(num_t a, num_t b)
 {
@@ -152,6 +174,32 @@ static void edges_make(void)
 
 static int fails_shown;
 
+/* a + b, a - b and a * b for a pair (INT32_MIN is not negated: the
+ * references' -b of it is undefined) */
+static void same_add_sub_mul(num_t a, num_t b)
+{
+    SAME(num_add(a, b), ref_add(a, b), "num_add", a, b);
+    if (b != INT32_MIN)
+        SAME(num_sub(a, b), ref_sub(a, b), "num_sub", a, b);
+    SAME(num_mul(a, b), ref_mul(a, b), "num_mul", a, b);
+}
+
+static void test_add_sub_mul(void)
+{
+    fails_shown = 0;
+    for (int i = 0; i < n_edges; i++)
+        for (int j = 0; j < n_edges; j++)
+            same_add_sub_mul(edges[i], edges[j]);
+    for (int i = 0; i < RANDOM_PAIRS; i++)
+        same_add_sub_mul(rng_num(), rng_num());
+    /* every product across rounding boundaries, both signs */
+    for (num_t k = -(1 << 20) - 40; k <= (1 << 20) + 40; k++) {
+        same_add_sub_mul(k, 1);
+        same_add_sub_mul(k, -3);
+        same_add_sub_mul(k, 1 << 11);
+    }
+}
+
 static void test_div_edges(void)
 {
     fails_shown = 0;
@@ -268,6 +316,7 @@ static void test_dot3_dense(void)
 int main(void)
 {
     edges_make();
+    RUN(test_add_sub_mul);
     RUN(test_div_edges);
     RUN(test_div_random);
     RUN(test_sqrt_all_edges);
