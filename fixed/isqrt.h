@@ -6,9 +6,9 @@
 
 #include <stdint.h>
 
-/* floor(sqrt(n)) for any 64-bit n, exact, no division and no floating
- * point.  One result bit per step, starting at n's top bit, so small
- * inputs take few steps. */
+/* floor(sqrt(n)) for any 64-bit n, exact, with two 32-bit divisions and
+ * no floating point: a table seed, a Newton step and a Karatsuba step,
+ * each checked and corrected (fixed/isqrt.c). */
 uint64_t isqrt_u64(uint64_t n);
 
 #endif

@@ -15,3 +15,9 @@ SHARED_SRCS += fixed/isqrt.c
 ARITH_FREE_SRCS += fixed/isqrt.c
 test_isqrt_SRCS := tests/host/test_isqrt.c
 test_isqrt_ARITH := double
+
+# The fixed point's division, square roots and dot product against plain
+# exact references, bit for bit, in every fixed format built.
+test_num_exact_SRCS := tests/host/test_num_exact.c
+test_num_exact_ARITH := fixed
+$(foreach f,12 14 16 18,$(eval test_num_exact_fixed$(f)_SRCS := tests/host/test_num_exact.c)$(eval test_num_exact_fixed$(f)_ARITH := fixed$(f)))

@@ -18,19 +18,95 @@ static num_t num__sqrt_wide(uint64_t n)
     return (num_t)r;
 }
 
-num_t num_div(num_t a, num_t b)
+/* One 16-bit digit of a quotient (Knuth's algorithm D, base 2^16):
+ * floor((u * 2^16 + x) / d) for u < d, d normalised (top bit set), d1 and
+ * d0 its halves; *rem gets the remainder.  The estimate u / d1 is never
+ * low; the loop lowers it until the product with the whole of d fits. */
+static uint32_t num__div_digit(uint32_t u, uint32_t x, uint32_t d, uint32_t *rem)
 {
-    if (num_is_sat(a) || num_is_sat(b) || b == 0)
-        return num__sticky(a, b);
-    int negative = (a < 0) != (b < 0);
-    /* magnitudes in 64 bits: |INT32_MIN| is never an input, but the
-     * unsigned form keeps even that defined */
-    uint64_t ua = (uint64_t)(a < 0 ? -(int64_t)a : a) << NUM_FRAC_BITS;
-    uint64_t ub = (uint64_t)(b < 0 ? -(int64_t)b : b);
-    uint64_t q = (ua + ub / 2) / ub;
-    if (q > (uint64_t)NUM_RAW_MAX)
+    uint32_t d1 = d >> 16, d0 = d & 0xFFFFu;
+    uint32_t q = u / d1, rhat = u - q * d1;
+    while (q > 0xFFFFu || q * d0 > ((rhat << 16) | x)) {
+        q--;
+        rhat += d1;
+        if (rhat > 0xFFFFu)
+            break;
+    }
+    *rem = (u << 16) + x - q * d; /* the true remainder is below d: exact mod 2^32 */
+    return q;
+}
+
+/* floor(n / d) for n >> 32 < d (so the quotient fits 32 bits), exact,
+ * with two 32-bit divisions: libgcc's 64-bit division is a long loop on
+ * a board whose multilib has no divide instruction. */
+static uint32_t num__udiv_64_32(uint64_t n, uint32_t d)
+{
+    uint32_t hi = (uint32_t)(n >> 32), lo = (uint32_t)n;
+    if (hi == 0)
+        return lo / d;
+    int s = __builtin_clz(d); /* normalise: d's top bit set */
+    d <<= s;
+    if (s)
+        hi = (hi << s) | (lo >> (32 - s));
+    lo <<= s;
+    uint32_t rem;
+    uint32_t q1 = num__div_digit(hi, lo >> 16, d, &rem);
+    uint32_t q0 = num__div_digit(rem, lo & 0xFFFFu, d, &rem);
+    return (q1 << 16) | q0;
+}
+
+/* The fraction bits of a quotient in two 32-bit steps of these many bits
+ * (the first the larger), for a divisor below 2^(32 - NUM__DIV_STEP1). */
+#define NUM__DIV_STEP1 ((NUM_FRAC_BITS + 1) / 2)
+#define NUM__DIV_STEP2 (NUM_FRAC_BITS / 2)
+
+/* round(ua 2^NUM_FRAC_BITS / ub) (halves up) for 0 < ub < 2^(32 -
+ * NUM__DIV_STEP1), or UINT32_MAX when that is 2^31 or more: ua = qa ub + ra,
+ * then ra 2^NUM_FRAC_BITS / ub by long division in two steps whose
+ * dividends fit 32 bits (each remainder is below ub); the last remainder
+ * r2 and ub/2 decide the rounding. */
+static uint32_t num__quot_narrow(uint32_t ua, uint32_t ub)
+{
+    uint32_t qa = ua / ub, ra = ua - qa * ub;
+    if (qa >> (31 - NUM_FRAC_BITS))
+        return UINT32_MAX;
+    uint32_t x1 = ra << NUM__DIV_STEP1, f1 = x1 / ub, r1 = x1 - f1 * ub;
+    uint32_t x2 = r1 << NUM__DIV_STEP2, f2 = x2 / ub, r2 = x2 - f2 * ub;
+    return (qa << NUM_FRAC_BITS) + (f1 << NUM__DIV_STEP2) + f2 + (r2 >= ub - ub / 2);
+}
+
+/* The same for any ub > 0: the 64-bit dividend ua 2^NUM_FRAC_BITS + ub/2
+ * divided at once; a quotient of 2^32 or more gives UINT32_MAX. */
+static uint32_t num__quot_wide(uint32_t ua, uint32_t ub)
+{
+    uint64_t n = ((uint64_t)ua << NUM_FRAC_BITS) + ub / 2;
+    if ((uint32_t)(n >> 32) >= ub)
+        return UINT32_MAX;
+    return num__udiv_64_32(n, ub);
+}
+
+/* |a| / |b| rounded, of the sign given, for ub > 0. */
+static num_t num__div_mag(uint32_t ua, uint32_t ub, int negative)
+{
+    uint32_t q = ub < (uint32_t)1 << (32 - NUM__DIV_STEP1) ? num__quot_narrow(ua, ub)
+                                                           : num__quot_wide(ua, ub);
+    if (q > (uint32_t)NUM_RAW_MAX)
         return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
     return negative ? -(num_t)q : (num_t)q;
+}
+
+num_t num_div(num_t a, num_t b)
+{
+    /* magnitudes (|INT32_MIN| too: never an input, but defined) */
+    uint32_t sa = (uint32_t)(a >> 31), sb = (uint32_t)(b >> 31);
+    uint32_t ua = ((uint32_t)a ^ sa) - sa, ub = ((uint32_t)b ^ sb) - sb;
+    /* a marker (magnitude INT32_MAX), INT32_MIN or b == 0 is looked at
+     * closer; every other pair divides at once */
+    if (ua >= (uint32_t)INT32_MAX || ub - 1u >= (uint32_t)INT32_MAX - 1u) {
+        if (num_is_sat(a) || num_is_sat(b) || b == 0)
+            return num__sticky(a, b);
+    }
+    return num__div_mag(ua, ub, (sa ^ sb) != 0);
 }
 
 num_t num_sqrt(num_t a)
@@ -43,13 +119,15 @@ num_t num_sqrt(num_t a)
     return num__sqrt_wide((uint64_t)a << NUM_FRAC_BITS);
 }
 
-num_t num_dot3(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz)
+/* The definition (num_dot3 in fixed/num.h is its fast form): the
+ * products, each divided by 4 toward zero, summed, rounded to
+ * NUM_FRAC_BITS - 2 fewer bits.  Each product is below 2^62; dropping 2 of
+ * its 32 fraction bits keeps the sum of three below 2^63. */
+num_t num__dot3_exact(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz)
 {
     if (num_is_sat(ax) || num_is_sat(ay) || num_is_sat(az) ||
         num_is_sat(bx) || num_is_sat(by) || num_is_sat(bz))
         return NUM_RAW_SAT;
-    /* Each product is below 2^62; dropping 2 of its 32 fraction bits keeps
-     * the sum of three below 2^63, far below the final rounding. */
     int64_t s = ((int64_t)ax * bx) / 4 + ((int64_t)ay * by) / 4 +
                 ((int64_t)az * bz) / 4;
     return num__from_wide(num__round_shift(s, NUM_FRAC_BITS - 2));

@@ -94,20 +94,40 @@ static inline num_t num__sticky(num_t a, num_t b)
     return ((a < 0) != (b < 0)) ? -NUM_RAW_SAT : NUM_RAW_SAT;
 }
 
-/* saturates */
-static inline num_t num_add(num_t a, num_t b)
+/* |a| in one's complement (a ^ sign): below 2^k for a in [-2^k, 2^k).  An
+ * OR of several is below 2^k when each is: the fast paths' one test that
+ * no input is a marker (magnitude INT32_MAX) and nothing can overflow. */
+static inline uint32_t num__mag(num_t a) { return (uint32_t)(a ^ (a >> 31)); }
+
+/* saturates (a marker stays that marker) */
+static inline num_t num__add_wide(num_t a, num_t b)
 {
     if (num_is_sat(a) || num_is_sat(b))
         return num_is_sat(a) ? a : b;
     return num__from_wide((int64_t)a + b);
 }
 
-/* saturates */
-static inline num_t num_sub(num_t a, num_t b)
+/* saturates; within 2^29 each the sum is in range at once */
+static inline num_t num_add(num_t a, num_t b)
+{
+    if ((num__mag(a) | num__mag(b)) < (uint32_t)1 << 29)
+        return a + b;
+    return num__add_wide(a, b);
+}
+
+static inline num_t num__sub_wide(num_t a, num_t b)
 {
     if (num_is_sat(a) || num_is_sat(b))
         return num_is_sat(a) ? a : -b;
     return num__from_wide((int64_t)a - b);
+}
+
+/* saturates; within 2^29 each the difference is in range at once */
+static inline num_t num_sub(num_t a, num_t b)
+{
+    if ((num__mag(a) | num__mag(b)) < (uint32_t)1 << 29)
+        return a - b;
+    return num__sub_wide(a, b);
 }
 
 /* exact (the marker negates to the other marker) */
@@ -123,18 +143,29 @@ static inline int64_t num__round_shift(int64_t p, int bits)
     return -((-p + half) >> bits);
 }
 
-/* saturates; rounds to nearest */
-static inline num_t num_mul(num_t a, num_t b)
+static inline num_t num__mul_wide(num_t a, num_t b)
 {
     if (num_is_sat(a) || num_is_sat(b))
         return num__sticky(a, b);
     return num__from_wide(num__round_shift((int64_t)a * b, NUM_FRAC_BITS));
 }
 
+/* saturates; rounds to nearest (halves away from zero).  With a and b
+ * within 2^30 (no marker) and the product within 2^(NUM_FRAC_BITS+30) the
+ * result is in range: rounded with one add (a half, less one below 0) and
+ * one shift. */
+static inline num_t num_mul(num_t a, num_t b)
+{
+    int64_t p = (int64_t)a * b;
+    if ((num__mag(a) | num__mag(b)) < (uint32_t)1 << 30 &&
+        (uint64_t)(p + ((int64_t)1 << (NUM_FRAC_BITS + 30))) < (uint64_t)1 << (NUM_FRAC_BITS + 31))
+        return (num_t)((p + ((int64_t)1 << (NUM_FRAC_BITS - 1)) - (p < 0)) >> NUM_FRAC_BITS);
+    return num__mul_wide(a, b);
+}
+
 num_t num_div(num_t a, num_t b);  /* saturates; x/0 is a marker; rounds */
 num_t num_sqrt(num_t a);          /* exact rounding; a < 0 gives 0 */
-num_t num_dot3(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz);
-                                  /* one rounding at the end; saturates */
+num_t num__dot3_exact(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz);
 num_t num_from_f32_bits(uint32_t bits); /* integer decode; saturates;
                                            NaN/inf give a marker */
 
@@ -156,6 +187,31 @@ static inline num_t num_from_ratio(int32_t num, int32_t den)
     if (q > (uint64_t)NUM_RAW_MAX)
         return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
     return negative ? -(num_t)q : (num_t)q;
+}
+
+/* a.b, one rounding at the end; saturates; a marker gives +NUM_RAW_SAT.
+ * The definition is num__dot3_exact's (fixed/num.c): the products each
+ * divided by 4 toward zero, summed, rounded half away from zero.  Those
+ * four truncations and the sign of the rounding move the exact sum S by
+ * at most 13 units of the product's last place, so when every input lies
+ * in [-2^30, 2^30) (no marker, S fits an int64) and S sits at least 16
+ * units from a rounding boundary, floor((S + half) / 2^NUM_FRAC_BITS) is
+ * the same result with one 64-bit sum and one shift. */
+static inline num_t num_dot3(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz)
+{
+    /* (a's | b's: the b half is shared by the three rows of a transform) */
+    uint32_t mag = (num__mag(ax) | num__mag(ay) | num__mag(az)) |
+                   (num__mag(bx) | num__mag(by) | num__mag(bz));
+    if (mag < (uint32_t)1 << 30) {
+        int64_t x = (int64_t)ax * bx + (int64_t)ay * by + (int64_t)az * bz +
+                    ((int64_t)1 << (NUM_FRAC_BITS - 1));
+        uint32_t low = (uint32_t)x & (((uint32_t)1 << NUM_FRAC_BITS) - 1);
+        /* clear of a boundary, and a result within 2^30 */
+        if (low - 16u < ((uint32_t)1 << NUM_FRAC_BITS) - 32u &&
+            (uint64_t)(x + ((int64_t)1 << (NUM_FRAC_BITS + 30))) < (uint64_t)1 << (NUM_FRAC_BITS + 31))
+            return (num_t)(x >> NUM_FRAC_BITS);
+    }
+    return num__dot3_exact(ax, ay, az, bx, by, bz);
 }
 
 /* floor(a) as an integer; markers give +-INT32_MAX >> NUM_FRAC_BITS */
