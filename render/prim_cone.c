@@ -156,7 +156,7 @@ static void cone_cap(cone_ray_t *r, num_t end, num_t rad)
     num_t x = num_add(num_mul(r->c.x, r->dn.y), num_mul(gap, r->dn.x));
     num_t z = num_add(num_mul(r->c.z, r->dn.y), num_mul(gap, r->dn.z));
     num_t rr = num_add(num_mul(x, x), num_mul(z, z)), edge = num_mul(rad, dy);
-    num_t u = num_div(gap, r->dn.y), t;
+    num_t u = num_div(gap, r->dn.y), t = NUM_ZERO; /* set when have_t */
     int have_t = !num_is_sat(u) && cone_t(r, u, &t);
     if (r->want && (!have_t || cone_in_span(r, t))) {
         num_t e = num_mul(r->delta, num_add(dy, num_add(num_abs(r->dn.x), num_abs(r->dn.z))));
