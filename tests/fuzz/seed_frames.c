@@ -89,7 +89,8 @@ int main(int argc, char **argv)
     add(LINK_PROGRESS, 0, p, LINK_PROGRESS_SIZE);
     wire_put_u16(p, CMD_SCENE_LOAD);
     wire_put_u16(p + 2, LINK_OK);
-    struct link_scene_info si = {320, 240, 1, 812, 90000, 8u << 20};
+    struct link_scene_info si = {.width = 320, .height = 240, .frames = 1, .compiled_bytes = 812,
+                                 .blob_bytes = 90000, .blob_limit = 8u << 20};
     link_scene_info_put(p + LINK_RESULT_FIXED_SIZE, &si);
     add(LINK_RESULT, 0, p, LINK_RESULT_FIXED_SIZE + LINK_SCENE_INFO_SIZE);
     struct link_render_stats rs;
