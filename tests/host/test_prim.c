@@ -438,6 +438,8 @@ static void test_cone_uncertain(void)
     CHECK_EQ_INT(u, 0);
     hit_uncertain(f, ray_of(0, 1.0003, 0, 0, 0, 1), 1e-3, &u); /* past the rim */
     CHECK_EQ_INT(u, 1);
+}
+
 /* A small deterministic generator for the tests below: uniform in [lo, hi). */
 static double rnd(unsigned *state, double lo, double hi)
 {
