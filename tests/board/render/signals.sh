@@ -73,8 +73,10 @@ interrupt() {
     rm -rf "${TMPDIR:?}"/* "$T"/out/* "$T"/out/.[!.]*
 }
 
+# (256x192: the twelve frames take far longer than the 1.5 s before the
+# signal, so it lands while the film is still being made)
 interrupt signals_render_film_int INT "$T/out/.a.apng.*" \
-    "${L1[@]}" render scenes/fly.scn --frames 0:11 -o "$T/out/a.apng" --size 64x48 --quiet
+    "${L1[@]}" render scenes/fly.scn --frames 0:11 -o "$T/out/a.apng" --size 256x192 --quiet
 interrupt signals_render_insns_term TERM "$TMPDIR/links1-insns-*" \
     "${L1[@]}" render scenes/fly.scn --frames 0:11 -o "$T/out/b.apng" --size 64x48 --quiet \
     --count-insns
