@@ -219,7 +219,7 @@ struct link_progress {
 };
 
 /* CMD_RENDER result. */
-#define LINK_RENDER_STATS_SIZE 124
+#define LINK_RENDER_STATS_SIZE 128
 struct link_render_stats {
     uint32_t frame, ncs, areas;
     uint32_t prepare_ms;   /* the DM preparing this frame (0: prepared while
@@ -236,6 +236,9 @@ struct link_render_stats {
     uint32_t escalated_pixels;  /* pixels traced again in the wide arithmetic
                                    (LINK_RENDER_ESCALATE) */
     uint64_t primary_hit;       /* camera rays that hit something */
+    uint32_t flags;             /* the flags the frame rendered with: those asked,
+                                   less LINK_RENDER_ESCALATE when the scene's wide
+                                   copy did not fit the DM's IMSU block beside it */
 };
 
 /* CMD_FRAME_PULL result: u16 width, u16 height, u32 crc (of the r,g,b
@@ -336,6 +339,7 @@ static inline void link_render_stats_put(uint8_t *p, const struct link_render_st
     for (int i = 0; i < 8; i++)
         wire_put_u32(p + 84 + 4 * i, b[i]);
     wire_put_u64(p + 116, s->primary_hit);
+    wire_put_u32(p + 124, s->flags);
 }
 static inline void link_render_stats_get(const uint8_t *p, struct link_render_stats *s)
 {
@@ -351,6 +355,7 @@ static inline void link_render_stats_get(const uint8_t *p, struct link_render_st
     for (int i = 0; i < 8; i++)
         *b[i] = wire_get_u32(p + 84 + 4 * i);
     s->primary_hit = wire_get_u64(p + 116);
+    s->flags = wire_get_u32(p + 124);
 }
 
 #endif

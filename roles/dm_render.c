@@ -53,6 +53,8 @@ static struct {
                              the RC then copies only the frame part of the
                              next blobs of the same load */
     int wide_loaded[2];   /* block A / B holds this scene's wide blob too */
+    int wide_refused;     /* the wide blob did not fit beside the scene: an
+                             escalation asked of this scene is dropped */
     int prepared_wide;    /* the frame prepared holds the wide blob */
     uint32_t body_sum;    /* the scene's word sum after its header, summed
                              while its shared-path upload was checked */
@@ -112,6 +114,8 @@ static int dm_prepare_wide(uint8_t *block, int held, uint32_t frame, size_t size
                                         why, sizeof why);
         dm_scene.wide_loaded[held] = r == 0;
     }
+    if (r != 0) /* no room, or the wide load refused the rest of the block */
+        dm_scene.wide_refused = 1;
     if (r == 0)
         r = RENDER_WIDE(wide_blob_prepare)(block + at, frame, size - at, why, sizeof why);
     if (r != 0) {
@@ -232,6 +236,7 @@ void dm_cmd_scene_load(uint16_t cmd)
     dm_scene.prepared = -1;
     dm_scene.loaded[0] = dm_scene.loaded[1] = 0;
     dm_scene.wide_loaded[0] = dm_scene.wide_loaded[1] = 0;
+    dm_scene.wide_refused = 0;
     if (++dm_scene.load_id == 0) /* 0 is "unnumbered" */
         dm_scene.load_id = 1;
     struct dm_scene_rx rx = {NULL, 0, ""};
@@ -327,9 +332,10 @@ static int dm_await_frame(uint32_t frame, struct line_msg *m)
     }
 }
 
-static void dm_render_result(uint16_t cmd, uint32_t frame, uint32_t prepare_ms,
-                             const struct line_msg *m)
+static void dm_render_result(uint16_t cmd, const struct link_render_args *a,
+                             uint32_t prepare_ms, const struct line_msg *m)
 {
+    uint32_t frame = a->frame;
     const uint8_t *q = m->payload + 4;
     struct link_render_stats s;
     memset(&s, 0, sizeof s);
@@ -357,6 +363,7 @@ static void dm_render_result(uint16_t cmd, uint32_t frame, uint32_t prepare_ms,
     s.primary_prim_tests = rs.primary_prim_tests;
     s.precision_lost_pixels = rs.precision_lost_pixels;
     s.escalated_pixels = rs.escalated_pixels;
+    s.flags = a->flags;
     s.dm_high = (uint32_t)kmem_high_water();
     uint8_t f[LINK_RENDER_STATS_SIZE + LINK_RENDER_FAILS_SIZE(LINK_REISSUE_LIST_MAX)];
     link_render_stats_put(f, &s);
@@ -376,6 +383,58 @@ _Static_assert(4 + GIGS_RESULT_SIZE + LINK_RENDER_FAILS_SIZE(LINK_REISSUE_LIST_M
 _Static_assert(LINK_RESULT_FIXED_SIZE + LINK_RENDER_STATS_SIZE +
                    LINK_RENDER_FAILS_SIZE(LINK_REISSUE_LIST_MAX) <= LINK_MAX_PAYLOAD,
                "the failures must fit the CMD_RENDER result");
+
+/* The wide blob added to frame, prepared already without it in the block
+ * the DM holds; 0, or -1 with err filled (the narrow frame stands). */
+static int dm_add_wide(uint32_t frame, render_blob_error_t *err)
+{
+    struct imsu_pair *p = &imsu_dm_rc;
+    int held = imsu_held(p, UNITS_DM_CORE);
+    uint8_t *block;
+    int r = imsu_write_begin(p, UNITS_DM_CORE, held, &block);
+    if (r != IMSU_OK) {
+        err->status = RENDER_BLOB_ERR_BLOCK;
+        fmt_snprintf(err->message, sizeof err->message, "IMSU %s: %s", p->name,
+                     imsu_strerror(r));
+        return -1;
+    }
+    uint64_t t0 = ktime_now();
+    insn_mark_trace_span_begin(); /* part of the frame's preprocessing (docs/trace.md) */
+    r = dm_prepare_wide(block, held, frame, p->size, err);
+    insn_mark_trace_span_end();
+    imsu_write_end(p, UNITS_DM_CORE);
+    dm_scene.prepared_wide = r == 0;
+    dm_scene.prepare_ms += ktime_ticks_to_ms(ktime_now() - t0);
+    return r;
+}
+
+/* Frame a->frame prepared as asked, unless prepared already.  An
+ * escalation (LINK_RENDER_ESCALATE, not the scene's check_lost) whose wide
+ * blob does not fit the IMSU block beside the scene is dropped: the flag
+ * cleared in *a, the frame prepared without it, and the result's flags say
+ * so.  0, or -1 with err filled. */
+static int dm_prepare_asked(struct link_render_args *a, int *escalate, render_blob_error_t *err)
+{
+    int droppable = (a->flags & LINK_RENDER_ESCALATE) && !dm_scene.check_lost;
+    if (droppable && dm_scene.wide_refused) {
+        a->flags &= (uint8_t)~LINK_RENDER_ESCALATE;
+        *escalate = 0;
+    }
+    int here = dm_scene.prepared == (int32_t)a->frame;
+    if (here && dm_scene.prepared_wide == *escalate)
+        return 0;
+    /* prepared at the upload without the wide blob: only that is added */
+    int r = here && *escalate ? dm_add_wide(a->frame, err) : dm_prepare(a->frame, *escalate, err);
+    if (r == 0)
+        return 0;
+    if (!droppable || !dm_scene.wide_refused || !*escalate)
+        return -1;
+    a->flags &= (uint8_t)~LINK_RENDER_ESCALATE;
+    *escalate = 0;
+    if (dm_scene.prepared == (int32_t)a->frame && !dm_scene.prepared_wide)
+        return 0; /* the narrow frame stands */
+    return dm_prepare(a->frame, 0, err);
+}
 
 void dm_cmd_render(uint16_t cmd)
 {
@@ -416,8 +475,7 @@ void dm_cmd_render(uint16_t cmd)
     if (escalate && dm_escalation_fits(cmd) != 0)
         return;
     render_blob_error_t err;
-    if ((dm_scene.prepared != (int32_t)a.frame || dm_scene.prepared_wide != escalate) &&
-        dm_prepare(a.frame, escalate, &err) != 0) {
+    if (dm_prepare_asked(&a, &escalate, &err) != 0) {
         hostlink_error(cmd, LINK_ERR_CHECK, "frame %u: %s", (unsigned)a.frame, err.message);
         return;
     }
@@ -468,7 +526,7 @@ void dm_cmd_render(uint16_t cmd)
                        (int)(m->len - 4), (const char *)m->payload + 4);
         return;
     }
-    dm_render_result(cmd, a.frame, prepare_ms, m);
+    dm_render_result(cmd, &a, prepare_ms, m);
 }
 
 static void dm_frame_fill(void *ctx, uint8_t *data, uint32_t n, uint32_t offset)

@@ -1015,7 +1015,11 @@ static int render_one_frame(struct board *b, const struct render_opts *o, struct
     int rc = render_sink_put(k, path, &img);
     run->wall.write += board_now_ms() - t2;
     /* The scene's upload time is told with its first frame. */
-    if (rc == 0 && o->board.verbose && (a.flags & LINK_RENDER_ESCALATE))
+    if (rc == 0 && !o->board.quiet && (a.flags & ~s.flags & LINK_RENDER_ESCALATE))
+        fprintf(stderr, "links1 render: frame %u: escalation off: the scene's double copy does "
+                "not fit beside it in the DM's %u-byte IMSU block; its pixels in doubt stay "
+                "as traced, as with --no-escalate\n", s.frame, (unsigned)info->blob_limit);
+    if (rc == 0 && o->board.verbose && (s.flags & LINK_RENDER_ESCALATE))
         printf("links1 render: frame %u: %u pixels escalated to double\n", s.frame,
                s.escalated_pixels);
     if (rc == 0 && !o->board.quiet)

@@ -217,3 +217,22 @@ if [ $rc -eq 2 ] && grep -q 'not both' "$RENDER_TMP/$name.log"; then
 else
     echo "FAIL $name: exit $rc, want 2 and 'not both': $(tail -n 1 "$RENDER_TMP/$name.log")"
 fi
+
+# A scene whose double copy does not fit beside it in the DM's IMSU block
+# (SPD tetra 9: 118 MB prepared, 217 MB in double, a 193 MB block) renders
+# without escalation, says so, and gives the host's plain image
+name=render_escalate_dropped_no_room
+nff=$RENDER_TMP/tetra9.nff
+ref=$RENDER_TMP/$name-host.ppm
+out=$RENDER_TMP/$name.ppm
+"$(dirname "$LINKS1")/links1-spd" tetra 9 -o "$nff" >"$nff.log" 2>&1
+"$LINKS1" ref "$nff" --arith float --size 32x24 --no-escalate -o "$ref" >"$ref.log" 2>&1
+if render_board $name "$out" "$nff" -o "$out" --ncs 2 --size 32x24; then
+    if grep -q 'escalation off: the scene.s double copy does not fit' "$RENDER_TMP/$name.log" &&
+        cmp -s "$ref" "$out"; then
+        echo "PASS $name"
+    else
+        echo "FAIL $name: want the 'escalation off' line and the host's plain image: $(grep -m1 'escalation' "$RENDER_TMP/$name.log")"
+    fi
+fi
+rm -f "$nff"
