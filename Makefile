@@ -319,11 +319,12 @@ deps:
 	$(Q)bash host-tools/scripts/install-deps.sh
 
 # make run builds and installs only what rendering the demo needs: links1
-# and the machine's float firmware.
+# and the machine's float firmware that escalates (what render boots by
+# default).
 run:
 	$(Q)$(if $(filter $(MACHINE),$(FW_MACHINES)),true,echo "make run: MACHINE=$(MACHINE): the machines are $(FW_MACHINES)" >&2; exit 2)
 	$(Q)bash host-tools/scripts/install-deps.sh run
-	$(Q)$(MAKE) $(JOBS) --no-print-directory $(B)/links1 $(call fw_elf,$(MACHINE),float)
+	$(Q)$(MAKE) $(JOBS) --no-print-directory $(B)/links1 $(call fw_elf,$(MACHINE),float-esc)
 	$(Q)MACHINE=$(MACHINE) bash host-tools/scripts/make-run.sh
 
 # The board halted under QEMU's gdb stub, gdb-multiarch attached with the
