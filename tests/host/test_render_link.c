@@ -11,10 +11,10 @@
  * two fields swapped or overlapping would not come back equal. */
 static void render_link_stats_round_trip(void)
 {
-    /* 5 u32, 8 u64, 8 u32, 1 u64 */
-    CHECK_EQ_INT(LINK_RENDER_STATS_SIZE, 5 * 4 + 8 * 8 + 8 * 4 + 8);
+    /* 5 u32, 8 u64, 8 u32, 1 u64, 1 u32 */
+    CHECK_EQ_INT(LINK_RENDER_STATS_SIZE, 5 * 4 + 8 * 8 + 8 * 4 + 8 + 4);
     struct link_render_stats s = {1, 64, 368, 20, 3230, 1ull << 40, 2, 3, 4, 5, 6, 7, 8,
-                                  9, 10, 11, 12, 13, 14, 15, 16, (1ull << 33) + 17};
+                                  9, 10, 11, 12, 13, 14, 15, 16, (1ull << 33) + 17, 0x8021};
     uint8_t buf[LINK_RENDER_STATS_SIZE + 1];
     buf[LINK_RENDER_STATS_SIZE] = 0xA5;
     link_render_stats_put(buf, &s);
@@ -31,7 +31,7 @@ static void render_link_stats_round_trip(void)
     CHECK(t.blob_bytes == 14);
     CHECK(t.primary == 1ull << 40 && t.dc_full_waits == 15 && t.render_ms == 3230);
     CHECK(t.escalated_pixels == 16);
-    CHECK(t.primary_hit == (1ull << 33) + 17);
+    CHECK(t.primary_hit == (1ull << 33) + 17 && t.flags == 0x8021);
 }
 
 static void render_link_args_round_trip(void)
