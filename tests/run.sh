@@ -14,7 +14,7 @@
 # process of a kind), "full" for one of `make test-full`.  Host and board
 # tests run TEST_JOBS at a time (one per host core by default: a board's
 # idle unit computers sleep, and a small test's time is mostly the host's
-# own work), longest first by their last run; solo and full tests then run
+# own work), longest first by their last run (or their limit); solo and full tests then run
 # one at a time.  A test fails (one failure more, named) when it
 #   - is not declared there, or runs another number of checks than declared
 #     (one that ends early prints fewer);
@@ -57,11 +57,17 @@ pooled() {
     awk -F'\t' -v n="$1" '$1 == n && ($4 == "host" || $4 == "board") { found = 1; exit }
         END { exit !found }' "$plan"
 }
-# last_secs PATH: the seconds its last run here took (0 when unknown).
+# last_secs PATH: the seconds its last run here took; before any, an
+# eighth of its limit (the plan sets limits at about eight times a run).
 last_secs() {
-    local rc secs limit
+    local rc secs limit checks plimit
     read -r rc secs limit 2>/dev/null <"$log_dir/$(basename "$1").log.rc" || true
-    case ${secs:-} in '' | *[!0-9]*) echo 0 ;; *) echo "$secs" ;; esac
+    case ${secs:-} in
+    '' | *[!0-9]*)
+        read -r checks plimit < <(plan_of "$1")
+        echo $(( ${plimit:-0} / 8 )) ;;
+    *) echo "$secs" ;;
+    esac
 }
 
 # exec_one LABEL CMD...: runs one test into its log under its time limit
