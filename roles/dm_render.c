@@ -126,6 +126,22 @@ static int dm_prepare_wide(uint8_t *block, int held, uint32_t frame, size_t size
     return 0;
 }
 
+/* The DM's IMSU block opened for writing: *held (A or B) and *block; 0, or
+ * -1 with err filled. */
+static int dm_block_begin(int *held, uint8_t **block, render_blob_error_t *err)
+{
+    struct imsu_pair *p = &imsu_dm_rc;
+    *held = imsu_held(p, UNITS_DM_CORE);
+    int r = imsu_write_begin(p, UNITS_DM_CORE, *held, block);
+    if (r != IMSU_OK) {
+        err->status = RENDER_BLOB_ERR_BLOCK;
+        fmt_snprintf(err->message, sizeof err->message, "IMSU %s: %s", p->name,
+                     imsu_strerror(r));
+        return -1;
+    }
+    return 0;
+}
+
 /* Builds frame into the block the DM holds, with its wide blob when
  * escalating; 0, or -1 with err filled.  The scene is loaded into a block
  * once (its checks, its arrays); each frame after that is only the paper's
@@ -133,15 +149,10 @@ static int dm_prepare_wide(uint8_t *block, int held, uint32_t frame, size_t size
 static int dm_prepare(uint32_t frame, int escalate, render_blob_error_t *err)
 {
     struct imsu_pair *p = &imsu_dm_rc;
-    int held = imsu_held(p, UNITS_DM_CORE);
+    int held;
     uint8_t *block;
-    int r = imsu_write_begin(p, UNITS_DM_CORE, held, &block);
-    if (r != IMSU_OK) {
-        err->status = RENDER_BLOB_ERR_BLOCK;
-        fmt_snprintf(err->message, sizeof err->message, "IMSU %s: %s", p->name,
-                     imsu_strerror(r));
+    if (dm_block_begin(&held, &block, err) != 0)
         return -1;
-    }
     render_blob_t *blob = (render_blob_t *)block;
     render_blob_status_t st = RENDER_BLOB_OK;
     if (!dm_scene.loaded[held]) {
@@ -389,18 +400,13 @@ _Static_assert(LINK_RESULT_FIXED_SIZE + LINK_RENDER_STATS_SIZE +
 static int dm_add_wide(uint32_t frame, render_blob_error_t *err)
 {
     struct imsu_pair *p = &imsu_dm_rc;
-    int held = imsu_held(p, UNITS_DM_CORE);
+    int held;
     uint8_t *block;
-    int r = imsu_write_begin(p, UNITS_DM_CORE, held, &block);
-    if (r != IMSU_OK) {
-        err->status = RENDER_BLOB_ERR_BLOCK;
-        fmt_snprintf(err->message, sizeof err->message, "IMSU %s: %s", p->name,
-                     imsu_strerror(r));
+    if (dm_block_begin(&held, &block, err) != 0)
         return -1;
-    }
     uint64_t t0 = ktime_now();
     insn_mark_trace_span_begin(); /* part of the frame's preprocessing (docs/trace.md) */
-    r = dm_prepare_wide(block, held, frame, p->size, err);
+    int r = dm_prepare_wide(block, held, frame, p->size, err);
     insn_mark_trace_span_end();
     imsu_write_end(p, UNITS_DM_CORE);
     dm_scene.prepared_wide = r == 0;
