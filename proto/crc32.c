@@ -4,8 +4,11 @@
 
 #define CRC32_POLY 0xEDB88320u
 
-/* One table entry: eight shift/xor steps over the byte value i. */
-#define T1(c) (((c) & 1u) ? (((c) >> 1) ^ CRC32_POLY) : ((c) >> 1))
+/* One table entry: eight shift/xor steps over the byte value i.  Each step
+ * names its argument twice (the polynomial masked by the low bit), so an
+ * entry expands to 2^8 terms, not the 3^8 a conditional would: the table
+ * compiles in a fraction of a second. */
+#define T1(c) (((c) >> 1) ^ (CRC32_POLY & (0u - ((c) & 1u))))
 #define T8(i) T1(T1(T1(T1(T1(T1(T1(T1((uint32_t)(i)))))))))
 #define R4(i) T8(i), T8(i + 1), T8(i + 2), T8(i + 3)
 #define R16(i) R4(i), R4(i + 4), R4(i + 8), R4(i + 12)
