@@ -144,12 +144,12 @@ ARITH_FREE_SRCS :=
 HOST_TOOLS :=
 
 # ------------------------------------------------------------ the test plan
-# tests/plan.tsv: one row a test (path, checks, seconds, suite: host, board,
-# solo or full; its header says more).  $(call plan_paths,SUITE...): the paths
+# tests/plan.tsv: one row a test (path, checks, seconds, suite: host, board
+# or full; its header says more).  $(call plan_paths,SUITE...): the paths
 # of the rows of those suites, in the plan's order.
 TEST_PLAN := tests/plan.tsv
 plan_paths = $(shell awk -F'\t' 'NF >= 4 && index(" $(1) ", " " $$4 " ") { print $$1 }' $(TEST_PLAN))
-PLAN_TEST := $(call plan_paths,host board solo)
+PLAN_TEST := $(call plan_paths,host board)
 PLAN_FULL := $(call plan_paths,full)
 # HOST_TESTS: the C unit tests (rows build/tests/NAME, the path with the
 #   default B) that get a build
@@ -263,9 +263,12 @@ $(eval $(call wide_object,$(B)/host-double/render-wide.o,$(B)/host-double,$(HOST
 $(eval $(call wide_object,$(B)/host-double-san/render-wide.o,$(B)/host-double-san,$(HOST_CC),))
 -include $(B)/host-double/render/wide.c.d $(B)/host-double-san/render/wide.c.d
 
-# $(1) = program name, $(2) = output dir suffix ('' or -san), $(3) = output path
+# $(1) = program name, $(2) = output dir suffix ('' or -san), $(3) = output path.
+# A program links every shared source, or only its NAME_SHARED when set (a
+# test of one part then builds no renderer in its arithmetic).
 define host_prog
-$(1)_OBJS := $$(call arith_objs,$(B)/host,$$($(1)_ARITH),$(2),$$($(1)_SRCS) $$(SHARED_SRCS)) \
+$(1)_OBJS := $$(call arith_objs,$(B)/host,$$($(1)_ARITH),$(2),$$($(1)_SRCS) \
+	$$(or $$($(1)_SHARED),$$(SHARED_SRCS))) \
 	$(if $($(1)_WIDE),$(B)/host-double$(2)/render-wide.o)
 $(3): $$($(1)_OBJS)
 	$$(call say,HOSTLD,$$@)

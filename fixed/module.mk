@@ -18,6 +18,8 @@ test_isqrt_ARITH := double
 
 # The fixed point's division, square roots and dot product against plain
 # exact references, bit for bit, in every fixed format built.
+# They link the fixed point alone (NAME_SHARED).
 test_num_exact_SRCS := tests/host/test_num_exact.c
 test_num_exact_ARITH := fixed
-$(foreach f,12 14 16 18,$(eval test_num_exact_fixed$(f)_SRCS := tests/host/test_num_exact.c)$(eval test_num_exact_fixed$(f)_ARITH := fixed$(f)))
+test_num_exact_SHARED := fixed/num.c fixed/isqrt.c
+$(foreach f,12 14 16 18,$(eval test_num_exact_fixed$(f)_SRCS := tests/host/test_num_exact.c)$(eval test_num_exact_fixed$(f)_ARITH := fixed$(f))$(eval test_num_exact_fixed$(f)_SHARED := $(test_num_exact_SHARED)))

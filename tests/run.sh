@@ -9,13 +9,12 @@
 #
 # Every test is declared in tests/plan.tsv: its path (as the lists give it),
 # how many checks it runs, the seconds it may take, and its suite: "host"
-# for one that boots no board, "board" for one that does, "solo" for one of
-# `make test` that must have the host to itself (it counts every board
-# process of a kind), "full" for one of `make test-full`.  Host and board
+# for one that boots no board, "board" for one that does, "full" for one
+# of `make test-full`.  Host and board
 # tests run TEST_JOBS at a time (one per host core by default: a board's
 # idle unit computers sleep, and a small test's time is mostly the host's
-# own work), longest first by their last run (or their limit); solo and full tests then run
-# one at a time.  A test fails (one failure more, named) when it
+# own work), longest first by their last run (or their limit); full tests run one at
+# a time.  A test fails (one failure more, named) when it
 #   - is not declared there, or runs another number of checks than declared
 #     (one that ends early prints fewer);
 #   - exits non-zero without printing a FAIL line (a crash, a sanitizer
@@ -134,16 +133,16 @@ report_one() {
 
 # The pool: host programs and the scripts of suites host and board, longest
 # (by their last run) first, TEST_JOBS at a time; results are reported in
-# the pool's order as each is known.  Then the solo (and full) scripts.
+# the pool's order as each is known.  Then the full scripts, one at a time.
 TEST_JOBS=${TEST_JOBS:-${HOST_JOBS:-$(nproc 2>/dev/null || echo 2)}}
 pool_in=()
-solo_list=()
+alone_list=()
 for t in ${HOST_TESTS:-}; do pool_in+=("$t"); done
 for t in ${BOARD_TESTS:-}; do
     if pooled "$t"; then
         pool_in+=("$t")
     else
-        solo_list+=("$t")
+        alone_list+=("$t")
     fi
 done
 pool=()
@@ -180,7 +179,7 @@ while [ $next_report -lt ${#pool[@]} ]; do
     report_one "${pool[next_report]}"
     next_report=$((next_report + 1))
 done
-for t in "${solo_list[@]}"; do
+for t in "${alone_list[@]}"; do
     run_one "$t"
     report_one "$t"
 done

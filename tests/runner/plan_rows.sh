@@ -29,7 +29,7 @@ verdict() {
 }
 
 bad=$(awk -F'\t' '!/^#/ && NF {
-        if (NF != 4 || $2 !~ /^[0-9]+$/ || $3 !~ /^[1-9][0-9]*$/ || $4 !~ /^(host|board|solo|full)$/)
+        if (NF != 4 || $2 !~ /^[0-9]+$/ || $3 !~ /^[1-9][0-9]*$/ || $4 !~ /^(host|board|full)$/)
             printf " line %d: \"%s\";", NR, $0
         n = $1; sub(/.*\//, "", n)
         if (n in seen) printf " %s and %s share a name;", seen[n], $1

@@ -31,7 +31,7 @@ echo 'FAIL host$1_met: host$2 did not start while it ran'; exit 1"
 }
 meet a b
 meet b a
-# solo: runs when nothing of the pool is left running
+# solo (suite full): runs one at a time, once nothing of the pool is left running
 fake solo "for i in \$(seq 10); do
     if pgrep -f '$tmp/(host[ab]|good|bad|hang|crash|early|silent|skips)\.sh' >/dev/null; then
         echo 'FAIL solo_alone: a pooled test runs beside it'; exit 1
@@ -43,7 +43,7 @@ echo 'PASS solo_alone'"
 row() { printf '%s\t%s\t%s\t%s\n' "$tmp/$1.sh" "$2" "$3" "$4" >>"$tmp/plan.tsv"; }
 row good 2 10 board; row bad 2 10 board; row hang 2 2 board; row crash 3 10 board
 row early 3 10 board; row silent 1 10 board; row skips 2 10 board
-row hosta 1 30 host; row hostb 1 30 board; row solo 1 30 solo
+row hosta 1 30 host; row hostb 1 30 board; row solo 1 30 full
 # a row of another path of the same name is no row of this test
 printf 'unplanned.sh\t1\t10\tboard\n' >>"$tmp/plan.tsv"
 list=""

@@ -20,16 +20,44 @@ an_ready() { # $@ = check names
     board_ready "$@"
 }
 
-# The QEMU process of board B of the links1 started last (its loader word).
+# The processes below PID, children first (by ps's parent links).
+an_descendants() {
+    local kid
+    for kid in $(ps -o pid= --ppid "$1" 2>/dev/null); do
+        echo "$kid"
+        an_descendants "$kid"
+    done
+}
+
+# The QEMU process of board B among the processes below PID (its loader
+# word): this test's own boards, whatever else runs beside it.
 an_board_pid() {
-    pgrep -f "loader,addr=0x103ffff0,data=$1,data-len=4" | head -n 1
+    local pid
+    for pid in $(an_descendants "$2"); do
+        if tr '\0' ' ' <"/proc/$pid/cmdline" 2>/dev/null |
+            grep -q "loader,addr=0x103ffff0,data=$1,data-len=4"; then
+            echo "$pid"
+            return
+        fi
+    done
+}
+
+# How many of the pids given are still an an521 board's QEMU.
+an_alive() {
+    local pid n=0
+    for pid in "$@"; do
+        tr '\0' ' ' <"/proc/$pid/cmdline" 2>/dev/null | grep -q "loader,addr=0x103ffff0" &&
+            n=$((n + 1))
+    done
+    echo "$n"
 }
 
 # an_render_kill B LOG OUT: renders demo.scn 240x180 on 4 NCs into OUT,
 # its output into LOG, and kills board B's QEMU (SIGKILL) 0.3 s after the
 # scene is loaded.  The tool's lines are read as they come (stdbuf: a line
 # at a time), so the kill follows the load, not the tool's exit.  Sets
-# victim (the pid killed, empty when there was none) and rc (the tool's).
+# victim (the pid killed, empty when there was none), boards (the pids of
+# the run's board QEMUs before the kill) and rc (the tool's).
 an_render_kill() {
     local board=$1 log=$2 out=$3 tool
     timeout "$BOARD_RUN_LIMIT_S" stdbuf -oL "$LINKS1" render scenes/demo.scn -o "$out" \
@@ -40,7 +68,12 @@ an_render_kill() {
         sleep 0.1
     done
     sleep 0.3
-    victim=$(an_board_pid "$board")
+    boards=()
+    for b in 0 1 2; do
+        pid=$(an_board_pid "$b" "$tool")
+        [ -n "$pid" ] && boards+=("$pid")
+    done
+    victim=$(an_board_pid "$board" "$tool")
     [ -n "$victim" ] && kill -KILL "$victim"
     wait "$tool"
     rc=$?
@@ -117,7 +150,7 @@ name=an521_board0_killed
 if an_ready "$name"; then
     out=$RENDER_TMP/$name.ppm log=$RENDER_TMP/$name.log
     an_render_kill 0 "$log" "$out"
-    left=$(pgrep -f "loader,addr=0x103ffff0" | wc -l)
+    left=$(an_alive "${boards[@]}")
     if [ -z "$victim" ]; then
         echo "FAIL $name: no QEMU of board 0 to kill"
     elif [ $rc -eq 0 ] || ! grep -q 'an521 board 0 (the DM and the RC): QEMU was killed by signal 9' "$log"; then
