@@ -1,6 +1,7 @@
 /* cmd_farm.c: links1 farm SCENE --frames A:B -o DIR --hosts FILE: the frames
  * of an animation handed to hosts through GNU parallel, one job per frame
- * (-j1 on every host, so a faster host takes more), each job a
+ * (one at a time on a host, N on a host written N/host, so a faster host
+ * takes more), each job a
  * `links1 render SCENE --frames F:F` on its host, the frame brought back into
  * DIR (parallel's --return, rsync over ssh; a local host ":" writes it there
  * itself).  A frame already in DIR is not rendered again.  parallel is started
@@ -70,6 +71,10 @@ struct farm_run {
     char scene[PATH_MAX], hosts_path[PATH_MAX], dir[PATH_MAX], tool[PATH_MAX];
     char fw_dir[PATH_MAX];    /* $FW_DIR made absolute, "" when unset */
     int dir_fd, nhosts_file;  /* DIR; the host lines of --hosts */
+    const char *slots;        /* the host lines, each with its N/ (1/ when
+                                 it had none), one a line: what parallel reads */
+    size_t slots_len;
+    char slots_path[PATH_MAX + 32]; /* DIR/farm-hosts, written from slots */
     const char *unit;         /* what a job makes: "frame" or "band" */
     long item0, nitems;
     long *todo, ntodo;        /* this round's items, rising */
@@ -122,7 +127,8 @@ static void farm_usage(FILE *out)
     fprintf(out,
             "usage: links1 farm SCENE --frames A:B -o DIR --hosts FILE|--slurm [options]\n"
             "                   [-- links1 render arguments...]\n"
-            "Renders frames A..B on the hosts of FILE one frame a job, -j1 on each host,\n"
+            "Renders frames A..B on the hosts of FILE one frame a job, one job at a time on\n"
+            "a host (N at a time on a host written N/host),\n"
             "each job `links1 render SCENE --frames F:F` run there (links1 and SCENE at the\n"
             "same absolute paths on every host); the frames gathered into DIR as\n"
             "frame-NNNN.EXT.  A frame already in DIR is not rendered again (an interrupted\n"
@@ -271,10 +277,14 @@ static void farm_printable(const char *s, size_t n, char *out, size_t cap)
 }
 
 /* The hosts file's lines (buf, n bytes): each a host line, blank, or a #
- * comment.  The host lines' count, or -1 after naming the first other. */
-static int farm_host_lines(const char *file, char *buf, size_t n)
+ * comment.  The host lines' count, or -1 after naming the first other.
+ * The host lines go to slots (*slots_len bytes, room for 2n + 1), each
+ * with its job slots: N/ as written, or 1/ (one job at a time there). */
+static int farm_host_lines(const char *file, char *buf, size_t n, char *slots,
+                           size_t *slots_len)
 {
     int hosts = 0;
+    *slots_len = 0;
     size_t lineno = 0;
     for (char *line = buf; line < buf + n;) {
         char *nl = memchr(line, '\n', (size_t)(buf + n - line));
@@ -303,6 +313,12 @@ static int farm_host_lines(const char *file, char *buf, size_t n)
             return -1;
         }
         hosts++;
+        size_t d = strspn(line + lead, "0123456789");
+        if (!(d > 0 && line[lead + d] == '/'))
+            *slots_len += (size_t)sprintf(slots + *slots_len, "1/");
+        memcpy(slots + *slots_len, line + lead, len - lead);
+        *slots_len += len - lead;
+        slots[(*slots_len)++] = '\n';
         line = next;
     }
     if (hosts == 0)
@@ -313,8 +329,9 @@ static int farm_host_lines(const char *file, char *buf, size_t n)
 
 /* The hosts file: code for parallel, so a regular file that only you (or
  * root) can change (private_path), of host lines.  Returns the number of
- * host lines with the file's resolved path in real, or -1 after saying why. */
-static int farm_check_hosts(const char *file, char *real)
+ * host lines with the file's resolved path in real and the lines with
+ * their job slots in r->slots, or -1 after saying why. */
+static int farm_check_hosts(const char *file, char *real, struct farm_run *r)
 {
     char err[2 * PATH_MAX + 512];
     int fd = private_path_open(file, PRIVATE_PATH_FILE, real, err, sizeof err);
@@ -330,12 +347,31 @@ static int farm_check_hosts(const char *file, char *real)
         return -1;
     }
     static char buf[FARM_HOSTS_MAX_BYTES + 1];
-    ssize_t got = 0, r;
+    ssize_t got = 0, n;
     while (got < FARM_HOSTS_MAX_BYTES &&
-           (r = read(fd, buf + got, (size_t)(FARM_HOSTS_MAX_BYTES - got))) > 0)
-        got += r;
+           (n = read(fd, buf + got, (size_t)(FARM_HOSTS_MAX_BYTES - got))) > 0)
+        got += n;
     close(fd);
-    return farm_host_lines(file, buf, (size_t)got);
+    static char slots[2 * FARM_HOSTS_MAX_BYTES + 1];
+    r->slots = slots;
+    return farm_host_lines(file, buf, (size_t)got, slots, &r->slots_len);
+}
+
+/* DIR/farm-hosts: the host lines with their job slots, which parallel
+ * reads with -j100% (a host's N/ is its job slots, 1 where none is
+ * written: -j1 would hold every host to one).  0, or -1 after saying why. */
+static int farm_write_slots(struct farm_run *r)
+{
+    snprintf(r->slots_path, sizeof r->slots_path, "%s/farm-hosts", r->dir);
+    int fd = openat(r->dir_fd, "farm-hosts",
+                    O_WRONLY | O_CREAT | O_TRUNC | O_NOFOLLOW | O_CLOEXEC | O_NOCTTY, 0600);
+    ssize_t put = fd < 0 ? -1 : write(fd, r->slots, r->slots_len);
+    if (fd < 0 || put != (ssize_t)r->slots_len || close(fd) != 0) {
+        fprintf(stderr, "links1 farm: %s: %s\n", r->slots_path,
+                put >= 0 && fd >= 0 ? "short write" : strerror(errno));
+        return -1;
+    }
+    return 0;
 }
 
 /* DIR: made when missing (0755 less the umask: others may read the frames);
@@ -744,9 +780,10 @@ static int farm_resolve(struct farm_run *r)
 {
     const struct farm_opts *o = r->o;
     snprintf(r->hosts_path, sizeof r->hosts_path, "Slurm");
-    r->nhosts_file = o->backend == FARM_SLURM ? 0 : farm_check_hosts(o->hosts_file, r->hosts_path);
+    r->nhosts_file =
+        o->backend == FARM_SLURM ? 0 : farm_check_hosts(o->hosts_file, r->hosts_path, r);
     r->dir_fd = r->nhosts_file < 0 ? -1 : farm_open_dir(o->dir, r->dir);
-    if (r->dir_fd < 0)
+    if (r->dir_fd < 0 || (o->backend == FARM_PARALLEL && farm_write_slots(r) != 0))
         return 1;
     if (!realpath(o->scene, r->scene)) {
         fprintf(stderr, "links1 farm: %s: %s\n", o->scene, strerror(errno));
@@ -930,8 +967,8 @@ static const char **farm_parallel_argv(const struct farm_run *r, const struct fa
     av[k++] = "parallel";
     av[k++] = "--will-cite";
     av[k++] = "--sshloginfile";
-    av[k++] = r->hosts_path;
-    av[k++] = "-j1";
+    av[k++] = r->slots_path;
+    av[k++] = "-j100%"; /* each host's N/ (farm_write_slots) */
     av[k++] = "--retries";
     av[k++] = w->retries;
     av[k++] = "--joblog";

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # links1 farm on this machine alone (a hosts file of ':'): three frames of
 # scenes/anim.scn farmed through GNU parallel equal one board's
-# `links1 render --frames 0:2` byte for byte; with one frame deleted, a
+# `links1 render --frames 0:2` byte for byte, one job at a time (a host
+# written 2/: runs two at once); with one frame deleted, a
 # second farm renders only that frame (parallel's joblog holds one job, the
 # other frames are not rewritten); a scene and a DIR with spaces, quotes and
 # $ in their names farm as well; a missing parallel, one not GNU's, an empty or unreadable
@@ -10,7 +11,7 @@
 # anything runs.
 . "$(dirname "$0")/../lib.sh"
 . "$(dirname "$0")/../render_lib.sh"
-CHECKS="farm_frame0 farm_frame1 farm_frame2 farm_summary farm_resume_one_job farm_resume_kept
+CHECKS="farm_frame0 farm_frame1 farm_frame2 farm_summary farm_one_slot farm_two_slots farm_resume_one_job farm_resume_kept
         farm_resume_frame1 farm_film farm_bands farm_rows_band farm_band_refused farm_hostile_names farm_no_parallel farm_not_gnu_parallel farm_empty_hosts
         farm_unreadable_hosts farm_dir_is_file farm_dir_not_yours farm_slurm_no_sbatch farm_slurm_and_hosts"
 board_ready $CHECKS || exit 0
@@ -32,6 +33,18 @@ farm farm_run scenes/anim.scn --frames 0:2 -o "$T/out" --hosts "$T/hosts" --ext 
 for f in 0 1 2; do render_same farm_frame$f "$T/ref-000$f.ppm" "$T/out/frame-000$f.ppm"; done
 want farm_summary "$(grep -c '^links1 farm: host :: 3 frame(s) in .* frames/min' "$T/farm_run.log")/$(
     grep -c '3 frame(s) rendered now, 0 kept from before, 0 missing' "$T/farm_run.log")" 1/1
+# job slots: overlaps JOBLOG counts the jobs that start before the one
+# started before them ends (parallel's joblog: column 3 start, 4 runtime)
+overlaps() {
+    tail -n +2 "$1" | sort -t$'\t' -k3,3g |
+        awk -F'\t' 'NR > 1 && $3 < end { n++ } { end = $3 + $4 } END { print n + 0 }'
+}
+want farm_one_slot "$(overlaps "$T/out/farm-joblog.tsv")" 0
+echo 2/: >"$T/hosts2"
+farm farm_run2 scenes/anim.scn --frames 0:1 -o "$T/out2" --hosts "$T/hosts2" --ext ppm \
+    -- --size $SIZE
+want farm_two_slots "$(overlaps "$T/out2/farm-joblog.tsv")/$(cmp -s "$T/ref-0001.ppm" \
+    "$T/out2/frame-0001.ppm" && echo same)" 1/same
 
 # resume: frame 1 deleted; only it is rendered again
 before=$(stat -c '%n %i %Y' "$T/out/frame-0000.ppm" "$T/out/frame-0002.ppm" | tr '\n' ' ')
