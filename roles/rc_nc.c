@@ -382,15 +382,16 @@ static int rc_nc_serve(struct rc_run *run, uint32_t k, struct line_msg *m)
     }
     if (run->trace)
         insn_mark_trace_span_begin();
-    int got = line_try_recv(k, m) == LINE_OK, handed = 0;
+    int more, handed = 0;
+    int got = line_try_recv_arm(k, m, &more) == LINE_OK;
+    /* A second message there already is served in the next pass. */
+    if (more)
+        line_pending_mark(k);
     if (got) {
         rc_nc_message(run, k, m);
         if (n->asking && run->status == LINK_OK)
             handed = rc_nc_give(run, k, m);
     }
-    /* A second message there already is served in the next pass. */
-    if (line_recv_ready_arm(k))
-        line_pending_mark(k);
     if (run->trace)
         rc_nc_trace_served(run, k, handed);
     return got;

@@ -51,6 +51,10 @@ int line_recv(uint32_t peer, struct line_msg *m, uint64_t deadline);
  * room for a message of len payload bytes).  If none is ready, task_wait()
  * with a mark taken before the calls sleeps until a doorbell. */
 int line_recv_ready_arm(uint32_t peer);
+/* line_try_recv, then line_recv_ready_arm, with one look-up of the line (a
+ * task serving many lines takes a message and re-arms per request): the
+ * status of the take; *ready whether a message is there after it. */
+int line_try_recv_arm(uint32_t peer, struct line_msg *m, int *ready);
 int line_send_ready_arm(uint32_t peer, uint32_t len);
 
 /* For a task that serves many lines without looking at each (the RC and
