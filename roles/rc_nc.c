@@ -258,7 +258,7 @@ static void rc_nc_message(struct rc_run *run, uint32_t k, struct line_msg *m)
  * taken back from failed NCs go to whoever asks. */
 static int rc_nc_static_waits(const struct rc_run *run, uint32_t k)
 {
-    if (!areas_one_per_nc(&run->sched) || run->nc[k].given == 0)
+    if (!run->one_per_nc || run->nc[k].given == 0)
         return 0;
     for (uint32_t j = UNITS_FIRST_NC; j < board_ncores; j++) {
         const struct rc_nc *o = &run->nc[j];

@@ -29,10 +29,11 @@ struct line {
 UNIT_SHARED static struct line lines[UNITS_MAX_CORES - 1];
 UNIT_SHARED static uint32_t lines_used;
 
-/* Per receiving core, one bit per sending core: set by the sender after
- * each message, taken by a receiver that serves many lines (the RC) so
- * that it looks only at the lines that sent. */
-UNIT_SHARED static uint32_t line_pending[UNITS_MAX_CORES][LINE_PENDING_WORDS];
+/* The RC's, one bit per sending core: set by the sender after each
+ * message to the RC, taken by the RC, which serves many lines, so that it
+ * looks only at the lines that sent.  The other cores have one line each:
+ * no map. */
+UNIT_SHARED static uint32_t line_pending[LINE_PENDING_WORDS];
 
 /* Bytes a message of len payload bytes takes in the ring: header and
  * payload padded to whole words (ringbuf_put_words), so every message
@@ -111,8 +112,10 @@ int line_try_send(uint32_t peer, struct line_msg *m)
                           LINE_PADDED(m->len) / 4u) != 0)
         return LINE_ERR_FULL;
     out->send_seq++;
-    uint32_t me = mycpu()->core;
-    __atomic_fetch_or(&line_pending[peer][me / 32u], 1u << (me % 32u), __ATOMIC_RELEASE);
+    if (peer == UNITS_RC_CORE) {
+        uint32_t me = mycpu()->core;
+        __atomic_fetch_or(&line_pending[me / 32u], 1u << (me % 32u), __ATOMIC_RELEASE);
+    }
     /* Full barrier: the new head is visible before we read the flag (the
      * receiver raises its flag, barriers, then re-reads head). */
     arch_dmb();
@@ -124,7 +127,7 @@ int line_try_send(uint32_t peer, struct line_msg *m)
 }
 
 /* line_try_recv on the direction in, looked up already. */
-static inline int line_take(struct line_dir *in, uint32_t peer, struct line_msg *m)
+static int line_take(struct line_dir *in, uint32_t peer, struct line_msg *m)
 {
     uint32_t hdr[LINEMSG_HEADER_WORDS];
     if (ringbuf_get_words(&in->ring, 0, hdr, LINEMSG_HEADER_WORDS, 0) != 0)
@@ -159,7 +162,7 @@ static inline int line_take(struct line_dir *in, uint32_t peer, struct line_msg 
 }
 
 /* line_recv_ready_arm on the direction in, looked up already. */
-static inline int line_arm(struct line_dir *in)
+static int line_arm(struct line_dir *in)
 {
     in->reader_waiting = 1;
     arch_dmb(); /* flag visible before we look at head again */
@@ -205,16 +208,15 @@ int line_send_ready_arm(uint32_t peer, uint32_t len)
 
 uint32_t line_pending_take(uint32_t word)
 {
-    if (word >= LINE_PENDING_WORDS)
+    if (word >= LINE_PENDING_WORDS || mycpu()->core != UNITS_RC_CORE)
         return 0;
-    return __atomic_exchange_n(&line_pending[mycpu()->core][word], 0, __ATOMIC_ACQUIRE);
+    return __atomic_exchange_n(&line_pending[word], 0, __ATOMIC_ACQUIRE);
 }
 
 void line_pending_mark(uint32_t peer)
 {
-    if (peer < UNITS_MAX_CORES)
-        __atomic_fetch_or(&line_pending[mycpu()->core][peer / 32u], 1u << (peer % 32u),
-                          __ATOMIC_RELAXED);
+    if (peer < UNITS_MAX_CORES && mycpu()->core == UNITS_RC_CORE)
+        __atomic_fetch_or(&line_pending[peer / 32u], 1u << (peer % 32u), __ATOMIC_RELAXED);
 }
 
 int line_send(uint32_t peer, struct line_msg *m, uint64_t deadline)
