@@ -14,18 +14,6 @@ int ringbuf_init(struct ringbuf *r, uint8_t *buf, uint32_t size)
     return 0;
 }
 
-uint32_t ringbuf_used(const struct ringbuf *r)
-{
-    uint32_t head = __atomic_load_n(&r->head, __ATOMIC_ACQUIRE);
-    uint32_t tail = __atomic_load_n(&r->tail, __ATOMIC_ACQUIRE);
-    return head - tail;
-}
-
-uint32_t ringbuf_free(const struct ringbuf *r)
-{
-    return r->size - ringbuf_used(r);
-}
-
 /* Copies n bytes between the ring at index pos (mod size) and flat memory,
  * in at most two pieces around the wrap. */
 static void ringbuf_copy_in(struct ringbuf *r, uint32_t pos, const uint8_t *src, uint32_t n)
@@ -56,18 +44,6 @@ int ringbuf_put(struct ringbuf *r, const void *data, uint32_t n)
     return 0;
 }
 
-int ringbuf_put2(struct ringbuf *r, const void *a, uint32_t na, const void *b, uint32_t nb)
-{
-    uint32_t head = r->head;
-    uint32_t tail = __atomic_load_n(&r->tail, __ATOMIC_ACQUIRE);
-    if (r->size - (head - tail) < na || r->size - (head - tail) - na < nb)
-        return -1;
-    ringbuf_copy_in(r, head, a, na);
-    ringbuf_copy_in(r, head + na, b, nb);
-    __atomic_store_n(&r->head, head + na + nb, __ATOMIC_RELEASE);
-    return 0;
-}
-
 int ringbuf_put_byte(struct ringbuf *r, uint8_t b)
 {
     return ringbuf_put(r, &b, 1);
@@ -90,17 +66,6 @@ int ringbuf_get(struct ringbuf *r, void *out, uint32_t n)
     /* Release: we are done reading the bytes before the producer may
      * overwrite them. */
     __atomic_store_n(&r->tail, r->tail + n, __ATOMIC_RELEASE);
-    return 0;
-}
-
-int ringbuf_get_after(struct ringbuf *r, uint32_t skip, void *out, uint32_t n)
-{
-    uint32_t tail = r->tail;
-    uint32_t head = __atomic_load_n(&r->head, __ATOMIC_ACQUIRE);
-    if (head - tail < skip || head - tail - skip < n)
-        return -1;
-    ringbuf_copy_out(r, tail + skip, out, n);
-    __atomic_store_n(&r->tail, tail + skip + n, __ATOMIC_RELEASE);
     return 0;
 }
 

@@ -25,24 +25,79 @@ struct ringbuf {
 
 /* Returns 0, or -1 if size is not a power of two >= 2. */
 int ringbuf_init(struct ringbuf *r, uint8_t *buf, uint32_t size);
-uint32_t ringbuf_used(const struct ringbuf *r);
-uint32_t ringbuf_free(const struct ringbuf *r);
+/* Bytes in the ring, and free (inline: a line asks per message). */
+static inline uint32_t ringbuf_used(const struct ringbuf *r)
+{
+    uint32_t head = __atomic_load_n(&r->head, __ATOMIC_ACQUIRE);
+    uint32_t tail = __atomic_load_n(&r->tail, __ATOMIC_ACQUIRE);
+    return head - tail;
+}
+static inline uint32_t ringbuf_free(const struct ringbuf *r)
+{
+    return r->size - ringbuf_used(r);
+}
 /* Copies n bytes in; 0, or -1 (nothing written) if fewer than n are free. */
 int ringbuf_put(struct ringbuf *r, const void *data, uint32_t n);
-/* Puts one record of two pieces (na bytes at a, then nb at b) without
- * joining them first; 0, or -1 (nothing written) if fewer than na + nb are
- * free. */
-int ringbuf_put2(struct ringbuf *r, const void *a, uint32_t na, const void *b, uint32_t nb);
 /* Copies n bytes out; 0, or -1 (nothing taken) if fewer than n are there. */
 int ringbuf_get(struct ringbuf *r, void *out, uint32_t n);
 /* Copies n bytes out without taking them; 0 or -1 as ringbuf_get. */
 int ringbuf_peek(const struct ringbuf *r, void *out, uint32_t n);
-/* Takes skip + n bytes, copying out only the last n (the first skip were
- * read with ringbuf_peek); 0, or -1 (nothing taken) if fewer are there. */
-int ringbuf_get_after(struct ringbuf *r, uint32_t skip, void *out, uint32_t n);
 /* Producer side, for byte streams: puts one byte; 0, or -1 if full. */
 int ringbuf_put_byte(struct ringbuf *r, uint8_t b);
 /* Takes up to max bytes; returns how many. */
 uint32_t ringbuf_get_some(struct ringbuf *r, void *out, uint32_t max);
+
+/* Word records (the inter-unit lines): a ring that only these touch holds
+ * whole words, so head and tail stay multiples of 4 and no word straddles
+ * the wrap (buf word-aligned, size a power of two >= 4).  Each word is one
+ * load and one store, without the two pieces of a byte copy around the
+ * wrap: a line message is a few words, and the RC moves two a request.
+ * Inline: a call would cost as much as the copy. */
+static inline uint32_t ringbuf_word_slot(const struct ringbuf *r, uint32_t byte_index)
+{
+    return (byte_index & (r->size - 1u)) / 4u;
+}
+
+/* Puts one record of na words at a, then nb at b (either may be unaligned
+ * flat memory); 0, or -1 (nothing written) if fewer than 4 * (na + nb)
+ * bytes are free. */
+static inline int ringbuf_put_words(struct ringbuf *r, const void *a, uint32_t na,
+                                    const void *b, uint32_t nb)
+{
+    uint32_t head = r->head; /* only we write it */
+    uint32_t tail = __atomic_load_n(&r->tail, __ATOMIC_ACQUIRE);
+    if ((r->size - (head - tail)) / 4u < na + nb)
+        return -1;
+    uint8_t *ring = r->buf;
+    uint32_t mask = r->size / 4u - 1u, at = ringbuf_word_slot(r, head);
+    for (uint32_t i = 0; i < na; i++, at = (at + 1u) & mask)
+        __builtin_memcpy(ring + 4u * at, (const uint8_t *)a + 4u * i, 4);
+    for (uint32_t i = 0; i < nb; i++, at = (at + 1u) & mask)
+        __builtin_memcpy(ring + 4u * at, (const uint8_t *)b + 4u * i, 4);
+    /* Release: the words are in place before the consumer can see them. */
+    __atomic_store_n(&r->head, head + 4u * (na + nb), __ATOMIC_RELEASE);
+    return 0;
+}
+
+/* Copies n words out, starting skip words past the oldest, and takes the
+ * skip + n words if take; 0, or -1 (nothing copied or taken) if fewer are
+ * there. */
+static inline int ringbuf_get_words(struct ringbuf *r, uint32_t skip, void *out, uint32_t n,
+                                    int take)
+{
+    uint32_t tail = r->tail; /* only we write it */
+    uint32_t head = __atomic_load_n(&r->head, __ATOMIC_ACQUIRE);
+    if ((head - tail) / 4u < skip + n)
+        return -1;
+    const uint8_t *ring = r->buf;
+    uint32_t mask = r->size / 4u - 1u, at = (ringbuf_word_slot(r, tail) + skip) & mask;
+    for (uint32_t i = 0; i < n; i++, at = (at + 1u) & mask)
+        __builtin_memcpy((uint8_t *)out + 4u * i, ring + 4u * at, 4);
+    /* Release: we are done reading the words before the producer may
+     * overwrite them. */
+    if (take)
+        __atomic_store_n(&r->tail, tail + 4u * (skip + n), __ATOMIC_RELEASE);
+    return 0;
+}
 
 #endif

@@ -14,7 +14,7 @@
 #define R16(i) R4(i), R4(i + 4), R4(i + 8), R4(i + 12)
 #define R64(i) R16(i), R16(i + 16), R16(i + 32), R16(i + 48)
 
-static const uint32_t crc32_table[256] = {R64(0), R64(64), R64(128), R64(192)};
+const uint32_t crc32_table[256] = {R64(0), R64(64), R64(128), R64(192)};
 
 uint32_t crc32_update(uint32_t crc, const void *data, size_t len)
 {
@@ -27,14 +27,10 @@ uint32_t crc32_update(uint32_t crc, const void *data, size_t len)
     for (; len >= 4 && ((uintptr_t)p & 3u) == 0; len -= 4, p += 4) {
         uint32_t w;
         __builtin_memcpy(&w, p, 4);
-        crc ^= w;
-        crc = crc32_table[crc & 0xFFu] ^ (crc >> 8);
-        crc = crc32_table[crc & 0xFFu] ^ (crc >> 8);
-        crc = crc32_table[crc & 0xFFu] ^ (crc >> 8);
-        crc = crc32_table[crc & 0xFFu] ^ (crc >> 8);
+        crc = crc32_step_word(crc, w);
     }
 #endif
     while (len--)
-        crc = crc32_table[(crc ^ *p++) & 0xFFu] ^ (crc >> 8);
+        crc = crc32_step_byte(crc, *p++);
     return ~crc;
 }

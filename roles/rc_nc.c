@@ -258,7 +258,7 @@ static void rc_nc_message(struct rc_run *run, uint32_t k, struct line_msg *m)
  * taken back from failed NCs go to whoever asks. */
 static int rc_nc_static_waits(const struct rc_run *run, uint32_t k)
 {
-    if (!areas_one_per_nc(&run->sched) || run->nc[k].given == 0)
+    if (!run->one_per_nc || run->nc[k].given == 0)
         return 0;
     for (uint32_t j = UNITS_FIRST_NC; j < board_ncores; j++) {
         const struct rc_nc *o = &run->nc[j];
@@ -382,15 +382,16 @@ static int rc_nc_serve(struct rc_run *run, uint32_t k, struct line_msg *m)
     }
     if (run->trace)
         insn_mark_trace_span_begin();
-    int got = line_try_recv(k, m) == LINE_OK, handed = 0;
+    int more, handed = 0;
+    int got = line_try_recv_arm(k, m, &more) == LINE_OK;
+    /* A second message there already is served in the next pass. */
+    if (more)
+        line_pending_mark(k);
     if (got) {
         rc_nc_message(run, k, m);
         if (n->asking && run->status == LINK_OK)
             handed = rc_nc_give(run, k, m);
     }
-    /* A second message there already is served in the next pass. */
-    if (line_recv_ready_arm(k))
-        line_pending_mark(k);
     if (run->trace)
         rc_nc_trace_served(run, k, handed);
     return got;

@@ -301,6 +301,7 @@ void rc_render_frame(struct line_msg *m)
         if (args.rows) /* a band: its pixels make the frame */
             rc_frame.pixels = blob->scene.width * args.rows;
         run.total = areas_count(&run.sched);
+        run.one_per_nc = areas_one_per_nc(&run.sched);
         uint32_t largest = rc_largest_area(&run.sched);
         dc_init(UNITS_RC_CORE); /* nobody pushes between frames */
         rc_frame.active = 1;

@@ -62,6 +62,7 @@ struct rc_nc {
 
 struct rc_run {
     struct areas sched;
+    int one_per_nc;  /* areas_one_per_nc(&sched), asked once a frame */
     uint32_t total, done, ncs;
     struct rc_nc nc[UNITS_MAX_CORES];
     uint32_t in_state[RC_NC_STATES]; /* NCs in each state: O(1) checks per pass */

@@ -9,6 +9,7 @@
 #include "kernel/panic.h"
 #include "kernel/ringbuf.h"
 #include "kernel/task.h"
+#include "proto/crc32.h"
 
 /* One direction of one line. */
 struct line_dir {
@@ -28,14 +29,17 @@ struct line {
 UNIT_SHARED static struct line lines[UNITS_MAX_CORES - 1];
 UNIT_SHARED static uint32_t lines_used;
 
-/* Per receiving core, one bit per sending core: set by the sender after
- * each message, taken by a receiver that serves many lines (the RC) so
- * that it looks only at the lines that sent. */
-UNIT_SHARED static uint32_t line_pending[UNITS_MAX_CORES][LINE_PENDING_WORDS];
+/* The RC's, one bit per sending core: set by the sender after each
+ * message to the RC, taken by the RC, which serves many lines, so that it
+ * looks only at the lines that sent.  The other cores have one line each:
+ * no map. */
+UNIT_SHARED static uint32_t line_pending[LINE_PENDING_WORDS];
 
 /* Bytes a message of len payload bytes takes in the ring: header and
- * payload padded to whole words, so every message starts word-aligned and
- * the ring copies it a word at a time.  The padding is whatever follows
+ * payload padded to whole words (ringbuf_put_words), so every message
+ * starts word-aligned and the ring copies it a word at a time; the header's
+ * words as linemsg_header_words makes them, whose bytes on these
+ * little-endian cores are linemsg.h's layout.  The padding is whatever follows
  * the payload in the sender's struct line_msg (payload[] holds
  * LINE_MAX_PAYLOAD bytes, a multiple of 4). */
 #define LINE_PADDED(len) (((uint32_t)(len) + 3u) & ~3u)
@@ -43,6 +47,8 @@ UNIT_SHARED static uint32_t line_pending[UNITS_MAX_CORES][LINE_PENDING_WORDS];
 _Static_assert(LINEMSG_HEADER_SIZE % 4 == 0 && LINE_MAX_PAYLOAD % 4 == 0 &&
                    LINE_RING_SIZE % 4 == 0,
                "line records are whole words");
+_Static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
+               "a ring's header words are linemsg.h's little-endian bytes");
 
 void line_init_all(uint32_t ncores)
 {
@@ -98,17 +104,18 @@ int line_try_send(uint32_t peer, struct line_msg *m)
         return LINE_ERR_NO_LINE;
     if (m->len > LINE_MAX_PAYLOAD)
         return LINE_ERR_TOO_LONG;
-    if (ringbuf_free(&out->ring) < LINE_RECORD_SIZE(m->len))
-        return LINE_ERR_FULL;
-    _Alignas(4) uint8_t hdr[LINEMSG_HEADER_SIZE]; /* word copies into the ring */
+    uint32_t hdr[LINEMSG_HEADER_WORDS];
     m->seq = out->send_seq;
-    linemsg_put_header(hdr, m);
+    linemsg_header_words(hdr, m, linemsg_payload_crc(m));
     /* The payload goes into the ring from m itself: one copy. */
-    if (ringbuf_put2(&out->ring, hdr, sizeof hdr, m->payload, LINE_PADDED(m->len)) != 0)
-        panic("line_try_send: ring to core %u lost its free space", (unsigned)peer);
+    if (ringbuf_put_words(&out->ring, hdr, LINEMSG_HEADER_WORDS, m->payload,
+                          LINE_PADDED(m->len) / 4u) != 0)
+        return LINE_ERR_FULL;
     out->send_seq++;
-    uint32_t me = mycpu()->core;
-    __atomic_fetch_or(&line_pending[peer][me / 32u], 1u << (me % 32u), __ATOMIC_RELEASE);
+    if (peer == UNITS_RC_CORE) {
+        uint32_t me = mycpu()->core;
+        __atomic_fetch_or(&line_pending[me / 32u], 1u << (me % 32u), __ATOMIC_RELEASE);
+    }
     /* Full barrier: the new head is visible before we read the flag (the
      * receiver raises its flag, barriers, then re-reads head). */
     arch_dmb();
@@ -119,21 +126,20 @@ int line_try_send(uint32_t peer, struct line_msg *m)
     return LINE_OK;
 }
 
-int line_try_recv(uint32_t peer, struct line_msg *m)
+/* line_try_recv on the direction in, looked up already. */
+static int line_take(struct line_dir *in, uint32_t peer, struct line_msg *m)
 {
-    struct line_dir *out, *in;
-    if (line_dirs(peer, &out, &in) != LINE_OK)
-        return LINE_ERR_NO_LINE;
-    _Alignas(4) uint8_t hdr[LINEMSG_HEADER_SIZE]; /* word copies into the ring */
-    if (ringbuf_peek(&in->ring, hdr, LINEMSG_HEADER_SIZE) != 0)
+    uint32_t hdr[LINEMSG_HEADER_WORDS];
+    if (ringbuf_get_words(&in->ring, 0, hdr, LINEMSG_HEADER_WORDS, 0) != 0)
         return LINE_ERR_EMPTY;
-    if (linemsg_total_size(hdr) < 0)
+    uint32_t check = linemsg_header_from_words(hdr, m);
+    if (m->len > LINE_MAX_PAYLOAD)
         panic("line from core %u: header announces a message longer than %u bytes",
               (unsigned)peer, (unsigned)LINE_MAX_PAYLOAD);
-    uint32_t check = linemsg_get_header(hdr, m);
     /* The sender puts whole messages, so the rest is there already; the
      * payload comes out of the ring straight into m. */
-    if (ringbuf_get_after(&in->ring, LINEMSG_HEADER_SIZE, m->payload, LINE_PADDED(m->len)) != 0)
+    if (ringbuf_get_words(&in->ring, LINEMSG_HEADER_WORDS, m->payload, LINE_PADDED(m->len) / 4u,
+                          1) != 0)
         panic("line from core %u: half a message in the ring", (unsigned)peer);
     int st = linemsg_check_payload(m, check);
     arch_dmb(); /* our tail is visible before we read the sender's flag */
@@ -155,14 +161,39 @@ int line_try_recv(uint32_t peer, struct line_msg *m)
     return LINE_OK;
 }
 
+/* line_recv_ready_arm on the direction in, looked up already. */
+static int line_arm(struct line_dir *in)
+{
+    in->reader_waiting = 1;
+    arch_dmb(); /* flag visible before we look at head again */
+    return ringbuf_used(&in->ring) >= LINEMSG_HEADER_SIZE;
+}
+
+int line_try_recv(uint32_t peer, struct line_msg *m)
+{
+    struct line_dir *out, *in;
+    if (line_dirs(peer, &out, &in) != LINE_OK)
+        return LINE_ERR_NO_LINE;
+    return line_take(in, peer, m);
+}
+
+int line_try_recv_arm(uint32_t peer, struct line_msg *m, int *ready)
+{
+    struct line_dir *out, *in;
+    *ready = 0;
+    if (line_dirs(peer, &out, &in) != LINE_OK)
+        return LINE_ERR_NO_LINE;
+    int r = line_take(in, peer, m);
+    *ready = line_arm(in);
+    return r;
+}
+
 int line_recv_ready_arm(uint32_t peer)
 {
     struct line_dir *out, *in;
     if (line_dirs(peer, &out, &in) != LINE_OK)
         return 0;
-    in->reader_waiting = 1;
-    arch_dmb(); /* flag visible before we look at head again */
-    return ringbuf_used(&in->ring) >= LINEMSG_HEADER_SIZE;
+    return line_arm(in);
 }
 
 int line_send_ready_arm(uint32_t peer, uint32_t len)
@@ -177,16 +208,15 @@ int line_send_ready_arm(uint32_t peer, uint32_t len)
 
 uint32_t line_pending_take(uint32_t word)
 {
-    if (word >= LINE_PENDING_WORDS)
+    if (word >= LINE_PENDING_WORDS || mycpu()->core != UNITS_RC_CORE)
         return 0;
-    return __atomic_exchange_n(&line_pending[mycpu()->core][word], 0, __ATOMIC_ACQUIRE);
+    return __atomic_exchange_n(&line_pending[word], 0, __ATOMIC_ACQUIRE);
 }
 
 void line_pending_mark(uint32_t peer)
 {
-    if (peer < UNITS_MAX_CORES)
-        __atomic_fetch_or(&line_pending[mycpu()->core][peer / 32u], 1u << (peer % 32u),
-                          __ATOMIC_RELAXED);
+    if (peer < UNITS_MAX_CORES && mycpu()->core == UNITS_RC_CORE)
+        __atomic_fetch_or(&line_pending[peer / 32u], 1u << (peer % 32u), __ATOMIC_RELAXED);
 }
 
 int line_send(uint32_t peer, struct line_msg *m, uint64_t deadline)

@@ -52,10 +52,16 @@ int line_recv(uint32_t peer, struct line_msg *m, uint64_t deadline);
  * with a mark taken before the calls sleeps until a doorbell. */
 int line_recv_ready_arm(uint32_t peer);
 int line_send_ready_arm(uint32_t peer, uint32_t len);
+/* line_try_recv, then line_recv_ready_arm, with one look-up of the line (a
+ * task serving many lines takes a message and re-arms per request): the
+ * status of the take; *ready whether a message is there after it. */
+int line_try_recv_arm(uint32_t peer, struct line_msg *m, int *ready);
 
-/* For a task that serves many lines without looking at each (the RC and
- * its NCs): every message sent sets the sender's bit in the receiver's
- * pending map.  line_pending_take(w) returns and clears the bits of senders
+/* For the task that serves many lines without looking at each (the RC and
+ * its NCs; every line has the RC at one end): every message sent to the
+ * RC sets the sender's bit in the RC's pending map (one sent to another
+ * core sets none: it has one line).  On the RC, line_pending_take(w)
+ * returns and clears the bits of senders
  * 32w..32w+31 (a bit: look at that line; it may hold more than one message,
  * or none if it was taken by other calls); line_pending_mark(peer) sets a
  * bit again, for a line still holding messages after one was taken. */

@@ -8,23 +8,18 @@
 
 void linemsg_put_header(uint8_t *hdr, const struct line_msg *m)
 {
-    wire_put_u16(hdr, m->type);
-    wire_put_u16(hdr + 2, m->len);
-    wire_put_u32(hdr + 4, m->seq);
-    wire_put_u32(hdr + 8, crc32(m->payload, m->len));
+    uint32_t w[LINEMSG_HEADER_WORDS];
+    linemsg_header_words(w, m, linemsg_payload_crc(m));
+    for (uint32_t i = 0; i < LINEMSG_HEADER_WORDS; i++)
+        wire_put_u32(hdr + 4 * i, w[i]);
 }
 
 uint32_t linemsg_get_header(const uint8_t *hdr, struct line_msg *m)
 {
-    m->type = wire_get_u16(hdr);
-    m->len = wire_get_u16(hdr + 2);
-    m->seq = wire_get_u32(hdr + 4);
-    return wire_get_u32(hdr + 8);
-}
-
-int linemsg_check_payload(const struct line_msg *m, uint32_t check)
-{
-    return crc32(m->payload, m->len) == check ? LINEMSG_OK : LINEMSG_ERR_CHECK;
+    uint32_t w[LINEMSG_HEADER_WORDS];
+    for (uint32_t i = 0; i < LINEMSG_HEADER_WORDS; i++)
+        w[i] = wire_get_u32(hdr + 4 * i);
+    return linemsg_header_from_words(w, m);
 }
 
 size_t linemsg_encode(uint8_t *out, size_t cap, const struct line_msg *m)

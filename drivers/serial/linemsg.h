@@ -16,6 +16,7 @@
 #include <stdint.h>
 
 #include "kernel/param.h"
+#include "proto/crc32.h"
 #include "proto/unitmsg.h" /* LINEMSG_HEADER_SIZE */
 
 #define LINEMSG_MAX_SIZE (LINEMSG_HEADER_SIZE + LINE_MAX_PAYLOAD)
@@ -34,6 +35,30 @@ enum linemsg_status {
     LINEMSG_ERR_CHECK = -3,    /* payload does not match its crc32 */
 };
 
+/* The header as three words, in the layout above on a little-endian core:
+ * type | len << 16, seq, check.  The one definition of the header:
+ * linemsg_put_header writes these words' bytes; the lines, whose rings
+ * hold whole words, store the words themselves. */
+#define LINEMSG_HEADER_WORDS (LINEMSG_HEADER_SIZE / 4)
+_Static_assert(LINEMSG_HEADER_SIZE == 12, "the header is three words");
+static inline void linemsg_header_words(uint32_t w[LINEMSG_HEADER_WORDS], const struct line_msg *m,
+                                        uint32_t check)
+{
+    w[0] = (uint32_t)m->type | (uint32_t)m->len << 16;
+    w[1] = m->seq;
+    w[2] = check;
+}
+/* Reads header words into m's type, len (unchecked: see linemsg_total_size)
+ * and seq; returns the crc32 they announce for the payload. */
+static inline uint32_t linemsg_header_from_words(const uint32_t w[LINEMSG_HEADER_WORDS],
+                                                 struct line_msg *m)
+{
+    m->type = (uint16_t)w[0];
+    m->len = (uint16_t)(w[0] >> 16);
+    m->seq = w[1];
+    return w[2];
+}
+
 /* The header alone, for a line that copies the payload itself: writes m's
  * type, len, seq and the payload's crc32 at hdr (m->len <=
  * LINE_MAX_PAYLOAD). */
@@ -41,8 +66,17 @@ void linemsg_put_header(uint8_t *hdr, const struct line_msg *m);
 /* Reads a header (its len checked with linemsg_total_size) into m's type,
  * len and seq; returns the crc32 it announces for the payload. */
 uint32_t linemsg_get_header(const uint8_t *hdr, struct line_msg *m);
+/* The crc32 of m's payload: inline for the few words of most messages
+ * (payload[] is word-aligned). */
+static inline uint32_t linemsg_payload_crc(const struct line_msg *m)
+{
+    return crc32_short(m->payload, m->len);
+}
 /* LINEMSG_OK if m's payload has crc32 check, else LINEMSG_ERR_CHECK. */
-int linemsg_check_payload(const struct line_msg *m, uint32_t check);
+static inline int linemsg_check_payload(const struct line_msg *m, uint32_t check)
+{
+    return linemsg_payload_crc(m) == check ? LINEMSG_OK : LINEMSG_ERR_CHECK;
+}
 /* Encodes m into out; returns the bytes written, or 0 if m->len is too
  * long or cap too small. */
 size_t linemsg_encode(uint8_t *out, size_t cap, const struct line_msg *m);

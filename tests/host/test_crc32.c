@@ -55,11 +55,26 @@ static void crc32_word_steps_match_byte_steps(void)
     CHECK_EQ_INT(bad, 0);
 }
 
+/* The lines' inline crc32 of a few words gives crc32's value for every
+ * length and alignment (crc32_update where it does not take the words). */
+static void crc32_short_matches_crc32(void)
+{
+    _Alignas(4) uint8_t buf[16];
+    int bad = 0;
+    for (int i = 0; i < 16; i++)
+        buf[i] = (uint8_t)(0x5A ^ (i * 37));
+    for (size_t off = 0; off < 4; off++)
+        for (size_t n = 0; n + off <= 12; n++)
+            bad += crc32_short(buf + off, n) != crc32(buf + off, n);
+    CHECK_EQ_INT(bad, 0);
+}
+
 int main(void)
 {
     RUN(crc32_check_value);
     RUN(crc32_incremental_matches_one_shot);
     RUN(crc32_detects_single_bit_flips);
     RUN(crc32_word_steps_match_byte_steps);
+    RUN(crc32_short_matches_crc32);
     return check_exit();
 }

@@ -89,30 +89,31 @@ static void test_get_some_and_long_stream(void)
     CHECK_EQ_INT(ringbuf_get_some(&r, out, 10), 0);
 }
 
-/* A record of two pieces in, then out skipping a peeked header: all or
- * nothing, across the wrap, word-aligned or not. */
-static void test_put2_and_get_after(void)
+/* Word records (the lines'): a record of two pieces in, its first words
+ * peeked, the rest taken after them; all or nothing, across the wrap, from
+ * and into unaligned memory. */
+static void test_word_records(void)
 {
     _Alignas(4) uint8_t mem[32];
-    _Alignas(4) uint8_t hdr[4] = {'h', 'd', 'r', '!'}, out[32], body[24];
+    _Alignas(4) uint8_t hdr[4] = {'h', 'd', 'r', '!'}, out[33], body[25];
     struct ringbuf r;
-    for (int i = 0; i < 24; i++)
+    for (int i = 0; i < 25; i++)
         body[i] = (uint8_t)('a' + i);
     ringbuf_init(&r, mem, sizeof mem);
-    CHECK(ringbuf_put2(&r, hdr, 4, body, 24) == 0);
-    CHECK(ringbuf_put2(&r, hdr, 4, body, 1) == -1); /* 4 free: nothing written */
+    CHECK(ringbuf_put_words(&r, hdr, 1, body, 6) == 0);
+    CHECK(ringbuf_put_words(&r, hdr, 1, body, 1) == -1); /* 4 free: nothing written */
     CHECK_EQ_INT(ringbuf_used(&r), 28);
-    CHECK(ringbuf_get_after(&r, 4, out, 25) == -1);  /* only 24 after the header */
-    CHECK(ringbuf_peek(&r, out, 4) == 0 && memcmp(out, hdr, 4) == 0);
-    CHECK(ringbuf_get_after(&r, 4, out, 24) == 0 && memcmp(out, body, 24) == 0);
+    CHECK(ringbuf_get_words(&r, 1, out, 7, 1) == -1); /* only 6 after the header */
+    CHECK_EQ_INT(ringbuf_used(&r), 28);
+    CHECK(ringbuf_get_words(&r, 0, out, 1, 0) == 0 && memcmp(out, hdr, 4) == 0);
+    CHECK(ringbuf_get_words(&r, 1, out, 6, 1) == 0 && memcmp(out, body, 24) == 0);
     CHECK_EQ_INT(ringbuf_used(&r), 0);
-    /* head and tail at 28: the next record wraps inside its body. */
-    CHECK(ringbuf_put2(&r, hdr, 4, body, 20) == 0);
-    CHECK(ringbuf_get_after(&r, 4, out, 20) == 0 && memcmp(out, body, 20) == 0);
-    /* Odd sizes: the byte-by-byte path, then the ring no longer aligned. */
-    CHECK(ringbuf_put2(&r, hdr + 1, 3, body + 1, 5) == 0);
-    CHECK(ringbuf_get_after(&r, 3, out + 1, 5) == 0 && memcmp(out + 1, body + 1, 5) == 0);
-    CHECK(ringbuf_put2(&r, hdr, 4, body, 24) == 0);
+    /* head and tail at 28: the next record wraps after its header word. */
+    CHECK(ringbuf_put_words(&r, hdr, 1, body + 1, 5) == 0);
+    CHECK(memcmp(mem, body + 1, 20) == 0 && memcmp(mem + 28, hdr, 4) == 0);
+    CHECK(ringbuf_get_words(&r, 1, out + 1, 5, 1) == 0 && memcmp(out + 1, body + 1, 20) == 0);
+    /* The byte calls see the same bytes. */
+    CHECK(ringbuf_put_words(&r, hdr, 1, body, 6) == 0);
     CHECK(ringbuf_get(&r, out, 28) == 0 && memcmp(out, hdr, 4) == 0 &&
           memcmp(out + 4, body, 24) == 0);
 }
@@ -124,6 +125,6 @@ int main(void)
     RUN(test_wraps_around_the_end);
     RUN(test_indices_wrap_at_2_to_32);
     RUN(test_get_some_and_long_stream);
-    RUN(test_put2_and_get_after);
+    RUN(test_word_records);
     return check_exit();
 }
