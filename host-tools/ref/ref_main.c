@@ -186,7 +186,8 @@ static void ref_trace_rows(render_ctx_t *ctx, struct image *img, rgb8_t *row)
 
 _Static_assert(sizeof(rgb8_t) == 3, "an image's rows are packed r,g,b bytes");
 
-/* --spd-rules: the whole image as one area (render_area), whose corner
+/* Corner mode (--spd-rules, --aa; render_corner_mode): the whole image as
+ * one area (render_area), whose corner
  * rays are each traced and counted once, searched by screen as an NC's
  * are by default.  0, or -1 after saying why. */
 static int ref_trace_corners(render_ctx_t *ctx, const render_frame_t *f, struct image *img)
@@ -247,7 +248,7 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     struct timespec t0, t1, c0, c1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c0);
-    if (ctx.options.spd_rules) {
+    if (render_corner_mode(&ctx.options)) {
         if (ref_trace_corners(&ctx, frame_data, &img) != 0) {
             free(row);
             image_free(&img);
