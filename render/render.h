@@ -425,6 +425,15 @@ rgb8_t render_pixel_of_corners(render_ctx_t *ctx, uint32_t x, uint32_t y,
                                const render_corner_t c[4], render_corner_search_t search,
                                const uint32_t *clusters, uint32_t count);
 
+/* Pixel (x, y) as the box mean of n x n camera rays (1..RENDER_MAX_SUPERSAMPLE)
+ * through the centres of its n x n sub-squares (the grid points of
+ * anti-aliasing's sample function at scale 2n), each searching the whole
+ * tree: a reference to measure anti-aliasing against (links1 ref
+ * --supersample, the double build).  No escalation: a pixel that lost
+ * precision is counted (and painted, with mark_lost). */
+#define RENDER_MAX_SUPERSAMPLE 16
+rgb8_t render_pixel_supersampled(render_ctx_t *ctx, uint32_t x, uint32_t y, uint32_t n);
+
 /* Pixels x0..x1-1 of row y into out[0..x1-x0-1]. */
 void render_span(render_ctx_t *ctx, uint32_t y, uint32_t x0, uint32_t x1, rgb8_t *out);
 

@@ -829,10 +829,11 @@ typedef struct {
     uint32_t clip_count;
 } render_aa_search_t;
 
-/* Screen coordinate 0..2 of grid line g of a grid scale (a power of two)
- * steps a pixel side, over n pixels.  g and scale are halved while both
- * are even, so that a point has one representation, and so one value,
- * whoever traces it: a corner is (cx, 1), as it was before any grid. */
+/* Screen coordinate 0..2 of grid line g of a grid scale steps a pixel
+ * side, over n pixels.  g and scale are halved while both are even, so
+ * that a point has one representation, and so one value, whoever traces
+ * it: a corner is (cx, 1), as it was before any grid.  scale is a power
+ * of two (anti-aliasing), or g is odd (supersampling's centres). */
 static num_t render_grid(uint32_t g, uint32_t scale, uint32_t n)
 {
     while (scale > 1 && (g & 1) == 0) {
@@ -1019,6 +1020,27 @@ rgb8_t render_pixel_of_corners(render_ctx_t *ctx, uint32_t x, uint32_t y,
     const render_aa_search_t s = {render_search_of(ctx, search), {(int32_t)x, (int32_t)y},
                                   clusters ? clusters : &none, clusters ? count : 0};
     return render_pixel_settled(ctx, x, y, render_pixel_corners(ctx, x, y, c, &s));
+}
+
+rgb8_t render_pixel_supersampled(render_ctx_t *ctx, uint32_t x, uint32_t y, uint32_t n)
+{
+    const render_aa_search_t s = {PIXEL_SEARCH_TREE, {(int32_t)x, (int32_t)y}, NULL, 0};
+    uint32_t scale = 2 * n; /* the sub-squares' centres: odd grid points */
+    rgb_t sum = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    uint8_t lost = 0;
+    for (uint32_t j = 0; j < n; j++) {
+        rgb_t row = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+        for (uint32_t i = 0; i < n; i++) {
+            render_corner_t c;
+            render_sample(ctx, scale * x + 2 * i + 1, scale * y + 2 * j + 1, scale, &s, &c);
+            row = rgb_add(row, c.colour);
+            lost |= c.lost;
+        }
+        sum = rgb_add(sum, row);
+    }
+    rgb_t mean = rgb_scale(sum, num_from_ratio(1, (int32_t)(n * n)));
+    ctx->pixel_lost = lost || rgb_is_sat(mean);
+    return render_pixel_out(ctx, mean);
 }
 
 rgb8_t render_pixel(render_ctx_t *ctx, uint32_t x, uint32_t y)
