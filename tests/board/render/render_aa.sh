@@ -5,12 +5,15 @@
 # lists) and double; the same frame with 1, 3 and 8 NCs and under each
 # balancing mode is one image.  On the host: the options block equals the
 # command line, bad values are refused before any board boots (exit 2 on
-# the command line, 1 in a scene), paper mode turns anti-aliasing off, and
-# anti-aliasing changes the edges (more distinct colours than without).
+# the command line, 1 in a scene), paper mode turns anti-aliasing off,
+# anti-aliasing changes the edges (more distinct colours than without), and
+# fixed point's pixels that lost precision, escalated to double (which
+# anti-aliases them again from their own corners), are within 1/255 of
+# the double build's, where without escalation they are not.
 . "$(dirname "$0")/../lib.sh"
 . "$(dirname "$0")/../render_lib.sh"
 CHECKS="aa_board_float aa_board_fixed aa_board_double aa_ncs_same aa_balance_same
-aa_options_block aa_refused aa_paper_off aa_changes_edges"
+aa_options_block aa_refused aa_paper_off aa_changes_edges aa_escalated_near_double"
 board_ready $CHECKS || exit 0
 T=$RENDER_TMP
 cp -r scenes/maps "$T/" # demo.scn's maps, for its copies in $T
@@ -131,4 +134,19 @@ if [ -n "$plain" ] && [ -n "$aa" ] && [ "$aa" -gt "$plain" ] &&
     echo "PASS aa_changes_edges ($plain distinct colours without, $aa with --aa 2)"
 else
     echo "FAIL aa_changes_edges: $plain distinct colours without, '$aa' with --aa 2"
+fi
+
+# escalation: fixed point's lost pixels anti-aliased again in double
+"$LINKS1" ref scenes/demo.scn --arith fixed --size $SIZE "${AA[@]}" -o "$T/esc-fixed.ppm" \
+    >/dev/null 2>&1
+"$LINKS1" ref scenes/demo.scn --arith fixed --size $SIZE "${AA[@]}" --no-escalate \
+    -o "$T/plain-fixed.ppm" >/dev/null 2>&1
+if [ -s "$T/aa_board_double-ref.ppm" ] && [ -s "$T/esc-fixed.ppm" ] &&
+    "$LINKS1" compare "$T/aa_board_double-ref.ppm" "$T/esc-fixed.ppm" --within 1 \
+        --min-fraction 1 >/dev/null 2>&1 &&
+    ! "$LINKS1" compare "$T/aa_board_double-ref.ppm" "$T/plain-fixed.ppm" --within 1 \
+        --min-fraction 1 >/dev/null 2>&1; then
+    echo "PASS aa_escalated_near_double"
+else
+    echo "FAIL aa_escalated_near_double: escalated fixed is not within 1/255 of double, or plain fixed is"
 fi
