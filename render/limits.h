@@ -79,11 +79,13 @@
 #define RENDER_STACK_AA 1216
 #endif
 /* Anti-aliasing (render/trace.c) between the pixel and its camera ray, at
- * SCN_MAX_AA_DEPTH 4 (-fstack-usage, Cortex-A15): four render_aa_quad
- * frames (296 bytes in float and fixed, 504 in double: its 3 x 3 samples),
- * render_pixel_corners and render_sample, less render_corner's frame they
- * replace: 1,144 more in float, 1,180 in fixed, 1,976 in double; counted
- * whether or not a scene anti-aliases. */
+ * SCN_MAX_AA_DEPTH 4 (-fstack-usage): four render_aa_quad frames (296
+ * bytes in float and fixed, 504 in double on the Cortex-A15, 496 in the
+ * M33's software double: its 3 x 3 samples), render_pixel_corners and
+ * render_sample, less render_corner's frame they replace: 1,144 more in
+ * float, 1,180 in fixed, 1,976 in double on the A15; 1,160 in fixed and
+ * 1,976 in double on the M33; counted whether or not a scene
+ * anti-aliases. */
 #define RENDER_STACK_BYTES(max_depth) \
     (RENDER_STACK_BASE + RENDER_STACK_AA + RENDER_STACK_PER_DEPTH * ((max_depth) + 1))
 
