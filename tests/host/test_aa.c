@@ -4,8 +4,9 @@
  * depth 0 and the SPD rules are the mean of the corner rays, computed here
  * from render_corner; a pixel cut once is the mean of the four quarter
  * pixels of the frame at twice the size; a threshold below 0 cuts every
- * pixel to the limit ((G + 1)^2 - 4 rays a pixel beyond the shared
- * corners), a threshold over every difference cuts none. */
+ * pixel to the limit (5 (4^d - 1) / 3 rays a pixel beyond the shared
+ * corners), a threshold over every difference cuts none; supersampling
+ * with one sample a pixel is render_pixel's image. */
 #include "tests/check.h"
 #include "tests/host/test_blob_util.h"
 #include "render/vec3.h"
@@ -121,8 +122,8 @@ static rgb8_t ta_corner_mean(render_ctx_t *ctx, uint32_t x, uint32_t y)
     render_corner_t c[4];
     for (uint32_t k = 0; k < 4; k++)
         render_corner(ctx, x + (k & 1), y + (k >> 1), RENDER_CORNER_TREE, NULL, 0, 1, &c[k]);
-    rgb_t m = rgb_scale(rgb_add(rgb_add(c[0].colour, c[1].colour), rgb_add(c[2].colour, c[3].colour)),
-                        NUM_C(0.25));
+    rgb_t top = rgb_add(c[0].colour, c[1].colour), bottom = rgb_add(c[2].colour, c[3].colour);
+    rgb_t m = rgb_scale(rgb_add(top, bottom), NUM_C(0.25));
     return (rgb8_t){num_to_u8(m.r), num_to_u8(m.g), num_to_u8(m.b)};
 }
 
@@ -229,10 +230,42 @@ static void test_aa_cut_counts(void)
     ta_close(&t);
 }
 
+/* render_pixel_supersampled: one sample a pixel is its centre ray (the
+ * same point, a grid of two steps), render_pixel's image; n x n samples
+ * trace n^2 camera rays a pixel and give another image. */
+static void test_supersample(void)
+{
+    ta_scene_t t;
+    CHECK(ta_open(&t, "demo", TA_DIV, -1, 0));
+    if (!t.blob)
+        return;
+    size_t n = (size_t)t.f->width * t.f->height;
+    render_stats_t st;
+    rgb8_t *plain = tb_render_plain(t.f, &st);
+    rgb8_t *img[2];
+    for (uint32_t k = 0; k < 2; k++) {
+        img[k] = calloc(n, sizeof *img[k]);
+        render_ctx_t ctx;
+        render_ctx_init(&ctx, t.f);
+        for (uint32_t y = 0; y < t.f->height; y++)
+            for (uint32_t x = 0; x < t.f->width; x++)
+                img[k][(size_t)y * t.f->width + x] =
+                    render_pixel_supersampled(&ctx, x, y, 3 * k + 1);
+        CHECK_EQ_INT(ctx.stats.primary, (uint64_t)n * (3 * k + 1) * (3 * k + 1));
+    }
+    CHECK(tb_same(plain, img[0], n));
+    CHECK(!tb_same(plain, img[1], n));
+    free(img[0]);
+    free(img[1]);
+    free(plain);
+    ta_close(&t);
+}
+
 int main(void)
 {
     RUN(test_aa_areas_same);
     RUN(test_aa_corner_mean);
     RUN(test_aa_cut_counts);
+    RUN(test_supersample);
     return check_exit();
 }
