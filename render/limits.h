@@ -68,8 +68,8 @@
  * prim_intersect_uncertain 520, prim_surface 296), libgcc's double
  * routines a few words: the larger of the two; a density sphere's test 504
  * more (its leaf 992 bytes on the A15, 1,128 on the M33, against 544 and
- * 624 before).  About 21 KiB at max_depth 16 with RENDER_STACK_AA, within TASK_STACK_SIZE (24
- * KiB; roles/dm_render.c checks it) */
+ * 624 before).  About 21 KiB at max_depth 16 with RENDER_STACK_AA, within
+ * TASK_STACK_SIZE (24 KiB; roles/dm_render.c checks it) */
 #define RENDER_STACK_PER_DEPTH 744
 #define RENDER_STACK_BASE 6920
 #define RENDER_STACK_AA 2048

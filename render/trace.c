@@ -954,7 +954,7 @@ static __attribute__((noinline)) rgb8_t render_pixel_impl(render_ctx_t *ctx, uin
     return render_pixel_out(ctx, render_eye(ctx, sx, sy, search, s.pixel, clip, clip_count));
 }
 
-/* A search of render_corner_search_t as the pixel (px, py) does it. */
+/* The pixel search a render_corner_search_t names. */
 static pixel_search_t render_search_of(const render_ctx_t *ctx, render_corner_search_t search)
 {
     return search == RENDER_CORNER_LIST ? PIXEL_SEARCH_LIST

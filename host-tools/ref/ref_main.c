@@ -191,9 +191,9 @@ static void ref_trace_rows(render_ctx_t *ctx, struct image *img, rgb8_t *row, in
 _Static_assert(sizeof(rgb8_t) == 3, "an image's rows are packed r,g,b bytes");
 
 /* Corner mode (--spd-rules, --aa; render_corner_mode): the whole image as
- * one area (render_area), whose corner
- * rays are each traced and counted once, searched by screen as an NC's
- * are by default.  0, or -1 after saying why. */
+ * one area (render_area), whose corner rays are each traced and counted
+ * once, searched by screen as an NC's are by default.  0, or -1 after
+ * saying why. */
 static int ref_trace_corners(render_ctx_t *ctx, const render_frame_t *f, struct image *img)
 {
     size_t bytes = render_clip_bytes(f);
@@ -345,8 +345,9 @@ static int ref_take(struct ref_args *a, const struct cli *c, int code)
     return -1;
 }
 
-/* --supersample: the double build, without --aa, --spd-rules, --paper
- * (the scene's own are refused when it is loaded).  0, or -1 (said). */
+/* --supersample: the double build, without --aa, --spd-rules, --paper (a
+ * scene's own anti-aliasing or SPD rules are refused when it is loaded).
+ * 0, or -1 (said). */
 static int ref_supersample_check(const struct ref_args *a)
 {
     const struct scene_file_opts *o = &a->scene;
@@ -447,8 +448,7 @@ int main(int argc, char **argv)
     memset(&wide, 0, sizeof wide);
     if (rc == 0 && a.escalate)
         rc = ref_wide_load(in, bytes, len, &wide);
-    if (rc == 0 && a.supersample &&
-        (render_corner_mode(&scene.options))) {
+    if (rc == 0 && a.supersample && render_corner_mode(&scene.options)) {
         fprintf(stderr, "links1 ref: %s: --supersample: the scene has %s on\n", in,
                 scene.options.antialias ? "anti-aliasing (aa; --no-aa turns it off)"
                                         : "the SPD rules");

@@ -17,8 +17,8 @@ const struct cli_optdef ref_optdefs[] = {
     {"verbose", NULL, REF_OPT_VERBOSE, "say how many pixels each frame escalated to double"},
     {"supersample", "N", REF_OPT_SUPERSAMPLE,
      "each pixel the mean of N x N rays through the centres of its N x N\n"
-     "sub-squares (1..16; --arith double, not with anti-aliasing, the\n"
-     "SPD rules or paper mode): a reference for --aa"},
+     "sub-squares (1..16; --arith double; not with --aa, --spd-rules,\n"
+     "--paper or a scene's own aa): a reference for --aa"},
     CLI_OPTDEF_END,
 };
 
