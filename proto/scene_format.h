@@ -96,7 +96,7 @@
 #define SCN_MAGIC_1 '1'
 #define SCN_MAGIC_2 'S'
 #define SCN_MAGIC_3 'C'
-#define SCN_VERSION 6 /* 2: 32-bit cluster indices; 3: VIEW carries min_weight;
+#define SCN_VERSION 7 /* 2: 32-bit cluster indices; 3: VIEW carries min_weight;
                          4: VIEW carries density_steps; 5: MATERIALS 52
                          bytes (normal and attribute maps), map kinds
                          NORMAL and ATTRIBUTE.  VIEW_KEYS (kind 11)
@@ -105,7 +105,7 @@
                          it is what it was, and a loader from before it
                          refuses one with it as an unknown section kind.
                          6: the header's check is the word sum, not a
-                         CRC-32 */
+                         CRC-32; 7: VIEW 80 bytes (anti-aliasing) */
 #define SCN_HEADER_SIZE 16
 #define SCN_HDR_MAGIC 0
 #define SCN_HDR_VERSION 4
@@ -141,7 +141,7 @@ enum scn_section {
  * tangent or quaternion the renderer needs by the host compiler. */
 
 /* --------------------------------------------------------- VIEW record */
-#define SCN_VIEW_SIZE 72
+#define SCN_VIEW_SIZE 80
 #define SCN_VIEW_EYE 0          /* 3 x f32 */
 #define SCN_VIEW_LOOK_AT 12     /* 3 x f32, != eye */
 #define SCN_VIEW_UP 24          /* 3 x f32, not parallel to look_at - eye */
@@ -160,10 +160,20 @@ enum scn_section {
                                    samples along a ray's span through its
                                    components (render/prim.c); a feature
                                    thinner than a step can be stepped over */
+#define SCN_VIEW_AA_DEPTH 72    /* u16: 0..SCN_MAX_AA_DEPTH, with SCN_OPT_ANTIALIAS:
+                                   how many times a pixel may be cut into
+                                   four (0 = its corner rays only) */
+#define SCN_VIEW_AA_ZERO 74     /* u16: 0 */
+#define SCN_VIEW_AA_THRESHOLD 76 /* f32 0..1, with SCN_OPT_ANTIALIAS: a quad
+                                   whose four corner colours differ by more
+                                   than it in a channel (max - min, before
+                                   clamping, 1 = full scale) is cut into four */
 #define SCN_MAX_TAN_HALF_FOV 100.0f
 #define SCN_DEFAULT_MIN_WEIGHT (1.0 / 512) /* text form's default (Hall and Greenberg 1983) */
 #define SCN_MIN_DENSITY_STEPS 2
 #define SCN_MAX_DENSITY_STEPS 256
+#define SCN_MAX_AA_DEPTH 4 /* a pixel side cut into at most 16 */
+#define SCN_DEFAULT_AA_THRESHOLD 0.1 /* text form's default */
 #define SCN_DEFAULT_DENSITY_STEPS 24 /* text form's default: 16 come within 0.05
                                         dB of it on demo.scn; thin features want
                                         more (docs/results/sweeps.md, the density_steps
@@ -213,7 +223,12 @@ enum scn_section {
  * specular coefficient.  The host tools set the depth, min_weight and the
  * other rules beside it. */
 #define SCN_OPT_SPD_RULES 0x0800u
-#define SCN_OPT_KNOWN 0x0fffu
+/* ANTIALIAS: Whitted's adaptive anti-aliasing (1980; --aa, docs/renderer.md,
+ * "Anti-aliasing"): camera rays at the pixel corners, shared by
+ * neighbours, and a pixel cut into four where its corners differ by more
+ * than SCN_VIEW_AA_THRESHOLD, down to SCN_VIEW_AA_DEPTH. */
+#define SCN_OPT_ANTIALIAS 0x1000u
+#define SCN_OPT_KNOWN 0x1fffu
 
 /* ------------------------------------------------------- LIGHTS record */
 #define SCN_LIGHT_SIZE 48

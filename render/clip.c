@@ -7,7 +7,7 @@
 /* Two rows of corner rays, with room to align them. */
 static size_t clip_corner_bytes(const render_frame_t *frame)
 {
-    if (!frame->options.spd_rules)
+    if (!render_corner_mode(&frame->options))
         return 0;
     return 2 * sizeof(render_corner_t) * ((size_t)frame->width + 1) + _Alignof(render_corner_t);
 }
@@ -28,7 +28,7 @@ render_status_t render_clip_init(render_clip_t *clip, const render_frame_t *fram
     clip->ylist = memory;
     clip->xlist = clip->ylist + frame->cluster_count;
     clip->x = -1;
-    if (frame->options.spd_rules) {
+    if (render_corner_mode(&frame->options)) {
         uintptr_t at = (uintptr_t)(clip->xlist + frame->cluster_count);
         at = (at + _Alignof(render_corner_t) - 1) & ~(uintptr_t)(_Alignof(render_corner_t) - 1);
         clip->corners = (render_corner_t *)at;
@@ -202,8 +202,26 @@ static void clip_corner_row(render_ctx_t *ctx, render_clip_t *clip, uint32_t cy,
     }
 }
 
-/* render_area under the SPD rules: the top row of corners, then per pixel
- * row the row below and the pixels between the two. */
+/* Pixel (px, py) of corner mode from its corners c, its anti-aliasing's
+ * rays (when it has any: depth > 0) searched as its own would be. */
+static rgb8_t clip_pixel_of_corners(render_ctx_t *ctx, render_clip_t *clip, uint32_t px,
+                                    uint32_t py, const render_corner_t c[4], int in_tree,
+                                    int clipping, const render_clip_options_t *opt)
+{
+    if (!ctx->options.antialias || ctx->options.aa_depth == 0 || in_tree)
+        return render_pixel_of_corners(ctx, px, py, c, RENDER_CORNER_SCREEN, NULL, 0);
+    if (!clipping)
+        return render_pixel_of_corners(ctx, px, py, c, RENDER_CORNER_TREE, NULL, 0);
+    if (opt->x_clip) {
+        uint32_t n = render_clip_x(clip, (int32_t)px);
+        return render_pixel_of_corners(ctx, px, py, c, RENDER_CORNER_LIST, clip->xlist, n);
+    }
+    return render_pixel_of_corners(ctx, px, py, c, RENDER_CORNER_LIST, clip->ylist,
+                                   clip->ycount);
+}
+
+/* render_area in corner mode: the top row of corners, then per pixel row
+ * the row below and the pixels between the two. */
 static render_status_t clip_area_corners(render_ctx_t *ctx, render_clip_t *clip,
                                          const render_area_t *area,
                                          const render_clip_options_t *opt, int in_tree,
@@ -224,7 +242,7 @@ static render_status_t clip_area_corners(render_ctx_t *ctx, render_clip_t *clip,
         for (uint32_t px = area->x; px < x1; px++) {
             uint32_t i = px - area->x;
             render_corner_t c[4] = {top[i], top[i + 1], bottom[i], bottom[i + 1]};
-            row[i] = render_pixel_of_corners(ctx, px, py, c);
+            row[i] = clip_pixel_of_corners(ctx, clip, px, py, c, in_tree, clipping, opt);
             if (opt->progress)
                 *opt->progress += 1;
             if (mark)
@@ -255,7 +273,7 @@ render_status_t render_area_marked(render_ctx_t *ctx, render_clip_t *clip,
     }
     if (mark)
         mark(arg);
-    if (ctx->options.spd_rules)
+    if (render_corner_mode(&ctx->options))
         return clip_area_corners(ctx, clip, area, opt, in_tree, clipping, out, mark, arg);
     for (uint32_t py = area->y; py < area->y + area->h; py++) {
         rgb8_t *row = out + (size_t)(py - area->y) * area->w;

@@ -52,8 +52,9 @@ typedef struct {
     int32_t x;            /* x of the last X clipping; -1 after Y clipping */
     uint64_t y_kept;      /* sum of ycount over Y clippings (statistics) */
     uint64_t x_kept;      /* sum of xcount over X clippings (statistics) */
-    render_corner_t *corners; /* options.spd_rules: two rows of width + 1
-                                 corner rays (render_area), else NULL */
+    render_corner_t *corners; /* corner mode (render_corner_mode): two rows
+                                 of width + 1 corner rays (render_area),
+                                 else NULL */
 } render_clip_t;
 
 /* Switches of render_area, each a speed-up that can be turned off for
@@ -74,7 +75,7 @@ typedef struct {
 } render_clip_options_t;
 
 /* Working-set bytes an NC needs for this frame's clipping (and with
- * options.spd_rules two rows of corner rays). */
+ * corner mode, render_corner_mode, two rows of corner rays). */
 size_t render_clip_bytes(const render_frame_t *frame);
 
 /* Sets up clipping for frame in memory[0..bytes) (4-byte aligned);
@@ -99,12 +100,14 @@ uint32_t render_clip_x(render_clip_t *clip, int32_t x);
  * RENDER_ERR_AREA if the area is empty or not inside the screen.  With
  * both clip switches off, the primary ray walks the tree like render_pixel.
  * Statistics go to ctx->stats and clip->y_kept / x_kept.
- * With ctx->options.spd_rules it traces the area's (w + 1) x (h + 1)
- * corner rays, each once, and each pixel is the mean of its four; a
- * corner counts in ctx->stats when the area owns it: its pixel's top-left
- * corner, and the corners on the screen's right and bottom edges, so
- * that any areas covering the screen count each corner once.  It needs
- * clip set up (render_clip_init) whatever the switches. */
+ * In corner mode (render_corner_mode) it traces the area's (w + 1) x
+ * (h + 1) corner rays, each once, and each pixel is made of its four
+ * (render_pixel_of_corners: their mean, or anti-aliased); a corner counts
+ * in ctx->stats when the area owns it: its pixel's top-left corner, and
+ * the corners on the screen's right and bottom edges, so that any areas
+ * covering the screen count each corner once (an anti-aliased pixel's own
+ * rays always count).  It needs clip set up (render_clip_init) whatever
+ * the switches. */
 render_status_t render_area(render_ctx_t *ctx, render_clip_t *clip, const render_area_t *area,
                             const render_clip_options_t *opt, rgb8_t *out);
 /* render_area, calling mark(arg) (when mark is not NULL) once after the

@@ -68,16 +68,26 @@
  * prim_intersect_uncertain 520, prim_surface 296), libgcc's double
  * routines a few words: the larger of the two; a density sphere's test 504
  * more (its leaf 992 bytes on the A15, 1,128 on the M33, against 544 and
- * 624 before).  About 19 KiB at max_depth 16, within TASK_STACK_SIZE (24
- * KiB; roles/dm_render.c checks it) */
+ * 624 before).  About 21 KiB at max_depth 16 with RENDER_STACK_AA, within
+ * TASK_STACK_SIZE (24 KiB; roles/dm_render.c checks it) */
 #define RENDER_STACK_PER_DEPTH 744
 #define RENDER_STACK_BASE 6920
+#define RENDER_STACK_AA 2048
 #else
 #define RENDER_STACK_PER_DEPTH 448
 #define RENDER_STACK_BASE 4992
+#define RENDER_STACK_AA 1216
 #endif
+/* Anti-aliasing (render/trace.c) between the pixel and its camera ray, at
+ * SCN_MAX_AA_DEPTH 4 (-fstack-usage): four render_aa_quad frames (296
+ * bytes in float and fixed, 504 in double on the Cortex-A15, 496 in the
+ * M33's software double: its 3 x 3 samples), render_pixel_corners and
+ * render_sample, less render_corner's frame they replace: 1,144 more in
+ * float, 1,180 in fixed, 1,976 in double on the A15; 1,160 in fixed and
+ * 1,976 in double on the M33; counted whether or not a scene
+ * anti-aliases. */
 #define RENDER_STACK_BYTES(max_depth) \
-    (RENDER_STACK_BASE + RENDER_STACK_PER_DEPTH * ((max_depth) + 1))
+    (RENDER_STACK_BASE + RENDER_STACK_AA + RENDER_STACK_PER_DEPTH * ((max_depth) + 1))
 
 /* Tolerances, in the units the scene is stored in (its largest length
  * scaled to 8..16, below; the fixed-point step is 2^-19 = 1.9e-6) times

@@ -44,6 +44,10 @@ $(foreach a,double float fixed,$(eval test_blob_$(a)_LIBS = $$(SCENE_TEXT_LIBS))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_SRCS = tests/host/test_clip.c $$(SCENE_TEXT_SRCS)))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_ARITH := $(a)))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
+# Anti-aliasing (render/trace.c): areas, corner means, cuts.
+$(foreach a,double float fixed,$(eval test_aa_$(a)_SRCS = tests/host/test_aa.c $$(SCENE_TEXT_SRCS)))
+$(foreach a,double float fixed,$(eval test_aa_$(a)_ARITH := $(a)))
+$(foreach a,double float fixed,$(eval test_aa_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
 
 # Escalation (render/wide.h): float and fixed with the wide copy linked in.
 $(foreach a,float fixed,$(eval test_wide_$(a)_SRCS = tests/host/test_wide.c $$(SCENE_TEXT_SRCS)))

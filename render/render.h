@@ -359,9 +359,19 @@ size_t render_scene_index_bytes_layout(const scene_t *scene, const render_layout
 
 void render_ctx_init(render_ctx_t *ctx, const render_frame_t *frame);
 
-/* Colour of pixel (x, y), y = 0 the top row.  With options.spd_rules the
- * mean of its four corner rays, traced here (render_area shares them
- * between neighbours). */
+/* Corner mode: camera rays at the pixel corners, which render_area traces
+ * once each and shares between neighbouring pixels (render/clip.c), under
+ * the SPD rules and with anti-aliasing. */
+static inline int render_corner_mode(const render_options_t *o)
+{
+    return o->spd_rules || o->antialias;
+}
+
+/* Colour of pixel (x, y), y = 0 the top row.  In corner mode
+ * (render_corner_mode) from its four corner rays, traced here (render_area
+ * shares them between neighbours): their mean under the SPD rules, with
+ * options.antialias Whitted's subdivision of the pixel (render/trace.c,
+ * docs/renderer.md). */
 rgb8_t render_pixel(render_ctx_t *ctx, uint32_t x, uint32_t y);
 
 /* Same, with the primary ray testing only the clusters listed (their own
@@ -380,7 +390,7 @@ rgb8_t render_pixel_clipped(render_ctx_t *ctx, uint32_t x, uint32_t y,
  * render_pixel's (without the hierarchy, it is render_pixel). */
 rgb8_t render_pixel_screen(render_ctx_t *ctx, uint32_t x, uint32_t y);
 
-/* options.spd_rules: the camera ray through corner (cx, cy) of the pixel
+/* Corner mode: the camera ray through corner (cx, cy) of the pixel
  * grid (cx 0..width, cy 0..height), its colour and whether it lost
  * precision; render_area keeps two rows of them (render/clip.c). */
 typedef struct {
@@ -405,10 +415,24 @@ void render_corner(render_ctx_t *ctx, uint32_t cx, uint32_t cy, render_corner_se
                    const uint32_t *clusters, uint32_t count, int counted, render_corner_t *out);
 
 /* Pixel (x, y) from its four corners c[0..3] (top-left, top-right,
- * bottom-left, bottom-right): their mean colour, lost precision when one
- * did (escalated then as render_pixel would be). */
+ * bottom-left, bottom-right): their mean colour, or with options.antialias
+ * the pixel cut into four where its corners differ by more than
+ * aa_threshold, down to aa_depth, each new ray searched as the pixel's
+ * would be (search, clusters, count as render_corner's, at the pixel;
+ * always counted in ctx->stats); lost precision when a ray did (escalated
+ * then as render_pixel would be). */
 rgb8_t render_pixel_of_corners(render_ctx_t *ctx, uint32_t x, uint32_t y,
-                               const render_corner_t c[4]);
+                               const render_corner_t c[4], render_corner_search_t search,
+                               const uint32_t *clusters, uint32_t count);
+
+/* Pixel (x, y) as the box mean of n x n camera rays (1..RENDER_MAX_SUPERSAMPLE)
+ * through the centres of its n x n sub-squares (the grid points of
+ * anti-aliasing's sample function at scale 2n), each searching the whole
+ * tree: a reference to measure anti-aliasing against (links1 ref
+ * --supersample, the double build).  No escalation: a pixel that lost
+ * precision is counted (and painted, with mark_lost). */
+#define RENDER_MAX_SUPERSAMPLE 16
+rgb8_t render_pixel_supersampled(render_ctx_t *ctx, uint32_t x, uint32_t y, uint32_t n);
 
 /* Pixels x0..x1-1 of row y into out[0..x1-x0-1]. */
 void render_span(render_ctx_t *ctx, uint32_t y, uint32_t x0, uint32_t x1, rgb8_t *out);

@@ -308,6 +308,13 @@ typedef struct {
                                its four corners (render_area traces each
                                corner once), and a transmitting surface
                                spawns a reflected ray whatever its src */
+    uint8_t antialias;      /* 1: Whitted's adaptive anti-aliasing
+                               (SCN_OPT_ANTIALIAS): corner rays shared as
+                               spd_rules shares them, and a pixel cut into
+                               four where its corners differ by more than
+                               aa_threshold, down to aa_depth (render/trace.c) */
+    uint8_t aa_depth;       /* 0..SCN_MAX_AA_DEPTH: cuts at most; 0 = the
+                               mean of the corners */
     uint16_t density_steps; /* equal steps of a density sphere's root finder,
                                SCN_MIN_DENSITY_STEPS..SCN_MAX_DENSITY_STEPS
                                (render/prim.c; render_prim_t.density_steps) */
@@ -315,6 +322,9 @@ typedef struct {
                                ray whose weight (the product of src and trc
                                along its path) falls below it is not traced;
                                0 = max_depth alone decides */
+    num_t aa_threshold;     /* antialias: 0..1, the largest difference of a
+                               channel between a quad's four corners (max -
+                               min, before clamping) that is not cut */
 } render_options_t;
 
 /* The arrays (marked "reloc") are the scene's pointer fields:

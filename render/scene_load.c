@@ -339,6 +339,25 @@ static scene_load_status_t load_camera(struct load *L, const uint8_t *p, const u
     return SCENE_LOAD_OK;
 }
 
+/* The VIEW record's anti-aliasing fields: depth 0..SCN_MAX_AA_DEPTH, the
+ * word after it 0, the threshold 0..1. */
+static scene_load_status_t load_aa(struct load *L, const uint8_t *p, scene_t *s)
+{
+    uint16_t depth = wire_get_u16(p + SCN_VIEW_AA_DEPTH);
+    if (depth > SCN_MAX_AA_DEPTH)
+        return load_fail(L, SCENE_LOAD_ERR_LIMIT, "aa depth %ld not 0..%ld", (long)depth,
+                         (long)SCN_MAX_AA_DEPTH);
+    if (wire_get_u16(p + SCN_VIEW_AA_ZERO) != 0)
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "the view's reserved word after aa depth "
+                         "is not 0");
+    if (!load_units(p + SCN_VIEW_AA_THRESHOLD, 1, 1.0f))
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "aa_threshold not within 0..1");
+    s->options.antialias = (wire_get_u16(p + SCN_VIEW_FLAGS) & SCN_OPT_ANTIALIAS) != 0;
+    s->options.aa_depth = (uint8_t)depth;
+    s->options.aa_threshold = load_num(p + SCN_VIEW_AA_THRESHOLD);
+    return SCENE_LOAD_OK;
+}
+
 static scene_load_status_t load_view(struct load *L, scene_t *s)
 {
     const uint8_t *p = load_rec(L, SCN_SEC_VIEW, 0);
@@ -368,6 +387,7 @@ static scene_load_status_t load_view(struct load *L, scene_t *s)
         return load_fail(L, SCENE_LOAD_ERR_LIMIT, "density_steps %lu not %ld..%ld",
                          (unsigned long)steps, (long)SCN_MIN_DENSITY_STEPS,
                          (long)SCN_MAX_DENSITY_STEPS);
+    LOAD_TRY(load_aa(L, p, s));
     s->width = w;
     s->height = h;
     s->frame_count = frames;

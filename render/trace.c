@@ -820,7 +820,118 @@ static rgb8_t render_pixel_out(render_ctx_t *ctx, rgb_t c)
     return out;
 }
 
-static rgb8_t render_corners_mean(render_ctx_t *ctx, const render_corner_t c[4]);
+/* Where a sample of a pixel's anti-aliasing searches: as the pixel
+ * would (render_eye's search, pixel and list). */
+typedef struct {
+    pixel_search_t how;
+    int32_t pixel[2];
+    const uint32_t *clip;
+    uint32_t clip_count;
+} render_aa_search_t;
+
+/* Screen coordinate 0..2 of grid line g of a grid scale steps a pixel
+ * side, over n pixels.  g and scale are halved while both are even, so
+ * that a point has one representation, and so one value, whoever traces
+ * it: a corner is (cx, 1), as it was before any grid.  scale is a power
+ * of two (anti-aliasing), or g is odd (supersampling's centres). */
+static num_t render_grid(uint32_t g, uint32_t scale, uint32_t n)
+{
+    while (scale > 1 && (g & 1) == 0) {
+        g >>= 1;
+        scale >>= 1;
+    }
+    return num_from_ratio((int32_t)(2 * g), (int32_t)(n * scale));
+}
+
+/* The camera ray through grid point (gx, gy) (render_grid), into *out. */
+static void render_sample(render_ctx_t *ctx, uint32_t gx, uint32_t gy, uint32_t scale,
+                          const render_aa_search_t *s, render_corner_t *out)
+{
+    const render_frame_t *f = ctx->frame;
+    num_t sx = num_sub(render_grid(gx, scale, f->width), NUM_ONE);
+    num_t sy = num_sub(NUM_ONE, render_grid(gy, scale, f->height));
+    out->colour = render_eye(ctx, sx, sy, s->how, s->pixel, s->clip, s->clip_count);
+    out->lost = ctx->pixel_lost;
+}
+
+/* The mean of four colours, *lost set when it saturates: a pixel's of
+ * its corners, an anti-aliased quad's of its corners or its quarters. */
+static rgb_t render_mean4(rgb_t a, rgb_t b, rgb_t c, rgb_t d, uint8_t *lost)
+{
+    rgb_t mean = rgb_scale(rgb_add(rgb_add(a, b), rgb_add(c, d)), NUM_C(0.25));
+    if (rgb_is_sat(mean))
+        *lost = 1;
+    return mean;
+}
+
+/* 1 when in one channel the largest of q[0], q[1], q[k], q[k + 1] is
+ * more than t above the smallest. */
+static int render_aa_apart(const render_corner_t *q, uint32_t k, num_t t)
+{
+    const rgb_t *c[4] = {&q[0].colour, &q[1].colour, &q[k].colour, &q[k + 1].colour};
+    for (int ch = 0; ch < 3; ch++) {
+        num_t lo = ch == 0 ? c[0]->r : ch == 1 ? c[0]->g : c[0]->b, hi = lo;
+        for (int i = 1; i < 4; i++) {
+            num_t v = ch == 0 ? c[i]->r : ch == 1 ? c[i]->g : c[i]->b;
+            lo = num_min(lo, v);
+            hi = num_max(hi, v);
+        }
+        if (num_gt(num_sub(hi, lo), t))
+            return 1;
+    }
+    return 0;
+}
+
+/* Whitted's adaptive anti-aliasing of a quad of side grid steps whose
+ * top-left is grid point (gx, gy), its corners q[0], q[1] (top) and q[k],
+ * q[k + 1] (bottom): their mean when side is 1 (the depth limit) or they
+ * do not differ by more than the threshold; else the mean of its four
+ * quarters, the five new points (edge midpoints, centre) traced here. */
+static rgb_t render_aa_quad(render_ctx_t *ctx, const render_aa_search_t *s, uint32_t scale,
+                            uint32_t gx, uint32_t gy, uint32_t side, const render_corner_t *q,
+                            uint32_t k, uint8_t *lost)
+{
+    if (side == 1 || !render_aa_apart(q, k, ctx->options.aa_threshold))
+        return render_mean4(q[0].colour, q[1].colour, q[k].colour, q[k + 1].colour, lost);
+    uint32_t h = side / 2;
+    render_corner_t g[9]; /* 3 x 3: corners, edge midpoints, centre */
+    g[0] = q[0];
+    g[2] = q[1];
+    g[6] = q[k];
+    g[8] = q[k + 1];
+    static const uint8_t at[5][3] = {{1, 1, 0}, {3, 0, 1}, {4, 1, 1}, {5, 2, 1}, {7, 1, 2}};
+    for (int i = 0; i < 5; i++) {
+        render_corner_t *p = &g[at[i][0]];
+        render_sample(ctx, gx + at[i][1] * h, gy + at[i][2] * h, scale, s, p);
+        *lost |= p->lost;
+    }
+    rgb_t c[4];
+    for (uint32_t i = 0; i < 4; i++) {
+        uint32_t cx = i & 1, cy = i >> 1;
+        c[i] = render_aa_quad(ctx, s, scale, gx + cx * h, gy + cy * h, h, &g[cy * 3 + cx], 3,
+                              lost);
+    }
+    return render_mean4(c[0], c[1], c[2], c[3], lost);
+}
+
+/* Pixel (x, y) from its corners c[0..3] (top-left, top-right,
+ * bottom-left, bottom-right): their mean, or with options.antialias,
+ * Whitted's subdivision (render_aa_quad) searched as s says; lost
+ * precision when any ray did. */
+static rgb8_t render_pixel_corners(render_ctx_t *ctx, uint32_t x, uint32_t y,
+                                   const render_corner_t c[4], const render_aa_search_t *s)
+{
+    uint8_t lost = c[0].lost || c[1].lost || c[2].lost || c[3].lost;
+    rgb_t colour;
+    if (ctx->options.antialias) {
+        uint32_t scale = 1u << ctx->options.aa_depth;
+        colour = render_aa_quad(ctx, s, scale, x * scale, y * scale, scale, c, 2, &lost);
+    } else {
+        colour = render_mean4(c[0].colour, c[1].colour, c[2].colour, c[3].colour, &lost);
+    }
+    ctx->pixel_lost = lost;
+    return render_pixel_out(ctx, colour);
+}
 
 /* Not inlined: its frame (the camera ray's hit and more) is gone before an
  * escalation traces the pixel again on the same stack. */
@@ -830,54 +941,45 @@ static __attribute__((noinline)) rgb8_t render_pixel_impl(render_ctx_t *ctx, uin
                                                          uint32_t clip_count)
 {
     const render_frame_t *f = ctx->frame;
-    if (ctx->options.spd_rules) { /* its four corners, none shared */
+    const render_aa_search_t s = {search, {(int32_t)x, (int32_t)y}, clip, clip_count};
+    if (render_corner_mode(&ctx->options)) { /* its four corners, none shared */
         render_corner_t c[4];
         for (uint32_t k = 0; k < 4; k++)
             render_corner(ctx, x + (k & 1), y + (k >> 1), RENDER_CORNER_TREE, NULL, 0, 1, &c[k]);
-        return render_corners_mean(ctx, c);
+        return render_pixel_corners(ctx, x, y, c, &s);
     }
     /* through the pixel centre */
     num_t sx = num_sub(num_from_ratio((int32_t)(2 * x + 1), f->width), NUM_ONE);
     num_t sy = num_sub(NUM_ONE, num_from_ratio((int32_t)(2 * y + 1), f->height));
-    const int32_t pixel[2] = {(int32_t)x, (int32_t)y};
-    return render_pixel_out(ctx, render_eye(ctx, sx, sy, search, pixel, clip, clip_count));
+    return render_pixel_out(ctx, render_eye(ctx, sx, sy, search, s.pixel, clip, clip_count));
+}
+
+/* The pixel search a render_corner_search_t names. */
+static pixel_search_t render_search_of(const render_ctx_t *ctx, render_corner_search_t search)
+{
+    return search == RENDER_CORNER_LIST ? PIXEL_SEARCH_LIST
+           : search == RENDER_CORNER_SCREEN && ctx->options.use_hierarchy ? PIXEL_SEARCH_SCREEN
+                                                                           : PIXEL_SEARCH_TREE;
 }
 
 void render_corner(render_ctx_t *ctx, uint32_t cx, uint32_t cy, render_corner_search_t search,
                    const uint32_t *clusters, uint32_t count, int counted, render_corner_t *out)
 {
     const render_frame_t *f = ctx->frame;
-    num_t sx = num_sub(num_from_ratio((int32_t)(2 * cx), f->width), NUM_ONE);
-    num_t sy = num_sub(NUM_ONE, num_from_ratio((int32_t)(2 * cy), f->height));
+    uint32_t none = 0; /* a non-NULL empty list: clipping that kept nothing */
     /* the corner lies in the closed square of this pixel, which every
      * screen rectangle holding the corner holds (render/prepare.c widens
      * them by a pixel) */
-    const int32_t pixel[2] = {(int32_t)(cx < f->width ? cx : cx - 1u),
-                              (int32_t)(cy < f->height ? cy : cy - 1u)};
-    pixel_search_t how = search == RENDER_CORNER_LIST ? PIXEL_SEARCH_LIST
-                         : search == RENDER_CORNER_SCREEN && ctx->options.use_hierarchy
-                             ? PIXEL_SEARCH_SCREEN
-                             : PIXEL_SEARCH_TREE;
-    uint32_t none = 0; /* a non-NULL empty list: clipping that kept nothing */
+    const render_aa_search_t s = {render_search_of(ctx, search),
+                                  {(int32_t)(cx < f->width ? cx : cx - 1u),
+                                   (int32_t)(cy < f->height ? cy : cy - 1u)},
+                                  clusters ? clusters : &none, clusters ? count : 0};
     render_stats_t before;
     if (!counted)
         before = ctx->stats;
-    out->colour = render_eye(ctx, sx, sy, how, pixel, clusters ? clusters : &none,
-                             clusters ? count : 0);
-    out->lost = ctx->pixel_lost;
+    render_sample(ctx, cx, cy, 1, &s, out);
     if (!counted)
         ctx->stats = before;
-}
-
-/* The mean of a pixel's four corners, its loss theirs. */
-static rgb8_t render_corners_mean(render_ctx_t *ctx, const render_corner_t c[4])
-{
-    rgb_t sum = rgb_add(rgb_add(c[0].colour, c[1].colour), rgb_add(c[2].colour, c[3].colour));
-    ctx->pixel_lost = c[0].lost || c[1].lost || c[2].lost || c[3].lost;
-    rgb_t mean = rgb_scale(sum, NUM_C(0.25));
-    if (rgb_is_sat(mean))
-        ctx->pixel_lost = 1;
-    return render_pixel_out(ctx, mean);
 }
 
 /* 1 when a and b differ by more than RENDER_CHECK_LOST_STEPS in a channel. */
@@ -911,9 +1013,34 @@ static rgb8_t render_pixel_settled(render_ctx_t *ctx, uint32_t x, uint32_t y, rg
 }
 
 rgb8_t render_pixel_of_corners(render_ctx_t *ctx, uint32_t x, uint32_t y,
-                               const render_corner_t c[4])
+                               const render_corner_t c[4], render_corner_search_t search,
+                               const uint32_t *clusters, uint32_t count)
 {
-    return render_pixel_settled(ctx, x, y, render_corners_mean(ctx, c));
+    uint32_t none = 0; /* a non-NULL empty list: clipping that kept nothing */
+    const render_aa_search_t s = {render_search_of(ctx, search), {(int32_t)x, (int32_t)y},
+                                  clusters ? clusters : &none, clusters ? count : 0};
+    return render_pixel_settled(ctx, x, y, render_pixel_corners(ctx, x, y, c, &s));
+}
+
+rgb8_t render_pixel_supersampled(render_ctx_t *ctx, uint32_t x, uint32_t y, uint32_t n)
+{
+    const render_aa_search_t s = {PIXEL_SEARCH_TREE, {(int32_t)x, (int32_t)y}, NULL, 0};
+    uint32_t scale = 2 * n; /* the sub-squares' centres: odd grid points */
+    rgb_t sum = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    uint8_t lost = 0;
+    for (uint32_t j = 0; j < n; j++) {
+        rgb_t row = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+        for (uint32_t i = 0; i < n; i++) {
+            render_corner_t c;
+            render_sample(ctx, scale * x + 2 * i + 1, scale * y + 2 * j + 1, scale, &s, &c);
+            row = rgb_add(row, c.colour);
+            lost |= c.lost;
+        }
+        sum = rgb_add(sum, row);
+    }
+    rgb_t mean = rgb_scale(sum, num_from_ratio(1, (int32_t)(n * n)));
+    ctx->pixel_lost = lost || rgb_is_sat(mean);
+    return render_pixel_out(ctx, mean);
 }
 
 rgb8_t render_pixel(render_ctx_t *ctx, uint32_t x, uint32_t y)

@@ -170,11 +170,15 @@ static int ref_wide_frame(const char *in, struct ref_wide *w, long frame, render
     return 0;
 }
 
-/* Every row of the image through render_span. */
-static void ref_trace_rows(render_ctx_t *ctx, struct image *img, rgb8_t *row)
+/* Every row of the image through render_span, or with supersample > 0
+ * render_pixel_supersampled. */
+static void ref_trace_rows(render_ctx_t *ctx, struct image *img, rgb8_t *row, int supersample)
 {
     for (uint32_t y = 0; y < (uint32_t)img->height; y++) {
-        render_span(ctx, y, 0, (uint32_t)img->width, row);
+        if (supersample == 0)
+            render_span(ctx, y, 0, (uint32_t)img->width, row);
+        for (uint32_t x = 0; supersample > 0 && x < (uint32_t)img->width; x++)
+            row[x] = render_pixel_supersampled(ctx, x, y, (uint32_t)supersample);
         for (int x = 0; x < img->width; x++) {
             uint8_t *px = img->rgb + 3 * ((size_t)y * (size_t)img->width + (size_t)x);
             px[0] = row[x].r;
@@ -186,9 +190,10 @@ static void ref_trace_rows(render_ctx_t *ctx, struct image *img, rgb8_t *row)
 
 _Static_assert(sizeof(rgb8_t) == 3, "an image's rows are packed r,g,b bytes");
 
-/* --spd-rules: the whole image as one area (render_area), whose corner
- * rays are each traced and counted once, searched by screen as an NC's
- * are by default.  0, or -1 after saying why. */
+/* Corner mode (--spd-rules, --aa; render_corner_mode): the whole image as
+ * one area (render_area), whose corner rays are each traced and counted
+ * once, searched by screen as an NC's are by default.  0, or -1 after
+ * saying why. */
 static int ref_trace_corners(render_ctx_t *ctx, const render_frame_t *f, struct image *img)
 {
     size_t bytes = render_clip_bytes(f);
@@ -214,7 +219,7 @@ static int ref_trace_corners(render_ctx_t *ctx, const render_frame_t *f, struct 
  * (when not NULL): escalating into it. */
 static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena,
                             size_t mark, long frame, const char *out, int ppm, struct film *film,
-                            struct ref_wide *wide, int verbose)
+                            struct ref_wide *wide, int verbose, int supersample)
 {
     arena_release_to(arena, mark);
     render_frame_t *frame_data;
@@ -247,14 +252,14 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     struct timespec t0, t1, c0, c1;
     clock_gettime(CLOCK_MONOTONIC, &t0);
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c0);
-    if (ctx.options.spd_rules) {
+    if (render_corner_mode(&ctx.options)) {
         if (ref_trace_corners(&ctx, frame_data, &img) != 0) {
             free(row);
             image_free(&img);
             return -1;
         }
     } else {
-        ref_trace_rows(&ctx, &img, row);
+        ref_trace_rows(&ctx, &img, row, supersample);
     }
     clock_gettime(CLOCK_MONOTONIC, &t1);
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
@@ -301,6 +306,7 @@ enum ref_escalation { REF_ESC_DEFAULT, REF_ESC_ON, REF_ESC_OFF };
 struct ref_args {
     const char *in, *out;
     int ppm, many, verbose, escalate; /* escalate: settled (ref_escalation_settle) */
+    int supersample; /* --supersample N: N, else 0 */
     enum ref_escalation escalation;
     long first, last;
     struct scene_file_opts scene;
@@ -313,6 +319,7 @@ static int ref_take(struct ref_args *a, const struct cli *c, int code)
     case 'o': a->out = c->arg; return 0;
     case REF_OPT_PPM: a->ppm = 1; return 0;
     case REF_OPT_VERBOSE: a->verbose = 1; return 0;
+    case REF_OPT_SUPERSAMPLE: return cli_int(c, 1, RENDER_MAX_SUPERSAMPLE, &a->supersample);
     case REF_OPT_ESCALATE:
     case REF_OPT_NO_ESCALATE: {
         enum ref_escalation e = code == REF_OPT_ESCALATE ? REF_ESC_ON : REF_ESC_OFF;
@@ -336,6 +343,25 @@ static int ref_take(struct ref_args *a, const struct cli *c, int code)
         return cli_usage_error(c->prog, "one scene at a time, not also '%s'", c->arg);
     }
     return -1;
+}
+
+/* --supersample: the double build, without --aa, --spd-rules, --paper (a
+ * scene's own anti-aliasing or SPD rules are refused when it is loaded).
+ * 0, or -1 (said). */
+static int ref_supersample_check(const struct ref_args *a)
+{
+    const struct scene_file_opts *o = &a->scene;
+    const char *with = o->aa_depth >= 0 ? "--aa" : o->spd_rules ? "--spd-rules"
+                       : o->paper ? "--paper" : NULL;
+    if (!a->supersample)
+        return 0;
+    if (with)
+        return cli_usage_error("links1 ref", "--supersample and %s: one sampling at a time",
+                               with);
+    if (strcmp(NUM_NAME, "double") != 0)
+        return cli_usage_error("links1 ref", "--supersample is for --arith double (a "
+                               "reference), not %s", NUM_NAME);
+    return 0;
 }
 
 /* 0, 1 (--help shown) or -1 (bad arguments, reported). */
@@ -362,7 +388,7 @@ static int ref_parse(int argc, char **argv, struct ref_args *a)
         return cli_usage_error("links1 ref", "%s", !a->in ? "no SCENE given" : "no -o OUT given");
     if (!a->ppm && scene_file_ends_with(a->out, ".ppm"))
         a->ppm = 1;
-    return 0;
+    return ref_supersample_check(a);
 }
 
 /* Whether to escalate: --escalate, --check-lost (the wide copy, to check
@@ -422,6 +448,12 @@ int main(int argc, char **argv)
     memset(&wide, 0, sizeof wide);
     if (rc == 0 && a.escalate)
         rc = ref_wide_load(in, bytes, len, &wide);
+    if (rc == 0 && a.supersample && render_corner_mode(&scene.options)) {
+        fprintf(stderr, "links1 ref: %s: --supersample: the scene has %s on\n", in,
+                scene.options.antialias ? "anti-aliasing (aa; --no-aa turns it off)"
+                                        : "the SPD rules");
+        rc = -1;
+    }
     if (rc == 0 && (uint32_t)last >= scene.frame_count) {
         fprintf(stderr, "links1 ref: %s: frame %ld, the scene has %u frames (0..%u)\n", in,
                 last, (unsigned)scene.frame_count, (unsigned)scene.frame_count - 1);
@@ -447,7 +479,7 @@ int main(int argc, char **argv)
         else
             snprintf(path, sizeof path, "%s", out);
         rc = ref_render_frame(in, &scene, &arena, mark, f, path, a.ppm, filming ? &film : NULL,
-                              a.escalate ? &wide : NULL, a.verbose);
+                              a.escalate ? &wide : NULL, a.verbose, a.supersample);
     }
     if (filming && rc == 0 && film_close(&film, err, sizeof err) != 0) {
         fprintf(stderr, "links1 ref: %s\n", err);

@@ -15,6 +15,10 @@ const struct cli_optdef ref_optdefs[] = {
     {"no-escalate", NULL, REF_OPT_NO_ESCALATE,
      "keep a pixel that lost precision as this arithmetic traced it"},
     {"verbose", NULL, REF_OPT_VERBOSE, "say how many pixels each frame escalated to double"},
+    {"supersample", "N", REF_OPT_SUPERSAMPLE,
+     "each pixel the mean of N x N rays through the centres of its N x N\n"
+     "sub-squares (1..16; --arith double; not with --aa, --spd-rules,\n"
+     "--paper or a scene's own aa): a reference for --aa"},
     CLI_OPTDEF_END,
 };
 

@@ -16,6 +16,7 @@ enum ref_opt_code {
     REF_OPT_ESCALATE,
     REF_OPT_NO_ESCALATE,
     REF_OPT_VERBOSE,
+    REF_OPT_SUPERSAMPLE,
     REF_OPT_ARITH, /* links1 ref only, with the three below */
     REF_OPT_FPU,
     REF_OPT_TARGET_DB,

@@ -50,6 +50,9 @@ static void compile_view(const struct sd_scene *s, uint8_t *p)
     wire_put_u32(p + SCN_VIEW_FRAMES, (uint32_t)v->frames);
     wire_put_f32(p + SCN_VIEW_MIN_WEIGHT, (float)v->min_weight);
     wire_put_u32(p + SCN_VIEW_DENSITY_STEPS, (uint32_t)v->density_steps);
+    wire_put_u16(p + SCN_VIEW_AA_DEPTH, (uint16_t)v->aa_depth);
+    wire_put_u16(p + SCN_VIEW_AA_ZERO, 0);
+    wire_put_f32(p + SCN_VIEW_AA_THRESHOLD, (float)v->aa_threshold);
 }
 
 /* A light's values from colour to cos_outer, at p (its record's colour

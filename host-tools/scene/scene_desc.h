@@ -20,6 +20,8 @@ struct sd_view {
     int max_depth;
     double min_weight;      /* adaptive depth: 0..1, 0 = off */
     int density_steps;      /* SCN_MIN_DENSITY_STEPS..SCN_MAX_DENSITY_STEPS */
+    int aa_depth;           /* 0..SCN_MAX_AA_DEPTH, with SCN_OPT_ANTIALIAS */
+    double aa_threshold;    /* 0..1, with SCN_OPT_ANTIALIAS */
     unsigned flags;         /* SCN_OPT_* */
     int frames;
     int haze;               /* 1: haze { colour R G B  distance D } (SCN_SEC_HAZE) */

@@ -18,6 +18,9 @@ void scene_file_opts_init(struct scene_file_opts *o)
     o->max_depth = -1;
     o->min_weight = -1;
     o->density_steps = -1;
+    o->aa_depth = -1;
+    o->aa_threshold = -1;
+    o->no_aa = 0;
     o->refractionless = -1;
     o->refraction = -1;
     o->no_auto_hierarchy = 0;
@@ -194,6 +197,19 @@ static void scene_opts_spd_rules(struct sd_scene *s)
     s->view.flags &= ~(SCN_OPT_REFRACTIONLESS | SCN_OPT_NO_REFRACTION | SCN_OPT_NO_SHADOWS);
 }
 
+/* --aa, --aa-threshold, --no-aa. */
+static void scene_opts_apply_aa(const struct scene_file_opts *o, struct sd_view *v)
+{
+    if (o->aa_depth >= 0) {
+        v->flags |= SCN_OPT_ANTIALIAS;
+        v->aa_depth = o->aa_depth;
+    }
+    if (o->aa_threshold >= 0)
+        v->aa_threshold = o->aa_threshold;
+    if (o->no_aa)
+        v->flags &= ~SCN_OPT_ANTIALIAS;
+}
+
 void scene_opts_apply(const struct scene_file_opts *o, struct sd_scene *s)
 {
     if (o->paper && !s->paper)
@@ -214,6 +230,7 @@ void scene_opts_apply(const struct scene_file_opts *o, struct sd_scene *s)
         s->view.min_weight = o->min_weight;
     if (o->density_steps >= 0)
         s->view.density_steps = o->density_steps;
+    scene_opts_apply_aa(o, &s->view);
     if (o->no_auto_hierarchy)
         s->no_auto_hierarchy = 1;
     s->view.flags |= (o->mark_lost ? SCN_OPT_MARK_LOST : 0) |
@@ -236,6 +253,8 @@ const char *scene_opts_given(const struct scene_file_opts *o)
     return o->width ? "--size" : o->max_depth >= 0 ? "--max-depth"
            : o->min_weight >= 0 ? "--min-weight"
            : o->density_steps >= 0 ? "--density-steps"
+           : o->aa_depth >= 0 ? "--aa" : o->aa_threshold >= 0 ? "--aa-threshold"
+           : o->no_aa ? "--no-aa"
            : o->refractionless >= 0 ? "--refractionless"
            : o->refraction >= 0 ? "--refraction"
            : o->no_auto_hierarchy ? "--no-auto-hierarchy"
@@ -280,6 +299,15 @@ int scene_opts_words(const struct scene_file_opts *o, enum scene_opts_for use,
         snprintf(w->steps, sizeof w->steps, "%d", o->density_steps);
         scene_opts_pair(w, &n, "--density-steps", w->steps);
     }
+    if (o->aa_depth >= 0) {
+        snprintf(w->aa, sizeof w->aa, "%d", o->aa_depth);
+        scene_opts_pair(w, &n, "--aa", w->aa);
+    }
+    if (o->aa_threshold >= 0) {
+        snprintf(w->aa_threshold, sizeof w->aa_threshold, "%.17g", o->aa_threshold);
+        scene_opts_pair(w, &n, "--aa-threshold", w->aa_threshold);
+    }
+    scene_opts_switch(w, &n, o->no_aa, "--no-aa");
     if (o->refraction >= 0)
         scene_opts_pair(w, &n, "--refraction", o->refraction ? "on" : "off");
     if (o->refractionless >= 0)

@@ -15,6 +15,9 @@ struct scene_file_opts {
     int max_depth;      /* --max-depth D; -1: the scene's */
     double min_weight;  /* --min-weight W (adaptive depth); -1: the scene's */
     int density_steps;  /* the density root finder's steps; -1: the scene's */
+    int aa_depth;       /* --aa N: anti-aliasing on, N cuts at most; -1: the scene's */
+    double aa_threshold; /* --aa-threshold T; -1: the scene's */
+    int no_aa;          /* --no-aa: 1 turns the scene's anti-aliasing off */
     int refractionless; /* --refractionless on|off: 1 or 0; -1: the scene's */
     int refraction;     /* --refraction on|off: 1 or 0; -1: the scene's */
     int no_auto_hierarchy; /* --no-auto-hierarchy: 1 compiles without it */
@@ -90,10 +93,10 @@ const char *scene_opts_model_given(const struct scene_file_opts *o);
  * those that change what is judged (not --size, which the pre-render
  * sets, nor --mark-lost, --check-lost and --world-space). */
 enum scene_opts_for { SCENE_OPTS_ALL, SCENE_OPTS_PRE_RENDER };
-#define SCENE_OPTS_MAX_WORDS (2 * (13 + SD_TEXTURES_FROM_MAX) + 1)
+#define SCENE_OPTS_MAX_WORDS (2 * (16 + SD_TEXTURES_FROM_MAX) + 1)
 struct scene_opts_words {
     const char *w[SCENE_OPTS_MAX_WORDS]; /* NULL-ended */
-    char size[32], depth[16], weight[40], steps[16];
+    char size[32], depth[16], weight[40], steps[16], aa[16], aa_threshold[40];
 };
 /* Fills w from o; the count of words. */
 int scene_opts_words(const struct scene_file_opts *o, enum scene_opts_for use,

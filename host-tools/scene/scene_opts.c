@@ -42,6 +42,17 @@ const struct cli_optdef scene_optdefs[] = {
      "camera ray, no adaptive depth, refraction by Snell, shadow rays;\n"
      "prints 'spd: eye_hit N reflect N refract N shadow N preprocess S\n"
      "trace S' (an option given beside it wins)"},
+    {"aa", "N", SCENE_OPT_AA,
+     "anti-aliasing (Whitted's adaptive scheme; as options { aa N }):\n"
+     "rays at the pixel corners, shared, and a pixel cut into four\n"
+     "where its corners differ by more than --aa-threshold, at most N\n"
+     "times (0..4; 0 = the mean of the corner rays); off by default\n"
+     "and in paper mode (given beside --paper, it wins)"},
+    {"aa-threshold", "T", SCENE_OPT_AA_THRESHOLD,
+     "anti-aliasing's threshold (0..1; scenes default 0.1): the largest\n"
+     "difference of a channel between a quad's four corner colours\n"
+     "(before clamping, 1 = full scale) left uncut"},
+    {"no-aa", NULL, SCENE_OPT_NO_AA, "no anti-aliasing, whatever the scene says"},
     CLI_OPTDEF_END,
 };
 
@@ -76,6 +87,20 @@ static int scene_opts_value(struct scene_file_opts *o, const struct cli *c, int 
     return -1;
 }
 
+/* --aa N, --aa-threshold T, --no-aa (not with --aa). */
+static int scene_opts_aa(struct scene_file_opts *o, const struct cli *c, int code)
+{
+    if (code == SCENE_OPT_AA_THRESHOLD)
+        return cli_double(c, 0, 0, 1, NULL, &o->aa_threshold);
+    if (code == SCENE_OPT_NO_AA)
+        o->no_aa = 1;
+    else if (cli_int(c, 0, SCN_MAX_AA_DEPTH, &o->aa_depth) != 0)
+        return -1;
+    if (o->no_aa && o->aa_depth >= 0)
+        return cli_usage_error(c->prog, "--aa and --no-aa together");
+    return 0;
+}
+
 int scene_opts_take(struct scene_file_opts *o, const struct cli *c, int code)
 {
     switch (code) {
@@ -85,6 +110,8 @@ int scene_opts_take(struct scene_file_opts *o, const struct cli *c, int code)
     case SCENE_OPT_WORLD_SPACE: o->world_space = 1; return 1;
     case SCENE_OPT_PAPER: o->paper = 1; return 1;
     case SCENE_OPT_SPD_RULES: o->spd_rules = 1; return 1;
+    case SCENE_OPT_AA: case SCENE_OPT_AA_THRESHOLD: case SCENE_OPT_NO_AA:
+        return scene_opts_aa(o, c, code) == 0 ? 1 : -1;
     }
     if (code < SCENE_OPT_SIZE || code > SCENE_OPT_TEXTURES_FROM)
         return 0;

@@ -26,6 +26,9 @@ enum scene_opt_code {
     SCENE_OPT_PAPER,
     SCENE_OPT_TEXTURES_FROM,
     SCENE_OPT_SPD_RULES,
+    SCENE_OPT_AA,
+    SCENE_OPT_AA_THRESHOLD,
+    SCENE_OPT_NO_AA,
 };
 
 /* The definitions, ending with CLI_OPTDEF_END. */

@@ -119,6 +119,7 @@ void sd_paper_apply(struct sd_scene *s)
     (void)sd_paper_facet_cones(s, err, sizeof err); /* failing, sd_compile refuses its cones */
     s->paper = 1;
     s->view.flags |= SCN_OPT_PAPER;
+    s->view.flags &= ~SCN_OPT_ANTIALIAS; /* the paper's pixel is one ray */
     if (!(s->written & SD_WROTE_MIN_WEIGHT))
         s->view.min_weight = 0;
     if (!(s->written & SD_WROTE_AUTO_HIERARCHY))

@@ -127,6 +127,15 @@ static void parse_options(struct parser *p)
             v->density_steps = lex_int(&p->lx, "density_steps", SCN_MIN_DENSITY_STEPS,
                                        SCN_MAX_DENSITY_STEPS);
             continue;
+        } else if (lex_is_word(&p->lx, "aa")) { /* present = on */
+            lex_next(&p->lx);
+            v->aa_depth = lex_int(&p->lx, "aa", 0, SCN_MAX_AA_DEPTH);
+            v->flags |= SCN_OPT_ANTIALIAS;
+            continue;
+        } else if (lex_is_word(&p->lx, "aa_threshold")) {
+            lex_next(&p->lx);
+            v->aa_threshold = lex_number_in(&p->lx, "aa_threshold", 0, 1);
+            continue;
         } else if (lex_is_word(&p->lx, "refractionless")) {
             bit = SCN_OPT_REFRACTIONLESS;
         } else if (lex_is_word(&p->lx, "bounds")) {
@@ -340,6 +349,7 @@ void sd_view_defaults(struct sd_view *v)
     v->max_depth = PARSE_DEFAULT_DEPTH;
     v->min_weight = SCN_DEFAULT_MIN_WEIGHT;
     v->density_steps = SCN_DEFAULT_DENSITY_STEPS;
+    v->aa_threshold = SCN_DEFAULT_AA_THRESHOLD;
     v->flags = SCN_OPT_REFRACTIONLESS | SCN_OPT_AMBIENT_SHADOWED | SCN_OPT_UNTINTED_SHADOWS;
     v->frames = 1;
 }
@@ -395,6 +405,9 @@ int sd_parse_text_from(const char *name, const char *text, const char *const *te
     if (s->n_prims == 0)
         lex_error(&p->lx, "the scene has no primitive");
     parse_resolve_fresnel(p);
+    if (s->paper && (s->view.flags & SCN_OPT_ANTIALIAS))
+        lex_error(&p->lx, "options: aa with paper on: paper mode has no anti-aliasing "
+                  "(--paper --aa N gives both)");
     if (s->paper)
         sd_paper_apply(s);
     free(p);

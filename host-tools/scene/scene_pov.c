@@ -99,6 +99,9 @@ static void pov_check(const struct sd_scene *s, struct pov_notes *n)
             pov_note(n, "density sphere: exported as a blob, whose field function differs");
     if (s->view.max_depth == 0)
         pov_note(n, "max_depth 0: POV-Ray always traces at least one level");
+    if (s->view.flags & SCN_OPT_ANTIALIAS)
+        pov_note(n, "anti-aliasing (aa): not in a POV-Ray scene file; its nearest is the "
+                    "command line's adaptive +AM2 +A<threshold> +R<depth>, not the same test");
 }
 
 static void pov_vec(FILE *f, const double v[3])

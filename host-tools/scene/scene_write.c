@@ -37,7 +37,7 @@ static void wr_view(FILE *f, const struct sd_scene *s)
     wr_vec(f, "background", v->background, 3);
     fprintf(f, "\noptions { max_depth %d  min_weight %.9g  density_steps %d  refractionless %s  "
                "refraction %s  shadows %s  bounds %s  hierarchy %s  mark_lost %s\n"
-               "          ambient_shadowed %s  shadow_tint %s  check_lost %s  world_space %s }\n",
+               "          ambient_shadowed %s  shadow_tint %s  check_lost %s  world_space %s",
             v->max_depth, v->min_weight, v->density_steps,
             v->flags & SCN_OPT_REFRACTIONLESS ? "on" : "off",
             v->flags & SCN_OPT_NO_REFRACTION ? "off" : "on",
@@ -49,6 +49,9 @@ static void wr_view(FILE *f, const struct sd_scene *s)
             v->flags & SCN_OPT_UNTINTED_SHADOWS ? "off" : "on",
             v->flags & SCN_OPT_CHECK_LOST ? "on" : "off",
             v->flags & SCN_OPT_WORLD_SPACE ? "on" : "off");
+    if (v->flags & SCN_OPT_ANTIALIAS)
+        fprintf(f, "\n          aa %d  aa_threshold %.9g", v->aa_depth, v->aa_threshold);
+    fprintf(f, " }\n");
     if (v->frames > 1)
         fprintf(f, "animation { frames %d }\n", v->frames);
     if (v->haze) {

@@ -804,6 +804,39 @@ static void test_haze(void)
     free(b);
 }
 
+/* Anti-aliasing: options { aa N  aa_threshold T } reach render_options_t;
+ * a depth over SCN_MAX_AA_DEPTH, a reserved word not 0, a threshold not
+ * within 0..1 or not a number are refused, naming the field. */
+static void test_antialias(void)
+{
+    scene_t s;
+    uint8_t *b = load_text("light point { colour 1 1 1  position 0 5 -5 }\n"
+                           "material m { colour 1 1 1 }\noptions { aa 3  aa_threshold 0.25 }\n"
+                           "sphere { material m  radius 1 }\n", &s);
+    if (!b)
+        return;
+    CHECK_EQ_INT(s.options.antialias, 1);
+    CHECK_EQ_INT(s.options.aa_depth, 3);
+    CHECK_NEAR(num_to_double(s.options.aa_threshold), 0.25, VAL_TOL);
+    uint32_t total = wire_get_u32(b + SCN_HDR_TOTAL);
+    expect_field(b, total, SCN_SEC_VIEW, SCN_VIEW_AA_DEPTH, SCN_MAX_AA_DEPTH + 1, 2,
+                 SCENE_LOAD_ERR_LIMIT, "aa depth 5 not 0..4");
+    expect_field(b, total, SCN_SEC_VIEW, SCN_VIEW_AA_ZERO, 1, 2, SCENE_LOAD_ERR_VALUE,
+                 "reserved word after aa depth");
+    expect_field(b, total, SCN_SEC_VIEW, SCN_VIEW_AA_THRESHOLD, f32_bits(1.5f), 4,
+                 SCENE_LOAD_ERR_VALUE, "aa_threshold not within 0..1");
+    expect_field(b, total, SCN_SEC_VIEW, SCN_VIEW_AA_THRESHOLD, f32_bits(-0.25f), 4,
+                 SCENE_LOAD_ERR_VALUE, "aa_threshold not within 0..1");
+    expect_field(b, total, SCN_SEC_VIEW, SCN_VIEW_AA_THRESHOLD, 0x7fc00000u, 4,
+                 SCENE_LOAD_ERR_VALUE, "aa_threshold not within 0..1");
+    free(b);
+    b = load_text("light point { colour 1 1 1  position 0 5 -5 }\n"
+                  "material m { colour 1 1 1 }\nsphere { material m  radius 1 }\n", &s);
+    if (b)
+        CHECK_EQ_INT(s.options.antialias, 0);
+    free(b);
+}
+
 int main(void)
 {
     RUN(test_round_trip);
@@ -819,5 +852,6 @@ int main(void)
     RUN(test_view_keys);
     RUN(test_cone);
     RUN(test_haze);
+    RUN(test_antialias);
     return check_exit();
 }

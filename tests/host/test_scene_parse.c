@@ -142,6 +142,38 @@ static void test_density_steps_option(void)
     EXPECT_ERROR(HEAD "options { density_steps 2.5 }\n", 3, 25, "density_steps");
 }
 
+/* aa N (0..4) turns anti-aliasing on, aa_threshold T (0..1, default
+ * 0.1) its threshold; aa with paper on is refused. */
+static void test_aa_option(void)
+{
+    struct sd_scene s;
+    char err[SD_ERR_MAX];
+    int rc = sd_parse_text("t.scn", HEAD "options { aa 2  aa_threshold 0.05 }\n"
+                           "sphere { material m radius 1 }\n", &s, err, sizeof err);
+    CHECK_EQ_INT(rc, 0);
+    if (rc)
+        return;
+    CHECK_EQ_INT(s.view.flags & SCN_OPT_ANTIALIAS, SCN_OPT_ANTIALIAS);
+    CHECK_EQ_INT(s.view.aa_depth, 2);
+    CHECK_NEAR(s.view.aa_threshold, 0.05, 1e-12);
+    sd_free(&s);
+    rc = sd_parse_text("t.scn", HEAD "sphere { material m radius 1 }\n", &s, err, sizeof err);
+    CHECK_EQ_INT(rc, 0);
+    if (rc)
+        return;
+    CHECK_EQ_INT(s.view.flags & SCN_OPT_ANTIALIAS, 0);
+    CHECK_NEAR(s.view.aa_threshold, SCN_DEFAULT_AA_THRESHOLD, 1e-12);
+    sd_free(&s);
+    EXPECT_ERROR(HEAD "options { aa 5 }\n", 3, 14, "aa must be 0..4");
+    EXPECT_ERROR(HEAD "options { aa -1 }\n", 3, 14, "aa must be 0..4");
+    EXPECT_ERROR(HEAD "options { aa_threshold 2 }\n", 3, 24, "aa_threshold");
+    EXPECT_ERROR(HEAD "options { aa_threshold x }\n", 3, 24, "aa_threshold");
+    rc = sd_parse_text("t.scn", HEAD "options { paper on  aa 1 }\nsphere { material m radius 1 }\n",
+                       &s, err, sizeof err);
+    CHECK_EQ_INT(rc, -1);
+    CHECK(strstr(err, "paper mode has no anti-aliasing") != NULL);
+}
+
 static void test_transforms_compose_in_order(void)
 {
     struct sd_scene s;
@@ -497,6 +529,7 @@ int main(void)
     RUN(test_refraction_option);
     RUN(test_shading_defaults_and_options);
     RUN(test_density_steps_option);
+    RUN(test_aa_option);
     RUN(test_transforms_compose_in_order);
     RUN(test_keyframe_interpolation);
     RUN(test_errors_name_line_and_column);

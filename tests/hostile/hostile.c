@@ -398,7 +398,7 @@ const struct hostile_class hostile_classes[] = {
     {"outside", "section kind 9: body outside the file", outside},
     {"truncated", "scene truncated: header says", truncated},
     {"crc_mismatch", "checksum mismatch", crc_mismatch},
-    {"wrong_version", "format version 7 (this loader reads version 6)", wrong_version},
+    {"wrong_version", "format version 8 (this loader reads version 7)", wrong_version},
     {"bad_min_weight", "min_weight not within 0..1", bad_min_weight},
     {"bad_density_steps", "density_steps 1 not 2..256", bad_density_steps},
     {"zero_box", "prim 0: a semi-axis or half edge is not > 0", zero_box},
