@@ -32,6 +32,8 @@ BENCHES += tests/bench/bench_pipeline.sh
 BENCHES += tests/bench/bench_farm.sh
 # Escalation: cost and accuracy of float and fixed with --escalate.
 BENCHES += tests/bench/bench_escalate.sh
+# Anti-aliasing: NC instructions a pixel against error to a 16x16 supersampled reference.
+BENCHES += tests/bench/bench_aa.sh
 # The board cost model --arith auto does not use: work counts against NC instructions.
 BENCHES += tests/bench/arith_cost_fit.sh
 BENCHES += tests/bench/bench_link_noise.sh
