@@ -17,7 +17,7 @@ aa_options_block aa_refused aa_paper_off aa_changes_edges aa_escalated_near_doub
 board_ready $CHECKS || exit 0
 T=$RENDER_TMP
 cp -r scenes/maps "$T/" # demo.scn's maps, for its copies in $T
-SIZE=96x72
+SIZE=64x48
 AA=(--aa 2 --aa-threshold 0.05)
 
 # board_vs_host NAME ARITH [links1 render args...]: the board against the host
