@@ -59,7 +59,9 @@ static struct {
     int prepared_wide;    /* the frame prepared holds the wide blob */
     uint32_t body_sum;    /* the scene's word sum after its header, summed
                              while its shared-path upload was checked */
-    int summed;           /* body_sum holds it (else the loader sums) */
+    int summed;           /* body_sum was summed so (the check's time told) */
+    int sum_known;        /* body_sum holds it, summed so or checked by a
+                             load: later loads, narrow or wide, need not sum */
     uint32_t load_ms;     /* the last load into a block took (the index too) */
 } dm_scene;
 
@@ -119,7 +121,8 @@ static void dm_load_wide(uint8_t *block, int held, size_t size)
         fmt_snprintf(dm_scene.wide_why, sizeof dm_scene.wide_why,
                      "no room past the scene's %zu bytes", ((const render_blob_t *)block)->bound);
     else
-        r = RENDER_WIDE(wide_blob_load)(dm_scene.compiled, dm_scene.len, block + at, size - at,
+        r = RENDER_WIDE(wide_blob_load)(dm_scene.compiled, dm_scene.len, &dm_scene.body_sum,
+                                        block + at, size - at,
                                         "the rest of " MACHINE_IMSU_BLOCK_NAME, dm_scene.load_id,
                                         dm_scene.wide_why, sizeof dm_scene.wide_why);
     dm_scene.wide_loaded[held] = r == 0;
@@ -183,8 +186,12 @@ static render_blob_status_t dm_load(uint8_t *block, int held, render_blob_error_
     uint64_t l0 = ktime_now();
     insn_mark_trace_span_begin(); /* the load, the index included (docs/trace.md) */
     render_blob_status_t st = render_blob_load_summed(
-        dm_scene.compiled, dm_scene.len, dm_scene.summed ? &dm_scene.body_sum : NULL, block,
+        dm_scene.compiled, dm_scene.len, dm_scene.sum_known ? &dm_scene.body_sum : NULL, block,
         p->size, dm_blob_limit_name, &blob, err);
+    if (st == RENDER_BLOB_OK && !dm_scene.sum_known) { /* the header's, checked */
+        dm_scene.body_sum = wire_get_u32(dm_scene.compiled + SCN_HDR_SUM);
+        dm_scene.sum_known = 1;
+    }
     if (st == RENDER_BLOB_OK) {
         blob->scene_id = dm_scene.load_id;
         dm_load_wide(block, held, p->size);
@@ -308,7 +315,7 @@ void dm_cmd_scene_load(uint16_t cmd)
         rx = (struct dm_scene_rx){kmem_alloc(len, "compiled scene"), len, ""};
     uint64_t got = 0;
     uint32_t crc = 0;
-    dm_scene.summed = 0;
+    dm_scene.summed = dm_scene.sum_known = 0;
     if (path == LINK_PATH_SHARED) {
         /* The host writes the scene straight into its buffer; refused
          * before the offer when it cannot be taken. */
@@ -320,7 +327,7 @@ void dm_cmd_scene_load(uint16_t cmd)
         if (dm_bulk_receive(cmd, rx.buf, len, SCN_SUM_START, &n, &dm_scene.body_sum) != LINK_OK)
             return; /* the shared path already answered */
         got = n;
-        dm_scene.summed = 1;
+        dm_scene.summed = dm_scene.sum_known = 1;
     } else {
         insn_mark_trace_span_begin(); /* the upload, its frames checked (docs/trace.md) */
         int r = dm_transfer_receive(cmd, dm_scene_chunk, &rx, &got, &crc);

@@ -8,13 +8,13 @@
 #  - render_dm_cost_spans: the line is there, each span is counted and
 #    their sum is within the DM's count;
 #  - render_dm_cost_whole: the spans hold at least 90% of the DM's count
-#    (98.7% measured; 46% when the double copy was loaded and prepared
+#    (98.6% measured; 45% when the double copy was loaded and prepared
 #    outside them, at the render command);
 #  - render_dm_cost_trace: the same run's --trace gives dm_prepare (the
 #    frame's preprocessing, the DM's last span) equal to frame 0's
 #    preparation, narrow and wide blob alike;
 #  - render_dm_cost_limit: at most DM_COST_LIMIT instructions a primitive
-#    (3,211 measured, the double copy's load and preparation included);
+#    (3,124 measured, the double copy's load and preparation included);
 #  - render_dm_cost_narrow: --no-escalate (the firmware without the double
 #    copy), at most DM_NARROW_LIMIT (1,459 measured; 3,535 before the word
 #    sum and the loader's fast paths).
