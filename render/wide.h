@@ -52,10 +52,13 @@ RENDER_WIDE_WEAK extern const char RENDER_WIDE(wide_arith_name)[];
 /* Bytes the wide blob of this compiled scene needs at most (any frame). */
 RENDER_WIDE_WEAK int RENDER_WIDE(wide_blob_bytes)(const uint8_t *compiled, size_t len, size_t *bytes, char *msg,
                                  size_t cap);
-/* render_blob_load in the wide arithmetic into block[0..size) (aligned to
- * RENDER_RELOCATE_ALIGN), numbered scene_id. */
-RENDER_WIDE_WEAK int RENDER_WIDE(wide_blob_load)(const uint8_t *compiled, size_t len, void *block, size_t size,
-                                const char *limit_name, uint32_t scene_id, char *msg, size_t cap);
+/* render_blob_load_summed in the wide arithmetic into block[0..size)
+ * (aligned to RENDER_RELOCATE_ALIGN), numbered scene_id; sum: the body's
+ * word sum, summed already (the DM's narrow load checked it), or NULL. */
+RENDER_WIDE_WEAK int RENDER_WIDE(wide_blob_load)(const uint8_t *compiled, size_t len,
+                                                 const uint32_t *sum, void *block, size_t size,
+                                                 const char *limit_name, uint32_t scene_id,
+                                                 char *msg, size_t cap);
 /* render_blob_prepare of frame_index in the wide blob at block. */
 RENDER_WIDE_WEAK int RENDER_WIDE(wide_blob_prepare)(void *block, uint32_t frame_index, size_t size, char *msg,
                                    size_t cap);

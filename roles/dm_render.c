@@ -55,10 +55,13 @@ static struct {
     int wide_loaded[2];   /* block A / B holds this scene's wide blob too */
     int wide_refused;     /* the wide blob did not fit beside the scene: an
                              escalation asked of this scene is dropped */
+    char wide_why[RENDER_BLOB_MSG_MAX]; /* why, from dm_load_wide */
     int prepared_wide;    /* the frame prepared holds the wide blob */
     uint32_t body_sum;    /* the scene's word sum after its header, summed
                              while its shared-path upload was checked */
-    int summed;           /* body_sum holds it (else the loader sums) */
+    int summed;           /* body_sum was summed so (the check's time told) */
+    int sum_known;        /* body_sum holds it, summed so or checked by a
+                             load: later loads, narrow or wide, need not sum */
     uint32_t load_ms;     /* the last load into a block took (the index too) */
 } dm_scene;
 
@@ -95,34 +98,57 @@ static int dm_scene_chunk(void *ctx, const uint8_t *data, uint32_t n, uint64_t o
     return 0;
 }
 
-/* The wide blob (escalation, render/wide.h) of frame in the block past
- * the narrow blob's bound; 0, or -1 with err filled.  Only after
- * dm_escalation_fits, which refuses a firmware without the wide copy. */
+/* Where the wide blob starts in block: past the narrow blob's bound. */
+static size_t dm_wide_at(const uint8_t *block)
+{
+    const render_blob_t *blob = (const render_blob_t *)block;
+    return (blob->bound + RENDER_RELOCATE_ALIGN - 1) & ~(size_t)(RENDER_RELOCATE_ALIGN - 1);
+}
+
+/* The wide blob (escalation, render/wide.h) loaded past the narrow one in
+ * block, held, when the firmware carries the wide arithmetic: part of the
+ * scene's load, done with the narrow load in its span.  Refused (no room,
+ * or the wide loader's checks): wide_refused and wide_why say so, and an
+ * escalation asked of this scene is dropped (or fails, checking lost
+ * pixels). */
+static void dm_load_wide(uint8_t *block, int held, size_t size)
+{
+    if (!render_wide_linked())
+        return;
+    size_t at = dm_wide_at(block);
+    int r = at < size ? 0 : -1;
+    if (r != 0)
+        fmt_snprintf(dm_scene.wide_why, sizeof dm_scene.wide_why,
+                     "no room past the scene's %zu bytes", ((const render_blob_t *)block)->bound);
+    else
+        r = RENDER_WIDE(wide_blob_load)(dm_scene.compiled, dm_scene.len, &dm_scene.body_sum,
+                                        block + at, size - at,
+                                        "the rest of " MACHINE_IMSU_BLOCK_NAME, dm_scene.load_id,
+                                        dm_scene.wide_why, sizeof dm_scene.wide_why);
+    dm_scene.wide_loaded[held] = r == 0;
+    if (r != 0)
+        dm_scene.wide_refused = 1;
+}
+
+/* The wide blob of frame prepared in the block, loaded there already
+ * (dm_load_wide); 0, or -1 with err filled. */
 static int dm_prepare_wide(uint8_t *block, int held, uint32_t frame, size_t size,
                            render_blob_error_t *err)
 {
-    render_blob_t *blob = (render_blob_t *)block;
     err->status = RENDER_BLOB_ERR_PREPARE;
-    size_t at = (blob->bound + RENDER_RELOCATE_ALIGN - 1) & ~(size_t)(RENDER_RELOCATE_ALIGN - 1);
+    size_t at = dm_wide_at(block);
     char why[RENDER_BLOB_MSG_MAX];
-    int r = at < size ? 0 : -1;
-    if (r != 0)
-        fmt_snprintf(why, sizeof why, "no room past the scene's %zu bytes", blob->bound);
-    if (r == 0 && !dm_scene.wide_loaded[held]) {
-        r = RENDER_WIDE(wide_blob_load)(dm_scene.compiled, dm_scene.len, block + at, size - at,
-                                        "the rest of " MACHINE_IMSU_BLOCK_NAME, dm_scene.load_id,
-                                        why, sizeof why);
-        dm_scene.wide_loaded[held] = r == 0;
-    }
-    if (r != 0) /* no room, or the wide load refused the rest of the block */
-        dm_scene.wide_refused = 1;
-    if (r == 0)
+    int r = -1;
+    if (!dm_scene.wide_loaded[held])
+        fmt_snprintf(why, sizeof why, "%s",
+                     dm_scene.wide_why[0] ? dm_scene.wide_why : "the wide blob is not loaded");
+    else
         r = RENDER_WIDE(wide_blob_prepare)(block + at, frame, size - at, why, sizeof why);
     if (r != 0) {
         fmt_snprintf(err->message, sizeof err->message, "escalation: %s", why);
         return -1;
     }
-    blob->wide_offset = (uint32_t)at;
+    ((render_blob_t *)block)->wide_offset = (uint32_t)at;
     return 0;
 }
 
@@ -142,11 +168,46 @@ static int dm_block_begin(int *held, uint8_t **block, render_blob_error_t *err)
     return 0;
 }
 
-/* Builds frame into the block the DM holds, with its wide blob when
- * escalating; 0, or -1 with err filled.  The scene is loaded into a block
- * once (its checks, its arrays); each frame after that is only the paper's
- * preprocessing: eye coordinates, boxes, screen rectangles. */
-static int dm_prepare(uint32_t frame, int escalate, render_blob_error_t *err)
+/* What a frame's preparation holds besides the narrow blob. */
+enum dm_wide {
+    DM_WIDE_NONE,  /* nothing */
+    DM_WIDE_ASKED, /* the wide blob (escalating): its failure fails the frame */
+    DM_WIDE_READY  /* the wide blob when it loaded (the upload's frame 0, whole
+                      for an escalating render): its failure leaves it out */
+};
+
+/* The block the DM holds loaded with the scene: the narrow blob and, when
+ * the firmware carries it, the wide one (dm_load_wide).  One span, the
+ * load's time in load_ms. */
+static render_blob_status_t dm_load(uint8_t *block, int held, render_blob_error_t *err)
+{
+    struct imsu_pair *p = &imsu_dm_rc;
+    render_blob_t *blob = (render_blob_t *)block;
+    uint64_t l0 = ktime_now();
+    insn_mark_trace_span_begin(); /* the load, the index included (docs/trace.md) */
+    render_blob_status_t st = render_blob_load_summed(
+        dm_scene.compiled, dm_scene.len, dm_scene.sum_known ? &dm_scene.body_sum : NULL, block,
+        p->size, dm_blob_limit_name, &blob, err);
+    if (st == RENDER_BLOB_OK && !dm_scene.sum_known) { /* the header's, checked */
+        dm_scene.body_sum = wire_get_u32(dm_scene.compiled + SCN_HDR_SUM);
+        dm_scene.sum_known = 1;
+    }
+    if (st == RENDER_BLOB_OK) {
+        blob->scene_id = dm_scene.load_id;
+        dm_load_wide(block, held, p->size);
+    }
+    insn_mark_trace_span_end();
+    dm_scene.load_ms = ktime_ticks_to_ms(ktime_now() - l0);
+    dm_scene.loaded[held] = st == RENDER_BLOB_OK;
+    return st;
+}
+
+/* Builds frame into the block the DM holds, with its wide blob as wide
+ * says; 0, or -1 with err filled.  The scene is loaded into a block once
+ * (its checks, its arrays); each frame after that is only the paper's
+ * preprocessing: eye coordinates, boxes, screen rectangles, in one span
+ * for the narrow and the wide blob alike. */
+static int dm_prepare(uint32_t frame, enum dm_wide wide, render_blob_error_t *err)
 {
     struct imsu_pair *p = &imsu_dm_rc;
     int held;
@@ -154,31 +215,23 @@ static int dm_prepare(uint32_t frame, int escalate, render_blob_error_t *err)
     if (dm_block_begin(&held, &block, err) != 0)
         return -1;
     render_blob_t *blob = (render_blob_t *)block;
-    render_blob_status_t st = RENDER_BLOB_OK;
-    if (!dm_scene.loaded[held]) {
-        uint64_t l0 = ktime_now();
-        insn_mark_trace_span_begin(); /* the load, the index included (docs/trace.md) */
-        st = render_blob_load_summed(dm_scene.compiled, dm_scene.len,
-                                     dm_scene.summed ? &dm_scene.body_sum : NULL, block,
-                                     p->size, dm_blob_limit_name, &blob, err);
-        insn_mark_trace_span_end();
-        dm_scene.load_ms = ktime_ticks_to_ms(ktime_now() - l0);
-        dm_scene.loaded[held] = st == RENDER_BLOB_OK;
-        if (st == RENDER_BLOB_OK)
-            blob->scene_id = dm_scene.load_id;
-    }
+    render_blob_status_t st = dm_scene.loaded[held] ? RENDER_BLOB_OK : dm_load(block, held, err);
+    int with_wide = wide == DM_WIDE_ASKED || (wide == DM_WIDE_READY && dm_scene.wide_loaded[held]);
     uint64_t t0 = ktime_now();
     insn_mark_trace_span_begin(); /* the preprocessing of one frame (docs/trace.md) */
     if (st == RENDER_BLOB_OK) {
         blob->wide_offset = 0;
         st = render_blob_prepare(blob, frame, p->size, err);
     }
-    if (st == RENDER_BLOB_OK && escalate && dm_prepare_wide(block, held, frame, p->size, err) != 0)
-        st = err->status;
+    if (st == RENDER_BLOB_OK && with_wide && dm_prepare_wide(block, held, frame, p->size, err) != 0) {
+        with_wide = 0;
+        if (wide == DM_WIDE_ASKED)
+            st = err->status;
+    }
     insn_mark_trace_span_end();
     imsu_write_end(p, UNITS_DM_CORE);
     dm_scene.prepared = st == RENDER_BLOB_OK ? (int32_t)frame : -1;
-    dm_scene.prepared_wide = escalate;
+    dm_scene.prepared_wide = with_wide;
     dm_scene.prepare_ms = ktime_ticks_to_ms(ktime_now() - t0);
     return st == RENDER_BLOB_OK ? 0 : -1;
 }
@@ -248,6 +301,7 @@ void dm_cmd_scene_load(uint16_t cmd)
     dm_scene.loaded[0] = dm_scene.loaded[1] = 0;
     dm_scene.wide_loaded[0] = dm_scene.wide_loaded[1] = 0;
     dm_scene.wide_refused = 0;
+    dm_scene.wide_why[0] = 0;
     if (++dm_scene.load_id == 0) /* 0 is "unnumbered" */
         dm_scene.load_id = 1;
     struct dm_scene_rx rx = {NULL, 0, ""};
@@ -261,7 +315,7 @@ void dm_cmd_scene_load(uint16_t cmd)
         rx = (struct dm_scene_rx){kmem_alloc(len, "compiled scene"), len, ""};
     uint64_t got = 0;
     uint32_t crc = 0;
-    dm_scene.summed = 0;
+    dm_scene.summed = dm_scene.sum_known = 0;
     if (path == LINK_PATH_SHARED) {
         /* The host writes the scene straight into its buffer; refused
          * before the offer when it cannot be taken. */
@@ -273,7 +327,7 @@ void dm_cmd_scene_load(uint16_t cmd)
         if (dm_bulk_receive(cmd, rx.buf, len, SCN_SUM_START, &n, &dm_scene.body_sum) != LINK_OK)
             return; /* the shared path already answered */
         got = n;
-        dm_scene.summed = 1;
+        dm_scene.summed = dm_scene.sum_known = 1;
     } else {
         insn_mark_trace_span_begin(); /* the upload, its frames checked (docs/trace.md) */
         int r = dm_transfer_receive(cmd, dm_scene_chunk, &rx, &got, &crc);
@@ -289,11 +343,13 @@ void dm_cmd_scene_load(uint16_t cmd)
         return;
     }
     /* The size bound from the header, then a full build of frame 0: the
-     * loader's checks (the CRC once) and render_prepare's. */
+     * loader's checks (the CRC once) and render_prepare's; with the wide
+     * blob when it loaded, so that an escalating render finds frame 0
+     * prepared whole. */
     render_blob_error_t err;
     dm_scene.compiled = rx.buf;
     dm_scene.len = len;
-    if (dm_prepare(0, 0, &err) != 0) {
+    if (dm_prepare(0, DM_WIDE_READY, &err) != 0) {
         dm_scene.len = 0;
         hostlink_error(cmd, LINK_ERR_BAD_ARGS, "scene refused: %s", dm_refusal(err.message));
         return;
@@ -395,30 +451,28 @@ _Static_assert(LINK_RESULT_FIXED_SIZE + LINK_RENDER_STATS_SIZE +
                    LINK_RENDER_FAILS_SIZE(LINK_REISSUE_LIST_MAX) <= LINK_MAX_PAYLOAD,
                "the failures must fit the CMD_RENDER result");
 
-/* The wide blob added to frame, prepared already without it in the block
- * the DM holds; 0, or -1 with err filled (the narrow frame stands). */
-static int dm_add_wide(uint32_t frame, render_blob_error_t *err)
+/* The wide blob left out of the frame prepared whole in the block the DM
+ * holds (the upload's frame 0) for a render that does not escalate: the
+ * RC then broadcasts the narrow blob alone.  0, or -1 with err filled. */
+static int dm_drop_wide(render_blob_error_t *err)
 {
-    struct imsu_pair *p = &imsu_dm_rc;
     int held;
     uint8_t *block;
     if (dm_block_begin(&held, &block, err) != 0)
         return -1;
-    uint64_t t0 = ktime_now();
-    insn_mark_trace_span_begin(); /* part of the frame's preprocessing (docs/trace.md) */
-    int r = dm_prepare_wide(block, held, frame, p->size, err);
-    insn_mark_trace_span_end();
-    imsu_write_end(p, UNITS_DM_CORE);
-    dm_scene.prepared_wide = r == 0;
-    dm_scene.prepare_ms += ktime_ticks_to_ms(ktime_now() - t0);
-    return r;
+    ((render_blob_t *)block)->wide_offset = 0;
+    imsu_write_end(&imsu_dm_rc, UNITS_DM_CORE);
+    dm_scene.prepared_wide = 0;
+    return 0;
 }
 
-/* Frame a->frame prepared as asked, unless prepared already.  An
- * escalation (LINK_RENDER_ESCALATE, not the scene's check_lost) whose wide
- * blob does not fit the IMSU block beside the scene is dropped: the flag
- * cleared in *a, the frame prepared without it, and the result's flags say
- * so.  0, or -1 with err filled. */
+/* Frame a->frame prepared as asked, unless prepared already (a frame
+ * prepared without the wide blob and asked with it is prepared again,
+ * whole, so that its preparation is one span).  An escalation
+ * (LINK_RENDER_ESCALATE, not the scene's check_lost) whose wide blob does
+ * not fit the IMSU block beside the scene is dropped: the flag cleared in
+ * *a, the frame prepared without it, and the result's flags say so.  0,
+ * or -1 with err filled. */
 static int dm_prepare_asked(struct link_render_args *a, int *escalate, render_blob_error_t *err)
 {
     int droppable = (a->flags & LINK_RENDER_ESCALATE) && !dm_scene.check_lost;
@@ -429,17 +483,15 @@ static int dm_prepare_asked(struct link_render_args *a, int *escalate, render_bl
     int here = dm_scene.prepared == (int32_t)a->frame;
     if (here && dm_scene.prepared_wide == *escalate)
         return 0;
-    /* prepared at the upload without the wide blob: only that is added */
-    int r = here && *escalate ? dm_add_wide(a->frame, err) : dm_prepare(a->frame, *escalate, err);
-    if (r == 0)
+    if (here && !*escalate)
+        return dm_drop_wide(err);
+    if (dm_prepare(a->frame, *escalate ? DM_WIDE_ASKED : DM_WIDE_NONE, err) == 0)
         return 0;
     if (!droppable || !dm_scene.wide_refused || !*escalate)
         return -1;
-    a->flags &= (uint8_t)~LINK_RENDER_ESCALATE;
+    a->flags &= (uint8_t)~LINK_RENDER_ESCALATE; /* refused loading this block */
     *escalate = 0;
-    if (dm_scene.prepared == (int32_t)a->frame && !dm_scene.prepared_wide)
-        return 0; /* the narrow frame stands */
-    return dm_prepare(a->frame, 0, err);
+    return dm_prepare(a->frame, DM_WIDE_NONE, err);
 }
 
 void dm_cmd_render(uint16_t cmd)
@@ -507,7 +559,7 @@ void dm_cmd_render(uint16_t cmd)
     /* Pipelining: the next frame is prepared while this one renders.  An
      * error here is reported when that frame is asked for. */
     if ((a.flags & LINK_RENDER_PREPARE_NEXT) && a.frame + 1 < dm_scene.frames)
-        (void)dm_prepare(a.frame + 1, escalate, &err);
+        (void)dm_prepare(a.frame + 1, escalate ? DM_WIDE_ASKED : DM_WIDE_NONE, &err);
     /* The test hook: the DM's own planned failure, while the RC renders. */
     for (uint32_t i = 0; i < (plan_bytes ? plan[0] : 0u); i++) {
         struct link_inject e;

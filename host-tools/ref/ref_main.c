@@ -146,7 +146,7 @@ static int ref_wide_load(const char *in, const uint8_t *bytes, size_t len, struc
         ref_wide_free(w);
         return -1;
     }
-    if (RENDER_WIDE(wide_blob_load)(bytes, len, w->block, w->size, "the wide blob", 0, why,
+    if (RENDER_WIDE(wide_blob_load)(bytes, len, NULL, w->block, w->size, "the wide blob", 0, why,
                                     sizeof why) != 0) {
         fprintf(stderr, "links1 ref: %s: --escalate: %s\n", in, why);
         ref_wide_free(w);

@@ -20,7 +20,7 @@ static void *tw_wide_blob(const char *name, uint32_t frame_index, size_t *size)
     void *block = NULL;
     if (buf && RENDER_WIDE(wide_blob_bytes)(buf, len, size, why, sizeof why) == 0) {
         block = tb_block(*size);
-        if (RENDER_WIDE(wide_blob_load)(buf, len, block, *size, "the test block", 7, why,
+        if (RENDER_WIDE(wide_blob_load)(buf, len, NULL, block, *size, "the test block", 7, why,
                                         sizeof why) != 0 ||
             RENDER_WIDE(wide_blob_prepare)(block, frame_index, *size, why, sizeof why) != 0) {
             printf("%s: %s\n", name, why);
@@ -335,7 +335,7 @@ static void test_wide_errors(void)
     CHECK(strstr(why, "aligned") != NULL);
     size_t len;
     uint8_t *buf = tb_compile_div("demo", TW_DIV, &len);
-    CHECK_EQ_INT(RENDER_WIDE(wide_blob_load)(buf, len, empty, 4096, "the small block", 1, why,
+    CHECK_EQ_INT(RENDER_WIDE(wide_blob_load)(buf, len, NULL, empty, 4096, "the small block", 1, why,
                                              sizeof why),
                  -1);
     CHECK(strstr(why, "the small block") != NULL && strstr(why, "double") != NULL);
