@@ -11,13 +11,16 @@
 # Each board image is checked to be the host's (links1 ref --arith float)
 # byte for byte.  Writes DIR/aa.tsv and DIR/aa.png.
 #   bash tests/bench/bench_aa.sh [--out DIR]   # also in make bench
+#     (--charts-only: the chart again from DIR/aa.tsv, nothing run)
 set -eu
 cd "$(dirname "$0")/../.."
 out=build/bench-aa
+CHARTS_ONLY=0
 while [ $# -gt 0 ]; do
     case $1 in
     --out) out=$2; shift 2 ;;
-    *) echo "usage: bench_aa.sh [--out DIR]" >&2; exit 2 ;;
+    --charts-only) CHARTS_ONLY=1; shift ;;
+    *) echo "usage: bench_aa.sh [--out DIR] [--charts-only]" >&2; exit 2 ;;
     esac
 done
 SIZE=${SIZE:-96x72}
@@ -25,10 +28,11 @@ NCS=${AA_NCS:-4}
 SUPER=${AA_SUPER:-16}
 export FW_DIR=${FW_DIR:-build}
 mkdir -p "$out"
+scenes="scenes/demo.scn scenes/glass.scn $out/balls1.scn"
+if [ "$CHARTS_ONLY" = 0 ]; then # measure; --charts-only redraws from DIR/aa.tsv
 make -s --no-print-directory build/links1 build/links1-spd build/links1-ref-double \
     build/links1-ref-float
 build/links1-spd balls 1 -o "$out/balls1.scn" --size "$SIZE" >/dev/null
-scenes="scenes/demo.scn scenes/glass.scn $out/balls1.scn"
 pixels=$(( ${SIZE%x*} * ${SIZE#*x} ))
 
 # configurations: name|arguments
@@ -62,6 +66,7 @@ for scn in $scenes; do
             >>"$out/aa.tsv"
     done
 done
+fi
 
 for scn in $scenes; do
     base=$(basename "$scn" .scn)
@@ -69,6 +74,10 @@ for scn in $scenes; do
     awk -F'\t' -v s="$base" 'NR > 1 && $1 == s && $2 ~ /^no / { print $3, $4 }' "$out/aa.tsv" \
         >"$out/$base-off.dat"
 done
+# each point's label: its depth, "T0" at threshold 0
+awk -F'\t' 'NR > 1 && $2 ~ /^aa / { l = $2; sub(/^aa /, "", l); sub(/ \(corner rays\)/, "", l);
+    sub(/, threshold 0\.1/, "", l); sub(/, threshold 0$/, " T0", l); printf "%s %s \"%s\"\n", $3, $4, l }' \
+    "$out/aa.tsv" >"$out/labels.dat"
 gnuplot <<GP
 set terminal pngcairo size 900,560 font ",9" noenhanced
 set output "$out/aa.png"
@@ -78,11 +87,13 @@ set ylabel "PSNR against the ${SUPER}x${SUPER} reference, dB"
 set logscale x
 set grid
 set key bottom right
+set label 1 "labels: --aa depth at threshold 0.1; T0: threshold 0" at graph 0.02, graph 0.95 font ",8"
 plot "$out/demo.dat" using 1:2 with points pt 7 ps 1 title "demo.scn: none, --aa 0, --aa 1..3 at thresholds 0.1 and 0", \
      "$out/glass.dat" using 1:2 with points pt 5 ps 1 title "glass.scn", \
      "$out/balls1.dat" using 1:2 with points pt 9 ps 1.2 title "SPD balls 1", \
      "$out/demo-off.dat" using 1:2 with points pt 4 ps 2.4 lw 2 title "the default (no anti-aliasing), each scene", \
      "$out/glass-off.dat" using 1:2 with points pt 4 ps 2.4 lw 2 notitle, \
-     "$out/balls1-off.dat" using 1:2 with points pt 4 ps 2.4 lw 2 notitle
+     "$out/balls1-off.dat" using 1:2 with points pt 4 ps 2.4 lw 2 notitle, \
+     "$out/labels.dat" using 1:2:3 with labels left font ",7" offset 0.8,0 notitle
 GP
 column -t -s$'\t' "$out/aa.tsv"
