@@ -11,7 +11,7 @@
 #include "tests/host/test_blob_util.h"
 #include "render/vec3.h"
 
-#define TA_DIV 4 /* demo and glass at 80x60 */
+#define TA_DIV 8 /* demo and glass at 40x30 */
 
 typedef struct {
     render_blob_t *blob;
