@@ -12,7 +12,7 @@ board_ready render_view || exit 0
 dumps="$RENDER_TMP/dumps"
 mkdir -p "$dumps"
 out="$RENDER_TMP/view.ppm"
-size=480x360
+size=320x240
 ref=$(render_ref scenes/demo.scn float "$size")
 python3 "$(dirname "$0")/view_dumps.py" "$RENDER_TMP/monitor.sock" "$dumps" "$ref" &
 grabber=$!
