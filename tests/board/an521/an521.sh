@@ -20,39 +20,36 @@ an_ready() { # $@ = check names
     board_ready "$@"
 }
 
-# The processes below PID, children first (by ps's parent links).
-an_descendants() {
-    local kid
-    for kid in $(ps -o pid= --ppid "$1" 2>/dev/null); do
-        echo "$kid"
-        an_descendants "$kid"
-    done
-}
-
-# The QEMU process of board B among the processes below PID (its loader
-# word): this test's own boards, whatever else runs beside it.
-an_board_pid() {
-    local pid
-    for pid in $(an_descendants "$2"); do
-        if tr '\0' ' ' <"/proc/$pid/cmdline" 2>/dev/null |
-            grep -q "loader,addr=0x103ffff0,data=$1,data-len=4"; then
-            echo "$pid"
-            return
-        fi
-    done
+# an_boards PID: "BOARD QEMU-PID" for each an521 board's QEMU below PID (by
+# its loader word), from one snapshot of the process table: this test's
+# own boards, whatever else runs beside it.
+an_boards() {
+    ps -eo pid=,ppid=,args= | awk -v top="$1" '
+        { pid[NR] = $1; parent[$1] = $2; line[$1] = $0 }
+        END {
+            for (i = 1; i <= NR; i++) {
+                p = pid[i]
+                if (!match(line[p], /loader,addr=0x103ffff0,data=[0-9]+,data-len=4/)) continue
+                for (q = parent[p]; q != "" && q != top && q > 1; q = parent[q]) ;
+                if (q != top) continue
+                w = substr(line[p], RSTART, RLENGTH)
+                sub(/.*data=/, "", w); sub(/,.*/, "", w)
+                print w, p
+            }
+        }'
 }
 
 # How many of the pids given are still an an521 board's QEMU.
 an_alive() {
     local pid n=0
     for pid in "$@"; do
-        tr '\0' ' ' <"/proc/$pid/cmdline" 2>/dev/null | grep -q "loader,addr=0x103ffff0" &&
+        tr '\0' ' ' 2>/dev/null <"/proc/$pid/cmdline" | grep -q "loader,addr=0x103ffff0" &&
             n=$((n + 1))
     done
     echo "$n"
 }
 
-# an_render_kill B LOG OUT: renders demo.scn 240x180 on 4 NCs into OUT,
+# an_render_kill B LOG OUT: renders demo.scn 320x240 on 4 NCs into OUT,
 # its output into LOG, and kills board B's QEMU (SIGKILL) 0.3 s after the
 # scene is loaded.  The tool's lines are read as they come (stdbuf: a line
 # at a time), so the kill follows the load, not the tool's exit.  Sets
@@ -61,20 +58,18 @@ an_alive() {
 an_render_kill() {
     local board=$1 log=$2 out=$3 tool
     timeout "$BOARD_RUN_LIMIT_S" stdbuf -oL "$LINKS1" render scenes/demo.scn -o "$out" \
-        --machine an521 --ncs 4 --size 240x180 >"$log" 2>&1 &
+        --machine an521 --ncs 4 --size 320x240 >"$log" 2>&1 &
     tool=$!
     for _ in $(seq 1 300); do
         grep -q ' loaded: ' "$log" 2>/dev/null && break
         sleep 0.1
     done
     sleep 0.3
-    boards=()
-    for b in 0 1 2; do
-        pid=$(an_board_pid "$b" "$tool")
-        [ -n "$pid" ] && boards+=("$pid")
-    done
-    victim=$(an_board_pid "$board" "$tool")
+    local table
+    table=$(an_boards "$tool")
+    victim=$(awk -v b="$board" '$1 == b { print $2; exit }' <<<"$table")
     [ -n "$victim" ] && kill -KILL "$victim"
+    mapfile -t boards < <(awk '{ print $2 }' <<<"$table")
     wait "$tool"
     rc=$?
     sed 's/^/    /' "$log"
@@ -131,7 +126,7 @@ done
 name=an521_nc_board_killed
 if an_ready "$name"; then
     out=$RENDER_TMP/$name.ppm log=$RENDER_TMP/$name.log
-    ref=$(render_ref scenes/demo.scn float 240x180)
+    ref=$(render_ref scenes/demo.scn float 320x240)
     an_render_kill 1 "$log" "$out"
     if [ -z "$victim" ]; then
         echo "FAIL $name: no QEMU of board 1 to kill"
