@@ -35,6 +35,11 @@ struct ec_path {
 
 static struct ec_path ec_paths[EXIT_CLEAN_MAX_PATHS];
 static pid_t ec_children[EXIT_CLEAN_MAX_CHILDREN]; /* 0: free; atomically */
+static pid_t ec_owner;                             /* the process that installed */
+static int ec_busy;                                /* a handler is cleaning */
+static const int ec_signals[] = {SIGINT, SIGTERM, SIGHUP};
+#define EC_NSIGNALS (int)(sizeof ec_signals / sizeof ec_signals[0])
+static int ec_ignored[EC_NSIGNALS]; /* ignored when the program started */
 
 /* A command's words and notes packed into buf (each ended by a 0): argv
  * points into it, done and failed are the notes' offsets. */
@@ -45,11 +50,6 @@ struct ec_command {
     size_t done, failed;
 };
 static struct ec_command ec_commands[EXIT_CLEAN_MAX_COMMANDS];
-static pid_t ec_owner;                             /* the process that installed */
-static int ec_busy;                                /* a handler is cleaning */
-static const int ec_signals[] = {SIGINT, SIGTERM, SIGHUP};
-#define EC_NSIGNALS (int)(sizeof ec_signals / sizeof ec_signals[0])
-static int ec_ignored[EC_NSIGNALS]; /* ignored when the program started */
 
 /* The entries of a directory found in a getdents64 buffer. */
 struct ec_dirent64 {
