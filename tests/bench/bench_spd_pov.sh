@@ -7,7 +7,9 @@
 #   Both: 512x512 (the NFF's resolution), one ray through each pixel's
 #   centre (POV-Ray -A, no anti-aliasing), one thread (+WT1), depth 5
 #   counting the camera ray (links1 --max-depth 4, POV-Ray
-#   max_trace_level 5), no adaptive depth (--min-weight 0, adc_bailout 0).
+#   max_trace_level 5), no adaptive depth (--min-weight 0, adc_bailout 0),
+#   nothing past the depth limit (--refractionless off: POV-Ray has no
+#   straight continuation of a transmitted ray there).
 #   Times: the trace's CPU seconds (links1 ref's "traced in (S CPU)",
 #   POV-Ray's "Trace Time ... CPU-seconds"), BENCH_RUNS rounds (default
 #   3), each running POV-Ray, float and double in turn on one database
@@ -38,8 +40,8 @@ median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] 
 # ref NFF ARITH: the trace's CPU seconds of one links1 ref run
 ref() {
     local log="$TMP/ref.log"
-    if ! "$LINKS1" ref "$1" --arith "$2" --max-depth 4 --min-weight 0 -o "$TMP/ref.ppm" \
-        >"$log" 2>&1; then
+    if ! "$LINKS1" ref "$1" --arith "$2" --max-depth 4 --min-weight 0 --refractionless off \
+        -o "$TMP/ref.ppm" >"$log" 2>&1; then
         echo "bench_spd_pov: links1 ref $1 --arith $2 failed: $(tail -n 1 "$log")" >&2
         exit 1
     fi
