@@ -91,6 +91,7 @@ typedef struct {
     num_t inv[3];
     uint8_t use_div[3]; /* 1: divide on this axis (fixed, or d = 0 or tiny) */
     uint8_t all_inv;    /* no axis divides */
+    uint8_t neg[3];     /* inv < 0: the ray enters a slab by its high face */
 } aabb_ray_t;
 void prim_aabb_ray(const ray_t *ray, aabb_ray_t *r);
 /* prim_aabb_entry with r from prim_aabb_ray(ray): inline where no axis
@@ -130,24 +131,33 @@ static inline int prim_slab_narrow(num_t t1, num_t t2, num_t *tnear, num_t *tfar
     return !num_gt(*tnear, *tfar);
 }
 
-/* One slab by the reciprocal: prim.c's prim_slab with a product for the
- * division. */
-static inline int prim_slab_inv(num_t o, num_t inv, num_t lo, num_t hi, num_t *tnear,
-                                num_t *tfar)
+/* One slab by the reciprocal (prim.c's prim_slab with a product for the
+ * division), which the ray enters by face near_face and leaves by far_face:
+ * lo and hi, swapped where the reciprocal is negative.  Rounding is
+ * monotonic, so of a box that is not empty the first product is never the
+ * larger: the t of both faces, in prim_slab_narrow's order without its
+ * comparison. */
+static inline int prim_slab_inv_faces(num_t o, num_t inv, num_t near_face, num_t far_face,
+                                      num_t *tnear, num_t *tfar)
 {
-    return prim_slab_narrow(num_mul(num_sub(lo, o), inv), num_mul(num_sub(hi, o), inv), tnear,
-                            tfar);
+    *tnear = num_max(*tnear, num_mul(num_sub(near_face, o), inv));
+    *tfar = num_min(*tfar, num_mul(num_sub(far_face, o), inv));
+    return !num_gt(*tnear, *tfar);
 }
 
+/* An empty box (lo > hi: render/prepare.c's) is missed. */
 static inline int prim_aabb_entry_ray(const aabb_t *b, const ray_t *ray, const aabb_ray_t *r,
                                       num_t tmin, num_t tmax, num_t *entry)
 {
     if (!r->all_inv)
         return prim_aabb_entry_ray_axes(b, ray, r, tmin, tmax, entry);
     num_t tnear = tmin, tfar = tmax;
-    if (!prim_slab_inv(ray->origin.x, r->inv[0], b->lo.x, b->hi.x, &tnear, &tfar) ||
-        !prim_slab_inv(ray->origin.y, r->inv[1], b->lo.y, b->hi.y, &tnear, &tfar) ||
-        !prim_slab_inv(ray->origin.z, r->inv[2], b->lo.z, b->hi.z, &tnear, &tfar))
+    if (!prim_slab_inv_faces(ray->origin.x, r->inv[0], r->neg[0] ? b->hi.x : b->lo.x,
+                             r->neg[0] ? b->lo.x : b->hi.x, &tnear, &tfar) ||
+        !prim_slab_inv_faces(ray->origin.y, r->inv[1], r->neg[1] ? b->hi.y : b->lo.y,
+                             r->neg[1] ? b->lo.y : b->hi.y, &tnear, &tfar) ||
+        !prim_slab_inv_faces(ray->origin.z, r->inv[2], r->neg[2] ? b->hi.z : b->lo.z,
+                             r->neg[2] ? b->lo.z : b->hi.z, &tnear, &tfar))
         return 0;
     *entry = tnear;
     return 1;
