@@ -145,22 +145,32 @@ static inline int prim_slab_inv_faces(num_t o, num_t inv, num_t near_face, num_t
     return !num_gt(*tnear, *tfar);
 }
 
-/* An empty box (lo > hi: render/prepare.c's) is missed. */
+/* prim_aabb_entry_ray where r->all_inv, the ray's origin o passed by
+ * value (a walk keeps it and r in registers).  An empty box (lo > hi:
+ * render/prepare.c's) is missed. */
+static inline __attribute__((always_inline)) int prim_aabb_entry_inv(const aabb_t *b, vec3_t o,
+                                                                      const aabb_ray_t *r,
+                                                                      num_t tmin, num_t tmax,
+                                                                      num_t *entry)
+{
+    num_t tnear = tmin, tfar = tmax;
+    if (!prim_slab_inv_faces(o.x, r->inv[0], r->neg[0] ? b->hi.x : b->lo.x,
+                             r->neg[0] ? b->lo.x : b->hi.x, &tnear, &tfar) ||
+        !prim_slab_inv_faces(o.y, r->inv[1], r->neg[1] ? b->hi.y : b->lo.y,
+                             r->neg[1] ? b->lo.y : b->hi.y, &tnear, &tfar) ||
+        !prim_slab_inv_faces(o.z, r->inv[2], r->neg[2] ? b->hi.z : b->lo.z,
+                             r->neg[2] ? b->lo.z : b->hi.z, &tnear, &tfar))
+        return 0;
+    *entry = tnear;
+    return 1;
+}
+
 static inline int prim_aabb_entry_ray(const aabb_t *b, const ray_t *ray, const aabb_ray_t *r,
                                       num_t tmin, num_t tmax, num_t *entry)
 {
     if (!r->all_inv)
         return prim_aabb_entry_ray_axes(b, ray, r, tmin, tmax, entry);
-    num_t tnear = tmin, tfar = tmax;
-    if (!prim_slab_inv_faces(ray->origin.x, r->inv[0], r->neg[0] ? b->hi.x : b->lo.x,
-                             r->neg[0] ? b->lo.x : b->hi.x, &tnear, &tfar) ||
-        !prim_slab_inv_faces(ray->origin.y, r->inv[1], r->neg[1] ? b->hi.y : b->lo.y,
-                             r->neg[1] ? b->lo.y : b->hi.y, &tnear, &tfar) ||
-        !prim_slab_inv_faces(ray->origin.z, r->inv[2], r->neg[2] ? b->hi.z : b->lo.z,
-                             r->neg[2] ? b->lo.z : b->hi.z, &tnear, &tfar))
-        return 0;
-    *entry = tnear;
-    return 1;
+    return prim_aabb_entry_inv(b, ray->origin, r, tmin, tmax, entry);
 }
 
 /* Pseudo-angle of (x, z) in [0, 4): monotonic in the true angle, exact at

@@ -282,28 +282,49 @@ typedef struct {
 
 /* A child of the tree walk (mode, screen: as trace_walk_done_as) whose
  * box the ray meets, *entry where it enters. */
+/* The tree walk's copy of the ray for its box tests: in locals, which
+ * no store through a pointer can change, the compiler keeps it in
+ * registers. */
+typedef struct {
+    vec3_t origin;
+    aabb_ray_t r;
+} trace_box_ray_t;
+
+/* trace_box_entry by the walk's copy br of the ray. */
+static inline __attribute__((always_inline)) int trace_box_entry_by(trace_walk_t *w,
+                                                                     const trace_box_ray_t *br,
+                                                                     const aabb_t *b, num_t *entry)
+{
+    if (!br->r.all_inv || !w->use_bounds)
+        return trace_box_entry(w, b, entry);
+    w->box_tests++;
+    return prim_aabb_entry_inv(b, br->origin, &br->r, w->tmin, w->cut, entry);
+}
+
 static inline __attribute__((always_inline)) int trace_kid_met(trace_walk_t *w,
                                                                 enum trace_mode mode, int screen,
+                                                                const trace_box_ray_t *br,
                                                                 uint32_t kid, num_t *entry)
 {
     const render_cluster_t *k = &w->ctx->frame->clusters[kid];
     return !trace_walk_done_as(w, mode) && trace_screen_tree_as(w, screen, k) &&
-           trace_box_entry(w, &k->bounds, entry);
+           trace_box_entry_by(w, br, &k->bounds, entry);
 }
 
 /* A two-child node c: the nearer child whose box the ray meets in *next
  * (1), the farther one put off on later (*n grows); 0 when neither is
  * met. */
 static inline __attribute__((always_inline)) int trace_two(trace_walk_t *w, enum trace_mode mode,
-                                                            int screen, const render_cluster_t *c,
+                                                            int screen, const trace_box_ray_t *br,
+                                                            const render_cluster_t *c,
                                                             uint32_t *next, trace_later_t *later,
                                                             uint32_t *n)
 {
     const uint32_t *kids = &w->ctx->frame->child_list[c->first_child];
     uint32_t a = kids[0], b = kids[1];
     num_t ta, tb;
-    int ha = trace_kid_met(w, mode, screen, a, &ta);
-    int hb = trace_kid_met(w, mode, screen, b, &tb);
+    int ha = trace_kid_met(w, mode, screen, br, a, &ta);
+    int hb = trace_kid_met(w, mode, screen, br, b, &tb);
     if (ha && hb && num_lt(tb, ta)) {
         uint32_t k = a;
         num_t t = ta;
@@ -322,6 +343,7 @@ static inline __attribute__((always_inline)) int trace_two(trace_walk_t *w, enum
  * in *next (1; later moves past it), or 0 when none is left. */
 static inline __attribute__((always_inline)) int trace_next_kid(trace_walk_t *w,
                                                                  enum trace_mode mode, int screen,
+                                                                 const trace_box_ray_t *br,
                                                                  trace_later_t *later,
                                                                  uint32_t *next)
 {
@@ -331,7 +353,7 @@ static inline __attribute__((always_inline)) int trace_next_kid(trace_walk_t *w,
     while (later->k < c->child_count) {
         uint32_t kid = kids[later->k++];
         num_t entry;
-        if (trace_kid_met(w, mode, screen, kid, &entry)) {
+        if (trace_kid_met(w, mode, screen, br, kid, &entry)) {
             *next = kid;
             return 1;
         }
@@ -343,6 +365,7 @@ static inline __attribute__((always_inline)) int trace_next_kid(trace_walk_t *w,
  * *next: 0 when none is left. */
 static inline __attribute__((always_inline)) int trace_resume(trace_walk_t *w,
                                                                enum trace_mode mode, int screen,
+                                                               const trace_box_ray_t *br,
                                                                trace_later_t *later, uint32_t *n,
                                                                uint32_t *next)
 {
@@ -354,7 +377,7 @@ static inline __attribute__((always_inline)) int trace_resume(trace_walk_t *w,
                 *next = l->node;
                 return 1;
             }
-        } else if (trace_next_kid(w, mode, screen, l, next)) {
+        } else if (trace_next_kid(w, mode, screen, br, l, next)) {
             return 1;
         } else {
             (*n)--;
@@ -374,17 +397,18 @@ static inline __attribute__((always_inline)) void trace_tree_as(trace_walk_t *w,
                                                                  uint32_t index)
 {
     const render_frame_t *f = w->ctx->frame;
+    const trace_box_ray_t br = {w->ray->origin, w->box_ray};
     trace_later_t later[RENDER_MAX_CLUSTER_DEPTH + 1];
     uint32_t n = 0;
     for (;;) {
         const render_cluster_t *c = &f->clusters[index];
         if (c->prim_count) /* an inner node of the automatic hierarchy has none */
             trace_own_prims(w, c);
-        if (c->child_count == 2 && trace_two(w, mode, screen, c, &index, later, &n))
+        if (c->child_count == 2 && trace_two(w, mode, screen, &br, c, &index, later, &n))
             continue;
         if (c->child_count > 2 || c->child_count == 1)
             later[n++] = (trace_later_t){index, 0, NUM_ZERO};
-        if (!trace_resume(w, mode, screen, later, &n, &index))
+        if (!trace_resume(w, mode, screen, &br, later, &n, &index))
             return;
     }
 }
