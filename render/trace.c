@@ -282,12 +282,15 @@ typedef struct {
 
 /* A child of the tree walk (mode, screen: as trace_walk_done_as) whose
  * box the ray meets, *entry where it enters. */
-/* The tree walk's copy of the ray for its box tests: in locals, which
- * no store through a pointer can change, the compiler keeps it in
- * registers. */
+/* The tree walk's copies of the ray for its box tests and of the frame's
+ * tree: in locals, which no store through a pointer can change, the
+ * compiler keeps them in registers. */
 typedef struct {
     vec3_t origin;
     aabb_ray_t r;
+    int by_inv; /* r.all_inv and bounds on: prim_aabb_entry_inv */
+    const render_cluster_t *clusters;
+    const uint32_t *child_list;
 } trace_box_ray_t;
 
 /* trace_box_entry by the walk's copy br of the ray. */
@@ -295,7 +298,7 @@ static inline __attribute__((always_inline)) int trace_box_entry_by(trace_walk_t
                                                                      const trace_box_ray_t *br,
                                                                      const aabb_t *b, num_t *entry)
 {
-    if (!br->r.all_inv || !w->use_bounds)
+    if (!br->by_inv)
         return trace_box_entry(w, b, entry);
     w->box_tests++;
     return prim_aabb_entry_inv(b, br->origin, &br->r, w->tmin, w->cut, entry);
@@ -306,7 +309,7 @@ static inline __attribute__((always_inline)) int trace_kid_met(trace_walk_t *w,
                                                                 const trace_box_ray_t *br,
                                                                 uint32_t kid, num_t *entry)
 {
-    const render_cluster_t *k = &w->ctx->frame->clusters[kid];
+    const render_cluster_t *k = &br->clusters[kid];
     return !trace_walk_done_as(w, mode) && trace_screen_tree_as(w, screen, k) &&
            trace_box_entry_by(w, br, &k->bounds, entry);
 }
@@ -320,7 +323,7 @@ static inline __attribute__((always_inline)) int trace_two(trace_walk_t *w, enum
                                                             uint32_t *next, trace_later_t *later,
                                                             uint32_t *n)
 {
-    const uint32_t *kids = &w->ctx->frame->child_list[c->first_child];
+    const uint32_t *kids = &br->child_list[c->first_child];
     uint32_t a = kids[0], b = kids[1];
     num_t ta, tb;
     int ha = trace_kid_met(w, mode, screen, br, a, &ta);
@@ -347,9 +350,8 @@ static inline __attribute__((always_inline)) int trace_next_kid(trace_walk_t *w,
                                                                  trace_later_t *later,
                                                                  uint32_t *next)
 {
-    const render_frame_t *f = w->ctx->frame;
-    const render_cluster_t *c = &f->clusters[later->node];
-    const uint32_t *kids = &f->child_list[c->first_child];
+    const render_cluster_t *c = &br->clusters[later->node];
+    const uint32_t *kids = &br->child_list[c->first_child];
     while (later->k < c->child_count) {
         uint32_t kid = kids[later->k++];
         num_t entry;
@@ -397,11 +399,12 @@ static inline __attribute__((always_inline)) void trace_tree_as(trace_walk_t *w,
                                                                  uint32_t index)
 {
     const render_frame_t *f = w->ctx->frame;
-    const trace_box_ray_t br = {w->ray->origin, w->box_ray};
+    const trace_box_ray_t br = {w->ray->origin, w->box_ray, w->box_ray.all_inv && w->use_bounds,
+                                f->clusters, f->child_list};
     trace_later_t later[RENDER_MAX_CLUSTER_DEPTH + 1];
     uint32_t n = 0;
     for (;;) {
-        const render_cluster_t *c = &f->clusters[index];
+        const render_cluster_t *c = &br.clusters[index];
         if (c->prim_count) /* an inner node of the automatic hierarchy has none */
             trace_own_prims(w, c);
         if (c->child_count == 2 && trace_two(w, mode, screen, &br, c, &index, later, &n))
