@@ -778,7 +778,7 @@ static inline __attribute__((always_inline)) void prim_aabb_ray_axis(aabb_ray_t 
         if (num_lt(num_abs(inv), NUM_FAR)) {
             r->inv[axis] = inv;
             r->use_div[axis] = 0;
-            r->neg[axis] = num_lt(inv, NUM_ZERO);
+            r->neg[axis] = __builtin_signbit(inv) != 0; /* inv < 0: not 0, not NaN */
         }
     }
 #endif

@@ -355,10 +355,16 @@ static inline __attribute__((always_inline)) int trace_next_kid(trace_walk_t *w,
     while (later->k < c->child_count) {
         uint32_t kid = kids[later->k++];
         num_t entry;
-        if (trace_kid_met(w, mode, screen, br, kid, &entry)) {
-            *next = kid;
-            return 1;
+        if (!trace_kid_met(w, mode, screen, br, kid, &entry))
+            continue;
+        const render_cluster_t *leaf = &br->clusters[kid];
+        if (leaf->child_count == 0) { /* its visit is its own primitives */
+            if (leaf->prim_count)
+                trace_own_prims(w, leaf);
+            continue;
         }
+        *next = kid;
+        return 1;
     }
     return 0;
 }
