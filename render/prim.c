@@ -769,7 +769,6 @@ static inline __attribute__((always_inline)) void prim_aabb_ray_axis(aabb_ray_t 
 {
     r->inv[axis] = NUM_ZERO;
     r->use_div[axis] = 1;
-    r->neg[axis] = 0;
 #if defined(LINKS1_NUM_FIXED)
     (void)d; /* the fixed build divides on every axis */
 #else
@@ -778,7 +777,6 @@ static inline __attribute__((always_inline)) void prim_aabb_ray_axis(aabb_ray_t 
         if (num_lt(num_abs(inv), NUM_FAR)) {
             r->inv[axis] = inv;
             r->use_div[axis] = 0;
-            r->neg[axis] = __builtin_signbit(inv) != 0; /* inv < 0: not 0, not NaN */
         }
     }
 #endif
@@ -804,8 +802,8 @@ int prim_aabb_entry_ray_axes(const aabb_t *b, const ray_t *ray, const aabb_ray_t
                 return 0;
             continue;
         }
-        if (!prim_slab_inv_faces(o, r->inv[axis], r->neg[axis] ? hi : lo, r->neg[axis] ? lo : hi,
-                                 &tnear, &tfar))
+        int neg = num_lt(r->inv[axis], NUM_ZERO);
+        if (!prim_slab_inv_faces(o, r->inv[axis], neg ? hi : lo, neg ? lo : hi, &tnear, &tfar))
             return 0;
     }
     *entry = tnear;

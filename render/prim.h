@@ -91,7 +91,6 @@ typedef struct {
     num_t inv[3];
     uint8_t use_div[3]; /* 1: divide on this axis (fixed, or d = 0 or tiny) */
     uint8_t all_inv;    /* no axis divides */
-    uint8_t neg[3];     /* inv < 0: the ray enters a slab by its high face */
 } aabb_ray_t;
 void prim_aabb_ray(const ray_t *ray, aabb_ray_t *r);
 /* prim_aabb_entry with r from prim_aabb_ray(ray): inline where no axis
@@ -154,12 +153,15 @@ static inline __attribute__((always_inline)) int prim_aabb_entry_inv(const aabb_
                                                                       num_t *entry)
 {
     num_t tnear = tmin, tfar = tmax;
-    if (!prim_slab_inv_faces(o.x, r->inv[0], r->neg[0] ? b->hi.x : b->lo.x,
-                             r->neg[0] ? b->lo.x : b->hi.x, &tnear, &tfar) ||
-        !prim_slab_inv_faces(o.y, r->inv[1], r->neg[1] ? b->hi.y : b->lo.y,
-                             r->neg[1] ? b->lo.y : b->hi.y, &tnear, &tfar) ||
-        !prim_slab_inv_faces(o.z, r->inv[2], r->neg[2] ? b->hi.z : b->lo.z,
-                             r->neg[2] ? b->lo.z : b->hi.z, &tnear, &tfar))
+    /* inv < 0: the ray enters the slab by its high face */
+    int nx = num_lt(r->inv[0], NUM_ZERO), ny = num_lt(r->inv[1], NUM_ZERO),
+        nz = num_lt(r->inv[2], NUM_ZERO);
+    if (!prim_slab_inv_faces(o.x, r->inv[0], nx ? b->hi.x : b->lo.x, nx ? b->lo.x : b->hi.x,
+                             &tnear, &tfar) ||
+        !prim_slab_inv_faces(o.y, r->inv[1], ny ? b->hi.y : b->lo.y, ny ? b->lo.y : b->hi.y,
+                             &tnear, &tfar) ||
+        !prim_slab_inv_faces(o.z, r->inv[2], nz ? b->hi.z : b->lo.z, nz ? b->lo.z : b->hi.z,
+                             &tnear, &tfar))
         return 0;
     *entry = tnear;
     return 1;

@@ -405,8 +405,9 @@ static inline __attribute__((always_inline)) void trace_tree_as(trace_walk_t *w,
                                                                  uint32_t index)
 {
     const render_frame_t *f = w->ctx->frame;
-    const trace_box_ray_t br = {w->ray->origin, w->box_ray, w->box_ray.all_inv && w->use_bounds,
-                                f->clusters, f->child_list};
+    const trace_box_ray_t br = {.origin = w->ray->origin, .r = w->box_ray,
+                                .by_inv = w->box_ray.all_inv && w->use_bounds,
+                                .clusters = f->clusters, .child_list = f->child_list};
     trace_later_t later[RENDER_MAX_CLUSTER_DEPTH + 1];
     uint32_t n = 0;
     for (;;) {
