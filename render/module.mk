@@ -41,11 +41,11 @@ SHARED_SRCS += render/relocate.c render/blob.c render/clip.c render/layout.c
 $(foreach a,double float fixed,$(eval test_blob_$(a)_SRCS = tests/host/test_blob.c $$(SCENE_TEXT_SRCS)))
 $(foreach a,double float fixed,$(eval test_blob_$(a)_ARITH := $(a)))
 $(foreach a,double float fixed,$(eval test_blob_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
-$(foreach a,double float fixed,$(eval test_clip_$(a)_SRCS = tests/host/test_clip.c $$(SCENE_TEXT_SRCS)))
+$(foreach a,double float fixed,$(eval test_clip_$(a)_SRCS = tests/host/test_clip.c tests/host/render_fixture.c $$(SCENE_TEXT_SRCS)))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_ARITH := $(a)))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
 # Anti-aliasing (render/trace.c): areas, corner means, cuts.
-$(foreach a,double float fixed,$(eval test_aa_$(a)_SRCS = tests/host/test_aa.c $$(SCENE_TEXT_SRCS)))
+$(foreach a,double float fixed,$(eval test_aa_$(a)_SRCS = tests/host/test_aa.c tests/host/render_fixture.c $$(SCENE_TEXT_SRCS)))
 $(foreach a,double float fixed,$(eval test_aa_$(a)_ARITH := $(a)))
 $(foreach a,double float fixed,$(eval test_aa_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
 

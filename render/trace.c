@@ -1109,18 +1109,26 @@ static pixel_search_t render_search_of(const render_ctx_t *ctx, render_corner_se
                                                                            : PIXEL_SEARCH_TREE;
 }
 
+/* Search how at pixel (x, y) through the list clusters (count); NULL is
+ * clipping that kept nothing: a non-NULL empty list. */
+static render_aa_search_t render_aa_search(pixel_search_t how, uint32_t x, uint32_t y,
+                                           const uint32_t *clusters, uint32_t count)
+{
+    static const uint32_t none[1] = {0};
+    return (render_aa_search_t){how, {(int32_t)x, (int32_t)y}, clusters ? clusters : none,
+                                clusters ? count : 0};
+}
+
 void render_corner(render_ctx_t *ctx, uint32_t cx, uint32_t cy, render_corner_search_t search,
                    const uint32_t *clusters, uint32_t count, int counted, render_corner_t *out)
 {
     const render_frame_t *f = ctx->frame;
-    uint32_t none = 0; /* a non-NULL empty list: clipping that kept nothing */
     /* the corner lies in the closed square of this pixel, which every
      * screen rectangle holding the corner holds (render/prepare.c widens
      * them by a pixel) */
-    const render_aa_search_t s = {render_search_of(ctx, search),
-                                  {(int32_t)(cx < f->width ? cx : cx - 1u),
-                                   (int32_t)(cy < f->height ? cy : cy - 1u)},
-                                  clusters ? clusters : &none, clusters ? count : 0};
+    const render_aa_search_t s =
+        render_aa_search(render_search_of(ctx, search), cx < f->width ? cx : cx - 1u,
+                         cy < f->height ? cy : cy - 1u, clusters, count);
     render_stats_t before;
     if (!counted)
         before = ctx->stats;
@@ -1163,9 +1171,8 @@ rgb8_t render_pixel_of_corners(render_ctx_t *ctx, uint32_t x, uint32_t y,
                                const render_corner_t c[4], render_corner_search_t search,
                                const uint32_t *clusters, uint32_t count)
 {
-    uint32_t none = 0; /* a non-NULL empty list: clipping that kept nothing */
-    const render_aa_search_t s = {render_search_of(ctx, search), {(int32_t)x, (int32_t)y},
-                                  clusters ? clusters : &none, clusters ? count : 0};
+    const render_aa_search_t s =
+        render_aa_search(render_search_of(ctx, search), x, y, clusters, count);
     return render_pixel_settled(ctx, x, y, render_pixel_corners(ctx, x, y, c, &s));
 }
 
@@ -1204,11 +1211,9 @@ rgb8_t render_pixel_screen(render_ctx_t *ctx, uint32_t x, uint32_t y)
 
 rgb8_t render_pixel_clipped(render_ctx_t *ctx, uint32_t x, uint32_t y, const uint32_t *clusters, uint32_t count)
 {
-    uint32_t none = 0; /* a non-NULL empty list: clipping that kept nothing */
-    return render_pixel_settled(
-        ctx, x, y,
-        render_pixel_impl(ctx, x, y, PIXEL_SEARCH_LIST, clusters ? clusters : &none,
-                          clusters ? count : 0));
+    const render_aa_search_t s = render_aa_search(PIXEL_SEARCH_LIST, x, y, clusters, count);
+    return render_pixel_settled(ctx, x, y,
+                                render_pixel_impl(ctx, x, y, s.how, s.clip, s.clip_count));
 }
 
 void render_span(render_ctx_t *ctx, uint32_t y, uint32_t x0, uint32_t x1, rgb8_t *out)

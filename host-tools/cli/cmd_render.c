@@ -486,10 +486,10 @@ static int render_auto_check(const struct render_opts *o)
         }
         return 0;
     }
-    const char *chosen = o->arith_named ? "--arith" : scene_opts_model_given(&o->scene);
+    const char *chosen = o->arith_named ? "arith" : scene_opts_model_given(&o->scene);
     if (o->model_auto && chosen) {
         fprintf(stderr, "links1 render: --auto chooses the arithmetic, min_weight and density "
-                "steps, so it takes no %s (--arith auto chooses the arithmetic alone)\n", chosen);
+                "steps, so it takes no --%s (--arith auto chooses the arithmetic alone)\n", chosen);
         return -1;
     }
     const char *what = o->model_auto ? "--auto" : "--arith auto";

@@ -21,6 +21,7 @@
 
 #define FARM_SLURM_ARRAY_MAX 65536 /* bytes of --array's list */
 #define FARM_SLURM_LOG_MAX (1 << 20) /* bytes of a task's log read back */
+#define FARM_SLURM_JOB_MAX 4294967294L /* Slurm's job ids are 32-bit */
 
 static const char farm_slurm_script[] =
     "#!/bin/sh\n"
@@ -199,32 +200,72 @@ static const char **farm_slurm_argv(const struct farm_slurm_round *r,
     return av;
 }
 
-/* What fd gives up to cap - 1 bytes into out (ended by a 0), the rest
- * read and dropped; the bytes kept. */
-static size_t farm_slurm_read_out(int fd, char *out, size_t cap)
+/* How far farm_slurm_read_out reads. */
+enum farm_slurm_until {
+    FARM_SLURM_UNTIL_LINE, /* a newline is in, or the end */
+    FARM_SLURM_UNTIL_END,
+};
+
+/* What fd gives appended to out (*got bytes so far) up to cap - 1 bytes
+ * (ended by a 0), until a newline or until its end; at the end, what is
+ * past cap - 1 bytes is read and dropped. */
+static void farm_slurm_read_out(int fd, char *out, size_t cap, size_t *got,
+                                enum farm_slurm_until until)
 {
-    size_t got = 0;
     ssize_t n;
-    while ((n = read(fd, out + got, cap - 1 - got)) != 0) {
+    while (*got < cap - 1) {
+        if (until == FARM_SLURM_UNTIL_LINE && memchr(out, '\n', *got))
+            break;
+        n = read(fd, out + *got, cap - 1 - *got);
         if (n < 0 && errno == EINTR)
             continue;
-        if (n < 0)
+        if (n <= 0)
             break;
-        got += (size_t)n;
-        if (got == cap - 1) { /* the rest is not the job id: drain it */
-            char sink[256];
-            while (read(fd, sink, sizeof sink) > 0)
-                ;
-            break;
-        }
+        *got += (size_t)n;
     }
-    out[got] = 0;
-    return got;
+    out[*got] = 0;
+    if (until == FARM_SLURM_UNTIL_END && *got == cap - 1) { /* the rest is not the job id */
+        char sink[256];
+        while ((n = read(fd, sink, sizeof sink)) > 0 || (n < 0 && errno == EINTR))
+            ;
+    }
+}
+
+/* The job id that `sbatch --parsable` prints first, "JOB" or
+ * "JOB;CLUSTER" (a number 1 to FARM_SLURM_JOB_MAX), or -1. */
+static long farm_slurm_job(const char *out)
+{
+    if (out[0] < '0' || out[0] > '9')
+        return -1;
+    char *end;
+    errno = 0;
+    long job = strtol(out, &end, 10);
+    if (errno || job <= 0 || job > FARM_SLURM_JOB_MAX || (*end && *end != ';' && *end != '\n'))
+        return -1;
+    return job;
+}
+
+/* Once sbatch printed the job id: `scancel JOB` registered to run if a
+ * signal stops the farm (killing sbatch --wait leaves the job running).
+ * Its exit_clean slot, or -1. */
+static int farm_slurm_cancel_on_signal(const char *out)
+{
+    long job = farm_slurm_job(out);
+    if (job < 0)
+        return -1;
+    char id[24], done[96], failed[160];
+    snprintf(id, sizeof id, "%ld", job);
+    snprintf(done, sizeof done, "links1 farm: stopped: cancelled Slurm job %ld", job);
+    snprintf(failed, sizeof failed, "links1 farm: stopped: scancel %ld failed; Slurm job %ld "
+             "may still be running", job, job);
+    const char *const av[] = {"scancel", id, NULL};
+    return exit_clean_add_command(av, done, failed);
 }
 
 /* sbatch run with av (av freed) and waited for, its standard output in
- * out (*got bytes), its exit status (waitpid's) in *status.  0, or -1
- * after saying why it could not be started. */
+ * out (*got bytes), its exit status (waitpid's) in *status; while it
+ * waits for the job, a signal that stops the farm cancels the job.  0, or
+ * -1 after saying why it could not be started. */
 static int farm_slurm_sbatch(const char **av, char *out, size_t cap, size_t *got, int *status)
 {
     int fds[2];
@@ -258,11 +299,15 @@ static int farm_slurm_sbatch(const char **av, char *out, size_t cap, size_t *got
     free(av);
     exit_clean_add_child(pid);
     close(fds[1]);
-    *got = farm_slurm_read_out(fds[0], out, cap);
+    *got = 0;
+    farm_slurm_read_out(fds[0], out, cap, got, FARM_SLURM_UNTIL_LINE);
+    int cancel = farm_slurm_cancel_on_signal(out);
+    farm_slurm_read_out(fds[0], out, cap, got, FARM_SLURM_UNTIL_END);
     close(fds[0]);
     while (waitpid(pid, status, 0) < 0 && errno == EINTR)
         ;
     exit_clean_drop_child(pid);
+    exit_clean_drop_command(cancel); /* the job has ended */
     return 0;
 }
 
@@ -279,11 +324,8 @@ int farm_slurm_run(const struct farm_slurm_round *r, struct farm_host *hosts, in
     int status;
     if (!av || farm_slurm_sbatch(av, out, sizeof out, &got, &status) != 0)
         return -1;
-    /* --parsable prints "JOB" or "JOB;CLUSTER" once the array is submitted */
-    char *end;
-    errno = 0;
-    long job = strtol(out, &end, 10);
-    if (end == out || errno || job <= 0 || (*end && *end != ';' && *end != '\n')) {
+    long job = farm_slurm_job(out);
+    if (job < 0) {
         fprintf(stderr, "links1 farm: --slurm: sbatch did not submit the job array (exit %d%s%.*s)\n",
                 WIFEXITED(status) ? WEXITSTATUS(status) : -1, got ? "; it printed: " : "",
                 (int)strcspn(out, "\n"), out);

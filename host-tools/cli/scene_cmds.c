@@ -269,8 +269,8 @@ static int ref_cmd_parse(struct ref_cmd *r, int argc, char **argv)
     const char *model_word = scene_opts_model_given(&r->so);
     if (r->model && (r->arith_given || model_word))
         return cli_usage_error("links1 ref", "--auto chooses the arithmetic, min_weight and "
-                               "density steps, so it takes no %s (--arith auto chooses the "
-                               "arithmetic alone)", r->arith_given ? "--arith" : model_word);
+                               "density steps, so it takes no --%s (--arith auto chooses the "
+                               "arithmetic alone)", r->arith_given ? "arith" : model_word);
     if (r->model)
         r->arith = "auto";
     if (strcmp(r->arith, "auto") != 0 && (r->fpu >= 0 || r->target >= 0))

@@ -1,18 +1,25 @@
 /* model_assimp.c: model_assimp_load and model_load_memory through
  * libassimp (model.h); model_load runs model_assimp_load in a child
  * (model_child.c).  The only file of links1 that includes assimp: it
+ * gives the library its own file I/O (regular files only, model_io_open),
  * copies what the library read into plain arrays and checks nothing beyond
  * what it must to copy safely. */
+#include <assimp/cfileio.h>
 #include <assimp/cimport.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "host-tools/model/model.h"
+#include "host-tools/model/model_child.h"
 
 /* Triangulate polygons, put points and lines in meshes of their own, and
  * let the library refuse a file whose structure is broken. */
@@ -384,6 +391,119 @@ static int model_ply_header_ok(const char *data, size_t size, const char *name, 
     return -1;
 }
 
+/* ------------------------------------------------ the library's files */
+
+/* Every file the library opens for a model read from the disk (the model,
+ * its MTL, glTF buffers, ...) goes through model_io_open: opened without
+ * blocking and taken only as a regular file of at most
+ * MODEL_CHILD_MAX_BYTES, so a FIFO or a device named by the model neither
+ * hangs the import nor is read as it is.  The first file refused is kept
+ * (model_io.refused) and the import fails naming it; a file that is not
+ * there is only not found, as with the library's own files. */
+struct model_io {
+    char refused[MODEL_PATH_MAX + 128]; /* "PATH: why", "" none */
+};
+
+struct model_io_file {
+    int fd;
+    size_t size;
+};
+
+static struct model_io_file *model_io_of(struct aiFile *f)
+{
+    return (struct model_io_file *)(void *)f->UserData;
+}
+
+static size_t model_io_read(struct aiFile *f, char *buf, size_t size, size_t count)
+{
+    if (size == 0 || count > SIZE_MAX / size)
+        return 0;
+    size_t want = size * count, got = 0;
+    while (got < want) {
+        ssize_t n = read(model_io_of(f)->fd, buf + got, want - got);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n <= 0)
+            break;
+        got += (size_t)n;
+    }
+    return got / size;
+}
+
+static size_t model_io_write(struct aiFile *f, const char *buf, size_t size, size_t count)
+{
+    (void)f, (void)buf, (void)size, (void)count;
+    return 0; /* opened for reading only */
+}
+
+static size_t model_io_tell(struct aiFile *f)
+{
+    off_t at = lseek(model_io_of(f)->fd, 0, SEEK_CUR);
+    return at < 0 ? 0 : (size_t)at;
+}
+
+static size_t model_io_size(struct aiFile *f)
+{
+    return model_io_of(f)->size;
+}
+
+/* As fseek: offset is signed (a step back from here or the end comes as
+ * a wrapped size_t); the place must stay within the file. */
+static enum aiReturn model_io_seek(struct aiFile *f, size_t offset, enum aiOrigin origin)
+{
+    long long base = origin == aiOrigin_SET ? 0
+                     : origin == aiOrigin_CUR ? (long long)model_io_tell(f)
+                                              : (long long)model_io_of(f)->size;
+    long long to = base + (long long)(ptrdiff_t)offset;
+    if (to < 0 || to > (long long)model_io_of(f)->size ||
+        lseek(model_io_of(f)->fd, (off_t)to, SEEK_SET) < 0)
+        return aiReturn_FAILURE;
+    return aiReturn_SUCCESS;
+}
+
+static void model_io_flush(struct aiFile *f)
+{
+    (void)f;
+}
+
+static struct aiFile *model_io_open(struct aiFileIO *io, const char *path, const char *mode)
+{
+    struct model_io *ctx = (struct model_io *)(void *)io->UserData;
+    if (strpbrk(mode, "wa+"))
+        return NULL;
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+    if (fd < 0)
+        return NULL; /* not there (or not ours): the library goes on without it */
+    char why[sizeof ctx->refused];
+    struct stat st;
+    struct aiFile *f = calloc(1, sizeof *f);
+    struct model_io_file *mf = calloc(1, sizeof *mf);
+    if (model_file_check(fd, path, MODEL_CHILD_MAX_BYTES, why, sizeof why) != 0 ||
+        fstat(fd, &st) != 0 || !f || !mf) {
+        if (!ctx->refused[0])
+            snprintf(ctx->refused, sizeof ctx->refused, "%s", f && mf ? why : "out of memory");
+        free(f);
+        free(mf);
+        close(fd);
+        return NULL;
+    }
+    mf->fd = fd;
+    mf->size = (size_t)st.st_size;
+    *f = (struct aiFile){model_io_read, model_io_write, model_io_tell, model_io_size,
+                         model_io_seek, model_io_flush, (aiUserData)(void *)mf};
+    return f;
+}
+
+static void model_io_close(struct aiFileIO *io, struct aiFile *f)
+{
+    (void)io;
+    if (!f)
+        return;
+    close(model_io_of(f)->fd);
+    free(model_io_of(f));
+    free(f);
+}
+
 /* What the library read (sc, or NULL when it refused: its message) into *m;
  * name names the model in err. */
 static int model_take(const struct aiScene *sc, const char *name, int gltf, struct model *m,
@@ -414,16 +534,27 @@ static int model_take(const struct aiScene *sc, const char *name, int gltf, stru
 int model_assimp_load(const char *path, struct model *m, char *err, size_t errlen)
 {
     memset(m, 0, sizeof *m);
-    FILE *f = fopen(path, "rb");
-    if (f) {
+    int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
+    if (fd >= 0) {
         static char head[MODEL_PLY_HEADER_MAX];
-        size_t n = fread(head, 1, sizeof head, f);
-        fclose(f);
-        if (model_ply_header_ok(head, n, path, err, errlen) != 0)
+        int refused = model_file_check(fd, path, MODEL_CHILD_MAX_BYTES, err, errlen) != 0;
+        ssize_t n = refused ? 0 : read(fd, head, sizeof head);
+        close(fd);
+        if (refused || model_ply_header_ok(head, n > 0 ? (size_t)n : 0, path, err, errlen) != 0)
             return -1;
     }
-    return model_take(aiImportFile(path, MODEL_AI_FLAGS), path, model_is_gltf(path), m, err,
-                      errlen);
+    struct model_io ctx = {""};
+    struct aiFileIO io = {model_io_open, model_io_close, (aiUserData)(void *)&ctx};
+    const struct aiScene *sc = aiImportFileEx(path, MODEL_AI_FLAGS, &io);
+    if (ctx.refused[0]) {
+        aiReleaseImport(sc);
+        if (strncmp(ctx.refused, path, strlen(path)) == 0 && ctx.refused[strlen(path)] == ':')
+            snprintf(err, errlen, "%s", ctx.refused);
+        else
+            snprintf(err, errlen, "%s: a file it refers to, %s", path, ctx.refused);
+        return -1;
+    }
+    return model_take(sc, path, model_is_gltf(path), m, err, errlen);
 }
 
 int model_load_memory(const void *data, size_t size, const char *hint, struct model *m,

@@ -14,6 +14,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -226,6 +227,23 @@ static int child_judge(const char *path, int st, const struct child_got *g,
     return -1;
 }
 
+int model_file_check(int fd, const char *path, size_t max, char *err, size_t errlen)
+{
+    struct stat st;
+    int rc = fstat(fd, &st);
+    if (rc == 0 && S_ISREG(st.st_mode) && (unsigned long long)st.st_size <= max)
+        return 0;
+    if (rc == 0 && S_ISREG(st.st_mode)) {
+        snprintf(err, errlen, "%s: %lld bytes, more than %zu: not read", path,
+                 (long long)st.st_size, max);
+        return -1;
+    }
+    snprintf(err, errlen, "%s: not a regular file (%s): not read", path,
+             rc != 0 ? strerror(errno) : S_ISDIR(st.st_mode) ? "a directory"
+             : S_ISFIFO(st.st_mode) ? "a FIFO" : S_ISSOCK(st.st_mode) ? "a socket" : "a device");
+    return -1;
+}
+
 /* path names a regular file (opened without blocking, so a FIFO is
  * refused at once rather than read until the deadline).  0, or -1 with
  * "PATH: why" in err. */
@@ -236,15 +254,9 @@ static int child_regular(const char *path, char *err, size_t errlen)
         snprintf(err, errlen, "%s: %s", path, strerror(errno));
         return -1;
     }
-    struct stat st;
-    int rc = fstat(fd, &st);
+    int rc = model_file_check(fd, path, SIZE_MAX, err, errlen);
     close(fd);
-    if (rc == 0 && S_ISREG(st.st_mode))
-        return 0;
-    snprintf(err, errlen, "%s: not a regular file (%s): not read", path,
-             rc != 0 ? strerror(errno) : S_ISDIR(st.st_mode) ? "a directory"
-             : S_ISFIFO(st.st_mode) ? "a FIFO" : S_ISSOCK(st.st_mode) ? "a socket" : "a device");
-    return -1;
+    return rc;
 }
 
 int model_child_load(const char *path, model_loader_fn load, const struct model_child_limits *lim,

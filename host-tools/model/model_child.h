@@ -29,6 +29,13 @@ struct model_child_limits {
     unsigned memory_mb;     /* 0: MODEL_CHILD_MEMORY_MB */
 };
 
+/* fd, open as path, is a regular file of at most max bytes (what the
+ * parent checks of the model, and what model_assimp_load checks of every
+ * file the library opens: its MTL, buffers, ...).  0, or -1 with "PATH: not
+ * a regular file (a FIFO): not read" or "PATH: N bytes, more than MAX: not
+ * read" in err. */
+int model_file_check(int fd, const char *path, size_t max, char *err, size_t errlen);
+
 /* A loader run in the child: model_load's contract (model.h). */
 typedef int (*model_loader_fn)(const char *path, struct model *m, char *err, size_t errlen);
 

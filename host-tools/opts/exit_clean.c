@@ -4,7 +4,8 @@
  * thread it runs on, sees a slot either whole or not at all; the handler
  * itself calls only async-signal-safe functions (kill, waitpid, nanosleep,
  * unlink, unlinkat, openat, the getdents64 system call, close, sigaction,
- * sigprocmask, raise). */
+ * sigprocmask, raise, write, _Fork; the command's child then execvp, which
+ * allocates nothing in glibc). */
 #define _GNU_SOURCE
 #include "host-tools/opts/exit_clean.h"
 
@@ -39,6 +40,16 @@ static int ec_busy;                                /* a handler is cleaning */
 static const int ec_signals[] = {SIGINT, SIGTERM, SIGHUP};
 #define EC_NSIGNALS (int)(sizeof ec_signals / sizeof ec_signals[0])
 static int ec_ignored[EC_NSIGNALS]; /* ignored when the program started */
+
+/* A command's words and notes packed into buf (each ended by a 0): argv
+ * points into it, done and failed are the notes' offsets. */
+struct ec_command {
+    int state; /* enum ec_slot, atomically */
+    char buf[EXIT_CLEAN_COMMAND_BYTES];
+    char *argv[EXIT_CLEAN_COMMAND_WORDS + 1];
+    size_t done, failed;
+};
+static struct ec_command ec_commands[EXIT_CLEAN_MAX_COMMANDS];
 
 /* The entries of a directory found in a getdents64 buffer. */
 struct ec_dirent64 {
@@ -111,8 +122,41 @@ static void ec_sleep_ms(long ms)
     nanosleep(&t, NULL);
 }
 
-/* Every registered child sent SIGTERM and waited for, up to
- * EXIT_CLEAN_CHILD_WAIT_MS; then SIGKILL. */
+/* The n children of pids[] (0: none) waited for up to
+ * EXIT_CLEAN_CHILD_WAIT_MS, then sent SIGKILL; status[i] (when status is
+ * not NULL) pids[i]'s wait status, or -1 when it was killed or not ours. */
+static void ec_wait(pid_t *pids, int *status, int n)
+{
+    int left = 0;
+    for (int i = 0; i < n; i++) {
+        left += pids[i] > 0;
+        if (status)
+            status[i] = -1;
+    }
+    for (long waited = 0; left > 0; waited += EXIT_CLEAN_POLL_MS) {
+        for (int i = 0; i < n; i++) {
+            int st = 0;
+            pid_t r = pids[i] > 0 ? waitpid(pids[i], &st, WNOHANG) : 0;
+            if (r == pids[i] || (r < 0 && errno == ECHILD)) {
+                if (status && r == pids[i])
+                    status[i] = st;
+                pids[i] = 0;
+                left--;
+            }
+        }
+        if (left == 0 || waited >= EXIT_CLEAN_CHILD_WAIT_MS)
+            break;
+        ec_sleep_ms(EXIT_CLEAN_POLL_MS);
+    }
+    for (int i = 0; i < n; i++) {
+        if (pids[i] > 0) {
+            kill(pids[i], SIGKILL);
+            waitpid(pids[i], NULL, 0);
+        }
+    }
+}
+
+/* Every registered child sent SIGTERM and waited for (ec_wait). */
 static void ec_stop_children(void)
 {
     static pid_t left[EXIT_CLEAN_MAX_CHILDREN];
@@ -122,21 +166,37 @@ static void ec_stop_children(void)
         if (pid > 0 && kill(pid, SIGTERM) == 0)
             left[nleft++] = pid;
     }
-    for (long waited = 0; nleft > 0 && waited < EXIT_CLEAN_CHILD_WAIT_MS;
-         waited += EXIT_CLEAN_POLL_MS) {
-        for (int i = 0; i < nleft;) {
-            pid_t r = waitpid(left[i], NULL, WNOHANG);
-            if (r == left[i] || (r < 0 && errno == ECHILD))
-                left[i] = left[--nleft];
-            else
-                i++;
+    ec_wait(left, NULL, nleft);
+}
+
+static void ec_say(const char *line)
+{
+    size_t n = strlen(line);
+    if (n && write(2, line, n) == (ssize_t)n)
+        (void)!write(2, "\n", 1);
+}
+
+/* Every registered command run in turn (fork, the three signals let go,
+ * execvp), each waited for (ec_wait) and its note written to stderr. */
+static void ec_run_commands(void)
+{
+    for (int i = 0; i < EXIT_CLEAN_MAX_COMMANDS; i++) {
+        struct ec_command *c = &ec_commands[i];
+        if (__atomic_load_n(&c->state, __ATOMIC_SEQ_CST) != EC_READY)
+            continue;
+        pid_t pid = _Fork();
+        if (pid == 0) {
+            sigset_t none;
+            sigemptyset(&none);
+            sigprocmask(SIG_SETMASK, &none, NULL);
+            execvp(c->argv[0], c->argv);
+            _exit(127);
         }
-        if (nleft)
-            ec_sleep_ms(EXIT_CLEAN_POLL_MS);
-    }
-    for (int i = 0; i < nleft; i++) {
-        kill(left[i], SIGKILL);
-        waitpid(left[i], NULL, 0);
+        int st = -1;
+        if (pid > 0)
+            ec_wait(&pid, &st, 1);
+        ec_say(st != -1 && WIFEXITED(st) && WEXITSTATUS(st) == 0 ? c->buf + c->done
+                                                               : c->buf + c->failed);
     }
 }
 
@@ -144,6 +204,7 @@ static void ec_handler(int sig)
 {
     if (getpid() == ec_owner && !__atomic_exchange_n(&ec_busy, 1, __ATOMIC_SEQ_CST)) {
         ec_stop_children(); /* first: a child may still be writing a file below */
+        ec_run_commands();
         for (int i = 0; i < EXIT_CLEAN_MAX_PATHS; i++) {
             if (__atomic_load_n(&ec_paths[i].state, __ATOMIC_SEQ_CST) != EC_READY)
                 continue;
@@ -233,6 +294,61 @@ void exit_clean_drop_child(pid_t pid)
                                         __ATOMIC_SEQ_CST))
             return;
     }
+}
+
+/* s copied into c->buf at *at: its offset, or -1 when it does not fit. */
+static long ec_pack(struct ec_command *c, size_t *at, const char *s)
+{
+    size_t n = strlen(s) + 1;
+    if (n > sizeof c->buf - *at)
+        return -1;
+    memcpy(c->buf + *at, s, n);
+    *at += n;
+    return (long)(*at - n);
+}
+
+/* argv, done and failed packed into c: 0, or -1 when they do not fit. */
+static int ec_fill(struct ec_command *c, const char *const *argv, const char *done,
+                   const char *failed)
+{
+    size_t at = 0;
+    int k = 0;
+    for (; argv[k]; k++) {
+        long off = k < EXIT_CLEAN_COMMAND_WORDS ? ec_pack(c, &at, argv[k]) : -1;
+        if (off < 0)
+            return -1;
+        c->argv[k] = c->buf + off;
+    }
+    c->argv[k] = NULL;
+    long d = ec_pack(c, &at, done), f = ec_pack(c, &at, failed);
+    if (k == 0 || d < 0 || f < 0)
+        return -1;
+    c->done = (size_t)d;
+    c->failed = (size_t)f;
+    return 0;
+}
+
+int exit_clean_add_command(const char *const *argv, const char *done, const char *failed)
+{
+    for (int i = 0; i < EXIT_CLEAN_MAX_COMMANDS; i++) {
+        int expect = EC_FREE;
+        if (!__atomic_compare_exchange_n(&ec_commands[i].state, &expect, EC_FILLING, 0,
+                                         __ATOMIC_SEQ_CST, __ATOMIC_SEQ_CST))
+            continue;
+        if (ec_fill(&ec_commands[i], argv, done, failed) != 0) {
+            __atomic_store_n(&ec_commands[i].state, EC_FREE, __ATOMIC_SEQ_CST);
+            return -1;
+        }
+        __atomic_store_n(&ec_commands[i].state, EC_READY, __ATOMIC_SEQ_CST);
+        return i;
+    }
+    return -1;
+}
+
+void exit_clean_drop_command(int slot)
+{
+    if (slot >= 0 && slot < EXIT_CLEAN_MAX_COMMANDS)
+        __atomic_store_n(&ec_commands[slot].state, EC_FREE, __ATOMIC_SEQ_CST);
 }
 
 void exit_clean_in_child(void)

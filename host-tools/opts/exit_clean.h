@@ -3,7 +3,8 @@
  * makes a temporary file or directory, or starts a child, registers it
  * here and drops it once it is gone.  The handler (async-signal-safe work
  * only) sends SIGTERM to every registered child and waits for them a few
- * seconds (SIGKILL after that), removes every registered path (a
+ * seconds (SIGKILL after that), runs every registered command (waited for
+ * as long, its note on stderr), removes every registered path (a
  * directory with everything under it, never following a link), then
  * dies of the same signal with its default action, so a shell sees
  * 128 + N.  A child of this program that has not exec'ed yet runs the
@@ -20,6 +21,9 @@
 #define EXIT_CLEAN_MAX_PATHS 32
 #define EXIT_CLEAN_MAX_CHILDREN 48      /* an an521 run's 33 QEMUs, ffmpeg, ... */
 #define EXIT_CLEAN_CHILD_WAIT_MS 5000   /* a child's own clean-up (a links1 render's) */
+#define EXIT_CLEAN_MAX_COMMANDS 4
+#define EXIT_CLEAN_COMMAND_WORDS 15     /* argv's words */
+#define EXIT_CLEAN_COMMAND_BYTES 1024   /* its words and notes, each with its 0 */
 
 enum exit_clean_kind {
     EXIT_CLEAN_FILE, /* unlinked */
@@ -39,6 +43,16 @@ void exit_clean_drop(const char *path);
 /* pid sent SIGTERM (and waited for) if a signal ends the program. */
 void exit_clean_add_child(pid_t pid);
 void exit_clean_drop_child(pid_t pid);
+
+/* argv (NULL-ended) run if a signal ends the program, once the children
+ * are stopped and before the paths go: forked and started with execvp,
+ * waited for up to EXIT_CLEAN_CHILD_WAIT_MS (then SIGKILL); done, or failed
+ * when it did not exit 0, written to stderr as a line.  Its slot for
+ * exit_clean_drop_command, or -1 (the registry is full or the words too
+ * many or too long: nothing is then run). */
+int exit_clean_add_command(const char *const *argv, const char *done, const char *failed);
+/* The command of slot no longer run on a signal (-1: nothing). */
+void exit_clean_drop_command(int slot);
 
 /* In a child of the program (the process that called exit_clean_install)
  * right after fork: the handlers back to the default, SIGTERM when the

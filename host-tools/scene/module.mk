@@ -10,7 +10,7 @@ HT_SCENE_SRCS := host-tools/scene/scene_lex.c host-tools/scene/scene_parse.c \
 	host-tools/scene/scene_parse_model.c host-tools/scene/scene_parse_view.c \
 	host-tools/scene/scene_math.c \
 	host-tools/scene/scene_compile.c host-tools/scene/scene_bvh.c \
-	host-tools/scene/scene_board.c host-tools/scene/scene_file.c \
+	host-tools/scene/scene_board.c host-tools/scene/scene_file.c host-tools/scene/scene_optdefs.c \
 	host-tools/scene/scene_import.c host-tools/scene/scene_import_view.c \
 	host-tools/scene/scene_map_image.c host-tools/scene/scene_texture.c \
 	host-tools/scene/scene_write.c host-tools/scene/nff_read.c \

@@ -2,6 +2,7 @@
 #include "host-tools/scene/scene_file.h"
 
 #include <errno.h>
+#include <stddef.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -9,6 +10,7 @@
 #include "host-tools/scene/nff_read.h"
 #include "host-tools/scene/scene_board.h"
 #include "host-tools/scene/scene_import.h"
+#include "host-tools/scene/scene_opts.h"
 #include "proto/machines.h"
 #include "host-tools/scene/scene_desc.h"
 
@@ -151,8 +153,8 @@ static int scene_file_bytes_any(const char *path, const struct scene_file_opts *
         return scene_file_compile(path, o, buf, len, info, err, errlen);
     const char *change = scene_opts_given(o);
     if (change) {
-        snprintf(err, errlen, "%s: %s needs a text scene, not a compiled one%s", path, change,
-                 strcmp(change, "--paper") == 0
+        snprintf(err, errlen, "%s: --%s needs a text scene, not a compiled one%s", path, change,
+                 strcmp(change, "paper") == 0
                      ? " (give the text scene, or compile it with options { paper on })" : "");
         return -1;
     }
@@ -242,84 +244,136 @@ void scene_opts_apply(const struct scene_file_opts *o, struct sd_scene *s)
         s->view.flags = scene_opts_bit(s->view.flags, SCN_OPT_NO_REFRACTION, !o->refraction);
 }
 
+/* A scene option's field and value: a switch (given when not 0), a
+ * number or on|off (given when not below 0), or the size (given when
+ * width is not 0). */
+enum scene_opt_value {
+    SCENE_VALUE_NONE,   /* an int, no value */
+    SCENE_VALUE_INT,    /* an int, written "%d" */
+    SCENE_VALUE_DOUBLE, /* a double, written "%.17g" */
+    SCENE_VALUE_ON_OFF, /* an int, written on (1) or off (0) */
+    SCENE_VALUE_WXH,    /* width and height, written "WxH" */
+};
+
+/* Which commands an option goes to again (scene_opts_words), and whether
+ * --auto chooses it itself (scene_opts_model_given). */
+enum scene_opt_use {
+    SCENE_USE_JUDGED, /* changes what a pre-render judges: in every use */
+    SCENE_USE_MODEL,  /* judged, and one --auto chooses */
+    SCENE_USE_OWN,    /* only in SCENE_OPTS_ALL: not in a pre-render */
+};
+
+/* An option of scene_optdefs (its name) as a field of struct
+ * scene_file_opts. */
+struct scene_opt_field {
+    int code;
+    enum scene_opt_value kind;
+    size_t offset;
+    enum scene_opt_use use;
+};
+
+#define SCENE_OPT_FIELD(code, kind, field, use) \
+    {code, kind, offsetof(struct scene_file_opts, field), use}
+
+/* In the order scene_opts_given looks and scene_opts_words writes. */
+static const struct scene_opt_field scene_opt_fields[] = {
+    SCENE_OPT_FIELD(SCENE_OPT_SIZE, SCENE_VALUE_WXH, width, SCENE_USE_OWN),
+    SCENE_OPT_FIELD(SCENE_OPT_MAX_DEPTH, SCENE_VALUE_INT, max_depth, SCENE_USE_JUDGED),
+    SCENE_OPT_FIELD(SCENE_OPT_MIN_WEIGHT, SCENE_VALUE_DOUBLE, min_weight, SCENE_USE_MODEL),
+    SCENE_OPT_FIELD(SCENE_OPT_DENSITY_STEPS, SCENE_VALUE_INT, density_steps, SCENE_USE_MODEL),
+    SCENE_OPT_FIELD(SCENE_OPT_AA, SCENE_VALUE_INT, aa_depth, SCENE_USE_JUDGED),
+    SCENE_OPT_FIELD(SCENE_OPT_AA_THRESHOLD, SCENE_VALUE_DOUBLE, aa_threshold, SCENE_USE_JUDGED),
+    SCENE_OPT_FIELD(SCENE_OPT_NO_AA, SCENE_VALUE_NONE, no_aa, SCENE_USE_JUDGED),
+    SCENE_OPT_FIELD(SCENE_OPT_REFRACTIONLESS, SCENE_VALUE_ON_OFF, refractionless,
+                    SCENE_USE_JUDGED),
+    SCENE_OPT_FIELD(SCENE_OPT_REFRACTION, SCENE_VALUE_ON_OFF, refraction, SCENE_USE_JUDGED),
+    SCENE_OPT_FIELD(SCENE_OPT_NO_AUTO_HIERARCHY, SCENE_VALUE_NONE, no_auto_hierarchy,
+                    SCENE_USE_JUDGED),
+    SCENE_OPT_FIELD(SCENE_OPT_MARK_LOST, SCENE_VALUE_NONE, mark_lost, SCENE_USE_OWN),
+    SCENE_OPT_FIELD(SCENE_OPT_CHECK_LOST, SCENE_VALUE_NONE, check_lost, SCENE_USE_OWN),
+    SCENE_OPT_FIELD(SCENE_OPT_WORLD_SPACE, SCENE_VALUE_NONE, world_space, SCENE_USE_OWN),
+    SCENE_OPT_FIELD(SCENE_OPT_PAPER, SCENE_VALUE_NONE, paper, SCENE_USE_MODEL),
+    SCENE_OPT_FIELD(SCENE_OPT_SPD_RULES, SCENE_VALUE_NONE, spd_rules, SCENE_USE_MODEL),
+};
+#define SCENE_OPT_FIELDS (sizeof scene_opt_fields / sizeof scene_opt_fields[0])
+_Static_assert(SCENE_OPT_FIELDS + 1 <= SCENE_OPTS_MAX_FLAGS, "a flag buffer for each option");
+
+/* 1 when o gives the option of f. */
+static int scene_opt_is_given(const struct scene_file_opts *o, const struct scene_opt_field *f)
+{
+    const char *p = (const char *)o + f->offset;
+    if (f->kind == SCENE_VALUE_DOUBLE)
+        return *(const double *)p >= 0;
+    if (f->kind == SCENE_VALUE_NONE || f->kind == SCENE_VALUE_WXH)
+        return *(const int *)p != 0;
+    return *(const int *)p >= 0;
+}
+
+/* The value o gives the option of f as a word (in buf when a number), or
+ * NULL for a switch. */
+static const char *scene_opt_value(const struct scene_file_opts *o,
+                                   const struct scene_opt_field *f, char *buf, size_t n)
+{
+    const char *p = (const char *)o + f->offset;
+    switch (f->kind) {
+    case SCENE_VALUE_NONE: return NULL;
+    case SCENE_VALUE_ON_OFF: return *(const int *)p ? "on" : "off";
+    case SCENE_VALUE_INT: snprintf(buf, n, "%d", *(const int *)p); break;
+    case SCENE_VALUE_DOUBLE: snprintf(buf, n, "%.17g", *(const double *)p); break;
+    case SCENE_VALUE_WXH: snprintf(buf, n, "%dx%d", o->width, o->height); break;
+    }
+    return buf;
+}
+
+/* The name of the first option of scene_opt_fields o gives, of those
+ * --auto chooses when model, or NULL. */
+static const char *scene_opts_first(const struct scene_file_opts *o, int model)
+{
+    for (size_t i = 0; i < SCENE_OPT_FIELDS; i++) {
+        const struct scene_opt_field *f = &scene_opt_fields[i];
+        if ((!model || f->use == SCENE_USE_MODEL) && scene_opt_is_given(o, f))
+            return scene_opts_name(f->code);
+    }
+    return NULL;
+}
+
 const char *scene_opts_model_given(const struct scene_file_opts *o)
 {
-    return o->min_weight >= 0 ? "--min-weight" : o->density_steps >= 0 ? "--density-steps"
-           : o->paper ? "--paper" : o->spd_rules ? "--spd-rules" : NULL;
+    return scene_opts_first(o, 1);
 }
 
 const char *scene_opts_given(const struct scene_file_opts *o)
 {
-    return o->width ? "--size" : o->max_depth >= 0 ? "--max-depth"
-           : o->min_weight >= 0 ? "--min-weight"
-           : o->density_steps >= 0 ? "--density-steps"
-           : o->aa_depth >= 0 ? "--aa" : o->aa_threshold >= 0 ? "--aa-threshold"
-           : o->no_aa ? "--no-aa"
-           : o->refractionless >= 0 ? "--refractionless"
-           : o->refraction >= 0 ? "--refraction"
-           : o->no_auto_hierarchy ? "--no-auto-hierarchy"
-           : o->mark_lost ? "--mark-lost"
-           : o->check_lost ? "--check-lost"
-           : o->world_space ? "--world-space"
-           : o->paper ? "--paper" : o->spd_rules ? "--spd-rules" : NULL;
+    return scene_opts_first(o, 0);
 }
 
-/* A word for a switch that is given. */
-static void scene_opts_switch(struct scene_opts_words *w, int *n, int on, const char *word)
+/* The word "--NAME" of option code, in w's next flag buffer. */
+static const char *scene_opts_flag(struct scene_opts_words *w, int *flags, int code)
 {
-    if (on)
-        w->w[(*n)++] = word;
-}
-
-/* A word and its value. */
-static void scene_opts_pair(struct scene_opts_words *w, int *n, const char *word,
-                            const char *value)
-{
-    w->w[(*n)++] = word;
-    w->w[(*n)++] = value;
+    char *buf = w->flag[(*flags)++];
+    snprintf(buf, sizeof w->flag[0], "--%s", scene_opts_name(code));
+    return buf;
 }
 
 int scene_opts_words(const struct scene_file_opts *o, enum scene_opts_for use,
                      struct scene_opts_words *w)
 {
-    int n = 0, all = use == SCENE_OPTS_ALL;
-    if (all && o->width) {
-        snprintf(w->size, sizeof w->size, "%dx%d", o->width, o->height);
-        scene_opts_pair(w, &n, "--size", w->size);
+    int n = 0, flags = 0;
+    for (size_t i = 0; i < SCENE_OPT_FIELDS; i++) {
+        const struct scene_opt_field *f = &scene_opt_fields[i];
+        if ((use != SCENE_OPTS_ALL && f->use == SCENE_USE_OWN) || !scene_opt_is_given(o, f))
+            continue;
+        const char *value = scene_opt_value(o, f, w->value[flags], sizeof w->value[0]);
+        w->w[n++] = scene_opts_flag(w, &flags, f->code);
+        if (value)
+            w->w[n++] = value;
     }
-    if (o->max_depth >= 0) {
-        snprintf(w->depth, sizeof w->depth, "%d", o->max_depth);
-        scene_opts_pair(w, &n, "--max-depth", w->depth);
+    const char *from = o->textures_from[0] ? scene_opts_flag(w, &flags, SCENE_OPT_TEXTURES_FROM)
+                                           : NULL;
+    for (int i = 0; i < SD_TEXTURES_FROM_MAX && o->textures_from[i]; i++) {
+        w->w[n++] = from;
+        w->w[n++] = o->textures_from[i];
     }
-    if (o->min_weight >= 0) {
-        snprintf(w->weight, sizeof w->weight, "%.17g", o->min_weight);
-        scene_opts_pair(w, &n, "--min-weight", w->weight);
-    }
-    if (o->density_steps >= 0) {
-        snprintf(w->steps, sizeof w->steps, "%d", o->density_steps);
-        scene_opts_pair(w, &n, "--density-steps", w->steps);
-    }
-    if (o->aa_depth >= 0) {
-        snprintf(w->aa, sizeof w->aa, "%d", o->aa_depth);
-        scene_opts_pair(w, &n, "--aa", w->aa);
-    }
-    if (o->aa_threshold >= 0) {
-        snprintf(w->aa_threshold, sizeof w->aa_threshold, "%.17g", o->aa_threshold);
-        scene_opts_pair(w, &n, "--aa-threshold", w->aa_threshold);
-    }
-    scene_opts_switch(w, &n, o->no_aa, "--no-aa");
-    if (o->refraction >= 0)
-        scene_opts_pair(w, &n, "--refraction", o->refraction ? "on" : "off");
-    if (o->refractionless >= 0)
-        scene_opts_pair(w, &n, "--refractionless", o->refractionless ? "on" : "off");
-    scene_opts_switch(w, &n, o->no_auto_hierarchy, "--no-auto-hierarchy");
-    scene_opts_switch(w, &n, all && o->mark_lost, "--mark-lost");
-    scene_opts_switch(w, &n, all && o->check_lost, "--check-lost");
-    scene_opts_switch(w, &n, all && o->world_space, "--world-space");
-    scene_opts_switch(w, &n, o->paper, "--paper");
-    scene_opts_switch(w, &n, o->spd_rules, "--spd-rules");
-    for (int i = 0; i < SD_TEXTURES_FROM_MAX && o->textures_from[i]; i++)
-        scene_opts_pair(w, &n, "--textures-from", o->textures_from[i]);
     w->w[n] = NULL;
     return n;
 }

@@ -80,12 +80,13 @@ void scene_file_frame_path(const char *out, long frame, char *buf, size_t n);
  * paper mode faceted cones or cylinders, a line on stderr says how many. */
 void scene_opts_apply(const struct scene_file_opts *o, struct sd_scene *s);
 
-/* The first option o gives that changes the scene ("--max-depth"), or
- * NULL when none does (--textures-from changes nothing). */
+/* The name (without "--") of the first option o gives that changes the
+ * scene ("max-depth"), or NULL when none does (--textures-from changes
+ * nothing). */
 const char *scene_opts_given(const struct scene_file_opts *o);
 
-/* The first option o gives of those --auto chooses itself (min_weight,
- * density steps, paper mode's fixed depth), or NULL. */
+/* The name of the first option o gives of those --auto chooses itself
+ * (min_weight, density steps, paper mode's fixed depth), or NULL. */
 const char *scene_opts_model_given(const struct scene_file_opts *o);
 
 /* The words that give o again on a command line: every option o gives,
@@ -94,9 +95,10 @@ const char *scene_opts_model_given(const struct scene_file_opts *o);
  * sets, nor --mark-lost, --check-lost and --world-space). */
 enum scene_opts_for { SCENE_OPTS_ALL, SCENE_OPTS_PRE_RENDER };
 #define SCENE_OPTS_MAX_WORDS (2 * (16 + SD_TEXTURES_FROM_MAX) + 1)
+#define SCENE_OPTS_MAX_FLAGS 16 /* options o can give, --textures-from once */
 struct scene_opts_words {
     const char *w[SCENE_OPTS_MAX_WORDS]; /* NULL-ended */
-    char size[32], depth[16], weight[40], steps[16], aa[16], aa_threshold[40];
+    char flag[SCENE_OPTS_MAX_FLAGS][24], value[SCENE_OPTS_MAX_FLAGS][40];
 };
 /* Fills w from o; the count of words. */
 int scene_opts_words(const struct scene_file_opts *o, enum scene_opts_for use,

@@ -1,9 +1,10 @@
 /* scene_opts.h: the options that change a text scene before it is
  * compiled (struct scene_file_opts), each defined once here: its name,
- * value, range, help line and the field it sets.  `links1 render`,
- * `links1 ref` (and links1-ref-<arith>) read them through this table and
- * print its help.  scene_file.h applies them, names them and writes them
- * as words again for a command line of a child. */
+ * value, range, help line and the field it sets (scene_optdefs.c; read
+ * by scene_opts.c).  `links1 render`, `links1 ref` (and
+ * links1-ref-<arith>) read them through this table and print its help.
+ * scene_file.h applies them, names them and writes them as words again
+ * for a command line of a child, by these definitions' names. */
 #ifndef LINKS1_HOST_SCENE_OPTS_H
 #define LINKS1_HOST_SCENE_OPTS_H
 
@@ -33,6 +34,9 @@ enum scene_opt_code {
 
 /* The definitions, ending with CLI_OPTDEF_END. */
 extern const struct cli_optdef scene_optdefs[];
+
+/* The name (without "--") of the definition of code, or NULL. */
+const char *scene_opts_name(int code);
 
 /* The scene option cli_next returned as code taken into o: 1 taken, 0
  * not a scene option, -1 after saying what is wrong with its value. */

@@ -14,22 +14,15 @@
 #     (--charts-only: the chart again from DIR/aa.tsv, nothing run)
 set -eu
 cd "$(dirname "$0")/../.."
-out=build/bench-aa
-CHARTS_ONLY=0
-while [ $# -gt 0 ]; do
-    case $1 in
-    --out) out=$2; shift 2 ;;
-    --charts-only) CHARTS_ONLY=1; shift ;;
-    *) echo "usage: bench_aa.sh [--out DIR] [--charts-only]" >&2; exit 2 ;;
-    esac
-done
+. tests/bench/bench_args.sh
+bench_args bench_aa.sh build/bench-aa "$@"
 SIZE=${SIZE:-96x72}
 NCS=${AA_NCS:-4}
 SUPER=${AA_SUPER:-16}
 export FW_DIR=${FW_DIR:-build}
 mkdir -p "$out"
 scenes="scenes/demo.scn scenes/glass.scn $out/balls1.scn"
-if [ "$CHARTS_ONLY" = 0 ]; then # measure; --charts-only redraws from DIR/aa.tsv
+if bench_measuring; then # --charts-only redraws from DIR/aa.tsv
 make -s --no-print-directory build/links1 build/links1-spd build/links1-ref-double \
     build/links1-ref-float
 build/links1-spd balls 1 -o "$out/balls1.scn" --size "$SIZE" >/dev/null

@@ -8,69 +8,22 @@
  * corners), a threshold over every difference cuts none; supersampling
  * with one sample a pixel is render_pixel's image. */
 #include "tests/check.h"
+#include "tests/host/render_fixture.h"
 #include "tests/host/test_blob_util.h"
 #include "render/vec3.h"
 
 #define TA_DIV 8 /* demo and glass at 40x30 */
 
-typedef struct {
-    render_blob_t *blob;
-    render_frame_t *f; /* the test's own copy: its options are changed */
-    void *clip_mem;
-    render_clip_t clip;
-} ta_scene_t;
-
 /* Scene name at 1/div of its size, with anti-aliasing at depth and
  * threshold (the test's own frame), clipping set up for it. */
-static int ta_open(ta_scene_t *t, const char *name, int div, int depth, double threshold)
+static int ta_open(rf_scene_t *t, const char *name, int div, int depth, double threshold)
 {
-    size_t size;
-    memset(t, 0, sizeof *t);
-    t->blob = tb_blob_div(name, 0, div, &size);
-    if (!t->blob)
+    if (!rf_load(t, name, 0, div))
         return 0;
-    t->f = (render_frame_t *)t->blob->frame;
     t->f->options.antialias = depth >= 0;
     t->f->options.aa_depth = (uint8_t)(depth >= 0 ? depth : 0);
     t->f->options.aa_threshold = num_from_double(threshold);
-    size_t bytes = render_clip_bytes(t->f);
-    t->clip_mem = malloc(bytes);
-    return render_clip_init(&t->clip, t->f, t->clip_mem, bytes) == RENDER_OK;
-}
-
-static void ta_close(ta_scene_t *t)
-{
-    free(t->blob);
-    free(t->clip_mem);
-}
-
-/* The whole image by areas of tw x th through render_area. */
-static rgb8_t *ta_render_areas(ta_scene_t *t, uint32_t tw, uint32_t th,
-                               const render_clip_options_t *opt, render_stats_t *stats)
-{
-    const render_frame_t *f = t->f;
-    rgb8_t *img = calloc((size_t)f->width * f->height, sizeof *img);
-    rgb8_t *tile = calloc((size_t)tw * th, sizeof *tile);
-    render_ctx_t ctx;
-    render_ctx_init(&ctx, f);
-    for (uint32_t y = 0; y < f->height; y += th)
-        for (uint32_t x = 0; x < f->width; x += tw) {
-            render_area_t a = {x, y, f->width - x < tw ? f->width - x : tw,
-                               f->height - y < th ? f->height - y : th};
-            CHECK_EQ_INT(render_area(&ctx, &t->clip, &a, opt, tile), RENDER_OK);
-            for (uint32_t r = 0; r < a.h; r++)
-                memcpy(img + (size_t)(y + r) * f->width + x, tile + r * a.w, a.w * sizeof *tile);
-        }
-    free(tile);
-    *stats = ctx.stats;
-    return img;
-}
-
-static int ta_same_rays(const render_stats_t *a, const render_stats_t *b)
-{
-    return a->primary == b->primary && a->primary_hit == b->primary_hit &&
-           a->shadow == b->shadow && a->reflection == b->reflection &&
-           a->refraction == b->refraction;
+    return rf_clip(t);
 }
 
 /* One area over the screen, areas of five shapes clipped four ways, and
@@ -80,7 +33,7 @@ static void test_aa_areas_same(void)
     const char *names[] = {"demo", "glass"};
     static const uint32_t shapes[5][2] = {{16, 16}, {7, 5}, {1000, 1}, {1, 1000}, {33, 9}};
     for (int s = 0; s < 2; s++) {
-        ta_scene_t t;
+        rf_scene_t t;
         CHECK(ta_open(&t, names[s], TA_DIV, 2, 0.1));
         if (!t.blob)
             continue;
@@ -89,18 +42,18 @@ static void test_aa_areas_same(void)
                               ylist = {1, 0, NULL, 1}, none = {0, 0, NULL, 0};
         const render_clip_options_t *modes[4] = {&tree, &lists, &ylist, &none};
         render_stats_t whole_st, st;
-        rgb8_t *whole = ta_render_areas(&t, t.f->width, t.f->height, &tree, &whole_st);
+        rgb8_t *whole = rf_areas(&t, t.f->width, t.f->height, NULL, &tree, &whole_st);
         uint64_t corners = (uint64_t)(t.f->width + 1) * (t.f->height + 1);
         CHECK(whole_st.primary > corners);
         int same = 1, rays = 1;
         for (int k = 0; k < 5; k++) { /* each shape one way, each way at least once */
             int m = k % 4;
-            rgb8_t *img = ta_render_areas(&t, shapes[k][0], shapes[k][1], modes[m], &st);
-            if (!tb_same(whole, img, n) || !ta_same_rays(&whole_st, &st))
+            rgb8_t *img = rf_areas(&t, shapes[k][0], shapes[k][1], NULL, modes[m], &st);
+            if (!tb_same(whole, img, n) || !rf_same_rays(&whole_st, &st))
                 printf("%s: areas %ux%u (mode %d) differ from the whole screen's\n", names[s],
                        shapes[k][0], shapes[k][1], m);
             same &= tb_same(whole, img, n);
-            rays &= ta_same_rays(&whole_st, &st);
+            rays &= rf_same_rays(&whole_st, &st);
             free(img);
         }
         CHECK(same);
@@ -112,7 +65,7 @@ static void test_aa_areas_same(void)
                t.f->height, (unsigned long long)whole_st.primary, (unsigned long long)corners);
         free(plain);
         free(whole);
-        ta_close(&t);
+        rf_close(&t);
     }
 }
 
@@ -148,26 +101,23 @@ static void test_aa_corner_mean(void)
 {
     double settings[3][2] = {{0, 0.1}, {3, 1000}, {-1, 0}}; /* depth -1: spd_rules */
     for (int k = 0; k < 3; k++) {
-        ta_scene_t t;
+        rf_scene_t t;
         CHECK(ta_open(&t, "demo", TA_DIV, (int)settings[k][0], settings[k][1]));
         if (!t.blob)
             continue;
         if (settings[k][0] < 0) {
             t.f->options.spd_rules = 1;
-            free(t.clip_mem);
-            size_t bytes = render_clip_bytes(t.f);
-            t.clip_mem = malloc(bytes);
-            CHECK_EQ_INT(render_clip_init(&t.clip, t.f, t.clip_mem, bytes), RENDER_OK);
+            CHECK(rf_clip(&t));
         }
         render_clip_options_t tree = {1, 1, NULL, 0};
         render_stats_t st;
-        rgb8_t *img = ta_render_areas(&t, 16, 16, &tree, &st);
+        rgb8_t *img = rf_areas(&t, 16, 16, NULL, &tree, &st);
         CHECK_EQ_INT(st.primary, (uint64_t)(t.f->width + 1) * (t.f->height + 1));
         if (!ta_is_corner_mean(t.f, img))
             printf("setting %d: not the mean of the corners\n", k);
         CHECK(ta_is_corner_mean(t.f, img));
         free(img);
-        ta_close(&t);
+        rf_close(&t);
     }
 }
 
@@ -180,7 +130,7 @@ static void test_aa_corner_mean(void)
  * each the mean of its corners (render_corner): the same points. */
 static void test_aa_cut_counts(void)
 {
-    ta_scene_t t;
+    rf_scene_t t;
     CHECK(ta_open(&t, "demo", TA_DIV, 2, -1));
     if (!t.blob)
         return;
@@ -188,10 +138,10 @@ static void test_aa_cut_counts(void)
     uint64_t corners = (uint64_t)(t.f->width + 1) * (t.f->height + 1);
     render_clip_options_t tree = {1, 1, NULL, 0};
     render_stats_t all, zero;
-    rgb8_t *cut = ta_render_areas(&t, 16, 16, &tree, &all);
+    rgb8_t *cut = rf_areas(&t, 16, 16, NULL, &tree, &all);
     CHECK_EQ_INT(all.primary, corners + n * (5 + 4 * 5));
     t.f->options.aa_threshold = NUM_ZERO;
-    rgb8_t *some = ta_render_areas(&t, 16, 16, &tree, &zero);
+    rgb8_t *some = rf_areas(&t, 16, 16, NULL, &tree, &zero);
     CHECK(zero.primary > corners && zero.primary < all.primary);
     CHECK(!ta_is_corner_mean(t.f, some));
     free(some);
@@ -199,8 +149,8 @@ static void test_aa_cut_counts(void)
     /* depth 1 against the frame at twice the size */
     t.f->options.aa_depth = 1;
     t.f->options.aa_threshold = num_from_double(-1);
-    cut = ta_render_areas(&t, 16, 16, &tree, &all);
-    ta_scene_t fine;
+    cut = rf_areas(&t, 16, 16, NULL, &tree, &all);
+    rf_scene_t fine;
     CHECK(ta_open(&fine, "demo", TA_DIV / 2, -1, 0));
     if (fine.blob) {
         render_ctx_t ctx;
@@ -224,10 +174,10 @@ static void test_aa_cut_counts(void)
                         got.b == num_to_u8(m.b);
             }
         CHECK(same);
-        ta_close(&fine);
+        rf_close(&fine);
     }
     free(cut);
-    ta_close(&t);
+    rf_close(&t);
 }
 
 /* render_pixel_supersampled: one sample a pixel is its centre ray (the
@@ -235,7 +185,7 @@ static void test_aa_cut_counts(void)
  * trace n^2 camera rays a pixel and give another image. */
 static void test_supersample(void)
 {
-    ta_scene_t t;
+    rf_scene_t t;
     CHECK(ta_open(&t, "demo", TA_DIV, -1, 0));
     if (!t.blob)
         return;
@@ -258,7 +208,7 @@ static void test_supersample(void)
     free(img[0]);
     free(img[1]);
     free(plain);
-    ta_close(&t);
+    rf_close(&t);
 }
 
 int main(void)

@@ -7,6 +7,7 @@
  * cluster's tree rectangle) equals the old walk over every cluster on
  * random areas, also on a scene of thousands of clusters. */
 #include "tests/check.h"
+#include "tests/host/render_fixture.h"
 #include "tests/host/test_blob_util.h"
 
 #define TC_TILE 16 /* side of the square areas the whole-image tests use */
@@ -16,30 +17,9 @@
  * arithmetics) were most of make test's host time at full size. */
 #define TC_SIZE_DIV 2
 
-typedef struct {
-    render_blob_t *blob;
-    const render_frame_t *f;
-    void *clip_mem;
-    render_clip_t clip;
-} tc_scene_t;
-
-static int tc_open(tc_scene_t *t, const char *name)
+static int tc_open(rf_scene_t *t, const char *name)
 {
-    size_t size;
-    memset(t, 0, sizeof *t);
-    t->blob = tb_blob_div(name, strcmp(name, "anim") == 0 ? 2 : 0, TC_SIZE_DIV, &size);
-    if (!t->blob)
-        return 0;
-    t->f = t->blob->frame;
-    size_t bytes = render_clip_bytes(t->f);
-    t->clip_mem = malloc(bytes);
-    return render_clip_init(&t->clip, t->f, t->clip_mem, bytes) == RENDER_OK;
-}
-
-static void tc_close(tc_scene_t *t)
-{
-    free(t->blob);
-    free(t->clip_mem);
+    return rf_open(t, name, strcmp(name, "anim") == 0 ? 2 : 0, TC_SIZE_DIV);
 }
 
 static int tc_meets(const render_cluster_t *c, const render_area_t *a)
@@ -87,7 +67,7 @@ static uint32_t tc_areas(const render_frame_t *f, render_area_t *out, uint32_t m
 static void test_clip_y_matches_brute_force(void)
 {
     for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
-        tc_scene_t t;
+        rf_scene_t t;
         CHECK(tc_open(&t, tb_scenes[s]));
         if (!t.blob)
             continue;
@@ -113,7 +93,7 @@ static void test_clip_y_matches_brute_force(void)
         CHECK(sorted);
         CHECK(some_cut); /* Y clipping leaves clusters out somewhere */
         free(want);
-        tc_close(&t);
+        rf_close(&t);
     }
 }
 
@@ -147,7 +127,7 @@ static char *tc_scatter_text(uint32_t n, uint32_t seed)
 }
 
 /* The scattered scene compiled as a blob, in t (as tc_open). */
-static int tc_open_scatter(tc_scene_t *t, uint32_t n, uint32_t seed)
+static int tc_open_scatter(rf_scene_t *t, uint32_t n, uint32_t seed)
 {
     char err[SD_ERR_MAX];
     struct sd_scene s;
@@ -173,9 +153,7 @@ static int tc_open_scatter(tc_scene_t *t, uint32_t n, uint32_t seed)
     if (!t->blob)
         return 0;
     t->f = t->blob->frame;
-    size_t bytes = render_clip_bytes(t->f);
-    t->clip_mem = malloc(bytes);
-    return render_clip_init(&t->clip, t->f, t->clip_mem, bytes) == RENDER_OK;
+    return rf_clip(t);
 }
 
 /* Each cluster's tree rectangle is exactly the union of the screen
@@ -231,7 +209,7 @@ static void test_clip_y_tree_walk_random_areas(void)
 {
     uint32_t rs = 12345u;
     for (size_t s = 0; s < TB_SCENE_COUNT + 2; s++) {
-        tc_scene_t t;
+        rf_scene_t t;
         const char *name = s < TB_SCENE_COUNT ? tb_scenes[s] : s == TB_SCENE_COUNT ? "scatter 3000" : "scatter 200";
         int ok = s < TB_SCENE_COUNT ? tc_open(&t, name) : tc_open_scatter(&t, s == TB_SCENE_COUNT ? 3000 : 200, 7u + (uint32_t)s);
         CHECK(ok);
@@ -275,7 +253,7 @@ static void test_clip_y_tree_walk_random_areas(void)
         if (s == TB_SCENE_COUNT)
             CHECK(pruned); /* whole subtrees off the area: the walk skips them */
         free(want);
-        tc_close(&t);
+        rf_close(&t);
     }
 }
 
@@ -284,7 +262,7 @@ static void test_clip_y_tree_walk_random_areas(void)
 static void test_clip_x_matches_brute_force(void)
 {
     for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
-        tc_scene_t t;
+        rf_scene_t t;
         CHECK(tc_open(&t, tb_scenes[s]));
         if (!t.blob)
             continue;
@@ -336,30 +314,8 @@ static void test_clip_x_matches_brute_force(void)
         CHECK(z_sorted);
         CHECK(checked > (uint64_t)t.f->width * t.f->height);
         free(mark);
-        tc_close(&t);
+        rf_close(&t);
     }
-}
-
-/* The whole image by areas of TC_TILE x TC_TILE through render_area. */
-static rgb8_t *tc_render_areas(tc_scene_t *t, const render_options_t *options,
-                               const render_clip_options_t *opt, render_stats_t *stats)
-{
-    const render_frame_t *f = t->f;
-    rgb8_t *img = calloc((size_t)f->width * f->height, sizeof *img);
-    rgb8_t tile[TC_TILE * TC_TILE];
-    render_ctx_t ctx;
-    render_ctx_init(&ctx, f);
-    ctx.options = *options;
-    for (uint32_t y = 0; y < f->height; y += TC_TILE)
-        for (uint32_t x = 0; x < f->width; x += TC_TILE) {
-            render_area_t a = {x, y, f->width - x < TC_TILE ? f->width - x : TC_TILE,
-                               f->height - y < TC_TILE ? f->height - y : TC_TILE};
-            CHECK_EQ_INT(render_area(&ctx, &t->clip, &a, opt, tile), RENDER_OK);
-            for (uint32_t r = 0; r < a.h; r++)
-                memcpy(img + (size_t)(y + r) * f->width + x, tile + r * a.w, a.w * sizeof *tile);
-        }
-    *stats = ctx.stats;
-    return img;
 }
 
 /* Clipping, by the paper's lists and in the tree, gives render_pixel's
@@ -368,7 +324,7 @@ static rgb8_t *tc_render_areas(tc_scene_t *t, const render_options_t *options,
 static void test_clipped_render_same_image(void)
 {
     for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
-        tc_scene_t t;
+        rf_scene_t t;
         CHECK(tc_open(&t, tb_scenes[s]));
         if (!t.blob)
             continue;
@@ -377,7 +333,7 @@ static void test_clipped_render_same_image(void)
         rgb8_t *plain = tb_render_plain(t.f, &plain_stats);
         for (int lists = 1; lists >= 0; lists--) {
             render_clip_options_t both = {1, 1, NULL, (uint8_t)lists};
-            rgb8_t *clipped = tc_render_areas(&t, &t.f->options, &both, &clip_stats);
+            rgb8_t *clipped = rf_areas(&t, TC_TILE, TC_TILE, NULL, &both, &clip_stats);
             if (!tb_same(plain, clipped, n))
                 printf("%s: clipped image differs (%s)\n", tb_scenes[s], lists ? "lists" : "tree");
             CHECK(tb_same(plain, clipped, n));
@@ -404,7 +360,7 @@ static void test_clipped_render_same_image(void)
             free(clipped);
         }
         free(plain);
-        tc_close(&t);
+        rf_close(&t);
     }
 }
 
@@ -414,7 +370,7 @@ static void test_area_switches_same_image(void)
 {
     const char *names[] = {"demo", "city"};
     for (int s = 0; s < 2; s++) {
-        tc_scene_t t;
+        rf_scene_t t;
         CHECK(tc_open(&t, names[s]));
         if (!t.blob)
             continue;
@@ -423,7 +379,7 @@ static void test_area_switches_same_image(void)
         on.use_bounds = on.use_hierarchy = 1;
         render_clip_options_t both = {1, 1, NULL, 1};
         render_stats_t ref_stats, st;
-        rgb8_t *ref = tc_render_areas(&t, &on, &both, &ref_stats);
+        rgb8_t *ref = rf_areas(&t, TC_TILE, TC_TILE, &on, &both, &ref_stats);
         for (int off = 0; off < 6; off++) {
             render_options_t o = on;
             render_clip_options_t c = both;
@@ -438,7 +394,7 @@ static void test_area_switches_same_image(void)
             if (off == 5)
                 c.lists = 0; /* clipping in the tree */
             uint64_t y_kept = t.clip.y_kept, x_kept = t.clip.x_kept;
-            rgb8_t *img = tc_render_areas(&t, &o, &c, &st);
+            rgb8_t *img = rf_areas(&t, TC_TILE, TC_TILE, &o, &c, &st);
             if (!tb_same(ref, img, n))
                 printf("%s: switch set %d changes the image\n", names[s], off);
             CHECK(tb_same(ref, img, n));
@@ -459,14 +415,14 @@ static void test_area_switches_same_image(void)
             free(img);
         }
         free(ref);
-        tc_close(&t);
+        rf_close(&t);
     }
 }
 
 /* Memory is what render_clip_bytes says; bad areas are refused. */
 static void test_clip_memory_and_errors(void)
 {
-    tc_scene_t t;
+    rf_scene_t t;
     CHECK(tc_open(&t, "molecule"));
     if (!t.blob)
         return;
@@ -489,29 +445,7 @@ static void test_clip_memory_and_errors(void)
     CHECK_EQ_INT(render_area(&ctx, &c, &corner, &both, px), RENDER_OK);
     CHECK(render_status_name(RENDER_ERR_AREA)[0] != 0);
     free(mem);
-    tc_close(&t);
-}
-
-/* The whole image as one area: its corner rays each traced once. */
-static rgb8_t *tc_render_whole(tc_scene_t *t, const render_clip_options_t *opt,
-                               render_stats_t *stats)
-{
-    const render_frame_t *f = t->f;
-    rgb8_t *img = calloc((size_t)f->width * f->height, sizeof *img);
-    render_ctx_t ctx;
-    render_ctx_init(&ctx, f);
-    render_area_t all = {0, 0, f->width, f->height};
-    CHECK_EQ_INT(render_area(&ctx, &t->clip, &all, opt, img), RENDER_OK);
-    *stats = ctx.stats;
-    return img;
-}
-
-/* The SPD rules' counts agree: camera rays, hits and the rays they spawn. */
-static int tc_same_rays(const render_stats_t *a, const render_stats_t *b)
-{
-    return a->primary == b->primary && a->primary_hit == b->primary_hit &&
-           a->shadow == b->shadow && a->reflection == b->reflection &&
-           a->refraction == b->refraction;
+    rf_close(&t);
 }
 
 /* options.spd_rules: one area over the whole screen traces (w+1) x (h+1)
@@ -523,27 +457,25 @@ static void test_spd_rules_corners(void)
 {
     const char *names[] = {"demo", "glass"};
     for (int s = 0; s < 2; s++) {
-        tc_scene_t t;
+        rf_scene_t t;
         CHECK(tc_open(&t, names[s]));
         if (!t.blob)
             continue;
-        ((render_frame_t *)t.f)->options.spd_rules = 1; /* the test's own copy */
-        free(t.clip_mem);
-        size_t bytes = render_clip_bytes(t.f), n = (size_t)t.f->width * t.f->height;
-        t.clip_mem = malloc(bytes);
-        CHECK_EQ_INT(render_clip_init(&t.clip, t.f, t.clip_mem, bytes), RENDER_OK);
+        t.f->options.spd_rules = 1; /* the test's own copy */
+        size_t n = (size_t)t.f->width * t.f->height;
+        CHECK(rf_clip(&t));
         render_clip_options_t tree = {1, 1, NULL, 0}, lists = {1, 1, NULL, 1}, none = {0, 0, NULL, 0};
         render_stats_t whole_st, st;
-        rgb8_t *whole = tc_render_whole(&t, &tree, &whole_st);
+        rgb8_t *whole = rf_areas(&t, t.f->width, t.f->height, NULL, &tree, &whole_st);
         CHECK_EQ_INT(whole_st.primary, (uint64_t)(t.f->width + 1) * (t.f->height + 1));
         CHECK(whole_st.primary_hit > 0 && whole_st.primary_hit < whole_st.primary);
         const render_clip_options_t *modes[3] = {&tree, &lists, &none};
         for (int m = 0; m < 3; m++) {
-            rgb8_t *tiled = tc_render_areas(&t, &t.f->options, modes[m], &st);
-            if (!tb_same(whole, tiled, n) || !tc_same_rays(&whole_st, &st))
+            rgb8_t *tiled = rf_areas(&t, TC_TILE, TC_TILE, NULL, modes[m], &st);
+            if (!tb_same(whole, tiled, n) || !rf_same_rays(&whole_st, &st))
                 printf("%s: areas (mode %d) differ from the whole screen's\n", names[s], m);
             CHECK(tb_same(whole, tiled, n));
-            CHECK(tc_same_rays(&whole_st, &st));
+            CHECK(rf_same_rays(&whole_st, &st));
             free(tiled);
         }
         rgb8_t *plain = tb_render_plain(t.f, &st);
@@ -555,7 +487,7 @@ static void test_spd_rules_corners(void)
                (unsigned long long)whole_st.refraction, (unsigned long long)whole_st.shadow);
         free(plain);
         free(whole);
-        tc_close(&t);
+        rf_close(&t);
     }
 }
 

@@ -3,7 +3,8 @@
  * tests/models/, the wire form cut short or damaged never read as a model
  * that does not hold together, and a child that crashes, aborts, exits
  * badly, runs too long, sends too much or sends a malformed model each
- * named.  The inputs of tests/fuzz/assimp-crashes/ (on which libassimp
+ * named; an OBJ whose MTL is a FIFO or a device refused at once, naming
+ * it.  The inputs of tests/fuzz/assimp-crashes/ (on which libassimp
  * itself crashes) go through the child with the fuzz harness's own way of
  * reading them (model_load_memory).  Runs from the repository's top. */
 #define _GNU_SOURCE
@@ -16,6 +17,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <time.h>
 #include <unistd.h>
@@ -458,6 +460,55 @@ static void test_library_crashes_in_child(void)
     CHECK(inputs >= 3);
 }
 
+/* ------------------------------------ files the model names, as they are */
+
+/* An OBJ in dir whose MTL (name) is made by make, read through the child
+ * within 5 s: refused naming the MTL and what it is, well before then. */
+static void side_file_refused(const char *dir, const char *name, const char *what)
+{
+    char obj[PATH_MAX], want[PATH_MAX + 64], err[TEST_ERR_MAX] = "";
+    snprintf(obj, sizeof obj, "%s/uses_%s.obj", dir, name);
+    FILE *f = fopen(obj, "w");
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    fprintf(f, "mtllib %s\nusemtl a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", name);
+    fclose(f);
+    static const struct model_child_limits lim = {5000, MODEL_CHILD_MAX_BYTES, 0, 0};
+    struct model m;
+    long long t0 = now_ms();
+    int rc = model_child_load(obj, model_assimp_load, &lim, &m, err, sizeof err);
+    long long ms = now_ms() - t0;
+    snprintf(want, sizeof want, "%s/%s: not a regular file (%s): not read", dir, name, what);
+    if (rc == 0 || !strstr(err, want) || ms >= 4000) {
+        printf("  %s: rc %d after %lld ms, '%s'; want '%s'\n", obj, rc, ms, err, want);
+        CHECK(!"a file the model names that is not a regular file is refused, named, at once");
+    }
+    if (rc == 0)
+        model_free(&m);
+}
+
+/* An OBJ whose MTL is a FIFO (no writer: opening it to read would wait
+ * for ever), or a link to /dev/zero, is refused naming it. */
+static void test_side_files_refused(void)
+{
+    char dir[] = "/tmp/links1-test-model-XXXXXX", p[PATH_MAX];
+    CHECK(mkdtemp(dir) != NULL);
+    snprintf(p, sizeof p, "%s/fifo.mtl", dir);
+    CHECK(mkfifo(p, 0600) == 0);
+    side_file_refused(dir, "fifo.mtl", "a FIFO");
+    snprintf(p, sizeof p, "%s/zero.mtl", dir);
+    CHECK(symlink("/dev/zero", p) == 0);
+    side_file_refused(dir, "zero.mtl", "a device");
+    static const char *const made[] = {"fifo.mtl", "zero.mtl", "uses_fifo.mtl.obj",
+                                       "uses_zero.mtl.obj"};
+    for (size_t i = 0; i < sizeof made / sizeof made[0]; i++) {
+        snprintf(p, sizeof p, "%s/%s", dir, made[i]);
+        unlink(p);
+    }
+    CHECK(rmdir(dir) == 0);
+}
+
 int main(void)
 {
     RUN(test_child_same_as_in_process);
@@ -465,5 +516,6 @@ int main(void)
     RUN(test_children_that_fail);
     RUN(test_library_crashes_in_child);
     RUN(test_child_limits);
+    RUN(test_side_files_refused);
     return check_exit();
 }

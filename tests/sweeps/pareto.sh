@@ -38,15 +38,8 @@
 #     refraction off)
 set -eu
 cd "$(dirname "$0")/../.."
-out=build/pareto
-CHARTS_ONLY=0
-while [ $# -gt 0 ]; do
-    case $1 in
-    --out) out=$2; shift 2 ;;
-    --charts-only) CHARTS_ONLY=1; shift ;;
-    *) echo "usage: pareto.sh [--out DIR] [--charts-only]" >&2; exit 2 ;;
-    esac
-done
+. tests/bench/bench_args.sh
+bench_args pareto.sh build/pareto "$@"
 SMALL=${PARETO_SMALL:-0}
 if [ "$SMALL" = 1 ]; then
     SIZE=${SIZE:-40x30} RUNS=${RUNS:-1} DEPTHS=2 FRACS= STEPS=
@@ -68,7 +61,10 @@ front() {
     } >"$2"
 }
 
-if [ "$CHARTS_ONLY" = 0 ]; then # measure; --charts-only redraws from DIR/*.raw
+dm=5 # the depth of the escalated and fixed-format configurations, and the default's
+[ "$SMALL" = 1 ] && dm=2
+
+if bench_measuring; then # --charts-only redraws from DIR/*.raw
 mkdir -p "$out/bin"
 make -s --no-print-directory build/links1 build/links1-ref-double build/links1-ref-float \
     build/links1-ref-fixed
@@ -111,8 +107,6 @@ for d in $DEPTHS; do
     configs+=("float d$d fixed cutoff|build/links1-ref-float|--max-depth $d --min-weight 0")
     configs+=("double d$d adaptive|build/links1-ref-double|--max-depth $d")
 done
-dm=5
-[ "$SMALL" = 1 ] && dm=2
 configs+=("float d$dm adaptive, refraction off|build/links1-ref-float|--max-depth $dm --refraction off")
 configs+=("double d$dm fixed cutoff|build/links1-ref-double|--max-depth $dm --min-weight 0")
 configs+=("fixed Q12.19 d$dm adaptive|build/links1-ref-fixed|--max-depth $dm")
