@@ -802,7 +802,8 @@ int prim_aabb_entry_ray_axes(const aabb_t *b, const ray_t *ray, const aabb_ray_t
                 return 0;
             continue;
         }
-        if (!prim_slab_inv(o, r->inv[axis], lo, hi, &tnear, &tfar))
+        int neg = num_lt(r->inv[axis], NUM_ZERO);
+        if (!prim_slab_inv_faces(o, r->inv[axis], neg ? hi : lo, neg ? lo : hi, &tnear, &tfar))
             return 0;
     }
     *entry = tnear;

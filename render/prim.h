@@ -130,13 +130,41 @@ static inline int prim_slab_narrow(num_t t1, num_t t2, num_t *tnear, num_t *tfar
     return !num_gt(*tnear, *tfar);
 }
 
-/* One slab by the reciprocal: prim.c's prim_slab with a product for the
- * division. */
-static inline int prim_slab_inv(num_t o, num_t inv, num_t lo, num_t hi, num_t *tnear,
-                                num_t *tfar)
+/* One slab by the reciprocal (prim.c's prim_slab with a product for the
+ * division), which the ray enters by face near_face and leaves by far_face:
+ * lo and hi, swapped where the reciprocal is negative.  Rounding is
+ * monotonic, so of a box that is not empty the first product is never the
+ * larger: the t of both faces, in prim_slab_narrow's order without its
+ * comparison. */
+static inline int prim_slab_inv_faces(num_t o, num_t inv, num_t near_face, num_t far_face,
+                                      num_t *tnear, num_t *tfar)
 {
-    return prim_slab_narrow(num_mul(num_sub(lo, o), inv), num_mul(num_sub(hi, o), inv), tnear,
-                            tfar);
+    *tnear = num_max(*tnear, num_mul(num_sub(near_face, o), inv));
+    *tfar = num_min(*tfar, num_mul(num_sub(far_face, o), inv));
+    return !num_gt(*tnear, *tfar);
+}
+
+/* prim_aabb_entry_ray where r->all_inv, the ray's origin o passed by
+ * value (a walk keeps it and r in registers).  An empty box (lo > hi:
+ * render/prepare.c's) is missed. */
+static inline __attribute__((always_inline)) int prim_aabb_entry_inv(const aabb_t *b, vec3_t o,
+                                                                      const aabb_ray_t *r,
+                                                                      num_t tmin, num_t tmax,
+                                                                      num_t *entry)
+{
+    num_t tnear = tmin, tfar = tmax;
+    /* inv < 0: the ray enters the slab by its high face */
+    int nx = num_lt(r->inv[0], NUM_ZERO), ny = num_lt(r->inv[1], NUM_ZERO),
+        nz = num_lt(r->inv[2], NUM_ZERO);
+    if (!prim_slab_inv_faces(o.x, r->inv[0], nx ? b->hi.x : b->lo.x, nx ? b->lo.x : b->hi.x,
+                             &tnear, &tfar) ||
+        !prim_slab_inv_faces(o.y, r->inv[1], ny ? b->hi.y : b->lo.y, ny ? b->lo.y : b->hi.y,
+                             &tnear, &tfar) ||
+        !prim_slab_inv_faces(o.z, r->inv[2], nz ? b->hi.z : b->lo.z, nz ? b->lo.z : b->hi.z,
+                             &tnear, &tfar))
+        return 0;
+    *entry = tnear;
+    return 1;
 }
 
 static inline int prim_aabb_entry_ray(const aabb_t *b, const ray_t *ray, const aabb_ray_t *r,
@@ -144,13 +172,7 @@ static inline int prim_aabb_entry_ray(const aabb_t *b, const ray_t *ray, const a
 {
     if (!r->all_inv)
         return prim_aabb_entry_ray_axes(b, ray, r, tmin, tmax, entry);
-    num_t tnear = tmin, tfar = tmax;
-    if (!prim_slab_inv(ray->origin.x, r->inv[0], b->lo.x, b->hi.x, &tnear, &tfar) ||
-        !prim_slab_inv(ray->origin.y, r->inv[1], b->lo.y, b->hi.y, &tnear, &tfar) ||
-        !prim_slab_inv(ray->origin.z, r->inv[2], b->lo.z, b->hi.z, &tnear, &tfar))
-        return 0;
-    *entry = tnear;
-    return 1;
+    return prim_aabb_entry_inv(b, ray->origin, r, tmin, tmax, entry);
 }
 
 /* Pseudo-angle of (x, z) in [0, 4): monotonic in the true angle, exact at

@@ -132,10 +132,17 @@ static void trace_record(trace_walk_t *w, uint32_t prim, num_t t)
 }
 
 /* A shadow ray that met an opaque object is done: its answer is 0
- * whatever else it would cross. */
+ * whatever else it would cross.  mode: w->mode (the tree walk passes it
+ * as a constant, so that each mode's walk is compiled apart). */
+static inline __attribute__((always_inline)) int trace_walk_done_as(const trace_walk_t *w,
+                                                                     enum trace_mode mode)
+{
+    return mode == TRACE_COLLECT_SHADOW && w->cross->opaque;
+}
+
 static int trace_walk_done(const trace_walk_t *w)
 {
-    return w->mode == TRACE_COLLECT_SHADOW && w->cross->opaque;
+    return trace_walk_done_as(w, w->mode);
 }
 
 static void trace_test_prim(trace_walk_t *w, uint32_t prim)
@@ -217,20 +224,29 @@ static inline __attribute__((always_inline)) int trace_box_around(trace_walk_t *
 
 /* A box entered at t can still hold a hit: not past the nearest so far
  * (equal t may still win the tie on the primitive index). */
-static int trace_still_open(const trace_walk_t *w, num_t entry)
+static inline __attribute__((always_inline)) int trace_still_open(const trace_walk_t *w,
+                                                                   enum trace_mode mode,
+                                                                   num_t entry)
 {
-    return w->mode != TRACE_NEAREST || !w->nearest.found || !num_gt(entry, w->nearest.t);
+    return mode != TRACE_NEAREST || !w->nearest.found || !num_gt(entry, w->nearest.t);
 }
 
 /* The primary ray's pixel lies in cluster c's tree rectangle (all of it
- * and below), or it is no primary ray walked by screen. */
-static inline int trace_screen_tree(trace_walk_t *w, const render_cluster_t *c)
+ * and below), or it is no primary ray walked by screen (screen: w->screen,
+ * a constant in the tree walk as mode is). */
+static inline __attribute__((always_inline)) int trace_screen_tree_as(trace_walk_t *w, int screen,
+                                                                       const render_cluster_t *c)
 {
-    if (!w->screen)
+    if (!screen)
         return 1;
     w->screen_tests++;
     return w->px >= c->tree_x0 && w->px <= c->tree_x1 && w->py >= c->tree_y0 &&
            w->py <= c->tree_y1;
+}
+
+static inline int trace_screen_tree(trace_walk_t *w, const render_cluster_t *c)
+{
+    return trace_screen_tree_as(w, w->screen, c);
 }
 
 static void trace_own_prims(trace_walk_t *w, const render_cluster_t *c)
@@ -252,42 +268,173 @@ static void trace_own_prims(trace_walk_t *w, const render_cluster_t *c)
     }
 }
 
-/* Everything below cluster index, whose box the ray has already passed.
- * Two children (a node of the automatic hierarchy, docs/scene-format.md)
- * are visited nearer box first; the farther one is skipped when its entry
- * lies beyond the nearest hit found in the nearer. */
-static void trace_cluster(trace_walk_t *w, uint32_t index)
+/* A visit the walk has put off: the farther child of a two-child node
+ * (its box entered at entry: TRACE_LATER_FAR), or the children of a node
+ * of more, from the k-th on.  The tree is at most
+ * RENDER_MAX_CLUSTER_DEPTH deep below the root (render/prepare.c checks),
+ * and each level of the path holds at most one. */
+#define TRACE_LATER_FAR UINT32_MAX
+typedef struct {
+    uint32_t node;
+    uint32_t k;
+    num_t entry;
+} trace_later_t;
+
+/* A child of the tree walk (mode, screen: as trace_walk_done_as) whose
+ * box the ray meets, *entry where it enters. */
+/* The tree walk's copies of the ray for its box tests and of the frame's
+ * tree: in locals, which no store through a pointer can change, the
+ * compiler keeps them in registers. */
+typedef struct {
+    vec3_t origin;
+    aabb_ray_t r;
+    int by_inv; /* r.all_inv and bounds on: prim_aabb_entry_inv */
+    const render_cluster_t *clusters;
+    const uint32_t *child_list;
+} trace_box_ray_t;
+
+/* trace_box_entry by the walk's copy br of the ray. */
+static inline __attribute__((always_inline)) int trace_box_entry_by(trace_walk_t *w,
+                                                                     const trace_box_ray_t *br,
+                                                                     const aabb_t *b, num_t *entry)
+{
+    if (!br->by_inv)
+        return trace_box_entry(w, b, entry);
+    w->box_tests++;
+    return prim_aabb_entry_inv(b, br->origin, &br->r, w->tmin, w->cut, entry);
+}
+
+static inline __attribute__((always_inline)) int trace_kid_met(trace_walk_t *w,
+                                                                enum trace_mode mode, int screen,
+                                                                const trace_box_ray_t *br,
+                                                                uint32_t kid, num_t *entry)
+{
+    const render_cluster_t *k = &br->clusters[kid];
+    return !trace_walk_done_as(w, mode) && trace_screen_tree_as(w, screen, k) &&
+           trace_box_entry_by(w, br, &k->bounds, entry);
+}
+
+/* A two-child node c: the nearer child whose box the ray meets in *next
+ * (1), the farther one put off on later (*n grows); 0 when neither is
+ * met. */
+static inline __attribute__((always_inline)) int trace_two(trace_walk_t *w, enum trace_mode mode,
+                                                            int screen, const trace_box_ray_t *br,
+                                                            const render_cluster_t *c,
+                                                            uint32_t *next, trace_later_t *later,
+                                                            uint32_t *n)
+{
+    const uint32_t *kids = &br->child_list[c->first_child];
+    uint32_t a = kids[0], b = kids[1];
+    num_t ta, tb;
+    int ha = trace_kid_met(w, mode, screen, br, a, &ta);
+    int hb = trace_kid_met(w, mode, screen, br, b, &tb);
+    if (ha && hb && num_lt(tb, ta)) {
+        uint32_t k = a;
+        num_t t = ta;
+        a = b, ta = tb;
+        b = k, tb = t;
+    } else if (!ha) {
+        a = b, ta = tb, ha = hb, hb = 0;
+    }
+    if (hb)
+        later[(*n)++] = (trace_later_t){b, TRACE_LATER_FAR, tb};
+    *next = a;
+    return ha;
+}
+
+/* The next child of later's node, from its k-th, whose box the ray meets,
+ * in *next (1; later moves past it), or 0 when none is left. */
+static inline __attribute__((always_inline)) int trace_next_kid(trace_walk_t *w,
+                                                                 enum trace_mode mode, int screen,
+                                                                 const trace_box_ray_t *br,
+                                                                 trace_later_t *later,
+                                                                 uint32_t *next)
+{
+    const render_cluster_t *c = &br->clusters[later->node];
+    const uint32_t *kids = &br->child_list[c->first_child];
+    while (later->k < c->child_count) {
+        uint32_t kid = kids[later->k++];
+        num_t entry;
+        if (!trace_kid_met(w, mode, screen, br, kid, &entry))
+            continue;
+        const render_cluster_t *leaf = &br->clusters[kid];
+        if (leaf->child_count == 0) { /* its visit is its own primitives */
+            if (leaf->prim_count)
+                trace_own_prims(w, leaf);
+            continue;
+        }
+        *next = kid;
+        return 1;
+    }
+    return 0;
+}
+
+/* The visit to make after a subtree is done, from later (*n of them), in
+ * *next: 0 when none is left. */
+static inline __attribute__((always_inline)) int trace_resume(trace_walk_t *w,
+                                                               enum trace_mode mode, int screen,
+                                                               const trace_box_ray_t *br,
+                                                               trace_later_t *later, uint32_t *n,
+                                                               uint32_t *next)
+{
+    while (*n) {
+        trace_later_t *l = &later[*n - 1];
+        if (l->k == TRACE_LATER_FAR) {
+            (*n)--;
+            if (!trace_walk_done_as(w, mode) && trace_still_open(w, mode, l->entry)) {
+                *next = l->node;
+                return 1;
+            }
+        } else if (trace_next_kid(w, mode, screen, br, l, next)) {
+            return 1;
+        } else {
+            (*n)--;
+        }
+    }
+    return 0;
+}
+
+/* Everything below cluster index, whose box the ray has already passed,
+ * depth first without recursion.  Two children (a node of the automatic
+ * hierarchy, docs/scene-format.md) are visited nearer box first; the
+ * farther one is skipped when its entry lies beyond the nearest hit found
+ * in the nearer.  A node of more children tests each one's box when the
+ * subtree before it is done (the nearest hit so far cuts it). */
+static inline __attribute__((always_inline)) void trace_tree_as(trace_walk_t *w,
+                                                                 enum trace_mode mode, int screen,
+                                                                 uint32_t index)
 {
     const render_frame_t *f = w->ctx->frame;
-    const render_cluster_t *c = &f->clusters[index];
-    if (c->prim_count) /* an inner node of the automatic hierarchy has none */
-        trace_own_prims(w, c);
-    const uint32_t *kids = &f->child_list[c->first_child];
-    if (c->child_count == 2) {
-        uint32_t a = kids[0], b = kids[1];
-        num_t ta, tb;
-        int ha = !trace_walk_done(w) && trace_screen_tree(w, &f->clusters[a]) &&
-                 trace_box_entry(w, &f->clusters[a].bounds, &ta);
-        int hb = !trace_walk_done(w) && trace_screen_tree(w, &f->clusters[b]) &&
-                 trace_box_entry(w, &f->clusters[b].bounds, &tb);
-        if (ha && hb && num_lt(tb, ta)) {
-            uint32_t k = a;
-            num_t t = ta;
-            a = b, ta = tb;
-            b = k, tb = t;
-        } else if (!ha) {
-            a = b, ta = tb, ha = hb, hb = 0;
-        }
-        if (ha)
-            trace_cluster(w, a);
-        if (hb && !trace_walk_done(w) && trace_still_open(w, tb))
-            trace_cluster(w, b);
-        return;
+    const trace_box_ray_t br = {.origin = w->ray->origin, .r = w->box_ray,
+                                .by_inv = w->box_ray.all_inv && w->use_bounds,
+                                .clusters = f->clusters, .child_list = f->child_list};
+    trace_later_t later[RENDER_MAX_CLUSTER_DEPTH + 1];
+    uint32_t n = 0;
+    for (;;) {
+        const render_cluster_t *c = &br.clusters[index];
+        if (c->prim_count) /* an inner node of the automatic hierarchy has none */
+            trace_own_prims(w, c);
+        if (c->child_count == 2 && trace_two(w, mode, screen, &br, c, &index, later, &n))
+            continue;
+        if (c->child_count > 2 || c->child_count == 1)
+            later[n++] = (trace_later_t){index, 0, NUM_ZERO};
+        if (!trace_resume(w, mode, screen, &br, later, &n, &index))
+            return;
     }
-    for (uint32_t k = 0; k < c->child_count; k++)
-        if (!trace_walk_done(w) && trace_screen_tree(w, &f->clusters[kids[k]]) &&
-            trace_box(w, &f->clusters[kids[k]].bounds))
-            trace_cluster(w, kids[k]);
+}
+
+/* trace_tree_as compiled once for each walk there is: a camera ray's by
+ * screen or not, other nearest-hit rays', shadow rays', straight rays'. */
+static void trace_cluster(trace_walk_t *w, uint32_t index)
+{
+    if (w->mode == TRACE_COLLECT_SHADOW)
+        trace_tree_as(w, TRACE_COLLECT_SHADOW, 0, index);
+    else if (w->mode == TRACE_COLLECT_STRAIGHT)
+        trace_tree_as(w, TRACE_COLLECT_STRAIGHT, 0, index);
+    else if (w->screen)
+        trace_tree_as(w, TRACE_NEAREST, 1, index);
+    else
+        trace_tree_as(w, TRACE_NEAREST, 0, index);
 }
 
 /* The walk itself: the clusters given (clip), the hierarchy, or every
