@@ -140,15 +140,14 @@ static inline __attribute__((always_inline)) int trace_walk_done_as(const trace_
     return mode == TRACE_COLLECT_SHADOW && w->cross->opaque;
 }
 
-static int trace_walk_done(const trace_walk_t *w)
-{
-    return trace_walk_done_as(w, w->mode);
-}
-
-static void trace_test_prim(trace_walk_t *w, uint32_t prim)
+/* A primitive tested in a walk of mode (w->mode: a constant where the
+ * walk is compiled apart for each mode). */
+static inline __attribute__((always_inline)) void trace_test_prim_as(trace_walk_t *w,
+                                                                      enum trace_mode mode,
+                                                                      uint32_t prim)
 {
     const render_prim_t *p = &w->ctx->frame->prims[prim];
-    if (trace_walk_done(w))
+    if (trace_walk_done_as(w, mode))
         return;
     num_t t;
     w->prim_tests++;
@@ -161,7 +160,7 @@ static void trace_test_prim(trace_walk_t *w, uint32_t prim)
      * uncertain edge counts whatever the order (prim.h: only the final
      * t <= tmax depends on tmax) */
     int uncertain, found;
-    if (p->kind == SCENE_PRIM_DENSITY && w->mode == TRACE_COLLECT_SHADOW &&
+    if (p->kind == SCENE_PRIM_DENSITY && mode == TRACE_COLLECT_SHADOW &&
         !num_gt(trace_material(w->ctx, prim)->trc, NUM_ZERO))
         found = prim_intersect_uncertain_whether(p, w->ray, w->err, w->tmin, w->tmax, &t,
                                                  &uncertain); /* opaque: t is not used */
@@ -169,9 +168,9 @@ static void trace_test_prim(trace_walk_t *w, uint32_t prim)
         found = prim_intersect_uncertain(p, w->ray, w->err, w->tmin, w->tmax, &t, &uncertain);
     if (uncertain)
         w->ctx->pixel_lost = 1;
-    if (!found || (w->mode != TRACE_NEAREST && num_gt(t, w->tmax)))
+    if (!found || (mode != TRACE_NEAREST && num_gt(t, w->tmax)))
         return;
-    if (w->mode != TRACE_NEAREST) {
+    if (mode != TRACE_NEAREST) {
         trace_record(w, prim, t);
         return;
     }
@@ -249,13 +248,28 @@ static inline int trace_screen_tree(trace_walk_t *w, const render_cluster_t *c)
     return trace_screen_tree_as(w, w->screen, c);
 }
 
-static void trace_own_prims(trace_walk_t *w, const render_cluster_t *c)
+static void trace_test_prim(trace_walk_t *w, uint32_t prim)
+{
+    if (w->mode == TRACE_NEAREST)
+        trace_test_prim_as(w, TRACE_NEAREST, prim);
+    else if (w->mode == TRACE_COLLECT_SHADOW)
+        trace_test_prim_as(w, TRACE_COLLECT_SHADOW, prim);
+    else
+        trace_test_prim_as(w, TRACE_COLLECT_STRAIGHT, prim);
+}
+
+/* Cluster c's own primitives in a walk of mode, by screen or not (as
+ * trace_test_prim_as). */
+static inline __attribute__((always_inline)) void trace_own_prims_as(trace_walk_t *w,
+                                                                      enum trace_mode mode,
+                                                                      int screen,
+                                                                      const render_cluster_t *c)
 {
     const render_frame_t *f = w->ctx->frame;
     /* by screen: the pixel must lie in the cluster's own rectangle, and
      * the ray meet its own box (where it is not the box just tested, that
      * of the cluster and its children), before its primitives are tested */
-    if (w->screen && (c->prim_count == 0 || w->px < c->screen_x0 || w->px > c->screen_x1 ||
+    if (screen && (c->prim_count == 0 || w->px < c->screen_x0 || w->px > c->screen_x1 ||
                       w->py < c->screen_y0 || w->py > c->screen_y1 ||
                       (c->child_count && !trace_box(w, &c->own_bounds))))
         return;
@@ -264,8 +278,54 @@ static void trace_own_prims(trace_walk_t *w, const render_cluster_t *c)
         /* in a flat walk the primitive's own box stands in for the tree */
         if (!w->ctx->options.use_hierarchy && !trace_box(w, &f->prims[prim].bounds))
             continue;
-        trace_test_prim(w, prim);
+        trace_test_prim_as(w, mode, prim);
     }
+}
+
+/* trace_own_prims_as once for each walk there is */
+static __attribute__((noinline)) void trace_own_prims_nearest(trace_walk_t *w,
+                                                              const render_cluster_t *c)
+{
+    trace_own_prims_as(w, TRACE_NEAREST, 0, c);
+}
+
+static __attribute__((noinline)) void trace_own_prims_screen(trace_walk_t *w,
+                                                             const render_cluster_t *c)
+{
+    trace_own_prims_as(w, TRACE_NEAREST, 1, c);
+}
+
+static __attribute__((noinline)) void trace_own_prims_shadow(trace_walk_t *w,
+                                                             const render_cluster_t *c)
+{
+    trace_own_prims_as(w, TRACE_COLLECT_SHADOW, 0, c);
+}
+
+static __attribute__((noinline)) void trace_own_prims_straight(trace_walk_t *w,
+                                                               const render_cluster_t *c)
+{
+    trace_own_prims_as(w, TRACE_COLLECT_STRAIGHT, 0, c);
+}
+
+/* The one of those for mode and screen (constants in the tree walk). */
+static inline __attribute__((always_inline)) void trace_own_prims_of(trace_walk_t *w,
+                                                                      enum trace_mode mode,
+                                                                      int screen,
+                                                                      const render_cluster_t *c)
+{
+    if (mode == TRACE_COLLECT_SHADOW)
+        trace_own_prims_shadow(w, c);
+    else if (mode == TRACE_COLLECT_STRAIGHT)
+        trace_own_prims_straight(w, c);
+    else if (screen)
+        trace_own_prims_screen(w, c);
+    else
+        trace_own_prims_nearest(w, c);
+}
+
+static void trace_own_prims(trace_walk_t *w, const render_cluster_t *c)
+{
+    trace_own_prims_of(w, w->mode, w->screen, c);
 }
 
 /* A visit the walk has put off: the farther child of a two-child node
@@ -360,7 +420,7 @@ static inline __attribute__((always_inline)) int trace_next_kid(trace_walk_t *w,
         const render_cluster_t *leaf = &br->clusters[kid];
         if (leaf->child_count == 0) { /* its visit is its own primitives */
             if (leaf->prim_count)
-                trace_own_prims(w, leaf);
+                trace_own_prims_of(w, mode, screen, leaf);
             continue;
         }
         *next = kid;
@@ -413,7 +473,7 @@ static inline __attribute__((always_inline)) void trace_tree_as(trace_walk_t *w,
     for (;;) {
         const render_cluster_t *c = &br.clusters[index];
         if (c->prim_count) /* an inner node of the automatic hierarchy has none */
-            trace_own_prims(w, c);
+            trace_own_prims_of(w, mode, screen, c);
         if (c->child_count == 2 && trace_two(w, mode, screen, &br, c, &index, later, &n))
             continue;
         if (c->child_count > 2 || c->child_count == 1)
