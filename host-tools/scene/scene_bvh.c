@@ -61,9 +61,9 @@ static void bvh_box_empty(double lo[3], double hi[3])
 
 static void bvh_box_add(double lo[3], double hi[3], const double plo[3], const double phi[3])
 {
-    for (int k = 0; k < 3; k++) {
-        lo[k] = fmin(lo[k], plo[k]);
-        hi[k] = fmax(hi[k], phi[k]);
+    for (int k = 0; k < 3; k++) { /* no NaN here: comparisons, not libm's calls */
+        lo[k] = plo[k] < lo[k] ? plo[k] : lo[k];
+        hi[k] = phi[k] > hi[k] ? phi[k] : hi[k];
     }
 }
 
