@@ -95,9 +95,12 @@ render_blob_status_t render_blob_load_summed(const uint8_t *compiled, size_t len
     }
     /* The bound without the word sum (scene_load checks it next); a
      * refusal asks again with the sum, so a damaged scene is refused as
-     * render_blob_bytes refuses it (the sum before the section table). */
-    if ((blob_bound(compiled, len, &render_layout_native, 1, &need, err) != RENDER_BLOB_OK ||
-         need > size) &&
+     * render_blob_bytes refuses it (the sum before the section table).
+     * A caller that gives the sum has checked it (the DM's upload check,
+     * or its narrow load before the wide one): a scene too big is that. */
+    int bounded = blob_bound(compiled, len, &render_layout_native, 1, &need, err) ==
+                  RENDER_BLOB_OK;
+    if ((!bounded || (need > size && !sum)) &&
         render_blob_bytes(compiled, len, &need, err) != RENDER_BLOB_OK)
         return err->status;
     if (need > size) {
