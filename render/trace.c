@@ -282,30 +282,17 @@ static inline __attribute__((always_inline)) void trace_own_prims_as(trace_walk_
     }
 }
 
-/* trace_own_prims_as once for each walk there is */
-static __attribute__((noinline)) void trace_own_prims_nearest(trace_walk_t *w,
-                                                              const render_cluster_t *c)
-{
-    trace_own_prims_as(w, TRACE_NEAREST, 0, c);
-}
-
-static __attribute__((noinline)) void trace_own_prims_screen(trace_walk_t *w,
-                                                             const render_cluster_t *c)
-{
-    trace_own_prims_as(w, TRACE_NEAREST, 1, c);
-}
-
-static __attribute__((noinline)) void trace_own_prims_shadow(trace_walk_t *w,
-                                                             const render_cluster_t *c)
-{
-    trace_own_prims_as(w, TRACE_COLLECT_SHADOW, 0, c);
-}
-
-static __attribute__((noinline)) void trace_own_prims_straight(trace_walk_t *w,
-                                                               const render_cluster_t *c)
-{
-    trace_own_prims_as(w, TRACE_COLLECT_STRAIGHT, 0, c);
-}
+/* trace_own_prims_as once for each walk there is: trace_own_prims_NAME */
+#define TRACE_OWN_PRIMS_FOR(name, mode, screen)                                          \
+    static __attribute__((noinline)) void trace_own_prims_##name(trace_walk_t *w,        \
+                                                                 const render_cluster_t *c) \
+    {                                                                                    \
+        trace_own_prims_as(w, mode, screen, c);                                          \
+    }
+TRACE_OWN_PRIMS_FOR(nearest, TRACE_NEAREST, 0)
+TRACE_OWN_PRIMS_FOR(screen, TRACE_NEAREST, 1)
+TRACE_OWN_PRIMS_FOR(shadow, TRACE_COLLECT_SHADOW, 0)
+TRACE_OWN_PRIMS_FOR(straight, TRACE_COLLECT_STRAIGHT, 0)
 
 /* The one of those for mode and screen (constants in the tree walk). */
 static inline __attribute__((always_inline)) void trace_own_prims_of(trace_walk_t *w,
