@@ -73,11 +73,13 @@ check-layers:
 	$(Q)bash tests/layers/check_layers.sh
 
 # Deliberate faults, each in a copy of the tree: every one must make a test
-# of `make test` fail (tests/mutants/; not part of `make test`).
+# fail, of `make test` or one a mutant's try: line names from `make
+# test-full` (tests/mutants/; not part of `make test`).
 .PHONY: test-mutants
 test-mutants: deps
 	$(Q)$(MAKE) $(JOBS) --no-print-directory all $(HOST_TEST_BINS) $(FUZZ_BINS)
-	$(Q)HOST_TESTS="$(HOST_TEST_BINS)" BOARD_TESTS="$(BOARD_TESTS)" FW_DIR=$(FWB) \
+	$(Q)HOST_TESTS="$(HOST_TEST_BINS)" \
+		BOARD_TESTS="$(BOARD_TESTS) $(filter-out build/tests/%,$(FULL_TESTS))" FW_DIR=$(FWB) \
 		python3 tests/mutants/mutants.py
 
 # The C unit tests that have a build rule (a test_NAME_SRCS), one a line:
