@@ -327,8 +327,6 @@ typedef struct {
     num_t entry;
 } trace_later_t;
 
-/* A child of the tree walk (mode, screen: as trace_walk_done_as) whose
- * box the ray meets, *entry where it enters. */
 /* The tree walk's copies of the ray for its box tests and of the frame's
  * tree: in locals, which no store through a pointer can change, the
  * compiler keeps them in registers. */
@@ -351,6 +349,8 @@ static inline __attribute__((always_inline)) int trace_box_entry_by(trace_walk_t
     return prim_aabb_entry_inv(b, br->origin, &br->r, w->tmin, w->cut, entry);
 }
 
+/* A child of the tree walk (mode, screen: as trace_walk_done_as) whose
+ * box the ray meets, *entry where it enters. */
 static inline __attribute__((always_inline)) int trace_kid_met(trace_walk_t *w,
                                                                 enum trace_mode mode, int screen,
                                                                 const trace_box_ray_t *br,
