@@ -14,7 +14,7 @@ HT_SCENE_SRCS := host-tools/scene/scene_lex.c host-tools/scene/scene_parse.c \
 	host-tools/scene/scene_import.c host-tools/scene/scene_import_view.c \
 	host-tools/scene/scene_map_image.c host-tools/scene/scene_texture.c \
 	host-tools/scene/scene_write.c host-tools/scene/nff_read.c \
-	host-tools/scene/scene_paper.c
+	host-tools/scene/scene_paper.c host-tools/scene/scene_mem.c
 HT_SCENE_POV_SRCS := host-tools/scene/scene_pov.c
 # All but the board conversion (scene_board.c) know no num_t: one host build
 # serves every arithmetic (Makefile: ARITH_FREE_SRCS).
@@ -78,3 +78,6 @@ test_textures_SRCS = tests/host/test_textures.c $(SCENE_TEXT_SRCS) host-tools/op
 	host-tools/opts/exit_clean.c
 test_textures_ARITH := double
 test_textures_LIBS = $(SCENE_TEXT_LIBS)
+# Large arrays on transparent huge pages (scene_mem.c).
+test_scene_mem_SRCS := tests/host/test_scene_mem.c host-tools/scene/scene_mem.c
+test_scene_mem_ARITH := double

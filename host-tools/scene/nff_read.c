@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "host-tools/scene/scene_lex.h"
+#include "host-tools/scene/scene_mem.h"
 
 #define NFF_PI 3.14159265358979323846
 
@@ -48,7 +49,7 @@ static void *nff_grow(struct nff *r, void *arr, int *cap, int n, size_t elem, in
     int ncap = *cap ? *cap * 2 : 64;
     if (ncap > limit)
         ncap = limit;
-    void *na = realloc(arr, (size_t)ncap * elem);
+    void *na = scene_mem_realloc(arr, (size_t)ncap * elem);
     if (!na)
         lex_error(&r->lx, "out of memory reading %s", what);
     *cap = ncap;
@@ -618,7 +619,7 @@ int nff_read_file(const char *path, struct sd_scene *s, struct nff_info *info, c
         snprintf(err, errlen, "%s: %s", path, strerror(errno));
         return -1;
     }
-    char *text = malloc(NFF_MAX_FILE + 1);
+    char *text = scene_mem_alloc(NFF_MAX_FILE + 1);
     size_t n = text ? fread(text, 1, NFF_MAX_FILE + 1, f) : 0;
     fclose(f);
     if (!text || n > NFF_MAX_FILE) {

@@ -22,6 +22,7 @@
  * each one names changes.
  */
 #include "host-tools/scene/scene_bvh.h"
+#include "host-tools/scene/scene_mem.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -125,7 +126,7 @@ static int bvh_new_cluster(struct bvh_build *b, int parent)
         return -1;
     if (b->n_clusters == b->cap_clusters) {
         int cap = b->cap_clusters * 2;
-        struct sd_cluster *na = realloc(b->clusters, (size_t)cap * sizeof *na);
+        struct sd_cluster *na = scene_mem_realloc(b->clusters, (size_t)cap * sizeof *na);
         if (!na)
             return -1;
         b->clusters = na;
@@ -236,9 +237,10 @@ static int bvh_levels(int n, int leaf_max)
 }
 
 /* Splits items it[0..n) below cluster node; depth_left more levels may
- * hang below it.  0, or -1 when the clusters run out. */
-static int bvh_split(struct bvh_build *b, int node, struct bvh_item *it, int n, int depth_left,
-                     int depth)
+ * hang below it; spare[0..n) is room to partition into.  0, or -1 when
+ * the clusters run out. */
+static int bvh_split(struct bvh_build *b, int node, struct bvh_item *it, struct bvh_item *spare,
+                     int n, int depth_left, int depth)
 {
     if (depth > b->stats->depth)
         b->stats->depth = depth;
@@ -271,30 +273,29 @@ static int bvh_split(struct bvh_build *b, int node, struct bvh_item *it, int n, 
             bvh_leaf(b, node, it, n);
             return 0;
         }
-        /* partition by bin, stable for a deterministic tree */
+        /* partition by bin into spare, stable for a deterministic tree:
+         * the halves are split there, with it[] their spare room */
         double scale = BVH_BINS / (chi[axis] - clo[axis]);
-        struct bvh_item *tmp = malloc((size_t)n * sizeof *tmp);
-        if (!tmp)
-            return -1;
         left = 0;
         for (int i = 0; i < n; i++)
             if (bvh_bin(&it[i], axis, clo[axis], scale) <= split)
-                tmp[left++] = it[i];
+                spare[left++] = it[i];
         int r = left;
         for (int i = 0; i < n; i++)
             if (bvh_bin(&it[i], axis, clo[axis], scale) > split)
-                tmp[r++] = it[i];
-        memcpy(it, tmp, (size_t)n * sizeof *tmp);
-        free(tmp);
+                spare[r++] = it[i];
+        struct bvh_item *was = it;
+        it = spare;
+        spare = was;
     }
     int a = bvh_new_cluster(b, node);
     int c = a < 0 ? -1 : bvh_new_cluster(b, node);
     if (c < 0)
         return -1;
     b->stats->nodes += 2;
-    if (bvh_split(b, a, it, left, depth_left - 1, depth + 1) != 0)
+    if (bvh_split(b, a, it, spare, left, depth_left - 1, depth + 1) != 0)
         return -1;
-    return bvh_split(b, c, it + left, n - left, depth_left - 1, depth + 1);
+    return bvh_split(b, c, it + left, spare + left, n - left, depth_left - 1, depth + 1);
 }
 
 /* Nesting depth of each author cluster below the root. */
@@ -316,10 +317,12 @@ static int bvh_try(struct bvh_build *b, const int *nest, int leaf_min)
         b->prim_cluster[i] = s->prims[i].cluster;
     /* the primitives of each cluster, in index order */
     int *count = calloc((size_t)s->n_clusters + 1, sizeof *count);
-    struct bvh_item *items = malloc(((size_t)s->n_prims + 1) * sizeof *items);
-    if (!count || !items) {
+    struct bvh_item *items = scene_mem_alloc(((size_t)s->n_prims + 1) * sizeof *items);
+    struct bvh_item *spare = scene_mem_alloc(((size_t)s->n_prims + 1) * sizeof *spare);
+    if (!count || !items || !spare) {
         free(count);
         free(items);
+        free(spare);
         return -1;
     }
     for (int i = 0; i < s->n_prims; i++)
@@ -330,6 +333,7 @@ static int bvh_try(struct bvh_build *b, const int *nest, int leaf_min)
     if (!at) {
         free(count);
         free(items);
+        free(spare);
         return -1;
     }
     memcpy(at, count, ((size_t)s->n_clusters + 1) * sizeof *at);
@@ -347,10 +351,12 @@ static int bvh_try(struct bvh_build *b, const int *nest, int leaf_min)
         if (n <= SD_AUTO_HIERARCHY_MIN)
             continue;
         b->stats->split_clusters++;
-        rc = bvh_split(b, c, items + count[c], n, SCN_MAX_CLUSTER_NESTING - nest[c], 0);
+        rc = bvh_split(b, c, items + count[c], spare + count[c], n,
+                       SCN_MAX_CLUSTER_NESTING - nest[c], 0);
     }
     free(count);
     free(items);
+    free(spare);
     return rc;
 }
 
@@ -363,7 +369,7 @@ int sd_auto_hierarchy(const struct sd_scene *s, struct sd_cluster **clusters, in
     b.stats = stats;
     b.prim_cluster = prim_cluster;
     b.cap_clusters = s->n_clusters + 2 * s->n_prims / BVH_LEAF_MAX + 16;
-    b.clusters = malloc((size_t)b.cap_clusters * sizeof *b.clusters);
+    b.clusters = scene_mem_alloc((size_t)b.cap_clusters * sizeof *b.clusters);
     int *nest = malloc(((size_t)s->n_clusters + 1) * sizeof *nest);
     if (!b.clusters || !nest) {
         free(b.clusters);

@@ -10,6 +10,7 @@
 #include "host-tools/scene/scene_board.h"
 #include "host-tools/scene/scene_bvh.h"
 #include "host-tools/scene/scene_desc.h"
+#include "host-tools/scene/scene_mem.h"
 #include "proto/board_map.h"
 #include "proto/wordsum.h"
 #include "proto/wire.h"
@@ -330,7 +331,7 @@ static int compile_form(const struct sd_scene *s, uint8_t **out, size_t *len, ch
                  total, s->n_clusters, s->n_prims, SCN_MAX_SIZE);
         return -1;
     }
-    uint8_t *b = calloc(1, total);
+    uint8_t *b = scene_mem_zalloc(total);
     if (!b) {
         snprintf(err, errlen, "out of memory compiling the scene");
         return -1;
@@ -379,8 +380,8 @@ int sd_compile(const struct sd_scene *s, uint8_t **out, size_t *len, char *err, 
     /* the same scene with the tree's clusters and the primitives moved
      * into its leaves; everything else shared */
     struct sd_scene t = *s;
-    int *prim_cluster = malloc((size_t)s->n_prims * sizeof *prim_cluster);
-    struct sd_prim *prims = malloc((size_t)s->n_prims * sizeof *prims);
+    int *prim_cluster = scene_mem_alloc((size_t)s->n_prims * sizeof *prim_cluster);
+    struct sd_prim *prims = scene_mem_alloc((size_t)s->n_prims * sizeof *prims);
     struct bvh_build_stats stats;
     int rc = -1;
     if (!prim_cluster || !prims)

@@ -13,6 +13,7 @@
 #include "host-tools/scene/scene_opts.h"
 #include "proto/machines.h"
 #include "host-tools/scene/scene_desc.h"
+#include "host-tools/scene/scene_mem.h"
 
 void scene_file_opts_init(struct scene_file_opts *o)
 {
@@ -97,7 +98,7 @@ static int scene_file_read(const char *path, uint8_t **buf, size_t *len, char *e
         snprintf(err, errlen, "%s: %s", path, strerror(errno));
         return -1;
     }
-    *buf = malloc(SCN_MAX_SIZE + 1);
+    *buf = scene_mem_alloc(SCN_MAX_SIZE + 1);
     *len = *buf ? fread(*buf, 1, SCN_MAX_SIZE + 1, f) : 0;
     fclose(f);
     const char *why = !*buf ? "out of memory"

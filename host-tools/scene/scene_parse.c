@@ -11,6 +11,7 @@
 #include <string.h>
 
 #include "host-tools/scene/scene_parse.h"
+#include "host-tools/scene/scene_mem.h"
 
 /* ------------------------------------------------------------- helpers */
 
@@ -22,7 +23,7 @@ void *parse_grow(struct parser *p, void *arr, int *cap, int n, size_t elem,
     if (n < *cap)
         return arr;
     int ncap = *cap ? *cap * 2 : 16;
-    void *na = realloc(arr, (size_t)ncap * elem);
+    void *na = scene_mem_realloc(arr, (size_t)ncap * elem);
     if (!na)
         lex_error(&p->lx, "out of memory reading %s", what);
     *cap = ncap;
@@ -428,7 +429,7 @@ int sd_parse_file_from(const char *path, const char *const *textures_from, struc
         snprintf(err, errlen, "%s: %s", path, strerror(errno));
         return -1;
     }
-    char *text = malloc(PARSE_MAX_FILE + 1);
+    char *text = scene_mem_alloc(PARSE_MAX_FILE + 1);
     size_t n = text ? fread(text, 1, PARSE_MAX_FILE + 1, f) : 0;
     fclose(f);
     if (!text || n > PARSE_MAX_FILE) {
