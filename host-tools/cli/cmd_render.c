@@ -49,7 +49,9 @@ struct render_job {
 /* Where a render command's wall time goes, ms, and QEMU's host CPU time
  * while the board rendered (for the host cores' use). */
 struct render_wall {
-    long long boot, upload, load, frame, pull, write, shutdown, total;
+    long long compile; /* the scenes', the board booting beside it (render_boots_early) */
+    long long boot;    /* the rest of the boot, after the compile */
+    long long upload, load, frame, pull, write, shutdown, total;
     long long board_prepare, board_render;
     long long render_cpu; /* the QEMUs' user + system ms during the frames (every
                              an521 board's) */
@@ -1085,16 +1087,16 @@ static int render_job(struct board *b, const struct render_opts *o, struct rende
 /* One line accounting for the command's wall time (bench_wallclock.sh). */
 static void render_print_wall(const struct render_wall *w)
 {
-    long long other =
-        w->total - w->boot - w->upload - w->load - w->frame - w->pull - w->write - w->shutdown;
+    long long other = w->total - w->compile - w->boot - w->upload - w->load - w->frame - w->pull -
+                      w->write - w->shutdown;
     /* load: the DM checks the scene, loads it and prepares its first frame
      * before it answers; the board's prepare counts every frame's
      * preparation, the first one's inside load, each later one's inside
      * the frame before (pipelined) or its own. */
-    printf("links1 render: wall %lld ms: boot %lld, upload %lld, load %lld, frames %lld (board: "
-           "prepare %lld, render %lld), pull %lld, write %lld, shutdown %lld, other %lld; QEMU "
-           "CPU while rendering %lld ms (%.2f host cores)\n",
-           w->total, w->boot, w->upload, w->load, w->frame, w->board_prepare, w->board_render,
+    printf("links1 render: wall %lld ms: compile %lld, boot %lld, upload %lld, load %lld, frames "
+           "%lld (board: prepare %lld, render %lld), pull %lld, write %lld, shutdown %lld, other "
+           "%lld; QEMU CPU while rendering %lld ms (%.2f host cores)\n",
+           w->total, w->compile, w->boot, w->upload, w->load, w->frame, w->board_prepare, w->board_render,
            w->pull, w->write, w->shutdown, other, w->render_cpu,
            w->frame > 0 ? (double)w->render_cpu / (double)w->frame : 0.0);
 }
@@ -1192,6 +1194,14 @@ static int render_dm_spans(const char *marks, uint32_t prims)
 
 /* The counts printed, the trace and the profile written (rc: the run's
  * status so far), the directory removed.  0, or -1 after saying why. */
+/* The counting's private directory removed, nothing read from it (the
+ * run ended before its board reported in). */
+static void render_counting_drop(struct render_counting *k)
+{
+    if (k->dir[0] && tmp_dir_remove(k->dir) != 0)
+        fprintf(stderr, "links1 render: could not remove %s: %s\n", k->dir, strerror(errno));
+}
+
 static int render_counting_close(struct render_opts *o, const struct render_run *run,
                                  struct render_counting *k, int rc)
 {
@@ -1249,32 +1259,66 @@ int cmd_render_check_args(int n, const char *const *args)
     return rc;
 }
 
+/* Whether the board boots while the scenes compile (a large model's
+ * compile takes as long as a board's boot): not with --arith auto or
+ * --model auto (the compiled scene picks the firmware), --gdb (a board
+ * halted for a debugger) or on a named board (none boots). */
+static int render_boots_early(const struct render_opts *o)
+{
+    return !o->board_name && !o->arith_auto && !o->model_auto && !o->board.gdb;
+}
+
+/* Every scene compiled and checked, --arith auto's and --model auto's
+ * picks made.  0, or -1 after saying why. */
+static int render_take_scenes(struct render_opts *o)
+{
+    if (render_read_scenes(o) == 0 && (!o->arith_auto || render_auto_pick(o) == 0) &&
+        (!o->model_auto || (render_free_scenes(o), render_read_scenes(o) == 0)))
+        return 0;
+    render_free_scenes(o);
+    return -1;
+}
+
+/* The board up, every unit computer reported in: the one started beside
+ * the compile (started: board_start_unannounced's result), else one
+ * started, or the named board reached, now.  0, or -1 after saying why. */
+static int render_board_up(struct board *b, struct render_opts *o, int early, int started)
+{
+    if (o->board_name)
+        return board_connect(b, &o->board, o->board_name);
+    if (!early)
+        started = board_start_unannounced(b, &o->board);
+    if (started != 0)
+        return -1;
+    board_say_booting(b);
+    return board_wait_reported(b, o->board.timeout_s * 1000);
+}
+
 int cmd_render(int argc, char **argv)
 {
     struct render_opts o;
     int r = render_parse(&o, argc, argv);
     if (r != 0)
         return r > 0 ? 0 : 2;
-    if (render_read_scenes(&o) != 0 || (o.arith_auto && render_auto_pick(&o) != 0) ||
-        (o.model_auto && (render_free_scenes(&o), render_read_scenes(&o) != 0))) {
-        render_free_scenes(&o);
-        return 1;
-    }
     struct render_counting k;
-    if (render_counting_open(&o, &k) != 0) {
-        render_free_scenes(&o);
+    if (render_counting_open(&o, &k) != 0)
         return 1;
-    }
     struct board b;
     struct render_run run;
     memset(&run, 0, sizeof run);
-    int rc = 1;
     long long t_start = board_now_ms();
-    int up = o.board_name ? board_connect(&b, &o.board, o.board_name)
-                          : board_start(&b, &o.board) == 0 ?
-                                board_wait_reported(&b, o.board.timeout_s * 1000) : -1;
-    if (up == 0) {
-        run.wall.boot = board_now_ms() - t_start;
+    int early = render_boots_early(&o);
+    int started = early ? board_start_unannounced(&b, &o.board) : 0;
+    if (render_take_scenes(&o) != 0) { /* refused before the board reported in */
+        if (early)
+            board_abandon(&b);
+        render_counting_drop(&k);
+        return 1;
+    }
+    run.wall.compile = board_now_ms() - t_start;
+    int rc = 1;
+    if (render_board_up(&b, &o, early, started) == 0) {
+        run.wall.boot = board_now_ms() - t_start - run.wall.compile;
         rc = 0;
         for (int j = 0; j < o.njobs; j++) {
             if (render_job(&b, &o, &run, &o.jobs[j]) == 0)

@@ -84,8 +84,19 @@ int board_opt(struct board_opts *o, const struct cli *c, int code);
 int board_find_firmware(const struct board_opts *o, char *out, size_t cap);
 
 /* Starts QEMU, its RAM a memfd mapped here too (b->ram: the shared-memory
- * path of proto/hostlink.h).  Returns 0, or -1 after printing why. */
+ * path of proto/hostlink.h), and says so ("links1: booting ...").
+ * Returns 0, or -1 after printing why. */
 int board_start(struct board *b, const struct board_opts *o);
+/* board_start's two steps: the start, which says nothing unless it fails,
+ * and its "booting" line (none with --quiet).  links1 render starts the
+ * board so while it compiles the scene, and says it once the scene is
+ * taken. */
+int board_start_unannounced(struct board *b, const struct board_opts *o);
+void board_say_booting(const struct board *b);
+/* A board started and not wanted after all (its scene refused before it
+ * reported in): QEMU killed at once, no shutdown asked, then board_stop's
+ * cleaning up; nothing is printed for a board killed so. */
+void board_abandon(struct board *b);
 
 /* Runs a semihosting program (not the firmware: one core, no link) on the
  * plain virt board, its console output on our stdout, until it ends the

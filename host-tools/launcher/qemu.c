@@ -572,11 +572,22 @@ static int board_start_nc_boards(struct board *b)
         b->nc_board_pid[k] = pid;
         exit_clean_add_child(pid); /* a named set's until it is up */
     }
-    if (!b->opts.quiet)
-        printf("links1: booting %s on %d an521 boards (board 0: DM and RC, QEMU pid %d; "
-               "%d NCs on boards 1..%d)\n", b->firmware, boards, (int)b->qemu_pid,
-               b->opts.ncores - UNITS_FIRST_NC, boards - 1);
     return 0;
+}
+
+void board_say_booting(const struct board *b)
+{
+    const struct board_opts *o = &b->opts;
+    if (o->quiet)
+        return;
+    if (o->machine == MACHINE_AN521)
+        printf("links1: booting %s on %d an521 boards (board 0: DM and RC, QEMU pid %d; "
+               "%d NCs on boards 1..%d)\n", b->firmware, o->ncores / AN521_CORES_PER_BOARD,
+               (int)b->qemu_pid, o->ncores - UNITS_FIRST_NC,
+               o->ncores / AN521_CORES_PER_BOARD - 1);
+    else
+        printf("links1: booting %s on %d cores (DM, RC, %d NCs), QEMU pid %d\n", b->firmware,
+               o->ncores, o->ncores - UNITS_FIRST_NC, (int)b->qemu_pid);
 }
 
 /* An NC board's process gone or not: 1 once reaped. */
@@ -681,7 +692,7 @@ static void board_stop_nc_boards(struct board *b)
     }
 }
 
-int board_start(struct board *b, const struct board_opts *o)
+int board_start_unannounced(struct board *b, const struct board_opts *o)
 {
     if (board_qemu_session(b, o) < 0)
         return -1;
@@ -719,10 +730,24 @@ int board_start(struct board *b, const struct board_opts *o)
     board_session_open(b, tool_fd);
     if (o->machine == MACHINE_AN521)
         return board_start_nc_boards(b);
-    if (!o->quiet)
-        printf("links1: booting %s on %d cores (DM, RC, %d NCs), QEMU pid %d\n",
-               b->firmware, o->ncores, o->ncores - 2, (int)pid);
     return 0;
+}
+
+int board_start(struct board *b, const struct board_opts *o)
+{
+    if (board_start_unannounced(b, o) != 0)
+        return -1;
+    board_say_booting(b);
+    return 0;
+}
+
+void board_abandon(struct board *b)
+{
+    if (!b->named && b->qemu_pid) {
+        kill(b->qemu_pid, SIGKILL);
+        board_qemu_reap(b, BOARD_TERM_WAIT_MS);
+    }
+    board_stop(b);
 }
 
 static int board_start_named_run(struct board *b, const struct board_opts *o,

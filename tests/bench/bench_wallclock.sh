@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # bench_wallclock.sh: where the wall time of `links1 render` goes on the
-# host (boot, upload, the DM's load with frame 0's preparation, render,
+# host (the compile with the boot beside it, the rest of the boot, upload,
+# the DM's load with frame 0's preparation, render,
 # pull, write, shutdown), and the
 # 1 -> 2 NC wall-clock ratio of the frame on the host's cores, with the
 # host cores QEMU used while rendering.  Wall time on a shared host is
@@ -19,25 +20,25 @@ echo "### Wall time of links1 render (demo.scn $SIZE, float, decreasing; median 
 echo
 echo "host: $(nproc) cores; $(uptime | sed 's/.*load average/load average/')"
 echo
-echo "| NCs | total ms | boot | upload | load (DM: checks, frame 0 prepared) | frame | pull | write | shutdown | QEMU host cores while rendering |"
-echo "|---|---|---|---|---|---|---|---|---|---|"
+echo "| NCs | total ms | compile (the board booting) | boot after it | upload | load (DM: checks, frame 0 prepared) | frame | pull | write | shutdown | QEMU host cores while rendering |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|"
 for n in 1 2; do
     : >"$TMP/lines"
     for r in $(seq "$RUNS"); do
         timeout 900 "$LINKS1" render scenes/demo.scn --size "$SIZE" --ncs "$n" \
             -o "$TMP/out.ppm" >"$TMP/log" 2>&1 || { echo "bench_wallclock: render failed:" >&2; tail -3 "$TMP/log" >&2; exit 1; }
-        # The numbers of the wall line in order: total, boot, upload, load,
-        # frames, prepare, render, pull, write, shutdown, other, QEMU CPU ms,
-        # cores.
+        # The numbers of the wall line in order: total, compile, boot,
+        # upload, load, frames, prepare, render, pull, write, shutdown,
+        # other, QEMU CPU ms, cores.
         grep 'links1 render: wall' "$TMP/log" | sed 's/^links1 render: //' | grep -o '[-0-9.]\+' |
-            tr '\n' ' ' | awk '{ print $1, $2, $3, $4, $5, $8, $9, $10, $13 }' >>"$TMP/lines"
+            tr '\n' ' ' | awk '{ print $1, $2, $3, $4, $5, $6, $9, $10, $11, $14 }' >>"$TMP/lines"
     done
     row="| $n"
-    for c in 1 2 3 4 5 6 7 8 9; do
+    for c in 1 2 3 4 5 6 7 8 9 10; do
         row="$row | $(awk -v c=$c '{ print $c }' "$TMP/lines" | median)"
     done
     echo "$row |"
-    awk '{ print $5 }' "$TMP/lines" | median >"$TMP/frame-$n"
+    awk '{ print $7 }' "$TMP/lines" | median >"$TMP/frame-$n"
 done
 echo
 awk -v a="$(cat "$TMP/frame-1")" -v b="$(cat "$TMP/frame-2")" \

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# tests/board/boards/refused_early.sh (host: no board boots): bad input is refused
-# before any QEMU starts, and paths with commas reach QEMU whole.  $QEMU is
+# tests/board/boards/refused_early.sh (host: no board boots): bad options are
+# refused before any QEMU starts, a bad scene before the board started beside
+# its compile reports in, and paths with commas reach QEMU whole.  $QEMU is
 # a fake that writes its arguments to a file, prints a line to its output
 # and fails, so every check also sees whether a QEMU was started at all.
 #   - --size 4294967360x48 (2^32 + 64: a number past an int) is refused,
@@ -14,11 +15,14 @@
 #     syntax), and --insn-profile "prof.txt,profile_from=0" adds no plugin
 #     option (the plugin writes into the run's private directory);
 #   - a board start whose QEMU fails prints the end of QEMU's output and
-#     points at no log it removed.
+#     points at no log it removed;
+#   - a scene that does not compile is refused naming the problem; the
+#     board render starts beside the compile (a QEMU that would run on) is
+#     killed, never announced, and no QEMU is left running.
 # Prints "PASS name" / "FAIL name: why".
 . "$(dirname "$0")/../lib.sh"
 checks=(early_size_overflow early_ram_too_small early_out_dir_missing comma_chardev_doubled
-    comma_insn_profile_one_file comma_failed_start_shows_log)
+    comma_insn_profile_one_file comma_failed_start_shows_log early_scene_refused_board_killed)
 board_ready "${checks[@]}" || exit 0
 T=$(mktemp -d /tmp/links1-early.XXXXXX)
 trap 'rm -rf "$T"' EXIT
@@ -114,4 +118,31 @@ if [[ $plugin =~ ,profile=[^,]*/links1-insns-[0-9]+-[^,/]*/profile(,|$) ]] &&
     echo "PASS comma_insn_profile_one_file"
 else
     echo "FAIL comma_insn_profile_one_file: the plugin's profile= argument is not the run's private file, or FILE's comma added an option: $plugin"
+fi
+
+# ---- a scene that does not compile: refused, the board started beside
+# its compile killed.  This QEMU writes its pid and would run a minute.
+cat >"$T/slow-qemu" <<'EOF2'
+#!/bin/sh
+echo $$ >>"$FAKE_PIDS"
+exec sleep 60
+EOF2
+chmod +x "$T/slow-qemu"
+# a model of 65,536 triangles with a bad last line: its compile lasts long
+# enough (0.2 s) for that QEMU to have started
+"$(dirname "$LINKS1")/links1-spd" tetra 8 -o "$T/bad.nff" >/dev/null 2>&1
+echo "zz 1 2 3" >>"$T/bad.nff"
+unset LINKS1_BOARDS
+start=$SECONDS
+QEMU="$T/slow-qemu" FAKE_PIDS="$T/pids" run bad_scene 20 render "$T/bad.nff" -o "$T/bad.png"
+took=$((SECONDS - start))
+alive=0
+while read -r pid; do
+    kill -0 "$pid" 2>/dev/null && alive=1 && kill -9 "$pid"
+done <"$T/pids" 2>/dev/null
+if [ $rc -eq 1 ] && grep -q "bad.nff:262155:1: unknown NFF entity 'zz'" "$T/bad_scene.log" && ! grep -q booting "$T/bad_scene.log" &&
+    [ $alive -eq 0 ] && [ -s "$T/pids" ] && [ $took -lt 10 ] && [ ! -e "$T/bad.png" ]; then
+    echo "PASS early_scene_refused_board_killed"
+else
+    echo "FAIL early_scene_refused_board_killed: exit $rc after $took s (want 1, the scene's line named, no 'booting'), QEMU started: $([ -s "$T/pids" ] && echo yes || echo no), left running: $alive"
 fi
