@@ -62,6 +62,19 @@ static void lex_skip_space(struct lex *lx)
     }
 }
 
+/* A word goes on through letters, digits, '_', '.' and '-' (never the
+ * text's ending NUL). */
+static int lex_word_char(int c)
+{
+    return isalnum(c) || c == '_' || c == '.' || c == '-';
+}
+
+/* A number goes on to a space, a brace, '#', '"' or the text's end. */
+static int lex_number_char(int c)
+{
+    return c && !isspace(c) && c != '{' && c != '}' && c != '#' && c != '"';
+}
+
 static void lex_take(struct lex *lx, size_t *n)
 {
     if (*n + 1 >= sizeof lx->tok)
@@ -87,14 +100,11 @@ void lex_next(struct lex *lx)
         lex_take(lx, &n);
     } else if (isalpha(c) || c == '_') {
         lx->kind = LEX_WORD;
-        /* (strchr finds the terminating NUL too: the end of the text is
-         * tested first, or a word at the very end never ends) */
-        while (lex_peekc(lx) && (isalnum(lex_peekc(lx)) || strchr("_.-", lex_peekc(lx))))
+        while (lex_word_char(lex_peekc(lx)))
             lex_take(lx, &n);
     } else if (isdigit(c) || c == '-' || c == '+' || c == '.') {
         lx->kind = LEX_NUMBER;
-        while (lex_peekc(lx) && !isspace(lex_peekc(lx)) &&
-               strchr("{}#\"", lex_peekc(lx)) == NULL)
+        while (lex_number_char(lex_peekc(lx)))
             lex_take(lx, &n);
         lx->tok[n] = 0;
         char *end;
