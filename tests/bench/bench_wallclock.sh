@@ -38,7 +38,7 @@ for n in 1 2; do
         row="$row | $(awk -v c=$c '{ print $c }' "$TMP/lines" | median)"
     done
     echo "$row |"
-    awk '{ print $7 }' "$TMP/lines" | median >"$TMP/frame-$n"
+    awk '{ print $6 }' "$TMP/lines" | median >"$TMP/frame-$n"
 done
 echo
 awk -v a="$(cat "$TMP/frame-1")" -v b="$(cat "$TMP/frame-2")" \
