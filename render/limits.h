@@ -43,7 +43,9 @@
  * trace_ray + trace_shade) 392 bytes in float, 416 in fixed since rays
  * carry their error bound (328 and 352 before), plus the deepest leaf
  * (refractionless transmission, lights, a shadow walk through up to
- * RENDER_MAX_CLUSTER_DEPTH clusters at 32 bytes each, a primitive test):
+ * RENDER_MAX_CLUSTER_DEPTH clusters at 32 bytes each, a primitive test;
+ * the walk itself is one frame, trace_cluster's 488 bytes in float with
+ * its stack of put-off visits, well inside those 32 levels' 1,024):
  * 4096 before the near-first walk, which adds 8 bytes a level and keeps
  * trace_straight's 160 more bytes out of every level; the error bound
  * adds 56 to the leaf (trace_lights, trace_straight, trace_nearest), the
