@@ -145,11 +145,12 @@ static void compile_cluster(const struct sd_cluster *c, uint8_t *p)
         wire_put_f32(p + SCN_CLUSTER_MATRIX + 4 * i, (float)c->m[i]);
 }
 
-static void compile_prim(const struct sd_prim *pr, uint8_t *p)
+/* Primitive pr in cluster cluster (its own, or the automatic tree's). */
+static void compile_prim(const struct sd_prim *pr, int cluster, uint8_t *p)
 {
     wire_put_u16(p + SCN_PRIM_KIND, (uint16_t)pr->kind);
     wire_put_u16(p + SCN_PRIM_MATERIAL, (uint16_t)pr->material);
-    wire_put_u32(p + SCN_PRIM_CLUSTER, (uint32_t)pr->cluster);
+    wire_put_u32(p + SCN_PRIM_CLUSTER, (uint32_t)cluster);
     if (pr->kind == SCN_PRIM_CONE)
         wire_put_u32(p + SCN_PRIM_CAPS, pr->capped ? SCN_CONE_CAPPED : SCN_CONE_OPEN);
     if (pr->kind == SCN_PRIM_DENSITY) {
@@ -221,8 +222,10 @@ static void compile_normals(const struct sd_scene *s, uint8_t *p)
     }
 }
 
-/* Section kind's records written at p. */
-static void compile_section_body(const struct sd_scene *s, int kind, uint8_t *p)
+/* Section kind's records written at p; prim_cluster: each primitive's
+ * cluster in the automatic tree, or NULL (its own). */
+static void compile_section_body(const struct sd_scene *s, const int *prim_cluster, int kind,
+                                 uint8_t *p)
 {
     switch (kind) {
     case SCN_SEC_VIEW: compile_view(s, p); break;
@@ -242,7 +245,8 @@ static void compile_section_body(const struct sd_scene *s, int kind, uint8_t *p)
         break;
     case SCN_SEC_PRIMS:
         for (int k = 0; k < s->n_prims; k++)
-            compile_prim(&s->prims[k], p + (size_t)k * SCN_PRIM_SIZE);
+            compile_prim(&s->prims[k], prim_cluster ? prim_cluster[k] : s->prims[k].cluster,
+                         p + (size_t)k * SCN_PRIM_SIZE);
         break;
     case SCN_SEC_COMPONENTS: compile_components(s, p); break;
     case SCN_SEC_KEYS:
@@ -308,7 +312,8 @@ static void compile_header(uint8_t *b, int n, size_t total)
     wire_put_u32(b + SCN_HDR_SUM, wordsum(b + SCN_SUM_START, total - SCN_SUM_START));
 }
 
-static int compile_form(const struct sd_scene *s, uint8_t **out, size_t *len, char *err,
+static int compile_form(const struct sd_scene *s, const int *prim_cluster, uint8_t **out,
+                        size_t *len, char *err,
                         size_t errlen)
 {
     *out = NULL;
@@ -342,7 +347,7 @@ static int compile_form(const struct sd_scene *s, uint8_t **out, size_t *len, ch
         wire_put_u32(e + SCN_SECENT_OFFSET, used[i].offset);
         wire_put_u32(e + SCN_SECENT_BYTES, used[i].count * used[i].record);
         wire_put_u32(e + SCN_SECENT_COUNT, used[i].count);
-        compile_section_body(s, used[i].kind, b + used[i].offset);
+        compile_section_body(s, prim_cluster, used[i].kind, b + used[i].offset);
     }
     compile_header(b, n, total);
     *out = b;
@@ -351,10 +356,10 @@ static int compile_form(const struct sd_scene *s, uint8_t **out, size_t *len, ch
 }
 
 /* The compiled form, refused when the board could not hold it. */
-static int compile_checked(const struct sd_scene *s, uint8_t **out, size_t *len, char *err,
-                           size_t errlen)
+static int compile_checked(const struct sd_scene *s, const int *prim_cluster, uint8_t **out,
+                           size_t *len, char *err, size_t errlen)
 {
-    if (compile_form(s, out, len, err, errlen) != 0)
+    if (compile_form(s, prim_cluster, out, len, err, errlen) != 0)
         return -1;
     if (sd_board_check(*out, *len, SD_BOARD_BLOB_LIMIT, err, errlen) == 0)
         return 0;
@@ -376,26 +381,19 @@ int sd_compile(const struct sd_scene *s, uint8_t **out, size_t *len, char *err, 
     *out = NULL;
     *len = 0;
     if (s->no_auto_hierarchy || s->n_prims == 0)
-        return compile_checked(s, out, len, err, errlen);
-    /* the same scene with the tree's clusters and the primitives moved
-     * into its leaves; everything else shared */
+        return compile_checked(s, NULL, out, len, err, errlen);
+    /* the same scene with the tree's clusters, the primitives moved into
+     * its leaves (prim_cluster); everything else shared */
     struct sd_scene t = *s;
     int *prim_cluster = scene_mem_alloc((size_t)s->n_prims * sizeof *prim_cluster);
-    struct sd_prim *prims = scene_mem_alloc((size_t)s->n_prims * sizeof *prims);
     struct bvh_build_stats stats;
     int rc = -1;
-    if (!prim_cluster || !prims)
+    if (!prim_cluster)
         snprintf(err, errlen, "out of memory compiling the scene");
     else if (sd_auto_hierarchy(s, &t.clusters, &t.n_clusters, prim_cluster, &stats, err, errlen) == 0) {
-        for (int i = 0; i < s->n_prims; i++) {
-            prims[i] = s->prims[i];
-            prims[i].cluster = prim_cluster[i];
-        }
-        t.prims = prims;
-        rc = compile_checked(&t, out, len, err, errlen);
+        rc = compile_checked(&t, prim_cluster, out, len, err, errlen);
         free(t.clusters);
     }
-    free(prims);
     free(prim_cluster);
     return rc;
 }
