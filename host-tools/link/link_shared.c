@@ -2,8 +2,11 @@
  * link_shared.h). */
 #include "host-tools/link/link_shared.h"
 
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
+#include <sys/mman.h>
+#include <unistd.h>
 
 #include "proto/wordsum.h"
 #include "proto/wire.h"
@@ -52,6 +55,23 @@ static int link_shared_cancel(struct board *b, uint32_t offset)
     return -1;
 }
 
+/* The board's RAM at [p, p + len) mapped here before the bytes are
+ * copied in: one call instead of a page fault a page (a scene of 27 MB
+ * is 6,600 pages).  Only a speed-up: where the kernel lacks it, the copy
+ * faults the pages in as before. */
+static void link_shared_populate(uint8_t *p, size_t len)
+{
+#if defined(MADV_POPULATE_WRITE)
+    uintptr_t page = (uintptr_t)sysconf(_SC_PAGESIZE);
+    uintptr_t lo = (uintptr_t)p & ~(page - 1), hi = ((uintptr_t)p + len + page - 1) & ~(page - 1);
+    if (len)
+        (void)madvise((void *)lo, hi - lo, MADV_POPULATE_WRITE);
+#else
+    (void)p;
+    (void)len;
+#endif
+}
+
 int link_shared_send(struct board *b, const void *data, size_t len)
 {
     struct link_bulk k = {0, 0, 0};
@@ -65,6 +85,7 @@ int link_shared_send(struct board *b, const void *data, size_t len)
                 k.length, len);
         return link_shared_cancel(b, k.offset);
     }
+    link_shared_populate(b->ram + k.offset, len);
     for (int t = 1;; t++) {
         memcpy(b->ram + k.offset, data, len);
         struct link_bulk done = {k.offset, (uint32_t)len, wordsum(data, len)};
