@@ -50,7 +50,7 @@ static int board_named_name_ok(const char *name)
     if (board_state_name_ok(name) == 0)
         return 0;
     fprintf(stderr, "links1: board name '%s': use 1 to %d letters, digits, '_', '.' or '-', "
-            "not starting with '.'\n", name, BOARD_NAME_MAX);
+            "not starting with '.' or '-'\n", name, BOARD_NAME_MAX);
     return -1;
 }
 

@@ -116,7 +116,7 @@ int board_state_base(int create, char *path, size_t cap)
 int board_state_name_ok(const char *name)
 {
     size_t n = strlen(name);
-    int ok = n >= 1 && n <= BOARD_NAME_MAX && name[0] != '.';
+    int ok = n >= 1 && n <= BOARD_NAME_MAX && name[0] != '.' && name[0] != '-';
     for (size_t i = 0; ok && i < n; i++)
         ok = (name[i] >= 'a' && name[i] <= 'z') || (name[i] >= 'A' && name[i] <= 'Z') ||
              (name[i] >= '0' && name[i] <= '9') || strchr("_.-", name[i]);

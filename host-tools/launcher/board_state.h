@@ -51,7 +51,8 @@ struct board_record {
  * -2 (nothing printed) when it is missing and create is 0. */
 int board_state_base(int create, char *path, size_t cap);
 
-/* NAME (1..64 of [A-Za-z0-9_.-], not starting with '.') checked: 0, or -1
+/* NAME (1..64 of [A-Za-z0-9_.-], not starting with '.' or '-': an option
+ * such as --help is never taken for a name) checked: 0, or -1
  * after printing what a name may be. */
 int board_state_name_ok(const char *name);
 

@@ -26,6 +26,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "host-tools/launcher/board_state.h"
 #include "host-tools/launcher/launcher.h"
 #include "host-tools/opts/tmp_dir.h"
 #include "proto/wire.h"
@@ -613,6 +614,20 @@ static void named_dead_board_named(void)
     list(err, sizeof err); /* stale: removed */
 }
 
+/* A name is letters, digits, '_', '.' and '-', never starting with '.'
+ * (a hidden entry, "..") or '-' (an option: `board start --name --help`
+ * must not start a board called --help). */
+static void named_names_checked(void)
+{
+    CHECK_EQ_INT(board_state_name_ok("b1"), 0);
+    CHECK_EQ_INT(board_state_name_ok("b-1.x_2"), 0);
+    CHECK_EQ_INT(board_state_name_ok("--help"), -1);
+    CHECK_EQ_INT(board_state_name_ok("-x"), -1);
+    CHECK_EQ_INT(board_state_name_ok(".."), -1);
+    CHECK_EQ_INT(board_state_name_ok("a/b"), -1);
+    CHECK_EQ_INT(board_state_name_ok(""), -1);
+}
+
 int main(int argc, char **argv)
 {
     if (getenv("FAKE_NAMED"))
@@ -625,6 +640,7 @@ int main(int argc, char **argv)
     path_of(base, sizeof base, root, "base");
     setenv("QEMU", "/proc/self/exe", 1);
     setenv("FAKE_NAMED", "1", 1);
+    RUN(named_names_checked);
     RUN(named_base_created_private);
     RUN(named_xdg_runtime_dir);
     RUN(named_base_of_another_refused);
