@@ -1096,8 +1096,8 @@ static void render_print_wall(const struct render_wall *w)
     printf("links1 render: wall %lld ms: compile %lld, boot %lld, upload %lld, load %lld, frames "
            "%lld (board: prepare %lld, render %lld), pull %lld, write %lld, shutdown %lld, other "
            "%lld; QEMU CPU while rendering %lld ms (%.2f host cores)\n",
-           w->total, w->compile, w->boot, w->upload, w->load, w->frame, w->board_prepare, w->board_render,
-           w->pull, w->write, w->shutdown, other, w->render_cpu,
+           w->total, w->compile, w->boot, w->upload, w->load, w->frame, w->board_prepare,
+           w->board_render, w->pull, w->write, w->shutdown, other, w->render_cpu,
            w->frame > 0 ? (double)w->render_cpu / (double)w->frame : 0.0);
 }
 
@@ -1192,8 +1192,6 @@ static int render_dm_spans(const char *marks, uint32_t prims)
     return 0;
 }
 
-/* The counts printed, the trace and the profile written (rc: the run's
- * status so far), the directory removed.  0, or -1 after saying why. */
 /* The counting's private directory removed, nothing read from it (the
  * run ended before its board reported in). */
 static void render_counting_drop(struct render_counting *k)
@@ -1202,6 +1200,8 @@ static void render_counting_drop(struct render_counting *k)
         fprintf(stderr, "links1 render: could not remove %s: %s\n", k->dir, strerror(errno));
 }
 
+/* The counts printed, the trace and the profile written (rc: the run's
+ * status so far), the directory removed.  0, or -1 after saying why. */
 static int render_counting_close(struct render_opts *o, const struct render_run *run,
                                  struct render_counting *k, int rc)
 {

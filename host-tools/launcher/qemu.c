@@ -795,6 +795,8 @@ static int board_start_named_run(struct board *b, const struct board_opts *o,
         board_stop(b);
         return -1;
     }
+    if (b->opts.machine == MACHINE_AN521)
+        board_say_booting(b);
     int fd = board_named_started(b, timeout_ms); /* the record names every QEMU */
     if (fd < 0) {
         board_named_abandon(b);
