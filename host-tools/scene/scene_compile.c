@@ -313,8 +313,7 @@ static void compile_header(uint8_t *b, int n, size_t total)
 }
 
 static int compile_form(const struct sd_scene *s, const int *prim_cluster, uint8_t **out,
-                        size_t *len, char *err,
-                        size_t errlen)
+                        size_t *len, char *err, size_t errlen)
 {
     *out = NULL;
     *len = 0;

@@ -5,8 +5,8 @@
  * bytes or more is asked to be backed by transparent huge pages
  * (madvise MADV_HUGEPAGE on the 2 MiB extents inside it), where the kernel
  * offers them: a scene of 262,144 triangles touches some 200 MB, and a
- * fault for every 4 KiB page of it is a third of its compile time.  The
- * blocks are freed with free(). */
+ * fault for every 4 KiB page of it took about a quarter of its compile
+ * (perf).  The blocks are freed with free(). */
 #ifndef LINKS1_SCENE_MEM_H
 #define LINKS1_SCENE_MEM_H
 
