@@ -281,7 +281,7 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
                 "shadow, %llu reflection, %llu refraction, %llu transmission, %llu cut by "
                 "weight; "
                 "%u pixels in doubt; %llu box tests, %llu primitive tests; traced in "
-                "%.3f s (%.3f s CPU)\n",
+                "%.6f s (%.6f s CPU)\n",
                 NUM_NAME, in, frame, img.width, img.height, out,
                 (unsigned long long)ctx.stats.primary, (unsigned long long)ctx.stats.shadow,
                 (unsigned long long)ctx.stats.reflection,
