@@ -26,7 +26,6 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include "host-tools/launcher/board_state.h"
 #include "host-tools/launcher/launcher.h"
 #include "host-tools/opts/tmp_dir.h"
 #include "proto/wire.h"
@@ -616,16 +615,23 @@ static void named_dead_board_named(void)
 
 /* A name is letters, digits, '_', '.' and '-', never starting with '.'
  * (a hidden entry, "..") or '-' (an option: `board start --name --help`
- * must not start a board called --help). */
+ * must not start a board called --help): refused naming it, no board
+ * started. */
 static void named_names_checked(void)
 {
-    CHECK_EQ_INT(board_state_name_ok("b1"), 0);
-    CHECK_EQ_INT(board_state_name_ok("b-1.x_2"), 0);
-    CHECK_EQ_INT(board_state_name_ok("--help"), -1);
-    CHECK_EQ_INT(board_state_name_ok("-x"), -1);
-    CHECK_EQ_INT(board_state_name_ok(".."), -1);
-    CHECK_EQ_INT(board_state_name_ok("a/b"), -1);
-    CHECK_EQ_INT(board_state_name_ok(""), -1);
+    fresh_base(1);
+    char err[4096];
+    static const char *const bad[] = {"--help", "-x", "..", ".b", "a/b", ""};
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) {
+        char want[64];
+        snprintf(want, sizeof want, "board name '%s'", bad[i]);
+        CHECK_EQ_INT(start(bad[i], err, sizeof err), -1);
+        CHECK(strstr(err, want) != NULL);
+    }
+    int pid = start("b-1.x_2", err, sizeof err);
+    CHECK(pid > 0);
+    stop("b-1.x_2", err, sizeof err);
+    CHECK(pid <= 0 || !alive(pid));
 }
 
 int main(int argc, char **argv)
