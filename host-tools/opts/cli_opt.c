@@ -75,6 +75,15 @@ static void cli_report(const struct cli *c, int code)
     cli_see_help(c);
 }
 
+/* Whether the value getopt_long just took for an option is the next word
+ * and that word is itself a long option (`--name --help`): such a value
+ * is refused, not taken; written `--name=--help` it is taken. */
+static int cli_value_is_option(const struct cli *c)
+{
+    const char *word = optind > 0 && optind <= c->argc ? c->argv[optind - 1] : NULL;
+    return optarg && optarg == word && strncmp(optarg, "--", 2) == 0 && optarg[2];
+}
+
 int cli_next(struct cli *c)
 {
     c->arg = NULL;
@@ -93,6 +102,17 @@ int cli_next(struct cli *c)
     }
     if (code == '?' || code == ':') {
         cli_report(c, code);
+        return CLI_BAD;
+    }
+    if (cli_value_is_option(c)) {
+        const char *opt = idx >= 0 ? c->longs[idx].name : NULL;
+        if (opt)
+            fprintf(stderr, "%s: --%s needs a value, not the option '%s' (--%s=%s gives it "
+                    "that value)", c->prog, opt, optarg, opt, optarg);
+        else
+            fprintf(stderr, "%s: -%c needs a value, not the option '%s'", c->prog, code,
+                    optarg);
+        cli_see_help(c);
         return CLI_BAD;
     }
     c->arg = optarg;

@@ -99,6 +99,31 @@ static void test_bad_options_named(void)
     CHECK(t_refused(no_value, "links1 test: --ppm takes no value"));
     char *ambiguous[] = {"x", "--fr", "1", NULL};
     CHECK(t_refused(ambiguous, "'--fr' is ambiguous: it could be --frame --frames"));
+    /* an option where a value should be is not taken for it (`board
+     * start --name --help` once started a board named --help) */
+    char *option_as_value[] = {"x", "--size", "--help", NULL};
+    CHECK(t_refused(option_as_value, "links1 test: --size needs a value, not the option "
+                                     "'--help' (--size=--help gives it that value) (see "
+                                     "links1 test --help)"));
+    char *option_as_short_value[] = {"x", "-o", "--ppm", NULL};
+    CHECK(t_refused(option_as_short_value, "links1 test: -o needs a value, not the option "
+                                           "'--ppm'"));
+}
+
+/* A value written with '=' is taken as it is, and a single dash (a
+ * negative number) after an option is its value. */
+static void test_values_like_options_written_out(void)
+{
+    char *argv[] = {"x", "--size=--odd", "-o", "-5", "-o--x", NULL};
+    int codes[16];
+    const char *args[16];
+    char msg[256];
+    int n = t_read(argv, codes, args, msg, sizeof msg);
+    CHECK_EQ_INT(n, 3);
+    CHECK(codes[0] == T_SIZE && strcmp(args[0], "--odd") == 0);
+    CHECK(codes[1] == 'o' && strcmp(args[1], "-5") == 0);
+    CHECK(codes[2] == 'o' && strcmp(args[2], "--x") == 0);
+    CHECK(msg[0] == 0);
 }
 
 /* Runs board_opt on the one option in argv; returns its result, message in msg. */
@@ -244,6 +269,7 @@ int main(void)
     RUN(test_optdefs_pick);
     RUN(test_operands_keep_their_place);
     RUN(test_bad_options_named);
+    RUN(test_values_like_options_written_out);
     RUN(test_board_options);
     RUN(test_numbers);
     return check_exit();
