@@ -111,7 +111,6 @@ enum render_opt_code {
     RENDER_OPT_CLIP,
     RENDER_OPT_NO_BBOX,
     RENDER_OPT_NO_HIERARCHY,
-    RENDER_OPT_VIEW,
     RENDER_OPT_PPM,
     RENDER_OPT_COUNT_INSNS,
     RENDER_OPT_INSN_PROFILE,
@@ -174,7 +173,6 @@ static const struct cli_optdef render_optdefs[] = {
     {"rows", "A:B", RENDER_OPT_ROWS, "render scanlines A..B only: OUT is that band"},
     {"band", "I/N", RENDER_OPT_BAND, "render band I of N equal bands of scanlines"},
     {"ppm", NULL, RENDER_OPT_PPM, "write PPM (also chosen by an OUT ending in .ppm)"},
-    {"view", NULL, RENDER_OPT_VIEW, "show the frame memory live (-device ramfb, a display)"},
     {"board", "NAME", RENDER_OPT_BOARD,
      "render on the running board NAME (links1 board start)"},
     {"count-insns", NULL, RENDER_OPT_COUNT_INSNS, "count guest instructions per core, print them"},
@@ -328,7 +326,6 @@ static int render_take_frames(struct render_opts *o, const struct cli *c, int co
         return 1;
     case RENDER_OPT_RESUME: o->resume = 1; return 1;
     case RENDER_OPT_PPM: o->ppm = 1; return 1;
-    case RENDER_OPT_VIEW: o->board.view = 1; return 1;
     case RENDER_OPT_BOARD: o->board_name = c->arg; return 1;
     }
     return 0;

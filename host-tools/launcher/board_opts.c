@@ -33,6 +33,7 @@ const struct cli_optdef board_optdefs[] = {
     {"gdb", "", BOARD_OPT_GDB,
      "start halted, QEMU's gdb stub on a unix socket in your state\n"
      "directory (its path printed; make gdb)"},
+    {"view", NULL, BOARD_OPT_VIEW, "show the frame memory live (-device ramfb, a display)"},
     {"link", "L", BOARD_OPT_LINK,
      "bulk bytes through shared memory (fast, default) or the serial\n"
      "link (serial); commands and results always go serially"},
@@ -112,6 +113,9 @@ int board_opt(struct board_opts *o, const struct cli *c, int code)
         return 1;
     case BOARD_OPT_GDB:
         return board_opt_gdb(o, c);
+    case BOARD_OPT_VIEW:
+        o->view = 1;
+        return 1;
     case BOARD_OPT_LINK:
         if (strcmp(c->arg, "fast") != 0 && strcmp(c->arg, "serial") != 0)
             return cli_bad_value(c, "fast or serial");

@@ -55,7 +55,7 @@ void board_opts_init(struct board_opts *o);
 
 /* The board options every command that starts a board takes (--ncs,
  * --machine, --arith, --firmware, --timeout, --ram, --quiet, --verbose,
- * --gdb, --link, --link-noise), defined once: board_optdefs, for each
+ * --gdb, --view, --link, --link-noise), defined once: board_optdefs, for each
  * command's getopt table and --help. */
 enum board_opt_code {
     BOARD_OPT_NCS = CLI_BOARD_CODES,
@@ -69,6 +69,7 @@ enum board_opt_code {
     BOARD_OPT_GDB,
     BOARD_OPT_LINK_NOISE,
     BOARD_OPT_MACHINE,
+    BOARD_OPT_VIEW,
 };
 extern const struct cli_optdef board_optdefs[];
 
