@@ -10,6 +10,7 @@
 #include "host-tools/launcher/launcher.h"
 #include "host-tools/opts/cli_opt.h"
 #include "tests/check.h"
+#include "tests/host/capture.h"
 
 enum { T_SIZE = CLI_OWN_CODES, T_PPM, T_FRAME, T_FRAMES };
 
@@ -22,66 +23,61 @@ static const struct cli_optdef t_optdefs[] = {
 };
 static struct option t_options[64]; /* board_optdefs and t_optdefs (main makes it) */
 
+/* What cli_next returned over an argv: the codes (with operands and
+ * values in args) and what was printed on stderr. */
+struct t_seen {
+    int n;
+    int codes[16];
+    const char *args[16];
+    char msg[256];
+};
+
 /* Runs cli_next over argv (NULL-terminated) until the end or the first
- * CLI_BAD; the codes go to codes (with operands and values in args), what
- * was printed on stderr to msg.  Returns the number of codes. */
-static int t_read(char **argv, int *codes, const char **args, char *msg, size_t msglen)
+ * CLI_BAD, into *s. */
+static void t_read(char **argv, struct t_seen *s)
 {
     int argc = 0;
     while (argv[argc])
         argc++;
-    fflush(stderr);
-    FILE *tmp = tmpfile();
-    int saved = dup(2);
-    dup2(fileno(tmp), 2);
+    struct capture cap;
+    capture_begin(&cap, STDERR_FILENO);
     struct cli c;
     cli_init(&c, "links1 test", argc, argv, "o:h", t_options);
-    int n = 0;
-    for (int code; (code = cli_next(&c)) != -1;) {
-        codes[n] = code;
-        args[n++] = c.arg;
+    s->n = 0;
+    for (int code; s->n < 16 && (code = cli_next(&c)) != -1;) {
+        s->codes[s->n] = code;
+        s->args[s->n++] = c.arg;
         if (code == CLI_BAD)
             break;
     }
-    fflush(stderr);
-    dup2(saved, 2);
-    close(saved);
-    rewind(tmp);
-    size_t k = fread(msg, 1, msglen - 1, tmp);
-    msg[k] = 0;
-    fclose(tmp);
-    return n;
+    capture_end(&cap, s->msg, sizeof s->msg);
 }
 
 static void test_operands_keep_their_place(void)
 {
     char *argv[] = {"render", "a.scn", "-o", "a.png", "--ppm", "b.scn", "-ob.png",
                     "--size=40x30", "--", "--c.scn", NULL};
-    int codes[16];
-    const char *args[16];
-    char msg[256];
-    int n = t_read(argv, codes, args, msg, sizeof msg);
-    CHECK_EQ_INT(n, 7);
-    CHECK(codes[0] == CLI_OPERAND && strcmp(args[0], "a.scn") == 0);
-    CHECK(codes[1] == 'o' && strcmp(args[1], "a.png") == 0);
-    CHECK(codes[2] == T_PPM);
-    CHECK(codes[3] == CLI_OPERAND && strcmp(args[3], "b.scn") == 0);
-    CHECK(codes[4] == 'o' && strcmp(args[4], "b.png") == 0);
-    CHECK(codes[5] == T_SIZE && strcmp(args[5], "40x30") == 0);
-    CHECK(codes[6] == CLI_OPERAND && strcmp(args[6], "--c.scn") == 0);
-    CHECK(msg[0] == 0);
+    struct t_seen s;
+    t_read(argv, &s);
+    CHECK_EQ_INT(s.n, 7);
+    CHECK(s.codes[0] == CLI_OPERAND && strcmp(s.args[0], "a.scn") == 0);
+    CHECK(s.codes[1] == 'o' && strcmp(s.args[1], "a.png") == 0);
+    CHECK(s.codes[2] == T_PPM);
+    CHECK(s.codes[3] == CLI_OPERAND && strcmp(s.args[3], "b.scn") == 0);
+    CHECK(s.codes[4] == 'o' && strcmp(s.args[4], "b.png") == 0);
+    CHECK(s.codes[5] == T_SIZE && strcmp(s.args[5], "40x30") == 0);
+    CHECK(s.codes[6] == CLI_OPERAND && strcmp(s.args[6], "--c.scn") == 0);
+    CHECK(s.msg[0] == 0);
 }
 
 /* Expects argv to end in CLI_BAD with a message containing want. */
 static int t_refused(char **argv, const char *want)
 {
-    int codes[16];
-    const char *args[16];
-    char msg[256];
-    int n = t_read(argv, codes, args, msg, sizeof msg);
-    if (n > 0 && codes[n - 1] == CLI_BAD && strstr(msg, want))
+    struct t_seen s;
+    t_read(argv, &s);
+    if (s.n > 0 && s.codes[s.n - 1] == CLI_BAD && strstr(s.msg, want))
         return 1;
-    printf("  (got: %s)\n", msg);
+    printf("  (got: %s)\n", s.msg);
     return 0;
 }
 
@@ -115,15 +111,13 @@ static void test_bad_options_named(void)
 static void test_values_like_options_written_out(void)
 {
     char *argv[] = {"x", "--size=--odd", "-o", "-5", "-o--x", NULL};
-    int codes[16];
-    const char *args[16];
-    char msg[256];
-    int n = t_read(argv, codes, args, msg, sizeof msg);
-    CHECK_EQ_INT(n, 3);
-    CHECK(codes[0] == T_SIZE && strcmp(args[0], "--odd") == 0);
-    CHECK(codes[1] == 'o' && strcmp(args[1], "-5") == 0);
-    CHECK(codes[2] == 'o' && strcmp(args[2], "--x") == 0);
-    CHECK(msg[0] == 0);
+    struct t_seen s;
+    t_read(argv, &s);
+    CHECK_EQ_INT(s.n, 3);
+    CHECK(s.codes[0] == T_SIZE && strcmp(s.args[0], "--odd") == 0);
+    CHECK(s.codes[1] == 'o' && strcmp(s.args[1], "-5") == 0);
+    CHECK(s.codes[2] == 'o' && strcmp(s.args[2], "--x") == 0);
+    CHECK(s.msg[0] == 0);
 }
 
 /* Runs board_opt on the one option in argv; returns its result, message in msg. */
@@ -132,21 +126,13 @@ static int t_board(char **argv, struct board_opts *o, char *msg, size_t msglen)
     int argc = 0;
     while (argv[argc])
         argc++;
-    fflush(stderr);
-    FILE *tmp = tmpfile();
-    int saved = dup(2);
-    dup2(fileno(tmp), 2);
+    struct capture cap;
+    capture_begin(&cap, STDERR_FILENO);
     struct cli c;
     cli_init(&c, "links1 test", argc, argv, "o:h", t_options);
     int code = cli_next(&c);
     int r = board_opt(o, &c, code);
-    fflush(stderr);
-    dup2(saved, 2);
-    close(saved);
-    rewind(tmp);
-    size_t k = fread(msg, 1, msglen - 1, tmp);
-    msg[k] = 0;
-    fclose(tmp);
+    capture_end(&cap, msg, msglen);
     return r;
 }
 
