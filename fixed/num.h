@@ -76,6 +76,10 @@ _Static_assert(4 * NUM_COORD_LIMIT < NUM_INT_MAX, "NUM_FAR must fit the fixed fo
 static inline num_t num_ulp(num_t a) { (void)a; return NUM_EPSILON; }
 
 static inline int num_is_sat(num_t a) { return a == NUM_RAW_SAT || a == -NUM_RAW_SAT; }
+static inline int num_any_sat3(num_t a, num_t b, num_t c)
+{
+    return num_is_sat(a) || num_is_sat(b) || num_is_sat(c);
+}
 
 /* Clamp a wide result into range; out of range becomes the marker. */
 static inline num_t num__from_wide(int64_t r)
@@ -283,6 +287,13 @@ static inline num_t num_sqrt(num_t a) { return a > 0 ? __builtin_sqrtf(a) : 0; }
 
 /* Not finite: an overflow, a division by zero or an invalid operation. */
 static inline int num_is_sat(num_t a) { return !(a - a == 0); }
+/* Any of three not finite, with one comparison: x - x is 0 for every
+ * finite x and NaN otherwise, and a sum of zeros and NaNs is 0 only when
+ * no term is NaN. */
+static inline int num_any_sat3(num_t a, num_t b, num_t c)
+{
+    return !((a - a) + (b - b) + (c - c) == 0);
+}
 
 /* Spacing of representable values near a (at most; normal numbers). */
 static inline num_t num_ulp(num_t a) { return (a < 0 ? -a : a) * NUM__REL_STEP; }

@@ -50,7 +50,7 @@ static inline vec3_t vec3_normalize(vec3_t a)
 #endif
     return vec3_make(num_div(a.x, len), num_div(a.y, len), num_div(a.z, len));
 }
-static inline int vec3_is_sat(vec3_t a) { return num_is_sat(a.x) || num_is_sat(a.y) || num_is_sat(a.z); }
+static inline int vec3_is_sat(vec3_t a) { return num_any_sat3(a.x, a.y, a.z); }
 static inline num_t vec3_get(vec3_t a, int axis) { return axis == 0 ? a.x : axis == 1 ? a.y : a.z; }
 static inline void vec3_set(vec3_t *a, int axis, num_t v)
 {
@@ -70,7 +70,7 @@ static inline rgb_t rgb_make(num_t r, num_t g, num_t b)
 static inline rgb_t rgb_add(rgb_t a, rgb_t b) { return rgb_make(num_add(a.r, b.r), num_add(a.g, b.g), num_add(a.b, b.b)); }
 static inline rgb_t rgb_mul(rgb_t a, rgb_t b) { return rgb_make(num_mul(a.r, b.r), num_mul(a.g, b.g), num_mul(a.b, b.b)); }
 static inline rgb_t rgb_scale(rgb_t a, num_t s) { return rgb_make(num_mul(a.r, s), num_mul(a.g, s), num_mul(a.b, s)); }
-static inline int rgb_is_sat(rgb_t a) { return num_is_sat(a.r) || num_is_sat(a.g) || num_is_sat(a.b); }
+static inline int rgb_is_sat(rgb_t a) { return num_any_sat3(a.r, a.g, a.b); }
 static inline int rgb_is_zero(rgb_t a)
 {
     return !num_gt(a.r, NUM_ZERO) && !num_gt(a.g, NUM_ZERO) && !num_gt(a.b, NUM_ZERO);
