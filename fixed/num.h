@@ -295,13 +295,17 @@ static inline int num_any_sat3(num_t a, num_t b, num_t c)
     return !((a - a) + (b - b) + (c - c) == 0);
 }
 
-/* Spacing of representable values near a (at most; normal numbers). */
-static inline num_t num_ulp(num_t a) { return (a < 0 ? -a : a) * NUM__REL_STEP; }
-
 static inline num_t num_add(num_t a, num_t b) { return a + b; }
 static inline num_t num_sub(num_t a, num_t b) { return a - b; }
 static inline num_t num_neg(num_t a) { return -a; }
-static inline num_t num_abs(num_t a) { return a < 0 ? -a : a; }
+/* |a| by its sign bit (one instruction; -0 gives +0) */
+#if defined(LINKS1_NUM_DOUBLE)
+static inline num_t num_abs(num_t a) { return __builtin_fabs(a); }
+#else
+static inline num_t num_abs(num_t a) { return __builtin_fabsf(a); }
+#endif
+/* Spacing of representable values near a (at most; normal numbers). */
+static inline num_t num_ulp(num_t a) { return num_abs(a) * NUM__REL_STEP; }
 static inline num_t num_mul(num_t a, num_t b) { return a * b; }
 static inline num_t num_div(num_t a, num_t b) { return a / b; }
 static inline num_t num_mul_int(num_t a, int32_t i) { return a * (num_t)i; }
