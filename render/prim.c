@@ -496,20 +496,24 @@ int prim_density_ray(const render_prim_t *p, const ray_t *ray, num_t tmin, prim_
     num_t lo = NUM_ZERO, hi = NUM_ZERO, peak = NUM_ZERO, weights = num_abs(p->threshold);
     r->len = len;
     r->bounded = p->component_count <= PRIM_DENSITY_BOUND_MAX;
+    r->count = 0;
     for (uint16_t k = 0; k < p->component_count; k++) {
         const scene_density_component_t *c = &p->components[k];
         vec3_t oc = vec3_sub(o, c->centre);
         num_t tc = num_neg(vec3_dot(oc, dn));
         vec3_t close = vec3_madd(oc, dn, tc);
+        /* a negative field adds nothing to the bound; nor one whose sphere
+         * the line misses: at every t its r2 = cc + u^2 is no smaller, so
+         * prim_density_bound would find r2 / d^2 at least 1 too */
         if (r->bounded && num_gt(c->weight, NUM_ZERO)) {
             num_t cc = vec3_dot(close, close);
-            r->cc[k] = cc;
-            r->tc[k] = tc;
             peak = num_add(peak, prim_density_field(cc, p->inv_radius2[k], c->weight));
             weights = num_add(weights, c->weight);
-        } else if (r->bounded) { /* a negative field adds nothing to the bound */
-            r->cc[k] = NUM_FAR;
-            r->tc[k] = NUM_ZERO;
+            if (num_lt(num_mul(cc, p->inv_radius2[k]), NUM_ONE)) {
+                r->index[r->count] = k;
+                r->cc[r->count] = cc;
+                r->tc[r->count++] = tc;
+            }
         }
         num_t rad = c->radius;
         if (num_gt(num_abs(close.x), rad) || num_gt(num_abs(close.y), rad) ||
@@ -537,9 +541,10 @@ int prim_density_ray(const render_prim_t *p, const ray_t *ray, num_t tmin, prim_
 num_t prim_density_bound(const render_prim_t *p, const prim_density_ray_t *r, num_t t)
 {
     num_t at = num_mul(t, r->len), sum = NUM_ZERO;
-    for (uint16_t k = 0; k < p->component_count; k++) {
-        num_t u = num_sub(at, r->tc[k]);
-        num_t r2 = num_add(r->cc[k], num_mul(u, u));
+    for (uint16_t j = 0; j < r->count; j++) {
+        uint16_t k = r->index[j];
+        num_t u = num_sub(at, r->tc[j]);
+        num_t r2 = num_add(r->cc[j], num_mul(u, u));
         if (num_lt(num_mul(r2, p->inv_radius2[k]), NUM_ONE))
             sum = num_add(sum, prim_density_field(r2, p->inv_radius2[k], p->components[k].weight));
     }

@@ -202,9 +202,15 @@ typedef struct {
     num_t lo, hi; /* from the first sphere's entry (or tmin) to the last one's exit */
     num_t peak;   /* the bound's largest: each component at its closest approach */
     num_t margin; /* what the bound is widened by (above) */
-    int bounded;  /* cc and tc hold every component */
-    num_t cc[PRIM_DENSITY_BOUND_MAX]; /* squared local distance of the closest approach */
-    num_t tc[PRIM_DENSITY_BOUND_MAX]; /* its s (NUM_FAR, 0: a weight not above 0) */
+    int bounded;  /* the lists below hold every component that adds to the bound */
+    /* The components of weight above 0 whose sphere the ray's line meets
+     * (cc within its radius; each other one adds 0 at every t), in rising
+     * index: count of them, each one's index, the squared local distance
+     * of its closest approach and that approach's s. */
+    uint16_t count;
+    uint16_t index[PRIM_DENSITY_BOUND_MAX];
+    num_t cc[PRIM_DENSITY_BOUND_MAX];
+    num_t tc[PRIM_DENSITY_BOUND_MAX];
 } prim_density_ray_t;
 /* Fills *r; 0 when the ray meets no component's sphere beyond tmin. */
 int prim_density_ray(const render_prim_t *p, const ray_t *ray, num_t tmin, prim_density_ray_t *r);
