@@ -25,7 +25,8 @@
 #
 # Environment (set by the Makefile from the plan): HOST_TESTS (programs),
 # BOARD_TESTS (scripts), FW_DIR; TEST_JOBS (tests at once, default nproc);
-# TEST_TIME_SCALE multiplies every limit (default 1); TEST_PLAN and
+# TEST_START_DELAY (seconds each test waits before it starts: the runner's
+# own tests); TEST_TIME_SCALE multiplies every limit (default 1); TEST_PLAN and
 # TEST_LOG_DIR name another plan and log folder (tests/runner/ tests the
 # runner itself with them).
 set -u
@@ -152,17 +153,26 @@ if [ ${#pool_in[@]} -gt 0 ]; then
     done | sort -t$'\t' -k1,1nr -s | cut -f2)
 fi
 # run_one PATH: runs a test (a script by its interpreter, a program as it
-# is) and reports nothing yet.
+# is) and reports nothing yet.  Its earlier verdict is gone already
+# (forget_verdict, before it starts: the pool looks for a finished test's
+# status file as soon as it has started one, however late that one gets
+# going on a busy host; TEST_START_DELAY seconds model such a late start
+# for tests/runner/).
 run_one() {
-    rm -f "$log_dir/$(basename "$1").log.rc" # no stale verdict
+    [ -n "${TEST_START_DELAY:-}" ] && sleep "$TEST_START_DELAY"
     case $1 in
     *.sh) exec_one "$1" bash "$1" ;;
     *.py) exec_one "$1" python3 "$1" ;;
     *) exec_one "$1" "$1" ;;
     esac
 }
+# forget_verdict PATH: the status file an earlier run of PATH left.
+forget_verdict() {
+    rm -f "$log_dir/$(basename "$1").log.rc"
+}
 next_report=0
 for ((i = 0; i < ${#pool[@]}; i++)); do
+    forget_verdict "${pool[i]}"
     run_one "${pool[i]}" &
     # Keep at most TEST_JOBS running; report finished ones in order.
     while [ "$(jobs -rp | wc -l)" -ge "$TEST_JOBS" ]; do
@@ -180,6 +190,7 @@ while [ $next_report -lt ${#pool[@]} ]; do
     next_report=$((next_report + 1))
 done
 for t in "${alone_list[@]}"; do
+    forget_verdict "$t"
     run_one "$t"
     report_one "$t"
 done

@@ -3,7 +3,8 @@
 # scripts in a temporary folder, with a plan of their own) that pass, fail,
 # hang, crash after printing PASS lines, end early, exit non-zero silently,
 # or are missing from the plan: each must be counted as the runner's header
-# says, and the summary line must add them up.  Two scripts the plan marks
+# says, and the summary line must add them up; a verdict an earlier run
+# left is not taken for this run's.  Two scripts the plan marks
 # "host" run beside each other: each waits for the other to start.
 set -u
 cd "$(dirname "$0")/../.."
@@ -85,4 +86,19 @@ if [ $rc -ne 0 ]; then
     echo "PASS runner_exit_status_says_failed"
 else
     echo "FAIL runner_exit_status_says_failed: the runner exited 0 with failures"
+fi
+# A verdict left by an earlier run is not read as this run's, though the
+# test starts late (TEST_START_DELAY): the runner looks for a finished
+# test's status file right after starting it.
+fake flip 'echo "PASS flip_new"'
+printf '%s\t1\t60\tboard\n' "$tmp/flip.sh" >"$tmp/plan-flip.tsv"
+mkdir -p "$tmp/logs-flip"
+echo "FAIL flip_old: the earlier run's" >"$tmp/logs-flip/flip.sh.log"
+echo "1 1 60" >"$tmp/logs-flip/flip.sh.log.rc"
+out=$(TEST_PLAN="$tmp/plan-flip.tsv" TEST_LOG_DIR="$tmp/logs-flip" HOST_TESTS= \
+    BOARD_TESTS="$tmp/flip.sh" TEST_JOBS=2 TEST_START_DELAY=1 bash tests/run.sh 2>&1)
+if grep -q "flip.sh: 1 passed, 0 failed" <<<"$out" && ! grep -q flip_old <<<"$out"; then
+    echo "PASS runner_stale_verdict_not_read"
+else
+    echo "FAIL runner_stale_verdict_not_read: $(tr '\n' ' ' <<<"$out")"
 fi
