@@ -58,6 +58,14 @@
  * prim_intersect_uncertain + prim_density_intersect + prim_density_ray:
  * 584 bytes in float, 672 in fixed on the A15 (664 on the M33), against
  * 312 and 400 before: 312 more. */
+/* The firmware's render/ at -O3 (Makefile FW_HOT_SRCS; trace_nearest
+ * kept out of the recursion's frames, which stay as above) grows the
+ * leaf's frames, -fstack-usage, gcc 12: in fixed by up to 170 bytes
+ * (trace_cluster 592, trace_lights 696, prim_intersect_uncertain 192 on
+ * the M33, render_pixel_impl 208), in float by 24, in double by up to
+ * 184 (the M33's trace_cluster 784 and trace_own_prims_shadow 152). */
+#define RENDER_STACK_O3 192
+#define RENDER_STACK_O3_DOUBLE 256
 #if defined(LINKS1_NUM_DOUBLE)
 /* double (the board's double-precision VFP build, and the an521 boards'
  * software double): every num_t twice as wide; on the Cortex-A15
@@ -73,11 +81,11 @@
  * 624 before).  About 21 KiB at max_depth 16 with RENDER_STACK_AA, within
  * TASK_STACK_SIZE (24 KiB; roles/dm_render.c checks it) */
 #define RENDER_STACK_PER_DEPTH 744
-#define RENDER_STACK_BASE 6920
+#define RENDER_STACK_BASE (6920 + RENDER_STACK_O3_DOUBLE)
 #define RENDER_STACK_AA 2048
 #else
 #define RENDER_STACK_PER_DEPTH 448
-#define RENDER_STACK_BASE 4992
+#define RENDER_STACK_BASE (4992 + RENDER_STACK_O3)
 #define RENDER_STACK_AA 1216
 #endif
 /* Anti-aliasing (render/trace.c) between the pixel and its camera ray, at

@@ -547,8 +547,10 @@ static const ray_error_t *trace_err_margin(const render_ctx_t *ctx, const ray_er
 }
 
 /* screen (may be NULL): the pixel {x, y} a primary ray goes through, for
- * a walk that skips the subtrees whose screen rectangles miss it. */
-static int trace_nearest(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err, num_t tmin,
+ * a walk that skips the subtrees whose screen rectangles miss it.  Not
+ * inlined: its frame stays out of trace_ray's, which every level of the
+ * recursion pays for (render/limits.h). */
+static __attribute__((noinline)) int trace_nearest(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err, num_t tmin,
                          const uint32_t *clip, uint32_t clip_count, const int32_t *screen,
                          hit_t *hit)
 {
