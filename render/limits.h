@@ -60,10 +60,11 @@
  * 312 and 400 before: 312 more. */
 /* The firmware's render/ at -O3 (Makefile FW_HOT_SRCS; trace_nearest
  * kept out of the recursion's frames, which stay as above) grows the
- * leaf's frames, -fstack-usage, gcc 12: in fixed by up to 170 bytes
- * (trace_cluster 592, trace_lights 696, prim_intersect_uncertain 192 on
- * the M33, render_pixel_impl 208), in float by 24, in double by up to
- * 184 (the M33's trace_cluster 784 and trace_own_prims_shadow 152). */
+ * leaf's frames (-fstack-usage, gcc 12, the frames each path below
+ * render_pixel_impl passes summed by hand): in fixed by about 170 bytes
+ * (trace_cluster 592, trace_lights 696, render_pixel_impl 208, the M33's
+ * prim_intersect_uncertain 192), in float by under 60, in double by
+ * about 185 (the M33's trace_cluster 784, trace_own_prims_shadow 152). */
 #define RENDER_STACK_O3 192
 #define RENDER_STACK_O3_DOUBLE 256
 #if defined(LINKS1_NUM_DOUBLE)
