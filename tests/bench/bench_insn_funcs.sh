@@ -2,7 +2,8 @@
 # tests/bench/bench_insn_funcs.sh [ARITH] [TOP]: where the NCs' guest
 # instructions go, function by function, on the virt board (Cortex-A15)
 # and on the an521 boards (Cortex-M33), for one firmware arithmetic
-# (default fixed).  Each machine renders demo.scn 160x120 on 2 NCs with
+# (default fixed), its own pixels (--no-escalate: the plain firmware).
+# Each machine renders demo.scn 160x120 on 2 NCs with
 # `links1 render --insn-profile` (the counting plugin's instructions per
 # translated block of the NC cores); each block's start address is
 # attributed to the function of the firmware ELF that holds it (the
@@ -24,8 +25,11 @@ trap 'rm -rf "$out"' EXIT
 # $out/MACHINE.funcs.
 profile() {
     local m=$1 elf=$2
+    # the ELF named is the one booted: escalating, links1 render would boot
+    # the -esc firmware, whose functions lie elsewhere
     "$LINKS1" render scenes/demo.scn -o "$out/$m.png" --machine "$m" --arith "$ARITH" \
-        --ncs 2 --size ${W}x$H --insn-profile "$out/$m.prof" --quiet >"$out/$m.log" 2>&1 || {
+        --firmware "$elf" --no-escalate --ncs 2 --size ${W}x$H --insn-profile "$out/$m.prof" \
+        --quiet >"$out/$m.log" 2>&1 || {
         echo "bench_insn_funcs: links1 render --machine $m failed:" >&2
         tail -n 5 "$out/$m.log" >&2
         exit 1
