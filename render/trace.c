@@ -838,6 +838,15 @@ static num_t trace_refract_error(const ray_error_t *err, num_t normal_err, num_t
     return trace_err_clamp(num_add(num_mul(dir_gain, err->dir), num_mul(normal_gain, normal_err)));
 }
 
+/* A pixel that lost precision and will be traced again in the wide
+ * arithmetic (ctx->escalate), which then gives its colour: the rest of
+ * its rays here would be thrown away (not with options.check_lost, which
+ * keeps this arithmetic's colour). */
+static int trace_settled_elsewhere(const render_ctx_t *ctx)
+{
+    return ctx->pixel_lost && ctx->escalate && !ctx->options.check_lost;
+}
+
 /* weight: the product of src and trc along the path of the ray that made
  * this hit (1 for a camera ray); err: that ray's error bound.  The hit
  * point's error starts every secondary ray; the normal's (the hit's error
@@ -845,6 +854,8 @@ static num_t trace_refract_error(const ray_error_t *err, num_t normal_err, num_t
 static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err,
                          const hit_t *hit, int depth, num_t weight)
 {
+    if (trace_settled_elsewhere(ctx))
+        return rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     rgb_t colour;
     vec3_t n;
     const scene_material_t *m = trace_surface_look(ctx, hit, trace_material(ctx, hit->prim),
@@ -931,6 +942,8 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
 static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err, num_t tmin,
                        int depth, num_t weight)
 {
+    if (trace_settled_elsewhere(ctx))
+        return rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     ray_error_t none = {NUM_ZERO, NUM_ZERO};
     err = trace_err_if_heavy(err, &none, weight);
     hit_t hit;

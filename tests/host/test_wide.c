@@ -1,10 +1,10 @@
 /* test_wide.c: escalation (render/wide.h) in one program that carries the
  * renderer twice, its own arithmetic and the wide copy (double) under
  * wide_* names.  A pixel that loses precision takes the wide copy's colour,
- * every other keeps its own; the counts say so; an NC's area walk escalates
- * the same pixels; the wide blob survives the RC's copy (relocated, frame
- * part only for the next frame); bad blocks and contexts are refused with
- * a message. */
+ * every other keeps its own, and a lost one stops its own rays; the
+ * counts say so; an NC's area walk escalates the same pixels; the wide
+ * blob survives the RC's copy (relocated, frame part only for the next
+ * frame); bad blocks and contexts are refused with a message. */
 #include "tests/check.h"
 #include "render/wide.h"
 #include "tests/host/test_blob_util.h"
@@ -118,6 +118,7 @@ struct tw_both {
     size_t n;
     rgb8_t *own, *wide;
     uint8_t *lost, *wide_lost;
+    render_stats_t own_stats; /* own's rays */
 };
 
 static void tw_both_render(const render_frame_t *f, void *wctx, struct tw_both *b)
@@ -129,6 +130,7 @@ static void tw_both_render(const render_frame_t *f, void *wctx, struct tw_both *
     render_ctx_init(&plain, f);
     plain.error_margin = RENDER_ESCALATE_MARGIN; /* the net escalation casts */
     b->own = tw_render(&plain, b->lost);
+    b->own_stats = plain.stats;
     b->wide = tw_render_wide(wctx, f->width, f->height, b->wide_lost);
 }
 
@@ -141,7 +143,9 @@ static void tw_both_free(struct tw_both *b)
 }
 
 /* A lost pixel takes the wide colour, the others keep theirs; escalated
- * counts the lost ones, precision_lost_pixels those the wide one lost. */
+ * counts the lost ones, precision_lost_pixels those the wide one lost.
+ * Its own rays stop once it is lost: fewer are traced than without
+ * escalation. */
 static void test_wide_escalates_lost_pixels(void)
 {
     struct tw_demo d;
@@ -174,6 +178,11 @@ static void test_wide_escalates_lost_pixels(void)
     render_stats_t sum = esc.stats;
     RENDER_WIDE(wide_stats_add)(wctx2, &sum);
     CHECK(sum.primary == esc.stats.primary + nlost);
+    uint64_t all = b.own_stats.shadow + b.own_stats.reflection + b.own_stats.refraction;
+    uint64_t stopped = esc.stats.shadow + esc.stats.reflection + esc.stats.refraction;
+    printf("demo: secondary rays %llu, %llu with the lost pixels stopped\n",
+           (unsigned long long)all, (unsigned long long)stopped);
+    CHECK(stopped < all);
     tw_both_free(&b);
     free(got);
     free(wctx2);
@@ -222,6 +231,9 @@ static void test_wide_check_keeps_colours(void)
         }
         CHECK_EQ_INT(check.stats.precision_lost_pixels, off);
         CHECK_EQ_INT(check.stats.escalated_pixels, doubted);
+        /* checking keeps every pixel's own colour: no ray is stopped */
+        CHECK(check.stats.shadow == b.own_stats.shadow &&
+              check.stats.reflection == b.own_stats.reflection);
         free(got);
         free(w2);
     }
