@@ -189,8 +189,8 @@ static num_t cone_delta(const render_prim_t *p, const cone_ray_t *r, const ray_e
 int prim_cone_intersect(const render_prim_t *p, const ray_t *ray, const ray_error_t *err,
                         num_t tmin, num_t tmax, num_t *t_out, int *uncertain)
 {
-    vec3_t o = xform_point(&p->to_local, ray->origin);
-    vec3_t d = xform_dir(&p->to_local, ray->dir);
+    vec3_t o = xform_point_inline(&p->to_local, ray->origin);
+    vec3_t d = xform_dir_inline(&p->to_local, ray->dir);
     cone_ray_t r;
     r.len = vec3_length(d);
     if (vec3_is_sat(o) || num_is_sat(r.len) || !num_gt(r.len, NUM_ZERO))
