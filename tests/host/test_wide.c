@@ -233,7 +233,8 @@ static void test_wide_check_keeps_colours(void)
         CHECK_EQ_INT(check.stats.escalated_pixels, doubted);
         /* checking keeps every pixel's own colour: no ray is stopped */
         CHECK(check.stats.shadow == b.own_stats.shadow &&
-              check.stats.reflection == b.own_stats.reflection);
+              check.stats.reflection == b.own_stats.reflection &&
+              check.stats.refraction == b.own_stats.refraction);
         free(got);
         free(w2);
     }
