@@ -18,6 +18,7 @@
 /* A unit vector's rounding, as an angle: a few steps of the arithmetic at 1
  * (a camera ray's direction, a normal, a direction towards a light). */
 #define TRACE_DIR_ROUND num_mul_int(num_ulp(NUM_ONE), 4)
+#define TRACE_COS_FLOOR NUM_C(1.0 / 1024) /* trace_surface_error's most grazing incidence */
 
 enum trace_kind { TRACE_PRIMARY, TRACE_REFLECTION, TRACE_REFRACTION };
 
@@ -740,13 +741,27 @@ static num_t trace_hit_error(const render_ctx_t *ctx, const ray_error_t *err, co
     return trace_err_clamp(num_add(ray_error_at(err, hit->t), ctx->frame->prims[hit->prim].hit_error));
 }
 
+/* How far a hit may lie from the double build's along its surface: a ray
+ * moved sideways by e (ray_error_at) meets a surface at incidence cos c
+ * up to e / c away (c at least TRACE_COS_FLOOR), plus the primitive's own.
+ * The shadow rays start there, the normal turns by it and a refracted ray
+ * starts there; a mirrored ray, parallel to the double build's out of the
+ * mirror, keeps e (trace_hit_error). */
+static num_t trace_surface_error(const render_ctx_t *ctx, const ray_error_t *err, const hit_t *hit,
+                                 vec3_t dir)
+{
+    num_t c = num_max(num_abs(vec3_dot(dir, hit->normal)), TRACE_COS_FLOOR);
+    return trace_err_clamp(num_add(num_div(ray_error_at(err, hit->t), c),
+                                   ctx->frame->prims[hit->prim].hit_error));
+}
+
 /* Where the shadow rays of a hit start, for their decisions: the hit's
- * error, unless what a shadow changes there (diffuse drc, highlight
- * src(th) and, when shadowed, ambient dic, times the weight of the ray
- * that made the hit, for lights of colour at most 1) is under
- * RENDER_LOST_WEIGHT_VALUE: then only the primitive's own, as for a light
- * ray (trace_err_if_heavy). */
-static num_t trace_shadow_error(const render_ctx_t *ctx, const ray_error_t *err, const hit_t *hit,
+ * error along the surface (surface_err), unless what a shadow changes
+ * there (diffuse drc, highlight src(th) and, when shadowed, ambient dic,
+ * times the weight of the ray that made the hit, for lights of colour at
+ * most 1) is under RENDER_LOST_WEIGHT_VALUE: then only the primitive's
+ * own, as for a light ray (trace_err_if_heavy). */
+static num_t trace_shadow_error(const render_ctx_t *ctx, num_t surface_err, const hit_t *hit,
                                 const scene_material_t *m, num_t weight, num_t src)
 {
     num_t shaded = num_add(m->drc, src);
@@ -754,7 +769,7 @@ static num_t trace_shadow_error(const render_ctx_t *ctx, const ray_error_t *err,
         shaded = num_add(shaded, m->dic);
     if (num_lt(num_mul(weight, shaded), NUM_C(RENDER_LOST_WEIGHT_VALUE)))
         return ctx->frame->prims[hit->prim].hit_error;
-    return trace_hit_error(ctx, err, hit);
+    return surface_err;
 }
 
 /* Refractionless transmission past the depth limit: the straight ray
@@ -792,7 +807,8 @@ static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray, const ray_error
             n = vec3_neg(n);
         num_t src, trc;
         shade_src_trc(m, num_neg(vec3_dot(ray->dir, n)), &src, &trc);
-        num_t hit_err = trace_shadow_error(ctx, err, &hit, m, ray_weight, src);
+        num_t hit_err = trace_shadow_error(ctx, trace_surface_error(ctx, err, &hit, ray->dir),
+                                           &hit, m, ray_weight, src);
         rgb_t local = trace_lights(ctx, &hit, hit_err, m, colour, n, ray->dir, src);
         if (ctx->frame->scene->haze) { /* this crossing's share and the haze's before it */
             num_t seg = num_sub(hit.t, from), w = haze_weight(ctx, seg);
@@ -867,6 +883,7 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
     num_t src, trc;
     shade_src_trc(m, cos_theta, &src, &trc);
     num_t hit_err = trace_hit_error(ctx, err, hit);
+    num_t surface_err = trace_surface_error(ctx, err, hit, ray->dir);
     /* From the inside of a closed surface (its concave side) a ray moved
      * or turned meets a normal turned so as to fold it back: a chord of a
      * sphere meets the surface at the same angle at both ends, so the
@@ -874,10 +891,10 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
      * by the normal again at every bounce.  There only the surface's own
      * error turns the normal. */
     const render_prim_t *p = &ctx->frame->prims[hit->prim];
-    num_t moved = entering ? hit_err : p->hit_error;
+    num_t moved = entering ? surface_err : p->hit_error;
     num_t normal_err = trace_err_clamp(num_add(num_mul(moved, hit->curvature), TRACE_DIR_ROUND));
-    rgb_t out = trace_lights(ctx, hit, trace_shadow_error(ctx, err, hit, m, weight, src), m, colour,
-                             n, ray->dir, src);
+    rgb_t out = trace_lights(ctx, hit, trace_shadow_error(ctx, surface_err, hit, m, weight, src), m,
+                             colour, n, ray->dir, src);
 
     int can_recurse = depth < ctx->options.max_depth;
     /* Where a refracted ray would go, or total internal reflection: then
@@ -924,7 +941,7 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
             ctx->stats.weight_cut++;
         } else if (refracts) {
             ray_t r = {inside, refracted_dir};
-            ray_error_t r_err = {hit_err, trace_refract_error(err, normal_err, eta, cos_theta,
+            ray_error_t r_err = {surface_err, trace_refract_error(err, normal_err, eta, cos_theta,
                                                               refracted_dir, n)};
             ctx->stats.refraction++;
             through = trace_ray(ctx, &r, &r_err, NUM_ZERO, depth + 1, w_trc);

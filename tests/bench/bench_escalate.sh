@@ -59,9 +59,10 @@ awk -F'\t' -v OFS='\t' 'NR == 1 { print $0, "cost_ratio"; next }
     { printf "%s\t%.3f\n", $0, $4 / plain[$1 " " $2] }' "$tsv" >"$tsv.tmp" && mv "$tsv.tmp" "$tsv"
 column -t -s$'\t' "$tsv"
 if command -v gnuplot >/dev/null; then
-    awk -F'\t' 'NR > 1 { printf "%s_%s_%s %s %s\n", $1, $2, $3, $4, $6 }' "$tsv" >"$out/points.dat"
-    awk '$1 ~ /_plain$/' "$out/points.dat" >"$out/plain.dat"
-    awk '$1 ~ /_escalated$/' "$out/points.dat" >"$out/escalated.dat"
+    # one arrow a scene and arithmetic, from its plain point to its escalated one
+    awk -F'\t' 'NR > 1 && $3 == "plain" { x[$1 " " $2] = $4; y[$1 " " $2] = $6 }
+        NR > 1 && $3 == "escalated" { k = $1 " " $2; printf "%s %s %s %s \"%s %s\"\n", x[k], y[k], $4, $6, $1, $2 }' \
+        "$tsv" >"$out/pairs.dat"
     gnuplot <<GP
 set terminal pngcairo size 900,520 font ",9" noenhanced
 set output "$out/escalate.png"
@@ -70,10 +71,12 @@ set xlabel "NC guest instructions per pixel (sum over the NCs)"
 set ylabel "pixels beyond 2/255 of the double build, %"
 set logscale x
 set grid
-set key top right
-plot "$out/plain.dat" using 2:3 with points pt 7 ps 1.2 title "plain (float, fixed Q12.19; --no-escalate)", \
-     "$out/escalated.dat" using 2:3 with points pt 11 ps 1.5 title "escalated (the default)", \
-     "$out/points.dat" using 2:3:1 with labels font ",7" offset 0,0.8 notitle
+set key top left
+set offsets 0, graph 0.12, graph 0.1, 0
+plot "$out/pairs.dat" using 1:2:(\$3-\$1):(\$4-\$2) with vectors head filled lc rgb "gray60" title "plain to escalated", \
+     "$out/pairs.dat" using 1:2 with points pt 7 ps 1.2 lc rgb "#9400d3" title "plain (float, fixed Q12.19; --no-escalate)", \
+     "$out/pairs.dat" using 3:4 with points pt 11 ps 1.5 lc rgb "#009e73" title "escalated (the default)", \
+     "$out/pairs.dat" using 1:2:5 with labels font ",8" rotate by 35 offset 0.5,0.9 left notitle
 GP
     echo "chart: $out/escalate.png"
 fi

@@ -9,7 +9,10 @@
 # hit at distances closer than their hit errors), and cluster_scale 0.1 in
 # fixed (the cluster's inverse is off by 6e-4: the ellipsoid's normal, so
 # a reflected ray and its shadow ray, move more than the decisions they
-# meet; every ray now carries its error, render/trace.c).  Every pixel beyond 2/255 of the double build must now
+# meet; every ray carries its error, render/trace.c); and scenes/glass.scn
+# at 320x240 in fixed (a ray moved sideways meets a surface it grazes
+# farther off along it, by 1 over the cosine: its shadow rays start there,
+# trace_surface_error).  Every pixel beyond 2/255 of the double build must
 # be painted as lost precision or lie next to an edge or a moved pixel
 # (links1 compare --flagged --silhouette --moved, as in flagged.sh).
 #   PASS margin_FAMILY_KNOB_ARITH  or  FAIL ...: the compare's verdict
@@ -18,16 +21,24 @@ cd "$(dirname "$0")/../.."
 LINKS1=${LINKS1:-build/links1}
 out=build/test-images/margins
 mkdir -p "$out"
+# A run: a sweep family and its knob at 160x120, or scene FILE SIZE; then the arithmetic.
 for run in "thin_triangles 3000 fixed" "thin_triangles 10000 fixed" "tir_chain 1 float" \
-        "tir_chain 4 fixed" "cluster_scale 0.1 fixed"; do
+        "tir_chain 4 fixed" "cluster_scale 0.1 fixed" "scene glass 320x240 fixed"; do
     read -r family knob arith <<<"$run"
+    size=160x120
+    if [ "$family" = scene ]; then
+        read -r _ family size arith <<<"$run"
+        knob=$size
+        scn=scenes/$family.scn
+    else
+        scn=$out/$family-$knob.scn
+        python3 host-tools/gen/make_scene.py "$family" "$knob" --size $size >"$scn" || {
+            echo "FAIL margin_${family}_${knob}_$arith: make_scene.py failed"; continue; }
+    fi
     name=margin_${family}_${knob}_$arith
-    scn=$out/$family-$knob.scn
-    python3 host-tools/gen/make_scene.py "$family" "$knob" --size 160x120 >"$scn" || {
-        echo "FAIL $name: make_scene.py failed"; continue; }
-    if ! "$LINKS1" ref "$scn" --arith double -o "$out/$family-$knob-double.png" >/dev/null 2>&1 ||
-        ! "$LINKS1" ref "$scn" --arith "$arith" --no-escalate --mark-lost -o "$out/$family-$knob-$arith.png" \
-            >"$out/$family-$knob-$arith.log" 2>&1; then
+    if ! "$LINKS1" ref "$scn" --arith double --size $size -o "$out/$family-$knob-double.png" >/dev/null 2>&1 ||
+        ! "$LINKS1" ref "$scn" --arith "$arith" --size $size --no-escalate --mark-lost \
+            -o "$out/$family-$knob-$arith.png" >"$out/$family-$knob-$arith.log" 2>&1; then
         echo "FAIL $name: links1 ref failed: $(tail -n 1 "$out/$family-$knob-$arith.log")"
         continue
     fi
