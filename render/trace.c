@@ -699,6 +699,15 @@ static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t di
     return pass;
 }
 
+/* A pixel that lost precision and will be traced again in the wide
+ * arithmetic (ctx->escalate), which then gives its colour: the rest of
+ * its rays here would be thrown away (not with options.check_lost, which
+ * keeps this arithmetic's colour). */
+static int trace_settled_elsewhere(const render_ctx_t *ctx)
+{
+    return ctx->pixel_lost && ctx->escalate && !ctx->options.check_lost;
+}
+
 /* Sum over lights of Fig. 5's per-light terms at a hit.  hit_err: how far
  * the hit point may be off (trace_hit_error): each shadow ray starts that
  * far off, and towards a point light its direction turns by hit_err over
@@ -722,6 +731,8 @@ static rgb_t trace_lights(render_ctx_t *ctx, const hit_t *hit, num_t hit_err,
             ray_error_t err = {hit_err, trace_err_clamp(num_add(num_div(hit_err, distance),
                                                                TRACE_DIR_ROUND))};
             shadowed = rgb_mul(unshadowed, trace_shadow(ctx, origin, to_light, distance, &err));
+            if (trace_settled_elsewhere(ctx))
+                break; /* the other lights' shadow rays too */
         } else if (ctx->options.shadows) {
             shadowed = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
         }
@@ -852,15 +863,6 @@ static num_t trace_refract_error(const ray_error_t *err, num_t normal_err, num_t
     num_t dir_gain = num_max(g, eta);
     num_t normal_gain = num_max(num_abs(num_sub(NUM_ONE, g)), num_abs(num_sub(NUM_ONE, eta)));
     return trace_err_clamp(num_add(num_mul(dir_gain, err->dir), num_mul(normal_gain, normal_err)));
-}
-
-/* A pixel that lost precision and will be traced again in the wide
- * arithmetic (ctx->escalate), which then gives its colour: the rest of
- * its rays here would be thrown away (not with options.check_lost, which
- * keeps this arithmetic's colour). */
-static int trace_settled_elsewhere(const render_ctx_t *ctx)
-{
-    return ctx->pixel_lost && ctx->escalate && !ctx->options.check_lost;
 }
 
 /* weight: the product of src and trc along the path of the ray that made
