@@ -30,6 +30,7 @@ else
     SIZE=${FLAG_SIZE:-320x240}
 fi
 mkdir -p "$out"
+family_work "$out" # the family scenes' maps below their directory
 progs=${FLAG_PROGS:-links1-ref-float links1-ref-fixed links1-ref-fixed18 links1-ref-fixed16 links1-ref-fixed14 links1-ref-fixed12}
 make -s --no-print-directory build/links1 build/links1-ref-double $(printf 'build/%s ' $progs)
 
