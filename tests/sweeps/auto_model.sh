@@ -65,7 +65,7 @@ meets() { # BUILD STEPS WEIGHT: 0 when the build's image at SIZE reaches TARGET
     if [ -z "${meets_cache[$key]:-}" ]; then
         local img=$work/truth.png q=refused
         # shellcheck disable=SC2046
-        "$BIN/links1-ref-$1" "$scn" $(knob_words "$2" "$3") -o "$img" >/dev/null 2>&1 &&
+        "$BIN/links1-ref-$1" "$scn" --no-escalate $(knob_words "$2" "$3") -o "$img" >/dev/null 2>&1 &&
             q=$(psnr "$ref" "$img")
         meets_cache[$key]=$q
     fi
