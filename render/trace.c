@@ -867,7 +867,8 @@ static num_t trace_refract_error(const ray_error_t *err, num_t normal_err, num_t
 
 /* weight: the product of src and trc along the path of the ray that made
  * this hit (1 for a camera ray); err: that ray's error bound.  The hit
- * point's error starts every secondary ray; the normal's (the hit's error
+ * point's error starts a mirrored ray, its error along the surface
+ * (trace_surface_error) the shadow and refracted rays; the normal's (that
  * times the surface's curvature) turns a mirrored ray by twice as much. */
 static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err,
                          const hit_t *hit, int depth, num_t weight)
