@@ -41,9 +41,12 @@ cands+=("float escalated|float|float|esc" "fixed Q12.19 escalated|fixed|fixed|es
 psnr() { # REF IMG
     "$LINKS1" compare "$1" "$2" --min-fraction 0 2>&1 | sed -nE 's/.*PSNR ([0-9.]+) dB.*/\1/p'
 }
+esc_flag() { # [esc]: a candidate's escalation, on the host as on the board
+    [ -n "${1:-}" ] && echo --escalate || echo --no-escalate
+}
 board_cost() { # SCENE FIRMWARE [esc]: NC instructions per pixel
     local log=$out/work/board.log
-    timeout 900 "$LINKS1" render "$1" --arith "$2" "$([ -n "${3:-}" ] && echo --escalate || echo --no-escalate)" --ncs 2 --count-insns \
+    timeout 900 "$LINKS1" render "$1" --arith "$2" "$(esc_flag "${3:-}")" --ncs 2 --count-insns \
         -o "$out/work/board.png" >"$log" 2>&1 || { echo -; return; }
     local total
     total=$(grep -o 'NCs total [0-9]*' "$log" | grep -o '[0-9]*$')
@@ -71,9 +74,7 @@ for entry in "${families[@]}"; do
             IFS='|' read -r label build fw esc <<<"$c"
             img=$out/work/$build${esc:+-esc}.png
             [ -f "$img.done" ] || {
-                # plain as on the board (the host escalates by default)
-                "$BIN/links1-ref-$build" "$scn" "$([ -n "$esc" ] && echo --escalate || echo --no-escalate)" \
-                    -o "$img" >/dev/null 2>&1 &&
+                "$BIN/links1-ref-$build" "$scn" "$(esc_flag "$esc")" -o "$img" >/dev/null 2>&1 &&
                     touch "$img.done"
             }
             p[$label]=$([ -f "$img.done" ] && psnr "$ref" "$img" || echo refused)

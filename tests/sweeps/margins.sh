@@ -21,14 +21,14 @@ cd "$(dirname "$0")/../.."
 LINKS1=${LINKS1:-build/links1}
 out=build/test-images/margins
 mkdir -p "$out"
-# A run: a sweep family and its knob at 160x120, or scene FILE SIZE; then the arithmetic.
+# A run: a sweep family and its knob (at 160x120), or scenes/NAME.scn as
+# scene:NAME and its size; then the arithmetic.
 for run in "thin_triangles 3000 fixed" "thin_triangles 10000 fixed" "tir_chain 1 float" \
-        "tir_chain 4 fixed" "cluster_scale 0.1 fixed" "scene glass 320x240 fixed"; do
+        "tir_chain 4 fixed" "cluster_scale 0.1 fixed" "scene:glass 320x240 fixed"; do
     read -r family knob arith <<<"$run"
     size=160x120
-    if [ "$family" = scene ]; then
-        read -r _ family size arith <<<"$run"
-        knob=$size
+    if [ "${family#scene:}" != "$family" ]; then
+        family=${family#scene:} size=$knob
         scn=scenes/$family.scn
     else
         scn=$out/$family-$knob.scn
