@@ -59,34 +59,38 @@ HOST_EXTRA_ARITHS :=
 ARM_CC := arm-none-eabi-gcc
 FW_MACHINES := virt an521
 ARM_CPU_virt := -mcpu=cortex-a15 -mthumb
-FW_FLOAT_ABI_virt_float := -mfpu=vfpv4 -mfloat-abi=hard
-FW_FLOAT_ABI_virt_soft  := -mfloat-abi=soft
-FW_FLOAT_ABI_virt_fixed := -mfloat-abi=soft
-# double: the Cortex-A15's VFPv4 has double precision (32 d-registers)
-FW_FLOAT_ABI_virt_double := -mfpu=vfpv4 -mfloat-abi=hard
-# The Cortex-M33's FPU is single precision (FPv5-SP); soft and fixed build
-# for an M33 without one (cortex-m33+nofp: picolibc's v8-m.main/nofp).
 ARM_CPU_an521 := -mthumb
-FW_FLOAT_ABI_an521_float := -mcpu=cortex-m33 -mfpu=fpv5-sp-d16 -mfloat-abi=hard
-FW_FLOAT_ABI_an521_soft  := -mcpu=cortex-m33+nofp+nodsp -mfloat-abi=soft
-FW_FLOAT_ABI_an521_fixed := -mcpu=cortex-m33+nofp+nodsp -mfloat-abi=soft
+# Each machine's floating-point ABIs, by name (FW_ABI_machine_NAME), and
+# the one each variant builds for (FW_ABI_OF_machine_variant).  The
+# Cortex-A15's VFPv4 has double precision (32 d-registers); the
+# Cortex-M33's FPU is single precision (FPv5-SP), and soft and fixed build
+# for an M33 without one (cortex-m33+nofp: picolibc's v8-m.main/nofp).
+FW_ABI_virt_vfp := -mfpu=vfpv4 -mfloat-abi=hard
+FW_ABI_virt_nofp := -mfloat-abi=soft
+FW_ABI_an521_fpv5sp := -mcpu=cortex-m33 -mfpu=fpv5-sp-d16 -mfloat-abi=hard
+FW_ABI_an521_nofp := -mcpu=cortex-m33+nofp+nodsp -mfloat-abi=soft
+FW_ABI_OF_virt_float := vfp
+FW_ABI_OF_virt_soft := nofp
+FW_ABI_OF_virt_fixed := nofp
+FW_ABI_OF_virt_double := vfp
+FW_ABI_OF_an521_float := fpv5sp
+FW_ABI_OF_an521_soft := nofp
+FW_ABI_OF_an521_fixed := nofp
+# The an521 boards' double: the M33's FPU is single precision, so it is
+# software (libgcc's, correctly rounded as the VFP's is); float stays on
+# the FPU.
+FW_ABI_OF_an521_double := fpv5sp
 # float-esc and fixed-esc: float and fixed that escalate (--escalate): each
 # carries the wide renderer (double, render/wide.h) beside its own, so both
-# build for the VFP in double precision.
-FW_FLOAT_ABI_virt_float-esc := -mfpu=vfpv4 -mfloat-abi=hard
-FW_FLOAT_ABI_virt_fixed-esc := -mfpu=vfpv4 -mfloat-abi=hard
+# build for the FPU (on the M33 the wide renderer's double is software).
+$(foreach m,virt an521,$(foreach v,float-esc fixed-esc,$(eval FW_ABI_OF_$(m)_$(v) := $(FW_ABI_OF_$(m)_float))))
+FW_FLOAT_ABI = $(FW_ABI_$(1)_$(FW_ABI_OF_$(1)_$(2)))
 FW_WIDE_float-esc := double
 FW_WIDE_fixed-esc := double
 # float-esc compiles to float's objects (same arithmetic, same float ABI,
 # the wide renderer's entry points weak): it links those, not copies.
 FW_OBJS_FROM_float-esc := float
 FW_VARIANTS_virt := float soft fixed double float-esc fixed-esc
-# The an521 boards' double, float-esc and fixed-esc: the M33's FPU is single
-# precision, so their double is software (libgcc's, correctly rounded as
-# the VFP's is); float stays on the FPU.
-FW_FLOAT_ABI_an521_double    := $(FW_FLOAT_ABI_an521_float)
-FW_FLOAT_ABI_an521_float-esc := $(FW_FLOAT_ABI_an521_float)
-FW_FLOAT_ABI_an521_fixed-esc := $(FW_FLOAT_ABI_an521_float)
 FW_VARIANTS_an521 := float soft fixed double float-esc fixed-esc
 FW_VARIANTS := $(FW_VARIANTS_virt)
 FW_MACHINE_DEF_virt := -DLINKS1_MACHINE_VIRT
@@ -128,7 +132,9 @@ FW_LDFLAGS := -nostartfiles -Wl,--gc-sections -Wl,--no-warn-rwx-segments
 FW_LIBS := -lm -lc -lgcc
 
 # ----------------------------------------------------------- module lists
-# FW_SRCS:     firmware-only sources (.c and .S): boot, kernel, drivers, roles
+# FW_SRCS:     firmware-only sources that use num_t (roles), once a variant
+# FW_ARITH_FREE_SRCS[_MACHINE]: firmware-only sources (.c and .S) without
+#              num_t (boot, kernel, drivers), once a machine and float ABI
 # SHARED_SRCS: sources built for both firmware and host, once per arithmetic
 #              (proto/, fixed/, render/): they know nothing of cores or drivers
 # HOST_TOOLS:  host programs; for each NAME, NAME_SRCS lists its own sources
@@ -144,8 +150,9 @@ FW_LIBS := -lm -lc -lgcc
 #              arithmetic defined, so one that does include num.h stops the
 #              build at num.h's #error instead of being shared wrongly
 FW_SRCS :=
-FW_SRCS_virt :=
-FW_SRCS_an521 :=
+FW_ARITH_FREE_SRCS :=
+FW_ARITH_FREE_SRCS_virt :=
+FW_ARITH_FREE_SRCS_an521 :=
 SHARED_SRCS :=
 ARITH_FREE_SRCS :=
 HOST_TOOLS :=
@@ -194,19 +201,26 @@ $(1): $$(patsubst %,$(2)/%.o,$$(WIDE_SRCS))
 endef
 
 # ------------------------------------------------------------ firmware rules
-# $(1) = machine (virt|an521), $(2) = variant (float|soft|fixed|double).
+# $(1) = machine (virt|an521), $(2) = variant (float|soft|fixed|double...).
 # The virt board's firmware is build/links1-VARIANT.elf (objects in
 # build/fw-VARIANT-LIBC/), an an521 board's build/an521/links1-VARIANT.elf
-# (objects in build/fw-an521-VARIANT-LIBC/).
+# (objects in build/fw-an521-VARIANT-LIBC/); both link the arithmetic-free
+# objects of build/fw-MACHINE-ABI-LIBC/.
 fw_dir = $(B)/fw-$(if $(filter virt,$(1)),,$(1)-)$(2)-$(LIBC)
 fw_elf = $(FWB)$(if $(filter virt,$(1)),,/$(1))/links1-$(2).elf
+# FW_ARITH_FREE_SRCS (boot, kernel, drivers: no num_t) compile once per
+# machine and float ABI $(2) into $(call fw_abi_dir,$(1),$(2)), with no
+# arithmetic defined: one that includes fixed/num.h stops the build there.
+fw_abi_dir = $(B)/fw-$(1)-$(2)-$(LIBC)
 define fw_variant
 FW_OBJS_$(1)_$(2) := $$(patsubst %,$(call fw_dir,$(1),$(or $(FW_OBJS_FROM_$(2)),$(2)))/%.o,$$(FW_SRCS) \
-	$$(FW_SRCS_$(1)) $$(SHARED_SRCS))
+	$$(SHARED_SRCS)) $$(patsubst %,$(call fw_abi_dir,$(1),$(FW_ABI_OF_$(1)_$(2)))/%.o,\
+	$$(FW_ARITH_FREE_SRCS) $$(FW_ARITH_FREE_SRCS_$(1)))
 FW_ELF_$(1)_$(2) := $(call fw_elf,$(1),$(2))
-FW_FLAGS_$(1)_$(2) := $(FW_CFLAGS) $(ARM_CPU_$(1)) $(FW_FLOAT_ABI_$(1)_$(2)) $(FW_MACHINE_DEF_$(1)) \
+FW_FLAGS_$(1)_$(2) := $(FW_CFLAGS) $(ARM_CPU_$(1)) $(call FW_FLOAT_ABI,$(1),$(2)) $(FW_MACHINE_DEF_$(1)) \
 	$(ARITH_DEF_$(FW_ARITH_$(2)))
-$(if $(FW_OBJS_FROM_$(2)),,$(call fw_objects,$(1),$(2)))
+$(if $(FW_OBJS_FROM_$(2)),,$(call fw_objects,$(call fw_dir,$(1),$(2)),$$(FW_FLAGS_$(1)_$(2)) \
+	-DLINKS1_ARITH=$(FW_CODE_$(2))))
 FW_LINK_$(1)_$(2) := $$(FW_OBJS_$(1)_$(2)) $(if $(FW_WIDE_$(2)),$(call fw_dir,$(1),$(FW_WIDE_$(2)))/render-wide.o)
 $$(FW_ELF_$(1)_$(2)): $$(FW_LINK_$(1)_$(2)) linker/sections.ld $(B)/linker/$(1)-memory.ld
 	$$(call say,LD,$$@)
@@ -216,21 +230,24 @@ $$(FW_ELF_$(1)_$(2)): $$(FW_LINK_$(1)_$(2)) linker/sections.ld $(B)/linker/$(1)-
 
 FIRMWARE_$(1) += $$(FW_ELF_$(1)_$(2))
 endef
-# The objects of variant $(2) on machine $(1), in its own directory.
+# The object rules of directory $(1), compiled with flags $(2) (the
+# renderer's sources at -O3).
 define fw_objects
-$(call fw_dir,$(1),$(2))/%.c.o: %.c
+$(1)/%.c.o: %.c
 	$$(call say,CC,$$@)
 	$(Q)mkdir -p $$(@D)
-	$(Q)$(ARM_CC) $$(FW_FLAGS_$(1)_$(2)) $$(if $$(filter $$<,$(FW_HOT_SRCS)),-O3) \
-		-DLINKS1_ARITH=$(FW_CODE_$(2)) -c $$< -o $$@
+	$(Q)$(ARM_CC) $(2) $$(if $$(filter $$<,$(FW_HOT_SRCS)),-O3) -c $$< -o $$@
 
-$(call fw_dir,$(1),$(2))/%.S.o: %.S
+$(1)/%.S.o: %.S
 	$$(call say,AS,$$@)
 	$(Q)mkdir -p $$(@D)
-	$(Q)$(ARM_CC) $$(FW_FLAGS_$(1)_$(2)) -c $$< -o $$@
+	$(Q)$(ARM_CC) $(2) -c $$< -o $$@
 
--include $$(FW_OBJS_$(1)_$(2):.o=.d)
+-include $$(wildcard $(1)/*/*.d $(1)/*/*/*.d)
 endef
+# The arithmetic-free objects of machine $(1) for float ABI $(2).
+fw_abi_objects = $(call fw_objects,$(call fw_abi_dir,$(1),$(2)),$(FW_CFLAGS) $(ARM_CPU_$(1)) \
+	$(FW_ABI_$(1)_$(2)) $(FW_MACHINE_DEF_$(1)))
 
 # Each memory map takes the sizes C also needs from kernel/param.h and
 # proto/board_map.h.
@@ -244,6 +261,8 @@ FIRMWARE_virt :=
 FIRMWARE_an521 :=
 ifneq ($(strip $(FW_SRCS)),)
 $(foreach m,$(FW_MACHINES),$(foreach v,$(FW_VARIANTS_$(m)),$(eval $(call fw_variant,$(m),$(v)))))
+$(foreach m,$(FW_MACHINES),$(foreach a,$(sort $(foreach v,$(FW_VARIANTS_$(m)),$(FW_ABI_OF_$(m)_$(v)))),\
+	$(eval $(call fw_abi_objects,$(m),$(a)))))
 endif
 FIRMWARE := $(FIRMWARE_virt) $(FIRMWARE_an521)
 $(foreach m,$(FW_MACHINES),$(eval $(call wide_object,$(call fw_dir,$(m),double)/render-wide.o,$(call fw_dir,$(m),double),$(ARM_CC),arm-none-eabi-)))

@@ -1,5 +1,5 @@
 # kernel/: the cooperative kernel every unit computer runs.
-FW_SRCS += kernel/cpu.c kernel/spinlock.c kernel/task.c kernel/ktime.c \
+FW_ARITH_FREE_SRCS += kernel/cpu.c kernel/spinlock.c kernel/task.c kernel/ktime.c \
 	kernel/irq.c kernel/kmem.c kernel/klog.c kernel/fault.c \
 	kernel/ringbuf.c kernel/fdt.c
 
