@@ -455,7 +455,10 @@ static inline __attribute__((always_inline)) void prep_prim(const scene_prim_t *
                         ? vec3_normalize(xform_dir_transposed(from_eye, f->scene->normals[j].n[k]))
                         : normals[src >> 2].n[src & 3];
             }
-            p->normals = normals[j];
+            for (int k = 0; k < 3; k++) /* a vector at a time: the wide copy's
+                                           whole struct copy is the C
+                                           library's, a byte at a time */
+                p->normals.n[k] = normals[j].n[k];
             p->smooth = 1;
         }
         p->edge_n1 = vec3_normalize(vec3_cross(p->e2, p->normal));

@@ -733,6 +733,17 @@ static scene_load_status_t load_cluster_values(struct load *L, uint32_t i, const
     return SCENE_LOAD_OK;
 }
 
+/* *to = *from, a row at a time: as a whole, the wide copy's (96 bytes)
+ * would be the C library's copy, a byte at a time. */
+static inline void load_copy_xform(xform_t *to, const xform_t *from)
+{
+#pragma GCC unroll 3
+    for (int r = 0; r < 3; r++) {
+        num_t a = from->m[r][0], b = from->m[r][1], c = from->m[r][2], d = from->m[r][3];
+        to->m[r][0] = a, to->m[r][1] = b, to->m[r][2] = c, to->m[r][3] = d;
+    }
+}
+
 /* Parents come before children, nesting is bounded, key ranges are inside
  * the key section and their frames rise: the tree is acyclic by the first
  * rule alone. */
@@ -767,7 +778,7 @@ static scene_load_status_t load_clusters(struct load *L, scene_key_t *keys,
         c->first_key = kf;
         c->key_count = kc;
         if (L->kexp[i] == LOAD_KEXP_PLAIN)
-            c->local = identity;
+            load_copy_xform(&c->local, &identity);
         else
             LOAD_TRY(load_cluster_values(L, i, p, i == 0 ? 0 : L->cexp[parent], keys, c));
     }
