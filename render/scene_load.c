@@ -153,7 +153,11 @@ LOAD_INLINE vec3_t load_vec3(const uint8_t *p)
  * and results under the smallest normal give a zero of the same sign */
 LOAD_INLINE uint32_t load_scale_bits(uint32_t bits, int e)
 {
-    int32_t exp = (int32_t)((bits & LOAD_F32_EXP_MASK) >> 23);
+    uint32_t field = (bits & LOAD_F32_EXP_MASK) >> 23, to = field + (uint32_t)e;
+    if (field - 1u < 254u && to - 1u < 254u) /* normal to normal: the field
+                                                 moves by e */
+        return bits + ((uint32_t)e << 23);
+    int32_t exp = (int32_t)field;
     if (exp == 0 || exp == 255)
         return exp == 0 ? (bits & LOAD_F32_SIGN) : bits;
     exp += e;
