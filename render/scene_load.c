@@ -811,16 +811,25 @@ static scene_load_status_t load_components(struct load *L, scene_density_compone
 /* A triangle with a height under SCN_LOAD_MIN_TRIANGLE_HEIGHT: the
  * renderer divides by its heights.  With s the sine of the angle at v0,
  * the heights over the edges at v0 are |e2| s and |e1| s, and the third is
- * at least half the smaller of them.  Unit vectors keep every product
- * within the fixed build's range. */
+ * at least half the smaller of them: the smaller is |e1 x e2| / max(|e1|,
+ * |e2|).  In fixed point unit vectors keep every product within range; in
+ * IEEE arithmetic it is compared squared, without a root or a division. */
 static int load_sliver(const vec3_t v[3], int unit_exp)
 {
     vec3_t e1 = vec3_sub(v[1], v[0]), e2 = vec3_sub(v[2], v[0]);
+    num_t least = num_scale2(NUM_C(SCN_LOAD_MIN_TRIANGLE_HEIGHT), unit_exp);
+#if defined(LINKS1_NUM_FIXED)
     vec3_t u1 = vec3_normalize(e1), u2 = vec3_normalize(e2);
     num_t l1 = vec3_dot(e1, u1), l2 = vec3_dot(e2, u2);
     num_t sine = vec3_length(vec3_cross(u1, u2));
     num_t h = num_mul(num_lt(l1, l2) ? l1 : l2, sine);
-    return num_lt(h, num_scale2(NUM_C(SCN_LOAD_MIN_TRIANGLE_HEIGHT), unit_exp));
+    return num_lt(h, least);
+#else
+    vec3_t c = vec3_cross(e1, e2);
+    num_t longer = num_max(vec3_dot(e1, e1), vec3_dot(e2, e2));
+    return !num_gt(longer, NUM_ZERO) ||
+           num_lt(vec3_dot(c, c), num_mul(num_mul(least, least), longer));
+#endif
 }
 
 /* A triangle record whose material, cluster and component range are
