@@ -19,6 +19,7 @@
 set -u
 cd "$(dirname "$0")/../.."
 LINKS1=${LINKS1:-build/links1}
+. tests/sweeps/families.sh
 out=build/test-images/margins
 mkdir -p "$out"
 # A run: a sweep family and its knob (at 160x120), or scenes/NAME.scn as
@@ -32,7 +33,7 @@ for run in "thin_triangles 3000 fixed" "thin_triangles 10000 fixed" "tir_chain 1
         scn=scenes/$family.scn
     else
         scn=$out/$family-$knob.scn
-        python3 host-tools/gen/make_scene.py "$family" "$knob" --size $size >"$scn" || {
+        family_scene "$family" "$knob" $size >"$scn" || {
             echo "FAIL margin_${family}_${knob}_$arith: make_scene.py failed"; continue; }
     fi
     name=margin_${family}_${knob}_$arith
