@@ -747,23 +747,27 @@ static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *e
 
 /* How far a hit may lie from the double build's: the ray's error at its t
  * plus the primitive's own (render_prim_t.hit_error). */
+static num_t trace_hit_error_along(const render_ctx_t *ctx, num_t along, const hit_t *hit)
+{
+    return trace_err_clamp(num_add(along, ctx->frame->prims[hit->prim].hit_error));
+}
+
 static num_t trace_hit_error(const render_ctx_t *ctx, const ray_error_t *err, const hit_t *hit)
 {
-    return trace_err_clamp(num_add(ray_error_at(err, hit->t), ctx->frame->prims[hit->prim].hit_error));
+    return trace_hit_error_along(ctx, ray_error_at(err, hit->t), hit);
 }
 
 /* How far a hit may lie from the double build's along its surface: a ray
- * moved sideways by e (ray_error_at) meets a surface at incidence cos c
- * up to e / c away (c at least TRACE_COS_FLOOR), plus the primitive's own.
+ * moved sideways by e (along: ray_error_at at the hit) meets a surface at
+ * incidence cos c up to e / c away (c at least TRACE_COS_FLOOR), plus the
+ * primitive's own.
  * The shadow rays start there, the normal turns by it and a refracted ray
  * starts there; a mirrored ray, parallel to the double build's out of the
  * mirror, keeps e (trace_hit_error). */
-static num_t trace_surface_error(const render_ctx_t *ctx, const ray_error_t *err, const hit_t *hit,
-                                 vec3_t dir)
+static num_t trace_surface_error(const render_ctx_t *ctx, num_t along, const hit_t *hit, vec3_t dir)
 {
     num_t c = num_max(num_abs(vec3_dot(dir, hit->normal)), TRACE_COS_FLOOR);
-    return trace_err_clamp(num_add(num_div(ray_error_at(err, hit->t), c),
-                                   ctx->frame->prims[hit->prim].hit_error));
+    return trace_hit_error_along(ctx, num_div(along, c), hit);
 }
 
 /* Where the shadow rays of a hit start, for their decisions: the hit's
@@ -818,12 +822,14 @@ static rgb_t trace_straight(render_ctx_t *ctx, const ray_t *ray, const ray_error
             n = vec3_neg(n);
         num_t src, trc;
         shade_src_trc(m, num_neg(vec3_dot(ray->dir, n)), &src, &trc);
-        num_t hit_err = trace_shadow_error(ctx, trace_surface_error(ctx, err, &hit, ray->dir),
+        num_t along = ray_error_at(err, hit.t);
+        num_t hit_err = trace_shadow_error(ctx, trace_surface_error(ctx, along, &hit, ray->dir),
                                            &hit, m, ray_weight, src);
         rgb_t local = trace_lights(ctx, &hit, hit_err, m, colour, n, ray->dir, src);
         if (ctx->frame->scene->haze) { /* this crossing's share and the haze's before it */
             num_t seg = num_sub(hit.t, from), w = haze_weight(ctx, seg);
-            rgb_t hazed = haze_apply(ctx, local, seg, trace_hit_error(ctx, err, &hit), ray_weight);
+            rgb_t hazed = haze_apply(ctx, local, seg, trace_hit_error_along(ctx, along, &hit),
+                                     ray_weight);
             sum = rgb_add(sum, rgb_mul(weight, hazed));
             weight = rgb_scale(weight, w);
             from = hit.t;
@@ -885,8 +891,9 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
     num_t cos_theta = num_neg(vec3_dot(ray->dir, n));
     num_t src, trc;
     shade_src_trc(m, cos_theta, &src, &trc);
-    num_t hit_err = trace_hit_error(ctx, err, hit);
-    num_t surface_err = trace_surface_error(ctx, err, hit, ray->dir);
+    num_t along = ray_error_at(err, hit->t);
+    num_t hit_err = trace_hit_error_along(ctx, along, hit);
+    num_t surface_err = trace_surface_error(ctx, along, hit, ray->dir);
     /* From the inside of a closed surface (its concave side) a ray moved
      * or turned meets a normal turned so as to fold it back: a chord of a
      * sphere meets the surface at the same angle at both ends, so the
