@@ -7,17 +7,14 @@
 # hold the double copy's too.
 #  - render_dm_cost_spans: the line is there, each span is counted and
 #    their sum is within the DM's count;
-#  - render_dm_cost_whole: the spans hold at least 90% of the DM's count
-#    (98.6% measured; 45% when the double copy was loaded and prepared
-#    outside them, at the render command);
+#  - render_dm_cost_whole: the spans hold at least 90% of the DM's count;
 #  - render_dm_cost_trace: the same run's --trace gives dm_prepare (the
 #    frame's preprocessing, the DM's last span) equal to frame 0's
 #    preparation, narrow and wide blob alike;
 #  - render_dm_cost_limit: at most DM_COST_LIMIT instructions a primitive
-#    (3,124 measured, the double copy's load and preparation included);
+#    (2,630 measured, the double copy's load and preparation included);
 #  - render_dm_cost_narrow: --no-escalate (the firmware without the double
-#    copy), at most DM_NARROW_LIMIT (1,459 measured; 3,535 before the word
-#    sum and the loader's fast paths).
+#    copy), at most DM_NARROW_LIMIT (1,295 measured).
 # Guest instructions repeat run to run, so the margins are for changes to
 # the code, not for noise.
 . "$(dirname "$0")/../lib.sh"
@@ -25,7 +22,7 @@
 CHECKS=(render_dm_cost_spans render_dm_cost_whole render_dm_cost_trace render_dm_cost_limit
     render_dm_cost_narrow)
 board_ready "${CHECKS[@]}" || exit 0
-DM_COST_LIMIT=3600 DM_NARROW_LIMIT=1800
+DM_COST_LIMIT=2900 DM_NARROW_LIMIT=1450
 SPD="$(dirname "$LINKS1")/links1-spd"
 nff="$RENDER_TMP/tetra5.nff" log="$RENDER_TMP/dm_cost.log" trace="$RENDER_TMP/tetra5.trace"
 if ! "$SPD" tetra 5 -o "$nff" >"$log" 2>&1; then
