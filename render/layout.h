@@ -34,7 +34,7 @@ typedef struct {
 } render_layout_t;
 
 /* The board's record sizes, in the order of render_layout_t. */
-#define RENDER_BOARD_BLOB 244
+#define RENDER_BOARD_BLOB 252
 #define RENDER_BOARD_LIGHT 48
 #define RENDER_BOARD_MATERIAL 52
 #define RENDER_BOARD_MAP 24
@@ -42,7 +42,7 @@ typedef struct {
 #define RENDER_BOARD_PRIM 72
 #define RENDER_BOARD_COMPONENT 20
 #define RENDER_BOARD_KEY 44
-#define RENDER_BOARD_FRAME 1140
+#define RENDER_BOARD_FRAME 1148
 #define RENDER_BOARD_FRAME_CLUSTER 96
 #define RENDER_BOARD_FRAME_PRIM 228
 #define RENDER_BOARD_NUM 4

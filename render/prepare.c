@@ -796,11 +796,16 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
      * (stable: ascending index) */
     for (uint32_t i = 1; i < nc && st == RENDER_OK; i++)
         g[s->clusters[i].parent].child_count++;
+    uint32_t lo = np, hi = 0; /* out->pointer_lo, pointer_hi */
     for (uint32_t i = 0; i < np && st == RENDER_OK; i++) {
         if (s->prims[i].cluster >= nc)
             st = RENDER_ERR_PRIM;
         else
             g[s->prims[i].cluster].prim_count++;
+        if (s->prims[i].kind != SCENE_PRIM_TRIANGLE) {
+            lo = i < lo ? i : lo;
+            hi = i + 1;
+        }
     }
     if (st != RENDER_OK) {
         arena_release_to(arena, mark);
@@ -819,6 +824,8 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
     out->prim_list = plist;
     out->normal_src = src;
     out->uv_spread = spread;
+    out->pointer_lo = hi ? lo : 0;
+    out->pointer_hi = hi;
     return RENDER_OK;
 }
 
@@ -1132,6 +1139,8 @@ static void prep_frame_header(prep_run_t *r)
     f->height = s->height;
     f->cluster_count = s->cluster_count;
     f->prim_count = s->prim_count;
+    f->pointer_lo = r->ix.pointer_lo;
+    f->pointer_hi = r->ix.pointer_hi;
     f->ray_epsilon = scene_tolerance(s, NUM_C(RENDER_RAY_EPSILON_VALUE));
     prep_view_at(s, r->frame_index, &r->camera, r->lights);
     f->screen_half_h = r->camera.tan_half_fov_y;

@@ -59,7 +59,7 @@ static void reloc_scene(reloc_t *r, scene_t *s)
     scene_normals_t *normals = RELOC(r, s->normals, s->normals_count, "scene.normals");
     scene_view_key_t *view_keys = RELOC(r, s->view_keys, s->view_key_count, "scene.view_keys");
     /* the index (render_scene_index): all its arrays or none */
-    scene_index_t ix = {NULL, NULL, NULL, NULL, NULL};
+    scene_index_t ix = {NULL, NULL, NULL, NULL, NULL, s->index.pointer_lo, s->index.pointer_hi};
     if (s->index.groups || s->index.child_list || s->index.prim_list || s->index.normal_src ||
         s->index.uv_spread) {
         ix.groups = RELOC(r, s->index.groups, s->cluster_count, "scene.index.groups");
@@ -108,12 +108,13 @@ static void reloc_frame(reloc_t *r, render_frame_t *f, const scene_t *s)
         RELOC(r, f->density_inv_radius2, s->density_component_count, "frame.density_inv_radius2");
     if (r->bad)
         return;
-    for (uint32_t i = 0; r->frame_only < 2 && i < f->prim_count; i++) {
+    /* a triangle holds no pointer (its vertex normals are in it): only
+     * [pointer_lo, pointer_hi) is looked into (the RC relocates every
+     * frame), and there any other kind's density pointers are checked and
+     * moved (NULL with no components: an ellipsoid's, a box's) */
+    uint32_t hi = f->pointer_hi < f->prim_count ? f->pointer_hi : f->prim_count;
+    for (uint32_t i = f->pointer_lo; r->frame_only < 2 && i < hi; i++) {
         render_prim_t *p = &prims[i];
-        /* a triangle holds no pointer (its vertex normals are in it): one
-         * load and one test (the RC relocates every primitive of every
-         * frame); any other kind's density pointers are checked and moved
-         * (NULL with no components: an ellipsoid's, a box's) */
         if (p->kind == SCENE_PRIM_TRIANGLE)
             continue;
         const scene_density_component_t *comps =

@@ -169,6 +169,11 @@ typedef struct {
                                       parent (the scene index's) */
     uint32_t prim_count;
     render_prim_t *prims;          /* reloc; index = scene prim index */
+    uint32_t pointer_lo, pointer_hi; /* every primitive with pointers of its
+                                        own (all but triangles) lies in
+                                        [pointer_lo, pointer_hi): the only
+                                        ones relocation looks into (the
+                                        scene index's) */
     const uint32_t *prim_list;     /* reloc; prim indices, grouped by
                                       cluster (the scene index's) */
     num_t *density_inv_radius2;    /* reloc; 1/d^2 per scene density component:

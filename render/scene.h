@@ -200,6 +200,9 @@ typedef struct {
                                     map coordinates, the sum over k = 1, 2
                                     of max(|u_k - u_0|, |v_k - v_0|)
                                     (precision_check); 0 for other kinds */
+    uint32_t pointer_lo, pointer_hi; /* the primitives that are not
+                                        triangles lie in [pointer_lo,
+                                        pointer_hi) (0, 0: none) */
 } scene_index_t;
 
 enum scene_prim_kind {

@@ -6,7 +6,8 @@
  *     every frame): primitives, clusters, vertex normals, lists; on the
  *     scenes of scenes/ and a smooth model, first and later frames;
  *   - the index itself: children and primitives grouped by owner in rising
- *     index, each cluster's maps its own or (a plain cluster) its parent's,
+ *     index, the primitives that are not triangles within [pointer_lo,
+ *     pointer_hi), each cluster's maps its own or (a plain cluster) its parent's,
  *     each shared vertex normal naming the first one with the same bits
  *     and maps, itself first (and the smooth model does share);
  *   - a scene the index refuses: a normals record named by two triangles
@@ -173,6 +174,17 @@ static void test_index_structure(void)
             bad += g->maps_of != (plain ? ix->groups[cl->parent].maps_of : c);
         }
         bad += kids != s.cluster_count - 1 || prims != s.prim_count;
+        /* the primitives relocation looks into: every one that is not a
+         * triangle, the range's ends among them */
+        uint32_t others = 0;
+        for (uint32_t p = 0; p < s.prim_count; p++)
+            if (s.prims[p].kind != SCENE_PRIM_TRIANGLE) {
+                others++;
+                bad += p < ix->pointer_lo || p >= ix->pointer_hi;
+            }
+        bad += others ? s.prims[ix->pointer_lo].kind == SCENE_PRIM_TRIANGLE ||
+                            s.prims[ix->pointer_hi - 1].kind == SCENE_PRIM_TRIANGLE
+                      : ix->pointer_lo != 0 || ix->pointer_hi != 0;
         for (uint32_t p = 0; p < s.prim_count; p++) {
             const scene_prim_t *sp = &s.prims[p];
             if (sp->kind != SCENE_PRIM_TRIANGLE || !sp->shape.triangle.smooth)
