@@ -725,11 +725,12 @@ static void prep_index_lists(const scene_t *s, scene_group_t *g, uint32_t *child
 }
 
 /* Each triangle's texture spread, and each vertex normal's first equal
- * (named: the records a triangle took; cache: prep_share's).  RENDER_OK,
- * or RENDER_ERR_PRIM for a record named twice or out of range. */
+ * (named: the records a triangle took; cache: prep_share's); the range of
+ * the other primitives (out->pointer_lo, pointer_hi).  RENDER_OK, or
+ * RENDER_ERR_PRIM for a record named twice or out of range. */
 static render_status_t prep_index_triangles(const scene_t *s, const scene_group_t *g,
                                             uint8_t *named, uint32_t *cache, uint32_t *src,
-                                            num_t *spread)
+                                            num_t *spread, scene_index_t *out)
 {
     uint32_t np = s->prim_count, nn = s->normals_count;
     for (uint32_t j = 0; j < nn; j++)
@@ -737,8 +738,12 @@ static render_status_t prep_index_triangles(const scene_t *s, const scene_group_
             src[3 * j + k] = j << 2 | k;
     for (uint32_t i = 0; i < np; i++) {
         const scene_prim_t *sp = &s->prims[i];
-        if (sp->kind != SCENE_PRIM_TRIANGLE)
+        if (sp->kind != SCENE_PRIM_TRIANGLE) {
+            if (!out->pointer_hi)
+                out->pointer_lo = i;
+            out->pointer_hi = i + 1;
             continue;
+        }
         const num_t *u = sp->shape.triangle.tex_u, *v = sp->shape.triangle.tex_v;
         for (int k = 1; k < 3; k++)
             spread[i] = num_add(spread[i], num_max(num_abs(num_sub(u[k], u[0])),
@@ -796,16 +801,11 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
      * (stable: ascending index) */
     for (uint32_t i = 1; i < nc && st == RENDER_OK; i++)
         g[s->clusters[i].parent].child_count++;
-    uint32_t lo = np, hi = 0; /* out->pointer_lo, pointer_hi */
     for (uint32_t i = 0; i < np && st == RENDER_OK; i++) {
         if (s->prims[i].cluster >= nc)
             st = RENDER_ERR_PRIM;
         else
             g[s->prims[i].cluster].prim_count++;
-        if (s->prims[i].kind != SCENE_PRIM_TRIANGLE) {
-            lo = i < lo ? i : lo;
-            hi = i + 1;
-        }
     }
     if (st != RENDER_OK) {
         arena_release_to(arena, mark);
@@ -815,7 +815,7 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
     /* each vertex normal's first equal (bits and maps), in the order
      * render_prepare maps them: rising primitive index.  (Vertices shared
      * likewise cost more to copy than to map: measured, not kept.) */
-    st = prep_index_triangles(s, g, named, cache, src, spread);
+    st = prep_index_triangles(s, g, named, cache, src, spread, out);
     arena_release_to(arena, mark);
     if (st != RENDER_OK)
         return st;
@@ -824,8 +824,6 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
     out->prim_list = plist;
     out->normal_src = src;
     out->uv_spread = spread;
-    out->pointer_lo = hi ? lo : 0;
-    out->pointer_hi = hi;
     return RENDER_OK;
 }
 
