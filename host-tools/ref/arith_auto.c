@@ -531,11 +531,11 @@ static int auto_candidates(const struct arith_auto_opts *o, struct auto_cand *c)
         snprintf(c[n].label, sizeof c[n].label, "fixed Q%d.%d", 31 - f, f);
         snprintf(c[n++].build, sizeof c[0].build, "%s", build);
     }
-    /* --arith auto: the same two traced again in double where a pixel lost
-     * precision (render/wide.h), on a unit with an FPU: the -esc firmware
-     * (the virt board's double in its VFP, the an521 boards' in software:
-     * the cost on the board says which pays), every host build */
-    if (o->fpu && !o->model) {
+    /* the same two traced again in double where a pixel lost precision
+     * (render/wide.h), on a unit with an FPU: the -esc firmware (the virt
+     * board's double in its VFP, the an521 boards' in software: the cost
+     * on the board says which pays), every host build */
+    if (o->fpu) {
         c[n++] = (struct auto_cand){.label = "float escalated", .build = "float",
                                     .arith = "float", .escalation = AUTO_ESCALATED};
         c[n] = (struct auto_cand){.build = "fixed", .arith = "fixed",
@@ -553,15 +553,16 @@ static int auto_candidates(const struct arith_auto_opts *o, struct auto_cand *c)
     return n;
 }
 
-/* PSNR of build's pre-render with the model steps, weight against the
- * reference into *db: 0, 1 (the build refused the scene: *db = 0), -1. */
-static int auto_model_psnr(const struct auto_run *r, const char *build, int steps, double weight,
-                           double *db)
+/* PSNR of candidate c's pre-render (its build, escalated or not) with the
+ * model steps, weight against the reference into *db: 0, 1 (the build
+ * refused the scene: *db = 0), -1. */
+static int auto_model_psnr(const struct auto_run *r, const struct auto_cand *c, int steps,
+                           double weight, double *db)
 {
     char img[PATH_MAX], log[PATH_MAX];
     *db = 0;
-    struct auto_render how = {.build = build, .escalation = AUTO_PLAIN, .marking = AUTO_UNMARKED,
-                              .steps = steps, .weight = weight};
+    struct auto_render how = {.build = c->build, .escalation = c->escalation,
+                              .marking = AUTO_UNMARKED, .steps = steps, .weight = weight};
     int st = auto_host_render(r, &how, img, log, sizeof img);
     if (st != 0)
         return st > 0 ? 1 : -1;
@@ -614,23 +615,23 @@ static int auto_model_search(const struct auto_run *r, struct auto_cand *c, doub
     c->looser_steps_db = c->looser_weight_db = -1;
     /* missing the target at the start and at the most accurate model: out */
     int top = r->density ? SCN_MAX_DENSITY_STEPS : r->steps0;
-    if ((st = auto_model_psnr(r, c->build, r->density ? auto_steps[i] : top,
+    if ((st = auto_model_psnr(r, c, r->density ? auto_steps[i] : top,
                               auto_weight(auto_rung(weight0, wl, AUTO_N_WEIGHTS)), &db)) < 0)
         return -1;
     if ((st != 0 || db < target) &&
-        (st = auto_model_psnr(r, c->build, top, wl[0], &db)) <= 0 && (st < 0 || db < target)) {
+        (st = auto_model_psnr(r, c, top, wl[0], &db)) <= 0 && (st < 0 || db < target)) {
         c->steps = top;
         c->weight = wl[0];
         return st < 0 ? -1 : 0;
     }
     if (r->density) {
         /* steps first, at the most accurate weight */
-        if ((st = auto_model_psnr(r, c->build, auto_steps[i], wl[0], &db)) < 0)
+        if ((st = auto_model_psnr(r, c, auto_steps[i], wl[0], &db)) < 0)
             return -1;
         if (st == 0 && db >= target) {
             while (i > 0) {
                 double d;
-                if ((st = auto_model_psnr(r, c->build, auto_steps[i - 1], wl[0], &d)) < 0)
+                if ((st = auto_model_psnr(r, c, auto_steps[i - 1], wl[0], &d)) < 0)
                     return -1;
                 c->looser_steps = auto_steps[i - 1];
                 c->looser_steps_db = d;
@@ -643,7 +644,7 @@ static int auto_model_search(const struct auto_run *r, struct auto_cand *c, doub
                 c->looser_steps = auto_steps[i];
                 c->looser_steps_db = db;
                 i++;
-                if ((st = auto_model_psnr(r, c->build, auto_steps[i], wl[0], &db)) < 0)
+                if ((st = auto_model_psnr(r, c, auto_steps[i], wl[0], &db)) < 0)
                     return -1;
             }
         }
@@ -652,12 +653,12 @@ static int auto_model_search(const struct auto_run *r, struct auto_cand *c, doub
     if (!r->density)
         c->steps = r->steps0;
     int j = auto_rung(weight0, wl, AUTO_N_WEIGHTS);
-    if ((st = auto_model_psnr(r, c->build, c->steps, wl[j], &db)) < 0)
+    if ((st = auto_model_psnr(r, c, c->steps, wl[j], &db)) < 0)
         return -1;
     if (st == 0 && db >= target) {
         while (j < AUTO_N_WEIGHTS - 1) {
             double d;
-            if ((st = auto_model_psnr(r, c->build, c->steps, wl[j + 1], &d)) < 0)
+            if ((st = auto_model_psnr(r, c, c->steps, wl[j + 1], &d)) < 0)
                 return -1;
             c->looser_weight = wl[j + 1];
             c->looser_weight_db = d;
@@ -670,7 +671,7 @@ static int auto_model_search(const struct auto_run *r, struct auto_cand *c, doub
             c->looser_weight = wl[j];
             c->looser_weight_db = db;
             j--;
-            if ((st = auto_model_psnr(r, c->build, c->steps, wl[j], &db)) < 0)
+            if ((st = auto_model_psnr(r, c, c->steps, wl[j], &db)) < 0)
                 return -1;
         }
     }
