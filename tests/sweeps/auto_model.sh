@@ -71,13 +71,14 @@ meets() { # BUILD STEPS WEIGHT: 0 when the build's image at SIZE reaches TARGET
     fi
     ge "${meets_cache[$key]}" "$TARGET"
 }
-cost() { # FIRMWARE STEPS WEIGHT: NC instructions per pixel at SIZE into k
-    # (- when the board failed; no subshell: the count stays in cost_cache)
-    local key="$1 $2 $3"
+cost() { # FIRMWARE STEPS WEIGHT [--escalate]: NC instructions per pixel at
+    # SIZE into k (- when the board failed; no subshell: the count stays in
+    # cost_cache); plain unless --escalate
+    local key="$1 $2 $3 ${4:-}" esc=${4:---no-escalate}
     if [ -z "${cost_cache[$key]:-}" ]; then
         local log=$work/board.log total
         # shellcheck disable=SC2046
-        if timeout 900 "$LINKS1" render "$scn" --arith "$1" --no-escalate $(knob_words "$2" "$3") --ncs 2 \
+        if timeout 900 "$LINKS1" render "$scn" --arith "$1" "$esc" $(knob_words "$2" "$3") --ncs 2 \
                 --count-insns --quiet -o "$work/board.png" >"$log" 2>&1; then
             total=$(grep -o 'NCs total [0-9]*' "$log" | grep -o '[0-9]*$')
             cost_cache[$key]=$(awk -v t="$total" -v s="$SIZE" \
@@ -189,12 +190,13 @@ for entry in "${order[@]}"; do
                 pw=$(sed -nE 's/.*min_weight 1\/([0-9]+).*/\1/p' <<<"$pick")
                 pw=$(awk -v d="$pw" 'BEGIN { printf "%.17g", 1 / d }')
                 pq=$(psnr "$ref" "$work/auto.png")
-                pfw=-
-                for c in "${cands[@]}"; do
+                pfw=- pesc=
+                for c in "${cands[@]}"; do # an escalated pick costs on the -esc firmware
                     IFS='|' read -r label _ fw <<<"$c"
                     [ "$label" = "$plabel" ] && pfw=$fw
+                    [ "$label escalated" = "$plabel" ] && pfw=$fw pesc=--escalate
                 done
-                [ "$pfw" != - ] && cost "$pfw" "${ps:-$steps0}" "$pw" && pc=$k
+                [ "$pfw" != - ] && cost "$pfw" "${ps:-$steps0}" "$pw" $pesc && pc=$k
                 pick="$plabel"
                 [ -n "$ps" ] && pick="$pick, $ps steps"
                 pick="$pick, min_weight $(wname "$pw")"
