@@ -119,7 +119,7 @@ endif
 
 FW_CFLAGS := -std=gnu11 -O2 $(DEBUG_INFO) $(HOST_WARN) -I. -MMD -MP \
 	-ffreestanding -ffunction-sections -fdata-sections -ffp-contract=off \
-	-fno-common -DLINKS1_FIRMWARE $(LIBC_SPECS)
+	-fno-common -fno-math-errno -DLINKS1_FIRMWARE $(LIBC_SPECS)
 # FW_HOT_SRCS: the renderer's inner loops, compiled at -O3 (it inlines and
 # unswitches them further: about 4% fewer of a float NC's instructions a
 # pixel on demo.scn, the same bits); the rest stays at -O2.

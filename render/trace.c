@@ -15,6 +15,7 @@
 #include "render/vec3.h"
 
 #define TRACE_FAR NUM_FAR /* beyond everything */
+#define TRACE_NO_PRIM UINT32_MAX
 /* A unit vector's rounding, as an angle: a few steps of the arithmetic at 1
  * (a camera ray's direction, a normal, a direction towards a light). */
 #define TRACE_DIR_ROUND num_mul_int(num_ulp(NUM_ONE), 4)
@@ -68,6 +69,10 @@ typedef struct {
     uint32_t box_tests; /* this walk's, added to ctx->stats at its end */
     uint32_t screen_tests, prim_tests; /* likewise */
     int use_bounds;     /* ctx->options.use_bounds */
+    int by_list;        /* a camera ray walking a clipping list's clusters
+                           (their own_bounds tested first) */
+    uint32_t left;      /* the primitive the ray leaves and cannot meet
+                           again (trace_left), or TRACE_NO_PRIM: untested */
 } trace_walk_t;
 
 /* A walk of mode over ray in (tmin, tmax], field by field: an initializer
@@ -93,6 +98,8 @@ static void trace_walk_setup(trace_walk_t *w, render_ctx_t *ctx, const ray_t *ra
     w->cut = tmax;
     w->box_tests = w->screen_tests = w->prim_tests = 0;
     w->use_bounds = ctx->options.use_bounds;
+    w->left = TRACE_NO_PRIM;
+    w->by_list = 0;
 }
 
 static void trace_record(trace_walk_t *w, uint32_t prim, num_t t)
@@ -148,7 +155,7 @@ static inline __attribute__((always_inline)) void trace_test_prim_as(trace_walk_
                                                                       uint32_t prim)
 {
     const render_prim_t *p = &w->ctx->frame->prims[prim];
-    if (trace_walk_done_as(w, mode))
+    if (trace_walk_done_as(w, mode) || prim == w->left)
         return;
     num_t t;
     w->prim_tests++;
@@ -274,10 +281,16 @@ static inline __attribute__((always_inline)) void trace_own_prims_as(trace_walk_
                       w->py < c->screen_y0 || w->py > c->screen_y1 ||
                       (c->child_count && !trace_box(w, &c->own_bounds))))
         return;
+    /* each primitive's own box first, unless the box just tested is its
+     * alone (a leaf of one primitive; by screen or by list, own_bounds)
+     * or it is a box, whose own test costs about as much (measured); in a
+     * flat walk every primitive's, standing in for the tree */
+    int flat = !w->ctx->options.use_hierarchy;
+    int by_prim = flat || c->prim_count > 1 || (c->child_count && !screen && !w->by_list);
     for (uint32_t k = 0; k < c->prim_count; k++) {
         uint32_t prim = f->prim_list[c->first_prim + k];
-        /* in a flat walk the primitive's own box stands in for the tree */
-        if (!w->ctx->options.use_hierarchy && !trace_box(w, &f->prims[prim].bounds))
+        if (by_prim && (flat || f->prims[prim].kind != SCENE_PRIM_BOX) &&
+            !trace_box(w, &f->prims[prim].bounds))
             continue;
         trace_test_prim_as(w, mode, prim);
     }
@@ -491,6 +504,7 @@ static void trace_walk_boxes(trace_walk_t *w, const render_frame_t *f, const uin
                              uint32_t clip_count)
 {
     if (clip) {
+        w->by_list = 1;
         for (uint32_t k = 0; k < clip_count; k++) {
             const render_cluster_t *c = &f->clusters[clip[k]];
             if (!trace_box(w, &c->own_bounds))
@@ -547,18 +561,20 @@ static const ray_error_t *trace_err_margin(const render_ctx_t *ctx, const ray_er
     return scaled;
 }
 
-/* screen (may be NULL): the pixel {x, y} a primary ray goes through, for
+/* left: the primitive the ray leaves (trace_left), or TRACE_NO_PRIM.
+ * screen (may be NULL): the pixel {x, y} a primary ray goes through, for
  * a walk that skips the subtrees whose screen rectangles miss it.  Not
  * inlined: its frame stays out of trace_ray's, which every level of the
  * recursion pays for (render/limits.h). */
-static __attribute__((noinline)) int trace_nearest(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err, num_t tmin,
+static __attribute__((noinline)) int trace_nearest(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err, uint32_t left,
                          const uint32_t *clip, uint32_t clip_count, const int32_t *screen,
                          hit_t *hit)
 {
     ray_error_t scaled;
     err = trace_err_margin(ctx, err, &scaled);
     trace_walk_t w;
-    trace_walk_setup(&w, ctx, ray, err, tmin, TRACE_FAR, TRACE_NEAREST, NULL);
+    trace_walk_setup(&w, ctx, ray, err, NUM_ZERO, TRACE_FAR, TRACE_NEAREST, NULL);
+    w.left = left;
     if (screen) {
         w.screen = 1;
         w.px = screen[0];
@@ -649,12 +665,31 @@ static const scene_material_t *trace_surface_look(render_ctx_t *ctx, const hit_t
     return here;
 }
 
+/* The primitive a ray from hit cannot meet again, which its walk need not
+ * test: the hit's, when the ray starts off its surface on the side of off
+ * (the ray's origin is the hit moved along off) and moves away from it
+ * (dir): a triangle's plane it does not cross again, and a convex
+ * primitive (ellipsoid, box) lies wholly behind the plane that touches it
+ * at the hit.  Otherwise TRACE_NO_PRIM. */
+static uint32_t trace_left(const render_ctx_t *ctx, const hit_t *hit, vec3_t off, vec3_t dir)
+{
+    const render_prim_t *p = &ctx->frame->prims[hit->prim];
+    vec3_t g = p->kind == SCENE_PRIM_TRIANGLE ? p->normal : hit->normal;
+    num_t a = vec3_dot(off, g), b = vec3_dot(dir, g);
+    int away = num_gt(a, NUM_ZERO) && num_gt(b, NUM_ZERO);
+    if (p->kind == SCENE_PRIM_TRIANGLE) /* a plane: either side */
+        away = away || (num_lt(a, NUM_ZERO) && num_lt(b, NUM_ZERO));
+    else if (p->kind != SCENE_PRIM_ELLIPSOID && p->kind != SCENE_PRIM_BOX)
+        away = 0;
+    return away ? hit->prim : TRACE_NO_PRIM;
+}
+
 /* Fraction of light i that reaches origin along dir over distance:
  * the product of trc(th) of every object crossed (trc(th) F with
  * options.shadow_tint), in primitive order.  err: the shadow ray's error
- * bound. */
+ * bound; left: the primitive it leaves (trace_left). */
 static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t distance,
-                          const ray_error_t *err)
+                          const ray_error_t *err, uint32_t left)
 {
     rgb_t pass = rgb_make(NUM_ONE, NUM_ONE, NUM_ONE);
     if (!ctx->options.shadows)
@@ -669,6 +704,7 @@ static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t di
     trace_walk_t w;
     trace_walk_setup(&w, ctx, &ray, trace_err_margin(ctx, err, &scaled), ctx->frame->ray_epsilon,
                      distance, TRACE_COLLECT_SHADOW, &cross);
+    w.left = left;
     trace_walk(&w, NULL, 0);
     if (cross.opaque || cross.overflow)
         return rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
@@ -730,7 +766,8 @@ static rgb_t trace_lights(render_ctx_t *ctx, const hit_t *hit, num_t hit_err,
         if (num_gt(vec3_dot(n, to_light), NUM_ZERO)) {
             ray_error_t err = {hit_err, trace_err_clamp(num_add(num_div(hit_err, distance),
                                                                TRACE_DIR_ROUND))};
-            shadowed = rgb_mul(unshadowed, trace_shadow(ctx, origin, to_light, distance, &err));
+            shadowed = rgb_mul(unshadowed, trace_shadow(ctx, origin, to_light, distance, &err,
+                                                        trace_left(ctx, hit, n, to_light)));
             if (trace_settled_elsewhere(ctx))
                 break; /* the other lights' shadow rays too */
         } else if (ctx->options.shadows) {
@@ -742,7 +779,7 @@ static rgb_t trace_lights(render_ctx_t *ctx, const hit_t *hit, num_t hit_err,
     return sum;
 }
 
-static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err, num_t tmin,
+static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err, uint32_t left,
                        int depth, num_t weight);
 
 /* How far a hit may lie from the double build's: the ray's error at its t
@@ -932,7 +969,7 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
         ray_t r = {outside, shade_reflect(ray->dir, n)};
         ray_error_t r_err = {hit_err, trace_err_clamp(num_add(err->dir, num_mul_int(normal_err, 2)))};
         ctx->stats.reflection++;
-        reflected = trace_ray(ctx, &r, &r_err, NUM_ZERO, depth + 1, w_mirror);
+        reflected = trace_ray(ctx, &r, &r_err, trace_left(ctx, hit, n, r.dir), depth + 1, w_mirror);
         if (num_gt(src, NUM_ZERO))
             out = rgb_add(out, rgb_scale(reflected, src));
     }
@@ -954,7 +991,8 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
             ray_error_t r_err = {surface_err, trace_refract_error(err, normal_err, eta, cos_theta,
                                                               refracted_dir, n)};
             ctx->stats.refraction++;
-            through = trace_ray(ctx, &r, &r_err, NUM_ZERO, depth + 1, w_trc);
+            through = trace_ray(ctx, &r, &r_err, trace_left(ctx, hit, vec3_neg(n), r.dir), depth + 1,
+                                w_trc);
         } else if (!can_recurse && ctx->options.refractionless) {
             ray_t r = {inside, ray->dir};
             through = trace_straight(ctx, &r, s_err, w_trc);
@@ -966,7 +1004,7 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
     return out;
 }
 
-static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err, num_t tmin,
+static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *err, uint32_t left,
                        int depth, num_t weight)
 {
     if (trace_settled_elsewhere(ctx))
@@ -974,7 +1012,7 @@ static rgb_t trace_ray(render_ctx_t *ctx, const ray_t *ray, const ray_error_t *e
     ray_error_t none = {NUM_ZERO, NUM_ZERO};
     err = trace_err_if_heavy(err, &none, weight);
     hit_t hit;
-    if (!trace_nearest(ctx, ray, err, tmin, NULL, 0, NULL, &hit))
+    if (!trace_nearest(ctx, ray, err, left, NULL, 0, NULL, &hit))
         return haze_miss(ctx);
     rgb_t c = trace_shade(ctx, ray, err, &hit, depth, weight);
     if (ctx->frame->scene->haze)
@@ -1027,7 +1065,7 @@ static rgb_t render_eye(render_ctx_t *ctx, num_t sx, num_t sy, pixel_search_t se
      * counted apart from the secondary rays of its shading */
     uint64_t boxes = ctx->stats.box_tests, prims = ctx->stats.prim_tests;
     hit_t hit;
-    int found = trace_nearest(ctx, &ray, &err, NUM_ZERO,
+    int found = trace_nearest(ctx, &ray, &err, TRACE_NO_PRIM,
                               search == PIXEL_SEARCH_LIST ? clip : NULL, clip_count,
                               search == PIXEL_SEARCH_SCREEN ? pixel : NULL, &hit);
     ctx->stats.primary_box_tests += ctx->stats.box_tests - boxes;
