@@ -1,7 +1,8 @@
 # render/: the ray tracer, built for every arithmetic; it knows nothing of
 # cores, drivers or messages.
 SHARED_SRCS += render/arena.c render/words.c render/xform.c render/prim.c render/prim_cone.c render/prepare.c \
-	render/shade.c render/maps.c render/trace.c render/precision.c render/haze.c
+	render/shade.c render/maps.c render/trace.c render/precision.c render/haze.c \
+	render/lightbuf.c
 # The arena and the word loops know no num_t: one host build for every
 # arithmetic.
 ARITH_FREE_SRCS += render/arena.c render/words.c
@@ -44,6 +45,9 @@ $(foreach a,double float fixed,$(eval test_blob_$(a)_LIBS = $$(SCENE_TEXT_LIBS))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_SRCS = tests/host/test_clip.c tests/host/render_fixture.c $$(SCENE_TEXT_SRCS)))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_ARITH := $(a)))
 $(foreach a,double float fixed,$(eval test_clip_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
+$(foreach a,double float fixed,$(eval test_lightbuf_$(a)_SRCS = tests/host/test_lightbuf.c $$(SCENE_TEXT_SRCS)))
+$(foreach a,double float fixed,$(eval test_lightbuf_$(a)_ARITH := $(a)))
+$(foreach a,double float fixed,$(eval test_lightbuf_$(a)_LIBS = $$(SCENE_TEXT_LIBS)))
 # Anti-aliasing (render/trace.c): areas, corner means, cuts.
 $(foreach a,double float fixed,$(eval test_aa_$(a)_SRCS = tests/host/test_aa.c tests/host/render_fixture.c $$(SCENE_TEXT_SRCS)))
 $(foreach a,double float fixed,$(eval test_aa_$(a)_ARITH := $(a)))

@@ -9,6 +9,7 @@
  * same reason.
  */
 #include "render/haze.h"
+#include "render/lightbuf.h"
 #include "render/maps.h"
 #include "render/prim.h"
 #include "render/shade.h"
@@ -71,6 +72,9 @@ typedef struct {
     int use_bounds;     /* ctx->options.use_bounds */
     int by_list;        /* a camera ray walking a clipping list's clusters
                            (their own_bounds tested first) */
+    const render_lightbuf_t *lb; /* a shadow ray walking its light buffer's
+                                    cell (lb_mask), or NULL */
+    uint32_t lb_mask;
     uint32_t left;      /* the primitive the ray leaves and cannot meet
                            again (trace_left), or TRACE_NO_PRIM: untested */
 } trace_walk_t;
@@ -100,6 +104,7 @@ static void trace_walk_setup(trace_walk_t *w, render_ctx_t *ctx, const ray_t *ra
     w->use_bounds = ctx->options.use_bounds;
     w->left = TRACE_NO_PRIM;
     w->by_list = 0;
+    w->lb = NULL;
 }
 
 static void trace_record(trace_walk_t *w, uint32_t prim, num_t t)
@@ -498,12 +503,33 @@ static void trace_cluster(trace_walk_t *w, uint32_t index)
         trace_tree_as(w, TRACE_NEAREST, 0, index);
 }
 
-/* The walk itself: the clusters given (clip), the hierarchy, or every
- * primitive. */
+/* A shadow ray's walk of the items its light buffer's cell lists, each
+ * box first (render/lightbuf.h). */
+static void trace_walk_items(trace_walk_t *w, const render_frame_t *f)
+{
+    for (uint32_t mask = w->lb_mask; mask && !trace_walk_done_as(w, TRACE_COLLECT_SHADOW);
+         mask &= mask - 1) {
+        uint32_t item = w->lb->item[__builtin_ctz(mask)];
+        if (item == w->left)
+            continue;
+        if (item & RENDER_LB_CLUSTER) {
+            uint32_t c = item & ~RENDER_LB_CLUSTER;
+            if (trace_box(w, &f->clusters[c].bounds))
+                trace_cluster(w, c);
+        } else if (trace_box(w, &f->prims[item].bounds)) {
+            trace_test_prim(w, item);
+        }
+    }
+}
+
+/* The walk itself: a light buffer's items, the clusters given (clip), the
+ * hierarchy, or every primitive. */
 static void trace_walk_boxes(trace_walk_t *w, const render_frame_t *f, const uint32_t *clip,
                              uint32_t clip_count)
 {
-    if (clip) {
+    if (w->lb) {
+        trace_walk_items(w, f);
+    } else if (clip) {
         w->by_list = 1;
         for (uint32_t k = 0; k < clip_count; k++) {
             const render_cluster_t *c = &f->clusters[clip[k]];
@@ -671,7 +697,9 @@ static const scene_material_t *trace_surface_look(render_ctx_t *ctx, const hit_t
  * (dir): a triangle's plane it does not cross again, and a convex
  * primitive (ellipsoid, box) lies wholly behind the plane that touches it
  * at the hit.  Otherwise TRACE_NO_PRIM. */
-static uint32_t trace_left(const render_ctx_t *ctx, const hit_t *hit, vec3_t off, vec3_t dir)
+static inline __attribute__((always_inline)) uint32_t trace_left(const render_ctx_t *ctx,
+                                                                   const hit_t *hit, vec3_t off,
+                                                                   vec3_t dir)
 {
     const render_prim_t *p = &ctx->frame->prims[hit->prim];
     vec3_t g = p->kind == SCENE_PRIM_TRIANGLE ? p->normal : hit->normal;
@@ -684,17 +712,24 @@ static uint32_t trace_left(const render_ctx_t *ctx, const hit_t *hit, vec3_t off
     return away ? hit->prim : TRACE_NO_PRIM;
 }
 
-/* Fraction of light i that reaches origin along dir over distance:
+/* Fraction of light `light` that reaches origin along dir over distance:
  * the product of trc(th) of every object crossed (trc(th) F with
  * options.shadow_tint), in primitive order.  err: the shadow ray's error
  * bound; left: the primitive it leaves (trace_left). */
-static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t distance,
-                          const ray_error_t *err, uint32_t left)
+static rgb_t trace_shadow(render_ctx_t *ctx, uint32_t light, vec3_t origin, vec3_t dir,
+                          num_t distance, const ray_error_t *err, uint32_t left)
 {
     rgb_t pass = rgb_make(NUM_ONE, NUM_ONE, NUM_ONE);
     if (!ctx->options.shadows)
         return pass;
     ctx->stats.shadow++;
+    render_lightbuf_t *lb = ctx->light_buffer;
+    uint32_t mask = 0;
+    if (lb && ctx->options.use_bounds && ctx->options.use_hierarchy) {
+        mask = render_lightbuf_mask(lb, light, origin, dir);
+        if (!mask || (!(mask & (mask - 1)) && lb->item[__builtin_ctz(mask)] == left))
+            return pass; /* its cell lists nothing, or only what it leaves */
+    }
     ray_t ray = {origin, dir};
     crossings_t cross;
     cross.count = 0;
@@ -705,6 +740,10 @@ static rgb_t trace_shadow(render_ctx_t *ctx, vec3_t origin, vec3_t dir, num_t di
     trace_walk_setup(&w, ctx, &ray, trace_err_margin(ctx, err, &scaled), ctx->frame->ray_epsilon,
                      distance, TRACE_COLLECT_SHADOW, &cross);
     w.left = left;
+    if (mask) {
+        w.lb = lb;
+        w.lb_mask = mask;
+    }
     trace_walk(&w, NULL, 0);
     if (cross.opaque || cross.overflow)
         return rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
@@ -766,7 +805,7 @@ static rgb_t trace_lights(render_ctx_t *ctx, const hit_t *hit, num_t hit_err,
         if (num_gt(vec3_dot(n, to_light), NUM_ZERO)) {
             ray_error_t err = {hit_err, trace_err_clamp(num_add(num_div(hit_err, distance),
                                                                TRACE_DIR_ROUND))};
-            shadowed = rgb_mul(unshadowed, trace_shadow(ctx, origin, to_light, distance, &err,
+            shadowed = rgb_mul(unshadowed, trace_shadow(ctx, i, origin, to_light, distance, &err,
                                                         trace_left(ctx, hit, n, to_light)));
             if (trace_settled_elsewhere(ctx))
                 break; /* the other lights' shadow rays too */

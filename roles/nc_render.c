@@ -27,6 +27,7 @@
 #include "proto/wire.h"
 #include "render/blob.h"
 #include "render/clip.h"
+#include "render/lightbuf.h"
 #include "render/wide.h"
 #include "roles/gigs.h"
 #include "roles/selftest.h"
@@ -121,6 +122,17 @@ static int nc_setup_wide(struct nc_job *job, const uint8_t *block, const render_
     return 0;
 }
 
+/* The frame's light buffer (render/lightbuf.h) in private memory, where
+ * it fits beside the working set; without it shadow rays walk the whole
+ * tree: the same image, more instructions. */
+static void nc_light_buffer(struct nc_job *job, const render_frame_t *f)
+{
+    size_t bytes = render_lightbuf_bytes(f);
+    if (bytes + 16 > kmem_free())
+        return;
+    job->ctx.light_buffer = render_lightbuf_init(f, kmem_alloc(bytes, "light buffer"), bytes);
+}
+
 /* Opens the broadcast frame and sets aside the working set; 0, or -1 with
  * why filled (the broadcast read is ended again then). */
 static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, uint8_t clip, char *why,
@@ -168,6 +180,7 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, uint8_t
         imsu_bcast_read_end(&imsu_rc_ncs, me);
         return -1;
     }
+    nc_light_buffer(job, blob->frame);
     job->opt.y_clip = !(flags & LINK_RENDER_NO_YCLIP);
     job->opt.x_clip = !(flags & LINK_RENDER_NO_XCLIP);
     job->opt.lists = clip == LINK_CLIP_LISTS ||

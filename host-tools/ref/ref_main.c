@@ -29,6 +29,7 @@
 #include "host-tools/ref/ref_opts.h"
 #include "render/blob.h"
 #include "render/clip.h"
+#include "render/lightbuf.h"
 #include "render/precision.h"
 #include "render/render.h"
 #include "render/scene_load.h"
@@ -172,6 +173,16 @@ static int ref_wide_frame(const char *in, struct ref_wide *w, long frame, render
 
 /* Every row of the image through render_span, or with supersample > 0
  * render_pixel_supersampled. */
+/* The frame's light buffer (render/lightbuf.h) for ctx, in memory the
+ * caller frees; without memory shadow rays walk the whole tree. */
+static void *ref_light_buffer(render_ctx_t *ctx, const render_frame_t *f)
+{
+    size_t bytes = render_lightbuf_bytes(f);
+    void *mem = malloc(bytes);
+    ctx->light_buffer = render_lightbuf_init(f, mem, bytes);
+    return mem;
+}
+
 static void ref_trace_rows(render_ctx_t *ctx, struct image *img, rgb8_t *row, int supersample)
 {
     for (uint32_t y = 0; y < (uint32_t)img->height; y++) {
@@ -242,7 +253,9 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     }
     render_ctx_t ctx;
     render_ctx_init(&ctx, frame_data);
+    void *lights = ref_light_buffer(&ctx, frame_data);
     if (wide && ref_wide_frame(in, wide, frame, &ctx) != 0) {
+        free(lights);
         free(row);
         image_free(&img);
         return -1;
@@ -254,6 +267,7 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c0);
     if (render_corner_mode(&ctx.options)) {
         if (ref_trace_corners(&ctx, frame_data, &img) != 0) {
+            free(lights);
             free(row);
             image_free(&img);
             return -1;
@@ -263,6 +277,7 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
     }
     clock_gettime(CLOCK_MONOTONIC, &t1);
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &c1);
+    free(lights);
     if (wide)
         RENDER_WIDE(wide_stats_add)(wide->ctx, &ctx.stats); /* the escalations' rays */
     if (wide && verbose)

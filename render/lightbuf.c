@@ -1,0 +1,398 @@
+/* render/lightbuf.c: the light buffer (render/lightbuf.h). */
+#include "render/lightbuf.h"
+
+#include "render/vec3.h"
+#include "render/words.h"
+
+#define LB_N RENDER_LB_CELLS
+
+size_t render_lightbuf_bytes(const render_frame_t *f)
+{
+    return sizeof(render_lightbuf_t) + (size_t)f->light_count * sizeof(render_lb_light_t);
+}
+
+/* The top of the tree as items: the root, then any cluster item replaced
+ * by its own primitives and children while the count stays within
+ * RENDER_LB_ITEMS (the last item moves into its place). */
+static uint32_t lb_items(const render_frame_t *f, uint32_t *item)
+{
+    uint32_t n = 1;
+    item[0] = RENDER_LB_CLUSTER; /* the root, cluster 0 */
+    for (uint32_t i = 0; i < n;) {
+        if (!(item[i] & RENDER_LB_CLUSTER)) {
+            i++;
+            continue;
+        }
+        const render_cluster_t *c = &f->clusters[item[i] & ~RENDER_LB_CLUSTER];
+        if ((uint64_t)n - 1 + c->prim_count + c->child_count > RENDER_LB_ITEMS) {
+            i++;
+            continue;
+        }
+        item[i] = item[--n];
+        for (uint32_t k = 0; k < c->prim_count; k++)
+            item[n++] = f->prim_list[c->first_prim + k];
+        for (uint32_t k = 0; k < c->child_count; k++)
+            item[n++] = f->child_list[c->first_child + k] | RENDER_LB_CLUSTER;
+    }
+    return n;
+}
+
+static const aabb_t *lb_item_box(const render_frame_t *f, uint32_t item)
+{
+    if (item & RENDER_LB_CLUSTER)
+        return &f->clusters[item & ~RENDER_LB_CLUSTER].bounds;
+    return &f->prims[item].bounds;
+}
+
+static int lb_box_sat(const aabb_t *b)
+{
+    return vec3_is_sat(b->lo) || vec3_is_sat(b->hi);
+}
+
+/* Eight points whose hull holds an item: a box's or an ellipsoid's local
+ * cube mapped back (tighter than its box where it is turned), or its box's
+ * corners.  The mapped cube is kept only while its own box reaches that
+ * of the item within a sixteenth of the item's size on every side: a
+ * map inverted badly falls back to the box. */
+static void lb_item_corners(const render_frame_t *f, uint32_t item, vec3_t c[8])
+{
+    const aabb_t *b = lb_item_box(f, item);
+    for (int k = 0; k < 8; k++)
+        c[k] = vec3_make(k & 1 ? b->hi.x : b->lo.x, k & 2 ? b->hi.y : b->lo.y,
+                         k & 4 ? b->hi.z : b->lo.z);
+    const render_prim_t *p = item & RENDER_LB_CLUSTER ? NULL : &f->prims[item];
+    xform_t back;
+    if (!p || p->imprecise || (p->kind != SCENE_PRIM_BOX && p->kind != SCENE_PRIM_ELLIPSOID) ||
+        !xform_invert(&p->to_local, &back))
+        return;
+    vec3_t m[8], lo, hi;
+    for (int k = 0; k < 8; k++) {
+        num_t one = NUM_ONE, less = num_neg(NUM_ONE);
+        m[k] = xform_point(&back, vec3_make(k & 1 ? one : less, k & 2 ? one : less,
+                                            k & 4 ? one : less));
+        lo = k ? vec3_make(num_min(lo.x, m[k].x), num_min(lo.y, m[k].y), num_min(lo.z, m[k].z))
+               : m[k];
+        hi = k ? vec3_make(num_max(hi.x, m[k].x), num_max(hi.y, m[k].y), num_max(hi.z, m[k].z))
+               : m[k];
+    }
+    for (int i = 0; i < 3; i++) {
+        num_t slack = num_scale2(num_sub(vec3_get(b->hi, i), vec3_get(b->lo, i)), -4);
+        if (num_gt(vec3_get(lo, i), num_add(vec3_get(b->lo, i), slack)) ||
+            num_lt(vec3_get(hi, i), num_sub(vec3_get(b->hi, i), slack)) ||
+            num_is_sat(slack) || vec3_is_sat(lo) || vec3_is_sat(hi))
+            return;
+    }
+    for (int k = 0; k < 8; k++)
+        c[k] = m[k];
+}
+
+static void lb_box_points(const aabb_t *b, vec3_t c[8])
+{
+    for (int k = 0; k < 8; k++)
+        c[k] = vec3_make(k & 1 ? b->hi.x : b->lo.x, k & 2 ? b->hi.y : b->lo.y,
+                         k & 4 ? b->hi.z : b->lo.z);
+}
+
+/* The cell of coordinate x in a grid from x0 at s cells a unit, clamped. */
+static int lb_grid_cell(num_t x, num_t x0, num_t s)
+{
+    num_t c = num_mul(num_sub(x, x0), s);
+    if (!num_gt(c, NUM_ZERO))
+        return 0;
+    if (!num_lt(c, num_from_int(LB_N - 1)))
+        return LB_N - 1;
+    int i = num_floor_int(c);
+    return i < 0 ? 0 : i > LB_N - 1 ? LB_N - 1 : i;
+}
+
+/* Marks the cells of g that the rectangle r (u0, u1, v0, v1) covers, one
+ * more on each side. */
+static void lb_mark(const render_lb_grid_t *g, uint32_t (*cells)[LB_N], const num_t r[4],
+                    uint32_t bit)
+{
+    int u0 = lb_grid_cell(r[0], g->u0, g->su) - 1, u1 = lb_grid_cell(r[1], g->u0, g->su) + 1;
+    int v0 = lb_grid_cell(r[2], g->v0, g->sv) - 1, v1 = lb_grid_cell(r[3], g->v0, g->sv) + 1;
+    for (int u = u0 < 0 ? 0 : u0; u <= u1 && u < LB_N; u++)
+        for (int v = v0 < 0 ? 0 : v0; v <= v1 && v < LB_N; v++)
+            cells[u][v] |= bit;
+}
+
+/* The range [*lo, *hi] of a / m for a in [a0, a1] and m in [m0, m1]
+ * (m1 > 0; only m > 0 is on the face, so with m0 <= 0 the quotient runs
+ * off to either infinity whose side a reaches), within [-1, 1]. */
+static void lb_quotient_range(num_t a0, num_t a1, num_t m0, num_t m1, num_t *lo, num_t *hi)
+{
+    num_t one = NUM_ONE, less = num_neg(NUM_ONE);
+    if (num_gt(m0, NUM_ZERO)) {
+        *lo = num_div(a0, num_ge(a0, NUM_ZERO) ? m1 : m0);
+        *hi = num_div(a1, num_ge(a1, NUM_ZERO) ? m0 : m1);
+    } else {
+        *lo = num_ge(a0, NUM_ZERO) ? num_div(a0, m1) : less;
+        *hi = num_gt(a1, NUM_ZERO) ? one : num_div(a1, m1);
+    }
+    *lo = num_min(num_max(*lo, less), one);
+    *hi = num_min(num_max(*hi, less), one);
+}
+
+/* Where points c (relative to the light) show on cube face `face`, as r
+ * (u0, u1, v0, v1): by the points themselves when all lie in front of it
+ * (the hull's view is theirs), else by their box; 0 when all lie behind. */
+static int lb_face_rect(int face, const vec3_t *c, num_t r[4])
+{
+    int m = face / 2, a = (m + 1) % 3, w = (m + 2) % 3, front = 1;
+    num_t dm[8], far = NUM_ZERO;
+    for (int k = 0; k < 8; k++) {
+        dm[k] = face % 2 ? num_neg(vec3_get(c[k], m)) : vec3_get(c[k], m);
+        front &= num_gt(dm[k], NUM_ZERO);
+        far = num_max(far, dm[k]);
+    }
+    if (!num_gt(far, NUM_ZERO))
+        return 0;
+    if (!front) {
+        num_t lo[3], hi[3];
+        for (int k = 0; k < 8; k++)
+            for (int i = 0; i < 3; i++) {
+                num_t x = i == m ? dm[k] : vec3_get(c[k], i);
+                lo[i] = k ? num_min(lo[i], x) : x;
+                hi[i] = k ? num_max(hi[i], x) : x;
+            }
+        lb_quotient_range(lo[a], hi[a], lo[m], hi[m], &r[0], &r[1]);
+        lb_quotient_range(lo[w], hi[w], lo[m], hi[m], &r[2], &r[3]);
+        return 1;
+    }
+    num_t one = NUM_ONE, less = num_neg(NUM_ONE);
+    for (int k = 0; k < 8; k++) {
+        num_t inv = num_recip(dm[k]);
+        num_t u = num_mul(vec3_get(c[k], a), inv), v = num_mul(vec3_get(c[k], w), inv);
+        r[0] = k ? num_min(r[0], u) : u;
+        r[1] = k ? num_max(r[1], u) : u;
+        r[2] = k ? num_min(r[2], v) : v;
+        r[3] = k ? num_max(r[3], v) : v;
+    }
+    for (int i = 0; i < 4; i++)
+        r[i] = num_min(num_max(r[i], less), one);
+    return 1;
+}
+
+/* Where a point p falls on a parallel light's plane: along the direction
+ * onto the plane of its major axis. */
+static void lb_project(const render_lb_light_t *l, vec3_t p, num_t *u, num_t *v)
+{
+    int m = l->axis;
+    num_t pm = vec3_get(p, m);
+    *u = num_sub(vec3_get(p, (m + 1) % 3), num_mul(pm, l->k_u));
+    *v = num_sub(vec3_get(p, (m + 2) % 3), num_mul(pm, l->k_v));
+}
+
+/* The projection's rectangle of eight points. */
+static void lb_project_points(const render_lb_light_t *l, const vec3_t *c, num_t r[4])
+{
+    for (int k = 0; k < 8; k++) {
+        num_t u, v;
+        lb_project(l, c[k], &u, &v);
+        r[0] = k ? num_min(r[0], u) : u;
+        r[1] = k ? num_max(r[1], u) : u;
+        r[2] = k ? num_min(r[2], v) : v;
+        r[3] = k ? num_max(r[3], v) : v;
+    }
+}
+
+/* A grid of LB_N x LB_N cells over rectangle r; 0 when r is flat or does
+ * not fit the arithmetic. */
+static int lb_grid(render_lb_grid_t *g, const num_t r[4])
+{
+    num_t wu = num_sub(r[1], r[0]), wv = num_sub(r[3], r[2]);
+    g->u0 = r[0];
+    g->v0 = r[2];
+    g->su = g->sv = NUM_ZERO;
+    if (!num_gt(wu, NUM_ZERO) || !num_gt(wv, NUM_ZERO) || num_is_sat(wu) || num_is_sat(wv))
+        return 0;
+    g->su = num_div(num_from_int(LB_N), wu);
+    g->sv = num_div(num_from_int(LB_N), wv);
+    return !num_is_sat(g->su) && !num_is_sat(g->sv);
+}
+
+/* A point or spot light's cube: each face's grid across the root's box as
+ * seen there (a face that does not see it keeps an empty grid). */
+static int lb_cube_setup(render_lb_light_t *l, const aabb_t *root)
+{
+    vec3_t c[8];
+    lb_box_points(root, c);
+    for (int k = 0; k < 8; k++)
+        c[k] = vec3_sub(c[k], l->at);
+    l->faces = 0;
+    for (int face = 0; face < 6; face++) {
+        num_t r[4];
+        render_lb_grid_t *g = &l->grid[face];
+        g->u0 = g->v0 = g->su = g->sv = NUM_ZERO;
+        if (!lb_face_rect(face, c, r))
+            continue;
+        l->faces |= (uint8_t)(1u << face);
+        if (!lb_grid(g, r) && (num_gt(r[0], r[1]) || num_gt(r[2], r[3]) ||
+                               num_is_sat(r[0]) || num_is_sat(r[2])))
+            return 0;
+    }
+    return 1;
+}
+
+/* A parallel light's plane: the major axis of its direction, and a grid
+ * across the root's box's projection (0 when that is flat or does not fit
+ * the arithmetic). */
+static int lb_plane_setup(render_lb_light_t *l, const render_light_t *src, const aabb_t *root)
+{
+    vec3_t d = src->to_light;
+    num_t ax = num_abs(d.x), ay = num_abs(d.y), az = num_abs(d.z);
+    int m = num_ge(ax, ay) && num_ge(ax, az) ? 0 : num_ge(ay, az) ? 1 : 2;
+    num_t dm = vec3_get(d, m);
+    if (!num_gt(num_abs(dm), NUM_ZERO))
+        return 0;
+    l->axis = (uint8_t)m;
+    l->k_u = num_div(vec3_get(d, (m + 1) % 3), dm);
+    l->k_v = num_div(vec3_get(d, (m + 2) % 3), dm);
+    vec3_t c[8];
+    num_t r[4];
+    lb_box_points(root, c);
+    lb_project_points(l, c, r);
+    return lb_grid(&l->grid[0], r);
+}
+
+/* An item of points c (lb_item_corners) and box b on a point light's cube;
+ * near: the distance within which it goes in every cell. */
+static void lb_mark_cube(render_lb_light_t *l, const aabb_t *b, const vec3_t *c, num_t near,
+                         uint32_t bit)
+{
+    int close = 1;
+    for (int i = 0; i < 3; i++) {
+        num_t lo = num_sub(vec3_get(b->lo, i), vec3_get(l->at, i));
+        num_t hi = num_sub(vec3_get(b->hi, i), vec3_get(l->at, i));
+        close &= !num_gt(num_max(num_max(lo, num_neg(hi)), NUM_ZERO), near);
+    }
+    if (close) {
+        l->always |= bit;
+        return;
+    }
+    vec3_t rel[8];
+    for (int k = 0; k < 8; k++)
+        rel[k] = vec3_sub(c[k], l->at);
+    for (int face = 0; face < 6; face++) {
+        num_t r[4];
+        if ((l->faces >> face & 1) && lb_face_rect(face, rel, r))
+            lb_mark(&l->grid[face], l->mask[face], r, bit);
+    }
+}
+
+/* How far a shadow ray may pass beside its light: its origin is moved off
+ * the hit by ray_epsilon, and its direction and length are rounded (a few
+ * steps of the arithmetic at 1 times the scene's extent, and at it). */
+static num_t lb_offset(const render_frame_t *f, const aabb_t *root)
+{
+    num_t extent = NUM_ZERO;
+    for (int i = 0; i < 3; i++)
+        extent = num_max(extent, num_max(num_abs(vec3_get(root->lo, i)),
+                                         num_abs(vec3_get(root->hi, i))));
+    for (uint16_t i = 0; i < f->light_count; i++)
+        for (int k = 0; k < 3; k++)
+            extent = num_max(extent, num_abs(vec3_get(f->lights[i].position, k)));
+    num_t round = num_add(num_mul(num_mul_int(extent, 8), num_ulp(NUM_ONE)),
+                          num_mul_int(num_ulp(extent), 16));
+    return num_add(num_mul_int(f->ray_epsilon, 2), round);
+}
+
+static void lb_mark_plane(render_lb_light_t *l, const vec3_t *c, uint32_t bit)
+{
+    num_t r[4];
+    lb_project_points(l, c, r);
+    lb_mark(&l->grid[0], l->mask[0], r, bit);
+}
+
+/* The distance from a point light within which an item goes in every
+ * cell: where a ray passing offset beside the light turns by a quarter of
+ * the finest cell (a turn by t moves a face's coordinates by up to 2t). */
+static num_t lb_near(const render_lb_light_t *l, num_t offset)
+{
+    num_t s = NUM_ZERO;
+    for (int face = 0; face < 6; face++)
+        s = num_max(s, num_max(l->grid[face].su, l->grid[face].sv));
+    return num_mul(num_mul_int(offset, RENDER_LB_NEAR), s);
+}
+
+static void lb_build_light(const render_frame_t *f, const render_lightbuf_t *lb, uint32_t i,
+                           num_t offset, render_lb_light_t *l)
+{
+    const render_light_t *src = &f->lights[i];
+    const aabb_t *root = &f->clusters[0].bounds;
+    l->always = 0;
+    words_zero(l->mask, sizeof l->mask);
+    l->at = src->position;
+    l->kind = RENDER_LB_ALL;
+    if (src->kind == SCENE_LIGHT_PARALLEL && lb_plane_setup(l, src, root))
+        l->kind = RENDER_LB_PLANE;
+    else if (src->kind != SCENE_LIGHT_PARALLEL && !vec3_is_sat(l->at) && lb_cube_setup(l, root))
+        l->kind = RENDER_LB_CUBE;
+    num_t near = lb_near(l, offset);
+    for (uint32_t k = 0; k < lb->item_count; k++) {
+        uint32_t bit = UINT32_C(1) << k;
+        const aabb_t *b = lb_item_box(f, lb->item[k]);
+        if (num_gt(b->lo.x, b->hi.x) || num_gt(b->lo.y, b->hi.y) || num_gt(b->lo.z, b->hi.z))
+            continue; /* empty: no ray meets it */
+        vec3_t c[8];
+        if (l->kind == RENDER_LB_ALL || lb_box_sat(b) || num_is_sat(near)) {
+            l->always |= bit;
+            continue;
+        }
+        lb_item_corners(f, lb->item[k], c);
+        if (l->kind == RENDER_LB_CUBE)
+            lb_mark_cube(l, b, c, near, bit);
+        else
+            lb_mark_plane(l, c, bit);
+    }
+}
+
+render_lightbuf_t *render_lightbuf_init(const render_frame_t *f, void *mem, size_t bytes)
+{
+    if (!mem || bytes < render_lightbuf_bytes(f) || f->cluster_count == 0)
+        return NULL;
+    render_lightbuf_t *lb = mem;
+    lb->frame = f;
+    lb->item_count = lb_items(f, lb->item);
+    lb->light_count = f->light_count;
+    lb->offset = lb_offset(f, &f->clusters[0].bounds);
+    lb->built = 0;
+    return lb;
+}
+
+/* The cell of direction d (from the light) on the cube: its face, by the
+ * major axis and its sign, and the other two components over it. */
+static uint32_t lb_cube_mask(const render_lb_light_t *l, vec3_t d)
+{
+    num_t ax = num_abs(d.x), ay = num_abs(d.y), az = num_abs(d.z);
+    int m = num_ge(ax, ay) && num_ge(ax, az) ? 0 : num_ge(ay, az) ? 1 : 2;
+    num_t dm = vec3_get(d, m);
+    if (!num_gt(num_abs(dm), NUM_ZERO))
+        return UINT32_MAX;
+    int face = 2 * m + num_lt(dm, NUM_ZERO);
+    const render_lb_grid_t *g = &l->grid[face];
+    num_t inv = num_recip(num_abs(dm));
+    int u = lb_grid_cell(num_mul(vec3_get(d, (m + 1) % 3), inv), g->u0, g->su);
+    int v = lb_grid_cell(num_mul(vec3_get(d, (m + 2) % 3), inv), g->v0, g->sv);
+    return l->always | l->mask[face][u][v];
+}
+
+uint32_t render_lightbuf_mask(render_lightbuf_t *lb, uint32_t light, vec3_t origin, vec3_t dir)
+{
+    const render_lb_light_t *l = &lb->light[light];
+    if (!(lb->built >> light & 1)) {
+        lb_build_light(lb->frame, lb, light, lb->offset, &lb->light[light]);
+        lb->built |= UINT32_C(1) << light;
+    }
+    uint32_t all = lb->item_count == 32 ? UINT32_MAX : (UINT32_C(1) << lb->item_count) - 1;
+    if (l->kind == RENDER_LB_CUBE)
+        return lb_cube_mask(l, vec3_neg(dir)) & all;
+    if (l->kind == RENDER_LB_ALL)
+        return all;
+    num_t u, v;
+    lb_project(l, origin, &u, &v);
+    const render_lb_grid_t *g = &l->grid[0];
+    return (l->always | l->mask[0][lb_grid_cell(u, g->u0, g->su)][lb_grid_cell(v, g->v0, g->sv)]) &
+           all;
+}

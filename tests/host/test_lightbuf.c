@@ -1,0 +1,208 @@
+/* test_lightbuf.c: the light buffer (render/lightbuf.h) over the scenes of
+ * scenes/: its items hold every primitive once, a shadow ray whose walk
+ * would meet an item's box finds the item in its cell, and the image with
+ * it is the image without it. */
+#include "render/lightbuf.h"
+#include "render/prim.h"
+#include "render/vec3.h"
+#include "tests/check.h"
+#include "tests/host/test_blob_util.h"
+
+/* The frame of scene NAME at half its resolution, with its light buffer
+ * in *mem (freed by the caller); NULL on failure. */
+static const render_frame_t *lb_scene(const char *name, void **block, void **mem,
+                                      render_lightbuf_t **lb)
+{
+    size_t size;
+    render_blob_t *blob = tb_blob_div(name, 0, 2, &size);
+    *block = blob;
+    *mem = NULL;
+    *lb = NULL;
+    if (!blob)
+        return NULL;
+    size_t bytes = render_lightbuf_bytes(blob->frame);
+    *mem = malloc(bytes);
+    *lb = render_lightbuf_init(blob->frame, *mem, bytes);
+    return blob->frame;
+}
+
+/* Primitives under item (a cluster's subtree, or one primitive), counted
+ * into seen[]. */
+static void lb_count(const render_frame_t *f, uint32_t item, uint32_t *seen)
+{
+    if (!(item & RENDER_LB_CLUSTER)) {
+        seen[item]++;
+        return;
+    }
+    const render_cluster_t *c = &f->clusters[item & ~RENDER_LB_CLUSTER];
+    for (uint32_t k = 0; k < c->prim_count; k++)
+        seen[f->prim_list[c->first_prim + k]]++;
+    for (uint32_t k = 0; k < c->child_count; k++)
+        lb_count(f, f->child_list[c->first_child + k] | RENDER_LB_CLUSTER, seen);
+}
+
+static void test_items_hold_every_prim_once(void)
+{
+    for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
+        void *block, *mem;
+        render_lightbuf_t *lb;
+        const render_frame_t *f = lb_scene(tb_scenes[s], &block, &mem, &lb);
+        CHECK(f && lb);
+        if (!f || !lb)
+            continue;
+        CHECK(lb->item_count >= 1 && lb->item_count <= RENDER_LB_ITEMS);
+        CHECK_EQ_INT(lb->light_count, f->light_count);
+        uint32_t *seen = calloc(f->prim_count, sizeof *seen);
+        for (uint32_t k = 0; k < lb->item_count; k++)
+            lb_count(f, lb->item[k], seen);
+        int once = 1;
+        for (uint32_t p = 0; p < f->prim_count; p++)
+            once &= seen[p] == 1;
+        CHECK(once);
+        free(seen);
+        /* too little memory: no buffer, nothing written past it */
+        CHECK(render_lightbuf_init(f, mem, render_lightbuf_bytes(f) - 1) == NULL);
+        CHECK(render_lightbuf_init(f, NULL, render_lightbuf_bytes(f)) == NULL);
+        free(mem);
+        free(block);
+    }
+}
+
+static uint32_t lb_rand(uint32_t *state)
+{
+    *state = *state * 1664525u + 1013904223u;
+    return *state >> 8;
+}
+
+/* A point within box b, from 3 random draws. */
+static vec3_t lb_point_in(const aabb_t *b, uint32_t *state)
+{
+    num_t c[3];
+    for (int i = 0; i < 3; i++) {
+        double t = (double)(lb_rand(state) & 0xffff) / 65535.0;
+        double lo = num_to_double(vec3_get(b->lo, i)), hi = num_to_double(vec3_get(b->hi, i));
+        c[i] = num_from_double(lo + (hi - lo) * t);
+    }
+    return vec3_make(c[0], c[1], c[2]);
+}
+
+/* Whether a shadow ray over (ray_epsilon, tmax] meets item as a walk that
+ * tests each primitive's box first finds it: a box or an ellipsoid (whose
+ * turned box the cells hold, not its box in eye space) its box and then
+ * itself, by the primitive's test with an error on the ray of 64
+ * steps of the arithmetic (at 64 for its origin, at 1 for its direction)
+ * (hit, or within that of a hit); anything else, its box. */
+static int lb_met(const render_frame_t *f, uint32_t item, const ray_t *ray, num_t tmax)
+{
+    if (item & RENDER_LB_CLUSTER)
+        return prim_aabb_hit(&f->clusters[item & ~RENDER_LB_CLUSTER].bounds, ray,
+                             f->ray_epsilon, tmax);
+    const render_prim_t *p = &f->prims[item];
+    if (p->kind != SCENE_PRIM_BOX && p->kind != SCENE_PRIM_ELLIPSOID)
+        return prim_aabb_hit(&p->bounds, ray, f->ray_epsilon, tmax);
+    ray_error_t err = {num_mul_int(num_ulp(NUM_C(64)), 64), num_mul_int(num_ulp(NUM_ONE), 64)};
+    num_t t;
+    int uncertain;
+    int found = prim_intersect_uncertain(p, ray, &err, f->ray_epsilon, tmax, &t, &uncertain);
+    return prim_aabb_hit(&p->bounds, ray, f->ray_epsilon, tmax) && (found || uncertain);
+}
+
+/* Shadow rays from random points of the scene towards each light: an item
+ * left out of a ray's cell is one the ray does not meet (lb_met: the walk
+ * would find nothing there); and the cells do leave some out. */
+static void test_cells_hold_what_rays_meet(void)
+{
+    uint32_t state = 12345;
+    uint64_t rays = 0, left_out = 0, wrong = 0;
+    for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
+        void *block, *mem;
+        render_lightbuf_t *lb;
+        const render_frame_t *f = lb_scene(tb_scenes[s], &block, &mem, &lb);
+        if (!f || !lb) {
+            CHECK(f && lb);
+            continue;
+        }
+        const aabb_t *root = &f->clusters[0].bounds;
+        for (uint32_t i = 0; i < f->light_count; i++)
+            for (int n = 0; n < 4000; n++) {
+                const render_light_t *l = &f->lights[i];
+                vec3_t hit = lb_point_in(root, &state);
+                ray_t ray = {hit, l->to_light};
+                num_t tmax = NUM_FAR;
+                if (l->kind != SCENE_LIGHT_PARALLEL) {
+                    vec3_t to = vec3_sub(l->position, hit);
+                    tmax = vec3_length(to);
+                    if (!num_gt(tmax, NUM_ZERO))
+                        continue;
+                    ray.dir = vec3_scale(to, num_recip(tmax));
+                }
+                /* as trace_lights: the origin moved off the hit by
+                 * ray_epsilon (here along an axis), the direction the hit's */
+                int axis = (int)(lb_rand(&state) % 3);
+                vec3_set(&ray.origin, axis, num_add(vec3_get(hit, axis), f->ray_epsilon));
+                uint32_t mask = render_lightbuf_mask(lb, i, ray.origin, ray.dir);
+                rays++;
+                for (uint32_t k = 0; k < lb->item_count; k++) {
+                    if (mask >> k & 1)
+                        continue;
+                    left_out++;
+                    wrong += lb_met(f, lb->item[k], &ray, tmax);
+                }
+            }
+        free(mem);
+        free(block);
+    }
+    printf("  %llu shadow rays, %llu items left out of their cells, %llu wrongly\n",
+           (unsigned long long)rays, (unsigned long long)left_out, (unsigned long long)wrong);
+    CHECK(rays > 10000);
+    CHECK(left_out > rays);
+    CHECK_EQ_INT(wrong, 0);
+}
+
+/* The image with the light buffer is the image without it; the shadow
+ * rays test fewer boxes and primitives. */
+static void test_same_image(void)
+{
+    for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
+        void *block, *mem;
+        render_lightbuf_t *lb;
+        const render_frame_t *f = lb_scene(tb_scenes[s], &block, &mem, &lb);
+        if (!f || !lb) {
+            CHECK(f && lb);
+            continue;
+        }
+        size_t n = (size_t)f->width * f->height;
+        render_stats_t plain_stats, lb_stats;
+        rgb8_t *plain = tb_render_plain(f, &plain_stats);
+        rgb8_t *img = calloc(n, sizeof *img);
+        render_ctx_t ctx;
+        render_ctx_init(&ctx, f);
+        ctx.light_buffer = lb;
+        for (uint32_t y = 0; y < f->height; y++)
+            render_span(&ctx, y, 0, f->width, img + (size_t)y * f->width);
+        lb_stats = ctx.stats;
+        if (!tb_same(plain, img, n))
+            printf("%s: the image differs with the light buffer\n", tb_scenes[s]);
+        CHECK(tb_same(plain, img, n));
+        CHECK_EQ_INT(lb_stats.shadow, plain_stats.shadow);
+        CHECK(plain_stats.shadow > 0);
+        CHECK(lb_stats.box_tests + lb_stats.prim_tests <
+              plain_stats.box_tests + plain_stats.prim_tests);
+        printf("  %s: %llu shadow rays; box and primitive tests %llu with, %llu without\n",
+               tb_scenes[s], (unsigned long long)lb_stats.shadow,
+               (unsigned long long)(lb_stats.box_tests + lb_stats.prim_tests),
+               (unsigned long long)(plain_stats.box_tests + plain_stats.prim_tests));
+        free(img);
+        free(plain);
+        free(mem);
+        free(block);
+    }
+}
+
+int main(void)
+{
+    RUN(test_items_hold_every_prim_once);
+    RUN(test_cells_hold_what_rays_meet);
+    RUN(test_same_image);
+    return check_exit();
+}
