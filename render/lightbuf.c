@@ -94,7 +94,7 @@ static void lb_box_points(const aabb_t *b, vec3_t c[8])
 }
 
 /* The cell of coordinate x in a grid from x0 at s cells a unit, clamped. */
-static int lb_grid_cell(num_t x, num_t x0, num_t s)
+static inline int lb_grid_cell(num_t x, num_t x0, num_t s)
 {
     num_t c = num_mul(num_sub(x, x0), s);
     if (!num_gt(c, NUM_ZERO))
@@ -176,12 +176,10 @@ static int lb_face_rect(int face, const vec3_t *c, num_t r[4])
 
 /* Where a point p falls on a parallel light's plane: along the direction
  * onto the plane of its major axis. */
-static void lb_project(const render_lb_light_t *l, vec3_t p, num_t *u, num_t *v)
+static inline void lb_project(const render_lb_light_t *l, vec3_t p, num_t *u, num_t *v)
 {
-    int m = l->axis;
-    num_t pm = vec3_get(p, m);
-    *u = num_sub(vec3_get(p, (m + 1) % 3), num_mul(pm, l->k_u));
-    *v = num_sub(vec3_get(p, (m + 2) % 3), num_mul(pm, l->k_v));
+    *u = vec3_dot(p, l->pu);
+    *v = vec3_dot(p, l->pv);
 }
 
 /* The projection's rectangle of eight points. */
@@ -246,9 +244,13 @@ static int lb_plane_setup(render_lb_light_t *l, const render_light_t *src, const
     num_t dm = vec3_get(d, m);
     if (!num_gt(num_abs(dm), NUM_ZERO))
         return 0;
-    l->axis = (uint8_t)m;
-    l->k_u = num_div(vec3_get(d, (m + 1) % 3), dm);
-    l->k_v = num_div(vec3_get(d, (m + 2) % 3), dm);
+    /* u = p_a - p_m d_a / d_m, v likewise for the third axis */
+    int a = (m + 1) % 3, w = (m + 2) % 3;
+    l->pu = l->pv = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    vec3_set(&l->pu, a, NUM_ONE);
+    vec3_set(&l->pu, m, num_neg(num_div(vec3_get(d, a), dm)));
+    vec3_set(&l->pv, w, NUM_ONE);
+    vec3_set(&l->pv, m, num_neg(num_div(vec3_get(d, w), dm)));
     vec3_t c[8];
     num_t r[4];
     lb_box_points(root, c);
@@ -366,15 +368,25 @@ render_lightbuf_t *render_lightbuf_init(const render_frame_t *f, void *mem, size
 static uint32_t lb_cube_mask(const render_lb_light_t *l, vec3_t d)
 {
     num_t ax = num_abs(d.x), ay = num_abs(d.y), az = num_abs(d.z);
-    int m = num_ge(ax, ay) && num_ge(ax, az) ? 0 : num_ge(ay, az) ? 1 : 2;
-    num_t dm = vec3_get(d, m);
-    if (!num_gt(num_abs(dm), NUM_ZERO))
+    int face;
+    num_t dm, du, dv;
+    if (num_ge(ax, ay) && num_ge(ax, az)) {
+        face = 0, dm = d.x, du = d.y, dv = d.z;
+    } else if (num_ge(ay, az)) {
+        face = 2, dm = d.y, du = d.z, dv = d.x;
+    } else {
+        face = 4, dm = d.z, du = d.x, dv = d.y;
+    }
+    if (num_lt(dm, NUM_ZERO)) {
+        face++;
+        dm = num_neg(dm);
+    }
+    if (!num_gt(dm, NUM_ZERO))
         return UINT32_MAX;
-    int face = 2 * m + num_lt(dm, NUM_ZERO);
     const render_lb_grid_t *g = &l->grid[face];
-    num_t inv = num_recip(num_abs(dm));
-    int u = lb_grid_cell(num_mul(vec3_get(d, (m + 1) % 3), inv), g->u0, g->su);
-    int v = lb_grid_cell(num_mul(vec3_get(d, (m + 2) % 3), inv), g->v0, g->sv);
+    num_t inv = num_recip(dm);
+    int u = lb_grid_cell(num_mul(du, inv), g->u0, g->su);
+    int v = lb_grid_cell(num_mul(dv, inv), g->v0, g->sv);
     return l->always | l->mask[face][u][v];
 }
 

@@ -49,12 +49,12 @@ typedef struct {
 
 typedef struct {
     uint8_t kind;     /* enum render_lb_kind */
-    uint8_t axis;     /* RENDER_LB_PLANE: the direction's major axis */
     uint8_t faces;    /* RENDER_LB_CUBE: the faces that see the root's box
                          (bit `face`); the others list nothing */
     vec3_t at;        /* RENDER_LB_CUBE: the light's position */
-    num_t k_u, k_v;   /* RENDER_LB_PLANE: the direction's two other
-                         components over its major one */
+    vec3_t pu, pv;    /* RENDER_LB_PLANE: a point's coordinates on the
+                         plane of the direction's major axis, along it:
+                         its dot products with these */
     uint32_t always;  /* items every cell lists */
     /* RENDER_LB_CUBE: face 2m (+) or 2m + 1 (-) of major axis m, over the
      * other two components (m+1, m+2 mod 3) over the major one's size,
