@@ -350,16 +350,16 @@ static void lb_build_light(const render_frame_t *f, const render_lightbuf_t *lb,
     }
 }
 
-render_lightbuf_t *render_lightbuf_init(const render_frame_t *f, void *mem, size_t bytes)
+const render_lightbuf_t *render_lightbuf_build(const render_frame_t *f, void *mem, size_t bytes)
 {
     if (!mem || bytes < render_lightbuf_bytes(f) || f->cluster_count == 0)
         return NULL;
     render_lightbuf_t *lb = mem;
-    lb->frame = f;
     lb->item_count = lb_items(f, lb->item);
     lb->light_count = f->light_count;
     lb->offset = lb_offset(f, &f->clusters[0].bounds);
-    lb->built = 0;
+    for (uint32_t i = 0; i < lb->light_count; i++)
+        lb_build_light(f, lb, i, lb->offset, &lb->light[i]);
     return lb;
 }
 
@@ -390,13 +390,10 @@ static uint32_t lb_cube_mask(const render_lb_light_t *l, vec3_t d)
     return l->always | l->mask[face][u][v];
 }
 
-uint32_t render_lightbuf_mask(render_lightbuf_t *lb, uint32_t light, vec3_t origin, vec3_t dir)
+uint32_t render_lightbuf_mask(const render_lightbuf_t *lb, uint32_t light, vec3_t origin,
+                              vec3_t dir)
 {
     const render_lb_light_t *l = &lb->light[light];
-    if (!(lb->built >> light & 1)) {
-        lb_build_light(lb->frame, lb, light, lb->offset, &lb->light[light]);
-        lb->built |= UINT32_C(1) << light;
-    }
     uint32_t all = lb->item_count == 32 ? UINT32_MAX : (UINT32_C(1) << lb->item_count) - 1;
     if (l->kind == RENDER_LB_CUBE)
         return lb_cube_mask(l, vec3_neg(dir)) & all;

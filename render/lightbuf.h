@@ -17,17 +17,16 @@
  * its cell: walking the cell's items box first gives the walk of the tree
  * the same primitives to test (test_lightbuf).
  *
- * The NC sets up its buffer once a frame (render_lightbuf_init) in memory
- * of render_lightbuf_bytes, and builds a light's cells at its first shadow
- * ray (inside an area: the trace counts it); render_ctx_t.light_buffer
- * points at it.  The same image with it or without (test_lightbuf). */
+ * The NC builds its buffer once a frame as it sets up
+ * (render_lightbuf_build, in memory of render_lightbuf_bytes; the trace
+ * counts it in the NC's set-up); render_ctx_t.light_buffer points at it.
+ * The same image with it or without (test_lightbuf). */
 #ifndef RENDER_LIGHTBUF_H
 #define RENDER_LIGHTBUF_H
 
 #include "render/render.h"
 
 #define RENDER_LB_ITEMS 32 /* items a light's cells list: a bit of a mask each */
-_Static_assert(RENDER_MAX_LIGHTS <= 32, "render_lightbuf_t.built holds a bit a light");
 #define RENDER_LB_CELLS 32 /* cells along a grid's edge */
 #define RENDER_LB_CLUSTER 0x80000000u /* an item that is a cluster's subtree */
 #define RENDER_LB_NEAR 4 /* an item nearer a point light than this times a
@@ -65,10 +64,8 @@ typedef struct {
 } render_lb_light_t;
 
 typedef struct render_lightbuf {
-    const render_frame_t *frame;
     num_t offset;                   /* how far a shadow ray may pass beside
                                        its light (lightbuf.c's lb_offset) */
-    uint32_t built;                 /* the lights built so far (bit i) */
     uint32_t item_count;
     uint32_t item[RENDER_LB_ITEMS]; /* a primitive's index, or a cluster's
                                        with RENDER_LB_CLUSTER */
@@ -76,13 +73,13 @@ typedef struct render_lightbuf {
     render_lb_light_t light[];      /* frame->light_count */
 } render_lightbuf_t;
 
-/* The bytes render_lightbuf_init needs for frame f. */
+/* The bytes render_lightbuf_build needs for frame f. */
 size_t render_lightbuf_bytes(const render_frame_t *f);
-/* Sets up f's light buffer in mem (bytes of it, aligned for a num_t): its
- * items; each light's cells are built when its first shadow ray asks for
- * them.  NULL when bytes fall short or f has no cluster tree. */
-render_lightbuf_t *render_lightbuf_init(const render_frame_t *f, void *mem, size_t bytes);
+/* Builds f's light buffer in mem (bytes of it, aligned for a num_t): NULL
+ * when bytes fall short or f has no cluster tree. */
+const render_lightbuf_t *render_lightbuf_build(const render_frame_t *f, void *mem, size_t bytes);
 /* The items a shadow ray from origin along dir towards light may meet. */
-uint32_t render_lightbuf_mask(render_lightbuf_t *lb, uint32_t light, vec3_t origin, vec3_t dir);
+uint32_t render_lightbuf_mask(const render_lightbuf_t *lb, uint32_t light, vec3_t origin,
+                              vec3_t dir);
 
 #endif

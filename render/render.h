@@ -283,9 +283,9 @@ typedef struct {
      * straight transmission past the depth limit, a shadow ray's
      * crossings); here rather than in every level's stack frame */
     scene_material_t look[3];
-    /* The frame's light buffer (render/lightbuf.h), set up by whoever owns
+    /* The frame's light buffer (render/lightbuf.h), built by whoever owns
      * the context, or NULL: shadow rays walk the whole tree */
-    struct render_lightbuf *light_buffer;
+    const struct render_lightbuf *light_buffer;
 } render_ctx_t;
 
 typedef enum {

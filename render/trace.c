@@ -723,7 +723,7 @@ static rgb_t trace_shadow(render_ctx_t *ctx, uint32_t light, vec3_t origin, vec3
     if (!ctx->options.shadows)
         return pass;
     ctx->stats.shadow++;
-    render_lightbuf_t *lb = ctx->light_buffer;
+    const render_lightbuf_t *lb = ctx->light_buffer;
     uint32_t mask = 0;
     if (lb && ctx->options.use_bounds && ctx->options.use_hierarchy) {
         mask = render_lightbuf_mask(lb, light, origin, dir);

@@ -130,7 +130,7 @@ static void nc_light_buffer(struct nc_job *job, const render_frame_t *f)
     size_t bytes = render_lightbuf_bytes(f);
     if (bytes + 16 > kmem_free())
         return;
-    job->ctx.light_buffer = render_lightbuf_init(f, kmem_alloc(bytes, "light buffer"), bytes);
+    job->ctx.light_buffer = render_lightbuf_build(f, kmem_alloc(bytes, "light buffer"), bytes);
 }
 
 /* Opens the broadcast frame and sets aside the working set; 0, or -1 with

@@ -179,7 +179,7 @@ static void *ref_light_buffer(render_ctx_t *ctx, const render_frame_t *f)
 {
     size_t bytes = render_lightbuf_bytes(f);
     void *mem = malloc(bytes);
-    ctx->light_buffer = render_lightbuf_init(f, mem, bytes);
+    ctx->light_buffer = render_lightbuf_build(f, mem, bytes);
     return mem;
 }
 

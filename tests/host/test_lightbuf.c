@@ -11,7 +11,7 @@
 /* The frame of scene NAME at half its resolution, with its light buffer
  * in *mem (freed by the caller); NULL on failure. */
 static const render_frame_t *lb_scene(const char *name, void **block, void **mem,
-                                      render_lightbuf_t **lb)
+                                      const render_lightbuf_t **lb)
 {
     size_t size;
     render_blob_t *blob = tb_blob_div(name, 0, 2, &size);
@@ -22,7 +22,7 @@ static const render_frame_t *lb_scene(const char *name, void **block, void **mem
         return NULL;
     size_t bytes = render_lightbuf_bytes(blob->frame);
     *mem = malloc(bytes);
-    *lb = render_lightbuf_init(blob->frame, *mem, bytes);
+    *lb = render_lightbuf_build(blob->frame, *mem, bytes);
     return blob->frame;
 }
 
@@ -45,7 +45,7 @@ static void test_items_hold_every_prim_once(void)
 {
     for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
         void *block, *mem;
-        render_lightbuf_t *lb;
+        const render_lightbuf_t *lb;
         const render_frame_t *f = lb_scene(tb_scenes[s], &block, &mem, &lb);
         CHECK(f && lb);
         if (!f || !lb)
@@ -61,8 +61,8 @@ static void test_items_hold_every_prim_once(void)
         CHECK(once);
         free(seen);
         /* too little memory: no buffer, nothing written past it */
-        CHECK(render_lightbuf_init(f, mem, render_lightbuf_bytes(f) - 1) == NULL);
-        CHECK(render_lightbuf_init(f, NULL, render_lightbuf_bytes(f)) == NULL);
+        CHECK(render_lightbuf_build(f, mem, render_lightbuf_bytes(f) - 1) == NULL);
+        CHECK(render_lightbuf_build(f, NULL, render_lightbuf_bytes(f)) == NULL);
         free(mem);
         free(block);
     }
@@ -116,7 +116,7 @@ static void test_cells_hold_what_rays_meet(void)
     uint64_t rays = 0, left_out = 0, wrong = 0;
     for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
         void *block, *mem;
-        render_lightbuf_t *lb;
+        const render_lightbuf_t *lb;
         const render_frame_t *f = lb_scene(tb_scenes[s], &block, &mem, &lb);
         if (!f || !lb) {
             CHECK(f && lb);
@@ -165,7 +165,7 @@ static void test_same_image(void)
 {
     for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
         void *block, *mem;
-        render_lightbuf_t *lb;
+        const render_lightbuf_t *lb;
         const render_frame_t *f = lb_scene(tb_scenes[s], &block, &mem, &lb);
         if (!f || !lb) {
             CHECK(f && lb);

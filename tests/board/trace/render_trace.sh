@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # links1 render --trace on the board, then links1 replay of the trace:
 #  - the traced image is the host build's (tracing changes no pixel);
-#  - the marks account for the NCs' work: each NC's areas in the trace add
-#    up to at least 98% of what the plugin counted on that NC for the frame;
-#  - replayed with static balancing on the board's NC count, the per-NC
-#    instructions are the board's, exactly (as a set: which NC drew which
-#    static area depends on timing on the board, and in the replay);
+#  - the marks account for the NCs' work: each NC's set-up and areas in the
+#    trace add up to at least 98% of what the plugin counted on that NC for
+#    the frame;
+#  - replayed with static balancing on the board's NC count, each NC's
+#    areas cost what the trace counted, exactly (as a set: which NC drew
+#    which static area depends on timing on the board, and in the replay);
 #  - replayed with dynamic and decreasing balancing on other NC counts, the
 #    handout is legal (links1 replay --check);
 #  - the RC's instructions to serve each request are in the trace: every
@@ -27,7 +28,9 @@ if render_board render_trace "$out" scenes/demo.scn -o "$out" --ncs 4 --size $SI
     log="$RENDER_TMP/render_trace.log"
     # Per NC: the plugin's count (cores 2..5) and the trace's area totals.
     board=$(awk '$1 == "core" && $3 == "NC" { print $4 }' "$log")
-    traced=$(awk '$1 == "area" { s[$7] += $15 } END { for (n = 0; n < 4; n++) print s[n] + 0 }' "$tr")
+    areas=$(awk '$1 == "area" { s[$7] += $15 } END { for (n = 0; n < 4; n++) print s[n] + 0 }' "$tr")
+    traced=$(awk '$1 == "nc" && $3 == "setup" { s[$2] += $4 }
+                  $1 == "area" { s[$7] += $15 } END { for (n = 0; n < 4; n++) print s[n] + 0 }' "$tr")
     if [ "$(echo "$board" | wc -l)" = 4 ] &&
         paste <(echo "$board") <(echo "$traced") |
         awk '{ if ($2 <= 0 || $2 > $1 || $2 < 0.98 * $1) bad = 1 } END { exit bad }'; then
@@ -49,10 +52,10 @@ if render_board render_trace "$out" scenes/demo.scn -o "$out" --ncs 4 --size $SI
     rep="$RENDER_TMP/replay.txt"
     if "$LINKS1" replay "$tr" --ncs 4 --balance static --per-nc --check >"$rep" 2>&1 &&
         [ "$(awk '$1 == "nc" && $3 == "insns" { print $4 }' "$rep" | sort -n)" = \
-          "$(echo "$traced" | sort -n)" ] && grep -q 'exact 4/4' "$rep"; then
+          "$(echo "$areas" | sort -n)" ] && grep -q 'exact 4/4' "$rep"; then
         echo "PASS render_trace_static_replay_exact"
     else
-        echo "FAIL render_trace_static_replay_exact: board per NC '$(echo $traced)'; replay: $(tr '\n' ' ' <"$rep")"
+        echo "FAIL render_trace_static_replay_exact: board's areas per NC '$(echo $areas)'; replay: $(tr '\n' ' ' <"$rep")"
     fi
     legal=1
     for bal in dynamic decreasing; do
