@@ -100,11 +100,13 @@ dm_tenth render_world_dm_moved "$ball5" "a ball moves"
 
 # the RC's instructions for frames 1 and 2 of a camera animation: those of
 # frames 0..2 less those of frame 0 alone
-rc_insns() { # FRAMES MODE-ARGS...
-    local fr=$1
+rc_insns() { # FRAMES MODE-ARGS...; the render's output kept in rc-*.log
+    local fr=$1 log
     shift
+    log="$RENDER_TMP/rc-${fr/:/-}${1:+-world}.log"
     "$LINKS1" render "$orbit7" --frames "$fr" --ncs 2 --size 32x24 --count-insns \
-        -o "$RENDER_TMP/rc.ppm" "$@" 2>&1 | awk '$1 == "core" && $3 == "RC" { print $4 }'
+        -o "$RENDER_TMP/rc.ppm" "$@" >"$log" 2>&1
+    awk '$1 == "core" && $3 == "RC" { print $4 }' "$log"
 }
 orbit7=$RENDER_TMP/orbit7.scn
 bash host-tools/gen/make_spin.sh 7 3 "$orbit7" camera
@@ -119,5 +121,5 @@ world_rc=$(rc_later --world-space)
 if [ -n "$eye_rc" ] && [ -n "$world_rc" ] && [ "$eye_rc" -gt 0 ] && [ $((world_rc * 2)) -lt "$eye_rc" ]; then
     echo "PASS render_world_rc_header (frames 1 and 2: $world_rc against $eye_rc instructions)"
 else
-    echo "FAIL render_world_rc_header: the RC's frames 1 and 2 took ${world_rc:-none} instructions in world space against ${eye_rc:-none} in eye space (want under half)"
+    echo "FAIL render_world_rc_header: the RC's frames 1 and 2 took ${world_rc:-none} instructions in world space against ${eye_rc:-none} in eye space (want under half); the renders' last lines: $(tail -q -n 1 "$RENDER_TMP"/rc-*.log | tr '\n' ' ')"
 fi
