@@ -49,6 +49,13 @@ static int lb_box_sat(const aabb_t *b)
     return vec3_is_sat(b->lo) || vec3_is_sat(b->hi);
 }
 
+static void lb_box_points(const aabb_t *b, vec3_t c[8])
+{
+    for (int k = 0; k < 8; k++)
+        c[k] = vec3_make(k & 1 ? b->hi.x : b->lo.x, k & 2 ? b->hi.y : b->lo.y,
+                         k & 4 ? b->hi.z : b->lo.z);
+}
+
 /* Eight points whose hull holds an item: a box's or an ellipsoid's local
  * cube mapped back (tighter than its box where it is turned), or its box's
  * corners.  The mapped cube is kept only while its own box reaches that
@@ -57,9 +64,7 @@ static int lb_box_sat(const aabb_t *b)
 static void lb_item_corners(const render_frame_t *f, uint32_t item, vec3_t c[8])
 {
     const aabb_t *b = lb_item_box(f, item);
-    for (int k = 0; k < 8; k++)
-        c[k] = vec3_make(k & 1 ? b->hi.x : b->lo.x, k & 2 ? b->hi.y : b->lo.y,
-                         k & 4 ? b->hi.z : b->lo.z);
+    lb_box_points(b, c);
     const render_prim_t *p = item & RENDER_LB_CLUSTER ? NULL : &f->prims[item];
     xform_t back;
     if (!p || p->imprecise || (p->kind != SCENE_PRIM_BOX && p->kind != SCENE_PRIM_ELLIPSOID) ||
@@ -84,13 +89,6 @@ static void lb_item_corners(const render_frame_t *f, uint32_t item, vec3_t c[8])
     }
     for (int k = 0; k < 8; k++)
         c[k] = m[k];
-}
-
-static void lb_box_points(const aabb_t *b, vec3_t c[8])
-{
-    for (int k = 0; k < 8; k++)
-        c[k] = vec3_make(k & 1 ? b->hi.x : b->lo.x, k & 2 ? b->hi.y : b->lo.y,
-                         k & 4 ? b->hi.z : b->lo.z);
 }
 
 /* The cell of coordinate x in a grid from x0 at s cells a unit, clamped. */
@@ -357,9 +355,9 @@ const render_lightbuf_t *render_lightbuf_build(const render_frame_t *f, void *me
     render_lightbuf_t *lb = mem;
     lb->item_count = lb_items(f, lb->item);
     lb->light_count = f->light_count;
-    lb->offset = lb_offset(f, &f->clusters[0].bounds);
+    num_t offset = lb_offset(f, &f->clusters[0].bounds);
     for (uint32_t i = 0; i < lb->light_count; i++)
-        lb_build_light(f, lb, i, lb->offset, &lb->light[i]);
+        lb_build_light(f, lb, i, offset, &lb->light[i]);
     return lb;
 }
 

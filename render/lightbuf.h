@@ -64,8 +64,6 @@ typedef struct {
 } render_lb_light_t;
 
 typedef struct render_lightbuf {
-    num_t offset;                   /* how far a shadow ray may pass beside
-                                       its light (lightbuf.c's lb_offset) */
     uint32_t item_count;
     uint32_t item[RENDER_LB_ITEMS]; /* a primitive's index, or a cluster's
                                        with RENDER_LB_CLUSTER */

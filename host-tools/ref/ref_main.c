@@ -171,8 +171,6 @@ static int ref_wide_frame(const char *in, struct ref_wide *w, long frame, render
     return 0;
 }
 
-/* Every row of the image through render_span, or with supersample > 0
- * render_pixel_supersampled. */
 /* The frame's light buffer (render/lightbuf.h) for ctx, in memory the
  * caller frees; without memory shadow rays walk the whole tree. */
 static void *ref_light_buffer(render_ctx_t *ctx, const render_frame_t *f)
@@ -183,6 +181,8 @@ static void *ref_light_buffer(render_ctx_t *ctx, const render_frame_t *f)
     return mem;
 }
 
+/* Every row of the image through render_span, or with supersample > 0
+ * render_pixel_supersampled. */
 static void ref_trace_rows(render_ctx_t *ctx, struct image *img, rgb8_t *row, int supersample)
 {
     for (uint32_t y = 0; y < (uint32_t)img->height; y++) {
