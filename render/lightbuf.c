@@ -104,15 +104,16 @@ static inline int lb_grid_cell(num_t x, num_t x0, num_t s)
 }
 
 /* Marks the cells of g that the rectangle r (u0, u1, v0, v1) covers, one
- * more on each side. */
+ * more on each side: its columns and its rows. */
 static void lb_mark(const render_lb_grid_t *g, uint32_t (*cells)[LB_N], const num_t r[4],
                     uint32_t bit)
 {
     int u0 = lb_grid_cell(r[0], g->u0, g->su) - 1, u1 = lb_grid_cell(r[1], g->u0, g->su) + 1;
     int v0 = lb_grid_cell(r[2], g->v0, g->sv) - 1, v1 = lb_grid_cell(r[3], g->v0, g->sv) + 1;
     for (int u = u0 < 0 ? 0 : u0; u <= u1 && u < LB_N; u++)
-        for (int v = v0 < 0 ? 0 : v0; v <= v1 && v < LB_N; v++)
-            cells[u][v] |= bit;
+        cells[0][u] |= bit;
+    for (int v = v0 < 0 ? 0 : v0; v <= v1 && v < LB_N; v++)
+        cells[1][v] |= bit;
 }
 
 /* The range [*lo, *hi] of a / m for a in [a0, a1] and m in [m0, m1]
@@ -316,8 +317,8 @@ static num_t lb_near(const render_lb_light_t *l, num_t offset)
     return num_mul(num_mul_int(offset, RENDER_LB_NEAR), s);
 }
 
-static void lb_build_light(const render_frame_t *f, const render_lightbuf_t *lb, uint32_t i,
-                           num_t offset, render_lb_light_t *l)
+/* Light i's kind and grid, its cells empty. */
+static void lb_setup_light(const render_frame_t *f, uint32_t i, render_lb_light_t *l)
 {
     const render_light_t *src = &f->lights[i];
     const aabb_t *root = &f->clusters[0].bounds;
@@ -329,20 +330,30 @@ static void lb_build_light(const render_frame_t *f, const render_lightbuf_t *lb,
         l->kind = RENDER_LB_PLANE;
     else if (src->kind != SCENE_LIGHT_PARALLEL && !vec3_is_sat(l->at) && lb_cube_setup(l, root))
         l->kind = RENDER_LB_CUBE;
-    num_t near = lb_near(l, offset);
-    for (uint32_t k = 0; k < lb->item_count; k++) {
-        uint32_t bit = UINT32_C(1) << k;
-        const aabb_t *b = lb_item_box(f, lb->item[k]);
-        if (num_gt(b->lo.x, b->hi.x) || num_gt(b->lo.y, b->hi.y) || num_gt(b->lo.z, b->hi.z))
-            continue; /* empty: no ray meets it */
-        vec3_t c[8];
-        if (l->kind == RENDER_LB_ALL || lb_box_sat(b) || num_is_sat(near)) {
+}
+
+/* Item k (bit) in the cells of every light; near[i]: light i's distance
+ * within which it goes in every cell. */
+static void lb_place_item(const render_frame_t *f, render_lightbuf_t *lb, uint32_t k,
+                          const num_t *near)
+{
+    uint32_t bit = UINT32_C(1) << k;
+    const aabb_t *b = lb_item_box(f, lb->item[k]);
+    if (num_gt(b->lo.x, b->hi.x) || num_gt(b->lo.y, b->hi.y) || num_gt(b->lo.z, b->hi.z))
+        return; /* empty: no ray meets it */
+    vec3_t c[8];
+    int corners = 0; /* c worked out, once for every light */
+    for (uint32_t i = 0; i < lb->light_count; i++) {
+        render_lb_light_t *l = &lb->light[i];
+        if (l->kind == RENDER_LB_ALL || lb_box_sat(b) || num_is_sat(near[i])) {
             l->always |= bit;
             continue;
         }
-        lb_item_corners(f, lb->item[k], c);
+        if (!corners)
+            lb_item_corners(f, lb->item[k], c);
+        corners = 1;
         if (l->kind == RENDER_LB_CUBE)
-            lb_mark_cube(l, b, c, near, bit);
+            lb_mark_cube(l, b, c, near[i], bit);
         else
             lb_mark_plane(l, c, bit);
     }
@@ -356,8 +367,13 @@ const render_lightbuf_t *render_lightbuf_build(const render_frame_t *f, void *me
     lb->item_count = lb_items(f, lb->item);
     lb->light_count = f->light_count;
     num_t offset = lb_offset(f, &f->clusters[0].bounds);
-    for (uint32_t i = 0; i < lb->light_count; i++)
-        lb_build_light(f, lb, i, offset, &lb->light[i]);
+    num_t near[RENDER_MAX_LIGHTS];
+    for (uint32_t i = 0; i < lb->light_count; i++) {
+        lb_setup_light(f, i, &lb->light[i]);
+        near[i] = lb_near(&lb->light[i], offset);
+    }
+    for (uint32_t k = 0; k < lb->item_count; k++)
+        lb_place_item(f, lb, k, near);
     return lb;
 }
 
@@ -385,7 +401,7 @@ static uint32_t lb_cube_mask(const render_lb_light_t *l, vec3_t d)
     num_t inv = num_recip(dm);
     int u = lb_grid_cell(num_mul(du, inv), g->u0, g->su);
     int v = lb_grid_cell(num_mul(dv, inv), g->v0, g->sv);
-    return l->always | l->mask[face][u][v];
+    return l->always | (l->mask[face][0][u] & l->mask[face][1][v]);
 }
 
 uint32_t render_lightbuf_mask(const render_lightbuf_t *lb, uint32_t light, vec3_t origin,
@@ -400,6 +416,8 @@ uint32_t render_lightbuf_mask(const render_lightbuf_t *lb, uint32_t light, vec3_
     num_t u, v;
     lb_project(l, origin, &u, &v);
     const render_lb_grid_t *g = &l->grid[0];
-    return (l->always | l->mask[0][lb_grid_cell(u, g->u0, g->su)][lb_grid_cell(v, g->v0, g->sv)]) &
+    const uint32_t(*cells)[LB_N] = l->mask[0];
+    return (l->always | (cells[0][lb_grid_cell(u, g->u0, g->su)] &
+                         cells[1][lb_grid_cell(v, g->v0, g->sv)])) &
            all;
 }

@@ -60,7 +60,11 @@ typedef struct {
      * across the root's box as it is seen there; RENDER_LB_PLANE: grid 0,
      * over the plane of the major axis, across the root's box's shadow */
     render_lb_grid_t grid[6];
-    uint32_t mask[6][RENDER_LB_CELLS][RENDER_LB_CELLS]; /* [grid][u][v] */
+    /* An item covers a rectangle of a grid's cells, so a cell's items are
+     * those of its column and its row: cell (u, v) lists
+     * mask[grid][0][u] & mask[grid][1][v], exactly the items whose
+     * rectangle holds it. */
+    uint32_t mask[6][2][RENDER_LB_CELLS]; /* [grid][0: u, 1: v][cell] */
 } render_lb_light_t;
 
 typedef struct render_lightbuf {
