@@ -1,7 +1,6 @@
-/* kcopy.h: memory copy a word at a time.  The board's C library copies
- * byte by byte (four instructions a byte); every line message goes through
- * a ring.  (Blocks that grow with the scene, the prepared frame the RC
- * forwards, go eight words a step: render/words.h.)
+/* kcopy.h: memory copy a word at a time, inline, for the few words of a
+ * line message on its way through a ring (larger copies: the firmware's
+ * memcpy, kernel/mem.c).
  * No hardware access: the host tests build it. */
 #ifndef LINKS1_KERNEL_KCOPY_H
 #define LINKS1_KERNEL_KCOPY_H

@@ -1,7 +1,7 @@
 /* render/arena.c: bump allocator (see arena.h). */
 #include "render/arena.h"
 
-#include "render/words.h"
+#include <string.h>
 
 void arena_init(arena_t *a, void *memory, size_t size)
 {
@@ -40,7 +40,7 @@ void *arena_alloc(arena_t *a, size_t size, size_t align)
 {
     void *p = arena_alloc_raw(a, size, align);
     if (p)
-        words_zero(p, size); /* a frame's arrays grow with the scene: not byte by byte */
+        memset(p, 0, size);
     return p;
 }
 

@@ -3,11 +3,11 @@
 #include "render/blob.h"
 
 #include <stdarg.h>
+#include <string.h>
 
 #include "proto/textfmt.h"
 #include "render/precision.h"
 #include "render/scene_load.h"
-#include "render/words.h"
 
 /* ------------------------------------------------------------ messages */
 
@@ -223,7 +223,7 @@ render_blob_status_t render_blob_copy(void *block, size_t size, const render_blo
                   "or the block is not aligned to RENDER_RELOCATE_ALIGN", src->bytes, size);
         return err->status;
     }
-    words_copy(block, src, src->bytes);
+    memcpy(block, src, src->bytes);
     return render_blob_relocate(block, size, out, err);
 }
 
@@ -253,7 +253,7 @@ render_blob_status_t render_blob_copy_frame(void *block, size_t size, const rend
         fat <= src->bytes - sizeof(render_frame_t) &&
         render_world_same(&dst->scene, dst->frame,
                           (const render_frame_t *)(const void *)((const uint8_t *)src + fat))) {
-        words_copy((uint8_t *)block + fat, (const uint8_t *)src + fat, sizeof(render_frame_t));
+        memcpy((uint8_t *)block + fat, (const uint8_t *)src + fat, sizeof(render_frame_t));
         st = render_relocate_frame_header(block, src->bytes, src->home, &frame, &bad);
         if (partial && st == RENDER_OK)
             *partial = 2;
@@ -263,7 +263,7 @@ render_blob_status_t render_blob_copy_frame(void *block, size_t size, const rend
          * lies between is padding) */
         size_t at = (src->scene_bytes + sizeof(uint32_t) - 1) & ~(sizeof(uint32_t) - 1);
         if (at < src->bytes)
-            words_copy((uint8_t *)block + at, (const uint8_t *)src + at, src->bytes - at);
+            memcpy((uint8_t *)block + at, (const uint8_t *)src + at, src->bytes - at);
         st = render_relocate_frame(block, src->bytes, src->home, &frame, &bad);
         if (partial && st == RENDER_OK)
             *partial = 1;

@@ -12,7 +12,7 @@
  *       render_prepare_again); render_blob_build() is both at once.  The
  *       IMSU swap hands the block to the RC at the same address.
  *   RC: render_blob_copy() into the broadcast block: blob->bytes bytes,
- *       eight words a step (render/words.h), then every pointer moved by
+ *       (memcpy: on the board kernel/mem.c's, eight words a step), then every pointer moved by
  *       the distance between the blocks (render_blob_relocate); for the
  *       next frames of the same scene render_blob_copy_frame() copies and
  *       relocates the frame part alone.
@@ -122,7 +122,7 @@ render_blob_status_t render_blob_load_summed(const uint8_t *compiled, size_t len
                                              render_blob_error_t *err);
 
 /* The RC's forwarding: the blob at src (src->bytes bytes, at most size)
- * copied to block, eight words a step, and relocated there.  Leaves the
+ * copied to block and relocated there.  Leaves the
  * copy as render_blob_relocate leaves it on failure. */
 render_blob_status_t render_blob_copy(void *block, size_t size, const render_blob_t *src,
                                       render_blob_t **out, render_blob_error_t *err);

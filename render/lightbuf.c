@@ -1,8 +1,9 @@
 /* render/lightbuf.c: the light buffer (render/lightbuf.h). */
 #include "render/lightbuf.h"
 
+#include <string.h>
+
 #include "render/vec3.h"
-#include "render/words.h"
 
 #define LB_N RENDER_LB_CELLS
 
@@ -323,7 +324,7 @@ static void lb_setup_light(const render_frame_t *f, uint32_t i, render_lb_light_
     const render_light_t *src = &f->lights[i];
     const aabb_t *root = &f->clusters[0].bounds;
     l->always = 0;
-    words_zero(l->mask, sizeof l->mask);
+    memset(l->mask, 0, sizeof l->mask);
     l->at = src->position;
     l->kind = RENDER_LB_ALL;
     if (src->kind == SCENE_LIGHT_PARALLEL && lb_plane_setup(l, src, root))

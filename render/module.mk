@@ -1,11 +1,11 @@
 # render/: the ray tracer, built for every arithmetic; it knows nothing of
 # cores, drivers or messages.
-SHARED_SRCS += render/arena.c render/words.c render/xform.c render/prim.c render/prim_cone.c render/prepare.c \
+SHARED_SRCS += render/arena.c render/xform.c render/prim.c render/prim_cone.c render/prepare.c \
 	render/shade.c render/maps.c render/trace.c render/precision.c render/haze.c \
 	render/lightbuf.c
 # The arena and the word loops know no num_t: one host build for every
 # arithmetic.
-ARITH_FREE_SRCS += render/arena.c render/words.c
+ARITH_FREE_SRCS += render/arena.c
 
 # Renderer tests, once per arithmetic.
 test_prim_double_SRCS := tests/host/test_prim.c

@@ -19,7 +19,6 @@
 #include "render/prim_cone.h"
 #include "render/prim.h"
 #include "render/vec3.h"
-#include "render/words.h"
 
 #define PREP_PIXEL_LIMIT num_from_int(2 * RENDER_MAX_WIDTH) /* beyond any screen */
 
@@ -1025,7 +1024,7 @@ static __attribute__((noinline)) render_status_t prep_world_moved(const scene_t 
         const scene_group_t *g = &ix->groups[c];
         for (uint32_t k = 0; k < g->prim_count; k++) {
             uint32_t i = ix->prim_list[g->first_prim + k];
-            words_zero(&f->prims[i], sizeof f->prims[i]);
+            memset(&f->prims[i], 0, sizeof f->prims[i]);
             prep_one_prim(s, i, f, ix, to_eye, from_eye, pad, normals);
         }
         prep_own_bounds(f, ix, c);
@@ -1218,8 +1217,8 @@ static render_status_t prep_whole(prep_run_t *r, num_t pad)
 {
     const scene_t *s = r->s;
     render_frame_t *f = r->f;
-    words_zero(f->clusters, sizeof *f->clusters * s->cluster_count);
-    words_zero(f->prims, sizeof *f->prims * (s->prim_count ? s->prim_count : 1));
+    memset(f->clusters, 0, sizeof *f->clusters * s->cluster_count);
+    memset(f->prims, 0, sizeof *f->prims * (s->prim_count ? s->prim_count : 1));
     f->detail_prim = RENDER_NO_PRIM;
     for (uint32_t i = 0; i < s->prim_count; i++)
         prep_one_prim(s, i, f, &r->ix, r->to_eye, r->from_eye, pad, r->normals);

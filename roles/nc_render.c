@@ -124,7 +124,8 @@ static int nc_setup_wide(struct nc_job *job, const uint8_t *block, const render_
 
 /* The frame's light buffer (render/lightbuf.h) in private memory, where
  * it fits beside the working set; without it shadow rays walk the whole
- * tree: the same image, more instructions. */
+ * tree: the same image, more instructions.  Built once the first request
+ * is out: the RC answers it meanwhile. */
 static void nc_light_buffer(struct nc_job *job, const render_frame_t *f)
 {
     size_t bytes = render_lightbuf_bytes(f);
@@ -180,7 +181,6 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, uint8_t
         imsu_bcast_read_end(&imsu_rc_ncs, me);
         return -1;
     }
-    nc_light_buffer(job, blob->frame);
     job->opt.y_clip = !(flags & LINK_RENDER_NO_YCLIP);
     job->opt.x_clip = !(flags & LINK_RENDER_NO_XCLIP);
     job->opt.lists = clip == LINK_CLIP_LISTS ||
@@ -284,6 +284,13 @@ void nc_render_frame(struct line_msg *m)
     job->per_pixel = UINT64_MAX; /* no rate yet: the first area asks after a pixel */
     job->rtt = 0;
     nc_request(job, m, ok ? 0 : LINK_ERR_CHECK, ok ? NULL : why);
+    /* Traced: the set-up after the first request, a span of its own. */
+    if (job->trace)
+        insn_mark_trace_span_begin();
+    if (ok)
+        nc_light_buffer(job, job->ctx.frame);
+    if (job->trace)
+        insn_mark_trace_span_end();
     int have = 0; /* m holds a message not yet handled */
     for (;;) {
         if (!have) {

@@ -23,6 +23,7 @@ void replay_free(struct replay_result *r)
     free(r->areas);
     free(r->nc_insns);
     free(r->nc_setup_end);
+    free(r->nc_ready);
     memset(r, 0, sizeof *r);
 }
 
@@ -32,7 +33,8 @@ struct replay_pricer {
     uint32_t *owner;  /* [w*h]: the traced area holding each pixel */
     uint64_t *prefix; /* [(w+1)*(h+1)]: 2-D prefix sums of the pixel costs */
     uint64_t rc_mean; /* the RC serving one request that hands out an area */
-    uint64_t setup_mean; /* an NC's set-up of the frame */
+    uint64_t setup_mean; /* an NC's set-up of the frame up to its first request */
+    uint64_t after_mean; /* its set-up after that request */
 };
 
 static int replay_pricer_init(struct replay_pricer *p, const struct trace *t)
@@ -53,10 +55,13 @@ static int replay_pricer_init(struct replay_pricer *p, const struct trace *t)
                 p->owner[(size_t)y * t->width + x] = i;
     }
     p->rc_mean = rc / t->nareas;
-    uint64_t s = 0;
-    for (uint32_t i = 0; i < t->ncs; i++)
+    uint64_t s = 0, after = 0;
+    for (uint32_t i = 0; i < t->ncs; i++) {
         s += t->nc_setup[i];
+        after += t->nc_after_ask[i];
+    }
     p->setup_mean = s / t->ncs;
+    p->after_mean = after / t->ncs;
     size_t W = t->width + 1;
     for (uint32_t y = 0; y < t->height; y++)
         for (uint32_t x = 0; x < t->width; x++)
@@ -196,8 +201,9 @@ static int replay_state_init(struct replay_state *s, char *err, size_t cap)
     r->areas = calloc(s->total, sizeof *r->areas);
     r->nc_insns = calloc(c->ncs, sizeof *r->nc_insns);
     r->nc_setup_end = calloc(c->ncs, sizeof *r->nc_setup_end);
+    r->nc_ready = calloc(c->ncs, sizeof *r->nc_ready);
     if (replay_pricer_init(&s->p, t) != 0 || !s->pending || !s->sent || !s->busy_until ||
-        !s->computing || !r->areas || !r->nc_insns || !r->nc_setup_end ||
+        !s->computing || !r->areas || !r->nc_insns || !r->nc_setup_end || !r->nc_ready ||
         (c->as_recorded && replay_source_recorded(&s->src, t) != 0))
         return replay_fail(err, cap, "out of memory");
     return 0;
@@ -232,16 +238,18 @@ static void replay_compute(struct replay_state *s, uint32_t nc, const struct are
     s->pending[nc] = s->sent[nc] + replay_line(s->c, REPLAY_REQUEST_BYTES);
 }
 
-/* Each NC set up and its first request on the line. */
+/* Each NC's first request on the line once it is set up that far; the
+ * rest of its set-up after. */
 static void replay_setup(struct replay_state *s)
 {
     const struct replay_cfg *c = s->c;
     s->t0 = (double)((c->pipelined ? 0 : s->t->dm_prepare) + s->t->rc_broadcast) * s->us_per;
     for (uint32_t n = 0; n < c->ncs; n++) {
         uint64_t setup = c->as_recorded ? s->t->nc_setup[n] : s->p.setup_mean;
-        s->r->nc_setup_end[n] = s->busy_until[n] = s->t0 + (double)setup * s->us_per;
-        s->computing[n] = (double)setup * s->us_per;
-        s->sent[n] = s->busy_until[n];
+        uint64_t after = c->as_recorded ? s->t->nc_after_ask[n] : s->p.after_mean;
+        s->r->nc_setup_end[n] = s->sent[n] = s->t0 + (double)setup * s->us_per;
+        s->r->nc_ready[n] = s->busy_until[n] = s->sent[n] + (double)after * s->us_per;
+        s->computing[n] = (double)(setup + after) * s->us_per;
         s->pending[n] = s->sent[n] + replay_line(c, REPLAY_REQUEST_BYTES);
     }
     s->rc_free = s->t0;
@@ -271,6 +279,7 @@ static int replay_first_in_broadcast(struct replay_state *s, char *err, size_t c
         s->rc_busy += shift;
     for (uint32_t n = 0; rc == 0 && n < ncs; n++) {
         s->r->nc_setup_end[n] += shift;
+        s->r->nc_ready[n] += shift;
         s->busy_until[n] += shift;
         if (!have[n])
             s->pending[n] = INFINITY;
@@ -376,8 +385,9 @@ int replay_check_legal(const struct trace *t, const struct replay_cfg *c,
     uint8_t *seen = calloc(n, 1);
     double *last_end = calloc(c->ncs, sizeof *last_end);
     double *last_start = calloc(c->ncs, sizeof *last_start);
+    uint8_t *drawn = calloc(c->ncs, 1); /* the NC has had an area */
     int rc = 0;
-    if (!seen || !last_end || !last_start) {
+    if (!seen || !last_end || !last_start || !drawn) {
         rc = replay_fail(err, cap, "out of memory");
         goto out;
     }
@@ -393,8 +403,10 @@ int replay_check_legal(const struct trace *t, const struct replay_cfg *c,
                          r->nareas, areas_count(&sched));
         goto out;
     }
-    for (uint32_t n2 = 0; n2 < c->ncs; n2++)
-        last_end[n2] = last_start[n2] = r->nc_setup_end[n2];
+    for (uint32_t n2 = 0; n2 < c->ncs; n2++) {
+        last_start[n2] = r->nc_setup_end[n2];
+        last_end[n2] = r->nc_ready[n2];
+    }
     /* Requests the RC served: each starts after the one before it ended. */
     double rc_free = 0;
     for (uint32_t i = 0; i < r->nareas && rc == 0; i++) {
@@ -411,7 +423,8 @@ int replay_check_legal(const struct trace *t, const struct replay_cfg *c,
         }
         double line_req = a->in_broadcast ? 0 : replay_line(c, REPLAY_REQUEST_BYTES);
         double line_ans = a->in_broadcast ? 0 : replay_line(c, REPLAY_ANSWER_BYTES);
-        double asked_after = c->prefetch ? last_start[a->nc] : last_end[a->nc];
+        /* an NC's first request leaves once it is set up that far */
+        double asked_after = c->prefetch || !drawn[a->nc] ? last_start[a->nc] : last_end[a->nc];
         if (a->in_broadcast && (!c->first_in_broadcast || i >= c->ncs || a->nc != i))
             rc = replay_fail(err, cap, "area %" PRIu32 " came with the broadcast, but it is "
                              "not NC %" PRIu32 "'s first", i, a->nc);
@@ -435,6 +448,7 @@ int replay_check_legal(const struct trace *t, const struct replay_cfg *c,
         if (rc)
             break;
         rc_free = a->serve_end;
+        drawn[a->nc] = 1;
         last_end[a->nc] = a->end;
         last_start[a->nc] = a->start;
         for (uint32_t y = a->y; y < a->y + a->h && rc == 0; y++)
@@ -453,6 +467,7 @@ out:
     free(seen);
     free(last_end);
     free(last_start);
+    free(drawn);
     return rc;
 }
 

@@ -69,6 +69,8 @@ struct replay_result {
     struct replay_area *areas; /* in handout order */
     uint64_t *nc_insns;    /* [ncs]: set-up + its areas */
     double *nc_setup_end;  /* [ncs]: when each NC first asked */
+    double *nc_ready;      /* [ncs]: when it finished setting up (it may have
+                              asked before: trace's nc_after_ask) */
 };
 
 /* 0, or -1 with err filled (bad configuration). */

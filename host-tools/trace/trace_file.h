@@ -6,7 +6,8 @@
  * A trace holds what each unit computer spent, in guest instructions:
  *   - the DM's preprocessing of the frame;
  *   - the RC's broadcast, and its serving of each area request;
- *   - each NC's set-up of the frame;
+ *   - each NC's set-up of the frame, before its first request and after
+ *     it (the light buffer, built while the request is on its way);
  *   - per area: its rectangle, the NC that drew it and in which order, its
  *     set-up (Y clipping), its push into the data collector, its total;
  *   - per pixel: what tracing that pixel took inside its area (X clipping
@@ -20,7 +21,7 @@
 #include <stdio.h>
 
 #define TRACE_MAGIC "links1-trace"
-#define TRACE_VERSION 2
+#define TRACE_VERSION 3
 #define TRACE_ERR_MAX 256
 
 struct trace_area {
@@ -45,7 +46,8 @@ struct trace {
     uint64_t rc_broadcast; /* RC: the blob into the broadcast block */
     uint32_t broadcast_bytes;
     uint64_t rc_other;  /* RC: serving messages that handed out no area */
-    uint64_t *nc_setup; /* [ncs]: each NC's set-up of the frame */
+    uint64_t *nc_setup; /* [ncs]: each NC's set-up up to its first request */
+    uint64_t *nc_after_ask; /* [ncs]: its set-up after that request went out */
     uint32_t nareas;
     struct trace_area *areas; /* in handout order */
     uint32_t *pixel;    /* [width * height]: each pixel's instructions */
