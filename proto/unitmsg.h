@@ -41,7 +41,9 @@ enum unit_msg {
                               * (GIGS_RESULT_SIZE); else text naming the problem */
     MSG_NC_START = 21,       /* RC->NC: the frame is in the broadcast block:
                               * u8 flags, u32 pixels of the largest area, u8
-                              * clipping (enum link_clip) (MSG_NC_START_SIZE) */
+                              * clipping (enum link_clip) (MSG_NC_START_SIZE);
+                              * then, while areas are left, the NC's first
+                              * area as an MSG_NC_AREA's payload */
     MSG_NC_AREA = 22,        /* RC->NC: u16 x, y, w, h: render this area
                               * (MSG_NC_AREA_SIZE); a planned failure adds u8
                               * kind, u8 0, u16 row (MSG_NC_AREA_INJECT_SIZE) */

@@ -49,13 +49,15 @@ struct nc_job {
     int asked;          /* 1: a request is out, not answered yet */
     uint32_t finished;  /* areas finished in this frame */
     uint64_t sent;      /* ticks: when that request left */
-    uint64_t rtt;       /* ticks: a round trip to the RC, as last seen */
+    uint64_t rtt;       /* ticks: a round trip to the RC, as last seen
+                           (NC_RTT_UNKNOWN: none yet, ask at once) */
     uint64_t started;   /* ticks: when the current area's pixels began */
     uint64_t per_pixel; /* ticks per pixel of the last area (~0: none yet) */
     uint32_t done, area_pixels; /* the current area's pixels done, and all */
     struct line_msg *m; /* the message buffer, free while an area renders */
 };
 static struct nc_job nc_jobs[UNITS_MAX_CORES];
+#define NC_RTT_UNKNOWN UINT64_MAX
 UNIT_SHARED volatile uint32_t gigs_nc_progress[UNITS_MAX_CORES];
 
 static void nc_send(struct line_msg *m)
@@ -124,8 +126,7 @@ static int nc_setup_wide(struct nc_job *job, const uint8_t *block, const render_
 
 /* The frame's light buffer (render/lightbuf.h) in private memory, where
  * it fits beside the working set; without it shadow rays walk the whole
- * tree: the same image, more instructions.  Built once the first request
- * is out: the RC answers it meanwhile. */
+ * tree: the same image, more instructions. */
 static void nc_light_buffer(struct nc_job *job, const render_frame_t *f)
 {
     size_t bytes = render_lightbuf_bytes(f);
@@ -181,6 +182,7 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, uint8_t
         imsu_bcast_read_end(&imsu_rc_ncs, me);
         return -1;
     }
+    nc_light_buffer(job, blob->frame);
     job->opt.y_clip = !(flags & LINK_RENDER_NO_YCLIP);
     job->opt.x_clip = !(flags & LINK_RENDER_NO_XCLIP);
     job->opt.lists = clip == LINK_CLIP_LISTS ||
@@ -193,7 +195,8 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, uint8_t
 
 /* After the area's set-up and after each pixel: the trace mark, and the
  * request for the next area once the pixels left would take no longer than
- * a round trip.  Integer compares: left * elapsed <= rtt * done. */
+ * a round trip (at once while no round trip has been seen: the first area
+ * came with MSG_NC_START).  Integer compares: left * elapsed <= rtt * done. */
 static void nc_pixel(void *arg)
 {
     struct nc_job *job = arg;
@@ -203,8 +206,9 @@ static void nc_pixel(void *arg)
         return;
     uint64_t now = ktime_now();
     uint32_t left = job->area_pixels - job->done;
-    int soon = job->done ? (uint64_t)left * (now - job->started) <= job->rtt * job->done
-                         : job->per_pixel <= job->rtt / (left ? left : 1u);
+    int soon = job->rtt == NC_RTT_UNKNOWN ||
+               (job->done ? (uint64_t)left * (now - job->started) <= job->rtt * job->done
+                          : job->per_pixel <= job->rtt / (left ? left : 1u));
     job->done++;
     if (soon)
         nc_request(job, job->m, (int32_t)job->finished, NULL);
@@ -260,6 +264,25 @@ static int nc_area(struct nc_job *job, struct line_msg *m, char *why, size_t cap
 
 _Static_assert(sizeof(rgb8_t) == 3, "the DC takes rows of packed r,g,b bytes");
 
+/* The frame's first area: the one MSG_NC_START m carries, turned into the
+ * MSG_NC_AREA it stands for (1: m holds it); else a request on the line
+ * (0), with why when the set-up failed. */
+static int nc_first_area(struct nc_job *job, struct line_msg *m, int ok, const char *why)
+{
+    job->finished = 0;
+    job->per_pixel = UINT64_MAX; /* no rate yet */
+    job->rtt = NC_RTT_UNKNOWN;
+    job->asked = 0;
+    if (ok && m->len >= MSG_NC_START_SIZE + MSG_NC_AREA_SIZE) {
+        m->len = (uint16_t)(m->len - MSG_NC_START_SIZE);
+        memmove(m->payload, m->payload + MSG_NC_START_SIZE, m->len);
+        m->type = MSG_NC_AREA;
+        return 1;
+    }
+    nc_request(job, m, ok ? 0 : LINK_ERR_CHECK, ok ? NULL : why);
+    return 0;
+}
+
 void nc_render_frame(struct line_msg *m)
 {
     uint32_t me = mycpu()->core;
@@ -280,18 +303,7 @@ void nc_render_frame(struct line_msg *m)
         insn_mark_trace_span_end();
     int reading = ok; /* inside the broadcast read */
     job->ahead = !(flags & LINK_RENDER_ASK_WHEN_DONE);
-    job->finished = 0;
-    job->per_pixel = UINT64_MAX; /* no rate yet: the first area asks after a pixel */
-    job->rtt = 0;
-    nc_request(job, m, ok ? 0 : LINK_ERR_CHECK, ok ? NULL : why);
-    /* Traced: the set-up after the first request, a span of its own. */
-    if (job->trace)
-        insn_mark_trace_span_begin();
-    if (ok)
-        nc_light_buffer(job, job->ctx.frame);
-    if (job->trace)
-        insn_mark_trace_span_end();
-    int have = 0; /* m holds a message not yet handled */
+    int have = nc_first_area(job, m, ok, why); /* m holds a message not yet handled */
     for (;;) {
         if (!have) {
             int r = line_recv(UNITS_RC_CORE, m, 0);

@@ -84,6 +84,68 @@ void rc_nc_begin(struct rc_run *run, const uint8_t *plan, uint32_t n)
     }
 }
 
+/* NC k takes area a: it holds it from now.  Writes the MSG_NC_AREA
+ * payload at p (with the fault plan's failure when this is the area it
+ * plans for); returns its length. */
+static uint16_t rc_nc_hand(struct rc_run *run, uint32_t k, const struct area *a, uint8_t *p)
+{
+    struct rc_nc *n = &run->nc[k];
+    uint16_t len = MSG_NC_AREA_SIZE;
+    wire_put_u16(p, (uint16_t)a->x);
+    wire_put_u16(p + 2, (uint16_t)a->y);
+    wire_put_u16(p + 4, (uint16_t)a->w);
+    wire_put_u16(p + 6, (uint16_t)a->h);
+    if (n->inject.kind && n->given == n->inject.area) {
+        len = MSG_NC_AREA_INJECT_SIZE;
+        wire_put_u8(p + 8, n->inject.kind);
+        wire_put_u8(p + 9, 0);
+        wire_put_u16(p + 10, (uint16_t)(n->inject.row * (a->h + 1) / 256));
+    }
+    n->given++;
+    if (n->nheld == 0)
+        n->since = ktime_now();
+    n->held[n->nheld++] = *a;
+    n->asking = 0;
+    rc_nc_set(run, k, RC_NC_BUSY);
+    return len;
+}
+
+/* Traced (docs/trace.md): after the span of serving NC k, the NC, whether
+ * it got an area, and the area's x and y. */
+static void rc_nc_trace_served(const struct rc_run *run, uint32_t k, int handed)
+{
+    insn_mark_trace_span_end();
+    insn_mark_trace_bits(k, 16);
+    const struct rc_nc *n = &run->nc[k];
+    const struct area *a = &n->held[n->nheld ? n->nheld - 1u : 0u]; /* the one given last */
+    insn_mark_trace_bits((uint32_t)handed, 1);
+    insn_mark_trace_bits(handed ? a->x : 0, 16);
+    insn_mark_trace_bits(handed ? a->y : 0, 16);
+}
+
+/* NC k's MSG_NC_START in m, with its first area while one is left: it
+ * sets up and starts on it with no request on the line.  Traced, the
+ * hand-out is a record as a request served. */
+static void rc_nc_start_one(struct rc_run *run, uint32_t k, struct line_msg *m, uint8_t flags,
+                            uint32_t largest, uint8_t clip)
+{
+    m->type = MSG_NC_START;
+    m->len = MSG_NC_START_SIZE;
+    wire_put_u8(m->payload, flags);
+    wire_put_u32(m->payload + 1, largest);
+    wire_put_u8(m->payload + 5, clip);
+    run->nc[k].since = ktime_now();
+    if (run->trace)
+        insn_mark_trace_span_begin();
+    struct area a;
+    int handed = run->status == LINK_OK && areas_next(&run->sched, &a);
+    if (handed)
+        m->len = (uint16_t)(m->len + rc_nc_hand(run, k, &a, m->payload + MSG_NC_START_SIZE));
+    if (run->trace)
+        rc_nc_trace_served(run, k, handed);
+    rc_nc_send(k, m);
+}
+
 void rc_nc_start(struct rc_run *run, struct line_msg *m, uint8_t flags, uint32_t largest,
                  uint8_t clip)
 {
@@ -94,13 +156,7 @@ void rc_nc_start(struct rc_run *run, struct line_msg *m, uint8_t flags, uint32_t
     for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
         if (run->nc[k].state == RC_NC_OUT)
             continue;
-        m->type = MSG_NC_START;
-        m->len = MSG_NC_START_SIZE;
-        wire_put_u8(m->payload, flags);
-        wire_put_u32(m->payload + 1, largest);
-        wire_put_u8(m->payload + 5, clip);
-        run->nc[k].since = ktime_now();
-        rc_nc_send(k, m);
+        rc_nc_start_one(run, k, m, flags, largest, clip);
         /* Its doorbell armed; a message there already is looked at. */
         if (line_recv_ready_arm(k))
             line_pending_mark(k);
@@ -282,23 +338,7 @@ static int rc_nc_give(struct rc_run *run, uint32_t k, struct line_msg *m)
     else if (rc_nc_static_waits(run, k) || !areas_next(&run->sched, &a))
         return 0;
     m->type = MSG_NC_AREA;
-    m->len = MSG_NC_AREA_SIZE;
-    wire_put_u16(m->payload, (uint16_t)a.x);
-    wire_put_u16(m->payload + 2, (uint16_t)a.y);
-    wire_put_u16(m->payload + 4, (uint16_t)a.w);
-    wire_put_u16(m->payload + 6, (uint16_t)a.h);
-    if (n->inject.kind && n->given == n->inject.area) {
-        m->len = MSG_NC_AREA_INJECT_SIZE;
-        wire_put_u8(m->payload + 8, n->inject.kind);
-        wire_put_u8(m->payload + 9, 0);
-        wire_put_u16(m->payload + 10, (uint16_t)(n->inject.row * (a.h + 1) / 256));
-    }
-    n->given++;
-    if (n->nheld == 0)
-        n->since = ktime_now();
-    n->held[n->nheld++] = a;
-    n->asking = 0;
-    rc_nc_set(run, k, RC_NC_BUSY);
+    m->len = rc_nc_hand(run, k, &a, m->payload);
     rc_nc_send(k, m);
     return 1;
 }
@@ -318,19 +358,6 @@ static void rc_nc_stop(struct rc_run *run, uint32_t k, struct line_msg *m)
     rc_nc_set(run, k, RC_NC_STOPPING);
     n->since = ktime_now();
     rc_nc_send(k, m);
-}
-
-/* Traced (docs/trace.md): after the span of serving NC k, the NC, whether
- * it got an area, and the area's x and y. */
-static void rc_nc_trace_served(const struct rc_run *run, uint32_t k, int handed)
-{
-    insn_mark_trace_span_end();
-    insn_mark_trace_bits(k, 16);
-    const struct rc_nc *n = &run->nc[k];
-    const struct area *a = &n->held[n->nheld ? n->nheld - 1u : 0u]; /* the one given last */
-    insn_mark_trace_bits((uint32_t)handed, 1);
-    insn_mark_trace_bits(handed ? a->x : 0, 16);
-    insn_mark_trace_bits(handed ? a->y : 0, 16);
 }
 
 /* 1 if an area is left to give (one taken back, or the schedule's next). */

@@ -37,7 +37,7 @@ enum replay_opt_code {
     REPLAY_OPT_ASK,
     REPLAY_OPT_GUIDED,
     REPLAY_OPT_PIPELINED,
-    REPLAY_OPT_FIRST_IN_BROADCAST,
+    REPLAY_OPT_FIRST_BY_REQUEST,
     REPLAY_OPT_AS_RECORDED,
     REPLAY_OPT_PER_NC,
     REPLAY_OPT_CHECK,
@@ -79,8 +79,9 @@ static const struct cli_optdef replay_whatif_optdefs[] = {
     {"line-us", "U", REPLAY_OPT_LINE_US, "latency of one serial-line message (default 1000)"},
     {"byte-us", "B", REPLAY_OPT_BYTE_US, "microseconds per byte on a line (default 520.8)"},
     {"pipelined", NULL, REPLAY_OPT_PIPELINED, "the DM prepared the frame during the previous one"},
-    {"first-in-broadcast", NULL, REPLAY_OPT_FIRST_IN_BROADCAST,
-     "the RC puts each NC's first area into the broadcast"},
+    {"first-by-request", NULL, REPLAY_OPT_FIRST_BY_REQUEST,
+     "each NC asks for its first area once set up (the board\n"
+     "hands it out with the NC's start)"},
     {"as-recorded", NULL, REPLAY_OPT_AS_RECORDED,
      "each NC gets the areas the board gave it, in its order"},
     CLI_OPTDEF_END,
@@ -169,8 +170,8 @@ static int replay_take(struct replay_opts *o, const struct cli *c, int code)
     case REPLAY_OPT_PIPELINED:
         o->cfg.pipelined = 1;
         return 0;
-    case REPLAY_OPT_FIRST_IN_BROADCAST:
-        o->cfg.first_in_broadcast = 1;
+    case REPLAY_OPT_FIRST_BY_REQUEST:
+        o->cfg.first_by_request = 1;
         return 0;
     case REPLAY_OPT_AS_RECORDED:
         o->cfg.as_recorded = 1;
@@ -278,7 +279,7 @@ static int replay_settle(struct replay_opts *o, const struct trace *t)
     return (o->have_balance && o->cfg.balance != (enum areas_mode)t->balance) ||
            (o->have_k && o->cfg.k != t->k) || (o->have_guided && o->cfg.guided != t->guided) ||
            (o->have_ask && o->cfg.prefetch != board_ahead) || o->cfg.pipelined ||
-           o->cfg.first_in_broadcast || o->cfg.mips != REPLAY_DEFAULT_MIPS ||
+           (o->cfg.first_by_request && t->first_with_start) || o->cfg.mips != REPLAY_DEFAULT_MIPS ||
            o->cfg.line_us != REPLAY_DEFAULT_LINE_US || o->cfg.byte_us != REPLAY_DEFAULT_BYTE_US;
 }
 

@@ -23,8 +23,20 @@ void replay_free(struct replay_result *r)
     free(r->areas);
     free(r->nc_insns);
     free(r->nc_setup_end);
-    free(r->nc_ready);
     memset(r, 0, sizeof *r);
+}
+
+/* 1 if the board handed traced area a out with its NC's start. */
+static int replay_traced_first(const struct trace *t, const struct trace_area *a)
+{
+    return t->first_with_start && a->order == 0;
+}
+
+/* 1 if each NC asks for its first area once set up: a trace of a board
+ * before version 3, or the what-if. */
+static int replay_by_request(const struct trace *t, const struct replay_cfg *c)
+{
+    return c->first_by_request || !t->first_with_start;
 }
 
 /* Prices areas from the trace. */
@@ -33,8 +45,8 @@ struct replay_pricer {
     uint32_t *owner;  /* [w*h]: the traced area holding each pixel */
     uint64_t *prefix; /* [(w+1)*(h+1)]: 2-D prefix sums of the pixel costs */
     uint64_t rc_mean; /* the RC serving one request that hands out an area */
-    uint64_t setup_mean; /* an NC's set-up of the frame up to its first request */
-    uint64_t after_mean; /* its set-up after that request */
+    uint64_t start_mean; /* the RC handing an NC its first area with its start */
+    uint64_t setup_mean; /* an NC's set-up of the frame */
 };
 
 static int replay_pricer_init(struct replay_pricer *p, const struct trace *t)
@@ -46,22 +58,23 @@ static int replay_pricer_init(struct replay_pricer *p, const struct trace *t)
     p->prefix = calloc((size_t)(t->width + 1) * (t->height + 1), sizeof *p->prefix);
     if (!p->owner || !p->prefix)
         return -1;
-    uint64_t rc = 0;
+    uint64_t rc[2] = {0, 0}, kind[2] = {0, 0};
     for (uint32_t i = 0; i < t->nareas; i++) {
         const struct trace_area *a = &t->areas[i];
-        rc += a->rc;
+        int first = replay_traced_first(t, a);
+        rc[first] += a->rc;
+        kind[first]++;
         for (uint32_t y = a->y; y < a->y + a->h; y++)
             for (uint32_t x = a->x; x < a->x + a->w; x++)
                 p->owner[(size_t)y * t->width + x] = i;
     }
-    p->rc_mean = rc / t->nareas;
-    uint64_t s = 0, after = 0;
-    for (uint32_t i = 0; i < t->ncs; i++) {
+    /* a trace with none of a kind prices it as the other */
+    p->rc_mean = kind[0] ? rc[0] / kind[0] : rc[1] / kind[1];
+    p->start_mean = kind[1] ? rc[1] / kind[1] : p->rc_mean;
+    uint64_t s = 0;
+    for (uint32_t i = 0; i < t->ncs; i++)
         s += t->nc_setup[i];
-        after += t->nc_after_ask[i];
-    }
     p->setup_mean = s / t->ncs;
-    p->after_mean = after / t->ncs;
     size_t W = t->width + 1;
     for (uint32_t y = 0; y < t->height; y++)
         for (uint32_t x = 0; x < t->width; x++)
@@ -77,19 +90,21 @@ static void replay_pricer_free(struct replay_pricer *p)
     free(p->prefix);
 }
 
-/* The NC's instructions for area a, and the RC's for handing it out. */
-static uint64_t replay_price(const struct replay_pricer *p, const struct area *a, int *exact,
-                             uint64_t *rc)
+/* The NC's instructions for area a, and the RC's for handing it out (with
+ * the NC's start when first). */
+static uint64_t replay_price(const struct replay_pricer *p, const struct area *a, int first,
+                             int *exact, uint64_t *rc)
 {
     const struct trace *t = p->t;
     const struct trace_area *o = &t->areas[p->owner[(size_t)a->y * t->width + a->x]];
+    *rc = first ? p->start_mean : p->rc_mean;
     if (o->x == a->x && o->y == a->y && o->w == a->w && o->h == a->h) {
         *exact = 1;
-        *rc = o->rc;
+        if (replay_traced_first(t, o) == first)
+            *rc = o->rc;
         return o->total;
     }
     *exact = 0;
-    *rc = p->rc_mean;
     size_t W = t->width + 1;
     uint64_t sum = p->prefix[(a->y + a->h) * W + a->x + a->w] - p->prefix[a->y * W + a->x + a->w] -
                    p->prefix[(a->y + a->h) * W + a->x] + p->prefix[a->y * W + a->x];
@@ -201,9 +216,8 @@ static int replay_state_init(struct replay_state *s, char *err, size_t cap)
     r->areas = calloc(s->total, sizeof *r->areas);
     r->nc_insns = calloc(c->ncs, sizeof *r->nc_insns);
     r->nc_setup_end = calloc(c->ncs, sizeof *r->nc_setup_end);
-    r->nc_ready = calloc(c->ncs, sizeof *r->nc_ready);
     if (replay_pricer_init(&s->p, t) != 0 || !s->pending || !s->sent || !s->busy_until ||
-        !s->computing || !r->areas || !r->nc_insns || !r->nc_setup_end || !r->nc_ready ||
+        !s->computing || !r->areas || !r->nc_insns || !r->nc_setup_end ||
         (c->as_recorded && replay_source_recorded(&s->src, t) != 0))
         return replay_fail(err, cap, "out of memory");
     return 0;
@@ -220,78 +234,64 @@ static double replay_ask_time(const struct replay_state *s, double start, double
     return end - lead > start ? end - lead : start;
 }
 
-/* NC nc computes area a (insns instructions) from start; it asks again. */
+/* NC nc computes area a (insns instructions) from start; it asks again
+ * (during an area that came with its start it has seen no round trip:
+ * asking ahead, it asks as it starts). */
 static void replay_compute(struct replay_state *s, uint32_t nc, const struct area *a,
-                           uint64_t insns, int exact, int in_broadcast, double served[3],
+                           uint64_t insns, int exact, int with_start, double served[3],
                            double start)
 {
     struct replay_result *r = s->r;
     double end = start + (double)insns * s->us_per;
     r->areas[r->nareas++] = (struct replay_area){a->x, a->y, a->w, a->h, nc, insns, exact,
-                                                 in_broadcast, served[0], served[1],
+                                                 with_start, served[0], served[1],
                                                  served[2], start, end};
     r->exact += (uint32_t)exact;
     s->busy_until[nc] = end;
     s->computing[nc] += end - start;
     r->nc_insns[nc] += insns;
-    s->sent[nc] = replay_ask_time(s, start, end);
+    s->sent[nc] = with_start && s->c->prefetch ? start : replay_ask_time(s, start, end);
     s->pending[nc] = s->sent[nc] + replay_line(s->c, REPLAY_REQUEST_BYTES);
 }
 
-/* Each NC's first request on the line once it is set up that far; the
- * rest of its set-up after. */
+/* Each NC set up from the broadcast on, and its first request on the line
+ * (replay_start_areas moves both later). */
 static void replay_setup(struct replay_state *s)
 {
     const struct replay_cfg *c = s->c;
     s->t0 = (double)((c->pipelined ? 0 : s->t->dm_prepare) + s->t->rc_broadcast) * s->us_per;
     for (uint32_t n = 0; n < c->ncs; n++) {
         uint64_t setup = c->as_recorded ? s->t->nc_setup[n] : s->p.setup_mean;
-        uint64_t after = c->as_recorded ? s->t->nc_after_ask[n] : s->p.after_mean;
-        s->r->nc_setup_end[n] = s->sent[n] = s->t0 + (double)setup * s->us_per;
-        s->r->nc_ready[n] = s->busy_until[n] = s->sent[n] + (double)after * s->us_per;
-        s->computing[n] = (double)(setup + after) * s->us_per;
+        s->r->nc_setup_end[n] = s->busy_until[n] = s->t0 + (double)setup * s->us_per;
+        s->computing[n] = (double)setup * s->us_per;
+        s->sent[n] = s->busy_until[n];
         s->pending[n] = s->sent[n] + replay_line(c, REPLAY_REQUEST_BYTES);
     }
     s->rc_free = s->t0;
 }
 
-/* --first-in-broadcast: the RC takes each NC's first area from the
- * schedule before the broadcast goes out; the NCs start on it after their
- * set-up.  0, or -1 with err filled. */
-static int replay_first_in_broadcast(struct replay_state *s, char *err, size_t cap)
+/* The board's start: the RC starts the NCs in turn, handing each its first
+ * area with the start; an NC sets up from then and computes it.  An NC
+ * for which no area is left asks once set up. */
+static void replay_start_areas(struct replay_state *s)
 {
-    uint32_t ncs = s->c->ncs;
-    struct area *first = calloc(ncs, sizeof *first);
-    uint64_t *first_insns = calloc(ncs, sizeof *first_insns);
-    int *first_exact = calloc(ncs, sizeof *first_exact);
-    int *have = calloc(ncs, sizeof *have);
-    int rc = !first || !first_insns || !first_exact || !have
-                 ? replay_fail(err, cap, "out of memory") : 0;
-    for (uint32_t n = 0; rc == 0 && n < ncs; n++) {
-        uint64_t rc_insns = s->p.rc_mean;
-        have[n] = replay_next(&s->src, n, &first[n]);
-        if (have[n])
-            first_insns[n] = replay_price(&s->p, &first[n], &first_exact[n], &rc_insns);
-        s->rc_free += (double)rc_insns * s->us_per;
-    }
-    double shift = s->rc_free - s->t0, served[3] = {s->t0, s->t0, s->rc_free};
-    if (rc == 0)
-        s->rc_busy += shift;
-    for (uint32_t n = 0; rc == 0 && n < ncs; n++) {
+    for (uint32_t n = 0; n < s->c->ncs; n++) {
+        struct area a;
+        int have = replay_next(&s->src, n, &a), exact = 0;
+        uint64_t rc_insns = 0, insns = 0;
+        if (have)
+            insns = replay_price(&s->p, &a, 1, &exact, &rc_insns);
+        double handed = s->rc_free + (double)rc_insns * s->us_per;
+        double served[3] = {s->rc_free, s->rc_free, handed}, shift = handed - s->t0;
+        s->rc_busy += handed - s->rc_free;
+        s->rc_free = handed;
         s->r->nc_setup_end[n] += shift;
-        s->r->nc_ready[n] += shift;
         s->busy_until[n] += shift;
-        if (!have[n])
-            s->pending[n] = INFINITY;
-        else
-            replay_compute(s, n, &first[n], first_insns[n], first_exact[n], 1, served,
-                           s->busy_until[n]);
+        s->sent[n] += shift;
+        s->pending[n] += shift;
+        if (have)
+            replay_compute(s, n, &a, insns, exact, 1, served, s->busy_until[n]);
     }
-    free(first);
-    free(first_insns);
-    free(first_exact);
-    free(have);
-    return rc;
 }
 
 /* The RC serves requests in the order they arrive until every NC is told
@@ -312,7 +312,7 @@ static int replay_serve(struct replay_state *s, char *err, size_t cap)
         int have = replay_next(&s->src, nc, &a), exact = 0;
         uint64_t rc_insns = s->p.rc_mean, insns = 0;
         if (have)
-            insns = replay_price(&s->p, &a, &exact, &rc_insns);
+            insns = replay_price(&s->p, &a, 0, &exact, &rc_insns);
         double start = s->rc_free > first ? s->rc_free : first;
         double end = start + (double)rc_insns * s->us_per;
         s->rc_free = end;
@@ -364,8 +364,8 @@ int replay_run(const struct trace *t, const struct replay_cfg *c, struct replay_
     int rc = replay_state_init(&s, err, cap);
     if (rc == 0) {
         replay_setup(&s);
-        if (c->first_in_broadcast)
-            rc = replay_first_in_broadcast(&s, err, cap);
+        if (!replay_by_request(t, c))
+            replay_start_areas(&s);
     }
     if (rc == 0)
         rc = replay_serve(&s, err, cap);
@@ -385,9 +385,8 @@ int replay_check_legal(const struct trace *t, const struct replay_cfg *c,
     uint8_t *seen = calloc(n, 1);
     double *last_end = calloc(c->ncs, sizeof *last_end);
     double *last_start = calloc(c->ncs, sizeof *last_start);
-    uint8_t *drawn = calloc(c->ncs, 1); /* the NC has had an area */
     int rc = 0;
-    if (!seen || !last_end || !last_start || !drawn) {
+    if (!seen || !last_end || !last_start) {
         rc = replay_fail(err, cap, "out of memory");
         goto out;
     }
@@ -403,10 +402,8 @@ int replay_check_legal(const struct trace *t, const struct replay_cfg *c,
                          r->nareas, areas_count(&sched));
         goto out;
     }
-    for (uint32_t n2 = 0; n2 < c->ncs; n2++) {
-        last_start[n2] = r->nc_setup_end[n2];
-        last_end[n2] = r->nc_ready[n2];
-    }
+    for (uint32_t n2 = 0; n2 < c->ncs; n2++)
+        last_end[n2] = last_start[n2] = r->nc_setup_end[n2];
     /* Requests the RC served: each starts after the one before it ended. */
     double rc_free = 0;
     for (uint32_t i = 0; i < r->nareas && rc == 0; i++) {
@@ -421,18 +418,13 @@ int replay_check_legal(const struct trace *t, const struct replay_cfg *c,
             rc = replay_fail(err, cap, "area %" PRIu32 " went to NC %" PRIu32, i, a->nc);
             break;
         }
-        double line_req = a->in_broadcast ? 0 : replay_line(c, REPLAY_REQUEST_BYTES);
-        double line_ans = a->in_broadcast ? 0 : replay_line(c, REPLAY_ANSWER_BYTES);
-        /* an NC's first request leaves once it is set up that far */
-        double asked_after = c->prefetch || !drawn[a->nc] ? last_start[a->nc] : last_end[a->nc];
-        if (a->in_broadcast && (!c->first_in_broadcast || i >= c->ncs || a->nc != i))
-            rc = replay_fail(err, cap, "area %" PRIu32 " came with the broadcast, but it is "
-                             "not NC %" PRIu32 "'s first", i, a->nc);
-        else if (a->in_broadcast && a->start + eps < a->serve_end)
-            rc = replay_fail(err, cap, "area %" PRIu32 ": started before the broadcast", i);
-        else if (a->in_broadcast)
-            ; /* no request, no line */
-        else if (a->request_sent + eps < asked_after)
+        double line_req = a->with_start ? 0 : replay_line(c, REPLAY_REQUEST_BYTES);
+        double line_ans = a->with_start ? 0 : replay_line(c, REPLAY_ANSWER_BYTES);
+        double asked_after = c->prefetch ? last_start[a->nc] : last_end[a->nc];
+        if (a->with_start && (replay_by_request(t, c) || i >= c->ncs || a->nc != i))
+            rc = replay_fail(err, cap, "area %" PRIu32 " came with a start, but it is not NC %"
+                             PRIu32 "'s first", i, a->nc);
+        else if (!a->with_start && a->request_sent + eps < asked_after)
             rc = replay_fail(err, cap, "area %" PRIu32 ": NC %" PRIu32 " asked before it %s "
                              "its previous area", i, a->nc, c->prefetch ? "started" : "finished");
         else if (a->serve_start + eps < a->request_sent + line_req)
@@ -448,7 +440,6 @@ int replay_check_legal(const struct trace *t, const struct replay_cfg *c,
         if (rc)
             break;
         rc_free = a->serve_end;
-        drawn[a->nc] = 1;
         last_end[a->nc] = a->end;
         last_start[a->nc] = a->start;
         for (uint32_t y = a->y; y < a->y + a->h && rc == 0; y++)
@@ -467,7 +458,6 @@ out:
     free(seen);
     free(last_end);
     free(last_start);
-    free(drawn);
     return rc;
 }
 

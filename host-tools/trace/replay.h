@@ -2,8 +2,12 @@
  * LINKS-1's equal-speed unit computers (links1 replay, docs/trace.md).
  *
  *   - Every unit computer executes mips million instructions per second.
- *   - The DM prepares the frame, the RC broadcasts it, each NC sets up;
- *     then each NC sends an area request over its serial line to the RC.
+ *   - The DM prepares the frame, the RC broadcasts it and starts each NC
+ *     in turn, handing it its first area with the start (the RC's
+ *     instructions for the hand-out as traced); each NC sets up and
+ *     computes that area, asking for the next one over its serial line.
+ *     (A trace of version 1 or 2, or first_by_request: the NCs set up,
+ *     then each sends a request for its first area.)
  *   - A message takes line_us plus byte_us per byte to cross a line.
  *   - The RC serves one request at a time, in the order they arrive, and
  *     answers with the schedule's next area (or stop).
@@ -11,7 +15,8 @@
  *     the next area one round trip (both lines and the RC's mean service)
  *     before it expects to finish the current one, never before it starts
  *     it: an NC knows how many of the area's pixels are left, and the
- *     replay takes its estimate of the time they need as exact.
+ *     replay takes its estimate of the time they need as exact.  During
+ *     its first area it has seen no round trip: it asks as it starts.
  * An area the trace holds costs exactly what the board counted.  Any
  * other area is priced from the trace's per-pixel costs, plus the set-up
  * of the traced area holding its first pixel and the push of that traced
@@ -43,8 +48,8 @@ struct replay_cfg {
     uint32_t guided;      /* decreasing: the guided factor (0: by NC count) */
     int pipelined;        /* the DM prepared the frame while the previous one
                              rendered: the frame starts at the broadcast */
-    int first_in_broadcast; /* the RC puts each NC's first area into the
-                             broadcast: no first request */
+    int first_by_request; /* each NC asks for its first area once set up
+                             (a trace before version 3 replays so) */
     int as_recorded;      /* hand each NC the areas the board gave it, in
                              its order (ncs must be the trace's) */
 };
@@ -55,7 +60,7 @@ struct replay_area {
     uint32_t nc;
     uint64_t insns;        /* the NC's instructions for it */
     int exact;             /* 1: the trace holds this area */
-    int in_broadcast;      /* 1: an NC's first area, sent with the broadcast */
+    int with_start;        /* 1: an NC's first area, handed out with its start */
     double request_sent;   /* the NC sent the request that got it */
     double serve_start, serve_end; /* the RC serving that request */
     double start, end;     /* the NC computing it */
@@ -69,8 +74,6 @@ struct replay_result {
     struct replay_area *areas; /* in handout order */
     uint64_t *nc_insns;    /* [ncs]: set-up + its areas */
     double *nc_setup_end;  /* [ncs]: when each NC first asked */
-    double *nc_ready;      /* [ncs]: when it finished setting up (it may have
-                              asked before: trace's nc_after_ask) */
 };
 
 /* 0, or -1 with err filled (bad configuration). */

@@ -68,7 +68,7 @@ static void timeline_data(FILE *f, const struct trace *t, const struct replay_cf
     timeline_bar(f, u, 0, dm_end, TIMELINE_ROW_DM, TIMELINE_DM_PREPARE);
     timeline_bar(f, u, dm_end, t0, TIMELINE_ROW_RC, TIMELINE_RC_BROADCAST);
     for (uint32_t n = 0; n < c->ncs; n++)
-        timeline_bar(f, u, t0, r->nc_ready[n], TIMELINE_ROW_NC0 + n, TIMELINE_NC_SETUP);
+        timeline_bar(f, u, t0, r->nc_setup_end[n], TIMELINE_ROW_NC0 + n, TIMELINE_NC_SETUP);
     uint32_t *shade = calloc(c->ncs, sizeof *shade);
     for (uint32_t i = 0; i < r->nareas; i++) {
         const struct replay_area *a = &r->areas[i];

@@ -64,8 +64,9 @@ static int decode_area_index(const struct trace *t, const uint32_t *at, uint32_t
     return (int)at[(size_t)y * t->width + x] - 1;
 }
 
-/* The RC: the broadcast span, then per message served a span and its
- * record (NC core 16 bits, handed 1, x 16, y 16). */
+/* The RC: the broadcast span, then per NC started (its first area handed
+ * out with its MSG_NC_START) and per message served a span and its record
+ * (NC core 16 bits, handed 1, x 16, y 16). */
 static int decode_rc(const struct marks *c, struct trace *t, char *err, size_t cap)
 {
     size_t i = 0;
@@ -114,19 +115,16 @@ static int decode_rc(const struct marks *c, struct trace *t, char *err, size_t c
     return 0;
 }
 
-/* An NC: its set-up span up to its first request and the span after it,
- * then per area: x, y, w, h (16 bits each), AREA_BEGIN, PIXEL after the
- * set-up and after each pixel, AREA_END. */
+/* An NC: its set-up span, then per area: x, y, w, h (16 bits each),
+ * AREA_BEGIN, PIXEL after the set-up and after each pixel, AREA_END. */
 static int decode_nc(const struct marks *c, uint32_t nc, struct trace *t, const uint32_t *at,
                      uint8_t *got, char *err, size_t cap)
 {
-    if (c->n < 4 || c->m[0].kind != INSN_TRACE_SPAN_BEGIN || c->m[1].kind != INSN_TRACE_SPAN_END ||
-        c->m[2].kind != INSN_TRACE_SPAN_BEGIN || c->m[3].kind != INSN_TRACE_SPAN_END)
-        return decode_fail(err, cap, "NC %" PRIu32 ": its marks do not start with its set-up's "
-                           "two spans", nc);
+    if (c->n < 2 || c->m[0].kind != INSN_TRACE_SPAN_BEGIN || c->m[1].kind != INSN_TRACE_SPAN_END)
+        return decode_fail(err, cap, "NC %" PRIu32 ": its marks do not start with its set-up",
+                           nc);
     t->nc_setup[nc] = c->m[1].count - c->m[0].count;
-    t->nc_after_ask[nc] = c->m[3].count - c->m[2].count;
-    size_t i = 4;
+    size_t i = 2;
     uint32_t order = 0;
     while (i < c->n) {
         uint32_t x, y, w, h;
@@ -218,15 +216,15 @@ int trace_decode_marks(const char *marks_path, uint32_t width, uint32_t height, 
     t->width = width;
     t->height = height;
     t->ncs = ncs;
+    t->first_with_start = 1; /* the board's RC: roles/rc_nc.c */
     uint32_t ncores = ncs + (uint32_t)UNITS_FIRST_NC;
     struct marks *cores = calloc(ncores, sizeof *cores);
     t->nc_setup = calloc(ncs, sizeof *t->nc_setup);
-    t->nc_after_ask = calloc(ncs, sizeof *t->nc_after_ask);
     t->pixel = calloc((size_t)width * height, sizeof *t->pixel);
     uint8_t *got = NULL;
     uint32_t *at = NULL;
     int rc = -1;
-    if (!cores || !t->nc_setup || !t->nc_after_ask || !t->pixel) {
+    if (!cores || !t->nc_setup || !t->pixel) {
         decode_fail(err, cap, "out of memory");
         goto out;
     }

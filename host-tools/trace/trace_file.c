@@ -26,7 +26,6 @@ static int trace_fail(char *err, size_t cap, const char *fmt, ...)
 void trace_free(struct trace *t)
 {
     free(t->nc_setup);
-    free(t->nc_after_ask);
     free(t->areas);
     free(t->pixel);
     memset(t, 0, sizeof *t);
@@ -94,7 +93,8 @@ int trace_check(const struct trace *t, char *err, size_t cap)
 
 int trace_write(FILE *f, const char *name, const struct trace *t, char *err, size_t cap)
 {
-    fprintf(f, "%s %d\n", TRACE_MAGIC, TRACE_VERSION);
+    /* a version 1 or 2 trace read in is written as version 2 */
+    fprintf(f, "%s %d\n", TRACE_MAGIC, t->first_with_start ? TRACE_VERSION : 2);
     fprintf(f, "screen %" PRIu32 " %" PRIu32 "\n", t->width, t->height);
     fprintf(f, "run ncs %" PRIu32 " balance %s k %" PRIu32 " guided %" PRIu32 " flags %" PRIu32
             "\n", t->ncs, areas_mode_name((enum areas_mode)t->balance), t->k, t->guided, t->flags);
@@ -103,8 +103,7 @@ int trace_write(FILE *f, const char *name, const struct trace *t, char *err, siz
             t->rc_broadcast);
     fprintf(f, "rc_other %" PRIu64 "\n", t->rc_other);
     for (uint32_t i = 0; i < t->ncs; i++)
-        fprintf(f, "nc %" PRIu32 " setup %" PRIu64 " after_ask %" PRIu64 "\n", i, t->nc_setup[i],
-                t->nc_after_ask[i]);
+        fprintf(f, "nc %" PRIu32 " setup %" PRIu64 "\n", i, t->nc_setup[i]);
     fprintf(f, "areas %" PRIu32 "\n", t->nareas);
     for (uint32_t i = 0; i < t->nareas; i++) {
         const struct trace_area *a = &t->areas[i];
@@ -231,18 +230,16 @@ static int trace_parse_run(struct trace_in *in, struct trace *t, int v1, char *e
     return 0;
 }
 
-/* The magic and version (to *version), the screen, the run, the DM's and
- * RC's counts. */
-static int trace_parse_head(struct trace_in *in, struct trace *t, uint64_t *version, char *err,
-                            size_t cap)
+/* The magic and version, the screen, the run, the DM's and RC's counts. */
+static int trace_parse_head(struct trace_in *in, struct trace *t, char *err, size_t cap)
 {
     uint64_t v[2];
     char *p = trace_line(in);
     WANT(p && trace_word(&p, TRACE_MAGIC) == 0 && trace_num(&p, U32, &v[0]) == 0,
          "not a links1 trace (want '" TRACE_MAGIC " 3')");
     WANT(v[0] >= 1 && v[0] <= TRACE_VERSION, "trace version not 1, 2 or 3");
-    *version = v[0];
     int v1 = v[0] == 1;
+    t->first_with_start = v[0] >= 3;
     p = trace_line(in);
     WANT(p && trace_word(&p, "screen") == 0 && trace_num(&p, AREAS_MAX_DIM, &v[0]) == 0 &&
          trace_num(&p, AREAS_MAX_DIM, &v[1]) == 0 && trace_end_of_line(p) == 0 && v[0] && v[1],
@@ -266,24 +263,17 @@ static int trace_parse_head(struct trace_in *in, struct trace *t, uint64_t *vers
     return 0;
 }
 
-/* "nc I setup INSNS after_ask INSNS" for each NC in order (before
- * version 3 no after_ask: the NC asked once set up). */
-static int trace_parse_setups(struct trace_in *in, struct trace *t, int v3, char *err,
-                              size_t cap)
+/* "nc I setup INSNS" for each NC in order. */
+static int trace_parse_setups(struct trace_in *in, struct trace *t, char *err, size_t cap)
 {
     uint64_t v;
     t->nc_setup = calloc(t->ncs, sizeof *t->nc_setup);
-    t->nc_after_ask = calloc(t->ncs, sizeof *t->nc_after_ask);
-    WANT(t->nc_setup && t->nc_after_ask, "out of memory");
+    WANT(t->nc_setup, "out of memory");
     for (uint32_t i = 0; i < t->ncs; i++) {
         char *p = trace_line(in);
         WANT(p && trace_word(&p, "nc") == 0 && trace_num(&p, U32, &v) == 0 && v == i &&
              trace_word(&p, "setup") == 0 && trace_num(&p, U64, &t->nc_setup[i]) == 0 &&
-             (!v3 || (trace_word(&p, "after_ask") == 0 &&
-                      trace_num(&p, U64, &t->nc_after_ask[i]) == 0)) &&
-             trace_end_of_line(p) == 0,
-             v3 ? "want 'nc I setup INSNS after_ask INSNS' for each NC in order"
-                : "want 'nc I setup INSNS' for each NC in order");
+             trace_end_of_line(p) == 0, "want 'nc I setup INSNS' for each NC in order");
     }
     return 0;
 }
@@ -348,9 +338,7 @@ static int trace_parse_rows(struct trace_in *in, struct trace *t, char *err, siz
 
 static int trace_parse(struct trace_in *in, struct trace *t, char *err, size_t cap)
 {
-    uint64_t version = 0;
-    if (trace_parse_head(in, t, &version, err, cap) != 0 ||
-        trace_parse_setups(in, t, version >= 3, err, cap) != 0 ||
+    if (trace_parse_head(in, t, err, cap) != 0 || trace_parse_setups(in, t, err, cap) != 0 ||
         trace_parse_areas(in, t, err, cap) != 0 || trace_parse_rows(in, t, err, cap) != 0)
         return -1;
     return 0;

@@ -5,9 +5,10 @@
  *
  * A trace holds what each unit computer spent, in guest instructions:
  *   - the DM's preprocessing of the frame;
- *   - the RC's broadcast, and its serving of each area request;
- *   - each NC's set-up of the frame, before its first request and after
- *     it (the light buffer, built while the request is on its way);
+ *   - the RC's broadcast, and its serving of each area request (from
+ *     version 3 an NC's first area comes with its MSG_NC_START: that
+ *     area's RC cost is the hand-out alone);
+ *   - each NC's set-up of the frame;
  *   - per area: its rectangle, the NC that drew it and in which order, its
  *     set-up (Y clipping), its push into the data collector, its total;
  *   - per pixel: what tracing that pixel took inside its area (X clipping
@@ -42,12 +43,13 @@ struct trace {
     uint32_t k;         /* its --areas K (0: the board's default for its NCs) */
     uint32_t guided;    /* its --guided F (0: the board's default for its NCs) */
     uint32_t flags;     /* enum link_render_flag of the run */
+    uint32_t first_with_start; /* 1: each NC's first area (order 0) came with
+                                  its MSG_NC_START (version 3); 0: it asked */
     uint64_t dm_prepare;   /* DM: render_blob_prepare of the frame */
     uint64_t rc_broadcast; /* RC: the blob into the broadcast block */
     uint32_t broadcast_bytes;
     uint64_t rc_other;  /* RC: serving messages that handed out no area */
-    uint64_t *nc_setup; /* [ncs]: each NC's set-up up to its first request */
-    uint64_t *nc_after_ask; /* [ncs]: its set-up after that request went out */
+    uint64_t *nc_setup; /* [ncs]: each NC's set-up of the frame */
     uint32_t nareas;
     struct trace_area *areas; /* in handout order */
     uint32_t *pixel;    /* [width * height]: each pixel's instructions */

@@ -38,12 +38,10 @@ static void make_trace(struct trace *t, enum areas_mode mode, uint32_t w, uint32
     t->rc_broadcast = 80000 + test_rand() % 1000;
     t->broadcast_bytes = 20000;
     t->rc_other = 5000;
+    t->first_with_start = 1;
     t->nc_setup = calloc(ncs, sizeof *t->nc_setup);
-    t->nc_after_ask = calloc(ncs, sizeof *t->nc_after_ask);
-    for (uint32_t i = 0; i < ncs; i++) {
+    for (uint32_t i = 0; i < ncs; i++)
         t->nc_setup[i] = 966;
-        t->nc_after_ask[i] = 300 + i; /* below an RC's serving: hidden behind it */
-    }
     t->pixel = calloc((size_t)w * h, sizeof *t->pixel);
     for (size_t p = 0; p < (size_t)w * h; p++)
         t->pixel[p] = 1000 + test_rand() % 50000;
@@ -74,13 +72,12 @@ static int same_trace(const struct trace *a, const struct trace *b)
 {
     if (a->width != b->width || a->height != b->height || a->ncs != b->ncs ||
         a->balance != b->balance || a->k != b->k || a->guided != b->guided ||
-        a->flags != b->flags ||
+        a->flags != b->flags || a->first_with_start != b->first_with_start ||
         a->dm_prepare != b->dm_prepare || a->rc_broadcast != b->rc_broadcast ||
         a->broadcast_bytes != b->broadcast_bytes || a->rc_other != b->rc_other ||
         a->nareas != b->nareas)
         return 0;
     if (memcmp(a->nc_setup, b->nc_setup, a->ncs * sizeof *a->nc_setup) != 0 ||
-        memcmp(a->nc_after_ask, b->nc_after_ask, a->ncs * sizeof *a->nc_after_ask) != 0 ||
         memcmp(a->pixel, b->pixel, (size_t)a->width * a->height * sizeof *a->pixel) != 0)
         return 0;
     for (uint32_t i = 0; i < a->nareas; i++)
@@ -168,7 +165,6 @@ static void test_damaged_traces_are_refused(void)
     make_trace(&t, AREAS_DYNAMIC, 16, 8, 2, 4); /* 4 areas of 4x8 */
     expect_refused(&t, "links1-trace", "links1-trace 9\n", "version");
     expect_refused(&t, "row 5", NULL, "want 'row Y'");
-    expect_refused(&t, "nc 1 setup", "nc 1 setup 966\n", "after_ask");
     expect_refused(&t, "area 4 0 4 8", "area 2 0 4 8 nc 1 order 0 setup 1 push 1 total 2 rc 1\n",
                    "overlaps");
     expect_refused(&t, "area 0 0 4 8", "area 0 0 4 8 nc 0 order 0 setup 1 push 1 total 2 rc 1\n",
@@ -206,17 +202,14 @@ static void test_trace_records_schedule(void)
     CHECK(r == 0 && same_trace(&t, &back));
     if (r == 0)
         trace_free(&back);
-    /* the same file as version 1 wrote it (no guided, no after_ask) */
+    /* the same file as version 1 wrote it */
     FILE *in = fopen(path, "r"), *out = fopen(v1, "w");
     char line[1 << 16];
     while (in && out && fgets(line, sizeof line, in)) {
-        char *after = strstr(line, " after_ask ");
         if (strncmp(line, "links1-trace", 12) == 0)
             fputs("links1-trace 1\n", out);
         else if (strncmp(line, "run ", 4) == 0)
             fprintf(out, "run ncs 3 balance decreasing k 0 flags 0\n");
-        else if (strncmp(line, "nc ", 3) == 0 && after)
-            fprintf(out, "%.*s\n", (int)(after - line), line);
         else
             fputs(line, out);
     }
@@ -226,7 +219,7 @@ static void test_trace_records_schedule(void)
         fclose(out);
     r = trace_read(v1, &back, err, sizeof err);
     CHECK(r == 0 && back.k == 1024 && back.guided == 2 &&
-          (back.flags & LINK_RENDER_ASK_WHEN_DONE) && back.nc_after_ask[2] == 0);
+          (back.flags & LINK_RENDER_ASK_WHEN_DONE) && !back.first_with_start);
     if (r == 0)
         trace_free(&back);
     expect_refused(&t, "run ", "run ncs 3 balance decreasing k 0 guided 65 flags 0\n",
@@ -275,7 +268,7 @@ static void test_static_replay_is_exact(void)
          * on it at once */
         double line = c.line_us + c.byte_us * (LINEMSG_HEADER_SIZE + MSG_NC_AREA_SIZE);
         for (uint32_t i = 0; i < r.nareas; i++)
-            if (!r.areas[i].in_broadcast)
+            if (!r.areas[i].with_start)
                 CHECK_NEAR(r.areas[i].start - r.areas[i].serve_end, line, 1e-6);
         replay_free(&r);
     }
@@ -298,7 +291,8 @@ static void test_dynamic_replay_is_legal(void)
                                        .k = 256, .mips = 1.0, .line_us = 1000,
                                        .byte_us = 520.8, .prefetch = pre,
                                        .guided = mode == AREAS_DECREASING ? 1u + (uint32_t)i : 0,
-                                       .pipelined = pre, .first_in_broadcast = (int)(i % 2)};
+                                       .pipelined = pre};
+                t.first_with_start = (uint32_t)(i % 2); /* the board's, or before */
                 struct replay_result r;
                 CHECK_EQ_INT(replay_run(&t, &c, &r, err, sizeof err), 0);
                 int ok = replay_check_legal(&t, &c, &r, err, sizeof err);
@@ -336,15 +330,18 @@ static void test_dynamic_replay_is_legal(void)
         all += t.areas[i].total + t.areas[i].rc;
     CHECK_NEAR(r1.frame_us, (double)all / 2.0, 1e-3);
     replay_free(&r1);
-    /* Its set-up after its first request (each NC's below the RC's 1,557
-     * a request) hid behind the RC serving it; one longer shows by what
-     * it outlasts that. */
-    for (uint32_t n = 0; n < t.ncs; n++)
-        t.nc_after_ask[n] = 5000;
-    CHECK_EQ_INT(replay_run(&t, &c1, &r1, err, sizeof err), 0);
-    CHECK_NEAR(r1.frame_us, (double)(all + 5000 - 1557) / 2.0, 1e-3);
-    CHECK_EQ_INT(replay_check_legal(&t, &c1, &r1, err, sizeof err), 0);
+    /* Its first area came with its start: asking for it instead puts a
+     * request and its answer on the lines first. */
+    struct replay_cfg c2 = c1;
+    struct replay_result r2;
+    c2.line_us = 1000;
+    CHECK_EQ_INT(replay_run(&t, &c2, &r1, err, sizeof err), 0);
+    c2.first_by_request = 1;
+    CHECK_EQ_INT(replay_run(&t, &c2, &r2, err, sizeof err), 0);
+    CHECK(r1.nareas > 1 && r1.areas[0].with_start && !r2.areas[0].with_start);
+    CHECK_NEAR(r2.frame_us - r1.frame_us, 2000.0, 1e-3);
     replay_free(&r1);
+    replay_free(&r2);
     trace_free(&t);
 }
 
@@ -358,8 +355,6 @@ static void test_trace_scale(void)
     make_trace(&t, AREAS_DYNAMIC, 16, 12, 3, 24);
     s = t; /* a deep copy */
     s.nc_setup = malloc(t.ncs * sizeof *s.nc_setup);
-    s.nc_after_ask = malloc(t.ncs * sizeof *s.nc_after_ask);
-    memcpy(s.nc_after_ask, t.nc_after_ask, t.ncs * sizeof *s.nc_after_ask);
     s.areas = malloc(t.nareas * sizeof *s.areas);
     s.pixel = malloc(16 * 12 * sizeof *s.pixel);
     memcpy(s.nc_setup, t.nc_setup, t.ncs * sizeof *s.nc_setup);

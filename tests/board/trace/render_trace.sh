@@ -29,7 +29,7 @@ if render_board render_trace "$out" scenes/demo.scn -o "$out" --ncs 4 --size $SI
     # Per NC: the plugin's count (cores 2..5) and the trace's area totals.
     board=$(awk '$1 == "core" && $3 == "NC" { print $4 }' "$log")
     areas=$(awk '$1 == "area" { s[$7] += $15 } END { for (n = 0; n < 4; n++) print s[n] + 0 }' "$tr")
-    traced=$(awk '$1 == "nc" && $3 == "setup" && $5 == "after_ask" { s[$2] += $4 + $6 }
+    traced=$(awk '$1 == "nc" && $3 == "setup" { s[$2] += $4 }
                   $1 == "area" { s[$7] += $15 } END { for (n = 0; n < 4; n++) print s[n] + 0 }' "$tr")
     if [ "$(echo "$board" | wc -l)" = 4 ] &&
         paste <(echo "$board") <(echo "$traced") |
