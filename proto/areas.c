@@ -46,35 +46,28 @@ static uint32_t areas_grid_bands(uint32_t width, uint32_t height, uint32_t k)
     return r0;
 }
 
-/* Smallest divisor of width that is >= want (want <= width), so that a
- * scanline cut in pieces of that width has no short leftover piece.  A
- * divisor d >= want has its cofactor width / d <= width / want, so the
- * smallest such d is also width over the largest divisor <= width / want:
- * the scan goes up from want and down from width / want together, and the
- * first divisor either meets is the answer (the RC works it out at every
- * cut scanline's start: one scan alone can take tens of steps, 100 up to
- * 128 on a 512-pixel scanline where the other takes two, 5 down to 4). */
-static uint32_t areas_piece_width(uint32_t width, uint32_t want)
+/* The pieces a scanline is cut into at target size t: about t each
+ * (ceil(width / t) of them), none below the smallest-area bound (at most
+ * width / min_pixels, at least one).  Chosen at a scanline's start only:
+ * t never grows, so neither do the pieces but by a pixel of rounding. */
+static uint32_t areas_pieces(const struct areas *s, uint32_t t)
 {
-    uint32_t d = want == 0 ? 1 : want;
-    /* q >= 1: width % 1 == 0 ends the loop before q could reach 0 */
-    for (uint32_t q = width / d;; d++, q--) {
-        if (width % d == 0)
-            return d;
-        if (width % q == 0)
-            return width / q;
-    }
+    uint32_t n = (s->width + t - 1) / t, most = s->width / s->min_pixels;
+    if (n > most)
+        n = most;
+    return n ? n : 1;
 }
 
 /* Up to max_ncs NCs: k, factor.  From `links1 replay T --ncs N --areas K
- * --guided F` over K in {4096, 8192, 16384, 32768} and F in {2, 3, 4} on a
- * trace of demo.scn at 512x480 (docs/areas.md has the sweep). */
+ * --guided F` over K in {4096, ..., 65536} and F in {1, 2, 3, 4} on traces
+ * of demo, glass and molecule at 512x480: the pair whose worst speed-up
+ * over the three is nearest that trace's best (docs/areas.md). */
 static const struct {
     uint32_t max_ncs, k, factor;
 } areas_decreasing_rule[] = {
     {64, 32768, 2},
-    {128, 32768, 3},
-    {UINT32_MAX, 16384, 3},
+    {128, 8192, 4},
+    {UINT32_MAX, 8192, 3},
 };
 
 void areas_decreasing_defaults(uint32_t ncs, uint32_t *k, uint32_t *factor)
@@ -151,12 +144,13 @@ static int areas_next_grid(struct areas *s, struct area *a)
 }
 
 /* Guided self-scheduling in two shapes.  The target size t never grows
- * (pixels_left only shrinks), so neither do the areas:
- *   - at a scanline start with t >= width: floor(t / width) whole scanlines;
- *   - at a scanline start with t < width: the scanline is cut into pieces of
- *     the smallest divisor of width >= t, all equally wide; the width is
- *     chosen only at scanline starts, so a scanline never ends on a short
- *     piece that a wider one would follow. */
+ * (pixels_left only shrinks), so neither do the areas, but by a pixel:
+ *   - at a scanline start with t >= width: floor(t / width) whole
+ *     scanlines;
+ *   - at a scanline start with t < width: the scanline is cut into
+ *     areas_pieces pieces, as equal as whole pixels allow (piece i ends
+ *     at width (i + 1) / pieces); chosen only at scanline starts, so a
+ *     scanline never ends on a short piece. */
 static int areas_next_decreasing(struct areas *s, struct area *a)
 {
     if (s->pixels_left == 0)
@@ -181,14 +175,17 @@ static int areas_next_decreasing(struct areas *s, struct area *a)
         s->pixels_left -= lines * s->width;
         return 1;
     }
-    if (s->next_x == 0)
-        s->piece = areas_piece_width(s->width, t);
+    if (s->next_x == 0) {
+        s->pieces = areas_pieces(s, t);
+        s->piece = 0;
+    }
+    uint32_t end = s->width * ++s->piece / s->pieces; /* < 2^24: AREAS_MAX_DIM */
     a->x = s->next_x;
     a->y = s->next_y;
-    a->w = s->piece;
+    a->w = end - s->next_x;
     a->h = 1;
-    s->pixels_left -= s->piece;
-    s->next_x += s->piece;
+    s->pixels_left -= a->w;
+    s->next_x = end;
     if (s->next_x == s->width) {
         s->next_x = 0;
         s->next_y++;

@@ -14,8 +14,10 @@
  *   AREAS_DECREASING  guided self-scheduling: each next area holds about
  *                     remaining pixels / (AREAS_GUIDED_FACTOR * ncs), but
  *                     never fewer pixels than one area of the k-area grid.
- *                     First bands of whole scanlines, then equal pieces of
- *                     one scanline; sizes never grow.
+ *                     First bands of whole scanlines, then pieces of one
+ *                     scanline, a scanline's as equal as whole pixels
+ *                     allow; no area larger than the one before it but
+ *                     by that rounding (a pixel).
  *   AREAS_LINES       simple dynamic on the paper's job unit, "one scanline
  *                     or part of one": k >= height cuts every scanline into
  *                     k/height equal pieces (rounded as the grid rounds),
@@ -80,7 +82,8 @@ struct areas {
     uint32_t min_pixels;    /* no area smaller than this (but a piece) */
     uint32_t next_y;        /* first scanline not yet fully handed out */
     uint32_t next_x;        /* next pixel of scanline next_y (0: line start) */
-    uint32_t piece;         /* piece width while scanline next_y is cut */
+    uint32_t pieces;        /* pieces scanline next_y is cut into */
+    uint32_t piece;         /* the next one of them */
     uint32_t pixels_left;   /* pixels not yet handed out */
     uint32_t handed;        /* areas handed out so far */
     uint32_t factor;        /* guided divisor (AREAS_GUIDED_FACTOR unless set) */
@@ -88,9 +91,10 @@ struct areas {
 };
 
 /* The decreasing schedule's k and guided factor for ncs NCs when the
- * caller leaves them to the board (k = 0, no factor set): the best of k in
- * 4096..32768 and factors 2..4 in `links1 replay` of demo.scn at 512x480,
- * NCs asking ahead (docs/areas.md). */
+ * caller leaves them to the board (k = 0, no factor set): of k in
+ * 4096..65536 and factors 1..4, the one whose worst speed-up over the
+ * traces of demo, glass and molecule at 512x480 in `links1 replay` is
+ * nearest each trace's best, NCs asking ahead (docs/areas.md). */
 void areas_decreasing_defaults(uint32_t ncs, uint32_t *k, uint32_t *factor);
 /* The k and factor a schedule of mode for ncs NCs takes when given k and
  * factor (0: its default; static's k is ncs; the grids use no factor and

@@ -1,6 +1,6 @@
 /* test_areas.c: the RC's area schedules cover the screen exactly once,
  * stay inside it, have the sizes each schedule promises, and decreasing
- * areas never grow. */
+ * areas never grow (but by a pixel of a scanline's rounding). */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -14,7 +14,8 @@ struct walk {
     uint32_t areas;        /* areas handed out */
     uint32_t min_px, max_px; /* smallest and largest area, pixels */
     uint32_t first_px, last_px;
-    int grew;              /* an area larger than the one before */
+    int grew;              /* an area larger than the one before by more
+                              than a pixel */
     struct area first, last;
 };
 
@@ -57,7 +58,7 @@ static int areas_walk(enum areas_mode mode, uint32_t w, uint32_t h, uint32_t ncs
         }
         out->last = a;
         out->last_px = px;
-        if (px > prev)
+        if (prev != UINT32_MAX && px > prev + 1)
             out->grew = 1;
         prev = px;
         if (px < out->min_px)
@@ -156,7 +157,8 @@ static void test_grid_areas_nearly_equal(void)
 }
 
 /* Decreasing: full coverage for every size, NC count and bound; sizes never
- * grow; no area below the k-grid's area size. */
+ * grow but by the pixel a scanline's pieces round by; no area below the
+ * k-grid's area size. */
 static void test_decreasing_never_grows(void)
 {
     struct walk wk;
@@ -199,7 +201,7 @@ static void test_decreasing_paper_case(void)
     /* 245760 px / (2 * 64) = 1920 px = 3.75 scanlines -> 3 whole scanlines */
     CHECK_EQ_INT(wk.first.w, 512);
     CHECK_EQ_INT(wk.first.h, 3);
-    /* bound 240 px: pieces are 256 px, the smallest divisor of 512 >= 240 */
+    /* bound 240 px: 512 / 240 leaves room for two pieces, of 256 px */
     CHECK_EQ_INT(wk.last.w, 256);
     CHECK_EQ_INT(wk.last.h, 1);
     CHECK_EQ_INT(wk.min_px, 256);
@@ -224,14 +226,16 @@ static void test_more_ncs_than_scanlines(void)
             CHECK_EQ_INT(wk.areas, 1);
 }
 
-/* A prime width has no divisor to cut scanlines by: decreasing falls back
- * to whole scanlines instead of one-pixel areas. */
-static void test_decreasing_prime_width_uses_whole_scanlines(void)
+/* A prime width cuts as well as any: pieces as equal as whole pixels
+ * allow (509 at a bound of 239 px: 254 and 255), no piece below the
+ * bound, none a pixel (the divisor the width lacks). */
+static void test_decreasing_prime_width_cuts_near_equal_pieces(void)
 {
     struct walk wk;
     if (areas_walk(AREAS_DECREASING, 509, 480, 64, 1024, &wk)) {
-        CHECK_EQ_INT(wk.min_px, 509);
-        CHECK_EQ_INT(wk.last.w, 509);
+        CHECK_EQ_INT(wk.min_px, 254);
+        CHECK(wk.last.w == 254 || wk.last.w == 255);
+        CHECK_EQ_INT(wk.last.x + wk.last.w, 509);
     }
 }
 
@@ -284,8 +288,8 @@ static void test_guided_factor(void)
 static void test_decreasing_defaults_by_ncs(void)
 {
     static const uint32_t want[][3] = {
-        {1, 32768, 2}, {8, 32768, 2}, {64, 32768, 2}, {65, 32768, 3},
-        {128, 32768, 3}, {129, 16384, 3}, {254, 16384, 3}, {4096, 16384, 3},
+        {1, 32768, 2}, {8, 32768, 2}, {64, 32768, 2}, {65, 8192, 4},
+        {128, 8192, 4}, {129, 8192, 3}, {254, 8192, 3}, {4096, 8192, 3},
     };
     for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
         uint32_t k = 0, factor = 0;
@@ -408,7 +412,7 @@ int main(void)
     RUN(test_decreasing_never_grows);
     RUN(test_decreasing_paper_case);
     RUN(test_more_ncs_than_scanlines);
-    RUN(test_decreasing_prime_width_uses_whole_scanlines);
+    RUN(test_decreasing_prime_width_cuts_near_equal_pieces);
     RUN(test_bad_arguments_are_refused);
     RUN(test_guided_factor);
     RUN(test_decreasing_defaults_by_ncs);
