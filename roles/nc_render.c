@@ -195,15 +195,22 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, uint8_t
 
 /* After the area's set-up and after each pixel: the trace mark, and the
  * request for the next area once the pixels left would take no longer than
- * a round trip (at once while no round trip has been seen: the first area
- * came with MSG_NC_START).  Integer compares: left * elapsed <= rtt * done. */
+ * a round trip.  While no round trip has been seen (the first area came
+ * with MSG_NC_START), it asks at once and times the first one by looking
+ * for the answer after each pixel.  Integer compares: left * elapsed <=
+ * rtt * done. */
 static void nc_pixel(void *arg)
 {
     struct nc_job *job = arg;
     if (job->trace)
         insn_mark_trace_pixel();
-    if (!job->ahead || job->asked)
+    if (!job->ahead)
         return;
+    if (job->asked) {
+        if (job->rtt == NC_RTT_UNKNOWN && line_recv_ready(UNITS_RC_CORE))
+            job->rtt = ktime_now() - job->sent;
+        return;
+    }
     uint64_t now = ktime_now();
     uint32_t left = job->area_pixels - job->done;
     int soon = job->rtt == NC_RTT_UNKNOWN ||
@@ -236,7 +243,7 @@ static int nc_area(struct nc_job *job, struct line_msg *m, char *why, size_t cap
     job->done = 0;
     job->area_pixels = a.w * a.h;
     job->started = ktime_now();
-    int hook = job->trace || (job->ahead && !job->asked);
+    int hook = job->trace || (job->ahead && (!job->asked || job->rtt == NC_RTT_UNKNOWN));
     render_status_t st = render_area_marked(&job->ctx, &job->clip, &a, &job->opt, job->pixels,
                                             hook ? nc_pixel : NULL, job);
     job->per_pixel = (ktime_now() - job->started) / job->area_pixels;

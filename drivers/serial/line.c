@@ -188,6 +188,14 @@ int line_try_recv_arm(uint32_t peer, struct line_msg *m, int *ready)
     return r;
 }
 
+int line_recv_ready(uint32_t peer)
+{
+    struct line_dir *out, *in;
+    if (line_dirs(peer, &out, &in) != LINE_OK)
+        return 0;
+    return ringbuf_used(&in->ring) >= LINEMSG_HEADER_SIZE;
+}
+
 int line_recv_ready_arm(uint32_t peer)
 {
     struct line_dir *out, *in;

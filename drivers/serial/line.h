@@ -42,6 +42,8 @@ uint32_t line_count(void);
 
 int line_try_send(uint32_t peer, struct line_msg *m);
 int line_try_recv(uint32_t peer, struct line_msg *m);
+/* 1 if a message from peer waits to be taken (nothing taken or armed). */
+int line_recv_ready(uint32_t peer);
 /* Blocking forms: wait (sleeping) until done or deadline (ticks, 0 = none). */
 int line_send(uint32_t peer, struct line_msg *m, uint64_t deadline);
 int line_recv(uint32_t peer, struct line_msg *m, uint64_t deadline);

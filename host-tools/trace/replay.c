@@ -153,6 +153,7 @@ struct replay_state {
     double *sent;       /* [ncs]: when that request left */
     double *busy_until; /* [ncs]: the NC's work ends */
     double *computing;  /* [ncs]: the NC's computing so far */
+    double *rtt;        /* [ncs]: the round trip the NC last saw (< 0: none) */
     double rc_free, rc_busy;
 };
 
@@ -191,6 +192,7 @@ static void replay_state_free(struct replay_state *s)
     free(s->sent);
     free(s->busy_until);
     free(s->computing);
+    free(s->rtt);
     replay_source_free(&s->src, s->t->ncs);
 }
 
@@ -213,30 +215,46 @@ static int replay_state_init(struct replay_state *s, char *err, size_t cap)
     s->sent = malloc(c->ncs * sizeof *s->sent);
     s->busy_until = calloc(c->ncs, sizeof *s->busy_until);
     s->computing = calloc(c->ncs, sizeof *s->computing);
+    s->rtt = malloc(c->ncs * sizeof *s->rtt);
+    for (uint32_t n = 0; s->rtt && n < c->ncs; n++)
+        s->rtt[n] = -1;
     r->areas = calloc(s->total, sizeof *r->areas);
     r->nc_insns = calloc(c->ncs, sizeof *r->nc_insns);
     r->nc_setup_end = calloc(c->ncs, sizeof *r->nc_setup_end);
     if (replay_pricer_init(&s->p, t) != 0 || !s->pending || !s->sent || !s->busy_until ||
-        !s->computing || !r->areas || !r->nc_insns || !r->nc_setup_end ||
+        !s->computing || !s->rtt || !r->areas || !r->nc_insns || !r->nc_setup_end ||
         (c->as_recorded && replay_source_recorded(&s->src, t) != 0))
         return replay_fail(err, cap, "out of memory");
     return 0;
 }
 
-/* The request line's lead of an NC asking ahead: one round trip before
- * the area's end, never before its start. */
-static double replay_ask_time(const struct replay_state *s, double start, double end)
+/* When NC nc asks for the area after one it computes from start to end:
+ * asking ahead, the round trip it last saw before the end, never before
+ * the start, and at the start while it has seen none (its first area came
+ * with its start); else at the end. */
+static double replay_ask_time(const struct replay_state *s, uint32_t nc, double start, double end)
 {
     if (!s->c->prefetch)
         return end;
-    double lead = replay_line(s->c, REPLAY_REQUEST_BYTES) + replay_line(s->c, REPLAY_ANSWER_BYTES) +
-                  (double)s->p.rc_mean * s->us_per;
-    return end - lead > start ? end - lead : start;
+    if (s->rtt[nc] < 0)
+        return start;
+    return end - s->rtt[nc] > start ? end - s->rtt[nc] : start;
 }
 
-/* NC nc computes area a (insns instructions) from start; it asks again
- * (during an area that came with its start it has seen no round trip:
- * asking ahead, it asks as it starts). */
+/* The round trip NC nc sees when the answer to its request arrives
+ * (roles/nc_render.c): all of it while it has seen none (it looks for
+ * the answer after each pixel then) or if it was waiting (idle since its
+ * area ended); else from its request to its area's end, when it finds the
+ * answer there, which lowers its estimate only. */
+static void replay_see_round_trip(struct replay_state *s, uint32_t nc, double arrive)
+{
+    int exact = s->rtt[nc] < 0 || arrive > s->busy_until[nc];
+    double seen = (exact ? arrive : s->busy_until[nc]) - s->sent[nc];
+    if (exact || seen < s->rtt[nc])
+        s->rtt[nc] = seen;
+}
+
+/* NC nc computes area a (insns instructions) from start; it asks again. */
 static void replay_compute(struct replay_state *s, uint32_t nc, const struct area *a,
                            uint64_t insns, int exact, int with_start, double served[3],
                            double start)
@@ -250,7 +268,7 @@ static void replay_compute(struct replay_state *s, uint32_t nc, const struct are
     s->busy_until[nc] = end;
     s->computing[nc] += end - start;
     r->nc_insns[nc] += insns;
-    s->sent[nc] = with_start && s->c->prefetch ? start : replay_ask_time(s, start, end);
+    s->sent[nc] = replay_ask_time(s, nc, start, end);
     s->pending[nc] = s->sent[nc] + replay_line(s->c, REPLAY_REQUEST_BYTES);
 }
 
@@ -325,6 +343,7 @@ static int replay_serve(struct replay_state *s, char *err, size_t cap)
             return replay_fail(err, cap, "the schedule handed out more areas than it counts");
         double arrive = end + replay_line(s->c, REPLAY_ANSWER_BYTES);
         double served[3] = {s->sent[nc], start, end};
+        replay_see_round_trip(s, nc, arrive);
         replay_compute(s, nc, &a, insns, exact, 0, served,
                        arrive > s->busy_until[nc] ? arrive : s->busy_until[nc]);
     }
