@@ -76,10 +76,8 @@ static void lb_item_corners(const render_frame_t *f, uint32_t item, vec3_t c[8])
         num_t one = NUM_ONE, less = num_neg(NUM_ONE);
         m[k] = xform_point(&back, vec3_make(k & 1 ? one : less, k & 2 ? one : less,
                                             k & 4 ? one : less));
-        lo = k ? vec3_make(num_min(lo.x, m[k].x), num_min(lo.y, m[k].y), num_min(lo.z, m[k].z))
-               : m[k];
-        hi = k ? vec3_make(num_max(hi.x, m[k].x), num_max(hi.y, m[k].y), num_max(hi.z, m[k].z))
-               : m[k];
+        lo = k ? vec3_min(lo, m[k]) : m[k];
+        hi = k ? vec3_max(hi, m[k]) : m[k];
     }
     for (int i = 0; i < 3; i++) {
         num_t slack = num_scale2(num_sub(vec3_get(b->hi, i), vec3_get(b->lo, i)), -4);

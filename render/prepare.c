@@ -76,8 +76,8 @@ static inline int prep_aabb_is_sat(const aabb_t *b)
 /* b grown to hold o, both not empty */
 static inline void prep_aabb_grow(aabb_t *b, const aabb_t *o)
 {
-    b->lo = vec3_make(num_min(b->lo.x, o->lo.x), num_min(b->lo.y, o->lo.y), num_min(b->lo.z, o->lo.z));
-    b->hi = vec3_make(num_max(b->hi.x, o->hi.x), num_max(b->hi.y, o->hi.y), num_max(b->hi.z, o->hi.z));
+    b->lo = vec3_min(b->lo, o->lo);
+    b->hi = vec3_max(b->hi, o->hi);
 }
 
 /* inline: the DM grows boxes four times a triangle, every frame */
@@ -433,8 +433,8 @@ static inline __attribute__((always_inline)) void prep_prim(const scene_prim_t *
          * is the least of the three v - pad, bit for bit. */
         vec3_t lo = v[0], hi = v[0];
         for (int k = 1; k < 3; k++) {
-            lo = vec3_make(num_min(lo.x, v[k].x), num_min(lo.y, v[k].y), num_min(lo.z, v[k].z));
-            hi = vec3_make(num_max(hi.x, v[k].x), num_max(hi.y, v[k].y), num_max(hi.z, v[k].z));
+            lo = vec3_min(lo, v[k]);
+            hi = vec3_max(hi, v[k]);
         }
         aabb_t b = {vec3_sub(lo, vec3_make(pad, pad, pad)), vec3_add(hi, vec3_make(pad, pad, pad))};
         p->v0 = v[0];

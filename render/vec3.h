@@ -23,6 +23,16 @@ static inline vec3_t vec3_scale(vec3_t a, num_t s)
     return vec3_make(num_mul(a.x, s), num_mul(a.y, s), num_mul(a.z, s));
 }
 static inline vec3_t vec3_neg(vec3_t a) { return vec3_make(num_neg(a.x), num_neg(a.y), num_neg(a.z)); }
+
+/* Componentwise least and greatest. */
+static inline vec3_t vec3_min(vec3_t a, vec3_t b)
+{
+    return vec3_make(num_min(a.x, b.x), num_min(a.y, b.y), num_min(a.z, b.z));
+}
+static inline vec3_t vec3_max(vec3_t a, vec3_t b)
+{
+    return vec3_make(num_max(a.x, b.x), num_max(a.y, b.y), num_max(a.z, b.z));
+}
 /* a + b*s */
 static inline vec3_t vec3_madd(vec3_t a, vec3_t b, num_t s) { return vec3_add(a, vec3_scale(b, s)); }
 static inline num_t vec3_dot(vec3_t a, vec3_t b) { return num_dot3(a.x, a.y, a.z, b.x, b.y, b.z); }
