@@ -319,7 +319,8 @@ typedef struct {
     num_t tnear, tfar;
     int near_axis, far_axis;
     num_t parallel;
-    int outside; /* the ray runs parallel to a slab, outside it */
+    int outside;     /* the ray runs parallel to a slab, outside it */
+    num_t outside_by; /* by this much (the most of such slabs; 0: none) */
 } prim_box_span_t;
 
 /* One slab of prim_box_span: axis, with the ray's local oa and da on it. */
@@ -328,6 +329,8 @@ static inline __attribute__((always_inline)) void prim_box_slab(prim_box_span_t 
 {
     if (num_eq(da, NUM_ZERO)) {
         s->outside |= num_lt(oa, num_neg(NUM_ONE)) || num_gt(oa, NUM_ONE);
+        s->outside_by = num_max(s->outside_by, num_max(num_sub(num_neg(NUM_ONE), oa),
+                                                       num_sub(oa, NUM_ONE)));
         s->parallel = num_min(s->parallel, num_min(num_abs(num_add(oa, NUM_ONE)),
                                                    num_abs(num_sub(NUM_ONE, oa))));
         return;
@@ -360,6 +363,7 @@ static inline __attribute__((always_inline)) void prim_box_span(vec3_t o, vec3_t
     s->near_axis = s->far_axis = -1;
     s->parallel = NUM_FAR;
     s->outside = 0;
+    s->outside_by = NUM_ZERO;
     prim_box_slab(s, 0, o.x, d.x);
     prim_box_slab(s, 1, o.y, d.y);
     prim_box_slab(s, 2, o.z, d.z);
@@ -369,8 +373,10 @@ static inline __attribute__((always_inline)) void prim_box_span(vec3_t o, vec3_t
  * position, delta at t (edge_error[0], and the ray's own error in local
  * units): the entry and exit t move by delta / |d| of the axes that give
  * them, so |tfar - tnear| * |dn| * |df| < delta * (|dn| + |df|), without a
- * division; a slab the ray runs parallel to, by its distance to a face.
- * Only a decision about the part of the ray after tmin and before tmax. */
+ * division; a slab the ray runs parallel to, by its distance to a face
+ * (outside one by more than delta, it misses for certain, however near
+ * the other slabs' t lie).  Only a decision about the part of the ray
+ * after tmin and before tmax. */
 static int prim_box_edge_uncertain(const render_prim_t *p, const prim_box_span_t *s, vec3_t d,
                                    const ray_error_t *err, num_t tmin, num_t tmax)
 {
@@ -381,6 +387,8 @@ static int prim_box_edge_uncertain(const render_prim_t *p, const prim_box_span_t
         return 0;
     num_t mid = num_mul(num_add(lo, hi), NUM_HALF);
     num_t delta = num_add(p->edge_error[0], num_mul(ray_error_at(err, mid), p->scale));
+    if (num_gt(s->outside_by, delta))
+        return 0;
     if (num_lt(s->parallel, delta))
         return 1;
     num_t dn = num_abs(vec3_get(d, s->near_axis)), df = num_abs(vec3_get(d, s->far_axis));

@@ -440,6 +440,28 @@ static void test_cone_uncertain(void)
     CHECK_EQ_INT(u, 1);
 }
 
+/* A ray within its error (1e-3) of a box's face is flagged, hit or miss;
+ * one that runs parallel to a slab and outside it by more than that
+ * misses for certain, however near its other slabs' entry and exit lie
+ * (here the x entry at t 10 against the y exit at t 6, so near over the
+ * x axis's slight slope that 1e-3 could move it past). */
+static void test_box_uncertain(void)
+{
+    ts_init(&ts, 8, 8);
+    ts_box(&ts, 0, 0, ts_v(0, 0, 10), ts_v(1, 1, 1));
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    int u = -1;
+    CHECK_NEAR(hit_uncertain(f, ray_of(0, 0, 0, 0, 0, 1), 1e-3, &u), 9.0, TOL);
+    CHECK_EQ_INT(u, 0);
+    CHECK_NEAR(hit_uncertain(f, ray_of(1.0001, -5, 10.5, -1e-5, 1, 0), 1e-3, &u), -1, 0);
+    CHECK_EQ_INT(u, 1); /* grazes the x face */
+    CHECK_NEAR(hit_uncertain(f, ray_of(1.0001, -5, 14, -1e-5, 1, 0), 1e-3, &u), -1, 0);
+    CHECK_EQ_INT(u, 0); /* 3 above the z slab it runs along */
+}
+
 /* A small deterministic generator for the tests below: uniform in [lo, hi). */
 static double rnd(unsigned *state, double lo, double hi)
 {
@@ -547,6 +569,7 @@ int main(void)
     RUN(test_cone);
     RUN(test_cone_transformed);
     RUN(test_cone_uncertain);
+    RUN(test_box_uncertain);
     RUN(test_density_bound);
     RUN(test_aabb_around);
     return check_exit();
