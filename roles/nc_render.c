@@ -49,6 +49,9 @@ struct nc_job {
     int asked;          /* 1: a request is out, not answered yet */
     uint32_t finished;  /* areas finished in this frame */
     uint64_t sent;      /* ticks: when that request left */
+    uint32_t since_ask, next_look; /* pixels since, and the next pixel to
+                                      look for its answer at (no round trip
+                                      seen yet) */
     uint64_t rtt;       /* ticks: a round trip to the RC, as last seen
                            (NC_RTT_UNKNOWN: none yet, ask at once) */
     uint64_t started;   /* ticks: when the current area's pixels began */
@@ -84,6 +87,8 @@ static void nc_request(struct nc_job *job, struct line_msg *m, int32_t status, c
     nc_say(m, MSG_NC_REQ, status, why);
     job->asked = 1;
     job->sent = ktime_now();
+    job->since_ask = 0;
+    job->next_look = 1;
 }
 
 /* A round trip took at most `seen` ticks (exactly, if the NC waited). */
@@ -197,8 +202,9 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, uint8_t
  * request for the next area once the pixels left would take no longer than
  * a round trip.  While no round trip has been seen (the first area came
  * with MSG_NC_START), it asks at once and times the first one by looking
- * for the answer after each pixel.  Integer compares: left * elapsed <=
- * rtt * done. */
+ * for the answer after 1, 2, 4, 8 ... pixels: a few looks in all, and a
+ * round trip within twice the pixels' time it took.
+ * Integer compares: left * elapsed <= rtt * done. */
 static void nc_pixel(void *arg)
 {
     struct nc_job *job = arg;
@@ -207,8 +213,11 @@ static void nc_pixel(void *arg)
     if (!job->ahead)
         return;
     if (job->asked) {
-        if (job->rtt == NC_RTT_UNKNOWN && line_recv_ready(UNITS_RC_CORE))
-            job->rtt = ktime_now() - job->sent;
+        if (job->rtt == NC_RTT_UNKNOWN && ++job->since_ask == job->next_look) {
+            job->next_look *= 2;
+            if (line_recv_ready(UNITS_RC_CORE))
+                job->rtt = ktime_now() - job->sent;
+        }
         return;
     }
     uint64_t now = ktime_now();

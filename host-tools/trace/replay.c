@@ -154,6 +154,8 @@ struct replay_state {
     double *busy_until; /* [ncs]: the NC's work ends */
     double *computing;  /* [ncs]: the NC's computing so far */
     double *rtt;        /* [ncs]: the round trip the NC last saw (< 0: none) */
+    double *area_start; /* [ncs]: when the NC's current area began */
+    uint32_t *area_px;  /* [ncs]: its pixels */
     double rc_free, rc_busy;
 };
 
@@ -193,6 +195,8 @@ static void replay_state_free(struct replay_state *s)
     free(s->busy_until);
     free(s->computing);
     free(s->rtt);
+    free(s->area_start);
+    free(s->area_px);
     replay_source_free(&s->src, s->t->ncs);
 }
 
@@ -216,13 +220,15 @@ static int replay_state_init(struct replay_state *s, char *err, size_t cap)
     s->busy_until = calloc(c->ncs, sizeof *s->busy_until);
     s->computing = calloc(c->ncs, sizeof *s->computing);
     s->rtt = malloc(c->ncs * sizeof *s->rtt);
+    s->area_start = calloc(c->ncs, sizeof *s->area_start);
+    s->area_px = calloc(c->ncs, sizeof *s->area_px);
     for (uint32_t n = 0; s->rtt && n < c->ncs; n++)
         s->rtt[n] = -1;
     r->areas = calloc(s->total, sizeof *r->areas);
     r->nc_insns = calloc(c->ncs, sizeof *r->nc_insns);
     r->nc_setup_end = calloc(c->ncs, sizeof *r->nc_setup_end);
     if (replay_pricer_init(&s->p, t) != 0 || !s->pending || !s->sent || !s->busy_until ||
-        !s->computing || !s->rtt || !r->areas || !r->nc_insns || !r->nc_setup_end ||
+        !s->computing || !s->rtt || !s->area_start || !s->area_px || !r->areas || !r->nc_insns || !r->nc_setup_end ||
         (c->as_recorded && replay_source_recorded(&s->src, t) != 0))
         return replay_fail(err, cap, "out of memory");
     return 0;
@@ -242,15 +248,28 @@ static double replay_ask_time(const struct replay_state *s, uint32_t nc, double 
 }
 
 /* The round trip NC nc sees when the answer to its request arrives
- * (roles/nc_render.c): all of it while it has seen none (it looks for
- * the answer after each pixel then) or if it was waiting (idle since its
- * area ended); else from its request to its area's end, when it finds the
+ * (roles/nc_render.c): all of it if it was waiting (idle since its area
+ * ended); while it has seen none, up to its next look for the answer
+ * (after 1, 2, 4 ... of its area's pixels, taken as equally long) or its
+ * area's end; else from its request to its area's end, when it finds the
  * answer there, which lowers its estimate only. */
 static void replay_see_round_trip(struct replay_state *s, uint32_t nc, double arrive)
 {
-    int exact = s->rtt[nc] < 0 || arrive > s->busy_until[nc];
-    double seen = (exact ? arrive : s->busy_until[nc]) - s->sent[nc];
-    if (exact || seen < s->rtt[nc])
+    double end = s->busy_until[nc], seen_at = end;
+    if (arrive > end) {
+        s->rtt[nc] = arrive - s->sent[nc];
+        return;
+    }
+    if (s->rtt[nc] < 0) {
+        double per = (end - s->area_start[nc]) / (s->area_px[nc] ? s->area_px[nc] : 1);
+        uint64_t k = 1;
+        while (s->area_start[nc] + (double)k * per < arrive)
+            k *= 2;
+        double look = s->area_start[nc] + (double)k * per;
+        seen_at = look < end ? look : end;
+    }
+    double seen = seen_at - s->sent[nc];
+    if (s->rtt[nc] < 0 || seen < s->rtt[nc])
         s->rtt[nc] = seen;
 }
 
@@ -266,6 +285,8 @@ static void replay_compute(struct replay_state *s, uint32_t nc, const struct are
                                                  served[2], start, end};
     r->exact += (uint32_t)exact;
     s->busy_until[nc] = end;
+    s->area_start[nc] = start;
+    s->area_px[nc] = a->w * a->h;
     s->computing[nc] += end - start;
     r->nc_insns[nc] += insns;
     s->sent[nc] = replay_ask_time(s, nc, start, end);
