@@ -228,7 +228,8 @@ static int replay_state_init(struct replay_state *s, char *err, size_t cap)
     r->nc_insns = calloc(c->ncs, sizeof *r->nc_insns);
     r->nc_setup_end = calloc(c->ncs, sizeof *r->nc_setup_end);
     if (replay_pricer_init(&s->p, t) != 0 || !s->pending || !s->sent || !s->busy_until ||
-        !s->computing || !s->rtt || !s->area_start || !s->area_px || !r->areas || !r->nc_insns || !r->nc_setup_end ||
+        !s->computing || !s->rtt || !s->area_start || !s->area_px || !r->areas ||
+        !r->nc_insns || !r->nc_setup_end ||
         (c->as_recorded && replay_source_recorded(&s->src, t) != 0))
         return replay_fail(err, cap, "out of memory");
     return 0;
