@@ -295,7 +295,8 @@ static inline __attribute__((always_inline)) void trace_own_prims_as(trace_walk_
     int by_prim = flat || c->prim_count > 1 || (c->child_count && !screen && !w->by_list);
     for (uint32_t k = 0; k < c->prim_count; k++) {
         uint32_t prim = f->prim_list[c->first_prim + k];
-        if (by_prim && (flat || (f->prims[prim].kind != SCENE_PRIM_BOX && f->prims[prim].kind != SCENE_PRIM_TRIANGLE)) &&
+        uint8_t kind = f->prims[prim].kind; /* enum scene_prim_kind */
+        if (by_prim && (flat || (kind != SCENE_PRIM_BOX && kind != SCENE_PRIM_TRIANGLE)) &&
             !trace_box(w, &f->prims[prim].bounds))
             continue;
         trace_test_prim_as(w, mode, prim);

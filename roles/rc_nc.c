@@ -134,13 +134,14 @@ static void rc_nc_start_one(struct rc_run *run, uint32_t k, struct line_msg *m, 
     wire_put_u8(m->payload, flags);
     wire_put_u32(m->payload + 1, largest);
     wire_put_u8(m->payload + 5, clip);
-    run->nc[k].since = ktime_now();
     if (run->trace)
         insn_mark_trace_span_begin();
     struct area a;
     int handed = run->status == LINK_OK && areas_next(&run->sched, &a);
-    if (handed)
+    if (handed) /* rc_nc_hand starts its clock */
         m->len = (uint16_t)(m->len + rc_nc_hand(run, k, &a, m->payload + MSG_NC_START_SIZE));
+    else
+        run->nc[k].since = ktime_now();
     if (run->trace)
         rc_nc_trace_served(run, k, handed);
     rc_nc_send(k, m);
