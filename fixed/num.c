@@ -85,28 +85,48 @@ static uint32_t num__quot_wide(uint32_t ua, uint32_t ub)
     return num__udiv_64_32(n, ub);
 }
 
-/* |a| / |b| rounded, of the sign given, for ub > 0. */
-static num_t num__div_mag(uint32_t ua, uint32_t ub, int negative)
+/* num_div of magnitudes ua and ub, of the sign s (0, or all ones when the
+ * signs differ), where num_div's common case does not hold: a marker
+ * (magnitude INT32_MAX) or a zero divisor gives a marker of that sign,
+ * anything else the rounded quotient (num__quot_wide: any divisor).  Not
+ * inlined, so that num_div keeps to a few registers. */
+static __attribute__((noinline)) num_t num__div_rest(uint32_t ua, uint32_t ub, uint32_t s)
 {
-    uint32_t q = ub < (uint32_t)1 << (32 - NUM__DIV_STEP1) ? num__quot_narrow(ua, ub)
-                                                           : num__quot_wide(ua, ub);
+    uint32_t q = UINT32_MAX;
+    if (ua != (uint32_t)INT32_MAX && ub != (uint32_t)INT32_MAX && ub != 0)
+        q = num__quot_wide(ua, ub);
+    if (q > (uint32_t)NUM_RAW_MAX)
+        q = (uint32_t)NUM_RAW_SAT;
+    return (num_t)((q ^ s) - s);
+}
+
+/* The common case at once, with num__quot_narrow: a divisor of magnitude
+ * 0 < |b| < 2^(32 - NUM__DIV_STEP1) and a dividend no marker (|a| below
+ * INT32_MAX: (|a| + 1) >> 31 is 0); a quotient out of range is a marker. */
+num_t num_div(num_t a, num_t b)
+{
+    uint32_t s = (uint32_t)((a ^ b) >> 31); /* 0, or all ones: -q is (q ^ s) - s */
+    uint32_t ua = a < 0 ? -(uint32_t)a : (uint32_t)a, ub = b < 0 ? -(uint32_t)b : (uint32_t)b;
+    if (((ub - 1u) >> (32 - NUM__DIV_STEP1)) | ((ua + 1u) >> 31))
+        return num__div_rest(ua, ub, s);
+    uint32_t q = num__quot_narrow(ua, ub);
+    if (q > (uint32_t)NUM_RAW_MAX)
+        q = (uint32_t)NUM_RAW_SAT;
+    return (num_t)((q ^ s) - s);
+}
+
+num_t num__from_ratio_wide(int32_t num, int32_t den)
+{
+    if (den == 0)
+        return num < 0 ? -NUM_RAW_SAT : NUM_RAW_SAT;
+    int negative = (num < 0) != (den < 0);
+    uint32_t ud = den < 0 ? -(uint32_t)den : (uint32_t)den;
+    uint64_t n = ((uint64_t)(num < 0 ? -(uint32_t)num : (uint32_t)num) << NUM_FRAC_BITS) + ud / 2;
+    /* a quotient of 2^32 or more saturates; below, two 32-bit divisions */
+    uint32_t q = (uint32_t)(n >> 32) >= ud ? UINT32_MAX : num__udiv_64_32(n, ud);
     if (q > (uint32_t)NUM_RAW_MAX)
         return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
     return negative ? -(num_t)q : (num_t)q;
-}
-
-num_t num_div(num_t a, num_t b)
-{
-    /* magnitudes (|INT32_MIN| too: never an input, but defined) */
-    uint32_t sa = (uint32_t)(a >> 31), sb = (uint32_t)(b >> 31);
-    uint32_t ua = ((uint32_t)a ^ sa) - sa, ub = ((uint32_t)b ^ sb) - sb;
-    /* a marker (magnitude INT32_MAX), INT32_MIN or b == 0 is looked at
-     * closer; every other pair divides at once */
-    if (ua >= (uint32_t)INT32_MAX || ub - 1u >= (uint32_t)INT32_MAX - 1u) {
-        if (num_is_sat(a) || num_is_sat(b) || b == 0)
-            return num__sticky(a, b);
-    }
-    return num__div_mag(ua, ub, (sa ^ sb) != 0);
 }
 
 num_t num_sqrt(num_t a)

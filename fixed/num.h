@@ -167,7 +167,8 @@ static inline num_t num_mul(num_t a, num_t b)
     return num__mul_wide(a, b);
 }
 
-num_t num_div(num_t a, num_t b);  /* saturates; x/0 is a marker; rounds */
+num_t num_div(num_t a, num_t b); /* saturates; x/0 is a marker; rounds (halves up) */
+
 num_t num_sqrt(num_t a);          /* exact rounding; a < 0 gives 0 */
 num_t num__dot3_exact(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz);
 num_t num_from_f32_bits(uint32_t bits); /* integer decode; saturates;
@@ -179,18 +180,17 @@ static inline num_t num_from_int(int32_t i)
     return num__from_wide((int64_t)i * NUM_ONE_RAW);
 }
 
-/* num/den for integers, rounded; saturates (den == 0 gives a marker) */
+num_t num__from_ratio_wide(int32_t num, int32_t den); /* every case (fixed/num.c) */
+
+/* num/den for integers, rounded (halves away from zero); saturates (den
+ * == 0 gives a marker).  Inline, 0 <= num < 2^(31 - NUM_FRAC_BITS) and den
+ * > 0 (a map's byte over 255): the dividend num 2^NUM_FRAC_BITS + den/2
+ * fits 32 bits, and the quotient the range. */
 static inline num_t num_from_ratio(int32_t num, int32_t den)
 {
-    if (den == 0)
-        return num < 0 ? -NUM_RAW_SAT : NUM_RAW_SAT;
-    int negative = (num < 0) != (den < 0);
-    uint64_t un = (uint64_t)(num < 0 ? -(int64_t)num : num) << NUM_FRAC_BITS;
-    uint64_t ud = (uint64_t)(den < 0 ? -(int64_t)den : den);
-    uint64_t q = (un + ud / 2) / ud;
-    if (q > (uint64_t)NUM_RAW_MAX)
-        return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
-    return negative ? -(num_t)q : (num_t)q;
+    if ((uint32_t)num < (uint32_t)1 << (31 - NUM_FRAC_BITS) && den > 0)
+        return (num_t)((((uint32_t)num << NUM_FRAC_BITS) + (uint32_t)den / 2) / (uint32_t)den);
+    return num__from_ratio_wide(num, den);
 }
 
 /* a.b, one rounding at the end; saturates; a marker gives +NUM_RAW_SAT.

@@ -56,6 +56,21 @@ static num_t ref_div(num_t a, num_t b)
     return negative ? -(num_t)q : (num_t)q;
 }
 
+/* num/den for integers: the rounded quotient in 64 bits (the definition
+ * num_from_ratio's 32-bit paths must give) */
+static num_t ref_ratio(int32_t num, int32_t den)
+{
+    if (den == 0)
+        return num < 0 ? -NUM_RAW_SAT : NUM_RAW_SAT;
+    int negative = (num < 0) != (den < 0);
+    uint64_t un = (uint64_t)(num < 0 ? -(int64_t)num : num) << NUM_FRAC_BITS;
+    uint64_t ud = (uint64_t)(den < 0 ? -(int64_t)den : den);
+    uint64_t q = (un + ud / 2) / ud;
+    if (q > (uint64_t)NUM_RAW_MAX)
+        return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
+    return negative ? -(num_t)q : (num_t)q;
+}
+
 /* floor(sqrt(n)), one result bit a step */
 static uint64_t ref_isqrt(uint64_t n)
 {
@@ -218,6 +233,27 @@ static void test_div_random(void)
     }
 }
 
+/* num_from_ratio against its definition: the edges' raw values as
+ * integers, every small numerator over every small denominator (a map's
+ * bytes over 255, a normal map's signed bytes), and random pairs */
+static void test_ratio(void)
+{
+    fails_shown = 0;
+    for (int i = 0; i < n_edges; i++)
+        for (int j = 0; j < n_edges; j++)
+            SAME(num_from_ratio(edges[i], edges[j]), ref_ratio(edges[i], edges[j]),
+                 "num_from_ratio", edges[i], edges[j]);
+    for (int32_t n = -600; n <= 5000; n++)
+        for (int32_t d = -40; d <= 600; d++)
+            SAME(num_from_ratio(n, d), ref_ratio(n, d), "num_from_ratio", n, d);
+    for (int i = 0; i < RANDOM_PAIRS; i++) {
+        num_t a = rng_num(), b = rng_num();
+        SAME(num_from_ratio(a, b), ref_ratio(a, b), "num_from_ratio", a, b);
+        SAME(num_from_ratio(a >> 18, b >> 20), ref_ratio(a >> 18, b >> 20), "num_from_ratio",
+             a >> 18, b >> 20);
+    }
+}
+
 static void test_sqrt_all_edges(void)
 {
     fails_shown = 0;
@@ -319,6 +355,7 @@ int main(void)
     RUN(test_add_sub_mul);
     RUN(test_div_edges);
     RUN(test_div_random);
+    RUN(test_ratio);
     RUN(test_sqrt_all_edges);
     RUN(test_isqrt_random);
     RUN(test_len3);
