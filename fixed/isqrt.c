@@ -5,9 +5,9 @@
  * back by half that count.  The root of m's top 32 bits comes from a table
  * seed, one Newton step (one 32-bit division) and a correction; the low
  * 16 bits of the root come from one step of Zimmermann's "Karatsuba square
- * root" (one 32-bit division), then a correction that keeps r = m - s*s in
- * [0, 2s].  The corrections make the result exact whatever the seeds;
- * the seeds only make them short.  Every division is 32-bit (the A15's
+ * root" (one 32-bit division), then at most one correction down (where
+ * the remainder m - s*s is below 0).  The top root's correction makes it
+ * exact whatever the seed; the seed only makes it short.  Every division is 32-bit (the A15's
  * UDIV), no 64-bit division and no floating point. */
 #include "fixed/isqrt.h"
 
@@ -52,23 +52,19 @@ uint64_t isqrt_u64(uint64_t n)
     int shift = __builtin_clzll(n) & ~1;
     uint64_t m = n << shift;
     uint32_t hi = (uint32_t)(m >> 32), lo = (uint32_t)m;
-    uint32_t s1 = isqrt_top(hi);
-    uint32_t r1 = hi - s1 * s1; /* 0..2 s1 */
+    uint32_t s1 = isqrt_top(hi); /* in [2^15, 2^16): hi >= 2^30 */
+    uint32_t r1 = hi - s1 * s1;  /* 0..2 s1 */
     /* the next 16 bits: q = (r1 * 2^16 + a1) / (2 s1), a1 = lo's top half;
-     * halved, the dividend fits 32 bits (r1 < 2^17) */
+     * halved, the dividend fits 32 bits (r1 < 2^17).  q <= 2^16 (r1 <= 2
+     * s1, s1 >= 2^15) */
     uint32_t a1 = lo >> 16;
     uint32_t half = (r1 << 15) | (a1 >> 1);
     uint32_t q = half / s1;
     uint32_t u = ((half - q * s1) << 1) | (a1 & 1u); /* remainder, < 2 s1 */
+    /* s = s1 2^16 + q is the root or one above it (Zimmermann's step,
+     * s1 exact and normalised): one above when the remainder m - s^2 = u
+     * 2^16 + lo's low half - q^2 is below 0 */
     uint64_t s = ((uint64_t)s1 << 16) + q;
-    int64_t r = ((int64_t)u << 16) + (lo & 0xFFFFu) - (int64_t)q * q; /* m - s*s */
-    while (r < 0) {
-        r += 2 * (int64_t)s - 1;
-        s--;
-    }
-    while (r > 2 * (int64_t)s) {
-        s++;
-        r -= 2 * (int64_t)s - 1;
-    }
-    return s >> (shift / 2);
+    s -= ((uint64_t)u << 16) + (lo & 0xFFFFu) < (uint64_t)q * q;
+    return (uint32_t)s >> (shift / 2);
 }

@@ -8,7 +8,7 @@
 
 /* floor(sqrt(n)) for any 64-bit n, exact, with two 32-bit divisions and
  * no floating point: a table seed, a Newton step and a Karatsuba step,
- * each checked and corrected (fixed/isqrt.c). */
+ * each corrected (fixed/isqrt.c). */
 uint64_t isqrt_u64(uint64_t n);
 
 #endif

@@ -100,7 +100,6 @@ static void prim_triangle_surface(const render_prim_t *p, hit_t *hit)
         if (!vec3_is_sat(s) && num_gt(vec3_length(s), NUM_C(0.5f)))
             hit->normal = num_lt(vec3_dot(s, p->normal), NUM_ZERO) ? vec3_neg(s) : s;
     }
-    hit->tangent = vec3_normalize(p->e1);
     hit->u = num_add(num_add(num_mul(alpha, p->tex_u[0]), num_mul(beta, p->tex_u[1])),
                      num_mul(gamma, p->tex_u[2]));
     hit->v = num_add(num_add(num_mul(alpha, p->tex_v[0]), num_mul(beta, p->tex_v[1])),
@@ -137,14 +136,14 @@ static vec3_t prim_triangle_map_tangent(const render_prim_t *p, const hit_t *hit
     *uncertain = !exact && (num_is_sat(det) || num_is_sat(err) ||
                             num_lt(num_abs(det), num_mul_int(err, PRIM_TANGENT_MARGIN)));
     if (num_is_sat(det) || !num_gt(num_abs(det), err))
-        return hit->tangent;
+        return prim_hit_tangent(p, hit);
     vec3_t t = vec3_sub(vec3_scale(p->e1, dv2), vec3_scale(p->e2, dv1));
     if (num_lt(det, NUM_ZERO))
         t = vec3_neg(t);
     t = vec3_normalize(vec3_sub(t, vec3_scale(hit->normal, vec3_dot(t, hit->normal))));
     if (vec3_is_sat(t) || !num_gt(vec3_length(t), NUM_HALF)) {
         *uncertain = !exact;
-        return hit->tangent;
+        return prim_hit_tangent(p, hit);
     }
     /* B, the map's y, towards decreasing v (up the image): n x T, unless
      * u and v turn the other way round the normal (det > 0: dP/dv is n x T) */
@@ -157,7 +156,7 @@ vec3_t prim_map_tangent(const render_prim_t *p, const hit_t *hit, int *mirrored,
     if (p->kind == SCENE_PRIM_TRIANGLE)
         return prim_triangle_map_tangent(p, hit, mirrored, uncertain);
     *mirrored = *uncertain = 0;
-    return hit->tangent;
+    return prim_hit_tangent(p, hit);
 }
 
 /* ------------------------------------------------------------ ellipsoid */
@@ -294,7 +293,7 @@ static void prim_ellipsoid_surface(const render_prim_t *p, hit_t *hit)
     hit->curvature = num_gt(len, NUM_ZERO) ? num_div(num_mul(p->scale, p->scale), len) : NUM_FAR;
     if (num_is_sat(hit->curvature))
         hit->curvature = NUM_FAR;
-    hit->tangent = prim_tangent(&p->to_local, vec3_make(num_neg(q.z), NUM_ZERO, q.x), hit->normal);
+    hit->tangent_hint = vec3_make(num_neg(q.z), NUM_ZERO, q.x);
     hit->u = num_mul(prim_pseudo_angle(q.x, q.z), NUM_C(0.25));
     hit->v = num_clamp01(num_mul(num_add(q.y, NUM_ONE), NUM_HALF));
 }
@@ -434,7 +433,7 @@ static void prim_box_surface(const render_prim_t *p, hit_t *hit)
     int ua = (axis + 1) % 3, va = (axis + 2) % 3;
     vec3_t hint = vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
     vec3_set(&hint, ua, NUM_ONE);
-    hit->tangent = prim_tangent(&p->to_local, hint, hit->normal);
+    hit->tangent_hint = hint;
     hit->u = num_clamp01(num_mul(num_add(vec3_get(q, ua), NUM_ONE), NUM_HALF));
     hit->v = num_clamp01(num_mul(num_add(vec3_get(q, va), NUM_ONE), NUM_HALF));
 }
@@ -697,7 +696,7 @@ static void prim_density_surface(const render_prim_t *p, hit_t *hit)
         g = vec3_madd(g, r, scale);
     }
     hit->normal = vec3_normalize(xform_dir_transposed(&p->to_local, g));
-    hit->tangent = prim_tangent(&p->to_local, vec3_make(NUM_ONE, NUM_ZERO, NUM_ZERO), hit->normal);
+    hit->tangent_hint = vec3_make(NUM_ONE, NUM_ZERO, NUM_ZERO);
     vec3_t n = hit->normal; /* map like an ellipsoid, by normal direction */
     hit->u = num_mul(prim_pseudo_angle(n.x, n.z), NUM_C(0.25));
     hit->v = num_clamp01(num_mul(num_add(n.y, NUM_ONE), NUM_HALF));
@@ -740,6 +739,13 @@ int prim_intersect_uncertain_whether(const render_prim_t *p, const ray_t *ray,
     if (uncertain)
         *uncertain = 0;
     return prim_density_intersect(p, ray, err, tmin, tmax, t_out, uncertain, 0);
+}
+
+vec3_t prim_hit_tangent(const render_prim_t *p, const hit_t *hit)
+{
+    if (p->kind == SCENE_PRIM_TRIANGLE)
+        return vec3_normalize(p->e1);
+    return prim_tangent(&p->to_local, hit->tangent_hint, hit->normal);
 }
 
 void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit)

@@ -22,7 +22,8 @@ typedef struct {
     uint32_t prim;   /* index into frame->prims */
     vec3_t point;    /* eye-space hit point */
     vec3_t normal;   /* unit outward geometric normal (may face the ray or not) */
-    vec3_t tangent;  /* unit, perpendicular to normal, along increasing u */
+    vec3_t tangent_hint; /* local: what prim_hit_tangent makes the tangent of
+                            (prim_surface's; not a triangle's) */
     num_t u, v;      /* map coordinates, u and v in [0,1] */
     num_t curvature; /* the normal turns by at most this times the hit's
                         move (render_prim_t.curvature, an ellipsoid's here) */
@@ -64,14 +65,20 @@ int prim_intersect_uncertain_whether(const render_prim_t *p, const ray_t *ray,
                                      const ray_error_t *err, num_t tmin, num_t tmax, num_t *t_out,
                                      int *uncertain);
 
-/* Fill hit->point, normal, tangent, u, v for hit->t on primitive p. */
+/* Fill hit->point, normal, tangent_hint, u, v for hit->t on primitive p. */
 void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit);
+
+/* The unit tangent at a hit prim_surface filled, perpendicular to its
+ * normal, along increasing u: a triangle's first edge, every other
+ * primitive's from its local hint (prim_tangent).  Worked out only where
+ * a bump or normal map turns the normal. */
+vec3_t prim_hit_tangent(const render_prim_t *p, const hit_t *hit);
 
 /* The tangent a NORMAL map is read in at the hit (map_normal): a
  * triangle's from its texture coordinates, unit dP/du made perpendicular
  * to hit->normal, with *mirrored = 1 when the map's y must be -(n x T) to
  * point up the image (towards decreasing v); a triangle whose mapping is
- * degenerate, and every other primitive, hit->tangent with *mirrored = 0.
+ * degenerate, and every other primitive, prim_hit_tangent with *mirrored = 0.
  * *uncertain = 1 when the arithmetic's rounding could turn a triangle's
  * tangent by more than 1/64 radian or make the other choice (lost
  * precision). */

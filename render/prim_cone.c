@@ -263,13 +263,12 @@ void prim_cone_surface(const render_prim_t *p, hit_t *hit)
     if (num_is_sat(hit->curvature))
         hit->curvature = NUM_FAR;
     if (cap) {
-        hit->tangent = prim_tangent(&p->to_local, vec3_make(NUM_ONE, NUM_ZERO, NUM_ZERO),
-                                    hit->normal);
+        hit->tangent_hint = vec3_make(NUM_ONE, NUM_ZERO, NUM_ZERO);
         hit->u = num_clamp01(num_mul(num_add(q.x, NUM_ONE), NUM_HALF));
         hit->v = num_clamp01(num_mul(num_add(q.z, NUM_ONE), NUM_HALF));
         return;
     }
-    hit->tangent = prim_tangent(&p->to_local, vec3_make(num_neg(q.z), NUM_ZERO, q.x), hit->normal);
+    hit->tangent_hint = vec3_make(num_neg(q.z), NUM_ZERO, q.x);
     hit->u = num_mul(prim_pseudo_angle(q.x, q.z), NUM_C(0.25));
     hit->v = num_clamp01(num_mul(num_add(q.y, NUM_ONE), NUM_HALF));
 }

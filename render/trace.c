@@ -669,7 +669,8 @@ static const scene_material_t *trace_surface_look(render_ctx_t *ctx, const hit_t
     *normal = hit->normal;
     if (m->bump_map != SCENE_NONE) {
         const scene_map_t *b = &s->maps[m->bump_map];
-        *normal = map_bump(b, hit->u, hit->v, hit->normal, hit->tangent);
+        *normal = map_bump(b, hit->u, hit->v, hit->normal,
+                           prim_hit_tangent(&ctx->frame->prims[hit->prim], hit));
         if (map_bump_uncertain(b, hit->u, hit->v, uv_error))
             ctx->pixel_lost = 1;
     }

@@ -74,7 +74,7 @@ static void test_triangle(void)
     CHECK_VEC(h.normal, 0, 0, 1, TOL); /* e1 x e2 */
     CHECK_NEAR(num_to_double(h.u), 0.25, TOL); /* tex (0,0) (1,0) (0,1) */
     CHECK_NEAR(num_to_double(h.v), 0.5, TOL);
-    CHECK_VEC(h.tangent, 1, 0, 0, TOL);
+    CHECK_VEC(prim_hit_tangent(&f->prims[0], &h), 1, 0, 0, TOL); /* the first edge */
 }
 
 static void test_triangle_large(void)

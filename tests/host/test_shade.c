@@ -250,7 +250,6 @@ static void ts_tangent(const double uv[6], vec3_t n, vec3_t *t, int *mirrored, i
     hit_t h;
     memset(&h, 0, sizeof h);
     h.normal = n;
-    h.tangent = ts_v(1, 0, 0); /* prim_surface's: the first edge */
     *t = prim_map_tangent(&p, &h, mirrored, uncertain);
 }
 
