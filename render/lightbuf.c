@@ -369,7 +369,8 @@ const render_lightbuf_t *render_lightbuf_build(const render_frame_t *f, void *me
     num_t near[RENDER_MAX_LIGHTS];
     for (uint32_t i = 0; i < lb->light_count; i++) {
         lb_setup_light(f, i, &lb->light[i]);
-        near[i] = lb_near(&lb->light[i], offset);
+        /* a cube's six grids (a plane's light has one, and no near) */
+        near[i] = lb->light[i].kind == RENDER_LB_CUBE ? lb_near(&lb->light[i], offset) : NUM_ZERO;
     }
     for (uint32_t k = 0; k < lb->item_count; k++)
         lb_place_item(f, lb, k, near);

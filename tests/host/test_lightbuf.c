@@ -2,6 +2,9 @@
  * scenes/: its items hold every primitive once, a shadow ray whose walk
  * would meet an item's box finds the item in its cell, and the image with
  * it is the image without it. */
+#include <stdlib.h>
+#include <string.h>
+
 #include "render/lightbuf.h"
 #include "render/prim.h"
 #include "render/vec3.h"
@@ -199,10 +202,48 @@ static void test_same_image(void)
     }
 }
 
+/* What a buffer decides (its items, and each light's kind, cells and
+ * items in every cell) is the same built into memory of any contents: a
+ * build reads nothing it did not write (a parallel light's one grid, not
+ * a cube's six, once read all six). */
+static void test_build_whatever_the_memory_held(void)
+{
+    for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
+        void *block, *mem;
+        const render_lightbuf_t *lb;
+        const render_frame_t *f = lb_scene(tb_scenes[s], &block, &mem, &lb);
+        CHECK(f && lb);
+        if (!f || !lb)
+            continue;
+        size_t bytes = render_lightbuf_bytes(f);
+        memset(mem, 0, bytes);
+        lb = render_lightbuf_build(f, mem, bytes);
+        num_t *other = malloc(bytes);
+        num_t sat = num_div(NUM_ONE, NUM_ZERO); /* a saturated value: read, it spreads */
+        for (size_t k = 0; k < bytes / sizeof sat; k++)
+            other[k] = sat;
+        const render_lightbuf_t *b = render_lightbuf_build(f, other, bytes);
+        CHECK(b != NULL);
+        if (b) {
+            CHECK_EQ_INT(b->item_count, lb->item_count);
+            CHECK(memcmp(b->item, lb->item, lb->item_count * sizeof lb->item[0]) == 0);
+            for (uint32_t i = 0; i < lb->light_count; i++) {
+                CHECK_EQ_INT(b->light[i].kind, lb->light[i].kind);
+                CHECK_EQ_INT(b->light[i].always, lb->light[i].always);
+                CHECK(memcmp(b->light[i].mask, lb->light[i].mask, sizeof lb->light[i].mask) == 0);
+            }
+        }
+        free(other);
+        free(mem);
+        free(block);
+    }
+}
+
 int main(void)
 {
     RUN(test_items_hold_every_prim_once);
     RUN(test_cells_hold_what_rays_meet);
     RUN(test_same_image);
+    RUN(test_build_whatever_the_memory_held);
     return check_exit();
 }
