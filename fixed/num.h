@@ -154,15 +154,16 @@ static inline num_t num__mul_wide(num_t a, num_t b)
     return num__from_wide(num__round_shift((int64_t)a * b, NUM_FRAC_BITS));
 }
 
-/* saturates; rounds to nearest (halves away from zero).  With a and b
- * within 2^30 (no marker) and the product within 2^(NUM_FRAC_BITS+30) the
- * result is in range: rounded with one add (a half, less one below 0) and
- * one shift. */
+/* saturates; rounds to nearest (halves away from zero).  With a and b in
+ * [-2^k, 2^k), k = (NUM_FRAC_BITS + 30) / 2 (no marker: in Q12.19 below
+ * 32 either way), the product is at most 2^(NUM_FRAC_BITS + 30) and the
+ * result in range: rounded with one add (a half, less one below 0) and
+ * one shift, num__mul_wide's result without its checks. */
+#define NUM__MUL_FAST_BITS ((NUM_FRAC_BITS + 30) / 2)
 static inline num_t num_mul(num_t a, num_t b)
 {
     int64_t p = (int64_t)a * b;
-    if ((num__mag(a) | num__mag(b)) < (uint32_t)1 << 30 &&
-        (uint64_t)(p + ((int64_t)1 << (NUM_FRAC_BITS + 30))) < (uint64_t)1 << (NUM_FRAC_BITS + 31))
+    if ((num__mag(a) | num__mag(b)) < (uint32_t)1 << NUM__MUL_FAST_BITS)
         return (num_t)((p + ((int64_t)1 << (NUM_FRAC_BITS - 1)) - (p < 0)) >> NUM_FRAC_BITS);
     return num__mul_wide(a, b);
 }
@@ -198,21 +199,22 @@ static inline num_t num_from_ratio(int32_t num, int32_t den)
  * divided by 4 toward zero, summed, rounded half away from zero.  Those
  * four truncations and the sign of the rounding move the exact sum S by
  * at most 13 units of the product's last place, so when every input lies
- * in [-2^30, 2^30) (no marker, S fits an int64) and S sits at least 16
+ * in [-2^k, 2^k), k = (NUM_FRAC_BITS + 29) / 2 (no marker; S below 3
+ * 2^(NUM_FRAC_BITS + 29), a result in range) and S sits at least 16
  * units from a rounding boundary, floor((S + half) / 2^NUM_FRAC_BITS) is
  * the same result with one 64-bit sum and one shift. */
+#define NUM__DOT3_FAST_BITS ((NUM_FRAC_BITS + 29) / 2)
 static inline num_t num_dot3(num_t ax, num_t ay, num_t az, num_t bx, num_t by, num_t bz)
 {
     /* (a's | b's: the b half is shared by the three rows of a transform) */
     uint32_t mag = (num__mag(ax) | num__mag(ay) | num__mag(az)) |
                    (num__mag(bx) | num__mag(by) | num__mag(bz));
-    if (mag < (uint32_t)1 << 30) {
+    if (mag < (uint32_t)1 << NUM__DOT3_FAST_BITS) {
         int64_t x = (int64_t)ax * bx + (int64_t)ay * by + (int64_t)az * bz +
                     ((int64_t)1 << (NUM_FRAC_BITS - 1));
         uint32_t low = (uint32_t)x & (((uint32_t)1 << NUM_FRAC_BITS) - 1);
-        /* clear of a boundary, and a result within 2^30 */
-        if (low - 16u < ((uint32_t)1 << NUM_FRAC_BITS) - 32u &&
-            (uint64_t)(x + ((int64_t)1 << (NUM_FRAC_BITS + 30))) < (uint64_t)1 << (NUM_FRAC_BITS + 31))
+        /* clear of a boundary (the result is in range: above) */
+        if (low - 16u < ((uint32_t)1 << NUM_FRAC_BITS) - 32u)
             return (num_t)(x >> NUM_FRAC_BITS);
     }
     return num__dot3_exact(ax, ay, az, bx, by, bz);

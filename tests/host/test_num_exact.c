@@ -164,7 +164,12 @@ static void edges_make(void)
         }
     int64_t special[] = {NUM_ONE_RAW, NUM_ONE_RAW - 1, NUM_ONE_RAW + 1, NUM_RAW_MAX,
                          NUM_RAW_MAX - 1, (int64_t)1 << 30, ((int64_t)1 << 30) - 1,
-                         3 * NUM_ONE_RAW / 2};
+                         3 * NUM_ONE_RAW / 2,
+                         /* where num_mul's and num_dot3's fast paths end */
+                         (int64_t)1 << NUM__MUL_FAST_BITS, ((int64_t)1 << NUM__MUL_FAST_BITS) - 1,
+                         ((int64_t)1 << NUM__MUL_FAST_BITS) + 1, (int64_t)1 << NUM__DOT3_FAST_BITS,
+                         ((int64_t)1 << NUM__DOT3_FAST_BITS) - 1,
+                         ((int64_t)1 << NUM__DOT3_FAST_BITS) + 1};
     for (size_t i = 0; i < sizeof special / sizeof special[0]; i++) {
         edges_add(special[i]);
         edges_add(-special[i]);
