@@ -43,21 +43,9 @@ static num_t ref_mul(num_t a, num_t b)
     return num__from_wide(num__round_shift((int64_t)a * b, NUM_FRAC_BITS));
 }
 
-static num_t ref_div(num_t a, num_t b)
-{
-    if (num_is_sat(a) || num_is_sat(b) || b == 0)
-        return num__sticky(a, b);
-    int negative = (a < 0) != (b < 0);
-    uint64_t ua = (uint64_t)(a < 0 ? -(int64_t)a : a) << NUM_FRAC_BITS;
-    uint64_t ub = (uint64_t)(b < 0 ? -(int64_t)b : b);
-    uint64_t q = (ua + ub / 2) / ub;
-    if (q > (uint64_t)NUM_RAW_MAX)
-        return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
-    return negative ? -(num_t)q : (num_t)q;
-}
-
 /* num/den for integers: the rounded quotient in 64 bits (the definition
- * num_from_ratio's 32-bit paths must give) */
+ * num_from_ratio's 32-bit paths must give; num_div's for reals but
+ * markers) */
 static num_t ref_ratio(int32_t num, int32_t den)
 {
     if (den == 0)
@@ -69,6 +57,13 @@ static num_t ref_ratio(int32_t num, int32_t den)
     if (q > (uint64_t)NUM_RAW_MAX)
         return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
     return negative ? -(num_t)q : (num_t)q;
+}
+
+static num_t ref_div(num_t a, num_t b)
+{
+    if (num_is_sat(a) || num_is_sat(b))
+        return num__sticky(a, b);
+    return ref_ratio(a, b); /* b == 0: the marker of a's sign, num__sticky's */
 }
 
 /* floor(sqrt(n)), one result bit a step */
