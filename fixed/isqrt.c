@@ -7,8 +7,8 @@
  * 16 bits of the root come from one step of Zimmermann's "Karatsuba square
  * root" (one 32-bit division), then at most one correction down (where
  * the remainder m - s*s is below 0).  The top root's correction makes it
- * exact whatever the seed; the seed only makes it short.  Every division is 32-bit (the A15's
- * UDIV), no 64-bit division and no floating point. */
+ * exact whatever the seed; the seed only makes it short.  Every division
+ * is 32-bit (the A15's UDIV), no 64-bit division and no floating point. */
 #include "fixed/isqrt.h"
 
 /* round(4096 * sqrt(i + 0.5)) for i = 64..255: sqrt of the middle of
