@@ -51,7 +51,8 @@ uint32_t ringbuf_get_some(struct ringbuf *r, void *out, uint32_t max);
  * whole words, so head and tail stay multiples of 4 and no word straddles
  * the wrap (buf word-aligned, size a power of two >= 4).  Each word is one
  * load and one store, without the two pieces of a byte copy around the
- * wrap: a line message is a few words, and the RC moves two a request.
+ * wrap (a record that does not reach the end not even the wrap's mask):
+ * a line message is a few words, and the RC moves two a request.
  * Inline: a call would cost as much as the copy. */
 static inline uint32_t ringbuf_word_slot(const struct ringbuf *r, uint32_t byte_index)
 {
@@ -70,10 +71,18 @@ static inline int ringbuf_put_words(struct ringbuf *r, const void *a, uint32_t n
         return -1;
     uint8_t *ring = r->buf;
     uint32_t mask = r->size / 4u - 1u, at = ringbuf_word_slot(r, head);
-    for (uint32_t i = 0; i < na; i++, at = (at + 1u) & mask)
-        __builtin_memcpy(ring + 4u * at, (const uint8_t *)a + 4u * i, 4);
-    for (uint32_t i = 0; i < nb; i++, at = (at + 1u) & mask)
-        __builtin_memcpy(ring + 4u * at, (const uint8_t *)b + 4u * i, 4);
+    if (at + na + nb <= mask + 1u) { /* no wrap: word after word */
+        uint8_t *to = ring + 4u * at;
+        for (uint32_t i = 0; i < na; i++, to += 4)
+            __builtin_memcpy(to, (const uint8_t *)a + 4u * i, 4);
+        for (uint32_t i = 0; i < nb; i++, to += 4)
+            __builtin_memcpy(to, (const uint8_t *)b + 4u * i, 4);
+    } else {
+        for (uint32_t i = 0; i < na; i++, at = (at + 1u) & mask)
+            __builtin_memcpy(ring + 4u * at, (const uint8_t *)a + 4u * i, 4);
+        for (uint32_t i = 0; i < nb; i++, at = (at + 1u) & mask)
+            __builtin_memcpy(ring + 4u * at, (const uint8_t *)b + 4u * i, 4);
+    }
     /* Release: the words are in place before the consumer can see them. */
     __atomic_store_n(&r->head, head + 4u * (na + nb), __ATOMIC_RELEASE);
     return 0;
@@ -91,8 +100,13 @@ static inline int ringbuf_get_words(struct ringbuf *r, uint32_t skip, void *out,
         return -1;
     const uint8_t *ring = r->buf;
     uint32_t mask = r->size / 4u - 1u, at = (ringbuf_word_slot(r, tail) + skip) & mask;
-    for (uint32_t i = 0; i < n; i++, at = (at + 1u) & mask)
-        __builtin_memcpy((uint8_t *)out + 4u * i, ring + 4u * at, 4);
+    if (at + n <= mask + 1u) { /* no wrap: word after word */
+        for (uint32_t i = 0; i < n; i++)
+            __builtin_memcpy((uint8_t *)out + 4u * i, ring + 4u * (at + i), 4);
+    } else {
+        for (uint32_t i = 0; i < n; i++, at = (at + 1u) & mask)
+            __builtin_memcpy((uint8_t *)out + 4u * i, ring + 4u * at, 4);
+    }
     /* Release: we are done reading the words before the producer may
      * overwrite them. */
     if (take)

@@ -116,6 +116,13 @@ static void test_word_records(void)
     CHECK(ringbuf_put_words(&r, hdr, 1, body, 6) == 0);
     CHECK(ringbuf_get(&r, out, 28) == 0 && memcmp(out, hdr, 4) == 0 &&
           memcmp(out + 4, body, 24) == 0);
+    /* A record ending on the ring's last word, from word 1: no wrap. */
+    ringbuf_init(&r, mem, sizeof mem);
+    CHECK(ringbuf_put_words(&r, hdr, 1, body, 0) == 0 && ringbuf_get_words(&r, 0, out, 1, 1) == 0);
+    CHECK(ringbuf_put_words(&r, hdr, 1, body, 6) == 0);
+    CHECK(memcmp(mem + 4, hdr, 4) == 0 && memcmp(mem + 8, body, 24) == 0);
+    CHECK(ringbuf_get_words(&r, 1, out, 6, 1) == 0 && memcmp(out, body, 24) == 0);
+    CHECK_EQ_INT(ringbuf_used(&r), 0);
 }
 
 int main(void)
