@@ -51,8 +51,8 @@ uint32_t ringbuf_get_some(struct ringbuf *r, void *out, uint32_t max);
  * whole words, so head and tail stay multiples of 4 and no word straddles
  * the wrap (buf word-aligned, size a power of two >= 4).  Each word is one
  * load and one store, without the two pieces of a byte copy around the
- * wrap (a record that does not reach the end not even the wrap's mask):
- * a line message is a few words, and the RC moves two a request.
+ * wrap, and a record short of the end without the wrap's mask either: a
+ * line message is a few words, and the RC moves two a request.
  * Inline: a call would cost as much as the copy. */
 static inline uint32_t ringbuf_word_slot(const struct ringbuf *r, uint32_t byte_index)
 {
