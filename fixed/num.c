@@ -119,14 +119,12 @@ num_t num__from_ratio_wide(int32_t num, int32_t den)
 {
     if (den == 0)
         return num < 0 ? -NUM_RAW_SAT : NUM_RAW_SAT;
-    int negative = (num < 0) != (den < 0);
-    uint32_t ud = den < 0 ? -(uint32_t)den : (uint32_t)den;
-    uint64_t n = ((uint64_t)(num < 0 ? -(uint32_t)num : (uint32_t)num) << NUM_FRAC_BITS) + ud / 2;
-    /* a quotient of 2^32 or more saturates; below, two 32-bit divisions */
-    uint32_t q = (uint32_t)(n >> 32) >= ud ? UINT32_MAX : num__udiv_64_32(n, ud);
+    uint32_t s = (uint32_t)((num ^ den) >> 31); /* 0, or all ones: -q is (q ^ s) - s */
+    uint32_t q = num__quot_wide(num < 0 ? -(uint32_t)num : (uint32_t)num,
+                                den < 0 ? -(uint32_t)den : (uint32_t)den);
     if (q > (uint32_t)NUM_RAW_MAX)
-        return negative ? -NUM_RAW_SAT : NUM_RAW_SAT;
-    return negative ? -(num_t)q : (num_t)q;
+        q = (uint32_t)NUM_RAW_SAT;
+    return (num_t)((q ^ s) - s);
 }
 
 num_t num_sqrt(num_t a)
