@@ -132,15 +132,31 @@ static void lb_quotient_range(num_t a0, num_t a1, num_t m0, num_t m1, num_t *lo,
     *hi = num_min(num_max(*hi, less), one);
 }
 
-/* Where points c (relative to the light) show on cube face `face`, as r
- * (u0, u1, v0, v1): by the points themselves when all lie in front of it
- * (the hull's view is theirs), else by their box; 0 when all lie behind. */
-static int lb_face_rect(int face, const vec3_t *c, num_t r[4])
+/* Eight points relative to a light, by axis: at[k][i] (lb_face_rect reads
+ * them by a face's axes). */
+typedef struct {
+    num_t at[8][3];
+} lb_rel_t;
+
+static void lb_relative(const vec3_t *c, vec3_t light, lb_rel_t *p)
+{
+    for (int k = 0; k < 8; k++) {
+        vec3_t d = vec3_sub(c[k], light);
+        p->at[k][0] = d.x;
+        p->at[k][1] = d.y;
+        p->at[k][2] = d.z;
+    }
+}
+
+/* Where points p show on cube face `face`, as r (u0, u1, v0, v1): by the
+ * points themselves when all lie in front of it (the hull's view is
+ * theirs), else by their box; 0 when all lie behind. */
+static int lb_face_rect(int face, const lb_rel_t *p, num_t r[4])
 {
     int m = face / 2, a = (m + 1) % 3, w = (m + 2) % 3, front = 1;
     num_t dm[8], far = NUM_ZERO;
     for (int k = 0; k < 8; k++) {
-        dm[k] = face % 2 ? num_neg(vec3_get(c[k], m)) : vec3_get(c[k], m);
+        dm[k] = face % 2 ? num_neg(p->at[k][m]) : p->at[k][m];
         front &= num_gt(dm[k], NUM_ZERO);
         far = num_max(far, dm[k]);
     }
@@ -148,11 +164,13 @@ static int lb_face_rect(int face, const vec3_t *c, num_t r[4])
         return 0;
     if (!front) {
         num_t lo[3], hi[3];
-        for (int k = 0; k < 8; k++)
+        for (int i = 0; i < 3; i++)
+            lo[i] = hi[i] = i == m ? dm[0] : p->at[0][i];
+        for (int k = 1; k < 8; k++)
             for (int i = 0; i < 3; i++) {
-                num_t x = i == m ? dm[k] : vec3_get(c[k], i);
-                lo[i] = k ? num_min(lo[i], x) : x;
-                hi[i] = k ? num_max(hi[i], x) : x;
+                num_t x = i == m ? dm[k] : p->at[k][i];
+                lo[i] = num_min(lo[i], x);
+                hi[i] = num_max(hi[i], x);
             }
         lb_quotient_range(lo[a], hi[a], lo[m], hi[m], &r[0], &r[1]);
         lb_quotient_range(lo[w], hi[w], lo[m], hi[m], &r[2], &r[3]);
@@ -161,7 +179,7 @@ static int lb_face_rect(int face, const vec3_t *c, num_t r[4])
     num_t one = NUM_ONE, less = num_neg(NUM_ONE);
     for (int k = 0; k < 8; k++) {
         num_t inv = num_recip(dm[k]);
-        num_t u = num_mul(vec3_get(c[k], a), inv), v = num_mul(vec3_get(c[k], w), inv);
+        num_t u = num_mul(p->at[k][a], inv), v = num_mul(p->at[k][w], inv);
         r[0] = k ? num_min(r[0], u) : u;
         r[1] = k ? num_max(r[1], u) : u;
         r[2] = k ? num_min(r[2], v) : v;
@@ -213,15 +231,15 @@ static int lb_grid(render_lb_grid_t *g, const num_t r[4])
 static int lb_cube_setup(render_lb_light_t *l, const aabb_t *root)
 {
     vec3_t c[8];
+    lb_rel_t rel;
     lb_box_points(root, c);
-    for (int k = 0; k < 8; k++)
-        c[k] = vec3_sub(c[k], l->at);
+    lb_relative(c, l->at, &rel);
     l->faces = 0;
     for (int face = 0; face < 6; face++) {
         num_t r[4];
         render_lb_grid_t *g = &l->grid[face];
         g->u0 = g->v0 = g->su = g->sv = NUM_ZERO;
-        if (!lb_face_rect(face, c, r))
+        if (!lb_face_rect(face, &rel, r))
             continue;
         l->faces |= (uint8_t)(1u << face);
         if (!lb_grid(g, r) && (num_gt(r[0], r[1]) || num_gt(r[2], r[3]) ||
@@ -271,12 +289,11 @@ static void lb_mark_cube(render_lb_light_t *l, const aabb_t *b, const vec3_t *c,
         l->always |= bit;
         return;
     }
-    vec3_t rel[8];
-    for (int k = 0; k < 8; k++)
-        rel[k] = vec3_sub(c[k], l->at);
+    lb_rel_t rel;
+    lb_relative(c, l->at, &rel);
     for (int face = 0; face < 6; face++) {
         num_t r[4];
-        if ((l->faces >> face & 1) && lb_face_rect(face, rel, r))
+        if ((l->faces >> face & 1) && lb_face_rect(face, &rel, r))
             lb_mark(&l->grid[face], l->mask[face], r, bit);
     }
 }

@@ -49,29 +49,6 @@ int shade_light_at(const render_light_t *l, vec3_t point, vec3_t *to_light, num_
     return 1;
 }
 
-rgb_t shade_light_term(const scene_material_t *m, rgb_t colour, vec3_t n, vec3_t view,
-                       vec3_t to_light, rgb_t ambient, rgb_t shadowed, num_t src_theta)
-{
-    /* ambient: dic F times the light given (S_i, or L_i whatever lies
-     * between point and light) */
-    rgb_t out = rgb_scale(rgb_mul(colour, ambient), m->dic);
-    num_t cos_i = vec3_dot(n, to_light);
-    if (!num_gt(cos_i, NUM_ZERO))
-        return out;
-    /* diffuse: drc cos(th_i) F S_i */
-    out = rgb_add(out, rgb_scale(rgb_mul(colour, shadowed), num_mul(m->drc, cos_i)));
-    if (m->phong_n == 0)
-        return out;
-    /* highlight: cos^n of the angle between the mirrored light and the
-     * direction back to the viewer, times src(th) */
-    vec3_t mirrored = vec3_sub(vec3_scale(n, num_mul_int(cos_i, 2)), to_light);
-    num_t cos_r = num_neg(vec3_dot(mirrored, view));
-    if (!num_gt(cos_r, NUM_ZERO))
-        return out;
-    num_t k = num_mul(num_pow_int(num_min(cos_r, NUM_ONE), m->phong_n), src_theta);
-    return rgb_add(out, rgb_scale(shadowed, k));
-}
-
 vec3_t shade_reflect(vec3_t d, vec3_t n)
 {
     return vec3_normalize(vec3_sub(d, vec3_scale(n, num_mul_int(vec3_dot(d, n), 2))));
