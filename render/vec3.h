@@ -86,10 +86,10 @@ static inline int rgb_is_zero(rgb_t a)
     return !num_gt(a.r, NUM_ZERO) && !num_gt(a.g, NUM_ZERO) && !num_gt(a.b, NUM_ZERO);
 }
 
-/* Affine maps (xform.c). */
-/* m applied to the direction d (its 3x3 part) and to the point p, inline
- * for the DM's every vertex of every frame; xform_dir and xform_point are
- * these. */
+/* Affine maps (xform.c).  Applied inline: m to the direction d (its 3x3
+ * part), to the point p, and its 3x3 part's transpose to d (normals
+ * through an inverse map); the DM maps every vertex of every frame, the
+ * NCs a ray or a normal at every test and hit. */
 static inline vec3_t xform_dir_inline(const xform_t *m, vec3_t d)
 {
     return vec3_make(num_dot3(m->m[0][0], m->m[0][1], m->m[0][2], d.x, d.y, d.z),
@@ -101,11 +101,15 @@ static inline vec3_t xform_point_inline(const xform_t *m, vec3_t p)
     vec3_t d = xform_dir_inline(m, p);
     return vec3_make(num_add(d.x, m->m[0][3]), num_add(d.y, m->m[1][3]), num_add(d.z, m->m[2][3]));
 }
+static inline vec3_t xform_dir(const xform_t *m, vec3_t d) { return xform_dir_inline(m, d); }
+static inline vec3_t xform_point(const xform_t *m, vec3_t p) { return xform_point_inline(m, p); }
+static inline vec3_t xform_dir_transposed(const xform_t *m, vec3_t d)
+{
+    return vec3_make(num_dot3(m->m[0][0], m->m[1][0], m->m[2][0], d.x, d.y, d.z),
+                     num_dot3(m->m[0][1], m->m[1][1], m->m[2][1], d.x, d.y, d.z),
+                     num_dot3(m->m[0][2], m->m[1][2], m->m[2][2], d.x, d.y, d.z));
+}
 xform_t xform_identity(void);
-vec3_t xform_point(const xform_t *m, vec3_t p);
-vec3_t xform_dir(const xform_t *m, vec3_t d);
-/* Transpose of the 3x3 part applied to d: normals through an inverse map. */
-vec3_t xform_dir_transposed(const xform_t *m, vec3_t d);
 /* a after b: (a*b)(p) = a(b(p)). */
 xform_t xform_compose(const xform_t *a, const xform_t *b);
 /* Inverse of m into *out; 0 if m is singular (or too ill-conditioned). */

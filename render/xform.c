@@ -14,17 +14,6 @@ xform_t xform_identity(void)
     return m;
 }
 
-vec3_t xform_dir(const xform_t *m, vec3_t d) { return xform_dir_inline(m, d); }
-
-vec3_t xform_point(const xform_t *m, vec3_t p) { return xform_point_inline(m, p); }
-
-vec3_t xform_dir_transposed(const xform_t *m, vec3_t d)
-{
-    return vec3_make(num_dot3(m->m[0][0], m->m[1][0], m->m[2][0], d.x, d.y, d.z),
-                     num_dot3(m->m[0][1], m->m[1][1], m->m[2][1], d.x, d.y, d.z),
-                     num_dot3(m->m[0][2], m->m[1][2], m->m[2][2], d.x, d.y, d.z));
-}
-
 xform_t xform_compose(const xform_t *a, const xform_t *b)
 {
     xform_t r;
