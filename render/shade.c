@@ -3,17 +3,6 @@
 
 #include "render/vec3.h"
 
-/* Parallel lights are "infinitely" far: shadow rays stop here instead. */
-#define SHADE_PARALLEL_DISTANCE NUM_FAR
-
-void shade_src_trc(const scene_material_t *m, num_t cos_theta, num_t *src, num_t *trc)
-{
-    num_t c = num_clamp01(cos_theta);
-    num_t s = num_mul(m->fresnel, num_pow_int(num_sub(NUM_ONE, c), 5));
-    *src = num_add(m->src, num_mul(num_sub(NUM_ONE, m->src), s));
-    *trc = num_mul(m->trc, num_sub(NUM_ONE, s));
-}
-
 num_t shade_spot_falloff(num_t cos_angle, num_t cos_outer, num_t cos_inner)
 {
     if (!num_gt(cos_angle, cos_outer))
@@ -23,30 +12,6 @@ num_t shade_spot_falloff(num_t cos_angle, num_t cos_outer, num_t cos_inner)
     num_t x = num_div(num_sub(cos_angle, cos_outer), num_sub(cos_inner, cos_outer));
     x = num_clamp01(x);
     return num_mul(num_mul(x, x), num_sub(NUM_C(3), num_mul_int(x, 2)));
-}
-
-int shade_light_at(const render_light_t *l, vec3_t point, vec3_t *to_light, num_t *distance,
-                   rgb_t *intensity)
-{
-    *intensity = l->intensity;
-    if (l->kind == SCENE_LIGHT_PARALLEL) {
-        *to_light = l->to_light;
-        *distance = SHADE_PARALLEL_DISTANCE;
-        return 1;
-    }
-    vec3_t v = vec3_sub(l->position, point);
-    num_t dist = vec3_length(v);
-    if (!num_gt(dist, NUM_ZERO) || num_is_sat(dist))
-        return 0;
-    *to_light = vec3_scale(v, num_recip(dist));
-    *distance = dist;
-    if (l->kind == SCENE_LIGHT_SPOT) {
-        num_t k = shade_spot_falloff(num_neg(vec3_dot(*to_light, l->axis)), l->cos_outer, l->cos_inner);
-        if (!num_gt(k, NUM_ZERO))
-            return 0;
-        *intensity = rgb_scale(l->intensity, k);
-    }
-    return 1;
 }
 
 vec3_t shade_reflect(vec3_t d, vec3_t n)

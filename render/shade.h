@@ -24,16 +24,48 @@
  *   trc(th) = trc * (1 - s)                    (trc at normal incidence,
  *                                               0 at grazing when fresnel 1)
  * fresnel = 0 gives the constants src and trc (Whitted's). */
-void shade_src_trc(const scene_material_t *m, num_t cos_theta, num_t *src, num_t *trc);
+static inline void shade_src_trc(const scene_material_t *m, num_t cos_theta, num_t *src,
+                                 num_t *trc)
+{
+    num_t c = num_clamp01(cos_theta);
+    num_t s = num_mul(m->fresnel, num_pow_int(num_sub(NUM_ONE, c), 5));
+    *src = num_add(m->src, num_mul(num_sub(NUM_ONE, m->src), s));
+    *trc = num_mul(m->trc, num_sub(NUM_ONE, s));
+}
+
+/* Smooth spotlight edge: 0 at cos_outer, 1 at cos_inner, smoothstep between. */
+num_t shade_spot_falloff(num_t cos_angle, num_t cos_outer, num_t cos_inner);
+
+/* Parallel lights are "infinitely" far: shadow rays stop here instead. */
+#define SHADE_PARALLEL_DISTANCE NUM_FAR
 
 /* Light i as seen from point: unit direction towards the light, distance
  * (a large constant for parallel light) and the unshadowed intensity
  * (spotlight cone applied).  0 if the point gets nothing from it. */
-int shade_light_at(const render_light_t *l, vec3_t point, vec3_t *to_light, num_t *distance,
-                   rgb_t *intensity);
-
-/* Smooth spotlight edge: 0 at cos_outer, 1 at cos_inner, smoothstep between. */
-num_t shade_spot_falloff(num_t cos_angle, num_t cos_outer, num_t cos_inner);
+static inline int shade_light_at(const render_light_t *l, vec3_t point, vec3_t *to_light,
+                                  num_t *distance, rgb_t *intensity)
+{
+    *intensity = l->intensity;
+    if (l->kind == SCENE_LIGHT_PARALLEL) {
+        *to_light = l->to_light;
+        *distance = SHADE_PARALLEL_DISTANCE;
+        return 1;
+    }
+    vec3_t v = vec3_sub(l->position, point);
+    num_t dist = vec3_length(v);
+    if (!num_gt(dist, NUM_ZERO) || num_is_sat(dist))
+        return 0;
+    *to_light = vec3_scale(v, num_recip(dist));
+    *distance = dist;
+    if (l->kind == SCENE_LIGHT_SPOT) {
+        num_t k = shade_spot_falloff(num_neg(vec3_dot(*to_light, l->axis)), l->cos_outer,
+                                     l->cos_inner);
+        if (!num_gt(k, NUM_ZERO))
+            return 0;
+        *intensity = rgb_scale(l->intensity, k);
+    }
+    return 1;
+}
 
 /* One light's term of the sum: normal n faces the viewer, view is the unit
  * ray direction arriving at the point, to_light unit; ambient the light
