@@ -90,25 +90,13 @@ static void lb_item_corners(const render_frame_t *f, uint32_t item, vec3_t c[8])
         c[k] = m[k];
 }
 
-/* The cell of coordinate x in a grid from x0 at s cells a unit, clamped. */
-static inline int lb_grid_cell(num_t x, num_t x0, num_t s)
-{
-    num_t c = num_mul(num_sub(x, x0), s);
-    if (!num_gt(c, NUM_ZERO))
-        return 0;
-    if (!num_lt(c, num_from_int(LB_N - 1)))
-        return LB_N - 1;
-    int i = num_floor_int(c);
-    return i < 0 ? 0 : i > LB_N - 1 ? LB_N - 1 : i;
-}
-
 /* Marks the cells of g that the rectangle r (u0, u1, v0, v1) covers, one
  * more on each side: its columns and its rows. */
 static void lb_mark(const render_lb_grid_t *g, uint32_t (*cells)[LB_N], const num_t r[4],
                     uint32_t bit)
 {
-    int u0 = lb_grid_cell(r[0], g->u0, g->su) - 1, u1 = lb_grid_cell(r[1], g->u0, g->su) + 1;
-    int v0 = lb_grid_cell(r[2], g->v0, g->sv) - 1, v1 = lb_grid_cell(r[3], g->v0, g->sv) + 1;
+    int u0 = render_lb_grid_cell(r[0], g->u0, g->su) - 1, u1 = render_lb_grid_cell(r[1], g->u0, g->su) + 1;
+    int v0 = render_lb_grid_cell(r[2], g->v0, g->sv) - 1, v1 = render_lb_grid_cell(r[3], g->v0, g->sv) + 1;
     for (int u = u0 < 0 ? 0 : u0; u <= u1 && u < LB_N; u++)
         cells[0][u] |= bit;
     for (int v = v0 < 0 ? 0 : v0; v <= v1 && v < LB_N; v++)
@@ -190,20 +178,12 @@ static int lb_face_rect(int face, const lb_rel_t *p, num_t r[4])
     return 1;
 }
 
-/* Where a point p falls on a parallel light's plane: along the direction
- * onto the plane of its major axis. */
-static inline void lb_project(const render_lb_light_t *l, vec3_t p, num_t *u, num_t *v)
-{
-    *u = vec3_dot(p, l->pu);
-    *v = vec3_dot(p, l->pv);
-}
-
 /* The projection's rectangle of eight points. */
 static void lb_project_points(const render_lb_light_t *l, const vec3_t *c, num_t r[4])
 {
     for (int k = 0; k < 8; k++) {
         num_t u, v;
-        lb_project(l, c[k], &u, &v);
+        render_lb_project(l, c[k], &u, &v);
         r[0] = k ? num_min(r[0], u) : u;
         r[1] = k ? num_max(r[1], u) : u;
         r[2] = k ? num_min(r[2], v) : v;
@@ -392,49 +372,4 @@ const render_lightbuf_t *render_lightbuf_build(const render_frame_t *f, void *me
     for (uint32_t k = 0; k < lb->item_count; k++)
         lb_place_item(f, lb, k, near);
     return lb;
-}
-
-/* The cell of direction d (from the light) on the cube: its face, by the
- * major axis and its sign, and the other two components over it. */
-static uint32_t lb_cube_mask(const render_lb_light_t *l, vec3_t d)
-{
-    num_t ax = num_abs(d.x), ay = num_abs(d.y), az = num_abs(d.z);
-    int face;
-    num_t dm, du, dv;
-    if (num_ge(ax, ay) && num_ge(ax, az)) {
-        face = 0, dm = d.x, du = d.y, dv = d.z;
-    } else if (num_ge(ay, az)) {
-        face = 2, dm = d.y, du = d.z, dv = d.x;
-    } else {
-        face = 4, dm = d.z, du = d.x, dv = d.y;
-    }
-    if (num_lt(dm, NUM_ZERO)) {
-        face++;
-        dm = num_neg(dm);
-    }
-    if (!num_gt(dm, NUM_ZERO))
-        return UINT32_MAX;
-    const render_lb_grid_t *g = &l->grid[face];
-    num_t inv = num_recip(dm);
-    int u = lb_grid_cell(num_mul(du, inv), g->u0, g->su);
-    int v = lb_grid_cell(num_mul(dv, inv), g->v0, g->sv);
-    return l->always | (l->mask[face][0][u] & l->mask[face][1][v]);
-}
-
-uint32_t render_lightbuf_mask(const render_lightbuf_t *lb, uint32_t light, vec3_t origin,
-                              vec3_t dir)
-{
-    const render_lb_light_t *l = &lb->light[light];
-    uint32_t all = lb->item_count == 32 ? UINT32_MAX : (UINT32_C(1) << lb->item_count) - 1;
-    if (l->kind == RENDER_LB_CUBE)
-        return lb_cube_mask(l, vec3_neg(dir)) & all;
-    if (l->kind == RENDER_LB_ALL)
-        return all;
-    num_t u, v;
-    lb_project(l, origin, &u, &v);
-    const render_lb_grid_t *g = &l->grid[0];
-    const uint32_t(*cells)[LB_N] = l->mask[0];
-    return (l->always | (cells[0][lb_grid_cell(u, g->u0, g->su)] &
-                         cells[1][lb_grid_cell(v, g->v0, g->sv)])) &
-           all;
 }

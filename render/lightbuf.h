@@ -25,6 +25,7 @@
 #define RENDER_LIGHTBUF_H
 
 #include "render/render.h"
+#include "render/vec3.h"
 
 #define RENDER_LB_ITEMS 32 /* items a light's cells list: a bit of a mask each */
 #define RENDER_LB_CELLS 32 /* cells along a grid's edge */
@@ -80,8 +81,72 @@ size_t render_lightbuf_bytes(const render_frame_t *f);
 /* Builds f's light buffer in mem (bytes of it, aligned for a num_t): NULL
  * when bytes fall short or f has no cluster tree. */
 const render_lightbuf_t *render_lightbuf_build(const render_frame_t *f, void *mem, size_t bytes);
-/* The items a shadow ray from origin along dir towards light may meet. */
-uint32_t render_lightbuf_mask(const render_lightbuf_t *lb, uint32_t light, vec3_t origin,
-                              vec3_t dir);
+/* The items a shadow ray from origin along dir towards light may meet
+ * (render_lightbuf_mask): inline, as it is asked for every shadow ray. */
+
+/* The cell of coordinate x in a grid from x0 at s cells a unit, clamped. */
+static inline int render_lb_grid_cell(num_t x, num_t x0, num_t s)
+{
+    num_t c = num_mul(num_sub(x, x0), s);
+    if (!num_gt(c, NUM_ZERO))
+        return 0;
+    if (!num_lt(c, num_from_int(RENDER_LB_CELLS - 1)))
+        return RENDER_LB_CELLS - 1;
+    int i = num_floor_int(c);
+    return i < 0 ? 0 : i > RENDER_LB_CELLS - 1 ? RENDER_LB_CELLS - 1 : i;
+}
+
+/* Where a point p falls on a parallel light's plane: along the direction
+ * onto the plane of its major axis. */
+static inline void render_lb_project(const render_lb_light_t *l, vec3_t p, num_t *u, num_t *v)
+{
+    *u = vec3_dot(p, l->pu);
+    *v = vec3_dot(p, l->pv);
+}
+
+/* The cell of direction d (from the light) on the cube: its face, by the
+ * major axis and its sign, and the other two components over it. */
+static inline uint32_t render_lb_cube_mask(const render_lb_light_t *l, vec3_t d)
+{
+    num_t ax = num_abs(d.x), ay = num_abs(d.y), az = num_abs(d.z);
+    int face;
+    num_t dm, du, dv;
+    if (num_ge(ax, ay) && num_ge(ax, az)) {
+        face = 0, dm = d.x, du = d.y, dv = d.z;
+    } else if (num_ge(ay, az)) {
+        face = 2, dm = d.y, du = d.z, dv = d.x;
+    } else {
+        face = 4, dm = d.z, du = d.x, dv = d.y;
+    }
+    if (num_lt(dm, NUM_ZERO)) {
+        face++;
+        dm = num_neg(dm);
+    }
+    if (!num_gt(dm, NUM_ZERO))
+        return UINT32_MAX;
+    const render_lb_grid_t *g = &l->grid[face];
+    num_t inv = num_recip(dm);
+    int u = render_lb_grid_cell(num_mul(du, inv), g->u0, g->su);
+    int v = render_lb_grid_cell(num_mul(dv, inv), g->v0, g->sv);
+    return l->always | (l->mask[face][0][u] & l->mask[face][1][v]);
+}
+
+static inline uint32_t render_lightbuf_mask(const render_lightbuf_t *lb, uint32_t light,
+                                            vec3_t origin, vec3_t dir)
+{
+    const render_lb_light_t *l = &lb->light[light];
+    uint32_t all = lb->item_count == 32 ? UINT32_MAX : (UINT32_C(1) << lb->item_count) - 1;
+    if (l->kind == RENDER_LB_CUBE)
+        return render_lb_cube_mask(l, vec3_neg(dir)) & all;
+    if (l->kind == RENDER_LB_ALL)
+        return all;
+    num_t u, v;
+    render_lb_project(l, origin, &u, &v);
+    const render_lb_grid_t *g = &l->grid[0];
+    const uint32_t(*cells)[RENDER_LB_CELLS] = l->mask[0];
+    return (l->always | (cells[0][render_lb_grid_cell(u, g->u0, g->su)] &
+                         cells[1][render_lb_grid_cell(v, g->v0, g->sv)])) &
+           all;
+}
 
 #endif
