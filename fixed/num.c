@@ -85,6 +85,13 @@ static uint32_t num__quot_wide(uint32_t ua, uint32_t ub)
     return num__udiv_64_32(n, ub);
 }
 
+/* num_add's, num_sub's and num_mul's every case but their fast paths:
+ * out of line, so that the fast paths inline small wherever they are
+ * used. */
+num_t num__add_rest(num_t a, num_t b) { return num__add_wide(a, b); }
+num_t num__sub_rest(num_t a, num_t b) { return num__sub_wide(a, b); }
+num_t num__mul_rest(num_t a, num_t b) { return num__mul_wide(a, b); }
+
 /* num_div of magnitudes ua and ub, of the sign s (0, or all ones when the
  * signs differ), where num_div's common case does not hold: a marker
  * (magnitude INT32_MAX) or a zero divisor gives a marker of that sign,

@@ -111,12 +111,16 @@ static inline num_t num__add_wide(num_t a, num_t b)
     return num__from_wide((int64_t)a + b);
 }
 
+/* num__add_wide and num__sub_wide, not inlined (fixed/num.c) */
+num_t num__add_rest(num_t a, num_t b);
+num_t num__sub_rest(num_t a, num_t b);
+
 /* saturates; within 2^29 each the sum is in range at once */
 static inline num_t num_add(num_t a, num_t b)
 {
     if ((num__mag(a) | num__mag(b)) < (uint32_t)1 << 29)
         return a + b;
-    return num__add_wide(a, b);
+    return num__add_rest(a, b);
 }
 
 static inline num_t num__sub_wide(num_t a, num_t b)
@@ -131,7 +135,7 @@ static inline num_t num_sub(num_t a, num_t b)
 {
     if ((num__mag(a) | num__mag(b)) < (uint32_t)1 << 29)
         return a - b;
-    return num__sub_wide(a, b);
+    return num__sub_rest(a, b);
 }
 
 /* exact (the marker negates to the other marker) */
@@ -160,12 +164,13 @@ static inline num_t num__mul_wide(num_t a, num_t b)
  * result in range: rounded with one add (a half, less one below 0) and
  * one shift, num__mul_wide's result without its checks. */
 #define NUM__MUL_FAST_BITS ((NUM_FRAC_BITS + 30) / 2)
+num_t num__mul_rest(num_t a, num_t b); /* num__mul_wide, not inlined (fixed/num.c) */
 static inline num_t num_mul(num_t a, num_t b)
 {
     int64_t p = (int64_t)a * b;
     if ((num__mag(a) | num__mag(b)) < (uint32_t)1 << NUM__MUL_FAST_BITS)
         return (num_t)((p + ((int64_t)1 << (NUM_FRAC_BITS - 1)) - (p < 0)) >> NUM_FRAC_BITS);
-    return num__mul_wide(a, b);
+    return num__mul_rest(a, b);
 }
 
 num_t num_div(num_t a, num_t b); /* saturates; x/0 is a marker; rounds (halves up) */
