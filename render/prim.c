@@ -782,33 +782,6 @@ int prim_aabb_entry(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax, n
     return 1;
 }
 
-/* One axis of prim_aabb_ray: d the direction's component on it. */
-static inline __attribute__((always_inline)) void prim_aabb_ray_axis(aabb_ray_t *r, int axis,
-                                                                     num_t d)
-{
-    r->inv[axis] = NUM_ZERO;
-    r->use_div[axis] = 1;
-#if defined(LINKS1_NUM_FIXED)
-    (void)d; /* the fixed build divides on every axis */
-#else
-    if (!num_eq(d, NUM_ZERO)) {
-        num_t inv = num_recip(d);
-        if (num_lt(num_abs(inv), NUM_FAR)) {
-            r->inv[axis] = inv;
-            r->use_div[axis] = 0;
-        }
-    }
-#endif
-}
-
-void prim_aabb_ray(const ray_t *ray, aabb_ray_t *r)
-{
-    prim_aabb_ray_axis(r, 0, ray->dir.x);
-    prim_aabb_ray_axis(r, 1, ray->dir.y);
-    prim_aabb_ray_axis(r, 2, ray->dir.z);
-    r->all_inv = !r->use_div[0] && !r->use_div[1] && !r->use_div[2];
-}
-
 int prim_aabb_entry_ray_axes(const aabb_t *b, const ray_t *ray, const aabb_ray_t *r, num_t tmin,
                              num_t tmax, num_t *entry)
 {
