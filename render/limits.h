@@ -59,12 +59,14 @@
  * 584 bytes in float, 672 in fixed on the A15 (664 on the M33), against
  * 312 and 400 before: 312 more. */
 /* The firmware's render/ at -O3 (Makefile FW_HOT_SRCS; trace_nearest
- * kept out of the recursion's frames, which stay as above) grows the
- * leaf's frames (-fstack-usage, gcc 12, the frames each path below
- * render_pixel_impl passes summed by hand): in fixed by about 170 bytes
- * (trace_cluster 592, trace_lights 696, render_pixel_impl 208, the M33's
- * prim_intersect_uncertain 192), in float by under 60, in double by
- * about 185 (the M33's trace_cluster 784, trace_own_prims_shadow 152). */
+ * kept out of the recursion's frames) has its own frames, measured
+ * (-fstack-usage, gcc 12, every firmware build): a level of the recursion
+ * (trace_ray + trace_shade) at most 496 bytes outside double (fixed on
+ * the A15: 144 + 352) and 792 in double (the M33's software double: 248 +
+ * 544); the leaf's frames grow in fixed by about 170 bytes against -O2
+ * (trace_cluster 544, trace_lights 592, render_pixel_impl 208), in float
+ * by under 60, in double by about 185 (the M33's trace_cluster 784,
+ * trace_lights 1056). */
 #define RENDER_STACK_O3 192
 #define RENDER_STACK_O3_DOUBLE 256
 #if defined(LINKS1_NUM_DOUBLE)
@@ -79,13 +81,13 @@
  * prim_intersect_uncertain 520, prim_surface 296), libgcc's double
  * routines a few words: the larger of the two; a density sphere's test 504
  * more (its leaf 992 bytes on the A15, 1,128 on the M33, against 544 and
- * 624 before).  About 21 KiB at max_depth 16 with RENDER_STACK_AA, within
+ * 624 before).  About 22 KiB at max_depth 16 with RENDER_STACK_AA, within
  * TASK_STACK_SIZE (24 KiB; roles/dm_render.c checks it) */
-#define RENDER_STACK_PER_DEPTH 744
+#define RENDER_STACK_PER_DEPTH 792
 #define RENDER_STACK_BASE (6920 + RENDER_STACK_O3_DOUBLE)
 #define RENDER_STACK_AA 2048
 #else
-#define RENDER_STACK_PER_DEPTH 448
+#define RENDER_STACK_PER_DEPTH 496
 #define RENDER_STACK_BASE (4992 + RENDER_STACK_O3)
 #define RENDER_STACK_AA 1216
 #endif
