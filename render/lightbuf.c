@@ -95,8 +95,10 @@ static void lb_item_corners(const render_frame_t *f, uint32_t item, vec3_t c[8])
 static void lb_mark(const render_lb_grid_t *g, uint32_t (*cells)[LB_N], const num_t r[4],
                     uint32_t bit)
 {
-    int u0 = render_lb_grid_cell(r[0], g->u0, g->su) - 1, u1 = render_lb_grid_cell(r[1], g->u0, g->su) + 1;
-    int v0 = render_lb_grid_cell(r[2], g->v0, g->sv) - 1, v1 = render_lb_grid_cell(r[3], g->v0, g->sv) + 1;
+    int u0 = render_lb_grid_cell(r[0], g->u0, g->su) - 1;
+    int u1 = render_lb_grid_cell(r[1], g->u0, g->su) + 1;
+    int v0 = render_lb_grid_cell(r[2], g->v0, g->sv) - 1;
+    int v1 = render_lb_grid_cell(r[3], g->v0, g->sv) + 1;
     for (int u = u0 < 0 ? 0 : u0; u <= u1 && u < LB_N; u++)
         cells[0][u] |= bit;
     for (int v = v0 < 0 ? 0 : v0; v <= v1 && v < LB_N; v++)
