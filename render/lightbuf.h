@@ -81,9 +81,6 @@ size_t render_lightbuf_bytes(const render_frame_t *f);
 /* Builds f's light buffer in mem (bytes of it, aligned for a num_t): NULL
  * when bytes fall short or f has no cluster tree. */
 const render_lightbuf_t *render_lightbuf_build(const render_frame_t *f, void *mem, size_t bytes);
-/* The items a shadow ray from origin along dir towards light may meet
- * (render_lightbuf_mask): inline, as it is asked for every shadow ray. */
-
 /* The cell of coordinate x in a grid from x0 at s cells a unit, clamped. */
 static inline int render_lb_grid_cell(num_t x, num_t x0, num_t s)
 {
@@ -131,6 +128,8 @@ static inline uint32_t render_lb_cube_mask(const render_lb_light_t *l, vec3_t d)
     return l->always | (l->mask[face][0][u] & l->mask[face][1][v]);
 }
 
+/* The items a shadow ray from origin along dir towards light may meet:
+ * inline, as it is asked for every shadow ray. */
 static inline uint32_t render_lightbuf_mask(const render_lightbuf_t *lb, uint32_t light,
                                             vec3_t origin, vec3_t dir)
 {
