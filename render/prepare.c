@@ -6,8 +6,10 @@
  * from the inverses of each level (rather than inverting the composed map)
  * to keep precision.  What does not change from frame to frame (children
  * and primitives grouped by cluster, which clusters have maps of their
- * own, which vertex normals are equal, the static checks) is the scene
- * index's, worked out once a load (render_scene_index).
+ * own, a cluster's maps to its parent and back where it has no keys (its
+ * local map's inverse where it has), which vertex normals are equal, the
+ * static checks) is the scene index's, worked out once a load
+ * (render_scene_index).
  * With options.world_space the primitives stay in world coordinates, the
  * camera turns the rays instead, and a frame keeps the frame before's
  * world part when no keyed map changed (render_prepare_again).
@@ -689,8 +691,9 @@ size_t render_scene_index_bytes_layout(const scene_t *s, const render_layout_t *
     size_t p = s->prim_count ? s->prim_count : 1;
     size_t n = s->normals_count ? s->normals_count : 1;
     return sizeof(scene_group_t) * c + sizeof(uint32_t) * (c + p + 3 * n) + lay->num * p + /* kept */
+           2 * lay->xform * c + /* parent_maps, at most 2 a cluster */
            c + n + 2 * sizeof(uint32_t) * PREP_SHARE_CACHE + /* scratch */
-           8 * ARENA_MAX_ALIGN; /* 8 allocations, each padded at most that */
+           9 * ARENA_MAX_ALIGN; /* 9 allocations, each padded at most that */
 }
 
 size_t render_scene_index_bytes(const scene_t *s)
@@ -760,10 +763,46 @@ static render_status_t prep_index_triangles(const scene_t *s, const scene_group_
     return RENDER_OK;
 }
 
+/* What of each cluster's maps stays from frame to frame (scene_index_t's
+ * parent_maps), for the clusters with maps of their own (own of them),
+ * into the arena; g[].parent_maps set.  The same operations on the same
+ * operands as prep_cluster_maps would do each frame, so the same bits.
+ * RENDER_OK, or precision_invert's error for a local map it cannot
+ * invert. */
+static render_status_t prep_index_maps(const scene_t *s, scene_group_t *g, uint32_t own,
+                                       arena_t *arena, scene_index_t *out)
+{
+    xform_t *maps = ARENA_NEW_ARRAY(arena, xform_t, own ? 2 * (size_t)own : 1);
+    if (!maps)
+        return RENDER_ERR_ARENA;
+    const xform_t id = xform_identity(); /* the key of a cluster without keys */
+    xform_t id_inv;
+    render_status_t st = precision_invert(&id, &id_inv);
+    for (uint32_t i = 0, n = 0; i < s->cluster_count && st == RENDER_OK; i++) {
+        if (g[i].maps_of != i)
+            continue;
+        const scene_cluster_t *c = &s->clusters[i];
+        xform_t *m = &maps[n];
+        g[i].parent_maps = n;
+        n += 2;
+        xform_t local_inv;
+        st = precision_invert(&c->local, &local_inv);
+        if (st == RENDER_OK && c->key_count) {
+            m[1] = local_inv;
+        } else if (st == RENDER_OK) {
+            m[0] = xform_compose(&id, &c->local);
+            m[1] = xform_compose(&local_inv, &id_inv);
+        }
+    }
+    out->parent_maps = maps;
+    out->parent_map_count = own ? 2 * own : 1;
+    return st;
+}
+
 render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index_t *out)
 {
     __builtin_memset(out, 0, sizeof *out);
-    uint32_t nc = s->cluster_count, np = s->prim_count, nn = s->normals_count;
+    uint32_t nc = s->cluster_count, np = s->prim_count, nn = s->normals_count, own = 0;
     render_status_t st = prep_check_tree(s);
     if (st != RENDER_OK)
         return st;
@@ -795,6 +834,7 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
         /* a plain cluster has exactly its parent's maps, so its primitives
          * come out bit for bit as in the parent: the DM copies no maps */
         g[i].maps_of = i > 0 && prep_is_plain(c) ? g[c->parent].maps_of : i;
+        own += g[i].maps_of == i;
     }
     /* children and primitives grouped by owner, each with a counting sort
      * (stable: ascending index) */
@@ -816,6 +856,8 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
      * likewise cost more to copy than to map: measured, not kept.) */
     st = prep_index_triangles(s, g, named, cache, src, spread, out);
     arena_release_to(arena, mark);
+    if (st == RENDER_OK)
+        st = prep_index_maps(s, g, own, arena, out);
     if (st != RENDER_OK)
         return st;
     out->groups = g;
@@ -860,11 +902,29 @@ size_t render_prepare_bytes(const scene_t *s)
 #define PREP_MAPS_MOVED 1u
 #define PREP_BOX_MOVED 2u
 
+/* A keyed cluster's maps to its parent and back at frame_index, into
+ * maps; *key its key's map.  local_inv: its local map's inverse (the
+ * index's parent_maps). */
+static render_status_t prep_keyed_maps(const scene_t *s, const scene_cluster_t *c,
+                                       uint32_t frame_index, const xform_t *local_inv,
+                                       xform_t *key, xform_t maps[2])
+{
+    xform_t key_inv;
+    *key = prep_key_xform(s, c, frame_index);
+    render_status_t st = precision_invert(key, &key_inv);
+    if (st != RENDER_OK)
+        return st;
+    maps[0] = xform_compose(key, &c->local);
+    maps[1] = xform_compose(local_inv, &key_inv);
+    return RENDER_OK;
+}
+
 /* The maps of every cluster that has its own (to_eye[i], from_eye[i]
- * for ix->groups[i].maps_of == i), composed from root_to and root_from;
- * f->precision_lost set when one saturates.  With before (a frame index):
- * moved[i] set for each of them whose map differs from its map at that
- * frame, its own key's or an ancestor's. */
+ * for ix->groups[i].maps_of == i), composed from root_to and root_from
+ * and each one's maps to its parent and back (a cluster without keys has
+ * them in the index); f->precision_lost set when one saturates.  With
+ * before (a frame index): moved[i] set for each of them whose map differs
+ * from its map at that frame, its own key's or an ancestor's. */
 static render_status_t prep_cluster_maps(const scene_t *s, const scene_index_t *ix, uint32_t frame_index,
                                          const xform_t *root_to, const xform_t *root_from,
                                          const uint32_t *before, uint8_t *moved, xform_t *to_eye,
@@ -874,20 +934,19 @@ static render_status_t prep_cluster_maps(const scene_t *s, const scene_index_t *
         if (ix->groups[i].maps_of != i)
             continue;
         const scene_cluster_t *c = &s->clusters[i];
-        xform_t key = prep_key_xform(s, c, frame_index);
-        xform_t key_inv, local_inv;
-        render_status_t st = precision_invert(&key, &key_inv);
-        if (st == RENDER_OK)
-            st = precision_invert(&c->local, &local_inv);
-        if (st != RENDER_OK)
-            return st;
-        xform_t to_parent = xform_compose(&key, &c->local);
-        xform_t from_parent = xform_compose(&local_inv, &key_inv);
+        const xform_t *parent = &ix->parent_maps[ix->groups[i].parent_maps];
+        xform_t key, keyed[2];
+        if (c->key_count) {
+            render_status_t st = prep_keyed_maps(s, c, frame_index, &parent[1], &key, keyed);
+            if (st != RENDER_OK)
+                return st;
+            parent = keyed;
+        }
         uint32_t pm = i == 0 ? 0 : ix->groups[c->parent].maps_of;
         const xform_t *parent_to_eye = i == 0 ? root_to : &to_eye[pm];
         const xform_t *eye_to_parent = i == 0 ? root_from : &from_eye[pm];
-        to_eye[i] = xform_compose(parent_to_eye, &to_parent);
-        from_eye[i] = xform_compose(&from_parent, eye_to_parent);
+        to_eye[i] = xform_compose(parent_to_eye, &parent[0]);
+        from_eye[i] = xform_compose(&parent[1], eye_to_parent);
         if (xform_is_sat(&to_eye[i]) || xform_is_sat(&from_eye[i]))
             f->precision_lost = 1;
         if (before) {

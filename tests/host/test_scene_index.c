@@ -8,13 +8,15 @@
  *   - the index itself: children and primitives grouped by owner in rising
  *     index, the primitives that are not triangles within [pointer_lo,
  *     pointer_hi), each cluster's maps its own or (a plain cluster) its parent's,
- *     each shared vertex normal naming the first one with the same bits
+ *     what of a cluster's maps to its parent and back stays from frame to
+ *     frame (parent_maps) the bits a frame would work out, each shared vertex normal naming the first one with the same bits
  *     and maps, itself first (and the smooth model does share);
  *   - a scene the index refuses: a normals record named by two triangles
  *     (RENDER_ERR_PRIM), a cluster whose parent follows it
  *     (RENDER_ERR_CLUSTER).
  */
 #include "render/scene_load.h"
+#include "render/vec3.h"
 #include "tests/check.h"
 #include "tests/host/test_blob_util.h"
 
@@ -134,6 +136,25 @@ static uint32_t ti_normal_maps(const scene_t *s, uint32_t c)
     return UINT32_MAX;
 }
 
+/* Cluster c's pair in the index's parent_maps (the at-th), as its
+ * preparation would work it out each frame: without keys its key (the
+ * identity) composed with its local map, and back; with keys its local
+ * map's inverse.  1 when it is not. */
+static uint32_t ti_parent_maps_bad(const scene_t *s, uint32_t c, uint32_t at)
+{
+    const scene_index_t *ix = &s->index;
+    const scene_cluster_t *cl = &s->clusters[c];
+    xform_t id = xform_identity(), id_inv, local_inv;
+    if (ix->groups[c].parent_maps != at || at + 2 > ix->parent_map_count ||
+        !xform_invert(&id, &id_inv) || !xform_invert(&cl->local, &local_inv))
+        return 1;
+    const xform_t *m = &ix->parent_maps[at];
+    if (cl->key_count)
+        return memcmp(&m[1], &local_inv, sizeof local_inv) != 0;
+    xform_t to = xform_compose(&id, &cl->local), from = xform_compose(&local_inv, &id_inv);
+    return memcmp(&m[0], &to, sizeof to) != 0 || memcmp(&m[1], &from, sizeof from) != 0;
+}
+
 static void test_index_structure(void)
 {
     uint8_t *mem = malloc(TI_ARENA);
@@ -150,7 +171,7 @@ static void test_index_structure(void)
         scene_load_error_t lerr;
         CHECK_EQ_INT(scene_load(buf, len, &arena, &s, &lerr), SCENE_LOAD_OK);
         const scene_index_t *ix = &s.index;
-        uint32_t bad = 0, kids = 0, prims = 0, shared_n = 0;
+        uint32_t bad = 0, kids = 0, prims = 0, shared_n = 0, own = 0;
         for (uint32_t c = 0; c < s.cluster_count; c++) {
             const scene_group_t *g = &ix->groups[c];
             bad += g->first_child != kids || g->first_prim != prims;
@@ -172,6 +193,8 @@ static void test_index_structure(void)
                 for (int k = 0; k < 4; k++)
                     plain = plain && num_eq(cl->local.m[r][k], r == k ? NUM_ONE : NUM_ZERO);
             bad += g->maps_of != (plain ? ix->groups[cl->parent].maps_of : c);
+            if (g->maps_of == c)
+                bad += ti_parent_maps_bad(&s, c, 2 * own++);
         }
         bad += kids != s.cluster_count - 1 || prims != s.prim_count;
         /* the primitives relocation looks into: every one that is not a
