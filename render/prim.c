@@ -537,6 +537,11 @@ int prim_density_ray(const render_prim_t *p, const ray_t *ray, num_t tmin, prim_
         hi = any ? num_max(hi, t1) : t1;
         any = 1;
     }
+    r->after = num_neg(NUM_FAR);
+    for (uint16_t j = 0; j < r->count; j++)
+        r->after = num_max(r->after, r->tc[j]);
+    /* a few steps of each term, and of the sum, at most: 32 apiece */
+    r->slack = num_mul_int(num_ulp(weights), 32 * (r->count + 1));
     r->lo = num_max(lo, tmin);
     r->hi = hi;
     r->peak = peak;
@@ -568,6 +573,26 @@ static inline __attribute__((always_inline)) num_t prim_density_sample(
     if (r->bounded && num_lt(num_add(prim_density_bound(p, r, t), cut), p->threshold))
         return num_neg(NUM_FAR);
     return prim_density_excess_at(p, ray, t);
+}
+
+/* Sample t as prim_density_sample, into *f; 1 when, besides, it and every
+ * sample after it are surely below 0: past every listed closest approach
+ * (t len at or beyond r->after) no term of the bound grows with t but by
+ * rounding (r->slack). */
+static inline __attribute__((always_inline)) int prim_density_sample_or_end(
+    const render_prim_t *p, const ray_t *ray, const prim_density_ray_t *r, num_t cut, num_t t,
+    num_t *f)
+{
+    if (r->bounded) {
+        num_t b = num_add(prim_density_bound(p, r, t), cut);
+        if (num_lt(b, p->threshold)) {
+            *f = num_neg(NUM_FAR);
+            return !num_lt(num_mul(t, r->len), r->after) &&
+                   num_lt(num_add(b, r->slack), p->threshold);
+        }
+    }
+    *f = prim_density_excess_at(p, ray, t);
+    return 0;
 }
 
 /* The root bracketed by a (on the side of inside) and b, by bisection:
@@ -636,8 +661,12 @@ static int prim_density_intersect(const render_prim_t *p, const ray_t *ray,
         near_prev = num_gt(lo, settled) && !num_gt(num_abs(f0), most) &&
                     !num_gt(num_abs(f0), prim_density_excess_error(p, err, lo));
     for (int i = 1; i <= steps; i++) {
-        num_t t = prim_density_sample_t(lo, hi, step, steps, i);
-        num_t f = prim_density_sample(p, ray, &r, cut, t);
+        num_t t = prim_density_sample_t(lo, hi, step, steps, i), f;
+        if (prim_density_sample_or_end(p, ray, &r, cut, t, &f) && !inside) {
+            near_earlier |= near_prev; /* the samples left: none near 0, no crossing */
+            near_prev = 0;
+            break;
+        }
         /* the error at t only for a sample under the largest */
         int near = uncertain && !num_gt(num_abs(f), most) && num_gt(t, settled) &&
                    !num_gt(num_abs(f), prim_density_excess_error(p, err, t));

@@ -237,6 +237,11 @@ typedef struct {
     num_t lo, hi; /* from the first sphere's entry (or tmin) to the last one's exit */
     num_t peak;   /* the bound's largest: each component at its closest approach */
     num_t margin; /* what the bound is widened by (above) */
+    num_t after;  /* s at or past every listed closest approach (-NUM_FAR:
+                     none listed): from there on every term of the bound
+                     only falls as t grows */
+    num_t slack;  /* what rounding may raise the bound by there all the
+                     same: where a term's two formulas meet */
     int bounded;  /* the lists below hold every component that adds to the bound */
     /* The components of weight above 0 whose sphere the ray's line meets
      * (cc within its radius; each other one adds 0 at every t), in rising

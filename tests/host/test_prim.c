@@ -475,7 +475,9 @@ static double rnd(unsigned *state, double lo, double hi)
  * Components of mixed weights (one negative), in clusters moved, turned
  * and scaled, rays from near and far.  Fails on a bound that leaves out a
  * component, takes the closest approach as the distance everywhere but
- * (t len - tc)^2 too short, or has no margin for rounding. */
+ * (t len - tc)^2 too short, or has no margin for rounding.  Past every
+ * closest approach (after) a sample whose bound is below by slack too
+ * has every later one below (the root finder ends there), and many do. */
 static void test_density_bound(void)
 {
     static const double comps[5][5] = {{0, 0, 0, 1.3, 1},      {0.9, 0.3, 0, 0.9, 0.9},
@@ -483,7 +485,7 @@ static void test_density_bound(void)
                                        {0.2, -0.6, 0.5, 0.8, 0.8}};
     static const double maps[3][5] = {{1, 0, 0, 0, 10}, {0.866, 0.5, 0.5, -1, 9}, {2.5, 0.4, -1, 1, 12}};
     unsigned state = 12345;
-    long samples = 0, above = 0, passed = 0;
+    long samples = 0, above = 0, passed = 0, rose = 0, ends = 0;
     for (int m = 0; m < 3; m++) {
         ts_init(&ts, 8, 8);
         uint16_t c = ts_cluster(&ts, 0, ts_rotate_z(maps[m][0], maps[m][1], maps[m][2],
@@ -502,6 +504,7 @@ static void test_density_bound(void)
             prim_density_ray_t d;
             if (!prim_density_ray(p, &r, NUM_ZERO, &d) || !d.bounded)
                 continue;
+            int ended = 0; /* past d.after, below by d.slack too: the root finder ends */
             for (int i = 0; i <= 64; i++) {
                 double lo = num_to_double(d.lo), hi = num_to_double(d.hi);
                 num_t t = num_from_double(lo + (hi - lo) * i / 64);
@@ -512,12 +515,19 @@ static void test_density_bound(void)
                 samples++;
                 above += sum > bound;
                 passed += bound < num_to_double(p->threshold);
+                rose += ended && !(bound < num_to_double(p->threshold));
+                num_t b = num_add(prim_density_bound(p, &d, t), d.margin);
+                ended |= !num_lt(num_mul(t, d.len), d.after) &&
+                         num_lt(num_add(b, d.slack), p->threshold);
+                ends += ended;
             }
         }
     }
     CHECK(samples > 10000);
     CHECK_EQ_INT(above, 0);
     CHECK(passed > samples / 4); /* and it is of use: it passes over many */
+    CHECK_EQ_INT(rose, 0);
+    CHECK(ends > samples / 8);
 }
 
 /* prim_aabb_around says a ray starts well inside a box only where the
