@@ -765,11 +765,11 @@ static render_status_t prep_index_triangles(const scene_t *s, const scene_group_
 
 /* What of each cluster's maps stays from frame to frame (scene_index_t's
  * parent_maps), for the clusters with maps of their own (own of them),
- * into the arena; g[].parent_maps set.  The same operations on the same
+ * into the arena.  The same operations on the same
  * operands as prep_cluster_maps would do each frame, so the same bits.
  * RENDER_OK, or precision_invert's error for a local map it cannot
  * invert. */
-static render_status_t prep_index_maps(const scene_t *s, scene_group_t *g, uint32_t own,
+static render_status_t prep_index_maps(const scene_t *s, const scene_group_t *g, uint32_t own,
                                        arena_t *arena, scene_index_t *out)
 {
     xform_t *maps = ARENA_NEW_ARRAY(arena, xform_t, own ? 2 * (size_t)own : 1);
@@ -778,12 +778,11 @@ static render_status_t prep_index_maps(const scene_t *s, scene_group_t *g, uint3
     const xform_t id = xform_identity(); /* the key of a cluster without keys */
     xform_t id_inv;
     render_status_t st = precision_invert(&id, &id_inv);
-    for (uint32_t i = 0, n = 0; i < s->cluster_count && st == RENDER_OK; i++) {
+    for (uint32_t i = 0, n = 0; n < 2 * own && st == RENDER_OK; i++) {
         if (g[i].maps_of != i)
             continue;
         const scene_cluster_t *c = &s->clusters[i];
         xform_t *m = &maps[n];
-        g[i].parent_maps = n;
         n += 2;
         xform_t local_inv;
         st = precision_invert(&c->local, &local_inv);
@@ -930,11 +929,13 @@ static render_status_t prep_cluster_maps(const scene_t *s, const scene_index_t *
                                          const uint32_t *before, uint8_t *moved, xform_t *to_eye,
                                          xform_t *from_eye, render_frame_t *f)
 {
+    const xform_t *parent_maps = ix->parent_maps; /* the next cluster's pair */
     for (uint32_t i = 0; i < s->cluster_count; i++) {
         if (ix->groups[i].maps_of != i)
             continue;
         const scene_cluster_t *c = &s->clusters[i];
-        const xform_t *parent = &ix->parent_maps[ix->groups[i].parent_maps];
+        const xform_t *parent = parent_maps;
+        parent_maps += 2;
         xform_t key, keyed[2];
         if (c->key_count) {
             render_status_t st = prep_keyed_maps(s, c, frame_index, &parent[1], &key, keyed);

@@ -181,8 +181,6 @@ typedef struct {
     uint32_t maps_of; /* the cluster whose maps its primitives use: itself,
                          or for a plain cluster (no keys, the identity: a
                          node of the automatic hierarchy) its parent's */
-    uint32_t parent_maps; /* a cluster with maps of its own: its pair in the
-                             index's parent_maps */
 } scene_group_t;
 
 /* The scene's static structure (render_scene_index): arrays in the
@@ -203,10 +201,11 @@ typedef struct {
                                     of max(|u_k - u_0|, |v_k - v_0|)
                                     (precision_check); 0 for other kinds */
     const xform_t *parent_maps;  /* reloc; 2 per cluster with maps of its
-                                    own, what of its map to its parent and
-                                    back stays from frame to frame: without
-                                    keys both maps (the key the identity),
-                                    with keys [1] its local map's inverse */
+                                    own, in rising cluster index: what of
+                                    its map to its parent and back stays
+                                    from frame to frame: without keys both
+                                    maps (the key the identity), with keys
+                                    [1] its local map's inverse */
     uint32_t parent_map_count;   /* of parent_maps */
     uint32_t pointer_lo, pointer_hi; /* the primitives that are not
                                         triangles lie in [pointer_lo,

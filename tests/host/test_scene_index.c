@@ -9,8 +9,9 @@
  *     index, the primitives that are not triangles within [pointer_lo,
  *     pointer_hi), each cluster's maps its own or (a plain cluster) its parent's,
  *     what of a cluster's maps to its parent and back stays from frame to
- *     frame (parent_maps) the bits a frame would work out, each shared vertex normal naming the first one with the same bits
- *     and maps, itself first (and the smooth model does share);
+ *     frame (parent_maps, in cluster order) the bits a frame would work
+ *     out, each shared vertex normal naming the first one with the same
+ *     bits and maps, itself first (and the smooth model does share);
  *   - a scene the index refuses: a normals record named by two triangles
  *     (RENDER_ERR_PRIM), a cluster whose parent follows it
  *     (RENDER_ERR_CLUSTER).
@@ -145,7 +146,7 @@ static uint32_t ti_parent_maps_bad(const scene_t *s, uint32_t c, uint32_t at)
     const scene_index_t *ix = &s->index;
     const scene_cluster_t *cl = &s->clusters[c];
     xform_t id = xform_identity(), id_inv, local_inv;
-    if (ix->groups[c].parent_maps != at || at + 2 > ix->parent_map_count ||
+    if (at + 2 > ix->parent_map_count ||
         !xform_invert(&id, &id_inv) || !xform_invert(&cl->local, &local_inv))
         return 1;
     const xform_t *m = &ix->parent_maps[at];
