@@ -227,6 +227,8 @@ static inline num_t num_dot3(num_t ax, num_t ay, num_t az, num_t bx, num_t by, n
 
 /* floor(a) as an integer; markers give +-INT32_MAX >> NUM_FRAC_BITS */
 static inline int32_t num_floor_int(num_t a) { return a >> NUM_FRAC_BITS; }
+/* The same of an a >= 0 (the IEEE builds' is cheaper) */
+static inline int32_t num_floor_nonneg_int(num_t a) { return a >> NUM_FRAC_BITS; }
 
 /* a * 2^e: a shift, rounded to nearest when e < 0; saturates */
 static inline num_t num_scale2(num_t a, int e)
@@ -342,6 +344,8 @@ static inline int32_t num_floor_int(num_t a)
     int32_t i = (int32_t)a;
     return ((num_t)i > a) ? i - 1 : i;
 }
+/* The same of an a >= 0: the conversion's truncation is the floor */
+static inline int32_t num_floor_nonneg_int(num_t a) { return (int32_t)a; }
 
 static inline int num_lt(num_t a, num_t b) { return a < b; }
 static inline int num_le(num_t a, num_t b) { return a <= b; }

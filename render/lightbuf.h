@@ -89,8 +89,7 @@ static inline int render_lb_grid_cell(num_t x, num_t x0, num_t s)
         return 0;
     if (!num_lt(c, num_from_int(RENDER_LB_CELLS - 1)))
         return RENDER_LB_CELLS - 1;
-    int i = num_floor_int(c);
-    return i < 0 ? 0 : i > RENDER_LB_CELLS - 1 ? RENDER_LB_CELLS - 1 : i;
+    return num_floor_nonneg_int(c); /* 0 < c < RENDER_LB_CELLS - 1 */
 }
 
 /* Where a point p falls on a parallel light's plane: along the direction

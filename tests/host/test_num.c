@@ -219,6 +219,14 @@ static void test_floor_compare(void)
     CHECK_EQ_INT(num_floor_int(num_from_double(-2.25)), -3);
     CHECK_EQ_INT(num_floor_int(num_from_double(-2.0)), -2);
     CHECK_EQ_INT(num_floor_int(NUM_ZERO), 0);
+    /* of a >= 0, as num_floor_int: below, at and above an integer */
+    int32_t off = 0;
+    for (int32_t k = 0; k < 40; k++)
+        for (int e = -1; e <= 1; e++) {
+            num_t a = num_add(num_from_int(k), num_mul_int(num_ulp(num_from_int(k)), e));
+            off += num_ge(a, NUM_ZERO) && num_floor_nonneg_int(a) != num_floor_int(a);
+        }
+    CHECK_EQ_INT(off, 0);
     CHECK(num_lt(num_from_double(-1), NUM_ZERO) && num_gt(NUM_ONE, NUM_HALF));
     CHECK(num_le(NUM_ONE, NUM_ONE) && num_ge(NUM_ONE, NUM_ONE) && num_eq(NUM_HALF, NUM_C(0.5)));
     CHECK_NEAR(num_to_double(num_min(NUM_ONE, NUM_HALF)), 0.5, 0);
