@@ -68,7 +68,7 @@ static const struct {
 } areas_decreasing_rule[] = {
     {64, 32768, 2},
     {128, 8192, 4},
-    {UINT32_MAX, 8192, 2},
+    {UINT32_MAX, 16384, 2},
 };
 
 void areas_decreasing_defaults(uint32_t ncs, uint32_t *k, uint32_t *factor)

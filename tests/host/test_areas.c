@@ -289,7 +289,7 @@ static void test_decreasing_defaults_by_ncs(void)
 {
     static const uint32_t want[][3] = {
         {1, 32768, 2}, {8, 32768, 2}, {64, 32768, 2}, {65, 8192, 4},
-        {128, 8192, 4}, {129, 8192, 2}, {254, 8192, 2}, {4096, 8192, 2},
+        {128, 8192, 4}, {129, 16384, 2}, {254, 16384, 2}, {4096, 16384, 2},
     };
     for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
         uint32_t k = 0, factor = 0;
