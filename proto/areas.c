@@ -59,10 +59,10 @@ static uint32_t areas_pieces(const struct areas *s, uint32_t t)
 }
 
 /* Up to max_ncs NCs: k, factor.  From `links1 replay T --ncs N --areas K
- * --guided F` over K in {4096, ..., 65536} and F in {1, 2, 3, 4} on traces
- * of demo, glass and molecule at 512x480: the pair whose worst speed-up
- * over the three is nearest that trace's best, of equals the one with the
- * largest sum (docs/areas.md). */
+ * --guided F` over K in {4096, ..., 65536} and F in {1, 2, 3, 4} on five
+ * traces each of demo, glass and molecule at 512x480: the pair whose worst
+ * median speed-up over the three is nearest that scene's best, of equals
+ * the one with the largest sum (docs/areas.md). */
 static const struct {
     uint32_t max_ncs, k, factor;
 } areas_decreasing_rule[] = {
