@@ -300,11 +300,20 @@ static void prim_ellipsoid_surface(const render_prim_t *p, hit_t *hit)
 
 /* ------------------------------------------------------------------ box */
 
-/* Slab test along one axis of [-1,1]; narrows [*tnear, *tfar]. */
+/* Slab test along one axis, [lo, hi]; narrows [*tnear, *tfar].  An
+ * origin already past the face the ray enters by (o >= lo going up, o <=
+ * hi going down) enters at a t of 0 or less: with *tnear at 0 or more
+ * that face leaves *tnear as it is, and its division is not done. */
 static int prim_slab(num_t o, num_t d, num_t lo, num_t hi, num_t *tnear, num_t *tfar)
 {
     if (num_eq(d, NUM_ZERO))
         return !num_lt(o, lo) && !num_gt(o, hi);
+    int up = num_gt(d, NUM_ZERO);
+    num_t enter = num_sub(up ? lo : hi, o);
+    if (num_ge(*tnear, NUM_ZERO) && (up ? !num_gt(enter, NUM_ZERO) : !num_lt(enter, NUM_ZERO))) {
+        *tfar = num_min(*tfar, num_div(num_sub(up ? hi : lo, o), d));
+        return !num_gt(*tnear, *tfar);
+    }
     return prim_slab_narrow(num_div(num_sub(lo, o), d), num_div(num_sub(hi, o), d), tnear, tfar);
 }
 

@@ -530,13 +530,33 @@ static void test_density_bound(void)
     CHECK(ends > samples / 8);
 }
 
+/* prim_aabb_entry by its definition: both faces of every axis divided
+ * (prim_slab_narrow); an axis the ray runs along, by its origin. */
+static int entry_by_division(const aabb_t *b, const ray_t *r, num_t tmin, num_t tmax, num_t *entry)
+{
+    num_t tnear = tmin, tfar = tmax;
+    for (int i = 0; i < 3; i++) {
+        num_t o = vec3_get(r->origin, i), d = vec3_get(r->dir, i);
+        num_t lo = vec3_get(b->lo, i), hi = vec3_get(b->hi, i);
+        if (num_eq(d, NUM_ZERO) ? num_lt(o, lo) || num_gt(o, hi)
+                                : !prim_slab_narrow(num_div(num_sub(lo, o), d),
+                                                    num_div(num_sub(hi, o), d), &tnear, &tfar))
+            return 0;
+    }
+    *entry = tnear;
+    return 1;
+}
+
 /* prim_aabb_around says a ray starts well inside a box only where the
  * box's slabs (prim_aabb_entry_ray) give a hit: boxes near and far, rays
- * from inside them near a face and from outside, tmin 0 and above. */
+ * from inside them near a face and from outside, tmin 0 and above.  And
+ * prim_aabb_entry (whose slabs skip the entered face's division for an
+ * origin past it while tmin >= 0) gives its definition's answer and
+ * entry, bit for bit, from tmin and from -4. */
 static void test_aabb_around(void)
 {
     unsigned state = 777;
-    long around = 0, wrong = 0;
+    long around = 0, wrong = 0, differ = 0;
     for (int k = 0; k < 20000; k++) {
         double cx = rnd(&state, -50, 50), cy = rnd(&state, -50, 50), cz = rnd(&state, 0, 100);
         double hx = rnd(&state, 0.01, 10), hy = rnd(&state, 0.01, 10), hz = rnd(&state, 0.01, 10);
@@ -549,6 +569,12 @@ static void test_aabb_around(void)
             r.dir = vec3_normalize(ts_v(0, 0, rnd(&state, -1, 1))); /* along an axis */
         num_t tmin = num_from_double(k % 2 ? 0 : rnd(&state, 0, 0.01));
         num_t tmax = num_from_double(k % 7 ? 1000 : rnd(&state, 0, 0.02));
+        for (int below = 0; below < 2; below++) { /* and from before the origin */
+            num_t from = below ? num_from_int(-4) : tmin, got_at = NUM_ZERO, want_at = NUM_ZERO;
+            int got = prim_aabb_entry(&b, &r, from, tmax, &got_at);
+            int want = entry_by_division(&b, &r, from, tmax, &want_at);
+            differ += got != want || (got && memcmp(&got_at, &want_at, sizeof got_at) != 0);
+        }
         if (!prim_aabb_around(&b, r.origin, tmin, tmax))
             continue;
         around++;
@@ -559,6 +585,7 @@ static void test_aabb_around(void)
     }
     CHECK(around > 5000);
     CHECK_EQ_INT(wrong, 0);
+    CHECK_EQ_INT(differ, 0);
 }
 
 int main(void)
