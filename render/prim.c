@@ -513,6 +513,7 @@ int prim_density_ray(const render_prim_t *p, const ray_t *ray, num_t tmin, prim_
     r->len = len;
     r->bounded = p->component_count <= PRIM_DENSITY_BOUND_MAX;
     r->count = 0;
+    r->after = num_neg(NUM_FAR);
     for (uint16_t k = 0; k < p->component_count; k++) {
         const scene_density_component_t *c = &p->components[k];
         vec3_t oc = vec3_sub(o, c->centre);
@@ -529,6 +530,7 @@ int prim_density_ray(const render_prim_t *p, const ray_t *ray, num_t tmin, prim_
                 r->index[r->count] = k;
                 r->cc[r->count] = cc;
                 r->tc[r->count++] = tc;
+                r->after = num_max(r->after, tc);
             }
         }
         num_t rad = c->radius;
@@ -546,9 +548,6 @@ int prim_density_ray(const render_prim_t *p, const ray_t *ray, num_t tmin, prim_
         hi = any ? num_max(hi, t1) : t1;
         any = 1;
     }
-    r->after = num_neg(NUM_FAR);
-    for (uint16_t j = 0; j < r->count; j++)
-        r->after = num_max(r->after, r->tc[j]);
     /* a few steps of each term, and of the sum, at most: 32 apiece */
     r->slack = num_mul_int(num_ulp(weights), 32 * (r->count + 1));
     r->lo = num_max(lo, tmin);
@@ -572,22 +571,14 @@ num_t prim_density_bound(const render_prim_t *p, const prim_density_ray_t *r, nu
     return sum;
 }
 
-/* The excess at t, or -NUM_FAR where prim_density_bound (plus cut: the
- * error a sample is judged near 0 by, and the bound's margin) says it is
- * surely below -(that error): the answer the root finder draws from the
- * sample (below 0, and not near it) is the same. */
-static inline __attribute__((always_inline)) num_t prim_density_sample(
-    const render_prim_t *p, const ray_t *ray, const prim_density_ray_t *r, num_t cut, num_t t)
-{
-    if (r->bounded && num_lt(num_add(prim_density_bound(p, r, t), cut), p->threshold))
-        return num_neg(NUM_FAR);
-    return prim_density_excess_at(p, ray, t);
-}
-
-/* Sample t as prim_density_sample, into *f; 1 when, besides, it and every
- * sample after it are surely below 0: past every listed closest approach
- * (t len at or beyond r->after) no term of the bound grows with t but by
- * rounding (r->slack). */
+/* The sample at t into *f: the excess, or -NUM_FAR where
+ * prim_density_bound (plus cut: the error a sample is judged near 0 by,
+ * and the bound's margin) says it is surely below -(that error), as the
+ * answer the root finder draws from the sample (below 0, and not near it)
+ * is the same.  1 when, besides, it and every sample after it are surely
+ * below 0: past every listed closest approach (t len at or beyond
+ * r->after) no term of the bound grows with t but by rounding
+ * (r->slack). */
 static inline __attribute__((always_inline)) int prim_density_sample_or_end(
     const render_prim_t *p, const ray_t *ray, const prim_density_ray_t *r, num_t cut, num_t t,
     num_t *f)
@@ -602,6 +593,15 @@ static inline __attribute__((always_inline)) int prim_density_sample_or_end(
     }
     *f = prim_density_excess_at(p, ray, t);
     return 0;
+}
+
+/* The sample at t alone (prim_density_sample_or_end). */
+static inline __attribute__((always_inline)) num_t prim_density_sample(
+    const render_prim_t *p, const ray_t *ray, const prim_density_ray_t *r, num_t cut, num_t t)
+{
+    num_t f;
+    (void)prim_density_sample_or_end(p, ray, r, cut, t, &f);
+    return f;
 }
 
 /* The root bracketed by a (on the side of inside) and b, by bisection:
