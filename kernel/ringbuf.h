@@ -88,18 +88,21 @@ static inline int ringbuf_put_words(struct ringbuf *r, const void *a, uint32_t n
     return 0;
 }
 
-/* Copies n words out, starting skip words past the oldest, and takes the
- * skip + n words if take; 0, or -1 (nothing copied or taken) if fewer are
- * there. */
-static inline int ringbuf_get_words(struct ringbuf *r, uint32_t skip, void *out, uint32_t n,
-                                    int take)
+/* Consumer side: the words in the ring (one acquire of head: every word
+ * counted is in place). */
+static inline uint32_t ringbuf_words_in(const struct ringbuf *r)
 {
-    uint32_t tail = r->tail; /* only we write it */
     uint32_t head = __atomic_load_n(&r->head, __ATOMIC_ACQUIRE);
-    if ((head - tail) / 4u < skip + n)
-        return -1;
+    return (head - r->tail) / 4u; /* tail: only we write it */
+}
+
+/* Copies n words out, starting skip words past the oldest, taking none:
+ * the caller has seen skip + n words there (ringbuf_words_in). */
+static inline void ringbuf_read_words(const struct ringbuf *r, uint32_t skip, void *out,
+                                      uint32_t n)
+{
     const uint8_t *ring = r->buf;
-    uint32_t mask = r->size / 4u - 1u, at = (ringbuf_word_slot(r, tail) + skip) & mask;
+    uint32_t mask = r->size / 4u - 1u, at = (ringbuf_word_slot(r, r->tail) + skip) & mask;
     if (at + n <= mask + 1u) { /* no wrap: word after word */
         for (uint32_t i = 0; i < n; i++)
             __builtin_memcpy((uint8_t *)out + 4u * i, ring + 4u * (at + i), 4);
@@ -107,11 +110,14 @@ static inline int ringbuf_get_words(struct ringbuf *r, uint32_t skip, void *out,
         for (uint32_t i = 0; i < n; i++, at = (at + 1u) & mask)
             __builtin_memcpy((uint8_t *)out + 4u * i, ring + 4u * at, 4);
     }
+}
+
+/* Takes the n oldest words, read already. */
+static inline void ringbuf_take_words(struct ringbuf *r, uint32_t n)
+{
     /* Release: we are done reading the words before the producer may
      * overwrite them. */
-    if (take)
-        __atomic_store_n(&r->tail, tail + 4u * (skip + n), __ATOMIC_RELEASE);
-    return 0;
+    __atomic_store_n(&r->tail, r->tail + 4u * n, __ATOMIC_RELEASE);
 }
 
 #endif

@@ -122,7 +122,7 @@ int areas_init(struct areas *s, enum areas_mode mode, uint32_t width, uint32_t h
 
 /* Area col of band: bands split the scanlines and each band's share of the k
  * areas evenly, cutting at floor(total * i / parts). */
-static int areas_next_grid(struct areas *s, struct area *a)
+__attribute__((noinline)) static int areas_next_grid(struct areas *s, struct area *a)
 {
     if (s->band >= s->bands)
         return 0;
@@ -156,27 +156,26 @@ static int areas_next_decreasing(struct areas *s, struct area *a)
 {
     if (s->pixels_left == 0)
         return 0;
-    /* ceil(pixels_left / share) in 32 bits (pixels_left < 2^25): the RC
-     * computes it per request, and a 64-bit division is a long routine. */
-    uint64_t share = (uint64_t)s->factor * s->ncs;
-    uint32_t t = share >= s->pixels_left ? 1u : (s->pixels_left - 1u) / (uint32_t)share + 1u;
-    if (t < s->min_pixels)
-        t = s->min_pixels;
-
-    if (s->next_x == 0 && t >= s->width) {
-        uint32_t lines = t / s->width;
-        uint32_t left = s->height - s->next_y;
-        if (lines > left)
-            lines = left;
-        a->x = 0;
-        a->y = s->next_y;
-        a->w = s->width;
-        a->h = lines;
-        s->next_y += lines;
-        s->pixels_left -= lines * s->width;
-        return 1;
-    }
-    if (s->next_x == 0) {
+    if (s->next_x == 0) { /* a scanline's start: the target size t chooses */
+        /* ceil(pixels_left / share) in 32 bits (pixels_left < 2^25): the RC
+         * computes it per scanline, and a 64-bit division is a long routine. */
+        uint64_t share = (uint64_t)s->factor * s->ncs;
+        uint32_t t = share >= s->pixels_left ? 1u : (s->pixels_left - 1u) / (uint32_t)share + 1u;
+        if (t < s->min_pixels)
+            t = s->min_pixels;
+        if (t >= s->width) {
+            uint32_t lines = t / s->width;
+            uint32_t left = s->height - s->next_y;
+            if (lines > left)
+                lines = left;
+            a->x = 0;
+            a->y = s->next_y;
+            a->w = s->width;
+            a->h = lines;
+            s->next_y += lines;
+            s->pixels_left -= lines * s->width;
+            return 1;
+        }
         s->pieces = areas_pieces(s, t);
         s->piece = 0;
     }

@@ -34,7 +34,7 @@ static inline uint32_t crc32_step_word(uint32_t crc, uint32_t w)
  * and whole words only: the bytes past len are not read): inline, for the
  * serial lines' short messages, where a call would cost as much as the
  * steps.  Longer data goes to crc32_update. */
-#define CRC32_SHORT_WORDS 2u
+#define CRC32_SHORT_WORDS 4u
 static inline uint32_t crc32_short(const void *p, size_t len)
 {
 #if defined(__BYTE_ORDER__) && __BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__

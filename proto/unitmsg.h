@@ -40,10 +40,11 @@ enum unit_msg {
     MSG_RENDER_DONE = 20,    /* RC->DM: i32 status; 0: gigs_frame_result
                               * (GIGS_RESULT_SIZE); else text naming the problem */
     MSG_NC_START = 21,       /* RC->NC: the frame is in the broadcast block:
-                              * u8 flags, u32 pixels of the largest area, u8
-                              * clipping (enum link_clip) (MSG_NC_START_SIZE);
-                              * then, while areas are left, the NC's first
-                              * area as an MSG_NC_AREA's payload */
+                              * u8 flags, u8 clipping (enum link_clip), u16 0,
+                              * u32 pixels of the largest area
+                              * (MSG_NC_START_SIZE); then, while areas are
+                              * left, the NC's first area as an MSG_NC_AREA's
+                              * payload (word-aligned) */
     MSG_NC_AREA = 22,        /* RC->NC: u16 x, y, w, h: render this area
                               * (MSG_NC_AREA_SIZE); a planned failure adds u8
                               * kind, u8 0, u16 row (MSG_NC_AREA_INJECT_SIZE) */
@@ -67,7 +68,7 @@ enum unit_msg {
 /* MSG_NC_AREA's payload: four u16 (areas.h: sides <= AREAS_MAX_DIM), half
  * of four u32: the RC checksums and copies it once per area request. */
 #define MSG_NC_AREA_SIZE 8
-#define MSG_NC_START_SIZE 6
+#define MSG_NC_START_SIZE 8
 /* MSG_NC_REQ's and MSG_NC_DONE's payload: the i32 status (a refusal's
  * text follows it). */
 #define MSG_NC_REQ_SIZE 4

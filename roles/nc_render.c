@@ -39,6 +39,7 @@ struct nc_job {
     render_clip_t clip;
     render_clip_options_t opt;
     rgb8_t *pixels;     /* the largest area's pixels */
+    uint32_t largest;   /* and how many that is */
     void *wide;         /* escalating: the wide context (render/wide.h), or NULL */
     size_t mark;        /* kmem mark before the frame's working set */
     int marked;
@@ -177,6 +178,7 @@ static int nc_setup(struct nc_job *job, uint8_t flags, uint32_t largest, uint8_t
     }
     void *clip_mem = kmem_alloc(clip_bytes, "clip lists");
     job->pixels = kmem_alloc(pixel_bytes ? pixel_bytes : 1, "area pixels");
+    job->largest = largest;
     render_clip_init(&job->clip, blob->frame, clip_mem, clip_bytes);
     render_ctx_init(&job->ctx, blob->frame);
     job->ctx.options.use_bounds = !(flags & LINK_RENDER_NO_BBOX);
@@ -248,6 +250,12 @@ static int nc_area(struct nc_job *job, struct line_msg *m, char *why, size_t cap
         insn_mark_trace_bits(a.h, 16);
         insn_mark_trace_area_begin();
     }
+    if (a.w == 0 || a.h == 0 || (uint32_t)a.w * a.h > job->largest) {
+        fmt_snprintf(why, cap, "area %ux%u at (%u,%u): not 1 to %u pixels (the frame's largest)",
+                     (unsigned)a.w, (unsigned)a.h, (unsigned)a.x, (unsigned)a.y,
+                     (unsigned)job->largest);
+        return -1;
+    }
     job->m = m; /* read: free to send from now */
     job->done = 0;
     job->area_pixels = a.w * a.h;
@@ -308,8 +316,8 @@ void nc_render_frame(struct line_msg *m)
         insn_mark_count_from_here(); /* benchmarks count rendering, not boot */
     }
     uint8_t flags = wire_get_u8(m->payload);
-    uint32_t largest = wire_get_u32(m->payload + 1);
-    uint8_t clip = m->len >= MSG_NC_START_SIZE ? wire_get_u8(m->payload + 5) : LINK_CLIP_AUTO;
+    uint8_t clip = m->len >= MSG_NC_START_SIZE ? wire_get_u8(m->payload + 1) : LINK_CLIP_AUTO;
+    uint32_t largest = m->len >= MSG_NC_START_SIZE ? wire_get_u32(m->payload + 4) : 0;
     char why[LINE_MAX_PAYLOAD / 4];
     job->trace = (flags & LINK_RENDER_TRACE) != 0;
     if (job->trace)

@@ -32,11 +32,11 @@ void rc_fail(struct rc_run *run, int32_t status, const char *fmt, uint32_t a, ui
     fmt_snprintf(run->why, sizeof run->why, fmt, (unsigned)a, (unsigned)b);
 }
 
-static void rc_nc_send(uint32_t nc, struct line_msg *m)
+static void rc_nc_send(struct rc_run *run, uint32_t nc, struct line_msg *m)
 {
     /* Nearly always there is room: the deadline is worked out only when
      * there is none (the RC pays this per area request). */
-    int r = line_try_send(nc, m);
+    int r = line_end_try_send(&run->nc[nc].line, m);
     if (r == LINE_ERR_FULL)
         r = line_send(nc, m, ktime_deadline_ms(REPLY_TIMEOUT_MS));
     if (r != LINE_OK)
@@ -48,6 +48,8 @@ static void rc_nc_send(uint32_t nc, struct line_msg *m)
 static void rc_nc_set(struct rc_run *run, uint32_t k, enum rc_nc_state s)
 {
     struct rc_nc *n = &run->nc[k];
+    if (n->state == s)
+        return; /* a busy NC asking ahead stays busy */
     run->in_state[n->state]--;
     run->in_state[s]++;
     n->state = (uint8_t)s;
@@ -60,6 +62,10 @@ void rc_nc_begin(struct rc_run *run, const uint8_t *plan, uint32_t n)
     run->in_state[RC_NC_OUT] = board_ncores - UNITS_FIRST_NC;
     for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
         run->nc[k].state = RC_NC_OUT;
+        if (line_end_of(k, &run->nc[k].line) != LINE_OK) {
+            klog("render: no serial line to NC %u", (unsigned)k);
+            rc_nc_gone[k] = 1;
+        }
         if (rc_nc_gone[k]) {
             run->fails.failed_before++;
             /* One given up while only slow may have begun a read since. */
@@ -123,17 +129,14 @@ static void rc_nc_trace_served(const struct rc_run *run, uint32_t k, int handed)
     insn_mark_trace_bits(handed ? a->y : 0, 16);
 }
 
-/* NC k's MSG_NC_START in m, with its first area while one is left: it
- * sets up and starts on it with no request on the line.  Traced, the
- * hand-out is a record as a request served. */
-static void rc_nc_start_one(struct rc_run *run, uint32_t k, struct line_msg *m, uint8_t flags,
-                            uint32_t largest, uint8_t clip)
+/* NC k's MSG_NC_START in m (its fields written already), with its first
+ * area while one is left: it sets up and starts on it with no request on
+ * the line.  Traced, the hand-out and its message are a record as a
+ * request served. */
+static void rc_nc_start_one(struct rc_run *run, uint32_t k, struct line_msg *m)
 {
     m->type = MSG_NC_START;
     m->len = MSG_NC_START_SIZE;
-    wire_put_u8(m->payload, flags);
-    wire_put_u32(m->payload + 1, largest);
-    wire_put_u8(m->payload + 5, clip);
     if (run->trace)
         insn_mark_trace_span_begin();
     struct area a;
@@ -142,9 +145,9 @@ static void rc_nc_start_one(struct rc_run *run, uint32_t k, struct line_msg *m, 
         m->len = (uint16_t)(m->len + rc_nc_hand(run, k, &a, m->payload + MSG_NC_START_SIZE));
     else
         run->nc[k].since = ktime_now();
+    rc_nc_send(run, k, m);
     if (run->trace)
         rc_nc_trace_served(run, k, handed);
-    rc_nc_send(k, m);
 }
 
 void rc_nc_start(struct rc_run *run, struct line_msg *m, uint8_t flags, uint32_t largest,
@@ -154,10 +157,15 @@ void rc_nc_start(struct rc_run *run, struct line_msg *m, uint8_t flags, uint32_t
      * line is looked at once below. */
     for (uint32_t w = 0; w < LINE_PENDING_WORDS; w++)
         (void)line_pending_take(w);
+    /* The fields every NC's start shares; each adds its first area. */
+    wire_put_u8(m->payload, flags);
+    wire_put_u8(m->payload + 1, clip);
+    wire_put_u16(m->payload + 2, 0);
+    wire_put_u32(m->payload + 4, largest);
     for (uint32_t k = UNITS_FIRST_NC; k < board_ncores; k++) {
         if (run->nc[k].state == RC_NC_OUT)
             continue;
-        rc_nc_start_one(run, k, m, flags, largest, clip);
+        rc_nc_start_one(run, k, m);
         /* Its doorbell armed; a message there already is looked at. */
         if (line_recv_ready_arm(k))
             line_pending_mark(k);
@@ -247,29 +255,34 @@ static void rc_nc_settle(struct rc_run *run, uint32_t k)
 }
 
 /* NC k says it has finished `finished` areas of the frame: its oldest held
- * ones up to that count are done. */
+ * ones up to that count are done, now. */
 static void rc_nc_finished(struct rc_run *run, uint32_t k, uint32_t finished)
 {
     struct rc_nc *n = &run->nc[k];
     uint32_t newly = finished - n->finished;
+    if (newly == 0)
+        return; /* a request ahead: its area goes on */
     if (newly > n->nheld) {
         klog("render: NC %u says it finished %u areas; it held %u", (unsigned)k,
              (unsigned)newly, (unsigned)n->nheld);
         newly = n->nheld;
     }
     n->finished += newly;
-    for (uint32_t i = 0; i < newly; i++) {
-        run->done++;
-        uint64_t now = ktime_now(), ticks = now - n->since;
-        uint64_t pixels = (uint64_t)n->held[0].w * n->held[0].h;
-        if (run->slow_pixels == 0 || ticks * run->slow_pixels > run->slow_ticks * pixels) {
-            run->slow_ticks = ticks;
-            run->slow_pixels = pixels;
-        }
-        n->held[0] = n->held[1];
-        n->nheld--;
-        n->since = now; /* the next one is its current area from now */
+    run->done += newly;
+    uint64_t now = ktime_now();
+    /* The slowest rate: the oldest area's alone (any other finished in
+     * the same message took no time of its own). */
+    uint64_t ticks = now - n->since;
+    uint32_t pixels = n->held[0].w * n->held[0].h; /* <= 2^24: AREAS_MAX_DIM */
+    if (run->slow_pixels == 0 || ticks * run->slow_pixels > run->slow_ticks * pixels) {
+        run->slow_ticks = ticks;
+        run->slow_pixels = pixels;
     }
+    _Static_assert(RC_NC_HELD_MAX == 2, "the one left, if any, moves to the front");
+    n->nheld = (uint8_t)(n->nheld - newly);
+    if (n->nheld)
+        n->held[0] = n->held[RC_NC_HELD_MAX - 1];
+    n->since = now; /* the next one is its current area from now */
 }
 
 /* One message from NC k. */
@@ -340,7 +353,7 @@ static int rc_nc_give(struct rc_run *run, uint32_t k, struct line_msg *m)
         return 0;
     m->type = MSG_NC_AREA;
     m->len = rc_nc_hand(run, k, &a, m->payload);
-    rc_nc_send(k, m);
+    rc_nc_send(run, k, m);
     return 1;
 }
 
@@ -358,7 +371,7 @@ static void rc_nc_stop(struct rc_run *run, uint32_t k, struct line_msg *m)
     n->asking = 0;
     rc_nc_set(run, k, RC_NC_STOPPING);
     n->since = ktime_now();
-    rc_nc_send(k, m);
+    rc_nc_send(run, k, m);
 }
 
 /* 1 if an area is left to give (one taken back, or the schedule's next). */
@@ -399,7 +412,7 @@ static void rc_nc_dispatch(struct rc_run *run, struct line_msg *m)
 /* NC k's line has a message (its pending bit): one is served, the request
  * answered at once (the area, or parked), and the line armed again.
  * Returns 1 if a message moved. */
-static int rc_nc_serve(struct rc_run *run, uint32_t k, struct line_msg *m)
+__attribute__((noinline)) static int rc_nc_serve(struct rc_run *run, uint32_t k, struct line_msg *m)
 {
     struct rc_nc *n = &run->nc[k];
     if (n->state == RC_NC_OUT || n->state == RC_NC_STOPPED)
@@ -411,7 +424,7 @@ static int rc_nc_serve(struct rc_run *run, uint32_t k, struct line_msg *m)
     if (run->trace)
         insn_mark_trace_span_begin();
     int more, handed = 0;
-    int got = line_try_recv_arm(k, m, &more) == LINE_OK;
+    int got = line_end_try_recv_arm(&n->line, m, &more) == LINE_OK;
     /* A second message there already is served in the next pass. */
     if (more)
         line_pending_mark(k);

@@ -26,7 +26,7 @@
 
 #include <stdint.h>
 
-#include "drivers/serial/linemsg.h"
+#include "drivers/serial/line.h"
 #include "kernel/param.h"
 #include "proto/areas.h"
 #include "proto/render_link.h"
@@ -58,6 +58,7 @@ struct rc_nc {
     uint32_t peers_then; /* every NC's progress words summed, then */
     uint32_t given;      /* areas it got in this frame */
     struct link_inject inject; /* a planned failure (kind 0: none) */
+    struct line_end line; /* its serial line, looked up at the frame's start */
 };
 
 struct rc_run {
@@ -69,7 +70,8 @@ struct rc_run {
     uint64_t next_scan;              /* ticks: the watchdog's next look at every NC */
     struct area again[UNITS_MAX_CORES]; /* areas taken back from failed NCs */
     uint32_t nagain;
-    uint64_t slow_ticks, slow_pixels; /* the slowest finished area per pixel */
+    uint64_t slow_ticks;  /* the slowest finished area per pixel: its ticks */
+    uint32_t slow_pixels; /* and pixels (0: none finished yet) */
     render_stats_t stats;
     uint32_t nc_high_max, nc_private;
     struct link_render_fails fails;

@@ -80,8 +80,7 @@ uint32_t line_count(void)
     return lines_used;
 }
 
-/* The direction this core sends on (out) and receives on (in) towards peer. */
-static int line_dirs(uint32_t peer, struct line_dir **out, struct line_dir **in)
+int line_end_of(uint32_t peer, struct line_end *e)
 {
     _Static_assert(UNITS_DM_CORE == 0 && UNITS_RC_CORE == 1 && UNITS_FIRST_NC == 2,
                    "line i joins the RC and core i + 1, line 0 the DM");
@@ -92,16 +91,16 @@ static int line_dirs(uint32_t peer, struct line_dir **out, struct line_dir **in)
         return LINE_ERR_NO_LINE;
     struct line *l = &lines[x == UNITS_DM_CORE ? 0 : x - 1];
     int mine = l->end[0] == me ? 0 : 1;
-    *out = &l->dir[mine];
-    *in = &l->dir[1 - mine];
+    e->out = &l->dir[mine];
+    e->in = &l->dir[1 - mine];
+    e->me = me;
+    e->peer = peer;
     return LINE_OK;
 }
 
-int line_try_send(uint32_t peer, struct line_msg *m)
+int line_end_try_send(const struct line_end *e, struct line_msg *m)
 {
-    struct line_dir *out, *in;
-    if (line_dirs(peer, &out, &in) != LINE_OK)
-        return LINE_ERR_NO_LINE;
+    struct line_dir *out = e->out;
     if (m->len > LINE_MAX_PAYLOAD)
         return LINE_ERR_TOO_LONG;
     uint32_t hdr[LINEMSG_HEADER_WORDS];
@@ -112,35 +111,44 @@ int line_try_send(uint32_t peer, struct line_msg *m)
                           LINE_PADDED(m->len) / 4u) != 0)
         return LINE_ERR_FULL;
     out->send_seq++;
-    if (peer == UNITS_RC_CORE) {
-        uint32_t me = mycpu()->core;
-        __atomic_fetch_or(&line_pending[me / 32u], 1u << (me % 32u), __ATOMIC_RELEASE);
-    }
+    if (e->peer == UNITS_RC_CORE)
+        __atomic_fetch_or(&line_pending[e->me / 32u], 1u << (e->me % 32u), __ATOMIC_RELEASE);
     /* Full barrier: the new head is visible before we read the flag (the
      * receiver raises its flag, barriers, then re-reads head). */
     arch_dmb();
     if (out->reader_waiting) {
         out->reader_waiting = 0;
-        machine_doorbell(peer);
+        machine_doorbell(e->peer);
     }
     return LINE_OK;
+}
+
+int line_try_send(uint32_t peer, struct line_msg *m)
+{
+    struct line_end e;
+    if (line_end_of(peer, &e) != LINE_OK)
+        return LINE_ERR_NO_LINE;
+    return line_end_try_send(&e, m);
 }
 
 /* line_try_recv on the direction in, looked up already. */
 static int line_take(struct line_dir *in, uint32_t peer, struct line_msg *m)
 {
-    uint32_t hdr[LINEMSG_HEADER_WORDS];
-    if (ringbuf_get_words(&in->ring, 0, hdr, LINEMSG_HEADER_WORDS, 0) != 0)
+    uint32_t hdr[LINEMSG_HEADER_WORDS], words = ringbuf_words_in(&in->ring);
+    if (words < LINEMSG_HEADER_WORDS)
         return LINE_ERR_EMPTY;
+    ringbuf_read_words(&in->ring, 0, hdr, LINEMSG_HEADER_WORDS);
     uint32_t check = linemsg_header_from_words(hdr, m);
     if (m->len > LINE_MAX_PAYLOAD)
         panic("line from core %u: header announces a message longer than %u bytes",
               (unsigned)peer, (unsigned)LINE_MAX_PAYLOAD);
     /* The sender puts whole messages, so the rest is there already; the
      * payload comes out of the ring straight into m. */
-    if (ringbuf_get_words(&in->ring, LINEMSG_HEADER_WORDS, m->payload, LINE_PADDED(m->len) / 4u,
-                          1) != 0)
+    uint32_t n = LINE_PADDED(m->len) / 4u;
+    if (words < LINEMSG_HEADER_WORDS + n)
         panic("line from core %u: half a message in the ring", (unsigned)peer);
+    ringbuf_read_words(&in->ring, LINEMSG_HEADER_WORDS, m->payload, n);
+    ringbuf_take_words(&in->ring, LINEMSG_HEADER_WORDS + n);
     int st = linemsg_check_payload(m, check);
     arch_dmb(); /* our tail is visible before we read the sender's flag */
     if (in->writer_waiting) {
@@ -171,47 +179,52 @@ static int line_arm(struct line_dir *in)
 
 int line_try_recv(uint32_t peer, struct line_msg *m)
 {
-    struct line_dir *out, *in;
-    if (line_dirs(peer, &out, &in) != LINE_OK)
+    struct line_end e;
+    if (line_end_of(peer, &e) != LINE_OK)
         return LINE_ERR_NO_LINE;
-    return line_take(in, peer, m);
+    return line_take(e.in, peer, m);
+}
+
+int line_end_try_recv_arm(const struct line_end *e, struct line_msg *m, int *ready)
+{
+    int r = line_take(e->in, e->peer, m);
+    *ready = line_arm(e->in);
+    return r;
 }
 
 int line_try_recv_arm(uint32_t peer, struct line_msg *m, int *ready)
 {
-    struct line_dir *out, *in;
+    struct line_end e;
     *ready = 0;
-    if (line_dirs(peer, &out, &in) != LINE_OK)
+    if (line_end_of(peer, &e) != LINE_OK)
         return LINE_ERR_NO_LINE;
-    int r = line_take(in, peer, m);
-    *ready = line_arm(in);
-    return r;
+    return line_end_try_recv_arm(&e, m, ready);
 }
 
 int line_recv_ready(uint32_t peer)
 {
-    struct line_dir *out, *in;
-    if (line_dirs(peer, &out, &in) != LINE_OK)
+    struct line_end e;
+    if (line_end_of(peer, &e) != LINE_OK)
         return 0;
-    return ringbuf_used(&in->ring) >= LINEMSG_HEADER_SIZE;
+    return ringbuf_used(&e.in->ring) >= LINEMSG_HEADER_SIZE;
 }
 
 int line_recv_ready_arm(uint32_t peer)
 {
-    struct line_dir *out, *in;
-    if (line_dirs(peer, &out, &in) != LINE_OK)
+    struct line_end e;
+    if (line_end_of(peer, &e) != LINE_OK)
         return 0;
-    return line_arm(in);
+    return line_arm(e.in);
 }
 
 int line_send_ready_arm(uint32_t peer, uint32_t len)
 {
-    struct line_dir *out, *in;
-    if (line_dirs(peer, &out, &in) != LINE_OK)
+    struct line_end e;
+    if (line_end_of(peer, &e) != LINE_OK)
         return 0;
-    out->writer_waiting = 1;
+    e.out->writer_waiting = 1;
     arch_dmb(); /* flag visible before we look at tail again */
-    return ringbuf_free(&out->ring) >= LINE_RECORD_SIZE(len);
+    return ringbuf_free(&e.out->ring) >= LINE_RECORD_SIZE(len);
 }
 
 uint32_t line_pending_take(uint32_t word)

@@ -48,6 +48,19 @@ int line_recv_ready(uint32_t peer);
 int line_send(uint32_t peer, struct line_msg *m, uint64_t deadline);
 int line_recv(uint32_t peer, struct line_msg *m, uint64_t deadline);
 
+/* A line as this core sees it, looked up once (line_end_of: LINE_OK, or
+ * LINE_ERR_NO_LINE) by a task that moves many messages on it (the RC, a
+ * line per NC); the calls below by peer look it up per message. */
+struct line_dir;
+struct line_end {
+    struct line_dir *out, *in; /* the directions this core sends and takes on */
+    uint32_t me, peer;
+};
+int line_end_of(uint32_t peer, struct line_end *e);
+int line_end_try_send(const struct line_end *e, struct line_msg *m);
+/* line_end_try_recv_arm: line_try_recv_arm (below) on a line looked up. */
+int line_end_try_recv_arm(const struct line_end *e, struct line_msg *m, int *ready);
+
 /* For a task serving several lines at once: raise the waiting flag for a
  * direction, then tell whether it is ready already (a message to take, or
  * room for a message of len payload bytes).  If none is ready, task_wait()

@@ -59,12 +59,12 @@ static void crc32_word_steps_match_byte_steps(void)
  * length and alignment (crc32_update where it does not take the words). */
 static void crc32_short_matches_crc32(void)
 {
-    _Alignas(4) uint8_t buf[16];
+    _Alignas(4) uint8_t buf[24];
     int bad = 0;
-    for (int i = 0; i < 16; i++)
+    for (int i = 0; i < 24; i++)
         buf[i] = (uint8_t)(0x5A ^ (i * 37));
     for (size_t off = 0; off < 4; off++)
-        for (size_t n = 0; n + off <= 12; n++)
+        for (size_t n = 0; n + off <= 20; n++)
             bad += crc32_short(buf + off, n) != crc32(buf + off, n);
     CHECK_EQ_INT(bad, 0);
 }

@@ -103,25 +103,33 @@ static void test_word_records(void)
     CHECK(ringbuf_put_words(&r, hdr, 1, body, 6) == 0);
     CHECK(ringbuf_put_words(&r, hdr, 1, body, 1) == -1); /* 4 free: nothing written */
     CHECK_EQ_INT(ringbuf_used(&r), 28);
-    CHECK(ringbuf_get_words(&r, 1, out, 7, 1) == -1); /* only 6 after the header */
-    CHECK_EQ_INT(ringbuf_used(&r), 28);
-    CHECK(ringbuf_get_words(&r, 0, out, 1, 0) == 0 && memcmp(out, hdr, 4) == 0);
-    CHECK(ringbuf_get_words(&r, 1, out, 6, 1) == 0 && memcmp(out, body, 24) == 0);
+    CHECK_EQ_INT(ringbuf_words_in(&r), 7); /* the header and 6 */
+    ringbuf_read_words(&r, 0, out, 1);
+    CHECK(memcmp(out, hdr, 4) == 0);
+    CHECK_EQ_INT(ringbuf_used(&r), 28); /* a read takes nothing */
+    ringbuf_read_words(&r, 1, out, 6);
+    CHECK(memcmp(out, body, 24) == 0);
+    ringbuf_take_words(&r, 7);
     CHECK_EQ_INT(ringbuf_used(&r), 0);
     /* head and tail at 28: the next record wraps after its header word. */
     CHECK(ringbuf_put_words(&r, hdr, 1, body + 1, 5) == 0);
     CHECK(memcmp(mem, body + 1, 20) == 0 && memcmp(mem + 28, hdr, 4) == 0);
-    CHECK(ringbuf_get_words(&r, 1, out + 1, 5, 1) == 0 && memcmp(out + 1, body + 1, 20) == 0);
+    ringbuf_read_words(&r, 1, out + 1, 5);
+    CHECK(memcmp(out + 1, body + 1, 20) == 0);
+    ringbuf_take_words(&r, 6);
     /* The byte calls see the same bytes. */
     CHECK(ringbuf_put_words(&r, hdr, 1, body, 6) == 0);
     CHECK(ringbuf_get(&r, out, 28) == 0 && memcmp(out, hdr, 4) == 0 &&
           memcmp(out + 4, body, 24) == 0);
     /* A record ending on the ring's last word, from word 1: no wrap. */
     ringbuf_init(&r, mem, sizeof mem);
-    CHECK(ringbuf_put_words(&r, hdr, 1, body, 0) == 0 && ringbuf_get_words(&r, 0, out, 1, 1) == 0);
+    CHECK(ringbuf_put_words(&r, hdr, 1, body, 0) == 0);
+    ringbuf_take_words(&r, 1);
     CHECK(ringbuf_put_words(&r, hdr, 1, body, 6) == 0);
     CHECK(memcmp(mem + 4, hdr, 4) == 0 && memcmp(mem + 8, body, 24) == 0);
-    CHECK(ringbuf_get_words(&r, 1, out, 6, 1) == 0 && memcmp(out, body, 24) == 0);
+    ringbuf_read_words(&r, 1, out, 6);
+    CHECK(memcmp(out, body, 24) == 0);
+    ringbuf_take_words(&r, 7);
     CHECK_EQ_INT(ringbuf_used(&r), 0);
 }
 
