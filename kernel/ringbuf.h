@@ -104,6 +104,7 @@ static inline void ringbuf_read_words(const struct ringbuf *r, uint32_t skip, vo
     const uint8_t *ring = r->buf;
     uint32_t mask = r->size / 4u - 1u, at = (ringbuf_word_slot(r, r->tail) + skip) & mask;
     if (at + n <= mask + 1u) { /* no wrap: word after word */
+#pragma GCC unroll 4
         for (uint32_t i = 0; i < n; i++)
             __builtin_memcpy((uint8_t *)out + 4u * i, ring + 4u * (at + i), 4);
     } else {

@@ -60,14 +60,14 @@ static uint32_t areas_pieces(const struct areas *s, uint32_t t)
 
 /* Up to max_ncs NCs: k, factor.  From `links1 replay T --ncs N --areas K
  * --guided F` over K in {4096, ..., 65536} and F in {1, 2, 3, 4} on five
- * traces each of demo, glass and molecule at 512x480: the pair whose worst
- * median speed-up over the three is nearest that scene's best, of equals
- * the one with the largest sum (docs/areas.md). */
+ * traces each of demo, glass and molecule at 512x480: the pair whose
+ * scenes' median speed-ups are all within the smallest fraction of each
+ * scene's best, of equals the one with the largest sum (docs/areas.md). */
 static const struct {
     uint32_t max_ncs, k, factor;
 } areas_decreasing_rule[] = {
-    {64, 32768, 2},
-    {128, 8192, 4},
+    {64, 65536, 2},
+    {128, 16384, 4},
     {UINT32_MAX, 16384, 2},
 };
 

@@ -21,6 +21,11 @@
 #include "roles/unit.h"
 #include "proto/unitmsg.h"
 
+/* The steps of answering a request, inlined into rc_nc_serve: the RC's
+ * cost per area bounds how small the last areas can be on many NCs
+ * (docs/areas.md). */
+#define RC_INLINE static inline __attribute__((always_inline))
+
 /* NCs given up for failed since the board started: out of later frames. */
 static uint8_t rc_nc_gone[UNITS_MAX_CORES];
 
@@ -32,7 +37,7 @@ void rc_fail(struct rc_run *run, int32_t status, const char *fmt, uint32_t a, ui
     fmt_snprintf(run->why, sizeof run->why, fmt, (unsigned)a, (unsigned)b);
 }
 
-static void rc_nc_send(struct rc_run *run, uint32_t nc, struct line_msg *m)
+RC_INLINE void rc_nc_send(struct rc_run *run, uint32_t nc, struct line_msg *m)
 {
     /* Nearly always there is room: the deadline is worked out only when
      * there is none (the RC pays this per area request). */
@@ -93,7 +98,7 @@ void rc_nc_begin(struct rc_run *run, const uint8_t *plan, uint32_t n)
 /* NC k takes area a: it holds it from now.  Writes the MSG_NC_AREA
  * payload at p (with the fault plan's failure when this is the area it
  * plans for); returns its length. */
-static uint16_t rc_nc_hand(struct rc_run *run, uint32_t k, const struct area *a, uint8_t *p)
+RC_INLINE uint16_t rc_nc_hand(struct rc_run *run, uint32_t k, const struct area *a, uint8_t *p)
 {
     struct rc_nc *n = &run->nc[k];
     uint16_t len = MSG_NC_AREA_SIZE;
@@ -341,7 +346,7 @@ static int rc_nc_static_waits(const struct rc_run *run, uint32_t k)
 
 /* Gives NC k, which asks, the next area (one taken back first); 0 if none
  * is left, or none for it. */
-static int rc_nc_give(struct rc_run *run, uint32_t k, struct line_msg *m)
+RC_INLINE int rc_nc_give(struct rc_run *run, uint32_t k, struct line_msg *m)
 {
     struct rc_nc *n = &run->nc[k];
     struct area a;
@@ -411,8 +416,10 @@ static void rc_nc_dispatch(struct rc_run *run, struct line_msg *m)
 
 /* NC k's line has a message (its pending bit): one is served, the request
  * answered at once (the area, or parked), and the line armed again.
- * Returns 1 if a message moved. */
-__attribute__((noinline)) static int rc_nc_serve(struct rc_run *run, uint32_t k, struct line_msg *m)
+ * Returns 1 if a message moved.  Not inlined into rc_nc_poll: fewer
+ * registers spilled on the request's path. */
+__attribute__((noinline)) static int rc_nc_serve(struct rc_run *run, uint32_t k,
+                                                 struct line_msg *m)
 {
     struct rc_nc *n = &run->nc[k];
     if (n->state == RC_NC_OUT || n->state == RC_NC_STOPPED)

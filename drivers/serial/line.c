@@ -132,7 +132,8 @@ int line_try_send(uint32_t peer, struct line_msg *m)
 }
 
 /* line_try_recv on the direction in, looked up already. */
-static int line_take(struct line_dir *in, uint32_t peer, struct line_msg *m)
+static inline __attribute__((always_inline)) int line_take(struct line_dir *in, uint32_t peer,
+                                                           struct line_msg *m)
 {
     uint32_t hdr[LINEMSG_HEADER_WORDS], words = ringbuf_words_in(&in->ring);
     if (words < LINEMSG_HEADER_WORDS)

@@ -68,9 +68,11 @@ void linemsg_put_header(uint8_t *hdr, const struct line_msg *m);
 uint32_t linemsg_get_header(const uint8_t *hdr, struct line_msg *m);
 /* The crc32 of m's payload: inline for the few words of most messages
  * (payload[] is word-aligned). */
+_Static_assert(offsetof(struct line_msg, payload) % 4 == 0 && _Alignof(struct line_msg) >= 4,
+               "a message's payload is word-aligned");
 static inline uint32_t linemsg_payload_crc(const struct line_msg *m)
 {
-    return crc32_short(m->payload, m->len);
+    return crc32_short(__builtin_assume_aligned(m->payload, 4), m->len);
 }
 /* LINEMSG_OK if m's payload has crc32 check, else LINEMSG_ERR_CHECK. */
 static inline int linemsg_check_payload(const struct line_msg *m, uint32_t check)
