@@ -2,8 +2,10 @@
 #include "host-tools/scene/scene_lex.h"
 
 #include <ctype.h>
+#include <float.h>
 #include <math.h>
 #include <stdarg.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -75,6 +77,48 @@ static int lex_number_char(int c)
     return c && !isspace(c) && c != '{' && c != '}' && c != '#' && c != '"';
 }
 
+/* Exact powers of ten: 10^22 is the last a double holds exactly. */
+static const double lex_pow10[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,
+                                   1e8,  1e9,  1e10, 1e11, 1e12, 1e13, 1e14, 1e15,
+                                   1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+
+int lex_decimal(const char *s, double *out)
+{
+    int neg = *s == '-';
+    if (*s == '-' || *s == '+')
+        s++;
+    uint64_t m = 0;
+    int digits = 0, scale = 0; /* value = m * 10^scale */
+    for (; isdigit((unsigned char)*s); s++, digits++)
+        m = m * 10 + (uint64_t)(*s - '0');
+    if (*s == '.')
+        for (s++; isdigit((unsigned char)*s); s++, digits++, scale--)
+            m = m * 10 + (uint64_t)(*s - '0');
+    if (*s == 'e' || *s == 'E') {
+        const char *e = s + 1;
+        int eneg = *e == '-';
+        if (*e == '-' || *e == '+')
+            e++;
+        int x = 0, xd = 0;
+        for (; isdigit((unsigned char)*e) && xd < 4; e++, xd++)
+            x = x * 10 + (*e - '0');
+        if (xd == 0 || isdigit((unsigned char)*e))
+            return 0;
+        scale += eneg ? -x : x;
+        s = e;
+    }
+    /* Up to 15 digits hold m below 2^53, so m and 10^|scale| are doubles
+     * and one division or product rounds the decimal once, as strtod
+     * does (round to nearest, doubles evaluated as doubles). */
+    if (*s != 0 || digits == 0 || digits > 15 || scale < -22 || scale > 22 ||
+        FLT_EVAL_METHOD != 0)
+        return 0;
+    double v = (double)m;
+    v = scale < 0 ? v / lex_pow10[-scale] : v * lex_pow10[scale];
+    *out = neg ? -v : v;
+    return 1;
+}
+
 static void lex_take(struct lex *lx, size_t *n)
 {
     if (*n + 1 >= sizeof lx->tok)
@@ -107,8 +151,9 @@ void lex_next(struct lex *lx)
         while (lex_number_char(lex_peekc(lx)))
             lex_take(lx, &n);
         lx->tok[n] = 0;
-        char *end;
-        lx->num = strtod(lx->tok, &end);
+        char *end = lx->tok + n;
+        if (!lex_decimal(lx->tok, &lx->num)) /* the rest: strtod's */
+            lx->num = strtod(lx->tok, &end);
         if (*end != 0 || end == lx->tok)
             lex_error(lx, "'%s' is not a number", lx->tok);
         if (!isfinite(lx->num))

@@ -36,6 +36,10 @@ struct lex {
 void lex_init(struct lex *lx, const char *file, const char *text, jmp_buf *fail,
               char *err, size_t errlen);
 void lex_next(struct lex *lx);                /* reads the next token */
+/* A number token of up to 15 decimal digits and a power of ten within
+ * 10^+-22 (most of a scene's): 1 and its value, the double strtod gives;
+ * 0 for the rest, which lex_next hands to strtod. */
+int lex_decimal(const char *s, double *out);
 void lex_error(struct lex *lx, const char *fmt, ...)
     __attribute__((noreturn, format(printf, 2, 3)));
 

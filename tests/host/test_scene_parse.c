@@ -7,6 +7,7 @@
 
 #include "host-tools/scene/scene_desc.h"
 #include "host-tools/scene/scene_import.h"
+#include "host-tools/scene/scene_lex.h"
 #include "tests/check.h"
 
 #define HEAD "light point { position 0 5 0 }\nmaterial m { }\n"
@@ -523,8 +524,55 @@ static void test_view_keys(void)
                  "'direction' is not a property of a point light's key");
 }
 
+/* The lexer's fast decimal path gives strtod's double, bit for bit, on
+ * every number it takes (signs, zeros, fractions, exponents, 15 digits at
+ * 10^+-22), and leaves the rest to strtod. */
+static void test_decimal_fast_path_is_strtod(void)
+{
+    static const char *take[] = {"0", "-0", "+7", "1.", ".5", "-0.000001", "3.14159265358979",
+                                 "123456789012345", "0.1e-5", "9e22", "-1E+22", "2.5e-21",
+                                 "0.0625", "1e0", "-8.25", "999999999999999e-22"};
+    static const char *leave[] = {"1234567890123456", "1e23", "1e-23", "1e", "1e+", "-", ".",
+                                  "1.2.3", "inf", "0x10", "1e00022", "12a"};
+    int bad = 0, taken = 0;
+    char buf[64];
+    uint64_t r = 88172645463325252ull;
+    for (int i = 0; i < 200000; i++) { /* random digits, point and power */
+        r ^= r << 13, r ^= r >> 7, r ^= r << 17;
+        int nd = 1 + (int)(r % 15), dot = (int)((r >> 8) % (uint64_t)(nd + 1)), n = 0;
+        if ((r >> 16) & 1)
+            buf[n++] = '-';
+        for (int d = 0; d < nd; d++) {
+            if (d == dot && d > 0)
+                buf[n++] = '.';
+            buf[n++] = (char)('0' + (r >> (20 + 2 * d % 40)) % 10);
+        }
+        if ((r >> 60) & 1)
+            n += snprintf(buf + n, sizeof buf - (size_t)n, "e%d", (int)((r >> 50) % 41) - 20);
+        buf[n] = 0;
+        double v;
+        if (lex_decimal(buf, &v)) {
+            double w = strtod(buf, NULL);
+            taken++;
+            bad += memcmp(&v, &w, sizeof v) != 0;
+        }
+    }
+    CHECK(taken > 190000);
+    for (size_t i = 0; i < sizeof take / sizeof take[0]; i++) {
+        double v = 1, w = strtod(take[i], NULL);
+        CHECK(lex_decimal(take[i], &v));
+        bad += memcmp(&v, &w, sizeof v) != 0;
+    }
+    for (size_t i = 0; i < sizeof leave / sizeof leave[0]; i++) {
+        double v;
+        CHECK(!lex_decimal(leave[i], &v));
+    }
+    CHECK_EQ_INT(bad, 0);
+}
+
 int main(void)
 {
+    RUN(test_decimal_fast_path_is_strtod);
     RUN(test_minimal_scene_and_defaults);
     RUN(test_refraction_option);
     RUN(test_shading_defaults_and_options);
