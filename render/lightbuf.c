@@ -123,9 +123,10 @@ static void lb_quotient_range(num_t a0, num_t a1, num_t m0, num_t m1, num_t *lo,
 }
 
 /* Eight points relative to a light, by axis: at[k][i] (lb_face_rect reads
- * them by a face's axes). */
+ * them by a face's axes), and each axis's least and greatest of them. */
 typedef struct {
     num_t at[8][3];
+    num_t lo[3], hi[3];
 } lb_rel_t;
 
 static void lb_relative(const vec3_t *c, vec3_t light, lb_rel_t *p)
@@ -136,6 +137,13 @@ static void lb_relative(const vec3_t *c, vec3_t light, lb_rel_t *p)
         p->at[k][1] = d.y;
         p->at[k][2] = d.z;
     }
+    for (int i = 0; i < 3; i++) {
+        p->lo[i] = p->hi[i] = p->at[0][i];
+        for (int k = 1; k < 8; k++) {
+            p->lo[i] = num_min(p->lo[i], p->at[k][i]);
+            p->hi[i] = num_max(p->hi[i], p->at[k][i]);
+        }
+    }
 }
 
 /* Where points p show on cube face `face`, as r (u0, u1, v0, v1): by the
@@ -143,32 +151,22 @@ static void lb_relative(const vec3_t *c, vec3_t light, lb_rel_t *p)
  * theirs), else by their box; 0 when all lie behind. */
 static int lb_face_rect(int face, const lb_rel_t *p, num_t r[4])
 {
-    int m = face / 2, a = (m + 1) % 3, w = (m + 2) % 3, front = 1;
-    num_t dm[8], far = NUM_ZERO;
-    for (int k = 0; k < 8; k++) {
-        dm[k] = face % 2 ? num_neg(p->at[k][m]) : p->at[k][m];
-        front &= num_gt(dm[k], NUM_ZERO);
-        far = num_max(far, dm[k]);
-    }
+    int m = face / 2, a = (m + 1) % 3, w = (m + 2) % 3, back = face % 2;
+    /* The points' least and greatest depth in front of the face: negation
+     * reverses the order and keeps ties' first, so these are the very
+     * values a loop over the eight depths would keep. */
+    num_t near = back ? num_neg(p->hi[m]) : p->lo[m];
+    num_t far = back ? num_neg(p->lo[m]) : p->hi[m];
     if (!num_gt(far, NUM_ZERO))
         return 0;
-    if (!front) {
-        num_t lo[3], hi[3];
-        for (int i = 0; i < 3; i++)
-            lo[i] = hi[i] = i == m ? dm[0] : p->at[0][i];
-        for (int k = 1; k < 8; k++)
-            for (int i = 0; i < 3; i++) {
-                num_t x = i == m ? dm[k] : p->at[k][i];
-                lo[i] = num_min(lo[i], x);
-                hi[i] = num_max(hi[i], x);
-            }
-        lb_quotient_range(lo[a], hi[a], lo[m], hi[m], &r[0], &r[1]);
-        lb_quotient_range(lo[w], hi[w], lo[m], hi[m], &r[2], &r[3]);
+    if (!num_gt(near, NUM_ZERO)) {
+        lb_quotient_range(p->lo[a], p->hi[a], near, far, &r[0], &r[1]);
+        lb_quotient_range(p->lo[w], p->hi[w], near, far, &r[2], &r[3]);
         return 1;
     }
     num_t one = NUM_ONE, less = num_neg(NUM_ONE);
     for (int k = 0; k < 8; k++) {
-        num_t inv = num_recip(dm[k]);
+        num_t inv = num_recip(back ? num_neg(p->at[k][m]) : p->at[k][m]);
         num_t u = num_mul(p->at[k][a], inv), v = num_mul(p->at[k][w], inv);
         r[0] = k ? num_min(r[0], u) : u;
         r[1] = k ? num_max(r[1], u) : u;
