@@ -172,7 +172,7 @@ void rc_nc_start(struct rc_run *run, struct line_msg *m, uint8_t flags, uint32_t
             continue;
         rc_nc_start_one(run, k, m);
         /* Its doorbell armed; a message there already is looked at. */
-        if (line_recv_ready_arm(k))
+        if (line_end_recv_ready_arm(&run->nc[k].line))
             line_pending_mark(k);
     }
     run->next_scan = ktime_deadline_ms(GIGS_WATCH_MS);
@@ -459,7 +459,7 @@ static void rc_nc_scan(struct rc_run *run)
             continue;
         if (unit_is_halted(k))
             rc_nc_lost(run, k, 0);
-        else if (line_recv_ready_arm(k))
+        else if (line_end_recv_ready_arm(&n->line))
             line_pending_mark(k);
         else if (rc_nc_overdue(run, k, peers))
             rc_nc_lost(run, k, 1);

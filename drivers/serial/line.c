@@ -210,12 +210,17 @@ int line_recv_ready(uint32_t peer)
     return ringbuf_used(&e.in->ring) >= LINEMSG_HEADER_SIZE;
 }
 
+int line_end_recv_ready_arm(const struct line_end *e)
+{
+    return line_arm(e->in);
+}
+
 int line_recv_ready_arm(uint32_t peer)
 {
     struct line_end e;
     if (line_end_of(peer, &e) != LINE_OK)
         return 0;
-    return line_arm(e.in);
+    return line_end_recv_ready_arm(&e);
 }
 
 int line_send_ready_arm(uint32_t peer, uint32_t len)

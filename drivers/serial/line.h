@@ -58,8 +58,9 @@ struct line_end {
 };
 int line_end_of(uint32_t peer, struct line_end *e);
 int line_end_try_send(const struct line_end *e, struct line_msg *m);
-/* line_end_try_recv_arm: line_try_recv_arm (below) on a line looked up. */
+/* line_try_recv_arm and line_recv_ready_arm (below) on a line looked up. */
 int line_end_try_recv_arm(const struct line_end *e, struct line_msg *m, int *ready);
+int line_end_recv_ready_arm(const struct line_end *e);
 
 /* For a task serving several lines at once: raise the waiting flag for a
  * direction, then tell whether it is ready already (a message to take, or
