@@ -55,6 +55,9 @@ struct load {
     int32_t *kexp; /* scratch, per cluster: its keys' scales times 2^-kexp[i];
                       LOAD_KEXP_PLAIN for a plain cluster (load_cluster_plain) */
     int crc_later; /* the header alone: scene_load checks the word sum next */
+    int triangle_coords_over; /* load_scale met a triangle with a coordinate
+                                 not finite or beyond SCN_MAX_COORD: each
+                                 triangle's are checked one by one */
     const uint32_t *sum; /* the body's word sum, summed by the caller, or NULL */
 };
 
@@ -167,6 +170,30 @@ LOAD_INLINE uint32_t load_scale_bits(uint32_t bits, int e)
                        unit_exp cannot bring to 2^4 */
         return (bits & LOAD_F32_SIGN) | LOAD_F32_EXP_MASK;
     return (bits & ~LOAD_F32_EXP_MASK) | ((uint32_t)exp << 23);
+}
+
+/* load_scale_bits by one e for many values: the exponent fields that stay
+ * normal, lo .. lo + span, found once. */
+struct load_scaler {
+    int e;
+    uint32_t lo, span;
+};
+
+LOAD_INLINE struct load_scaler load_scaler_of(int e)
+{
+    int32_t lo = e >= 0 ? 1 : 1 - e, hi = e >= 0 ? 254 - e : 254;
+    struct load_scaler s = {e, (uint32_t)lo, hi >= lo ? (uint32_t)(hi - lo) : 0};
+    if (hi < lo)
+        s.lo = 256; /* no field: every value takes load_scale_bits */
+    return s;
+}
+
+LOAD_INLINE uint32_t load_scale_bits_by(const struct load_scaler *s, uint32_t bits)
+{
+    uint32_t field = (bits & LOAD_F32_EXP_MASK) >> 23;
+    if (field - s->lo <= s->span) /* normal to normal, as load_scale_bits */
+        return bits + ((uint32_t)s->e << 23);
+    return load_scale_bits(bits, s->e);
 }
 
 /* A length: scaled to the scene (scene_t.unit_exp) and by the power of two
@@ -841,17 +868,22 @@ static scene_load_status_t load_triangle(struct load *L, uint32_t i, const uint8
                                          scene_prim_t *o)
 {
     uint32_t over = 0;
-#pragma GCC unroll 9
-    for (int k = 0; k < 9; k++)
-        over |= (load_u32(v + 4 * k) & ~LOAD_F32_SIGN) > load_bits_of(SCN_MAX_COORD);
+    if (L->triangle_coords_over) /* else load_scale found every one in range */
+        for (int k = 0; k < 9; k++)
+            over |= (load_u32(v + 4 * k) & ~LOAD_F32_SIGN) > load_bits_of(SCN_MAX_COORD);
 #pragma GCC unroll 6
     for (int k = 9; k < 15; k++)
         over |= (load_u32(v + 4 * k) & ~LOAD_F32_SIGN) > load_bits_of(SCN_MAX_FACTOR);
     if (over)
         return load_range(L, "prim ", i, "a value is");
     o->kind = SCENE_PRIM_TRIANGLE;
+    struct load_scaler sc = load_scaler_of(L->len_exp);
     for (int k = 0; k < 3; k++) {
-        o->shape.triangle.v[k] = load_lvec3(L, v + 12 * k);
+        const uint8_t *c = v + 12 * k;
+        o->shape.triangle.v[k] =
+            vec3_make(num_from_f32_bits(load_scale_bits_by(&sc, load_u32(c))),
+                      num_from_f32_bits(load_scale_bits_by(&sc, load_u32(c + 4))),
+                      num_from_f32_bits(load_scale_bits_by(&sc, load_u32(c + 8))));
         o->shape.triangle.tex_u[k] = load_num(v + 36 + 4 * k);
         o->shape.triangle.tex_v[k] = load_num(v + 48 + 4 * k);
     }
@@ -1024,16 +1056,24 @@ static scene_load_status_t load_normals(struct load *L, scene_prim_t *prims,
 /* The largest of most and shift + e over the n reals at p, |value| in
  * [2^e, 2^(e+1)); zeros, subnormals and not-finite values (left to the
  * checks that follow) count as none. */
-LOAD_INLINE int32_t load_max_exp(const uint8_t *p, int n, int32_t shift, int32_t most)
+LOAD_INLINE uint32_t load_max_bits(const uint8_t *p, int n)
 {
-    /* the largest magnitude's exponent field, when it is finite: the
-     * magnitude bits of finite values order as the values do */
     uint32_t big = 0;
 #pragma GCC unroll 9
     for (int i = 0; i < n; i++) {
         uint32_t m = load_u32(p + 4 * i) & ~LOAD_F32_SIGN;
         big = m > big ? m : big;
     }
+    return big;
+}
+
+/* load_max_exp of the n values at p whose largest magnitude's bits
+ * (load_max_bits) are big. */
+LOAD_INLINE int32_t load_max_exp_of(const uint8_t *p, int n, uint32_t big, int32_t shift,
+                                    int32_t most)
+{
+    /* the largest magnitude's exponent field, when it is finite: the
+     * magnitude bits of finite values order as the values do */
     int32_t field = (int32_t)(big >> 23);
     if (field != 255)
         return field != 0 && field - 127 + shift > most ? field - 127 + shift : most;
@@ -1043,6 +1083,11 @@ LOAD_INLINE int32_t load_max_exp(const uint8_t *p, int n, int32_t shift, int32_t
             most = field - 127 + shift;
     }
     return most;
+}
+
+LOAD_INLINE int32_t load_max_exp(const uint8_t *p, int n, int32_t shift, int32_t most)
+{
+    return load_max_exp_of(p, n, load_max_bits(p, n), shift, most);
 }
 
 /* A cluster's static 3x3 part, as a power of two: floor(log2(sqrt(3)
@@ -1112,7 +1157,9 @@ static scene_load_status_t load_scale(struct load *L, scene_t *s)
         uint32_t clu = load_u32(p + SCN_PRIM_CLUSTER);
         int32_t c = clu < n_clu ? L->cexp[clu] : 0;
         if (kind == SCN_PRIM_TRIANGLE) { /* the common case, unrolled */
-            geom = load_max_exp(p + SCN_PRIM_VALUES, 9, c, geom);
+            uint32_t big = load_max_bits(p + SCN_PRIM_VALUES, 9);
+            L->triangle_coords_over |= big > load_bits_of(SCN_MAX_COORD);
+            geom = load_max_exp_of(p + SCN_PRIM_VALUES, 9, big, c, geom);
             continue;
         }
         int n = kind == SCN_PRIM_DENSITY ? 0 : kind == SCN_PRIM_CONE ? SCN_CONE_VALUES : 6;

@@ -39,6 +39,30 @@ static void wordsum_join_matches_one_pass(void)
     CHECK_EQ_INT(bad, 0);
 }
 
+/* The same bytes give the same value aligned (the four-lane and eight-word
+ * steps) and at every other alignment (word by word), at every length, and
+ * after a prefix that leaves a and b not zero. */
+static void wordsum_steps_match_word_by_word(void)
+{
+    _Alignas(16) unsigned char aligned[520], moved[524];
+    for (int i = 0; i < 520; i++)
+        aligned[i] = (unsigned char)(i * 101 + 7 + (i >> 5));
+    int bad = 0;
+    for (size_t off = 1; off < 4; off++) {
+        memcpy(moved + off, aligned, sizeof aligned);
+        for (size_t n = 0; n <= sizeof aligned; n += 1 + (n > 80) * 3) {
+            bad += wordsum(aligned, n) != wordsum(moved + off, n);
+            wordsum_t x = WORDSUM_EMPTY, y = WORDSUM_EMPTY;
+            wordsum_update(&x, "prefix!!", 8);
+            wordsum_update(&y, "prefix!!", 8);
+            wordsum_update(&x, aligned, n);
+            wordsum_update(&y, moved + off, n);
+            bad += wordsum_value(x) != wordsum_value(y) || x.words != y.words;
+        }
+    }
+    CHECK_EQ_INT(bad, 0);
+}
+
 /* Every single-bit flip, and every change of one aligned word, is seen. */
 static void wordsum_detects_word_changes(void)
 {
@@ -67,6 +91,7 @@ int main(void)
 {
     RUN(wordsum_value_of_known_words);
     RUN(wordsum_join_matches_one_pass);
+    RUN(wordsum_steps_match_word_by_word);
     RUN(wordsum_detects_word_changes);
     return check_exit();
 }
