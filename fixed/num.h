@@ -253,6 +253,8 @@ static inline int num_le(num_t a, num_t b) { return a <= b; }
 static inline int num_gt(num_t a, num_t b) { return a > b; }
 static inline int num_ge(num_t a, num_t b) { return a >= b; }
 static inline int num_eq(num_t a, num_t b) { return a == b; }
+/* a is +0 (the fixed build has one zero) */
+static inline int num_is_plus_zero(num_t a) { return a == 0; }
 
 /* 8-bit channel: clamp to [0,1], round(a * 255). */
 static inline uint8_t num_to_u8(num_t a)
@@ -352,6 +354,8 @@ static inline int num_le(num_t a, num_t b) { return a <= b; }
 static inline int num_gt(num_t a, num_t b) { return a > b; }
 static inline int num_ge(num_t a, num_t b) { return a >= b; }
 static inline int num_eq(num_t a, num_t b) { return a == b; }
+/* a is +0, not -0 */
+static inline int num_is_plus_zero(num_t a) { return a == 0 && !__builtin_signbit(a); }
 
 static inline uint8_t num_to_u8(num_t a)
 {

@@ -470,10 +470,14 @@ static inline __attribute__((always_inline)) int trace_resume(trace_walk_t *w,
  * subtree before it is done (the nearest hit so far cuts it). */
 static inline __attribute__((always_inline)) void trace_tree_as(trace_walk_t *w,
                                                                  enum trace_mode mode, int screen,
-                                                                 uint32_t index)
+                                                                 int from_eye, uint32_t index)
 {
     const render_frame_t *f = w->ctx->frame;
-    const trace_box_ray_t br = {.origin = w->ray->origin, .r = w->box_ray,
+    /* from_eye (a constant): the ray starts at +0, +0, +0, so a face's
+     * distance from its origin is the face itself, bit for bit */
+    const trace_box_ray_t br = {.origin = from_eye ? vec3_make(NUM_ZERO, NUM_ZERO, NUM_ZERO)
+                                                   : w->ray->origin,
+                                .r = w->box_ray,
                                 .by_inv = w->box_ray.all_inv && w->use_bounds,
                                 .clusters = f->clusters, .child_list = f->child_list};
     trace_later_t later[RENDER_MAX_CLUSTER_DEPTH + 1];
@@ -491,18 +495,29 @@ static inline __attribute__((always_inline)) void trace_tree_as(trace_walk_t *w,
     }
 }
 
+/* The ray starts at the eye of eye space: its origin's bits are +0's
+ * (not -0, whose difference from a face can differ in sign). */
+static int trace_from_eye(const ray_t *ray)
+{
+    return num_is_plus_zero(ray->origin.x) && num_is_plus_zero(ray->origin.y) &&
+           num_is_plus_zero(ray->origin.z);
+}
+
 /* trace_tree_as compiled once for each walk there is: a camera ray's by
- * screen or not, other nearest-hit rays', shadow rays', straight rays'. */
+ * screen (from the eye of eye space or not) or not, other nearest-hit
+ * rays', shadow rays', straight rays'. */
 static void trace_cluster(trace_walk_t *w, uint32_t index)
 {
     if (w->mode == TRACE_COLLECT_SHADOW)
-        trace_tree_as(w, TRACE_COLLECT_SHADOW, 0, index);
+        trace_tree_as(w, TRACE_COLLECT_SHADOW, 0, 0, index);
     else if (w->mode == TRACE_COLLECT_STRAIGHT)
-        trace_tree_as(w, TRACE_COLLECT_STRAIGHT, 0, index);
+        trace_tree_as(w, TRACE_COLLECT_STRAIGHT, 0, 0, index);
+    else if (w->screen && trace_from_eye(w->ray))
+        trace_tree_as(w, TRACE_NEAREST, 1, 1, index);
     else if (w->screen)
-        trace_tree_as(w, TRACE_NEAREST, 1, index);
+        trace_tree_as(w, TRACE_NEAREST, 1, 0, index);
     else
-        trace_tree_as(w, TRACE_NEAREST, 0, index);
+        trace_tree_as(w, TRACE_NEAREST, 0, 0, index);
 }
 
 /* A shadow ray's walk of the items its light buffer's cell lists, each
