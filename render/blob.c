@@ -42,11 +42,19 @@ render_blob_status_t render_blob_bytes(const uint8_t *compiled, size_t len, size
     return render_blob_bytes_layout(compiled, len, &render_layout_native, bytes, err);
 }
 
+/* How blob_bound counts the index's parent maps. */
+enum blob_maps {
+    BLOB_MAPS_EACH,   /* two a cluster: the header alone */
+    BLOB_MAPS_COUNTED /* the clusters that may have maps of their own, from
+                         their records (scene_load_shape_maps) */
+};
+
 /* render_blob_bytes_layout; crc_later: scene_load follows on the same
  * bytes and checks the word sum (render_blob_load). */
 static render_blob_status_t blob_bound(const uint8_t *compiled, size_t len,
                                        const render_layout_t *layout, int crc_later,
-                                       size_t *bytes, render_blob_error_t *err)
+                                       enum blob_maps maps, size_t *bytes,
+                                       render_blob_error_t *err)
 {
     scene_t shape;
     uint32_t texel_bytes;
@@ -54,8 +62,10 @@ static render_blob_status_t blob_bound(const uint8_t *compiled, size_t len,
     *bytes = 0;
     blob_ok(err);
     scene_load_status_t st =
-        crc_later ? scene_load_shape_before_load(compiled, len, &shape, &texel_bytes, &lerr)
-                  : scene_load_shape(compiled, len, &shape, &texel_bytes, &lerr);
+        maps == BLOB_MAPS_COUNTED
+            ? scene_load_shape_maps(compiled, len, crc_later, &shape, &texel_bytes, &lerr)
+        : crc_later ? scene_load_shape_before_load(compiled, len, &shape, &texel_bytes, &lerr)
+                    : scene_load_shape(compiled, len, &shape, &texel_bytes, &lerr);
     if (st != SCENE_LOAD_OK) {
         blob_fail(err, RENDER_BLOB_ERR_LOAD, "scene refused: %s", lerr.message);
         return err->status;
@@ -71,7 +81,7 @@ render_blob_status_t render_blob_bytes_layout(const uint8_t *compiled, size_t le
                                               const render_layout_t *layout, size_t *bytes,
                                               render_blob_error_t *err)
 {
-    return blob_bound(compiled, len, layout, 0, bytes, err);
+    return blob_bound(compiled, len, layout, 0, BLOB_MAPS_COUNTED, bytes, err);
 }
 
 render_blob_status_t render_blob_load(const uint8_t *compiled, size_t len, void *block,
@@ -98,8 +108,13 @@ render_blob_status_t render_blob_load_summed(const uint8_t *compiled, size_t len
      * render_blob_bytes refuses it (the sum before the section table).
      * A caller that gives the sum has checked it (the DM's upload check,
      * or its narrow load before the wide one): a scene too big is that. */
-    int bounded = blob_bound(compiled, len, &render_layout_native, 1, &need, err) ==
-                  RENDER_BLOB_OK;
+    int bounded = blob_bound(compiled, len, &render_layout_native, 1, BLOB_MAPS_EACH, &need,
+                             err) == RENDER_BLOB_OK;
+    /* two maps a cluster too many: the clusters' records say which may
+     * have maps (a pass over them, only for a scene near the limit) */
+    if (bounded && need > size)
+        bounded = blob_bound(compiled, len, &render_layout_native, 1, BLOB_MAPS_COUNTED, &need,
+                             err) == RENDER_BLOB_OK;
     if ((!bounded || (need > size && !sum)) &&
         render_blob_bytes(compiled, len, &need, err) != RENDER_BLOB_OK)
         return err->status;

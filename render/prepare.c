@@ -690,8 +690,10 @@ size_t render_scene_index_bytes_layout(const scene_t *s, const render_layout_t *
     size_t c = s->cluster_count ? s->cluster_count : 1;
     size_t p = s->prim_count ? s->prim_count : 1;
     size_t n = s->normals_count ? s->normals_count : 1;
+    /* parent_maps: a shape's bound (scene_load_shape_maps), or 2 a cluster */
+    size_t maps = s->index.parent_map_count ? s->index.parent_map_count : 2 * c;
     return sizeof(scene_group_t) * c + sizeof(uint32_t) * (c + p + 3 * n) + lay->num * p + /* kept */
-           2 * lay->xform * c + /* parent_maps, at most 2 a cluster */
+           lay->xform * maps +
            c + n + 2 * sizeof(uint32_t) * PREP_SHARE_CACHE + /* scratch */
            9 * ARENA_MAX_ALIGN; /* 9 allocations, each padded at most that */
 }

@@ -361,7 +361,9 @@ size_t render_prepare_frame_bytes_layout(const scene_t *scene, const render_layo
  * RENDER_ERR_ARENA when arena lacks render_scene_index_bytes. */
 render_status_t render_scene_index(const scene_t *scene, arena_t *arena, scene_index_t *out);
 /* Arena bytes render_scene_index needs at most (its arrays, its scratch
- * and alignment); with another machine's record sizes (render/layout.h). */
+ * and alignment): its parent maps as scene->index.parent_map_count says in
+ * a shape that carries it (scene_load_shape_maps), else two a cluster;
+ * with another machine's record sizes (render/layout.h). */
 size_t render_scene_index_bytes(const scene_t *scene);
 size_t render_scene_index_bytes_layout(const scene_t *scene, const render_layout_t *layout);
 

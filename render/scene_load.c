@@ -1053,9 +1053,9 @@ static scene_load_status_t load_normals(struct load *L, scene_prim_t *prims,
 /* The mantissa bits of 2/sqrt(3), rounded up: load_matrix_exp */
 #define LOAD_MANT_2_OVER_SQRT3 0x13cd3bu
 
-/* The largest of most and shift + e over the n reals at p, |value| in
- * [2^e, 2^(e+1)); zeros, subnormals and not-finite values (left to the
- * checks that follow) count as none. */
+/* The bits of the largest |value| of the n reals at p: the magnitude bits
+ * of finite values order as the values do, and every value not finite or
+ * beyond a limit has bits above the limit's. */
 LOAD_INLINE uint32_t load_max_bits(const uint8_t *p, int n)
 {
     uint32_t big = 0;
@@ -1067,8 +1067,7 @@ LOAD_INLINE uint32_t load_max_bits(const uint8_t *p, int n)
     return big;
 }
 
-/* load_max_exp of the n values at p whose largest magnitude's bits
- * (load_max_bits) are big. */
+/* load_max_exp of the n reals at p whose load_max_bits are big. */
 LOAD_INLINE int32_t load_max_exp_of(const uint8_t *p, int n, uint32_t big, int32_t shift,
                                     int32_t most)
 {
@@ -1085,6 +1084,9 @@ LOAD_INLINE int32_t load_max_exp_of(const uint8_t *p, int n, uint32_t big, int32
     return most;
 }
 
+/* The largest of most and shift + e over the n reals at p, |value| in
+ * [2^e, 2^(e+1)); zeros, subnormals and not-finite values (left to the
+ * checks that follow) count as none. */
 LOAD_INLINE int32_t load_max_exp(const uint8_t *p, int n, int32_t shift, int32_t most)
 {
     return load_max_exp_of(p, n, load_max_bits(p, n), shift, most);
@@ -1314,9 +1316,20 @@ scene_load_status_t scene_load_summed(const uint8_t *buf, size_t len, const uint
     return SCENE_LOAD_OK;
 }
 
+/* The maps render_scene_index keeps at most (scene_index_t.parent_maps):
+ * two for the root and for each other cluster whose record is not plain
+ * (load_cluster_plain), which alone may have maps of their own. */
+static uint32_t load_shape_maps(const struct load *L)
+{
+    uint32_t own = 1;
+    for (uint32_t i = 1; i < L->sec[SCN_SEC_CLUSTERS].count; i++)
+        own += !load_cluster_plain(load_rec(L, SCN_SEC_CLUSTERS, i));
+    return 2 * own;
+}
+
 static scene_load_status_t load_shape(const uint8_t *buf, size_t len, scene_t *shape,
                                       uint32_t *texel_bytes, scene_load_error_t *err,
-                                      int crc_later)
+                                      int crc_later, int count_maps)
 {
     struct load L;
     memset(&L, 0, sizeof L);
@@ -1338,19 +1351,28 @@ static scene_load_status_t load_shape(const uint8_t *buf, size_t len, scene_t *s
     shape->normals_count = L.sec[SCN_SEC_NORMALS].count;
     shape->view_key_count = L.sec[SCN_SEC_VIEW_KEYS].count;
     *texel_bytes = L.sec[SCN_SEC_TEXELS].count;
+    if (count_maps)
+        shape->index.parent_map_count = load_shape_maps(&L);
     return SCENE_LOAD_OK;
 }
 
 scene_load_status_t scene_load_shape(const uint8_t *buf, size_t len, scene_t *shape,
                                      uint32_t *texel_bytes, scene_load_error_t *err)
 {
-    return load_shape(buf, len, shape, texel_bytes, err, 0);
+    return load_shape(buf, len, shape, texel_bytes, err, 0, 0);
 }
 
 scene_load_status_t scene_load_shape_before_load(const uint8_t *buf, size_t len, scene_t *shape,
                                                  uint32_t *texel_bytes, scene_load_error_t *err)
 {
-    return load_shape(buf, len, shape, texel_bytes, err, 1);
+    return load_shape(buf, len, shape, texel_bytes, err, 1, 0);
+}
+
+scene_load_status_t scene_load_shape_maps(const uint8_t *buf, size_t len, int crc_later,
+                                          scene_t *shape, uint32_t *texel_bytes,
+                                          scene_load_error_t *err)
+{
+    return load_shape(buf, len, shape, texel_bytes, err, crc_later, 1);
 }
 
 /* Keep in step with the allocations of scene_load above: each array (at

@@ -65,6 +65,15 @@ scene_load_status_t scene_load_shape(const uint8_t *buf, size_t len, scene_t *sh
  * about an instruction a byte of the scene: once per load is enough. */
 scene_load_status_t scene_load_shape_before_load(const uint8_t *buf, size_t len, scene_t *shape,
                                                  uint32_t *texel_bytes, scene_load_error_t *err);
+/* Either of those (crc_later: the second) and the maps the scene's index
+ * keeps at most in shape->index.parent_map_count, from the cluster records
+ * (two for the root and each cluster that is not plain: an instruction or
+ * three a word of each record), so that a scene of many plain clusters (the
+ * automatic hierarchy's) is not bounded by two maps a cluster
+ * (render_scene_index_bytes). */
+scene_load_status_t scene_load_shape_maps(const uint8_t *buf, size_t len, int crc_later,
+                                          scene_t *shape, uint32_t *texel_bytes,
+                                          scene_load_error_t *err);
 
 /* Arena bytes scene_load needs at most for a scene of this shape; the
  * _layout form with another machine's record sizes (render/layout.h). */
