@@ -4,7 +4,8 @@
 #    next scene uploaded to the same board renders, equal to the host build;
 #  - a scene whose prepared frame exceeds the IMSU block: refused by the
 #    host compiler before the upload, naming the limit
-#    (LINKS1_IMSU_PAIR_BLOCK) and the counts;
+#    (LINKS1_IMSU_PAIR_BLOCK) and the counts; SPD teapot 64, which fits,
+#    taken;
 #  - a sphere of radius 1e-6 in a scene spanning 12, one step of fixed
 #    Q12.19 (issue 11): the fixed DM refuses it with the host build's
 #    message (links1 ref --arith fixed), and the next scene uploaded to the
@@ -16,7 +17,7 @@
 #    cut at the DM's 200-character log line), naming the far light.
 . "$(dirname "$0")/../lib.sh"
 . "$(dirname "$0")/../render_lib.sh"
-board_ready render_refuse_bad render_refuse_next render_refuse_too_big \
+board_ready render_refuse_bad render_refuse_next render_refuse_too_big render_fits_teapot_64 \
     render_refuse_detail render_refuse_detail_next render_refuse_detail_cluster \
     render_refuse_far_light || exit 0
 
@@ -62,6 +63,23 @@ if [ $rc -ne 0 ] && grep -q 'board memory .*(760000 primitives, 1 clusters).*LIN
 else
     echo "FAIL render_refuse_too_big: exit $rc (want non-zero) or the compiler's refusal does not name LINKS1_IMSU_PAIR_BLOCK and the count"
 fi
+
+# SPD teapot 64 (269,824 triangles in 285,311 clusters, nearly all the
+# automatic hierarchy's plain ones): within an IMSU block, so the compiler
+# takes it (its index keeps maps for the clusters that may have them, not
+# two for each cluster: 187 MB, not 214)
+spd="$(dirname "$LINKS1")/links1-spd" log="$RENDER_TMP/teapot64.log"
+"$spd" teapot 64 -o "$RENDER_TMP/teapot64.nff" >"$log" 2>&1 &&
+    "$LINKS1" compile "$RENDER_TMP/teapot64.nff" -o "$RENDER_TMP/teapot64.l1s" >>"$log" 2>&1
+rc=$?
+blob=$(sed -n 's/.*on the board: blob \([0-9]*\) bytes of \([0-9]*\).*/\1 \2/p' "$log")
+echo "--- links1-spd teapot 64, links1 compile (exit $rc)"; sed 's/^/    /' "$log"
+if [ $rc -eq 0 ] && [ -n "$blob" ] && [ "${blob% *}" -le "${blob#* }" ]; then
+    echo "PASS render_fits_teapot_64"
+else
+    echo "FAIL render_fits_teapot_64: exit $rc (want 0), or no blob within the block in the compiler's line"
+fi
+rm -f "$RENDER_TMP/teapot64.nff" "$RENDER_TMP/teapot64.l1s"
 
 tiny=$RENDER_TMP/tiny_sphere.scn
 render_tiny_sphere_scene "$tiny"
