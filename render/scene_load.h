@@ -67,8 +67,8 @@ scene_load_status_t scene_load_shape_before_load(const uint8_t *buf, size_t len,
                                                  uint32_t *texel_bytes, scene_load_error_t *err);
 /* Either of those (crc_later: the second) and the maps the scene's index
  * keeps at most in shape->index.parent_map_count, from the cluster records
- * (two for the root and each cluster that is not plain: an instruction or
- * three a word of each record), so that a scene of many plain clusters (the
+ * (two for the root and each cluster that is not plain: three
+ * instructions a word of each cluster record), so that a scene of many plain clusters (the
  * automatic hierarchy's) is not bounded by two maps a cluster
  * (render_scene_index_bytes). */
 scene_load_status_t scene_load_shape_maps(const uint8_t *buf, size_t len, int crc_later,
