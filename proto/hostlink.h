@@ -56,7 +56,8 @@ enum link_type {
 enum link_cmd {
     CMD_STATUS = 1,      /* -> struct link_status_result */
     CMD_LINE_PING = 2,   /* ping-pong over every serial line -> link_count_result */
-    CMD_IMSU_TEST = 3,   /* swap both ways + broadcast, checksummed -> link_count_result */
+    CMD_IMSU_TEST = 3,   /* the DM's memcpy and memset, then swap both ways + broadcast,
+                            checksummed -> link_count_result */
     CMD_LINE_STRESS = 4, /* u32 MiB through the inter-unit lines -> link_stress_result */
     CMD_LINK_SINK = 5,   /* host sends DATA frames; board checks -> link_transfer_result */
     CMD_LINK_SOURCE = 6, /* u32 bytes: board sends DATA frames of a known pattern

@@ -12,7 +12,7 @@
  *       render_prepare_again); render_blob_build() is both at once.  The
  *       IMSU swap hands the block to the RC at the same address.
  *   RC: render_blob_copy() into the broadcast block: blob->bytes bytes,
- *       (memcpy: on the board kernel/mem.c's, eight words a step), then every pointer moved by
+ *       (memcpy: on the board kernel/mem.c's, 128 or 32 bytes a step), then every pointer moved by
  *       the distance between the blocks (render_blob_relocate); for the
  *       next frames of the same scene render_blob_copy_frame() copies and
  *       relocates the frame part alone.

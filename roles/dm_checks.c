@@ -107,7 +107,11 @@ void dm_cmd_line_latency(uint16_t cmd)
     hostlink_result(cmd, LINK_OK, f, sizeof f);
 }
 
-/* IMSU pair both ways (with misuse checks), then the broadcast block. */
+_Static_assert(SELFTEST_MEM_SCRATCH <= IMSU_TEST_PAIR_BYTES,
+               "selftest_mem's scratch beyond the pair test's");
+
+/* The DM's memcpy and memset (selftest_mem), then the IMSU pair both ways
+ * (with misuse checks), then the broadcast block. */
 void dm_cmd_imsu_test(uint16_t cmd)
 {
     struct imsu_pair *p = &imsu_dm_rc;
@@ -122,6 +126,17 @@ void dm_cmd_imsu_test(uint16_t cmd)
     if (r != IMSU_OK) {
         hostlink_error(cmd, LINK_ERR_CHECK, "IMSU: DM cannot write its own block: %s",
                        imsu_strerror(r));
+        return;
+    }
+    /* first the copies every block move relies on, in the block's bytes */
+    uint32_t mem_cases;
+    char mem_first[64];
+    uint32_t mem_wrong = selftest_mem(w, &mem_cases, mem_first, sizeof mem_first);
+    if (mem_wrong) {
+        imsu_write_end(p, UNITS_DM_CORE);
+        hostlink_error(cmd, LINK_ERR_CHECK,
+                       "the firmware's memcpy and memset: %u of %u cases wrong (first: %s)",
+                       (unsigned)mem_wrong, (unsigned)mem_cases, mem_first);
         return;
     }
     selftest_fill(w, bytes, seed_out, 0);

@@ -160,7 +160,7 @@ static int rc_broadcast(struct rc_run *run, const render_blob_t **out)
         rc_fail(run, LINK_ERR_CHECK, "broadcast block: IMSU error %d (%u)", (uint32_t)r, 0);
         return -1;
     }
-    /* eight words a step: serial work before any NC starts, and the one
+    /* kernel/mem.c's memcpy: serial work before any NC starts, and the one
      * part of the RC's frame that grows with the scene; the scene part only
      * when the broadcast block does not hold this load of the scene yet,
      * the frame header alone when it holds the frame's world part */

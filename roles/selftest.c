@@ -14,6 +14,7 @@
 #include "kernel/task.h"
 #include "proto/hostlink.h"
 #include "proto/render_link.h"
+#include "proto/textfmt.h"
 #include "proto/unitmsg.h"
 #include "proto/wire.h"
 
@@ -42,6 +43,78 @@ uint32_t selftest_check(const uint8_t *p, size_t n, uint32_t seed, uint32_t seq)
         bad += w != selftest_word(seed, seq, j);
     }
     return bad;
+}
+
+/* The byte of a pattern at i: not a constant, not a copy of another
+ * buffer, so gcc does not turn the loops below into memset or memcpy. */
+static uint8_t selftest_mem_byte(uint32_t i, uint32_t seed)
+{
+    return (uint8_t)((i * 131u + seed) ^ (i >> 7));
+}
+
+/* One copy (fill < 0) or fill (of fill's byte) of len bytes at offsets
+ * od, os into buffers of len + 32 patterned bytes; 1 when a byte is wrong.
+ * A byte at a time throughout: gcc makes no call of the functions under
+ * test here. */
+__attribute__((optimize("no-tree-loop-distribute-patterns")))
+static int selftest_mem_case(uint8_t *dst, uint8_t *src, uint32_t len, uint32_t od, uint32_t os,
+                             int fill)
+{
+    uint32_t span = len + 32;
+    for (uint32_t i = 0; i < span; i++) {
+        src[i] = selftest_mem_byte(i, 0x5Au);
+        dst[i] = selftest_mem_byte(i, 0xC3u);
+    }
+    if (fill < 0)
+        memcpy(dst + od, src + os, len);
+    else
+        memset(dst + od, fill, len);
+    for (uint32_t i = 0; i < span; i++) {
+        uint8_t want = selftest_mem_byte(i, 0xC3u);
+        if (i >= od && i - od < len)
+            want = fill < 0 ? selftest_mem_byte(i - od + os, 0x5Au) : (uint8_t)fill;
+        if (dst[i] != want)
+            return 1;
+    }
+    return 0;
+}
+
+/* The length after len: every one to 300, every seventh to 1,100, then
+ * (long) 4,101 and SELFTEST_MEM_LONG; 0 after the last. */
+static uint32_t selftest_mem_next_len(uint32_t len, int long_too)
+{
+    if (len < 300)
+        return len + 1;
+    if (len + 7 <= 1100)
+        return len + 7;
+    if (!long_too || len >= SELFTEST_MEM_LONG)
+        return 0;
+    return len < 4101 ? 4101 : SELFTEST_MEM_LONG;
+}
+
+uint32_t selftest_mem(uint8_t *scratch, uint32_t *cases, char *first, size_t cap)
+{
+    /* destination and source offsets: both aligned (the long ones too),
+     * word-aligned apart, and not word-aligned */
+    static const uint8_t offsets[][2] = {{0, 0}, {4, 0}, {0, 4}, {1, 0}, {0, 3}, {2, 2}, {7, 5}};
+    uint8_t *src = scratch, *dst = scratch + SELFTEST_MEM_BUFFER;
+    uint32_t wrong = 0;
+    *cases = 0;
+    first[0] = 0;
+    for (uint32_t k = 0; k < sizeof offsets / sizeof offsets[0]; k++) {
+        uint32_t od = offsets[k][0], os = offsets[k][1], len = 0;
+        do {
+            for (int fill = -1; fill <= 0xA5; fill += fill < 0 ? 1 : 0xA5) { /* copy, 0, 0xA5 */
+                (*cases)++;
+                if (selftest_mem_case(dst, src, len, od, os, fill) && !wrong++)
+                    fmt_snprintf(first, cap, "%s %u bytes, offsets %u and %u",
+                                 fill < 0 ? "memcpy" : "memset", (unsigned)len, (unsigned)od,
+                                 (unsigned)os);
+            }
+            len = selftest_mem_next_len(len, k < 2);
+        } while (len);
+    }
+    return wrong;
 }
 
 void selftest_msg_set(struct line_msg *m, uint16_t type, uint16_t len)

@@ -13,6 +13,19 @@
 void selftest_fill(uint8_t *p, size_t n, uint32_t seed, uint32_t seq);
 uint32_t selftest_check(const uint8_t *p, size_t n, uint32_t seed, uint32_t seq);
 
+/* The firmware's memcpy and memset (kernel/mem.c) against a byte at a
+ * time, in scratch (SELFTEST_MEM_SCRATCH bytes, word-aligned): every
+ * length to 300, then every seventh to 1,100, and two long ones, at
+ * destination and source offsets aligned, word-aligned and not; each copy
+ * and fill must change exactly its bytes.  Returns the cases wrong (0 when
+ * all are right) out of *cases, the first wrong one in *first ("memcpy
+ * 301 bytes, offsets 1 and 0"). */
+#define SELFTEST_MEM_LONG 65539
+/* a buffer: the longest case, its offset and margin, to a multiple of 8 */
+#define SELFTEST_MEM_BUFFER ((SELFTEST_MEM_LONG + 32 + 7) / 8 * 8)
+#define SELFTEST_MEM_SCRATCH (2 * SELFTEST_MEM_BUFFER)
+uint32_t selftest_mem(uint8_t *scratch, uint32_t *cases, char *first, size_t cap);
+
 /* One stress stream: messages to send to, or receive from, one peer. */
 struct selftest_stream {
     uint32_t peer;      /* the other core */

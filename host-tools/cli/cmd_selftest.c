@@ -16,7 +16,8 @@
 static const struct selftest selftests[] = {
     {"status", "the board counts every unit computer", selftest_status},
     {"ping", "ping-pong over every serial line (DM-RC, RC-each NC)", selftest_ping},
-    {"imsu", "IMSU swap both ways and broadcast, checksummed", selftest_imsu},
+    {"imsu", "the DM's memcpy and memset, then IMSU swap both ways and broadcast, checksummed",
+     selftest_imsu},
     {"stress", "--mib MiB (default 64) through the inter-unit lines", selftest_stress},
     {"link-sink", "--bytes N (default 8 MiB) of the pattern host -> board", selftest_link_sink},
     {"link-source", "--bytes N (default 8 MiB) of the pattern board -> host",

@@ -94,7 +94,9 @@ int selftest_imsu(struct board *b, const struct selftest_args *a, char *why, siz
         return -1;
     struct link_count_result c;
     link_count_result_get(f, &c);
-    snprintf(why, cap, "%u of %u IMSU blocks swapped or broadcast with matching checksums",
+    snprintf(why, cap,
+             "memcpy and memset right; %u of %u IMSU blocks swapped or broadcast with "
+             "matching checksums",
              c.ok, c.total);
     return c.ok > 0 && c.ok == c.total ? 0 : -1;
 }
