@@ -44,9 +44,11 @@ render_blob_status_t render_blob_bytes(const uint8_t *compiled, size_t len, size
 
 /* How blob_bound counts the index's parent maps. */
 enum blob_maps {
-    BLOB_MAPS_EACH,   /* two a cluster: the header alone */
-    BLOB_MAPS_COUNTED /* the clusters that may have maps of their own, from
-                         their records (scene_load_shape_maps) */
+    BLOB_MAPS_EACH,    /* two a cluster: the header alone */
+    BLOB_MAPS_COUNTED, /* the clusters that may have maps of their own, from
+                          their records (scene_load_shape_maps) */
+    BLOB_MAPS_ROOT     /* the root's two alone, the fewest a scene has: a
+                          bound from below, the header alone */
 };
 
 /* render_blob_bytes_layout; crc_later: scene_load follows on the same
@@ -70,6 +72,8 @@ static render_blob_status_t blob_bound(const uint8_t *compiled, size_t len,
         blob_fail(err, RENDER_BLOB_ERR_LOAD, "scene refused: %s", lerr.message);
         return err->status;
     }
+    if (maps == BLOB_MAPS_ROOT)
+        shape.index.parent_map_count = 2;
     /* the header first (alignment of the block start: none), then the
      * loader's arrays, then the frame with its scratch */
     *bytes = layout->blob + scene_load_bytes_layout(&shape, texel_bytes, layout) +
@@ -89,6 +93,22 @@ render_blob_status_t render_blob_load(const uint8_t *compiled, size_t len, void 
                                       render_blob_error_t *err)
 {
     return render_blob_load_summed(compiled, len, NULL, block, size, limit_name, out, err);
+}
+
+/* 1 with err filled when the scene needs more than size bytes with the
+ * root's maps alone, so however many its clusters have. */
+static int blob_too_big_anyway(const uint8_t *compiled, size_t len, size_t size,
+                               const char *limit_name, render_blob_error_t *err)
+{
+    size_t least;
+    if (blob_bound(compiled, len, &render_layout_native, 1, BLOB_MAPS_ROOT, &least, err) !=
+            RENDER_BLOB_OK ||
+        least <= size)
+        return 0;
+    blob_fail(err, RENDER_BLOB_ERR_TOO_BIG,
+              "the scene needs at least %zu bytes, more than the %zu bytes of %s", least, size,
+              limit_name ? limit_name : "the block");
+    return 1;
 }
 
 render_blob_status_t render_blob_load_summed(const uint8_t *compiled, size_t len,
@@ -111,7 +131,10 @@ render_blob_status_t render_blob_load_summed(const uint8_t *compiled, size_t len
     int bounded = blob_bound(compiled, len, &render_layout_native, 1, BLOB_MAPS_EACH, &need,
                              err) == RENDER_BLOB_OK;
     /* two maps a cluster too many: the clusters' records say which may
-     * have maps (a pass over them, only for a scene near the limit) */
+     * have maps (a pass over them, only for a scene near the limit), unless
+     * the root's alone are too many already (checked scenes: the DM's) */
+    if (bounded && need > size && sum && blob_too_big_anyway(compiled, len, size, limit_name, err))
+        return err->status;
     if (bounded && need > size)
         bounded = blob_bound(compiled, len, &render_layout_native, 1, BLOB_MAPS_COUNTED, &need,
                              err) == RENDER_BLOB_OK;

@@ -258,6 +258,16 @@ static void test_blob_size_bound(void)
             printf("message: %s\n", err.message);
         CHECK(strstr(err.message, want) != NULL);
         CHECK(blob == NULL && block[0] == 0x5a && block[need - 1] == 0x5a);
+        /* the DM's load into a block too small for the root's maps alone:
+         * refused as such, before the clusters' maps are counted */
+        const size_t tiny = 1024;
+        CHECK_EQ_INT(render_blob_load_summed(buf, len, &sum, block, tiny, "IMSU_BLOCK_BYTES", &blob,
+                                             &err),
+                     RENDER_BLOB_ERR_TOO_BIG);
+        const char *at = strstr(err.message, "needs at least ");
+        size_t least = 0;
+        CHECK(at && sscanf(at, "needs at least %zu", &least) == 1 && least > tiny && least <= need);
+        CHECK(blob == NULL && block[0] == 0x5a);
         free(block);
         free(buf);
     }
