@@ -46,104 +46,87 @@ typedef uint32_t __attribute__((may_alias)) mem_word_t;
 #define MEM_STEP_REGS "{r3, r4, r5, r6, r8, r9, r10, r12}"
 #define MEM_STEP_CLOBBERS "r3", "r4", "r5", "r6", "r8", "r9", "r10", "r12", "cc", "memory"
 
-/* steps whole steps from s to d, both word-aligned, steps > 0: two steps a
- * loop turn (the loop's own two instructions shared by 64 bytes). */
+/* steps whole steps from s to d, both word-aligned, steps > 0, each a
+ * load-multiple (ld) and a store-multiple (st) of regs: two steps a loop
+ * turn (the loop's own two instructions shared by two steps). */
+#define MEM_COPY_STEPS(d, s, steps, ld, st, regs, ...)                                             \
+    do {                                                                                           \
+        if ((steps) & 1)                                                                           \
+            __asm__ volatile(ld " %[s]!, " regs "\n\t" st " %[d]!, " regs                          \
+                             : [s] "+r"(s), [d] "+r"(d)                                            \
+                             :                                                                     \
+                             : __VA_ARGS__);                                                       \
+        size_t pairs = (steps) / 2;                                                                \
+        if (pairs)                                                                                 \
+            __asm__ volatile("1:\n\t" ld " %[s]!, " regs "\n\t" st " %[d]!, " regs "\n\t" ld     \
+                             " %[s]!, " regs "\n\t" st " %[d]!, " regs "\n\t"                    \
+                             "subs %[n], %[n], #1\n\t"                                             \
+                             "bne 1b"                                                              \
+                             : [s] "+r"(s), [d] "+r"(d), [n] "+r"(pairs)                           \
+                             :                                                                     \
+                             : __VA_ARGS__);                                                       \
+    } while (0)
+
+/* 32-byte steps: eight core registers. */
 static void mem_copy_steps(uint8_t *d, const uint8_t *s, size_t steps)
 {
-    if (steps & 1)
-        __asm__ volatile("ldmia %[s]!, " MEM_STEP_REGS "\n\t"
-                         "stmia %[d]!, " MEM_STEP_REGS
-                         : [s] "+r"(s), [d] "+r"(d)
-                         :
-                         : MEM_STEP_CLOBBERS);
-    size_t pairs = steps / 2;
-    if (pairs)
-        __asm__ volatile("1:\n\t"
-                         "ldmia %[s]!, " MEM_STEP_REGS "\n\t"
-                         "stmia %[d]!, " MEM_STEP_REGS "\n\t"
-                         "ldmia %[s]!, " MEM_STEP_REGS "\n\t"
-                         "stmia %[d]!, " MEM_STEP_REGS "\n\t"
-                         "subs %[n], %[n], #1\n\t"
-                         "bne 1b"
-                         : [s] "+r"(s), [d] "+r"(d), [n] "+r"(pairs)
-                         :
-                         : MEM_STEP_CLOBBERS);
+    MEM_COPY_STEPS(d, s, steps, "ldmia", "stmia", MEM_STEP_REGS, MEM_STEP_CLOBBERS);
 }
 
-/* steps whole steps of word w at d, word-aligned, steps > 0. */
+/* steps whole steps of word w at d, word-aligned, steps > 0: regs set
+ * from w once (set), then a store-multiple (st) of them a step. */
+#define MEM_FILL_STEPS(d, w, steps, set, st, regs, ...)                                           \
+    __asm__ volatile(set "1:\n\t" st " %[d]!, " regs "\n\t"                                       \
+                         "subs %[n], %[n], #1\n\t"                                                 \
+                         "bne 1b"                                                                  \
+                     : [d] "+r"(d), [n] "+r"(steps)                                                \
+                     : [w] "r"(w)                                                                  \
+                     : __VA_ARGS__)
+
 static void mem_fill_steps(uint8_t *d, uint32_t w, size_t steps)
 {
-    __asm__ volatile("mov r3, %[w]\n\t"
-                     "mov r4, %[w]\n\t"
-                     "mov r5, %[w]\n\t"
-                     "mov r6, %[w]\n\t"
-                     "mov r8, %[w]\n\t"
-                     "mov r9, %[w]\n\t"
-                     "mov r10, %[w]\n\t"
-                     "mov r12, %[w]\n"
-                     "1:\n\t"
-                     "stmia %[d]!, " MEM_STEP_REGS "\n\t"
-                     "subs %[n], %[n], #1\n\t"
-                     "bne 1b"
-                     : [d] "+r"(d), [n] "+r"(steps)
-                     : [w] "r"(w)
-                     : MEM_STEP_CLOBBERS);
+    MEM_FILL_STEPS(d, w, steps,
+                   "mov r3, %[w]\n\tmov r4, %[w]\n\tmov r5, %[w]\n\tmov r6, %[w]\n\t"
+                   "mov r8, %[w]\n\tmov r9, %[w]\n\tmov r10, %[w]\n\tmov r12, %[w]\n",
+                   "stmia", MEM_STEP_REGS, MEM_STEP_CLOBBERS);
 }
 
 #if MEM_WIDE_BYTES
-/* steps whole 128-byte steps from s to d, both word-aligned, steps > 0:
- * two steps a loop turn, as mem_copy_steps. */
+/* 128-byte steps: sixteen VFP double registers. */
 static void mem_copy_wide(uint8_t *d, const uint8_t *s, size_t steps)
 {
-    if (steps & 1)
-        __asm__ volatile("vldmia %[s]!, " MEM_WIDE_REGS "\n\t"
-                         "vstmia %[d]!, " MEM_WIDE_REGS
-                         : [s] "+r"(s), [d] "+r"(d)
-                         :
-                         : MEM_WIDE_CLOBBERS);
-    size_t pairs = steps / 2;
-    if (pairs)
-        __asm__ volatile("1:\n\t"
-                         "vldmia %[s]!, " MEM_WIDE_REGS "\n\t"
-                         "vstmia %[d]!, " MEM_WIDE_REGS "\n\t"
-                         "vldmia %[s]!, " MEM_WIDE_REGS "\n\t"
-                         "vstmia %[d]!, " MEM_WIDE_REGS "\n\t"
-                         "subs %[n], %[n], #1\n\t"
-                         "bne 1b"
-                         : [s] "+r"(s), [d] "+r"(d), [n] "+r"(pairs)
-                         :
-                         : MEM_WIDE_CLOBBERS);
+    MEM_COPY_STEPS(d, s, steps, "vldmia", "vstmia", MEM_WIDE_REGS, MEM_WIDE_CLOBBERS);
 }
 
-/* steps whole 128-byte steps of word w at d, word-aligned, steps > 0:
- * the sixteen registers set from w once. */
+/* 128-byte fills: the sixteen registers set from w once. */
 static void mem_fill_wide(uint8_t *d, uint32_t w, size_t steps)
 {
-    __asm__ volatile("vmov d16, %[w], %[w]\n\t"
-                     "vmov.f64 d17, d16\n\t"
-                     "vmov.f64 d18, d16\n\t"
-                     "vmov.f64 d19, d16\n\t"
-                     "vmov.f64 d20, d16\n\t"
-                     "vmov.f64 d21, d16\n\t"
-                     "vmov.f64 d22, d16\n\t"
-                     "vmov.f64 d23, d16\n\t"
-                     "vmov.f64 d24, d16\n\t"
-                     "vmov.f64 d25, d16\n\t"
-                     "vmov.f64 d26, d16\n\t"
-                     "vmov.f64 d27, d16\n\t"
-                     "vmov.f64 d28, d16\n\t"
-                     "vmov.f64 d29, d16\n\t"
-                     "vmov.f64 d30, d16\n\t"
-                     "vmov.f64 d31, d16\n"
-                     "1:\n\t"
-                     "vstmia %[d]!, " MEM_WIDE_REGS "\n\t"
-                     "subs %[n], %[n], #1\n\t"
-                     "bne 1b"
-                     : [d] "+r"(d), [n] "+r"(steps)
-                     : [w] "r"(w)
-                     : MEM_WIDE_CLOBBERS);
+    MEM_FILL_STEPS(d, w, steps,
+                   "vmov d16, %[w], %[w]\n\tvmov.f64 d17, d16\n\tvmov.f64 d18, d16\n\t"
+                   "vmov.f64 d19, d16\n\tvmov.f64 d20, d16\n\tvmov.f64 d21, d16\n\t"
+                   "vmov.f64 d22, d16\n\tvmov.f64 d23, d16\n\tvmov.f64 d24, d16\n\t"
+                   "vmov.f64 d25, d16\n\tvmov.f64 d26, d16\n\tvmov.f64 d27, d16\n\t"
+                   "vmov.f64 d28, d16\n\tvmov.f64 d29, d16\n\tvmov.f64 d30, d16\n\t"
+                   "vmov.f64 d31, d16\n",
+                   "vstmia", MEM_WIDE_REGS, MEM_WIDE_CLOBBERS);
 }
 #endif
+
+/* The whole steps (step bytes each) of n bytes from *s to *d by copy,
+ * both moved past them: the bytes left. */
+static inline __attribute__((always_inline)) size_t
+mem_copy_by(uint8_t **d, const uint8_t **s, size_t n, size_t step,
+            void (*copy)(uint8_t *, const uint8_t *, size_t))
+{
+    size_t steps = n / step;
+    if (steps) {
+        copy(*d, *s, steps);
+        *d += steps * step;
+        *s += steps * step;
+        n -= steps * step;
+    }
+    return n;
+}
 
 __attribute__((optimize("no-tree-loop-distribute-patterns")))
 void *memcpy(void *restrict dst, const void *restrict src, size_t n)
@@ -152,21 +135,9 @@ void *memcpy(void *restrict dst, const void *restrict src, size_t n)
     const uint8_t *s = src;
     if ((((uintptr_t)d | (uintptr_t)s) & 3u) == 0) {
 #if MEM_WIDE_BYTES
-        size_t wide = n / MEM_WIDE_BYTES;
-        if (wide) {
-            mem_copy_wide(d, s, wide);
-            d += wide * MEM_WIDE_BYTES;
-            s += wide * MEM_WIDE_BYTES;
-            n -= wide * MEM_WIDE_BYTES;
-        }
+        n = mem_copy_by(&d, &s, n, MEM_WIDE_BYTES, mem_copy_wide);
 #endif
-        size_t steps = n / MEM_STEP_BYTES;
-        if (steps) {
-            mem_copy_steps(d, s, steps);
-            d += steps * MEM_STEP_BYTES;
-            s += steps * MEM_STEP_BYTES;
-            n -= steps * MEM_STEP_BYTES;
-        }
+        n = mem_copy_by(&d, &s, n, MEM_STEP_BYTES, mem_copy_steps);
         for (; n >= 4; n -= 4, d += 4, s += 4)
             *(mem_word_t *)(void *)d = *(const mem_word_t *)(const void *)s;
     }
