@@ -192,7 +192,13 @@ static int prep_keys_same(const scene_t *s, uint32_t a, uint32_t b)
 {
     if (a == b)
         return 1;
-    for (uint32_t i = 0; i < s->cluster_count; i++) {
+    /* the index's range of keyed clusters, when the scene has its index */
+    uint32_t lo = 0, hi = s->cluster_count;
+    if (s->index.groups) {
+        lo = s->index.keyed_lo;
+        hi = s->index.keyed_hi < hi ? s->index.keyed_hi : hi;
+    }
+    for (uint32_t i = lo; i < hi; i++) {
         const scene_cluster_t *c = &s->clusters[i];
         if (c->key_count == 0)
             continue;
@@ -836,6 +842,11 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
          * come out bit for bit as in the parent: the DM copies no maps */
         g[i].maps_of = i > 0 && prep_is_plain(c) ? g[c->parent].maps_of : i;
         own += g[i].maps_of == i;
+        if (c->key_count) {
+            if (!out->keyed_hi)
+                out->keyed_lo = i;
+            out->keyed_hi = i + 1;
+        }
     }
     /* children and primitives grouped by owner, each with a counting sort
      * (stable: ascending index) */

@@ -210,6 +210,8 @@ typedef struct {
     uint32_t pointer_lo, pointer_hi; /* the primitives that are not
                                         triangles lie in [pointer_lo,
                                         pointer_hi) (0, 0: none) */
+    uint32_t keyed_lo, keyed_hi; /* the clusters with keys lie in
+                                    [keyed_lo, keyed_hi) (0, 0: none) */
 } scene_index_t;
 
 enum scene_prim_kind {

@@ -556,6 +556,36 @@ static void test_blob_world_space_keeps(void)
     tb_world_cases(cases, sizeof cases / sizeof cases[0], world_keeps);
 }
 
+/* The index's range of keyed clusters holds every cluster with keys and
+ * begins and ends with one (none: 0, 0); a world-space frame compares
+ * the maps of those alone (render_world_same). */
+static void test_blob_keyed_range(void)
+{
+    const char *names[] = {"anim", "pendulum", "fly", "demo"};
+    for (int n = 0; n < 4; n++) {
+        size_t len, need;
+        render_blob_error_t err;
+        uint8_t *buf = tb_compile(names[n], &len);
+        CHECK(buf != NULL);
+        if (!buf)
+            continue;
+        CHECK_EQ_INT(render_blob_bytes(buf, len, &need, &err), RENDER_BLOB_OK);
+        uint8_t *block = tb_block(need);
+        render_blob_t *blob = NULL;
+        CHECK_EQ_INT(render_blob_load(buf, len, block, need, NULL, &blob, &err), RENDER_BLOB_OK);
+        const scene_t *sc = blob ? &blob->scene : NULL;
+        uint32_t keyed = 0, lo = sc ? sc->index.keyed_lo : 0, hi = sc ? sc->index.keyed_hi : 0;
+        for (uint32_t i = 0; sc && i < sc->cluster_count; i++) {
+            keyed += sc->clusters[i].key_count != 0;
+            CHECK(sc->clusters[i].key_count == 0 || (i >= lo && i < hi));
+        }
+        CHECK(keyed ? sc->clusters[lo].key_count && sc->clusters[hi - 1].key_count : lo == 0 && hi == 0);
+        CHECK(n >= 2 || keyed > 1); /* anim and pendulum move clusters */
+        free(block);
+        free(buf);
+    }
+}
+
 /* The DM's two blocks taking the frames in turn, each forwarded into the
  * RC's broadcast block. */
 static void world_forwards(const world_case_t *wc, const uint8_t *buf, size_t len, size_t need)
@@ -616,5 +646,6 @@ int main(void)
     RUN(test_blob_copy_frame_only);
     RUN(test_blob_world_space_keeps);
     RUN(test_blob_copy_world_header);
+    RUN(test_blob_keyed_range);
     return check_exit();
 }
