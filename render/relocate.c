@@ -59,17 +59,11 @@ static void reloc_scene(reloc_t *r, scene_t *s)
     scene_normals_t *normals = RELOC(r, s->normals, s->normals_count, "scene.normals");
     scene_view_key_t *view_keys = RELOC(r, s->view_keys, s->view_key_count, "scene.view_keys");
     /* the index (render_scene_index): all its arrays or none */
-    scene_index_t ix = {NULL,
-                        NULL,
-                        NULL,
-                        NULL,
-                        NULL,
-                        NULL,
-                        s->index.parent_map_count,
-                        s->index.pointer_lo,
-                        s->index.pointer_hi,
-                        s->index.keyed_lo,
-                        s->index.keyed_hi};
+    scene_index_t ix = {.parent_map_count = s->index.parent_map_count,
+                        .pointer_lo = s->index.pointer_lo,
+                        .pointer_hi = s->index.pointer_hi,
+                        .keyed_lo = s->index.keyed_lo,
+                        .keyed_hi = s->index.keyed_hi};
     if (s->index.groups || s->index.child_list || s->index.prim_list || s->index.normal_src ||
         s->index.uv_spread || s->index.parent_maps) {
         ix.groups = RELOC(r, s->index.groups, s->cluster_count, "scene.index.groups");
