@@ -44,18 +44,28 @@ render_blob_status_t render_blob_bytes(const uint8_t *compiled, size_t len, size
 
 /* How blob_bound counts the index's parent maps. */
 enum blob_maps {
-    BLOB_MAPS_EACH,    /* two a cluster: the header alone */
-    BLOB_MAPS_COUNTED, /* the clusters that may have maps of their own, from
-                          their records (scene_load_shape_maps) */
-    BLOB_MAPS_ROOT     /* the root's two alone, the fewest a scene has: a
-                          bound from below, the header alone */
+    BLOB_MAPS_EACH,   /* two a cluster: the header alone */
+    BLOB_MAPS_COUNTED /* the clusters that may have maps of their own, from
+                         their records (scene_load_shape_maps) */
 };
 
+/* The blob's bytes for a scene of this shape: the header first (alignment
+ * of the block start: none), then the loader's arrays, then the frame
+ * with its scratch. */
+static size_t blob_shape_bytes(const scene_t *shape, uint32_t texel_bytes,
+                               const render_layout_t *layout)
+{
+    return layout->blob + scene_load_bytes_layout(shape, texel_bytes, layout) +
+           render_prepare_frame_bytes_layout(shape, layout);
+}
+
 /* render_blob_bytes_layout; crc_later: scene_load follows on the same
- * bytes and checks the word sum (render_blob_load). */
+ * bytes and checks the word sum (render_blob_load).  least, unless NULL:
+ * the bytes with the root's two maps alone, the fewest a scene has (a
+ * bound from below, from the same header). */
 static render_blob_status_t blob_bound(const uint8_t *compiled, size_t len,
                                        const render_layout_t *layout, int crc_later,
-                                       enum blob_maps maps, size_t *bytes,
+                                       enum blob_maps maps, size_t *bytes, size_t *least,
                                        render_blob_error_t *err)
 {
     scene_t shape;
@@ -72,12 +82,11 @@ static render_blob_status_t blob_bound(const uint8_t *compiled, size_t len,
         blob_fail(err, RENDER_BLOB_ERR_LOAD, "scene refused: %s", lerr.message);
         return err->status;
     }
-    if (maps == BLOB_MAPS_ROOT)
+    *bytes = blob_shape_bytes(&shape, texel_bytes, layout);
+    if (least) {
         shape.index.parent_map_count = 2;
-    /* the header first (alignment of the block start: none), then the
-     * loader's arrays, then the frame with its scratch */
-    *bytes = layout->blob + scene_load_bytes_layout(&shape, texel_bytes, layout) +
-             render_prepare_frame_bytes_layout(&shape, layout);
+        *least = blob_shape_bytes(&shape, texel_bytes, layout);
+    }
     return RENDER_BLOB_OK;
 }
 
@@ -85,7 +94,7 @@ render_blob_status_t render_blob_bytes_layout(const uint8_t *compiled, size_t le
                                               const render_layout_t *layout, size_t *bytes,
                                               render_blob_error_t *err)
 {
-    return blob_bound(compiled, len, layout, 0, BLOB_MAPS_COUNTED, bytes, err);
+    return blob_bound(compiled, len, layout, 0, BLOB_MAPS_COUNTED, bytes, NULL, err);
 }
 
 render_blob_status_t render_blob_load(const uint8_t *compiled, size_t len, void *block,
@@ -95,28 +104,12 @@ render_blob_status_t render_blob_load(const uint8_t *compiled, size_t len, void 
     return render_blob_load_summed(compiled, len, NULL, block, size, limit_name, out, err);
 }
 
-/* 1 with err filled when the scene needs more than size bytes with the
- * root's maps alone, so however many its clusters have. */
-static int blob_too_big_anyway(const uint8_t *compiled, size_t len, size_t size,
-                               const char *limit_name, render_blob_error_t *err)
-{
-    size_t least;
-    if (blob_bound(compiled, len, &render_layout_native, 1, BLOB_MAPS_ROOT, &least, err) !=
-            RENDER_BLOB_OK ||
-        least <= size)
-        return 0;
-    blob_fail(err, RENDER_BLOB_ERR_TOO_BIG,
-              "the scene needs at least %zu bytes, more than the %zu bytes of %s", least, size,
-              limit_name ? limit_name : "the block");
-    return 1;
-}
-
 render_blob_status_t render_blob_load_summed(const uint8_t *compiled, size_t len,
                                              const uint32_t *sum, void *block, size_t size,
                                              const char *limit_name, render_blob_t **out,
                                              render_blob_error_t *err)
 {
-    size_t need;
+    size_t need, least = 0;
     *out = NULL;
     if (!blob_aligned(block)) {
         blob_fail(err, RENDER_BLOB_ERR_BLOCK,
@@ -129,15 +122,20 @@ render_blob_status_t render_blob_load_summed(const uint8_t *compiled, size_t len
      * A caller that gives the sum has checked it (the DM's upload check,
      * or its narrow load before the wide one): a scene too big is that. */
     int bounded = blob_bound(compiled, len, &render_layout_native, 1, BLOB_MAPS_EACH, &need,
-                             err) == RENDER_BLOB_OK;
-    /* two maps a cluster too many: the clusters' records say which may
-     * have maps (a pass over them, only for a scene near the limit), unless
-     * the root's alone are too many already (checked scenes: the DM's) */
-    if (bounded && need > size && sum && blob_too_big_anyway(compiled, len, size, limit_name, err))
+                             &least, err) == RENDER_BLOB_OK;
+    /* the root's maps alone too many (a checked scene: the DM's): too big
+     * however many maps its clusters have */
+    if (bounded && sum && least > size) {
+        blob_fail(err, RENDER_BLOB_ERR_TOO_BIG,
+                  "the scene needs at least %zu bytes, more than the %zu bytes of %s", least,
+                  size, limit_name ? limit_name : "the block");
         return err->status;
+    }
+    /* two maps a cluster too many: the clusters' records say which may
+     * have maps (a pass over them, only for a scene near the limit) */
     if (bounded && need > size)
         bounded = blob_bound(compiled, len, &render_layout_native, 1, BLOB_MAPS_COUNTED, &need,
-                             err) == RENDER_BLOB_OK;
+                             NULL, err) == RENDER_BLOB_OK;
     if ((!bounded || (need > size && !sum)) &&
         render_blob_bytes(compiled, len, &need, err) != RENDER_BLOB_OK)
         return err->status;
