@@ -97,6 +97,7 @@ uint32_t selftest_mem(uint8_t *scratch, uint32_t *cases, char *first, size_t cap
     /* destination and source offsets: both aligned (the long ones too),
      * word-aligned apart, and not word-aligned */
     static const uint8_t offsets[][2] = {{0, 0}, {4, 0}, {0, 4}, {1, 0}, {0, 3}, {2, 2}, {7, 5}};
+    static const int fills[] = {-1, 0, 0xA5}; /* a copy, then fills of 0 and of 0xA5 */
     uint8_t *src = scratch, *dst = scratch + SELFTEST_MEM_BUFFER;
     uint32_t wrong = 0;
     *cases = 0;
@@ -104,7 +105,8 @@ uint32_t selftest_mem(uint8_t *scratch, uint32_t *cases, char *first, size_t cap
     for (uint32_t k = 0; k < sizeof offsets / sizeof offsets[0]; k++) {
         uint32_t od = offsets[k][0], os = offsets[k][1], len = 0;
         do {
-            for (int fill = -1; fill <= 0xA5; fill += fill < 0 ? 1 : 0xA5) { /* copy, 0, 0xA5 */
+            for (uint32_t f = 0; f < sizeof fills / sizeof fills[0]; f++) {
+                int fill = fills[f];
                 (*cases)++;
                 if (selftest_mem_case(dst, src, len, od, os, fill) && !wrong++)
                     fmt_snprintf(first, cap, "%s %u bytes, offsets %u and %u",
