@@ -128,6 +128,21 @@ mem_copy_by(uint8_t **d, const uint8_t **s, size_t n, size_t step,
     return n;
 }
 
+/* The whole steps of n bytes at *d filled by fill with word w, *d moved
+ * past them: the bytes left. */
+static inline __attribute__((always_inline)) size_t
+mem_fill_by(uint8_t **d, size_t n, size_t step, uint32_t w,
+            void (*fill)(uint8_t *, uint32_t, size_t))
+{
+    size_t steps = n / step;
+    if (steps) {
+        fill(*d, w, steps);
+        *d += steps * step;
+        n -= steps * step;
+    }
+    return n;
+}
+
 __attribute__((optimize("no-tree-loop-distribute-patterns")))
 void *memcpy(void *restrict dst, const void *restrict src, size_t n)
 {
@@ -154,19 +169,10 @@ void *memset(void *dst, int c, size_t n)
     for (; n && ((uintptr_t)d & 3u); n--)
         *d++ = b;
 #if MEM_WIDE_BYTES
-    if (n >= MEM_WIDE_FILL_MIN) {
-        size_t wide = n / MEM_WIDE_BYTES;
-        mem_fill_wide(d, w, wide);
-        d += wide * MEM_WIDE_BYTES;
-        n -= wide * MEM_WIDE_BYTES;
-    }
+    if (n >= MEM_WIDE_FILL_MIN)
+        n = mem_fill_by(&d, n, MEM_WIDE_BYTES, w, mem_fill_wide);
 #endif
-    size_t steps = n / MEM_STEP_BYTES;
-    if (steps) {
-        mem_fill_steps(d, w, steps);
-        d += steps * MEM_STEP_BYTES;
-        n -= steps * MEM_STEP_BYTES;
-    }
+    n = mem_fill_by(&d, n, MEM_STEP_BYTES, w, mem_fill_steps);
     for (; n >= 4; n -= 4, d += 4)
         *(mem_word_t *)(void *)d = w;
     while (n--)
