@@ -10,9 +10,11 @@
  * local map's inverse where it has), which vertex normals are equal, the
  * static checks) is the scene index's, worked out once a load
  * (render_scene_index).
- * With options.world_space the primitives stay in world coordinates, the
- * camera turns the rays instead, and a frame keeps the frame before's
- * world part when no keyed map changed (render_prepare_again).
+ * With options.world_space the primitives stay in world coordinates and
+ * the camera turns the rays instead.  A frame prepared over the frame
+ * before in the same block (render_prepare_again) keeps what that one
+ * prepared where no keyed map changed (in eye space, when the camera is
+ * the same) and prepares again only the clusters that moved.
  */
 #include <string.h>
 
@@ -890,9 +892,8 @@ size_t render_prepare_frame_bytes_layout(const scene_t *s, const render_layout_t
     size_t normals = s->normals_count ? s->normals_count : 1;
     size_t n = lay->frame + lay->frame_cluster * (size_t)s->cluster_count + lay->frame_prim * prims +
                lay->num * comps;
-    /* (and a byte a cluster in world space: which maps moved) */
-    size_t scratch = 2 * lay->xform * (size_t)s->cluster_count + lay->normals * normals +
-                     (s->options.world_space ? s->cluster_count : 0);
+    /* (and a byte a cluster: which maps moved) */
+    size_t scratch = (2 * lay->xform + 1) * (size_t)s->cluster_count + lay->normals * normals;
     return n + scratch + 8 * ARENA_MAX_ALIGN; /* 8 allocations, each padded at most that */
 }
 
@@ -910,7 +911,7 @@ size_t render_prepare_bytes(const scene_t *s)
 
 /* moved[] of render_prepare_again, a byte a cluster: its maps moved (a
  * cluster with maps of its own, prep_cluster_maps), its box moved (its
- * primitives' or a descendant's: prep_world_moved). */
+ * primitives' or a descendant's: prep_moved). */
 #define PREP_MAPS_MOVED 1u
 #define PREP_BOX_MOVED 2u
 
@@ -1024,6 +1025,32 @@ static inline __attribute__((always_inline)) void prep_own_bounds(render_frame_t
     c->tree_x1 = c->tree_y1 = 0;
 }
 
+/* Adds cluster c's own screen rectangle to the pixels and rows it covers
+ * (nothing when it is empty). */
+static inline __attribute__((always_inline)) void prep_rect_cover(const render_cluster_t *c,
+                                                                 uint64_t *covered,
+                                                                 uint64_t *rows)
+{
+    if (c->screen_x0 <= c->screen_x1 && c->screen_y0 <= c->screen_y1) {
+        *covered += (uint64_t)(uint32_t)(c->screen_x1 - c->screen_x0 + 1) *
+                    (uint32_t)(c->screen_y1 - c->screen_y0 + 1);
+        *rows += (uint32_t)(c->screen_y1 - c->screen_y0 + 1);
+    }
+}
+
+/* The frame's clip coverage (eye space) from the pixels and rows the
+ * clusters' own rectangles cover: covered / pixels and rows / height,
+ * rounded up, in 32 bits (covered < 2^32 * pixels would need 2^32
+ * clusters over every pixel). */
+static void prep_clip_coverage_set(render_frame_t *f, uint64_t covered, uint64_t rows)
+{
+    uint32_t pixels = (uint32_t)f->width * f->height;
+    uint64_t mean = (covered + pixels - 1) / pixels;
+    f->clip_coverage = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
+    mean = (rows + f->height - 1) / f->height;
+    f->clip_rows = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
+}
+
 /* Every cluster's box over its subtree, its screen rectangle (world: the
  * whole screen) and tree rectangle, from the own boxes (prep_own_bounds
  * emptied the others); the frame's clip coverage (eye space). */
@@ -1041,11 +1068,7 @@ static void prep_cluster_tree(const scene_t *s, render_frame_t *f, int world)
         } else {
             prep_screen_rect(f, c);
         }
-        if (c->screen_x0 <= c->screen_x1 && c->screen_y0 <= c->screen_y1) {
-            covered += (uint64_t)(uint32_t)(c->screen_x1 - c->screen_x0 + 1) *
-                       (uint32_t)(c->screen_y1 - c->screen_y0 + 1);
-            rows += (uint32_t)(c->screen_y1 - c->screen_y0 + 1);
-        }
+        prep_rect_cover(c, &covered, &rows);
         prep_tree_rect_add(c, c->screen_x0, c->screen_y0, c->screen_x1, c->screen_y1);
         if (i > 0) {
             render_cluster_t *p = &f->clusters[s->clusters[i].parent];
@@ -1053,28 +1076,65 @@ static void prep_cluster_tree(const scene_t *s, render_frame_t *f, int world)
             prep_tree_rect_add(p, c->tree_x0, c->tree_y0, c->tree_x1, c->tree_y1);
         }
     }
-    /* covered / pixels, rounded up, in 32 bits: covered < 2^32 * pixels
-     * would need 2^32 clusters over every pixel */
-    uint32_t pixels = (uint32_t)f->width * f->height;
-    if (!world) {
-        uint64_t mean = (covered + pixels - 1) / pixels;
-        f->clip_coverage = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
-        mean = (rows + f->height - 1) / f->height;
-        f->clip_rows = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
-    }
+    if (!world)
+        prep_clip_coverage_set(f, covered, rows);
 }
 
-/* A world-space frame over the frame before (old, at the same address,
- * its world part whole: no saturation, no detail refused), when at most
- * half the primitives moved: only the primitives of clusters whose maps
- * moved are prepared again, then the boxes of those clusters and their
- * ancestors, and the precision checks of the primitives prepared.  Sets
- * f->world_kept = 2 and returns precision_check's status when the extent
- * came out as old's; leaves world_kept 0 otherwise (more moved, the extent
- * moved or a bound saturated), and the caller prepares the frame whole.
- * Every box is grown in the order a whole preparation grows it, so the
- * bytes are the same. */
-static __attribute__((noinline)) render_status_t prep_world_moved(const scene_t *s, render_frame_t *f, const scene_index_t *ix,
+/* The boxes of the clusters marked PREP_BOX_MOVED (their own boxes made
+ * again) and of their ancestors, children first (larger indices), each
+ * grown as prep_cluster_tree grows it: by its children in falling index,
+ * then by its own primitives' box.  Its rectangles: world, the whole
+ * screen's, as prep_cluster_tree makes them; eye space, its own box's
+ * (prep_screen_rect) and the tree rectangle over it and its children's. */
+static void prep_moved_boxes(const scene_t *s, render_frame_t *f, const scene_index_t *ix,
+                             uint8_t *moved)
+{
+    for (uint32_t c = s->cluster_count; c-- > 0;) {
+        if (!(moved[c] & PREP_BOX_MOVED))
+            continue;
+        render_cluster_t *cl = &f->clusters[c];
+        const scene_group_t *g = &ix->groups[c];
+        cl->bounds = prep_aabb_empty();
+        for (uint32_t k = g->child_count; k-- > 0;)
+            prep_aabb_add_box(&cl->bounds, &f->clusters[ix->child_list[g->first_child + k]].bounds);
+        prep_aabb_add_box(&cl->bounds, &cl->own_bounds);
+        if (f->world) {
+            cl->tree_x0 = cl->tree_y0 = 0;
+            cl->tree_x1 = f->width - 1;
+            cl->tree_y1 = f->height - 1;
+        } else {
+            prep_screen_rect(f, cl);
+            cl->tree_x0 = cl->tree_y0 = 1;
+            cl->tree_x1 = cl->tree_y1 = 0;
+            for (uint32_t k = 0; k < g->child_count; k++) {
+                const render_cluster_t *kid = &f->clusters[ix->child_list[g->first_child + k]];
+                prep_tree_rect_add(cl, kid->tree_x0, kid->tree_y0, kid->tree_x1, kid->tree_y1);
+            }
+            prep_tree_rect_add(cl, cl->screen_x0, cl->screen_y0, cl->screen_x1, cl->screen_y1);
+        }
+        if (c > 0)
+            moved[s->clusters[c].parent] |= PREP_BOX_MOVED;
+    }
+    if (f->world)
+        return;
+    uint64_t covered = 0, rows = 0;
+    for (uint32_t c = 0; c < s->cluster_count; c++)
+        prep_rect_cover(&f->clusters[c], &covered, &rows);
+    prep_clip_coverage_set(f, covered, rows);
+}
+
+/* A frame over the frame before (old, at the same address, prepared
+ * whole: no saturation, no detail refused; in eye space seen from the
+ * same camera), when at most half the primitives moved: only the
+ * primitives of clusters whose maps moved are prepared again, then the
+ * boxes of those clusters and their ancestors (prep_moved_boxes), and the
+ * precision checks of the primitives prepared.  Sets f->kept = 2 and
+ * returns precision_check's status when the extent came out as old's;
+ * leaves kept 0 otherwise (more moved, the extent moved or a bound
+ * saturated), and the caller prepares the frame whole.  Every box is
+ * grown in the order a whole preparation grows it, so the bytes are the
+ * same. */
+static __attribute__((noinline)) render_status_t prep_moved(const scene_t *s, render_frame_t *f, const scene_index_t *ix,
                                         const render_frame_t *old, uint8_t *moved,
                                         const xform_t *to_eye, const xform_t *from_eye, num_t pad,
                                         scene_normals_t *normals)
@@ -1104,25 +1164,7 @@ static __attribute__((noinline)) render_status_t prep_world_moved(const scene_t 
     }
     if (f->precision_lost)
         return RENDER_OK;
-    /* the boxes of the moved clusters and their ancestors, children first
-     * (larger indices), each grown as prep_cluster_tree grows it: by its
-     * children in falling index, then by its own primitives' box; its
-     * rectangles the whole screen's, as prep_cluster_tree makes them */
-    for (uint32_t c = s->cluster_count; c-- > 0;) {
-        if (!(moved[c] & PREP_BOX_MOVED))
-            continue;
-        render_cluster_t *cl = &f->clusters[c];
-        const scene_group_t *g = &ix->groups[c];
-        cl->bounds = prep_aabb_empty();
-        for (uint32_t k = g->child_count; k-- > 0;)
-            prep_aabb_add_box(&cl->bounds, &f->clusters[ix->child_list[g->first_child + k]].bounds);
-        prep_aabb_add_box(&cl->bounds, &cl->own_bounds);
-        cl->tree_x0 = cl->tree_y0 = 0;
-        cl->tree_x1 = f->width - 1;
-        cl->tree_y1 = f->height - 1;
-        if (c > 0)
-            moved[s->clusters[c].parent] |= PREP_BOX_MOVED;
-    }
+    prep_moved_boxes(s, f, ix, moved);
     const precision_pass_t pass = precision_check_begin(f);
     if (f->precision_lost || memcmp(&f->precision_extent, &old->precision_extent, sizeof(num_t)) != 0)
         return RENDER_OK;
@@ -1132,7 +1174,7 @@ static __attribute__((noinline)) render_status_t prep_world_moved(const scene_t 
         const scene_group_t *g = &ix->groups[c];
         precision_check_prims(f, ix, &pass, &ix->prim_list[g->first_prim], g->prim_count);
     }
-    f->world_kept = 2;
+    f->kept = 2;
     return precision_check_end(f);
 }
 
@@ -1148,7 +1190,9 @@ typedef struct {
     arena_t *arena;
     render_frame_t *f;
     render_frame_t old;     /* the frame before's header, when may_keep */
-    int may_keep;           /* its world part may be kept */
+    int may_keep;           /* what it prepared may be kept: its world
+                               part, or in eye space its primitives and
+                               boxes seen from the same camera */
     int world;              /* options.world_space */
     scene_index_t ix;
     scene_camera_t camera;
@@ -1156,7 +1200,7 @@ typedef struct {
     size_t mark;            /* the scratch below is released to here */
     xform_t *to_eye, *from_eye;
     scene_normals_t *normals;
-    uint8_t *moved;         /* world: which maps moved since the frame before */
+    uint8_t *moved;         /* which maps moved since the frame before */
     int camera_lost;
     const xform_t *root_to, *root_from; /* what the scene's root maps to and from */
 } prep_run_t;
@@ -1168,7 +1212,7 @@ typedef struct {
 static render_status_t prep_frame_alloc(prep_run_t *r, const render_frame_t *prev)
 {
     const scene_t *s = r->s;
-    r->may_keep = r->world && prev && prev->world && prev->scene == s;
+    r->may_keep = prev && prev->world == r->world && prev->scene == s;
     if (r->may_keep)
         r->old = *prev;
     render_frame_t *f = ARENA_NEW_ARRAY(r->arena, render_frame_t, 1);
@@ -1221,9 +1265,8 @@ static void prep_frame_header(prep_run_t *r)
  * normals (each written before it is read; each triangle keeps a copy of
  * its own), released before returning; not zero-filled: only the
  * clusters with maps of their own are written, and only they are read
- * (ix.groups[].maps_of).  World: which maps moved (allocated whether or
- * not it is asked, so that the block's high water is a fresh
- * preparation's). */
+ * (ix.groups[].maps_of).  Which maps moved (allocated whether or not it
+ * is asked, so that the block's high water is a fresh preparation's). */
 static render_status_t prep_scratch(prep_run_t *r)
 {
     const scene_t *s = r->s;
@@ -1232,8 +1275,8 @@ static render_status_t prep_scratch(prep_run_t *r)
     r->from_eye = ARENA_NEW_ARRAY_RAW(r->arena, xform_t, s->cluster_count);
     r->normals = ARENA_NEW_ARRAY_RAW(r->arena, scene_normals_t,
                                      s->normals_count ? s->normals_count : 1);
-    r->moved = r->world ? ARENA_NEW_ARRAY_RAW(r->arena, uint8_t, s->cluster_count) : NULL;
-    if (!r->to_eye || !r->from_eye || !r->normals || (r->world && !r->moved))
+    r->moved = ARENA_NEW_ARRAY_RAW(r->arena, uint8_t, s->cluster_count);
+    if (!r->to_eye || !r->from_eye || !r->normals || !r->moved)
         return RENDER_ERR_ARENA;
     return RENDER_OK;
 }
@@ -1258,28 +1301,53 @@ static render_status_t prep_view(prep_run_t *r, xform_t *world_to_eye, xform_t *
     return RENDER_OK;
 }
 
-/* World space: the frame before's world part kept whole when its keys
- * and precision extent are this frame's.  1 when kept (the lights are
- * this frame's), else 0. */
+/* Eye space: the camera at the frame before's index is this frame's, bit
+ * for bit (its primitives and boxes then depend on the cluster maps
+ * alone). */
+static int prep_same_view(const prep_run_t *r)
+{
+    if (r->old.frame_index == r->frame_index)
+        return 1;
+    scene_camera_t was;
+    scene_light_t lights[RENDER_MAX_LIGHTS];
+    prep_view_at(r->s, r->old.frame_index, &was, lights);
+    return memcmp(&was, &r->camera, sizeof was) == 0;
+}
+
+/* The frame before's kept part lost precision: its world part (world),
+ * or the frame (eye space). */
+static int prep_old_lost(const prep_run_t *r)
+{
+    return r->world ? r->old.world_lost : r->old.precision_lost;
+}
+
+/* The frame before's part kept whole when its keys are this frame's and
+ * its precision is whole; in world space, also when its precision extent
+ * (the eye's moved) is this frame's.  1 when kept (the lights are this
+ * frame's), else 0. */
 static int prep_keep_whole(prep_run_t *r)
 {
     const render_frame_t *old = &r->old;
     render_frame_t *f = r->f;
-    if (!r->may_keep || !prep_keys_same(r->s, old->frame_index, r->frame_index) ||
-        memcmp(&old->precision_extent,
-               &(num_t){precision_world_extent(old->world_box_extent, r->camera.eye)},
-               sizeof(num_t)))
+    if (!r->may_keep || !prep_keys_same(r->s, old->frame_index, r->frame_index))
+        return 0;
+    if (r->world ? memcmp(&old->precision_extent,
+                          &(num_t){precision_world_extent(old->world_box_extent, r->camera.eye)},
+                          sizeof(num_t)) != 0
+                 : prep_old_lost(r))
         return 0;
     arena_release_to(r->arena, r->mark);
-    f->world_kept = 1;
+    f->kept = 1;
     f->world_lost = old->world_lost;
-    f->precision_lost = old->world_lost || r->camera_lost;
+    f->precision_lost = r->world ? old->world_lost || r->camera_lost : old->precision_lost;
     f->span = old->span;
     f->detail_prim = old->detail_prim;
     f->detail_size = old->detail_size;
     f->detail_step = old->detail_step;
     f->world_box_extent = old->world_box_extent;
     f->precision_extent = old->precision_extent;
+    f->clip_coverage = old->clip_coverage;
+    f->clip_rows = old->clip_rows;
     prep_lights(r->s, r->lights, r->root_to, f);
     return 1;
 }
@@ -1309,14 +1377,14 @@ static render_status_t prep_whole(prep_run_t *r, num_t pad)
 }
 
 /* The maps of every cluster that has its own (a plain cluster's
- * primitives use its ancestor's, ix.groups[].maps_of); a world part that
- * may be kept learns which maps moved since the frame before and is
+ * primitives use its ancestor's, ix.groups[].maps_of); a frame before
+ * that may be kept tells which maps moved since, and this one is
  * prepared again in part where few did.  Then whole where it was not.
  * *out is the frame once the maps are made, whatever the status. */
 static render_status_t prep_maps_and_prims(prep_run_t *r, render_frame_t **out)
 {
     render_frame_t *f = r->f;
-    int partly = r->may_keep && !r->old.world_lost && r->old.detail_prim == RENDER_NO_PRIM;
+    int partly = r->may_keep && !prep_old_lost(r) && r->old.detail_prim == RENDER_NO_PRIM;
     render_status_t st = prep_cluster_maps(r->s, &r->ix, r->frame_index, r->root_to,
                                            r->root_from, partly ? &r->old.frame_index : NULL,
                                            r->moved, r->to_eye, r->from_eye, f);
@@ -1325,12 +1393,14 @@ static render_status_t prep_maps_and_prims(prep_run_t *r, render_frame_t **out)
     *out = f;
     num_t pad = scene_tolerance(r->s, NUM_C(RENDER_BOUNDS_PAD_VALUE));
     if (partly && !f->precision_lost) {
-        st = prep_world_moved(r->s, f, &r->ix, &r->old, r->moved, r->to_eye, r->from_eye, pad,
-                              r->normals);
-        if (st != RENDER_OK || f->world_kept) {
+        st = prep_moved(r->s, f, &r->ix, &r->old, r->moved, r->to_eye, r->from_eye, pad,
+                        r->normals);
+        if (st != RENDER_OK || f->kept) {
             arena_release_to(r->arena, r->mark);
-            f->world_lost = f->precision_lost;
-            f->precision_lost = f->precision_lost || r->camera_lost;
+            if (r->world) {
+                f->world_lost = f->precision_lost;
+                f->precision_lost = f->precision_lost || r->camera_lost;
+            }
             prep_lights(r->s, r->lights, r->root_to, f);
             return st;
         }
@@ -1359,6 +1429,8 @@ render_status_t render_prepare_again(const scene_t *s, uint32_t frame_index, are
     if (st != RENDER_OK)
         return st;
     prep_frame_header(&r);
+    if (r.may_keep && !r.world)
+        r.may_keep = prep_same_view(&r);
     st = prep_scratch(&r);
     if (st != RENDER_OK)
         return st;
@@ -1366,7 +1438,7 @@ render_status_t render_prepare_again(const scene_t *s, uint32_t frame_index, are
     st = prep_view(&r, &world_to_eye, &eye_to_world);
     if (st != RENDER_OK)
         return st;
-    if (r.world && prep_keep_whole(&r)) {
+    if (prep_keep_whole(&r)) {
         *out = r.f;
         return RENDER_OK;
     }

@@ -202,19 +202,21 @@ typedef struct {
      * eye_to_world; no screen rectangles (every one the whole screen:
      * render_area traces without clipping).  A frame prepared again over
      * the frame before of the same scene (render_prepare_again) keeps that
-     * frame's world part when no keyed cluster map differs and the extent
+     * frame's world part (eye space: its primitives and boxes, when the
+     * camera is the same) when no keyed cluster map differs and the extent
      * is the same; when some differ (at most half the primitives under
      * them) it prepares only those clusters' primitives again and the
      * boxes above them.  Either way: the bytes a fresh preparation writes
-     * but world_kept. */
+     * but kept. */
     uint8_t world;
     uint8_t world_lost;            /* world: precision_lost of the world part
                                       alone (the camera's added after) */
-    uint8_t world_kept;            /* world: 1 if this frame kept the world
-                                      part of the frame before, 2 if it
-                                      prepared only the clusters that moved
-                                      (a count for the trace, not part of
-                                      the picture) */
+    uint8_t kept;                  /* 1 if this frame kept the world part
+                                      (eye space: the primitives and boxes)
+                                      of the frame before, 2 if it prepared
+                                      only the clusters that moved (a count
+                                      for the trace, not part of the
+                                      picture) */
     vec3_t eye;                    /* world: the camera's position */
     xform_t eye_to_world;          /* world: the camera's axes as columns */
     num_t world_box_extent;        /* world: the largest coordinate magnitude

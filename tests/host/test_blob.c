@@ -472,12 +472,14 @@ static void test_blob_copy_frame_only(void)
     free(buf);
 }
 
-/* A world-space case: a scene (compiled at a quarter of its size) whose
- * frames are prepared in turn, and what each step should report. */
+/* A case of frames prepared over the ones before: a scene (compiled at a
+ * quarter of its size, in world space or not) whose frames are prepared
+ * in turn, and what each step should report. */
 typedef struct {
     const char *name;
     uint32_t frames[4];
     int want[4];
+    int world;
 } world_case_t;
 
 /* Runs check(case, compiled form, its length, the bytes its blob needs)
@@ -488,7 +490,8 @@ static void tb_world_cases(const world_case_t *cases, size_t n,
     for (size_t c = 0; c < n; c++) {
         size_t len, need;
         render_blob_error_t err;
-        uint8_t *buf = tb_compile_flags(cases[c].name, 4, SCN_OPT_WORLD_SPACE, &len);
+        uint8_t *buf = tb_compile_flags(cases[c].name, 4,
+                                        cases[c].world ? SCN_OPT_WORLD_SPACE : 0, &len);
         CHECK(buf != NULL);
         if (buf) {
             render_blob_status_t st = render_blob_bytes(buf, len, &need, &err);
@@ -520,9 +523,9 @@ static void world_keeps(const world_case_t *wc, const uint8_t *buf, size_t len, 
         CHECK_EQ_INT(render_blob_prepare(blob, wc->frames[k], need, &err), RENDER_BLOB_OK);
         if (!blob->frame)
             break;
-        CHECK(blob->frame->world == 1);
-        tb_world_step(wc, k, "world_kept", blob->frame->world_kept);
-        blob->frame->world_kept = 0;
+        CHECK(blob->frame->world == wc->world);
+        tb_world_step(wc, k, "kept", blob->frame->kept);
+        blob->frame->kept = 0;
         memcpy(saved, block, need);
         memset(block, 0, need);
         CHECK_EQ_INT(render_blob_build(buf, len, wc->frames[k], block, need, NULL, &alone, &err),
@@ -537,21 +540,40 @@ static void world_keeps(const world_case_t *wc, const uint8_t *buf, size_t len, 
 
 /* A world-space scene prepared frame after frame in one block, as the
  * DM does: a frame whose keyed cluster maps are those of the block's
- * frame before keeps its world part (world_kept 1; fly: only the camera
- * and lights move; the still demo prepared twice), one where a few
- * clusters moved prepares only them again (2; pendulum: the pendulum and
- * its bob, and the lamp until it stops), one where most moved is
- * prepared whole (0; anim: five of six primitives); either way the block
- * holds the bytes a fresh build there writes (but the frame's world_kept),
- * and renders the same. */
+ * frame before keeps its world part (kept 1; fly: only the camera and
+ * lights move; the still demo prepared twice), one where a few clusters
+ * moved prepares only them again (2; pendulum: the pendulum and its bob,
+ * and the lamp until it stops), one where most moved is prepared whole
+ * (0; anim: five of six primitives); either way the block holds the bytes
+ * a fresh build there writes (but the frame's kept), and renders the
+ * same. */
 static void test_blob_world_space_keeps(void)
 {
     static const world_case_t cases[] = {
-        {"fly", {0, 1, 2, 3}, {0, 1, 1, 1}},
-        {"demo", {0, 0, 0, 0}, {0, 1, 1, 1}},
-        {"anim", {0, 1, 2, 2}, {0, 0, 0, 1}},
-        {"pendulum", {0, 1, 2, 3}, {0, 2, 2, 2}},
-        {"pendulum", {3, 0, 0, 2}, {0, 2, 1, 2}},
+        {"fly", {0, 1, 2, 3}, {0, 1, 1, 1}, 1},
+        {"demo", {0, 0, 0, 0}, {0, 1, 1, 1}, 1},
+        {"anim", {0, 1, 2, 2}, {0, 0, 0, 1}, 1},
+        {"pendulum", {0, 1, 2, 3}, {0, 2, 2, 2}, 1},
+        {"pendulum", {3, 0, 0, 2}, {0, 2, 1, 2}, 1},
+    };
+    tb_world_cases(cases, sizeof cases / sizeof cases[0], world_keeps);
+}
+
+/* The same in eye space, the paper's: a frame seen from the camera of the
+ * block's frame before keeps its primitives and boxes when no keyed
+ * cluster map differs (kept 1; the still demo prepared again), prepares
+ * only the clusters that moved again where few did (2; pendulum, its
+ * camera still), and the whole frame when the camera moved (0; fly) or
+ * most clusters did (anim); the block holds the bytes a fresh build
+ * there writes, screen rectangles and clip coverage included. */
+static void test_blob_eye_space_keeps(void)
+{
+    static const world_case_t cases[] = {
+        {"fly", {0, 1, 2, 2}, {0, 0, 0, 1}, 0},
+        {"demo", {0, 0, 0, 0}, {0, 1, 1, 1}, 0},
+        {"anim", {0, 1, 2, 2}, {0, 0, 0, 1}, 0},
+        {"pendulum", {0, 1, 2, 3}, {0, 2, 2, 2}, 0},
+        {"pendulum", {3, 0, 0, 2}, {0, 2, 1, 2}, 0},
     };
     tb_world_cases(cases, sizeof cases / sizeof cases[0], world_keeps);
 }
@@ -626,9 +648,9 @@ static void world_forwards(const world_case_t *wc, const uint8_t *buf, size_t le
 static void test_blob_copy_world_header(void)
 {
     static const world_case_t cases[] = {
-        {"fly", {0, 1, 2, 3}, {0, 2, 2, 2}},
-        {"demo", {0, 0, 0, 0}, {0, 2, 2, 2}},
-        {"pendulum", {0, 1, 2, 3}, {0, 1, 1, 1}},
+        {"fly", {0, 1, 2, 3}, {0, 2, 2, 2}, 1},
+        {"demo", {0, 0, 0, 0}, {0, 2, 2, 2}, 1},
+        {"pendulum", {0, 1, 2, 3}, {0, 1, 1, 1}, 1},
     };
     tb_world_cases(cases, sizeof cases / sizeof cases[0], world_forwards);
 }
@@ -645,6 +667,7 @@ int main(void)
     RUN(test_blob_load_then_prepare);
     RUN(test_blob_copy_frame_only);
     RUN(test_blob_world_space_keeps);
+    RUN(test_blob_eye_space_keeps);
     RUN(test_blob_copy_world_header);
     RUN(test_blob_keyed_range);
     return check_exit();
