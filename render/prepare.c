@@ -550,8 +550,10 @@ static inline num_t prep_corner(const render_frame_t *f, num_t v, num_t z, int x
  * give the values the four (x, z) pairs' eight would (the DM projects
  * every cluster of every frame), and they meet integers only through
  * num_floor_int.  Any other box takes all eight. */
-static int prep_screen_extremes(const render_frame_t *f, const aabb_t *b, num_t *x0, num_t *x1,
-                                num_t *y0, num_t *y1)
+static inline __attribute__((always_inline)) int prep_screen_extremes(const render_frame_t *f,
+                                                                     const aabb_t *b, num_t *x0,
+                                                                     num_t *x1, num_t *y0,
+                                                                     num_t *y1)
 {
     int sat = 0;
     if (!num_is_sat(b->lo.x) && !num_is_sat(b->hi.x) && !num_is_sat(b->lo.y) &&
@@ -581,7 +583,8 @@ static int prep_screen_extremes(const render_frame_t *f, const aabb_t *b, num_t 
     return 1;
 }
 
-static void prep_screen_rect(const render_frame_t *f, render_cluster_t *c)
+static inline __attribute__((always_inline)) void prep_screen_rect(const render_frame_t *f,
+                                                                  render_cluster_t *c)
 {
     const aabb_t *b = &c->own_bounds;
     if (prep_aabb_is_empty(b)) {
