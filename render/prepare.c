@@ -895,9 +895,10 @@ size_t render_prepare_frame_bytes_layout(const scene_t *s, const render_layout_t
     size_t normals = s->normals_count ? s->normals_count : 1;
     size_t n = lay->frame + lay->frame_cluster * (size_t)s->cluster_count + lay->frame_prim * prims +
                lay->num * comps;
-    /* (and a byte a cluster: which maps moved) */
-    size_t scratch = (2 * lay->xform + 1) * (size_t)s->cluster_count + lay->normals * normals;
-    return n + scratch + 8 * ARENA_MAX_ALIGN; /* 8 allocations, each padded at most that */
+    /* (and a byte and a word a cluster: which maps and clusters moved) */
+    size_t scratch = (2 * lay->xform + 1 + sizeof(uint32_t)) * (size_t)s->cluster_count +
+                     lay->normals * normals;
+    return n + scratch + 9 * ARENA_MAX_ALIGN; /* 9 allocations, each padded at most that */
 }
 
 size_t render_prepare_bytes_layout(const scene_t *s, const render_layout_t *lay)
@@ -913,10 +914,28 @@ size_t render_prepare_bytes(const scene_t *s)
 }
 
 /* moved[] of render_prepare_again, a byte a cluster: its maps moved (a
- * cluster with maps of its own, prep_cluster_maps), its box moved (its
- * primitives' or a descendant's: prep_moved). */
+ * cluster with maps of its own, prep_cluster_maps), its own primitives
+ * moved (a cluster of such a one's maps: prep_moved_members), its box
+ * moved (its own primitives' or a descendant's: prep_moved_ancestors). */
 #define PREP_MAPS_MOVED 1u
-#define PREP_BOX_MOVED 2u
+#define PREP_OWN_MOVED 2u
+#define PREP_BOX_MOVED 4u
+
+/* What moved since the frame before (prep_cluster_maps, prep_moved). */
+typedef struct {
+    uint32_t before; /* the frame before's index */
+    uint8_t *moved;  /* a byte a cluster, PREP_*_MOVED, zeroed before */
+    uint32_t *order; /* a cluster_count array: the clusters with maps of
+                        their own that moved (heads of it), then the
+                        clusters of their maps (prep_moved_members) */
+    uint32_t heads;  /* how many of order are those */
+} prep_moves_t;
+
+/* The scratch maps a primitive is prepared with (prep_one_prim). */
+typedef struct {
+    const xform_t *to_eye, *from_eye;
+    scene_normals_t *normals;
+} prep_run_maps_t;
 
 /* A keyed cluster's maps to its parent and back at frame_index, into
  * maps; *key its key's map.  local_inv: its local map's inverse (the
@@ -938,14 +957,16 @@ static render_status_t prep_keyed_maps(const scene_t *s, const scene_cluster_t *
 /* The maps of every cluster that has its own (to_eye[i], from_eye[i]
  * for ix->groups[i].maps_of == i), composed from root_to and root_from
  * and each one's maps to its parent and back (a cluster without keys has
- * them in the index); f->precision_lost set when one saturates.  With
- * before (a frame index): moved[i] set for each of them whose map differs
- * from its map at that frame, its own key's or an ancestor's. */
+ * them in the index); f->precision_lost set when one saturates.  With mv
+ * (not NULL): mv->moved[i] set for each of them whose map differs from
+ * its map at frame mv->before, its own key's or an ancestor's, and listed
+ * in mv->order (rising index). */
 static render_status_t prep_cluster_maps(const scene_t *s, const scene_index_t *ix, uint32_t frame_index,
                                          const xform_t *root_to, const xform_t *root_from,
-                                         const uint32_t *before, uint8_t *moved, xform_t *to_eye,
-                                         xform_t *from_eye, render_frame_t *f)
+                                         prep_moves_t *mv, xform_t *to_eye, xform_t *from_eye,
+                                         render_frame_t *f)
 {
+    uint8_t *moved = mv ? mv->moved : NULL;
     const xform_t *parent_maps = ix->parent_maps; /* the next cluster's pair */
     for (uint32_t i = 0; i < s->cluster_count; i++) {
         if (ix->groups[i].maps_of != i)
@@ -967,12 +988,14 @@ static render_status_t prep_cluster_maps(const scene_t *s, const scene_index_t *
         from_eye[i] = xform_compose(&parent[1], eye_to_parent);
         if (xform_is_sat(&to_eye[i]) || xform_is_sat(&from_eye[i]))
             f->precision_lost = 1;
-        if (before) {
+        if (moved) {
             moved[i] = i > 0 ? moved[pm] & PREP_MAPS_MOVED : 0;
             if (!moved[i] && c->key_count) {
-                xform_t was = prep_key_xform(s, c, *before);
+                xform_t was = prep_key_xform(s, c, mv->before);
                 moved[i] = memcmp(&was, &key, sizeof key) != 0 ? PREP_MAPS_MOVED : 0;
             }
+            if (moved[i])
+                mv->order[mv->heads++] = i;
         }
     }
     return RENDER_OK;
@@ -1042,11 +1065,14 @@ static inline __attribute__((always_inline)) void prep_rect_cover(const render_c
 }
 
 /* The frame's clip coverage (eye space) from the pixels and rows the
- * clusters' own rectangles cover: covered / pixels and rows / height,
- * rounded up, in 32 bits (covered < 2^32 * pixels would need 2^32
- * clusters over every pixel). */
+ * clusters' own rectangles cover, kept in f->clip_covered and
+ * clip_covered_rows: covered / pixels and rows / height, rounded up, in
+ * 32 bits (covered < 2^32 * pixels would need 2^32 clusters over every
+ * pixel). */
 static void prep_clip_coverage_set(render_frame_t *f, uint64_t covered, uint64_t rows)
 {
+    f->clip_covered = covered;
+    f->clip_covered_rows = rows;
     uint32_t pixels = (uint32_t)f->width * f->height;
     uint64_t mean = (covered + pixels - 1) / pixels;
     f->clip_coverage = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
@@ -1083,98 +1109,161 @@ static void prep_cluster_tree(const scene_t *s, render_frame_t *f, int world)
         prep_clip_coverage_set(f, covered, rows);
 }
 
-/* The boxes of the clusters marked PREP_BOX_MOVED (their own boxes made
- * again) and of their ancestors, children first (larger indices), each
- * grown as prep_cluster_tree grows it: by its children in falling index,
- * then by its own primitives' box.  Its rectangles: world, the whole
- * screen's, as prep_cluster_tree makes them; eye space, its own box's
- * (prep_screen_rect) and the tree rectangle over it and its children's. */
-static void prep_moved_boxes(const scene_t *s, render_frame_t *f, const scene_index_t *ix,
-                             uint8_t *moved)
+/* The clusters of the moved heads' maps (each head, and its descendants
+ * through plain clusters, which use its maps: ix->groups[].maps_of) into
+ * mv->order after the heads, each marked PREP_OWN_MOVED; *n how many in
+ * all.  Returns their primitives. */
+static uint64_t prep_moved_members(const scene_index_t *ix, prep_moves_t *mv, uint32_t *n)
 {
-    for (uint32_t c = s->cluster_count; c-- > 0;) {
-        if (!(moved[c] & PREP_BOX_MOVED))
-            continue;
-        render_cluster_t *cl = &f->clusters[c];
+    uint64_t count = 0;
+    uint32_t end = mv->heads;
+    for (uint32_t q = 0; q < end; q++) { /* the list is its own queue */
+        uint32_t c = mv->order[q];
         const scene_group_t *g = &ix->groups[c];
-        cl->bounds = prep_aabb_empty();
-        for (uint32_t k = g->child_count; k-- > 0;)
-            prep_aabb_add_box(&cl->bounds, &f->clusters[ix->child_list[g->first_child + k]].bounds);
-        prep_aabb_add_box(&cl->bounds, &cl->own_bounds);
-        if (f->world) {
-            cl->tree_x0 = cl->tree_y0 = 0;
-            cl->tree_x1 = f->width - 1;
-            cl->tree_y1 = f->height - 1;
-        } else {
-            prep_screen_rect(f, cl);
-            cl->tree_x0 = cl->tree_y0 = 1;
-            cl->tree_x1 = cl->tree_y1 = 0;
-            for (uint32_t k = 0; k < g->child_count; k++) {
-                const render_cluster_t *kid = &f->clusters[ix->child_list[g->first_child + k]];
-                prep_tree_rect_add(cl, kid->tree_x0, kid->tree_y0, kid->tree_x1, kid->tree_y1);
-            }
-            prep_tree_rect_add(cl, cl->screen_x0, cl->screen_y0, cl->screen_x1, cl->screen_y1);
+        mv->moved[c] |= PREP_OWN_MOVED;
+        count += g->prim_count;
+        for (uint32_t k = 0; k < g->child_count; k++) {
+            uint32_t kid = ix->child_list[g->first_child + k];
+            if (ix->groups[kid].maps_of == g->maps_of)
+                mv->order[end++] = kid;
         }
-        if (c > 0)
-            moved[s->clusters[c].parent] |= PREP_BOX_MOVED;
     }
-    if (f->world)
+    *n = end;
+    return count;
+}
+
+/* Each of the n clusters of mv->order and its ancestors marked
+ * PREP_BOX_MOVED (a walk up stops at one marked already). */
+static void prep_moved_ancestors(const scene_t *s, prep_moves_t *mv, uint32_t n)
+{
+    for (uint32_t q = 0; q < n; q++)
+        for (uint32_t c = mv->order[q]; !(mv->moved[c] & PREP_BOX_MOVED); c = s->clusters[c].parent) {
+            mv->moved[c] |= PREP_BOX_MOVED;
+            if (c == 0)
+                break;
+        }
+}
+
+/* Cluster c's box, grown as prep_cluster_tree grows it: by its children
+ * in falling index, then by its own primitives' box; its rectangles:
+ * world, the whole screen's, as prep_cluster_tree makes them; eye space,
+ * its own box's (prep_screen_rect, made again when its own primitives
+ * moved, the pixels and rows it covers taken off and added back) and the
+ * tree rectangle over it and its children's. */
+static void prep_moved_cluster(render_frame_t *f, const scene_index_t *ix, uint32_t c,
+                               int own_moved)
+{
+    render_cluster_t *cl = &f->clusters[c];
+    const scene_group_t *g = &ix->groups[c];
+    cl->bounds = prep_aabb_empty();
+    for (uint32_t k = g->child_count; k-- > 0;)
+        prep_aabb_add_box(&cl->bounds, &f->clusters[ix->child_list[g->first_child + k]].bounds);
+    prep_aabb_add_box(&cl->bounds, &cl->own_bounds);
+    if (f->world) {
+        cl->tree_x0 = cl->tree_y0 = 0;
+        cl->tree_x1 = f->width - 1;
+        cl->tree_y1 = f->height - 1;
         return;
-    uint64_t covered = 0, rows = 0;
-    for (uint32_t c = 0; c < s->cluster_count; c++)
-        prep_rect_cover(&f->clusters[c], &covered, &rows);
-    prep_clip_coverage_set(f, covered, rows);
+    }
+    if (own_moved) {
+        uint64_t was = 0, was_rows = 0, now = 0, now_rows = 0;
+        prep_rect_cover(cl, &was, &was_rows);
+        prep_screen_rect(f, cl);
+        prep_rect_cover(cl, &now, &now_rows);
+        f->clip_covered += now - was;
+        f->clip_covered_rows += now_rows - was_rows;
+    }
+    cl->tree_x0 = cl->tree_y0 = 1;
+    cl->tree_x1 = cl->tree_y1 = 0;
+    for (uint32_t k = 0; k < g->child_count; k++) {
+        const render_cluster_t *kid = &f->clusters[ix->child_list[g->first_child + k]];
+        prep_tree_rect_add(cl, kid->tree_x0, kid->tree_y0, kid->tree_x1, kid->tree_y1);
+    }
+    prep_tree_rect_add(cl, cl->screen_x0, cl->screen_y0, cl->screen_x1, cl->screen_y1);
+}
+
+/* The clusters marked PREP_BOX_MOVED made again (prep_moved_cluster),
+ * children first: a walk from the root down the marked ones, each done
+ * once its marked children are; then the clip coverage (eye space). */
+static void prep_moved_boxes(render_frame_t *f, const scene_index_t *ix, const uint8_t *moved)
+{
+    struct {
+        uint32_t c, next; /* the cluster, and its next child to look at */
+    } stack[RENDER_MAX_CLUSTER_DEPTH + 1];
+    int top = 0;
+    stack[0].c = 0;
+    stack[0].next = 0;
+    while (top >= 0) {
+        uint32_t c = stack[top].c;
+        const scene_group_t *g = &ix->groups[c];
+        if (stack[top].next < g->child_count) {
+            uint32_t kid = ix->child_list[g->first_child + stack[top].next++];
+            if ((moved[kid] & PREP_BOX_MOVED) && top < RENDER_MAX_CLUSTER_DEPTH) {
+                stack[++top].c = kid;
+                stack[top].next = 0;
+            }
+            continue;
+        }
+        prep_moved_cluster(f, ix, c, moved[c] & PREP_OWN_MOVED);
+        top--;
+    }
+    if (!f->world)
+        prep_clip_coverage_set(f, f->clip_covered, f->clip_covered_rows);
+}
+
+/* The primitives of the n clusters of order (their own boxes made again
+ * with them); 1 when one saturated (f->precision_lost). */
+static int prep_moved_prims(const scene_t *s, render_frame_t *f, const scene_index_t *ix,
+                            const uint32_t *order, uint32_t n, const prep_run_maps_t *maps,
+                            num_t pad)
+{
+    f->detail_prim = RENDER_NO_PRIM;
+    for (uint32_t q = 0; q < n; q++) {
+        uint32_t c = order[q];
+        const scene_group_t *g = &ix->groups[c];
+        for (uint32_t k = 0; k < g->prim_count; k++) {
+            uint32_t i = ix->prim_list[g->first_prim + k];
+            memset(&f->prims[i], 0, sizeof f->prims[i]);
+            prep_one_prim(s, i, f, ix, maps->to_eye, maps->from_eye, pad, maps->normals);
+        }
+        prep_own_bounds(f, ix, c);
+    }
+    return f->precision_lost;
 }
 
 /* A frame over the frame before (old, at the same address, prepared
  * whole: no saturation, no detail refused; in eye space seen from the
  * same camera), when at most half the primitives moved: only the
- * primitives of clusters whose maps moved are prepared again, then the
- * boxes of those clusters and their ancestors (prep_moved_boxes), and the
- * precision checks of the primitives prepared.  Sets f->kept = 2 and
- * returns precision_check's status when the extent came out as old's;
- * leaves kept 0 otherwise (more moved, the extent moved or a bound
+ * primitives of the clusters whose maps moved (prep_moved_members) are
+ * prepared again, then the boxes of those clusters and their ancestors
+ * (prep_moved_boxes), and the precision checks of the primitives
+ * prepared: work for what moved, not for every cluster.  Sets f->kept = 2
+ * and returns precision_check's status when the extent came out as
+ * old's; leaves kept 0 otherwise (more moved, the extent moved or a bound
  * saturated), and the caller prepares the frame whole.  Every box is
- * grown in the order a whole preparation grows it, so the bytes are the
- * same. */
-static __attribute__((noinline)) render_status_t prep_moved(const scene_t *s, render_frame_t *f, const scene_index_t *ix,
-                                        const render_frame_t *old, uint8_t *moved,
-                                        const xform_t *to_eye, const xform_t *from_eye, num_t pad,
-                                        scene_normals_t *normals)
+ * grown in the order a whole preparation grows it, and the primitives
+ * and their checks do not depend on the order they come in, so the bytes
+ * are the same. */
+static __attribute__((noinline)) render_status_t prep_moved(const scene_t *s, render_frame_t *f,
+                                                            const scene_index_t *ix,
+                                                            const render_frame_t *old,
+                                                            prep_moves_t *mv,
+                                                            const prep_run_maps_t *maps, num_t pad)
 {
-    /* which clusters' primitives moved (their maps' group), and how many */
-    uint64_t count = 0;
-    for (uint32_t c = 0; c < s->cluster_count; c++) {
-        uint32_t m = ix->groups[c].maps_of;
-        int mv = moved[m] & PREP_MAPS_MOVED; /* m <= c: set already */
-        moved[c] = mv ? (uint8_t)((m == c ? PREP_MAPS_MOVED : 0) | PREP_BOX_MOVED) : 0;
-        if (mv)
-            count += ix->groups[c].prim_count;
-    }
-    if (2 * count > s->prim_count) /* cheaper whole */
+    uint32_t n;
+    if (2 * prep_moved_members(ix, mv, &n) > s->prim_count) /* cheaper whole */
         return RENDER_OK;
-    f->detail_prim = RENDER_NO_PRIM;
-    for (uint32_t c = 0; c < s->cluster_count; c++) {
-        if (!(moved[c] & PREP_BOX_MOVED))
-            continue;
-        const scene_group_t *g = &ix->groups[c];
-        for (uint32_t k = 0; k < g->prim_count; k++) {
-            uint32_t i = ix->prim_list[g->first_prim + k];
-            memset(&f->prims[i], 0, sizeof f->prims[i]);
-            prep_one_prim(s, i, f, ix, to_eye, from_eye, pad, normals);
-        }
-        prep_own_bounds(f, ix, c);
-    }
-    if (f->precision_lost)
+    if (prep_moved_prims(s, f, ix, mv->order, n, maps, pad))
         return RENDER_OK;
-    prep_moved_boxes(s, f, ix, moved);
+    prep_moved_ancestors(s, mv, n);
+    f->clip_covered = old->clip_covered;
+    f->clip_covered_rows = old->clip_covered_rows;
+    prep_moved_boxes(f, ix, mv->moved);
     const precision_pass_t pass = precision_check_begin(f);
     if (f->precision_lost || memcmp(&f->precision_extent, &old->precision_extent, sizeof(num_t)) != 0)
         return RENDER_OK;
-    for (uint32_t c = 0; c < s->cluster_count; c++) {
-        if (!(moved[ix->groups[c].maps_of] & PREP_MAPS_MOVED)) /* not prepared again */
-            continue;
-        const scene_group_t *g = &ix->groups[c];
+    for (uint32_t q = 0; q < n; q++) {
+        const scene_group_t *g = &ix->groups[mv->order[q]];
         precision_check_prims(f, ix, &pass, &ix->prim_list[g->first_prim], g->prim_count);
     }
     f->kept = 2;
@@ -1204,6 +1293,7 @@ typedef struct {
     xform_t *to_eye, *from_eye;
     scene_normals_t *normals;
     uint8_t *moved;         /* which maps moved since the frame before */
+    uint32_t *order;        /* and which clusters (prep_moves_t) */
     int camera_lost;
     const xform_t *root_to, *root_from; /* what the scene's root maps to and from */
 } prep_run_t;
@@ -1268,8 +1358,9 @@ static void prep_frame_header(prep_run_t *r)
  * normals (each written before it is read; each triangle keeps a copy of
  * its own), released before returning; not zero-filled: only the
  * clusters with maps of their own are written, and only they are read
- * (ix.groups[].maps_of).  Which maps moved (allocated whether or not it
- * is asked, so that the block's high water is a fresh preparation's). */
+ * (ix.groups[].maps_of).  Which maps and clusters moved (allocated
+ * whether or not it is asked, so that the block's high water is a fresh
+ * preparation's). */
 static render_status_t prep_scratch(prep_run_t *r)
 {
     const scene_t *s = r->s;
@@ -1279,7 +1370,8 @@ static render_status_t prep_scratch(prep_run_t *r)
     r->normals = ARENA_NEW_ARRAY_RAW(r->arena, scene_normals_t,
                                      s->normals_count ? s->normals_count : 1);
     r->moved = ARENA_NEW_ARRAY_RAW(r->arena, uint8_t, s->cluster_count);
-    if (!r->to_eye || !r->from_eye || !r->normals || !r->moved)
+    r->order = ARENA_NEW_ARRAY_RAW(r->arena, uint32_t, s->cluster_count);
+    if (!r->to_eye || !r->from_eye || !r->normals || !r->moved || !r->order)
         return RENDER_ERR_ARENA;
     return RENDER_OK;
 }
@@ -1351,6 +1443,8 @@ static int prep_keep_whole(prep_run_t *r)
     f->precision_extent = old->precision_extent;
     f->clip_coverage = old->clip_coverage;
     f->clip_rows = old->clip_rows;
+    f->clip_covered = old->clip_covered;
+    f->clip_covered_rows = old->clip_covered_rows;
     prep_lights(r->s, r->lights, r->root_to, f);
     return 1;
 }
@@ -1388,16 +1482,19 @@ static render_status_t prep_maps_and_prims(prep_run_t *r, render_frame_t **out)
 {
     render_frame_t *f = r->f;
     int partly = r->may_keep && !prep_old_lost(r) && r->old.detail_prim == RENDER_NO_PRIM;
+    prep_moves_t mv = {r->old.frame_index, r->moved, r->order, 0};
+    if (partly)
+        memset(r->moved, 0, r->s->cluster_count);
     render_status_t st = prep_cluster_maps(r->s, &r->ix, r->frame_index, r->root_to,
-                                           r->root_from, partly ? &r->old.frame_index : NULL,
-                                           r->moved, r->to_eye, r->from_eye, f);
+                                           r->root_from, partly ? &mv : NULL, r->to_eye,
+                                           r->from_eye, f);
     if (st != RENDER_OK)
         return st;
     *out = f;
     num_t pad = scene_tolerance(r->s, NUM_C(RENDER_BOUNDS_PAD_VALUE));
     if (partly && !f->precision_lost) {
-        st = prep_moved(r->s, f, &r->ix, &r->old, r->moved, r->to_eye, r->from_eye, pad,
-                        r->normals);
+        const prep_run_maps_t maps = {r->to_eye, r->from_eye, r->normals};
+        st = prep_moved(r->s, f, &r->ix, &r->old, &mv, &maps, pad);
         if (st != RENDER_OK || f->kept) {
             arena_release_to(r->arena, r->mark);
             if (r->world) {

@@ -197,6 +197,10 @@ typedef struct {
                                       of the paper's Y list for an area of
                                       one row.  The two choose how an NC
                                       clips (render/clip.h) */
+    uint64_t clip_covered;         /* the pixels, and the rows, under the */
+    uint64_t clip_covered_rows;    /* clusters' own screen rectangles: the
+                                      sums behind the two (a later frame
+                                      updates them by its moved clusters) */
     /* options.world_space: primitives, boxes and lights stay in world
      * coordinates (the world part), camera rays start at eye and turn by
      * eye_to_world; no screen rectangles (every one the whole screen:
