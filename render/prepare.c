@@ -921,6 +921,10 @@ size_t render_prepare_bytes(const scene_t *s)
 #define PREP_OWN_MOVED 2u
 #define PREP_BOX_MOVED 4u
 
+/* Clusters a frame prepared again in part may make again however few
+ * the scene has (prep_moved_members): a small scene's moving parts. */
+#define PREP_MOVED_CLUSTERS 256u
+
 /* What moved since the frame before (prep_cluster_maps, prep_moved). */
 typedef struct {
     uint32_t before; /* the frame before's index */
@@ -1111,16 +1115,20 @@ static void prep_cluster_tree(const scene_t *s, render_frame_t *f, int world)
 
 /* The clusters of the moved heads' maps (each head, and its descendants
  * through plain clusters, which use its maps: ix->groups[].maps_of) into
- * mv->order after the heads, each marked PREP_OWN_MOVED; *n how many in
- * all.  Returns their primitives. */
-static uint64_t prep_moved_members(const scene_index_t *ix, prep_moves_t *mv, uint32_t *n)
+ * mv->order after the heads; *n how many in all.  1 when their primitives are at most half the scene's, and they
+ * at most a quarter of its clusters or PREP_MOVED_CLUSTERS (a frame where
+ * more moved is cheaper whole: the walk stops there), else 0. */
+static int prep_moved_members(const scene_t *s, const scene_index_t *ix, prep_moves_t *mv,
+                              uint32_t *n)
 {
-    uint64_t count = 0;
-    uint32_t end = mv->heads;
+    uint32_t count = 0, most = s->prim_count / 2; /* (a count of primitives fits) */
+    uint32_t end = mv->heads, clusters = s->cluster_count / 4;
+    if (clusters < PREP_MOVED_CLUSTERS)
+        clusters = PREP_MOVED_CLUSTERS;
     for (uint32_t q = 0; q < end; q++) { /* the list is its own queue */
-        uint32_t c = mv->order[q];
-        const scene_group_t *g = &ix->groups[c];
-        mv->moved[c] |= PREP_OWN_MOVED;
+        if (count > most || q > clusters)
+            return 0;
+        const scene_group_t *g = &ix->groups[mv->order[q]];
         count += g->prim_count;
         for (uint32_t k = 0; k < g->child_count; k++) {
             uint32_t kid = ix->child_list[g->first_child + k];
@@ -1129,7 +1137,7 @@ static uint64_t prep_moved_members(const scene_index_t *ix, prep_moves_t *mv, ui
         }
     }
     *n = end;
-    return count;
+    return count <= most;
 }
 
 /* Each of the n clusters of mv->order and its ancestors marked
@@ -1211,15 +1219,16 @@ static void prep_moved_boxes(render_frame_t *f, const scene_index_t *ix, const u
         prep_clip_coverage_set(f, f->clip_covered, f->clip_covered_rows);
 }
 
-/* The primitives of the n clusters of order (their own boxes made again
- * with them); 1 when one saturated (f->precision_lost). */
+/* The primitives of the n clusters of mv->order (their own boxes made
+ * again with them, each marked PREP_OWN_MOVED); 1 when one saturated
+ * (f->precision_lost). */
 static int prep_moved_prims(const scene_t *s, render_frame_t *f, const scene_index_t *ix,
-                            const uint32_t *order, uint32_t n, const prep_run_maps_t *maps,
-                            num_t pad)
+                            prep_moves_t *mv, uint32_t n, const prep_run_maps_t *maps, num_t pad)
 {
     f->detail_prim = RENDER_NO_PRIM;
     for (uint32_t q = 0; q < n; q++) {
-        uint32_t c = order[q];
+        uint32_t c = mv->order[q];
+        mv->moved[c] |= PREP_OWN_MOVED;
         const scene_group_t *g = &ix->groups[c];
         for (uint32_t k = 0; k < g->prim_count; k++) {
             uint32_t i = ix->prim_list[g->first_prim + k];
@@ -1251,9 +1260,9 @@ static __attribute__((noinline)) render_status_t prep_moved(const scene_t *s, re
                                                             const prep_run_maps_t *maps, num_t pad)
 {
     uint32_t n;
-    if (2 * prep_moved_members(ix, mv, &n) > s->prim_count) /* cheaper whole */
+    if (!prep_moved_members(s, ix, mv, &n)) /* cheaper whole */
         return RENDER_OK;
-    if (prep_moved_prims(s, f, ix, mv->order, n, maps, pad))
+    if (prep_moved_prims(s, f, ix, mv, n, maps, pad))
         return RENDER_OK;
     prep_moved_ancestors(s, mv, n);
     f->clip_covered = old->clip_covered;
