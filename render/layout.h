@@ -34,7 +34,7 @@ typedef struct {
 } render_layout_t;
 
 /* The board's record sizes, in the order of render_layout_t. */
-#define RENDER_BOARD_BLOB 268
+#define RENDER_BOARD_BLOB 276
 #define RENDER_BOARD_LIGHT 48
 #define RENDER_BOARD_MATERIAL 52
 #define RENDER_BOARD_MAP 24

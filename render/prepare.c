@@ -704,9 +704,9 @@ size_t render_scene_index_bytes_layout(const scene_t *s, const render_layout_t *
     /* parent_maps: a shape's bound (scene_load_shape_maps), or 2 a cluster */
     size_t maps = s->index.parent_map_count ? s->index.parent_map_count : 2 * c;
     return sizeof(scene_group_t) * c + sizeof(uint32_t) * (c + p + 3 * n) + lay->num * p + /* kept */
-           lay->xform * maps +
+           lay->xform * maps + sizeof(uint32_t) * ((maps + 1) / 2) + /* own_list */
            c + n + 2 * sizeof(uint32_t) * PREP_SHARE_CACHE + /* scratch */
-           9 * ARENA_MAX_ALIGN; /* 9 allocations, each padded at most that */
+           10 * ARENA_MAX_ALIGN; /* 10 allocations, each padded at most that */
 }
 
 size_t render_scene_index_bytes(const scene_t *s)
@@ -777,8 +777,8 @@ static render_status_t prep_index_triangles(const scene_t *s, const scene_group_
 }
 
 /* What of each cluster's maps stays from frame to frame (scene_index_t's
- * parent_maps), for the clusters with maps of their own (own of them),
- * into the arena.  The same operations on the same
+ * parent_maps), for the clusters with maps of their own (own of them,
+ * listed in own_list), into the arena.  The same operations on the same
  * operands as prep_cluster_maps would do each frame, so the same bits.
  * RENDER_OK, or precision_invert's error for a local map it cannot
  * invert. */
@@ -786,7 +786,8 @@ static render_status_t prep_index_maps(const scene_t *s, const scene_group_t *g,
                                        arena_t *arena, scene_index_t *out)
 {
     xform_t *maps = ARENA_NEW_ARRAY(arena, xform_t, own ? 2 * (size_t)own : 1);
-    if (!maps)
+    uint32_t *list = ARENA_NEW_ARRAY(arena, uint32_t, own ? own : 1);
+    if (!maps || !list)
         return RENDER_ERR_ARENA;
     const xform_t id = xform_identity(); /* the key of a cluster without keys */
     xform_t id_inv;
@@ -796,6 +797,7 @@ static render_status_t prep_index_maps(const scene_t *s, const scene_group_t *g,
             continue;
         const scene_cluster_t *c = &s->clusters[i];
         xform_t *m = &maps[n];
+        list[n / 2] = i;
         n += 2;
         xform_t local_inv;
         st = precision_invert(&c->local, &local_inv);
@@ -808,6 +810,8 @@ static render_status_t prep_index_maps(const scene_t *s, const scene_group_t *g,
     }
     out->parent_maps = maps;
     out->parent_map_count = own ? 2 * own : 1;
+    out->own_list = list;
+    out->own_count = own;
     return st;
 }
 
@@ -971,13 +975,10 @@ static render_status_t prep_cluster_maps(const scene_t *s, const scene_index_t *
                                          render_frame_t *f)
 {
     uint8_t *moved = mv ? mv->moved : NULL;
-    const xform_t *parent_maps = ix->parent_maps; /* the next cluster's pair */
-    for (uint32_t i = 0; i < s->cluster_count; i++) {
-        if (ix->groups[i].maps_of != i)
-            continue;
+    for (uint32_t k = 0; k < ix->own_count; k++) {
+        uint32_t i = ix->own_list[k];
         const scene_cluster_t *c = &s->clusters[i];
-        const xform_t *parent = parent_maps;
-        parent_maps += 2;
+        const xform_t *parent = &ix->parent_maps[2 * k];
         xform_t key, keyed[2];
         if (c->key_count) {
             render_status_t st = prep_keyed_maps(s, c, frame_index, &parent[1], &key, keyed);

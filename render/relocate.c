@@ -60,12 +60,13 @@ static void reloc_scene(reloc_t *r, scene_t *s)
     scene_view_key_t *view_keys = RELOC(r, s->view_keys, s->view_key_count, "scene.view_keys");
     /* the index (render_scene_index): all its arrays or none */
     scene_index_t ix = {.parent_map_count = s->index.parent_map_count,
+                        .own_count = s->index.own_count,
                         .pointer_lo = s->index.pointer_lo,
                         .pointer_hi = s->index.pointer_hi,
                         .keyed_lo = s->index.keyed_lo,
                         .keyed_hi = s->index.keyed_hi};
     if (s->index.groups || s->index.child_list || s->index.prim_list || s->index.normal_src ||
-        s->index.uv_spread || s->index.parent_maps) {
+        s->index.uv_spread || s->index.parent_maps || s->index.own_list) {
         ix.groups = RELOC(r, s->index.groups, s->cluster_count, "scene.index.groups");
         ix.child_list = RELOC(r, s->index.child_list, s->cluster_count, "scene.index.child_list");
         ix.prim_list = RELOC(r, s->index.prim_list, s->prim_count, "scene.index.prim_list");
@@ -74,9 +75,11 @@ static void reloc_scene(reloc_t *r, scene_t *s)
         ix.uv_spread = RELOC(r, s->index.uv_spread, s->prim_count, "scene.index.uv_spread");
         ix.parent_maps = RELOC(r, s->index.parent_maps, s->index.parent_map_count,
                                "scene.index.parent_maps");
+        ix.own_list = RELOC(r, s->index.own_list, s->index.own_count ? s->index.own_count : 1,
+                            "scene.index.own_list");
         /* an empty array is still an allocation: none may be NULL */
         if (!r->bad && (!ix.groups || !ix.child_list || !ix.prim_list || !ix.normal_src ||
-                        !ix.uv_spread || !ix.parent_maps))
+                        !ix.uv_spread || !ix.parent_maps || !ix.own_list))
             r->bad = "scene.index (part of it NULL)";
     }
     if (r->bad)

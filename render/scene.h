@@ -207,6 +207,9 @@ typedef struct {
                                     maps (the key the identity), with keys
                                     [1] its local map's inverse */
     uint32_t parent_map_count;   /* of parent_maps */
+    const uint32_t *own_list;    /* reloc; own_count: the clusters with maps
+                                    of their own (parent_maps' order) */
+    uint32_t own_count;
     uint32_t pointer_lo, pointer_hi; /* the primitives that are not
                                         triangles lie in [pointer_lo,
                                         pointer_hi) (0, 0: none) */
