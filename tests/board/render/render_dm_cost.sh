@@ -12,9 +12,9 @@
 #    frame's preprocessing, the DM's last span) equal to frame 0's
 #    preparation, narrow and wide blob alike;
 #  - render_dm_cost_limit: at most DM_COST_LIMIT instructions a primitive
-#    (2,339 measured, the double copy's load and preparation included);
+#    (2,332 measured, the double copy's load and preparation included);
 #  - render_dm_cost_narrow: --no-escalate (the firmware without the double
-#    copy), at most DM_NARROW_LIMIT (1,138 measured).
+#    copy), at most DM_NARROW_LIMIT (1,136 measured).
 # Guest instructions repeat run to run, so the margins are for changes to
 # the code, not for noise.
 . "$(dirname "$0")/../lib.sh"
