@@ -1116,9 +1116,11 @@ static void prep_cluster_tree(const scene_t *s, render_frame_t *f, int world)
 
 /* The clusters of the moved heads' maps (each head, and its descendants
  * through plain clusters, which use its maps: ix->groups[].maps_of) into
- * mv->order after the heads; *n how many in all.  1 when their primitives are at most half the scene's, and they
- * at most a quarter of its clusters or PREP_MOVED_CLUSTERS (a frame where
- * more moved is cheaper whole: the walk stops there), else 0. */
+ * mv->order after the heads; *n how many in all.  1 when their primitives
+ * are at most half the scene's, and they at most a quarter of its
+ * clusters or PREP_MOVED_CLUSTERS (a frame where more moved is cheaper
+ * whole: the walk stops there), else 0.  Each cluster has one parent, so
+ * none is listed twice. */
 static int prep_moved_members(const scene_t *s, const scene_index_t *ix, prep_moves_t *mv,
                               uint32_t *n)
 {
