@@ -208,9 +208,9 @@ typedef struct {
      * the frame before of the same scene (render_prepare_again) keeps that
      * frame's world part (eye space: its primitives and boxes, when the
      * camera is the same) when no keyed cluster map differs and the extent
-     * is the same; when some differ (at most half the primitives under
-     * them) it prepares only those clusters' primitives again and the
-     * boxes above them.  Either way: the bytes a fresh preparation writes
+     * is the same; when some differ (under them at most half the
+     * primitives and a quarter of the clusters, or 256) it prepares only
+     * those clusters' primitives again and the boxes above them.  Either way: the bytes a fresh preparation writes
      * but kept. */
     uint8_t world;
     uint8_t world_lost;            /* world: precision_lost of the world part
