@@ -47,6 +47,30 @@ render_board() {
     return 0
 }
 
+# render_frames_same NAME SCENE ARITH FRAMES [ARGS...]: the board's frames
+# A..B at $SIZE on 4 NCs (with ARGS, and BOARD_ONLY's on the board alone)
+# equal links1 ref's with ARGS, frame by frame (one PASS or FAIL)
+render_frames_same() {
+    local name=$1 scene=$2 a=$3 frames=$4 ref=$RENDER_TMP/$1-host.ppm out=$RENDER_TMP/$1.ppm
+    local first=${frames%%:*} last=${frames##*:} bad=""
+    shift 4
+    "$LINKS1" ref "$scene" --arith "$a" --size "$SIZE" --frames "$frames" -o "$ref" "$@" \
+        >"$ref.log" 2>&1 || { echo "FAIL $name: links1 ref failed: $(tail -n 1 "$ref.log")"; return; }
+    local -a board_only
+    read -r -a board_only <<<"${BOARD_ONLY:-}"
+    render_board "$name" "$out" "$scene" -o "$out" --arith "$a" --ncs 4 --size "$SIZE" \
+        --frames "$frames" "${board_only[@]}" "$@" || return 0
+    for ((f = first; f <= last; f++)); do
+        local r="${ref%.ppm}-$(printf %04d $f).ppm" o="${out%.ppm}-$(printf %04d $f).ppm"
+        [ -s "$r" ] && [ -s "$o" ] && cmp -s "$r" "$o" || bad="$bad $f"
+    done
+    if [ -z "$bad" ]; then
+        echo "PASS $name"
+    else
+        echo "FAIL $name: frames$bad differ from the host build's (or are missing)"
+    fi
+}
+
 # render_grid_one SCENE ARITH NCS MODE SIZE: one cell of the grid.
 render_grid_one() {
     local scene=$1 arith=$2 ncs=$3 mode=$4 size=$5

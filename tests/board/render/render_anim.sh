@@ -20,23 +20,8 @@ if render_board render_anim "$out" scenes/anim.scn -o "$out" --ncs 4 --size $SIZ
     done
 fi
 
-# moved_frames NAME SCENE ARITH: frames 0..3 on the board equal the host's
-moved_frames() {
-    local name=$1 scene=$2 a=$3 ref out=$RENDER_TMP/$1.ppm bad=""
-    ref=$(render_ref "$scene" "$a" $SIZE 0:3)
-    render_board "$name" "$out" "$scene" -o "$out" --arith "$a" --ncs 4 --size $SIZE \
-        --frames 0:3 || return 0
-    for f in 0 1 2 3; do
-        cmp -s "${ref%.ppm}-000$f.ppm" "${out%.ppm}-000$f.ppm" || bad="$bad $f"
-    done
-    if [ -z "$bad" ]; then
-        echo "PASS $name"
-    else
-        echo "FAIL $name: frames$bad differ from the host build's"
-    fi
-}
-moved_frames render_anim_pendulum_float scenes/pendulum.scn float
-moved_frames render_anim_pendulum_fixed scenes/pendulum.scn fixed
+render_frames_same render_anim_pendulum_float scenes/pendulum.scn float 0:3
+render_frames_same render_anim_pendulum_fixed scenes/pendulum.scn fixed 0:3
 ball3=$RENDER_TMP/ball3.scn
 bash host-tools/gen/make_spin.sh 3 4 "$ball3" ball
-moved_frames render_anim_ball_float "$ball3" float
+render_frames_same render_anim_ball_float "$ball3" float 0:3

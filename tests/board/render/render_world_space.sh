@@ -25,42 +25,18 @@ board_ready render_world_fly_float render_world_fly_fixed render_world_fly_an521
     render_world_rc_header || exit 0
 SIZE=96x72
 
-# world_frames NAME SCENE ARITH FRAMES [ARGS...]: the board's world-space
-# frames A..B (with ARGS, and BOARD_ONLY's on the board) equal links1
-# ref's, frame by frame (one PASS or FAIL)
-world_frames() {
-    local name=$1 scene=$2 a=$3 frames=$4 ref=$RENDER_TMP/$1-host.ppm out=$RENDER_TMP/$1.ppm
-    local first=${frames%%:*} last=${frames##*:} bad=""
-    shift 4
-    "$LINKS1" ref "$scene" --arith "$a" --size $SIZE --world-space --frames "$frames" -o "$ref" \
-        "$@" >"$ref.log" 2>&1 || { echo "FAIL $name: links1 ref failed: $(tail -n 1 "$ref.log")"; return; }
-    local -a board_only
-    read -r -a board_only <<<"${BOARD_ONLY:-}"
-    render_board "$name" "$out" "$scene" -o "$out" --arith "$a" --ncs 4 --size $SIZE \
-        --world-space --frames "$frames" "${board_only[@]}" "$@" || return 0
-    for ((f = first; f <= last; f++)); do
-        local r="${ref%.ppm}-$(printf %04d $f).ppm" o="${out%.ppm}-$(printf %04d $f).ppm"
-        [ -s "$r" ] && [ -s "$o" ] && cmp -s "$r" "$o" || bad="$bad $f"
-    done
-    if [ -z "$bad" ]; then
-        echo "PASS $name"
-    else
-        echo "FAIL $name: frames$bad differ from the host build's (or are missing)"
-    fi
-}
-
-world_frames render_world_fly_float scenes/fly.scn float 0:3
-world_frames render_world_fly_fixed scenes/fly.scn fixed 0:2
+render_frames_same render_world_fly_float scenes/fly.scn float 0:3 --world-space
+render_frames_same render_world_fly_fixed scenes/fly.scn fixed 0:2 --world-space
 # the an521 boards: the DM's blocks lie at other addresses on each board
-BOARD_ONLY="--machine an521" world_frames render_world_fly_an521 scenes/fly.scn float 0:2
-world_frames render_world_anim_float scenes/anim.scn float 0:2
-world_frames render_world_pendulum_float scenes/pendulum.scn float 0:3
-world_frames render_world_pendulum_fixed scenes/pendulum.scn fixed 0:3
+BOARD_ONLY="--machine an521" render_frames_same render_world_fly_an521 scenes/fly.scn float 0:2 --world-space
+render_frames_same render_world_anim_float scenes/anim.scn float 0:2 --world-space
+render_frames_same render_world_pendulum_float scenes/pendulum.scn float 0:3 --world-space
+render_frames_same render_world_pendulum_fixed scenes/pendulum.scn fixed 0:3 --world-space
 ball3=$RENDER_TMP/ball3.scn
 bash host-tools/gen/make_spin.sh 3 3 "$ball3" ball
-world_frames render_world_ball_float "$ball3" float 0:2
+render_frames_same render_world_ball_float "$ball3" float 0:2 --world-space
 # escalation: the DM's wide blob keeps its world part the same way
-world_frames render_world_fly_escalate scenes/fly.scn float 0:2 --escalate
+render_frames_same render_world_fly_escalate scenes/fly.scn float 0:2 --world-space --escalate
 
 # double: the world-space image is the eye-space one's within 1/255
 eye=$RENDER_TMP/eye-double.png world=$RENDER_TMP/world-double.png
