@@ -149,6 +149,8 @@ FW_LIBS := -lm -lc -lgcc
 #              arithmetic (build/host-any[-san]/, build/fuzz-any/), with no
 #              arithmetic defined, so one that does include num.h stops the
 #              build at num.h's #error instead of being shared wrongly
+# SRC_CFLAGS:  a host source's own extra flags, as the variable <path>_CFLAGS
+#              (host-tools/model/module.mk's libassimp soname)
 FW_SRCS :=
 FW_ARITH_FREE_SRCS :=
 FW_ARITH_FREE_SRCS_virt :=
@@ -276,7 +278,7 @@ define host_objdir
 $(B)/host-$(1)$(2)/%.c.o: %.c
 	$$(call say,HOSTCC,$$@)
 	$(Q)mkdir -p $$(@D)
-	$(Q)$(HOST_CC) $(HOST_CFLAGS) $(ARITH_DEF_$(1)) $(if $(2),$(SAN_FLAGS)) -c $$< -o $$@
+	$(Q)$(HOST_CC) $(HOST_CFLAGS) $$($$<_CFLAGS) $(ARITH_DEF_$(1)) $(if $(2),$(SAN_FLAGS)) -c $$< -o $$@
 endef
 $(foreach a,any double float fixed $(HOST_EXTRA_ARITHS),$(eval $(call host_objdir,$(a),))$(eval $(call host_objdir,$(a),-san)))
 
@@ -318,7 +320,7 @@ define fuzz_objdir
 $(B)/fuzz-$(1)/%.c.o: %.c
 	$$(call say,FUZZCC,$$@)
 	$(Q)mkdir -p $$(@D)
-	$(Q)$(FUZZ_CC) $(HOST_CFLAGS) $(ARITH_DEF_$(1)) $(FUZZ_SAN) -fsanitize=fuzzer-no-link \
+	$(Q)$(FUZZ_CC) $(HOST_CFLAGS) $$($$<_CFLAGS) $(ARITH_DEF_$(1)) $(FUZZ_SAN) -fsanitize=fuzzer-no-link \
 		-c $$< -o $$@
 endef
 $(foreach a,any double float fixed,$(eval $(call fuzz_objdir,$(a))))

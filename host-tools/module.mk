@@ -23,4 +23,4 @@ BOARD_LAUNCHER_SRCS = $(HT_LAUNCHER_SRCS) $(HT_LINK_SRCS) $(HT_OPTS_CLI_SRCS)
 # Programs that read text scenes link these (and SCENE_TEXT_LIBS): the
 # `model` statement reads model files through libassimp.
 SCENE_TEXT_SRCS = $(HT_SCENE_SRCS) $(HT_MODEL_SRCS) $(HT_IMAGE_IO_SRCS) $(HT_OPTS_ARGS_SRCS)
-SCENE_TEXT_LIBS := -lpng -lassimp
+SCENE_TEXT_LIBS := -lpng

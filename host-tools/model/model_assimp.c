@@ -1,11 +1,10 @@
 /* model_assimp.c: model_assimp_load and model_load_memory through
  * libassimp (model.h); model_load runs model_assimp_load in a child
- * (model_child.c).  The only file of links1 that includes assimp: it
- * gives the library its own file I/O (regular files only, model_io_open),
- * copies what the library read into plain arrays and checks nothing beyond
+ * (model_child.c).  With assimp_lib.c, the only file of links1 that
+ * includes assimp: it gives the library its own file I/O (regular files
+ * only, model_io_open), copies what the library read into plain arrays and checks nothing beyond
  * what it must to copy safely. */
 #include <assimp/cfileio.h>
-#include <assimp/cimport.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <errno.h>
@@ -18,6 +17,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "host-tools/model/assimp_lib.h"
 #include "host-tools/model/model.h"
 #include "host-tools/model/model_child.h"
 
@@ -25,6 +25,9 @@
  * let the library refuse a file whose structure is broken. */
 #define MODEL_AI_FLAGS \
     (aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure)
+
+/* The library's functions (assimp_lib.h), set by the two entries below. */
+static const struct assimp_lib *ai;
 
 static void model_name(char *out, const struct aiString *s)
 {
@@ -44,7 +47,7 @@ static void model_world(const struct aiNode *n, struct aiMatrix4x4 *w)
     struct aiMatrix4x4 acc = n->mTransformation, t;
     for (const struct aiNode *p = n->mParent; p; p = p->mParent) {
         t = p->mTransformation;
-        aiMultiplyMatrix4(&t, &acc);
+        ai->multiply_matrix4(&t, &acc);
         acc = t;
     }
     *w = acc;
@@ -142,8 +145,8 @@ static int model_copy_mesh(struct model_mesh *d, const struct aiMesh *a)
 static void model_tex(const struct aiMaterial *a, enum aiTextureType t, char *out)
 {
     struct aiString s;
-    if (aiGetMaterialTextureCount(a, t) > 0 &&
-        aiGetMaterialTexture(a, t, 0, &s, NULL, NULL, NULL, NULL, NULL, NULL) == aiReturn_SUCCESS)
+    if (ai->material_texture_count(a, t) > 0 &&
+        ai->material_texture(a, t, 0, &s, NULL, NULL, NULL, NULL, NULL, NULL) == aiReturn_SUCCESS)
         snprintf(out, MODEL_PATH_MAX, "%.*s", (int)s.length, s.data);
 }
 
@@ -151,7 +154,7 @@ static int model_colour(const struct aiMaterial *a, const char *key, unsigned ty
                         unsigned index, double out[3])
 {
     struct aiColor4D c;
-    if (aiGetMaterialColor(a, key, type, index, &c) != aiReturn_SUCCESS)
+    if (ai->material_color(a, key, type, index, &c) != aiReturn_SUCCESS)
         return 0;
     out[0] = c.r, out[1] = c.g, out[2] = c.b;
     return 1;
@@ -162,7 +165,7 @@ static int model_float(const struct aiMaterial *a, const char *key, unsigned typ
 {
     ai_real f;
     unsigned max = 1;
-    if (aiGetMaterialFloatArray(a, key, type, index, &f, &max) != aiReturn_SUCCESS || max != 1)
+    if (ai->material_float_array(a, key, type, index, &f, &max) != aiReturn_SUCCESS || max != 1)
         return 0;
     *out = f;
     return 1;
@@ -171,7 +174,7 @@ static int model_float(const struct aiMaterial *a, const char *key, unsigned typ
 static void model_copy_material(struct model_material *d, const struct aiMaterial *a)
 {
     struct aiString s;
-    if (aiGetMaterialString(a, AI_MATKEY_NAME, &s) == aiReturn_SUCCESS)
+    if (ai->material_string(a, AI_MATKEY_NAME, &s) == aiReturn_SUCCESS)
         model_name(d->name, &s);
     d->shininess_strength = 1;
     d->opacity = 1;
@@ -511,7 +514,7 @@ static int model_take(const struct aiScene *sc, const char *name, int gltf, stru
 {
     memset(m, 0, sizeof *m);
     if (!sc) {
-        const char *why = aiGetErrorString();
+        const char *why = ai->error_string();
         snprintf(err, errlen, "%s: the model library cannot read it: %s", name,
                  why && why[0] ? why : "no reason given");
         return -1;
@@ -525,15 +528,27 @@ static int model_take(const struct aiScene *sc, const char *name, int gltf, stru
         snprintf(err, errlen, "%s: out of memory copying the model", name);
         rc = -1;
     }
-    aiReleaseImport(sc);
+    ai->release_import(sc);
     if (rc != 0)
         model_free(m);
     return rc;
 }
 
+/* ai opened; 0, or -1 with "NAME: why not" in err. */
+static int model_lib_open(const char *name, char *err, size_t errlen)
+{
+    char why[512];
+    ai = assimp_lib(why, sizeof why);
+    if (!ai)
+        snprintf(err, errlen, "%s: %s", name, why);
+    return ai ? 0 : -1;
+}
+
 int model_assimp_load(const char *path, struct model *m, char *err, size_t errlen)
 {
     memset(m, 0, sizeof *m);
+    if (model_lib_open(path, err, errlen) != 0)
+        return -1;
     int fd = open(path, O_RDONLY | O_NONBLOCK | O_CLOEXEC | O_NOCTTY);
     if (fd >= 0) {
         static char head[MODEL_PLY_HEADER_MAX];
@@ -545,9 +560,9 @@ int model_assimp_load(const char *path, struct model *m, char *err, size_t errle
     }
     struct model_io ctx = {""};
     struct aiFileIO io = {model_io_open, model_io_close, (aiUserData)(void *)&ctx};
-    const struct aiScene *sc = aiImportFileEx(path, MODEL_AI_FLAGS, &io);
+    const struct aiScene *sc = ai->import_file_ex(path, MODEL_AI_FLAGS, &io);
     if (ctx.refused[0]) {
-        aiReleaseImport(sc);
+        ai->release_import(sc);
         if (strncmp(ctx.refused, path, strlen(path)) == 0 && ctx.refused[strlen(path)] == ':')
             snprintf(err, errlen, "%s", ctx.refused);
         else
@@ -562,15 +577,16 @@ int model_load_memory(const void *data, size_t size, const char *hint, struct mo
 {
     char name[32];
     snprintf(name, sizeof name, "(memory).%s", hint);
+    memset(m, 0, sizeof *m);
     if (size == 0 || size > MODEL_MEMORY_MAX) {
-        memset(m, 0, sizeof *m);
         snprintf(err, errlen, "%s: %zu bytes, not 1 to %u", name, size, MODEL_MEMORY_MAX);
         return -1;
     }
-    if (model_ply_header_ok(data, size, name, err, errlen) != 0)
+    if (model_ply_header_ok(data, size, name, err, errlen) != 0 ||
+        model_lib_open(name, err, errlen) != 0)
         return -1;
     const struct aiScene *sc =
-        aiImportFileFromMemory(data, (unsigned)size, MODEL_AI_FLAGS, hint);
+        ai->import_file_from_memory(data, (unsigned)size, MODEL_AI_FLAGS, hint);
     return model_take(sc, name, model_is_gltf(name), m, err, errlen);
 }
 

@@ -106,6 +106,29 @@ import_refused extent "spans x -2.5e+08..2.5e+08" tests/models/huge.obj --camera
 import_refused no_camera "no camera (--camera auto frames it)" tests/models/tetra.ply
 import_refused bad_option_camera "--camera 'front': want auto" tests/models/tetra.ply --camera front
 
+# The model library is opened only when a model is read (assimp_lib.h):
+# links1 does not load it at its start, and where it cannot be loaded (here
+# a broken copy found first on LD_LIBRARY_PATH) the import names it and
+# writes nothing, while commands without a model still work.
+if ldd build/links1 | grep -q "libassimp"; then
+    echo "FAIL import_library_on_demand: links1 loads libassimp at its start"
+else
+    echo "PASS import_library_on_demand"
+fi
+broken="$out/broken-lib"
+mkdir -p "$broken"
+for lib in /usr/lib/*/libassimp.so.*; do
+    echo "not a library" >"$broken/$(basename "$lib")"
+done
+LD_LIBRARY_PATH="$broken" import_refused library_missing \
+    "tetra.ply: the model library (libassimp.so." tests/models/tetra.ply --camera auto
+if ! err=$(LD_LIBRARY_PATH="$broken" build/links1 ref scenes/demo.scn --size 16x12 \
+        -o "$out/no-model-lib.ppm" 2>&1); then
+    echo "FAIL import_library_missing_ref: links1 ref without a model failed: $err"
+else
+    echo "PASS import_library_missing_ref"
+fi
+
 # Degenerate triangles are dropped and counted, not fatal.
 if err=$(build/links1 import tests/models/degenerate.obj -o "$out/degenerate.scn" \
         --camera auto 2>&1) && grep -q "2 degenerate triangles dropped" <<<"$err" &&
