@@ -42,6 +42,13 @@ struct load_section {
     uint32_t offset, count;
 };
 
+/* load_scale_bits by 2^e with the test of the common case (a normal value
+ * that stays normal) worked out once for e: load_scaler_of. */
+struct load_scaler {
+    int e;
+    uint32_t lo, span;
+};
+
 struct load {
     const uint8_t *buf;
     uint32_t total;
@@ -55,6 +62,8 @@ struct load {
     int32_t *kexp; /* scratch, per cluster: its keys' scales times 2^-kexp[i];
                       LOAD_KEXP_PLAIN for a plain cluster (load_cluster_plain) */
     int crc_later; /* the header alone: scene_load checks the word sum next */
+    struct load_scaler scaler; /* load_scaler_at's, for scaler.e */
+    int scaler_set;
     int triangle_coords_over; /* load_scale met a triangle with a coordinate
                                  not finite or beyond SCN_MAX_COORD: each
                                  triangle's are checked one by one */
@@ -174,11 +183,6 @@ LOAD_INLINE uint32_t load_scale_bits(uint32_t bits, int e)
 
 /* load_scale_bits by one e for many values: the exponent fields that stay
  * normal, lo .. lo + span, found once. */
-struct load_scaler {
-    int e;
-    uint32_t lo, span;
-};
-
 LOAD_INLINE struct load_scaler load_scaler_of(int e)
 {
     int32_t lo = e >= 0 ? 1 : 1 - e, hi = e >= 0 ? 254 - e : 254;
@@ -186,6 +190,17 @@ LOAD_INLINE struct load_scaler load_scaler_of(int e)
     if (hi < lo)
         s.lo = 256; /* no field: every value takes load_scale_bits */
     return s;
+}
+
+/* load_scaler_of(L->len_exp), worked out again only when it changes (the
+ * primitives of one cluster, or of plain clusters, share it). */
+LOAD_INLINE struct load_scaler load_scaler_at(struct load *L)
+{
+    if (!L->scaler_set || L->scaler.e != L->len_exp) {
+        L->scaler = load_scaler_of(L->len_exp);
+        L->scaler_set = 1;
+    }
+    return L->scaler;
 }
 
 LOAD_INLINE uint32_t load_scale_bits_by(const struct load_scaler *s, uint32_t bits)
@@ -867,25 +882,27 @@ _Static_assert(SCN_TRIANGLE_VALUES == 15 && SCN_PRIM_MAX_VALUES == 15,
 static scene_load_status_t load_triangle(struct load *L, uint32_t i, const uint8_t *v,
                                          scene_prim_t *o)
 {
-    uint32_t over = 0;
+    uint32_t over = 0, tex[6];
     if (L->triangle_coords_over) /* else load_scale found every one in range */
         for (int k = 0; k < 9; k++)
             over |= (load_u32(v + 4 * k) & ~LOAD_F32_SIGN) > load_bits_of(SCN_MAX_COORD);
 #pragma GCC unroll 6
-    for (int k = 9; k < 15; k++)
-        over |= (load_u32(v + 4 * k) & ~LOAD_F32_SIGN) > load_bits_of(SCN_MAX_FACTOR);
+    for (int k = 0; k < 6; k++) { /* read once: checked, then loaded */
+        tex[k] = load_u32(v + 36 + 4 * k);
+        over |= (tex[k] & ~LOAD_F32_SIGN) > load_bits_of(SCN_MAX_FACTOR);
+    }
     if (over)
         return load_range(L, "prim ", i, "a value is");
     o->kind = SCENE_PRIM_TRIANGLE;
-    struct load_scaler sc = load_scaler_of(L->len_exp);
+    struct load_scaler sc = load_scaler_at(L);
     for (int k = 0; k < 3; k++) {
         const uint8_t *c = v + 12 * k;
         o->shape.triangle.v[k] =
             vec3_make(num_from_f32_bits(load_scale_bits_by(&sc, load_u32(c))),
                       num_from_f32_bits(load_scale_bits_by(&sc, load_u32(c + 4))),
                       num_from_f32_bits(load_scale_bits_by(&sc, load_u32(c + 8))));
-        o->shape.triangle.tex_u[k] = load_num(v + 36 + 4 * k);
-        o->shape.triangle.tex_v[k] = load_num(v + 48 + 4 * k);
+        o->shape.triangle.tex_u[k] = num_from_f32_bits(tex[k]);
+        o->shape.triangle.tex_v[k] = num_from_f32_bits(tex[3 + k]);
     }
     o->shape.triangle.smooth = 0;
     if (load_sliver(o->shape.triangle.v, L->len_exp))
@@ -948,8 +965,11 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
             LOAD_TRY(load_triangle(L, i, v, &out[i]));
             continue;
         }
+        if (kind == SCN_PRIM_TRIANGLE) /* the only other triangle */
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
+                            "component range on a primitive that is not a density sphere");
         int nv = load_prim_values[kind];
-        int nlen = kind == SCN_PRIM_TRIANGLE ? 9 : kind == SCN_PRIM_DENSITY ? 0 : nv;
+        int nlen = kind == SCN_PRIM_DENSITY ? 0 : nv;
         if (!load_coords(v, nlen) || !load_factors(v + 4 * nlen, nv - nlen))
             return load_range(L, "prim ", i, "a value is");
         for (int k = nv; k < SCN_PRIM_MAX_VALUES; k++)
@@ -965,9 +985,6 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
         o->cluster = clu;
         o->material = mat;
         switch (kind) {
-        case SCN_PRIM_TRIANGLE:
-            LOAD_TRY(load_triangle(L, i, v, o));
-            break;
         case SCN_PRIM_ELLIPSOID:
         case SCN_PRIM_BOX:
             for (int k = 3; k < 6; k++)

@@ -395,6 +395,11 @@ static void test_bad_indices_and_values(void)
                  "prim 1: cluster");
     expect_field(b, len, SCN_SEC_PRIMS, P + SCN_PRIM_KIND, 9, 2, SCENE_LOAD_ERR_VALUE,
                  "prim 1: unknown kind");
+    /* a triangle (prim 2) has no component range (checked apart from its values) */
+    expect_field(b, len, SCN_SEC_PRIMS, 2 * P + SCN_PRIM_FIRST, 1, 4, SCENE_LOAD_ERR_VALUE,
+                 "prim 2: component range on a primitive that is not a density sphere");
+    expect_field(b, len, SCN_SEC_PRIMS, 2 * P + SCN_PRIM_COUNT, 1, 4, SCENE_LOAD_ERR_VALUE,
+                 "prim 2: component range on a primitive that is not a density sphere");
     expect_field(b, len, SCN_SEC_PRIMS, 3 * P + SCN_PRIM_COUNT, 3, 4, SCENE_LOAD_ERR_INDEX,
                  "prim 3: components outside");
     expect_field(b, len, SCN_SEC_PRIMS, 3 * P + SCN_PRIM_COUNT, 0, 4, SCENE_LOAD_ERR_LIMIT,
