@@ -800,8 +800,9 @@ static scene_load_status_t load_clusters(struct load *L, scene_key_t *keys,
     xform_t identity; /* what load_cluster_values makes of a plain cluster */
     for (int k = 0; k < 12; k++)
         identity.m[k / 4][k % 4] = num_from_f32_bits(load_identity_bits[k]);
-    for (uint32_t i = 0; i < L->sec[SCN_SEC_CLUSTERS].count; i++) {
-        const uint8_t *p = load_rec(L, SCN_SEC_CLUSTERS, i);
+    const uint8_t *rec = load_rec(L, SCN_SEC_CLUSTERS, 0);
+    for (uint32_t i = 0, n = L->sec[SCN_SEC_CLUSTERS].count; i < n; i++) {
+        const uint8_t *p = rec + (size_t)i * SCN_CLUSTER_SIZE;
         uint32_t parent = load_u32(p + SCN_CLUSTER_PARENT);
         uint32_t kc = load_u32(p + SCN_CLUSTER_KEY_COUNT);
         uint32_t kf = load_u32(p + SCN_CLUSTER_KEY_FIRST);
@@ -943,8 +944,9 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
     uint32_t n_mat = L->sec[SCN_SEC_MATERIALS].count;
     uint32_t n_clu = L->sec[SCN_SEC_CLUSTERS].count;
     uint32_t n_comp = L->sec[SCN_SEC_COMPONENTS].present ? L->sec[SCN_SEC_COMPONENTS].count : 0;
-    for (uint32_t i = 0; i < L->sec[SCN_SEC_PRIMS].count; i++) {
-        const uint8_t *p = load_rec(L, SCN_SEC_PRIMS, i);
+    const uint8_t *rec = load_rec(L, SCN_SEC_PRIMS, 0);
+    for (uint32_t i = 0, n = L->sec[SCN_SEC_PRIMS].count; i < n; i++) {
+        const uint8_t *p = rec + (size_t)i * SCN_PRIM_SIZE;
         uint16_t kind = wire_get_u16(p + SCN_PRIM_KIND);
         uint16_t mat = wire_get_u16(p + SCN_PRIM_MATERIAL);
         uint32_t clu = load_u32(p + SCN_PRIM_CLUSTER);
@@ -1146,15 +1148,17 @@ static scene_load_status_t load_scale(struct load *L, scene_t *s)
     uint32_t n_clu = L->sec[SCN_SEC_CLUSTERS].count, n_keys = L->sec[SCN_SEC_KEYS].count;
     uint32_t n_comp = L->sec[SCN_SEC_COMPONENTS].count;
     int32_t geom = LOAD_EXP_NONE; /* the geometry's largest, in world units */
+    int32_t *cexp = L->cexp, *kexp = L->kexp; /* read once, not after each store */
+    const uint8_t *clusters = load_rec(L, SCN_SEC_CLUSTERS, 0);
     for (uint32_t i = 0; i < n_clu; i++) {
-        const uint8_t *p = load_rec(L, SCN_SEC_CLUSTERS, i);
+        const uint8_t *p = clusters + (size_t)i * SCN_CLUSTER_SIZE;
         uint32_t parent = load_u32(p + SCN_CLUSTER_PARENT);
         uint32_t kf = load_u32(p + SCN_CLUSTER_KEY_FIRST);
         uint32_t kc = load_u32(p + SCN_CLUSTER_KEY_COUNT);
-        int32_t cp = i > 0 && parent < i ? L->cexp[parent] : 0;
+        int32_t cp = i > 0 && parent < i ? cexp[parent] : 0;
         if (load_cluster_plain(p)) { /* no length, the identity */
-            L->kexp[i] = LOAD_KEXP_PLAIN;
-            L->cexp[i] = cp;
+            kexp[i] = LOAD_KEXP_PLAIN;
+            cexp[i] = cp;
             continue;
         }
         int32_t ks = LOAD_EXP_NONE;
@@ -1164,17 +1168,18 @@ static scene_load_status_t load_scale(struct load *L, scene_t *s)
                 geom = load_max_exp(kp + SCN_KEY_TRANSLATE, 3, cp, geom);
                 ks = load_max_exp(kp + SCN_KEY_SCALE, 3, 0, ks);
             }
-        L->kexp[i] = ks == LOAD_EXP_NONE ? 0 : ks;
+        kexp[i] = ks == LOAD_EXP_NONE ? 0 : ks;
         for (int r = 0; r < 3; r++)
-            geom = load_max_exp(p + SCN_CLUSTER_MATRIX + 4 * (4 * r + 3), 1, cp + L->kexp[i],
+            geom = load_max_exp(p + SCN_CLUSTER_MATRIX + 4 * (4 * r + 3), 1, cp + kexp[i],
                                 geom);
-        L->cexp[i] = cp + L->kexp[i] + load_matrix_exp(p + SCN_CLUSTER_MATRIX);
+        cexp[i] = cp + kexp[i] + load_matrix_exp(p + SCN_CLUSTER_MATRIX);
     }
-    for (uint32_t i = 0; i < L->sec[SCN_SEC_PRIMS].count; i++) {
-        const uint8_t *p = load_rec(L, SCN_SEC_PRIMS, i);
+    const uint8_t *prims = load_rec(L, SCN_SEC_PRIMS, 0);
+    for (uint32_t i = 0, n = L->sec[SCN_SEC_PRIMS].count; i < n; i++) {
+        const uint8_t *p = prims + (size_t)i * SCN_PRIM_SIZE;
         uint16_t kind = wire_get_u16(p + SCN_PRIM_KIND);
         uint32_t clu = load_u32(p + SCN_PRIM_CLUSTER);
-        int32_t c = clu < n_clu ? L->cexp[clu] : 0;
+        int32_t c = clu < n_clu ? cexp[clu] : 0;
         if (kind == SCN_PRIM_TRIANGLE) { /* the common case, unrolled */
             uint32_t big = load_max_bits(p + SCN_PRIM_VALUES, 9);
             L->triangle_coords_over |= big > load_bits_of(SCN_MAX_COORD);
