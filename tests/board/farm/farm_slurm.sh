@@ -96,9 +96,10 @@ fi
 if [ $rc -eq 0 ]; then farm_frames_same farm_slurm_kill_frames "$T/kill"
 else echo "FAIL farm_slurm_kill_frames: exit $rc"; fi
 
-# 5. tasks that fail in every round: frames missing, a failing exit
+# 5. tasks that fail in every round (render arguments the farm accepts, a
+# firmware the nodes do not have): frames missing, a failing exit
 farm farm_slurm_fail scenes/anim.scn --frames 0:1 -o "$T/fail" --slurm --retries 2 \
-    -- --size 1x1000000
+    -- --firmware "$T/no-such-firmware.elf"
 rc=$?
 if [ $rc -ne 0 ] && grep -q '2 frame(s) missing' "$T/farm_slurm_fail.log" &&
     grep -q 'retries: 4 task(s) failed' "$T/farm_slurm_fail.log"; then
