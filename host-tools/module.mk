@@ -20,7 +20,8 @@
 
 # Every program that talks to a board links these.
 BOARD_LAUNCHER_SRCS = $(HT_LAUNCHER_SRCS) $(HT_LINK_SRCS) $(HT_OPTS_CLI_SRCS)
-# Programs that read text scenes link these (and SCENE_TEXT_LIBS): the
-# `model` statement reads model files through libassimp.
+# Programs that read text scenes link these (and SCENE_TEXT_LIBS); the
+# `model` statement's libassimp is opened only when a model is read
+# (host-tools/model/assimp_lib.h), not linked.
 SCENE_TEXT_SRCS = $(HT_SCENE_SRCS) $(HT_MODEL_SRCS) $(HT_IMAGE_IO_SRCS) $(HT_OPTS_ARGS_SRCS)
 SCENE_TEXT_LIBS := -lpng
