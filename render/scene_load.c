@@ -181,8 +181,7 @@ LOAD_INLINE uint32_t load_scale_bits(uint32_t bits, int e)
     return (bits & ~LOAD_F32_EXP_MASK) | ((uint32_t)exp << 23);
 }
 
-/* load_scale_bits by one e for many values: the exponent fields that stay
- * normal, lo .. lo + span, found once. */
+/* The scaler of e: the exponent fields that stay normal, lo .. lo + span. */
 LOAD_INLINE struct load_scaler load_scaler_of(int e)
 {
     int32_t lo = e >= 0 ? 1 : 1 - e, hi = e >= 0 ? 254 - e : 254;
@@ -967,7 +966,7 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
             LOAD_TRY(load_triangle(L, i, v, &out[i]));
             continue;
         }
-        if (kind == SCN_PRIM_TRIANGLE) /* the only other triangle */
+        if (kind == SCN_PRIM_TRIANGLE) /* not taken above: a component range */
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
                             "component range on a primitive that is not a density sphere");
         int nv = load_prim_values[kind];
