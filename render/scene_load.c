@@ -62,8 +62,8 @@ struct load {
     int32_t *kexp; /* scratch, per cluster: its keys' scales times 2^-kexp[i];
                       LOAD_KEXP_PLAIN for a plain cluster (load_cluster_plain) */
     int crc_later; /* the header alone: scene_load checks the word sum next */
-    struct load_scaler scaler; /* load_scaler_at's, for scaler.e */
-    int scaler_set;
+    struct load_scaler scaler; /* load_scaler_at's, for scaler.e (load_prims
+                                  makes the first) */
     int triangle_coords_over; /* load_scale met a triangle with a coordinate
                                  not finite or beyond SCN_MAX_COORD: each
                                  triangle's are checked one by one */
@@ -195,10 +195,8 @@ LOAD_INLINE struct load_scaler load_scaler_of(int e)
  * primitives of one cluster, or of plain clusters, share it). */
 LOAD_INLINE struct load_scaler load_scaler_at(struct load *L)
 {
-    if (!L->scaler_set || L->scaler.e != L->len_exp) {
+    if (L->scaler.e != L->len_exp)
         L->scaler = load_scaler_of(L->len_exp);
-        L->scaler_set = 1;
-    }
     return L->scaler;
 }
 
@@ -944,6 +942,7 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
     uint32_t n_clu = L->sec[SCN_SEC_CLUSTERS].count;
     uint32_t n_comp = L->sec[SCN_SEC_COMPONENTS].present ? L->sec[SCN_SEC_COMPONENTS].count : 0;
     const uint8_t *rec = load_rec(L, SCN_SEC_PRIMS, 0);
+    L->scaler = load_scaler_of(L->len_exp);
     for (uint32_t i = 0, n = L->sec[SCN_SEC_PRIMS].count; i < n; i++) {
         const uint8_t *p = rec + (size_t)i * SCN_PRIM_SIZE;
         uint16_t kind = wire_get_u16(p + SCN_PRIM_KIND);
