@@ -2,8 +2,8 @@
  * libassimp (model.h); model_load runs model_assimp_load in a child
  * (model_child.c).  With assimp_lib.c, the only file of links1 that
  * includes assimp: it gives the library its own file I/O (regular files
- * only, model_io_open), copies what the library read into plain arrays and checks nothing beyond
- * what it must to copy safely. */
+ * only, model_io_open), copies what the library read into plain arrays
+ * and checks nothing beyond what it must to copy safely. */
 #include <assimp/cfileio.h>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
