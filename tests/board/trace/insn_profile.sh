@@ -4,10 +4,12 @@
 # none of the DM's preparation; with --insn-profile-core 0 the DM's alone,
 # with render_prepare_again (render_prepare's work) and no per-pixel function; on the an521 boards the
 # same for the DM (board 0's vCPU 0).  A core the board does not have is
-# refused before it boots.  Functions come from tests/bench/insn_funcs.sh.
+# refused before it boots.  Functions come from tests/bench/insn_funcs.sh;
+# tests/bench/insn_lines.py gives a function's blocks the same total.
 . "$(dirname "$0")/../lib.sh"
 . "$(dirname "$0")/../render_lib.sh"
-CHECKS="insn_profile_ncs insn_profile_dm insn_profile_dm_an521 insn_profile_core_refused"
+CHECKS="insn_profile_ncs insn_lines_same_total insn_profile_dm insn_profile_dm_an521
+    insn_profile_core_refused"
 board_ready $CHECKS || exit 0
 T=$RENDER_TMP
 ELF=$FW_DIR/links1-float.elf
@@ -34,6 +36,20 @@ check() {
     fi
 }
 check insn_profile_ncs "$ELF" ncs --ncs 2
+# by line and inlined function: render_pixel_impl's blocks, as many
+# instructions as insn_funcs.sh gives its symbol, over most of its lines
+name=insn_lines_same_total
+funcs=$(bash tests/bench/insn_funcs.sh "$T/insn_profile_ncs.prof" "$ELF" 2>&1 |
+    awk '$1 == "render_pixel_impl" { print $2 }')
+lines=$(python3 tests/bench/insn_lines.py "$T/insn_profile_ncs.prof" "$ELF" \
+    --function render_pixel_impl --top 100 2>&1)
+total=$(awk '$1 == "total" { print $2 }' <<<"$lines")
+rows=$(awk '/^inclusive$/ { exit } $3 == "render_pixel_impl" { n++ } END { print n + 0 }' <<<"$lines")
+if [ -n "$funcs" ] && [ "$funcs" -gt 0 ] && [ "$total" = "$funcs" ] && [ "$rows" -ge 2 ]; then
+    echo "PASS $name (render_pixel_impl $total over $rows of its lines)"
+else
+    echo "FAIL $name: insn_funcs.sh '$funcs', insn_lines.py total '$total' over $rows lines: $(head -n 3 <<<"$lines" | paste -sd' ')"
+fi
 check insn_profile_dm "$ELF" dm --ncs 2 --insn-profile-core 0
 check insn_profile_dm_an521 "$FW_DIR/an521/links1-float.elf" dm --machine an521 --ncs 2 \
     --insn-profile-core 0
