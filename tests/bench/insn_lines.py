@@ -92,12 +92,11 @@ def main():
             by_function[name] += count
     total = sum(by_line.values())
     print(f"total {total}")
-    share = lambda n: f"{100 * n / total:.1f}%" if total else "-"
-    for key, n in by_line.most_common(a.top):
-        print(f"{n} {share(n)} {key}")
-    print("inclusive")
-    for key, n in by_function.most_common(a.top):
-        print(f"{n} {share(n)} {key}")
+    for title, table in (("", by_line), ("inclusive", by_function)):
+        if title:
+            print(title)
+        for key, n in table.most_common(a.top):
+            print(f"{n} {100 * n / total:.1f}% {key}")
 
 
 if __name__ == "__main__":

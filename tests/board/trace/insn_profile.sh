@@ -37,7 +37,8 @@ check() {
 }
 check insn_profile_ncs "$ELF" ncs --ncs 2
 # by line and inlined function: render_pixel_impl's blocks, as many
-# instructions as insn_funcs.sh gives its symbol, over most of its lines
+# instructions as insn_funcs.sh gives its symbol, over two of its lines
+# or more
 name=insn_lines_same_total
 funcs=$(bash tests/bench/insn_funcs.sh "$T/insn_profile_ncs.prof" "$ELF" 2>&1 |
     awk '$1 == "render_pixel_impl" { print $2 }')
