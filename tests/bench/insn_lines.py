@@ -36,10 +36,10 @@ def read_profile(path):
             if not parts:
                 continue
             try:
-                addr, count = int(parts[0], 16), int(parts[1])
-            except (ValueError, IndexError):
-                sys.exit(f"insn_lines: {path}:{n}: not 'ADDR COUNT': {line.strip()!r}")
-            if len(parts) != 2 or not 0 <= addr < 1 << 32 or count < 0:
+                addr, count = int(parts[0], 16), int(parts[1]) if len(parts) == 2 else -1
+            except ValueError:
+                addr = count = -1
+            if not 0 <= addr < 1 << 32 or count < 0:
                 sys.exit(f"insn_lines: {path}:{n}: not 'ADDR COUNT': {line.strip()!r}")
             rows.append((addr, count))
     return rows
@@ -70,6 +70,12 @@ def inline_chains(elf, addrs):
     return chains
 
 
+def print_top(table, total, top):
+    """The top rows of table: "COUNT SHARE KEY"."""
+    for key, n in table.most_common(top):
+        print(f"{n} {100 * n / total:.1f}% {key}")
+
+
 def main():
     ap = argparse.ArgumentParser(description="a profile's instructions by line and inlined function")
     ap.add_argument("profile")
@@ -92,11 +98,9 @@ def main():
             by_function[name] += count
     total = sum(by_line.values())
     print(f"total {total}")
-    for title, table in (("", by_line), ("inclusive", by_function)):
-        if title:
-            print(title)
-        for key, n in table.most_common(a.top):
-            print(f"{n} {100 * n / total:.1f}% {key}")
+    print_top(by_line, total, a.top)
+    print("inclusive")
+    print_top(by_function, total, a.top)
 
 
 if __name__ == "__main__":

@@ -15,7 +15,7 @@ T=$RENDER_TMP
 ELF=$FW_DIR/links1-float.elf
 # check NAME ELF WANT ARGS...: render with --insn-profile and ARGS; WANT
 # "ncs" wants the per-pixel function and no preparation, "dm" the reverse
-# (functions by tests/bench/insn_funcs.sh)
+# (functions by tests/bench/insn_funcs.sh, kept in $T/NAME.funcs)
 check() {
     local name=$1 elf=$2 want=$3 prof=$T/$1.prof f px prep
     shift 3
@@ -24,7 +24,7 @@ check() {
         echo "FAIL $name: $(tail -n 1 "$T/$name.log")"
         return
     fi
-    f=$(bash tests/bench/insn_funcs.sh "$prof" "$elf" 2>&1)
+    f=$(bash tests/bench/insn_funcs.sh "$prof" "$elf" 2>&1 | tee "$T/$name.funcs")
     px=$(awk '$1 == "render_pixel_impl" { n = $2 } END { print n + 0 }' <<<"$f")
     prep=$(awk '$1 == "render_prepare" || $1 == "render_prepare_again" { n += $2 } END { print n + 0 }' <<<"$f")
     if [ "$want" = ncs ] && [ "$px" -gt 0 ] && [ "$prep" = 0 ]; then
@@ -40,8 +40,7 @@ check insn_profile_ncs "$ELF" ncs --ncs 2
 # instructions as insn_funcs.sh gives its symbol, over two of its lines
 # or more
 name=insn_lines_same_total
-funcs=$(bash tests/bench/insn_funcs.sh "$T/insn_profile_ncs.prof" "$ELF" 2>&1 |
-    awk '$1 == "render_pixel_impl" { print $2 }')
+funcs=$(awk '$1 == "render_pixel_impl" { print $2 }' "$T/insn_profile_ncs.funcs" 2>/dev/null)
 lines=$(python3 tests/bench/insn_lines.py "$T/insn_profile_ncs.prof" "$ELF" \
     --function render_pixel_impl --top 100 2>&1)
 total=$(awk '$1 == "total" { print $2 }' <<<"$lines")
