@@ -103,7 +103,7 @@ static void board_named_kill_nc_boards(const struct board_seen *s)
 {
     for (int k = 1; k < board_named_nc_boards(&s->r); k++)
         if (board_state_nc_alive(s->dir, k, s->r.nc_pid[k]))
-            kill(s->r.nc_pid[k], SIGKILL);
+            exit_clean_kill(s->r.nc_pid[k], SIGKILL);
     long long end = board_now_ms() + BOARD_TERM_WAIT_MS;
     while (board_named_nc_alive(s) && board_now_ms() < end)
         usleep(20000);
@@ -318,14 +318,14 @@ void board_named_abandon(struct board *b)
 {
     board_named_log_tail(b);
     if (b->qemu_pid > 0) {
-        kill(b->qemu_pid, SIGKILL);
+        exit_clean_kill(b->qemu_pid, SIGKILL);
         waitpid(b->qemu_pid, NULL, 0);
         exit_clean_drop_child(b->qemu_pid);
         b->qemu_pid = 0;
     }
     for (int k = 1; k < AN521_MAX_BOARDS; k++) { /* an an521 set's NC boards */
         if (b->nc_board_pid[k] > 0) {
-            kill(b->nc_board_pid[k], SIGKILL);
+            exit_clean_kill(b->nc_board_pid[k], SIGKILL);
             waitpid(b->nc_board_pid[k], NULL, 0);
             exit_clean_drop_child(b->nc_board_pid[k]);
             b->nc_board_pid[k] = 0;
@@ -472,7 +472,7 @@ static int board_named_kill(const char *name, const char *dir, int pid)
             "SIGTERM\n", name, pid);
     int sig = SIGTERM;
     for (int i = 0; i < 2 && board_state_alive(dir, pid); i++, sig = SIGKILL) {
-        if (kill(pid, sig) != 0 && errno != ESRCH) {
+        if (exit_clean_kill(pid, sig) != 0 && errno != ESRCH) {
             fprintf(stderr, "links1: board %s: %s to QEMU (pid %d): %s\n", name,
                     sig == SIGTERM ? "SIGTERM" : "SIGKILL", pid, strerror(errno));
             break;

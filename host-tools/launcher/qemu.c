@@ -80,6 +80,20 @@ static const char *board_qemu_binary(void)
 
 /* ------------------------------------------------------------ QEMU process */
 
+/* A QEMU just forked (pid) registered with exit_clean as the process group
+ * it leads (exit_clean_in_child_group; a named board's setsid), and
+ * signalled so from then on (exit_clean_kill): a $QEMU wrapper that starts
+ * the emulator without exec ends with it.  b NULL or not named: the group
+ * is made from this side too, so a signal sent before the child gets to
+ * it reaches the group (a named board's child makes a session instead,
+ * which it cannot once it leads a group). */
+static void board_qemu_started(const struct board *b, pid_t pid)
+{
+    if (!b || !b->named)
+        setpgid(pid, pid);
+    exit_clean_add_group(pid);
+}
+
 static void board_qemu_exec_failed(const char *qemu)
 {
     fprintf(stderr, "links1: cannot run %s: %s (install qemu-system-arm, or set $QEMU)\n",
@@ -216,7 +230,7 @@ static void board_qemu_exec_nc_board(struct board *b, int board)
         board_named_redirect(b);
         board_state_nc_name(b->state_dir, board, name, sizeof name);
     } else {
-        exit_clean_in_child(); /* it ends with us */
+        exit_clean_in_child_group(); /* it ends with us, its group with it */
         int null = open("/dev/null", O_RDWR);
         if (null >= 0) {
             dup2(null, 0);
@@ -257,7 +271,7 @@ static void board_qemu_exec(struct board *b, int qemu_fd)
     snprintf(smp, sizeof smp, "%d", b->opts.ncores);
     snprintf(mem, sizeof mem, "%dM", b->opts.ram_mb);
     if (qemu_fd >= 0) {
-        exit_clean_in_child(); /* it ends with us */
+        exit_clean_in_child_group(); /* it ends with us, its group with it */
         fcntl(qemu_fd, F_SETFD, 0); /* keep QEMU's end open across exec */
         snprintf(chardev, sizeof chardev, "socket,id=link,fd=%d", qemu_fd);
     } else {
@@ -366,14 +380,14 @@ int board_run_semihost_smp(const char *elf, int ram_mb, int cores, const char *t
         return -1;
     }
     if (pid == 0) {
-        exit_clean_in_child();
+        exit_clean_in_child_group();
         int null = open("/dev/null", O_RDONLY);
         if (null >= 0)
             dup2(null, 0); /* the program reads nothing; keep a terminal cooked */
         execvp(qemu, (char *const *)argv);
         board_qemu_exec_failed(qemu);
     }
-    exit_clean_add_child(pid);
+    board_qemu_started(NULL, pid);
     int st;
     while (waitpid(pid, &st, 0) < 0) {
         if (errno != EINTR) {
@@ -570,7 +584,7 @@ static int board_start_nc_boards(struct board *b)
         if (pid == 0)
             board_qemu_exec_nc_board(b, k);
         b->nc_board_pid[k] = pid;
-        exit_clean_add_child(pid); /* a named set's until it is up */
+        board_qemu_started(b, pid); /* a named set's until it is up */
     }
     return 0;
 }
@@ -672,13 +686,13 @@ static void board_stop_nc_boards(struct board *b)
     int any = 0;
     for (int k = 1; k < AN521_MAX_BOARDS; k++) {
         if (b->nc_board_pid[k]) {
-            kill(b->nc_board_pid[k], counting ? SIGTERM : SIGKILL);
+            exit_clean_kill(b->nc_board_pid[k], counting ? SIGTERM : SIGKILL);
             any = 1;
         }
     }
     for (int k = 1; k < AN521_MAX_BOARDS; k++) {
         if (b->nc_board_pid[k] && !board_nc_board_reap(b, k, BOARD_TERM_WAIT_MS)) {
-            kill(b->nc_board_pid[k], SIGKILL);
+            exit_clean_kill(b->nc_board_pid[k], SIGKILL);
             board_nc_board_reap(b, k, BOARD_TERM_WAIT_MS);
         }
     }
@@ -721,7 +735,7 @@ int board_start_unannounced(struct board *b, const struct board_opts *o)
         board_qemu_exec(b, sv[1]);
     close(sv[1]);
     b->qemu_pid = pid;
-    exit_clean_add_child(pid);
+    board_qemu_started(b, pid);
     int tool_fd = sv[0];
     if (o->link_noise_on && (tool_fd = board_noise_relay(o, sv[0])) < 0) {
         board_stop(b);
@@ -744,7 +758,7 @@ int board_start(struct board *b, const struct board_opts *o)
 void board_abandon(struct board *b)
 {
     if (!b->named && b->qemu_pid) {
-        kill(b->qemu_pid, SIGKILL);
+        exit_clean_kill(b->qemu_pid, SIGKILL);
         board_qemu_reap(b, BOARD_TERM_WAIT_MS);
     }
     board_stop(b);
@@ -789,7 +803,7 @@ static int board_start_named_run(struct board *b, const struct board_opts *o,
     if (pid == 0)
         board_qemu_exec(b, -1);
     b->qemu_pid = pid;
-    exit_clean_add_child(pid); /* until the board is up: then it runs on */
+    board_qemu_started(b, pid); /* until the board is up: then it runs on */
     if (b->opts.machine == MACHINE_AN521 && board_start_nc_boards(b) < 0) {
         board_named_abandon(b);
         board_stop(b);
@@ -915,12 +929,12 @@ static int board_stop_qemu(struct board *b)
     fprintf(stderr, "links1: the board did not power off within %d ms of the shutdown "
             "command; stopping QEMU (pid %d) with SIGTERM\n", BOARD_SHUTDOWN_WAIT_MS,
             (int)b->qemu_pid);
-    kill(b->qemu_pid, SIGTERM);
+    exit_clean_kill(b->qemu_pid, SIGTERM);
     if (board_qemu_reap(b, BOARD_TERM_WAIT_MS))
         return 1;
     fprintf(stderr, "links1: QEMU ignored SIGTERM for %d ms; killing it\n",
             BOARD_TERM_WAIT_MS);
-    kill(b->qemu_pid, SIGKILL);
+    exit_clean_kill(b->qemu_pid, SIGKILL);
     board_qemu_reap(b, BOARD_TERM_WAIT_MS);
     return 1;
 }

@@ -116,29 +116,41 @@ static void ec_remove_dir(const char *path)
     rmdir(path);
 }
 
+/* sig to v: a process (v > 0), or -v's process group (v < 0), which is
+ * then -v alone when it leads no group yet. */
+static int ec_kill(pid_t v, int sig)
+{
+    int r = kill(v, sig);
+    if (r == 0 || v > 0 || errno != ESRCH)
+        return r;
+    return kill(-v, sig);
+}
+
 static void ec_sleep_ms(long ms)
 {
     struct timespec t = {0, ms * 1000000L};
     nanosleep(&t, NULL);
 }
 
-/* The n children of pids[] (0: none) waited for up to
- * EXIT_CLEAN_CHILD_WAIT_MS, then sent SIGKILL; status[i] (when status is
- * not NULL) pids[i]'s wait status, or -1 when it was killed or not ours. */
+/* The n children of pids[] (0: none; -PID: PID and its process group)
+ * waited for up to EXIT_CLEAN_CHILD_WAIT_MS, then sent SIGKILL; status[i]
+ * (when status is not NULL) the wait status of pids[i]'s process, or -1
+ * when it was killed or not ours. */
 static void ec_wait(pid_t *pids, int *status, int n)
 {
     int left = 0;
     for (int i = 0; i < n; i++) {
-        left += pids[i] > 0;
+        left += pids[i] != 0;
         if (status)
             status[i] = -1;
     }
     for (long waited = 0; left > 0; waited += EXIT_CLEAN_POLL_MS) {
         for (int i = 0; i < n; i++) {
             int st = 0;
-            pid_t r = pids[i] > 0 ? waitpid(pids[i], &st, WNOHANG) : 0;
-            if (r == pids[i] || (r < 0 && errno == ECHILD)) {
-                if (status && r == pids[i])
+            pid_t pid = pids[i] < 0 ? -pids[i] : pids[i];
+            pid_t r = pid ? waitpid(pid, &st, WNOHANG) : 0;
+            if (pid && (r == pid || (r < 0 && errno == ECHILD))) {
+                if (status && r == pid)
                     status[i] = st;
                 pids[i] = 0;
                 left--;
@@ -149,9 +161,10 @@ static void ec_wait(pid_t *pids, int *status, int n)
         ec_sleep_ms(EXIT_CLEAN_POLL_MS);
     }
     for (int i = 0; i < n; i++) {
-        if (pids[i] > 0) {
-            kill(pids[i], SIGKILL);
-            waitpid(pids[i], NULL, 0);
+        if (pids[i] != 0) {
+            pid_t pid = pids[i] < 0 ? -pids[i] : pids[i];
+            ec_kill(pids[i], SIGKILL);
+            waitpid(pid, NULL, 0);
         }
     }
 }
@@ -163,7 +176,7 @@ static void ec_stop_children(void)
     int nleft = 0;
     for (int i = 0; i < EXIT_CLEAN_MAX_CHILDREN; i++) {
         pid_t pid = __atomic_load_n(&ec_children[i], __ATOMIC_SEQ_CST);
-        if (pid > 0 && kill(pid, SIGTERM) == 0)
+        if (pid != 0 && ec_kill(pid, SIGTERM) == 0)
             left[nleft++] = pid;
     }
     ec_wait(left, NULL, nleft);
@@ -276,24 +289,44 @@ void exit_clean_drop(const char *path)
     }
 }
 
-void exit_clean_add_child(pid_t pid)
+/* v (a pid, or -pid for its group) in a free slot of ec_children */
+static void ec_add_child(pid_t v)
 {
-    for (int i = 0; pid > 0 && i < EXIT_CLEAN_MAX_CHILDREN; i++) {
+    for (int i = 0; v != 0 && i < EXIT_CLEAN_MAX_CHILDREN; i++) {
         pid_t expect = 0;
-        if (__atomic_compare_exchange_n(&ec_children[i], &expect, pid, 0, __ATOMIC_SEQ_CST,
+        if (__atomic_compare_exchange_n(&ec_children[i], &expect, v, 0, __ATOMIC_SEQ_CST,
                                         __ATOMIC_SEQ_CST))
             return;
     }
 }
 
+void exit_clean_add_child(pid_t pid)
+{
+    if (pid > 0)
+        ec_add_child(pid);
+}
+
+void exit_clean_add_group(pid_t pid)
+{
+    if (pid > 0)
+        ec_add_child(-pid);
+}
+
 void exit_clean_drop_child(pid_t pid)
 {
     for (int i = 0; pid > 0 && i < EXIT_CLEAN_MAX_CHILDREN; i++) {
-        pid_t expect = pid;
+        pid_t expect = pid, group = -pid;
         if (__atomic_compare_exchange_n(&ec_children[i], &expect, 0, 0, __ATOMIC_SEQ_CST,
+                                        __ATOMIC_SEQ_CST) ||
+            __atomic_compare_exchange_n(&ec_children[i], &group, 0, 0, __ATOMIC_SEQ_CST,
                                         __ATOMIC_SEQ_CST))
             return;
     }
+}
+
+int exit_clean_kill(pid_t pid, int sig)
+{
+    return pid > 0 ? ec_kill(-pid, sig) : -1;
 }
 
 /* s copied into c->buf at *at: its offset, or -1 when it does not fit. */
@@ -359,6 +392,12 @@ void exit_clean_in_child(void)
     prctl(PR_SET_PDEATHSIG, SIGTERM);
     if (ec_owner && getppid() != ec_owner)
         _exit(1); /* the parent died before the line above */
+}
+
+void exit_clean_in_child_group(void)
+{
+    exit_clean_in_child();
+    setpgid(0, 0);
 }
 
 void exit_clean_hold(sigset_t *old)

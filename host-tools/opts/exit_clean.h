@@ -42,7 +42,16 @@ void exit_clean_drop(const char *path);
 
 /* pid sent SIGTERM (and waited for) if a signal ends the program. */
 void exit_clean_add_child(pid_t pid);
+/* The same for a child that leads a process group of its own
+ * (exit_clean_in_child_group, or setsid): its whole group is signalled,
+ * so what it started without exec (a $QEMU wrapper script's emulator)
+ * ends with it.  Dropped by exit_clean_drop_child(pid). */
+void exit_clean_add_group(pid_t pid);
 void exit_clean_drop_child(pid_t pid);
+/* sig to pid's process group when pid leads one, else to pid alone (a
+ * group not made yet: the child has not reached setpgid or setsid).
+ * kill's result. */
+int exit_clean_kill(pid_t pid, int sig);
 
 /* argv (NULL-ended) run if a signal ends the program, once the children
  * are stopped and before the paths go: forked and started with execvp,
@@ -59,6 +68,11 @@ void exit_clean_drop_command(int slot);
  * parent dies (PR_SET_PDEATHSIG), and _exit(1) at once when it died
  * already (getppid() is not the program). */
 void exit_clean_in_child(void);
+/* exit_clean_in_child, and the child leads a process group of its own
+ * (its parent registers it with exit_clean_add_group and signals it with
+ * exit_clean_kill).  A terminal's ^C and ^Z then reach the program, not
+ * the child: the program's handler stops it. */
+void exit_clean_in_child_group(void);
 
 /* The three signals held (between making a file and registering it) and
  * let go again. */

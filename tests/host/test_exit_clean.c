@@ -3,7 +3,9 @@
  * (with files, a subdirectory and a link to a file outside it), an
  * out_file's temporary file and a child, then gets SIGINT, SIGTERM or
  * SIGHUP: it dies of that signal, the directory and the temporary file are
- * gone, the link's target is untouched and the child has ended; a
+ * gone, the link's target is untouched and the child has ended, and so
+ * has what a child registered as a process group (exit_clean_add_group)
+ * started without exec, as a $QEMU wrapper script starts QEMU; a
  * directory unregistered stays; a child the program forks (not exec'ed)
  * that gets the signal just dies, leaving its parent's files; stale
  * links1-WHAT-PID-* directories of a dead process are swept by the next
@@ -39,7 +41,59 @@ static int exists(const char *path)
 struct report {
     char dir[PATH_MAX], tmp[PATH_MAX], kept[PATH_MAX];
     pid_t grandchild;
+    pid_t group_leader, group_member; /* exit_clean_add_group's, and its child */
 };
+
+/* A zombie counts as gone: an orphan waits there for init to reap it. */
+static int gone(pid_t pid)
+{
+    char path[64], stat[256] = "";
+    snprintf(path, sizeof path, "/proc/%d/stat", (int)pid);
+    int fd = open(path, O_RDONLY);
+    if (fd < 0)
+        return 1;
+    ssize_t n = read(fd, stat, sizeof stat - 1);
+    close(fd);
+    const char *end = n > 0 ? strrchr(stat, ')') : NULL; /* "pid (comm) S ..." */
+    return end && end[1] == ' ' && end[2] == 'Z';
+}
+
+/* gone(pid) within two seconds */
+static int gone_soon(pid_t pid)
+{
+    for (int i = 0; i < 200 && !gone(pid); i++)
+        usleep(10000);
+    return gone(pid);
+}
+
+/* A child leading a group of its own (exit_clean_in_child_group) that
+ * starts a process without exec, as a $QEMU wrapper script does; both
+ * sleep.  The leader's pid, the other's in *member. */
+static pid_t start_group(pid_t *member)
+{
+    int fds[2];
+    if (pipe(fds) != 0)
+        _exit(2);
+    pid_t g = fork();
+    if (g == 0) {
+        exit_clean_in_child_group();
+        pid_t m = fork();
+        if (m == 0) {
+            execlp("sleep", "sleep", "30", (char *)NULL);
+            _exit(127);
+        }
+        if (write(fds[1], &m, sizeof m) != (ssize_t)sizeof m)
+            _exit(2);
+        execlp("sleep", "sleep", "30", (char *)NULL);
+        _exit(127);
+    }
+    exit_clean_add_group(g);
+    close(fds[1]);
+    if (read(fds[0], member, sizeof *member) != (ssize_t)sizeof *member)
+        _exit(2);
+    close(fds[0]);
+    return g;
+}
 
 static void child_side(int fd, int keep_one)
 {
@@ -78,6 +132,7 @@ static void child_side(int fd, int keep_one)
     }
     exit_clean_add_child(g);
     r.grandchild = g;
+    r.group_leader = start_group(&r.group_member);
     if (write(fd, &r, sizeof r) != (ssize_t)sizeof r)
         _exit(2);
     close(fd);
@@ -119,6 +174,8 @@ static void check_signal(int sig, int keep_one)
     CHECK(!exists(r.tmp));
     CHECK(exists(outside)); /* the link removed, not followed */
     CHECK(kill(r.grandchild, 0) != 0 && errno == ESRCH);
+    CHECK(gone_soon(r.group_leader));
+    CHECK(gone_soon(r.group_member)); /* not the leader's child alone: its group */
     if (keep_one) {
         CHECK(exists(r.kept));
         tmp_dir_remove(r.kept);

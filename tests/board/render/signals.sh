@@ -5,6 +5,8 @@
 #   an an521 render with --count-insns (SIGHUP), ref --arith auto
 #   (SIGTERM): each exits 128+N, leaves no temporary file (TMPDIR empty,
 #   no .OUT.* beside the film) and no child of its running;
+#   a render whose $QEMU is a wrapper script that starts the emulator as
+#   its child, not by exec (SIGTERM): the emulator ends with it;
 #   ref --arith auto killed with SIGKILL: its children end (the
 #   parent-death signal) and the next run sweeps the directory it left;
 #   while an an521 render counts, every counting file QEMU is told of is
@@ -13,7 +15,8 @@
 #   (O_EXCL | O_NOFOLLOW): the link's target keeps its bytes.
 . "$(dirname "$0")/../lib.sh"
 . "$(dirname "$0")/../other_user_lib.sh"
-CHECKS="signals_render_film_int signals_render_insns_term signals_an521_counts_private
+CHECKS="signals_render_film_int signals_render_insns_term signals_wrapper_qemu_term
+signals_an521_counts_private
 signals_an521_hup signals_ref_auto_term signals_ref_auto_kill_children signals_ref_auto_sweep
 signals_plugin_refuses_link"
 board_ready $CHECKS || exit 0
@@ -37,6 +40,8 @@ wait_for() {
 have() { compgen -G "$1" >/dev/null; } # have GLOB: something matches
 children_of() { pgrep -P "$1" | tr '\n' ' '; }
 all_gone() { local p; for p in "$@"; do kill -0 "$p" 2>/dev/null && return 1; done; return 0; }
+# ended PID: gone, or a zombie (an orphan waiting for init to reap it)
+ended() { local s; s=$(ps -o stat= -p "$1" 2>/dev/null); [ -z "$s" ] || [ "${s#Z}" != "$s" ]; }
 
 # interrupt NAME SIG READY_GLOB CMD...: starts CMD, waits until READY_GLOB
 # matches and CMD has a child, sends SIG; checks the exit status, that
@@ -73,13 +78,46 @@ interrupt() {
     rm -rf "${TMPDIR:?}"/* "$T"/out/* "$T"/out/.[!.]*
 }
 
-# (256x192: the twelve frames take far longer than the 1.5 s before the
-# signal, so it lands while the film is still being made)
+# (256x192, and 128x96 counted: the twelve frames take far longer than the
+# 1.5 s before the signal, so it lands while the film is still being made;
+# 64x48 counted took 1.9 s in all, and a signal sometimes came after it)
 interrupt signals_render_film_int INT "$T/out/.a.apng.*" \
     "${L1[@]}" render scenes/fly.scn --frames 0:11 -o "$T/out/a.apng" --size 256x192 --quiet
 interrupt signals_render_insns_term TERM "$TMPDIR/links1-insns-*" \
-    "${L1[@]}" render scenes/fly.scn --frames 0:11 -o "$T/out/b.apng" --size 64x48 --quiet \
+    "${L1[@]}" render scenes/fly.scn --frames 0:11 -o "$T/out/b.apng" --size 128x96 --quiet \
     --count-insns
+
+# A $QEMU that starts the emulator as its child instead of exec'ing it:
+# the launcher signals the process group the wrapper leads.
+cat >"$T/wrap-qemu.sh" <<EOF
+#!/bin/sh
+"${QEMU:-qemu-system-arm}" "\$@" &
+echo \$! >"$T/wrapped.pid"
+wait \$!
+EOF
+chmod 700 "$T/wrap-qemu.sh"
+QEMU=$T/wrap-qemu.sh "${L1[@]}" render scenes/fly.scn --frames 0:11 -o "$T/out/w.apng" \
+    --size 256x192 --quiet >"$T/wrap.log" 2>&1 &
+pid=$!
+if wait_for 90 test -s "$T/wrapped.pid"; then
+    sleep 1.5
+    q=$(cat "$T/wrapped.pid")
+    kill -TERM "$pid"
+    wait "$pid" 2>/dev/null
+    rc=$?
+    if ! wait_for 10 ended "$q"; then
+        echo "FAIL signals_wrapper_qemu_term: the wrapper's QEMU (pid $q) still runs"
+        kill -KILL "$q"
+    elif [ "$rc" -ne 143 ]; then
+        echo "FAIL signals_wrapper_qemu_term: exit status $rc, want 143"
+    else
+        echo "PASS signals_wrapper_qemu_term (the wrapper's QEMU, pid $q, ended with the command)"
+    fi
+else
+    echo "FAIL signals_wrapper_qemu_term: the wrapper never started QEMU: $(tail -n 1 "$T/wrap.log")"
+    kill -KILL "$pid" 2>/dev/null; wait "$pid" 2>/dev/null
+fi
+rm -rf "${TMPDIR:?}"/* "$T"/out/* "$T"/out/.[!.]*
 
 # an521: the counting files QEMU is told of, while it runs.
 an521_private() {
