@@ -105,7 +105,8 @@ render_blob_status_t render_blob_load(const uint8_t *compiled, size_t len, void 
 }
 
 render_blob_status_t render_blob_load_summed(const uint8_t *compiled, size_t len,
-                                             const uint32_t *sum, void *block, size_t size,
+                                             const scene_load_known_t *known, void *block,
+                                             size_t size,
                                              const char *limit_name, render_blob_t **out,
                                              render_blob_error_t *err)
 {
@@ -125,7 +126,7 @@ render_blob_status_t render_blob_load_summed(const uint8_t *compiled, size_t len
                              &least, err) == RENDER_BLOB_OK;
     /* the root's maps alone too many (a checked scene: the DM's): too big
      * however many maps its clusters have */
-    if (bounded && sum && least > size) {
+    if (bounded && known && least > size) {
         blob_fail(err, RENDER_BLOB_ERR_TOO_BIG,
                   "the scene needs at least %zu bytes, more than the %zu bytes of %s", least,
                   size, limit_name ? limit_name : "the block");
@@ -136,7 +137,7 @@ render_blob_status_t render_blob_load_summed(const uint8_t *compiled, size_t len
     if (bounded && need > size)
         bounded = blob_bound(compiled, len, &render_layout_native, 1, BLOB_MAPS_COUNTED, &need,
                              NULL, err) == RENDER_BLOB_OK;
-    if ((!bounded || (need > size && !sum)) &&
+    if ((!bounded || (need > size && !known)) &&
         render_blob_bytes(compiled, len, &need, err) != RENDER_BLOB_OK)
         return err->status;
     if (need > size) {
@@ -150,7 +151,7 @@ render_blob_status_t render_blob_load_summed(const uint8_t *compiled, size_t len
     render_blob_t *blob = ARENA_NEW_ARRAY(&arena, render_blob_t, 1);
     scene_load_error_t lerr;
     if (!blob ||
-        scene_load_summed(compiled, len, sum, &arena, &blob->scene, &lerr) != SCENE_LOAD_OK) {
+        scene_load_summed(compiled, len, known, &arena, &blob->scene, &lerr) != SCENE_LOAD_OK) {
         blob_fail(err, RENDER_BLOB_ERR_LOAD, "scene refused: %s",
                   blob ? lerr.message : "no room for the blob header");
         return err->status;

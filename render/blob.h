@@ -32,6 +32,7 @@
 
 #include "render/relocate.h"
 #include "render/render.h"
+#include "render/scene_load.h"
 
 #define RENDER_BLOB_MAGIC 0x4c42314cu /* "L1BL" in memory, little-endian */
 #define RENDER_BLOB_MSG_MAX 272 /* with the DM's "scene refused: " within
@@ -114,10 +115,12 @@ render_blob_status_t render_blob_load(const uint8_t *compiled, size_t len, void 
                                       render_blob_error_t *err);
 render_blob_status_t render_blob_prepare(render_blob_t *blob, uint32_t frame_index, size_t size,
                                          render_blob_error_t *err);
-/* render_blob_load with the body's word sum summed already by the caller
- * (scene_load_summed; NULL: summed here). */
+/* render_blob_load with what the caller knows of the bytes already
+ * (scene_load_summed's known: the body's word sum, checked, and perhaps the
+ * scaling; NULL: nothing). */
 render_blob_status_t render_blob_load_summed(const uint8_t *compiled, size_t len,
-                                             const uint32_t *sum, void *block, size_t size,
+                                             const scene_load_known_t *known, void *block,
+                                             size_t size,
                                              const char *limit_name, render_blob_t **out,
                                              render_blob_error_t *err);
 

@@ -67,7 +67,7 @@ struct load {
     int triangle_coords_over; /* load_scale met a triangle with a coordinate
                                  not finite or beyond SCN_MAX_COORD: each
                                  triangle's are checked one by one */
-    const uint32_t *sum; /* the body's word sum, summed by the caller, or NULL */
+    const scene_load_known_t *known; /* what the caller knows, or NULL */
 };
 
 /* ------------------------------------------------------------ messages */
@@ -309,7 +309,7 @@ static scene_load_status_t load_header(struct load *L, size_t len)
                          (long)total, (long)nsec);
     L->total = total;
     if (!L->crc_later &&
-        (L->sum ? *L->sum : wordsum(b + SCN_SUM_START, total - SCN_SUM_START)) !=
+        (L->known ? L->known->body_sum : wordsum(b + SCN_SUM_START, total - SCN_SUM_START)) !=
             load_u32(b + SCN_HDR_SUM))
         return load_fail(L, SCENE_LOAD_ERR_CRC, "checksum mismatch: the scene is corrupt");
     /* The table: kinds known and unique, bodies inside the file, after the
@@ -1126,25 +1126,11 @@ static int32_t load_matrix_exp(const uint8_t *m)
     return (int32_t)(big >> 23) - 127 + ((big & 0x7fffffu) >= LOAD_MANT_2_OVER_SQRT3);
 }
 
-/* unit_exp and tol_exp (scene.h), and each cluster's exponent, before any
- * value enters num_t.  A cluster's coordinates are stored times
- * 2^(unit_exp + cexp): cexp is its parent's plus the power of two of its
- * keys' largest scale (kexp) and of its static matrix, whose entries and
- * key scales lose those powers of two, so they stay near 1 and the stored
- * coordinates follow the world's: a cluster scaled by 2^k holds the values
- * of its contents scaled by 2^k in its parent, bit for bit.  unit_exp
- * brings the largest |length| in world units (cluster contents times their
- * clusters' powers of two, eye, look-at, point and spot lights) to 8..16;
- * tol_exp follows the geometry's (all but the eye and the lights).  The
- * values are read unchecked (the checks come after): an index out of
- * range counts as the root. */
-_Static_assert((long long)SCN_MAX_COORD < (1LL << 62) && RENDER_NORM_EXP + 1 - RENDER_NORM_EXP_MIN > 62,
-               "SCN_MAX_COORD beyond what RENDER_NORM_EXP_MIN scales to 8..16");
-_Static_assert((long)SCN_MAX_FACTOR <= NUM_COORD_LIMIT, "SCN_MAX_FACTOR beyond the fixed range");
-static scene_load_status_t load_scale(struct load *L, scene_t *s)
+/* load_scale's pass over the clusters: each one's cexp and kexp (L's), and
+ * the largest geometry exponent of their keys' and matrices' lengths. */
+static int32_t load_scale_clusters(struct load *L)
 {
     uint32_t n_clu = L->sec[SCN_SEC_CLUSTERS].count, n_keys = L->sec[SCN_SEC_KEYS].count;
-    uint32_t n_comp = L->sec[SCN_SEC_COMPONENTS].count;
     int32_t geom = LOAD_EXP_NONE; /* the geometry's largest, in world units */
     int32_t *cexp = L->cexp, *kexp = L->kexp; /* read once, not after each store */
     const uint8_t *clusters = load_rec(L, SCN_SEC_CLUSTERS, 0);
@@ -1172,12 +1158,21 @@ static scene_load_status_t load_scale(struct load *L, scene_t *s)
                                 geom);
         cexp[i] = cp + kexp[i] + load_matrix_exp(p + SCN_CLUSTER_MATRIX);
     }
+    return geom;
+}
+
+/* load_scale's pass over the primitives: the largest of geom and their
+ * lengths' exponents; L->triangle_coords_over. */
+static int32_t load_scale_prims(struct load *L, int32_t geom)
+{
+    uint32_t n_clu = L->sec[SCN_SEC_CLUSTERS].count;
+    uint32_t n_comp = L->sec[SCN_SEC_COMPONENTS].count;
     const uint8_t *prims = load_rec(L, SCN_SEC_PRIMS, 0);
     for (uint32_t i = 0, n = L->sec[SCN_SEC_PRIMS].count; i < n; i++) {
         const uint8_t *p = prims + (size_t)i * SCN_PRIM_SIZE;
         uint16_t kind = wire_get_u16(p + SCN_PRIM_KIND);
         uint32_t clu = load_u32(p + SCN_PRIM_CLUSTER);
-        int32_t c = clu < n_clu ? cexp[clu] : 0;
+        int32_t c = clu < n_clu ? L->cexp[clu] : 0;
         if (kind == SCN_PRIM_TRIANGLE) { /* the common case, unrolled */
             uint32_t big = load_max_bits(p + SCN_PRIM_VALUES, 9);
             L->triangle_coords_over |= big > load_bits_of(SCN_MAX_COORD);
@@ -1192,6 +1187,13 @@ static scene_load_status_t load_scale(struct load *L, scene_t *s)
                 geom = load_max_exp(load_rec(L, SCN_SEC_COMPONENTS, k) + SCN_COMPONENT_CENTRE, 4,
                                     c, geom);
     }
+    return geom;
+}
+
+/* The largest of geom and the exponents of the eye, the look-at point and
+ * the point and spot lights, keyed or not. */
+static int32_t load_scale_view(struct load *L, int32_t geom)
+{
     int32_t most = load_max_exp(load_rec(L, SCN_SEC_VIEW, 0) + SCN_VIEW_EYE, 6, 0, geom);
     for (uint32_t i = 0; i < L->sec[SCN_SEC_LIGHTS].count; i++) {
         const uint8_t *p = load_rec(L, SCN_SEC_LIGHTS, i);
@@ -1208,6 +1210,36 @@ static scene_load_status_t load_scale(struct load *L, scene_t *s)
                                                   SCN_LIGHT_KIND) != SCN_LIGHT_PARALLEL)
             most = load_max_exp(p + SCN_VKEY_POSITION, 3, 0, most);
     }
+    return most;
+}
+
+/* unit_exp and tol_exp (scene.h), and each cluster's exponent, before any
+ * value enters num_t.  A cluster's coordinates are stored times
+ * 2^(unit_exp + cexp): cexp is its parent's plus the power of two of its
+ * keys' largest scale (kexp) and of its static matrix, whose entries and
+ * key scales lose those powers of two, so they stay near 1 and the stored
+ * coordinates follow the world's: a cluster scaled by 2^k holds the values
+ * of its contents scaled by 2^k in its parent, bit for bit.  unit_exp
+ * brings the largest |length| in world units (cluster contents times their
+ * clusters' powers of two, eye, look-at, point and spot lights) to 8..16;
+ * tol_exp follows the geometry's (all but the eye and the lights).  The
+ * values are read unchecked (the checks come after): an index out of
+ * range counts as the root.  Known already (scene_load_known_t.scaled):
+ * the clusters' exponents alone. */
+_Static_assert((long long)SCN_MAX_COORD < (1LL << 62) && RENDER_NORM_EXP + 1 - RENDER_NORM_EXP_MIN > 62,
+               "SCN_MAX_COORD beyond what RENDER_NORM_EXP_MIN scales to 8..16");
+_Static_assert((long)SCN_MAX_FACTOR <= NUM_COORD_LIMIT, "SCN_MAX_FACTOR beyond the fixed range");
+static scene_load_status_t load_scale(struct load *L, scene_t *s)
+{
+    int32_t geom = load_scale_clusters(L);
+    if (L->known && L->known->scaled) {
+        L->unit_exp = L->len_exp = (int)L->known->unit_exp;
+        s->unit_exp = L->known->unit_exp;
+        s->tol_exp = L->known->tol_exp;
+        return SCENE_LOAD_OK; /* triangle_coords_over 0: every one was in range */
+    }
+    geom = load_scale_prims(L, geom);
+    int32_t most = load_scale_view(L, geom);
     int32_t e = most == LOAD_EXP_NONE ? 0 : RENDER_NORM_EXP - most; /* the largest |length|
                                                      is in [2^most, 2^(most+1)) */
     if (e < RENDER_NORM_EXP_MIN || e > RENDER_NORM_EXP_MAX)
@@ -1236,14 +1268,21 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
     return scene_load_summed(buf, len, NULL, arena, out, err);
 }
 
-scene_load_status_t scene_load_summed(const uint8_t *buf, size_t len, const uint32_t *sum,
-                                      arena_t *arena, scene_t *out, scene_load_error_t *err)
+scene_load_known_t scene_load_known_of(const scene_t *s, uint32_t body_sum)
+{
+    scene_load_known_t k = {body_sum, 1, s->unit_exp, s->tol_exp};
+    return k;
+}
+
+scene_load_status_t scene_load_summed(const uint8_t *buf, size_t len,
+                                      const scene_load_known_t *known, arena_t *arena,
+                                      scene_t *out, scene_load_error_t *err)
 {
     struct load L;
     memset(&L, 0, sizeof L);
     L.buf = buf;
     L.err = err;
-    L.sum = sum;
+    L.known = known;
     err->status = SCENE_LOAD_OK;
     err->message[0] = 0;
     memset(out, 0, sizeof *out);

@@ -47,12 +47,28 @@ typedef struct {
  * exact size of the compiled scene. */
 scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena,
                                scene_t *out, scene_load_error_t *err);
-/* The same, the body's word sum (proto/wordsum.h, bytes SCN_SUM_START ..
- * len - 1) summed already by the caller, who read the bytes once to check
- * their upload: *sum is compared with the header's instead of the bytes
- * summed again. */
-scene_load_status_t scene_load_summed(const uint8_t *buf, size_t len, const uint32_t *sum,
-                                      arena_t *arena, scene_t *out, scene_load_error_t *err);
+/* What the caller knows of buf already, so that scene_load_summed does not
+ * work it out again: the body's word sum (proto/wordsum.h, bytes
+ * SCN_SUM_START .. len - 1), read once to check the upload, and, when a
+ * load of the same bytes in another arithmetic passed (the DM's narrow load
+ * before its wide one), that load's scaling: the loads' exponents are
+ * integer work on the same bits, the same in every arithmetic. */
+typedef struct {
+    uint32_t body_sum; /* compared with the header's instead of the bytes summed */
+    int scaled;        /* 1: unit_exp and tol_exp below are the scene's
+                          (scene_t's), and every triangle coordinate is in
+                          range: load_scale does not look at the values */
+    int32_t unit_exp, tol_exp;
+} scene_load_known_t;
+
+/* What a load of bytes whose body sums to body_sum found: s, loaded from
+ * them, for another arithmetic's load of the same bytes. */
+scene_load_known_t scene_load_known_of(const scene_t *s, uint32_t body_sum);
+
+/* scene_load with what the caller knows (known, or NULL: nothing). */
+scene_load_status_t scene_load_summed(const uint8_t *buf, size_t len,
+                                      const scene_load_known_t *known, arena_t *arena,
+                                      scene_t *out, scene_load_error_t *err);
 
 /* Checks the header and section table of buf[0..len) (word sum included, not
  * the records) and fills the counts of *shape (every pointer NULL, every

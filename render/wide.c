@@ -33,14 +33,14 @@ int RENDER_WIDE(wide_blob_bytes)(const uint8_t *compiled, size_t len, size_t *by
     return wide_result(render_blob_bytes(compiled, len, bytes, &err), &err, msg, cap);
 }
 
-int RENDER_WIDE(wide_blob_load)(const uint8_t *compiled, size_t len, const uint32_t *sum,
-                                void *block, size_t size, const char *limit_name,
-                                uint32_t scene_id, char *msg, size_t cap)
+int RENDER_WIDE(wide_blob_load)(const uint8_t *compiled, size_t len,
+                                const scene_load_known_t *known, void *block, size_t size,
+                                const char *limit_name, uint32_t scene_id, char *msg, size_t cap)
 {
     render_blob_error_t err;
     render_blob_t *blob;
     render_blob_status_t st =
-        render_blob_load_summed(compiled, len, sum, block, size, limit_name, &blob, &err);
+        render_blob_load_summed(compiled, len, known, block, size, limit_name, &blob, &err);
     if (st == RENDER_BLOB_OK)
         blob->scene_id = scene_id;
     return wide_result(st, &err, msg, cap);

@@ -30,6 +30,7 @@
 
 #include "render/limits.h"
 #include "render/render.h"
+#include "render/scene_load.h"
 
 /* The names the wide copy's entry points have once renamed; render/wide.c
  * itself (compiled before the renaming) defines them as written. */
@@ -53,10 +54,11 @@ RENDER_WIDE_WEAK extern const char RENDER_WIDE(wide_arith_name)[];
 RENDER_WIDE_WEAK int RENDER_WIDE(wide_blob_bytes)(const uint8_t *compiled, size_t len, size_t *bytes, char *msg,
                                  size_t cap);
 /* render_blob_load_summed in the wide arithmetic into block[0..size)
- * (aligned to RENDER_RELOCATE_ALIGN), numbered scene_id; sum: the body's
- * word sum, summed already (the DM's narrow load checked it), or NULL. */
+ * (aligned to RENDER_RELOCATE_ALIGN), numbered scene_id; known: what the
+ * narrow load of the same bytes found (scene_load_known_of), or NULL. */
 RENDER_WIDE_WEAK int RENDER_WIDE(wide_blob_load)(const uint8_t *compiled, size_t len,
-                                                 const uint32_t *sum, void *block, size_t size,
+                                                 const scene_load_known_t *known, void *block,
+                                                 size_t size,
                                                  const char *limit_name, uint32_t scene_id,
                                                  char *msg, size_t cap);
 /* render_blob_prepare of frame_index in the wide blob at block. */

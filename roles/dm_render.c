@@ -107,7 +107,8 @@ static size_t dm_wide_at(const uint8_t *block)
 
 /* The wide blob (escalation, render/wide.h) loaded past the narrow one in
  * block, held, when the firmware carries the wide arithmetic: part of the
- * scene's load, done with the narrow load in its span.  Refused (no room,
+ * scene's load, done with the narrow load in its span, told the narrow
+ * load's word sum and scaling (scene_load_known_of).  Refused (no room,
  * or the wide loader's checks): wide_refused and wide_why say so, and an
  * escalation asked of this scene is dropped (or fails, checking lost
  * pixels). */
@@ -120,8 +121,10 @@ static void dm_load_wide(uint8_t *block, int held, size_t size)
     if (r != 0)
         fmt_snprintf(dm_scene.wide_why, sizeof dm_scene.wide_why,
                      "no room past the scene's %zu bytes", ((const render_blob_t *)block)->bound);
-    else
-        r = RENDER_WIDE(wide_blob_load)(dm_scene.compiled, dm_scene.len, &dm_scene.body_sum,
+    scene_load_known_t known =
+        scene_load_known_of(&((const render_blob_t *)block)->scene, dm_scene.body_sum);
+    if (r == 0)
+        r = RENDER_WIDE(wide_blob_load)(dm_scene.compiled, dm_scene.len, &known,
                                         block + at, size - at,
                                         "the rest of " MACHINE_IMSU_BLOCK_NAME, dm_scene.load_id,
                                         dm_scene.wide_why, sizeof dm_scene.wide_why);
@@ -185,9 +188,10 @@ static render_blob_status_t dm_load(uint8_t *block, int held, render_blob_error_
     render_blob_t *blob = (render_blob_t *)block;
     uint64_t l0 = ktime_now();
     insn_mark_trace_span_begin(); /* the load, the index included (docs/trace.md) */
-    render_blob_status_t st = render_blob_load_summed(
-        dm_scene.compiled, dm_scene.len, dm_scene.sum_known ? &dm_scene.body_sum : NULL, block,
-        p->size, dm_blob_limit_name, &blob, err);
+    scene_load_known_t sum = {.body_sum = dm_scene.body_sum}; /* the sum alone */
+    render_blob_status_t st =
+        render_blob_load_summed(dm_scene.compiled, dm_scene.len, dm_scene.sum_known ? &sum : NULL,
+                                block, p->size, dm_blob_limit_name, &blob, err);
     if (st == RENDER_BLOB_OK && !dm_scene.sum_known) { /* the header's, checked */
         dm_scene.body_sum = wire_get_u32(dm_scene.compiled + SCN_HDR_SUM);
         dm_scene.sum_known = 1;

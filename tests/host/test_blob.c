@@ -239,7 +239,7 @@ static void test_blob_size_bound(void)
         /* the DM's load, its sum checked: the bound counts the parent maps
          * of the clusters that may have them, not two a cluster (most of
          * city's 150 are the automatic hierarchy's plain ones) */
-        uint32_t sum = wire_get_u32(buf + SCN_HDR_SUM);
+        scene_load_known_t sum = {.body_sum = wire_get_u32(buf + SCN_HDR_SUM)};
         CHECK_EQ_INT(render_blob_load_summed(buf, len, &sum, block, need, "IMSU_BLOCK_BYTES", &blob,
                                              &err),
                      RENDER_BLOB_OK);

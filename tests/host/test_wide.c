@@ -4,15 +4,20 @@
  * every other keeps its own, and a lost one stops its own rays; the
  * counts say so; an NC's area walk escalates the same pixels; the wide
  * blob survives the RC's copy (relocated, frame part only for the next
- * frame); bad blocks and contexts are refused with a message. */
+ * frame); the wide load given what the narrow load found (the DM's) makes
+ * the same scene; bad blocks and contexts are refused with a message. */
 #include "tests/check.h"
+#include "proto/scene_format.h"
+#include "proto/wire.h"
 #include "render/wide.h"
 #include "tests/host/test_blob_util.h"
 
 #define TW_DIV 2 /* demo.scn at 160x120 */
 
-/* The wide blob of scenes/NAME.scn, frame frame_index, in a new block. */
-static void *tw_wide_blob(const char *name, uint32_t frame_index, size_t *size)
+/* The wide blob of scenes/NAME.scn, frame frame_index, in a new block;
+ * known: what its load is told (wide_blob_load's), or NULL. */
+static void *tw_wide_blob_known(const char *name, uint32_t frame_index,
+                                const scene_load_known_t *known, size_t *size)
 {
     size_t len;
     char why[RENDER_BLOB_MSG_MAX];
@@ -20,7 +25,7 @@ static void *tw_wide_blob(const char *name, uint32_t frame_index, size_t *size)
     void *block = NULL;
     if (buf && RENDER_WIDE(wide_blob_bytes)(buf, len, size, why, sizeof why) == 0) {
         block = tb_block(*size);
-        if (RENDER_WIDE(wide_blob_load)(buf, len, NULL, block, *size, "the test block", 7, why,
+        if (RENDER_WIDE(wide_blob_load)(buf, len, known, block, *size, "the test block", 7, why,
                                         sizeof why) != 0 ||
             RENDER_WIDE(wide_blob_prepare)(block, frame_index, *size, why, sizeof why) != 0) {
             printf("%s: %s\n", name, why);
@@ -30,6 +35,11 @@ static void *tw_wide_blob(const char *name, uint32_t frame_index, size_t *size)
     }
     free(buf);
     return block;
+}
+
+static void *tw_wide_blob(const char *name, uint32_t frame_index, size_t *size)
+{
+    return tw_wide_blob_known(name, frame_index, NULL, size);
 }
 
 static void *tw_wide_ctx(const void *block, size_t size)
@@ -333,6 +343,45 @@ static void test_wide_copy_frame(void)
     free(narrow);
 }
 
+/* The DM's wide load: told the narrow load's word sum and scaling
+ * (scene_load_known_of), it makes the scene it makes on its own: every
+ * pixel the same, on demo and on anim's frame 1 (clusters scaled and
+ * moved). */
+static void test_wide_known_same(void)
+{
+    const char *names[] = {"demo", "anim"};
+    for (int i = 0; i < 2; i++) {
+        size_t nsize, size, ksize, len;
+        render_blob_t *narrow = tb_blob_div(names[i], 1, TW_DIV, &nsize);
+        uint8_t *buf = tb_compile_div(names[i], TW_DIV, &len);
+        CHECK(narrow && buf);
+        if (!narrow || !buf) {
+            free(narrow);
+            free(buf);
+            continue;
+        }
+        scene_load_known_t known =
+            scene_load_known_of(&narrow->scene, wire_get_u32(buf + SCN_HDR_SUM));
+        CHECK(known.scaled && known.unit_exp == narrow->scene.unit_exp);
+        void *alone = tw_wide_blob(names[i], 1, &size);
+        void *told = tw_wide_blob_known(names[i], 1, &known, &ksize);
+        void *ca = alone ? tw_wide_ctx(alone, size) : NULL;
+        void *ct = told ? tw_wide_ctx(told, ksize) : NULL;
+        uint32_t w = narrow->frame->width, h = narrow->frame->height;
+        rgb8_t *a = ca ? tw_render_wide(ca, w, h, NULL) : NULL;
+        rgb8_t *t = ct ? tw_render_wide(ct, w, h, NULL) : NULL;
+        CHECK(a && t && memcmp(a, t, sizeof *a * w * h) == 0);
+        free(a);
+        free(t);
+        free(ca);
+        free(ct);
+        free(alone);
+        free(told);
+        free(buf);
+        free(narrow);
+    }
+}
+
 /* Refusals name their problem: a block with no blob, a context not
  * aligned, a block too small for the wide scene. */
 static void test_wide_errors(void)
@@ -364,6 +413,7 @@ int main(void)
     RUN(test_wide_check_keeps_colours);
     RUN(test_wide_area_same_as_pixels);
     RUN(test_wide_copy_frame);
+    RUN(test_wide_known_same);
     RUN(test_wide_errors);
     return check_exit();
 }
