@@ -68,6 +68,7 @@ struct load {
                                  not finite or beyond SCN_MAX_COORD: each
                                  triangle's are checked one by one */
     const scene_load_known_t *known; /* what the caller knows, or NULL */
+    int passed; /* known->passed: the values' checks are not made again */
 };
 
 /* ------------------------------------------------------------ messages */
@@ -873,12 +874,13 @@ static int load_sliver(const vec3_t v[3], int unit_exp)
 }
 
 /* A triangle record whose material, cluster and component range are
- * right: its 15 values checked (9 lengths, 6 texture coordinates) and
- * loaded into o as load_prims's general path does, with its refusals. */
+ * right: its 15 values checked (9 lengths, 6 texture coordinates; not when
+ * passed, scene_load_known_t's) and loaded into o as load_prims's general
+ * path does, with its refusals. */
 _Static_assert(SCN_TRIANGLE_VALUES == 15 && SCN_PRIM_MAX_VALUES == 15,
                "a triangle uses every value of its record");
-static scene_load_status_t load_triangle(struct load *L, uint32_t i, const uint8_t *v,
-                                         scene_prim_t *o)
+static inline scene_load_status_t load_triangle(struct load *L, uint32_t i, const uint8_t *v,
+                                              scene_prim_t *o, const int passed)
 {
     uint32_t over = 0, tex[6];
     if (L->triangle_coords_over) /* else load_scale found every one in range */
@@ -889,6 +891,7 @@ static scene_load_status_t load_triangle(struct load *L, uint32_t i, const uint8
         tex[k] = load_u32(v + 36 + 4 * k);
         over |= (tex[k] & ~LOAD_F32_SIGN) > load_bits_of(SCN_MAX_FACTOR);
     }
+    over &= !passed;
     if (over)
         return load_range(L, "prim ", i, "a value is");
     o->kind = SCENE_PRIM_TRIANGLE;
@@ -903,7 +906,7 @@ static scene_load_status_t load_triangle(struct load *L, uint32_t i, const uint8
         o->shape.triangle.tex_v[k] = num_from_f32_bits(tex[3 + k]);
     }
     o->shape.triangle.smooth = 0;
-    if (load_sliver(o->shape.triangle.v, L->len_exp))
+    if (!passed && load_sliver(o->shape.triangle.v, L->len_exp))
         return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
                         "degenerate or sliver triangle (a height under "
                         "SCN_MIN_TRIANGLE_HEIGHT / 8)");
@@ -935,8 +938,9 @@ static scene_load_status_t load_cone(struct load *L, const uint8_t *v, scene_pri
     return SCENE_LOAD_OK;
 }
 
-static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
-                                      scene_density_component_t *comps)
+/* The primitives, with passed a constant (L->passed: load_geometry). */
+LOAD_INLINE scene_load_status_t load_prims_as(struct load *L, scene_prim_t *out,
+                                              scene_density_component_t *comps, const int passed)
 {
     uint32_t n_mat = L->sec[SCN_SEC_MATERIALS].count;
     uint32_t n_clu = L->sec[SCN_SEC_CLUSTERS].count;
@@ -962,7 +966,7 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
             count == 0) {
             out[i].cluster = clu;
             out[i].material = mat;
-            LOAD_TRY(load_triangle(L, i, v, &out[i]));
+            LOAD_TRY(load_triangle(L, i, v, &out[i], passed));
             continue;
         }
         if (kind == SCN_PRIM_TRIANGLE) /* not taken above: a component range */
@@ -1032,9 +1036,10 @@ static scene_load_status_t load_prims(struct load *L, scene_prim_t *out,
 }
 
 /* The vertex normals of smooth triangles: each record names a triangle,
- * later than the one before, and holds three unit normals. */
-static scene_load_status_t load_normals(struct load *L, scene_prim_t *prims,
-                                        scene_normals_t *out)
+ * later than the one before, and holds three unit normals (passed a
+ * constant, as load_prims_as's). */
+LOAD_INLINE scene_load_status_t load_normals_as(struct load *L, scene_prim_t *prims,
+                                                scene_normals_t *out, const int passed)
 {
     uint32_t n = L->sec[SCN_SEC_NORMALS].present ? L->sec[SCN_SEC_NORMALS].count : 0;
     uint32_t n_prim = L->sec[SCN_SEC_PRIMS].present ? L->sec[SCN_SEC_PRIMS].count : 0;
@@ -1050,10 +1055,12 @@ static scene_load_status_t load_normals(struct load *L, scene_prim_t *prims,
                             "prim index not above the previous record's");
         if (prims[prim].kind != SCENE_PRIM_TRIANGLE)
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "normals ", i, "prim is not a triangle");
-        if (!load_factors(p + SCN_NORMALS_N, 9))
+        if (!passed && !load_factors(p + SCN_NORMALS_N, 9))
             return load_bad(L, SCENE_LOAD_ERR_VALUE, "normals ", i, "a value is not finite");
         for (int k = 0; k < 3; k++) {
             out[i].n[k] = load_vec3(p + SCN_NORMALS_N + 12 * k);
+            if (passed)
+                continue;
             num_t len = vec3_length(out[i].n[k]);
             if (num_lt(len, lo) || num_gt(len, hi))
                 return load_bad(L, SCENE_LOAD_ERR_VALUE, "normals ", i,
@@ -1062,6 +1069,32 @@ static scene_load_status_t load_normals(struct load *L, scene_prim_t *prims,
         prims[prim].shape.triangle.smooth = i + 1;
     }
     return SCENE_LOAD_OK;
+}
+
+/* The primitives and the vertex normals, with passed a constant. */
+LOAD_INLINE scene_load_status_t load_geometry_as(struct load *L, scene_prim_t *prims,
+                                                 scene_density_component_t *comps,
+                                                 scene_normals_t *normals, const int passed)
+{
+    scene_load_status_t st = load_prims_as(L, prims, comps, passed);
+    return st == SCENE_LOAD_OK ? load_normals_as(L, prims, normals, passed) : st;
+}
+
+/* load_geometry_as for a load that checks the values and for one that does
+ * not (L->passed), each compiled apart, not inlined into one function: a
+ * load that checks pays nothing for the one that does not. */
+static __attribute__((noinline)) scene_load_status_t
+load_geometry_checked(struct load *L, scene_prim_t *prims, scene_density_component_t *comps,
+                      scene_normals_t *normals)
+{
+    return load_geometry_as(L, prims, comps, normals, 0);
+}
+
+static __attribute__((noinline)) scene_load_status_t
+load_geometry_passed(struct load *L, scene_prim_t *prims, scene_density_component_t *comps,
+                     scene_normals_t *normals)
+{
+    return load_geometry_as(L, prims, comps, normals, 1);
 }
 
 /* ------------------------------------------------- scaled to the scene */
@@ -1167,12 +1200,13 @@ static int32_t load_scale_prims(struct load *L, int32_t geom)
 {
     uint32_t n_clu = L->sec[SCN_SEC_CLUSTERS].count;
     uint32_t n_comp = L->sec[SCN_SEC_COMPONENTS].count;
+    const int32_t *cexp = L->cexp; /* read once, not after each store */
     const uint8_t *prims = load_rec(L, SCN_SEC_PRIMS, 0);
     for (uint32_t i = 0, n = L->sec[SCN_SEC_PRIMS].count; i < n; i++) {
         const uint8_t *p = prims + (size_t)i * SCN_PRIM_SIZE;
         uint16_t kind = wire_get_u16(p + SCN_PRIM_KIND);
         uint32_t clu = load_u32(p + SCN_PRIM_CLUSTER);
-        int32_t c = clu < n_clu ? L->cexp[clu] : 0;
+        int32_t c = clu < n_clu ? cexp[clu] : 0;
         if (kind == SCN_PRIM_TRIANGLE) { /* the common case, unrolled */
             uint32_t big = load_max_bits(p + SCN_PRIM_VALUES, 9);
             L->triangle_coords_over |= big > load_bits_of(SCN_MAX_COORD);
@@ -1224,7 +1258,7 @@ static int32_t load_scale_view(struct load *L, int32_t geom)
  * clusters' powers of two, eye, look-at, point and spot lights) to 8..16;
  * tol_exp follows the geometry's (all but the eye and the lights).  The
  * values are read unchecked (the checks come after): an index out of
- * range counts as the root.  Known already (scene_load_known_t.scaled):
+ * range counts as the root.  Known already (scene_load_known_t.passed):
  * the clusters' exponents alone. */
 _Static_assert((long long)SCN_MAX_COORD < (1LL << 62) && RENDER_NORM_EXP + 1 - RENDER_NORM_EXP_MIN > 62,
                "SCN_MAX_COORD beyond what RENDER_NORM_EXP_MIN scales to 8..16");
@@ -1232,7 +1266,7 @@ _Static_assert((long)SCN_MAX_FACTOR <= NUM_COORD_LIMIT, "SCN_MAX_FACTOR beyond t
 static scene_load_status_t load_scale(struct load *L, scene_t *s)
 {
     int32_t geom = load_scale_clusters(L);
-    if (L->known && L->known->scaled) {
+    if (L->passed) {
         L->unit_exp = L->len_exp = (int)L->known->unit_exp;
         s->unit_exp = L->known->unit_exp;
         s->tol_exp = L->known->tol_exp;
@@ -1283,6 +1317,7 @@ scene_load_status_t scene_load_summed(const uint8_t *buf, size_t len,
     L.buf = buf;
     L.err = err;
     L.known = known;
+    L.passed = known && known->passed;
     err->status = SCENE_LOAD_OK;
     err->message[0] = 0;
     memset(out, 0, sizeof *out);
@@ -1335,9 +1370,8 @@ scene_load_status_t scene_load_summed(const uint8_t *buf, size_t len,
     if (st == SCENE_LOAD_OK)
         st = load_components(&L, comps);
     if (st == SCENE_LOAD_OK)
-        st = load_prims(&L, prims, comps);
-    if (st == SCENE_LOAD_OK)
-        st = load_normals(&L, prims, normals);
+        st = L.passed ? load_geometry_passed(&L, prims, comps, normals)
+                      : load_geometry_checked(&L, prims, comps, normals);
     if (st == SCENE_LOAD_OK && n_light == 0)
         st = load_fail(&L, SCENE_LOAD_ERR_MISSING, "the scene has no light");
     if (st != SCENE_LOAD_OK) {

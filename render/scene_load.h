@@ -51,13 +51,17 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena,
  * work it out again: the body's word sum (proto/wordsum.h, bytes
  * SCN_SUM_START .. len - 1), read once to check the upload, and, when a
  * load of the same bytes in another arithmetic passed (the DM's narrow load
- * before its wide one), that load's scaling: the loads' exponents are
- * integer work on the same bits, the same in every arithmetic. */
+ * before its wide one), that load's scaling (its exponents are integer
+ * work on the same bits, the same in every arithmetic) and the checks it
+ * made of the values. */
 typedef struct {
     uint32_t body_sum; /* compared with the header's instead of the bytes summed */
-    int scaled;        /* 1: unit_exp and tol_exp below are the scene's
-                          (scene_t's), and every triangle coordinate is in
-                          range: load_scale does not look at the values */
+    int passed;        /* 1: a load of these bytes passed.  unit_exp and
+                          tol_exp below are its scene's (scene_t's), so
+                          load_scale does not look at the values, and a
+                          triangle's values and vertex normals are not
+                          checked again (in range, no sliver, unit
+                          length); the records' indices and kinds are */
     int32_t unit_exp, tol_exp;
 } scene_load_known_t;
 

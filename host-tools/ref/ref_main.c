@@ -27,6 +27,8 @@
 #include "host-tools/scene/scene_opts.h"
 #include "host-tools/scene/scene_paper.h"
 #include "host-tools/ref/ref_opts.h"
+#include "proto/scene_format.h"
+#include "proto/wire.h"
 #include "render/blob.h"
 #include "render/clip.h"
 #include "render/lightbuf.h"
@@ -122,8 +124,11 @@ static void ref_wide_free(struct ref_wide *w)
     memset(w, 0, sizeof *w);
 }
 
-/* Loads the wide blob of the compiled scene; 0, or -1 after saying why. */
-static int ref_wide_load(const char *in, const uint8_t *bytes, size_t len, struct ref_wide *w)
+/* Loads the wide blob of the compiled scene, told what the narrow load
+ * found (scene, loaded from the same bytes), as the DM does; 0, or -1
+ * after saying why. */
+static int ref_wide_load(const char *in, const uint8_t *bytes, size_t len, const scene_t *scene,
+                         struct ref_wide *w)
 {
     char why[RENDER_BLOB_MSG_MAX];
     memset(w, 0, sizeof *w);
@@ -147,8 +152,9 @@ static int ref_wide_load(const char *in, const uint8_t *bytes, size_t len, struc
         ref_wide_free(w);
         return -1;
     }
-    if (RENDER_WIDE(wide_blob_load)(bytes, len, NULL, w->block, w->size, "the wide blob", 0, why,
-                                    sizeof why) != 0) {
+    scene_load_known_t known = scene_load_known_of(scene, wire_get_u32(bytes + SCN_HDR_SUM));
+    if (RENDER_WIDE(wide_blob_load)(bytes, len, &known, w->block, w->size, "the wide blob", 0,
+                                    why, sizeof why) != 0) {
         fprintf(stderr, "links1 ref: %s: --escalate: %s\n", in, why);
         ref_wide_free(w);
         return -1;
@@ -462,7 +468,7 @@ int main(int argc, char **argv)
     struct ref_wide wide;
     memset(&wide, 0, sizeof wide);
     if (rc == 0 && a.escalate)
-        rc = ref_wide_load(in, bytes, len, &wide);
+        rc = ref_wide_load(in, bytes, len, &scene, &wide);
     if (rc == 0 && a.supersample && render_corner_mode(&scene.options)) {
         fprintf(stderr, "links1 ref: %s: --supersample: the scene has %s on\n", in,
                 scene.options.antialias ? "anti-aliasing (aa; --no-aa turns it off)"

@@ -362,7 +362,7 @@ static void test_wide_known_same(void)
         }
         scene_load_known_t known =
             scene_load_known_of(&narrow->scene, wire_get_u32(buf + SCN_HDR_SUM));
-        CHECK(known.scaled && known.unit_exp == narrow->scene.unit_exp);
+        CHECK(known.passed && known.unit_exp == narrow->scene.unit_exp);
         void *alone = tw_wide_blob(names[i], 1, &size);
         void *told = tw_wide_blob_known(names[i], 1, &known, &ksize);
         void *ca = alone ? tw_wide_ctx(alone, size) : NULL;
