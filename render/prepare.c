@@ -739,6 +739,17 @@ static void prep_index_lists(const scene_t *s, scene_group_t *g, uint32_t *child
     }
 }
 
+/* A triangle's spread of map coordinates (scene_index_t.uv_spread). */
+static num_t prep_uv_spread(const scene_prim_t *sp)
+{
+    const num_t *u = sp->shape.triangle.tex_u, *v = sp->shape.triangle.tex_v;
+    num_t spread = NUM_ZERO;
+    for (int k = 1; k < 3; k++)
+        spread = num_add(spread, num_max(num_abs(num_sub(u[k], u[0])),
+                                         num_abs(num_sub(v[k], v[0]))));
+    return spread;
+}
+
 /* Each triangle's texture spread, and each vertex normal's first equal
  * (named: the records a triangle took; cache: prep_share's); the range of
  * the other primitives (out->pointer_lo, pointer_hi).  RENDER_OK, or
@@ -759,10 +770,7 @@ static render_status_t prep_index_triangles(const scene_t *s, const scene_group_
             out->pointer_hi = i + 1;
             continue;
         }
-        const num_t *u = sp->shape.triangle.tex_u, *v = sp->shape.triangle.tex_v;
-        for (int k = 1; k < 3; k++)
-            spread[i] = num_add(spread[i], num_max(num_abs(num_sub(u[k], u[0])),
-                                                   num_abs(num_sub(v[k], v[0]))));
+        spread[i] = prep_uv_spread(sp);
         if (!sp->shape.triangle.smooth)
             continue;
         uint32_t maps = g[sp->cluster].maps_of;
@@ -815,6 +823,35 @@ static render_status_t prep_index_maps(const scene_t *s, const scene_group_t *g,
     return st;
 }
 
+/* The index's arrays (scene_index_t's groups to uv_spread) for s, zeroed
+ * in arena: 1, or 0 when it lacks room.  prep_index_keep puts them in the
+ * index once filled. */
+typedef struct {
+    scene_group_t *groups;
+    uint32_t *child, *plist, *src;
+    num_t *spread;
+} prep_index_arrays_t;
+
+static int prep_index_arrays(const scene_t *s, arena_t *arena, prep_index_arrays_t *a)
+{
+    uint32_t nc = s->cluster_count, np = s->prim_count, nn = s->normals_count;
+    a->groups = ARENA_NEW_ARRAY(arena, scene_group_t, nc);
+    a->child = ARENA_NEW_ARRAY(arena, uint32_t, nc);
+    a->plist = ARENA_NEW_ARRAY(arena, uint32_t, np ? np : 1);
+    a->src = ARENA_NEW_ARRAY(arena, uint32_t, nn ? 3 * (size_t)nn : 1);
+    a->spread = ARENA_NEW_ARRAY(arena, num_t, np ? np : 1);
+    return a->groups && a->child && a->plist && a->src && a->spread;
+}
+
+static void prep_index_keep(const prep_index_arrays_t *a, scene_index_t *out)
+{
+    out->groups = a->groups;
+    out->child_list = a->child;
+    out->prim_list = a->plist;
+    out->normal_src = a->src;
+    out->uv_spread = a->spread;
+}
+
 render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index_t *out)
 {
     __builtin_memset(out, 0, sizeof *out);
@@ -825,13 +862,10 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
     if (nn >= (1u << 29)) /* (j << 2 | k) must fit: 18 GB of normals, more
                              than any arena holds */
         return RENDER_ERR_ARENA;
-    scene_group_t *g = ARENA_NEW_ARRAY(arena, scene_group_t, nc);
-    uint32_t *child = ARENA_NEW_ARRAY(arena, uint32_t, nc);
-    uint32_t *plist = ARENA_NEW_ARRAY(arena, uint32_t, np ? np : 1);
-    uint32_t *src = ARENA_NEW_ARRAY(arena, uint32_t, nn ? 3 * (size_t)nn : 1);
-    num_t *spread = ARENA_NEW_ARRAY(arena, num_t, np ? np : 1);
-    if (!g || !child || !plist || !src || !spread)
+    prep_index_arrays_t a;
+    if (!prep_index_arrays(s, arena, &a))
         return RENDER_ERR_ARENA;
+    scene_group_t *g = a.groups;
     size_t mark = arena->used; /* scratch from here, released below */
     uint8_t *depth = ARENA_NEW_ARRAY(arena, uint8_t, nc);
     uint8_t *named = ARENA_NEW_ARRAY(arena, uint8_t, nn ? nn : 1);
@@ -871,21 +905,42 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
         arena_release_to(arena, mark);
         return st;
     }
-    prep_index_lists(s, g, child, plist);
+    prep_index_lists(s, g, a.child, a.plist);
     /* each vertex normal's first equal (bits and maps), in the order
      * render_prepare maps them: rising primitive index.  (Vertices shared
      * likewise cost more to copy than to map: measured, not kept.) */
-    st = prep_index_triangles(s, g, named, cache, src, spread, out);
+    st = prep_index_triangles(s, g, named, cache, a.src, a.spread, out);
     arena_release_to(arena, mark);
     if (st == RENDER_OK)
         st = prep_index_maps(s, g, own, arena, out);
+    if (st == RENDER_OK)
+        prep_index_keep(&a, out);
+    return st;
+}
+
+render_status_t render_scene_index_same(const scene_t *s, arena_t *arena,
+                                        const scene_index_ints_t *same, scene_index_t *out)
+{
+    __builtin_memset(out, 0, sizeof *out);
+    uint32_t nc = s->cluster_count, np = s->prim_count, nn = s->normals_count;
+    prep_index_arrays_t a;
+    if (!prep_index_arrays(s, arena, &a))
+        return RENDER_ERR_ARENA;
+    memcpy(a.groups, same->groups, sizeof *a.groups * nc);
+    memcpy(a.child, same->child_list, sizeof *a.child * nc);
+    memcpy(a.plist, same->prim_list, sizeof *a.plist * np);
+    memcpy(a.src, same->normal_src, sizeof *a.src * 3 * (size_t)nn);
+    for (uint32_t i = 0; i < np; i++)
+        if (s->prims[i].kind == SCENE_PRIM_TRIANGLE)
+            a.spread[i] = prep_uv_spread(&s->prims[i]);
+    render_status_t st = prep_index_maps(s, a.groups, same->own_count, arena, out);
     if (st != RENDER_OK)
         return st;
-    out->groups = g;
-    out->child_list = child;
-    out->prim_list = plist;
-    out->normal_src = src;
-    out->uv_spread = spread;
+    prep_index_keep(&a, out);
+    out->pointer_lo = same->pointer_lo;
+    out->pointer_hi = same->pointer_hi;
+    out->keyed_lo = same->keyed_lo;
+    out->keyed_hi = same->keyed_hi;
     return RENDER_OK;
 }
 

@@ -217,6 +217,21 @@ typedef struct {
                                     [keyed_lo, keyed_hi) (0, 0: none) */
 } scene_index_t;
 
+/* What of a scene_index_t is the same in every arithmetic: integers
+ * worked out from the same bytes by the same decisions (a plain cluster,
+ * a vertex normal equal to another, bit for bit, in both).  Another
+ * arithmetic's load of the same bytes takes them over
+ * (scene_load_known_t.index) instead of working them out again. */
+typedef struct {
+    const scene_group_t *groups;  /* cluster_count */
+    const uint32_t *child_list;   /* cluster_count */
+    const uint32_t *prim_list;    /* prim_count */
+    const uint32_t *normal_src;   /* 3 per normals record */
+    const uint32_t *own_list;     /* own_count */
+    uint32_t own_count;
+    uint32_t pointer_lo, pointer_hi, keyed_lo, keyed_hi;
+} scene_index_ints_t;
+
 enum scene_prim_kind {
     SCENE_PRIM_TRIANGLE = 0,
     SCENE_PRIM_ELLIPSOID = 1,

@@ -1302,9 +1302,28 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
     return scene_load_summed(buf, len, NULL, arena, out, err);
 }
 
+/* The scene's index: the load that passed's, where it hands it over
+ * (scene_load_known_t.index), else worked out. */
+static render_status_t load_index(const struct load *L, arena_t *arena, scene_t *out)
+{
+    if (L->passed && L->known->index.groups)
+        return render_scene_index_same(out, arena, &L->known->index, &out->index);
+    return render_scene_index(out, arena, &out->index);
+}
+
 scene_load_known_t scene_load_known_of(const scene_t *s, uint32_t body_sum)
 {
-    scene_load_known_t k = {body_sum, 1, s->unit_exp, s->tol_exp};
+    scene_load_known_t k = {body_sum, 1, s->unit_exp, s->tol_exp, {0}};
+#if !defined(LINKS1_NUM_FIXED)
+    /* An IEEE load's values widen exactly: another arithmetic's index
+     * makes the same decisions (a fixed point format rounds them: a
+     * cluster plain there, or two normals equal, may not be so in double) */
+    const scene_index_t *x = &s->index;
+    scene_index_ints_t ints = {x->groups,    x->child_list, x->prim_list, x->normal_src,
+                               x->own_list,  x->own_count,  x->pointer_lo, x->pointer_hi,
+                               x->keyed_lo, x->keyed_hi};
+    k.index = ints;
+#endif
     return k;
 }
 
@@ -1399,7 +1418,7 @@ scene_load_status_t scene_load_summed(const uint8_t *buf, size_t len,
     out->view_keys = view_keys;
     out->view_key_count = n_vkey;
     /* the static structure every frame's preparation reads, once a load */
-    render_status_t rs = render_scene_index(out, arena, &out->index);
+    render_status_t rs = load_index(&L, arena, out);
     if (rs != RENDER_OK) {
         arena_release_to(arena, mark);
         memset(out, 0, sizeof *out);

@@ -63,10 +63,15 @@ typedef struct {
                           checked again (in range, no sliver, unit
                           length); the records' indices and kinds are */
     int32_t unit_exp, tol_exp;
+    scene_index_ints_t index; /* when passed, that load's index's integer
+                                 part (render_scene_index_same) when its
+                                 values widen exactly to this load's (an
+                                 IEEE load's: groups NULL otherwise) */
 } scene_load_known_t;
 
 /* What a load of bytes whose body sums to body_sum found: s, loaded from
- * them, for another arithmetic's load of the same bytes. */
+ * them (its index too, which must stay where it is until the other load
+ * is done), for another arithmetic's load of the same bytes. */
 scene_load_known_t scene_load_known_of(const scene_t *s, uint32_t body_sum);
 
 /* scene_load with what the caller knows (known, or NULL: nothing). */

@@ -12,6 +12,8 @@
  *     frame (parent_maps, in cluster order) the bits a frame would work
  *     out, each shared vertex normal naming the first one with the same
  *     bits and maps, itself first (and the smooth model does share);
+ *     and render_scene_index_same, given the integer part of the index,
+ *     makes it again: every array and count the same;
  *   - a scene the index refuses: a normals record named by two triangles
  *     (RENDER_ERR_PRIM), a cluster whose parent follows it
  *     (RENDER_ERR_CLUSTER).
@@ -156,6 +158,29 @@ static uint32_t ti_parent_maps_bad(const scene_t *s, uint32_t c, uint32_t at)
     return memcmp(&m[0], &to, sizeof to) != 0 || memcmp(&m[1], &from, sizeof from) != 0;
 }
 
+/* ix's arrays and counts as render_scene_index_same makes them again from
+ * its integer part (what another arithmetic's load hands over). */
+static int ti_same_again(const scene_t *s, const scene_index_t *ix, arena_t *arena)
+{
+    scene_index_ints_t ints = {ix->groups,   ix->child_list, ix->prim_list, ix->normal_src,
+                               ix->own_list, ix->own_count,  ix->pointer_lo, ix->pointer_hi,
+                               ix->keyed_lo, ix->keyed_hi};
+    scene_index_t again;
+    size_t nc = s->cluster_count, np = s->prim_count, nn = s->normals_count;
+    return render_scene_index_same(s, arena, &ints, &again) == RENDER_OK &&
+           memcmp(again.groups, ix->groups, sizeof *ix->groups * nc) == 0 &&
+           memcmp(again.child_list, ix->child_list, sizeof(uint32_t) * nc) == 0 &&
+           memcmp(again.prim_list, ix->prim_list, sizeof(uint32_t) * np) == 0 &&
+           memcmp(again.normal_src, ix->normal_src, sizeof(uint32_t) * 3 * nn) == 0 &&
+           memcmp(again.uv_spread, ix->uv_spread, sizeof(num_t) * np) == 0 &&
+           again.parent_map_count == ix->parent_map_count &&
+           memcmp(again.parent_maps, ix->parent_maps, sizeof(xform_t) * ix->parent_map_count) == 0 &&
+           again.own_count == ix->own_count &&
+           memcmp(again.own_list, ix->own_list, sizeof(uint32_t) * ix->own_count) == 0 &&
+           again.pointer_lo == ix->pointer_lo && again.pointer_hi == ix->pointer_hi &&
+           again.keyed_lo == ix->keyed_lo && again.keyed_hi == ix->keyed_hi;
+}
+
 static void test_index_structure(void)
 {
     uint8_t *mem = malloc(TI_ARENA);
@@ -220,6 +245,10 @@ static void test_index_structure(void)
                 bad += !ti_first_equal(&s, ix->normal_src, code, nself, ti_normal, ti_normal_maps);
             }
         }
+        int again = ti_same_again(&s, ix, &arena);
+        if (!again)
+            printf("  %s: render_scene_index_same made another index\n", ti_name(i));
+        bad += !again;
         if (bad)
             printf("  %s: %u entries of the index wrong\n", ti_name(i), (unsigned)bad);
         CHECK_EQ_INT(bad, 0);
