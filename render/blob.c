@@ -170,6 +170,13 @@ render_blob_status_t render_blob_load_summed(const uint8_t *compiled, size_t len
 render_blob_status_t render_blob_prepare(render_blob_t *blob, uint32_t frame_index, size_t size,
                                          render_blob_error_t *err)
 {
+    return render_blob_prepare_parts(blob, frame_index, size, RENDER_PREP_WHOLE, err);
+}
+
+render_blob_status_t render_blob_prepare_parts(render_blob_t *blob, uint32_t frame_index,
+                                               size_t size, enum render_prep_parts parts,
+                                               render_blob_error_t *err)
+{
     blob_ok(err);
     /* the arena as render_blob_load left it: the scene in use, the rest free */
     arena_t arena;
@@ -180,7 +187,8 @@ render_blob_status_t render_blob_prepare(render_blob_t *blob, uint32_t frame_ind
     const render_frame_t *prev = blob->frame;
     blob->frame = NULL;
     render_frame_t *frame;
-    render_status_t st = render_prepare_again(&blob->scene, frame_index, &arena, prev, &frame);
+    render_status_t st =
+        render_prepare_parts(&blob->scene, frame_index, &arena, prev, parts, &frame);
     if (st != RENDER_OK) {
         char why[RENDER_BLOB_MSG_MAX];
         precision_status_message(frame, st, why, sizeof why);

@@ -115,6 +115,10 @@ render_blob_status_t render_blob_load(const uint8_t *compiled, size_t len, void 
                                       render_blob_error_t *err);
 render_blob_status_t render_blob_prepare(render_blob_t *blob, uint32_t frame_index, size_t size,
                                          render_blob_error_t *err);
+/* render_blob_prepare leaving parts of the frame out (render_prepare_parts). */
+render_blob_status_t render_blob_prepare_parts(render_blob_t *blob, uint32_t frame_index,
+                                               size_t size, enum render_prep_parts parts,
+                                               render_blob_error_t *err);
 /* render_blob_load with what the caller knows of the bytes already
  * (scene_load_summed's known: the body's word sum, checked, and perhaps the
  * scaling; NULL: nothing). */

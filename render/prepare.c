@@ -1140,17 +1140,18 @@ static void prep_clip_coverage_set(render_frame_t *f, uint64_t covered, uint64_t
     f->clip_rows = mean > UINT32_MAX ? UINT32_MAX : (uint32_t)mean;
 }
 
-/* Every cluster's box over its subtree, its screen rectangle (world: the
- * whole screen) and tree rectangle, from the own boxes (prep_own_bounds
- * emptied the others); the frame's clip coverage (eye space). */
-static void prep_cluster_tree(const scene_t *s, render_frame_t *f, int world)
+/* Every cluster's box over its subtree, its screen rectangle (whole: the
+ * whole screen, as world space and RENDER_PREP_NO_SCREEN have it) and
+ * tree rectangle, from the own boxes (prep_own_bounds emptied the others);
+ * the frame's clip coverage (not whole). */
+static void prep_cluster_tree(const scene_t *s, render_frame_t *f, int whole)
 {
     /* children have larger indices than parents: one backward pass */
     uint64_t covered = 0, rows = 0; /* pixels, rows under the clusters' own rectangles */
     for (uint32_t i = s->cluster_count; i-- > 0;) {
         render_cluster_t *c = &f->clusters[i];
         prep_aabb_add_box(&c->bounds, &c->own_bounds);
-        if (world) {
+        if (whole) {
             c->screen_x0 = c->screen_y0 = 0;
             c->screen_x1 = f->width - 1;
             c->screen_y1 = f->height - 1;
@@ -1165,7 +1166,7 @@ static void prep_cluster_tree(const scene_t *s, render_frame_t *f, int world)
             prep_tree_rect_add(p, c->tree_x0, c->tree_y0, c->tree_x1, c->tree_y1);
         }
     }
-    if (!world)
+    if (!whole)
         prep_clip_coverage_set(f, covered, rows);
 }
 
@@ -1215,7 +1216,7 @@ static void prep_moved_ancestors(const scene_t *s, prep_moves_t *mv, uint32_t n)
  * world, the whole screen's, as prep_cluster_tree makes them; eye space,
  * its own box's (prep_screen_rect, made again when its own primitives
  * moved, the pixels and rows it covers taken off and added back) and the
- * tree rectangle over it and its children's. */
+ * tree rectangle over it and its children's (screenless: as world). */
 static void prep_moved_cluster(render_frame_t *f, const scene_index_t *ix, uint32_t c,
                                int own_moved)
 {
@@ -1225,7 +1226,7 @@ static void prep_moved_cluster(render_frame_t *f, const scene_index_t *ix, uint3
     for (uint32_t k = g->child_count; k-- > 0;)
         prep_aabb_add_box(&cl->bounds, &f->clusters[ix->child_list[g->first_child + k]].bounds);
     prep_aabb_add_box(&cl->bounds, &cl->own_bounds);
-    if (f->world) {
+    if (f->world || f->screenless) {
         cl->tree_x0 = cl->tree_y0 = 0;
         cl->tree_x1 = f->width - 1;
         cl->tree_y1 = f->height - 1;
@@ -1273,7 +1274,7 @@ static void prep_moved_boxes(render_frame_t *f, const scene_index_t *ix, const u
         prep_moved_cluster(f, ix, c, moved[c] & PREP_OWN_MOVED);
         top--;
     }
-    if (!f->world)
+    if (!f->world && !f->screenless)
         prep_clip_coverage_set(f, f->clip_covered, f->clip_covered_rows);
 }
 
@@ -1353,6 +1354,7 @@ typedef struct {
                                part, or in eye space its primitives and
                                boxes seen from the same camera */
     int world;              /* options.world_space */
+    int screenless;         /* RENDER_PREP_NO_SCREEN */
     scene_index_t ix;
     scene_camera_t camera;
     scene_light_t lights[RENDER_MAX_LIGHTS];
@@ -1372,7 +1374,8 @@ typedef struct {
 static render_status_t prep_frame_alloc(prep_run_t *r, const render_frame_t *prev)
 {
     const scene_t *s = r->s;
-    r->may_keep = prev && prev->world == r->world && prev->scene == s;
+    r->may_keep = prev && prev->world == r->world && prev->screenless == r->screenless &&
+                  prev->scene == s;
     if (r->may_keep)
         r->old = *prev;
     render_frame_t *f = ARENA_NEW_ARRAY(r->arena, render_frame_t, 1);
@@ -1407,6 +1410,7 @@ static void prep_frame_header(prep_run_t *r)
         f->density_inv_radius2[k] = num_div(num_recip(d), d);
     }
     f->scene = s;
+    f->screenless = (uint8_t)r->screenless;
     f->frame_index = r->frame_index;
     f->options = s->options;
     f->width = s->width;
@@ -1530,7 +1534,7 @@ static render_status_t prep_whole(prep_run_t *r, num_t pad)
     arena_release_to(r->arena, r->mark);
     for (uint32_t i = 0; i < s->cluster_count; i++)
         prep_own_bounds(f, &r->ix, i);
-    prep_cluster_tree(s, f, r->world);
+    prep_cluster_tree(s, f, r->world || r->screenless);
     prep_lights(s, r->lights, r->root_to, f);
     render_status_t st = precision_check(f, &r->ix);
     if (r->world) {
@@ -1582,6 +1586,13 @@ static render_status_t prep_maps_and_prims(prep_run_t *r, render_frame_t **out)
 render_status_t render_prepare_again(const scene_t *s, uint32_t frame_index, arena_t *arena,
                                      const render_frame_t *prev, render_frame_t **out)
 {
+    return render_prepare_parts(s, frame_index, arena, prev, RENDER_PREP_WHOLE, out);
+}
+
+render_status_t render_prepare_parts(const scene_t *s, uint32_t frame_index, arena_t *arena,
+                                     const render_frame_t *prev, enum render_prep_parts parts,
+                                     render_frame_t **out)
+{
     *out = NULL;
     render_status_t st = prep_check(s);
     if (st != RENDER_OK)
@@ -1592,6 +1603,7 @@ render_status_t render_prepare_again(const scene_t *s, uint32_t frame_index, are
     r.frame_index = frame_index;
     r.arena = arena;
     r.world = s->options.world_space != 0;
+    r.screenless = parts == RENDER_PREP_NO_SCREEN;
     st = prep_frame_alloc(&r, prev);
     if (st != RENDER_OK)
         return st;

@@ -215,6 +215,9 @@ typedef struct {
     uint8_t world;
     uint8_t world_lost;            /* world: precision_lost of the world part
                                       alone (the camera's added after) */
+    uint8_t screenless;            /* RENDER_PREP_NO_SCREEN: no screen
+                                      rectangles (every one the whole
+                                      screen), no clip coverage */
     uint8_t kept;                  /* 1 if this frame kept the world part
                                       (eye space: the primitives and boxes)
                                       of the frame before, 2 if it prepared
@@ -341,6 +344,20 @@ render_status_t render_prepare(const scene_t *scene, uint32_t frame_index,
  * kept when it would come out the same (render_frame_t.world). */
 render_status_t render_prepare_again(const scene_t *scene, uint32_t frame_index, arena_t *arena,
                                      const render_frame_t *prev, render_frame_t **out);
+/* What render_prepare_parts leaves out of a frame. */
+enum render_prep_parts {
+    RENDER_PREP_WHOLE,     /* nothing */
+    RENDER_PREP_NO_SCREEN, /* the screen rectangles (each cluster's the
+                              whole screen) and clip coverage: a frame
+                              only render_pixel walks, which searches the
+                              tree without them (escalation's wide frame,
+                              render/wide.h) */
+};
+/* render_prepare_again leaving parts out; prev is kept from only when it
+ * left out the same. */
+render_status_t render_prepare_parts(const scene_t *scene, uint32_t frame_index, arena_t *arena,
+                                     const render_frame_t *prev, enum render_prep_parts parts,
+                                     render_frame_t **out);
 
 /* 1 when world-space frames a and b of scene s have the same world part,
  * byte for byte as a fresh preparation writes it: every keyed cluster map

@@ -52,8 +52,10 @@ int RENDER_WIDE(wide_blob_prepare)(void *block, uint32_t frame_index, size_t siz
     render_blob_error_t err;
     const render_blob_t *open;
     render_blob_status_t st = render_blob_open(block, size, &open, &err);
+    /* no screen rectangles: wide_pixel (render_pixel) walks without them */
     if (st == RENDER_BLOB_OK)
-        st = render_blob_prepare((render_blob_t *)block, frame_index, size, &err);
+        st = render_blob_prepare_parts((render_blob_t *)block, frame_index, size,
+                                       RENDER_PREP_NO_SCREEN, &err);
     return wide_result(st, &err, msg, cap);
 }
 

@@ -12,7 +12,8 @@
  * the same in every arithmetic (bytes, sizes, rgb8_t, render_stats_t).
  *
  *   DM: wide_blob_bytes, then wide_blob_load once per scene and block and
- *       wide_blob_prepare every frame, into the part of the IMSU block past
+ *       wide_blob_prepare every frame (without screen rectangles:
+ *       RENDER_PREP_NO_SCREEN), into the part of the IMSU block past
  *       the narrow blob's bound (render_blob_t.wide_offset says where).
  *   RC: wide_blob_copy_frame, after render_blob_copy_frame, at the same
  *       offset of the broadcast block.

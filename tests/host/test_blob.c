@@ -426,6 +426,64 @@ static void test_blob_load_then_prepare(void)
     free(buf);
 }
 
+/* Frame f's clusters all cover the whole screen (screen and tree
+ * rectangles), as RENDER_PREP_NO_SCREEN leaves them. */
+static int tb_whole_screen(const render_frame_t *f)
+{
+    int32_t w = (int32_t)f->width - 1, h = (int32_t)f->height - 1;
+    for (uint32_t i = 0; i < f->cluster_count; i++) {
+        const render_cluster_t *c = &f->clusters[i];
+        if (c->screen_x0 != 0 || c->screen_y0 != 0 || c->screen_x1 != w || c->screen_y1 != h ||
+            c->tree_x0 != 0 || c->tree_y0 != 0 || c->tree_x1 != w || c->tree_y1 != h)
+            return 0;
+    }
+    return f->screenless;
+}
+
+/* RENDER_PREP_NO_SCREEN (the wide frame's): frame after frame of name in
+ * one block, every rectangle the whole screen, the primitives byte for
+ * byte the whole frame's and every pixel (render_pixel's tree walk) the
+ * same; the frames it prepared, or -1 at the first that differs. */
+static int tb_no_screen_frames(const char *name)
+{
+    size_t len, need;
+    render_blob_error_t err;
+    uint8_t *buf = tb_compile_div(name, 4, &len);
+    int ok = buf && render_blob_bytes(buf, len, &need, &err) == RENDER_BLOB_OK;
+    uint8_t *a = ok ? tb_block(need) : NULL, *b = ok ? tb_block(need) : NULL;
+    render_blob_t *none = NULL, *whole = NULL;
+    ok = a && b && render_blob_load(buf, len, a, need, NULL, &none, &err) == RENDER_BLOB_OK &&
+         render_blob_load(buf, len, b, need, NULL, &whole, &err) == RENDER_BLOB_OK;
+    int frames = 0;
+    for (uint32_t k = 0; ok && k < none->scene.frame_count && k < 4; k++, frames++) {
+        ok = render_blob_prepare_parts(none, k, need, RENDER_PREP_NO_SCREEN, &err) ==
+                 RENDER_BLOB_OK &&
+             render_blob_prepare(whole, k, need, &err) == RENDER_BLOB_OK;
+        const render_frame_t *fn = ok ? none->frame : NULL, *fw = ok ? whole->frame : NULL;
+        ok = ok && tb_whole_screen(fn) && !fw->screenless &&
+             memcmp(fn->prims, fw->prims, sizeof *fn->prims * fn->prim_count) == 0;
+        rgb8_t *in = ok ? tb_render_plain(fn, NULL) : NULL;
+        rgb8_t *iw = ok ? tb_render_plain(fw, NULL) : NULL;
+        ok = in && iw && memcmp(in, iw, sizeof *in * fn->width * fn->height) == 0;
+        free(in);
+        free(iw);
+    }
+    if (!ok)
+        printf("  %s: frame %d of RENDER_PREP_NO_SCREEN differs\n", name, frames);
+    free(a);
+    free(b);
+    free(buf);
+    return ok ? frames : -1;
+}
+
+/* The same on anim (most clusters moving: each frame prepared whole) and
+ * pendulum (a few: only those prepared again). */
+static void test_blob_no_screen(void)
+{
+    CHECK(tb_no_screen_frames("anim") >= 3);
+    CHECK(tb_no_screen_frames("pendulum") >= 3);
+}
+
 /* The RC's frame-only forwarding: the DM's two blocks A and B hold one
  * load of anim (scene_id 7), frames 0 and 1; A is copied whole into the
  * broadcast block C, then B's frame into C alone (render_blob_copy_frame):
@@ -666,6 +724,7 @@ int main(void)
     RUN(test_blob_detail);
     RUN(test_blob_load_then_prepare);
     RUN(test_blob_copy_frame_only);
+    RUN(test_blob_no_screen);
     RUN(test_blob_world_space_keeps);
     RUN(test_blob_eye_space_keeps);
     RUN(test_blob_copy_world_header);
