@@ -9,8 +9,8 @@ per translated block), ELF the firmware that ran.  Each block's count goes
 to the source line of its first instruction (addr2line -i: the innermost
 of its inline chain), and to every function on that chain once.  With
 --function, only the blocks whose outermost function is NAME (the function
-as the source names it: render_prepare_again for the symbol
-render_prepare_again.part.0.constprop.0).
+as the source names it: render_prepare_parts for the symbol
+render_prepare_parts.part.0.constprop.0).
 
 Prints "total N", then the top N lines ("COUNT SHARE FUNCTION FILE:LINE"),
 then "inclusive", then the top N functions by their inline chains

@@ -2,7 +2,7 @@
 # The counting plugin's profile (links1 render --insn-profile): by default
 # the NCs' instructions, among which the renderer's per-pixel functions and
 # none of the DM's preparation; with --insn-profile-core 0 the DM's alone,
-# with render_prepare_again (render_prepare's work) and no per-pixel function; on the an521 boards the
+# with render_prepare_parts (every preparation's work) and no per-pixel function; on the an521 boards the
 # same for the DM (board 0's vCPU 0).  A core the board does not have is
 # refused before it boots.  Functions come from tests/bench/insn_funcs.sh;
 # tests/bench/insn_lines.py gives a function's blocks the same total.
@@ -26,7 +26,7 @@ check() {
     fi
     f=$(bash tests/bench/insn_funcs.sh "$prof" "$elf" 2>&1 | tee "$T/$name.funcs")
     px=$(awk '$1 == "render_pixel_impl" { n = $2 } END { print n + 0 }' <<<"$f")
-    prep=$(awk '$1 == "render_prepare" || $1 == "render_prepare_again" { n += $2 } END { print n + 0 }' <<<"$f")
+    prep=$(awk '$1 == "render_prepare_parts" { n += $2 } END { print n + 0 }' <<<"$f")
     if [ "$want" = ncs ] && [ "$px" -gt 0 ] && [ "$prep" = 0 ]; then
         echo "PASS $name (render_pixel_impl $px)"
     elif [ "$want" = dm ] && [ "$prep" -gt 0 ] && [ "$px" = 0 ]; then
