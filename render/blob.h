@@ -120,8 +120,8 @@ render_blob_status_t render_blob_prepare_parts(render_blob_t *blob, uint32_t fra
                                                size_t size, enum render_prep_parts parts,
                                                render_blob_error_t *err);
 /* render_blob_load with what the caller knows of the bytes already
- * (scene_load_summed's known: the body's word sum, checked, and perhaps the
- * scaling; NULL: nothing). */
+ * (scene_load_summed's known: the body's word sum, checked, and perhaps
+ * what another arithmetic's load of them found; NULL: nothing). */
 render_blob_status_t render_blob_load_summed(const uint8_t *compiled, size_t len,
                                              const scene_load_known_t *known, void *block,
                                              size_t size,

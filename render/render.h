@@ -384,10 +384,10 @@ size_t render_prepare_frame_bytes_layout(const scene_t *scene, const render_layo
  * RENDER_ERR_ARENA when arena lacks render_scene_index_bytes. */
 render_status_t render_scene_index(const scene_t *scene, arena_t *arena, scene_index_t *out);
 /* render_scene_index of a scene whose bytes another arithmetic's load
- * indexed already, with its checks: same, that index's integer part, is
- * copied, and what depends on the arithmetic (uv_spread, parent_maps)
- * worked out.  RENDER_ERR_ARENA, or a parent map precision_invert cannot
- * invert. */
+ * indexed already, with its checks: same, that index's integer part (its
+ * counts the scene's: the caller checks), is copied, and what depends on
+ * the arithmetic (uv_spread, parent_maps) worked out.  RENDER_ERR_ARENA,
+ * or a parent map precision_invert cannot invert. */
 render_status_t render_scene_index_same(const scene_t *scene, arena_t *arena,
                                         const scene_index_ints_t *same, scene_index_t *out);
 /* Arena bytes render_scene_index needs at most (its arrays, its scratch

@@ -223,11 +223,11 @@ typedef struct {
  * arithmetic's load of the same bytes takes them over
  * (scene_load_known_t.index) instead of working them out again. */
 typedef struct {
+    uint32_t cluster_count, prim_count, normals_count; /* the scene's */
     const scene_group_t *groups;  /* cluster_count */
     const uint32_t *child_list;   /* cluster_count */
     const uint32_t *prim_list;    /* prim_count */
     const uint32_t *normal_src;   /* 3 per normals record */
-    const uint32_t *own_list;     /* own_count */
     uint32_t own_count;
     uint32_t pointer_lo, pointer_hi, keyed_lo, keyed_hi;
 } scene_index_ints_t;

@@ -1302,12 +1302,14 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
     return scene_load_summed(buf, len, NULL, arena, out, err);
 }
 
-/* The scene's index: the load that passed's, where it hands it over
- * (scene_load_known_t.index), else worked out. */
+/* The scene's index: the load that passed's, where it hands one over
+ * (scene_load_known_t.index) of a scene of these counts, else worked out. */
 static render_status_t load_index(const struct load *L, arena_t *arena, scene_t *out)
 {
-    if (L->passed && L->known->index.groups)
-        return render_scene_index_same(out, arena, &L->known->index, &out->index);
+    const scene_index_ints_t *same = L->passed ? &L->known->index : NULL;
+    if (same && same->groups && same->cluster_count == out->cluster_count &&
+        same->prim_count == out->prim_count && same->normals_count == out->normals_count)
+        return render_scene_index_same(out, arena, same, &out->index);
     return render_scene_index(out, arena, &out->index);
 }
 
@@ -1319,9 +1321,10 @@ scene_load_known_t scene_load_known_of(const scene_t *s, uint32_t body_sum)
      * makes the same decisions (a fixed point format rounds them: a
      * cluster plain there, or two normals equal, may not be so in double) */
     const scene_index_t *x = &s->index;
-    scene_index_ints_t ints = {x->groups,    x->child_list, x->prim_list, x->normal_src,
-                               x->own_list,  x->own_count,  x->pointer_lo, x->pointer_hi,
-                               x->keyed_lo, x->keyed_hi};
+    scene_index_ints_t ints = {s->cluster_count, s->prim_count,  s->normals_count,
+                               x->groups,        x->child_list,  x->prim_list,
+                               x->normal_src,    x->own_count,   x->pointer_lo,
+                               x->pointer_hi,    x->keyed_lo,    x->keyed_hi};
     k.index = ints;
 #endif
     return k;

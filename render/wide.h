@@ -9,7 +9,8 @@
  * that copy is renamed wide_NAME when it is linked (the Makefile's "wide
  * renderer" rules), so the two copies live side by side.  The entry points
  * below are the only way in, and they take and give only types that are
- * the same in every arithmetic (bytes, sizes, rgb8_t, render_stats_t).
+ * the same in every arithmetic (bytes, sizes, rgb8_t, render_stats_t,
+ * scene_load_known_t).
  *
  *   DM: wide_blob_bytes, then wide_blob_load once per scene and block and
  *       wide_blob_prepare every frame (without screen rectangles:
