@@ -5,7 +5,8 @@
  * itself calls only async-signal-safe functions (kill, waitpid, nanosleep,
  * unlink, unlinkat, openat, the getdents64 system call, close, sigaction,
  * sigprocmask, raise, write, _Fork; the command's child then execvp, which
- * allocates nothing in glibc). */
+ * allocates nothing in glibc).  ^Z stops the registered process groups
+ * with the program, and continuing it continues them. */
 #define _GNU_SOURCE
 #include "host-tools/opts/exit_clean.h"
 
@@ -241,6 +242,40 @@ static void ec_handler(int sig)
     _exit(128 + sig);                     /* not reached */
 }
 
+/* sig to every registered process group (exit_clean_add_group): the
+ * terminal's ^Z and fg reach the program's group alone. */
+static void ec_signal_groups(int sig)
+{
+    for (int i = 0; i < EXIT_CLEAN_MAX_CHILDREN; i++) {
+        pid_t v = __atomic_load_n(&ec_children[i], __ATOMIC_SEQ_CST);
+        if (v < 0)
+            ec_kill(v, sig);
+    }
+}
+
+/* ^Z (SIGTSTP): the registered groups stopped (SIGSTOP), then the program
+ * by the default action; continued (fg, bg: SIGCONT), it continues them. */
+static void ec_stop_handler(int sig)
+{
+    int saved = errno, owner = getpid() == ec_owner;
+    if (owner)
+        ec_signal_groups(SIGSTOP);
+    struct sigaction dfl, old;
+    memset(&dfl, 0, sizeof dfl);
+    dfl.sa_handler = SIG_DFL;
+    sigemptyset(&dfl.sa_mask);
+    sigaction(sig, &dfl, &old);
+    sigset_t one;
+    sigemptyset(&one);
+    sigaddset(&one, sig);
+    raise(sig);
+    sigprocmask(SIG_UNBLOCK, &one, NULL); /* stopped here until SIGCONT */
+    sigaction(sig, &old, NULL);
+    if (owner)
+        ec_signal_groups(SIGCONT);
+    errno = saved;
+}
+
 void exit_clean_install(void)
 {
     ec_owner = getpid();
@@ -258,6 +293,13 @@ void exit_clean_install(void)
         }
         sigaction(ec_signals[i], &sa, NULL);
     }
+    struct sigaction old, stop;
+    memset(&stop, 0, sizeof stop);
+    stop.sa_handler = ec_stop_handler;
+    sigemptyset(&stop.sa_mask);
+    stop.sa_flags = SA_RESTART; /* a wait or read under way goes on once continued */
+    if (sigaction(SIGTSTP, NULL, &old) == 0 && old.sa_handler != SIG_IGN)
+        sigaction(SIGTSTP, &stop, NULL);
 }
 
 int exit_clean_add(const char *path, enum exit_clean_kind kind)

@@ -11,7 +11,9 @@
  * default action (the registry is its parent's).  Nothing can clean up
  * after SIGKILL: the children go too (exit_clean_in_child: the
  * parent-death signal), and tmp_dir_make's directories are swept by a
- * later run (tmp_dir.h). */
+ * later run (tmp_dir.h).  SIGTSTP (^Z) stops every registered process
+ * group (exit_clean_add_group: out of the terminal's reach) and then the
+ * program; when the program is continued, so are they. */
 #ifndef LINKS1_HOST_OPTS_EXIT_CLEAN_H
 #define LINKS1_HOST_OPTS_EXIT_CLEAN_H
 
@@ -30,8 +32,8 @@ enum exit_clean_kind {
     EXIT_CLEAN_DIR,  /* removed with everything under it */
 };
 
-/* The handlers for SIGINT, SIGTERM and SIGHUP (a signal ignored when the
- * program started, e.g. SIGHUP under nohup, stays ignored). */
+/* The handlers for SIGINT, SIGTERM, SIGHUP and SIGTSTP (a signal ignored
+ * when the program started, e.g. SIGHUP under nohup, stays ignored). */
 void exit_clean_install(void);
 
 /* path removed if a signal ends the program.  0, or -1 (the registry is

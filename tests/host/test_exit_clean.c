@@ -5,7 +5,8 @@
  * SIGHUP: it dies of that signal, the directory and the temporary file are
  * gone, the link's target is untouched and the child has ended, and so
  * has what a child registered as a process group (exit_clean_add_group)
- * started without exec, as a $QEMU wrapper script starts QEMU; a
+ * started without exec, as a $QEMU wrapper script starts QEMU; SIGTSTP
+ * (^Z) stops such a group with the program and SIGCONT continues both; a
  * directory unregistered stays; a child the program forks (not exec'ed)
  * that gets the signal just dies, leaving its parent's files; stale
  * links1-WHAT-PID-* directories of a dead process are swept by the next
@@ -44,18 +45,33 @@ struct report {
     pid_t group_leader, group_member; /* exit_clean_add_group's, and its child */
 };
 
-/* A zombie counts as gone: an orphan waits there for init to reap it. */
-static int gone(pid_t pid)
+/* pid's state letter in /proc (R, S, T, Z, ...), 0 when it is gone. */
+static char state_of(pid_t pid)
 {
     char path[64], stat[256] = "";
     snprintf(path, sizeof path, "/proc/%d/stat", (int)pid);
     int fd = open(path, O_RDONLY);
     if (fd < 0)
-        return 1;
+        return 0;
     ssize_t n = read(fd, stat, sizeof stat - 1);
     close(fd);
     const char *end = n > 0 ? strrchr(stat, ')') : NULL; /* "pid (comm) S ..." */
-    return end && end[1] == ' ' && end[2] == 'Z';
+    return end && end[1] == ' ' ? end[2] : 0;
+}
+
+/* A zombie counts as gone: an orphan waits there for init to reap it. */
+static int gone(pid_t pid)
+{
+    char st = state_of(pid);
+    return st == 0 || st == 'Z';
+}
+
+/* pid stopped (want 1) or not (0) within two seconds */
+static int stopped_soon(pid_t pid, int want)
+{
+    for (int i = 0; i < 200 && (state_of(pid) == 'T') != want; i++)
+        usleep(10000);
+    return (state_of(pid) == 'T') == want;
 }
 
 /* gone(pid) within two seconds */
@@ -182,6 +198,43 @@ static void check_signal(int sig, int keep_one)
     }
 }
 
+/* ^Z: a program with a group registered gets SIGTSTP: it stops, and so
+ * does the group (its leader and the process the leader started); SIGCONT
+ * continues all three; SIGTERM then ends them. */
+static void exit_clean_sigtstp_stops_groups(void)
+{
+    int fds[2];
+    CHECK(pipe(fds) == 0);
+    pid_t pid = fork();
+    if (pid == 0) {
+        close(fds[0]);
+        signal(SIGTSTP, SIG_DFL); /* a test run in the background may ignore it */
+        exit_clean_install();
+        pid_t pids[2];
+        pids[0] = start_group(&pids[1]);
+        if (write(fds[1], pids, sizeof pids) != (ssize_t)sizeof pids)
+            _exit(2);
+        for (;;)
+            pause();
+    }
+    close(fds[1]);
+    pid_t pids[2] = {0, 0};
+    int got = read(fds[0], pids, sizeof pids) == (ssize_t)sizeof pids;
+    close(fds[0]);
+    CHECK(got);
+    int st = 0;
+    kill(pid, SIGTSTP);
+    CHECK(waitpid(pid, &st, WUNTRACED) == pid && WIFSTOPPED(st));
+    CHECK(got && stopped_soon(pids[0], 1) && stopped_soon(pids[1], 1));
+    kill(pid, SIGCONT);
+    CHECK(waitpid(pid, &st, WCONTINUED) == pid && WIFCONTINUED(st));
+    CHECK(got && stopped_soon(pids[0], 0) && stopped_soon(pids[1], 0));
+    kill(pid, SIGTERM);
+    waitpid(pid, &st, 0);
+    CHECK(WIFSIGNALED(st) && WTERMSIG(st) == SIGTERM);
+    CHECK(got && gone_soon(pids[0]) && gone_soon(pids[1]));
+}
+
 static void exit_clean_sigterm_cleans(void) { check_signal(SIGTERM, 0); }
 static void exit_clean_sigint_cleans(void) { check_signal(SIGINT, 1); }
 static void exit_clean_sighup_cleans(void) { check_signal(SIGHUP, 0); }
@@ -249,6 +302,7 @@ int main(void)
     RUN(exit_clean_sigterm_cleans);
     RUN(exit_clean_sigint_cleans);
     RUN(exit_clean_sighup_cleans);
+    RUN(exit_clean_sigtstp_stops_groups);
     RUN(exit_clean_forked_child_leaves_parent);
     RUN(exit_clean_stale_swept);
     unlink(outside);

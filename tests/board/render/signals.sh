@@ -7,6 +7,8 @@
 #   no .OUT.* beside the film) and no child of its running;
 #   a render whose $QEMU is a wrapper script that starts the emulator as
 #   its child, not by exec (SIGTERM): the emulator ends with it;
+#   a render given SIGTSTP (^Z): its QEMU stops too, and runs again after
+#   SIGCONT;
 #   ref --arith auto killed with SIGKILL: its children end (the
 #   parent-death signal) and the next run sweeps the directory it left;
 #   while an an521 render counts, every counting file QEMU is told of is
@@ -16,7 +18,7 @@
 . "$(dirname "$0")/../lib.sh"
 . "$(dirname "$0")/../other_user_lib.sh"
 CHECKS="signals_render_film_int signals_render_insns_term signals_wrapper_qemu_term
-signals_an521_counts_private
+signals_tstp_stops_qemu signals_an521_counts_private
 signals_an521_hup signals_ref_auto_term signals_ref_auto_kill_children signals_ref_auto_sweep
 signals_plugin_refuses_link"
 board_ready $CHECKS || exit 0
@@ -115,6 +117,32 @@ if wait_for 90 test -s "$T/wrapped.pid"; then
     fi
 else
     echo "FAIL signals_wrapper_qemu_term: the wrapper never started QEMU: $(tail -n 1 "$T/wrap.log")"
+    kill -KILL "$pid" 2>/dev/null; wait "$pid" 2>/dev/null
+fi
+rm -rf "${TMPDIR:?}"/* "$T"/out/* "$T"/out/.[!.]*
+
+# ^Z: links1 stops, and so does its QEMU (a process group of its own, out
+# of the terminal's reach); continued, QEMU runs again.
+"${L1[@]}" render scenes/fly.scn --frames 0:11 -o "$T/out/z.apng" --size 256x192 --quiet \
+    >"$T/tstp.log" 2>&1 &
+pid=$!
+qstate() { ps -o stat= -p "$1" 2>/dev/null | cut -c1; }
+if wait_for 90 bash -c "pgrep -P $pid >/dev/null"; then
+    sleep 1
+    q=$(pgrep -P "$pid" | head -n 1)
+    kill -TSTP "$pid"
+    wait_for 5 eval '[ "$(qstate "$q")" = T ]' && stopped=1 || stopped=0
+    kill -CONT "$pid"
+    wait_for 5 eval '[ "$(qstate "$q")" != T ]' && again=1 || again=0
+    kill -TERM "$pid"
+    wait "$pid" 2>/dev/null
+    if [ "$stopped" = 1 ] && [ "$again" = 1 ]; then
+        echo "PASS signals_tstp_stops_qemu (QEMU $q stopped with ^Z, running again after SIGCONT)"
+    else
+        echo "FAIL signals_tstp_stops_qemu: QEMU $q stopped $stopped, running again $again"
+    fi
+else
+    echo "FAIL signals_tstp_stops_qemu: the render never started QEMU: $(tail -n 1 "$T/tstp.log")"
     kill -KILL "$pid" 2>/dev/null; wait "$pid" 2>/dev/null
 fi
 rm -rf "${TMPDIR:?}"/* "$T"/out/* "$T"/out/.[!.]*
