@@ -42,6 +42,12 @@ wait_for() {
 have() { compgen -G "$1" >/dev/null; } # have GLOB: something matches
 children_of() { pgrep -P "$1" | tr '\n' ' '; }
 all_gone() { local p; for p in "$@"; do kill -0 "$p" 2>/dev/null && return 1; done; return 0; }
+# never_started NAME LOG PID: NAME fails, its command (PID, writing LOG)
+# never got going; PID killed
+never_started() {
+    echo "FAIL $1: it never got going: $(tail -n 1 "$2")"
+    kill -KILL "$3" 2>/dev/null; wait "$3" 2>/dev/null
+}
 # ended PID: gone, or a zombie (an orphan waiting for init to reap it)
 ended() { local s; s=$(ps -o stat= -p "$1" 2>/dev/null); [ -z "$s" ] || [ "${s#Z}" != "$s" ]; }
 
@@ -116,8 +122,7 @@ if wait_for 90 test -s "$T/wrapped.pid"; then
         echo "PASS signals_wrapper_qemu_term (the wrapper's QEMU, pid $q, ended with the command)"
     fi
 else
-    echo "FAIL signals_wrapper_qemu_term: the wrapper never started QEMU: $(tail -n 1 "$T/wrap.log")"
-    kill -KILL "$pid" 2>/dev/null; wait "$pid" 2>/dev/null
+    never_started signals_wrapper_qemu_term "$T/wrap.log" "$pid"
 fi
 rm -rf "${TMPDIR:?}"/* "$T"/out/* "$T"/out/.[!.]*
 
@@ -142,8 +147,7 @@ if wait_for 90 bash -c "pgrep -P $pid >/dev/null"; then
         echo "FAIL signals_tstp_stops_qemu: QEMU $q stopped $stopped, running again $again"
     fi
 else
-    echo "FAIL signals_tstp_stops_qemu: the render never started QEMU: $(tail -n 1 "$T/tstp.log")"
-    kill -KILL "$pid" 2>/dev/null; wait "$pid" 2>/dev/null
+    never_started signals_tstp_stops_qemu "$T/tstp.log" "$pid"
 fi
 rm -rf "${TMPDIR:?}"/* "$T"/out/* "$T"/out/.[!.]*
 
