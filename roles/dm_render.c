@@ -107,8 +107,9 @@ static size_t dm_wide_at(const uint8_t *block)
 
 /* The wide blob (escalation, render/wide.h) loaded past the narrow one in
  * block, held, when the firmware carries the wide arithmetic: part of the
- * scene's load, done with the narrow load in its span, told the narrow
- * load's word sum and scaling (scene_load_known_of).  Refused (no room,
+ * scene's load, done with the narrow load in its span, told what the
+ * narrow load found (scene_load_known_of: its word sum, scaling, checks
+ * and index).  Refused (no room,
  * or the wide loader's checks): wide_refused and wide_why say so, and an
  * escalation asked of this scene is dropped (or fails, checking lost
  * pixels). */
