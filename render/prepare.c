@@ -918,6 +918,16 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
     return st;
 }
 
+scene_index_ints_t render_scene_index_ints(const scene_t *s)
+{
+    const scene_index_t *x = &s->index;
+    scene_index_ints_t ints = {s->cluster_count, s->prim_count,  s->normals_count,
+                               x->groups,        x->child_list,  x->prim_list,
+                               x->normal_src,    x->own_count,   x->pointer_lo,
+                               x->pointer_hi,    x->keyed_lo,    x->keyed_hi};
+    return ints;
+}
+
 render_status_t render_scene_index_same(const scene_t *s, arena_t *arena,
                                         const scene_index_ints_t *same, scene_index_t *out)
 {

@@ -390,6 +390,8 @@ render_status_t render_scene_index(const scene_t *scene, arena_t *arena, scene_i
  * or a parent map precision_invert cannot invert. */
 render_status_t render_scene_index_same(const scene_t *scene, arena_t *arena,
                                         const scene_index_ints_t *same, scene_index_t *out);
+/* The integer part of scene's index (scene->index), for render_scene_index_same. */
+scene_index_ints_t render_scene_index_ints(const scene_t *scene);
 /* Arena bytes render_scene_index needs at most (its arrays, its scratch
  * and alignment): its parent maps as scene->index.parent_map_count says in
  * a shape that carries it (scene_load_shape_maps), else two a cluster;

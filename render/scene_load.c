@@ -1320,12 +1320,7 @@ scene_load_known_t scene_load_known_of(const scene_t *s, uint32_t body_sum)
     /* An IEEE load's values widen exactly: another arithmetic's index
      * makes the same decisions (a fixed point format rounds them: a
      * cluster plain there, or two normals equal, may not be so in double) */
-    const scene_index_t *x = &s->index;
-    scene_index_ints_t ints = {s->cluster_count, s->prim_count,  s->normals_count,
-                               x->groups,        x->child_list,  x->prim_list,
-                               x->normal_src,    x->own_count,   x->pointer_lo,
-                               x->pointer_hi,    x->keyed_lo,    x->keyed_hi};
-    k.index = ints;
+    k.index = render_scene_index_ints(s);
 #endif
     return k;
 }

@@ -122,13 +122,14 @@ static void dm_load_wide(uint8_t *block, int held, size_t size)
     if (r != 0)
         fmt_snprintf(dm_scene.wide_why, sizeof dm_scene.wide_why,
                      "no room past the scene's %zu bytes", ((const render_blob_t *)block)->bound);
-    scene_load_known_t known =
-        scene_load_known_of(&((const render_blob_t *)block)->scene, dm_scene.body_sum);
-    if (r == 0)
+    if (r == 0) {
+        scene_load_known_t known =
+            scene_load_known_of(&((const render_blob_t *)block)->scene, dm_scene.body_sum);
         r = RENDER_WIDE(wide_blob_load)(dm_scene.compiled, dm_scene.len, &known,
                                         block + at, size - at,
                                         "the rest of " MACHINE_IMSU_BLOCK_NAME, dm_scene.load_id,
                                         dm_scene.wide_why, sizeof dm_scene.wide_why);
+    }
     dm_scene.wide_loaded[held] = r == 0;
     if (r != 0)
         dm_scene.wide_refused = 1;

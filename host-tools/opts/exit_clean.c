@@ -117,6 +117,9 @@ static void ec_remove_dir(const char *path)
     rmdir(path);
 }
 
+/* The process a registry value names: v, or -v for its group. */
+static pid_t ec_pid_of(pid_t v) { return v < 0 ? -v : v; }
+
 /* sig to v: a process (v > 0), or -v's process group (v < 0), which is
  * then -v alone when it leads no group yet. */
 static int ec_kill(pid_t v, int sig)
@@ -148,7 +151,7 @@ static void ec_wait(pid_t *pids, int *status, int n)
     for (long waited = 0; left > 0; waited += EXIT_CLEAN_POLL_MS) {
         for (int i = 0; i < n; i++) {
             int st = 0;
-            pid_t pid = pids[i] < 0 ? -pids[i] : pids[i];
+            pid_t pid = ec_pid_of(pids[i]);
             pid_t r = pid ? waitpid(pid, &st, WNOHANG) : 0;
             if (pid && (r == pid || (r < 0 && errno == ECHILD))) {
                 if (status && r == pid)
@@ -163,9 +166,8 @@ static void ec_wait(pid_t *pids, int *status, int n)
     }
     for (int i = 0; i < n; i++) {
         if (pids[i] != 0) {
-            pid_t pid = pids[i] < 0 ? -pids[i] : pids[i];
             ec_kill(pids[i], SIGKILL);
-            waitpid(pid, NULL, 0);
+            waitpid(ec_pid_of(pids[i]), NULL, 0);
         }
     }
 }

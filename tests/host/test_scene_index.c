@@ -162,10 +162,7 @@ static uint32_t ti_parent_maps_bad(const scene_t *s, uint32_t c, uint32_t at)
  * its integer part (what another arithmetic's load hands over). */
 static int ti_same_again(const scene_t *s, const scene_index_t *ix, arena_t *arena)
 {
-    scene_index_ints_t ints = {s->cluster_count, s->prim_count,  s->normals_count,
-                               ix->groups,       ix->child_list, ix->prim_list,
-                               ix->normal_src,   ix->own_count,  ix->pointer_lo,
-                               ix->pointer_hi,   ix->keyed_lo,   ix->keyed_hi};
+    scene_index_ints_t ints = render_scene_index_ints(s);
     scene_index_t again;
     size_t nc = s->cluster_count, np = s->prim_count, nn = s->normals_count;
     return render_scene_index_same(s, arena, &ints, &again) == RENDER_OK &&

@@ -42,6 +42,8 @@ wait_for() {
 have() { compgen -G "$1" >/dev/null; } # have GLOB: something matches
 children_of() { pgrep -P "$1" | tr '\n' ' '; }
 all_gone() { local p; for p in "$@"; do kill -0 "$p" 2>/dev/null && return 1; done; return 0; }
+# clean_out: TMPDIR and the output directory emptied for the next command
+clean_out() { rm -rf "${TMPDIR:?}"/* "$T"/out/* "$T"/out/.[!.]*; }
 # never_started NAME LOG PID: NAME fails, its command (PID, writing LOG)
 # never got going; PID killed
 never_started() {
@@ -83,7 +85,7 @@ interrupt() {
     else
         echo "PASS $name (exit $rc, children $kids gone, nothing left)"
     fi
-    rm -rf "${TMPDIR:?}"/* "$T"/out/* "$T"/out/.[!.]*
+    clean_out
 }
 
 # (256x192, and 128x96 counted: the twelve frames take far longer than the
@@ -124,7 +126,7 @@ if wait_for 90 test -s "$T/wrapped.pid"; then
 else
     never_started signals_wrapper_qemu_term "$T/wrap.log" "$pid"
 fi
-rm -rf "${TMPDIR:?}"/* "$T"/out/* "$T"/out/.[!.]*
+clean_out
 
 # ^Z: links1 stops, and so does its QEMU (a process group of its own, out
 # of the terminal's reach); continued, QEMU runs again.
@@ -149,7 +151,7 @@ if wait_for 90 bash -c "pgrep -P $pid >/dev/null"; then
 else
     never_started signals_tstp_stops_qemu "$T/tstp.log" "$pid"
 fi
-rm -rf "${TMPDIR:?}"/* "$T"/out/* "$T"/out/.[!.]*
+clean_out
 
 # an521: the counting files QEMU is told of, while it runs.
 an521_private() {
@@ -178,7 +180,7 @@ else
     echo "FAIL signals_an521_counts_private: the an521 boards never counted: $(tail -n 1 "$T/an521.log")"
 fi
 kill -KILL "$pid" 2>/dev/null; wait "$pid" 2>/dev/null
-sleep 1; rm -rf "${TMPDIR:?}"/* "$T"/out/* "$T"/out/.[!.]*
+sleep 1; clean_out
 interrupt signals_an521_hup HUP "$TMPDIR/links1-insns-*" \
     "${L1[@]}" render scenes/fly.scn --frames 0:11 -o "$T/out/d.apng" --size 64x48 --quiet \
     --machine an521 --ncs 4 --count-insns
