@@ -7,10 +7,14 @@
  * BVH_BINS - 1 planes between bins on the three axes the one with the least
  *   C_node + C_prim * (A_left * n_left + A_right * n_right) / A_node
  * wins (A: box surface area, n: primitives on each side).  A node becomes a
- * leaf when it holds at most leaf_min primitives (2), or at most leaf_max
- * (8) and no split is cheaper than testing them all (C_prim * n).  When the
+ * leaf when it holds at most leaf_min primitives (2), or at most leaf_cap
+ * (64) and no split is cheaper than testing them all (C_prim * n), a split
+ * counting also the DM's work on its two new clusters each frame
+ * (C_cluster each), spread over the rays expected through the node: a
+ * frame's rays (a camera ray a pixel, a shadow ray a light) times the
+ * node's share of the tree root's area.  When the
  * clusters would pass SCN_MAX_CLUSTERS, the tree is built
- * again with both bounds grown by half, while leaf_min <= BVH_LEAF_MIN_TOP.  A node whose
+ * again with the bounds grown by half, while leaf_min <= BVH_LEAF_MIN_TOP.  A node whose
  * centroids all coincide, or that is too near the nesting limit for the
  * heuristic's possibly lopsided splits, is split at the median centroid on
  * its longest axis instead: that tree is balanced, so it fits the remaining
@@ -31,11 +35,18 @@
 
 #define BVH_BINS 16
 #define BVH_LEAF_MIN 2      /* first try: never split this few ... */
-#define BVH_LEAF_MAX 8      /* ... and always split more than this */
-#define BVH_LEAF_MIN_TOP 32 /* last try when the clusters do not fit (both
-                               grown by half from one try to the next) */
+#define BVH_LEAF_MAX 8      /* ... split more than this where no plane
+                               splits them (the median's leaves) ... */
+#define BVH_LEAF_CAP SD_AUTO_HIERARCHY_LEAF_CAP /* ... and more than this always */
+#define BVH_LEAF_MIN_TOP 32 /* last try when the clusters do not fit (all
+                               three grown by half from one try to the next) */
 #define BVH_COST_NODE 1.0   /* one box test ... */
-#define BVH_COST_PRIM 2.0   /* ... against one primitive test */
+#define BVH_COST_PRIM 2.0   /* ... against one primitive test ... */
+#define BVH_COST_CLUSTER 6.0 /* ... and against the DM's work on a cluster
+                                each frame (its load, index and
+                                preparation, about 500 instructions): the
+                                value where the DM's work and the NCs' both
+                                fell on the SPD (docs/scene-format.md) */
 
 struct bvh_item {
     double lo[3], hi[3], c[3];
@@ -48,7 +59,10 @@ struct bvh_build {
     struct sd_cluster *clusters; /* grows */
     int n_clusters, cap_clusters;
     int *prim_cluster;           /* new cluster of each primitive */
-    int leaf_min, leaf_max;
+    int leaf_min, leaf_max, leaf_cap;
+    double rays;      /* a frame's rays: a camera ray a pixel, a shadow ray
+                         a light (0: no view, no cost of clusters) */
+    double root_area; /* the box area of the tree being built */
     struct bvh_build_stats *stats;
 };
 
@@ -117,6 +131,16 @@ void sd_prim_bounds(const struct sd_scene *s, const struct sd_prim *p, double lo
         }
         break;
     }
+}
+
+/* The area of the box around it[0..n). */
+static double bvh_items_area(const struct bvh_item *it, int n)
+{
+    double lo[3], hi[3];
+    bvh_box_empty(lo, hi);
+    for (int i = 0; i < n; i++)
+        bvh_box_add(lo, hi, it[i].lo, it[i].hi);
+    return bvh_area(lo, hi);
 }
 
 /* A new identity cluster under parent; its index, or -1 past the limit. */
@@ -227,6 +251,20 @@ static void bvh_leaf(struct bvh_build *b, int node, const struct bvh_item *it, i
         b->stats->largest_leaf = n;
 }
 
+/* A node of n primitives, whose box has area `area`, stays a leaf: it may
+ * (n <= leaf_cap) and no split pays, split_cost (the SAH's, a ray through
+ * it) plus its two clusters' work on the DM over the rays expected through
+ * it being at least the test of all n. */
+static int bvh_leaf_pays(const struct bvh_build *b, int n, double area, double split_cost)
+{
+    double build = 0;
+    if (b->rays > 0 && b->root_area > 0) {
+        double through = b->rays * area / b->root_area;
+        build = through > 0 ? 2 * BVH_COST_CLUSTER / through : HUGE_VAL;
+    }
+    return n <= b->leaf_cap && split_cost + build >= BVH_COST_PRIM * n;
+}
+
 /* ceil(log2(ceil(n / leaf_max))): the levels a balanced tree needs. */
 static int bvh_levels(int n, int leaf_max)
 {
@@ -269,7 +307,7 @@ static int bvh_split(struct bvh_build *b, int node, struct bvh_item *it, struct 
     } else {
         double area = bvh_area(lo, hi);
         double split_cost = BVH_COST_NODE + BVH_COST_PRIM * (area > 0 ? cost / area : n);
-        if (n <= b->leaf_max && split_cost >= BVH_COST_PRIM * n) {
+        if (bvh_leaf_pays(b, n, area, split_cost)) {
             bvh_leaf(b, node, it, n);
             return 0;
         }
@@ -310,6 +348,7 @@ static int bvh_try(struct bvh_build *b, const int *nest, int leaf_min)
     const struct sd_scene *s = b->in;
     b->leaf_min = leaf_min;
     b->leaf_max = leaf_min * (BVH_LEAF_MAX / BVH_LEAF_MIN);
+    b->leaf_cap = leaf_min * (BVH_LEAF_CAP / BVH_LEAF_MIN);
     b->n_clusters = s->n_clusters;
     memcpy(b->clusters, s->clusters, (size_t)s->n_clusters * sizeof *s->clusters);
     memset(b->stats, 0, sizeof *b->stats);
@@ -351,6 +390,7 @@ static int bvh_try(struct bvh_build *b, const int *nest, int leaf_min)
         if (n <= SD_AUTO_HIERARCHY_MIN)
             continue;
         b->stats->split_clusters++;
+        b->root_area = bvh_items_area(items + count[c], n);
         rc = bvh_split(b, c, items + count[c], spare + count[c], n,
                        SCN_MAX_CLUSTER_NESTING - nest[c], 0);
     }
@@ -368,6 +408,8 @@ int sd_auto_hierarchy(const struct sd_scene *s, struct sd_cluster **clusters, in
     b.in = s;
     b.stats = stats;
     b.prim_cluster = prim_cluster;
+    if (s->view.width > 0 && s->view.height > 0)
+        b.rays = (double)s->view.width * s->view.height * (1 + s->n_lights);
     b.cap_clusters = s->n_clusters + 2 * s->n_prims / BVH_LEAF_MAX + 16;
     b.clusters = scene_mem_alloc((size_t)b.cap_clusters * sizeof *b.clusters);
     int *nest = malloc(((size_t)s->n_clusters + 1) * sizeof *nest);

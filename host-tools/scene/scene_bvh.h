@@ -15,6 +15,8 @@
 
 #define SD_AUTO_HIERARCHY_MIN 4 /* clusters with this many primitives or
                                    fewer are left as they are */
+#define SD_AUTO_HIERARCHY_LEAF_CAP 64 /* the most primitives a leaf holds
+                                         (the first try's: scene_bvh.c) */
 
 struct bvh_build_stats {
     int split_clusters; /* author clusters that got a tree */

@@ -8,6 +8,7 @@
  *     several scenes (spheres, a mesh, a moving keyframed cluster, nested
  *     author clusters), through both the full tree walk and the NC's
  *     clipped area loop;
+ *   - a smaller frame (fewer rays) gets fewer clusters and larger leaves;
  *   - a scene that would need more clusters than the format holds, more
  *     bytes, or more of the board's memory than an IMSU block, is refused,
  *     naming the limit and the count (and one exactly at the board's
@@ -355,6 +356,42 @@ static void test_cluster_limit_named(void)
     free(s.clusters);
 }
 
+/* The tree of s for a view of w x h: its clusters (0 when refused), stats
+ * in *st. */
+static int tree_at(struct sd_scene *s, int w, int h, struct bvh_build_stats *st)
+{
+    s->view.width = w;
+    s->view.height = h;
+    struct sd_cluster *cl = NULL;
+    int n = 0;
+    int *pc = malloc((size_t)s->n_prims * sizeof *pc);
+    char err[SD_ERR_MAX];
+    if (sd_auto_hierarchy(s, &cl, &n, pc, st, err, sizeof err) != 0)
+        n = 0;
+    free(pc);
+    free(cl);
+    return n;
+}
+
+/* A split counts the DM's work on its clusters against the rays expected
+ * through the node: the same mesh gets fewer clusters and larger leaves
+ * (within the cap) for a 16x12 frame than for a 1024x768 one. */
+static void test_leaves_follow_rays(void)
+{
+    char *text = make_scene(1, 1500);
+    struct sd_scene s;
+    CHECK_EQ_INT(parse(text, &s), 0);
+    free(text);
+    struct bvh_build_stats small, big;
+    int n_small = tree_at(&s, 16, 12, &small), n_big = tree_at(&s, 1024, 768, &big);
+    CHECK(n_small > s.n_clusters && n_small < n_big);
+    CHECK(small.largest_leaf > big.largest_leaf);
+    CHECK(small.largest_leaf <= SD_AUTO_HIERARCHY_LEAF_CAP);
+    printf("# 16x12: %d clusters, leaves up to %d; 1024x768: %d, up to %d\n", n_small,
+           small.largest_leaf, n_big, big.largest_leaf);
+    sd_free(&s);
+}
+
 /* n small ellipsoids in one cluster, nothing else: a scene for the
  * compiler's limits */
 static void flat_ellipsoids(struct sd_scene *s, int n, int no_tree)
@@ -457,6 +494,7 @@ int main(void)
     RUN(test_cluster_limit_named);
     RUN(test_size_limit_named);
     RUN(test_board_limit_named);
+    RUN(test_leaves_follow_rays);
 #endif
     return check_exit();
 }
