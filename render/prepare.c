@@ -316,8 +316,8 @@ static int prep_is_plain(const scene_cluster_t *c)
 }
 
 /* What render_prepare checks every frame; the clusters and primitives,
- * which do not change from frame to frame, are prep_check_tree's, once
- * with the index (render_scene_index). */
+ * which do not change from frame to frame, render_scene_index checks once
+ * as it builds the index. */
 static render_status_t prep_check(const scene_t *s)
 {
     if (s->width < 1 || s->width > RENDER_MAX_WIDTH || s->height < 1 || s->height > RENDER_MAX_HEIGHT)
@@ -355,32 +355,22 @@ static render_status_t prep_check(const scene_t *s)
     return RENDER_OK;
 }
 
-/* The cluster tree and the primitives as render_prepare needs them:
- * render_scene_index checks them once, with the index it builds. */
-static render_status_t prep_check_tree(const scene_t *s)
+/* Primitive p as render_prepare needs it: RENDER_OK, RENDER_ERR_PRIM or
+ * RENDER_ERR_DENSITY (render_scene_index checks each one once, as it
+ * counts the primitives of each cluster). */
+static inline __attribute__((always_inline)) render_status_t prep_prim_check(const scene_t *s,
+                                                                            const scene_prim_t *p)
 {
-    if (s->cluster_count < 1 || s->clusters[0].parent != SCENE_NO_CLUSTER)
-        return RENDER_ERR_CLUSTER;
-    for (uint32_t i = 0; i < s->cluster_count; i++) {
-        const scene_cluster_t *c = &s->clusters[i];
-        if (i > 0 && c->parent >= i)
-            return RENDER_ERR_CLUSTER;
-        if ((uint64_t)c->first_key + c->key_count > s->key_count)
-            return RENDER_ERR_KEY;
-    }
-    for (uint32_t i = 0; i < s->prim_count; i++) {
-        const scene_prim_t *p = &s->prims[i];
-        if (p->kind > SCENE_PRIM_CONE || p->cluster >= s->cluster_count ||
-            p->material >= s->material_count)
-            return RENDER_ERR_PRIM;
-        if (p->kind == SCENE_PRIM_DENSITY &&
-            (p->shape.density.count < 1 || p->shape.density.count > RENDER_MAX_DENSITY_COMPONENTS ||
-             !num_gt(p->shape.density.threshold, NUM_ZERO) || /* the root finder needs > 0 */
-             (uint64_t)p->shape.density.first + p->shape.density.count > s->density_component_count))
-            return RENDER_ERR_DENSITY;
-        if (p->kind == SCENE_PRIM_TRIANGLE && p->shape.triangle.smooth > s->normals_count)
-            return RENDER_ERR_PRIM;
-    }
+    if (p->kind > SCENE_PRIM_CONE || p->cluster >= s->cluster_count ||
+        p->material >= s->material_count)
+        return RENDER_ERR_PRIM;
+    if (p->kind == SCENE_PRIM_DENSITY &&
+        (p->shape.density.count < 1 || p->shape.density.count > RENDER_MAX_DENSITY_COMPONENTS ||
+         !num_gt(p->shape.density.threshold, NUM_ZERO) || /* the root finder needs > 0 */
+         (uint64_t)p->shape.density.first + p->shape.density.count > s->density_component_count))
+        return RENDER_ERR_DENSITY;
+    if (p->kind == SCENE_PRIM_TRIANGLE && p->shape.triangle.smooth > s->normals_count)
+        return RENDER_ERR_PRIM;
     return RENDER_OK;
 }
 
@@ -759,6 +749,7 @@ static render_status_t prep_index_triangles(const scene_t *s, const scene_group_
                                             num_t *spread, scene_index_t *out)
 {
     uint32_t np = s->prim_count, nn = s->normals_count;
+    int mapped = s->map_count != 0; /* else the spreads stay 0: no map reads them */
     for (uint32_t j = 0; j < nn; j++)
         for (uint32_t k = 0; k < 3; k++)
             src[3 * j + k] = j << 2 | k;
@@ -770,7 +761,8 @@ static render_status_t prep_index_triangles(const scene_t *s, const scene_group_
             out->pointer_hi = i + 1;
             continue;
         }
-        spread[i] = prep_uv_spread(sp);
+        if (mapped)
+            spread[i] = prep_uv_spread(sp);
         if (!sp->shape.triangle.smooth)
             continue;
         uint32_t maps = g[sp->cluster].maps_of;
@@ -856,9 +848,9 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
 {
     __builtin_memset(out, 0, sizeof *out);
     uint32_t nc = s->cluster_count, np = s->prim_count, nn = s->normals_count, own = 0;
-    render_status_t st = prep_check_tree(s);
-    if (st != RENDER_OK)
-        return st;
+    render_status_t st = RENDER_OK;
+    if (nc < 1 || s->clusters[0].parent != SCENE_NO_CLUSTER)
+        return RENDER_ERR_CLUSTER;
     if (nn >= (1u << 29)) /* (j << 2 | k) must fit: 18 GB of normals, more
                              than any arena holds */
         return RENDER_ERR_ARENA;
@@ -878,6 +870,10 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
             st = RENDER_ERR_CLUSTER;
             break;
         }
+        if ((uint64_t)c->first_key + c->key_count > s->key_count) {
+            st = RENDER_ERR_KEY;
+            break;
+        }
         depth[i] = i == 0 ? 0 : (uint8_t)(depth[c->parent] + 1);
         if (depth[i] > RENDER_MAX_CLUSTER_DEPTH)
             st = RENDER_ERR_CLUSTER;
@@ -895,10 +891,9 @@ render_status_t render_scene_index(const scene_t *s, arena_t *arena, scene_index
      * (stable: ascending index) */
     for (uint32_t i = 1; i < nc && st == RENDER_OK; i++)
         g[s->clusters[i].parent].child_count++;
-    for (uint32_t i = 0; i < np && st == RENDER_OK; i++) {
-        if (s->prims[i].cluster >= nc)
-            st = RENDER_ERR_PRIM;
-        else
+    for (uint32_t i = 0; i < np && st == RENDER_OK; i++) { /* each checked once, here */
+        st = prep_prim_check(s, &s->prims[i]);
+        if (st == RENDER_OK)
             g[s->prims[i].cluster].prim_count++;
     }
     if (st != RENDER_OK) {
@@ -940,7 +935,7 @@ render_status_t render_scene_index_same(const scene_t *s, arena_t *arena,
     memcpy(a.child, same->child_list, sizeof *a.child * nc);
     memcpy(a.plist, same->prim_list, sizeof *a.plist * np);
     memcpy(a.src, same->normal_src, sizeof *a.src * 3 * (size_t)nn);
-    for (uint32_t i = 0; i < np; i++)
+    for (uint32_t i = 0; i < np && s->map_count; i++) /* as prep_index_triangles */
         if (s->prims[i].kind == SCENE_PRIM_TRIANGLE)
             a.spread[i] = prep_uv_spread(&s->prims[i]);
     render_status_t st = prep_index_maps(s, a.groups, same->own_count, arena, out);

@@ -199,7 +199,8 @@ typedef struct {
     const num_t *uv_spread;      /* reloc; prim_count: a triangle's spread of
                                     map coordinates, the sum over k = 1, 2
                                     of max(|u_k - u_0|, |v_k - v_0|)
-                                    (precision_check); 0 for other kinds */
+                                    (precision_check); 0 for other kinds,
+                                    and for all in a scene without maps */
     const xform_t *parent_maps;  /* reloc; 2 per cluster with maps of its
                                     own, in rising cluster index: what of
                                     its map to its parent and back stays
