@@ -251,10 +251,10 @@ static void bvh_leaf(struct bvh_build *b, int node, const struct bvh_item *it, i
         b->stats->largest_leaf = n;
 }
 
-/* A node of n primitives, whose box has area `area`, stays a leaf: it may
- * (n <= leaf_cap) and no split pays, split_cost (the SAH's, a ray through
- * it) plus its two clusters' work on the DM over the rays expected through
- * it being at least the test of all n. */
+/* 1 when a node of n primitives (n <= leaf_cap), its box of area `area`,
+ * stays a leaf: no split pays, its split_cost (the SAH's, for a ray
+ * through it) plus the DM's work on its two new clusters, spread over the
+ * rays expected through it, being at least the test of all n. */
 static int bvh_leaf_pays(const struct bvh_build *b, int n, double area, double split_cost)
 {
     double build = 0;

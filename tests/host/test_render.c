@@ -496,6 +496,10 @@ static void test_limits_and_errors(void)
     ts.prims[1].material = 99;
     CHECK_EQ_INT(render_prepare(&ts.scene, 0, &ts.arena, &f), RENDER_ERR_PRIM);
     busy_scene();
+    ts.clusters[1].first_key = ts.scene.key_count; /* keys past the scene's */
+    ts.clusters[1].key_count = 1;
+    CHECK_EQ_INT(render_prepare(&ts.scene, 0, &ts.arena, &f), RENDER_ERR_KEY);
+    busy_scene();
     ts.scene.camera.look_at = ts.scene.camera.eye;
     CHECK_EQ_INT(render_prepare(&ts.scene, 0, &ts.arena, &f), RENDER_ERR_CAMERA);
     busy_scene();
