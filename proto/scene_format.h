@@ -99,8 +99,9 @@
 #define SCN_VERSION 7 /* 2: 32-bit cluster indices; 3: VIEW carries min_weight;
                          4: VIEW carries density_steps; 5: MATERIALS 52
                          bytes (normal and attribute maps), map kinds
-                         NORMAL and ATTRIBUTE.  VIEW_KEYS (kind 11)
-                         and HAZE (kind 12) came later without a new
+                         NORMAL and ATTRIBUTE.  VIEW_KEYS (kind 11),
+                         HAZE (kind 12) and EXTENT (kind 13) came later
+                         without a new
                          version: a file without
                          it is what it was, and a loader from before it
                          refuses one with it as an unknown section kind.
@@ -134,8 +135,9 @@ enum scn_section {
     SCN_SEC_NORMALS = 10,  /* vertex normals of smooth triangles, prims rising */
     SCN_SEC_VIEW_KEYS = 11, /* keyframes of the camera and the lights */
     SCN_SEC_HAZE = 12,     /* none or one record: the haze */
+    SCN_SEC_EXTENT = 13,   /* none or one record: the triangles' extent */
 };
-#define SCN_SEC_COUNT 12 /* kinds are 1..SCN_SEC_COUNT */
+#define SCN_SEC_COUNT 13 /* kinds are 1..SCN_SEC_COUNT */
 
 /* The board has no trigonometry: every angle is turned into the cosine,
  * tangent or quaternion the renderer needs by the host compiler. */
@@ -416,5 +418,19 @@ enum scn_cone_caps {
 #define SCN_HAZE_COLOUR 0       /* 3 x f32 0..1: h */
 #define SCN_HAZE_INV_DISTANCE 12 /* f32 > 0, finite: 1/D per unit of the scene's
                                     lengths, D in 0 < D <= SCN_MAX_COORD */
+
+/* ------------------------------------------------------- EXTENT record */
+/* The triangles' extent as the loader scales the scene by it
+ * (render/scene_load.h, scene_load_triangle_exp): the largest power of two
+ * of a triangle coordinate's magnitude, its clusters' powers of two added.
+ * The compiler states it; a loader given it does not read every triangle
+ * twice, and refuses a triangle beyond it.  Without the section the loader
+ * works it out. */
+#define SCN_EXTENT_SIZE 4
+#define SCN_EXTENT_TRI_EXP 0 /* i32 (two's complement): within
+                                +-SCN_EXTENT_EXP_LIMIT, or the bits
+                                SCN_EXTENT_NO_TRIANGLE (no triangle) */
+#define SCN_EXTENT_EXP_LIMIT 65536
+#define SCN_EXTENT_NO_TRIANGLE 0x80000000u
 
 #endif

@@ -21,6 +21,7 @@
 #define LOAD_F32_SIGN 0x80000000u
 #define LOAD_INLINE static inline __attribute__((always_inline))
 #define LOAD_KEXP_PLAIN INT32_MIN
+#define LOAD_EXP_NONE (-1000000) /* no length at all */
 
 /* wire_get_u32 as one load where the target reads little-endian words at
  * any alignment (the board and the hosts): the compiler does not always
@@ -47,6 +48,9 @@ struct load_section {
 struct load_scaler {
     int e;
     uint32_t lo, span;
+    uint32_t tspan; /* a triangle coordinate's common case: span, or less
+                       where the scene states its triangles' extent
+                       (load_tri_scaler) */
 };
 
 struct load {
@@ -69,6 +73,11 @@ struct load {
                                  triangle's are checked one by one */
     const scene_load_known_t *known; /* what the caller knows, or NULL */
     int passed; /* known->passed: the values' checks are not made again */
+    int tri_stated; /* the EXTENT section states the triangles' exponent
+                       (tri_exp, LOAD_EXP_NONE: no triangle): load_scale
+                       does not read the triangles, load_triangle holds
+                       each one to it */
+    int32_t tri_exp;
 };
 
 /* ------------------------------------------------------------ messages */
@@ -182,30 +191,48 @@ LOAD_INLINE uint32_t load_scale_bits(uint32_t bits, int e)
     return (bits & ~LOAD_F32_EXP_MASK) | ((uint32_t)exp << 23);
 }
 
-/* The scaler of e: the exponent fields that stay normal, lo .. lo + span. */
-LOAD_INLINE struct load_scaler load_scaler_of(int e)
+/* The scaler of e: the exponent fields that stay normal, lo .. lo + span.
+ * A triangle coordinate's common case (tspan) is held under SCN_MAX_COORD's
+ * field and the extent L states, less the exponent of the cluster whose
+ * coordinates are stored times 2^e: a coordinate past it takes
+ * load_scale_bits and load_triangle looks at it again (load_tri_beyond). */
+LOAD_INLINE struct load_scaler load_scaler_of(const struct load *L, int e)
 {
     int32_t lo = e >= 0 ? 1 : 1 - e, hi = e >= 0 ? 254 - e : 254;
-    struct load_scaler s = {e, (uint32_t)lo, hi >= lo ? (uint32_t)(hi - lo) : 0};
+    struct load_scaler s = {e, (uint32_t)lo, hi >= lo ? (uint32_t)(hi - lo) : 0, 0};
     if (hi < lo)
         s.lo = 256; /* no field: every value takes load_scale_bits */
+    s.tspan = s.span;
+    if (L->tri_stated && s.lo != 256) {
+        int32_t top = (int32_t)(load_bits_of(SCN_MAX_COORD) >> 23) - 1;
+        int32_t stated = L->tri_exp == LOAD_EXP_NONE ? 0 : L->tri_exp - (e - L->unit_exp) + 127;
+        top = stated < top ? stated : top;
+        s.tspan = top < lo ? 0 : top - lo < (int32_t)s.span ? (uint32_t)(top - lo) : s.span;
+        if (top < lo)
+            s.lo = 256; /* every coordinate looked at */
+    }
     return s;
 }
 
 /* load_scaler_of(L->len_exp), worked out again only when it changes (the
- * primitives of one cluster, or of plain clusters, share it). */
+ * triangles of one cluster, or of plain clusters, share it). */
 LOAD_INLINE struct load_scaler load_scaler_at(struct load *L)
 {
     if (L->scaler.e != L->len_exp)
-        L->scaler = load_scaler_of(L->len_exp);
+        L->scaler = load_scaler_of(L, L->len_exp);
     return L->scaler;
 }
 
-LOAD_INLINE uint32_t load_scale_bits_by(const struct load_scaler *s, uint32_t bits)
+/* A triangle coordinate's bits scaled as load_scale_bits; *slow gathers
+ * the exponent fields of those past the common case (tspan: a zero adds
+ * none). */
+LOAD_INLINE uint32_t load_scale_tri_bits(const struct load_scaler *s, uint32_t bits,
+                                         uint32_t *slow)
 {
     uint32_t field = (bits & LOAD_F32_EXP_MASK) >> 23;
-    if (field - s->lo <= s->span) /* normal to normal, as load_scale_bits */
+    if (field - s->lo <= s->tspan) /* normal to normal, as load_scale_bits */
         return bits + ((uint32_t)s->e << 23);
+    *slow |= field;
     return load_scale_bits(bits, s->e);
 }
 
@@ -264,6 +291,7 @@ static const uint32_t load_record_size[SCN_SEC_COUNT + 1] = {
     [SCN_SEC_PRIMS] = SCN_PRIM_SIZE,        [SCN_SEC_COMPONENTS] = SCN_COMPONENT_SIZE,
     [SCN_SEC_KEYS] = SCN_KEY_SIZE,          [SCN_SEC_NORMALS] = SCN_NORMALS_SIZE,
     [SCN_SEC_VIEW_KEYS] = SCN_VKEY_SIZE,   [SCN_SEC_HAZE] = SCN_HAZE_SIZE,
+    [SCN_SEC_EXTENT] = SCN_EXTENT_SIZE,
 };
 
 static const uint32_t load_count_limit[SCN_SEC_COUNT + 1] = {
@@ -273,6 +301,7 @@ static const uint32_t load_count_limit[SCN_SEC_COUNT + 1] = {
     [SCN_SEC_PRIMS] = SCN_MAX_PRIMS,            [SCN_SEC_COMPONENTS] = SCN_MAX_COMPONENTS,
     [SCN_SEC_KEYS] = SCN_MAX_KEYS,              [SCN_SEC_NORMALS] = SCN_MAX_PRIMS,
     [SCN_SEC_VIEW_KEYS] = SCN_MAX_VIEW_KEYS,     [SCN_SEC_HAZE] = 1,
+    [SCN_SEC_EXTENT] = 1,
 };
 
 static scene_load_status_t load_header(struct load *L, size_t len)
@@ -873,13 +902,32 @@ static int load_sliver(const vec3_t v[3], int unit_exp)
 #endif
 }
 
+/* Triangle i's coordinates (values v), some past its scaler's common case
+ * where the scene states the triangles' extent: refused when one is not
+ * finite or beyond SCN_MAX_COORD, or beyond the extent stated. */
+static __attribute__((noinline, cold)) scene_load_status_t load_tri_beyond(struct load *L, uint32_t i, const uint8_t *v)
+{
+    for (int k = 0; k < 9; k++) {
+        uint32_t bits = load_u32(v + 4 * k) & ~LOAD_F32_SIGN;
+        int32_t field = (int32_t)(bits >> 23);
+        if (bits > load_bits_of(SCN_MAX_COORD))
+            return load_range(L, "prim ", i, "a value is");
+        if (field != 0 && (L->tri_exp == LOAD_EXP_NONE ||
+                           field - 127 + (L->len_exp - L->unit_exp) > L->tri_exp))
+            return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
+                            "a coordinate beyond the triangles' extent the scene states "
+                            "(its EXTENT section)");
+    }
+    return SCENE_LOAD_OK;
+}
+
 /* A triangle record whose material, cluster and component range are
  * right: its 15 values checked (9 lengths, 6 texture coordinates; not when
  * passed, scene_load_known_t's) and loaded into o as load_prims's general
  * path does, with its refusals. */
 _Static_assert(SCN_TRIANGLE_VALUES == 15 && SCN_PRIM_MAX_VALUES == 15,
                "a triangle uses every value of its record");
-static inline scene_load_status_t load_triangle(struct load *L, uint32_t i, const uint8_t *v,
+LOAD_INLINE scene_load_status_t load_triangle(struct load *L, uint32_t i, const uint8_t *v,
                                               scene_prim_t *o, const int passed)
 {
     uint32_t over = 0, tex[6];
@@ -896,15 +944,18 @@ static inline scene_load_status_t load_triangle(struct load *L, uint32_t i, cons
         return load_range(L, "prim ", i, "a value is");
     o->kind = SCENE_PRIM_TRIANGLE;
     struct load_scaler sc = load_scaler_at(L);
+    uint32_t slow = 0;
     for (int k = 0; k < 3; k++) {
         const uint8_t *c = v + 12 * k;
         o->shape.triangle.v[k] =
-            vec3_make(num_from_f32_bits(load_scale_bits_by(&sc, load_u32(c))),
-                      num_from_f32_bits(load_scale_bits_by(&sc, load_u32(c + 4))),
-                      num_from_f32_bits(load_scale_bits_by(&sc, load_u32(c + 8))));
+            vec3_make(num_from_f32_bits(load_scale_tri_bits(&sc, load_u32(c), &slow)),
+                      num_from_f32_bits(load_scale_tri_bits(&sc, load_u32(c + 4), &slow)),
+                      num_from_f32_bits(load_scale_tri_bits(&sc, load_u32(c + 8), &slow)));
         o->shape.triangle.tex_u[k] = num_from_f32_bits(tex[k]);
         o->shape.triangle.tex_v[k] = num_from_f32_bits(tex[3 + k]);
     }
+    if (slow && L->tri_stated && !passed)
+        LOAD_TRY(load_tri_beyond(L, i, v));
     o->shape.triangle.smooth = 0;
     if (!passed && load_sliver(o->shape.triangle.v, L->len_exp))
         return load_bad(L, SCENE_LOAD_ERR_VALUE, "prim ", i,
@@ -946,7 +997,7 @@ LOAD_INLINE scene_load_status_t load_prims_as(struct load *L, scene_prim_t *out,
     uint32_t n_clu = L->sec[SCN_SEC_CLUSTERS].count;
     uint32_t n_comp = L->sec[SCN_SEC_COMPONENTS].present ? L->sec[SCN_SEC_COMPONENTS].count : 0;
     const uint8_t *rec = load_rec(L, SCN_SEC_PRIMS, 0);
-    L->scaler = load_scaler_of(L->len_exp);
+    L->scaler = load_scaler_of(L, L->len_exp);
     for (uint32_t i = 0, n = L->sec[SCN_SEC_PRIMS].count; i < n; i++) {
         const uint8_t *p = rec + (size_t)i * SCN_PRIM_SIZE;
         uint16_t kind = wire_get_u16(p + SCN_PRIM_KIND);
@@ -1099,7 +1150,6 @@ load_geometry_passed(struct load *L, scene_prim_t *prims, scene_density_componen
 
 /* ------------------------------------------------- scaled to the scene */
 
-#define LOAD_EXP_NONE (-1000000) /* no length at all */
 /* The mantissa bits of 2/sqrt(3), rounded up: load_matrix_exp */
 #define LOAD_MANT_2_OVER_SQRT3 0x13cd3bu
 
@@ -1194,10 +1244,22 @@ static int32_t load_scale_clusters(struct load *L)
     return geom;
 }
 
+/* The largest of geom and triangle p's coordinates' exponents (its
+ * cluster's c added); L->triangle_coords_over. */
+LOAD_INLINE int32_t load_scale_triangle(struct load *L, const uint8_t *p, int32_t c, int32_t geom)
+{
+    uint32_t big = load_max_bits(p + SCN_PRIM_VALUES, 9);
+    L->triangle_coords_over |= big > load_bits_of(SCN_MAX_COORD);
+    return load_max_exp_of(p + SCN_PRIM_VALUES, 9, big, c, geom);
+}
+
 /* load_scale's pass over the primitives: the largest of geom and their
- * lengths' exponents; L->triangle_coords_over. */
+ * lengths' exponents (the triangles' as the scene states them, if it does:
+ * load_extent); L->triangle_coords_over. */
 static int32_t load_scale_prims(struct load *L, int32_t geom)
 {
+    if (L->tri_stated && L->tri_exp > geom)
+        geom = L->tri_exp;
     uint32_t n_clu = L->sec[SCN_SEC_CLUSTERS].count;
     uint32_t n_comp = L->sec[SCN_SEC_COMPONENTS].count;
     const int32_t *cexp = L->cexp; /* read once, not after each store */
@@ -1207,10 +1269,9 @@ static int32_t load_scale_prims(struct load *L, int32_t geom)
         uint16_t kind = wire_get_u16(p + SCN_PRIM_KIND);
         uint32_t clu = load_u32(p + SCN_PRIM_CLUSTER);
         int32_t c = clu < n_clu ? cexp[clu] : 0;
-        if (kind == SCN_PRIM_TRIANGLE) { /* the common case, unrolled */
-            uint32_t big = load_max_bits(p + SCN_PRIM_VALUES, 9);
-            L->triangle_coords_over |= big > load_bits_of(SCN_MAX_COORD);
-            geom = load_max_exp_of(p + SCN_PRIM_VALUES, 9, big, c, geom);
+        if (kind == SCN_PRIM_TRIANGLE) { /* the common case */
+            if (!L->tri_stated)
+                geom = load_scale_triangle(L, p, c, geom);
             continue;
         }
         int n = kind == SCN_PRIM_DENSITY ? 0 : kind == SCN_PRIM_CONE ? SCN_CONE_VALUES : 6;
@@ -1222,6 +1283,22 @@ static int32_t load_scale_prims(struct load *L, int32_t geom)
                                     c, geom);
     }
     return geom;
+}
+
+/* The triangles' exponent the scene states (its EXTENT section), if it
+ * does: L->tri_stated and tri_exp. */
+static scene_load_status_t load_extent(struct load *L)
+{
+    if (!L->sec[SCN_SEC_EXTENT].present || L->sec[SCN_SEC_EXTENT].count == 0)
+        return SCENE_LOAD_OK;
+    uint32_t bits = load_u32(load_rec(L, SCN_SEC_EXTENT, 0) + SCN_EXTENT_TRI_EXP);
+    int64_t e = bits <= INT32_MAX ? (int64_t)bits : (int64_t)bits - 4294967296LL;
+    if (bits != SCN_EXTENT_NO_TRIANGLE && (e < -SCN_EXTENT_EXP_LIMIT || e > SCN_EXTENT_EXP_LIMIT))
+        return load_fail(L, SCENE_LOAD_ERR_VALUE, "the EXTENT section's exponent %ld is beyond "
+                         "+-%ld", (long)e, (long)SCN_EXTENT_EXP_LIMIT);
+    L->tri_stated = 1;
+    L->tri_exp = bits == SCN_EXTENT_NO_TRIANGLE ? LOAD_EXP_NONE : (int32_t)e;
+    return SCENE_LOAD_OK;
 }
 
 /* The largest of geom and the exponents of the eye, the look-at point and
@@ -1272,6 +1349,7 @@ static scene_load_status_t load_scale(struct load *L, scene_t *s)
         s->tol_exp = L->known->tol_exp;
         return SCENE_LOAD_OK; /* triangle_coords_over 0: every one was in range */
     }
+    LOAD_TRY(load_extent(L));
     geom = load_scale_prims(L, geom);
     int32_t most = load_scale_view(L, geom);
     int32_t e = most == LOAD_EXP_NONE ? 0 : RENDER_NORM_EXP - most; /* the largest |length|
@@ -1300,6 +1378,39 @@ scene_load_status_t scene_load(const uint8_t *buf, size_t len, arena_t *arena, s
                                scene_load_error_t *err)
 {
     return scene_load_summed(buf, len, NULL, arena, out, err);
+}
+
+scene_load_status_t scene_load_triangle_exp(const uint8_t *buf, size_t len, arena_t *arena,
+                                            uint32_t *bits, scene_load_error_t *err)
+{
+    struct load L;
+    memset(&L, 0, sizeof L);
+    L.buf = buf;
+    L.err = err;
+    L.crc_later = 1;
+    err->status = SCENE_LOAD_OK;
+    err->message[0] = 0;
+    LOAD_TRY(load_header(&L, buf ? len : 0));
+    size_t mark = arena->used;
+    uint32_t n_clu = L.sec[SCN_SEC_CLUSTERS].count;
+    L.cexp = LOAD_ALLOC(arena, int32_t, n_clu);
+    L.kexp = LOAD_ALLOC(arena, int32_t, n_clu);
+    if (!L.cexp || !L.kexp) {
+        arena_release_to(arena, mark);
+        return load_fail(&L, SCENE_LOAD_ERR_ARENA, "arena too small for the clusters' exponents");
+    }
+    load_scale_clusters(&L);
+    int32_t geom = LOAD_EXP_NONE;
+    const uint8_t *prims = load_rec(&L, SCN_SEC_PRIMS, 0);
+    for (uint32_t i = 0, n = L.sec[SCN_SEC_PRIMS].count; i < n; i++) {
+        const uint8_t *p = prims + (size_t)i * SCN_PRIM_SIZE;
+        uint32_t clu = load_u32(p + SCN_PRIM_CLUSTER);
+        if (wire_get_u16(p + SCN_PRIM_KIND) == SCN_PRIM_TRIANGLE)
+            geom = load_scale_triangle(&L, p, clu < n_clu ? L.cexp[clu] : 0, geom);
+    }
+    arena_release_to(arena, mark);
+    *bits = geom == LOAD_EXP_NONE ? SCN_EXTENT_NO_TRIANGLE : (uint32_t)geom;
+    return SCENE_LOAD_OK;
 }
 
 /* The scene's index: the load that passed's, where it hands one over

@@ -74,6 +74,14 @@ typedef struct {
  * is done), for another arithmetic's load of the same bytes. */
 scene_load_known_t scene_load_known_of(const scene_t *s, uint32_t body_sum);
 
+/* The triangles' extent of buf[0..len) as scene_load works it out when
+ * the scene does not state it: the bits of the EXTENT section's value
+ * (proto/scene_format.h), which the compiler writes.  The header and the
+ * section table are checked, not the word sum nor the records; scratch of
+ * 8 bytes a cluster from arena, given back. */
+scene_load_status_t scene_load_triangle_exp(const uint8_t *buf, size_t len, arena_t *arena,
+                                            uint32_t *bits, scene_load_error_t *err);
+
 /* scene_load with what the caller knows (known, or NULL: nothing). */
 scene_load_status_t scene_load_summed(const uint8_t *buf, size_t len,
                                       const scene_load_known_t *known, arena_t *arena,

@@ -2,6 +2,7 @@
 #include "host-tools/scene/scene_board.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 
 #include "proto/board_map.h"
 #include "proto/machines.h"
@@ -69,4 +70,28 @@ int sd_machine_check(const uint8_t *buf, size_t len, int machine, char *err, siz
         return -1;
     }
     return 0;
+}
+
+int sd_extent_bits(const uint8_t *buf, size_t len, uint32_t *bits, char *err, size_t errlen)
+{
+    scene_t shape;
+    uint32_t texels;
+    scene_load_error_t e;
+    if (scene_load_shape_before_load(buf, len, &shape, &texels, &e) != SCENE_LOAD_OK) {
+        snprintf(err, errlen, "the compiled form: %s", e.message);
+        return -1;
+    }
+    size_t bytes = 2 * sizeof(int32_t) * ((size_t)shape.cluster_count + 1) + 4 * ARENA_MAX_ALIGN;
+    void *mem = malloc(bytes);
+    if (!mem) {
+        snprintf(err, errlen, "out of memory compiling the scene");
+        return -1;
+    }
+    arena_t arena;
+    arena_init(&arena, mem, bytes);
+    scene_load_status_t st = scene_load_triangle_exp(buf, len, &arena, bits, &e);
+    free(mem);
+    if (st != SCENE_LOAD_OK)
+        snprintf(err, errlen, "the compiled form: %s", e.message);
+    return st == SCENE_LOAD_OK ? 0 : -1;
 }

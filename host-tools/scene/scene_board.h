@@ -33,6 +33,12 @@ int sd_board_bytes(const uint8_t *buf, size_t len, struct sd_board_bytes *out, c
  * scene whose header is refused passes: the loader names that problem. */
 int sd_board_check(const uint8_t *buf, size_t len, size_t limit, char *err, size_t errlen);
 
+/* The EXTENT section's value (proto/scene_format.h) of the compiled scene
+ * buf[0..len): the triangles' exponent as the loader works it out where a
+ * scene does not state it (scene_load_triangle_exp), in *bits.  0, or -1
+ * with err when the header or the section table is refused. */
+int sd_extent_bits(const uint8_t *buf, size_t len, uint32_t *bits, char *err, size_t errlen);
+
 /* 0 when the scene fits machine (proto/machines.h): its blob an IMSU block,
  * its NCs' working set an NC's memory; -1 with err naming the limit, the
  * machine and the bytes when it does not. */

@@ -259,6 +259,9 @@ static void compile_section_body(const struct sd_scene *s, const int *prim_clust
         compile_vec3(p + SCN_HAZE_COLOUR, s->view.haze_colour);
         wire_put_f32(p + SCN_HAZE_INV_DISTANCE, (float)(1.0 / s->view.haze_distance));
         break;
+    case SCN_SEC_EXTENT: /* compile_extent states it once the rest is written */
+        wire_put_u32(p + SCN_EXTENT_TRI_EXP, SCN_EXTENT_NO_TRIANGLE);
+        break;
     }
 }
 
@@ -284,6 +287,7 @@ static int compile_layout(const struct sd_scene *s, size_t texel_bytes,
         {SCN_SEC_NORMALS, n_smooth, SCN_NORMALS_SIZE, 0},
         {SCN_SEC_VIEW_KEYS, (uint32_t)s->n_view_keys, SCN_VKEY_SIZE, 0},
         {SCN_SEC_HAZE, s->view.haze ? 1u : 0u, SCN_HAZE_SIZE, 0},
+        {SCN_SEC_EXTENT, 1, SCN_EXTENT_SIZE, 0}, /* compile_extent's */
     };
     int n = 0;
     for (int i = 0; i < SCN_SEC_COUNT; i++)
@@ -310,6 +314,19 @@ static void compile_header(uint8_t *b, int n, size_t total)
     wire_put_u16(b + SCN_HDR_SECTIONS, (uint16_t)n);
     wire_put_u32(b + SCN_HDR_TOTAL, (uint32_t)total);
     wire_put_u32(b + SCN_HDR_SUM, wordsum(b + SCN_SUM_START, total - SCN_SUM_START));
+}
+
+/* The EXTENT section's value of the form b[0..total) (section entry at):
+ * the triangles' exponent as the loader works it out (sd_extent_bits), so
+ * that its loads need not. */
+static int compile_extent(uint8_t *b, size_t total, const struct compile_section *at, char *err,
+                          size_t errlen)
+{
+    uint32_t bits;
+    if (sd_extent_bits(b, total, &bits, err, errlen) != 0)
+        return -1;
+    wire_put_u32(b + at->offset + SCN_EXTENT_TRI_EXP, bits);
+    return 0;
 }
 
 static int compile_form(const struct sd_scene *s, const int *prim_cluster, uint8_t **out,
@@ -349,6 +366,14 @@ static int compile_form(const struct sd_scene *s, const int *prim_cluster, uint8
         compile_section_body(s, prim_cluster, used[i].kind, b + used[i].offset);
     }
     compile_header(b, n, total);
+    int x = 0;
+    while (used[x].kind != SCN_SEC_EXTENT) /* always among them */
+        x++;
+    if (compile_extent(b, total, &used[x], err, errlen) != 0) {
+        free(b);
+        return -1;
+    }
+    compile_header(b, n, total); /* the word sum with the extent */
     *out = b;
     *len = total;
     return 0;

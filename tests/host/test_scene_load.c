@@ -809,6 +809,70 @@ static void test_haze(void)
     free(b);
 }
 
+/* The triangles' extent (SCN_SEC_EXTENT): the compiler states the
+ * loader's own (scene_load_triangle_exp); a load given it makes the scene
+ * a load without it makes, bit for bit; one stated below a triangle's
+ * coordinate, or beyond the limit, is refused by name; one stated above
+ * loads. */
+static void test_extent(void)
+{
+    static const char *text =
+        "resolution 8 8\nlight point { colour 1 1 1  position 0 5 -5 }\n"
+        "material m { colour 1 1 1 }\n"
+        "triangle { material m  v -3 0 0  v 3 0 0  v 0 2.5 1 }\n"
+        "cluster c { scale 4\n triangle { material m  v 0 0 0  v 1 0 0  v 0 1 0 } }\n";
+    struct sd_scene sd;
+    char err[SD_ERR_MAX];
+    uint8_t *b = NULL;
+    size_t len = 0;
+    CHECK_EQ_INT(sd_parse_text("t.scn", text, &sd, err, sizeof err), 0);
+    CHECK_EQ_INT(sd_compile(&sd, &b, &len, err, sizeof err), 0);
+    sd_free(&sd);
+    if (!b)
+        return;
+    static uint8_t mem[ARENA_BYTES], mem2[ARENA_BYTES];
+    arena_t arena, arena2;
+    uint32_t bits = 0;
+    scene_load_error_t e;
+    arena_init(&arena, mem, sizeof mem);
+    CHECK_EQ_INT(scene_load_triangle_exp(b, len, &arena, &bits, &e), SCENE_LOAD_OK);
+    uint32_t at = section_offset(b, SCN_SEC_EXTENT);
+    CHECK(at != 0 && wire_get_u32(b + at + SCN_EXTENT_TRI_EXP) == bits);
+    CHECK_EQ_INT((int32_t)bits, 2); /* 3 in the root (2^1), 1 in c of scale 4 (2^0 + 2) */
+    /* without it: the section's count 0 */
+    uint8_t *c = malloc(len);
+    memcpy(c, b, len);
+    for (int i = 0; i < wire_get_u16(c + SCN_HDR_SECTIONS); i++) {
+        uint8_t *ent = c + SCN_HEADER_SIZE + i * SCN_SECENT_SIZE;
+        if (wire_get_u32(ent + SCN_SECENT_KIND) == SCN_SEC_EXTENT) {
+            wire_put_u32(ent + SCN_SECENT_BYTES, 0);
+            wire_put_u32(ent + SCN_SECENT_COUNT, 0);
+        }
+    }
+    fix_crc(c, len);
+    scene_t with, without;
+    arena_init(&arena, mem, sizeof mem);
+    arena_init(&arena2, mem2, sizeof mem2);
+    CHECK_EQ_INT(scene_load(b, len, &arena, &with, &e), SCENE_LOAD_OK);
+    CHECK_EQ_INT(scene_load(c, len, &arena2, &without, &e), SCENE_LOAD_OK);
+    CHECK_EQ_INT(with.unit_exp, without.unit_exp);
+    CHECK_EQ_INT(with.tol_exp, without.tol_exp);
+    CHECK(with.prim_count == 2 && without.prim_count == 2 &&
+          memcmp(with.prims, without.prims, 2 * sizeof *with.prims) == 0);
+    free(c);
+    expect_field(b, len, SCN_SEC_EXTENT, SCN_EXTENT_TRI_EXP, 0, 4, SCENE_LOAD_ERR_VALUE,
+                 "beyond the triangles' extent the scene states");
+    expect_field(b, len, SCN_SEC_EXTENT, SCN_EXTENT_TRI_EXP, SCN_EXTENT_NO_TRIANGLE, 4,
+                 SCENE_LOAD_ERR_VALUE, "prim 0: a coordinate beyond the triangles' extent");
+    expect_field(b, len, SCN_SEC_EXTENT, SCN_EXTENT_TRI_EXP, SCN_EXTENT_EXP_LIMIT + 1, 4,
+                 SCENE_LOAD_ERR_VALUE, "the EXTENT section's exponent");
+    expect_field(b, len, SCN_SEC_EXTENT, SCN_EXTENT_TRI_EXP, 3, 4, SCENE_LOAD_OK, "");
+    /* a coordinate not a number, under a stated extent: refused as a value */
+    expect_field(b, len, SCN_SEC_PRIMS, SCN_PRIM_VALUES, 0x7fc00000u, 4, SCENE_LOAD_ERR_VALUE,
+                 "prim 0: a value is");
+    free(b);
+}
+
 /* Anti-aliasing: options { aa N  aa_threshold T } reach render_options_t;
  * a depth over SCN_MAX_AA_DEPTH, a reserved word not 0, a threshold not
  * within 0..1 or not a number are refused, naming the field. */
@@ -858,5 +922,6 @@ int main(void)
     RUN(test_cone);
     RUN(test_haze);
     RUN(test_antialias);
+    RUN(test_extent);
     return check_exit();
 }

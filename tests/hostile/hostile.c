@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "host-tools/scene/scene_board.h"
 #include "host-tools/scene/scene_desc.h"
 #include "proto/wordsum.h"
 #include "proto/scene_format.h"
@@ -303,13 +304,22 @@ static int zero_box(struct hostile_scene *h)
     return refix(h);
 }
 
+/* The first triangle's vertices set to v, and the triangles' extent
+ * stated again as the compiler states it (sd_extent_bits): the loader
+ * meets the triangle's own fault, not one past the old extent. */
 static int set_triangle(struct hostile_scene *h, const float v[9])
 {
     uint8_t *p = prim_of(h, SCN_PRIM_TRIANGLE);
-    if (!p)
+    uint8_t *x = rec(h, SCN_SEC_EXTENT, SCN_EXTENT_SIZE, 0);
+    uint32_t bits;
+    char err[SD_ERR_MAX];
+    if (!p || !x)
         return -1;
     for (int k = 0; k < 9; k++)
         put_f32(p + SCN_PRIM_VALUES + 4 * k, v[k]);
+    if (sd_extent_bits(h->buf, h->len, &bits, err, sizeof err) != 0)
+        return -1;
+    wire_put_u32(x + SCN_EXTENT_TRI_EXP, bits);
     return refix(h);
 }
 
