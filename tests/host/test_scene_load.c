@@ -513,6 +513,19 @@ static void test_bad_indices_and_values(void)
     free(b);
 }
 
+/* A scene text compiled (checked to parse and compile): the buffer for
+ * the caller to free, or NULL. */
+static uint8_t *compile_text(const char *text, size_t *len)
+{
+    struct sd_scene sd;
+    char err[SD_ERR_MAX];
+    uint8_t *b = NULL;
+    CHECK_EQ_INT(sd_parse_text("t.scn", text, &sd, err, sizeof err), 0);
+    CHECK_EQ_INT(sd_compile(&sd, &b, len, err, sizeof err), 0);
+    sd_free(&sd);
+    return b;
+}
+
 /* A scene text compiled and loaded into *s (its arena static, as each
  * test's); the compiled buffer, which *s points into, for the caller to
  * free. */
@@ -712,13 +725,8 @@ static void test_view_keys(void)
         "light spot { position 0 5 0 at 0 0 0 cone 20 falloff 10 key 0 { } key 2 { cone 30 } }\n"
         "material b { }\n"
         "box { material b min -1 -1 -1 max 1 0 3 }\n";
-    struct sd_scene sd;
-    char err[SD_ERR_MAX];
-    uint8_t *b = NULL;
     size_t len = 0;
-    CHECK_EQ_INT(sd_parse_text("t.scn", text, &sd, err, sizeof err), 0);
-    CHECK_EQ_INT(sd_compile(&sd, &b, &len, err, sizeof err), 0);
-    sd_free(&sd);
+    uint8_t *b = compile_text(text, &len);
     if (!b)
         return;
     static uint8_t mem[ARENA_BYTES];
@@ -772,13 +780,8 @@ static void test_haze(void)
         "haze { colour 0.25 0.5 0.75  distance 8 }\n"
         "material m { colour 1 1 1  dic 0.2 drc 0.8 }\n"
         "sphere { material m  centre 0 0 0  radius 4 }\n";
-    struct sd_scene sd;
-    char err[SD_ERR_MAX];
-    uint8_t *b = NULL;
     size_t len = 0;
-    CHECK_EQ_INT(sd_parse_text("t.scn", text, &sd, err, sizeof err), 0);
-    CHECK_EQ_INT(sd_compile(&sd, &b, &len, err, sizeof err), 0);
-    sd_free(&sd);
+    uint8_t *b = compile_text(text, &len);
     if (!b)
         return;
     static uint8_t mem[ARENA_BYTES];
@@ -798,11 +801,11 @@ static void test_haze(void)
     expect_field(b, len, SCN_SEC_HAZE, SCN_HAZE_INV_DISTANCE, f32_bits(1.0e6f), 4,
                  SCENE_LOAD_ERR_VALUE, "haze distance under");
     free(b);
-    CHECK_EQ_INT(sd_parse_text("t.scn", "light point { colour 1 1 1  position 0 5 -5 }\n"
-                               "material m { colour 1 1 1 }\nsphere { material m  radius 1 }\n",
-                               &sd, err, sizeof err), 0);
-    CHECK_EQ_INT(sd_compile(&sd, &b, &len, err, sizeof err), 0);
-    sd_free(&sd);
+    b = compile_text("light point { colour 1 1 1  position 0 5 -5 }\n"
+                     "material m { colour 1 1 1 }\nsphere { material m  radius 1 }\n",
+                     &len);
+    if (!b)
+        return;
     arena_init(&arena, mem, sizeof mem);
     CHECK_EQ_INT(scene_load(b, len, &arena, &s, &e), SCENE_LOAD_OK);
     CHECK_EQ_INT(s.haze, 0);
@@ -821,13 +824,8 @@ static void test_extent(void)
         "material m { colour 1 1 1 }\n"
         "triangle { material m  v -3 0 0  v 3 0 0  v 0 2.5 1 }\n"
         "cluster c { scale 4\n triangle { material m  v 0 0 0  v 1 0 0  v 0 1 0 } }\n";
-    struct sd_scene sd;
-    char err[SD_ERR_MAX];
-    uint8_t *b = NULL;
     size_t len = 0;
-    CHECK_EQ_INT(sd_parse_text("t.scn", text, &sd, err, sizeof err), 0);
-    CHECK_EQ_INT(sd_compile(&sd, &b, &len, err, sizeof err), 0);
-    sd_free(&sd);
+    uint8_t *b = compile_text(text, &len);
     if (!b)
         return;
     static uint8_t mem[ARENA_BYTES], mem2[ARENA_BYTES];
