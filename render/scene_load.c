@@ -50,7 +50,7 @@ struct load_scaler {
     uint32_t lo, span;
     uint32_t tspan; /* a triangle coordinate's common case: span, or less
                        where the scene states its triangles' extent
-                       (load_tri_scaler) */
+                       (load_scaler_of) */
 };
 
 struct load {

@@ -303,7 +303,8 @@ static int compile_layout(const struct sd_scene *s, size_t texel_bytes,
     return n;
 }
 
-/* The header: magic, version, section count, size and word sum. */
+/* The header: magic, version, section count and size (the word sum:
+ * compile_sum, once the body is whole). */
 static void compile_header(uint8_t *b, int n, size_t total)
 {
     b[SCN_HDR_MAGIC + 0] = SCN_MAGIC_0;
@@ -313,6 +314,10 @@ static void compile_header(uint8_t *b, int n, size_t total)
     wire_put_u16(b + SCN_HDR_VERSION, SCN_VERSION);
     wire_put_u16(b + SCN_HDR_SECTIONS, (uint16_t)n);
     wire_put_u32(b + SCN_HDR_TOTAL, (uint32_t)total);
+}
+
+static void compile_sum(uint8_t *b, size_t total)
+{
     wire_put_u32(b + SCN_HDR_SUM, wordsum(b + SCN_SUM_START, total - SCN_SUM_START));
 }
 
@@ -369,11 +374,11 @@ static int compile_form(const struct sd_scene *s, const int *prim_cluster, uint8
     int x = 0;
     while (used[x].kind != SCN_SEC_EXTENT) /* always among them */
         x++;
-    if (compile_extent(b, total, &used[x], err, errlen) != 0) {
+    if (compile_extent(b, total, &used[x], err, errlen) != 0) { /* reads no sum */
         free(b);
         return -1;
     }
-    compile_header(b, n, total); /* the word sum with the extent */
+    compile_sum(b, total);
     *out = b;
     *len = total;
     return 0;
