@@ -24,11 +24,21 @@
  * matrix, its keys and its own child clusters, and everything below it
  * moves with it.  Primitives keep their order and index: only the cluster
  * each one names changes.
+ *
+ * The NCs test boxes in eye space (unless the scene stays in world
+ * coordinates, SCN_OPT_WORLD_SPACE), where a box cut along the cluster's
+ * own axes can be much fatter than along the camera's: the tree is built
+ * twice, with the primitives' boxes in each cluster's own axes and turned
+ * to the frame-0 camera's, and the one whose boxes cost less in the
+ * camera's axes (the sum over clusters of box area times the tests a ray
+ * into it makes) is kept, the camera's only when at least
+ * BVH_CAMERA_GAIN cheaper.
  */
 #include "host-tools/scene/scene_bvh.h"
 #include "host-tools/scene/scene_mem.h"
 
 #include <math.h>
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,6 +52,10 @@
                                three grown by half from one try to the next) */
 #define BVH_COST_NODE 1.0   /* one box test ... */
 #define BVH_COST_PRIM 2.0   /* ... against one primitive test ... */
+#define BVH_CAMERA_GAIN 0.99 /* a tree in the camera's axes is kept when
+                                its cost is below this times the other's:
+                                closer than that, the NCs' work measured
+                                either side of equal (docs/scene-format.md) */
 #define BVH_COST_CLUSTER 6.0 /* ... and against the DM's work on a cluster
                                 each frame (its load, index and
                                 preparation, about 500 instructions): the
@@ -63,6 +77,10 @@ struct bvh_build {
     double rays;      /* a frame's rays: a camera ray a pixel, a shadow ray
                          a light (0: no view, no cost of clusters) */
     double root_area; /* the box area of the tree being built */
+    const double (*axes)[3][3]; /* NULL: each primitive's box in its
+                                   cluster's own axes; else in axes[c]
+                                   (cluster c's turned to the camera's) */
+    struct bvh_item *items, *spare; /* room for every primitive (+1) */
     struct bvh_build_stats *stats;
 };
 
@@ -130,6 +148,84 @@ void sd_prim_bounds(const struct sd_scene *s, const struct sd_prim *p, double lo
             bvh_box_add(lo, hi, clo, chi);
         }
         break;
+    }
+}
+
+/* The box of primitive p in its cluster's coordinates turned by a (a
+ * triangle's vertices turned; anything else its box's centre turned and
+ * its half sizes spread over the new axes), or as they are (a NULL). */
+static void bvh_prim_box(const struct sd_scene *s, const struct sd_prim *p,
+                         const double (*a)[3], double lo[3], double hi[3])
+{
+    if (a && p->kind == SCN_PRIM_TRIANGLE) {
+        bvh_box_empty(lo, hi);
+        for (int v = 0; v < 3; v++) {
+            const double *q = &p->v[3 * v];
+            double t[3];
+            for (int i = 0; i < 3; i++)
+                t[i] = a[i][0] * q[0] + a[i][1] * q[1] + a[i][2] * q[2];
+            bvh_box_add(lo, hi, t, t);
+        }
+        return;
+    }
+    sd_prim_bounds(s, p, lo, hi);
+    if (!a)
+        return;
+    double c[3], h[3];
+    for (int k = 0; k < 3; k++) {
+        c[k] = 0.5 * (lo[k] + hi[k]);
+        h[k] = 0.5 * (hi[k] - lo[k]);
+    }
+    for (int i = 0; i < 3; i++) {
+        double ci = a[i][0] * c[0] + a[i][1] * c[1] + a[i][2] * c[2];
+        double hi_i = fabs(a[i][0]) * h[0] + fabs(a[i][1]) * h[1] + fabs(a[i][2]) * h[2];
+        lo[i] = ci - hi_i;
+        hi[i] = ci + hi_i;
+    }
+}
+
+/* The frame-0 camera's axes as rows (right, up, forward: render/prepare.c's
+ * eye space up to the order and sign of the axes, which no box's area
+ * sees); 0 when the scene stays in world coordinates. */
+static int bvh_camera_axes(const struct sd_scene *s, double r[3][3])
+{
+    if (s->view.flags & SCN_OPT_WORLD_SPACE)
+        return 0;
+    struct sd_view v;
+    struct sd_light lights[SCN_MAX_LIGHTS];
+    sd_view_at(s, 0, &v, lights);
+    double *f = r[2], *x = r[0], *y = r[1];
+    for (int k = 0; k < 3; k++)
+        f[k] = v.look_at[k] - v.eye[k];
+    for (int k = 0; k < 3; k++) /* right = up x forward */
+        x[k] = v.up[(k + 1) % 3] * f[(k + 2) % 3] - v.up[(k + 2) % 3] * f[(k + 1) % 3];
+    for (int k = 0; k < 3; k++) /* up' = forward x right */
+        y[k] = f[(k + 1) % 3] * x[(k + 2) % 3] - f[(k + 2) % 3] * x[(k + 1) % 3];
+    for (int i = 0; i < 3; i++) {
+        double len = sqrt(r[i][0] * r[i][0] + r[i][1] * r[i][1] + r[i][2] * r[i][2]);
+        if (!(len > 0) || !isfinite(len))
+            return 0;
+        for (int k = 0; k < 3; k++)
+            r[i][k] /= len;
+    }
+    return 1;
+}
+
+/* axes[c]: cluster c's coordinates turned to the camera's axes cam at
+ * frame 0 (its keyed placement times its matrix, under its parent's). */
+static void bvh_cluster_axes(const struct sd_scene *s, const double cam[3][3],
+                             double (*axes)[3][3])
+{
+    for (int c = 0; c < s->n_clusters; c++) {
+        int p = c == 0 ? -1 : s->clusters[c].parent;
+        const double(*up)[3] = p < 0 ? cam : (const double(*)[3])axes[p];
+        double k[12], local[12];
+        sd_key_matrix(s, c, 0, k);
+        sd_mat_mul(k, s->clusters[c].m, local);
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 3; j++)
+                axes[c][i][j] = up[i][0] * local[j] + up[i][1] * local[4 + j] +
+                                up[i][2] * local[8 + j];
     }
 }
 
@@ -356,29 +452,23 @@ static int bvh_try(struct bvh_build *b, const int *nest, int leaf_min)
         b->prim_cluster[i] = s->prims[i].cluster;
     /* the primitives of each cluster, in index order */
     int *count = calloc((size_t)s->n_clusters + 1, sizeof *count);
-    struct bvh_item *items = scene_mem_alloc(((size_t)s->n_prims + 1) * sizeof *items);
-    struct bvh_item *spare = scene_mem_alloc(((size_t)s->n_prims + 1) * sizeof *spare);
-    if (!count || !items || !spare) {
+    int *at = malloc(((size_t)s->n_clusters + 1) * sizeof *at);
+    if (!count || !at) {
         free(count);
-        free(items);
-        free(spare);
+        free(at);
         return -1;
     }
     for (int i = 0; i < s->n_prims; i++)
         count[s->prims[i].cluster + 1]++;
     for (int c = 0; c < s->n_clusters; c++)
         count[c + 1] += count[c];
-    int *at = malloc(((size_t)s->n_clusters + 1) * sizeof *at);
-    if (!at) {
-        free(count);
-        free(items);
-        free(spare);
-        return -1;
-    }
     memcpy(at, count, ((size_t)s->n_clusters + 1) * sizeof *at);
+    struct bvh_item *items = b->items, *spare = b->spare;
     for (int i = 0; i < s->n_prims; i++) {
-        struct bvh_item *it = &items[at[s->prims[i].cluster]++];
-        sd_prim_bounds(s, &s->prims[i], it->lo, it->hi);
+        int c = s->prims[i].cluster;
+        struct bvh_item *it = &items[at[c]++];
+        bvh_prim_box(s, &s->prims[i], b->axes ? (const double(*)[3])b->axes[c] : NULL, it->lo,
+                     it->hi);
         for (int k = 0; k < 3; k++)
             it->c[k] = 0.5 * (it->lo[k] + it->hi[k]);
         it->prim = i;
@@ -395,50 +485,197 @@ static int bvh_try(struct bvh_build *b, const int *nest, int leaf_min)
                        SCN_MAX_CLUSTER_NESTING - nest[c], 0);
     }
     free(count);
-    free(items);
-    free(spare);
     return rc;
+}
+
+/* b's tree, larger leaves tried until its clusters fit (they need fewer):
+ * 0, or -1 with *tried the last leaf_min tried. */
+static int bvh_grow(struct bvh_build *b, const int *nest, int *tried)
+{
+    int rc = -1;
+    for (int leaf_min = BVH_LEAF_MIN; rc != 0 && leaf_min <= BVH_LEAF_MIN_TOP;
+         leaf_min += (leaf_min + 1) / 2) { /* 2, 3, 5, 8, 12, 18, 27 */
+        rc = bvh_try(b, nest, leaf_min);
+        *tried = leaf_min;
+    }
+    return rc;
+}
+
+/* The cost of b's tree with every primitive's box in axes (its cluster's
+ * turned to the camera's): over the clusters, the box's area times the
+ * tests a ray into it makes (a box test a child, a primitive test a
+ * primitive).  HUGE_VAL when memory runs out. */
+static double bvh_tree_cost(const struct bvh_build *b, const double (*axes)[3][3])
+{
+    const struct sd_scene *s = b->in;
+    size_t n = (size_t)b->n_clusters;
+    double(*lo)[3] = malloc(n * sizeof *lo), (*hi)[3] = malloc(n * sizeof *hi);
+    double *tests = calloc(n, sizeof *tests);
+    double cost = HUGE_VAL;
+    if (lo && hi && tests) {
+        for (size_t c = 0; c < n; c++)
+            bvh_box_empty(lo[c], hi[c]);
+        for (int i = 0; i < s->n_prims; i++) {
+            double plo[3], phi[3];
+            int c = b->prim_cluster[i];
+            bvh_prim_box(s, &s->prims[i], (const double(*)[3])axes[s->prims[i].cluster], plo,
+                         phi);
+            bvh_box_add(lo[c], hi[c], plo, phi);
+            tests[c] += BVH_COST_PRIM;
+        }
+        for (int c = b->n_clusters - 1; c >= s->n_clusters; c--) { /* children after parents */
+            int p = b->clusters[c].parent;
+            bvh_box_add(lo[p], hi[p], lo[c], hi[c]);
+            tests[p] += BVH_COST_NODE;
+        }
+        cost = 0;
+        for (size_t c = 0; c < n; c++)
+            cost += bvh_area(lo[c], hi[c]) * tests[c];
+    }
+    free(lo);
+    free(hi);
+    free(tests);
+    return cost;
+}
+
+/* One of the two trees: its build (into prim_cluster and stats, the
+ * primitives' boxes in axes, NULL for their clusters' own, in its own room
+ * items and spare), its result, and its cost with the boxes in the
+ * camera's axes (eval; NULL: not asked). */
+struct bvh_candidate {
+    struct bvh_build b;
+    const int *nest;
+    const double (*eval)[3][3];
+    int rc, tried;
+    double cost;
+};
+
+static int bvh_candidate_init(struct bvh_candidate *k, const struct sd_scene *s,
+                              const int *nest, int *prim_cluster, struct bvh_build_stats *stats,
+                              const double (*axes)[3][3])
+{
+    struct bvh_build *b = &k->b;
+    size_t room = (size_t)s->n_prims + 1;
+    memset(k, 0, sizeof *k);
+    k->nest = nest;
+    k->rc = -1;
+    k->cost = HUGE_VAL;
+    b->in = s;
+    b->stats = stats;
+    b->prim_cluster = prim_cluster;
+    b->axes = axes;
+    if (s->view.width > 0 && s->view.height > 0)
+        b->rays = (double)s->view.width * s->view.height * (1 + s->n_lights);
+    b->cap_clusters = s->n_clusters + 2 * s->n_prims / BVH_LEAF_MAX + 16;
+    b->clusters = scene_mem_alloc((size_t)b->cap_clusters * sizeof *b->clusters);
+    b->items = scene_mem_alloc(room * sizeof *b->items);
+    b->spare = scene_mem_alloc(room * sizeof *b->spare);
+    return b->clusters && b->items && b->spare && prim_cluster ? 0 : -1;
+}
+
+static void bvh_candidate_free(struct bvh_candidate *k)
+{
+    free(k->b.clusters);
+    free(k->b.items);
+    free(k->b.spare);
+    k->b.clusters = NULL;
+    k->b.items = k->b.spare = NULL;
+}
+
+/* Builds candidate arg and costs it (a thread's body, or called). */
+static void *bvh_candidate_run(void *arg)
+{
+    struct bvh_candidate *k = arg;
+    k->rc = bvh_grow(&k->b, k->nest, &k->tried);
+    if (k->rc == 0 && k->eval)
+        k->cost = bvh_tree_cost(&k->b, k->eval);
+    return NULL;
+}
+
+/* own (its clusters' axes) and turned (the camera's) built side by side,
+ * turned in a second thread (or after own where none starts). */
+static void bvh_build_both(struct bvh_candidate *own, struct bvh_candidate *turned)
+{
+    pthread_t th;
+    int threaded = pthread_create(&th, NULL, bvh_candidate_run, turned) == 0;
+    bvh_candidate_run(own);
+    if (threaded)
+        pthread_join(th, NULL);
+    else
+        bvh_candidate_run(turned);
+}
+
+/* The camera's tree kept in own's place when it costs less by
+ * BVH_CAMERA_GAIN (or own has none); own's stats say which and both
+ * costs. */
+static void bvh_keep_cheaper(struct bvh_candidate *own, struct bvh_candidate *turned)
+{
+    const struct sd_scene *s = own->b.in;
+    double own_cost = own->rc == 0 ? own->cost : HUGE_VAL;
+    int keep = turned->rc == 0 && turned->cost < BVH_CAMERA_GAIN * own_cost;
+    if (keep) {
+        memcpy(own->b.prim_cluster, turned->b.prim_cluster, (size_t)s->n_prims * sizeof(int));
+        *own->b.stats = *turned->b.stats;
+        struct sd_cluster *c = own->b.clusters;
+        own->b.clusters = turned->b.clusters;
+        own->b.n_clusters = turned->b.n_clusters;
+        turned->b.clusters = c;
+        own->rc = 0;
+    }
+    own->b.stats->camera_axes = keep;
+    own->b.stats->cost_own = own_cost;
+    own->b.stats->cost_camera = turned->rc == 0 ? turned->cost : HUGE_VAL;
 }
 
 int sd_auto_hierarchy(const struct sd_scene *s, struct sd_cluster **clusters, int *n_clusters,
                       int *prim_cluster, struct bvh_build_stats *stats, char *err, size_t errlen)
 {
-    struct bvh_build b;
-    memset(&b, 0, sizeof b);
-    b.in = s;
-    b.stats = stats;
-    b.prim_cluster = prim_cluster;
-    if (s->view.width > 0 && s->view.height > 0)
-        b.rays = (double)s->view.width * s->view.height * (1 + s->n_lights);
-    b.cap_clusters = s->n_clusters + 2 * s->n_prims / BVH_LEAF_MAX + 16;
-    b.clusters = scene_mem_alloc((size_t)b.cap_clusters * sizeof *b.clusters);
-    int *nest = malloc(((size_t)s->n_clusters + 1) * sizeof *nest);
-    if (!b.clusters || !nest) {
-        free(b.clusters);
-        free(nest);
-        snprintf(err, errlen, "out of memory building the automatic hierarchy");
-        return -1;
+    double cam[3][3];
+    int turn = bvh_camera_axes(s, cam);
+    size_t n_author = (size_t)s->n_clusters + 1;
+    int *nest = malloc(n_author * sizeof *nest);
+    int *turned_cluster = turn ? scene_mem_alloc(((size_t)s->n_prims + 1) * sizeof(int)) : NULL;
+    double(*axes)[3][3] = turn ? malloc(n_author * sizeof *axes) : NULL;
+    struct bvh_candidate own, turned;
+    struct bvh_build_stats turned_stats;
+    const double(*eval)[3][3] = (const double(*)[3][3])axes;
+    int ok = nest && (!turn || axes);
+    ok = bvh_candidate_init(&own, s, nest, prim_cluster, stats, NULL) == 0 && ok;
+    ok = (!turn || bvh_candidate_init(&turned, s, nest, turned_cluster, &turned_stats, eval) == 0) &&
+         ok;
+    if (ok) {
+        bvh_nesting(s, nest);
+        if (turn) {
+            bvh_cluster_axes(s, cam, axes);
+            own.eval = eval;
+            turned.eval = eval;
+            bvh_build_both(&own, &turned);
+            bvh_keep_cheaper(&own, &turned);
+        } else {
+            bvh_candidate_run(&own);
+        }
     }
-    bvh_nesting(s, nest);
-    int rc = -1;
-    /* larger leaves need fewer clusters: widen until they fit */
-    int tried = 0;
-    for (int leaf_min = BVH_LEAF_MIN; rc != 0 && leaf_min <= BVH_LEAF_MIN_TOP;
-         leaf_min += (leaf_min + 1) / 2) { /* 2, 3, 5, 8, 12, 18, 27 */
-        rc = bvh_try(&b, nest, leaf_min);
-        tried = leaf_min;
-    }
+    if (turn)
+        bvh_candidate_free(&turned);
     free(nest);
-    if (rc != 0) {
-        snprintf(err, errlen,
-                 "automatic hierarchy: %d primitives need more than SCN_MAX_CLUSTERS (%d) "
-                 "clusters even with leaves of %d or more; split the scene or turn "
-                 "auto_hierarchy off",
-                 s->n_prims, SCN_MAX_CLUSTERS, tried);
-        free(b.clusters);
+    free(turned_cluster);
+    free(axes);
+    struct sd_cluster *tree = own.b.clusters;
+    own.b.clusters = NULL;
+    bvh_candidate_free(&own);
+    if (!ok || own.rc != 0) {
+        free(tree);
+        if (!ok)
+            snprintf(err, errlen, "out of memory building the automatic hierarchy");
+        else
+            snprintf(err, errlen,
+                     "automatic hierarchy: %d primitives need more than SCN_MAX_CLUSTERS (%d) "
+                     "clusters even with leaves of %d or more; split the scene or turn "
+                     "auto_hierarchy off",
+                     s->n_prims, SCN_MAX_CLUSTERS, own.tried);
         return -1;
     }
-    *clusters = b.clusters;
-    *n_clusters = b.n_clusters;
+    *clusters = tree;
+    *n_clusters = own.b.n_clusters;
     return 0;
 }

@@ -24,6 +24,10 @@ struct bvh_build_stats {
     int leaves;         /* leaf clusters (including unsplit roots) */
     int largest_leaf;   /* primitives in the fullest leaf */
     int depth;          /* deepest level below a split cluster */
+    int camera_axes;    /* 1: the tree built in the frame-0 camera's axes
+                           was kept (scene_bvh.c) */
+    double cost_own, cost_camera; /* both trees' costs in the camera's axes
+                                     (0: not built; HUGE_VAL: no tree) */
 };
 
 /* The box of primitive p in its cluster's coordinates. */

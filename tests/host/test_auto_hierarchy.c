@@ -9,11 +9,16 @@
  *     author clusters), through both the full tree walk and the NC's
  *     clipped area loop;
  *   - a smaller frame (fewer rays) gets fewer clusters and larger leaves;
+ *   - slivers lying along the camera's up axis, which is not the world's,
+ *     get the tree built in the camera's axes, cheaper there by the cost
+ *     the compiler judges it by, and the same image; in world space, and
+ *     under a camera whose axes are the world's, the clusters' own;
  *   - a scene that would need more clusters than the format holds, more
  *     bytes, or more of the board's memory than an IMSU block, is refused,
  *     naming the limit and the count (and one exactly at the board's
  *     limit passes).
  */
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -61,8 +66,13 @@ static const char *head =
     "material g { colour 0.5 0.8 0.9  dic 0.1 drc 0.2 src 0.1 trc 0.7 ior 1.3 }\n"
     "box { material a  min -9 -1.5 -9  max 9 -1 9 }\n";
 
+/* The camera's up axis in head's view (up x forward, then forward x
+ * right): (0, 12, 4.5) / |(0, 12, 4.5)|. */
+static const double head_up[3] = {0, 0.936329, 0.351123};
+
 /* kind 0: spheres (some glass) in the root; 1: a mesh of triangles in a
- * rotated cluster; 2: spheres in a keyframed cluster and nested clusters */
+ * rotated cluster; 2: spheres in a keyframed cluster and nested clusters;
+ * 3: slivers 1.2 long along the camera's up axis, 0.05 wide along x */
 static char *make_scene(int kind, int n)
 {
     size_t len = 0, cap = 0;
@@ -76,7 +86,12 @@ static char *make_scene(int kind, int n)
                       "cluster spin { key 0 { translate 0 0 0 } key 3 { translate 1 0.5 0 "
                       "rotate 0 40 0 }\n");
     for (int i = 0; i < n; i++) {
-        if (kind == 1) {
+        if (kind == 3) {
+            double x = rnd(-4, 4), y = rnd(-1, 2), z = rnd(-4, 4);
+            snprintf(line, sizeof line,
+                     "triangle { material a  v %.4f %.4f %.4f  v %.4f %.4f %.4f  v %.4f %.4f %.4f }\n",
+                     x, y, z, x + 0.05, y, z, x, y + 1.2 * head_up[1], z + 1.2 * head_up[2]);
+        } else if (kind == 1) {
             double x = rnd(-4, 4), y = rnd(-1, 3), z = rnd(-4, 4);
             snprintf(line, sizeof line,
                      "triangle { material a  v %.3f %.3f %.3f  v %.3f %.3f %.3f  v %.3f %.3f %.3f }\n",
@@ -92,7 +107,7 @@ static char *make_scene(int kind, int n)
     }
     if (kind == 2)
         t = text_grow(t, &len, &cap, "}\n");
-    if (kind >= 1)
+    if (kind == 1 || kind == 2)
         t = text_grow(t, &len, &cap, "}\n");
     return t;
 }
@@ -289,6 +304,7 @@ static void check_same_images(int kind, int n)
 static void test_same_image_spheres(void) { check_same_images(0, 400); }
 static void test_same_image_mesh(void) { check_same_images(1, 1500); }
 static void test_same_image_keyframed_nested(void) { check_same_images(2, 300); }
+static void test_same_image_camera_axes(void) { check_same_images(3, 600); }
 
 /* a cluster 30 deep with 2000 primitives: the tree must fit the 2 levels
  * left (big leaves), and the loader must accept the result */
@@ -392,6 +408,60 @@ static void test_leaves_follow_rays(void)
     sd_free(&s);
 }
 
+/* The slivers along the camera's up axis, without the floor: built in the camera's axes,
+ * whose tree costs less there (the compiler's measure) by more than the
+ * margin; with the scene in world space, and with a camera looking down
+ * the world's z axis, the clusters' own axes (the camera's tree not
+ * built, or no cheaper). */
+static void test_camera_axes_kept(void)
+{
+    char *text = make_scene(3, 1500);
+    char *floor = strstr(text, "box {"); /* the slivers alone: no floor */
+    CHECK(floor != NULL);
+    if (floor)
+        memmove(floor, strchr(floor, '\n') + 1, strlen(strchr(floor, '\n') + 1) + 1);
+    struct sd_scene s;
+    CHECK_EQ_INT(parse(text, &s), 0);
+    free(text);
+    struct bvh_build_stats st;
+    CHECK(tree_at(&s, 48, 36, &st) > s.n_clusters);
+    CHECK_EQ_INT(st.camera_axes, 1);
+    CHECK(st.cost_camera > 0 && st.cost_camera < 0.9 * st.cost_own);
+    printf("# slivers: cost %.1f in the camera's axes, %.1f in the world's\n", st.cost_camera,
+           st.cost_own);
+    /* the scene and its camera turned 30 degrees about y: the camera's
+     * axes turn with them, so its tree costs the same */
+    struct sd_scene t = s;
+    t.prims = malloc((size_t)s.n_prims * sizeof *t.prims);
+    memcpy(t.prims, s.prims, (size_t)s.n_prims * sizeof *t.prims);
+    const double c30 = 0.8660254037844387, s30 = 0.5;
+    double *turn[3 + 3 * 1500 + 3], **end = turn;
+    *end++ = t.view.eye, *end++ = t.view.look_at, *end++ = t.view.up;
+    for (int i = 0; i < t.n_prims; i++)
+        for (int v = 0; v < 3; v++)
+            *end++ = &t.prims[i].v[3 * v];
+    for (double **q = turn; q < end; q++) {
+        double x = (*q)[0], z = (*q)[2];
+        (*q)[0] = c30 * x + s30 * z;
+        (*q)[2] = -s30 * x + c30 * z;
+    }
+    struct bvh_build_stats turned;
+    CHECK(tree_at(&t, 48, 36, &turned) > s.n_clusters);
+    CHECK(turned.camera_axes == 1 && fabs(turned.cost_camera - st.cost_camera) < 1e-6 * st.cost_camera);
+    printf("# turned 30 degrees: %.6f, %.1f in the world's\n", turned.cost_camera, turned.cost_own);
+    free(t.prims);
+    s.view.flags |= SCN_OPT_WORLD_SPACE;
+    CHECK(tree_at(&s, 48, 36, &st) > s.n_clusters);
+    CHECK(st.camera_axes == 0 && st.cost_camera == 0 && st.cost_own == 0);
+    s.view.flags &= ~SCN_OPT_WORLD_SPACE;
+    const double eye[3] = {0, 0.5, -12}, at[3] = {0, 0.5, 0};
+    memcpy(s.view.eye, eye, sizeof eye);
+    memcpy(s.view.look_at, at, sizeof at);
+    CHECK(tree_at(&s, 48, 36, &st) > s.n_clusters);
+    CHECK(st.camera_axes == 0 && st.cost_own > 0 && st.cost_camera == st.cost_own);
+    sd_free(&s);
+}
+
 /* n small ellipsoids in one cluster, nothing else: a scene for the
  * compiler's limits */
 static void flat_ellipsoids(struct sd_scene *s, int n, int no_tree)
@@ -489,12 +559,14 @@ int main(void)
     RUN(test_same_image_spheres);
     RUN(test_same_image_mesh);
     RUN(test_same_image_keyframed_nested);
+    RUN(test_same_image_camera_axes);
     RUN(test_nesting_limit_kept);
 #if defined(LINKS1_NUM_DOUBLE) /* the compiler alone: once is enough */
     RUN(test_cluster_limit_named);
     RUN(test_size_limit_named);
     RUN(test_board_limit_named);
     RUN(test_leaves_follow_rays);
+    RUN(test_camera_axes_kept);
 #endif
     return check_exit();
 }
