@@ -151,14 +151,46 @@ void sd_prim_bounds(const struct sd_scene *s, const struct sd_prim *p, double lo
     }
 }
 
-/* The box of primitive p in its cluster's coordinates turned by a (a
- * triangle's vertices turned; anything else its box's centre turned and
- * its half sizes spread over the new axes), or as they are (a NULL). */
+/* The box around centre c with half sizes h along the axes of a, turned
+ * by a: of a box its corners' (l1: the sum of |a_ij| h_j), of an
+ * ellipsoid with those semi-axes its own (the root of the sum of
+ * (a_ij h_j)^2). */
+static void bvh_turned_box(const double (*a)[3], const double c[3], const double h[3], int l1,
+                           double lo[3], double hi[3])
+{
+    for (int i = 0; i < 3; i++) {
+        double ci = a[i][0] * c[0] + a[i][1] * c[1] + a[i][2] * c[2], e = 0;
+        for (int j = 0; j < 3; j++)
+            e += l1 ? fabs(a[i][j]) * h[j] : a[i][j] * a[i][j] * h[j] * h[j];
+        e = l1 ? e : sqrt(e);
+        lo[i] = ci - e;
+        hi[i] = ci + e;
+    }
+}
+
+/* The box of primitive p in its cluster's coordinates turned by a, or as
+ * they are (a NULL): a triangle's vertices turned, an ellipsoid's or a
+ * density sphere's balls bounded as they turn, a box's corners, a cone's
+ * box's corners. */
 static void bvh_prim_box(const struct sd_scene *s, const struct sd_prim *p,
                          const double (*a)[3], double lo[3], double hi[3])
 {
-    if (a && p->kind == SCN_PRIM_TRIANGLE) {
-        bvh_box_empty(lo, hi);
+    if (!a || p->kind == SCN_PRIM_BOX || p->kind == SCN_PRIM_CONE) {
+        sd_prim_bounds(s, p, lo, hi);
+        if (!a)
+            return;
+        double c[3], h[3];
+        for (int k = 0; k < 3; k++) {
+            c[k] = 0.5 * (lo[k] + hi[k]);
+            h[k] = 0.5 * (hi[k] - lo[k]);
+        }
+        bvh_turned_box(a, c, h, 1, lo, hi);
+        return;
+    }
+    bvh_box_empty(lo, hi);
+    if (p->kind == SCN_PRIM_ELLIPSOID) {
+        bvh_turned_box(a, &p->v[0], &p->v[3], 0, lo, hi);
+    } else if (p->kind == SCN_PRIM_TRIANGLE) {
         for (int v = 0; v < 3; v++) {
             const double *q = &p->v[3 * v];
             double t[3];
@@ -166,21 +198,13 @@ static void bvh_prim_box(const struct sd_scene *s, const struct sd_prim *p,
                 t[i] = a[i][0] * q[0] + a[i][1] * q[1] + a[i][2] * q[2];
             bvh_box_add(lo, hi, t, t);
         }
-        return;
-    }
-    sd_prim_bounds(s, p, lo, hi);
-    if (!a)
-        return;
-    double c[3], h[3];
-    for (int k = 0; k < 3; k++) {
-        c[k] = 0.5 * (lo[k] + hi[k]);
-        h[k] = 0.5 * (hi[k] - lo[k]);
-    }
-    for (int i = 0; i < 3; i++) {
-        double ci = a[i][0] * c[0] + a[i][1] * c[1] + a[i][2] * c[2];
-        double hi_i = fabs(a[i][0]) * h[0] + fabs(a[i][1]) * h[1] + fabs(a[i][2]) * h[2];
-        lo[i] = ci - hi_i;
-        hi[i] = ci + hi_i;
+    } else { /* DENSITY: every component's ball */
+        for (int i = 0; i < p->count; i++) {
+            const struct sd_component *c = &s->components[p->first + i];
+            double r[3] = {c->radius, c->radius, c->radius}, clo[3], chi[3];
+            bvh_turned_box(a, c->centre, r, 0, clo, chi);
+            bvh_box_add(lo, hi, clo, chi);
+        }
     }
 }
 
