@@ -62,6 +62,10 @@
                                 value where the DM's work and the NCs' both
                                 fell on the SPD (docs/scene-format.md) */
 
+/* A cluster's coordinates turned to the camera's axes (rows: right, up,
+ * forward), the linear part. */
+typedef double bvh_axes_t[3][3];
+
 struct bvh_item {
     double lo[3], hi[3], c[3];
     double key; /* centroid on the median split's axis */
@@ -77,9 +81,9 @@ struct bvh_build {
     double rays;      /* a frame's rays: a camera ray a pixel, a shadow ray
                          a light (0: no view, no cost of clusters) */
     double root_area; /* the box area of the tree being built */
-    const double (*axes)[3][3]; /* NULL: each primitive's box in its
-                                   cluster's own axes; else in axes[c]
-                                   (cluster c's turned to the camera's) */
+    const bvh_axes_t *axes; /* NULL: each primitive's box in its cluster's
+                               own axes; else in axes[c] (cluster c's
+                               turned to the camera's) */
     struct bvh_item *items, *spare; /* room for every primitive (+1) */
     struct bvh_build_stats *stats;
 };
@@ -238,7 +242,7 @@ static int bvh_camera_axes(const struct sd_scene *s, double r[3][3])
 /* axes[c]: cluster c's coordinates turned to the camera's axes cam at
  * frame 0 (its keyed placement times its matrix, under its parent's). */
 static void bvh_cluster_axes(const struct sd_scene *s, const double cam[3][3],
-                             double (*axes)[3][3])
+                             bvh_axes_t *axes)
 {
     for (int c = 0; c < s->n_clusters; c++) {
         int p = c == 0 ? -1 : s->clusters[c].parent;
@@ -529,7 +533,7 @@ static int bvh_grow(struct bvh_build *b, const int *nest, int *tried)
  * turned to the camera's): over the clusters, the box's area times the
  * tests a ray into it makes (a box test a child, a primitive test a
  * primitive).  HUGE_VAL when memory runs out. */
-static double bvh_tree_cost(const struct bvh_build *b, const double (*axes)[3][3])
+static double bvh_tree_cost(const struct bvh_build *b, const bvh_axes_t *axes)
 {
     const struct sd_scene *s = b->in;
     size_t n = (size_t)b->n_clusters;
@@ -569,14 +573,14 @@ static double bvh_tree_cost(const struct bvh_build *b, const double (*axes)[3][3
 struct bvh_candidate {
     struct bvh_build b;
     const int *nest;
-    const double (*eval)[3][3];
+    const bvh_axes_t *eval;
     int rc, tried;
     double cost;
 };
 
 static int bvh_candidate_init(struct bvh_candidate *k, const struct sd_scene *s,
                               const int *nest, int *prim_cluster, struct bvh_build_stats *stats,
-                              const double (*axes)[3][3])
+                              const bvh_axes_t *axes)
 {
     struct bvh_build *b = &k->b;
     size_t room = (size_t)s->n_prims + 1;
@@ -651,26 +655,63 @@ static void bvh_keep_cheaper(struct bvh_candidate *own, struct bvh_candidate *tu
     own->b.stats->cost_camera = turned->rc == 0 ? turned->cost : HUGE_VAL;
 }
 
+/* 1 when every row of every cluster's axes is a unit axis or its
+ * negative: the turned boxes are the own ones, the axes in another order. */
+static int bvh_axes_aligned(const struct sd_scene *s, const bvh_axes_t *axes)
+{
+    for (int c = 0; c < s->n_clusters; c++)
+        for (int i = 0; i < 3; i++) {
+            int ones = 0, zeros = 0;
+            for (int j = 0; j < 3; j++) {
+                ones += fabs(axes[c][i][j]) == 1;
+                zeros += axes[c][i][j] == 0;
+            }
+            if (ones != 1 || zeros != 2)
+                return 0;
+        }
+    return 1;
+}
+
+/* Each author cluster's axes turned to the frame-0 camera's (malloc'ed),
+ * or NULL when no second tree is to be built: the scene stays in world
+ * coordinates, the turned axes are the own ones in another order, or
+ * memory ran out (*oom = 1). */
+static bvh_axes_t *bvh_turned_axes(const struct sd_scene *s, int *oom)
+{
+    double cam[3][3];
+    *oom = 0;
+    if (!bvh_camera_axes(s, cam))
+        return NULL;
+    bvh_axes_t *axes = malloc(((size_t)s->n_clusters + 1) * sizeof *axes);
+    if (!axes) {
+        *oom = 1;
+        return NULL;
+    }
+    bvh_cluster_axes(s, cam, axes);
+    if (!bvh_axes_aligned(s, (const bvh_axes_t *)axes))
+        return axes;
+    free(axes);
+    return NULL;
+}
+
 int sd_auto_hierarchy(const struct sd_scene *s, struct sd_cluster **clusters, int *n_clusters,
                       int *prim_cluster, struct bvh_build_stats *stats, char *err, size_t errlen)
 {
-    double cam[3][3];
-    int turn = bvh_camera_axes(s, cam);
-    size_t n_author = (size_t)s->n_clusters + 1;
-    int *nest = malloc(n_author * sizeof *nest);
+    int oom;
+    bvh_axes_t *axes = bvh_turned_axes(s, &oom);
+    int turn = axes != NULL;
+    int *nest = malloc(((size_t)s->n_clusters + 1) * sizeof *nest);
     int *turned_cluster = turn ? scene_mem_alloc(((size_t)s->n_prims + 1) * sizeof(int)) : NULL;
-    double(*axes)[3][3] = turn ? malloc(n_author * sizeof *axes) : NULL;
     struct bvh_candidate own, turned;
     struct bvh_build_stats turned_stats;
-    const double(*eval)[3][3] = (const double(*)[3][3])axes;
-    int ok = nest && (!turn || axes);
+    const bvh_axes_t *eval = (const bvh_axes_t *)axes;
+    int ok = nest && !oom;
     ok = bvh_candidate_init(&own, s, nest, prim_cluster, stats, NULL) == 0 && ok;
     ok = (!turn || bvh_candidate_init(&turned, s, nest, turned_cluster, &turned_stats, eval) == 0) &&
          ok;
     if (ok) {
         bvh_nesting(s, nest);
         if (turn) {
-            bvh_cluster_axes(s, cam, axes);
             own.eval = eval;
             turned.eval = eval;
             bvh_build_both(&own, &turned);
