@@ -7,6 +7,9 @@ Run: python3 host-tools/gen/make_city.py OUT.scn (`make` writes
 build/scenes/city.scn; its map, maps/bricks.png, is looked for beside OUT)"""
 import sys
 
+sys.dont_write_bytecode = True  # no __pycache__ left in host-tools/gen
+from gen_args import out_operand  # noqa: E402 (beside this file)
+
 HEADER = """# city.scn: many objects in nested clusters (written by make_city.py).
 # 4 districts x 4 blocks x 4 buildings, each building a box with an
 # ellipsoid dome or a four-triangle roof: 227 primitives, 86 clusters
@@ -54,8 +57,7 @@ def building(out, n, x, z, indent):
 
 
 def main():
-    if len(sys.argv) != 2:
-        sys.exit("usage: make_city.py OUT.scn")
+    path = out_operand(__doc__)
     out = [HEADER, "cluster city {\n"]
     n = 0
     for d, (dx, dz) in enumerate([(-6, -6), (6, -6), (-6, 6), (6, 6)]):
@@ -70,7 +72,7 @@ def main():
             out.append("    }\n")
         out.append("  }\n")
     out.append("}\n")
-    with open(sys.argv[1], "w") as f:
+    with open(path, "w") as f:
         f.write("".join(out))
 
 

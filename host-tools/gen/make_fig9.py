@@ -8,6 +8,9 @@ build/scenes/fig9.scn)"""
 import math
 import sys
 
+sys.dont_write_bytecode = True  # no __pycache__ left in host-tools/gen
+from gen_args import out_operand  # noqa: E402 (beside this file)
+
 HEADER = """# fig9.scn: a still life in the manner of the paper's Fig. 9, the scene of its
 # Tables 2 and 3 (written by make_fig9.py; do not edit by hand).  A table in
 # a room with a mirror wall: vases and wine glasses turned from triangles,
@@ -110,8 +113,7 @@ def glass_profile():
 
 
 def main():
-    if len(sys.argv) != 2:
-        sys.exit("usage: make_fig9.py OUT.scn")
+    path = out_operand(__doc__)
     out = Out()
     body = []
     d = 0
@@ -202,7 +204,7 @@ def main():
             out.close(d + 1)
         out.close(d)
     text = HEADER % {"prims": out.prims, "clusters": out.clusters} + "".join(out.lines)
-    with open(sys.argv[1], "w") as fh:
+    with open(path, "w") as fh:
         fh.write(text)
 
 

@@ -34,6 +34,7 @@ import sys
 
 sys.dont_write_bytecode = True  # no __pycache__ left in host-tools/gen
 from make_maps import write_png  # noqa: E402 (the scenes' PNG writer, beside this file)
+from gen_args import out_operand  # noqa: E402
 
 
 def png(path, rows):
@@ -166,7 +167,7 @@ def gltf_quad(out, name, texture):
 
 
 def main():
-    out = sys.argv[1]
+    out = out_operand(__doc__)
     os.makedirs(out, exist_ok=True)
     png(os.path.join(out, "flat.png"), [[(128, 128, 255)] * 4 for _ in range(4)])
     png(os.path.join(out, "tilt.png"),

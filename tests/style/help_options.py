@@ -23,6 +23,10 @@ prints:
                           host-tools/: every source that reads a command
                           line (cli_init) makes its table from struct
                           cli_optdef definitions (cli_optdefs_table)
+  generators_take_no_option_as_a_file
+                          each generator host-tools/gen/make_*.py given
+                          --help, or an option it does not take, writes
+                          nothing (no file or directory of that name)
 
 An option is tried as `PROG --option --help`: the option is read, then the
 usage shown or --help taken as its value; nothing runs.
@@ -34,6 +38,7 @@ import glob
 import os
 import re
 import subprocess
+import tempfile
 from concurrent.futures import ThreadPoolExecutor
 
 BUILD = "build"
@@ -167,6 +172,21 @@ def parsers_from_tables():
     return bad
 
 
+def generators_take_no_option_as_a_file():
+    """Each generator run with --help and with --no-such-option in an
+    empty directory: what it left there."""
+    bad = []
+    for gen in sorted(glob.glob("host-tools/gen/make_*.py")):
+        for arg in ("--help", "--no-such-option"):
+            with tempfile.TemporaryDirectory() as tmp:
+                subprocess.run(["python3", os.path.abspath(gen), arg], cwd=tmp,
+                               stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, timeout=60)
+                left = os.listdir(tmp)
+                if left:
+                    bad.append(f"{gen} {arg}: wrote {', '.join(sorted(left))}")
+    return bad
+
+
 def main():
     os.chdir(os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", ".."))
     _, progs, bad_list = programs()
@@ -180,6 +200,7 @@ def main():
             for check, found in result.items():
                 bad[check] += found
     bad["parsers_from_tables"] = parsers_from_tables()
+    bad["generators_take_no_option_as_a_file"] = generators_take_no_option_as_a_file()
     for name, found in bad.items():
         print(f"FAIL {name}: " + "; ".join(found[:10]) if found else f"PASS {name}")
 
