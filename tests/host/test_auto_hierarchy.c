@@ -436,9 +436,10 @@ static void test_camera_axes_kept(void)
     t.prims = malloc((size_t)s.n_prims * sizeof *t.prims);
     memcpy(t.prims, s.prims, (size_t)s.n_prims * sizeof *t.prims);
     const double c30 = 0.8660254037844387, s30 = 0.5;
-    double *turn[3 + 3 * 1500 + 3], **end = turn;
+    double *turn[3 + 3 * 1500], **end = turn;
     *end++ = t.view.eye, *end++ = t.view.look_at, *end++ = t.view.up;
-    for (int i = 0; i < t.n_prims; i++)
+    CHECK_EQ_INT(t.n_prims, 1500);
+    for (int i = 0; i < t.n_prims && i < 1500; i++)
         for (int v = 0; v < 3; v++)
             *end++ = &t.prims[i].v[3 * v];
     for (double **q = turn; q < end; q++) {
