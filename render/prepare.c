@@ -740,16 +740,26 @@ static num_t prep_uv_spread(const scene_prim_t *sp)
     return spread;
 }
 
-/* Each triangle's texture spread, and each vertex normal's first equal
- * (named: the records a triangle took; cache: prep_share's); the range of
- * the other primitives (out->pointer_lo, pointer_hi).  RENDER_OK, or
- * RENDER_ERR_PRIM for a record named twice or out of range. */
+/* Every triangle's spread (scene_index_t.uv_spread) where a map may read
+ * it; without maps they stay 0. */
+static void prep_uv_spreads(const scene_t *s, num_t *spread)
+{
+    for (uint32_t i = 0; i < s->prim_count && s->map_count; i++)
+        if (s->prims[i].kind == SCENE_PRIM_TRIANGLE)
+            spread[i] = prep_uv_spread(&s->prims[i]);
+}
+
+/* Each triangle's texture spread (prep_uv_spreads), and each vertex
+ * normal's first equal (named: the records a triangle took; cache:
+ * prep_share's); the range of the other primitives (out->pointer_lo,
+ * pointer_hi).  RENDER_OK, or RENDER_ERR_PRIM for a record named twice or
+ * out of range. */
 static render_status_t prep_index_triangles(const scene_t *s, const scene_group_t *g,
                                             uint8_t *named, uint32_t *cache, uint32_t *src,
                                             num_t *spread, scene_index_t *out)
 {
     uint32_t np = s->prim_count, nn = s->normals_count;
-    int mapped = s->map_count != 0; /* else the spreads stay 0: no map reads them */
+    prep_uv_spreads(s, spread);
     for (uint32_t j = 0; j < nn; j++)
         for (uint32_t k = 0; k < 3; k++)
             src[3 * j + k] = j << 2 | k;
@@ -761,8 +771,6 @@ static render_status_t prep_index_triangles(const scene_t *s, const scene_group_
             out->pointer_hi = i + 1;
             continue;
         }
-        if (mapped)
-            spread[i] = prep_uv_spread(sp);
         if (!sp->shape.triangle.smooth)
             continue;
         uint32_t maps = g[sp->cluster].maps_of;
@@ -935,9 +943,7 @@ render_status_t render_scene_index_same(const scene_t *s, arena_t *arena,
     memcpy(a.child, same->child_list, sizeof *a.child * nc);
     memcpy(a.plist, same->prim_list, sizeof *a.plist * np);
     memcpy(a.src, same->normal_src, sizeof *a.src * 3 * (size_t)nn);
-    for (uint32_t i = 0; i < np && s->map_count; i++) /* as prep_index_triangles */
-        if (s->prims[i].kind == SCENE_PRIM_TRIANGLE)
-            a.spread[i] = prep_uv_spread(&s->prims[i]);
+    prep_uv_spreads(s, a.spread);
     render_status_t st = prep_index_maps(s, a.groups, same->own_count, arena, out);
     if (st != RENDER_OK)
         return st;
