@@ -6,6 +6,9 @@
 #include "render/vec3.h"
 
 #define LB_N RENDER_LB_CELLS
+/* The cells an item's rectangle is widened by on every side: a 32nd of
+ * the grid, as wide as one cell of a grid of 32. */
+#define LB_MARGIN (LB_N / 32)
 
 size_t render_lightbuf_bytes(const render_frame_t *f)
 {
@@ -90,15 +93,15 @@ static void lb_item_corners(const render_frame_t *f, uint32_t item, vec3_t c[8])
         c[k] = m[k];
 }
 
-/* Marks the cells of g that the rectangle r (u0, u1, v0, v1) covers, one
- * more on each side: its columns and its rows. */
+/* Marks the cells of g that the rectangle r (u0, u1, v0, v1) covers,
+ * margin more on each side: its columns and its rows. */
 static void lb_mark(const render_lb_grid_t *g, uint32_t (*cells)[LB_N], const num_t r[4],
-                    uint32_t bit)
+                    uint32_t bit, int margin)
 {
-    int u0 = render_lb_grid_cell(r[0], g->u0, g->su) - 1;
-    int u1 = render_lb_grid_cell(r[1], g->u0, g->su) + 1;
-    int v0 = render_lb_grid_cell(r[2], g->v0, g->sv) - 1;
-    int v1 = render_lb_grid_cell(r[3], g->v0, g->sv) + 1;
+    int u0 = render_lb_grid_cell(r[0], g->u0, g->su) - margin;
+    int u1 = render_lb_grid_cell(r[1], g->u0, g->su) + margin;
+    int v0 = render_lb_grid_cell(r[2], g->v0, g->sv) - margin;
+    int v1 = render_lb_grid_cell(r[3], g->v0, g->sv) + margin;
     for (int u = u0 < 0 ? 0 : u0; u <= u1 && u < LB_N; u++)
         cells[0][u] |= bit;
     for (int v = v0 < 0 ? 0 : v0; v <= v1 && v < LB_N; v++)
@@ -254,18 +257,42 @@ static int lb_plane_setup(render_lb_light_t *l, const render_light_t *src, const
     return lb_grid(&l->grid[0], r);
 }
 
-/* An item of points c (lb_item_corners) and box b on a point light's cube;
- * near: the distance within which it goes in every cell. */
-static void lb_mark_cube(render_lb_light_t *l, const aabb_t *b, const vec3_t *c, num_t near,
+/* The cells around an item's rectangle on grid g of a point light's cube
+ * that a shadow ray passing offset beside the light may still look it up
+ * in, the item lying at least gap from the light: LB_MARGIN (for
+ * rounding, and for the primitives' uncertain edges), and more where the
+ * ray turns further.  Such a ray turns by at most offset / gap on its way
+ * to the item, which moves a face's coordinates by up to twice that: x
+ * cells.  Within half LB_MARGIN, LB_MARGIN covers it with half of it to
+ * spare; further, LB_MARGIN and one cell more than x; LB_N (the whole
+ * face) when x does not fit. */
+static int lb_margin(const render_lb_grid_t *g, num_t offset, num_t gap)
+{
+    num_t s = num_max(g->su, g->sv);
+    num_t x = num_div(num_mul_int(num_mul(offset, s), 2), gap);
+    if (!num_gt(num_mul_int(x, 2), num_from_int(LB_MARGIN)))
+        return LB_MARGIN;
+    if (num_is_sat(x) || !num_lt(x, num_from_int(LB_N)))
+        return LB_N;
+    return LB_MARGIN + 1 + num_floor_nonneg_int(x);
+}
+
+/* An item of points c (lb_item_corners) and box b on a point light's cube,
+ * with the margin lb_margin gives it on each face.  One that a ray passing
+ * offset beside the light may meet turned by an eighth of a radian or
+ * more (the light within 8 offsets of its box, or in it) goes in every
+ * cell: turned by less, the item lies in front of the face the ray looks
+ * it up on, whose cells across it hold the item's rectangle and margin. */
+static void lb_mark_cube(render_lb_light_t *l, const aabb_t *b, const vec3_t *c, num_t offset,
                          uint32_t bit)
 {
-    int close = 1;
+    num_t gap = NUM_ZERO; /* along the axis where the box lies furthest off */
     for (int i = 0; i < 3; i++) {
         num_t lo = num_sub(vec3_get(b->lo, i), vec3_get(l->at, i));
         num_t hi = num_sub(vec3_get(b->hi, i), vec3_get(l->at, i));
-        close &= !num_gt(num_max(num_max(lo, num_neg(hi)), NUM_ZERO), near);
+        gap = num_max(gap, num_max(lo, num_neg(hi)));
     }
-    if (close) {
+    if (!num_gt(gap, num_mul_int(offset, 8)) || num_is_sat(gap)) {
         l->always |= bit;
         return;
     }
@@ -273,8 +300,9 @@ static void lb_mark_cube(render_lb_light_t *l, const aabb_t *b, const vec3_t *c,
     lb_relative(c, l->at, &rel);
     for (int face = 0; face < 6; face++) {
         num_t r[4];
+        const render_lb_grid_t *g = &l->grid[face];
         if ((l->faces >> face & 1) && lb_face_rect(face, &rel, r))
-            lb_mark(&l->grid[face], l->mask[face], r, bit);
+            lb_mark(g, l->mask[face], r, bit, lb_margin(g, offset, gap));
     }
 }
 
@@ -299,18 +327,7 @@ static void lb_mark_plane(render_lb_light_t *l, const vec3_t *c, uint32_t bit)
 {
     num_t r[4];
     lb_project_points(l, c, r);
-    lb_mark(&l->grid[0], l->mask[0], r, bit);
-}
-
-/* The distance from a point light within which an item goes in every
- * cell: where a ray passing offset beside the light turns by a quarter of
- * the finest cell (a turn by t moves a face's coordinates by up to 2t). */
-static num_t lb_near(const render_lb_light_t *l, num_t offset)
-{
-    num_t s = NUM_ZERO;
-    for (int face = 0; face < 6; face++)
-        s = num_max(s, num_max(l->grid[face].su, l->grid[face].sv));
-    return num_mul(num_mul_int(offset, RENDER_LB_NEAR), s);
+    lb_mark(&l->grid[0], l->mask[0], r, bit, LB_MARGIN);
 }
 
 /* Light i's kind and grid, its cells empty. */
@@ -328,10 +345,9 @@ static void lb_setup_light(const render_frame_t *f, uint32_t i, render_lb_light_
         l->kind = RENDER_LB_CUBE;
 }
 
-/* Item k (bit) in the cells of every light; near[i]: light i's distance
- * within which it goes in every cell. */
+/* Item k (bit) in the cells of every light; offset: lb_offset's. */
 static void lb_place_item(const render_frame_t *f, render_lightbuf_t *lb, uint32_t k,
-                          const num_t *near)
+                          num_t offset)
 {
     uint32_t bit = UINT32_C(1) << k;
     const aabb_t *b = lb_item_box(f, lb->item[k]);
@@ -341,7 +357,7 @@ static void lb_place_item(const render_frame_t *f, render_lightbuf_t *lb, uint32
     int corners = 0; /* c worked out, once for every light */
     for (uint32_t i = 0; i < lb->light_count; i++) {
         render_lb_light_t *l = &lb->light[i];
-        if (l->kind == RENDER_LB_ALL || lb_box_sat(b) || num_is_sat(near[i])) {
+        if (l->kind == RENDER_LB_ALL || lb_box_sat(b) || num_is_sat(offset)) {
             l->always |= bit;
             continue;
         }
@@ -349,7 +365,7 @@ static void lb_place_item(const render_frame_t *f, render_lightbuf_t *lb, uint32
             lb_item_corners(f, lb->item[k], c);
         corners = 1;
         if (l->kind == RENDER_LB_CUBE)
-            lb_mark_cube(l, b, c, near[i], bit);
+            lb_mark_cube(l, b, c, offset, bit);
         else
             lb_mark_plane(l, c, bit);
     }
@@ -363,13 +379,9 @@ const render_lightbuf_t *render_lightbuf_build(const render_frame_t *f, void *me
     lb->item_count = lb_items(f, lb->item);
     lb->light_count = f->light_count;
     num_t offset = lb_offset(f, &f->clusters[0].bounds);
-    num_t near[RENDER_MAX_LIGHTS];
-    for (uint32_t i = 0; i < lb->light_count; i++) {
+    for (uint32_t i = 0; i < lb->light_count; i++)
         lb_setup_light(f, i, &lb->light[i]);
-        /* a cube's six grids (a plane's light has one, and no near) */
-        near[i] = lb->light[i].kind == RENDER_LB_CUBE ? lb_near(&lb->light[i], offset) : NUM_ZERO;
-    }
     for (uint32_t k = 0; k < lb->item_count; k++)
-        lb_place_item(f, lb, k, near);
+        lb_place_item(f, lb, k, offset);
     return lb;
 }

@@ -9,11 +9,13 @@
  * RENDER_LB_CELLS cells around it; a parallel light a grid as fine on the
  * plane across its direction, onto which a shadow ray (all of it) projects
  * to one point.  An item is listed in every cell its box's projection
- * covers, one cell more on each side (for rounding, and for a ray that
- * starts a little off its hit and so passes beside the light, not
- * through it); an item whose box comes nearer a point light than
- * RENDER_LB_NEAR times that offset, or whose box is saturated, in every
- * cell.  A ray whose walk meets an item's box therefore finds the item in
+ * covers, and a 32nd of the grid more on each side (for rounding, for the
+ * primitives' uncertain edges, and for a ray that starts a little off its
+ * hit and so passes beside the light, not through it); near a point
+ * light, where such a ray turns by more than half that on its way to the
+ * item, as many cells more as it may turn across; an item whose box holds
+ * a point light or is saturated, in every cell.  A ray whose walk meets
+ * an item's box (or an edge of it in doubt) therefore finds the item in
  * its cell: walking the cell's items box first gives the walk of the tree
  * the same primitives to test (test_lightbuf).
  *
@@ -28,11 +30,9 @@
 #include "render/vec3.h"
 
 #define RENDER_LB_ITEMS 32 /* items a light's cells list: a bit of a mask each */
-#define RENDER_LB_CELLS 32 /* cells along a grid's edge */
+#define RENDER_LB_CELLS 256 /* cells along a grid's edge: 12 KiB a light;
+                               finer than the margin, fewer items a cell */
 #define RENDER_LB_CLUSTER 0x80000000u /* an item that is a cluster's subtree */
-#define RENDER_LB_NEAR 4 /* an item nearer a point light than this times a
-                            ray's offset from it times the cells a unit of
-                            its finest grid: in every cell */
 
 enum render_lb_kind {
     RENDER_LB_ALL,    /* no grid: every cell lists every item */
