@@ -30,7 +30,7 @@
 #include "render/vec3.h"
 
 #define RENDER_LB_ITEMS 32 /* items a light's cells list: a bit of a mask each */
-#define RENDER_LB_CELLS 256 /* cells along a grid's edge: 12 KiB a light;
+#define RENDER_LB_CELLS 128 /* cells along a grid's edge: 6 KiB a light;
                                finer than the margin, fewer items a cell */
 #define RENDER_LB_CLUSTER 0x80000000u /* an item that is a cluster's subtree */
 
