@@ -94,14 +94,14 @@ static void lb_item_corners(const render_frame_t *f, uint32_t item, vec3_t c[8])
 }
 
 /* Marks the cells of g that the rectangle r (u0, u1, v0, v1) covers,
- * margin more on each side: its columns and its rows. */
+ * mu more on each side along u and mv along v: its columns and its rows. */
 static void lb_mark(const render_lb_grid_t *g, uint32_t (*cells)[LB_N], const num_t r[4],
-                    uint32_t bit, int margin)
+                    uint32_t bit, int mu, int mv)
 {
-    int u0 = render_lb_grid_cell(r[0], g->u0, g->su) - margin;
-    int u1 = render_lb_grid_cell(r[1], g->u0, g->su) + margin;
-    int v0 = render_lb_grid_cell(r[2], g->v0, g->sv) - margin;
-    int v1 = render_lb_grid_cell(r[3], g->v0, g->sv) + margin;
+    int u0 = render_lb_grid_cell(r[0], g->u0, g->su) - mu;
+    int u1 = render_lb_grid_cell(r[1], g->u0, g->su) + mu;
+    int v0 = render_lb_grid_cell(r[2], g->v0, g->sv) - mv;
+    int v1 = render_lb_grid_cell(r[3], g->v0, g->sv) + mv;
     for (int u = u0 < 0 ? 0 : u0; u <= u1 && u < LB_N; u++)
         cells[0][u] |= bit;
     for (int v = v0 < 0 ? 0 : v0; v <= v1 && v < LB_N; v++)
@@ -257,18 +257,17 @@ static int lb_plane_setup(render_lb_light_t *l, const render_light_t *src, const
     return lb_grid(&l->grid[0], r);
 }
 
-/* The cells around an item's rectangle on grid g of a point light's cube
- * that a shadow ray passing offset beside the light may still look it up
- * in, the item lying at least gap from the light: LB_MARGIN (for
- * rounding, and for the primitives' uncertain edges), and more where the
- * ray turns further.  Such a ray turns by at most offset / gap on its way
- * to the item, which moves a face's coordinates by up to twice that: x
- * cells.  Within half LB_MARGIN, LB_MARGIN covers it with half of it to
- * spare; further, LB_MARGIN and one cell more than x; LB_N (the whole
- * face) when x does not fit. */
-static int lb_margin(const render_lb_grid_t *g, num_t offset, num_t gap)
+/* The cells around an item's rectangle along an axis of s cells a unit
+ * on a point light's cube that a shadow ray passing offset beside the
+ * light may still look it up in, the item lying at least gap from the
+ * light: LB_MARGIN (for rounding, and for the primitives' uncertain
+ * edges), and more where the ray turns further.  Such a ray turns by at
+ * most offset / gap on its way to the item, which moves a face's
+ * coordinates by up to twice that: x cells.  Within half LB_MARGIN,
+ * LB_MARGIN covers it with half of it to spare; further, LB_MARGIN and one
+ * cell more than x; LB_N (the whole axis) when x does not fit. */
+static int lb_margin(num_t s, num_t offset, num_t gap)
 {
-    num_t s = num_max(g->su, g->sv);
     num_t x = num_div(num_mul_int(num_mul(offset, s), 2), gap);
     if (!num_gt(num_mul_int(x, 2), num_from_int(LB_MARGIN)))
         return LB_MARGIN;
@@ -302,7 +301,8 @@ static void lb_mark_cube(render_lb_light_t *l, const aabb_t *b, const vec3_t *c,
         num_t r[4];
         const render_lb_grid_t *g = &l->grid[face];
         if ((l->faces >> face & 1) && lb_face_rect(face, &rel, r))
-            lb_mark(g, l->mask[face], r, bit, lb_margin(g, offset, gap));
+            lb_mark(g, l->mask[face], r, bit, lb_margin(g->su, offset, gap),
+                    lb_margin(g->sv, offset, gap));
     }
 }
 
@@ -327,7 +327,7 @@ static void lb_mark_plane(render_lb_light_t *l, const vec3_t *c, uint32_t bit)
 {
     num_t r[4];
     lb_project_points(l, c, r);
-    lb_mark(&l->grid[0], l->mask[0], r, bit, LB_MARGIN);
+    lb_mark(&l->grid[0], l->mask[0], r, bit, LB_MARGIN, LB_MARGIN);
 }
 
 /* Light i's kind and grid, its cells empty. */

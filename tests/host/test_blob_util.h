@@ -71,15 +71,15 @@ static inline void *tb_block(size_t size)
     return p;
 }
 
-/* Scene NAME (its resolution divided by div) as a blob of frame_index in a
- * new block of exactly render_blob_bytes; NULL on any failure (printed). */
-static inline render_blob_t *tb_blob_div(const char *name, uint32_t frame_index, int div,
-                                         size_t *block_size)
+/* Compiled scene buf (len bytes, freed here; NULL: none) as a blob of
+ * frame_index in a new block of exactly render_blob_bytes; NULL on any
+ * failure (printed, naming the scene name). */
+static inline render_blob_t *tb_blob_bytes(const char *name, uint8_t *buf, size_t len,
+                                           uint32_t frame_index, size_t *block_size)
 {
-    size_t len, need;
+    size_t need = 0;
     render_blob_error_t err;
     render_blob_t *blob = NULL;
-    uint8_t *buf = tb_compile_div(name, div, &len);
     if (!buf)
         return NULL;
     if (render_blob_bytes(buf, len, &need, &err) == RENDER_BLOB_OK) {
@@ -95,6 +95,33 @@ static inline render_blob_t *tb_blob_div(const char *name, uint32_t frame_index,
     free(buf);
     *block_size = need;
     return blob;
+}
+
+/* Scene NAME (its resolution divided by div) as a blob of frame_index
+ * (tb_blob_bytes). */
+static inline render_blob_t *tb_blob_div(const char *name, uint32_t frame_index, int div,
+                                         size_t *block_size)
+{
+    size_t len = 0;
+    uint8_t *buf = tb_compile_div(name, div, &len);
+    return tb_blob_bytes(name, buf, len, frame_index, block_size);
+}
+
+/* The scene of text (named name) as a blob of its frame 0 (tb_blob_bytes). */
+static inline render_blob_t *tb_blob_text(const char *name, const char *text, size_t *block_size)
+{
+    char err[SD_ERR_MAX];
+    struct sd_scene s;
+    uint8_t *buf = NULL;
+    size_t len = 0;
+    if (sd_parse_text(name, text, &s, err, sizeof err) != 0) {
+        printf("cannot parse %s: %s\n", name, err);
+        return NULL;
+    }
+    if (sd_compile(&s, &buf, &len, err, sizeof err) != 0)
+        printf("cannot compile %s: %s\n", name, err);
+    sd_free(&s);
+    return tb_blob_bytes(name, buf, len, 0, block_size);
 }
 
 static inline render_blob_t *tb_blob(const char *name, uint32_t frame_index, size_t *block_size)

@@ -140,13 +140,52 @@ static int lb_met(const render_frame_t *f, uint32_t item, const ray_t *ray, num_
     return prim_aabb_hit(&p->bounds, ray, f->ray_epsilon, tmax) && (found || uncertain);
 }
 
-/* Shadow rays from random points of the scene towards each light: an item
- * left out of a ray's cell is one the ray does not meet (lb_met: the walk
- * would find nothing there); and the cells do leave some out. */
+/* What lb_rays_meet counts. */
+typedef struct {
+    uint64_t rays, left_out, wrong;
+} lb_ray_counts_t;
+
+/* 4,000 shadow rays from random points of f's root box towards each of
+ * its lights, into *n: an item left out of a ray's cell that the ray
+ * meets (lb_met: the walk would find it there) is wrong. */
+static void lb_rays_meet(const render_frame_t *f, const render_lightbuf_t *lb, uint32_t *state,
+                         lb_ray_counts_t *n)
+{
+    const aabb_t *root = &f->clusters[0].bounds;
+    for (uint32_t i = 0; i < f->light_count; i++)
+        for (int k = 0; k < 4000; k++) {
+            const render_light_t *l = &f->lights[i];
+            vec3_t hit = lb_point_in(root, state);
+            ray_t ray = {hit, l->to_light};
+            num_t tmax = NUM_FAR;
+            if (l->kind != SCENE_LIGHT_PARALLEL) {
+                vec3_t to = vec3_sub(l->position, hit);
+                tmax = vec3_length(to);
+                if (!num_gt(tmax, NUM_ZERO))
+                    continue;
+                ray.dir = vec3_scale(to, num_recip(tmax));
+            }
+            /* as trace_lights: the origin moved off the hit by
+             * ray_epsilon (here along an axis), the direction the hit's */
+            int axis = (int)(lb_rand(state) % 3);
+            vec3_set(&ray.origin, axis, num_add(vec3_get(hit, axis), f->ray_epsilon));
+            uint32_t mask = render_lightbuf_mask(lb, i, ray.origin, ray.dir);
+            n->rays++;
+            for (uint32_t j = 0; j < lb->item_count; j++) {
+                if (mask >> j & 1)
+                    continue;
+                n->left_out++;
+                n->wrong += lb_met(f, lb->item[j], &ray, tmax);
+            }
+        }
+}
+
+/* Shadow rays over the scenes: an item left out of a ray's cell is one
+ * the ray does not meet; and the cells do leave some out. */
 static void test_cells_hold_what_rays_meet(void)
 {
     uint32_t state = 12345;
-    uint64_t rays = 0, left_out = 0, wrong = 0;
+    lb_ray_counts_t n = {0, 0, 0};
     for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
         void *block, *mem;
         const render_lightbuf_t *lb;
@@ -155,41 +194,63 @@ static void test_cells_hold_what_rays_meet(void)
             CHECK(f && lb);
             continue;
         }
-        const aabb_t *root = &f->clusters[0].bounds;
-        for (uint32_t i = 0; i < f->light_count; i++)
-            for (int n = 0; n < 4000; n++) {
-                const render_light_t *l = &f->lights[i];
-                vec3_t hit = lb_point_in(root, &state);
-                ray_t ray = {hit, l->to_light};
-                num_t tmax = NUM_FAR;
-                if (l->kind != SCENE_LIGHT_PARALLEL) {
-                    vec3_t to = vec3_sub(l->position, hit);
-                    tmax = vec3_length(to);
-                    if (!num_gt(tmax, NUM_ZERO))
-                        continue;
-                    ray.dir = vec3_scale(to, num_recip(tmax));
-                }
-                /* as trace_lights: the origin moved off the hit by
-                 * ray_epsilon (here along an axis), the direction the hit's */
-                int axis = (int)(lb_rand(&state) % 3);
-                vec3_set(&ray.origin, axis, num_add(vec3_get(hit, axis), f->ray_epsilon));
-                uint32_t mask = render_lightbuf_mask(lb, i, ray.origin, ray.dir);
-                rays++;
-                for (uint32_t k = 0; k < lb->item_count; k++) {
-                    if (mask >> k & 1)
-                        continue;
-                    left_out++;
-                    wrong += lb_met(f, lb->item[k], &ray, tmax);
-                }
-            }
+        lb_rays_meet(f, lb, &state, &n);
         free(mem);
         free(block);
     }
     printf("  %llu shadow rays, %llu items left out of their cells, %llu wrongly\n",
-           (unsigned long long)rays, (unsigned long long)left_out, (unsigned long long)wrong);
-    CHECK(rays > 10000);
-    CHECK(left_out > rays);
-    CHECK_EQ_INT(wrong, 0);
+           (unsigned long long)n.rays, (unsigned long long)n.left_out,
+           (unsigned long long)n.wrong);
+    CHECK(n.rays > 10000);
+    CHECK(n.left_out > n.rays);
+    CHECK_EQ_INT(n.wrong, 0);
+}
+
+/* A point light far off along a flat row of primitives, level with them
+ * and with the camera: a face of its cube sees the scene as a thin strip,
+ * its cells very fine across it.  No item lies near the light: none goes
+ * in every cell, most are left out of a ray's cell, and the cells still
+ * hold what the rays meet. */
+static const char lb_grazing_scene[] =
+    "camera { eye 0 0.005 -60  look_at 0 0.005 0  up 0 1 0  fov 40 }\n"
+    "resolution 64 48\n"
+    "light point { colour 1 1 1  position 60 0.005 0 }\n"
+    "material m { colour 0.8 0.8 0.8  dic 0.2 drc 0.7 }\n"
+    "box { material m  min -40 0 -10  max 40 0.001 10 }\n"
+    "sphere { material m  centre -30 0.005 -6  radius 0.004 }\n"
+    "sphere { material m  centre -10 0.005 -2  radius 0.004 }\n"
+    "sphere { material m  centre 10 0.005 2  radius 0.004 }\n"
+    "sphere { material m  centre 30 0.005 6  radius 0.004 }\n"
+    "sphere { material m  centre -20 0.005 4  radius 0.004 }\n"
+    "sphere { material m  centre 20 0.005 -4  radius 0.004 }\n";
+
+static void test_grazing_light_lists_few(void)
+{
+    size_t size;
+    render_blob_t *blob = tb_blob_text("grazing", lb_grazing_scene, &size);
+    CHECK(blob != NULL);
+    if (!blob)
+        return;
+    const render_frame_t *f = blob->frame;
+    size_t bytes = render_lightbuf_bytes(f);
+    void *mem = malloc(bytes);
+    const render_lightbuf_t *lb = render_lightbuf_build(f, mem, bytes);
+    CHECK(lb != NULL && lb->light_count == 1);
+    if (lb && lb->light_count == 1) {
+        const render_lb_light_t *l = &lb->light[0];
+        CHECK_EQ_INT(l->kind, RENDER_LB_CUBE);
+        CHECK_EQ_INT(l->always, 0);
+        uint32_t state = 777;
+        lb_ray_counts_t n = {0, 0, 0};
+        lb_rays_meet(f, lb, &state, &n);
+        printf("  grazing: %u items, %llu shadow rays, %llu items left out, %llu wrongly\n",
+               (unsigned)lb->item_count, (unsigned long long)n.rays,
+               (unsigned long long)n.left_out, (unsigned long long)n.wrong);
+        CHECK(n.left_out > n.rays);
+        CHECK_EQ_INT(n.wrong, 0);
+    }
+    free(mem);
+    free(blob);
 }
 
 /* The image with the light buffer is the image without it; the shadow
@@ -236,6 +297,7 @@ int main(void)
 {
     RUN(test_items_hold_every_prim_once);
     RUN(test_cells_hold_what_rays_meet);
+    RUN(test_grazing_light_lists_few);
     RUN(test_same_image);
     return check_exit();
 }
