@@ -12,13 +12,11 @@
 #include "tests/check.h"
 #include "tests/host/test_blob_util.h"
 
-/* The frame of scene NAME at half its resolution, with its light buffer
- * in *mem (freed by the caller); NULL on failure. */
-static const render_frame_t *lb_scene(const char *name, void **block, void **mem,
+/* The frame of blob (its block, in *block), with its light buffer in
+ * *mem (both freed by the caller); NULL on failure. */
+static const render_frame_t *lb_frame(render_blob_t *blob, void **block, void **mem,
                                       const render_lightbuf_t **lb)
 {
-    size_t size;
-    render_blob_t *blob = tb_blob_div(name, 0, 2, &size);
     *block = blob;
     *mem = NULL;
     *lb = NULL;
@@ -28,6 +26,14 @@ static const render_frame_t *lb_scene(const char *name, void **block, void **mem
     *mem = malloc(bytes);
     *lb = render_lightbuf_build(blob->frame, *mem, bytes);
     return blob->frame;
+}
+
+/* lb_frame of scene NAME at half its resolution. */
+static const render_frame_t *lb_scene(const char *name, void **block, void **mem,
+                                      const render_lightbuf_t **lb)
+{
+    size_t size;
+    return lb_frame(tb_blob_div(name, 0, 2, &size), block, mem, lb);
 }
 
 /* Primitives under item (a cluster's subtree, or one primitive), counted
@@ -227,16 +233,12 @@ static const char lb_grazing_scene[] =
 static void test_grazing_light_lists_few(void)
 {
     size_t size;
-    render_blob_t *blob = tb_blob_text("grazing", lb_grazing_scene, &size);
-    CHECK(blob != NULL);
-    if (!blob)
-        return;
-    const render_frame_t *f = blob->frame;
-    size_t bytes = render_lightbuf_bytes(f);
-    void *mem = malloc(bytes);
-    const render_lightbuf_t *lb = render_lightbuf_build(f, mem, bytes);
-    CHECK(lb != NULL && lb->light_count == 1);
-    if (lb && lb->light_count == 1) {
+    void *block, *mem;
+    const render_lightbuf_t *lb;
+    const render_frame_t *f =
+        lb_frame(tb_blob_text("grazing", lb_grazing_scene, &size), &block, &mem, &lb);
+    CHECK(f && lb && lb->light_count == 1);
+    if (f && lb && lb->light_count == 1) {
         const render_lb_light_t *l = &lb->light[0];
         CHECK_EQ_INT(l->kind, RENDER_LB_CUBE);
         CHECK_EQ_INT(l->always, 0);
@@ -250,7 +252,7 @@ static void test_grazing_light_lists_few(void)
         CHECK_EQ_INT(n.wrong, 0);
     }
     free(mem);
-    free(blob);
+    free(block);
 }
 
 /* The image with the light buffer is the image without it; the shadow
