@@ -255,6 +255,12 @@ static inline int num_ge(num_t a, num_t b) { return a >= b; }
 static inline int num_eq(num_t a, num_t b) { return a == b; }
 /* a is +0 (the fixed build has one zero) */
 static inline int num_is_plus_zero(num_t a) { return a == 0; }
+/* a, or lim (0 < lim below the markers) where a is a marker or |a| > lim:
+ * one sum and one unsigned comparison */
+static inline num_t num_limit(num_t a, num_t lim)
+{
+    return (uint32_t)a + (uint32_t)lim > 2 * (uint32_t)lim ? lim : a;
+}
 
 /* 8-bit channel: clamp to [0,1], round(a * 255). */
 static inline uint8_t num_to_u8(num_t a)
@@ -356,6 +362,8 @@ static inline int num_ge(num_t a, num_t b) { return a >= b; }
 static inline int num_eq(num_t a, num_t b) { return a == b; }
 /* a is +0, not -0 */
 static inline int num_is_plus_zero(num_t a) { return a == 0 && !__builtin_signbit(a); }
+/* a, or lim (lim > 0) where a is not finite or |a| > lim */
+static inline num_t num_limit(num_t a, num_t lim) { return num_abs(a) <= lim ? a : lim; }
 
 static inline uint8_t num_to_u8(num_t a)
 {

@@ -58,24 +58,33 @@ render_status_t precision_invert(const xform_t *m, xform_t *inv)
  * smallest over the axes: the error across the flattest side, where a
  * secondary ray starting RENDER_RAY_EPSILON_VALUE off the surface would
  * hit it again (shadow acne); the largest moves a hit along a surface. */
-/* rows[0], rows[1]: the longest and the shortest row of to_local (local
- * units per eye unit along the most and the least squeezed axis). */
+/* What precision_hit_error finds of a map: rows[0] and rows[1] the
+ * longest and the shortest row of to_local (local units per eye unit
+ * along the most and the least squeezed axis), len each row's, local[k]
+ * the rounding error of local coordinate k (local units) and local_worst
+ * the largest of them; NUM_FAR where it gives up. */
+typedef struct {
+    num_t rows[2], len[3], local[3], local_worst;
+} precision_local_t;
+
 static num_t precision_hit_error(const render_prim_t *p, num_t extent, num_t *least,
-                                 num_t *local_worst, num_t rows[2])
+                                 precision_local_t *l)
 {
     num_t worst = NUM_ZERO;
     *least = NUM_FAR;
-    *local_worst = NUM_FAR;
-    rows[0] = NUM_ZERO;
-    rows[1] = NUM_FAR;
-    num_t local_max = NUM_ZERO;
+    l->local_worst = l->local[0] = l->local[1] = l->local[2] = NUM_FAR;
+    l->len[0] = l->len[1] = l->len[2] = NUM_ZERO;
+    l->rows[0] = NUM_ZERO;
+    l->rows[1] = NUM_FAR;
+    num_t local_max = NUM_ZERO, local_axis[3];
     for (int i = 0; i < 3; i++) {
         const num_t *row = p->to_local.m[i];
         num_t len = num_len3(row[0], row[1], row[2]);
         if (!num_gt(len, NUM_ZERO) || num_is_sat(len))
             return NUM_FAR;
-        rows[0] = num_max(rows[0], len);
-        rows[1] = num_min(rows[1], len);
+        l->len[i] = len;
+        l->rows[0] = num_max(l->rows[0], len);
+        l->rows[1] = num_min(l->rows[1], len);
         num_t steps = num_add(num_add(num_ulp(row[0]), num_ulp(row[1])), num_ulp(row[2]));
         num_t local = num_add(num_mul(len, extent), num_abs(row[3]));
         if (num_is_sat(num_mul_int(local, 2))) /* local coordinates near the
@@ -84,6 +93,7 @@ static num_t precision_hit_error(const render_prim_t *p, num_t extent, num_t *le
             return NUM_FAR;
         num_t err = num_add(num_mul(steps, extent), num_add(num_ulp(row[3]), num_ulp(local)));
         err = num_mul(err, NUM_HALF);
+        local_axis[i] = err;
         local_max = num_max(local_max, err);
         err = num_div(err, len);
         if (num_is_sat(err))
@@ -91,8 +101,19 @@ static num_t precision_hit_error(const render_prim_t *p, num_t extent, num_t *le
         worst = num_max(worst, err);
         *least = num_min(*least, err);
     }
-    *local_worst = local_max;
+    l->local_worst = local_max;
+    for (int i = 0; i < 3; i++)
+        l->local[i] = local_axis[i];
     return worst;
+}
+
+/* A box's error per local axis (render_prim_t.box_edge_error): each
+ * coordinate's rounding error with the cluster map's error (map, eye
+ * units) on its axis. */
+static void precision_box_axes(render_prim_t *p, const precision_local_t *l, num_t map)
+{
+    for (int i = 0; i < 3; i++)
+        p->box_edge_error[i] = num_limit(num_add(l->local[i], num_mul(map, l->len[i])), NUM_FAR);
 }
 
 /* A triangle's barycentrics beta, gamma: each a distance in the plane over
@@ -255,13 +276,15 @@ static inline __attribute__((always_inline)) void precision_check_one(render_fra
         p->curvature = precision_triangle_curvature(p, h1, h2);
         return;
     }
-    num_t least, local, rows[2], worst = precision_hit_error(p, pass->extent, &least, &local, rows);
+    precision_local_t l;
+    num_t least, worst = precision_hit_error(p, pass->extent, &least, &l);
+    num_t *rows = l.rows;
     /* render_prepare left the cluster map's error in hit_error */
     num_t map = p->hit_error;
     worst = num_add(worst, map);
     /* the surface moved by the map, in local units: a consistent move,
      * no acne, but the decisions and map coordinates see it */
-    local = num_add(local, num_mul(map, rows[0]));
+    num_t local = num_add(l.local_worst, num_mul(map, rows[0]));
     if (num_is_sat(worst) || num_is_sat(local))
         worst = local = NUM_FAR;
     p->hit_error = worst;
@@ -277,6 +300,7 @@ static inline __attribute__((always_inline)) void precision_check_one(render_fra
     switch (p->kind) {
     case SCENE_PRIM_BOX:
         p->uv_error = num_mul(local, NUM_HALF);
+        precision_box_axes(p, &l, num_is_sat(local) ? NUM_FAR : map);
         p->edge_error[0] = local;
         break;
     case SCENE_PRIM_ELLIPSOID:

@@ -445,6 +445,7 @@ static void prim_box_surface(const render_prim_t *p, hit_t *hit)
     hit->tangent_hint = hint;
     hit->u = num_clamp01(num_mul(num_add(vec3_get(q, ua), NUM_ONE), NUM_HALF));
     hit->v = num_clamp01(num_mul(num_add(vec3_get(q, va), NUM_ONE), NUM_HALF));
+    hit->uv_error = num_mul(num_max(p->box_edge_error[ua], p->box_edge_error[va]), NUM_HALF);
 }
 
 /* -------------------------------------------------------- density sphere */
@@ -790,6 +791,7 @@ void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit)
 {
     hit->point = vec3_madd(ray->origin, ray->dir, hit->t);
     hit->curvature = p->curvature; /* an ellipsoid's: its hit's own */
+    hit->uv_error = p->uv_error;   /* a box face's: its own */
     switch (p->kind) {
     case SCENE_PRIM_TRIANGLE:
         prim_triangle_surface(p, hit);

@@ -25,6 +25,8 @@ typedef struct {
     vec3_t tangent_hint; /* local: what prim_hit_tangent makes the tangent of
                             (prim_surface's; not a triangle's) */
     num_t u, v;      /* map coordinates, u and v in [0,1] */
+    num_t uv_error;  /* their rounding error (render_prim_t.uv_error, a box
+                        face's own) */
     num_t curvature; /* the normal turns by at most this times the hit's
                         move (render_prim_t.curvature, an ellipsoid's here) */
 } hit_t;

@@ -87,6 +87,11 @@ typedef struct {
         struct {
             num_t tex_u[3], tex_v[3]; /* TRIANGLE: map coordinates */
         };
+        /* BOX, per local axis k: the rounding error of local coordinate
+         * k (edge_error[0] is the largest).  A face's u and v come from
+         * the other two axes, which on a thin box may be far less
+         * squeezed than its thin one (prim_box_surface's hit uv_error). */
+        num_t box_edge_error[3];
         struct {
             /* CONE: its local radius at y is 1 - cone_slope (1 + y):
              * (1 - k) / 2 for a smaller end of k times the larger's
@@ -110,7 +115,8 @@ typedef struct {
                             RENDER_LOST_TOLERANCE_VALUE: pixels that see it
                             count as lost precision */
     num_t uv_error;      /* render_prepare's estimate of the rounding error
-                            of a hit's map coordinates u, v (render/maps.h) */
+                            of a hit's map coordinates u, v (render/maps.h);
+                            a BOX face's its own (box_edge_error): hit_t's */
     num_t edge_error[2]; /* render_prepare's estimate of the rounding error
                             of what a hit-or-miss decision compares (a
                             TRIANGLE's beta and gamma; an ELLIPSOID's or a

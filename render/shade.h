@@ -68,22 +68,27 @@ static inline int shade_light_at(const render_light_t *l, vec3_t point, vec3_t *
 }
 
 /* One light's term of the sum: normal n faces the viewer, view is the unit
- * ray direction arriving at the point, to_light unit; ambient the light
- * the ambient term takes (shadowed or not), shadowed the light the diffuse
- * and highlight terms take.  Inline: called once a light at every hit,
- * where its eight arguments' passing cost more than its body. */
+ * ray direction arriving at the point, to_light unit; shadowed the light
+ * the diffuse and highlight terms take, ambient the light the ambient
+ * term takes where it is another (not shadowed), NULL where it is the
+ * same: the product of colour and light is then made once.  Inline:
+ * called once a light at every hit, where its eight arguments' passing
+ * cost more than its body. */
 static inline rgb_t shade_light_term(const scene_material_t *m, rgb_t colour, vec3_t n,
-                                     vec3_t view, vec3_t to_light, rgb_t ambient,
+                                     vec3_t view, vec3_t to_light, const rgb_t *ambient,
                                      rgb_t shadowed, num_t src_theta)
 {
     /* ambient: dic F times the light given (S_i, or L_i whatever lies
      * between point and light) */
-    rgb_t out = rgb_scale(rgb_mul(colour, ambient), m->dic);
+    rgb_t lit = rgb_mul(colour, ambient ? *ambient : shadowed);
+    rgb_t out = rgb_scale(lit, m->dic);
     num_t cos_i = vec3_dot(n, to_light);
     if (!num_gt(cos_i, NUM_ZERO))
         return out;
     /* diffuse: drc cos(th_i) F S_i */
-    out = rgb_add(out, rgb_scale(rgb_mul(colour, shadowed), num_mul(m->drc, cos_i)));
+    if (ambient)
+        lit = rgb_mul(colour, shadowed);
+    out = rgb_add(out, rgb_scale(lit, num_mul(m->drc, cos_i)));
     if (m->phong_n == 0)
         return out;
     /* highlight: cos^n of the angle between the mirrored light and the

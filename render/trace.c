@@ -586,10 +586,7 @@ static const ray_error_t *trace_err_if_heavy(const ray_error_t *err, const ray_e
 
 /* An error bound no larger than NUM_FAR: a saturated or runaway one flags
  * every decision without overflowing what is computed from it. */
-static num_t trace_err_clamp(num_t e)
-{
-    return num_is_sat(e) || num_gt(e, NUM_FAR) ? NUM_FAR : e;
-}
+static num_t trace_err_clamp(num_t e) { return num_limit(e, NUM_FAR); }
 
 /* The error a walk's decisions are widened by: the ray's, times
  * ctx->error_margin when that is over 1 (escalation's wider net:
@@ -674,7 +671,7 @@ static const scene_material_t *trace_surface_look(render_ctx_t *ctx, const hit_t
                                                   vec3_t *normal, enum trace_look slot)
 {
     const scene_t *s = ctx->frame->scene;
-    num_t uv_error = ctx->frame->prims[hit->prim].uv_error;
+    num_t uv_error = hit->uv_error;
     *colour = m->colour;
     if (m->colour_map != SCENE_NONE) {
         *colour = rgb_mul(*colour, map_colour(&s->maps[m->colour_map], hit->u, hit->v));
@@ -730,23 +727,23 @@ static inline __attribute__((always_inline)) uint32_t trace_left(const render_ct
     return away ? hit->prim : TRACE_NO_PRIM;
 }
 
-/* Fraction of light `light` that reaches origin along dir over distance:
- * the product of trc(th) of every object crossed (trc(th) F with
- * options.shadow_tint), in primitive order.  err: the shadow ray's error
- * bound; left: the primitive it leaves (trace_left). */
-static rgb_t trace_shadow(render_ctx_t *ctx, uint32_t light, vec3_t origin, vec3_t dir,
-                          num_t distance, const ray_error_t *err, uint32_t left)
+/* Whether anything lies between origin and light `light` along dir over
+ * distance: 0 when the light arrives whole, else 1 with *pass the fraction
+ * that reaches origin, the product of trc(th) of every object crossed
+ * (trc(th) F with options.shadow_tint) in primitive order.  err: the
+ * shadow ray's error bound; left: the primitive it leaves (trace_left). */
+static int trace_shadow(render_ctx_t *ctx, uint32_t light, vec3_t origin, vec3_t dir,
+                        num_t distance, const ray_error_t *err, uint32_t left, rgb_t *pass)
 {
-    rgb_t pass = rgb_make(NUM_ONE, NUM_ONE, NUM_ONE);
     if (!ctx->options.shadows)
-        return pass;
+        return 0;
     ctx->stats.shadow++;
     const render_lightbuf_t *lb = ctx->light_buffer;
     uint32_t mask = 0;
     if (lb && ctx->options.use_bounds && ctx->options.use_hierarchy) {
         mask = render_lightbuf_mask(lb, light, origin, dir);
         if (!mask || (!(mask & (mask - 1)) && lb->item[__builtin_ctz(mask)] == left))
-            return pass; /* its cell lists nothing, or only what it leaves */
+            return 0; /* its cell lists nothing, or only what it leaves */
     }
     ray_t ray = {origin, dir};
     crossings_t cross;
@@ -763,8 +760,13 @@ static rgb_t trace_shadow(render_ctx_t *ctx, uint32_t light, vec3_t origin, vec3
         w.lb_mask = mask;
     }
     trace_walk(&w, NULL, 0);
-    if (cross.opaque || cross.overflow)
-        return rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+    if (cross.opaque || cross.overflow) {
+        *pass = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+        return 1;
+    }
+    if (!cross.count)
+        return 0;
+    *pass = rgb_make(NUM_ONE, NUM_ONE, NUM_ONE);
     /* primitive order: sort the few indices */
     for (uint32_t i = 1; i < cross.count; i++)
         for (uint32_t j = i; j > 0 && cross.prim[j] < cross.prim[j - 1]; j--) {
@@ -786,10 +788,10 @@ static rgb_t trace_shadow(render_ctx_t *ctx, uint32_t light, vec3_t origin, vec3
                                                        &colour, &n, TRACE_LOOK_SHADOW);
         num_t src, trc;
         shade_src_trc(m, num_abs(vec3_dot(n, dir)), &src, &trc);
-        pass = ctx->options.shadow_tint ? rgb_mul(pass, rgb_scale(colour, trc))
-                                        : rgb_scale(pass, trc);
+        *pass = ctx->options.shadow_tint ? rgb_mul(*pass, rgb_scale(colour, trc))
+                                         : rgb_scale(*pass, trc);
     }
-    return pass;
+    return 1;
 }
 
 /* A pixel that lost precision and will be traced again in the wide
@@ -819,18 +821,24 @@ static rgb_t trace_lights(render_ctx_t *ctx, const hit_t *hit, num_t hit_err,
         rgb_t unshadowed;
         if (!shade_light_at(&f->lights[i], hit->point, &to_light, &distance, &unshadowed))
             continue;
-        rgb_t shadowed = unshadowed;
+        rgb_t shadowed = unshadowed, pass;
+        int whole = 1; /* shadowed is unshadowed */
         if (num_gt(vec3_dot(n, to_light), NUM_ZERO)) {
             ray_error_t err = {hit_err, trace_err_clamp(num_add(num_div(hit_err, distance),
                                                                TRACE_DIR_ROUND))};
-            shadowed = rgb_mul(unshadowed, trace_shadow(ctx, i, origin, to_light, distance, &err,
-                                                        trace_left(ctx, hit, n, to_light)));
+            if (trace_shadow(ctx, i, origin, to_light, distance, &err,
+                             trace_left(ctx, hit, n, to_light), &pass)) {
+                shadowed = rgb_mul(unshadowed, pass);
+                whole = 0;
+            }
             if (trace_settled_elsewhere(ctx))
                 break; /* the other lights' shadow rays too */
         } else if (ctx->options.shadows) {
             shadowed = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
+            whole = 0;
         }
-        rgb_t ambient = ctx->options.ambient_shadowed ? shadowed : unshadowed;
+        /* the ambient term takes the shadowed light, or the whole */
+        const rgb_t *ambient = whole || ctx->options.ambient_shadowed ? NULL : &unshadowed;
         sum = rgb_add(sum, shade_light_term(m, colour, n, view, to_light, ambient, shadowed, src));
     }
     return sum;

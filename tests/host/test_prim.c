@@ -164,6 +164,36 @@ static void test_box(void)
     CHECK_VEC(h.normal, 0, 1, 0, TOL);
 }
 
+/* A thin box's map coordinates on its broad faces come from its broad
+ * axes, whose rounding is the finer: a floor 14 x 0.5 x 14 has local
+ * units of 1/7 along x and z and 4 along y, so the top face's uv error
+ * is a fraction of the primitive's worst (the thin axis's), which a side
+ * face, one of whose coordinates is y, keeps.  Fails in float and double
+ * where every face takes the primitive's one estimate. */
+static void test_box_face_uv_error(void)
+{
+    ts_init(&ts, 8, 8);
+    ts_box(&ts, 0, 0, ts_v(0, 0, 10), ts_v(7, 0.25, 7));
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return;
+    double worst = num_to_double(f->prims[0].uv_error);
+    hit_t top = surface_of(f, 0, ray_of(1, 5, 11, 0, -1, 0));
+    CHECK_VEC(top.normal, 0, 1, 0, TOL);
+    hit_t side = surface_of(f, 0, ray_of(-20, 0.1, 11, 1, 0, 0));
+    CHECK_VEC(side.normal, -1, 0, 0, TOL);
+    CHECK(worst > 0);
+    CHECK(num_to_double(side.uv_error) == worst);
+    CHECK(num_to_double(top.uv_error) > 0);
+#if defined(LINKS1_NUM_FIXED)
+    /* fixed point's steps are the same size on every axis: no finer */
+    CHECK(num_to_double(top.uv_error) <= worst);
+#else
+    CHECK(num_to_double(top.uv_error) < worst / 8);
+#endif
+}
+
 static void test_box_rotated(void)
 {
     /* unit cube turned 45 degrees about z: corner at x = -sqrt(2) */
@@ -596,6 +626,7 @@ int main(void)
     RUN(test_ellipsoid);
     RUN(test_ellipsoid_transformed);
     RUN(test_box);
+    RUN(test_box_face_uv_error);
     RUN(test_box_rotated);
     RUN(test_density_field);
     RUN(test_density);

@@ -62,36 +62,41 @@ static void test_light_term(void)
 {
     scene_material_t m = material(0.2, 0.7, 0.4, 0, 0, 2);
     vec3_t n = ts_v(0, 0, -1), view = ts_v(0, 0, 1);
-    rgb_t white = ts_rgb(1, 1, 1), black = ts_rgb(0, 0, 0);
+    rgb_t white = ts_rgb(1, 1, 1), black = ts_rgb(0, 0, 0), green = ts_rgb(0, 1, 0);
     /* head-on: ambient 0.2 F + diffuse 0.7 F + highlight 1^2 * src */
-    rgb_t c = shade_light_term(&m, m.colour, n, view, ts_v(0, 0, -1), white, white, m.src);
+    rgb_t c = shade_light_term(&m, m.colour, n, view, ts_v(0, 0, -1), &white, white, m.src);
     CHECK_NEAR(D(c.r), 0.9 * 1 + 0.4, TOL);
     CHECK_NEAR(D(c.g), 0.9 * 0.5 + 0.4, TOL);
     CHECK_NEAR(D(c.b), 0.9 * 0.25 + 0.4, TOL);
     /* light 60 degrees off: cos 0.5; mirrored light makes 60 degrees with
      * the view too: highlight 0.5^2 src */
     vec3_t l = ts_v(sqrt(0.75), 0, -0.5);
-    c = shade_light_term(&m, m.colour, n, view, l, white, white, m.src);
+    c = shade_light_term(&m, m.colour, n, view, l, &white, white, m.src);
     CHECK_NEAR(D(c.r), 0.2 + 0.35 + 0.25 * 0.4, TOL);
     CHECK_NEAR(D(c.b), (0.2 + 0.35) * 0.25 + 0.25 * 0.4, TOL);
     /* fully shadowed: ambient only, from the unshadowed light */
-    c = shade_light_term(&m, m.colour, n, view, l, white, black, m.src);
+    c = shade_light_term(&m, m.colour, n, view, l, &white, black, m.src);
     CHECK_NEAR(D(c.r), 0.2, TOL);
     CHECK_NEAR(D(c.g), 0.1, TOL);
     /* tinted shadow light (0.5, 0, 0): diffuse and highlight scaled by it */
-    c = shade_light_term(&m, m.colour, n, view, l, white, ts_rgb(0.5, 0, 0), m.src);
+    c = shade_light_term(&m, m.colour, n, view, l, &white, ts_rgb(0.5, 0, 0), m.src);
     CHECK_NEAR(D(c.r), 0.2 + 0.5 * (0.35 + 0.1), TOL);
     CHECK_NEAR(D(c.g), 0.1, TOL);
     /* light behind the surface: ambient only */
-    c = shade_light_term(&m, m.colour, n, view, ts_v(0, 0, 1), white, white, m.src);
+    c = shade_light_term(&m, m.colour, n, view, ts_v(0, 0, 1), &white, white, m.src);
     CHECK_NEAR(D(c.r), 0.2, TOL);
     /* coloured light multiplies the colour */
-    c = shade_light_term(&m, m.colour, n, view, ts_v(0, 0, -1), ts_rgb(0, 1, 0), ts_rgb(0, 1, 0), m.src);
+    c = shade_light_term(&m, m.colour, n, view, ts_v(0, 0, -1), &green, green, m.src);
     CHECK_NEAR(D(c.r), 0.0, TOL);
     CHECK_NEAR(D(c.g), 0.9 * 0.5 + 0.4, TOL);
+    /* no ambient light of its own (NULL): the shadowed light's, the same bits */
+    rgb_t same = shade_light_term(&m, m.colour, n, view, l, NULL, green, m.src);
+    c = shade_light_term(&m, m.colour, n, view, l, &green, green, m.src);
+    CHECK(num_eq(same.r, c.r) && num_eq(same.g, c.g) && num_eq(same.b, c.b));
+    CHECK_NEAR(D(same.g), 0.5 * (0.2 + 0.35) + 0.25 * 0.4, TOL);
     /* n = 0: no highlight */
     m.phong_n = 0;
-    c = shade_light_term(&m, m.colour, n, view, ts_v(0, 0, -1), white, white, m.src);
+    c = shade_light_term(&m, m.colour, n, view, ts_v(0, 0, -1), NULL, white, m.src);
     CHECK_NEAR(D(c.r), 0.9, TOL);
 }
 
