@@ -72,11 +72,15 @@ srcs=$(make -s --no-print-directory \
     --eval 'print-ref-srcs: ; @echo $(links1-ref-fixed_SRCS) $(SHARED_SRCS)' print-ref-srcs)
 libs=$(make -s --no-print-directory \
     --eval 'print-ref-libs: ; @echo $(links1-ref-fixed_LIBS)' print-ref-libs)
+# the sources' own flags (a FILE_CFLAGS of a module.mk: libassimp's soname)
+src_flags=$(make -s --no-print-directory \
+    --eval 'print-src-flags: ; @echo $(foreach f,$(links1-ref-fixed_SRCS) $(SHARED_SRCS),$($(f)_CFLAGS))' \
+    print-src-flags)
 # variant NAME FLAGS...: a reference renderer built with other constants
 variant() {
     local name=$1; shift
     [ -x "$out/bin/$name" ] ||
-        cc -std=gnu11 -O2 -I. -ffp-contract=off "$@" $srcs $libs -lpng -lm -o "$out/bin/$name"
+        cc -std=gnu11 -O2 -I. -ffp-contract=off $src_flags "$@" $srcs $libs -lpng -lm -o "$out/bin/$name"
 }
 for f in $FRACS; do variant fixed-$f -DLINKS1_NUM_FIXED -DNUM_FRAC_BITS=$f; done
 
