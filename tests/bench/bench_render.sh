@@ -37,7 +37,7 @@ m() { awk -v x="$1" 'BEGIN { printf "%.1f", x / 1e6 }'; }
 ratio() { awk -v a="$1" -v b="$2" 'BEGIN { printf "%.2f", a / b }'; }
 
 DEMO=(scenes/demo.scn --size ${BENCH_SIZE:-320x240})
-echo "### Speed-up with the number of NCs (demo.scn ${BENCH_SIZE:-320x240}, float, decreasing, K=1024)"
+echo "### Speed-up with the number of NCs (demo.scn ${BENCH_SIZE:-320x240}, float, the board's default schedule)"
 echo
 echo "| NCs | NC total (M insns) | largest NC (M) | smallest NC (M) | total / largest | speed-up vs 1 NC | board render ms |"
 echo "|---|---|---|---|---|---|---|"
