@@ -13,11 +13,12 @@
  * primitives' uncertain edges, and for a ray that starts a little off its
  * hit and so passes beside the light, not through it); near a point
  * light, where such a ray turns by more than half that on its way to the
- * item, as many cells more as it may turn across; an item whose box holds
- * a point light or is saturated, in every cell.  A ray whose walk meets
- * an item's box (or an edge of it in doubt) therefore finds the item in
- * its cell: walking the cell's items box first gives the walk of the tree
- * the same primitives to test (test_lightbuf).
+ * item, as many cells more as it may turn across; an item whose box comes
+ * within 8 such offsets of a point light (or holds it), or is saturated,
+ * in every cell.  A ray whose walk meets an item's box (or an edge of it
+ * in doubt) therefore finds the item in its cell: walking the cell's
+ * items box first gives the walk of the tree the same primitives to test
+ * (test_lightbuf).
  *
  * The NC builds its buffer once a frame as it sets up
  * (render_lightbuf_build, in memory of render_lightbuf_bytes; the trace

@@ -109,7 +109,8 @@ static num_t precision_hit_error(const render_prim_t *p, num_t extent, num_t *le
 
 /* A box's error per local axis (render_prim_t.box_edge_error): each
  * coordinate's rounding error with the cluster map's error (map, eye
- * units) on its axis. */
+ * units) on its axis; NUM_FAR where that overflows, or where
+ * precision_hit_error gave up (its local errors NUM_FAR). */
 static void precision_box_axes(render_prim_t *p, const precision_local_t *l, num_t map)
 {
     for (int i = 0; i < 3; i++)
@@ -300,7 +301,7 @@ static inline __attribute__((always_inline)) void precision_check_one(render_fra
     switch (p->kind) {
     case SCENE_PRIM_BOX:
         p->uv_error = num_mul(local, NUM_HALF);
-        precision_box_axes(p, &l, num_is_sat(local) ? NUM_FAR : map);
+        precision_box_axes(p, &l, map);
         p->edge_error[0] = local;
         break;
     case SCENE_PRIM_ELLIPSOID:
