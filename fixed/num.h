@@ -103,6 +103,16 @@ static inline num_t num__sticky(num_t a, num_t b)
  * no input is a marker (magnitude INT32_MAX) and nothing can overflow. */
 static inline uint32_t num__mag(num_t a) { return (uint32_t)(a ^ (a >> 31)); }
 
+/* How far num_mul(a, num_recip(d)) may lie from num_div(a, d), for a
+ * num_recip(d) that did not saturate, in steps: the reciprocal's rounding
+ * (half a step) times |a|, and half a step for each of the three
+ * roundings; one more for num__mag's one's complement.  A box test that
+ * widens each slab's t by it passes every box the divisions pass. */
+static inline num_t num_recip_mul_slack(num_t a)
+{
+    return (num_t)((num__mag(a) >> (NUM_FRAC_BITS + 1)) + 3);
+}
+
 /* saturates (a marker stays that marker) */
 static inline num_t num__add_wide(num_t a, num_t b)
 {

@@ -91,11 +91,12 @@ int prim_aabb_hit(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax);
 /* The same, with *entry the t where the ray enters the box (>= tmin). */
 int prim_aabb_entry(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax, num_t *entry);
 
-/* A ray's reciprocal direction for many box tests: in float and double a
- * product replaces each slab's division (its rounding, well below
+/* A ray's reciprocal direction for many box tests: a product replaces
+ * each slab's division.  In float and double its rounding, well below
  * RENDER_BOUNDS_PAD_VALUE at any coordinate in range, never makes a padded
- * box miss a surface it holds); the fixed build keeps the exact divisions,
- * as its reciprocals would be too coarse far from the eye. */
+ * box miss a surface it holds; in fixed point, whose reciprocal is coarse
+ * far from the eye, each slab's t is widened by num_recip_mul_slack, so
+ * that every box the divisions pass passes (prim_slab_inv_faces). */
 typedef struct {
     num_t inv[3];
     uint8_t use_div[3]; /* 1: divide on this axis (fixed, or d = 0 or tiny) */
@@ -108,9 +109,6 @@ static inline __attribute__((always_inline)) void prim_aabb_ray_axis(aabb_ray_t 
 {
     r->inv[axis] = NUM_ZERO;
     r->use_div[axis] = 1;
-#if defined(LINKS1_NUM_FIXED)
-    (void)d; /* the fixed build divides on every axis */
-#else
     if (!num_eq(d, NUM_ZERO)) {
         num_t inv = num_recip(d);
         if (num_lt(num_abs(inv), NUM_FAR)) {
@@ -118,7 +116,6 @@ static inline __attribute__((always_inline)) void prim_aabb_ray_axis(aabb_ray_t 
             r->use_div[axis] = 0;
         }
     }
-#endif
 }
 
 /* r for ray (inline: once a walk) */
@@ -171,13 +168,19 @@ static inline int prim_slab_narrow(num_t t1, num_t t2, num_t *tnear, num_t *tfar
  * division), which the ray enters by face near_face and leaves by far_face:
  * lo and hi, swapped where the reciprocal is negative.  Rounding is
  * monotonic, so of a box that is not empty the first product is never the
- * larger: the t of both faces, in prim_slab_narrow's order without its
- * comparison. */
+ * larger (nor, widened, in fixed point): the t of both faces, in
+ * prim_slab_narrow's order without its comparison. */
 static inline int prim_slab_inv_faces(num_t o, num_t inv, num_t near_face, num_t far_face,
                                       num_t *tnear, num_t *tfar)
 {
-    *tnear = num_max(*tnear, num_mul(num_sub(near_face, o), inv));
-    *tfar = num_min(*tfar, num_mul(num_sub(far_face, o), inv));
+    num_t a = num_sub(near_face, o), b = num_sub(far_face, o);
+    num_t t1 = num_mul(a, inv), t2 = num_mul(b, inv);
+#if defined(LINKS1_NUM_FIXED)
+    t1 = num_sub(t1, num_recip_mul_slack(a));
+    t2 = num_add(t2, num_recip_mul_slack(b));
+#endif
+    *tnear = num_max(*tnear, t1);
+    *tfar = num_min(*tfar, t2);
     return !num_gt(*tnear, *tfar);
 }
 

@@ -618,6 +618,52 @@ static void test_aabb_around(void)
     CHECK_EQ_INT(differ, 0);
 }
 
+/* A box test by the ray's reciprocals (prim_aabb_ray, prim_aabb_entry_ray)
+ * against the divisions (entry_by_division), on boxes near and far and
+ * rays aimed within a hair of their corners, where the decision is at its
+ * margin.  In fixed point, whose reciprocals are coarse, each slab is
+ * widened (num_recip_mul_slack): every box the divisions pass passes,
+ * entered no later.  In float and double the box padded by
+ * RENDER_BOUNDS_PAD_VALUE passes (render/prim.h). */
+static void test_aabb_by_reciprocal(void)
+{
+    unsigned state = 4242;
+    long passed = 0, missed = 0, later = 0;
+    for (int k = 0; k < 40000; k++) {
+        double cx = rnd(&state, -900, 900), cy = rnd(&state, -900, 900), cz = rnd(&state, -900, 900);
+        double h[3] = {rnd(&state, 0.01, 50), rnd(&state, 0.01, 50), rnd(&state, 0.01, 50)};
+        aabb_t b = {ts_v(cx - h[0], cy - h[1], cz - h[2]), ts_v(cx + h[0], cy + h[1], cz + h[2])};
+        double aim[3], c[3] = {cx, cy, cz};
+        for (int i = 0; i < 3; i++) /* a corner, give or take a hair */
+            aim[i] = c[i] + ((k >> i) & 1 ? h[i] : -h[i]) + rnd(&state, -1e-4, 1e-4) * h[i];
+        double o[3], dist = rnd(&state, 1, 1500);
+        ray_t r = ray_of(0, 0, 0, rnd(&state, -1, 1), rnd(&state, -1, 1), rnd(&state, -1, 1));
+        for (int i = 0; i < 3; i++)
+            o[i] = aim[i] - dist * num_to_double(vec3_get(r.dir, i));
+        r = ray_of(o[0], o[1], o[2], aim[0] - o[0], aim[1] - o[1], aim[2] - o[2]);
+        num_t tmax = num_from_int(3000), want_at = NUM_ZERO, got_at = NUM_ZERO;
+        if (!entry_by_division(&b, &r, NUM_ZERO, tmax, &want_at))
+            continue;
+        passed++;
+#if !defined(LINKS1_NUM_FIXED)
+        num_t pad = num_from_double(RENDER_BOUNDS_PAD_VALUE);
+        b.lo = vec3_sub(b.lo, vec3_make(pad, pad, pad));
+        b.hi = vec3_add(b.hi, vec3_make(pad, pad, pad));
+#endif
+        aabb_ray_t ar;
+        prim_aabb_ray(&r, &ar);
+        if (!prim_aabb_entry_ray(&b, &r, &ar, NUM_ZERO, tmax, &got_at))
+            missed++;
+#if defined(LINKS1_NUM_FIXED)
+        else
+            later += num_gt(got_at, want_at);
+#endif
+    }
+    CHECK(passed > 10000);
+    CHECK_EQ_INT(missed, 0);
+    CHECK_EQ_INT(later, 0);
+}
+
 int main(void)
 {
     printf("# num_t = %s\n", NUM_NAME);
@@ -640,5 +686,6 @@ int main(void)
     RUN(test_box_uncertain);
     RUN(test_density_bound);
     RUN(test_aabb_around);
+    RUN(test_aabb_by_reciprocal);
     return check_exit();
 }
