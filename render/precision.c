@@ -110,11 +110,14 @@ static num_t precision_hit_error(const render_prim_t *p, num_t extent, num_t *le
 /* A box's error per local axis (render_prim_t.box_edge_error): each
  * coordinate's rounding error with the cluster map's error (map, eye
  * units) on its axis; NUM_FAR where that overflows, or where
- * precision_hit_error gave up (its local errors NUM_FAR). */
+ * precision_hit_error gave up (its local errors NUM_FAR).  And each row's
+ * length (box_row_len). */
 static void precision_box_axes(render_prim_t *p, const precision_local_t *l, num_t map)
 {
-    for (int i = 0; i < 3; i++)
+    for (int i = 0; i < 3; i++) {
         p->box_edge_error[i] = num_limit(num_add(l->local[i], num_mul(map, l->len[i])), NUM_FAR);
+        p->box_row_len[i] = l->len[i];
+    }
 }
 
 /* A triangle's barycentrics beta, gamma: each a distance in the plane over

@@ -377,14 +377,23 @@ static inline __attribute__((always_inline)) void prim_box_span(vec3_t o, vec3_t
     prim_box_slab(s, 2, o.z, d.z);
 }
 
+/* The error of local coordinate `axis` of the ray's point where the ray's
+ * own error is e (eye units): the box's rounding on that axis and e in
+ * its local units. */
+static inline num_t prim_box_axis_delta(const render_prim_t *p, int axis, num_t e)
+{
+    return num_add(p->box_edge_error[axis], num_mul(e, p->box_row_len[axis]));
+}
+
 /* The box is hit or missed by less than the error of the ray's local
- * position, delta at t (edge_error[0], and the ray's own error in local
- * units): the entry and exit t move by delta / |d| of the axes that give
- * them, so |tfar - tnear| * |dn| * |df| < delta * (|dn| + |df|), without a
- * division; a slab the ray runs parallel to, by its distance to a face
- * (outside one by more than delta, it misses for certain, however near
- * the other slabs' t lie).  Only a decision about the part of the ray
- * after tmin and before tmax. */
+ * position at t: the entry and exit t move by delta_n / |dn| and
+ * delta_f / |df|, the errors of the local coordinates of the axes that
+ * give them (prim_box_axis_delta) over the direction on those axes, so
+ * |tfar - tnear| |dn| |df| < delta_n |df| + delta_f |dn|, without a
+ * division (fixed point: the largest axis's delta for both); a slab the ray runs parallel to, by its distance to a face
+ * (outside one by more than the largest axis's delta, it misses for
+ * certain, however near the other slabs' t lie).  Only a decision about
+ * the part of the ray after tmin and before tmax. */
 static int prim_box_edge_uncertain(const render_prim_t *p, const prim_box_span_t *s, vec3_t d,
                                    const ray_error_t *err, num_t tmin, num_t tmax)
 {
@@ -394,14 +403,24 @@ static int prim_box_edge_uncertain(const render_prim_t *p, const prim_box_span_t
     if (!num_gt(hi, tmin) || num_gt(lo, tmax))
         return 0;
     num_t mid = num_mul(num_add(lo, hi), NUM_HALF);
-    num_t delta = num_add(p->edge_error[0], num_mul(ray_error_at(err, mid), p->scale));
+    num_t e = ray_error_at(err, mid);
+    num_t delta = num_add(p->edge_error[0], num_mul(e, p->scale));
     if (num_gt(s->outside_by, delta))
         return 0;
     if (num_lt(s->parallel, delta))
         return 1;
     num_t dn = num_abs(vec3_get(d, s->near_axis)), df = num_abs(vec3_get(d, s->far_axis));
     num_t gap = num_abs(num_sub(s->tfar, s->tnear));
+#if defined(LINKS1_NUM_FIXED)
+    /* the largest axis's delta for both: the flags the axes' own would
+     * save cost fixed point more to trace on than to escalate */
     return num_lt(num_mul(num_mul(gap, dn), df), num_mul(delta, num_add(dn, df)));
+#else
+    num_t delta_n = prim_box_axis_delta(p, s->near_axis, e);
+    num_t delta_f = prim_box_axis_delta(p, s->far_axis, e);
+    return num_lt(num_mul(num_mul(gap, dn), df),
+                  num_add(num_mul(delta_n, df), num_mul(delta_f, dn)));
+#endif
 }
 
 static int prim_box_intersect(const render_prim_t *p, const ray_t *ray, const ray_error_t *err,

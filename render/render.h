@@ -88,10 +88,17 @@ typedef struct {
             num_t tex_u[3], tex_v[3]; /* TRIANGLE: map coordinates */
         };
         /* BOX, per local axis k: the rounding error of local coordinate
-         * k (edge_error[0] is the largest).  A face's u and v come from
-         * the other two axes, which on a thin box may be far less
-         * squeezed than its thin one (prim_box_surface's hit uv_error). */
-        num_t box_edge_error[3];
+         * k (edge_error[0] is the largest), and the length of to_local's
+         * row k (local units per eye unit along it; scale is the
+         * longest).  A face's u and v come from the other two axes, which
+         * on a thin box may be far less squeezed than its thin one
+         * (prim_box_surface's hit uv_error); an edge's decision from the
+         * two axes whose slabs give the entry and the exit
+         * (prim_box_edge_uncertain). */
+        struct {
+            num_t box_edge_error[3];
+            num_t box_row_len[3];
+        };
         struct {
             /* CONE: its local radius at y is 1 - cone_slope (1 + y):
              * (1 - k) / 2 for a smaller end of k times the larger's
