@@ -390,10 +390,11 @@ static inline num_t prim_box_axis_delta(const render_prim_t *p, int axis, num_t 
  * delta_f / |df|, the errors of the local coordinates of the axes that
  * give them (prim_box_axis_delta) over the direction on those axes, so
  * |tfar - tnear| |dn| |df| < delta_n |df| + delta_f |dn|, without a
- * division (fixed point: the largest axis's delta for both); a slab the ray runs parallel to, by its distance to a face
- * (outside one by more than the largest axis's delta, it misses for
- * certain, however near the other slabs' t lie).  Only a decision about
- * the part of the ray after tmin and before tmax. */
+ * division (fixed point: the largest axis's delta for both); a slab the
+ * ray runs parallel to, by its distance to a face (outside one by more
+ * than the largest axis's delta, it misses for certain, however near the
+ * other slabs' t lie).  Only a decision about the part of the ray after
+ * tmin and before tmax. */
 static int prim_box_edge_uncertain(const render_prim_t *p, const prim_box_span_t *s, vec3_t d,
                                    const ray_error_t *err, num_t tmin, num_t tmax)
 {

@@ -99,7 +99,7 @@ int prim_aabb_entry(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax, n
  * that every box the divisions pass passes (prim_slab_inv_faces). */
 typedef struct {
     num_t inv[3];
-    uint8_t use_div[3]; /* 1: divide on this axis (fixed, or d = 0 or tiny) */
+    uint8_t use_div[3]; /* 1: divide on this axis (d = 0, or its reciprocal beyond NUM_FAR) */
     uint8_t all_inv;    /* no axis divides */
 } aabb_ray_t;
 
