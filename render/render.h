@@ -268,6 +268,10 @@ typedef struct {
     uint64_t weight_cut;    /* reflected or refracted rays not traced: their
                                weight fell below min_weight (adaptive depth);
                                host only, not summed over the serial lines */
+    uint64_t self_blocked;  /* reflected or refracted rays not traced:
+                               their own surface blocks them
+                               (trace_self_blocked); host only, like
+                               weight_cut */
     uint64_t screen_tests;  /* tree rectangles looked at by primary rays
                                walked by screen (render_pixel_screen); host
                                only, like weight_cut */

@@ -706,6 +706,15 @@ static const scene_material_t *trace_surface_look(render_ctx_t *ctx, const hit_t
     return here;
 }
 
+/* The normal of the surface's own shape at hit: a triangle's plane's (a
+ * smooth triangle's hit->normal is interpolated), else hit->normal. */
+static inline __attribute__((always_inline)) vec3_t trace_shape_normal(const render_ctx_t *ctx,
+                                                                        const hit_t *hit)
+{
+    const render_prim_t *p = &ctx->frame->prims[hit->prim];
+    return p->kind == SCENE_PRIM_TRIANGLE ? p->normal : hit->normal;
+}
+
 /* The primitive a ray from hit cannot meet again, which its walk need not
  * test: the hit's, when the ray starts off its surface on the side of off
  * (the ray's origin is the hit moved along off) and moves away from it
@@ -717,7 +726,7 @@ static inline __attribute__((always_inline)) uint32_t trace_left(const render_ct
                                                                    vec3_t dir)
 {
     const render_prim_t *p = &ctx->frame->prims[hit->prim];
-    vec3_t g = p->kind == SCENE_PRIM_TRIANGLE ? p->normal : hit->normal;
+    vec3_t g = trace_shape_normal(ctx, hit);
     num_t a = vec3_dot(off, g), b = vec3_dot(dir, g);
     int away = num_gt(a, NUM_ZERO) && num_gt(b, NUM_ZERO);
     if (p->kind == SCENE_PRIM_TRIANGLE) /* a plane: either side */
@@ -973,6 +982,36 @@ static num_t trace_refract_error(const ray_error_t *err, num_t normal_err, num_t
     return trace_err_clamp(num_add(num_mul(dir_gain, err->dir), num_mul(normal_gain, normal_err)));
 }
 
+/* Whether the surface itself blocks a ray spawned at hit along dir, the
+ * ray that made the hit arriving along in: through 0 for a mirrored ray
+ * (it should leave on the side in came from) and 1 for a refracted one
+ * (the other side), both sides of the surface's own shape
+ * (trace_shape_normal).  A shading normal turned by a bump map or a
+ * smooth mesh can send it to the wrong side, into the surface it leaves or
+ * back out of it; traced, it would meet that surface again a hair away
+ * and shade it as if seen (a grazing mirrored ray, again and again: a
+ * sparkle).  Blocked, it is not traced, as a light behind the surface is
+ * not.  A direction within its error of the shape's plane (err_in: in's,
+ * err_dir: dir's) may lie on the other side in another arithmetic: the
+ * pixel loses precision, unless the ray's weight is too low to matter
+ * (trace_err_if_heavy).  Under Haines's SPD rules every ray is spawned. */
+static int trace_self_blocked(render_ctx_t *ctx, const hit_t *hit, vec3_t in, num_t err_in,
+                              vec3_t dir, num_t err_dir, int through, num_t weight)
+{
+    if (ctx->options.spd_rules)
+        return 0;
+    vec3_t g = trace_shape_normal(ctx, hit);
+    num_t a = num_neg(vec3_dot(in, g)), b = vec3_dot(dir, g);
+    if (through)
+        b = num_neg(b);
+    if ((!num_gt(num_abs(a), num_add(err_in, TRACE_DIR_ROUND)) ||
+         !num_gt(num_abs(b), num_add(err_dir, TRACE_DIR_ROUND))) &&
+        !num_lt(weight, NUM_C(RENDER_LOST_WEIGHT_VALUE)))
+        ctx->pixel_lost = 1;
+    return (num_gt(a, NUM_ZERO) && num_lt(b, NUM_ZERO)) ||
+           (num_lt(a, NUM_ZERO) && num_gt(b, NUM_ZERO));
+}
+
 /* weight: the product of src and trc along the path of the ray that made
  * this hit (1 for a camera ray); err: that ray's error bound.  The hit
  * point's error starts a mirrored ray, its error along the surface
@@ -1033,10 +1072,15 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
     } else if (mirror) {
         ray_t r = {outside, shade_reflect(ray->dir, n)};
         ray_error_t r_err = {hit_err, trace_err_clamp(num_add(err->dir, num_mul_int(normal_err, 2)))};
-        ctx->stats.reflection++;
-        reflected = trace_ray(ctx, &r, &r_err, trace_left(ctx, hit, n, r.dir), depth + 1, w_mirror);
-        if (num_gt(src, NUM_ZERO))
-            out = rgb_add(out, rgb_scale(reflected, src));
+        if (trace_self_blocked(ctx, hit, ray->dir, err->dir, r.dir, r_err.dir, 0, w_mirror)) {
+            ctx->stats.self_blocked++;
+        } else {
+            ctx->stats.reflection++;
+            reflected = trace_ray(ctx, &r, &r_err, trace_left(ctx, hit, n, r.dir), depth + 1,
+                                  w_mirror);
+            if (num_gt(src, NUM_ZERO))
+                out = rgb_add(out, rgb_scale(reflected, src));
+        }
     }
     if (num_gt(trc, NUM_ZERO)) {
         rgb_t through = rgb_make(NUM_ZERO, NUM_ZERO, NUM_ZERO);
@@ -1055,9 +1099,13 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
             ray_t r = {inside, refracted_dir};
             ray_error_t r_err = {surface_err, trace_refract_error(err, normal_err, eta, cos_theta,
                                                               refracted_dir, n)};
-            ctx->stats.refraction++;
-            through = trace_ray(ctx, &r, &r_err, trace_left(ctx, hit, vec3_neg(n), r.dir), depth + 1,
-                                w_trc);
+            if (trace_self_blocked(ctx, hit, ray->dir, err->dir, r.dir, r_err.dir, 1, w_trc)) {
+                ctx->stats.self_blocked++;
+            } else {
+                ctx->stats.refraction++;
+                through = trace_ray(ctx, &r, &r_err, trace_left(ctx, hit, vec3_neg(n), r.dir),
+                                    depth + 1, w_trc);
+            }
         } else if (!can_recurse && ctx->options.refractionless) {
             ray_t r = {inside, ray->dir};
             through = trace_straight(ctx, &r, s_err, w_trc);

@@ -133,5 +133,6 @@ void RENDER_WIDE(wide_stats_add)(const void *ctx_mem, render_stats_t *into)
     into->primary_box_tests += s->primary_box_tests;
     into->primary_prim_tests += s->primary_prim_tests;
     into->weight_cut += s->weight_cut;
+    into->self_blocked += s->self_blocked;
     into->screen_tests += s->screen_tests;
 }

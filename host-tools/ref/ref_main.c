@@ -300,7 +300,7 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
         fprintf(stderr,
                 "links1 ref (%s): %s frame %ld, %dx%d -> %s; rays: %llu primary, %llu "
                 "shadow, %llu reflection, %llu refraction, %llu transmission, %llu cut by "
-                "weight; "
+                "weight, %llu blocked by their surface; "
                 "%u pixels in doubt; %llu box tests, %llu primitive tests; traced in "
                 "%.6f s (%.6f s CPU)\n",
                 NUM_NAME, in, frame, img.width, img.height, out,
@@ -309,6 +309,7 @@ static int ref_render_frame(const char *in, const scene_t *scene, arena_t *arena
                 (unsigned long long)ctx.stats.refraction,
                 (unsigned long long)ctx.stats.transmission,
                 (unsigned long long)ctx.stats.weight_cut,
+                (unsigned long long)ctx.stats.self_blocked,
                 (unsigned)ctx.stats.precision_lost_pixels,
                 (unsigned long long)ctx.stats.box_tests, (unsigned long long)ctx.stats.prim_tests,
                 secs, cpu);

@@ -1,6 +1,7 @@
 /* test_render.c: whole pixels through render_prepare and render_pixel:
  * hand-computed colours, shadows (opaque, untinted and tinted; ambient
- * shadowed or not), mirror, refraction
+ * shadowed or not), mirror (and a mirrored ray a leaning smooth normal
+ * sends into the surface: blocked), refraction
  * and refractionless transmission, keyframes, limits, the precision flag,
  * and the speed-ups (hierarchy, boxes, screen clipping) giving the same
  * image bit for bit. */
@@ -187,6 +188,55 @@ static void test_mirror(void)
     f = ts_prepare(&ts);
     p = centre_pixel(f);
     CHECK_EQ_INT(p.b, 0);
+}
+
+/* A mirror wall at z = 10 whose smooth normals all lean by deg degrees
+ * from the camera towards +y; *ctx renders its centre pixel. */
+static rgb8_t leaning_mirror_pixel(double deg, render_ctx_t *ctx)
+{
+    ts_init(&ts, 9, 9);
+    scene_material_t mirror = mat(1, 1, 1, 0.2, 0);
+    mirror.src = N(0.5);
+    uint16_t m = ts_material(&ts, mirror);
+    ts.scene.background = ts_rgb(0, 0, 1);
+    double r = deg * 3.14159265358979323846 / 180;
+    vec3_t n = ts_v(0, sin(r), -cos(r));
+    wall(0, m, 10);
+    for (uint32_t k = 0; k < 2; k++)
+        ts_smooth(&ts, k, n, n, n);
+    scene_light_t *l = ts_light(&ts, SCENE_LIGHT_PARALLEL, ts_rgb(1, 1, 1));
+    l->direction = ts_v(0, 0, 1);
+    render_frame_t *f = ts_prepare(&ts);
+    CHECK(f != NULL);
+    if (!f)
+        return (rgb8_t){0, 0, 0};
+    render_ctx_init(ctx, f);
+    return render_pixel(ctx, f->width / 2, f->height / 2);
+}
+
+static void test_mirror_into_surface(void)
+{
+    /* leaning 20 degrees: the mirrored ray comes back towards the camera
+     * and sees the background; ambient 0.2 (51) under half the blue */
+    render_ctx_t ctx;
+    rgb8_t p = leaning_mirror_pixel(20, &ctx);
+    CHECK_EQ_INT(ctx.stats.reflection, 1);
+    CHECK_EQ_INT(ctx.stats.self_blocked, 0);
+    CHECK_EQ_INT(p.r, 51);
+    CHECK(p.b >= 51 + 127);
+    /* 60 degrees: it would go on through the wall's plane; the wall
+     * blocks it (traced, it met the wall again at once, again and again,
+     * each time adding its ambient) */
+    p = leaning_mirror_pixel(60, &ctx);
+    CHECK_EQ_INT(ctx.stats.reflection, 0);
+    CHECK_EQ_INT(ctx.stats.self_blocked, 1);
+    CHECK_EQ_INT(p.r, 51);
+    CHECK_EQ_INT(p.b, 51);
+    CHECK(!ctx.pixel_lost);
+    /* 45 degrees: it runs along the plane, on either side within its
+     * error: the pixel loses precision */
+    (void)leaning_mirror_pixel(45, &ctx);
+    CHECK(ctx.pixel_lost);
 }
 
 static void glass_pane_scene(void)
@@ -691,6 +741,7 @@ int main(void)
     RUN(test_sixteen_lights);
     RUN(test_shadows);
     RUN(test_mirror);
+    RUN(test_mirror_into_surface);
     RUN(test_refraction);
     RUN(test_refraction_off);
     RUN(test_speedups_same_image);

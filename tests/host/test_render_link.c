@@ -76,8 +76,16 @@ static void render_link_info_and_progress_round_trip(void)
 /* The RC sums each NC's statistics: two NCs' messages add field by field. */
 static void gigs_stats_sum_of_two(void)
 {
-    render_stats_t a = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 0, 0, 11, 12}; /* weight_cut, screen_tests: host only */
-    render_stats_t b = {100, 200, 300, 400, 500, 600, 700, 800, 900, 1000, 0, 0, 1100, 1200};
+    /* weight_cut, self_blocked, screen_tests: host only */
+    render_stats_t a = {.primary = 1, .shadow = 2, .reflection = 3, .refraction = 4,
+                        .transmission = 5, .box_tests = 6, .prim_tests = 7,
+                        .primary_box_tests = 8, .primary_prim_tests = 9,
+                        .precision_lost_pixels = 10, .escalated_pixels = 11, .primary_hit = 12};
+    render_stats_t b = {.primary = 100, .shadow = 200, .reflection = 300, .refraction = 400,
+                        .transmission = 500, .box_tests = 600, .prim_tests = 700,
+                        .primary_box_tests = 800, .primary_prim_tests = 900,
+                        .precision_lost_pixels = 1000, .escalated_pixels = 1100,
+                        .primary_hit = 1200};
     uint8_t pa[GIGS_STATS_SIZE], pb[GIGS_STATS_SIZE];
     gigs_stats_put(pa, &a);
     gigs_stats_put(pb, &b);

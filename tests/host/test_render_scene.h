@@ -25,6 +25,7 @@ typedef struct {
     scene_key_t keys[TS_MAX];
     scene_prim_t prims[TS_MAX];
     scene_density_component_t comps[TS_MAX];
+    scene_normals_t normals[TS_MAX];
     uint8_t arena_memory[1 << 20];
     arena_t arena;
 } test_scene_t;
@@ -68,6 +69,7 @@ static inline void ts_init(test_scene_t *t, uint16_t width, uint16_t height)
     s->keys = t->keys;
     s->prims = t->prims;
     s->density_components = t->comps;
+    s->normals = t->normals;
     t->clusters[0].parent = SCENE_NO_CLUSTER;
     t->clusters[0].local = xform_identity();
     s->cluster_count = 1;
@@ -134,6 +136,17 @@ static inline void ts_triangle(test_scene_t *t, uint16_t cluster, uint16_t mater
     p->shape.triangle.v[2] = c;
     p->shape.triangle.tex_u[1] = NUM_ONE;
     p->shape.triangle.tex_v[2] = NUM_ONE;
+}
+
+/* Triangle prim made smooth: vertex normals a, b, c (unit length), a
+ * record of its own. */
+static inline void ts_smooth(test_scene_t *t, uint32_t prim, vec3_t a, vec3_t b, vec3_t c)
+{
+    scene_normals_t *n = &t->normals[t->scene.normals_count++];
+    n->n[0] = a;
+    n->n[1] = b;
+    n->n[2] = c;
+    t->prims[prim].shape.triangle.smooth = t->scene.normals_count;
 }
 
 static inline void ts_ellipsoid(test_scene_t *t, uint16_t cluster, uint16_t material, vec3_t c, vec3_t r)
