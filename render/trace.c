@@ -706,6 +706,16 @@ static const scene_material_t *trace_surface_look(render_ctx_t *ctx, const hit_t
     return here;
 }
 
+/* Whether the shading normal at hit may not be its shape's
+ * (trace_shape_normal): turned by material m's bump or normal map, or
+ * interpolated on a smooth triangle. */
+static inline int trace_normal_turned(const render_ctx_t *ctx, const hit_t *hit,
+                                      const scene_material_t *m)
+{
+    return m->bump_map != SCENE_NONE || m->normal_map != SCENE_NONE ||
+           ctx->frame->prims[hit->prim].smooth;
+}
+
 /* The normal of the surface's own shape at hit: a triangle's plane's (a
  * smooth triangle's hit->normal is interpolated), else hit->normal. */
 static inline __attribute__((always_inline)) vec3_t trace_shape_normal(const render_ctx_t *ctx,
@@ -991,14 +1001,15 @@ static num_t trace_refract_error(const ray_error_t *err, num_t normal_err, num_t
  * back out of it; traced, it would meet that surface again a hair away
  * and shade it as if seen (a grazing mirrored ray, again and again: a
  * sparkle).  Blocked, it is not traced, as a light behind the surface is
- * not.  A direction within its error of the shape's plane (err_in: in's,
+ * not.  A normal not turned (turned 0: trace_normal_turned) sends none
+ * there.  A direction within its error of the shape's plane (err_in: in's,
  * err_dir: dir's) may lie on the other side in another arithmetic: the
  * pixel loses precision, unless the ray's weight is too low to matter
  * (trace_err_if_heavy).  Under Haines's SPD rules every ray is spawned. */
-static int trace_self_blocked(render_ctx_t *ctx, const hit_t *hit, vec3_t in, num_t err_in,
-                              vec3_t dir, num_t err_dir, int through, num_t weight)
+static int trace_self_blocked(render_ctx_t *ctx, const hit_t *hit, int turned, vec3_t in,
+                              num_t err_in, vec3_t dir, num_t err_dir, int through, num_t weight)
 {
-    if (ctx->options.spd_rules)
+    if (!turned || ctx->options.spd_rules)
         return 0;
     vec3_t g = trace_shape_normal(ctx, hit);
     num_t a = num_neg(vec3_dot(in, g)), b = vec3_dot(dir, g);
@@ -1026,6 +1037,7 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
     vec3_t n;
     const scene_material_t *m = trace_surface_look(ctx, hit, trace_material(ctx, hit->prim),
                                                    &colour, &n, TRACE_LOOK_SHADE);
+    int turned = trace_normal_turned(ctx, hit, m);
     int entering = num_lt(vec3_dot(ray->dir, n), NUM_ZERO);
     if (!entering)
         n = vec3_neg(n); /* shade the side the ray arrives on */
@@ -1072,7 +1084,8 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
     } else if (mirror) {
         ray_t r = {outside, shade_reflect(ray->dir, n)};
         ray_error_t r_err = {hit_err, trace_err_clamp(num_add(err->dir, num_mul_int(normal_err, 2)))};
-        if (trace_self_blocked(ctx, hit, ray->dir, err->dir, r.dir, r_err.dir, 0, w_mirror)) {
+        if (trace_self_blocked(ctx, hit, turned, ray->dir, err->dir, r.dir, r_err.dir, 0,
+                               w_mirror)) {
             ctx->stats.self_blocked++;
         } else {
             ctx->stats.reflection++;
@@ -1099,7 +1112,8 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
             ray_t r = {inside, refracted_dir};
             ray_error_t r_err = {surface_err, trace_refract_error(err, normal_err, eta, cos_theta,
                                                               refracted_dir, n)};
-            if (trace_self_blocked(ctx, hit, ray->dir, err->dir, r.dir, r_err.dir, 1, w_trc)) {
+            if (trace_self_blocked(ctx, hit, turned, ray->dir, err->dir, r.dir, r_err.dir, 1,
+                                   w_trc)) {
                 ctx->stats.self_blocked++;
             } else {
                 ctx->stats.refraction++;
