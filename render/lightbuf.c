@@ -345,6 +345,32 @@ static void lb_setup_light(const render_frame_t *f, uint32_t i, render_lb_light_
         l->kind = RENDER_LB_CUBE;
 }
 
+/* The face of item's local cube that light l (src) lies beyond
+ * (render_lb_light_t.face): the axis its local position (direction, for a
+ * parallel light) is largest on, beyond 1 (0); 0 for an item that is not
+ * a box or an ellipsoid, or is imprecise. */
+static uint8_t lb_item_face(const render_frame_t *f, uint32_t item, const render_lb_light_t *l,
+                            const render_light_t *src)
+{
+    if (item & RENDER_LB_CLUSTER || l->kind == RENDER_LB_ALL)
+        return 0;
+    const render_prim_t *p = &f->prims[item];
+    if (p->imprecise || (p->kind != SCENE_PRIM_BOX))
+        return 0;
+    int cube = l->kind == RENDER_LB_CUBE;
+    vec3_t q = cube ? xform_point(&p->to_local, l->at) : xform_dir(&p->to_local, src->to_light);
+    if (vec3_is_sat(q))
+        return 0;
+    int axis = 0;
+    for (int i = 1; i < 3; i++)
+        if (num_gt(num_abs(vec3_get(q, i)), num_abs(vec3_get(q, axis))))
+            axis = i;
+    num_t v = vec3_get(q, axis);
+    if (!num_gt(num_abs(v), cube ? NUM_ONE : NUM_ZERO))
+        return 0;
+    return (uint8_t)(1 + 2 * axis + num_lt(v, NUM_ZERO));
+}
+
 /* Item k (bit) in the cells of every light; offset: lb_offset's. */
 static void lb_place_item(const render_frame_t *f, render_lightbuf_t *lb, uint32_t k,
                           num_t offset)
@@ -357,6 +383,7 @@ static void lb_place_item(const render_frame_t *f, render_lightbuf_t *lb, uint32
     int corners = 0; /* c worked out, once for every light */
     for (uint32_t i = 0; i < lb->light_count; i++) {
         render_lb_light_t *l = &lb->light[i];
+        l->face[k] = lb_item_face(f, lb->item[k], l, &f->lights[i]);
         if (l->kind == RENDER_LB_ALL || lb_box_sat(b) || num_is_sat(offset)) {
             l->always |= bit;
             continue;

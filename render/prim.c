@@ -831,6 +831,29 @@ void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit)
     }
 }
 
+int prim_face_clear(const render_prim_t *p, const ray_t *ray, const ray_error_t *err, num_t tmin,
+                    num_t tmax, uint8_t face)
+{
+    const num_t *row = p->to_local.m[face >> 1];
+    num_t o = num_add(num_dot3(row[0], row[1], row[2], ray->origin.x, ray->origin.y,
+                               ray->origin.z), row[3]);
+    num_t d = num_dot3(row[0], row[1], row[2], ray->dir.x, ray->dir.y, ray->dir.z);
+    if (face & 1) {
+        o = num_neg(o);
+        d = num_neg(d);
+    }
+    num_t a0 = num_mul(tmin, d), y0 = num_add(o, a0);
+    num_t a1 = num_mul(tmax, d), y1 = num_add(o, a1);
+    if (!num_gt(y0, NUM_ONE) || !num_gt(y1, NUM_ONE)) /* before any error */
+        return 0;
+    /* 1, the rounding of o + a at either end, and the error at each */
+    num_t one = num_add(NUM_ONE, num_mul_int(num_ulp(num_add(num_abs(o), num_max(num_abs(a0),
+                                                                              num_abs(a1)))), 4));
+    num_t near = num_add(p->edge_error[0], num_mul(ray_error_at(err, tmin), p->scale));
+    num_t far = num_add(p->edge_error[0], num_mul(ray_error_at(err, tmax), p->scale));
+    return num_gt(y0, num_add(one, near)) && num_gt(y1, num_add(one, far));
+}
+
 int prim_aabb_entry(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax, num_t *entry)
 {
     num_t tnear = tmin, tfar = tmax;

@@ -67,6 +67,16 @@ int prim_intersect_uncertain_whether(const render_prim_t *p, const ray_t *ray,
                                      const ray_error_t *err, num_t tmin, num_t tmax, num_t *t_out,
                                      int *uncertain);
 
+/* A box or an ellipsoid p the ray misses for certain on [tmin, tmax],
+ * here and in double: its local coordinate on axis face / 2 stays beyond
+ * that face of [-1, 1] (face & 1: the - one), which bounds both shapes,
+ * by more than its error (edge_error[0] and err times scale, the largest
+ * axis's, plus the rounding of the coordinate) at both ends.  Then
+ * prim_intersect_uncertain finds no hit, and only doubts that cannot
+ * change that.  Cheap: one row of the map, no division. */
+int prim_face_clear(const render_prim_t *p, const ray_t *ray, const ray_error_t *err, num_t tmin,
+                    num_t tmax, uint8_t face);
+
 /* Fill hit->point, normal, tangent_hint, u, v for hit->t on primitive p. */
 void prim_surface(const render_prim_t *p, const ray_t *ray, hit_t *hit);
 

@@ -75,6 +75,7 @@ typedef struct {
     const render_lightbuf_t *lb; /* a shadow ray walking its light buffer's
                                     cell (lb_mask), or NULL */
     uint32_t lb_mask;
+    const uint8_t *lb_face; /* its light's render_lb_light_t.face */
     uint32_t left;      /* the primitive the ray leaves and cannot meet
                            again (trace_left), or TRACE_NO_PRIM: untested */
 } trace_walk_t;
@@ -521,15 +522,24 @@ static void trace_cluster(trace_walk_t *w, uint32_t index)
 }
 
 /* A shadow ray's walk of the items its light buffer's cell lists, each
- * box first (render/lightbuf.h). */
+ * box first (render/lightbuf.h); a primitive beyond the face of its local
+ * cube that the light lies beyond, at both ends of the ray, not at all. */
 static void trace_walk_items(trace_walk_t *w, const render_frame_t *f)
 {
+    int box_ray = 0; /* w->box_ray worked out: before the first box test */
     for (uint32_t mask = w->lb_mask; mask && !trace_walk_done_as(w, TRACE_COLLECT_SHADOW);
          mask &= mask - 1) {
-        uint32_t item = w->lb->item[__builtin_ctz(mask)];
-        if (item == w->left)
-            continue;
-        if (item & RENDER_LB_CLUSTER) {
+        uint32_t k = (uint32_t)__builtin_ctz(mask), item = w->lb->item[k];
+        int prim = !(item & RENDER_LB_CLUSTER);
+        if (item == w->left ||
+            (prim && w->lb_face[k] && prim_face_clear(&f->prims[item], w->ray, w->err, w->tmin,
+                                                      w->tmax, (uint8_t)(w->lb_face[k] - 1))))
+            continue; /* left, or beyond the face its light lies beyond, all of it */
+        if (!box_ray) {
+            prim_aabb_ray(w->ray, &w->box_ray);
+            box_ray = 1;
+        }
+        if (!prim) {
             uint32_t c = item & ~RENDER_LB_CLUSTER;
             if (trace_box(w, &f->clusters[c].bounds))
                 trace_cluster(w, c);
@@ -567,7 +577,8 @@ static void trace_walk_boxes(trace_walk_t *w, const render_frame_t *f, const uin
 static void trace_walk(trace_walk_t *w, const uint32_t *clip, uint32_t clip_count)
 {
     const render_frame_t *f = w->ctx->frame;
-    prim_aabb_ray(w->ray, &w->box_ray);
+    if (!w->lb) /* a light buffer's walk works it out when it first needs it */
+        prim_aabb_ray(w->ray, &w->box_ray);
     trace_walk_boxes(w, f, clip, clip_count);
     w->ctx->stats.box_tests += w->box_tests;
     w->ctx->stats.screen_tests += w->screen_tests;
@@ -777,6 +788,7 @@ static int trace_shadow(render_ctx_t *ctx, uint32_t light, vec3_t origin, vec3_t
     if (mask) {
         w.lb = lb;
         w.lb_mask = mask;
+        w.lb_face = lb->light[light].face;
     }
     trace_walk(&w, NULL, 0);
     if (cross.opaque || cross.overflow) {
@@ -1001,7 +1013,7 @@ static num_t trace_refract_error(const ray_error_t *err, num_t normal_err, num_t
  * back out of it; traced, it would meet that surface again a hair away
  * and shade it as if seen (a grazing mirrored ray, again and again: a
  * sparkle).  Blocked, it is not traced, as a light behind the surface is
- * not.  A normal not turned (turned 0: trace_normal_turned) sends none
+ * not (counted in stats.self_blocked).  A normal not turned (turned 0: trace_normal_turned) sends none
  * there.  A direction within its error of the shape's plane (err_in: in's,
  * err_dir: dir's) may lie on the other side in another arithmetic: the
  * pixel loses precision, unless the ray's weight is too low to matter
@@ -1019,8 +1031,10 @@ static int trace_self_blocked(render_ctx_t *ctx, const hit_t *hit, int turned, v
          !num_gt(num_abs(b), num_add(err_dir, TRACE_DIR_ROUND))) &&
         !num_lt(weight, NUM_C(RENDER_LOST_WEIGHT_VALUE)))
         ctx->pixel_lost = 1;
-    return (num_gt(a, NUM_ZERO) && num_lt(b, NUM_ZERO)) ||
-           (num_lt(a, NUM_ZERO) && num_gt(b, NUM_ZERO));
+    int blocked = (num_gt(a, NUM_ZERO) && num_lt(b, NUM_ZERO)) ||
+                  (num_lt(a, NUM_ZERO) && num_gt(b, NUM_ZERO));
+    ctx->stats.self_blocked += (uint64_t)blocked;
+    return blocked;
 }
 
 /* weight: the product of src and trc along the path of the ray that made
@@ -1084,10 +1098,8 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
     } else if (mirror) {
         ray_t r = {outside, shade_reflect(ray->dir, n)};
         ray_error_t r_err = {hit_err, trace_err_clamp(num_add(err->dir, num_mul_int(normal_err, 2)))};
-        if (trace_self_blocked(ctx, hit, turned, ray->dir, err->dir, r.dir, r_err.dir, 0,
-                               w_mirror)) {
-            ctx->stats.self_blocked++;
-        } else {
+        if (!trace_self_blocked(ctx, hit, turned, ray->dir, err->dir, r.dir, r_err.dir, 0,
+                                w_mirror)) {
             ctx->stats.reflection++;
             reflected = trace_ray(ctx, &r, &r_err, trace_left(ctx, hit, n, r.dir), depth + 1,
                                   w_mirror);
@@ -1112,10 +1124,8 @@ static rgb_t trace_shade(render_ctx_t *ctx, const ray_t *ray, const ray_error_t 
             ray_t r = {inside, refracted_dir};
             ray_error_t r_err = {surface_err, trace_refract_error(err, normal_err, eta, cos_theta,
                                                               refracted_dir, n)};
-            if (trace_self_blocked(ctx, hit, turned, ray->dir, err->dir, r.dir, r_err.dir, 1,
-                                   w_trc)) {
-                ctx->stats.self_blocked++;
-            } else {
+            if (!trace_self_blocked(ctx, hit, turned, ray->dir, err->dir, r.dir, r_err.dir, 1,
+                                    w_trc)) {
                 ctx->stats.refraction++;
                 through = trace_ray(ctx, &r, &r_err, trace_left(ctx, hit, vec3_neg(n), r.dir),
                                     depth + 1, w_trc);

@@ -1,8 +1,9 @@
 /* test_lightbuf.c: the light buffer (render/lightbuf.h) over the scenes of
  * scenes/: its items hold every primitive once, a build decides the same
  * whatever its memory held, a shadow ray whose walk
- * would meet an item's box finds the item in its cell, and the image with
- * it is the image without it. */
+ * would meet an item's box finds the item in its cell, a box's face it
+ * skips by lies between the box and the light, and the image with it is
+ * the image without it. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -105,6 +106,42 @@ static void test_items_hold_every_prim_once(void)
         free(mem);
         free(block);
     }
+}
+
+/* A face a light's cells give an item (render_lb_light_t.face) is one of
+ * a box's local cube that the light lies beyond (a parallel light: that
+ * its direction leaves by), so a shadow ray beyond it at both ends cannot
+ * reach the box; and the scenes' boxes get some. */
+static void test_faces_the_light_lies_beyond(void)
+{
+    uint32_t faces = 0;
+    for (size_t s = 0; s < TB_SCENE_COUNT; s++) {
+        void *block, *mem;
+        const render_lightbuf_t *lb;
+        const render_frame_t *f = lb_scene(tb_scenes[s], &block, &mem, &lb);
+        CHECK(f && lb);
+        for (uint32_t i = 0; f && lb && i < lb->light_count; i++) {
+            const render_lb_light_t *l = &lb->light[i];
+            for (uint32_t k = 0; k < lb->item_count; k++) {
+                if (!l->face[k])
+                    continue;
+                faces++;
+                uint32_t item = lb->item[k];
+                const render_prim_t *p = &f->prims[item & ~RENDER_LB_CLUSTER];
+                CHECK(!(item & RENDER_LB_CLUSTER) && p->kind == SCENE_PRIM_BOX);
+                int axis = (l->face[k] - 1) >> 1, minus = (l->face[k] - 1) & 1;
+                vec3_t q = l->kind == RENDER_LB_CUBE
+                               ? xform_point(&p->to_local, l->at)
+                               : xform_dir(&p->to_local, f->lights[i].to_light);
+                double v = num_to_double(vec3_get(q, axis)) * (minus ? -1 : 1);
+                CHECK(v > (l->kind == RENDER_LB_CUBE ? 1 : 0));
+            }
+        }
+        free(mem);
+        free(block);
+    }
+    CHECK(faces > 0);
+    printf("  %u faces over the scenes' lights and boxes\n", (unsigned)faces);
 }
 
 static uint32_t lb_rand(uint32_t *state)
@@ -298,6 +335,7 @@ static void test_same_image(void)
 int main(void)
 {
     RUN(test_items_hold_every_prim_once);
+    RUN(test_faces_the_light_lies_beyond);
     RUN(test_cells_hold_what_rays_meet);
     RUN(test_grazing_light_lists_few);
     RUN(test_same_image);

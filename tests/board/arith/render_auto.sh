@@ -164,9 +164,9 @@ refused render_auto_fpu_needs_auto "--fpu and --target-db go with --arith auto" 
 refused render_auto_bad_fpu "--fpu 'arm': want vfp or none" \
     ref "$easy" -o "$RENDER_TMP/x.ppm" --arith auto --fpu arm
 # a pick of a host fixed-point format other than Q12.19 runs its own build
-# (links1-ref-fixed18 for Q13.18): demo.scn --auto without an FPU
+# (links1-ref-fixedN for Q(31-N).N): demo.scn --auto without an FPU at 64x48
 name=render_auto_ref_runs_host_format
-msg=$(timeout 300 "$LINKS1" ref scenes/demo.scn --auto --fpu none --size 96x72 \
+msg=$(timeout 300 "$LINKS1" ref scenes/demo.scn --auto --fpu none --size 64x48 \
     -o "$RENDER_TMP/fmt.png" 2>&1)
 rc=$?
 if [ $rc -eq 0 ] && grep -q -- '--auto picks fixed Q1[3-9]\.' <<<"$msg" &&
