@@ -849,9 +849,14 @@ int prim_face_clear(const render_prim_t *p, const ray_t *ray, const ray_error_t 
     /* 1, the rounding of o + a at either end, and the error at each */
     num_t one = num_add(NUM_ONE, num_mul_int(num_ulp(num_add(num_abs(o), num_max(num_abs(a0),
                                                                               num_abs(a1)))), 4));
-    num_t near = num_add(p->edge_error[0], num_mul(ray_error_at(err, tmin), p->scale));
-    num_t far = num_add(p->edge_error[0], num_mul(ray_error_at(err, tmax), p->scale));
-    return num_gt(y0, num_add(one, near)) && num_gt(y1, num_add(one, far));
+    num_t far = num_add(one, num_add(p->edge_error[0],
+                                     num_mul(ray_error_at(err, tmax), p->scale)));
+    if (!num_gt(y1, far))
+        return 0;
+    /* the error at tmin is at most that at tmax (0 <= tmin <= tmax) */
+    return num_gt(y0, far) ||
+           num_gt(y0, num_add(one, num_add(p->edge_error[0],
+                                           num_mul(ray_error_at(err, tmin), p->scale))));
 }
 
 int prim_aabb_entry(const aabb_t *b, const ray_t *ray, num_t tmin, num_t tmax, num_t *entry)
