@@ -81,14 +81,17 @@ static inline rgb_t shade_light_term(const scene_material_t *m, rgb_t colour, ve
     /* ambient: dic F times the light given (S_i, or L_i whatever lies
      * between point and light) */
     rgb_t lit = rgb_mul(colour, ambient ? *ambient : shadowed);
-    rgb_t out = rgb_scale(lit, m->dic);
     num_t cos_i = vec3_dot(n, to_light);
     if (!num_gt(cos_i, NUM_ZERO))
-        return out;
-    /* diffuse: drc cos(th_i) F S_i */
+        return rgb_scale(lit, m->dic);
+    /* diffuse: drc cos(th_i) F S_i; of the same light as the ambient
+     * term, both in one product: (dic + drc cos) F S_i */
+    rgb_t out;
     if (ambient)
-        lit = rgb_mul(colour, shadowed);
-    out = rgb_add(out, rgb_scale(lit, num_mul(m->drc, cos_i)));
+        out = rgb_add(rgb_scale(lit, m->dic),
+                      rgb_scale(rgb_mul(colour, shadowed), num_mul(m->drc, cos_i)));
+    else
+        out = rgb_scale(lit, num_add(m->dic, num_mul(m->drc, cos_i)));
     if (m->phong_n == 0)
         return out;
     /* highlight: cos^n of the angle between the mirrored light and the
