@@ -67,9 +67,9 @@ typedef struct {
      * mask[grid][0][u] & mask[grid][1][v], exactly the items whose
      * rectangle holds it. */
     uint32_t mask[6][2][RENDER_LB_CELLS]; /* [grid][0: u, 1: v][cell] */
-    /* Item k a box or an ellipsoid: 1 + the face of its local cube (2 axis,
-     * + 1 for the - face) the light lies beyond (a parallel light: the one
-     * its direction leaves by most), else 0.  A shadow ray beyond that face
+    /* Item k a box primitive: 1 + the face of its local cube (2 axis, + 1
+     * for the - face) the light lies beyond (a parallel light: the one its
+     * direction leaves by most), else 0.  A shadow ray beyond that face
      * at both its ends misses the item (prim_face_clear): not walked. */
     uint8_t face[RENDER_LB_ITEMS];
 } render_lb_light_t;

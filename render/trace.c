@@ -1013,11 +1013,12 @@ static num_t trace_refract_error(const ray_error_t *err, num_t normal_err, num_t
  * back out of it; traced, it would meet that surface again a hair away
  * and shade it as if seen (a grazing mirrored ray, again and again: a
  * sparkle).  Blocked, it is not traced, as a light behind the surface is
- * not (counted in stats.self_blocked).  A normal not turned (turned 0: trace_normal_turned) sends none
- * there.  A direction within its error of the shape's plane (err_in: in's,
- * err_dir: dir's) may lie on the other side in another arithmetic: the
- * pixel loses precision, unless the ray's weight is too low to matter
- * (trace_err_if_heavy).  Under Haines's SPD rules every ray is spawned. */
+ * not (counted in stats.self_blocked).  A normal not turned (turned 0:
+ * trace_normal_turned) sends none there.  A direction within its error of
+ * the shape's plane (err_in: in's, err_dir: dir's) may lie on the other
+ * side in another arithmetic: the pixel loses precision, unless the ray's
+ * weight is too low to matter (trace_err_if_heavy).  Under Haines's SPD
+ * rules every ray is spawned. */
 static int trace_self_blocked(render_ctx_t *ctx, const hit_t *hit, int turned, vec3_t in,
                               num_t err_in, vec3_t dir, num_t err_dir, int through, num_t weight)
 {

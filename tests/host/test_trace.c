@@ -342,6 +342,17 @@ static void test_dynamic_replay_is_legal(void)
     CHECK_NEAR(r2.frame_us - r1.frame_us, 2000.0, 1e-3);
     replay_free(&r1);
     replay_free(&r2);
+    /* Asking for every area, at 100 us a byte and no more a message: each
+     * area's request and answer add their bytes' time, in turn. */
+    struct replay_cfg c3 = c1;
+    c3.first_by_request = 1;
+    CHECK_EQ_INT(replay_run(&t, &c3, &r1, err, sizeof err), 0);
+    c3.byte_us = 100;
+    CHECK_EQ_INT(replay_run(&t, &c3, &r2, err, sizeof err), 0);
+    CHECK_NEAR(r2.frame_us - r1.frame_us,
+               100.0 * r1.nareas * (REPLAY_REQUEST_BYTES + REPLAY_ANSWER_BYTES), 1e-3);
+    replay_free(&r1);
+    replay_free(&r2);
     trace_free(&t);
 }
 

@@ -132,6 +132,9 @@ def one(m, host_all, board_all, log):
             return "caught", " ".join(os.path.basename(n) for n in names)
         rc, out = run(["make", "--no-print-directory", "test"], tree, env, log)
         names, tot = failing(out)
+        # the fault's own line is gone from the copy: mutants_apply.sh fails
+        # whatever the fault, so it catches nothing
+        names = [n for n in names if os.path.basename(n) != "mutants_apply.sh"]
         if rc != 0 and names:
             return "caught", "make test: " + " ".join(os.path.basename(n) for n in names)
         return "missed", "make test: %s" % ("%d passed, %d failed" % tot if tot else "no summary")
