@@ -2,14 +2,14 @@
 # Signals leave nothing (issue 37, item 5) and the counting files are
 # private (hole 3).  With TMPDIR a fresh directory of the test's own:
 #   render a film (SIGINT), render a film with --count-insns (SIGTERM),
-#   an an521 render with --count-insns (SIGHUP), ref --arith auto
-#   (SIGTERM): each exits 128+N, leaves no temporary file (TMPDIR empty,
-#   no .OUT.* beside the film) and no child of its running;
+#   an an521 render with --count-insns (SIGHUP), ref --auto (SIGTERM):
+#   each exits 128+N, leaves no temporary file (TMPDIR empty, no .OUT.*
+#   beside the film) and no child of its running;
 #   a render whose $QEMU is a wrapper script that starts the emulator as
 #   its child, not by exec (SIGTERM): the emulator ends with it;
 #   a render given SIGTSTP (^Z): its QEMU stops too, and runs again after
 #   SIGCONT;
-#   ref --arith auto killed with SIGKILL: its children end (the
+#   ref --auto killed with SIGKILL: its children end (the
 #   parent-death signal) and the next run sweeps the directory it left;
 #   while an an521 render counts, every counting file QEMU is told of is
 #   in one directory of the user's, mode 0700;
@@ -185,9 +185,10 @@ interrupt signals_an521_hup HUP "$TMPDIR/links1-insns-*" \
     "${L1[@]}" render scenes/fly.scn --frames 0:11 -o "$T/out/d.apng" --size 64x48 --quiet \
     --machine an521 --ncs 4 --count-insns
 
-# ref --arith auto: a scene whose candidates take a while (demo.scn's
-# nine candidates at 320x240 take several seconds on a quiet host)
-AUTO=("${L1[@]}" ref scenes/demo.scn -o "$T/out/auto.ppm" --arith auto --size 320x240)
+# ref --auto (--arith auto's search, over density steps and min_weight
+# too): a run that takes a while (demo.scn at 320x240, about 7 s on a
+# quiet host; --arith auto alone takes 2 s, too near the 1.5 s wait)
+AUTO=("${L1[@]}" ref scenes/demo.scn -o "$T/out/auto.ppm" --auto --size 320x240)
 interrupt signals_ref_auto_term TERM "$TMPDIR/links1-auto-*" "${AUTO[@]}"
 
 "${AUTO[@]}" >"$T/kill.log" 2>&1 &
@@ -215,7 +216,7 @@ if wait_for 90 bash -c "compgen -G '$TMPDIR/links1-auto-*' >/dev/null && pgrep -
     fi
     kill -TERM "$pid2"; wait "$pid2" 2>/dev/null
 else
-    checks_fail "ref --arith auto never got going: $(tail -n 1 "$T/kill.log")" \
+    checks_fail "ref --auto never got going: $(tail -n 1 "$T/kill.log")" \
         signals_ref_auto_kill_children signals_ref_auto_sweep
     kill -KILL "$pid" 2>/dev/null; wait "$pid" 2>/dev/null
 fi
