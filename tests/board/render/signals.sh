@@ -194,12 +194,19 @@ interrupt signals_ref_auto_term TERM "$TMPDIR/links1-auto-*" "${AUTO[@]}"
 "${AUTO[@]}" >"$T/kill.log" 2>&1 &
 pid=$!
 if wait_for 90 bash -c "compgen -G '$TMPDIR/links1-auto-*' >/dev/null && pgrep -P $pid >/dev/null"; then
-    kids=$(children_of "$pid")
+    kids=""
+    for _ in $(seq 100); do # a child it can name: the run starts one after another
+        kids=$(children_of "$pid")
+        [ -n "${kids// /}" ] && break
+        sleep 0.1
+    done
     grand=""
     for k in $kids; do grand="$grand $(children_of "$k")"; done
     kill -KILL "$pid"; wait "$pid" 2>/dev/null
     # shellcheck disable=SC2086
-    if wait_for 10 all_gone $kids $grand; then
+    if [ -z "${kids// /}" ]; then
+        echo "FAIL signals_ref_auto_kill_children: no child seen in 10 s to watch"
+    elif wait_for 10 all_gone $kids $grand; then
         echo "PASS signals_ref_auto_kill_children (children $kids$grand ended with it)"
     else
         echo "FAIL signals_ref_auto_kill_children: still running after SIGKILL of the parent: $kids$grand"
