@@ -232,14 +232,20 @@ static int lb_cube_setup(render_lb_light_t *l, const aabb_t *root)
     return 1;
 }
 
+/* The axis d is largest on in magnitude (of equals, the first). */
+static int lb_major_axis(vec3_t d)
+{
+    num_t ax = num_abs(d.x), ay = num_abs(d.y), az = num_abs(d.z);
+    return num_ge(ax, ay) && num_ge(ax, az) ? 0 : num_ge(ay, az) ? 1 : 2;
+}
+
 /* A parallel light's plane: the major axis of its direction, and a grid
  * across the root's box's projection (0 when that is flat or does not fit
  * the arithmetic). */
 static int lb_plane_setup(render_lb_light_t *l, const render_light_t *src, const aabb_t *root)
 {
     vec3_t d = src->to_light;
-    num_t ax = num_abs(d.x), ay = num_abs(d.y), az = num_abs(d.z);
-    int m = num_ge(ax, ay) && num_ge(ax, az) ? 0 : num_ge(ay, az) ? 1 : 2;
+    int m = lb_major_axis(d);
     num_t dm = vec3_get(d, m);
     if (!num_gt(num_abs(dm), NUM_ZERO))
         return 0;
@@ -363,10 +369,7 @@ static uint8_t lb_item_face(const render_frame_t *f, uint32_t item, const render
     vec3_t q = cube ? xform_point(&p->to_local, l->at) : xform_dir(&p->to_local, src->to_light);
     if (vec3_is_sat(q))
         return 0;
-    int axis = 0;
-    for (int i = 1; i < 3; i++)
-        if (num_gt(num_abs(vec3_get(q, i)), num_abs(vec3_get(q, axis))))
-            axis = i;
+    int axis = lb_major_axis(q);
     num_t v = vec3_get(q, axis);
     if (!num_gt(num_abs(v), cube ? NUM_ONE : NUM_ZERO))
         return 0;
