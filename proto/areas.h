@@ -92,9 +92,10 @@ struct areas {
 
 /* The decreasing schedule's k and guided factor for ncs NCs when the
  * caller leaves them to the board (k = 0, no factor set): of k in
- * 4096..65536 and factors 1..4, the one whose worst speed-up over the
- * traces of demo, glass and molecule at 512x480 in `links1 replay` is
- * nearest each trace's best, NCs asking ahead (docs/areas.md). */
+ * 4096..65536 (in quarter steps of each power of two) and factors 1..4,
+ * the one whose worst speed-up over the traces of demo, glass and
+ * molecule at 512x480 in `links1 replay` is nearest each scene's best, NCs
+ * asking ahead (tests/bench/areas_rule.py, docs/areas.md). */
 void areas_decreasing_defaults(uint32_t ncs, uint32_t *k, uint32_t *factor);
 /* The k and factor a schedule of mode for ncs NCs takes when given k and
  * factor (0: its default; static's k is ncs; the grids use no factor and

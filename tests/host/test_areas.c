@@ -288,8 +288,8 @@ static void test_guided_factor(void)
 static void test_decreasing_defaults_by_ncs(void)
 {
     static const uint32_t want[][3] = {
-        {1, 65536, 2}, {8, 65536, 2}, {64, 65536, 2}, {65, 16384, 4},
-        {128, 16384, 4}, {129, 16384, 2}, {254, 16384, 2}, {4096, 16384, 2},
+        {1, 32768, 2}, {8, 32768, 2}, {64, 32768, 2}, {65, 7168, 4},
+        {128, 7168, 4}, {129, 20480, 2}, {254, 20480, 2}, {4096, 20480, 2},
     };
     for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
         uint32_t k = 0, factor = 0;
