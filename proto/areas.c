@@ -60,7 +60,7 @@ static uint32_t areas_pieces(const struct areas *s, uint32_t t)
 
 /* Up to max_ncs NCs: k, factor.  From `links1 replay T --ncs N --areas K
  * --guided F` over K from 4096 to 65536 in quarter steps of each power of
- * two (4096, 5120, 6144, 7168, 8192, ...) and F in {1, 2, 3, 4} on five
+ * two (4096, 5120, 6144, 7168, 8192, ...) and F in {1, 2, 3, 4} on ten
  * traces each of demo, glass and molecule at 512x480: the pair whose
  * scenes' median speed-ups are all within the smallest fraction of each
  * scene's best, of equals the one with the largest sum
