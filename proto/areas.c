@@ -61,16 +61,17 @@ static uint32_t areas_pieces(const struct areas *s, uint32_t t)
 /* Up to max_ncs NCs: k, factor.  From `links1 replay T --ncs N --areas K
  * --guided F` over K from 4096 to 65536 in quarter steps of each power of
  * two (4096, 5120, 6144, 7168, 8192, ...) and F in {1, 2, 3, 4} on ten
- * traces each of demo, glass and molecule at 512x480: the pair whose
+ * traces each of demo, glass and molecule at 512x480 (version 4: the
+ * replay serves the NCs' MSG_NC_DONEs): the pair whose
  * scenes' median speed-ups are all within the smallest fraction of each
  * scene's best, of equals the one with the largest sum
  * (tests/bench/areas_rule.py, docs/areas.md). */
 static const struct {
     uint32_t max_ncs, k, factor;
 } areas_decreasing_rule[] = {
-    {64, 32768, 2},
+    {64, 16384, 2},
     {128, 7168, 4},
-    {UINT32_MAX, 20480, 2},
+    {UINT32_MAX, 14336, 3},
 };
 
 void areas_decreasing_defaults(uint32_t ncs, uint32_t *k, uint32_t *factor)

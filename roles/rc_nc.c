@@ -122,15 +122,16 @@ RC_INLINE uint16_t rc_nc_hand(struct rc_run *run, uint32_t k, const struct area 
 }
 
 /* Traced (docs/trace.md): after the span of serving NC k, the NC, whether
- * it got an area, and the area's x and y. */
-static void rc_nc_trace_served(const struct rc_run *run, uint32_t k, int handed)
+ * it got an area, and the area's x and y; one that got none, the type of
+ * the message served (0: none) and 0. */
+static void rc_nc_trace_served(const struct rc_run *run, uint32_t k, int handed, uint16_t type)
 {
     insn_mark_trace_span_end();
     insn_mark_trace_bits(k, 16);
     const struct rc_nc *n = &run->nc[k];
     const struct area *a = &n->held[n->nheld ? n->nheld - 1u : 0u]; /* the one given last */
     insn_mark_trace_bits((uint32_t)handed, 1);
-    insn_mark_trace_bits(handed ? a->x : 0, 16);
+    insn_mark_trace_bits(handed ? a->x : type, 16);
     insn_mark_trace_bits(handed ? a->y : 0, 16);
 }
 
@@ -152,7 +153,7 @@ static void rc_nc_start_one(struct rc_run *run, uint32_t k, struct line_msg *m)
         run->nc[k].since = ktime_now();
     rc_nc_send(run, k, m);
     if (run->trace)
-        rc_nc_trace_served(run, k, handed);
+        rc_nc_trace_served(run, k, handed, 0);
 }
 
 void rc_nc_start(struct rc_run *run, struct line_msg *m, uint8_t flags, uint32_t largest,
@@ -403,7 +404,7 @@ static void rc_nc_dispatch(struct rc_run *run, struct line_msg *m)
                 (void)rc_nc_give(run, k, m);
             } else {
                 insn_mark_trace_span_begin();
-                rc_nc_trace_served(run, k, rc_nc_give(run, k, m));
+                rc_nc_trace_served(run, k, rc_nc_give(run, k, m), 0);
             }
         }
     }
@@ -441,7 +442,7 @@ __attribute__((noinline)) static int rc_nc_serve(struct rc_run *run, uint32_t k,
             handed = rc_nc_give(run, k, m);
     }
     if (run->trace)
-        rc_nc_trace_served(run, k, handed);
+        rc_nc_trace_served(run, k, handed, got ? m->type : 0);
     return got;
 }
 

@@ -319,11 +319,11 @@ static int replay_one(const struct replay_opts *o, const struct trace *t, uint32
     uint32_t k, factor;
     areas_settings(c.balance, c.ncs, c.k, c.guided, &k, &factor);
     printf("ncs %u balance %s areas %u frame_ms %.1f speed-up %.2f busy %.1f%% rc_busy "
-           "%.1f%% exact %u/%u largest_nc_insns %llu k %u factor %u ask %s\n",
+           "%.1f%% exact %u/%u largest_nc_insns %llu k %u factor %u dones %u ask %s\n",
            (unsigned)c.ncs, c.as_recorded ? "as-recorded" : areas_mode_name(c.balance),
            (unsigned)res.nareas, res.frame_us / 1000.0, base->frame_us / res.frame_us,
            100.0 * res.busy, 100.0 * res.rc_busy, (unsigned)res.exact, (unsigned)res.nareas,
-           (unsigned long long)most, (unsigned)k, (unsigned)factor,
+           (unsigned long long)most, (unsigned)k, (unsigned)factor, (unsigned)res.dones,
            c.prefetch ? "ahead" : "finished");
     if (o->per_nc)
         for (uint32_t n = 0; n < c.ncs; n++)

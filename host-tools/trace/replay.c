@@ -47,6 +47,8 @@ struct replay_pricer {
     uint64_t rc_mean; /* the RC serving one request that hands out an area */
     uint64_t start_mean; /* the RC handing an NC its first area with its start */
     uint64_t setup_mean; /* an NC's set-up of the frame */
+    uint64_t done_mean;  /* the RC serving an NC's MSG_NC_DONE, the traced mean;
+                            0 when the trace holds none (before version 4) */
 };
 
 static int replay_pricer_init(struct replay_pricer *p, const struct trace *t)
@@ -75,6 +77,7 @@ static int replay_pricer_init(struct replay_pricer *p, const struct trace *t)
     for (uint32_t i = 0; i < t->ncs; i++)
         s += t->nc_setup[i];
     p->setup_mean = s / t->ncs;
+    p->done_mean = t->other_counted && t->rc_done_count ? t->rc_done / t->rc_done_count : 0;
     size_t W = t->width + 1;
     for (uint32_t y = 0; y < t->height; y++)
         for (uint32_t x = 0; x < t->width; x++)
@@ -156,6 +159,7 @@ struct replay_state {
     double *rtt;        /* [ncs]: the round trip the NC last saw (< 0: none) */
     double *area_start; /* [ncs]: when the NC's current area began */
     uint32_t *area_px;  /* [ncs]: its pixels */
+    double *done_at;    /* [ncs]: the NC's MSG_NC_DONE arrives at the RC, or INF */
     double rc_free, rc_busy;
 };
 
@@ -197,6 +201,7 @@ static void replay_state_free(struct replay_state *s)
     free(s->rtt);
     free(s->area_start);
     free(s->area_px);
+    free(s->done_at);
     replay_source_free(&s->src, s->t->ncs);
 }
 
@@ -222,13 +227,16 @@ static int replay_state_init(struct replay_state *s, char *err, size_t cap)
     s->rtt = malloc(c->ncs * sizeof *s->rtt);
     s->area_start = calloc(c->ncs, sizeof *s->area_start);
     s->area_px = calloc(c->ncs, sizeof *s->area_px);
+    s->done_at = malloc(c->ncs * sizeof *s->done_at);
     for (uint32_t n = 0; s->rtt && n < c->ncs; n++)
         s->rtt[n] = -1;
+    for (uint32_t n = 0; s->done_at && n < c->ncs; n++)
+        s->done_at[n] = INFINITY;
     r->areas = calloc(s->total, sizeof *r->areas);
     r->nc_insns = calloc(c->ncs, sizeof *r->nc_insns);
     r->nc_setup_end = calloc(c->ncs, sizeof *r->nc_setup_end);
     if (replay_pricer_init(&s->p, t) != 0 || !s->pending || !s->sent || !s->busy_until ||
-        !s->computing || !s->rtt || !s->area_start || !s->area_px || !r->areas ||
+        !s->computing || !s->rtt || !s->area_start || !s->area_px || !s->done_at || !r->areas ||
         !r->nc_insns || !r->nc_setup_end ||
         (c->as_recorded && replay_source_recorded(&s->src, t) != 0))
         return replay_fail(err, cap, "out of memory");
@@ -334,20 +342,65 @@ static void replay_start_areas(struct replay_state *s)
     }
 }
 
-/* The RC serves requests in the order they arrive until every NC is told
+/* NC nc asked ahead for the area after its current one (ending at
+ * busy_until), and the answer arrives at `arrive` (INFINITY: none comes):
+ * if that is after the end, the NC sends MSG_NC_DONE there
+ * (roles/nc_render.c), which the RC serves in its turn. */
+static void replay_done_if_late(struct replay_state *s, uint32_t nc, double arrive)
+{
+    if (s->p.done_mean && s->c->prefetch && s->sent[nc] < s->busy_until[nc] &&
+        arrive > s->busy_until[nc])
+        s->done_at[nc] = s->busy_until[nc] + replay_line(s->c, REPLAY_REQUEST_BYTES);
+}
+
+/* The RC serves NC nc's MSG_NC_DONE, which arrived before any request
+ * waiting. */
+static void replay_serve_done(struct replay_state *s, uint32_t nc)
+{
+    double start = s->rc_free > s->done_at[nc] ? s->rc_free : s->done_at[nc];
+    double end = start + (double)s->p.done_mean * s->us_per;
+    s->rc_busy += end - start;
+    s->rc_free = end;
+    s->done_at[nc] = INFINITY;
+    s->r->dones++;
+}
+
+/* The NC whose message reaches the RC first, *done set when that is a
+ * MSG_NC_DONE; first: when it arrives (INFINITY: none is coming). */
+static uint32_t replay_next_message(const struct replay_state *s, int *done, double *first)
+{
+    uint32_t nc = 0;
+    *first = INFINITY;
+    *done = 0;
+    for (uint32_t n = 0; n < s->c->ncs; n++) {
+        if (s->pending[n] < *first) {
+            *first = s->pending[n];
+            nc = n;
+            *done = 0;
+        }
+        if (s->done_at[n] < *first) {
+            *first = s->done_at[n];
+            nc = n;
+            *done = 1;
+        }
+    }
+    return nc;
+}
+
+/* The RC serves messages in the order they arrive until every NC is told
  * to stop.  0, or -1 with err filled. */
 static int replay_serve(struct replay_state *s, char *err, size_t cap)
 {
     for (;;) {
-        uint32_t nc = 0;
-        double first = INFINITY;
-        for (uint32_t n = 0; n < s->c->ncs; n++)
-            if (s->pending[n] < first) {
-                first = s->pending[n];
-                nc = n;
-            }
+        int done;
+        double first;
+        uint32_t nc = replay_next_message(s, &done, &first);
         if (first == INFINITY)
             return 0;
+        if (done) {
+            replay_serve_done(s, nc);
+            continue;
+        }
         struct area a;
         int have = replay_next(&s->src, nc, &a), exact = 0;
         uint64_t rc_insns = s->p.rc_mean, insns = 0;
@@ -359,11 +412,13 @@ static int replay_serve(struct replay_state *s, char *err, size_t cap)
         s->rc_busy += end - start;
         if (!have) {
             s->pending[nc] = INFINITY;
+            replay_done_if_late(s, nc, INFINITY); /* parked until told to stop */
             continue;
         }
         if (s->r->nareas == s->total)
             return replay_fail(err, cap, "the schedule handed out more areas than it counts");
         double arrive = end + replay_line(s->c, REPLAY_ANSWER_BYTES);
+        replay_done_if_late(s, nc, arrive);
         double served[3] = {s->sent[nc], start, end};
         replay_see_round_trip(s, nc, arrive);
         replay_compute(s, nc, &a, insns, exact, 0, served,

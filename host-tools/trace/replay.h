@@ -17,6 +17,9 @@
  *     it: an NC knows how many of the area's pixels are left, and the
  *     replay takes its estimate of the time they need as exact.  During
  *     its first area it has seen no round trip: it asks as it starts.
+ *     One whose answer comes after its area's end (or none: the schedule
+ *     is out) sends MSG_NC_DONE then, which the RC serves in its turn for
+ *     the traced MSG_NC_DONEs' mean (a trace before version 4 has none).
  * An area the trace holds costs exactly what the board counted.  Any
  * other area is priced from the trace's per-pixel costs, plus the set-up
  * of the traced area holding its first pixel and the push of that traced
@@ -70,6 +73,8 @@ struct replay_result {
     double frame_us;       /* DM start to the last area's end */
     double busy;           /* NCs' computing / (ncs * frame), 0..1 */
     double rc_busy;        /* RC serving / frame */
+    uint32_t dones;        /* MSG_NC_DONEs the RC served (asking ahead, an
+                              answer that came after the area's end) */
     uint32_t nareas, exact;
     struct replay_area *areas; /* in handout order */
     uint64_t *nc_insns;    /* [ncs]: set-up + its areas */

@@ -9,6 +9,7 @@
 
 #include "host-tools/trace/trace_file.h"
 #include "proto/insn_mark.h"
+#include "proto/unitmsg.h"
 #include "proto/units.h"
 
 struct mark {
@@ -88,8 +89,13 @@ static int decode_rc(const struct marks *c, struct trace *t, char *err, size_t c
         if (decode_bits(c, &i, 16, &core) || decode_bits(c, &i, 1, &handed) ||
             decode_bits(c, &i, 16, &x) || decode_bits(c, &i, 16, &y))
             return decode_fail(err, cap, "RC mark %zu: a served message's record is cut", i);
-        if (!handed) {
+        if (!handed) { /* x: the message's type (roles/rc_nc.c) */
             t->rc_other += cost;
+            t->rc_other_count++;
+            if (x == MSG_NC_DONE) {
+                t->rc_done += cost;
+                t->rc_done_count++;
+            }
             continue;
         }
         if (core < (uint32_t)UNITS_FIRST_NC || core - (uint32_t)UNITS_FIRST_NC >= t->ncs)
@@ -217,6 +223,7 @@ int trace_decode_marks(const char *marks_path, uint32_t width, uint32_t height, 
     t->height = height;
     t->ncs = ncs;
     t->first_with_start = 1; /* the board's RC: roles/rc_nc.c */
+    t->other_counted = 1;
     uint32_t ncores = ncs + (uint32_t)UNITS_FIRST_NC;
     struct marks *cores = calloc(ncores, sizeof *cores);
     t->nc_setup = calloc(ncs, sizeof *t->nc_setup);

@@ -93,15 +93,21 @@ int trace_check(const struct trace *t, char *err, size_t cap)
 
 int trace_write(FILE *f, const char *name, const struct trace *t, char *err, size_t cap)
 {
-    /* a version 1 or 2 trace read in is written as version 2 */
-    fprintf(f, "%s %d\n", TRACE_MAGIC, t->first_with_start ? TRACE_VERSION : 2);
+    /* a version 1 or 2 trace read in is written as version 2, one of
+     * version 3 as 3 */
+    int v = !t->first_with_start ? 2 : t->other_counted ? TRACE_VERSION : 3;
+    fprintf(f, "%s %d\n", TRACE_MAGIC, v);
     fprintf(f, "screen %" PRIu32 " %" PRIu32 "\n", t->width, t->height);
     fprintf(f, "run ncs %" PRIu32 " balance %s k %" PRIu32 " guided %" PRIu32 " flags %" PRIu32
             "\n", t->ncs, areas_mode_name((enum areas_mode)t->balance), t->k, t->guided, t->flags);
     fprintf(f, "dm_prepare %" PRIu64 "\n", t->dm_prepare);
     fprintf(f, "broadcast bytes %" PRIu32 " rc %" PRIu64 "\n", t->broadcast_bytes,
             t->rc_broadcast);
-    fprintf(f, "rc_other %" PRIu64 "\n", t->rc_other);
+    if (v >= 4)
+        fprintf(f, "rc_other %" PRIu64 " messages %" PRIu32 " done %" PRIu32 " %" PRIu64 "\n",
+                t->rc_other, t->rc_other_count, t->rc_done_count, t->rc_done);
+    else
+        fprintf(f, "rc_other %" PRIu64 "\n", t->rc_other);
     for (uint32_t i = 0; i < t->ncs; i++)
         fprintf(f, "nc %" PRIu32 " setup %" PRIu64 "\n", i, t->nc_setup[i]);
     fprintf(f, "areas %" PRIu32 "\n", t->nareas);
@@ -236,10 +242,11 @@ static int trace_parse_head(struct trace_in *in, struct trace *t, char *err, siz
     uint64_t v[2];
     char *p = trace_line(in);
     WANT(p && trace_word(&p, TRACE_MAGIC) == 0 && trace_num(&p, U32, &v[0]) == 0,
-         "not a links1 trace (want '" TRACE_MAGIC " 3')");
-    WANT(v[0] >= 1 && v[0] <= TRACE_VERSION, "trace version not 1, 2 or 3");
+         "not a links1 trace (want '" TRACE_MAGIC " 4')");
+    WANT(v[0] >= 1 && v[0] <= TRACE_VERSION, "trace version not 1 to 4");
     int v1 = v[0] == 1;
     t->first_with_start = v[0] >= 3;
+    t->other_counted = v[0] >= 4;
     p = trace_line(in);
     WANT(p && trace_word(&p, "screen") == 0 && trace_num(&p, AREAS_MAX_DIM, &v[0]) == 0 &&
          trace_num(&p, AREAS_MAX_DIM, &v[1]) == 0 && trace_end_of_line(p) == 0 && v[0] && v[1],
@@ -258,8 +265,18 @@ static int trace_parse_head(struct trace_in *in, struct trace *t, char *err, siz
          "want 'broadcast bytes B rc INSNS'");
     t->broadcast_bytes = (uint32_t)v[0];
     p = trace_line(in);
-    WANT(p && trace_word(&p, "rc_other") == 0 && trace_num(&p, U64, &t->rc_other) == 0 &&
-         trace_end_of_line(p) == 0, "want 'rc_other INSNS'");
+    WANT(p && trace_word(&p, "rc_other") == 0 && trace_num(&p, U64, &t->rc_other) == 0,
+         "want 'rc_other INSNS'");
+    if (t->other_counted) {
+        WANT(trace_word(&p, "messages") == 0 && trace_num(&p, U32, &v[0]) == 0 &&
+             trace_word(&p, "done") == 0 && trace_num(&p, v[0], &v[1]) == 0 &&
+             trace_num(&p, t->rc_other, &t->rc_done) == 0,
+             "want 'rc_other INSNS messages N done M INSNS' (M <= N, its INSNS within)");
+        t->rc_other_count = (uint32_t)v[0];
+        t->rc_done_count = (uint32_t)v[1];
+    }
+    WANT(trace_end_of_line(p) == 0,
+         "want 'rc_other INSNS' (version 4: 'messages N done M INSNS' after)");
     return 0;
 }
 

@@ -7,7 +7,9 @@
  *   - the DM's preprocessing of the frame;
  *   - the RC's broadcast, and its serving of each area request (from
  *     version 3 an NC's first area comes with its MSG_NC_START: that
- *     area's RC cost is the hand-out alone);
+ *     area's RC cost is the hand-out alone), and of the messages that
+ *     handed out none (from version 4 with their count, and the
+ *     MSG_NC_DONEs among them apart);
  *   - each NC's set-up of the frame;
  *   - per area: its rectangle, the NC that drew it and in which order, its
  *     set-up (Y clipping), its push into the data collector, its total;
@@ -22,7 +24,7 @@
 #include <stdio.h>
 
 #define TRACE_MAGIC "links1-trace"
-#define TRACE_VERSION 3
+#define TRACE_VERSION 4
 #define TRACE_ERR_MAX 256
 
 struct trace_area {
@@ -45,10 +47,15 @@ struct trace {
     uint32_t flags;     /* enum link_render_flag of the run */
     uint32_t first_with_start; /* 1: each NC's first area (order 0) came with
                                   its MSG_NC_START (version 3); 0: it asked */
+    uint32_t other_counted; /* 1: rc_other_count holds the messages of
+                               rc_other (version 4) */
     uint64_t dm_prepare;   /* DM: render_blob_prepare of the frame */
     uint64_t rc_broadcast; /* RC: the blob into the broadcast block */
     uint32_t broadcast_bytes;
     uint64_t rc_other;  /* RC: serving messages that handed out no area */
+    uint32_t rc_other_count; /* how many (other_counted) */
+    uint64_t rc_done;   /* of them, the MSG_NC_DONEs (other_counted) */
+    uint32_t rc_done_count;
     uint64_t *nc_setup; /* [ncs]: each NC's set-up of the frame */
     uint32_t nareas;
     struct trace_area *areas; /* in handout order */

@@ -288,8 +288,8 @@ static void test_guided_factor(void)
 static void test_decreasing_defaults_by_ncs(void)
 {
     static const uint32_t want[][3] = {
-        {1, 32768, 2}, {8, 32768, 2}, {64, 32768, 2}, {65, 7168, 4},
-        {128, 7168, 4}, {129, 20480, 2}, {254, 20480, 2}, {4096, 20480, 2},
+        {1, 16384, 2}, {8, 16384, 2}, {64, 16384, 2}, {65, 7168, 4},
+        {128, 7168, 4}, {129, 14336, 3}, {254, 14336, 3}, {4096, 14336, 3},
     };
     for (size_t i = 0; i < sizeof want / sizeof want[0]; i++) {
         uint32_t k = 0, factor = 0;

@@ -39,6 +39,10 @@ static void make_trace(struct trace *t, enum areas_mode mode, uint32_t w, uint32
     t->broadcast_bytes = 20000;
     t->rc_other = 5000;
     t->first_with_start = 1;
+    t->other_counted = 1;
+    t->rc_other_count = 3;
+    t->rc_done = 900;
+    t->rc_done_count = 2;
     t->nc_setup = calloc(ncs, sizeof *t->nc_setup);
     for (uint32_t i = 0; i < ncs; i++)
         t->nc_setup[i] = 966;
@@ -75,6 +79,8 @@ static int same_trace(const struct trace *a, const struct trace *b)
         a->flags != b->flags || a->first_with_start != b->first_with_start ||
         a->dm_prepare != b->dm_prepare || a->rc_broadcast != b->rc_broadcast ||
         a->broadcast_bytes != b->broadcast_bytes || a->rc_other != b->rc_other ||
+        a->other_counted != b->other_counted || a->rc_other_count != b->rc_other_count ||
+        a->rc_done != b->rc_done || a->rc_done_count != b->rc_done_count ||
         a->nareas != b->nareas)
         return 0;
     if (memcmp(a->nc_setup, b->nc_setup, a->ncs * sizeof *a->nc_setup) != 0 ||
@@ -111,6 +117,16 @@ static void test_trace_round_trips(void)
     int r = trace_read(path, &back, err, sizeof err);
     if (r != 0)
         printf("  %s\n", err);
+    CHECK_EQ_INT(r, 0);
+    CHECK(r == 0 && same_trace(&t, &back));
+    if (r == 0)
+        trace_free(&back);
+    /* one of version 3 (no count of the other messages) stays version 3 */
+    t.other_counted = 0;
+    t.rc_other_count = t.rc_done_count = 0;
+    t.rc_done = 0;
+    CHECK_EQ_INT(write_trace(path, &t, err, sizeof err), 0);
+    r = trace_read(path, &back, err, sizeof err);
     CHECK_EQ_INT(r, 0);
     CHECK(r == 0 && same_trace(&t, &back));
     if (r == 0)
@@ -173,6 +189,9 @@ static void test_damaged_traces_are_refused(void)
                    "NC 7");
     expect_refused(&t, "end", NULL, "want 'end'");
     expect_refused(&t, "run ", "run ncs 2 balance guided k 4 flags 0\n", "balance mode");
+    expect_refused(&t, "rc_other", "rc_other 5000 messages 3 done 4 100\n", "M <= N");
+    expect_refused(&t, "rc_other", "rc_other 5000 messages 3 done 2 6000\n", "within");
+    expect_refused(&t, "rc_other", "rc_other 5000\n", "messages N done M");
     trace_free(&t);
 }
 
@@ -210,6 +229,8 @@ static void test_trace_records_schedule(void)
             fputs("links1-trace 1\n", out);
         else if (strncmp(line, "run ", 4) == 0)
             fprintf(out, "run ncs 3 balance decreasing k 0 flags 0\n");
+        else if (strncmp(line, "rc_other ", 9) == 0)
+            fputs("rc_other 5000\n", out); /* not counted before version 4 */
         else
             fputs(line, out);
     }
@@ -356,6 +377,40 @@ static void test_dynamic_replay_is_legal(void)
     trace_free(&t);
 }
 
+/* An NC asking ahead whose answer comes after its area's end sends
+ * MSG_NC_DONE (roles/nc_render.c): the RC serves each for the trace's
+ * mean of them, and nothing else changes in what it serves; none asking
+ * when finished, nor from a trace that does not count them. */
+static void test_replay_serves_done(void)
+{
+    struct trace t;
+    char err[TRACE_ERR_MAX];
+    make_trace(&t, AREAS_DECREASING, 64, 48, 4, 256);
+    for (uint32_t i = 0; i < t.nareas; i++)
+        t.areas[i].rc = 400000; /* a slow RC: answers come late */
+    struct replay_cfg c = {.ncs = 16, .balance = AREAS_DECREASING, .k = 256, .mips = 1.0,
+                           .line_us = 1000, .byte_us = 520.8, .prefetch = 1};
+    struct replay_result with, without;
+    CHECK_EQ_INT(replay_run(&t, &c, &with, err, sizeof err), 0);
+    CHECK_EQ_INT(replay_check_legal(&t, &c, &with, err, sizeof err), 0);
+    t.other_counted = 0;
+    CHECK_EQ_INT(replay_run(&t, &c, &without, err, sizeof err), 0);
+    CHECK(with.dones > 0);
+    CHECK_EQ_INT(without.dones, 0);
+    double mean = (double)(t.rc_done / t.rc_done_count);
+    CHECK_NEAR(with.rc_busy * with.frame_us - without.rc_busy * without.frame_us,
+               with.dones * mean, 1e-6 * with.frame_us);
+    CHECK(with.frame_us > without.frame_us);
+    replay_free(&with);
+    replay_free(&without);
+    t.other_counted = 1;
+    c.prefetch = 0;
+    CHECK_EQ_INT(replay_run(&t, &c, &with, err, sizeof err), 0);
+    CHECK_EQ_INT(with.dones, 0);
+    replay_free(&with);
+    trace_free(&t);
+}
+
 /* trace_scale: a trace priced at f times the size keeps each pixel's
  * cost over its f x f block, each area's set-up and RC serving, f * f its
  * push; the result passes trace_check (areas cover the screen once, totals
@@ -496,6 +551,7 @@ int main(void)
     RUN(test_trace_records_schedule);
     RUN(test_static_replay_is_exact);
     RUN(test_dynamic_replay_is_legal);
+    RUN(test_replay_serves_done);
     RUN(test_replay_refuses_bad_settings);
     RUN(test_trace_scale);
     RUN(test_replay_timeline_bars);
