@@ -6,5 +6,6 @@ ARITH_FREE_SRCS += $(HT_TRACE_SRCS)
 
 # Frame traces and their replay on equal-speed units.
 test_trace_SRCS := tests/host/test_trace.c host-tools/trace/trace_file.c \
-	host-tools/trace/trace_scale.c host-tools/trace/replay.c host-tools/trace/replay_timeline.c
+	host-tools/trace/trace_scale.c host-tools/trace/replay.c host-tools/trace/replay_timeline.c \
+	host-tools/opts/tmp_dir.c host-tools/opts/exit_clean.c
 test_trace_ARITH := double

@@ -10,6 +10,7 @@
 #include <string.h>
 #include <unistd.h>
 
+#include "host-tools/opts/tmp_dir.h"
 #include "host-tools/trace/replay.h"
 #include "host-tools/trace/replay_timeline.h"
 #include "host-tools/trace/trace_file.h"
@@ -94,21 +95,6 @@ static int same_trace(const struct trace *a, const struct trace *b)
 }
 
 static char test_dir[] = "/tmp/links1-test-trace-XXXXXX";
-/* The files the tests write in test_dir: removed with it at the end, with
- * no shell; one left over fails the clean-up. */
-static const char *const test_files[] = {"rt.trace", "good.trace", "bad.trace", "sched.trace",
-                                         "v1.trace"};
-
-static void remove_test_dir(void)
-{
-    char path[160];
-    for (size_t i = 0; i < sizeof test_files / sizeof test_files[0]; i++) {
-        snprintf(path, sizeof path, "%s/%s", test_dir, test_files[i]);
-        unlink(path);
-    }
-    if (rmdir(test_dir) != 0)
-        printf("FAIL cleanup: %s: %s\n", test_dir, strerror(errno));
-}
 
 /* The trace written to path: 0, or -1 with err. */
 static int write_trace(const char *path, const struct trace *t, char *err, size_t cap)
@@ -571,6 +557,7 @@ int main(void)
     RUN(test_replay_refuses_bad_settings);
     RUN(test_trace_scale);
     RUN(test_replay_timeline_bars);
-    remove_test_dir();
+    if (tmp_dir_remove(test_dir) != 0) /* no shell, no link followed */
+        printf("FAIL cleanup: %s: %s\n", test_dir, strerror(errno));
     return check_exit();
 }
