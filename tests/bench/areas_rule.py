@@ -60,13 +60,23 @@ def speedups(trace, k, factor):
     return out
 
 
+def medians_of(traces, k, factor):
+    """{scene: {ncs: the median speed-up over its traces}} of one pair."""
+    runs = {s: [speedups(t, k, factor) for t in traces[s]] for s in SCENES}
+    return {s: {n: statistics.median(r[n] for r in runs[s]) for _, n in BANDS} for s in SCENES}
+
+
+def best_pairs(medians, ncs):
+    """{scene: the pair of its best median speed-up on ncs NCs}."""
+    return {s: max(medians, key=lambda p, s=s: medians[p][s][ncs]) for s in SCENES}
+
+
 def pick(medians, ncs):
-    """The rule's pair for ncs, and every pair ranked: (worst fraction short
+    """Every pair ranked by the rule, its pick first: (worst fraction short
     of a scene's best, -sum of speed-ups, (k, factor))."""
-    best = {s: max(medians[p][s][ncs] for p in medians) for s in SCENES}
-    ranked = sorted((max(1 - medians[p][s][ncs] / best[s] for s in SCENES),
-                     -sum(medians[p][s][ncs] for s in SCENES), p) for p in medians)
-    return ranked
+    best = {s: medians[p][s][ncs] for s, p in best_pairs(medians, ncs).items()}
+    return sorted((max(1 - medians[p][s][ncs] / best[s] for s in SCENES),
+                   -sum(medians[p][s][ncs] for s in SCENES), p) for p in medians)
 
 
 def main():
@@ -92,18 +102,14 @@ def main():
     medians = {}
     for k in K_GRID:
         for factor in FACTORS:
-            runs = {s: [speedups(t, k, factor) for t in traces[s]] for s in SCENES}
-            medians[(k, factor)] = {s: {n: statistics.median(r[n] for r in runs[s])
-                                        for _, n in BANDS} for s in SCENES}
+            medians[(k, factor)] = medians_of(traces, k, factor)
     print(f"areas_rule: {a.runs} traces each of {', '.join(SCENES)} at {SIZE}; "
           f"K {K_GRID[0]}..{K_GRID[-1]} ({len(K_GRID)}), F {FACTORS[0]}..{FACTORS[-1]}")
-    runs = {s: [speedups(t, None, None) for t in traces[s]] for s in SCENES}
-    now = {s: {n: statistics.median(r[n] for r in runs[s]) for _, n in BANDS} for s in SCENES}
+    now = medians_of(traces, None, None)
     for top, ncs in BANDS:
         ranked = pick(medians, ncs)
         print(f"ncs {ncs} today's rule: " + " ".join(f"{s} {now[s][ncs]:.2f}" for s in SCENES))
-        for s in SCENES:
-            k, factor = max(medians, key=lambda p, s=s: medians[p][s][ncs])
+        for s, (k, factor) in best_pairs(medians, ncs).items():
             print(f"ncs {ncs} best for {s}: {medians[(k, factor)][s][ncs]:.2f} at K {k} F {factor}")
         band = f"..{top}" if top else "rest"
         for i, (short, _, (k, factor)) in enumerate(ranked[:4]):
